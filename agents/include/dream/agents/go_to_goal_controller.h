@@ -1,0 +1,39 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+
+#include "dream/agents/actuator_limits.h"
+#include "dream/agents/controller.h"
+#include "dream/agents/single_integrator_to_unicycle.h"
+
+namespace dream::agents {
+
+/// Parameters of GoToGoalController.
+struct GoToGoalParams {
+  Eigen::Vector2d goal_m = Eigen::Vector2d::Zero();  ///< goal position, world frame
+  double gain = 0.8;                  ///< proportional gain, 1/s; must be positive
+  double max_speed_mps = 0.15;        ///< cap on the planar velocity; (0, 0.2]
+  double tolerance_m = 0.03;          ///< within this distance the robot stops and reports done; > 0
+
+  /// False with a message naming the field, its value and the allowed range.
+  bool IsValid(std::string* error) const;
+};
+
+/// The simplest scripted controller: drive to a fixed goal. Proportional
+/// single-integrator law dxi = k (goal - p), capped at max_speed (the
+/// Robotarium's si position controller), mapped to the unicycle and limited
+/// to what the wheels can do. Stops and reports done within tolerance.
+class GoToGoalController final : public Controller {
+ public:
+  /// @throws std::invalid_argument when params are invalid.
+  explicit GoToGoalController(const GoToGoalParams& params);
+  ControllerOutput Step(const ControllerInput& input) override;
+
+ private:
+  GoToGoalParams params_;
+  SingleIntegratorToUnicycle si_to_uni_;
+  ActuatorLimits limits_;
+};
+
+}  // namespace dream::agents

@@ -1,0 +1,37 @@
+#include "dream/agents/go_to_goal_controller.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace dream::agents {
+
+bool GoToGoalParams::IsValid(std::string* error) const {
+  auto fail = [error](const std::string& message) {
+    if (error != nullptr) *error = message;
+    return false;
+  };
+  if (!goal_m.allFinite()) return fail("goal must be finite");
+  if (!(gain > 0.0) || !std::isfinite(gain)) return fail("gain must be > 0, got " + std::to_string(gain));
+  if (!(max_speed_mps > 0.0 && max_speed_mps <= 0.2)) {
+    return fail("max_speed_mps must be in (0, 0.2], got " + std::to_string(max_speed_mps));
+  }
+  if (!(tolerance_m > 0.0) || !std::isfinite(tolerance_m)) {
+    return fail("tolerance_m must be > 0, got " + std::to_string(tolerance_m));
+  }
+  return true;
+}
+
+GoToGoalController::GoToGoalController(const GoToGoalParams& params) : params_(params) {
+  std::string error;
+  if (!params_.IsValid(&error)) throw std::invalid_argument(error);
+}
+
+ControllerOutput GoToGoalController::Step(const ControllerInput& input) {
+  const Eigen::Vector2d error = params_.goal_m - input.own_pose.head<2>();
+  if (error.norm() <= params_.tolerance_m) return {UnicycleCommand{}, true};
+  Eigen::Vector2d velocity = params_.gain * error;
+  if (velocity.norm() > params_.max_speed_mps) velocity *= params_.max_speed_mps / velocity.norm();
+  return {limits_.Apply(si_to_uni_.Map(velocity, input.own_pose.z())), false};
+}
+
+}  // namespace dream::agents

@@ -1,0 +1,73 @@
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <set>
+#include <stdexcept>
+
+#include "commands.h"
+#include "dream/agents/agent_host.h"
+#include "dream/agents/controller_factory.h"
+#include "dream/config/run_config.h"
+#include "dream/lcm/lcm_bus.h"
+#include "dream/lcm/lcm_url.h"
+
+namespace dream::cli {
+
+int64_t NewAgentId();
+
+std::vector<int> ParseRobotList(const std::string& text, int num_robots) {
+  std::set<int> ids;
+  auto parse_id = [&](const std::string& part) {
+    size_t used = 0;
+    int id = -1;
+    try {
+      id = std::stoi(part, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != part.size() || part.empty() || id < 0 || id >= num_robots) {
+      throw std::invalid_argument("--robots: '" + part + "' is not a robot id of this run (0.." +
+                                  std::to_string(num_robots - 1) + ")");
+    }
+    return id;
+  };
+  if (text == "all") {
+    for (int id = 0; id < num_robots; ++id) ids.insert(id);
+  } else {
+    size_t start = 0;
+    while (start <= text.size()) {
+      const size_t comma = text.find(',', start);
+      const std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+      const size_t dash = part.find('-');
+      if (dash != std::string::npos && dash > 0) {
+        const int first = parse_id(part.substr(0, dash));
+        const int last = parse_id(part.substr(dash + 1));
+        if (last < first) throw std::invalid_argument("--robots: range '" + part + "' is backwards");
+        for (int id = first; id <= last; ++id) ids.insert(id);
+      } else {
+        ids.insert(parse_id(part));
+      }
+      if (comma == std::string::npos) break;
+      start = comma + 1;
+    }
+  }
+  return {ids.begin(), ids.end()};
+}
+
+int RunAgents(const AgentArgs& args) {
+  const config::RunConfig config = config::LoadRunConfigFile(args.config_path);
+  const std::vector<int> ids = ParseRobotList(args.robots, config.num_robots);
+  lcm::LcmBus bus(lcm::ResolveLcmUrl(args.lcm_url));
+  const agents::ControllerFactory factory(config.controller, config.num_robots);
+  std::vector<agents::HostedRobot> robots;
+  for (int id : ids) robots.push_back({id, factory.Make(id)});
+  agents::AgentHost host(bus, std::move(robots), NewAgentId());
+  spdlog::info("agent for robot(s) {} of {} on {}", args.robots, config.name, bus.url());
+  const bool ended_by_world = host.Run(StopFlag(), args.idle_timeout_s);
+  if (StopFlag().load()) return kExitInterrupted;
+  if (!ended_by_world) return kExitRunFailed;
+  spdlog::info("world ended the run at step {}: {}", host.last_step_answered(), host.end_detail());
+  return kExitOk;
+}
+
+}  // namespace dream::cli

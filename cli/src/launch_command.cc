@@ -1,0 +1,50 @@
+#include <spdlog/spdlog.h>
+
+#include <csignal>
+#include <chrono>
+#include <thread>
+
+#include "commands.h"
+#include "process_group.h"
+#include "run_output.h"
+
+namespace dream::cli {
+
+int RunLaunch(const RunArgs& args) {
+  // Check the config here, so a mistake is reported once, not by N+1 children.
+  const config::RunConfig config = LoadConfig(args);
+  PrepareOutputDir(args, config);
+  const std::string self = SelfExecutable();
+  std::vector<std::string> common = {args.config_path};
+  if (!args.lcm_url.empty()) common.push_back("--lcm-url=" + args.lcm_url);
+
+  ProcessGroup children;
+  std::vector<std::string> sim_argv = {self, "sim"};
+  sim_argv.insert(sim_argv.end(), common.begin(), common.end());
+  if (!args.out_dir.empty()) sim_argv.push_back("--out=" + args.out_dir);
+  if (args.steps != 0) sim_argv.push_back("--steps=" + std::to_string(args.steps));
+  if (!args.mode.empty()) sim_argv.push_back("--mode=" + args.mode);
+  const pid_t sim = children.Start(sim_argv);
+  std::vector<pid_t> agents;
+  for (int id = 0; id < config.num_robots; ++id) {
+    std::vector<std::string> agent_argv = {self, "agent"};
+    agent_argv.insert(agent_argv.end(), common.begin(), common.end());
+    agent_argv.push_back("--robots=" + std::to_string(id));
+    agents.push_back(children.Start(agent_argv));
+  }
+  spdlog::info("launched the simulator and {} agent processes", agents.size());
+
+  int sim_exit = -1;
+  while ((sim_exit = children.WaitFor(sim, 0.1)) < 0) {
+    if (StopFlag().load()) children.SignalAll(SIGINT);
+  }
+  int failed_agents = 0;
+  for (pid_t agent : agents) {
+    const int code = children.WaitFor(agent, 5.0);
+    if (code != 0) ++failed_agents;
+  }
+  if (failed_agents > 0) spdlog::warn("{} agent process(es) did not exit cleanly", failed_agents);
+  return sim_exit;
+}
+
+}  // namespace dream::cli

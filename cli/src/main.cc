@@ -1,0 +1,114 @@
+// dream: run distributed multi-robot controllers against the Robotarium-
+// faithful simulator, one process or many, and inspect the runs.
+#include <CLI/CLI.hpp>
+#include <spdlog/spdlog.h>
+
+#include <csignal>
+#include <iostream>
+
+#include "commands.h"
+#include "dream/config/config_error.h"
+
+namespace dream::cli {
+
+std::atomic<bool>& StopFlag() {
+  static std::atomic<bool> stop{false};
+  return stop;
+}
+
+}  // namespace dream::cli
+
+namespace {
+
+extern "C" void OnStopSignal(int) { dream::cli::StopFlag().store(true); }
+
+void AddRunOptions(CLI::App* command, dream::cli::RunArgs* args, const char* url_help) {
+  command->add_option("config", args->config_path, "Run config (YAML), e.g. config/go_to_goal.yaml")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("--out", args->out_dir, "Output folder for run.lcmlog and summary.json (default runs/<name>)");
+  command->add_option("--lcm-url", args->lcm_url, url_help);
+  command->add_option("--steps", args->steps, "Override the config's step limit")->check(CLI::PositiveNumber);
+  command->add_option("--mode", args->mode, "Override the world mode")->check(CLI::IsMember({"lockstep", "realtime"}));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace dream::cli;
+  CLI::App app{
+      "dream: distributed multi-robot controllers on a Robotarium-faithful simulator, over LCM.\n"
+      "Exit codes: 0 ok, 1 bad input, 2 usage, 3 run has hard errors (the Robotarium would reject it),\n"
+      "4 run did not finish, 130 interrupted.",
+      "dream"};
+  app.require_subcommand(1);
+  bool quiet = false;
+  bool verbose = false;
+  app.add_flag("-q,--quiet", quiet, "Only warnings and errors");
+  app.add_flag("-v,--verbose", verbose, "Debug output");
+
+  RunArgs run_args;
+  CLI::App* run = app.add_subcommand(
+      "run", "Run an experiment in one process: the simulator and every robot's agent on one bus.\n"
+             "Example: dream run config/go_to_goal.yaml --out runs/demo");
+  AddRunOptions(run, &run_args, "LCM URL (default memq://, in-process)");
+
+  RunArgs sim_args;
+  CLI::App* sim = app.add_subcommand(
+      "sim", "Run only the simulator; agents run elsewhere (dream agent) on the same LCM URL.\n"
+             "Example: dream sim config/go_to_goal.yaml --lcm-url 'udpm://239.255.76.67:7667?ttl=0'");
+  AddRunOptions(sim, &sim_args, "LCM URL (default $LCM_DEFAULT_URL, else udpm://239.255.76.67:7667?ttl=0)");
+
+  AgentArgs agent_args;
+  CLI::App* agent = app.add_subcommand(
+      "agent", "Run the agents of some robots against whichever world is on the bus.\n"
+               "Example: dream agent config/go_to_goal.yaml --robots 0-2");
+  agent->add_option("config", agent_args.config_path, "Run config (YAML)")->required()->check(CLI::ExistingFile);
+  agent->add_option("--robots", agent_args.robots, "Robots to drive: all, 3, 0,2,5 or 0-4")->capture_default_str();
+  agent->add_option("--lcm-url", agent_args.lcm_url, "LCM URL (default $LCM_DEFAULT_URL)");
+  agent->add_option("--idle-timeout", agent_args.idle_timeout_s, "Give up after this many seconds without poses")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+
+  RunArgs launch_args;
+  CLI::App* launch = app.add_subcommand(
+      "launch", "Run the simulator and one agent process per robot over udpm.\n"
+                "Example: dream launch config/go_to_goal.yaml");
+  AddRunOptions(launch, &launch_args, "LCM URL (default $LCM_DEFAULT_URL)");
+
+  std::string spy_log;
+  std::string spy_url;
+  bool spy_print = false;
+  CLI::App* spy = app.add_subcommand(
+      "spy", "Open lcm-spy with the dream types, on live traffic or on a recorded log.\n"
+             "Example: dream spy --log runs/go_to_goal/run.lcmlog");
+  spy->add_option("--log", spy_log, "Replay this log into lcm-spy (on a private loopback port)");
+  spy->add_option("--lcm-url", spy_url, "LCM URL to inspect (default $LCM_DEFAULT_URL)");
+  spy->add_flag("--print", spy_print, "Print the commands instead of starting them");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? kExitOk : kExitUsage;
+  }
+
+  spdlog::set_pattern("[%H:%M:%S.%e] [%^%l%$] %v");
+  spdlog::set_level(quiet ? spdlog::level::warn : verbose ? spdlog::level::debug : spdlog::level::info);
+  std::signal(SIGINT, OnStopSignal);
+  std::signal(SIGTERM, OnStopSignal);
+
+  try {
+    if (*run) return RunEmbedded(run_args);
+    if (*sim) return RunSimOnly(sim_args);
+    if (*agent) return RunAgents(agent_args);
+    if (*launch) return RunLaunch(launch_args);
+    if (*spy) return RunSpy(spy_log, spy_url, spy_print);
+  } catch (const dream::config::ConfigError& e) {
+    std::cerr << "dream: " << e.what() << '\n';
+    return kExitInputError;
+  } catch (const std::exception& e) {
+    std::cerr << "dream: " << e.what() << '\n';
+    return kExitInputError;
+  }
+  return kExitUsage;
+}

@@ -1,0 +1,39 @@
+#include <spdlog/spdlog.h>
+
+#include <random>
+
+#include "commands.h"
+#include "dream/agents/agent_host.h"
+#include "dream/agents/controller_factory.h"
+#include "dream/lcm/lcm_bus.h"
+#include "dream/lcm/lcm_url.h"
+#include "run_output.h"
+
+namespace dream::cli {
+
+int64_t NewAgentId() {
+  std::random_device device;
+  return static_cast<int64_t>((static_cast<uint64_t>(device()) << 32) | device()) & INT64_MAX;
+}
+
+int RunEmbedded(const RunArgs& args) {
+  const config::RunConfig config = LoadConfig(args);
+  const std::string out_dir = PrepareOutputDir(args, config);
+  // One process: the world and every agent share one bus, memq:// unless the
+  // user asks for a real transport.
+  lcm::LcmBus bus(args.lcm_url.empty() ? "memq://" : lcm::ResolveLcmUrl(args.lcm_url));
+  const agents::ControllerFactory factory(config.controller, config.num_robots);
+  std::vector<agents::HostedRobot> robots;
+  for (int id = 0; id < config.num_robots; ++id) robots.push_back({id, factory.Make(id)});
+  agents::AgentHost host(bus, std::move(robots), NewAgentId());
+  return RunWorld(bus, config, out_dir);
+}
+
+int RunSimOnly(const RunArgs& args) {
+  const config::RunConfig config = LoadConfig(args);
+  const std::string out_dir = PrepareOutputDir(args, config);
+  lcm::LcmBus bus(lcm::ResolveLcmUrl(args.lcm_url));
+  return RunWorld(bus, config, out_dir);
+}
+
+}  // namespace dream::cli

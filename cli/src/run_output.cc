@@ -1,0 +1,77 @@
+#include "run_output.h"
+
+#include <spdlog/spdlog.h>
+
+#include <filesystem>
+#include <iostream>
+
+#include "dream/sim/atomic_file.h"
+#include "dream/sim/run_recorder.h"
+#include "dream/sim/run_report.h"
+#include "dream/sim/run_summary.h"
+#include "dream/sim/sim_node.h"
+#include "dream/sim/unicycle_world.h"
+
+namespace dream::cli {
+
+config::RunConfig LoadConfig(const RunArgs& args) {
+  config::RunConfig config = config::LoadRunConfigFile(args.config_path);
+  if (args.steps != 0) {
+    if (args.steps < 1) throw std::invalid_argument("--steps must be >= 1, got " + std::to_string(args.steps));
+    config.sim.max_steps = args.steps;
+  }
+  if (!args.mode.empty()) config.sim.mode = sim::ParseWorldMode(args.mode);
+  return config;
+}
+
+std::string PrepareOutputDir(const RunArgs& args, const config::RunConfig& config) {
+  namespace fs = std::filesystem;
+  const fs::path out = args.out_dir.empty() ? fs::path("runs") / config.name : fs::path(args.out_dir);
+  const fs::path parent = out.has_parent_path() ? out.parent_path() : fs::path(".");
+  std::error_code error;
+  if (args.out_dir.empty()) {
+    fs::create_directories(out, error);
+  } else if (!fs::is_directory(parent)) {
+    throw std::runtime_error("output folder " + out.string() + ": its parent folder " + parent.string() +
+                             " does not exist");
+  } else {
+    fs::create_directory(out, error);
+  }
+  if (error || !fs::is_directory(out)) {
+    throw std::runtime_error("cannot create the output folder " + out.string() +
+                             (error ? ": " + error.message() : std::string()));
+  }
+  return out.string();
+}
+
+int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std::string& out_dir) {
+  sim::UnicycleWorld world(config.world, config.initial_poses, config.obstacles);
+  const std::string log_path = out_dir + "/run.lcmlog";
+  sim::RunOutcome outcome;
+  {
+    sim::RunRecorder recorder(log_path);
+    sim::SimNode node(lcm, world, &recorder, config.sim);
+    spdlog::info("{}: {} robots, up to {} steps, {} on {}", config.name, config.num_robots, config.sim.max_steps,
+                 sim::WorldModeName(config.sim.mode), lcm.url());
+    outcome = node.Run(StopFlag());
+    recorder.Close();
+  }
+  sim::WriteFileAtomically(out_dir + "/summary.json", sim::RunSummaryJson(config, outcome, world, "run.lcmlog"));
+
+  const sim::RunReport report = sim::RunReport::FromViolations(world.step(), world.violations());
+  spdlog::info("{} after {} steps ({:.1f} s simulated, {:.2f} s wall): {}", sim::EndName(outcome.end),
+               outcome.steps, world.time_s(), outcome.wall_time_s, outcome.reason);
+  std::cout << report.Text();
+  std::cout << "log:     " << log_path << "\nsummary: " << out_dir << "/summary.json\n";
+  switch (outcome.end) {
+    case sim::RunOutcome::End::kFinished:
+      return report.verdict == sim::RunVerdict::kRejected ? kExitRejected : kExitOk;
+    case sim::RunOutcome::End::kInterrupted:
+      return kExitInterrupted;
+    default:
+      spdlog::error("{}", outcome.reason);
+      return kExitRunFailed;
+  }
+}
+
+}  // namespace dream::cli

@@ -1,0 +1,24 @@
+#pragma once
+
+#include <string>
+
+#include "commands.h"
+#include "dream/config/run_config.h"
+#include "dream/lcm/lcm_interface.h"
+
+namespace dream::cli {
+
+/// Loads the config and applies command-line overrides (--steps, --mode).
+/// @throws config::ConfigError or std::invalid_argument with a clear message.
+config::RunConfig LoadConfig(const RunArgs& args);
+
+/// The output folder: --out, else runs/<name>. Created if missing (its parent
+/// must exist). @throws std::runtime_error naming the folder otherwise.
+std::string PrepareOutputDir(const RunArgs& args, const config::RunConfig& config);
+
+/// Runs the simulator on `lcm` until the run ends, writing <out_dir>/run.lcmlog
+/// and <out_dir>/summary.json (both atomically), and prints the Robotarium
+/// verdict. Returns the process exit code.
+int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std::string& out_dir);
+
+}  // namespace dream::cli

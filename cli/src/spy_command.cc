@@ -1,0 +1,75 @@
+#include <spdlog/spdlog.h>
+#include <unistd.h>
+
+#include <csignal>
+
+#include <filesystem>
+#include <iostream>
+
+#include "commands.h"
+#include "dream/lcm/lcm_url.h"
+#include "process_group.h"
+
+namespace dream::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The types jar: $DREAM_TYPES_JAR, the build tree's, or the installed one.
+std::string FindTypesJar() {
+  if (const char* env = std::getenv("DREAM_TYPES_JAR"); env != nullptr && fs::exists(env)) return env;
+  if (fs::exists(DREAM_BUILD_TYPES_JAR)) return DREAM_BUILD_TYPES_JAR;
+  const fs::path installed = fs::path(SelfExecutable()).parent_path() / "../share/java/dream_lcmtypes.jar";
+  if (fs::exists(installed)) return fs::canonical(installed).string();
+  throw std::runtime_error("cannot find dream_lcmtypes.jar: build the project (cmake --build) or set DREAM_TYPES_JAR");
+}
+
+std::string RequireFile(const std::string& path, const char* what, const char* hint) {
+  if (!fs::exists(path)) throw std::runtime_error(std::string(what) + " " + path + " is missing: " + hint);
+  return path;
+}
+
+}  // namespace
+
+int RunSpy(const std::string& log_path, const std::string& lcm_url, bool print_command_only) {
+  // Debian's /usr/bin/lcm-spy passes -Xincgc, which Java 17 refuses; start
+  // the Spy class directly with our types on the classpath instead.
+  const std::string classpath =
+      RequireFile(DREAM_LCM_JAR, "lcm.jar", "apt-get install liblcm-java") + ":" +
+      RequireFile("/usr/share/java/jchart2d.jar", "jchart2d.jar", "apt-get install libjchart2d-java") + ":" +
+      FindTypesJar();
+  std::string url = lcm_url;
+  if (url.empty() && !log_path.empty()) {
+    // A log is replayed on its own port, loopback only (ttl=0), so it does not
+    // mix with a live run.
+    url = "udpm://239.255.76.67:7668?ttl=0";
+  }
+  url = lcm::ResolveLcmUrl(url);
+  const std::vector<std::string> spy = {"java", "-cp", classpath, "lcm.spy.Spy", "--lcm-url=" + url};
+  std::vector<std::string> player;
+  if (!log_path.empty()) {
+    RequireFile(log_path, "log file", "give the run.lcmlog of a run (runs/<name>/run.lcmlog)");
+    player = {"lcm-logplayer", "--lcm-url=" + url, log_path};
+  }
+  if (print_command_only) {
+    const std::vector<std::string>* commands[] = {&spy, &player};
+    for (const std::vector<std::string>* argv : commands) {
+      for (const std::string& arg : *argv) std::cout << arg << ' ';
+      if (!argv->empty()) std::cout << '\n';
+    }
+    return kExitOk;
+  }
+  ProcessGroup children;
+  const pid_t spy_pid = children.Start(spy);
+  if (!player.empty()) {
+    sleep(2);  // let lcm-spy subscribe before the first message is played
+    children.Start(player);
+  }
+  int code = -1;
+  while ((code = children.WaitFor(spy_pid, 0.2)) < 0) {
+    if (StopFlag().load()) children.SignalAll(SIGTERM);
+  }
+  return code == 0 || StopFlag().load() ? kExitOk : kExitRunFailed;
+}
+
+}  // namespace dream::cli

@@ -1,0 +1,44 @@
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace dream::lcm {
+
+// The channel contract between the world (simulator or bridge) and agents.
+// See docs/architecture.md for who publishes what and when.
+
+/// All robots' poses at a step; world -> agents. Published last in a step: it
+/// is the trigger agents answer.
+inline constexpr const char* kPosesChannel = "DREAM_POSES";
+/// Virtual obstacles at a step; world -> agents, before DREAM_POSES.
+inline constexpr const char* kObstaclesChannel = "DREAM_OBSTACLES";
+/// Run state, violation counts, lost agents; world -> all.
+inline constexpr const char* kStatusChannel = "DREAM_STATUS";
+/// Prefix of the per-robot command channels DREAM_CMD_<id>; agent -> world.
+inline constexpr const char* kCommandChannelPrefix = "DREAM_CMD_";
+/// LCM regex matching every command channel.
+inline constexpr const char* kCommandChannelRegex = "DREAM_CMD_.*";
+
+/// "DREAM_CMD_<robot_id>".
+inline std::string CommandChannel(int robot_id) {
+  return kCommandChannelPrefix + std::to_string(robot_id);
+}
+
+/// The robot id encoded in a command channel name, or nothing when the
+/// suffix is not a plain non-negative decimal number.
+inline std::optional<int> RobotIdFromCommandChannel(const std::string& channel) {
+  const std::string prefix = kCommandChannelPrefix;
+  if (channel.rfind(prefix, 0) != 0 || channel.size() == prefix.size() ||
+      channel.size() > prefix.size() + 6) {
+    return std::nullopt;
+  }
+  int id = 0;
+  for (size_t i = prefix.size(); i < channel.size(); ++i) {
+    if (channel[i] < '0' || channel[i] > '9') return std::nullopt;
+    id = id * 10 + (channel[i] - '0');
+  }
+  return id;
+}
+
+}  // namespace dream::lcm

@@ -1,0 +1,72 @@
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+#include "dream/config/config_error.h"
+
+namespace dream::config {
+
+/// A YAML node that remembers which file and key it came from, so every
+/// error names "file:line: key" and the allowed values.
+class ConfigNode {
+ public:
+  /// Parses `path`. @throws ConfigError when the file is missing or not YAML.
+  static ConfigNode LoadFile(const std::string& path);
+  /// Parses `text` as if it came from `source_name` (tests, embedded configs).
+  static ConfigNode LoadString(const std::string& text, const std::string& source_name);
+
+  ConfigNode() = default;  ///< an undefined node
+  ConfigNode(YAML::Node node, std::string file, std::string key);
+
+  bool Has(const std::string& key) const;
+  /// The child `key`. @throws ConfigError if it is missing.
+  ConfigNode Required(const std::string& key) const;
+  /// The child `key`, or an undefined node when missing.
+  ConfigNode Optional(const std::string& key) const;
+  bool IsDefined() const { return node_.IsDefined() && !node_.IsNull(); }
+  bool IsSequence() const { return node_.IsSequence(); }
+  bool IsMap() const { return node_.IsMap(); }
+  size_t size() const { return node_.size(); }
+  /// Element `i` of a sequence.
+  ConfigNode operator[](size_t i) const;
+  /// Map keys in file order.
+  std::vector<std::string> Keys() const;
+
+  /// Throws when the map holds a key not in `allowed` (catches typos).
+  void RejectUnknownKeys(std::initializer_list<const char*> allowed) const;
+
+  // Scalar readers: each throws a ConfigError naming the key and the value
+  // when the value has the wrong type or is not finite.
+  double AsDouble() const;
+  long long AsInt() const;
+  bool AsBool() const;
+  std::string AsString() const;
+  std::vector<double> AsDoubles() const;
+
+  double GetDouble(const std::string& key, double fallback) const;
+  long long GetInt(const std::string& key, long long fallback) const;
+  bool GetBool(const std::string& key, bool fallback) const;
+  std::string GetString(const std::string& key, const std::string& fallback) const;
+
+  /// A ConfigError for this node: "file:line: key: message".
+  [[noreturn]] void Fail(const std::string& message) const;
+
+  const std::string& file() const { return file_; }
+  const std::string& key() const { return key_; }
+  const YAML::Node& yaml() const { return node_; }
+
+ private:
+  std::string Where() const;
+  std::string ScalarText() const;
+
+  YAML::Node node_;
+  std::string file_;
+  std::string key_;
+  int line_ = 0;  // 1-based line of this node, or of its parent when missing
+};
+
+}  // namespace dream::config

@@ -1,0 +1,37 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "dream/config/config_node.h"
+#include "dream/sim/pose2.h"
+#include "dream/sim/rectangle_obstacle_spec.h"
+#include "dream/sim/sim_node_options.h"
+#include "dream/sim/world_params.h"
+
+namespace dream::config {
+
+/// A whole run as described by one YAML file (see config/README.md for every
+/// key). Initial poses are resolved here: from the file, or generated
+/// collision-free from the seed, so every process of a run sees the same.
+struct RunConfig {
+  std::string source;            ///< the file it came from (for messages)
+  std::string name;              ///< run name; default output folder runs/<name>
+  uint64_t seed = 1;             ///< seeds initial poses and every noise source
+  int num_robots = 0;            ///< 1..50, as the Robotarium simulator allows
+  sim::SimNodeOptions sim;       ///< pacing, timeouts, step limit
+  sim::WorldParams world;        ///< Robotarium V2 constants (not configurable)
+  std::vector<sim::Pose2> initial_poses;
+  std::vector<sim::RectangleObstacleSpec> obstacles;
+  ConfigNode controller;         ///< the `controller:` section, read by the agents' factory
+};
+
+/// Reads and checks a run config. @throws ConfigError naming file, line, key
+/// and value, with the allowed values, for any mistake.
+RunConfig LoadRunConfig(const ConfigNode& root);
+
+/// LoadRunConfig(ConfigNode::LoadFile(path)).
+RunConfig LoadRunConfigFile(const std::string& path);
+
+}  // namespace dream::config

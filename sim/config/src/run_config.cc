@@ -1,0 +1,186 @@
+#include "dream/config/run_config.h"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "dream/sim/initial_pose_generator.h"
+#include "dream/sim/robotarium_constants.h"
+
+namespace dream::config {
+namespace {
+
+using sim::RobotariumConstants;
+
+std::string Format(double value) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.3f", value);
+  return text;
+}
+
+sim::SimNodeOptions ReadSimOptions(const ConfigNode& root) {
+  sim::SimNodeOptions options;
+  options.max_steps = root.GetInt("steps", options.max_steps);
+  options.stop_when_done = root.GetBool("stop_when_done", options.stop_when_done);
+  const ConfigNode world = root.Optional("world");
+  if (world.IsDefined()) {
+    world.RejectUnknownKeys({"mode", "agent_timeout_s", "start_timeout_s", "resend_interval_s", "max_abs_v_mps",
+                             "max_abs_w_radps"});
+    if (world.Has("mode")) {
+      const ConfigNode mode = world.Required("mode");
+      try {
+        options.mode = sim::ParseWorldMode(mode.AsString());
+      } catch (const std::invalid_argument& e) {
+        mode.Fail(e.what());
+      }
+    }
+    options.agent_timeout_s = world.GetDouble("agent_timeout_s", options.agent_timeout_s);
+    options.start_timeout_s = world.GetDouble("start_timeout_s", options.start_timeout_s);
+    options.resend_interval_s = world.GetDouble("resend_interval_s", options.resend_interval_s);
+    options.max_abs_v_mps = world.GetDouble("max_abs_v_mps", options.max_abs_v_mps);
+    options.max_abs_w_radps = world.GetDouble("max_abs_w_radps", options.max_abs_w_radps);
+  }
+  std::string error;
+  if (!options.IsValid(&error)) (world.IsDefined() ? world : root).Fail(error);
+  return options;
+}
+
+std::vector<sim::Pose2> ReadInitialPoses(const ConfigNode& root, const RunConfig& config) {
+  const ConfigNode node = root.Optional("initial_poses");
+  if (!node.IsDefined() || node.IsMap()) {
+    sim::InitialPoseParams params;
+    if (node.IsDefined()) {
+      node.RejectUnknownKeys({"generate"});
+      const ConfigNode generate = node.Required("generate");
+      if (generate.IsMap()) {
+        generate.RejectUnknownKeys({"min_spacing_m", "wall_margin_m"});
+        params.min_spacing_m = generate.GetDouble("min_spacing_m", params.min_spacing_m);
+        params.wall_margin_m = generate.GetDouble("wall_margin_m", params.wall_margin_m);
+      }
+    }
+    try {
+      return sim::InitialPoseGenerator(config.world, params).Generate(config.num_robots, config.seed);
+    } catch (const std::invalid_argument& e) {
+      node.Fail(std::string("cannot generate initial poses: ") + e.what());
+    }
+  }
+  if (!node.IsSequence() || node.size() != static_cast<size_t>(config.num_robots)) {
+    node.Fail("expected one [x, y, theta] per robot (" + std::to_string(config.num_robots) + "), got " +
+              (node.IsSequence() ? std::to_string(node.size()) : std::string("no list")) +
+              "; or write `initial_poses: {generate: {min_spacing_m: 0.3}}`");
+  }
+  std::vector<sim::Pose2> poses;
+  for (size_t i = 0; i < node.size(); ++i) {
+    const std::vector<double> values = node[i].AsDoubles();
+    if (values.size() != 3) node[i].Fail("expected [x, y, theta] (metres, metres, radians)");
+    const sim::Pose2 pose{values[0], values[1], values[2]};
+    if (!config.world.arena.Contains(pose.x_m, pose.y_m)) {
+      node[i].Fail("robot " + std::to_string(i) + " starts at (" + Format(pose.x_m) + ", " + Format(pose.y_m) +
+                   "), outside the arena x in [" + Format(config.world.arena.x_min_m) + ", " +
+                   Format(config.world.arena.x_max_m) + "], y in [" + Format(config.world.arena.y_min_m) + ", " +
+                   Format(config.world.arena.y_max_m) + "]");
+    }
+    poses.push_back(pose);
+  }
+  // Robots that start in collision would make the Robotarium reject the run.
+  const double offset = config.world.collision_offset_m;
+  for (size_t i = 0; i < poses.size(); ++i) {
+    for (size_t j = i + 1; j < poses.size(); ++j) {
+      const double dx = (poses[i].x_m + offset * std::cos(poses[i].theta_rad)) -
+                        (poses[j].x_m + offset * std::cos(poses[j].theta_rad));
+      const double dy = (poses[i].y_m + offset * std::sin(poses[i].theta_rad)) -
+                        (poses[j].y_m + offset * std::sin(poses[j].theta_rad));
+      const double distance = std::hypot(dx, dy);
+      if (distance <= config.world.collision_diameter_m) {
+        node[j].Fail("robots " + std::to_string(i) + " and " + std::to_string(j) +
+                     " start in collision: their collision centres are " + Format(distance) +
+                     " m apart, they must be more than " + Format(config.world.collision_diameter_m) + " m");
+      }
+    }
+  }
+  return poses;
+}
+
+std::vector<sim::RectangleObstacleSpec> ReadObstacles(const ConfigNode& root) {
+  std::vector<sim::RectangleObstacleSpec> specs;
+  const ConfigNode list = root.Optional("obstacles");
+  if (!list.IsDefined()) return specs;
+  if (!list.IsSequence()) list.Fail("expected a list of obstacles (each with center: and size:)");
+  for (size_t i = 0; i < list.size(); ++i) {
+    const ConfigNode item = list[i];
+    item.RejectUnknownKeys({"center", "size", "path"});
+    sim::RectangleObstacleSpec spec;
+    spec.id = static_cast<int>(i);
+    const std::vector<double> center = item.Required("center").AsDoubles();
+    if (center.size() != 2) item.Required("center").Fail("expected [x, y] in metres");
+    const std::vector<double> size = item.Required("size").AsDoubles();
+    if (size.size() != 2) item.Required("size").Fail("expected [width, height] in metres");
+    spec.center_m = Eigen::Vector2d(center[0], center[1]);
+    spec.width_m = size[0];
+    spec.height_m = size[1];
+    const ConfigNode path = item.Optional("path");
+    if (path.IsDefined()) {
+      path.RejectUnknownKeys({"waypoints", "speed_mps", "mode"});
+      sim::ObstaclePath route;
+      const ConfigNode waypoints = path.Required("waypoints");
+      if (!waypoints.IsSequence()) waypoints.Fail("expected a list of [x, y] waypoints");
+      for (size_t w = 0; w < waypoints.size(); ++w) {
+        const std::vector<double> xy = waypoints[w].AsDoubles();
+        if (xy.size() != 2) waypoints[w].Fail("expected [x, y] in metres");
+        route.waypoints_m.emplace_back(xy[0], xy[1]);
+      }
+      route.speed_mps = path.Required("speed_mps").AsDouble();
+      const std::string mode = path.GetString("mode", "loop");
+      if (mode == "loop") {
+        route.mode = sim::ObstaclePathMode::kLoop;
+      } else if (mode == "ping_pong") {
+        route.mode = sim::ObstaclePathMode::kPingPong;
+      } else {
+        path.Required("mode").Fail("unknown path mode '" + mode + "'; allowed: loop, ping_pong");
+      }
+      spec.path = route;
+    }
+    std::string error;
+    if (!spec.IsValid(&error)) item.Fail(error);
+    specs.push_back(spec);
+  }
+  return specs;
+}
+
+}  // namespace
+
+RunConfig LoadRunConfig(const ConfigNode& root) {
+  root.RejectUnknownKeys({"name", "seed", "robots", "steps", "stop_when_done", "world", "initial_poses",
+                          "obstacles", "controller", "description"});
+  RunConfig config;
+  config.source = root.file();
+  config.name = root.Required("name").AsString();
+  for (char c : config.name) {
+    const bool safe = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+                      c == '-' || c == '.';
+    if (!safe || config.name == "." || config.name == "..") {
+      root.Required("name").Fail("'" + config.name + "' is not a plain name; use letters, digits, _ - . only");
+    }
+  }
+  const long long seed = root.GetInt("seed", 1);
+  if (seed < 0) root.Required("seed").Fail("must be >= 0, got " + std::to_string(seed));
+  config.seed = static_cast<uint64_t>(seed);
+  const ConfigNode robots = root.Required("robots");
+  const long long num_robots = robots.AsInt();
+  if (num_robots < 1 || num_robots > RobotariumConstants::kMaxRobotsInSimulation) {
+    robots.Fail("must be between 1 and " + std::to_string(RobotariumConstants::kMaxRobotsInSimulation) +
+                " (the Robotarium simulator's limit; the lab runs at most " +
+                std::to_string(RobotariumConstants::kMaxRobotsOnHardware) + "), got " + std::to_string(num_robots));
+  }
+  config.num_robots = static_cast<int>(num_robots);
+  config.sim = ReadSimOptions(root);
+  config.initial_poses = ReadInitialPoses(root, config);
+  config.obstacles = ReadObstacles(root);
+  config.controller = root.Required("controller");
+  if (!config.controller.IsMap()) config.controller.Fail("expected a mapping with at least `kind:`");
+  return config;
+}
+
+RunConfig LoadRunConfigFile(const std::string& path) { return LoadRunConfig(ConfigNode::LoadFile(path)); }
+
+}  // namespace dream::config

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <set>
+#include <string>
+
+namespace dream::sim {
+
+/// How a run ended and what happened on the way; what the summary reports.
+struct RunOutcome {
+  enum class End {
+    kFinished,      ///< reached max_steps, or every robot reported done
+    kInterrupted,   ///< Ctrl-C / SIGTERM
+    kStartTimeout,  ///< some robot never got an agent
+    kFailed,        ///< an error stopped the run (see reason)
+  };
+  End end = End::kFinished;
+  std::string reason;                ///< one line, for humans
+  int64_t steps = 0;                 ///< world steps taken
+  double wall_time_s = 0.0;          ///< from the first published step to the end
+  int64_t rejected_commands = 0;     ///< absurd, unknown robot, second agent, wrong step
+  std::set<int> robots_ever_lost;    ///< robots whose agent went silent at some point
+  std::set<int> robots_done;         ///< robots whose last command said done
+  std::map<std::string, long> bad_messages;  ///< undecodable messages per channel
+  int64_t log_events = 0;            ///< events written to the run log
+
+  bool ok() const { return end == End::kFinished; }
+};
+
+const char* EndName(RunOutcome::End end);
+
+}  // namespace dream::sim

@@ -1,0 +1,19 @@
+#pragma once
+
+#include <string>
+
+#include "dream/config/run_config.h"
+#include "dream/sim/run_outcome.h"
+#include "dream/sim/unicycle_world.h"
+
+namespace dream::sim {
+
+/// The machine-readable summary of a run, as pretty-printed JSON: how it
+/// ended, steps, wall time, the Robotarium's violation counts and verdict
+/// (rejected / warning / clean) with its debug() text, rejected commands,
+/// lost agents, bad messages per channel, and final poses.
+/// See docs/run-outputs.md for every field.
+std::string RunSummaryJson(const config::RunConfig& config, const RunOutcome& outcome,
+                           const UnicycleWorld& world, const std::string& log_file_name);
+
+}  // namespace dream::sim

@@ -1,0 +1,91 @@
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "dream/lcm/bad_message_log.h"
+#include "dream/lcm/lcm_interface.h"
+#include "dream/sim/run_outcome.h"
+#include "dream/sim/sim_node_options.h"
+#include "dream/sim/unicycle_world.h"
+
+namespace dream {
+class velocity_command_t;
+}
+
+namespace dream::sim {
+
+class RunRecorder;
+
+/// The simulator on the bus: publishes the world, consumes commands, records
+/// the run.
+///
+/// Writes DREAM_OBSTACLES, DREAM_STATUS and then DREAM_POSES (the trigger
+/// agents answer) for every step; reads DREAM_CMD_<id>. Records its own
+/// messages once, as published, and every other channel as received, all with
+/// the simulated time of the current step.
+///
+/// Bad commands never stop the run: a NaN/inf or absurd command is rejected,
+/// counted, and its robot holds still for that step; a command for a robot
+/// that does not exist, from a second agent claiming a robot, or for a step
+/// other than the current one is rejected and counted; undecodable messages
+/// are counted per channel.
+class SimNode {
+ public:
+  /// @param recorder may be null (no log). Must outlive the node.
+  /// @throws std::invalid_argument when options are invalid.
+  SimNode(lcm::LcmInterface& lcm, UnicycleWorld& world, RunRecorder* recorder, SimNodeOptions options);
+
+  /// Runs to the end; returns how it ended. Handles every subscription on
+  /// `lcm`, so in one process it also drives the agents sharing the bus.
+  /// Sets no signal handlers: the caller sets `stop` (e.g. from SIGINT).
+  RunOutcome Run(const std::atomic<bool>& stop);
+
+ private:
+  using Clock = std::chrono::steady_clock;
+
+  struct RobotSlot {
+    int64_t owner_agent_id = 0;
+    bool owned = false;
+    bool answered = false;   // lockstep: has a command for the current step
+    bool lost = false;
+    bool done = false;
+    double v_mps = 0.0;
+    double w_radps = 0.0;
+    Clock::time_point last_heard;
+  };
+
+  void OnCommand(const std::string& channel, const velocity_command_t& command);
+  void OnAnyMessage(const std::string& channel, const void* data, int size);
+  void Reject(const std::string& channel, const std::string& reason);
+  void PublishStep(bool record);
+  void PublishStatus(int8_t state, const std::string& detail, bool record);
+  template <typename Message>
+  void PublishAndRecord(const char* channel, const Message& message, bool record);
+  bool AllLiveAnswered() const;
+  void MarkSilentRobotsLost(Clock::time_point now);
+  void AdvanceWorld();
+  void ReportProgress(Clock::time_point now);
+  RunOutcome Finish(RunOutcome::End end, const std::string& reason);
+  int64_t SimUtime() const;
+
+  lcm::LcmInterface& lcm_;
+  UnicycleWorld& world_;
+  RunRecorder* recorder_;
+  SimNodeOptions options_;
+  lcm::BadMessageLog bad_messages_;
+  std::vector<RobotSlot> robots_;
+  int8_t state_;
+  int64_t rejected_commands_ = 0;
+  std::set<int> robots_ever_lost_;
+  Clock::time_point run_start_;
+  Clock::time_point step_published_;
+  Clock::time_point last_resend_;
+  Clock::time_point last_progress_;
+  int64_t last_progress_step_ = 0;
+};
+
+}  // namespace dream::sim

@@ -1,0 +1,45 @@
+#include "dream/sim/run_summary.h"
+
+#include <nlohmann/json.hpp>
+
+#include "dream/sim/run_report.h"
+
+namespace dream::sim {
+
+std::string RunSummaryJson(const config::RunConfig& config, const RunOutcome& outcome,
+                           const UnicycleWorld& world, const std::string& log_file_name) {
+  const RunReport report = RunReport::FromViolations(world.step(), world.violations(), world.params().time_step_s);
+  nlohmann::ordered_json json;
+  json["run"] = config.name;
+  json["config"] = config.source;
+  json["seed"] = config.seed;
+  json["mode"] = WorldModeName(config.sim.mode);
+  json["robots"] = config.num_robots;
+  json["end"] = EndName(outcome.end);
+  json["reason"] = outcome.reason;
+  json["steps"] = outcome.steps;
+  json["max_steps"] = config.sim.max_steps;
+  json["simulated_time_s"] = world.time_s();
+  json["wall_time_s"] = outcome.wall_time_s;
+  json["steps_per_second"] =
+      outcome.wall_time_s > 0 ? static_cast<double>(outcome.steps) / outcome.wall_time_s : 0.0;
+  const ViolationCounts& counts = world.violations();
+  json["violations"] = {{"boundary_errors", counts.boundary_errors},
+                        {"collision_errors", counts.collision_errors},
+                        {"actuator_errors", counts.actuator_errors},
+                        {"obstacle_collisions", counts.obstacle_collisions}};
+  json["verdict"] = RunVerdictName(report.verdict);
+  json["robotarium_report"] = report.Text();
+  json["rejected_commands"] = outcome.rejected_commands;
+  json["robots_ever_lost"] = outcome.robots_ever_lost;
+  json["robots_done"] = outcome.robots_done;
+  json["bad_messages"] = outcome.bad_messages;
+  json["log"] = log_file_name;
+  json["log_events"] = outcome.log_events;
+  nlohmann::json poses = nlohmann::json::array();
+  for (const Pose2& pose : world.poses()) poses.push_back({pose.x_m, pose.y_m, pose.theta_rad});
+  json["final_poses"] = poses;
+  return json.dump(2) + "\n";
+}
+
+}  // namespace dream::sim

@@ -1,0 +1,353 @@
+#include "dream/sim/sim_node.h"
+
+#include <spdlog/spdlog.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <thread>
+
+#include "dream/lcm/channels.h"
+#include "dream/lcm/lcm_typed.h"
+#include "dream/obstacles_t.hpp"
+#include "dream/robot_poses_t.hpp"
+#include "dream/run_status_t.hpp"
+#include "dream/sim/robotarium_constants.h"
+#include "dream/sim/run_recorder.h"
+#include "dream/velocity_command_t.hpp"
+
+namespace dream::sim {
+namespace {
+
+constexpr int64_t kMicrosPerStep = 33000;  // 0.033 s, the Robotarium's time step
+
+double SecondsBetween(std::chrono::steady_clock::time_point from, std::chrono::steady_clock::time_point to) {
+  return std::chrono::duration<double>(to - from).count();
+}
+
+std::string JoinIds(const std::vector<int>& ids) {
+  std::string text;
+  for (int id : ids) text += (text.empty() ? "" : ", ") + std::to_string(id);
+  return text;
+}
+
+}  // namespace
+
+const char* EndName(RunOutcome::End end) {
+  switch (end) {
+    case RunOutcome::End::kFinished: return "finished";
+    case RunOutcome::End::kInterrupted: return "interrupted";
+    case RunOutcome::End::kStartTimeout: return "start_timeout";
+    case RunOutcome::End::kFailed: return "failed";
+  }
+  return "unknown";
+}
+
+SimNode::SimNode(lcm::LcmInterface& lcm, UnicycleWorld& world, RunRecorder* recorder, SimNodeOptions options)
+    : lcm_(lcm),
+      world_(world),
+      recorder_(recorder),
+      options_(options),
+      robots_(static_cast<size_t>(world.num_robots())),
+      state_(run_status_t::WAITING_FOR_AGENTS) {
+  std::string error;
+  if (!options_.IsValid(&error)) throw std::invalid_argument("sim options: " + error);
+  lcm::Subscribe<velocity_command_t>(
+      lcm_, lcm::kCommandChannelRegex,
+      [this](const std::string& channel, const velocity_command_t& command) { OnCommand(channel, command); },
+      bad_messages_);
+  if (recorder_ != nullptr) {
+    lcm_.Subscribe(".*", [this](const std::string& channel, const void* data, int size) {
+      OnAnyMessage(channel, data, size);
+    });
+  }
+}
+
+int64_t SimNode::SimUtime() const { return world_.step() * kMicrosPerStep; }
+
+void SimNode::OnAnyMessage(const std::string& channel, const void* data, int size) {
+  // The world's own channels are recorded once, when published.
+  if (channel == lcm::kPosesChannel || channel == lcm::kObstaclesChannel || channel == lcm::kStatusChannel) {
+    return;
+  }
+  recorder_->Write(channel, SimUtime(), data, size);
+}
+
+void SimNode::Reject(const std::string& channel, const std::string& reason) {
+  ++rejected_commands_;
+  // Rejections are the user's bug; say it once per channel, then every 100th.
+  bad_messages_.Report(channel, "rejected command: " + reason);
+}
+
+void SimNode::OnCommand(const std::string& channel, const velocity_command_t& command) {
+  const std::optional<int> channel_id = lcm::RobotIdFromCommandChannel(channel);
+  if (!channel_id) {
+    Reject(channel, "channel name must be DREAM_CMD_<robot id>");
+    return;
+  }
+  const int id = *channel_id;
+  if (id >= world_.num_robots()) {
+    Reject(channel, "robot " + std::to_string(id) + " does not exist: this run has " +
+                        std::to_string(world_.num_robots()) + " robots (ids 0.." +
+                        std::to_string(world_.num_robots() - 1) + ")");
+    return;
+  }
+  if (command.robot_id != id) {
+    Reject(channel, "payload robot_id " + std::to_string(command.robot_id) + " does not match the channel");
+    return;
+  }
+  RobotSlot& robot = robots_[static_cast<size_t>(id)];
+  if (!robot.owned || (robot.lost && robot.owner_agent_id != command.agent_id)) {
+    if (robot.owned) spdlog::warn("robot {}: agent {:#x} takes over from lost agent {:#x}", id, command.agent_id, robot.owner_agent_id);
+    robot.owned = true;
+    robot.owner_agent_id = command.agent_id;
+  } else if (robot.owner_agent_id != command.agent_id) {
+    Reject(channel, "robot " + std::to_string(id) + " is already driven by agent " +
+                        std::to_string(robot.owner_agent_id) + "; a second agent " +
+                        std::to_string(command.agent_id) + " sends commands for it too. Stop one of them.");
+    return;
+  }
+  const auto now = Clock::now();
+  robot.last_heard = now;
+  if (robot.lost) {
+    robot.lost = false;
+    spdlog::info("robot {}: agent is back (step {})", id, world_.step());
+  }
+
+  const bool lockstep = options_.mode == WorldMode::kLockstep;
+  if (lockstep && command.step < world_.step()) return;  // a late answer to a step already taken
+  if (lockstep && command.step > world_.step()) {
+    Reject(channel, "answers step " + std::to_string(command.step) + " but the world is at step " +
+                        std::to_string(world_.step()));
+    return;
+  }
+  if (lockstep && robot.answered) return;  // duplicate: the agent re-answered a resent step
+
+  const bool finite = std::isfinite(command.v) && std::isfinite(command.w);
+  if (!finite || std::abs(command.v) > options_.max_abs_v_mps || std::abs(command.w) > options_.max_abs_w_radps) {
+    Reject(channel, "absurd velocity v=" + std::to_string(command.v) + " m/s, w=" + std::to_string(command.w) +
+                        " rad/s (limits " + std::to_string(options_.max_abs_v_mps) + ", " +
+                        std::to_string(options_.max_abs_w_radps) + "); robot " + std::to_string(id) +
+                        " holds still");
+    robot.v_mps = 0.0;
+    robot.w_radps = 0.0;
+  } else {
+    robot.v_mps = command.v;
+    robot.w_radps = command.w;
+  }
+  robot.done = command.done;
+  robot.answered = true;
+  if (!lockstep) world_.SetCommand(id, UnicycleCommand{robot.v_mps, robot.w_radps});
+}
+
+template <typename Message>
+void SimNode::PublishAndRecord(const char* channel, const Message& message, bool record) {
+  const int size = message.getEncodedSize();
+  std::vector<uint8_t> buffer(static_cast<size_t>(size));
+  message.encode(buffer.data(), 0, size);
+  lcm_.Publish(channel, buffer.data(), size);
+  if (record && recorder_ != nullptr) recorder_->Write(channel, SimUtime(), buffer.data(), size);
+}
+
+void SimNode::PublishStatus(int8_t state, const std::string& detail, bool record) {
+  run_status_t status;
+  status.utime = SimUtime();
+  status.step = world_.step();
+  status.state = state;
+  status.num_robots = world_.num_robots();
+  const ViolationCounts& counts = world_.violations();
+  status.boundary_errors = counts.boundary_errors;
+  status.collision_errors = counts.collision_errors;
+  status.actuator_errors = counts.actuator_errors;
+  status.obstacle_collisions = counts.obstacle_collisions;
+  status.rejected_commands = rejected_commands_;
+  for (size_t i = 0; i < robots_.size(); ++i) {
+    if (robots_[i].lost) status.lost_robot_ids.push_back(static_cast<int32_t>(i));
+  }
+  status.num_lost = static_cast<int32_t>(status.lost_robot_ids.size());
+  status.detail = detail;
+  PublishAndRecord(lcm::kStatusChannel, status, record);
+}
+
+void SimNode::PublishStep(bool record) {
+  obstacles_t obstacles;
+  obstacles.utime = SimUtime();
+  obstacles.step = world_.step();
+  for (const RectangleObstacle& obstacle : world_.obstacles()) {
+    rectangle_obstacle_t o;
+    o.id = obstacle.id();
+    o.center_x = obstacle.center_m().x();
+    o.center_y = obstacle.center_m().y();
+    o.width = obstacle.width_m();
+    o.height = obstacle.height_m();
+    const Eigen::Vector2d velocity = obstacle.velocity_mps();
+    o.vx = velocity.x();
+    o.vy = velocity.y();
+    obstacles.obstacles.push_back(o);
+  }
+  obstacles.num_obstacles = static_cast<int32_t>(obstacles.obstacles.size());
+  PublishAndRecord(lcm::kObstaclesChannel, obstacles, record);
+
+  PublishStatus(state_, state_ == run_status_t::WAITING_FOR_AGENTS ? "waiting for agents" : "running", record);
+
+  robot_poses_t poses;
+  poses.utime = SimUtime();
+  poses.step = world_.step();
+  poses.num_robots = world_.num_robots();
+  for (const Pose2& pose : world_.poses()) {
+    poses.x.push_back(pose.x_m);
+    poses.y.push_back(pose.y_m);
+    poses.theta.push_back(pose.theta_rad);
+  }
+  PublishAndRecord(lcm::kPosesChannel, poses, record);
+}
+
+bool SimNode::AllLiveAnswered() const {
+  for (const RobotSlot& robot : robots_) {
+    if (!robot.answered && !robot.lost) return false;
+  }
+  return true;
+}
+
+void SimNode::MarkSilentRobotsLost(Clock::time_point now) {
+  std::vector<int> newly_lost;
+  for (size_t i = 0; i < robots_.size(); ++i) {
+    RobotSlot& robot = robots_[i];
+    const bool silent = options_.mode == WorldMode::kLockstep
+                            ? !robot.answered
+                            : SecondsBetween(robot.last_heard, now) > options_.agent_timeout_s;
+    if (silent && !robot.lost) {
+      robot.lost = true;
+      robots_ever_lost_.insert(static_cast<int>(i));
+      world_.StopRobot(static_cast<int>(i));
+      newly_lost.push_back(static_cast<int>(i));
+    }
+  }
+  if (!newly_lost.empty()) {
+    spdlog::warn("step {}: no command for {:.1f} s from robot(s) {}: marked lost, their robots stop; "
+                 "they rejoin when their agent speaks again",
+                 world_.step(), options_.agent_timeout_s, JoinIds(newly_lost));
+  }
+}
+
+void SimNode::AdvanceWorld() {
+  if (options_.mode == WorldMode::kLockstep) {
+    for (size_t i = 0; i < robots_.size(); ++i) {
+      RobotSlot& robot = robots_[i];
+      const int id = static_cast<int>(i);
+      if (robot.answered) {
+        world_.SetCommand(id, UnicycleCommand{robot.v_mps, robot.w_radps});
+      } else {
+        world_.StopRobot(id);
+      }
+      robot.answered = false;
+    }
+  }
+  world_.Step();
+}
+
+void SimNode::ReportProgress(Clock::time_point now) {
+  if (options_.progress_interval_s <= 0.0 || SecondsBetween(last_progress_, now) < options_.progress_interval_s) {
+    return;
+  }
+  const double rate = static_cast<double>(world_.step() - last_progress_step_) / SecondsBetween(last_progress_, now);
+  const double remaining_s = rate > 0 ? static_cast<double>(options_.max_steps - world_.step()) / rate : 0.0;
+  spdlog::info("step {}/{} ({:.0f}%), {:.0f} steps/s, at most {:.0f} s left", world_.step(), options_.max_steps,
+               100.0 * static_cast<double>(world_.step()) / static_cast<double>(options_.max_steps), rate,
+               remaining_s);
+  last_progress_ = now;
+  last_progress_step_ = world_.step();
+}
+
+RunOutcome SimNode::Finish(RunOutcome::End end, const std::string& reason) {
+  const int8_t state = end == RunOutcome::End::kFinished ? run_status_t::FINISHED : run_status_t::ABORTED;
+  state_ = state;
+  PublishStatus(state, reason, true);
+  RunOutcome outcome;
+  outcome.end = end;
+  outcome.reason = reason;
+  outcome.steps = world_.step();
+  outcome.wall_time_s = SecondsBetween(run_start_, Clock::now());
+  outcome.rejected_commands = rejected_commands_;
+  outcome.robots_ever_lost = robots_ever_lost_;
+  for (size_t i = 0; i < robots_.size(); ++i) {
+    if (robots_[i].done) outcome.robots_done.insert(static_cast<int>(i));
+  }
+  outcome.bad_messages = bad_messages_.per_channel();
+  outcome.log_events = recorder_ != nullptr ? recorder_->events_written() : 0;
+  return outcome;
+}
+
+RunOutcome SimNode::Run(const std::atomic<bool>& stop) {
+  run_start_ = Clock::now();
+  last_progress_ = run_start_;
+  state_ = run_status_t::WAITING_FOR_AGENTS;
+  PublishStep(true);
+  step_published_ = last_resend_ = Clock::now();
+  const bool lockstep = options_.mode == WorldMode::kLockstep;
+  const auto step_period = std::chrono::microseconds(kMicrosPerStep);
+  Clock::time_point next_realtime_step;
+
+  while (true) {
+    if (stop.load()) return Finish(RunOutcome::End::kInterrupted, "interrupted (Ctrl-C or SIGTERM)");
+    const auto now = Clock::now();
+
+    if (state_ == run_status_t::WAITING_FOR_AGENTS) {
+      if (AllLiveAnswered()) {
+        state_ = run_status_t::RUNNING;
+        spdlog::info("all {} robots have agents; running ({})", world_.num_robots(), WorldModeName(options_.mode));
+        next_realtime_step = now;
+        // Agents answered step 0; in real time their answer is the latest command.
+      } else if (SecondsBetween(step_published_, now) > options_.start_timeout_s) {
+        std::vector<int> missing;
+        for (size_t i = 0; i < robots_.size(); ++i) {
+          if (!robots_[i].answered) missing.push_back(static_cast<int>(i));
+        }
+        return Finish(RunOutcome::End::kStartTimeout,
+                      "no agent answered for robot(s) " + JoinIds(missing) + " within " +
+                          std::to_string(static_cast<int>(options_.start_timeout_s)) +
+                          " s; start them (dream agent --robots ...) on the same LCM URL " + lcm_.url());
+      }
+    }
+
+    if (state_ == run_status_t::RUNNING) {
+      bool ready = false;
+      if (lockstep) {
+        if (!AllLiveAnswered() && SecondsBetween(step_published_, now) > options_.agent_timeout_s) {
+          MarkSilentRobotsLost(now);
+        }
+        ready = AllLiveAnswered();
+      } else {
+        ready = now >= next_realtime_step;
+        if (ready) MarkSilentRobotsLost(now);
+      }
+      if (ready) {
+        AdvanceWorld();
+        next_realtime_step += step_period;
+        bool all_done = options_.stop_when_done;
+        for (const RobotSlot& robot : robots_) all_done = all_done && robot.done;
+        if (world_.step() >= options_.max_steps || all_done) {
+          PublishStep(true);
+          return Finish(RunOutcome::End::kFinished,
+                        all_done ? "every robot reported done" : "reached the step limit");
+        }
+        PublishStep(true);
+        step_published_ = last_resend_ = Clock::now();
+        ReportProgress(step_published_);
+        continue;
+      }
+    }
+
+    if (lockstep && SecondsBetween(last_resend_, now) > options_.resend_interval_s) {
+      PublishStep(false);  // a datagram may have been lost; agents answer again idempotently
+      last_resend_ = now;
+    }
+    int timeout_ms = 10;
+    if (!lockstep && state_ == run_status_t::RUNNING) {
+      const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(next_realtime_step - Clock::now());
+      timeout_ms = static_cast<int>(std::max<int64_t>(0, std::min<int64_t>(wait.count(), 10)));
+    }
+    lcm_.HandleSubscriptions(timeout_ms);
+  }
+}
+
+}  // namespace dream::sim

@@ -1,0 +1,30 @@
+#pragma once
+
+#include <cstdint>
+
+namespace dream::sim {
+
+// Cumulative rule violations of a run, counted the way the Robotarium V2
+// simulator counts them (see UnicycleWorld::Step).
+struct ViolationCounts {
+  // Steps at which at least one robot was strictly outside the arena.
+  int64_t boundary_errors = 0;
+  // Sum over steps of the number of colliding robot pairs.
+  int64_t collision_errors = 0;
+  // Steps at which at least one commanded wheel speed exceeded the limit.
+  int64_t actuator_errors = 0;
+  // Sum over steps of the number of (robot, virtual obstacle) overlaps. Not a
+  // Robotarium rule (it has no virtual obstacles); we treat it as a hard error.
+  int64_t obstacle_collisions = 0;
+
+  // Errors that make the Robotarium reject a run (plus obstacle overlaps).
+  int64_t hard_errors() const { return boundary_errors + collision_errors + obstacle_collisions; }
+
+  friend bool operator==(const ViolationCounts& a, const ViolationCounts& b) {
+    return a.boundary_errors == b.boundary_errors && a.collision_errors == b.collision_errors &&
+           a.actuator_errors == b.actuator_errors && a.obstacle_collisions == b.obstacle_collisions;
+  }
+  friend bool operator!=(const ViolationCounts& a, const ViolationCounts& b) { return !(a == b); }
+};
+
+}  // namespace dream::sim

@@ -1,0 +1,11 @@
+#pragma once
+
+namespace dream::sim {
+
+// Angular speeds of a differential-drive robot's two wheels.
+struct WheelSpeeds {
+  double left_radps = 0.0;
+  double right_radps = 0.0;
+};
+
+}  // namespace dream::sim

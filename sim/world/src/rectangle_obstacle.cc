@@ -1,0 +1,63 @@
+#include "dream/sim/rectangle_obstacle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace dream::sim {
+
+RectangleObstacle::RectangleObstacle(const RectangleObstacleSpec& spec) : spec_(spec), center_m_(spec.center_m) {
+  std::string error;
+  if (!spec.IsValid(&error)) throw std::invalid_argument("RectangleObstacle: " + error);
+  if (!spec.path.has_value()) return;
+
+  // Turn either mode into one closed cycle of legs, skipping zero-length legs.
+  std::vector<Eigen::Vector2d> vertices;
+  vertices.push_back(spec.center_m);
+  for (const Eigen::Vector2d& waypoint : spec.path->waypoints_m) vertices.push_back(waypoint);
+  std::vector<Eigen::Vector2d> cycle = vertices;
+  if (spec.path->mode == ObstaclePathMode::kPingPong) {
+    for (std::size_t i = vertices.size() - 1; i-- > 0;) cycle.push_back(vertices[i]);
+  } else {
+    cycle.push_back(vertices.front());
+  }
+  for (std::size_t i = 0; i + 1 < cycle.size(); ++i) {
+    const Eigen::Vector2d delta = cycle[i + 1] - cycle[i];
+    const double length_m = delta.norm();
+    if (length_m <= 0.0) continue;
+    legs_.push_back(Leg{cycle[i], cycle[i + 1], delta / length_m, length_m});
+    cycle_length_m_ += length_m;
+  }
+}
+
+Eigen::Vector2d RectangleObstacle::velocity_mps() const {
+  if (legs_.empty()) return Eigen::Vector2d::Zero();
+  return legs_[leg_index_].direction * spec_.path->speed_mps;
+}
+
+void RectangleObstacle::Advance(double time_step_s) {
+  if (legs_.empty()) return;
+  // Whole laps change nothing; dropping them bounds the loop below.
+  double remaining_m = std::fmod(spec_.path->speed_mps * time_step_s, cycle_length_m_);
+  // Arriving exactly at a corner moves onto the next leg, so velocity_mps()
+  // always reports the leg the next Advance will follow.
+  while (remaining_m >= legs_[leg_index_].length_m - distance_along_leg_m_) {
+    remaining_m -= legs_[leg_index_].length_m - distance_along_leg_m_;
+    leg_index_ = (leg_index_ + 1) % legs_.size();
+    distance_along_leg_m_ = 0.0;
+    if (remaining_m <= 0.0) break;
+  }
+  distance_along_leg_m_ += std::max(remaining_m, 0.0);
+  const Leg& leg = legs_[leg_index_];
+  center_m_ = distance_along_leg_m_ == 0.0 ? leg.start_m
+                                           : Eigen::Vector2d(leg.start_m + leg.direction * distance_along_leg_m_);
+}
+
+bool RectangleObstacle::IntersectsDisc(double center_x_m, double center_y_m, double radius_m) const {
+  const double gap_x_m = std::max(std::abs(center_x_m - center_m_.x()) - spec_.width_m / 2.0, 0.0);
+  const double gap_y_m = std::max(std::abs(center_y_m - center_m_.y()) - spec_.height_m / 2.0, 0.0);
+  return gap_x_m * gap_x_m + gap_y_m * gap_y_m <= radius_m * radius_m;
+}
+
+}  // namespace dream::sim

@@ -1,0 +1,17 @@
+#include "dream/sim/run_verdict.h"
+
+namespace dream::sim {
+
+const char* RunVerdictName(RunVerdict verdict) {
+  switch (verdict) {
+    case RunVerdict::kClean:
+      return "clean";
+    case RunVerdict::kWarning:
+      return "warning";
+    case RunVerdict::kRejected:
+      return "rejected";
+  }
+  return "unknown";
+}
+
+}  // namespace dream::sim

@@ -1,0 +1,195 @@
+#include "dream/sim/unicycle_world.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "collision_grid.h"
+#include "dream/sim/unicycle_kinematics.h"
+
+namespace dream::sim {
+namespace {
+
+// Largest n with n * dt <= timeout, computed with the same product the rule
+// is stated in, so the boundary step is exactly the documented one.
+int64_t CommandHoldSteps(double time_step_s, double command_timeout_s) {
+  if (std::isinf(command_timeout_s)) return std::numeric_limits<int64_t>::max();
+  auto n = static_cast<int64_t>(std::floor(command_timeout_s / time_step_s));
+  while (static_cast<double>(n + 1) * time_step_s <= command_timeout_s) ++n;
+  while (n > 0 && static_cast<double>(n) * time_step_s > command_timeout_s) --n;
+  return n;
+}
+
+std::vector<RectangleObstacle> BuildObstacles(const std::vector<RectangleObstacleSpec>& specs) {
+  std::vector<RectangleObstacle> obstacles;
+  obstacles.reserve(specs.size());
+  std::set<int> ids;
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    std::string error;
+    if (!specs[i].IsValid(&error)) {
+      throw std::invalid_argument("UnicycleWorld: obstacle_specs[" + std::to_string(i) + "]: " + error);
+    }
+    if (!ids.insert(specs[i].id).second) {
+      throw std::invalid_argument("UnicycleWorld: obstacle_specs[" + std::to_string(i) + "].id = " +
+                                  std::to_string(specs[i].id) +
+                                  " is used by an earlier obstacle; ids must be unique");
+    }
+    obstacles.emplace_back(specs[i]);
+  }
+  return obstacles;
+}
+
+const WorldParams& ValidatedParams(const WorldParams& params) {
+  std::string error;
+  if (!params.IsValid(&error)) throw std::invalid_argument("UnicycleWorld: " + error);
+  return params;
+}
+
+}  // namespace
+
+UnicycleWorld::UnicycleWorld(const WorldParams& params, std::vector<Pose2> initial_poses,
+                             const std::vector<RectangleObstacleSpec>& obstacle_specs)
+    : params_(ValidatedParams(params)),
+      poses_(std::move(initial_poses)),
+      velocities_(poses_.size()),
+      obstacles_(BuildObstacles(obstacle_specs)),
+      command_step_(poses_.size(), kNoCommand),
+      command_hold_steps_(CommandHoldSteps(params.time_step_s, params.command_timeout_s)),
+      collision_center_x_m_(poses_.size()),
+      collision_center_y_m_(poses_.size()),
+      collision_grid_(std::make_unique<CollisionGrid>(poses_.size(), params.collision_diameter_m)) {
+  if (poses_.size() > static_cast<std::size_t>(std::numeric_limits<int32_t>::max() / 4)) {
+    throw std::invalid_argument("UnicycleWorld: " + std::to_string(poses_.size()) +
+                                " robots is more than this world supports");
+  }
+  for (std::size_t i = 0; i < poses_.size(); ++i) {
+    const Pose2& pose = poses_[i];
+    if (!std::isfinite(pose.x_m) || !std::isfinite(pose.y_m) || !std::isfinite(pose.theta_rad)) {
+      throw std::invalid_argument("UnicycleWorld: initial_poses[" + std::to_string(i) + "] = (" +
+                                  std::to_string(pose.x_m) + ", " + std::to_string(pose.y_m) + ", " +
+                                  std::to_string(pose.theta_rad) + ") is not finite");
+    }
+  }
+  // Worst case sizes, so Step() never allocates for the per-robot lists.
+  events_.timed_out_robot_ids.reserve(poses_.size());
+  events_.out_of_bounds_robot_ids.reserve(poses_.size());
+  events_.actuator_limited_robot_ids.reserve(poses_.size());
+  events_.colliding_pairs.reserve(poses_.size());
+  events_.obstacle_contacts.reserve(obstacles_.empty() ? 0 : poses_.size());
+}
+
+UnicycleWorld::~UnicycleWorld() = default;
+UnicycleWorld::UnicycleWorld(UnicycleWorld&&) noexcept = default;
+UnicycleWorld& UnicycleWorld::operator=(UnicycleWorld&&) noexcept = default;
+
+void UnicycleWorld::CheckRobotId(int robot_id, const char* caller) const {
+  if (robot_id < 0 || robot_id >= num_robots()) {
+    throw std::out_of_range(std::string("UnicycleWorld::") + caller + ": robot_id " +
+                            std::to_string(robot_id) + " is not in [0, " +
+                            std::to_string(num_robots()) + ")");
+  }
+}
+
+void UnicycleWorld::SetCommand(int robot_id, const UnicycleCommand& command) {
+  CheckRobotId(robot_id, "SetCommand");
+  if (!std::isfinite(command.v_mps) || !std::isfinite(command.w_radps)) {
+    throw std::invalid_argument("UnicycleWorld::SetCommand: robot " + std::to_string(robot_id) +
+                                " command (v_mps=" + std::to_string(command.v_mps) +
+                                ", w_radps=" + std::to_string(command.w_radps) + ") is not finite");
+  }
+  velocities_[static_cast<std::size_t>(robot_id)] = command;
+  command_step_[static_cast<std::size_t>(robot_id)] = step_;
+}
+
+void UnicycleWorld::StopRobot(int robot_id) {
+  CheckRobotId(robot_id, "StopRobot");
+  velocities_[static_cast<std::size_t>(robot_id)] = UnicycleCommand{};
+  command_step_[static_cast<std::size_t>(robot_id)] = kNoCommand;
+}
+
+void UnicycleWorld::ApplyCommandTimeouts() {
+  if (command_hold_steps_ == std::numeric_limits<int64_t>::max()) return;
+  for (std::size_t i = 0; i < command_step_.size(); ++i) {
+    if (command_step_[i] != kNoCommand && step_ - command_step_[i] > command_hold_steps_) {
+      velocities_[i] = UnicycleCommand{};
+      command_step_[i] = kNoCommand;
+      events_.timed_out_robot_ids.push_back(static_cast<int>(i));
+    }
+  }
+}
+
+void UnicycleWorld::CountObstacleContacts() {
+  if (obstacles_.empty()) return;
+  const double radius_m = params_.collision_diameter_m / 2.0;
+  for (std::size_t i = 0; i < poses_.size(); ++i) {
+    for (const RectangleObstacle& obstacle : obstacles_) {
+      if (obstacle.IntersectsDisc(collision_center_x_m_[i], collision_center_y_m_[i], radius_m)) {
+        events_.obstacle_contacts.push_back({static_cast<int>(i), obstacle.id()});
+      }
+    }
+  }
+  violations_.obstacle_collisions += static_cast<int64_t>(events_.obstacle_contacts.size());
+}
+
+void UnicycleWorld::Step() {
+  events_.Reset(step_);
+  ApplyCommandTimeouts();
+
+  const Arena& arena = params_.arena;
+  const double dt = params_.time_step_s;
+  const double offset_m = params_.collision_offset_m;
+  const double wheel_radius_m = params_.wheel_radius_m;
+  const double base_length_m = params_.base_length_m;
+  const double max_wheel_speed_radps = params_.max_wheel_speed_radps;
+
+  // One pass per robot: validation needs only this robot's current pose and
+  // velocity (the pairwise check runs afterwards on the stored centres), so
+  // the pose can be advanced in the same pass.
+  for (std::size_t i = 0; i < poses_.size(); ++i) {
+    Pose2& pose = poses_[i];
+    const double cos_theta = std::cos(pose.theta_rad);
+    const double sin_theta = std::sin(pose.theta_rad);
+
+    if (!arena.Contains(pose.x_m, pose.y_m)) {
+      events_.out_of_bounds_robot_ids.push_back(static_cast<int>(i));
+    }
+    collision_center_x_m_[i] = pose.x_m + offset_m * cos_theta;
+    collision_center_y_m_[i] = pose.y_m + offset_m * sin_theta;
+
+    const WheelSpeeds wheels = UnicycleToWheelSpeeds(velocities_[i], wheel_radius_m, base_length_m);
+    if (ExceedsWheelSpeedLimit(wheels, max_wheel_speed_radps)) {
+      events_.actuator_limited_robot_ids.push_back(static_cast<int>(i));
+    }
+    const UnicycleCommand saturated = WheelSpeedsToUnicycle(
+        ClipWheelSpeeds(wheels, max_wheel_speed_radps), wheel_radius_m, base_length_m);
+    velocities_[i] = saturated;
+
+    const double distance_m = dt * saturated.v_mps;
+    pose.x_m += distance_m * cos_theta;
+    pose.y_m += distance_m * sin_theta;
+    const double theta_rad = pose.theta_rad + dt * saturated.w_radps;
+    pose.theta_rad = std::atan2(std::sin(theta_rad), std::cos(theta_rad));
+  }
+
+  collision_grid_->FindPairs(collision_center_x_m_.data(), collision_center_y_m_.data(),
+                             &events_.colliding_pairs);
+  std::sort(events_.colliding_pairs.begin(), events_.colliding_pairs.end(),
+            [](const StepEvents::RobotPair& a, const StepEvents::RobotPair& b) {
+              return a.first_robot_id != b.first_robot_id ? a.first_robot_id < b.first_robot_id
+                                                          : a.second_robot_id < b.second_robot_id;
+            });
+  CountObstacleContacts();
+
+  if (!events_.out_of_bounds_robot_ids.empty()) ++violations_.boundary_errors;
+  violations_.collision_errors += static_cast<int64_t>(events_.colliding_pairs.size());
+  if (!events_.actuator_limited_robot_ids.empty()) ++violations_.actuator_errors;
+
+  for (RectangleObstacle& obstacle : obstacles_) obstacle.Advance(dt);
+  ++step_;
+}
+
+}  // namespace dream::sim
