@@ -38,6 +38,10 @@ int RunEmbedded(const RunArgs& args);
 int RunSimOnly(const RunArgs& args);
 int RunAgents(const AgentArgs& args);
 int RunLaunch(const RunArgs& args);
+int RunLogInfo(const std::string& path);
+/// Compares the payloads of each channel matching `channel_regex`, in order
+/// (timestamps ignored). Exit 0 when equal.
+int RunLogDiff(const std::string& a, const std::string& b, const std::string& channel_regex);
 int RunSpy(const std::string& log_path, const std::string& lcm_url, bool print_command_only);
 
 /// Parses "all", "3", "0,2,5", "0-4" into sorted unique ids < num_robots.

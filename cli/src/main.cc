@@ -86,6 +86,22 @@ int main(int argc, char** argv) {
   spy->add_option("--lcm-url", spy_url, "LCM URL to inspect (default $LCM_DEFAULT_URL)");
   spy->add_flag("--print", spy_print, "Print the commands instead of starting them");
 
+  CLI::App* log = app.add_subcommand("log", "Look into recorded runs.");
+  log->require_subcommand(1);
+  std::string info_path;
+  CLI::App* log_info = log->add_subcommand("info", "Channels and event counts of a log.\n"
+                                                   "Example: dream log info runs/go_to_goal/run.lcmlog");
+  log_info->add_option("log", info_path, "LCM log file")->required()->check(CLI::ExistingFile);
+  std::string diff_a;
+  std::string diff_b;
+  std::string diff_channels = ".*";
+  CLI::App* log_diff = log->add_subcommand(
+      "diff", "Compare two logs message by message, per channel, ignoring timestamps. Exit 0 when equal.\n"
+              "Example: dream log diff a/run.lcmlog b/run.lcmlog --channels DREAM_POSES");
+  log_diff->add_option("a", diff_a, "First log")->required()->check(CLI::ExistingFile);
+  log_diff->add_option("b", diff_b, "Second log")->required()->check(CLI::ExistingFile);
+  log_diff->add_option("--channels", diff_channels, "Regex of channels to compare")->capture_default_str();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -102,6 +118,8 @@ int main(int argc, char** argv) {
     if (*sim) return RunSimOnly(sim_args);
     if (*agent) return RunAgents(agent_args);
     if (*launch) return RunLaunch(launch_args);
+    if (*log_info) return RunLogInfo(info_path);
+    if (*log_diff) return RunLogDiff(diff_a, diff_b, diff_channels);
     if (*spy) return RunSpy(spy_log, spy_url, spy_print);
   } catch (const dream::config::ConfigError& e) {
     std::cerr << "dream: " << e.what() << '\n';

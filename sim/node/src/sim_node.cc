@@ -65,8 +65,10 @@ SimNode::SimNode(lcm::LcmInterface& lcm, UnicycleWorld& world, RunRecorder* reco
 int64_t SimNode::SimUtime() const { return world_.step() * kMicrosPerStep; }
 
 void SimNode::OnAnyMessage(const std::string& channel, const void* data, int size) {
-  // The world's own channels are recorded once, when published.
-  if (channel == lcm::kPosesChannel || channel == lcm::kObstaclesChannel || channel == lcm::kStatusChannel) {
+  // The world's own channels are recorded once, when published; udpm's
+  // start-up self test is transport noise, not part of the run.
+  if (channel == lcm::kPosesChannel || channel == lcm::kObstaclesChannel || channel == lcm::kStatusChannel ||
+      channel == "LCM_SELF_TEST") {
     return;
   }
   recorder_->Write(channel, SimUtime(), data, size);

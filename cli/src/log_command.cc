@@ -1,0 +1,85 @@
+#include <iostream>
+#include <map>
+#include <regex>
+
+#include "commands.h"
+#include "dream/lcm/log_reader.h"
+
+namespace dream::cli {
+namespace {
+
+using Payloads = std::map<std::string, std::vector<std::vector<uint8_t>>>;
+
+Payloads PayloadsByChannel(const std::string& path, const std::regex& channels) {
+  Payloads payloads;
+  for (lcm::LogRecord& record : lcm::LogReader::ReadAll(path)) {
+    if (std::regex_match(record.channel, channels)) payloads[record.channel].push_back(std::move(record.data));
+  }
+  return payloads;
+}
+
+}  // namespace
+
+int RunLogInfo(const std::string& path) {
+  struct ChannelStats {
+    long events = 0;
+    long bytes = 0;
+  };
+  std::map<std::string, ChannelStats> stats;
+  int64_t first = 0;
+  int64_t last = 0;
+  long total = 0;
+  lcm::LogReader reader(path);
+  lcm::LogRecord record;
+  while (reader.Next(&record)) {
+    if (total == 0) first = record.utime;
+    last = record.utime;
+    ++total;
+    ChannelStats& s = stats[record.channel];
+    ++s.events;
+    s.bytes += static_cast<long>(record.data.size());
+  }
+  std::cout << path << ": " << total << " events, " << static_cast<double>(last - first) / 1e6
+            << " s of log time\n";
+  for (const auto& [channel, s] : stats) {
+    std::cout << "  " << channel << ": " << s.events << " events, " << s.bytes << " bytes\n";
+  }
+  return kExitOk;
+}
+
+int RunLogDiff(const std::string& a, const std::string& b, const std::string& channel_regex) {
+  const std::regex channels(channel_regex);
+  const Payloads left = PayloadsByChannel(a, channels);
+  const Payloads right = PayloadsByChannel(b, channels);
+  bool same = true;
+  for (const Payloads* side : {&left, &right}) {
+    for (const auto& [channel, unused] : *side) {
+      (void)unused;
+      const auto l = left.find(channel);
+      const auto r = right.find(channel);
+      if (l == left.end() || r == right.end()) {
+        std::cout << channel << ": only in " << (l == left.end() ? b : a) << '\n';
+        same = false;
+        continue;
+      }
+      if (side == &right) continue;  // compared once, from the left
+      const size_t n = std::min(l->second.size(), r->second.size());
+      for (size_t i = 0; i < n; ++i) {
+        if (l->second[i] != r->second[i]) {
+          std::cout << channel << ": message " << i << " differs\n";
+          same = false;
+          break;
+        }
+      }
+      if (l->second.size() != r->second.size()) {
+        std::cout << channel << ": " << l->second.size() << " messages in " << a << ", " << r->second.size()
+                  << " in " << b << '\n';
+        same = false;
+      }
+    }
+  }
+  std::cout << (same ? "same" : "different") << " (channels matching '" << channel_regex << "')\n";
+  return same ? kExitOk : kExitInputError;
+}
+
+}  // namespace dream::cli
