@@ -54,7 +54,7 @@ TEST(RectangleObstacleTest, LoopGoesRoundTheClosedPolygon) {
   ExpectAt(obstacle, 1.0 - diagonal, 1.0 - diagonal);
   EXPECT_TRUE(obstacle.velocity_mps().isApprox(Eigen::Vector2d(-0.5, -0.5) / std::sqrt(2.0)));
   // Carries over the closing corner onto the first leg again.
-  for (int k = 0; k < 3; ++k) obstacle.Advance(0.5);  // 3.75 m total
+  for (int k = 0; k < 6; ++k) obstacle.Advance(0.5);  // 3.75 m total
   const double perimeter = 2.0 + std::sqrt(2.0);
   ExpectAt(obstacle, 3.75 - perimeter, 0.0);
 }

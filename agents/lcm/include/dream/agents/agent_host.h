@@ -56,7 +56,7 @@ class AgentHost {
     std::string channel;
     std::unique_ptr<Controller> controller;
     int64_t answered_step = -1;
-    velocity_command_t last_command;
+    velocity_command_t last_command{};
   };
 
   void OnPoses(const std::string& channel, const robot_poses_t& poses);

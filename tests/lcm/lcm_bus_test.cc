@@ -1,0 +1,116 @@
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <stdexcept>
+
+#include "dream/lcm/channels.h"
+#include "dream/lcm/lcm_bus.h"
+#include "dream/lcm/lcm_typed.h"
+#include "dream/lcm/lcm_url.h"
+#include "dream/velocity_command_t.hpp"
+
+namespace dream::lcm {
+namespace {
+
+void DrainBus(LcmBus& bus) {
+  while (bus.HandleSubscriptions(0) > 0) {
+  }
+}
+
+TEST(LcmBusTest, TypedPublishSubscribeOverMemq) {
+  LcmBus bus("memq://");
+  BadMessageLog bad;
+  std::vector<velocity_command_t> received;
+  Subscribe<velocity_command_t>(
+      bus, "DREAM_CMD_.*", [&](const std::string&, const velocity_command_t& m) { received.push_back(m); }, bad);
+  velocity_command_t command{};
+  command.step = 7;
+  command.robot_id = 3;
+  command.v = 0.1;
+  command.w = -0.5;
+  Publish(bus, CommandChannel(3), command);
+  DrainBus(bus);
+  ASSERT_EQ(received.size(), 1u);
+  EXPECT_EQ(received[0].step, 7);
+  EXPECT_EQ(received[0].robot_id, 3);
+  EXPECT_DOUBLE_EQ(received[0].w, -0.5);
+  EXPECT_EQ(bad.total(), 0);
+}
+
+TEST(LcmBusTest, UndecodableMessagesAreCountedPerChannelNotDelivered) {
+  LcmBus bus("memq://");
+  BadMessageLog bad;
+  int delivered = 0;
+  Subscribe<velocity_command_t>(
+      bus, "DREAM_CMD_.*", [&](const std::string&, const velocity_command_t&) { ++delivered; }, bad);
+  const char garbage[] = "definitely not a velocity_command_t";
+  bus.Publish("DREAM_CMD_1", garbage, sizeof(garbage));
+  bus.Publish("DREAM_CMD_1", garbage, 3);
+  // A valid message with trailing bytes is not a clean decode either.
+  velocity_command_t command{};
+  std::vector<uint8_t> bytes(static_cast<size_t>(command.getEncodedSize()) + 4, 0);
+  command.encode(bytes.data(), 0, command.getEncodedSize());
+  bus.Publish("DREAM_CMD_2", bytes.data(), static_cast<int>(bytes.size()));
+  DrainBus(bus);
+  EXPECT_EQ(delivered, 0);
+  EXPECT_EQ(bad.count("DREAM_CMD_1"), 2);
+  EXPECT_EQ(bad.count("DREAM_CMD_2"), 1);
+  EXPECT_EQ(bad.total(), 3);
+}
+
+TEST(LcmBusTest, ExceptionsInHandlersAreCaughtAndCounted) {
+  LcmBus bus("memq://");
+  int after = 0;
+  bus.Subscribe("BOOM", [](const std::string&, const void*, int) { throw std::runtime_error("handler bug"); });
+  bus.Subscribe("BOOM", [&](const std::string&, const void*, int) { ++after; });
+  const char byte = 1;
+  bus.Publish("BOOM", &byte, 1);
+  bus.Publish("BOOM", &byte, 1);
+  EXPECT_NO_THROW(DrainBus(bus));
+  EXPECT_EQ(bus.handler_failures(), 2);
+  EXPECT_EQ(after, 2);  // the other subscriber still gets every message
+}
+
+TEST(LcmBusTest, ManyMessagesPerStepAreNotDroppedByTheQueue) {
+  // LCM's default queue of 30 would drop most of these before the drain.
+  LcmBus bus("memq://");
+  int received = 0;
+  bus.Subscribe("DREAM_CMD_.*", [&](const std::string&, const void*, int) { ++received; });
+  const char byte = 0;
+  for (int i = 0; i < 500; ++i) bus.Publish(CommandChannel(i % 50), &byte, 1);
+  DrainBus(bus);
+  EXPECT_EQ(received, 500);
+}
+
+TEST(LcmBusTest, BadUrlNamesTheUrl) {
+  try {
+    LcmBus bus("nosuchprovider://x");
+    FAIL() << "expected an error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("nosuchprovider://x"), std::string::npos) << e.what();
+  }
+}
+
+TEST(LcmUrlTest, CommandLineWinsThenEnvironmentThenFallback) {
+  ::setenv("LCM_DEFAULT_URL", "memq://", 1);
+  EXPECT_EQ(ResolveLcmUrl("udpm://239.255.76.67:7667?ttl=0&recv_buf_size=100"),
+            "udpm://239.255.76.67:7667?ttl=0&recv_buf_size=100");
+  EXPECT_EQ(ResolveLcmUrl(""), "memq://");
+  ::unsetenv("LCM_DEFAULT_URL");
+  EXPECT_EQ(ResolveLcmUrl(""), "udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304");
+  EXPECT_EQ(ResolveLcmUrl("udpm://239.255.76.67:7667"), "udpm://239.255.76.67:7667?recv_buf_size=4194304");
+  EXPECT_THROW(ResolveLcmUrl("localhost:7667"), std::invalid_argument);
+}
+
+TEST(ChannelsTest, RobotIdFromCommandChannel) {
+  EXPECT_EQ(RobotIdFromCommandChannel("DREAM_CMD_0"), 0);
+  EXPECT_EQ(RobotIdFromCommandChannel("DREAM_CMD_49"), 49);
+  EXPECT_FALSE(RobotIdFromCommandChannel("DREAM_CMD_"));
+  EXPECT_FALSE(RobotIdFromCommandChannel("DREAM_CMD_x"));
+  EXPECT_FALSE(RobotIdFromCommandChannel("DREAM_CMD_-1"));
+  EXPECT_FALSE(RobotIdFromCommandChannel("DREAM_CMD_99999999999"));
+  EXPECT_FALSE(RobotIdFromCommandChannel("DREAM_POSES"));
+}
+
+}  // namespace
+}  // namespace dream::lcm

@@ -1,0 +1,212 @@
+#include "dream/sim/sim_node.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "dream/lcm/lcm_bus.h"
+#include "dream/run_status_t.hpp"
+#include "scripted_agent.h"
+
+namespace dream::sim {
+namespace {
+
+using testing::ScriptedAgent;
+
+/// Three robots in a row, far apart, facing +x.
+std::vector<Pose2> ThreeRobots() { return {{-1.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}}; }
+
+SimNodeOptions FastOptions(int64_t max_steps) {
+  SimNodeOptions options;
+  options.max_steps = max_steps;
+  options.stop_when_done = false;
+  options.agent_timeout_s = 0.05;
+  options.start_timeout_s = 0.5;
+  options.progress_interval_s = 0.0;
+  return options;
+}
+
+/// Every robot drives forward at 0.1 m/s.
+ScriptedAgent::Decide Forward(double v = 0.1) {
+  return [v](const robot_poses_t&, velocity_command_t* command) {
+    command->v = v;
+    return true;
+  };
+}
+
+class SimNodeTest : public ::testing::Test {
+ protected:
+  SimNodeTest() : bus_("memq://"), world_(WorldParams{}, ThreeRobots()) {}
+
+  void AddAgent(int robot_id, ScriptedAgent::Decide decide, int64_t agent_id = 0) {
+    agents_.push_back(
+        std::make_unique<ScriptedAgent>(bus_, robot_id, agent_id == 0 ? 100 + robot_id : agent_id, std::move(decide)));
+  }
+
+  RunOutcome Run(SimNodeOptions options) {
+    SimNode node(bus_, world_, nullptr, options);
+    std::atomic<bool> stop{false};
+    return node.Run(stop);
+  }
+
+  lcm::LcmBus bus_;
+  UnicycleWorld world_;
+  std::vector<std::unique_ptr<ScriptedAgent>> agents_;
+};
+
+TEST_F(SimNodeTest, LockstepRunsEveryStepWithTheAgentsCommands) {
+  for (int id = 0; id < 3; ++id) AddAgent(id, Forward());
+  const RunOutcome outcome = Run(FastOptions(30));
+  EXPECT_EQ(outcome.end, RunOutcome::End::kFinished);
+  EXPECT_EQ(outcome.steps, 30);
+  EXPECT_EQ(world_.step(), 30);
+  // 30 steps of 0.033 s at 0.1 m/s straight ahead.
+  EXPECT_NEAR(world_.poses()[0].x_m, -1.0 + 30 * 0.033 * 0.1, 1e-12);
+  EXPECT_TRUE(outcome.robots_ever_lost.empty());
+  EXPECT_EQ(outcome.rejected_commands, 0);
+}
+
+TEST_F(SimNodeTest, RunEndsWhenEveryRobotReportsDone) {
+  for (int id = 0; id < 3; ++id) {
+    AddAgent(id, [](const robot_poses_t& poses, velocity_command_t* command) {
+      command->done = poses.step >= 12;
+      return true;
+    });
+  }
+  SimNodeOptions options = FastOptions(1000);
+  options.stop_when_done = true;
+  const RunOutcome outcome = Run(options);
+  EXPECT_EQ(outcome.end, RunOutcome::End::kFinished);
+  EXPECT_EQ(outcome.steps, 13);  // the answer to step 12 says done; the world takes that step and stops
+  EXPECT_EQ(outcome.robots_done.size(), 3u);
+}
+
+TEST_F(SimNodeTest, NonFiniteAndAbsurdCommandsAreRejectedAndTheRobotHoldsStill) {
+  AddAgent(0, [](const robot_poses_t& poses, velocity_command_t* command) {
+    command->v = poses.step == 5 ? std::nan("") : poses.step == 6 ? 50.0 : 0.1;
+    command->w = poses.step == 7 ? INFINITY : 0.0;
+    return true;
+  });
+  AddAgent(1, Forward());
+  AddAgent(2, Forward());
+  const RunOutcome outcome = Run(FastOptions(10));
+  EXPECT_EQ(outcome.end, RunOutcome::End::kFinished);
+  EXPECT_EQ(outcome.rejected_commands, 3);
+  // Robot 0 moved on 7 of 10 steps.
+  EXPECT_NEAR(world_.poses()[0].x_m, -1.0 + 7 * 0.033 * 0.1, 1e-12);
+  EXPECT_EQ(outcome.bad_messages.at("DREAM_CMD_0"), 3);
+}
+
+TEST_F(SimNodeTest, CommandsForUnknownRobotsAndGarbageAreCountedNotFatal) {
+  for (int id = 0; id < 3; ++id) AddAgent(id, Forward());
+  AddAgent(7, Forward());  // this run has robots 0..2 only
+  bus_.Subscribe(lcm::kPosesChannel, [this](const std::string&, const void*, int) {
+    const char garbage[] = "\x01\x02not a command";
+    bus_.Publish("DREAM_CMD_1", garbage, sizeof(garbage));
+  });
+  const RunOutcome outcome = Run(FastOptions(10));
+  EXPECT_EQ(outcome.end, RunOutcome::End::kFinished);
+  EXPECT_EQ(outcome.steps, 10);
+  // One bad message of each kind per step; those sent after the world took
+  // its last step are never read, hence not all 11.
+  EXPECT_GE(outcome.bad_messages.at("DREAM_CMD_7"), 9);
+  EXPECT_GE(outcome.bad_messages.at("DREAM_CMD_1"), 9);
+  EXPECT_GE(outcome.rejected_commands, 9);
+}
+
+TEST_F(SimNodeTest, SecondAgentForARobotIsRefusedAndTheFirstKeepsIt) {
+  AddAgent(0, Forward(0.1), /*agent_id=*/1);
+  AddAgent(0, Forward(-0.1), /*agent_id=*/2);
+  AddAgent(1, Forward());
+  AddAgent(2, Forward());
+  const RunOutcome outcome = Run(FastOptions(10));
+  EXPECT_EQ(outcome.end, RunOutcome::End::kFinished);
+  EXPECT_GE(outcome.rejected_commands, 10);
+  EXPECT_NEAR(world_.poses()[0].x_m, -1.0 + 10 * 0.033 * 0.1, 1e-12);
+}
+
+TEST_F(SimNodeTest, SilentAgentIsMarkedLostItsRobotStopsAndItRejoins) {
+  AddAgent(0, Forward());
+  AddAgent(1, [](const robot_poses_t& poses, velocity_command_t* command) {
+    command->v = 0.1;
+    return poses.step < 5 || poses.step >= 8;  // silent on steps 5, 6, 7
+  });
+  AddAgent(2, Forward());
+  std::vector<std::vector<int32_t>> lost_per_step;
+  lcm::BadMessageLog bad;
+  lcm::Subscribe<run_status_t>(
+      bus_, lcm::kStatusChannel,
+      [&](const std::string&, const run_status_t& status) { lost_per_step.push_back(status.lost_robot_ids); }, bad);
+  const RunOutcome outcome = Run(FastOptions(20));
+  EXPECT_EQ(outcome.end, RunOutcome::End::kFinished);
+  EXPECT_EQ(outcome.robots_ever_lost, std::set<int>{1});
+  // Robot 1 stood still on the three silent steps.
+  EXPECT_NEAR(world_.poses()[1].x_m, 17 * 0.033 * 0.1, 1e-12);
+  bool saw_lost = false;
+  for (const auto& lost : lost_per_step) saw_lost = saw_lost || lost == std::vector<int32_t>{1};
+  EXPECT_TRUE(saw_lost);
+  EXPECT_TRUE(lost_per_step.back().empty());  // back by the end
+}
+
+TEST_F(SimNodeTest, MissingAgentAtStartEndsTheRunWithAClearReason) {
+  AddAgent(0, Forward());
+  AddAgent(1, Forward());
+  const RunOutcome outcome = Run(FastOptions(10));
+  EXPECT_EQ(outcome.end, RunOutcome::End::kStartTimeout);
+  EXPECT_NE(outcome.reason.find("robot(s) 2"), std::string::npos) << outcome.reason;
+  EXPECT_EQ(outcome.steps, 0);
+}
+
+TEST_F(SimNodeTest, CommandForAFutureStepIsRejected) {
+  AddAgent(0, [](const robot_poses_t&, velocity_command_t* command) {
+    command->step += 5;
+    return true;
+  });
+  AddAgent(1, Forward());
+  AddAgent(2, Forward());
+  SimNodeOptions options = FastOptions(5);
+  const RunOutcome outcome = Run(options);
+  EXPECT_EQ(outcome.end, RunOutcome::End::kStartTimeout);
+  EXPECT_GE(outcome.rejected_commands, 1);
+}
+
+TEST_F(SimNodeTest, StopFlagInterruptsTheRun) {
+  for (int id = 0; id < 3; ++id) AddAgent(id, Forward());
+  SimNode node(bus_, world_, nullptr, FastOptions(1000000));
+  std::atomic<bool> stop{false};
+  bus_.Subscribe(lcm::kPosesChannel, [&](const std::string&, const void*, int) {
+    if (world_.step() == 50) stop = true;
+  });
+  const RunOutcome outcome = node.Run(stop);
+  EXPECT_EQ(outcome.end, RunOutcome::End::kInterrupted);
+  EXPECT_EQ(outcome.steps, 50);
+}
+
+TEST_F(SimNodeTest, RealTimeModeUsesTheLatestCommands) {
+  for (int id = 0; id < 3; ++id) AddAgent(id, Forward());
+  SimNodeOptions options = FastOptions(6);
+  options.mode = WorldMode::kRealTime;
+  options.agent_timeout_s = 1.0;
+  const RunOutcome outcome = Run(options);
+  EXPECT_EQ(outcome.end, RunOutcome::End::kFinished);
+  EXPECT_EQ(outcome.steps, 6);
+  EXPECT_NEAR(world_.poses()[2].x_m, 1.0 + 6 * 0.033 * 0.1, 1e-12);
+}
+
+TEST(SimNodeOptionsTest, InvalidOptionsNameTheField) {
+  SimNodeOptions options;
+  options.agent_timeout_s = 0.0;
+  std::string error;
+  EXPECT_FALSE(options.IsValid(&error));
+  EXPECT_NE(error.find("agent_timeout_s"), std::string::npos) << error;
+  options = SimNodeOptions{};
+  options.max_steps = 0;
+  EXPECT_FALSE(options.IsValid(&error));
+  EXPECT_NE(error.find("max_steps"), std::string::npos) << error;
+  EXPECT_THROW(ParseWorldMode("fast"), std::invalid_argument);
+  EXPECT_EQ(ParseWorldMode("realtime"), WorldMode::kRealTime);
+}
+
+}  // namespace
+}  // namespace dream::sim
