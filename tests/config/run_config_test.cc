@@ -1,0 +1,151 @@
+#include "dream/config/run_config.h"
+
+#include <gtest/gtest.h>
+
+namespace dream::config {
+namespace {
+
+const char* kMinimal = R"(name: demo
+seed: 3
+robots: 2
+steps: 100
+initial_poses:
+  - [0.0, 0.0, 0.0]
+  - [0.5, 0.0, 1.57]
+controller:
+  kind: go_to_goal
+  goals: [[0.1, 0.1], [0.6, 0.1]]
+)";
+
+RunConfig Load(const std::string& text) { return LoadRunConfig(ConfigNode::LoadString(text, "test.yaml")); }
+
+/// The ConfigError message for `text`, or "" if it loads.
+std::string ErrorOf(const std::string& text) {
+  try {
+    Load(text);
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string Replace(std::string text, const std::string& from, const std::string& to) {
+  const size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return text.replace(at, from.size(), to);
+}
+
+TEST(RunConfigTest, MinimalConfigLoadsWithDefaults) {
+  const RunConfig config = Load(kMinimal);
+  EXPECT_EQ(config.name, "demo");
+  EXPECT_EQ(config.seed, 3u);
+  EXPECT_EQ(config.num_robots, 2);
+  EXPECT_EQ(config.sim.max_steps, 100);
+  EXPECT_EQ(config.sim.mode, sim::WorldMode::kLockstep);
+  ASSERT_EQ(config.initial_poses.size(), 2u);
+  EXPECT_DOUBLE_EQ(config.initial_poses[1].theta_rad, 1.57);
+  EXPECT_EQ(config.controller.Required("kind").AsString(), "go_to_goal");
+}
+
+TEST(RunConfigTest, GeneratedInitialPosesAreDeterministicForASeed) {
+  const std::string text = Replace(Replace(kMinimal, "  - [0.0, 0.0, 0.0]\n  - [0.5, 0.0, 1.57]\n", ""),
+                                   "initial_poses:\n", "initial_poses: {generate: {min_spacing_m: 0.4}}\n");
+  const RunConfig a = Load(text);
+  const RunConfig b = Load(text);
+  ASSERT_EQ(a.initial_poses.size(), 2u);
+  EXPECT_EQ(a.initial_poses[1].x_m, b.initial_poses[1].x_m);
+  const RunConfig c = Load(Replace(text, "seed: 3", "seed: 4"));
+  EXPECT_NE(a.initial_poses[1].x_m, c.initial_poses[1].x_m);
+}
+
+TEST(RunConfigTest, ObstaclesWithPaths) {
+  const RunConfig config = Load(std::string(kMinimal) + R"(obstacles:
+  - center: [1.0, 0.5]
+    size: [0.2, 0.3]
+  - center: [-1.0, -0.5]
+    size: [0.1, 0.1]
+    path: {waypoints: [[-1.0, 0.5]], speed_mps: 0.05, mode: ping_pong}
+)");
+  ASSERT_EQ(config.obstacles.size(), 2u);
+  EXPECT_FALSE(config.obstacles[0].path.has_value());
+  ASSERT_TRUE(config.obstacles[1].path.has_value());
+  EXPECT_EQ(config.obstacles[1].path->mode, sim::ObstaclePathMode::kPingPong);
+  EXPECT_EQ(config.obstacles[1].id, 1);
+}
+
+TEST(RunConfigTest, TooManyRobotsNamesFileLineKeyAndRange) {
+  const std::string error = ErrorOf(Replace(kMinimal, "robots: 2", "robots: 51"));
+  EXPECT_NE(error.find("test.yaml:3: robots: must be between 1 and 50"), std::string::npos) << error;
+  EXPECT_NE(error.find("got 51"), std::string::npos) << error;
+  EXPECT_NE(ErrorOf(Replace(kMinimal, "robots: 2", "robots: 0")).find("between 1 and 50"), std::string::npos);
+  EXPECT_NE(ErrorOf(Replace(kMinimal, "robots: 2", "robots: two")).find("expected a whole number, got 'two'"),
+            std::string::npos);
+}
+
+TEST(RunConfigTest, PoseOutsideTheArenaIsRejected) {
+  const std::string error = ErrorOf(Replace(kMinimal, "[0.5, 0.0, 1.57]", "[1.7, 0.0, 1.57]"));
+  EXPECT_NE(error.find("test.yaml:7: initial_poses[1]"), std::string::npos) << error;
+  EXPECT_NE(error.find("outside the arena"), std::string::npos) << error;
+}
+
+TEST(RunConfigTest, OverlappingPosesAreRejected) {
+  const std::string error = ErrorOf(Replace(kMinimal, "[0.5, 0.0, 1.57]", "[0.1, 0.0, 3.14]"));
+  EXPECT_NE(error.find("robots 0 and 1 start in collision"), std::string::npos) << error;
+}
+
+TEST(RunConfigTest, WrongPoseCountAndShape) {
+  EXPECT_NE(ErrorOf(Replace(kMinimal, "  - [0.5, 0.0, 1.57]\n", "")).find("one [x, y, theta] per robot (2), got 1"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(Replace(kMinimal, "[0.5, 0.0, 1.57]", "[0.5, 0.0]")).find("expected [x, y, theta]"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(Replace(kMinimal, "[0.5, 0.0, 1.57]", "[0.5, .nan, 0]")).find("finite"), std::string::npos);
+}
+
+TEST(RunConfigTest, UnknownKeysAreTyposAndSayWhatIsAllowed) {
+  const std::string error = ErrorOf(Replace(kMinimal, "steps: 100", "stpes: 100"));
+  EXPECT_NE(error.find("test.yaml:4: stpes: unknown key; allowed keys here: name, seed"), std::string::npos)
+      << error;
+  EXPECT_NE(ErrorOf(std::string(kMinimal) + "world: {mode: fast}\n").find("unknown world mode 'fast'; allowed: "
+                                                                          "lockstep, realtime"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(std::string(kMinimal) + "world: {agent_timeout_s: -1}\n").find("agent_timeout_s must be > 0"),
+            std::string::npos);
+}
+
+TEST(RunConfigTest, BadObstacles) {
+  EXPECT_NE(ErrorOf(std::string(kMinimal) + "obstacles:\n  - center: [0, 0]\n    size: [0, 1]\n").find("obstacles[0]"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(std::string(kMinimal) +
+                    "obstacles:\n  - center: [0, 0]\n    size: [1, 1]\n    path: {waypoints: [[1, 1]], "
+                    "speed_mps: 0.1, mode: bounce}\n")
+                .find("unknown path mode 'bounce'; allowed: loop, ping_pong"),
+            std::string::npos);
+}
+
+TEST(RunConfigTest, UnsafeRunNamesAreRejected) {
+  // The name becomes a folder under runs/: no paths, no shell or script text.
+  EXPECT_NE(ErrorOf(Replace(kMinimal, "name: demo", "name: ../../etc")).find("not a plain name"), std::string::npos);
+  EXPECT_NE(ErrorOf(Replace(kMinimal, "name: demo", "name: \"a'b\"")).find("not a plain name"), std::string::npos);
+}
+
+TEST(RunConfigTest, MissingFileAndBrokenYaml) {
+  try {
+    LoadRunConfigFile("/nonexistent/run.yaml");
+    FAIL();
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/run.yaml: cannot open"), std::string::npos);
+  }
+  try {
+    ConfigNode::LoadString("name: [unclosed\n", "broken.yaml");
+    FAIL();
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("broken.yaml:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("not valid YAML"), std::string::npos) << e.what();
+  }
+  EXPECT_NE(ErrorOf("- just\n- a list\n").find("must be a YAML mapping"), std::string::npos);
+  EXPECT_NE(ErrorOf(Replace(kMinimal, "name: demo\n", "")).find("name: missing; this key is required"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace dream::config

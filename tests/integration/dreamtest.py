@@ -1,0 +1,250 @@
+"""Helpers shared by the integration tests (run with /usr/bin/python3, standard library only).
+
+Every test prints one line "FAIL: reason" and exits 1 on the first failed check
+(see `fail` and `check`), kills only the processes it started, and removes its
+temporary folder.
+"""
+
+import json
+import os
+import re
+import shutil
+import signal
+import socket
+import struct
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "python"))
+
+from lcmlog import LogFormatError, read_all, read_events  # noqa: E402,F401
+
+LCM_GROUP = "239.255.76.67"
+LCM_PORT = 7667
+
+
+class TestFailure(Exception):
+    pass
+
+
+def fail(message):
+    raise TestFailure(message)
+
+
+def check(condition, message):
+    if not condition:
+        raise TestFailure(message)
+
+
+def main(test):
+    """Runs test(ctx) with a fresh Context; prints PASS or one FAIL line; exits 0/1."""
+    ctx = Context()
+    code = 1
+    try:
+        test(ctx)
+        print(f"PASS ({time.monotonic() - ctx.started:.1f} s)")
+        code = 0
+    except TestFailure as error:
+        print(f"FAIL: {error}")
+        ctx.dump_outputs()
+    finally:
+        ctx.close()
+    sys.exit(code)
+
+
+def import_types(types_dir):
+    """The generated Python package `dream` from types_dir (build/python)."""
+    sys.path.insert(0, os.path.abspath(types_dir))
+    import dream  # noqa: E402
+
+    return dream
+
+
+class Context:
+    """A temporary folder and the child processes of one test."""
+
+    def __init__(self):
+        self.started = time.monotonic()
+        self.dir = tempfile.mkdtemp(prefix="dream_it_")
+        self.procs = {}  # name -> (Popen, output path)
+        self.keep = os.environ.get("DREAM_TEST_KEEP") == "1"
+
+    def path(self, *parts):
+        return os.path.join(self.dir, *parts)
+
+    def start(self, name, argv, env=None):
+        """Starts argv with stdout+stderr into <tmp>/<name>.out; returns the Popen."""
+        check(name not in self.procs, f"internal: process name {name} used twice")
+        out_path = self.path(name + ".out")
+        out = open(out_path, "w")
+        proc = subprocess.Popen(argv, stdout=out, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
+                                env=env)
+        out.close()
+        self.procs[name] = (proc, out_path)
+        return proc
+
+    def output(self, name):
+        with open(self.procs[name][1], errors="replace") as f:
+            return f.read()
+
+    def wait(self, name, timeout):
+        """Exit code of process `name`; fails when it runs longer than timeout seconds."""
+        proc = self.procs[name][0]
+        try:
+            return proc.wait(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            fail(f"{name} ({' '.join(map(str, proc.args))}) still running after {timeout} s; "
+                 f"last output: {tail(self.output(name))}")
+
+    def wait_for_output(self, name, pattern, timeout):
+        """Waits until process `name` prints a line matching regex `pattern`."""
+        proc = self.procs[name][0]
+        deadline = time.monotonic() + timeout
+        regex = re.compile(pattern)
+        while time.monotonic() < deadline:
+            if regex.search(self.output(name)):
+                return
+            if proc.poll() is not None:
+                fail(f"{name} exited ({proc.returncode}) before printing /{pattern}/: {tail(self.output(name))}")
+            time.sleep(0.01)
+        fail(f"{name} did not print /{pattern}/ within {timeout} s: {tail(self.output(name))}")
+
+    def run(self, argv, timeout=30, expect=None):
+        """Runs argv to completion; returns (exit code, stdout+stderr). `expect`: required exit code."""
+        try:
+            result = subprocess.run(argv, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                                    timeout=timeout, stdin=subprocess.DEVNULL)
+        except subprocess.TimeoutExpired:
+            fail(f"`{' '.join(map(str, argv))}` still running after {timeout} s")
+        if expect is not None and result.returncode != expect:
+            fail(f"`{' '.join(map(str, argv))}` exited {result.returncode}, expected {expect}: "
+                 f"{tail(result.stdout)}")
+        return result.returncode, result.stdout
+
+    def dump_outputs(self):
+        for name, (proc, out_path) in self.procs.items():
+            try:
+                with open(out_path, errors="replace") as f:
+                    text = f.read()
+            except OSError:
+                continue
+            print(f"----- output of {name} (exit {proc.poll()}) -----\n{text[-3000:]}", file=sys.stderr)
+
+    def close(self):
+        for name, (proc, _) in self.procs.items():
+            if proc.poll() is None:
+                proc.terminate()
+        for name, (proc, _) in self.procs.items():
+            try:
+                proc.wait(timeout=3)
+            except subprocess.TimeoutExpired:
+                proc.kill()
+                proc.wait()
+        if self.keep:
+            print(f"kept {self.dir}", file=sys.stderr)
+        else:
+            shutil.rmtree(self.dir, ignore_errors=True)
+
+
+def tail(text, chars=400):
+    text = " | ".join(line.strip() for line in text.strip().splitlines()[-6:])
+    return text[-chars:] if text else "(no output)"
+
+
+def read_summary(out_dir):
+    path = os.path.join(out_dir, "summary.json")
+    check(os.path.isfile(path), f"{path} is missing")
+    with open(path) as f:
+        return json.load(f)
+
+
+def config_with(base_path, out_path, steps=None, stop_when_done=None, **world):
+    """Copies the run config at base_path to out_path with top-level steps / stop_when_done and
+    keys of the world: section replaced (each must already be present in the file)."""
+    with open(base_path) as f:
+        text = f.read()
+
+    def replace(pattern, value, what):
+        nonlocal text
+        text, count = re.subn(pattern, lambda m: m.group(1) + value, text, count=1, flags=re.MULTILINE)
+        check(count == 1, f"internal: {base_path} has no `{what}` line to override")
+
+    if steps is not None:
+        replace(r"^(steps:\s*)\S+", str(steps), "steps:")
+    if stop_when_done is not None:
+        replace(r"^(stop_when_done:\s*)\S+", "true" if stop_when_done else "false", "stop_when_done:")
+    for key, value in world.items():
+        replace(r"^(  " + re.escape(key) + r":\s*)\S+", str(value), "world." + key)
+    with open(out_path, "w") as f:
+        f.write(text)
+    return out_path
+
+
+def require_private_netns():
+    """Refuses to touch udpm unless this process is in a private network namespace holding only
+    loopback (tests/integration/netns.sh) and LCM_DEFAULT_URL is a ttl=0 udpm URL."""
+    with open("/proc/self/net/dev") as f:
+        interfaces = {line.split(":")[0].strip() for line in f.readlines()[2:]}
+    check(interfaces == {"lo"},
+          f"refusing to use udpm outside a private network namespace (interfaces {sorted(interfaces)}); "
+          f"run under tests/integration/netns.sh")
+    url = os.environ.get("LCM_DEFAULT_URL", "")
+    check(url.startswith("udpm://") and "ttl=0" in url, f"LCM_DEFAULT_URL must be a ttl=0 udpm URL, got {url!r}")
+
+
+class Udpm:
+    """Raw LCM udpm on LCM_GROUP:LCM_PORT (small messages only), for injecting foreign packets and
+    watching the bus without an LCM runtime. Packet: uint32 magic 'LC02', uint32 sequence number,
+    channel, NUL, payload."""
+
+    MAGIC_SHORT = 0x4C433032
+
+    def __init__(self, receive=False):
+        require_private_netns()
+        self.sequence = 0
+        self.send_socket = socket.socket(socket.AF_INET, socket.SOCK_DGRAM, socket.IPPROTO_UDP)
+        self.send_socket.setsockopt(socket.IPPROTO_IP, socket.IP_MULTICAST_TTL, 0)
+        self.send_socket.setsockopt(socket.IPPROTO_IP, socket.IP_MULTICAST_LOOP, 1)
+        self.recv_socket = None
+        if receive:
+            s = socket.socket(socket.AF_INET, socket.SOCK_DGRAM, socket.IPPROTO_UDP)
+            s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+            s.bind(("", LCM_PORT))
+            membership = struct.pack("4s4s", socket.inet_aton(LCM_GROUP), socket.inet_aton("0.0.0.0"))
+            s.setsockopt(socket.IPPROTO_IP, socket.IP_ADD_MEMBERSHIP, membership)
+            self.recv_socket = s
+
+    def send_raw(self, datagram):
+        self.send_socket.sendto(datagram, (LCM_GROUP, LCM_PORT))
+
+    def publish(self, channel, payload):
+        header = struct.pack(">II", self.MAGIC_SHORT, self.sequence)
+        self.sequence += 1
+        self.send_raw(header + channel.encode() + b"\0" + payload)
+
+    def receive(self, timeout):
+        """(channel, payload) of the next small LCM message, or None after timeout seconds."""
+        deadline = time.monotonic() + timeout
+        while True:
+            remaining = deadline - time.monotonic()
+            if remaining <= 0:
+                return None
+            self.recv_socket.settimeout(remaining)
+            try:
+                datagram = self.recv_socket.recv(65536)
+            except socket.timeout:
+                return None
+            if len(datagram) < 9 or struct.unpack(">I", datagram[:4])[0] != self.MAGIC_SHORT:
+                continue
+            end = datagram.find(b"\0", 8)
+            if end < 0:
+                continue
+            return datagram[8:end].decode(errors="replace"), datagram[end + 1:]
+
+    def close(self):
+        self.send_socket.close()
+        if self.recv_socket:
+            self.recv_socket.close()

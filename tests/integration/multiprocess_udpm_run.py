@@ -1,0 +1,88 @@
+#!/usr/bin/python3
+"""multiprocess_udpm_run: the same lockstep run in one process (memq) and in nine processes (udpm)
+gives identical logs.
+
+`dream launch` (the simulator plus one agent process per robot, over udpm in a private network
+namespace) must finish; its DREAM_POSES, DREAM_OBSTACLES and DREAM_STATUS must equal, message by
+message, those of `dream run` (one process, memq). DREAM_CMD_<n> cannot be byte-equal: each agent
+process draws its own random agent_id, and on udpm an agent may answer a resent step 0 twice. So
+commands are compared decoded, with agent_id ignored and repeats of the same step dropped; and the
+launched run must show one distinct agent_id per robot, the one-process run a single one.
+
+Usage: netns.sh multiprocess_udpm_run.py --dream BIN --source DIR --types-dir DIR
+"""
+
+import argparse
+import os
+
+from dreamtest import check, import_types, main, read_events, read_summary, require_private_netns
+
+
+def commands_by_robot(log_path, dream):
+    """robot id -> [(step, v, w, done)] with consecutive repeats of a step dropped; and agent ids."""
+    commands, agent_ids = {}, {}
+    for event in read_events(log_path):
+        if not event.channel.startswith("DREAM_CMD_"):
+            continue
+        command = dream.velocity_command_t.decode(event.data)
+        robot = int(event.channel[len("DREAM_CMD_"):])
+        check(command.robot_id == robot, f"{log_path}: {event.channel} carries robot_id {command.robot_id}")
+        agent_ids.setdefault(robot, set()).add(command.agent_id)
+        entry = (command.step, command.v, command.w, command.done)
+        sequence = commands.setdefault(robot, [])
+        if sequence and sequence[-1][0] == command.step:
+            check(sequence[-1] == entry, f"{log_path}: robot {robot} sent two different commands for step "
+                                         f"{command.step}: {sequence[-1]} and {entry}")
+            continue
+        sequence.append(entry)
+    return commands, agent_ids
+
+
+def test(ctx):
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--dream", required=True)
+    parser.add_argument("--source", required=True)
+    parser.add_argument("--types-dir", required=True)
+    args = parser.parse_args()
+    require_private_netns()
+    dream = import_types(args.types_dir)
+    config = os.path.join(args.source, "config", "go_to_goal.yaml")
+
+    launched, single = ctx.path("launch"), ctx.path("run")
+    ctx.start("launch", [args.dream, "launch", config, "--out", launched])
+    code = ctx.wait("launch", timeout=30)
+    check(code == 0, f"dream launch exited {code}, expected 0")
+    summary = read_summary(launched)
+    check(summary["end"] == "finished", f"dream launch: summary end is {summary['end']!r} ({summary['reason']})")
+    check(summary["robots_ever_lost"] == [], f"dream launch lost robots {summary['robots_ever_lost']}")
+    check(summary["rejected_commands"] == 0, f"dream launch rejected {summary['rejected_commands']} commands")
+
+    ctx.run([args.dream, "-q", "run", config, "--out", single], expect=0)
+    check(read_summary(single)["steps"] == summary["steps"],
+          f"steps differ: launch {summary['steps']}, run {read_summary(single)['steps']}")
+
+    log_a, log_b = os.path.join(launched, "run.lcmlog"), os.path.join(single, "run.lcmlog")
+    for channel in ["DREAM_POSES", "DREAM_OBSTACLES", "DREAM_STATUS"]:
+        code, text = ctx.run([args.dream, "log", "diff", log_a, log_b, "--channels", channel])
+        check(code == 0 and "same" in text,
+              f"{channel} differs between dream launch (udpm) and dream run (memq): {text.strip()}")
+
+    commands_a, agents_a = commands_by_robot(log_a, dream)
+    commands_b, agents_b = commands_by_robot(log_b, dream)
+    check(sorted(commands_a) == list(range(8)), f"launch log has commands for robots {sorted(commands_a)}")
+    for robot in range(8):
+        a, b = commands_a[robot], commands_b.get(robot, [])
+        if a != b:
+            first = next((i for i, (x, y) in enumerate(zip(a, b)) if x != y), min(len(a), len(b)))
+            check(False, f"DREAM_CMD_{robot} differs (agent_id and repeats ignored) at command {first}: "
+                         f"launch {a[first] if first < len(a) else 'none'}, run {b[first] if first < len(b) else 'none'}")
+    ids_a = [next(iter(agents_a[robot])) for robot in range(8) if len(agents_a[robot]) == 1]
+    check(len(ids_a) == 8 and len(set(ids_a)) == 8,
+          f"dream launch: expected one distinct agent_id per robot, got {agents_a}")
+    check(len(set().union(*agents_b.values())) == 1, "dream run: expected one agent_id for all robots")
+    print(f"launch and run agree: {summary['steps']} steps, poses/obstacles/status byte-equal, "
+          f"commands equal up to agent_id")
+
+
+if __name__ == "__main__":
+    main(test)
