@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
       "4 run did not finish, 130 interrupted.",
       "dream"};
   app.require_subcommand(1);
+  app.fallthrough();  // --quiet/--verbose work after the subcommand too
   bool quiet = false;
   bool verbose = false;
   app.add_flag("-q,--quiet", quiet, "Only warnings and errors");

@@ -10,6 +10,7 @@
 #include "dream/sim/run_report.h"
 #include "dream/sim/run_summary.h"
 #include "dream/sim/sim_node.h"
+#include "dream/sim/trajectory_picture.h"
 #include "dream/sim/unicycle_world.h"
 
 namespace dream::cli {
@@ -63,6 +64,10 @@ int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std:
                outcome.steps, world.time_s(), outcome.wall_time_s, outcome.reason);
   std::cout << report.Text();
   std::cout << "log:     " << log_path << "\nsummary: " << out_dir << "/summary.json\n";
+  if (outcome.steps > 0 || outcome.end == sim::RunOutcome::End::kFinished) {
+    sim::TrajectoryPicture::Render(log_path, out_dir + "/trajectories.png");
+    std::cout << "picture: " << out_dir << "/trajectories.png\n";
+  }
   switch (outcome.end) {
     case sim::RunOutcome::End::kFinished:
       return report.verdict == sim::RunVerdict::kRejected ? kExitRejected : kExitOk;

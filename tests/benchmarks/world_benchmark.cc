@@ -1,4 +1,4 @@
-// UnicycleWorld::Step cost at 20, 1,000 and 10,000 robots. Large worlds use
+// UnicycleWorld::Step cost at 20, 50, 1,000 and 10,000 robots. Large worlds use
 // an arena scaled so the density stays that of 50 robots in the Robotarium's
 // 3.2 x 2 m (the simulator's maximum), every robot drives a small circle
 // (so the crowd stays put and keeps interacting) with some commands over the
@@ -64,7 +64,7 @@ void BM_UnicycleWorldStep(benchmark::State& state) {
       static_cast<double>(colliding_pairs) / static_cast<double>(std::max<int64_t>(state.iterations(), 1));
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
-BENCHMARK(BM_UnicycleWorldStep)->Arg(20)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_UnicycleWorldStep)->Arg(20)->Arg(50)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace dream::sim

@@ -70,20 +70,25 @@ class Context:
         self.started = time.monotonic()
         self.dir = tempfile.mkdtemp(prefix="dream_it_")
         self.procs = {}  # name -> (Popen, output path)
+        self.groups = []  # process groups led by children started with own_group
         self.keep = os.environ.get("DREAM_TEST_KEEP") == "1"
 
     def path(self, *parts):
         return os.path.join(self.dir, *parts)
 
-    def start(self, name, argv, env=None):
-        """Starts argv with stdout+stderr into <tmp>/<name>.out; returns the Popen."""
+    def start(self, name, argv, env=None, own_group=False):
+        """Starts argv with stdout+stderr into <tmp>/<name>.out; returns the Popen. With own_group the
+        child leads a new process group, and close() ends that whole group (for wrappers such as
+        xvfb-run whose children could outlive them)."""
         check(name not in self.procs, f"internal: process name {name} used twice")
         out_path = self.path(name + ".out")
         out = open(out_path, "w")
         proc = subprocess.Popen(argv, stdout=out, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
-                                env=env)
+                                env=env, start_new_session=own_group)
         out.close()
         self.procs[name] = (proc, out_path)
+        if own_group:
+            self.groups.append(proc.pid)
         return proc
 
     def output(self, name):
@@ -134,6 +139,11 @@ class Context:
             print(f"----- output of {name} (exit {proc.poll()}) -----\n{text[-3000:]}", file=sys.stderr)
 
     def close(self):
+        for group in self.groups:
+            try:
+                os.killpg(group, signal.SIGTERM)
+            except ProcessLookupError:
+                pass
         for name, (proc, _) in self.procs.items():
             if proc.poll() is None:
                 proc.terminate()

@@ -61,7 +61,7 @@ UnicycleWorld::UnicycleWorld(const WorldParams& params, std::vector<Pose2> initi
       command_hold_steps_(CommandHoldSteps(params.time_step_s, params.command_timeout_s)),
       collision_center_x_m_(poses_.size()),
       collision_center_y_m_(poses_.size()),
-      collision_grid_(std::make_unique<CollisionGrid>(poses_.size(), params.collision_diameter_m)) {
+      collision_grid_(std::make_unique<CollisionGrid>(poses_.size(), params.collision_diameter_m, params.arena)) {
   if (poses_.size() > static_cast<std::size_t>(std::numeric_limits<int32_t>::max() / 4)) {
     throw std::invalid_argument("UnicycleWorld: " + std::to_string(poses_.size()) +
                                 " robots is more than this world supports");

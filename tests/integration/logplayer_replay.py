@@ -1,0 +1,67 @@
+#!/usr/bin/python3
+"""logplayer_replay: LCM's own tools carry a dream run log without loss.
+
+Makes a run log (dream run), starts lcm-logger on udpm in a private network namespace, waits until
+it records (a probe message shows up in its file), plays the run log with lcm-logplayer at 20x,
+stops the logger with SIGINT, and requires the captured log to hold every DREAM_* message of the
+original, in order (dream log diff --channels 'DREAM_.*'; the capture also holds the probe and
+udpm's LCM_SELF_TEST, which are not part of the run).
+
+Usage: netns.sh logplayer_replay.py --dream BIN --source DIR
+"""
+
+import argparse
+import os
+import signal
+import time
+
+from dreamtest import Udpm, check, main, read_all, require_private_netns
+
+
+def test(ctx):
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--dream", required=True)
+    parser.add_argument("--source", required=True)
+    args = parser.parse_args()
+    require_private_netns()
+    url = os.environ["LCM_DEFAULT_URL"]
+
+    run = ctx.path("run")
+    ctx.run([args.dream, "-q", "run", os.path.join(args.source, "config", "go_to_goal.yaml"), "--out", run],
+            expect=0)
+    original = os.path.join(run, "run.lcmlog")
+    captured = ctx.path("captured.lcmlog")
+
+    logger = ctx.start("logger", ["lcm-logger", "--lcm-url=" + url, "--flush-interval=10", "-f", captured])
+    bus = Udpm()
+    deadline = time.monotonic() + 10
+    while True:
+        bus.publish("PROBE_LOGGER_UP", b"probe")
+        time.sleep(0.05)
+        if os.path.exists(captured):
+            with open(captured, "rb") as f:
+                if b"PROBE_LOGGER_UP" in f.read():
+                    break
+        check(logger.poll() is None, f"lcm-logger exited ({logger.returncode}): {ctx.output('logger').strip()}")
+        check(time.monotonic() < deadline, "lcm-logger did not record a probe message within 10 s")
+    bus.close()
+
+    ctx.start("player", ["lcm-logplayer", "-s", "20", "--lcm-url=" + url, original])
+    code = ctx.wait("player", timeout=20)
+    check(code == 0, f"lcm-logplayer exited {code}: {ctx.output('player').strip()}")
+    time.sleep(0.3)  # let the logger drain its socket
+    logger.send_signal(signal.SIGINT)
+    code = ctx.wait("logger", timeout=10)
+    check(code == 0, f"lcm-logger exited {code} on SIGINT: {ctx.output('logger').strip()}")
+
+    code, text = ctx.run([args.dream, "log", "diff", original, captured, "--channels", "DREAM_.*"])
+    check(code == 0, "the captured log does not hold every DREAM_* message of the original: "
+                     + " ".join(text.strip().splitlines()[-4:]))
+    played = sum(1 for e in read_all(original))
+    recorded = sum(1 for e in read_all(captured) if e.channel.startswith("DREAM_"))
+    check(played == recorded, f"played {played} events, the logger recorded {recorded} DREAM_* events")
+    print(f"lcm-logplayer -> lcm-logger carried all {played} events")
+
+
+if __name__ == "__main__":
+    main(test)

@@ -1,0 +1,68 @@
+#!/usr/bin/python3
+"""types_jar_decodes_log: the Java types jar (what lcm-spy loads) decodes every event of a run log.
+
+Makes a run log (dream run), compiles tests/java/DecodeLog.java against lcm.jar and the types
+jar, and runs it: every DREAM_* event must be identified by its fingerprint among the jar's
+classes (as lcm-spy does), decode completely and re-encode to the same bytes, and the channels
+must carry DREAM_POSES -> dream.robot_poses_t, DREAM_CMD_<n> -> dream.velocity_command_t,
+DREAM_OBSTACLES -> dream.obstacles_t, DREAM_STATUS -> dream.run_status_t.
+
+Usage: types_jar_decodes_log.py --dream BIN --source DIR --types-jar JAR --lcm-jar JAR
+"""
+
+import argparse
+import os
+import shutil
+
+from dreamtest import check, main, read_summary
+
+EXPECTED = {
+    "DREAM_POSES": "dream.robot_poses_t",
+    "DREAM_CMD_[0-9]+": "dream.velocity_command_t",
+    "DREAM_OBSTACLES": "dream.obstacles_t",
+    "DREAM_STATUS": "dream.run_status_t",
+}
+
+
+def test(ctx):
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--dream", required=True)
+    parser.add_argument("--source", required=True)
+    parser.add_argument("--types-jar", required=True)
+    parser.add_argument("--lcm-jar", required=True)
+    args = parser.parse_args()
+    for jar in (args.types_jar, args.lcm_jar):
+        check(os.path.isfile(jar), f"{jar} is missing")
+    javac, java = shutil.which("javac"), shutil.which("java")
+    check(javac and java, "javac/java not found (apt-get install default-jdk-headless)")
+
+    run = ctx.path("run")
+    ctx.run([args.dream, "-q", "run", os.path.join(args.source, "config", "go_to_goal.yaml"), "--out", run],
+            expect=0)
+    classes = ctx.path("classes")
+    os.mkdir(classes)
+    classpath = ":".join([args.lcm_jar, args.types_jar])
+    ctx.run([javac, "-Xlint:all", "-Werror", "-cp", classpath, "-d", classes,
+             os.path.join(args.source, "tests", "java", "DecodeLog.java")], timeout=60, expect=0)
+    log = os.path.join(run, "run.lcmlog")
+    code, text = ctx.run([java, "-cp", classes + ":" + classpath, "DecodeLog", log, args.types_jar]
+                         + [f"{regex}={name}" for regex, name in EXPECTED.items()], timeout=60)
+    print(text.strip())
+    last = text.strip().splitlines()[-1] if text.strip() else "(no output)"
+    check(code == 0, f"DecodeLog: {last}")
+
+    counts = {}
+    for line in text.strip().splitlines()[:-1]:
+        channel, type_name, count = line.split()
+        counts[channel] = (type_name, int(count))
+    summary = read_summary(run)
+    check(sum(n for _, n in counts.values()) == summary["log_events"],
+          f"DecodeLog decoded {sum(n for _, n in counts.values())} events, summary.json says {summary['log_events']}")
+    check(counts.get("DREAM_POSES", (None, 0))[1] == summary["steps"] + 1,
+          f"DREAM_POSES: {counts.get('DREAM_POSES')} events, expected steps + 1 = {summary['steps'] + 1}")
+    check(sorted(c for c in counts if c.startswith("DREAM_CMD_")) == [f"DREAM_CMD_{i}" for i in range(8)],
+          f"expected DREAM_CMD_0..7, got {sorted(c for c in counts if c.startswith('DREAM_CMD_'))}")
+
+
+if __name__ == "__main__":
+    main(test)
