@@ -1,4 +1,4 @@
-// The hashed-grid collision count must equal the official O(N^2) loop
+// The grid collision count must equal the official O(N^2) loop
 // exactly, pair for pair, on dense, degenerate and far-flung configurations.
 #include <algorithm>
 #include <cmath>

@@ -264,6 +264,10 @@ RunOutcome SimNode::Finish(RunOutcome::End end, const std::string& reason) {
   const int8_t state = end == RunOutcome::End::kFinished ? run_status_t::FINISHED : run_status_t::ABORTED;
   state_ = state;
   PublishStatus(state, reason, true);
+  // Agents exit on this message; repeat it (unrecorded) so one lost datagram
+  // does not leave them waiting for their idle timeout.
+  PublishStatus(state, reason, false);
+  PublishStatus(state, reason, false);
   RunOutcome outcome;
   outcome.end = end;
   outcome.reason = reason;

@@ -37,7 +37,7 @@ class CollisionGrid;
 //  3. Euler step: x += dt v cos th; y += dt v sin th; th += dt w;
 //     th = atan2(sin th, cos th).
 //  4. advance the obstacles; step() + 1.
-// Collisions are found with a hashed uniform grid (cell = collision
+// Collisions are found with a uniform grid (cell >= collision
 // diameter), giving exactly the brute-force pair count in O(N). Step() does
 // not allocate once its event lists have grown to their working size.
 // There is no robot-count limit here; the configuration layer enforces 50.
