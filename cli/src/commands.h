@@ -25,6 +25,7 @@ struct RunArgs {
   std::string lcm_url;          ///< empty: memq:// for run, else LCM_DEFAULT_URL
   long long steps = 0;          ///< 0: the config's
   std::string mode;             ///< empty: the config's
+  bool all_steps = false;       ///< run every step even when all robots report done
 };
 
 struct AgentArgs {

@@ -24,6 +24,7 @@ int RunLaunch(const RunArgs& args) {
   if (!args.out_dir.empty()) sim_argv.push_back("--out=" + args.out_dir);
   if (args.steps != 0) sim_argv.push_back("--steps=" + std::to_string(args.steps));
   if (!args.mode.empty()) sim_argv.push_back("--mode=" + args.mode);
+  if (args.all_steps) sim_argv.push_back("--all-steps");
   const pid_t sim = children.Start(sim_argv);
   std::vector<pid_t> agents;
   for (int id = 0; id < config.num_robots; ++id) {

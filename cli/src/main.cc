@@ -23,13 +23,19 @@ namespace {
 extern "C" void OnStopSignal(int) { dream::cli::StopFlag().store(true); }
 
 void AddRunOptions(CLI::App* command, dream::cli::RunArgs* args, const char* url_help) {
-  command->add_option("config", args->config_path, "Run config (YAML), e.g. config/go_to_goal.yaml")
-      ->required()
-      ->check(CLI::ExistingFile);
+  command->add_option("config", args->config_path, "Run config (YAML), e.g. config/go_to_goal.yaml")->required();
   command->add_option("--out", args->out_dir, "Output folder for run.lcmlog and summary.json (default runs/<name>)");
   command->add_option("--lcm-url", args->lcm_url, url_help);
-  command->add_option("--steps", args->steps, "Override the config's step limit")->check(CLI::PositiveNumber);
+  command->add_option("--steps", args->steps, "Override the config's step limit")
+      ->check(CLI::Validator(
+          [](const std::string& text) {
+            return text.find_first_not_of("0123456789") == std::string::npos && text.find_first_not_of('0') != std::string::npos
+                       ? std::string()
+                       : "must be a whole number >= 1, got " + text;
+          },
+          "INT>=1"));
   command->add_option("--mode", args->mode, "Override the world mode")->check(CLI::IsMember({"lockstep", "realtime"}));
+  command->add_flag("--all-steps", args->all_steps, "Run every step even when all robots report done (benchmarks)");
 }
 
 }  // namespace
@@ -64,7 +70,7 @@ int main(int argc, char** argv) {
   CLI::App* agent = app.add_subcommand(
       "agent", "Run the agents of some robots against whichever world is on the bus.\n"
                "Example: dream agent config/go_to_goal.yaml --robots 0-2");
-  agent->add_option("config", agent_args.config_path, "Run config (YAML)")->required()->check(CLI::ExistingFile);
+  agent->add_option("config", agent_args.config_path, "Run config (YAML)")->required();
   agent->add_option("--robots", agent_args.robots, "Robots to drive: all, 3, 0,2,5 or 0-4")->capture_default_str();
   agent->add_option("--lcm-url", agent_args.lcm_url, "LCM URL (default $LCM_DEFAULT_URL)");
   agent->add_option("--idle-timeout", agent_args.idle_timeout_s, "Give up after this many seconds without poses")
@@ -92,16 +98,30 @@ int main(int argc, char** argv) {
   std::string info_path;
   CLI::App* log_info = log->add_subcommand("info", "Channels and event counts of a log.\n"
                                                    "Example: dream log info runs/go_to_goal/run.lcmlog");
-  log_info->add_option("log", info_path, "LCM log file")->required()->check(CLI::ExistingFile);
+  log_info->add_option("log", info_path, "LCM log file")->required();
   std::string diff_a;
   std::string diff_b;
   std::string diff_channels = ".*";
   CLI::App* log_diff = log->add_subcommand(
       "diff", "Compare two logs message by message, per channel, ignoring timestamps. Exit 0 when equal.\n"
               "Example: dream log diff a/run.lcmlog b/run.lcmlog --channels DREAM_POSES");
-  log_diff->add_option("a", diff_a, "First log")->required()->check(CLI::ExistingFile);
-  log_diff->add_option("b", diff_b, "Second log")->required()->check(CLI::ExistingFile);
+  log_diff->add_option("a", diff_a, "First log")->required();
+  log_diff->add_option("b", diff_b, "Second log")->required();
   log_diff->add_option("--channels", diff_channels, "Regex of channels to compare")->capture_default_str();
+
+  // CLI11 would only say "A subcommand is required"; name the unknown word.
+  if (argc > 1 && argv[1][0] != '-') {
+    bool known = false;
+    std::string names;
+    for (const CLI::App* command : app.get_subcommands({})) {
+      known = known || command->get_name() == argv[1];
+      names += (names.empty() ? "" : ", ") + command->get_name();
+    }
+    if (!known) {
+      std::cerr << "dream: unknown subcommand '" << argv[1] << "'; known: " << names << " (dream --help)\n";
+      return kExitUsage;
+    }
+  }
 
   try {
     app.parse(argc, argv);

@@ -18,10 +18,10 @@ int64_t NewAgentId() {
 
 int RunEmbedded(const RunArgs& args) {
   const config::RunConfig config = LoadConfig(args);
-  const std::string out_dir = PrepareOutputDir(args, config);
   // One process: the world and every agent share one bus, memq:// unless the
   // user asks for a real transport.
   lcm::LcmBus bus(args.lcm_url.empty() ? "memq://" : lcm::ResolveLcmUrl(args.lcm_url));
+  const std::string out_dir = PrepareOutputDir(args, config);
   const agents::ControllerFactory factory(config.controller, config.num_robots);
   std::vector<agents::HostedRobot> robots;
   for (int id = 0; id < config.num_robots; ++id) robots.push_back({id, factory.Make(id)});
@@ -31,8 +31,8 @@ int RunEmbedded(const RunArgs& args) {
 
 int RunSimOnly(const RunArgs& args) {
   const config::RunConfig config = LoadConfig(args);
-  const std::string out_dir = PrepareOutputDir(args, config);
   lcm::LcmBus bus(lcm::ResolveLcmUrl(args.lcm_url));
+  const std::string out_dir = PrepareOutputDir(args, config);
   return RunWorld(bus, config, out_dir);
 }
 

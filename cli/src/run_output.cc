@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "dream/agents/controller_factory.h"
 #include "dream/sim/atomic_file.h"
 #include "dream/sim/run_recorder.h"
 #include "dream/sim/run_report.h"
@@ -22,6 +23,10 @@ config::RunConfig LoadConfig(const RunArgs& args) {
     config.sim.max_steps = args.steps;
   }
   if (!args.mode.empty()) config.sim.mode = sim::ParseWorldMode(args.mode);
+  if (args.all_steps) config.sim.stop_when_done = false;
+  // Check the controller section now, so a mistake in it stops every command
+  // (sim, launch) before anything starts or any folder is made.
+  agents::ControllerFactory(config.controller, config.num_robots);
   return config;
 }
 

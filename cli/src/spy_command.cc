@@ -29,6 +29,18 @@ std::string RequireFile(const std::string& path, const char* what, const char* h
   return path;
 }
 
+// `text` quoted for a POSIX shell when it holds anything but safe characters
+// (URLs hold '&' and '?'), so a printed command can be pasted as is.
+std::string ShellQuoted(const std::string& text) {
+  if (!text.empty() && text.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-./:=,+@") ==
+                           std::string::npos) {
+    return text;
+  }
+  std::string quoted = "'";
+  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
 }  // namespace
 
 int RunSpy(const std::string& log_path, const std::string& lcm_url, bool print_command_only) {
@@ -54,7 +66,7 @@ int RunSpy(const std::string& log_path, const std::string& lcm_url, bool print_c
   if (print_command_only) {
     const std::vector<std::string>* commands[] = {&spy, &player};
     for (const std::vector<std::string>* argv : commands) {
-      for (const std::string& arg : *argv) std::cout << arg << ' ';
+      for (const std::string& arg : *argv) std::cout << ShellQuoted(arg) << ' ';
       if (!argv->empty()) std::cout << '\n';
     }
     return kExitOk;

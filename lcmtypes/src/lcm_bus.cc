@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <cerrno>
 #include <exception>
 #include <lcm/lcm-cpp.hpp>
 #include <stdexcept>
@@ -37,7 +38,11 @@ void LcmBus::Subscribe(const std::string& channel_regex, RawHandler handler) {
 }
 
 int LcmBus::HandleSubscriptions(int timeout_ms) {
+  errno = 0;
   const int handled = lcm_->handleTimeout(timeout_ms);
+  // A signal (Ctrl-C) interrupting the wait is not a failure: the caller
+  // checks its stop flag and ends cleanly.
+  if (handled < 0 && errno == EINTR) return 0;
   if (handled < 0) {
     throw std::runtime_error("LCM failed while receiving on " + url_);
   }

@@ -1,18 +1,26 @@
 #include "dream/lcm/log_reader.h"
 
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <lcm/lcm-cpp.hpp>
 #include <stdexcept>
 
 namespace dream::lcm {
 namespace {
 
-// Every LCM log event starts with this sync word (big-endian on disk).
-constexpr unsigned char kSyncWord[4] = {0xED, 0xA1, 0xDA, 0x01};
-// sync word, event number, timestamp, channel length, data length.
+// LCM event log format: per event, big-endian: uint32 sync word, int64 event
+// number, int64 timestamp, int32 channel length, int32 data length, then the
+// channel name and the payload. We parse it ourselves rather than through
+// lcm::LogFile, whose reader trusts the lengths (a damaged header makes it
+// allocate 2 GB or read into a null buffer) and silently skips garbage.
+constexpr uint32_t kSyncWord = 0xEDA1DA01;
 constexpr int64_t kEventHeaderBytes = 4 + 8 + 8 + 4 + 4;
+// LCM itself refuses channel names longer than this.
+constexpr int64_t kMaxChannelBytes = 256;
+
+uint64_t BigEndian(const unsigned char* bytes, int count) {
+  uint64_t value = 0;
+  for (int i = 0; i < count; ++i) value = (value << 8) | bytes[i];
+  return value;
+}
 
 }  // namespace
 
@@ -22,36 +30,49 @@ LogReader::LogReader(std::string path) : path_(std::move(path)) {
     throw std::runtime_error(path_ + ": no such log file");
   }
   file_size_ = static_cast<int64_t>(std::filesystem::file_size(path_, error));
+  in_.open(path_, std::ios::binary);
+  if (!in_) throw std::runtime_error(path_ + ": cannot open the log");
   if (file_size_ > 0) {
-    std::ifstream in(path_, std::ios::binary);
     unsigned char head[4] = {0, 0, 0, 0};
-    in.read(reinterpret_cast<char*>(head), 4);
-    if (!in || !std::equal(head, head + 4, kSyncWord)) {
+    in_.read(reinterpret_cast<char*>(head), 4);
+    if (!in_ || BigEndian(head, 4) != kSyncWord) {
       throw std::runtime_error(path_ + ": not an LCM log (it does not start with the LCM event sync word)");
     }
+    in_.seekg(0);
   }
-  log_ = std::make_unique<::lcm::LogFile>(path_, "r");
-  if (!log_->good()) throw std::runtime_error(path_ + ": cannot open the log");
 }
 
 LogReader::~LogReader() = default;
 
+void LogReader::Fail(const std::string& problem) const {
+  throw std::runtime_error(path_ + ": " + problem + " at byte " + std::to_string(bytes_read_) + " (after event " +
+                           std::to_string(events_) + "); the log is cut short or damaged");
+}
+
 bool LogReader::Next(LogRecord* record) {
-  const ::lcm::LogEvent* event = log_->readNextEvent();
-  if (event == nullptr) {
-    if (bytes_read_ != file_size_) {
-      throw std::runtime_error(path_ + ": the log is cut short or damaged after event " + std::to_string(events_) +
-                               " (" + std::to_string(file_size_ - bytes_read_) + " bytes at byte " +
-                               std::to_string(bytes_read_) + " are not a complete event)");
-    }
-    return false;
+  const int64_t remaining = file_size_ - bytes_read_;
+  if (remaining == 0) return false;
+  if (remaining < kEventHeaderBytes) Fail("an incomplete event header");
+  unsigned char header[kEventHeaderBytes];
+  in_.read(reinterpret_cast<char*>(header), kEventHeaderBytes);
+  if (!in_) Fail("a read error");
+  if (BigEndian(header, 4) != kSyncWord) Fail("no LCM sync word");
+  const auto channel_bytes = static_cast<int32_t>(BigEndian(header + 20, 4));
+  const auto data_bytes = static_cast<int32_t>(BigEndian(header + 24, 4));
+  if (channel_bytes <= 0 || channel_bytes > kMaxChannelBytes) {
+    Fail("an impossible channel name length " + std::to_string(channel_bytes));
   }
-  record->utime = event->timestamp;
-  record->channel = event->channel;
-  const auto* bytes = static_cast<const uint8_t*>(event->data);
-  record->data.assign(bytes, bytes + event->datalen);
+  if (data_bytes < 0 || kEventHeaderBytes + channel_bytes + data_bytes > remaining) {
+    Fail("a payload of " + std::to_string(data_bytes) + " bytes that does not fit in the file");
+  }
+  record->utime = static_cast<int64_t>(BigEndian(header + 12, 8));
+  record->channel.resize(static_cast<size_t>(channel_bytes));
+  in_.read(record->channel.data(), channel_bytes);
+  record->data.resize(static_cast<size_t>(data_bytes));
+  in_.read(reinterpret_cast<char*>(record->data.data()), data_bytes);
+  if (!in_) Fail("a read error");
+  bytes_read_ += kEventHeaderBytes + channel_bytes + data_bytes;
   ++events_;
-  bytes_read_ += kEventHeaderBytes + static_cast<int64_t>(event->channel.size()) + event->datalen;
   return true;
 }
 

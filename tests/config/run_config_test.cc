@@ -108,7 +108,10 @@ TEST(RunConfigTest, UnknownKeysAreTyposAndSayWhatIsAllowed) {
   EXPECT_NE(ErrorOf(std::string(kMinimal) + "world: {mode: fast}\n").find("unknown world mode 'fast'; allowed: "
                                                                           "lockstep, realtime"),
             std::string::npos);
-  EXPECT_NE(ErrorOf(std::string(kMinimal) + "world: {agent_timeout_s: -1}\n").find("agent_timeout_s must be > 0"),
+  EXPECT_NE(ErrorOf(std::string(kMinimal) + "world: {agent_timeout_s: -1}\n")
+                .find("test.yaml:11: world.agent_timeout_s: must be > 0, got -1"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(Replace(kMinimal, "steps: 100", "steps: -5")).find("test.yaml:4: steps: must be >= 1, got -5"),
             std::string::npos);
 }
 

@@ -20,6 +20,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
+# Re-exported: the tests read logs with the same reader users get.
 from lcmlog import LogFormatError, read_all, read_events  # noqa: E402,F401
 
 LCM_GROUP = "239.255.76.67"

@@ -14,6 +14,7 @@ Usage: netns.sh spy_print_command.py --dream BIN --source DIR --types-jar JAR
 
 import argparse
 import os
+import shlex
 import shutil
 import subprocess
 
@@ -22,7 +23,7 @@ from dreamtest import check, main, require_private_netns
 
 def parse_spy_line(line):
     """(classpath entries, url) of `java -cp CP lcm.spy.Spy --lcm-url=URL`."""
-    words = line.split()
+    words = shlex.split(line)  # the printed command is shell-quoted, ready to paste
     check(len(words) == 5 and words[0] == "java" and words[1] == "-cp" and words[3] == "lcm.spy.Spy"
           and words[4].startswith("--lcm-url="),
           f"expected `java -cp CLASSPATH lcm.spy.Spy --lcm-url=URL`, got `{line}`")
@@ -58,7 +59,7 @@ def test(ctx):
     check(os.path.realpath(types_entry) == os.path.realpath(args.types_jar),
           f"spy uses {types_entry}, not the build's types jar {args.types_jar}")
     check(url.startswith("udpm://") and "ttl=0" in url, f"a replayed log must stay on loopback (ttl=0): {url}")
-    player = lines[1].split()
+    player = shlex.split(lines[1])
     check(player == ["lcm-logplayer", "--lcm-url=" + url, log],
           f"expected `lcm-logplayer --lcm-url={url} {log}`, got `{lines[1]}`")
 

@@ -7,7 +7,7 @@ classes (as lcm-spy does), decode completely and re-encode to the same bytes, an
 must carry DREAM_POSES -> dream.robot_poses_t, DREAM_CMD_<n> -> dream.velocity_command_t,
 DREAM_OBSTACLES -> dream.obstacles_t, DREAM_STATUS -> dream.run_status_t.
 
-Usage: types_jar_decodes_log.py --dream BIN --source DIR --types-jar JAR --lcm-jar JAR
+Usage: types_jar_decodes_log.py --dream BIN --source DIR --types-jar JAR --lcm-jar JAR [--javac BIN --java BIN]
 """
 
 import argparse
@@ -30,11 +30,14 @@ def test(ctx):
     parser.add_argument("--source", required=True)
     parser.add_argument("--types-jar", required=True)
     parser.add_argument("--lcm-jar", required=True)
+    parser.add_argument("--javac", default=shutil.which("javac"))
+    parser.add_argument("--java", default=shutil.which("java"))
     args = parser.parse_args()
     for jar in (args.types_jar, args.lcm_jar):
         check(os.path.isfile(jar), f"{jar} is missing")
-    javac, java = shutil.which("javac"), shutil.which("java")
-    check(javac and java, "javac/java not found (apt-get install default-jdk-headless)")
+    javac, java = args.javac, args.java
+    check(javac and java and os.path.exists(javac) and os.path.exists(java),
+          "javac/java not found (apt-get install default-jdk-headless)")
 
     run = ctx.path("run")
     ctx.run([args.dream, "-q", "run", os.path.join(args.source, "config", "go_to_goal.yaml"), "--out", run],

@@ -51,8 +51,11 @@ void AgentHost::OnPoses(const std::string& channel, const robot_poses_t& poses) 
                                         std::to_string(poses.num_robots) + " robots");
       continue;
     }
-    if (poses.step < robot.answered_step) continue;  // a late resend of an old step
-    if (poses.step > robot.answered_step) {
+    // The world only moves forward, so a step just behind ours is a late
+    // duplicate. Anything further back is authoritative: a restarted world,
+    // or recovery after a stray message with a bogus future step.
+    if (poses.step == robot.answered_step - 1) continue;
+    if (poses.step != robot.answered_step) {
       const auto i = static_cast<size_t>(robot.robot_id);
       ControllerInput input;
       input.step = poses.step;

@@ -21,6 +21,7 @@ std::string Format(double value) {
 sim::SimNodeOptions ReadSimOptions(const ConfigNode& root) {
   sim::SimNodeOptions options;
   options.max_steps = root.GetInt("steps", options.max_steps);
+  if (options.max_steps < 1) root.Required("steps").Fail("must be >= 1, got " + std::to_string(options.max_steps));
   options.stop_when_done = root.GetBool("stop_when_done", options.stop_when_done);
   const ConfigNode world = root.Optional("world");
   if (world.IsDefined()) {
@@ -34,14 +35,20 @@ sim::SimNodeOptions ReadSimOptions(const ConfigNode& root) {
         mode.Fail(e.what());
       }
     }
-    options.agent_timeout_s = world.GetDouble("agent_timeout_s", options.agent_timeout_s);
-    options.start_timeout_s = world.GetDouble("start_timeout_s", options.start_timeout_s);
-    options.resend_interval_s = world.GetDouble("resend_interval_s", options.resend_interval_s);
-    options.max_abs_v_mps = world.GetDouble("max_abs_v_mps", options.max_abs_v_mps);
-    options.max_abs_w_radps = world.GetDouble("max_abs_w_radps", options.max_abs_w_radps);
+    // Each duration or limit must be positive; the error points at its line.
+    auto positive = [&world](const char* key, double fallback) {
+      const double value = world.GetDouble(key, fallback);
+      if (!(value > 0.0)) world.Required(key).Fail("must be > 0, got " + world.Required(key).AsString());
+      return value;
+    };
+    options.agent_timeout_s = positive("agent_timeout_s", options.agent_timeout_s);
+    options.start_timeout_s = positive("start_timeout_s", options.start_timeout_s);
+    options.resend_interval_s = positive("resend_interval_s", options.resend_interval_s);
+    options.max_abs_v_mps = positive("max_abs_v_mps", options.max_abs_v_mps);
+    options.max_abs_w_radps = positive("max_abs_w_radps", options.max_abs_w_radps);
   }
   std::string error;
-  if (!options.IsValid(&error)) (world.IsDefined() ? world : root).Fail(error);
+  if (!options.IsValid(&error)) root.Fail(error);  // unreachable when the checks above hold
   return options;
 }
 

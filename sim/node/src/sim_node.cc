@@ -343,8 +343,11 @@ RunOutcome SimNode::Run(const std::atomic<bool>& stop) {
       }
     }
 
-    if (lockstep && SecondsBetween(last_resend_, now) > options_.resend_interval_s) {
-      PublishStep(false);  // a datagram may have been lost; agents answer again idempotently
+    // While waiting for answers, publish the step again: a datagram may have
+    // been lost, or agents started after the world. Agents answer idempotently.
+    const bool waiting = lockstep || state_ == run_status_t::WAITING_FOR_AGENTS;
+    if (waiting && SecondsBetween(last_resend_, now) > options_.resend_interval_s) {
+      PublishStep(false);
       last_resend_ = now;
     }
     int timeout_ms = 10;

@@ -1,13 +1,9 @@
 #pragma once
 
 #include <cstdint>
-#include <memory>
+#include <fstream>
 #include <string>
 #include <vector>
-
-namespace lcm {
-class LogFile;
-}
 
 namespace dream::lcm {
 
@@ -19,8 +15,8 @@ struct LogRecord {
 };
 
 /// Reads an LCM event log (as written by lcm-logger or a dream run) event by
-/// event. A file that is not an LCM log, or is cut short, gives a clear error
-/// rather than garbage.
+/// event. A file that is not an LCM log, is cut short, or has a damaged event
+/// gives a clear error naming the file and byte, never garbage or a crash.
 class LogReader {
  public:
   /// @throws std::runtime_error naming the path when it cannot be opened or
@@ -36,8 +32,10 @@ class LogReader {
   static std::vector<LogRecord> ReadAll(const std::string& path);
 
  private:
+  [[noreturn]] void Fail(const std::string& problem) const;
+
   std::string path_;
-  std::unique_ptr<::lcm::LogFile> log_;
+  std::ifstream in_;
   int64_t file_size_ = 0;
   int64_t events_ = 0;
   int64_t bytes_read_ = 0;  // bytes of complete events so far

@@ -1,0 +1,156 @@
+#!/usr/bin/python3
+"""bad_input_cli: every mistake a user can make on the command line or in a config is refused with
+the documented exit code and a one-line message that names the file, line, key and value.
+
+Each case runs `dream` on a broken input and checks: the exit code, that the first output line
+holds every expected fragment, and that a config error is exactly one line and creates no output
+folder.
+
+Usage: netns.sh bad_input_cli.py --dream BIN --source DIR
+"""
+
+import argparse
+import os
+import re
+
+from dreamtest import check, config_with, fail, main, read_events, require_private_netns
+
+EXIT_INPUT = 1
+EXIT_USAGE = 2
+
+
+def mutate(source_config, path, old, new):
+    """Writes source_config with the first line matching regex `old` replaced by `new`; returns
+    (path, line number of the change)."""
+    with open(source_config) as f:
+        lines = f.read().split("\n")
+    for number, line in enumerate(lines, start=1):
+        if re.search(old, line):
+            lines[number - 1] = re.sub(old, new, line)
+            with open(path, "w") as f:
+                f.write("\n".join(lines))
+            return path, number
+    fail(f"internal: no line of {source_config} matches {old!r}")
+
+
+def truncated_log(ctx, dream, config):
+    """A real run log cut in the middle of an event's data; returns (path, events before the cut)."""
+    out = ctx.path("good_run")
+    ctx.run([dream, "-q", "run", config, "--out", out], expect=0)
+    log = os.path.join(out, "run.lcmlog")
+    events = list(read_events(log))
+    keep = len(events) // 2
+    offset = sum(28 + len(e.channel) + len(e.data) for e in events[:keep])
+    cut = offset + 28 + len(events[keep].channel) + len(events[keep].data) // 2
+    with open(log, "rb") as f:
+        data = f.read()
+    check(0 < cut < len(data), "internal: cut point outside the log")
+    path = ctx.path("truncated.lcmlog")
+    with open(path, "wb") as f:
+        f.write(data[:cut])
+    return path, keep
+
+
+def test(ctx):
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--dream", required=True)
+    parser.add_argument("--source", required=True)
+    args = parser.parse_args()
+    require_private_netns()  # `dream launch` of a broken config must not reach the network, but might
+    dream = args.dream
+    config = os.path.join(args.source, "config", "go_to_goal.yaml")
+
+    def broken(name, old, new):
+        return mutate(config, ctx.path(name + ".yaml"), old, new)
+
+    robots51, robots51_line = broken("robots51", r"^robots: 8", "robots: 51")
+    eight, eight_line = broken("eight", r"^robots: 8", "robots: eight")
+    overlap, overlap_line = broken("overlap", r"\[0\.459, 0\.693, 2\.749\]", "[1.109, 0.287, 1.963]")
+    outside, outside_line = broken("outside", r"\[0\.459, 0\.693, 2\.749\]", "[1.9, 0.693, 2.749]")
+    kind, kind_line = broken("kind", r"kind: go_to_goal", "kind: go_to_gaol")
+    # The same mistake for `dream launch`, with a short start timeout: if launch does not check the
+    # controller section itself, its agents fail and the simulator waits start_timeout_s in vain.
+    launch_kind = config_with(kind, ctx.path("launch_kind.yaml"), start_timeout_s=3)
+    typo, typo_line = broken("typo", r"^stop_when_done:", "stop_when_dnoe:")
+    mode, mode_line = broken("mode", r"mode: lockstep", "mode: fast")
+    timeout, timeout_line = broken("timeout", r"agent_timeout_s: 2\.0", "agent_timeout_s: -1")
+    goals, _ = broken("goals", r"- \[0\.416, -0\.134\]", "")
+    bad_yaml, _ = broken("bad_yaml", r"^robots: 8", "robots: [8")
+    missing = ctx.path("no_such_config.yaml")
+    not_log = ctx.path("not_a_log.lcmlog")
+    with open(not_log, "w") as f:
+        f.write("name: this is text, not an LCM log\n")
+    truncated, kept_events = truncated_log(ctx, dream, config)
+    no_parent = ctx.path("no", "such", "folder")
+
+    def where(path, line):
+        return f"{path}:{line}:"
+
+    # (name, argv, expected exit code, fragments the first output line must hold, is a config error)
+    cases = [
+        ("unknown subcommand", ["frobnicate"], EXIT_USAGE, [], False),
+        ("unknown option", ["run", config, "--speed", "3"], EXIT_USAGE, ["--speed"], False),
+        ("missing config file", ["run", missing, "--out", ctx.path("refused_out1")], None, [missing], False),
+        ("robots: 51", ["run", robots51, "--out", ctx.path("refused_out2")], EXIT_INPUT,
+         [where(robots51, robots51_line), "robots", "51", "50"], True),
+        ("robots: eight", ["run", eight, "--out", ctx.path("refused_out3")], EXIT_INPUT,
+         [where(eight, eight_line), "robots", "'eight'"], True),
+        ("overlapping initial poses", ["run", overlap, "--out", ctx.path("refused_out4")], EXIT_INPUT,
+         [where(overlap, overlap_line), "initial_poses[1]", "robots 0 and 1", "collision"], True),
+        ("pose outside the arena", ["run", outside, "--out", ctx.path("refused_out5")], EXIT_INPUT,
+         [where(outside, outside_line), "initial_poses[1]", "1.900", "outside the arena"], True),
+        ("unknown controller kind", ["run", kind, "--out", ctx.path("refused_out6")], EXIT_INPUT,
+         [where(kind, kind_line), "controller.kind", "'go_to_gaol'", "go_to_goal"], True),
+        ("top-level key typo", ["run", typo, "--out", ctx.path("refused_out7")], EXIT_INPUT,
+         [where(typo, typo_line), "stop_when_dnoe", "unknown key", "stop_when_done"], True),
+        ("unknown world mode", ["run", mode, "--out", ctx.path("refused_out8")], EXIT_INPUT,
+         [where(mode, mode_line), "world.mode", "'fast'", "lockstep"], True),
+        ("negative agent timeout", ["run", timeout, "--out", ctx.path("refused_out9")], EXIT_INPUT,
+         [timeout + ":", "agent_timeout_s", "-1"], True),
+        ("too few goals", ["run", goals, "--out", ctx.path("refused_out10")], EXIT_INPUT,
+         [goals + ":", "controller.goals", "(8)", "got 7"], True),
+        ("invalid YAML", ["run", bad_yaml, "--out", ctx.path("refused_out11")], EXIT_INPUT,
+         [bad_yaml + ":", "not valid YAML"], True),
+        ("launch with an unknown controller kind", ["launch", launch_kind, "--out", ctx.path("refused_out_launch")],
+         EXIT_INPUT, [launch_kind + ":", "controller.kind", "'go_to_gaol'"], True),
+        ("agent config error", ["agent", robots51], EXIT_INPUT, [where(robots51, robots51_line), "robots"], True),
+        ("--out under a missing folder", ["run", config, "--out", no_parent], EXIT_INPUT,
+         [no_parent, "does not exist"], False),
+        ("--robots out of range", ["agent", config, "--robots", "9"], EXIT_INPUT, ["--robots", "'9'", "0..7"], False),
+        ("--robots backwards range", ["agent", config, "--robots", "5-2"], EXIT_INPUT, ["--robots", "5-2"], False),
+        ("--lcm-url without provider", ["run", config, "--lcm-url", "bogus", "--out", ctx.path("refused_out12")], EXIT_INPUT,
+         ["'bogus'", "memq://"], False),
+        ("log info on a text file", ["log", "info", not_log], EXIT_INPUT, [not_log, "not an LCM log"], False),
+        ("log info on a truncated log", ["log", "info", truncated], EXIT_INPUT,
+         [truncated, "cut short", f"after event {kept_events}"], False),
+        ("log diff with a truncated log", ["log", "diff", truncated, truncated], EXIT_INPUT,
+         [truncated, "cut short"], False),
+    ]
+
+    problems = []
+    for name, argv, expected_code, fragments, config_error in cases:
+        code, text = ctx.run([dream] + argv, timeout=20)
+        lines = [line for line in text.strip().splitlines() if line.strip()]
+        first = lines[0] if lines else ""
+        if expected_code is None:
+            if code in (0, 130) or code >= 128:
+                problems.append(f"{name}: exit {code}, expected a non-zero input/usage error")
+        elif code != expected_code:
+            problems.append(f"{name}: exit {code}, expected {expected_code} ({first!r})")
+        if code >= 128:
+            problems.append(f"{name}: dream died from signal {code - 128}")
+        missing_fragments = [f for f in fragments if f not in first]
+        if missing_fragments:
+            problems.append(f"{name}: message {first!r} lacks {missing_fragments}")
+        if config_error and len(lines) != 1:
+            problems.append(f"{name}: expected a one-line error, got {len(lines)} lines: {lines[:3]}")
+        if not lines:
+            problems.append(f"{name}: no message at all")
+        if config_error and any(os.path.exists(a) for a in argv if a.startswith(ctx.path("refused_out"))):
+            problems.append(f"{name}: the refused run created its output folder")
+        print(f"{name}: exit {code}: {first}")
+    check(not problems, "; ".join(problems))
+
+
+if __name__ == "__main__":
+    main(test)

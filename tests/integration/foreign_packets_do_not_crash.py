@@ -1,0 +1,164 @@
+#!/usr/bin/python3
+"""foreign_packets_do_not_crash: garbage and hostile commands on the bus are refused and counted,
+never fatal.
+
+In a private network namespace: `dream sim` (lockstep, 150 steps, no early stop) and
+`dream agent --robots 0,1,3-7`; this script itself drives robot 2 over raw udpm (it answers every
+DREAM_POSES with v = 0.02 m/s), so it can send robot 2 a NaN command for exactly one step. At
+step 10 it also sends, once each:
+  - bytes that are no LCM type, on DREAM_CMD_3
+  - a robot_poses_t (a foreign type) on DREAM_CMD_x
+  - a velocity_command_t for robot 99 on DREAM_CMD_99
+  - a velocity_command_t claiming robot 4 on DREAM_CMD_5
+  - a command for robot 3 from a second agent id
+  - a truncated velocity_command_t on DREAM_CMD_4, an empty message on DREAM_CMD_6
+  - garbage on DREAM_POSES and DREAM_STATUS (the agents' inputs)
+  - a datagram that is not LCM at all, and a malformed LCM fragment
+The run must finish (exit 0 or 3), every agent process too (exit 0), nobody may be lost; the
+summary must count the 4 rejected commands and name each bad channel in bad_messages; robot 2 must
+hold still in the step of its NaN command; the log must stay readable and hold the foreign
+command-channel messages.
+
+Usage: netns.sh foreign_packets_do_not_crash.py --dream BIN --source DIR --types-dir DIR
+"""
+
+import argparse
+import math
+import os
+import struct
+import time
+
+from dreamtest import Udpm, check, config_with, import_types, main, read_events, read_summary, require_private_netns
+
+OUR_AGENT_ID = 0x0D1E5E1F0D1E5E1F
+STRANGER_AGENT_ID = 0x5757575757575757
+INJECT_AT_STEP = 10
+NAN_AT_STEP = 20
+STEPS = 150
+
+
+def command(dream, step, robot_id, v, w=0.0, agent_id=OUR_AGENT_ID):
+    message = dream.velocity_command_t()
+    message.utime = step * 33000
+    message.step = step
+    message.robot_id = robot_id
+    message.agent_id = agent_id
+    message.v = v
+    message.w = w
+    message.done = False
+    return message.encode()
+
+
+def inject(bus, dream, step):
+    """Sends every foreign message once; returns {channel: what} the sim must count as bad."""
+    poses = dream.robot_poses_t()
+    poses.num_robots = 1
+    poses.x, poses.y, poses.theta = [0.0], [0.0], [0.0]
+    bus.publish("DREAM_CMD_3", b"\xde\xad\xbe\xef not an LCM message at all")
+    bus.publish("DREAM_CMD_x", poses.encode())
+    bus.publish("DREAM_CMD_99", command(dream, step, 99, 0.1))
+    bus.publish("DREAM_CMD_5", command(dream, step, 4, 0.1))
+    bus.publish("DREAM_CMD_3", command(dream, step, 3, 0.1, agent_id=STRANGER_AGENT_ID))
+    bus.publish("DREAM_CMD_4", command(dream, step, 4, 0.1)[:20])
+    bus.publish("DREAM_CMD_6", b"")
+    bus.publish("DREAM_POSES", b"\x00" * 40)
+    bus.publish("DREAM_STATUS", os.urandom(64))
+    bus.send_raw(b"hello, this is no LCM packet")
+    # A fragment header (magic LC03) announcing an absurd message and fragment count.
+    bus.send_raw(struct.pack(">IIIIHH", 0x4C433033, 7, 0x7FFFFFFF, 0x7FFFFFF0, 3, 2) + b"DREAM_CMD_1\0junk")
+    return {"DREAM_CMD_3", "DREAM_CMD_x", "DREAM_CMD_99", "DREAM_CMD_5", "DREAM_CMD_4", "DREAM_CMD_6"}
+
+
+def drive_robot_2(ctx, bus, dream, sim):
+    """Answers DREAM_POSES for robot 2 until the world finishes; injects the foreign messages."""
+    bad_channels, injected, nan_sent = set(), False, False
+    deadline = time.monotonic() + 30
+    while time.monotonic() < deadline:
+        check(sim.poll() is None or sim.returncode in (0, 3),
+              f"dream sim exited {sim.returncode} while the foreign packets were on the bus")
+        if sim.poll() is not None:
+            break
+        received = bus.receive(0.2)
+        if received is None:
+            continue
+        channel, payload = received
+        if channel == "DREAM_STATUS":
+            try:
+                status = dream.run_status_t.decode(payload)
+            except Exception:
+                continue  # our own garbage
+            if status.state in (dream.run_status_t.FINISHED, dream.run_status_t.ABORTED):
+                break
+        if channel != "DREAM_POSES":
+            continue
+        try:
+            poses = dream.robot_poses_t.decode(payload)
+        except Exception:
+            continue  # our own garbage
+        if poses.step == INJECT_AT_STEP and not injected:
+            bad_channels = inject(bus, dream, poses.step)
+            injected = True
+        if poses.step == NAN_AT_STEP:
+            if not nan_sent:
+                bus.publish("DREAM_CMD_2", command(dream, poses.step, 2, math.nan))
+                nan_sent = True
+            continue
+        bus.publish("DREAM_CMD_2", command(dream, poses.step, 2, 0.02))
+    check(injected and nan_sent, f"the run ended before step {NAN_AT_STEP}: nothing was injected")
+    return bad_channels
+
+
+def test(ctx):
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--dream", required=True)
+    parser.add_argument("--source", required=True)
+    parser.add_argument("--types-dir", required=True)
+    args = parser.parse_args()
+    require_private_netns()
+    dream = import_types(args.types_dir)
+    config = config_with(os.path.join(args.source, "config", "go_to_goal.yaml"), ctx.path("foreign.yaml"),
+                         steps=STEPS, stop_when_done=False, start_timeout_s=10)
+    out = ctx.path("run")
+
+    bus = Udpm(receive=True)
+    sim = ctx.start("sim", [args.dream, "sim", config, "--out", out])
+    ctx.start("agents", [args.dream, "agent", config, "--robots", "0,1,3-7"])
+    try:
+        bad_channels = drive_robot_2(ctx, bus, dream, sim)
+    finally:
+        bus.close()
+
+    sim_code = ctx.wait("sim", timeout=20)
+    check(sim_code in (0, 3), f"dream sim exited {sim_code}, expected 0 or 3")
+    code = ctx.wait("agents", timeout=10)
+    check(code == 0, f"dream agent exited {code} after the foreign packets, expected 0")
+    summary = read_summary(out)
+    check(summary["end"] == "finished" and summary["steps"] == STEPS,
+          f"summary end {summary['end']!r} after {summary['steps']} steps ({summary['reason']})")
+    check(summary["robots_ever_lost"] == [], f"robots lost: {summary['robots_ever_lost']}")
+    # Refused commands: robot 99, robot_id 4 on DREAM_CMD_5, the stranger on robot 3, NaN on robot 2.
+    check(summary["rejected_commands"] == 4, f"rejected_commands is {summary['rejected_commands']}, expected 4")
+    bad = summary["bad_messages"]
+    missing = sorted((bad_channels | {"DREAM_CMD_2"}) - set(bad))
+    check(not missing, f"bad_messages {bad} lacks {missing}")
+    check(not set(bad) - bad_channels - {"DREAM_CMD_2"}, f"bad_messages names unexpected channels: {bad}")
+
+    log = os.path.join(out, "run.lcmlog")
+    code, text = ctx.run([args.dream, "log", "info", log])
+    check(code == 0, f"dream log info refuses the log: {text.strip()}")
+    for channel in ["DREAM_CMD_x", "DREAM_CMD_99"]:
+        check(channel in text, f"the log does not hold the foreign messages on {channel}")
+    robot_2 = {}
+    for event in read_events(log):
+        if event.channel == "DREAM_POSES":
+            poses = dream.robot_poses_t.decode(event.data)
+            robot_2[poses.step] = (poses.x[2], poses.y[2], poses.theta[2])
+    check(robot_2[NAN_AT_STEP + 1] == robot_2[NAN_AT_STEP],
+          f"robot 2 moved in the step of its NaN command: {robot_2[NAN_AT_STEP]} -> {robot_2[NAN_AT_STEP + 1]}")
+    check(robot_2[NAN_AT_STEP] != robot_2[NAN_AT_STEP - 1],
+          "robot 2 did not move under its (Python) agent's commands before the NaN step")
+    print(f"{summary['rejected_commands']} commands rejected, bad messages {bad}, sim exit {sim_code}")
+
+
+if __name__ == "__main__":
+    main(test)
