@@ -58,9 +58,9 @@ int RunAgents(const AgentArgs& args) {
   const config::RunConfig config = config::LoadRunConfigFile(args.config_path);
   const std::vector<int> ids = ParseRobotList(args.robots, config.num_robots);
   lcm::LcmBus bus(lcm::ResolveLcmUrl(args.lcm_url));
-  const agents::ControllerFactory factory(config.controller, config.num_robots);
-  std::vector<agents::HostedRobot> robots;
-  for (int id : ids) robots.push_back({id, factory.Make(id)});
+  const agents::ControllerFactory factory(config.controller, config.num_robots, config.seed);
+  std::vector<std::unique_ptr<agents::RobotAgent>> robots;
+  for (int id : ids) robots.push_back(factory.Make(id));
   agents::AgentHost host(bus, std::move(robots), NewAgentId());
   spdlog::info("agent for robot(s) {} of {} on {}", args.robots, config.name, bus.url());
   const bool ended_by_world = host.Run(StopFlag(), args.idle_timeout_s);

@@ -3,9 +3,15 @@
 #include <spdlog/spdlog.h>
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <iostream>
 
 #include "dream/agents/controller_factory.h"
+#include "dream/lcm/channels.h"
+#include "dream/lcm/lcm_typed.h"
+#include "dream/lcm/log_reader.h"
+#include "dream/obstacles_t.hpp"
+#include "dream/robot_poses_t.hpp"
 #include "dream/sim/atomic_file.h"
 #include "dream/sim/run_recorder.h"
 #include "dream/sim/run_report.h"
@@ -15,6 +21,48 @@
 #include "dream/sim/unicycle_world.h"
 
 namespace dream::cli {
+
+nlohmann::ordered_json ExperimentMetricsJson(const config::RunConfig& config, const std::string& log_path) {
+  const agents::ControllerFactory factory(config.controller, config.num_robots, config.seed);
+  std::vector<std::unique_ptr<agents::ExperimentMetrics>> metrics = factory.MakeMetrics();
+  agents::WorldSnapshot world;
+  lcm::LogReader reader(log_path);
+  lcm::LogRecord record;
+  while (reader.Next(&record)) {
+    const int size = static_cast<int>(record.data.size());
+    if (record.channel == lcm::kObstaclesChannel) {
+      obstacles_t obstacles;
+      if (!lcm::Decode(record.data.data(), size, &obstacles)) continue;
+      world.obstacles.clear();
+      for (const rectangle_obstacle_t& o : obstacles.obstacles) {
+        world.obstacles.push_back({o.id, {o.center_x, o.center_y}, {o.width, o.height}, {o.vx, o.vy}});
+      }
+    } else if (record.channel == lcm::kPosesChannel) {
+      robot_poses_t poses;
+      if (!lcm::Decode(record.data.data(), size, &poses)) continue;
+      world.step = poses.step;
+      world.poses.resize(poses.x.size());
+      world.velocities.resize(poses.x.size());
+      for (size_t i = 0; i < poses.x.size(); ++i) {
+        world.poses[i] = {poses.x[i], poses.y[i], poses.theta[i]};
+        world.velocities[i] = {poses.v[i], poses.w[i]};
+      }
+      for (auto& m : metrics) m->Observe(world);
+    }
+  }
+  agents::MetricsReport report;
+  for (const auto& m : metrics) m->Write(&report);
+  nlohmann::ordered_json json;
+  json["kind"] = factory.kind();
+  for (const auto& [name, value] : report.values) json[name] = value;
+  for (const auto& [name, steps] : report.steps) json[name] = steps;
+  for (const auto& [name, series] : report.series) {
+    nlohmann::json points = nlohmann::json::array();
+    for (const auto& [step, value] : series) points.push_back({step, value});
+    json[name] = points;
+  }
+  return json;
+}
 
 config::RunConfig LoadConfig(const RunArgs& args) {
   config::RunConfig config = config::LoadRunConfigFile(args.config_path);
@@ -26,7 +74,7 @@ config::RunConfig LoadConfig(const RunArgs& args) {
   if (args.all_steps) config.sim.stop_when_done = false;
   // Check the controller section now, so a mistake in it stops every command
   // (sim, launch) before anything starts or any folder is made.
-  agents::ControllerFactory(config.controller, config.num_robots);
+  agents::ControllerFactory(config.controller, config.num_robots, config.seed);
   return config;
 }
 
@@ -62,7 +110,10 @@ int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std:
     outcome = node.Run(StopFlag());
     recorder.Close();
   }
-  sim::WriteFileAtomically(out_dir + "/summary.json", sim::RunSummaryJson(config, outcome, world, "run.lcmlog"));
+  nlohmann::ordered_json summary =
+      nlohmann::ordered_json::parse(sim::RunSummaryJson(config, outcome, world, "run.lcmlog"));
+  summary["metrics"] = ExperimentMetricsJson(config, log_path);
+  sim::WriteFileAtomically(out_dir + "/summary.json", summary.dump(2) + "\n");
 
   const sim::RunReport report = sim::RunReport::FromViolations(world.step(), world.violations());
   spdlog::info("{} after {} steps ({:.1f} s simulated, {:.2f} s wall): {}", sim::EndName(outcome.end),

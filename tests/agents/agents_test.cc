@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "dream/agents/actuator_limits.h"
-#include "dream/agents/go_to_goal_controller.h"
+#include "dream/agents/go_to_goal_robot.h"
 #include "dream/agents/single_integrator_to_unicycle.h"
 
 namespace dream::agents {
@@ -61,39 +61,42 @@ TEST(SingleIntegratorToUnicycleTest, MatchesTheRobotariumMapping) {
   EXPECT_THROW(SingleIntegratorToUnicycle(1.0, -1.0), std::invalid_argument);
 }
 
-TEST(GoToGoalControllerTest, DrivesTowardTheGoalAndReportsDoneWithinTolerance) {
+/// Feeds a robot its exact pose as odometry.
+void See(Robot& robot, const Eigen::Vector3d& pose) { robot.OnOdometry({0, pose}); }
+
+TEST(GoToGoalRobotTest, DrivesTowardTheGoalAndReportsDoneWithinTolerance) {
   GoToGoalParams params;
   params.goal_m = {1.0, 0.0};
-  GoToGoalController controller(params);
-  ControllerInput input;
-  input.own_pose = {0.0, 0.0, 0.0};
-  ControllerOutput out = controller.Step(input);
-  EXPECT_FALSE(out.done);
-  EXPECT_NEAR(out.command.v_mps, 0.15, 1e-12);  // capped at max_speed
-  EXPECT_NEAR(out.command.w_radps, 0.0, 1e-12);
-  input.own_pose = {0.99, 0.0, 2.0};
-  out = controller.Step(input);
-  EXPECT_TRUE(out.done);
-  EXPECT_EQ(out.command.v_mps, 0.0);
+  GoToGoalRobot robot(0, RobotParams{}, params);
+  // Before any odometry it does not know where it is, so it holds still.
+  UnicycleCommand command = robot.Update(0);
+  EXPECT_EQ(command.v_mps, 0.0);
+  See(robot, {0.0, 0.0, 0.0});
+  command = robot.Update(1);
+  EXPECT_FALSE(robot.done());
+  EXPECT_NEAR(command.v_mps, 0.15, 1e-12);  // capped at max_speed
+  EXPECT_NEAR(command.w_radps, 0.0, 1e-12);
+  See(robot, {0.99, 0.0, 2.0});
+  command = robot.Update(2);
+  EXPECT_TRUE(robot.done());
+  EXPECT_EQ(command.v_mps, 0.0);
 }
 
-TEST(GoToGoalControllerTest, ReachesItsGoalUnderUnicycleKinematics) {
+TEST(GoToGoalRobotTest, ReachesItsGoalUnderUnicycleKinematics) {
   GoToGoalParams params;
   params.goal_m = {-0.4, 0.3};
-  GoToGoalController controller(params);
-  ControllerInput input;
-  input.own_pose = {0.5, -0.2, 2.5};
-  bool done = false;
-  for (int step = 0; step < 2000 && !done; ++step) {
-    const ControllerOutput out = controller.Step(input);
-    done = out.done;
-    EXPECT_LE(FastestWheel(out.command), 12.5 + 1e-9);
-    input.own_pose.x() += 0.033 * out.command.v_mps * std::cos(input.own_pose.z());
-    input.own_pose.y() += 0.033 * out.command.v_mps * std::sin(input.own_pose.z());
-    input.own_pose.z() += 0.033 * out.command.w_radps;
+  GoToGoalRobot robot(0, RobotParams{}, params);
+  Eigen::Vector3d pose(0.5, -0.2, 2.5);
+  for (int step = 0; step < 2000 && !robot.done(); ++step) {
+    See(robot, pose);
+    const UnicycleCommand command = robot.Update(step);
+    EXPECT_LE(FastestWheel(command), 12.5 + 1e-9);
+    pose.x() += 0.033 * command.v_mps * std::cos(pose.z());
+    pose.y() += 0.033 * command.v_mps * std::sin(pose.z());
+    pose.z() += 0.033 * command.w_radps;
   }
-  EXPECT_TRUE(done);
-  EXPECT_LE((input.own_pose.head<2>() - params.goal_m).norm(), params.tolerance_m);
+  EXPECT_TRUE(robot.done());
+  EXPECT_LE((pose.head<2>() - params.goal_m).norm(), params.tolerance_m);
 }
 
 TEST(GoToGoalParamsTest, InvalidParamsNameTheField) {
@@ -106,7 +109,7 @@ TEST(GoToGoalParamsTest, InvalidParamsNameTheField) {
   params.tolerance_m = 0;
   EXPECT_FALSE(params.IsValid(&error));
   EXPECT_NE(error.find("tolerance_m"), std::string::npos);
-  EXPECT_THROW(GoToGoalController{params}, std::invalid_argument);
+  EXPECT_THROW(GoToGoalRobot(0, RobotParams{}, params), std::invalid_argument);
 }
 
 }  // namespace

@@ -53,7 +53,7 @@ def inject(bus, dream, step):
     """Sends every foreign message once; returns {channel: what} the sim must count as bad."""
     poses = dream.robot_poses_t()
     poses.num_robots = 1
-    poses.x, poses.y, poses.theta = [0.0], [0.0], [0.0]
+    poses.x, poses.y, poses.theta, poses.v, poses.w = [0.0], [0.0], [0.0], [0.0], [0.0]
     bus.publish("DREAM_CMD_3", b"\xde\xad\xbe\xef not an LCM message at all")
     bus.publish("DREAM_CMD_x", poses.encode())
     bus.publish("DREAM_CMD_99", command(dream, step, 99, 0.1))

@@ -8,45 +8,119 @@
 
 #include "dream/lcm/channels.h"
 #include "dream/lcm/lcm_typed.h"
+#include "dream/obstacles_t.hpp"
 #include "dream/robot_poses_t.hpp"
 
 namespace dream::agents {
 
-AgentHost::AgentHost(lcm::LcmInterface& lcm, std::vector<HostedRobot> robots, int64_t agent_id)
+AgentHost::AgentHost(lcm::LcmInterface& lcm, std::vector<std::unique_ptr<RobotAgent>> agents, int64_t agent_id)
     : lcm_(lcm), agent_id_(agent_id) {
   std::set<int> ids;
-  for (HostedRobot& robot : robots) {
-    if (!ids.insert(robot.robot_id).second) {
-      throw std::invalid_argument("robot " + std::to_string(robot.robot_id) +
-                                  " is listed twice for one agent host");
+  for (std::unique_ptr<RobotAgent>& agent : agents) {
+    if (!ids.insert(agent->id()).second) {
+      throw std::invalid_argument("robot " + std::to_string(agent->id()) + " is listed twice for one agent host");
     }
     RobotSlot slot;
-    slot.robot_id = robot.robot_id;
-    slot.channel = lcm::CommandChannel(robot.robot_id);
-    slot.controller = std::move(robot.controller);
+    slot.command_channel = lcm::CommandChannel(agent->id());
+    slot.radio_channel = lcm::RadioChannel(agent->id());
+    slot.agent = std::move(agent);
     robots_.push_back(std::move(slot));
   }
+  // LCM dispatches in arrival order, and a neighbour sends its radio message
+  // of step k before its command, which the world needs before it publishes
+  // step k + 1: so the mailbox holds it by the time we act on step k + 1.
+  lcm::Subscribe<radio_message_t>(
+      lcm_, lcm::kRadioChannelRegex,
+      [this](const std::string& channel, const radio_message_t& message) { OnRadio(channel, message); },
+      bad_messages_);
+  lcm::Subscribe<obstacles_t>(
+      lcm_, lcm::kObstaclesChannel,
+      [this](const std::string& channel, const obstacles_t& obstacles) { OnObstacles(channel, obstacles); },
+      bad_messages_);
   lcm::Subscribe<robot_poses_t>(
       lcm_, lcm::kPosesChannel,
-      [this](const std::string& channel, const robot_poses_t& poses) { OnPoses(channel, poses); },
-      bad_messages_);
+      [this](const std::string& channel, const robot_poses_t& poses) { OnPoses(channel, poses); }, bad_messages_);
   lcm::Subscribe<run_status_t>(
       lcm_, lcm::kStatusChannel,
       [this](const std::string& channel, const run_status_t& status) { OnStatus(channel, status); },
       bad_messages_);
 }
 
-void AgentHost::OnPoses(const std::string& channel, const robot_poses_t& poses) {
-  saw_poses_since_check_ = true;
-  if (poses.num_robots < 0 || poses.x.size() != static_cast<size_t>(poses.num_robots) || poses.step < 0) {
-    bad_messages_.Report(channel, "inconsistent robot_poses_t (num_robots " +
-                                      std::to_string(poses.num_robots) + ", step " +
-                                      std::to_string(poses.step) + ")");
+void AgentHost::OnObstacles(const std::string& channel, const obstacles_t& obstacles) {
+  if (obstacles.num_obstacles < 0 || obstacles.obstacles.size() != static_cast<size_t>(obstacles.num_obstacles)) {
+    bad_messages_.Report(channel, "inconsistent obstacles_t");
+    return;
+  }
+  world_.obstacles.clear();
+  for (const rectangle_obstacle_t& o : obstacles.obstacles) {
+    ObstacleView view{o.id, {o.center_x, o.center_y}, {o.width, o.height}, {o.vx, o.vy}};
+    if (!view.center_m.allFinite() || !view.size_m.allFinite() || !view.velocity_mps.allFinite()) {
+      bad_messages_.Report(channel, "non-finite obstacle " + std::to_string(o.id));
+      continue;
+    }
+    world_.obstacles.push_back(view);
+  }
+}
+
+void AgentHost::OnRadio(const std::string& channel, const radio_message_t& message) {
+  const std::optional<int> sender = lcm::RobotIdFromChannel(channel, lcm::kRadioChannelPrefix);
+  if (!sender || *sender != message.sender_id || message.payload_size < 0 ||
+      message.payload.size() != static_cast<size_t>(message.payload_size)) {
+    bad_messages_.Report(channel, "radio message does not match its channel or payload size");
     return;
   }
   for (RobotSlot& robot : robots_) {
-    if (robot.robot_id >= poses.num_robots) {
-      bad_messages_.Report(channel, "robot " + std::to_string(robot.robot_id) +
+    robot.agent->Receive(RadioMessage{message.sender_id, message.step, message.payload});
+  }
+}
+
+void AgentHost::Answer(RobotSlot& robot, const robot_poses_t& poses) {
+  const RobotAgent::Output output = robot.agent->Step(world_);
+  velocity_command_t& command = robot.last_command;
+  command.utime = poses.utime;
+  command.step = poses.step;
+  command.robot_id = robot.agent->id();
+  command.agent_id = agent_id_;
+  command.v = output.command.v_mps;
+  command.w = output.command.w_radps;
+  command.done = output.done;
+  robot.last_radio.reset();
+  if (output.broadcast) {
+    radio_message_t radio{};
+    radio.utime = poses.utime;
+    radio.step = poses.step;
+    radio.sender_id = robot.agent->id();
+    radio.agent_id = agent_id_;
+    radio.payload = output.broadcast->payload;
+    radio.payload_size = static_cast<int32_t>(radio.payload.size());
+    robot.last_radio = std::move(radio);
+  }
+  robot.answered_step = poses.step;
+  last_step_answered_ = std::max(last_step_answered_, poses.step);
+}
+
+void AgentHost::OnPoses(const std::string& channel, const robot_poses_t& poses) {
+  saw_poses_since_check_ = true;
+  const auto n = static_cast<size_t>(poses.num_robots);
+  if (poses.num_robots < 0 || poses.step < 0 || poses.x.size() != n || poses.v.size() != n) {
+    bad_messages_.Report(channel, "inconsistent robot_poses_t (num_robots " + std::to_string(poses.num_robots) +
+                                      ", step " + std::to_string(poses.step) + ")");
+    return;
+  }
+  world_.step = poses.step;
+  world_.poses.resize(n);
+  world_.velocities.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    world_.poses[i] = {poses.x[i], poses.y[i], poses.theta[i]};
+    world_.velocities[i] = {poses.v[i], poses.w[i]};
+    if (!world_.poses[i].allFinite() || !world_.velocities[i].allFinite()) {
+      bad_messages_.Report(channel, "non-finite pose or velocity for robot " + std::to_string(i));
+      return;
+    }
+  }
+  for (RobotSlot& robot : robots_) {
+    if (robot.agent->id() >= poses.num_robots) {
+      bad_messages_.Report(channel, "robot " + std::to_string(robot.agent->id()) +
                                         " is not in this run: DREAM_POSES carries " +
                                         std::to_string(poses.num_robots) + " robots");
       continue;
@@ -55,28 +129,9 @@ void AgentHost::OnPoses(const std::string& channel, const robot_poses_t& poses) 
     // duplicate. Anything further back is authoritative: a restarted world,
     // or recovery after a stray message with a bogus future step.
     if (poses.step == robot.answered_step - 1) continue;
-    if (poses.step != robot.answered_step) {
-      const auto i = static_cast<size_t>(robot.robot_id);
-      ControllerInput input;
-      input.step = poses.step;
-      input.own_pose = Eigen::Vector3d(poses.x[i], poses.y[i], poses.theta[i]);
-      if (!input.own_pose.allFinite()) {
-        bad_messages_.Report(channel, "non-finite pose for robot " + std::to_string(robot.robot_id));
-        continue;
-      }
-      const ControllerOutput output = robot.controller->Step(input);
-      velocity_command_t& command = robot.last_command;
-      command.utime = poses.utime;
-      command.step = poses.step;
-      command.robot_id = robot.robot_id;
-      command.agent_id = agent_id_;
-      command.v = output.command.v_mps;
-      command.w = output.command.w_radps;
-      command.done = output.done;
-      robot.answered_step = poses.step;
-      last_step_answered_ = std::max(last_step_answered_, poses.step);
-    }
-    lcm::Publish(lcm_, robot.channel, robot.last_command);
+    if (poses.step != robot.answered_step) Answer(robot, poses);
+    if (robot.last_radio) lcm::Publish(lcm_, robot.radio_channel, *robot.last_radio);
+    lcm::Publish(lcm_, robot.command_channel, robot.last_command);
   }
 }
 

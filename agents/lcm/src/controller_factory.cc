@@ -1,59 +1,85 @@
 #include "dream/agents/controller_factory.h"
 
+#include <functional>
+#include <initializer_list>
 #include <stdexcept>
 
-#include "dream/agents/go_to_goal_controller.h"
+#include "dream/agents/go_to_goal_builder.h"
+#include "dream/agents/noise_source.h"
+#include "dream/agents/safety_metrics.h"
 
 namespace dream::agents {
 namespace {
 
-std::string JoinKinds() {
-  std::string list;
-  for (const std::string& kind : ControllerFactory::Kinds()) list += (list.empty() ? "" : ", ") + kind;
-  return list;
-}
+/// What an experiment kind brings: its own keys, its default parts, and how
+/// to construct its builder.
+struct KindEntry {
+  const char* kind;
+  std::vector<const char*> keys;
+  std::function<AgentPartsConfig(int num_robots)> defaults;
+  bool graph_must_connect;
+  std::function<std::unique_ptr<ExperimentBuilder>(const config::ConfigNode&, int num_robots)> make;
+};
 
-GoToGoalParams ReadGoToGoal(const config::ConfigNode& section, int robot_id) {
-  GoToGoalParams params;
-  const config::ConfigNode goals = section.Required("goals");
-  const config::ConfigNode goal = goals[static_cast<size_t>(robot_id)];
-  const std::vector<double> xy = goal.AsDoubles();
-  if (xy.size() != 2) goal.Fail("expected [x, y] in metres, got " + std::to_string(xy.size()) + " numbers");
-  params.goal_m = Eigen::Vector2d(xy[0], xy[1]);
-  params.gain = section.GetDouble("gain", params.gain);
-  params.max_speed_mps = section.GetDouble("max_speed_mps", params.max_speed_mps);
-  params.tolerance_m = section.GetDouble("tolerance_m", params.tolerance_m);
-  std::string error;
-  if (!params.IsValid(&error)) section.Fail(error);
-  return params;
+const std::vector<KindEntry>& Registry() {
+  static const std::vector<KindEntry> registry = {
+      {GoToGoalBuilder::kKind, GoToGoalBuilder::Keys(), AgentPartsConfig::Defaults, false,
+       [](const config::ConfigNode& s, int n) { return std::make_unique<GoToGoalBuilder>(s, n); }},
+  };
+  return registry;
 }
 
 }  // namespace
 
-std::vector<std::string> ControllerFactory::Kinds() { return {"go_to_goal"}; }
-
-ControllerFactory::ControllerFactory(const config::ConfigNode& section, int num_robots)
-    : section_(section), num_robots_(num_robots) {
-  kind_ = section_.Required("kind").AsString();
-  if (kind_ == "go_to_goal") {
-    section_.RejectUnknownKeys({"kind", "goals", "gain", "max_speed_mps", "tolerance_m"});
-    const config::ConfigNode goals = section_.Required("goals");
-    if (!goals.IsSequence() || goals.size() != static_cast<size_t>(num_robots_)) {
-      goals.Fail("expected one [x, y] goal per robot (" + std::to_string(num_robots_) + "), got " +
-                 (goals.IsSequence() ? std::to_string(goals.size()) : std::string("no list")));
-    }
-    for (int id = 0; id < num_robots_; ++id) ReadGoToGoal(section_, id);  // validate all up front
-    return;
-  }
-  section_.Required("kind").Fail("unknown controller kind '" + kind_ + "'; known kinds: " + JoinKinds());
+std::vector<std::string> ControllerFactory::Kinds() {
+  std::vector<std::string> kinds;
+  for (const KindEntry& entry : Registry()) kinds.emplace_back(entry.kind);
+  return kinds;
 }
 
-std::unique_ptr<Controller> ControllerFactory::Make(int robot_id) const {
+ControllerFactory::ControllerFactory(const config::ConfigNode& section, int num_robots, uint64_t run_seed)
+    : num_robots_(num_robots), run_seed_(run_seed) {
+  kind_ = section.Required("kind").AsString();
+  for (const KindEntry& entry : Registry()) {
+    if (kind_ != entry.kind) continue;
+    std::vector<const char*> keys = {"kind", "robot", "sensors", "radio"};
+    keys.insert(keys.end(), entry.keys.begin(), entry.keys.end());
+    // RejectUnknownKeys takes an initializer list; check by hand to reuse its message.
+    for (const std::string& key : section.Keys()) {
+      bool known = false;
+      std::string allowed;
+      for (const char* k : keys) {
+        known = known || key == k;
+        allowed += (allowed.empty() ? "" : ", ") + std::string(k);
+      }
+      if (!known) section.Optional(key).Fail("unknown key for kind " + kind_ + "; allowed keys here: " + allowed);
+    }
+    parts_ = AgentPartsConfig::Read(section, num_robots, entry.defaults(num_robots), entry.graph_must_connect);
+    builder_ = entry.make(section, num_robots);
+    return;
+  }
+  std::string known;
+  for (const std::string& kind : Kinds()) known += (known.empty() ? "" : ", ") + kind;
+  section.Required("kind").Fail("unknown controller kind '" + kind_ + "'; known kinds: " + known);
+}
+
+ControllerFactory::~ControllerFactory() = default;
+
+std::unique_ptr<RobotAgent> ControllerFactory::Make(int robot_id) const {
   if (robot_id < 0 || robot_id >= num_robots_) {
     throw std::out_of_range("robot " + std::to_string(robot_id) + " is not in this run (robots 0.." +
                             std::to_string(num_robots_ - 1) + ")");
   }
-  return std::make_unique<GoToGoalController>(ReadGoToGoal(section_, robot_id));
+  RobotAgentSpec spec = parts_.MakeSpec(builder_->MakeRobot(robot_id, parts_.robot), run_seed_);
+  return std::make_unique<RobotAgent>(std::move(spec),
+                                      NoiseSource::MixSeed(run_seed_, static_cast<uint64_t>(robot_id), 0));
+}
+
+std::vector<std::unique_ptr<ExperimentMetrics>> ControllerFactory::MakeMetrics() const {
+  std::vector<std::unique_ptr<ExperimentMetrics>> metrics;
+  metrics.push_back(builder_->MakeMetrics());
+  metrics.push_back(std::make_unique<SafetyMetrics>());
+  return metrics;
 }
 
 }  // namespace dream::agents

@@ -200,6 +200,12 @@ void SimNode::PublishStep(bool record) {
     poses.y.push_back(pose.y_m);
     poses.theta.push_back(pose.theta_rad);
   }
+  // After Step() the held velocities are the saturated ones the robots just
+  // drove with: what a tracker on the lab would measure.
+  for (const UnicycleCommand& velocity : world_.velocities()) {
+    poses.v.push_back(step_taken_ ? velocity.v_mps : 0.0);
+    poses.w.push_back(step_taken_ ? velocity.w_radps : 0.0);
+  }
   PublishAndRecord(lcm::kPosesChannel, poses, record);
 }
 
@@ -245,6 +251,7 @@ void SimNode::AdvanceWorld() {
     }
   }
   world_.Step();
+  step_taken_ = true;
 }
 
 void SimNode::ReportProgress(Clock::time_point now) {

@@ -20,15 +20,21 @@ inline constexpr const char* kCommandChannelPrefix = "DREAM_CMD_";
 /// LCM regex matching every command channel.
 inline constexpr const char* kCommandChannelRegex = "DREAM_CMD_.*";
 
+/// Prefix of the per-robot radio channels DREAM_RADIO_<id>; agent -> agents.
+inline constexpr const char* kRadioChannelPrefix = "DREAM_RADIO_";
+inline constexpr const char* kRadioChannelRegex = "DREAM_RADIO_.*";
+
+/// "DREAM_RADIO_<robot_id>".
+inline std::string RadioChannel(int robot_id) { return kRadioChannelPrefix + std::to_string(robot_id); }
+
 /// "DREAM_CMD_<robot_id>".
 inline std::string CommandChannel(int robot_id) {
   return kCommandChannelPrefix + std::to_string(robot_id);
 }
 
-/// The robot id encoded in a command channel name, or nothing when the
-/// suffix is not a plain non-negative decimal number.
-inline std::optional<int> RobotIdFromCommandChannel(const std::string& channel) {
-  const std::string prefix = kCommandChannelPrefix;
+/// The robot id after `prefix` in a channel name, or nothing when the suffix
+/// is not a plain non-negative decimal number.
+inline std::optional<int> RobotIdFromChannel(const std::string& channel, const std::string& prefix) {
   if (channel.rfind(prefix, 0) != 0 || channel.size() == prefix.size() ||
       channel.size() > prefix.size() + 6) {
     return std::nullopt;
@@ -39,6 +45,11 @@ inline std::optional<int> RobotIdFromCommandChannel(const std::string& channel) 
     id = id * 10 + (channel[i] - '0');
   }
   return id;
+}
+
+/// The robot id of a DREAM_CMD_<id> channel (see RobotIdFromChannel).
+inline std::optional<int> RobotIdFromCommandChannel(const std::string& channel) {
+  return RobotIdFromChannel(channel, kCommandChannelPrefix);
 }
 
 }  // namespace dream::lcm

@@ -6,66 +6,70 @@
 #include <string>
 #include <vector>
 
-#include "dream/agents/controller.h"
+#include "dream/agents/robot_agent.h"
+#include "dream/agents/world_snapshot.h"
 #include "dream/lcm/bad_message_log.h"
 #include "dream/lcm/lcm_interface.h"
+#include "dream/radio_message_t.hpp"
 #include "dream/run_status_t.hpp"
 #include "dream/velocity_command_t.hpp"
 
 namespace dream {
+class obstacles_t;
 class robot_poses_t;
-}
+}  // namespace dream
 
 namespace dream::agents {
 
-/// One robot driven by this host.
-struct HostedRobot {
-  int robot_id = 0;
-  std::unique_ptr<Controller> controller;
-};
-
-/// Runs the controllers of one or more robots against whichever world is on
-/// the bus (simulator or bridge): it never knows which.
+/// Runs the agents of one or more robots against whichever world is on the
+/// bus (simulator or bridge): it never knows which.
 ///
-/// Reads DREAM_POSES (the step trigger) and DREAM_STATUS; writes
-/// DREAM_CMD_<id> for each hosted robot. Lockstep contract: every DREAM_POSES
-/// of step k is answered with each robot's command for step k. A repeated
-/// DREAM_POSES for a step already answered (the world resends when it waits)
-/// gets the same command again, without running the controller twice, so runs
-/// stay deterministic.
+/// Reads DREAM_POSES (the step trigger), DREAM_OBSTACLES, DREAM_STATUS and
+/// every DREAM_RADIO_<id>; writes DREAM_RADIO_<id> and DREAM_CMD_<id> for each
+/// hosted robot. Lockstep contract: each DREAM_POSES of step k is answered
+/// with every hosted robot's command for step k, its radio message (if any)
+/// sent just before. A repeated DREAM_POSES for a step already answered (the
+/// world resends while it waits) gets the same messages again without running
+/// the robot twice, so runs stay deterministic. Bad messages from the world
+/// or from neighbours are counted and dropped, never fatal.
 class AgentHost {
  public:
   /// @param agent_id identifies this host to the world (two hosts may not
   ///        drive one robot); any value unique per process.
-  AgentHost(lcm::LcmInterface& lcm, std::vector<HostedRobot> robots, int64_t agent_id);
+  AgentHost(lcm::LcmInterface& lcm, std::vector<std::unique_ptr<RobotAgent>> agents, int64_t agent_id);
 
   /// Handles messages until the world reports FINISHED or ABORTED, `stop` is
   /// set, or no DREAM_POSES arrived for `idle_timeout_s` of wall time.
   /// Returns true when the world ended the run, false otherwise.
   bool Run(const std::atomic<bool>& stop, double idle_timeout_s);
 
-  /// True once DREAM_STATUS said FINISHED or ABORTED.
   bool world_finished() const { return world_finished_; }
   int64_t last_step_answered() const { return last_step_answered_; }
   const lcm::BadMessageLog& bad_messages() const { return bad_messages_; }
   const std::string& end_detail() const { return end_detail_; }
+  const RobotAgent& agent(size_t i) const { return *robots_.at(i).agent; }
 
  private:
   struct RobotSlot {
-    int robot_id = 0;
-    std::string channel;
-    std::unique_ptr<Controller> controller;
+    std::unique_ptr<RobotAgent> agent;
+    std::string command_channel;
+    std::string radio_channel;
     int64_t answered_step = -1;
     velocity_command_t last_command{};
+    std::optional<radio_message_t> last_radio;
   };
 
   void OnPoses(const std::string& channel, const robot_poses_t& poses);
+  void OnObstacles(const std::string& channel, const obstacles_t& obstacles);
   void OnStatus(const std::string& channel, const run_status_t& status);
+  void OnRadio(const std::string& channel, const radio_message_t& message);
+  void Answer(RobotSlot& robot, const robot_poses_t& poses);
 
   lcm::LcmInterface& lcm_;
   std::vector<RobotSlot> robots_;
   int64_t agent_id_;
   lcm::BadMessageLog bad_messages_;
+  WorldSnapshot world_;
   bool world_finished_ = false;
   std::string end_detail_;
   int64_t last_step_answered_ = -1;

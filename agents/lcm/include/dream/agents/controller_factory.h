@@ -4,32 +4,43 @@
 #include <string>
 #include <vector>
 
-#include "dream/agents/controller.h"
+#include "dream/agents/agent_parts_config.h"
+#include "dream/agents/experiment_builder.h"
+#include "dream/agents/robot_agent.h"
 #include "dream/config/config_node.h"
 
 namespace dream::agents {
 
-/// Builds a robot's controller from the `controller:` section of a run
-/// config. The section's `kind` names the controller; each kind reads its own
-/// keys. To add a controller, add a kind here (see docs/writing-a-controller.md).
+/// Builds every robot's agent, and the experiment's metrics, from the
+/// `controller:` section of a run config. `kind` picks the experiment; the
+/// common keys (robot, sensors, radio) pick the parts. To add an experiment,
+/// write an ExperimentBuilder and register its kind in controller_factory.cc
+/// (see docs/writing-a-controller.md).
 class ControllerFactory {
  public:
   /// Kinds this factory knows, for error messages and --help.
   static std::vector<std::string> Kinds();
 
-  /// @param section the `controller:` mapping.
-  /// @param num_robots robots in the run, to check per-robot lists.
+  /// @param run_seed seeds every sensor's noise and radio loss.
   /// @throws config::ConfigError naming the key and value when the section is
   ///         invalid or names an unknown kind.
-  ControllerFactory(const config::ConfigNode& section, int num_robots);
+  ControllerFactory(const config::ConfigNode& section, int num_robots, uint64_t run_seed);
+  ~ControllerFactory();
 
-  /// A new controller for `robot_id` (0 <= robot_id < num_robots).
-  std::unique_ptr<Controller> Make(int robot_id) const;
+  /// A new agent for `robot_id` (0 <= robot_id < num_robots).
+  std::unique_ptr<RobotAgent> Make(int robot_id) const;
+
+  /// The experiment's metrics followed by the common safety metrics.
+  std::vector<std::unique_ptr<ExperimentMetrics>> MakeMetrics() const;
+
+  const std::string& kind() const { return kind_; }
 
  private:
-  config::ConfigNode section_;
   std::string kind_;
   int num_robots_;
+  uint64_t run_seed_;
+  AgentPartsConfig parts_;
+  std::unique_ptr<ExperimentBuilder> builder_;
 };
 
 }  // namespace dream::agents

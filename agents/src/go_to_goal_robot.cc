@@ -1,4 +1,4 @@
-#include "dream/agents/go_to_goal_controller.h"
+#include "dream/agents/go_to_goal_robot.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -21,17 +21,26 @@ bool GoToGoalParams::IsValid(std::string* error) const {
   return true;
 }
 
-GoToGoalController::GoToGoalController(const GoToGoalParams& params) : params_(params) {
+namespace {
+const GoToGoalParams& Checked(const GoToGoalParams& params) {
   std::string error;
-  if (!params_.IsValid(&error)) throw std::invalid_argument(error);
+  if (!params.IsValid(&error)) throw std::invalid_argument(error);
+  return params;
 }
+}  // namespace
 
-ControllerOutput GoToGoalController::Step(const ControllerInput& input) {
-  const Eigen::Vector2d error = params_.goal_m - input.own_pose.head<2>();
-  if (error.norm() <= params_.tolerance_m) return {UnicycleCommand{}, true};
+GoToGoalRobot::GoToGoalRobot(int id, const RobotParams& robot_params, const GoToGoalParams& params)
+    : Robot(id, robot_params), params_(Checked(params)) {}
+
+UnicycleCommand GoToGoalRobot::Update(int64_t step) {
+  (void)step;
+  if (!has_odometry()) return {};
+  const Eigen::Vector2d error = params_.goal_m - pose().head<2>();
+  done_ = error.norm() <= params_.tolerance_m;
+  if (done_) return {};
   Eigen::Vector2d velocity = params_.gain * error;
   if (velocity.norm() > params_.max_speed_mps) velocity *= params_.max_speed_mps / velocity.norm();
-  return {limits_.Apply(si_to_uni_.Map(velocity, input.own_pose.z())), false};
+  return LimitActuators(si_to_uni_.Map(velocity, pose().z()));
 }
 
 }  // namespace dream::agents

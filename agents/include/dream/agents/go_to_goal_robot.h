@@ -3,13 +3,12 @@
 #include <Eigen/Core>
 #include <string>
 
-#include "dream/agents/actuator_limits.h"
-#include "dream/agents/controller.h"
+#include "dream/agents/robot.h"
 #include "dream/agents/single_integrator_to_unicycle.h"
 
 namespace dream::agents {
 
-/// Parameters of GoToGoalController.
+/// Parameters of GoToGoalRobot.
 struct GoToGoalParams {
   Eigen::Vector2d goal_m = Eigen::Vector2d::Zero();  ///< goal position, world frame
   double gain = 0.8;                  ///< proportional gain, 1/s; must be positive
@@ -20,20 +19,23 @@ struct GoToGoalParams {
   bool IsValid(std::string* error) const;
 };
 
-/// The simplest scripted controller: drive to a fixed goal. Proportional
-/// single-integrator law dxi = k (goal - p), capped at max_speed (the
-/// Robotarium's si position controller), mapped to the unicycle and limited
-/// to what the wheels can do. Stops and reports done within tolerance.
-class GoToGoalController final : public Controller {
+/// The simplest scripted robot: drive to a fixed goal, knowing only its
+/// odometry. Proportional single-integrator law dxi = k (goal - p), capped at
+/// max_speed (the Robotarium's si position controller), mapped to the unicycle
+/// as the Robotarium's si_to_uni does, limited to what the wheels can do.
+/// Stops and reports done within tolerance; holds still before its first
+/// odometry reading.
+class GoToGoalRobot final : public Robot {
  public:
   /// @throws std::invalid_argument when params are invalid.
-  explicit GoToGoalController(const GoToGoalParams& params);
-  ControllerOutput Step(const ControllerInput& input) override;
+  GoToGoalRobot(int id, const RobotParams& robot_params, const GoToGoalParams& params);
+  UnicycleCommand Update(int64_t step) override;
+  bool done() const override { return done_; }
 
  private:
   GoToGoalParams params_;
   SingleIntegratorToUnicycle si_to_uni_;
-  ActuatorLimits limits_;
+  bool done_ = false;
 };
 
 }  // namespace dream::agents

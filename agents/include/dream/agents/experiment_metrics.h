@@ -1,0 +1,20 @@
+#pragma once
+
+#include "dream/agents/metrics_report.h"
+#include "dream/agents/world_snapshot.h"
+
+namespace dream::agents {
+
+/// Computes an experiment's outcome from what the world published, step by
+/// step: the same code judges a simulated run and a run imported from the
+/// lab. Fed from a run's log after the run.
+class ExperimentMetrics {
+ public:
+  virtual ~ExperimentMetrics() = default;
+  /// Called for every step in order.
+  virtual void Observe(const WorldSnapshot& world) = 0;
+  /// Adds this experiment's figures to `report`.
+  virtual void Write(MetricsReport* report) const = 0;
+};
+
+}  // namespace dream::agents

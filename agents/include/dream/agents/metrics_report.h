@@ -1,0 +1,19 @@
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace dream::agents {
+
+/// An experiment's own outcome figures, for the run summary: named numbers
+/// and named series of (step, value). Units go in the names (min_distance_m).
+struct MetricsReport {
+  std::map<std::string, double> values;
+  std::map<std::string, std::vector<std::pair<int64_t, double>>> series;
+  std::map<std::string, std::vector<int64_t>> steps;  ///< named lists of steps (events)
+};
+
+}  // namespace dream::agents

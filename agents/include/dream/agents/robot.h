@@ -1,0 +1,77 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "dream/agents/actuator_limits.h"
+#include "dream/agents/radio_message.h"
+#include "dream/agents/robot_params.h"
+#include "dream/agents/sensor_readings.h"
+#include "dream/agents/unicycle_command.h"
+
+namespace dream::agents {
+
+/// The thesis's Robot: one robot's controller. It never sees the world; it
+/// knows only what its accessories report through the On*() callbacks, which
+/// by default keep the latest reading. Subclasses implement Update() (the
+/// control law, run when the Timer says so) and, if they talk, OnRadio().
+///
+/// Per step the RobotAgent calls, in this order and only when due: sensors
+/// (OnOdometry, OnMovement, OnObstacles), then OnRadio, then Update. (The
+/// thesis ran Update first, so a robot could act before its first odometry
+/// and think it was at (0, 0); sensing first avoids that.)
+class Robot {
+ public:
+  /// @throws std::invalid_argument when params are invalid.
+  Robot(int id, RobotParams params);
+  virtual ~Robot() = default;
+
+  int id() const { return id_; }
+
+  virtual void OnOdometry(const OdometryReading& reading);
+  virtual void OnMovement(const MovementReading& reading);
+  virtual void OnObstacles(const ObstacleReading& reading);
+
+  /// Called when the radio's period elapses, with the latest message from
+  /// each neighbour the radio can hear. Returns the payload to broadcast, or
+  /// nothing to stay silent. Default: silent.
+  virtual std::optional<std::vector<uint8_t>> OnRadio(const std::vector<RadioMessage>& heard);
+
+  /// The control law: the command for this step. Called when the Timer says
+  /// so; in between, the last command is repeated.
+  virtual UnicycleCommand Update(int64_t step) = 0;
+
+  /// True once the robot considers its task complete.
+  virtual bool done() const { return false; }
+
+  /// Radio payloads this robot could not decode (malformed neighbour messages).
+  long bad_radio_messages() const { return bad_radio_messages_; }
+
+ protected:
+  /// The thesis's dxi_to_dxu: v = k_v (c dx + s dy), w = k_w atan2(-s dx + c dy, v) / (pi/2),
+  /// with the heading from the latest odometry.
+  UnicycleCommand DxiToDxu(const Eigen::Vector2d& dxi_mps) const;
+  /// The thesis's actuator_limit (see ActuatorLimits).
+  UnicycleCommand LimitActuators(const UnicycleCommand& command) const { return actuator_limits_.Apply(command); }
+
+  const RobotParams& params() const { return params_; }
+  bool has_odometry() const { return odometry_.has_value(); }
+  /// Latest own pose; (0, 0, 0) before the first odometry reading.
+  Eigen::Vector3d pose() const { return odometry_ ? odometry_->pose : Eigen::Vector3d::Zero(); }
+  const MovementReading& movement() const { return movement_; }
+  const ObstacleReading& obstacles() const { return obstacles_; }
+  void CountBadRadioMessage() { ++bad_radio_messages_; }
+
+ private:
+  int id_;
+  RobotParams params_;
+  ActuatorLimits actuator_limits_;
+  std::optional<OdometryReading> odometry_;
+  MovementReading movement_;
+  ObstacleReading obstacles_;
+  long bad_radio_messages_ = 0;
+};
+
+}  // namespace dream::agents

@@ -1,0 +1,43 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace dream::agents {
+
+// What sensors hand a Robot. Readings carry the step they were taken at;
+// angles and positions are in the world frame, as the thesis's sensors report.
+
+/// Own pose, with the odometry's noise.
+struct OdometryReading {
+  int64_t step = 0;
+  Eigen::Vector3d pose = Eigen::Vector3d::Zero();  ///< x m, y m, theta rad
+};
+
+/// One neighbour seen by a MovementSensor.
+struct NeighbourDetection {
+  double distance_m = 0.0;  ///< centre to centre
+  double bearing_rad = 0.0; ///< world-frame direction from this robot to the neighbour
+  Eigen::Vector2d velocity_mps = Eigen::Vector2d::Zero();  ///< of the point 0.05 m ahead of its centre, world frame
+
+  /// Neighbour centre minus own centre, world frame.
+  Eigen::Vector2d RelativePosition() const {
+    return distance_m * Eigen::Vector2d(std::cos(bearing_rad), std::sin(bearing_rad));
+  }
+};
+
+/// Neighbours within range and field of view.
+struct MovementReading {
+  int64_t step = 0;
+  std::vector<NeighbourDetection> neighbours;
+};
+
+/// Closest points of obstacles within range (one per obstacle).
+struct ObstacleReading {
+  int64_t step = 0;
+  std::vector<Eigen::Vector2d> closest_points_m;  ///< world frame
+};
+
+}  // namespace dream::agents

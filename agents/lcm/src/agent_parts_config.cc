@@ -1,0 +1,211 @@
+#include "dream/agents/agent_parts_config.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "dream/agents/graph_radio.h"
+#include "dream/agents/noise_source.h"
+#include "dream/agents/range_radio.h"
+#include "dream/agents/role_radio.h"
+
+namespace dream::agents {
+namespace {
+
+using config::ConfigNode;
+
+// One value for every robot, or a list with one per robot.
+std::vector<int> ReadPerRobot(const ConfigNode& node, int num_robots, int minimum) {
+  std::vector<int> values;
+  if (node.IsSequence()) {
+    if (node.size() != static_cast<size_t>(num_robots)) {
+      node.Fail("expected one number, or a list with one per robot (" + std::to_string(num_robots) + "), got " +
+                std::to_string(node.size()));
+    }
+    for (size_t i = 0; i < node.size(); ++i) values.push_back(static_cast<int>(node[i].AsInt()));
+  } else {
+    values.assign(static_cast<size_t>(num_robots), static_cast<int>(node.AsInt()));
+  }
+  for (size_t i = 0; i < values.size(); ++i) {
+    if (values[i] < minimum) {
+      (node.IsSequence() ? node[i] : node)
+          .Fail("must be >= " + std::to_string(minimum) + ", got " + std::to_string(values[i]));
+    }
+  }
+  return values;
+}
+
+template <typename Params>
+void Validate(const ConfigNode& node, const Params& params) {
+  std::string error;
+  if (!params.IsValid(&error)) node.Fail(error);
+}
+
+Eigen::MatrixXd ReadMatrix(const ConfigNode& node) {
+  if (!node.IsSequence() || node.size() == 0) node.Fail("expected a square matrix as a list of rows");
+  const size_t rows = node.size();
+  Eigen::MatrixXd matrix(rows, rows);
+  for (size_t i = 0; i < rows; ++i) {
+    const std::vector<double> row = node[i].AsDoubles();
+    if (row.size() != rows) {
+      node[i].Fail("row " + std::to_string(i) + " has " + std::to_string(row.size()) + " entries; the matrix must be " +
+                   std::to_string(rows) + "x" + std::to_string(rows));
+    }
+    for (size_t j = 0; j < rows; ++j) matrix(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = row[j];
+  }
+  return matrix;
+}
+
+SensorConfig ReadSensor(const ConfigNode& node, int num_robots) {
+  SensorConfig sensor;
+  const std::string kind = node.Required("kind").AsString();
+  if (node.Has("period_steps")) {
+    sensor.period_steps = ReadPerRobot(node.Required("period_steps"), num_robots, 1);
+  } else {
+    sensor.period_steps.assign(static_cast<size_t>(num_robots), 1);
+  }
+  if (kind == "odometry") {
+    node.RejectUnknownKeys({"kind", "period_steps", "noise_std"});
+    sensor.kind = SensorConfig::Kind::kOdometry;
+    sensor.odometry.noise_std = node.GetDouble("noise_std", 0.0);
+    Validate(node, sensor.odometry);
+  } else if (kind == "movement") {
+    node.RejectUnknownKeys({"kind", "period_steps", "noise_std", "range_m", "direction_rad", "field_of_view_rad"});
+    sensor.kind = SensorConfig::Kind::kMovement;
+    MovementSensorParams& p = sensor.movement;
+    p.noise_std = node.GetDouble("noise_std", p.noise_std);
+    p.range_m = node.GetDouble("range_m", p.range_m);
+    p.direction_rad = node.GetDouble("direction_rad", p.direction_rad);
+    p.field_of_view_rad = node.GetDouble("field_of_view_rad", p.field_of_view_rad);
+    Validate(node, p);
+  } else if (kind == "obstacle") {
+    node.RejectUnknownKeys({"kind", "period_steps", "noise_std", "range_m"});
+    sensor.kind = SensorConfig::Kind::kObstacle;
+    sensor.obstacle.noise_std = node.GetDouble("noise_std", 0.0);
+    sensor.obstacle.range_m = node.GetDouble("range_m", sensor.obstacle.range_m);
+    Validate(node, sensor.obstacle);
+  } else {
+    node.Required("kind").Fail("unknown sensor kind '" + kind + "'; known kinds: odometry, movement, obstacle");
+  }
+  return sensor;
+}
+
+void ReadRadio(const ConfigNode& node, int num_robots, bool graph_must_connect, RadioConfig* radio) {
+  node.RejectUnknownKeys(
+      {"kind", "period_steps", "range_m", "graph", "leaders", "loss_probability", "delay_steps"});
+  const std::string kind = node.Required("kind").AsString();
+  if (node.Has("period_steps")) radio->period_steps = ReadPerRobot(node.Required("period_steps"), num_robots, 1);
+  radio->link.loss_probability = node.GetDouble("loss_probability", radio->link.loss_probability);
+  radio->link.delay_steps = static_cast<int>(node.GetInt("delay_steps", radio->link.delay_steps));
+  Validate(node, radio->link);
+  if (kind == "none") {
+    radio->kind = RadioConfig::Kind::kNone;
+  } else if (kind == "range") {
+    radio->kind = RadioConfig::Kind::kRange;
+    radio->range_m = node.GetDouble("range_m", radio->range_m);
+    if (!(radio->range_m > 0.0)) node.Required("range_m").Fail("must be > 0");
+  } else if (kind == "graph" || kind == "role") {
+    radio->kind = kind == "graph" ? RadioConfig::Kind::kGraph : RadioConfig::Kind::kRole;
+    if (node.Has("graph")) radio->graph = ReadMatrix(node.Required("graph"));
+    if (radio->graph.size() == 0) node.Required("graph").Fail("a graph radio needs its adjacency matrix");
+    try {
+      // Consensus needs symmetric links reaching everyone; role radios carry
+      // directed stress weights, which need not be symmetric in general.
+      CommunicationGraph(radio->graph, num_robots, graph_must_connect && kind == "graph", graph_must_connect);
+    } catch (const std::invalid_argument& e) {
+      (node.Has("graph") ? node.Required("graph") : node).Fail(e.what());
+    }
+    if (kind == "role") {
+      if (node.Has("leaders")) {
+        radio->leaders.clear();
+        const ConfigNode leaders = node.Required("leaders");
+        for (double id : leaders.AsDoubles()) {
+          if (id < 0 || id >= num_robots || id != static_cast<int>(id)) {
+            leaders.Fail("leader ids must be robot ids 0.." + std::to_string(num_robots - 1));
+          }
+          radio->leaders.push_back(static_cast<int>(id));
+        }
+      }
+      if (radio->leaders.empty()) node.Required("leaders").Fail("a role radio needs at least one leader id");
+    }
+  } else {
+    node.Required("kind").Fail("unknown radio kind '" + kind + "'; known kinds: none, range, graph, role");
+  }
+}
+
+}  // namespace
+
+AgentPartsConfig AgentPartsConfig::Defaults(int num_robots) {
+  AgentPartsConfig parts;
+  const auto n = static_cast<size_t>(num_robots);
+  parts.robot_period_steps.assign(n, 1);
+  parts.start_delay_steps.assign(n, 0);
+  SensorConfig odometry;
+  odometry.period_steps.assign(n, 1);
+  parts.sensors.push_back(odometry);
+  parts.radio.period_steps.assign(n, 1);
+  return parts;
+}
+
+AgentPartsConfig AgentPartsConfig::Read(const ConfigNode& section, int num_robots, AgentPartsConfig defaults,
+                                        bool graph_must_connect) {
+  AgentPartsConfig parts = std::move(defaults);
+  const ConfigNode robot = section.Optional("robot");
+  if (robot.IsDefined()) {
+    robot.RejectUnknownKeys({"period_steps", "start_delay_steps", "vel_gain", "ang_gain"});
+    if (robot.Has("period_steps")) parts.robot_period_steps = ReadPerRobot(robot.Required("period_steps"), num_robots, 1);
+    if (robot.Has("start_delay_steps")) {
+      parts.start_delay_steps = ReadPerRobot(robot.Required("start_delay_steps"), num_robots, 0);
+    }
+    parts.robot.vel_gain = robot.GetDouble("vel_gain", parts.robot.vel_gain);
+    parts.robot.ang_gain = robot.GetDouble("ang_gain", parts.robot.ang_gain);
+    Validate(robot, parts.robot);
+  }
+  const ConfigNode sensors = section.Optional("sensors");
+  if (sensors.IsDefined()) {
+    if (!sensors.IsSequence()) sensors.Fail("expected a list of sensors, each with kind:");
+    parts.sensors.clear();
+    for (size_t i = 0; i < sensors.size(); ++i) parts.sensors.push_back(ReadSensor(sensors[i], num_robots));
+  }
+  const ConfigNode radio = section.Optional("radio");
+  if (radio.IsDefined()) ReadRadio(radio, num_robots, graph_must_connect, &parts.radio);
+  return parts;
+}
+
+RobotAgentSpec AgentPartsConfig::MakeSpec(std::unique_ptr<Robot> robot, uint64_t run_seed) const {
+  const int id = robot->id();
+  const auto i = static_cast<size_t>(id);
+  RobotAgentSpec spec;
+  spec.robot_period_steps = robot_period_steps.at(i);
+  spec.start_delay_steps = start_delay_steps.at(i);
+  for (size_t s = 0; s < sensors.size(); ++s) {
+    const uint64_t seed = NoiseSource::MixSeed(run_seed, i, s + 1);
+    SensorSlot slot;
+    slot.period_steps = sensors[s].period_steps.at(i);
+    switch (sensors[s].kind) {
+      case SensorConfig::Kind::kOdometry: slot.sensor = std::make_unique<OdometrySensor>(sensors[s].odometry, seed); break;
+      case SensorConfig::Kind::kMovement: slot.sensor = std::make_unique<MovementSensor>(sensors[s].movement, seed); break;
+      case SensorConfig::Kind::kObstacle: slot.sensor = std::make_unique<ObstacleSensor>(sensors[s].obstacle, seed); break;
+    }
+    spec.sensors.push_back(std::move(slot));
+  }
+  const int n = static_cast<int>(robot_period_steps.size());
+  switch (radio.kind) {
+    case RadioConfig::Kind::kNone: break;
+    case RadioConfig::Kind::kRange: spec.radio = std::make_unique<RangeRadio>(radio.range_m); break;
+    case RadioConfig::Kind::kGraph:
+      spec.radio = std::make_unique<GraphRadio>(CommunicationGraph(radio.graph, n, false, false));
+      break;
+    case RadioConfig::Kind::kRole: {
+      const bool leader = std::find(radio.leaders.begin(), radio.leaders.end(), id) != radio.leaders.end();
+      spec.radio = std::make_unique<RoleRadio>(leader ? RoleRadio::Role::kLeader : RoleRadio::Role::kFollower,
+                                               CommunicationGraph(radio.graph, n, false, false));
+      break;
+    }
+  }
+  spec.radio_period_steps = radio.period_steps.at(i);
+  spec.link = radio.link;
+  spec.robot = std::move(robot);
+  return spec;
+}
+
+}  // namespace dream::agents

@@ -1,0 +1,41 @@
+#include "dream/agents/robot.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace dream::agents {
+
+bool RobotParams::IsValid(std::string* error) const {
+  auto fail = [error](const std::string& message) {
+    if (error != nullptr) *error = message;
+    return false;
+  };
+  if (!(vel_gain > 0.0) || !std::isfinite(vel_gain)) return fail("vel_gain must be > 0, got " + std::to_string(vel_gain));
+  if (!(ang_gain > 0.0) || !std::isfinite(ang_gain)) return fail("ang_gain must be > 0, got " + std::to_string(ang_gain));
+  return true;
+}
+
+Robot::Robot(int id, RobotParams params) : id_(id), params_(params), actuator_limits_(params.limits) {
+  std::string error;
+  if (id < 0) throw std::invalid_argument("robot id must be >= 0, got " + std::to_string(id));
+  if (!params_.IsValid(&error)) throw std::invalid_argument(error);
+}
+
+void Robot::OnOdometry(const OdometryReading& reading) { odometry_ = reading; }
+void Robot::OnMovement(const MovementReading& reading) { movement_ = reading; }
+void Robot::OnObstacles(const ObstacleReading& reading) { obstacles_ = reading; }
+
+std::optional<std::vector<uint8_t>> Robot::OnRadio(const std::vector<RadioMessage>& heard) {
+  (void)heard;
+  return std::nullopt;
+}
+
+UnicycleCommand Robot::DxiToDxu(const Eigen::Vector2d& dxi_mps) const {
+  const double c = std::cos(pose().z());
+  const double s = std::sin(pose().z());
+  const double v = params_.vel_gain * (c * dxi_mps.x() + s * dxi_mps.y());
+  const double w = params_.ang_gain * std::atan2(-s * dxi_mps.x() + c * dxi_mps.y(), v) / (M_PI / 2.0);
+  return {v, w};
+}
+
+}  // namespace dream::agents

@@ -1,0 +1,35 @@
+#include "dream/agents/safety_metrics.h"
+
+#include <cmath>
+
+namespace dream::agents {
+
+SafetyMetrics::SafetyMetrics(double near_miss_m) : near_miss_m_(near_miss_m) {}
+
+void SafetyMetrics::Observe(const WorldSnapshot& world) {
+  ++steps_;
+  bool near_miss = false;
+  // O(N^2) is fine: experiments have at most 50 robots, and this runs after the run.
+  for (size_t i = 0; i < world.poses.size(); ++i) {
+    for (size_t j = i + 1; j < world.poses.size(); ++j) {
+      const double d = (world.poses[i].head<2>() - world.poses[j].head<2>()).norm();
+      if (d < min_distance_m_) {
+        min_distance_m_ = d;
+        min_distance_step_ = world.step;
+      }
+      near_miss = near_miss || d < near_miss_m_;
+    }
+  }
+  if (near_miss) ++near_miss_steps_;
+}
+
+void SafetyMetrics::Write(MetricsReport* report) const {
+  if (std::isfinite(min_distance_m_)) {
+    report->values["min_pairwise_distance_m"] = min_distance_m_;
+    report->values["min_pairwise_distance_step"] = static_cast<double>(min_distance_step_);
+  }
+  report->values["near_miss_steps"] = static_cast<double>(near_miss_steps_);
+  report->values["near_miss_threshold_m"] = near_miss_m_;
+}
+
+}  // namespace dream::agents
