@@ -1,10 +1,18 @@
 #include <spdlog/spdlog.h>
+#include <sys/resource.h>
+
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <random>
 #include <set>
 #include <stdexcept>
 
 #include "commands.h"
+#include "process_group.h"
 #include "dream/agents/agent_host.h"
 #include "dream/agents/controller_factory.h"
 #include "dream/config/run_config.h"
@@ -13,7 +21,10 @@
 
 namespace dream::cli {
 
-int64_t NewAgentId();
+int64_t NewAgentId() {
+  std::random_device device;
+  return static_cast<int64_t>((static_cast<uint64_t>(device()) << 32) | device()) & INT64_MAX;
+}
 
 std::vector<int> ParseRobotList(const std::string& text, int num_robots) {
   std::set<int> ids;
@@ -64,10 +75,30 @@ int RunAgents(const AgentArgs& args) {
   agents::AgentHost host(bus, std::move(robots), NewAgentId());
   spdlog::info("agent for robot(s) {} of {} on {}", args.robots, config.name, bus.url());
   const bool ended_by_world = host.Run(StopFlag(), args.idle_timeout_s);
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  // Peak resident memory, so per-agent memory can be checked (docs/performance.md).
+  spdlog::info("agent for robot(s) {}: peak resident memory {:.1f} MB", args.robots,
+               static_cast<double>(usage.ru_maxrss) / 1024.0);
   if (StopFlag().load()) return kExitInterrupted;
   if (!ended_by_world) return kExitRunFailed;
   spdlog::info("world ended the run at step {}: {}", host.last_step_answered(), host.end_detail());
   return kExitOk;
+}
+
+std::string AgentBinaryPath() {
+  return (std::filesystem::path(SelfExecutable()).parent_path() / "dream-agent").string();
+}
+
+int ExecAgentBinary(int argc, char** argv) {
+  const std::string binary = AgentBinaryPath();
+  // argv is "dream agent ARGS...": run "dream-agent ARGS...".
+  std::vector<char*> args = {const_cast<char*>(binary.c_str())};
+  for (int i = 2; i < argc; ++i) args.push_back(argv[i]);
+  args.push_back(nullptr);
+  ::execv(binary.c_str(), args.data());
+  throw std::runtime_error("cannot start " + binary + " (" + std::strerror(errno) +
+                           "); it is built and installed next to dream");
 }
 
 }  // namespace dream::cli

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <atomic>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,15 @@ enum ExitCode : int {
 
 /// Set by SIGINT/SIGTERM; every loop polls it.
 std::atomic<bool>& StopFlag();
+/// Makes SIGINT and SIGTERM set StopFlag().
+void InstallStopSignals();
+
+/// Agents run in the lean dream-agent executable (no simulator, pictures or
+/// their libraries: a third of the memory). `dream agent ...` replaces itself
+/// with `dream-agent ...`, found next to `dream`. Returns only on failure.
+int ExecAgentBinary(int argc, char** argv);
+/// The dream-agent executable next to the running one.
+std::string AgentBinaryPath();
 
 struct RunArgs {
   std::string config_path;
@@ -34,6 +44,9 @@ struct AgentArgs {
   std::string lcm_url;
   double idle_timeout_s = 60.0;
 };
+
+/// A random identifier for this process's agents (see velocity_command_t.agent_id).
+int64_t NewAgentId();
 
 int RunEmbedded(const RunArgs& args);
 int RunSimOnly(const RunArgs& args);

@@ -28,7 +28,7 @@ int RunLaunch(const RunArgs& args) {
   const pid_t sim = children.Start(sim_argv);
   std::vector<pid_t> agents;
   for (int id = 0; id < config.num_robots; ++id) {
-    std::vector<std::string> agent_argv = {self, "agent"};
+    std::vector<std::string> agent_argv = {AgentBinaryPath()};
     agent_argv.insert(agent_argv.end(), common.begin(), common.end());
     agent_argv.push_back("--robots=" + std::to_string(id));
     agents.push_back(children.Start(agent_argv));

@@ -9,18 +9,7 @@
 #include "commands.h"
 #include "dream/config/config_error.h"
 
-namespace dream::cli {
-
-std::atomic<bool>& StopFlag() {
-  static std::atomic<bool> stop{false};
-  return stop;
-}
-
-}  // namespace dream::cli
-
 namespace {
-
-extern "C" void OnStopSignal(int) { dream::cli::StopFlag().store(true); }
 
 void AddRunOptions(CLI::App* command, dream::cli::RunArgs* args, const char* url_help) {
   command->add_option("config", args->config_path, "Run config (YAML), e.g. config/go_to_goal.yaml")->required();
@@ -131,13 +120,12 @@ int main(int argc, char** argv) {
 
   spdlog::set_pattern("[%H:%M:%S.%e] [%^%l%$] %v");
   spdlog::set_level(quiet ? spdlog::level::warn : verbose ? spdlog::level::debug : spdlog::level::info);
-  std::signal(SIGINT, OnStopSignal);
-  std::signal(SIGTERM, OnStopSignal);
+  InstallStopSignals();
 
   try {
     if (*run) return RunEmbedded(run_args);
     if (*sim) return RunSimOnly(sim_args);
-    if (*agent) return RunAgents(agent_args);
+    if (*agent) return ExecAgentBinary(argc, argv);
     if (*launch) return RunLaunch(launch_args);
     if (*log_info) return RunLogInfo(info_path);
     if (*log_diff) return RunLogDiff(diff_a, diff_b, diff_channels);

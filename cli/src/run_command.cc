@@ -11,11 +11,6 @@
 
 namespace dream::cli {
 
-int64_t NewAgentId() {
-  std::random_device device;
-  return static_cast<int64_t>((static_cast<uint64_t>(device()) << 32) | device()) & INT64_MAX;
-}
-
 int RunEmbedded(const RunArgs& args) {
   const config::RunConfig config = LoadConfig(args);
   // One process: the world and every agent share one bus, memq:// unless the

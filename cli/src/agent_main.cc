@@ -1,0 +1,41 @@
+// dream-agent: the agents of some robots, as a lean process. `dream agent`
+// and `dream launch` start it; its options are those of `dream agent`.
+#include <CLI/CLI.hpp>
+#include <spdlog/spdlog.h>
+
+#include <iostream>
+
+#include "commands.h"
+#include "dream/config/config_error.h"
+
+int main(int argc, char** argv) {
+  using namespace dream::cli;
+  CLI::App app{"Run the agents of some robots against whichever world is on the bus.\n"
+               "Example: dream agent config/go_to_goal.yaml --robots 0-2",
+               "dream agent"};
+  AgentArgs args;
+  bool quiet = false;
+  bool verbose = false;
+  app.add_option("config", args.config_path, "Run config (YAML)")->required();
+  app.add_option("--robots", args.robots, "Robots to drive: all, 3, 0,2,5 or 0-4")->capture_default_str();
+  app.add_option("--lcm-url", args.lcm_url, "LCM URL (default $LCM_DEFAULT_URL)");
+  app.add_option("--idle-timeout", args.idle_timeout_s, "Give up after this many seconds without poses")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_flag("-q,--quiet", quiet, "Only warnings and errors");
+  app.add_flag("-v,--verbose", verbose, "Debug output");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? kExitOk : kExitUsage;
+  }
+  spdlog::set_pattern("[%H:%M:%S.%e] [%^%l%$] %v");
+  spdlog::set_level(quiet ? spdlog::level::warn : verbose ? spdlog::level::debug : spdlog::level::info);
+  InstallStopSignals();
+  try {
+    return RunAgents(args);
+  } catch (const std::exception& e) {
+    std::cerr << "dream agent: " << e.what() << '\n';
+    return kExitInputError;
+  }
+}
