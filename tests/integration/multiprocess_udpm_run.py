@@ -9,7 +9,8 @@ process draws its own random agent_id, and on udpm an agent may answer a resent 
 commands are compared decoded, with agent_id ignored and repeats of the same step dropped; and the
 launched run must show one distinct agent_id per robot, the one-process run a single one.
 
-Usage: netns.sh multiprocess_udpm_run.py --dream BIN --source DIR --types-dir DIR
+Usage: netns.sh multiprocess_udpm_run.py --dream BIN --source DIR --types-dir DIR [--config FILE] [--steps N]
+(--config defaults to config/go_to_goal.yaml; --steps caps both runs, with --all-steps.)
 """
 
 import argparse
@@ -43,21 +44,25 @@ def test(ctx):
     parser.add_argument("--dream", required=True)
     parser.add_argument("--source", required=True)
     parser.add_argument("--types-dir", required=True)
+    parser.add_argument("--config", default="config/go_to_goal.yaml", help="relative to --source")
+    parser.add_argument("--steps", type=int, default=0)
     args = parser.parse_args()
     require_private_netns()
     dream = import_types(args.types_dir)
-    config = os.path.join(args.source, "config", "go_to_goal.yaml")
+    config = os.path.join(args.source, args.config)
+    limit = ["--steps", str(args.steps), "--all-steps"] if args.steps else []
 
     launched, single = ctx.path("launch"), ctx.path("run")
-    ctx.start("launch", [args.dream, "launch", config, "--out", launched])
-    code = ctx.wait("launch", timeout=30)
+    ctx.start("launch", [args.dream, "launch", config, "--out", launched] + limit)
+    code = ctx.wait("launch", timeout=60)
     check(code == 0, f"dream launch exited {code}, expected 0")
     summary = read_summary(launched)
     check(summary["end"] == "finished", f"dream launch: summary end is {summary['end']!r} ({summary['reason']})")
     check(summary["robots_ever_lost"] == [], f"dream launch lost robots {summary['robots_ever_lost']}")
     check(summary["rejected_commands"] == 0, f"dream launch rejected {summary['rejected_commands']} commands")
 
-    ctx.run([args.dream, "-q", "run", config, "--out", single], expect=0)
+    ctx.run([args.dream, "-q", "run", config, "--out", single] + limit, expect=0)
+    robots = summary["robots"]
     check(read_summary(single)["steps"] == summary["steps"],
           f"steps differ: launch {summary['steps']}, run {read_summary(single)['steps']}")
 
@@ -69,18 +74,18 @@ def test(ctx):
 
     commands_a, agents_a = commands_by_robot(log_a, dream)
     commands_b, agents_b = commands_by_robot(log_b, dream)
-    check(sorted(commands_a) == list(range(8)), f"launch log has commands for robots {sorted(commands_a)}")
-    for robot in range(8):
+    check(sorted(commands_a) == list(range(robots)), f"launch log has commands for robots {sorted(commands_a)}")
+    for robot in range(robots):
         a, b = commands_a[robot], commands_b.get(robot, [])
         if a != b:
             first = next((i for i, (x, y) in enumerate(zip(a, b)) if x != y), min(len(a), len(b)))
             check(False, f"DREAM_CMD_{robot} differs (agent_id and repeats ignored) at command {first}: "
                          f"launch {a[first] if first < len(a) else 'none'}, run {b[first] if first < len(b) else 'none'}")
-    ids_a = [next(iter(agents_a[robot])) for robot in range(8) if len(agents_a[robot]) == 1]
-    check(len(ids_a) == 8 and len(set(ids_a)) == 8,
+    ids_a = [next(iter(agents_a[robot])) for robot in range(robots) if len(agents_a[robot]) == 1]
+    check(len(ids_a) == robots and len(set(ids_a)) == robots,
           f"dream launch: expected one distinct agent_id per robot, got {agents_a}")
     check(len(set().union(*agents_b.values())) == 1, "dream run: expected one agent_id for all robots")
-    print(f"launch and run agree: {summary['steps']} steps, poses/obstacles/status byte-equal, "
+    print(f"{args.config}: launch and run agree: {summary['steps']} steps, poses/obstacles/status byte-equal, "
           f"commands equal up to agent_id")
 
 
