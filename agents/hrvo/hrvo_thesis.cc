@@ -1,5 +1,6 @@
 #include "dream/agents/hrvo_thesis.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -86,8 +87,13 @@ Eigen::Vector2d HrvoThesis::SafeVelocity(const Eigen::Vector2d& position_m, cons
     LegLine(phi_r, rvo_x, rvo_y, &ar, &br, &cr);
     const double dist_l = std::abs(al * dxi0 + bl * dxi1 + cl) / std::sqrt(al * al + bl * bl);
     const double dist_r = std::abs(ar * dxi0 + br * dxi1 + cr) / std::sqrt(ar * ar + br * br);
-    if (dist_l < dist_r) left = {-al, -bl, cl};
-    if (dist_l > dist_r) right = {ar, br, -cr};
+    // An exact tie (own velocity on the centre line, or overlapping robots,
+    // whose legs coincide) keeps both VO legs. In numpy the tie is decided by
+    // the last bit of sin/cos, which differs between numpy's SIMD code and
+    // libm, so ties within rounding count as ties here.
+    const double tie = 1e-12 * std::max(1.0, dist_l + dist_r);
+    if (dist_l < dist_r - tie) left = {-al, -bl, cl};
+    if (dist_l > dist_r + tie) right = {ar, br, -cr};
 
     if (!any_left) continue;  // (the thesis would raise IndexError here)
     any_left = false;
@@ -123,6 +129,9 @@ Eigen::Vector2d HrvoThesis::SafeVelocity(const Eigen::Vector2d& position_m, cons
   }
 
   // First sample nearest the preferred velocity (np.where(norm == min)[0][0]).
+  // Mirror-image samples tie up to the last bit of sin/cos (numpy's and
+  // libm's differ there), so norms within rounding count as equal and the
+  // lower index wins, as it does for exact ties in numpy.
   size_t best = samples_.size() - 1;
   double best_norm = INFINITY;
   for (size_t k = 0; k < samples_.size(); ++k) {
@@ -130,7 +139,7 @@ Eigen::Vector2d HrvoThesis::SafeVelocity(const Eigen::Vector2d& position_m, cons
     const double dx = samples_[k].x() - preferred_velocity_mps.x();
     const double dy = samples_[k].y() - preferred_velocity_mps.y();
     const double norm = std::sqrt(dx * dx + dy * dy);
-    if (norm < best_norm) {
+    if (best_norm == INFINITY || norm < best_norm - 1e-12 * std::max(1.0, best_norm)) {
       best_norm = norm;
       best = k;
     }

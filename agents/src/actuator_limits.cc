@@ -17,7 +17,9 @@ UnicycleCommand ActuatorLimits::Apply(const UnicycleCommand& command) const {
   const double r = limits_.wheel_radius_m;
   const double turn_share = limits_.base_length_m / (2.0 * r) * std::abs(w);
   if (std::abs(v) / r + turn_share > limits_.max_wheel_speed_radps) {
-    const double v_allowed = std::max(0.0, (limits_.max_wheel_speed_radps - turn_share) * r);
+    // A hair inside the limit: exactly at it, the world's own uni->diff
+    // arithmetic can land one ulp over and count an actuator warning.
+    const double v_allowed = std::max(0.0, (limits_.max_wheel_speed_radps - turn_share) * r * (1.0 - 1e-9));
     v = std::copysign(v_allowed, v);
   }
   return {v, w};

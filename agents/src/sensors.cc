@@ -107,8 +107,10 @@ void ObstacleSensor::Sense(const WorldSnapshot& world, Robot& robot) {
     const Eigen::Vector2d half = obstacle.size_m / 2.0;
     const Eigen::Vector2d closest = own.cwiseMax(obstacle.center_m - half).cwiseMin(obstacle.center_m + half);
     if ((closest - own).norm() > params_.range_m) continue;
-    reading.closest_points_m.push_back(
-        {closest.x() + noise_.Gaussian(params_.noise_std), closest.y() + noise_.Gaussian(params_.noise_std)});
+    const double noise_x = noise_.Gaussian(params_.noise_std);  // x first: keeps the seeded stream's order
+    const Eigen::Vector2d noise(noise_x, noise_.Gaussian(params_.noise_std));
+    reading.closest_points_m.push_back(closest + noise);
+    reading.rectangles.push_back({obstacle.center_m + noise, obstacle.size_m});
   }
   robot.OnObstacles(reading);
 }

@@ -92,9 +92,16 @@ std::string AgentBinaryPath() {
 
 int ExecAgentBinary(int argc, char** argv) {
   const std::string binary = AgentBinaryPath();
-  // argv is "dream agent ARGS...": run "dream-agent ARGS...".
+  // argv is "dream [-q|-v] agent ARGS...": run "dream-agent [-q|-v] ARGS...".
   std::vector<char*> args = {const_cast<char*>(binary.c_str())};
-  for (int i = 2; i < argc; ++i) args.push_back(argv[i]);
+  bool skipped_subcommand = false;
+  for (int i = 1; i < argc; ++i) {
+    if (!skipped_subcommand && std::string(argv[i]) == "agent") {
+      skipped_subcommand = true;
+      continue;
+    }
+    args.push_back(argv[i]);
+  }
   args.push_back(nullptr);
   ::execv(binary.c_str(), args.data());
   throw std::runtime_error("cannot start " + binary + " (" + std::strerror(errno) +

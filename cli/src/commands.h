@@ -58,6 +58,55 @@ int RunLogInfo(const std::string& path);
 int RunLogDiff(const std::string& a, const std::string& b, const std::string& channel_regex);
 int RunSpy(const std::string& log_path, const std::string& lcm_url, bool print_command_only);
 
+// --- the bridge to the Robotarium (bridge_commands.cc, docs/robotarium.md) ---
+
+struct ExportArgs {
+  std::string run_dir;          ///< a folder written by dream run
+  std::string out_dir;          ///< empty: exports/<name>
+  std::string config_path;      ///< empty: <run_dir>/config.yaml
+  std::string strategy = "track";
+  bool barriers = false;
+  int settle_steps = 240;
+};
+
+struct ImportArgs {
+  std::string result;           ///< dream_result.npy / .mat, or a folder holding one
+  std::string export_dir;
+  std::string out_dir;          ///< empty: runs/<name>_lab
+};
+
+struct LabReplayArgs {
+  std::string lab_dir;          ///< a folder written by dream import
+  std::string out_dir;          ///< empty: runs/<name>_lab_replay
+  std::string lcm_url;          ///< empty: memq:// with in-process agents, else LCM_DEFAULT_URL
+  long long steps = 0;          ///< 0: the whole lab run
+  std::string mode;             ///< empty: the config's
+  bool world_only = false;      ///< no in-process agents: they run elsewhere (dream agent)
+};
+
+struct CompareArgs {
+  std::string first_dir;        ///< the simulated run
+  std::string second_dir;       ///< the lab run
+  std::string out_dir;          ///< empty: second_dir
+};
+
+struct CheckSubmissionArgs {
+  std::string export_dir;
+  std::string out_dir;          ///< empty: runs/<name>_check
+  std::string run_dir;          ///< the simulated run to compare with; empty: the export's source run
+  std::string simulator;        ///< a robotarium_python_simulator checkout; empty: $ROBOTARIUM_PYTHON_SIMULATOR
+  std::string python;           ///< empty: the configured Python (/usr/bin/python3)
+  bool standin = false;         ///< use the stand-in even when the official simulator is there
+  bool require_official = false;
+  bool skip_initialization = false;
+};
+
+int RunExport(const ExportArgs& args);
+int RunImport(const ImportArgs& args);
+int RunLabReplay(const LabReplayArgs& args);
+int RunCompare(const CompareArgs& args);
+int RunCheckSubmission(const CheckSubmissionArgs& args);
+
 /// Parses "all", "3", "0,2,5", "0-4" into sorted unique ids < num_robots.
 /// @throws std::invalid_argument naming the bad part.
 std::vector<int> ParseRobotList(const std::string& text, int num_robots);

@@ -3,15 +3,13 @@
 #include <spdlog/spdlog.h>
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <nlohmann/json.hpp>
 #include <iostream>
 
 #include "dream/agents/controller_factory.h"
-#include "dream/lcm/channels.h"
-#include "dream/lcm/lcm_typed.h"
-#include "dream/lcm/log_reader.h"
-#include "dream/obstacles_t.hpp"
-#include "dream/robot_poses_t.hpp"
+#include "dream/agents/log_metrics.h"
 #include "dream/sim/atomic_file.h"
 #include "dream/sim/run_recorder.h"
 #include "dream/sim/run_report.h"
@@ -24,34 +22,7 @@ namespace dream::cli {
 
 nlohmann::ordered_json ExperimentMetricsJson(const config::RunConfig& config, const std::string& log_path) {
   const agents::ControllerFactory factory(config.controller, config.num_robots, config.seed);
-  std::vector<std::unique_ptr<agents::ExperimentMetrics>> metrics = factory.MakeMetrics();
-  agents::WorldSnapshot world;
-  lcm::LogReader reader(log_path);
-  lcm::LogRecord record;
-  while (reader.Next(&record)) {
-    const int size = static_cast<int>(record.data.size());
-    if (record.channel == lcm::kObstaclesChannel) {
-      obstacles_t obstacles;
-      if (!lcm::Decode(record.data.data(), size, &obstacles)) continue;
-      world.obstacles.clear();
-      for (const rectangle_obstacle_t& o : obstacles.obstacles) {
-        world.obstacles.push_back({o.id, {o.center_x, o.center_y}, {o.width, o.height}, {o.vx, o.vy}});
-      }
-    } else if (record.channel == lcm::kPosesChannel) {
-      robot_poses_t poses;
-      if (!lcm::Decode(record.data.data(), size, &poses)) continue;
-      world.step = poses.step;
-      world.poses.resize(poses.x.size());
-      world.velocities.resize(poses.x.size());
-      for (size_t i = 0; i < poses.x.size(); ++i) {
-        world.poses[i] = {poses.x[i], poses.y[i], poses.theta[i]};
-        world.velocities[i] = {poses.v[i], poses.w[i]};
-      }
-      for (auto& m : metrics) m->Observe(world);
-    }
-  }
-  agents::MetricsReport report;
-  for (const auto& m : metrics) m->Write(&report);
+  const agents::MetricsReport report = agents::MetricsFromLog(factory, log_path);
   nlohmann::ordered_json json;
   json["kind"] = factory.kind();
   for (const auto& [name, value] : report.values) json[name] = value;
@@ -62,6 +33,14 @@ nlohmann::ordered_json ExperimentMetricsJson(const config::RunConfig& config, co
     json[name] = points;
   }
   return json;
+}
+
+std::string ReadConfigText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read the config " + path + " again to copy it into the run folder");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 config::RunConfig LoadConfig(const RunArgs& args) {
@@ -99,6 +78,9 @@ std::string PrepareOutputDir(const RunArgs& args, const config::RunConfig& confi
 }
 
 int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std::string& out_dir) {
+  // A copy of the config beside the log, so the run folder alone is enough for
+  // `dream export` and `dream compare`.
+  sim::WriteFileAtomically(out_dir + "/config.yaml", ReadConfigText(config.source));
   sim::UnicycleWorld world(config.world, config.initial_poses, config.obstacles);
   const std::string log_path = out_dir + "/run.lcmlog";
   sim::RunOutcome outcome;

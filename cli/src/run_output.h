@@ -12,13 +12,18 @@ namespace dream::cli {
 /// @throws config::ConfigError or std::invalid_argument with a clear message.
 config::RunConfig LoadConfig(const RunArgs& args);
 
+/// The bytes of the config file at `path` (to copy it into a run folder).
+/// @throws std::runtime_error naming the file.
+std::string ReadConfigText(const std::string& path);
+
 /// The output folder: --out, else runs/<name>. Created if missing (its parent
 /// must exist). @throws std::runtime_error naming the folder otherwise.
 std::string PrepareOutputDir(const RunArgs& args, const config::RunConfig& config);
 
-/// Runs the simulator on `lcm` until the run ends, writing <out_dir>/run.lcmlog
-/// and <out_dir>/summary.json (both atomically), and prints the Robotarium
-/// verdict. Returns the process exit code.
+/// Runs the simulator on `lcm` until the run ends, writing <out_dir>/config.yaml
+/// (a copy of the config file), <out_dir>/run.lcmlog and <out_dir>/summary.json
+/// (all atomically), and prints the Robotarium verdict. Returns the process
+/// exit code.
 int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std::string& out_dir);
 
 }  // namespace dream::cli

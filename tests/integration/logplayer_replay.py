@@ -7,7 +7,8 @@ stops the logger with SIGINT, and requires the captured log to hold every DREAM_
 original, in order (dream log diff --channels 'DREAM_.*'; the capture also holds the probe and
 udpm's LCM_SELF_TEST, which are not part of the run).
 
-Usage: netns.sh logplayer_replay.py --dream BIN --source DIR
+Usage: netns.sh logplayer_replay.py --dream BIN --source DIR [--log RUN.lcmlog] [--speed S]
+(--log plays that log instead of a fresh run; the bridge test passes a log imported from the lab.)
 """
 
 import argparse
@@ -22,6 +23,8 @@ def test(ctx):
     parser = argparse.ArgumentParser()
     parser.add_argument("--dream", required=True)
     parser.add_argument("--source", required=True)
+    parser.add_argument("--log", default="", help="play this run log instead of making one")
+    parser.add_argument("--speed", default="5", help="lcm-logplayer -s (default 5)")
     args = parser.parse_args()
     require_private_netns()
     url = os.environ["LCM_DEFAULT_URL"]
@@ -29,10 +32,13 @@ def test(ctx):
     # socket 4 MB, as dream does (a small datagram costs ~1 KB of the default 208 KB buffer).
     logger_url = url + ("&" if "?" in url else "?") + "recv_buf_size=4194304"
 
-    run = ctx.path("run")
-    ctx.run([args.dream, "-q", "run", os.path.join(args.source, "config", "go_to_goal.yaml"), "--out", run],
-            expect=0)
-    original = os.path.join(run, "run.lcmlog")
+    if args.log:
+        original = os.path.abspath(args.log)
+    else:
+        run = ctx.path("run")
+        ctx.run([args.dream, "-q", "run", os.path.join(args.source, "config", "go_to_goal.yaml"), "--out", run],
+                expect=0)
+        original = os.path.join(run, "run.lcmlog")
     captured = ctx.path("captured.lcmlog")
 
     logger = ctx.start("logger", ["lcm-logger", "--lcm-url=" + logger_url, "--flush-interval=10", "-f", captured])
@@ -52,7 +58,7 @@ def test(ctx):
     # 5x, not faster: lcm-logger 1.3.1 keeps LCM's default 30-message subscription queue and
     # silently drops a step's burst of 11 messages when it misses a few ms of CPU (seen at 20x with
     # ctest -j on 2 cores); at 5x it tolerates ~13 ms stalls.
-    ctx.start("player", ["lcm-logplayer", "-s", "5", "--lcm-url=" + url, original])
+    ctx.start("player", ["lcm-logplayer", "-s", args.speed, "--lcm-url=" + url, original])
     code = ctx.wait("player", timeout=20)
     check(code == 0, f"lcm-logplayer exited {code}: {ctx.output('player').strip()}")
     time.sleep(0.3)  # let the logger drain its socket

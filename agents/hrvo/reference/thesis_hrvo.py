@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """The thesis's Robot_hrvo.HRVO (Appendix A.1) and the movement sensor's
 detection (Appendix A.2), transcribed line by line with numpy, to produce
-known answers for tests/agents/hrvo_test.cc (ThesisHrvo must match them).
+known answers for tests/agents/hrvo_test.cc (HrvoThesis must match them).
 
-Run: /usr/bin/python3 agents/hrvo/reference/thesis_hrvo.py
+Run: /usr/bin/python3 agents/hrvo/reference/thesis_hrvo.py > cases.inc
+(C++ initialisers, pasted into MatchesTheThesisCodeOnKnownAnswers).
 """
 import numpy as np
 
@@ -97,25 +98,54 @@ def hrvo(pos, dxi, detections, desired_velocity, safety=0.24, check_boundaries=T
     return out
 
 
-def case(name, pos, dxi, neighbours, desired, check_boundaries=True):
-    """neighbours: list of (x, y, theta, v, w) world poses and commands."""
-    dets = [detect(pos, (n[0], n[1]), n[2], n[3], n[4]) for n in neighbours]
-    out = hrvo(np.array(pos, float), np.array(dxi, float), dets, np.array(desired, float),
-               check_boundaries=check_boundaries)
-    rel = [(n[0] - pos[0], n[1] - pos[1]) for n in neighbours]
-    vel = [(d[2], d[3]) for d in dets]
-    print(f"{name}: pos={pos} dxi={dxi} desired={desired}")
-    for r, v in zip(rel, vel):
-        print(f"    neighbour rel=({r[0]!r}, {r[1]!r}) vel=({v[0]!r}, {v[1]!r})")
-    print(f"  -> ({out[0]!r}, {out[1]!r})")
+def cpp_case(pos, dxi, desired, nbrs, comment=None):
+    """Prints one case as a C++ initialiser for tests/agents/hrvo_test.cc:
+    {pos, dxi, desired, {{rel, vel}...}, expected}; nbrs are (x, y, theta, v, w)
+    world poses and commands of the neighbours, seen by the movement sensor."""
+    pos = np.asarray(pos, float)
+    dets = [detect(pos, (n[0], n[1]), n[2], n[3], n[4]) for n in nbrs]
+    out = hrvo(pos, np.asarray(dxi, float), dets, np.asarray(desired, float))
+    ns = ", ".join(f"{{{{{n[0] - pos[0]!r}, {n[1] - pos[1]!r}}}, {{{d[2]!r}, {d[3]!r}}}}}"
+                   for n, d in zip(nbrs, dets))
+    if comment:
+        print(f"      // {comment}")
+    print(f"      {{{{{pos[0]!r}, {pos[1]!r}}}, {{{dxi[0]!r}, {dxi[1]!r}}}, "
+          f"{{{desired[0]!r}, {desired[1]!r}}}, {{{ns}}}, {{{out[0]!r}, {out[1]!r}}}}},")
+
+
+def hand_made_cases():
+    # Exactly mirror-symmetric situations are left out: numpy breaks their
+    # ties by the last bit of its own sin/cos (see docs/hrvo.md).
+    cpp_case((0.0, 0.0), (0.0, 0.0), (0.2, 0.0), [(0.5, 0.0, np.pi, 0.0, 0.0)], "static neighbour ahead")
+    cpp_case((-0.5, 0.0), (0.2, 0.01), (0.2, 0.0), [(0.5, 0.03, np.pi, 0.16, 0.0)], "head-on at speed")
+    cpp_case((-0.5, 0.0), (0.15, 0.05), (0.2, 0.0), [(0.3, 0.02, np.pi, 0.16, 0.0)], "head-on, offset")
+    cpp_case((0.0, 0.0), (0.2, 0.0), (0.2, 0.0), [(-0.5, 0.0, 0.0, 0.0, 0.0)], "neighbour behind")
+    cpp_case((0.1, -0.2), (0.1, 0.1), (0.14, 0.14),
+             [(0.5, 0.1, 2.0, 0.12, 1.0), (0.2, 0.3, -1.0, 0.1, -0.5)], "two neighbours, turning")
+    cpp_case((1.5, 0.0), (0.2, 0.0), (0.2, 0.0), [], "wall within 1 s")
+    cpp_case((1.55, 0.95), (0.0, 0.0), (0.2, 0.2), [(1.2, 0.95, 0.0, 0.1, 0.0)], "corner, neighbour behind")
+
+
+def random_cases(seed=7, count=24):
+    rng = np.random.default_rng(seed)
+    print(f"      // Random (seed {seed}).")
+    for _ in range(count):
+        pos = rng.uniform([-1.55, -0.95], [1.55, 0.95])
+        dxi = rng.uniform(-0.14, 0.14, 2)
+        ang = rng.uniform(0, 2 * np.pi)
+        desired = 0.2 * np.array([np.cos(ang), np.sin(ang)])
+        nbrs = []
+        for _ in range(rng.integers(0, 5)):
+            rel = rng.uniform(-0.8, 0.8, 2)
+            if np.hypot(rel[0], rel[1]) <= 0.25:
+                # Within the safety radius the two legs coincide and numpy
+                # breaks the resulting tie by the last bit of its sin/cos.
+                continue
+            nbrs.append((pos[0] + rel[0], pos[1] + rel[1], rng.uniform(-np.pi, np.pi),
+                         rng.uniform(0, 0.2), rng.uniform(-3, 3)))
+        cpp_case(pos, dxi, desired, nbrs)
 
 
 if __name__ == "__main__":
-    case("static_ahead", (0.0, 0.0), (0.0, 0.0), [(0.5, 0.0, np.pi, 0.0, 0.0)], (0.2, 0.0))
-    case("head_on_moving", (-0.5, 0.0), (0.2, 0.0), [(0.5, 0.0, np.pi, 0.16, 0.0)], (0.2, 0.0))
-    case("head_on_offset", (-0.5, 0.0), (0.15, 0.05), [(0.3, 0.02, np.pi, 0.16, 0.0)], (0.2, 0.0))
-    case("behind", (0.0, 0.0), (0.2, 0.0), [(-0.5, 0.0, 0.0, 0.0, 0.0)], (0.2, 0.0))
-    case("two_neighbours", (0.1, -0.2), (0.1, 0.1), [(0.5, 0.1, 2.0, 0.12, 1.0), (0.2, 0.3, -1.0, 0.1, -0.5)], (0.14, 0.14))
-    case("overlapping", (0.0, 0.0), (0.0, 0.1), [(0.1, 0.15, -1.5, 0.05, 0.3)], (0.0, 0.2))
-    case("near_wall", (1.5, 0.0), (0.2, 0.0), [], (0.2, 0.0))
-    case("corner", (1.55, 0.95), (0.0, 0.0), [(1.2, 0.95, 0.0, 0.1, 0.0)], (0.2, 0.2))
+    hand_made_cases()
+    random_cases()

@@ -149,30 +149,30 @@ AgentPartsConfig AgentPartsConfig::Defaults(int num_robots) {
 AgentPartsConfig AgentPartsConfig::Read(const ConfigNode& section, int num_robots, AgentPartsConfig defaults,
                                         bool graph_must_connect) {
   AgentPartsConfig parts = std::move(defaults);
-  const ConfigNode robot = section.Optional("robot");
-  if (robot.IsDefined()) {
-    robot.RejectUnknownKeys({"period_steps", "start_delay_steps", "vel_gain", "ang_gain"});
-    if (robot.Has("period_steps")) parts.robot_period_steps = ReadPerRobot(robot.Required("period_steps"), num_robots, 1);
-    if (robot.Has("start_delay_steps")) {
-      parts.start_delay_steps = ReadPerRobot(robot.Required("start_delay_steps"), num_robots, 0);
+  const ConfigNode robot_node = section.Optional("robot");
+  if (robot_node.IsDefined()) {
+    robot_node.RejectUnknownKeys({"period_steps", "start_delay_steps", "vel_gain", "ang_gain"});
+    if (robot_node.Has("period_steps")) parts.robot_period_steps = ReadPerRobot(robot_node.Required("period_steps"), num_robots, 1);
+    if (robot_node.Has("start_delay_steps")) {
+      parts.start_delay_steps = ReadPerRobot(robot_node.Required("start_delay_steps"), num_robots, 0);
     }
-    parts.robot.vel_gain = robot.GetDouble("vel_gain", parts.robot.vel_gain);
-    parts.robot.ang_gain = robot.GetDouble("ang_gain", parts.robot.ang_gain);
-    Validate(robot, parts.robot);
+    parts.robot.vel_gain = robot_node.GetDouble("vel_gain", parts.robot.vel_gain);
+    parts.robot.ang_gain = robot_node.GetDouble("ang_gain", parts.robot.ang_gain);
+    Validate(robot_node, parts.robot);
   }
-  const ConfigNode sensors = section.Optional("sensors");
-  if (sensors.IsDefined()) {
-    if (!sensors.IsSequence()) sensors.Fail("expected a list of sensors, each with kind:");
+  const ConfigNode sensors_node = section.Optional("sensors");
+  if (sensors_node.IsDefined()) {
+    if (!sensors_node.IsSequence()) sensors_node.Fail("expected a list of sensors, each with kind:");
     parts.sensors.clear();
-    for (size_t i = 0; i < sensors.size(); ++i) parts.sensors.push_back(ReadSensor(sensors[i], num_robots));
+    for (size_t i = 0; i < sensors_node.size(); ++i) parts.sensors.push_back(ReadSensor(sensors_node[i], num_robots));
   }
-  const ConfigNode radio = section.Optional("radio");
-  if (radio.IsDefined()) ReadRadio(radio, num_robots, graph_must_connect, &parts.radio);
+  const ConfigNode radio_node = section.Optional("radio");
+  if (radio_node.IsDefined()) ReadRadio(radio_node, num_robots, graph_must_connect, &parts.radio);
   return parts;
 }
 
-RobotAgentSpec AgentPartsConfig::MakeSpec(std::unique_ptr<Robot> robot, uint64_t run_seed) const {
-  const int id = robot->id();
+RobotAgentSpec AgentPartsConfig::MakeSpec(std::unique_ptr<Robot> control, uint64_t run_seed) const {
+  const int id = control->id();
   const auto i = static_cast<size_t>(id);
   RobotAgentSpec spec;
   spec.robot_period_steps = robot_period_steps.at(i);
@@ -204,7 +204,7 @@ RobotAgentSpec AgentPartsConfig::MakeSpec(std::unique_ptr<Robot> robot, uint64_t
   }
   spec.radio_period_steps = radio.period_steps.at(i);
   spec.link = radio.link;
-  spec.robot = std::move(robot);
+  spec.robot = std::move(control);
   return spec;
 }
 

@@ -4,9 +4,13 @@
 #include <initializer_list>
 #include <stdexcept>
 
+#include "dream/agents/affine_formation_builder.h"
 #include "dream/agents/go_to_goal_builder.h"
+#include "dream/agents/hrvo_circle_builder.h"
+#include "dream/agents/line_deployment_builder.h"
 #include "dream/agents/noise_source.h"
 #include "dream/agents/safety_metrics.h"
+#include "dream/agents/voronoi_coverage_builder.h"
 
 namespace dream::agents {
 namespace {
@@ -25,6 +29,16 @@ const std::vector<KindEntry>& Registry() {
   static const std::vector<KindEntry> registry = {
       {GoToGoalBuilder::kKind, GoToGoalBuilder::Keys(), AgentPartsConfig::Defaults, false,
        [](const config::ConfigNode& s, int n) { return std::make_unique<GoToGoalBuilder>(s, n); }},
+      // The followers need every leader's word: the role radio's graph must connect.
+      {AffineFormationBuilder::kKind, AffineFormationBuilder::Keys(), AffineFormationBuilder::DefaultParts, true,
+       [](const config::ConfigNode& s, int n) { return std::make_unique<AffineFormationBuilder>(s, n); }},
+      {VoronoiCoverageBuilder::kKind, VoronoiCoverageBuilder::Keys(), VoronoiCoverageBuilder::DefaultParts, false,
+       [](const config::ConfigNode& s, int n) { return std::make_unique<VoronoiCoverageBuilder>(s, n); }},
+      {HrvoCircleBuilder::kKind, HrvoCircleBuilder::Keys(), HrvoCircleBuilder::DefaultParts, false,
+       [](const config::ConfigNode& s, int n) { return std::make_unique<HrvoCircleBuilder>(s, n); }},
+      // Consensus (eq. 3.7) needs a symmetric, connected graph.
+      {LineDeploymentBuilder::kKind, LineDeploymentBuilder::Keys(), LineDeploymentBuilder::DefaultParts, true,
+       [](const config::ConfigNode& s, int n) { return std::make_unique<LineDeploymentBuilder>(s, n); }},
   };
   return registry;
 }

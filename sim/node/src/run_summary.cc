@@ -7,8 +7,8 @@
 namespace dream::sim {
 
 std::string RunSummaryJson(const config::RunConfig& config, const RunOutcome& outcome,
-                           const UnicycleWorld& world, const std::string& log_file_name) {
-  const RunReport report = RunReport::FromViolations(world.step(), world.violations(), world.params().time_step_s);
+                           const World& world, const std::string& log_file_name) {
+  const RunReport report = RunReport::FromViolations(world.step(), world.violations(), world.time_step_s());
   nlohmann::ordered_json json;
   json["run"] = config.name;
   json["config"] = config.source;

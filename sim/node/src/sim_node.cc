@@ -18,7 +18,7 @@
 namespace dream::sim {
 namespace {
 
-constexpr int64_t kMicrosPerStep = 33000;  // 0.033 s, the Robotarium's time step
+constexpr int64_t kMicrosPerStep = 33000;  // 0.033 s, the Robotarium's time step (real-time pacing)
 
 double SecondsBetween(std::chrono::steady_clock::time_point from, std::chrono::steady_clock::time_point to) {
   return std::chrono::duration<double>(to - from).count();
@@ -42,7 +42,7 @@ const char* EndName(RunOutcome::End end) {
   return "unknown";
 }
 
-SimNode::SimNode(lcm::LcmInterface& lcm, UnicycleWorld& world, RunRecorder* recorder, SimNodeOptions options)
+SimNode::SimNode(lcm::LcmInterface& lcm, World& world, RunRecorder* recorder, SimNodeOptions options)
     : lcm_(lcm),
       world_(world),
       recorder_(recorder),
@@ -62,7 +62,7 @@ SimNode::SimNode(lcm::LcmInterface& lcm, UnicycleWorld& world, RunRecorder* reco
   }
 }
 
-int64_t SimNode::SimUtime() const { return world_.step() * kMicrosPerStep; }
+int64_t SimNode::SimUtime() const { return world_.utime(); }
 
 void SimNode::OnAnyMessage(const std::string& channel, const void* data, int size) {
   // The world's own channels are recorded once, when published; udpm's
@@ -174,16 +174,16 @@ void SimNode::PublishStep(bool record) {
   obstacles_t obstacles;
   obstacles.utime = SimUtime();
   obstacles.step = world_.step();
-  for (const RectangleObstacle& obstacle : world_.obstacles()) {
+  world_.GetObstacleStates(&obstacle_states_);
+  for (const ObstacleState& obstacle : obstacle_states_) {
     rectangle_obstacle_t o;
-    o.id = obstacle.id();
-    o.center_x = obstacle.center_m().x();
-    o.center_y = obstacle.center_m().y();
-    o.width = obstacle.width_m();
-    o.height = obstacle.height_m();
-    const Eigen::Vector2d velocity = obstacle.velocity_mps();
-    o.vx = velocity.x();
-    o.vy = velocity.y();
+    o.id = obstacle.id;
+    o.center_x = obstacle.center_x_m;
+    o.center_y = obstacle.center_y_m;
+    o.width = obstacle.width_m;
+    o.height = obstacle.height_m;
+    o.vx = obstacle.vx_mps;
+    o.vy = obstacle.vy_mps;
     obstacles.obstacles.push_back(o);
   }
   obstacles.num_obstacles = static_cast<int32_t>(obstacles.obstacles.size());
@@ -338,10 +338,12 @@ RunOutcome SimNode::Run(const std::atomic<bool>& stop) {
         next_realtime_step += step_period;
         bool all_done = options_.stop_when_done;
         for (const RobotSlot& robot : robots_) all_done = all_done && robot.done;
-        if (world_.step() >= options_.max_steps || all_done) {
+        const bool world_ended = world_.step() >= world_.last_step();
+        if (world_.step() >= options_.max_steps || all_done || world_ended) {
           PublishStep(true);
-          return Finish(RunOutcome::End::kFinished,
-                        all_done ? "every robot reported done" : "reached the step limit");
+          return Finish(RunOutcome::End::kFinished, all_done      ? "every robot reported done"
+                                                    : world_ended ? "the world has no more steps (end of the recording)"
+                                                                  : "reached the step limit");
         }
         PublishStep(true);
         step_published_ = last_resend_ = Clock::now();

@@ -59,6 +59,7 @@ UnicycleWorld::UnicycleWorld(const WorldParams& params, std::vector<Pose2> initi
       obstacles_(BuildObstacles(obstacle_specs)),
       command_step_(poses_.size(), kNoCommand),
       command_hold_steps_(CommandHoldSteps(params.time_step_s, params.command_timeout_s)),
+      step_utime_(std::llround(params.time_step_s * 1e6)),
       collision_center_x_m_(poses_.size()),
       collision_center_y_m_(poses_.size()),
       collision_grid_(std::make_unique<CollisionGrid>(poses_.size(), params.collision_diameter_m, params.arena)) {
@@ -85,6 +86,15 @@ UnicycleWorld::UnicycleWorld(const WorldParams& params, std::vector<Pose2> initi
 UnicycleWorld::~UnicycleWorld() = default;
 UnicycleWorld::UnicycleWorld(UnicycleWorld&&) noexcept = default;
 UnicycleWorld& UnicycleWorld::operator=(UnicycleWorld&&) noexcept = default;
+
+void UnicycleWorld::GetObstacleStates(std::vector<ObstacleState>* states) const {
+  states->clear();
+  for (const RectangleObstacle& obstacle : obstacles_) {
+    const Eigen::Vector2d velocity = obstacle.velocity_mps();
+    states->push_back(ObstacleState{obstacle.id(), obstacle.center_m().x(), obstacle.center_m().y(),
+                                    obstacle.width_m(), obstacle.height_m(), velocity.x(), velocity.y()});
+  }
+}
 
 void UnicycleWorld::CheckRobotId(int robot_id, const char* caller) const {
   if (robot_id < 0 || robot_id >= num_robots()) {

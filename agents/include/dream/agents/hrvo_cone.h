@@ -22,16 +22,22 @@ struct HrvoCone {
   static HrvoCone Velocity(const Eigen::Vector2d& relative_position_m, const Eigen::Vector2d& apex_mps,
                            double combined_radius_m);
 
-  /// The hybrid reciprocal velocity obstacle (Snape et al. 2011): the leg on
-  /// the side own velocity already passes on is the reciprocal one (apex
-  /// shifted to the mean of both velocities, so each robot takes half the
-  /// avoidance), the other leg stays that of the plain VO (crossing over to
-  /// the other side costs the whole avoidance). Both robots of a pair judge the
-  /// side from the same relative velocity, so they pick the same side; an
-  /// exact tie counts as the right side. Overlapping robots get the reciprocal
-  /// half-plane: no approaching faster than the mean velocity.
+  /// The hybrid reciprocal velocity obstacle (Snape et al. 2011). The leg on
+  /// the side the robot passes on is the reciprocal one (apex shifted to the
+  /// mean of both velocities, so each robot takes half the avoidance); the
+  /// other leg stays that of the plain VO (crossing over costs the whole
+  /// avoidance). `pass_left`: the robot passes with the neighbour on its
+  /// right (see PassesLeft). Overlapping robots get the reciprocal
+  /// half-plane: neither may approach faster than their mean velocity.
   static HrvoCone Hybrid(const HrvoNeighbour& neighbour, const Eigen::Vector2d& own_velocity_mps,
-                         double combined_radius_m);
+                         double combined_radius_m, bool pass_left);
+
+  /// HRVO's side rule: true when the relative velocity own - other points
+  /// counter-clockwise of the bearing (passing on the left). The neighbour,
+  /// judging from the same two velocities, gets the same answer, so the pair
+  /// pass each other on the same side; an exact tie counts as the right side.
+  static bool PassesLeft(const Eigen::Vector2d& relative_position_m, const Eigen::Vector2d& own_velocity_mps,
+                         const Eigen::Vector2d& other_velocity_mps);
 
   /// True when v is inside the open wedge by more than `tolerance` (m/s) from
   /// each leg's line.

@@ -25,6 +25,10 @@ namespace dream::agents {
 ///    an empty set becomes {zero} after each filter;
 ///  - return the first candidate nearest the preferred velocity, clipped to
 ///    max speed.
+/// Where the thesis compares equal quantities (mirror-image samples, legs
+/// of overlapping robots), numpy's result hangs on the last bit of its own
+/// sin/cos; here differences below 1e-12 count as ties (both VO legs, lowest
+/// sample index), as exact arithmetic would have it.
 /// The thesis crashes (IndexError) when a neighbour other than the last
 /// removes every candidate; here the set stays empty and the result is zero.
 class HrvoThesis final : public HrvoAvoidance {

@@ -34,10 +34,20 @@ struct MovementReading {
   std::vector<NeighbourDetection> neighbours;
 };
 
+/// An obstacle's rectangle as an obstacle sensor sees it (axis-aligned).
+struct ObstacleRectangle {
+  Eigen::Vector2d center_m = Eigen::Vector2d::Zero();  ///< world frame
+  Eigen::Vector2d size_m = Eigen::Vector2d::Zero();    ///< width (x), height (y)
+};
+
 /// Closest points of obstacles within range (one per obstacle).
 struct ObstacleReading {
   int64_t step = 0;
   std::vector<Eigen::Vector2d> closest_points_m;  ///< world frame
+  /// The same obstacles' rectangles, in the same order, shifted by the same
+  /// noise as their closest points (what the free space around the robot
+  /// is, e.g. for coverage).
+  std::vector<ObstacleRectangle> rectangles;
 };
 
 }  // namespace dream::agents

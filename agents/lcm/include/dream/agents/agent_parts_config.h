@@ -64,9 +64,9 @@ struct AgentPartsConfig {
   static AgentPartsConfig Read(const config::ConfigNode& section, int num_robots, AgentPartsConfig defaults,
                                bool graph_must_connect);
 
-  /// The spec of robot `robot_id` around `robot`, sensors and radio seeded
-  /// from `run_seed`.
-  RobotAgentSpec MakeSpec(std::unique_ptr<Robot> robot, uint64_t run_seed) const;
+  /// The spec of robot `control->id()` around its control law `control`,
+  /// sensors and radio seeded from `run_seed`.
+  RobotAgentSpec MakeSpec(std::unique_ptr<Robot> control, uint64_t run_seed) const;
 };
 
 }  // namespace dream::agents

@@ -21,6 +21,16 @@ class ConfigNode {
 
   ConfigNode() = default;  ///< an undefined node
   ConfigNode(YAML::Node node, std::string file, std::string key);
+  ConfigNode(const ConfigNode&) = default;
+  /// Rebinds to `other`'s node. (YAML::Node's own assignment would overwrite
+  /// the node this one points at, silently editing the loaded config.)
+  ConfigNode& operator=(const ConfigNode& other) {
+    node_.reset(other.node_);
+    file_ = other.file_;
+    key_ = other.key_;
+    line_ = other.line_;
+    return *this;
+  }
 
   bool Has(const std::string& key) const;
   /// The child `key`. @throws ConfigError if it is missing.

@@ -4,7 +4,7 @@
 
 #include "dream/config/run_config.h"
 #include "dream/sim/run_outcome.h"
-#include "dream/sim/unicycle_world.h"
+#include "dream/sim/world.h"
 
 namespace dream::sim {
 
@@ -14,6 +14,6 @@ namespace dream::sim {
 /// lost agents, bad messages per channel, and final poses.
 /// See docs/run-outputs.md for every field.
 std::string RunSummaryJson(const config::RunConfig& config, const RunOutcome& outcome,
-                           const UnicycleWorld& world, const std::string& log_file_name);
+                           const World& world, const std::string& log_file_name);
 
 }  // namespace dream::sim

@@ -10,7 +10,9 @@
 #include "dream/lcm/lcm_interface.h"
 #include "dream/sim/run_outcome.h"
 #include "dream/sim/sim_node_options.h"
+#include "dream/sim/obstacle_state.h"
 #include "dream/sim/unicycle_world.h"
+#include "dream/sim/world.h"
 
 namespace dream {
 class velocity_command_t;
@@ -20,8 +22,11 @@ namespace dream::sim {
 
 class RunRecorder;
 
-/// The simulator on the bus: publishes the world, consumes commands, records
-/// the run.
+/// A world on the bus: publishes it, consumes commands, records the run. The
+/// world is the in-tree simulator (UnicycleWorld) or any other World, such as
+/// the bridge's replay of a lab run (bridge::LabReplayWorld); agents cannot
+/// tell which. The run ends at the step limit, when every robot reports done,
+/// or when the world has no more steps (World::last_step()).
 ///
 /// Writes DREAM_OBSTACLES, DREAM_STATUS and then DREAM_POSES (the trigger
 /// agents answer) for every step; reads DREAM_CMD_<id>. Records its own
@@ -37,7 +42,7 @@ class SimNode {
  public:
   /// @param recorder may be null (no log). Must outlive the node.
   /// @throws std::invalid_argument when options are invalid.
-  SimNode(lcm::LcmInterface& lcm, UnicycleWorld& world, RunRecorder* recorder, SimNodeOptions options);
+  SimNode(lcm::LcmInterface& lcm, World& world, RunRecorder* recorder, SimNodeOptions options);
 
   /// Runs to the end; returns how it ended. Handles every subscription on
   /// `lcm`, so in one process it also drives the agents sharing the bus.
@@ -73,7 +78,8 @@ class SimNode {
   int64_t SimUtime() const;
 
   lcm::LcmInterface& lcm_;
-  UnicycleWorld& world_;
+  World& world_;
+  std::vector<ObstacleState> obstacle_states_;  // scratch for PublishStep
   RunRecorder* recorder_;
   SimNodeOptions options_;
   lcm::BadMessageLog bad_messages_;

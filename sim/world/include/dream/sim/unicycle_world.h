@@ -10,6 +10,7 @@
 #include "dream/sim/step_events.h"
 #include "dream/sim/unicycle_command.h"
 #include "dream/sim/violation_counts.h"
+#include "dream/sim/world.h"
 #include "dream/sim/world_params.h"
 
 namespace dream::sim {
@@ -41,13 +42,13 @@ class CollisionGrid;
 // diameter), giving exactly the brute-force pair count in O(N). Step() does
 // not allocate once its event lists have grown to their working size.
 // There is no robot-count limit here; the configuration layer enforces 50.
-class UnicycleWorld {
+class UnicycleWorld final : public World {
  public:
   // Throws std::invalid_argument if params or an obstacle spec is invalid,
   // obstacle ids repeat, or a pose is not finite.
   UnicycleWorld(const WorldParams& params, std::vector<Pose2> initial_poses,
                 const std::vector<RectangleObstacleSpec>& obstacle_specs = {});
-  ~UnicycleWorld();
+  ~UnicycleWorld() override;
   UnicycleWorld(UnicycleWorld&&) noexcept;
   UnicycleWorld& operator=(UnicycleWorld&&) noexcept;
   UnicycleWorld(const UnicycleWorld&) = delete;
@@ -56,24 +57,29 @@ class UnicycleWorld {
   // Replaces the robot's held velocity (unsaturated, as the official
   // set_velocities stores it) and restarts its command timeout. Throws
   // std::out_of_range for a bad id, std::invalid_argument if not finite.
-  void SetCommand(int robot_id, const UnicycleCommand& command);
+  void SetCommand(int robot_id, const UnicycleCommand& command) override;
   // Zeroes the held velocity (e.g. the robot's agent was lost). Throws
   // std::out_of_range for a bad id.
-  void StopRobot(int robot_id);
+  void StopRobot(int robot_id) override;
 
-  void Step();
+  void Step() override;
 
-  int num_robots() const { return static_cast<int>(poses_.size()); }
+  int num_robots() const override { return static_cast<int>(poses_.size()); }
   // Poses at time step() * dt.
-  const std::vector<Pose2>& poses() const { return poses_; }
+  const std::vector<Pose2>& poses() const override { return poses_; }
   // Held velocities: as set by SetCommand, or saturated by the last Step.
-  const std::vector<UnicycleCommand>& velocities() const { return velocities_; }
+  const std::vector<UnicycleCommand>& velocities() const override { return velocities_; }
   // Obstacles at time step() * dt (centre, size, velocity).
   const std::vector<RectangleObstacle>& obstacles() const { return obstacles_; }
+  // The same as plain states, for whoever publishes any World.
+  void GetObstacleStates(std::vector<ObstacleState>* states) const override;
   // Number of steps taken.
-  int64_t step() const { return step_; }
+  int64_t step() const override { return step_; }
+  // step() * the time step in whole microseconds (33,000 on the Robotarium).
+  int64_t utime() const override { return step_ * step_utime_; }
+  double time_step_s() const override { return params_.time_step_s; }
   double time_s() const { return static_cast<double>(step_) * params_.time_step_s; }
-  const ViolationCounts& violations() const { return violations_; }
+  const ViolationCounts& violations() const override { return violations_; }
   // What the most recent Step() found (step == -1 before the first).
   const StepEvents& last_step_events() const { return events_; }
   const WorldParams& params() const { return params_; }
@@ -95,6 +101,7 @@ class UnicycleWorld {
   // Step index at which each robot's current command was set, or kNoCommand.
   std::vector<int64_t> command_step_;
   int64_t command_hold_steps_ = 0;
+  int64_t step_utime_ = 0;
   int64_t step_ = 0;
   ViolationCounts violations_{};
   StepEvents events_{};

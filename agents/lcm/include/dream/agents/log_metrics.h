@@ -1,0 +1,18 @@
+#pragma once
+
+#include <string>
+
+#include "dream/agents/controller_factory.h"
+#include "dream/agents/metrics_report.h"
+
+namespace dream::agents {
+
+/// The experiment's metrics (factory.MakeMetrics()) computed from a run's
+/// log: every DREAM_POSES step in order, with the obstacles last published
+/// before it. The same code judges a simulated run and a lab run imported as
+/// a log; `dream run` puts the result under "metrics" in summary.json.
+/// Undecodable records are skipped. @throws std::runtime_error when the log
+/// cannot be opened or ends inside a record.
+MetricsReport MetricsFromLog(const ControllerFactory& factory, const std::string& log_path);
+
+}  // namespace dream::agents

@@ -1,0 +1,225 @@
+#include "dream/agents/affine_formation_builder.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "dream/agents/hrvo_config.h"
+
+namespace dream::agents {
+namespace {
+
+using config::ConfigNode;
+
+std::string Number(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+Eigen::Vector2d ReadPoint(const ConfigNode& node) {
+  const std::vector<double> xy = node.AsDoubles();
+  if (xy.size() != 2) node.Fail("expected [x, y] in metres, got " + std::to_string(xy.size()) + " numbers");
+  return {xy[0], xy[1]};
+}
+
+AffineManeuverParams ReadManeuver(const ConfigNode& node) {
+  if (!node.IsSequence() || node.size() == 0) {
+    node.Fail("expected a list of keyframes {step, scale_x, scale_y, rotation_rad, translation}");
+  }
+  AffineManeuverParams maneuver;
+  for (size_t k = 0; k < node.size(); ++k) {
+    const ConfigNode item = node[k];
+    item.RejectUnknownKeys({"step", "scale_x", "scale_y", "rotation_rad", "translation"});
+    AffineKeyframe frame;
+    frame.step = item.Required("step").AsInt();
+    frame.scale_x = item.GetDouble("scale_x", frame.scale_x);
+    frame.scale_y = item.GetDouble("scale_y", frame.scale_y);
+    frame.rotation_rad = item.GetDouble("rotation_rad", frame.rotation_rad);
+    if (item.Has("translation")) frame.translation_m = ReadPoint(item.Required("translation"));
+    maneuver.keyframes.push_back(frame);
+    std::string error;
+    if (!maneuver.IsValid(&error)) item.Fail(error);
+  }
+  return maneuver;
+}
+
+// The plan must keep every target inside the arena and apart, or the robots
+// cannot follow it: checked at every step, so a bad keyframe fails before the run.
+void CheckPlan(const ConfigNode& node, const AffineManeuverParams& params, const std::vector<Eigen::Vector2d>& nominal,
+               const HrvoParams& arena, double min_spacing_m) {
+  const AffineManeuver maneuver(params);
+  constexpr double kWallMarginM = 0.1;
+  for (int64_t step = 0; step <= maneuver.last_step(); ++step) {
+    const AffineTransform map = maneuver.At(double(step));
+    std::vector<Eigen::Vector2d> targets;
+    for (const Eigen::Vector2d& r : nominal) targets.push_back(map.Apply(r));
+    for (size_t i = 0; i < targets.size(); ++i) {
+      const Eigen::Vector2d& p = targets[i];
+      if (p.x() < arena.x_min_m + kWallMarginM || p.x() > arena.x_max_m - kWallMarginM ||
+          p.y() < arena.y_min_m + kWallMarginM || p.y() > arena.y_max_m - kWallMarginM) {
+        node.Fail("at step " + std::to_string(step) + " robot " + std::to_string(i) + "'s target (" + Number(p.x()) +
+                  ", " + Number(p.y()) + ") is not 0.1 m inside the arena");
+      }
+      for (size_t j = 0; j < i; ++j) {
+        const double d = (p - targets[j]).norm();
+        if (d < min_spacing_m) {
+          node.Fail("at step " + std::to_string(step) + " the targets of robots " + std::to_string(j) + " and " +
+                    std::to_string(i) + " are " + Number(d) + " m apart, less than min_target_spacing_m " +
+                    Number(min_spacing_m));
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+
+AgentPartsConfig AffineFormationBuilder::DefaultParts(int num_robots) {
+  AgentPartsConfig parts = AgentPartsConfig::Defaults(num_robots);
+  const auto n = static_cast<size_t>(num_robots);
+  SensorConfig odometry;
+  odometry.kind = SensorConfig::Kind::kOdometry;
+  odometry.period_steps.assign(n, 1);
+  SensorConfig movement;
+  movement.kind = SensorConfig::Kind::kMovement;
+  movement.period_steps.assign(n, 1);
+  parts.sensors = {odometry, movement};
+  parts.radio.kind = RadioConfig::Kind::kRole;
+  parts.radio.period_steps.assign(n, 1);
+  return parts;
+}
+
+AffineFormationBuilder::AffineFormationBuilder(const ConfigNode& section, int num_robots) {
+  // The stress weights and the leaders are the role radio's graph and leaders:
+  // one matrix says both who hears whom and how much each neighbour counts.
+  const ConfigNode radio = section.Required("radio");
+  const AgentPartsConfig parts = AgentPartsConfig::Read(section, num_robots, DefaultParts(num_robots), true);
+  if (parts.radio.kind != RadioConfig::Kind::kRole) {
+    radio.Required("kind").Fail(
+        "an affine formation needs `kind: role` (leaders publish, followers hear their "
+        "neighbours in `graph`, the stress weights)");
+  }
+
+  StressFormationParams formation;
+  formation.weights = parts.radio.graph;
+  formation.leaders = parts.radio.leaders;
+  const ConfigNode nominal = section.Required("nominal_positions");
+  if (!nominal.IsSequence() || nominal.size() != static_cast<size_t>(num_robots)) {
+    nominal.Fail("expected one [x, y] per robot (" + std::to_string(num_robots) + "), got " +
+                 (nominal.IsSequence() ? std::to_string(nominal.size()) : std::string("no list")));
+  }
+  for (size_t i = 0; i < nominal.size(); ++i) formation.nominal_m.push_back(ReadPoint(nominal[i]));
+  formation.equilibrium_tolerance_m = section.GetDouble("equilibrium_tolerance_m", formation.equilibrium_tolerance_m);
+  std::string error;
+  if (!formation.IsValid(&error)) {
+    // Point at the key that holds the fault; the message says which field.
+    // (ConfigNode wraps a YAML::Node, whose assignment rebinds content: never reassign one.)
+    std::string message = error;
+    for (size_t pos = message.find("nominal_m"); pos != std::string::npos; pos = message.find("nominal_m")) {
+      message.replace(pos, std::string("nominal_m").size(), "nominal_positions");
+    }
+    if (error.rfind("weights:", 0) == 0) radio.Required("graph").Fail("stress " + message);
+    if (error.rfind("leaders:", 0) == 0) (radio.Has("leaders") ? radio.Required("leaders") : radio).Fail(message);
+    if (error.rfind("nominal_m:", 0) == 0) nominal.Fail(message.substr(std::string("nominal_positions: ").size()));
+    (section.Has("equilibrium_tolerance_m") ? section.Required("equilibrium_tolerance_m") : section).Fail(message);
+  }
+  formation_ = std::make_unique<StressFormation>(formation);
+
+  const double time_step_s = section.GetDouble("time_step_s", 0.033);
+  if (!(time_step_s > 0.0) || !std::isfinite(time_step_s)) {
+    section.Required("time_step_s").Fail("must be > 0 s, got " + Number(time_step_s));
+  }
+
+  HrvoRobotParams hrvo_defaults;
+  hrvo_defaults.hrvo.safety_radius_m = 0.2;  // the formation keeps robots >= 0.3 m apart
+  hrvo_ = ReadHrvoRobotParams(section, hrvo_defaults);
+
+  maneuver_ = ReadManeuver(section.Required("maneuver"));
+  const double min_spacing_m = section.GetDouble("min_target_spacing_m", 0.25);
+  if (!(min_spacing_m >= 0.0) || !std::isfinite(min_spacing_m)) {
+    section.Required("min_target_spacing_m").Fail("must be >= 0 m, got " + Number(min_spacing_m));
+  }
+  CheckPlan(section.Required("maneuver"), maneuver_, formation_->nominal_m(), hrvo_.hrvo, min_spacing_m);
+
+  const std::string drive = section.GetString("drive", "reversible");
+  if (drive != "reversible" && drive != "thesis") {
+    section.Required("drive").Fail("unknown drive '" + drive + "'; allowed: reversible, thesis");
+  }
+  leader_.reversible_drive = follower_.reversible_drive = drive == "reversible";
+
+  leader_.maneuver = maneuver_;
+  leader_.time_step_s = time_step_s;
+  const ConfigNode leader = section.Optional("leader");
+  if (leader.IsDefined()) {
+    leader.RejectUnknownKeys({"gain", "max_speed_mps"});
+    leader_.gain = leader.GetDouble("gain", leader_.gain);
+    leader_.max_speed_mps = leader.GetDouble("max_speed_mps", leader_.max_speed_mps);
+  }
+  if (!leader_.IsValid(&error)) (leader.IsDefined() ? leader : section).Fail(error);
+
+  follower_.time_step_s = time_step_s;
+  const ConfigNode follower = section.Optional("follower");
+  if (follower.IsDefined()) {
+    follower.RejectUnknownKeys(
+        {"law", "gain", "max_speed_mps", "hrvo_engage_distance_m", "hrvo_horizon_s", "max_message_age_steps"});
+    const std::string law = follower.GetString("law", "zhao");
+    if (law == "zhao") {
+      follower_.law = AffineFollowerParams::Law::kZhao;
+    } else if (law == "thesis") {
+      follower_.law = AffineFollowerParams::Law::kThesis;
+    } else {
+      follower.Required("law").Fail("unknown follower law '" + law + "'; allowed: zhao, thesis");
+    }
+    follower_.gain = follower.GetDouble("gain", follower_.gain);
+    follower_.max_speed_mps = follower.GetDouble("max_speed_mps", follower_.max_speed_mps);
+    follower_.hrvo_engage_distance_m = follower.GetDouble("hrvo_engage_distance_m", follower_.hrvo_engage_distance_m);
+    follower_.hrvo_horizon_s = follower.GetDouble("hrvo_horizon_s", follower_.hrvo_horizon_s);
+    follower_.max_message_age_steps =
+        static_cast<int>(follower.GetInt("max_message_age_steps", follower_.max_message_age_steps));
+  }
+  for (int f : formation_->followers()) {
+    AffineFollowerParams check = follower_;
+    check.neighbours = formation_->Neighbours(f);
+    if (!check.IsValid(&error))
+      (follower.IsDefined() ? follower : section).Fail("follower " + std::to_string(f) + ": " + error);
+  }
+
+  metrics_.nominal_m = formation_->nominal_m();
+  metrics_.leaders = formation_->leaders();
+  const ConfigNode metrics = section.Optional("metrics");
+  if (metrics.IsDefined()) {
+    metrics.RejectUnknownKeys({"tolerance_m", "converged_from_step", "obstacle_pairs", "series_every_steps"});
+    metrics_.tolerance_m = metrics.GetDouble("tolerance_m", metrics_.tolerance_m);
+    metrics_.converged_from_step = metrics.GetInt("converged_from_step", metrics_.converged_from_step);
+    metrics_.series_every_steps = static_cast<int>(metrics.GetInt("series_every_steps", metrics_.series_every_steps));
+    if (metrics.Has("obstacle_pairs")) {
+      const ConfigNode pairs = metrics.Required("obstacle_pairs");
+      if (!pairs.IsSequence()) pairs.Fail("expected a list of [id, id] obstacle pairs");
+      for (size_t k = 0; k < pairs.size(); ++k) {
+        const std::vector<double> ids = pairs[k].AsDoubles();
+        if (ids.size() != 2 || ids[0] != std::floor(ids[0]) || ids[1] != std::floor(ids[1])) {
+          pairs[k].Fail("expected two obstacle ids [a, b] (their positions in the run config's obstacles list)");
+        }
+        metrics_.obstacle_pairs.push_back({static_cast<int>(ids[0]), static_cast<int>(ids[1])});
+      }
+    }
+    if (!metrics_.IsValid(&error)) metrics.Fail(error);
+  }
+}
+
+std::unique_ptr<Robot> AffineFormationBuilder::MakeRobot(int robot_id, const RobotParams& params) const {
+  if (formation_->IsLeader(robot_id)) {
+    AffineLeaderParams leader = leader_;
+    leader.nominal_m = formation_->nominal_m().at(static_cast<size_t>(robot_id));
+    return std::make_unique<AffineLeaderRobot>(robot_id, params, leader);
+  }
+  AffineFollowerParams follower = follower_;
+  follower.neighbours = formation_->Neighbours(robot_id);
+  return std::make_unique<AffineFollowerRobot>(robot_id, params, hrvo_, follower);
+}
+
+std::unique_ptr<ExperimentMetrics> AffineFormationBuilder::MakeMetrics() const {
+  return std::make_unique<AffineFormationMetrics>(metrics_);
+}
+
+}  // namespace dream::agents

@@ -1,0 +1,28 @@
+#include "dream/agents/hrvo_config.h"
+
+namespace dream::agents {
+
+HrvoRobotParams ReadHrvoRobotParams(const config::ConfigNode& section, HrvoRobotParams defaults) {
+  HrvoRobotParams params = defaults;
+  const config::ConfigNode node = section.Optional("hrvo");
+  if (!node.IsDefined()) return params;
+  node.RejectUnknownKeys({"variant", "safety_radius_m", "check_boundaries", "boundary_horizon_s"});
+  if (node.Has("variant")) {
+    const std::string variant = node.Required("variant").AsString();
+    if (variant == "exact") {
+      params.variant = HrvoVariant::kExact;
+    } else if (variant == "thesis") {
+      params.variant = HrvoVariant::kThesis;
+    } else {
+      node.Required("variant").Fail("unknown HRVO variant '" + variant + "'; allowed: exact, thesis");
+    }
+  }
+  params.hrvo.safety_radius_m = node.GetDouble("safety_radius_m", params.hrvo.safety_radius_m);
+  params.hrvo.check_boundaries = node.GetBool("check_boundaries", params.hrvo.check_boundaries);
+  params.hrvo.boundary_horizon_s = node.GetDouble("boundary_horizon_s", params.hrvo.boundary_horizon_s);
+  std::string error;
+  if (!params.IsValid(&error)) node.Fail(error);
+  return params;
+}
+
+}  // namespace dream::agents

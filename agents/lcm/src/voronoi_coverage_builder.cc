@@ -1,0 +1,68 @@
+#include "dream/agents/voronoi_coverage_builder.h"
+
+namespace dream::agents {
+namespace {
+
+// The params' messages start with the field's name, which is also its key:
+// point at that key's line when the config has it.
+[[noreturn]] void FailAtKey(const config::ConfigNode& section, const std::string& error) {
+  const std::string key = error.substr(0, error.find(' '));
+  if (section.Has(key)) section.Required(key).Fail(error);
+  section.Fail(error);
+}
+
+}  // namespace
+
+AgentPartsConfig VoronoiCoverageBuilder::DefaultParts(int num_robots) {
+  AgentPartsConfig parts = AgentPartsConfig::Defaults(num_robots);
+  const auto n = static_cast<size_t>(num_robots);
+  SensorConfig obstacle;
+  obstacle.kind = SensorConfig::Kind::kObstacle;
+  obstacle.period_steps.assign(n, 1);
+  obstacle.obstacle.range_m = 1.0;
+  parts.sensors.push_back(obstacle);
+  parts.radio.kind = RadioConfig::Kind::kRange;
+  parts.radio.range_m = 2.0;
+  parts.radio.period_steps.assign(n, 3);
+  return parts;
+}
+
+VoronoiCoverageBuilder::VoronoiCoverageBuilder(const config::ConfigNode& section, int num_robots) {
+  (void)num_robots;
+  VoronoiCellParams& cell = params_.cell;
+  cell.disc_radius_m = section.GetDouble("disc_radius_m", cell.disc_radius_m);
+  cell.disc_sides = static_cast<int>(section.GetInt("disc_sides", cell.disc_sides));
+  cell.wall_margin_m = section.GetDouble("wall_margin_m", cell.wall_margin_m);
+  cell.robot_buffer_m = section.GetDouble("robot_buffer_m", cell.robot_buffer_m);
+  cell.obstacle_buffer_m = section.GetDouble("obstacle_buffer_m", cell.obstacle_buffer_m);
+  params_.gain = section.GetDouble("gain", params_.gain);
+  params_.max_speed_mps = section.GetDouble("max_speed_mps", params_.max_speed_mps);
+  params_.tolerance_m = section.GetDouble("tolerance_m", params_.tolerance_m);
+  params_.done_after_still_steps =
+      static_cast<int>(section.GetInt("done_after_still_steps", params_.done_after_still_steps));
+  params_.radio_rounds_before_moving =
+      static_cast<int>(section.GetInt("radio_rounds_before_moving", params_.radio_rounds_before_moving));
+  std::string error;
+  if (!params_.IsValid(&error)) FailAtKey(section, error);
+
+  metrics_.arena_min_m = cell.arena_min_m;
+  metrics_.arena_max_m = cell.arena_max_m;
+  metrics_.step_s = params_.step_s;
+  metrics_.sample_steps = static_cast<int>(section.GetInt("coverage_sample_steps", metrics_.sample_steps));
+  if (metrics_.sample_steps < 1) {
+    section.Required("coverage_sample_steps").Fail("must be >= 1, got " + std::to_string(metrics_.sample_steps));
+  }
+  metrics_.still_speed_mps = section.GetDouble("still_speed_mps", metrics_.still_speed_mps);
+  metrics_.still_window_steps = static_cast<int>(section.GetInt("still_window_steps", metrics_.still_window_steps));
+  if (!metrics_.IsValid(&error)) FailAtKey(section, error);
+}
+
+std::unique_ptr<Robot> VoronoiCoverageBuilder::MakeRobot(int robot_id, const RobotParams& params) const {
+  return std::make_unique<VoronoiCoverageRobot>(robot_id, params, params_);
+}
+
+std::unique_ptr<ExperimentMetrics> VoronoiCoverageBuilder::MakeMetrics() const {
+  return std::make_unique<VoronoiCoverageMetrics>(metrics_);
+}
+
+}  // namespace dream::agents

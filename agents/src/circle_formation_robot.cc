@@ -1,0 +1,74 @@
+#include "dream/agents/circle_formation_robot.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace dream::agents {
+
+bool CircleFormationParams::IsValid(std::string* error) const {
+  auto fail = [error](const std::string& message) {
+    if (error != nullptr) *error = message;
+    return false;
+  };
+  if (goals_m.empty()) return fail("goals_m must hold at least one point");
+  for (size_t i = 0; i < goals_m.size(); ++i) {
+    if (!goals_m[i].allFinite()) return fail("goals_m[" + std::to_string(i) + "] must be finite");
+  }
+  if (num_robots < 1) return fail("num_robots must be >= 1, got " + std::to_string(num_robots));
+  if (!(tolerance_m > 0.0) || !std::isfinite(tolerance_m)) {
+    return fail("tolerance_m must be > 0, got " + std::to_string(tolerance_m));
+  }
+  if (!(max_speed_mps > 0.0 && max_speed_mps <= 0.2)) {
+    return fail("max_speed_mps must be in (0, 0.2], got " + std::to_string(max_speed_mps));
+  }
+  return true;
+}
+
+namespace {
+const CircleFormationParams& Checked(const CircleFormationParams& params) {
+  std::string error;
+  if (!params.IsValid(&error)) throw std::invalid_argument(error);
+  return params;
+}
+}  // namespace
+
+CircleFormationRobot::CircleFormationRobot(int id, const RobotParams& robot_params,
+                                           const HrvoRobotParams& hrvo_params, const CircleFormationParams& params)
+    : HrvoRobot(id, robot_params, hrvo_params),
+      params_(Checked(params)),
+      progress_(params.num_robots, static_cast<int>(params.goals_m.size())) {
+  if (id >= params.num_robots) {
+    throw std::invalid_argument("robot id " + std::to_string(id) + " is not below num_robots " +
+                                std::to_string(params.num_robots));
+  }
+}
+
+std::optional<std::vector<uint8_t>> CircleFormationRobot::OnRadio(const std::vector<RadioMessage>& heard) {
+  for (const RadioMessage& message : heard) {
+    if (!progress_.Merge(message.payload)) CountBadRadioMessage();
+  }
+  progress_.Set(id(), reached_);
+  // Everyone (as far as we know) has reached the point we hold: go to the next.
+  const bool holding = reached_ == goal_index_ + 1;
+  if (holding && reached_ < static_cast<int>(params_.goals_m.size()) && progress_.MinState() >= reached_) {
+    goal_index_ = reached_;
+  }
+  return progress_.Encode();
+}
+
+UnicycleCommand CircleFormationRobot::Update(int64_t step) {
+  (void)step;
+  if (!has_odometry()) return {};
+  const Eigen::Vector2d delta = params_.goals_m[static_cast<size_t>(goal_index_)] - pose().head<2>();
+  const double distance = delta.norm();
+  Eigen::Vector2d preferred = Eigen::Vector2d::Zero();
+  if (distance < params_.tolerance_m) {
+    if (reached_ == goal_index_) ++reached_;
+  } else {
+    preferred = params_.max_speed_mps * delta / distance;
+  }
+  // HRVO even when holding still: a passing robot may need us to step aside.
+  return DriveWithVelocity(preferred);
+}
+
+}  // namespace dream::agents

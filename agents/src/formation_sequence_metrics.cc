@@ -1,0 +1,35 @@
+#include "dream/agents/formation_sequence_metrics.h"
+
+#include <string>
+
+namespace dream::agents {
+
+FormationSequenceMetrics::FormationSequenceMetrics(std::vector<std::vector<Eigen::Vector2d>> formations_m,
+                                                   double tolerance_m)
+    : formations_m_(std::move(formations_m)), tolerance_m_(tolerance_m) {}
+
+void FormationSequenceMetrics::Observe(const WorldSnapshot& world) {
+  const size_t next = completed_steps_.size();
+  if (next >= formations_m_.size()) return;
+  const std::vector<Eigen::Vector2d>& points = formations_m_[next];
+  if (world.poses.size() < points.size()) return;
+  for (size_t i = 0; i < points.size(); ++i) {
+    if ((world.poses[i].head<2>() - points[i]).norm() > tolerance_m_) return;
+  }
+  completed_steps_.push_back(world.step);
+}
+
+void FormationSequenceMetrics::Write(MetricsReport* report) const {
+  report->values["formations_completed"] = static_cast<double>(completed_steps_.size());
+  for (size_t k = 0; k < formations_m_.size(); ++k) {
+    report->values["formation_" + std::to_string(k + 1) + "_completed_step"] =
+        k < completed_steps_.size() ? static_cast<double>(completed_steps_[k]) : -1.0;
+  }
+  report->values["all_formations_completed_step"] =
+      completed_steps_.size() == formations_m_.size() && !completed_steps_.empty()
+          ? static_cast<double>(completed_steps_.back())
+          : -1.0;
+  report->steps["formation_completed_steps"] = completed_steps_;
+}
+
+}  // namespace dream::agents

@@ -1,0 +1,36 @@
+#include "dream/agents/hrvo_robot.h"
+
+#include <stdexcept>
+
+#include "dream/agents/hrvo_exact.h"
+#include "dream/agents/hrvo_thesis.h"
+
+namespace dream::agents {
+namespace {
+
+std::unique_ptr<HrvoAvoidance> MakeHrvo(const HrvoRobotParams& params) {
+  std::string error;
+  if (!params.IsValid(&error)) throw std::invalid_argument(error);
+  if (params.variant == HrvoVariant::kThesis) return std::make_unique<HrvoThesis>(params.hrvo);
+  return std::make_unique<HrvoExact>(params.hrvo);
+}
+
+}  // namespace
+
+HrvoRobot::HrvoRobot(int id, const RobotParams& robot_params, const HrvoRobotParams& params)
+    : Robot(id, robot_params), hrvo_(MakeHrvo(params)) {}
+
+Eigen::Vector2d HrvoRobot::AvoidCollisions(const Eigen::Vector2d& preferred_mps) {
+  neighbours_.clear();
+  for (const NeighbourDetection& detection : movement().neighbours) {
+    neighbours_.push_back({detection.RelativePosition(), detection.velocity_mps});
+  }
+  dxi_mps_ = hrvo_->SafeVelocity(pose().head<2>(), dxi_mps_, preferred_mps, neighbours_);
+  return dxi_mps_;
+}
+
+UnicycleCommand HrvoRobot::DriveWithVelocity(const Eigen::Vector2d& preferred_mps) {
+  return LimitActuators(DxiToDxu(AvoidCollisions(preferred_mps)));
+}
+
+}  // namespace dream::agents

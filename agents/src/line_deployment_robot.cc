@@ -1,0 +1,125 @@
+#include "dream/agents/line_deployment_robot.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "dream/agents/byte_reader.h"
+#include "dream/agents/byte_writer.h"
+
+namespace dream::agents {
+
+bool LineDeploymentParams::IsValid(std::string* error) const {
+  auto fail = [error](const std::string& message) {
+    if (error != nullptr) *error = message;
+    return false;
+  };
+  if (!(spacing_m > 0.0) || !std::isfinite(spacing_m)) {
+    return fail("spacing_m must be > 0, got " + std::to_string(spacing_m));
+  }
+  if (!(gain > 0.0) || !std::isfinite(gain)) return fail("gain must be > 0, got " + std::to_string(gain));
+  if (!(max_speed_mps > 0.0 && max_speed_mps <= 0.2)) {
+    return fail("max_speed_mps must be in (0, 0.2], got " + std::to_string(max_speed_mps));
+  }
+  if (!(tolerance_m > 0.0) || !std::isfinite(tolerance_m)) {
+    return fail("tolerance_m must be > 0, got " + std::to_string(tolerance_m));
+  }
+  if (!(resume_m >= tolerance_m) || !std::isfinite(resume_m)) {
+    return fail("resume_m must be >= tolerance_m (" + std::to_string(tolerance_m) + "), got " +
+                std::to_string(resume_m));
+  }
+  if (!(hold_avoid_range_m >= 0.0) || !std::isfinite(hold_avoid_range_m)) {
+    return fail("hold_avoid_range_m must be >= 0, got " + std::to_string(hold_avoid_range_m));
+  }
+  if (settle_updates < 1) return fail("settle_updates must be >= 1, got " + std::to_string(settle_updates));
+  if (!(arena_margin_m >= 0.0) || !arena_min_m.allFinite() || !arena_max_m.allFinite() ||
+      !((arena_max_m - arena_min_m).array() > 2.0 * arena_margin_m).all()) {
+    return fail("arena_margin_m must be >= 0 and leave room inside the arena, got " + std::to_string(arena_margin_m));
+  }
+  return true;
+}
+
+namespace {
+const LineDeploymentParams& Checked(const LineDeploymentParams& params) {
+  std::string error;
+  if (!params.IsValid(&error)) throw std::invalid_argument(error);
+  return params;
+}
+}  // namespace
+
+LineDeploymentRobot::LineDeploymentRobot(int id, const RobotParams& robot_params,
+                                         const HrvoRobotParams& hrvo_params, const LineDeploymentParams& params)
+    : HrvoRobot(id, robot_params, hrvo_params), params_(Checked(params)) {}
+
+std::vector<uint8_t> LineDeploymentRobot::Encode(int id, const Eigen::Vector2d& position_m) {
+  return ByteWriter().Int32(id).Double(position_m.x()).Double(position_m.y()).Take();
+}
+
+std::optional<NeighbourPosition> LineDeploymentRobot::Decode(const std::vector<uint8_t>& payload) {
+  ByteReader reader(payload);
+  NeighbourPosition neighbour;
+  neighbour.id = reader.Int32();
+  neighbour.position_m.x() = reader.Double();
+  neighbour.position_m.y() = reader.Double();
+  if (!reader.done() || neighbour.id < 0) return std::nullopt;
+  return neighbour;
+}
+
+void LineDeploymentRobot::OnMovement(const MovementReading& reading) {
+  if (moving_) {
+    HrvoRobot::OnMovement(reading);
+    return;
+  }
+  near_.step = reading.step;
+  near_.neighbours.clear();
+  for (const NeighbourDetection& n : reading.neighbours) {
+    if (n.distance_m < params_.hold_avoid_range_m) near_.neighbours.push_back(n);
+  }
+  HrvoRobot::OnMovement(near_);
+}
+
+std::optional<std::vector<uint8_t>> LineDeploymentRobot::OnRadio(const std::vector<RadioMessage>& heard) {
+  for (const RadioMessage& message : heard) {
+    const std::optional<NeighbourPosition> neighbour = Decode(message.payload);
+    // A payload claiming another robot's id is as bad as a truncated one.
+    if (!neighbour || neighbour->id != message.sender_id) {
+      CountBadRadioMessage();
+      continue;
+    }
+    neighbours_[neighbour->id] = neighbour->position_m;
+  }
+  if (!has_odometry()) return std::nullopt;  // do not advertise a position we do not know
+  return Encode(id(), pose().head<2>());
+}
+
+std::optional<Eigen::Vector2d> LineDeploymentRobot::Target() const {
+  std::vector<NeighbourPosition> neighbours;
+  neighbours.reserve(neighbours_.size());
+  for (const auto& [neighbour_id, position] : neighbours_) neighbours.push_back({neighbour_id, position});
+  const std::optional<Eigen::Vector2d> target = LineConsensusTarget(id(), neighbours, params_.spacing_m);
+  if (!target) return std::nullopt;
+  const Eigen::Vector2d margin = Eigen::Vector2d::Constant(params_.arena_margin_m);
+  return Eigen::Vector2d(target->cwiseMax(params_.arena_min_m + margin).cwiseMin(params_.arena_max_m - margin));
+}
+
+UnicycleCommand LineDeploymentRobot::Update(int64_t step) {
+  (void)step;
+  if (!has_odometry()) return {};
+  Eigen::Vector2d preferred = Eigen::Vector2d::Zero();
+  const std::optional<Eigen::Vector2d> target = Target();
+  if (target) {
+    const Eigen::Vector2d error = *target - pose().head<2>();
+    const double distance = error.norm();
+    if (moving_ && distance < params_.tolerance_m) moving_ = false;
+    if (!moving_ && distance > params_.resume_m) moving_ = true;
+    if (moving_) {
+      settled_updates_ = 0;
+      preferred = params_.gain * error;
+      if (preferred.norm() > params_.max_speed_mps) preferred *= params_.max_speed_mps / preferred.norm();
+    } else {
+      ++settled_updates_;
+    }
+  }
+  return DriveWithVelocity(preferred);
+}
+
+}  // namespace dream::agents

@@ -1,0 +1,22 @@
+#include "dream/agents/position_message.h"
+
+#include "dream/agents/byte_reader.h"
+#include "dream/agents/byte_writer.h"
+
+namespace dream::agents {
+
+std::vector<uint8_t> PositionMessage::Encode() const {
+  return ByteWriter().Int32(id).Double(position_m.x()).Double(position_m.y()).Take();
+}
+
+std::optional<PositionMessage> PositionMessage::Decode(const std::vector<uint8_t>& payload, int sender_id) {
+  ByteReader reader(payload);
+  PositionMessage message;
+  message.id = reader.Int32();
+  message.position_m.x() = reader.Double();
+  message.position_m.y() = reader.Double();
+  if (!reader.done() || message.id != sender_id) return std::nullopt;
+  return message;
+}
+
+}  // namespace dream::agents

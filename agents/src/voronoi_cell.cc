@@ -1,0 +1,99 @@
+#include "dream/agents/voronoi_cell.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "dream/agents/rectangle_union.h"
+
+namespace dream::agents {
+namespace {
+
+bool Fail(std::string* error, const std::string& message) {
+  if (error != nullptr) *error = message;
+  return false;
+}
+
+bool NonNegative(double value) { return std::isfinite(value) && value >= 0.0; }
+
+const VoronoiCellParams& Checked(const VoronoiCellParams& params) {
+  std::string error;
+  if (!params.IsValid(&error)) throw std::invalid_argument(error);
+  return params;
+}
+
+}  // namespace
+
+bool VoronoiCellParams::IsValid(std::string* error) const {
+  if (!(std::isfinite(disc_radius_m) && disc_radius_m > 0.0)) {
+    return Fail(error, "disc_radius_m must be > 0, got " + std::to_string(disc_radius_m));
+  }
+  if (disc_sides < 8) return Fail(error, "disc_sides must be >= 8, got " + std::to_string(disc_sides));
+  if (!arena_min_m.allFinite() || !arena_max_m.allFinite() || !(arena_min_m.x() < arena_max_m.x()) ||
+      !(arena_min_m.y() < arena_max_m.y())) {
+    return Fail(error, "the arena must be finite with min < max on both axes");
+  }
+  if (!NonNegative(wall_margin_m) || 2.0 * wall_margin_m >= (arena_max_m - arena_min_m).minCoeff()) {
+    return Fail(error, "wall_margin_m must be >= 0 and leave room inside the arena, got " +
+                           std::to_string(wall_margin_m));
+  }
+  if (!NonNegative(robot_buffer_m)) {
+    return Fail(error, "robot_buffer_m must be >= 0, got " + std::to_string(robot_buffer_m));
+  }
+  if (!NonNegative(obstacle_buffer_m)) {
+    return Fail(error, "obstacle_buffer_m must be >= 0, got " + std::to_string(obstacle_buffer_m));
+  }
+  return true;
+}
+
+VoronoiCell::VoronoiCell(const VoronoiCellParams& params_in, const Eigen::Vector2d& self_m,
+                         const std::vector<VoronoiNeighbour>& neighbours,
+                         const std::vector<Eigen::Vector2d>& obstacle_points_m,
+                         const std::vector<ObstacleRectangle>& obstacle_rectangles) {
+  const VoronoiCellParams& params = Checked(params_in);
+  const ConvexPolygon disc = ConvexPolygon::RegularPolygon(self_m, params.disc_radius_m, params.disc_sides);
+
+  // The coverage region: disc & arena & plain bisectors, minus obstacles.
+  ConvexPolygon share = disc.ClippedToBox(params.arena_min_m, params.arena_max_m);
+  for (const VoronoiNeighbour& neighbour : neighbours) {
+    if (share.vertices().empty()) break;
+    if (auto plane = HalfPlane::Bisector(self_m, neighbour.position_m, 0.0)) share.Clip(*plane);
+  }
+  std::vector<RectangleUnion::Box> boxes;
+  for (const ObstacleRectangle& rectangle : obstacle_rectangles) {
+    boxes.push_back({rectangle.center_m - rectangle.size_m / 2.0, rectangle.center_m + rectangle.size_m / 2.0});
+  }
+  const RectangleUnion blocked(boxes);
+  coverage_area_m2_ = share.Area() - blocked.Area(share);
+  const Eigen::Vector2d first_moment = share.FirstMoment() - blocked.FirstMoment(share);
+  // Below a square millimetre the robot has nothing to cover worth moving for.
+  coverage_centroid_m_ = coverage_area_m2_ > 1e-6 ? Eigen::Vector2d(first_moment / coverage_area_m2_) : self_m;
+
+  // The cell: walls, buffered bisectors, buffered virtual agents.
+  const double margin = params.wall_margin_m;
+  constraints_.push_back({Eigen::Vector2d(1.0, 0.0), params.arena_max_m.x() - margin});
+  constraints_.push_back({Eigen::Vector2d(-1.0, 0.0), -(params.arena_min_m.x() + margin)});
+  constraints_.push_back({Eigen::Vector2d(0.0, 1.0), params.arena_max_m.y() - margin});
+  constraints_.push_back({Eigen::Vector2d(0.0, -1.0), -(params.arena_min_m.y() + margin)});
+  for (const VoronoiNeighbour& neighbour : neighbours) {
+    if (auto plane = HalfPlane::Bisector(self_m, neighbour.position_m,
+                                         params.robot_buffer_m + std::max(neighbour.extra_buffer_m, 0.0))) {
+      constraints_.push_back(*plane);
+    }
+  }
+  for (const Eigen::Vector2d& closest : obstacle_points_m) {
+    // A robot centre on the obstacle has no direction to mirror along; it is
+    // in collision already and the other cuts are all it has.
+    if (auto plane = HalfPlane::AwayFromObstacle(self_m, closest, params.obstacle_buffer_m)) {
+      constraints_.push_back(*plane);
+    }
+  }
+  polygon_ = disc;
+  for (const HalfPlane& plane : constraints_) {
+    polygon_.Clip(plane);
+    if (polygon_.vertices().empty()) break;
+  }
+  goal_m_ = polygon_.empty() ? self_m : polygon_.ClosestPoint(coverage_centroid_m_);
+}
+
+}  // namespace dream::agents

@@ -1,0 +1,47 @@
+#pragma once
+
+#include <string>
+
+namespace dream::bridge {
+
+/// How the exported script drives the robots.
+enum class Strategy {
+  /// Follow the recorded trajectories in closed loop: the recorded command
+  /// plus feedback on the error to the recorded pose (default).
+  kTrack,
+  /// Send the recorded commands, open loop.
+  kReplay,
+};
+
+/// "track" / "replay"; ParseStrategy throws std::invalid_argument otherwise.
+const char* StrategyName(Strategy strategy);
+Strategy ParseStrategy(const std::string& text);
+
+/// The tunable part of an export. Defaults suit the Robotarium: a settle
+/// phase of at most 8 s brings each robot to within 5 mm and ~1 degree of
+/// its start pose, and the tracking gains correct centimetre errors within
+/// about a second at the lab's 0.033 s step.
+struct ExportOptions {
+  Strategy strategy = Strategy::kTrack;
+  /// Pass every command through the Robotarium's own unicycle barrier
+  /// certificate with boundary (a safety layer; it bends the plan slightly).
+  bool barriers = false;
+  /// Settle phase before step 0: at most this many steps (0: none).
+  int settle_max_steps = 240;
+  double settle_position_tolerance_m = 0.005;
+  double settle_heading_tolerance_rad = 0.02;
+  double settle_gain_v_per_s = 1.5;  ///< forward speed per metre of distance
+  double settle_gain_w_per_s = 3.0;  ///< turn rate per radian of error
+  /// Tracking (Kanayama): v = v_r cos(e_th) + k_x e_x,
+  /// w = w_r + k_y v_r e_y + k_th sin(e_th), errors in the robot's frame.
+  double gain_x_per_s = 3.0;
+  double gain_y_per_m2 = 25.0;
+  double gain_theta_per_s = 3.0;
+  /// The script rewrites its result file every this many experiment steps.
+  int save_every_steps = 900;
+
+  /// False with a message naming the field, its value and the allowed range.
+  bool IsValid(std::string* error) const;
+};
+
+}  // namespace dream::bridge

@@ -1,0 +1,79 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "dream/bridge/npy_file.h"
+#include "dream/bridge/run_track.h"
+#include "dream/bridge/submission_params.h"
+#include "dream/config/run_config.h"
+#include "dream/sim/violation_counts.h"
+
+namespace dream::bridge {
+
+/// An export folder as `dream export` wrote it, read back for an import.
+struct ExportedSubmission {
+  std::string dir;
+  SubmissionParams params;      ///< upload/dream_params.npy
+  config::RunConfig config;     ///< config.yaml (a copy of the run's)
+  std::string config_text;
+  std::string source_run;       ///< the simulated run it came from (export.json), may be empty
+
+  /// @throws std::runtime_error naming the file when something is missing,
+  ///         or the parameters do not match the config.
+  static ExportedSubmission Read(const std::string& dir);
+};
+
+/// A lab run as the submission script saved it, checked and turned into a
+/// RunTrack: experiment step 0 is the first pose after the settle phase,
+/// times are the lab's wall clock since then.
+struct LabResult {
+  RunTrack track;
+  int64_t settle_steps = 0;     ///< iterations the script spent settling
+  int64_t planned_steps = 0;    ///< steps the export planned
+  bool complete = false;        ///< every planned step and the final pose are there
+  double wall_duration_s = 0.0; ///< wall time from step 0 to the last pose
+  double max_step_s = 0.0;      ///< longest wall time between two steps
+  int64_t clock_steps_back = 0; ///< stamps earlier than their predecessor (clamped)
+};
+
+/// The rows of a result file: dream_result.npy, or a .mat file holding the
+/// same matrix as variable `dream_result` (chosen by the file's first bytes).
+/// @throws std::runtime_error naming the file.
+NpyArray ReadResultFile(const std::string& path);
+
+/// Checks the rows strictly against the export (column count for its robot
+/// count, phases and steps in order, no more steps than planned, every value
+/// finite) and builds the track, with the virtual obstacles of the config at
+/// each step. A run cut short (the lab stopped it) is accepted with
+/// complete = false; it needs at least two experiment steps.
+/// @throws std::runtime_error "<name>: <problem>" naming row, column and robot.
+LabResult ParseLabResult(const NpyArray& rows, const std::string& name, const ExportedSubmission& exported);
+
+/// What ImportLabRun wrote.
+struct ImportedRun {
+  LabResult lab;
+  sim::ViolationCounts violations{};
+  std::string log_path;
+  std::string summary_path;
+  std::string picture_path;
+  std::string summary_json;
+};
+
+/// `dream import`: reads the lab's result file (.npy or .mat) for the export
+/// in `export_dir` and writes, in `out_dir`, what `dream run` writes for a
+/// simulated run: run.lcmlog (the same channels and types: DREAM_OBSTACLES,
+/// DREAM_STATUS, DREAM_POSES at the lab's timestamps, the commands as sent
+/// on DREAM_CMD_<id>), summary.json (violations on the lab's poses, the
+/// experiment's metrics, a "lab" section), trajectories.png and config.yaml.
+/// Nothing is written unless the result file passes every check; each file
+/// is written atomically. @throws std::runtime_error naming the file.
+ImportedRun ImportLabRun(const std::string& result_path, const std::string& export_dir, const std::string& out_dir);
+
+/// Writes `track` as a run log (see ImportLabRun) to `log_path` atomically
+/// and returns the violations counted on it. `end_state` and `detail` go in
+/// the final DREAM_STATUS.
+sim::ViolationCounts WriteLabRunLog(const RunTrack& track, const sim::WorldParams& world, int8_t end_state,
+                                    const std::string& detail, const std::string& log_path);
+
+}  // namespace dream::bridge

@@ -1,0 +1,21 @@
+#pragma once
+
+#include <string>
+
+#include "dream/bridge/npy_file.h"
+
+namespace dream::bridge {
+
+/// Reads the real double matrix `variable` from a MATLAB .mat file (v4, v5
+/// or v7.3, through libmatio) as a 2-D row-major array, for users who save
+/// their lab results from MATLAB. @throws std::runtime_error naming the file
+/// and what is wrong (not a .mat file, no such variable, not a real double
+/// 2-D matrix, unreadable data).
+NpyArray ReadMatMatrix(const std::string& path, const std::string& variable);
+
+/// Writes `array` (2-D) as the double matrix `variable` of a new MATLAB .mat
+/// file at `path`, version 5 or (v73) 7.3 (tests and tools; not atomic).
+/// @throws std::runtime_error.
+void WriteMatMatrix(const std::string& path, const std::string& variable, const NpyArray& array, bool v73 = false);
+
+}  // namespace dream::bridge

@@ -1,0 +1,51 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "dream/bridge/run_track.h"
+#include "dream/sim/world_params.h"
+
+namespace dream::bridge {
+
+/// What the Robotarium accepts, as far as a recorded run can show it.
+struct LabLimits {
+  /// Robots on the hardware.
+  int max_robots = 20;
+  /// The lab's cap on an experiment: iterations x 0.033 s (15 minutes).
+  double max_duration_s = 900.0;
+  /// Start poses must keep the whole robot (radius 0.055 m) inside the arena.
+  double start_wall_margin_m = 0.055;
+  /// The lab's start-up routine drives robots onto their start poses with a
+  /// barrier certificate that keeps the points `start_projection_m` ahead of
+  /// them 0.25 m apart and stops within 0.05 m of the target: start poses
+  /// whose projected points are closer than this cannot all be reached.
+  double start_spacing_m = 0.20;
+  double start_projection_m = 0.05;
+};
+
+/// One reason the lab would refuse (or fail) the run.
+struct ExportProblem {
+  std::string rule;       ///< robots, duration, finished, start_inside_arena, start_spacing, boundary, collision, obstacle
+  int robot = -1;         ///< the robot concerned, -1 for none
+  int other = -1;         ///< the second robot of a pair, or the obstacle id
+  int64_t step = -1;      ///< the first step concerned, -1 for none
+  std::string problem;    ///< what is wrong
+  std::string fix;        ///< how to fix it
+
+  /// "<rule>: robot 3, step 120: <problem>. Fix: <fix>".
+  std::string Text() const;
+};
+
+/// Checks a recorded run against the lab's rules, as the lab would judge the
+/// submission made from it: 1..max_robots robots; (steps + settle steps) x
+/// time step within the cap; a finished run; start poses inside the arena
+/// and far enough apart for the start-up routine; and no boundary, collision
+/// or virtual-obstacle error at any step (re-checked on the recorded poses,
+/// so each problem names its first robot and step). Empty when the run can
+/// be exported.
+std::vector<ExportProblem> PreValidate(const RunTrack& track, const RunEnd& end, const sim::WorldParams& world,
+                                       int64_t settle_max_steps, const LabLimits& limits = {});
+
+}  // namespace dream::bridge

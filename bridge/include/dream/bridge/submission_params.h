@@ -1,0 +1,28 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "dream/bridge/export_options.h"
+#include "dream/bridge/npy_file.h"
+
+namespace dream::bridge {
+
+/// Everything in dream_params.npy: the export's options, the size of the
+/// plan and the robot constants the script needs for its wheel limiter.
+struct SubmissionParams {
+  int num_robots = 0;
+  int64_t steps = 0;  ///< experiment steps K (reference poses for 0..K)
+  ExportOptions options;
+  double wheel_radius_m = 0.0;
+  double base_length_m = 0.0;
+  double max_wheel_speed_radps = 0.0;
+
+  /// The ParamIndex::kParamCount float64 values.
+  NpyArray ToNpy() const;
+  /// Parses and checks dream_params.npy. @throws std::runtime_error
+  /// "<name>: <problem>".
+  static SubmissionParams FromNpy(const NpyArray& array, const std::string& name);
+};
+
+}  // namespace dream::bridge

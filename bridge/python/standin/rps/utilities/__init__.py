@@ -1,0 +1,1 @@
+"""Stand-in for rps.utilities (only what DREAM's exported scripts use)."""

@@ -1,0 +1,378 @@
+#include "dream/bridge/lab_import.h"
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "dream/bridge/lab_replay_world.h"
+#include "dream/bridge/mat_file.h"
+#include "dream/bridge/output_folder.h"
+#include "dream/bridge/submission_format.h"
+#include "dream/lcm/channels.h"
+#include "dream/obstacles_t.hpp"
+#include "dream/robot_poses_t.hpp"
+#include "dream/run_status_t.hpp"
+#include "dream/sim/rectangle_obstacle.h"
+#include "dream/sim/run_outcome.h"
+#include "dream/sim/run_recorder.h"
+#include "dream/sim/run_summary.h"
+#include "dream/sim/trajectory_picture.h"
+#include "dream/velocity_command_t.hpp"
+#include "dream/bridge/metrics_json.h"
+
+namespace dream::bridge {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string ReadText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot open the file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// "x of robot 3" for a result column.
+std::string ColumnMeaning(int64_t column, int num_robots) {
+  switch (column) {
+    case ResultLayout::kPhaseColumn: return "the phase column";
+    case ResultLayout::kStepColumn: return "the step column";
+    case ResultLayout::kWallTimeColumn: return "the wall-clock column";
+    default: break;
+  }
+  static const char* kNames[] = {"x", "y", "theta", "v", "w"};
+  const int64_t index = column - ResultLayout::kFixedColumns;
+  return std::string(kNames[index / num_robots]) + " of robot " + std::to_string(index % num_robots);
+}
+
+std::vector<std::vector<sim::ObstacleState>> ObstaclesPerStep(const std::vector<sim::RectangleObstacleSpec>& specs,
+                                                              int64_t last_step, double time_step_s) {
+  std::vector<sim::RectangleObstacle> obstacles(specs.begin(), specs.end());
+  std::vector<std::vector<sim::ObstacleState>> states(static_cast<size_t>(last_step + 1));
+  for (auto& step_states : states) {
+    for (sim::RectangleObstacle& o : obstacles) {
+      const Eigen::Vector2d velocity = o.velocity_mps();
+      step_states.push_back(sim::ObstacleState{o.id(), o.center_m().x(), o.center_m().y(), o.width_m(), o.height_m(),
+                                               velocity.x(), velocity.y()});
+      o.Advance(time_step_s);
+    }
+  }
+  return states;
+}
+
+template <typename Message>
+void WriteMessage(sim::RunRecorder& recorder, const std::string& channel, int64_t utime, const Message& message,
+                  std::vector<uint8_t>* buffer) {
+  buffer->resize(static_cast<size_t>(message.getEncodedSize()));
+  message.encode(buffer->data(), 0, static_cast<int>(buffer->size()));
+  recorder.Write(channel, utime, buffer->data(), static_cast<int>(buffer->size()));
+}
+
+void WriteStatus(sim::RunRecorder& recorder, const sim::World& world, int8_t state, const std::string& detail,
+                 std::vector<uint8_t>* buffer) {
+  run_status_t status;
+  status.utime = world.utime();
+  status.step = world.step();
+  status.state = state;
+  status.num_robots = world.num_robots();
+  const sim::ViolationCounts& counts = world.violations();
+  status.boundary_errors = counts.boundary_errors;
+  status.collision_errors = counts.collision_errors;
+  status.actuator_errors = counts.actuator_errors;
+  status.obstacle_collisions = counts.obstacle_collisions;
+  status.rejected_commands = 0;
+  status.num_lost = 0;
+  status.detail = detail;
+  WriteMessage(recorder, lcm::kStatusChannel, world.utime(), status, buffer);
+}
+
+/// Writes the log and returns the world stepped to the end (for the summary).
+LabReplayWorld WriteLog(const RunTrack& track, const sim::WorldParams& params, int8_t end_state,
+                        const std::string& detail, const std::string& log_path) {
+  LabReplayWorld world(track, params);
+  sim::RunRecorder recorder(log_path, 4096);
+  std::vector<uint8_t> buffer;
+  std::vector<sim::ObstacleState> states;
+  obstacles_t obstacles;
+  robot_poses_t poses;
+  velocity_command_t command;
+  command.agent_id = 0;
+  command.done = false;
+  const int n = track.num_robots;
+  std::vector<std::string> command_channels;
+  for (int i = 0; i < n; ++i) command_channels.push_back(lcm::CommandChannel(i));
+  poses.num_robots = n;
+  poses.x.resize(static_cast<size_t>(n));
+  poses.y.resize(static_cast<size_t>(n));
+  poses.theta.resize(static_cast<size_t>(n));
+  poses.v.resize(static_cast<size_t>(n));
+  poses.w.resize(static_cast<size_t>(n));
+  while (true) {
+    const int64_t k = world.step();
+    const int64_t utime = world.utime();
+    world.GetObstacleStates(&states);
+    obstacles.utime = utime;
+    obstacles.step = k;
+    obstacles.obstacles.clear();
+    for (const sim::ObstacleState& s : states) {
+      obstacles.obstacles.push_back(
+          rectangle_obstacle_t{s.id, s.center_x_m, s.center_y_m, s.width_m, s.height_m, s.vx_mps, s.vy_mps});
+    }
+    obstacles.num_obstacles = static_cast<int32_t>(obstacles.obstacles.size());
+    WriteMessage(recorder, lcm::kObstaclesChannel, utime, obstacles, &buffer);
+    WriteStatus(recorder, world, run_status_t::RUNNING, "lab run", &buffer);
+    poses.utime = utime;
+    poses.step = k;
+    for (size_t i = 0; i < static_cast<size_t>(n); ++i) {
+      poses.x[i] = world.poses()[i].x_m;
+      poses.y[i] = world.poses()[i].y_m;
+      poses.theta[i] = world.poses()[i].theta_rad;
+      poses.v[i] = world.velocities()[i].v_mps;
+      poses.w[i] = world.velocities()[i].w_radps;
+    }
+    WriteMessage(recorder, lcm::kPosesChannel, utime, poses, &buffer);
+    if (k == world.last_step()) break;
+    command.utime = utime;
+    command.step = k;
+    for (int i = 0; i < n; ++i) {
+      const sim::UnicycleCommand& sent = track.command(k, i);
+      command.robot_id = i;
+      command.v = sent.v_mps;
+      command.w = sent.w_radps;
+      WriteMessage(recorder, command_channels[static_cast<size_t>(i)], utime, command, &buffer);
+    }
+    world.Step();
+  }
+  WriteStatus(recorder, world, end_state, detail, &buffer);
+  recorder.Close();
+  return world;
+}
+
+}  // namespace
+
+ExportedSubmission ExportedSubmission::Read(const std::string& dir) {
+  const fs::path root(dir);
+  if (!fs::is_directory(root)) throw std::runtime_error(dir + ": not a folder (pass the folder dream export wrote)");
+  ExportedSubmission exported;
+  exported.dir = dir;
+  const std::string params_path = (root / "upload" / SubmissionFiles::kParams).string();
+  if (!fs::exists(params_path)) {
+    throw std::runtime_error(params_path + ": missing; " + dir + " is not a folder written by dream export");
+  }
+  exported.params = SubmissionParams::FromNpy(ReadNpyFile(params_path, 1 << 20), params_path);
+  const std::string config_path = (root / "config.yaml").string();
+  if (!fs::exists(config_path)) throw std::runtime_error(config_path + ": missing; export the run again");
+  exported.config = config::LoadRunConfigFile(config_path);
+  exported.config_text = ReadText(config_path);
+  if (exported.config.num_robots != exported.params.num_robots) {
+    throw std::runtime_error(config_path + ": has " + std::to_string(exported.config.num_robots) + " robots but " +
+                             params_path + " " + std::to_string(exported.params.num_robots) +
+                             "; the export folder was changed by hand — export the run again");
+  }
+  const std::string manifest_path = (root / "export.json").string();
+  if (fs::exists(manifest_path)) {
+    try {
+      const nlohmann::json manifest = nlohmann::json::parse(ReadText(manifest_path));
+      if (manifest.contains("source_run") && manifest["source_run"].is_string()) {
+        exported.source_run = manifest["source_run"].get<std::string>();
+      }
+    } catch (const nlohmann::json::exception& e) {
+      throw std::runtime_error(manifest_path + ": not valid JSON: " + e.what());
+    }
+  }
+  return exported;
+}
+
+NpyArray ReadResultFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot open the file");
+  char head[8] = {};
+  in.read(head, sizeof(head));
+  const std::streamsize got = in.gcount();
+  in.close();
+  if (got >= 6 && std::memcmp(head, "\x93NUMPY", 6) == 0) return ReadNpyFile(path);
+  // MATLAB v5/v7.3 files start with a text header ("MATLAB 5.0 MAT-file"); v4 has none.
+  const std::string extension = fs::path(path).extension().string();
+  if ((got >= 6 && std::memcmp(head, "MATLAB", 6) == 0) || extension == ".mat") {
+    return ReadMatMatrix(path, SubmissionFiles::kResultMatVariable);
+  }
+  throw std::runtime_error(path + ": neither a .npy file nor a MATLAB .mat file; pass the " +
+                           SubmissionFiles::kResult + " the submission saved");
+}
+
+LabResult ParseLabResult(const NpyArray& rows, const std::string& name, const ExportedSubmission& exported) {
+  auto fail = [&name](const std::string& problem) { throw std::runtime_error(name + ": " + problem); };
+  const SubmissionParams& params = exported.params;
+  const int n = params.num_robots;
+  if (rows.shape.size() != 2) {
+    fail("has " + std::to_string(rows.shape.size()) + " dimensions; a result is a 2-D array (rows x " +
+         std::to_string(ResultLayout::Columns(n)) + " columns)");
+  }
+  const int64_t row_count = rows.shape[0];
+  const int64_t columns = rows.shape[1];
+  if (columns != ResultLayout::Columns(n)) {
+    const int64_t robots = (columns - ResultLayout::kFixedColumns) / 5;
+    const bool other_run = columns > ResultLayout::kFixedColumns && (columns - ResultLayout::kFixedColumns) % 5 == 0;
+    fail("has " + std::to_string(columns) + " columns" +
+         (other_run ? ", as a result of a " + std::to_string(robots) + "-robot run;" : ";") + " this export has " +
+         std::to_string(n) + " robots, whose results have " + std::to_string(ResultLayout::Columns(n)) +
+         " (3 + 5 x " + std::to_string(n) + "): is it the result of another export?");
+  }
+  if (row_count == 0) fail("holds no rows: the script stopped before its first step (see the lab's output)");
+  for (int64_t r = 0; r < row_count; ++r) {
+    for (int64_t c = 0; c < columns; ++c) {
+      const double value = rows.values[static_cast<size_t>(r * columns + c)];
+      if (!std::isfinite(value)) {
+        fail("row " + std::to_string(r) + ": " + ColumnMeaning(c, n) + " is " + std::to_string(value) +
+             "; every value must be finite");
+      }
+    }
+  }
+  auto at = [&](int64_t r, int64_t c) { return rows.values[static_cast<size_t>(r * columns + c)]; };
+
+  // Phases in order: settle 0..s-1, experiment 0..e-1, then the final pose.
+  int64_t r = 0;
+  int64_t settle = 0;
+  for (; r < row_count && at(r, ResultLayout::kPhaseColumn) == ResultLayout::kPhaseSettle; ++r, ++settle) {
+    if (at(r, ResultLayout::kStepColumn) != static_cast<double>(settle)) {
+      fail("row " + std::to_string(r) + ": settle step " + std::to_string(at(r, ResultLayout::kStepColumn)) +
+           ", expected " + std::to_string(settle) + " (rows must follow each other)");
+    }
+    if (settle >= params.options.settle_max_steps) {
+      fail("has more than the " + std::to_string(params.options.settle_max_steps) +
+           " settle steps the export allows: not a result of this export");
+    }
+  }
+  const int64_t first_experiment_row = r;
+  int64_t experiment = 0;
+  for (; r < row_count && at(r, ResultLayout::kPhaseColumn) == ResultLayout::kPhaseExperiment; ++r, ++experiment) {
+    if (at(r, ResultLayout::kStepColumn) != static_cast<double>(experiment)) {
+      fail("row " + std::to_string(r) + ": experiment step " + std::to_string(at(r, ResultLayout::kStepColumn)) +
+           ", expected " + std::to_string(experiment) + " (rows must follow each other)");
+    }
+    if (experiment >= params.steps) {
+      fail("has more experiment steps than the " + std::to_string(params.steps) +
+           " the export planned: it is not a result of this export");
+    }
+  }
+  bool final_row = false;
+  if (r < row_count && at(r, ResultLayout::kPhaseColumn) == ResultLayout::kPhaseFinal) {
+    if (experiment != params.steps || at(r, ResultLayout::kStepColumn) != static_cast<double>(params.steps)) {
+      fail("row " + std::to_string(r) + ": a final pose after " + std::to_string(experiment) + " of " +
+           std::to_string(params.steps) + " planned steps; the file is damaged");
+    }
+    final_row = true;
+    ++r;
+  }
+  if (r < row_count) {
+    const double phase = at(r, ResultLayout::kPhaseColumn);
+    fail("row " + std::to_string(r) + ": phase " + std::to_string(phase) +
+         (phase == 0 || phase == 1 || phase == 2 ? " out of order" : " is not 0 (settle), 1 (experiment) or 2 (final)") +
+         "; the file is damaged or not a dream result");
+  }
+  const int64_t pose_rows = experiment + (final_row ? 1 : 0);
+  if (pose_rows < 2) {
+    fail("has " + std::to_string(pose_rows) + " experiment poses; at least 2 are needed (the lab run stopped " +
+         "right at its start: see the lab's output)");
+  }
+
+  LabResult result;
+  result.settle_steps = settle;
+  result.planned_steps = params.steps;
+  result.complete = final_row;
+  RunTrack& track = result.track;
+  track.num_robots = n;
+  const auto un = static_cast<size_t>(n);
+  track.poses.resize(static_cast<size_t>(pose_rows) * un);
+  track.commands.resize(track.poses.size());
+  track.utime.resize(static_cast<size_t>(pose_rows));
+  const double t0 = at(first_experiment_row, ResultLayout::kWallTimeColumn);
+  int64_t previous_utime = 0;
+  double previous_time = t0;
+  for (int64_t k = 0; k < pose_rows; ++k) {
+    const int64_t row = first_experiment_row + k;
+    const double* values = &rows.values[static_cast<size_t>(row * columns)];
+    const double stamp = values[ResultLayout::kWallTimeColumn];
+    result.max_step_s = std::max(result.max_step_s, stamp - previous_time);
+    previous_time = stamp;
+    auto utime = static_cast<int64_t>(std::llround((stamp - t0) * 1e6));
+    if (utime < previous_utime) {
+      ++result.clock_steps_back;
+      utime = previous_utime;
+    }
+    previous_utime = utime;
+    track.utime[static_cast<size_t>(k)] = utime;
+    sim::Pose2* step_poses = &track.poses[static_cast<size_t>(k) * un];
+    sim::UnicycleCommand* step_commands = &track.commands[static_cast<size_t>(k) * un];
+    const bool last = k == pose_rows - 1;
+    for (size_t i = 0; i < un; ++i) {
+      const double* base = values + ResultLayout::kFixedColumns + i;
+      step_poses[i] = sim::Pose2{base[0], base[un], base[2 * un]};
+      step_commands[i] = last ? sim::UnicycleCommand{} : sim::UnicycleCommand{base[3 * un], base[4 * un]};
+    }
+  }
+  result.wall_duration_s = static_cast<double>(track.utime.back()) / 1e6;
+  track.obstacles = ObstaclesPerStep(exported.config.obstacles, track.last_step(), exported.config.world.time_step_s);
+  return result;
+}
+
+sim::ViolationCounts WriteLabRunLog(const RunTrack& track, const sim::WorldParams& world, int8_t end_state,
+                                    const std::string& detail, const std::string& log_path) {
+  return WriteLog(track, world, end_state, detail, log_path).violations();
+}
+
+ImportedRun ImportLabRun(const std::string& result_path, const std::string& export_dir, const std::string& out_dir) {
+  const ExportedSubmission exported = ExportedSubmission::Read(export_dir);
+  ImportedRun imported;
+  imported.lab = ParseLabResult(ReadResultFile(result_path), result_path, exported);
+  const LabResult& lab = imported.lab;
+  const RunTrack& track = lab.track;
+
+  const OutputFolder out(out_dir);
+  imported.log_path = out.PathOf("run.lcmlog");
+  imported.summary_path = out.PathOf("summary.json");
+  imported.picture_path = out.PathOf("trajectories.png");
+  const std::string detail = lab.complete ? "the lab run completed every planned step"
+                                          : "the lab run stopped after " + std::to_string(track.last_step()) + " of " +
+                                                std::to_string(lab.planned_steps) + " planned steps";
+  const LabReplayWorld world =
+      WriteLog(track, exported.config.world, lab.complete ? run_status_t::FINISHED : run_status_t::ABORTED, detail,
+               imported.log_path);
+  imported.violations = world.violations();
+  out.WriteFile("config.yaml", exported.config_text);
+
+  sim::RunOutcome outcome;
+  outcome.end = lab.complete ? sim::RunOutcome::End::kFinished : sim::RunOutcome::End::kInterrupted;
+  outcome.reason = detail;
+  outcome.steps = track.last_step();
+  outcome.wall_time_s = lab.wall_duration_s;
+  outcome.log_events = 0;
+  nlohmann::ordered_json summary = nlohmann::ordered_json::parse(
+      sim::RunSummaryJson(exported.config, outcome, world, "run.lcmlog"));
+  summary["config"] = "config.yaml";
+  summary["metrics"] = MetricsJson(exported.config, imported.log_path);
+  nlohmann::ordered_json lab_json;
+  lab_json["result_file"] = fs::absolute(result_path).string();
+  lab_json["export"] = fs::absolute(export_dir).string();
+  lab_json["source_run"] = exported.source_run;
+  lab_json["strategy"] = StrategyName(exported.params.options.strategy);
+  lab_json["barriers"] = exported.params.options.barriers;
+  lab_json["planned_steps"] = lab.planned_steps;
+  lab_json["steps"] = track.last_step();
+  lab_json["complete"] = lab.complete;
+  lab_json["settle_steps"] = lab.settle_steps;
+  lab_json["wall_duration_s"] = lab.wall_duration_s;
+  lab_json["max_step_s"] = lab.max_step_s;
+  lab_json["clock_steps_back"] = lab.clock_steps_back;
+  summary["lab"] = lab_json;
+  imported.summary_json = summary.dump(2) + "\n";
+  out.WriteFile("summary.json", imported.summary_json);
+  sim::TrajectoryPicture::Render(imported.log_path, imported.picture_path);
+  return imported;
+}
+
+}  // namespace dream::bridge

@@ -1,0 +1,27 @@
+#include "dream/bridge/metrics_json.h"
+
+#include "dream/agents/controller_factory.h"
+#include "dream/agents/log_metrics.h"
+
+namespace dream::bridge {
+
+nlohmann::ordered_json MetricsJson(const config::RunConfig& config, const std::string& log_path) {
+  nlohmann::ordered_json json;
+  try {
+    const agents::ControllerFactory factory(config.controller, config.num_robots, config.seed);
+    const agents::MetricsReport report = agents::MetricsFromLog(factory, log_path);
+    json["kind"] = factory.kind();
+    for (const auto& [name, value] : report.values) json[name] = value;
+    for (const auto& [name, steps] : report.steps) json[name] = steps;
+    for (const auto& [name, series] : report.series) {
+      nlohmann::json points = nlohmann::json::array();
+      for (const auto& [step, value] : series) points.push_back({step, value});
+      json[name] = points;
+    }
+  } catch (const std::exception& e) {
+    json["error"] = e.what();
+  }
+  return json;
+}
+
+}  // namespace dream::bridge

@@ -1,0 +1,70 @@
+#include "dream/bridge/output_folder.h"
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "dream/sim/atomic_file.h"
+
+namespace dream::bridge {
+namespace fs = std::filesystem;
+
+void CheckRelativeName(const std::string& name) {
+  if (name.empty() || name.find('\0') != std::string::npos) {
+    throw std::runtime_error("refusing to write a file with an empty or binary name");
+  }
+  const fs::path path(name);
+  if (path.is_absolute() || path.has_root_name() || path.has_root_directory()) {
+    throw std::runtime_error("refusing to write " + name + ": an absolute path would escape the output folder");
+  }
+  for (const fs::path& part : path) {
+    if (part == "..") throw std::runtime_error("refusing to write " + name + ": '..' would escape the output folder");
+  }
+}
+
+OutputFolder::OutputFolder(std::string dir) : dir_(std::move(dir)) {
+  if (dir_.empty()) throw std::runtime_error("the output folder name is empty");
+  const fs::path out(dir_);
+  const fs::path parent = out.has_parent_path() ? out.parent_path() : fs::path(".");
+  std::error_code error;
+  if (!fs::is_directory(parent)) {
+    throw std::runtime_error("output folder " + dir_ + ": its parent folder " + parent.string() + " does not exist");
+  }
+  fs::create_directory(out, error);
+  if (error || !fs::is_directory(out)) {
+    throw std::runtime_error("cannot create the output folder " + dir_ + (error ? ": " + error.message() : std::string()));
+  }
+  real_dir_ = fs::canonical(out, error).string();
+  if (error) throw std::runtime_error("cannot resolve the output folder " + dir_ + ": " + error.message());
+}
+
+std::string OutputFolder::PathOf(const std::string& name) const {
+  CheckRelativeName(name);
+  const fs::path path = fs::path(dir_) / name;
+  std::error_code error;
+  const fs::path real = fs::weakly_canonical(path, error);
+  if (error) throw std::runtime_error("cannot resolve " + path.string() + ": " + error.message());
+  const std::string real_text = real.string();
+  if (real_text.size() <= real_dir_.size() || real_text.compare(0, real_dir_.size(), real_dir_) != 0 ||
+      real_text[real_dir_.size()] != '/') {
+    throw std::runtime_error("refusing to write " + path.string() + ": it resolves to " + real_text +
+                             ", outside the output folder " + real_dir_ + " (a symbolic link?)");
+  }
+  return path.string();
+}
+
+std::string OutputFolder::MakeSubfolder(const std::string& name) const {
+  const std::string path = PathOf(name);
+  std::error_code error;
+  fs::create_directory(path, error);
+  if (error || !fs::is_directory(path)) {
+    throw std::runtime_error("cannot create the folder " + path + (error ? ": " + error.message() : std::string()));
+  }
+  PathOf(name);  // a link created meanwhile must not lead out either
+  return path;
+}
+
+void OutputFolder::WriteFile(const std::string& name, const std::string& bytes) const {
+  sim::WriteFileAtomically(PathOf(name), bytes);
+}
+
+}  // namespace dream::bridge

@@ -1,0 +1,215 @@
+#include "dream/bridge/run_comparison.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "dream/bridge/output_folder.h"
+#include "dream/bridge/run_track.h"
+#include "dream/config/run_config.h"
+#include "dream/sim/comparison_picture.h"
+#include "dream/sim/run_report.h"
+#include "dream/bridge/metrics_json.h"
+
+namespace dream::bridge {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string Format(const char* format, double value) {
+  char text[64];
+  std::snprintf(text, sizeof(text), format, value);
+  return text;
+}
+
+std::string Pad(std::string text, size_t width) {
+  if (text.size() < width) text.insert(0, width - text.size(), ' ');
+  return text;
+}
+
+ComparedRun Describe(const std::string& folder, const RunTrack& track, const RunEnd& end,
+                     const config::RunConfig& config, const std::string& log_path) {
+  ComparedRun run;
+  run.folder = folder;
+  run.steps = track.last_step();
+  run.end = end.detail;
+  run.violations = end.violations;
+  run.verdict = sim::RunVerdictName(sim::RunReport::FromViolations(run.steps, end.violations).verdict);
+  const int n = track.num_robots;
+  for (int64_t k = 0; k <= track.last_step(); ++k) {
+    for (int i = 0; i < n; ++i) {
+      const sim::Pose2& a = track.pose(k, i);
+      for (int j = i + 1; j < n; ++j) {
+        const sim::Pose2& b = track.pose(k, j);
+        const double d = std::hypot(a.x_m - b.x_m, a.y_m - b.y_m);
+        if (d < run.min_distance_m) {
+          run.min_distance_m = d;
+          run.min_distance_step = k;
+          run.min_distance_first = i;
+          run.min_distance_second = j;
+        }
+      }
+    }
+  }
+  run.metrics = MetricsJson(config, log_path);
+  return run;
+}
+
+std::string Cm(double m) { return Format("%.2f", m * 100.0); }
+
+std::string Closest(const ComparedRun& run) {
+  if (run.min_distance_step < 0) return "-";
+  return Format("%.3f m", run.min_distance_m) + " (robots " + std::to_string(run.min_distance_first) + ", " +
+         std::to_string(run.min_distance_second) + ", step " + std::to_string(run.min_distance_step) + ")";
+}
+
+std::string MetricText(const nlohmann::ordered_json& value) {
+  if (value.is_number()) return Format("%.6g", value.get<double>());
+  if (value.is_array()) return std::to_string(value.size()) + " entries";
+  return value.dump();
+}
+
+}  // namespace
+
+RunComparison CompareRuns(const std::string& first_dir, const std::string& second_dir) {
+  const std::string first_log = (fs::path(first_dir) / "run.lcmlog").string();
+  const std::string second_log = (fs::path(second_dir) / "run.lcmlog").string();
+  const std::string config_path = (fs::path(first_dir) / "config.yaml").string();
+  for (const std::string& path : {first_log, second_log, config_path}) {
+    if (!fs::exists(path)) throw std::runtime_error(path + ": missing; pass two run folders (dream run / dream import)");
+  }
+  const config::RunConfig config = config::LoadRunConfigFile(config_path);
+  RunEnd first_end;
+  RunEnd second_end;
+  const RunTrack first = ReadRunTrack(first_log, &first_end);
+  const RunTrack second = ReadRunTrack(second_log, &second_end);
+  if (first.num_robots != second.num_robots) {
+    throw std::runtime_error(second_log + ": has " + std::to_string(second.num_robots) + " robots, " + first_log +
+                             " " + std::to_string(first.num_robots) + ": these are not runs of one experiment");
+  }
+  RunComparison comparison;
+  comparison.first = Describe(first_dir, first, first_end, config, first_log);
+  comparison.second = Describe(second_dir, second, second_end, config, second_log);
+  comparison.compared_steps = std::min(first.last_step(), second.last_step());
+  const int n = first.num_robots;
+  double total_squared = 0.0;
+  for (int i = 0; i < n; ++i) {
+    RobotTracking tracking;
+    tracking.robot = i;
+    double squared = 0.0;
+    double heading_squared = 0.0;
+    for (int64_t k = 0; k <= comparison.compared_steps; ++k) {
+      const sim::Pose2& a = first.pose(k, i);
+      const sim::Pose2& b = second.pose(k, i);
+      const double error = std::hypot(b.x_m - a.x_m, b.y_m - a.y_m);
+      const double heading = std::remainder(b.theta_rad - a.theta_rad, 2 * M_PI);
+      squared += error * error;
+      heading_squared += heading * heading;
+      if (error > tracking.max_m) {
+        tracking.max_m = error;
+        tracking.max_step = k;
+      }
+    }
+    const auto count = static_cast<double>(comparison.compared_steps + 1);
+    tracking.rms_m = std::sqrt(squared / count);
+    tracking.rms_heading_rad = std::sqrt(heading_squared / count);
+    total_squared += squared;
+    if (tracking.max_m > comparison.max_m) {
+      comparison.max_m = tracking.max_m;
+      comparison.max_robot = i;
+      comparison.max_step = tracking.max_step;
+    }
+    comparison.robots.push_back(tracking);
+  }
+  comparison.rms_m = std::sqrt(total_squared / (static_cast<double>(comparison.compared_steps + 1) * n));
+  return comparison;
+}
+
+std::string RunComparison::Text() const {
+  std::string text;
+  text += "first (simulation): " + first.folder + ": " + std::to_string(first.steps) + " steps, " + first.verdict +
+          (first.end.empty() ? "" : " (" + first.end + ")") + "\n";
+  text += "second (lab):       " + second.folder + ": " + std::to_string(second.steps) + " steps, " + second.verdict +
+          (second.end.empty() ? "" : " (" + second.end + ")") + "\n";
+  text += "compared steps 0.." + std::to_string(compared_steps) + "\n\n";
+  text += "tracking error (second - first, robot centre)\n";
+  text += "  robot   RMS cm   max cm   at step   RMS heading deg\n";
+  for (const RobotTracking& r : robots) {
+    text += Pad(std::to_string(r.robot), 7) + Pad(Cm(r.rms_m), 9) + Pad(Cm(r.max_m), 9) +
+            Pad(std::to_string(r.max_step), 10) + Pad(Format("%.2f", r.rms_heading_rad * 180.0 / M_PI), 18) + "\n";
+  }
+  text += "    all" + Pad(Cm(rms_m), 9) + Pad(Cm(max_m), 9) + Pad(std::to_string(max_step), 10) + "   (robot " +
+          std::to_string(max_robot) + ")\n\n";
+  text += "closest robots: first " + Closest(first) + "\n                second " + Closest(second) + "\n\n";
+  text += "violations            first   second\n";
+  auto row = [&text](const char* name, int64_t a, int64_t b) {
+    text += std::string("  ") + name + Pad(std::to_string(a), 22 - std::string(name).size()) +
+            Pad(std::to_string(b), 9) + "\n";
+  };
+  row("boundary", first.violations.boundary_errors, second.violations.boundary_errors);
+  row("collision", first.violations.collision_errors, second.violations.collision_errors);
+  row("actuator", first.violations.actuator_errors, second.violations.actuator_errors);
+  row("obstacle", first.violations.obstacle_collisions, second.violations.obstacle_collisions);
+  text += "\nmetrics (" + (first.metrics.contains("kind") ? first.metrics["kind"].get<std::string>() : std::string("?")) +
+          ")\n";
+  for (const auto& [name, value] : first.metrics.items()) {
+    if (name == "kind") continue;
+    const std::string other = second.metrics.contains(name) ? MetricText(second.metrics[name]) : "-";
+    text += "  " + name + ": " + MetricText(value) + "  |  " + other + "\n";
+  }
+  return text;
+}
+
+nlohmann::ordered_json RunComparison::Json() const {
+  auto side = [](const ComparedRun& run) {
+    nlohmann::ordered_json json;
+    json["folder"] = run.folder;
+    json["steps"] = run.steps;
+    json["end"] = run.end;
+    json["verdict"] = run.verdict;
+    json["violations"] = {{"boundary_errors", run.violations.boundary_errors},
+                          {"collision_errors", run.violations.collision_errors},
+                          {"actuator_errors", run.violations.actuator_errors},
+                          {"obstacle_collisions", run.violations.obstacle_collisions}};
+    json["min_distance_m"] = std::isfinite(run.min_distance_m) ? nlohmann::ordered_json(run.min_distance_m) : nullptr;
+    json["min_distance_step"] = run.min_distance_step;
+    json["min_distance_robots"] = {run.min_distance_first, run.min_distance_second};
+    json["metrics"] = run.metrics;
+    return json;
+  };
+  nlohmann::ordered_json json;
+  json["first"] = side(first);
+  json["second"] = side(second);
+  json["compared_steps"] = compared_steps;
+  json["tracking_rms_m"] = rms_m;
+  json["tracking_max_m"] = max_m;
+  json["tracking_max_robot"] = max_robot;
+  json["tracking_max_step"] = max_step;
+  nlohmann::ordered_json robots_json = nlohmann::ordered_json::array();
+  for (const RobotTracking& r : robots) {
+    robots_json.push_back({{"robot", r.robot},
+                           {"rms_m", r.rms_m},
+                           {"max_m", r.max_m},
+                           {"max_step", r.max_step},
+                           {"rms_heading_rad", r.rms_heading_rad}});
+  }
+  json["robots"] = robots_json;
+  return json;
+}
+
+RunComparison CompareRunsAndWrite(const std::string& first_dir, const std::string& second_dir,
+                                  const std::string& out_dir) {
+  RunComparison comparison = CompareRuns(first_dir, second_dir);
+  const OutputFolder out(out_dir);
+  const std::string picture = out.PathOf("comparison.png");
+  out.WriteFile("comparison.json", comparison.Json().dump(2) + "\n");
+  sim::ComparisonPicture::Render(
+      (fs::path(first_dir) / "run.lcmlog").string(), (fs::path(second_dir) / "run.lcmlog").string(), picture,
+      {"dashed: " + first_dir + " (" + std::to_string(comparison.first.steps) + " steps), solid: " + second_dir +
+           " (" + std::to_string(comparison.second.steps) + " steps)",
+       "tracking error: RMS " + Cm(comparison.rms_m) + " cm, max " + Cm(comparison.max_m) + " cm (robot " +
+           std::to_string(comparison.max_robot) + ", step " + std::to_string(comparison.max_step) + ")"});
+  return comparison;
+}
+
+}  // namespace dream::bridge

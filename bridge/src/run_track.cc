@@ -1,0 +1,72 @@
+#include "dream/bridge/run_track.h"
+
+#include <stdexcept>
+
+#include "dream/lcm/channels.h"
+#include "dream/lcm/lcm_typed.h"
+#include "dream/lcm/log_reader.h"
+#include "dream/obstacles_t.hpp"
+#include "dream/robot_poses_t.hpp"
+#include "dream/run_status_t.hpp"
+
+namespace dream::bridge {
+
+RunTrack ReadRunTrack(const std::string& log_path, RunEnd* end) {
+  RunTrack track;
+  std::vector<sim::ObstacleState> obstacles;
+  int64_t obstacles_step = -1;
+  lcm::LogReader reader(log_path);
+  lcm::LogRecord record;
+  robot_poses_t poses;
+  obstacles_t obstacle_message;
+  run_status_t status;
+  auto fail = [&log_path](const std::string& problem) { throw std::runtime_error(log_path + ": " + problem); };
+  while (reader.Next(&record)) {
+    const int size = static_cast<int>(record.data.size());
+    if (record.channel == lcm::kPosesChannel) {
+      if (!lcm::Decode(record.data.data(), size, &poses)) fail("a DREAM_POSES message cannot be decoded");
+      const int64_t expected = track.last_step() + 1;
+      if (poses.step != expected) {
+        fail("DREAM_POSES jumps from step " + std::to_string(track.last_step()) + " to step " +
+             std::to_string(poses.step) + "; a run log has every step once, in order");
+      }
+      if (track.num_robots == 0) {
+        if (poses.num_robots < 1) fail("DREAM_POSES at step 0 has no robots");
+        track.num_robots = poses.num_robots;
+      } else if (poses.num_robots != track.num_robots) {
+        fail("DREAM_POSES at step " + std::to_string(poses.step) + " has " + std::to_string(poses.num_robots) +
+             " robots, earlier steps " + std::to_string(track.num_robots));
+      }
+      const auto n = static_cast<size_t>(track.num_robots);
+      // This step's velocities are what the robots drove with from the step before.
+      if (poses.step > 0) {
+        for (size_t i = 0; i < n; ++i) {
+          track.commands[(static_cast<size_t>(poses.step) - 1) * n + i] = sim::UnicycleCommand{poses.v[i], poses.w[i]};
+        }
+      }
+      track.utime.push_back(poses.utime);
+      for (size_t i = 0; i < n; ++i) track.poses.push_back(sim::Pose2{poses.x[i], poses.y[i], poses.theta[i]});
+      track.commands.resize(track.poses.size());
+      track.obstacles.push_back(obstacles_step == poses.step ? obstacles : std::vector<sim::ObstacleState>{});
+    } else if (record.channel == lcm::kObstaclesChannel) {
+      if (!lcm::Decode(record.data.data(), size, &obstacle_message)) fail("a DREAM_OBSTACLES message cannot be decoded");
+      obstacles.clear();
+      for (const rectangle_obstacle_t& o : obstacle_message.obstacles) {
+        obstacles.push_back(sim::ObstacleState{o.id, o.center_x, o.center_y, o.width, o.height, o.vx, o.vy});
+      }
+      obstacles_step = obstacle_message.step;
+    } else if (record.channel == lcm::kStatusChannel && end != nullptr) {
+      if (!lcm::Decode(record.data.data(), size, &status)) fail("a DREAM_STATUS message cannot be decoded");
+      end->seen = true;
+      end->state = status.state;
+      end->detail = status.detail;
+      end->step = status.step;
+      end->violations = sim::ViolationCounts{status.boundary_errors, status.collision_errors, status.actuator_errors,
+                                             status.obstacle_collisions};
+    }
+  }
+  if (track.utime.empty()) fail("the log holds no DREAM_POSES messages: it is not a run log");
+  return track;
+}
+
+}  // namespace dream::bridge

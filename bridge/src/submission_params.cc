@@ -1,0 +1,85 @@
+#include "dream/bridge/submission_params.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "dream/bridge/submission_format.h"
+
+namespace dream::bridge {
+
+NpyArray SubmissionParams::ToNpy() const {
+  NpyArray array;
+  array.shape = {kParamCount};
+  array.values.assign(kParamCount, 0.0);
+  double* p = array.values.data();
+  p[kParamMagic] = kParamsMagic;
+  p[kParamFormatVersion] = kFormatVersion;
+  p[kParamNumRobots] = num_robots;
+  p[kParamSteps] = static_cast<double>(steps);
+  p[kParamStrategy] = options.strategy == Strategy::kTrack ? kStrategyTrack : kStrategyReplay;
+  p[kParamBarriers] = options.barriers ? 1.0 : 0.0;
+  p[kParamSettleMaxSteps] = options.settle_max_steps;
+  p[kParamSettlePositionTolerance] = options.settle_position_tolerance_m;
+  p[kParamSettleHeadingTolerance] = options.settle_heading_tolerance_rad;
+  p[kParamSettleGainV] = options.settle_gain_v_per_s;
+  p[kParamSettleGainW] = options.settle_gain_w_per_s;
+  p[kParamGainX] = options.gain_x_per_s;
+  p[kParamGainY] = options.gain_y_per_m2;
+  p[kParamGainTheta] = options.gain_theta_per_s;
+  p[kParamSaveEverySteps] = options.save_every_steps;
+  p[kParamWheelRadius] = wheel_radius_m;
+  p[kParamBaseLength] = base_length_m;
+  p[kParamMaxWheelSpeed] = max_wheel_speed_radps;
+  return array;
+}
+
+SubmissionParams SubmissionParams::FromNpy(const NpyArray& array, const std::string& name) {
+  auto fail = [&name](const std::string& problem) { throw std::runtime_error(name + ": " + problem); };
+  if (array.shape != std::vector<int64_t>{kParamCount}) {
+    fail("expected " + std::to_string(kParamCount) + " numbers (a dream_params.npy of this dream version)");
+  }
+  const double* p = array.values.data();
+  for (int i = 0; i < kParamCount; ++i) {
+    if (!std::isfinite(p[i])) fail("value " + std::to_string(i) + " is not finite");
+  }
+  if (p[kParamMagic] != kParamsMagic) fail("is not a dream_params.npy (wrong magic number)");
+  if (p[kParamFormatVersion] != kFormatVersion) {
+    fail("has format version " + std::to_string(p[kParamFormatVersion]) + ", this dream reads " +
+         std::to_string(kFormatVersion) + "; export the run again");
+  }
+  auto whole = [&](int index, double low, double high, const char* what) {
+    const double value = p[index];
+    if (value != std::floor(value) || value < low || value > high) {
+      fail(std::string(what) + " = " + std::to_string(value) + " is not a whole number in [" + std::to_string(low) +
+           ", " + std::to_string(high) + "]");
+    }
+    return static_cast<int64_t>(value);
+  };
+  SubmissionParams params;
+  params.num_robots = static_cast<int>(whole(kParamNumRobots, 1, 50, "number of robots"));
+  params.steps = whole(kParamSteps, 1, 1e8, "steps");
+  const double strategy = p[kParamStrategy];
+  if (strategy != kStrategyTrack && strategy != kStrategyReplay) fail("unknown strategy " + std::to_string(strategy));
+  params.options.strategy = strategy == kStrategyTrack ? Strategy::kTrack : Strategy::kReplay;
+  params.options.barriers = whole(kParamBarriers, 0, 1, "barriers") == 1;
+  params.options.settle_max_steps = static_cast<int>(whole(kParamSettleMaxSteps, 0, 3000, "settle steps"));
+  params.options.settle_position_tolerance_m = p[kParamSettlePositionTolerance];
+  params.options.settle_heading_tolerance_rad = p[kParamSettleHeadingTolerance];
+  params.options.settle_gain_v_per_s = p[kParamSettleGainV];
+  params.options.settle_gain_w_per_s = p[kParamSettleGainW];
+  params.options.gain_x_per_s = p[kParamGainX];
+  params.options.gain_y_per_m2 = p[kParamGainY];
+  params.options.gain_theta_per_s = p[kParamGainTheta];
+  params.options.save_every_steps = static_cast<int>(whole(kParamSaveEverySteps, 1, 1e8, "save interval"));
+  params.wheel_radius_m = p[kParamWheelRadius];
+  params.base_length_m = p[kParamBaseLength];
+  params.max_wheel_speed_radps = p[kParamMaxWheelSpeed];
+  std::string error;
+  if (!params.options.IsValid(&error)) fail(error);
+  if (!(params.wheel_radius_m > 0 && params.base_length_m > 0 && params.max_wheel_speed_radps > 0)) {
+    fail("robot constants must be positive");
+  }
+  return params;
+}
+
+}  // namespace dream::bridge

@@ -1,0 +1,312 @@
+// dream export / import / lab-replay / compare / check-submission: the bridge
+// to the Robotarium (docs/robotarium.md). The work is in dream::bridge; this
+// file is options, messages and exit codes.
+#include <spdlog/spdlog.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "commands.h"
+#include "dream/agents/agent_host.h"
+#include "dream/agents/controller_factory.h"
+#include "dream/bridge/lab_import.h"
+#include "dream/bridge/lab_replay_world.h"
+#include "dream/bridge/metrics_json.h"
+#include "dream/bridge/output_folder.h"
+#include "dream/bridge/run_comparison.h"
+#include "dream/bridge/submission_exporter.h"
+#include "dream/bridge/submission_format.h"
+#include "dream/config/run_config.h"
+#include "dream/lcm/lcm_bus.h"
+#include "dream/lcm/lcm_url.h"
+#include "dream/sim/run_recorder.h"
+#include "dream/sim/run_report.h"
+#include "dream/sim/run_summary.h"
+#include "dream/sim/sim_node.h"
+#include "dream/sim/trajectory_picture.h"
+#include "process_group.h"
+
+#ifndef DREAM_BRIDGE_PYTHON_DIR
+#error "DREAM_BRIDGE_PYTHON_DIR must name bridge/python"
+#endif
+#ifndef DREAM_DEFAULT_PYTHON
+#define DREAM_DEFAULT_PYTHON "/usr/bin/python3"
+#endif
+
+namespace dream::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string ReadText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot open the file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string Cm(double m) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.2f cm", m * 100.0);
+  return text;
+}
+
+/// dream_result.npy (or .mat) in `path` when it is a folder, else `path`.
+std::string ResultFile(const std::string& path) {
+  if (!fs::is_directory(path)) return path;
+  for (const char* name : {bridge::SubmissionFiles::kResult, bridge::SubmissionFiles::kResultMat}) {
+    const fs::path candidate = fs::path(path) / name;
+    if (fs::exists(candidate)) return candidate.string();
+  }
+  throw std::runtime_error(path + ": holds neither " + std::string(bridge::SubmissionFiles::kResult) + " nor " +
+                           bridge::SubmissionFiles::kResultMat + "; pass the file the lab returned");
+}
+
+std::string DefaultOut(const std::string& given, const std::string& name, const std::string& suffix) {
+  if (!given.empty()) return given;
+  std::error_code error;
+  fs::create_directories("runs", error);
+  return (fs::path("runs") / (name + suffix)).string();
+}
+
+void PrintImported(const bridge::ImportedRun& imported) {
+  const bridge::LabResult& lab = imported.lab;
+  const sim::RunReport report = sim::RunReport::FromViolations(lab.track.last_step(), imported.violations);
+  std::cout << "imported " << lab.track.last_step() << " of " << lab.planned_steps << " planned steps of "
+            << lab.track.num_robots << " robots (" << (lab.complete ? "complete" : "CUT SHORT") << "), after "
+            << lab.settle_steps << " settle steps; " << lab.wall_duration_s << " s of lab time\n";
+  if (lab.clock_steps_back > 0) {
+    std::cout << "note: the lab's clock went back " << lab.clock_steps_back << " times; those stamps were held\n";
+  }
+  std::cout << "violations on the lab's poses: " << sim::RunVerdictName(report.verdict) << " (boundary "
+            << imported.violations.boundary_errors << ", collision " << imported.violations.collision_errors
+            << ", actuator " << imported.violations.actuator_errors << ", obstacle "
+            << imported.violations.obstacle_collisions << ")\n";
+  std::cout << "log:     " << imported.log_path << "\nsummary: " << imported.summary_path
+            << "\npicture: " << imported.picture_path << "\n";
+}
+
+}  // namespace
+
+int RunExport(const ExportArgs& args) {
+  bridge::ExportOptions options;
+  options.strategy = bridge::ParseStrategy(args.strategy);
+  options.barriers = args.barriers;
+  options.settle_max_steps = args.settle_steps;
+  const std::string config_path =
+      args.config_path.empty() ? (fs::path(args.run_dir) / "config.yaml").string() : args.config_path;
+  std::string out_dir = args.out_dir;
+  if (out_dir.empty()) {
+    const config::RunConfig config = config::LoadRunConfigFile(config_path);
+    std::error_code error;
+    fs::create_directories("exports", error);
+    out_dir = (fs::path("exports") / config.name).string();
+  }
+  try {
+    const bridge::ExportSummary summary = bridge::ExportSubmission(args.run_dir, out_dir, options, args.config_path);
+    std::cout << summary.instructions << "\nwritten: " << summary.out_dir << "/UPLOAD.txt, " << summary.upload_dir
+              << "/ (" << summary.uploads.size() << " files)\n";
+    return kExitOk;
+  } catch (const bridge::ExportRefused& refused) {
+    std::cerr << "dream export: " << refused.what() << "\nnothing was written.\n";
+    return kExitRejected;
+  }
+}
+
+int RunImport(const ImportArgs& args) {
+  const bridge::ExportedSubmission exported = bridge::ExportedSubmission::Read(args.export_dir);
+  const std::string out_dir = DefaultOut(args.out_dir, exported.config.name, "_lab");
+  const bridge::ImportedRun imported = bridge::ImportLabRun(ResultFile(args.result), args.export_dir, out_dir);
+  PrintImported(imported);
+  if (!imported.lab.complete) return kExitRunFailed;
+  return imported.violations.hard_errors() > 0 ? kExitRejected : kExitOk;
+}
+
+int RunCompare(const CompareArgs& args) {
+  const std::string out_dir = args.out_dir.empty() ? args.second_dir : args.out_dir;
+  const bridge::RunComparison comparison = bridge::CompareRunsAndWrite(args.first_dir, args.second_dir, out_dir);
+  std::cout << comparison.Text() << "\nwritten: " << out_dir << "/comparison.json, " << out_dir
+            << "/comparison.png\n";
+  return kExitOk;
+}
+
+int RunLabReplay(const LabReplayArgs& args) {
+  const std::string log_in = (fs::path(args.lab_dir) / "run.lcmlog").string();
+  const std::string config_in = (fs::path(args.lab_dir) / "config.yaml").string();
+  config::RunConfig config = config::LoadRunConfigFile(config_in);
+  bridge::RunTrack track = bridge::ReadRunTrack(log_in);
+  if (track.num_robots != config.num_robots) {
+    throw std::runtime_error(log_in + ": has " + std::to_string(track.num_robots) + " robots, " + config_in + " " +
+                             std::to_string(config.num_robots));
+  }
+  if (track.last_step() < 1) throw std::runtime_error(log_in + ": the lab run has no step to replay");
+  config.sim.max_steps = args.steps > 0 ? std::min<int64_t>(args.steps, track.last_step()) : track.last_step();
+  config.sim.stop_when_done = false;  // the lab run is replayed to its end
+  if (!args.mode.empty()) config.sim.mode = sim::ParseWorldMode(args.mode);
+  const agents::ControllerFactory factory(config.controller, config.num_robots, config.seed);
+
+  const bridge::OutputFolder out(DefaultOut(args.out_dir, config.name, "_lab_replay"));
+  const std::string log_path = out.PathOf("run.lcmlog");
+  const bool in_process = !args.world_only;
+  lcm::LcmBus bus(args.lcm_url.empty() ? (in_process ? "memq://" : lcm::ResolveLcmUrl("")) : lcm::ResolveLcmUrl(args.lcm_url));
+  std::unique_ptr<agents::AgentHost> host;
+  if (in_process) {
+    std::vector<std::unique_ptr<agents::RobotAgent>> robots;
+    for (int id = 0; id < config.num_robots; ++id) robots.push_back(factory.Make(id));
+    host = std::make_unique<agents::AgentHost>(bus, std::move(robots), NewAgentId());
+  }
+  out.WriteFile("config.yaml", ReadText(config_in));
+  sim::RunOutcome outcome;
+  std::unique_ptr<bridge::LabReplayWorld> world;
+  {
+    sim::RunRecorder recorder(log_path);
+    world = std::make_unique<bridge::LabReplayWorld>(std::move(track), config.world, &recorder);
+    sim::SimNode node(bus, *world, &recorder, config.sim);
+    spdlog::info("{}: replaying {} lab steps of {} robots ({}) on {}{}", config.name, config.sim.max_steps,
+                 config.num_robots, sim::WorldModeName(config.sim.mode), bus.url(),
+                 in_process ? " with the agents in this process" : "; start the agents with dream agent");
+    outcome = node.Run(StopFlag());
+    recorder.Close();
+  }
+
+  // The agents' commands beside the lab's: how differently the controller
+  // reacts to the real poses than the lab script drove.
+  nlohmann::ordered_json agreement = nlohmann::ordered_json::array();
+  for (int i = 0; i < config.num_robots; ++i) {
+    double dv2 = 0.0;
+    double dw2 = 0.0;
+    int64_t count = 0;
+    for (int64_t k = 0; k < world->step(); ++k) {
+      if (!world->has_agent_command(k, i)) continue;
+      const sim::UnicycleCommand& agent = world->agent_command(k, i);
+      const sim::UnicycleCommand& lab = world->track().command(k, i);
+      dv2 += (agent.v_mps - lab.v_mps) * (agent.v_mps - lab.v_mps);
+      dw2 += (agent.w_radps - lab.w_radps) * (agent.w_radps - lab.w_radps);
+      ++count;
+    }
+    agreement.push_back({{"robot", i},
+                         {"steps_with_command", count},
+                         {"rms_v_difference_mps", count > 0 ? std::sqrt(dv2 / static_cast<double>(count)) : 0.0},
+                         {"rms_w_difference_radps", count > 0 ? std::sqrt(dw2 / static_cast<double>(count)) : 0.0}});
+  }
+  nlohmann::ordered_json summary =
+      nlohmann::ordered_json::parse(sim::RunSummaryJson(config, outcome, *world, "run.lcmlog"));
+  summary["config"] = "config.yaml";
+  summary["metrics"] = bridge::MetricsJson(config, log_path);
+  summary["lab_replay"] = {{"lab_run", fs::absolute(args.lab_dir).string()},
+                           {"lab_command_channels", std::string(bridge::kLabCommandChannelPrefix) + "<id>"},
+                           {"agents_vs_lab_commands", agreement}};
+  out.WriteFile("summary.json", summary.dump(2) + "\n");
+  const sim::RunReport report = sim::RunReport::FromViolations(world->step(), world->violations());
+  spdlog::info("{} after {} steps ({:.2f} s wall): {}", sim::EndName(outcome.end), outcome.steps,
+               outcome.wall_time_s, outcome.reason);
+  std::cout << report.Text() << "log:     " << log_path << "\nsummary: " << out.PathOf("summary.json") << "\n";
+  if (outcome.steps > 0) {
+    sim::TrajectoryPicture::Render(log_path, out.PathOf("trajectories.png"));
+    std::cout << "picture: " << out.PathOf("trajectories.png") << "\n";
+  }
+  switch (outcome.end) {
+    case sim::RunOutcome::End::kFinished:
+      return report.verdict == sim::RunVerdict::kRejected ? kExitRejected : kExitOk;
+    case sim::RunOutcome::End::kInterrupted:
+      return kExitInterrupted;
+    default:
+      spdlog::error("{}", outcome.reason);
+      return kExitRunFailed;
+  }
+}
+
+int RunCheckSubmission(const CheckSubmissionArgs& args) {
+  const bridge::ExportedSubmission exported = bridge::ExportedSubmission::Read(args.export_dir);
+  const bridge::OutputFolder out(DefaultOut(args.out_dir, exported.config.name, "_check"));
+  const std::string workdir = out.MakeSubfolder("lab_files");
+  const std::string report_path = out.PathOf("check_report.json");
+  for (const char* stale : {bridge::SubmissionFiles::kResult, "dream_result.partial.npy"}) {
+    std::error_code ignored;
+    fs::remove(fs::path(workdir) / stale, ignored);
+  }
+  std::vector<std::string> argv = {args.python.empty() ? DREAM_DEFAULT_PYTHON : args.python,
+                                   std::string(DREAM_BRIDGE_PYTHON_DIR) + "/run_submission.py",
+                                   "--upload", (fs::path(args.export_dir) / "upload").string(),
+                                   "--workdir", workdir,
+                                   "--report", report_path};
+  if (args.standin) argv.push_back("--standin");
+  if (!args.simulator.empty()) argv.insert(argv.end(), {"--simulator", args.simulator});
+  if (args.require_official) argv.push_back("--require-official");
+  if (args.skip_initialization) argv.push_back("--skip-initialization");
+  spdlog::info("running {}/upload/{} in a Robotarium simulator (output in {})", args.export_dir,
+               bridge::SubmissionFiles::kMainScript, workdir);
+  int code = 0;
+  {
+    ProcessGroup group;
+    const pid_t pid = group.Start(argv);
+    code = group.Wait(pid);
+  }
+  if (code == 5) {
+    std::cerr << "dream check-submission: no official Robotarium simulator found (--simulator DIR, "
+                 "$ROBOTARIUM_PYTHON_SIMULATOR, or pip install it); leave out --require-official to use the "
+                 "stand-in\n";
+    return kExitInputError;
+  }
+  if (!fs::exists(report_path)) {
+    std::cerr << "dream check-submission: the runner failed (exit " << code << ") before writing its report\n";
+    return kExitRunFailed;
+  }
+  const nlohmann::json report = nlohmann::json::parse(ReadText(report_path));
+  const std::string simulator = report.value("simulator", "?");
+  const std::string verdict = report.value("verdict", "unknown");
+  const std::vector<std::string> warnings = report.value("warnings", std::vector<std::string>{});
+  std::cout << "simulator: " << (simulator == "official" ? "the official Robotarium simulator (" +
+                                                               report.value("simulator_path", std::string()) + ")"
+                                                         : std::string("DREAM's stand-in (the official one was not found)"))
+            << "\n";
+  if (!report.value("ok", false)) {
+    std::cerr << "dream check-submission: the script failed in the simulator:\n"
+              << report.value("error", std::string()) << "\n";
+    return kExitRunFailed;
+  }
+  std::cout << "debug() says:\n" << report.value("debug_text", std::string());
+  for (const std::string& warning : warnings) std::cout << "WARNING (Python): " << warning << "\n";
+
+  const bridge::ImportedRun imported = bridge::ImportLabRun(
+      (fs::path(workdir) / bridge::SubmissionFiles::kResult).string(), args.export_dir, out.dir());
+  PrintImported(imported);
+
+  nlohmann::ordered_json check;
+  check["simulator"] = simulator;
+  check["simulator_path"] = report.value("simulator_path", std::string());
+  check["script_ok"] = true;
+  check["verdict"] = verdict;
+  check["python_warnings"] = warnings;
+  check["debug_text"] = report.value("debug_text", std::string());
+  check["settle_steps"] = imported.lab.settle_steps;
+  check["complete"] = imported.lab.complete;
+  const std::string run_dir = args.run_dir.empty() ? exported.source_run : args.run_dir;
+  if (!run_dir.empty() && fs::exists(fs::path(run_dir) / "run.lcmlog")) {
+    const bridge::RunComparison comparison = bridge::CompareRunsAndWrite(run_dir, out.dir(), out.dir());
+    std::cout << "\n" << comparison.Text();
+    std::cout << "tracking error against " << run_dir << ": RMS " << Cm(comparison.rms_m) << ", max "
+              << Cm(comparison.max_m) << "\n";
+    check["compared_with"] = run_dir;
+    check["tracking_rms_m"] = comparison.rms_m;
+    check["tracking_max_m"] = comparison.max_m;
+  } else {
+    std::cout << "\nnot compared: the simulated run " << (run_dir.empty() ? "(unknown)" : run_dir)
+              << " is not there (pass --run DIR)\n";
+  }
+  out.WriteFile("check.json", check.dump(2) + "\n");
+  std::cout << "written: " << out.PathOf("check.json") << "\n";
+  if (verdict == "rejected") return kExitRejected;
+  if (verdict != "clean" || !warnings.empty()) {
+    std::cout << "WARNING: the script ran, but with " << (verdict != "clean" ? "debug() warnings" : "Python warnings")
+              << "; see above\n";
+  }
+  return imported.lab.complete ? kExitOk : kExitRunFailed;
+}
+
+}  // namespace dream::cli

@@ -1,0 +1,203 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "dream/agents/byte_writer.h"
+#include "dream/agents/circle_formation_robot.h"
+#include "dream/agents/controller_factory.h"
+#include "dream/agents/formation_progress.h"
+#include "dream/agents/formation_sequence_metrics.h"
+#include "dream/agents/hrvo_circle_builder.h"
+#include "dream/config/config_error.h"
+
+namespace dream::agents {
+namespace {
+
+std::vector<uint8_t> States(std::vector<int32_t> states) {
+  ByteWriter writer;
+  writer.Int32(static_cast<int32_t>(states.size()));
+  for (int32_t s : states) writer.Int32(s);
+  return writer.Take();
+}
+
+TEST(FormationProgressTest, MergeKeepsTheHighestKnownStateOfEveryRobot) {
+  FormationProgress progress(4, 3);
+  EXPECT_EQ(progress.states(), (std::vector<int>{0, 0, 0, 0}));
+  ASSERT_TRUE(progress.Merge(States({1, 0, 2, 0})));
+  ASSERT_TRUE(progress.Merge(States({0, 1, 1, 0})));  // older news about robot 2 does not lower it
+  EXPECT_EQ(progress.states(), (std::vector<int>{1, 1, 2, 0}));
+  EXPECT_EQ(progress.MinState(), 0);
+  progress.Set(3, 1);
+  EXPECT_EQ(progress.MinState(), 1);
+  // What it rebroadcasts is the whole vector, in the same format.
+  EXPECT_EQ(progress.Encode(), States({1, 1, 2, 1}));
+  EXPECT_THROW(progress.Set(4, 0), std::out_of_range);
+  EXPECT_THROW(progress.Set(0, 4), std::out_of_range);
+  EXPECT_THROW(FormationProgress(0, 3), std::invalid_argument);
+}
+
+TEST(FormationProgressTest, MalformedPayloadsAreDroppedWhole) {
+  FormationProgress progress(3, 3);
+  ASSERT_TRUE(progress.Merge(States({1, 1, 1})));
+  std::vector<uint8_t> trailing = States({2, 2, 2});
+  trailing.push_back(0);
+  std::vector<uint8_t> truncated = States({2, 2, 2});
+  truncated.resize(truncated.size() - 1);
+  for (const std::vector<uint8_t>& bad : {std::vector<uint8_t>{}, States({2, 2}), States({2, 2, 2, 2}),
+                                          States({2, 9, 2}), States({2, -1, 2}), trailing, truncated}) {
+    EXPECT_FALSE(progress.Merge(bad));
+    // Nothing of a bad payload is taken, not even its valid first entries.
+    EXPECT_EQ(progress.states(), (std::vector<int>{1, 1, 1}));
+  }
+}
+
+// Robots 0 - 1 - 2 in a chain: 0 hears only 1, 2 hears only 1.
+TEST(CircleFormationRobotTest, AdvancesOnlyOnceNewsOfEveryArrivalHasComeOverSeveralHops) {
+  CircleFormationParams params;
+  params.num_robots = 3;
+  std::vector<std::unique_ptr<CircleFormationRobot>> robots;
+  for (int id = 0; id < 3; ++id) {
+    params.goals_m = {{0.5 * id, 0.0}, {0.5 * id, 0.5}, {0.5 * id, 0.0}};
+    robots.push_back(std::make_unique<CircleFormationRobot>(id, RobotParams{}, HrvoRobotParams{}, params));
+  }
+  // Everyone sits on its first point and counts it reached.
+  for (int id = 0; id < 3; ++id) {
+    robots[id]->OnOdometry({0, Eigen::Vector3d(0.5 * id, 0.01, 0.0)});
+    robots[id]->Update(0);
+    EXPECT_EQ(robots[id]->reached(), 1);
+    EXPECT_EQ(robots[id]->goal_index(), 0);
+  }
+  auto say = [&](int id, const std::vector<int>& hears) {
+    std::vector<RadioMessage> heard;
+    for (int other : hears) heard.push_back({other, 0, robots[other]->progress().Encode()});
+    return robots[id]->OnRadio(heard);
+  };
+  // Round 1: each only knows itself; nobody has heard everyone yet.
+  say(0, {});
+  say(2, {});
+  say(1, {0, 2});  // robot 1 now knows all three arrived
+  EXPECT_EQ(robots[1]->progress().states(), (std::vector<int>{1, 1, 1}));
+  EXPECT_EQ(robots[1]->goal_index(), 1);
+  say(0, {1});  // robot 0 learns of robot 2 through robot 1
+  EXPECT_EQ(robots[0]->goal_index(), 1);
+  EXPECT_EQ(robots[2]->goal_index(), 0);  // robot 2 has not heard since
+  // Robot 1 reaches point 2 before robot 2 even learned that everyone had
+  // reached point 1. The thesis's test (every known state equal to its own)
+  // would stall robot 2 forever; "at least its own" lets it go.
+  robots[1]->OnOdometry({0, Eigen::Vector3d(0.5, 0.5, 0.0)});
+  robots[1]->Update(1);
+  EXPECT_EQ(robots[1]->reached(), 2);
+  say(1, {0});
+  EXPECT_EQ(robots[1]->progress().states(), (std::vector<int>{1, 2, 1}));
+  EXPECT_EQ(robots[1]->goal_index(), 1);  // the others are still on their way
+  say(2, {1});
+  EXPECT_EQ(robots[2]->goal_index(), 1);
+  EXPECT_FALSE(robots[1]->done());
+}
+
+TEST(CircleFormationRobotTest, DrivesAtFullSpeedTowardsItsPointAndIsDoneAfterTheLast) {
+  CircleFormationParams params;
+  params.num_robots = 1;
+  params.goals_m = {{1.0, 0.0}};
+  CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
+  const UnicycleCommand hold = robot.Update(0);  // no odometry yet
+  EXPECT_EQ(hold.v_mps, 0.0);
+  robot.OnOdometry({0, Eigen::Vector3d(0.0, 0.0, 0.0)});
+  const UnicycleCommand go = robot.Update(1);
+  EXPECT_NEAR(go.v_mps, 0.8 * 0.2, 1e-12);  // vel_gain * v_max, straight ahead
+  EXPECT_NEAR(go.w_radps, 0.0, 1e-12);
+  robot.OnOdometry({0, Eigen::Vector3d(0.96, 0.0, 0.0)});
+  const UnicycleCommand stop = robot.Update(2);
+  EXPECT_TRUE(robot.done());
+  EXPECT_EQ(stop.v_mps, 0.0);
+}
+
+TEST(CircleFormationRobotTest, MalformedNeighbourPayloadIsCountedAndDropped) {
+  CircleFormationParams params;
+  params.num_robots = 2;
+  params.goals_m = {{0.0, 0.0}, {0.5, 0.0}};
+  CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
+  const std::optional<std::vector<uint8_t>> sent =
+      robot.OnRadio({{1, 0, {1, 2, 3}}, {1, 0, States({2, 2, 2})}, {1, 0, States({0, 1})}});
+  EXPECT_EQ(robot.bad_radio_messages(), 2);
+  EXPECT_EQ(robot.progress().states(), (std::vector<int>{0, 1}));
+  ASSERT_TRUE(sent.has_value());
+  EXPECT_EQ(*sent, States({0, 1}));
+}
+
+TEST(CircleFormationParamsTest, InvalidParamsNameTheField) {
+  CircleFormationParams params;
+  std::string error;
+  EXPECT_FALSE(params.IsValid(&error));
+  EXPECT_NE(error.find("goals_m"), std::string::npos);
+  params.goals_m = {{0.0, 0.0}};
+  EXPECT_TRUE(params.IsValid(&error));
+  params.tolerance_m = 0.0;
+  EXPECT_FALSE(params.IsValid(&error));
+  EXPECT_NE(error.find("tolerance_m"), std::string::npos);
+  params.tolerance_m = 0.05;
+  params.max_speed_mps = 0.3;
+  EXPECT_FALSE(params.IsValid(&error));
+  EXPECT_NE(error.find("max_speed_mps"), std::string::npos);
+  params.max_speed_mps = 0.2;
+  params.num_robots = 2;  // so robot id 2 is not taking part
+  EXPECT_THROW(CircleFormationRobot(2, RobotParams{}, HrvoRobotParams{}, params), std::invalid_argument);
+}
+
+WorldSnapshot At(int64_t step, std::vector<Eigen::Vector3d> poses) {
+  WorldSnapshot world;
+  world.step = step;
+  world.poses = std::move(poses);
+  return world;
+}
+
+TEST(FormationSequenceMetricsTest, FormationsCompleteInOrderWhenEveryRobotIsWithinTolerance) {
+  // Two robots; formation 1 at x = -+1, formation 2 swapped.
+  FormationSequenceMetrics metrics({{{-1.0, 0.0}, {1.0, 0.0}}, {{1.0, 0.0}, {-1.0, 0.0}}}, 0.05);
+  metrics.Observe(At(0, {{1.0, 0.0, 0.0}, {-1.0, 0.0, 0.0}}));    // formation 2's shape first: not counted
+  metrics.Observe(At(1, {{-1.0, 0.04, 0.0}, {1.0, 0.2, 0.0}}));   // only one robot in place
+  metrics.Observe(At(2, {{-1.0, 0.04, 0.0}, {1.03, 0.0, 0.0}}));  // formation 1
+  metrics.Observe(At(3, {{-1.0, 0.04, 0.0}, {1.03, 0.0, 0.0}}));
+  MetricsReport report;
+  metrics.Write(&report);
+  EXPECT_EQ(report.values["formations_completed"], 1.0);
+  EXPECT_EQ(report.values["formation_1_completed_step"], 2.0);
+  EXPECT_EQ(report.values["formation_2_completed_step"], -1.0);
+  EXPECT_EQ(report.values["all_formations_completed_step"], -1.0);
+  metrics.Observe(At(9, {{0.98, 0.0, 0.0}, {-1.0, 0.0, 0.0}}));
+  MetricsReport done;
+  metrics.Write(&done);
+  EXPECT_EQ(done.values["formations_completed"], 2.0);
+  EXPECT_EQ(done.values["all_formations_completed_step"], 9.0);
+  EXPECT_EQ(done.steps["formation_completed_steps"], (std::vector<int64_t>{2, 9}));
+}
+
+std::string FactoryError(const std::string& yaml, int robots) {
+  try {
+    ControllerFactory(config::ConfigNode::LoadString(yaml, "circle.yaml").Required("controller"), robots, 1);
+  } catch (const config::ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(HrvoCircleConfigTest, DefaultsFollowAppendixBAndBadKeysAreClearErrors) {
+  EXPECT_EQ(FactoryError("controller: {kind: hrvo_circle}\n", 10), "");
+  const AgentPartsConfig parts = HrvoCircleBuilder::DefaultParts(3);
+  EXPECT_EQ(parts.robot_period_steps, (std::vector<int>{4, 5, 4}));
+  EXPECT_EQ(parts.start_delay_steps, (std::vector<int>{20, 21, 22}));
+  ASSERT_EQ(parts.sensors.size(), 2u);
+  EXPECT_EQ(parts.sensors[0].period_steps, (std::vector<int>{2, 3, 2}));
+  EXPECT_EQ(parts.sensors[1].period_steps, (std::vector<int>{3, 4, 3}));
+  EXPECT_EQ(parts.radio.kind, RadioConfig::Kind::kRange);
+  EXPECT_EQ(parts.radio.period_steps, (std::vector<int>{30, 30, 30}));
+  std::string error = FactoryError("controller: {kind: hrvo_circle, radius_m: 1.2}\n", 10);
+  EXPECT_NE(error.find("leaves the arena"), std::string::npos) << error;
+  error = FactoryError("controller: {kind: hrvo_circle, tolerance_m: 0}\n", 10);
+  EXPECT_NE(error.find("tolerance_m must be > 0"), std::string::npos) << error;
+  error = FactoryError("controller: {kind: hrvo_circle, formations: 0}\n", 10);
+  EXPECT_NE(error.find("formations: must be in 1..100"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace dream::agents

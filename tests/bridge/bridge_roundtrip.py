@@ -1,0 +1,305 @@
+#!/usr/bin/python3
+"""The Robotarium bridge end to end through the `dream` command.
+
+    bridge_roundtrip.py --dream build/dream --source . --simulator standin|official
+
+For go_to_goal and each thesis experiment whose config exists (hrvo_circle,
+line_deployment, voronoi_coverage, affine_formation): dream run, dream export
+(track), dream check-submission in the chosen Robotarium simulator, which runs
+the exported script, imports what it saved and compares it with the run. Each
+must run without errors or warnings, and track the plan with an RMS error
+under 2 cm. Then, once: the replay strategy, dream compare, dream lab-replay
+(the agents against the lab's poses), lcm-logplayer on an imported log, and
+bad input through the command line (too many robots, over the duration cap,
+code in a config string, NaN in a result, an output path leading outside).
+
+With --simulator official the checkout comes from $ROBOTARIUM_PYTHON_SIMULATOR
+(a checkout, or a bare git repository of robotarium_python_simulator); without
+it the test prints SKIP and exits 77. It also runs one export in the official
+simulator and in the stand-in from the same start and compares every pose.
+"""
+
+import argparse
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+SKIP = 77
+EXPERIMENTS = ["go_to_goal", "hrvo_circle", "line_deployment", "voronoi_coverage", "affine_formation"]
+RMS_LIMIT_M = 0.02
+
+
+class Failure(Exception):
+    pass
+
+
+class Skipped(Exception):
+    pass
+
+
+def check(condition, message):
+    if not condition:
+        raise Failure(message)
+
+
+def run(argv, expect=0, cwd=None, timeout=600):
+    started = time.monotonic()
+    result = subprocess.run([str(a) for a in argv], capture_output=True, text=True, cwd=cwd, timeout=timeout)
+    output = result.stdout + result.stderr
+    if expect is not None and result.returncode != expect:
+        raise Failure("%s exited %d (expected %d):\n%s" % (" ".join(map(str, argv)), result.returncode, expect,
+                                                          output[-3000:]))
+    return output, time.monotonic() - started
+
+
+def official_checkout(tmp):
+    path = os.environ.get("ROBOTARIUM_PYTHON_SIMULATOR", "")
+    if not path:
+        return None
+    if os.path.isfile(os.path.join(path, "rps", "robotarium.py")):
+        return path
+    # A bare git repository (a mirror): check out its HEAD.
+    target = os.path.join(tmp, "robotarium_python_simulator")
+    os.makedirs(target)
+    archive = subprocess.run(["git", "-C", path, "archive", "HEAD"], capture_output=True, check=True).stdout
+    subprocess.run(["tar", "-x", "-C", target], input=archive, check=True)
+    check(os.path.isfile(os.path.join(target, "rps", "robotarium.py")), path + " holds no rps/robotarium.py")
+    return target
+
+
+class Loop:
+    def __init__(self, args, tmp, simulator_flags):
+        self.dream = args.dream
+        self.source = args.source
+        self.tmp = tmp
+        self.flags = simulator_flags
+        self.report = []
+
+    def path(self, *parts):
+        return os.path.join(self.tmp, *parts)
+
+    def experiment(self, name, strategy="track"):
+        config = os.path.join(self.source, "config", name + ".yaml")
+        sim_dir, export_dir, check_dir = (self.path(name + suffix) for suffix in ("_sim", "_export_" + strategy,
+                                                                                   "_check_" + strategy))
+        if not os.path.exists(os.path.join(sim_dir, "run.lcmlog")):
+            _, seconds = run([self.dream, "run", config, "--out", sim_dir, "-q"])
+            self.report.append("%s: dream run %.1f s" % (name, seconds))
+        run([self.dream, "export", sim_dir, "--out", export_dir, "--strategy", strategy, "-q"])
+        check(os.path.isfile(os.path.join(export_dir, "UPLOAD.txt")), name + ": no UPLOAD.txt")
+        output, seconds = run([self.dream, "check-submission", export_dir, "--out", check_dir, "-q"] + self.flags)
+        with open(os.path.join(check_dir, "check.json")) as f:
+            result = json.load(f)
+        where = "%s (%s, %s)" % (name, strategy, result["simulator"])
+        check(result["script_ok"], where + ": the script failed")
+        check(result["verdict"] == "clean", where + ": debug() verdict " + result["verdict"] + ":\n" + result["debug_text"])
+        check(not result["python_warnings"], where + ": Python warnings: %s" % result["python_warnings"])
+        check(result["complete"], where + ": the run did not complete")
+        check("tracking_rms_m" in result, where + ": not compared with the run:\n" + output[-2000:])
+        if strategy == "track":
+            check(result["tracking_rms_m"] < RMS_LIMIT_M,
+                  where + ": tracking RMS %.4f m >= %.2f m" % (result["tracking_rms_m"], RMS_LIMIT_M))
+        self.report.append("%s: check-submission %.1f s, settle %d steps, tracking RMS %.2f cm, max %.2f cm" %
+                           (where, seconds, result["settle_steps"], 100 * result["tracking_rms_m"],
+                            100 * result["tracking_max_m"]))
+        return sim_dir, export_dir, check_dir
+
+
+def bad_input(loop):
+    dream = loop.dream
+    source = loop.source
+    base = open(os.path.join(source, "config", "go_to_goal.yaml")).read()
+
+    # 21 robots: refused, naming the rule and the fix; nothing written.
+    goals = "\n".join("    - [%.2f, %.2f]" % (-1.2 + 0.3 * (i % 7), -0.6 + 0.5 * (i // 7)) for i in range(21))
+    many = base.replace("robots: 8", "robots: 21")
+    many = many[:many.index("initial_poses:")] + "initial_poses: {generate: {min_spacing_m: 0.3}}\n" + \
+        many[many.index("controller:"):]
+    many = many[:many.index("  goals:")] + "  goals:\n" + goals + "\n"
+    many_config = loop.path("many.yaml")
+    with open(many_config, "w") as f:
+        f.write(many)
+    run([dream, "run", many_config, "--out", loop.path("many_sim"), "--steps", "5", "-q"])
+    output, _ = run([dream, "export", loop.path("many_sim"), "--out", loop.path("many_export")], expect=3)
+    check("robots: the run has 21 robots; the Robotarium runs 1 to 20" in output, "21 robots: " + output)
+    check("Fix: set `robots:` to at most 20" in output, "21 robots, no fix: " + output)
+    check(not os.path.exists(loop.path("many_export")), "a refused export wrote files")
+
+    # Over the duration cap.
+    run([dream, "run", os.path.join(source, "config", "go_to_goal.yaml"), "--out", loop.path("long_sim"),
+         "--steps", "27100", "--all-steps", "-q"])
+    output, _ = run([dream, "export", loop.path("long_sim"), "--out", loop.path("long_export")], expect=3)
+    check("duration: 27100 steps + 240 settle steps take 902.2 s on the lab, over its cap of 900 s" in output,
+          "duration: " + output)
+
+    # Code in a config string: the script stays the template, nothing runs.
+    marker = loop.path("PWNED")
+    payload = "x'''\\\"\\\"\\\"\\n__import__('os').system('touch %s') # {0} %%s ${HOME}" % marker
+    hostile = base.replace("description: eight robots drive from a wide ellipse to a small one",
+                           'description: "%s"' % payload)
+    check(hostile != base, "the injection test did not change the config")
+    hostile_config = loop.path("hostile.yaml")
+    with open(hostile_config, "w") as f:
+        f.write(hostile)
+    run([dream, "run", hostile_config, "--out", loop.path("hostile_sim"), "-q"])
+    run([dream, "export", loop.path("hostile_sim"), "--out", loop.path("hostile_export"), "-q"])
+    script = open(loop.path("hostile_export", "upload", "dream_main.py")).read()
+    template = open(os.path.join(source, "bridge", "python", "dream_main.py")).read()
+    check(script == template, "the exported script differs from the fixed template")
+    run([dream, "check-submission", loop.path("hostile_export"), "--out", loop.path("hostile_check"), "--standin",
+         "-q"])
+    check(not os.path.exists(marker), "code from the config ran: %s exists" % marker)
+
+    # A result with NaN: refused naming the file, nothing written.
+    import numpy as np
+    result = np.load(loop.path("go_to_goal_check_track", "lab_files", "dream_result.npy"))
+    result[5, 4] = np.nan
+    bad = loop.path("nan_result.npy")
+    np.save(bad, result)
+    output, _ = run([dream, "import", bad, "--export", loop.path("go_to_goal_export_track"), "--out",
+                     loop.path("nan_lab")], expect=1)
+    check(bad + ": row 5: x of robot 1 is nan" in output, "NaN: " + output)
+    check(not os.path.exists(loop.path("nan_lab")), "a refused import wrote files")
+    np.save(bad, result[:, :-5])  # a 7-robot result
+    output, _ = run([dream, "import", bad, "--export", loop.path("go_to_goal_export_track"), "--out",
+                     loop.path("nan_lab")], expect=1)
+    check("as a result of a 7-robot run; this export has 8 robots" in output, "7 robots: " + output)
+
+    # An output folder whose upload/ leads outside it.
+    os.makedirs(loop.path("escape", "out"))
+    os.makedirs(loop.path("escape", "elsewhere"))
+    os.symlink(loop.path("escape", "elsewhere"), loop.path("escape", "out", "upload"))
+    output, _ = run([dream, "export", loop.path("go_to_goal_sim"), "--out", loop.path("escape", "out")], expect=1)
+    check("outside the output folder" in output, "escape: " + output)
+    check(not os.listdir(loop.path("escape", "elsewhere")), "files were written outside the output folder")
+    loop.report.append("bad input: 21 robots, duration cap, injection, NaN, 7-robot result, escaping path: refused")
+
+
+def once(loop):
+    dream = loop.dream
+    sim_dir = loop.path("go_to_goal_sim")
+    check_dir = loop.path("go_to_goal_check_track")
+    # dream compare writes its report and picture.
+    output, _ = run([dream, "compare", sim_dir, check_dir, "--out", loop.path("compare")])
+    check("tracking error" in output, "compare: " + output)
+    for name in ("comparison.json", "comparison.png"):
+        check(os.path.isfile(loop.path("compare", name)), "compare wrote no " + name)
+    # The agents run unchanged against the lab's poses, through the command.
+    output, _ = run([dream, "lab-replay", check_dir, "--out", loop.path("replay"), "-q"])
+    with open(loop.path("replay", "summary.json")) as f:
+        summary = json.load(f)
+    check(summary["end"] == "finished", "lab-replay: " + summary["reason"])
+    check(not summary["robots_ever_lost"], "lab-replay lost agents")
+    agreement = summary["lab_replay"]["agents_vs_lab_commands"]
+    check(all(a["steps_with_command"] > 0 for a in agreement), "lab-replay: some robot never had a command")
+    # lcm-logplayer reads the imported log to its end (bridge_logplayer_replay plays it over udpm).
+    run(["lcm-logplayer", "--lcm-url=memq://", "-s", "1000", os.path.join(check_dir, "run.lcmlog")], timeout=60)
+    loop.report.append("lcm-logplayer read the imported log to its end")
+
+
+def logplayer(loop):
+    """lcm-logplayer plays the imported log over udpm to lcm-logger, which records every DREAM_* message."""
+    check_dir = loop.path("go_to_goal_check_track")
+    imported_log = os.path.join(check_dir, "run.lcmlog")
+    # The stand-in runs faster than the lab, so its stamps are close together: play slowly enough
+    # that every step's burst of messages is 8 ms from the next (lcm-logger, with its 30-message
+    # queue, drops bursts that come faster while it waits for a CPU).
+    sys.path.insert(0, os.path.join(loop.source, "tests", "python"))
+    from lcmlog import read_events
+    stamps = [e.utime for e in read_events(imported_log) if e.channel == "DREAM_POSES"]
+    closest_us = max(1, min(b - a for a, b in zip(stamps, stamps[1:])))
+    speed = min(5.0, max(0.005, closest_us / 8000.0))
+    integration = os.path.join(loop.source, "tests", "integration")
+    output, _ = run([os.path.join(integration, "netns.sh"), sys.executable,
+                     os.path.join(integration, "logplayer_replay.py"), "--dream", loop.dream, "--source",
+                     loop.source, "--log", imported_log, "--speed", "%.3f" % speed], expect=None, timeout=120)
+    if "SKIP" in output:
+        raise Skipped(output.strip())
+    check("PASS" in output, "lcm-logplayer -> lcm-logger on the imported log: " + output[-2000:])
+    loop.report.append("lcm-logplayer -> udpm -> lcm-logger, imported log: " + output.strip().splitlines()[-2])
+
+
+def equivalence(loop, checkout):
+    """The exported script from the same exact start in both simulators gives the same poses."""
+    runner = os.path.join(loop.source, "bridge", "python", "run_submission.py")
+    upload = loop.path("go_to_goal_export_track", "upload")
+    poses = {}
+    for kind, flags in (("official", ["--simulator", checkout]), ("standin", ["--standin"])):
+        out = loop.path("equivalence_" + kind)
+        run([sys.executable, runner, "--upload", upload, "--workdir", out, "--report", out + ".json",
+             "--skip-initialization", "--record-poses", out + "_poses.npy"] + flags)
+        with open(out + ".json") as f:
+            report = json.load(f)
+        check(report["ok"] and report["simulator"] == kind, kind + ": " + json.dumps(report)[:2000])
+        check(report["verdict"] == "clean", kind + ": verdict " + report["verdict"])
+        import numpy as np
+        poses[kind] = np.load(out + "_poses.npy")
+    import numpy as np
+    check(poses["official"].shape == poses["standin"].shape,
+          "pose counts differ: %s vs %s" % (poses["official"].shape, poses["standin"].shape))
+    worst = float(np.max(np.abs(poses["official"] - poses["standin"])))
+    check(worst <= 1e-9, "official and stand-in poses differ by %g" % worst)
+    loop.report.append("official vs stand-in from the same start: %d get_poses() calls, largest difference %.3g" %
+                       (poses["official"].shape[0], worst))
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--dream", required=True)
+    parser.add_argument("--source", required=True)
+    parser.add_argument("--simulator", choices=["standin", "official"], required=True)
+    parser.add_argument("--experiments", default=",".join(EXPERIMENTS))
+    parser.add_argument("--logplayer", action="store_true",
+                        help="only: go_to_goal through the stand-in, then its imported log over udpm (netns)")
+    args = parser.parse_args()
+    started = time.monotonic()
+    tmp = tempfile.mkdtemp(prefix="dream_bridge_")
+    try:
+        if args.simulator == "official":
+            checkout = official_checkout(tmp)
+            if checkout is None:
+                print("SKIP: set ROBOTARIUM_PYTHON_SIMULATOR to a checkout (or bare git repository) of "
+                      "robotarium/robotarium_python_simulator to run the bridge in the official simulator")
+                return SKIP
+            flags = ["--require-official", "--simulator", checkout]
+        else:
+            checkout = None
+            flags = ["--standin"]
+        loop = Loop(args, tmp, flags)
+        if args.logplayer:
+            loop.experiment("go_to_goal")
+            logplayer(loop)
+        else:
+            names = [n for n in args.experiments.split(",")
+                     if os.path.isfile(os.path.join(args.source, "config", n + ".yaml"))]
+            for name in names:
+                loop.experiment(name)
+            loop.experiment("go_to_goal", strategy="replay")
+            if args.simulator == "standin":
+                once(loop)
+                bad_input(loop)
+            else:
+                equivalence(loop, checkout)
+        print("\n".join(loop.report))
+        print("PASS (%.1f s)" % (time.monotonic() - started))
+        return 0
+    except Skipped as skipped:
+        print("SKIP: %s" % skipped)
+        return SKIP
+    except Failure as failure:
+        print("\n".join(loop.report) if "loop" in locals() else "")
+        print("FAIL: %s" % failure)
+        return 1
+    finally:
+        if os.environ.get("DREAM_TEST_KEEP") == "1":
+            print("kept " + tmp)
+        else:
+            shutil.rmtree(tmp, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,282 @@
+// dream export: pre-validation as the lab would judge a run (each refusal
+// names its rule, robot, step and fix), the files written, nothing written on
+// refusal, and no way to get code from a config into the submission script.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <regex>
+
+#include "bridge_test_support.h"
+#include "dream/bridge/npy_file.h"
+#include "dream/bridge/output_folder.h"
+#include "dream/bridge/pre_validation.h"
+#include "dream/bridge/submission_exporter.h"
+#include "dream/bridge/submission_format.h"
+#include "dream/bridge/submission_params.h"
+#include "dream/config/config_error.h"
+#include "dream/run_status_t.hpp"
+
+namespace dream::bridge {
+namespace {
+
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+
+/// n robots on a grid 0.5 m apart, standing still for `steps` steps.
+RunTrack StillTrack(int n, int64_t steps) {
+  RunTrack track;
+  track.num_robots = n;
+  for (int64_t k = 0; k <= steps; ++k) {
+    track.utime.push_back(k * 33000);
+    for (int i = 0; i < n; ++i) {
+      track.poses.push_back(sim::Pose2{-1.4 + 0.5 * (i % 6), -0.75 + 0.5 * (i / 6), 0.0});
+      track.commands.push_back(sim::UnicycleCommand{});
+    }
+    track.obstacles.emplace_back();
+  }
+  return track;
+}
+
+RunEnd Finished() {
+  RunEnd end;
+  end.seen = true;
+  end.state = run_status_t::FINISHED;
+  end.detail = "reached the step limit";
+  return end;
+}
+
+std::vector<std::string> Rules(const std::vector<ExportProblem>& problems) {
+  std::vector<std::string> rules;
+  for (const ExportProblem& p : problems) rules.push_back(p.rule);
+  return rules;
+}
+
+TEST(PreValidationTest, CleanRunPasses) {
+  EXPECT_TRUE(PreValidate(StillTrack(20, 100), Finished(), sim::WorldParams{}, 240).empty());
+}
+
+TEST(PreValidationTest, MoreThanTwentyRobotsIsRefused) {
+  const auto problems = PreValidate(StillTrack(21, 10), Finished(), sim::WorldParams{}, 240);
+  ASSERT_THAT(Rules(problems), ElementsAre("robots"));
+  EXPECT_THAT(problems[0].Text(), HasSubstr("the run has 21 robots; the Robotarium runs 1 to 20"));
+  EXPECT_THAT(problems[0].Text(), HasSubstr("Fix: set `robots:` to at most 20"));
+}
+
+TEST(PreValidationTest, DurationOverTheCapIsRefusedAndTheLimitIsNamed) {
+  // 27,000 steps + 240 settle steps = 898.9 s fit; 27,100 + 240 = 902.2 s do not.
+  EXPECT_TRUE(PreValidate(StillTrack(2, 27000), Finished(), sim::WorldParams{}, 240).empty());
+  const auto problems = PreValidate(StillTrack(2, 27100), Finished(), sim::WorldParams{}, 240);
+  ASSERT_THAT(Rules(problems), ElementsAre("duration"));
+  EXPECT_THAT(problems[0].Text(), HasSubstr("902.2 s on the lab, over its cap of 900 s"));
+  EXPECT_THAT(problems[0].Text(), HasSubstr("run at most 27032 steps"));
+}
+
+TEST(PreValidationTest, UnfinishedRunIsRefused) {
+  RunEnd end = Finished();
+  end.state = run_status_t::ABORTED;
+  end.detail = "interrupted (Ctrl-C or SIGTERM)";
+  const auto problems = PreValidate(StillTrack(2, 10), end, sim::WorldParams{}, 240);
+  ASSERT_THAT(Rules(problems), ElementsAre("finished"));
+  EXPECT_THAT(problems[0].Text(), HasSubstr("interrupted (Ctrl-C or SIGTERM)"));
+}
+
+TEST(PreValidationTest, BoundaryCollisionAndObstacleErrorsNameRobotAndFirstStep) {
+  RunTrack track = StillTrack(4, 20);
+  for (int64_t k = 7; k <= 9; ++k) track.poses[static_cast<size_t>(k * 4 + 0)].x_m = -1.65;  // robot 0 out
+  for (int64_t k = 5; k <= 20; ++k) {  // robot 2 onto robot 1
+    track.poses[static_cast<size_t>(k * 4 + 2)] = sim::Pose2{track.pose(k, 1).x_m + 0.1, track.pose(k, 1).y_m, 0.0};
+  }
+  for (int64_t k = 12; k <= 20; ++k) track.obstacles[static_cast<size_t>(k)] = {{3, 0.1, -0.75, 0.1, 0.1, 0, 0}};
+  const auto problems = PreValidate(track, Finished(), sim::WorldParams{}, 240);
+  ASSERT_THAT(Rules(problems), ElementsAre("boundary", "collision", "obstacle"));
+  EXPECT_THAT(problems[0].Text(), HasSubstr("boundary: robot 0, step 7: is outside the arena at (-1.650, -0.750)"));
+  EXPECT_THAT(problems[1].Text(), HasSubstr("collision: robots 1 and 2, step 5: are closer than 0.135 m"));
+  EXPECT_THAT(problems[2].Text(), HasSubstr("obstacle: robot 3 and obstacle 3, step 12: touches the virtual obstacle"));
+  for (const ExportProblem& p : problems) EXPECT_THAT(p.Text(), HasSubstr("Fix: ")) << p.Text();
+}
+
+TEST(PreValidationTest, StartPosesMustBeReachableByTheLabsStartUp) {
+  RunTrack track = StillTrack(3, 5);
+  for (int64_t k = 0; k <= 5; ++k) {
+    track.poses[static_cast<size_t>(k * 3 + 1)] = sim::Pose2{track.pose(k, 0).x_m + 0.18, track.pose(k, 0).y_m, 0.0};
+    track.poses[static_cast<size_t>(k * 3 + 2)] = sim::Pose2{1.57, 0.0, 0.0};
+  }
+  const auto problems = PreValidate(track, Finished(), sim::WorldParams{}, 240);
+  ASSERT_THAT(Rules(problems), ElementsAre("start_inside_arena", "start_spacing"));
+  EXPECT_THAT(problems[0].Text(), HasSubstr("robot 2, step 0: starts at (1.570, 0.000), closer than 0.055 m"));
+  EXPECT_THAT(problems[1].Text(), HasSubstr("robots 0 and 1, step 0: start poses are 0.180 m apart"));
+}
+
+class ExportTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() { run_dir_ = new std::string(testing::MakeRunFolder("export_run", testing::ShippedConfig("go_to_goal"))); }
+  static void TearDownTestSuite() { delete run_dir_; }
+  static std::string* run_dir_;
+};
+std::string* ExportTest::run_dir_ = nullptr;
+
+TEST_F(ExportTest, WritesTheSubmissionAndInstructions) {
+  const std::string out = testing::NewFolder("export_out");
+  const ExportSummary summary = ExportSubmission(*run_dir_, out, ExportOptions{});
+  EXPECT_THAT(testing::FilesIn(out),
+              ElementsAre("UPLOAD.txt", "config.yaml", "export.json", "upload", "upload/dream_initial_poses.npy",
+                          "upload/dream_main.py", "upload/dream_params.npy", "upload/dream_reference_commands.npy",
+                          "upload/dream_reference_poses.npy"));
+  EXPECT_EQ(summary.num_robots, 8);
+  EXPECT_GT(summary.steps, 150);
+  const std::string text = testing::ReadText(out + "/UPLOAD.txt");
+  EXPECT_THAT(text, HasSubstr("dream_main.py    <- mark this file as MAIN"));
+  EXPECT_THAT(text, HasSubstr("Number of robots to declare: 8"));
+  EXPECT_THAT(text, HasSubstr("Estimated duration to declare: "));
+  const SubmissionParams params = SubmissionParams::FromNpy(ReadNpyFile(out + "/upload/dream_params.npy"), "p");
+  EXPECT_EQ(params.num_robots, 8);
+  EXPECT_EQ(params.steps, summary.steps);
+  EXPECT_EQ(params.options.strategy, Strategy::kTrack);
+  EXPECT_EQ(ReadNpyFile(out + "/upload/dream_reference_poses.npy").shape,
+            (std::vector<int64_t>{summary.steps + 1, 3, 8}));
+  EXPECT_EQ(ReadNpyFile(out + "/upload/dream_reference_commands.npy").shape, (std::vector<int64_t>{summary.steps, 2, 8}));
+  // The reference is the recorded run, exactly.
+  const RunTrack track = ReadRunTrack(*run_dir_ + "/run.lcmlog");
+  const NpyArray poses = ReadNpyFile(out + "/upload/dream_reference_poses.npy");
+  EXPECT_EQ(poses.values[static_cast<size_t>(100 * 24 + 8 + 3)], track.pose(100, 3).y_m);
+}
+
+TEST_F(ExportTest, RefusedRunWritesNothing) {
+  // The same run judged against a 5-robot lab.
+  std::string config = testing::ShippedConfig("go_to_goal");
+  const std::string out = testing::NewFolder("export_refused") + "/out";
+  RunEnd end;
+  const RunTrack track = ReadRunTrack(*run_dir_ + "/run.lcmlog", &end);
+  LabLimits small_lab;
+  small_lab.max_robots = 5;
+  EXPECT_THAT(Rules(PreValidate(track, end, sim::WorldParams{}, 240, small_lab)), ElementsAre("robots"));
+  // A run that collides: robots 0 and 1 drive to the same goal.
+  config.replace(config.find("- [0.172, 0.323]"), 16, "- [0.416, 0.134]");
+  const std::string bad_run = testing::MakeRunFolder("export_colliding", config);
+  try {
+    ExportSubmission(bad_run, out, ExportOptions{});
+    ADD_FAILURE() << "exported a colliding run";
+  } catch (const ExportRefused& refused) {
+    EXPECT_THAT(refused.what(), HasSubstr("the Robotarium would refuse this run"));
+    EXPECT_THAT(Rules(refused.problems()), ::testing::Contains("collision"));
+  }
+  EXPECT_FALSE(fs::exists(out)) << "a refused export must not write anything";
+}
+
+TEST_F(ExportTest, MissingOrForeignInputsNameTheFile) {
+  const std::string out = testing::NewFolder("export_bad_inputs");
+  const std::string empty = testing::NewFolder("export_empty_run");
+  EXPECT_THROW(
+      {
+        try {
+          ExportSubmission(empty, out + "/a", ExportOptions{});
+        } catch (const std::runtime_error& e) {
+          EXPECT_THAT(e.what(), HasSubstr(empty + "/config.yaml: missing"));
+          throw;
+        }
+      },
+      std::runtime_error);
+  const std::string foreign = testing::NewFolder("export_foreign_run");
+  testing::WriteText(foreign + "/config.yaml", testing::ShippedConfig("go_to_goal"));
+  testing::WriteText(foreign + "/run.lcmlog", "this is not a log\n");
+  EXPECT_THROW(ExportSubmission(foreign, out + "/b", ExportOptions{}), std::runtime_error);
+  EXPECT_FALSE(fs::exists(out + "/a"));
+  EXPECT_FALSE(fs::exists(out + "/b"));
+}
+
+TEST_F(ExportTest, OutputThatWouldEscapeItsFolderIsRefused) {
+  const std::string base = testing::NewFolder("export_escape");
+  const std::string outside = testing::NewFolder("export_escape_target");
+  fs::create_directories(base + "/out");
+  fs::create_directory_symlink(outside, base + "/out/upload");  // upload/ leads elsewhere
+  EXPECT_THROW(
+      {
+        try {
+          ExportSubmission(*run_dir_, base + "/out", ExportOptions{});
+        } catch (const std::runtime_error& e) {
+          EXPECT_THAT(e.what(), HasSubstr("outside the output folder"));
+          throw;
+        }
+      },
+      std::runtime_error);
+  EXPECT_TRUE(testing::FilesIn(outside).empty());
+  const OutputFolder folder(base + "/plain");
+  EXPECT_THROW(folder.PathOf("../x"), std::runtime_error);
+  EXPECT_THROW(folder.PathOf("a/../../x"), std::runtime_error);
+  EXPECT_THROW(folder.PathOf("/etc/passwd"), std::runtime_error);
+  EXPECT_THROW(folder.PathOf(""), std::runtime_error);
+  EXPECT_EQ(folder.PathOf("a/b.npy"), base + "/plain/a/b.npy");
+}
+
+// Nothing from a config reaches the script: the script is a fixed template
+// and every datum is a float64 .npy. A config whose free-text field is built
+// to break out of any string literal changes no byte of the script.
+TEST_F(ExportTest, ConfigStringsCannotInjectCodeIntoTheSubmission) {
+  const std::string payload =
+      "x'''\\\"\\\"\\\"\\n__import__('os').system('touch /tmp/dream_pwned') # ${HOME} %s {0} \\x00";
+  std::string config = testing::ShippedConfig("go_to_goal");
+  const size_t line = config.find("description:");
+  config.replace(line, config.find('\n', line) - line, "description: \"" + payload + "\"");
+  ASSERT_THAT(testing::LoadConfigText(config).source, HasSubstr("test.yaml"));
+  const std::string hostile_run = testing::MakeRunFolder("export_hostile", config);
+  const std::string out = testing::NewFolder("export_hostile_out");
+  ExportSubmission(hostile_run, out, ExportOptions{});
+
+  const std::string script = testing::ReadText(out + "/upload/dream_main.py");
+  EXPECT_EQ(script, SubmissionScriptTemplate()) << "the script must be the fixed template, byte for byte";
+  EXPECT_EQ(script, testing::ReadText(std::string(DREAM_SOURCE_DIR) + "/bridge/python/dream_main.py"));
+  for (const char* fragment : {"dream_pwned", "__import__('os')", "${HOME}", "go_to_goal", "eight robots"}) {
+    EXPECT_EQ(script.find(fragment), std::string::npos) << fragment;
+  }
+  // Every data file is plain float64 numbers (np.load(..., allow_pickle=False) can read nothing else).
+  for (const std::string& name : testing::FilesIn(out + "/upload")) {
+    if (name == SubmissionFiles::kMainScript) continue;
+    const std::string bytes = testing::ReadText(out + "/upload/" + name);
+    EXPECT_NO_THROW(DecodeNpy(bytes, name)) << name;
+    EXPECT_EQ(bytes.find("pwned"), std::string::npos) << name;
+  }
+  // The run name cannot carry code either: the config refuses it.
+  std::string bad_name = testing::ShippedConfig("go_to_goal");
+  bad_name.replace(bad_name.find("name: go_to_goal"), 16, "name: \"a'; import os #\"");
+  EXPECT_THROW(testing::LoadConfigText(bad_name), config::ConfigError);
+}
+
+TEST(SubmissionTemplateTest, ParameterIndicesMatchTheScript) {
+  const std::string& script = SubmissionScriptTemplate();
+  const std::vector<std::pair<const char*, int>> indices = {
+      {"P_MAGIC", kParamMagic},
+      {"P_FORMAT_VERSION", kParamFormatVersion},
+      {"P_NUM_ROBOTS", kParamNumRobots},
+      {"P_STEPS", kParamSteps},
+      {"P_STRATEGY", kParamStrategy},
+      {"P_BARRIERS", kParamBarriers},
+      {"P_SETTLE_MAX_STEPS", kParamSettleMaxSteps},
+      {"P_SETTLE_POSITION_TOLERANCE", kParamSettlePositionTolerance},
+      {"P_SETTLE_HEADING_TOLERANCE", kParamSettleHeadingTolerance},
+      {"P_SETTLE_GAIN_V", kParamSettleGainV},
+      {"P_SETTLE_GAIN_W", kParamSettleGainW},
+      {"P_GAIN_X", kParamGainX},
+      {"P_GAIN_Y", kParamGainY},
+      {"P_GAIN_THETA", kParamGainTheta},
+      {"P_SAVE_EVERY_STEPS", kParamSaveEverySteps},
+      {"P_WHEEL_RADIUS", kParamWheelRadius},
+      {"P_BASE_LENGTH", kParamBaseLength},
+      {"P_MAX_WHEEL_SPEED", kParamMaxWheelSpeed},
+      {"P_COUNT", kParamCount},
+  };
+  for (const auto& [name, index] : indices) {
+    EXPECT_NE(script.find(std::string("\n") + name + " = " + std::to_string(index) + "\n"), std::string::npos) << name;
+  }
+  EXPECT_NE(script.find("\nMAGIC = 1146242369.0"), std::string::npos);
+  EXPECT_NE(script.find("\nFIXED_COLUMNS = " + std::to_string(ResultLayout::kFixedColumns) + "\n"), std::string::npos);
+  EXPECT_NE(script.find("allow_pickle=False"), std::string::npos);
+  EXPECT_EQ(script.find("allow_pickle=True"), std::string::npos);
+  EXPECT_EQ(script.find("eval("), std::string::npos);
+  EXPECT_EQ(script.find("exec("), std::string::npos);
+}
+
+}  // namespace
+}  // namespace dream::bridge
