@@ -1,5 +1,4 @@
 #include <spdlog/spdlog.h>
-#include <sys/resource.h>
 
 #include <unistd.h>
 
@@ -7,6 +6,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <random>
 #include <set>
 #include <stdexcept>
@@ -20,6 +20,15 @@
 #include "dream/lcm/lcm_url.h"
 
 namespace dream::cli {
+
+double PeakResidentMegabytes() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;  // "VmHWM:   7472 kB"
+  }
+  return 0.0;
+}
 
 int64_t NewAgentId() {
   std::random_device device;
@@ -75,11 +84,10 @@ int RunAgents(const AgentArgs& args) {
   agents::AgentHost host(bus, std::move(robots), NewAgentId());
   spdlog::info("agent for robot(s) {} of {} on {}", args.robots, config.name, bus.url());
   const bool ended_by_world = host.Run(StopFlag(), args.idle_timeout_s);
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  // Peak resident memory, so per-agent memory can be checked (docs/performance.md).
-  spdlog::info("agent for robot(s) {}: peak resident memory {:.1f} MB", args.robots,
-               static_cast<double>(usage.ru_maxrss) / 1024.0);
+  // Peak resident memory, so per-agent memory can be checked
+  // (docs/performance.md). VmHWM, not getrusage's ru_maxrss: the latter
+  // survives execve and would report the launching process's size.
+  spdlog::info("agent for robot(s) {}: peak resident memory {:.1f} MB", args.robots, PeakResidentMegabytes());
   if (StopFlag().load()) return kExitInterrupted;
   if (!ended_by_world) return kExitRunFailed;
   spdlog::info("world ended the run at step {}: {}", host.last_step_answered(), host.end_detail());
