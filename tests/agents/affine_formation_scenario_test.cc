@@ -6,6 +6,8 @@
 // judges lab runs.
 #include <gtest/gtest.h>
 
+#include "scenario_runner.h"
+
 #include <atomic>
 #include <cmath>
 #include <cstdio>
@@ -25,6 +27,11 @@
 
 namespace dream::agents {
 namespace {
+
+using scenario::RunScenario;
+using scenario::ScenarioResult;
+using scenario::Value;
+using scenario::ConfigPath;
 
 const std::string kConfigPath = std::string(DREAM_SOURCE_DIR) + "/config/affine_formation.yaml";
 
@@ -46,45 +53,6 @@ std::string Edited(const std::string& from, const std::string& to) {
 
 config::RunConfig Load(const std::string& text) {
   return config::LoadRunConfig(config::ConfigNode::LoadString(text, "affine_formation.yaml"));
-}
-
-struct ScenarioResult {
-  sim::RunOutcome outcome;
-  sim::ViolationCounts violations;
-  MetricsReport metrics;
-  long bad_radio_messages = 0;
-};
-
-ScenarioResult RunScenario(config::RunConfig config, const std::string& log_name) {
-  config.sim.progress_interval_s = 0.0;
-  lcm::LcmBus bus("memq://");
-  const ControllerFactory factory(config.controller, config.num_robots, config.seed);
-  std::vector<std::unique_ptr<RobotAgent>> robots;
-  for (int id = 0; id < config.num_robots; ++id) robots.push_back(factory.Make(id));
-  AgentHost host(bus, std::move(robots), 1);
-  sim::UnicycleWorld world(config.world, config.initial_poses, config.obstacles);
-  const std::string log_path = ::testing::TempDir() + "/" + log_name + ".lcmlog";
-  ScenarioResult result;
-  {
-    sim::RunRecorder recorder(log_path);
-    sim::SimNode node(bus, world, &recorder, config.sim);
-    const std::atomic<bool> stop{false};
-    result.outcome = node.Run(stop);
-    recorder.Close();
-  }
-  result.violations = world.violations();
-  result.metrics = MetricsFromLog(factory, log_path);
-  for (int id = 0; id < config.num_robots; ++id) {
-    result.bad_radio_messages += host.agent(static_cast<size_t>(id)).robot().bad_radio_messages();
-  }
-  std::remove(log_path.c_str());
-  return result;
-}
-
-double Value(const ScenarioResult& run, const std::string& name) {
-  const auto it = run.metrics.values.find(name);
-  EXPECT_NE(it, run.metrics.values.end()) << name;
-  return it == run.metrics.values.end() ? NAN : it->second;
 }
 
 // What the experiment must show, whatever the noise: the followers arrive

@@ -5,6 +5,8 @@
 // its log with the experiment's own metrics.
 #include <gtest/gtest.h>
 
+#include "scenario_runner.h"
+
 #include <atomic>
 #include <cstdio>
 #include <fstream>
@@ -24,13 +26,10 @@
 namespace dream::agents {
 namespace {
 
-struct ScenarioResult {
-  sim::RunOutcome outcome;
-  sim::ViolationCounts violations;
-  MetricsReport metrics;
-  std::vector<sim::Pose2> final_poses;
-  long bad_radio_messages = 0;
-};
+using scenario::RunScenario;
+using scenario::ScenarioResult;
+using scenario::Value;
+using scenario::ConfigPath;
 
 std::string ReadText(const std::string& path) {
   std::ifstream in(path);
@@ -48,34 +47,7 @@ ScenarioResult RunScenario(const std::string& name, const std::string& from = ""
     EXPECT_NE(at, std::string::npos) << from;
     if (at != std::string::npos) text.replace(at, from.size(), to);
   }
-  config::RunConfig config = config::LoadRunConfig(config::ConfigNode::LoadString(text, path));
-  config.sim.progress_interval_s = 0.0;
-
-  lcm::LcmBus bus("memq://");
-  const ControllerFactory factory(config.controller, config.num_robots, config.seed);
-  std::vector<std::unique_ptr<RobotAgent>> robots;
-  for (int id = 0; id < config.num_robots; ++id) robots.push_back(factory.Make(id));
-  AgentHost host(bus, std::move(robots), 1);
-  sim::UnicycleWorld world(config.world, config.initial_poses, config.obstacles);
-  // ctest runs each test as its own process, possibly in parallel: one log per process.
-  const std::string log_path =
-      ::testing::TempDir() + "/" + name + "_scenario_" + std::to_string(::getpid()) + ".lcmlog";
-  ScenarioResult result;
-  {
-    sim::RunRecorder recorder(log_path);
-    sim::SimNode node(bus, world, &recorder, config.sim);
-    const std::atomic<bool> stop{false};
-    result.outcome = node.Run(stop);
-    recorder.Close();
-  }
-  result.violations = world.violations();
-  result.final_poses = world.poses();
-  result.metrics = MetricsFromLog(factory, log_path);
-  for (int id = 0; id < config.num_robots; ++id) {
-    result.bad_radio_messages += host.agent(static_cast<size_t>(id)).robot().bad_radio_messages();
-  }
-  std::remove(log_path.c_str());
-  return result;
+  return scenario::RunScenario(config::LoadRunConfig(config::ConfigNode::LoadString(text, path)), name);
 }
 
 void ExpectCompletesAllThreeFormations(const ScenarioResult& run) {

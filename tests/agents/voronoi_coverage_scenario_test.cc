@@ -5,6 +5,8 @@
 // own metrics (the code that also judges lab runs).
 #include <gtest/gtest.h>
 
+#include "scenario_runner.h"
+
 #include <atomic>
 #include <cstdio>
 
@@ -21,6 +23,11 @@
 namespace dream::agents {
 namespace {
 
+using scenario::RunScenario;
+using scenario::ScenarioResult;
+using scenario::Value;
+using scenario::ConfigPath;
+
 // The coverage cost is computed exactly (polygon formulas, no grid), as a
 // sum of ~100 terms of at most ~10 m^4: rounding stays below ~1e-13 m^4, so
 // any rise above 1e-12 m^4 would be a real rise, not noise.
@@ -28,48 +35,6 @@ constexpr double kCostRoundingM4 = 1e-12;
 // Robotarium collision: centres 0.025 m ahead, 0.135 m apart; two robots
 // facing each other collide below 0.135 + 2 x 0.025 m between centres.
 constexpr double kWorstCaseCollisionDistanceM = 0.185;
-
-std::string ConfigPath(const std::string& name) { return std::string(DREAM_SOURCE_DIR) + "/config/" + name + ".yaml"; }
-
-struct ScenarioResult {
-  sim::RunOutcome outcome;
-  sim::ViolationCounts violations;
-  MetricsReport metrics;
-  long bad_radio_messages = 0;
-};
-
-ScenarioResult RunScenario(const config::RunConfig& config_in, const std::string& log_name) {
-  config::RunConfig config = config_in;
-  config.sim.progress_interval_s = 0.0;
-  lcm::LcmBus bus("memq://");
-  const ControllerFactory factory(config.controller, config.num_robots, config.seed);
-  std::vector<std::unique_ptr<RobotAgent>> robots;
-  for (int id = 0; id < config.num_robots; ++id) robots.push_back(factory.Make(id));
-  AgentHost host(bus, std::move(robots), 1);
-  sim::UnicycleWorld world(config.world, config.initial_poses, config.obstacles);
-  const std::string log_path = ::testing::TempDir() + "/" + log_name + ".lcmlog";
-  ScenarioResult result;
-  {
-    sim::RunRecorder recorder(log_path);
-    sim::SimNode node(bus, world, &recorder, config.sim);
-    const std::atomic<bool> stop{false};
-    result.outcome = node.Run(stop);
-    recorder.Close();
-  }
-  result.violations = world.violations();
-  result.metrics = MetricsFromLog(factory, log_path);
-  for (int id = 0; id < config.num_robots; ++id) {
-    result.bad_radio_messages += host.agent(static_cast<size_t>(id)).robot().bad_radio_messages();
-  }
-  std::remove(log_path.c_str());
-  return result;
-}
-
-double Value(const ScenarioResult& run, const std::string& name) {
-  const auto it = run.metrics.values.find(name);
-  EXPECT_NE(it, run.metrics.values.end()) << name;
-  return it == run.metrics.values.end() ? NAN : it->second;
-}
 
 TEST(VoronoiCoverageScenarioTest, StaticConfigIsTheMovingOneWithoutPaths) {
   const config::RunConfig moving = config::LoadRunConfigFile(ConfigPath("voronoi_coverage"));

@@ -1,0 +1,57 @@
+#include "scenario_runner.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+
+#include "dream/agents/agent_host.h"
+#include "dream/agents/controller_factory.h"
+#include "dream/agents/log_metrics.h"
+#include "dream/lcm/lcm_bus.h"
+#include "dream/sim/run_recorder.h"
+#include "dream/sim/sim_node.h"
+#include "dream/sim/unicycle_world.h"
+
+namespace dream::agents::scenario {
+
+ScenarioResult RunScenario(config::RunConfig config, const std::string& log_name) {
+  config.sim.progress_interval_s = 0.0;
+  lcm::LcmBus bus("memq://");
+  const ControllerFactory factory(config.controller, config.num_robots, config.seed);
+  std::vector<std::unique_ptr<RobotAgent>> robots;
+  for (int id = 0; id < config.num_robots; ++id) robots.push_back(factory.Make(id));
+  AgentHost host(bus, std::move(robots), 1);
+  sim::UnicycleWorld world(config.world, config.initial_poses, config.obstacles);
+  // ctest runs each test as its own process, possibly in parallel: one log per process.
+  const std::string log_path =
+      ::testing::TempDir() + "/" + log_name + "_scenario_" + std::to_string(::getpid()) + ".lcmlog";
+  ScenarioResult result;
+  {
+    sim::RunRecorder recorder(log_path);
+    sim::SimNode node(bus, world, &recorder, config.sim);
+    const std::atomic<bool> stop{false};
+    result.outcome = node.Run(stop);
+    recorder.Close();
+  }
+  result.violations = world.violations();
+  result.final_poses = world.poses();
+  result.metrics = MetricsFromLog(factory, log_path);
+  for (int id = 0; id < config.num_robots; ++id) {
+    result.bad_radio_messages += host.agent(static_cast<size_t>(id)).robot().bad_radio_messages();
+  }
+  std::remove(log_path.c_str());
+  return result;
+}
+
+std::string ConfigPath(const std::string& name) { return std::string(DREAM_SOURCE_DIR) + "/config/" + name + ".yaml"; }
+
+double Value(const ScenarioResult& run, const std::string& name) {
+  const auto it = run.metrics.values.find(name);
+  EXPECT_NE(it, run.metrics.values.end()) << name;
+  return it == run.metrics.values.end() ? NAN : it->second;
+}
+
+}  // namespace dream::agents::scenario

@@ -1,0 +1,34 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dream/agents/metrics_report.h"
+#include "dream/config/run_config.h"
+#include "dream/sim/pose2.h"
+#include "dream/sim/run_outcome.h"
+#include "dream/sim/violation_counts.h"
+
+namespace dream::agents::scenario {
+
+/// What a headless run of an experiment produced.
+struct ScenarioResult {
+  sim::RunOutcome outcome;
+  sim::ViolationCounts violations;
+  MetricsReport metrics;
+  std::vector<sim::Pose2> final_poses;
+  long bad_radio_messages = 0;
+};
+
+/// Runs `config` as `dream run` does (every agent and the simulator on one
+/// memq bus, the log recorded), then computes the experiment's metrics from
+/// the log, as the summary does. `log_name` names the temporary log.
+ScenarioResult RunScenario(config::RunConfig config, const std::string& log_name);
+
+/// config/<name>.yaml in the source tree.
+std::string ConfigPath(const std::string& name);
+
+/// The metric `name`; NaN and a test failure when it is missing.
+double Value(const ScenarioResult& run, const std::string& name);
+
+}  // namespace dream::agents::scenario
