@@ -38,6 +38,14 @@ MAIN_SCRIPT = "dream_main.py"
 UPLOAD_SUFFIXES = (".py", ".npy", ".mat", ".png", ".jpg")
 
 
+class StartupTimeout(Exception):
+    """The start-up drive used up its step budget."""
+
+    def __init__(self, steps):
+        super().__init__(steps)
+        self.steps = steps
+
+
 class Tee(io.TextIOBase):
     """Keeps what the script prints, and echoes it when asked to."""
 
@@ -114,6 +122,8 @@ def main():
     parser.add_argument("--record-poses", default="", help="save every get_poses() result here (.npy, K x 3 x N)")
     parser.add_argument("--seed", type=int, default=0, help="seeds Python's and numpy's random generators")
     parser.add_argument("--echo", action="store_true", help="print the script's output as it runs")
+    parser.add_argument("--startup-max-steps", type=int, default=3000,
+                        help="give up when the simulator's start-up drive takes more steps (default 3000 = 99 s)")
     args = parser.parse_args()
 
     # The script runs in its working folder: make every path absolute first.
@@ -155,19 +165,31 @@ def main():
 
     recorded = []
     official_class = robotarium_module.Robotarium
-    if args.skip_initialization or args.record_poses:
-        class Recording(official_class):
-            def __init__(self, *a, **kw):
-                if args.skip_initialization:
-                    kw["skip_initialization"] = True
-                super().__init__(*a, **kw)
 
-            def get_poses(self):
-                poses = super().get_poses()
+    class Checked(official_class):
+        """The simulator's own class, watched: its start-up drive gets a step budget (the official
+        one can deadlock on packed start poses and would run forever), poses can be recorded."""
+
+        def __init__(self, *a, **kw):
+            self._dream_startup_steps = 0
+            if args.skip_initialization:
+                kw["skip_initialization"] = True
+            super().__init__(*a, **kw)
+
+        def step(self):
+            if getattr(self, "initializing", False):
+                self._dream_startup_steps += 1
+                if self._dream_startup_steps > args.startup_max_steps:
+                    raise StartupTimeout(self._dream_startup_steps - 1)
+            return super().step()
+
+        def get_poses(self):
+            poses = super().get_poses()
+            if args.record_poses and not getattr(self, "initializing", False):
                 recorded.append(poses.copy())
-                return poses
+            return poses
 
-        robotarium_module.Robotarium = Recording
+    robotarium_module.Robotarium = Checked
 
     report = {"simulator": kind, "simulator_path": path or (sys.modules["rps"].__file__ if kind == "official" else ""),
               "ok": False, "error": None, "warnings": [], "debug_text": "", "verdict": "unknown",
@@ -180,6 +202,12 @@ def main():
             with contextlib.redirect_stdout(tee):
                 runpy.run_path(os.path.join(workdir, MAIN_SCRIPT), run_name="__main__")
             report["ok"] = True
+        except StartupTimeout as timeout:
+            report["error"] = ("the simulator's start-up drive did not bring the robots onto their start poses "
+                               "within %d steps (%.0f s): its barrier certificates deadlock on these start poses, "
+                               "and the lab would likely reject the experiment; spread the start poses" %
+                               (timeout.steps, timeout.steps * 0.033))
+            report["startup_timeout"] = True
         except SystemExit as stop:
             report["error"] = "the script exited: %s" % (stop.code,)
         except BaseException:  # noqa: B902 - report whatever the script raised
@@ -198,8 +226,6 @@ def main():
     with open(args.report, "w", encoding="utf-8") as f:
         json.dump(report, f, indent=2)
         f.write("\n")
-    if report["error"]:
-        print(report["error"], file=sys.stderr)
     return 0 if report["ok"] else 1
 
 

@@ -92,7 +92,7 @@ void WriteStatus(sim::RunRecorder& recorder, const sim::World& world, int8_t sta
 
 /// Writes the log and returns the world stepped to the end (for the summary).
 LabReplayWorld WriteLog(const RunTrack& track, const sim::WorldParams& params, int8_t end_state,
-                        const std::string& detail, const std::string& log_path) {
+                        const std::string& detail, const std::string& log_path, int64_t* events = nullptr) {
   LabReplayWorld world(track, params);
   sim::RunRecorder recorder(log_path, 4096);
   std::vector<uint8_t> buffer;
@@ -149,6 +149,7 @@ LabReplayWorld WriteLog(const RunTrack& track, const sim::WorldParams& params, i
   }
   WriteStatus(recorder, world, end_state, detail, &buffer);
   recorder.Close();
+  if (events != nullptr) *events = recorder.events_written();
   return world;
 }
 
@@ -339,9 +340,10 @@ ImportedRun ImportLabRun(const std::string& result_path, const std::string& expo
   const std::string detail = lab.complete ? "the lab run completed every planned step"
                                           : "the lab run stopped after " + std::to_string(track.last_step()) + " of " +
                                                 std::to_string(lab.planned_steps) + " planned steps";
+  int64_t log_events = 0;
   const LabReplayWorld world =
       WriteLog(track, exported.config.world, lab.complete ? run_status_t::FINISHED : run_status_t::ABORTED, detail,
-               imported.log_path);
+               imported.log_path, &log_events);
   imported.violations = world.violations();
   out.WriteFile("config.yaml", exported.config_text);
 
@@ -350,7 +352,7 @@ ImportedRun ImportLabRun(const std::string& result_path, const std::string& expo
   outcome.reason = detail;
   outcome.steps = track.last_step();
   outcome.wall_time_s = lab.wall_duration_s;
-  outcome.log_events = 0;
+  outcome.log_events = log_events;
   nlohmann::ordered_json summary = nlohmann::ordered_json::parse(
       sim::RunSummaryJson(exported.config, outcome, world, "run.lcmlog"));
   summary["config"] = "config.yaml";

@@ -24,12 +24,8 @@ void CheckRelativeName(const std::string& name) {
 OutputFolder::OutputFolder(std::string dir) : dir_(std::move(dir)) {
   if (dir_.empty()) throw std::runtime_error("the output folder name is empty");
   const fs::path out(dir_);
-  const fs::path parent = out.has_parent_path() ? out.parent_path() : fs::path(".");
   std::error_code error;
-  if (!fs::is_directory(parent)) {
-    throw std::runtime_error("output folder " + dir_ + ": its parent folder " + parent.string() + " does not exist");
-  }
-  fs::create_directory(out, error);
+  fs::create_directories(out, error);
   if (error || !fs::is_directory(out)) {
     throw std::runtime_error("cannot create the output folder " + dir_ + (error ? ": " + error.message() : std::string()));
   }

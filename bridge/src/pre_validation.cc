@@ -142,4 +142,32 @@ std::vector<ExportProblem> PreValidate(const RunTrack& track, const RunEnd& end,
   return problems;
 }
 
+std::vector<std::string> StartUpWarnings(const RunTrack& track, const LabLimits& limits) {
+  std::vector<std::string> warnings;
+  if (track.last_step() < 0) return warnings;
+  int crowded_robot = -1;
+  int most = 0;
+  for (int i = 0; i < track.num_robots; ++i) {
+    int neighbours = 0;
+    for (int j = 0; j < track.num_robots; ++j) {
+      if (j != i && std::hypot(track.pose(0, i).x_m - track.pose(0, j).x_m,
+                               track.pose(0, i).y_m - track.pose(0, j).y_m) < limits.crowd_radius_m) {
+        ++neighbours;
+      }
+    }
+    if (neighbours > most) {
+      most = neighbours;
+      crowded_robot = i;
+    }
+  }
+  if (most >= limits.crowd_neighbours) {
+    warnings.push_back("start poses are crowded (robot " + std::to_string(crowded_robot) + " has " +
+                       std::to_string(most) + " others within " + Num(limits.crowd_radius_m, 2) +
+                       " m): the lab's start-up routine may deadlock before step 0 and the lab would then "
+                       "reject the run; try it with dream check-submission in the official simulator, or "
+                       "spread the start poses");
+  }
+  return warnings;
+}
+
 }  // namespace dream::bridge

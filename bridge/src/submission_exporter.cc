@@ -150,6 +150,8 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
           (options.strategy == Strategy::kTrack ? " (recorded commands plus feedback on the pose error)"
                                                 : " (recorded commands, open loop)") +
           (options.barriers ? ", through the Robotarium's barrier certificates" : "") + "\n";
+  summary.warnings = StartUpWarnings(track);
+  for (const std::string& warning : summary.warnings) text += "\nWARNING: " + warning + "\n";
   text += "\nThe script saves dream_result.npy (poses, commands sent, wall-clock stamps; rewritten\n"
           "every " + std::to_string(options.save_every_steps) +
           " steps). Download it from the lab's results, then:\n"

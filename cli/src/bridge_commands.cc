@@ -267,8 +267,8 @@ int RunCheckSubmission(const CheckSubmissionArgs& args) {
             << "\n";
   if (!report.value("ok", false)) {
     std::cerr << "dream check-submission: the script failed in the simulator:\n"
-              << report.value("error", std::string()) << "\n";
-    return kExitRunFailed;
+              << report.value("error", std::string()) << "\n(its output: " << workdir << "/stdout.txt)\n";
+    return report.value("startup_timeout", false) ? kExitRejected : kExitRunFailed;
   }
   std::cout << "debug() says:\n" << report.value("debug_text", std::string());
   for (const std::string& warning : warnings) std::cout << "WARNING (Python): " << warning << "\n";

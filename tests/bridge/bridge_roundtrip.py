@@ -82,19 +82,28 @@ class Loop:
     def path(self, *parts):
         return os.path.join(self.tmp, *parts)
 
-    def experiment(self, name, strategy="track"):
+    def experiment(self, name, strategy="track", barriers=False):
         config = os.path.join(self.source, "config", name + ".yaml")
-        sim_dir, export_dir, check_dir = (self.path(name + suffix) for suffix in ("_sim", "_export_" + strategy,
-                                                                                   "_check_" + strategy))
+        variant = strategy + ("_barriers" if barriers else "")
+        sim_dir, export_dir, check_dir = (self.path(name + suffix) for suffix in ("_sim", "_export_" + variant,
+                                                                                   "_check_" + variant))
         if not os.path.exists(os.path.join(sim_dir, "run.lcmlog")):
             _, seconds = run([self.dream, "run", config, "--out", sim_dir, "-q"])
             self.report.append("%s: dream run %.1f s" % (name, seconds))
-        run([self.dream, "export", sim_dir, "--out", export_dir, "--strategy", strategy, "-q"])
+        exported, _ = run([self.dream, "export", sim_dir, "--out", export_dir, "--strategy", strategy, "-q"] +
+                          (["--barriers"] if barriers else []))
         check(os.path.isfile(os.path.join(export_dir, "UPLOAD.txt")), name + ": no UPLOAD.txt")
-        output, seconds = run([self.dream, "check-submission", export_dir, "--out", check_dir, "-q"] + self.flags)
+        flags = list(self.flags)
+        note = ""
+        if "start poses are crowded" in exported and "--require-official" in flags:
+            # The official start-up drive deadlocks on crowded start poses (docs/robotarium.md):
+            # check the script itself from its exact start poses.
+            flags.append("--skip-initialization")
+            note = ", start-up drive skipped (crowded start poses)"
+        output, seconds = run([self.dream, "check-submission", export_dir, "--out", check_dir, "-q"] + flags)
         with open(os.path.join(check_dir, "check.json")) as f:
             result = json.load(f)
-        where = "%s (%s, %s)" % (name, strategy, result["simulator"])
+        where = "%s (%s, %s)" % (name, variant, result["simulator"])
         check(result["script_ok"], where + ": the script failed")
         check(result["verdict"] == "clean", where + ": debug() verdict " + result["verdict"] + ":\n" + result["debug_text"])
         check(not result["python_warnings"], where + ": Python warnings: %s" % result["python_warnings"])
@@ -103,9 +112,9 @@ class Loop:
         if strategy == "track":
             check(result["tracking_rms_m"] < RMS_LIMIT_M,
                   where + ": tracking RMS %.4f m >= %.2f m" % (result["tracking_rms_m"], RMS_LIMIT_M))
-        self.report.append("%s: check-submission %.1f s, settle %d steps, tracking RMS %.2f cm, max %.2f cm" %
+        self.report.append("%s: check-submission %.1f s, settle %d steps, tracking RMS %.2f cm, max %.2f cm%s" %
                            (where, seconds, result["settle_steps"], 100 * result["tracking_rms_m"],
-                            100 * result["tracking_max_m"]))
+                            100 * result["tracking_max_m"], note))
         return sim_dir, export_dir, check_dir
 
 
@@ -279,6 +288,7 @@ def main():
             for name in names:
                 loop.experiment(name)
             loop.experiment("go_to_goal", strategy="replay")
+            loop.experiment("go_to_goal", barriers=True)
             if args.simulator == "standin":
                 once(loop)
                 bad_input(loop)

@@ -110,6 +110,20 @@ TEST(PreValidationTest, StartPosesMustBeReachableByTheLabsStartUp) {
   EXPECT_THAT(problems[1].Text(), HasSubstr("robots 0 and 1, step 0: start poses are 0.180 m apart"));
 }
 
+TEST(PreValidationTest, CrowdedStartIsAWarningNotARefusal) {
+  EXPECT_TRUE(StartUpWarnings(StillTrack(12, 5)).empty());  // 0.5 m apart
+  RunTrack packed = StillTrack(9, 5);
+  for (int64_t k = 0; k <= 5; ++k) {
+    for (int i = 0; i < 9; ++i) {
+      packed.poses[static_cast<size_t>(k * 9 + i)] = sim::Pose2{0.5 + 0.3 * (i % 3), -0.6 + 0.3 * (i / 3), 0.0};
+    }
+  }
+  EXPECT_TRUE(PreValidate(packed, Finished(), sim::WorldParams{}, 240).empty());
+  const std::vector<std::string> warnings = StartUpWarnings(packed);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_THAT(warnings[0], HasSubstr("start poses are crowded (robot 4 has 4 others within 0.40 m)"));
+}
+
 class ExportTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() { run_dir_ = new std::string(testing::MakeRunFolder("export_run", testing::ShippedConfig("go_to_goal"))); }

@@ -23,6 +23,12 @@ struct LabLimits {
   /// whose projected points are closer than this cannot all be reached.
   double start_spacing_m = 0.20;
   double start_projection_m = 0.05;
+  /// Crowded start: a robot with this many others within crowd_radius_m. The
+  /// official V2.0.0 start-up routine deadlocked (not placed after 4,000
+  /// steps) on 15 robots packed 0.35 m apart in a corner, and placed the same
+  /// 15 spread 0.6 m apart in 1,141 steps.
+  double crowd_radius_m = 0.4;
+  int crowd_neighbours = 3;
 };
 
 /// One reason the lab would refuse (or fail) the run.
@@ -47,5 +53,11 @@ struct ExportProblem {
 /// be exported.
 std::vector<ExportProblem> PreValidate(const RunTrack& track, const RunEnd& end, const sim::WorldParams& world,
                                        int64_t settle_max_steps, const LabLimits& limits = {});
+
+/// Risks that do not make the lab refuse the run by rule but may make it fail:
+/// start poses so crowded that the lab's start-up routine may deadlock before
+/// step 0. One line each, with what to do (run dream check-submission in the
+/// official simulator, which gives up on a deadlocked start-up).
+std::vector<std::string> StartUpWarnings(const RunTrack& track, const LabLimits& limits = {});
 
 }  // namespace dream::bridge

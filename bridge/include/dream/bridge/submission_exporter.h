@@ -28,6 +28,7 @@ struct ExportSummary {
   int64_t steps = 0;
   int64_t max_iterations = 0;         ///< steps + settle steps
   double estimated_duration_s = 0.0;  ///< max_iterations x time step
+  std::vector<std::string> warnings;  ///< StartUpWarnings: risks, not refusals
   std::string instructions;           ///< the text of UPLOAD.txt
 };
 
