@@ -146,6 +146,23 @@ AgentPartsConfig AgentPartsConfig::Defaults(int num_robots) {
   return parts;
 }
 
+AgentPartsConfig AgentPartsConfig::ThesisHrvoParts(int num_robots) {
+  AgentPartsConfig parts = Defaults(num_robots);
+  SensorConfig odometry;
+  odometry.kind = SensorConfig::Kind::kOdometry;
+  SensorConfig movement;
+  movement.kind = SensorConfig::Kind::kMovement;
+  for (size_t i = 0; i < static_cast<size_t>(num_robots); ++i) {
+    const int odd = static_cast<int>(i % 2);
+    parts.robot_period_steps[i] = 4 + odd;
+    parts.start_delay_steps[i] = 20 + static_cast<int>(i);
+    odometry.period_steps.push_back(2 + odd);
+    movement.period_steps.push_back(3 + odd);
+  }
+  parts.sensors = {odometry, movement};
+  return parts;
+}
+
 AgentPartsConfig AgentPartsConfig::Read(const ConfigNode& section, int num_robots, AgentPartsConfig defaults,
                                         bool graph_must_connect) {
   AgentPartsConfig parts = std::move(defaults);

@@ -17,20 +17,8 @@ Eigen::MatrixXd LineDeploymentBuilder::ThesisAdjacency() {
 }
 
 AgentPartsConfig LineDeploymentBuilder::DefaultParts(int num_robots) {
-  AgentPartsConfig parts = AgentPartsConfig::Defaults(num_robots);
+  AgentPartsConfig parts = AgentPartsConfig::ThesisHrvoParts(num_robots);
   const auto n = static_cast<size_t>(num_robots);
-  SensorConfig odometry;
-  odometry.kind = SensorConfig::Kind::kOdometry;
-  SensorConfig movement;
-  movement.kind = SensorConfig::Kind::kMovement;
-  for (size_t i = 0; i < n; ++i) {
-    const int odd = static_cast<int>(i % 2);
-    parts.robot_period_steps[i] = 4 + odd;
-    parts.start_delay_steps[i] = 20 + static_cast<int>(i);
-    odometry.period_steps.push_back(2 + odd);
-    movement.period_steps.push_back(3 + odd);
-  }
-  parts.sensors = {odometry, movement};
   parts.radio.kind = RadioConfig::Kind::kGraph;
   // The thesis found a 1 s radio period slowed convergence a lot; 10 steps is 0.33 s.
   parts.radio.period_steps.assign(n, 10);

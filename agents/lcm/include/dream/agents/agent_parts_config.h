@@ -58,6 +58,11 @@ struct AgentPartsConfig {
   /// Defaults for `num_robots`: robot period 1, no delay, odometry every step, no radio.
   static AgentPartsConfig Defaults(int num_robots);
 
+  /// The thesis's HRVO robots (Appendix B): odometry and movement sensor,
+  /// periods of 2, 3 and 4 steps for odometry, movement and control (one more
+  /// on odd ids), start delay 20 + id; no radio yet.
+  static AgentPartsConfig ThesisHrvoParts(int num_robots);
+
   /// Reads the common keys of `section` over `defaults`.
   /// @param graph_must_connect graph radios must form a connected, symmetric graph.
   /// @throws config::ConfigError naming file, line, key and value.
