@@ -5,7 +5,8 @@ Makes a run log (dream run), compiles tests/java/DecodeLog.java against lcm.jar 
 jar, and runs it: every DREAM_* event must be identified by its fingerprint among the jar's
 classes (as lcm-spy does), decode completely and re-encode to the same bytes, and the channels
 must carry DREAM_POSES -> dream.robot_poses_t, DREAM_CMD_<n> -> dream.velocity_command_t,
-DREAM_OBSTACLES -> dream.obstacles_t, DREAM_STATUS -> dream.run_status_t.
+DREAM_OBSTACLES -> dream.obstacles_t, DREAM_STATUS -> dream.run_status_t; and, on a run with
+radios (hrvo_circle), DREAM_RADIO_<n> -> dream.radio_message_t.
 
 Usage: types_jar_decodes_log.py --dream BIN --source DIR --types-jar JAR --lcm-jar JAR [--javac BIN --java BIN]
 """
@@ -65,6 +66,19 @@ def test(ctx):
           f"DREAM_POSES: {counts.get('DREAM_POSES')} events, expected steps + 1 = {summary['steps'] + 1}")
     check(sorted(c for c in counts if c.startswith("DREAM_CMD_")) == [f"DREAM_CMD_{i}" for i in range(8)],
           f"expected DREAM_CMD_0..7, got {sorted(c for c in counts if c.startswith('DREAM_CMD_'))}")
+
+    # An experiment with radios: DREAM_RADIO_<n> decodes as radio_message_t too.
+    radio_run = ctx.path("radio_run")
+    ctx.run([args.dream, "-q", "run", os.path.join(args.source, "config", "hrvo_circle.yaml"), "--out", radio_run,
+             "--steps", "200", "--all-steps"], expect=0)
+    expected = dict(EXPECTED, **{"DREAM_RADIO_[0-9]+": "dream.radio_message_t"})
+    code, text = ctx.run([java, "-cp", classes + ":" + classpath, "DecodeLog", os.path.join(radio_run, "run.lcmlog"),
+                          args.types_jar] + [f"{regex}={name}" for regex, name in expected.items()], timeout=60)
+    last = text.strip().splitlines()[-1] if text.strip() else "(no output)"
+    check(code == 0, f"DecodeLog on the radio run: {last}")
+    radio = [line.split() for line in text.strip().splitlines()[:-1] if line.startswith("DREAM_RADIO_")]
+    check(len(radio) == 10 and all(t == "dream.radio_message_t" for _, t, _ in radio),
+          f"expected DREAM_RADIO_0..9 decoded as dream.radio_message_t, got {radio}")
 
 
 if __name__ == "__main__":
