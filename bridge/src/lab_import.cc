@@ -1,3 +1,4 @@
+#include "dream/sim/file_text.h"
 #include "dream/bridge/lab_import.h"
 
 #include <cmath>
@@ -27,14 +28,6 @@ namespace dream::bridge {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string ReadText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open the file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 /// "x of robot 3" for a result column.
 std::string ColumnMeaning(int64_t column, int num_robots) {
@@ -168,7 +161,7 @@ ExportedSubmission ExportedSubmission::Read(const std::string& dir) {
   const std::string config_path = (root / "config.yaml").string();
   if (!fs::exists(config_path)) throw std::runtime_error(config_path + ": missing; export the run again");
   exported.config = config::LoadRunConfigFile(config_path);
-  exported.config_text = ReadText(config_path);
+  exported.config_text = sim::ReadFileText(config_path);
   if (exported.config.num_robots != exported.params.num_robots) {
     throw std::runtime_error(config_path + ": has " + std::to_string(exported.config.num_robots) + " robots but " +
                              params_path + " " + std::to_string(exported.params.num_robots) +
@@ -177,7 +170,7 @@ ExportedSubmission ExportedSubmission::Read(const std::string& dir) {
   const std::string manifest_path = (root / "export.json").string();
   if (fs::exists(manifest_path)) {
     try {
-      const nlohmann::json manifest = nlohmann::json::parse(ReadText(manifest_path));
+      const nlohmann::json manifest = nlohmann::json::parse(sim::ReadFileText(manifest_path));
       if (manifest.contains("source_run") && manifest["source_run"].is_string()) {
         exported.source_run = manifest["source_run"].get<std::string>();
       }

@@ -1,3 +1,4 @@
+#include "dream/sim/file_text.h"
 #include "dream/bridge/submission_exporter.h"
 
 #include <cmath>
@@ -21,14 +22,6 @@ std::string JoinProblems(const std::vector<ExportProblem>& problems) {
                      (problems.size() == 1 ? "" : "s") + "):";
   for (const ExportProblem& p : problems) text += "\n  " + p.Text();
   return text;
-}
-
-std::string ReadText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open the file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 std::string Seconds(double s) {
@@ -58,7 +51,7 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
 
   // Read and check everything before writing anything.
   const config::RunConfig config = config::LoadRunConfigFile(config_file);
-  const std::string config_text = ReadText(config_file);
+  const std::string config_text = sim::ReadFileText(config_file);
   RunEnd end;
   const RunTrack track = ReadRunTrack(log_file, &end);
   if (track.num_robots != config.num_robots) {

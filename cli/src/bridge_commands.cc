@@ -11,6 +11,8 @@
 #include <sstream>
 
 #include "commands.h"
+#include "run_output.h"
+#include "dream/sim/file_text.h"
 #include "dream/agents/agent_host.h"
 #include "dream/agents/controller_factory.h"
 #include "dream/bridge/lab_import.h"
@@ -41,14 +43,6 @@ namespace dream::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string ReadText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open the file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 std::string Cm(double m) {
   char text[32];
@@ -160,7 +154,7 @@ int RunLabReplay(const LabReplayArgs& args) {
     for (int id = 0; id < config.num_robots; ++id) robots.push_back(factory.Make(id));
     host = std::make_unique<agents::AgentHost>(bus, std::move(robots), NewAgentId());
   }
-  out.WriteFile("config.yaml", ReadText(config_in));
+  out.WriteFile("config.yaml", sim::ReadFileText(config_in));
   sim::RunOutcome outcome;
   std::unique_ptr<bridge::LabReplayWorld> world;
   {
@@ -210,15 +204,7 @@ int RunLabReplay(const LabReplayArgs& args) {
     sim::TrajectoryPicture::Render(log_path, out.PathOf("trajectories.png"));
     std::cout << "picture: " << out.PathOf("trajectories.png") << "\n";
   }
-  switch (outcome.end) {
-    case sim::RunOutcome::End::kFinished:
-      return report.verdict == sim::RunVerdict::kRejected ? kExitRejected : kExitOk;
-    case sim::RunOutcome::End::kInterrupted:
-      return kExitInterrupted;
-    default:
-      spdlog::error("{}", outcome.reason);
-      return kExitRunFailed;
-  }
+  return ExitCodeFor(outcome, report);
 }
 
 int RunCheckSubmission(const CheckSubmissionArgs& args) {
@@ -257,7 +243,7 @@ int RunCheckSubmission(const CheckSubmissionArgs& args) {
     std::cerr << "dream check-submission: the runner failed (exit " << code << ") before writing its report\n";
     return kExitRunFailed;
   }
-  const nlohmann::json report = nlohmann::json::parse(ReadText(report_path));
+  const nlohmann::json report = nlohmann::json::parse(sim::ReadFileText(report_path));
   const std::string simulator = report.value("simulator", "?");
   const std::string verdict = report.value("verdict", "unknown");
   const std::vector<std::string> warnings = report.value("warnings", std::vector<std::string>{});

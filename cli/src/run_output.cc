@@ -106,6 +106,10 @@ int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std:
     sim::TrajectoryPicture::Render(log_path, out_dir + "/trajectories.png");
     std::cout << "picture: " << out_dir << "/trajectories.png\n";
   }
+  return ExitCodeFor(outcome, report);
+}
+
+int ExitCodeFor(const sim::RunOutcome& outcome, const sim::RunReport& report) {
   switch (outcome.end) {
     case sim::RunOutcome::End::kFinished:
       return report.verdict == sim::RunVerdict::kRejected ? kExitRejected : kExitOk;

@@ -5,6 +5,8 @@
 #include "commands.h"
 #include "dream/config/run_config.h"
 #include "dream/lcm/lcm_interface.h"
+#include "dream/sim/run_outcome.h"
+#include "dream/sim/run_report.h"
 
 namespace dream::cli {
 
@@ -25,5 +27,9 @@ std::string PrepareOutputDir(const RunArgs& args, const config::RunConfig& confi
 /// (all atomically), and prints the Robotarium verdict. Returns the process
 /// exit code.
 int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std::string& out_dir);
+
+/// The exit code for how a run ended and what the Robotarium would make of
+/// it (see ExitCode); logs the reason when the run did not finish.
+int ExitCodeFor(const sim::RunOutcome& outcome, const sim::RunReport& report);
 
 }  // namespace dream::cli

@@ -203,8 +203,8 @@ void SimNode::PublishStep(bool record) {
   // After Step() the held velocities are the saturated ones the robots just
   // drove with: what a tracker on the lab would measure.
   for (const UnicycleCommand& velocity : world_.velocities()) {
-    poses.v.push_back(step_taken_ ? velocity.v_mps : 0.0);
-    poses.w.push_back(step_taken_ ? velocity.w_radps : 0.0);
+    poses.v.push_back(world_.step() > 0 ? velocity.v_mps : 0.0);
+    poses.w.push_back(world_.step() > 0 ? velocity.w_radps : 0.0);
   }
   PublishAndRecord(lcm::kPosesChannel, poses, record);
 }
@@ -251,7 +251,6 @@ void SimNode::AdvanceWorld() {
     }
   }
   world_.Step();
-  step_taken_ = true;
 }
 
 void SimNode::ReportProgress(Clock::time_point now) {

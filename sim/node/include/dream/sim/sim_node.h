@@ -92,7 +92,6 @@ class SimNode {
   Clock::time_point last_resend_;
   Clock::time_point last_progress_;
   int64_t last_progress_step_ = 0;
-  bool step_taken_ = false;  // velocities mean something only after the first step
 };
 
 }  // namespace dream::sim
