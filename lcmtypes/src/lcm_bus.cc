@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <exception>
 #include <lcm/lcm-cpp.hpp>
+#include <regex>
 #include <stdexcept>
 
 namespace dream::lcm {
@@ -14,6 +15,20 @@ LcmBus::LcmBus(std::string url) : url_(std::move(url)), lcm_(std::make_unique<::
     throw std::runtime_error("cannot open LCM on '" + url_ +
                              "': check the URL (memq://, udpm://239.255.76.67:7667?ttl=0) and, for "
                              "udpm, that multicast is routed (ip route add 224.0.0.0/4 dev lo)");
+  }
+  // Subscribing starts udpm's receive thread and its self test, here, before
+  // anyone relies on delivery.
+  ::lcm::Subscription* subscription = lcm_->subscribeFunction(".*", &LcmBus::Dispatch, this);
+  if (subscription == nullptr) throw std::runtime_error("cannot subscribe to LCM on " + url_);
+  subscription->setQueueCapacity(kQueueCapacity);
+  DiscardStartUpLeftovers();
+}
+
+void LcmBus::DiscardStartUpLeftovers() {
+  // Packets queued during the self test were counted for no live subscription;
+  // handing them out now, while nobody listens, brings LCM's count back in
+  // line with its queue. Bounded, in case the bus is already busy.
+  for (int i = 0; i < kQueueCapacity && lcm_->handleTimeout(0) > 0; ++i) {
   }
 }
 
@@ -27,14 +42,14 @@ void LcmBus::Publish(const std::string& channel, const void* data, int size) {
 }
 
 void LcmBus::Subscribe(const std::string& channel_regex, RawHandler handler) {
-  subscribers_.push_back(Subscriber{this, std::move(handler)});
-  ::lcm::Subscription* subscription =
-      lcm_->subscribeFunction(channel_regex, &LcmBus::Dispatch, &subscribers_.back());
-  if (subscription == nullptr) {
-    subscribers_.pop_back();
-    throw std::runtime_error("cannot subscribe to '" + channel_regex + "' on " + url_);
+  std::regex regex;
+  try {
+    regex = std::regex(channel_regex, std::regex::ECMAScript | std::regex::optimize);
+  } catch (const std::regex_error& e) {
+    throw std::invalid_argument("cannot subscribe to '" + channel_regex + "': not a valid regex (" + e.what() + ")");
   }
-  subscription->setQueueCapacity(kQueueCapacity);
+  subscribers_.push_back(Subscriber{std::move(regex), std::move(handler)});
+  routes_.clear();
 }
 
 int LcmBus::HandleSubscriptions(int timeout_ms) {
@@ -49,17 +64,34 @@ int LcmBus::HandleSubscriptions(int timeout_ms) {
   return handled;
 }
 
-void LcmBus::Dispatch(const ::lcm::ReceiveBuffer* buffer, const std::string& channel,
-                      Subscriber* subscriber) {
-  // Nothing may propagate into LCM's C code: log, count, carry on.
-  try {
-    subscriber->handler(channel, buffer->data, static_cast<int>(buffer->data_size));
-  } catch (const std::exception& e) {
-    ++subscriber->owner->handler_failures_;
-    spdlog::error("handler for channel {} failed: {}", channel, e.what());
-  } catch (...) {
-    ++subscriber->owner->handler_failures_;
-    spdlog::error("handler for channel {} failed with an unknown exception", channel);
+void LcmBus::Dispatch(const ::lcm::ReceiveBuffer* buffer, const std::string& channel, LcmBus* bus) {
+  bus->Deliver(channel, buffer->data, static_cast<int>(buffer->data_size));
+}
+
+const std::vector<size_t>& LcmBus::SubscribersOf(const std::string& channel) {
+  auto found = routes_.find(channel);
+  if (found != routes_.end()) return found->second;
+  std::vector<size_t> matching;
+  for (size_t i = 0; i < subscribers_.size(); ++i) {
+    if (std::regex_match(channel, subscribers_[i].channel_regex)) matching.push_back(i);
+  }
+  return routes_.emplace(channel, std::move(matching)).first->second;
+}
+
+void LcmBus::Deliver(const std::string& channel, const void* data, int size) {
+  // A copy: a handler that subscribes clears routes_.
+  const std::vector<size_t> targets = SubscribersOf(channel);
+  for (size_t index : targets) {
+    // Nothing may propagate into LCM's C code: log, count, carry on.
+    try {
+      subscribers_[index].handler(channel, data, size);
+    } catch (const std::exception& e) {
+      ++handler_failures_;
+      spdlog::error("handler for channel {} failed: {}", channel, e.what());
+    } catch (...) {
+      ++handler_failures_;
+      spdlog::error("handler for channel {} failed with an unknown exception", channel);
+    }
   }
 }
 

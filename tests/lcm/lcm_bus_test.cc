@@ -82,6 +82,50 @@ TEST(LcmBusTest, ManyMessagesPerStepAreNotDroppedByTheQueue) {
   EXPECT_EQ(received, 500);
 }
 
+TEST(LcmBusTest, OverlappingSubscriptionsEachGetEveryMessage) {
+  LcmBus bus("memq://");
+  int commands = 0, everything = 0, robot_three = 0;
+  bus.Subscribe("DREAM_CMD_.*", [&](const std::string&, const void*, int) { ++commands; });
+  bus.Subscribe(".*", [&](const std::string&, const void*, int) { ++everything; });
+  bus.Subscribe("DREAM_CMD_3", [&](const std::string&, const void*, int) { ++robot_three; });
+  const char byte = 0;
+  for (int i = 0; i < 10; ++i) bus.Publish(CommandChannel(i), &byte, 1);
+  bus.Publish("DREAM_POSES", &byte, 1);
+  bus.Publish("DREAM_CMD_33", &byte, 1);  // the whole name must match, as in LCM
+  DrainBus(bus);
+  EXPECT_EQ(commands, 11);
+  EXPECT_EQ(everything, 12);
+  EXPECT_EQ(robot_three, 1);
+}
+
+TEST(LcmBusTest, HandlerMaySubscribeWhileItRuns) {
+  LcmBus bus("memq://");
+  int late = 0;
+  bool subscribed = false;
+  bus.Subscribe("A", [&](const std::string&, const void*, int) {
+    if (subscribed) return;
+    subscribed = true;
+    bus.Subscribe("B", [&](const std::string&, const void*, int) { ++late; });
+  });
+  const char byte = 0;
+  bus.Publish("A", &byte, 1);
+  DrainBus(bus);
+  bus.Publish("B", &byte, 1);
+  DrainBus(bus);
+  EXPECT_TRUE(subscribed);
+  EXPECT_EQ(late, 1);
+}
+
+TEST(LcmBusTest, InvalidChannelRegexNamesIt) {
+  LcmBus bus("memq://");
+  try {
+    bus.Subscribe("DREAM_CMD_(", [](const std::string&, const void*, int) {});
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("DREAM_CMD_("), std::string::npos) << e.what();
+  }
+}
+
 TEST(LcmBusTest, BadUrlNamesTheUrl) {
   try {
     LcmBus bus("nosuchprovider://x");

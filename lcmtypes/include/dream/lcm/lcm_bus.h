@@ -2,7 +2,10 @@
 
 #include <deque>
 #include <memory>
+#include <regex>
 #include <string>
+#include <unordered_map>
+#include <vector>
 
 #include "dream/lcm/lcm_interface.h"
 
@@ -15,14 +18,21 @@ namespace dream::lcm {
 
 /// The real transport: an lcm::LCM opened on a URL chosen by the user.
 ///
-/// Queue capacity is set on every subscription (LCM's default of 30 silently
-/// drops messages when a lockstep step delivers one command per robot), and
-/// udpm URLs get a 4 MB kernel receive buffer unless the URL sets one
-/// (see ResolveLcmUrl()).
+/// The bus holds exactly one LCM subscription (".*"), made when it opens, and
+/// routes each message to the handlers whose regex matches its channel. LCM
+/// 1.3.1 counts queued messages per subscription, and packets left over from
+/// its udpm start-up self test throw those counts off, so with several
+/// overlapping LCM subscriptions one of them could silently miss a message
+/// another received (the run log lacked a command the simulator acted on).
+/// One subscription cannot disagree with itself.
+///
+/// Its queue capacity is raised (LCM's default of 30 silently drops messages
+/// when a lockstep step delivers one command per robot), and udpm URLs get a
+/// 4 MB kernel receive buffer unless the URL sets one (see ResolveLcmUrl()).
 class LcmBus final : public LcmInterface {
  public:
-  /// Messages queued per subscription before LCM drops the oldest; enough for
-  /// several steps of 50 robots' commands and radio traffic.
+  /// Messages queued before LCM drops new ones; enough for several steps of
+  /// 50 robots' commands and radio traffic.
   static constexpr int kQueueCapacity = 10000;
 
   /// Opens LCM on `url` as given (use ResolveLcmUrl() to apply defaults).
@@ -34,6 +44,7 @@ class LcmBus final : public LcmInterface {
   LcmBus& operator=(const LcmBus&) = delete;
 
   void Publish(const std::string& channel, const void* data, int size) override;
+  /// @throws std::invalid_argument naming `channel_regex` when it is not a regex.
   void Subscribe(const std::string& channel_regex, RawHandler handler) override;
   int HandleSubscriptions(int timeout_ms) override;
   const std::string& url() const override { return url_; }
@@ -41,16 +52,21 @@ class LcmBus final : public LcmInterface {
 
  private:
   struct Subscriber {
-    LcmBus* owner;
+    std::regex channel_regex;  // matched against the whole channel name, as LCM does
     RawHandler handler;
   };
-  static void Dispatch(const ::lcm::ReceiveBuffer* buffer, const std::string& channel,
-                       Subscriber* subscriber);
+  static void Dispatch(const ::lcm::ReceiveBuffer* buffer, const std::string& channel, LcmBus* bus);
+  void Deliver(const std::string& channel, const void* data, int size);
+  const std::vector<size_t>& SubscribersOf(const std::string& channel);
+  void DiscardStartUpLeftovers();
 
   std::string url_;
   std::unique_ptr<::lcm::LCM> lcm_;
-  // deque: subscriber addresses are handed to LCM and must stay stable.
+  // deque: a handler may subscribe while it runs; its own element must not move.
   std::deque<Subscriber> subscribers_;
+  // channel -> indices into subscribers_; a run uses few channels, so regexes
+  // are matched once per channel, not once per message.
+  std::unordered_map<std::string, std::vector<size_t>> routes_;
   long handler_failures_ = 0;
 };
 

@@ -1,0 +1,75 @@
+// LcmBus over real udpm multicast. Run under tests/integration/netns.sh (a
+// private network namespace with LCM_DEFAULT_URL on a ttl=0 group); skipped
+// elsewhere so it never sends to a real network.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdlib>
+#include <string>
+#include <thread>
+
+#include "dream/lcm/lcm_bus.h"
+
+namespace dream::lcm {
+namespace {
+
+std::string PrivateUdpmUrlOrEmpty() {
+  const char* namespace_marker = std::getenv("DREAM_TEST_NETNS");
+  const char* url = std::getenv("LCM_DEFAULT_URL");
+  if (namespace_marker == nullptr || url == nullptr || std::string(url).rfind("udpm://", 0) != 0) return "";
+  return url;
+}
+
+int DrainFor(LcmBus& bus, std::chrono::milliseconds duration) {
+  int handled = 0;
+  const auto end = std::chrono::steady_clock::now() + duration;
+  while (std::chrono::steady_clock::now() < end) handled += bus.HandleSubscriptions(5);
+  return handled;
+}
+
+// LCM 1.3.1 counts queued messages per subscription and only calls a handler
+// whose count is positive. Other processes' start-up self-test packets that
+// arrive while this process runs its own self test stay queued afterwards,
+// counted for no live subscription; delivered later, they used up a count that
+// belonged to a real message, so one subscription (the run recorder's ".*")
+// silently missed a message another (the sim's commands) received. The bus
+// must deliver every message to every matching handler.
+TEST(LcmBusUdpmTest, EveryMatchingHandlerSeesEveryMessageWhileOthersStartUp) {
+  const std::string url = PrivateUdpmUrlOrEmpty();
+  if (url.empty()) GTEST_SKIP() << "needs udpm in a private network namespace (run under netns.sh)";
+
+  LcmBus neighbour(url);
+  std::atomic<bool> starting_up{true};
+  // A neighbour process starting up: its self-test packets on the shared group.
+  std::thread self_tests([&] {
+    const char text[] = "lcm self test";
+    while (starting_up.load()) {
+      neighbour.Publish("LCM_SELF_TEST", text, sizeof(text) - 1);
+      std::this_thread::sleep_for(std::chrono::microseconds(100));  // many, without filling LCM's buffers
+    }
+  });
+
+  LcmBus bus(url);
+  int specific = 0;
+  int everything = 0;
+  bus.Subscribe("DREAM_CMD_[0-9]+", [&](const std::string&, const void*, int) { ++specific; });
+  bus.Subscribe(".*", [&](const std::string& channel, const void*, int) {
+    if (channel.rfind("DREAM_CMD_", 0) == 0) ++everything;
+  });
+  starting_up = false;
+  self_tests.join();
+
+  constexpr int kMessages = 200;
+  const char byte = 0;
+  for (int i = 0; i < kMessages; ++i) {
+    neighbour.Publish("DREAM_CMD_" + std::to_string(i % 10), &byte, 1);
+    if (i % 20 == 19) std::this_thread::sleep_for(std::chrono::milliseconds(1));  // stay within the socket buffer
+  }
+  DrainFor(bus, std::chrono::milliseconds(300));
+  EXPECT_EQ(specific, kMessages);
+  EXPECT_EQ(everything, kMessages) << "the '.*' subscription missed messages the specific one received";
+}
+
+}  // namespace
+}  // namespace dream::lcm
