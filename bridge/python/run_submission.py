@@ -122,8 +122,8 @@ def main():
     parser.add_argument("--record-poses", default="", help="save every get_poses() result here (.npy, K x 3 x N)")
     parser.add_argument("--seed", type=int, default=0, help="seeds Python's and numpy's random generators")
     parser.add_argument("--echo", action="store_true", help="print the script's output as it runs")
-    parser.add_argument("--startup-max-steps", type=int, default=3000,
-                        help="give up when the simulator's start-up drive takes more steps (default 3000 = 99 s)")
+    parser.add_argument("--startup-max-steps", type=int, default=6000,
+                        help="give up when the simulator's start-up drive takes more steps (default 6000 = 198 s)")
     args = parser.parse_args()
 
     # The script runs in its working folder: make every path absolute first.

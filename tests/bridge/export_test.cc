@@ -121,7 +121,7 @@ TEST(PreValidationTest, CrowdedStartIsAWarningNotARefusal) {
   EXPECT_TRUE(PreValidate(packed, Finished(), sim::WorldParams{}, 240).empty());
   const std::vector<std::string> warnings = StartUpWarnings(packed);
   ASSERT_EQ(warnings.size(), 1u);
-  EXPECT_THAT(warnings[0], HasSubstr("start poses are crowded (robot 4 has 4 others within 0.40 m)"));
+  EXPECT_THAT(warnings[0], HasSubstr("start poses are crowded (robot 4 has 4 others within 0.38 m)"));
 }
 
 class ExportTest : public ::testing::Test {
