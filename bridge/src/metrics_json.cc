@@ -8,7 +8,7 @@ namespace dream::bridge {
 nlohmann::ordered_json MetricsJson(const config::RunConfig& config, const std::string& log_path) {
   nlohmann::ordered_json json;
   try {
-    const agents::ControllerFactory factory(config.controller, config.num_robots, config.seed);
+    const agents::ControllerFactory factory(config);
     const agents::MetricsReport report = agents::MetricsFromLog(factory, log_path);
     json["kind"] = factory.kind();
     for (const auto& [name, value] : report.values) json[name] = value;

@@ -23,9 +23,16 @@ void CheckRelativeName(const std::string& name) {
 
 OutputFolder::OutputFolder(std::string dir) : dir_(std::move(dir)) {
   if (dir_.empty()) throw std::runtime_error("the output folder name is empty");
-  const fs::path out(dir_);
+  fs::path out(dir_);
+  if (!out.has_filename() && out.has_parent_path()) out = out.parent_path();  // "runs/x/" is runs/x
+  // Like dream run --out: the folder is made, its parent must be there. A
+  // mistyped parent is a mistake to report, not a tree to create.
+  const fs::path parent = out.has_parent_path() ? out.parent_path() : fs::path(".");
+  if (!fs::is_directory(parent)) {
+    throw std::runtime_error("output folder " + dir_ + ": its parent folder " + parent.string() + " does not exist");
+  }
   std::error_code error;
-  fs::create_directories(out, error);
+  fs::create_directory(out, error);
   if (error || !fs::is_directory(out)) {
     throw std::runtime_error("cannot create the output folder " + dir_ + (error ? ": " + error.message() : std::string()));
   }

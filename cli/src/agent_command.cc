@@ -78,7 +78,7 @@ int RunAgents(const AgentArgs& args) {
   const config::RunConfig config = config::LoadRunConfigFile(args.config_path);
   const std::vector<int> ids = ParseRobotList(args.robots, config.num_robots);
   lcm::LcmBus bus(lcm::ResolveLcmUrl(args.lcm_url));
-  const agents::ControllerFactory factory(config.controller, config.num_robots, config.seed);
+  const agents::ControllerFactory factory(config);
   std::vector<std::unique_ptr<agents::RobotAgent>> robots;
   for (int id : ids) robots.push_back(factory.Make(id));
   agents::AgentHost host(bus, std::move(robots), NewAgentId());

@@ -30,11 +30,10 @@
 #include "dream/sim/run_summary.h"
 #include "dream/sim/sim_node.h"
 #include "dream/sim/trajectory_picture.h"
+#include "data_files.h"
 #include "process_group.h"
+#include "terminal_progress.h"
 
-#ifndef DREAM_BRIDGE_PYTHON_DIR
-#error "DREAM_BRIDGE_PYTHON_DIR must name bridge/python"
-#endif
 #ifndef DREAM_DEFAULT_PYTHON
 #define DREAM_DEFAULT_PYTHON "/usr/bin/python3"
 #endif
@@ -142,7 +141,7 @@ int RunLabReplay(const LabReplayArgs& args) {
   config.sim.max_steps = args.steps > 0 ? std::min<int64_t>(args.steps, track.last_step()) : track.last_step();
   config.sim.stop_when_done = false;  // the lab run is replayed to its end
   if (!args.mode.empty()) config.sim.mode = sim::ParseWorldMode(args.mode);
-  const agents::ControllerFactory factory(config.controller, config.num_robots, config.seed);
+  const agents::ControllerFactory factory(config);
 
   const bridge::OutputFolder out(DefaultOut(args.out_dir, config.name, "_lab_replay"));
   const std::string log_path = out.PathOf("run.lcmlog");
@@ -161,6 +160,8 @@ int RunLabReplay(const LabReplayArgs& args) {
     sim::RunRecorder recorder(log_path);
     world = std::make_unique<bridge::LabReplayWorld>(std::move(track), config.world, &recorder);
     sim::SimNode node(bus, *world, &recorder, config.sim);
+    TerminalProgress progress(config.sim.progress_interval_s);
+    node.set_progress_reporter(progress.reporter());
     spdlog::info("{}: replaying {} lab steps of {} robots ({}) on {}{}", config.name, config.sim.max_steps,
                  config.num_robots, sim::WorldModeName(config.sim.mode), bus.url(),
                  in_process ? " with the agents in this process" : "; start the agents with dream agent");
@@ -217,7 +218,7 @@ int RunCheckSubmission(const CheckSubmissionArgs& args) {
     fs::remove(fs::path(workdir) / stale, ignored);
   }
   std::vector<std::string> argv = {args.python.empty() ? DREAM_DEFAULT_PYTHON : args.python,
-                                   std::string(DREAM_BRIDGE_PYTHON_DIR) + "/run_submission.py",
+                                   DataFiles::BridgePythonDir() + "/run_submission.py",
                                    "--upload", (fs::path(args.export_dir) / "upload").string(),
                                    "--workdir", workdir,
                                    "--report", report_path};

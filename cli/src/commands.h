@@ -107,6 +107,46 @@ int RunLabReplay(const LabReplayArgs& args);
 int RunCompare(const CompareArgs& args);
 int RunCheckSubmission(const CheckSubmissionArgs& args);
 
+// --- sweeps (sweep_command.cc, docs/sweeps.md) ---
+
+struct SweepArgs {
+  std::string config_path;
+  std::string seeds;              ///< "1-20", "7", "1,4,9-12"; empty: the config's seed
+  std::vector<std::string> sets;  ///< "KEY=V1,V2,..." each
+  int jobs = 0;                   ///< runs at once; 0: one per core
+  long long steps = 0;            ///< 0: the config's step limit
+  std::string out_dir;            ///< required; its parent must exist
+  double run_timeout_s = 1800.0;  ///< a run still going after this is stopped and counts as failed
+};
+
+/// Runs the config over every seed x --set combination, `jobs` `dream run`
+/// processes at a time, and writes <out>/runs/<run>/, sweep.csv and sweep.md.
+/// Exit 0 when every run ran (successful or not), 4 when one failed to run,
+/// 1 for bad input (nothing is started), 130 when interrupted.
+int RunSweep(const SweepArgs& args);
+
+// --- pictures and videos (render_command.cc, docs/rendering.md) ---
+
+struct RenderArgs {
+  std::string input;                 ///< a run folder (its run.lcmlog) or an .lcmlog file
+  std::string out;                   ///< .png/.svg/.mp4/.gif; empty: beside the log (trajectories.svg, run.mp4, metrics.png)
+  std::string config_path;           ///< empty: config.yaml beside the log, when there
+  bool video = false;                ///< no --out: write run.mp4
+  bool plot = false;                 ///< metric plots instead of the arena
+  std::vector<std::string> metrics;  ///< --metric NAME: plot only these series (implies plot)
+  bool radio_links = false;
+  bool sensor_ranges = false;
+  int width_px = 0;                  ///< 0: 1280 pictures, 1000 plots, 720 MP4, 480 GIF
+  double fps = 0;                    ///< 0: 30 MP4, 15 GIF
+  double speed = 4.0;                ///< simulated seconds per video second
+  double trail_s = 10.0;             ///< simulated seconds of trail behind each robot
+};
+
+/// Draws a recorded run: the arena picture (.png/.svg), a video (.mp4/.gif,
+/// through ffmpeg) or its metrics over time (--plot). Exit 0, 1 for bad
+/// input (nothing written), 2 usage, 130 interrupted.
+int RunRender(const RenderArgs& args);
+
 /// Parses "all", "3", "0,2,5", "0-4" into sorted unique ids < num_robots.
 /// @throws std::invalid_argument naming the bad part.
 std::vector<int> ParseRobotList(const std::string& text, int num_robots);

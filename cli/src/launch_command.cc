@@ -17,6 +17,9 @@ int RunLaunch(const RunArgs& args) {
   const std::string self = SelfExecutable();
   std::vector<std::string> common = {args.config_path};
   if (!args.lcm_url.empty()) common.push_back("--lcm-url=" + args.lcm_url);
+  // The children log (and show progress) as quietly or verbosely as this process.
+  if (!spdlog::should_log(spdlog::level::info)) common.push_back("--quiet");
+  if (spdlog::should_log(spdlog::level::debug)) common.push_back("--verbose");
 
   ProcessGroup children;
   std::vector<std::string> sim_argv = {self, "sim"};

@@ -1,6 +1,8 @@
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <regex>
+#include <stdexcept>
 
 #include "commands.h"
 #include "dream/lcm/log_reader.h"
@@ -10,9 +12,14 @@ namespace {
 
 using Payloads = std::map<std::string, std::vector<std::vector<uint8_t>>>;
 
+/// The log of `path`: the file itself, or run.lcmlog in a run folder.
+std::string LogFileOf(const std::string& path) {
+  return std::filesystem::is_directory(path) ? (std::filesystem::path(path) / "run.lcmlog").string() : path;
+}
+
 Payloads PayloadsByChannel(const std::string& path, const std::regex& channels) {
   Payloads payloads;
-  for (lcm::LogRecord& record : lcm::LogReader::ReadAll(path)) {
+  for (lcm::LogRecord& record : lcm::LogReader::ReadAll(LogFileOf(path))) {
     if (std::regex_match(record.channel, channels)) payloads[record.channel].push_back(std::move(record.data));
   }
   return payloads;
@@ -20,7 +27,8 @@ Payloads PayloadsByChannel(const std::string& path, const std::regex& channels) 
 
 }  // namespace
 
-int RunLogInfo(const std::string& path) {
+int RunLogInfo(const std::string& path_given) {
+  const std::string path = LogFileOf(path_given);
   struct ChannelStats {
     long events = 0;
     long bytes = 0;
@@ -39,6 +47,7 @@ int RunLogInfo(const std::string& path) {
     ++s.events;
     s.bytes += static_cast<long>(record.data.size());
   }
+  if (total == 0) throw std::runtime_error(path + ": an empty log (no events): nothing was recorded");
   std::cout << path << ": " << total << " events, " << static_cast<double>(last - first) / 1e6
             << " s of log time\n";
   for (const auto& [channel, s] : stats) {

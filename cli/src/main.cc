@@ -12,18 +12,33 @@
 
 namespace {
 
+/// --steps: a whole number >= 1, with a message that says so (CLI::PositiveNumber
+/// would take 2.5 and quote a 300-digit range).
+CLI::Validator StepCount() {
+  return CLI::Validator(
+      [](const std::string& text) {
+        return text.find_first_not_of("0123456789") == std::string::npos && text.find_first_not_of('0') != std::string::npos
+                   ? std::string()
+                   : "must be a whole number >= 1, got " + text;
+      },
+      "INT>=1");
+}
+
+/// "dream log info": the (sub)command line a failed parse got to, for a pointer to its --help.
+std::string ParsedCommand(const CLI::App& app) {
+  std::string command = app.get_name();
+  for (const CLI::App* at = &app; !at->get_subcommands().empty();) {
+    at = at->get_subcommands().front();
+    command += " " + at->get_name();
+  }
+  return command;
+}
+
 void AddRunOptions(CLI::App* command, dream::cli::RunArgs* args, const char* url_help) {
   command->add_option("config", args->config_path, "Run config (YAML), e.g. config/go_to_goal.yaml")->required();
   command->add_option("--out", args->out_dir, "Output folder for run.lcmlog and summary.json (default runs/<name>)");
   command->add_option("--lcm-url", args->lcm_url, url_help);
-  command->add_option("--steps", args->steps, "Override the config's step limit")
-      ->check(CLI::Validator(
-          [](const std::string& text) {
-            return text.find_first_not_of("0123456789") == std::string::npos && text.find_first_not_of('0') != std::string::npos
-                       ? std::string()
-                       : "must be a whole number >= 1, got " + text;
-          },
-          "INT>=1"));
+  command->add_option("--steps", args->steps, "Override the config's step limit")->check(StepCount());
   command->add_option("--mode", args->mode, "Override the world mode")->check(CLI::IsMember({"lockstep", "realtime"}));
   command->add_flag("--all-steps", args->all_steps, "Run every step even when all robots report done (benchmarks)");
 }
@@ -41,7 +56,7 @@ int main(int argc, char** argv) {
   app.fallthrough();  // --quiet/--verbose work after the subcommand too
   bool quiet = false;
   bool verbose = false;
-  app.add_flag("-q,--quiet", quiet, "Only warnings and errors");
+  app.add_flag("-q,--quiet", quiet, "Only warnings and errors (no progress either)");
   app.add_flag("-v,--verbose", verbose, "Debug output");
 
   RunArgs run_args;
@@ -83,20 +98,21 @@ int main(int argc, char** argv) {
   spy->add_option("--lcm-url", spy_url, "LCM URL to inspect (default $LCM_DEFAULT_URL)");
   spy->add_flag("--print", spy_print, "Print the commands instead of starting them");
 
-  CLI::App* log = app.add_subcommand("log", "Look into recorded runs.");
+  CLI::App* log = app.add_subcommand("log", "Look into recorded runs: info, diff.\n"
+                                             "Example: dream log info runs/go_to_goal");
   log->require_subcommand(1);
   std::string info_path;
   CLI::App* log_info = log->add_subcommand("info", "Channels and event counts of a log.\n"
                                                    "Example: dream log info runs/go_to_goal/run.lcmlog");
-  log_info->add_option("log", info_path, "LCM log file")->required();
+  log_info->add_option("log", info_path, "LCM log file, or a run folder (its run.lcmlog)")->required();
   std::string diff_a;
   std::string diff_b;
   std::string diff_channels = ".*";
   CLI::App* log_diff = log->add_subcommand(
       "diff", "Compare two logs message by message, per channel, ignoring timestamps. Exit 0 when equal.\n"
               "Example: dream log diff a/run.lcmlog b/run.lcmlog --channels DREAM_POSES");
-  log_diff->add_option("a", diff_a, "First log")->required();
-  log_diff->add_option("b", diff_b, "Second log")->required();
+  log_diff->add_option("a", diff_a, "First log (or run folder)")->required();
+  log_diff->add_option("b", diff_b, "Second log (or run folder)")->required();
   log_diff->add_option("--channels", diff_channels, "Regex of channels to compare")->capture_default_str();
 
   // The bridge to the Robotarium (docs/robotarium.md).
@@ -140,7 +156,7 @@ int main(int argc, char** argv) {
   replay_command->add_option("--out", replay_args.out_dir, "Output folder (default runs/<name>_lab_replay)");
   replay_command->add_option("--lcm-url", replay_args.lcm_url,
                              "LCM URL (default memq://, or $LCM_DEFAULT_URL with --world-only)");
-  replay_command->add_option("--steps", replay_args.steps, "Replay at most this many steps")->check(CLI::PositiveNumber);
+  replay_command->add_option("--steps", replay_args.steps, "Replay at most this many steps")->check(StepCount());
   replay_command->add_option("--mode", replay_args.mode, "Override the world mode")
       ->check(CLI::IsMember({"lockstep", "realtime"}));
   replay_command->add_flag("--world-only", replay_args.world_only,
@@ -172,6 +188,61 @@ int main(int argc, char** argv) {
   check_command->add_flag("--skip-initialization", check_args.skip_initialization,
                           "Start exactly at the start poses (no start-up drive)");
 
+  SweepArgs sweep_args;
+  CLI::App* sweep_command = app.add_subcommand(
+      "sweep", "Run an experiment over many seeds and parameter values in parallel (one dream run process per\n"
+               "run, --jobs at a time) and tabulate the outcomes in <out>/sweep.csv and sweep.md (docs/sweeps.md).\n"
+               "Example: dream sweep config/hrvo_circle.yaml --seeds 1-20 --out sweeps/hrvo_circle");
+  sweep_command->add_option("config", sweep_args.config_path, "Run config (YAML) to sweep")->required();
+  sweep_command->add_option("--seeds", sweep_args.seeds, "Seeds: 7, 1-20 or 1,4,9-12 (default: the config's seed)");
+  sweep_command
+      ->add_option("--set", sweep_args.sets,
+                   "KEY=V1,V2,...: also sweep this config key (dotted: controller.max_speed_mps,\n"
+                   "controller.sensors.0.noise_std); repeat for more keys, every combination runs")
+      ->allow_extra_args(false);
+  sweep_command->add_option("-j,--jobs", sweep_args.jobs, "Runs at once (default: one per core)")
+      ->check(CLI::Range(1, 1024));
+  sweep_command->add_option("--steps", sweep_args.steps, "Override the config's step limit in every run")
+      ->check(CLI::Range(1LL, 1000000000LL));
+  sweep_command->add_option("--out", sweep_args.out_dir, "Sweep folder (its parent must exist)")->required();
+  sweep_command->add_option("--timeout", sweep_args.run_timeout_s,
+                            "Stop a run still going after this many seconds; it counts as failed")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+
+  // Pictures and videos of a recorded run (docs/rendering.md).
+  RenderArgs render_args;
+  CLI::App* render_command = app.add_subcommand(
+      "render", "Draw a recorded run (simulated or imported from the lab): the arena with trajectories, obstacles,\n"
+                "goals and final poses (.png/.svg), a video of the run (.mp4/.gif, needs ffmpeg), or the metrics\n"
+                "over time (--plot). --out's extension picks; without --out: trajectories.svg, run.mp4 (--video)\n"
+                "or metrics.png (--plot) beside the log.\n"
+                "Example: dream render runs/hrvo_circle --out runs/hrvo_circle/run.mp4 --radio-links");
+  render_command->add_option("run", render_args.input, "Run folder (its run.lcmlog) or an .lcmlog file")->required();
+  render_command->add_option("--out", render_args.out, "Output file: .png, .svg, .mp4 or .gif");
+  render_command->add_option("--config", render_args.config_path,
+                             "The run's config, for goals, sensors and radio (default: config.yaml beside the log)");
+  render_command->add_flag("--video", render_args.video, "Without --out: write run.mp4 beside the log");
+  render_command->add_flag("--plot", render_args.plot,
+                           "Plot the metrics over time (summary.json's series and the closest approach)");
+  render_command->add_option("--metric", render_args.metrics, "Plot only this series (repeat for more; implies --plot)")
+      ->allow_extra_args(false);
+  render_command->add_flag("--radio-links", render_args.radio_links,
+                           "Draw radio broadcasts from sender to the robots that hear it (from the config's radio)");
+  render_command->add_flag("--sensor-ranges", render_args.sensor_ranges,
+                           "Draw the reach of the movement/obstacle sensors round each robot");
+  render_command->add_option("--width", render_args.width_px,
+                             "Width in pixels (default 1280 picture, 1000 plot, 720 MP4, 480 GIF)")
+      ->check(CLI::Range(160, 8192));
+  render_command->add_option("--fps", render_args.fps, "Video frames per second (default 30 MP4, 15 GIF)")
+      ->check(CLI::Range(1.0, 120.0));
+  render_command->add_option("--speed", render_args.speed, "Simulated seconds per video second")
+      ->check(CLI::Range(0.01, 10000.0))
+      ->capture_default_str();
+  render_command->add_option("--trail", render_args.trail_s, "Seconds of simulated time drawn behind each robot")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+
   // CLI11 would only say "A subcommand is required"; name the unknown word.
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;
@@ -189,7 +260,10 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? kExitOk : kExitUsage;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help
+    // One line, like every other failure, and where to read more.
+    std::cerr << "dream: " << e.what() << " (" << ParsedCommand(app) << " --help)\n";
+    return kExitUsage;
   }
 
   spdlog::set_pattern("[%H:%M:%S.%e] [%^%l%$] %v");
@@ -209,6 +283,8 @@ int main(int argc, char** argv) {
     if (*replay_command) return RunLabReplay(replay_args);
     if (*compare_command) return RunCompare(compare_args);
     if (*check_command) return RunCheckSubmission(check_args);
+    if (*sweep_command) return RunSweep(sweep_args);
+    if (*render_command) return RunRender(render_args);
   } catch (const dream::config::ConfigError& e) {
     std::cerr << "dream: " << e.what() << '\n';
     return kExitInputError;

@@ -17,7 +17,7 @@ int RunEmbedded(const RunArgs& args) {
   // user asks for a real transport.
   lcm::LcmBus bus(args.lcm_url.empty() ? "memq://" : lcm::ResolveLcmUrl(args.lcm_url));
   const std::string out_dir = PrepareOutputDir(args, config);
-  const agents::ControllerFactory factory(config.controller, config.num_robots, config.seed);
+  const agents::ControllerFactory factory(config);
   std::vector<std::unique_ptr<agents::RobotAgent>> robots;
   for (int id = 0; id < config.num_robots; ++id) robots.push_back(factory.Make(id));
   agents::AgentHost host(bus, std::move(robots), NewAgentId());

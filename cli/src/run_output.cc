@@ -17,11 +17,12 @@
 #include "dream/sim/sim_node.h"
 #include "dream/sim/trajectory_picture.h"
 #include "dream/sim/unicycle_world.h"
+#include "terminal_progress.h"
 
 namespace dream::cli {
 
 nlohmann::ordered_json ExperimentMetricsJson(const config::RunConfig& config, const std::string& log_path) {
-  const agents::ControllerFactory factory(config.controller, config.num_robots, config.seed);
+  const agents::ControllerFactory factory(config);
   const agents::MetricsReport report = agents::MetricsFromLog(factory, log_path);
   nlohmann::ordered_json json;
   json["kind"] = factory.kind();
@@ -53,13 +54,14 @@ config::RunConfig LoadConfig(const RunArgs& args) {
   if (args.all_steps) config.sim.stop_when_done = false;
   // Check the controller section now, so a mistake in it stops every command
   // (sim, launch) before anything starts or any folder is made.
-  agents::ControllerFactory(config.controller, config.num_robots, config.seed);
+  agents::ControllerFactory{config};
   return config;
 }
 
 std::string PrepareOutputDir(const RunArgs& args, const config::RunConfig& config) {
   namespace fs = std::filesystem;
-  const fs::path out = args.out_dir.empty() ? fs::path("runs") / config.name : fs::path(args.out_dir);
+  fs::path out = args.out_dir.empty() ? fs::path("runs") / config.name : fs::path(args.out_dir);
+  if (!out.has_filename() && out.has_parent_path()) out = out.parent_path();  // "runs/x/" is runs/x
   const fs::path parent = out.has_parent_path() ? out.parent_path() : fs::path(".");
   std::error_code error;
   if (args.out_dir.empty()) {
@@ -80,7 +82,8 @@ std::string PrepareOutputDir(const RunArgs& args, const config::RunConfig& confi
 int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std::string& out_dir) {
   // A copy of the config beside the log, so the run folder alone is enough for
   // `dream export` and `dream compare`.
-  sim::WriteFileAtomically(out_dir + "/config.yaml", ReadConfigText(config.source));
+  sim::WriteFileAtomically(out_dir + "/config.yaml",
+                           config::RunFolderConfigText(config, ReadConfigText(config.source)));
   sim::UnicycleWorld world(config.world, config.initial_poses, config.obstacles);
   const std::string log_path = out_dir + "/run.lcmlog";
   sim::RunOutcome outcome;
@@ -89,6 +92,8 @@ int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std:
     sim::SimNode node(lcm, world, &recorder, config.sim);
     spdlog::info("{}: {} robots, up to {} steps, {} on {}", config.name, config.num_robots, config.sim.max_steps,
                  sim::WorldModeName(config.sim.mode), lcm.url());
+    TerminalProgress progress(config.sim.progress_interval_s);
+    node.set_progress_reporter(progress.reporter());
     outcome = node.Run(StopFlag());
     recorder.Close();
   }

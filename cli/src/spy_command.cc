@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include "data_files.h"
 #include "dream/lcm/lcm_url.h"
 #include "process_group.h"
 
@@ -15,13 +16,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The types jar: $DREAM_TYPES_JAR, the build tree's, or the installed one.
+// The types jar: $DREAM_TYPES_JAR, else the build tree's or the installed one.
 std::string FindTypesJar() {
   if (const char* env = std::getenv("DREAM_TYPES_JAR"); env != nullptr && fs::exists(env)) return env;
-  if (fs::exists(DREAM_BUILD_TYPES_JAR)) return DREAM_BUILD_TYPES_JAR;
-  const fs::path installed = fs::path(SelfExecutable()).parent_path() / "../share/java/dream_lcmtypes.jar";
-  if (fs::exists(installed)) return fs::canonical(installed).string();
-  throw std::runtime_error("cannot find dream_lcmtypes.jar: build the project (cmake --build) or set DREAM_TYPES_JAR");
+  const std::string jar = DataFiles::TypesJar();
+  if (fs::exists(jar)) return jar;
+  throw std::runtime_error("cannot find the types jar " + jar + ": build the project (cmake --build) or set DREAM_TYPES_JAR");
 }
 
 std::string RequireFile(const std::string& path, const char* what, const char* hint) {

@@ -217,8 +217,8 @@ def logplayer(loop):
     # The stand-in runs faster than the lab, so its stamps are close together: play slowly enough
     # that every step's burst of messages is 8 ms from the next (lcm-logger, with its 30-message
     # queue, drops bursts that come faster while it waits for a CPU).
-    sys.path.insert(0, os.path.join(loop.source, "tests", "python"))
-    from lcmlog import read_events
+    sys.path.insert(0, os.path.join(loop.source, "python"))
+    from dream_log import read_events
     stamps = [e.utime for e in read_events(imported_log) if e.channel == "DREAM_POSES"]
     closest_us = max(1, min(b - a for a, b in zip(stamps, stamps[1:])))
     speed = min(5.0, max(0.005, closest_us / 8000.0))

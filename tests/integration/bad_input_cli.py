@@ -2,9 +2,9 @@
 """bad_input_cli: every mistake a user can make on the command line or in a config is refused with
 the documented exit code and a one-line message that names the file, line, key and value.
 
-Each case runs `dream` on a broken input and checks: the exit code, that the first output line
-holds every expected fragment, and that a config error is exactly one line and creates no output
-folder.
+Each case runs `dream` on a broken input and checks: the exit code, that the output is exactly one
+line starting with "dream" and holding every expected fragment, and that no output folder the
+command was given (refused_out*) was created.
 
 Usage: netns.sh bad_input_cli.py --dream BIN --source DIR
 """
@@ -81,15 +81,40 @@ def test(ctx):
     with open(not_log, "w") as f:
         f.write("name: this is text, not an LCM log\n")
     truncated, kept_events = truncated_log(ctx, dream, config)
+    good_run = ctx.path("good_run")
     no_parent = ctx.path("no", "such", "folder")
+    empty_log = ctx.path("empty.lcmlog")
+    open(empty_log, "wb").close()
+    # A run folder whose log holds no poses: only the DREAM_STATUS events of a real run.
+    no_poses_run = ctx.path("no_poses_run")
+    os.mkdir(no_poses_run)
+    with open(config) as f, open(os.path.join(no_poses_run, "config.yaml"), "w") as out:
+        out.write(f.read())
+    with open(os.path.join(no_poses_run, "run.lcmlog"), "wb") as out:
+        for event in read_events(os.path.join(good_run, "run.lcmlog")):
+            if event.channel == "DREAM_STATUS":
+                channel = event.channel.encode()
+                out.write(b"".join([(0xEDA1DA01).to_bytes(4, "big"), event.eventnum.to_bytes(8, "big"),
+                                    event.utime.to_bytes(8, "big"), len(channel).to_bytes(4, "big"),
+                                    len(event.data).to_bytes(4, "big"), channel, event.data]))
+    folder_without_log = ctx.path("folder_without_log")
+    os.mkdir(folder_without_log)
 
     def where(path, line):
         return f"{path}:{line}:"
 
-    # (name, argv, expected exit code, fragments the first output line must hold, is a config error)
+    # (name, argv, expected exit code, fragments the output line must hold, is a config error)
     cases = [
-        ("unknown subcommand", ["frobnicate"], EXIT_USAGE, [], False),
-        ("unknown option", ["run", config, "--speed", "3"], EXIT_USAGE, ["--speed"], False),
+        ("unknown subcommand", ["frobnicate"], EXIT_USAGE, ["'frobnicate'", "dream --help"], False),
+        ("unknown option", ["run", config, "--speed", "3"], EXIT_USAGE, ["--speed", "dream run --help"], False),
+        ("missing argument", ["run"], EXIT_USAGE, ["config", "required", "dream run --help"], False),
+        ("log without its subcommand", ["log"], EXIT_USAGE, ["subcommand", "dream log --help"], False),
+        ("unknown option of a nested command", ["log", "info", truncated, "--all"], EXIT_USAGE,
+         ["--all", "dream log info --help"], False),
+        ("--steps 0", ["run", config, "--steps", "0", "--out", ctx.path("refused_out_steps0")], EXIT_USAGE,
+         ["--steps", "whole number", "got 0"], False),
+        ("lab-replay --steps 2.5", ["lab-replay", good_run, "--steps", "2.5", "--out", ctx.path("refused_out_r")],
+         EXIT_USAGE, ["--steps", "whole number", "got 2.5"], False),
         ("missing config file", ["run", missing, "--out", ctx.path("refused_out1")], None, [missing], False),
         ("robots: 51", ["run", robots51, "--out", ctx.path("refused_out2")], EXIT_INPUT,
          [where(robots51, robots51_line), "robots", "51", "50"], True),
@@ -125,6 +150,23 @@ def test(ctx):
          [truncated, "cut short", f"after event {kept_events}"], False),
         ("log diff with a truncated log", ["log", "diff", truncated, truncated], EXIT_INPUT,
          [truncated, "cut short"], False),
+        ("log info on an empty log", ["log", "info", empty_log], EXIT_INPUT, [empty_log, "empty log"], False),
+        ("log info on a folder without a log", ["log", "info", folder_without_log], EXIT_INPUT,
+         [os.path.join(folder_without_log, "run.lcmlog"), "no such log file"], False),
+        ("export of a run with no poses", ["export", no_poses_run, "--out", ctx.path("refused_out_export")],
+         EXIT_INPUT, [no_poses_run, "no DREAM_POSES"], False),
+        ("export --out under a missing folder", ["export", good_run, "--out", ctx.path("refused_out_e", "x")],
+         EXIT_INPUT, [ctx.path("refused_out_e"), "does not exist"], False),
+        ("compare with a run with no poses", ["compare", good_run, no_poses_run, "--out", ctx.path("refused_out_c")],
+         EXIT_INPUT, [no_poses_run, "no DREAM_POSES"], False),
+        ("compare --out under a missing folder", ["compare", good_run, good_run, "--out", ctx.path("refused_out_c2", "x")],
+         EXIT_INPUT, [ctx.path("refused_out_c2"), "does not exist"], False),
+        ("lab-replay of a run with no poses", ["lab-replay", no_poses_run, "--out", ctx.path("refused_out_l")],
+         EXIT_INPUT, [no_poses_run, "no DREAM_POSES"], False),
+        ("lab-replay --out under a missing folder", ["lab-replay", good_run, "--out", ctx.path("refused_out_l2", "x")],
+         EXIT_INPUT, [ctx.path("refused_out_l2"), "does not exist"], False),
+        ("import of a missing result", ["import", ctx.path("no_result.npy"), "--export", good_run, "--out",
+         ctx.path("refused_out_i")], EXIT_INPUT, [good_run], False),
     ]
 
     problems = []
@@ -142,12 +184,17 @@ def test(ctx):
         missing_fragments = [f for f in fragments if f not in first]
         if missing_fragments:
             problems.append(f"{name}: message {first!r} lacks {missing_fragments}")
-        if config_error and len(lines) != 1:
+        if len(lines) != 1:
             problems.append(f"{name}: expected a one-line error, got {len(lines)} lines: {lines[:3]}")
+        elif not first.startswith("dream"):
+            problems.append(f"{name}: the message does not start with 'dream': {first!r}")
         if not lines:
             problems.append(f"{name}: no message at all")
-        if config_error and any(os.path.exists(a) for a in argv if a.startswith(ctx.path("refused_out"))):
-            problems.append(f"{name}: the refused run created its output folder")
+        # An --out given as refused_out*[/...] must not exist afterwards, nor any folder above it.
+        refused_roots = [os.path.join(ctx.dir, os.path.relpath(a, ctx.dir).split(os.sep)[0])
+                         for a in argv if a.startswith(ctx.path("refused_out"))]
+        if any(os.path.exists(root) for root in refused_roots):
+            problems.append(f"{name}: the refused command created its output folder")
         print(f"{name}: exit {code}: {first}")
     check(not problems, "; ".join(problems))
 

@@ -18,10 +18,10 @@ import tempfile
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "python"))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "python"))
 
-# Re-exported: the tests read logs with the same reader users get.
-from lcmlog import LogFormatError, read_all, read_events  # noqa: E402,F401
+# Re-exported: the tests read logs with the same reader users get (python/dream_log.py).
+from dream_log import LogFormatError, read_all, read_events  # noqa: E402,F401
 
 LCM_GROUP = "239.255.76.67"
 LCM_PORT = 7667

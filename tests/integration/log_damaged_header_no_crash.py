@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """log_damaged_header_no_crash: `dream log info` and `dream log diff` refuse a log whose event
 header is damaged (absurd or negative lengths, a broken sync word) with exit 1 and a message naming
-the file, and never crash; the Python reader (tests/python/lcmlog.py) refuses them too.
+the file, and never crash; the Python reader (python/dream_log.py) refuses them too.
 
 Each damaged copy of a real run log changes one field of the header of event 100.
 

@@ -4,8 +4,10 @@
 
 #include <cmath>
 #include <memory>
+#include <sstream>
 
 #include "dream/lcm/lcm_bus.h"
+#include "dream/sim/progress_reporter.h"
 #include "dream/run_status_t.hpp"
 #include "scripted_agent.h"
 
@@ -192,6 +194,27 @@ TEST_F(SimNodeTest, RealTimeModeUsesTheLatestCommands) {
   EXPECT_EQ(outcome.end, RunOutcome::End::kFinished);
   EXPECT_EQ(outcome.steps, 6);
   EXPECT_NEAR(world_.poses()[2].x_m, 1.0 + 6 * 0.033 * 0.1, 1e-12);
+}
+
+TEST_F(SimNodeTest, ProgressReporterFollowsTheStepsAndIsFinishedAtTheEnd) {
+  for (int id = 0; id < 3; ++id) AddAgent(id, Forward());
+  std::ostringstream out;
+  ProgressReporter::Options progress_options;
+  progress_options.interactive = true;
+  progress_options.show_after_s = 0.0;      // draw from the first step
+  progress_options.redraw_interval_s = 0.0;  // and at every one
+  ProgressReporter progress(out, progress_options);
+  SimNode node(bus_, world_, nullptr, FastOptions(40));
+  node.set_progress_reporter(&progress);
+  std::atomic<bool> stop{false};
+  const RunOutcome outcome = node.Run(stop);
+  ASSERT_EQ(outcome.steps, 40);
+  const std::string text = out.str();
+  EXPECT_NE(text.find("\rstep 1/40 ["), std::string::npos) << text;
+  const std::string last = text.substr(text.rfind('\r') + 1);
+  EXPECT_EQ(last.rfind("step 40/40 [", 0), 0u) << last;
+  EXPECT_EQ(text.back(), '\n');
+  EXPECT_FALSE(progress.line_on_screen());
 }
 
 TEST(SimNodeOptionsTest, InvalidOptionsNameTheField) {

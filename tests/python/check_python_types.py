@@ -2,7 +2,7 @@
 """Checks that the pure-Python types lcm-gen writes (build/python/dream) decode a run log.
 
 Either give a log (--log LOG) or let the script make one (--dream BIN --config CFG: runs
-`dream run CFG` into a temporary folder). Reads the log with lcmlog.read_events (no LCM
+`dream run CFG` into a temporary folder). Reads the log with dream_log.read_events (no LCM
 runtime), decodes every DREAM_* event with its dream type, re-encodes it byte for byte,
 and checks the run: DREAM_POSES steps 0..N consecutive with utime = step * 33000, the
 expected number of robots, every robot inside the arena, and the final DREAM_STATUS state.
@@ -20,8 +20,8 @@ import subprocess
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from lcmlog import LogFormatError, read_events  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from dream_log import LogFormatError, read_events  # noqa: E402
 
 MICROS_PER_STEP = 33000
 ARENA_X_M = 1.6  # the Robotarium arena is x in [-1.6, 1.6] m, y in [-1, 1] m

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 
 #include "dream/sim/initial_pose_generator.h"
@@ -154,11 +155,38 @@ std::vector<sim::RectangleObstacleSpec> ReadObstacles(const ConfigNode& root) {
   return specs;
 }
 
+// The folder relative plugin paths start from: `plugin_dir:` (absolute, so a
+// copy of the config elsewhere still finds them), else the config's folder.
+std::filesystem::path PluginBaseDir(const ConfigNode& root) {
+  namespace fs = std::filesystem;
+  const ConfigNode dir = root.Optional("plugin_dir");
+  if (dir.IsDefined()) {
+    const fs::path path = dir.AsString();
+    if (!path.is_absolute()) dir.Fail("must be an absolute path, got '" + path.string() + "'");
+    return path;
+  }
+  const fs::path folder = fs::path(root.file()).parent_path();
+  return folder.empty() ? fs::current_path() : fs::absolute(folder);
+}
+
+void ReadPlugins(const ConfigNode& root, RunConfig* config) {
+  const ConfigNode list = root.Optional("plugins");
+  if (!list.IsDefined()) return;
+  if (!list.IsSequence()) list.Fail("expected a list of plugin files, like [build/libmy_controller.so]");
+  const std::filesystem::path base = PluginBaseDir(root);
+  for (size_t i = 0; i < list.size(); ++i) {
+    const std::filesystem::path path = list[i].AsString();
+    if (path.empty()) list[i].Fail("expected the path of a plugin file, got an empty one");
+    config->plugins.push_back((path.is_absolute() ? path : base / path).lexically_normal().string());
+    config->plugin_nodes.push_back(list[i]);
+  }
+}
+
 }  // namespace
 
 RunConfig LoadRunConfig(const ConfigNode& root) {
   root.RejectUnknownKeys({"name", "seed", "robots", "steps", "stop_when_done", "world", "initial_poses",
-                          "obstacles", "controller", "description"});
+                          "obstacles", "controller", "description", "plugins", "plugin_dir"});
   RunConfig config;
   config.source = root.file();
   config.name = root.Required("name").AsString();
@@ -185,9 +213,34 @@ RunConfig LoadRunConfig(const ConfigNode& root) {
   config.obstacles = ReadObstacles(root);
   config.controller = root.Required("controller");
   if (!config.controller.IsMap()) config.controller.Fail("expected a mapping with at least `kind:`");
+  ReadPlugins(root, &config);
   return config;
 }
 
 RunConfig LoadRunConfigFile(const std::string& path) { return LoadRunConfig(ConfigNode::LoadFile(path)); }
+
+std::string RunFolderConfigText(const RunConfig& config, const std::string& text) {
+  if (config.plugin_nodes.empty()) return text;
+  const ConfigNode root = ConfigNode::LoadString(text, config.source);
+  bool relative = false;
+  for (size_t i = 0; i < config.plugin_nodes.size(); ++i) {
+    relative = relative || !std::filesystem::path(config.plugin_nodes[i].AsString()).is_absolute();
+  }
+  if (!relative || root.Has("plugin_dir")) return text;
+  const std::string dir = PluginBaseDir(root).string();
+  std::string quoted = "\"";
+  for (char c : dir) quoted += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
+  quoted += "\"";
+  const std::string copy = text + (text.empty() || text.back() == '\n' ? "" : "\n") +
+                           "# Added by dream: the folder the relative plugin paths above are relative to.\n"
+                           "plugin_dir: " + quoted + "\n";
+  // An unusual file (a flow mapping, an explicit document end) would not take
+  // the extra key: keep it unchanged rather than store a broken copy.
+  try {
+    if (ConfigNode::LoadString(copy, config.source).GetString("plugin_dir", "") == dir) return copy;
+  } catch (const ConfigError&) {
+  }
+  return text;
+}
 
 }  // namespace dream::config

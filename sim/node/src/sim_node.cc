@@ -11,6 +11,7 @@
 #include "dream/obstacles_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
+#include "dream/sim/progress_reporter.h"
 #include "dream/sim/robotarium_constants.h"
 #include "dream/sim/run_recorder.h"
 #include "dream/velocity_command_t.hpp"
@@ -253,22 +254,14 @@ void SimNode::AdvanceWorld() {
   world_.Step();
 }
 
-void SimNode::ReportProgress(Clock::time_point now) {
-  if (options_.progress_interval_s <= 0.0 || SecondsBetween(last_progress_, now) < options_.progress_interval_s) {
-    return;
-  }
-  const double rate = static_cast<double>(world_.step() - last_progress_step_) / SecondsBetween(last_progress_, now);
-  const double remaining_s = rate > 0 ? static_cast<double>(options_.max_steps - world_.step()) / rate : 0.0;
-  spdlog::info("step {}/{} ({:.0f}%), {:.0f} steps/s, at most {:.0f} s left", world_.step(), options_.max_steps,
-               100.0 * static_cast<double>(world_.step()) / static_cast<double>(options_.max_steps), rate,
-               remaining_s);
-  last_progress_ = now;
-  last_progress_step_ = world_.step();
-}
-
 RunOutcome SimNode::Finish(RunOutcome::End end, const std::string& reason) {
   const int8_t state = end == RunOutcome::End::kFinished ? run_status_t::FINISHED : run_status_t::ABORTED;
   state_ = state;
+  if (progress_ != nullptr) {
+    const auto now = Clock::now();
+    progress_->Update(world_.step(), now);
+    progress_->Finish(now);
+  }
   PublishStatus(state, reason, true);
   // Agents exit on this message; repeat it (unrecorded) so one lost datagram
   // does not leave them waiting for their idle timeout.
@@ -291,7 +284,6 @@ RunOutcome SimNode::Finish(RunOutcome::End end, const std::string& reason) {
 
 RunOutcome SimNode::Run(const std::atomic<bool>& stop) {
   run_start_ = Clock::now();
-  last_progress_ = run_start_;
   state_ = run_status_t::WAITING_FOR_AGENTS;
   PublishStep(true);
   step_published_ = last_resend_ = Clock::now();
@@ -308,6 +300,7 @@ RunOutcome SimNode::Run(const std::atomic<bool>& stop) {
         state_ = run_status_t::RUNNING;
         spdlog::info("all {} robots have agents; running ({})", world_.num_robots(), WorldModeName(options_.mode));
         next_realtime_step = now;
+        if (progress_ != nullptr) progress_->Start(options_.max_steps, world_.step(), now);
         // Agents answered step 0; in real time their answer is the latest command.
       } else if (SecondsBetween(step_published_, now) > options_.start_timeout_s) {
         std::vector<int> missing;
@@ -346,7 +339,7 @@ RunOutcome SimNode::Run(const std::atomic<bool>& stop) {
         }
         PublishStep(true);
         step_published_ = last_resend_ = Clock::now();
-        ReportProgress(step_published_);
+        if (progress_ != nullptr) progress_->Update(world_.step(), step_published_);
         continue;
       }
     }

@@ -11,7 +11,7 @@ namespace dream::bridge {
 /// so a reader sees the old file or the new one, never half of one.
 class OutputFolder {
  public:
-  /// Creates `dir` (and its parents) if missing.
+  /// Creates `dir` if missing; its parent folder must exist.
   /// @throws std::runtime_error naming the folder.
   explicit OutputFolder(std::string dir);
 

@@ -8,18 +8,25 @@
 #include "dream/agents/experiment_builder.h"
 #include "dream/agents/robot_agent.h"
 #include "dream/config/config_node.h"
+#include "dream/config/run_config.h"
 
 namespace dream::agents {
 
 /// Builds every robot's agent, and the experiment's metrics, from the
-/// `controller:` section of a run config. `kind` picks the experiment; the
-/// common keys (robot, sensors, radio) pick the parts. To add an experiment,
-/// write an ExperimentBuilder and register its kind in controller_factory.cc
-/// (see docs/writing-a-controller.md).
+/// `controller:` section of a run config. `kind` picks the experiment from
+/// ControllerRegistry::Global(); the common keys (robot, sensors, radio) pick
+/// the parts. To add an experiment, write an ExperimentBuilder and register
+/// its kind: built in (controller_registry.cc) or from a plugin that the
+/// config names (see docs/writing-a-controller.md).
 class ControllerFactory {
  public:
   /// Kinds this factory knows, for error messages and --help.
   static std::vector<std::string> Kinds();
+
+  /// The factory of a whole run config: loads the plugins it names
+  /// (ControllerPluginLoader), then reads its `controller:` section.
+  /// @throws config::ConfigError naming the key, and the plugin's path.
+  explicit ControllerFactory(const config::RunConfig& config);
 
   /// @param run_seed seeds every sensor's noise and radio loss.
   /// @throws config::ConfigError naming the key and value when the section is

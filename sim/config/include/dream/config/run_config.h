@@ -25,6 +25,11 @@ struct RunConfig {
   std::vector<sim::Pose2> initial_poses;
   std::vector<sim::RectangleObstacleSpec> obstacles;
   ConfigNode controller;         ///< the `controller:` section, read by the agents' factory
+  /// `plugins:` shared libraries that add controller kinds, as absolute
+  /// paths (relative ones are relative to `plugin_dir:`, by default the
+  /// config file's folder). The agents' factory loads them.
+  std::vector<std::string> plugins;
+  std::vector<ConfigNode> plugin_nodes;  ///< the `plugins:` entries, for errors naming them
 };
 
 /// Reads and checks a run config. @throws ConfigError naming file, line, key
@@ -33,5 +38,10 @@ RunConfig LoadRunConfig(const ConfigNode& root);
 
 /// LoadRunConfig(ConfigNode::LoadFile(path)).
 RunConfig LoadRunConfigFile(const std::string& path);
+
+/// The text to store as a run folder's config.yaml: `text` (the config's
+/// bytes) as is, or, when it names plugins by relative paths, with a
+/// `plugin_dir:` line appended so the copy finds the same plugins.
+std::string RunFolderConfigText(const RunConfig& config, const std::string& text);
 
 }  // namespace dream::config

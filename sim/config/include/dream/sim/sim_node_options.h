@@ -41,7 +41,9 @@ struct SimNodeOptions {
   /// warnings, as on the Robotarium.
   double max_abs_v_mps = 10.0;
   double max_abs_w_radps = 100.0;
-  /// Progress lines every this many wall seconds (0: never).
+  /// Progress lines every this many wall seconds when the output is not a
+  /// terminal (0: no progress at all). The CLI shows them through a
+  /// ProgressReporter (SimNode::set_progress_reporter); a terminal gets a bar.
   double progress_interval_s = 2.0;
 
   /// False with a message naming the field, its value and the allowed range.

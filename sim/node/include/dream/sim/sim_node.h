@@ -20,6 +20,7 @@ class velocity_command_t;
 
 namespace dream::sim {
 
+class ProgressReporter;
 class RunRecorder;
 
 /// A world on the bus: publishes it, consumes commands, records the run. The
@@ -49,6 +50,11 @@ class SimNode {
   /// Sets no signal handlers: the caller sets `stop` (e.g. from SIGINT).
   RunOutcome Run(const std::atomic<bool>& stop);
 
+  /// Shows the run's progress (steps/s, ETA to max_steps) on `reporter` from
+  /// the first step on; null (the default): no progress output. Must outlive
+  /// Run().
+  void set_progress_reporter(ProgressReporter* reporter) { progress_ = reporter; }
+
  private:
   using Clock = std::chrono::steady_clock;
 
@@ -73,7 +79,6 @@ class SimNode {
   bool AllLiveAnswered() const;
   void MarkSilentRobotsLost(Clock::time_point now);
   void AdvanceWorld();
-  void ReportProgress(Clock::time_point now);
   RunOutcome Finish(RunOutcome::End end, const std::string& reason);
   int64_t SimUtime() const;
 
@@ -90,8 +95,7 @@ class SimNode {
   Clock::time_point run_start_;
   Clock::time_point step_published_;
   Clock::time_point last_resend_;
-  Clock::time_point last_progress_;
-  int64_t last_progress_step_ = 0;
+  ProgressReporter* progress_ = nullptr;
 };
 
 }  // namespace dream::sim

@@ -1,0 +1,124 @@
+#include "config_override.h"
+
+#include <stdexcept>
+#include <vector>
+
+namespace dream::cli {
+namespace {
+
+std::vector<std::string> SplitKey(const std::string& dotted_key) {
+  std::vector<std::string> parts;
+  size_t start = 0;
+  while (true) {
+    const size_t dot = dotted_key.find('.', start);
+    parts.push_back(dotted_key.substr(start, dot == std::string::npos ? std::string::npos : dot - start));
+    if (dot == std::string::npos) return parts;
+    start = dot + 1;
+  }
+}
+
+std::string KeysOf(const YAML::Node& map) {
+  std::string keys;
+  for (const auto& entry : map) keys += (keys.empty() ? "" : ", ") + entry.first.as<std::string>();
+  return keys.empty() ? "none" : keys;
+}
+
+bool IsIndex(const std::string& part) {
+  return !part.empty() && part.size() < 10 && part.find_first_not_of("0123456789") == std::string::npos;
+}
+
+// A copy of `value` made of new nodes: they carry no line of their own, so an
+// error inside them names the key without pointing at an unrelated line.
+YAML::Node FreshCopy(const YAML::Node& value) {
+  switch (value.Type()) {
+    case YAML::NodeType::Sequence: {
+      YAML::Node copy(YAML::NodeType::Sequence);
+      for (const YAML::Node& item : value) copy.push_back(FreshCopy(item));
+      copy.SetStyle(YAML::EmitterStyle::Flow);
+      return copy;
+    }
+    case YAML::NodeType::Map: {
+      YAML::Node copy(YAML::NodeType::Map);
+      for (const auto& entry : value) copy[entry.first.as<std::string>()] = FreshCopy(entry.second);
+      copy.SetStyle(YAML::EmitterStyle::Flow);
+      return copy;
+    }
+    case YAML::NodeType::Scalar:
+      return YAML::Node(value.Scalar());
+    default:
+      return YAML::Node(YAML::NodeType::Null);
+  }
+}
+
+// Replaces what `target` holds without rebinding it, so it keeps its place
+// (and its line) in the document.
+void AssignInPlace(YAML::Node target, const YAML::Node& value) {
+  switch (value.Type()) {
+    case YAML::NodeType::Scalar:
+      target = value.Scalar();
+      return;
+    case YAML::NodeType::Sequence:
+      target = YAML::Null;
+      for (const YAML::Node& item : value) target.push_back(FreshCopy(item));
+      target.SetStyle(YAML::EmitterStyle::Flow);
+      return;
+    case YAML::NodeType::Map:
+      target = YAML::Null;
+      for (const auto& entry : value) target[entry.first.as<std::string>()] = FreshCopy(entry.second);
+      target.SetStyle(YAML::EmitterStyle::Flow);
+      return;
+    default:
+      target = YAML::Null;
+  }
+}
+
+}  // namespace
+
+void ApplyConfigOverride(YAML::Node root, const std::string& dotted_key, const std::string& value_text,
+                         const std::string& source_name) {
+  const std::string option = "--set " + dotted_key;
+  YAML::Node value;
+  try {
+    value = YAML::Load(value_text);
+  } catch (const YAML::Exception& e) {
+    throw std::invalid_argument(option + ": value '" + value_text + "' is not valid YAML: " + e.msg);
+  }
+
+  const std::vector<std::string> parts = SplitKey(dotted_key);
+  YAML::Node node = root;
+  std::string path;  // the parts walked so far, for messages
+  for (size_t i = 0; i < parts.size(); ++i) {
+    const std::string& part = parts[i];
+    const bool last = i + 1 == parts.size();
+    const std::string where = path.empty() ? "at the top level" : "under " + path;
+    if (part.empty()) throw std::invalid_argument(option + ": empty part in the key");
+    if (node.IsSequence()) {
+      if (!IsIndex(part)) {
+        throw std::invalid_argument(option + ": " + path + " is a list in " + source_name +
+                                    "; the next part must be an index 0.." + std::to_string(node.size() - 1) +
+                                    ", got '" + part + "'");
+      }
+      const size_t index = std::stoul(part);
+      if (index >= node.size()) {
+        throw std::invalid_argument(option + ": " + path + " has " + std::to_string(node.size()) + " items in " +
+                                    source_name + ", no index " + part);
+      }
+      node.reset(node[index]);  // rebind; Node::operator= would overwrite the document's node
+    } else if (node.IsMap()) {
+      const YAML::Node& read_only = node;
+      const bool exists = read_only[part].IsDefined();
+      if (!exists && !last) {
+        throw std::invalid_argument(option + ": " + source_name + " has no key '" + part + "' " + where +
+                                    " (keys there: " + KeysOf(node) + ")");
+      }
+      node.reset(node[part]);
+    } else {
+      throw std::invalid_argument(option + ": " + path + " is a single value in " + source_name + ", it has no '" +
+                                  part + "'");
+    }
+    path += (path.empty() ? "" : ".") + part;
+  }
+  AssignInPlace(node, value);
+}
+
+}  // namespace dream::cli

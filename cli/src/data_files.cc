@@ -1,0 +1,32 @@
+#include "data_files.h"
+
+#include <filesystem>
+
+#include "process_group.h"
+
+#if !defined(DREAM_BUILD_DIR) || !defined(DREAM_BIN_TO_DATA) || !defined(DREAM_BUILD_TYPES_JAR) || \
+    !defined(DREAM_BRIDGE_PYTHON_DIR)
+#error "cli/CMakeLists.txt defines where the build tree and the installed data files are"
+#endif
+
+namespace dream::cli {
+
+namespace fs = std::filesystem;
+
+bool DataFiles::RunningFromBuildTree() {
+  std::error_code error;
+  return fs::equivalent(fs::path(SelfExecutable()).parent_path(), DREAM_BUILD_DIR, error);
+}
+
+std::string DataFiles::Locate(const std::string& installed_relative_path, const std::string& build_tree_path) {
+  if (RunningFromBuildTree()) return build_tree_path;
+  return (fs::path(SelfExecutable()).parent_path() / DREAM_BIN_TO_DATA / installed_relative_path)
+      .lexically_normal()
+      .string();
+}
+
+std::string DataFiles::TypesJar() { return Locate("java/dream_lcmtypes.jar", DREAM_BUILD_TYPES_JAR); }
+
+std::string DataFiles::BridgePythonDir() { return Locate("bridge", DREAM_BRIDGE_PYTHON_DIR); }
+
+}  // namespace dream::cli

@@ -1,0 +1,25 @@
+#pragma once
+
+#include <string>
+
+namespace dream::cli {
+
+/// Files the dream tool needs at run time besides the libraries: the Java
+/// types jar (dream spy) and the bridge's Python runner (dream
+/// check-submission). A tool in the build tree it was built in uses the build
+/// and source trees' files; an installed tool those under
+/// <prefix>/share/dream, found relative to its own location so the prefix
+/// can move. Paths are returned whether or not the file exists.
+class DataFiles {
+ public:
+  static std::string TypesJar();
+  /// The folder of run_submission.py and the stand-in simulator.
+  static std::string BridgePythonDir();
+  /// True when the running executable is the one in its build tree.
+  static bool RunningFromBuildTree();
+
+ private:
+  static std::string Locate(const std::string& installed_relative_path, const std::string& build_tree_path);
+};
+
+}  // namespace dream::cli

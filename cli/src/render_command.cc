@@ -1,0 +1,238 @@
+// dream render: pictures, videos and metric plots of a recorded run
+// (docs/rendering.md).
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <stdexcept>
+
+#include "commands.h"
+#include "dream/config/run_config.h"
+#include "dream/sim/ffmpeg_encoder.h"
+#include "dream/sim/metric_plot.h"
+#include "dream/sim/render_format.h"
+#include "dream/sim/robotarium_constants.h"
+#include "dream/sim/run_animation.h"
+#include "dream/sim/run_track.h"
+#include "dream/sim/trajectory_picture.h"
+#include "render_overlays.h"
+
+namespace dream::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A failure of the command line itself (exit 2), as opposed to its inputs (exit 1).
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// The log to draw: RUN_OR_LOG itself, or run.lcmlog in a run folder.
+fs::path LogOf(const std::string& run_or_log) {
+  const fs::path path(run_or_log);
+  if (fs::is_directory(path)) {
+    if (!fs::is_regular_file(path / "run.lcmlog")) {
+      throw std::runtime_error(run_or_log + ": no run.lcmlog in this folder (is it a run folder?)");
+    }
+    return path / "run.lcmlog";
+  }
+  if (!fs::exists(path)) throw std::runtime_error(run_or_log + ": no such run folder or log file");
+  return path;
+}
+
+enum class Kind { kPicture, kVideo, kPlot };
+
+/// The default output beside the log: trajectories.svg, run.mp4 or
+/// metrics.png; for a log not called run.lcmlog, its name before them
+/// (lab1.lcmlog -> lab1_trajectories.svg, lab1.mp4, lab1_metrics.png).
+fs::path DefaultOutput(const fs::path& log, Kind kind) {
+  const bool run_log = log.filename() == "run.lcmlog";
+  const std::string stem = log.stem().string();
+  switch (kind) {
+    case Kind::kVideo: return log.parent_path() / (run_log ? "run.mp4" : stem + ".mp4");
+    case Kind::kPlot: return log.parent_path() / (run_log ? "metrics.png" : stem + "_metrics.png");
+    case Kind::kPicture: break;
+  }
+  return log.parent_path() / (run_log ? "trajectories.svg" : stem + "_trajectories.svg");
+}
+
+Kind KindOf(const RenderArgs& args) {
+  const bool plot = args.plot || !args.metrics.empty();
+  if (plot && args.video) throw UsageError("--plot/--metric and --video: pick one");
+  if (args.out.empty()) return plot ? Kind::kPlot : args.video ? Kind::kVideo : Kind::kPicture;
+  const std::optional<sim::RenderFormat> format = sim::RenderFormatOfPath(args.out);
+  if (!format) {
+    throw UsageError("--out " + args.out + ": unknown extension '" + fs::path(args.out).extension().string() +
+                     "'; allowed: " + sim::RenderFormatExtensions());
+  }
+  if (sim::IsPictureFormat(*format)) {
+    if (args.video) throw UsageError("--video needs an --out ending in .mp4 or .gif, got " + args.out);
+    return plot ? Kind::kPlot : Kind::kPicture;
+  }
+  if (plot) throw UsageError("--plot/--metric draw a .png or .svg, got --out " + args.out);
+  return Kind::kVideo;
+}
+
+/// The run's config: --config, else config.yaml beside the log when there.
+/// A broken config.yaml beside the log is only a warning unless `needed`.
+std::optional<config::RunConfig> LoadConfig(const RenderArgs& args, const fs::path& log, bool needed) {
+  if (!args.config_path.empty()) return config::LoadRunConfigFile(args.config_path);
+  const fs::path beside = log.parent_path() / "config.yaml";
+  if (!fs::is_regular_file(beside)) return std::nullopt;
+  try {
+    return config::LoadRunConfigFile(beside.string());
+  } catch (const std::exception& e) {
+    if (needed) throw;
+    spdlog::warn("drawing without the config's goals: {}", e.what());
+    return std::nullopt;
+  }
+}
+
+sim::ArenaOverlays Overlays(const RenderArgs& args, const fs::path& log) {
+  const bool needed = args.radio_links || args.sensor_ranges;
+  const std::optional<config::RunConfig> config = LoadConfig(args, log, needed);
+  if (!config) {
+    if (needed) {
+      throw std::runtime_error(std::string(args.radio_links ? "--radio-links" : "--sensor-ranges") +
+                               " needs the run's config: no config.yaml beside " + log.string() + " (give --config FILE)");
+    }
+    return {};
+  }
+  sim::ArenaOverlays overlays;
+  try {
+    overlays = ArenaOverlaysFromConfig(*config);
+  } catch (const std::exception& e) {
+    // Goals are a nicety: without them the log still draws the run.
+    if (needed || !args.config_path.empty()) throw;
+    spdlog::warn("drawing without the config's goals: {}", e.what());
+    return {};
+  }
+  if (args.radio_links && !overlays.hears) {
+    throw std::runtime_error("--radio-links: the robots of " + config->source + " have no radio (controller.radio)");
+  }
+  if (args.sensor_ranges && overlays.sensor_reaches.empty()) {
+    throw std::runtime_error("--sensor-ranges: the robots of " + config->source +
+                             " have no movement or obstacle sensor (controller.sensors)");
+  }
+  overlays.draw_radio_links = args.radio_links;
+  overlays.draw_sensor_ranges = args.sensor_ranges;
+  return overlays;
+}
+
+/// summary.json's metric series ({"name": [[step, value], ...]}) beside the
+/// log, then the closest approach computed from the log's poses.
+std::vector<sim::MetricSeries> MetricSeriesOf(const fs::path& log, const sim::RunTrack& track, std::string* title) {
+  std::vector<sim::MetricSeries> series;
+  const fs::path summary_path = log.parent_path() / "summary.json";
+  *title = log.string();
+  if (fs::is_regular_file(summary_path)) {
+    std::ifstream in(summary_path);
+    const nlohmann::json summary = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+    if (summary.is_discarded()) throw std::runtime_error(summary_path.string() + ": not valid JSON");
+    if (summary.contains("run") && summary["run"].is_string()) *title = summary["run"].get<std::string>();
+    if (summary.contains("metrics") && summary["metrics"].is_object()) {
+      for (const auto& [name, value] : summary["metrics"].items()) {
+        if (!value.is_array() || value.empty()) continue;
+        sim::MetricSeries s;
+        s.name = name;
+        for (const auto& point : value) {
+          if (!point.is_array() || point.size() != 2 || !point[0].is_number() || !point[1].is_number()) break;
+          s.points.push_back({point[0].get<double>(), point[1].get<double>()});
+        }
+        if (s.points.size() == value.size()) series.push_back(std::move(s));
+      }
+    }
+  }
+  sim::MetricSeries closest;
+  closest.name = "min_distance_m";
+  closest.points = track.MinimumDistanceSeries();
+  closest.limit = sim::RobotariumConstants::kCollisionDiameterMeters;
+  closest.limit_label = "collision distance 0.135 m";
+  if (!closest.points.empty()) series.push_back(std::move(closest));
+  return series;
+}
+
+std::vector<sim::MetricSeries> PickMetrics(std::vector<sim::MetricSeries> all, const std::vector<std::string>& names,
+                                           const fs::path& log) {
+  std::string available;
+  for (const sim::MetricSeries& s : all) available += (available.empty() ? "" : ", ") + s.name;
+  if (all.empty()) throw std::runtime_error(log.string() + ": no metric series to plot (a single robot, no summary.json)");
+  if (names.empty()) return all;
+  std::vector<sim::MetricSeries> picked;
+  for (const std::string& name : names) {
+    auto found = std::find_if(all.begin(), all.end(), [&](const sim::MetricSeries& s) { return s.name == name; });
+    if (found == all.end()) throw std::runtime_error("--metric " + name + ": not a series of this run; it has: " + available);
+    picked.push_back(*found);
+  }
+  return picked;
+}
+
+void CheckOutputFolder(const fs::path& out) {
+  const fs::path folder = out.has_parent_path() ? out.parent_path() : fs::path(".");
+  if (!fs::is_directory(folder)) {
+    throw std::runtime_error("--out " + out.string() + ": the folder " + folder.string() + " does not exist");
+  }
+}
+
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+int RunRender(const RenderArgs& args) {
+  const auto start = std::chrono::steady_clock::now();
+  Kind kind;
+  try {
+    kind = KindOf(args);
+  } catch (const UsageError& e) {
+    std::cerr << "dream: " << e.what() << " (dream render --help)\n";
+    return kExitUsage;
+  }
+  const fs::path log = LogOf(args.input);
+  const fs::path out = args.out.empty() ? DefaultOutput(log, kind) : fs::path(args.out);
+  const sim::RenderFormat format = *sim::RenderFormatOfPath(out.string());
+  CheckOutputFolder(out);
+
+  const sim::RunTrack track = sim::RunTrack::Read(log.string());
+  if (kind == Kind::kPlot) {
+    std::string title;
+    const std::vector<sim::MetricSeries> series = PickMetrics(MetricSeriesOf(log, track, &title), args.metrics, log);
+    sim::MetricPlot::Render(series, title, out.string(), format, args.width_px > 0 ? args.width_px : 1000);
+    std::cout << "plot:    " << out.string() << " (" << series.size() << " series)\n";
+    return kExitOk;
+  }
+  const sim::ArenaOverlays overlays = Overlays(args, log);
+  if (kind == Kind::kPicture) {
+    sim::TrajectoryPicture::Render(track, overlays, out.string(), format, args.width_px > 0 ? args.width_px : 1280);
+    std::cout << "picture: " << out.string() << " (" << track.num_robots() << " robots, " << track.poses().size()
+              << " steps, " << SecondsSince(start) << " s)\n";
+    return kExitOk;
+  }
+
+  if (!sim::FfmpegEncoder::IsInstalled()) throw std::runtime_error(sim::FfmpegEncoder::NotInstalledMessage());
+  const bool gif = format == sim::RenderFormat::kGif;
+  sim::AnimationOptions options;
+  options.width_px = args.width_px > 0 ? args.width_px : gif ? 480 : 720;
+  options.fps = args.fps > 0 ? args.fps : gif ? 15 : 30;
+  options.speed = args.speed;
+  options.trail_s = args.trail_s;
+  sim::RunAnimation animation(track, overlays, options);
+  spdlog::info("rendering {} frames ({:.1f} s of video at {} fps) to {}", animation.frame_count(),
+               animation.duration_s(), options.fps, out.string());
+  if (!animation.Write(out.string(), format, [] { return StopFlag().load(); })) {
+    std::cerr << "dream: interrupted; " << out.string() << " not written\n";
+    return kExitInterrupted;
+  }
+  std::cout << "video:   " << out.string() << " (" << animation.frame_count() << " frames, " << animation.duration_s()
+            << " s at " << options.fps << " fps, " << animation.layout().width_px() << "x"
+            << animation.layout().height_px() << ", " << SecondsSince(start) << " s)\n";
+  return kExitOk;
+}
+
+}  // namespace dream::cli

@@ -1,0 +1,104 @@
+#include "render_overlays.h"
+
+#include <memory>
+#include <vector>
+
+#include "dream/agents/affine_formation_builder.h"
+#include "dream/agents/affine_maneuver.h"
+#include "dream/agents/agent_parts_config.h"
+#include "dream/agents/controller_plugin_loader.h"
+#include "dream/agents/controller_registry.h"
+#include "dream/agents/go_to_goal_builder.h"
+#include "dream/agents/hrvo_circle_builder.h"
+#include "dream/agents/world_snapshot.h"
+
+namespace dream::cli {
+namespace {
+
+using Points = std::vector<std::array<double, 2>>;
+
+// A robot with no control law: only there so the parts' own MakeSpec builds
+// its radio, exactly as in a run.
+class RadioHolder final : public agents::Robot {
+ public:
+  using agents::Robot::Robot;
+  agents::UnicycleCommand Update(int64_t) override { return {}; }
+};
+
+std::vector<Points> GoalsOf(const std::string& kind, const config::ConfigNode& section, int num_robots) {
+  std::vector<Points> goals;
+  if (kind == agents::GoToGoalBuilder::kKind) {
+    const config::ConfigNode list = section.Required("goals");
+    for (size_t i = 0; i < list.size(); ++i) {
+      const std::vector<double> xy = list[i].AsDoubles();
+      goals.push_back({{xy.at(0), xy.at(1)}});
+    }
+  } else if (kind == agents::HrvoCircleBuilder::kKind) {
+    const agents::HrvoCircleBuilder builder(section, num_robots);
+    goals.resize(static_cast<size_t>(num_robots));
+    for (const auto& formation : builder.formations()) {
+      for (size_t i = 0; i < formation.size() && i < goals.size(); ++i) goals[i].push_back({formation[i].x(), formation[i].y()});
+    }
+  } else if (kind == agents::AffineFormationBuilder::kKind) {
+    const agents::AffineFormationBuilder builder(section, num_robots);
+    const agents::AffineManeuver maneuver(builder.maneuver());
+    for (const Eigen::Vector2d& nominal : builder.formation().nominal_m()) {
+      const Eigen::Vector2d target = maneuver.Target(nominal, static_cast<double>(maneuver.last_step()));
+      goals.push_back({{target.x(), target.y()}});
+    }
+  }
+  return goals;
+}
+
+std::vector<sim::SensorReach> SensorReachesOf(const agents::AgentPartsConfig& parts) {
+  std::vector<sim::SensorReach> reaches;
+  for (const agents::SensorConfig& sensor : parts.sensors) {
+    if (sensor.kind == agents::SensorConfig::Kind::kMovement) {
+      reaches.push_back({sensor.movement.range_m, sensor.movement.direction_rad, sensor.movement.field_of_view_rad});
+    } else if (sensor.kind == agents::SensorConfig::Kind::kObstacle) {
+      reaches.push_back({sensor.obstacle.range_m});
+    }
+  }
+  return reaches;
+}
+
+sim::ArenaOverlays::RadioHearing HearingOf(const agents::AgentPartsConfig& parts, int num_robots, uint64_t seed) {
+  if (parts.radio.kind == agents::RadioConfig::Kind::kNone) return {};
+  auto radios = std::make_shared<std::vector<std::unique_ptr<agents::Radio>>>();
+  for (int id = 0; id < num_robots; ++id) {
+    radios->push_back(parts.MakeSpec(std::make_unique<RadioHolder>(id, parts.robot), seed).radio);
+  }
+  // Radios judge a WorldSnapshot; build it once per step, not once per pair.
+  auto world = std::make_shared<agents::WorldSnapshot>();
+  world->step = -1;
+  return [radios, world](int receiver, int sender, const robot_poses_t& poses) {
+    if (receiver < 0 || receiver >= static_cast<int>(radios->size()) || !(*radios)[static_cast<size_t>(receiver)]) {
+      return false;
+    }
+    if (world->step != poses.step || world->num_robots() != poses.num_robots) {
+      world->step = poses.step;
+      world->poses.clear();
+      for (size_t k = 0; k < poses.x.size(); ++k) world->poses.emplace_back(poses.x[k], poses.y[k], poses.theta[k]);
+    }
+    return (*radios)[static_cast<size_t>(receiver)]->CanHear(receiver, sender, *world);
+  };
+}
+
+}  // namespace
+
+sim::ArenaOverlays ArenaOverlaysFromConfig(const config::RunConfig& config) {
+  agents::ControllerPluginLoader::LoadAll(config);
+  const config::ConfigNode& section = config.controller;
+  const std::string kind = section.Required("kind").AsString();
+  const agents::ControllerKind* entry = agents::ControllerRegistry::Global().Find(kind);
+  if (entry == nullptr) section.Required("kind").Fail("unknown controller kind '" + kind + "'");
+  const agents::AgentPartsConfig parts = agents::AgentPartsConfig::Read(
+      section, config.num_robots, entry->default_parts(config.num_robots), entry->graph_must_connect);
+  sim::ArenaOverlays overlays;
+  overlays.goals_m = GoalsOf(kind, section, config.num_robots);
+  overlays.sensor_reaches = SensorReachesOf(parts);
+  overlays.hears = HearingOf(parts, config.num_robots, config.seed);
+  return overlays;
+}
+
+}  // namespace dream::cli

@@ -1,0 +1,19 @@
+#pragma once
+
+#include "dream/config/run_config.h"
+#include "dream/sim/arena_overlays.h"
+
+namespace dream::cli {
+
+/// What a run's config adds to its pictures (sim::ArenaOverlays), read with
+/// the agents' own code so a picture shows what the robots had:
+///  - goals: go_to_goal's `goals`, hrvo_circle's points of every formation,
+///    affine_formation's targets at the end of the maneuver (other kinds have none);
+///  - sensor reaches: the movement and obstacle sensors of the robots' parts
+///    (the experiment's defaults unless the config overrides them);
+///  - who hears whom: each robot's radio (range, graph or role) deciding as
+///    it does in a run.
+/// The draw_* flags are left off. @throws config::ConfigError naming the key.
+sim::ArenaOverlays ArenaOverlaysFromConfig(const config::RunConfig& config);
+
+}  // namespace dream::cli

@@ -1,0 +1,239 @@
+// dream sweep: one experiment over many seeds and parameter values, one
+// `dream run` process per run, as many at once as there are cores, and one
+// table of outcomes (docs/sweeps.md).
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+#include "commands.h"
+#include "config_override.h"
+#include "dream/agents/controller_factory.h"
+#include "dream/config/run_config.h"
+#include "dream/sim/atomic_file.h"
+#include "parallel_runner.h"
+#include "process_group.h"
+#include "run_output.h"
+#include "seed_list.h"
+#include "sweep_plan.h"
+#include "sweep_run_result.h"
+#include "sweep_table.h"
+
+namespace dream::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+/// A stopped run gets this long to write its log and summary before SIGKILL.
+constexpr double kGraceAfterInterruptS = 10.0;
+
+std::string ReadBaseConfig(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw config::ConfigError(path + ": cannot open the config file (does it exist and is it readable?)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// What `dream run` checks before it starts (LoadConfig): the run config and
+/// the controller section. @throws config::ConfigError.
+void CheckRunConfig(const config::ConfigNode& root) {
+  const config::RunConfig config = config::LoadRunConfig(root);
+  const agents::ControllerFactory factory(config);  // also loads the plugins the config names
+}
+
+/// The sweep's output folder: created if missing, its parent must exist.
+void PrepareSweepDir(const std::string& out_dir) {
+  const fs::path out(out_dir);
+  const fs::path parent = out.has_parent_path() ? out.parent_path() : fs::path(".");
+  if (!fs::is_directory(parent)) {
+    throw std::runtime_error("--out " + out_dir + ": its parent folder " + parent.string() + " does not exist");
+  }
+  std::error_code error;
+  fs::create_directory(out, error);
+  if (!error) fs::create_directory(out / "runs", error);
+  if (error || !fs::is_directory(out / "runs")) {
+    throw std::runtime_error("cannot create the sweep folder " + (out / "runs").string() +
+                             (error ? ": " + error.message() : std::string()));
+  }
+}
+
+/// The last line of a run's output that says what went wrong, for the table.
+std::string LastErrorLine(const std::string& output_path) {
+  std::ifstream in(output_path);
+  std::string line;
+  std::string last;
+  std::string last_error;
+  while (std::getline(in, line)) {
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    last = line;
+    if (line.find("[error]") != std::string::npos || line.rfind("dream:", 0) == 0) last_error = line;
+  }
+  std::string chosen = last_error.empty() ? last : last_error;
+  // Drop spdlog's "[12:00:00.000] [error] " prefix.
+  const size_t bracket = chosen.find("] ", chosen.find("] ") + 2);
+  if (chosen.rfind("[", 0) == 0 && bracket != std::string::npos) chosen = chosen.substr(bracket + 2);
+  return chosen.size() > 160 ? chosen.substr(0, 157) + "..." : chosen;
+}
+
+nlohmann::json ReadSummary(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return nullptr;
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception&) {
+    return nullptr;
+  }
+}
+
+std::string Seconds(double seconds) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.1f s", seconds);
+  return text;
+}
+
+/// The command line that reproduces this sweep (for sweep.md).
+std::string CommandLine(const SweepArgs& args, const std::string& seeds, int jobs) {
+  auto quoted = [](const std::string& text) {
+    return text.find_first_of(" \t'\"$[]{}*?;&|<>()\\") == std::string::npos ? text : "'" + text + "'";
+  };
+  std::string line = "dream sweep " + quoted(args.config_path) + " --seeds " + seeds;
+  for (const std::string& set : args.sets) line += " --set " + quoted(set);
+  line += " --jobs " + std::to_string(jobs);
+  if (args.steps > 0) line += " --steps " + std::to_string(args.steps);
+  return line + " --out " + quoted(args.out_dir);
+}
+
+}  // namespace
+
+int RunSweep(const SweepArgs& args) {
+  // --- everything checked before anything is written or started ---
+  const std::string base_text = ReadBaseConfig(args.config_path);
+  RunArgs base_args;
+  base_args.config_path = args.config_path;
+  base_args.steps = args.steps;
+  const config::RunConfig base = LoadConfig(base_args);  // the base config's own mistakes, with its lines
+
+  std::vector<uint64_t> seeds;
+  try {
+    seeds = args.seeds.empty() ? std::vector<uint64_t>{base.seed} : ParseSeedList(args.seeds);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("--seeds " + args.seeds + ": " + e.what());
+  }
+  std::vector<SweepParameter> parameters;
+  for (const std::string& set : args.sets) parameters.push_back(SweepParameter::Parse(set));
+  for (const SweepParameter& parameter : parameters) {
+    if (parameter.key == "steps" && args.steps > 0) {
+      throw std::invalid_argument("--steps and --set steps=... both set the step limit; give one");
+    }
+  }
+  const SweepPlan plan(seeds, parameters);
+  const std::vector<SweepPlan::Run>& runs = plan.runs();
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int jobs = args.jobs > 0 ? args.jobs : cores;
+  if (args.run_timeout_s <= 0.0) throw std::invalid_argument("--timeout must be > 0");
+
+  const fs::path out(args.out_dir);
+  std::vector<std::string> config_texts;
+  for (const SweepPlan::Run& run : runs) {
+    YAML::Node root = SweepPlan::MakeRunConfig(base_text, args.config_path, run);
+    // In the file, not on dream run's command line: the run folder's config alone repeats the run.
+    if (args.steps > 0) ApplyConfigOverride(root, "steps", std::to_string(args.steps), args.config_path);
+    const std::string where = "run " + run.name + " (" + run.Label() + "): ";
+    // Checked in memory against the base file, so an error points at the
+    // key's line there; then the file as written, as `dream run` will read it.
+    try {
+      CheckRunConfig(config::ConfigNode(root, args.config_path, ""));
+    } catch (const config::ConfigError& e) {
+      throw config::ConfigError(where + e.what());
+    }
+    const fs::path run_config = out / "runs" / run.name / "config.yaml";
+    const std::string text = SweepPlan::EmitConfig(
+        root, "Generated by dream sweep from " + args.config_path + ": " + run.Label() + ".\nRun again: dream run " +
+                  run_config.string() + " --out " + (out / "runs" / run.name).string());
+    try {
+      CheckRunConfig(config::ConfigNode::LoadString(text, run_config.string()));
+    } catch (const config::ConfigError& e) {
+      throw config::ConfigError(where + "the generated config: " + e.what());
+    }
+    config_texts.push_back(text);
+  }
+  PrepareSweepDir(args.out_dir);
+
+  // --- the runs, `jobs` at a time ---
+  const std::string self = SelfExecutable();
+  const bool progress = spdlog::default_logger()->should_log(spdlog::level::info);
+  spdlog::info(
+      "sweep: {} runs of {} ({} seeds{}), {} at a time on {} cores -> {}", runs.size(), base.name, seeds.size(),
+      parameters.empty() ? std::string() : " x " + std::to_string(runs.size() / seeds.size()) + " parameter sets", jobs,
+      cores, args.out_dir);
+  SweepTable table(plan.parameter_keys(), runs.size());
+  size_t finished = 0;
+  const Clock::time_point sweep_started = Clock::now();
+
+  auto prepare = [&](size_t index) {
+    const fs::path run_dir = out / "runs" / runs[index].name;
+    std::error_code error;
+    fs::create_directory(run_dir, error);
+    // A folder left by an earlier sweep: its outputs must not pass for this run's.
+    for (const char* stale : {"summary.json", "run.lcmlog", "trajectories.png", "output.txt"}) {
+      fs::remove(run_dir / stale, error);
+    }
+    sim::WriteFileAtomically((run_dir / "config.yaml").string(), config_texts[index]);
+    return ParallelRunner::Job{{self, "run", (run_dir / "config.yaml").string(), "--out", run_dir.string()},
+                               (run_dir / "output.txt").string()};
+  };
+  auto on_finished = [&](const ParallelRunner::Finished& done) {
+    const SweepPlan::Run& run = runs[done.index];
+    const fs::path run_dir = out / "runs" / run.name;
+    if (done.timed_out)
+      spdlog::warn("{}: still running after {:.0f} s (--timeout); stopped", run.Label(), args.run_timeout_s);
+    const bool failed = done.exit_code != 0 && done.exit_code != 3 && done.exit_code != 130;
+    const std::string hint = !done.start_error.empty() ? "could not start: " + done.start_error
+                             : failed                  ? LastErrorLine((run_dir / "output.txt").string())
+                                                       : std::string();
+    SweepRunResult result = SweepRunResult::Judge(run, done.exit_code, done.timed_out, done.wall_time_s,
+                                                  ReadSummary((run_dir / "summary.json").string()), hint);
+    ++finished;
+    if (progress) {
+      std::string line = "[" + std::to_string(finished) + "/" + std::to_string(runs.size()) + "] " + run.Label() +
+                         ": " + result.OutcomeText();
+      if (result.status == SweepRunResult::Status::kRan) line += ", " + std::to_string(result.steps) + " steps";
+      std::cout << line << std::endl;
+    }
+    table.Add(std::move(result));
+  };
+  ParallelRunner runner(jobs, args.run_timeout_s, kGraceAfterInterruptS);
+  const bool stopping = !runner.Run(runs.size(), StopFlag(), prepare, on_finished);
+  if (stopping) spdlog::warn("sweep interrupted: {} of {} runs ended, the rest never started", finished, runs.size());
+  const double wall_s = std::chrono::duration<double>(Clock::now() - sweep_started).count();
+
+  // --- the table, also for an interrupted sweep (the runs that ended) ---
+  const std::string seeds_text = args.seeds.empty() ? std::to_string(base.seed) : args.seeds;
+  const std::vector<std::pair<std::string, std::string>> facts = {
+      {"command", CommandLine(args, seeds_text, jobs)},
+      {"runs in parallel", std::to_string(jobs) + " (" + std::to_string(cores) + " cores)"},
+      {"wall time", Seconds(wall_s) + (stopping ? " (interrupted)" : "")},
+  };
+  const std::string csv_path = (out / "sweep.csv").string();
+  const std::string md_path = (out / "sweep.md").string();
+  sim::WriteFileAtomically(csv_path, table.Csv());
+  sim::WriteFileAtomically(md_path, table.Markdown("Sweep of " + base.name + " (" + args.config_path + ")", facts));
+  std::cout << "\n" << table.SummaryMarkdown(facts) << "\ntable: " << md_path << "\ncsv:   " << csv_path << "\n";
+
+  if (stopping) return kExitInterrupted;
+  const SweepSummary summary = table.Summary();
+  if (summary.failed > 0) {
+    spdlog::error("{} of {} runs failed to run (see the problem column of {})", summary.failed, runs.size(), md_path);
+    return kExitRunFailed;
+  }
+  return kExitOk;
+}
+
+}  // namespace dream::cli

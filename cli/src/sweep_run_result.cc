@@ -1,0 +1,92 @@
+#include "sweep_run_result.h"
+
+#include <cstdio>
+
+namespace dream::cli {
+namespace {
+
+long long Count(const nlohmann::json& object, const char* key) {
+  const auto it = object.find(key);
+  return it != object.end() && it->is_number() ? it->get<long long>() : 0;
+}
+
+std::string Text(const nlohmann::json& object, const char* key) {
+  const auto it = object.find(key);
+  return it != object.end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+
+}  // namespace
+
+SweepRunResult SweepRunResult::Judge(const SweepPlan::Run& run, int exit_code, bool timed_out, double wall_time_s,
+                                     const nlohmann::json& summary, const std::string& failure_hint) {
+  SweepRunResult result;
+  result.run = run;
+  result.exit_code = exit_code;
+  result.wall_time_s = wall_time_s;
+  result.has_summary = summary.is_object();
+  if (result.has_summary) {
+    result.end = Text(summary, "end");
+    result.verdict = Text(summary, "verdict");
+    result.steps = Count(summary, "steps");
+    const nlohmann::json violations = summary.contains("violations") ? summary["violations"] : nlohmann::json::object();
+    if (violations.is_object()) {
+      result.boundary_errors = Count(violations, "boundary_errors");
+      result.collision_errors = Count(violations, "collision_errors");
+      result.actuator_errors = Count(violations, "actuator_errors");
+      result.obstacle_collisions = Count(violations, "obstacle_collisions");
+    }
+    const nlohmann::json metrics = summary.contains("metrics") ? summary["metrics"] : nlohmann::json::object();
+    if (metrics.is_object() && metrics.contains("min_pairwise_distance_m") &&
+        metrics["min_pairwise_distance_m"].is_number()) {
+      result.min_distance_m = metrics["min_pairwise_distance_m"].get<double>();
+    }
+    result.goal = ExperimentGoal::Judge(summary);
+  }
+
+  const std::string hint = failure_hint.empty() ? std::string() : ": " + failure_hint;
+  if (timed_out) {
+    char seconds[32];
+    std::snprintf(seconds, sizeof(seconds), "%.0f", wall_time_s);
+    result.problem = std::string("timed out after ") + seconds + " s";
+  } else if (exit_code == 130) {
+    result.status = Status::kInterrupted;
+    result.problem = "interrupted";
+  } else if (exit_code < 0) {
+    result.problem = failure_hint.empty() ? std::string("did not start") : failure_hint;
+  } else if (exit_code != 0 && exit_code != 3) {
+    // dream run: 1 config, 4 did not finish; above 128 a signal killed it.
+    result.problem = (exit_code > 128 ? "killed by signal " + std::to_string(exit_code - 128)
+                                      : "exit " + std::to_string(exit_code)) +
+                     hint;
+  } else if (!result.has_summary) {
+    result.problem = "exit " + std::to_string(exit_code) + " but no readable summary.json";
+  } else if (result.end != "finished") {
+    result.problem = "run ended '" + result.end + "'" + hint;
+  } else {
+    result.status = Status::kRan;
+  }
+  result.success =
+      result.status == Status::kRan && result.verdict != "rejected" && result.collisions() == 0 && result.goal.met;
+  return result;
+}
+
+std::string SweepRunResult::OutcomeText() const {
+  if (status == Status::kInterrupted) return "interrupted";
+  if (status == Status::kFailed) return "failed to run (" + problem + ")";
+  if (success) return "success";
+  std::string why;
+  auto add = [&why](const std::string& part) { why += (why.empty() ? "" : "; ") + part; };
+  if (collision_errors > 0) add(std::to_string(collision_errors) + " collision errors");
+  if (obstacle_collisions > 0) add(std::to_string(obstacle_collisions) + " obstacle collisions");
+  if (boundary_errors > 0) add(std::to_string(boundary_errors) + " boundary errors");
+  if (verdict == "rejected" && why.empty()) add("rejected by the Robotarium checks");
+  if (!goal.met) add(goal.detail);
+  return "no success (" + why + ")";
+}
+
+std::string SweepRunResult::ShortOutcomeText() const {
+  if (status == Status::kRan) return success ? "success" : "no success";
+  return OutcomeText();
+}
+
+}  // namespace dream::cli

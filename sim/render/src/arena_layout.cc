@@ -1,0 +1,38 @@
+#include "dream/sim/arena_layout.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace dream::sim {
+namespace {
+
+constexpr double kReferenceWidthPx = 1280.0;  // ui_scale() == 1
+constexpr double kMarginPx = 30.0;            // at ui_scale 1
+constexpr double kCaptionLineSpacing = 1.45;  // line height / font size
+
+}  // namespace
+
+ArenaLayout::ArenaLayout(int width_px, int caption_lines, bool even_size)
+    : width_px_(width_px),
+      ui_scale_(width_px / kReferenceWidthPx),
+      margin_px_(std::round(kMarginPx * std::max(ui_scale_, 0.5))),
+      scale_((width_px - 2 * margin_px_) / arena_.width_m()) {
+  if (width_px < kMinWidthPx || width_px > kMaxWidthPx) {
+    throw std::invalid_argument("picture width must be " + std::to_string(kMinWidthPx) + ".." +
+                                std::to_string(kMaxWidthPx) + " px, got " + std::to_string(width_px));
+  }
+  const double captions_px = caption_lines > 0 ? 4 + caption_font_px() * kCaptionLineSpacing * caption_lines : 0;
+  height_px_ = static_cast<int>(std::ceil(arena_.height_m() * scale_ + 2 * margin_px_ + captions_px));
+  if (even_size && height_px_ % 2 != 0) ++height_px_;
+}
+
+double ArenaLayout::caption_font_px() const { return std::max(11.0, 14.0 * ui_scale_); }
+
+double ArenaLayout::caption_baseline_px(int line) const {
+  const double line_px = caption_font_px() * kCaptionLineSpacing;
+  return py(arena_.y_min_m) + margin_px_ * 0.5 + line_px * (line + 1);
+}
+
+}  // namespace dream::sim

@@ -1,0 +1,267 @@
+#include "arena_painter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <unordered_set>
+
+#include "dream/sim/robotarium_constants.h"
+
+namespace dream::sim {
+namespace {
+
+constexpr std::array<std::array<double, 3>, 10> kColors = {{{0.12, 0.47, 0.71},
+                                                            {1.00, 0.50, 0.05},
+                                                            {0.17, 0.63, 0.17},
+                                                            {0.84, 0.15, 0.16},
+                                                            {0.58, 0.40, 0.74},
+                                                            {0.55, 0.34, 0.29},
+                                                            {0.89, 0.47, 0.76},
+                                                            {0.50, 0.50, 0.50},
+                                                            {0.74, 0.74, 0.13},
+                                                            {0.09, 0.75, 0.81}}};
+
+constexpr double kRobotRadiusM = RobotariumConstants::kRobotDiameterMeters / 2;
+
+}  // namespace
+
+const std::array<double, 3>& RobotColor(int robot_id) {
+  return kColors[static_cast<size_t>(robot_id < 0 ? 0 : robot_id) % kColors.size()];
+}
+
+void ArenaPainter::SetColor(int robot_id, double alpha) const {
+  const auto& rgb = RobotColor(robot_id);
+  cairo_set_source_rgba(cr_, rgb[0], rgb[1], rgb[2], alpha);
+}
+
+void ArenaPainter::Background() const {
+  const Arena& arena = layout_.arena();
+  const double ui = layout_.ui_scale();
+  cairo_set_source_rgb(cr_, 1, 1, 1);
+  cairo_paint(cr_);
+  cairo_set_source_rgb(cr_, 0.9, 0.9, 0.9);
+  cairo_set_line_width(cr_, std::max(1.0, ui));
+  for (double x = std::ceil(arena.x_min_m * 2) / 2; x <= arena.x_max_m + 1e-9; x += 0.5) {
+    cairo_move_to(cr_, layout_.px(x), layout_.py(arena.y_min_m));
+    cairo_line_to(cr_, layout_.px(x), layout_.py(arena.y_max_m));
+  }
+  for (double y = std::ceil(arena.y_min_m * 2) / 2; y <= arena.y_max_m + 1e-9; y += 0.5) {
+    cairo_move_to(cr_, layout_.px(arena.x_min_m), layout_.py(y));
+    cairo_line_to(cr_, layout_.px(arena.x_max_m), layout_.py(y));
+  }
+  cairo_stroke(cr_);
+  cairo_set_source_rgb(cr_, 0, 0, 0);
+  cairo_set_line_width(cr_, std::max(1.0, 2.0 * ui));
+  cairo_rectangle(cr_, layout_.px(arena.x_min_m), layout_.py(arena.y_max_m), arena.width_m() * layout_.scale(),
+                  arena.height_m() * layout_.scale());
+  cairo_stroke(cr_);
+}
+
+void ArenaPainter::ClipToArena() const {
+  const Arena& arena = layout_.arena();
+  const double left = std::floor(layout_.px(arena.x_min_m));
+  const double top = std::floor(layout_.py(arena.y_max_m));
+  cairo_rectangle(cr_, left, top, std::ceil(layout_.px(arena.x_max_m)) - left, std::ceil(layout_.py(arena.y_min_m)) - top);
+  cairo_clip(cr_);
+}
+
+void ArenaPainter::Obstacles(const std::vector<rectangle_obstacle_t>& obstacles) const {
+  cairo_set_source_rgb(cr_, 0.25, 0.25, 0.25);
+  for (const rectangle_obstacle_t& o : obstacles) {
+    cairo_rectangle(cr_, layout_.px(o.center_x - o.width / 2), layout_.py(o.center_y + o.height / 2),
+                    o.width * layout_.scale(), o.height * layout_.scale());
+  }
+  cairo_fill(cr_);
+}
+
+void ArenaPainter::ObstaclePaths(const std::vector<std::vector<std::array<double, 2>>>& paths_m) const {
+  const double dash = 6.0 * std::max(layout_.ui_scale(), 0.5);
+  cairo_set_dash(cr_, &dash, 1, 0);
+  cairo_set_source_rgba(cr_, 0.4, 0.4, 0.4, 0.6);
+  cairo_set_line_width(cr_, std::max(1.0, layout_.ui_scale()));
+  for (const auto& path : paths_m) {
+    for (size_t i = 0; i < path.size(); ++i) {
+      if (i == 0) cairo_move_to(cr_, layout_.px(path[i][0]), layout_.py(path[i][1]));
+      cairo_line_to(cr_, layout_.px(path[i][0]), layout_.py(path[i][1]));
+    }
+    cairo_stroke(cr_);
+  }
+  cairo_set_dash(cr_, nullptr, 0, 0);
+}
+
+void ArenaPainter::Goals(const std::vector<std::vector<std::array<double, 2>>>& goals_m) const {
+  const double arm = kRobotRadiusM * 0.6 * layout_.scale();
+  for (size_t robot = 0; robot < goals_m.size(); ++robot) {
+    const auto& goals = goals_m[robot];
+    for (size_t g = 0; g < goals.size(); ++g) {
+      const bool last = g + 1 == goals.size();
+      SetColor(static_cast<int>(robot), last ? 1.0 : 0.5);
+      cairo_set_line_width(cr_, std::max(1.0, (last ? 2.5 : 1.5) * layout_.ui_scale()));
+      const double x = layout_.px(goals[g][0]);
+      const double y = layout_.py(goals[g][1]);
+      cairo_move_to(cr_, x - arm, y - arm);
+      cairo_line_to(cr_, x + arm, y + arm);
+      cairo_move_to(cr_, x - arm, y + arm);
+      cairo_line_to(cr_, x + arm, y - arm);
+      cairo_stroke(cr_);
+    }
+  }
+}
+
+void ArenaPainter::Track(int robot_id, const std::vector<std::array<double, 2>>& points_m, double line_width_px,
+                         double alpha, bool dashed) const {
+  if (points_m.empty()) return;
+  SetColor(robot_id, alpha);
+  cairo_set_line_width(cr_, std::max(1.0, line_width_px * layout_.ui_scale()));
+  const double dash[] = {7.0 * layout_.ui_scale(), 4.0 * layout_.ui_scale()};
+  if (dashed) cairo_set_dash(cr_, dash, 2, 0);
+  cairo_set_line_cap(cr_, CAIRO_LINE_CAP_ROUND);
+  cairo_set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
+  // A segment is known by its pixel-rounded ends, so a robot that drives the
+  // same lap 100 times costs one lap.
+  auto key = [](const std::array<double, 2>& a, const std::array<double, 2>& b) {
+    auto pixel = [](double v) { return static_cast<uint64_t>(static_cast<uint16_t>(std::lround(v) + 16384)); };
+    uint64_t from = pixel(a[0]) << 16 | pixel(a[1]);
+    uint64_t to = pixel(b[0]) << 16 | pixel(b[1]);
+    if (from > to) std::swap(from, to);
+    return from << 32 | to;
+  };
+  std::unordered_set<uint64_t> drawn;
+  std::array<double, 2> last = {layout_.px(points_m.front()[0]), layout_.py(points_m.front()[1])};
+  bool pen_down = false;
+  for (size_t i = 1; i < points_m.size(); ++i) {
+    const std::array<double, 2> point = {layout_.px(points_m[i][0]), layout_.py(points_m[i][1])};
+    const double dx = point[0] - last[0];
+    const double dy = point[1] - last[1];
+    if (dx * dx + dy * dy < 1.0 && i + 1 < points_m.size()) continue;
+    if (drawn.insert(key(last, point)).second) {
+      if (!pen_down) cairo_move_to(cr_, last[0], last[1]);
+      cairo_line_to(cr_, point[0], point[1]);
+      pen_down = true;
+    } else {
+      pen_down = false;
+    }
+    last = point;
+  }
+  cairo_stroke(cr_);
+  if (dashed) cairo_set_dash(cr_, nullptr, 0, 0);
+}
+
+void ArenaPainter::Robot(int robot_id, double x_m, double y_m, double theta_rad, RobotLook look, bool label,
+                         double size_factor) const {
+  const double radius_px = kRobotRadiusM * layout_.scale() * size_factor;
+  const double x = layout_.px(x_m);
+  const double y = layout_.py(y_m);
+  SetColor(robot_id, 1.0);
+  cairo_new_path(cr_);
+  cairo_arc(cr_, x, y, radius_px, 0, 2 * M_PI);
+  if (look == RobotLook::kHollow) {
+    cairo_set_line_width(cr_, std::max(1.0, 1.5 * layout_.ui_scale()));
+    cairo_stroke(cr_);
+    return;
+  }
+  cairo_fill(cr_);
+  // Heading: a tick from the centre to just past the rim, in the direction of travel.
+  cairo_set_source_rgb(cr_, 0, 0, 0);
+  cairo_set_line_width(cr_, std::max(1.0, 2.0 * layout_.ui_scale()));
+  cairo_move_to(cr_, x, y);
+  cairo_line_to(cr_, x + 1.5 * radius_px * std::cos(theta_rad), y - 1.5 * radius_px * std::sin(theta_rad));
+  cairo_stroke(cr_);
+  if (!label) return;
+  const std::string text = std::to_string(robot_id);
+  cairo_select_font_face(cr_, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
+  cairo_set_font_size(cr_, radius_px * 0.95);
+  cairo_text_extents_t extents;
+  cairo_text_extents(cr_, text.c_str(), &extents);
+  cairo_set_source_rgb(cr_, 1, 1, 1);
+  cairo_move_to(cr_, x - extents.width / 2 - extents.x_bearing, y - extents.height / 2 - extents.y_bearing);
+  cairo_show_text(cr_, text.c_str());
+}
+
+void ArenaPainter::SensorRange(int robot_id, double x_m, double y_m, double theta_rad, const SensorReach& reach,
+                               bool tint) const {
+  const double x = layout_.px(x_m);
+  const double y = layout_.py(y_m);
+  const double radius_px = reach.range_m * layout_.scale();
+  cairo_new_path(cr_);
+  if (reach.field_of_view_rad >= 2 * M_PI - 1e-9) {
+    cairo_arc(cr_, x, y, radius_px, 0, 2 * M_PI);
+  } else {
+    // Picture y points down, so world angles turn the other way.
+    const double centre = -(theta_rad + reach.direction_rad);
+    cairo_move_to(cr_, x, y);
+    cairo_arc(cr_, x, y, radius_px, centre - reach.field_of_view_rad / 2, centre + reach.field_of_view_rad / 2);
+    cairo_close_path(cr_);
+  }
+  if (tint) {
+    SetColor(robot_id, 0.05);
+    cairo_fill_preserve(cr_);
+  }
+  SetColor(robot_id, 0.4);
+  cairo_set_line_width(cr_, std::max(1.0, layout_.ui_scale()));
+  cairo_stroke(cr_);
+}
+
+void ArenaPainter::SensorRanges(const ArenaOverlays& overlays, const robot_poses_t& poses, bool tint) const {
+  if (!overlays.draw_sensor_ranges) return;
+  // Ranges reach past the walls; drawn only inside the arena they stay readable.
+  cairo_save(cr_);
+  ClipToArena();
+  for (int32_t i = 0; i < poses.num_robots; ++i) {
+    const auto k = static_cast<size_t>(i);
+    for (const SensorReach& reach : overlays.sensor_reaches) {
+      SensorRange(i, poses.x[k], poses.y[k], poses.theta[k], reach, tint);
+    }
+  }
+  cairo_restore(cr_);
+}
+
+void ArenaPainter::RadioLinks(const ArenaOverlays& overlays, const RunTrack& track, size_t pose_index,
+                              int64_t window_steps) const {
+  if (!overlays.draw_radio_links || !overlays.hears) return;
+  const robot_poses_t& poses = track.poses()[pose_index];
+  const int n = poses.num_robots;
+  if (window_steps <= 0 || track.radio_sends().empty()) {
+    for (int i = 0; i < n; ++i) {
+      for (int j = i + 1; j < n; ++j) {
+        if (!overlays.hears(i, j, poses) && !overlays.hears(j, i, poses)) continue;
+        RadioLink(poses.x[static_cast<size_t>(i)], poses.y[static_cast<size_t>(i)], poses.x[static_cast<size_t>(j)],
+                  poses.y[static_cast<size_t>(j)], 0.25);
+      }
+    }
+    return;
+  }
+  const auto& sends = track.radio_sends();
+  const int64_t now = poses.step;
+  auto send = std::lower_bound(sends.begin(), sends.end(), now - window_steps + 1,
+                               [](const RunTrack::RadioSend& s, int64_t step) { return s.step < step; });
+  for (; send != sends.end() && send->step <= now; ++send) {
+    const int sender = send->sender_id;
+    if (sender < 0 || sender >= n) continue;
+    const double alpha = 0.8 * (1.0 - static_cast<double>(now - send->step) / static_cast<double>(window_steps));
+    const auto s = static_cast<size_t>(sender);
+    for (int receiver = 0; receiver < n; ++receiver) {
+      if (receiver == sender || !overlays.hears(receiver, sender, poses)) continue;
+      const auto r = static_cast<size_t>(receiver);
+      RadioLink(poses.x[s], poses.y[s], poses.x[r], poses.y[r], alpha);
+    }
+  }
+}
+
+void ArenaPainter::RadioLink(double x0_m, double y0_m, double x1_m, double y1_m, double alpha) const {
+  cairo_set_source_rgba(cr_, 0.1, 0.1, 0.1, alpha);
+  cairo_set_line_width(cr_, std::max(1.0, 1.5 * layout_.ui_scale()));
+  cairo_move_to(cr_, layout_.px(x0_m), layout_.py(y0_m));
+  cairo_line_to(cr_, layout_.px(x1_m), layout_.py(y1_m));
+  cairo_stroke(cr_);
+}
+
+void ArenaPainter::Caption(int line, const std::string& text) const {
+  cairo_set_source_rgb(cr_, 0.2, 0.2, 0.2);
+  cairo_select_font_face(cr_, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr_, layout_.caption_font_px());
+  cairo_move_to(cr_, layout_.px(layout_.arena().x_min_m), layout_.caption_baseline_px(line));
+  cairo_show_text(cr_, text.c_str());
+}
+
+}  // namespace dream::sim

@@ -1,0 +1,174 @@
+#include "dream/sim/metric_plot.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "arena_painter.h"
+#include "dream/sim/robotarium_constants.h"
+#include "picture_surface.h"
+
+namespace dream::sim {
+namespace {
+
+constexpr double kStepS = RobotariumConstants::kTimeStepSeconds;
+
+// A round tick spacing (1, 2 or 5 times a power of ten) giving about `ticks` ticks over `span`.
+double TickSpacing(double span, int ticks) {
+  const double raw = span / ticks;
+  const double power = std::pow(10.0, std::floor(std::log10(raw)));
+  for (double factor : {1.0, 2.0, 5.0}) {
+    if (raw <= factor * power) return factor * power;
+  }
+  return 10 * power;
+}
+
+std::string TickText(double value, double spacing) {
+  char text[32];
+  const int decimals = spacing >= 1 ? 0 : static_cast<int>(std::ceil(-std::log10(spacing) - 1e-9));
+  std::snprintf(text, sizeof(text), "%.*f", decimals, std::abs(value) < spacing * 1e-6 ? 0.0 : value);
+  return text;
+}
+
+struct Range {
+  double lo;
+  double hi;
+};
+
+// Values always show from 0 when they are all of one sign and 0 is not far
+// off, so a falling error looks like it falls to zero.
+Range ValueRange(const MetricSeries& series) {
+  double lo = series.points.front()[1];
+  double hi = lo;
+  for (const auto& point : series.points) {
+    lo = std::min(lo, point[1]);
+    hi = std::max(hi, point[1]);
+  }
+  if (series.limit) {
+    lo = std::min(lo, *series.limit);
+    hi = std::max(hi, *series.limit);
+  }
+  if (lo >= 0 && lo < 0.5 * hi) lo = 0;
+  if (hi - lo < 1e-12) {
+    const double pad = std::max(std::abs(hi) * 0.1, 1e-3);
+    lo -= pad;
+    hi += pad;
+  }
+  const double pad = (hi - lo) * 0.05;
+  return {lo == 0 ? 0 : lo - pad, hi + pad};
+}
+
+}  // namespace
+
+void MetricPlot::Render(const std::vector<MetricSeries>& series, const std::string& title, const std::string& path,
+                        RenderFormat format, int width_px) {
+  if (series.empty()) throw std::invalid_argument("nothing to plot: no metric series");
+  double first_step = series.front().points.empty() ? 0 : series.front().points.front()[0];
+  double last_step = first_step;
+  for (const MetricSeries& s : series) {
+    if (s.points.empty()) throw std::invalid_argument("the metric " + s.name + " has no points to plot");
+    first_step = std::min(first_step, s.points.front()[0]);
+    last_step = std::max(last_step, s.points.back()[0]);
+  }
+  const Range time{first_step * kStepS, std::max(last_step, first_step + 1) * kStepS};
+
+  const double ui = width_px / 1000.0;
+  const double left = 80 * ui;
+  const double right = 20 * ui;
+  const double top = 60 * ui;          // the title, then the first panel's name
+  const double panel_height = 170 * ui;
+  const double panel_gap = 50 * ui;    // tick labels below a panel, the next panel's name above it
+  const int height_px = static_cast<int>(std::ceil(top + static_cast<double>(series.size()) * (panel_height + panel_gap) + 20 * ui));
+  PictureSurface surface(format, width_px, height_px);
+  cairo_t* cr = surface.cr();
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  cairo_paint(cr);
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
+  cairo_set_font_size(cr, 16 * ui);
+  cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+  cairo_move_to(cr, left, 22 * ui);
+  cairo_show_text(cr, title.c_str());
+
+  const double plot_width = width_px - left - right;
+  const double x_spacing = TickSpacing(time.hi - time.lo, 8);
+  for (size_t p = 0; p < series.size(); ++p) {
+    const MetricSeries& s = series[p];
+    const double y0 = top + static_cast<double>(p) * (panel_height + panel_gap);
+    const Range values = ValueRange(s);
+    auto x_px = [&](double step) { return left + (step * kStepS - time.lo) / (time.hi - time.lo) * plot_width; };
+    auto y_px = [&](double value) { return y0 + panel_height - (value - values.lo) / (values.hi - values.lo) * panel_height; };
+
+    // Grid and ticks.
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, 11 * ui);
+    cairo_set_line_width(cr, std::max(1.0, ui));
+    const double y_spacing = TickSpacing(values.hi - values.lo, 4);
+    for (double v = std::ceil(values.lo / y_spacing) * y_spacing; v <= values.hi + 1e-12; v += y_spacing) {
+      cairo_set_source_rgb(cr, 0.9, 0.9, 0.9);
+      cairo_move_to(cr, left, y_px(v));
+      cairo_line_to(cr, left + plot_width, y_px(v));
+      cairo_stroke(cr);
+      const std::string text = TickText(v, y_spacing);
+      cairo_text_extents_t extents;
+      cairo_text_extents(cr, text.c_str(), &extents);
+      cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
+      cairo_move_to(cr, left - 6 * ui - extents.x_advance, y_px(v) + extents.height / 2);
+      cairo_show_text(cr, text.c_str());
+    }
+    for (double t = std::ceil(time.lo / x_spacing) * x_spacing; t <= time.hi + 1e-9; t += x_spacing) {
+      const double x = left + (t - time.lo) / (time.hi - time.lo) * plot_width;
+      cairo_set_source_rgb(cr, 0.9, 0.9, 0.9);
+      cairo_move_to(cr, x, y0);
+      cairo_line_to(cr, x, y0 + panel_height);
+      cairo_stroke(cr);
+      const std::string text = TickText(t, x_spacing);
+      cairo_text_extents_t extents;
+      cairo_text_extents(cr, text.c_str(), &extents);
+      cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
+      cairo_move_to(cr, x - extents.x_advance / 2, y0 + panel_height + 15 * ui);
+      cairo_show_text(cr, text.c_str());
+    }
+    if (p + 1 == series.size()) {
+      cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
+      cairo_move_to(cr, left + plot_width - 60 * ui, y0 + panel_height + 32 * ui);
+      cairo_show_text(cr, "time (s)");
+    }
+
+    if (s.limit) {
+      const double dash = 6 * ui;
+      cairo_set_dash(cr, &dash, 1, 0);
+      cairo_set_source_rgb(cr, 0.84, 0.15, 0.16);
+      cairo_move_to(cr, left, y_px(*s.limit));
+      cairo_line_to(cr, left + plot_width, y_px(*s.limit));
+      cairo_stroke(cr);
+      cairo_set_dash(cr, nullptr, 0, 0);
+      cairo_move_to(cr, left + 6 * ui, y_px(*s.limit) - 4 * ui);
+      cairo_show_text(cr, s.limit_label.c_str());
+    }
+
+    const auto& rgb = RobotColor(static_cast<int>(p));
+    cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
+    cairo_set_line_width(cr, std::max(1.0, 1.8 * ui));
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    cairo_move_to(cr, x_px(s.points.front()[0]), y_px(s.points.front()[1]));
+    for (const auto& point : s.points) cairo_line_to(cr, x_px(point[0]), y_px(point[1]));
+    if (s.points.size() == 1) {
+      cairo_arc(cr, x_px(s.points.front()[0]), y_px(s.points.front()[1]), 3 * ui, 0, 2 * M_PI);
+      cairo_fill(cr);
+    }
+    cairo_stroke(cr);
+
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_set_line_width(cr, std::max(1.0, ui));
+    cairo_rectangle(cr, left, y0, plot_width, panel_height);
+    cairo_stroke(cr);
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
+    cairo_set_font_size(cr, 13 * ui);
+    cairo_move_to(cr, left, y0 - 8 * ui);
+    cairo_show_text(cr, s.name.c_str());
+  }
+  surface.Commit(path);
+}
+
+}  // namespace dream::sim

@@ -1,0 +1,209 @@
+#include "dream/sim/run_animation.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <vector>
+
+#include "arena_painter.h"
+#include "dream/sim/ffmpeg_encoder.h"
+#include "dream/sim/robotarium_constants.h"
+#include "picture_surface.h"
+#include "range_sprites.h"
+
+namespace dream::sim {
+namespace {
+
+constexpr double kStepS = RobotariumConstants::kTimeStepSeconds;
+constexpr double kRadioFlashS = 0.5;   // a broadcast's lines fade out over this much simulated time
+constexpr int kPaletteSampleFrames = 40;  // GIF: frames the palette is computed from
+
+using SurfacePtr = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
+using ContextPtr = std::unique_ptr<cairo_t, decltype(&cairo_destroy)>;
+
+void CheckOption(bool ok, const std::string& message) {
+  if (!ok) throw std::invalid_argument(message);
+}
+
+// H.264 in yuv420p needs even frame sizes.
+int EvenFrameWidth(int width_px) {
+  CheckOption(width_px >= ArenaLayout::kMinWidthPx && width_px <= ArenaLayout::kMaxWidthPx,
+              "--width must be " + std::to_string(ArenaLayout::kMinWidthPx) + ".." +
+                  std::to_string(ArenaLayout::kMaxWidthPx) + " px, got " + std::to_string(width_px));
+  return width_px - width_px % 2;
+}
+
+std::string Number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%g", value);
+  return text;
+}
+
+// Removes a temporary file unless released (the rename took it).
+class TempFile {
+ public:
+  explicit TempFile(std::string path) : path_(std::move(path)) {}
+  ~TempFile() {
+    if (!path_.empty()) ::unlink(path_.c_str());
+  }
+  const std::string& path() const { return path_; }
+  void Release() { path_.clear(); }
+
+ private:
+  std::string path_;
+};
+
+}  // namespace
+
+// The static layer (background, goals, obstacles that never move) is drawn
+// once; each frame starts as a copy of it.
+struct RunAnimation::Surfaces {
+  explicit Surfaces(const ArenaLayout& layout) : range_sprites(layout) {}
+  RangeSprites range_sprites;
+  SurfacePtr background{nullptr, cairo_surface_destroy};
+  SurfacePtr frame{nullptr, cairo_surface_destroy};
+  ContextPtr frame_cr{nullptr, cairo_destroy};
+};
+
+RunAnimation::RunAnimation(const RunTrack& track, const ArenaOverlays& overlays, AnimationOptions options)
+    : track_(track),
+      overlays_(overlays),
+      options_(options),
+      layout_(EvenFrameWidth(options.width_px), 1, /*even_size=*/true),
+      obstacles_move_(track.HasMovingObstacles()),
+      surfaces_(std::make_unique<Surfaces>(layout_)) {
+  CheckOption(std::isfinite(options.fps) && options.fps >= 1 && options.fps <= 120,
+              "--fps must be 1..120, got " + Number(options.fps));
+  CheckOption(std::isfinite(options.speed) && options.speed > 0 && options.speed <= 10000,
+              "--speed must be > 0 (simulated seconds per video second), got " + Number(options.speed));
+  CheckOption(std::isfinite(options.trail_s) && options.trail_s >= 0,
+              "--trail must be >= 0 s, got " + Number(options.trail_s));
+  CheckOption(std::isfinite(options.hold_end_s) && options.hold_end_s >= 0 && options.hold_end_s <= 60,
+              "the end hold must be 0..60 s, got " + Number(options.hold_end_s));
+  trail_steps_ = std::llround(options.trail_s / kStepS);
+  radio_window_steps_ = std::max<int64_t>(std::llround(kRadioFlashS / kStepS),
+                                          std::llround(std::ceil(options.speed / options.fps / kStepS)));
+  const int run_frames = static_cast<int>(std::ceil(track.duration_s() * options.fps / options.speed - 1e-9)) + 1;
+  frame_count_ = run_frames + static_cast<int>(std::lround(options.hold_end_s * options.fps));
+  DrawStaticLayer();
+}
+
+RunAnimation::~RunAnimation() = default;
+
+void RunAnimation::DrawStaticLayer() {
+  const int width = layout_.width_px();
+  const int height = layout_.height_px();
+  surfaces_->background.reset(cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height));
+  {
+    const ContextPtr cr(cairo_create(surfaces_->background.get()), cairo_destroy);
+    const ArenaPainter painter(cr.get(), layout_);
+    painter.Background();
+    painter.ObstaclePaths(track_.MovingObstaclePaths());
+    if (!obstacles_move_) painter.Obstacles(track_.obstacles_at(track_.poses().size() - 1));
+    painter.Goals(overlays_.goals_m);
+  }
+  surfaces_->frame.reset(cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height));
+  surfaces_->frame_cr.reset(cairo_create(surfaces_->frame.get()));
+}
+
+int64_t RunAnimation::StepOfFrame(int frame) const {
+  const double t = std::min(frame * options_.speed / options_.fps, track_.duration_s());
+  return std::min<int64_t>(track_.first_step() + std::llround(t / kStepS), track_.last_step());
+}
+
+void RunAnimation::DrawFrame(int frame) {
+  cairo_t* cr = surfaces_->frame_cr.get();
+  cairo_set_operator(cr, CAIRO_OPERATOR_SOURCE);
+  cairo_set_source_surface(cr, surfaces_->background.get(), 0, 0);
+  cairo_paint(cr);
+  cairo_set_operator(cr, CAIRO_OPERATOR_OVER);
+
+  const ArenaPainter painter(cr, layout_);
+  const int64_t step = StepOfFrame(frame);
+  const size_t now = track_.PoseIndexAtStep(step);
+  const robot_poses_t& poses = track_.poses()[now];
+  if (obstacles_move_) painter.Obstacles(track_.obstacles_at(now));
+  surfaces_->range_sprites.Draw(cr, overlays_, poses);
+  if (trail_steps_ > 0) {
+    const size_t from = track_.PoseIndexAtStep(step - trail_steps_);
+    std::vector<std::array<double, 2>> points;
+    for (int32_t i = 0; i < poses.num_robots; ++i) {
+      const auto k = static_cast<size_t>(i);
+      points.clear();
+      for (size_t p = from; p <= now; ++p) {
+        const robot_poses_t& past = track_.poses()[p];
+        if (i < past.num_robots) points.push_back({past.x[k], past.y[k]});
+      }
+      painter.Track(i, points, 2.0, 0.6);
+    }
+  }
+  painter.RadioLinks(overlays_, track_, now, radio_window_steps_);
+  for (int32_t i = 0; i < poses.num_robots; ++i) {
+    const auto k = static_cast<size_t>(i);
+    painter.Robot(i, poses.x[k], poses.y[k], poses.theta[k], ArenaPainter::RobotLook::kFilled, true);
+  }
+  char caption[160];
+  std::snprintf(caption, sizeof(caption), "step %lld   t = %.1f s   (%gx speed)", static_cast<long long>(poses.step),
+                static_cast<double>(poses.step) * kStepS, options_.speed);
+  painter.Caption(0, caption);
+  cairo_surface_flush(surfaces_->frame.get());
+}
+
+const unsigned char* RunAnimation::pixels() const { return cairo_image_surface_get_data(surfaces_->frame.get()); }
+
+int RunAnimation::stride_bytes() const { return cairo_image_surface_get_stride(surfaces_->frame.get()); }
+
+void RunAnimation::WriteFramePng(int frame, const std::string& png_path) {
+  DrawFrame(frame);
+  PictureSurface picture(RenderFormat::kPng, layout_.width_px(), layout_.height_px());
+  cairo_set_source_surface(picture.cr(), surfaces_->frame.get(), 0, 0);
+  cairo_paint(picture.cr());
+  picture.Commit(png_path);
+}
+
+bool RunAnimation::Write(const std::string& path, RenderFormat format, const std::function<bool()>& cancelled) {
+  if (IsPictureFormat(format)) throw std::invalid_argument("a video is .mp4 or .gif: " + path);
+  return Encode(path, format, cancelled);
+}
+
+bool RunAnimation::Encode(const std::string& path, RenderFormat format, const std::function<bool()>& cancelled) {
+  const std::string pid = std::to_string(::getpid());
+  TempFile video(path + ".tmp." + pid);
+  TempFile palette(path + ".palette.tmp." + pid + ".png");
+  const FfmpegEncoder::Input input{layout_.width_px(), layout_.height_px(), options_.fps};
+  auto feed = [&](FfmpegEncoder& encoder, int every) {
+    for (int frame = 0; frame < frame_count_; frame += every) {
+      if (cancelled && cancelled()) return false;
+      DrawFrame(frame);
+      encoder.WriteFrame(pixels(), stride_bytes());
+    }
+    encoder.Finish();
+    return true;
+  };
+  if (format == RenderFormat::kMp4) {
+    FfmpegEncoder encoder(input, {"-c:v", "libx264", "-preset", "veryfast", "-crf", "23", "-pix_fmt", "yuv420p",
+                                  "-movflags", "+faststart", "-f", "mp4", video.path()});
+    if (!feed(encoder, 1)) return false;
+  } else {
+    // A GIF has 256 colours: one palette for the whole video (so unchanged
+    // pixels stay unchanged and compress), computed from a sample of frames.
+    {
+      FfmpegEncoder encoder(input, {"-vf", "palettegen=stats_mode=full", "-f", "image2", palette.path()});
+      if (!feed(encoder, std::max(1, frame_count_ / kPaletteSampleFrames))) return false;
+    }
+    FfmpegEncoder encoder(input, {"-i", palette.path(), "-lavfi",
+                                  "[0:v][1:v]paletteuse=dither=bayer:bayer_scale=4:diff_mode=rectangle", "-loop", "0",
+                                  "-f", "gif", video.path()});
+    if (!feed(encoder, 1)) return false;
+  }
+  if (std::rename(video.path().c_str(), path.c_str()) != 0) {
+    throw std::runtime_error("cannot write " + path + " (does the folder exist?)");
+  }
+  video.Release();
+  return true;
+}
+
+}  // namespace dream::sim

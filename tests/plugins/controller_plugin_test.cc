@@ -1,0 +1,177 @@
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "dream/agents/controller_factory.h"
+#include "dream/agents/controller_plugin.h"
+#include "dream/agents/controller_registry.h"
+#include "dream/config/config_error.h"
+#include "dream/config/run_config.h"
+
+namespace dream::agents {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A one-robot run config naming `plugins` (YAML list text) and `kind`.
+config::RunConfig Config(const std::string& plugins, const std::string& kind = "test_still",
+                         const std::string& source = "test.yaml") {
+  return config::LoadRunConfig(config::ConfigNode::LoadString(
+      "name: t\nrobots: 1\ninitial_poses: [[0, 0, 0]]\nplugins: " + plugins + "\ncontroller: {kind: " + kind + "}\n",
+      source));
+}
+
+/// The error of building a factory for `config` ("" when it builds).
+std::string ErrorOf(const config::RunConfig& config) {
+  try {
+    ControllerFactory factory(config);
+  } catch (const config::ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+bool Knows(const std::string& kind) {
+  const std::vector<std::string> kinds = ControllerFactory::Kinds();
+  return std::find(kinds.begin(), kinds.end(), kind) != kinds.end();
+}
+
+std::string Quoted(const std::string& path) { return "'" + path + "'"; }
+
+TEST(ControllerPluginTest, AGoodPluginAddsItsKindOnceHoweverOftenItIsNamed) {
+  EXPECT_FALSE(Knows("test_still"));
+  const config::RunConfig config = Config("[" + Quoted(TEST_PLUGIN_GOOD_PATH) + ", " + Quoted(TEST_PLUGIN_GOOD_PATH) + "]");
+  const ControllerFactory factory(config);
+  EXPECT_EQ(factory.kind(), "test_still");
+  EXPECT_TRUE(Knows("test_still"));
+  EXPECT_NE(factory.Make(0), nullptr);
+  EXPECT_EQ(factory.MakeMetrics().size(), 2u);  // the plugin's and the safety metrics
+  // Another factory (dream run builds several) loads nothing twice.
+  EXPECT_EQ(ErrorOf(config), "");
+  // The kind's own keys are checked like a built-in kind's.
+  const config::RunConfig typo = config::LoadRunConfig(config::ConfigNode::LoadString(
+      "name: t\nrobots: 1\ninitial_poses: [[0, 0, 0]]\nplugins: [" + Quoted(TEST_PLUGIN_GOOD_PATH) +
+          "]\ncontroller: {kind: test_still, patience: 2}\n",
+      "test.yaml"));
+  EXPECT_NE(ErrorOf(typo).find("controller.patience: unknown key for kind test_still; allowed keys here: kind, "
+                               "robot, sensors, radio, patience_s"),
+            std::string::npos)
+      << ErrorOf(typo);
+}
+
+TEST(ControllerPluginTest, AnUnknownKindPointsAtPlugins) {
+  const std::string error = ErrorOf(Config("[]", "test_elsewhere"));
+  EXPECT_NE(error.find("unknown controller kind 'test_elsewhere'; known kinds: go_to_goal"), std::string::npos)
+      << error;
+  EXPECT_NE(error.find("needs the plugin under `plugins:`"), std::string::npos) << error;
+}
+
+TEST(ControllerPluginTest, AMissingFileNamesTheEntryAndThePath) {
+  const std::string error = ErrorOf(Config("[nowhere/libmissing.so]", "test_still", "configs/exp.yaml"));
+  const std::string expected_path = (fs::absolute("configs") / "nowhere/libmissing.so").lexically_normal().string();
+  EXPECT_EQ(error.rfind("configs/exp.yaml:4: plugins[0]: " + expected_path + ": no such file", 0), 0u) << error;
+}
+
+TEST(ControllerPluginTest, AFileThatIsNoLibraryQuotesTheLoader) {
+  const fs::path fake = fs::temp_directory_path() / ("dream_not_a_plugin_" + std::to_string(::getpid()) + ".so");
+  std::ofstream(fake) << "not an ELF file\n";
+  const std::string error = ErrorOf(Config("[" + Quoted(fake.string()) + "]"));
+  fs::remove(fake);
+  EXPECT_NE(error.find("plugins[0]: " + fake.string() + ": cannot load it: " + fake.string()), std::string::npos)
+      << error;
+  EXPECT_EQ(error.find('\n'), std::string::npos) << "one line: " << error;
+}
+
+TEST(ControllerPluginTest, ALibraryWithoutEntryPointsIsRefused) {
+  const std::string error = ErrorOf(Config("[" + Quoted(TEST_PLUGIN_NO_ENTRY_PATH) + "]"));
+  EXPECT_NE(error.find(std::string("plugins[0]: ") + TEST_PLUGIN_NO_ENTRY_PATH +
+                       ": not a dream controller plugin: it has no dream_plugin_api_version()"),
+            std::string::npos)
+      << error;
+}
+
+TEST(ControllerPluginTest, APluginWithAnotherCopyOfTheDreamLibrariesIsRefused) {
+  const std::string error = ErrorOf(Config("[" + Quoted(TEST_PLUGIN_FOREIGN_PATH) + "]"));
+  EXPECT_NE(error.find(std::string(TEST_PLUGIN_FOREIGN_PATH) + ": it uses another copy of the dream libraries (" +
+                       TEST_PLUGIN_FOREIGN_PATH + "); rebuild it against the dream that loads it"),
+            std::string::npos)
+      << error;
+}
+
+TEST(ControllerPluginTest, APluginForAnotherApiVersionIsRefusedBeforeItRegisters) {
+  const std::string error = ErrorOf(Config("[" + Quoted(TEST_PLUGIN_OLD_API_PATH) + "]", "test_old"));
+  EXPECT_NE(error.find(std::string(TEST_PLUGIN_OLD_API_PATH) + ": built for dream plugin API 0, this dream has API " +
+                       std::to_string(DREAM_PLUGIN_API_VERSION) + "; rebuild it"),
+            std::string::npos)
+      << error;
+  EXPECT_FALSE(Knows("test_old"));
+}
+
+TEST(ControllerPluginTest, AKindThatExistsIsRefusedAndThePluginAddsNothing) {
+  const std::string error = ErrorOf(Config("[" + Quoted(TEST_PLUGIN_CLASH_PATH) + "]", "test_first"));
+  EXPECT_NE(error.find("plugins[0]: " + std::string(TEST_PLUGIN_CLASH_PATH) +
+                       ": controller kind 'go_to_goal' is already registered (built in)"),
+            std::string::npos)
+      << error;
+  EXPECT_FALSE(Knows("test_first"));
+}
+
+TEST(ControllerPluginTest, TwoPluginsWithOneKindAreRefusedNamingTheFirst) {
+  const std::string error =
+      ErrorOf(Config("[" + Quoted(TEST_PLUGIN_GOOD_PATH) + ", " + Quoted(TEST_PLUGIN_TWIN_PATH) + "]"));
+  EXPECT_NE(error.find("plugins[1]: " + std::string(TEST_PLUGIN_TWIN_PATH) +
+                       ": controller kind 'test_still' is already registered (" + TEST_PLUGIN_GOOD_PATH + ")"),
+            std::string::npos)
+      << error;
+}
+
+// A builder with every optional member ControllerKind::Of reads.
+class FussyBuilder final : public ExperimentBuilder {
+ public:
+  static constexpr const char* kKind = "fussy";
+  static constexpr bool kGraphMustConnect = true;
+  static std::vector<const char*> Keys() { return {"a", "b"}; }
+  static AgentPartsConfig DefaultParts(int num_robots) {
+    AgentPartsConfig parts = AgentPartsConfig::Defaults(num_robots);
+    parts.robot.vel_gain = 0.5;
+    return parts;
+  }
+  FussyBuilder(const config::ConfigNode&, int) {}
+  std::unique_ptr<Robot> MakeRobot(int, const RobotParams&) const override { return nullptr; }
+  std::unique_ptr<ExperimentMetrics> MakeMetrics() const override { return nullptr; }
+};
+
+TEST(ControllerKindTest, OfReadsTheBuildersStaticMembers) {
+  const ControllerKind kind = ControllerKind::Of<FussyBuilder>();
+  EXPECT_EQ(kind.name, "fussy");
+  EXPECT_EQ(kind.keys, (std::vector<std::string>{"a", "b"}));
+  EXPECT_TRUE(kind.graph_must_connect);
+  EXPECT_EQ(kind.default_parts(3).robot.vel_gain, 0.5);
+  EXPECT_NE(kind.make_builder(config::ConfigNode(), 3), nullptr);
+  // Without them: no graph requirement (the built-in go_to_goal).
+  ASSERT_NE(ControllerRegistry::Global().Find("go_to_goal"), nullptr);
+  EXPECT_FALSE(ControllerRegistry::Global().Find("go_to_goal")->graph_must_connect);
+  EXPECT_TRUE(ControllerRegistry::Global().Find("line_deployment")->graph_must_connect);
+}
+
+TEST(ControllerRegistryTest, RefusesNamelessKindsAndDuplicates) {
+  ControllerRegistry registry;
+  EXPECT_THROW(registry.Add(ControllerKind()), std::invalid_argument);
+  registry.Add(ControllerKind::Of<FussyBuilder>(), "here");
+  try {
+    registry.Add(ControllerKind::Of<FussyBuilder>(), "there");
+    ADD_FAILURE() << "a duplicate kind was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "controller kind 'fussy' is registered twice (here and there)");
+  }
+  EXPECT_EQ(registry.Names(), std::vector<std::string>{"fussy"});
+  EXPECT_EQ(registry.Find("nothing"), nullptr);
+}
+
+}  // namespace
+}  // namespace dream::agents

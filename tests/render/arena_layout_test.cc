@@ -1,0 +1,41 @@
+#include "dream/sim/arena_layout.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+namespace dream::sim {
+namespace {
+
+TEST(ArenaLayoutTest, MapsTheArenaCornersInsideTheMarginsWithYUp) {
+  const ArenaLayout layout(1280, 1);
+  EXPECT_DOUBLE_EQ(layout.px(-1.6), 30.0);
+  EXPECT_DOUBLE_EQ(layout.px(1.6), 1250.0);
+  EXPECT_DOUBLE_EQ(layout.py(1.0), 30.0);
+  EXPECT_GT(layout.py(-1.0), layout.py(1.0));
+  EXPECT_DOUBLE_EQ(layout.scale(), 1220.0 / 3.2);
+  EXPECT_DOUBLE_EQ(layout.ui_scale(), 1.0);
+  // The caption sits below the arena and inside the picture.
+  EXPECT_GT(layout.caption_baseline_px(0), layout.py(-1.0));
+  EXPECT_LT(layout.caption_baseline_px(0), layout.height_px());
+}
+
+TEST(ArenaLayoutTest, VideoFramesHaveEvenSizes) {
+  for (int width : {720, 722, 480, 1000, 640}) {
+    const ArenaLayout layout(width, 1, /*even_size=*/true);
+    EXPECT_EQ(layout.height_px() % 2, 0) << width;
+  }
+}
+
+TEST(ArenaLayoutTest, MoreCaptionLinesMakeItTaller) {
+  EXPECT_GT(ArenaLayout(1280, 2).height_px(), ArenaLayout(1280, 1).height_px());
+  EXPECT_GT(ArenaLayout(1280, 1).height_px(), ArenaLayout(1280, 0).height_px());
+}
+
+TEST(ArenaLayoutTest, RefusesAbsurdWidths) {
+  EXPECT_THROW(ArenaLayout(10, 1), std::invalid_argument);
+  EXPECT_THROW(ArenaLayout(100000, 1), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace dream::sim

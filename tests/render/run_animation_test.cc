@@ -1,0 +1,163 @@
+#include "dream/sim/run_animation.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "picture_pixels.h"
+#include "synthetic_run_log.h"
+#include "temp_folder.h"
+#include "video_probe.h"
+
+namespace dream::sim {
+namespace {
+
+using testing::Box;
+using testing::kObstacleGrey;
+using testing::kRobot0Blue;
+using testing::kWhite;
+using testing::PicturePixels;
+using testing::SyntheticRunLog;
+using testing::TempFolder;
+
+// Inside a robot's disc (radius 0.055 m), clear of its id label, its heading
+// tick (+x here) and the grid lines through its centre.
+constexpr double kOffsetM = 0.03;
+
+class RunAnimationTest : public ::testing::Test {
+ protected:
+  RunAnimationTest() : track_(RunTrack::Read(SyntheticRunLog::TwoRobots(dir_ / "run.lcmlog", 300).Write())) {}
+
+  AnimationOptions Options() const {
+    AnimationOptions options;
+    options.width_px = 640;
+    options.fps = 10;
+    options.speed = 2;
+    options.hold_end_s = 0.5;
+    return options;
+  }
+
+  TempFolder dir_;
+  RunTrack track_;
+  ArenaOverlays no_overlays_;
+};
+
+TEST_F(RunAnimationTest, FramesFollowDurationFpsAndSpeed) {
+  const RunAnimation animation(track_, no_overlays_, Options());
+  // 300 steps = 9.9 s at 2x = 4.95 s of video at 10 fps: frames 0..50 (the
+  // last clamped to the final step), then 0.5 s = 5 frames holding it.
+  EXPECT_EQ(animation.frame_count(), 56);
+  EXPECT_DOUBLE_EQ(animation.duration_s(), 5.6);
+  EXPECT_EQ(animation.StepOfFrame(0), 0);
+  EXPECT_EQ(animation.StepOfFrame(10), 61);  // 2 s simulated / 0.033 s
+  EXPECT_EQ(animation.StepOfFrame(50), 300);
+  EXPECT_EQ(animation.StepOfFrame(55), 300);
+  EXPECT_EQ(animation.layout().width_px(), 640);
+  EXPECT_EQ(animation.layout().height_px() % 2, 0);
+}
+
+TEST_F(RunAnimationTest, EachFrameShowsTheRobotsWhereTheyAreThen) {
+  RunAnimation animation(track_, no_overlays_, Options());
+  const ArenaLayout& layout = animation.layout();
+  animation.WriteFramePng(0, dir_ / "first.png");
+  animation.WriteFramePng(animation.frame_count() - 1, dir_ / "last.png");
+  const PicturePixels first(dir_ / "first.png");
+  const PicturePixels last(dir_ / "last.png");
+  EXPECT_EQ(first.width(), layout.width_px());
+  auto start = [&](const PicturePixels& p, const auto& rgb, int tolerance) {
+    return p.Near(layout.px(-1.0 + kOffsetM), layout.py(-kOffsetM), rgb, tolerance);
+  };
+  auto end = [&](const PicturePixels& p, const auto& rgb, int tolerance) {
+    return p.Near(layout.px(1.0 + kOffsetM), layout.py(0.5 - kOffsetM), rgb, tolerance);
+  };
+  EXPECT_TRUE(start(first, kRobot0Blue, 20));
+  EXPECT_TRUE(end(first, kWhite, 0));
+  EXPECT_TRUE(end(last, kRobot0Blue, 20));
+  EXPECT_TRUE(start(last, kWhite, 0));
+}
+
+TEST_F(RunAnimationTest, TrailsCoverTheLastSecondsOnly) {
+  AnimationOptions options = Options();
+  options.trail_s = 3.0;
+  RunAnimation with_trail(track_, no_overlays_, options);
+  options.trail_s = 0.0;
+  RunAnimation without_trail(track_, no_overlays_, options);
+  const int last = with_trail.frame_count() - 1;
+  with_trail.WriteFramePng(last, dir_ / "trail.png");
+  without_trail.WriteFramePng(last, dir_ / "none.png");
+  const PicturePixels trail(dir_ / "trail.png");
+  const PicturePixels none(dir_ / "none.png");
+  const ArenaLayout& layout = with_trail.layout();
+  // Robot 0 drives x = -1 + 2u, y = 0.5u over 9.9 s: 1.5 s before the end it
+  // was at u = 0.85 (inside the trail), 6 s before at u = 0.39 (outside).
+  auto at = [&](double u) { return std::array<double, 2>{layout.px(-1 + 2 * u), layout.py(0.5 * u)}; };
+  EXPECT_FALSE(trail.Near(at(0.85)[0], at(0.85)[1], kWhite, 30));
+  EXPECT_TRUE(none.Near(at(0.85)[0], at(0.85)[1], kWhite, 0));
+  EXPECT_TRUE(trail.Near(at(0.39)[0], at(0.39)[1], kWhite, 0));
+}
+
+TEST_F(RunAnimationTest, MovingObstaclesAreWhereTheyAreAtEachFrame) {
+  SyntheticRunLog log(dir_ / "moving.lcmlog");
+  for (int step = 0; step <= 100; ++step) {
+    log.Poses(step, {{0, 0, 0}}).Obstacles(step, {Box(0, -1.0 + 0.02 * step, 0.6, 0.2, 0.2)});
+  }
+  const RunTrack track = RunTrack::Read(log.Write());
+  RunAnimation animation(track, no_overlays_, Options());
+  animation.WriteFramePng(0, dir_ / "first.png");
+  animation.WriteFramePng(animation.frame_count() - 1, dir_ / "last.png");
+  const PicturePixels first(dir_ / "first.png");
+  const PicturePixels last(dir_ / "last.png");
+  const ArenaLayout& layout = animation.layout();
+  EXPECT_TRUE(first.Near(layout.px(-1.0), layout.py(0.65), kObstacleGrey));
+  EXPECT_TRUE(last.Near(layout.px(1.0), layout.py(0.65), kObstacleGrey));
+  EXPECT_FALSE(last.Near(layout.px(-1.0), layout.py(0.65), kObstacleGrey, 60));
+}
+
+TEST_F(RunAnimationTest, OptionsOutOfRangeAreRefusedNamingThem) {
+  auto refused = [&](AnimationOptions options, const std::string& option) {
+    try {
+      RunAnimation animation(track_, no_overlays_, options);
+      ADD_FAILURE() << option << " accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(option), std::string::npos) << e.what();
+    }
+  };
+  AnimationOptions options = Options();
+  options.fps = 0;
+  refused(options, "--fps");
+  options = Options();
+  options.speed = -1;
+  refused(options, "--speed");
+  options = Options();
+  options.trail_s = -2;
+  refused(options, "--trail");
+  options = Options();
+  options.width_px = 20;
+  refused(options, "--width");
+}
+
+TEST_F(RunAnimationTest, Mp4AndGifHoldEveryFrame) {
+  if (!testing::OnPath("ffmpeg") || !testing::OnPath("ffprobe")) GTEST_SKIP() << "ffmpeg is not installed";
+  AnimationOptions options = Options();
+  options.speed = 5;  // 21 frames of the run and 5 held
+  RunAnimation animation(track_, no_overlays_, options);
+  ASSERT_TRUE(animation.Write(dir_ / "run.mp4", RenderFormat::kMp4));
+  ASSERT_TRUE(animation.Write(dir_ / "run.gif", RenderFormat::kGif));
+  EXPECT_EQ(testing::CountVideoFrames(dir_ / "run.mp4"), animation.frame_count());
+  EXPECT_EQ(testing::CountVideoFrames(dir_ / "run.gif"), animation.frame_count());
+  auto files = dir_.Files();
+  std::sort(files.begin(), files.end());
+  EXPECT_EQ(files, (std::vector<std::string>{"run.gif", "run.lcmlog", "run.mp4"}));  // no temporary files
+}
+
+TEST_F(RunAnimationTest, ACancelledVideoLeavesNothingBehind) {
+  if (!testing::OnPath("ffmpeg")) GTEST_SKIP() << "ffmpeg is not installed";
+  RunAnimation animation(track_, no_overlays_, Options());
+  int frames_drawn = 0;
+  EXPECT_FALSE(animation.Write(dir_ / "run.mp4", RenderFormat::kMp4, [&] { return ++frames_drawn > 5; }));
+  EXPECT_FALSE(animation.Write(dir_ / "run.gif", RenderFormat::kGif, [&] { return true; }));
+  EXPECT_EQ(dir_.Files(), std::vector<std::string>{"run.lcmlog"});
+}
+
+}  // namespace
+}  // namespace dream::sim
