@@ -15,8 +15,10 @@
 #include "dream/sim/run_report.h"
 #include "dream/sim/run_summary.h"
 #include "dream/sim/sim_node.h"
+#include "dream/sim/run_track.h"
 #include "dream/sim/trajectory_picture.h"
 #include "dream/sim/unicycle_world.h"
+#include "render_overlays.h"
 #include "terminal_progress.h"
 
 namespace dream::cli {
@@ -108,7 +110,9 @@ int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std:
   std::cout << report.Text();
   std::cout << "log:     " << log_path << "\nsummary: " << out_dir << "/summary.json\n";
   if (outcome.steps > 0 || outcome.end == sim::RunOutcome::End::kFinished) {
-    sim::TrajectoryPicture::Render(log_path, out_dir + "/trajectories.png");
+    // With the config's goals, like `dream render` draws them.
+    sim::TrajectoryPicture::Render(sim::RunTrack::Read(log_path), ArenaOverlaysFromConfig(config),
+                                   out_dir + "/trajectories.png", sim::RenderFormat::kPng, 1280);
     std::cout << "picture: " << out_dir << "/trajectories.png\n";
   }
   return ExitCodeFor(outcome, report);
