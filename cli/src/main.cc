@@ -244,6 +244,16 @@ int main(int argc, char** argv) {
       ->capture_default_str();
 
   // CLI11 would only say "A subcommand is required"; name the unknown word.
+  // Options before the subcommand are the global ones only.
+  for (int i = 1; i < argc && argv[i][0] == '-'; ++i) {
+    const std::string option = argv[i];
+    if (option != "-q" && option != "--quiet" && option != "-v" && option != "--verbose" && option != "-h" &&
+        option != "--help") {
+      std::cerr << "dream: unknown option '" << option << "' before the subcommand; global options are -q, -v, -h"
+                << " (dream --help)\n";
+      return kExitUsage;
+    }
+  }
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;
     std::string names;

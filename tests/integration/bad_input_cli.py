@@ -107,6 +107,7 @@ def test(ctx):
     cases = [
         ("unknown subcommand", ["frobnicate"], EXIT_USAGE, ["'frobnicate'", "dream --help"], False),
         ("unknown option", ["run", config, "--speed", "3"], EXIT_USAGE, ["--speed", "dream run --help"], False),
+        ("unknown global option", ["--bogus", "run", config], EXIT_USAGE, ["'--bogus'", "dream --help"], False),
         ("missing argument", ["run"], EXIT_USAGE, ["config", "required", "dream run --help"], False),
         ("log without its subcommand", ["log"], EXIT_USAGE, ["subcommand", "dream log --help"], False),
         ("unknown option of a nested command", ["log", "info", truncated, "--all"], EXIT_USAGE,
