@@ -15,10 +15,23 @@ std::unique_ptr<HrvoAvoidance> MakeHrvo(const HrvoRobotParams& params) {
   return std::make_unique<HrvoExact>(params.hrvo);
 }
 
+UnicycleWallGuardParams WallGuardParams(const HrvoParams& hrvo) {
+  UnicycleWallGuardParams guard;
+  guard.x_min_m = hrvo.x_min_m;
+  guard.x_max_m = hrvo.x_max_m;
+  guard.y_min_m = hrvo.y_min_m;
+  guard.y_max_m = hrvo.y_max_m;
+  guard.horizon_s = hrvo.boundary_horizon_s;
+  return guard;
+}
+
 }  // namespace
 
 HrvoRobot::HrvoRobot(int id, const RobotParams& robot_params, const HrvoRobotParams& params)
-    : Robot(id, robot_params), hrvo_(MakeHrvo(params)) {}
+    : Robot(id, robot_params),
+      hrvo_(MakeHrvo(params)),
+      guard_walls_(params.hrvo.check_boundaries),
+      wall_guard_(WallGuardParams(params.hrvo)) {}
 
 Eigen::Vector2d HrvoRobot::AvoidCollisions(const Eigen::Vector2d& preferred_mps) {
   neighbours_.clear();
@@ -30,7 +43,8 @@ Eigen::Vector2d HrvoRobot::AvoidCollisions(const Eigen::Vector2d& preferred_mps)
 }
 
 UnicycleCommand HrvoRobot::DriveWithVelocity(const Eigen::Vector2d& preferred_mps) {
-  return LimitActuators(DxiToDxu(AvoidCollisions(preferred_mps)));
+  const UnicycleCommand command = LimitActuators(DxiToDxu(AvoidCollisions(preferred_mps)));
+  return guard_walls_ ? wall_guard_.Apply(pose(), command) : command;
 }
 
 }  // namespace dream::agents

@@ -10,10 +10,12 @@
 #include <string>
 #include <vector>
 
+#include "dream/agents/circle_formation_robot.h"
 #include "dream/agents/hrvo_cone.h"
 #include "dream/agents/hrvo_exact.h"
 #include "dream/agents/hrvo_params.h"
 #include "dream/agents/hrvo_thesis.h"
+#include "dream/agents/unicycle_wall_guard.h"
 
 namespace dream::agents {
 namespace {
@@ -500,6 +502,80 @@ TEST(HrvoThesisTest, MatchesTheThesisCodeOnKnownAnswers) {
     EXPECT_NEAR(out.x(), c.expected.x(), 1e-12) << "case " << k;
     EXPECT_NEAR(out.y(), c.expected.y(), 1e-12) << "case " << k;
   }
+}
+
+// The planar velocity a unicycle command drives at heading theta.
+Vector2d Driven(const UnicycleCommand& command, double theta_rad) {
+  return command.v_mps * Vector2d(std::cos(theta_rad), std::sin(theta_rad));
+}
+
+TEST(HrvoWallGuardTest, ForwardSpeedIsCutOnlyWhenTheHeadingCarriesTheRobotOut) {
+  const UnicycleWallGuard guard;  // arena [-1.6, 1.6] x [-1, 1], 1 s look-ahead, 0.02 m margin
+  const UnicycleCommand forward{0.15, -2.0};
+  // 1.4 cm from the bottom wall, heading down-left: no forward motion at all,
+  // the turn is kept.
+  const UnicycleCommand out = guard.Apply({-0.35, -0.986, -2.5}, forward);
+  EXPECT_EQ(out.v_mps, 0.0);
+  EXPECT_EQ(out.w_radps, -2.0);
+  // Same spot heading along the wall or inwards: untouched.
+  EXPECT_EQ(guard.Apply({-0.35, -0.986, 0.0}, forward).v_mps, 0.15);
+  EXPECT_EQ(guard.Apply({-0.35, -0.986, 2.5}, forward).v_mps, 0.15);
+  // Driving backwards with the heading pointing in carries it out too.
+  EXPECT_EQ(guard.Apply({-0.35, -0.986, 1.0}, {-0.1, 0.0}).v_mps, 0.0);
+  EXPECT_EQ(guard.Apply({-0.35, -0.986, -1.0}, {-0.1, 0.0}).v_mps, -0.1);
+  // Mid-arena: untouched whatever the heading.
+  for (double theta = -3.0; theta < 3.2; theta += 0.5) {
+    EXPECT_EQ(guard.Apply({0.0, 0.0, theta}, forward).v_mps, 0.15);
+  }
+  // 8 cm from the right wall heading straight at it: scaled so the 1 s
+  // look-ahead point stops at the 2 cm margin.
+  const UnicycleCommand scaled = guard.Apply({1.52, 0.0, 0.0}, forward);
+  EXPECT_NEAR(scaled.v_mps, 0.06, 1e-12);
+  EXPECT_LE(1.52 + Driven(scaled, 0.0).x(), 1.6 - 0.02 + 1e-12);
+  // Into the top-left corner diagonally: the tighter wall decides.
+  const UnicycleCommand corner = guard.Apply({-1.5, 0.95, 3.0 * M_PI / 4.0}, forward);
+  const Vector2d corner_velocity = Driven(corner, 3.0 * M_PI / 4.0);
+  EXPECT_GE(-1.5 + corner_velocity.x(), -1.6 + 0.02 - 1e-12);
+  EXPECT_LE(0.95 + corner_velocity.y(), 1.0 - 0.02 + 1e-12);
+  EXPECT_NEAR(0.95 + corner_velocity.y(), 1.0 - 0.02, 1e-12);
+}
+
+// The circle swap's failure (hrvo_circle seed 15, robot 8): a robot on the
+// bottom wall's margin, heading a hair below the wall's direction, squeezed
+// between the wall and a neighbour above, is sent back along the wall. HRVO's
+// answer rides the wall (v_y = 0), but dxi_to_dxu turns the robot clockwise
+// -- through "down" -- and drives forward as soon as the heading is within
+// 90 degrees of that answer: down-left, over the wall. With the guard it
+// turns on the spot, then drives along the wall.
+TEST(HrvoWallGuardTest, RobotSqueezedAgainstTheWallTurnsAroundWithoutCrossingIt) {
+  CircleFormationParams params;
+  params.num_robots = 1;
+  params.goals_m = {{-1.0, -0.99}};  // back along the wall, a little outside HRVO's margin line
+  CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
+  const double dt_s = 0.033;  // Robotarium step
+  const Eigen::Vector3d start(-0.35, -0.975, -0.05);
+  const Vector2d neighbour_m(-0.45, -0.73);  // standing still above the path
+  Eigen::Vector3d pose = start;
+  double lowest_y_m = pose.y();
+  for (int step = 0; step < 200; ++step) {
+    robot.OnOdometry({step, pose});
+    const Vector2d relative = neighbour_m - pose.head<2>();
+    robot.OnMovement({step, {{relative.norm(), std::atan2(relative.y(), relative.x()), Vector2d::Zero()}}});
+    const UnicycleCommand command = robot.Update(step);
+    // Exact unicycle motion over the step (an arc).
+    if (std::abs(command.w_radps) < 1e-9) {
+      pose.head<2>() += command.v_mps * dt_s * Vector2d(std::cos(pose.z()), std::sin(pose.z()));
+    } else {
+      const double theta_end = pose.z() + command.w_radps * dt_s;
+      const double turn_radius_m = command.v_mps / command.w_radps;
+      pose.x() += turn_radius_m * (std::sin(theta_end) - std::sin(pose.z()));
+      pose.y() -= turn_radius_m * (std::cos(theta_end) - std::cos(pose.z()));
+      pose.z() = theta_end;
+    }
+    lowest_y_m = std::min(lowest_y_m, pose.y());
+  }
+  EXPECT_GT(lowest_y_m, -1.0 + 0.01) << "the robot crossed (or grazed) the bottom wall";
+  EXPECT_LT(pose.x(), start.x() - 0.3) << "the robot did not get going along the wall";
 }
 
 }  // namespace

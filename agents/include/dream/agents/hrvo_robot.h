@@ -7,6 +7,7 @@
 #include "dream/agents/hrvo_avoidance.h"
 #include "dream/agents/hrvo_params.h"
 #include "dream/agents/robot.h"
+#include "dream/agents/unicycle_wall_guard.h"
 
 namespace dream::agents {
 
@@ -36,7 +37,9 @@ class HrvoRobot : public Robot {
   /// latest movement reading; it becomes the robot's current velocity.
   Eigen::Vector2d AvoidCollisions(const Eigen::Vector2d& preferred_mps);
 
-  /// AvoidCollisions, then the thesis's dxi_to_dxu and actuator_limit.
+  /// AvoidCollisions, then the thesis's dxi_to_dxu and actuator_limit, then
+  /// (with the arena check on) UnicycleWallGuard, so the heading's swing
+  /// towards a new velocity cannot carry the robot over a wall.
   UnicycleCommand DriveWithVelocity(const Eigen::Vector2d& preferred_mps);
 
   /// The last safe velocity chosen (the thesis's dxi).
@@ -44,6 +47,8 @@ class HrvoRobot : public Robot {
 
  private:
   std::unique_ptr<HrvoAvoidance> hrvo_;
+  bool guard_walls_;
+  UnicycleWallGuard wall_guard_;
   Eigen::Vector2d dxi_mps_ = Eigen::Vector2d::Zero();
   std::vector<HrvoNeighbour> neighbours_;  // scratch
 };
