@@ -16,20 +16,36 @@ LcmBus::LcmBus(std::string url) : url_(std::move(url)), lcm_(std::make_unique<::
                              "': check the URL (memq://, udpm://239.255.76.67:7667?ttl=0) and, for "
                              "udpm, that multicast is routed (ip route add 224.0.0.0/4 dev lo)");
   }
-  // Subscribing starts udpm's receive thread and its self test, here, before
-  // anyone relies on delivery.
-  ::lcm::Subscription* subscription = lcm_->subscribeFunction(".*", &LcmBus::Dispatch, this);
-  if (subscription == nullptr) throw std::runtime_error("cannot subscribe to LCM on " + url_);
-  subscription->setQueueCapacity(kQueueCapacity);
+  // Subscribing starts udpm's receive thread and its self test: do it now, on
+  // a channel nobody publishes, so what other processes' self tests left
+  // queued is gone before any handler subscribes.
+  subscription_ = lcm_->subscribeFunction(kStartUpChannel, &LcmBus::Dispatch, this);
+  if (subscription_ == nullptr) throw std::runtime_error("cannot subscribe to LCM on " + url_);
   DiscardStartUpLeftovers();
 }
 
 void LcmBus::DiscardStartUpLeftovers() {
   // Packets queued during the self test were counted for no live subscription;
-  // handing them out now, while nobody listens, brings LCM's count back in
-  // line with its queue. Bounded, in case the bus is already busy.
+  // taking them off the queue now, while no subscription matches them, keeps
+  // LCM's count in line with its queue. Bounded, in case the bus is busy.
   for (int i = 0; i < kQueueCapacity && lcm_->handleTimeout(0) > 0; ++i) {
   }
+}
+
+void LcmBus::ResubscribeForAllHandlers() {
+  // One LCM subscription whose regex is the union of the handlers' ones, so
+  // LCM drops traffic nobody here wants in its receive thread (an agent would
+  // otherwise wake up for every other robot's command).
+  std::string alternatives;
+  for (const Subscriber& subscriber : subscribers_) {
+    alternatives += (alternatives.empty() ? "" : "|") + ("(?:" + subscriber.channel_regex_text + ")");
+  }
+  ::lcm::Subscription* replacement =
+      lcm_->subscribeFunction("(?:" + alternatives + ")", &LcmBus::Dispatch, this);
+  if (replacement == nullptr) throw std::runtime_error("cannot subscribe to '" + alternatives + "' on " + url_);
+  replacement->setQueueCapacity(kQueueCapacity);
+  lcm_->unsubscribe(subscription_);
+  subscription_ = replacement;
 }
 
 LcmBus::~LcmBus() = default;
@@ -48,8 +64,14 @@ void LcmBus::Subscribe(const std::string& channel_regex, RawHandler handler) {
   } catch (const std::regex_error& e) {
     throw std::invalid_argument("cannot subscribe to '" + channel_regex + "': not a valid regex (" + e.what() + ")");
   }
-  subscribers_.push_back(Subscriber{std::move(regex), std::move(handler)});
+  subscribers_.push_back(Subscriber{std::move(regex), channel_regex, std::move(handler)});
   routes_.clear();
+  try {
+    ResubscribeForAllHandlers();
+  } catch (...) {
+    subscribers_.pop_back();  // the bus stays as it was
+    throw;
+  }
 }
 
 int LcmBus::HandleSubscriptions(int timeout_ms) {

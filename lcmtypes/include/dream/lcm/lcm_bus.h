@@ -12,19 +12,21 @@
 namespace lcm {
 class LCM;
 class ReceiveBuffer;
+class Subscription;
 }  // namespace lcm
 
 namespace dream::lcm {
 
 /// The real transport: an lcm::LCM opened on a URL chosen by the user.
 ///
-/// The bus holds exactly one LCM subscription (".*"), made when it opens, and
-/// routes each message to the handlers whose regex matches its channel. LCM
-/// 1.3.1 counts queued messages per subscription, and packets left over from
-/// its udpm start-up self test throw those counts off, so with several
-/// overlapping LCM subscriptions one of them could silently miss a message
-/// another received (the run log lacked a command the simulator acted on).
-/// One subscription cannot disagree with itself.
+/// The bus holds exactly one LCM subscription, whose regex is the union of
+/// its handlers' ones, and routes each message to the handlers whose regex
+/// matches its channel. LCM 1.3.1 counts queued messages per subscription,
+/// and packets left over from its udpm start-up self test throw those counts
+/// off, so with several overlapping LCM subscriptions one of them could
+/// silently miss a message another received (the run log lacked a command
+/// the simulator acted on). One subscription cannot disagree with itself, and
+/// the self test runs when the bus opens, before any handler subscribes.
 ///
 /// Its queue capacity is raised (LCM's default of 30 silently drops messages
 /// when a lockstep step delivers one command per robot), and udpm URLs get a
@@ -53,15 +55,20 @@ class LcmBus final : public LcmInterface {
  private:
   struct Subscriber {
     std::regex channel_regex;  // matched against the whole channel name, as LCM does
+    std::string channel_regex_text;
     RawHandler handler;
   };
+  /// Where the bus listens before any handler subscribes; nobody publishes there.
+  static constexpr const char* kStartUpChannel = "DREAM_LCMBUS_STARTING";
   static void Dispatch(const ::lcm::ReceiveBuffer* buffer, const std::string& channel, LcmBus* bus);
   void Deliver(const std::string& channel, const void* data, int size);
   const std::vector<size_t>& SubscribersOf(const std::string& channel);
   void DiscardStartUpLeftovers();
+  void ResubscribeForAllHandlers();
 
   std::string url_;
   std::unique_ptr<::lcm::LCM> lcm_;
+  ::lcm::Subscription* subscription_ = nullptr;  // owned by lcm_
   // deque: a handler may subscribe while it runs; its own element must not move.
   std::deque<Subscriber> subscribers_;
   // channel -> indices into subscribers_; a run uses few channels, so regexes
