@@ -203,7 +203,7 @@ int main(int argc, char** argv) {
   sweep_command->add_option("-j,--jobs", sweep_args.jobs, "Runs at once (default: one per core)")
       ->check(CLI::Range(1, 1024));
   sweep_command->add_option("--steps", sweep_args.steps, "Override the config's step limit in every run")
-      ->check(CLI::Range(1LL, 1000000000LL));
+      ->check(StepCount());
   sweep_command->add_option("--out", sweep_args.out_dir, "Sweep folder (its parent must exist)")->required();
   sweep_command->add_option("--timeout", sweep_args.run_timeout_s,
                             "Stop a run still going after this many seconds; it counts as failed")
