@@ -65,12 +65,17 @@ void LcmBus::Subscribe(const std::string& channel_regex, RawHandler handler) {
     throw std::invalid_argument("cannot subscribe to '" + channel_regex + "': not a valid regex (" + e.what() + ")");
   }
   subscribers_.push_back(Subscriber{std::move(regex), channel_regex, std::move(handler)});
-  routes_.clear();
   try {
     ResubscribeForAllHandlers();
   } catch (...) {
     subscribers_.pop_back();  // the bus stays as it was
     throw;
+  }
+  // Extend the known routes in place (never rebuild them): a handler may be
+  // subscribing from inside Deliver, which holds a reference to one of them.
+  const size_t added = subscribers_.size() - 1;
+  for (auto& [channel, targets] : routes_) {
+    if (std::regex_match(channel, subscribers_[added].channel_regex)) targets.push_back(added);
   }
 }
 
@@ -101,9 +106,13 @@ const std::vector<size_t>& LcmBus::SubscribersOf(const std::string& channel) {
 }
 
 void LcmBus::Deliver(const std::string& channel, const void* data, int size) {
-  // A copy: a handler that subscribes clears routes_.
-  const std::vector<size_t> targets = SubscribersOf(channel);
-  for (size_t index : targets) {
+  // By index up to the count at arrival, as LCM does: a handler that
+  // subscribes appends to this route, and the newcomer starts with the next
+  // message. (unordered_map keeps references to its values valid.)
+  const std::vector<size_t>& targets = SubscribersOf(channel);
+  const size_t count = targets.size();
+  for (size_t k = 0; k < count; ++k) {
+    const size_t index = targets[k];
     // Nothing may propagate into LCM's C code: log, count, carry on.
     try {
       subscribers_[index].handler(channel, data, size);
