@@ -14,6 +14,7 @@
 #include "commands.h"
 #include "config_override.h"
 #include "dream/agents/controller_factory.h"
+#include "dream/bridge/output_folder.h"
 #include "dream/config/run_config.h"
 #include "dream/sim/atomic_file.h"
 #include "parallel_runner.h"
@@ -46,22 +47,6 @@ std::string ReadBaseConfig(const std::string& path) {
 void CheckRunConfig(const config::ConfigNode& root) {
   const config::RunConfig config = config::LoadRunConfig(root);
   const agents::ControllerFactory factory(config);  // also loads the plugins the config names
-}
-
-/// The sweep's output folder: created if missing, its parent must exist.
-void PrepareSweepDir(const std::string& out_dir) {
-  const fs::path out(out_dir);
-  const fs::path parent = out.has_parent_path() ? out.parent_path() : fs::path(".");
-  if (!fs::is_directory(parent)) {
-    throw std::runtime_error("--out " + out_dir + ": its parent folder " + parent.string() + " does not exist");
-  }
-  std::error_code error;
-  fs::create_directory(out, error);
-  if (!error) fs::create_directory(out / "runs", error);
-  if (error || !fs::is_directory(out / "runs")) {
-    throw std::runtime_error("cannot create the sweep folder " + (out / "runs").string() +
-                             (error ? ": " + error.message() : std::string()));
-  }
 }
 
 /// The last line of a run's output that says what went wrong, for the table.
@@ -164,7 +149,8 @@ int RunSweep(const SweepArgs& args) {
     }
     config_texts.push_back(text);
   }
-  PrepareSweepDir(args.out_dir);
+  // Created if missing, its parent must exist, as for every --out.
+  bridge::OutputFolder(args.out_dir).MakeSubfolder("runs");
 
   // --- the runs, `jobs` at a time ---
   const std::string self = SelfExecutable();
