@@ -10,7 +10,7 @@
 
 #include "dream/bridge/lab_replay_world.h"
 #include "dream/bridge/mat_file.h"
-#include "dream/bridge/output_folder.h"
+#include "dream/sim/output_folder.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/lcm/channels.h"
 #include "dream/obstacles_t.hpp"
@@ -326,7 +326,7 @@ ImportedRun ImportLabRun(const std::string& result_path, const std::string& expo
   const LabResult& lab = imported.lab;
   const RunTrack& track = lab.track;
 
-  const OutputFolder out(out_dir);
+  const sim::OutputFolder out(out_dir);
   imported.log_path = out.PathOf("run.lcmlog");
   imported.summary_path = out.PathOf("summary.json");
   imported.picture_path = out.PathOf("trajectories.png");

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "dream/bridge/output_folder.h"
+#include "dream/sim/output_folder.h"
 #include "dream/bridge/run_track.h"
 #include "dream/config/run_config.h"
 #include "dream/sim/comparison_picture.h"
@@ -200,7 +200,7 @@ nlohmann::ordered_json RunComparison::Json() const {
 RunComparison CompareRunsAndWrite(const std::string& first_dir, const std::string& second_dir,
                                   const std::string& out_dir) {
   RunComparison comparison = CompareRuns(first_dir, second_dir);
-  const OutputFolder out(out_dir);
+  const sim::OutputFolder out(out_dir);
   const std::string picture = out.PathOf("comparison.png");
   out.WriteFile("comparison.json", comparison.Json().dump(2) + "\n");
   sim::ComparisonPicture::Render(

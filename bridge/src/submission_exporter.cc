@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "dream/bridge/npy_file.h"
-#include "dream/bridge/output_folder.h"
+#include "dream/sim/output_folder.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/bridge/submission_params.h"
 #include "dream/config/run_config.h"
@@ -152,8 +152,8 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
           "  dream compare <simulated run folder> <lab run folder>\n"
           "Before uploading, try it: dream check-submission <this folder> --out <folder>\n";
 
-  OutputFolder out(out_dir);
-  const OutputFolder upload(out.MakeSubfolder("upload"));
+  sim::OutputFolder out(out_dir);
+  const sim::OutputFolder upload(out.MakeSubfolder("upload"));
   upload.WriteFile(SubmissionFiles::kMainScript, SubmissionScriptTemplate());
   upload.WriteFile(SubmissionFiles::kParams, EncodeNpy(params.ToNpy()));
   upload.WriteFile(SubmissionFiles::kInitialPoses, EncodeNpy(initial));

@@ -18,7 +18,7 @@
 #include "dream/bridge/lab_import.h"
 #include "dream/bridge/lab_replay_world.h"
 #include "dream/bridge/metrics_json.h"
-#include "dream/bridge/output_folder.h"
+#include "dream/sim/output_folder.h"
 #include "dream/bridge/run_comparison.h"
 #include "dream/bridge/submission_exporter.h"
 #include "dream/bridge/submission_format.h"
@@ -143,7 +143,7 @@ int RunLabReplay(const LabReplayArgs& args) {
   if (!args.mode.empty()) config.sim.mode = sim::ParseWorldMode(args.mode);
   const agents::ControllerFactory factory(config);
 
-  const bridge::OutputFolder out(DefaultOut(args.out_dir, config.name, "_lab_replay"));
+  const sim::OutputFolder out(DefaultOut(args.out_dir, config.name, "_lab_replay"));
   const std::string log_path = out.PathOf("run.lcmlog");
   const bool in_process = !args.world_only;
   lcm::LcmBus bus(args.lcm_url.empty() ? (in_process ? "memq://" : lcm::ResolveLcmUrl("")) : lcm::ResolveLcmUrl(args.lcm_url));
@@ -210,7 +210,7 @@ int RunLabReplay(const LabReplayArgs& args) {
 
 int RunCheckSubmission(const CheckSubmissionArgs& args) {
   const bridge::ExportedSubmission exported = bridge::ExportedSubmission::Read(args.export_dir);
-  const bridge::OutputFolder out(DefaultOut(args.out_dir, exported.config.name, "_check"));
+  const sim::OutputFolder out(DefaultOut(args.out_dir, exported.config.name, "_check"));
   const std::string workdir = out.MakeSubfolder("lab_files");
   const std::string report_path = out.PathOf("check_report.json");
   for (const char* stale : {bridge::SubmissionFiles::kResult, "dream_result.partial.npy"}) {

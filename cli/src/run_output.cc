@@ -2,15 +2,15 @@
 
 #include <spdlog/spdlog.h>
 
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <nlohmann/json.hpp>
 #include <iostream>
 
 #include "dream/agents/controller_factory.h"
-#include "dream/agents/log_metrics.h"
+#include "dream/bridge/metrics_json.h"
 #include "dream/sim/atomic_file.h"
+#include "dream/sim/output_folder.h"
 #include "dream/sim/run_recorder.h"
 #include "dream/sim/run_report.h"
 #include "dream/sim/run_summary.h"
@@ -22,21 +22,6 @@
 #include "terminal_progress.h"
 
 namespace dream::cli {
-
-nlohmann::ordered_json ExperimentMetricsJson(const config::RunConfig& config, const std::string& log_path) {
-  const agents::ControllerFactory factory(config);
-  const agents::MetricsReport report = agents::MetricsFromLog(factory, log_path);
-  nlohmann::ordered_json json;
-  json["kind"] = factory.kind();
-  for (const auto& [name, value] : report.values) json[name] = value;
-  for (const auto& [name, steps] : report.steps) json[name] = steps;
-  for (const auto& [name, series] : report.series) {
-    nlohmann::json points = nlohmann::json::array();
-    for (const auto& [step, value] : series) points.push_back({step, value});
-    json[name] = points;
-  }
-  return json;
-}
 
 std::string ReadConfigText(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -61,24 +46,8 @@ config::RunConfig LoadConfig(const RunArgs& args) {
 }
 
 std::string PrepareOutputDir(const RunArgs& args, const config::RunConfig& config) {
-  namespace fs = std::filesystem;
-  fs::path out = args.out_dir.empty() ? fs::path("runs") / config.name : fs::path(args.out_dir);
-  if (!out.has_filename() && out.has_parent_path()) out = out.parent_path();  // "runs/x/" is runs/x
-  const fs::path parent = out.has_parent_path() ? out.parent_path() : fs::path(".");
-  std::error_code error;
-  if (args.out_dir.empty()) {
-    fs::create_directories(out, error);
-  } else if (!fs::is_directory(parent)) {
-    throw std::runtime_error("output folder " + out.string() + ": its parent folder " + parent.string() +
-                             " does not exist");
-  } else {
-    fs::create_directory(out, error);
-  }
-  if (error || !fs::is_directory(out)) {
-    throw std::runtime_error("cannot create the output folder " + out.string() +
-                             (error ? ": " + error.message() : std::string()));
-  }
-  return out.string();
+  if (!args.out_dir.empty()) return sim::OutputFolder(args.out_dir).dir();
+  return sim::OutputFolder("runs/" + config.name, sim::OutputFolder::Parents::kCreate).dir();
 }
 
 int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std::string& out_dir) {
@@ -101,7 +70,11 @@ int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std:
   }
   nlohmann::ordered_json summary =
       nlohmann::ordered_json::parse(sim::RunSummaryJson(config, outcome, world, "run.lcmlog"));
-  summary["metrics"] = ExperimentMetricsJson(config, log_path);
+  summary["metrics"] = bridge::MetricsJson(config, log_path);
+  if (summary["metrics"].contains("error")) {
+    // The run and its log stand; only the experiment's own numbers are missing.
+    spdlog::warn("{}: no experiment metrics: {}", log_path, summary["metrics"]["error"].get<std::string>());
+  }
   sim::WriteFileAtomically(out_dir + "/summary.json", summary.dump(2) + "\n");
 
   const sim::RunReport report = sim::RunReport::FromViolations(world.step(), world.violations());

@@ -14,7 +14,7 @@
 #include "commands.h"
 #include "config_override.h"
 #include "dream/agents/controller_factory.h"
-#include "dream/bridge/output_folder.h"
+#include "dream/sim/output_folder.h"
 #include "dream/config/run_config.h"
 #include "dream/sim/atomic_file.h"
 #include "parallel_runner.h"
@@ -150,7 +150,7 @@ int RunSweep(const SweepArgs& args) {
     config_texts.push_back(text);
   }
   // Created if missing, its parent must exist, as for every --out.
-  bridge::OutputFolder(args.out_dir).MakeSubfolder("runs");
+  sim::OutputFolder(args.out_dir).MakeSubfolder("runs");
 
   // --- the runs, `jobs` at a time ---
   const std::string self = SelfExecutable();

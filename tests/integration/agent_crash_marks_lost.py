@@ -15,20 +15,17 @@ and robot 7's commands coming from two agent ids.
 Usage: netns.sh agent_crash_marks_lost.py --dream BIN --source DIR --types-dir DIR
 """
 
-import argparse
 import os
 import signal
 import time
 
-from dreamtest import check, config_with, import_types, main, read_events, read_summary, require_private_netns
+from dreamtest import (
+    arguments, check, config_with, import_types, main, read_events, read_summary, require_private_netns,
+)
 
 
 def test(ctx):
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--dream", required=True)
-    parser.add_argument("--source", required=True)
-    parser.add_argument("--types-dir", required=True)
-    args = parser.parse_args()
+    args = arguments(types_dir=True)
     require_private_netns()
     dream = import_types(args.types_dir)
     config = config_with(os.path.join(args.source, "config", "go_to_goal.yaml"), ctx.path("crash.yaml"),

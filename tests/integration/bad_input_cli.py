@@ -9,11 +9,10 @@ command was given (refused_out*) was created.
 Usage: netns.sh bad_input_cli.py --dream BIN --source DIR
 """
 
-import argparse
 import os
 import re
 
-from dreamtest import check, config_with, fail, main, read_events, require_private_netns
+from dreamtest import arguments, check, config_with, fail, main, read_events, require_private_netns
 
 EXIT_INPUT = 1
 EXIT_USAGE = 2
@@ -52,10 +51,7 @@ def truncated_log(ctx, dream, config):
 
 
 def test(ctx):
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--dream", required=True)
-    parser.add_argument("--source", required=True)
-    args = parser.parse_args()
+    args = arguments()
     require_private_netns()  # `dream launch` of a broken config must not reach the network, but might
     dream = args.dream
     config = os.path.join(args.source, "config", "go_to_goal.yaml")

@@ -5,6 +5,7 @@ Every test prints one line "FAIL: reason" and exits 1 on the first failed check
 temporary folder.
 """
 
+import argparse
 import json
 import os
 import re
@@ -54,6 +55,22 @@ def main(test):
     finally:
         ctx.close()
     sys.exit(code)
+
+
+def argument_parser(*, types_dir=False):
+    """The options CMake gives every driver: --dream (the binary), --source (the
+    checkout) and, with types_dir, --types-dir (build/python, the generated types)."""
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--dream", required=True)
+    parser.add_argument("--source", required=True)
+    if types_dir:
+        parser.add_argument("--types-dir", required=True)
+    return parser
+
+
+def arguments(*, types_dir=False):
+    """argument_parser(...).parse_args(), for drivers with no options of their own."""
+    return argument_parser(types_dir=types_dir).parse_args()
 
 
 def import_types(types_dir):

@@ -22,13 +22,14 @@ command-channel messages.
 Usage: netns.sh foreign_packets_do_not_crash.py --dream BIN --source DIR --types-dir DIR
 """
 
-import argparse
 import math
 import os
 import struct
 import time
 
-from dreamtest import Udpm, check, config_with, import_types, main, read_events, read_summary, require_private_netns
+from dreamtest import (
+    Udpm, arguments, check, config_with, import_types, main, read_events, read_summary, require_private_netns,
+)
 
 OUR_AGENT_ID = 0x0D1E5E1F0D1E5E1F
 STRANGER_AGENT_ID = 0x5757575757575757
@@ -109,11 +110,7 @@ def drive_robot_2(ctx, bus, dream, sim):
 
 
 def test(ctx):
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--dream", required=True)
-    parser.add_argument("--source", required=True)
-    parser.add_argument("--types-dir", required=True)
-    args = parser.parse_args()
+    args = arguments(types_dir=True)
     require_private_netns()
     dream = import_types(args.types_dir)
     config = config_with(os.path.join(args.source, "config", "go_to_goal.yaml"), ctx.path("foreign.yaml"),

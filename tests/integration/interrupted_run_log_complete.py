@@ -11,13 +11,12 @@ that the Python reader reads every event the summary counts.
 Usage: interrupted_run_log_complete.py --dream BIN --source DIR --types-dir DIR
 """
 
-import argparse
 import os
 import signal
 import sys
 import time
 
-from dreamtest import TestFailure, check, config_with, main, read_summary
+from dreamtest import TestFailure, arguments, check, config_with, main, read_summary
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -55,11 +54,7 @@ def interrupt_run(ctx, args, mode, run_for_s):
 
 
 def test(ctx):
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--dream", required=True)
-    parser.add_argument("--source", required=True)
-    parser.add_argument("--types-dir", required=True)
-    args = parser.parse_args()
+    args = arguments(types_dir=True)
     # Real time: the signal arrives while the world waits for the next tick (the usual Ctrl-C).
     # Lockstep: it arrives while the world runs flat out, writing the log as fast as it can.
     failures = []

@@ -8,11 +8,10 @@ Each damaged copy of a real run log changes one field of the header of event 100
 Usage: log_damaged_header_no_crash.py --dream BIN --source DIR
 """
 
-import argparse
 import os
 import struct
 
-from dreamtest import LogFormatError, check, main, read_all, read_events
+from dreamtest import LogFormatError, arguments, check, main, read_all, read_events
 
 EVENT = 100
 # Field offsets inside an event header: sync word 0, event number 4, timestamp 12,
@@ -28,10 +27,7 @@ DAMAGE = [
 
 
 def test(ctx):
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--dream", required=True)
-    parser.add_argument("--source", required=True)
-    args = parser.parse_args()
+    args = arguments()
 
     out = ctx.path("run")
     ctx.run([args.dream, "-q", "run", os.path.join(args.source, "config", "go_to_goal.yaml"), "--out", out],

@@ -11,18 +11,15 @@ Usage: netns.sh logplayer_replay.py --dream BIN --source DIR [--log RUN.lcmlog] 
 (--log plays that log instead of a fresh run; the bridge test passes a log imported from the lab.)
 """
 
-import argparse
 import os
 import signal
 import time
 
-from dreamtest import Udpm, check, main, read_all, require_private_netns
+from dreamtest import Udpm, argument_parser, check, main, read_all, require_private_netns
 
 
 def test(ctx):
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--dream", required=True)
-    parser.add_argument("--source", required=True)
+    parser = argument_parser()
     parser.add_argument("--log", default="", help="play this run log instead of making one")
     parser.add_argument("--speed", default="2", help="lcm-logplayer -s (default 2)")
     args = parser.parse_args()

@@ -13,10 +13,9 @@ Usage: netns.sh multiprocess_udpm_run.py --dream BIN --source DIR --types-dir DI
 (--config defaults to config/go_to_goal.yaml; --steps caps both runs, with --all-steps.)
 """
 
-import argparse
 import os
 
-from dreamtest import check, import_types, main, read_events, read_summary, require_private_netns
+from dreamtest import argument_parser, check, import_types, main, read_events, read_summary, require_private_netns
 
 
 def commands_by_robot(log_path, dream):
@@ -40,10 +39,7 @@ def commands_by_robot(log_path, dream):
 
 
 def test(ctx):
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--dream", required=True)
-    parser.add_argument("--source", required=True)
-    parser.add_argument("--types-dir", required=True)
+    parser = argument_parser(types_dir=True)
     parser.add_argument("--config", default="config/go_to_goal.yaml", help="relative to --source")
     parser.add_argument("--steps", type=int, default=0)
     args = parser.parse_args()

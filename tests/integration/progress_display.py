@@ -12,22 +12,18 @@ Three real-time runs at once (memq://, no network), long enough to show progress
 Usage: progress_display.py --dream BIN --source DIR
 """
 
-import argparse
 import os
 import re
 import shlex
 
-from dreamtest import check, main
+from dreamtest import arguments, check, main
 
 TTY_STEPS = 60     # 2 s of real time: the bar appears after 0.5 s
 PLAIN_STEPS = 75   # 2.5 s: one plain line at 2 s
 
 
 def test(ctx):
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--dream", required=True)
-    parser.add_argument("--source", required=True)
-    args = parser.parse_args()
+    args = arguments()
     config = os.path.join(args.source, "config", "go_to_goal.yaml")
 
     def run_argv(name, steps, quiet=False):

@@ -13,14 +13,13 @@ missing path and a wrong types folder each raise the documented error naming the
 Usage: python_reader_loads_run.py --dream BIN --source DIR --types-dir BUILD/python
 """
 
-import argparse
 import math
 import os
 import re
 import subprocess
 import sys
 
-from dreamtest import check, fail, import_types, main, read_events, read_summary
+from dreamtest import arguments, check, fail, import_types, main, read_events, read_summary
 
 STEPS = 150
 MICROS_PER_STEP = 33000
@@ -40,11 +39,7 @@ def expect_error(load, path, error_type, fragments, **kwargs):
 
 
 def test(ctx):
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--dream", required=True)
-    parser.add_argument("--source", required=True)
-    parser.add_argument("--types-dir", required=True)
-    args = parser.parse_args()
+    args = arguments(types_dir=True)
     sys.path.insert(0, os.path.join(args.source, "python"))
     import numpy as np
     import dream_log

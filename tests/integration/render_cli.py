@@ -21,7 +21,6 @@ refuses bad input with one line, a documented exit code and nothing written.
 Usage: render_cli.py --dream BIN --source DIR
 """
 
-import argparse
 import math
 import os
 import shutil
@@ -29,7 +28,7 @@ import signal
 import struct
 import subprocess
 
-from dreamtest import check, main
+from dreamtest import arguments, check, main
 
 EXIT_INPUT = 1
 EXIT_USAGE = 2
@@ -88,10 +87,7 @@ def check_video(ctx, dream, run, out, extra, fps, speed):
 
 
 def test(ctx):
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--dream", required=True)
-    parser.add_argument("--source", required=True)
-    args = parser.parse_args()
+    args = arguments()
     dream = args.dream
     check(shutil.which("ffmpeg") and shutil.which("ffprobe"),
           "ffmpeg/ffprobe not found: apt-get install ffmpeg (it is in .ci/debian-packages.txt)")

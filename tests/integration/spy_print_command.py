@@ -12,13 +12,12 @@ the printed command started under Xvfb for 5 s, and it must not die with an exce
 Usage: netns.sh spy_print_command.py --dream BIN --source DIR --types-jar JAR
 """
 
-import argparse
 import os
 import shlex
 import shutil
 import subprocess
 
-from dreamtest import check, main, require_private_netns
+from dreamtest import argument_parser, check, main, require_private_netns
 
 
 def parse_spy_line(line):
@@ -31,9 +30,7 @@ def parse_spy_line(line):
 
 
 def test(ctx):
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--dream", required=True)
-    parser.add_argument("--source", required=True)
+    parser = argument_parser()
     parser.add_argument("--types-jar", required=True)
     args = parser.parse_args()
 

@@ -19,14 +19,13 @@ anything runs; Ctrl-C and runs that fail to run give the documented exit codes.
 Usage: sweep_cli.py --dream BIN --source DIR
 """
 
-import argparse
 import csv
 import os
 import re
 import signal
 import time
 
-from dreamtest import check, main
+from dreamtest import arguments, check, main
 
 EXIT_INPUT = 1
 EXIT_USAGE = 2
@@ -188,10 +187,7 @@ def interrupt(ctx, dream, config):
 
 
 def test(ctx):
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--dream", required=True)
-    parser.add_argument("--source", required=True)
-    args = parser.parse_args()
+    args = arguments()
     config = os.path.join(args.source, "config", "go_to_goal.yaml")
     print(small_sweep(ctx, args.dream, config))
     print(parameter_sweep(ctx, args.dream, config))

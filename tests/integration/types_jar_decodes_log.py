@@ -11,11 +11,10 @@ radios (hrvo_circle), DREAM_RADIO_<n> -> dream.radio_message_t.
 Usage: types_jar_decodes_log.py --dream BIN --source DIR --types-jar JAR --lcm-jar JAR [--javac BIN --java BIN]
 """
 
-import argparse
 import os
 import shutil
 
-from dreamtest import check, main, read_summary
+from dreamtest import argument_parser, check, main, read_summary
 
 EXPECTED = {
     "DREAM_POSES": "dream.robot_poses_t",
@@ -26,9 +25,7 @@ EXPECTED = {
 
 
 def test(ctx):
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--dream", required=True)
-    parser.add_argument("--source", required=True)
+    parser = argument_parser()
     parser.add_argument("--types-jar", required=True)
     parser.add_argument("--lcm-jar", required=True)
     parser.add_argument("--javac", default=shutil.which("javac"))

@@ -2,18 +2,23 @@
 
 #include <string>
 
-namespace dream::bridge {
+namespace dream::sim {
 
-/// A folder the bridge writes into, which no file name can escape: names are
+/// A folder a command writes its outputs into (a run, an export, a
+/// comparison), which no file name can escape: names are
 /// plain relative paths without "..", and the real path of what is written
 /// (symbolic links resolved) must stay inside the folder. Every file is
 /// written atomically (a temporary file in the same folder, then a rename),
 /// so a reader sees the old file or the new one, never half of one.
 class OutputFolder {
  public:
-  /// Creates `dir` if missing; its parent folder must exist.
-  /// @throws std::runtime_error naming the folder.
-  explicit OutputFolder(std::string dir);
+  /// What to do when the folder's parent is missing. A folder the user named
+  /// (--out) must have its parent: a mistyped parent is a mistake to report,
+  /// not a tree to create. A default folder (runs/<name>) is made with its parents.
+  enum class Parents { kMustExist, kCreate };
+
+  /// Creates `dir` if missing. @throws std::runtime_error naming the folder.
+  explicit OutputFolder(std::string dir, Parents parents = Parents::kMustExist);
 
   /// `dir/name`, after checking that it stays inside the folder.
   /// @throws std::runtime_error naming the path when it would escape.
@@ -32,8 +37,4 @@ class OutputFolder {
   std::string real_dir_;  // canonical path, for the escape check
 };
 
-/// Throws std::runtime_error when `name` is not a plain relative path that
-/// stays below its folder (empty, absolute, "..", or a NUL byte).
-void CheckRelativeName(const std::string& name);
-
-}  // namespace dream::bridge
+}  // namespace dream::sim

@@ -1,13 +1,16 @@
-#include "dream/bridge/output_folder.h"
+#include "dream/sim/output_folder.h"
 
 #include <filesystem>
 #include <stdexcept>
 
 #include "dream/sim/atomic_file.h"
 
-namespace dream::bridge {
+namespace dream::sim {
 namespace fs = std::filesystem;
+namespace {
 
+// Throws when `name` is not a plain relative path that stays below its
+// folder (empty, absolute, "..", or a NUL byte).
 void CheckRelativeName(const std::string& name) {
   if (name.empty() || name.find('\0') != std::string::npos) {
     throw std::runtime_error("refusing to write a file with an empty or binary name");
@@ -21,18 +24,22 @@ void CheckRelativeName(const std::string& name) {
   }
 }
 
-OutputFolder::OutputFolder(std::string dir) : dir_(std::move(dir)) {
+}  // namespace
+
+OutputFolder::OutputFolder(std::string dir, Parents parents) : dir_(std::move(dir)) {
   if (dir_.empty()) throw std::runtime_error("the output folder name is empty");
   fs::path out(dir_);
   if (!out.has_filename() && out.has_parent_path()) out = out.parent_path();  // "runs/x/" is runs/x
-  // Like dream run --out: the folder is made, its parent must be there. A
-  // mistyped parent is a mistake to report, not a tree to create.
+  dir_ = out.string();
   const fs::path parent = out.has_parent_path() ? out.parent_path() : fs::path(".");
-  if (!fs::is_directory(parent)) {
-    throw std::runtime_error("output folder " + dir_ + ": its parent folder " + parent.string() + " does not exist");
-  }
   std::error_code error;
-  fs::create_directory(out, error);
+  if (parents == Parents::kCreate) {
+    fs::create_directories(out, error);
+  } else if (!fs::is_directory(parent)) {
+    throw std::runtime_error("output folder " + dir_ + ": its parent folder " + parent.string() + " does not exist");
+  } else {
+    fs::create_directory(out, error);
+  }
   if (error || !fs::is_directory(out)) {
     throw std::runtime_error("cannot create the output folder " + dir_ + (error ? ": " + error.message() : std::string()));
   }
@@ -67,7 +74,7 @@ std::string OutputFolder::MakeSubfolder(const std::string& name) const {
 }
 
 void OutputFolder::WriteFile(const std::string& name, const std::string& bytes) const {
-  sim::WriteFileAtomically(PathOf(name), bytes);
+  WriteFileAtomically(PathOf(name), bytes);
 }
 
-}  // namespace dream::bridge
+}  // namespace dream::sim

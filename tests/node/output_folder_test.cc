@@ -1,0 +1,85 @@
+#include "dream/sim/output_folder.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <sstream>
+
+namespace dream::sim {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+class OutputFolderTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    base_ = fs::temp_directory_path() / ("dream_output_folder_" + std::to_string(::getpid()));
+    fs::remove_all(base_);
+    fs::create_directories(base_);
+  }
+  void TearDown() override { fs::remove_all(base_); }
+
+  std::string Path(const std::string& name) const { return (base_ / name).string(); }
+  fs::path base_;
+};
+
+std::string MessageOf(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST_F(OutputFolderTest, NamesThatWouldLeaveTheFolderAreRefused) {
+  const OutputFolder folder(Path("plain"));
+  EXPECT_THAT(MessageOf([&] { folder.PathOf("../x"); }), HasSubstr("'..' would escape"));
+  EXPECT_THAT(MessageOf([&] { folder.PathOf("a/../../x"); }), HasSubstr("'..' would escape"));
+  EXPECT_THAT(MessageOf([&] { folder.PathOf("/etc/passwd"); }), HasSubstr("absolute path"));
+  EXPECT_THAT(MessageOf([&] { folder.PathOf(""); }), HasSubstr("empty"));
+  EXPECT_EQ(folder.PathOf("a/b.npy"), Path("plain") + "/a/b.npy");
+}
+
+TEST_F(OutputFolderTest, SymbolicLinkLeadingOutsideIsRefused) {
+  fs::create_directories(base_ / "outside");
+  const OutputFolder folder(Path("out"));
+  fs::create_directory_symlink(base_ / "outside", base_ / "out" / "upload");
+  EXPECT_THAT(MessageOf([&] { folder.WriteFile("upload/x.txt", "x"); }), HasSubstr("outside the output folder"));
+  EXPECT_TRUE(fs::is_empty(base_ / "outside"));
+}
+
+TEST_F(OutputFolderTest, NamedFolderNeedsItsParentDefaultFolderIsMadeWithParents) {
+  EXPECT_THAT(MessageOf([&] { OutputFolder(Path("missing/run")); }),
+              HasSubstr("its parent folder " + Path("missing") + " does not exist"));
+  EXPECT_FALSE(fs::exists(base_ / "missing"));
+  const OutputFolder made(Path("runs/go_to_goal/"), OutputFolder::Parents::kCreate);
+  EXPECT_TRUE(fs::is_directory(base_ / "runs" / "go_to_goal"));
+  EXPECT_EQ(made.dir(), Path("runs/go_to_goal")) << "a trailing slash names the same folder";
+}
+
+TEST_F(OutputFolderTest, FileWrittenWholeWithNoTemporaryLeftBehind) {
+  const OutputFolder folder(Path("out"));
+  folder.WriteFile("a.txt", "first");
+  folder.WriteFile("a.txt", "second");
+  std::ifstream in(folder.PathOf("a.txt"));
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), "second");
+  int files = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(base_ / "out")) ++files;
+  EXPECT_EQ(files, 1);
+}
+
+TEST_F(OutputFolderTest, AFileWhereTheFolderShouldBeIsReported) {
+  std::ofstream(Path("taken")) << "x";
+  EXPECT_THAT(MessageOf([&] { OutputFolder(Path("taken")); }), HasSubstr("cannot create the output folder"));
+}
+
+}  // namespace
+}  // namespace dream::sim
