@@ -66,8 +66,18 @@ int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std:
     TerminalProgress progress(config.sim.progress_interval_s);
     node.set_progress_reporter(progress.reporter());
     outcome = node.Run(StopFlag());
-    recorder.Close();
+    try {
+      recorder.Close();
+    } catch (const std::exception& e) {
+      // The node has flushed the log already, so this is rare (a rename that
+      // fails); the summary still tells what the run did and why the log is short.
+      outcome.end = sim::RunOutcome::End::kFailed;
+      outcome.reason = e.what();
+    }
+    outcome.log_events = recorder.events_written();
   }
+  // Written whatever the outcome: after a failed run it says why, and the log
+  // keeps every whole event up to the failure.
   nlohmann::ordered_json summary =
       nlohmann::ordered_json::parse(sim::RunSummaryJson(config, outcome, world, "run.lcmlog"));
   summary["metrics"] = bridge::MetricsJson(config, log_path);
@@ -75,20 +85,34 @@ int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std:
     // The run and its log stand; only the experiment's own numbers are missing.
     spdlog::warn("{}: no experiment metrics: {}", log_path, summary["metrics"]["error"].get<std::string>());
   }
-  sim::WriteFileAtomically(out_dir + "/summary.json", summary.dump(2) + "\n");
+  try {
+    sim::WriteFileAtomically(out_dir + "/summary.json", summary.dump(2) + "\n");
+  } catch (const std::exception& e) {
+    // A full disk: say so once, and that the run's outputs are incomplete.
+    spdlog::error("{} ({} after {} steps; the run's outputs are incomplete)", e.what(), sim::EndName(outcome.end),
+                  outcome.steps);
+    return kExitRunFailed;
+  }
 
   const sim::RunReport report = sim::RunReport::FromViolations(world.step(), world.violations());
   spdlog::info("{} after {} steps ({:.1f} s simulated, {:.2f} s wall): {}", sim::EndName(outcome.end),
                outcome.steps, world.time_s(), outcome.wall_time_s, outcome.reason);
   std::cout << report.Text();
   std::cout << "log:     " << log_path << "\nsummary: " << out_dir << "/summary.json\n";
+  bool picture_failed = false;
   if (outcome.steps > 0 || outcome.end == sim::RunOutcome::End::kFinished) {
-    // With the config's goals, like `dream render` draws them.
-    sim::TrajectoryPicture::Render(sim::RunTrack::Read(log_path), ArenaOverlaysFromConfig(config),
-                                   out_dir + "/trajectories.png", sim::RenderFormat::kPng, 1280);
-    std::cout << "picture: " << out_dir << "/trajectories.png\n";
+    try {
+      // With the config's goals, like `dream render` draws them.
+      sim::TrajectoryPicture::Render(sim::RunTrack::Read(log_path), ArenaOverlaysFromConfig(config),
+                                     out_dir + "/trajectories.png", sim::RenderFormat::kPng, 1280);
+      std::cout << "picture: " << out_dir << "/trajectories.png\n";
+    } catch (const std::exception& e) {
+      spdlog::error("no trajectories.png: {}", e.what());
+      picture_failed = true;
+    }
   }
-  return ExitCodeFor(outcome, report);
+  const int exit_code = ExitCodeFor(outcome, report);
+  return picture_failed ? kExitRunFailed : exit_code;
 }
 
 int ExitCodeFor(const sim::RunOutcome& outcome, const sim::RunReport& report) {

@@ -25,7 +25,9 @@ std::string PrepareOutputDir(const RunArgs& args, const config::RunConfig& confi
 /// Runs the simulator on `lcm` until the run ends, writing <out_dir>/config.yaml
 /// (a copy of the config file), <out_dir>/run.lcmlog and <out_dir>/summary.json
 /// (all atomically), and prints the Robotarium verdict. Returns the process
-/// exit code.
+/// exit code: kExitRunFailed when the run failed (e.g. its log could not be
+/// written: summary.json then says why, and the log keeps every whole event
+/// before the failure) or an output cannot be written (one line says which).
 int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std::string& out_dir);
 
 /// The exit code for how a run ended and what the Robotarium would make of

@@ -10,6 +10,7 @@
 #include "dream/robot_poses_t.hpp"
 #include "dream/sim/atomic_file.h"
 #include "dream/sim/sim_node.h"
+#include "run_with_file_size_limit.h"
 #include "scripted_agent.h"
 
 namespace dream::sim {
@@ -90,6 +91,191 @@ TEST_F(RunRecorderTest, SimNodeRecordsEveryStepInSimulatedTime) {
   }
   EXPECT_EQ(expected_step, 21);  // steps 0..20: the final poses are recorded too
   EXPECT_EQ(commands, 2 * 20);
+}
+
+// Each test event: channel "CH" and 100 bytes of data, 28 bytes of header.
+constexpr int kTestDataBytes = 100;
+constexpr int64_t kTestEventBytes = 28 + 2 + kTestDataBytes;
+
+std::vector<uint8_t> TestEventData(int index) { return std::vector<uint8_t>(kTestDataBytes, static_cast<uint8_t>(index)); }
+
+/// The log at `path` holds exactly events 0..count-1 as the tests write them.
+void ExpectTestEvents(const std::string& path, int64_t count) {
+  ASSERT_TRUE(fs::exists(path));
+  EXPECT_EQ(static_cast<int64_t>(fs::file_size(path)), count * kTestEventBytes);
+  const auto records = lcm::LogReader::ReadAll(path);  // throws on a half event
+  ASSERT_EQ(static_cast<int64_t>(records.size()), count);
+  for (int i = 0; i < count; ++i) {
+    EXPECT_EQ(records[static_cast<size_t>(i)].utime, 33000 * i);
+    EXPECT_EQ(records[static_cast<size_t>(i)].data, TestEventData(i));
+  }
+}
+
+class RunRecorderWriteFailureTest : public RunRecorderTest, public ::testing::WithParamInterface<int> {};
+
+// The file size limit stops a write in the middle of an event, wherever stdio
+// happens to flush (every event, every 7, or when its buffer fills).
+TEST_P(RunRecorderWriteFailureTest, CutsTheLogBackToItsLastWholeEventAndKeepsIt) {
+  const int flush_interval_events = GetParam();
+  const std::string path = (dir_ / "run.lcmlog").string();
+  constexpr rlim_t kLimitBytes = 10000;  // not a multiple of kTestEventBytes
+  const int64_t whole_events = static_cast<int64_t>(kLimitBytes) / kTestEventBytes;
+  const auto report = testing::RunWithFileSizeLimit(kLimitBytes, [&](testing::ChildReport* out) {
+    RunRecorder recorder(path, flush_interval_events);
+    int i = 0;
+    try {
+      for (; i < 1000; ++i) recorder.Write("CH", 33000 * i, TestEventData(i).data(), kTestDataBytes);
+    } catch (const std::runtime_error& e) {
+      (*out)["error"] = e.what();
+    }
+    (*out)["failed_at_event"] = std::to_string(i);
+    (*out)["failed"] = recorder.failed() ? "yes" : "no";
+    (*out)["events_written"] = std::to_string(recorder.events_written());
+    (*out)["part_size"] = std::to_string(fs::file_size(path + ".part"));
+    try {
+      recorder.Write("CH", 0, TestEventData(0).data(), kTestDataBytes);
+      (*out)["write_after_failure"] = "accepted";
+    } catch (const std::runtime_error& e) {
+      (*out)["write_after_failure"] = e.what();
+    }
+    recorder.Close();  // a failure already reported: no second exception
+    (*out)["closed"] = "yes";
+  });
+  ASSERT_EQ(report.count("child_error"), 0u) << report.at("child_error");
+  EXPECT_EQ(report.at("failed"), "yes");
+  EXPECT_EQ(report.at("closed"), "yes");
+  const std::string& error = report.at("error");
+  EXPECT_NE(error.find("writing " + path + ".part failed: File too large"), std::string::npos) << error;
+  EXPECT_NE(error.find("keeps the " + std::to_string(whole_events) + " whole events"), std::string::npos) << error;
+  EXPECT_GE(std::stoll(report.at("failed_at_event")), whole_events);
+  EXPECT_EQ(std::stoll(report.at("events_written")), whole_events);
+  EXPECT_EQ(std::stoll(report.at("part_size")), whole_events * kTestEventBytes);
+  EXPECT_EQ(report.at("write_after_failure"), error);  // refused, nothing written
+  EXPECT_FALSE(fs::exists(path + ".part"));
+  ExpectTestEvents(path, whole_events);
+}
+
+INSTANTIATE_TEST_SUITE_P(FlushIntervals, RunRecorderWriteFailureTest, ::testing::Values(1, 7, 256));
+
+TEST_F(RunRecorderTest, FailureFoundByCloseIsReportedAndTheWholeEventsKept) {
+  // Everything fits in stdio's buffer, so the disk refuses it only at Close.
+  const std::string path = (dir_ / "run.lcmlog").string();
+  constexpr rlim_t kLimitBytes = 1000;
+  const auto report = testing::RunWithFileSizeLimit(kLimitBytes, [&](testing::ChildReport* out) {
+    RunRecorder recorder(path, 1000);
+    for (int i = 0; i < 20; ++i) recorder.Write("CH", 33000 * i, TestEventData(i).data(), kTestDataBytes);
+    (*out)["failed_before_close"] = recorder.failed() ? "yes" : "no";
+    try {
+      recorder.Close();
+      (*out)["close"] = "ok";
+    } catch (const std::runtime_error& e) {
+      (*out)["close"] = e.what();
+    }
+    (*out)["events_written"] = std::to_string(recorder.events_written());
+  });
+  ASSERT_EQ(report.count("child_error"), 0u) << report.at("child_error");
+  EXPECT_EQ(report.at("failed_before_close"), "no");
+  EXPECT_NE(report.at("close").find("File too large"), std::string::npos) << report.at("close");
+  const int64_t whole_events = static_cast<int64_t>(kLimitBytes) / kTestEventBytes;
+  EXPECT_EQ(std::stoll(report.at("events_written")), whole_events);
+  EXPECT_FALSE(fs::exists(path + ".part"));
+  ExpectTestEvents(path, whole_events);
+}
+
+/// Three robots driving forward, each with its own scripted agent, on `bus`.
+std::vector<std::unique_ptr<testing::ScriptedAgent>> ForwardAgents(lcm::LcmInterface& bus) {
+  std::vector<std::unique_ptr<testing::ScriptedAgent>> agents;
+  for (int id = 0; id < 3; ++id) {
+    agents.push_back(std::make_unique<testing::ScriptedAgent>(bus, id, 10 + id,
+                                                              [](const robot_poses_t&, velocity_command_t* c) {
+                                                                c->v = 0.05;
+                                                                return true;
+                                                              }));
+  }
+  return agents;
+}
+
+/// Runs a lockstep SimNode recording to `path` under a file size limit; when
+/// `big_message_step` >= 0, a foreign 100 kB message is sent at that step.
+testing::ChildReport RunSimNodeWithFileSizeLimit(const std::string& path, rlim_t limit_bytes,
+                                                 int64_t big_message_step) {
+  return testing::RunWithFileSizeLimit(limit_bytes, [&](testing::ChildReport* out) {
+    lcm::LcmBus bus("memq://");
+    UnicycleWorld world(WorldParams{}, {{-1.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}});
+    const std::vector<uint8_t> big_message(100000, 7);
+    // Subscribed before the agents, so the message is queued before their
+    // commands and recorded while the world still waits at that step.
+    bus.Subscribe("DREAM_POSES", [&](const std::string&, const void*, int) {
+      if (world.step() == big_message_step) bus.Publish("BIG", big_message.data(), static_cast<int>(big_message.size()));
+    });
+    const auto agents = ForwardAgents(bus);
+    SimNodeOptions options;
+    options.max_steps = 100000;
+    options.stop_when_done = false;
+    options.progress_interval_s = 0;
+    RunRecorder recorder(path);
+    SimNode node(bus, world, &recorder, options);
+    std::atomic<bool> stop{false};
+    const RunOutcome outcome = node.Run(stop);
+    recorder.Close();
+    (*out)["end"] = EndName(outcome.end);
+    (*out)["reason"] = outcome.reason;
+    (*out)["steps"] = std::to_string(outcome.steps);
+    (*out)["log_events"] = std::to_string(outcome.log_events);
+    (*out)["handler_failures"] = std::to_string(outcome.handler_failures);
+  });
+}
+
+/// The last DREAM_POSES step in the log at `path`, which must read to its end.
+int64_t LastLoggedPoseStep(const std::string& path, int64_t expected_events) {
+  const auto records = lcm::LogReader::ReadAll(path);
+  EXPECT_EQ(static_cast<int64_t>(records.size()), expected_events);
+  int64_t last_step = -1;
+  for (const lcm::LogRecord& record : records) {
+    if (record.channel != "DREAM_POSES") continue;
+    robot_poses_t poses;
+    EXPECT_EQ(poses.decode(record.data.data(), 0, static_cast<int>(record.data.size())),
+              static_cast<int>(record.data.size()));
+    last_step = poses.step;
+  }
+  return last_step;
+}
+
+TEST_F(RunRecorderTest, SimNodeEndsTheRunAsFailedWhenItsLogCannotBeWritten) {
+  const std::string path = (dir_ / "run.lcmlog").string();
+  const auto report = RunSimNodeWithFileSizeLimit(path, 30000, -1);
+  ASSERT_EQ(report.count("child_error"), 0u) << report.at("child_error");
+  EXPECT_EQ(report.at("end"), "failed");
+  const std::string& reason = report.at("reason");
+  EXPECT_NE(reason.find("the run log could not be written at step "), std::string::npos) << reason;
+  EXPECT_NE(reason.find(path + ".part failed: File too large"), std::string::npos) << reason;
+  const int64_t steps = std::stoll(report.at("steps"));
+  EXPECT_GT(steps, 10);
+  EXPECT_LT(steps, 1000);  // stopped at the failure, not at max_steps
+  EXPECT_NE(reason.find("at step " + std::to_string(steps) + ":"), std::string::npos) << reason;
+  EXPECT_EQ(report.at("handler_failures"), "0");
+  EXPECT_FALSE(fs::exists(path + ".part"));
+  // The log reads to its end; it lacks the steps whose events were still in
+  // stdio's buffer when the disk refused them, and nothing after the failure.
+  const int64_t last_step = LastLoggedPoseStep(path, std::stoll(report.at("log_events")));
+  EXPECT_GT(last_step, 0);
+  EXPECT_LE(last_step, steps);
+  EXPECT_LE(fs::file_size(path), 30000u);
+}
+
+// The recorder is the bus's catch-all handler: a failure there must stop the
+// run too, not be counted as a handler exception while the run goes on.
+TEST_F(RunRecorderTest, WriteFailureInsideAHandlerEndsTheRunAtThatStep) {
+  const std::string path = (dir_ / "run.lcmlog").string();
+  const auto report = RunSimNodeWithFileSizeLimit(path, 50000, 5);
+  ASSERT_EQ(report.count("child_error"), 0u) << report.at("child_error");
+  EXPECT_EQ(report.at("end"), "failed");
+  EXPECT_EQ(report.at("steps"), "5");
+  EXPECT_NE(report.at("reason").find("at step 5: writing " + path + ".part failed: File too large"),
+            std::string::npos)
+      << report.at("reason");
+  EXPECT_EQ(report.at("handler_failures"), "0");
+  EXPECT_EQ(LastLoggedPoseStep(path, std::stoll(report.at("log_events"))), 5);
 }
 
 TEST_F(RunRecorderTest, AtomicFileReplacesWholeContent) {

@@ -3,12 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <memory>
 #include <sstream>
 
 #include "dream/lcm/lcm_bus.h"
 #include "dream/sim/progress_reporter.h"
 #include "dream/run_status_t.hpp"
+#include "dream/velocity_command_t.hpp"
 #include "scripted_agent.h"
 
 namespace dream::sim {
@@ -194,6 +196,54 @@ TEST_F(SimNodeTest, RealTimeModeUsesTheLatestCommands) {
   EXPECT_EQ(outcome.end, RunOutcome::End::kFinished);
   EXPECT_EQ(outcome.steps, 6);
   EXPECT_NEAR(world_.poses()[2].x_m, 1.0 + 6 * 0.033 * 0.1, 1e-12);
+}
+
+// As on the lab (and UnicycleWorld's command timeout): in real time a robot
+// whose agent goes quiet keeps its last command for 0.5 s of simulated time,
+// 15 steps, then holds still; it is not marked lost before agent_timeout_s.
+TEST_F(SimNodeTest, RealTimeRobotOfASilentAgentKeepsItsLastCommandFor15StepsThenStops) {
+  constexpr int64_t kLastAnsweredStep = 5;
+  int64_t last_command_world_step = -1;  // when robot 0's last command reached the world
+  std::map<int64_t, std::vector<double>> x_by_step;
+  lcm::BadMessageLog bad;
+  lcm::Subscribe<velocity_command_t>(
+      bus_, lcm::CommandChannel(0),
+      [&](const std::string&, const velocity_command_t&) { last_command_world_step = world_.step(); }, bad);
+  lcm::Subscribe<robot_poses_t>(
+      bus_, lcm::kPosesChannel, [&](const std::string&, const robot_poses_t& poses) { x_by_step[poses.step] = poses.x; },
+      bad);
+  AddAgent(0, [](const robot_poses_t& poses, velocity_command_t* command) {
+    command->v = 0.1;
+    return poses.step <= kLastAnsweredStep;
+  });
+  AddAgent(1, Forward());
+  AddAgent(2, Forward());
+  SimNodeOptions options = FastOptions(28);  // 28 ticks of 33 ms: under a second
+  options.mode = WorldMode::kRealTime;
+  options.agent_timeout_s = 30.0;
+  options.start_timeout_s = 5.0;
+  const RunOutcome outcome = Run(options);
+  ASSERT_EQ(outcome.end, RunOutcome::End::kFinished);
+  EXPECT_TRUE(outcome.robots_ever_lost.empty());
+  // In real time the answer to step 5 is applied at step 5, or a tick later
+  // on a busy machine; the hold is counted from where it actually landed.
+  ASSERT_GE(last_command_world_step, kLastAnsweredStep);
+  ASSERT_LE(last_command_world_step, kLastAnsweredStep + 2);
+  const int64_t last_moving_step = last_command_world_step + 15;
+  // The final poses (step 28) go out as the run ends, after these handlers ran.
+  for (int64_t step = 1; step < 28; ++step) {
+    ASSERT_EQ(x_by_step.count(step), 1u) << "no poses for step " << step;
+    ASSERT_EQ(x_by_step.count(step - 1), 1u) << "no poses for step " << step - 1;
+    // Poses of `step` are the result of the world step taken at step - 1.
+    const double dx_m = x_by_step[step][0] - x_by_step[step - 1][0];
+    if (step - 1 <= last_moving_step) {
+      EXPECT_NEAR(dx_m, 0.033 * 0.1, 1e-12) << "robot 0 should still drive in step " << step - 1;
+    } else {
+      EXPECT_EQ(dx_m, 0.0) << "robot 0 should hold still in step " << step - 1;
+    }
+    // Robot 1's agent never went quiet: it drives all along.
+    EXPECT_NEAR(x_by_step[step][1] - x_by_step[step - 1][1], 0.033 * 0.1, 1e-12);
+  }
 }
 
 TEST_F(SimNodeTest, ProgressReporterFollowsTheStepsAndIsFinishedAtTheEnd) {

@@ -1,12 +1,27 @@
 #include "dream/sim/run_recorder.h"
 
+#include <stdio_ext.h>  // __fpurge (glibc)
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <lcm/lcm-cpp.hpp>
 #include <stdexcept>
 
 namespace dream::sim {
+namespace {
+
+// An LCM log event is a fixed header (magic, event number, timestamp, channel
+// length, data length: 4 + 8 + 8 + 4 + 4 bytes) followed by channel and data.
+constexpr int64_t kEventHeaderBytes = 28;
+
+std::string ErrorText(int error_number) {
+  return error_number != 0 ? std::strerror(error_number) : "unknown error";
+}
+
+}  // namespace
 
 RunRecorder::RunRecorder(std::string path, int flush_interval_events)
     : path_(std::move(path)), part_path_(path_ + ".part"), flush_interval_events_(flush_interval_events) {
@@ -21,34 +36,90 @@ RunRecorder::~RunRecorder() {
   try {
     Close();
   } catch (...) {
-    // Destructors must not throw; Close() already reported nothing usable.
+    // Destructors must not throw; failure() still tells what went wrong.
   }
 }
 
 void RunRecorder::Write(const std::string& channel, int64_t utime, const void* data, int size) {
   if (!log_) throw std::logic_error("RunRecorder::Write after Close on " + path_);
+  if (failed()) throw std::runtime_error(failure_);
   ::lcm::LogEvent event;
   event.eventnum = events_written_;
   event.timestamp = utime;
   event.channel = channel;
   event.datalen = size;
   event.data = const_cast<void*>(data);  // LogFile only reads it.
-  if (log_->writeEvent(&event) != 0) {
-    throw std::runtime_error("cannot write to the run log " + part_path_ + " (disk full?)");
-  }
+  errno = 0;
+  if (log_->writeEvent(&event) != 0) Fail("writing", errno);
   ++events_written_;
-  if (events_written_ % flush_interval_events_ == 0) std::fflush(log_->getFilePtr());
+  bytes_written_ += kEventHeaderBytes + static_cast<int64_t>(channel.size()) + size;
+  unflushed_event_ends_.push_back(bytes_written_);
+  if (events_written_ % flush_interval_events_ == 0) {
+    if (std::fflush(log_->getFilePtr()) != 0) Fail("writing", errno);
+    events_flushed_ = events_written_;
+    bytes_flushed_ = bytes_written_;
+    unflushed_event_ends_.clear();
+  }
+}
+
+void RunRecorder::Flush() {
+  if (!log_) return;
+  if (failed()) throw std::runtime_error(failure_);
+  FILE* file = log_->getFilePtr();
+  if (std::fflush(file) != 0) Fail("writing", errno);
+  events_flushed_ = events_written_;
+  bytes_flushed_ = bytes_written_;
+  unflushed_event_ends_.clear();
+  if (::fsync(fileno(file)) != 0) Fail("syncing", errno);
+}
+
+void RunRecorder::Fail(const std::string& action, int error_number) {
+  FILE* file = log_->getFilePtr();
+  const int fd = fileno(file);
+  // What stdio still buffers would land after the cut (or in the middle of a
+  // half-written event) when the file is closed: drop it.
+  __fpurge(file);
+  // The disk holds whatever prefix of the buffered events write() got
+  // through; keep every event that is wholly in it.
+  int64_t keep_bytes = bytes_flushed_;
+  int64_t keep_events = events_flushed_;
+  struct stat file_status {};
+  if (::fstat(fd, &file_status) == 0) {
+    for (int64_t end : unflushed_event_ends_) {
+      if (end > file_status.st_size) break;
+      keep_bytes = end;
+      ++keep_events;
+    }
+  }
+  failure_ = action + " " + part_path_ + " failed: " + ErrorText(error_number);
+  if (::ftruncate(fd, static_cast<off_t>(keep_bytes)) == 0) {
+    failure_ += " (the log keeps the " + std::to_string(keep_events) + " whole events before it)";
+  } else {
+    cut_back_failed_ = true;
+    failure_ += "; cutting it back to its last whole event failed too: " + ErrorText(errno);
+  }
+  events_written_ = keep_events;
+  bytes_written_ = keep_bytes;
+  unflushed_event_ends_.clear();
+  throw std::runtime_error(failure_);
 }
 
 void RunRecorder::Close() {
   if (!log_) return;
-  FILE* file = log_->getFilePtr();
-  const bool flushed = std::fflush(file) == 0 && ::fsync(fileno(file)) == 0;
-  log_.reset();
-  if (!flushed) throw std::runtime_error("cannot flush the run log " + part_path_);
-  if (std::rename(part_path_.c_str(), path_.c_str()) != 0) {
-    throw std::runtime_error("cannot rename " + part_path_ + " to " + path_);
+  std::string flush_error;
+  if (!failed()) {
+    try {
+      Flush();
+    } catch (const std::runtime_error& e) {
+      flush_error = e.what();
+    }
   }
+  log_.reset();  // fclose writes nothing more: stdio's buffer is flushed or purged
+  if (cut_back_failed_) throw std::runtime_error(failure_ + "; the log stays at " + part_path_);
+  if (std::rename(part_path_.c_str(), path_.c_str()) != 0) {
+    throw std::runtime_error("cannot rename " + part_path_ + " to " + path_ + ": " + ErrorText(errno));
+  }
+  if (!flush_error.empty()) throw std::runtime_error(flush_error);
 }
 
 }  // namespace dream::sim

@@ -34,6 +34,7 @@ std::string RunSummaryJson(const config::RunConfig& config, const RunOutcome& ou
   json["robots_ever_lost"] = outcome.robots_ever_lost;
   json["robots_done"] = outcome.robots_done;
   json["bad_messages"] = outcome.bad_messages;
+  json["handler_failures"] = outcome.handler_failures;
   json["log"] = log_file_name;
   json["log_events"] = outcome.log_events;
   nlohmann::json poses = nlohmann::json::array();

@@ -72,7 +72,25 @@ void SimNode::OnAnyMessage(const std::string& channel, const void* data, int siz
       channel == "LCM_SELF_TEST") {
     return;
   }
-  recorder_->Write(channel, SimUtime(), data, size);
+  Record(channel, data, size);
+}
+
+void SimNode::Record(const std::string& channel, const void* data, int size) {
+  if (recorder_ == nullptr || recorder_->failed()) return;
+  try {
+    recorder_->Write(channel, SimUtime(), data, size);
+  } catch (const std::runtime_error&) {
+    // Not thrown on: this may run inside an LCM handler, where LcmBus would
+    // count it and carry on. The recorder stays failed; Run() ends the run.
+    recorder_failed_at_step_ = world_.step();
+  }
+}
+
+bool SimNode::RecorderFailed() const { return recorder_ != nullptr && recorder_->failed(); }
+
+std::string SimNode::RecorderFailureReason() const {
+  const int64_t step = recorder_failed_at_step_ >= 0 ? recorder_failed_at_step_ : world_.step();
+  return "the run log could not be written at step " + std::to_string(step) + ": " + recorder_->failure();
 }
 
 void SimNode::Reject(const std::string& channel, const std::string& reason) {
@@ -148,7 +166,7 @@ void SimNode::PublishAndRecord(const char* channel, const Message& message, bool
   std::vector<uint8_t> buffer(static_cast<size_t>(size));
   message.encode(buffer.data(), 0, size);
   lcm_.Publish(channel, buffer.data(), size);
-  if (record && recorder_ != nullptr) recorder_->Write(channel, SimUtime(), buffer.data(), size);
+  if (record) Record(channel, buffer.data(), size);
 }
 
 void SimNode::PublishStatus(int8_t state, const std::string& detail, bool record) {
@@ -270,6 +288,19 @@ RunOutcome SimNode::Finish(RunOutcome::End end, const std::string& reason) {
   RunOutcome outcome;
   outcome.end = end;
   outcome.reason = reason;
+  if (recorder_ != nullptr && !recorder_->failed()) {
+    // A full disk may only show when the last buffered events reach it.
+    try {
+      recorder_->Flush();
+    } catch (const std::runtime_error&) {
+      recorder_failed_at_step_ = world_.step();
+    }
+  }
+  if (RecorderFailed()) {
+    // The log lacks the end of the run, whatever else ended it.
+    outcome.end = RunOutcome::End::kFailed;
+    outcome.reason = RecorderFailureReason();
+  }
   outcome.steps = world_.step();
   outcome.wall_time_s = SecondsBetween(run_start_, Clock::now());
   outcome.rejected_commands = rejected_commands_;
@@ -278,6 +309,7 @@ RunOutcome SimNode::Finish(RunOutcome::End end, const std::string& reason) {
     if (robots_[i].done) outcome.robots_done.insert(static_cast<int>(i));
   }
   outcome.bad_messages = bad_messages_.per_channel();
+  outcome.handler_failures = lcm_.handler_failures();
   outcome.log_events = recorder_ != nullptr ? recorder_->events_written() : 0;
   return outcome;
 }
@@ -292,6 +324,7 @@ RunOutcome SimNode::Run(const std::atomic<bool>& stop) {
   Clock::time_point next_realtime_step;
 
   while (true) {
+    if (RecorderFailed()) return Finish(RunOutcome::End::kFailed, RecorderFailureReason());
     if (stop.load()) return Finish(RunOutcome::End::kInterrupted, "interrupted (Ctrl-C or SIGTERM)");
     const auto now = Clock::now();
 

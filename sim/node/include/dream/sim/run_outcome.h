@@ -13,7 +13,7 @@ struct RunOutcome {
     kFinished,      ///< reached max_steps, or every robot reported done
     kInterrupted,   ///< Ctrl-C / SIGTERM
     kStartTimeout,  ///< some robot never got an agent
-    kFailed,        ///< an error stopped the run (see reason)
+    kFailed,        ///< an error stopped the run, e.g. the run log could not be written (see reason)
   };
   End end = End::kFinished;
   std::string reason;                ///< one line, for humans
@@ -23,6 +23,7 @@ struct RunOutcome {
   std::set<int> robots_ever_lost;    ///< robots whose agent went silent at some point
   std::set<int> robots_done;         ///< robots whose last command said done
   std::map<std::string, long> bad_messages;  ///< undecodable messages per channel
+  long handler_failures = 0;         ///< exceptions caught in message handlers on the run's bus
   int64_t log_events = 0;            ///< events written to the run log
 
   bool ok() const { return end == End::kFinished; }

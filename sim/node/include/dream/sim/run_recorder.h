@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace lcm {
 class LogFile;
@@ -14,34 +15,70 @@ namespace dream::sim {
 /// lcm-logplayer replays), with timestamps in simulated time.
 ///
 /// The log is written to "<path>.part" and renamed to <path> by Close(), so a
-/// file at <path> is always complete. Events are flushed to the kernel at
-/// least every `flush_interval_events`, so even a killed run leaves a readable
-/// .part file.
+/// file at <path> only ever holds whole events. Events are flushed to the
+/// kernel at least every `flush_interval_events`, so even a killed run leaves
+/// a readable .part file.
+///
+/// When the disk refuses an event (full disk, file size limit, I/O error) the
+/// recorder cuts the file back to the end of its last whole event, so the log
+/// stays a valid LCM log holding every event that fitted before the failure,
+/// and becomes failed: the failing call throws, and so does every later Write,
+/// without writing anything. Close() still gives that log its final name: it
+/// is the run's data, and failure() says why it ends early.
 class RunRecorder {
  public:
   /// @throws std::runtime_error naming the path when it cannot be created.
   explicit RunRecorder(std::string path, int flush_interval_events = 256);
-  ~RunRecorder();  // Closes if still open.
+  ~RunRecorder();  // Closes if still open; never throws.
 
   RunRecorder(const RunRecorder&) = delete;
   RunRecorder& operator=(const RunRecorder&) = delete;
 
   /// Appends one event. @param utime simulated time, microseconds.
+  /// @throws std::runtime_error with failure() when the event cannot be written
+  /// (the log is cut back to its last whole event) or the recorder has failed
+  /// before; std::logic_error after Close().
   void Write(const std::string& channel, int64_t utime, const void* data, int size);
 
-  /// Flushes, syncs to disk and renames the .part file to the final path.
-  /// Idempotent. @throws std::runtime_error on I/O failure.
+  /// Pushes every event written so far to the disk (fflush + fsync), so a
+  /// full disk shows now rather than at Close(). Fails like Write.
+  void Flush();
+
+  /// Flushes, syncs and renames the .part file to the final path; a failed
+  /// recorder's log (every whole event before the failure) is renamed too.
+  /// Idempotent. @throws std::runtime_error when flushing fails here (the log
+  /// is still cut back and renamed), or when the log cannot get its final
+  /// name (it then stays at part_path()).
   void Close();
 
   const std::string& path() const { return path_; }
+  const std::string& part_path() const { return part_path_; }
+  /// Whole events in the log; after a failure, the ones it kept.
   int64_t events_written() const { return events_written_; }
+  bool failed() const { return !failure_.empty(); }
+  /// Why writing failed, in one line naming the file and the OS error, and
+  /// how many whole events the log kept; empty while nothing failed.
+  const std::string& failure() const { return failure_; }
 
  private:
+  /// Cuts the file back to its last whole event on disk, records why in
+  /// failure_ and throws it. @param action what failed ("writing", ...).
+  [[noreturn]] void Fail(const std::string& action, int error_number);
+
   std::string path_;
   std::string part_path_;
   std::unique_ptr<::lcm::LogFile> log_;
   int flush_interval_events_;
   int64_t events_written_ = 0;
+  int64_t bytes_written_ = 0;  // end of the last whole event handed to stdio
+  // Up to here the file is known to hold whole events on disk (last good fflush).
+  int64_t events_flushed_ = 0;
+  int64_t bytes_flushed_ = 0;
+  // File offset just past each event written since the last good fflush: stdio
+  // may have pushed any prefix of them to the disk before a failure.
+  std::vector<int64_t> unflushed_event_ends_;
+  std::string failure_;
+  bool cut_back_failed_ = false;  // the .part may end mid-event: never renamed
 };
 
 }  // namespace dream::sim

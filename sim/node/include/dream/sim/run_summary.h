@@ -11,7 +11,8 @@ namespace dream::sim {
 /// The machine-readable summary of a run, as pretty-printed JSON: how it
 /// ended, steps, wall time, the Robotarium's violation counts and verdict
 /// (rejected / warning / clean) with its debug() text, rejected commands,
-/// lost agents, bad messages per channel, and final poses.
+/// lost agents, bad messages per channel, handler
+/// exceptions, and final poses.
 /// See docs/run-outputs.md for every field.
 std::string RunSummaryJson(const config::RunConfig& config, const RunOutcome& outcome,
                            const World& world, const std::string& log_file_name);

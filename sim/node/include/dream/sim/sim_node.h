@@ -39,6 +39,10 @@ class RunRecorder;
 /// that does not exist, from a second agent claiming a robot, or for a step
 /// other than the current one is rejected and counted; undecodable messages
 /// are counted per channel.
+///
+/// A run log that cannot be written (full disk, file size limit) ends the run
+/// cleanly as RunOutcome::End::kFailed, with a reason naming the step, the
+/// file and the OS error; the log keeps every whole event before the failure.
 class SimNode {
  public:
   /// @param recorder may be null (no log). Must outlive the node.
@@ -71,6 +75,11 @@ class SimNode {
 
   void OnCommand(const std::string& channel, const velocity_command_t& command);
   void OnAnyMessage(const std::string& channel, const void* data, int size);
+  /// Writes one event to the recorder, if any; a write failure is remembered
+  /// (the recorder is failed from then on) for Run() to end the run.
+  void Record(const std::string& channel, const void* data, int size);
+  bool RecorderFailed() const;
+  std::string RecorderFailureReason() const;
   void Reject(const std::string& channel, const std::string& reason);
   void PublishStep(bool record);
   void PublishStatus(int8_t state, const std::string& detail, bool record);
@@ -86,6 +95,7 @@ class SimNode {
   World& world_;
   std::vector<ObstacleState> obstacle_states_;  // scratch for PublishStep
   RunRecorder* recorder_;
+  int64_t recorder_failed_at_step_ = -1;
   SimNodeOptions options_;
   lcm::BadMessageLog bad_messages_;
   std::vector<RobotSlot> robots_;
