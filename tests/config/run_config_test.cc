@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "dream/sim/unicycle_world.h"
+
 namespace dream::config {
 namespace {
 
@@ -91,6 +93,69 @@ TEST(RunConfigTest, PoseOutsideTheArenaIsRejected) {
 TEST(RunConfigTest, OverlappingPosesAreRejected) {
   const std::string error = ErrorOf(Replace(kMinimal, "[0.5, 0.0, 1.57]", "[0.1, 0.0, 3.14]"));
   EXPECT_NE(error.find("robots 0 and 1 start in collision"), std::string::npos) << error;
+}
+
+TEST(RunConfigTest, PoseInsideAnObstacleIsRejected) {
+  // Robot 1 at (0.5, 0) facing up: its collision disc (centre (0.5, 0.025),
+  // radius 0.0675 m) reaches into a block whose bottom edge is at y = 0.05.
+  const std::string error = ErrorOf(std::string(kMinimal) +
+                                    "obstacles:\n  - center: [-1.0, 0.5]\n    size: [0.2, 0.2]\n"
+                                    "  - center: [0.5, 0.15]\n    size: [0.4, 0.2]\n");
+  EXPECT_NE(error.find("test.yaml:7: initial_poses[1]: robot 1 starts inside obstacle 1"), std::string::npos) << error;
+  EXPECT_NE(error.find("at (0.500, 0.000, 1.570)"), std::string::npos) << error;
+  EXPECT_NE(error.find("radius 0.0675 m"), std::string::npos) << error;
+  EXPECT_NE(error.find("obstacles[1] (centre (0.500, 0.150), size 0.400 x 0.200 m, at step 0)"), std::string::npos)
+      << error;
+  // Touching counts, as in the world: the disc of robot 0 (centre (0.025, 0))
+  // just reaches a block whose left edge is 0.0675 m away.
+  const std::string touching =
+      ErrorOf(std::string(kMinimal) + "obstacles:\n  - center: [0.1925, -0.5]\n    size: [0.2, 1.0]\n");
+  EXPECT_NE(touching.find("test.yaml:6: initial_poses[0]: robot 0 starts inside obstacle 0"), std::string::npos)
+      << touching;
+  // Just clear of it loads.
+  EXPECT_EQ(ErrorOf(std::string(kMinimal) + "obstacles:\n  - center: [0.1926, -0.5]\n    size: [0.2, 1.0]\n"), "");
+}
+
+TEST(RunConfigTest, MovingObstacleMayCrossAStartPoseLater) {
+  // Starts clear of both robots, passes over them at steps > 0: allowed, the
+  // run counts any contact as the Robotarium would.
+  EXPECT_EQ(ErrorOf(std::string(kMinimal) + "obstacles:\n  - center: [-1.0, 0.0]\n    size: [0.2, 0.2]\n"
+                                            "    path: {waypoints: [[1.0, 0.0]], speed_mps: 0.1}\n"),
+            "");
+  EXPECT_NE(ErrorOf(std::string(kMinimal) + "obstacles:\n  - center: [0.0, 0.0]\n    size: [0.2, 0.2]\n"
+                                            "    path: {waypoints: [[1.0, 0.0]], speed_mps: 0.1}\n")
+                .find("robot 0 starts inside obstacle 0"),
+            std::string::npos);
+}
+
+TEST(RunConfigTest, GeneratedPosesAvoidObstacles) {
+  // Thirty robots around a block covering a fifth of the arena (without the
+  // obstacles in the generator, seed 3 puts several on it).
+  std::string text = Replace(Replace(kMinimal, "  - [0.0, 0.0, 0.0]\n  - [0.5, 0.0, 1.57]\n", ""),
+                             "initial_poses:\n", "initial_poses: {generate: {min_spacing_m: 0.25}}\n");
+  text = Replace(text, "robots: 2", "robots: 30") + "obstacles:\n  - center: [0.0, 0.0]\n    size: [1.6, 0.8]\n";
+  text = Replace(text, "goals: [[0.1, 0.1], [0.6, 0.1]]", "goals: []");
+  const RunConfig config = Load(text);
+  ASSERT_EQ(config.initial_poses.size(), 30u);
+  sim::UnicycleWorld world(config.world, config.initial_poses, config.obstacles);
+  world.Step();
+  EXPECT_EQ(world.violations(), sim::ViolationCounts{});
+}
+
+TEST(RunConfigTest, ImpossibleGenerationNamesTheKeyAndWhatToChange) {
+  std::string text = Replace(Replace(kMinimal, "  - [0.0, 0.0, 0.0]\n  - [0.5, 0.0, 1.57]\n", ""),
+                             "initial_poses:\n", "initial_poses:\n  generate: {min_spacing_m: 0.25}\n");
+  text += "obstacles:\n  - center: [0.0, 0.0]\n    size: [3.2, 2.0]\n";
+  const std::string error = ErrorOf(text);
+  EXPECT_NE(error.find("test.yaml:6: initial_poses.generate: cannot generate initial poses"), std::string::npos)
+      << error;
+  EXPECT_NE(error.find("placed only 0 of 2 robots"), std::string::npos) << error;
+  EXPECT_NE(error.find("smaller or fewer obstacles"), std::string::npos) << error;
+  EXPECT_NE(error.find("or list one [x, y, theta] per robot under initial_poses"), std::string::npos) << error;
+  // Without an initial_poses key the poses are generated too; the message
+  // names the key to add.
+  const std::string implicit = ErrorOf(Replace(text, "initial_poses:\n  generate: {min_spacing_m: 0.25}\n", ""));
+  EXPECT_NE(implicit.find(": initial_poses: cannot generate initial poses"), std::string::npos) << implicit;
 }
 
 TEST(RunConfigTest, WrongPoseCountAndShape) {

@@ -105,10 +105,10 @@ TEST(InitialPoseParamsTest, MessagesNameTheField) {
   InitialPoseParams params;
   EXPECT_TRUE(params.IsValid(nullptr));
   params.min_spacing_m = -1.0;
-  EXPECT_THAT(ErrorOf(params), HasSubstr("initial_poses.min_spacing_m = -1"));
+  EXPECT_THAT(ErrorOf(params), HasSubstr("initial_poses.generate.min_spacing_m = -1"));
   params = InitialPoseParams{};
   params.wall_margin_m = -0.1;
-  EXPECT_THAT(ErrorOf(params), HasSubstr("initial_poses.wall_margin_m = -0.1"));
+  EXPECT_THAT(ErrorOf(params), HasSubstr("initial_poses.generate.wall_margin_m = -0.1"));
   params = InitialPoseParams{};
   params.max_attempts_per_robot = 0;
   EXPECT_THAT(ErrorOf(params), AllOf(HasSubstr("max_attempts_per_robot = 0"), HasSubstr("[1, 1000000]")));

@@ -7,6 +7,7 @@
 
 #include "dream/sim/initial_pose_generator.h"
 #include "dream/sim/robotarium_constants.h"
+#include "dream/sim/start_pose_obstacle_check.h"
 
 namespace dream::config {
 namespace {
@@ -16,6 +17,13 @@ using sim::RobotariumConstants;
 std::string Format(double value) {
   char text[32];
   std::snprintf(text, sizeof(text), "%.3f", value);
+  return text;
+}
+
+// For constants with more digits than millimetres (the 0.0675 m radius).
+std::string FormatExact(double value) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%g", value);
   return text;
 }
 
@@ -53,13 +61,17 @@ sim::SimNodeOptions ReadSimOptions(const ConfigNode& root) {
   return options;
 }
 
+// Needs config.obstacles: generated poses avoid them and listed poses may not
+// start inside one (either would be an obstacle collision at step 0).
 std::vector<sim::Pose2> ReadInitialPoses(const ConfigNode& root, const RunConfig& config) {
   const ConfigNode node = root.Optional("initial_poses");
   if (!node.IsDefined() || node.IsMap()) {
     sim::InitialPoseParams params;
+    ConfigNode where = node;  // the key a failure names
     if (node.IsDefined()) {
       node.RejectUnknownKeys({"generate"});
       const ConfigNode generate = node.Required("generate");
+      where = generate;
       if (generate.IsMap()) {
         generate.RejectUnknownKeys({"min_spacing_m", "wall_margin_m"});
         params.min_spacing_m = generate.GetDouble("min_spacing_m", params.min_spacing_m);
@@ -67,9 +79,11 @@ std::vector<sim::Pose2> ReadInitialPoses(const ConfigNode& root, const RunConfig
       }
     }
     try {
-      return sim::InitialPoseGenerator(config.world, params).Generate(config.num_robots, config.seed);
+      return sim::InitialPoseGenerator(config.world, params, config.obstacles)
+          .Generate(config.num_robots, config.seed);
     } catch (const std::invalid_argument& e) {
-      node.Fail(std::string("cannot generate initial poses: ") + e.what());
+      where.Fail(std::string("cannot generate initial poses: ") + e.what() +
+                 "; or list one [x, y, theta] per robot under initial_poses");
     }
   }
   if (!node.IsSequence() || node.size() != static_cast<size_t>(config.num_robots)) {
@@ -77,6 +91,7 @@ std::vector<sim::Pose2> ReadInitialPoses(const ConfigNode& root, const RunConfig
               (node.IsSequence() ? std::to_string(node.size()) : std::string("no list")) +
               "; or write `initial_poses: {generate: {min_spacing_m: 0.3}}`");
   }
+  const sim::StartPoseObstacleCheck obstacle_check(config.world, config.obstacles);
   std::vector<sim::Pose2> poses;
   for (size_t i = 0; i < node.size(); ++i) {
     const std::vector<double> values = node[i].AsDoubles();
@@ -87,6 +102,19 @@ std::vector<sim::Pose2> ReadInitialPoses(const ConfigNode& root, const RunConfig
                    "), outside the arena x in [" + Format(config.world.arena.x_min_m) + ", " +
                    Format(config.world.arena.x_max_m) + "], y in [" + Format(config.world.arena.y_min_m) + ", " +
                    Format(config.world.arena.y_max_m) + "]");
+    }
+    // Only step 0 counts: a moving obstacle may sweep over a start pose later.
+    const int touched = obstacle_check.FirstTouchedObstacle(pose);
+    if (touched >= 0) {
+      const sim::RectangleObstacleSpec& obstacle = config.obstacles[static_cast<size_t>(touched)];
+      node[i].Fail("robot " + std::to_string(i) + " starts inside obstacle " + std::to_string(touched) +
+                   ": at (" + Format(pose.x_m) + ", " + Format(pose.y_m) + ", " + Format(pose.theta_rad) +
+                   ") its collision disc (centre (" + Format(obstacle_check.CollisionCenterX(pose)) + ", " +
+                   Format(obstacle_check.CollisionCenterY(pose)) + "), radius " +
+                   FormatExact(obstacle_check.collision_radius_m()) + " m) touches obstacles[" +
+                   std::to_string(touched) + "] (centre (" + Format(obstacle.center_m.x()) + ", " +
+                   Format(obstacle.center_m.y()) + "), size " + Format(obstacle.width_m) + " x " +
+                   Format(obstacle.height_m) + " m, at step 0); move the robot or the obstacle");
     }
     poses.push_back(pose);
   }
@@ -209,8 +237,8 @@ RunConfig LoadRunConfig(const ConfigNode& root) {
   }
   config.num_robots = static_cast<int>(num_robots);
   config.sim = ReadSimOptions(root);
-  config.initial_poses = ReadInitialPoses(root, config);
   config.obstacles = ReadObstacles(root);
+  config.initial_poses = ReadInitialPoses(root, config);
   config.controller = root.Required("controller");
   if (!config.controller.IsMap()) config.controller.Fail("expected a mapping with at least `kind:`");
   ReadPlugins(root, &config);

@@ -56,10 +56,8 @@ class SpacingGrid {
 
 std::string Metres(double value) { return field_check::FormatValue(value); }
 
-}  // namespace
-
-InitialPoseGenerator::InitialPoseGenerator(const WorldParams& world, const InitialPoseParams& params)
-    : world_(world), params_(params) {
+// Every check of the constructor's arguments, before the members are built.
+const WorldParams& ValidatedWorld(const WorldParams& world, const InitialPoseParams& params) {
   std::string error;
   if (!world.IsValid(&error)) throw std::invalid_argument("InitialPoseGenerator: " + error);
   if (!params.IsValid(&error)) throw std::invalid_argument("InitialPoseGenerator: " + error);
@@ -69,19 +67,26 @@ InitialPoseGenerator::InitialPoseGenerator(const WorldParams& world, const Initi
   if (!(params.min_spacing_m > min_safe_spacing_m)) {
     throw std::invalid_argument("InitialPoseGenerator: " +
                                 field_check::FormatValue(params.min_spacing_m) +
-                                " m for initial_poses.min_spacing_m is out of range; allowed: > "
+                                " m for initial_poses.generate.min_spacing_m is out of range; allowed: > "
                                 "collision_diameter_m + 2 * collision_offset_m = " +
                                 Metres(min_safe_spacing_m) + " m");
   }
   if (2.0 * params.wall_margin_m >= world.arena.width_m() ||
       2.0 * params.wall_margin_m >= world.arena.height_m()) {
-    throw std::invalid_argument("InitialPoseGenerator: initial_poses.wall_margin_m = " +
+    throw std::invalid_argument("InitialPoseGenerator: initial_poses.generate.wall_margin_m = " +
                                 Metres(params.wall_margin_m) +
                                 " is out of range; allowed: less than half the arena's width and height (" +
                                 Metres(world.arena.width_m()) + " x " + Metres(world.arena.height_m()) +
                                 " m)");
   }
+  return world;
 }
+
+}  // namespace
+
+InitialPoseGenerator::InitialPoseGenerator(const WorldParams& world, const InitialPoseParams& params,
+                                           const std::vector<RectangleObstacleSpec>& obstacles)
+    : world_(ValidatedWorld(world, params)), params_(params), obstacle_check_(world, obstacles) {}
 
 std::vector<Pose2> InitialPoseGenerator::Generate(int num_robots, uint64_t seed) const {
   if (num_robots < 0) {
@@ -115,22 +120,40 @@ std::vector<Pose2> InitialPoseGenerator::Generate(int num_robots, uint64_t seed)
   SpacingGrid grid(spacing_m);
   const int64_t max_attempts = static_cast<int64_t>(num_robots) * params_.max_attempts_per_robot;
   int64_t attempts = 0;
+  int64_t too_close = 0;         // candidates within min_spacing_m of a placed robot
+  int64_t touching_obstacle = 0; // candidates whose collision disc touched an obstacle
   while (static_cast<int>(poses.size()) < num_robots && attempts < max_attempts) {
     ++attempts;
     const double x_m = x_min_m + UnitUniform(rng) * width_m;
     const double y_m = y_min_m + UnitUniform(rng) * height_m;
-    if (!grid.IsFree(x_m, y_m, poses)) continue;
-    grid.Add(x_m, y_m, poses.size());
+    if (!grid.IsFree(x_m, y_m, poses)) {
+      ++too_close;
+      continue;
+    }
     // UnitUniform < 1, so theta < pi up to rounding; fold the rare pi back.
     double theta_rad = -kPi + UnitUniform(rng) * (2.0 * kPi);
     if (theta_rad >= kPi) theta_rad = -kPi;
-    poses.push_back(Pose2{x_m, y_m, theta_rad});
+    // The disc's centre depends on the heading, so obstacles are checked
+    // after it is drawn; a refusal costs this candidate's three draws only.
+    const Pose2 pose{x_m, y_m, theta_rad};
+    if (obstacle_check_.FirstTouchedObstacle(pose) >= 0) {
+      ++touching_obstacle;
+      continue;
+    }
+    grid.Add(x_m, y_m, poses.size());
+    poses.push_back(pose);
   }
   if (static_cast<int>(poses.size()) < num_robots) {
+    std::string refusals;
+    std::string advice = "use a smaller min_spacing_m or fewer robots";
+    if (obstacle_check_.has_obstacles()) {
+      refusals = " (" + std::to_string(touching_obstacle) + " touched an obstacle, " + std::to_string(too_close) +
+                 " were closer than min_spacing_m to a placed robot)";
+      advice = "use smaller or fewer obstacles, a smaller min_spacing_m or wall_margin_m, or fewer robots";
+    }
     throw std::invalid_argument("InitialPoseGenerator: placed only " + std::to_string(poses.size()) + " of " +
                                 std::to_string(num_robots) + " robots" + where + " after " +
-                                std::to_string(attempts) +
-                                " random attempts; use a smaller min_spacing_m or fewer robots");
+                                std::to_string(attempts) + " random attempts" + refusals + "; " + advice);
   }
   return poses;
 }

@@ -15,6 +15,8 @@ namespace dream::config {
 /// A whole run as described by one YAML file (see config/README.md for every
 /// key). Initial poses are resolved here: from the file, or generated
 /// collision-free from the seed, so every process of a run sees the same.
+/// Either way no robot starts touching another or a virtual obstacle (where
+/// the obstacle is at step 0).
 struct RunConfig {
   std::string source;            ///< the file it came from (for messages)
   std::string name;              ///< run name; default output folder runs/<name>
