@@ -7,12 +7,15 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <random>
 #include <set>
 #include <stdexcept>
 
+#include "command_line.h"
 #include "commands.h"
 #include "process_group.h"
+#include "shared_options.h"
 #include "dream/agents/agent_host.h"
 #include "dream/agents/controller_factory.h"
 #include "dream/config/run_config.h"
@@ -114,6 +117,19 @@ int ExecAgentBinary(int argc, char** argv) {
   ::execv(binary.c_str(), args.data());
   throw std::runtime_error("cannot start " + binary + " (" + std::strerror(errno) +
                            "); it is built and installed next to dream");
+}
+
+void DeclareAgentCommand(CommandLine& line) {
+  // The options are parsed here too, so mistakes are reported before the
+  // hand-over and `dream agent --help` works; dream-agent then parses the same
+  // words. The action holds `args` only to keep what CLI11 fills alive.
+  auto args = std::make_shared<AgentArgs>();
+  CLI::App* command = line.AddCommand(
+      "agent",
+      "Run the agents of some robots against whichever world is on the bus.\n"
+      "Example: dream agent config/go_to_goal.yaml --robots 0-2",
+      [&line, args] { return ExecAgentBinary(line.argc(), line.argv()); });
+  AddAgentOptions(command, args.get());
 }
 
 }  // namespace dream::cli

@@ -7,6 +7,7 @@
 
 #include "commands.h"
 #include "dream/config/config_error.h"
+#include "shared_options.h"
 
 int main(int argc, char** argv) {
   using namespace dream::cli;
@@ -16,12 +17,7 @@ int main(int argc, char** argv) {
   AgentArgs args;
   bool quiet = false;
   bool verbose = false;
-  app.add_option("config", args.config_path, "Run config (YAML)")->required();
-  app.add_option("--robots", args.robots, "Robots to drive: all, 3, 0,2,5 or 0-4")->capture_default_str();
-  app.add_option("--lcm-url", args.lcm_url, "LCM URL (default $LCM_DEFAULT_URL)");
-  app.add_option("--idle-timeout", args.idle_timeout_s, "Give up after this many seconds without poses")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+  AddAgentOptions(&app, &args);  // the same as `dream agent`'s, which hands its words over
   app.add_flag("-q,--quiet", quiet, "Only warnings and errors");
   app.add_flag("-v,--verbose", verbose, "Debug output");
   try {

@@ -7,9 +7,11 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "command_line.h"
 #include "commands.h"
 #include "run_output.h"
 #include "dream/sim/file_text.h"
@@ -32,6 +34,7 @@
 #include "dream/sim/trajectory_picture.h"
 #include "data_files.h"
 #include "process_group.h"
+#include "shared_options.h"
 #include "terminal_progress.h"
 
 #ifndef DREAM_DEFAULT_PYTHON
@@ -294,6 +297,91 @@ int RunCheckSubmission(const CheckSubmissionArgs& args) {
               << "; see above\n";
   }
   return imported.lab.complete ? kExitOk : kExitRunFailed;
+}
+
+void DeclareBridgeCommands(CommandLine& line) {
+  auto export_args = std::make_shared<ExportArgs>();
+  CLI::App* export_command = line.AddCommand(
+      "export",
+      "Turn a recorded run into a Robotarium submission (a main script plus .npy data), after\n"
+      "checking it as the lab would: robots, duration, start poses, boundary and collision errors.\n"
+      "Example: dream export runs/go_to_goal --out exports/go_to_goal",
+      [export_args] { return RunExport(*export_args); });
+  export_command->add_option("run", export_args->run_dir, "Run folder written by dream run (run.lcmlog, config.yaml)")
+      ->required();
+  export_command->add_option("--out", export_args->out_dir, "Output folder (default exports/<name>)");
+  export_command->add_option("--config", export_args->config_path, "The run's config (default <run>/config.yaml)");
+  export_command->add_option("--strategy", export_args->strategy,
+                             "track: recorded commands plus feedback on the pose error; replay: open loop")
+      ->check(CLI::IsMember({"track", "replay"}))
+      ->capture_default_str();
+  export_command->add_flag("--barriers", export_args->barriers,
+                           "Pass commands through the Robotarium's barrier certificates (safety layer)");
+  export_command->add_option("--settle-steps", export_args->settle_steps,
+                             "At most this many steps to settle on the start poses before step 0")
+      ->check(CLI::Range(0, 3000))
+      ->capture_default_str();
+
+  auto import_args = std::make_shared<ImportArgs>();
+  CLI::App* import_command = line.AddCommand(
+      "import",
+      "Turn what the lab returned (dream_result.npy, or dream_result.mat from MATLAB) into a run\n"
+      "folder like dream run writes: run.lcmlog, summary.json, trajectories.png.\n"
+      "Example: dream import ~/Downloads/dream_result.npy --export exports/go_to_goal --out runs/lab1",
+      [import_args] { return RunImport(*import_args); });
+  import_command->add_option("result", import_args->result, "dream_result.npy / .mat, or a folder holding one")
+      ->required();
+  import_command->add_option("--export", import_args->export_dir, "The folder dream export wrote")->required();
+  import_command->add_option("--out", import_args->out_dir, "Output folder (default runs/<name>_lab)");
+
+  auto replay_args = std::make_shared<LabReplayArgs>();
+  CLI::App* replay_command = line.AddCommand(
+      "lab-replay",
+      "Run a lab run (from dream import) as the world on the bus: the agents get the lab's poses\n"
+      "and their commands are recorded beside the lab's. Agents run in this process (memq://)\n"
+      "unless --world-only.\n"
+      "Example: dream lab-replay runs/lab1 --out runs/lab1_replay",
+      [replay_args] { return RunLabReplay(*replay_args); });
+  replay_command->add_option("lab", replay_args->lab_dir, "Run folder written by dream import")->required();
+  replay_command->add_option("--out", replay_args->out_dir, "Output folder (default runs/<name>_lab_replay)");
+  replay_command->add_option("--lcm-url", replay_args->lcm_url,
+                             "LCM URL (default memq://, or $LCM_DEFAULT_URL with --world-only)");
+  replay_command->add_option("--steps", replay_args->steps, "Replay at most this many steps")->check(StepCount());
+  replay_command->add_option("--mode", replay_args->mode, "Override the world mode")
+      ->check(CLI::IsMember({"lockstep", "realtime"}));
+  replay_command->add_flag("--world-only", replay_args->world_only,
+                           "Only the world; start the agents elsewhere (dream agent CONFIG) on the same URL");
+
+  auto compare_args = std::make_shared<CompareArgs>();
+  CLI::App* compare_command = line.AddCommand(
+      "compare",
+      "Compare a simulated run with its lab run: tracking error per robot, closest approach,\n"
+      "violations and the experiment's metrics side by side; writes comparison.json and .png.\n"
+      "Example: dream compare runs/go_to_goal runs/lab1",
+      [compare_args] { return RunCompare(*compare_args); });
+  compare_command->add_option("simulated", compare_args->first_dir, "The simulated run's folder")->required();
+  compare_command->add_option("lab", compare_args->second_dir, "The lab run's folder (dream import)")->required();
+  compare_command->add_option("--out", compare_args->out_dir, "Output folder (default: the lab run's folder)");
+
+  auto check_args = std::make_shared<CheckSubmissionArgs>();
+  CLI::App* check_command = line.AddCommand(
+      "check-submission",
+      "Run an exported submission in the official Robotarium Python simulator (or, when it is\n"
+      "not installed, DREAM's stand-in), import what it saved and compare it with the run.\n"
+      "Example: dream check-submission exports/go_to_goal --out runs/go_to_goal_check",
+      [check_args] { return RunCheckSubmission(*check_args); });
+  check_command->add_option("export", check_args->export_dir, "The folder dream export wrote")->required();
+  check_command->add_option("--out", check_args->out_dir, "Output folder (default runs/<name>_check)");
+  check_command->add_option("--run", check_args->run_dir,
+                            "The simulated run to compare with (default: the exported one)");
+  check_command->add_option("--simulator", check_args->simulator,
+                            "robotarium_python_simulator checkout (default $ROBOTARIUM_PYTHON_SIMULATOR)");
+  check_command->add_option("--python", check_args->python, "Python with numpy (and what the simulator needs)");
+  check_command->add_flag("--standin", check_args->standin, "Use DREAM's stand-in even if the official one is there");
+  check_command->add_flag("--require-official", check_args->require_official,
+                          "Fail (exit 1) instead of using the stand-in when the official simulator is missing");
+  check_command->add_flag("--skip-initialization", check_args->skip_initialization,
+                          "Start exactly at the start poses (no start-up drive)");
 }
 
 }  // namespace dream::cli

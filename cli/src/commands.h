@@ -7,6 +7,8 @@
 
 namespace dream::cli {
 
+class CommandLine;
+
 /// Exit codes scripts can rely on (also in `dream --help`).
 enum ExitCode : int {
   kExitOk = 0,              ///< the run finished; the Robotarium would accept it
@@ -44,6 +46,16 @@ struct AgentArgs {
   std::string lcm_url;
   double idle_timeout_s = 60.0;
 };
+
+// Each command's file declares its subcommands on the dream command line
+// (options, checks and the action that runs them); main() calls these in the
+// order `dream --help` lists the subcommands.
+void DeclareRunCommand(CommandLine& line);      ///< dream run (run_command.cc)
+void DeclareSimCommand(CommandLine& line);      ///< dream sim (run_command.cc)
+void DeclareAgentCommand(CommandLine& line);    ///< dream agent (agent_command.cc)
+void DeclareLaunchCommand(CommandLine& line);   ///< dream launch (launch_command.cc)
+void DeclareSpyCommand(CommandLine& line);      ///< dream spy (spy_command.cc)
+void DeclareLogCommand(CommandLine& line);      ///< dream log info / diff (log_command.cc)
 
 /// A random identifier for this process's agents (see velocity_command_t.agent_id).
 int64_t NewAgentId();
@@ -106,6 +118,8 @@ int RunImport(const ImportArgs& args);
 int RunLabReplay(const LabReplayArgs& args);
 int RunCompare(const CompareArgs& args);
 int RunCheckSubmission(const CheckSubmissionArgs& args);
+/// dream export, import, lab-replay, compare and check-submission, in that order.
+void DeclareBridgeCommands(CommandLine& line);
 
 // --- sweeps (sweep_command.cc, docs/sweeps.md) ---
 
@@ -124,6 +138,7 @@ struct SweepArgs {
 /// Exit 0 when every run ran (successful or not), 4 when one failed to run,
 /// 1 for bad input (nothing is started), 130 when interrupted.
 int RunSweep(const SweepArgs& args);
+void DeclareSweepCommand(CommandLine& line);
 
 // --- pictures and videos (render_command.cc, docs/rendering.md) ---
 
@@ -146,6 +161,7 @@ struct RenderArgs {
 /// through ffmpeg) or its metrics over time (--plot). Exit 0, 1 for bad
 /// input (nothing written), 2 usage, 130 interrupted.
 int RunRender(const RenderArgs& args);
+void DeclareRenderCommand(CommandLine& line);
 
 /// Parses "all", "3", "0,2,5", "0-4" into sorted unique ids < num_robots.
 /// @throws std::invalid_argument naming the bad part.

@@ -2,11 +2,14 @@
 
 #include <csignal>
 #include <chrono>
+#include <memory>
 #include <thread>
 
+#include "command_line.h"
 #include "commands.h"
 #include "process_group.h"
 #include "run_output.h"
+#include "shared_options.h"
 
 namespace dream::cli {
 
@@ -49,6 +52,16 @@ int RunLaunch(const RunArgs& args) {
   }
   if (failed_agents > 0) spdlog::warn("{} agent process(es) did not exit cleanly", failed_agents);
   return sim_exit;
+}
+
+void DeclareLaunchCommand(CommandLine& line) {
+  auto args = std::make_shared<RunArgs>();
+  CLI::App* command = line.AddCommand(
+      "launch",
+      "Run the simulator and one agent process per robot over udpm.\n"
+      "Example: dream launch config/go_to_goal.yaml",
+      [args] { return RunLaunch(*args); });
+  AddRunOptions(command, args.get(), "LCM URL (default $LCM_DEFAULT_URL)");
 }
 
 }  // namespace dream::cli

@@ -1,9 +1,11 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <regex>
 #include <stdexcept>
 
+#include "command_line.h"
 #include "commands.h"
 #include "dream/lcm/log_reader.h"
 
@@ -24,6 +26,12 @@ Payloads PayloadsByChannel(const std::string& path, const std::regex& channels) 
   }
   return payloads;
 }
+
+struct LogDiffArgs {
+  std::string first_log;
+  std::string second_log;
+  std::string channel_regex = ".*";
+};
 
 }  // namespace
 
@@ -89,6 +97,29 @@ int RunLogDiff(const std::string& a, const std::string& b, const std::string& ch
   }
   std::cout << (same ? "same" : "different") << " (channels matching '" << channel_regex << "')\n";
   return same ? kExitOk : kExitInputError;
+}
+
+void DeclareLogCommand(CommandLine& line) {
+  CLI::App* log = line.AddGroup("log", "Look into recorded runs: info, diff.\n"
+                                       "Example: dream log info runs/go_to_goal");
+
+  auto info_path = std::make_shared<std::string>();
+  CLI::App* info = line.AddCommand(
+      "info",
+      "Channels and event counts of a log.\n"
+      "Example: dream log info runs/go_to_goal/run.lcmlog",
+      [info_path] { return RunLogInfo(*info_path); }, log);
+  info->add_option("log", *info_path, "LCM log file, or a run folder (its run.lcmlog)")->required();
+
+  auto diff_args = std::make_shared<LogDiffArgs>();
+  CLI::App* diff = line.AddCommand(
+      "diff",
+      "Compare two logs message by message, per channel, ignoring timestamps. Exit 0 when equal.\n"
+      "Example: dream log diff a/run.lcmlog b/run.lcmlog --channels DREAM_POSES",
+      [diff_args] { return RunLogDiff(diff_args->first_log, diff_args->second_log, diff_args->channel_regex); }, log);
+  diff->add_option("a", diff_args->first_log, "First log (or run folder)")->required();
+  diff->add_option("b", diff_args->second_log, "Second log (or run folder)")->required();
+  diff->add_option("--channels", diff_args->channel_regex, "Regex of channels to compare")->capture_default_str();
 }
 
 }  // namespace dream::cli

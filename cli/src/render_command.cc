@@ -7,10 +7,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
 
+#include "command_line.h"
 #include "commands.h"
 #include "dream/config/run_config.h"
 #include "dream/sim/ffmpeg_encoder.h"
@@ -21,6 +23,7 @@
 #include "dream/sim/run_track.h"
 #include "dream/sim/trajectory_picture.h"
 #include "render_overlays.h"
+#include "shared_options.h"
 
 namespace dream::cli {
 namespace {
@@ -233,6 +236,40 @@ int RunRender(const RenderArgs& args) {
             << " s at " << options.fps << " fps, " << animation.layout().width_px() << "x"
             << animation.layout().height_px() << ", " << SecondsSince(start) << " s)\n";
   return kExitOk;
+}
+
+void DeclareRenderCommand(CommandLine& line) {
+  auto args = std::make_shared<RenderArgs>();
+  CLI::App* command = line.AddCommand(
+      "render",
+      "Draw a recorded run (simulated or imported from the lab): the arena with trajectories, obstacles,\n"
+      "goals and final poses (.png/.svg), a video of the run (.mp4/.gif, needs ffmpeg), or the metrics\n"
+      "over time (--plot). --out's extension picks; without --out: trajectories.svg, run.mp4 (--video)\n"
+      "or metrics.png (--plot) beside the log.\n"
+      "Example: dream render runs/hrvo_circle --out runs/hrvo_circle/run.mp4 --radio-links",
+      [args] { return RunRender(*args); });
+  command->add_option("run", args->input, "Run folder (its run.lcmlog) or an .lcmlog file")->required();
+  command->add_option("--out", args->out, "Output file: .png, .svg, .mp4 or .gif");
+  command->add_option("--config", args->config_path,
+                      "The run's config, for goals, sensors and radio (default: config.yaml beside the log)");
+  command->add_flag("--video", args->video, "Without --out: write run.mp4 beside the log");
+  command->add_flag("--plot", args->plot, "Plot the metrics over time (summary.json's series and the closest approach)");
+  command->add_option("--metric", args->metrics, "Plot only this series (repeat for more; implies --plot)")
+      ->allow_extra_args(false);
+  command->add_flag("--radio-links", args->radio_links,
+                    "Draw radio broadcasts from sender to the robots that hear it (from the config's radio)");
+  command->add_flag("--sensor-ranges", args->sensor_ranges,
+                    "Draw the reach of the movement/obstacle sensors round each robot");
+  command->add_option("--width", args->width_px, "Width in pixels (default 1280 picture, 1000 plot, 720 MP4, 480 GIF)")
+      ->check(CLI::Range(160, 8192));
+  command->add_option("--fps", args->fps, "Video frames per second (default 30 MP4, 15 GIF)")
+      ->check(CLI::Range(1.0, 120.0));
+  command->add_option("--speed", args->speed, "Simulated seconds per video second")
+      ->check(CLI::Range(0.01, 10000.0))
+      ->capture_default_str();
+  command->add_option("--trail", args->trail_s, "Seconds of simulated time drawn behind each robot")
+      ->check(Seconds(true))
+      ->capture_default_str();
 }
 
 }  // namespace dream::cli

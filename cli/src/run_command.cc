@@ -1,13 +1,16 @@
 #include <spdlog/spdlog.h>
 
+#include <memory>
 #include <random>
 
+#include "command_line.h"
 #include "commands.h"
 #include "dream/agents/agent_host.h"
 #include "dream/agents/controller_factory.h"
 #include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/lcm_url.h"
 #include "run_output.h"
+#include "shared_options.h"
 
 namespace dream::cli {
 
@@ -29,6 +32,26 @@ int RunSimOnly(const RunArgs& args) {
   lcm::LcmBus bus(lcm::ResolveLcmUrl(args.lcm_url));
   const std::string out_dir = PrepareOutputDir(args, config);
   return RunWorld(bus, config, out_dir);
+}
+
+void DeclareRunCommand(CommandLine& line) {
+  auto args = std::make_shared<RunArgs>();
+  CLI::App* command = line.AddCommand(
+      "run",
+      "Run an experiment in one process: the simulator and every robot's agent on one bus.\n"
+      "Example: dream run config/go_to_goal.yaml --out runs/demo",
+      [args] { return RunEmbedded(*args); });
+  AddRunOptions(command, args.get(), "LCM URL (default memq://, in-process)");
+}
+
+void DeclareSimCommand(CommandLine& line) {
+  auto args = std::make_shared<RunArgs>();
+  CLI::App* command = line.AddCommand(
+      "sim",
+      "Run only the simulator; agents run elsewhere (dream agent) on the same LCM URL.\n"
+      "Example: dream sim config/go_to_goal.yaml --lcm-url 'udpm://239.255.76.67:7667?ttl=0'",
+      [args] { return RunSimOnly(*args); });
+  AddRunOptions(command, args.get(), "LCM URL (default $LCM_DEFAULT_URL, else udpm://239.255.76.67:7667?ttl=0)");
 }
 
 }  // namespace dream::cli

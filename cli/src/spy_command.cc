@@ -5,7 +5,9 @@
 
 #include <filesystem>
 #include <iostream>
+#include <memory>
 
+#include "command_line.h"
 #include "commands.h"
 #include "data_files.h"
 #include "dream/lcm/lcm_url.h"
@@ -40,6 +42,12 @@ std::string ShellQuoted(const std::string& text) {
   for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return quoted + "'";
 }
+
+struct SpyArgs {
+  std::string log_path;             ///< empty: live traffic
+  std::string lcm_url;              ///< empty: $LCM_DEFAULT_URL, or a private port for a log
+  bool print_command_only = false;
+};
 
 }  // namespace
 
@@ -82,6 +90,18 @@ int RunSpy(const std::string& log_path, const std::string& lcm_url, bool print_c
     if (StopFlag().load()) children.SignalAll(SIGTERM);
   }
   return code == 0 || StopFlag().load() ? kExitOk : kExitRunFailed;
+}
+
+void DeclareSpyCommand(CommandLine& line) {
+  auto args = std::make_shared<SpyArgs>();
+  CLI::App* command = line.AddCommand(
+      "spy",
+      "Open lcm-spy with the dream types, on live traffic or on a recorded log.\n"
+      "Example: dream spy --log runs/go_to_goal/run.lcmlog",
+      [args] { return RunSpy(args->log_path, args->lcm_url, args->print_command_only); });
+  command->add_option("--log", args->log_path, "Replay this log into lcm-spy (on a private loopback port)");
+  command->add_option("--lcm-url", args->lcm_url, "LCM URL to inspect (default $LCM_DEFAULT_URL)");
+  command->add_flag("--print", args->print_command_only, "Print the commands instead of starting them");
 }
 
 }  // namespace dream::cli

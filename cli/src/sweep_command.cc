@@ -8,9 +8,11 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <thread>
 
+#include "command_line.h"
 #include "commands.h"
 #include "config_override.h"
 #include "dream/agents/controller_factory.h"
@@ -21,6 +23,7 @@
 #include "process_group.h"
 #include "run_output.h"
 #include "seed_list.h"
+#include "shared_options.h"
 #include "sweep_plan.h"
 #include "sweep_run_result.h"
 #include "sweep_table.h"
@@ -84,7 +87,7 @@ std::string Seconds(double seconds) {
 }
 
 /// The command line that reproduces this sweep (for sweep.md).
-std::string CommandLine(const SweepArgs& args, const std::string& seeds, int jobs) {
+std::string ReproducingCommand(const SweepArgs& args, const std::string& seeds, int jobs) {
   auto quoted = [](const std::string& text) {
     return text.find_first_of(" \t'\"$[]{}*?;&|<>()\\") == std::string::npos ? text : "'" + text + "'";
   };
@@ -203,7 +206,7 @@ int RunSweep(const SweepArgs& args) {
   // --- the table, also for an interrupted sweep (the runs that ended) ---
   const std::string seeds_text = args.seeds.empty() ? std::to_string(base.seed) : args.seeds;
   const std::vector<std::pair<std::string, std::string>> facts = {
-      {"command", CommandLine(args, seeds_text, jobs)},
+      {"command", ReproducingCommand(args, seeds_text, jobs)},
       {"runs in parallel", std::to_string(jobs) + " (" + std::to_string(cores) + " cores)"},
       {"wall time", Seconds(wall_s) + (stopping ? " (interrupted)" : "")},
   };
@@ -220,6 +223,30 @@ int RunSweep(const SweepArgs& args) {
     return kExitRunFailed;
   }
   return kExitOk;
+}
+
+void DeclareSweepCommand(CommandLine& line) {
+  auto args = std::make_shared<SweepArgs>();
+  CLI::App* command = line.AddCommand(
+      "sweep",
+      "Run an experiment over many seeds and parameter values in parallel (one dream run process per\n"
+      "run, --jobs at a time) and tabulate the outcomes in <out>/sweep.csv and sweep.md (docs/sweeps.md).\n"
+      "Example: dream sweep config/hrvo_circle.yaml --seeds 1-20 --out sweeps/hrvo_circle",
+      [args] { return RunSweep(*args); });
+  command->add_option("config", args->config_path, "Run config (YAML) to sweep")->required();
+  command->add_option("--seeds", args->seeds, "Seeds: 7, 1-20 or 1,4,9-12 (default: the config's seed)");
+  command
+      ->add_option("--set", args->sets,
+                   "KEY=V1,V2,...: also sweep this config key (dotted: controller.max_speed_mps,\n"
+                   "controller.sensors.0.noise_std); repeat for more keys, every combination runs")
+      ->allow_extra_args(false);
+  command->add_option("-j,--jobs", args->jobs, "Runs at once (default: one per core)")->check(CLI::Range(1, 1024));
+  command->add_option("--steps", args->steps, "Override the config's step limit in every run")->check(StepCount());
+  command->add_option("--out", args->out_dir, "Sweep folder (its parent must exist)")->required();
+  command->add_option("--timeout", args->run_timeout_s,
+                      "Stop a run still going after this many seconds; it counts as failed")
+      ->check(Seconds(false))
+      ->capture_default_str();
 }
 
 }  // namespace dream::cli

@@ -1,0 +1,51 @@
+#include "shared_options.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+namespace dream::cli {
+
+CLI::Validator StepCount() {
+  return CLI::Validator(
+      [](const std::string& text) {
+        return text.find_first_not_of("0123456789") == std::string::npos && text.find_first_not_of('0') != std::string::npos
+                   ? std::string()
+                   : "must be a whole number >= 1, got " + text;
+      },
+      "INT>=1");
+}
+
+CLI::Validator Seconds(bool zero_allowed) {
+  const std::string rule = zero_allowed ? ">= 0" : "> 0";
+  return CLI::Validator(
+      [zero_allowed, rule](const std::string& text) {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        const bool number = !text.empty() && end == text.c_str() + text.size() && std::isfinite(value);
+        return number && (zero_allowed ? value >= 0.0 : value > 0.0)
+                   ? std::string()
+                   : "must be a number of seconds " + rule + ", got " + text;
+      },
+      zero_allowed ? "SECONDS>=0" : "SECONDS>0");
+}
+
+void AddRunOptions(CLI::App* command, RunArgs* args, const char* url_help) {
+  command->add_option("config", args->config_path, "Run config (YAML), e.g. config/go_to_goal.yaml")->required();
+  command->add_option("--out", args->out_dir, "Output folder for run.lcmlog and summary.json (default runs/<name>)");
+  command->add_option("--lcm-url", args->lcm_url, url_help);
+  command->add_option("--steps", args->steps, "Override the config's step limit")->check(StepCount());
+  command->add_option("--mode", args->mode, "Override the world mode")->check(CLI::IsMember({"lockstep", "realtime"}));
+  command->add_flag("--all-steps", args->all_steps, "Run every step even when all robots report done (benchmarks)");
+}
+
+void AddAgentOptions(CLI::App* command, AgentArgs* args) {
+  command->add_option("config", args->config_path, "Run config (YAML)")->required();
+  command->add_option("--robots", args->robots, "Robots to drive: all, 3, 0,2,5 or 0-4")->capture_default_str();
+  command->add_option("--lcm-url", args->lcm_url, "LCM URL (default $LCM_DEFAULT_URL)");
+  command->add_option("--idle-timeout", args->idle_timeout_s, "Give up after this many seconds without poses")
+      ->check(Seconds(false))
+      ->capture_default_str();
+}
+
+}  // namespace dream::cli

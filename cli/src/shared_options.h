@@ -1,0 +1,26 @@
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include "commands.h"
+
+namespace dream::cli {
+
+/// --steps: a whole number >= 1, with a message that says so (CLI::PositiveNumber
+/// would take 2.5 and quote a 300-digit range). Shared by every command that
+/// runs steps (run, sim, launch, lab-replay, sweep).
+CLI::Validator StepCount();
+
+/// A duration in seconds: finite and > 0 (or >= 0 with `zero_allowed`), with
+/// a message that says so instead of CLI11's 300-digit range.
+CLI::Validator Seconds(bool zero_allowed);
+
+/// The options of the commands that run an experiment (run, sim, launch);
+/// only the help of --lcm-url differs, as each picks its own default bus.
+void AddRunOptions(CLI::App* command, RunArgs* args, const char* url_help);
+
+/// The options of `dream agent`, which the dream-agent executable it hands
+/// over to must parse the same way.
+void AddAgentOptions(CLI::App* command, AgentArgs* args);
+
+}  // namespace dream::cli
