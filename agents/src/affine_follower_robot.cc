@@ -93,7 +93,7 @@ std::optional<std::vector<uint8_t>> AffineFollowerRobot::OnRadio(const std::vect
     const std::optional<FormationStateMessage> state =
         FormationStateMessage::Decode(message.payload, message.sender_id);
     if (!state) {
-      CountBadRadioMessage();
+      CountBadRadioMessage(message);
       continue;
     }
     it->known = true;

@@ -45,7 +45,7 @@ CircleFormationRobot::CircleFormationRobot(int id, const RobotParams& robot_para
 
 std::optional<std::vector<uint8_t>> CircleFormationRobot::OnRadio(const std::vector<RadioMessage>& heard) {
   for (const RadioMessage& message : heard) {
-    if (!progress_.Merge(message.payload)) CountBadRadioMessage();
+    if (!progress_.Merge(message.payload)) CountBadRadioMessage(message);
   }
   progress_.Set(id(), reached_);
   // Everyone (as far as we know) has reached the point we hold: go to the next.

@@ -82,7 +82,7 @@ std::optional<std::vector<uint8_t>> LineDeploymentRobot::OnRadio(const std::vect
     const std::optional<NeighbourPosition> neighbour = Decode(message.payload);
     // A payload claiming another robot's id is as bad as a truncated one.
     if (!neighbour || neighbour->id != message.sender_id) {
-      CountBadRadioMessage();
+      CountBadRadioMessage(message);
       continue;
     }
     neighbours_[neighbour->id] = neighbour->position_m;

@@ -6,6 +6,7 @@
 #include "dream/agents/graph_radio.h"
 #include "dream/agents/mailbox.h"
 #include "dream/agents/noise_source.h"
+#include "dream/agents/number_text.h"
 #include "dream/agents/range_radio.h"
 #include "dream/agents/role_radio.h"
 
@@ -13,7 +14,7 @@ namespace dream::agents {
 
 RangeRadio::RangeRadio(double range_m) : range_m_(range_m) {
   if (!(range_m > 0.0) || !std::isfinite(range_m)) {
-    throw std::invalid_argument("range_m must be > 0, got " + std::to_string(range_m));
+    throw std::invalid_argument("range_m must be > 0, got " + NumberText(range_m));
   }
 }
 
@@ -40,8 +41,8 @@ CommunicationGraph::CommunicationGraph(Eigen::MatrixXd adjacency, int num_robots
       }
       if (require_symmetric && adjacency_(i, j) != adjacency_(j, i)) {
         throw std::invalid_argument("must be symmetric, but entry (" + std::to_string(i) + ", " + std::to_string(j) +
-                                    ") is " + std::to_string(adjacency_(i, j)) + " and (" + std::to_string(j) +
-                                    ", " + std::to_string(i) + ") is " + std::to_string(adjacency_(j, i)));
+                                    ") is " + NumberText(adjacency_(i, j)) + " and (" + std::to_string(j) +
+                                    ", " + std::to_string(i) + ") is " + NumberText(adjacency_(j, i)));
       }
     }
     if (adjacency_(i, i) != 0.0) {
@@ -92,7 +93,7 @@ bool RoleRadio::CanHear(int self_id, int sender_id, const WorldSnapshot& world) 
 
 bool RadioLinkParams::IsValid(std::string* error) const {
   if (!(loss_probability >= 0.0 && loss_probability < 1.0)) {
-    if (error != nullptr) *error = "loss_probability must be in [0, 1), got " + std::to_string(loss_probability);
+    if (error != nullptr) *error = "loss_probability must be in [0, 1), got " + NumberText(loss_probability);
     return false;
   }
   if (delay_steps < 0) {

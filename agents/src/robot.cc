@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "dream/agents/number_text.h"
+
 namespace dream::agents {
 
 bool RobotParams::IsValid(std::string* error) const {
@@ -10,8 +12,8 @@ bool RobotParams::IsValid(std::string* error) const {
     if (error != nullptr) *error = message;
     return false;
   };
-  if (!(vel_gain > 0.0) || !std::isfinite(vel_gain)) return fail("vel_gain must be > 0, got " + std::to_string(vel_gain));
-  if (!(ang_gain > 0.0) || !std::isfinite(ang_gain)) return fail("ang_gain must be > 0, got " + std::to_string(ang_gain));
+  if (!(vel_gain > 0.0) || !std::isfinite(vel_gain)) return fail("vel_gain must be > 0, got " + NumberText(vel_gain));
+  if (!(ang_gain > 0.0) || !std::isfinite(ang_gain)) return fail("ang_gain must be > 0, got " + NumberText(ang_gain));
   return true;
 }
 
@@ -30,11 +32,21 @@ std::optional<std::vector<uint8_t>> Robot::OnRadio(const std::vector<RadioMessag
   return std::nullopt;
 }
 
-UnicycleCommand Robot::DxiToDxu(const Eigen::Vector2d& dxi_mps) const {
-  const double c = std::cos(pose().z());
-  const double s = std::sin(pose().z());
-  const double v = params_.vel_gain * (c * dxi_mps.x() + s * dxi_mps.y());
-  const double w = params_.ang_gain * std::atan2(-s * dxi_mps.x() + c * dxi_mps.y(), v) / (M_PI / 2.0);
+void Robot::CountBadRadioMessage(const RadioMessage& message) {
+  ++bad_radio_messages_;
+  ++bad_radio_messages_by_sender_[message.sender_id];
+}
+
+void Robot::CountBadRadioMessage() {
+  ++bad_radio_messages_;
+  ++bad_radio_messages_by_sender_[kUnknownSender];
+}
+
+UnicycleCommand Robot::DxiToDxu(const Eigen::Vector2d& dxi_mps, double theta_rad, const RobotParams& params) {
+  const double c = std::cos(theta_rad);
+  const double s = std::sin(theta_rad);
+  const double v = params.vel_gain * (c * dxi_mps.x() + s * dxi_mps.y());
+  const double w = params.ang_gain * std::atan2(-s * dxi_mps.x() + c * dxi_mps.y(), v) / (M_PI / 2.0);
   return {v, w};
 }
 

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "dream/agents/movement_sensor.h"
+#include "dream/agents/number_text.h"
 #include "dream/agents/obstacle_sensor.h"
 #include "dream/agents/odometry_sensor.h"
 #include "dream/agents/robot.h"
@@ -14,6 +15,8 @@ bool Fail(std::string* error, const std::string& message) {
   if (error != nullptr) *error = message;
   return false;
 }
+
+constexpr double kFullCircleSlackRad = 1e-4;
 
 bool NonNegative(double value) { return std::isfinite(value) && value >= 0.0; }
 bool Positive(double value) { return std::isfinite(value) && value > 0.0; }
@@ -30,26 +33,27 @@ double WrapAngle(double angle_rad) { return std::atan2(std::sin(angle_rad), std:
 }  // namespace
 
 bool OdometrySensorParams::IsValid(std::string* error) const {
-  if (!NonNegative(noise_std)) return Fail(error, "noise_std must be >= 0, got " + std::to_string(noise_std));
+  if (!NonNegative(noise_std)) return Fail(error, "noise_std must be >= 0, got " + NumberText(noise_std));
   return true;
 }
 
 bool MovementSensorParams::IsValid(std::string* error) const {
-  if (!Positive(range_m)) return Fail(error, "range_m must be > 0, got " + std::to_string(range_m));
+  if (!Positive(range_m)) return Fail(error, "range_m must be > 0, got " + NumberText(range_m));
   if (!std::isfinite(direction_rad)) return Fail(error, "direction_rad must be finite");
-  if (!(field_of_view_rad > 0.0 && field_of_view_rad <= 2 * M_PI + 1e-9)) {
-    return Fail(error, "field_of_view_rad must be in (0, 2 pi], got " + std::to_string(field_of_view_rad));
+  // 2 pi as people write it (6.2832, rounded up) is a full circle too.
+  if (!(field_of_view_rad > 0.0 && field_of_view_rad <= 2 * M_PI + kFullCircleSlackRad)) {
+    return Fail(error, "field_of_view_rad must be in (0, 2 pi = 6.2832], got " + NumberText(field_of_view_rad));
   }
-  if (!NonNegative(noise_std)) return Fail(error, "noise_std must be >= 0, got " + std::to_string(noise_std));
+  if (!NonNegative(noise_std)) return Fail(error, "noise_std must be >= 0, got " + NumberText(noise_std));
   if (!NonNegative(velocity_point_ahead_m)) {
-    return Fail(error, "velocity_point_ahead_m must be >= 0, got " + std::to_string(velocity_point_ahead_m));
+    return Fail(error, "velocity_point_ahead_m must be >= 0, got " + NumberText(velocity_point_ahead_m));
   }
   return true;
 }
 
 bool ObstacleSensorParams::IsValid(std::string* error) const {
-  if (!Positive(range_m)) return Fail(error, "range_m must be > 0, got " + std::to_string(range_m));
-  if (!NonNegative(noise_std)) return Fail(error, "noise_std must be >= 0, got " + std::to_string(noise_std));
+  if (!Positive(range_m)) return Fail(error, "range_m must be > 0, got " + NumberText(range_m));
+  if (!NonNegative(noise_std)) return Fail(error, "noise_std must be >= 0, got " + NumberText(noise_std));
   return true;
 }
 

@@ -55,7 +55,7 @@ std::optional<std::vector<uint8_t>> VoronoiCoverageRobot::OnRadio(const std::vec
     if (message.sender_id == id()) continue;
     const std::optional<PositionMessage> decoded = PositionMessage::Decode(message.payload, message.sender_id);
     if (!decoded) {
-      CountBadRadioMessage();
+      CountBadRadioMessage(message);
       const auto previous = neighbours_.find(message.sender_id);
       if (previous != neighbours_.end()) neighbours.insert(*previous);
       continue;

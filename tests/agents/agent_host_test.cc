@@ -1,10 +1,15 @@
 #include "dream/agents/agent_host.h"
 
 #include <gtest/gtest.h>
+#include <spdlog/sinks/ostream_sink.h>
+#include <spdlog/spdlog.h>
+
+#include <sstream>
 
 #include "dream/agents/byte_reader.h"
 #include "dream/agents/byte_writer.h"
 #include "dream/agents/controller_factory.h"
+#include "dream/agents/graph_radio.h"
 #include "dream/agents/range_radio.h"
 #include "dream/lcm/channels.h"
 #include "dream/lcm/lcm_bus.h"
@@ -14,8 +19,9 @@
 namespace dream::agents {
 namespace {
 
-/// Counts its Update calls, drives at w = own x, and broadcasts its id and
-/// the sum of the ids it heard.
+/// Counts its Update calls, drives at w = own x, broadcasts its id and keeps
+/// the ids it heard; a payload that is not one int32 is counted as bad (with
+/// its sender unless name_bad_senders is false).
 class CountingRobot final : public Robot {
  public:
   CountingRobot(int id, int* calls) : Robot(id, RobotParams{}), calls_(calls) {}
@@ -24,31 +30,43 @@ class CountingRobot final : public Robot {
     return {0.1, pose().x()};
   }
   std::optional<std::vector<uint8_t>> OnRadio(const std::vector<RadioMessage>& heard) override {
-    heard_ids_sum = 0;
+    heard_ids.clear();
     for (const RadioMessage& message : heard) {
       ByteReader reader(message.payload);
       const int32_t id = reader.Int32();
       if (!reader.done()) {
-        CountBadRadioMessage();
+        if (name_bad_senders) {
+          CountBadRadioMessage(message);
+        } else {
+          CountBadRadioMessage();
+        }
         continue;
       }
-      heard_ids_sum += id;
+      heard_ids.push_back(id);
     }
     return ByteWriter().Int32(id()).Take();
   }
-  int heard_ids_sum = -1;
+  std::vector<int> heard_ids;
+  bool name_bad_senders = true;
 
  private:
   int* calls_;
 };
 
-std::unique_ptr<RobotAgent> MakeAgent(int id, int* calls) {
+std::unique_ptr<RobotAgent> MakeAgent(int id, int* calls, std::unique_ptr<Radio> radio = nullptr,
+                                      bool name_bad_senders = true) {
   RobotAgentSpec spec;
-  spec.robot = std::make_unique<CountingRobot>(id, calls);
+  auto robot = std::make_unique<CountingRobot>(id, calls);
+  robot->name_bad_senders = name_bad_senders;
+  spec.robot = std::move(robot);
   SensorSlot odometry{std::make_unique<OdometrySensor>(OdometrySensorParams{}, 1), 1};
   spec.sensors.push_back(std::move(odometry));
-  spec.radio = std::make_unique<RangeRadio>(10.0);
+  spec.radio = radio ? std::move(radio) : std::make_unique<RangeRadio>(10.0);
   return std::make_unique<RobotAgent>(std::move(spec), 7);
+}
+
+const CountingRobot& Counting(const AgentHost& host, size_t i) {
+  return static_cast<const CountingRobot&>(host.agent(i).robot());
 }
 
 robot_poses_t Poses(int64_t step, int num_robots) {
@@ -119,12 +137,52 @@ TEST_F(AgentHostTest, RadioMessagesOfStepKAreHeardAtStepKPlusOne) {
   EXPECT_EQ(radio_[1].sender_id, 1);
   EXPECT_EQ(radio_[1].step, 1);
   // Nothing was heard at step 1: messages sent at step 1 arrive for step 2.
-  const auto& robot0 = static_cast<const CountingRobot&>(host.agent(0).robot());
-  EXPECT_EQ(robot0.heard_ids_sum, 0);
+  EXPECT_TRUE(Counting(host, 0).heard_ids.empty());
   lcm::Publish(bus_, lcm::kPosesChannel, Poses(2, 3));
   Drain();
-  EXPECT_EQ(robot0.heard_ids_sum, 1 + 2);
-  EXPECT_EQ(static_cast<const CountingRobot&>(host.agent(2).robot()).heard_ids_sum, 0 + 1);
+  EXPECT_EQ(Counting(host, 0).heard_ids, (std::vector<int>{1, 2}));
+  EXPECT_EQ(Counting(host, 2).heard_ids, (std::vector<int>{0, 1}));
+}
+
+// Every message reaches every host on the bus; each receiving robot's radio
+// decides, from the world's poses, whom it hears.
+TEST_F(AgentHostTest, RangeRadioHearsOnlyRobotsInRangeOfTheReceiver) {
+  int calls = 0;
+  std::vector<std::unique_ptr<RobotAgent>> agents;
+  for (int id = 0; id < 3; ++id) agents.push_back(MakeAgent(id, &calls, std::make_unique<RangeRadio>(0.15)));
+  AgentHost host(bus_, std::move(agents), 1);
+  // Poses() puts robot i at x = 0.1 i: 0 and 2 are 0.2 m apart, beyond 0.15 m.
+  lcm::Publish(bus_, lcm::kPosesChannel, Poses(1, 3));
+  Drain();
+  ASSERT_EQ(radio_.size(), 3u);  // everyone spoke, on the bus for all
+  lcm::Publish(bus_, lcm::kPosesChannel, Poses(2, 3));
+  Drain();
+  EXPECT_EQ(Counting(host, 0).heard_ids, (std::vector<int>{1}));
+  EXPECT_EQ(Counting(host, 1).heard_ids, (std::vector<int>{0, 2}));
+  EXPECT_EQ(Counting(host, 2).heard_ids, (std::vector<int>{1}));
+}
+
+TEST_F(AgentHostTest, GraphRadioDoesNotHearUnlinkedSenders) {
+  // Row i lists whom robot i hears: 0 hears 1 and 2, 1 hears 0, 2 hears nobody
+  // (though 0 hears 2: links are one-way unless the matrix says both).
+  Eigen::MatrixXd adjacency(3, 3);
+  adjacency << 0, 1, 1,  //
+      1, 0, 0,           //
+      0, 0, 0;
+  int calls = 0;
+  std::vector<std::unique_ptr<RobotAgent>> agents;
+  for (int id = 0; id < 3; ++id) {
+    auto radio = std::make_unique<GraphRadio>(CommunicationGraph(adjacency, 3, false, false));
+    agents.push_back(MakeAgent(id, &calls, std::move(radio)));
+  }
+  AgentHost host(bus_, std::move(agents), 1);
+  lcm::Publish(bus_, lcm::kPosesChannel, Poses(1, 3));
+  Drain();  // everyone speaks at step 1...
+  lcm::Publish(bus_, lcm::kPosesChannel, Poses(2, 3));
+  Drain();  // ... and hears at step 2
+  EXPECT_EQ(Counting(host, 0).heard_ids, (std::vector<int>{1, 2}));
+  EXPECT_EQ(Counting(host, 1).heard_ids, (std::vector<int>{0}));
+  EXPECT_TRUE(Counting(host, 2).heard_ids.empty());
 }
 
 TEST_F(AgentHostTest, BadNeighbourPayloadsAreDroppedByTheRobot) {
@@ -145,6 +203,86 @@ TEST_F(AgentHostTest, BadNeighbourPayloadsAreDroppedByTheRobot) {
   Drain();
   EXPECT_EQ(host.agent(0).robot().bad_radio_messages(), 1);
   EXPECT_EQ(host.bad_messages().count(lcm::RadioChannel(5)), 1);
+}
+
+/// Routes spdlog's default logger into a string while alive.
+class CapturedLog {
+ public:
+  CapturedLog() : previous_(spdlog::default_logger()) {
+    spdlog::set_default_logger(
+        std::make_shared<spdlog::logger>("captured", std::make_shared<spdlog::sinks::ostream_sink_st>(text_)));
+  }
+  ~CapturedLog() { spdlog::set_default_logger(previous_); }
+  std::string text() const { return text_.str(); }
+
+ private:
+  std::ostringstream text_;
+  std::shared_ptr<spdlog::logger> previous_;
+};
+
+TEST_F(AgentHostTest, UndecodablePayloadsAreLoggedBySenderFirstThenEveryHundredthAndTotalledAtTheEnd) {
+  CapturedLog log;
+  {
+    int calls = 0;
+    std::vector<std::unique_ptr<RobotAgent>> agents;
+    agents.push_back(MakeAgent(0, &calls));
+    agents.push_back(MakeAgent(1, &calls, nullptr, /*name_bad_senders=*/false));
+    AgentHost host(bus_, std::move(agents), 1);
+    radio_message_t bad{};
+    bad.step = 1;
+    bad.sender_id = 5;
+    bad.payload = {1, 2};  // too short for an int32
+    bad.payload_size = 2;
+    lcm::Publish(bus_, lcm::RadioChannel(5), bad);
+    // The mailbox keeps a sender's latest message, so the robots hear (and
+    // reject) it again at every radio round: steps 2..101 make 100.
+    for (int64_t step = 2; step <= 101; ++step) {
+      lcm::Publish(bus_, lcm::kPosesChannel, Poses(step, 6));
+      Drain();
+    }
+    EXPECT_EQ(host.agent(0).robot().bad_radio_messages(), 100);
+    EXPECT_EQ(host.bad_radio_payloads(0).count(lcm::RadioChannel(5)), 100);
+    EXPECT_EQ(host.bad_radio_payloads(0).total(), 100);
+    EXPECT_EQ(host.bad_radio_payloads(1).count(AgentHost::kUnknownSenderChannel), 100);
+    EXPECT_EQ(host.bad_messages().total(), 0);  // the LCM message itself was fine
+    const std::string during = log.text();
+    EXPECT_NE(during.find("DREAM_RADIO_5: dropped bad message #1: robot 0: payload did not decode"),
+              std::string::npos)
+        << during;
+    EXPECT_NE(during.find("DREAM_RADIO_5: dropped bad message #100: robot 0: payload did not decode"),
+              std::string::npos)
+        << during;
+    EXPECT_EQ(during.find("#2:"), std::string::npos) << during;
+    EXPECT_NE(during.find("DREAM_RADIO_<unknown sender>: dropped bad message #1: robot 1: payload did not decode"),
+              std::string::npos)
+        << during;
+    EXPECT_EQ(during.find("did not decode: DREAM_RADIO"), std::string::npos);  // no totals before the end
+  }
+  const std::string after = log.text();
+  EXPECT_NE(after.find("robot 0 dropped 100 radio payload(s) that did not decode: DREAM_RADIO_5 x100"),
+            std::string::npos)
+      << after;
+  EXPECT_NE(after.find("robot 1 dropped 100 radio payload(s) that did not decode: DREAM_RADIO_<unknown sender> x100"),
+            std::string::npos)
+      << after;
+}
+
+TEST_F(AgentHostTest, AHostWhoseRobotsDecodedEverythingLogsNoTotals) {
+  CapturedLog log;
+  {
+    int calls = 0;
+    std::vector<std::unique_ptr<RobotAgent>> agents;
+    agents.push_back(MakeAgent(0, &calls));
+    agents.push_back(MakeAgent(1, &calls));
+    AgentHost host(bus_, std::move(agents), 1);
+    for (int64_t step = 1; step <= 3; ++step) {
+      lcm::Publish(bus_, lcm::kPosesChannel, Poses(step, 2));
+      Drain();
+    }
+    EXPECT_EQ(Counting(host, 0).heard_ids, (std::vector<int>{1}));
+    EXPECT_EQ(host.bad_radio_payloads(0).total(), 0);
+  }
+  EXPECT_EQ(log.text().find("did not decode"), std::string::npos) << log.text();
 }
 
 TEST_F(AgentHostTest, MalformedPosesAndMissingRobotsAreCountedNotFatal) {
@@ -181,18 +319,91 @@ TEST(ControllerFactoryTest, UnknownKindsAndBadSectionsAreClearErrors) {
   EXPECT_NE(error_of(base + "  sensors: [{kind: sonar}]\n", 2).find("unknown sensor kind 'sonar'"), std::string::npos);
   EXPECT_NE(error_of(base + "  sensors: [{kind: odometry, period_steps: 0}]\n", 2).find("must be >= 1, got 0"),
             std::string::npos);
-  EXPECT_NE(error_of(base + "  sensors: [{kind: odometry, noise_std: -0.1}]\n", 2).find("noise_std must be >= 0"),
+  EXPECT_NE(error_of(base + "  sensors: [{kind: odometry, noise_std: -0.1}]\n", 2)
+                .find("controller.sensors[0].noise_std: must be >= 0, got -0.1"),
             std::string::npos);
   EXPECT_NE(error_of(base + "  radio: {kind: carrier_pigeon}\n", 2).find("unknown radio kind 'carrier_pigeon'"),
             std::string::npos);
   EXPECT_NE(error_of(base + "  radio: {kind: graph, graph: [[0, 1, 0], [1, 0, 0], [0, 0, 0]]}\n", 2)
                 .find("must be 2x2"),
             std::string::npos);
-  EXPECT_NE(error_of(base + "  radio: {kind: range, loss_probability: 1.5}\n", 2).find("loss_probability must be in"),
+  EXPECT_NE(error_of(base + "  radio: {kind: range, loss_probability: 1.5}\n", 2)
+                .find("controller.radio.loss_probability: must be in [0, 1), got 1.5"),
             std::string::npos);
   EXPECT_NE(error_of(base + "  robot: {period_steps: [1, 2, 3]}\n", 2).find("one per robot (2), got 3"),
             std::string::npos);
   EXPECT_NE(error_of(base + "  colour: red\n", 2).find("colour: unknown key for kind go_to_goal"), std::string::npos);
+}
+
+std::string FactoryError(const std::string& yaml, int robots) {
+  try {
+    ControllerFactory(config::ConfigNode::LoadString(yaml, "c.yaml").Required("controller"), robots, 1);
+  } catch (const config::ConfigError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no config error for:\n" << yaml;
+  return "";
+}
+
+// Each mistake in the common parts names its file, line, key and value.
+TEST(ControllerFactoryTest, BadPeriodsDelaysNoiseAndRadioImpairmentsNameKeyAndValue) {
+  const std::string base = "controller:\n  kind: go_to_goal\n  goals: [[0, 0], [1, 0]]\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"  robot: {period_steps: 0}\n", "c.yaml:4: controller.robot.period_steps: must be >= 1, got 0"},
+      {"  robot: {period_steps: [2, -3]}\n", "c.yaml:4: controller.robot.period_steps[1]: must be >= 1, got -3"},
+      {"  robot: {period_steps: 4294967297}\n", "controller.robot.period_steps: must be <= 2147483647, got 4294967297"},
+      {"  robot: {start_delay_steps: -1}\n", "c.yaml:4: controller.robot.start_delay_steps: must be >= 0, got -1"},
+      {"  robot: {vel_gain: 0}\n", "c.yaml:4: controller.robot.vel_gain: must be > 0, got 0"},
+      {"  robot: {ang_gain: -3}\n", "c.yaml:4: controller.robot.ang_gain: must be > 0, got -3"},
+      {"  radio: {kind: range, period_steps: 0}\n", "c.yaml:4: controller.radio.period_steps: must be >= 1, got 0"},
+      {"  sensors: [{kind: odometry}, {kind: movement, noise_std: -0.01}]\n",
+       "c.yaml:4: controller.sensors[1].noise_std: must be >= 0, got -0.01"},
+      {"  sensors: [{kind: obstacle, noise_std: -2}]\n",
+       "c.yaml:4: controller.sensors[0].noise_std: must be >= 0, got -2"},
+      {"  sensors: [{kind: movement, field_of_view_rad: 7}]\n",
+       "c.yaml:4: controller.sensors[0].field_of_view_rad: must be in (0, 2 pi = 6.2832], got 7"},
+      {"  sensors: [{kind: obstacle, range_m: 0}]\n", "c.yaml:4: controller.sensors[0].range_m: must be > 0, got 0"},
+      {"  radio: {kind: range, loss_probability: 1.0}\n",
+       "c.yaml:4: controller.radio.loss_probability: must be in [0, 1), got 1"},
+      {"  radio: {kind: range, loss_probability: -0.1}\n",
+       "c.yaml:4: controller.radio.loss_probability: must be in [0, 1), got -0.1"},
+      {"  radio: {kind: range, delay_steps: -1}\n", "c.yaml:4: controller.radio.delay_steps: must be >= 0, got -1"},
+      {"  radio: {kind: range, range_m: -1}\n", "c.yaml:4: controller.radio.range_m: must be > 0, got -1"},
+      // A key of another radio kind would be ignored: it is an error instead.
+      {"  radio: {kind: range, leaders: [0]}\n",
+       "c.yaml:4: controller.radio.kind: a radio of kind range has no `leaders`"},
+      {"  radio: {kind: graph, graph: [[0, 1], [1, 0]], range_m: 1}\n",
+       "c.yaml:4: controller.radio.kind: a radio of kind graph has no `range_m`; its keys: kind, period_steps, graph, "
+       "loss_probability, delay_steps"},
+      {"  radio: {kind: none, range_m: 1}\n", "c.yaml:4: controller.radio.kind: a radio of kind none has no `range_m`"},
+  };
+  for (const auto& [yaml, expected] : cases) {
+    const std::string error = FactoryError(base + yaml, 2);
+    EXPECT_NE(error.find(expected), std::string::npos) << "config line: " << yaml << "error: " << error;
+  }
+}
+
+// A stress graph in two pieces: followers 3 and 4 linked only to each other
+// can never learn where the leaders are.
+TEST(ControllerFactoryTest, ADisconnectedStressGraphIsRejectedNamingTheUnreachableRobot) {
+  const std::string yaml =
+      "controller:\n"
+      "  kind: affine_formation\n"
+      "  nominal_positions: [[0.4, 0.0], [0.0, 0.4], [0.0, -0.4], [-0.4, 0.2], [-0.4, -0.2]]\n"
+      "  maneuver: [{step: 0}]\n"
+      "  radio:\n"
+      "    kind: role\n"
+      "    leaders: [0, 1, 2]\n"
+      "    graph:\n"
+      "      - [0, 1, 1, 0, 0]\n"
+      "      - [1, 0, 1, 0, 0]\n"
+      "      - [1, 1, 0, 0, 0]\n"
+      "      - [0, 0, 0, 0, 1]\n"
+      "      - [0, 0, 0, 1, 0]\n";
+  const std::string error = FactoryError(yaml, 5);
+  EXPECT_NE(error.find("c.yaml:9: controller.radio.graph: the graph is not connected: robot 3 cannot be reached"),
+            std::string::npos)
+      << error;
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include "dream/agents/actuator_limits.h"
 #include "dream/agents/go_to_goal_robot.h"
+#include "dream/agents/robot.h"
 #include "dream/agents/single_integrator_to_unicycle.h"
 
 namespace dream::agents {
@@ -64,6 +65,105 @@ TEST(SingleIntegratorToUnicycleTest, MatchesTheRobotariumMapping) {
 
 /// Feeds a robot its exact pose as odometry.
 void See(Robot& robot, const Eigen::Vector3d& pose) { robot.OnOdometry({0, pose}); }
+
+/// The smallest Robot: exposes the protected mapping and bad-message counter.
+class BareRobot final : public Robot {
+ public:
+  explicit BareRobot(RobotParams params = {}) : Robot(0, params) {}
+  UnicycleCommand Update(int64_t) override { return {}; }
+  UnicycleCommand Drive(const Eigen::Vector2d& dxi_mps) const { return DxiToDxu(dxi_mps); }
+  void Reject(const RadioMessage& message) { CountBadRadioMessage(message); }
+  void RejectUnnamed() { CountBadRadioMessage(); }
+};
+
+RobotParams Gains(double vel_gain, double ang_gain) {
+  RobotParams params;
+  params.vel_gain = vel_gain;
+  params.ang_gain = ang_gain;
+  return params;
+}
+
+// Thesis Appendix A, Robot.dxi_to_dxu, with a = cos(theta), b = sin(theta):
+//   v = vel_gain (a dx + b dy),  w = ang_gain atan2(-b dx + a dy, v) / (pi/2).
+// Expectations below are worked out by hand from that formula.
+TEST(RobotDxiToDxuTest, TurnsOnTheSpotTowardsASidewaysVelocity) {
+  BareRobot robot;  // vel_gain 0.8, ang_gain 3.0
+  See(robot, {0.0, 0.0, 0.0});
+  // Heading +x, desired +y: v = 0.8 (1 * 0 + 0 * 0.1) = 0; w = 3 atan2(0.1, 0) / (pi/2) = 3.
+  UnicycleCommand c = robot.Drive({0.0, 0.1});
+  EXPECT_NEAR(c.v_mps, 0.0, 1e-15);
+  EXPECT_NEAR(c.w_radps, 3.0, 1e-12);
+  // Heading +y, desired +x (to its right): v = 0.8 (cos(pi/2) 0.1) ~ 0; w = 3 atan2(-0.1, ~0) / (pi/2) = -3.
+  See(robot, {0.0, 0.0, M_PI / 2});
+  c = robot.Drive({0.1, 0.0});
+  EXPECT_NEAR(c.v_mps, 0.0, 1e-15);
+  EXPECT_NEAR(c.w_radps, -3.0, 1e-12);
+  // Heading +y, desired +y: straight on at 0.8 x 0.2 = 0.16 m/s, no turn.
+  c = robot.Drive({0.0, 0.2});
+  EXPECT_NEAR(c.v_mps, 0.16, 1e-12);
+  EXPECT_NEAR(c.w_radps, 0.0, 1e-12);
+}
+
+TEST(RobotDxiToDxuTest, TheTurnUsesTheScaledSpeedAsTheThesisDoes) {
+  // Heading pi/4, desired (0.1, 0): 45 degrees to the right.
+  // v = 0.8 * 0.1 cos(pi/4) = 0.0565685; the atan2's other side is -0.1 sin(pi/4) = -0.0707107,
+  // so w = 3 atan2(-0.0707107, 0.0565685) / (pi/2) = -3 atan(1 / 0.8) / (pi/2) = -1.7113397,
+  // more than the -1.5 of a turn towards the true 45 degrees.
+  BareRobot robot;
+  See(robot, {0.3, -0.2, M_PI / 4});
+  UnicycleCommand c = robot.Drive({0.1, 0.0});
+  EXPECT_NEAR(c.v_mps, 0.0565685425, 1e-10);
+  EXPECT_NEAR(c.w_radps, -1.7113397249, 1e-9);
+  // vel_gain 1: the atan2 sees the true angle, w = 3 (-pi/4) / (pi/2) = -1.5.
+  BareRobot unit_gain(Gains(1.0, 3.0));
+  See(unit_gain, {0.0, 0.0, M_PI / 4});
+  c = unit_gain.Drive({0.1, 0.0});
+  EXPECT_NEAR(c.v_mps, 0.0707106781, 1e-10);
+  EXPECT_NEAR(c.w_radps, -1.5, 1e-12);
+  // ang_gain scales w alone: 1/3 of the first case.
+  BareRobot slow_turn(Gains(0.8, 1.0));
+  See(slow_turn, {0.0, 0.0, M_PI / 4});
+  c = slow_turn.Drive({0.1, 0.0});
+  EXPECT_NEAR(c.v_mps, 0.0565685425, 1e-10);
+  EXPECT_NEAR(c.w_radps, -1.7113397249 / 3.0, 1e-9);
+}
+
+TEST(RobotDxiToDxuTest, AVelocityBehindReversesAndTurnsPastNinetyDegrees) {
+  // Heading +x, desired (-0.1, 0.05): v = 0.8 * -0.1 = -0.08;
+  // w = 3 atan2(0.05, -0.08) / (pi/2) = 3 (pi - atan(0.625)) / (pi/2) = 4.9331539 (then LimitActuators caps it).
+  BareRobot robot;
+  See(robot, {0.0, 0.0, 0.0});
+  const UnicycleCommand c = robot.Drive({-0.1, 0.05});
+  EXPECT_NEAR(c.v_mps, -0.08, 1e-12);
+  EXPECT_NEAR(c.w_radps, 4.9331538931, 1e-9);
+}
+
+TEST(RobotDxiToDxuTest, TheStaticMappingIsTheRobotsOwn) {
+  // Harnesses without a Robot (hrvo_swap_harness) use the static form; it must be the same function.
+  const RobotParams params = Gains(0.7, 2.5);
+  BareRobot robot(params);
+  for (const double theta : {-2.9, -1.0, 0.0, 0.4, 1.9, 3.1}) {
+    See(robot, {0.1, 0.2, theta});
+    for (const Eigen::Vector2d& dxi :
+         {Eigen::Vector2d(0.1, 0.0), Eigen::Vector2d(-0.05, 0.12), Eigen::Vector2d(0.0, -0.2)}) {
+      const UnicycleCommand member = robot.Drive(dxi);
+      const UnicycleCommand free = Robot::DxiToDxu(dxi, theta, params);
+      EXPECT_EQ(member.v_mps, free.v_mps);
+      EXPECT_EQ(member.w_radps, free.w_radps);
+    }
+  }
+}
+
+TEST(RobotTest, BadRadioMessagesAreCountedPerSender) {
+  BareRobot robot;
+  robot.Reject(RadioMessage{4, 10, {1}});
+  robot.Reject(RadioMessage{4, 11, {1}});
+  robot.Reject(RadioMessage{2, 11, {}});
+  robot.RejectUnnamed();
+  EXPECT_EQ(robot.bad_radio_messages(), 4);
+  const std::map<int, long> expected{{Robot::kUnknownSender, 1}, {2, 1}, {4, 2}};
+  EXPECT_EQ(robot.bad_radio_messages_by_sender(), expected);
+}
 
 TEST(GoToGoalRobotTest, DrivesTowardTheGoalAndReportsDoneWithinTolerance) {
   GoToGoalParams params;

@@ -7,17 +7,11 @@
 #include <time.h>
 
 #include "dream/agents/actuator_limits.h"
+#include "dream/agents/robot.h"
 #include "dream/sim/unicycle_world.h"
 
 namespace dream::agents {
 namespace {
-
-// The thesis's dxi_to_dxu: note the turn uses the already-scaled speed.
-UnicycleCommand DxiToDxu(const Eigen::Vector2d& dxi, double theta, double vel_gain, double ang_gain) {
-  const double c = std::cos(theta), s = std::sin(theta);
-  const double v = vel_gain * (c * dxi.x() + s * dxi.y());
-  return {v, ang_gain * std::atan2(-s * dxi.x() + c * dxi.y(), v) / (M_PI / 2.0)};
-}
 
 double ThreadCpuNs() {
   timespec t{};
@@ -38,6 +32,10 @@ HrvoSwapResult RunHrvoSwap(const std::vector<sim::Pose2>& start, const std::vect
   if (goals.size() != start.size()) throw std::invalid_argument("RunHrvoSwap: one goal per robot");
   sim::UnicycleWorld world(sim::WorldParams{}, start);
   const ActuatorLimits limits;
+  // The thesis's dxi_to_dxu is the library's, so this harness cannot drift from the robots.
+  RobotParams drive;
+  drive.vel_gain = options.vel_gain;
+  drive.ang_gain = options.ang_gain;
   std::vector<std::unique_ptr<HrvoAvoidance>> hrvo;
   for (int i = 0; i < n; ++i) hrvo.push_back(make_hrvo());
   std::vector<Eigen::Vector2d> dxi(static_cast<size_t>(n), Eigen::Vector2d::Zero());
@@ -130,7 +128,7 @@ HrvoSwapResult RunHrvoSwap(const std::vector<sim::Pose2>& start, const std::vect
     result.calls += static_cast<int64_t>(due_robots.size());
     for (const int i : due_robots) {
       const size_t k = static_cast<size_t>(i);
-      held[k] = limits.Apply(DxiToDxu(dxi[k], readings[k].pose.z(), options.vel_gain, options.ang_gain));
+      held[k] = limits.Apply(Robot::DxiToDxu(dxi[k], readings[k].pose.z(), drive));
     }
     for (int i = 0; i < n; ++i) {
       if (options.thesis_timing) {

@@ -138,6 +138,10 @@ TEST(SensorParamsTest, InvalidParamsAreRefusedWithTheFieldName) {
   std::string error;
   EXPECT_FALSE(movement.IsValid(&error));
   EXPECT_NE(error.find("field_of_view_rad"), std::string::npos);
+  movement.field_of_view_rad = 6.2832;  // 2 pi as written in a config: a full circle
+  EXPECT_TRUE(movement.IsValid(&error)) << error;
+  movement.field_of_view_rad = 6.2833;
+  EXPECT_FALSE(movement.IsValid(&error));
   EXPECT_THROW(ObstacleSensor({0.0, 0.0}, 1), std::invalid_argument);
 }
 

@@ -7,7 +7,7 @@ Installs the build tree into a temporary prefix (cmake --install), copies the ex
 project elsewhere, configures and builds it with find_package(dream) from that prefix only,
 runs the INSTALLED `dream run` on the example's config (which names the plugin), and checks
 summary.json: the run finished, the `orbit` kind ran, and every robot circles its centre as
-the controller says; with --netns, `dream launch` (one agent process per robot, udpm in a
+the controller says (from the run's log, read with the installed Python types); with --netns, `dream launch` (one agent process per robot, udpm in a
 private network namespace) ends the same. Then the installed tools on the run folder (export; check-submission
 when numpy is there), the installed `dream spy` finding its jar, and a config naming a
 missing plugin (one line, exit 1).
@@ -20,14 +20,16 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "integration"))
-from dreamtest import check, main, read_summary  # noqa: E402
+from dreamtest import check, import_types, main, read_events, read_summary  # noqa: E402
 
-# What the example's orbit.yaml asks for.
+# What the example's orbit.yaml asks for: each robot starts facing +x, so its circle's centre
+# is RADIUS_M to the left (+y) of its start.
 CENTERS = [(-0.8, 0.0), (0.0, 0.0), (0.8, 0.0)]
 RADIUS_M = 0.25
 SPEED_MPS = 0.1
 STEPS = 600
 STEP_S = 0.033
+SETTLE_STEPS = 100  # the radius is checked after these
 
 
 def parse_args():
@@ -82,17 +84,45 @@ def build_example(ctx, args, prefix):
     return project
 
 
-def robots_orbit_as_told(summary):
+def laps_and_radius_error(run_dir, types):
+    """From the run's log: the laps the slowest robot drove counter-clockwise around its centre,
+    and how far any robot was from its circle after SETTLE_STEPS."""
+    turned_rad = [0.0] * len(CENTERS)
+    last_angle_rad = [None] * len(CENTERS)
+    last_step = -1
+    max_radius_error_m = 0.0
+    for event in read_events(os.path.join(run_dir, "run.lcmlog")):
+        if event.channel != "DREAM_POSES":
+            continue
+        poses = types.robot_poses_t.decode(event.data)
+        if poses.step <= last_step:
+            continue  # the world resends a step while it waits for commands
+        last_step = poses.step
+        for robot, (cx, cy) in enumerate(CENTERS):
+            dx, dy = poses.x[robot] - cx, poses.y[robot] - cy
+            angle_rad = math.atan2(dy, dx)
+            if last_angle_rad[robot] is not None:
+                turned_rad[robot] += math.remainder(angle_rad - last_angle_rad[robot], 2 * math.pi)
+            last_angle_rad[robot] = angle_rad
+            if poses.step >= SETTLE_STEPS:
+                max_radius_error_m = max(max_radius_error_m, abs(math.hypot(dx, dy) - RADIUS_M))
+    check(last_step >= 0, f"{run_dir}/run.lcmlog has no poses")
+    return min(turned_rad) / (2 * math.pi), max_radius_error_m
+
+
+def robots_orbit_as_told(summary, run_dir, types):
     check(summary["end"] == "finished", f"the run ended {summary['end']}: {summary.get('reason')}")
     check(summary["steps"] == STEPS, f"{summary['steps']} steps, expected {STEPS}")
     check(summary["verdict"] == "clean", f"verdict {summary['verdict']}: {summary.get('violations')}")
     metrics = summary["metrics"]
     check(metrics.get("kind") == "orbit", f"metrics are not the orbit kind's: {metrics}")
+    # One class, no metrics of its own: the safety metrics every kind gets.
+    check(metrics.get("min_pairwise_distance_m", 0.0) > 0.25, f"robots came close: {metrics}")
+    min_laps, max_radius_error_m = laps_and_radius_error(run_dir, types)
     expected_laps = SPEED_MPS * STEPS * STEP_S / (2 * math.pi * RADIUS_M)
-    check(0.85 * expected_laps <= metrics["min_laps"] <= 1.02 * expected_laps,
-          f"min_laps {metrics['min_laps']:.3f}, expected about {expected_laps:.3f}")
-    check(metrics["max_radius_error_m"] < 0.02, f"robots left their circles by {metrics['max_radius_error_m']:.3f} m")
-    # Independently of the plugin's own metrics: the world's final poses are on the circles.
+    check(0.85 * expected_laps <= min_laps <= 1.02 * expected_laps,
+          f"the slowest robot drove {min_laps:.3f} laps, expected about {expected_laps:.3f}")
+    check(max_radius_error_m < 0.02, f"robots left their circles by {max_radius_error_m:.3f} m")
     for robot, (x, y, _) in enumerate(summary["final_poses"]):
         distance = math.hypot(x - CENTERS[robot][0], y - CENTERS[robot][1])
         check(abs(distance - RADIUS_M) < 0.02, f"robot {robot} ends {distance:.3f} m from its centre")
@@ -110,7 +140,7 @@ def test(ctx):
     run_dir = ctx.path("orbit_run")
     ctx.run([dream, "run", os.path.join(project, "orbit.yaml"), "--out", run_dir, "-q"], timeout=60, expect=0)
     summary = read_summary(run_dir)
-    robots_orbit_as_told(summary)
+    robots_orbit_as_told(summary, run_dir, import_types(os.path.join(prefix, "share", "dream", "python")))
     if args.netns:
         # One dream-agent process per robot over udpm, each loading the plugin: the same run.
         launch_dir = ctx.path("orbit_launch")

@@ -64,6 +64,21 @@ TEST(ControllerPluginTest, AGoodPluginAddsItsKindOnceHoweverOftenItIsNamed) {
       << ErrorOf(typo);
 }
 
+TEST(ControllerPluginTest, ARobotClassPluginAddsAKindWithoutMetricsOrKeysOfItsOwn) {
+  EXPECT_FALSE(Knows("test_parked"));
+  const config::RunConfig config = Config("[" + Quoted(TEST_PLUGIN_ROBOT_PATH) + "]", "test_parked");
+  const ControllerFactory factory(config);
+  EXPECT_TRUE(Knows("test_parked"));
+  ASSERT_NE(factory.Make(0), nullptr);
+  EXPECT_EQ(factory.Make(0)->robot().id(), 0);
+  EXPECT_EQ(factory.MakeMetrics().size(), 1u);  // the safety metrics only
+  const std::string error = ErrorOf(Config("[" + Quoted(TEST_PLUGIN_ROBOT_PATH) + "]", "test_parked, gain: 1"));
+  EXPECT_NE(error.find("test.yaml:5: controller.gain: unknown key for kind test_parked; allowed keys here: kind, "
+                       "robot, sensors, radio"),
+            std::string::npos)
+      << error;
+}
+
 TEST(ControllerPluginTest, AnUnknownKindPointsAtPlugins) {
   const std::string error = ErrorOf(Config("[]", "test_elsewhere"));
   EXPECT_NE(error.find("unknown controller kind 'test_elsewhere'; known kinds: go_to_goal"), std::string::npos)

@@ -6,6 +6,8 @@
 //   no_entry: no entry points at all
 //   foreign:  good, but with its own ControllerRegistry::Global(), as if it
 //             linked another copy of the dream libraries
+//   robot:    adds `test_parked`, a Robot subclass alone, with no keys
+//             (DREAM_REGISTER_ROBOT)
 #include <memory>
 #include <vector>
 
@@ -58,6 +60,8 @@ __attribute__((visibility("default"))) ControllerRegistry& ControllerRegistry::G
 }
 }  // namespace dream::agents
 DREAM_REGISTER_CONTROLLER(StillBuilder)
+#elif defined(TEST_PLUGIN_ROBOT)
+DREAM_REGISTER_ROBOT("test_parked", StillRobot, {})
 #elif defined(TEST_PLUGIN_CLASH)
 DREAM_CONTROLLER_PLUGIN(registry) {
   registry->Add(Named("test_first"));

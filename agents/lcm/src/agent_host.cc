@@ -46,6 +46,19 @@ AgentHost::AgentHost(lcm::LcmInterface& lcm, std::vector<std::unique_ptr<RobotAg
       bad_messages_);
 }
 
+AgentHost::~AgentHost() {
+  for (const RobotSlot& robot : robots_) {
+    const lcm::BadMessageLog& bad = robot.bad_radio_payloads;
+    if (bad.total() == 0) continue;
+    std::string senders;
+    for (const auto& [channel, count] : bad.per_channel()) {
+      senders += (senders.empty() ? "" : ", ") + channel + " x" + std::to_string(count);
+    }
+    spdlog::warn("robot {} dropped {} radio payload(s) that did not decode: {}", robot.agent->id(), bad.total(),
+                 senders);
+  }
+}
+
 void AgentHost::OnObstacles(const std::string& channel, const obstacles_t& obstacles) {
   if (obstacles.num_obstacles < 0 || obstacles.obstacles.size() != static_cast<size_t>(obstacles.num_obstacles)) {
     bad_messages_.Report(channel, "inconsistent obstacles_t");
@@ -74,8 +87,22 @@ void AgentHost::OnRadio(const std::string& channel, const radio_message_t& messa
   }
 }
 
+void AgentHost::ReportBadRadioPayloads(RobotSlot& robot) {
+  const Robot& control = robot.agent->robot();
+  // The usual case, checked cheaply: nothing new since the last step.
+  if (control.bad_radio_messages() == robot.bad_radio_payloads.total()) return;
+  const std::string reason = "robot " + std::to_string(control.id()) + ": payload did not decode";
+  for (const auto& [sender, count] : control.bad_radio_messages_by_sender()) {
+    const std::string channel = sender == Robot::kUnknownSender ? kUnknownSenderChannel : lcm::RadioChannel(sender);
+    for (long seen = robot.bad_radio_payloads.count(channel); seen < count; ++seen) {
+      robot.bad_radio_payloads.Report(channel, reason);
+    }
+  }
+}
+
 void AgentHost::Answer(RobotSlot& robot, const robot_poses_t& poses) {
   const RobotAgent::Output output = robot.agent->Step(world_);
+  ReportBadRadioPayloads(robot);
   velocity_command_t& command = robot.last_command;
   command.utime = poses.utime;
   command.step = poses.step;
@@ -153,7 +180,7 @@ bool AgentHost::Run(const std::atomic<bool>& stop, double idle_timeout_s) {
       last_activity = Clock::now();
     } else if (std::chrono::duration<double>(Clock::now() - last_activity).count() > idle_timeout_s) {
       spdlog::error(
-          "no DREAM_POSES for {:.0f} s on {}: is the simulator (dream sim) running on the same LCM URL?",
+          "no DREAM_POSES for {:g} s on {}: is the simulator (dream sim) running on the same LCM URL?",
           idle_timeout_s, lcm_.url());
       return false;
     }

@@ -1,10 +1,13 @@
 #include "dream/agents/agent_parts_config.h"
 
 #include <algorithm>
+#include <initializer_list>
+#include <limits>
 #include <stdexcept>
 
 #include "dream/agents/graph_radio.h"
 #include "dream/agents/noise_source.h"
+#include "dream/agents/number_text.h"
 #include "dream/agents/range_radio.h"
 #include "dream/agents/role_radio.h"
 
@@ -12,6 +15,16 @@ namespace dream::agents {
 namespace {
 
 using config::ConfigNode;
+
+// A whole number of steps in [minimum, INT_MAX], checked before it is narrowed to int.
+int ReadSteps(const ConfigNode& node, int minimum) {
+  const long long value = node.AsInt();
+  if (value < minimum) node.Fail("must be >= " + std::to_string(minimum) + ", got " + std::to_string(value));
+  if (value > std::numeric_limits<int>::max()) {
+    node.Fail("must be <= " + std::to_string(std::numeric_limits<int>::max()) + ", got " + std::to_string(value));
+  }
+  return static_cast<int>(value);
+}
 
 // One value for every robot, or a list with one per robot.
 std::vector<int> ReadPerRobot(const ConfigNode& node, int num_robots, int minimum) {
@@ -21,23 +34,21 @@ std::vector<int> ReadPerRobot(const ConfigNode& node, int num_robots, int minimu
       node.Fail("expected one number, or a list with one per robot (" + std::to_string(num_robots) + "), got " +
                 std::to_string(node.size()));
     }
-    for (size_t i = 0; i < node.size(); ++i) values.push_back(static_cast<int>(node[i].AsInt()));
+    for (size_t i = 0; i < node.size(); ++i) values.push_back(ReadSteps(node[i], minimum));
   } else {
-    values.assign(static_cast<size_t>(num_robots), static_cast<int>(node.AsInt()));
-  }
-  for (size_t i = 0; i < values.size(); ++i) {
-    if (values[i] < minimum) {
-      (node.IsSequence() ? node[i] : node)
-          .Fail("must be >= " + std::to_string(minimum) + ", got " + std::to_string(values[i]));
-    }
+    values.assign(static_cast<size_t>(num_robots), ReadSteps(node, minimum));
   }
   return values;
 }
 
+// IsValid()'s messages start with the field at fault: name that key and its line.
 template <typename Params>
 void Validate(const ConfigNode& node, const Params& params) {
   std::string error;
-  if (!params.IsValid(&error)) node.Fail(error);
+  if (params.IsValid(&error)) return;
+  const std::string field = error.substr(0, error.find(' '));
+  if (node.Has(field)) node.Required(field).Fail(error.substr(field.size() + 1));
+  node.Fail(error);
 }
 
 Eigen::MatrixXd ReadMatrix(const ConfigNode& node) {
@@ -89,20 +100,42 @@ SensorConfig ReadSensor(const ConfigNode& node, int num_robots) {
   return sensor;
 }
 
+// A key of another radio kind (a range radio's `graph`) would be silently
+// ignored: an error at `kind`, since either the kind or the key is the mistake.
+void RejectKeysOfOtherKinds(const ConfigNode& node, const std::string& kind,
+                            std::initializer_list<const char*> keys) {
+  for (const std::string& key : node.Keys()) {
+    if (std::find(keys.begin(), keys.end(), key) != keys.end()) continue;
+    std::string allowed;
+    for (const char* k : keys) allowed += (allowed.empty() ? "" : ", ") + std::string(k);
+    node.Required("kind").Fail("a radio of kind " + kind + " has no `" + key + "`; its keys: " + allowed);
+  }
+}
+
 void ReadRadio(const ConfigNode& node, int num_robots, bool graph_must_connect, RadioConfig* radio) {
   node.RejectUnknownKeys(
       {"kind", "period_steps", "range_m", "graph", "leaders", "loss_probability", "delay_steps"});
   const std::string kind = node.Required("kind").AsString();
+  if (kind == "none") {
+    RejectKeysOfOtherKinds(node, kind, {"kind", "period_steps", "loss_probability", "delay_steps"});
+  } else if (kind == "range") {
+    RejectKeysOfOtherKinds(node, kind, {"kind", "period_steps", "range_m", "loss_probability", "delay_steps"});
+  } else if (kind == "graph") {
+    RejectKeysOfOtherKinds(node, kind, {"kind", "period_steps", "graph", "loss_probability", "delay_steps"});
+  } else if (kind == "role") {
+    RejectKeysOfOtherKinds(node, kind,
+                           {"kind", "period_steps", "graph", "leaders", "loss_probability", "delay_steps"});
+  }
   if (node.Has("period_steps")) radio->period_steps = ReadPerRobot(node.Required("period_steps"), num_robots, 1);
   radio->link.loss_probability = node.GetDouble("loss_probability", radio->link.loss_probability);
-  radio->link.delay_steps = static_cast<int>(node.GetInt("delay_steps", radio->link.delay_steps));
+  if (node.Has("delay_steps")) radio->link.delay_steps = ReadSteps(node.Required("delay_steps"), 0);
   Validate(node, radio->link);
   if (kind == "none") {
     radio->kind = RadioConfig::Kind::kNone;
   } else if (kind == "range") {
     radio->kind = RadioConfig::Kind::kRange;
     radio->range_m = node.GetDouble("range_m", radio->range_m);
-    if (!(radio->range_m > 0.0)) node.Required("range_m").Fail("must be > 0");
+    if (!(radio->range_m > 0.0)) node.Required("range_m").Fail("must be > 0, got " + NumberText(radio->range_m));
   } else if (kind == "graph" || kind == "role") {
     radio->kind = kind == "graph" ? RadioConfig::Kind::kGraph : RadioConfig::Kind::kRole;
     if (node.Has("graph")) radio->graph = ReadMatrix(node.Required("graph"));

@@ -60,7 +60,7 @@ std::unique_ptr<RobotAgent> ControllerFactory::Make(int robot_id) const {
 
 std::vector<std::unique_ptr<ExperimentMetrics>> ControllerFactory::MakeMetrics() const {
   std::vector<std::unique_ptr<ExperimentMetrics>> metrics;
-  metrics.push_back(builder_->MakeMetrics());
+  if (std::unique_ptr<ExperimentMetrics> own = builder_->MakeMetrics()) metrics.push_back(std::move(own));
   metrics.push_back(std::make_unique<SafetyMetrics>());
   return metrics;
 }

@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -48,11 +49,20 @@ class Robot {
 
   /// Radio payloads this robot could not decode (malformed neighbour messages).
   long bad_radio_messages() const { return bad_radio_messages_; }
+  /// The same, per sender id; kUnknownSender counts those reported without
+  /// their message. The agent host logs them by the sender's channel.
+  const std::map<int, long>& bad_radio_messages_by_sender() const { return bad_radio_messages_by_sender_; }
+  static constexpr int kUnknownSender = -1;
+
+  /// The thesis's dxi_to_dxu at heading `theta_rad` with `params`' gains, for
+  /// code that has no Robot (test harnesses); robots use the member below.
+  static UnicycleCommand DxiToDxu(const Eigen::Vector2d& dxi_mps, double theta_rad, const RobotParams& params);
 
  protected:
   /// The thesis's dxi_to_dxu: v = k_v (c dx + s dy), w = k_w atan2(-s dx + c dy, v) / (pi/2),
-  /// with the heading from the latest odometry.
-  UnicycleCommand DxiToDxu(const Eigen::Vector2d& dxi_mps) const;
+  /// with the heading from the latest odometry. (The turn uses the already
+  /// scaled v, as the thesis does: a target 45 degrees off turns by more.)
+  UnicycleCommand DxiToDxu(const Eigen::Vector2d& dxi_mps) const { return DxiToDxu(dxi_mps, pose().z(), params_); }
   /// The thesis's actuator_limit (see ActuatorLimits).
   UnicycleCommand LimitActuators(const UnicycleCommand& command) const { return actuator_limits_.Apply(command); }
 
@@ -62,7 +72,10 @@ class Robot {
   Eigen::Vector3d pose() const { return odometry_ ? odometry_->pose : Eigen::Vector3d::Zero(); }
   const MovementReading& movement() const { return movement_; }
   const ObstacleReading& obstacles() const { return obstacles_; }
-  void CountBadRadioMessage() { ++bad_radio_messages_; }
+  /// Counts `message` as one this robot could not decode (it is dropped).
+  void CountBadRadioMessage(const RadioMessage& message);
+  /// The same when the message is not at hand: its sender stays unknown.
+  void CountBadRadioMessage();
 
  private:
   int id_;
@@ -72,6 +85,7 @@ class Robot {
   MovementReading movement_;
   ObstacleReading obstacles_;
   long bad_radio_messages_ = 0;
+  std::map<int, long> bad_radio_messages_by_sender_;
 };
 
 }  // namespace dream::agents

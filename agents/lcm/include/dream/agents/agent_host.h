@@ -31,12 +31,20 @@ namespace dream::agents {
 /// sent just before. A repeated DREAM_POSES for a step already answered (the
 /// world resends while it waits) gets the same messages again without running
 /// the robot twice, so runs stay deterministic. Bad messages from the world
-/// or from neighbours are counted and dropped, never fatal.
+/// or from neighbours are counted and dropped, never fatal: those that do not
+/// decode as LCM types here (bad_messages()), and radio payloads a hosted
+/// robot could not decode (bad_radio_payloads(i), by the sender's channel).
+/// Both are logged the first time on a channel and then every 100th; the
+/// payload totals once more per robot when the host is destroyed.
 class AgentHost {
  public:
   /// @param agent_id identifies this host to the world (two hosts may not
   ///        drive one robot); any value unique per process.
   AgentHost(lcm::LcmInterface& lcm, std::vector<std::unique_ptr<RobotAgent>> agents, int64_t agent_id);
+  /// Logs each robot's total of undecodable radio payloads, if any.
+  ~AgentHost();
+  AgentHost(const AgentHost&) = delete;
+  AgentHost& operator=(const AgentHost&) = delete;
 
   /// Handles messages until the world reports FINISHED or ABORTED, `stop` is
   /// set, or no DREAM_POSES arrived for `idle_timeout_s` of wall time.
@@ -48,6 +56,11 @@ class AgentHost {
   const lcm::BadMessageLog& bad_messages() const { return bad_messages_; }
   const std::string& end_detail() const { return end_detail_; }
   const RobotAgent& agent(size_t i) const { return *robots_.at(i).agent; }
+  /// Radio payloads hosted robot `i` (in the order given) dropped because
+  /// they did not decode, by the sender's channel DREAM_RADIO_<id>
+  /// (kUnknownSenderChannel when the robot did not say whose it was).
+  const lcm::BadMessageLog& bad_radio_payloads(size_t i) const { return robots_.at(i).bad_radio_payloads; }
+  static constexpr const char* kUnknownSenderChannel = "DREAM_RADIO_<unknown sender>";
 
  private:
   struct RobotSlot {
@@ -57,6 +70,7 @@ class AgentHost {
     int64_t answered_step = -1;
     velocity_command_t last_command{};
     std::optional<radio_message_t> last_radio;
+    lcm::BadMessageLog bad_radio_payloads;
   };
 
   void OnPoses(const std::string& channel, const robot_poses_t& poses);
@@ -64,6 +78,8 @@ class AgentHost {
   void OnStatus(const std::string& channel, const run_status_t& status);
   void OnRadio(const std::string& channel, const radio_message_t& message);
   void Answer(RobotSlot& robot, const robot_poses_t& poses);
+  /// Logs the payloads the robot counted as bad since the last call.
+  static void ReportBadRadioPayloads(RobotSlot& robot);
 
   lcm::LcmInterface& lcm_;
   std::vector<RobotSlot> robots_;

@@ -15,9 +15,10 @@ namespace dream::agents {
 /// Builds every robot's agent, and the experiment's metrics, from the
 /// `controller:` section of a run config. `kind` picks the experiment from
 /// ControllerRegistry::Global(); the common keys (robot, sensors, radio) pick
-/// the parts. To add an experiment, write an ExperimentBuilder and register
-/// its kind: built in (controller_registry.cc) or from a plugin that the
-/// config names (see docs/writing-a-controller.md).
+/// the parts. To add an experiment, register its kind: a Robot subclass
+/// alone (ControllerKind::OfRobot) or an ExperimentBuilder with metrics of
+/// its own (ControllerKind::Of), built in (controller_registry.cc) or from a
+/// plugin that the config names (see docs/writing-a-controller.md).
 class ControllerFactory {
  public:
   /// Kinds this factory knows, for error messages and --help.
@@ -37,7 +38,8 @@ class ControllerFactory {
   /// A new agent for `robot_id` (0 <= robot_id < num_robots).
   std::unique_ptr<RobotAgent> Make(int robot_id) const;
 
-  /// The experiment's metrics followed by the common safety metrics.
+  /// The experiment's own metrics (when its builder has any) followed by the
+  /// common safety metrics.
   std::vector<std::unique_ptr<ExperimentMetrics>> MakeMetrics() const;
 
   const std::string& kind() const { return kind_; }

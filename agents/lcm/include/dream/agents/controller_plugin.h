@@ -6,11 +6,13 @@
 // every other tool that reads the config load it before building agents.
 //
 //     #include "dream/agents/controller_plugin.h"
-//     DREAM_REGISTER_CONTROLLER(OrbitBuilder)   // one kind
+//     DREAM_REGISTER_ROBOT("orbit", OrbitRobot, {"radius_m", "speed_mps"})  // one Robot subclass
+//
+//     DREAM_REGISTER_CONTROLLER(OrbitBuilder)   // one ExperimentBuilder (own metrics)
 //
 //     DREAM_CONTROLLER_PLUGIN(registry) {       // several kinds, or by hand
 //       registry->Add(dream::agents::ControllerKind::Of<OrbitBuilder>());
-//       registry->Add(dream::agents::ControllerKind::Of<SpiralBuilder>());
+//       registry->Add(dream::agents::ControllerKind::OfRobot<SpiralRobot>("spiral", {"pitch_m"}));
 //     }
 //
 // See docs/writing-a-controller.md and docs/examples/out_of_tree_controller/.
@@ -21,8 +23,10 @@
 /// Bumped whenever a change to the classes a plugin builds on (Robot,
 /// ExperimentBuilder, ExperimentMetrics, ControllerKind, ControllerRegistry,
 /// the parts) breaks plugins compiled against an older version. The tools
-/// refuse a plugin built for another version.
-#define DREAM_PLUGIN_API_VERSION 1
+/// refuse a plugin built for another version. 2: a builder may return no
+/// experiment metrics (MakeMetrics() default), which a version-1 tool would
+/// not expect.
+#define DREAM_PLUGIN_API_VERSION 2
 
 /// Keeps a plugin's entry points visible under -fvisibility=hidden.
 #define DREAM_PLUGIN_EXPORT extern "C" __attribute__((visibility("default")))
@@ -50,3 +54,15 @@ using RegisterControllersFunction = void (*)(ControllerRegistry* registry);
 /// ControllerKind::Of for the static members it needs).
 #define DREAM_REGISTER_CONTROLLER(Builder) \
   DREAM_CONTROLLER_PLUGIN(dream_plugin_registry_) { dream_plugin_registry_->Add(::dream::agents::ControllerKind::Of<Builder>()); }
+
+/// A whole plugin with one kind that is one Robot subclass: the kind's name,
+/// the class, and the robot's own keys of the `controller:` section as a
+/// braced list (`{}` for none). See ControllerKind::OfRobot and
+/// RobotClassBuilder for the constructor the class needs.
+///     DREAM_REGISTER_ROBOT("orbit", OrbitRobot, {"radius_m", "speed_mps"})
+/// (Variadic only because the preprocessor splits the braced list at its commas.)
+#define DREAM_REGISTER_ROBOT(kind_name, RobotClass, ...)                              \
+  DREAM_CONTROLLER_PLUGIN(dream_plugin_registry_) {                                   \
+    dream_plugin_registry_->Add(::dream::agents::ControllerKind::OfRobot<RobotClass>( \
+        kind_name, std::vector<std::string> __VA_ARGS__));                            \
+  }

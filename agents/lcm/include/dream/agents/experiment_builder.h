@@ -9,15 +9,19 @@ namespace dream::agents {
 
 /// One experiment kind (`controller: {kind: ...}`): it has read and checked
 /// its own keys of the section when constructed, and builds each robot's
-/// control law and the experiment's metrics. Sensors, radio and timer come
-/// from the common keys (AgentPartsConfig).
+/// control law and, if it has any, the experiment's own metrics. Sensors,
+/// radio and timer come from the common keys (AgentPartsConfig). A kind that
+/// is only a Robot subclass needs no builder of its own: see
+/// ControllerKind::OfRobot.
 class ExperimentBuilder {
  public:
   virtual ~ExperimentBuilder() = default;
   /// The control law of robot `robot_id`.
   virtual std::unique_ptr<Robot> MakeRobot(int robot_id, const RobotParams& params) const = 0;
-  /// The experiment's outcome figures (SafetyMetrics is always added too).
-  virtual std::unique_ptr<ExperimentMetrics> MakeMetrics() const = 0;
+  /// The experiment's own outcome figures, or nullptr (the default) for
+  /// none. SafetyMetrics (minimum pairwise distance, near misses) is always
+  /// added, so every kind's summary has those.
+  virtual std::unique_ptr<ExperimentMetrics> MakeMetrics() const { return nullptr; }
 };
 
 }  // namespace dream::agents
