@@ -63,6 +63,7 @@ def test(ctx):
     eight, eight_line = broken("eight", r"^robots: 8", "robots: eight")
     overlap, overlap_line = broken("overlap", r"\[0\.459, 0\.693, 2\.749\]", "[1.109, 0.287, 1.963]")
     outside, outside_line = broken("outside", r"\[0\.459, 0\.693, 2\.749\]", "[1.9, 0.693, 2.749]")
+    inside, inside_line = broken("inside", r"\[0\.459, 0\.693, 2\.749\]", "[0.0, 0.0, 2.749]")  # the centre block
     kind, kind_line = broken("kind", r"kind: go_to_goal", "kind: go_to_gaol")
     # The same mistake for `dream launch`, with a short start timeout: if launch does not check the
     # controller section itself, its agents fail and the simulator waits start_timeout_s in vain.
@@ -112,6 +113,10 @@ def test(ctx):
          ["--steps", "whole number", "got 0"], False),
         ("lab-replay --steps 2.5", ["lab-replay", good_run, "--steps", "2.5", "--out", ctx.path("refused_out_r")],
          EXIT_USAGE, ["--steps", "whole number", "got 2.5"], False),
+        ("agent --idle-timeout -1", ["agent", config, "--idle-timeout", "-1"], EXIT_USAGE,
+         ["--idle-timeout", "seconds > 0", "got -1"], False),
+        ("render --trail nan", ["render", good_run, "--trail", "nan", "--out", ctx.path("refused_out_t.png")],
+         EXIT_USAGE, ["--trail", "seconds >= 0", "got nan"], False),
         ("missing config file", ["run", missing, "--out", ctx.path("refused_out1")], None, [missing], False),
         ("robots: 51", ["run", robots51, "--out", ctx.path("refused_out2")], EXIT_INPUT,
          [where(robots51, robots51_line), "robots", "51", "50"], True),
@@ -121,6 +126,9 @@ def test(ctx):
          [where(overlap, overlap_line), "initial_poses[1]", "robots 0 and 1", "collision"], True),
         ("pose outside the arena", ["run", outside, "--out", ctx.path("refused_out5")], EXIT_INPUT,
          [where(outside, outside_line), "initial_poses[1]", "1.900", "outside the arena"], True),
+        ("pose inside an obstacle", ["run", inside, "--out", ctx.path("refused_out_inside")], EXIT_INPUT,
+         [where(inside, inside_line), "initial_poses[1]", "robot 1 starts inside obstacle 0", "(0.000, 0.000, 2.749)"],
+         True),
         ("unknown controller kind", ["run", kind, "--out", ctx.path("refused_out6")], EXIT_INPUT,
          [where(kind, kind_line), "controller.kind", "'go_to_gaol'", "go_to_goal"], True),
         ("top-level key typo", ["run", typo, "--out", ctx.path("refused_out7")], EXIT_INPUT,

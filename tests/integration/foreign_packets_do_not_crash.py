@@ -139,6 +139,11 @@ def test(ctx):
     missing = sorted((bad_channels | {"DREAM_CMD_2"}) - set(bad))
     check(not missing, f"bad_messages {bad} lacks {missing}")
     check(not set(bad) - bad_channels - {"DREAM_CMD_2"}, f"bad_messages names unexpected channels: {bad}")
+    # Counted and logged: the first bad message of each channel gets a warning line.
+    sim_output = ctx.output("sim")
+    for channel in sorted(bad_channels):
+        check(f"{channel}: dropped bad message #1:" in sim_output,
+              f"dream sim logged nothing for the bad message on {channel}")
 
     log = os.path.join(out, "run.lcmlog")
     code, text = ctx.run([args.dream, "log", "info", log])

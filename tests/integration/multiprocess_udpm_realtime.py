@@ -37,6 +37,10 @@ def test(ctx):
     steps = [dream.robot_poses_t.decode(e.data).step for e in read_events(os.path.join(out, "run.lcmlog"))
              if e.channel == "DREAM_POSES"]
     check(steps == list(range(STEPS + 1)), f"DREAM_POSES steps are not 0..{STEPS}: {steps[:5]}...{steps[-3:]}")
+    # Never faster than the lab: the first step is taken at once, each further one 0.033 s later.
+    least_s = (STEPS - 1) * 0.033
+    check(summary["wall_time_s"] >= least_s,
+          f"{STEPS} real-time steps took {summary['wall_time_s']:.3f} s wall, less than {least_s:.3f} s")
     print(f"real-time launch finished {STEPS} steps in {summary['wall_time_s']:.2f} s wall")
 
 

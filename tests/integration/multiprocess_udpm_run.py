@@ -50,14 +50,14 @@ def test(ctx):
 
     launched, single = ctx.path("launch"), ctx.path("run")
     ctx.start("launch", [args.dream, "launch", config, "--out", launched] + limit)
-    code = ctx.wait("launch", timeout=60)
+    code = ctx.wait("launch", timeout=150)
     check(code == 0, f"dream launch exited {code}, expected 0")
     summary = read_summary(launched)
     check(summary["end"] == "finished", f"dream launch: summary end is {summary['end']!r} ({summary['reason']})")
     check(summary["robots_ever_lost"] == [], f"dream launch lost robots {summary['robots_ever_lost']}")
     check(summary["rejected_commands"] == 0, f"dream launch rejected {summary['rejected_commands']} commands")
 
-    ctx.run([args.dream, "-q", "run", config, "--out", single] + limit, expect=0)
+    ctx.run([args.dream, "-q", "run", config, "--out", single] + limit, timeout=90, expect=0)
     robots = summary["robots"]
     check(read_summary(single)["steps"] == summary["steps"],
           f"steps differ: launch {summary['steps']}, run {read_summary(single)['steps']}")

@@ -99,6 +99,10 @@ def test(ctx):
     check(sum(run.channels.values()) == summary["log_events"],
           f"{sum(run.channels.values())} events read, summary.json says {summary['log_events']}")
     check(all(o.shape == (2, 7) for o in run.obstacles), "go_to_goal has 2 obstacles at every step")
+    # The moving bar (0.1 m/s towards +x, from x = -1.3) is published where it is at each step.
+    bar_x = np.array([o[1, 1] for o in run.obstacles])
+    check(np.allclose(np.diff(bar_x), 0.1 * 0.033), f"obstacle 1 does not advance 3.3 mm a step: {np.diff(bar_x)[:3]}")
+    check(abs(bar_x[0] + 1.3) < 1e-9, f"obstacle 1 starts at x = {bar_x[0]}, config says -1.3")
     check(run.summary == summary, "run.summary is not the folder's summary.json")
     # Each robot's path, from the arrays, against the log decoded directly.
     moved = np.linalg.norm(run.poses[-1, :, :2] - run.poses[0, :, :2], axis=1)
