@@ -14,6 +14,7 @@
 #include "dream/agents/controller_registry.h"
 #include "dream/config/config_error.h"
 #include "dream/config/run_config.h"
+#include "../support/factory_error.h"
 #include "scenario_runner.h"
 
 namespace dream::agents {
@@ -86,15 +87,7 @@ config::RunConfig Config(const std::string& controller, int steps = 60) {
       "test.yaml"));
 }
 
-/// The error of building a factory for `config` ("" when it builds).
-std::string ErrorOf(const config::RunConfig& config) {
-  try {
-    ControllerFactory factory(config);
-  } catch (const config::ConfigError& e) {
-    return e.what();
-  }
-  return "";
-}
+using testing::FactoryErrorOf;
 
 const CruiseRobot& CruiseOf(const RobotAgent& agent) { return dynamic_cast<const CruiseRobot&>(agent.robot()); }
 
@@ -137,37 +130,37 @@ TEST(RobotClassKindTest, TheCommonPartsComeFromTheConfig) {
   EXPECT_NEAR(early_m - late_m, 0.1 * config.world.time_step_s * 30.0, 0.1 * config.world.time_step_s);
 
   // A part's own mistakes are reported as for the shipped kinds.
-  const std::string error = ErrorOf(Config("{kind: test_cruise, speeds_mps: [0.1, 0.1], radio: {kind: carrier}}"));
+  const std::string error = FactoryErrorOf(Config("{kind: test_cruise, speeds_mps: [0.1, 0.1], radio: {kind: carrier}}"));
   EXPECT_NE(error.find("controller.radio.kind: unknown radio kind 'carrier'"), std::string::npos) << error;
 }
 
 TEST(RobotClassKindTest, AnUnknownKeyIsRefusedNamingFileLineAndKey) {
-  const std::string error = ErrorOf(Config("{kind: test_cruise, speeds_mps: [0.1, 0.1], speed_mps: 0.1}"));
+  const std::string error = FactoryErrorOf(Config("{kind: test_cruise, speeds_mps: [0.1, 0.1], speed_mps: 0.1}"));
   EXPECT_EQ(error,
             "test.yaml:5: controller.speed_mps: unknown key for kind test_cruise; allowed keys here: kind, robot, "
             "sensors, radio, speeds_mps");
   // A class that reads no keys takes none.
-  const std::string parked = ErrorOf(Config("{kind: test_parked, speeds_mps: [0.1, 0.1]}"));
+  const std::string parked = FactoryErrorOf(Config("{kind: test_parked, speeds_mps: [0.1, 0.1]}"));
   EXPECT_EQ(parked,
             "test.yaml:5: controller.speeds_mps: unknown key for kind test_parked; allowed keys here: kind, robot, "
             "sensors, radio");
-  EXPECT_EQ(ErrorOf(Config("{kind: test_parked}")), "");
+  EXPECT_EQ(FactoryErrorOf(Config("{kind: test_parked}")), "");
 }
 
 TEST(RobotClassKindTest, TheRobotsBadValuesStopTheFactoryNotALaterAgent) {
   // Robot 1's entry is wrong: the factory refuses the config before any Make().
-  const std::string negative = ErrorOf(Config("{kind: test_cruise,\n  speeds_mps: [0.1,\n    -1]}"));
+  const std::string negative = FactoryErrorOf(Config("{kind: test_cruise,\n  speeds_mps: [0.1,\n    -1]}"));
   EXPECT_EQ(negative.rfind("test.yaml:7: controller.speeds_mps[1]: must be >= 0, got -1", 0), 0u) << negative;
-  const std::string short_list = ErrorOf(Config("{kind: test_cruise, speeds_mps: [0.1]}"));
+  const std::string short_list = FactoryErrorOf(Config("{kind: test_cruise, speeds_mps: [0.1]}"));
   EXPECT_EQ(short_list, "test.yaml:5: controller.speeds_mps: expected one speed per robot, robot 1 has none");
-  const std::string missing = ErrorOf(Config("{kind: test_cruise}"));
+  const std::string missing = FactoryErrorOf(Config("{kind: test_cruise}"));
   EXPECT_EQ(missing, "test.yaml:5: controller.speeds_mps: missing; this key is required");
 }
 
 TEST(RobotClassKindTest, AMissingOrUnknownKindIsAClearError) {
-  const std::string missing = ErrorOf(Config("{speeds_mps: [0.1, 0.1]}"));
+  const std::string missing = FactoryErrorOf(Config("{speeds_mps: [0.1, 0.1]}"));
   EXPECT_EQ(missing, "test.yaml:5: controller.kind: missing; this key is required");
-  const std::string unknown = ErrorOf(Config("{kind: test_cruse, speeds_mps: [0.1, 0.1]}"));
+  const std::string unknown = FactoryErrorOf(Config("{kind: test_cruse, speeds_mps: [0.1, 0.1]}"));
   EXPECT_EQ(unknown.rfind("test.yaml:5: controller.kind: unknown controller kind 'test_cruse'; known kinds: "
                           "go_to_goal",
                           0),

@@ -12,6 +12,7 @@
 #include "dream/agents/controller_registry.h"
 #include "dream/config/config_error.h"
 #include "dream/config/run_config.h"
+#include "../support/factory_error.h"
 
 namespace dream::agents {
 namespace {
@@ -26,15 +27,7 @@ config::RunConfig Config(const std::string& plugins, const std::string& kind = "
       source));
 }
 
-/// The error of building a factory for `config` ("" when it builds).
-std::string ErrorOf(const config::RunConfig& config) {
-  try {
-    ControllerFactory factory(config);
-  } catch (const config::ConfigError& e) {
-    return e.what();
-  }
-  return "";
-}
+using testing::FactoryErrorOf;
 
 bool Knows(const std::string& kind) {
   const std::vector<std::string> kinds = ControllerFactory::Kinds();
@@ -52,16 +45,16 @@ TEST(ControllerPluginTest, AGoodPluginAddsItsKindOnceHoweverOftenItIsNamed) {
   EXPECT_NE(factory.Make(0), nullptr);
   EXPECT_EQ(factory.MakeMetrics().size(), 2u);  // the plugin's and the safety metrics
   // Another factory (dream run builds several) loads nothing twice.
-  EXPECT_EQ(ErrorOf(config), "");
+  EXPECT_EQ(FactoryErrorOf(config), "");
   // The kind's own keys are checked like a built-in kind's.
   const config::RunConfig typo = config::LoadRunConfig(config::ConfigNode::LoadString(
       "name: t\nrobots: 1\ninitial_poses: [[0, 0, 0]]\nplugins: [" + Quoted(TEST_PLUGIN_GOOD_PATH) +
           "]\ncontroller: {kind: test_still, patience: 2}\n",
       "test.yaml"));
-  EXPECT_NE(ErrorOf(typo).find("controller.patience: unknown key for kind test_still; allowed keys here: kind, "
+  EXPECT_NE(FactoryErrorOf(typo).find("controller.patience: unknown key for kind test_still; allowed keys here: kind, "
                                "robot, sensors, radio, patience_s"),
             std::string::npos)
-      << ErrorOf(typo);
+      << FactoryErrorOf(typo);
 }
 
 TEST(ControllerPluginTest, ARobotClassPluginAddsAKindWithoutMetricsOrKeysOfItsOwn) {
@@ -72,7 +65,7 @@ TEST(ControllerPluginTest, ARobotClassPluginAddsAKindWithoutMetricsOrKeysOfItsOw
   ASSERT_NE(factory.Make(0), nullptr);
   EXPECT_EQ(factory.Make(0)->robot().id(), 0);
   EXPECT_EQ(factory.MakeMetrics().size(), 1u);  // the safety metrics only
-  const std::string error = ErrorOf(Config("[" + Quoted(TEST_PLUGIN_ROBOT_PATH) + "]", "test_parked, gain: 1"));
+  const std::string error = FactoryErrorOf(Config("[" + Quoted(TEST_PLUGIN_ROBOT_PATH) + "]", "test_parked, gain: 1"));
   EXPECT_NE(error.find("test.yaml:5: controller.gain: unknown key for kind test_parked; allowed keys here: kind, "
                        "robot, sensors, radio"),
             std::string::npos)
@@ -80,14 +73,14 @@ TEST(ControllerPluginTest, ARobotClassPluginAddsAKindWithoutMetricsOrKeysOfItsOw
 }
 
 TEST(ControllerPluginTest, AnUnknownKindPointsAtPlugins) {
-  const std::string error = ErrorOf(Config("[]", "test_elsewhere"));
+  const std::string error = FactoryErrorOf(Config("[]", "test_elsewhere"));
   EXPECT_NE(error.find("unknown controller kind 'test_elsewhere'; known kinds: go_to_goal"), std::string::npos)
       << error;
   EXPECT_NE(error.find("needs the plugin under `plugins:`"), std::string::npos) << error;
 }
 
 TEST(ControllerPluginTest, AMissingFileNamesTheEntryAndThePath) {
-  const std::string error = ErrorOf(Config("[nowhere/libmissing.so]", "test_still", "configs/exp.yaml"));
+  const std::string error = FactoryErrorOf(Config("[nowhere/libmissing.so]", "test_still", "configs/exp.yaml"));
   const std::string expected_path = (fs::absolute("configs") / "nowhere/libmissing.so").lexically_normal().string();
   EXPECT_EQ(error.rfind("configs/exp.yaml:4: plugins[0]: " + expected_path + ": no such file", 0), 0u) << error;
 }
@@ -95,7 +88,7 @@ TEST(ControllerPluginTest, AMissingFileNamesTheEntryAndThePath) {
 TEST(ControllerPluginTest, AFileThatIsNoLibraryQuotesTheLoader) {
   const fs::path fake = fs::temp_directory_path() / ("dream_not_a_plugin_" + std::to_string(::getpid()) + ".so");
   std::ofstream(fake) << "not an ELF file\n";
-  const std::string error = ErrorOf(Config("[" + Quoted(fake.string()) + "]"));
+  const std::string error = FactoryErrorOf(Config("[" + Quoted(fake.string()) + "]"));
   fs::remove(fake);
   EXPECT_NE(error.find("plugins[0]: " + fake.string() + ": cannot load it: " + fake.string()), std::string::npos)
       << error;
@@ -103,7 +96,7 @@ TEST(ControllerPluginTest, AFileThatIsNoLibraryQuotesTheLoader) {
 }
 
 TEST(ControllerPluginTest, ALibraryWithoutEntryPointsIsRefused) {
-  const std::string error = ErrorOf(Config("[" + Quoted(TEST_PLUGIN_NO_ENTRY_PATH) + "]"));
+  const std::string error = FactoryErrorOf(Config("[" + Quoted(TEST_PLUGIN_NO_ENTRY_PATH) + "]"));
   EXPECT_NE(error.find(std::string("plugins[0]: ") + TEST_PLUGIN_NO_ENTRY_PATH +
                        ": not a dream controller plugin: it has no dream_plugin_api_version()"),
             std::string::npos)
@@ -111,7 +104,7 @@ TEST(ControllerPluginTest, ALibraryWithoutEntryPointsIsRefused) {
 }
 
 TEST(ControllerPluginTest, APluginWithAnotherCopyOfTheDreamLibrariesIsRefused) {
-  const std::string error = ErrorOf(Config("[" + Quoted(TEST_PLUGIN_FOREIGN_PATH) + "]"));
+  const std::string error = FactoryErrorOf(Config("[" + Quoted(TEST_PLUGIN_FOREIGN_PATH) + "]"));
   EXPECT_NE(error.find(std::string(TEST_PLUGIN_FOREIGN_PATH) + ": it uses another copy of the dream libraries (" +
                        TEST_PLUGIN_FOREIGN_PATH + "); rebuild it against the dream that loads it"),
             std::string::npos)
@@ -119,7 +112,7 @@ TEST(ControllerPluginTest, APluginWithAnotherCopyOfTheDreamLibrariesIsRefused) {
 }
 
 TEST(ControllerPluginTest, APluginForAnotherApiVersionIsRefusedBeforeItRegisters) {
-  const std::string error = ErrorOf(Config("[" + Quoted(TEST_PLUGIN_OLD_API_PATH) + "]", "test_old"));
+  const std::string error = FactoryErrorOf(Config("[" + Quoted(TEST_PLUGIN_OLD_API_PATH) + "]", "test_old"));
   EXPECT_NE(error.find(std::string(TEST_PLUGIN_OLD_API_PATH) + ": built for dream plugin API 0, this dream has API " +
                        std::to_string(DREAM_PLUGIN_API_VERSION) + "; rebuild it"),
             std::string::npos)
@@ -128,7 +121,7 @@ TEST(ControllerPluginTest, APluginForAnotherApiVersionIsRefusedBeforeItRegisters
 }
 
 TEST(ControllerPluginTest, AKindThatExistsIsRefusedAndThePluginAddsNothing) {
-  const std::string error = ErrorOf(Config("[" + Quoted(TEST_PLUGIN_CLASH_PATH) + "]", "test_first"));
+  const std::string error = FactoryErrorOf(Config("[" + Quoted(TEST_PLUGIN_CLASH_PATH) + "]", "test_first"));
   EXPECT_NE(error.find("plugins[0]: " + std::string(TEST_PLUGIN_CLASH_PATH) +
                        ": controller kind 'go_to_goal' is already registered (built in)"),
             std::string::npos)
@@ -138,7 +131,7 @@ TEST(ControllerPluginTest, AKindThatExistsIsRefusedAndThePluginAddsNothing) {
 
 TEST(ControllerPluginTest, TwoPluginsWithOneKindAreRefusedNamingTheFirst) {
   const std::string error =
-      ErrorOf(Config("[" + Quoted(TEST_PLUGIN_GOOD_PATH) + ", " + Quoted(TEST_PLUGIN_TWIN_PATH) + "]"));
+      FactoryErrorOf(Config("[" + Quoted(TEST_PLUGIN_GOOD_PATH) + ", " + Quoted(TEST_PLUGIN_TWIN_PATH) + "]"));
   EXPECT_NE(error.find("plugins[1]: " + std::string(TEST_PLUGIN_TWIN_PATH) +
                        ": controller kind 'test_still' is already registered (" + TEST_PLUGIN_GOOD_PATH + ")"),
             std::string::npos)

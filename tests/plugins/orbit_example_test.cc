@@ -14,6 +14,7 @@
 #include "dream/agents/controller_factory.h"
 #include "dream/config/config_error.h"
 #include "dream/config/run_config.h"
+#include "../support/factory_error.h"
 #include "scenario_runner.h"
 
 namespace dream::agents {
@@ -57,14 +58,7 @@ int LineOf(const std::string& start) {
   return 0;
 }
 
-std::string ErrorOf(const config::RunConfig& config) {
-  try {
-    ControllerFactory factory(config);
-  } catch (const config::ConfigError& e) {
-    return e.what();
-  }
-  return "";
-}
+using testing::FactoryErrorOf;
 
 TEST(OrbitExampleTest, TheDocumentLeadsWithTheExampleFileVerbatim) {
   const std::string document = ReadText(std::string(DREAM_SOURCE_DIR) + "/docs/writing-a-controller.md");
@@ -110,16 +104,16 @@ TEST(OrbitExampleTest, ThePluginLoadsAndTheRobotsCircleTheirStartingCircles) {
 }
 
 TEST(OrbitExampleTest, AnUnknownKeyNamesFileLineAndTheAllowedKeys) {
-  const std::string error = ErrorOf(ExampleConfig("  radius_m:", "  radius:"));
+  const std::string error = FactoryErrorOf(ExampleConfig("  radius_m:", "  radius:"));
   EXPECT_EQ(error, "orbit.yaml:" + std::to_string(LineOf("  radius_m:")) +
                        ": controller.radius: unknown key for kind orbit; allowed keys here: kind, robot, sensors, "
                        "radio, radius_m, speed_mps");
 }
 
 TEST(OrbitExampleTest, ABadValueNamesFileLineAndKey) {
-  const std::string error = ErrorOf(ExampleConfig("speed_mps: 0.1", "speed_mps: -0.1"));
+  const std::string error = FactoryErrorOf(ExampleConfig("speed_mps: 0.1", "speed_mps: -0.1"));
   EXPECT_EQ(error, "orbit.yaml:" + std::to_string(LineOf("  speed_mps:")) + ": controller.speed_mps: must be > 0");
-  const std::string text = ErrorOf(ExampleConfig("radius_m: 0.25", "radius_m: big"));
+  const std::string text = FactoryErrorOf(ExampleConfig("radius_m: 0.25", "radius_m: big"));
   EXPECT_EQ(text.rfind("orbit.yaml:" + std::to_string(LineOf("  radius_m:")) +
                            ": controller.radius_m: expected a number, got",
                        0),

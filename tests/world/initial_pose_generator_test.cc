@@ -10,6 +10,7 @@
 
 #include "dream/sim/start_pose_obstacle_check.h"
 #include "dream/sim/unicycle_world.h"
+#include "obstacle_block.h"
 
 namespace dream::sim {
 namespace {
@@ -91,14 +92,7 @@ TEST(InitialPoseGeneratorTest, ImpossibleCountsFailWithAHelpfulMessage) {
   EXPECT_THAT(sampling, HasSubstr("smaller min_spacing_m"));
 }
 
-RectangleObstacleSpec Block(int id, double x_m, double y_m, double width_m, double height_m) {
-  RectangleObstacleSpec spec;
-  spec.id = id;
-  spec.center_m = Eigen::Vector2d(x_m, y_m);
-  spec.width_m = width_m;
-  spec.height_m = height_m;
-  return spec;
-}
+using testing::Block;
 
 // The world itself judges step 0: UnicycleWorld counts every obstacle
 // contact and robot pair of the generated poses in its first Step().

@@ -7,20 +7,14 @@
 #include <gtest/gtest.h>
 
 #include "dream/sim/unicycle_world.h"
+#include "obstacle_block.h"
 
 namespace dream::sim {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-RectangleObstacleSpec Block(int id, double x_m, double y_m, double width_m, double height_m) {
-  RectangleObstacleSpec spec;
-  spec.id = id;
-  spec.center_m = Eigen::Vector2d(x_m, y_m);
-  spec.width_m = width_m;
-  spec.height_m = height_m;
-  return spec;
-}
+using testing::Block;
 
 TEST(StartPoseObstacleCheckTest, TheCollisionDiscIsOffsetAlongTheHeading) {
   const WorldParams world;  // collision radius 0.0675 m, offset 0.025 m

@@ -1,0 +1,22 @@
+#pragma once
+
+#include <string>
+
+#include "dream/agents/controller_factory.h"
+#include "dream/config/config_error.h"
+#include "dream/config/run_config.h"
+
+namespace dream::agents::testing {
+
+/// The error of building a ControllerFactory for `config` ("" when it builds),
+/// for tests of the messages a bad controller section gets.
+inline std::string FactoryErrorOf(const config::RunConfig& config) {
+  try {
+    ControllerFactory factory(config);
+  } catch (const config::ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace dream::agents::testing
