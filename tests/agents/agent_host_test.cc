@@ -185,16 +185,23 @@ TEST_F(AgentHostTest, GraphRadioDoesNotHearUnlinkedSenders) {
   EXPECT_TRUE(Counting(host, 2).heard_ids.empty());
 }
 
+/// A step-1 radio message from `sender_id` whose payload no robot can decode
+/// (too short for an int32).
+radio_message_t UndecodableRadioMessage(int sender_id) {
+  radio_message_t message{};
+  message.step = 1;
+  message.sender_id = sender_id;
+  message.payload = {1, 2};
+  message.payload_size = 2;
+  return message;
+}
+
 TEST_F(AgentHostTest, BadNeighbourPayloadsAreDroppedByTheRobot) {
   int calls = 0;
   std::vector<std::unique_ptr<RobotAgent>> agents;
   agents.push_back(MakeAgent(0, &calls));
   AgentHost host(bus_, std::move(agents), 1);
-  radio_message_t bad{};
-  bad.step = 1;
-  bad.sender_id = 5;
-  bad.payload = {1, 2};  // too short for an int32
-  bad.payload_size = 2;
+  const radio_message_t bad = UndecodableRadioMessage(5);
   lcm::Publish(bus_, lcm::RadioChannel(5), bad);
   radio_message_t mismatched = bad;
   mismatched.sender_id = 6;  // not the channel's robot
@@ -228,11 +235,7 @@ TEST_F(AgentHostTest, UndecodablePayloadsAreLoggedBySenderFirstThenEveryHundredt
     agents.push_back(MakeAgent(0, &calls));
     agents.push_back(MakeAgent(1, &calls, nullptr, /*name_bad_senders=*/false));
     AgentHost host(bus_, std::move(agents), 1);
-    radio_message_t bad{};
-    bad.step = 1;
-    bad.sender_id = 5;
-    bad.payload = {1, 2};  // too short for an int32
-    bad.payload_size = 2;
+    const radio_message_t bad = UndecodableRadioMessage(5);
     lcm::Publish(bus_, lcm::RadioChannel(5), bad);
     // The mailbox keeps a sender's latest message, so the robots hear (and
     // reject) it again at every radio round: steps 2..101 make 100.
