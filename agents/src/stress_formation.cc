@@ -1,3 +1,4 @@
+#include "dream/agents/number_text.h"
 #include "dream/agents/stress_formation.h"
 
 #include <Eigen/Dense>
@@ -12,12 +13,6 @@ namespace {
 bool Fail(std::string* error, const std::string& message) {
   if (error != nullptr) *error = message;
   return false;
-}
-
-std::string Number(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
 }
 
 std::vector<int> FollowersOf(int n, const std::vector<int>& leaders) {
@@ -70,8 +65,8 @@ bool StressFormationParams::IsValid(std::string* error) const {
       if (!std::isfinite(weights(i, j))) return Fail(error, "weights: entry " + entry + " is not finite");
       if (i == j && weights(i, j) != 0.0) return Fail(error, "weights: diagonal entry " + entry + " must be 0");
       if (std::abs(weights(i, j) - weights(j, i)) > 1e-9 * (1.0 + std::abs(weights(i, j)))) {
-        return Fail(error, "weights: a stress is symmetric, but entry " + entry + " is " + Number(weights(i, j)) +
-                               " and its transpose is " + Number(weights(j, i)));
+        return Fail(error, "weights: a stress is symmetric, but entry " + entry + " is " + NumberText(weights(i, j)) +
+                               " and its transpose is " + NumberText(weights(j, i)));
       }
     }
   }
@@ -107,12 +102,12 @@ bool StressFormationParams::IsValid(std::string* error) const {
   for (int f : followers) {
     const double gamma = weights.row(f).sum();
     if (!(gamma > 0.0)) {
-      return Fail(error, "weights: follower " + std::to_string(f) + "'s weights sum to " + Number(gamma) +
+      return Fail(error, "weights: follower " + std::to_string(f) + "'s weights sum to " + NumberText(gamma) +
                              "; the normalised follower law divides by that sum, which must be > 0");
     }
   }
   if (!(equilibrium_tolerance_m > 0.0) || !std::isfinite(equilibrium_tolerance_m)) {
-    return Fail(error, "equilibrium_tolerance_m: must be > 0, got " + Number(equilibrium_tolerance_m));
+    return Fail(error, "equilibrium_tolerance_m: must be > 0, got " + NumberText(equilibrium_tolerance_m));
   }
   const Eigen::MatrixXd omega = Omega(weights);
   const std::optional<Eigen::MatrixXd> settled = SolveFollowers(omega, followers, leaders, nominal_m);
@@ -126,8 +121,8 @@ bool StressFormationParams::IsValid(std::string* error) const {
     const double off_m = (target - nominal_m[size_t(followers[a])]).norm();
     if (off_m > equilibrium_tolerance_m) {
       return Fail(error, "weights: not an equilibrium stress of nominal_m: follower " + std::to_string(followers[a]) +
-                             " would settle " + Number(off_m) + " m from its nominal point (tolerance " +
-                             Number(equilibrium_tolerance_m) + " m); check sum_j w_ij (r_i - r_j) = 0");
+                             " would settle " + NumberText(off_m) + " m from its nominal point (tolerance " +
+                             NumberText(equilibrium_tolerance_m) + " m); check sum_j w_ij (r_i - r_j) = 0");
     }
   }
   return true;

@@ -1,3 +1,4 @@
+#include "dream/agents/number_text.h"
 #include "dream/agents/voronoi_cell.h"
 
 #include <algorithm>
@@ -35,7 +36,7 @@ bool VoronoiCellParams::IsValid(std::string* error) const {
   }
   if (!NonNegative(wall_margin_m) || 2.0 * wall_margin_m >= (arena_max_m - arena_min_m).minCoeff()) {
     return Fail(error, "wall_margin_m must be >= 0 and leave room inside the arena, got " +
-                           std::to_string(wall_margin_m));
+                           NumberText(wall_margin_m));
   }
   if (!NonNegative(robot_buffer_m)) {
     return Fail(error, "robot_buffer_m must be >= 0, got " + std::to_string(robot_buffer_m));

@@ -39,9 +39,11 @@ int main(int argc, char** argv) {
   DeclareRenderCommand(line);  // pictures and videos (docs/rendering.md)
 
   // CLI11 would only say "A subcommand is required"; name the unknown word.
-  // Options before the subcommand are the global ones only.
-  for (int i = 1; i < argc && argv[i][0] == '-'; ++i) {
-    const std::string option = argv[i];
+  // Options before the subcommand are the global ones only; the first other
+  // word must be a subcommand.
+  int first_word = 1;
+  for (; first_word < argc && argv[first_word][0] == '-'; ++first_word) {
+    const std::string option = argv[first_word];
     if (option != "-q" && option != "--quiet" && option != "-v" && option != "--verbose" && option != "-h" &&
         option != "--help") {
       std::cerr << "dream: unknown option '" << option << "' before the subcommand; global options are -q, -v, -h"
@@ -49,15 +51,15 @@ int main(int argc, char** argv) {
       return kExitUsage;
     }
   }
-  if (argc > 1 && argv[1][0] != '-') {
+  if (first_word < argc) {
     bool known = false;
     std::string names;
     for (const CLI::App* command : app.get_subcommands({})) {
-      known = known || command->get_name() == argv[1];
+      known = known || command->get_name() == argv[first_word];
       names += (names.empty() ? "" : ", ") + command->get_name();
     }
     if (!known) {
-      std::cerr << "dream: unknown subcommand '" << argv[1] << "'; known: " << names << " (dream --help)\n";
+      std::cerr << "dream: unknown subcommand '" << argv[first_word] << "'; known: " << names << " (dream --help)\n";
       return kExitUsage;
     }
   }

@@ -103,6 +103,7 @@ def test(ctx):
     # (name, argv, expected exit code, fragments the output line must hold, is a config error)
     cases = [
         ("unknown subcommand", ["frobnicate"], EXIT_USAGE, ["'frobnicate'", "dream --help"], False),
+        ("unknown subcommand after a global option", ["-q", "sewp"], EXIT_USAGE, ["'sewp'", "known: run"], False),
         ("unknown option", ["run", config, "--speed", "3"], EXIT_USAGE, ["--speed", "dream run --help"], False),
         ("unknown global option", ["--bogus", "run", config], EXIT_USAGE, ["'--bogus'", "dream --help"], False),
         ("missing argument", ["run"], EXIT_USAGE, ["config", "required", "dream run --help"], False),

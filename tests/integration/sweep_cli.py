@@ -25,7 +25,7 @@ import re
 import signal
 import time
 
-from dreamtest import arguments, check, main
+from dreamtest import arguments, check, main, read_summary
 
 EXIT_INPUT = 1
 EXIT_USAGE = 2
@@ -59,7 +59,7 @@ def small_sweep(ctx, dream, config):
             check(os.path.isfile(os.path.join(run, name)), f"{run}/{name} is missing")
         check(re.search(rf"^seed: {seed}$", read_text(os.path.join(run, "config.yaml")), re.MULTILINE),
               f"{run}/config.yaml does not say seed: {seed}")
-        summary = read_summary_file(os.path.join(run, "summary.json"))
+        summary = read_summary(run)
         check(summary["seed"] == seed and summary["steps"] == 40 and summary["end"] == "finished",
               f"{run}/summary.json: seed {summary['seed']}, steps {summary['steps']}, end {summary['end']}")
     rows = read_csv(os.path.join(out, "sweep.csv"))
@@ -76,12 +76,6 @@ def small_sweep(ctx, dream, config):
           f"sweep.md should have 3 run rows: {md[-900:]}")
     check("| success rate |" in text, "the summary block is not printed at the end")
     return "3 seeds x 40 steps: 3 rows, 0 successes (as expected)"
-
-
-def read_summary_file(path):
-    import json
-    with open(path) as f:
-        return json.load(f)
 
 
 def parameter_sweep(ctx, dream, config):
@@ -179,7 +173,7 @@ def interrupt(ctx, dream, config):
     check([(r["seed"], r["status"]) for r in rows] == [("1", "interrupted"), ("2", "interrupted")],
           f"sweep.csv of the interrupted sweep: {rows}")
     for seed in (1, 2):
-        summary = read_summary_file(os.path.join(out, "runs", f"seed{seed}", "summary.json"))
+        summary = read_summary(os.path.join(out, "runs", f"seed{seed}"))
         check(summary["end"] == "interrupted", f"seed {seed}: summary end {summary['end']}")
     check(not os.path.exists(os.path.join(out, "runs", "seed3")), "seed 3 started after the interruption")
     check("2 interrupted" in read_text(os.path.join(out, "sweep.md")), "sweep.md does not count the interrupted runs")

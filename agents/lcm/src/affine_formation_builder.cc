@@ -1,3 +1,4 @@
+#include "dream/agents/number_text.h"
 #include "dream/agents/affine_formation_builder.h"
 
 #include <cmath>
@@ -9,12 +10,6 @@ namespace dream::agents {
 namespace {
 
 using config::ConfigNode;
-
-std::string Number(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
 
 Eigen::Vector2d ReadPoint(const ConfigNode& node) {
   const std::vector<double> xy = node.AsDoubles();
@@ -57,15 +52,15 @@ void CheckPlan(const ConfigNode& node, const AffineManeuverParams& params, const
       const Eigen::Vector2d& p = targets[i];
       if (p.x() < arena.x_min_m + kWallMarginM || p.x() > arena.x_max_m - kWallMarginM ||
           p.y() < arena.y_min_m + kWallMarginM || p.y() > arena.y_max_m - kWallMarginM) {
-        node.Fail("at step " + std::to_string(step) + " robot " + std::to_string(i) + "'s target (" + Number(p.x()) +
-                  ", " + Number(p.y()) + ") is not 0.1 m inside the arena");
+        node.Fail("at step " + std::to_string(step) + " robot " + std::to_string(i) + "'s target (" + NumberText(p.x()) +
+                  ", " + NumberText(p.y()) + ") is not 0.1 m inside the arena");
       }
       for (size_t j = 0; j < i; ++j) {
         const double d = (p - targets[j]).norm();
         if (d < min_spacing_m) {
           node.Fail("at step " + std::to_string(step) + " the targets of robots " + std::to_string(j) + " and " +
-                    std::to_string(i) + " are " + Number(d) + " m apart, less than min_target_spacing_m " +
-                    Number(min_spacing_m));
+                    std::to_string(i) + " are " + NumberText(d) + " m apart, less than min_target_spacing_m " +
+                    NumberText(min_spacing_m));
         }
       }
     }
@@ -127,7 +122,7 @@ AffineFormationBuilder::AffineFormationBuilder(const ConfigNode& section, int nu
 
   const double time_step_s = section.GetDouble("time_step_s", 0.033);
   if (!(time_step_s > 0.0) || !std::isfinite(time_step_s)) {
-    section.Required("time_step_s").Fail("must be > 0 s, got " + Number(time_step_s));
+    section.Required("time_step_s").Fail("must be > 0 s, got " + NumberText(time_step_s));
   }
 
   HrvoRobotParams hrvo_defaults;
@@ -137,7 +132,7 @@ AffineFormationBuilder::AffineFormationBuilder(const ConfigNode& section, int nu
   maneuver_ = ReadManeuver(section.Required("maneuver"));
   const double min_spacing_m = section.GetDouble("min_target_spacing_m", 0.25);
   if (!(min_spacing_m >= 0.0) || !std::isfinite(min_spacing_m)) {
-    section.Required("min_target_spacing_m").Fail("must be >= 0 m, got " + Number(min_spacing_m));
+    section.Required("min_target_spacing_m").Fail("must be >= 0 m, got " + NumberText(min_spacing_m));
   }
   CheckPlan(section.Required("maneuver"), maneuver_, formation_->nominal_m(), hrvo_.hrvo, min_spacing_m);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -58,6 +59,24 @@ bool RectangleObstacle::IntersectsDisc(double center_x_m, double center_y_m, dou
   const double gap_x_m = std::max(std::abs(center_x_m - center_m_.x()) - spec_.width_m / 2.0, 0.0);
   const double gap_y_m = std::max(std::abs(center_y_m - center_m_.y()) - spec_.height_m / 2.0, 0.0);
   return gap_x_m * gap_x_m + gap_y_m * gap_y_m <= radius_m * radius_m;
+}
+
+std::vector<RectangleObstacle> RectangleObstacle::BuildAll(const std::vector<RectangleObstacleSpec>& specs,
+                                                           const std::string& owner, const std::string& field) {
+  std::vector<RectangleObstacle> obstacles;
+  obstacles.reserve(specs.size());
+  std::set<int> ids;
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    const std::string where = owner + ": " + field + "[" + std::to_string(i) + "]";
+    std::string error;
+    if (!specs[i].IsValid(&error)) throw std::invalid_argument(where + ": " + error);
+    if (!ids.insert(specs[i].id).second) {
+      throw std::invalid_argument(where + ".id = " + std::to_string(specs[i].id) +
+                                  " is used by an earlier obstacle; ids must be unique");
+    }
+    obstacles.emplace_back(specs[i]);
+  }
+  return obstacles;
 }
 
 }  // namespace dream::sim

@@ -7,19 +7,6 @@
 namespace dream::sim {
 namespace {
 
-std::vector<RectangleObstacle> BuildObstacles(const std::vector<RectangleObstacleSpec>& specs) {
-  std::vector<RectangleObstacle> obstacles;
-  obstacles.reserve(specs.size());
-  for (std::size_t i = 0; i < specs.size(); ++i) {
-    std::string error;
-    if (!specs[i].IsValid(&error)) {
-      throw std::invalid_argument("StartPoseObstacleCheck: obstacles[" + std::to_string(i) + "]: " + error);
-    }
-    obstacles.emplace_back(specs[i]);
-  }
-  return obstacles;
-}
-
 const WorldParams& ValidatedParams(const WorldParams& world) {
   std::string error;
   if (!world.IsValid(&error)) throw std::invalid_argument("StartPoseObstacleCheck: " + error);
@@ -32,7 +19,7 @@ StartPoseObstacleCheck::StartPoseObstacleCheck(const WorldParams& world,
                                                const std::vector<RectangleObstacleSpec>& obstacle_specs)
     : collision_offset_m_(ValidatedParams(world).collision_offset_m),
       collision_radius_m_(world.collision_diameter_m / 2.0),
-      obstacles_(BuildObstacles(obstacle_specs)) {}
+      obstacles_(RectangleObstacle::BuildAll(obstacle_specs, "StartPoseObstacleCheck", "obstacles")) {}
 
 // The same expressions as UnicycleWorld::Step (and ViolationChecker::Check),
 // in a library built with the same -ffp-contract=off, so the bits agree.

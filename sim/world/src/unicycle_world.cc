@@ -24,25 +24,6 @@ int64_t CommandHoldSteps(double time_step_s, double command_timeout_s) {
   return n;
 }
 
-std::vector<RectangleObstacle> BuildObstacles(const std::vector<RectangleObstacleSpec>& specs) {
-  std::vector<RectangleObstacle> obstacles;
-  obstacles.reserve(specs.size());
-  std::set<int> ids;
-  for (std::size_t i = 0; i < specs.size(); ++i) {
-    std::string error;
-    if (!specs[i].IsValid(&error)) {
-      throw std::invalid_argument("UnicycleWorld: obstacle_specs[" + std::to_string(i) + "]: " + error);
-    }
-    if (!ids.insert(specs[i].id).second) {
-      throw std::invalid_argument("UnicycleWorld: obstacle_specs[" + std::to_string(i) + "].id = " +
-                                  std::to_string(specs[i].id) +
-                                  " is used by an earlier obstacle; ids must be unique");
-    }
-    obstacles.emplace_back(specs[i]);
-  }
-  return obstacles;
-}
-
 const WorldParams& ValidatedParams(const WorldParams& params) {
   std::string error;
   if (!params.IsValid(&error)) throw std::invalid_argument("UnicycleWorld: " + error);
@@ -56,7 +37,7 @@ UnicycleWorld::UnicycleWorld(const WorldParams& params, std::vector<Pose2> initi
     : params_(ValidatedParams(params)),
       poses_(std::move(initial_poses)),
       velocities_(poses_.size()),
-      obstacles_(BuildObstacles(obstacle_specs)),
+      obstacles_(RectangleObstacle::BuildAll(obstacle_specs, "UnicycleWorld", "obstacle_specs")),
       command_step_(poses_.size(), kNoCommand),
       command_hold_steps_(CommandHoldSteps(params.time_step_s, params.command_timeout_s)),
       step_utime_(std::llround(params.time_step_s * 1e6)),

@@ -48,11 +48,10 @@ class RunRecorder {
   /// recorder's log (every whole event before the failure) is renamed too.
   /// Idempotent. @throws std::runtime_error when flushing fails here (the log
   /// is still cut back and renamed), or when the log cannot get its final
-  /// name (it then stays at part_path()).
+  /// name (it then stays at <path>.part).
   void Close();
 
   const std::string& path() const { return path_; }
-  const std::string& part_path() const { return part_path_; }
   /// Whole events in the log; after a failure, the ones it kept.
   int64_t events_written() const { return events_written_; }
   bool failed() const { return !failure_.empty(); }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -15,6 +16,11 @@ class RectangleObstacle {
  public:
   // Throws std::invalid_argument if the spec is invalid.
   explicit RectangleObstacle(const RectangleObstacleSpec& spec);
+
+  // One obstacle per spec, checked (valid specs, unique ids); errors start
+  // with `owner` and name `<field>[i]`. Throws std::invalid_argument.
+  static std::vector<RectangleObstacle> BuildAll(const std::vector<RectangleObstacleSpec>& specs,
+                                                 const std::string& owner, const std::string& field);
 
   // Moves speed * time_step_s along the path (no-op for static obstacles).
   void Advance(double time_step_s);
