@@ -6,8 +6,7 @@
 #include "dream/agents/affine_formation_builder.h"
 #include "dream/agents/affine_maneuver.h"
 #include "dream/agents/agent_parts_config.h"
-#include "dream/agents/controller_plugin_loader.h"
-#include "dream/agents/controller_registry.h"
+#include "dream/agents/controller_factory.h"
 #include "dream/agents/go_to_goal_builder.h"
 #include "dream/agents/hrvo_circle_builder.h"
 #include "dream/agents/world_snapshot.h"
@@ -87,15 +86,11 @@ sim::ArenaOverlays::RadioHearing HearingOf(const agents::AgentPartsConfig& parts
 }  // namespace
 
 sim::ArenaOverlays ArenaOverlaysFromConfig(const config::RunConfig& config) {
-  agents::ControllerPluginLoader::LoadAll(config);
-  const config::ConfigNode& section = config.controller;
-  const std::string kind = section.Required("kind").AsString();
-  const agents::ControllerKind* entry = agents::ControllerRegistry::Global().Find(kind);
-  if (entry == nullptr) section.Required("kind").Fail("unknown controller kind '" + kind + "'");
-  const agents::AgentPartsConfig parts = agents::AgentPartsConfig::Read(
-      section, config.num_robots, entry->default_parts(config.num_robots), entry->graph_must_connect);
+  // The factory loads the config's plugins, checks the kind and reads the parts.
+  const agents::ControllerFactory factory(config);
+  const agents::AgentPartsConfig& parts = factory.parts();
   sim::ArenaOverlays overlays;
-  overlays.goals_m = GoalsOf(kind, section, config.num_robots);
+  overlays.goals_m = GoalsOf(factory.kind(), config.controller, config.num_robots);
   overlays.sensor_reaches = SensorReachesOf(parts);
   overlays.hears = HearingOf(parts, config.num_robots, config.seed);
   return overlays;

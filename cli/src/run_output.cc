@@ -2,14 +2,13 @@
 
 #include <spdlog/spdlog.h>
 
-#include <fstream>
-#include <sstream>
 #include <nlohmann/json.hpp>
 #include <iostream>
 
 #include "dream/agents/controller_factory.h"
 #include "dream/bridge/metrics_json.h"
 #include "dream/sim/atomic_file.h"
+#include "dream/sim/file_text.h"
 #include "dream/sim/output_folder.h"
 #include "dream/sim/run_recorder.h"
 #include "dream/sim/run_report.h"
@@ -22,14 +21,6 @@
 #include "terminal_progress.h"
 
 namespace dream::cli {
-
-std::string ReadConfigText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read the config " + path + " again to copy it into the run folder");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 config::RunConfig LoadConfig(const RunArgs& args) {
   config::RunConfig config = config::LoadRunConfigFile(args.config_path);
@@ -54,7 +45,7 @@ int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std:
   // A copy of the config beside the log, so the run folder alone is enough for
   // `dream export` and `dream compare`.
   sim::WriteFileAtomically(out_dir + "/config.yaml",
-                           config::RunFolderConfigText(config, ReadConfigText(config.source)));
+                           config::RunFolderConfigText(config, sim::ReadFileText(config.source)));
   sim::UnicycleWorld world(config.world, config.initial_poses, config.obstacles);
   const std::string log_path = out_dir + "/run.lcmlog";
   sim::RunOutcome outcome;

@@ -14,10 +14,6 @@ namespace dream::cli {
 /// @throws config::ConfigError or std::invalid_argument with a clear message.
 config::RunConfig LoadConfig(const RunArgs& args);
 
-/// The bytes of the config file at `path` (to copy it into a run folder).
-/// @throws std::runtime_error naming the file.
-std::string ReadConfigText(const std::string& path);
-
 /// The output folder: --out, else runs/<name>. Created if missing (its parent
 /// must exist). @throws std::runtime_error naming the folder otherwise.
 std::string PrepareOutputDir(const RunArgs& args, const config::RunConfig& config);

@@ -88,7 +88,7 @@ AffineFormationBuilder::AffineFormationBuilder(const ConfigNode& section, int nu
   // The stress weights and the leaders are the role radio's graph and leaders:
   // one matrix says both who hears whom and how much each neighbour counts.
   const ConfigNode radio = section.Required("radio");
-  const AgentPartsConfig parts = AgentPartsConfig::Read(section, num_robots, DefaultParts(num_robots), true);
+  const AgentPartsConfig parts = AgentPartsConfig::Read(section, num_robots, DefaultParts(num_robots), kGraphMustConnect);
   if (parts.radio.kind != RadioConfig::Kind::kRole) {
     radio.Required("kind").Fail(
         "an affine formation needs `kind: role` (leaders publish, followers hear their "

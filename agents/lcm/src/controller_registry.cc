@@ -17,16 +17,10 @@ std::string Described(const std::string& origin) { return origin.empty() ? std::
 
 void AddBuiltIns(ControllerRegistry& registry) {
   registry.Add(ControllerKind::Of<GoToGoalBuilder>(), kBuiltIn);
-  // The followers need every leader's word: the role radio's graph must connect.
-  ControllerKind affine = ControllerKind::Of<AffineFormationBuilder>();
-  affine.graph_must_connect = true;
-  registry.Add(std::move(affine), kBuiltIn);
+  registry.Add(ControllerKind::Of<AffineFormationBuilder>(), kBuiltIn);
   registry.Add(ControllerKind::Of<VoronoiCoverageBuilder>(), kBuiltIn);
   registry.Add(ControllerKind::Of<HrvoCircleBuilder>(), kBuiltIn);
-  // Consensus (eq. 3.7) needs a symmetric, connected graph.
-  ControllerKind line = ControllerKind::Of<LineDeploymentBuilder>();
-  line.graph_must_connect = true;
-  registry.Add(std::move(line), kBuiltIn);
+  registry.Add(ControllerKind::Of<LineDeploymentBuilder>(), kBuiltIn);
 }
 
 }  // namespace

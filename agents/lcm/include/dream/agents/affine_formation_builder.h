@@ -30,6 +30,8 @@ namespace dream::agents {
 class AffineFormationBuilder final : public ExperimentBuilder {
  public:
   static constexpr const char* kKind = "affine_formation";
+  /// The followers need every leader's word: the role radio's graph must connect.
+  static constexpr bool kGraphMustConnect = true;
   static std::vector<const char*> Keys() {
     return {"nominal_positions", "maneuver", "leader", "follower", "hrvo", "drive", "time_step_s",
             "equilibrium_tolerance_m", "min_target_spacing_m", "metrics"};

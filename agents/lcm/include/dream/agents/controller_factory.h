@@ -43,6 +43,8 @@ class ControllerFactory {
   std::vector<std::unique_ptr<ExperimentMetrics>> MakeMetrics() const;
 
   const std::string& kind() const { return kind_; }
+  /// The robots' parts (timer, sensors, radio) as the config sets them.
+  const AgentPartsConfig& parts() const { return parts_; }
 
  private:
   std::string kind_;

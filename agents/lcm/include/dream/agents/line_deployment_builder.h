@@ -22,6 +22,8 @@ namespace dream::agents {
 class LineDeploymentBuilder final : public ExperimentBuilder {
  public:
   static constexpr const char* kKind = "line_deployment";
+  /// Consensus (eq. 3.7) needs a symmetric, connected graph.
+  static constexpr bool kGraphMustConnect = true;
   static std::vector<const char*> Keys() {
     return {"spacing_m", "gain", "max_speed_mps", "tolerance_m", "resume_m", "hold_avoid_range_m",
             "settle_updates", "arena_margin_m", "converged_m", "hrvo"};
