@@ -1,0 +1,12 @@
+"""DREAM's Python controller runtime: write a Robot subclass, run it as LCM agents or in a
+Robotarium submission (docs/python-runtime-contract.md). Controllers import from here:
+`from dream import Robot, key`. Single-line relative imports only: the submission exporter
+flattens this package into dream_*.py files."""
+
+from .motion import ActuatorLimits, RobotLimits, SingleIntegratorToUnicycle, dxi_to_dxu
+from .robot import REQUIRED, Key, MovementReading, NeighbourDetection, ObstacleReading, ObstacleRectangle, ObstacleView, OdometryReading, Robot, RobotParams, WorldSnapshot, key
+from .radios import GraphRadio, Mailbox, RadioMessage, RangeRadio, RoleRadio, mix_seed, pack_floats, unpack_floats
+from .sensors import MovementSensor, ObstacleSensor, OdometrySensor, wrap_angle
+from .timer import Timer
+from .robot_agent import AgentOutput, ControllerFault, RobotAgent, controller_error_text
+from .controller_spec import ConfigError, ControllerSpec, check

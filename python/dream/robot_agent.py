@@ -1,0 +1,117 @@
+"""One robot's agent, free of any transport (agents/src/robot_agent.cc): feed it the world each
+step and the others' radio messages; it runs its parts when its Timer says so and returns the
+command (the last one again when update did not run) and, if the radio spoke, the payload.
+
+Both routes drive it: the LCM agent host and a Robotarium submission's main loop.
+"""
+
+import os
+import sys
+import traceback
+
+from .radios import Mailbox
+from .timer import Timer
+
+
+class ControllerFault(Exception):
+    """A controller raised inside one of its callbacks; the text says where (see controller_error_text)."""
+
+
+def controller_error_text(exc, user_file=None):
+    """The text of a ControllerFault, `FILE:LINE: in FUNCTION: ExcType: message`, for the
+    innermost traceback frame of `exc` in `user_file` (the controller's module), else for the
+    innermost frame overall: the line a controller's author has to look at."""
+    frames = traceback.extract_tb(exc.__traceback__)
+    frame = frames[-1] if frames else None
+    if user_file is not None:
+        wanted = os.path.realpath(user_file)
+        for candidate in reversed(frames):
+            if os.path.realpath(candidate.filename) == wanted:
+                frame = candidate
+                break
+    where = f"{frame.filename}:{frame.lineno}: in {frame.name}: " if frame is not None else ""
+    return f"{where}{type(exc).__name__}: {exc}"
+
+
+class AgentOutput:
+    """What one step gives the host: command (v m/s, w rad/s), done, and the payload the radio
+    broadcast this step (bytes) or None."""
+
+    __slots__ = ("v", "w", "done", "broadcast")
+
+    def __init__(self, v, w, done, broadcast):
+        self.v = v
+        self.w = w
+        self.done = done
+        self.broadcast = broadcast
+
+
+class RobotAgent:
+    """A Robot with its sensors, radio, mailbox and Timer.
+
+    `sensors` is a sequence of (sensor, period_steps). Timer components, in order: the sensors,
+    the radio, the control law. Calls robot.setup() now; an exception there, or later in any
+    callback, becomes a ControllerFault that every later step() raises again (`fault`).
+    """
+
+    def __init__(self, robot, sensors=(), radio=None, robot_period_steps=1, start_delay_steps=0,
+                 radio_period_steps=1, loss_probability=0.0, delay_steps=0, seed=0):
+        self.robot = robot
+        self.id = robot.id
+        self.radio = radio
+        self.mailbox = Mailbox(loss_probability, delay_steps, seed)
+        self._sensors = [sensor for sensor, _ in sensors]
+        periods = [period for _, period in sensors] + [radio_period_steps, robot_period_steps]
+        self._timer = Timer(start_delay_steps, periods)
+        self._user_file = getattr(sys.modules.get(type(robot).__module__), "__file__", None)
+        self._last_command = (0.0, 0.0)
+        self.fault = None
+        try:
+            robot.setup()
+        except Exception as exc:
+            self.fault = ControllerFault(controller_error_text(exc, self._user_file))
+
+    def step(self, world):
+        """Runs the parts due at world.step: sensors in list order, then the radio (heard
+        messages -> on_radio), then update; returns an AgentOutput."""
+        if self.fault is not None:
+            raise self.fault.with_traceback(None)  # not one more frame on its traceback per step
+        due = self._timer.tick(world.step)
+        robot = self.robot
+        radio_slot = len(self._sensors)
+        broadcast = None
+        try:
+            for sensor, sensor_due in zip(self._sensors, due):
+                if sensor_due:
+                    sensor.sense(world, robot)
+            if due[radio_slot] and self.radio is not None:
+                payload = robot.on_radio(self.mailbox.heard(self.radio, self.id, world))
+                if payload is not None and self.radio.publishes:
+                    broadcast = bytes(payload)
+            if due[radio_slot + 1]:
+                self._last_command = self._command(robot.update(world.step))
+            done = bool(robot.done())
+        except ControllerFault as fault:
+            self.fault = fault
+            raise
+        except Exception as exc:
+            self.fault = ControllerFault(controller_error_text(exc, self._user_file))
+            raise self.fault from exc
+        v, w = self._last_command
+        return AgentOutput(v, w, done, broadcast)
+
+    def receive(self, message):
+        """A message another robot broadcast; heard (or not) at later steps. Own messages are ignored."""
+        if message.sender_id != self.id:
+            self.mailbox.post(message)
+
+    def _command(self, command):
+        """update()'s (v, w) as two floats; a ControllerFault at the user's update otherwise."""
+        try:
+            v, w = command
+            return (float(v), float(w))
+        except (TypeError, ValueError):
+            update = type(self.robot).update
+            code = update.__code__
+            raise ControllerFault(f"{code.co_filename}:{code.co_firstlineno}: in {update.__name__}: TypeError: "
+                                  f"update() must return (v, w), two numbers, got {command!r}") from None
