@@ -165,8 +165,8 @@ def check_key_value(value, spec, num_robots):
 
 def load_controller_class(module_path, class_name):
     """The Robot subclass `class_name` of the file `module_path`, imported under a unique name
-    with its folder on sys.path (so that helpers beside it import). Raises _Problem for the
-    `module` or `class` key: which one is the tuple's first item."""
+    with its folder on sys.path (so that helpers beside it import). Raises _Problem whose
+    `where` is the key at fault, module or class."""
     path = os.path.abspath(module_path)
     if not os.path.isfile(path):
         raise _Problem(f"no controller module at {path}", "module")
