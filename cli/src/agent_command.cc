@@ -12,6 +12,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "hosted_agents.h"
 #include "command_line.h"
 #include "commands.h"
 #include "process_group.h"
@@ -81,10 +82,7 @@ int RunAgents(const AgentArgs& args) {
   const config::RunConfig config = config::LoadRunConfigFile(args.config_path);
   const std::vector<int> ids = ParseRobotList(args.robots, config.num_robots);
   lcm::LcmBus bus(lcm::ResolveLcmUrl(args.lcm_url));
-  const agents::ControllerFactory factory(config);
-  std::vector<std::unique_ptr<agents::RobotAgent>> robots;
-  for (int id : ids) robots.push_back(factory.Make(id));
-  agents::AgentHost host(bus, std::move(robots), NewAgentId());
+  HostedAgents host(bus, config, ids);
   spdlog::info("agent for robot(s) {} of {} on {}", args.robots, config.name, bus.url());
   const bool ended_by_world = host.Run(StopFlag(), args.idle_timeout_s);
   // Peak resident memory, so per-agent memory can be checked

@@ -8,9 +8,11 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <numeric>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "hosted_agents.h"
 #include "command_line.h"
 #include "commands.h"
 #include "run_output.h"
@@ -144,17 +146,17 @@ int RunLabReplay(const LabReplayArgs& args) {
   config.sim.max_steps = args.steps > 0 ? std::min<int64_t>(args.steps, track.last_step()) : track.last_step();
   config.sim.stop_when_done = false;  // the lab run is replayed to its end
   if (!args.mode.empty()) config.sim.mode = sim::ParseWorldMode(args.mode);
-  const agents::ControllerFactory factory(config);
+  HostedAgents::Check(config);
 
   const sim::OutputFolder out(DefaultOut(args.out_dir, config.name, "_lab_replay"));
   const std::string log_path = out.PathOf("run.lcmlog");
   const bool in_process = !args.world_only;
   lcm::LcmBus bus(args.lcm_url.empty() ? (in_process ? "memq://" : lcm::ResolveLcmUrl("")) : lcm::ResolveLcmUrl(args.lcm_url));
-  std::unique_ptr<agents::AgentHost> host;
+  std::unique_ptr<HostedAgents> host;
   if (in_process) {
-    std::vector<std::unique_ptr<agents::RobotAgent>> robots;
-    for (int id = 0; id < config.num_robots; ++id) robots.push_back(factory.Make(id));
-    host = std::make_unique<agents::AgentHost>(bus, std::move(robots), NewAgentId());
+    std::vector<int> ids(static_cast<size_t>(config.num_robots));
+    std::iota(ids.begin(), ids.end(), 0);
+    host = std::make_unique<HostedAgents>(bus, config, ids);
   }
   out.WriteFile("config.yaml", sim::ReadFileText(config_in));
   sim::RunOutcome outcome;

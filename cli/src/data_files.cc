@@ -5,7 +5,7 @@
 #include "process_group.h"
 
 #if !defined(DREAM_BUILD_DIR) || !defined(DREAM_BIN_TO_DATA) || !defined(DREAM_BUILD_TYPES_JAR) || \
-    !defined(DREAM_BRIDGE_PYTHON_DIR)
+    !defined(DREAM_BRIDGE_PYTHON_DIR) || !defined(DREAM_PYTHON_RUNTIME_DIR) || !defined(DREAM_PYTHON_TYPES_DIR)
 #error "cli/CMakeLists.txt defines where the build tree and the installed data files are"
 #endif
 
@@ -28,5 +28,9 @@ std::string DataFiles::Locate(const std::string& installed_relative_path, const 
 std::string DataFiles::TypesJar() { return Locate("java/dream_lcmtypes.jar", DREAM_BUILD_TYPES_JAR); }
 
 std::string DataFiles::BridgePythonDir() { return Locate("bridge", DREAM_BRIDGE_PYTHON_DIR); }
+
+std::string DataFiles::PythonRuntimeDir() { return Locate("python-runtime", DREAM_PYTHON_RUNTIME_DIR); }
+
+std::string DataFiles::PythonTypesDir() { return Locate("python", DREAM_PYTHON_TYPES_DIR); }
 
 }  // namespace dream::cli

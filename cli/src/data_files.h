@@ -15,6 +15,10 @@ class DataFiles {
   static std::string TypesJar();
   /// The folder of run_submission.py and the stand-in simulator.
   static std::string BridgePythonDir();
+  /// The folder holding the Python controller runtime, package `dream` (python/).
+  static std::string PythonRuntimeDir();
+  /// The folder holding lcm-gen's Python types, their package `dream`.
+  static std::string PythonTypesDir();
   /// True when the running executable is the one in its build tree.
   static bool RunningFromBuildTree();
 

@@ -1,8 +1,10 @@
 #include <spdlog/spdlog.h>
 
 #include <memory>
+#include <numeric>
 #include <random>
 
+#include "hosted_agents.h"
 #include "command_line.h"
 #include "commands.h"
 #include "dream/agents/agent_host.h"
@@ -20,10 +22,9 @@ int RunEmbedded(const RunArgs& args) {
   // user asks for a real transport.
   lcm::LcmBus bus(args.lcm_url.empty() ? "memq://" : lcm::ResolveLcmUrl(args.lcm_url));
   const std::string out_dir = PrepareOutputDir(args, config);
-  const agents::ControllerFactory factory(config);
-  std::vector<std::unique_ptr<agents::RobotAgent>> robots;
-  for (int id = 0; id < config.num_robots; ++id) robots.push_back(factory.Make(id));
-  agents::AgentHost host(bus, std::move(robots), NewAgentId());
+  std::vector<int> ids(static_cast<size_t>(config.num_robots));
+  std::iota(ids.begin(), ids.end(), 0);
+  const HostedAgents agents(bus, config, ids);
   return RunWorld(bus, config, out_dir);
 }
 

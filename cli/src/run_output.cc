@@ -1,3 +1,4 @@
+#include "hosted_agents.h"
 #include "run_output.h"
 
 #include <spdlog/spdlog.h>
@@ -32,7 +33,7 @@ config::RunConfig LoadConfig(const RunArgs& args) {
   if (args.all_steps) config.sim.stop_when_done = false;
   // Check the controller section now, so a mistake in it stops every command
   // (sim, launch) before anything starts or any folder is made.
-  agents::ControllerFactory{config};
+  HostedAgents::Check(config);
   return config;
 }
 
@@ -89,6 +90,9 @@ int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std:
   spdlog::info("{} after {} steps ({:.1f} s simulated, {:.2f} s wall): {}", sim::EndName(outcome.end),
                outcome.steps, world.time_s(), outcome.wall_time_s, outcome.reason);
   std::cout << report.Text();
+  for (const auto& [id, detail] : outcome.robot_faults) {
+    std::cout << "robot " << id << " was lost, its controller failed at " << detail << "\n";
+  }
   std::cout << "log:     " << log_path << "\nsummary: " << out_dir << "/summary.json\n";
   bool picture_failed = false;
   if (outcome.steps > 0 || outcome.end == sim::RunOutcome::End::kFinished) {
@@ -102,7 +106,8 @@ int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std:
       picture_failed = true;
     }
   }
-  const int exit_code = ExitCodeFor(outcome, report);
+  // A robot whose controller failed makes the run fail, whatever the rest did.
+  const int exit_code = outcome.robot_faults.empty() ? ExitCodeFor(outcome, report) : kExitRunFailed;
   return picture_failed ? kExitRunFailed : exit_code;
 }
 

@@ -48,6 +48,8 @@ void LcmBus::ResubscribeForAllHandlers() {
   subscription_ = replacement;
 }
 
+_lcm_t* LcmBus::c_handle() const { return lcm_->getUnderlyingLCM(); }
+
 LcmBus::~LcmBus() = default;
 
 void LcmBus::Publish(const std::string& channel, const void* data, int size) {

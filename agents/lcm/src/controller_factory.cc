@@ -36,7 +36,7 @@ ControllerFactory::ControllerFactory(const config::ConfigNode& section, int num_
   }
   std::vector<std::string> keys = {"kind", "robot", "sensors", "radio"};
   keys.insert(keys.end(), entry->keys.begin(), entry->keys.end());
-  for (const std::string& key : section.Keys()) {
+  for (const std::string& key : entry->checks_own_keys ? std::vector<std::string>{} : section.Keys()) {
     if (std::find(keys.begin(), keys.end(), key) != keys.end()) continue;
     std::string allowed;
     for (const std::string& k : keys) allowed += (allowed.empty() ? "" : ", ") + k;

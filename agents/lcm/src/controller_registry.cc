@@ -6,6 +6,7 @@
 #include "dream/agents/go_to_goal_builder.h"
 #include "dream/agents/hrvo_circle_builder.h"
 #include "dream/agents/line_deployment_builder.h"
+#include "dream/agents/python_controller_builder.h"
 #include "dream/agents/voronoi_coverage_builder.h"
 
 namespace dream::agents {
@@ -21,6 +22,7 @@ void AddBuiltIns(ControllerRegistry& registry) {
   registry.Add(ControllerKind::Of<VoronoiCoverageBuilder>(), kBuiltIn);
   registry.Add(ControllerKind::Of<HrvoCircleBuilder>(), kBuiltIn);
   registry.Add(ControllerKind::Of<LineDeploymentBuilder>(), kBuiltIn);
+  registry.Add(PythonControllerBuilder::Kind(), kBuiltIn);
 }
 
 }  // namespace

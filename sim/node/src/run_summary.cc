@@ -32,6 +32,9 @@ std::string RunSummaryJson(const config::RunConfig& config, const RunOutcome& ou
   json["robotarium_report"] = report.Text();
   json["rejected_commands"] = outcome.rejected_commands;
   json["robots_ever_lost"] = outcome.robots_ever_lost;
+  nlohmann::json faults = nlohmann::json::object();
+  for (const auto& [id, detail] : outcome.robot_faults) faults[std::to_string(id)] = detail;
+  json["robot_faults"] = faults;
   json["robots_done"] = outcome.robots_done;
   json["bad_messages"] = outcome.bad_messages;
   json["handler_failures"] = outcome.handler_failures;

@@ -9,6 +9,7 @@
 #include "dream/lcm/channels.h"
 #include "dream/lcm/lcm_typed.h"
 #include "dream/obstacles_t.hpp"
+#include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
 #include "dream/sim/progress_reporter.h"
@@ -56,6 +57,9 @@ SimNode::SimNode(lcm::LcmInterface& lcm, World& world, RunRecorder* recorder, Si
       lcm_, lcm::kCommandChannelRegex,
       [this](const std::string& channel, const velocity_command_t& command) { OnCommand(channel, command); },
       bad_messages_);
+  lcm::Subscribe<robot_fault_t>(
+      lcm_, lcm::kFaultChannelRegex,
+      [this](const std::string& channel, const robot_fault_t& fault) { OnFault(channel, fault); }, bad_messages_);
   if (recorder_ != nullptr) {
     lcm_.Subscribe(".*", [this](const std::string& channel, const void* data, int size) {
       OnAnyMessage(channel, data, size);
@@ -97,6 +101,31 @@ void SimNode::Reject(const std::string& channel, const std::string& reason) {
   ++rejected_commands_;
   // Rejections are the user's bug; say it once per channel, then every 100th.
   bad_messages_.Report(channel, "rejected command: " + reason);
+}
+
+void SimNode::OnFault(const std::string& channel, const robot_fault_t& fault) {
+  const std::optional<int> id = lcm::RobotIdFromChannel(channel, lcm::kFaultChannelPrefix);
+  if (!id || *id != fault.robot_id || *id >= world_.num_robots()) {
+    bad_messages_.Report(channel, "robot fault for robot " + std::to_string(fault.robot_id) +
+                                      " does not match its channel or this run's robots");
+    return;
+  }
+  RobotSlot& robot = robots_[static_cast<size_t>(*id)];
+  // Only the agent driving the robot may give it up.
+  if (robot.owned && robot.owner_agent_id != fault.agent_id) {
+    bad_messages_.Report(channel, "robot fault from agent " + std::to_string(fault.agent_id) +
+                                      ", which does not drive robot " + std::to_string(*id));
+    return;
+  }
+  if (robot_faults_.count(*id) != 0) return;  // said once is enough
+  constexpr size_t kMaxDetail = 2000;
+  const std::string detail = fault.detail.substr(0, kMaxDetail);
+  robot_faults_[*id] = "step " + std::to_string(world_.step()) + ": " + detail;
+  robot.lost = true;
+  robots_ever_lost_.insert(*id);
+  world_.StopRobot(*id);
+  spdlog::error("robot {} lost at step {}: its controller failed: {}; it stops, the run goes on", *id,
+                world_.step(), detail);
 }
 
 void SimNode::OnCommand(const std::string& channel, const velocity_command_t& command) {
@@ -305,6 +334,7 @@ RunOutcome SimNode::Finish(RunOutcome::End end, const std::string& reason) {
   outcome.wall_time_s = SecondsBetween(run_start_, Clock::now());
   outcome.rejected_commands = rejected_commands_;
   outcome.robots_ever_lost = robots_ever_lost_;
+  outcome.robot_faults = robot_faults_;
   for (size_t i = 0; i < robots_.size(); ++i) {
     if (robots_[i].done) outcome.robots_done.insert(static_cast<int>(i));
   }

@@ -24,6 +24,11 @@ inline constexpr const char* kCommandChannelRegex = "DREAM_CMD_.*";
 inline constexpr const char* kRadioChannelPrefix = "DREAM_RADIO_";
 inline constexpr const char* kRadioChannelRegex = "DREAM_RADIO_.*";
 
+/// Prefix of DREAM_FAULT_<id>: an agent says a robot's controller failed
+/// (robot_fault_t); agent -> world, once.
+inline constexpr const char* kFaultChannelPrefix = "DREAM_FAULT_";
+inline constexpr const char* kFaultChannelRegex = "DREAM_FAULT_.*";
+
 /// "DREAM_RADIO_<robot_id>".
 inline std::string RadioChannel(int robot_id) { return kRadioChannelPrefix + std::to_string(robot_id); }
 

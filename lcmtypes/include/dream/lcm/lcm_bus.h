@@ -9,6 +9,8 @@
 
 #include "dream/lcm/lcm_interface.h"
 
+struct _lcm_t;  // LCM's C instance (lcm_t)
+
 namespace lcm {
 class LCM;
 class ReceiveBuffer;
@@ -51,6 +53,11 @@ class LcmBus final : public LcmInterface {
   int HandleSubscriptions(int timeout_ms) override;
   const std::string& url() const override { return url_; }
   long handler_failures() const override { return handler_failures_; }
+  /// LCM's C instance under this bus, for a host in another language in this
+  /// process (the Python agents of `dream run`, dream::python_host) to
+  /// subscribe and publish on the same queue. It stays this bus's: never
+  /// destroy it.
+  _lcm_t* c_handle() const;
 
  private:
   struct Subscriber {

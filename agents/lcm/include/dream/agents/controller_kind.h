@@ -24,6 +24,9 @@ struct ControllerKind {
   std::function<AgentPartsConfig(int num_robots)> default_parts = AgentPartsConfig::Defaults;
   /// Graph radios must form a connected, symmetric graph (consensus laws need it).
   bool graph_must_connect = false;
+  /// The kind checks the section's other keys itself, so the factory does not
+  /// refuse them (the `python` kind: the Python class declares its keys).
+  bool checks_own_keys = false;
   std::function<std::unique_ptr<ExperimentBuilder>(const config::ConfigNode& section, int num_robots)> make_builder;
 
   /// The kind of `Builder`, read from its static members: `kKind` (the name),

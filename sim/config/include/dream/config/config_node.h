@@ -68,6 +68,8 @@ class ConfigNode {
   const std::string& file() const { return file_; }
   const std::string& key() const { return key_; }
   const YAML::Node& yaml() const { return node_; }
+  /// 1-based line of this node (of its parent when the key is missing), 0 when unknown.
+  int line() const { return line_; }
 
  private:
   std::string Where() const;

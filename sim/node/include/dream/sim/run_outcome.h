@@ -21,6 +21,9 @@ struct RunOutcome {
   double wall_time_s = 0.0;          ///< from the first published step to the end
   int64_t rejected_commands = 0;     ///< absurd, unknown robot, second agent, wrong step
   std::set<int> robots_ever_lost;    ///< robots whose agent went silent at some point
+  /// Robots whose controller failed (their agent said so on DREAM_FAULT_<id>):
+  /// id -> "step k: what failed". They are lost and stopped from that step.
+  std::map<int, std::string> robot_faults;
   std::set<int> robots_done;         ///< robots whose last command said done
   std::map<std::string, long> bad_messages;  ///< undecodable messages per channel
   long handler_failures = 0;         ///< exceptions caught in message handlers on the run's bus

@@ -3,6 +3,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@
 
 namespace dream {
 class velocity_command_t;
+class robot_fault_t;
 }
 
 namespace dream::sim {
@@ -74,6 +76,7 @@ class SimNode {
   };
 
   void OnCommand(const std::string& channel, const velocity_command_t& command);
+  void OnFault(const std::string& channel, const robot_fault_t& fault);
   void OnAnyMessage(const std::string& channel, const void* data, int size);
   /// Writes one event to the recorder, if any; a write failure is remembered
   /// (the recorder is failed from then on) for Run() to end the run.
@@ -102,6 +105,7 @@ class SimNode {
   int8_t state_;
   int64_t rejected_commands_ = 0;
   std::set<int> robots_ever_lost_;
+  std::map<int, std::string> robot_faults_;
   Clock::time_point run_start_;
   Clock::time_point step_published_;
   Clock::time_point last_resend_;

@@ -1,0 +1,41 @@
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "dream/agents/agent_host.h"
+#include "dream/agents/python_agent_host.h"
+#include "dream/config/run_config.h"
+#include "dream/lcm/lcm_bus.h"
+
+namespace dream::cli {
+
+/// The agents of some robots of a run, on a bus of this process, whatever
+/// language their controller is in: C++ kinds in an agents::AgentHost, the
+/// python kind in an agents::PythonAgentHost (embedded interpreter). Every
+/// command that hosts agents (run, agent, lab-replay) goes through here.
+class HostedAgents {
+ public:
+  /// Checks the controller section as far as can be done before a run: the
+  /// kind and its keys, and for the python kind its module, class and own
+  /// keys. @throws config::ConfigError naming file, line and key.
+  static void Check(const config::RunConfig& config);
+
+  /// Builds the agents of `robot_ids` and subscribes them on `bus`.
+  HostedAgents(lcm::LcmBus& bus, const config::RunConfig& config, const std::vector<int>& robot_ids);
+
+  /// Handles `bus` until the world ends the run (true), or `stop` / silence (false).
+  bool Run(const std::atomic<bool>& stop, double idle_timeout_s);
+  int64_t last_step_answered() const;
+  std::string end_detail() const;
+
+ private:
+  lcm::LcmBus& bus_;
+  std::unique_ptr<agents::AgentHost> cpp_;
+  std::unique_ptr<agents::PythonAgentHost> python_;
+};
+
+}  // namespace dream::cli

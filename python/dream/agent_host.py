@@ -1,0 +1,223 @@
+"""The Python agent host: Python controllers as agents on the bus, as agents/lcm's AgentHost.
+
+Reads DREAM_POSES (the step trigger), DREAM_OBSTACLES, DREAM_STATUS and every
+DREAM_RADIO_<id>; writes DREAM_RADIO_<id> and DREAM_CMD_<id> for each hosted robot, with
+the same lockstep contract as the C++ host (docs/architecture.md): each DREAM_POSES of
+step k is answered with every hosted robot's command for step k, its radio message (if
+any) just before; a resent step gets the same messages again without running the robot
+twice. Messages are lcm-gen's Python types.
+
+A controller that raises is reported once on DREAM_FAULT_<id> (robot_fault_t: the error's
+file:line), logged, and its robot is no longer answered: the world marks it lost and stops
+it, and the run goes on. Undecodable or inconsistent messages are counted per channel and
+dropped; nothing from the bus can raise out of a handler.
+"""
+
+import logging
+import re
+import struct
+import time
+
+import numpy as np
+
+from .radios import RadioMessage
+from .robot import ObstacleView, WorldSnapshot
+from .robot_agent import ControllerFault
+
+log = logging.getLogger("dream")
+
+SUBSCRIPTION_REGEX = "DREAM_(POSES|OBSTACLES|STATUS|RADIO_[0-9]+)"
+MAX_ROBOTS = 50          # the simulator's limit (sim/config); larger counts are forged
+MAX_OBSTACLES = 10000    # far beyond any config; bounds the decode of a forged message
+MAX_RADIO_PAYLOAD = 1 << 16
+_RADIO_CHANNEL = re.compile(r"DREAM_RADIO_([0-9]{1,6})$")
+_FINISHED, _ABORTED = 2, 3
+
+
+def _types():
+    """lcm-gen's Python types (package dream), found through dream.__path__ (see embedded.py)."""
+    from .obstacles_t import obstacles_t
+    from .radio_message_t import radio_message_t
+    from .robot_fault_t import robot_fault_t
+    from .robot_poses_t import robot_poses_t
+    from .run_status_t import run_status_t
+    from .velocity_command_t import velocity_command_t
+    return obstacles_t, radio_message_t, robot_fault_t, robot_poses_t, run_status_t, velocity_command_t
+
+
+def _count_field(data, offset, size_per_item, fixed_size, limit, what):
+    """The int32 count at `offset` after the 8-byte fingerprint, checked against the bytes.
+
+    lcm-gen's decoders trust the count; bounding it by the datagram's length first keeps a
+    forged count from costing more than the datagram justifies.
+    """
+    if len(data) < offset + 4:
+        raise ValueError(f"{len(data)} bytes: too short for a {what}")
+    (count,) = struct.unpack_from(">i", data, offset)
+    if count < 0 or count > limit:
+        raise ValueError(f"{what} count {count} out of range 0..{limit}")
+    if size_per_item is not None and len(data) != fixed_size + size_per_item * count:
+        raise ValueError(f"{len(data)} bytes do not hold a {what} of {count} items")
+    return count
+
+
+class _RobotSlot:
+    def __init__(self, agent):
+        self.agent = agent
+        self.command_channel = f"DREAM_CMD_{agent.id}"
+        self.radio_channel = f"DREAM_RADIO_{agent.id}"
+        self.answered_step = -1
+        self.last_command = None
+        self.last_radio = None
+        self.fault = None
+
+
+class AgentHost:
+    """Hosts `agents` (dream.robot_agent.RobotAgent) on `bus` (dream.lcm.Lcm)."""
+
+    def __init__(self, bus, agents, agent_id):
+        (self._obstacles_t, self._radio_message_t, self._robot_fault_t, self._robot_poses_t,
+         self._run_status_t, self._velocity_command_t) = _types()
+        ids = [agent.id for agent in agents]
+        if len(set(ids)) != len(ids):
+            raise ValueError(f"a robot is listed twice for one agent host: {ids}")
+        self.bus = bus
+        self.agent_id = int(agent_id)
+        self.robots = [_RobotSlot(agent) for agent in agents]
+        self.obstacles = []
+        self.world_finished = False
+        self.end_detail = ""
+        self.last_step_answered = -1
+        self.poses_seen = 0
+        self.bad_messages = {}
+        self._handlers = {"DREAM_POSES": self._on_poses, "DREAM_OBSTACLES": self._on_obstacles,
+                          "DREAM_STATUS": self._on_status}
+        bus.subscribe(SUBSCRIPTION_REGEX, self._on_message)
+
+    # --- dispatch -------------------------------------------------------------------------
+
+    def _on_message(self, channel, data):
+        """Never raises: LCM's C code is below this frame."""
+        try:
+            handler = self._handlers.get(channel)
+            if handler is not None:
+                handler(channel, data)
+            elif channel.startswith("DREAM_RADIO_"):
+                self._on_radio(channel, data)
+        except Exception as error:  # a forged message must not stop the agents
+            self._report_bad(channel, f"{type(error).__name__}: {error}")
+
+    def _report_bad(self, channel, reason):
+        count = self.bad_messages.get(channel, 0) + 1
+        self.bad_messages[channel] = count
+        if count == 1 or count % 100 == 0:
+            log.warning("%s: dropped bad message #%d: %s", channel, count, reason)
+
+    def _on_obstacles(self, channel, data):
+        _count_field(data, 8 + 16, 52, 8 + 20, MAX_OBSTACLES, "obstacles_t")
+        message = self._obstacles_t.decode(data)
+        views = []
+        for o in message.obstacles:
+            values = (o.center_x, o.center_y, o.width, o.height, o.vx, o.vy)
+            if not np.all(np.isfinite(values)):
+                self._report_bad(channel, f"non-finite obstacle {o.id}")
+                continue
+            views.append(ObstacleView(o.id, np.array(values[0:2]), np.array(values[2:4]), np.array(values[4:6])))
+        self.obstacles = views
+
+    def _on_radio(self, channel, data):
+        match = _RADIO_CHANNEL.match(channel)
+        _count_field(data, 8 + 28, 1, 8 + 32, MAX_RADIO_PAYLOAD, "radio_message_t")
+        message = self._radio_message_t.decode(data)
+        if match is None or int(match.group(1)) != message.sender_id:
+            raise ValueError("radio message does not match its channel")
+        heard = RadioMessage(message.sender_id, message.step, bytes(message.payload))
+        for robot in self.robots:
+            robot.agent.receive(heard)
+
+    def _on_status(self, channel, data):
+        message = self._run_status_t.decode(data)
+        if message.state in (_FINISHED, _ABORTED):
+            self.world_finished = True
+            self.end_detail = message.detail
+
+    def _on_poses(self, channel, data):
+        self.poses_seen += 1
+        n = _count_field(data, 8 + 16, 40, 8 + 20, MAX_ROBOTS, "robot_poses_t")
+        poses = self._robot_poses_t.decode(data)
+        if poses.step < 0:
+            raise ValueError(f"step {poses.step} is negative")
+        pose_array = np.column_stack((poses.x, poses.y, poses.theta)) if n else np.zeros((0, 3))
+        velocities = np.column_stack((poses.v, poses.w)) if n else np.zeros((0, 2))
+        if not (np.all(np.isfinite(pose_array)) and np.all(np.isfinite(velocities))):
+            raise ValueError("non-finite pose or velocity")
+        snapshot = WorldSnapshot(poses.step, pose_array, velocities, self.obstacles)
+        for robot in self.robots:
+            if robot.fault is not None:
+                continue
+            if robot.agent.id >= n:
+                self._report_bad(channel, f"robot {robot.agent.id} is not in this run: "
+                                          f"DREAM_POSES carries {n} robots")
+                continue
+            # The world only moves forward: a step just behind ours is a late duplicate.
+            if poses.step == robot.answered_step - 1:
+                continue
+            if poses.step != robot.answered_step and not self._answer(robot, poses, snapshot):
+                continue
+            if robot.last_radio is not None:
+                self.bus.publish(robot.radio_channel, robot.last_radio)
+            self.bus.publish(robot.command_channel, robot.last_command)
+
+    def _answer(self, robot, poses, snapshot):
+        """Runs the robot for this step; False when its controller failed."""
+        try:
+            output = robot.agent.step(snapshot)
+        except ControllerFault as fault:
+            self._fail(robot, poses, str(fault))
+            return False
+        command = self._velocity_command_t()
+        command.utime, command.step = poses.utime, poses.step
+        command.robot_id, command.agent_id = robot.agent.id, self.agent_id
+        command.v, command.w, command.done = float(output.v), float(output.w), bool(output.done)
+        robot.last_command = command.encode()
+        robot.last_radio = None
+        if output.broadcast is not None:
+            radio = self._radio_message_t()
+            radio.utime, radio.step = poses.utime, poses.step
+            radio.sender_id, radio.agent_id = robot.agent.id, self.agent_id
+            radio.payload = bytes(output.broadcast)
+            radio.payload_size = len(radio.payload)
+            robot.last_radio = radio.encode()
+        robot.answered_step = poses.step
+        self.last_step_answered = max(self.last_step_answered, poses.step)
+        return True
+
+    def _fail(self, robot, poses, detail):
+        robot.fault = detail
+        log.error("robot %d stops at step %d: its controller failed: %s", robot.agent.id, poses.step, detail)
+        fault = self._robot_fault_t()
+        fault.utime, fault.step = poses.utime, poses.step
+        fault.robot_id, fault.agent_id = robot.agent.id, self.agent_id
+        fault.detail = detail
+        self.bus.publish(f"DREAM_FAULT_{robot.agent.id}", fault.encode())
+
+    # --- for processes that own their loop -----------------------------------------------
+
+    def run(self, idle_timeout_s, should_stop=lambda: False):
+        """Handles messages until the world ends the run (True), or stop / silence (False)."""
+        last_activity = time.monotonic()
+        seen = self.poses_seen
+        while not self.world_finished and not should_stop():
+            self.bus.handle_timeout(100)
+            if self.poses_seen != seen:
+                seen = self.poses_seen
+                last_activity = time.monotonic()
+            elif time.monotonic() - last_activity > idle_timeout_s:
+                log.error("no DREAM_POSES for %g s on %s: is the simulator (dream sim) running on the "
+                          "same LCM URL?", idle_timeout_s, self.bus.url)
+                return False
+        return self.world_finished
+
+    def faults(self):
+        """{robot id: error text} of the robots whose controller failed."""
+        return {robot.agent.id: robot.fault for robot in self.robots if robot.fault is not None}

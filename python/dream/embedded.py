@@ -1,0 +1,64 @@
+"""Entry points for the C++ tools that embed Python (agents/python_host/PythonAgentHost).
+
+`dream run` hosts Python agents on its own in-process bus and `dream agent` (so also
+`dream launch`) on udpm, through these three calls; the work is done by AgentHost and
+ControllerSpec, the same code a Robotarium submission runs.
+"""
+
+import importlib
+import logging
+import os
+import sys
+
+from .agent_host import AgentHost
+from .controller_spec import ControllerSpec, check as check_spec
+from .lcm import Lcm
+
+_log = logging.getLogger("dream")
+
+
+def setup(lcmtypes_dir, log_level):
+    """Makes lcm-gen's Python types (package dream) importable as dream.<type>, and logs
+    like the tool: '[time] [level] message' on stderr at the tool's level."""
+    package = sys.modules[__package__]
+    types_package = os.path.join(lcmtypes_dir, "dream")
+    if not os.path.isfile(os.path.join(types_package, "robot_poses_t.py")):
+        raise RuntimeError(f"lcm-gen's Python types are not in {types_package} (build the project first)")
+    if types_package not in package.__path__:
+        package.__path__.append(types_package)
+    # As lcm-gen's own __init__.py does: dream.<type> is the class, which its generated
+    # decoders rely on (dream.rectangle_obstacle_t._decode_one inside obstacles_t).
+    for file_name in sorted(os.listdir(types_package)):
+        name, extension = os.path.splitext(file_name)
+        if extension == ".py" and name.endswith("_t"):
+            module = importlib.import_module(f"{__package__}.{name}")
+            setattr(package, name, getattr(module, name))
+    if not _log.handlers:
+        handler = logging.StreamHandler(sys.stderr)
+        handler.setFormatter(logging.Formatter("[%(asctime)s.%(msecs)03d] [%(levelname)s] %(message)s",
+                                               "%Y-%m-%d %H:%M:%S"))
+        _log.addHandler(handler)
+        _log.propagate = False
+    _log.setLevel(log_level)
+
+
+def check(spec_json):
+    """Raises ConfigError when the controller's module, class or own keys are wrong."""
+    check_spec(spec_json)
+
+
+class _EmbeddedHost(AgentHost):
+    """An AgentHost on a bus the C++ side opened and keeps."""
+
+    def close(self):
+        self.bus.close()
+
+    def fault_lines(self):
+        return [f"robot {robot_id}: {detail}" for robot_id, detail in sorted(self.faults().items())]
+
+
+def attach(lcm_address, url, spec_json, robot_ids, agent_id):
+    """The agents of `robot_ids`, subscribed on the lcm_t at `lcm_address`."""
+    spec = ControllerSpec.from_json(spec_json)
+    agents = [spec.make_agent(robot_id) for robot_id in robot_ids]
+    return _EmbeddedHost(Lcm.wrap(lcm_address, url), agents, agent_id)
