@@ -4,9 +4,12 @@
 #include <spdlog/spdlog.h>
 
 #include <nlohmann/json.hpp>
+#include <filesystem>
 #include <iostream>
 
 #include "dream/agents/controller_factory.h"
+#include "dream/agents/python_controller_builder.h"
+#include "dream/agents/python_controller_spec.h"
 #include "dream/bridge/metrics_json.h"
 #include "dream/sim/atomic_file.h"
 #include "dream/sim/file_text.h"
@@ -42,11 +45,26 @@ std::string PrepareOutputDir(const RunArgs& args, const config::RunConfig& confi
   return sim::OutputFolder("runs/" + config.name, sim::OutputFolder::Parents::kCreate).dir();
 }
 
+void CopyPythonControllerModule(const config::RunConfig& config, const std::string& out_dir) {
+  if (!agents::IsPythonController(config)) return;
+  const agents::PythonControllerBuilder controller(config.controller, config.num_robots);
+  const std::filesystem::path written(controller.module_as_written());
+  // An absolute path, or one leaving the config's folder, stays valid as written.
+  if (written.is_absolute()) return;
+  for (const auto& part : written.lexically_normal()) {
+    if (part == "..") return;
+  }
+  const std::filesystem::path copy = std::filesystem::path(out_dir) / written.lexically_normal();
+  std::filesystem::create_directories(copy.parent_path());
+  sim::WriteFileAtomically(copy.string(), sim::ReadFileText(controller.module_path()));
+}
+
 int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std::string& out_dir) {
   // A copy of the config beside the log, so the run folder alone is enough for
   // `dream export` and `dream compare`.
   sim::WriteFileAtomically(out_dir + "/config.yaml",
                            config::RunFolderConfigText(config, sim::ReadFileText(config.source)));
+  CopyPythonControllerModule(config, out_dir);
   sim::UnicycleWorld world(config.world, config.initial_poses, config.obstacles);
   const std::string log_path = out_dir + "/run.lcmlog";
   sim::RunOutcome outcome;

@@ -18,6 +18,12 @@ config::RunConfig LoadConfig(const RunArgs& args);
 /// must exist). @throws std::runtime_error naming the folder otherwise.
 std::string PrepareOutputDir(const RunArgs& args, const config::RunConfig& config);
 
+/// A python kind's module file, copied into the run folder at the path the
+/// config names it by (relative to config.yaml there), so the folder alone can
+/// be rerun and exported with the code that ran. Absolute paths and paths
+/// leaving the config's folder are left as they are.
+void CopyPythonControllerModule(const config::RunConfig& config, const std::string& out_dir);
+
 /// Runs the simulator on `lcm` until the run ends, writing <out_dir>/config.yaml
 /// (a copy of the config file), <out_dir>/run.lcmlog and <out_dir>/summary.json
 /// (all atomically), and prints the Robotarium verdict. Returns the process

@@ -24,7 +24,8 @@ from .sensors import MovementSensor, ObstacleSensor, OdometrySensor
 
 SPEC_FORMAT = 1
 SECTION_KEYS = ("kind", "module", "class", "robot", "sensors", "radio")  # the section's keys that are not params
-SPEC_KEYS = ("format", "name", "config_file", "robots", "seed", "module", "class", "section_line", "params", "parts")
+SPEC_KEYS = ("format", "name", "config_file", "robots", "seed", "module", "class", "section_line", "module_line",
+             "class_line", "params", "parts")
 # Per sensor kind its fields; movement's are everyone's.
 SENSOR_KEYS = {"odometry": ("kind", "period_steps", "noise_std"),
                "movement": ("kind", "period_steps", "range_m", "direction_rad", "field_of_view_rad", "noise_std"),
@@ -379,6 +380,7 @@ class ControllerSpec:
         module_path = top.get("module", _text)
         class_name = top.get("class", _text)
         section_line = top.get("section_line", _at_least(0))
+        lines = {"module": top.get("module_line", _at_least(0)), "class": top.get("class_line", _at_least(0))}
         params = top.get("params", _params)
         parts = top.child("parts", ("robot", "sensors", "radio"))
         robot = parts.child("robot", ("period_steps", "start_delay_steps", "vel_gain", "ang_gain"))
@@ -396,7 +398,8 @@ class ControllerSpec:
         try:
             robot_class = load_controller_class(module_path, class_name)
         except _Problem as problem:
-            raise ConfigError(f"{config_file}:{section_line}: controller.{problem.where}: {problem}") from None
+            line = lines.get(problem.where, section_line)
+            raise ConfigError(f"{config_file}:{line}: controller.{problem.where}: {problem}") from None
         config = check_params(robot_class, params, num_robots, config_file, section_line)
         return cls(name, config_file, num_robots, seed, os.path.abspath(module_path), robot_class, section_line,
                    config, robot_parts, sensors, radio)

@@ -289,7 +289,7 @@ class SpecFixture(unittest.TestCase):
             "kind": "none", "period_steps": [1] * robots, "range_m": 1.0, "graph": [], "leaders": [],
             "loss_probability": 0.0, "delay_steps": 0}
         return {"format": 1, "name": "test", "config_file": "run.yaml", "robots": robots, "seed": seed,
-                "module": module, "class": class_name, "section_line": 20,
+                "module": module, "class": class_name, "section_line": 20, "module_line": 21, "class_line": 22,
                 "params": {name: {"value": value, "line": line} for name, (value, line) in params.items()},
                 "parts": {"robot": {"period_steps": [1] * robots, "start_delay_steps": [0] * robots,
                                     "vel_gain": 0.8, "ang_gain": 3.0},
@@ -356,10 +356,10 @@ class SpecErrorTest(SpecFixture):
 
     def test_module_and_class_errors(self):
         self.assert_config_error(self.spec(os.path.join(self.folder.name, "absent.py"), "X", {}),
-                                 f"run.yaml:20: controller.module: no controller module at "
+                                 f"run.yaml:21: controller.module: no controller module at "
                                  f"{os.path.join(self.folder.name, 'absent.py')}")
         self.assert_config_error(self.spec(GO_TO_GOAL, "GoToGaol", {}),
-                                 f"run.yaml:20: controller.class: 'GoToGaol' is not in {GO_TO_GOAL}; Robot "
+                                 f"run.yaml:22: controller.class: 'GoToGaol' is not in {GO_TO_GOAL}; Robot "
                                  f"subclasses there: GoToGoal")
         broken = self.module("broken.py", "import math\nmath.sqrt(-1)\n")
         with self.assertRaisesRegex(ConfigError, r"controller.module: cannot load .*broken.py: .*broken.py:2: "

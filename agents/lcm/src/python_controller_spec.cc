@@ -123,6 +123,8 @@ std::string PythonControllerSpecJson(const config::RunConfig& config) {
                      {"module", builder.module_path()},
                      {"class", builder.class_name()},
                      {"section_line", section.line()},
+                     {"module_line", section.Required("module").line()},
+                     {"class_line", section.Required("class").line()},
                      {"params", params},
                      {"parts", PartsJson(factory.parts())}};
   return spec.dump();

@@ -1,0 +1,147 @@
+#!/usr/bin/python3
+"""python_agents: Python controllers (kind python) run as agents by `dream run`, one process, memq.
+
+1. The same law in Python and in C++ gives the same run: config/go_to_goal_python.yaml (the
+   Python GoToGoal) and config/go_to_goal.yaml (the C++ go_to_goal) give identical DREAM_POSES,
+   message by message, the same step count, violations and robots done.
+2. A Python run repeats exactly: two runs of the same config give byte-equal DREAM_POSES.
+3. The run folder keeps the controller's module beside config.yaml, at the path the config names.
+4. A controller that raises: that robot is marked lost at the step it failed and stops; the
+   other robots go on to the end; summary.json's robot_faults names the robot, the step and the
+   module's file:line; the printed report says so; exit 4.
+5. Config mistakes stop the run before anything starts (exit 1, no run folder), each naming
+   file:line and key: an unknown own key, a bad value of a declared key, a missing module, a
+   class that is not in the module, a class that is not a dream.Robot.
+
+Usage: python_agents.py --dream BIN --source DIR --types-dir DIR
+"""
+
+import os
+
+from dreamtest import Context, arguments, check, import_types, main, read_events, read_summary
+
+FAULTY_CONTROLLER = '''\
+from dream import Robot, key
+
+
+class Faulty(Robot):
+    """Drives straight; robot 2 divides by zero from fail_step on."""
+    KEYS = {"fail_step": key(30, kind="int", at_least=0)}
+
+    def update(self, step):
+        if self.id == 2 and step >= self.config["fail_step"]:
+            return (1.0 / 0.0, 0.0)
+        return (0.05, 0.0)
+'''
+
+FAULTY_CONFIG = '''\
+name: faulty
+robots: 4
+steps: 120
+stop_when_done: false
+initial_poses:
+  - [-0.9, -0.5, 0.0]
+  - [-0.9, 0.0, 0.0]
+  - [-0.9, 0.5, 0.0]
+  - [-0.3, -0.7, 0.0]
+controller:
+  kind: python
+  module: faulty.py
+  class: Faulty
+  fail_step: 30
+'''
+
+
+def poses_by_step(log_path, dream):
+    """step -> (x, y, theta tuples) of every DREAM_POSES event."""
+    poses = {}
+    for event in read_events(log_path):
+        if event.channel == "DREAM_POSES":
+            message = dream.robot_poses_t.decode(event.data)
+            poses[message.step] = (tuple(message.x), tuple(message.y), tuple(message.theta))
+    return poses
+
+
+def write(path, text):
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
+def test(context, args):
+    dream = import_types(args.types_dir)
+    source = args.source
+
+    # 1. Python GoToGoal == C++ go_to_goal.
+    python_out, cpp_out = context.path("python"), context.path("cpp")
+    context.run([args.dream, "run", os.path.join(source, "config/go_to_goal_python.yaml"), "--out", python_out, "-q"],
+                timeout=60, expect=0)
+    context.run([args.dream, "run", os.path.join(source, "config/go_to_goal.yaml"), "--out", cpp_out, "-q"],
+                timeout=60, expect=0)
+    python_summary, cpp_summary = read_summary(python_out), read_summary(cpp_out)
+    for key in ("end", "steps", "violations", "robots_done", "robots_ever_lost"):
+        check(python_summary[key] == cpp_summary[key],
+              f"{key}: Python GoToGoal {python_summary[key]} but C++ go_to_goal {cpp_summary[key]}")
+    python_poses = poses_by_step(os.path.join(python_out, "run.lcmlog"), dream)
+    cpp_poses = poses_by_step(os.path.join(cpp_out, "run.lcmlog"), dream)
+    check(len(python_poses) == python_summary["steps"] + 1,
+          f"{len(python_poses)} DREAM_POSES for {python_summary['steps']} steps")
+    for step, poses in cpp_poses.items():
+        check(python_poses.get(step) == poses, f"step {step}: Python and C++ poses differ")
+    check(python_summary["robot_faults"] == {}, f"unexpected robot_faults {python_summary['robot_faults']}")
+
+    # 2. Deterministic.
+    again = context.path("again")
+    context.run([args.dream, "run", os.path.join(source, "config/go_to_goal_python.yaml"), "--out", again, "-q"],
+                timeout=60, expect=0)
+    check(poses_by_step(os.path.join(again, "run.lcmlog"), dream) == python_poses,
+          "two runs of the same Python config differ")
+
+    # 3. The module travels with the run folder.
+    with open(os.path.join(source, "config/python/go_to_goal.py")) as f, \
+            open(os.path.join(python_out, "python/go_to_goal.py")) as g:
+        check(f.read() == g.read(), "the run folder's python/go_to_goal.py is not the module that ran")
+
+    # 4. A controller that raises.
+    write(context.path("faulty.py"), FAULTY_CONTROLLER)
+    config = write(context.path("faulty.yaml"), FAULTY_CONFIG)
+    faulty_out = context.path("faulty_out")
+    code, output = context.run([args.dream, "run", config, "--out", faulty_out], timeout=60)
+    check(code == 4, f"a run with a failed controller exited {code}, expected 4: {output[-400:]}")
+    summary = read_summary(faulty_out)
+    check(summary["end"] == "finished" and summary["steps"] == 120,
+          f"the run did not go on to its end: {summary['end']} after {summary['steps']} steps")
+    faults = summary["robot_faults"]
+    check(list(faults) == ["2"], f"robot_faults should name robot 2 only: {faults}")
+    check(faults["2"].startswith("step 30: ") and "faulty.py:10: in update: ZeroDivisionError" in faults["2"],
+          f"the fault does not say step, file:line and error: {faults['2']}")
+    check(summary["robots_ever_lost"] == [2], f"robots_ever_lost {summary['robots_ever_lost']}, expected [2]")
+    check("robot 2 was lost, its controller failed at step 30" in output, f"the report does not say it: {output[-400:]}")
+    poses = poses_by_step(os.path.join(faulty_out, "run.lcmlog"), dream)
+    x_of = lambda step, robot: poses[step][0][robot]
+    check(x_of(120, 2) == x_of(31, 2), f"robot 2 moved after it was lost: x {x_of(31, 2)} -> {x_of(120, 2)}")
+    check(x_of(120, 0) > x_of(31, 0) + 0.1, "robot 0 stopped when robot 2 failed")
+    fault_events = [event for event in read_events(os.path.join(faulty_out, "run.lcmlog"))
+                    if event.channel == "DREAM_FAULT_2"]
+    check(len(fault_events) == 1, f"{len(fault_events)} DREAM_FAULT_2 events in the log, expected 1")
+    check(dream.robot_fault_t.decode(fault_events[0].data).step == 30, "DREAM_FAULT_2 does not carry step 30")
+
+    # 5. Config mistakes, each with file:line and key.
+    cases = [
+        ("fail_step: 30", "fail_step: 30\n  gain: 2", ":15: controller.gain: unknown key"),
+        ("fail_step: 30", "fail_step: -3", ":14: controller.fail_step: must be >= 0, got -3"),
+        ("module: faulty.py", "module: missing.py", ":12: controller.module: cannot read"),
+        ("class: Faulty", "class: Nope", ":13: controller.class:"),
+        ("class: Faulty", "class: key", ":13: controller.class:"),
+    ]
+    for index, (old, new, expected) in enumerate(cases):
+        bad = write(context.path(f"bad{index}.yaml"), FAULTY_CONFIG.replace(old, new))
+        bad_out = context.path(f"bad_out{index}")
+        code, output = context.run([args.dream, "run", bad, "--out", bad_out], timeout=30)
+        check(code == 1, f"case {new!r}: exit {code}, expected 1: {output[-300:]}")
+        check(bad + expected in output, f"case {new!r}: expected '{bad}{expected}' in: {output[-300:]}")
+        check(not os.path.exists(os.path.join(bad_out, "run.lcmlog")), f"case {new!r}: a run was started")
+
+
+if __name__ == "__main__":
+    main(lambda context: test(context, arguments(types_dir=True)))
