@@ -45,6 +45,20 @@ std::string ReadBaseConfig(const std::string& path) {
   return text.str();
 }
 
+/// A python controller's module named by its absolute path (resolved from the
+/// base config's folder, as `dream run` resolves it): each run's config lives
+/// in its own folder, where a relative path would not lead to the module.
+void MakePythonModulePathAbsolute(YAML::Node& root, const std::string& base_config_path) {
+  YAML::Node controller = root["controller"];
+  if (!controller.IsMap() || !controller["kind"].IsScalar() || controller["kind"].Scalar() != "python" ||
+      !controller["module"].IsScalar()) {
+    return;
+  }
+  const fs::path module(controller["module"].Scalar());
+  if (module.is_absolute()) return;
+  controller["module"] = (fs::absolute(base_config_path).parent_path() / module).lexically_normal().string();
+}
+
 /// What `dream run` checks before it starts (LoadConfig): the run config and
 /// the controller section. @throws config::ConfigError.
 void CheckRunConfig(const config::ConfigNode& root) {
@@ -131,6 +145,7 @@ int RunSweep(const SweepArgs& args) {
   std::vector<std::string> config_texts;
   for (const SweepPlan::Run& run : runs) {
     YAML::Node root = SweepPlan::MakeRunConfig(base_text, args.config_path, run);
+    MakePythonModulePathAbsolute(root, args.config_path);
     // In the file, not on dream run's command line: the run folder's config alone repeats the run.
     if (args.steps > 0) ApplyConfigOverride(root, "steps", std::to_string(args.steps), args.config_path);
     const std::string where = "run " + run.name + " (" + run.Label() + "): ";

@@ -5,7 +5,8 @@
    Python GoToGoal) and config/go_to_goal.yaml (the C++ go_to_goal) give identical DREAM_POSES,
    message by message, the same step count, violations and robots done.
 2. A Python run repeats exactly: two runs of the same config give byte-equal DREAM_POSES.
-3. The run folder keeps the controller's module beside config.yaml, at the path the config names.
+3. The run folder keeps the controller's module beside config.yaml, at the path the config names;
+   a sweep's runs, whose configs live in their own folders, find the module too.
 4. A controller that raises: that robot is marked lost at the step it failed and stops; the
    other robots go on to the end; summary.json's robot_faults names the robot, the step and the
    module's file:line; the printed report says so; exit 4.
@@ -101,6 +102,13 @@ def test(context, args):
     with open(os.path.join(source, "config/python/go_to_goal.py")) as f, \
             open(os.path.join(python_out, "python/go_to_goal.py")) as g:
         check(f.read() == g.read(), "the run folder's python/go_to_goal.py is not the module that ran")
+
+    # 3b. A sweep's runs find the module from their own folders.
+    sweep_out = context.path("sweep")
+    context.run([args.dream, "sweep", os.path.join(source, "config/go_to_goal_python.yaml"), "--seeds", "1",
+                 "--out", sweep_out, "-q"], timeout=120, expect=0)
+    check(read_summary(os.path.join(sweep_out, "runs", "seed1"))["steps"] == python_summary["steps"],
+          "the sweep's run of go_to_goal_python differs from dream run's")
 
     # 4. A controller that raises.
     write(context.path("faulty.py"), FAULTY_CONTROLLER)
