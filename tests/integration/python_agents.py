@@ -6,7 +6,8 @@
    message by message, the same step count, violations and robots done.
 2. A Python run repeats exactly: two runs of the same config give byte-equal DREAM_POSES.
 3. The run folder keeps the controller's module beside config.yaml, at the path the config names;
-   a sweep's runs, whose configs live in their own folders, find the module too.
+   a sweep's runs, whose configs live in their own folders, find the module too; the docs show
+   the example module as it is.
 4. A controller that raises: that robot is marked lost at the step it failed and stops; the
    other robots go on to the end; summary.json's robot_faults names the robot, the step and the
    module's file:line; the printed report says so; exit 4.
@@ -102,6 +103,12 @@ def test(context, args):
     with open(os.path.join(source, "config/python/go_to_goal.py")) as f, \
             open(os.path.join(python_out, "python/go_to_goal.py")) as g:
         check(f.read() == g.read(), "the run folder's python/go_to_goal.py is not the module that ran")
+
+    # 3a. docs/python-controllers.md shows the example as it is.
+    with open(os.path.join(source, "config/python/go_to_goal.py")) as f, \
+            open(os.path.join(source, "docs/python-controllers.md")) as g:
+        check("```python\n" + f.read() + "```" in g.read(),
+              "docs/python-controllers.md does not show config/python/go_to_goal.py as it is")
 
     # 3b. A sweep's runs find the module from their own folders.
     sweep_out = context.path("sweep")
