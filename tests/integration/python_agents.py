@@ -4,6 +4,8 @@
 1. The same law in Python and in C++ gives the same run: config/go_to_goal_python.yaml (the
    Python GoToGoal) and config/go_to_goal.yaml (the C++ go_to_goal) give identical DREAM_POSES,
    message by message, the same step count, violations and robots done.
+   The same for the thesis's HRVO circle swap (config/hrvo_circle_python.yaml and
+   config/hrvo_circle.yaml): every robot done, no collision, the same poses at every step.
 2. A Python run repeats exactly: two runs of the same config give byte-equal DREAM_POSES.
 3. The run folder keeps the controller's module beside config.yaml, at the path the config names;
    a sweep's runs, whose configs live in their own folders, find the module too; the docs show
@@ -91,6 +93,21 @@ def test(context, args):
     for step, poses in cpp_poses.items():
         check(python_poses.get(step) == poses, f"step {step}: Python and C++ poses differ")
     check(python_summary["robot_faults"] == {}, f"unexpected robot_faults {python_summary['robot_faults']}")
+
+    # 1b. The thesis's HRVO circle swap in Python (config/python/hrvo_circle.py) and in C++:
+    # radio, sensors, timers, HRVO, the same poses at every step.
+    circle_python, circle_cpp = context.path("circle_python"), context.path("circle_cpp")
+    context.run([args.dream, "run", os.path.join(source, "config/hrvo_circle_python.yaml"), "--out", circle_python,
+                 "-q"], timeout=120, expect=0)
+    context.run([args.dream, "run", os.path.join(source, "config/hrvo_circle.yaml"), "--out", circle_cpp, "-q"],
+                timeout=120, expect=0)
+    circle_summary = read_summary(circle_python)
+    check(circle_summary["robots_done"] == list(range(10)) and circle_summary["violations"]["collision_errors"] == 0,
+          f"the Python circle swap did not finish cleanly: {circle_summary['robots_done']}, "
+          f"{circle_summary['violations']}")
+    check(poses_by_step(os.path.join(circle_python, "run.lcmlog"), dream) ==
+          poses_by_step(os.path.join(circle_cpp, "run.lcmlog"), dream),
+          "the Python and C++ HRVO circle swaps differ")
 
     # 2. Deterministic.
     again = context.path("again")

@@ -9,6 +9,7 @@
 
 #include "dream/lcm/lcm_bus.h"
 #include "dream/sim/progress_reporter.h"
+#include "dream/robot_fault_t.hpp"
 #include "dream/run_status_t.hpp"
 #include "dream/velocity_command_t.hpp"
 #include "scripted_agent.h"
@@ -151,6 +152,61 @@ TEST_F(SimNodeTest, SilentAgentIsMarkedLostItsRobotStopsAndItRejoins) {
   for (const auto& lost : lost_per_step) saw_lost = saw_lost || lost == std::vector<int32_t>{1};
   EXPECT_TRUE(saw_lost);
   EXPECT_TRUE(lost_per_step.back().empty());  // back by the end
+}
+
+robot_fault_t Fault(int robot_id, int64_t agent_id, const std::string& detail) {
+  robot_fault_t fault{};
+  fault.robot_id = robot_id;
+  fault.agent_id = agent_id;
+  fault.detail = detail;
+  return fault;
+}
+
+TEST_F(SimNodeTest, FaultFromTheRobotsAgentLosesThatRobotAtOnceAndTheRunGoesOn) {
+  AddAgent(0, Forward());
+  // Robot 1's agent drives until step 5, then says its controller failed and falls silent.
+  AddAgent(1, [this](const robot_poses_t& poses, velocity_command_t* command) {
+    command->v = 0.1;
+    if (poses.step < 5) return true;
+    if (poses.step == 5) lcm::Publish(bus_, "DREAM_FAULT_1", Fault(1, 101, "my_robot.py:12: in update: KeyError: 'x'"));
+    return false;
+  });
+  AddAgent(2, Forward());
+  SimNodeOptions options = FastOptions(20);
+  options.agent_timeout_s = 30.0;  // a silent robot alone would stall the run this long
+  const RunOutcome outcome = Run(options);
+  EXPECT_EQ(outcome.end, RunOutcome::End::kFinished);
+  EXPECT_EQ(outcome.steps, 20);
+  EXPECT_EQ(outcome.robots_ever_lost, std::set<int>{1});
+  ASSERT_EQ(outcome.robot_faults.size(), 1U);
+  EXPECT_EQ(outcome.robot_faults.at(1), "step 5: my_robot.py:12: in update: KeyError: 'x'");
+  EXPECT_NEAR(world_.poses()[1].x_m, 5 * 0.033 * 0.1, 1e-12);   // stopped at step 5
+  EXPECT_NEAR(world_.poses()[0].x_m, -1.0 + 20 * 0.033 * 0.1, 1e-12);
+}
+
+TEST_F(SimNodeTest, ForgedFaultsAreCountedAndChangeNothing) {
+  AddAgent(0, [this](const robot_poses_t& poses, velocity_command_t* command) {
+    command->v = 0.1;
+    if (poses.step == 3) {
+      lcm::Publish(bus_, "DREAM_FAULT_1", Fault(1, 999, "not robot 1's agent"));
+      lcm::Publish(bus_, "DREAM_FAULT_2", Fault(1, 101, "channel and payload disagree"));
+      lcm::Publish(bus_, "DREAM_FAULT_7", Fault(7, 107, "no robot 7 in this run"));
+      const uint8_t garbage[] = {1, 2, 3};
+      bus_.Publish("DREAM_FAULT_0", garbage, sizeof(garbage));
+    }
+    return true;
+  });
+  AddAgent(1, Forward());
+  AddAgent(2, Forward());
+  const RunOutcome outcome = Run(FastOptions(10));
+  EXPECT_EQ(outcome.end, RunOutcome::End::kFinished);
+  EXPECT_TRUE(outcome.robot_faults.empty());
+  EXPECT_TRUE(outcome.robots_ever_lost.empty());
+  EXPECT_EQ(outcome.bad_messages.at("DREAM_FAULT_1"), 1);
+  EXPECT_EQ(outcome.bad_messages.at("DREAM_FAULT_2"), 1);
+  EXPECT_EQ(outcome.bad_messages.at("DREAM_FAULT_7"), 1);
+  EXPECT_EQ(outcome.bad_messages.at("DREAM_FAULT_0"), 1);
+  EXPECT_NEAR(world_.poses()[1].x_m, 10 * 0.033 * 0.1, 1e-12);
 }
 
 TEST_F(SimNodeTest, MissingAgentAtStartEndsTheRunWithAClearReason) {
