@@ -1,0 +1,160 @@
+#!/usr/bin/python3
+"""Unit tests of the Python agent host (python/dream/agent_host.py) on an in-memory bus: the
+lockstep contract of agents/lcm's AgentHost, and hostile traffic (forged counts, non-finite
+values, radio messages on the wrong channel, garbage) counted and dropped, never raised.
+
+Needs lcm-gen's Python types (DREAM_BUILD_DIR/python); exit 77 (skipped) without them or numpy.
+"""
+
+import os
+import struct
+import sys
+import unittest
+
+try:
+    import numpy  # noqa: F401
+except ImportError:
+    print("numpy is missing: skipped")
+    sys.exit(77)
+
+SOURCE_DIR = os.path.abspath(os.environ.get("DREAM_SOURCE_DIR",
+                                            os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")))
+TYPES_DIR = os.path.join(os.environ.get("DREAM_BUILD_DIR", os.path.join(SOURCE_DIR, "build")), "python")
+if not os.path.isfile(os.path.join(TYPES_DIR, "dream", "robot_poses_t.py")):
+    print(f"lcm-gen's Python types are not in {TYPES_DIR}: skipped")
+    sys.exit(77)
+sys.path.insert(0, os.path.join(SOURCE_DIR, "python"))
+
+import dream  # noqa: E402
+from dream import Robot, RobotAgent, RangeRadio, pack_floats  # noqa: E402
+from dream.embedded import setup  # noqa: E402
+
+setup(TYPES_DIR, 50)  # lcm-gen's types as dream.<type>; log only above ERROR
+from dream.agent_host import AgentHost  # noqa: E402
+
+
+class MemoryBus:
+    """A bus that keeps what is published and hands messages to the one subscriber."""
+
+    url = "memory://"
+
+    def __init__(self):
+        self.handler = None
+        self.published = []
+
+    def subscribe(self, regex, handler):
+        self.handler = handler
+
+    def publish(self, channel, data):
+        self.published.append((channel, bytes(data)))
+
+    def deliver(self, channel, data):
+        self.handler(channel, data)
+
+    def take(self):
+        published, self.published = self.published, []
+        return published
+
+
+class Counter(Robot):
+    """Drives at 0.01 m/s times the number of updates so far; talks every step; robot 1 raises
+    at step 3."""
+
+    def setup(self):
+        self.updates = 0
+
+    def on_radio(self, heard):
+        return pack_floats([self.id])
+
+    def update(self, step):
+        if self.id == 1 and step == 3:
+            raise KeyError("no such goal")
+        self.updates += 1
+        return (0.01 * self.updates, 0.0)
+
+
+def poses(step, n=2, x=None):
+    message = dream.robot_poses_t()
+    message.utime, message.step, message.num_robots = step * 33000, step, n
+    message.x = x if x is not None else [0.1 * i for i in range(n)]
+    message.y, message.theta, message.v, message.w = [0.0] * n, [0.0] * n, [0.0] * n, [0.0] * n
+    return message.encode()
+
+
+class AgentHostTest(unittest.TestCase):
+    def setUp(self):
+        self.bus = MemoryBus()
+        agents = [RobotAgent(Counter(i, dream.RobotParams(), {}, 2), radio=RangeRadio(1.0)) for i in range(2)]
+        self.host = AgentHost(self.bus, agents, agent_id=77)
+        self.agents = agents
+
+    def commands(self, published):
+        return {channel: dream.velocity_command_t.decode(data) for channel, data in published
+                if channel.startswith("DREAM_CMD_")}
+
+    def test_each_step_is_answered_with_radio_then_command(self):
+        self.bus.deliver("DREAM_POSES", poses(1))
+        published = self.bus.take()
+        self.assertEqual([channel for channel, _ in published],
+                         ["DREAM_RADIO_0", "DREAM_CMD_0", "DREAM_RADIO_1", "DREAM_CMD_1"])
+        command = self.commands(published)["DREAM_CMD_0"]
+        self.assertEqual((command.step, command.robot_id, command.agent_id, command.v), (1, 0, 77, 0.01))
+
+    def test_a_resent_step_gets_the_same_bytes_without_running_the_robot_again(self):
+        self.bus.deliver("DREAM_POSES", poses(1))
+        first = self.bus.take()
+        self.bus.deliver("DREAM_POSES", poses(1))
+        self.assertEqual(self.bus.take(), first)
+        self.assertEqual(self.agents[0].robot.updates, 1)
+        self.bus.deliver("DREAM_POSES", poses(2))
+        self.bus.take()
+        self.bus.deliver("DREAM_POSES", poses(1))  # a late duplicate of the step before
+        self.assertEqual(self.bus.take(), [])
+
+    def test_forged_and_broken_messages_are_counted_and_dropped(self):
+        huge = bytearray(poses(1))
+        struct.pack_into(">i", huge, 8 + 16, 1 << 28)  # num_robots 2^28 in a 100-byte datagram
+        self.bus.deliver("DREAM_POSES", bytes(huge))
+        negative = bytearray(poses(1))
+        struct.pack_into(">i", negative, 8 + 16, -5)
+        self.bus.deliver("DREAM_POSES", bytes(negative))
+        self.bus.deliver("DREAM_POSES", poses(1, x=[float("nan"), 0.0]))
+        self.bus.deliver("DREAM_POSES", b"\x00" * 3)
+        self.bus.deliver("DREAM_OBSTACLES", b"garbage")
+        radio = dream.radio_message_t()
+        radio.sender_id, radio.payload, radio.payload_size = 5, b"\x01", 1
+        self.bus.deliver("DREAM_RADIO_4", radio.encode())  # sender 5 on robot 4's channel
+        self.assertEqual(self.bus.take(), [])
+        self.assertEqual(self.host.bad_messages,
+                         {"DREAM_POSES": 4, "DREAM_OBSTACLES": 1, "DREAM_RADIO_4": 1})
+        self.bus.deliver("DREAM_POSES", poses(1))  # the run goes on
+        self.assertEqual(len(self.commands(self.bus.take())), 2)
+
+    def test_a_robot_not_in_the_run_is_not_answered(self):
+        self.bus.deliver("DREAM_POSES", poses(1, n=1))
+        self.assertEqual(list(self.commands(self.bus.take())), ["DREAM_CMD_0"])
+        self.assertEqual(self.host.bad_messages, {"DREAM_POSES": 1})
+
+    def test_a_raising_controller_is_reported_once_and_its_robot_no_longer_answered(self):
+        for step in (1, 2, 3, 4):
+            self.bus.deliver("DREAM_POSES", poses(step))
+        published = self.bus.take()
+        faults = [dream.robot_fault_t.decode(data) for channel, data in published if channel == "DREAM_FAULT_1"]
+        self.assertEqual(len(faults), 1)
+        self.assertEqual((faults[0].step, faults[0].robot_id, faults[0].agent_id), (3, 1, 77))
+        self.assertRegex(faults[0].detail, r"test_agent_host\.py:\d+: in update: KeyError: 'no such goal'")
+        steps_of = lambda channel: [dream.velocity_command_t.decode(d).step for c, d in published if c == channel]
+        self.assertEqual(steps_of("DREAM_CMD_0"), [1, 2, 3, 4])
+        self.assertEqual(steps_of("DREAM_CMD_1"), [1, 2])
+        self.assertEqual(list(self.host.faults()), [1])
+
+    def test_the_world_ending_the_run_is_noticed(self):
+        status = dream.run_status_t()
+        status.state, status.detail = dream.run_status_t.FINISHED, "every robot reported done"
+        self.bus.deliver("DREAM_STATUS", status.encode())
+        self.assertTrue(self.host.world_finished)
+        self.assertEqual(self.host.end_detail, "every robot reported done")
+
+
+if __name__ == "__main__":
+    unittest.main()
