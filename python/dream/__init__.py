@@ -10,4 +10,4 @@ from .sensors import MovementSensor, ObstacleSensor, OdometrySensor, wrap_angle
 from .timer import Timer
 from .robot_agent import AgentOutput, ControllerFault, RobotAgent, controller_error_text
 from .controller_spec import ConfigError, ControllerSpec, check
-from .hrvo import HrvoAvoidance
+from .hrvo import HrvoAvoidance, HrvoParams
