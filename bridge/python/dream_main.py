@@ -13,12 +13,14 @@ What it does:
      robots to the plan's start poses (within its own tolerance).
   2. Settle: a short pose-control phase (bounded; dream_params.npy says how
      long) that brings every robot exactly onto its start pose.
-  3. The experiment, one iteration per recorded step: get_poses(), then either
+  3. The experiment, one iteration per step: get_poses(), then either
      the recorded command (strategy "replay", open loop) or the recorded
      command plus feedback on the error to the recorded pose (strategy
      "track"), optionally passed through the Robotarium's barrier
      certificates, always scaled so no wheel exceeds its speed limit;
-     set_velocities(), step().
+     or (strategy "controller") every robot's Python controller, shipped
+     beside this script with DREAM's runtime (dream*.py), run on the poses
+     just read, its commands sent as given; set_velocities(), step().
   4. Every pose read, every command sent and a wall-clock stamp per iteration go
      to dream_result.npy, rewritten every few hundred steps (a cut-short run
      still returns data), then debug() and one closing line.
@@ -26,7 +28,10 @@ What it does:
 Bring dream_result.npy back with `dream import` (see docs/robotarium.md).
 """
 
+import json
 import os
+import re
+import sys
 import time
 
 import numpy as np
@@ -38,6 +43,8 @@ PARAMS_FILE = "dream_params.npy"
 INITIAL_POSES_FILE = "dream_initial_poses.npy"
 REFERENCE_POSES_FILE = "dream_reference_poses.npy"
 REFERENCE_COMMANDS_FILE = "dream_reference_commands.npy"
+CONTROLLER_SPEC_FILE = "dream_controller_spec.npy"
+OBSTACLES_FILE = "dream_obstacles.npy"
 RESULT_FILE = "dream_result.npy"
 RESULT_PARTIAL_FILE = "dream_result.partial.npy"
 
@@ -60,12 +67,24 @@ P_SAVE_EVERY_STEPS = 14
 P_WHEEL_RADIUS = 15
 P_BASE_LENGTH = 16
 P_MAX_WHEEL_SPEED = 17
-P_COUNT = 18
+P_STOP_WHEN_DONE = 18
+P_MAX_ABS_V = 19
+P_MAX_ABS_W = 20
+P_COUNT = 21
 
 MAGIC = 1146242369.0  # "DREA"
-FORMAT_VERSION = 1.0
+FORMAT_VERSION = 2.0
 STRATEGY_REPLAY = 0.0
 STRATEGY_TRACK = 1.0
+STRATEGY_CONTROLLER = 2.0
+
+# --- layout of dream_obstacles.npy: (steps + 1) x obstacles x O_COUNT ----------
+# id, centre x and y, width and height, velocity x and y
+O_ID = 0
+O_CENTER = 1
+O_SIZE = 3
+O_VELOCITY = 5
+O_COUNT = 7
 
 # --- layout of dream_result.npy: one row per get_poses() ---------------------
 # [phase, step, wall-clock s, x_0..x_N-1, y_0.., theta_0.., v_0.., w_0..]
@@ -121,6 +140,10 @@ if params[P_MAGIC] != MAGIC or params[P_FORMAT_VERSION] != FORMAT_VERSION:
 N = int(params[P_NUM_ROBOTS])
 STEPS = int(params[P_STEPS])
 TRACK = params[P_STRATEGY] == STRATEGY_TRACK
+CONTROLLER = params[P_STRATEGY] == STRATEGY_CONTROLLER
+STOP_WHEN_DONE = params[P_STOP_WHEN_DONE] != 0.0
+MAX_ABS_V = params[P_MAX_ABS_V]
+MAX_ABS_W = params[P_MAX_ABS_W]
 USE_BARRIERS = params[P_BARRIERS] != 0.0
 SETTLE_MAX_STEPS = int(params[P_SETTLE_MAX_STEPS])
 SETTLE_POSITION_TOLERANCE = params[P_SETTLE_POSITION_TOLERANCE]
@@ -135,12 +158,13 @@ WHEEL_RADIUS = params[P_WHEEL_RADIUS]
 BASE_LENGTH = params[P_BASE_LENGTH]
 WHEEL_LIMIT = params[P_MAX_WHEEL_SPEED] * (1.0 - WHEEL_LIMIT_MARGIN)
 if not (1 <= N <= 50 and STEPS >= 1 and SETTLE_MAX_STEPS >= 0 and WHEEL_RADIUS > 0 and BASE_LENGTH > 0 and
-        WHEEL_LIMIT > 0):
+        WHEEL_LIMIT > 0 and (not CONTROLLER or (MAX_ABS_V > 0 and MAX_ABS_W > 0))):
     fail(PARAMS_FILE + " holds values out of range; export the run again")
 
 x0 = load(INITIAL_POSES_FILE, (3, N))
-reference_poses = load(REFERENCE_POSES_FILE, (STEPS + 1, 3, N))
-reference_commands = load(REFERENCE_COMMANDS_FILE, (STEPS, 2, N))
+if not CONTROLLER:
+    reference_poses = load(REFERENCE_POSES_FILE, (STEPS + 1, 3, N))
+    reference_commands = load(REFERENCE_COMMANDS_FILE, (STEPS, 2, N))
 
 
 def limit_wheels(dxu):
@@ -150,6 +174,17 @@ def limit_wheels(dxu):
     fastest = np.maximum(np.abs(left), np.abs(right))
     scale = np.where(fastest > WHEEL_LIMIT, WHEEL_LIMIT / np.maximum(fastest, WHEEL_LIMIT), 1.0)
     return dxu * scale
+
+
+def saturate(dxu):
+    """The velocities a robot drives with for a command: the Robotarium's _threshold (wheel
+    speeds clipped one by one), the same arithmetic as the official simulator and DREAM's."""
+    left = (1 / (2 * WHEEL_RADIUS)) * (2 * dxu[0, :] - BASE_LENGTH * dxu[1, :])
+    right = (1 / (2 * WHEEL_RADIUS)) * (2 * dxu[0, :] + BASE_LENGTH * dxu[1, :])
+    limit = params[P_MAX_WHEEL_SPEED]
+    left = np.where(np.abs(left) > limit, limit * np.sign(left), left)
+    right = np.where(np.abs(right) > limit, limit * np.sign(right), right)
+    return np.vstack([(WHEEL_RADIUS / 2) * (left + right), (WHEEL_RADIUS / BASE_LENGTH) * (right - left)])
 
 
 def settle_commands(x):
@@ -187,6 +222,98 @@ def track_commands(x, k):
     return np.vstack([v, w])
 
 
+MODULE_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*[.]py")
+
+
+class Controllers:
+    """Every robot's RobotAgent from DREAM's runtime (the dream*.py files beside this script),
+    built from dream_controller_spec.npy: the same agents, seeds and parts as in the simulated
+    run. step(k, x) runs them all on the poses x and returns their commands (2 x N)."""
+
+    def __init__(self):
+        spec_array = np.load(data_path(CONTROLLER_SPEC_FILE), allow_pickle=False)
+        if spec_array.dtype != np.uint8 or spec_array.ndim != 1:
+            fail(CONTROLLER_SPEC_FILE + " is not the bytes of a controller spec; export the run again")
+        try:
+            spec = json.loads(spec_array.tobytes().decode("utf-8"))
+            module = spec["module"]
+        except (ValueError, KeyError, TypeError):
+            fail(CONTROLLER_SPEC_FILE + " does not hold a controller spec; export the run again")
+        # The module is a file beside this script, under a plain name the export checked.
+        if not isinstance(module, str) or not MODULE_NAME.fullmatch(module) or module.startswith("dream"):
+            fail(CONTROLLER_SPEC_FILE + " names a controller module that is not a plain module file name")
+        spec["module"] = os.path.abspath(data_path(module))
+        folder = os.path.dirname(spec["module"])
+        if folder not in sys.path:
+            sys.path.insert(0, folder)  # DREAM's runtime (dream.py, dream_*.py) sits beside the module
+        import dream
+        self.dream = dream
+        try:
+            controller_spec = dream.ControllerSpec.from_json(json.dumps(spec))
+        except dream.ConfigError as error:
+            fail("the controller's config: %s" % error)
+        if controller_spec.num_robots != N:
+            fail(CONTROLLER_SPEC_FILE + " is for %d robots, not %d; export the run again" %
+                 (controller_spec.num_robots, N))
+        obstacles = np.load(data_path(OBSTACLES_FILE), allow_pickle=False)
+        if (obstacles.dtype != np.float64 or obstacles.ndim != 3 or obstacles.shape[0] != STEPS + 1 or
+                obstacles.shape[2] != O_COUNT or not np.all(np.isfinite(obstacles))):
+            fail(OBSTACLES_FILE + " is not (steps + 1) x obstacles x %d finite numbers; export the run again" %
+                 O_COUNT)
+        self.obstacles = obstacles
+        self.agents = []
+        self.faults = [None] * N
+        for i in range(N):
+            try:
+                self.agents.append(controller_spec.make_agent(i))
+            except dream.ControllerFault as fault:
+                self.agents.append(None)
+                self.fail_robot(i, 0, fault)
+        self.done = [False] * N
+        self.velocities = np.zeros((N, 2))  # driven during the previous step, after saturation
+
+    def fail_robot(self, i, k, fault):
+        self.faults[i] = str(fault)
+        print("DREAM: robot %d holds still from step %d on: its controller failed: %s" % (i, k, fault))
+
+    def obstacle_views(self, k):
+        return [self.dream.ObstacleView(int(o[O_ID]), o[O_CENTER:O_CENTER + 2], o[O_SIZE:O_SIZE + 2],
+                                        o[O_VELOCITY:O_VELOCITY + 2]) for o in self.obstacles[k]]
+
+    def step(self, k, x):
+        """Every live robot's command for step k; radio broadcasts reach the others for step k + 1."""
+        snapshot = self.dream.WorldSnapshot(k, x[:3, :].T.copy(), self.velocities.copy(), self.obstacle_views(k))
+        dxu = np.zeros((2, N))
+        broadcasts = []
+        for i, agent in enumerate(self.agents):
+            if self.faults[i] is not None:
+                continue
+            try:
+                out = agent.step(snapshot)
+            except self.dream.ControllerFault as fault:
+                self.fail_robot(i, k, fault)
+                continue
+            self.done[i] = out.done
+            # As the simulator: a command that is not finite or beyond its limits holds the robot still.
+            if np.isfinite(out.v) and np.isfinite(out.w) and abs(out.v) <= MAX_ABS_V and abs(out.w) <= MAX_ABS_W:
+                dxu[0, i] = out.v
+                dxu[1, i] = out.w
+            if out.broadcast is not None:
+                broadcasts.append(self.dream.RadioMessage(i, k, out.broadcast))
+        for message in broadcasts:
+            for agent in self.agents:
+                if agent is not None:
+                    agent.receive(message)
+        return dxu
+
+    def drove(self, dxu):
+        self.velocities = saturate(dxu).T
+
+    def all_done(self):
+        return all(self.done)
+
+
+controllers = Controllers() if CONTROLLER else None
 log = np.zeros((SETTLE_MAX_STEPS + STEPS + 1, FIXED_COLUMNS + 5 * N))
 rows = 0
 
@@ -233,21 +360,33 @@ try:
         x = r.get_poses()
 
     for k in range(STEPS):
-        dxu = track_commands(x, k) if TRACK else reference_commands[k].copy()
+        if CONTROLLER:
+            # As the controllers gave them: the Robotarium saturates the wheels as the simulator did.
+            dxu = controllers.step(k, x)
+        else:
+            dxu = track_commands(x, k) if TRACK else reference_commands[k].copy()
         if barrier is not None:
             dxu = barrier(dxu, x)
-        dxu = limit_wheels(dxu)
+        if not CONTROLLER or barrier is not None:
+            dxu = limit_wheels(dxu)
         r.set_velocities(ids, dxu)
         record(PHASE_EXPERIMENT, k, x, dxu)
         r.step()
         completed = k + 1
+        if CONTROLLER:
+            controllers.drove(dxu)
         x = r.get_poses()
         if completed % SAVE_EVERY_STEPS == 0:
             save()
-    record(PHASE_FINAL, STEPS, x, no_command)
+        if CONTROLLER and STOP_WHEN_DONE and controllers.all_done():
+            break
+    record(PHASE_FINAL, completed, x, no_command)
 finally:
     save()
 
 r.debug()
+if CONTROLLER and any(fault is not None for fault in controllers.faults):
+    print("DREAM: held still after their controller failed (see above): robots %s" %
+          ", ".join(str(i) for i, fault in enumerate(controllers.faults) if fault is not None))
 print("DREAM: finished: %d robots, %d experiment steps after %d settle steps; poses saved to %s" %
       (N, completed, settle_steps, RESULT_FILE))

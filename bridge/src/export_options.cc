@@ -17,12 +17,23 @@ std::string Field(const char* name, double value, const char* range) {
 
 }  // namespace
 
-const char* StrategyName(Strategy strategy) { return strategy == Strategy::kTrack ? "track" : "replay"; }
+const char* StrategyName(Strategy strategy) {
+  switch (strategy) {
+    case Strategy::kTrack:
+      return "track";
+    case Strategy::kReplay:
+      return "replay";
+    case Strategy::kController:
+      return "controller";
+  }
+  return "?";
+}
 
 Strategy ParseStrategy(const std::string& text) {
   if (text == "track") return Strategy::kTrack;
   if (text == "replay") return Strategy::kReplay;
-  throw std::invalid_argument("unknown strategy '" + text + "'; allowed: track, replay");
+  if (text == "controller") return Strategy::kController;
+  throw std::invalid_argument("unknown strategy '" + text + "'; allowed: track, replay, controller");
 }
 
 bool ExportOptions::IsValid(std::string* error) const {

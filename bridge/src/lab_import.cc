@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "dream/bridge/controller_module_copy.h"
 #include "dream/bridge/lab_replay_world.h"
 #include "dream/bridge/mat_file.h"
 #include "dream/sim/output_folder.h"
@@ -255,7 +256,10 @@ LabResult ParseLabResult(const NpyArray& rows, const std::string& name, const Ex
   }
   bool final_row = false;
   if (r < row_count && at(r, ResultLayout::kPhaseColumn) == ResultLayout::kPhaseFinal) {
-    if (experiment != params.steps || at(r, ResultLayout::kStepColumn) != static_cast<double>(params.steps)) {
+    // The controller strategy may stop before its step limit, once every robot reports done.
+    const bool early_end_allowed = params.options.strategy == Strategy::kController && params.stop_when_done;
+    if ((experiment != params.steps && !early_end_allowed) ||
+        at(r, ResultLayout::kStepColumn) != static_cast<double>(experiment)) {
       fail("row " + std::to_string(r) + ": a final pose after " + std::to_string(experiment) + " of " +
            std::to_string(params.steps) + " planned steps; the file is damaged");
     }
@@ -330,8 +334,11 @@ ImportedRun ImportLabRun(const std::string& result_path, const std::string& expo
   imported.log_path = out.PathOf("run.lcmlog");
   imported.summary_path = out.PathOf("summary.json");
   imported.picture_path = out.PathOf("trajectories.png");
-  const std::string detail = lab.complete ? "the lab run completed every planned step"
-                                          : "the lab run stopped after " + std::to_string(track.last_step()) + " of " +
+  const bool ended_done = lab.complete && track.last_step() < lab.planned_steps;
+  const std::string detail = ended_done     ? "every robot reported done after " + std::to_string(track.last_step()) +
+                                              " steps on the lab"
+                             : lab.complete ? "the lab run completed every planned step"
+                                            : "the lab run stopped after " + std::to_string(track.last_step()) + " of " +
                                                 std::to_string(lab.planned_steps) + " planned steps";
   int64_t log_events = 0;
   const LabReplayWorld world =
@@ -339,6 +346,7 @@ ImportedRun ImportLabRun(const std::string& result_path, const std::string& expo
                imported.log_path, &log_events);
   imported.violations = world.violations();
   out.WriteFile("config.yaml", exported.config_text);
+  KeepControllerModule(exported.config, out);
 
   sim::RunOutcome outcome;
   outcome.end = lab.complete ? sim::RunOutcome::End::kFinished : sim::RunOutcome::End::kInterrupted;

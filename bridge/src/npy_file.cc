@@ -140,22 +140,18 @@ int64_t NpyArray::size() const {
   return count;
 }
 
-std::string EncodeNpy(const NpyArray& array) {
-  for (int64_t d : array.shape) {
-    if (d < 0) throw std::invalid_argument("EncodeNpy: negative dimension");
-  }
-  if (array.size() != static_cast<int64_t>(array.values.size())) {
-    throw std::invalid_argument("EncodeNpy: shape holds " + std::to_string(array.size()) + " values, got " +
-                                std::to_string(array.values.size()));
-  }
+namespace {
+
+/// Magic, version 1.0 and the header dict for `descr` and `shape`, padded so the data starts at a multiple of 64.
+std::string NpyHeader(const char* descr, const std::vector<int64_t>& dims) {
   std::string shape = "(";
-  for (size_t i = 0; i < array.shape.size(); ++i) {
-    shape += std::to_string(array.shape[i]);
-    if (array.shape.size() == 1 || i + 1 < array.shape.size()) shape += ",";
-    if (i + 1 < array.shape.size()) shape += " ";
+  for (size_t i = 0; i < dims.size(); ++i) {
+    shape += std::to_string(dims[i]);
+    if (dims.size() == 1 || i + 1 < dims.size()) shape += ",";
+    if (i + 1 < dims.size()) shape += " ";
   }
   shape += ")";
-  std::string header = "{'descr': '<f8', 'fortran_order': False, 'shape': " + shape + ", }";
+  std::string header = std::string("{'descr': '") + descr + "', 'fortran_order': False, 'shape': " + shape + ", }";
   // magic + version + 2-byte length + header + '\n', padded with spaces to a multiple of 64.
   const size_t unpadded = kMagicSize + 2 + 2 + header.size() + 1;
   header.append((64 - unpadded % 64) % 64, ' ');
@@ -167,10 +163,29 @@ std::string EncodeNpy(const NpyArray& array) {
   bytes += static_cast<char>(header.size() & 0xff);
   bytes += static_cast<char>((header.size() >> 8) & 0xff);
   bytes += header;
+  return bytes;
+}
+
+}  // namespace
+
+std::string EncodeNpy(const NpyArray& array) {
+  for (int64_t d : array.shape) {
+    if (d < 0) throw std::invalid_argument("EncodeNpy: negative dimension");
+  }
+  if (array.size() != static_cast<int64_t>(array.values.size())) {
+    throw std::invalid_argument("EncodeNpy: shape holds " + std::to_string(array.size()) + " values, got " +
+                                std::to_string(array.values.size()));
+  }
+  std::string bytes = NpyHeader("<f8", array.shape);
   const size_t data_offset = bytes.size();
   bytes.resize(data_offset + array.values.size() * 8);
   if (!array.values.empty()) std::memcpy(&bytes[data_offset], array.values.data(), array.values.size() * 8);
   return bytes;
+}
+
+std::string EncodeNpyBytes(const std::string& bytes) {
+  std::string file = NpyHeader("|u1", {static_cast<int64_t>(bytes.size())});
+  return file + bytes;
 }
 
 NpyArray DecodeNpy(const std::string& bytes, const std::string& name) {

@@ -27,10 +27,10 @@ std::string ExportProblem::Text() const {
 }
 
 std::vector<ExportProblem> PreValidate(const RunTrack& track, const RunEnd& end, const sim::WorldParams& world,
-                                       int64_t settle_max_steps, const LabLimits& limits) {
+                                       int64_t settle_max_steps, const LabLimits& limits, int64_t experiment_steps) {
   std::vector<ExportProblem> problems;
   const int n = track.num_robots;
-  const int64_t steps = track.last_step();
+  const int64_t steps = experiment_steps < 0 ? track.last_step() : experiment_steps;
 
   if (n < 1 || n > limits.max_robots) {
     problems.push_back({"robots", -1, -1, -1,
@@ -51,7 +51,7 @@ std::vector<ExportProblem> PreValidate(const RunTrack& track, const RunEnd& end,
                             "--settle-steps"});
   }
   if (!end.seen || end.state != run_status_t::FINISHED) {
-    problems.push_back({"finished", -1, -1, steps,
+    problems.push_back({"finished", -1, -1, track.last_step(),
                         "the run did not finish (" + (end.seen ? end.detail : std::string("no DREAM_STATUS in the log")) +
                             "); its recording stops early",
                         "run the experiment to its end and export that run"});
@@ -98,7 +98,7 @@ std::vector<ExportProblem> PreValidate(const RunTrack& track, const RunEnd& end,
     std::map<int, int64_t> out_of_bounds;  // robot -> first step
     std::map<std::pair<int, int>, int64_t> collisions;
     std::map<std::pair<int, int>, int64_t> contacts;
-    for (int64_t k = 0; k <= steps; ++k) {
+    for (int64_t k = 0; k <= track.last_step(); ++k) {
       for (int i = 0; i < n; ++i) poses[static_cast<size_t>(i)] = track.pose(k, i);
       checker.Check(k, poses, nullptr, track.obstacles[static_cast<size_t>(k)]);
       const sim::StepEvents& events = checker.last_step_events();

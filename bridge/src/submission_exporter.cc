@@ -8,7 +8,11 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "dream/agents/python_controller_spec.h"
+#include "dream/bridge/controller_module_copy.h"
+#include "dream/bridge/flat_python_runtime.h"
 #include "dream/bridge/npy_file.h"
+#include "dream/bridge/obstacle_schedule.h"
 #include "dream/sim/output_folder.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/bridge/submission_params.h"
@@ -28,6 +32,62 @@ std::string Seconds(double s) {
   char text[32];
   std::snprintf(text, sizeof(text), "%.1f", s);
   return text;
+}
+
+/// The step limit the simulated run had: summary.json's max_steps (which
+/// includes a dream run --steps), else the config's.
+int64_t RunStepLimit(const std::string& run_dir, const config::RunConfig& config) {
+  const std::string summary_path = (std::filesystem::path(run_dir) / "summary.json").string();
+  if (!std::filesystem::exists(summary_path)) return config.sim.max_steps;
+  try {
+    const nlohmann::json summary = nlohmann::json::parse(sim::ReadFileText(summary_path));
+    if (summary.contains("max_steps") && summary["max_steps"].is_number_integer() &&
+        summary["max_steps"].get<int64_t>() >= 1) {
+      return summary["max_steps"].get<int64_t>();
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(summary_path + ": not valid JSON: " + e.what());
+  }
+  throw std::runtime_error(summary_path + ": has no max_steps (a whole number >= 1); is it a dream run's summary?");
+}
+
+/// What the controller strategy ships besides the script and the params.
+struct ControllerFiles {
+  std::string spec_json;                   ///< module: the bare file name
+  std::string module_name;                 ///< e.g. go_to_goal.py
+  std::string module_text;
+  std::vector<FlatPythonRuntime::File> runtime;
+};
+
+ControllerFiles ReadControllerFiles(const config::RunConfig& config, const std::string& config_file,
+                                    const std::string& runtime_dir) {
+  if (runtime_dir.empty()) throw std::invalid_argument("export options: the controller strategy needs python_runtime_dir");
+  ControllerFiles files;
+  nlohmann::ordered_json spec = nlohmann::ordered_json::parse(agents::PythonControllerSpecJson(config));
+  const std::string module_path = spec["module"].get<std::string>();
+  files.module_text = sim::ReadFileText(module_path);
+  const FlatPythonRuntime runtime = FlatPythonRuntime::Read(runtime_dir);
+  files.module_name = FlatPythonRuntime::ControllerFileName(
+      module_path, files.module_text, runtime.ImportedModules({SubmissionScriptTemplate()}), config_file);
+  // In the submission the module sits beside the script, and config errors
+  // name the export's copy of the config.
+  spec["module"] = files.module_name;
+  spec["config_file"] = "config.yaml";
+  files.spec_json = spec.dump();
+  files.runtime = runtime.files();
+  return files;
+}
+
+std::string StrategyText(const ExportOptions& options) {
+  switch (options.strategy) {
+    case Strategy::kTrack:
+      return "track (recorded commands plus feedback on the pose error)";
+    case Strategy::kReplay:
+      return "replay (recorded commands, open loop)";
+    case Strategy::kController:
+      return "controller (the Python controller runs every step on the lab's poses)";
+  }
+  return "?";
 }
 
 }  // namespace
@@ -59,11 +119,33 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
                              config_file + " " + std::to_string(config.num_robots) + "; is it the right config?");
   }
   if (track.last_step() < 1) throw std::runtime_error(log_file + ": the run has no step to export");
-  const std::vector<ExportProblem> problems = PreValidate(track, end, config.world, options.settle_max_steps);
+  const bool controller = options.strategy == Strategy::kController;
+  const bool python_kind = agents::IsPythonController(config);
+  std::vector<ExportProblem> problems;
+  if (controller && !python_kind) {
+    const config::ConfigNode kind = config.controller.Optional("kind");
+    problems.push_back({"strategy", -1, -1, -1,
+                        "the controller strategy runs the run's Python controller in the submission, and this "
+                        "run's controller (kind '" + (kind.IsDefined() ? kind.AsString() : std::string("?")) +
+                            "' in " + config_file + ") is C++: the lab runs Python only",
+                        "export with --strategy track (the recorded run in closed loop) or --strategy replay; "
+                        "or write the controller in Python (controller: {kind: python, module: ..., class: ...})"});
+  }
+  // The controller strategy runs until every robot is done, at most the run's step limit.
+  const int64_t steps = controller && python_kind ? RunStepLimit(run_dir, config) : track.last_step();
+  for (ExportProblem& problem : PreValidate(track, end, config.world, options.settle_max_steps, LabLimits{}, steps)) {
+    problems.push_back(std::move(problem));
+  }
   if (!problems.empty()) throw ExportRefused(problems);
+  ControllerFiles controller_files;
+  NpyArray obstacles;
+  if (controller) {
+    controller_files = ReadControllerFiles(config, config_file, options.python_runtime_dir);
+    obstacles = ObstacleSchedule(config.obstacles, config.world.time_step_s, steps);
+  }
 
   const int n = track.num_robots;
-  const int64_t steps = track.last_step();
+  const int64_t recorded_steps = track.last_step();
   SubmissionParams params;
   params.num_robots = n;
   params.steps = steps;
@@ -71,6 +153,9 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
   params.wheel_radius_m = config.world.wheel_radius_m;
   params.base_length_m = config.world.base_length_m;
   params.max_wheel_speed_radps = config.world.max_wheel_speed_radps;
+  params.stop_when_done = controller && config.sim.stop_when_done;
+  params.max_abs_v_mps = config.sim.max_abs_v_mps;
+  params.max_abs_w_radps = config.sim.max_abs_w_radps;
 
   NpyArray initial;
   initial.shape = {3, n};
@@ -81,14 +166,16 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
     initial.values[static_cast<size_t>(n + i)] = p.y_m;
     initial.values[static_cast<size_t>(2 * n + i)] = p.theta_rad;
   }
+  // The recorded plan (track, replay).
   NpyArray poses;
-  poses.shape = {steps + 1, 3, n};
-  poses.values.resize(static_cast<size_t>((steps + 1) * 3 * n));
   NpyArray commands;
-  commands.shape = {steps, 2, n};
-  commands.values.resize(static_cast<size_t>(steps * 2 * n));
+  const int64_t reference_steps = controller ? -1 : recorded_steps;
+  poses.shape = {reference_steps + 1, 3, n};
+  poses.values.resize(static_cast<size_t>((reference_steps + 1) * 3 * n));
+  commands.shape = {std::max<int64_t>(reference_steps, 0), 2, n};
+  commands.values.resize(static_cast<size_t>(std::max<int64_t>(reference_steps, 0) * 2 * n));
   const auto un = static_cast<size_t>(n);
-  for (int64_t k = 0; k <= steps; ++k) {
+  for (int64_t k = 0; k <= reference_steps; ++k) {
     double* row = &poses.values[static_cast<size_t>(k) * 3 * un];
     const sim::Pose2* step_poses = &track.poses[static_cast<size_t>(k) * un];
     for (size_t i = 0; i < un; ++i) {
@@ -96,7 +183,7 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
       row[un + i] = step_poses[i].y_m;
       row[2 * un + i] = step_poses[i].theta_rad;
     }
-    if (k == steps) break;
+    if (k == reference_steps) break;
     double* command_row = &commands.values[static_cast<size_t>(k) * 2 * un];
     const sim::UnicycleCommand* step_commands = &track.commands[static_cast<size_t>(k) * un];
     for (size_t i = 0; i < un; ++i) {
@@ -110,8 +197,14 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
   summary.steps = steps;
   summary.max_iterations = steps + options.settle_max_steps;
   summary.estimated_duration_s = static_cast<double>(summary.max_iterations) * config.world.time_step_s;
-  summary.uploads = {SubmissionFiles::kMainScript, SubmissionFiles::kParams, SubmissionFiles::kInitialPoses,
-                     SubmissionFiles::kReferencePoses, SubmissionFiles::kReferenceCommands};
+  summary.uploads = {SubmissionFiles::kMainScript, SubmissionFiles::kParams, SubmissionFiles::kInitialPoses};
+  if (controller) {
+    summary.uploads.insert(summary.uploads.end(), {SubmissionFiles::kControllerSpec, SubmissionFiles::kObstacles,
+                                                   controller_files.module_name});
+    for (const FlatPythonRuntime::File& file : controller_files.runtime) summary.uploads.push_back(file.name);
+  } else {
+    summary.uploads.insert(summary.uploads.end(), {SubmissionFiles::kReferencePoses, SubmissionFiles::kReferenceCommands});
+  }
 
   const std::string source_run = fs::weakly_canonical(fs::absolute(run_dir)).string();
   nlohmann::ordered_json manifest;
@@ -123,6 +216,11 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
   manifest["barriers"] = options.barriers;
   manifest["robots"] = n;
   manifest["steps"] = steps;
+  manifest["recorded_steps"] = recorded_steps;
+  if (controller) {
+    manifest["stop_when_done"] = params.stop_when_done;
+    manifest["controller_module"] = controller_files.module_name;
+  }
   manifest["settle_max_steps"] = options.settle_max_steps;
   manifest["estimated_duration_s"] = summary.estimated_duration_s;
   manifest["main"] = SubmissionFiles::kMainScript;
@@ -136,13 +234,17 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
     text += "  " + summary.uploads[i] + (i == 0 ? "    <- mark this file as MAIN" : "") + "\n";
   }
   text += "\nNumber of robots to declare: " + std::to_string(n) + "\n";
-  text += "Estimated duration to declare: " + Seconds(summary.estimated_duration_s) + " s (" + std::to_string(steps) +
-          " steps + at most " + std::to_string(options.settle_max_steps) + " settle steps of " +
-          Seconds(config.world.time_step_s * 1000) + " ms; the lab's own start-up drive comes on top)\n";
-  text += std::string("Strategy: ") + StrategyName(options.strategy) +
-          (options.strategy == Strategy::kTrack ? " (recorded commands plus feedback on the pose error)"
-                                                : " (recorded commands, open loop)") +
+  text += "Estimated duration to declare: " + Seconds(summary.estimated_duration_s) + " s (" +
+          (controller ? "at most " : "") + std::to_string(steps) + " steps + at most " +
+          std::to_string(options.settle_max_steps) + " settle steps of " + Seconds(config.world.time_step_s * 1000) +
+          " ms; the lab's own start-up drive comes on top)\n";
+  text += "Strategy: " + StrategyText(options) +
           (options.barriers ? ", through the Robotarium's barrier certificates" : "") + "\n";
+  if (controller) {
+    text += std::string("The run ends after ") + std::to_string(steps) + " steps" +
+            (params.stop_when_done ? ", or earlier once every robot reports done" : "") + " (the simulated run took " +
+            std::to_string(recorded_steps) + ")\n";
+  }
   summary.warnings = StartUpWarnings(track);
   for (const std::string& warning : summary.warnings) text += "\nWARNING: " + warning + "\n";
   text += "\nThe script saves dream_result.npy (poses, commands sent, wall-clock stamps; rewritten\n"
@@ -157,9 +259,17 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
   upload.WriteFile(SubmissionFiles::kMainScript, SubmissionScriptTemplate());
   upload.WriteFile(SubmissionFiles::kParams, EncodeNpy(params.ToNpy()));
   upload.WriteFile(SubmissionFiles::kInitialPoses, EncodeNpy(initial));
-  upload.WriteFile(SubmissionFiles::kReferencePoses, EncodeNpy(poses));
-  upload.WriteFile(SubmissionFiles::kReferenceCommands, EncodeNpy(commands));
+  if (controller) {
+    upload.WriteFile(SubmissionFiles::kControllerSpec, EncodeNpyBytes(controller_files.spec_json));
+    upload.WriteFile(SubmissionFiles::kObstacles, EncodeNpy(obstacles));
+    upload.WriteFile(controller_files.module_name, controller_files.module_text);
+    for (const FlatPythonRuntime::File& file : controller_files.runtime) upload.WriteFile(file.name, file.text);
+  } else {
+    upload.WriteFile(SubmissionFiles::kReferencePoses, EncodeNpy(poses));
+    upload.WriteFile(SubmissionFiles::kReferenceCommands, EncodeNpy(commands));
+  }
   out.WriteFile("config.yaml", config_text);
+  KeepControllerModule(config, out);
   out.WriteFile("export.json", manifest.dump(2) + "\n");
   out.WriteFile("UPLOAD.txt", text);
   summary.out_dir = out.dir();

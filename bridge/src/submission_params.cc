@@ -16,7 +16,9 @@ NpyArray SubmissionParams::ToNpy() const {
   p[kParamFormatVersion] = kFormatVersion;
   p[kParamNumRobots] = num_robots;
   p[kParamSteps] = static_cast<double>(steps);
-  p[kParamStrategy] = options.strategy == Strategy::kTrack ? kStrategyTrack : kStrategyReplay;
+  p[kParamStrategy] = options.strategy == Strategy::kTrack     ? kStrategyTrack
+                      : options.strategy == Strategy::kReplay ? kStrategyReplay
+                                                              : kStrategyController;
   p[kParamBarriers] = options.barriers ? 1.0 : 0.0;
   p[kParamSettleMaxSteps] = options.settle_max_steps;
   p[kParamSettlePositionTolerance] = options.settle_position_tolerance_m;
@@ -30,22 +32,29 @@ NpyArray SubmissionParams::ToNpy() const {
   p[kParamWheelRadius] = wheel_radius_m;
   p[kParamBaseLength] = base_length_m;
   p[kParamMaxWheelSpeed] = max_wheel_speed_radps;
+  p[kParamStopWhenDone] = stop_when_done ? 1.0 : 0.0;
+  p[kParamMaxAbsV] = max_abs_v_mps;
+  p[kParamMaxAbsW] = max_abs_w_radps;
   return array;
 }
 
 SubmissionParams SubmissionParams::FromNpy(const NpyArray& array, const std::string& name) {
   auto fail = [&name](const std::string& problem) { throw std::runtime_error(name + ": " + problem); };
-  if (array.shape != std::vector<int64_t>{kParamCount}) {
+  const bool format1 = array.shape == std::vector<int64_t>{kParamCountFormat1};
+  if (array.shape != std::vector<int64_t>{kParamCount} && !format1) {
     fail("expected " + std::to_string(kParamCount) + " numbers (a dream_params.npy of this dream version)");
   }
   const double* p = array.values.data();
-  for (int i = 0; i < kParamCount; ++i) {
+  const int count = format1 ? kParamCountFormat1 : kParamCount;
+  for (int i = 0; i < count; ++i) {
     if (!std::isfinite(p[i])) fail("value " + std::to_string(i) + " is not finite");
   }
   if (p[kParamMagic] != kParamsMagic) fail("is not a dream_params.npy (wrong magic number)");
-  if (p[kParamFormatVersion] != kFormatVersion) {
-    fail("has format version " + std::to_string(p[kParamFormatVersion]) + ", this dream reads " +
-         std::to_string(kFormatVersion) + "; export the run again");
+  const double version = format1 ? 1.0 : kFormatVersion;
+  if (p[kParamFormatVersion] != version) {
+    fail("has format version " + std::to_string(p[kParamFormatVersion]) + " with " + std::to_string(count) +
+         " numbers; this dream reads version 1 (18 numbers) and " + std::to_string(kFormatVersion) +
+         " (" + std::to_string(kParamCount) + "); export the run again");
   }
   auto whole = [&](int index, double low, double high, const char* what) {
     const double value = p[index];
@@ -59,8 +68,15 @@ SubmissionParams SubmissionParams::FromNpy(const NpyArray& array, const std::str
   params.num_robots = static_cast<int>(whole(kParamNumRobots, 1, 50, "number of robots"));
   params.steps = whole(kParamSteps, 1, 1e8, "steps");
   const double strategy = p[kParamStrategy];
-  if (strategy != kStrategyTrack && strategy != kStrategyReplay) fail("unknown strategy " + std::to_string(strategy));
-  params.options.strategy = strategy == kStrategyTrack ? Strategy::kTrack : Strategy::kReplay;
+  if (strategy == kStrategyTrack) {
+    params.options.strategy = Strategy::kTrack;
+  } else if (strategy == kStrategyReplay) {
+    params.options.strategy = Strategy::kReplay;
+  } else if (strategy == kStrategyController && !format1) {
+    params.options.strategy = Strategy::kController;
+  } else {
+    fail("unknown strategy " + std::to_string(strategy));
+  }
   params.options.barriers = whole(kParamBarriers, 0, 1, "barriers") == 1;
   params.options.settle_max_steps = static_cast<int>(whole(kParamSettleMaxSteps, 0, 3000, "settle steps"));
   params.options.settle_position_tolerance_m = p[kParamSettlePositionTolerance];
@@ -74,6 +90,14 @@ SubmissionParams SubmissionParams::FromNpy(const NpyArray& array, const std::str
   params.wheel_radius_m = p[kParamWheelRadius];
   params.base_length_m = p[kParamBaseLength];
   params.max_wheel_speed_radps = p[kParamMaxWheelSpeed];
+  params.stop_when_done = !format1 && whole(kParamStopWhenDone, 0, 1, "stop when done") == 1;
+  if (!format1) {
+    params.max_abs_v_mps = p[kParamMaxAbsV];
+    params.max_abs_w_radps = p[kParamMaxAbsW];
+    if (params.options.strategy == Strategy::kController && !(params.max_abs_v_mps > 0 && params.max_abs_w_radps > 0)) {
+      fail("the command limits must be positive for the controller strategy");
+    }
+  }
   std::string error;
   if (!params.options.IsValid(&error)) fail(error);
   if (!(params.wheel_radius_m > 0 && params.base_length_m > 0 && params.max_wheel_speed_radps > 0)) {

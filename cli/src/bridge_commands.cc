@@ -96,6 +96,7 @@ int RunExport(const ExportArgs& args) {
   options.strategy = bridge::ParseStrategy(args.strategy);
   options.barriers = args.barriers;
   options.settle_max_steps = args.settle_steps;
+  options.python_runtime_dir = DataFiles::PythonRuntimeDir();
   const std::string config_path =
       args.config_path.empty() ? (fs::path(args.run_dir) / "config.yaml").string() : args.config_path;
   std::string out_dir = args.out_dir;
@@ -305,8 +306,9 @@ void DeclareBridgeCommands(CommandLine& line) {
   auto export_args = std::make_shared<ExportArgs>();
   CLI::App* export_command = line.AddCommand(
       "export",
-      "Turn a recorded run into a Robotarium submission (a main script plus .npy data), after\n"
-      "checking it as the lab would: robots, duration, start poses, boundary and collision errors.\n"
+      "Turn a recorded run into a Robotarium submission (a main script plus .npy data, and for\n"
+      "--strategy controller the Python controller and DREAM's runtime), after checking it as the\n"
+      "lab would: robots, duration, start poses, boundary and collision errors.\n"
       "Example: dream export runs/go_to_goal --out exports/go_to_goal",
       [export_args] { return RunExport(*export_args); });
   export_command->add_option("run", export_args->run_dir, "Run folder written by dream run (run.lcmlog, config.yaml)")
@@ -314,8 +316,9 @@ void DeclareBridgeCommands(CommandLine& line) {
   export_command->add_option("--out", export_args->out_dir, "Output folder (default exports/<name>)");
   export_command->add_option("--config", export_args->config_path, "The run's config (default <run>/config.yaml)");
   export_command->add_option("--strategy", export_args->strategy,
-                             "track: recorded commands plus feedback on the pose error; replay: open loop")
-      ->check(CLI::IsMember({"track", "replay"}))
+                             "track: recorded commands plus feedback on the pose error; replay: open loop;\n"
+                             "controller: the run's Python controller itself, every step on the lab's poses")
+      ->check(CLI::IsMember({"track", "replay", "controller"}))
       ->capture_default_str();
   export_command->add_flag("--barriers", export_args->barriers,
                            "Pass commands through the Robotarium's barrier certificates (safety layer)");

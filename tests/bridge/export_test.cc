@@ -272,12 +272,27 @@ TEST(SubmissionTemplateTest, ParameterIndicesMatchTheScript) {
       {"P_WHEEL_RADIUS", kParamWheelRadius},
       {"P_BASE_LENGTH", kParamBaseLength},
       {"P_MAX_WHEEL_SPEED", kParamMaxWheelSpeed},
+      {"P_STOP_WHEN_DONE", kParamStopWhenDone},
+      {"P_MAX_ABS_V", kParamMaxAbsV},
+      {"P_MAX_ABS_W", kParamMaxAbsW},
       {"P_COUNT", kParamCount},
+      {"O_ID", kObstacleId},
+      {"O_CENTER", kObstacleCenterX},
+      {"O_SIZE", kObstacleWidth},
+      {"O_VELOCITY", kObstacleVelocityX},
+      {"O_COUNT", kObstacleColumns},
   };
   for (const auto& [name, index] : indices) {
     EXPECT_NE(script.find(std::string("\n") + name + " = " + std::to_string(index) + "\n"), std::string::npos) << name;
   }
   EXPECT_NE(script.find("\nMAGIC = 1146242369.0"), std::string::npos);
+  EXPECT_NE(script.find("\nFORMAT_VERSION = " + std::to_string(static_cast<int>(kFormatVersion)) + ".0\n"),
+            std::string::npos);
+  EXPECT_NE(script.find("\nSTRATEGY_CONTROLLER = 2.0\n"), std::string::npos);
+  EXPECT_NE(script.find(std::string("\nCONTROLLER_SPEC_FILE = \"") + SubmissionFiles::kControllerSpec + "\"\n"),
+            std::string::npos);
+  EXPECT_NE(script.find(std::string("\nOBSTACLES_FILE = \"") + SubmissionFiles::kObstacles + "\"\n"),
+            std::string::npos);
   EXPECT_NE(script.find("\nFIXED_COLUMNS = " + std::to_string(ResultLayout::kFixedColumns) + "\n"), std::string::npos);
   EXPECT_NE(script.find("allow_pickle=False"), std::string::npos);
   EXPECT_EQ(script.find("allow_pickle=True"), std::string::npos);

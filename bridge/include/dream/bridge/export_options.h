@@ -11,9 +11,12 @@ enum class Strategy {
   kTrack,
   /// Send the recorded commands, open loop.
   kReplay,
+  /// Run the Python controller itself every step on the lab's poses, in
+  /// closed loop (controller kind python only).
+  kController,
 };
 
-/// "track" / "replay"; ParseStrategy throws std::invalid_argument otherwise.
+/// "track" / "replay" / "controller"; ParseStrategy throws std::invalid_argument otherwise.
 const char* StrategyName(Strategy strategy);
 Strategy ParseStrategy(const std::string& text);
 
@@ -39,6 +42,9 @@ struct ExportOptions {
   double gain_theta_per_s = 3.0;
   /// The script rewrites its result file every this many experiment steps.
   int save_every_steps = 900;
+  /// Strategy controller: the folder holding the Python runtime's package
+  /// `dream` (python/ of the source tree), whose modules the submission ships.
+  std::string python_runtime_dir;
 
   /// False with a message naming the field, its value and the allowed range.
   bool IsValid(std::string* error) const;

@@ -31,7 +31,7 @@ struct LabResult {
   RunTrack track;
   int64_t settle_steps = 0;     ///< iterations the script spent settling
   int64_t planned_steps = 0;    ///< steps the export planned
-  bool complete = false;        ///< every planned step and the final pose are there
+  bool complete = false;        ///< the final pose is there: every planned step, or (controller strategy) every robot done
   double wall_duration_s = 0.0; ///< wall time from step 0 to the last pose
   double max_step_s = 0.0;      ///< longest wall time between two steps
   int64_t clock_steps_back = 0; ///< stamps earlier than their predecessor (clamped)

@@ -20,6 +20,11 @@ struct NpyArray {
 /// shape does not match the number of values.
 std::string EncodeNpy(const NpyArray& array);
 
+/// The bytes of a .npy file holding `bytes` as a 1-D uint8 array ('|u1'):
+/// how text (JSON) travels to the submission script, which reads it with
+/// np.load(..., allow_pickle=False) and decodes it as UTF-8.
+std::string EncodeNpyBytes(const std::string& bytes);
+
 /// Parses .npy bytes, strictly: magic, version 1.0/2.0/3.0, a header dict
 /// with exactly descr '<f8', fortran_order False and a shape tuple, and
 /// exactly product(shape) * 8 bytes of data after it. Values may be NaN/inf

@@ -34,7 +34,7 @@ struct LabLimits {
 
 /// One reason the lab would refuse (or fail) the run.
 struct ExportProblem {
-  std::string rule;       ///< robots, duration, finished, start_inside_arena, start_spacing, boundary, collision, obstacle
+  std::string rule;       ///< strategy, robots, duration, finished, start_inside_arena, start_spacing, boundary, collision, obstacle
   int robot = -1;         ///< the robot concerned, -1 for none
   int other = -1;         ///< the second robot of a pair, or the obstacle id
   int64_t step = -1;      ///< the first step concerned, -1 for none
@@ -51,9 +51,12 @@ struct ExportProblem {
 /// and far enough apart for the start-up routine; and no boundary, collision
 /// or virtual-obstacle error at any step (re-checked on the recorded poses,
 /// so each problem names its first robot and step). Empty when the run can
-/// be exported.
+/// be exported. `experiment_steps` is how many steps the script may run: -1
+/// for the recorded ones (track, replay); the controller strategy runs up to
+/// the run's step limit.
 std::vector<ExportProblem> PreValidate(const RunTrack& track, const RunEnd& end, const sim::WorldParams& world,
-                                       int64_t settle_max_steps, const LabLimits& limits = {});
+                                       int64_t settle_max_steps, const LabLimits& limits = {},
+                                       int64_t experiment_steps = -1);
 
 /// Risks that do not make the lab refuse the run by rule but may make it fail:
 /// start poses so crowded that the lab's start-up routine may deadlock before

@@ -37,10 +37,15 @@ struct ExportSummary {
 ///   upload/dream_main.py      the main script (a fixed template, no data)
 ///   upload/dream_*.npy        its data: parameters, start poses, the
 ///                             recorded poses and velocities of every step
+///                             (track, replay), or (controller) the
+///                             controller spec and the obstacles per step
+///   upload/dream*.py, <m>.py  (controller) the flat Python runtime and the
+///                             run's controller module
 ///   UPLOAD.txt                what to upload, which file is main, the robot
 ///                             count and duration to declare
 ///   export.json, config.yaml  for dream import / compare (not uploaded)
-/// Every file is written atomically, only after the run passed PreValidate.
+/// Every file is written atomically, only after the run passed PreValidate
+/// (and, for the controller strategy, when its controller is of kind python).
 /// @param config_path the run's config; empty: run_dir/config.yaml.
 /// @throws ExportRefused when the lab would refuse the run; std::runtime_error
 ///         (or config::ConfigError) naming the file for unreadable input.

@@ -21,6 +21,11 @@ struct SubmissionFiles {
   static constexpr const char* kReferencePoses = "dream_reference_poses.npy";
   /// K x 2 x N: the velocities (v, w) every robot drove with during step k.
   static constexpr const char* kReferenceCommands = "dream_reference_commands.npy";
+  /// Strategy controller: the controller spec (JSON, docs/python-runtime-contract.md)
+  /// as uint8 bytes, its `module` the bare file name of the controller module.
+  static constexpr const char* kControllerSpec = "dream_controller_spec.npy";
+  /// Strategy controller: (K + 1) x M x ObstacleColumns, every virtual obstacle at every step.
+  static constexpr const char* kObstacles = "dream_obstacles.npy";
   /// What the script saves: ResultLayout rows.
   static constexpr const char* kResult = "dream_result.npy";
   /// The same array saved from MATLAB (variable kResultMatVariable).
@@ -48,14 +53,38 @@ enum ParamIndex : int {
   kParamWheelRadius = 15,
   kParamBaseLength = 16,
   kParamMaxWheelSpeed = 17,
-  kParamCount = 18,
+  /// Strategy controller: 1 when the run stops once every robot reports done.
+  kParamStopWhenDone = 18,
+  /// Strategy controller: a command beyond these (or not finite) is refused
+  /// and the robot holds still for the step, as the simulator's world does
+  /// (config world.max_abs_v_mps / max_abs_w_radps).
+  kParamMaxAbsV = 19,
+  kParamMaxAbsW = 20,
+  kParamCount = 21,
+};
+
+/// Format 1 (before the controller strategy) had the first 18 numbers; its
+/// exports are still imported.
+inline constexpr int kParamCountFormat1 = 18;
+
+/// One obstacle at one step in dream_obstacles.npy, as DREAM_OBSTACLES carries it.
+enum ObstacleColumn : int {
+  kObstacleId = 0,
+  kObstacleCenterX = 1,
+  kObstacleCenterY = 2,
+  kObstacleWidth = 3,
+  kObstacleHeight = 4,
+  kObstacleVelocityX = 5,
+  kObstacleVelocityY = 6,
+  kObstacleColumns = 7,
 };
 
 /// "DREA" as a number: dream_params.npy starts with it.
 inline constexpr double kParamsMagic = 1146242369.0;
-inline constexpr double kFormatVersion = 1.0;
+inline constexpr double kFormatVersion = 2.0;
 inline constexpr double kStrategyReplay = 0.0;
 inline constexpr double kStrategyTrack = 1.0;
+inline constexpr double kStrategyController = 2.0;
 
 /// dream_result.npy: rows x (kFixedColumns + 5 N), one row per get_poses():
 /// phase, step within the phase, wall-clock time (s, time.time()), then

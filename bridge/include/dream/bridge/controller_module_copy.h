@@ -1,0 +1,17 @@
+#pragma once
+
+#include "dream/config/run_config.h"
+#include "dream/sim/output_folder.h"
+
+namespace dream::bridge {
+
+/// Copies a Python controller's module (kind python) into `out` at the path
+/// the config names it by, when that path is relative and stays inside the
+/// config's folder, so that the copy of the config in `out` finds it: `dream
+/// run` keeps the module in the run folder this way, and export and import
+/// do the same, so `dream lab-replay` of an imported run runs the same
+/// controller. Other kinds, and absolute module paths, need nothing.
+/// @throws config::ConfigError when the module cannot be read.
+void KeepControllerModule(const config::RunConfig& config, const sim::OutputFolder& out);
+
+}  // namespace dream::bridge

@@ -1,0 +1,27 @@
+#include "dream/bridge/controller_module_copy.h"
+
+#include <filesystem>
+
+#include "dream/agents/python_controller_builder.h"
+#include "dream/agents/python_controller_spec.h"
+#include "dream/sim/file_text.h"
+
+namespace dream::bridge {
+
+void KeepControllerModule(const config::RunConfig& config, const sim::OutputFolder& out) {
+  if (!agents::IsPythonController(config)) return;
+  const agents::PythonControllerBuilder controller(config.controller, config.num_robots);
+  const std::filesystem::path written = std::filesystem::path(controller.module_as_written()).lexically_normal();
+  if (written.is_absolute()) return;
+  for (const auto& part : written) {
+    if (part == "..") return;  // outside the config's folder: the copy cannot follow
+  }
+  std::filesystem::path folder;
+  for (const auto& part : written.parent_path()) {
+    folder /= part;
+    out.MakeSubfolder(folder.string());
+  }
+  out.WriteFile(written.string(), sim::ReadFileText(controller.module_path()));
+}
+
+}  // namespace dream::bridge

@@ -1,0 +1,376 @@
+#!/usr/bin/python3
+"""`dream export --strategy controller`: the Python controller itself in the submission.
+
+    bridge_controller_strategy.py --dream build/dream --source . --types-dir build/python \
+        --simulator standin|official
+
+Each case runs a Python-controller config with `dream run`, exports it with the controller
+strategy, runs the submission with run_submission.py --skip-initialization (exactly at the
+start poses, as the simulated run starts) in a Robotarium simulator, imports the result and
+compares it with the simulated run:
+
+  - go_to_goal_python (8 robots, a moving obstacle, stops when every robot is done) and
+    hrvo_circle_python (10 robots, radios, movement sensors, periods and start delays): the
+    same poses at every step to 1e-9, the same step count and the same violation counts,
+    the obstacles handed to the controllers equal to those the simulator published; the
+    upload folder holds flat files only, UPLOAD.txt lists each, the script is the fixed
+    template, the runtime is flattened (no relative import left, no LCM module shipped);
+    dream compare and dream lab-replay take the imported run;
+  - a controller that raises at step 40 for robot 2: the script runs to its last step, the
+    error is printed once with the robot's id, the robot holds still from that step, and the
+    poses still equal the simulated run's (where the world stopped the lost robot);
+  - a hostile config string (in a controller key and the description): the script is still
+    the template, the spec travels as uint8 JSON, and nothing of the string runs;
+  - refusals: a C++ kind with --strategy controller (exit 3, naming --strategy track, nothing
+    written); controller module names that would clash with the submission's files or the
+    modules it imports (exit 1, naming controller.module); track still works for a Python kind.
+
+With --simulator official the checkout comes from $ROBOTARIUM_PYTHON_SIMULATOR (a checkout or
+a bare git repository); without it the test prints SKIP and exits 77. It then also compares
+the official simulator's poses with the stand-in's for the same submission.
+"""
+
+import argparse
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+SKIP = 77
+TOLERANCE = 1e-9
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from bridge_roundtrip import Failure, check, official_checkout, run  # noqa: E402
+
+FAULTY_CONTROLLER = '''"""A test controller: drives slowly on a curve; robot `fail_robot` raises from `fail_step` on."""
+
+from dream import Robot, key
+
+
+class Faulty(Robot):
+    KEYS = {"fail_robot": key(-1, kind="int"),
+            "fail_step": key(0, kind="int"),
+            "label": key("", kind="string")}
+
+    def update(self, step):
+        if self.id == self.config["fail_robot"] and step >= self.config["fail_step"]:
+            raise ZeroDivisionError("robot %d gives up at step %d" % (self.id, step))
+        return (0.05, 0.3 * (self.id - 1))
+'''
+
+FAULTY_CONFIG = '''name: faulty_python
+description: {description}
+seed: 1
+robots: 3
+steps: 80
+stop_when_done: false
+world:
+  mode: lockstep
+initial_poses:
+  - [-0.5, -0.4, 0.0]
+  - [-0.5, 0.0, 0.0]
+  - [-0.5, 0.4, 0.0]
+obstacles:
+  - center: [0.8, 0.6]
+    size: [0.2, 0.2]
+    path: {{waypoints: [[0.8, -0.6]], speed_mps: 0.05, mode: ping_pong}}
+controller:
+  kind: python
+  module: {module}
+  class: Faulty
+  fail_robot: 2
+  fail_step: 40
+  label: {label}
+'''
+
+
+class Case:
+    def __init__(self, args, tmp, simulator_flags):
+        self.args = args
+        self.dream = args.dream
+        self.tmp = tmp
+        self.flags = simulator_flags
+        self.report = []
+        sys.path.insert(0, os.path.join(args.source, "python"))
+        import dream_log
+        self.dream_log = dream_log
+
+    def path(self, *parts):
+        return os.path.join(self.tmp, *parts)
+
+    def simulate(self, config, name, expect=0):
+        sim_dir = self.path(name + "_sim")
+        run([self.dream, "run", config, "--out", sim_dir, "-q"], expect=expect)
+        return sim_dir
+
+    def export(self, sim_dir, name, strategy="controller", expect=0, extra=()):
+        export_dir = self.path(name + "_export_" + strategy)
+        output, _ = run([self.dream, "export", sim_dir, "--out", export_dir, "--strategy", strategy, "-q"] +
+                        list(extra), expect=expect)
+        return export_dir, output
+
+    def run_script(self, export_dir, name, flags=None):
+        """The submission from its exact start poses; (report, stdout, recorded poses)."""
+        import numpy as np
+        workdir = self.path(name + "_lab")
+        report_path = workdir + ".json"
+        poses_path = workdir + "_poses.npy"
+        run([sys.executable, os.path.join(self.args.source, "bridge", "python", "run_submission.py"), "--upload",
+             os.path.join(export_dir, "upload"), "--workdir", workdir, "--report", report_path,
+             "--skip-initialization", "--record-poses", poses_path] + (self.flags if flags is None else flags))
+        with open(report_path) as f:
+            report = json.load(f)
+        with open(os.path.join(workdir, "stdout.txt")) as f:
+            stdout = f.read()
+        check(report["ok"], name + ": the script failed: %s\n%s" % (report["error"], stdout[-2000:]))
+        return report, stdout, np.load(poses_path), workdir
+
+    def import_result(self, workdir, export_dir, name, expect=0):
+        lab_dir = self.path(name + "_imported")
+        run([self.dream, "import", os.path.join(workdir, "dream_result.npy"), "--export", export_dir, "--out",
+             lab_dir], expect=expect)
+        return lab_dir
+
+    def load(self, run_dir):
+        return self.dream_log.load(run_dir, self.args.types_dir)
+
+    def same_run(self, sim_dir, lab_dir, name):
+        """Poses at every step within TOLERANCE, the same steps and violation counts; the largest difference."""
+        import numpy as np
+        simulated = self.load(sim_dir)
+        lab = self.load(lab_dir)
+        check(simulated.poses.shape == lab.poses.shape,
+              "%s: the simulated run has %s poses, the lab run %s" % (name, simulated.poses.shape, lab.poses.shape))
+        worst = float(np.max(np.abs(simulated.poses - lab.poses)))
+        check(worst <= TOLERANCE, "%s: poses differ from the simulated run's by %g (step %d)" %
+              (name, worst, int(np.argmax(np.max(np.abs(simulated.poses - lab.poses), axis=(1, 2))))))
+        with open(os.path.join(sim_dir, "summary.json")) as f:
+            sim_violations = json.load(f)["violations"]
+        with open(os.path.join(lab_dir, "summary.json")) as f:
+            lab_violations = json.load(f)["violations"]
+        check(sim_violations == lab_violations,
+              "%s: violations differ: simulated %s, lab %s" % (name, sim_violations, lab_violations))
+        return simulated, lab, worst
+
+    def upload_listing(self, export_dir, name):
+        """Every file of upload/ is a flat .py/.npy file and UPLOAD.txt names each."""
+        upload = os.path.join(export_dir, "upload")
+        files = sorted(os.listdir(upload))
+        with open(os.path.join(export_dir, "UPLOAD.txt")) as f:
+            instructions = f.read()
+        for file_name in files:
+            check(os.path.isfile(os.path.join(upload, file_name)), name + ": upload/ holds a folder " + file_name)
+            check(file_name.endswith((".py", ".npy")), name + ": upload/ holds " + file_name)
+            check("  " + file_name + "\n" in instructions or "  " + file_name + "    <-" in instructions,
+                  name + ": UPLOAD.txt does not list " + file_name)
+        check("(%d files, no folders)" % len(files) in instructions, name + ": UPLOAD.txt's file count")
+        return files
+
+
+def experiment(case, name, module):
+    """A Python-controller config of config/: export, submission, import; the same run."""
+    import numpy as np
+    source = case.args.source
+    sim_dir = case.simulate(os.path.join(source, "config", name + ".yaml"), name)
+    export_dir, _ = case.export(sim_dir, name)
+    files = case.upload_listing(export_dir, name)
+    runtime = ["dream.py"] + ["dream_%s.py" % m for m in ("robot", "motion", "sensors", "radios", "timer",
+                                                          "robot_agent", "controller_spec", "hrvo")]
+    expected = sorted(["dream_main.py", "dream_params.npy", "dream_initial_poses.npy", "dream_controller_spec.npy",
+                       "dream_obstacles.npy", module] + runtime)
+    check(files == expected, "%s: upload/ holds %s, expected %s" % (name, files, expected))
+    upload = os.path.join(export_dir, "upload")
+    with open(os.path.join(upload, "dream_main.py")) as f, \
+            open(os.path.join(source, "bridge", "python", "dream_main.py")) as g:
+        check(f.read() == g.read(), "the exported script differs from the fixed template")
+    for file_name in runtime:
+        with open(os.path.join(upload, file_name)) as f:
+            text = f.read()
+        check("from ." not in text and "import dream." not in text, file_name + " still imports relatively")
+    with open(os.path.join(upload, module)) as f, open(os.path.join(source, "config", "python", module)) as g:
+        check(f.read() == g.read(), name + ": the controller module was not copied as it is")
+
+    report, stdout, poses, workdir = case.run_script(export_dir, name)
+    check(report["verdict"] == "clean", name + ": debug() verdict " + report["verdict"])
+    lab_dir = case.import_result(workdir, export_dir, name)
+    simulated, lab, worst = case.same_run(sim_dir, lab_dir, name)
+    check(lab.final_state == "FINISHED", name + ": imported run ends " + str(lab.final_state))
+    # The obstacles the script hands the controllers are the simulator's, step for step.
+    obstacles = np.load(os.path.join(upload, "dream_obstacles.npy"), allow_pickle=False)
+    for k in range(simulated.num_steps):
+        check(np.array_equal(obstacles[k], simulated.obstacles[k].reshape(obstacles[k].shape)),
+              "%s: step %d: dream_obstacles.npy %s, the simulator published %s" %
+              (name, k, obstacles[k].tolist(), simulated.obstacles[k].tolist()))
+    case.report.append("%s (%s): %d steps, poses equal to the simulated run's within %.3g, same violations, "
+                       "%d obstacles as the simulator moved them" %
+                       (name, report["simulator"], simulated.num_steps - 1, worst, obstacles.shape[1]))
+    return sim_dir, export_dir, lab_dir, poses
+
+
+def go_to_goal(case):
+    sim_dir, export_dir, lab_dir, poses = experiment(case, "go_to_goal_python", "go_to_goal.py")
+    # compare and lab-replay take the imported run as any other.
+    output, _ = run([case.dream, "compare", sim_dir, lab_dir, "--out", case.path("compare")])
+    check("tracking error" in output, "compare: " + output[-1000:])
+    run([case.dream, "lab-replay", lab_dir, "--out", case.path("lab_replay"), "-q"])
+    with open(case.path("lab_replay", "summary.json")) as f:
+        replay = json.load(f)
+    check(replay["end"] == "finished", "lab-replay: " + replay["reason"])
+    return export_dir, poses
+
+
+def faulty(case, label='"a plain label"', description="a controller that fails"):
+    folder = case.path("faulty")
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(folder, "faulty.py"), "w") as f:
+        f.write(FAULTY_CONTROLLER)
+    config = os.path.join(folder, "faulty.yaml")
+    with open(config, "w") as f:
+        f.write(FAULTY_CONFIG.format(description=description, module="faulty.py", label=label))
+    return config
+
+
+def failing_controller(case):
+    import numpy as np
+    config = faulty(case)
+    # The simulated run loses robot 2 at step 40 and fails (exit 4) but records every step.
+    sim_dir = case.simulate(config, "faulty", expect=4)
+    export_dir, _ = case.export(sim_dir, "faulty")
+    report, stdout, poses, workdir = case.run_script(export_dir, "faulty")
+    check(report["finished_line"].startswith("DREAM: finished: 3 robots, 80 experiment steps"),
+          "faulty: the script did not run to its end: " + report["finished_line"])
+    lines = [line for line in stdout.splitlines() if "its controller failed" in line]
+    check(len(lines) == 1 and lines[0].startswith("DREAM: robot 2 holds still from step 40 on") and
+          "ZeroDivisionError: robot 2 gives up at step 40" in lines[0],
+          "faulty: the error is not printed once with the robot id: %s" % lines)
+    result = np.load(os.path.join(workdir, "dream_result.npy"))
+    experiment = result[result[:, 0] == 1.0]
+    n = 3
+    v, w = experiment[:, 3 + 3 * n + 2], experiment[:, 3 + 4 * n + 2]
+    check(np.all(v[40:] == 0.0) and np.all(w[40:] == 0.0) and np.all(v[1:40] == 0.05),
+          "faulty: robot 2's commands are not (0, 0) from step 40 on")
+    check(np.all(poses[41:, :, 2] == poses[40, :, 2]), "faulty: robot 2 moved after its controller failed")
+    check(np.any(poses[41:, :, 1] != poses[40, :, 1]), "faulty: the other robots stopped as well")
+    lab_dir = case.import_result(workdir, export_dir, "faulty")
+    _, _, worst = case.same_run(sim_dir, lab_dir, "faulty")
+    case.report.append("raising controller: the script ran its 80 steps, robot 2 held still from step 40, the "
+                       "error printed once; poses equal to the simulated run's within %.3g" % worst)
+
+
+def injection(case):
+    import numpy as np
+    marker = case.path("PWNED")
+    payload = "x'''\\\"\\\"\\\"\\n__import__('os').system('touch %s') # {0} %%s ${HOME}" % marker
+    config = faulty(case, label='"%s"' % payload, description='"%s"' % payload)
+    with open(config) as f:
+        check(payload in f.read(), "the injection test did not put its payload into the config")
+    sim_dir = case.simulate(config, "hostile", expect=4)
+    check(not os.path.exists(marker), "code from the config ran in dream run")
+    export_dir, _ = case.export(sim_dir, "hostile")
+    upload = os.path.join(export_dir, "upload")
+    with open(os.path.join(upload, "dream_main.py")) as f, \
+            open(os.path.join(case.args.source, "bridge", "python", "dream_main.py")) as g:
+        check(f.read() == g.read(), "hostile: the exported script differs from the fixed template")
+    for name in os.listdir(upload):
+        if name.endswith(".py") and name != "faulty.py":
+            with open(os.path.join(upload, name)) as f:
+                check("PWNED" not in f.read(), "hostile: the payload reached " + name)
+    spec_array = np.load(os.path.join(upload, "dream_controller_spec.npy"), allow_pickle=False)
+    check(spec_array.dtype == np.uint8 and spec_array.ndim == 1, "hostile: the spec is not uint8 bytes")
+    spec = json.loads(spec_array.tobytes().decode("utf-8"))
+    check(spec["params"]["label"]["value"] == payload.replace("\\\"", "\"").replace("\\n", "\n"),
+          "hostile: the spec does not carry the label as data: %r" % spec["params"]["label"]["value"])
+    check(spec["module"] == "faulty.py", "hostile: spec module " + spec["module"])
+    case.run_script(export_dir, "hostile", flags=["--standin"])
+    check(not os.path.exists(marker), "code from the config ran in the submission: %s exists" % marker)
+    case.report.append("injection: the script is the template, the payload stayed data, nothing ran")
+
+
+def refusals(case):
+    source = case.args.source
+    # A C++ kind: refused with the advice, nothing written.
+    cpp_dir = case.path("go_to_goal_cpp_sim")
+    run([case.dream, "run", os.path.join(source, "config", "go_to_goal.yaml"), "--out", cpp_dir, "--steps", "30",
+         "-q"])
+    out = case.path("cpp_export")
+    output, _ = run([case.dream, "export", cpp_dir, "--out", out, "--strategy", "controller"], expect=3)
+    check("strategy:" in output and "is C++" in output and "--strategy track" in output and "kind: python" in output,
+          "C++ kind with --strategy controller: " + output)
+    check(not os.path.exists(out), "a refused export wrote files")
+    # Module names the submission cannot hold: its own files, a module the script imports.
+    sim_dir = case.path("faulty_sim")
+    folder = case.path("faulty")
+    for module in ("dream_robot.py", "numpy.py", "json.py"):
+        shutil.copyfile(os.path.join(folder, "faulty.py"), os.path.join(folder, module))
+        config = os.path.join(folder, "clash.yaml")
+        with open(config, "w") as f:
+            f.write(FAULTY_CONFIG.format(description="clash", module=module, label="x"))
+        out = case.path("clash_export")
+        output, _ = run([case.dream, "export", sim_dir, "--out", out, "--strategy", "controller", "--config",
+                         config], expect=1)
+        check("controller.module" in output and module in output and "rename" in output,
+              "module %s: %s" % (module, output))
+        check(not os.path.exists(out), "a refused export wrote files")
+        os.remove(os.path.join(folder, module))
+    # track still works for a Python kind.
+    export_dir, _ = case.export(case.path("go_to_goal_python_sim"), "go_to_goal_python", strategy="track")
+    report, _, _, _ = case.run_script(export_dir, "go_to_goal_python_track", flags=["--standin"])
+    check(report["verdict"] == "clean", "track on a Python kind: verdict " + report["verdict"])
+    case.report.append("refused: a C++ kind (exit 3, advice --strategy track), module names dream_robot.py, "
+                       "numpy.py, json.py (exit 1); track works for a Python kind")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--dream", required=True)
+    parser.add_argument("--source", required=True)
+    parser.add_argument("--types-dir", required=True, help="lcm-gen's Python types (build/python)")
+    parser.add_argument("--simulator", choices=["standin", "official"], required=True)
+    args = parser.parse_args()
+    tmp = tempfile.mkdtemp(prefix="dream_controller_strategy_")
+    case = None
+    try:
+        if args.simulator == "official":
+            checkout = official_checkout(tmp)
+            if checkout is None:
+                print("SKIP: set ROBOTARIUM_PYTHON_SIMULATOR to a checkout (or bare git repository) of "
+                      "robotarium/robotarium_python_simulator to run the controller strategy in the official "
+                      "simulator")
+                return SKIP
+            flags = ["--require-official", "--simulator", checkout]
+        else:
+            flags = ["--standin"]
+        case = Case(args, tmp, flags)
+        export_dir, poses = go_to_goal(case)
+        if os.path.isfile(os.path.join(args.source, "config", "hrvo_circle_python.yaml")):
+            experiment(case, "hrvo_circle_python", "hrvo_circle.py")  # radios, sensors, periods, delays
+        failing_controller(case)
+        if args.simulator == "official":
+            import numpy as np
+            _, _, standin_poses, _ = case.run_script(export_dir, "go_to_goal_python_standin", flags=["--standin"])
+            check(standin_poses.shape == poses.shape, "official and stand-in pose counts differ")
+            worst = float(np.max(np.abs(standin_poses - poses)))
+            check(worst <= TOLERANCE, "official and stand-in poses differ by %g" % worst)
+            case.report.append("official vs stand-in, same submission: largest difference %.3g" % worst)
+        else:
+            injection(case)
+            refusals(case)
+        print("\n".join(case.report))
+        print("PASS")
+        return 0
+    except Failure as failure:
+        if case is not None:
+            print("\n".join(case.report))
+        print("FAIL: %s" % failure)
+        return 1
+    finally:
+        if os.environ.get("DREAM_TEST_KEEP") == "1":
+            print("kept " + tmp)
+        else:
+            shutil.rmtree(tmp, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
