@@ -49,11 +49,9 @@ void CopyPythonControllerModule(const config::RunConfig& config, const std::stri
   if (!agents::IsPythonController(config)) return;
   const agents::PythonControllerBuilder controller(config.controller, config.num_robots);
   const std::filesystem::path written(controller.module_as_written());
-  // An absolute path, or one leaving the config's folder, stays valid as written.
+  // An absolute path stays valid as written; a relative one never leaves the
+  // config's folder (PythonControllerBuilder refuses that).
   if (written.is_absolute()) return;
-  for (const auto& part : written.lexically_normal()) {
-    if (part == "..") return;
-  }
   const std::filesystem::path copy = std::filesystem::path(out_dir) / written.lexically_normal();
   std::filesystem::create_directories(copy.parent_path());
   sim::WriteFileAtomically(copy.string(), sim::ReadFileText(controller.module_path()));

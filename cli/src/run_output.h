@@ -20,8 +20,8 @@ std::string PrepareOutputDir(const RunArgs& args, const config::RunConfig& confi
 
 /// A python kind's module file, copied into the run folder at the path the
 /// config names it by (relative to config.yaml there), so the folder alone can
-/// be rerun and exported with the code that ran. Absolute paths and paths
-/// leaving the config's folder are left as they are.
+/// be rerun and exported with the code that ran. An absolute path is left as
+/// it is.
 void CopyPythonControllerModule(const config::RunConfig& config, const std::string& out_dir);
 
 /// Runs the simulator on `lcm` until the run ends, writing <out_dir>/config.yaml

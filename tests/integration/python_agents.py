@@ -163,6 +163,8 @@ def test(context, args):
         ("fail_step: 30", "fail_step: 30\n  gain: 2", ":15: controller.gain: unknown key"),
         ("fail_step: 30", "fail_step: -3", ":14: controller.fail_step: must be >= 0, got -3"),
         ("module: faulty.py", "module: missing.py", ":12: controller.module: cannot read"),
+        ("module: faulty.py", "module: ../faulty.py", ":12: controller.module: '../faulty.py' leaves the config's folder"),
+        ("module: faulty.py", "module: faulty.txt", ":12: controller.module: 'faulty.txt' is not a Python module file"),
         ("class: Faulty", "class: Nope", ":13: controller.class:"),
         ("class: Faulty", "class: key", ":13: controller.class:"),
     ]

@@ -31,7 +31,18 @@ PythonControllerBuilder::PythonControllerBuilder(const config::ConfigNode& secti
   const config::ConfigNode module = section.Required("module");
   module_as_written_ = module.AsString();
   fs::path path(module_as_written_);
-  if (path.is_relative()) path = fs::path(section.file()).parent_path() / path;
+  // The run folder keeps a copy at the same relative path beside its
+  // config.yaml, so a relative path must stay inside the config's folder.
+  if (path.is_relative()) {
+    for (const fs::path& part : path.lexically_normal()) {
+      if (part == "..") {
+        module.Fail("'" + module_as_written_ +
+                    "' leaves the config's folder: put the module in that folder (or below it), or give its "
+                    "absolute path");
+      }
+    }
+    path = fs::path(section.file()).parent_path() / path;
+  }
   path = path.lexically_normal();
   // The module's base name becomes a file of its own in a Robotarium
   // submission and is imported by it, so it must be a module name.
