@@ -6,6 +6,7 @@
 #   P/lib/cmake/dream  the CMake package: find_package(dream) -> dream::agent_host ...
 #   P/share/dream/java    dream_lcmtypes.jar (dream spy)
 #   P/share/dream/python  the Python lcmtypes (package dream) and python/*.py
+#   P/share/dream/python-runtime  the Python controller runtime (python/dream)
 #   P/share/dream/bridge  the check-submission runner and stand-in simulator
 include(CMakePackageConfigHelpers)
 
@@ -72,13 +73,14 @@ install(FILES ${DREAM_TYPES_JAR} DESTINATION ${DREAM_INSTALL_DATADIR}/java)
 install(DIRECTORY ${PROJECT_BINARY_DIR}/python/dream
   DESTINATION ${DREAM_INSTALL_DATADIR}/python
   FILES_MATCHING PATTERN "*.py")
-if(EXISTS ${PROJECT_SOURCE_DIR}/python)
-  install(DIRECTORY ${PROJECT_SOURCE_DIR}/python/
-    DESTINATION ${DREAM_INSTALL_DATADIR}/python
-    FILES_MATCHING PATTERN "*.py"
-    PATTERN "__pycache__" EXCLUDE
-    PATTERN "tests" EXCLUDE)
-endif()
+file(GLOB DREAM_PYTHON_TOOLS ${PROJECT_SOURCE_DIR}/python/*.py)
+install(FILES ${DREAM_PYTHON_TOOLS} DESTINATION ${DREAM_INSTALL_DATADIR}/python)
+# The Python controller runtime (package dream) apart from lcm-gen's package of
+# the same name: the tools that host Python controllers join the two.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/python/dream
+  DESTINATION ${DREAM_INSTALL_DATADIR}/python-runtime
+  FILES_MATCHING PATTERN "*.py"
+  PATTERN "__pycache__" EXCLUDE)
 install(FILES ${DREAM_BRIDGE_PYTHON_DIR}/run_submission.py DESTINATION ${DREAM_INSTALL_DATADIR}/bridge)
 install(DIRECTORY ${DREAM_BRIDGE_PYTHON_DIR}/standin
   DESTINATION ${DREAM_INSTALL_DATADIR}/bridge

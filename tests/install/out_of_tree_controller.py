@@ -22,6 +22,8 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "integration"))
 from dreamtest import check, import_types, main, read_events, read_summary  # noqa: E402
 
+SOURCE_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+
 # What the example's orbit.yaml asks for: each robot starts facing +x, so its circle's centre
 # is RADIUS_M to the left (+y) of its start.
 CENTERS = [(-0.8, 0.0), (0.0, 0.0), (0.8, 0.0)]
@@ -135,6 +137,13 @@ def test(ctx):
     installed_files_are_there(prefix)
     tools_find_libraries_relative_to_themselves(ctx, prefix, args.build)
     dream = os.path.join(prefix, "bin", "dream")
+
+    # A Python controller runs with the installed tool alone (its runtime under share/dream).
+    python_dir = ctx.path("python_run")
+    ctx.run([dream, "run", os.path.join(SOURCE_DIR, "config", "go_to_goal_python.yaml"), "--out", python_dir, "-q"],
+            timeout=60, expect=0)
+    check(read_summary(python_dir)["robots_done"] == list(range(8)), "the installed dream's Python go_to_goal "
+                                                                     "did not bring every robot to its goal")
 
     project = build_example(ctx, args, prefix)
     run_dir = ctx.path("orbit_run")
