@@ -5,7 +5,8 @@
 #include "process_group.h"
 
 #if !defined(DREAM_BUILD_DIR) || !defined(DREAM_BIN_TO_DATA) || !defined(DREAM_BUILD_TYPES_JAR) || \
-    !defined(DREAM_BRIDGE_PYTHON_DIR) || !defined(DREAM_PYTHON_RUNTIME_DIR) || !defined(DREAM_PYTHON_TYPES_DIR)
+    !defined(DREAM_BRIDGE_PYTHON_DIR) || !defined(DREAM_PYTHON_RUNTIME_DIR) || !defined(DREAM_PYTHON_TYPES_DIR) || \
+    !defined(DREAM_PYTHON_HOST_MODULE) || !defined(DREAM_BIN_TO_LIB)
 #error "cli/CMakeLists.txt defines where the build tree and the installed data files are"
 #endif
 
@@ -32,5 +33,12 @@ std::string DataFiles::BridgePythonDir() { return Locate("bridge", DREAM_BRIDGE_
 std::string DataFiles::PythonRuntimeDir() { return Locate("python-runtime", DREAM_PYTHON_RUNTIME_DIR); }
 
 std::string DataFiles::PythonTypesDir() { return Locate("python", DREAM_PYTHON_TYPES_DIR); }
+
+std::string DataFiles::PythonHostModule() {
+  if (RunningFromBuildTree()) return DREAM_PYTHON_HOST_MODULE;
+  return (fs::path(SelfExecutable()).parent_path() / DREAM_BIN_TO_LIB / "libdream_python_host.so")
+      .lexically_normal()
+      .string();
+}
 
 }  // namespace dream::cli

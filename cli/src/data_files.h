@@ -19,6 +19,8 @@ class DataFiles {
   static std::string PythonRuntimeDir();
   /// The folder holding lcm-gen's Python types, their package `dream`.
   static std::string PythonTypesDir();
+  /// The Python agent host module (libdream_python_host.so), in lib/ when installed.
+  static std::string PythonHostModule();
   /// True when the running executable is the one in its build tree.
   static bool RunningFromBuildTree();
 

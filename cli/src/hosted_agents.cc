@@ -4,6 +4,7 @@
 #include "data_files.h"
 #include "dream/agents/controller_factory.h"
 #include "dream/agents/python_controller_spec.h"
+#include "python_host_library.h"
 
 namespace dream::cli {
 namespace {
@@ -14,7 +15,7 @@ agents::PythonAgentHost::Paths PythonPaths() { return {DataFiles::PythonRuntimeD
 
 void HostedAgents::Check(const config::RunConfig& config) {
   if (agents::IsPythonController(config)) {
-    agents::PythonAgentHost::Check(agents::PythonControllerSpecJson(config), PythonPaths());
+    PythonHostLibrary::Get().Check(agents::PythonControllerSpecJson(config), PythonPaths());
   } else {
     agents::ControllerFactory{config};
   }
@@ -23,8 +24,8 @@ void HostedAgents::Check(const config::RunConfig& config) {
 HostedAgents::HostedAgents(lcm::LcmBus& bus, const config::RunConfig& config, const std::vector<int>& robot_ids)
     : bus_(bus) {
   if (agents::IsPythonController(config)) {
-    python_ = std::make_unique<agents::PythonAgentHost>(bus, agents::PythonControllerSpecJson(config), robot_ids,
-                                                        NewAgentId(), PythonPaths());
+    python_ = PythonHostLibrary::Get().Create(bus, agents::PythonControllerSpecJson(config), robot_ids, NewAgentId(),
+                                              PythonPaths());
     return;
   }
   const agents::ControllerFactory factory(config);

@@ -125,76 +125,95 @@ PyObject* Attribute(PyObject* host, const char* name) {
   return value;
 }
 
-}  // namespace
-
-void PythonAgentHost::Check(const std::string& spec_json, const Paths& paths) {
-  PyRef result(PyObject_CallMethod(EmbeddedModule(paths), "check", "s", spec_json.c_str()));
-  if (result.get() == nullptr) ThrowPythonError("Python controller");
-}
-
-PythonAgentHost::PythonAgentHost(lcm::LcmBus& bus, const std::string& spec_json, const std::vector<int>& robot_ids,
-                                 int64_t agent_id, const Paths& paths) {
-  PyObject* module = EmbeddedModule(paths);
-  PyRef ids(PyList_New(0));
-  for (int id : robot_ids) {
-    PyRef item(PyLong_FromLong(id));
-    PyList_Append(ids.get(), item.get());
-  }
-  host_ = PyObject_CallMethod(module, "attach", "KssOL", static_cast<unsigned long long>(
-                                  reinterpret_cast<uintptr_t>(bus.c_handle())),
-                              bus.url().c_str(), spec_json.c_str(), ids.get(), static_cast<long long>(agent_id));
-  if (host_ == nullptr) ThrowPythonError("Python controller");
-}
-
-PythonAgentHost::~PythonAgentHost() {
-  if (host_ == nullptr) return;
-  PyRef closed(PyObject_CallMethod(host_, "close", nullptr));
-  if (closed.get() == nullptr) PyErr_Clear();
-  Py_DECREF(host_);
-}
-
-bool PythonAgentHost::Run(lcm::LcmBus& bus, const std::atomic<bool>& stop, double idle_timeout_s) {
-  using Clock = std::chrono::steady_clock;
-  auto last_activity = Clock::now();
-  long seen = -1;
-  while (!world_finished() && !stop.load()) {
-    bus.HandleSubscriptions(100);
-    PyRef poses(Attribute(host_, "poses_seen"));
-    const long now_seen = PyLong_AsLong(poses.get());
-    if (now_seen != seen) {
-      seen = now_seen;
-      last_activity = Clock::now();
-    } else if (std::chrono::duration<double>(Clock::now() - last_activity).count() > idle_timeout_s) {
-      spdlog::error("no DREAM_POSES for {:g} s on {}: is the simulator (dream sim) running on the same LCM URL?",
-                    idle_timeout_s, bus.url());
-      return false;
+/// PythonAgentHost over the embedded interpreter: every call goes to the
+/// Python host object (dream.embedded._EmbeddedHost).
+class EmbeddedPythonAgentHost final : public PythonAgentHost {
+ public:
+  EmbeddedPythonAgentHost(lcm::LcmBus& bus, const std::string& spec_json, const std::vector<int>& robot_ids,
+                          int64_t agent_id, const Paths& paths) {
+    PyObject* module = EmbeddedModule(paths);
+    PyRef ids(PyList_New(0));
+    for (int id : robot_ids) {
+      PyRef item(PyLong_FromLong(id));
+      PyList_Append(ids.get(), item.get());
     }
+    host_ = PyObject_CallMethod(module, "attach", "KssOL",
+                                static_cast<unsigned long long>(reinterpret_cast<uintptr_t>(bus.c_handle())),
+                                bus.url().c_str(), spec_json.c_str(), ids.get(), static_cast<long long>(agent_id));
+    if (host_ == nullptr) ThrowPythonError("Python controller");
   }
-  return world_finished();
-}
 
-bool PythonAgentHost::world_finished() const {
-  PyRef value(Attribute(host_, "world_finished"));
-  return PyObject_IsTrue(value.get()) == 1;
-}
+  ~EmbeddedPythonAgentHost() override {
+    PyRef closed(PyObject_CallMethod(host_, "close", nullptr));
+    if (closed.get() == nullptr) PyErr_Clear();
+    Py_DECREF(host_);
+  }
 
-int64_t PythonAgentHost::last_step_answered() const {
-  PyRef value(Attribute(host_, "last_step_answered"));
-  return PyLong_AsLongLong(value.get());
-}
+  EmbeddedPythonAgentHost(const EmbeddedPythonAgentHost&) = delete;
+  EmbeddedPythonAgentHost& operator=(const EmbeddedPythonAgentHost&) = delete;
 
-std::string PythonAgentHost::end_detail() const {
-  PyRef value(Attribute(host_, "end_detail"));
-  return TextOf(value.get());
-}
+  bool Run(lcm::LcmBus& bus, const std::atomic<bool>& stop, double idle_timeout_s) override {
+    using Clock = std::chrono::steady_clock;
+    auto last_activity = Clock::now();
+    long seen = -1;
+    while (!world_finished() && !stop.load()) {
+      bus.HandleSubscriptions(100);
+      PyRef poses(Attribute(host_, "poses_seen"));
+      const long now_seen = PyLong_AsLong(poses.get());
+      if (now_seen != seen) {
+        seen = now_seen;
+        last_activity = Clock::now();
+      } else if (std::chrono::duration<double>(Clock::now() - last_activity).count() > idle_timeout_s) {
+        spdlog::error("no DREAM_POSES for {:g} s on {}: is the simulator (dream sim) running on the same LCM URL?",
+                      idle_timeout_s, bus.url());
+        return false;
+      }
+    }
+    return world_finished();
+  }
 
-std::vector<std::string> PythonAgentHost::faults() const {
-  PyRef list(PyObject_CallMethod(host_, "fault_lines", nullptr));
-  if (list.get() == nullptr) ThrowPythonError("Python agent host: faults");
-  std::vector<std::string> lines;
-  const Py_ssize_t n = PyList_Size(list.get());
-  for (Py_ssize_t i = 0; i < n; ++i) lines.push_back(TextOf(PyList_GetItem(list.get(), i)));
-  return lines;
-}
+  bool world_finished() const override {
+    PyRef value(Attribute(host_, "world_finished"));
+    return PyObject_IsTrue(value.get()) == 1;
+  }
 
+  int64_t last_step_answered() const override {
+    PyRef value(Attribute(host_, "last_step_answered"));
+    return PyLong_AsLongLong(value.get());
+  }
+
+  std::string end_detail() const override {
+    PyRef value(Attribute(host_, "end_detail"));
+    return TextOf(value.get());
+  }
+
+  std::vector<std::string> faults() const override {
+    PyRef list(PyObject_CallMethod(host_, "fault_lines", nullptr));
+    if (list.get() == nullptr) ThrowPythonError("Python agent host: faults");
+    std::vector<std::string> lines;
+    const Py_ssize_t n = PyList_Size(list.get());
+    for (Py_ssize_t i = 0; i < n; ++i) lines.push_back(TextOf(PyList_GetItem(list.get(), i)));
+    return lines;
+  }
+
+ private:
+  PyObject* host_ = nullptr;
+};
+
+}  // namespace
 }  // namespace dream::agents
+
+// The module's entry points (PythonHostCheckFunction, PythonHostCreateFunction),
+// found with dlsym by the tools' PythonHostLibrary.
+extern "C" __attribute__((visibility("default"))) void dream_python_host_check(
+    const std::string& spec_json, const dream::agents::PythonAgentHost::Paths& paths) {
+  using dream::agents::PyRef;
+  PyRef result(PyObject_CallMethod(dream::agents::EmbeddedModule(paths), "check", "s", spec_json.c_str()));
+  if (result.get() == nullptr) dream::agents::ThrowPythonError("Python controller");
+}
+
+extern "C" __attribute__((visibility("default"))) std::unique_ptr<dream::agents::PythonAgentHost>
+dream_python_host_create(dream::lcm::LcmBus& bus, const std::string& spec_json, const std::vector<int>& robot_ids,
+                         int64_t agent_id, const dream::agents::PythonAgentHost::Paths& paths) {
+  return std::make_unique<dream::agents::EmbeddedPythonAgentHost>(bus, spec_json, robot_ids, agent_id, paths);
+}

@@ -2,12 +2,11 @@
 
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "dream/lcm/lcm_bus.h"
-
-struct _object;  // CPython's PyObject
 
 namespace dream::agents {
 
@@ -18,6 +17,10 @@ namespace dream::agents {
 /// of `dream run` share one memq:// queue, and `dream agent` hosts them on
 /// udpm like C++ agents. Same lockstep contract as AgentHost. Not thread
 /// safe: use it from the thread that handles the bus.
+///
+/// The implementation is a module the tools load only when a run's
+/// controller is Python (PythonHostLibrary in cli/), so C++ agents never map
+/// libpython: hence an interface and two C entry points.
 class PythonAgentHost {
  public:
   /// Where the Python runtime (the folder holding package `dream`) and
@@ -27,33 +30,31 @@ class PythonAgentHost {
     std::string lcmtypes_dir;
   };
 
-  /// Loads the controller's module and class and checks its own keys
-  /// against the class's KEYS, without touching a bus.
-  /// @throws config::ConfigError naming file, line and key (or the module's
-  ///         own error with its file and line); std::runtime_error when the
-  ///         Python runtime cannot start.
-  static void Check(const std::string& spec_json, const Paths& paths);
-
-  /// Builds the agents of `robot_ids` from `spec_json` (PythonControllerSpecJson)
-  /// and subscribes them on `bus`. @throws as Check().
-  PythonAgentHost(lcm::LcmBus& bus, const std::string& spec_json, const std::vector<int>& robot_ids,
-                  int64_t agent_id, const Paths& paths);
-  ~PythonAgentHost();
-  PythonAgentHost(const PythonAgentHost&) = delete;
-  PythonAgentHost& operator=(const PythonAgentHost&) = delete;
+  virtual ~PythonAgentHost() = default;
 
   /// Handles `bus` until the world reports FINISHED or ABORTED (true), or
   /// `stop` is set or no DREAM_POSES came for `idle_timeout_s` (false).
-  bool Run(lcm::LcmBus& bus, const std::atomic<bool>& stop, double idle_timeout_s);
-
-  bool world_finished() const;
-  int64_t last_step_answered() const;
-  std::string end_detail() const;
+  virtual bool Run(lcm::LcmBus& bus, const std::atomic<bool>& stop, double idle_timeout_s) = 0;
+  virtual bool world_finished() const = 0;
+  virtual int64_t last_step_answered() const = 0;
+  virtual std::string end_detail() const = 0;
   /// Robots whose controller failed, "robot <id>: <FILE:LINE: ...>" each.
-  std::vector<std::string> faults() const;
-
- private:
-  _object* host_ = nullptr;
+  virtual std::vector<std::string> faults() const = 0;
 };
+
+/// dream_python_host_check: loads the controller's module and class and
+/// checks its own keys against the class's KEYS, without touching a bus.
+/// @throws config::ConfigError naming file, line and key (or the module's own
+///         error with its file and line); std::runtime_error when the Python
+///         runtime cannot start.
+using PythonHostCheckFunction = void (*)(const std::string& spec_json, const PythonAgentHost::Paths& paths);
+inline constexpr const char* kPythonHostCheckSymbol = "dream_python_host_check";
+
+/// dream_python_host_create: the agents of `robot_ids` built from `spec_json`
+/// (PythonControllerSpecJson), subscribed on `bus`. @throws as the check.
+using PythonHostCreateFunction = std::unique_ptr<PythonAgentHost> (*)(
+    lcm::LcmBus& bus, const std::string& spec_json, const std::vector<int>& robot_ids, int64_t agent_id,
+    const PythonAgentHost::Paths& paths);
+inline constexpr const char* kPythonHostCreateSymbol = "dream_python_host_create";
 
 }  // namespace dream::agents
