@@ -56,6 +56,17 @@ std::vector<ExportProblem> PreValidate(const RunTrack& track, const RunEnd& end,
                             "); its recording stops early",
                         "run the experiment to its end and export that run"});
   }
+  for (int id : end.lost_robot_ids) {
+    const auto fault = end.robot_faults.find(id);
+    if (fault != end.robot_faults.end()) {
+      problems.push_back({"lost_robot", id, -1, -1, "its controller failed at " + fault->second,
+                          "fix the controller and run again (summary.json robot_faults has the error)"});
+    } else {
+      problems.push_back({"lost_robot", id, -1, -1,
+                          "was lost at the end of the run: its agent fell silent, so the world stopped it",
+                          "run again with every robot's agent running to the end"});
+    }
+  }
 
   // Start poses: inside the arena with the whole robot, far enough apart.
   const sim::Arena& arena = world.arena;

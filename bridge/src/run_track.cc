@@ -7,6 +7,7 @@
 #include "dream/lcm/log_reader.h"
 #include "dream/obstacles_t.hpp"
 #include "dream/robot_poses_t.hpp"
+#include "dream/robot_fault_t.hpp"
 #include "dream/run_status_t.hpp"
 
 namespace dream::bridge {
@@ -20,6 +21,8 @@ RunTrack ReadRunTrack(const std::string& log_path, RunEnd* end) {
   robot_poses_t poses;
   obstacles_t obstacle_message;
   run_status_t status;
+  robot_fault_t fault;
+  std::map<int, std::string> faults;
   auto fail = [&log_path](const std::string& problem) { throw std::runtime_error(log_path + ": " + problem); };
   while (reader.Next(&record)) {
     const int size = static_cast<int>(record.data.size());
@@ -63,6 +66,20 @@ RunTrack ReadRunTrack(const std::string& log_path, RunEnd* end) {
       end->step = status.step;
       end->violations = sim::ViolationCounts{status.boundary_errors, status.collision_errors, status.actuator_errors,
                                              status.obstacle_collisions};
+      end->lost_robot_ids.assign(status.lost_robot_ids.begin(), status.lost_robot_ids.end());
+    } else if (end != nullptr && record.channel.rfind(lcm::kFaultChannelPrefix, 0) == 0) {
+      // Only a fault whose robot the world then lost counts (below): one from
+      // another agent, which the world refused, names a robot that drove on.
+      const std::optional<int> id = lcm::RobotIdFromChannel(record.channel, lcm::kFaultChannelPrefix);
+      if (id && lcm::Decode(record.data.data(), size, &fault) && fault.robot_id == *id && faults.count(*id) == 0) {
+        constexpr size_t kMaxDetail = 2000;
+        faults[*id] = "step " + std::to_string(fault.step) + ": " + fault.detail.substr(0, kMaxDetail);
+      }
+    }
+  }
+  if (end != nullptr) {
+    for (int id : end->lost_robot_ids) {
+      if (faults.count(id) != 0) end->robot_faults[id] = faults[id];
     }
   }
   if (track.utime.empty()) fail("the log holds no DREAM_POSES messages: it is not a run log");

@@ -133,8 +133,13 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
   }
   // The controller strategy runs until every robot is done, at most the run's step limit.
   const int64_t steps = controller && python_kind ? RunStepLimit(run_dir, config) : track.last_step();
+  std::vector<std::string> forced;  // lost robots, exported anyway with --force
   for (ExportProblem& problem : PreValidate(track, end, config.world, options.settle_max_steps, LabLimits{}, steps)) {
-    problems.push_back(std::move(problem));
+    if (options.force && problem.rule == "lost_robot") {
+      forced.push_back(problem.Text() + " (exported anyway: --force)");
+    } else {
+      problems.push_back(std::move(problem));
+    }
   }
   if (!problems.empty()) throw ExportRefused(problems);
   ControllerFiles controller_files;
@@ -245,7 +250,8 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
             (params.stop_when_done ? ", or earlier once every robot reports done" : "") + " (the simulated run took " +
             std::to_string(recorded_steps) + ")\n";
   }
-  summary.warnings = StartUpWarnings(track);
+  summary.warnings = forced;
+  for (std::string& warning : StartUpWarnings(track)) summary.warnings.push_back(std::move(warning));
   for (const std::string& warning : summary.warnings) text += "\nWARNING: " + warning + "\n";
   text += "\nThe script saves dream_result.npy (poses, commands sent, wall-clock stamps; rewritten\n"
           "every " + std::to_string(options.save_every_steps) +

@@ -96,6 +96,7 @@ int RunExport(const ExportArgs& args) {
   options.strategy = bridge::ParseStrategy(args.strategy);
   options.barriers = args.barriers;
   options.settle_max_steps = args.settle_steps;
+  options.force = args.force;
   options.python_runtime_dir = DataFiles::PythonRuntimeDir();
   const std::string config_path =
       args.config_path.empty() ? (fs::path(args.run_dir) / "config.yaml").string() : args.config_path;
@@ -320,6 +321,9 @@ void DeclareBridgeCommands(CommandLine& line) {
                              "controller: the run's Python controller itself, every step on the lab's poses")
       ->check(CLI::IsMember({"track", "replay", "controller"}))
       ->capture_default_str();
+  export_command->add_flag("--force", export_args->force,
+                           "Export although robots were lost at the end of the run (a controller failed or an agent "
+                           "fell silent); those problems are printed as warnings");
   export_command->add_flag("--barriers", export_args->barriers,
                            "Pass commands through the Robotarium's barrier certificates (safety layer)");
   export_command->add_option("--settle-steps", export_args->settle_steps,

@@ -79,6 +79,7 @@ struct ExportArgs {
   std::string strategy = "track";
   bool barriers = false;
   int settle_steps = 240;
+  bool force = false;           ///< export although robots were lost
 };
 
 struct ImportArgs {

@@ -237,7 +237,12 @@ def failing_controller(case):
     config = faulty(case)
     # The simulated run loses robot 2 at step 40 and fails (exit 4) but records every step.
     sim_dir = case.simulate(config, "faulty", expect=4)
-    export_dir, _ = case.export(sim_dir, "faulty")
+    # Refused as it is (the lab would run a controller known to fail), exported with --force.
+    _, output = case.export(sim_dir, "faulty", expect=3)
+    check("lost_robot: robot 2" in output and "ZeroDivisionError" in output,
+          "faulty: the refusal does not name robot 2 and its error: " + output)
+    export_dir, output = case.export(sim_dir, "faulty", extra=["--force"])
+    check("WARNING: lost_robot: robot 2" in output, "faulty: --force does not warn of the lost robot: " + output)
     report, stdout, poses, workdir = case.run_script(export_dir, "faulty")
     check(report["finished_line"].startswith("DREAM: finished: 3 robots, 80 experiment steps"),
           "faulty: the script did not run to its end: " + report["finished_line"])
@@ -268,7 +273,7 @@ def injection(case):
         check(payload in f.read(), "the injection test did not put its payload into the config")
     sim_dir = case.simulate(config, "hostile", expect=4)
     check(not os.path.exists(marker), "code from the config ran in dream run")
-    export_dir, _ = case.export(sim_dir, "hostile")
+    export_dir, _ = case.export(sim_dir, "hostile", extra=["--force"])
     upload = os.path.join(export_dir, "upload")
     with open(os.path.join(upload, "dream_main.py")) as f, \
             open(os.path.join(case.args.source, "bridge", "python", "dream_main.py")) as g:
@@ -308,8 +313,8 @@ def refusals(case):
         with open(config, "w") as f:
             f.write(FAULTY_CONFIG.format(description="clash", module=module, label="x"))
         out = case.path("clash_export")
-        output, _ = run([case.dream, "export", sim_dir, "--out", out, "--strategy", "controller", "--config",
-                         config], expect=1)
+        output, _ = run([case.dream, "export", sim_dir, "--out", out, "--strategy", "controller", "--force",
+                         "--config", config], expect=1)
         check("controller.module" in output and module in output and "rename" in output,
               "module %s: %s" % (module, output))
         check(not os.path.exists(out), "a refused export wrote files")

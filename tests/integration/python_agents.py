@@ -12,7 +12,8 @@
    the example module as it is.
 4. A controller that raises: that robot is marked lost at the step it failed and stops; the
    other robots go on to the end; summary.json's robot_faults names the robot, the step and the
-   module's file:line; the printed report says so; exit 4.
+   module's file:line; the printed report says so; exit 4; `dream export` refuses the run,
+   naming the robot and the error.
 5. Config mistakes stop the run before anything starts (exit 1, no run folder), each naming
    file:line and key: an unknown own key, a bad value of a declared key, a missing module, a
    class that is not in the module, a class that is not a dream.Robot.
@@ -157,6 +158,14 @@ def test(context, args):
                     if event.channel == "DREAM_FAULT_2"]
     check(len(fault_events) == 1, f"{len(fault_events)} DREAM_FAULT_2 events in the log, expected 1")
     check(dream.robot_fault_t.decode(fault_events[0].data).step == 30, "DREAM_FAULT_2 does not carry step 30")
+
+    # ... and such a run is not exported: the lab would run a controller known to fail.
+    code, output = context.run([args.dream, "export", faulty_out, "--strategy", "controller",
+                                "--out", context.path("faulty_export")], timeout=60)
+    check(code == 3, f"dream export of a run with a failed controller exited {code}, expected 3: {output[-300:]}")
+    check("lost_robot: robot 2" in output and "faulty.py:10: in update: ZeroDivisionError" in output,
+          f"the refusal does not name the robot and the error: {output[-400:]}")
+    check(not os.path.exists(context.path("faulty_export", "upload")), "a refused export wrote its files")
 
     # 5. Config mistakes, each with file:line and key.
     cases = [

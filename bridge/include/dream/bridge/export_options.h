@@ -45,6 +45,9 @@ struct ExportOptions {
   /// Strategy controller: the folder holding the Python runtime's package
   /// `dream` (python/ of the source tree), whose modules the submission ships.
   std::string python_runtime_dir;
+  /// Export although robots were lost at the end of the run (`lost_robot`):
+  /// those problems become warnings in the output and UPLOAD.txt.
+  bool force = false;
 
   /// False with a message naming the field, its value and the allowed range.
   bool IsValid(std::string* error) const;

@@ -34,7 +34,7 @@ struct LabLimits {
 
 /// One reason the lab would refuse (or fail) the run.
 struct ExportProblem {
-  std::string rule;       ///< strategy, robots, duration, finished, start_inside_arena, start_spacing, boundary, collision, obstacle
+  std::string rule;       ///< strategy, robots, duration, finished, lost_robot, start_inside_arena, start_spacing, boundary, collision, obstacle
   int robot = -1;         ///< the robot concerned, -1 for none
   int other = -1;         ///< the second robot of a pair, or the obstacle id
   int64_t step = -1;      ///< the first step concerned, -1 for none
@@ -47,7 +47,8 @@ struct ExportProblem {
 
 /// Checks a recorded run against the lab's rules, as the lab would judge the
 /// submission made from it: 1..max_robots robots; (steps + settle steps) x
-/// time step within the cap; a finished run; start poses inside the arena
+/// time step within the cap; a finished run with no robot lost at its end
+/// (agent silent, controller failed); start poses inside the arena
 /// and far enough apart for the start-up routine; and no boundary, collision
 /// or virtual-obstacle error at any step (re-checked on the recorded poses,
 /// so each problem names its first robot and step). Empty when the run can

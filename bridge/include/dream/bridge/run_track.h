@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,10 @@ struct RunEnd {
   std::string detail;
   sim::ViolationCounts violations{};
   int64_t step = -1;
+  /// Robots lost at the end: their agent fell silent or their controller failed.
+  std::vector<int> lost_robot_ids;
+  /// Of those, the ones whose agent said why on DREAM_FAULT_<id>: id -> "step k: detail".
+  std::map<int, std::string> robot_faults;
 };
 
 /// Reads DREAM_POSES (the poses, and the velocities of the step that led to
