@@ -62,7 +62,7 @@ bool IsIdentifier(const std::string& text) {
 
 const std::vector<std::string>& FlatPythonRuntime::ShippedModules() {
   // robot_agent and controller_spec drive the controller; the others are what
-  // they and a controller import. Never lcm, agent_host, embedded, agent: the
+  // they and a controller import. Never lcm, agent_host, embedded: the
   // LCM transport and hosting, which the script replaces.
   static const std::vector<std::string> kModules = {"motion", "robot",           "sensors", "radios",  "timer",
                                                     "robot_agent", "controller_spec", "hrvo", "__init__"};
