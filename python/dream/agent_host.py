@@ -73,9 +73,11 @@ class _RobotSlot:
 
 
 class AgentHost:
-    """Hosts `agents` (dream.robot_agent.RobotAgent) on `bus` (dream.lcm.Lcm)."""
+    """Hosts `agents` (dream.robot_agent.RobotAgent) of a run of `num_robots` robots on `bus`
+    (dream.lcm.Lcm). Radio messages from senders outside the run are dropped, so forged
+    sender ids cannot grow the mailboxes."""
 
-    def __init__(self, bus, agents, agent_id):
+    def __init__(self, bus, agents, agent_id, num_robots):
         (self._obstacles_t, self._radio_message_t, self._robot_fault_t, self._robot_poses_t,
          self._run_status_t, self._velocity_command_t) = _types()
         ids = [agent.id for agent in agents]
@@ -83,6 +85,7 @@ class AgentHost:
             raise ValueError(f"a robot is listed twice for one agent host: {ids}")
         self.bus = bus
         self.agent_id = int(agent_id)
+        self.num_robots = int(num_robots)
         self.robots = [_RobotSlot(agent) for agent in agents]
         self.obstacles = []
         self.world_finished = False
@@ -131,6 +134,8 @@ class AgentHost:
         message = self._radio_message_t.decode(data)
         if match is None or int(match.group(1)) != message.sender_id:
             raise ValueError("radio message does not match its channel")
+        if not 0 <= message.sender_id < self.num_robots:
+            raise ValueError(f"sender {message.sender_id} is not a robot of this run (0..{self.num_robots - 1})")
         heard = RadioMessage(message.sender_id, message.step, bytes(message.payload))
         for robot in self.robots:
             robot.agent.receive(heard)

@@ -61,4 +61,4 @@ def attach(lcm_address, url, spec_json, robot_ids, agent_id):
     """The agents of `robot_ids`, subscribed on the lcm_t at `lcm_address`."""
     spec = ControllerSpec.from_json(spec_json)
     agents = [spec.make_agent(robot_id) for robot_id in robot_ids]
-    return _EmbeddedHost(Lcm.wrap(lcm_address, url), agents, agent_id)
+    return _EmbeddedHost(Lcm.wrap(lcm_address, url), agents, agent_id, spec.num_robots)

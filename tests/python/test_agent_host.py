@@ -85,7 +85,7 @@ class AgentHostTest(unittest.TestCase):
     def setUp(self):
         self.bus = MemoryBus()
         agents = [RobotAgent(Counter(i, dream.RobotParams(), {}, 2), radio=RangeRadio(1.0)) for i in range(2)]
-        self.host = AgentHost(self.bus, agents, agent_id=77)
+        self.host = AgentHost(self.bus, agents, agent_id=77, num_robots=2)
         self.agents = agents
 
     def commands(self, published):
@@ -124,9 +124,12 @@ class AgentHostTest(unittest.TestCase):
         radio = dream.radio_message_t()
         radio.sender_id, radio.payload, radio.payload_size = 5, b"\x01", 1
         self.bus.deliver("DREAM_RADIO_4", radio.encode())  # sender 5 on robot 4's channel
+        radio.sender_id = 999999
+        self.bus.deliver("DREAM_RADIO_999999", radio.encode())  # no such robot in this run
         self.assertEqual(self.bus.take(), [])
         self.assertEqual(self.host.bad_messages,
-                         {"DREAM_POSES": 4, "DREAM_OBSTACLES": 1, "DREAM_RADIO_4": 1})
+                         {"DREAM_POSES": 4, "DREAM_OBSTACLES": 1, "DREAM_RADIO_4": 1, "DREAM_RADIO_999999": 1})
+        self.assertEqual([len(agent.mailbox._by_sender) for agent in self.agents], [0, 0])  # nothing stored
         self.bus.deliver("DREAM_POSES", poses(1))  # the run goes on
         self.assertEqual(len(self.commands(self.bus.take())), 2)
 
