@@ -97,21 +97,29 @@ void LcmBus::Dispatch(const ::lcm::ReceiveBuffer* buffer, const std::string& cha
   bus->Deliver(channel, buffer->data, static_cast<int>(buffer->data_size));
 }
 
-const std::vector<size_t>& LcmBus::SubscribersOf(const std::string& channel) {
-  auto found = routes_.find(channel);
-  if (found != routes_.end()) return found->second;
+std::vector<size_t> LcmBus::MatchSubscribers(const std::string& channel) const {
   std::vector<size_t> matching;
   for (size_t i = 0; i < subscribers_.size(); ++i) {
     if (std::regex_match(channel, subscribers_[i].channel_regex)) matching.push_back(i);
   }
-  return routes_.emplace(channel, std::move(matching)).first->second;
+  return matching;
 }
 
 void LcmBus::Deliver(const std::string& channel, const void* data, int size) {
   // By index up to the count at arrival, as LCM does: a handler that
   // subscribes appends to this route, and the newcomer starts with the next
   // message. (unordered_map keeps references to its values valid.)
-  const std::vector<size_t>& targets = SubscribersOf(channel);
+  auto found = routes_.find(channel);
+  if (found == routes_.end() && routes_.size() < kMaxRoutedChannels) {
+    found = routes_.emplace(channel, MatchSubscribers(channel)).first;
+  }
+  // Past the cap (made-up channel names) the route is matched per message and not kept.
+  std::vector<size_t> uncached;
+  if (found == routes_.end()) {
+    uncached = MatchSubscribers(channel);
+    ++uncached_deliveries_;
+  }
+  const std::vector<size_t>& targets = found != routes_.end() ? found->second : uncached;
   const size_t count = targets.size();
   for (size_t k = 0; k < count; ++k) {
     const size_t index = targets[k];

@@ -4,6 +4,7 @@
 #include <spdlog/sinks/ostream_sink.h>
 #include <spdlog/spdlog.h>
 
+#include <set>
 #include <sstream>
 
 #include "dream/agents/byte_reader.h"
@@ -210,6 +211,41 @@ TEST_F(AgentHostTest, BadNeighbourPayloadsAreDroppedByTheRobot) {
   Drain();
   EXPECT_EQ(host.agent(0).robot().bad_radio_messages(), 1);
   EXPECT_EQ(host.bad_messages().count(lcm::RadioChannel(5)), 1);
+}
+
+TEST_F(AgentHostTest, RadioFromSendersOutsideTheRunIsCountedNotKept) {
+  int calls = 0;
+  std::vector<std::unique_ptr<RobotAgent>> agents;
+  agents.push_back(MakeAgent(0, &calls));
+  AgentHost host(bus_, std::move(agents), 1);
+  lcm::Publish(bus_, lcm::kPosesChannel, Poses(1, 3));
+  for (int sender : {2, 3, 1000}) {
+    radio_message_t message = UndecodableRadioMessage(sender);
+    message.agent_id = 77;
+    lcm::Publish(bus_, lcm::RadioChannel(sender), message);
+  }
+  Drain();
+  EXPECT_EQ(host.bad_messages().count(lcm::RadioChannel(2)), 0);  // a robot of the run
+  EXPECT_EQ(host.bad_messages().count(lcm::RadioChannel(3)), 1);
+  EXPECT_EQ(host.bad_messages().count(lcm::RadioChannel(1000)), 1);
+  EXPECT_EQ(host.bad_messages().senders().at(lcm::RadioChannel(1000)), std::set<int64_t>{77});
+}
+
+TEST_F(AgentHostTest, ForgedCountsOnTheWorldsChannelsAreCountedAndTheHostCarriesOn) {
+  int calls = 0;
+  std::vector<std::unique_ptr<RobotAgent>> agents;
+  agents.push_back(MakeAgent(0, &calls));
+  AgentHost host(bus_, std::move(agents), 1);
+  // The 48-byte DREAM_POSES: num_robots = 2^28 after the fingerprint, utime and step.
+  std::vector<uint8_t> poses(48, 0);
+  const robot_poses_t empty{};
+  empty.encode(poses.data(), 0, empty.getEncodedSize());
+  poses[24] = 0x10;
+  bus_.Publish(lcm::kPosesChannel, poses.data(), static_cast<int>(poses.size()));
+  lcm::Publish(bus_, lcm::kPosesChannel, Poses(1, 3));
+  Drain();
+  EXPECT_EQ(host.bad_messages().count(lcm::kPosesChannel), 1);
+  EXPECT_EQ(calls, 1);  // the real step after the forged one was answered
 }
 
 /// Routes spdlog's default logger into a string while alive.

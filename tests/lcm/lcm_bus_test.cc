@@ -37,6 +37,22 @@ TEST(LcmBusTest, TypedPublishSubscribeOverMemq) {
   EXPECT_EQ(bad.total(), 0);
 }
 
+TEST(LcmBusTest, RoutesOfMadeUpChannelsPastTheCapAreNotKeptButStillDelivered) {
+  LcmBus bus("memq://");
+  int delivered = 0;
+  bus.Subscribe("FLOOD_.*", [&](const std::string&, const void*, int) { ++delivered; });
+  const int channels = static_cast<int>(LcmBus::kMaxRoutedChannels) + 100;
+  const char byte = 0;
+  for (int i = 0; i < channels; ++i) {
+    bus.Publish("FLOOD_" + std::to_string(i), &byte, 1);
+    DrainBus(bus);  // memq queues per subscription: keep it short
+  }
+  bus.Publish("FLOOD_0", &byte, 1);  // a cached route
+  DrainBus(bus);
+  EXPECT_EQ(delivered, channels + 1);
+  EXPECT_EQ(bus.uncached_deliveries(), 100);  // the channels past the cap, matched per message
+}
+
 TEST(LcmBusTest, UndecodableMessagesAreCountedPerChannelNotDelivered) {
   LcmBus bus("memq://");
   BadMessageLog bad;

@@ -8,6 +8,7 @@
 
 #include "dream/lcm/channels.h"
 #include "dream/lcm/lcm_typed.h"
+#include "dream/lcm/message_limits.h"
 #include "dream/obstacles_t.hpp"
 #include "dream/robot_poses_t.hpp"
 
@@ -79,7 +80,19 @@ void AgentHost::OnRadio(const std::string& channel, const radio_message_t& messa
   const std::optional<int> sender = lcm::RobotIdFromChannel(channel, lcm::kRadioChannelPrefix);
   if (!sender || *sender != message.sender_id || message.payload_size < 0 ||
       message.payload.size() != static_cast<size_t>(message.payload_size)) {
-    bad_messages_.Report(channel, "radio message does not match its channel or payload size");
+    bad_messages_.Report(channel, "radio message does not match its channel or payload size", message.agent_id);
+    return;
+  }
+  // Every sender gets a mailbox slot in each hosted robot: only the run's
+  // robots may have one, or forged ids would grow memory without bound.
+  // Before the first DREAM_POSES the run's size is unknown; the message
+  // limit still bounds it.
+  const int run_robots = saw_any_poses_ ? world_.num_robots() : lcm::MessageLimits::kRobots;
+  if (message.sender_id >= run_robots) {
+    bad_messages_.Report(channel,
+                         "radio sender " + std::to_string(message.sender_id) + " is not a robot of this run (" +
+                             std::to_string(run_robots) + " robots)",
+                         message.agent_id);
     return;
   }
   for (RobotSlot& robot : robots_) {
@@ -135,6 +148,7 @@ void AgentHost::OnPoses(const std::string& channel, const robot_poses_t& poses) 
     return;
   }
   world_.step = poses.step;
+  saw_any_poses_ = true;
   world_.poses.resize(n);
   world_.velocities.resize(n);
   for (size_t i = 0; i < n; ++i) {

@@ -37,6 +37,7 @@ std::string RunSummaryJson(const config::RunConfig& config, const RunOutcome& ou
   json["robot_faults"] = faults;
   json["robots_done"] = outcome.robots_done;
   json["bad_messages"] = outcome.bad_messages;
+  json["bad_message_senders"] = outcome.bad_message_senders;
   json["handler_failures"] = outcome.handler_failures;
   json["log"] = log_file_name;
   json["log_events"] = outcome.log_events;

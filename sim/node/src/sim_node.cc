@@ -97,24 +97,28 @@ std::string SimNode::RecorderFailureReason() const {
   return "the run log could not be written at step " + std::to_string(step) + ": " + recorder_->failure();
 }
 
-void SimNode::Reject(const std::string& channel, const std::string& reason) {
+void SimNode::Reject(const std::string& channel, const std::string& reason, int64_t agent_id) {
   ++rejected_commands_;
   // Rejections are the user's bug; say it once per channel, then every 100th.
-  bad_messages_.Report(channel, "rejected command: " + reason);
+  bad_messages_.Report(channel, "rejected command: " + reason, agent_id);
 }
 
 void SimNode::OnFault(const std::string& channel, const robot_fault_t& fault) {
   const std::optional<int> id = lcm::RobotIdFromChannel(channel, lcm::kFaultChannelPrefix);
   if (!id || *id != fault.robot_id || *id >= world_.num_robots()) {
-    bad_messages_.Report(channel, "robot fault for robot " + std::to_string(fault.robot_id) +
-                                      " does not match its channel or this run's robots");
+    bad_messages_.Report(channel,
+                         "robot fault for robot " + std::to_string(fault.robot_id) +
+                             " does not match its channel or this run's robots",
+                         fault.agent_id);
     return;
   }
   RobotSlot& robot = robots_[static_cast<size_t>(*id)];
   // Only the agent driving the robot may give it up.
   if (robot.owned && robot.owner_agent_id != fault.agent_id) {
-    bad_messages_.Report(channel, "robot fault from agent " + std::to_string(fault.agent_id) +
-                                      ", which does not drive robot " + std::to_string(*id));
+    bad_messages_.Report(channel,
+                         "robot fault from agent " + std::to_string(fault.agent_id) +
+                             ", which does not drive robot " + std::to_string(*id),
+                         fault.agent_id);
     return;
   }
   if (robot_faults_.count(*id) != 0) return;  // said once is enough
@@ -131,18 +135,18 @@ void SimNode::OnFault(const std::string& channel, const robot_fault_t& fault) {
 void SimNode::OnCommand(const std::string& channel, const velocity_command_t& command) {
   const std::optional<int> channel_id = lcm::RobotIdFromCommandChannel(channel);
   if (!channel_id) {
-    Reject(channel, "channel name must be DREAM_CMD_<robot id>");
+    Reject(channel, "channel name must be DREAM_CMD_<robot id>", command.agent_id);
     return;
   }
   const int id = *channel_id;
   if (id >= world_.num_robots()) {
     Reject(channel, "robot " + std::to_string(id) + " does not exist: this run has " +
                         std::to_string(world_.num_robots()) + " robots (ids 0.." +
-                        std::to_string(world_.num_robots() - 1) + ")");
+                        std::to_string(world_.num_robots() - 1) + ")", command.agent_id);
     return;
   }
   if (command.robot_id != id) {
-    Reject(channel, "payload robot_id " + std::to_string(command.robot_id) + " does not match the channel");
+    Reject(channel, "payload robot_id " + std::to_string(command.robot_id) + " does not match the channel", command.agent_id);
     return;
   }
   RobotSlot& robot = robots_[static_cast<size_t>(id)];
@@ -153,7 +157,7 @@ void SimNode::OnCommand(const std::string& channel, const velocity_command_t& co
   } else if (robot.owner_agent_id != command.agent_id) {
     Reject(channel, "robot " + std::to_string(id) + " is already driven by agent " +
                         std::to_string(robot.owner_agent_id) + "; a second agent " +
-                        std::to_string(command.agent_id) + " sends commands for it too. Stop one of them.");
+                        std::to_string(command.agent_id) + " sends commands for it too. Stop one of them.", command.agent_id);
     return;
   }
   const auto now = Clock::now();
@@ -167,7 +171,7 @@ void SimNode::OnCommand(const std::string& channel, const velocity_command_t& co
   if (lockstep && command.step < world_.step()) return;  // a late answer to a step already taken
   if (lockstep && command.step > world_.step()) {
     Reject(channel, "answers step " + std::to_string(command.step) + " but the world is at step " +
-                        std::to_string(world_.step()));
+                        std::to_string(world_.step()), command.agent_id);
     return;
   }
   if (lockstep && robot.answered) return;  // duplicate: the agent re-answered a resent step
@@ -177,7 +181,7 @@ void SimNode::OnCommand(const std::string& channel, const velocity_command_t& co
     Reject(channel, "absurd velocity v=" + std::to_string(command.v) + " m/s, w=" + std::to_string(command.w) +
                         " rad/s (limits " + std::to_string(options_.max_abs_v_mps) + ", " +
                         std::to_string(options_.max_abs_w_radps) + "); robot " + std::to_string(id) +
-                        " holds still");
+                        " holds still", command.agent_id);
     robot.v_mps = 0.0;
     robot.w_radps = 0.0;
   } else {
@@ -339,6 +343,7 @@ RunOutcome SimNode::Finish(RunOutcome::End end, const std::string& reason) {
     if (robots_[i].done) outcome.robots_done.insert(static_cast<int>(i));
   }
   outcome.bad_messages = bad_messages_.per_channel();
+  outcome.bad_message_senders = bad_messages_.senders();
   outcome.handler_failures = lcm_.handler_failures();
   outcome.log_events = recorder_ != nullptr ? recorder_->events_written() : 0;
   return outcome;

@@ -53,6 +53,10 @@ class LcmBus final : public LcmInterface {
   int HandleSubscriptions(int timeout_ms) override;
   const std::string& url() const override { return url_; }
   long handler_failures() const override { return handler_failures_; }
+  /// Channels whose routes are cached; beyond it, routes are matched per message.
+  static constexpr size_t kMaxRoutedChannels = 1024;
+  /// Messages delivered on channels past kMaxRoutedChannels (made-up names, usually).
+  long uncached_deliveries() const { return uncached_deliveries_; }
   /// LCM's C instance under this bus, for a host in another language in this
   /// process (the Python agents of `dream run`, dream::python_host) to
   /// subscribe and publish on the same queue. It stays this bus's: never
@@ -69,7 +73,7 @@ class LcmBus final : public LcmInterface {
   static constexpr const char* kStartUpChannel = "DREAM_LCMBUS_STARTING";
   static void Dispatch(const ::lcm::ReceiveBuffer* buffer, const std::string& channel, LcmBus* bus);
   void Deliver(const std::string& channel, const void* data, int size);
-  const std::vector<size_t>& SubscribersOf(const std::string& channel);
+  std::vector<size_t> MatchSubscribers(const std::string& channel) const;
   void DiscardStartUpLeftovers();
   void ResubscribeForAllHandlers();
 
@@ -79,9 +83,11 @@ class LcmBus final : public LcmInterface {
   // deque: a handler may subscribe while it runs; its own element must not move.
   std::deque<Subscriber> subscribers_;
   // channel -> indices into subscribers_; a run uses few channels, so regexes
-  // are matched once per channel, not once per message.
+  // are matched once per channel, not once per message. Capped at
+  // kMaxRoutedChannels: names come from the network.
   std::unordered_map<std::string, std::vector<size_t>> routes_;
   long handler_failures_ = 0;
+  long uncached_deliveries_ = 0;
 };
 
 }  // namespace dream::lcm

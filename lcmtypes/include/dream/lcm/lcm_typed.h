@@ -2,12 +2,14 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "dream/lcm/bad_message_log.h"
 #include "dream/lcm/lcm_interface.h"
+#include "dream/lcm/wire_layout_of.h"
 
 namespace dream::lcm {
 
@@ -22,16 +24,29 @@ void Publish(LcmInterface& lcm, const std::string& channel, const Message& messa
   lcm.Publish(channel, buffer.data(), size);
 }
 
-/// Decodes `size` bytes into `message`; false when the bytes are not a
-/// complete `Message` (wrong fingerprint, truncated, trailing garbage).
+/// Decodes `size` bytes into `message`; returns why they are not one complete
+/// `Message` (wrong fingerprint, a count over its limit or over the bytes,
+/// truncated, trailing garbage), or nothing on success. The bytes are checked
+/// against the type's WireLayout first, so the lcm-gen decoder only ever sees
+/// counts the bytes can hold: a forged message costs no more memory than its
+/// own size. Every decode of a dream message goes through here.
+template <typename Message>
+std::optional<std::string> DecodeProblem(const void* data, int size, Message* message) {
+  if (std::optional<std::string> problem = WireLayoutOf<Message>().Problem(data, size)) return problem;
+  if (message->decode(data, 0, size) != size) return std::string("refused by the lcm-gen decoder");
+  return std::nullopt;
+}
+
+/// DecodeProblem() as a yes or no.
 template <typename Message>
 bool Decode(const void* data, int size, Message* message) {
-  return message->decode(data, 0, size) == size;
+  return !DecodeProblem(data, size, message).has_value();
 }
 
 /// Subscribes `handler` to decoded `Message`s on channels matching
 /// `channel_regex`. Undecodable messages are reported to `bad_messages`
-/// (naming the channel and the expected type) and dropped.
+/// (naming the channel, the expected type, what was wrong and, when the bytes
+/// reach it, the sender's agent_id) and dropped.
 template <typename Message>
 void Subscribe(LcmInterface& lcm, const std::string& channel_regex,
                std::function<void(const std::string& channel, const Message&)> handler,
@@ -39,9 +54,11 @@ void Subscribe(LcmInterface& lcm, const std::string& channel_regex,
   lcm.Subscribe(channel_regex, [handler = std::move(handler), &bad_messages](
                                    const std::string& channel, const void* data, int size) {
     Message message;
-    if (!Decode(data, size, &message)) {
-      bad_messages.Report(channel, "cannot decode " + std::to_string(size) + " bytes as " +
-                                       Message::getTypeName());
+    if (std::optional<std::string> problem = DecodeProblem(data, size, &message)) {
+      bad_messages.Report(channel,
+                          "cannot decode " + std::to_string(size) + " bytes as " + Message::getTypeName() + ": " +
+                              *problem,
+                          WireLayoutOf<Message>().AgentIdOf(data, size));
       return;
     }
     handler(channel, message);

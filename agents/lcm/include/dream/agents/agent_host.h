@@ -35,7 +35,9 @@ namespace dream::agents {
 /// decode as LCM types here (bad_messages()), and radio payloads a hosted
 /// robot could not decode (bad_radio_payloads(i), by the sender's channel).
 /// Both are logged the first time on a channel and then every 100th; the
-/// payload totals once more per robot when the host is destroyed.
+/// payload totals once more per robot when the host is destroyed. Radio
+/// messages from senders outside the run (ids past DREAM_POSES' count) are
+/// counted as bad too, so forged senders cannot grow the mailboxes.
 class AgentHost {
  public:
   /// @param agent_id identifies this host to the world (two hosts may not
@@ -90,6 +92,7 @@ class AgentHost {
   std::string end_detail_;
   int64_t last_step_answered_ = -1;
   bool saw_poses_since_check_ = false;
+  bool saw_any_poses_ = false;  // world_ holds the run's robot count
 };
 
 }  // namespace dream::agents

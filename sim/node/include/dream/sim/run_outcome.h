@@ -25,7 +25,11 @@ struct RunOutcome {
   /// id -> "step k: what failed". They are lost and stopped from that step.
   std::map<int, std::string> robot_faults;
   std::set<int> robots_done;         ///< robots whose last command said done
-  std::map<std::string, long> bad_messages;  ///< undecodable messages per channel
+  /// Undecodable or refused messages per channel; past lcm::BadMessageLog's
+  /// cap the rest are counted under "(other channels)".
+  std::map<std::string, long> bad_messages;
+  /// Per channel of bad_messages, the agent ids that sent them (when the messages carry one).
+  std::map<std::string, std::set<int64_t>> bad_message_senders;
   long handler_failures = 0;         ///< exceptions caught in message handlers on the run's bus
   int64_t log_events = 0;            ///< events written to the run log
 

@@ -83,7 +83,7 @@ class SimNode {
   void Record(const std::string& channel, const void* data, int size);
   bool RecorderFailed() const;
   std::string RecorderFailureReason() const;
-  void Reject(const std::string& channel, const std::string& reason);
+  void Reject(const std::string& channel, const std::string& reason, int64_t agent_id);
   void PublishStep(bool record);
   void PublishStatus(int8_t state, const std::string& detail, bool record);
   template <typename Message>

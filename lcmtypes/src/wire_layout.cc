@@ -1,0 +1,125 @@
+#include "dream/lcm/wire_layout.h"
+
+#include <stdexcept>
+
+namespace dream::lcm {
+namespace {
+
+constexpr int64_t kFingerprintBytes = 8;
+
+int64_t BigEndian(const uint8_t* bytes, int count) {
+  uint64_t value = 0;
+  for (int i = 0; i < count; ++i) value = (value << 8) | bytes[i];
+  return static_cast<int64_t>(value);
+}
+
+}  // namespace
+
+WireLayout& WireLayout::Fixed(int bytes) {
+  fields_.push_back({Kind::kFixed, bytes});
+  return *this;
+}
+
+WireLayout& WireLayout::AgentId() {
+  fields_.push_back({Kind::kAgentId, 8});
+  return *this;
+}
+
+WireLayout& WireLayout::Count(int32_t max) {
+  fields_.push_back({Kind::kCount, max});
+  return *this;
+}
+
+WireLayout& WireLayout::Array(int element_bytes) {
+  bool counted = false;
+  for (const Field& field : fields_) counted = counted || field.kind == Kind::kCount;
+  if (!counted) throw std::logic_error("WireLayout: an Array needs a Count before it");
+  fields_.push_back({Kind::kArray, element_bytes});
+  return *this;
+}
+
+WireLayout& WireLayout::String(int32_t max_bytes) {
+  fields_.push_back({Kind::kString, max_bytes});
+  return *this;
+}
+
+std::optional<std::string> WireLayout::Problem(const void* data, int size) const {
+  const auto* bytes = static_cast<const uint8_t*>(data);
+  if (size < 0 || (size > 0 && data == nullptr)) return "no bytes";
+  // All arithmetic in int64: counts are at most int32, sizes at most int32,
+  // and a product of the two is checked against the bytes left, never summed first.
+  int64_t at = 0;
+  const auto left = [&] { return static_cast<int64_t>(size) - at; };
+  const auto cut = [&](const char* what) {
+    return std::string("cut short in ") + what + " at byte " + std::to_string(at) + " of " + std::to_string(size);
+  };
+  if (left() < kFingerprintBytes) return cut("the fingerprint");
+  if (BigEndian(bytes, kFingerprintBytes) != fingerprint_) return std::string("a different type (fingerprint)");
+  at += kFingerprintBytes;
+  int64_t count = 0;
+  for (const Field& field : fields_) {
+    switch (field.kind) {
+      case Kind::kFixed:
+      case Kind::kAgentId:
+        if (left() < field.bytes_or_max) return cut("fixed fields");
+        at += field.bytes_or_max;
+        break;
+      case Kind::kCount:
+        if (left() < 4) return cut("a count");
+        count = static_cast<int32_t>(BigEndian(bytes + at, 4));
+        if (count < 0 || count > field.bytes_or_max) {
+          return "count " + std::to_string(count) + " at byte " + std::to_string(at) + " is outside 0.." +
+                 std::to_string(field.bytes_or_max);
+        }
+        at += 4;
+        break;
+      case Kind::kArray:
+        if (count * field.bytes_or_max > left()) {
+          return "count " + std::to_string(count) + " needs " + std::to_string(count * field.bytes_or_max) +
+                 " bytes at byte " + std::to_string(at) + ", only " + std::to_string(left()) + " left";
+        }
+        at += count * field.bytes_or_max;
+        break;
+      case Kind::kString: {
+        if (left() < 4) return cut("a string length");
+        const int64_t length = static_cast<int32_t>(BigEndian(bytes + at, 4));
+        if (length < 1 || length > field.bytes_or_max + 1) {
+          return "string length " + std::to_string(length) + " at byte " + std::to_string(at) + " is outside 1.." +
+                 std::to_string(field.bytes_or_max + 1);
+        }
+        at += 4;
+        if (length > left()) return cut("a string");
+        at += length;
+        break;
+      }
+    }
+  }
+  if (left() != 0) return std::to_string(left()) + " trailing bytes after a complete message of " +
+                          std::to_string(at);
+  return std::nullopt;
+}
+
+std::optional<int64_t> WireLayout::AgentIdOf(const void* data, int size) const {
+  int64_t at = kFingerprintBytes;
+  for (const Field& field : fields_) {
+    if (field.kind == Kind::kAgentId) {
+      if (data == nullptr || at + 8 > size) return std::nullopt;
+      return BigEndian(static_cast<const uint8_t*>(data) + at, 8);
+    }
+    if (field.kind != Kind::kFixed) return std::nullopt;  // further fields move with the counts
+    at += field.bytes_or_max;
+  }
+  return std::nullopt;
+}
+
+int64_t WireLayout::MinimumBytes() const {
+  int64_t bytes = kFingerprintBytes;
+  for (const Field& field : fields_) {
+    if (field.kind == Kind::kFixed || field.kind == Kind::kAgentId) bytes += field.bytes_or_max;
+    if (field.kind == Kind::kCount || field.kind == Kind::kString) bytes += 4;
+    if (field.kind == Kind::kString) bytes += 1;  // the NUL of an empty string
+  }
+  return bytes;
+}
+
+}  // namespace dream::lcm

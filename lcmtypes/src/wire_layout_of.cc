@@ -1,0 +1,88 @@
+#include "dream/lcm/wire_layout_of.h"
+
+#include "dream/lcm/message_limits.h"
+#include "dream/obstacles_t.hpp"
+#include "dream/radio_message_t.hpp"
+#include "dream/robot_fault_t.hpp"
+#include "dream/robot_poses_t.hpp"
+#include "dream/run_status_t.hpp"
+#include "dream/velocity_command_t.hpp"
+
+// Each layout follows its .lcm file field by field (lcmtypes/dream/). A test
+// encodes messages with every count and checks the layout accepts exactly
+// their bytes, so a changed .lcm file without a changed layout fails there.
+namespace dream::lcm {
+namespace {
+
+constexpr int kInt8 = 1;
+constexpr int kInt32 = 4;
+constexpr int kInt64 = 8;
+constexpr int kDouble = 8;
+// rectangle_obstacle_t, nested without its fingerprint: id, then six doubles.
+constexpr int kRectangleObstacle = kInt32 + 6 * kDouble;
+
+}  // namespace
+
+template <>
+const WireLayout& WireLayoutOf<obstacles_t>() {
+  static const WireLayout layout = WireLayout(obstacles_t::getHash())
+                                       .Fixed(kInt64 + kInt64)  // utime, step
+                                       .Count(MessageLimits::kObstacles)
+                                       .Array(kRectangleObstacle);
+  return layout;
+}
+
+template <>
+const WireLayout& WireLayoutOf<radio_message_t>() {
+  static const WireLayout layout = WireLayout(radio_message_t::getHash())
+                                       .Fixed(kInt64 + kInt64 + kInt32)  // utime, step, sender_id
+                                       .AgentId()
+                                       .Count(MessageLimits::kRadioPayloadBytes)
+                                       .Array(kInt8);
+  return layout;
+}
+
+template <>
+const WireLayout& WireLayoutOf<robot_fault_t>() {
+  static const WireLayout layout = WireLayout(robot_fault_t::getHash())
+                                       .Fixed(kInt64 + kInt64 + kInt32)  // utime, step, robot_id
+                                       .AgentId()
+                                       .String(MessageLimits::kDetailBytes);
+  return layout;
+}
+
+template <>
+const WireLayout& WireLayoutOf<robot_poses_t>() {
+  static const WireLayout layout = WireLayout(robot_poses_t::getHash())
+                                       .Fixed(kInt64 + kInt64)  // utime, step
+                                       .Count(MessageLimits::kRobots)
+                                       .Array(kDouble)  // x
+                                       .Array(kDouble)  // y
+                                       .Array(kDouble)  // theta
+                                       .Array(kDouble)  // v
+                                       .Array(kDouble);  // w
+  return layout;
+}
+
+template <>
+const WireLayout& WireLayoutOf<run_status_t>() {
+  static const WireLayout layout =
+      WireLayout(run_status_t::getHash())
+          .Fixed(kInt64 + kInt64 + kInt8 + kInt32)  // utime, step, state, num_robots
+          .Fixed(5 * kInt64)  // boundary, collision, actuator errors, obstacle collisions, rejected commands
+          .Count(MessageLimits::kRobots)
+          .Array(kInt32)  // lost_robot_ids
+          .String(MessageLimits::kDetailBytes);
+  return layout;
+}
+
+template <>
+const WireLayout& WireLayoutOf<velocity_command_t>() {
+  static const WireLayout layout = WireLayout(velocity_command_t::getHash())
+                                       .Fixed(kInt64 + kInt64 + kInt32)  // utime, step, robot_id
+                                       .AgentId()
+                                       .Fixed(kDouble + kDouble + kInt8);  // v, w, done
+  return layout;
+}
+
+}  // namespace dream::lcm

@@ -1,0 +1,83 @@
+#include "sample_messages.h"
+
+#include "dream/lcm/lcm_typed.h"
+#include "dream/obstacles_t.hpp"
+#include "dream/radio_message_t.hpp"
+#include "dream/robot_fault_t.hpp"
+#include "dream/robot_poses_t.hpp"
+#include "dream/run_status_t.hpp"
+#include "dream/velocity_command_t.hpp"
+
+namespace dream::testing {
+
+std::vector<EncodedMessage> SampleMessages() {
+  robot_poses_t poses{};
+  poses.step = 3;
+  poses.num_robots = 2;
+  poses.x = {0.1, -0.2};
+  poses.y = {0.3, 0.4};
+  poses.theta = {0.0, 1.0};
+  poses.v = {0.05, 0.0};
+  poses.w = {0.0, -0.5};
+
+  obstacles_t obstacles{};
+  obstacles.step = 3;
+  obstacles.num_obstacles = 2;
+  obstacles.obstacles.resize(2);
+  obstacles.obstacles[1].id = 1;
+  obstacles.obstacles[1].width = 0.2;
+
+  run_status_t status{};
+  status.step = 3;
+  status.state = run_status_t::RUNNING;
+  status.num_robots = 2;
+  status.num_lost = 1;
+  status.lost_robot_ids = {1};
+  status.detail = "robot 1 is silent";
+
+  velocity_command_t command{};
+  command.step = 3;
+  command.robot_id = 1;
+  command.agent_id = 0x1234567890;
+  command.v = 0.1;
+
+  radio_message_t radio{};
+  radio.step = 3;
+  radio.sender_id = 1;
+  radio.agent_id = 0x1234567890;
+  radio.payload = {1, 2, 3, 4, 5};
+  radio.payload_size = 5;
+
+  robot_fault_t fault{};
+  fault.step = 3;
+  fault.robot_id = 1;
+  fault.agent_id = 0x1234567890;
+  fault.detail = "controller.py:12: in update: ValueError: boom";
+
+  return {{"robot_poses_t", Encoded(poses)},     {"obstacles_t", Encoded(obstacles)},
+          {"run_status_t", Encoded(status)},     {"velocity_command_t", Encoded(command)},
+          {"radio_message_t", Encoded(radio)},   {"robot_fault_t", Encoded(fault)}};
+}
+
+namespace {
+
+template <typename Message>
+TypedDecoder DecoderOf() {
+  return [](const uint8_t* data, int size) {
+    Message message;
+    return lcm::Decode(data, size, &message);
+  };
+}
+
+}  // namespace
+
+const std::map<std::string, TypedDecoder>& Decoders() {
+  static const std::map<std::string, TypedDecoder> decoders = {
+      {"robot_poses_t", DecoderOf<robot_poses_t>()},     {"obstacles_t", DecoderOf<obstacles_t>()},
+      {"run_status_t", DecoderOf<run_status_t>()},       {"velocity_command_t", DecoderOf<velocity_command_t>()},
+      {"radio_message_t", DecoderOf<radio_message_t>()}, {"robot_fault_t", DecoderOf<robot_fault_t>()},
+  };
+  return decoders;
+}
+
+}  // namespace dream::testing
