@@ -90,6 +90,34 @@ TEST(RunConfigTest, PoseOutsideTheArenaIsRejected) {
   EXPECT_NE(error.find("outside the arena"), std::string::npos) << error;
 }
 
+TEST(RunConfigTest, PoseOnTheWallIsRejectedByTheLabsStartRule) {
+  // (1.6, 0) is inside for the world's boundary check (edges included), but
+  // half the robot would be outside: dream export would refuse the run.
+  const std::string error = ErrorOf(Replace(kMinimal, "[0.5, 0.0, 1.57]", "[1.6, 0.0, 1.57]"));
+  EXPECT_NE(error.find("test.yaml:7: initial_poses[1]: robot 1 starts at (1.600, 0.000), closer than its radius "
+                       "0.055 m to the arena's wall"),
+            std::string::npos)
+      << error;
+  EXPECT_NE(error.find("start_inside_arena"), std::string::npos) << error;
+  EXPECT_NE(error.find("x in [-1.545, 1.545], y in [-0.945, 0.945]"), std::string::npos) << error;
+  // Exactly the radius from the wall is clear, a tenth of a millimetre less is not.
+  EXPECT_EQ(ErrorOf(Replace(kMinimal, "[0.5, 0.0, 1.57]", "[0.5, -0.945, 1.57]")), "");
+  EXPECT_NE(ErrorOf(Replace(kMinimal, "[0.5, 0.0, 1.57]", "[0.5, -0.9451, 1.57]")).find("closer than its radius"),
+            std::string::npos);
+}
+
+TEST(RunConfigTest, GeneratedPosesKeepTheRobotRadiusFromTheWalls) {
+  const std::string text = Replace(Replace(kMinimal, "  - [0.0, 0.0, 0.0]\n  - [0.5, 0.0, 1.57]\n", ""),
+                                   "initial_poses:\n", "initial_poses: {generate: {wall_margin_m: 0.02}}\n");
+  const std::string error = ErrorOf(text);
+  EXPECT_NE(error.find("test.yaml:5: initial_poses.generate.wall_margin_m: must be at least 0.055 m (the robot's "
+                       "radius)"),
+            std::string::npos)
+      << error;
+  EXPECT_NE(error.find("got 0.02"), std::string::npos) << error;
+  EXPECT_EQ(ErrorOf(Replace(text, "wall_margin_m: 0.02", "wall_margin_m: 0.055")), "");
+}
+
 TEST(RunConfigTest, OverlappingPosesAreRejected) {
   const std::string error = ErrorOf(Replace(kMinimal, "[0.5, 0.0, 1.57]", "[0.1, 0.0, 3.14]"));
   EXPECT_NE(error.find("robots 0 and 1 start in collision"), std::string::npos) << error;

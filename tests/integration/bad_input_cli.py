@@ -73,6 +73,15 @@ def test(ctx):
     timeout, timeout_line = broken("timeout", r"agent_timeout_s: 2\.0", "agent_timeout_s: -1")
     goals, _ = broken("goals", r"- \[0\.416, -0\.134\]", "")
     bad_yaml, _ = broken("bad_yaml", r"^robots: 8", "robots: [8")
+    # yaml-cpp keeps the first of two equal keys and reads only the first document, without a word.
+    duplicate, first_gain_line = broken("duplicate", r"^  gain: 0\.8.*", "  gain: 0.8\n  gain: 0.5")
+    second_doc = ctx.path("second_doc.yaml")
+    with open(config) as f:
+        config_text = f.read()
+    with open(second_doc, "w") as f:
+        f.write(config_text + "---\n" + config_text.replace("robots: 8", "robots: 4"))
+    second_doc_line = config_text.count("\n") + 1
+    wall, wall_line = broken("wall", r"\[1\.109, 0\.287, 1\.963\]", "[1.6, 0.287, 1.963]")  # on the wall
     missing = ctx.path("no_such_config.yaml")
     not_log = ctx.path("not_a_log.lcmlog")
     with open(not_log, "w") as f:
@@ -142,6 +151,13 @@ def test(ctx):
          [goals + ":", "controller.goals", "(8)", "got 7"], True),
         ("invalid YAML", ["run", bad_yaml, "--out", ctx.path("refused_out11")], EXIT_INPUT,
          [bad_yaml + ":", "not valid YAML"], True),
+        ("duplicate key", ["run", duplicate, "--out", ctx.path("refused_out_duplicate")], EXIT_INPUT,
+         [where(duplicate, first_gain_line + 1), "controller.gain", "duplicate key",
+          f"first given at line {first_gain_line}"], True),
+        ("second YAML document", ["run", second_doc, "--out", ctx.path("refused_out_second_doc")], EXIT_INPUT,
+         [where(second_doc, second_doc_line), "a second YAML document (---) is not read"], True),
+        ("start pose on the wall", ["run", wall, "--out", ctx.path("refused_out_wall")], EXIT_INPUT,
+         [where(wall, wall_line), "initial_poses[0]", "closer than its radius 0.055 m", "start_inside_arena"], True),
         ("launch with an unknown controller kind", ["launch", launch_kind, "--out", ctx.path("refused_out_launch")],
          EXIT_INPUT, [launch_kind + ":", "controller.kind", "'go_to_gaol'"], True),
         ("agent config error", ["agent", robots51], EXIT_INPUT, [where(robots51, robots51_line), "robots"], True),

@@ -1,10 +1,150 @@
 #include "dream/config/config_node.h"
 
+#include <yaml-cpp/eventhandler.h>
+
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <sstream>
+#include <unordered_map>
+#include <utility>
 
 namespace dream::config {
+namespace {
+
+// What a message says a value is: "'text'", "a list", "a mapping".
+std::string Describe(const YAML::Node& node) {
+  if (node.IsScalar()) return "'" + node.Scalar() + "'";
+  if (node.IsSequence()) return "a list";
+  if (node.IsMap()) return "a mapping";
+  return "nothing";
+}
+
+// Records where the second document starts; ignores everything else.
+class DocumentCounter : public YAML::EventHandler {
+ public:
+  int documents = 0;
+  int second_line = 0;  // 1-based; 0 when there is no second document
+
+  void OnDocumentStart(const YAML::Mark& mark) override {
+    if (++documents == 2) second_line = mark.line + 1;
+  }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t, const std::string&) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+};
+
+// yaml-cpp's Load reads the first document and drops the rest without a
+// word; one file is one run, so anything after it is a mistake (two configs
+// pasted together, a stray "---").
+void RejectSecondDocument(const std::string& text, const std::string& source_name) {
+  std::istringstream in(text);
+  YAML::Parser parser(in);
+  DocumentCounter counter;
+  try {
+    while (counter.documents < 2 && parser.HandleNextDocument(counter)) {
+    }
+  } catch (const YAML::Exception& e) {
+    // The first document parsed already, so the error is past it.
+    if (counter.second_line == 0) {
+      throw ConfigError(source_name + ":" + std::to_string(e.mark.line + 1) + ": not valid YAML: " + e.msg);
+    }
+  }
+  if (counter.second_line > 0) {
+    throw ConfigError(source_name + ":" + std::to_string(counter.second_line) +
+                      ": a second YAML document (---) is not read; one run per file");
+  }
+}
+
+// One walk over the loaded tree for what yaml-cpp does not check: duplicate
+// keys (it keeps both entries and lookups find the first), keys that are not
+// text, and aliases. An alias shares its anchor's node, so a tree can contain
+// itself (`&a [*a]`) or be exponentially larger than its file; containers
+// already walked are not walked again but their expanded size still counts.
+class TreeCheck {
+ public:
+  explicit TreeCheck(const std::string& file) : file_(file) {}
+
+  void Run(const YAML::Node& root) { Visit(root, "", 0); }
+
+ private:
+  struct Extent {
+    size_t values = 1;  // nodes once aliases are expanded
+    int height = 0;     // levels below this node once expanded
+  };
+
+  [[noreturn]] void Fail(const YAML::Node& node, const std::string& key, const std::string& message) const {
+    ConfigNode(node, file_, key).Fail(message);
+  }
+
+  Extent Visit(const YAML::Node& node, const std::string& key, int depth) {
+    if (!node.IsMap() && !node.IsSequence()) return Extent{};
+    for (const YAML::Node& open : open_) {
+      if (open.is(node)) Fail(node, key, "contains itself through an alias (*); write the value out instead");
+    }
+    if (const Extent* seen = Walked(node)) {
+      if (depth + seen->height > ConfigNode::kMaxDepth) FailTooDeep(node, key);
+      return *seen;
+    }
+    if (depth > ConfigNode::kMaxDepth) FailTooDeep(node, key);
+    open_.push_back(node);
+    Extent extent;
+    auto add = [&](const Extent& child) {
+      extent.values += child.values;
+      extent.height = std::max(extent.height, child.height + 1);
+      if (extent.values > ConfigNode::kMaxValues) {
+        Fail(node, key, "aliases (*) expand this value to more than " + std::to_string(ConfigNode::kMaxValues) +
+                            " values; write it out without them");
+      }
+    };
+    if (node.IsSequence()) {
+      for (size_t i = 0; i < node.size(); ++i) add(Visit(node[i], key + "[" + std::to_string(i) + "]", depth + 1));
+    } else {
+      std::map<std::string, int> first_lines;  // key text -> 1-based line
+      for (const auto& entry : node) {
+        if (!entry.first.IsScalar()) {
+          Fail(entry.first, key, "a key must be plain text, got " + Describe(entry.first));
+        }
+        const std::string& name = entry.first.Scalar();
+        const std::string child_key = key.empty() ? name : key + "." + name;
+        const int line = entry.first.Mark().line + 1;
+        const auto [first, inserted] = first_lines.emplace(name, line);
+        if (!inserted) Fail(entry.first, child_key, "duplicate key; first given at line " + std::to_string(first->second));
+        add(Visit(entry.second, child_key, depth + 1));
+      }
+    }
+    open_.pop_back();
+    walked_[node.Mark().pos].emplace_back(node, extent);
+    return extent;
+  }
+
+  // A container reached before (through an alias), or null.
+  const Extent* Walked(const YAML::Node& node) const {
+    const auto bucket = walked_.find(node.Mark().pos);
+    if (bucket == walked_.end()) return nullptr;
+    for (const auto& [walked, extent] : bucket->second) {
+      if (walked.is(node)) return &extent;
+    }
+    return nullptr;
+  }
+
+  [[noreturn]] void FailTooDeep(const YAML::Node& node, const std::string& key) const {
+    Fail(node, key, "nested more than " + std::to_string(ConfigNode::kMaxDepth) + " levels deep");
+  }
+
+  const std::string& file_;
+  std::vector<YAML::Node> open_;  // the containers being walked: this one's ancestors
+  // Walked containers by source position (is() tells nodes at one position apart).
+  std::unordered_map<int, std::vector<std::pair<YAML::Node, Extent>>> walked_;
+};
+
+}  // namespace
 
 ConfigNode ConfigNode::LoadFile(const std::string& path) {
   std::ifstream in(path);
@@ -16,16 +156,24 @@ ConfigNode ConfigNode::LoadFile(const std::string& path) {
   return LoadString(text.str(), path);
 }
 
-ConfigNode ConfigNode::LoadString(const std::string& text, const std::string& source_name) {
+YAML::Node ConfigNode::ParseYaml(const std::string& text, const std::string& source_name) {
+  YAML::Node root;
   try {
-    YAML::Node root = YAML::Load(text);
-    if (!root.IsMap()) {
-      throw ConfigError(source_name + ": the config must be a YAML mapping of keys (name:, robots:, ...)");
-    }
-    return ConfigNode(root, source_name, "");
-  } catch (const YAML::ParserException& e) {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
     throw ConfigError(source_name + ":" + std::to_string(e.mark.line + 1) + ": not valid YAML: " + e.msg);
   }
+  RejectSecondDocument(text, source_name);
+  TreeCheck(source_name).Run(root);
+  return root;
+}
+
+ConfigNode ConfigNode::LoadString(const std::string& text, const std::string& source_name) {
+  YAML::Node root = ParseYaml(text, source_name);
+  if (!root.IsMap()) {
+    throw ConfigError(source_name + ": the config must be a YAML mapping of keys (name:, robots:, ...)");
+  }
+  return ConfigNode(root, source_name, "");
 }
 
 ConfigNode::ConfigNode(YAML::Node node, std::string file, std::string key)
@@ -62,14 +210,14 @@ ConfigNode ConfigNode::operator[](size_t i) const {
 std::vector<std::string> ConfigNode::Keys() const {
   std::vector<std::string> keys;
   if (!node_.IsMap()) return keys;
-  for (const auto& entry : node_) keys.push_back(entry.first.as<std::string>());
+  for (const auto& entry : node_) keys.push_back(KeyText(entry.first));
   return keys;
 }
 
 void ConfigNode::RejectUnknownKeys(std::initializer_list<const char*> allowed) const {
   if (!node_.IsMap()) Fail("must be a mapping of keys");
   for (const auto& entry : node_) {
-    const std::string name = entry.first.as<std::string>();
+    const std::string name = KeyText(entry.first);
     bool known = false;
     std::string list;
     for (const char* a : allowed) {
@@ -83,11 +231,12 @@ void ConfigNode::RejectUnknownKeys(std::initializer_list<const char*> allowed) c
   }
 }
 
-std::string ConfigNode::ScalarText() const {
-  if (node_.IsScalar()) return "'" + node_.Scalar() + "'";
-  if (node_.IsSequence()) return "a list";
-  if (node_.IsMap()) return "a mapping";
-  return "nothing";
+std::string ConfigNode::ScalarText() const { return Describe(node_); }
+
+// ParseYaml refuses such keys already; this covers trees built in code.
+std::string ConfigNode::KeyText(const YAML::Node& key) const {
+  if (!key.IsScalar()) ConfigNode(key, file_, key_).Fail("a key must be plain text, got " + Describe(key));
+  return key.Scalar();
 }
 
 double ConfigNode::AsDouble() const {

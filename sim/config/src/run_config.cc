@@ -14,6 +14,21 @@ namespace {
 
 using sim::RobotariumConstants;
 
+// The lab can only place a robot whose whole body (radius 0.055 m) is inside
+// the arena: `dream export` refuses a start pose closer to a wall than this
+// (rule start_inside_arena, bridge::LabLimits::start_wall_margin_m). It is
+// stricter than the world's boundary error (centre outside the arena), so a
+// start pose that passes it passes both.
+constexpr double kStartWallClearanceM = RobotariumConstants::kRobotDiameterMeters / 2.0;
+
+// The same comparison as the export's check, so "accepted here" can never be
+// "refused there" through rounding.
+bool ClearOfTheWalls(const sim::Arena& arena, const sim::Pose2& pose) {
+  const double m = kStartWallClearanceM;
+  return !(pose.x_m < arena.x_min_m + m || pose.x_m > arena.x_max_m - m || pose.y_m < arena.y_min_m + m ||
+           pose.y_m > arena.y_max_m - m);
+}
+
 std::string Format(double value) {
   char text[32];
   std::snprintf(text, sizeof(text), "%.3f", value);
@@ -76,6 +91,12 @@ std::vector<sim::Pose2> ReadInitialPoses(const ConfigNode& root, const RunConfig
         generate.RejectUnknownKeys({"min_spacing_m", "wall_margin_m"});
         params.min_spacing_m = generate.GetDouble("min_spacing_m", params.min_spacing_m);
         params.wall_margin_m = generate.GetDouble("wall_margin_m", params.wall_margin_m);
+        if (params.wall_margin_m < kStartWallClearanceM) {
+          generate.Required("wall_margin_m")
+              .Fail("must be at least " + FormatExact(kStartWallClearanceM) +
+                    " m (the robot's radius): the lab refuses a start pose closer to a wall "
+                    "(start_inside_arena), got " + generate.Required("wall_margin_m").AsString());
+        }
       }
     }
     try {
@@ -102,6 +123,15 @@ std::vector<sim::Pose2> ReadInitialPoses(const ConfigNode& root, const RunConfig
                    "), outside the arena x in [" + Format(config.world.arena.x_min_m) + ", " +
                    Format(config.world.arena.x_max_m) + "], y in [" + Format(config.world.arena.y_min_m) + ", " +
                    Format(config.world.arena.y_max_m) + "]");
+    }
+    if (!ClearOfTheWalls(config.world.arena, pose)) {
+      const sim::Arena& arena = config.world.arena;
+      const double m = kStartWallClearanceM;
+      node[i].Fail("robot " + std::to_string(i) + " starts at (" + Format(pose.x_m) + ", " + Format(pose.y_m) +
+                   "), closer than its radius " + FormatExact(m) +
+                   " m to the arena's wall: the lab cannot place it there (dream export's start_inside_arena "
+                   "rule); start poses need x in [" + Format(arena.x_min_m + m) + ", " + Format(arena.x_max_m - m) +
+                   "], y in [" + Format(arena.y_min_m + m) + ", " + Format(arena.y_max_m - m) + "]");
     }
     // Only step 0 counts: a moving obstacle may sweep over a start pose later.
     const int touched = obstacle_check.FirstTouchedObstacle(pose);
@@ -218,6 +248,8 @@ RunConfig LoadRunConfig(const ConfigNode& root) {
   RunConfig config;
   config.source = root.file();
   config.name = root.Required("name").AsString();
+  // Free text nobody reads back; a list or mapping here is still a mistake.
+  root.GetString("description", "");
   for (char c : config.name) {
     const bool safe = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
                       c == '-' || c == '.';

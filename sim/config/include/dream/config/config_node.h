@@ -18,6 +18,17 @@ class ConfigNode {
   static ConfigNode LoadFile(const std::string& path);
   /// Parses `text` as if it came from `source_name` (tests, embedded configs).
   static ConfigNode LoadString(const std::string& text, const std::string& source_name);
+  /// The YAML tree of `text`, refusing what yaml-cpp accepts without a word:
+  /// a duplicate key (yaml-cpp keeps the first), a second document (dropped),
+  /// a key that is a list or mapping, and aliases that make a value contain
+  /// itself or expand past kMaxValues values or kMaxDepth levels. For code
+  /// that edits the tree before reading it (LoadString uses it too).
+  /// @throws ConfigError "file:line: key: problem".
+  static YAML::Node ParseYaml(const std::string& text, const std::string& source_name);
+  /// Limits on the tree after aliases are expanded: every reader of a config
+  /// (the Python controller's JSON, --set) walks it recursively.
+  static constexpr size_t kMaxValues = 1000000;
+  static constexpr int kMaxDepth = 100;
 
   ConfigNode() = default;  ///< an undefined node
   ConfigNode(YAML::Node node, std::string file, std::string key);
@@ -74,6 +85,8 @@ class ConfigNode {
  private:
   std::string Where() const;
   std::string ScalarText() const;
+  /// The text of map key `key` of this node. @throws ConfigError when the key is not plain text.
+  std::string KeyText(const YAML::Node& key) const;
 
   YAML::Node node_;
   std::string file_;
