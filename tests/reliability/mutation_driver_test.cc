@@ -32,8 +32,8 @@ namespace dream::testing {
 namespace {
 
 constexpr uint32_t kSeed = 20261123;
-constexpr int kMutationsPerMessage = 800;  // x 6 types, each through 6 decoders
-constexpr int kLogMutations = 1200;        // each through 3 log readers
+constexpr int kMutationsPerMessage = 5000;  // x 6 types, each through 6 decoders
+constexpr int kLogMutations = 3000;         // each through 3 log readers
 // A decoded message may hold what its bytes hold; the rest is bookkeeping.
 constexpr size_t kAllocationSlackBytes = 64 * 1024;
 
