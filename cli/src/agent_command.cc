@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "hosted_agents.h"
+#include "overridden_config.h"
 #include "command_line.h"
 #include "commands.h"
 #include "process_group.h"
@@ -79,7 +80,7 @@ std::vector<int> ParseRobotList(const std::string& text, int num_robots) {
 }
 
 int RunAgents(const AgentArgs& args) {
-  const config::RunConfig config = config::LoadRunConfigFile(args.config_path);
+  const config::RunConfig config = OverriddenConfig(args.config_path, args.seed, args.sets).Load();
   const std::vector<int> ids = ParseRobotList(args.robots, config.num_robots);
   lcm::LcmBus bus(lcm::ResolveLcmUrl(args.lcm_url));
   HostedAgents host(bus, config, ids);

@@ -36,6 +36,7 @@
 #include "dream/sim/trajectory_picture.h"
 #include "data_files.h"
 #include "process_group.h"
+#include "run_folder_choice.h"
 #include "shared_options.h"
 #include "terminal_progress.h"
 
@@ -120,7 +121,10 @@ int RunExport(const ExportArgs& args) {
 
 int RunImport(const ImportArgs& args) {
   const bridge::ExportedSubmission exported = bridge::ExportedSubmission::Read(args.export_dir);
-  const std::string out_dir = DefaultOut(args.out_dir, exported.config.name, "_lab");
+  const std::string out_dir =
+      RunFolderChoice(args.out_dir, "runs/" + exported.config.name + "_lab", args.overwrite,
+                      RunFolderChoice::Create::kLater)  // a refused result must leave no folder
+          .dir();
   const bridge::ImportedRun imported = bridge::ImportLabRun(ResultFile(args.result), args.export_dir, out_dir);
   PrintImported(imported);
   if (!imported.lab.complete) return kExitRunFailed;
@@ -150,7 +154,8 @@ int RunLabReplay(const LabReplayArgs& args) {
   if (!args.mode.empty()) config.sim.mode = sim::ParseWorldMode(args.mode);
   HostedAgents::Check(config);
 
-  const sim::OutputFolder out(DefaultOut(args.out_dir, config.name, "_lab_replay"));
+  const sim::OutputFolder out(
+      RunFolderChoice(args.out_dir, "runs/" + config.name + "_lab_replay", args.overwrite).dir());
   const std::string log_path = out.PathOf("run.lcmlog");
   const bool in_process = !args.world_only;
   lcm::LcmBus bus(args.lcm_url.empty() ? (in_process ? "memq://" : lcm::ResolveLcmUrl("")) : lcm::ResolveLcmUrl(args.lcm_url));
@@ -341,7 +346,10 @@ void DeclareBridgeCommands(CommandLine& line) {
   import_command->add_option("result", import_args->result, "dream_result.npy / .mat, or a folder holding one")
       ->required();
   import_command->add_option("--export", import_args->export_dir, "The folder dream export wrote")->required();
-  import_command->add_option("--out", import_args->out_dir, "Output folder (default runs/<name>_lab)");
+  import_command->add_option("--out", import_args->out_dir,
+                             "Output folder (default runs/<name>_lab, or _2, ... when that holds a run);\n"
+                             "refused when it holds a run, unless --overwrite");
+  import_command->add_flag("--overwrite", import_args->overwrite, "Replace the run already in the output folder");
 
   auto replay_args = std::make_shared<LabReplayArgs>();
   CLI::App* replay_command = line.AddCommand(
@@ -352,7 +360,10 @@ void DeclareBridgeCommands(CommandLine& line) {
       "Example: dream lab-replay runs/lab1 --out runs/lab1_replay",
       [replay_args] { return RunLabReplay(*replay_args); });
   replay_command->add_option("lab", replay_args->lab_dir, "Run folder written by dream import")->required();
-  replay_command->add_option("--out", replay_args->out_dir, "Output folder (default runs/<name>_lab_replay)");
+  replay_command->add_option("--out", replay_args->out_dir,
+                             "Output folder (default runs/<name>_lab_replay, or _2, ... when that holds a run);\n"
+                             "refused when it holds a run, unless --overwrite");
+  replay_command->add_flag("--overwrite", replay_args->overwrite, "Replace the run already in the output folder");
   replay_command->add_option("--lcm-url", replay_args->lcm_url,
                              "LCM URL (default memq://, or $LCM_DEFAULT_URL with --world-only)");
   replay_command->add_option("--steps", replay_args->steps, "Replay at most this many steps")->check(StepCount());

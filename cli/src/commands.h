@@ -33,7 +33,10 @@ std::string AgentBinaryPath();
 
 struct RunArgs {
   std::string config_path;
-  std::string out_dir;          ///< empty: runs/<name>
+  std::string out_dir;          ///< empty: runs/<name>, or runs/<name>_2, ... when that holds a run
+  bool overwrite = false;       ///< replace a run already in the output folder
+  long long seed = -1;          ///< --seed; < 0: the config's
+  std::vector<std::string> sets;  ///< --set KEY=VALUE each, applied in order
   std::string lcm_url;          ///< empty: memq:// for run, else LCM_DEFAULT_URL
   long long steps = 0;          ///< 0: the config's
   std::string mode;             ///< empty: the config's
@@ -45,6 +48,8 @@ struct AgentArgs {
   std::string robots = "all";   ///< "all", "3", "0,2,5" or "0-4"
   std::string lcm_url;
   double idle_timeout_s = 60.0;
+  long long seed = -1;          ///< as RunArgs: the world's --seed/--set, so agents build the same robots
+  std::vector<std::string> sets;
 };
 
 // Each command's file declares its subcommands on the dream command line
@@ -55,7 +60,12 @@ void DeclareSimCommand(CommandLine& line);      ///< dream sim (run_command.cc)
 void DeclareAgentCommand(CommandLine& line);    ///< dream agent (agent_command.cc)
 void DeclareLaunchCommand(CommandLine& line);   ///< dream launch (launch_command.cc)
 void DeclareSpyCommand(CommandLine& line);      ///< dream spy (spy_command.cc)
-void DeclareLogCommand(CommandLine& line);      ///< dream log info / diff (log_command.cc)
+void DeclareLogCommand(CommandLine& line);      ///< dream log info / diff / echo (log_command.cc)
+void DeclareVersionCommand(CommandLine& line);  ///< dream version (version_command.cc)
+
+/// "dream 0.1.0 (git 7de8cc9a1b2c)": the version dream --version and dream
+/// version print; without the commit when the build was not configured from git.
+std::string VersionLine();
 
 /// A random identifier for this process's agents (see velocity_command_t.agent_id).
 int64_t NewAgentId();
@@ -68,6 +78,9 @@ int RunLogInfo(const std::string& path);
 /// Compares the payloads of each channel matching `channel_regex`, in order
 /// (timestamps ignored). Exit 0 when equal.
 int RunLogDiff(const std::string& a, const std::string& b, const std::string& channel_regex);
+/// Prints each decoded DREAM_* message on channels matching `channel_regex`
+/// as one JSON object per line (at most `limit` when > 0).
+int RunLogEcho(const std::string& path, const std::string& channel_regex, long long limit);
 int RunSpy(const std::string& log_path, const std::string& lcm_url, bool print_command_only);
 
 // --- the bridge to the Robotarium (bridge_commands.cc, docs/robotarium.md) ---
@@ -85,12 +98,14 @@ struct ExportArgs {
 struct ImportArgs {
   std::string result;           ///< dream_result.npy / .mat, or a folder holding one
   std::string export_dir;
-  std::string out_dir;          ///< empty: runs/<name>_lab
+  std::string out_dir;          ///< empty: runs/<name>_lab (or _2, ... when that holds a run)
+  bool overwrite = false;       ///< replace a run already in the output folder
 };
 
 struct LabReplayArgs {
   std::string lab_dir;          ///< a folder written by dream import
-  std::string out_dir;          ///< empty: runs/<name>_lab_replay
+  std::string out_dir;          ///< empty: runs/<name>_lab_replay (or _2, ... when that holds a run)
+  bool overwrite = false;       ///< replace a run already in the output folder
   std::string lcm_url;          ///< empty: memq:// with in-process agents, else LCM_DEFAULT_URL
   long long steps = 0;          ///< 0: the whole lab run
   std::string mode;             ///< empty: the config's
@@ -130,7 +145,7 @@ struct SweepArgs {
   std::vector<std::string> sets;  ///< "KEY=V1,V2,..." each
   int jobs = 0;                   ///< runs at once; 0: one per core
   long long steps = 0;            ///< 0: the config's step limit
-  std::string out_dir;            ///< required; its parent must exist
+  std::string out_dir;            ///< empty: sweeps/<name> (or _2, ... when that holds a sweep)
   double run_timeout_s = 1800.0;  ///< a run still going after this is stopped and counts as failed
 };
 

@@ -16,10 +16,16 @@ namespace dream::cli {
 int RunLaunch(const RunArgs& args) {
   // Check the config here, so a mistake is reported once, not by N+1 children.
   const config::RunConfig config = LoadConfig(args);
-  PrepareOutputDir(args, config);
+  // Chosen once, here: the simulator gets it as --out, so a numbered folder
+  // (runs/<name>_2) is not chosen again, differently, by the child.
+  const std::string out_dir = PrepareOutputDir(args, config);
   const std::string self = SelfExecutable();
   std::vector<std::string> common = {args.config_path};
   if (!args.lcm_url.empty()) common.push_back("--lcm-url=" + args.lcm_url);
+  // The same overrides for the simulator and every agent, so all build the
+  // same run (agents read the config too: robots, controller, seed).
+  if (args.seed >= 0) common.push_back("--seed=" + std::to_string(args.seed));
+  for (const std::string& set : args.sets) common.insert(common.end(), {"--set", set});
   // The children log (and show progress) as quietly or verbosely as this process.
   if (!spdlog::should_log(spdlog::level::info)) common.push_back("--quiet");
   if (spdlog::should_log(spdlog::level::debug)) common.push_back("--verbose");
@@ -27,7 +33,7 @@ int RunLaunch(const RunArgs& args) {
   ProcessGroup children;
   std::vector<std::string> sim_argv = {self, "sim"};
   sim_argv.insert(sim_argv.end(), common.begin(), common.end());
-  if (!args.out_dir.empty()) sim_argv.push_back("--out=" + args.out_dir);
+  sim_argv.push_back("--out=" + out_dir);  // holds no run now (an earlier one was refused or removed)
   if (args.steps != 0) sim_argv.push_back("--steps=" + std::to_string(args.steps));
   if (!args.mode.empty()) sim_argv.push_back("--mode=" + args.mode);
   if (args.all_steps) sim_argv.push_back("--all-steps");
@@ -59,7 +65,7 @@ void DeclareLaunchCommand(CommandLine& line) {
   CLI::App* command = line.AddCommand(
       "launch",
       "Run the simulator and one agent process per robot over udpm.\n"
-      "Example: dream launch config/go_to_goal.yaml",
+      "Example: dream launch config/go_to_goal.yaml --seed 7",
       [args] { return RunLaunch(*args); });
   AddRunOptions(command, args.get(), "LCM URL (default $LCM_DEFAULT_URL)");
 }

@@ -1,4 +1,5 @@
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -7,7 +8,11 @@
 
 #include "command_line.h"
 #include "commands.h"
+#include "dream/bridge/lab_replay_world.h"
+#include "dream/lcm/channels.h"
 #include "dream/lcm/log_reader.h"
+#include "message_json.h"
+#include "shared_options.h"
 
 namespace dream::cli {
 namespace {
@@ -26,6 +31,29 @@ Payloads PayloadsByChannel(const std::string& path, const std::regex& channels) 
   }
   return payloads;
 }
+
+/// Bytes of an LCM log event before its channel name: sync word, event
+/// number, utime, channel length, data length.
+constexpr int64_t kEventHeaderBytes = 4 + 8 + 8 + 4 + 4;
+
+/// True for the channels DREAM publishes its own types on: a message there
+/// that is not a DREAM type is damaged, not another program's.
+bool IsDreamDataChannel(const std::string& channel) {
+  for (const char* name : {lcm::kPosesChannel, lcm::kObstaclesChannel, lcm::kStatusChannel}) {
+    if (channel == name) return true;
+  }
+  for (const char* prefix : {lcm::kCommandChannelPrefix, lcm::kRadioChannelPrefix, lcm::kFaultChannelPrefix,
+                             bridge::kLabCommandChannelPrefix}) {
+    if (channel.rfind(prefix, 0) == 0) return true;
+  }
+  return false;
+}
+
+struct LogEchoArgs {
+  std::string log;
+  std::string channel_regex;
+  long long limit = 0;
+};
 
 struct LogDiffArgs {
   std::string first_log;
@@ -99,8 +127,68 @@ int RunLogDiff(const std::string& a, const std::string& b, const std::string& ch
   return same ? kExitOk : kExitInputError;
 }
 
+int RunLogEcho(const std::string& path_given, const std::string& channel_regex, long long limit) {
+  const std::string path = LogFileOf(path_given);
+  std::regex channels;
+  try {
+    channels = std::regex(channel_regex);
+  } catch (const std::regex_error& e) {
+    throw std::invalid_argument("CHANNEL_REGEX '" + channel_regex + "' is not a regular expression: " + e.what());
+  }
+  lcm::LogReader reader(path);
+  lcm::LogRecord record;
+  int64_t offset = 0;  // of the current event, for reports: LogReader does not tell
+  int64_t event = 0;
+  long long printed = 0;
+  long long undecodable = 0;
+  std::map<std::string, long long> skipped;  // channel -> events of no DREAM type
+  std::map<std::string, long long> seen;     // every channel, for a regex that matches none
+  while ((limit <= 0 || printed < limit) && reader.Next(&record)) {
+    const int64_t event_offset = offset;
+    offset += kEventHeaderBytes + static_cast<int64_t>(record.channel.size() + record.data.size());
+    ++event;
+    ++seen[record.channel];
+    if (!std::regex_match(record.channel, channels)) continue;
+    const MessageJson message(record.data);
+    if (message.outcome() == MessageJson::Outcome::kDecoded) {
+      nlohmann::ordered_json line = {{"channel", record.channel},
+                                     {"utime", record.utime},
+                                     {"type", message.type()},
+                                     {"message", message.fields()}};
+      std::cout << line.dump() << '\n';
+      ++printed;
+    } else if (message.outcome() == MessageJson::Outcome::kUndecodable || IsDreamDataChannel(record.channel)) {
+      // Reported and passed over: one damaged message must not hide the rest.
+      std::cerr << path << ": byte " << event_offset << " (event " << event << ", " << record.channel
+                << "): cannot decode " << record.data.size() << " bytes"
+                << (message.type().empty() ? "" : " as " + message.type()) << ": " << message.problem() << '\n';
+      ++undecodable;
+    } else {
+      ++skipped[record.channel];
+    }
+  }
+  std::cout.flush();
+  if (!skipped.empty()) {
+    long long total = 0;
+    std::string names;
+    for (const auto& [channel, count] : skipped) {
+      total += count;
+      names += (names.empty() ? "" : ", ") + channel + " (" + std::to_string(count) + ")";
+    }
+    std::cerr << "skipped " << total << " events on channels of no DREAM type: " << names << '\n';
+  }
+  if (undecodable > 0) std::cerr << undecodable << " events could not be decoded (above)\n";
+  if (printed == 0 && undecodable == 0 && skipped.empty()) {
+    std::string names;
+    for (const auto& [channel, count] : seen) names += (names.empty() ? "" : ", ") + channel;
+    std::cerr << path << ": no event on a channel matching '" << channel_regex << "' (channels: "
+              << (names.empty() ? "none" : names) << ")\n";
+  }
+  return kExitOk;
+}
+
 void DeclareLogCommand(CommandLine& line) {
-  CLI::App* log = line.AddGroup("log", "Look into recorded runs: info, diff.\n"
+  CLI::App* log = line.AddGroup("log", "Look into recorded runs: info, diff, echo.\n"
                                        "Example: dream log info runs/go_to_goal");
 
   auto info_path = std::make_shared<std::string>();
@@ -110,6 +198,20 @@ void DeclareLogCommand(CommandLine& line) {
       "Example: dream log info runs/go_to_goal/run.lcmlog",
       [info_path] { return RunLogInfo(*info_path); }, log);
   info->add_option("log", *info_path, "LCM log file, or a run folder (its run.lcmlog)")->required();
+
+  auto echo_args = std::make_shared<LogEchoArgs>();
+  CLI::App* echo = line.AddCommand(
+      "echo",
+      "Print the decoded messages on channels matching CHANNEL_REGEX (whole name), one JSON object\n"
+      "per line: {\"channel\", \"utime\" (the log's), \"type\", \"message\": the message's fields}; radio\n"
+      "payloads as hex. Channels of no DREAM type are skipped and counted on stderr; an undecodable\n"
+      "event is reported there with its byte offset.\n"
+      "Example: dream log echo runs/go_to_goal 'DREAM_CMD_.*' --limit 5",
+      [echo_args] { return RunLogEcho(echo_args->log, echo_args->channel_regex, echo_args->limit); }, log);
+  echo->add_option("log", echo_args->log, "LCM log file, or a run folder (its run.lcmlog)")->required();
+  echo->add_option("channels", echo_args->channel_regex, "Regex of channels to print, e.g. DREAM_POSES or 'DREAM_CMD_.*'")
+      ->required();
+  echo->add_option("--limit", echo_args->limit, "Stop after this many messages (default: all)")->check(StepCount());
 
   auto diff_args = std::make_shared<LogDiffArgs>();
   CLI::App* diff = line.AddCommand(

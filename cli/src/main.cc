@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   bool verbose = false;
   app.add_flag("-q,--quiet", quiet, "Only warnings and errors (no progress either)");
   app.add_flag("-v,--verbose", verbose, "Debug output");
+  app.set_version_flag("--version", VersionLine(), "Print the version (PROJECT_VERSION and git commit) and exit");
 
   // Each command declares its options and action in its own file; this
   // order is the order of `dream --help`.
@@ -37,6 +38,7 @@ int main(int argc, char** argv) {
   DeclareBridgeCommands(line);  // export, import, lab-replay, compare, check-submission (docs/robotarium.md)
   DeclareSweepCommand(line);
   DeclareRenderCommand(line);  // pictures and videos (docs/rendering.md)
+  DeclareVersionCommand(line);
 
   // CLI11 would only say "A subcommand is required"; name the unknown word.
   // Options before the subcommand are the global ones only; the first other
@@ -45,8 +47,8 @@ int main(int argc, char** argv) {
   for (; first_word < argc && argv[first_word][0] == '-'; ++first_word) {
     const std::string option = argv[first_word];
     if (option != "-q" && option != "--quiet" && option != "-v" && option != "--verbose" && option != "-h" &&
-        option != "--help") {
-      std::cerr << "dream: unknown option '" << option << "' before the subcommand; global options are -q, -v, -h"
+        option != "--help" && option != "--version") {
+      std::cerr << "dream: unknown option '" << option << "' before the subcommand; global options are -q, -v, -h, --version"
                 << " (dream --help)\n";
       return kExitUsage;
     }

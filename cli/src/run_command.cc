@@ -25,14 +25,14 @@ int RunEmbedded(const RunArgs& args) {
   std::vector<int> ids(static_cast<size_t>(config.num_robots));
   std::iota(ids.begin(), ids.end(), 0);
   const HostedAgents agents(bus, config, ids);
-  return RunWorld(bus, config, out_dir);
+  return RunWorld(bus, config, ConfigTextForRunFolder(args, config), out_dir);
 }
 
 int RunSimOnly(const RunArgs& args) {
   const config::RunConfig config = LoadConfig(args);
   lcm::LcmBus bus(lcm::ResolveLcmUrl(args.lcm_url));
   const std::string out_dir = PrepareOutputDir(args, config);
-  return RunWorld(bus, config, out_dir);
+  return RunWorld(bus, config, ConfigTextForRunFolder(args, config), out_dir);
 }
 
 void DeclareRunCommand(CommandLine& line) {
@@ -40,7 +40,7 @@ void DeclareRunCommand(CommandLine& line) {
   CLI::App* command = line.AddCommand(
       "run",
       "Run an experiment in one process: the simulator and every robot's agent on one bus.\n"
-      "Example: dream run config/go_to_goal.yaml --out runs/demo",
+      "Example: dream run config/go_to_goal.yaml --seed 7 --set controller.max_speed_mps=0.1",
       [args] { return RunEmbedded(*args); });
   AddRunOptions(command, args.get(), "LCM URL (default memq://, in-process)");
 }

@@ -11,6 +11,7 @@
 #include "dream/agents/python_controller_builder.h"
 #include "dream/agents/python_controller_spec.h"
 #include "dream/bridge/metrics_json.h"
+#include "dream/config/config_error.h"
 #include "dream/sim/atomic_file.h"
 #include "dream/sim/file_text.h"
 #include "dream/sim/output_folder.h"
@@ -21,13 +22,16 @@
 #include "dream/sim/run_track.h"
 #include "dream/sim/trajectory_picture.h"
 #include "dream/sim/unicycle_world.h"
+#include "overridden_config.h"
 #include "render_overlays.h"
+#include "run_folder_choice.h"
 #include "terminal_progress.h"
 
 namespace dream::cli {
 
 config::RunConfig LoadConfig(const RunArgs& args) {
-  config::RunConfig config = config::LoadRunConfigFile(args.config_path);
+  const OverriddenConfig overridden(args.config_path, args.seed, args.sets);
+  config::RunConfig config = overridden.Load();
   if (args.steps != 0) {
     if (args.steps < 1) throw std::invalid_argument("--steps must be >= 1, got " + std::to_string(args.steps));
     config.sim.max_steps = args.steps;
@@ -36,13 +40,20 @@ config::RunConfig LoadConfig(const RunArgs& args) {
   if (args.all_steps) config.sim.stop_when_done = false;
   // Check the controller section now, so a mistake in it stops every command
   // (sim, launch) before anything starts or any folder is made.
-  HostedAgents::Check(config);
+  try {
+    HostedAgents::Check(config);
+  } catch (const config::ConfigError& e) {
+    throw config::ConfigError(overridden.Noted(e.what()));
+  }
   return config;
 }
 
+std::string ConfigTextForRunFolder(const RunArgs& args, const config::RunConfig& config) {
+  return OverriddenConfig(args.config_path, args.seed, args.sets).FolderText(config);
+}
+
 std::string PrepareOutputDir(const RunArgs& args, const config::RunConfig& config) {
-  if (!args.out_dir.empty()) return sim::OutputFolder(args.out_dir).dir();
-  return sim::OutputFolder("runs/" + config.name, sim::OutputFolder::Parents::kCreate).dir();
+  return RunFolderChoice(args.out_dir, "runs/" + config.name, args.overwrite).dir();
 }
 
 void CopyPythonControllerModule(const config::RunConfig& config, const std::string& out_dir) {
@@ -57,11 +68,11 @@ void CopyPythonControllerModule(const config::RunConfig& config, const std::stri
   sim::WriteFileAtomically(copy.string(), sim::ReadFileText(controller.module_path()));
 }
 
-int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std::string& out_dir) {
+int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std::string& config_text,
+             const std::string& out_dir) {
   // A copy of the config beside the log, so the run folder alone is enough for
-  // `dream export` and `dream compare`.
-  sim::WriteFileAtomically(out_dir + "/config.yaml",
-                           config::RunFolderConfigText(config, sim::ReadFileText(config.source)));
+  // `dream export` and `dream compare`, and to rerun it.
+  sim::WriteFileAtomically(out_dir + "/config.yaml", config_text);
   CopyPythonControllerModule(config, out_dir);
   sim::UnicycleWorld world(config.world, config.initial_poses, config.obstacles);
   const std::string log_path = out_dir + "/run.lcmlog";

@@ -30,9 +30,32 @@ CLI::Validator Seconds(bool zero_allowed) {
       zero_allowed ? "SECONDS>=0" : "SECONDS>0");
 }
 
+CLI::Validator SeedValue() {
+  return CLI::Validator(
+      [](const std::string& text) {
+        bool fits = !text.empty() && text.size() <= 18 && text.find_first_not_of("0123456789") == std::string::npos;
+        return fits ? std::string() : "must be a whole number from 0 to 999999999999999999, got " + text;
+      },
+      "INT>=0");
+}
+
+void AddOverrideOptions(CLI::App* command, long long* seed, std::vector<std::string>* sets) {
+  command->add_option("--seed", *seed, "Override the config's seed (initial poses and every noise source)")
+      ->check(SeedValue());
+  command
+      ->add_option("--set", *sets,
+                   "KEY=VALUE: override one config key (dotted: controller.max_speed_mps=0.1,\n"
+                   "controller.sensors.0.noise_std=0.01); repeat for more keys")
+      ->allow_extra_args(false);
+}
+
 void AddRunOptions(CLI::App* command, RunArgs* args, const char* url_help) {
   command->add_option("config", args->config_path, "Run config (YAML), e.g. config/go_to_goal.yaml")->required();
-  command->add_option("--out", args->out_dir, "Output folder for run.lcmlog and summary.json (default runs/<name>)");
+  command->add_option("--out", args->out_dir,
+                      "Output folder for run.lcmlog and summary.json (default runs/<name>, or runs/<name>_2,\n"
+                      "_3, ... when that already holds a run); refused when it holds a run, unless --overwrite");
+  command->add_flag("--overwrite", args->overwrite, "Replace the run already in the output folder");
+  AddOverrideOptions(command, &args->seed, &args->sets);
   command->add_option("--lcm-url", args->lcm_url, url_help);
   command->add_option("--steps", args->steps, "Override the config's step limit")->check(StepCount());
   command->add_option("--mode", args->mode, "Override the world mode")->check(CLI::IsMember({"lockstep", "realtime"}));
@@ -46,6 +69,9 @@ void AddAgentOptions(CLI::App* command, AgentArgs* args) {
   command->add_option("--idle-timeout", args->idle_timeout_s, "Give up after this many seconds without poses")
       ->check(Seconds(false))
       ->capture_default_str();
+  // The world's overrides (dream launch passes them on): agents must build
+  // the robots of the same config.
+  AddOverrideOptions(command, &args->seed, &args->sets);
 }
 
 }  // namespace dream::cli

@@ -2,6 +2,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <string>
+#include <vector>
+
 #include "commands.h"
 
 namespace dream::cli {
@@ -14,6 +17,13 @@ CLI::Validator StepCount();
 /// A duration in seconds: finite and > 0 (or >= 0 with `zero_allowed`), with
 /// a message that says so instead of CLI11's 300-digit range.
 CLI::Validator Seconds(bool zero_allowed);
+
+/// --seed: 0 or more, at most 18 digits (the config keeps seeds as signed
+/// 64-bit numbers), with a message that says so.
+CLI::Validator SeedValue();
+
+/// --seed N and --set KEY=VALUE (repeatable), which OverriddenConfig applies.
+void AddOverrideOptions(CLI::App* command, long long* seed, std::vector<std::string>* sets);
 
 /// The options of the commands that run an experiment (run, sim, launch);
 /// only the help of --lcm-url differs, as each picks its own default bus.

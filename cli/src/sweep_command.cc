@@ -100,8 +100,27 @@ std::string Seconds(double seconds) {
   return text;
 }
 
+/// True when `dir` holds a sweep (its table, or its runs).
+bool HoldsSweep(const fs::path& dir) {
+  std::error_code error;
+  return fs::exists(dir / "sweep.csv", error) || fs::exists(dir / "sweep.md", error) ||
+         fs::exists(dir / "runs", error);
+}
+
+/// The sweep folder: --out as given (an earlier sweep there is replaced run by
+/// run, as documented), else sweeps/<name>, or sweeps/<name>_2, _3, ... when
+/// that holds an earlier sweep, so a rerun keeps it. Not created here: bad
+/// input must leave no folder behind.
+std::string SweepFolder(const SweepArgs& args, const std::string& name) {
+  if (!args.out_dir.empty()) return args.out_dir;
+  const std::string base = "sweeps/" + name;
+  std::string chosen = base;
+  for (int n = 2; HoldsSweep(chosen); ++n) chosen = base + "_" + std::to_string(n);
+  return chosen;
+}
+
 /// The command line that reproduces this sweep (for sweep.md).
-std::string ReproducingCommand(const SweepArgs& args, const std::string& seeds, int jobs) {
+std::string ReproducingCommand(const SweepArgs& args, const std::string& seeds, int jobs, const std::string& out_dir) {
   auto quoted = [](const std::string& text) {
     return text.find_first_of(" \t'\"$[]{}*?;&|<>()\\") == std::string::npos ? text : "'" + text + "'";
   };
@@ -109,7 +128,7 @@ std::string ReproducingCommand(const SweepArgs& args, const std::string& seeds, 
   for (const std::string& set : args.sets) line += " --set " + quoted(set);
   line += " --jobs " + std::to_string(jobs);
   if (args.steps > 0) line += " --steps " + std::to_string(args.steps);
-  return line + " --out " + quoted(args.out_dir);
+  return line + " --out " + quoted(out_dir);
 }
 
 }  // namespace
@@ -141,7 +160,8 @@ int RunSweep(const SweepArgs& args) {
   const int jobs = args.jobs > 0 ? args.jobs : cores;
   if (args.run_timeout_s <= 0.0) throw std::invalid_argument("--timeout must be > 0");
 
-  const fs::path out(args.out_dir);
+  const std::string out_dir = SweepFolder(args, base.name);
+  const fs::path out(out_dir);
   std::vector<std::string> config_texts;
   for (const SweepPlan::Run& run : runs) {
     YAML::Node root = SweepPlan::MakeRunConfig(base_text, args.config_path, run);
@@ -167,8 +187,13 @@ int RunSweep(const SweepArgs& args) {
     }
     config_texts.push_back(text);
   }
-  // Created if missing, its parent must exist, as for every --out.
-  sim::OutputFolder(args.out_dir).MakeSubfolder("runs");
+  // Created if missing; a given --out's parent must exist, as for every --out.
+  sim::OutputFolder(out_dir, args.out_dir.empty() ? sim::OutputFolder::Parents::kCreate
+                                                  : sim::OutputFolder::Parents::kMustExist)
+      .MakeSubfolder("runs");
+  if (args.out_dir.empty() && out_dir != "sweeps/" + base.name) {
+    spdlog::warn("sweeps/{} holds an earlier sweep, so this one goes to {} (--out DIR to choose)", base.name, out_dir);
+  }
 
   // --- the runs, `jobs` at a time ---
   const std::string self = SelfExecutable();
@@ -176,7 +201,7 @@ int RunSweep(const SweepArgs& args) {
   spdlog::info(
       "sweep: {} runs of {} ({} seeds{}), {} at a time on {} cores -> {}", runs.size(), base.name, seeds.size(),
       parameters.empty() ? std::string() : " x " + std::to_string(runs.size() / seeds.size()) + " parameter sets", jobs,
-      cores, args.out_dir);
+      cores, out_dir);
   SweepTable table(plan.parameter_keys(), runs.size());
   size_t finished = 0;
   const Clock::time_point sweep_started = Clock::now();
@@ -221,7 +246,7 @@ int RunSweep(const SweepArgs& args) {
   // --- the table, also for an interrupted sweep (the runs that ended) ---
   const std::string seeds_text = args.seeds.empty() ? std::to_string(base.seed) : args.seeds;
   const std::vector<std::pair<std::string, std::string>> facts = {
-      {"command", ReproducingCommand(args, seeds_text, jobs)},
+      {"command", ReproducingCommand(args, seeds_text, jobs, out_dir)},
       {"runs in parallel", std::to_string(jobs) + " (" + std::to_string(cores) + " cores)"},
       {"wall time", Seconds(wall_s) + (stopping ? " (interrupted)" : "")},
   };
@@ -246,7 +271,7 @@ void DeclareSweepCommand(CommandLine& line) {
       "sweep",
       "Run an experiment over many seeds and parameter values in parallel (one dream run process per\n"
       "run, --jobs at a time) and tabulate the outcomes in <out>/sweep.csv and sweep.md (docs/sweeps.md).\n"
-      "Example: dream sweep config/hrvo_circle.yaml --seeds 1-20 --out sweeps/hrvo_circle",
+      "Example: dream sweep config/hrvo_circle.yaml --seeds 1-20   (writes sweeps/hrvo_circle)",
       [args] { return RunSweep(*args); });
   command->add_option("config", args->config_path, "Run config (YAML) to sweep")->required();
   command->add_option("--seeds", args->seeds, "Seeds: 7, 1-20 or 1,4,9-12 (default: the config's seed)");
@@ -257,7 +282,9 @@ void DeclareSweepCommand(CommandLine& line) {
       ->allow_extra_args(false);
   command->add_option("-j,--jobs", args->jobs, "Runs at once (default: one per core)")->check(CLI::Range(1, 1024));
   command->add_option("--steps", args->steps, "Override the config's step limit in every run")->check(StepCount());
-  command->add_option("--out", args->out_dir, "Sweep folder (its parent must exist)")->required();
+  command->add_option("--out", args->out_dir,
+                      "Sweep folder (its parent must exist; default sweeps/<name>, or sweeps/<name>_2, ...\n"
+                      "when that holds an earlier sweep)");
   command->add_option("--timeout", args->run_timeout_s,
                       "Stop a run still going after this many seconds; it counts as failed")
       ->check(Seconds(false))

@@ -40,12 +40,10 @@ std::vector<std::string> SplitTopLevel(const std::string& text, const std::strin
 
 }  // namespace
 
-SweepParameter SweepParameter::Parse(const std::string& text) {
+SweepParameter SweepParameter::ParseAssignment(const std::string& text, const std::string& expected) {
   const std::string option = "--set " + text;
   const size_t equals = text.find('=');
-  if (equals == std::string::npos) {
-    throw std::invalid_argument(option + ": expected KEY=V1,V2,... such as controller.max_speed_mps=0.1,0.2");
-  }
+  if (equals == std::string::npos) throw std::invalid_argument(option + ": expected " + expected);
   SweepParameter parameter;
   parameter.key = Trim(text.substr(0, equals));
   if (parameter.key.empty()) throw std::invalid_argument(option + ": the key before '=' is empty");
@@ -54,12 +52,19 @@ SweepParameter SweepParameter::Parse(const std::string& text) {
     throw std::invalid_argument(option + ": '" + parameter.key +
                                 "' is not a dotted key like controller.sensors.0.noise_std");
   }
-  if (parameter.key == "seed") throw std::invalid_argument(option + ": seeds are swept with --seeds, not --set");
-  if (parameter.key == "name") throw std::invalid_argument(option + ": the sweep names each run itself");
   parameter.values = SplitTopLevel(text.substr(equals + 1), option);
   for (const std::string& value : parameter.values) {
     if (value.empty()) throw std::invalid_argument(option + ": empty value in the list after '='");
   }
+  return parameter;
+}
+
+SweepParameter SweepParameter::Parse(const std::string& text) {
+  SweepParameter parameter =
+      ParseAssignment(text, "KEY=V1,V2,... such as controller.max_speed_mps=0.1,0.2");
+  const std::string option = "--set " + text;
+  if (parameter.key == "seed") throw std::invalid_argument(option + ": seeds are swept with --seeds, not --set");
+  if (parameter.key == "name") throw std::invalid_argument(option + ": the sweep names each run itself");
   return parameter;
 }
 

@@ -17,6 +17,11 @@ struct SweepParameter {
   /// @throws std::invalid_argument naming the option and the bad part.
   static SweepParameter Parse(const std::string& text);
 
+  /// The syntax Parse shares with `dream run --set KEY=VALUE`, without the
+  /// sweep's own rules (seed and name are allowed). `expected` completes
+  /// "expected ..." when there is no '='.
+  static SweepParameter ParseAssignment(const std::string& text, const std::string& expected);
+
   /// The last part of the key that tells runs apart: "max_speed_mps", or
   /// "sensors.0.noise_std" -> "noise_std", "initial_poses.3" -> "initial_poses.3".
   std::string ShortName() const;

@@ -9,11 +9,17 @@ process draws its own random agent_id, and on udpm an agent may answer a resent 
 commands are compared decoded, with agent_id ignored and repeats of the same step dropped; and the
 launched run must show one distinct agent_id per robot, the one-process run a single one.
 
+With --extra "--seed 5 --set KEY=VALUE", both runs get those overrides: dream launch must pass them
+on to the simulator and every agent process (else poses or commands differ), and the launched run's
+config.yaml must record them.
+
 Usage: netns.sh multiprocess_udpm_run.py --dream BIN --source DIR --types-dir DIR [--config FILE] [--steps N]
+       [--extra=WORDS]
 (--config defaults to config/go_to_goal.yaml; --steps caps both runs, with --all-steps.)
 """
 
 import os
+import shlex
 
 from dreamtest import argument_parser, check, import_types, main, read_events, read_summary, require_private_netns
 
@@ -42,11 +48,13 @@ def test(ctx):
     parser = argument_parser(types_dir=True)
     parser.add_argument("--config", default="config/go_to_goal.yaml", help="relative to --source")
     parser.add_argument("--steps", type=int, default=0)
+    parser.add_argument("--extra", default="", help="options for both runs, e.g. '--seed 5 --set KEY=VALUE'")
     args = parser.parse_args()
     require_private_netns()
     dream = import_types(args.types_dir)
     config = os.path.join(args.source, args.config)
     limit = ["--steps", str(args.steps), "--all-steps"] if args.steps else []
+    limit += shlex.split(args.extra)
 
     launched, single = ctx.path("launch"), ctx.path("run")
     ctx.start("launch", [args.dream, "launch", config, "--out", launched] + limit)
@@ -56,6 +64,12 @@ def test(ctx):
     check(summary["end"] == "finished", f"dream launch: summary end is {summary['end']!r} ({summary['reason']})")
     check(summary["robots_ever_lost"] == [], f"dream launch lost robots {summary['robots_ever_lost']}")
     check(summary["rejected_commands"] == 0, f"dream launch rejected {summary['rejected_commands']} commands")
+
+    if args.extra:
+        # The overrides, as the folder records them (OverriddenConfig::FolderText).
+        with open(os.path.join(launched, "config.yaml")) as f:
+            header = f.readline()
+        check(args.extra in header, f"dream launch: config.yaml does not name {args.extra!r}: {header.strip()}")
 
     ctx.run([args.dream, "-q", "run", config, "--out", single] + limit, timeout=90, expect=0)
     robots = summary["robots"]

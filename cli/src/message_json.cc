@@ -1,0 +1,114 @@
+#include "message_json.h"
+
+#include <cstdio>
+#include <optional>
+
+#include "dream/lcm/lcm_typed.h"
+#include "dream/obstacles_t.hpp"
+#include "dream/radio_message_t.hpp"
+#include "dream/robot_fault_t.hpp"
+#include "dream/robot_poses_t.hpp"
+#include "dream/run_status_t.hpp"
+#include "dream/velocity_command_t.hpp"
+
+namespace dream::cli {
+namespace {
+
+nlohmann::ordered_json ToJson(const robot_poses_t& m) {
+  return {{"utime", m.utime}, {"step", m.step}, {"num_robots", m.num_robots}, {"x", m.x}, {"y", m.y},
+          {"theta", m.theta}, {"v", m.v},       {"w", m.w}};
+}
+
+nlohmann::ordered_json ToJson(const obstacles_t& m) {
+  nlohmann::ordered_json obstacles = nlohmann::ordered_json::array();
+  for (const rectangle_obstacle_t& o : m.obstacles) {
+    obstacles.push_back({{"id", o.id}, {"center_x", o.center_x}, {"center_y", o.center_y}, {"width", o.width},
+                         {"height", o.height}, {"vx", o.vx}, {"vy", o.vy}});
+  }
+  return {{"utime", m.utime}, {"step", m.step}, {"num_obstacles", m.num_obstacles}, {"obstacles", obstacles}};
+}
+
+nlohmann::ordered_json ToJson(const run_status_t& m) {
+  return {{"utime", m.utime},
+          {"step", m.step},
+          {"state", m.state},
+          {"num_robots", m.num_robots},
+          {"boundary_errors", m.boundary_errors},
+          {"collision_errors", m.collision_errors},
+          {"actuator_errors", m.actuator_errors},
+          {"obstacle_collisions", m.obstacle_collisions},
+          {"rejected_commands", m.rejected_commands},
+          {"num_lost", m.num_lost},
+          {"lost_robot_ids", m.lost_robot_ids},
+          {"detail", m.detail}};
+}
+
+nlohmann::ordered_json ToJson(const velocity_command_t& m) {
+  return {{"utime", m.utime}, {"step", m.step}, {"robot_id", m.robot_id}, {"agent_id", m.agent_id},
+          {"v", m.v},         {"w", m.w},       {"done", m.done != 0}};
+}
+
+std::string Hex(const std::vector<uint8_t>& bytes) {
+  static const char* const kDigits = "0123456789abcdef";
+  std::string text;
+  text.reserve(bytes.size() * 2);
+  for (uint8_t byte : bytes) {
+    text += kDigits[byte >> 4];
+    text += kDigits[byte & 0xf];
+  }
+  return text;
+}
+
+nlohmann::ordered_json ToJson(const radio_message_t& m) {
+  return {{"utime", m.utime},         {"step", m.step},         {"sender_id", m.sender_id},
+          {"agent_id", m.agent_id},   {"payload_size", m.payload_size}, {"payload", Hex(m.payload)}};
+}
+
+nlohmann::ordered_json ToJson(const robot_fault_t& m) {
+  return {{"utime", m.utime}, {"step", m.step}, {"robot_id", m.robot_id}, {"agent_id", m.agent_id},
+          {"detail", m.detail}};
+}
+
+int64_t Fingerprint(const std::vector<uint8_t>& data) {
+  uint64_t value = 0;
+  for (size_t i = 0; i < 8; ++i) value = (value << 8) | data[i];  // big-endian, as LCM encodes it
+  return static_cast<int64_t>(value);
+}
+
+}  // namespace
+
+MessageJson::MessageJson(const std::vector<uint8_t>& data) {
+  if (data.size() < 8) {
+    problem_ = std::to_string(data.size()) + " bytes, too short for a fingerprint";
+    return;  // no fingerprint: not a DREAM message, whatever its channel
+  }
+  const int64_t fingerprint = Fingerprint(data);
+  const int size = static_cast<int>(data.size());
+  bool matched = false;
+  auto attempt = [&](auto message) {
+    using Message = decltype(message);
+    if (matched || fingerprint != Message::getHash()) return;
+    matched = true;
+    type_ = Message::getTypeName();
+    if (std::optional<std::string> problem = lcm::DecodeProblem(data.data(), size, &message)) {
+      outcome_ = Outcome::kUndecodable;
+      problem_ = *problem;
+      return;
+    }
+    outcome_ = Outcome::kDecoded;
+    fields_ = ToJson(message);
+  };
+  attempt(robot_poses_t{});
+  attempt(obstacles_t{});
+  attempt(run_status_t{});
+  attempt(velocity_command_t{});
+  attempt(radio_message_t{});
+  attempt(robot_fault_t{});
+  if (!matched) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%016llx", static_cast<unsigned long long>(fingerprint));
+    problem_ = std::string("fingerprint 0x") + text + " is none of the DREAM types'";
+  }
+}
+
+}  // namespace dream::cli

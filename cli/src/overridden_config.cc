@@ -1,0 +1,74 @@
+#include "overridden_config.h"
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "config_override.h"
+#include "dream/config/config_error.h"
+#include "dream/config/config_node.h"
+#include "sweep_parameter.h"
+#include "sweep_plan.h"
+
+namespace dream::cli {
+
+OverriddenConfig::OverriddenConfig(const std::string& path, long long seed, const std::vector<std::string>& sets)
+    : path_(path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw config::ConfigError(path + ": cannot open the config file (does it exist and is it readable?)");
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  text_ = bytes.str();
+  if (seed < 0 && sets.empty()) return;  // Load() reads the file as it always has
+
+  // The config's own parser: a duplicate key or a second document is refused
+  // here as `dream run` without overrides refuses it.
+  root_ = config::ConfigNode::ParseYaml(text_, path);
+  if (!root_.IsMap()) throw config::ConfigError(path + ": the config must be a YAML mapping of keys");
+  if (seed >= 0) {
+    ApplyConfigOverride(root_, "seed", std::to_string(seed), path);
+    overrides_.push_back("--seed " + std::to_string(seed));
+  }
+  for (const std::string& set : sets) {
+    const SweepParameter parameter = SweepParameter::ParseAssignment(set, "KEY=VALUE such as controller.max_speed_mps=0.1");
+    const std::string option = "--set " + set;
+    if (parameter.values.size() != 1) {
+      throw std::invalid_argument(option + ": one value per key here (" + std::to_string(parameter.values.size()) +
+                                  " given); dream sweep runs a list of values");
+    }
+    if (parameter.key == "seed" && seed >= 0) {
+      throw std::invalid_argument(option + ": --seed and --set seed=... both set the seed; give one");
+    }
+    ApplyConfigOverride(root_, parameter.key, parameter.values.front(), path);
+    overrides_.push_back("--set " + parameter.key + "=" + parameter.values.front());
+  }
+}
+
+config::RunConfig OverriddenConfig::Load() const {
+  if (overrides_.empty()) return config::LoadRunConfigFile(path_);
+  try {
+    // Checked in memory: an overridden value keeps its key's line in the file.
+    return config::LoadRunConfig(config::ConfigNode(root_, path_, ""));
+  } catch (const config::ConfigError& e) {
+    throw config::ConfigError(Noted(e.what()));
+  }
+}
+
+std::string OverriddenConfig::FolderText(const config::RunConfig& config) const {
+  if (overrides_.empty()) return config::RunFolderConfigText(config, text_);
+  return config::RunFolderConfigText(
+      config, SweepPlan::EmitConfig(root_, path_ + " with " + OptionsText() +
+                                               " (the values below include them; comments were not kept)."));
+}
+
+std::string OverriddenConfig::Noted(const std::string& message) const {
+  return overrides_.empty() ? message : message + " (with " + OptionsText() + ")";
+}
+
+std::string OverriddenConfig::OptionsText() const {
+  std::string text;
+  for (const std::string& option : overrides_) text += (text.empty() ? "" : " ") + option;
+  return text;
+}
+
+}  // namespace dream::cli

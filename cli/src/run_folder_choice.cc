@@ -1,0 +1,74 @@
+#include "run_folder_choice.h"
+
+#include <spdlog/spdlog.h>
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "dream/sim/output_folder.h"
+
+namespace dream::cli {
+namespace fs = std::filesystem;
+namespace {
+
+// The files that make a folder a run's (and that a new run writes).
+constexpr const char* kRunFiles[] = {"run.lcmlog", "summary.json", "trajectories.png"};
+
+void RemoveEarlierRun(const std::string& dir) {
+  for (const char* name : kRunFiles) {
+    std::error_code error;
+    fs::remove(fs::path(dir) / name, error);
+    if (error) throw std::runtime_error("--overwrite: cannot remove " + (fs::path(dir) / name).string() + ": " + error.message());
+  }
+}
+
+}  // namespace
+
+bool RunFolderChoice::HoldsRun(const std::string& dir) {
+  // Files only: anything else by those names is no run's output (and the
+  // run will fail to write there, saying so).
+  std::error_code error;
+  return fs::is_regular_file(fs::path(dir) / "run.lcmlog", error) ||
+         fs::is_regular_file(fs::path(dir) / "summary.json", error);
+}
+
+RunFolderChoice::RunFolderChoice(const std::string& out, const std::string& default_dir, bool overwrite,
+                                 Create create) {
+  if (!out.empty()) {
+    if (HoldsRun(out)) {
+      if (!overwrite) {
+        throw std::runtime_error("--out " + out + " already holds a run (run.lcmlog or summary.json); pass " +
+                                 "--overwrite to replace it, or another --out");
+      }
+      spdlog::info("--overwrite: replacing the run in {}", out);
+      RemoveEarlierRun(out);
+    }
+    dir_ = create == Create::kNow ? sim::OutputFolder(out).dir() : out;
+    return;
+  }
+  std::string chosen = default_dir;
+  if (HoldsRun(default_dir)) {
+    if (overwrite) {
+      spdlog::info("--overwrite: replacing the run in {}", default_dir);
+      RemoveEarlierRun(default_dir);
+    } else {
+      // A folder is taken once it holds a run; an empty one (a run that
+      // failed before starting) is reused.
+      for (int n = 2; HoldsRun(chosen); ++n) chosen = default_dir + "_" + std::to_string(n);
+      renamed_ = true;
+    }
+  }
+  if (create == Create::kNow) {
+    dir_ = sim::OutputFolder(chosen, sim::OutputFolder::Parents::kCreate).dir();
+  } else {
+    std::error_code error;  // a failure shows when the folder is made
+    fs::create_directories(fs::path(chosen).parent_path(), error);
+    dir_ = chosen;
+  }
+  if (renamed_) {
+    spdlog::warn("{} holds an earlier run, so this one goes to {} (--out DIR to choose, --overwrite to replace)",
+                 default_dir, dir_);
+  }
+}
+
+}  // namespace dream::cli

@@ -1,0 +1,80 @@
+#include "message_json.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "dream/radio_message_t.hpp"
+#include "dream/robot_poses_t.hpp"
+
+namespace dream::cli {
+namespace {
+
+template <typename Message>
+std::vector<uint8_t> Encode(const Message& message) {
+  std::vector<uint8_t> bytes(static_cast<size_t>(message.getEncodedSize()));
+  message.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  return bytes;
+}
+
+robot_poses_t TwoRobots() {
+  robot_poses_t poses;
+  poses.utime = 33000;
+  poses.step = 1;
+  poses.num_robots = 2;
+  poses.x = {0.5, -0.25};
+  poses.y = {0.1, 0.2};
+  poses.theta = {3.0, -1.5};
+  poses.v = {0.1, 0.0};
+  poses.w = {0.0, 0.5};
+  return poses;
+}
+
+TEST(MessageJson, PosesDecodeToTheirFieldsInOrder) {
+  const MessageJson json(Encode(TwoRobots()));
+  ASSERT_EQ(json.outcome(), MessageJson::Outcome::kDecoded) << json.problem();
+  EXPECT_EQ(json.type(), "robot_poses_t");
+  EXPECT_EQ(json.fields().dump(),
+            R"({"utime":33000,"step":1,"num_robots":2,"x":[0.5,-0.25],"y":[0.1,0.2],"theta":[3.0,-1.5],)"
+            R"("v":[0.1,0.0],"w":[0.0,0.5]})");
+}
+
+TEST(MessageJson, RadioPayloadIsHex) {
+  radio_message_t radio;
+  radio.utime = 132000;
+  radio.step = 4;
+  radio.sender_id = 3;
+  radio.agent_id = 99;
+  radio.payload = {0x00, 0xab, 0x10, 0xff};
+  radio.payload_size = 4;
+  const MessageJson json(Encode(radio));
+  ASSERT_EQ(json.outcome(), MessageJson::Outcome::kDecoded) << json.problem();
+  EXPECT_EQ(json.fields()["payload"], "00ab10ff");
+  EXPECT_EQ(json.fields()["sender_id"], 3);
+}
+
+TEST(MessageJson, CutShortIsUndecodableWithTheTypeAndWhy) {
+  std::vector<uint8_t> bytes = Encode(TwoRobots());
+  bytes.resize(bytes.size() - 5);
+  const MessageJson json(bytes);
+  EXPECT_EQ(json.outcome(), MessageJson::Outcome::kUndecodable);
+  EXPECT_EQ(json.type(), "robot_poses_t");
+  EXPECT_FALSE(json.problem().empty());
+}
+
+TEST(MessageJson, AForgedCountIsRefusedWithoutDecoding) {
+  std::vector<uint8_t> bytes = Encode(TwoRobots());
+  // num_robots (after the 8-byte fingerprint, utime and step) set to 2^31 - 1.
+  bytes[24] = 0x7f;
+  bytes[25] = bytes[26] = bytes[27] = 0xff;
+  const MessageJson json(bytes);
+  EXPECT_EQ(json.outcome(), MessageJson::Outcome::kUndecodable);
+}
+
+TEST(MessageJson, OtherProgramsMessagesAreUnknown) {
+  EXPECT_EQ(MessageJson(std::vector<uint8_t>(16, 0x42)).outcome(), MessageJson::Outcome::kUnknownType);
+  EXPECT_EQ(MessageJson(std::vector<uint8_t>{1, 2, 3}).outcome(), MessageJson::Outcome::kUnknownType);
+}
+
+}  // namespace
+}  // namespace dream::cli

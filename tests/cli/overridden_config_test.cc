@@ -1,0 +1,100 @@
+#include "overridden_config.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include "dream/config/config_error.h"
+#include "dream/config/config_node.h"
+
+namespace dream::cli {
+namespace {
+
+const char* kConfig = R"(name: demo   # a comment the unchanged copy keeps
+seed: 1
+robots: 3
+initial_poses: {generate: {min_spacing_m: 0.3}}
+controller:
+  kind: go_to_goal
+  max_speed_mps: 0.15
+  goals: [[0.2, 0.2], [-0.2, -0.2], [0.0, 0.5]]
+)";
+
+class OverriddenConfigTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("dream_overridden_config_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::create_directories(dir_);
+    path_ = (dir_ / "demo.yaml").string();
+    std::ofstream(path_) << kConfig;
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  std::string ErrorOf(long long seed, const std::vector<std::string>& sets) const {
+    try {
+      OverriddenConfig(path_, seed, sets).Load();
+    } catch (const std::exception& e) {
+      return e.what();
+    }
+    return "(no error)";
+  }
+
+  std::filesystem::path dir_;
+  std::string path_;
+};
+
+TEST_F(OverriddenConfigTest, WithoutOverridesTheFileIsReadAndCopiedAsItIs) {
+  const OverriddenConfig overridden(path_, -1, {});
+  const config::RunConfig config = overridden.Load();
+  EXPECT_EQ(config.seed, 1u);
+  EXPECT_EQ(overridden.FolderText(config), kConfig);  // comments kept
+  EXPECT_EQ(overridden.OptionsText(), "");
+}
+
+TEST_F(OverriddenConfigTest, SeedAndSetsChangeTheRunAndTheFolderTextReloadsToTheSameRun) {
+  const OverriddenConfig overridden(path_, 7, {"controller.max_speed_mps=0.1", "controller.goals.2=[0.4, 0.4]"});
+  const config::RunConfig config = overridden.Load();
+  EXPECT_EQ(config.seed, 7u);
+  EXPECT_EQ(overridden.OptionsText(), "--seed 7 --set controller.max_speed_mps=0.1 --set controller.goals.2=[0.4, 0.4]");
+  EXPECT_NE(config.initial_poses[0].x_m, config::LoadRunConfigFile(path_).initial_poses[0].x_m)
+      << "another seed must generate other start poses";
+
+  const std::string text = overridden.FolderText(config);
+  EXPECT_EQ(text.rfind("# " + path_ + " with --seed 7", 0), 0u) << text;
+  const config::RunConfig again = config::LoadRunConfig(config::ConfigNode::LoadString(text, "copy.yaml"));
+  EXPECT_EQ(again.seed, 7u);
+  EXPECT_DOUBLE_EQ(again.controller.Required("max_speed_mps").AsDouble(), 0.1);
+  ASSERT_EQ(again.initial_poses.size(), config.initial_poses.size());
+  for (size_t i = 0; i < again.initial_poses.size(); ++i) {
+    EXPECT_EQ(again.initial_poses[i].x_m, config.initial_poses[i].x_m);
+    EXPECT_EQ(again.initial_poses[i].theta_rad, config.initial_poses[i].theta_rad);
+  }
+}
+
+TEST_F(OverriddenConfigTest, MistakesNameTheOptionAndTheKey) {
+  // A misspelt last key is added, then refused by the config check (the
+  // controller section's by HostedAgents::Check, in LoadConfig).
+  const std::string misspelt = ErrorOf(-1, {"stepz=3"});
+  EXPECT_NE(misspelt.find("stepz"), std::string::npos) << misspelt;
+  EXPECT_NE(misspelt.find("(with --set stepz=3)"), std::string::npos) << misspelt;
+  EXPECT_NE(ErrorOf(-1, {"controler.gain=1"}).find("--set controler.gain: " + path_ + " has no key 'controler'"),
+            std::string::npos);
+  const std::string bad_value = ErrorOf(-1, {"robots=many"});
+  EXPECT_NE(bad_value.find("demo.yaml:3: robots"), std::string::npos) << bad_value;
+  EXPECT_NE(bad_value.find("(with --set robots=many)"), std::string::npos) << bad_value;
+  EXPECT_NE(ErrorOf(-1, {"robots"}).find("--set robots: expected KEY=VALUE"), std::string::npos);
+  EXPECT_NE(ErrorOf(-1, {"robots=2,3"}).find("one value per key here (2 given)"), std::string::npos);
+  EXPECT_NE(ErrorOf(4, {"seed=5"}).find("--seed and --set seed=... both set the seed"), std::string::npos);
+  EXPECT_EQ(ErrorOf(-1, {"seed=5"}), "(no error)");  // alone, --set seed is just another key
+}
+
+TEST_F(OverriddenConfigTest, AMissingFileIsAConfigErrorNamingIt) {
+  EXPECT_THROW(OverriddenConfig((dir_ / "nope.yaml").string(), 3, {}), config::ConfigError);
+}
+
+}  // namespace
+}  // namespace dream::cli
