@@ -120,6 +120,11 @@ int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std:
   for (const auto& [id, detail] : outcome.robot_faults) {
     std::cout << "robot " << id << " was lost, its controller failed at " << detail << "\n";
   }
+  if (!outcome.robot_faults.empty()) {
+    // The Robotarium's text above judges only the poses; a failed controller is not ready for the lab.
+    std::cout << "NOT ready for the Robotarium: " << outcome.robot_faults.size()
+              << " controller(s) failed; fix them and run again (dream export refuses this run).\n";
+  }
   std::cout << "log:     " << log_path << "\nsummary: " << out_dir << "/summary.json\n";
   bool picture_failed = false;
   if (outcome.steps > 0 || outcome.end == sim::RunOutcome::End::kFinished) {

@@ -149,7 +149,8 @@ def test(context, args):
     check(faults["2"].startswith("step 30: ") and "faulty.py:10: in update: ZeroDivisionError" in faults["2"],
           f"the fault does not say step, file:line and error: {faults['2']}")
     check(summary["robots_ever_lost"] == [2], f"robots_ever_lost {summary['robots_ever_lost']}, expected [2]")
-    check("robot 2 was lost, its controller failed at step 30" in output, f"the report does not say it: {output[-400:]}")
+    check("robot 2 was lost, its controller failed at step 30" in output and "NOT ready for the Robotarium" in output,
+          f"the report does not say it: {output[-400:]}")
     poses = poses_by_step(os.path.join(faulty_out, "run.lcmlog"), dream)
     x_of = lambda step, robot: poses[step][0][robot]
     check(x_of(120, 2) == x_of(31, 2), f"robot 2 moved after it was lost: x {x_of(31, 2)} -> {x_of(120, 2)}")
