@@ -494,6 +494,8 @@ def _search_line(cones, ox, oy, ux, uy, lo, hi, skip_cone, target_x, target_y, b
     t_nearest = (target_x - ox) * ux + (target_y - oy) * uy
     t_nearest = lo if t_nearest < lo else (hi if hi < t_nearest else t_nearest)
     # The open stretch (a, b) of the line inside each other wedge, shrunk by the tolerance.
+    # The clip against the wedge's right side and then its left side is written out twice,
+    # not called: this loop is the solver's hot path, and a call per side costs more than it.
     intervals = []
     for index, (ax, ay, rx, ry, lx, ly) in enumerate(cones):
         if index == skip_cone:  # the line is this wedge's own edge
