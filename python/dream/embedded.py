@@ -17,9 +17,17 @@ from .lcm import Lcm
 _log = logging.getLogger("dream")
 
 
+class _ToolFormatter(logging.Formatter):
+    """The tool's own log lines ('[12:00:01.250] [warning] ...'), so Python's mix in unnoticed."""
+
+    def format(self, record):
+        record.levelname = record.levelname.lower()
+        return super().format(record)
+
+
 def setup(lcmtypes_dir, log_level):
     """Makes lcm-gen's Python types (package dream) importable as dream.<type>, and logs
-    like the tool: '[time] [level] message' on stderr at the tool's level."""
+    like the tool, on stderr at the tool's level."""
     package = sys.modules[__package__]
     types_package = os.path.join(lcmtypes_dir, "dream")
     if not os.path.isfile(os.path.join(types_package, "robot_poses_t.py")):
@@ -35,8 +43,7 @@ def setup(lcmtypes_dir, log_level):
             setattr(package, name, getattr(module, name))
     if not _log.handlers:
         handler = logging.StreamHandler(sys.stderr)
-        handler.setFormatter(logging.Formatter("[%(asctime)s.%(msecs)03d] [%(levelname)s] %(message)s",
-                                               "%Y-%m-%d %H:%M:%S"))
+        handler.setFormatter(_ToolFormatter("[%(asctime)s.%(msecs)03d] [%(levelname)s] %(message)s", "%H:%M:%S"))
         _log.addHandler(handler)
         _log.propagate = False
     _log.setLevel(log_level)
