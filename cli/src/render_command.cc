@@ -127,6 +127,20 @@ sim::ArenaOverlays Overlays(const RenderArgs& args, const fs::path& log) {
   return overlays;
 }
 
+/// The run's name and verdict from summary.json beside `log`, when it is
+/// there and holds them (the pictures' captions show them).
+void RunLabelFromSummary(const fs::path& log, sim::ArenaOverlays* overlays) {
+  const fs::path summary_path = log.parent_path() / "summary.json";
+  if (!fs::is_regular_file(summary_path)) return;
+  std::ifstream in(summary_path);
+  const nlohmann::json summary = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (summary.is_discarded() || !summary.is_object()) return;  // a label is a nicety, not worth failing for
+  if (summary.contains("run") && summary["run"].is_string()) overlays->run_name = summary["run"].get<std::string>();
+  if (summary.contains("verdict") && summary["verdict"].is_string()) {
+    overlays->verdict = summary["verdict"].get<std::string>();
+  }
+}
+
 /// summary.json's metric series ({"name": [[step, value], ...]}) beside the
 /// log, then the closest approach computed from the log's poses.
 std::vector<sim::MetricSeries> MetricSeriesOf(const fs::path& log, const sim::RunTrack& track, std::string* title) {
@@ -210,7 +224,8 @@ int RunRender(const RenderArgs& args) {
     std::cout << "plot:    " << out.string() << " (" << series.size() << " series)\n";
     return kExitOk;
   }
-  const sim::ArenaOverlays overlays = Overlays(args, log);
+  sim::ArenaOverlays overlays = Overlays(args, log);
+  RunLabelFromSummary(log, &overlays);
   if (kind == Kind::kPicture) {
     sim::TrajectoryPicture::Render(track, overlays, out.string(), format, args.width_px > 0 ? args.width_px : 1280);
     std::cout << "picture: " << out.string() << " (" << track.num_robots() << " robots, " << track.poses().size()

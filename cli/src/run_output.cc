@@ -130,8 +130,11 @@ int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std:
   if (outcome.steps > 0 || outcome.end == sim::RunOutcome::End::kFinished) {
     try {
       // With the config's goals, like `dream render` draws them.
-      sim::TrajectoryPicture::Render(sim::RunTrack::Read(log_path), ArenaOverlaysFromConfig(config),
-                                     out_dir + "/trajectories.png", sim::RenderFormat::kPng, 1280);
+      sim::ArenaOverlays overlays = ArenaOverlaysFromConfig(config);
+      overlays.run_name = config.name;
+      overlays.verdict = sim::RunVerdictName(report.verdict);  // as summary.json says
+      sim::TrajectoryPicture::Render(sim::RunTrack::Read(log_path), overlays, out_dir + "/trajectories.png",
+                                     sim::RenderFormat::kPng, 1280);
       std::cout << "picture: " << out_dir << "/trajectories.png\n";
     } catch (const std::exception& e) {
       spdlog::error("no trajectories.png: {}", e.what());

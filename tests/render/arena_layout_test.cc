@@ -9,15 +9,21 @@ namespace {
 
 TEST(ArenaLayoutTest, MapsTheArenaCornersInsideTheMarginsWithYUp) {
   const ArenaLayout layout(1280, 1);
-  EXPECT_DOUBLE_EQ(layout.px(-1.6), 30.0);
-  EXPECT_DOUBLE_EQ(layout.px(1.6), 1250.0);
-  EXPECT_DOUBLE_EQ(layout.py(1.0), 30.0);
+  EXPECT_DOUBLE_EQ(layout.px(-1.6), 36.0);
+  EXPECT_DOUBLE_EQ(layout.px(1.6), 1244.0);
+  EXPECT_DOUBLE_EQ(layout.py(1.0), 36.0);
   EXPECT_GT(layout.py(-1.0), layout.py(1.0));
-  EXPECT_DOUBLE_EQ(layout.scale(), 1220.0 / 3.2);
+  EXPECT_DOUBLE_EQ(layout.scale(), 1208.0 / 3.2);
   EXPECT_DOUBLE_EQ(layout.ui_scale(), 1.0);
   // The caption sits below the arena and inside the picture.
   EXPECT_GT(layout.caption_baseline_px(0), layout.py(-1.0));
   EXPECT_LT(layout.caption_baseline_px(0), layout.height_px());
+  // The legend row lies between the arena (and its x tick labels) and the caption,
+  // tall enough for a robot marker to scale (0.11 m).
+  EXPECT_GT(layout.legend_center_px() - layout.legend_row_px() / 2, layout.py(-1.0) + layout.tick_font_px());
+  EXPECT_LT(layout.legend_center_px() + layout.legend_row_px() / 2,
+            layout.caption_baseline_px(0) - layout.caption_font_px() * 0.7);
+  EXPECT_GE(layout.legend_row_px(), 0.11 * layout.scale());
 }
 
 TEST(ArenaLayoutTest, VideoFramesHaveEvenSizes) {

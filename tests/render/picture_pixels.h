@@ -56,6 +56,25 @@ class PicturePixels {
     return true;
   }
 
+  /// How many pixels of the rectangle [x0, x1) x [y0, y1) are within `tolerance` of `rgb`.
+  int CountNear(double x0, double y0, double x1, double y1, const std::array<double, 3>& rgb,
+                int tolerance = 12) const {
+    int count = 0;
+    for (int y = static_cast<int>(y0); y < static_cast<int>(y1); ++y) {
+      for (int x = static_cast<int>(x0); x < static_cast<int>(x1); ++x) count += Near(x, y, rgb, tolerance) ? 1 : 0;
+    }
+    return count;
+  }
+
+  /// How many pixels of the rectangle [x0, x1) x [y0, y1) are not white.
+  int CountInk(double x0, double y0, double x1, double y1) const {
+    int count = 0;
+    for (int y = static_cast<int>(y0); y < static_cast<int>(y1); ++y) {
+      for (int x = static_cast<int>(x0); x < static_cast<int>(x1); ++x) count += Near(x, y, {1, 1, 1}, 8) ? 0 : 1;
+    }
+    return count;
+  }
+
  private:
   cairo_surface_t* surface_;
 };

@@ -56,6 +56,29 @@ TEST_F(RunAnimationTest, FramesFollowDurationFpsAndSpeed) {
   EXPECT_EQ(animation.layout().height_px() % 2, 0);
 }
 
+TEST_F(RunAnimationTest, FramesHaveTickLabelsALegendAndTheRunsName) {
+  ArenaOverlays overlays;
+  overlays.run_name = "demo";
+  overlays.verdict = "clean";
+  RunAnimation named(track_, overlays, Options());
+  RunAnimation plain(track_, no_overlays_, Options());
+  named.WriteFramePng(0, dir_ / "named.png");
+  plain.WriteFramePng(0, dir_ / "plain.png");
+  const PicturePixels with(dir_ / "named.png");
+  const PicturePixels without(dir_ / "plain.png");
+  const ArenaLayout& layout = named.layout();
+  // A y tick label left of the frame at y = 0, an x one under it at x = 0.
+  EXPECT_GT(with.CountInk(0, layout.py(0.0) - 5, layout.px(-1.6) - 2, layout.py(0.0) + 5), 5);
+  EXPECT_GT(with.CountInk(layout.px(0) - 8, layout.py(-1.0) + 3, layout.px(0) + 8, layout.py(-1.0) + 14), 3);
+  // The legend's robot disc, in robot 0's colour.
+  const double top = layout.legend_center_px() - layout.legend_row_px() / 2;
+  EXPECT_GT(with.CountNear(0, top, layout.width_px(), top + layout.legend_row_px(), kRobot0Blue, 20), 20);
+  // The caption starts with the run's name and verdict: more ink on that line.
+  const double baseline = layout.caption_baseline_px(0);
+  EXPECT_GT(with.CountInk(0, baseline - 12, layout.width_px(), baseline + 3),
+            without.CountInk(0, baseline - 12, layout.width_px(), baseline + 3) + 50);
+}
+
 TEST_F(RunAnimationTest, EachFrameShowsTheRobotsWhereTheyAreThen) {
   RunAnimation animation(track_, no_overlays_, Options());
   const ArenaLayout& layout = animation.layout();

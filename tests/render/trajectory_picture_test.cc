@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -83,6 +84,76 @@ TEST_F(TrajectoryPictureTest, OverlaysDrawGoalsSensorRangesAndRadioLinks) {
   // A quarter of the way along the link from robot 1 (0, -0.5) to robot 0 (1, 0.5).
   EXPECT_TRUE(without.Near(layout_.px(0.25), layout_.py(-0.25), kWhite, 0));
   EXPECT_FALSE(with.Near(layout_.px(0.25), layout_.py(-0.25), kWhite, 30));
+}
+
+TEST_F(TrajectoryPictureTest, TickLabelsInMetresSitOutsideTheArenaFrame) {
+  const std::string png = dir_ / "trajectories.png";
+  TrajectoryPicture::Render(log_path_, png);
+  const PicturePixels picture(png);
+  const double left = layout_.px(-1.6);
+  const double bottom = layout_.py(-1.0);
+  // y labels left of the frame at the grid lines (0, 1), none between them.
+  EXPECT_GT(picture.CountInk(0, layout_.py(0.0) - 6, left - 2, layout_.py(0.0) + 6), 10);
+  EXPECT_GT(picture.CountInk(0, layout_.py(1.0) - 6, left - 2, layout_.py(1.0) + 6), 5);
+  EXPECT_EQ(picture.CountInk(0, layout_.py(0.25) - 6, left - 2, layout_.py(0.25) + 6), 0);
+  // x labels under the frame at -1.5 and 1.5, none at -1.25.
+  for (double x : {-1.5, 1.5}) {
+    EXPECT_GT(picture.CountInk(layout_.px(x) - 14, bottom + 3, layout_.px(x) + 14, bottom + 20), 10) << x;
+  }
+  EXPECT_EQ(picture.CountInk(layout_.px(-1.25) - 14, bottom + 3, layout_.px(-1.25) + 14, bottom + 20), 0);
+  // Small and grey: no black in the tick labels.
+  EXPECT_EQ(picture.CountNear(0, layout_.py(0.0) - 6, left - 2, layout_.py(0.0) + 6, {0, 0, 0}, 60), 0);
+}
+
+TEST_F(TrajectoryPictureTest, TheLegendShowsTheMarkersTheRunUses) {
+  ArenaOverlays goals;
+  goals.goals_m = {{{-1.2, 0.8}}, {{0.5, -0.8}}};
+  const std::string with_goals = dir_ / "goals.png";
+  TrajectoryPicture::Render(RunTrack::Read(log_path_), goals, with_goals, RenderFormat::kPng);
+  const std::string no_goals = dir_ / "plain.png";
+  TrajectoryPicture::Render(RunTrack::Read(log_path_), ArenaOverlays{}, no_goals, RenderFormat::kPng);
+  const std::string no_obstacles = dir_ / "empty.png";
+  TrajectoryPicture::Render(RunTrack::Read(SyntheticRunLog::TwoRobots(dir_ / "bare.lcmlog", 100).Write()),
+                            ArenaOverlays{}, no_obstacles, RenderFormat::kPng);
+
+  const double top = layout_.legend_center_px() - layout_.legend_row_px() / 2;
+  const double bottom = layout_.legend_center_px() + layout_.legend_row_px() / 2;
+  const double width = layout_.width_px();
+  auto blue = [&](const PicturePixels& p) { return p.CountNear(0, top, width, bottom, kRobot0Blue, 20); };
+  auto grey = [&](const PicturePixels& p) { return p.CountNear(0, top, width, bottom, kObstacleGrey, 6); };
+  const PicturePixels goals_picture(with_goals);
+  const PicturePixels plain_picture(no_goals);
+  const PicturePixels bare_picture(no_obstacles);
+  // Start (hollow) and end (filled disc, radius 0.055 m to scale) in robot 0's colour.
+  const double disc_px = M_PI * std::pow(kRobotRadiusM * layout_.scale(), 2);
+  EXPECT_GT(blue(plain_picture), 0.7 * disc_px);
+  EXPECT_GT(blue(goals_picture), blue(plain_picture) + 20);  // and a goal cross
+  EXPECT_GT(grey(plain_picture), 200);                        // the obstacle swatch
+  EXPECT_LT(grey(bare_picture), 20);                          // no obstacles, no swatch (text edges only)
+  EXPECT_EQ(blue(bare_picture), blue(plain_picture));
+}
+
+TEST_F(TrajectoryPictureTest, TheCaptionNamesTheRunAndItsVerdictWhenKnown) {
+  const RunTrack track = RunTrack::Read(log_path_);
+  EXPECT_EQ(TrajectoryPicture::Caption(track, ArenaOverlays{}), "2 robots, steps 0..100 (3.3 s)");
+  ArenaOverlays overlays;
+  overlays.run_name = "go_to_goal";
+  overlays.verdict = "clean";
+  EXPECT_EQ(TrajectoryPicture::Caption(track, overlays),
+            "go_to_goal \xe2\x80\x94 clean (no errors or warnings) \xe2\x80\x94 2 robots, steps 0..100 (3.3 s)");
+  overlays.verdict = "rejected";
+  EXPECT_EQ(TrajectoryPicture::Caption(track, overlays).rfind("go_to_goal \xe2\x80\x94 rejected (", 0), 0u);
+  overlays.run_name.clear();
+  overlays.verdict = "odd";  // an unknown verdict is shown as it is
+  EXPECT_EQ(TrajectoryPicture::Caption(track, overlays), "odd \xe2\x80\x94 2 robots, steps 0..100 (3.3 s)");
+  // The picture is one caption line taller than the arena, legend and all: the same size as before.
+  const std::string png = dir_ / "named.png";
+  TrajectoryPicture::Render(track, overlays, png, RenderFormat::kPng);
+  const PicturePixels picture(png);
+  EXPECT_EQ(picture.height(), layout_.height_px());
+  EXPECT_GT(picture.CountInk(layout_.px(-1.6), layout_.caption_baseline_px(0) - 10, layout_.px(-1.0),
+                             layout_.caption_baseline_px(0) + 2),
+            20);
 }
 
 TEST_F(TrajectoryPictureTest, SvgIsAVectorPictureOfTheSameRun) {

@@ -5,11 +5,15 @@
 #include <stdexcept>
 #include <string>
 
+#include "dream/sim/robotarium_constants.h"
+
 namespace dream::sim {
 namespace {
 
 constexpr double kReferenceWidthPx = 1280.0;  // ui_scale() == 1
-constexpr double kMarginPx = 30.0;            // at ui_scale 1
+constexpr double kMarginPx = 36.0;            // at ui_scale 1: room for the tick labels
+constexpr double kLegendRowSpacing = 1.6;     // legend row height / caption font size, at least
+constexpr double kLegendRowRobots = 2.5;      // legend row height / robot radius (markers are to scale), at least
 constexpr double kCaptionLineSpacing = 1.45;  // line height / font size
 
 }  // namespace
@@ -23,16 +27,27 @@ ArenaLayout::ArenaLayout(int width_px, int caption_lines, bool even_size)
     throw std::invalid_argument("picture width must be " + std::to_string(kMinWidthPx) + ".." +
                                 std::to_string(kMaxWidthPx) + " px, got " + std::to_string(width_px));
   }
+  const double legend_px = legend_row_px();
   const double captions_px = caption_lines > 0 ? 4 + caption_font_px() * kCaptionLineSpacing * caption_lines : 0;
-  height_px_ = static_cast<int>(std::ceil(arena_.height_m() * scale_ + 2 * margin_px_ + captions_px));
+  height_px_ = static_cast<int>(std::ceil(arena_.height_m() * scale_ + 2 * margin_px_ + legend_px + captions_px));
   if (even_size && height_px_ % 2 != 0) ++height_px_;
 }
 
 double ArenaLayout::caption_font_px() const { return std::max(11.0, 14.0 * ui_scale_); }
 
+double ArenaLayout::tick_font_px() const { return std::max(9.0, 11.0 * ui_scale_); }
+
+double ArenaLayout::legend_row_px() const {
+  return std::max(caption_font_px() * kLegendRowSpacing,
+                  kLegendRowRobots * RobotariumConstants::kRobotDiameterMeters / 2 * scale_);
+}
+
+double ArenaLayout::legend_center_px() const { return py(arena_.y_min_m) + margin_px_ * 0.6 + legend_row_px() / 2; }
+
 double ArenaLayout::caption_baseline_px(int line) const {
   const double line_px = caption_font_px() * kCaptionLineSpacing;
-  return py(arena_.y_min_m) + margin_px_ * 0.5 + line_px * (line + 1);
+  return py(arena_.y_min_m) + margin_px_ * 0.6 + legend_row_px() + line_px * (line + 1) -
+         caption_font_px() * 0.2;
 }
 
 }  // namespace dream::sim

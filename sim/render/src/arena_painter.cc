@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <unordered_set>
 
 #include "dream/sim/robotarium_constants.h"
@@ -23,7 +24,31 @@ constexpr std::array<std::array<double, 3>, 10> kColors = {{{0.12, 0.47, 0.71},
 
 constexpr double kRobotRadiusM = RobotariumConstants::kRobotDiameterMeters / 2;
 
+// "-1.5", "0", "1": a grid line's position in metres.
+std::string TickLabel(double value_m) {
+  char text[16];
+  std::snprintf(text, sizeof(text), "%g", std::abs(value_m) < 1e-9 ? 0.0 : value_m);
+  return text;
+}
+
+const char* VerdictExplained(const std::string& verdict) {
+  if (verdict == "clean") return "clean (no errors or warnings)";
+  if (verdict == "warning") return "warning (accepted: actuator limits only)";
+  if (verdict == "rejected") return "rejected (boundary, collision or obstacle errors)";
+  return nullptr;
+}
+
 }  // namespace
+
+std::string RunLabel(const ArenaOverlays& overlays, bool short_verdict) {
+  std::string label;
+  if (!overlays.run_name.empty()) label += overlays.run_name + " \xe2\x80\x94 ";
+  if (!overlays.verdict.empty()) {
+    const char* explained = short_verdict ? nullptr : VerdictExplained(overlays.verdict);
+    label += (explained != nullptr ? std::string(explained) : overlays.verdict) + " \xe2\x80\x94 ";
+  }
+  return label;
+}
 
 const std::array<double, 3>& RobotColor(int robot_id) {
   return kColors[static_cast<size_t>(robot_id < 0 ? 0 : robot_id) % kColors.size()];
@@ -55,6 +80,72 @@ void ArenaPainter::Background() const {
   cairo_rectangle(cr_, layout_.px(arena.x_min_m), layout_.py(arena.y_max_m), arena.width_m() * layout_.scale(),
                   arena.height_m() * layout_.scale());
   cairo_stroke(cr_);
+  AxisLabels();
+}
+
+void ArenaPainter::AxisLabels() const {
+  const Arena& arena = layout_.arena();
+  const double ui = std::max(layout_.ui_scale(), 0.5);
+  const double gap = 5.0 * ui;  // between the frame and a label
+  cairo_set_source_rgb(cr_, 0.45, 0.45, 0.45);
+  cairo_select_font_face(cr_, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr_, layout_.tick_font_px());
+  cairo_font_extents_t font;
+  cairo_font_extents(cr_, &font);
+  cairo_text_extents_t extents;
+  // x: centred under each grid line; the unit after the frame's right end.
+  const double x_baseline = layout_.py(arena.y_min_m) + gap + font.ascent;
+  for (double x = std::ceil(arena.x_min_m * 2) / 2; x <= arena.x_max_m + 1e-9; x += 0.5) {
+    const std::string text = TickLabel(x);
+    cairo_text_extents(cr_, text.c_str(), &extents);
+    cairo_move_to(cr_, layout_.px(x) - extents.x_advance / 2, x_baseline);
+    cairo_show_text(cr_, text.c_str());
+  }
+  cairo_move_to(cr_, layout_.px(arena.x_max_m) + gap, x_baseline);
+  cairo_show_text(cr_, "m");
+  // y: right-aligned left of the frame, vertically centred on each grid line.
+  const double middle = (font.ascent - font.descent) / 2;
+  for (double y = std::ceil(arena.y_min_m * 2) / 2; y <= arena.y_max_m + 1e-9; y += 0.5) {
+    const std::string text = TickLabel(y);
+    cairo_text_extents(cr_, text.c_str(), &extents);
+    cairo_move_to(cr_, layout_.px(arena.x_min_m) - gap - extents.x_advance, layout_.py(y) + middle);
+    cairo_show_text(cr_, text.c_str());
+  }
+}
+
+void ArenaPainter::Legend(const std::vector<LegendItem>& items) const {
+  const double y = layout_.legend_center_px();
+  const double font_px = layout_.caption_font_px() * 0.9;
+  const double ui = std::max(layout_.ui_scale(), 0.5);
+  const double marker_px = kRobotRadiusM * layout_.scale();  // half the widest marker
+  double x = layout_.px(layout_.arena().x_min_m) + marker_px;
+  for (const LegendItem& item : items) {
+    switch (item.marker) {
+      case LegendItem::Marker::kRobot:
+        RobotAtPixel(0, x, y, 0.0, item.look, false, marker_px * item.size_factor);
+        break;
+      case LegendItem::Marker::kGoal:
+        GoalAtPixel(0, x, y, true);
+        break;
+      case LegendItem::Marker::kObstacle:
+        cairo_set_source_rgb(cr_, 0.25, 0.25, 0.25);
+        cairo_rectangle(cr_, x - marker_px * 0.8, y - marker_px * 0.8, marker_px * 1.6, marker_px * 1.6);
+        cairo_fill(cr_);
+        break;
+    }
+    // A filled robot's heading tick reaches 1.5 radii from its centre.
+    const double label_x = x + 1.5 * marker_px + 8.0 * ui;
+    cairo_set_source_rgb(cr_, 0.3, 0.3, 0.3);
+    cairo_select_font_face(cr_, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr_, font_px);
+    cairo_font_extents_t font;
+    cairo_font_extents(cr_, &font);
+    cairo_text_extents_t extents;
+    cairo_text_extents(cr_, item.label.c_str(), &extents);
+    cairo_move_to(cr_, label_x, y + (font.ascent - font.descent) / 2);
+    cairo_show_text(cr_, item.label.c_str());
+    x = label_x + extents.x_advance + 24.0 * ui + marker_px;
+  }
 }
 
 void ArenaPainter::ClipToArena() const {
@@ -90,22 +181,23 @@ void ArenaPainter::ObstaclePaths(const std::vector<std::vector<std::array<double
 }
 
 void ArenaPainter::Goals(const std::vector<std::vector<std::array<double, 2>>>& goals_m) const {
-  const double arm = kRobotRadiusM * 0.6 * layout_.scale();
   for (size_t robot = 0; robot < goals_m.size(); ++robot) {
     const auto& goals = goals_m[robot];
     for (size_t g = 0; g < goals.size(); ++g) {
-      const bool last = g + 1 == goals.size();
-      SetColor(static_cast<int>(robot), last ? 1.0 : 0.5);
-      cairo_set_line_width(cr_, std::max(1.0, (last ? 2.5 : 1.5) * layout_.ui_scale()));
-      const double x = layout_.px(goals[g][0]);
-      const double y = layout_.py(goals[g][1]);
-      cairo_move_to(cr_, x - arm, y - arm);
-      cairo_line_to(cr_, x + arm, y + arm);
-      cairo_move_to(cr_, x - arm, y + arm);
-      cairo_line_to(cr_, x + arm, y - arm);
-      cairo_stroke(cr_);
+      GoalAtPixel(static_cast<int>(robot), layout_.px(goals[g][0]), layout_.py(goals[g][1]), g + 1 == goals.size());
     }
   }
+}
+
+void ArenaPainter::GoalAtPixel(int robot_id, double x, double y, bool last) const {
+  const double arm = kRobotRadiusM * 0.6 * layout_.scale();
+  SetColor(robot_id, last ? 1.0 : 0.5);
+  cairo_set_line_width(cr_, std::max(1.0, (last ? 2.5 : 1.5) * layout_.ui_scale()));
+  cairo_move_to(cr_, x - arm, y - arm);
+  cairo_line_to(cr_, x + arm, y + arm);
+  cairo_move_to(cr_, x - arm, y + arm);
+  cairo_line_to(cr_, x + arm, y - arm);
+  cairo_stroke(cr_);
 }
 
 void ArenaPainter::Track(int robot_id, const std::vector<std::array<double, 2>>& points_m, double line_width_px,
@@ -149,9 +241,12 @@ void ArenaPainter::Track(int robot_id, const std::vector<std::array<double, 2>>&
 
 void ArenaPainter::Robot(int robot_id, double x_m, double y_m, double theta_rad, RobotLook look, bool label,
                          double size_factor) const {
-  const double radius_px = kRobotRadiusM * layout_.scale() * size_factor;
-  const double x = layout_.px(x_m);
-  const double y = layout_.py(y_m);
+  RobotAtPixel(robot_id, layout_.px(x_m), layout_.py(y_m), theta_rad, look, label,
+               kRobotRadiusM * layout_.scale() * size_factor);
+}
+
+void ArenaPainter::RobotAtPixel(int robot_id, double x, double y, double theta_rad, RobotLook look, bool label,
+                                double radius_px) const {
   SetColor(robot_id, 1.0);
   cairo_new_path(cr_);
   cairo_arc(cr_, x, y, radius_px, 0, 2 * M_PI);

@@ -28,10 +28,30 @@ class ArenaPainter {
     kHollow,  ///< outline in its colour (a start pose, or the planned run in a comparison)
   };
 
+  /// A marker of the legend row, drawn by the same code as in the arena.
+  struct LegendItem {
+    enum class Marker {
+      kRobot,     ///< a robot disc (robot 0's colour) with `look` and `size_factor`, heading right
+      kGoal,      ///< a goal cross (robot 0's colour, as a last goal)
+      kObstacle,  ///< a dark grey square, as obstacles are filled
+    };
+    Marker marker;
+    std::string label;
+    RobotLook look = RobotLook::kFilled;
+    double size_factor = 1.0;
+  };
+
   ArenaPainter(cairo_t* cr, const ArenaLayout& layout) : cr_(cr), layout_(layout) {}
 
-  /// White, a half-metre grid and the arena boundary.
+  /// White, a half-metre grid, the arena boundary and, outside it, the grid
+  /// lines' positions in metres (x below, y on the left).
   void Background() const;
+  /// Small grey tick labels in metres at the half-metre grid lines, outside
+  /// the arena frame (part of Background()).
+  void AxisLabels() const;
+  /// The legend row between the arena and the captions: each item's marker
+  /// and its label, left to right.
+  void Legend(const std::vector<LegendItem>& items) const;
   /// Limits drawing to the arena (on whole pixels: a cheap rectangle, not a
   /// mask); wrap in cairo_save/cairo_restore.
   void ClipToArena() const;
@@ -68,6 +88,9 @@ class ArenaPainter {
 
  private:
   void SetColor(int robot_id, double alpha) const;
+  void RobotAtPixel(int robot_id, double x, double y, double theta_rad, RobotLook look, bool label,
+                    double radius_px) const;
+  void GoalAtPixel(int robot_id, double x, double y, bool last) const;
 
   cairo_t* cr_;
   const ArenaLayout& layout_;

@@ -46,6 +46,11 @@ void ComparisonPicture::Render(const std::string& first_log, const std::string& 
                     false, 0.8);
     }
   }
+  using Item = ArenaPainter::LegendItem;
+  std::vector<Item> legend = {{Item::Marker::kRobot, "first run's end", ArenaPainter::RobotLook::kHollow, 1.0},
+                              {Item::Marker::kRobot, "second run's end", ArenaPainter::RobotLook::kFilled, 0.8}};
+  if (!second.obstacles_at(second.poses().size() - 1).empty()) legend.push_back({Item::Marker::kObstacle, "obstacle"});
+  painter.Legend(legend);
   for (size_t line = 0; line < caption_lines.size(); ++line) painter.Caption(static_cast<int>(line), caption_lines[line]);
   surface.Commit(png_path);
 }

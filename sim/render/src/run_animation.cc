@@ -88,6 +88,7 @@ RunAnimation::RunAnimation(const RunTrack& track, const ArenaOverlays& overlays,
                                           std::llround(std::ceil(options.speed / options.fps / kStepS)));
   const int run_frames = static_cast<int>(std::ceil(track.duration_s() * options.fps / options.speed - 1e-9)) + 1;
   frame_count_ = run_frames + static_cast<int>(std::lround(options.hold_end_s * options.fps));
+  run_label_ = RunLabel(overlays, /*short_verdict=*/true);
   DrawStaticLayer();
 }
 
@@ -104,6 +105,13 @@ void RunAnimation::DrawStaticLayer() {
     painter.ObstaclePaths(track_.MovingObstaclePaths());
     if (!obstacles_move_) painter.Obstacles(track_.obstacles_at(track_.poses().size() - 1));
     painter.Goals(overlays_.goals_m);
+    using Item = ArenaPainter::LegendItem;
+    std::vector<Item> legend = {{Item::Marker::kRobot, "robot", ArenaPainter::RobotLook::kFilled, 1.0}};
+    if (!overlays_.goals_m.empty()) legend.push_back({Item::Marker::kGoal, "goal"});
+    bool obstacles = !track_.MovingObstaclePaths().empty();
+    for (size_t i = 0; i < track_.poses().size() && !obstacles; ++i) obstacles = !track_.obstacles_at(i).empty();
+    if (obstacles) legend.push_back({Item::Marker::kObstacle, "obstacle"});
+    painter.Legend(legend);
   }
   surfaces_->frame.reset(cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height));
   surfaces_->frame_cr.reset(cairo_create(surfaces_->frame.get()));
@@ -148,7 +156,7 @@ void RunAnimation::DrawFrame(int frame) {
   char caption[160];
   std::snprintf(caption, sizeof(caption), "step %lld   t = %.1f s   (%gx speed)", static_cast<long long>(poses.step),
                 static_cast<double>(poses.step) * kStepS, options_.speed);
-  painter.Caption(0, caption);
+  painter.Caption(0, run_label_ + caption);
   cairo_surface_flush(surfaces_->frame.get());
 }
 

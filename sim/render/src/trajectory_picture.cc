@@ -44,12 +44,22 @@ void TrajectoryPicture::Render(const RunTrack& track, const ArenaOverlays& overl
     painter.Robot(i, last.x[k], last.y[k], last.theta[k], ArenaPainter::RobotLook::kFilled, true);
   }
 
-  char caption[160];
-  std::snprintf(caption, sizeof(caption), "%d robots, steps %lld..%lld (%.1f s)", track.num_robots(),
+  using Item = ArenaPainter::LegendItem;
+  std::vector<Item> legend = {{Item::Marker::kRobot, "start", ArenaPainter::RobotLook::kHollow, 0.6},
+                              {Item::Marker::kRobot, "end", ArenaPainter::RobotLook::kFilled, 1.0}};
+  if (!overlays.goals_m.empty()) legend.push_back({Item::Marker::kGoal, "goal"});
+  if (!track.obstacles_at(last_index).empty()) legend.push_back({Item::Marker::kObstacle, "obstacle"});
+  painter.Legend(legend);
+  painter.Caption(0, Caption(track, overlays));
+  surface.Commit(path);
+}
+
+std::string TrajectoryPicture::Caption(const RunTrack& track, const ArenaOverlays& overlays) {
+  char stats[160];
+  std::snprintf(stats, sizeof(stats), "%d robots, steps %lld..%lld (%.1f s)", track.num_robots(),
                 static_cast<long long>(track.first_step()), static_cast<long long>(track.last_step()),
                 track.duration_s());
-  painter.Caption(0, caption);
-  surface.Commit(path);
+  return RunLabel(overlays) + stats;
 }
 
 }  // namespace dream::sim

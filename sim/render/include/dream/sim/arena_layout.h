@@ -6,7 +6,8 @@ namespace dream::sim {
 
 /// Where the arena lands in a picture `width_px` wide: metres to pixels
 /// (x right, y up in the world; y down in the picture), a margin round the
-/// arena and room for caption lines below it. Line widths and fonts grow
+/// arena that holds its tick labels in metres, a legend row below it and room
+/// for caption lines under the legend. Line widths and fonts grow
 /// with ui_scale() so a 720 px video frame and a 1280 px picture look alike.
 class ArenaLayout {
  public:
@@ -28,6 +29,12 @@ class ArenaLayout {
   int height_px() const { return height_px_; }
   /// Caption font size, pixels (readable in small video frames too).
   double caption_font_px() const;
+  /// Tick label font size, pixels (smaller than the caption).
+  double tick_font_px() const;
+  /// Height of the legend row, pixels (its robot markers are to scale).
+  double legend_row_px() const;
+  /// Middle of the legend row (between the x tick labels and the captions), pixels from the top.
+  double legend_center_px() const;
   /// Baseline of caption line `line` (0 = first), pixels from the top.
   double caption_baseline_px(int line) const;
   const Arena& arena() const { return arena_; }

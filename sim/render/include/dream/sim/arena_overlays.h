@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "dream/robot_poses_t.hpp"
@@ -36,6 +37,16 @@ struct ArenaOverlays {
   /// log without radio messages, every pair that could hear each other.
   RadioHearing hears;
   bool draw_radio_links = false;
+  /// The run's name (config `name`, summary.json "run") and verdict
+  /// (RunVerdictName: "clean", "warning", "rejected"; summary.json "verdict"),
+  /// written at the start of the caption; empty: not shown.
+  std::string run_name;
+  std::string verdict;
 };
+
+/// `overlays`' run name and verdict as the start of a caption, each followed
+/// by " — " ("go_to_goal — clean (no errors or warnings) — "); a known verdict
+/// is explained unless `short_verdict`. Empty when neither is known.
+std::string RunLabel(const ArenaOverlays& overlays, bool short_verdict = false);
 
 }  // namespace dream::sim

@@ -24,8 +24,9 @@ struct AnimationOptions {
 /// A run as a video, like the thesis's videos: the arena to scale, robots as
 /// discs of their 0.11 m diameter with ids and headings, trails, obstacles
 /// where they are at each moment (moving ones with their faint path), goals,
-/// and optionally sensor ranges and radio links (ArenaOverlays), with a
-/// step/time caption. Frame f shows simulated time min(f * speed / fps,
+/// and optionally sensor ranges and radio links (ArenaOverlays), tick labels
+/// in metres, a legend row, and a caption: the run's name and verdict when
+/// known, then the step and time. Frame f shows simulated time min(f * speed / fps,
 /// duration), so there are ceil(duration * fps / speed) + 1 frames of the run
 /// plus round(hold_end_s * fps) of the last one.
 class RunAnimation {
@@ -73,6 +74,7 @@ class RunAnimation {
   int64_t trail_steps_;
   int64_t radio_window_steps_;
   int frame_count_ = 0;
+  std::string run_label_;  // "name — verdict — " before each frame's caption (RunLabel)
   std::unique_ptr<Surfaces> surfaces_;
 };
 

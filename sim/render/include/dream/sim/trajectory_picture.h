@@ -13,7 +13,9 @@ namespace dream::sim {
 /// robot's 0.11 m diameter with its id and a heading tick), the virtual
 /// obstacles where they ended with the paths of moving ones dashed, and what
 /// `overlays` adds (goals as crosses; sensor ranges and radio links at the
-/// final poses when asked). Works on any log with DREAM_POSES: simulated or
+/// final poses when asked), with tick labels in metres round the arena, a
+/// legend row (start, end, goal, obstacle) and a caption: the run's name and
+/// verdict when `overlays` has them, the robots, steps and duration. Works on any log with DREAM_POSES: simulated or
 /// imported from the lab.
 class TrajectoryPicture {
  public:
@@ -26,6 +28,10 @@ class TrajectoryPicture {
   /// @throws std::runtime_error naming the path when it cannot be written.
   static void Render(const RunTrack& track, const ArenaOverlays& overlays, const std::string& path,
                      RenderFormat format, int width_px = 1280);
+
+  /// The caption under the arena, e.g. "go_to_goal — clean (no errors or
+  /// warnings) — 8 robots, steps 0..206 (6.8 s)".
+  static std::string Caption(const RunTrack& track, const ArenaOverlays& overlays);
 };
 
 }  // namespace dream::sim
