@@ -73,8 +73,7 @@ install(FILES ${DREAM_TYPES_JAR} DESTINATION ${DREAM_INSTALL_DATADIR}/java)
 install(DIRECTORY ${PROJECT_BINARY_DIR}/python/dream
   DESTINATION ${DREAM_INSTALL_DATADIR}/python
   FILES_MATCHING PATTERN "*.py")
-file(GLOB DREAM_PYTHON_TOOLS ${PROJECT_SOURCE_DIR}/python/*.py)
-install(FILES ${DREAM_PYTHON_TOOLS} DESTINATION ${DREAM_INSTALL_DATADIR}/python)
+install(FILES ${PROJECT_SOURCE_DIR}/python/dream_log.py DESTINATION ${DREAM_INSTALL_DATADIR}/python)
 # The Python controller runtime (package dream) apart from lcm-gen's package of
 # the same name: the tools that host Python controllers join the two.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/python/dream

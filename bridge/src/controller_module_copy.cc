@@ -12,10 +12,9 @@ void KeepControllerModule(const config::RunConfig& config, const sim::OutputFold
   if (!agents::IsPythonController(config)) return;
   const agents::PythonControllerBuilder controller(config.controller, config.num_robots);
   const std::filesystem::path written = std::filesystem::path(controller.module_as_written()).lexically_normal();
+  // An absolute path stays valid as written; a relative one never leaves the
+  // config's folder (PythonControllerBuilder refuses that).
   if (written.is_absolute()) return;
-  for (const auto& part : written) {
-    if (part == "..") return;  // outside the config's folder: the copy cannot follow
-  }
   std::filesystem::path folder;
   for (const auto& part : written.parent_path()) {
     folder /= part;

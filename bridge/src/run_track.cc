@@ -72,8 +72,7 @@ RunTrack ReadRunTrack(const std::string& log_path, RunEnd* end) {
       // another agent, which the world refused, names a robot that drove on.
       const std::optional<int> id = lcm::RobotIdFromChannel(record.channel, lcm::kFaultChannelPrefix);
       if (id && lcm::Decode(record.data.data(), size, &fault) && fault.robot_id == *id && faults.count(*id) == 0) {
-        constexpr size_t kMaxDetail = 2000;
-        faults[*id] = "step " + std::to_string(fault.step) + ": " + fault.detail.substr(0, kMaxDetail);
+        faults[*id] = "step " + std::to_string(fault.step) + ": " + fault.detail;  // bounded by lcm::Decode
       }
     }
   }

@@ -8,8 +8,7 @@
 #include <iostream>
 
 #include "dream/agents/controller_factory.h"
-#include "dream/agents/python_controller_builder.h"
-#include "dream/agents/python_controller_spec.h"
+#include "dream/bridge/controller_module_copy.h"
 #include "dream/bridge/metrics_json.h"
 #include "dream/config/config_error.h"
 #include "dream/sim/atomic_file.h"
@@ -56,24 +55,12 @@ std::string PrepareOutputDir(const RunArgs& args, const config::RunConfig& confi
   return RunFolderChoice(args.out_dir, "runs/" + config.name, args.overwrite).dir();
 }
 
-void CopyPythonControllerModule(const config::RunConfig& config, const std::string& out_dir) {
-  if (!agents::IsPythonController(config)) return;
-  const agents::PythonControllerBuilder controller(config.controller, config.num_robots);
-  const std::filesystem::path written(controller.module_as_written());
-  // An absolute path stays valid as written; a relative one never leaves the
-  // config's folder (PythonControllerBuilder refuses that).
-  if (written.is_absolute()) return;
-  const std::filesystem::path copy = std::filesystem::path(out_dir) / written.lexically_normal();
-  std::filesystem::create_directories(copy.parent_path());
-  sim::WriteFileAtomically(copy.string(), sim::ReadFileText(controller.module_path()));
-}
-
 int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std::string& config_text,
              const std::string& out_dir) {
   // A copy of the config beside the log, so the run folder alone is enough for
   // `dream export` and `dream compare`, and to rerun it.
   sim::WriteFileAtomically(out_dir + "/config.yaml", config_text);
-  CopyPythonControllerModule(config, out_dir);
+  bridge::KeepControllerModule(config, sim::OutputFolder(out_dir));
   sim::UnicycleWorld world(config.world, config.initial_poses, config.obstacles);
   const std::string log_path = out_dir + "/run.lcmlog";
   sim::RunOutcome outcome;

@@ -25,12 +25,6 @@ std::string ConfigTextForRunFolder(const RunArgs& args, const config::RunConfig&
 /// --overwrite. Created if missing. @throws std::runtime_error naming the folder.
 std::string PrepareOutputDir(const RunArgs& args, const config::RunConfig& config);
 
-/// A python kind's module file, copied into the run folder at the path the
-/// config names it by (relative to config.yaml there), so the folder alone can
-/// be rerun and exported with the code that ran. An absolute path is left as
-/// it is.
-void CopyPythonControllerModule(const config::RunConfig& config, const std::string& out_dir);
-
 /// Runs the simulator on `lcm` until the run ends, writing <out_dir>/config.yaml
 /// (`config_text`, see ConfigTextForRunFolder), <out_dir>/run.lcmlog and <out_dir>/summary.json
 /// (all atomically), and prints the Robotarium verdict. Returns the process

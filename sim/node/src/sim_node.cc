@@ -122,8 +122,7 @@ void SimNode::OnFault(const std::string& channel, const robot_fault_t& fault) {
     return;
   }
   if (robot_faults_.count(*id) != 0) return;  // said once is enough
-  constexpr size_t kMaxDetail = 2000;
-  const std::string detail = fault.detail.substr(0, kMaxDetail);
+  const std::string& detail = fault.detail;  // at most MessageLimits::kDetailBytes, checked by lcm::Decode
   robot_faults_[*id] = "step " + std::to_string(world_.step()) + ": " + detail;
   robot.lost = true;
   robots_ever_lost_.insert(*id);

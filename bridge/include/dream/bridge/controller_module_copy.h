@@ -6,8 +6,8 @@
 namespace dream::bridge {
 
 /// Copies a Python controller's module (kind python) into `out` at the path
-/// the config names it by, when that path is relative and stays inside the
-/// config's folder, so that the copy of the config in `out` finds it: `dream
+/// the config names it by, when that path is relative (it then stays inside
+/// the config's folder: PythonControllerBuilder refuses others), so that the copy of the config in `out` finds it: `dream
 /// run` keeps the module in the run folder this way, and export and import
 /// do the same, so `dream lab-replay` of an imported run runs the same
 /// controller. Other kinds, and absolute module paths, need nothing.
