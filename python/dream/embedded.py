@@ -49,9 +49,12 @@ def setup(lcmtypes_dir, log_level):
     _log.setLevel(log_level)
 
 
+_checked = {}  # spec text -> its ControllerSpec, so attach() does not load the module again
+
+
 def check(spec_json):
     """Raises ConfigError when the controller's module, class or own keys are wrong."""
-    check_spec(spec_json)
+    _checked[spec_json] = check_spec(spec_json)
 
 
 class _EmbeddedHost(AgentHost):
@@ -60,12 +63,9 @@ class _EmbeddedHost(AgentHost):
     def close(self):
         self.bus.close()
 
-    def fault_lines(self):
-        return [f"robot {robot_id}: {detail}" for robot_id, detail in sorted(self.faults().items())]
-
 
 def attach(lcm_address, url, spec_json, robot_ids, agent_id):
     """The agents of `robot_ids`, subscribed on the lcm_t at `lcm_address`."""
-    spec = ControllerSpec.from_json(spec_json)
+    spec = _checked.get(spec_json) or ControllerSpec.from_json(spec_json)
     agents = [spec.make_agent(robot_id) for robot_id in robot_ids]
     return _EmbeddedHost(Lcm.wrap(lcm_address, url), agents, agent_id, spec.num_robots)

@@ -187,15 +187,6 @@ class EmbeddedPythonAgentHost final : public PythonAgentHost {
     return TextOf(value.get());
   }
 
-  std::vector<std::string> faults() const override {
-    PyRef list(PyObject_CallMethod(host_, "fault_lines", nullptr));
-    if (list.get() == nullptr) ThrowPythonError("Python agent host: faults");
-    std::vector<std::string> lines;
-    const Py_ssize_t n = PyList_Size(list.get());
-    for (Py_ssize_t i = 0; i < n; ++i) lines.push_back(TextOf(PyList_GetItem(list.get(), i)));
-    return lines;
-  }
-
  private:
   PyObject* host_ = nullptr;
 };

@@ -38,8 +38,6 @@ class PythonAgentHost {
   virtual bool world_finished() const = 0;
   virtual int64_t last_step_answered() const = 0;
   virtual std::string end_detail() const = 0;
-  /// Robots whose controller failed, "robot <id>: <FILE:LINE: ...>" each.
-  virtual std::vector<std::string> faults() const = 0;
 };
 
 /// dream_python_host_check: loads the controller's module and class and
