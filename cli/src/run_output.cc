@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <filesystem>
 #include <iostream>
+#include <memory>
+#include <optional>
 
 #include "dream/agents/controller_factory.h"
 #include "dream/bridge/controller_module_copy.h"
@@ -14,12 +16,14 @@
 #include "dream/sim/atomic_file.h"
 #include "dream/sim/file_text.h"
 #include "dream/sim/output_folder.h"
+#include "dream/sim/realistic_world.h"
 #include "dream/sim/run_recorder.h"
 #include "dream/sim/run_report.h"
 #include "dream/sim/run_summary.h"
 #include "dream/sim/sim_node.h"
 #include "dream/sim/run_track.h"
 #include "dream/sim/trajectory_picture.h"
+#include "dream/sim/true_pose_recording.h"
 #include "dream/sim/unicycle_world.h"
 #include "overridden_config.h"
 #include "render_overlays.h"
@@ -27,6 +31,28 @@
 #include "terminal_progress.h"
 
 namespace dream::cli {
+namespace {
+
+// The models a run with world.realism had (summary.json "realism").
+nlohmann::ordered_json RealismJson(const sim::RealismParams& realism) {
+  nlohmann::ordered_json json;
+  json["pose_noise_m"] = realism.pose_noise_m;
+  json["pose_noise_rad"] = realism.pose_noise_rad;
+  json["pose_quantum_m"] = realism.pose_quantum_m;
+  json["pose_quantum_rad"] = realism.pose_quantum_rad;
+  json["pose_delay_steps"] = realism.pose_delay_steps;
+  json["tracking_dropout_probability"] = realism.tracking_dropout_probability;
+  json["command_latency_steps"] = realism.command_latency_steps;
+  json["command_brake_s"] = realism.command_brake_s;
+  json["dead_zone_v_mps"] = realism.dead_zone_v_mps;
+  json["dead_zone_w_radps"] = realism.dead_zone_w_radps;
+  json["wheel_accel_limit_radps2"] = realism.wheel_accel_limit_radps2;
+  json["axle_length_m"] = realism.axle_length_m;
+  json["poses_channel_seen_by_agents"] = sim::TruePoseRecording::kMeasuredPosesChannel;
+  return json;
+}
+
+}  // namespace
 
 config::RunConfig LoadConfig(const RunArgs& args) {
   const OverriddenConfig overridden(args.config_path, args.seed, args.sets);
@@ -61,11 +87,26 @@ int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std:
   // `dream export` and `dream compare`, and to rerun it.
   sim::WriteFileAtomically(out_dir + "/config.yaml", config_text);
   bridge::KeepControllerModule(config, sim::OutputFolder(out_dir));
-  sim::UnicycleWorld world(config.world, config.initial_poses, config.obstacles);
+  // world.realism: the official world seen and driven as on the lab; off (ideal),
+  // the official world itself, with nothing in between.
+  std::unique_ptr<sim::World> world_owner;
+  const sim::RealisticWorld* realistic = nullptr;
+  if (config.realism.IsIdeal()) {
+    world_owner = std::make_unique<sim::UnicycleWorld>(config.world, config.initial_poses, config.obstacles);
+  } else {
+    auto lab_like = std::make_unique<sim::RealisticWorld>(config.world, config.realism, config.seed,
+                                                          config.initial_poses, config.obstacles);
+    realistic = lab_like.get();
+    world_owner = std::move(lab_like);
+  }
+  sim::World& world = *world_owner;
   const std::string log_path = out_dir + "/run.lcmlog";
   sim::RunOutcome outcome;
   {
     sim::RunRecorder recorder(log_path);
+    // The log keeps the truth on DREAM_POSES, the agents' view on DREAM_MEASURED_POSES.
+    std::optional<sim::TruePoseRecording> truth;
+    if (realistic != nullptr) truth.emplace(recorder, *realistic);
     sim::SimNode node(lcm, world, &recorder, config.sim);
     spdlog::info("{}: {} robots, up to {} steps, {} on {}", config.name, config.num_robots, config.sim.max_steps,
                  sim::WorldModeName(config.sim.mode), lcm.url());
@@ -87,6 +128,13 @@ int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std:
   nlohmann::ordered_json summary =
       nlohmann::ordered_json::parse(sim::RunSummaryJson(config, outcome, world, "run.lcmlog"));
   summary["metrics"] = bridge::MetricsJson(config, log_path);
+  if (realistic != nullptr) {
+    summary["realism"] = RealismJson(config.realism);
+    // Where the robots really ended (world.poses() is what the agents were sent last).
+    nlohmann::ordered_json poses = nlohmann::ordered_json::array();
+    for (const sim::Pose2& pose : realistic->true_poses()) poses.push_back({pose.x_m, pose.y_m, pose.theta_rad});
+    summary["final_poses"] = poses;
+  }
   if (summary["metrics"].contains("error")) {
     // The run and its log stand; only the experiment's own numbers are missing.
     spdlog::warn("{}: no experiment metrics: {}", log_path, summary["metrics"]["error"].get<std::string>());

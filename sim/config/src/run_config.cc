@@ -50,7 +50,7 @@ sim::SimNodeOptions ReadSimOptions(const ConfigNode& root) {
   const ConfigNode world = root.Optional("world");
   if (world.IsDefined()) {
     world.RejectUnknownKeys({"mode", "agent_timeout_s", "start_timeout_s", "resend_interval_s", "max_abs_v_mps",
-                             "max_abs_w_radps"});
+                             "max_abs_w_radps", "realism"});
     if (world.Has("mode")) {
       const ConfigNode mode = world.Required("mode");
       try {
@@ -74,6 +74,64 @@ sim::SimNodeOptions ReadSimOptions(const ConfigNode& root) {
   std::string error;
   if (!options.IsValid(&error)) root.Fail(error);  // unreachable when the checks above hold
   return options;
+}
+
+sim::RealismParams RealismPreset(const ConfigNode& name) {
+  sim::RealismParams params;
+  const std::string text = name.AsString();
+  if (!sim::RealismParams::FromPreset(text, &params)) {
+    std::string known;
+    for (const std::string& preset : sim::RealismParams::PresetNames()) known += (known.empty() ? "" : ", ") + preset;
+    name.Fail("unknown realism preset '" + text + "'; known presets: " + known);
+  }
+  return params;
+}
+
+// `world.realism`: a preset name, or a map of models starting from `preset:`
+// (ideal when absent). See docs/experiments.md for each key.
+sim::RealismParams ReadRealism(const ConfigNode& root) {
+  const ConfigNode world = root.Optional("world");
+  const ConfigNode node = world.IsDefined() ? world.Optional("realism") : ConfigNode();
+  if (!node.IsDefined()) return sim::RealismParams::Ideal();
+  if (!node.IsMap()) return RealismPreset(node);
+  node.RejectUnknownKeys({"preset", "pose_noise_m", "pose_noise_rad", "pose_quantum_m", "pose_quantum_rad",
+                          "pose_delay_steps", "tracking_dropout_probability", "command_latency_steps",
+                          "command_brake_s", "dead_zone_v_mps", "dead_zone_w_radps", "wheel_accel_limit_radps2",
+                          "axle_length_m"});
+  sim::RealismParams params =
+      node.Has("preset") ? RealismPreset(node.Required("preset")) : sim::RealismParams::Ideal();
+  // Each key in turn, so the error names the first bad one with its line.
+  auto check = [&node, &params](const char* key) {
+    std::string error;
+    if (!params.IsValid(&error)) node.Required(key).Fail(error);
+  };
+  auto number = [&](const char* key, double* field) {
+    *field = node.GetDouble(key, *field);
+    if (node.Has(key)) check(key);
+  };
+  auto steps = [&](const char* key, int* field) {
+    const long long value = node.GetInt(key, *field);
+    if (value < 0 || value > sim::RealismParams::kMaxDelaySteps) {
+      node.Required(key).Fail("must be 0.." + std::to_string(sim::RealismParams::kMaxDelaySteps) +
+                              " steps, got " + std::to_string(value));
+    }
+    *field = static_cast<int>(value);
+  };
+  number("pose_noise_m", &params.pose_noise_m);
+  number("pose_noise_rad", &params.pose_noise_rad);
+  number("pose_quantum_m", &params.pose_quantum_m);
+  number("pose_quantum_rad", &params.pose_quantum_rad);
+  steps("pose_delay_steps", &params.pose_delay_steps);
+  number("tracking_dropout_probability", &params.tracking_dropout_probability);
+  steps("command_latency_steps", &params.command_latency_steps);
+  number("command_brake_s", &params.command_brake_s);
+  number("dead_zone_v_mps", &params.dead_zone_v_mps);
+  number("dead_zone_w_radps", &params.dead_zone_w_radps);
+  number("wheel_accel_limit_radps2", &params.wheel_accel_limit_radps2);
+  number("axle_length_m", &params.axle_length_m);
+  std::string error;
+  if (!params.IsValid(&error)) node.Fail(error);  // unreachable when the checks above hold
+  return params;
 }
 
 // Needs config.obstacles: generated poses avoid them and listed poses may not
@@ -269,6 +327,7 @@ RunConfig LoadRunConfig(const ConfigNode& root) {
   }
   config.num_robots = static_cast<int>(num_robots);
   config.sim = ReadSimOptions(root);
+  config.realism = ReadRealism(root);
   config.obstacles = ReadObstacles(root);
   config.initial_poses = ReadInitialPoses(root, config);
   config.controller = root.Required("controller");

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <lcm/lcm-cpp.hpp>
 #include <stdexcept>
+#include <utility>
 
 namespace dream::sim {
 namespace {
@@ -40,7 +41,23 @@ RunRecorder::~RunRecorder() {
   }
 }
 
+void RunRecorder::RewriteChannel(std::string channel, Rewrite rewrite) {
+  rewritten_channel_ = std::move(channel);
+  rewrite_ = std::move(rewrite);
+}
+
 void RunRecorder::Write(const std::string& channel, int64_t utime, const void* data, int size) {
+  if (rewrite_ && !rewriting_ && channel == rewritten_channel_) {
+    rewriting_ = true;
+    try {
+      rewrite_(utime, data, size);
+    } catch (...) {
+      rewriting_ = false;
+      throw;
+    }
+    rewriting_ = false;
+    return;
+  }
   if (!log_) throw std::logic_error("RunRecorder::Write after Close on " + path_);
   if (failed()) throw std::runtime_error(failure_);
   ::lcm::LogEvent event;

@@ -6,6 +6,7 @@
 
 #include "dream/config/config_node.h"
 #include "dream/sim/pose2.h"
+#include "dream/sim/realism_params.h"
 #include "dream/sim/rectangle_obstacle_spec.h"
 #include "dream/sim/sim_node_options.h"
 #include "dream/sim/world_params.h"
@@ -24,6 +25,9 @@ struct RunConfig {
   int num_robots = 0;            ///< 1..50, as the Robotarium simulator allows
   sim::SimNodeOptions sim;       ///< pacing, timeouts, step limit
   sim::WorldParams world;        ///< Robotarium V2 constants (not configurable)
+  /// `world.realism:` (a preset name, or a map of models); Ideal(), the
+  /// default, is the official simulator (no sim::RealisticWorld).
+  sim::RealismParams realism;
   std::vector<sim::Pose2> initial_poses;
   std::vector<sim::RectangleObstacleSpec> obstacles;
   ConfigNode controller;         ///< the `controller:` section, read by the agents' factory

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -40,6 +41,15 @@ class RunRecorder {
   /// before; std::logic_error after Close().
   void Write(const std::string& channel, int64_t utime, const void* data, int size);
 
+  /// What the log keeps in place of an event on a rewritten channel.
+  using Rewrite = std::function<void(int64_t utime, const void* data, int size)>;
+  /// From now on Write hands each event on `channel` to `rewrite` instead of
+  /// writing it; `rewrite` writes (with Write, on any channel, its own events
+  /// are not handed back) what the log keeps instead. A run with
+  /// world.realism keeps the true poses on DREAM_POSES and what the agents
+  /// were sent on DREAM_MEASURED_POSES (cli/src/run_output.cc).
+  void RewriteChannel(std::string channel, Rewrite rewrite);
+
   /// Pushes every event written so far to the disk (fflush + fsync), so a
   /// full disk shows now rather than at Close(). Fails like Write.
   void Flush();
@@ -77,6 +87,9 @@ class RunRecorder {
   // may have pushed any prefix of them to the disk before a failure.
   std::vector<int64_t> unflushed_event_ends_;
   std::string failure_;
+  std::string rewritten_channel_;
+  Rewrite rewrite_;
+  bool rewriting_ = false;  // inside rewrite_: its writes go to the log
   bool cut_back_failed_ = false;  // the .part may end mid-event: never renamed
 };
 

@@ -1,0 +1,101 @@
+#include "dream/sim/realism_params.h"
+
+#include <cmath>
+
+#include "field_check.h"
+
+namespace dream::sim {
+
+using field_check::Fail;
+using field_check::IsPositiveFinite;
+
+namespace {
+
+bool IsNonNegativeFinite(double value) { return std::isfinite(value) && value >= 0.0; }
+
+}  // namespace
+
+RealismParams RealismParams::Ideal() { return RealismParams{}; }
+
+// Each value's source is in docs/experiments.md ("Realism").
+RealismParams RealismParams::Lab() {
+  RealismParams lab;
+  lab.pose_noise_m = 0.001;
+  lab.pose_noise_rad = 0.005;
+  lab.pose_quantum_m = 0.0;  // the tracker sends doubles (JSON), nothing is rounded
+  lab.pose_quantum_rad = 0.0;
+  lab.pose_delay_steps = 1;
+  lab.tracking_dropout_probability = 0.01;
+  lab.command_latency_steps = 1;
+  lab.command_brake_s = 0.5;
+  lab.dead_zone_v_mps = 1e-4;
+  lab.dead_zone_w_radps = 0.01;
+  lab.wheel_accel_limit_radps2 = 100.0;
+  lab.axle_length_m = 0.105;
+  return lab;
+}
+
+const std::vector<std::string>& RealismParams::PresetNames() {
+  static const std::vector<std::string> names{"ideal", "lab"};
+  return names;
+}
+
+bool RealismParams::FromPreset(const std::string& name, RealismParams* params) {
+  if (name == "ideal") {
+    *params = Ideal();
+  } else if (name == "lab") {
+    *params = Lab();
+  } else {
+    return false;
+  }
+  return true;
+}
+
+bool RealismParams::IsIdeal() const { return *this == Ideal(); }
+
+bool RealismParams::IsValid(std::string* error) const {
+  if (!IsNonNegativeFinite(pose_noise_m)) return Fail(error, "pose_noise_m", pose_noise_m, ">= 0 m, finite");
+  if (!IsNonNegativeFinite(pose_noise_rad)) return Fail(error, "pose_noise_rad", pose_noise_rad, ">= 0 rad, finite");
+  if (!IsNonNegativeFinite(pose_quantum_m)) {
+    return Fail(error, "pose_quantum_m", pose_quantum_m, ">= 0 m, finite (0: not rounded)");
+  }
+  if (!IsNonNegativeFinite(pose_quantum_rad)) {
+    return Fail(error, "pose_quantum_rad", pose_quantum_rad, ">= 0 rad, finite (0: not rounded)");
+  }
+  const std::string steps = "0.." + std::to_string(kMaxDelaySteps) + " steps";
+  if (pose_delay_steps < 0 || pose_delay_steps > kMaxDelaySteps) {
+    return Fail(error, "pose_delay_steps", pose_delay_steps, steps);
+  }
+  if (!(tracking_dropout_probability >= 0.0 && tracking_dropout_probability <= 1.0)) {
+    return Fail(error, "tracking_dropout_probability", tracking_dropout_probability, "[0, 1]");
+  }
+  if (command_latency_steps < 0 || command_latency_steps > kMaxDelaySteps) {
+    return Fail(error, "command_latency_steps", command_latency_steps, steps);
+  }
+  if (!IsNonNegativeFinite(command_brake_s)) {
+    return Fail(error, "command_brake_s", command_brake_s, ">= 0 s, finite (0: never brake)");
+  }
+  if (!IsNonNegativeFinite(dead_zone_v_mps)) {
+    return Fail(error, "dead_zone_v_mps", dead_zone_v_mps, ">= 0 m/s, finite (0: no dead zone)");
+  }
+  if (!IsNonNegativeFinite(dead_zone_w_radps)) {
+    return Fail(error, "dead_zone_w_radps", dead_zone_w_radps, ">= 0 rad/s, finite (0: no dead zone)");
+  }
+  if (!IsNonNegativeFinite(wheel_accel_limit_radps2)) {
+    return Fail(error, "wheel_accel_limit_radps2", wheel_accel_limit_radps2, ">= 0 rad/s^2, finite (0: no limit)");
+  }
+  if (!IsPositiveFinite(axle_length_m)) return Fail(error, "axle_length_m", axle_length_m, "> 0 m, finite");
+  return true;
+}
+
+bool operator==(const RealismParams& a, const RealismParams& b) {
+  return a.pose_noise_m == b.pose_noise_m && a.pose_noise_rad == b.pose_noise_rad &&
+         a.pose_quantum_m == b.pose_quantum_m && a.pose_quantum_rad == b.pose_quantum_rad &&
+         a.pose_delay_steps == b.pose_delay_steps &&
+         a.tracking_dropout_probability == b.tracking_dropout_probability &&
+         a.command_latency_steps == b.command_latency_steps && a.command_brake_s == b.command_brake_s &&
+         a.dead_zone_v_mps == b.dead_zone_v_mps && a.dead_zone_w_radps == b.dead_zone_w_radps &&
+         a.wheel_accel_limit_radps2 == b.wheel_accel_limit_radps2 && a.axle_length_m == b.axle_length_m;
+}
+
+}  // namespace dream::sim

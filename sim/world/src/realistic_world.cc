@@ -1,0 +1,188 @@
+#include "dream/sim/realistic_world.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "dream/sim/unicycle_kinematics.h"
+#include "realism_random.h"
+
+namespace dream::sim {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Random streams, one per model (RealismRandom's `stream`).
+constexpr uint64_t kNoiseStream = 1;
+constexpr uint64_t kDropoutStream = 2;
+
+const RealismParams& ValidatedRealism(const RealismParams& realism) {
+  std::string error;
+  if (!realism.IsValid(&error)) throw std::invalid_argument("RealisticWorld: realism " + error);
+  return realism;
+}
+
+// The true world: the robot's own axle for its wheel saturation, and no
+// command timeout (the brake is modelled here, from when a command reaches
+// the robot).
+WorldParams TruthParams(const WorldParams& params, const RealismParams& realism) {
+  WorldParams truth = params;
+  truth.base_length_m = realism.axle_length_m;
+  truth.command_timeout_s = std::numeric_limits<double>::infinity();
+  return truth;
+}
+
+// Largest n with n * dt <= brake (UnicycleWorld's rule for its timeout);
+// INT64_MAX for 0 (never).
+int64_t BrakeHoldSteps(double time_step_s, double brake_s) {
+  if (brake_s == 0.0) return std::numeric_limits<int64_t>::max();
+  auto n = static_cast<int64_t>(std::floor(brake_s / time_step_s));
+  while (static_cast<double>(n + 1) * time_step_s <= brake_s) ++n;
+  while (n > 0 && static_cast<double>(n) * time_step_s > brake_s) --n;
+  return n;
+}
+
+double Quantize(double value, double quantum) {
+  return quantum > 0.0 ? std::round(value / quantum) * quantum : value;
+}
+
+double StepTowards(double current, double target, double max_change) {
+  return current + std::clamp(target - current, -max_change, max_change);
+}
+
+}  // namespace
+
+RealisticWorld::RealisticWorld(const WorldParams& params, const RealismParams& realism, uint64_t seed,
+                               std::vector<Pose2> initial_poses,
+                               const std::vector<RectangleObstacleSpec>& obstacle_specs)
+    : official_(params),
+      realism_(ValidatedRealism(realism)),
+      truth_(TruthParams(params, realism), std::move(initial_poses), obstacle_specs),
+      robots_(static_cast<size_t>(truth_.num_robots())),
+      brake_hold_steps_(BrakeHoldSteps(params.time_step_s, realism.command_brake_s)),
+      pose_history_(static_cast<size_t>(realism.pose_delay_steps) + 1, truth_.poses()),
+      velocity_history_(static_cast<size_t>(realism.pose_delay_steps) + 1, truth_.velocities()),
+      measured_poses_(truth_.poses()),
+      measured_velocities_(truth_.velocities()),
+      noise_random_(std::make_unique<RealismRandom>(seed, kNoiseStream)),
+      dropout_random_(std::make_unique<RealismRandom>(seed, kDropoutStream)) {
+  Measure(true);
+}
+
+RealisticWorld::~RealisticWorld() = default;
+
+void RealisticWorld::CheckRobotId(int robot_id, const char* caller) const {
+  if (robot_id < 0 || robot_id >= num_robots()) {
+    throw std::out_of_range(std::string("RealisticWorld::") + caller + ": robot_id " + std::to_string(robot_id) +
+                            " is not in [0, " + std::to_string(num_robots()) + ")");
+  }
+}
+
+void RealisticWorld::SetCommand(int robot_id, const UnicycleCommand& command) {
+  CheckRobotId(robot_id, "SetCommand");
+  if (!std::isfinite(command.v_mps) || !std::isfinite(command.w_radps)) {
+    throw std::invalid_argument("RealisticWorld::SetCommand: robot " + std::to_string(robot_id) +
+                                " command (v_mps=" + std::to_string(command.v_mps) +
+                                ", w_radps=" + std::to_string(command.w_radps) + ") is not finite");
+  }
+  Robot& robot = robots_[static_cast<size_t>(robot_id)];
+  const int64_t due_step = step() + realism_.command_latency_steps;
+  if (!robot.queue.empty() && robot.queue.back().due_step == due_step) {
+    robot.queue.back().command = command;  // a newer command for the same step replaces it
+  } else {
+    robot.queue.push_back({due_step, command});
+  }
+  // The Robotarium judges the command as sent, with its own constants.
+  robot.sent_over_limit = ExceedsWheelSpeedLimit(
+      UnicycleToWheelSpeeds(command, official_.wheel_radius_m, official_.base_length_m),
+      official_.max_wheel_speed_radps);
+}
+
+void RealisticWorld::StopRobot(int robot_id) {
+  CheckRobotId(robot_id, "StopRobot");
+  Robot& robot = robots_[static_cast<size_t>(robot_id)];
+  robot.queue.clear();
+  robot.delivered = UnicycleCommand{};
+  robot.delivered_step = kNone;
+  robot.wheels = WheelSpeeds{};
+  robot.sent_over_limit = false;
+  truth_.StopRobot(robot_id);
+}
+
+UnicycleCommand RealisticWorld::Drive(Robot& robot) {
+  const int64_t now = step();
+  while (!robot.queue.empty() && robot.queue.front().due_step <= now) {
+    robot.delivered = robot.queue.front().command;
+    robot.delivered_step = robot.queue.front().due_step;
+    robot.queue.pop_front();
+  }
+  if (robot.delivered_step != kNone && now - robot.delivered_step > brake_hold_steps_) {
+    // The firmware shorts the motors: the wheels stop at once.
+    robot.delivered = UnicycleCommand{};
+    robot.delivered_step = kNone;
+    robot.wheels = WheelSpeeds{};
+  }
+  UnicycleCommand target = robot.delivered;
+  if (std::abs(target.v_mps) < realism_.dead_zone_v_mps && std::abs(target.w_radps) < realism_.dead_zone_w_radps) {
+    target = UnicycleCommand{};  // the motors coast
+  }
+  if (realism_.wheel_accel_limit_radps2 == 0.0) return target;  // the true world saturates it
+
+  const double radius_m = official_.wheel_radius_m;
+  const double axle_m = realism_.axle_length_m;
+  const WheelSpeeds wanted =
+      ClipWheelSpeeds(UnicycleToWheelSpeeds(target, radius_m, axle_m), official_.max_wheel_speed_radps);
+  const double max_change = realism_.wheel_accel_limit_radps2 * official_.time_step_s;
+  robot.wheels.left_radps = StepTowards(robot.wheels.left_radps, wanted.left_radps, max_change);
+  robot.wheels.right_radps = StepTowards(robot.wheels.right_radps, wanted.right_radps, max_change);
+  return WheelSpeedsToUnicycle(robot.wheels, radius_m, axle_m);
+}
+
+void RealisticWorld::Step() {
+  bool over_limit = false;
+  for (size_t i = 0; i < robots_.size(); ++i) {
+    Robot& robot = robots_[i];
+    truth_.SetCommand(static_cast<int>(i), Drive(robot));
+    over_limit = over_limit || robot.sent_over_limit;
+    robot.sent_over_limit = false;
+  }
+  truth_.Step();
+  if (over_limit) ++actuator_errors_;
+  violations_ = truth_.violations();
+  violations_.actuator_errors = actuator_errors_;
+  Measure(false);
+}
+
+void RealisticWorld::Measure(bool first) {
+  const auto history_size = static_cast<int64_t>(pose_history_.size());
+  const int64_t now = step();
+  pose_history_[static_cast<size_t>(now % history_size)] = truth_.poses();
+  velocity_history_[static_cast<size_t>(now % history_size)] = truth_.velocities();
+  const int64_t seen_step = std::max<int64_t>(0, now - realism_.pose_delay_steps);
+  const std::vector<Pose2>& seen_poses = pose_history_[static_cast<size_t>(seen_step % history_size)];
+  const std::vector<UnicycleCommand>& seen_velocities =
+      velocity_history_[static_cast<size_t>(seen_step % history_size)];
+
+  for (size_t i = 0; i < measured_poses_.size(); ++i) {
+    // Every draw is taken whether used or not, so the streams stay aligned.
+    const double noise_x = noise_random_->Gaussian() * realism_.pose_noise_m;
+    const double noise_y = noise_random_->Gaussian() * realism_.pose_noise_m;
+    const double noise_theta = noise_random_->Gaussian() * realism_.pose_noise_rad;
+    const bool dropped = dropout_random_->Uniform() < realism_.tracking_dropout_probability;
+    if (dropped && !first) continue;  // the tracker repeats its last report
+
+    const Pose2& seen = seen_poses[i];
+    Pose2& measured = measured_poses_[i];
+    measured.x_m = Quantize(seen.x_m + noise_x, realism_.pose_quantum_m);
+    measured.y_m = Quantize(seen.y_m + noise_y, realism_.pose_quantum_m);
+    double theta = Quantize(seen.theta_rad + noise_theta, realism_.pose_quantum_rad);
+    if (theta > kPi || theta <= -kPi) theta = std::atan2(std::sin(theta), std::cos(theta));
+    measured.theta_rad = theta;
+    measured_velocities_[i] = seen_velocities[i];
+  }
+}
+
+}  // namespace dream::sim
