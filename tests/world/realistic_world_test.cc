@@ -1,0 +1,292 @@
+// RealisticWorld (world.realism): each model on its own against the true
+// world, determinism from the seed, and that ideal params through the
+// decorator step exactly like the official UnicycleWorld.
+#include "dream/sim/realistic_world.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "dream/sim/realism_params.h"
+#include "dream/sim/robotarium_constants.h"
+#include "dream/sim/unicycle_world.h"
+
+namespace dream::sim {
+namespace {
+
+constexpr double kDt = RobotariumConstants::kTimeStepSeconds;
+constexpr double kWheelRadius = RobotariumConstants::kWheelRadiusMeters;
+
+std::vector<Pose2> ThreeRobots() { return {{-0.5, 0.0, 0.0}, {0.5, 0.0, 3.14159}, {0.0, 0.6, -1.0}}; }
+
+// Commands that turn, some over the wheel limit, and bring robots 0 and 1 into
+// collision, so every violation count moves.
+UnicycleCommand CommandFor(int robot, int64_t step) {
+  const double phase = 0.05 * static_cast<double>(step) + robot;
+  return {0.15 + 0.1 * std::sin(phase), (robot == 2 ? 4.0 : 0.5) * std::cos(phase)};
+}
+
+TEST(RealisticWorldTest, IdealParamsStepExactlyLikeTheOfficialWorld) {
+  UnicycleWorld official(WorldParams{}, ThreeRobots());
+  RealisticWorld realistic(WorldParams{}, RealismParams::Ideal(), 7, ThreeRobots());
+  for (int64_t step = 0; step < 300; ++step) {
+    for (int robot = 0; robot < 3; ++robot) {
+      official.SetCommand(robot, CommandFor(robot, step));
+      realistic.SetCommand(robot, CommandFor(robot, step));
+    }
+    official.Step();
+    realistic.Step();
+    for (size_t i = 0; i < 3; ++i) {
+      ASSERT_EQ(realistic.poses()[i].x_m, official.poses()[i].x_m) << "step " << step;
+      ASSERT_EQ(realistic.poses()[i].y_m, official.poses()[i].y_m) << "step " << step;
+      ASSERT_EQ(realistic.poses()[i].theta_rad, official.poses()[i].theta_rad) << "step " << step;
+      ASSERT_EQ(realistic.velocities()[i].v_mps, official.velocities()[i].v_mps);
+    }
+  }
+  EXPECT_EQ(realistic.violations(), official.violations());
+  EXPECT_GT(official.violations().actuator_errors, 0);
+  EXPECT_GT(official.violations().collision_errors + official.violations().boundary_errors, 0);
+}
+
+TEST(RealisticWorldTest, SameSeedGivesTheSamePosesAndAnotherSeedOthers) {
+  auto run = [](uint64_t seed) {
+    RealisticWorld world(WorldParams{}, RealismParams::Lab(), seed, ThreeRobots());
+    std::vector<double> trace;
+    for (int64_t step = 0; step < 200; ++step) {
+      for (int robot = 0; robot < 3; ++robot) world.SetCommand(robot, CommandFor(robot, step));
+      world.Step();
+      for (const Pose2& pose : world.poses()) trace.insert(trace.end(), {pose.x_m, pose.y_m, pose.theta_rad});
+      for (const Pose2& pose : world.true_poses()) trace.insert(trace.end(), {pose.x_m, pose.y_m, pose.theta_rad});
+    }
+    return trace;
+  };
+  EXPECT_EQ(run(11), run(11));
+  EXPECT_NE(run(11), run(12));
+}
+
+// Robots that never move: every measurement is truth + noise.
+TEST(RealisticWorldTest, PoseNoiseHasTheConfiguredMeanAndDeviation) {
+  RealismParams realism;
+  realism.pose_noise_m = 0.01;
+  realism.pose_noise_rad = 0.02;
+  RealisticWorld world(WorldParams{}, realism, 5, ThreeRobots());
+  double sum_x = 0, sum_xx = 0, sum_t = 0, sum_tt = 0;
+  int n = 0;
+  for (int step = 0; step < 4000; ++step) {
+    world.Step();
+    for (size_t i = 0; i < 3; ++i) {
+      const double ex = world.poses()[i].x_m - world.true_poses()[i].x_m;
+      const double et = std::remainder(world.poses()[i].theta_rad - world.true_poses()[i].theta_rad, 2 * M_PI);
+      sum_x += ex;
+      sum_xx += ex * ex;
+      sum_t += et;
+      sum_tt += et * et;
+      ++n;
+    }
+  }
+  const double mean_x = sum_x / n, mean_t = sum_t / n;
+  EXPECT_LT(std::abs(mean_x), 4 * 0.01 / std::sqrt(n));
+  EXPECT_LT(std::abs(mean_t), 4 * 0.02 / std::sqrt(n));
+  EXPECT_NEAR(std::sqrt(sum_xx / n - mean_x * mean_x), 0.01, 0.0005);
+  EXPECT_NEAR(std::sqrt(sum_tt / n - mean_t * mean_t), 0.02, 0.001);
+  // The truth is untouched by the measurement.
+  EXPECT_EQ(world.true_poses()[0].x_m, -0.5);
+}
+
+TEST(RealisticWorldTest, QuantisationRoundsMeasuredPoses) {
+  RealismParams realism;
+  realism.pose_quantum_m = 0.01;
+  realism.pose_quantum_rad = 0.05;
+  RealisticWorld world(WorldParams{}, realism, 1, {{0.123456, -0.3333, 0.777}});
+  for (int step = 0; step < 50; ++step) {
+    world.SetCommand(0, {0.1, 0.3});
+    world.Step();
+    const Pose2& measured = world.poses()[0];
+    const Pose2& truth = world.true_poses()[0];
+    EXPECT_NEAR(measured.x_m / 0.01, std::round(measured.x_m / 0.01), 1e-9);
+    EXPECT_NEAR(measured.y_m / 0.01, std::round(measured.y_m / 0.01), 1e-9);
+    EXPECT_NEAR(measured.theta_rad / 0.05, std::round(measured.theta_rad / 0.05), 1e-9);
+    EXPECT_LE(std::abs(measured.x_m - truth.x_m), 0.005 + 1e-12);
+    EXPECT_LE(std::abs(measured.theta_rad - truth.theta_rad), 0.025 + 1e-12);
+  }
+}
+
+TEST(RealisticWorldTest, PoseDelaySendsThePosesOfEarlierSteps) {
+  RealismParams realism;
+  realism.pose_delay_steps = 3;
+  RealisticWorld world(WorldParams{}, realism, 1, {{0.0, 0.0, 0.0}});
+  std::vector<Pose2> truth{world.true_poses()[0]};
+  for (int64_t step = 1; step <= 30; ++step) {
+    world.SetCommand(0, {0.1, 0.2});
+    world.Step();
+    truth.push_back(world.true_poses()[0]);
+    const Pose2& expected = truth[static_cast<size_t>(std::max<int64_t>(0, step - 3))];
+    EXPECT_EQ(world.poses()[0].x_m, expected.x_m) << "step " << step;
+    EXPECT_EQ(world.poses()[0].theta_rad, expected.theta_rad) << "step " << step;
+  }
+  EXPECT_NE(world.poses()[0].x_m, world.true_poses()[0].x_m);
+}
+
+TEST(RealisticWorldTest, TrackingDropoutsRepeatTheLastMeasurement) {
+  RealismParams never_seen;
+  never_seen.tracking_dropout_probability = 1.0;
+  RealisticWorld frozen(WorldParams{}, never_seen, 1, {{0.0, 0.0, 0.0}});
+  for (int step = 0; step < 20; ++step) {
+    frozen.SetCommand(0, {0.1, 0.0});
+    frozen.Step();
+  }
+  EXPECT_EQ(frozen.poses()[0].x_m, 0.0);  // step 0 is always measured
+  EXPECT_GT(frozen.true_poses()[0].x_m, 0.05);
+
+  RealismParams some;
+  some.tracking_dropout_probability = 0.3;
+  RealisticWorld world(WorldParams{}, some, 9, {{-1.0, 0.0, 0.0}});
+  int repeated = 0;
+  const int steps = 3000;
+  for (int step = 0; step < steps; ++step) {
+    const double before = world.poses()[0].x_m;
+    world.SetCommand(0, {0.1, 0.0});  // 0.0033 m a step: every fresh measurement differs
+    world.Step();
+    if (world.poses()[0].x_m == before) {
+      ++repeated;
+    } else {
+      EXPECT_EQ(world.poses()[0].x_m, world.true_poses()[0].x_m);
+    }
+  }
+  EXPECT_NEAR(static_cast<double>(repeated) / steps, 0.3, 0.03);
+}
+
+TEST(RealisticWorldTest, CommandLatencyDelaysWhenACommandActs) {
+  RealismParams realism;
+  realism.command_latency_steps = 2;
+  RealisticWorld world(WorldParams{}, realism, 1, {{0.0, 0.0, 0.0}});
+  world.SetCommand(0, {0.1, 0.0});  // answers step 0: acts from step 2
+  world.Step();
+  world.Step();
+  EXPECT_EQ(world.true_poses()[0].x_m, 0.0);
+  world.Step();
+  EXPECT_DOUBLE_EQ(world.true_poses()[0].x_m, 0.1 * kDt);
+}
+
+TEST(RealisticWorldTest, StopRobotDropsQueuedCommands) {
+  RealismParams realism;
+  realism.command_latency_steps = 1;
+  RealisticWorld world(WorldParams{}, realism, 1, {{0.0, 0.0, 0.0}});
+  world.SetCommand(0, {0.1, 0.0});
+  world.StopRobot(0);
+  for (int step = 0; step < 5; ++step) world.Step();
+  EXPECT_EQ(world.true_poses()[0].x_m, 0.0);
+}
+
+// One command, then silence: the firmware brakes 0.5 s after the command
+// reached the robot (15 steps of 0.033 s still drive, the 16th does not).
+TEST(RealisticWorldTest, BrakeStopsARobotWhoseCommandIsOlderThanTheLimit) {
+  for (int latency : {0, 1}) {
+    RealismParams realism;
+    realism.command_latency_steps = latency;
+    RealisticWorld world(WorldParams{}, realism, 1, {{0.0, 0.0, 0.0}});
+    world.SetCommand(0, {0.1, 0.0});
+    std::vector<double> v;
+    for (int step = 0; step < 25; ++step) {
+      world.Step();
+      v.push_back(world.true_velocities()[0].v_mps);
+    }
+    // v[s] is the velocity driven in the step from s to s + 1.
+    for (int s = 0; s < 25; ++s) {
+      const bool driving = s >= latency && s <= latency + 15;
+      EXPECT_EQ(v[static_cast<size_t>(s)] != 0.0, driving) << "latency " << latency << " step " << s;
+    }
+  }
+  RealismParams never;
+  never.command_brake_s = 0.0;
+  RealisticWorld world(WorldParams{}, never, 1, {{0.0, 0.0, 0.0}});
+  world.SetCommand(0, {0.1, 0.0});
+  for (int step = 0; step < 100; ++step) world.Step();
+  EXPECT_NEAR(world.true_velocities()[0].v_mps, 0.1, 1e-12);
+}
+
+TEST(RealisticWorldTest, DeadZoneCoastsOnlyWhenBothSpeedsAreSmall) {
+  RealismParams realism;
+  realism.dead_zone_v_mps = 1e-4;
+  realism.dead_zone_w_radps = 0.01;
+  RealisticWorld world(WorldParams{}, realism, 1, {{0.0, 0.0, 0.0}, {0.5, 0.0, 0.0}, {-0.5, 0.0, 0.0}});
+  world.SetCommand(0, {5e-5, 0.005});  // both inside: coasts
+  world.SetCommand(1, {5e-5, 0.02});   // turning fast enough: follows
+  world.SetCommand(2, {2e-4, 0.0});    // moving fast enough: follows
+  world.Step();
+  EXPECT_EQ(world.true_velocities()[0].v_mps, 0.0);
+  EXPECT_EQ(world.true_velocities()[0].w_radps, 0.0);
+  EXPECT_DOUBLE_EQ(world.true_velocities()[1].w_radps, 0.02);
+  EXPECT_DOUBLE_EQ(world.true_velocities()[2].v_mps, 2e-4);
+}
+
+TEST(RealisticWorldTest, WheelAccelerationLimitRampsTheWheels) {
+  RealismParams realism;
+  realism.wheel_accel_limit_radps2 = 100.0;  // 3.3 rad/s per step
+  RealisticWorld world(WorldParams{}, realism, 1, {{0.0, 0.0, 0.0}});
+  const double per_step_mps = 100.0 * kDt * kWheelRadius;
+  std::vector<double> v;
+  for (int step = 0; step < 6; ++step) {
+    world.SetCommand(0, {0.2, 0.0});  // both wheels at the 12.5 rad/s limit
+    world.Step();
+    v.push_back(world.true_velocities()[0].v_mps);
+  }
+  EXPECT_NEAR(v[0], per_step_mps, 1e-12);
+  EXPECT_NEAR(v[1], 2 * per_step_mps, 1e-12);
+  EXPECT_NEAR(v[2], 3 * per_step_mps, 1e-12);
+  EXPECT_NEAR(v[3], 0.2, 1e-12);  // 4 * 3.3 > 12.5: reached
+  EXPECT_NEAR(v[5], 0.2, 1e-12);
+  // Stopping ramps down too.
+  world.SetCommand(0, {0.0, 0.0});
+  world.Step();
+  EXPECT_NEAR(world.true_velocities()[0].v_mps, 0.2 - per_step_mps, 1e-12);
+}
+
+// v = 0.1, w = 1.9: the outer wheel turns 12.48 rad/s on a 0.105 m axle (under
+// the 12.5 limit) but 12.78 rad/s on the simulator's 0.11 m one.
+TEST(RealisticWorldTest, AxleLengthSetsTheWheelSaturationButNotTheActuatorCheck) {
+  RealismParams lab_axle;
+  lab_axle.axle_length_m = 0.105;
+  RealisticWorld lab(WorldParams{}, lab_axle, 1, {{0.0, 0.0, 0.0}});
+  UnicycleWorld official(WorldParams{}, {{0.0, 0.0, 0.0}});
+  lab.SetCommand(0, {0.1, 1.9});
+  official.SetCommand(0, {0.1, 1.9});
+  lab.Step();
+  official.Step();
+  EXPECT_DOUBLE_EQ(lab.true_velocities()[0].w_radps, 1.9);
+  EXPECT_LT(official.velocities()[0].w_radps, 1.9);
+  // The Robotarium judges the command with its own 0.11 m: over the limit in both.
+  EXPECT_EQ(lab.violations().actuator_errors, 1);
+  EXPECT_EQ(official.violations().actuator_errors, 1);
+}
+
+TEST(RealisticWorldTest, LabPresetIsValidAndNotIdeal) {
+  std::string error;
+  EXPECT_TRUE(RealismParams::Lab().IsValid(&error)) << error;
+  EXPECT_FALSE(RealismParams::Lab().IsIdeal());
+  EXPECT_TRUE(RealismParams::Ideal().IsIdeal());
+  RealismParams preset;
+  EXPECT_TRUE(RealismParams::FromPreset("lab", &preset));
+  EXPECT_EQ(preset, RealismParams::Lab());
+  EXPECT_FALSE(RealismParams::FromPreset("Lab", &preset));
+}
+
+TEST(RealisticWorldTest, InvalidParamsAndCommandsThrow) {
+  RealismParams bad;
+  bad.tracking_dropout_probability = 1.5;
+  EXPECT_THROW(RealisticWorld(WorldParams{}, bad, 1, {{0.0, 0.0, 0.0}}), std::invalid_argument);
+  bad = RealismParams{};
+  bad.pose_noise_m = -0.1;
+  std::string error;
+  EXPECT_FALSE(bad.IsValid(&error));
+  EXPECT_NE(error.find("pose_noise_m"), std::string::npos) << error;
+  RealisticWorld world(WorldParams{}, RealismParams::Lab(), 1, {{0.0, 0.0, 0.0}});
+  EXPECT_THROW(world.SetCommand(1, {0.1, 0.0}), std::out_of_range);
+  EXPECT_THROW(world.SetCommand(0, {NAN, 0.0}), std::invalid_argument);
+  EXPECT_THROW(world.StopRobot(-1), std::out_of_range);
+}
+
+}  // namespace
+}  // namespace dream::sim
