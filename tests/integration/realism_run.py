@@ -1,0 +1,99 @@
+#!/usr/bin/python3
+"""realism_run: `dream run` with world.realism (issue 12 item 1).
+
+1. `--set world.realism=lab` runs go_to_goal to its end; summary.json records the lab models; the
+   log holds, for every step, DREAM_MEASURED_POSES (what the agents were sent) and DREAM_POSES (the
+   truth): the truth starts exactly at the configured poses, the measurement near them but not on
+   them, and summary.json's final_poses are the last true poses.
+2. The same command again gives the same poses (truth and measured): lockstep is deterministic;
+   --seed 2 gives other measurements.
+3. Without realism (and with `realism: ideal`) the log has no DREAM_MEASURED_POSES and summary.json
+   no "realism"; both give the same poses.
+4. A Python controller (go_to_goal_python) with the lab preset finishes and its agents were sent
+   measured poses too.
+5. A bad value given with --set names the key and its range, exits 1 and makes no folder.
+
+Usage: realism_run.py --dream BIN --source DIR --types-dir DIR
+"""
+
+import os
+
+from dreamtest import arguments, check, import_types, main, read_events, read_summary
+
+EXIT_INPUT = 1
+
+
+def poses_by_channel(dream_types, run_dir):
+    """{channel: [(step, x, y, theta)]} for DREAM_POSES and DREAM_MEASURED_POSES, in log order."""
+    found = {"DREAM_POSES": [], "DREAM_MEASURED_POSES": []}
+    for event in read_events(os.path.join(run_dir, "run.lcmlog")):
+        if event.channel in found:
+            p = dream_types.robot_poses_t.decode(event.data)
+            found[event.channel].append((p.step, tuple(p.x), tuple(p.y), tuple(p.theta)))
+    return found
+
+
+def run(ctx, args, out, config, *extra, expect=0):
+    return ctx.run([args.dream, "run", os.path.join(args.source, "config", config), "--out", ctx.path(out),
+                    *extra], timeout=120, expect=expect)
+
+
+def test(ctx):
+    args = arguments(types_dir=True)
+    dream_types = import_types(args.types_dir)
+
+    # 1. The lab preset: truth and measurement in the log.
+    run(ctx, args, "lab", "go_to_goal.yaml", "--set", "world.realism=lab")
+    summary = read_summary(ctx.path("lab"))
+    realism = summary.get("realism")
+    check(realism is not None, f"summary.json has no realism: {sorted(summary)}")
+    check(realism["axle_length_m"] == 0.105 and realism["pose_delay_steps"] == 1
+          and realism["command_latency_steps"] == 1, f"summary.json realism is not the lab preset: {realism}")
+    check(summary["end"] == "finished", f"the lab run ended {summary['end']}")
+    lab = poses_by_channel(dream_types, ctx.path("lab"))
+    truth, measured = lab["DREAM_POSES"], lab["DREAM_MEASURED_POSES"]
+    check(len(truth) > 100 and [t[0] for t in truth] == [m[0] for m in measured],
+          f"DREAM_POSES ({len(truth)}) and DREAM_MEASURED_POSES ({len(measured)}) do not pair step for step")
+    config_start = [(1.109, 0.287), (0.459, 0.693)]  # config/go_to_goal.yaml's first two robots
+    for i, (x, y) in enumerate(config_start):
+        check(truth[0][1][i] == x and truth[0][2][i] == y,
+              f"true step-0 pose of robot {i} is ({truth[0][1][i]}, {truth[0][2][i]}), configured ({x}, {y})")
+        error = abs(measured[0][1][i] - x)
+        check(0 < error < 0.005, f"measured step-0 x of robot {i} is {error} m from the truth (noise 0.001 m)")
+    final = [[truth[-1][1][i], truth[-1][2][i], truth[-1][3][i]] for i in range(len(truth[-1][1]))]
+    check(summary["final_poses"] == final, "summary.json final_poses are not the last true poses")
+    moved = sum(1 for a, b in zip(truth, measured) if a[1] != b[1])
+    check(moved == len(truth), f"{len(truth) - moved} steps have measured x equal to the truth")
+
+    # 2. Determinism, and the seed drives the noise.
+    run(ctx, args, "lab_again", "go_to_goal.yaml", "--set", "world.realism=lab")
+    check(poses_by_channel(dream_types, ctx.path("lab_again")) == lab, "the same lab run gave other poses")
+    run(ctx, args, "lab_seed2", "go_to_goal.yaml", "--set", "world.realism=lab", "--seed", "2")
+    seed2 = poses_by_channel(dream_types, ctx.path("lab_seed2"))
+    check(seed2["DREAM_MEASURED_POSES"][0] != measured[0], "--seed 2 gave the same measured poses")
+
+    # 3. Off: the official world, nothing added; `ideal` is the same.
+    run(ctx, args, "default", "go_to_goal.yaml", "--set", "world.realism=null")
+    run(ctx, args, "ideal", "go_to_goal.yaml", "--set", "world.realism=ideal")
+    default = poses_by_channel(dream_types, ctx.path("default"))
+    check(not default["DREAM_MEASURED_POSES"], "a run without realism has DREAM_MEASURED_POSES")
+    check("realism" not in read_summary(ctx.path("default")), "a run without realism has summary.json realism")
+    check(poses_by_channel(dream_types, ctx.path("ideal")) == default, "realism: ideal changed the poses")
+    check(default["DREAM_POSES"] != truth, "the lab preset did not change the trajectory")
+
+    # 4. A Python controller gets the lab too.
+    run(ctx, args, "python", "go_to_goal_python.yaml", "--set", "world.realism=lab")
+    python = poses_by_channel(dream_types, ctx.path("python"))
+    check(read_summary(ctx.path("python"))["end"] == "finished", "the Python lab run did not finish")
+    check(len(python["DREAM_MEASURED_POSES"]) == len(python["DREAM_POSES"]) > 100,
+          "the Python lab run has no measured poses for every step")
+
+    # 5. A bad value.
+    code, text = run(ctx, args, "bad", "go_to_goal.yaml", "--set", "world.realism.tracking_dropout_probability=2",
+                     expect=EXIT_INPUT)
+    check("tracking_dropout_probability" in text and "[0, 1]" in text, f"unclear error: {text.strip()}")
+    check(not os.path.exists(ctx.path("bad")), "a refused config made its run folder")
+
+
+if __name__ == "__main__":
+    main(test)
