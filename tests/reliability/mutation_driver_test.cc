@@ -26,12 +26,14 @@
 #include "dream/sim/run_recorder.h"
 #include "dream/sim/run_track.h"
 #include "dream/velocity_command_t.hpp"
+#include "fuzz_scale.h"
 #include "sample_messages.h"
 
 namespace dream::testing {
 namespace {
 
 constexpr uint32_t kSeed = 20261123;
+// Counts for CI; DREAM_FUZZ_SCALE multiplies both (fuzz_scale.h).
 constexpr int kMutationsPerMessage = 5000;  // x 6 types, each through 6 decoders
 constexpr int kLogMutations = 3000;         // each through 3 log readers
 // A decoded message may hold what its bytes hold; the rest is bookkeeping.
@@ -202,8 +204,9 @@ TEST(MutationDriver, MutatedMessagesAreDecodedOrRefusedByEveryDecoder) {
   Mutator mutator(kSeed);
   long decoded = 0;
   long refused = 0;
+  const long mutations_per_message = kMutationsPerMessage * FuzzScale();
   for (const EncodedMessage& sample : SampleMessages()) {
-    for (int i = 0; i < kMutationsPerMessage; ++i) {
+    for (long i = 0; i < mutations_per_message; ++i) {
       const std::vector<uint8_t> mutated = mutator.Mutate(sample.bytes);
       for (const auto& [type, decode] : Decoders()) {
         const AllocationWatch watch;
@@ -217,7 +220,7 @@ TEST(MutationDriver, MutatedMessagesAreDecodedOrRefusedByEveryDecoder) {
   EXPECT_GT(refused, decoded);
   EXPECT_GT(decoded, 0);
   RecordProperty("decodes", std::to_string(decoded + refused));
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0 * FuzzScale());
 }
 
 TEST(MutationDriver, MutatedRunLogsAreReadOrRefusedWithFileAndByte) {
@@ -233,7 +236,8 @@ TEST(MutationDriver, MutatedRunLogsAreReadOrRefusedWithFileAndByte) {
   Mutator mutator(kSeed + 1);
   const std::string path = folder.file("mutated.lcmlog");
   long refused_by_reader = 0;
-  for (int i = 0; i < kLogMutations; ++i) {
+  const long log_mutations = kLogMutations * FuzzScale();
+  for (long i = 0; i < log_mutations; ++i) {
     const std::vector<uint8_t> mutated = mutator.Mutate(original);
     {
       std::ofstream out(path, std::ios::binary | std::ios::trunc);
@@ -267,8 +271,9 @@ TEST(MutationDriver, MutatedRunLogsAreReadOrRefusedWithFileAndByte) {
     ASSERT_LE(watch.largest(), mutated.size() + kAllocationSlackBytes) << what;
   }
   EXPECT_GT(refused_by_reader, 0);
-  EXPECT_LT(refused_by_reader, kLogMutations);
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
+  EXPECT_LT(refused_by_reader, log_mutations);
+  RecordProperty("logs", std::to_string(log_mutations));
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0 * FuzzScale());
 }
 
 }  // namespace
