@@ -2,10 +2,14 @@
 
 #include <matio.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <cstring>
+#include <fstream>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
+#include <vector>
 
 namespace dream::bridge {
 namespace {
@@ -28,7 +32,172 @@ struct VarFreer {
   void operator()(matvar_t* var) const { Mat_VarFree(var); }
 };
 
-std::string MatioDetail() { return last_matio_message.empty() ? std::string() : " (libmatio: " + last_matio_message + ")"; }
+/// libmatio's last message; of an HDF5 error stack (v7.3 files) only its last
+/// "minor:" line, e.g. "File has been truncated".
+std::string MatioDetail() {
+  if (last_matio_message.empty()) return std::string();
+  std::string message = last_matio_message;
+  const size_t minor = message.rfind("minor: ");
+  if (minor != std::string::npos) message = "HDF5: " + message.substr(minor + 7);
+  while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) message.pop_back();
+  return " (libmatio: " + message + ")";
+}
+
+// MAT-file v5 data types (the "mi" codes of MathWorks' format description).
+constexpr uint32_t kMiInt8 = 1;
+constexpr uint32_t kMiInt32 = 5;
+constexpr uint32_t kMiUint32 = 6;
+constexpr uint32_t kMiMatrix = 14;
+constexpr uint32_t kMiCompressed = 15;
+constexpr size_t kMat5HeaderSize = 128;
+
+/// Bytes per element of a numeric v5 data type, 0 for the others.
+size_t NumericSize(uint32_t type) {
+  switch (type) {
+    case 1: case 2: return 1;          // miINT8, miUINT8
+    case 3: case 4: return 2;          // miINT16, miUINT16
+    case 5: case 6: case 7: return 4;  // miINT32, miUINT32, miSINGLE
+    case 9: case 12: case 13: return 8;  // miDOUBLE, miINT64, miUINT64
+    default: return 0;
+  }
+}
+
+/// A v5 data element's tag: type, byte count and where its data lies.
+struct Mat5Element {
+  uint32_t type = 0;
+  uint64_t size = 0;   ///< bytes of data
+  uint64_t data = 0;   ///< offset of the data in the file
+  uint64_t end = 0;    ///< offset after it, padding included
+};
+
+/// Walks the declared sizes of a MAT-file v5 against the bytes it has, so a
+/// file cut short or with a forged size is refused before libmatio reads it
+/// (libmatio reads a short variable without an error, into uninitialised memory).
+class Mat5Layout {
+ public:
+  Mat5Layout(const std::string& path, const std::string& bytes) : path_(path), bytes_(bytes) {
+    swap_ = bytes_[126] == 'M' && bytes_[127] == 'I';
+  }
+
+  /// Every top-level element must be a (compressed) matrix that fits in the
+  /// file; the uncompressed `variable`'s parts must agree with its dims.
+  void Check(const std::string& variable) const {
+    uint64_t offset = kMat5HeaderSize;
+    for (int index = 0; offset < bytes_.size(); ++index) {
+      const Mat5Element element = Tag(offset, "top-level element " + std::to_string(index), bytes_.size(), true);
+      if (element.type != kMiMatrix && element.type != kMiCompressed) {
+        Fail("top-level element " + std::to_string(index) + " at byte " + std::to_string(offset) + " has type " +
+             std::to_string(element.type) + "; a MAT-file holds matrices (14) and compressed matrices (15) only");
+      }
+      if (element.type == kMiMatrix) CheckMatrix(element, variable);
+      offset = element.end;
+    }
+  }
+
+ private:
+  [[noreturn]] void Fail(const std::string& problem) const {
+    throw std::runtime_error(path_ + ": " + problem + " (damaged or cut short?)");
+  }
+
+  uint32_t Word(uint64_t offset) const {
+    uint32_t value = 0;
+    std::memcpy(&value, bytes_.data() + offset, 4);
+    return swap_ ? __builtin_bswap32(value) : value;
+  }
+
+  /// The tag at `offset` of an element that must end by `limit`. Top-level
+  /// elements are padded to 8 bytes except compressed ones; a file may end
+  /// in the padding of its last element.
+  Mat5Element Tag(uint64_t offset, const std::string& what, uint64_t limit, bool top_level) const {
+    if (limit < offset + 8) {
+      Fail(what + " at byte " + std::to_string(offset) + " is cut short inside its 8-byte tag (the element ends at byte " +
+           std::to_string(limit) + ")");
+    }
+    Mat5Element element;
+    const uint32_t first = Word(offset);
+    if ((first >> 16) != 0) {  // small data element: size and type in one word, up to 4 bytes of data
+      element.type = first & 0xffff;
+      element.size = first >> 16;
+      element.data = offset + 4;
+      element.end = offset + 8;
+      if (element.size > 4) Fail(what + " at byte " + std::to_string(offset) + " is a small element of " +
+                                 std::to_string(element.size) + " bytes; at most 4 fit");
+      return element;
+    }
+    element.type = first;
+    element.size = Word(offset + 4);
+    element.data = offset + 8;
+    const uint64_t data_end = element.data + element.size;
+    if (data_end > limit) {
+      Fail(what + " at byte " + std::to_string(offset) + " declares " + std::to_string(element.size) +
+           " bytes of data, but only " + std::to_string(limit - element.data) + " follow");
+    }
+    const bool padded = !(top_level && element.type == kMiCompressed);
+    element.end = padded ? std::min<uint64_t>(limit, (data_end + 7) / 8 * 8) : data_end;
+    return element;
+  }
+
+  void CheckMatrix(const Mat5Element& matrix, const std::string& variable) const {
+    const uint64_t limit = matrix.data + matrix.size;
+    if (matrix.size == 0) return;  // an empty matrix element (MATLAB writes them for empty cells)
+    const Mat5Element flags = Tag(matrix.data, "the array flags of a matrix", limit, false);
+    if (flags.type != kMiUint32 || flags.size != 8) return;  // not ours to judge: libmatio says what it is
+    const Mat5Element dims = Tag(flags.end, "the dimensions of a matrix", limit, false);
+    const Mat5Element name = Tag(dims.end, "the name of a matrix", limit, false);
+    if (dims.type != kMiInt32 || name.type != kMiInt8) return;
+    const std::string matrix_name = bytes_.substr(name.data, name.size);
+    if (matrix_name != variable) return;
+    const std::string what = "variable '" + variable + "'";
+    const uint32_t matrix_class = Word(flags.data) & 0xff;
+    constexpr uint32_t kMxDoubleClass = 6;
+    if (matrix_class != kMxDoubleClass) return;  // refused by class below, with libmatio's reading of it
+    if (dims.size % 4 != 0 || dims.size < 8) {
+      Fail(what + ": its dimensions take " + std::to_string(dims.size) + " bytes; a rank-2 or higher array needs 4 per dimension");
+    }
+    uint64_t count = 1;
+    std::string shape;
+    for (uint64_t d = 0; d < dims.size / 4; ++d) {
+      const auto extent = static_cast<int32_t>(Word(dims.data + 4 * d));
+      if (extent < 0) Fail(what + ": dimension " + std::to_string(d) + " is " + std::to_string(extent));
+      shape += (d == 0 ? "" : " x ") + std::to_string(extent);
+      count *= static_cast<uint64_t>(extent);
+      if (count > (uint64_t{1} << 40)) Fail(what + ": dimensions " + shape + " are absurdly large");
+    }
+    const Mat5Element real = Tag(name.end, what + "'s real part", limit, false);
+    const size_t element_size = NumericSize(real.type);
+    if (element_size == 0) Fail(what + ": its real part has data type " + std::to_string(real.type) + ", not a number type");
+    if (real.size != count * element_size) {
+      Fail(what + ": dimensions " + shape + " hold " + std::to_string(count) + " values, but its real part has " +
+           std::to_string(real.size) + " bytes of " + std::to_string(element_size) + "-byte numbers (" +
+           std::to_string(real.size / element_size) + " values)");
+    }
+  }
+
+  const std::string& path_;
+  const std::string& bytes_;
+  bool swap_ = false;
+};
+
+/// The file's bytes, refusing more than any lab result holds.
+std::string ReadAll(const std::string& path) {
+  constexpr int64_t kMaxBytes = int64_t{1} << 31;
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) throw std::runtime_error(path + ": cannot open the file");
+  const std::streamoff size = in.tellg();
+  if (size < 0) throw std::runtime_error(path + ": cannot read the file");
+  if (size > kMaxBytes) throw std::runtime_error(path + ": " + std::to_string(size) + " bytes is larger than any lab result");
+  std::string bytes(static_cast<size_t>(size), '\0');
+  in.seekg(0);
+  if (size > 0 && !in.read(bytes.data(), size)) throw std::runtime_error(path + ": cannot read the file");
+  return bytes;
+}
+
+bool IsMat5(const std::string& bytes) {
+  if (bytes.size() < kMat5HeaderSize) return false;
+  const bool endian_mark = (bytes[126] == 'I' && bytes[127] == 'M') || (bytes[126] == 'M' && bytes[127] == 'I');
+  const bool version_1 = (bytes[124] == 0x00 && bytes[125] == 0x01) || (bytes[124] == 0x01 && bytes[125] == 0x00);
+  return endian_mark && version_1;
+}
 
 }  // namespace
 
@@ -36,27 +205,47 @@ NpyArray ReadMatMatrix(const std::string& path, const std::string& variable) {
   InstallMatioLog();
   last_matio_message.clear();
   auto fail = [&path](const std::string& problem) { throw std::runtime_error(path + ": " + problem + MatioDetail()); };
+  {
+    const std::string bytes = ReadAll(path);
+    if (bytes.size() >= 116 && bytes.compare(0, 10, "MATLAB 5.0") == 0 && !IsMat5(bytes)) {
+      throw std::runtime_error(path + ": a MATLAB 5.0 MAT-file header, but cut short or damaged before byte 128 " +
+                               "(the version and byte-order marks)");
+    }
+    if (IsMat5(bytes)) Mat5Layout(path, bytes).Check(variable);
+  }
   std::unique_ptr<mat_t, MatCloser> mat(Mat_Open(path.c_str(), MAT_ACC_RDONLY));
   if (!mat) fail("cannot open it as a MATLAB .mat file");
   std::unique_ptr<matvar_t, VarFreer> var(Mat_VarReadInfo(mat.get(), variable.c_str()));
+  if (!var && !last_matio_message.empty()) fail("cannot read variable '" + variable + "' (damaged or cut short?)");
   if (!var) fail("has no variable '" + variable + "'; save the result array under that name");
   if (var->rank != 2 || var->isComplex || var->class_type != MAT_C_DOUBLE || var->isLogical) {
-    fail("variable '" + variable + "' is not a real 2-D double matrix");
+    fail("variable '" + variable + "' is not a real 2-D double matrix (rank " + std::to_string(var->rank) +
+         ", class " + std::to_string(static_cast<int>(var->class_type)) + (var->isComplex ? ", complex" : "") +
+         (var->isLogical ? ", logical" : "") + ")");
   }
   const size_t rows = var->dims[0];
   const size_t columns = var->dims[1];
-  if (rows > (size_t{1} << 28) || columns > (size_t{1} << 16)) fail("variable '" + variable + "' is absurdly large");
-  var.reset(Mat_VarRead(mat.get(), variable.c_str()));
-  if (!var || var->data == nullptr || var->data_type != MAT_T_DOUBLE || var->rank != 2 || var->dims[0] != rows ||
-      var->dims[1] != columns || var->nbytes != rows * columns * sizeof(double)) {
-    fail("cannot read the data of variable '" + variable + "' (damaged or cut short?)");
+  if (rows > (size_t{1} << 28) || columns > (size_t{1} << 16) || rows * columns > (size_t{1} << 28)) {
+    fail("variable '" + variable + "' is absurdly large: " + std::to_string(rows) + " x " + std::to_string(columns));
+  }
+  // Read twice into buffers filled with two different patterns: libmatio
+  // does not report every short read, and a value it did not read from the
+  // file keeps the pattern, so the two reads differ.
+  const size_t count = rows * columns;
+  std::vector<double> first(count, 1.0e300);
+  std::vector<double> second(count, -2.0e-300);
+  const int edge = static_cast<int>(count);
+  if (count > 0 && (Mat_VarReadDataLinear(mat.get(), var.get(), first.data(), 0, 1, edge) != 0 ||
+                    Mat_VarReadDataLinear(mat.get(), var.get(), second.data(), 0, 1, edge) != 0 ||
+                    std::memcmp(first.data(), second.data(), count * sizeof(double)) != 0)) {
+    fail("cannot read the " + std::to_string(rows) + " x " + std::to_string(columns) + " values of variable '" +
+         variable + "' (damaged or cut short?)");
   }
   NpyArray array;
   array.shape = {static_cast<int64_t>(rows), static_cast<int64_t>(columns)};
-  array.values.resize(rows * columns);
-  const auto* data = static_cast<const double*>(var->data);  // column-major
-  for (size_t r = 0; r < rows; ++r) {
-    for (size_t c = 0; c < columns; ++c) array.values[r * columns + c] = data[c * rows + r];
+  array.values.resize(count);
+  for (size_t r = 0; r < rows; ++r) {  // the file is column-major
+    for (size_t c = 0; c < columns; ++c) array.values[r * columns + c] = first[c * rows + r];
   }
   return array;
 }
