@@ -12,8 +12,10 @@
 #include "dream/bridge/lab_replay_world.h"
 #include "dream/bridge/mat_file.h"
 #include "dream/sim/output_folder.h"
+#include "dream/sim/output_folder_lock.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/lcm/channels.h"
+#include "dream/lcm/run_id.h"
 #include "dream/obstacles_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
@@ -66,11 +68,12 @@ void WriteMessage(sim::RunRecorder& recorder, const std::string& channel, int64_
   recorder.Write(channel, utime, buffer->data(), static_cast<int>(buffer->size()));
 }
 
-void WriteStatus(sim::RunRecorder& recorder, const sim::World& world, int8_t state, const std::string& detail,
-                 std::vector<uint8_t>* buffer) {
+void WriteStatus(sim::RunRecorder& recorder, const sim::World& world, int64_t run_id, int8_t state,
+                 const std::string& detail, std::vector<uint8_t>* buffer) {
   run_status_t status;
   status.utime = world.utime();
   status.step = world.step();
+  status.run_id = run_id;
   status.state = state;
   status.num_robots = world.num_robots();
   const sim::ViolationCounts& counts = world.violations();
@@ -79,6 +82,7 @@ void WriteStatus(sim::RunRecorder& recorder, const sim::World& world, int8_t sta
   status.actuator_errors = counts.actuator_errors;
   status.obstacle_collisions = counts.obstacle_collisions;
   status.rejected_commands = 0;
+  status.command_conflicts = 0;
   status.num_lost = 0;
   status.detail = detail;
   WriteMessage(recorder, lcm::kStatusChannel, world.utime(), status, buffer);
@@ -94,6 +98,11 @@ LabReplayWorld WriteLog(const RunTrack& track, const sim::WorldParams& params, i
   obstacles_t obstacles;
   robot_poses_t poses;
   velocity_command_t command;
+  // An imported lab run gets an id of its own, as every run does.
+  const int64_t run_id = lcm::NewRunId();
+  obstacles.run_id = run_id;
+  poses.run_id = run_id;
+  command.run_id = run_id;
   command.agent_id = 0;
   command.done = false;
   const int n = track.num_robots;
@@ -118,7 +127,7 @@ LabReplayWorld WriteLog(const RunTrack& track, const sim::WorldParams& params, i
     }
     obstacles.num_obstacles = static_cast<int32_t>(obstacles.obstacles.size());
     WriteMessage(recorder, lcm::kObstaclesChannel, utime, obstacles, &buffer);
-    WriteStatus(recorder, world, run_status_t::RUNNING, "lab run", &buffer);
+    WriteStatus(recorder, world, run_id, run_status_t::RUNNING, "lab run", &buffer);
     poses.utime = utime;
     poses.step = k;
     for (size_t i = 0; i < static_cast<size_t>(n); ++i) {
@@ -141,7 +150,7 @@ LabReplayWorld WriteLog(const RunTrack& track, const sim::WorldParams& params, i
     }
     world.Step();
   }
-  WriteStatus(recorder, world, end_state, detail, &buffer);
+  WriteStatus(recorder, world, run_id, end_state, detail, &buffer);
   recorder.Close();
   if (events != nullptr) *events = recorder.events_written();
   return world;
@@ -331,6 +340,7 @@ ImportedRun ImportLabRun(const std::string& result_path, const std::string& expo
   const RunTrack& track = lab.track;
 
   const sim::OutputFolder out(out_dir);
+  sim::OutputFolderLock::HoldUntilExit(out.dir());  // a run writing the folder refuses the import, and back
   imported.log_path = out.PathOf("run.lcmlog");
   imported.summary_path = out.PathOf("summary.json");
   imported.picture_path = out.PathOf("trajectories.png");

@@ -90,6 +90,7 @@ void LabReplayWorld::Step() {
     velocity_command_t message;
     message.utime = utime();
     message.step = step_;
+    message.run_id = 0;  // recorded from the lab's files, not answering any world
     message.agent_id = 0;
     message.done = false;
     std::vector<uint8_t> buffer;

@@ -1,5 +1,6 @@
 #include "dream/lcm/wire_layout_of.h"
 
+#include "dream/applied_commands_t.hpp"
 #include "dream/lcm/message_limits.h"
 #include "dream/obstacles_t.hpp"
 #include "dream/radio_message_t.hpp"
@@ -24,9 +25,21 @@ constexpr int kRectangleObstacle = kInt32 + 6 * kDouble;
 }  // namespace
 
 template <>
+const WireLayout& WireLayoutOf<applied_commands_t>() {
+  static const WireLayout layout = WireLayout(applied_commands_t::getHash())
+                                       .Fixed(kInt64 + kInt64 + kInt64)  // utime, step, run_id
+                                       .Count(MessageLimits::kRobots)
+                                       .Array(kInt64)   // applied_agent_id
+                                       .Array(kDouble)  // commanded_v
+                                       .Array(kDouble)  // commanded_w
+                                       .Array(kInt32);  // conflicts
+  return layout;
+}
+
+template <>
 const WireLayout& WireLayoutOf<obstacles_t>() {
   static const WireLayout layout = WireLayout(obstacles_t::getHash())
-                                       .Fixed(kInt64 + kInt64)  // utime, step
+                                       .Fixed(kInt64 + kInt64 + kInt64)  // utime, step, run_id
                                        .Count(MessageLimits::kObstacles)
                                        .Array(kRectangleObstacle);
   return layout;
@@ -35,7 +48,7 @@ const WireLayout& WireLayoutOf<obstacles_t>() {
 template <>
 const WireLayout& WireLayoutOf<radio_message_t>() {
   static const WireLayout layout = WireLayout(radio_message_t::getHash())
-                                       .Fixed(kInt64 + kInt64 + kInt32)  // utime, step, sender_id
+                                       .Fixed(kInt64 + kInt64 + kInt64 + kInt32)  // utime, step, run_id, sender_id
                                        .AgentId()
                                        .Count(MessageLimits::kRadioPayloadBytes)
                                        .Array(kInt8);
@@ -45,7 +58,7 @@ const WireLayout& WireLayoutOf<radio_message_t>() {
 template <>
 const WireLayout& WireLayoutOf<robot_fault_t>() {
   static const WireLayout layout = WireLayout(robot_fault_t::getHash())
-                                       .Fixed(kInt64 + kInt64 + kInt32)  // utime, step, robot_id
+                                       .Fixed(kInt64 + kInt64 + kInt64 + kInt32)  // utime, step, run_id, robot_id
                                        .AgentId()
                                        .String(MessageLimits::kDetailBytes);
   return layout;
@@ -54,7 +67,7 @@ const WireLayout& WireLayoutOf<robot_fault_t>() {
 template <>
 const WireLayout& WireLayoutOf<robot_poses_t>() {
   static const WireLayout layout = WireLayout(robot_poses_t::getHash())
-                                       .Fixed(kInt64 + kInt64)  // utime, step
+                                       .Fixed(kInt64 + kInt64 + kInt64)  // utime, step, run_id
                                        .Count(MessageLimits::kRobots)
                                        .Array(kDouble)  // x
                                        .Array(kDouble)  // y
@@ -68,8 +81,9 @@ template <>
 const WireLayout& WireLayoutOf<run_status_t>() {
   static const WireLayout layout =
       WireLayout(run_status_t::getHash())
-          .Fixed(kInt64 + kInt64 + kInt8 + kInt32)  // utime, step, state, num_robots
-          .Fixed(5 * kInt64)  // boundary, collision, actuator errors, obstacle collisions, rejected commands
+          .Fixed(kInt64 + kInt64 + kInt64 + kInt8 + kInt32)  // utime, step, run_id, state, num_robots
+          // boundary, collision, actuator errors, obstacle collisions, rejected commands, conflicts
+          .Fixed(6 * kInt64)
           .Count(MessageLimits::kRobots)
           .Array(kInt32)  // lost_robot_ids
           .String(MessageLimits::kDetailBytes);
@@ -79,7 +93,7 @@ const WireLayout& WireLayoutOf<run_status_t>() {
 template <>
 const WireLayout& WireLayoutOf<velocity_command_t>() {
   static const WireLayout layout = WireLayout(velocity_command_t::getHash())
-                                       .Fixed(kInt64 + kInt64 + kInt32)  // utime, step, robot_id
+                                       .Fixed(kInt64 + kInt64 + kInt64 + kInt32)  // utime, step, run_id, robot_id
                                        .AgentId()
                                        .Fixed(kDouble + kDouble + kInt8);  // v, w, done
   return layout;

@@ -23,6 +23,7 @@ import numpy as np
 from .radios import RadioMessage
 from .robot import ObstacleView, WorldSnapshot
 from .robot_agent import ControllerFault
+from .world_follower import IGNORE, NEW_STEP, WorldFollower
 
 log = logging.getLogger("dream")
 
@@ -32,6 +33,11 @@ MAX_OBSTACLES = 10000    # far beyond any config; bounds the decode of a forged 
 MAX_RADIO_PAYLOAD = 1 << 16
 _RADIO_CHANNEL = re.compile(r"DREAM_RADIO_([0-9]{1,6})$")
 _FINISHED, _ABORTED = 2, 3
+# Byte offsets after the 8-byte fingerprint (lcmtypes/dream/*.lcm): utime, step, run_id first.
+_POSES_COUNT_AT = 8 + 24
+_OBSTACLES_COUNT_AT = 8 + 24
+_RADIO_COUNT_AT = 8 + 36        # ... sender_id (int32), agent_id (int64), payload_size
+_STATUS_COUNT_AT = 8 + 29 + 48  # ... state, num_robots, six int64 counts, num_lost
 
 
 def _types():
@@ -61,12 +67,22 @@ def _count_field(data, offset, size_per_item, fixed_size, limit, what):
     return count
 
 
+def _status_bounds(data):
+    """run_status_t's lost-robot count and detail length, checked against the bytes first."""
+    count = _count_field(data, _STATUS_COUNT_AT, None, 0, MAX_ROBOTS, "run_status_t")
+    detail_at = _STATUS_COUNT_AT + 4 + 4 * count
+    if len(data) < detail_at + 4:
+        raise ValueError(f"{len(data)} bytes: too short for a run_status_t of {count} lost robots")
+    (length,) = struct.unpack_from(">i", data, detail_at)
+    if length < 1 or len(data) != detail_at + 4 + length:
+        raise ValueError(f"run_status_t detail length {length} does not fit its {len(data)} bytes")
+
+
 class _RobotSlot:
     def __init__(self, agent):
         self.agent = agent
         self.command_channel = f"DREAM_CMD_{agent.id}"
         self.radio_channel = f"DREAM_RADIO_{agent.id}"
-        self.answered_step = -1
         self.last_command = None
         self.last_radio = None
         self.fault = None
@@ -87,7 +103,10 @@ class AgentHost:
         self.agent_id = int(agent_id)
         self.num_robots = int(num_robots)
         self.robots = [_RobotSlot(agent) for agent in agents]
+        self.follower = WorldFollower()
         self.obstacles = []
+        self._obstacles_run_id = 0
+        self._radio_before_joining = []
         self.world_finished = False
         self.end_detail = ""
         self.last_step_answered = -1
@@ -117,8 +136,12 @@ class AgentHost:
             log.warning("%s: dropped bad message #%d: %s", channel, count, reason)
 
     def _on_obstacles(self, channel, data):
-        _count_field(data, 8 + 16, 52, 8 + 20, MAX_OBSTACLES, "obstacles_t")
+        _count_field(data, _OBSTACLES_COUNT_AT, 52, _OBSTACLES_COUNT_AT + 4, MAX_OBSTACLES, "obstacles_t")
         message = self._obstacles_t.decode(data)
+        # Step 0's obstacles come before the first DREAM_POSES: kept, dropped on joining if of another run.
+        if self.follower.joined and not self.follower.in_run(message.run_id):
+            raise ValueError("obstacles of another run")
+        self._obstacles_run_id = message.run_id
         views = []
         for o in message.obstacles:
             values = (o.center_x, o.center_y, o.width, o.height, o.vx, o.vy)
@@ -130,25 +153,41 @@ class AgentHost:
 
     def _on_radio(self, channel, data):
         match = _RADIO_CHANNEL.match(channel)
-        _count_field(data, 8 + 28, 1, 8 + 32, MAX_RADIO_PAYLOAD, "radio_message_t")
+        _count_field(data, _RADIO_COUNT_AT, 1, _RADIO_COUNT_AT + 4, MAX_RADIO_PAYLOAD, "radio_message_t")
         message = self._radio_message_t.decode(data)
         if match is None or int(match.group(1)) != message.sender_id:
             raise ValueError("radio message does not match its channel")
+        if not self.follower.joined:
+            # A neighbour's answer to step 0 may come first; bounded.
+            if len(self._radio_before_joining) >= 2 * MAX_ROBOTS:
+                raise ValueError("radio message before the world's first step, beyond the queue's bound")
+            self._radio_before_joining.append((channel, message))
+            return
+        if not self.follower.in_run(message.run_id):
+            raise ValueError("radio message of another run")
+        self._deliver(message)
+
+    def _deliver(self, message):
         if not 0 <= message.sender_id < self.num_robots:
             raise ValueError(f"sender {message.sender_id} is not a robot of this run (0..{self.num_robots - 1})")
+        # Sent while answering step k, so heard at k or k + 1; a later step is a forgery that
+        # would shadow the sender's real messages in the mailboxes.
+        if not 0 <= message.step <= self.follower.step + 1:
+            raise ValueError(f"radio message sent at step {message.step} while the world is at step "
+                             f"{self.follower.step}")
         heard = RadioMessage(message.sender_id, message.step, bytes(message.payload))
         for robot in self.robots:
             robot.agent.receive(heard)
 
     def _on_status(self, channel, data):
+        _status_bounds(data)
         message = self._run_status_t.decode(data)
-        if message.state in (_FINISHED, _ABORTED):
+        if message.state in (_FINISHED, _ABORTED) and self.follower.ends_run(message.run_id, message.step):
             self.world_finished = True
             self.end_detail = message.detail
 
     def _on_poses(self, channel, data):
-        self.poses_seen += 1
-        n = _count_field(data, 8 + 16, 40, 8 + 20, MAX_ROBOTS, "robot_poses_t")
+        n = _count_field(data, _POSES_COUNT_AT, 40, _POSES_COUNT_AT + 4, MAX_ROBOTS, "robot_poses_t")
         poses = self._robot_poses_t.decode(data)
         if poses.step < 0:
             raise ValueError(f"step {poses.step} is negative")
@@ -156,6 +195,21 @@ class AgentHost:
         velocities = np.column_stack((poses.v, poses.w)) if n else np.zeros((0, 2))
         if not (np.all(np.isfinite(pose_array)) and np.all(np.isfinite(velocities))):
             raise ValueError("non-finite pose or velocity")
+        joining = not self.follower.joined
+        decision = self.follower.on_poses(poses.run_id, poses.step)
+        if decision == IGNORE:
+            return
+        self.poses_seen += 1  # only the followed run's steps keep this host waiting
+        if joining:
+            if self._obstacles_run_id != poses.run_id:
+                self.obstacles = []
+            queued, self._radio_before_joining = self._radio_before_joining, []
+            for radio_channel, radio in queued:
+                if radio.run_id == poses.run_id:
+                    try:
+                        self._deliver(radio)
+                    except ValueError as error:
+                        self._report_bad(radio_channel, str(error))
         snapshot = WorldSnapshot(poses.step, pose_array, velocities, self.obstacles)
         for robot in self.robots:
             if robot.fault is not None:
@@ -164,10 +218,9 @@ class AgentHost:
                 self._report_bad(channel, f"robot {robot.agent.id} is not in this run: "
                                           f"DREAM_POSES carries {n} robots")
                 continue
-            # The world only moves forward: a step just behind ours is a late duplicate.
-            if poses.step == robot.answered_step - 1:
+            if decision == NEW_STEP and not self._answer(robot, poses, snapshot):
                 continue
-            if poses.step != robot.answered_step and not self._answer(robot, poses, snapshot):
+            if robot.last_command is None:
                 continue
             if robot.last_radio is not None:
                 self.bus.publish(robot.radio_channel, robot.last_radio)
@@ -181,19 +234,18 @@ class AgentHost:
             self._fail(robot, poses, str(fault))
             return False
         command = self._velocity_command_t()
-        command.utime, command.step = poses.utime, poses.step
+        command.utime, command.step, command.run_id = poses.utime, poses.step, poses.run_id
         command.robot_id, command.agent_id = robot.agent.id, self.agent_id
         command.v, command.w, command.done = float(output.v), float(output.w), bool(output.done)
         robot.last_command = command.encode()
         robot.last_radio = None
         if output.broadcast is not None:
             radio = self._radio_message_t()
-            radio.utime, radio.step = poses.utime, poses.step
+            radio.utime, radio.step, radio.run_id = poses.utime, poses.step, poses.run_id
             radio.sender_id, radio.agent_id = robot.agent.id, self.agent_id
             radio.payload = bytes(output.broadcast)
             radio.payload_size = len(radio.payload)
             robot.last_radio = radio.encode()
-        robot.answered_step = poses.step
         self.last_step_answered = max(self.last_step_answered, poses.step)
         return True
 
@@ -201,7 +253,7 @@ class AgentHost:
         robot.fault = detail
         log.error("robot %d stops at step %d: its controller failed: %s", robot.agent.id, poses.step, detail)
         fault = self._robot_fault_t()
-        fault.utime, fault.step = poses.utime, poses.step
+        fault.utime, fault.step, fault.run_id = poses.utime, poses.step, poses.run_id
         fault.robot_id, fault.agent_id = robot.agent.id, self.agent_id
         fault.detail = detail
         self.bus.publish(f"DREAM_FAULT_{robot.agent.id}", fault.encode())

@@ -70,9 +70,12 @@ const CountingRobot& Counting(const AgentHost& host, size_t i) {
   return static_cast<const CountingRobot&>(host.agent(i).robot());
 }
 
-robot_poses_t Poses(int64_t step, int num_robots) {
+constexpr int64_t kRunId = 0x7e57;
+
+robot_poses_t Poses(int64_t step, int num_robots, int64_t run_id = kRunId) {
   robot_poses_t poses{};
   poses.step = step;
+  poses.run_id = run_id;
   poses.utime = step * 33000;
   poses.num_robots = num_robots;
   for (int i = 0; i < num_robots; ++i) {
@@ -191,6 +194,7 @@ TEST_F(AgentHostTest, GraphRadioDoesNotHearUnlinkedSenders) {
 radio_message_t UndecodableRadioMessage(int sender_id) {
   radio_message_t message{};
   message.step = 1;
+  message.run_id = kRunId;
   message.sender_id = sender_id;
   message.payload = {1, 2};
   message.payload_size = 2;
@@ -335,6 +339,41 @@ TEST_F(AgentHostTest, MalformedPosesAndMissingRobotsAreCountedNotFatal) {
   Drain();
   EXPECT_EQ(calls, 0);
   EXPECT_EQ(host.bad_messages().count(lcm::kPosesChannel), 2);
+}
+
+TEST_F(AgentHostTest, AForgedFarStepOrAnotherRunsFinishNeitherFreezesNorEndsTheRobots) {
+  int calls = 0;
+  std::vector<std::unique_ptr<RobotAgent>> agents;
+  agents.push_back(MakeAgent(0, &calls));
+  AgentHost host(bus_, std::move(agents), 9);
+  lcm::Publish(bus_, lcm::kPosesChannel, Poses(1, 2));
+  lcm::Publish(bus_, lcm::kPosesChannel, Poses(int64_t{1} << 40, 2));  // forged: would freeze the Timer
+  lcm::Publish(bus_, lcm::kPosesChannel, Poses(2, 2, /*run_id=*/0xbad));
+  run_status_t finished{};
+  finished.run_id = 0xbad;
+  finished.step = 2;
+  finished.state = run_status_t::FINISHED;
+  lcm::Publish(bus_, lcm::kStatusChannel, finished);
+  lcm::Publish(bus_, lcm::kPosesChannel, Poses(2, 2));
+  Drain();
+  EXPECT_EQ(calls, 2);  // steps 1 and 2 of the run joined
+  ASSERT_EQ(commands_.size(), 2U);
+  EXPECT_EQ(commands_[1].step, 2);
+  EXPECT_EQ(commands_[1].run_id, kRunId);
+  EXPECT_FALSE(host.world_finished());
+  EXPECT_EQ(host.follower().other_runs(), std::set<int64_t>{0xbad});
+  // A radio message from the future would shadow the sender's real ones.
+  radio_message_t future{};
+  future.run_id = kRunId;
+  future.step = 1000;
+  future.sender_id = 1;
+  lcm::Publish(bus_, lcm::RadioChannel(1), future);
+  Drain();
+  EXPECT_EQ(host.bad_messages().count(lcm::RadioChannel(1)), 1);
+  finished.run_id = kRunId;
+  lcm::Publish(bus_, lcm::kStatusChannel, finished);
+  Drain();
+  EXPECT_TRUE(host.world_finished());
 }
 
 TEST(ControllerFactoryTest, UnknownKindsAndBadSectionsAreClearErrors) {

@@ -38,10 +38,11 @@ NAN_AT_STEP = 20
 STEPS = 150
 
 
-def command(dream, step, robot_id, v, w=0.0, agent_id=OUR_AGENT_ID):
+def command(dream, step, run_id, robot_id, v, w=0.0, agent_id=OUR_AGENT_ID):
     message = dream.velocity_command_t()
     message.utime = step * 33000
     message.step = step
+    message.run_id = run_id
     message.robot_id = robot_id
     message.agent_id = agent_id
     message.v = v
@@ -50,17 +51,17 @@ def command(dream, step, robot_id, v, w=0.0, agent_id=OUR_AGENT_ID):
     return message.encode()
 
 
-def inject(bus, dream, step):
+def inject(bus, dream, step, run_id):
     """Sends every foreign message once; returns {channel: what} the sim must count as bad."""
     poses = dream.robot_poses_t()
     poses.num_robots = 1
     poses.x, poses.y, poses.theta, poses.v, poses.w = [0.0], [0.0], [0.0], [0.0], [0.0]
     bus.publish("DREAM_CMD_3", b"\xde\xad\xbe\xef not an LCM message at all")
     bus.publish("DREAM_CMD_x", poses.encode())
-    bus.publish("DREAM_CMD_99", command(dream, step, 99, 0.1))
-    bus.publish("DREAM_CMD_5", command(dream, step, 4, 0.1))
-    bus.publish("DREAM_CMD_3", command(dream, step, 3, 0.1, agent_id=STRANGER_AGENT_ID))
-    bus.publish("DREAM_CMD_4", command(dream, step, 4, 0.1)[:20])
+    bus.publish("DREAM_CMD_99", command(dream, step, run_id, 99, 0.1))
+    bus.publish("DREAM_CMD_5", command(dream, step, run_id, 4, 0.1))
+    bus.publish("DREAM_CMD_3", command(dream, step, run_id, 3, 0.1, agent_id=STRANGER_AGENT_ID))
+    bus.publish("DREAM_CMD_4", command(dream, step, run_id, 4, 0.1)[:20])
     bus.publish("DREAM_CMD_6", b"")
     bus.publish("DREAM_POSES", b"\x00" * 40)
     bus.publish("DREAM_STATUS", os.urandom(64))
@@ -97,14 +98,14 @@ def drive_robot_2(ctx, bus, dream, sim):
         except Exception:
             continue  # our own garbage
         if poses.step == INJECT_AT_STEP and not injected:
-            bad_channels = inject(bus, dream, poses.step)
+            bad_channels = inject(bus, dream, poses.step, poses.run_id)
             injected = True
         if poses.step == NAN_AT_STEP:
             if not nan_sent:
-                bus.publish("DREAM_CMD_2", command(dream, poses.step, 2, math.nan))
+                bus.publish("DREAM_CMD_2", command(dream, poses.step, poses.run_id, 2, math.nan))
                 nan_sent = True
             continue
-        bus.publish("DREAM_CMD_2", command(dream, poses.step, 2, 0.02))
+        bus.publish("DREAM_CMD_2", command(dream, poses.step, poses.run_id, 2, 0.02))
     check(injected and nan_sent, f"the run ended before step {NAN_AT_STEP}: nothing was injected")
     return bad_channels
 

@@ -32,28 +32,31 @@ FORGER_AGENT_ID = 0x0BADC0DE0BADC0DE
 FOREIGN_SENDERS = range(1000, 1600)
 
 
-def forged_messages(dream):
-    """(channel, bytes) of every forgery."""
+def forged_messages(dream, run_id):
+    """(channel, bytes) of every forgery, in the run `run_id` (copied from the bus, as a forger would)."""
     def fingerprint(kind):
         return kind._get_packed_fingerprint()
 
-    poses = fingerprint(dream.robot_poses_t) + struct.pack(">qqi", 0, 5, 1 << 28) + bytes(20)
-    status = (fingerprint(dream.run_status_t) + struct.pack(">qqbi", 0, 5, 1, 8) + bytes(40) +
+    # The issue's 48-byte DREAM_POSES with num_robots 2^28 (the run id now inside it).
+    poses = fingerprint(dream.robot_poses_t) + struct.pack(">qqqi", 0, 5, run_id, 1 << 28) + bytes(12)
+    status = (fingerprint(dream.run_status_t) + struct.pack(">qqqbi", 0, 5, run_id, 1, 8) + bytes(48) +
               struct.pack(">i", 1 << 28) + bytes(6))
-    check(len(poses) == 48 and len(status) == 79, "internal: the issue's datagram sizes")
-    obstacles_negative = fingerprint(dream.obstacles_t) + struct.pack(">qqi", 0, 5, -1)
+    check(len(poses) == 48 and len(status) == 95, "internal: the forged datagram sizes")
+    obstacles_negative = fingerprint(dream.obstacles_t) + struct.pack(">qqqi", 0, 5, run_id, -1)
     # 52 bytes per obstacle: 52 * 0x4EC4EC5 = 2^32 + 4, so a 32-bit size would say "4 bytes".
-    obstacles_wrapping = fingerprint(dream.obstacles_t) + struct.pack(">qqi", 0, 5, 0x4EC4EC5) + bytes(4)
-    radio = fingerprint(dream.radio_message_t) + struct.pack(">qqiqi", 0, 5, 3, FORGER_AGENT_ID, 1 << 28) + bytes(16)
-    fault = fingerprint(dream.robot_fault_t) + struct.pack(">qqiqi", 0, 5, 1, FORGER_AGENT_ID, 1 << 28) + b"x" * 8
+    obstacles_wrapping = fingerprint(dream.obstacles_t) + struct.pack(">qqqi", 0, 5, run_id, 0x4EC4EC5) + bytes(4)
+    radio = (fingerprint(dream.radio_message_t) + struct.pack(">qqqiqi", 0, 5, run_id, 3, FORGER_AGENT_ID, 1 << 28) +
+             bytes(16))
+    fault = (fingerprint(dream.robot_fault_t) + struct.pack(">qqqiqi", 0, 5, run_id, 1, FORGER_AGENT_ID, 1 << 28) +
+             b"x" * 8)
     command = dream.velocity_command_t()
-    command.step, command.robot_id, command.agent_id, command.v = 5, 1, FORGER_AGENT_ID, 0.1
+    command.step, command.run_id, command.robot_id, command.agent_id, command.v = 5, run_id, 1, FORGER_AGENT_ID, 0.1
     messages = [("DREAM_POSES", poses), ("DREAM_STATUS", status), ("DREAM_OBSTACLES", obstacles_negative),
                 ("DREAM_OBSTACLES", obstacles_wrapping), ("DREAM_RADIO_3", radio), ("DREAM_FAULT_1", fault),
                 ("DREAM_CMD_1", command.encode()[:40])]
     for sender in FOREIGN_SENDERS:
         foreign = dream.radio_message_t()
-        foreign.step, foreign.sender_id, foreign.agent_id = 5, sender, FORGER_AGENT_ID
+        foreign.step, foreign.run_id, foreign.sender_id, foreign.agent_id = 5, run_id, sender, FORGER_AGENT_ID
         foreign.payload, foreign.payload_size = b"12345678", 8
         messages.append((f"DREAM_RADIO_{sender}", foreign.encode()))
     return messages
@@ -69,12 +72,13 @@ def inject_while_running(bus, dream, launch):
         if received is None or received[0] != "DREAM_POSES":
             continue
         try:
-            step = dream.robot_poses_t.decode(received[1]).step
+            poses = dream.robot_poses_t.decode(received[1])
+            step, run_id = poses.step, poses.run_id
         except Exception:
             continue  # our own forgery coming back
         due = [target for target in INJECT_AT_STEPS if target not in rounds and target <= step]
         if due:
-            for channel, payload in forged_messages(dream):
+            for channel, payload in forged_messages(dream, run_id):
                 bus.publish(channel, payload)
             rounds.update(due[:1])
     return len(rounds)

@@ -28,6 +28,7 @@ class ScriptedAgent {
     velocity_command_t command{};
     command.utime = poses.utime;
     command.step = poses.step;
+    command.run_id = poses.run_id;
     command.robot_id = robot_id_;
     command.agent_id = agent_id_;
     if (decide_(poses, &command)) lcm::Publish(bus_, lcm::CommandChannel(robot_id_), command);

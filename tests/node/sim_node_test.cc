@@ -7,7 +7,12 @@
 #include <memory>
 #include <sstream>
 
+#include "dream/applied_commands_t.hpp"
+#include "dream/lcm/channels.h"
 #include "dream/lcm/lcm_bus.h"
+#include "dream/lcm/lcm_typed.h"
+#include "dream/lcm/log_reader.h"
+#include "dream/sim/run_recorder.h"
 #include "dream/sim/progress_reporter.h"
 #include "dream/robot_fault_t.hpp"
 #include "dream/run_status_t.hpp"
@@ -131,6 +136,96 @@ TEST_F(SimNodeTest, SecondAgentForARobotIsRefusedAndTheFirstKeepsIt) {
   EXPECT_NEAR(world_.poses()[0].x_m, -1.0 + 10 * 0.033 * 0.1, 1e-12);
 }
 
+TEST_F(SimNodeTest, EveryWorldMessageCarriesTheRunsIdAndCommandsOfAnotherRunAreRefused) {
+  std::set<int64_t> run_ids;
+  AddAgent(0, [&run_ids](const robot_poses_t& poses, velocity_command_t* command) {
+    run_ids.insert(poses.run_id);
+    command->v = 0.1;
+    return true;
+  });
+  // Robot 1's agent answers a world that is not this one: it never drives robot 1.
+  AddAgent(1, [](const robot_poses_t&, velocity_command_t* command) {
+    command->run_id = 0x5ec0d;
+    command->v = 0.2;
+    return true;
+  });
+  AddAgent(2, Forward());
+  SimNodeOptions options = FastOptions(10);
+  options.start_timeout_s = 0.2;
+  const RunOutcome outcome = Run(options);
+  EXPECT_EQ(outcome.end, RunOutcome::End::kStartTimeout);
+  ASSERT_EQ(run_ids.size(), 1U);
+  EXPECT_EQ(*run_ids.begin(), outcome.run_id);
+  EXPECT_NE(outcome.run_id, 0);
+  EXPECT_GE(outcome.rejected_commands, 1);
+  EXPECT_EQ(outcome.other_worlds, std::set<int64_t>{0x5ec0d});
+}
+
+TEST_F(SimNodeTest, ASecondWorldsStatusOnTheBusIsReported) {
+  AddAgent(0, [this](const robot_poses_t& poses, velocity_command_t* command) {
+    if (poses.step == 2) {
+      run_status_t other{};
+      other.run_id = 0x0e15e;
+      other.state = run_status_t::RUNNING;
+      other.detail = "another world";
+      lcm::Publish(bus_, lcm::kStatusChannel, other);
+    }
+    command->v = 0.1;
+    return true;
+  });
+  AddAgent(1, Forward());
+  AddAgent(2, Forward());
+  const RunOutcome outcome = Run(FastOptions(5));
+  EXPECT_EQ(outcome.end, RunOutcome::End::kFinished);
+  EXPECT_EQ(outcome.other_worlds, std::set<int64_t>{0x0e15e});
+}
+
+TEST_F(SimNodeTest, TwoDifferentCommandsForOneRobotAndStepAreAConflictTheFirstIsAppliedAndLogged) {
+  // Agent 100 drives robot 0; at step 3 a copy of its agent id (as a forger
+  // reading the bus would send) commands robot 0 backwards for the same step.
+  AddAgent(0, [this](const robot_poses_t& poses, velocity_command_t* command) {
+    command->v = 0.1;
+    if (poses.step == 3) {
+      velocity_command_t forged = *command;
+      forged.v = -0.2;
+      lcm::Publish(bus_, lcm::kCommandChannelPrefix + std::string("0"), *command);
+      lcm::Publish(bus_, lcm::kCommandChannelPrefix + std::string("0"), forged);
+      lcm::Publish(bus_, lcm::kCommandChannelPrefix + std::string("0"), *command);  // a resend: not a conflict
+      return false;
+    }
+    return true;
+  });
+  AddAgent(1, Forward());
+  AddAgent(2, Forward());
+  const std::string log_path = ::testing::TempDir() + "/conflict.lcmlog";
+  RunOutcome outcome;
+  {
+    RunRecorder recorder(log_path);
+    SimNode node(bus_, world_, &recorder, FastOptions(6));
+    std::atomic<bool> stop{false};
+    outcome = node.Run(stop);
+    recorder.Close();
+  }
+  EXPECT_EQ(outcome.end, RunOutcome::End::kFinished);
+  EXPECT_EQ(outcome.command_conflicts, 1);
+  EXPECT_EQ(outcome.rejected_commands, 1);
+  EXPECT_NEAR(world_.poses()[0].x_m, -1.0 + 6 * 0.033 * 0.1, 1e-12);  // the first command drove it
+  std::vector<applied_commands_t> applied;
+  for (const lcm::LogRecord& record : lcm::LogReader::ReadAll(log_path)) {
+    if (record.channel != lcm::kAppliedChannel) continue;
+    applied_commands_t message;
+    ASSERT_TRUE(lcm::Decode(record.data.data(), static_cast<int>(record.data.size()), &message));
+    applied.push_back(message);
+  }
+  ASSERT_EQ(applied.size(), 6U);  // one per step taken
+  EXPECT_EQ(applied[3].step, 3);
+  EXPECT_EQ(applied[3].run_id, outcome.run_id);
+  EXPECT_EQ(applied[3].applied_agent_id, (std::vector<int64_t>{100, 101, 102}));
+  EXPECT_DOUBLE_EQ(applied[3].commanded_v[0], 0.1);
+  EXPECT_EQ(applied[3].conflicts, (std::vector<int32_t>{1, 0, 0}));
+  EXPECT_EQ(applied[2].conflicts, (std::vector<int32_t>{0, 0, 0}));
+}
+
 TEST_F(SimNodeTest, SilentAgentIsMarkedLostItsRobotStopsAndItRejoins) {
   AddAgent(0, Forward());
   AddAgent(1, [](const robot_poses_t& poses, velocity_command_t* command) {
@@ -154,8 +249,9 @@ TEST_F(SimNodeTest, SilentAgentIsMarkedLostItsRobotStopsAndItRejoins) {
   EXPECT_TRUE(lost_per_step.back().empty());  // back by the end
 }
 
-robot_fault_t Fault(int robot_id, int64_t agent_id, const std::string& detail) {
+robot_fault_t Fault(int robot_id, int64_t agent_id, const std::string& detail, int64_t run_id) {
   robot_fault_t fault{};
+  fault.run_id = run_id;
   fault.robot_id = robot_id;
   fault.agent_id = agent_id;
   fault.detail = detail;
@@ -168,7 +264,7 @@ TEST_F(SimNodeTest, FaultFromTheRobotsAgentLosesThatRobotAtOnceAndTheRunGoesOn) 
   AddAgent(1, [this](const robot_poses_t& poses, velocity_command_t* command) {
     command->v = 0.1;
     if (poses.step < 5) return true;
-    if (poses.step == 5) lcm::Publish(bus_, "DREAM_FAULT_1", Fault(1, 101, "my_robot.py:12: in update: KeyError: 'x'"));
+    if (poses.step == 5) lcm::Publish(bus_, "DREAM_FAULT_1", Fault(1, 101, "my_robot.py:12: in update: KeyError: 'x'", poses.run_id));
     return false;
   });
   AddAgent(2, Forward());
@@ -188,9 +284,10 @@ TEST_F(SimNodeTest, ForgedFaultsAreCountedAndChangeNothing) {
   AddAgent(0, [this](const robot_poses_t& poses, velocity_command_t* command) {
     command->v = 0.1;
     if (poses.step == 3) {
-      lcm::Publish(bus_, "DREAM_FAULT_1", Fault(1, 999, "not robot 1's agent"));
-      lcm::Publish(bus_, "DREAM_FAULT_2", Fault(1, 101, "channel and payload disagree"));
-      lcm::Publish(bus_, "DREAM_FAULT_7", Fault(7, 107, "no robot 7 in this run"));
+      lcm::Publish(bus_, "DREAM_FAULT_1", Fault(1, 999, "not robot 1's agent", poses.run_id));
+      lcm::Publish(bus_, "DREAM_FAULT_2", Fault(1, 101, "channel and payload disagree", poses.run_id));
+      lcm::Publish(bus_, "DREAM_FAULT_7", Fault(7, 107, "no robot 7 in this run", poses.run_id));
+      lcm::Publish(bus_, "DREAM_FAULT_1", Fault(1, 101, "robot 1's agent, but of another run", poses.run_id + 1));
       const uint8_t garbage[] = {1, 2, 3};
       bus_.Publish("DREAM_FAULT_0", garbage, sizeof(garbage));
     }
@@ -202,7 +299,7 @@ TEST_F(SimNodeTest, ForgedFaultsAreCountedAndChangeNothing) {
   EXPECT_EQ(outcome.end, RunOutcome::End::kFinished);
   EXPECT_TRUE(outcome.robot_faults.empty());
   EXPECT_TRUE(outcome.robots_ever_lost.empty());
-  EXPECT_EQ(outcome.bad_messages.at("DREAM_FAULT_1"), 1);
+  EXPECT_EQ(outcome.bad_messages.at("DREAM_FAULT_1"), 2);
   EXPECT_EQ(outcome.bad_messages.at("DREAM_FAULT_2"), 1);
   EXPECT_EQ(outcome.bad_messages.at("DREAM_FAULT_7"), 1);
   EXPECT_EQ(outcome.bad_messages.at("DREAM_FAULT_0"), 1);

@@ -44,6 +44,7 @@ def types_for(dream):
         (re.compile(r"DREAM_OBSTACLES"), dream.obstacles_t),
         (re.compile(r"DREAM_STATUS"), dream.run_status_t),
         (re.compile(r"DREAM_CMD_[0-9]+"), dream.velocity_command_t),
+        (re.compile(r"DREAM_APPLIED"), dream.applied_commands_t),
     ]
 
 

@@ -73,9 +73,13 @@ class Counter(Robot):
         return (0.01 * self.updates, 0.0)
 
 
-def poses(step, n=2, x=None):
+RUN = 0x7e57
+OTHER_RUN = 0x0bad
+
+
+def poses(step, n=2, x=None, run_id=RUN):
     message = dream.robot_poses_t()
-    message.utime, message.step, message.num_robots = step * 33000, step, n
+    message.utime, message.step, message.run_id, message.num_robots = step * 33000, step, run_id, n
     message.x = x if x is not None else [0.1 * i for i in range(n)]
     message.y, message.theta, message.v, message.w = [0.0] * n, [0.0] * n, [0.0] * n, [0.0] * n
     return message.encode()
@@ -113,25 +117,64 @@ class AgentHostTest(unittest.TestCase):
 
     def test_forged_and_broken_messages_are_counted_and_dropped(self):
         huge = bytearray(poses(1))
-        struct.pack_into(">i", huge, 8 + 16, 1 << 28)  # num_robots 2^28 in a 100-byte datagram
+        struct.pack_into(">i", huge, 8 + 24, 1 << 28)  # num_robots 2^28 in a 100-byte datagram
         self.bus.deliver("DREAM_POSES", bytes(huge))
         negative = bytearray(poses(1))
-        struct.pack_into(">i", negative, 8 + 16, -5)
+        struct.pack_into(">i", negative, 8 + 24, -5)
         self.bus.deliver("DREAM_POSES", bytes(negative))
         self.bus.deliver("DREAM_POSES", poses(1, x=[float("nan"), 0.0]))
         self.bus.deliver("DREAM_POSES", b"\x00" * 3)
         self.bus.deliver("DREAM_OBSTACLES", b"garbage")
+        self.assertEqual(self.bus.take(), [])
+        self.assertEqual(self.host.bad_messages, {"DREAM_POSES": 4, "DREAM_OBSTACLES": 1})
+        self.bus.deliver("DREAM_POSES", poses(1))  # the run goes on
+        self.assertEqual(len(self.commands(self.bus.take())), 2)
         radio = dream.radio_message_t()
-        radio.sender_id, radio.payload, radio.payload_size = 5, b"\x01", 1
+        radio.run_id, radio.sender_id, radio.payload, radio.payload_size = RUN, 5, b"\x01", 1
         self.bus.deliver("DREAM_RADIO_4", radio.encode())  # sender 5 on robot 4's channel
         radio.sender_id = 999999
         self.bus.deliver("DREAM_RADIO_999999", radio.encode())  # no such robot in this run
-        self.assertEqual(self.bus.take(), [])
-        self.assertEqual(self.host.bad_messages,
-                         {"DREAM_POSES": 4, "DREAM_OBSTACLES": 1, "DREAM_RADIO_4": 1, "DREAM_RADIO_999999": 1})
+        self.assertEqual(self.host.bad_messages["DREAM_RADIO_4"], 1)
+        self.assertEqual(self.host.bad_messages["DREAM_RADIO_999999"], 1)
         self.assertEqual([len(agent.mailbox._by_sender) for agent in self.agents], [0, 0])  # nothing stored
-        self.bus.deliver("DREAM_POSES", poses(1))  # the run goes on
-        self.assertEqual(len(self.commands(self.bus.take())), 2)
+
+    def test_the_host_follows_the_run_it_joined_and_only_its_next_steps(self):
+        self.bus.deliver("DREAM_POSES", poses(1))
+        self.bus.take()
+        self.bus.deliver("DREAM_POSES", poses(2, run_id=OTHER_RUN))  # a second world on the URL
+        self.bus.deliver("DREAM_POSES", poses(1 << 40))               # a forged step far ahead
+        self.bus.deliver("DREAM_POSES", poses(0))                     # or behind
+        self.assertEqual(self.bus.take(), [])
+        self.assertEqual(self.host.follower.other_runs, {OTHER_RUN})
+        self.bus.deliver("DREAM_POSES", poses(2))  # the world's next step is still answered
+        self.assertEqual([c.step for c in self.commands(self.bus.take()).values()], [2, 2])
+        self.assertEqual(self.agents[0].robot.updates, 2)
+        finished = dream.run_status_t()
+        finished.run_id, finished.step, finished.state, finished.detail = OTHER_RUN, 2, 2, "forged"
+        self.bus.deliver("DREAM_STATUS", finished.encode())
+        self.assertFalse(self.host.world_finished)  # another run's FINISHED does not end ours
+        finished.run_id = RUN
+        self.bus.deliver("DREAM_STATUS", finished.encode())
+        self.assertTrue(self.host.world_finished)
+
+    def test_a_far_jump_is_followed_once_the_next_step_confirms_it(self):
+        self.bus.deliver("DREAM_POSES", poses(1))
+        self.bus.deliver("DREAM_POSES", poses(500))
+        self.bus.take()
+        self.assertEqual(self.agents[0].robot.updates, 1)
+        self.bus.deliver("DREAM_POSES", poses(501))
+        self.assertEqual([c.step for c in self.commands(self.bus.take()).values()], [501, 501])
+
+    def test_radio_from_the_future_or_another_run_is_dropped(self):
+        self.bus.deliver("DREAM_POSES", poses(1))
+        self.bus.take()
+        radio = dream.radio_message_t()
+        radio.run_id, radio.step, radio.sender_id, radio.payload, radio.payload_size = RUN, 1 << 40, 1, b"\x01", 1
+        self.bus.deliver("DREAM_RADIO_1", radio.encode())
+        radio.step, radio.run_id = 1, OTHER_RUN
+        self.bus.deliver("DREAM_RADIO_1", radio.encode())
+        self.assertEqual(self.host.bad_messages["DREAM_RADIO_1"], 2)
+        self.assertEqual([len(agent.mailbox._by_sender) for agent in self.agents], [0, 0])
 
     def test_a_robot_not_in_the_run_is_not_answered(self):
         self.bus.deliver("DREAM_POSES", poses(1, n=1))
@@ -152,7 +195,9 @@ class AgentHostTest(unittest.TestCase):
         self.assertEqual(list(self.host.faults()), [1])
 
     def test_the_world_ending_the_run_is_noticed(self):
+        self.bus.deliver("DREAM_POSES", poses(1))
         status = dream.run_status_t()
+        status.run_id, status.step = RUN, 1
         status.state, status.detail = dream.run_status_t.FINISHED, "every robot reported done"
         self.bus.deliver("DREAM_STATUS", status.encode())
         self.assertTrue(self.host.world_finished)

@@ -11,6 +11,7 @@
 #include "dream/lcm/message_limits.h"
 #include "dream/lcm/wire_layout_of.h"
 #include "dream/obstacles_t.hpp"
+#include "dream/applied_commands_t.hpp"
 #include "dream/radio_message_t.hpp"
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
@@ -27,8 +28,8 @@ using lcm::MessageLimits;
 // Where each sample's count or string length sits: after the 8-byte
 // fingerprint and the fixed fields before it.
 const std::map<std::string, size_t> kCountOffset = {
-    {"robot_poses_t", 8 + 16},   {"obstacles_t", 8 + 16},   {"run_status_t", 8 + 8 + 8 + 1 + 4 + 40},
-    {"radio_message_t", 8 + 28}, {"robot_fault_t", 8 + 28},
+    {"robot_poses_t", 8 + 24},   {"obstacles_t", 8 + 24},   {"run_status_t", 8 + 8 + 8 + 8 + 1 + 4 + 48},
+    {"radio_message_t", 8 + 36}, {"robot_fault_t", 8 + 36},   {"applied_commands_t", 8 + 24},
 };
 
 // Counts an attacker would pick: huge, negative, just over the limit, and
@@ -62,6 +63,7 @@ TEST(DecoderBounds, LayoutsMatchTheGeneratedEncodings) {
   EXPECT_EQ(lcm::WireLayoutOf<velocity_command_t>().MinimumBytes(), velocity_command_t{}.getEncodedSize());
   EXPECT_EQ(lcm::WireLayoutOf<radio_message_t>().MinimumBytes(), radio_message_t{}.getEncodedSize());
   EXPECT_EQ(lcm::WireLayoutOf<robot_fault_t>().MinimumBytes(), robot_fault_t{}.getEncodedSize());
+  EXPECT_EQ(lcm::WireLayoutOf<applied_commands_t>().MinimumBytes(), applied_commands_t{}.getEncodedSize());
 }
 
 TEST(DecoderBounds, TheLargestLegalMessagesDecode) {
@@ -114,11 +116,11 @@ TEST(DecoderBounds, ForgedCountsAreRefusedWithoutLargeAllocations) {
 }
 
 TEST(DecoderBounds, TheIssuesFortyEightBytePosesDatagramIsRefused) {
-  // 8 fingerprint + 16 utime/step + 4 count (2^28) + 20 bytes of "poses".
+  // 8 fingerprint + 24 utime/step/run_id + 4 count (2^28) + 12 bytes of "poses".
   robot_poses_t empty{};
   std::vector<uint8_t> datagram = Encoded(empty);
   datagram.resize(48, 0);
-  PutBigEndian32(&datagram, 24, 1 << 28);
+  PutBigEndian32(&datagram, kCountOffset.at("robot_poses_t"), 1 << 28);
   robot_poses_t poses;
   const AllocationWatch watch;
   const std::optional<std::string> problem = lcm::DecodeProblem(datagram.data(), 48, &poses);

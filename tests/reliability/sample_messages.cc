@@ -1,6 +1,7 @@
 #include "sample_messages.h"
 
 #include "dream/lcm/lcm_typed.h"
+#include "dream/applied_commands_t.hpp"
 #include "dream/obstacles_t.hpp"
 #include "dream/radio_message_t.hpp"
 #include "dream/robot_fault_t.hpp"
@@ -11,8 +12,10 @@
 namespace dream::testing {
 
 std::vector<EncodedMessage> SampleMessages() {
+  constexpr int64_t kRunId = 0x5eed0000c0ffee;
   robot_poses_t poses{};
   poses.step = 3;
+  poses.run_id = kRunId;
   poses.num_robots = 2;
   poses.x = {0.1, -0.2};
   poses.y = {0.3, 0.4};
@@ -22,6 +25,7 @@ std::vector<EncodedMessage> SampleMessages() {
 
   obstacles_t obstacles{};
   obstacles.step = 3;
+  obstacles.run_id = kRunId;
   obstacles.num_obstacles = 2;
   obstacles.obstacles.resize(2);
   obstacles.obstacles[1].id = 1;
@@ -29,6 +33,8 @@ std::vector<EncodedMessage> SampleMessages() {
 
   run_status_t status{};
   status.step = 3;
+  status.run_id = kRunId;
+  status.command_conflicts = 2;
   status.state = run_status_t::RUNNING;
   status.num_robots = 2;
   status.num_lost = 1;
@@ -37,12 +43,14 @@ std::vector<EncodedMessage> SampleMessages() {
 
   velocity_command_t command{};
   command.step = 3;
+  command.run_id = kRunId;
   command.robot_id = 1;
   command.agent_id = 0x1234567890;
   command.v = 0.1;
 
   radio_message_t radio{};
   radio.step = 3;
+  radio.run_id = kRunId;
   radio.sender_id = 1;
   radio.agent_id = 0x1234567890;
   radio.payload = {1, 2, 3, 4, 5};
@@ -50,13 +58,24 @@ std::vector<EncodedMessage> SampleMessages() {
 
   robot_fault_t fault{};
   fault.step = 3;
+  fault.run_id = kRunId;
   fault.robot_id = 1;
   fault.agent_id = 0x1234567890;
   fault.detail = "controller.py:12: in update: ValueError: boom";
 
+  applied_commands_t applied{};
+  applied.step = 3;
+  applied.run_id = kRunId;
+  applied.num_robots = 2;
+  applied.applied_agent_id = {0x1234567890, 0};
+  applied.commanded_v = {0.1, 0.0};
+  applied.commanded_w = {-0.5, 0.0};
+  applied.conflicts = {1, 0};
+
   return {{"robot_poses_t", Encoded(poses)},     {"obstacles_t", Encoded(obstacles)},
           {"run_status_t", Encoded(status)},     {"velocity_command_t", Encoded(command)},
-          {"radio_message_t", Encoded(radio)},   {"robot_fault_t", Encoded(fault)}};
+          {"radio_message_t", Encoded(radio)},   {"robot_fault_t", Encoded(fault)},
+          {"applied_commands_t", Encoded(applied)}};
 }
 
 namespace {
@@ -76,6 +95,7 @@ const std::map<std::string, TypedDecoder>& Decoders() {
       {"robot_poses_t", DecoderOf<robot_poses_t>()},     {"obstacles_t", DecoderOf<obstacles_t>()},
       {"run_status_t", DecoderOf<run_status_t>()},       {"velocity_command_t", DecoderOf<velocity_command_t>()},
       {"radio_message_t", DecoderOf<radio_message_t>()}, {"robot_fault_t", DecoderOf<robot_fault_t>()},
+      {"applied_commands_t", DecoderOf<applied_commands_t>()},
   };
   return decoders;
 }

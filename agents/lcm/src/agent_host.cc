@@ -65,6 +65,13 @@ void AgentHost::OnObstacles(const std::string& channel, const obstacles_t& obsta
     bad_messages_.Report(channel, "inconsistent obstacles_t");
     return;
   }
+  // Step 0's obstacles come before the first DREAM_POSES: kept, and dropped
+  // on joining if they were of another run.
+  if (follower_.joined() && !follower_.InRun(obstacles.run_id)) {
+    bad_messages_.Report(channel, "obstacles of another run");
+    return;
+  }
+  obstacles_run_id_ = obstacles.run_id;
   world_.obstacles.clear();
   for (const rectangle_obstacle_t& o : obstacles.obstacles) {
     ObstacleView view{o.id, {o.center_x, o.center_y}, {o.width, o.height}, {o.vx, o.vy}};
@@ -83,15 +90,39 @@ void AgentHost::OnRadio(const std::string& channel, const radio_message_t& messa
     bad_messages_.Report(channel, "radio message does not match its channel or payload size", message.agent_id);
     return;
   }
+  if (!follower_.joined()) {
+    // Bounded: a neighbour's answer to step 0 is all that can come first.
+    if (radio_before_joining_.size() < static_cast<size_t>(2 * lcm::MessageLimits::kRobots)) {
+      radio_before_joining_.emplace_back(channel, message);
+    } else {
+      bad_messages_.Report(channel, "radio message before the world's first step, beyond the queue's bound",
+                           message.agent_id);
+    }
+    return;
+  }
+  if (!follower_.InRun(message.run_id)) {
+    bad_messages_.Report(channel, "radio message of another run", message.agent_id);
+    return;
+  }
+  Deliver(channel, message);
+}
+
+void AgentHost::Deliver(const std::string& channel, const radio_message_t& message) {
   // Every sender gets a mailbox slot in each hosted robot: only the run's
   // robots may have one, or forged ids would grow memory without bound.
-  // Before the first DREAM_POSES the run's size is unknown; the message
-  // limit still bounds it.
-  const int run_robots = saw_any_poses_ ? world_.num_robots() : lcm::MessageLimits::kRobots;
-  if (message.sender_id >= run_robots) {
+  if (message.sender_id >= world_.num_robots()) {
     bad_messages_.Report(channel,
                          "radio sender " + std::to_string(message.sender_id) + " is not a robot of this run (" +
-                             std::to_string(run_robots) + " robots)",
+                             std::to_string(world_.num_robots()) + " robots)",
+                         message.agent_id);
+    return;
+  }
+  // Sent while answering step k, so heard at k or k + 1; a later step is a
+  // forgery that would shadow the sender's real messages in the mailboxes.
+  if (message.step < 0 || message.step > follower_.step() + 1) {
+    bad_messages_.Report(channel,
+                         "radio message sent at step " + std::to_string(message.step) + " while the world is at step " +
+                             std::to_string(follower_.step()),
                          message.agent_id);
     return;
   }
@@ -119,6 +150,7 @@ void AgentHost::Answer(RobotSlot& robot, const robot_poses_t& poses) {
   velocity_command_t& command = robot.last_command;
   command.utime = poses.utime;
   command.step = poses.step;
+  command.run_id = poses.run_id;
   command.robot_id = robot.agent->id();
   command.agent_id = agent_id_;
   command.v = output.command.v_mps;
@@ -129,35 +161,52 @@ void AgentHost::Answer(RobotSlot& robot, const robot_poses_t& poses) {
     radio_message_t radio{};
     radio.utime = poses.utime;
     radio.step = poses.step;
+    radio.run_id = poses.run_id;
     radio.sender_id = robot.agent->id();
     radio.agent_id = agent_id_;
     radio.payload = output.broadcast->payload;
     radio.payload_size = static_cast<int32_t>(radio.payload.size());
     robot.last_radio = std::move(radio);
   }
-  robot.answered_step = poses.step;
   last_step_answered_ = std::max(last_step_answered_, poses.step);
 }
 
 void AgentHost::OnPoses(const std::string& channel, const robot_poses_t& poses) {
-  saw_poses_since_check_ = true;
   const auto n = static_cast<size_t>(poses.num_robots);
   if (poses.num_robots < 0 || poses.step < 0 || poses.x.size() != n || poses.v.size() != n) {
     bad_messages_.Report(channel, "inconsistent robot_poses_t (num_robots " + std::to_string(poses.num_robots) +
                                       ", step " + std::to_string(poses.step) + ")");
     return;
   }
-  world_.step = poses.step;
-  saw_any_poses_ = true;
-  world_.poses.resize(n);
-  world_.velocities.resize(n);
   for (size_t i = 0; i < n; ++i) {
-    world_.poses[i] = {poses.x[i], poses.y[i], poses.theta[i]};
-    world_.velocities[i] = {poses.v[i], poses.w[i]};
-    if (!world_.poses[i].allFinite() || !world_.velocities[i].allFinite()) {
+    const bool finite = std::isfinite(poses.x[i]) && std::isfinite(poses.y[i]) && std::isfinite(poses.theta[i]) &&
+                        std::isfinite(poses.v[i]) && std::isfinite(poses.w[i]);
+    if (!finite) {
       bad_messages_.Report(channel, "non-finite pose or velocity for robot " + std::to_string(i));
       return;
     }
+  }
+  const bool joining = !follower_.joined();
+  const WorldFollower::StepDecision decision = follower_.OnPoses(poses.run_id, poses.step);
+  if (decision == WorldFollower::StepDecision::kIgnore) return;
+  saw_poses_since_check_ = true;  // only the followed run's steps keep this host waiting
+  if (decision == WorldFollower::StepDecision::kNewStep) {
+    world_.step = poses.step;
+    saw_any_poses_ = true;
+    world_.poses.resize(n);
+    world_.velocities.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+      world_.poses[i] = {poses.x[i], poses.y[i], poses.theta[i]};
+      world_.velocities[i] = {poses.v[i], poses.w[i]};
+    }
+  }
+  if (joining) {
+    if (obstacles_run_id_ != poses.run_id) world_.obstacles.clear();
+    for (const auto& [radio_channel, radio] : radio_before_joining_) {
+      if (radio.run_id == poses.run_id) Deliver(radio_channel, radio);
+    }
+    radio_before_joining_.clear();
+    radio_before_joining_.shrink_to_fit();
   }
   for (RobotSlot& robot : robots_) {
     if (robot.agent->id() >= poses.num_robots) {
@@ -166,11 +215,7 @@ void AgentHost::OnPoses(const std::string& channel, const robot_poses_t& poses) 
                                         std::to_string(poses.num_robots) + " robots");
       continue;
     }
-    // The world only moves forward, so a step just behind ours is a late
-    // duplicate. Anything further back is authoritative: a restarted world,
-    // or recovery after a stray message with a bogus future step.
-    if (poses.step == robot.answered_step - 1) continue;
-    if (poses.step != robot.answered_step) Answer(robot, poses);
+    if (decision == WorldFollower::StepDecision::kNewStep) Answer(robot, poses);
     if (robot.last_radio) lcm::Publish(lcm_, robot.radio_channel, *robot.last_radio);
     lcm::Publish(lcm_, robot.command_channel, robot.last_command);
   }
@@ -178,7 +223,8 @@ void AgentHost::OnPoses(const std::string& channel, const robot_poses_t& poses) 
 
 void AgentHost::OnStatus(const std::string& channel, const run_status_t& status) {
   (void)channel;
-  if (status.state == run_status_t::FINISHED || status.state == run_status_t::ABORTED) {
+  const bool ending = status.state == run_status_t::FINISHED || status.state == run_status_t::ABORTED;
+  if (ending && follower_.EndsRun(status.run_id, status.step)) {
     world_finished_ = true;
     end_detail_ = status.detail;
   }

@@ -3,11 +3,14 @@
 #include <spdlog/spdlog.h>
 
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 #include <thread>
 
+#include "dream/applied_commands_t.hpp"
 #include "dream/lcm/channels.h"
 #include "dream/lcm/lcm_typed.h"
+#include "dream/lcm/run_id.h"
 #include "dream/obstacles_t.hpp"
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
@@ -25,6 +28,9 @@ constexpr int64_t kMicrosPerStep = 33000;  // 0.033 s, the Robotarium's time ste
 double SecondsBetween(std::chrono::steady_clock::time_point from, std::chrono::steady_clock::time_point to) {
   return std::chrono::duration<double>(to - from).count();
 }
+
+// Bit for bit, so a resent NaN command is the same command (and not a conflict).
+bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
 
 std::string JoinIds(const std::vector<int>& ids) {
   std::string text;
@@ -50,7 +56,8 @@ SimNode::SimNode(lcm::LcmInterface& lcm, World& world, RunRecorder* recorder, Si
       recorder_(recorder),
       options_(options),
       robots_(static_cast<size_t>(world.num_robots())),
-      state_(run_status_t::WAITING_FOR_AGENTS) {
+      state_(run_status_t::WAITING_FOR_AGENTS),
+      run_id_(lcm::NewRunId()) {
   std::string error;
   if (!options_.IsValid(&error)) throw std::invalid_argument("sim options: " + error);
   lcm::Subscribe<velocity_command_t>(
@@ -60,6 +67,10 @@ SimNode::SimNode(lcm::LcmInterface& lcm, World& world, RunRecorder* recorder, Si
   lcm::Subscribe<robot_fault_t>(
       lcm_, lcm::kFaultChannelRegex,
       [this](const std::string& channel, const robot_fault_t& fault) { OnFault(channel, fault); }, bad_messages_);
+  // Our own statuses come back too (memq, udpm loopback); another run id is a second world.
+  lcm::Subscribe<run_status_t>(
+      lcm_, lcm::kStatusChannel, [this](const std::string&, const run_status_t& status) { OnStatus(status); },
+      bad_messages_);
   if (recorder_ != nullptr) {
     lcm_.Subscribe(".*", [this](const std::string& channel, const void* data, int size) {
       OnAnyMessage(channel, data, size);
@@ -103,7 +114,34 @@ void SimNode::Reject(const std::string& channel, const std::string& reason, int6
   bad_messages_.Report(channel, "rejected command: " + reason, agent_id);
 }
 
+void SimNode::NoteOtherWorld(int64_t run_id, const std::string& seen_on) {
+  // 0 is "no run" (a message made without one), not a world.
+  if (run_id == 0 || run_id == run_id_ || other_worlds_.size() >= kMaxOtherWorlds || !other_worlds_.insert(run_id).second) return;
+  spdlog::error("another world (run {}) is on this LCM URL ({}; seen on {}) beside this one (run {}): two simulators "
+                "share the URL and agents may answer either. Stop one, or give each run its own URL",
+                lcm::RunIdText(run_id), lcm_.url(), seen_on, lcm::RunIdText(run_id_));
+}
+
+void SimNode::OnStatus(const run_status_t& status) {
+  if (status.run_id != run_id_) NoteOtherWorld(status.run_id, lcm::kStatusChannel);
+}
+
+void SimNode::Conflict(const std::string& channel, RobotSlot& robot, const velocity_command_t& command) {
+  ++command_conflicts_;
+  ++robot.conflicts;
+  Reject(channel,
+         "conflict: robot " + std::to_string(command.robot_id) + " already has a different command for step " +
+             std::to_string(command.step) + " (from agent " + std::to_string(robot.command_agent_id) +
+             "); this one from agent " + std::to_string(command.agent_id) + " is refused, the first is applied",
+         command.agent_id);
+}
+
 void SimNode::OnFault(const std::string& channel, const robot_fault_t& fault) {
+  if (fault.run_id != run_id_) {
+    NoteOtherWorld(fault.run_id, channel);
+    bad_messages_.Report(channel, "robot fault of another run " + lcm::RunIdText(fault.run_id), fault.agent_id);
+    return;
+  }
   const std::optional<int> id = lcm::RobotIdFromChannel(channel, lcm::kFaultChannelPrefix);
   if (!id || *id != fault.robot_id || *id >= world_.num_robots()) {
     bad_messages_.Report(channel,
@@ -137,6 +175,12 @@ void SimNode::OnCommand(const std::string& channel, const velocity_command_t& co
     Reject(channel, "channel name must be DREAM_CMD_<robot id>", command.agent_id);
     return;
   }
+  if (command.run_id != run_id_) {
+    NoteOtherWorld(command.run_id, channel);
+    Reject(channel, "answers run " + lcm::RunIdText(command.run_id) + ", not this run " + lcm::RunIdText(run_id_),
+           command.agent_id);
+    return;
+  }
   const int id = *channel_id;
   if (id >= world_.num_robots()) {
     Reject(channel, "robot " + std::to_string(id) + " does not exist: this run has " +
@@ -148,12 +192,33 @@ void SimNode::OnCommand(const std::string& channel, const velocity_command_t& co
     Reject(channel, "payload robot_id " + std::to_string(command.robot_id) + " does not match the channel", command.agent_id);
     return;
   }
+  // Commands answer the step the world is at: a later step was never
+  // published, and one further back is late (lockstep: already taken).
+  if (command.step > world_.step()) {
+    Reject(channel, "answers step " + std::to_string(command.step) + " but the world is at step " +
+                        std::to_string(world_.step()), command.agent_id);
+    return;
+  }
+  const bool lockstep = options_.mode == WorldMode::kLockstep;
+  if (lockstep && command.step < world_.step()) return;
   RobotSlot& robot = robots_[static_cast<size_t>(id)];
+  if (command.step < robot.command_step) return;  // real time: older than the command held
+  const bool same_step = command.step == robot.command_step && robot.command_agent_id != 0;
+  if (same_step) {
+    // The resend of the world's step gets the same answer again; anything
+    // else for this robot and step is a second sender.
+    const bool same = SameBits(command.v, robot.received_v) && SameBits(command.w, robot.received_w) &&
+                      command.done == robot.done && command.agent_id == robot.command_agent_id;
+    if (!same) Conflict(channel, robot, command);
+    return;
+  }
   if (!robot.owned || (robot.lost && robot.owner_agent_id != command.agent_id)) {
     if (robot.owned) spdlog::warn("robot {}: agent {:#x} takes over from lost agent {:#x}", id, command.agent_id, robot.owner_agent_id);
     robot.owned = true;
     robot.owner_agent_id = command.agent_id;
   } else if (robot.owner_agent_id != command.agent_id) {
+    ++command_conflicts_;
+    ++robot.conflicts;
     Reject(channel, "robot " + std::to_string(id) + " is already driven by agent " +
                         std::to_string(robot.owner_agent_id) + "; a second agent " +
                         std::to_string(command.agent_id) + " sends commands for it too. Stop one of them.", command.agent_id);
@@ -166,15 +231,11 @@ void SimNode::OnCommand(const std::string& channel, const velocity_command_t& co
     spdlog::info("robot {}: agent is back (step {})", id, world_.step());
   }
 
-  const bool lockstep = options_.mode == WorldMode::kLockstep;
-  if (lockstep && command.step < world_.step()) return;  // a late answer to a step already taken
-  if (lockstep && command.step > world_.step()) {
-    Reject(channel, "answers step " + std::to_string(command.step) + " but the world is at step " +
-                        std::to_string(world_.step()), command.agent_id);
-    return;
-  }
-  if (lockstep && robot.answered) return;  // duplicate: the agent re-answered a resent step
-
+  robot.command_step = command.step;
+  robot.command_agent_id = command.agent_id;
+  robot.conflicts = 0;
+  robot.received_v = command.v;
+  robot.received_w = command.w;
   const bool finite = std::isfinite(command.v) && std::isfinite(command.w);
   if (!finite || std::abs(command.v) > options_.max_abs_v_mps || std::abs(command.w) > options_.max_abs_w_radps) {
     Reject(channel, "absurd velocity v=" + std::to_string(command.v) + " m/s, w=" + std::to_string(command.w) +
@@ -192,6 +253,27 @@ void SimNode::OnCommand(const std::string& channel, const velocity_command_t& co
   if (!lockstep) world_.SetCommand(id, UnicycleCommand{robot.v_mps, robot.w_radps});
 }
 
+void SimNode::RecordApplied() {
+  if (recorder_ == nullptr) return;
+  applied_commands_t applied;
+  applied.utime = SimUtime();
+  applied.step = world_.step();
+  applied.run_id = run_id_;
+  applied.num_robots = world_.num_robots();
+  const bool lockstep = options_.mode == WorldMode::kLockstep;
+  for (const RobotSlot& robot : robots_) {
+    const bool driven = !robot.lost && (lockstep ? robot.answered : robot.command_agent_id != 0);
+    applied.applied_agent_id.push_back(driven ? robot.command_agent_id : 0);
+    applied.commanded_v.push_back(driven ? robot.v_mps : 0.0);
+    applied.commanded_w.push_back(driven ? robot.w_radps : 0.0);
+    applied.conflicts.push_back(robot.command_step == world_.step() ? robot.conflicts : 0);
+  }
+  const int size = applied.getEncodedSize();
+  std::vector<uint8_t> buffer(static_cast<size_t>(size));
+  applied.encode(buffer.data(), 0, size);
+  Record(lcm::kAppliedChannel, buffer.data(), size);
+}
+
 template <typename Message>
 void SimNode::PublishAndRecord(const char* channel, const Message& message, bool record) {
   const int size = message.getEncodedSize();
@@ -205,6 +287,7 @@ void SimNode::PublishStatus(int8_t state, const std::string& detail, bool record
   run_status_t status;
   status.utime = SimUtime();
   status.step = world_.step();
+  status.run_id = run_id_;
   status.state = state;
   status.num_robots = world_.num_robots();
   const ViolationCounts& counts = world_.violations();
@@ -213,6 +296,7 @@ void SimNode::PublishStatus(int8_t state, const std::string& detail, bool record
   status.actuator_errors = counts.actuator_errors;
   status.obstacle_collisions = counts.obstacle_collisions;
   status.rejected_commands = rejected_commands_;
+  status.command_conflicts = command_conflicts_;
   for (size_t i = 0; i < robots_.size(); ++i) {
     if (robots_[i].lost) status.lost_robot_ids.push_back(static_cast<int32_t>(i));
   }
@@ -225,6 +309,7 @@ void SimNode::PublishStep(bool record) {
   obstacles_t obstacles;
   obstacles.utime = SimUtime();
   obstacles.step = world_.step();
+  obstacles.run_id = run_id_;
   world_.GetObstacleStates(&obstacle_states_);
   for (const ObstacleState& obstacle : obstacle_states_) {
     rectangle_obstacle_t o;
@@ -245,6 +330,7 @@ void SimNode::PublishStep(bool record) {
   robot_poses_t poses;
   poses.utime = SimUtime();
   poses.step = world_.step();
+  poses.run_id = run_id_;
   poses.num_robots = world_.num_robots();
   for (const Pose2& pose : world_.poses()) {
     poses.x.push_back(pose.x_m);
@@ -289,6 +375,7 @@ void SimNode::MarkSilentRobotsLost(Clock::time_point now) {
 }
 
 void SimNode::AdvanceWorld() {
+  RecordApplied();
   if (options_.mode == WorldMode::kLockstep) {
     for (size_t i = 0; i < robots_.size(); ++i) {
       RobotSlot& robot = robots_[i];
@@ -336,6 +423,9 @@ RunOutcome SimNode::Finish(RunOutcome::End end, const std::string& reason) {
   outcome.steps = world_.step();
   outcome.wall_time_s = SecondsBetween(run_start_, Clock::now());
   outcome.rejected_commands = rejected_commands_;
+  outcome.command_conflicts = command_conflicts_;
+  outcome.run_id = run_id_;
+  outcome.other_worlds = other_worlds_;
   outcome.robots_ever_lost = robots_ever_lost_;
   outcome.robot_faults = robot_faults_;
   for (size_t i = 0; i < robots_.size(); ++i) {

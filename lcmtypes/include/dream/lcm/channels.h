@@ -15,6 +15,9 @@ inline constexpr const char* kPosesChannel = "DREAM_POSES";
 inline constexpr const char* kObstaclesChannel = "DREAM_OBSTACLES";
 /// Run state, violation counts, lost agents; world -> all.
 inline constexpr const char* kStatusChannel = "DREAM_STATUS";
+/// The commands the world applied at a step (applied_commands_t): recorded in
+/// the run log by the world, never published.
+inline constexpr const char* kAppliedChannel = "DREAM_APPLIED";
 /// Prefix of the per-robot command channels DREAM_CMD_<id>; agent -> world.
 inline constexpr const char* kCommandChannelPrefix = "DREAM_CMD_";
 /// LCM regex matching every command channel.

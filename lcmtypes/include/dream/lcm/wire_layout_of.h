@@ -3,6 +3,7 @@
 #include "dream/lcm/wire_layout.h"
 
 namespace dream {
+class applied_commands_t;
 class obstacles_t;
 class radio_message_t;
 class robot_fault_t;
@@ -19,6 +20,8 @@ namespace dream::lcm {
 template <typename Message>
 const WireLayout& WireLayoutOf();
 
+template <>
+const WireLayout& WireLayoutOf<applied_commands_t>();
 template <>
 const WireLayout& WireLayoutOf<obstacles_t>();
 template <>

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "dream/agents/robot_agent.h"
+#include "dream/agents/world_follower.h"
 #include "dream/agents/world_snapshot.h"
 #include "dream/lcm/bad_message_log.h"
 #include "dream/lcm/lcm_interface.h"
@@ -38,6 +39,10 @@ namespace dream::agents {
 /// payload totals once more per robot when the host is destroyed. Radio
 /// messages from senders outside the run (ids past DREAM_POSES' count) are
 /// counted as bad too, so forged senders cannot grow the mailboxes.
+///
+/// The host follows the run it joined (WorldFollower): messages of another
+/// run, steps out of sequence and radio messages from the future are ignored,
+/// so one forged datagram cannot freeze, end or jam the robots.
 class AgentHost {
  public:
   /// @param agent_id identifies this host to the world (two hosts may not
@@ -56,6 +61,7 @@ class AgentHost {
   bool world_finished() const { return world_finished_; }
   int64_t last_step_answered() const { return last_step_answered_; }
   const lcm::BadMessageLog& bad_messages() const { return bad_messages_; }
+  const WorldFollower& follower() const { return follower_; }
   const std::string& end_detail() const { return end_detail_; }
   const RobotAgent& agent(size_t i) const { return *robots_.at(i).agent; }
   /// Radio payloads hosted robot `i` (in the order given) dropped because
@@ -69,7 +75,6 @@ class AgentHost {
     std::unique_ptr<RobotAgent> agent;
     std::string command_channel;
     std::string radio_channel;
-    int64_t answered_step = -1;
     velocity_command_t last_command{};
     std::optional<radio_message_t> last_radio;
     lcm::BadMessageLog bad_radio_payloads;
@@ -80,6 +85,9 @@ class AgentHost {
   void OnStatus(const std::string& channel, const run_status_t& status);
   void OnRadio(const std::string& channel, const radio_message_t& message);
   void Answer(RobotSlot& robot, const robot_poses_t& poses);
+  /// Hands a radio message of the followed run to every hosted robot, or
+  /// counts it as bad when it was sent at a step not yet reached.
+  void Deliver(const std::string& channel, const radio_message_t& message);
   /// Logs the payloads the robot counted as bad since the last call.
   static void ReportBadRadioPayloads(RobotSlot& robot);
 
@@ -93,6 +101,11 @@ class AgentHost {
   int64_t last_step_answered_ = -1;
   bool saw_poses_since_check_ = false;
   bool saw_any_poses_ = false;  // world_ holds the run's robot count
+  WorldFollower follower_;
+  int64_t obstacles_run_id_ = 0;  // run of world_.obstacles
+  /// Radio messages heard before the first DREAM_POSES (a neighbour may
+  /// answer step 0 first); delivered on joining if of the joined run.
+  std::vector<std::pair<std::string, radio_message_t>> radio_before_joining_;
 };
 
 }  // namespace dream::agents

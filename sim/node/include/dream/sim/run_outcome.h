@@ -19,7 +19,15 @@ struct RunOutcome {
   std::string reason;                ///< one line, for humans
   int64_t steps = 0;                 ///< world steps taken
   double wall_time_s = 0.0;          ///< from the first published step to the end
-  int64_t rejected_commands = 0;     ///< absurd, unknown robot, second agent, wrong step
+  int64_t rejected_commands = 0;     ///< absurd, unknown robot, second agent, wrong step, another run
+  /// Commands for a robot and step that already had a different command (a
+  /// second sender, or a forged copy of an agent's id): refused, the first is
+  /// applied (the log's DREAM_APPLIED says which).
+  int64_t command_conflicts = 0;
+  int64_t run_id = 0;                ///< this run's identifier, in every world message
+  /// Run ids of other worlds seen publishing or commanded on the same bus
+  /// (at most SimNode::kMaxOtherWorlds): a second `dream sim` on one URL.
+  std::set<int64_t> other_worlds;
   std::set<int> robots_ever_lost;    ///< robots whose agent went silent at some point
   /// Robots whose controller failed (their agent said so on DREAM_FAULT_<id>):
   /// id -> "step k: what failed". They are lost and stopped from that step.

@@ -18,6 +18,7 @@
 namespace dream {
 class velocity_command_t;
 class robot_fault_t;
+class run_status_t;
 }
 
 namespace dream::sim {
@@ -42,6 +43,13 @@ class RunRecorder;
 /// other than the current one is rejected and counted; undecodable messages
 /// are counted per channel.
 ///
+/// Every world message carries the run's random id (run_id()); commands,
+/// radio and faults of another run are refused, and a second world seen on
+/// the bus (its DREAM_STATUS, or commands answering it) is reported in the
+/// outcome's other_worlds. Two different commands for one robot and step are
+/// a conflict: the first is applied, the rest refused and counted, and each
+/// step's applied commands are recorded on DREAM_APPLIED (applied_commands_t).
+///
 /// A run log that cannot be written (full disk, file size limit) ends the run
 /// cleanly as RunOutcome::End::kFailed, with a reason naming the step, the
 /// file and the OS error; the log keeps every whole event before the failure.
@@ -55,6 +63,11 @@ class SimNode {
   /// `lcm`, so in one process it also drives the agents sharing the bus.
   /// Sets no signal handlers: the caller sets `stop` (e.g. from SIGINT).
   RunOutcome Run(const std::atomic<bool>& stop);
+
+  /// This run's identifier: random, never 0, in every message the world sends.
+  int64_t run_id() const { return run_id_; }
+  /// Other worlds' run ids kept in the outcome, so a flood cannot grow memory.
+  static constexpr size_t kMaxOtherWorlds = 16;
 
   /// Shows the run's progress (steps/s, ETA to max_steps) on `reporter` from
   /// the first step on; null (the default): no progress output. Must outlive
@@ -72,11 +85,24 @@ class SimNode {
     bool done = false;
     double v_mps = 0.0;
     double w_radps = 0.0;
+    int64_t command_step = -1;     // step of the command held in v/w/done
+    int64_t command_agent_id = 0;  // who sent it; 0 when none (stopped)
+    int32_t conflicts = 0;         // refused different commands for command_step
+    double received_v = 0.0;       // the held command as sent (v/w are zeroed when it was absurd)
+    double received_w = 0.0;
     Clock::time_point last_heard;
   };
 
   void OnCommand(const std::string& channel, const velocity_command_t& command);
   void OnFault(const std::string& channel, const robot_fault_t& fault);
+  void OnStatus(const run_status_t& status);
+  /// Notes a run id of another world (logged once per id).
+  void NoteOtherWorld(int64_t run_id, const std::string& seen_on);
+  /// Counts a command for `robot`'s current command step that differs from
+  /// the one it holds (from whichever sender): refused, the first stays.
+  void Conflict(const std::string& channel, RobotSlot& robot, const velocity_command_t& command);
+  /// Records which commands are applied at this step (DREAM_APPLIED).
+  void RecordApplied();
   void OnAnyMessage(const std::string& channel, const void* data, int size);
   /// Writes one event to the recorder, if any; a write failure is remembered
   /// (the recorder is failed from then on) for Run() to end the run.
@@ -103,7 +129,10 @@ class SimNode {
   lcm::BadMessageLog bad_messages_;
   std::vector<RobotSlot> robots_;
   int8_t state_;
+  int64_t run_id_;
   int64_t rejected_commands_ = 0;
+  int64_t command_conflicts_ = 0;
+  std::set<int64_t> other_worlds_;
   std::set<int> robots_ever_lost_;
   std::map<int, std::string> robot_faults_;
   Clock::time_point run_start_;
