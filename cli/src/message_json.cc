@@ -3,7 +3,9 @@
 #include <cstdio>
 #include <optional>
 
+#include "dream/applied_commands_t.hpp"
 #include "dream/lcm/lcm_typed.h"
+#include "dream/lcm/run_id.h"
 #include "dream/obstacles_t.hpp"
 #include "dream/radio_message_t.hpp"
 #include "dream/robot_fault_t.hpp"
@@ -15,7 +17,7 @@ namespace dream::cli {
 namespace {
 
 nlohmann::ordered_json ToJson(const robot_poses_t& m) {
-  return {{"utime", m.utime}, {"step", m.step}, {"num_robots", m.num_robots}, {"x", m.x}, {"y", m.y},
+  return {{"utime", m.utime}, {"step", m.step}, {"run_id", lcm::RunIdText(m.run_id)}, {"num_robots", m.num_robots}, {"x", m.x}, {"y", m.y},
           {"theta", m.theta}, {"v", m.v},       {"w", m.w}};
 }
 
@@ -25,12 +27,13 @@ nlohmann::ordered_json ToJson(const obstacles_t& m) {
     obstacles.push_back({{"id", o.id}, {"center_x", o.center_x}, {"center_y", o.center_y}, {"width", o.width},
                          {"height", o.height}, {"vx", o.vx}, {"vy", o.vy}});
   }
-  return {{"utime", m.utime}, {"step", m.step}, {"num_obstacles", m.num_obstacles}, {"obstacles", obstacles}};
+  return {{"utime", m.utime}, {"step", m.step}, {"run_id", lcm::RunIdText(m.run_id)}, {"num_obstacles", m.num_obstacles}, {"obstacles", obstacles}};
 }
 
 nlohmann::ordered_json ToJson(const run_status_t& m) {
   return {{"utime", m.utime},
           {"step", m.step},
+          {"run_id", lcm::RunIdText(m.run_id)},
           {"state", m.state},
           {"num_robots", m.num_robots},
           {"boundary_errors", m.boundary_errors},
@@ -38,14 +41,15 @@ nlohmann::ordered_json ToJson(const run_status_t& m) {
           {"actuator_errors", m.actuator_errors},
           {"obstacle_collisions", m.obstacle_collisions},
           {"rejected_commands", m.rejected_commands},
+          {"command_conflicts", m.command_conflicts},
           {"num_lost", m.num_lost},
           {"lost_robot_ids", m.lost_robot_ids},
           {"detail", m.detail}};
 }
 
 nlohmann::ordered_json ToJson(const velocity_command_t& m) {
-  return {{"utime", m.utime}, {"step", m.step}, {"robot_id", m.robot_id}, {"agent_id", m.agent_id},
-          {"v", m.v},         {"w", m.w},       {"done", m.done != 0}};
+  return {{"utime", m.utime}, {"step", m.step}, {"run_id", lcm::RunIdText(m.run_id)}, {"robot_id", m.robot_id},
+          {"agent_id", m.agent_id}, {"v", m.v},         {"w", m.w},       {"done", m.done != 0}};
 }
 
 std::string Hex(const std::vector<uint8_t>& bytes) {
@@ -60,13 +64,24 @@ std::string Hex(const std::vector<uint8_t>& bytes) {
 }
 
 nlohmann::ordered_json ToJson(const radio_message_t& m) {
-  return {{"utime", m.utime},         {"step", m.step},         {"sender_id", m.sender_id},
+  return {{"utime", m.utime},         {"step", m.step},  {"run_id", lcm::RunIdText(m.run_id)}, {"sender_id", m.sender_id},
           {"agent_id", m.agent_id},   {"payload_size", m.payload_size}, {"payload", Hex(m.payload)}};
 }
 
 nlohmann::ordered_json ToJson(const robot_fault_t& m) {
-  return {{"utime", m.utime}, {"step", m.step}, {"robot_id", m.robot_id}, {"agent_id", m.agent_id},
-          {"detail", m.detail}};
+  return {{"utime", m.utime}, {"step", m.step}, {"run_id", lcm::RunIdText(m.run_id)}, {"robot_id", m.robot_id},
+          {"agent_id", m.agent_id}, {"detail", m.detail}};
+}
+
+nlohmann::ordered_json ToJson(const applied_commands_t& m) {
+  return {{"utime", m.utime},
+          {"step", m.step},
+          {"run_id", lcm::RunIdText(m.run_id)},
+          {"num_robots", m.num_robots},
+          {"applied_agent_id", m.applied_agent_id},
+          {"commanded_v", m.commanded_v},
+          {"commanded_w", m.commanded_w},
+          {"conflicts", m.conflicts}};
 }
 
 int64_t Fingerprint(const std::vector<uint8_t>& data) {
@@ -104,6 +119,7 @@ MessageJson::MessageJson(const std::vector<uint8_t>& data) {
   attempt(velocity_command_t{});
   attempt(radio_message_t{});
   attempt(robot_fault_t{});
+  attempt(applied_commands_t{});
   if (!matched) {
     char text[32];
     std::snprintf(text, sizeof(text), "%016llx", static_cast<unsigned long long>(fingerprint));

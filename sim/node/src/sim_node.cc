@@ -200,18 +200,19 @@ void SimNode::OnCommand(const std::string& channel, const velocity_command_t& co
     return;
   }
   const bool lockstep = options_.mode == WorldMode::kLockstep;
-  if (lockstep && command.step < world_.step()) return;
   RobotSlot& robot = robots_[static_cast<size_t>(id)];
-  if (command.step < robot.command_step) return;  // real time: older than the command held
+  if (command.step < robot.command_step) return;  // older than the command held
   const bool same_step = command.step == robot.command_step && robot.command_agent_id != 0;
   if (same_step) {
     // The resend of the world's step gets the same answer again; anything
-    // else for this robot and step is a second sender.
+    // else for this robot and step is a second sender, also when it comes
+    // just after the world took the step (the held command is that step's).
     const bool same = SameBits(command.v, robot.received_v) && SameBits(command.w, robot.received_w) &&
                       command.done == robot.done && command.agent_id == robot.command_agent_id;
     if (!same) Conflict(channel, robot, command);
     return;
   }
+  if (lockstep && command.step < world_.step()) return;  // late, for a step the robot missed
   if (!robot.owned || (robot.lost && robot.owner_agent_id != command.agent_id)) {
     if (robot.owned) spdlog::warn("robot {}: agent {:#x} takes over from lost agent {:#x}", id, command.agent_id, robot.owner_agent_id);
     robot.owned = true;
