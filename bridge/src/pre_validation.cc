@@ -1,5 +1,6 @@
 #include "dream/bridge/pre_validation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -26,8 +27,25 @@ std::string ExportProblem::Text() const {
   return rule + ": " + (where.empty() ? "" : where + ": ") + problem + ". Fix: " + fix;
 }
 
+sim::LabVerifierRules::Counts VerifierCounts(const RunTrack& track, const sim::WorldParams& world) {
+  sim::LabVerifierRules::Counts counts;
+  counts.num_robots = track.num_robots;
+  counts.iterations = std::max<int64_t>(track.last_step(), 0);
+  if (track.num_robots < 1) return counts;
+  sim::ViolationChecker checker(world, track.num_robots);
+  std::vector<sim::Pose2> poses(static_cast<size_t>(track.num_robots));
+  for (int64_t k = 0; k < track.last_step(); ++k) {
+    for (int i = 0; i < track.num_robots; ++i) poses[static_cast<size_t>(i)] = track.pose(k, i);
+    checker.Check(k, poses, nullptr, track.obstacles[static_cast<size_t>(k)]);
+    counts.robots_too_close += static_cast<int64_t>(checker.last_step_events().colliding_pairs.size());
+    counts.robots_outside_boundaries += static_cast<int64_t>(checker.last_step_events().out_of_bounds_robot_ids.size());
+  }
+  return counts;
+}
+
 std::vector<ExportProblem> PreValidate(const RunTrack& track, const RunEnd& end, const sim::WorldParams& world,
-                                       int64_t settle_max_steps, const LabLimits& limits, int64_t experiment_steps) {
+                                       int64_t settle_max_steps, const LabLimits& limits, int64_t experiment_steps,
+                                       const std::optional<sim::LabVerifierRules::Declaration>& declared) {
   std::vector<ExportProblem> problems;
   const int n = track.num_robots;
   const int64_t steps = experiment_steps < 0 ? track.last_step() : experiment_steps;
@@ -49,6 +67,21 @@ std::vector<ExportProblem> PreValidate(const RunTrack& track, const RunEnd& end,
                         "run at most " + std::to_string(std::max<int64_t>(max_steps, 0)) +
                             " steps (`steps:` in the config, or dream run --steps), or export with fewer "
                             "--settle-steps"});
+  }
+  // The lab verifier's rules, on what the script will do: ask for the
+  // recorded robots and run at most `iterations` steps.
+  {
+    sim::LabVerifierRules rules;
+    rules.time_step_s = world.time_step_s;
+    rules.max_duration_s = limits.max_duration_s;
+    sim::LabVerifierRules::Counts counts = VerifierCounts(track, world);
+    counts.iterations = iterations;
+    const sim::LabVerifierRules::Declaration declaration =
+        declared.value_or(sim::LabVerifierRules::Declaration{n, duration_s});
+    for (const sim::VerdictReason& reason : rules.Check(declaration, counts)) {
+      if (reason.rule == "lab_duration_cap" && duration_s > limits.max_duration_s) continue;  // `duration` says it
+      problems.push_back({reason.rule, -1, -1, -1, reason.problem, reason.find_out});
+    }
   }
   if (!end.seen || end.state != run_status_t::FINISHED) {
     problems.push_back({"finished", -1, -1, track.last_step(),

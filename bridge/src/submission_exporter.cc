@@ -17,6 +17,7 @@
 #include "dream/bridge/submission_format.h"
 #include "dream/bridge/submission_params.h"
 #include "dream/config/run_config.h"
+#include "dream/sim/run_verdict.h"
 
 namespace dream::bridge {
 namespace {
@@ -49,6 +50,42 @@ int64_t RunStepLimit(const std::string& run_dir, const config::RunConfig& config
     throw std::runtime_error(summary_path + ": not valid JSON: " + e.what());
   }
   throw std::runtime_error(summary_path + ": has no max_steps (a whole number >= 1); is it a dream run's summary?");
+}
+
+/// The reasons summary.json gives for a not_ready verdict (lost robots,
+/// command conflicts, bad messages, an unmet goal, ...), as export problems;
+/// none for a run folder without summary.json (an older dream run). Those
+/// PreValidate finds again in the log (controller_failed, did_not_finish) and
+/// the pose rules it re-checks are left to it.
+std::vector<ExportProblem> NotReadyReasons(const std::string& run_dir) {
+  const std::string summary_path = (std::filesystem::path(run_dir) / "summary.json").string();
+  std::vector<ExportProblem> problems;
+  if (!std::filesystem::exists(summary_path)) return problems;
+  nlohmann::json summary;
+  try {
+    summary = nlohmann::json::parse(sim::ReadFileText(summary_path));
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(summary_path + ": not valid JSON: " + e.what());
+  }
+  const auto reasons = summary.find("verdict_reasons");
+  if (!summary.is_object() || reasons == summary.end()) return problems;  // written before verdict reasons
+  if (!reasons->is_array()) throw std::runtime_error(summary_path + ": verdict_reasons is not a list");
+  for (const nlohmann::json& reason : *reasons) {
+    auto text = [&](const char* key) {
+      const auto it = reason.is_object() ? reason.find(key) : reason.end();
+      if (it == reason.end() || !it->is_string()) {
+        throw std::runtime_error(summary_path + ": a verdict_reasons entry has no text '" + key + "'");
+      }
+      return it->get<std::string>();
+    };
+    const std::string rule = text("rule");
+    if (text("verdict") != sim::RunVerdictName(sim::RunVerdict::kNotReady) || rule == "controller_failed" ||
+        rule == "did_not_finish") {
+      continue;
+    }
+    problems.push_back({rule, -1, -1, -1, text("problem"), text("find_out") + "; or export anyway with --force"});
+  }
+  return problems;
 }
 
 /// What the controller strategy ships besides the script and the params.
@@ -133,14 +170,25 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
   }
   // The controller strategy runs until every robot is done, at most the run's step limit.
   const int64_t steps = controller && python_kind ? RunStepLimit(run_dir, config) : track.last_step();
-  std::vector<std::string> forced;  // lost robots, exported anyway with --force
-  for (ExportProblem& problem : PreValidate(track, end, config.world, options.settle_max_steps, LabLimits{}, steps)) {
-    if (options.force && problem.rule == "lost_robot") {
+  // What UPLOAD.txt tells the user to declare: the lab's verifier holds the run to it.
+  const sim::LabVerifierRules::Declaration declared{
+      config.num_robots, static_cast<double>(steps + options.settle_max_steps) * config.world.time_step_s};
+  // --force exports a run whose robots were lost, or that summary.json
+  // calls not_ready; the lab's rules are never forced.
+  std::vector<std::string> forced;
+  auto force_or_refuse = [&](ExportProblem problem, bool forcible) {
+    if (options.force && forcible) {
       forced.push_back(problem.Text() + " (exported anyway: --force)");
     } else {
       problems.push_back(std::move(problem));
     }
+  };
+  for (ExportProblem& problem :
+       PreValidate(track, end, config.world, options.settle_max_steps, LabLimits{}, steps, declared)) {
+    const bool forcible = problem.rule == "lost_robot";
+    force_or_refuse(std::move(problem), forcible);
   }
+  for (ExportProblem& problem : NotReadyReasons(run_dir)) force_or_refuse(std::move(problem), true);
   if (!problems.empty()) throw ExportRefused(problems);
   ControllerFiles controller_files;
   NpyArray obstacles;

@@ -15,7 +15,9 @@ enum ExitCode : int {
   kExitInputError = 1,      ///< bad config, file or argument; nothing was run
   kExitUsage = 2,           ///< unknown subcommand or option
   kExitRejected = 3,        ///< the run finished but has hard errors (the Robotarium would reject it)
-  kExitRunFailed = 4,       ///< the run did not finish (agents missing, lost world, I/O error)
+  kExitRunFailed = 4,       ///< the run did not finish (agents missing, lost world, I/O error) or a controller failed
+  kExitNotReady = 5,        ///< the run finished and the lab's checks pass, but it is not ready: robots lost, command
+                            ///< conflicts, bad messages, its goal missed (summary.json verdict_reasons)
   kExitInterrupted = 130,   ///< Ctrl-C / SIGTERM; outputs are complete up to the interruption
 };
 
@@ -60,6 +62,7 @@ void DeclareSimCommand(CommandLine& line);      ///< dream sim (run_command.cc)
 void DeclareAgentCommand(CommandLine& line);    ///< dream agent (agent_command.cc)
 void DeclareLaunchCommand(CommandLine& line);   ///< dream launch (launch_command.cc)
 void DeclareSpyCommand(CommandLine& line);      ///< dream spy (spy_command.cc)
+void DeclareReplayCommand(CommandLine& line);   ///< dream replay (replay_command.cc)
 void DeclareLogCommand(CommandLine& line);      ///< dream log info / diff / echo (log_command.cc)
 void DeclareVersionCommand(CommandLine& line);  ///< dream version (version_command.cc)
 
@@ -82,6 +85,19 @@ int RunLogDiff(const std::string& a, const std::string& b, const std::string& ch
 /// as one JSON object per line (at most `limit` when > 0).
 int RunLogEcho(const std::string& path, const std::string& channel_regex, long long limit);
 int RunSpy(const std::string& log_path, const std::string& lcm_url, bool print_command_only);
+
+struct ReplayArgs {
+  std::string run;                  ///< a run folder (its run.lcmlog) or an .lcmlog file
+  std::string lcm_url;              ///< empty: $LCM_DEFAULT_URL, else LCM's default
+  bool paused = false;              ///< start paused
+  bool with_spy = false;            ///< also open lcm-spy on the same URL
+  bool print_command_only = false;
+};
+/// Plays a run log through LCM's log player GUI (lcm.logging.LogPlayer:
+/// seek, pause, step, speed), started with java directly as dream spy starts
+/// lcm-spy (Debian's lcm-logplayer-gui script passes -Xincgc, which Java 17
+/// refuses). Exit 0, 1 for a missing or unreadable log.
+int RunReplay(const ReplayArgs& args);
 
 // --- the bridge to the Robotarium (bridge_commands.cc, docs/robotarium.md) ---
 

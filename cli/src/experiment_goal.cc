@@ -52,6 +52,18 @@ ExperimentGoal ExperimentGoal::Judge(const nlohmann::json& summary) {
                 ", spacing " + Metres(Number(metrics, "final_spacing_error_m", -1.0)));
   } else if (goal.kind == "voronoi_coverage") {
     by_step("settled_step", "settled", "not settled");
+    if (!goal.met) {
+      // Blocks that move to the last step keep the robots giving way, so they
+      // never settle; coverage then means the cost fell and kept falling.
+      const double initial = Number(metrics, "coverage_cost_initial_m4", -1.0);
+      const double final_cost = Number(metrics, "coverage_cost_final_m4", -1.0);
+      const double rise = Number(metrics, "coverage_cost_max_rise_m4", -1.0);
+      char text[96];
+      std::snprintf(text, sizeof(text), "cost %.3g -> %.3g m^4, largest rise %.2g", initial, final_cost, rise);
+      goal.met = initial > 0.0 && final_cost >= 0.0 && rise >= 0.0 && final_cost <= 0.5 * initial &&
+                 rise <= 0.01 * initial;
+      goal.detail = std::string(goal.met ? "covering, not settled: " : "not settled: ") + text;
+    }
   } else if (goal.kind == "affine_formation") {
     const double worst_m = Number(metrics, "max_follower_error_after_convergence_m", -1.0);
     const double tolerance_m = Number(metrics, "follower_error_tolerance_m", -1.0);
@@ -73,6 +85,23 @@ ExperimentGoal ExperimentGoal::Judge(const nlohmann::json& summary) {
       goal.completion_step = static_cast<long long>(Number(summary, "steps", -1.0));
   }
   return goal;
+}
+
+std::optional<sim::VerdictReason> ExperimentGoal::Reason() const {
+  if (!has_criterion || met) return std::nullopt;
+  return sim::VerdictReason{"goal", sim::RunVerdict::kNotReady,
+                            "the " + kind + " experiment missed its goal: " + detail,
+                            "summary.json metrics; dream render RUN --plot shows them over time"};
+}
+
+nlohmann::ordered_json ExperimentGoal::Json() const {
+  nlohmann::ordered_json json;
+  json["kind"] = kind;
+  json["has_criterion"] = has_criterion;
+  json["met"] = met;
+  json["completion_step"] = completion_step;
+  json["detail"] = detail;
+  return json;
 }
 
 }  // namespace dream::cli

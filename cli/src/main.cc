@@ -16,7 +16,8 @@ int main(int argc, char** argv) {
   CommandLine line{
       "dream: distributed multi-robot controllers on a Robotarium-faithful simulator, over LCM.\n"
       "Exit codes: 0 ok, 1 bad input, 2 usage, 3 run has hard errors (the Robotarium would reject it),\n"
-      "4 run did not finish, 130 interrupted.",
+      "4 run did not finish (or a controller failed), 5 run not ready (robots lost, command conflicts,\n"
+      "bad messages, goal missed: summary.json verdict_reasons), 130 interrupted.",
       "dream"};
   CLI::App& app = line.app();
   app.require_subcommand(1);
@@ -34,6 +35,7 @@ int main(int argc, char** argv) {
   DeclareAgentCommand(line);
   DeclareLaunchCommand(line);
   DeclareSpyCommand(line);
+  DeclareReplayCommand(line);
   DeclareLogCommand(line);
   DeclareBridgeCommands(line);  // export, import, lab-replay, compare, check-submission (docs/robotarium.md)
   DeclareSweepCommand(line);

@@ -25,14 +25,14 @@ int RunEmbedded(const RunArgs& args) {
   std::vector<int> ids(static_cast<size_t>(config.num_robots));
   std::iota(ids.begin(), ids.end(), 0);
   const HostedAgents agents(bus, config, ids);
-  return RunWorld(bus, config, ConfigTextForRunFolder(args, config), out_dir);
+  return RunWorld(bus, config, ConfigTextForRunFolder(args, config), out_dir, args.steps != 0);
 }
 
 int RunSimOnly(const RunArgs& args) {
   const config::RunConfig config = LoadConfig(args);
   lcm::LcmBus bus(lcm::ResolveLcmUrl(args.lcm_url));
   const std::string out_dir = PrepareOutputDir(args, config);
-  return RunWorld(bus, config, ConfigTextForRunFolder(args, config), out_dir);
+  return RunWorld(bus, config, ConfigTextForRunFolder(args, config), out_dir, args.steps != 0);
 }
 
 void DeclareRunCommand(CommandLine& line) {

@@ -12,12 +12,15 @@
 #include "dream/agents/controller_factory.h"
 #include "dream/bridge/controller_module_copy.h"
 #include "dream/bridge/metrics_json.h"
+#include "dream/bridge/pre_validation.h"
+#include "dream/bridge/run_track.h"
 #include "dream/config/config_error.h"
 #include "dream/sim/atomic_file.h"
 #include "dream/sim/file_text.h"
 #include "dream/sim/output_folder.h"
 #include "dream/sim/realistic_world.h"
 #include "dream/sim/run_recorder.h"
+#include "dream/sim/run_judge.h"
 #include "dream/sim/run_report.h"
 #include "dream/sim/run_summary.h"
 #include "dream/sim/sim_node.h"
@@ -25,6 +28,7 @@
 #include "dream/sim/trajectory_picture.h"
 #include "dream/sim/true_pose_recording.h"
 #include "dream/sim/unicycle_world.h"
+#include "experiment_goal.h"
 #include "overridden_config.h"
 #include "render_overlays.h"
 #include "run_folder_choice.h"
@@ -82,7 +86,7 @@ std::string PrepareOutputDir(const RunArgs& args, const config::RunConfig& confi
 }
 
 int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std::string& config_text,
-             const std::string& out_dir) {
+             const std::string& out_dir, bool steps_from_command_line) {
   // A copy of the config beside the log, so the run folder alone is enough for
   // `dream export` and `dream compare`, and to rerun it.
   sim::WriteFileAtomically(out_dir + "/config.yaml", config_text);
@@ -123,22 +127,65 @@ int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std:
     }
     outcome.log_events = recorder.events_written();
   }
-  // Written whatever the outcome: after a failed run it says why, and the log
-  // keeps every whole event up to the failure.
-  nlohmann::ordered_json summary =
-      nlohmann::ordered_json::parse(sim::RunSummaryJson(config, outcome, world, "run.lcmlog"));
-  summary["metrics"] = bridge::MetricsJson(config, log_path);
+  // What the world adds to summary.json.
+  nlohmann::ordered_json world_fields = nlohmann::ordered_json::object();
   if (realistic != nullptr) {
-    summary["realism"] = RealismJson(config.realism);
+    world_fields["realism"] = RealismJson(config.realism);
     // Where the robots really ended (world.poses() is what the agents were sent last).
     nlohmann::ordered_json poses = nlohmann::ordered_json::array();
     for (const sim::Pose2& pose : realistic->true_poses()) poses.push_back({pose.x_m, pose.y_m, pose.theta_rad});
-    summary["final_poses"] = poses;
+    world_fields["final_poses"] = poses;
   }
-  if (summary["metrics"].contains("error")) {
+  return ReportRun(config, outcome, world, out_dir, steps_from_command_line, world_fields);
+}
+
+sim::RunJudgement JudgeRunAndGoal(const config::RunConfig& config, const sim::RunOutcome& outcome,
+                                  const sim::World& world, const std::string& log_path, nlohmann::ordered_json* summary,
+                                  bool steps_from_command_line) {
+  // The lab's verifier counts each robot outside the arena, the world each
+  // step with any: re-count on the log, only when there is something to count.
+  int64_t outside = 0;
+  if (world.violations().boundary_errors > 0) {
+    try {
+      outside = bridge::VerifierCounts(bridge::ReadRunTrack(log_path), config.world).robots_outside_boundaries;
+    } catch (const std::exception& e) {
+      spdlog::warn("{}: cannot re-count robots outside the arena ({}); using the steps with any", log_path, e.what());
+      outside = -1;
+    }
+  }
+  sim::RunJudgement judgement = sim::JudgeRun(config, outcome, world, outside);
+  const ExperimentGoal goal = ExperimentGoal::Judge(*summary);
+  nlohmann::ordered_json goal_json = goal.Json();
+  // A run stopped by --steps at its limit was cut short on purpose: its goal is not judged.
+  const bool cut_short = steps_from_command_line && !goal.met && outcome.steps >= config.sim.max_steps;
+  goal_json["judged"] = !cut_short && goal.has_criterion;
+  (*summary)["goal"] = goal_json;
+  if (!cut_short) {
+    if (const std::optional<sim::VerdictReason> reason = goal.Reason()) judgement.Add(*reason);
+  }
+  return judgement;
+}
+
+int ReportRun(const config::RunConfig& config, const sim::RunOutcome& outcome, const sim::World& world,
+              const std::string& out_dir, bool steps_from_command_line, const nlohmann::ordered_json& world_fields) {
+  const std::string log_path = out_dir + "/run.lcmlog";
+  // Written whatever the outcome: after a failed run it says why, and the log
+  // keeps every whole event up to the failure.
+  nlohmann::ordered_json metrics = bridge::MetricsJson(config, log_path);
+  if (metrics.contains("error")) {
     // The run and its log stand; only the experiment's own numbers are missing.
-    spdlog::warn("{}: no experiment metrics: {}", log_path, summary["metrics"]["error"].get<std::string>());
+    spdlog::warn("{}: no experiment metrics: {}", log_path, metrics["error"].get<std::string>());
   }
+  nlohmann::ordered_json summary =
+      nlohmann::ordered_json::parse(sim::RunSummaryJson(config, outcome, world, "run.lcmlog"));
+  summary["metrics"] = metrics;
+  const sim::RunJudgement judgement =
+      JudgeRunAndGoal(config, outcome, world, log_path, &summary, steps_from_command_line);
+  const nlohmann::ordered_json goal = summary["goal"];
+  summary = nlohmann::ordered_json::parse(sim::RunSummaryJson(config, outcome, world, "run.lcmlog", judgement));
+  summary["metrics"] = metrics;
+  summary["goal"] = goal;
+  for (auto it = world_fields.begin(); it != world_fields.end(); ++it) summary[it.key()] = it.value();
   try {
     sim::WriteFileAtomically(out_dir + "/summary.json", summary.dump(2) + "\n");
   } catch (const std::exception& e) {
@@ -148,17 +195,16 @@ int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std:
     return kExitRunFailed;
   }
 
-  const sim::RunReport report = sim::RunReport::FromViolations(world.step(), world.violations());
   spdlog::info("{} after {} steps ({:.1f} s simulated, {:.2f} s wall): {}", sim::EndName(outcome.end),
                outcome.steps, world.time_s(), outcome.wall_time_s, outcome.reason);
-  std::cout << report.Text();
-  for (const auto& [id, detail] : outcome.robot_faults) {
-    std::cout << "robot " << id << " was lost, its controller failed at " << detail << "\n";
+  std::cout << judgement.Text();
+  if (goal.contains("judged") && goal["judged"] == false && goal["has_criterion"] == true) {
+    std::cout << "goal: not judged, --steps " << config.sim.max_steps << " stopped the run first ("
+              << goal["detail"].get<std::string>() << ")\n";
   }
-  if (!outcome.robot_faults.empty()) {
-    // The Robotarium's text above judges only the poses; a failed controller is not ready for the lab.
-    std::cout << "NOT ready for the Robotarium: " << outcome.robot_faults.size()
-              << " controller(s) failed; fix them and run again (dream export refuses this run).\n";
+  if (judgement.verdict() == sim::RunVerdict::kNotReady || judgement.reasons().size() > 1) {
+    std::cout << "verdict: " << sim::RunVerdictName(judgement.verdict()) << " (summary.json verdict_reasons";
+    std::cout << (judgement.verdict() >= sim::RunVerdict::kNotReady ? "; dream export refuses it" : "") << ")\n";
   }
   std::cout << "log:     " << log_path << "\nsummary: " << out_dir << "/summary.json\n";
   bool picture_failed = false;
@@ -167,7 +213,7 @@ int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std:
       // With the config's goals, like `dream render` draws them.
       sim::ArenaOverlays overlays = ArenaOverlaysFromConfig(config);
       overlays.run_name = config.name;
-      overlays.verdict = sim::RunVerdictName(report.verdict);  // as summary.json says
+      overlays.verdict = sim::RunVerdictName(judgement.verdict());  // as summary.json says
       sim::TrajectoryPicture::Render(sim::RunTrack::Read(log_path), overlays, out_dir + "/trajectories.png",
                                      sim::RenderFormat::kPng, 1280);
       std::cout << "picture: " << out_dir << "/trajectories.png\n";
@@ -176,9 +222,25 @@ int RunWorld(lcm::LcmInterface& lcm, const config::RunConfig& config, const std:
       picture_failed = true;
     }
   }
-  // A robot whose controller failed makes the run fail, whatever the rest did.
-  const int exit_code = outcome.robot_faults.empty() ? ExitCodeFor(outcome, report) : kExitRunFailed;
+  const int exit_code = ExitCodeFor(outcome, judgement);
   return picture_failed ? kExitRunFailed : exit_code;
+}
+
+int ExitCodeFor(const sim::RunOutcome& outcome, const sim::RunJudgement& judgement) {
+  const int ended = ExitCodeFor(outcome, judgement.report());
+  if (ended != kExitOk && ended != kExitRejected) return ended;  // did not finish, interrupted
+  // A robot whose controller failed makes the run fail, whatever the rest did.
+  if (!outcome.robot_faults.empty()) return kExitRunFailed;
+  switch (judgement.verdict()) {
+    case sim::RunVerdict::kRejected:
+      return kExitRejected;
+    case sim::RunVerdict::kNotReady:
+      return kExitNotReady;
+    case sim::RunVerdict::kClean:
+    case sim::RunVerdict::kWarning:
+      break;
+  }
+  return kExitOk;
 }
 
 int ExitCodeFor(const sim::RunOutcome& outcome, const sim::RunReport& report) {

@@ -12,6 +12,7 @@
 #include "data_files.h"
 #include "dream/lcm/lcm_url.h"
 #include "process_group.h"
+#include "shell_quoted.h"
 
 namespace dream::cli {
 namespace {
@@ -29,18 +30,6 @@ std::string FindTypesJar() {
 std::string RequireFile(const std::string& path, const char* what, const char* hint) {
   if (!fs::exists(path)) throw std::runtime_error(std::string(what) + " " + path + " is missing: " + hint);
   return path;
-}
-
-// `text` quoted for a POSIX shell when it holds anything but safe characters
-// (URLs hold '&' and '?'), so a printed command can be pasted as is.
-std::string ShellQuoted(const std::string& text) {
-  if (!text.empty() && text.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-./:=,+@") ==
-                           std::string::npos) {
-    return text;
-  }
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
 }
 
 struct SpyArgs {

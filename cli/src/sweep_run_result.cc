@@ -53,8 +53,8 @@ SweepRunResult SweepRunResult::Judge(const SweepPlan::Run& run, int exit_code, b
     result.problem = "interrupted";
   } else if (exit_code < 0) {
     result.problem = failure_hint.empty() ? std::string("did not start") : failure_hint;
-  } else if (exit_code != 0 && exit_code != 3) {
-    // dream run: 1 config, 4 did not finish; above 128 a signal killed it.
+  } else if (exit_code != 0 && exit_code != 3 && exit_code != 5) {
+    // dream run: 1 config, 4 did not finish (3 rejected, 5 not ready: it ran); above 128 a signal killed it.
     result.problem = (exit_code > 128 ? "killed by signal " + std::to_string(exit_code - 128)
                                       : "exit " + std::to_string(exit_code)) +
                      hint;

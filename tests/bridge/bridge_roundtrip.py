@@ -139,8 +139,11 @@ def bad_input(loop):
     check(not os.path.exists(loop.path("many_export")), "a refused export wrote files")
 
     # Over the duration cap.
-    run([dream, "run", os.path.join(source, "config", "go_to_goal.yaml"), "--out", loop.path("long_sim"),
-         "--steps", "27100", "--all-steps", "-q"])
+    # The run's own verdict says so already (exit 3, rule lab_duration_cap), with the export's settle steps.
+    output, _ = run([dream, "run", os.path.join(source, "config", "go_to_goal.yaml"), "--out", loop.path("long_sim"),
+                     "--steps", "27100", "--all-steps", "-q"], expect=3)
+    check("lab_duration_cap: the experiment takes 902.22 s with the export's settle steps, over the lab's cap of "
+          "900.00 s" in output, "long run: " + output)
     output, _ = run([dream, "export", loop.path("long_sim"), "--out", loop.path("long_export")], expect=3)
     check("duration: 27100 steps + 240 settle steps take 902.2 s on the lab, over its cap of 900 s" in output,
           "duration: " + output)

@@ -300,5 +300,109 @@ TEST(SubmissionTemplateTest, ParameterIndicesMatchTheScript) {
   EXPECT_EQ(script.find("exec("), std::string::npos);
 }
 
+// --- the lab verifier's rules (sim::LabVerifierRules) in pre-validation ---
+
+/// Moves robot `robot` of a StillTrack below the arena (y < -1) for steps [from, from + count).
+void PutOutside(RunTrack* track, int robot, int64_t from, int64_t count) {
+  for (int64_t k = from; k < from + count; ++k) {
+    track->poses[static_cast<size_t>(k * track->num_robots + robot)].y_m = -1.05;
+  }
+}
+
+TEST(VerifierRulesTest, OutsideHundredRobotStepsIsDebugsErrorAndHundredAndOneTheVerifiers) {
+  // Two robots outside: 50 + 50 = 100 robot-steps (50 steps with any outside).
+  RunTrack track = StillTrack(3, 300);
+  PutOutside(&track, 0, 10, 50);
+  PutOutside(&track, 1, 10, 50);
+  EXPECT_EQ(VerifierCounts(track, sim::WorldParams{}).robots_outside_boundaries, 100);
+  EXPECT_THAT(Rules(PreValidate(track, Finished(), sim::WorldParams{}, 240)), ElementsAre("boundary", "boundary"));
+  PutOutside(&track, 1, 60, 1);  // 101
+  EXPECT_EQ(VerifierCounts(track, sim::WorldParams{}).robots_outside_boundaries, 101);
+  const auto problems = PreValidate(track, Finished(), sim::WorldParams{}, 240);
+  EXPECT_THAT(Rules(problems), ElementsAre("verifier_out_of_bounds", "boundary", "boundary"));
+  EXPECT_THAT(problems[0].Text(), HasSubstr("101 times (robots x steps)"));
+}
+
+TEST(VerifierRulesTest, TooCloseHundredPairStepsAndHundredAndOne) {
+  RunTrack track = StillTrack(3, 300);
+  auto close_for = [&track](int64_t steps) {
+    for (int64_t k = 0; k <= 300; ++k) {
+      const sim::Pose2 beside{track.pose(k, 0).x_m + 0.1, track.pose(k, 0).y_m, 0.0};
+      track.poses[static_cast<size_t>(k * 3 + 1)] =
+          k >= 20 && k < 20 + steps ? beside : StillTrack(3, 0).pose(0, 1);
+    }
+  };
+  close_for(100);
+  EXPECT_EQ(VerifierCounts(track, sim::WorldParams{}).robots_too_close, 100);
+  EXPECT_THAT(Rules(PreValidate(track, Finished(), sim::WorldParams{}, 240)), ElementsAre("collision"));
+  close_for(101);
+  EXPECT_THAT(Rules(PreValidate(track, Finished(), sim::WorldParams{}, 240)),
+              ElementsAre("verifier_too_close", "collision"));
+}
+
+TEST(VerifierRulesTest, CountsAreThoseOfTheStepsTheWorldValidated) {
+  // The last recorded pose is never validated by a step: not counted.
+  RunTrack track = StillTrack(2, 10);
+  PutOutside(&track, 0, 10, 1);
+  EXPECT_EQ(VerifierCounts(track, sim::WorldParams{}).robots_outside_boundaries, 0);
+  EXPECT_EQ(VerifierCounts(track, sim::WorldParams{}).iterations, 10);
+}
+
+TEST(VerifierRulesTest, TheDeclaredRobotCountAndDuration) {
+  const RunTrack track = StillTrack(4, 100);
+  // The default declaration is what UPLOAD.txt gives: it always passes.
+  EXPECT_TRUE(PreValidate(track, Finished(), sim::WorldParams{}, 240).empty());
+  // (100 + 240) x 0.033 = 11.22 s: 1.5 x 7.49 s = 11.235 s passes, 1.5 x 7.47 s = 11.205 s does not.
+  EXPECT_TRUE(PreValidate(track, Finished(), sim::WorldParams{}, 240, {}, -1,
+                          sim::LabVerifierRules::Declaration{4, 7.49})
+                  .empty());
+  EXPECT_THAT(Rules(PreValidate(track, Finished(), sim::WorldParams{}, 240, {}, -1,
+                                sim::LabVerifierRules::Declaration{4, 7.47})),
+              ElementsAre("verifier_duration"));
+  const auto problems = PreValidate(track, Finished(), sim::WorldParams{}, 240, {}, -1,
+                                    sim::LabVerifierRules::Declaration{5, 11.22});
+  ASSERT_THAT(Rules(problems), ElementsAre("verifier_robot_count"));
+  EXPECT_THAT(problems[0].Text(), HasSubstr("asks for 4 robots but 5 are declared"));
+  // A declaration over the lab's 900 s cap, although the run is short.
+  EXPECT_THAT(Rules(PreValidate(track, Finished(), sim::WorldParams{}, 240, {}, -1,
+                                sim::LabVerifierRules::Declaration{4, 901.0})),
+              ElementsAre("lab_duration_cap"));
+}
+
+TEST_F(ExportTest, SummaryReasonsRefuseTheRunUnlessForced) {
+  // The shipped run, with a summary.json that calls it not ready.
+  const std::string run = testing::NewFolder("export_not_ready");
+  for (const char* file : {"config.yaml", "run.lcmlog"}) fs::copy_file(*run_dir_ + "/" + file, run + "/" + file);
+  testing::WriteText(run + "/summary.json", R"({"max_steps": 1500, "verdict": "not_ready", "verdict_reasons": [
+    {"rule": "goal", "verdict": "not_ready", "problem": "missed its goal", "find_out": "summary.json metrics"},
+    {"rule": "command_conflicts", "verdict": "not_ready", "problem": "4 commands", "find_out": "DREAM_APPLIED"},
+    {"rule": "actuator", "verdict": "warning", "problem": "3 steps", "find_out": ""},
+    {"rule": "controller_failed", "verdict": "not_ready", "problem": "found again in the log", "find_out": ""}]})");
+  const std::string out = testing::NewFolder("export_not_ready_out") + "/out";
+  try {
+    ExportSubmission(run, out, ExportOptions{});
+    ADD_FAILURE() << "exported a run summary.json calls not ready";
+  } catch (const ExportRefused& refused) {
+    EXPECT_THAT(Rules(refused.problems()), ElementsAre("goal", "command_conflicts"));
+    EXPECT_THAT(refused.what(), HasSubstr("goal: missed its goal. Fix: summary.json metrics; or export anyway with --force"));
+  }
+  EXPECT_FALSE(fs::exists(out));
+  ExportOptions forced;
+  forced.force = true;
+  const ExportSummary summary = ExportSubmission(run, out, forced);
+  ASSERT_EQ(summary.warnings.size(), 2u);
+  EXPECT_THAT(summary.warnings[0], HasSubstr("goal: missed its goal"));
+  EXPECT_THAT(summary.warnings[0], HasSubstr("(exported anyway: --force)"));
+  EXPECT_THAT(testing::ReadText(out + "/UPLOAD.txt"), HasSubstr("WARNING: command_conflicts: 4 commands"));
+
+  testing::WriteText(run + "/summary.json", R"({"verdict_reasons": "not a list"})");
+  try {
+    ExportSubmission(run, testing::NewFolder("export_bad_summary") + "/out", forced);
+    ADD_FAILURE() << "a malformed summary.json was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("summary.json: verdict_reasons is not a list"));
+  }
+}
+
 }  // namespace
 }  // namespace dream::bridge

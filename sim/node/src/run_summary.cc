@@ -2,13 +2,20 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dream/lcm/run_id.h"
+#include "dream/sim/run_judge.h"
 #include "dream/sim/run_report.h"
 
 namespace dream::sim {
 
 std::string RunSummaryJson(const config::RunConfig& config, const RunOutcome& outcome,
                            const World& world, const std::string& log_file_name) {
-  const RunReport report = RunReport::FromViolations(world.step(), world.violations(), world.time_step_s());
+  return RunSummaryJson(config, outcome, world, log_file_name, JudgeRun(config, outcome, world));
+}
+
+std::string RunSummaryJson(const config::RunConfig& config, const RunOutcome& outcome, const World& world,
+                           const std::string& log_file_name, const RunJudgement& judgement) {
+  const RunReport& report = judgement.report();
   nlohmann::ordered_json json;
   json["run"] = config.name;
   json["config"] = config.source;
@@ -28,9 +35,23 @@ std::string RunSummaryJson(const config::RunConfig& config, const RunOutcome& ou
                         {"collision_errors", counts.collision_errors},
                         {"actuator_errors", counts.actuator_errors},
                         {"obstacle_collisions", counts.obstacle_collisions}};
-  json["verdict"] = RunVerdictName(report.verdict);
+  json["verdict"] = RunVerdictName(judgement.verdict());
+  nlohmann::json reasons = nlohmann::json::array();
+  for (const VerdictReason& reason : judgement.reasons()) {
+    reasons.push_back({{"rule", reason.rule},
+                       {"verdict", RunVerdictName(reason.verdict)},
+                       {"problem", reason.problem},
+                       {"find_out", reason.find_out}});
+  }
+  json["verdict_reasons"] = reasons;
+  json["robotarium_verdict"] = RunVerdictName(report.verdict);
   json["robotarium_report"] = report.Text();
+  json["run_id"] = lcm::RunIdText(outcome.run_id);
   json["rejected_commands"] = outcome.rejected_commands;
+  json["command_conflicts"] = outcome.command_conflicts;
+  nlohmann::json other_worlds = nlohmann::json::array();
+  for (int64_t id : outcome.other_worlds) other_worlds.push_back(lcm::RunIdText(id));
+  json["other_worlds"] = other_worlds;
   json["robots_ever_lost"] = outcome.robots_ever_lost;
   nlohmann::json faults = nlohmann::json::object();
   for (const auto& [id, detail] : outcome.robot_faults) faults[std::to_string(id)] = detail;

@@ -34,6 +34,7 @@ std::string TickLabel(double value_m) {
 const char* VerdictExplained(const std::string& verdict) {
   if (verdict == "clean") return "clean (no errors or warnings)";
   if (verdict == "warning") return "warning (accepted: actuator limits only)";
+  if (verdict == "not_ready") return "not ready (robots lost, conflicts, bad messages or goal missed)";
   if (verdict == "rejected") return "rejected (boundary, collision or obstacle errors)";
   return nullptr;
 }

@@ -40,6 +40,7 @@ std::string RunReport::Text() const {
   std::string text = Format("Your simulation took approximately %.2f real seconds to execute.\n\n",
                             estimated_duration_s);
   switch (verdict) {
+    case RunVerdict::kNotReady:  // never from counts alone (FromViolations); RunJudgement words it
     case RunVerdict::kClean:
       text += "No errors or warnings in your simulation!  Your script will run on the Robotarium!\n\n";
       break;

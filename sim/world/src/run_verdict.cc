@@ -8,6 +8,8 @@ const char* RunVerdictName(RunVerdict verdict) {
       return "clean";
     case RunVerdict::kWarning:
       return "warning";
+    case RunVerdict::kNotReady:
+      return "not_ready";
     case RunVerdict::kRejected:
       return "rejected";
   }

@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "dream/sim/lab_verifier_rules.h"
+
 namespace dream::bridge {
 
 /// How the exported script drives the robots.
@@ -29,8 +31,9 @@ struct ExportOptions {
   /// Pass every command through the Robotarium's own unicycle barrier
   /// certificate with boundary (a safety layer; it bends the plan slightly).
   bool barriers = false;
-  /// Settle phase before step 0: at most this many steps (0: none).
-  int settle_max_steps = 240;
+  /// Settle phase before step 0: at most this many steps (0: none). Every
+  /// run's verdict assumes this default (the duration its export declares).
+  int settle_max_steps = static_cast<int>(sim::LabVerifierRules::kExportSettleSteps);
   double settle_position_tolerance_m = 0.005;
   double settle_heading_tolerance_rad = 0.02;
   double settle_gain_v_per_s = 1.5;  ///< forward speed per metre of distance

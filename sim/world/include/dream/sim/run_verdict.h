@@ -2,13 +2,19 @@
 
 namespace dream::sim {
 
-// What the Robotarium would make of a run, as its simulator's debug() says.
+/// What a run is worth on the Robotarium, from best to worst (the order is
+/// used: a run's verdict is the worst of its reasons'). The first three are
+/// what the Robotarium simulator's debug() says about the poses; kNotReady
+/// is ours: the poses pass, but the run went wrong in a way debug() cannot
+/// see (robots lost, command conflicts, bad messages, its goal not met).
 enum class RunVerdict {
   kClean,     // no errors, no warnings
   kWarning,   // only actuator-limit errors: the run is accepted
-  kRejected,  // boundary or collision errors (or virtual-obstacle overlaps)
+  kNotReady,  // the lab's checks pass, but the run is not the experiment it should be
+  kRejected,  // boundary or collision errors (or virtual-obstacle overlaps), or a lab verifier rule broken
 };
 
+/// "clean", "warning", "not_ready", "rejected" (summary.json's words).
 const char* RunVerdictName(RunVerdict verdict);
 
 }  // namespace dream::sim

@@ -1,0 +1,97 @@
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include "command_line.h"
+#include "commands.h"
+#include "dream/lcm/lcm_url.h"
+#include "process_group.h"
+#include "shell_quoted.h"
+
+namespace dream::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Every event of an LCM log starts with this sync word (big-endian).
+constexpr unsigned char kLcmLogSyncWord[4] = {0xED, 0xA1, 0xDA, 0x01};
+
+/// The log to play: `run` itself, or run.lcmlog inside a run folder.
+/// @throws std::runtime_error naming the path when it is missing, empty or not an LCM log.
+std::string LogToReplay(const std::string& run) {
+  std::error_code error;
+  if (!fs::exists(run, error)) {
+    throw std::runtime_error(run + ": no such file or folder; give a run folder (runs/<name>) or its run.lcmlog");
+  }
+  const std::string log = fs::is_directory(run, error) ? (fs::path(run) / "run.lcmlog").string() : run;
+  if (!fs::is_regular_file(log, error)) {
+    throw std::runtime_error(log + " is missing: " + run + " is not a run folder written by dream run (or its log "
+                             "was not finished: a run.lcmlog.part is renamed when the run ends)");
+  }
+  std::ifstream in(log, std::ios::binary);
+  unsigned char head[4] = {0, 0, 0, 0};
+  if (!in.read(reinterpret_cast<char*>(head), sizeof(head))) {
+    throw std::runtime_error(log + ": " + (in.eof() ? "empty or shorter than one event" : "cannot be read") +
+                             "; not an LCM log");
+  }
+  if (!std::equal(head, head + 4, kLcmLogSyncWord)) {
+    throw std::runtime_error(log + ": not an LCM log (it does not start with an event's sync word 0xEDA1DA01)");
+  }
+  return log;
+}
+
+}  // namespace
+
+int RunReplay(const ReplayArgs& args) {
+  const std::string log = LogToReplay(args.run);
+  if (!fs::exists(DREAM_LCM_JAR)) {
+    throw std::runtime_error(std::string("lcm.jar ") + DREAM_LCM_JAR + " is missing: apt-get install liblcm-java");
+  }
+  const std::string url = lcm::ResolveLcmUrl(args.lcm_url);
+  // Debian's lcm-logplayer-gui passes -Xincgc, which Java 17 refuses: start
+  // its class directly, with the script's heap sizes.
+  std::vector<std::string> player = {"java", "-Xmx64m", "-Xms32m", "-cp", DREAM_LCM_JAR, "lcm.logging.LogPlayer",
+                                     "--lcm-url=" + url};
+  if (args.paused) player.push_back("--paused");
+  player.push_back(log);
+  std::vector<std::string> spy;
+  if (args.with_spy) spy = {SelfExecutable(), "spy", "--lcm-url=" + url};
+  if (args.print_command_only) {
+    std::cout << ShellCommandLine(player) << "\n";
+    if (!spy.empty()) std::cout << ShellCommandLine(spy) << "\n";
+    return kExitOk;
+  }
+  spdlog::info("replaying {} on {}{}", log, url, args.with_spy ? " into lcm-spy" : "");
+  ProcessGroup children;
+  if (!spy.empty()) children.Start(spy);
+  const pid_t player_pid = children.Start(player);
+  int code = -1;
+  while ((code = children.WaitFor(player_pid, 0.2)) < 0) {
+    if (StopFlag().load()) children.SignalAll(SIGTERM);
+  }
+  return code == 0 || StopFlag().load() ? kExitOk : kExitRunFailed;
+}
+
+void DeclareReplayCommand(CommandLine& line) {
+  auto args = std::make_shared<ReplayArgs>();
+  CLI::App* command = line.AddCommand(
+      "replay",
+      "Play a recorded run on LCM through LCM's log player window: seek with the slider, pause, step,\n"
+      "change the speed, mute channels. Watch it with dream spy, or any LCM tool, on the same URL.\n"
+      "Example: dream replay runs/go_to_goal --spy",
+      [args] { return RunReplay(*args); });
+  command->add_option("run", args->run, "A run folder (its run.lcmlog) or an .lcmlog file")->required();
+  command->add_option("--lcm-url", args->lcm_url,
+                      "LCM URL to play on (default $LCM_DEFAULT_URL, else udpm://239.255.76.67:7667?ttl=0)");
+  command->add_flag("--paused", args->paused, "Open the log paused at its start");
+  command->add_flag("--spy", args->with_spy, "Also open lcm-spy (dream spy) on the same URL");
+  command->add_flag("--print,--print-command", args->print_command_only,
+                    "Print the commands instead of starting them");
+}
+
+}  // namespace dream::cli

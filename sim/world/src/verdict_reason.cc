@@ -1,0 +1,9 @@
+#include "dream/sim/verdict_reason.h"
+
+namespace dream::sim {
+
+std::string VerdictReason::Text() const {
+  return rule + ": " + problem + (find_out.empty() ? "" : " (more: " + find_out + ")");
+}
+
+}  // namespace dream::sim
