@@ -100,7 +100,9 @@ def test(ctx):
         bus.close()
     code = ctx.wait("launch", timeout=120)
     output = ctx.output("launch")
-    check(code == 0, f"dream launch exited {code} under forged messages, expected 0: {output[-800:]}")
+    # 5: the run finished with the right poses, and its verdict names the bad messages (not ready).
+    check(code == 5, f"dream launch exited {code} under forged messages, expected 5: {output[-800:]}")
+    check("bad_messages: " in output, f"the printed verdict does not name the bad messages: {output[-800:]}")
     check(rounds == len(INJECT_AT_STEPS), f"the run ended before every forgery round was sent ({rounds})")
     check("did not exit cleanly" not in output, "an agent process failed under forged messages")
     summary = read_summary(launched)
