@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "command_line.h"
+#include "dream/sim/output_folder_lock.h"
 #include "commands.h"
 #include "process_group.h"
 #include "run_output.h"
@@ -13,7 +14,12 @@
 
 namespace dream::cli {
 
+// Measured: the simulator and a C++ agent peak at 13 open descriptors under
+// udpm (LCM's sockets and pipes, the log, the lock, stdio); room for Python agents.
+constexpr int kDescriptorsPerProcess = 24;
+
 int RunLaunch(const RunArgs& args) {
+  ProcessGroup::RequireDescriptors(kDescriptorsPerProcess);
   // Check the config here, so a mistake is reported once, not by N+1 children.
   const config::RunConfig config = LoadConfig(args);
   // Chosen once, here: the simulator gets it as --out, so a numbered folder
@@ -37,7 +43,11 @@ int RunLaunch(const RunArgs& args) {
   if (args.steps != 0) sim_argv.push_back("--steps=" + std::to_string(args.steps));
   if (!args.mode.empty()) sim_argv.push_back("--mode=" + args.mode);
   if (args.all_steps) sim_argv.push_back("--all-steps");
-  const pid_t sim = children.Start(sim_argv);
+  // The simulator writes the folder this process has locked: it inherits the lock.
+  const int lock_fd = sim::OutputFolderLock::DescriptorOf(out_dir);
+  const pid_t sim = children.Start(
+      sim_argv, std::string(),
+      {std::string(sim::OutputFolderLock::kInheritedVariable) + "=" + std::to_string(lock_fd)}, lock_fd);
   std::vector<pid_t> agents;
   for (int id = 0; id < config.num_robots; ++id) {
     std::vector<std::string> agent_argv = {AgentBinaryPath()};

@@ -2,13 +2,15 @@
 
 #include <fcntl.h>
 #include <signal.h>
-#include <spawn.h>
+#include <sys/prctl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 #include <thread>
@@ -27,24 +29,87 @@ ProcessGroup::~ProcessGroup() {
   }
 }
 
-pid_t ProcessGroup::Start(const std::vector<std::string>& argv) { return Start(argv, std::string()); }
+pid_t ProcessGroup::Start(const std::vector<std::string>& argv) { return Start(argv, std::string(), {}, -1); }
 
 pid_t ProcessGroup::Start(const std::vector<std::string>& argv, const std::string& output_path) {
+  return Start(argv, output_path, {}, -1);
+}
+
+pid_t ProcessGroup::Start(const std::vector<std::string>& argv, const std::string& output_path,
+                          const std::vector<std::string>& extra_env, int inherited_fd) {
+  if (argv.empty()) throw std::invalid_argument("ProcessGroup::Start: no program");
+  // Everything the child needs is made before fork(): after it, the child
+  // calls only async-signal-safe functions.
   std::vector<char*> args;
   for (const std::string& arg : argv) args.push_back(const_cast<char*>(arg.c_str()));
   args.push_back(nullptr);
-  pid_t pid = 0;
-  posix_spawn_file_actions_t actions;
-  ::posix_spawn_file_actions_init(&actions);
-  if (!output_path.empty()) {
-    ::posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-    ::posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, output_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
-                                       0644);
-    ::posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  std::vector<std::string> environment;
+  for (char** variable = environ; *variable != nullptr; ++variable) environment.emplace_back(*variable);
+  environment.insert(environment.end(), extra_env.begin(), extra_env.end());
+  std::vector<char*> envp;
+  for (std::string& variable : environment) envp.push_back(variable.data());
+  envp.push_back(nullptr);
+  // Search PATH as posix_spawnp would, here rather than in the child.
+  std::string program = argv[0];
+  if (program.find('/') == std::string::npos) {
+    const char* path = std::getenv("PATH");
+    std::string dirs = path != nullptr ? path : "/usr/local/bin:/usr/bin:/bin";
+    for (size_t start = 0; start <= dirs.size();) {
+      const size_t end = std::min(dirs.find(':', start), dirs.size());
+      const std::string candidate = (end > start ? dirs.substr(start, end - start) : ".") + "/" + argv[0];
+      if (::access(candidate.c_str(), X_OK) == 0) {
+        program = candidate;
+        break;
+      }
+      start = end + 1;
+    }
   }
-  const int error = ::posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), environ);
-  ::posix_spawn_file_actions_destroy(&actions);
-  if (error != 0) {
+  // The child reports a failed exec through this pipe; a successful exec closes it.
+  int report[2];
+  if (::pipe2(report, O_CLOEXEC) != 0) {
+    throw std::runtime_error("cannot start " + argv[0] + ": " + std::strerror(errno) +
+                             (errno == EMFILE ? " (raise the limit with ulimit -n)" : ""));
+  }
+  const pid_t parent = ::getpid();
+  const pid_t pid = ::fork();
+  if (pid < 0) {
+    const int error = errno;
+    ::close(report[0]);
+    ::close(report[1]);
+    throw std::runtime_error("cannot start " + argv[0] + ": " + std::strerror(error));
+  }
+  if (pid == 0) {
+    // Dies with the parent; if the parent died before prctl, it is already gone.
+    ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (::getppid() != parent) ::_exit(127);
+    int error = 0;
+    if (!output_path.empty()) {
+      const int in = ::open("/dev/null", O_RDONLY);
+      const int out = ::open(output_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      if (in < 0 || out < 0 || ::dup2(in, STDIN_FILENO) < 0 || ::dup2(out, STDOUT_FILENO) < 0 ||
+          ::dup2(out, STDERR_FILENO) < 0) {
+        error = errno;
+      }
+    }
+    if (error == 0 && inherited_fd >= 0 && ::fcntl(inherited_fd, F_SETFD, 0) != 0) error = errno;
+    if (error == 0) {
+      ::execve(program.c_str(), args.data(), envp.data());
+      error = errno;
+    }
+    const ssize_t written = ::write(report[1], &error, sizeof(error));
+    (void)written;
+    ::_exit(127);
+  }
+  ::close(report[1]);
+  int error = 0;
+  ssize_t got = 0;
+  while ((got = ::read(report[0], &error, sizeof(error))) < 0 && errno == EINTR) {
+  }
+  ::close(report[0]);
+  if (got > 0) {
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
     throw std::runtime_error("cannot start " + argv[0] + ": " + std::strerror(error));
   }
   running_.push_back(pid);
@@ -85,6 +150,19 @@ int ProcessGroup::TryWait(pid_t pid) {
 
 void ProcessGroup::SignalAll(int signal) {
   for (pid_t pid : running_) ::kill(pid, signal);
+}
+
+void ProcessGroup::RequireDescriptors(int needed) {
+  struct rlimit limit {};
+  if (::getrlimit(RLIMIT_NOFILE, &limit) != 0) return;  // nothing to check against
+  const auto wanted = static_cast<rlim_t>(needed);
+  if (limit.rlim_cur == RLIM_INFINITY || limit.rlim_cur >= wanted) return;
+  if (limit.rlim_max == RLIM_INFINITY || limit.rlim_max >= wanted) {
+    limit.rlim_cur = wanted;
+    if (::setrlimit(RLIMIT_NOFILE, &limit) == 0) return;
+  }
+  throw std::runtime_error("too few file descriptors: limit " + std::to_string(limit.rlim_cur) + ", need about " +
+                           std::to_string(needed) + " per process; raise with ulimit -n " + std::to_string(needed));
 }
 
 std::string SelfExecutable() {

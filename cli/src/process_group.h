@@ -7,8 +7,10 @@
 
 namespace dream::cli {
 
-/// Child processes started by one `dream` command (launch, spy). Children
-/// get SIGTERM when the group is destroyed, so none outlives its parent.
+/// Child processes started by one `dream` command (launch, sweep, spy).
+/// None outlives its parent: each gets SIGTERM when the group is destroyed,
+/// and the kernel sends it SIGTERM when the parent dies any other way
+/// (PR_SET_PDEATHSIG, even after SIGKILL).
 class ProcessGroup {
  public:
   ProcessGroup() = default;
@@ -21,6 +23,10 @@ class ProcessGroup {
   /// The same, with stdout and stderr written to `output_path` (created or
   /// truncated) and stdin from /dev/null (dream sweep's children).
   pid_t Start(const std::vector<std::string>& argv, const std::string& output_path);
+  /// The same, with `extra_env` ("NAME=value") added to the environment and
+  /// the descriptor `inherited_fd` (if >= 0) left open in the child.
+  pid_t Start(const std::vector<std::string>& argv, const std::string& output_path,
+              const std::vector<std::string>& extra_env, int inherited_fd);
   /// Waits for `pid`; returns its exit code (128 + signal when killed).
   int Wait(pid_t pid);
   /// Waits for `pid` up to `timeout_s`; returns its exit code or -1 on timeout.
@@ -29,6 +35,14 @@ class ProcessGroup {
   int TryWait(pid_t pid);
   /// Sends `signal` to every child still running.
   void SignalAll(int signal);
+
+  /// Checks, before any child starts, that each process (this one and its
+  /// children, which inherit the limit) may open about `needed` descriptors:
+  /// raises the soft limit up to the hard one if that is enough, else throws
+  /// "too few file descriptors: limit N, need about M; raise with ulimit -n".
+  /// (Without it, LCM failed to open its sockets in every child and the run
+  /// stalled until the agents timed out.)
+  static void RequireDescriptors(int needed);
 
  private:
   std::vector<pid_t> running_;

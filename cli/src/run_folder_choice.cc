@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "dream/sim/output_folder.h"
+#include "dream/sim/output_folder_lock.h"
 
 namespace dream::cli {
 namespace fs = std::filesystem;
@@ -35,6 +36,8 @@ bool RunFolderChoice::HoldsRun(const std::string& dir) {
 RunFolderChoice::RunFolderChoice(const std::string& out, const std::string& default_dir, bool overwrite,
                                  Create create) {
   if (!out.empty()) {
+    // Locked before its run is looked at or removed: a run writing it refuses this one.
+    if (fs::is_directory(out)) sim::OutputFolderLock::HoldUntilExit(out);
     if (HoldsRun(out)) {
       if (!overwrite) {
         throw std::runtime_error("--out " + out + " already holds a run (run.lcmlog or summary.json); pass " +
@@ -44,29 +47,36 @@ RunFolderChoice::RunFolderChoice(const std::string& out, const std::string& defa
       RemoveEarlierRun(out);
     }
     dir_ = create == Create::kNow ? sim::OutputFolder(out).dir() : out;
+    if (create == Create::kNow) sim::OutputFolderLock::HoldUntilExit(dir_);
     return;
   }
   std::string chosen = default_dir;
-  if (HoldsRun(default_dir)) {
-    if (overwrite) {
+  if (overwrite) {
+    if (fs::is_directory(default_dir)) sim::OutputFolderLock::HoldUntilExit(default_dir);
+    if (HoldsRun(default_dir)) {
       spdlog::info("--overwrite: replacing the run in {}", default_dir);
       RemoveEarlierRun(default_dir);
-    } else {
-      // A folder is taken once it holds a run; an empty one (a run that
-      // failed before starting) is reused.
-      for (int n = 2; HoldsRun(chosen); ++n) chosen = default_dir + "_" + std::to_string(n);
-      renamed_ = true;
     }
+  } else {
+    // A folder is taken once it holds a run or another process writes it; an
+    // empty one (a run that failed before starting) is reused.
+    for (int n = 2; HoldsRun(chosen) || (fs::is_directory(chosen) && !sim::OutputFolderLock::TryHoldUntilExit(chosen));
+         ++n) {
+      chosen = default_dir + "_" + std::to_string(n);
+    }
+    renamed_ = chosen != default_dir;
   }
   if (create == Create::kNow) {
     dir_ = sim::OutputFolder(chosen, sim::OutputFolder::Parents::kCreate).dir();
+    sim::OutputFolderLock::HoldUntilExit(dir_);
   } else {
     std::error_code error;  // a failure shows when the folder is made
     fs::create_directories(fs::path(chosen).parent_path(), error);
     dir_ = chosen;
   }
   if (renamed_) {
-    spdlog::warn("{} holds an earlier run, so this one goes to {} (--out DIR to choose, --overwrite to replace)",
+    spdlog::warn("{} holds an earlier run (or one being written), so this one goes to {} (--out DIR to choose, "
+                 "--overwrite to replace)",
                  default_dir, dir_);
   }
 }

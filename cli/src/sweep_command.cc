@@ -17,6 +17,7 @@
 #include "config_override.h"
 #include "dream/agents/controller_factory.h"
 #include "dream/sim/output_folder.h"
+#include "dream/sim/output_folder_lock.h"
 #include "dream/config/run_config.h"
 #include "dream/sim/atomic_file.h"
 #include "parallel_runner.h"
@@ -191,6 +192,7 @@ int RunSweep(const SweepArgs& args) {
   sim::OutputFolder(out_dir, args.out_dir.empty() ? sim::OutputFolder::Parents::kCreate
                                                   : sim::OutputFolder::Parents::kMustExist)
       .MakeSubfolder("runs");
+  sim::OutputFolderLock::HoldUntilExit(out_dir);  // a second sweep into it is refused while this one runs
   if (args.out_dir.empty() && out_dir != "sweeps/" + base.name) {
     spdlog::warn("sweeps/{} holds an earlier sweep, so this one goes to {} (--out DIR to choose)", base.name, out_dir);
   }

@@ -91,7 +91,7 @@ TEST_F(ImportTest, PerfectLabResultGivesTheSimulatedRunBack) {
   while (reader.Next(&record)) commands += record.channel.rfind("DREAM_CMD_", 0) == 0 ? 1 : 0;
   EXPECT_EQ(commands, sim.last_step() * sim.num_robots);
   EXPECT_THAT(testing::FilesIn(fs::path(imported.log_path).parent_path().string()),
-              ::testing::ElementsAre("config.yaml", "run.lcmlog", "summary.json", "trajectories.png"));
+              ::testing::ElementsAre(".dream.lock", "config.yaml", "run.lcmlog", "summary.json", "trajectories.png"));
   EXPECT_THAT(imported.summary_json, HasSubstr("\"lab\": {"));
   EXPECT_THAT(imported.summary_json, HasSubstr("\"kind\": \"go_to_goal\""));
 }
