@@ -24,10 +24,15 @@ RunTrack ReadRunTrack(const std::string& log_path, RunEnd* end) {
   robot_fault_t fault;
   std::map<int, std::string> faults;
   auto fail = [&log_path](const std::string& problem) { throw std::runtime_error(log_path + ": " + problem); };
+  // A message the reader cannot use, named by the event's index and byte offset.
+  auto undecodable = [&](const char* channel, const std::string& problem) {
+    fail("event " + std::to_string(reader.event_index()) + " at byte " + std::to_string(reader.event_offset()) + ": a " +
+         channel + " message cannot be decoded; in the message: " + problem);
+  };
   while (reader.Next(&record)) {
     const int size = static_cast<int>(record.data.size());
     if (record.channel == lcm::kPosesChannel) {
-      if (!lcm::Decode(record.data.data(), size, &poses)) fail("a DREAM_POSES message cannot be decoded");
+      if (auto problem = lcm::DecodeProblem(record.data.data(), size, &poses)) undecodable("DREAM_POSES", *problem);
       const int64_t expected = track.last_step() + 1;
       if (poses.step != expected) {
         fail("DREAM_POSES jumps from step " + std::to_string(track.last_step()) + " to step " +
@@ -52,14 +57,14 @@ RunTrack ReadRunTrack(const std::string& log_path, RunEnd* end) {
       track.commands.resize(track.poses.size());
       track.obstacles.push_back(obstacles_step == poses.step ? obstacles : std::vector<sim::ObstacleState>{});
     } else if (record.channel == lcm::kObstaclesChannel) {
-      if (!lcm::Decode(record.data.data(), size, &obstacle_message)) fail("a DREAM_OBSTACLES message cannot be decoded");
+      if (auto problem = lcm::DecodeProblem(record.data.data(), size, &obstacle_message)) undecodable("DREAM_OBSTACLES", *problem);
       obstacles.clear();
       for (const rectangle_obstacle_t& o : obstacle_message.obstacles) {
         obstacles.push_back(sim::ObstacleState{o.id, o.center_x, o.center_y, o.width, o.height, o.vx, o.vy});
       }
       obstacles_step = obstacle_message.step;
     } else if (record.channel == lcm::kStatusChannel && end != nullptr) {
-      if (!lcm::Decode(record.data.data(), size, &status)) fail("a DREAM_STATUS message cannot be decoded");
+      if (auto problem = lcm::DecodeProblem(record.data.data(), size, &status)) undecodable("DREAM_STATUS", *problem);
       end->seen = true;
       end->state = status.state;
       end->detail = status.detail;

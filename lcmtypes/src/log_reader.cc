@@ -71,6 +71,7 @@ bool LogReader::Next(LogRecord* record) {
   record->data.resize(static_cast<size_t>(data_bytes));
   in_.read(reinterpret_cast<char*>(record->data.data()), data_bytes);
   if (!in_) Fail("a read error");
+  event_offset_ = bytes_read_;
   bytes_read_ += kEventHeaderBytes + channel_bytes + data_bytes;
   ++events_;
   return true;

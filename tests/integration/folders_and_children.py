@@ -10,7 +10,8 @@ In a private network namespace:
   - two `dream run`s without --out in one folder: the second, started while the first writes
     runs/<name>, goes to runs/<name>_2;
   - SIGKILL of a `dream launch` (simulator + 8 agents) and of a `dream sweep` (2 `dream run`s at
-    once): within 5 s none of their children is left (a zombie waiting for its reaper is gone);
+    once): within 5 s none of their children is left (a zombie waiting for its reaper is gone), and
+    the launch's simulator, stopped by SIGTERM, still wrote its summary ("interrupted");
   - `ulimit -n 8` under `dream launch`: exit 1 within 5 s, "too few file descriptors: limit 8,
     need about 24 per process; raise with ulimit -n 24" (it used to stall 90 s).
 
@@ -23,7 +24,7 @@ import signal
 import subprocess
 import time
 
-from dreamtest import arguments, check, main, require_private_netns, tail
+from dreamtest import arguments, check, main, read_summary, require_private_netns, tail
 
 KILL_BOUND_S = 5.0
 
@@ -115,6 +116,9 @@ def test(ctx):
     os.kill(killed.pid, signal.SIGKILL)
     killed.wait()
     expect_none_left(children, "dream launch")
+    # The simulator got SIGTERM, as from Ctrl-C: its log and summary are whole.
+    summary = read_summary(ctx.path("killed"))
+    check(summary.get("end") == "interrupted", f"the killed launch's summary ends {summary.get('end')!r}")
 
     sweep = ctx.start("killed_sweep", [dream, "sweep", config, "--seeds", "1-4", "--jobs", "2",
                                        "--set", "world.mode=realtime", "--steps", "3000",

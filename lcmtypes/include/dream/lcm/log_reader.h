@@ -28,6 +28,11 @@ class LogReader {
   /// @throws std::runtime_error when the file ends inside an event.
   bool Next(LogRecord* record);
 
+  /// Where the event last returned by Next() starts in the file, and its
+  /// index (from 0): for errors about its message, "at byte N".
+  int64_t event_offset() const { return event_offset_; }
+  int64_t event_index() const { return events_ - 1; }
+
   /// Every event of the file at `path`.
   static std::vector<LogRecord> ReadAll(const std::string& path);
 
@@ -39,6 +44,7 @@ class LogReader {
   int64_t file_size_ = 0;
   int64_t events_ = 0;
   int64_t bytes_read_ = 0;  // bytes of complete events so far
+  int64_t event_offset_ = 0;
 };
 
 }  // namespace dream::lcm
