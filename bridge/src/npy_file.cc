@@ -206,8 +206,12 @@ NpyArray DecodeNpy(const std::string& bytes, const std::string& name) {
   } else {
     Fail(name, ".npy format version " + std::to_string(major) + "." + std::to_string(minor) + " is not supported");
   }
-  if (header_length > 1 << 20 || bytes.size() < header_start + header_length) {
-    Fail(name, "cut short inside the .npy header");
+  if (header_length > 1 << 20) {
+    Fail(name, "the .npy header length field says " + std::to_string(header_length) + " bytes; numpy writes a few hundred");
+  }
+  if (bytes.size() < header_start + header_length) {
+    Fail(name, "cut short inside the .npy header: its length field says " + std::to_string(header_length) +
+                   " bytes, " + std::to_string(bytes.size() - header_start) + " follow");
   }
   std::string header = bytes.substr(header_start, header_length);
   while (!header.empty() && (header.back() == '\n' || header.back() == ' ')) header.pop_back();
@@ -222,19 +226,22 @@ NpyArray DecodeNpy(const std::string& bytes, const std::string& name) {
     Fail(name, "is in Fortran order; save it with np.save(name, np.ascontiguousarray(array))");
   }
   int64_t count = 1;
+  std::string shape_text;
+  for (int64_t d : array.shape) shape_text += (shape_text.empty() ? "" : ", ") + std::to_string(d);
   for (int64_t d : array.shape) {
-    if (d != 0 && count > std::numeric_limits<int64_t>::max() / 8 / d) Fail(name, "has an absurd shape");
+    if (d != 0 && count > std::numeric_limits<int64_t>::max() / 8 / d) Fail(name, "has an absurd shape (" + shape_text + ")");
     count *= d;
   }
   const size_t data_start = header_start + header_length;
   const auto expected = static_cast<uint64_t>(count) * 8;
   const uint64_t actual = bytes.size() - data_start;
   if (actual < expected) {
-    Fail(name, "is cut short: its shape needs " + std::to_string(expected) + " bytes of data, it has " +
-                   std::to_string(actual));
+    Fail(name, "is cut short: its shape (" + shape_text + ") needs " + std::to_string(expected) +
+                   " bytes of data, it has " + std::to_string(actual));
   }
   if (actual > expected) {
-    Fail(name, "has " + std::to_string(actual - expected) + " bytes after the data its shape describes");
+    Fail(name, "has " + std::to_string(actual - expected) + " bytes after the data its shape (" + shape_text +
+                   ") describes");
   }
   array.values.resize(static_cast<size_t>(count));
   if (count > 0) std::memcpy(array.values.data(), bytes.data() + data_start, static_cast<size_t>(expected));
