@@ -33,7 +33,7 @@ function(dream_library_targets dir out)
 endfunction()
 
 # What a controller builds against, as dream::<name>.
-set(DREAM_EXPORTED_LIBRARIES world config msgs lcm agents agent_host)
+set(DREAM_EXPORTED_LIBRARIES world config_node config msgs lcm agents agent_host)
 set(exported_targets)
 foreach(name IN LISTS DREAM_EXPORTED_LIBRARIES)
   set_target_properties(dream_${name} PROPERTIES EXPORT_NAME ${name})

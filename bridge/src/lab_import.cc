@@ -88,6 +88,19 @@ void WriteStatus(sim::RunRecorder& recorder, const sim::World& world, int64_t ru
   WriteMessage(recorder, lcm::kStatusChannel, world.utime(), status, buffer);
 }
 
+/// An imported lab run's id: derived from its poses (FNV-1a), so importing the
+/// same lab data twice (from .npy or .mat) writes the same log; never 0.
+int64_t ImportedRunId(const RunTrack& track) {
+  uint64_t hash = 1469598103934665603ULL;
+  auto mix = [&hash](const void* data, size_t size) {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < size; ++i) hash = (hash ^ bytes[i]) * 1099511628211ULL;
+  };
+  mix(&track.num_robots, sizeof(track.num_robots));
+  for (const sim::Pose2& pose : track.poses) mix(&pose, sizeof(pose));
+  return hash == 0 ? 1 : static_cast<int64_t>(hash);
+}
+
 /// Writes the log and returns the world stepped to the end (for the summary).
 LabReplayWorld WriteLog(const RunTrack& track, const sim::WorldParams& params, int8_t end_state,
                         const std::string& detail, const std::string& log_path, int64_t* events = nullptr) {
@@ -98,8 +111,7 @@ LabReplayWorld WriteLog(const RunTrack& track, const sim::WorldParams& params, i
   obstacles_t obstacles;
   robot_poses_t poses;
   velocity_command_t command;
-  // An imported lab run gets an id of its own, as every run does.
-  const int64_t run_id = lcm::NewRunId();
+  const int64_t run_id = ImportedRunId(track);
   obstacles.run_id = run_id;
   poses.run_id = run_id;
   command.run_id = run_id;

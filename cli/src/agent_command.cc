@@ -20,7 +20,7 @@
 #include "shared_options.h"
 #include "dream/agents/agent_host.h"
 #include "dream/agents/controller_factory.h"
-#include "dream/config/run_config.h"
+#include "dream/config/controller_config.h"
 #include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/lcm_url.h"
 
@@ -80,7 +80,8 @@ std::vector<int> ParseRobotList(const std::string& text, int num_robots) {
 }
 
 int RunAgents(const AgentArgs& args) {
-  const config::RunConfig config = OverriddenConfig(args.config_path, args.seed, args.sets).Load();
+  // The controller's part only: an agent does no world work (and does not link the world).
+  const config::ControllerConfig config = OverriddenConfig(args.config_path, args.seed, args.sets).LoadController();
   const std::vector<int> ids = ParseRobotList(args.robots, config.num_robots);
   lcm::LcmBus bus(lcm::ResolveLcmUrl(args.lcm_url));
   HostedAgents host(bus, config, ids);

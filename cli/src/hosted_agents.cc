@@ -13,7 +13,7 @@ agents::PythonAgentHost::Paths PythonPaths() { return {DataFiles::PythonRuntimeD
 
 }  // namespace
 
-void HostedAgents::Check(const config::RunConfig& config) {
+void HostedAgents::Check(const config::ControllerConfig& config) {
   if (agents::IsPythonController(config)) {
     PythonHostLibrary::Get().Check(agents::PythonControllerSpecJson(config), PythonPaths());
   } else {
@@ -21,7 +21,7 @@ void HostedAgents::Check(const config::RunConfig& config) {
   }
 }
 
-HostedAgents::HostedAgents(lcm::LcmBus& bus, const config::RunConfig& config, const std::vector<int>& robot_ids)
+HostedAgents::HostedAgents(lcm::LcmBus& bus, const config::ControllerConfig& config, const std::vector<int>& robot_ids)
     : bus_(bus) {
   if (agents::IsPythonController(config)) {
     python_ = PythonHostLibrary::Get().Create(bus, agents::PythonControllerSpecJson(config), robot_ids, NewAgentId(),

@@ -8,7 +8,7 @@
 
 #include "dream/agents/agent_host.h"
 #include "dream/agents/python_agent_host.h"
-#include "dream/config/run_config.h"
+#include "dream/config/controller_config.h"
 #include "dream/lcm/lcm_bus.h"
 
 namespace dream::cli {
@@ -22,10 +22,10 @@ class HostedAgents {
   /// Checks the controller section as far as can be done before a run: the
   /// kind and its keys, and for the python kind its module, class and own
   /// keys. @throws config::ConfigError naming file, line and key.
-  static void Check(const config::RunConfig& config);
+  static void Check(const config::ControllerConfig& config);
 
   /// Builds the agents of `robot_ids` and subscribes them on `bus`.
-  HostedAgents(lcm::LcmBus& bus, const config::RunConfig& config, const std::vector<int>& robot_ids);
+  HostedAgents(lcm::LcmBus& bus, const config::ControllerConfig& config, const std::vector<int>& robot_ids);
 
   /// Handles `bus` until the world ends the run (true), or `stop` / silence (false).
   bool Run(const std::atomic<bool>& stop, double idle_timeout_s);

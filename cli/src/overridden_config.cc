@@ -8,7 +8,6 @@
 #include "dream/config/config_error.h"
 #include "dream/config/config_node.h"
 #include "sweep_parameter.h"
-#include "sweep_plan.h"
 
 namespace dream::cli {
 
@@ -44,21 +43,17 @@ OverriddenConfig::OverriddenConfig(const std::string& path, long long seed, cons
   }
 }
 
-config::RunConfig OverriddenConfig::Load() const {
-  if (overrides_.empty()) return config::LoadRunConfigFile(path_);
+config::ConfigNode OverriddenConfig::Document() const {
+  if (overrides_.empty()) return config::ConfigNode::LoadFile(path_);
+  return config::ConfigNode(root_, path_, "");
+}
+
+config::ControllerConfig OverriddenConfig::LoadController() const {
   try {
-    // Checked in memory: an overridden value keeps its key's line in the file.
-    return config::LoadRunConfig(config::ConfigNode(root_, path_, ""));
+    return config::LoadControllerConfig(Document());
   } catch (const config::ConfigError& e) {
     throw config::ConfigError(Noted(e.what()));
   }
-}
-
-std::string OverriddenConfig::FolderText(const config::RunConfig& config) const {
-  if (overrides_.empty()) return config::RunFolderConfigText(config, text_);
-  return config::RunFolderConfigText(
-      config, SweepPlan::EmitConfig(root_, path_ + " with " + OptionsText() +
-                                               " (the values below include them; comments were not kept)."));
 }
 
 std::string OverriddenConfig::Noted(const std::string& message) const {

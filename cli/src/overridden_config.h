@@ -5,7 +5,12 @@
 #include <string>
 #include <vector>
 
-#include "dream/config/run_config.h"
+#include "dream/config/config_node.h"
+#include "dream/config/controller_config.h"
+
+namespace dream::config {
+struct RunConfig;  // run_config.h: the whole run, which links the world
+}  // namespace dream::config
 
 namespace dream::cli {
 
@@ -23,12 +28,20 @@ class OverriddenConfig {
   ///         std::invalid_argument naming the --set and its key otherwise.
   OverriddenConfig(const std::string& path, long long seed, const std::vector<std::string>& sets);
 
-  /// The checked run config. @throws config::ConfigError "file:line: key: ..."
+  /// The config's root with the overrides applied (or the file as read).
+  config::ConfigNode Document() const;
+
+  /// The controller's part only (what an agent process needs; no world):
+  /// @throws config::ConfigError as Load() does, for those keys.
+  config::ControllerConfig LoadController() const;
+
+  /// The checked run config (defined in overridden_run_config.cc, which
+  /// links the world). @throws config::ConfigError "file:line: key: ..."
   /// which, for a config with overrides, also names them (the value at that
   /// line may be one the command line gave).
   config::RunConfig Load() const;
 
-  /// What the run folder's config.yaml holds: without overrides the file's
+  /// What the run folder's config.yaml holds (overridden_run_config.cc): without overrides the file's
   /// bytes (comments and all); with them the overridden YAML under a header
   /// naming the file and the options. Either way through
   /// config::RunFolderConfigText (relative plugin paths keep working).

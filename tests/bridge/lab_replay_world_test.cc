@@ -14,6 +14,7 @@
 #include "dream/bridge/submission_exporter.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/lcm/log_reader.h"
+#include "dream/lcm/run_id.h"
 #include "dream/sim/run_recorder.h"
 #include "dream/sim/unicycle_world.h"
 
@@ -28,7 +29,9 @@ std::map<std::string, std::vector<std::vector<uint8_t>>> Messages(const std::str
   lcm::LogReader reader(log);
   lcm::LogRecord record;
   while (reader.Next(&record)) {
-    if (record.channel.rfind(prefix, 0) == 0) messages[record.channel].push_back(record.data);
+    if (record.channel.rfind(prefix, 0) != 0) continue;
+    lcm::ClearRunId(&record.data);  // each run has its own id; the rest must be equal
+    messages[record.channel].push_back(record.data);
   }
   return messages;
 }

@@ -1,5 +1,7 @@
 #include "overridden_config.h"
 
+#include "dream/config/run_config.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>

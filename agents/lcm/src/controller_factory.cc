@@ -12,7 +12,7 @@ namespace dream::agents {
 namespace {
 
 // The controller section of `config`, once the plugins it names are loaded.
-const config::ConfigNode& ControllerSectionWithPlugins(const config::RunConfig& config) {
+const config::ConfigNode& ControllerSectionWithPlugins(const config::ControllerConfig& config) {
   ControllerPluginLoader::LoadAll(config);
   return config.controller;
 }
@@ -21,7 +21,7 @@ const config::ConfigNode& ControllerSectionWithPlugins(const config::RunConfig& 
 
 std::vector<std::string> ControllerFactory::Kinds() { return ControllerRegistry::Global().Names(); }
 
-ControllerFactory::ControllerFactory(const config::RunConfig& config)
+ControllerFactory::ControllerFactory(const config::ControllerConfig& config)
     : ControllerFactory(ControllerSectionWithPlugins(config), config.num_robots, config.seed) {}
 
 ControllerFactory::ControllerFactory(const config::ConfigNode& section, int num_robots, uint64_t run_seed)

@@ -36,7 +36,7 @@ std::string LastDlError() {
 
 }  // namespace
 
-void ControllerPluginLoader::LoadAll(const config::RunConfig& config) {
+void ControllerPluginLoader::LoadAll(const config::ControllerConfig& config) {
   for (size_t i = 0; i < config.plugins.size(); ++i) Load(config.plugins[i], config.plugin_nodes.at(i));
 }
 

@@ -96,12 +96,12 @@ Json PartsJson(const AgentPartsConfig& parts) {
 
 }  // namespace
 
-bool IsPythonController(const config::RunConfig& config) {
+bool IsPythonController(const config::ControllerConfig& config) {
   const config::ConfigNode kind = config.controller.Optional("kind");
   return kind.IsDefined() && kind.AsString() == PythonControllerBuilder::kKind;
 }
 
-std::string PythonControllerSpecJson(const config::RunConfig& config) {
+std::string PythonControllerSpecJson(const config::ControllerConfig& config) {
   const config::ConfigNode& section = config.controller;
   if (!IsPythonController(config)) {
     section.Required("kind").Fail("expected kind python for a Python controller spec");

@@ -10,6 +10,11 @@
 #include "dream/sim/start_pose_obstacle_check.h"
 
 namespace dream::config {
+
+static_assert(ControllerConfig::kMaxRobots == sim::RobotariumConstants::kMaxRobotsInSimulation &&
+                  ControllerConfig::kMaxRobotsOnHardware == sim::RobotariumConstants::kMaxRobotsOnHardware,
+              "the agents' robot limits must be the simulator's");
+
 namespace {
 
 using sim::RobotariumConstants;
@@ -271,68 +276,20 @@ std::vector<sim::RectangleObstacleSpec> ReadObstacles(const ConfigNode& root) {
   return specs;
 }
 
-// The folder relative plugin paths start from: `plugin_dir:` (absolute, so a
-// copy of the config elsewhere still finds them), else the config's folder.
-std::filesystem::path PluginBaseDir(const ConfigNode& root) {
-  namespace fs = std::filesystem;
-  const ConfigNode dir = root.Optional("plugin_dir");
-  if (dir.IsDefined()) {
-    const fs::path path = dir.AsString();
-    if (!path.is_absolute()) dir.Fail("must be an absolute path, got '" + path.string() + "'");
-    return path;
-  }
-  const fs::path folder = fs::path(root.file()).parent_path();
-  return folder.empty() ? fs::current_path() : fs::absolute(folder);
-}
-
-void ReadPlugins(const ConfigNode& root, RunConfig* config) {
-  const ConfigNode list = root.Optional("plugins");
-  if (!list.IsDefined()) return;
-  if (!list.IsSequence()) list.Fail("expected a list of plugin files, like [build/libmy_controller.so]");
-  const std::filesystem::path base = PluginBaseDir(root);
-  for (size_t i = 0; i < list.size(); ++i) {
-    const std::filesystem::path path = list[i].AsString();
-    if (path.empty()) list[i].Fail("expected the path of a plugin file, got an empty one");
-    config->plugins.push_back((path.is_absolute() ? path : base / path).lexically_normal().string());
-    config->plugin_nodes.push_back(list[i]);
-  }
-}
-
 }  // namespace
 
 RunConfig LoadRunConfig(const ConfigNode& root) {
   root.RejectUnknownKeys({"name", "seed", "robots", "steps", "stop_when_done", "world", "initial_poses",
                           "obstacles", "controller", "description", "plugins", "plugin_dir"});
   RunConfig config;
-  config.source = root.file();
-  config.name = root.Required("name").AsString();
   // Free text nobody reads back; a list or mapping here is still a mistake.
   root.GetString("description", "");
-  for (char c : config.name) {
-    const bool safe = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
-                      c == '-' || c == '.';
-    if (!safe || config.name == "." || config.name == "..") {
-      root.Required("name").Fail("'" + config.name + "' is not a plain name; use letters, digits, _ - . only");
-    }
-  }
-  const long long seed = root.GetInt("seed", 1);
-  if (seed < 0) root.Required("seed").Fail("must be >= 0, got " + std::to_string(seed));
-  config.seed = static_cast<uint64_t>(seed);
-  const ConfigNode robots = root.Required("robots");
-  const long long num_robots = robots.AsInt();
-  if (num_robots < 1 || num_robots > RobotariumConstants::kMaxRobotsInSimulation) {
-    robots.Fail("must be between 1 and " + std::to_string(RobotariumConstants::kMaxRobotsInSimulation) +
-                " (the Robotarium simulator's limit; the lab runs at most " +
-                std::to_string(RobotariumConstants::kMaxRobotsOnHardware) + "), got " + std::to_string(num_robots));
-  }
-  config.num_robots = static_cast<int>(num_robots);
+  // What agents read too, from the one place that checks it.
+  static_cast<ControllerConfig&>(config) = LoadControllerConfig(root);
   config.sim = ReadSimOptions(root);
   config.realism = ReadRealism(root);
   config.obstacles = ReadObstacles(root);
   config.initial_poses = ReadInitialPoses(root, config);
-  config.controller = root.Required("controller");
-  if (!config.controller.IsMap()) config.controller.Fail("expected a mapping with at least `kind:`");
-  ReadPlugins(root, &config);
   return config;
 }
 

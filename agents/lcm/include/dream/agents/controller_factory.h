@@ -8,7 +8,7 @@
 #include "dream/agents/experiment_builder.h"
 #include "dream/agents/robot_agent.h"
 #include "dream/config/config_node.h"
-#include "dream/config/run_config.h"
+#include "dream/config/controller_config.h"
 
 namespace dream::agents {
 
@@ -24,10 +24,10 @@ class ControllerFactory {
   /// Kinds this factory knows, for error messages and --help.
   static std::vector<std::string> Kinds();
 
-  /// The factory of a whole run config: loads the plugins it names
+  /// The factory of a run config's controller part (a RunConfig is one): loads the plugins it names
   /// (ControllerPluginLoader), then reads its `controller:` section.
   /// @throws config::ConfigError naming the key, and the plugin's path.
-  explicit ControllerFactory(const config::RunConfig& config);
+  explicit ControllerFactory(const config::ControllerConfig& config);
 
   /// @param run_seed seeds every sensor's noise and radio loss.
   /// @throws config::ConfigError naming the key and value when the section is

@@ -3,7 +3,7 @@
 #include <string>
 
 #include "dream/config/config_node.h"
-#include "dream/config/run_config.h"
+#include "dream/config/controller_config.h"
 
 namespace dream::agents {
 
@@ -19,7 +19,7 @@ class ControllerPluginLoader {
   ///         lacks an entry point, links another copy of the dream libraries,
   ///         was built for another plugin API version, or registers a kind
   ///         that exists already.
-  static void LoadAll(const config::RunConfig& config);
+  static void LoadAll(const config::ControllerConfig& config);
 
   /// The plugin at `path` (absolute); errors are reported at `entry`.
   static void Load(const std::string& path, const config::ConfigNode& entry);

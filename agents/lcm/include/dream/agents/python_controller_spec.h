@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "dream/config/run_config.h"
+#include "dream/config/controller_config.h"
 
 namespace dream::agents {
 
@@ -17,9 +17,9 @@ namespace dream::agents {
 /// agents.
 /// @throws config::ConfigError as ControllerFactory does, or when the kind is
 ///         not python.
-std::string PythonControllerSpecJson(const config::RunConfig& config);
+std::string PythonControllerSpecJson(const config::ControllerConfig& config);
 
 /// True when the run's controller is of kind python.
-bool IsPythonController(const config::RunConfig& config);
+bool IsPythonController(const config::ControllerConfig& config);
 
 }  // namespace dream::agents

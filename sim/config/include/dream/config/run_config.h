@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "dream/config/config_node.h"
+#include "dream/config/controller_config.h"
 #include "dream/sim/pose2.h"
 #include "dream/sim/realism_params.h"
 #include "dream/sim/rectangle_obstacle_spec.h"
@@ -18,11 +19,10 @@ namespace dream::config {
 /// collision-free from the seed, so every process of a run sees the same.
 /// Either way no robot starts touching another or a virtual obstacle (where
 /// the obstacle is at step 0).
-struct RunConfig {
-  std::string source;            ///< the file it came from (for messages)
-  std::string name;              ///< run name; default output folder runs/<name>
-  uint64_t seed = 1;             ///< seeds initial poses and every noise source
-  int num_robots = 0;            ///< 1..50, as the Robotarium simulator allows
+///
+/// The agents' part (name, seed, robots, controller, plugins) is the base
+/// ControllerConfig: what an agent process reads, without the world.
+struct RunConfig : ControllerConfig {
   sim::SimNodeOptions sim;       ///< pacing, timeouts, step limit
   sim::WorldParams world;        ///< Robotarium V2 constants (not configurable)
   /// `world.realism:` (a preset name, or a map of models); Ideal(), the
@@ -30,12 +30,6 @@ struct RunConfig {
   sim::RealismParams realism;
   std::vector<sim::Pose2> initial_poses;
   std::vector<sim::RectangleObstacleSpec> obstacles;
-  ConfigNode controller;         ///< the `controller:` section, read by the agents' factory
-  /// `plugins:` shared libraries that add controller kinds, as absolute
-  /// paths (relative ones are relative to `plugin_dir:`, by default the
-  /// config file's folder). The agents' factory loads them.
-  std::vector<std::string> plugins;
-  std::vector<ConfigNode> plugin_nodes;  ///< the `plugins:` entries, for errors naming them
 };
 
 /// Reads and checks a run config. @throws ConfigError naming file, line, key

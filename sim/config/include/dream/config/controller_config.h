@@ -1,0 +1,45 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "dream/config/config_node.h"
+
+namespace dream::config {
+
+/// The part of a run config that agents need: which run, how many robots,
+/// the seed of every noise source, the `controller:` section and the plugins
+/// that add controller kinds. Read without the world's keys, so an agent
+/// process never loads the simulator's library nor generates initial poses
+/// (RunConfig, the whole run, is one of these plus the world).
+struct ControllerConfig {
+  std::string source;            ///< the file it came from (for messages)
+  std::string name;              ///< run name; default output folder runs/<name>
+  uint64_t seed = 1;             ///< seeds initial poses and every noise source
+  int num_robots = 0;            ///< 1..kMaxRobots, as the Robotarium simulator allows
+  ConfigNode controller;         ///< the `controller:` section, read by the agents' factory
+  /// `plugins:` shared libraries that add controller kinds, as absolute
+  /// paths (relative ones are relative to `plugin_dir:`, by default the
+  /// config file's folder). The agents' factory loads them.
+  std::vector<std::string> plugins;
+  std::vector<ConfigNode> plugin_nodes;  ///< the `plugins:` entries, for errors naming them
+
+  /// The Robotarium simulator's robot limit (RobotariumConstants, checked
+  /// equal where both are seen, in run_config.cc).
+  static constexpr int kMaxRobots = 50;
+  /// What the lab runs at most, for the message.
+  static constexpr int kMaxRobotsOnHardware = 20;
+};
+
+/// Reads and checks `name`, `seed`, `robots`, `controller` and `plugins` /
+/// `plugin_dir` of a run config's root; other keys are left to
+/// LoadRunConfig. @throws ConfigError naming file, line, key and value.
+ControllerConfig LoadControllerConfig(const ConfigNode& root);
+
+/// The folder relative plugin paths start from: `plugin_dir:` (absolute, so a
+/// copy of the config elsewhere still finds them), else the config's folder.
+std::filesystem::path PluginBaseDir(const ConfigNode& root);
+
+}  // namespace dream::config
