@@ -203,7 +203,12 @@ ExportedSubmission ExportedSubmission::Read(const std::string& dir) {
   return exported;
 }
 
-NpyArray ReadResultFile(const std::string& path) {
+int64_t ExportedSubmission::MaxResultValues() const {
+  const int64_t rows = int64_t{params.options.settle_max_steps} + params.steps + 1;
+  return rows * ResultLayout::Columns(params.num_robots);
+}
+
+NpyArray ReadResultFile(const std::string& path, int64_t max_values) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path + ": cannot open the file");
   char head[8] = {};
@@ -214,7 +219,7 @@ NpyArray ReadResultFile(const std::string& path) {
   // MATLAB v5/v7.3 files start with a text header ("MATLAB 5.0 MAT-file"); v4 has none.
   const std::string extension = fs::path(path).extension().string();
   if ((got >= 6 && std::memcmp(head, "MATLAB", 6) == 0) || extension == ".mat") {
-    return ReadMatMatrix(path, SubmissionFiles::kResultMatVariable);
+    return ReadMatMatrix(path, SubmissionFiles::kResultMatVariable, max_values);
   }
   throw std::runtime_error(path + ": neither a .npy file nor a MATLAB .mat file; pass the " +
                            SubmissionFiles::kResult + " the submission saved");
@@ -347,7 +352,7 @@ sim::ViolationCounts WriteLabRunLog(const RunTrack& track, const sim::WorldParam
 ImportedRun ImportLabRun(const std::string& result_path, const std::string& export_dir, const std::string& out_dir) {
   const ExportedSubmission exported = ExportedSubmission::Read(export_dir);
   ImportedRun imported;
-  imported.lab = ParseLabResult(ReadResultFile(result_path), result_path, exported);
+  imported.lab = ParseLabResult(ReadResultFile(result_path, exported.MaxResultValues()), result_path, exported);
   const LabResult& lab = imported.lab;
   const RunTrack& track = lab.track;
 

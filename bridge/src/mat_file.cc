@@ -201,12 +201,14 @@ bool IsMat5(const std::string& bytes) {
 
 }  // namespace
 
-NpyArray ReadMatMatrix(const std::string& path, const std::string& variable) {
+NpyArray ReadMatMatrix(const std::string& path, const std::string& variable, int64_t max_values) {
   InstallMatioLog();
   last_matio_message.clear();
   auto fail = [&path](const std::string& problem) { throw std::runtime_error(path + ": " + problem + MatioDetail()); };
+  uint64_t file_size = 0;
   {
     const std::string bytes = ReadAll(path);
+    file_size = bytes.size();
     if (bytes.size() >= 116 && bytes.compare(0, 10, "MATLAB 5.0") == 0 && !IsMat5(bytes)) {
       throw std::runtime_error(path + ": a MATLAB 5.0 MAT-file header, but cut short or damaged before byte 128 " +
                                "(the version and byte-order marks)");
@@ -228,10 +230,22 @@ NpyArray ReadMatMatrix(const std::string& path, const std::string& variable) {
   if (rows > (size_t{1} << 28) || columns > (size_t{1} << 16) || rows * columns > (size_t{1} << 28)) {
     fail("variable '" + variable + "' is absurdly large: " + std::to_string(rows) + " x " + std::to_string(columns));
   }
+  const size_t count = rows * columns;
+  const std::string declared = "variable '" + variable + "' is " + std::to_string(rows) + " x " + std::to_string(columns);
+  if (count > static_cast<uint64_t>(max_values)) {
+    fail(declared + ": more than the " + std::to_string(max_values) + " values a result of this export can have");
+  }
+  // A value takes a byte of the file at least (MATLAB may store doubles as
+  // smaller integers); zlib packs at most about 1032 bytes into one.
+  const bool compressed = var->compression == MAT_COMPRESSION_ZLIB || Mat_GetVersion(mat.get()) == MAT_FT_MAT73;
+  const uint64_t holdable = compressed ? file_size * 1032 / sizeof(double) : file_size;
+  if (count > holdable) {
+    fail(declared + ", but the file's " + std::to_string(file_size) + " bytes cannot hold " + std::to_string(count) +
+         " values (damaged or cut short?)");
+  }
   // Read twice into buffers filled with two different patterns: libmatio
   // does not report every short read, and a value it did not read from the
   // file keeps the pattern, so the two reads differ.
-  const size_t count = rows * columns;
   std::vector<double> first(count, 1.0e300);
   std::vector<double> second(count, -2.0e-300);
   const int edge = static_cast<int>(count);

@@ -29,7 +29,8 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr uint32_t kSeed = 20261124;
-// Counts for CI (each test well under 20 s on 2 cores); DREAM_FUZZ_SCALE multiplies them.
+// Counts for CI (each test a few seconds on 2 cores; not asserted, tests are not timed);
+// DREAM_FUZZ_SCALE multiplies them.
 constexpr long kResultMutations = 1500;   // per result format (npy, mat v4, v5, v5 compressed)
 constexpr long kHdf5Mutations = 300;      // mat v7.3: HDF5 opens are slower
 constexpr long kParamsMutations = 1500;
@@ -71,22 +72,28 @@ TEST(FileMutationDriver, MutatedResultFilesAreImportedOrRefusedByName) {
     const long count = (sample.name == "mat_v73" ? kHdf5Mutations : kResultMutations) * FuzzScale();
     const std::string path = samples.Scratch("mutated_" + sample.name + (sample.name == "npy" ? ".npy" : ".mat"));
     long read = 0;
+    const auto format_start = std::chrono::steady_clock::now();
     for (long i = 0; i < count; ++i) {
       const std::string mutated = mutator.Mutate(sample.bytes);
       WriteBytes(path, mutated);
       const AllocationWatch watch;
       const Outcome outcome = ReadOrRefuse(
-          [&] { bridge::ParseLabResult(bridge::ReadResultFile(path), path, samples.exported()); }, path,
+          [&] {
+            const bridge::ExportedSubmission& exported = samples.exported();
+            bridge::ParseLabResult(bridge::ReadResultFile(path, exported.MaxResultValues()), path, exported);
+          },
+          path,
           sample.name + " mutation " + std::to_string(i));
       if (outcome == Outcome::kRead) ++read;
       ASSERT_LE(watch.largest(), 4 * mutated.size() + kAllocationSlackBytes) << sample.name << " mutation " << i;
     }
     // Most damage is refused; a flipped bit in a pose value is not damage a reader can see.
     EXPECT_LT(read, count) << sample.name;
-    std::printf("%s: %ld mutations, %ld imported, %ld refused\n", sample.name.c_str(), count, read, count - read);
+    std::printf("%s: %ld mutations, %ld imported, %ld refused (%.1f s)\n", sample.name.c_str(), count, read,
+                count - read, SecondsSince(format_start));
     RecordProperty(sample.name, std::to_string(count));
   }
-  EXPECT_LT(SecondsSince(start), 20.0 * static_cast<double>(FuzzScale()));
+  RecordProperty("seconds", std::to_string(SecondsSince(start)));
 }
 
 TEST(FileMutationDriver, MutatedParamsFilesAreReadOrRefusedByName) {
@@ -110,7 +117,7 @@ TEST(FileMutationDriver, MutatedParamsFilesAreReadOrRefusedByName) {
   }
   EXPECT_LT(read, count);
   std::printf("dream_params.npy: %ld mutations, %ld read, %ld refused\n", count, read, count - read);
-  EXPECT_LT(SecondsSince(start), 20.0 * static_cast<double>(FuzzScale()));
+  RecordProperty("seconds", std::to_string(SecondsSince(start)));
 }
 
 TEST(FileMutationDriver, MutatedRunLogsAreReadOrRefusedByEveryLogReader) {
@@ -155,7 +162,7 @@ TEST(FileMutationDriver, MutatedRunLogsAreReadOrRefusedByEveryLogReader) {
   }
   EXPECT_GT(refused_by_reader, 0);
   std::printf("run.lcmlog: %ld mutations, %ld refused by LogReader\n", count, refused_by_reader);
-  EXPECT_LT(SecondsSince(start), 20.0 * static_cast<double>(FuzzScale()));
+  RecordProperty("seconds", std::to_string(SecondsSince(start)));
 }
 
 }  // namespace

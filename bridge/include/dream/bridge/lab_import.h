@@ -22,6 +22,10 @@ struct ExportedSubmission {
   /// @throws std::runtime_error naming the file when something is missing,
   ///         or the parameters do not match the config.
   static ExportedSubmission Read(const std::string& dir);
+
+  /// The most values a result of this export can hold: every settle step,
+  /// every experiment step and the final pose, of (3 + 5 N) columns.
+  int64_t MaxResultValues() const;
 };
 
 /// A lab run as the submission script saved it, checked and turned into a
@@ -38,9 +42,11 @@ struct LabResult {
 };
 
 /// The rows of a result file: dream_result.npy, or a .mat file holding the
-/// same matrix as variable `dream_result` (chosen by the file's first bytes).
+/// same matrix as variable `dream_result` (chosen by the file's first bytes);
+/// a .mat variable declaring more than `max_values` values is refused before
+/// anything is allocated for them (a .npy's shape must match its bytes).
 /// @throws std::runtime_error naming the file.
-NpyArray ReadResultFile(const std::string& path);
+NpyArray ReadResultFile(const std::string& path, int64_t max_values = int64_t{1} << 26);
 
 /// Checks the rows strictly against the export (column count for its robot
 /// count, phases and steps in order, no more steps than planned, every value

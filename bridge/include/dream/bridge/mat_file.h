@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "dream/bridge/npy_file.h"
@@ -10,8 +11,11 @@ namespace dream::bridge {
 /// or v7.3, through libmatio) as a 2-D row-major array, for users who save
 /// their lab results from MATLAB. @throws std::runtime_error naming the file
 /// and what is wrong (not a .mat file, no such variable, not a real double
-/// 2-D matrix, unreadable data).
-NpyArray ReadMatMatrix(const std::string& path, const std::string& variable);
+/// 2-D matrix, unreadable data, declared sizes the file cannot hold). Nothing
+/// is allocated for the values before their count is checked against
+/// `max_values` and against the file's size (at least a byte per value, or
+/// zlib's best ratio for a compressed variable).
+NpyArray ReadMatMatrix(const std::string& path, const std::string& variable, int64_t max_values = int64_t{1} << 26);
 
 /// Writes `array` (2-D) as the double matrix `variable` of a new MATLAB .mat
 /// file at `path`, version 5 or (v73) 7.3 (tests and tools; not atomic).
