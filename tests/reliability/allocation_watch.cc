@@ -40,3 +40,18 @@ void* operator new(size_t bytes) {
 
 void operator delete(void* memory) noexcept { std::free(memory); }
 void operator delete(void* memory, size_t) noexcept { std::free(memory); }
+
+// The rest of the family, so every new/delete pair in the binary is this
+// file's malloc/free (AddressSanitizer reports a nothrow new from its runtime
+// freed by the delete above as alloc-dealloc-mismatch; std::stable_sort's
+// temporary buffer does exactly that).
+void* operator new(size_t bytes, const std::nothrow_t&) noexcept {
+  dream::testing::AllocationWatch::Saw(bytes);
+  return std::malloc(bytes == 0 ? 1 : bytes);
+}
+void* operator new[](size_t bytes) { return operator new(bytes); }
+void* operator new[](size_t bytes, const std::nothrow_t& tag) noexcept { return operator new(bytes, tag); }
+void operator delete(void* memory, const std::nothrow_t&) noexcept { std::free(memory); }
+void operator delete[](void* memory) noexcept { std::free(memory); }
+void operator delete[](void* memory, size_t) noexcept { std::free(memory); }
+void operator delete[](void* memory, const std::nothrow_t&) noexcept { std::free(memory); }
