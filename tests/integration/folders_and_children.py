@@ -112,7 +112,11 @@ def test(ctx):
     killed = ctx.start("killed_launch", [dream, "launch", config, "--out", ctx.path("killed"),
                                          "--mode", "realtime", "--steps", "3000"])
     children = wait_for_children(killed.pid, 9, 10)
-    ctx.wait_for_output("killed_launch", r"launched the simulator", 10)
+    # Killed once the simulator records (its signal handlers are in place by then).
+    deadline = time.monotonic() + 20
+    while not os.path.exists(ctx.path("killed", "run.lcmlog.part")) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    check(os.path.exists(ctx.path("killed", "run.lcmlog.part")), "the launch's simulator never started recording")
     os.kill(killed.pid, signal.SIGKILL)
     killed.wait()
     expect_none_left(children, "dream launch")
