@@ -148,4 +148,16 @@ void AffineFormationMetrics::Write(MetricsReport* report) const {
   report->series["max_follower_error_m"] = series_;
 }
 
+// Goal: after convergence every follower stays within the tolerance.
+std::optional<GoalJudgement> AffineFormationMetrics::JudgeGoal(const MetricsReport& report) const {
+  const double worst_m = report.Value("max_follower_error_after_convergence_m");
+  const double tolerance_m = report.Value("follower_error_tolerance_m");
+  GoalJudgement goal;
+  goal.met = worst_m >= 0.0 && tolerance_m > 0.0 && worst_m <= tolerance_m;
+  goal.completion_step = static_cast<int64_t>(report.Value("settled_step"));
+  goal.detail = "worst follower error " + GoalJudgement::Metres(worst_m) + (goal.met ? " <= " : " > ") +
+                GoalJudgement::Metres(tolerance_m);
+  return goal;
+}
+
 }  // namespace dream::agents

@@ -32,4 +32,23 @@ void FormationSequenceMetrics::Write(MetricsReport* report) const {
   report->steps["formation_completed_steps"] = completed_steps_;
 }
 
+// Goal: every formation completed (all_formations_completed_step).
+std::optional<GoalJudgement> FormationSequenceMetrics::JudgeGoal(const MetricsReport& report) const {
+  int formations = 0;
+  for (const auto& [name, value] : report.values) {
+    (void)value;
+    const std::string suffix = "_completed_step";
+    if (name.rfind("formation_", 0) == 0 && name.size() > suffix.size() &&
+        name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) {
+      ++formations;
+    }
+  }
+  GoalJudgement goal;
+  goal.completion_step = static_cast<int64_t>(report.Value("all_formations_completed_step"));
+  goal.met = goal.completion_step >= 0;
+  goal.detail = std::to_string(static_cast<int>(report.Value("formations_completed", 0.0))) + " of " +
+                std::to_string(formations) + " formations";
+  return goal;
+}
+
 }  // namespace dream::agents

@@ -58,4 +58,16 @@ void LineFormationMetrics::Write(MetricsReport* report) const {
   report->series["spacing_error_m"] = std::move(spacing);
 }
 
+// Goal: the line converged (both errors under converged_m from then on).
+std::optional<GoalJudgement> LineFormationMetrics::JudgeGoal(const MetricsReport& report) const {
+  GoalJudgement goal;
+  goal.completion_step = static_cast<int64_t>(report.Value("converged_step"));
+  goal.met = goal.completion_step >= 0;
+  goal.detail = goal.met ? "line converged"
+                         : "line not converged: straightness " +
+                               GoalJudgement::Metres(report.Value("final_line_straightness_error_m")) + ", spacing " +
+                               GoalJudgement::Metres(report.Value("final_spacing_error_m"));
+  return goal;
+}
+
 }  // namespace dream::agents

@@ -1,5 +1,6 @@
 #include "dream/agents/voronoi_coverage_metrics.h"
 
+#include <cstdio>
 #include <cmath>
 #include <stdexcept>
 
@@ -116,6 +117,27 @@ void VoronoiCoverageMetrics::Write(MetricsReport* report) const {
     report->values["min_obstacle_clearance_step"] = static_cast<double>(min_clearance_step_);
   }
   report->values["obstacle_contact_steps"] = static_cast<double>(contact_steps_);
+}
+
+// Goal: settled (every robot still for the last 30+ steps); or, where blocks
+// move to the last step and keep the robots giving way, covering: the cost
+// fell to half or less and never rose by more than 1 %.
+std::optional<GoalJudgement> VoronoiCoverageMetrics::JudgeGoal(const MetricsReport& report) const {
+  GoalJudgement goal;
+  goal.completion_step = static_cast<int64_t>(report.Value("settled_step"));
+  goal.met = goal.completion_step >= 0;
+  goal.detail = "settled";
+  if (!goal.met) {
+    const double initial = report.Value("coverage_cost_initial_m4");
+    const double final_cost = report.Value("coverage_cost_final_m4");
+    const double rise = report.Value("coverage_cost_max_rise_m4");
+    char text[96];
+    std::snprintf(text, sizeof(text), "cost %.3g -> %.3g m^4, largest rise %.2g", initial, final_cost, rise);
+    goal.met = initial > 0.0 && final_cost >= 0.0 && rise >= 0.0 && final_cost <= 0.5 * initial &&
+               rise <= 0.01 * initial;
+    goal.detail = std::string(goal.met ? "covering, not settled: " : "not settled: ") + text;
+  }
+  return goal;
 }
 
 }  // namespace dream::agents

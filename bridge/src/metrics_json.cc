@@ -9,8 +9,13 @@ nlohmann::ordered_json MetricsJson(const config::RunConfig& config, const std::s
   nlohmann::ordered_json json;
   try {
     const agents::ControllerFactory factory(config);
-    const agents::MetricsReport report = agents::MetricsFromLog(factory, log_path);
+    std::optional<agents::GoalJudgement> goal;
+    const agents::MetricsReport report = agents::MetricsFromLog(factory, log_path, &goal);
     json["kind"] = factory.kind();
+    if (goal) {
+      // The kind's own success rule, in the standard form sweeps, export and the verdict read.
+      json["goal"] = {{"met", goal->met}, {"completion_step", goal->completion_step}, {"detail", goal->detail}};
+    }
     for (const auto& [name, value] : report.values) json[name] = value;
     for (const auto& [name, steps] : report.steps) json[name] = steps;
     for (const auto& [name, series] : report.series) {

@@ -3,12 +3,8 @@
 #include <memory>
 #include <vector>
 
-#include "dream/agents/affine_formation_builder.h"
-#include "dream/agents/affine_maneuver.h"
 #include "dream/agents/agent_parts_config.h"
 #include "dream/agents/controller_factory.h"
-#include "dream/agents/go_to_goal_builder.h"
-#include "dream/agents/hrvo_circle_builder.h"
 #include "dream/agents/world_snapshot.h"
 
 namespace dream::cli {
@@ -23,31 +19,6 @@ class RadioHolder final : public agents::Robot {
   using agents::Robot::Robot;
   agents::UnicycleCommand Update(int64_t) override { return {}; }
 };
-
-std::vector<Points> GoalsOf(const std::string& kind, const config::ConfigNode& section, int num_robots) {
-  std::vector<Points> goals;
-  if (kind == agents::GoToGoalBuilder::kKind) {
-    const config::ConfigNode list = section.Required("goals");
-    for (size_t i = 0; i < list.size(); ++i) {
-      const std::vector<double> xy = list[i].AsDoubles();
-      goals.push_back({{xy.at(0), xy.at(1)}});
-    }
-  } else if (kind == agents::HrvoCircleBuilder::kKind) {
-    const agents::HrvoCircleBuilder builder(section, num_robots);
-    goals.resize(static_cast<size_t>(num_robots));
-    for (const auto& formation : builder.formations()) {
-      for (size_t i = 0; i < formation.size() && i < goals.size(); ++i) goals[i].push_back({formation[i].x(), formation[i].y()});
-    }
-  } else if (kind == agents::AffineFormationBuilder::kKind) {
-    const agents::AffineFormationBuilder builder(section, num_robots);
-    const agents::AffineManeuver maneuver(builder.maneuver());
-    for (const Eigen::Vector2d& nominal : builder.formation().nominal_m()) {
-      const Eigen::Vector2d target = maneuver.Target(nominal, static_cast<double>(maneuver.last_step()));
-      goals.push_back({{target.x(), target.y()}});
-    }
-  }
-  return goals;
-}
 
 std::vector<sim::SensorReach> SensorReachesOf(const agents::AgentPartsConfig& parts) {
   std::vector<sim::SensorReach> reaches;
@@ -90,7 +61,11 @@ sim::ArenaOverlays ArenaOverlaysFromConfig(const config::RunConfig& config) {
   const agents::ControllerFactory factory(config);
   const agents::AgentPartsConfig& parts = factory.parts();
   sim::ArenaOverlays overlays;
-  overlays.goals_m = GoalsOf(factory.kind(), config.controller, config.num_robots);
+  for (const std::vector<Eigen::Vector2d>& points : factory.GoalsToDraw()) {
+    Points goals;
+    for (const Eigen::Vector2d& point : points) goals.push_back({point.x(), point.y()});
+    overlays.goals_m.push_back(goals);
+  }
   overlays.sensor_reaches = SensorReachesOf(parts);
   overlays.hears = HearingOf(parts, config.num_robots, config.seed);
   return overlays;

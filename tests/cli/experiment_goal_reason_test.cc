@@ -1,6 +1,6 @@
-// ExperimentGoal as a verdict reason: a missed goal is the reason "goal"
-// (not_ready); a kind without a criterion never is. voronoi_coverage with
-// blocks moving to the end never settles, and is judged by its cost then.
+// ExperimentGoal as a verdict reason: a missed goal (metrics.goal, the kind's
+// own rule) is the reason "goal" (not_ready); a kind without a rule never is.
+// The rules themselves are tested with their kinds (tests/agents/goal_rules_test.cc).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -16,9 +16,13 @@ nlohmann::json SummaryOf(const std::string& kind, nlohmann::json metrics) {
   return {{"robots", 3}, {"steps", 900}, {"robots_done", nlohmann::json::array()}, {"metrics", metrics}};
 }
 
+nlohmann::json Judged(bool met, long long completion_step, const std::string& detail) {
+  return {{"goal", {{"met", met}, {"completion_step", completion_step}, {"detail", detail}}}};
+}
+
 TEST(ExperimentGoalReason, AMissedGoalIsANotReadyReason) {
   const ExperimentGoal missed =
-      ExperimentGoal::Judge(SummaryOf("go_to_goal", {{"all_arrived_step", -1}, {"final_max_goal_error_m", 0.2}}));
+      ExperimentGoal::Judge(SummaryOf("go_to_goal", Judged(false, -1, "not all at their goals, worst 0.2 m")));
   const std::optional<sim::VerdictReason> reason = missed.Reason();
   ASSERT_TRUE(reason.has_value());
   EXPECT_EQ(reason->rule, "goal");
@@ -27,33 +31,8 @@ TEST(ExperimentGoalReason, AMissedGoalIsANotReadyReason) {
   EXPECT_EQ(missed.Json()["met"], false);
   EXPECT_EQ(missed.Json()["kind"], "go_to_goal");
 
-  EXPECT_FALSE(ExperimentGoal::Judge(SummaryOf("go_to_goal", {{"all_arrived_step", 40}})).Reason().has_value());
+  EXPECT_FALSE(ExperimentGoal::Judge(SummaryOf("go_to_goal", Judged(true, 40, "all at their goals"))).Reason());
   EXPECT_FALSE(ExperimentGoal::Judge(SummaryOf("my_kind", nlohmann::json::object())).Reason().has_value());
-}
-
-TEST(ExperimentGoalReason, VoronoiCoverageThatNeverSettlesIsJudgedByItsCost) {
-  // The shipped voronoi_coverage: 3.20 -> 0.49 m^4, largest rise 0.0003 (blocks moving to the end).
-  const ExperimentGoal covering = ExperimentGoal::Judge(SummaryOf(
-      "voronoi_coverage", {{"settled_step", -1},
-                           {"coverage_cost_initial_m4", 3.20},
-                           {"coverage_cost_final_m4", 0.49},
-                           {"coverage_cost_max_rise_m4", 0.0003}}));
-  EXPECT_TRUE(covering.met);
-  EXPECT_EQ(covering.completion_step, -1);
-  EXPECT_THAT(covering.detail, HasSubstr("covering, not settled"));
-  // The boundaries: half the initial cost, a rise of 1% of it.
-  auto met = [](double final_cost, double rise) {
-    return ExperimentGoal::Judge(SummaryOf("voronoi_coverage", {{"settled_step", -1},
-                                                                {"coverage_cost_initial_m4", 2.0},
-                                                                {"coverage_cost_final_m4", final_cost},
-                                                                {"coverage_cost_max_rise_m4", rise}}))
-        .met;
-  };
-  EXPECT_TRUE(met(1.0, 0.02));
-  EXPECT_FALSE(met(1.01, 0.0));
-  EXPECT_FALSE(met(0.5, 0.021));
-  // Settled is met whatever the cost did.
-  EXPECT_TRUE(ExperimentGoal::Judge(SummaryOf("voronoi_coverage", {{"settled_step", 1147}})).met);
 }
 
 }  // namespace

@@ -23,13 +23,15 @@ nlohmann::json Summary(const std::string& kind, long long steps, long long colli
       {"metrics", metrics}};
 }
 
+// metrics.goal as the kind's rule (FormationSequenceMetrics::JudgeGoal) writes it.
+nlohmann::json Goal(bool met, long long completion_step, const std::string& detail) {
+  return {{"goal", {{"met", met}, {"completion_step", completion_step}, {"detail", detail}}}};
+}
+
 nlohmann::json Circle(long long steps, long long completed_step, int completed, long long collisions, double min_m) {
   return Summary("hrvo_circle", steps, collisions, min_m,
-                 {{"formations_completed", completed},
-                  {"formation_1_completed_step", 100},
-                  {"formation_2_completed_step", completed > 1 ? 200 : -1},
-                  {"formation_3_completed_step", completed > 2 ? completed_step : -1},
-                  {"all_formations_completed_step", completed == 3 ? completed_step : -1}});
+                 Goal(completed == 3, completed == 3 ? completed_step : -1,
+                      std::to_string(completed) + " of 3 formations"));
 }
 
 std::vector<SweepPlan::Run> Runs(uint64_t count) {
@@ -74,27 +76,25 @@ TEST(SweepRunResult, SuccessNeedsAFinishedAcceptedCollisionFreeRunThatMetItsGoal
   EXPECT_EQ(no_summary.status, SweepRunResult::Status::kFailed);
 }
 
-TEST(ExperimentGoal, EachKindHasItsCriterionAndOthersOnlyTheCommonOnes) {
+TEST(ExperimentGoal, TheKindsOwnJudgementIsReadAndKindsWithoutOneHaveOnlyTheCommonCriteria) {
   auto judge = [](const std::string& kind, nlohmann::json metrics) {
     return ExperimentGoal::Judge(Summary(kind, 900, 0, 0.3, std::move(metrics)));
   };
-  EXPECT_TRUE(judge("go_to_goal", {{"all_arrived_step", 400}}).met);
-  EXPECT_FALSE(judge("go_to_goal", {{"all_arrived_step", -1}, {"final_max_goal_error_m", 0.2}}).met);
-  EXPECT_TRUE(judge("line_deployment", {{"converged_step", 700}}).met);
-  EXPECT_EQ(judge("line_deployment", {{"converged_step", 700}}).completion_step, 700);
-  EXPECT_FALSE(judge("voronoi_coverage", {{"settled_step", -1}}).met);
-  const ExperimentGoal affine = judge(
-      "affine_formation",
-      {{"max_follower_error_after_convergence_m", 0.02}, {"follower_error_tolerance_m", 0.05}, {"settled_step", 557}});
-  EXPECT_TRUE(affine.met);
-  EXPECT_EQ(affine.completion_step, 557);
-  EXPECT_FALSE(judge("affine_formation",
-                     {{"max_follower_error_after_convergence_m", 0.08}, {"follower_error_tolerance_m", 0.05}})
-                   .met);
+  const ExperimentGoal line = judge("line_deployment", Goal(true, 700, "line converged"));
+  EXPECT_TRUE(line.has_criterion);
+  EXPECT_TRUE(line.met);
+  EXPECT_EQ(line.completion_step, 700);
+  EXPECT_EQ(line.detail, "line converged");
+  EXPECT_FALSE(judge("voronoi_coverage", Goal(false, -1, "not settled")).met);
   const ExperimentGoal mine = judge("my_out_of_tree_kind", nlohmann::json::object());
   EXPECT_FALSE(mine.has_criterion);
   EXPECT_TRUE(mine.met);
   EXPECT_EQ(mine.completion_step, 900);  // every robot reported done at the last step
+  // Metrics that could not be computed: not met, and says why.
+  const ExperimentGoal broken = judge("go_to_goal", {{"error", "run.lcmlog: cannot open"}});
+  EXPECT_TRUE(broken.has_criterion);
+  EXPECT_FALSE(broken.met);
+  EXPECT_EQ(broken.detail, "no metrics: run.lcmlog: cannot open");
   // A summary without metrics: no kind, nothing to judge by but the common criteria.
   EXPECT_FALSE(ExperimentGoal::Judge(nlohmann::json::object()).has_criterion);
 }

@@ -1,6 +1,8 @@
 #include "dream/agents/number_text.h"
 #include "dream/agents/affine_formation_builder.h"
 
+#include "dream/agents/affine_maneuver.h"
+
 #include <cmath>
 #include <sstream>
 
@@ -215,6 +217,16 @@ std::unique_ptr<Robot> AffineFormationBuilder::MakeRobot(int robot_id, const Rob
 
 std::unique_ptr<ExperimentMetrics> AffineFormationBuilder::MakeMetrics() const {
   return std::make_unique<AffineFormationMetrics>(metrics_);
+}
+
+std::vector<std::vector<Eigen::Vector2d>> AffineFormationBuilder::GoalsToDraw() const {
+  // Where the maneuver leaves each robot's nominal position at its end.
+  const AffineManeuver maneuver(maneuver_);
+  std::vector<std::vector<Eigen::Vector2d>> goals;
+  for (const Eigen::Vector2d& nominal : formation_->nominal_m()) {
+    goals.push_back({maneuver.Target(nominal, static_cast<double>(maneuver.last_step()))});
+  }
+  return goals;
 }
 
 }  // namespace dream::agents

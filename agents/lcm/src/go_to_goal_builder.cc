@@ -24,6 +24,15 @@ class GoToGoalMetrics final : public ExperimentMetrics {
     report->values["final_max_goal_error_m"] = final_worst_m_;
     report->values["all_arrived_step"] = static_cast<double>(arrived_step_);
   }
+  // Goal: every robot within its tolerance at once.
+  std::optional<GoalJudgement> JudgeGoal(const MetricsReport& report) const override {
+    GoalJudgement goal;
+    goal.completion_step = static_cast<int64_t>(report.Value("all_arrived_step"));
+    goal.met = goal.completion_step >= 0;
+    goal.detail = goal.met ? "all at their goals"
+                           : "not all at their goals, worst " + GoalJudgement::Metres(report.Value("final_max_goal_error_m"));
+    return goal;
+  }
 
  private:
   std::vector<GoToGoalParams> params_;
@@ -60,6 +69,12 @@ std::unique_ptr<Robot> GoToGoalBuilder::MakeRobot(int robot_id, const RobotParam
 
 std::unique_ptr<ExperimentMetrics> GoToGoalBuilder::MakeMetrics() const {
   return std::make_unique<GoToGoalMetrics>(params_);
+}
+
+std::vector<std::vector<Eigen::Vector2d>> GoToGoalBuilder::GoalsToDraw() const {
+  std::vector<std::vector<Eigen::Vector2d>> goals;
+  for (const GoToGoalParams& params : params_) goals.push_back({params.goal_m});
+  return goals;
 }
 
 }  // namespace dream::agents

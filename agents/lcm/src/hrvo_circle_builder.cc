@@ -72,4 +72,12 @@ std::unique_ptr<ExperimentMetrics> HrvoCircleBuilder::MakeMetrics() const {
   return std::make_unique<FormationSequenceMetrics>(formations_, params_.tolerance_m);
 }
 
+std::vector<std::vector<Eigen::Vector2d>> HrvoCircleBuilder::GoalsToDraw() const {
+  std::vector<std::vector<Eigen::Vector2d>> goals(static_cast<size_t>(num_robots_));
+  for (const std::vector<Eigen::Vector2d>& formation : formations_) {
+    for (size_t i = 0; i < formation.size() && i < goals.size(); ++i) goals[i].push_back(formation[i]);
+  }
+  return goals;
+}
+
 }  // namespace dream::agents

@@ -8,7 +8,8 @@
 
 namespace dream::agents {
 
-MetricsReport MetricsFromLog(const ControllerFactory& factory, const std::string& log_path) {
+MetricsReport MetricsFromLog(const ControllerFactory& factory, const std::string& log_path,
+                             std::optional<GoalJudgement>* goal) {
   std::vector<std::unique_ptr<ExperimentMetrics>> metrics = factory.MakeMetrics();
   WorldSnapshot world;
   lcm::LogReader reader(log_path);
@@ -37,6 +38,12 @@ MetricsReport MetricsFromLog(const ControllerFactory& factory, const std::string
   }
   MetricsReport report;
   for (const auto& m : metrics) m->Write(&report);
+  if (goal != nullptr) {
+    goal->reset();
+    for (const auto& m : metrics) {
+      if (!*goal) *goal = m->JudgeGoal(report);
+    }
+  }
   return report;
 }
 

@@ -44,6 +44,7 @@ class AffineFormationMetrics final : public ExperimentMetrics {
   explicit AffineFormationMetrics(AffineFormationMetricsParams params);
   void Observe(const WorldSnapshot& world) override;
   void Write(MetricsReport* report) const override;
+  std::optional<GoalJudgement> JudgeGoal(const MetricsReport& report) const override;
 
   double max_error_after_convergence_m() const { return max_after_m_; }
   /// First step from which the max follower error stays within tolerance to

@@ -1,5 +1,8 @@
 #pragma once
 
+#include <optional>
+
+#include "dream/agents/goal_judgement.h"
 #include "dream/agents/metrics_report.h"
 #include "dream/agents/world_snapshot.h"
 
@@ -15,6 +18,13 @@ class ExperimentMetrics {
   virtual void Observe(const WorldSnapshot& world) = 0;
   /// Adds this experiment's figures to `report`.
   virtual void Write(MetricsReport* report) const = 0;
+  /// The experiment's success rule over the figures written to `report`
+  /// (all metrics' figures, after every Write): nothing (the default) for
+  /// metrics that judge no goal, such as SafetyMetrics.
+  virtual std::optional<GoalJudgement> JudgeGoal(const MetricsReport& report) const {
+    (void)report;
+    return std::nullopt;
+  }
 };
 
 }  // namespace dream::agents

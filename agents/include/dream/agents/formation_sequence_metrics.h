@@ -21,6 +21,7 @@ class FormationSequenceMetrics final : public ExperimentMetrics {
   FormationSequenceMetrics(std::vector<std::vector<Eigen::Vector2d>> formations_m, double tolerance_m);
   void Observe(const WorldSnapshot& world) override;
   void Write(MetricsReport* report) const override;
+  std::optional<GoalJudgement> JudgeGoal(const MetricsReport& report) const override;
 
   int completed() const { return static_cast<int>(completed_steps_.size()); }
   const std::vector<int64_t>& completed_steps() const { return completed_steps_; }

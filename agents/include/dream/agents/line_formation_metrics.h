@@ -21,6 +21,7 @@ class LineFormationMetrics final : public ExperimentMetrics {
   LineFormationMetrics(double step_m, double converged_m, int series_every_steps = 10);
   void Observe(const WorldSnapshot& world) override;
   void Write(MetricsReport* report) const override;
+  std::optional<GoalJudgement> JudgeGoal(const MetricsReport& report) const override;
 
   /// Errors of one set of poses, for tests and plotting.
   static double StraightnessError(const WorldSnapshot& world);

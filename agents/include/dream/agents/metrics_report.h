@@ -14,6 +14,12 @@ struct MetricsReport {
   std::map<std::string, double> values;
   std::map<std::string, std::vector<std::pair<int64_t, double>>> series;
   std::map<std::string, std::vector<int64_t>> steps;  ///< named lists of steps (events)
+
+  /// The value named `name`, or `fallback` when there is none.
+  double Value(const std::string& name, double fallback = -1.0) const {
+    const auto it = values.find(name);
+    return it == values.end() ? fallback : it->second;
+  }
 };
 
 }  // namespace dream::agents

@@ -44,6 +44,7 @@ class VoronoiCoverageMetrics final : public ExperimentMetrics {
   explicit VoronoiCoverageMetrics(const VoronoiCoverageMetricsParams& params);
   void Observe(const WorldSnapshot& world) override;
   void Write(MetricsReport* report) const override;
+  std::optional<GoalJudgement> JudgeGoal(const MetricsReport& report) const override;
 
   const std::vector<std::pair<int64_t, double>>& cost_series() const { return series_; }
   double max_rise_m4() const { return max_rise_m4_; }

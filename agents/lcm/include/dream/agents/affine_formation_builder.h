@@ -43,6 +43,7 @@ class AffineFormationBuilder final : public ExperimentBuilder {
   AffineFormationBuilder(const config::ConfigNode& section, int num_robots);
   std::unique_ptr<Robot> MakeRobot(int robot_id, const RobotParams& params) const override;
   std::unique_ptr<ExperimentMetrics> MakeMetrics() const override;
+  std::vector<std::vector<Eigen::Vector2d>> GoalsToDraw() const override;
 
   const StressFormation& formation() const { return *formation_; }
   const AffineManeuverParams& maneuver() const { return maneuver_; }

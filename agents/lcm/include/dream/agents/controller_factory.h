@@ -42,6 +42,9 @@ class ControllerFactory {
   /// common safety metrics.
   std::vector<std::unique_ptr<ExperimentMetrics>> MakeMetrics() const;
 
+  /// The kind's goal points per robot, for pictures (ExperimentBuilder::GoalsToDraw).
+  std::vector<std::vector<Eigen::Vector2d>> GoalsToDraw() const { return builder_->GoalsToDraw(); }
+
   const std::string& kind() const { return kind_; }
   /// The robots' parts (timer, sensors, radio) as the config sets them.
   const AgentPartsConfig& parts() const { return parts_; }

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <memory>
+#include <vector>
 
 #include "dream/agents/experiment_metrics.h"
 #include "dream/agents/robot.h"
@@ -22,6 +24,11 @@ class ExperimentBuilder {
   /// none. SafetyMetrics (minimum pairwise distance, near misses) is always
   /// added, so every kind's summary has those.
   virtual std::unique_ptr<ExperimentMetrics> MakeMetrics() const { return nullptr; }
+  /// Where the robots are meant to go, for pictures: per robot its goal
+  /// points in order (a formation sequence has several). Empty (the
+  /// default): nothing to draw. The success rule over the run's figures is
+  /// the metrics' ExperimentMetrics::JudgeGoal.
+  virtual std::vector<std::vector<Eigen::Vector2d>> GoalsToDraw() const { return {}; }
 };
 
 }  // namespace dream::agents

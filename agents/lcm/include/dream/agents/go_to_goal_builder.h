@@ -20,6 +20,7 @@ class GoToGoalBuilder final : public ExperimentBuilder {
   GoToGoalBuilder(const config::ConfigNode& section, int num_robots);
   std::unique_ptr<Robot> MakeRobot(int robot_id, const RobotParams& params) const override;
   std::unique_ptr<ExperimentMetrics> MakeMetrics() const override;
+  std::vector<std::vector<Eigen::Vector2d>> GoalsToDraw() const override;
 
  private:
   std::vector<GoToGoalParams> params_;

@@ -33,6 +33,7 @@ class HrvoCircleBuilder final : public ExperimentBuilder {
   HrvoCircleBuilder(const config::ConfigNode& section, int num_robots);
   std::unique_ptr<Robot> MakeRobot(int robot_id, const RobotParams& params) const override;
   std::unique_ptr<ExperimentMetrics> MakeMetrics() const override;
+  std::vector<std::vector<Eigen::Vector2d>> GoalsToDraw() const override;
 
   /// formations()[k][i]: robot i's point in formation k.
   const std::vector<std::vector<Eigen::Vector2d>>& formations() const { return formations_; }

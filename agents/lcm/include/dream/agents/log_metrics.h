@@ -1,8 +1,10 @@
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "dream/agents/controller_factory.h"
+#include "dream/agents/goal_judgement.h"
 #include "dream/agents/metrics_report.h"
 
 namespace dream::agents {
@@ -13,6 +15,10 @@ namespace dream::agents {
 /// a log; `dream run` puts the result under "metrics" in summary.json.
 /// Undecodable records are skipped. @throws std::runtime_error when the log
 /// cannot be opened or ends inside a record.
-MetricsReport MetricsFromLog(const ControllerFactory& factory, const std::string& log_path);
+///
+/// `goal`, when given, receives the experiment's success rule applied to the
+/// report (ExperimentMetrics::JudgeGoal), or nothing for a kind without one.
+MetricsReport MetricsFromLog(const ControllerFactory& factory, const std::string& log_path,
+                             std::optional<GoalJudgement>* goal = nullptr);
 
 }  // namespace dream::agents
