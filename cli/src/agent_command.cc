@@ -79,6 +79,27 @@ std::vector<int> ParseRobotList(const std::string& text, int num_robots) {
   return {ids.begin(), ids.end()};
 }
 
+namespace {
+
+// Written to a temporary name and renamed, so dream launch never reads half
+// a report; a failure is logged, not fatal: the run itself is done.
+void WriteAgentReport(const std::string& path, const std::string& json) {
+  const std::string temporary = path + ".part";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out << json << '\n';
+    if (!out.flush()) {
+      spdlog::error("{}: cannot write the agents' report: {}", temporary, std::strerror(errno));
+      return;
+    }
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    spdlog::error("{}: cannot rename the agents' report into place: {}", path, std::strerror(errno));
+  }
+}
+
+}  // namespace
+
 int RunAgents(const AgentArgs& args) {
   // The controller's part only: an agent does no world work (and does not link the world).
   const config::ControllerConfig config = OverriddenConfig(args.config_path, args.seed, args.sets).LoadController();
@@ -91,6 +112,7 @@ int RunAgents(const AgentArgs& args) {
   // (docs/performance.md). VmHWM, not getrusage's ru_maxrss: the latter
   // survives execve and would report the launching process's size.
   spdlog::info("agent for robot(s) {}: peak resident memory {:.1f} MB", args.robots, PeakResidentMegabytes());
+  if (!args.report_path.empty()) WriteAgentReport(args.report_path, host.ReportJson());
   if (StopFlag().load()) return kExitInterrupted;
   if (!ended_by_world) return kExitRunFailed;
   spdlog::info("world ended the run at step {}: {}", host.last_step_answered(), host.end_detail());

@@ -52,6 +52,7 @@ struct AgentArgs {
   double idle_timeout_s = 60.0;
   long long seed = -1;          ///< as RunArgs: the world's --seed/--set, so agents build the same robots
   std::vector<std::string> sets;
+  std::string report_path;      ///< --report: where to write what the agents refused (JSON), for dream launch
 };
 
 // Each command's file declares its subcommands on the dream command line

@@ -1,6 +1,9 @@
 #include "hosted_agents.h"
 
+#include <nlohmann/json.hpp>
+
 #include "commands.h"
+#include "dream/lcm/run_id.h"
 #include "data_files.h"
 #include "dream/agents/controller_factory.h"
 #include "dream/agents/python_controller_spec.h"
@@ -40,6 +43,17 @@ bool HostedAgents::Run(const std::atomic<bool>& stop, double idle_timeout_s) {
 
 int64_t HostedAgents::last_step_answered() const {
   return python_ ? python_->last_step_answered() : cpp_->last_step_answered();
+}
+
+std::string HostedAgents::ReportJson() const {
+  if (python_) return python_->ReportJson();
+  nlohmann::ordered_json report;
+  report["bad_messages"] = cpp_->bad_messages().per_channel();
+  nlohmann::json other_runs = nlohmann::json::array();
+  for (int64_t run_id : cpp_->follower().other_runs()) other_runs.push_back(lcm::RunIdText(run_id));
+  report["other_runs"] = other_runs;
+  report["steps_out_of_sequence"] = cpp_->follower().steps_out_of_sequence();
+  return report.dump();
 }
 
 std::string HostedAgents::end_detail() const { return python_ ? python_->end_detail() : cpp_->end_detail(); }

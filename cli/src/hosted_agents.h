@@ -31,6 +31,9 @@ class HostedAgents {
   bool Run(const std::atomic<bool>& stop, double idle_timeout_s);
   int64_t last_step_answered() const;
   std::string end_detail() const;
+  /// What the agents refused, as JSON: {"bad_messages": {channel: count},
+  /// "other_runs": [run id hex], "steps_out_of_sequence": n}.
+  std::string ReportJson() const;
 
  private:
   lcm::LcmBus& bus_;

@@ -72,6 +72,9 @@ void AddAgentOptions(CLI::App* command, AgentArgs* args) {
   // The world's overrides (dream launch passes them on): agents must build
   // the robots of the same config.
   AddOverrideOptions(command, &args->seed, &args->sets);
+  command->add_option("--report", args->report_path,
+                      "At exit, write what these agents refused (bad messages per channel, other runs seen, "
+                      "steps out of sequence) to this JSON file; dream launch merges them into summary.json");
 }
 
 }  // namespace dream::cli

@@ -275,6 +275,14 @@ class AgentHost:
                 return False
         return self.world_finished
 
+    def report_json(self):
+        """What this host refused, as JSON for `dream launch`'s summary (AgentReport in C++)."""
+        import json
+        from .world_follower import run_id_text
+        return json.dumps({"bad_messages": self.bad_messages,
+                           "other_runs": sorted(run_id_text(r) for r in self.follower.other_runs),
+                           "steps_out_of_sequence": self.follower.steps_out_of_sequence})
+
     def faults(self):
         """{robot id: error text} of the robots whose controller failed."""
         return {robot.agent.id: robot.fault for robot in self.robots if robot.fault is not None}

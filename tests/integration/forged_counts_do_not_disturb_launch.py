@@ -11,7 +11,7 @@ these once (correct fingerprints, so only the counts are wrong):
   - DREAM_RADIO_3 with payload_size = 2^28
   - well-formed radio messages from 600 senders that are not robots of the run (memory)
   - DREAM_FAULT_1 with a detail string length of 2^28 (the simulator's input)
-  - a truncated DREAM_CMD_1 that still carries its agent_id
+  - a truncated DREAM_CMD_1 that still carries its agent_id (50 of its 61 bytes)
 The launch must exit 0 with no agent failing, nobody lost, no command rejected; its DREAM_POSES
 must equal `dream run`'s message by message; summary.json must count DREAM_FAULT_1 and DREAM_CMD_1
 in bad_messages and name the forger's agent_id in bad_message_senders; the agents must log each
@@ -26,7 +26,7 @@ import time
 
 from dreamtest import Udpm, arguments, check, import_types, main, read_summary, require_private_netns
 
-STEPS = 150
+STEPS = 600  # long enough that the second round reaches the world before its end on a busy machine
 INJECT_AT_STEPS = (5, 40)
 FORGER_AGENT_ID = 0x0BADC0DE0BADC0DE
 FOREIGN_SENDERS = range(1000, 1600)
@@ -53,7 +53,7 @@ def forged_messages(dream, run_id):
     command.step, command.run_id, command.robot_id, command.agent_id, command.v = 5, run_id, 1, FORGER_AGENT_ID, 0.1
     messages = [("DREAM_POSES", poses), ("DREAM_STATUS", status), ("DREAM_OBSTACLES", obstacles_negative),
                 ("DREAM_OBSTACLES", obstacles_wrapping), ("DREAM_RADIO_3", radio), ("DREAM_FAULT_1", fault),
-                ("DREAM_CMD_1", command.encode()[:40])]
+                ("DREAM_CMD_1", command.encode()[:50])]
     for sender in FOREIGN_SENDERS:
         foreign = dream.radio_message_t()
         foreign.step, foreign.run_id, foreign.sender_id, foreign.agent_id = 5, run_id, sender, FORGER_AGENT_ID
@@ -120,13 +120,20 @@ def test(ctx):
     for channel in ["DREAM_POSES", "DREAM_STATUS", "DREAM_OBSTACLES", "DREAM_RADIO_3", "DREAM_RADIO_1000"]:
         check(f"{channel}: dropped bad message #1" in output, f"no agent logged the forged message on {channel}")
     check("is not a robot of this run" in output, "no agent refused the radio senders outside the run")
+    # ... and dream launch merges what the agents refused into summary.json.
+    agents_bad = summary.get("agents", {}).get("bad_messages", {})
+    for channel in ["DREAM_POSES", "DREAM_STATUS", "DREAM_OBSTACLES", "DREAM_RADIO_3", "DREAM_RADIO_1000"]:
+        check(agents_bad.get(channel, 0) >= 8, f"summary.json agents.bad_messages does not count {channel} "
+                                               f"for every agent: {agents_bad.get(channel)}")
+    check(any(r["rule"] == "agent_bad_messages" for r in summary["verdict_reasons"]),
+          f"the agents' refusals are not a verdict reason: {summary['verdict_reasons']}")
 
     ctx.run([args.dream, "-q", "run", config, "--out", single] + limit, timeout=90, expect=0)
     log_a, log_b = os.path.join(launched, "run.lcmlog"), os.path.join(single, "run.lcmlog")
     code, text = ctx.run([args.dream, "log", "diff", log_a, log_b, "--channels", "DREAM_POSES"])
     check(code == 0 and "same" in text, f"DREAM_POSES of the attacked launch differ from dream run: {text.strip()}")
     check(summary["final_poses"] == read_summary(single)["final_poses"], "final poses differ from dream run")
-    print(f"{rounds} rounds of {len(forged_messages(dream))} forged messages refused; poses equal to dream run; "
+    print(f"{rounds} rounds of {len(forged_messages(dream, 1))} forged messages refused; poses equal to dream run; "
           f"bad_messages {bad}")
 
 

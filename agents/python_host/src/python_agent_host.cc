@@ -187,6 +187,15 @@ class EmbeddedPythonAgentHost final : public PythonAgentHost {
     return TextOf(value.get());
   }
 
+  std::string ReportJson() const override {
+    PyRef value(PyObject_CallMethod(host_, "report_json", nullptr));
+    if (value.get() == nullptr) {
+      PyErr_Clear();
+      return "{}";
+    }
+    return TextOf(value.get());
+  }
+
  private:
   PyObject* host_ = nullptr;
 };

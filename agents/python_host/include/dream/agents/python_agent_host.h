@@ -38,6 +38,9 @@ class PythonAgentHost {
   virtual bool world_finished() const = 0;
   virtual int64_t last_step_answered() const = 0;
   virtual std::string end_detail() const = 0;
+  /// What the host refused, as JSON: {"bad_messages": {channel: count},
+  /// "other_runs": [run id hex], "steps_out_of_sequence": n}.
+  virtual std::string ReportJson() const = 0;
 };
 
 /// dream_python_host_check: loads the controller's module and class and
