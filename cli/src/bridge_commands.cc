@@ -201,23 +201,14 @@ int RunLabReplay(const LabReplayArgs& args) {
                          {"rms_v_difference_mps", count > 0 ? std::sqrt(dv2 / static_cast<double>(count)) : 0.0},
                          {"rms_w_difference_radps", count > 0 ? std::sqrt(dw2 / static_cast<double>(count)) : 0.0}});
   }
-  nlohmann::ordered_json summary =
-      nlohmann::ordered_json::parse(sim::RunSummaryJson(config, outcome, *world, "run.lcmlog"));
-  summary["config"] = "config.yaml";
-  summary["metrics"] = bridge::MetricsJson(config, log_path);
-  summary["lab_replay"] = {{"lab_run", fs::absolute(args.lab_dir).string()},
-                           {"lab_command_channels", std::string(bridge::kLabCommandChannelPrefix) + "<id>"},
-                           {"agents_vs_lab_commands", agreement}};
-  out.WriteFile("summary.json", summary.dump(2) + "\n");
-  const sim::RunReport report = sim::RunReport::FromViolations(world->step(), world->violations());
-  spdlog::info("{} after {} steps ({:.2f} s wall): {}", sim::EndName(outcome.end), outcome.steps,
-               outcome.wall_time_s, outcome.reason);
-  std::cout << report.Text() << "log:     " << log_path << "\nsummary: " << out.PathOf("summary.json") << "\n";
-  if (outcome.steps > 0) {
-    sim::TrajectoryPicture::Render(log_path, out.PathOf("trajectories.png"));
-    std::cout << "picture: " << out.PathOf("trajectories.png") << "\n";
-  }
-  return ExitCodeFor(outcome, report);
+  // The same summary, verdict, report and picture as every run (ReportRun),
+  // plus what the replay adds.
+  nlohmann::ordered_json replay_fields;
+  replay_fields["config"] = "config.yaml";
+  replay_fields["lab_replay"] = {{"lab_run", fs::absolute(args.lab_dir).string()},
+                                 {"lab_command_channels", std::string(bridge::kLabCommandChannelPrefix) + "<id>"},
+                                 {"agents_vs_lab_commands", agreement}};
+  return ReportRun(config, outcome, *world, out.dir(), args.steps > 0, replay_fields);
 }
 
 int RunCheckSubmission(const CheckSubmissionArgs& args) {
