@@ -68,7 +68,9 @@ def inject(bus, dream, step, run_id):
     bus.send_raw(b"hello, this is no LCM packet")
     # A fragment header (magic LC03) announcing an absurd message and fragment count.
     bus.send_raw(struct.pack(">IIIIHH", 0x4C433033, 7, 0x7FFFFFFF, 0x7FFFFFF0, 3, 2) + b"DREAM_CMD_1\0junk")
-    return {"DREAM_CMD_3", "DREAM_CMD_x", "DREAM_CMD_99", "DREAM_CMD_5", "DREAM_CMD_4", "DREAM_CMD_6"}
+    # The world reads DREAM_STATUS too (a second world's would name another run), so the random
+    # bytes there are a bad message of its own.
+    return {"DREAM_CMD_3", "DREAM_CMD_x", "DREAM_CMD_99", "DREAM_CMD_5", "DREAM_CMD_4", "DREAM_CMD_6", "DREAM_STATUS"}
 
 
 def drive_robot_2(ctx, bus, dream, sim):
