@@ -6,9 +6,18 @@
 namespace dream::bridge {
 
 nlohmann::ordered_json MetricsJson(const config::RunConfig& config, const std::string& log_path) {
+  try {
+    return MetricsJson(agents::ControllerFactory(config), log_path);
+  } catch (const std::exception& e) {
+    nlohmann::ordered_json json;
+    json["error"] = e.what();
+    return json;
+  }
+}
+
+nlohmann::ordered_json MetricsJson(const agents::ControllerFactory& factory, const std::string& log_path) {
   nlohmann::ordered_json json;
   try {
-    const agents::ControllerFactory factory(config);
     std::optional<agents::GoalJudgement> goal;
     const agents::MetricsReport report = agents::MetricsFromLog(factory, log_path, &goal);
     json["kind"] = factory.kind();

@@ -58,7 +58,10 @@ sim::ArenaOverlays::RadioHearing HearingOf(const agents::AgentPartsConfig& parts
 
 sim::ArenaOverlays ArenaOverlaysFromConfig(const config::RunConfig& config) {
   // The factory loads the config's plugins, checks the kind and reads the parts.
-  const agents::ControllerFactory factory(config);
+  return ArenaOverlaysFromConfig(config, agents::ControllerFactory(config));
+}
+
+sim::ArenaOverlays ArenaOverlaysFromConfig(const config::RunConfig& config, const agents::ControllerFactory& factory) {
   const agents::AgentPartsConfig& parts = factory.parts();
   sim::ArenaOverlays overlays;
   for (const std::vector<Eigen::Vector2d>& points : factory.GoalsToDraw()) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "dream/agents/controller_factory.h"
 #include "dream/config/run_config.h"
 #include "dream/sim/arena_overlays.h"
 
@@ -7,13 +8,15 @@ namespace dream::cli {
 
 /// What a run's config adds to its pictures (sim::ArenaOverlays), read with
 /// the agents' own code so a picture shows what the robots had:
-///  - goals: go_to_goal's `goals`, hrvo_circle's points of every formation,
-///    affine_formation's targets at the end of the maneuver (other kinds have none);
+///  - goals: what the kind says its robots should reach (ExperimentBuilder::GoalsToDraw);
 ///  - sensor reaches: the movement and obstacle sensors of the robots' parts
 ///    (the experiment's defaults unless the config overrides them);
 ///  - who hears whom: each robot's radio (range, graph or role) deciding as
 ///    it does in a run.
 /// The draw_* flags are left off. @throws config::ConfigError naming the key.
 sim::ArenaOverlays ArenaOverlaysFromConfig(const config::RunConfig& config);
+
+/// The same with the run's factory, when the caller has one already.
+sim::ArenaOverlays ArenaOverlaysFromConfig(const config::RunConfig& config, const agents::ControllerFactory& factory);
 
 }  // namespace dream::cli

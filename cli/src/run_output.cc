@@ -171,7 +171,15 @@ int ReportRun(const config::RunConfig& config, const sim::RunOutcome& outcome, c
   const std::string log_path = out_dir + "/run.lcmlog";
   // Written whatever the outcome: after a failed run it says why, and the log
   // keeps every whole event up to the failure.
-  nlohmann::ordered_json metrics = bridge::MetricsJson(config, log_path);
+  // One factory for the metrics and the picture (it loads the config's plugins and reads the section).
+  std::optional<agents::ControllerFactory> factory;
+  try {
+    factory.emplace(config);
+  } catch (const std::exception& e) {
+    spdlog::warn("{}: {}", config.source, e.what());
+  }
+  nlohmann::ordered_json metrics =
+      factory ? bridge::MetricsJson(*factory, log_path) : bridge::MetricsJson(config, log_path);
   if (metrics.contains("error")) {
     // The run and its log stand; only the experiment's own numbers are missing.
     spdlog::warn("{}: no experiment metrics: {}", log_path, metrics["error"].get<std::string>());
@@ -211,7 +219,7 @@ int ReportRun(const config::RunConfig& config, const sim::RunOutcome& outcome, c
   if (outcome.steps > 0 || outcome.end == sim::RunOutcome::End::kFinished) {
     try {
       // With the config's goals, like `dream render` draws them.
-      sim::ArenaOverlays overlays = ArenaOverlaysFromConfig(config);
+      sim::ArenaOverlays overlays = factory ? ArenaOverlaysFromConfig(config, *factory) : ArenaOverlaysFromConfig(config);
       overlays.run_name = config.name;
       overlays.verdict = sim::RunVerdictName(judgement.verdict());  // as summary.json says
       sim::TrajectoryPicture::Render(sim::RunTrack::Read(log_path), overlays, out_dir + "/trajectories.png",
