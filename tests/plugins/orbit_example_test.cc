@@ -7,13 +7,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 #include <string>
 
 #include "dream/agents/controller_factory.h"
 #include "dream/config/config_error.h"
 #include "dream/config/run_config.h"
+#include "dream/sim/file_text.h"
 #include "../support/factory_error.h"
 #include "scenario_runner.h"
 
@@ -21,14 +21,6 @@ namespace dream::agents {
 namespace {
 
 const std::string kExampleDir = std::string(DREAM_SOURCE_DIR) + "/docs/examples/out_of_tree_controller";
-
-std::string ReadText(const std::string& path) {
-  std::ifstream file(path);
-  EXPECT_TRUE(file.good()) << path;
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
 
 /// Replaces the one occurrence of `from` in `text` by `to`.
 std::string Replaced(std::string text, const std::string& from, const std::string& to) {
@@ -41,7 +33,7 @@ std::string Replaced(std::string text, const std::string& from, const std::strin
 /// The example's orbit.yaml, naming the plugin this build made, with
 /// `from` replaced by `to`; errors name orbit.yaml.
 config::RunConfig ExampleConfig(const std::string& from = "", const std::string& to = "") {
-  std::string text = Replaced(ReadText(kExampleDir + "/orbit.yaml"), "build/liborbit_controller.so",
+  std::string text = Replaced(sim::ReadFileText(kExampleDir + "/orbit.yaml"), "build/liborbit_controller.so",
                               std::string("'") + ORBIT_EXAMPLE_PLUGIN_PATH + "'");
   if (!from.empty()) text = Replaced(text, from, to);
   return config::LoadRunConfig(config::ConfigNode::LoadString(text, "orbit.yaml"));
@@ -49,7 +41,7 @@ config::RunConfig ExampleConfig(const std::string& from = "", const std::string&
 
 /// The 1-based line of orbit.yaml that starts with `start`.
 int LineOf(const std::string& start) {
-  std::istringstream text(ReadText(kExampleDir + "/orbit.yaml"));
+  std::istringstream text(sim::ReadFileText(kExampleDir + "/orbit.yaml"));
   std::string line;
   for (int number = 1; std::getline(text, line); ++number) {
     if (line.rfind(start, 0) == 0) return number;
@@ -61,14 +53,14 @@ int LineOf(const std::string& start) {
 using testing::FactoryErrorOf;
 
 TEST(OrbitExampleTest, TheDocumentLeadsWithTheExampleFileVerbatim) {
-  const std::string document = ReadText(std::string(DREAM_SOURCE_DIR) + "/docs/writing-a-controller.md");
+  const std::string document = sim::ReadFileText(std::string(DREAM_SOURCE_DIR) + "/docs/writing-a-controller.md");
   const std::string fence = "```cpp\n";
   const size_t start = document.find(fence);
   ASSERT_NE(start, std::string::npos) << "no ```cpp block in docs/writing-a-controller.md";
   const size_t code = start + fence.size();
   const size_t end = document.find("```", code);
   ASSERT_NE(end, std::string::npos);
-  EXPECT_EQ(document.substr(code, end - code), ReadText(kExampleDir + "/orbit_controller.cc"))
+  EXPECT_EQ(document.substr(code, end - code), sim::ReadFileText(kExampleDir + "/orbit_controller.cc"))
       << "the first C++ block of docs/writing-a-controller.md must be orbit_controller.cc as it is";
 }
 

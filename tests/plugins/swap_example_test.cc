@@ -7,12 +7,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "dream/agents/controller_factory.h"
 #include "dream/config/run_config.h"
+#include "dream/sim/file_text.h"
 #include "scenario_runner.h"
 
 namespace dream::agents {
@@ -20,16 +19,8 @@ namespace {
 
 const std::string kExampleDir = std::string(DREAM_SOURCE_DIR) + "/docs/examples/out_of_tree_controller";
 
-std::string ReadText(const std::string& path) {
-  std::ifstream file(path);
-  EXPECT_TRUE(file.good()) << path;
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
 config::RunConfig ExampleConfig() {
-  std::string text = ReadText(kExampleDir + "/swap.yaml");
+  std::string text = sim::ReadFileText(kExampleDir + "/swap.yaml");
   const std::string plugin = "build/libswap_controller.so";
   const size_t at = text.find(plugin);
   EXPECT_NE(at, std::string::npos);
@@ -38,8 +29,8 @@ config::RunConfig ExampleConfig() {
 }
 
 TEST(SwapExampleTest, TheDocumentShowsTheExampleFileVerbatim) {
-  const std::string document = ReadText(std::string(DREAM_SOURCE_DIR) + "/docs/writing-a-controller.md");
-  const std::string file = ReadText(kExampleDir + "/swap_controller.cc");
+  const std::string document = sim::ReadFileText(std::string(DREAM_SOURCE_DIR) + "/docs/writing-a-controller.md");
+  const std::string file = sim::ReadFileText(kExampleDir + "/swap_controller.cc");
   EXPECT_NE(document.find("```cpp\n" + file + "```"), std::string::npos)
       << "docs/writing-a-controller.md must show swap_controller.cc as it is, in a ```cpp block";
 }

@@ -192,7 +192,6 @@ void AgentHost::OnPoses(const std::string& channel, const robot_poses_t& poses) 
   saw_poses_since_check_ = true;  // only the followed run's steps keep this host waiting
   if (decision == WorldFollower::StepDecision::kNewStep) {
     world_.step = poses.step;
-    saw_any_poses_ = true;
     world_.poses.resize(n);
     world_.velocities.resize(n);
     for (size_t i = 0; i < n; ++i) {

@@ -126,14 +126,11 @@ void SimNode::OnStatus(const run_status_t& status) {
   if (status.run_id != run_id_) NoteOtherWorld(status.run_id, lcm::kStatusChannel);
 }
 
-void SimNode::Conflict(const std::string& channel, RobotSlot& robot, const velocity_command_t& command) {
+void SimNode::Conflict(const std::string& channel, RobotSlot& robot, const velocity_command_t& command,
+                       const std::string& reason) {
   ++command_conflicts_;
   ++robot.conflicts;
-  Reject(channel,
-         "conflict: robot " + std::to_string(command.robot_id) + " already has a different command for step " +
-             std::to_string(command.step) + " (from agent " + std::to_string(robot.command_agent_id) +
-             "); this one from agent " + std::to_string(command.agent_id) + " is refused, the first is applied",
-         command.agent_id);
+  Reject(channel, "conflict: " + reason, command.agent_id);
 }
 
 void SimNode::OnFault(const std::string& channel, const robot_fault_t& fault) {
@@ -194,7 +191,7 @@ void SimNode::OnCommand(const std::string& channel, const velocity_command_t& co
   }
   // Commands answer the step the world is at: a later step was never
   // published, and one further back is late (lockstep: already taken).
-  if (command.step > world_.step()) {
+  if (command.step < 0 || command.step > world_.step()) {
     Reject(channel, "answers step " + std::to_string(command.step) + " but the world is at step " +
                         std::to_string(world_.step()), command.agent_id);
     return;
@@ -202,14 +199,19 @@ void SimNode::OnCommand(const std::string& channel, const velocity_command_t& co
   const bool lockstep = options_.mode == WorldMode::kLockstep;
   RobotSlot& robot = robots_[static_cast<size_t>(id)];
   if (command.step < robot.command_step) return;  // older than the command held
-  const bool same_step = command.step == robot.command_step && robot.command_agent_id != 0;
-  if (same_step) {
+  if (command.step == robot.command_step) {
     // The resend of the world's step gets the same answer again; anything
     // else for this robot and step is a second sender, also when it comes
     // just after the world took the step (the held command is that step's).
+    // The held command came from the robot's owner (others are refused).
     const bool same = SameBits(command.v, robot.received_v) && SameBits(command.w, robot.received_w) &&
-                      command.done == robot.done && command.agent_id == robot.command_agent_id;
-    if (!same) Conflict(channel, robot, command);
+                      command.done == robot.done && command.agent_id == robot.owner_agent_id;
+    if (!same) {
+      Conflict(channel, robot, command,
+               "robot " + std::to_string(id) + " already has a different command for step " +
+                   std::to_string(command.step) + " (from agent " + std::to_string(robot.owner_agent_id) +
+                   "); this one from agent " + std::to_string(command.agent_id) + " is refused, the first is applied");
+    }
     return;
   }
   if (lockstep && command.step < world_.step()) return;  // late, for a step the robot missed
@@ -218,11 +220,10 @@ void SimNode::OnCommand(const std::string& channel, const velocity_command_t& co
     robot.owned = true;
     robot.owner_agent_id = command.agent_id;
   } else if (robot.owner_agent_id != command.agent_id) {
-    ++command_conflicts_;
-    ++robot.conflicts;
-    Reject(channel, "robot " + std::to_string(id) + " is already driven by agent " +
-                        std::to_string(robot.owner_agent_id) + "; a second agent " +
-                        std::to_string(command.agent_id) + " sends commands for it too. Stop one of them.", command.agent_id);
+    Conflict(channel, robot, command,
+             "robot " + std::to_string(id) + " is already driven by agent " + std::to_string(robot.owner_agent_id) +
+                 "; a second agent " + std::to_string(command.agent_id) +
+                 " sends commands for it too. Stop one of them.");
     return;
   }
   const auto now = Clock::now();
@@ -233,7 +234,6 @@ void SimNode::OnCommand(const std::string& channel, const velocity_command_t& co
   }
 
   robot.command_step = command.step;
-  robot.command_agent_id = command.agent_id;
   robot.conflicts = 0;
   robot.received_v = command.v;
   robot.received_w = command.w;
@@ -250,29 +250,33 @@ void SimNode::OnCommand(const std::string& channel, const velocity_command_t& co
     robot.w_radps = command.w;
   }
   robot.done = command.done;
-  robot.answered = true;
   if (!lockstep) world_.SetCommand(id, UnicycleCommand{robot.v_mps, robot.w_radps});
 }
 
 void SimNode::RecordApplied() {
   if (recorder_ == nullptr) return;
-  applied_commands_t applied;
+  // A member, so the step loop reuses its vectors' capacity.
+  applied_commands_t& applied = applied_;
+  applied.applied_agent_id.clear();
+  applied.commanded_v.clear();
+  applied.commanded_w.clear();
+  applied.conflicts.clear();
   applied.utime = SimUtime();
   applied.step = world_.step();
   applied.run_id = run_id_;
   applied.num_robots = world_.num_robots();
   const bool lockstep = options_.mode == WorldMode::kLockstep;
   for (const RobotSlot& robot : robots_) {
-    const bool driven = !robot.lost && (lockstep ? robot.answered : robot.command_agent_id != 0);
-    applied.applied_agent_id.push_back(driven ? robot.command_agent_id : 0);
+    const bool driven = !robot.lost && (lockstep ? Answered(robot) : robot.command_step >= 0);
+    applied.applied_agent_id.push_back(driven ? robot.owner_agent_id : 0);
     applied.commanded_v.push_back(driven ? robot.v_mps : 0.0);
     applied.commanded_w.push_back(driven ? robot.w_radps : 0.0);
     applied.conflicts.push_back(robot.command_step == world_.step() ? robot.conflicts : 0);
   }
   const int size = applied.getEncodedSize();
-  std::vector<uint8_t> buffer(static_cast<size_t>(size));
-  applied.encode(buffer.data(), 0, size);
-  Record(lcm::kAppliedChannel, buffer.data(), size);
+  applied_bytes_.resize(static_cast<size_t>(size));
+  applied.encode(applied_bytes_.data(), 0, size);
+  Record(lcm::kAppliedChannel, applied_bytes_.data(), size);
 }
 
 template <typename Message>
@@ -349,7 +353,7 @@ void SimNode::PublishStep(bool record) {
 
 bool SimNode::AllLiveAnswered() const {
   for (const RobotSlot& robot : robots_) {
-    if (!robot.answered && !robot.lost) return false;
+    if (!Answered(robot) && !robot.lost) return false;
   }
   return true;
 }
@@ -359,7 +363,7 @@ void SimNode::MarkSilentRobotsLost(Clock::time_point now) {
   for (size_t i = 0; i < robots_.size(); ++i) {
     RobotSlot& robot = robots_[i];
     const bool silent = options_.mode == WorldMode::kLockstep
-                            ? !robot.answered
+                            ? !Answered(robot)
                             : SecondsBetween(robot.last_heard, now) > options_.agent_timeout_s;
     if (silent && !robot.lost) {
       robot.lost = true;
@@ -381,12 +385,11 @@ void SimNode::AdvanceWorld() {
     for (size_t i = 0; i < robots_.size(); ++i) {
       RobotSlot& robot = robots_[i];
       const int id = static_cast<int>(i);
-      if (robot.answered) {
+      if (Answered(robot)) {
         world_.SetCommand(id, UnicycleCommand{robot.v_mps, robot.w_radps});
       } else {
         world_.StopRobot(id);
       }
-      robot.answered = false;
     }
   }
   world_.Step();
@@ -463,7 +466,7 @@ RunOutcome SimNode::Run(const std::atomic<bool>& stop) {
       } else if (SecondsBetween(step_published_, now) > options_.start_timeout_s) {
         std::vector<int> missing;
         for (size_t i = 0; i < robots_.size(); ++i) {
-          if (!robots_[i].answered) missing.push_back(static_cast<int>(i));
+          if (!Answered(robots_[i])) missing.push_back(static_cast<int>(i));
         }
         return Finish(RunOutcome::End::kStartTimeout,
                       "no agent answered for robot(s) " + JoinIds(missing) + " within " +

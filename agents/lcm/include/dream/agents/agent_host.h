@@ -100,7 +100,6 @@ class AgentHost {
   std::string end_detail_;
   int64_t last_step_answered_ = -1;
   bool saw_poses_since_check_ = false;
-  bool saw_any_poses_ = false;  // world_ holds the run's robot count
   WorldFollower follower_;
   int64_t obstacles_run_id_ = 0;  // run of world_.obstacles
   /// Radio messages heard before the first DREAM_POSES (a neighbour may

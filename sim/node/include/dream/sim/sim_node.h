@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "dream/applied_commands_t.hpp"
 #include "dream/lcm/bad_message_log.h"
 #include "dream/lcm/lcm_interface.h"
 #include "dream/sim/run_outcome.h"
@@ -80,13 +81,11 @@ class SimNode {
   struct RobotSlot {
     int64_t owner_agent_id = 0;
     bool owned = false;
-    bool answered = false;   // lockstep: has a command for the current step
     bool lost = false;
     bool done = false;
     double v_mps = 0.0;
     double w_radps = 0.0;
-    int64_t command_step = -1;     // step of the command held in v/w/done
-    int64_t command_agent_id = 0;  // who sent it; 0 when none (stopped)
+    int64_t command_step = -1;     // step of the command held in v/w/done (sent by owner_agent_id); -1: none
     int32_t conflicts = 0;         // refused different commands for command_step
     double received_v = 0.0;       // the held command as sent (v/w are zeroed when it was absurd)
     double received_w = 0.0;
@@ -98,9 +97,12 @@ class SimNode {
   void OnStatus(const run_status_t& status);
   /// Notes a run id of another world (logged once per id).
   void NoteOtherWorld(int64_t run_id, const std::string& seen_on);
-  /// Counts a command for `robot`'s current command step that differs from
-  /// the one it holds (from whichever sender): refused, the first stays.
-  void Conflict(const std::string& channel, RobotSlot& robot, const velocity_command_t& command);
+  /// Counts a command refused because the robot has another for its step
+  /// (a different one, or a second agent's): the first stays. `reason` says which.
+  void Conflict(const std::string& channel, RobotSlot& robot, const velocity_command_t& command,
+                const std::string& reason);
+  /// Lockstep: the robot has a command for the step the world is at.
+  bool Answered(const RobotSlot& robot) const { return robot.command_step == world_.step(); }
   /// Records which commands are applied at this step (DREAM_APPLIED).
   void RecordApplied();
   void OnAnyMessage(const std::string& channel, const void* data, int size);
@@ -123,6 +125,8 @@ class SimNode {
   lcm::LcmInterface& lcm_;
   World& world_;
   std::vector<ObstacleState> obstacle_states_;  // scratch for PublishStep
+  applied_commands_t applied_;                  // scratch for RecordApplied
+  std::vector<uint8_t> applied_bytes_;
   RunRecorder* recorder_;
   int64_t recorder_failed_at_step_ = -1;
   SimNodeOptions options_;
