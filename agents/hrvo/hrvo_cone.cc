@@ -1,4 +1,4 @@
-#include "dream/agents/hrvo_cone.h"
+#include "dream/agents/hrvo/hrvo_cone.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "dream/agents/hrvo_exact.h"
+#include "dream/agents/hrvo/hrvo_exact.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "dream/agents/hrvo_params.h"
+#include "dream/agents/hrvo/hrvo_params.h"
 
 #include <cmath>
 #include <sstream>

@@ -1,4 +1,4 @@
-#include "dream/agents/hrvo_thesis.h"
+#include "dream/agents/hrvo/hrvo_thesis.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "dream/agents/actuator_limits.h"
+#include "dream/agents/framework/actuator_limits.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,10 @@
-#include "dream/agents/affine_follower_robot.h"
+#include "dream/agents/experiments/affine_follower_robot.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-#include "dream/agents/formation_state_message.h"
+#include "dream/agents/experiments/formation_state_message.h"
 
 namespace dream::agents {
 

@@ -1,10 +1,10 @@
-#include "dream/agents/affine_formation_metrics.h"
+#include "dream/agents/experiments/affine_formation_metrics.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-#include "dream/agents/affine_transform.h"
+#include "dream/agents/geometry/affine_transform.h"
 
 namespace dream::agents {
 namespace {

@@ -1,9 +1,9 @@
-#include "dream/agents/affine_leader_robot.h"
+#include "dream/agents/experiments/affine_leader_robot.h"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "dream/agents/formation_state_message.h"
+#include "dream/agents/experiments/formation_state_message.h"
 
 namespace dream::agents {
 

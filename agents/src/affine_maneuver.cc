@@ -1,4 +1,4 @@
-#include "dream/agents/affine_maneuver.h"
+#include "dream/agents/experiments/affine_maneuver.h"
 
 #include <cmath>
 #include <stdexcept>

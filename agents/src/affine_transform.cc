@@ -1,4 +1,4 @@
-#include "dream/agents/affine_transform.h"
+#include "dream/agents/geometry/affine_transform.h"
 
 #include <Eigen/Dense>
 

@@ -1,4 +1,4 @@
-#include "dream/agents/circle_formation_robot.h"
+#include "dream/agents/experiments/circle_formation_robot.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "dream/agents/convex_polygon.h"
+#include "dream/agents/geometry/convex_polygon.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
-#include "dream/agents/coverage_cost.h"
+#include "dream/agents/experiments/coverage_cost.h"
 
-#include "dream/agents/convex_polygon.h"
-#include "dream/agents/half_plane.h"
-#include "dream/agents/rectangle_union.h"
+#include "dream/agents/geometry/convex_polygon.h"
+#include "dream/agents/geometry/half_plane.h"
+#include "dream/agents/geometry/rectangle_union.h"
 
 namespace dream::agents {
 

@@ -1,11 +1,11 @@
-#include "dream/agents/formation_progress.h"
+#include "dream/agents/experiments/formation_progress.h"
 
 #include <algorithm>
 #include <stdexcept>
 #include <string>
 
-#include "dream/agents/byte_reader.h"
-#include "dream/agents/byte_writer.h"
+#include "dream/agents/framework/byte_reader.h"
+#include "dream/agents/framework/byte_writer.h"
 
 namespace dream::agents {
 

@@ -1,4 +1,4 @@
-#include "dream/agents/formation_sequence_metrics.h"
+#include "dream/agents/experiments/formation_sequence_metrics.h"
 
 #include <string>
 

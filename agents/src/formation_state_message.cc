@@ -1,7 +1,7 @@
-#include "dream/agents/formation_state_message.h"
+#include "dream/agents/experiments/formation_state_message.h"
 
-#include "dream/agents/byte_reader.h"
-#include "dream/agents/byte_writer.h"
+#include "dream/agents/framework/byte_reader.h"
+#include "dream/agents/framework/byte_writer.h"
 
 namespace dream::agents {
 

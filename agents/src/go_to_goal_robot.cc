@@ -1,4 +1,4 @@
-#include "dream/agents/go_to_goal_robot.h"
+#include "dream/agents/experiments/go_to_goal_robot.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,9 +1,9 @@
-#include "dream/agents/hrvo_robot.h"
+#include "dream/agents/hrvo/hrvo_robot.h"
 
 #include <stdexcept>
 
-#include "dream/agents/hrvo_exact.h"
-#include "dream/agents/hrvo_thesis.h"
+#include "dream/agents/hrvo/hrvo_exact.h"
+#include "dream/agents/hrvo/hrvo_thesis.h"
 
 namespace dream::agents {
 namespace {

@@ -1,4 +1,4 @@
-#include "dream/agents/line_consensus.h"
+#include "dream/agents/experiments/line_consensus.h"
 
 namespace dream::agents {
 

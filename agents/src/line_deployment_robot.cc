@@ -1,10 +1,10 @@
-#include "dream/agents/line_deployment_robot.h"
+#include "dream/agents/experiments/line_deployment_robot.h"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "dream/agents/byte_reader.h"
-#include "dream/agents/byte_writer.h"
+#include "dream/agents/framework/byte_reader.h"
+#include "dream/agents/framework/byte_writer.h"
 
 namespace dream::agents {
 

@@ -1,4 +1,4 @@
-#include "dream/agents/line_formation_metrics.h"
+#include "dream/agents/experiments/line_formation_metrics.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
-#include "dream/agents/position_message.h"
+#include "dream/agents/experiments/position_message.h"
 
-#include "dream/agents/byte_reader.h"
-#include "dream/agents/byte_writer.h"
+#include "dream/agents/framework/byte_reader.h"
+#include "dream/agents/framework/byte_writer.h"
 
 namespace dream::agents {
 

@@ -3,12 +3,12 @@
 #include <queue>
 #include <stdexcept>
 
-#include "dream/agents/graph_radio.h"
-#include "dream/agents/mailbox.h"
-#include "dream/agents/noise_source.h"
-#include "dream/agents/number_text.h"
-#include "dream/agents/range_radio.h"
-#include "dream/agents/role_radio.h"
+#include "dream/agents/framework/graph_radio.h"
+#include "dream/agents/framework/mailbox.h"
+#include "dream/agents/framework/noise_source.h"
+#include "dream/agents/framework/number_text.h"
+#include "dream/agents/framework/range_radio.h"
+#include "dream/agents/framework/role_radio.h"
 
 namespace dream::agents {
 

@@ -1,4 +1,4 @@
-#include "dream/agents/rectangle_union.h"
+#include "dream/agents/geometry/rectangle_union.h"
 
 #include <functional>
 

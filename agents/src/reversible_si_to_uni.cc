@@ -1,4 +1,4 @@
-#include "dream/agents/reversible_si_to_uni.h"
+#include "dream/agents/geometry/reversible_si_to_uni.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,9 +1,9 @@
-#include "dream/agents/robot.h"
+#include "dream/agents/framework/robot.h"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "dream/agents/number_text.h"
+#include "dream/agents/framework/number_text.h"
 
 namespace dream::agents {
 

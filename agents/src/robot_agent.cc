@@ -1,4 +1,4 @@
-#include "dream/agents/robot_agent.h"
+#include "dream/agents/framework/robot_agent.h"
 
 #include <stdexcept>
 

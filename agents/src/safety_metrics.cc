@@ -1,4 +1,4 @@
-#include "dream/agents/safety_metrics.h"
+#include "dream/agents/framework/safety_metrics.h"
 
 #include <cmath>
 

@@ -2,11 +2,11 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "dream/agents/movement_sensor.h"
-#include "dream/agents/number_text.h"
-#include "dream/agents/obstacle_sensor.h"
-#include "dream/agents/odometry_sensor.h"
-#include "dream/agents/robot.h"
+#include "dream/agents/framework/movement_sensor.h"
+#include "dream/agents/framework/number_text.h"
+#include "dream/agents/framework/obstacle_sensor.h"
+#include "dream/agents/framework/odometry_sensor.h"
+#include "dream/agents/framework/robot.h"
 
 namespace dream::agents {
 namespace {

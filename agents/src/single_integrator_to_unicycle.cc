@@ -1,4 +1,4 @@
-#include "dream/agents/single_integrator_to_unicycle.h"
+#include "dream/agents/geometry/single_integrator_to_unicycle.h"
 
 #include <cmath>
 #include <stdexcept>

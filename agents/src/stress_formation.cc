@@ -1,5 +1,5 @@
-#include "dream/agents/number_text.h"
-#include "dream/agents/stress_formation.h"
+#include "dream/agents/framework/number_text.h"
+#include "dream/agents/experiments/stress_formation.h"
 
 #include <Eigen/Dense>
 #include <algorithm>

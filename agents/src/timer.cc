@@ -1,4 +1,4 @@
-#include "dream/agents/timer.h"
+#include "dream/agents/framework/timer.h"
 
 #include <stdexcept>
 

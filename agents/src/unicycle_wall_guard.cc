@@ -1,4 +1,4 @@
-#include "dream/agents/unicycle_wall_guard.h"
+#include "dream/agents/geometry/unicycle_wall_guard.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,11 +1,11 @@
-#include "dream/agents/number_text.h"
-#include "dream/agents/voronoi_cell.h"
+#include "dream/agents/framework/number_text.h"
+#include "dream/agents/geometry/voronoi_cell.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-#include "dream/agents/rectangle_union.h"
+#include "dream/agents/geometry/rectangle_union.h"
 
 namespace dream::agents {
 namespace {

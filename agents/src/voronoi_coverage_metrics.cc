@@ -1,4 +1,4 @@
-#include "dream/agents/voronoi_coverage_metrics.h"
+#include "dream/agents/experiments/voronoi_coverage_metrics.h"
 
 #include <cstdio>
 #include <cmath>

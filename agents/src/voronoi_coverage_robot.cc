@@ -1,11 +1,11 @@
-#include "dream/agents/voronoi_coverage_robot.h"
+#include "dream/agents/experiments/voronoi_coverage_robot.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-#include "dream/agents/position_message.h"
+#include "dream/agents/experiments/position_message.h"
 
 namespace dream::agents {
 namespace {

@@ -2,9 +2,9 @@
 
 #include <filesystem>
 
-#include "dream/agents/python_controller_builder.h"
-#include "dream/agents/python_controller_spec.h"
-#include "dream/sim/file_text.h"
+#include "dream/agent_host/python_controller_builder.h"
+#include "dream/agent_host/python_controller_spec.h"
+#include "dream/node/file_text.h"
 
 namespace dream::bridge {
 

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "dream/sim/file_text.h"
+#include "dream/node/file_text.h"
 
 namespace dream::bridge {
 namespace {

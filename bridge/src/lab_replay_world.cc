@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "dream/sim/run_recorder.h"
+#include "dream/node/run_recorder.h"
 #include "dream/velocity_command_t.hpp"
 
 namespace dream::bridge {

@@ -1,7 +1,7 @@
 #include "dream/bridge/metrics_json.h"
 
-#include "dream/agents/controller_factory.h"
-#include "dream/agents/log_metrics.h"
+#include "dream/agent_host/controller_factory.h"
+#include "dream/agent_host/log_metrics.h"
 
 namespace dream::bridge {
 

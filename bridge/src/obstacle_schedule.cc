@@ -1,7 +1,7 @@
 #include "dream/bridge/obstacle_schedule.h"
 
 #include "dream/bridge/submission_format.h"
-#include "dream/sim/rectangle_obstacle.h"
+#include "dream/world/rectangle_obstacle.h"
 
 namespace dream::bridge {
 

@@ -6,7 +6,7 @@
 #include <map>
 
 #include "dream/run_status_t.hpp"
-#include "dream/sim/violation_checker.h"
+#include "dream/world/violation_checker.h"
 
 namespace dream::bridge {
 namespace {

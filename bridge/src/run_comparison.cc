@@ -4,11 +4,11 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "dream/sim/output_folder.h"
+#include "dream/node/output_folder.h"
 #include "dream/bridge/run_track.h"
 #include "dream/config/run_config.h"
-#include "dream/sim/comparison_picture.h"
-#include "dream/sim/run_report.h"
+#include "dream/render/comparison_picture.h"
+#include "dream/world/run_report.h"
 #include "dream/bridge/metrics_json.h"
 
 namespace dream::bridge {

@@ -1,4 +1,4 @@
-#include "dream/sim/file_text.h"
+#include "dream/node/file_text.h"
 #include "dream/bridge/submission_exporter.h"
 
 #include <cmath>
@@ -8,16 +8,16 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "dream/agents/python_controller_spec.h"
+#include "dream/agent_host/python_controller_spec.h"
 #include "dream/bridge/controller_module_copy.h"
 #include "dream/bridge/flat_python_runtime.h"
 #include "dream/bridge/npy_file.h"
 #include "dream/bridge/obstacle_schedule.h"
-#include "dream/sim/output_folder.h"
+#include "dream/node/output_folder.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/bridge/submission_params.h"
 #include "dream/config/run_config.h"
-#include "dream/sim/run_verdict.h"
+#include "dream/world/run_verdict.h"
 
 namespace dream::bridge {
 namespace {

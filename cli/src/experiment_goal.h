@@ -4,7 +4,7 @@
 #include <optional>
 #include <string>
 
-#include "dream/sim/verdict_reason.h"
+#include "dream/world/verdict_reason.h"
 
 namespace dream::cli {
 

@@ -5,8 +5,8 @@
 #include "commands.h"
 #include "dream/lcm/run_id.h"
 #include "data_files.h"
-#include "dream/agents/controller_factory.h"
-#include "dream/agents/python_controller_spec.h"
+#include "dream/agent_host/controller_factory.h"
+#include "dream/agent_host/python_controller_spec.h"
 #include "python_host_library.h"
 
 namespace dream::cli {

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "dream/agents/agent_host.h"
-#include "dream/agents/python_agent_host.h"
+#include "dream/agent_host/agent_host.h"
+#include "dream/python_host/python_agent_host.h"
 #include "dream/config/controller_config.h"
 #include "dream/lcm/lcm_bus.h"
 

@@ -13,8 +13,8 @@
 #include <fstream>
 
 #include "command_line.h"
-#include "dream/sim/atomic_file.h"
-#include "dream/sim/output_folder_lock.h"
+#include "dream/node/atomic_file.h"
+#include "dream/node/output_folder_lock.h"
 #include "commands.h"
 #include "process_group.h"
 #include "run_output.h"

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "dream/agents/python_agent_host.h"
+#include "dream/python_host/python_agent_host.h"
 
 namespace dream::cli {
 

@@ -3,9 +3,9 @@
 #include <memory>
 #include <vector>
 
-#include "dream/agents/agent_parts_config.h"
-#include "dream/agents/controller_factory.h"
-#include "dream/agents/world_snapshot.h"
+#include "dream/agent_host/agent_parts_config.h"
+#include "dream/agent_host/controller_factory.h"
+#include "dream/agents/framework/world_snapshot.h"
 
 namespace dream::cli {
 namespace {

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "dream/agents/controller_factory.h"
+#include "dream/agent_host/controller_factory.h"
 #include "dream/config/run_config.h"
-#include "dream/sim/arena_overlays.h"
+#include "dream/render/arena_overlays.h"
 
 namespace dream::cli {
 

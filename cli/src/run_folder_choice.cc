@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "dream/sim/output_folder.h"
-#include "dream/sim/output_folder_lock.h"
+#include "dream/node/output_folder.h"
+#include "dream/node/output_folder_lock.h"
 
 namespace dream::cli {
 namespace fs = std::filesystem;

@@ -7,10 +7,10 @@
 #include "dream/lcm/lcm_interface.h"
 #include <nlohmann/json.hpp>
 
-#include "dream/sim/run_judgement.h"
-#include "dream/sim/run_outcome.h"
-#include "dream/sim/run_report.h"
-#include "dream/sim/world.h"
+#include "dream/world/run_judgement.h"
+#include "dream/node/run_outcome.h"
+#include "dream/world/run_report.h"
+#include "dream/world/world.h"
 
 namespace dream::cli {
 

@@ -6,7 +6,7 @@
 
 #include <spdlog/sinks/sink.h>
 
-#include "dream/sim/progress_reporter.h"
+#include "dream/node/progress_reporter.h"
 
 namespace dream::cli {
 

@@ -44,7 +44,7 @@ def _in_range(value, lo_exclusive, hi_inclusive):
 
 
 class HrvoParams:
-    """What every HRVO needs (agents/include/dream/agents/hrvo_params.h); defaults are the
+    """What every HRVO needs (agents/include/dream/agents/hrvo/hrvo_params.h); defaults are the
     thesis's Robot_hrvo values on the Robotarium. `check()` applies the C++ IsValid rules."""
 
     __slots__ = ("safety_radius_m", "max_speed_mps", "check_boundaries", "x_min_m", "x_max_m", "y_min_m",

@@ -12,7 +12,7 @@ HALF_PI = math.pi / 2.0
 
 
 class RobotLimits:
-    """The physical limits of a Robotarium GRITSBot X (agents/include/dream/agents/robot_limits.h)."""
+    """The physical limits of a Robotarium GRITSBot X (agents/include/dream/agents/framework/robot_limits.h)."""
 
     __slots__ = ("max_linear_speed_mps", "wheel_radius_m", "base_length_m", "max_wheel_speed_radps",
                  "max_angular_speed_radps")

@@ -69,7 +69,7 @@ def number_text(value):
 
 
 class RobotParams:
-    """Parameters every Robot has (agents/include/dream/agents/robot_params.h)."""
+    """Parameters every Robot has (agents/include/dream/agents/framework/robot_params.h)."""
 
     __slots__ = ("vel_gain", "ang_gain", "limits")
 
@@ -186,7 +186,7 @@ def _float_rows(rows):
 
 
 class Robot:
-    """The thesis's Robot: one robot's controller (agents/include/dream/agents/robot.h).
+    """The thesis's Robot: one robot's controller (agents/include/dream/agents/framework/robot.h).
 
     The runtime builds it as Robot(robot_id, params, config, num_robots) and calls setup() once;
     subclasses implement update(step) -> (v, w) and, optionally, setup(), done(), on_radio() and

@@ -5,14 +5,14 @@
 
 #include <cmath>
 
-#include "dream/agents/affine_follower_robot.h"
-#include "dream/agents/affine_formation_metrics.h"
-#include "dream/agents/affine_leader_robot.h"
-#include "dream/agents/affine_maneuver.h"
-#include "dream/agents/byte_writer.h"
-#include "dream/agents/formation_state_message.h"
-#include "dream/agents/reversible_si_to_uni.h"
-#include "dream/agents/stress_formation.h"
+#include "dream/agents/experiments/affine_follower_robot.h"
+#include "dream/agents/experiments/affine_formation_metrics.h"
+#include "dream/agents/experiments/affine_leader_robot.h"
+#include "dream/agents/experiments/affine_maneuver.h"
+#include "dream/agents/framework/byte_writer.h"
+#include "dream/agents/experiments/formation_state_message.h"
+#include "dream/agents/geometry/reversible_si_to_uni.h"
+#include "dream/agents/experiments/stress_formation.h"
 
 namespace dream::agents {
 namespace {

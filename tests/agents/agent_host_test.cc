@@ -1,4 +1,4 @@
-#include "dream/agents/agent_host.h"
+#include "dream/agent_host/agent_host.h"
 
 #include <gtest/gtest.h>
 #include <spdlog/sinks/ostream_sink.h>
@@ -7,11 +7,11 @@
 #include <set>
 #include <sstream>
 
-#include "dream/agents/byte_reader.h"
-#include "dream/agents/byte_writer.h"
-#include "dream/agents/controller_factory.h"
-#include "dream/agents/graph_radio.h"
-#include "dream/agents/range_radio.h"
+#include "dream/agents/framework/byte_reader.h"
+#include "dream/agents/framework/byte_writer.h"
+#include "dream/agent_host/controller_factory.h"
+#include "dream/agents/framework/graph_radio.h"
+#include "dream/agents/framework/range_radio.h"
 #include "dream/lcm/channels.h"
 #include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/lcm_typed.h"

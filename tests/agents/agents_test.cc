@@ -2,10 +2,10 @@
 
 #include <cmath>
 
-#include "dream/agents/actuator_limits.h"
-#include "dream/agents/go_to_goal_robot.h"
-#include "dream/agents/robot.h"
-#include "dream/agents/single_integrator_to_unicycle.h"
+#include "dream/agents/framework/actuator_limits.h"
+#include "dream/agents/experiments/go_to_goal_robot.h"
+#include "dream/agents/framework/robot.h"
+#include "dream/agents/geometry/single_integrator_to_unicycle.h"
 
 namespace dream::agents {
 namespace {

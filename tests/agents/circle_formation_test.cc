@@ -2,12 +2,12 @@
 
 #include <cmath>
 
-#include "dream/agents/byte_writer.h"
-#include "dream/agents/circle_formation_robot.h"
-#include "dream/agents/controller_factory.h"
-#include "dream/agents/formation_progress.h"
-#include "dream/agents/formation_sequence_metrics.h"
-#include "dream/agents/hrvo_circle_builder.h"
+#include "dream/agents/framework/byte_writer.h"
+#include "dream/agents/experiments/circle_formation_robot.h"
+#include "dream/agent_host/controller_factory.h"
+#include "dream/agents/experiments/formation_progress.h"
+#include "dream/agents/experiments/formation_sequence_metrics.h"
+#include "dream/agent_host/hrvo_circle_builder.h"
 #include "dream/config/config_error.h"
 
 namespace dream::agents {

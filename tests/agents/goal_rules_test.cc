@@ -7,7 +7,7 @@
 
 #include <optional>
 
-#include "dream/agents/controller_factory.h"
+#include "dream/agent_host/controller_factory.h"
 #include "dream/config/run_config.h"
 
 namespace dream::agents {

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "dream/agents/hrvo_exact.h"
-#include "dream/agents/hrvo_thesis.h"
+#include "dream/agents/hrvo/hrvo_exact.h"
+#include "dream/agents/hrvo/hrvo_thesis.h"
 #include "hrvo_swap_harness.h"
 
 namespace dream::agents {

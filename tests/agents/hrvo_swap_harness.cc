@@ -6,9 +6,9 @@
 #include <stdexcept>
 #include <time.h>
 
-#include "dream/agents/actuator_limits.h"
-#include "dream/agents/robot.h"
-#include "dream/sim/unicycle_world.h"
+#include "dream/agents/framework/actuator_limits.h"
+#include "dream/agents/framework/robot.h"
+#include "dream/world/unicycle_world.h"
 
 namespace dream::agents {
 namespace {

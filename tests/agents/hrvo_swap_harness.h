@@ -11,8 +11,8 @@
 #include <memory>
 #include <vector>
 
-#include "dream/agents/hrvo_avoidance.h"
-#include "dream/sim/pose2.h"
+#include "dream/agents/hrvo/hrvo_avoidance.h"
+#include "dream/world/pose2.h"
 
 namespace dream::agents {
 

@@ -10,12 +10,12 @@
 #include <string>
 #include <vector>
 
-#include "dream/agents/circle_formation_robot.h"
-#include "dream/agents/hrvo_cone.h"
-#include "dream/agents/hrvo_exact.h"
-#include "dream/agents/hrvo_params.h"
-#include "dream/agents/hrvo_thesis.h"
-#include "dream/agents/unicycle_wall_guard.h"
+#include "dream/agents/experiments/circle_formation_robot.h"
+#include "dream/agents/hrvo/hrvo_cone.h"
+#include "dream/agents/hrvo/hrvo_exact.h"
+#include "dream/agents/hrvo/hrvo_params.h"
+#include "dream/agents/hrvo/hrvo_thesis.h"
+#include "dream/agents/geometry/unicycle_wall_guard.h"
 
 namespace dream::agents {
 namespace {

@@ -2,12 +2,12 @@
 
 #include <cmath>
 
-#include "dream/agents/byte_writer.h"
-#include "dream/agents/controller_factory.h"
-#include "dream/agents/line_consensus.h"
-#include "dream/agents/line_deployment_builder.h"
-#include "dream/agents/line_deployment_robot.h"
-#include "dream/agents/line_formation_metrics.h"
+#include "dream/agents/framework/byte_writer.h"
+#include "dream/agent_host/controller_factory.h"
+#include "dream/agents/experiments/line_consensus.h"
+#include "dream/agent_host/line_deployment_builder.h"
+#include "dream/agents/experiments/line_deployment_robot.h"
+#include "dream/agents/experiments/line_formation_metrics.h"
 #include "dream/config/config_error.h"
 
 namespace dream::agents {

@@ -5,18 +5,18 @@
 
 #include <cmath>
 
-#include "dream/agents/byte_reader.h"
-#include "dream/agents/byte_writer.h"
-#include "dream/agents/graph_radio.h"
-#include "dream/agents/mailbox.h"
-#include "dream/agents/movement_sensor.h"
-#include "dream/agents/obstacle_sensor.h"
-#include "dream/agents/odometry_sensor.h"
-#include "dream/agents/range_radio.h"
-#include "dream/agents/robot.h"
-#include "dream/agents/robot_agent.h"
-#include "dream/agents/role_radio.h"
-#include "dream/agents/timer.h"
+#include "dream/agents/framework/byte_reader.h"
+#include "dream/agents/framework/byte_writer.h"
+#include "dream/agents/framework/graph_radio.h"
+#include "dream/agents/framework/mailbox.h"
+#include "dream/agents/framework/movement_sensor.h"
+#include "dream/agents/framework/obstacle_sensor.h"
+#include "dream/agents/framework/odometry_sensor.h"
+#include "dream/agents/framework/range_radio.h"
+#include "dream/agents/framework/robot.h"
+#include "dream/agents/framework/robot_agent.h"
+#include "dream/agents/framework/role_radio.h"
+#include "dream/agents/framework/timer.h"
 
 namespace dream::agents {
 namespace {

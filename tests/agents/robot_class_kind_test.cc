@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "dream/agents/controller_factory.h"
-#include "dream/agents/controller_kind.h"
-#include "dream/agents/controller_registry.h"
+#include "dream/agent_host/controller_factory.h"
+#include "dream/agent_host/controller_kind.h"
+#include "dream/agent_host/controller_registry.h"
 #include "dream/config/config_error.h"
 #include "dream/config/run_config.h"
 #include "../support/factory_error.h"

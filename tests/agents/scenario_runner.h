@@ -3,11 +3,11 @@
 #include <string>
 #include <vector>
 
-#include "dream/agents/metrics_report.h"
+#include "dream/agents/framework/metrics_report.h"
 #include "dream/config/run_config.h"
-#include "dream/sim/pose2.h"
-#include "dream/sim/run_outcome.h"
-#include "dream/sim/violation_counts.h"
+#include "dream/world/pose2.h"
+#include "dream/node/run_outcome.h"
+#include "dream/world/violation_counts.h"
 
 namespace dream::agents::scenario {
 

@@ -10,15 +10,15 @@
 #include <atomic>
 #include <cstdio>
 
-#include "dream/agents/agent_host.h"
-#include "dream/agents/controller_factory.h"
-#include "dream/agents/log_metrics.h"
+#include "dream/agent_host/agent_host.h"
+#include "dream/agent_host/controller_factory.h"
+#include "dream/agent_host/log_metrics.h"
 #include "dream/config/config_error.h"
 #include "dream/config/run_config.h"
 #include "dream/lcm/lcm_bus.h"
-#include "dream/sim/run_recorder.h"
-#include "dream/sim/sim_node.h"
-#include "dream/sim/unicycle_world.h"
+#include "dream/node/run_recorder.h"
+#include "dream/node/sim_node.h"
+#include "dream/world/unicycle_world.h"
 
 namespace dream::agents {
 namespace {

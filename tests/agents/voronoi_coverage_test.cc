@@ -5,14 +5,14 @@
 
 #include <cmath>
 
-#include "dream/agents/convex_polygon.h"
-#include "dream/agents/coverage_cost.h"
-#include "dream/agents/obstacle_sensor.h"
-#include "dream/agents/position_message.h"
-#include "dream/agents/rectangle_union.h"
-#include "dream/agents/voronoi_cell.h"
-#include "dream/agents/voronoi_coverage_metrics.h"
-#include "dream/agents/voronoi_coverage_robot.h"
+#include "dream/agents/geometry/convex_polygon.h"
+#include "dream/agents/experiments/coverage_cost.h"
+#include "dream/agents/framework/obstacle_sensor.h"
+#include "dream/agents/experiments/position_message.h"
+#include "dream/agents/geometry/rectangle_union.h"
+#include "dream/agents/geometry/voronoi_cell.h"
+#include "dream/agents/experiments/voronoi_coverage_metrics.h"
+#include "dream/agents/experiments/voronoi_coverage_robot.h"
 
 namespace dream::agents {
 namespace {

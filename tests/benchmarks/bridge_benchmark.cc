@@ -13,7 +13,7 @@
 #include "dream/bridge/lab_import.h"
 #include "dream/bridge/metrics_json.h"
 #include "dream/config/run_config.h"
-#include "dream/sim/trajectory_picture.h"
+#include "dream/render/trajectory_picture.h"
 #include "dream/bridge/npy_file.h"
 #include "dream/bridge/submission_exporter.h"
 #include "dream/bridge/submission_format.h"
@@ -21,8 +21,8 @@
 #include "dream/obstacles_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
-#include "dream/sim/run_recorder.h"
-#include "dream/sim/unicycle_world.h"
+#include "dream/node/run_recorder.h"
+#include "dream/world/unicycle_world.h"
 #include "dream/velocity_command_t.hpp"
 
 namespace {

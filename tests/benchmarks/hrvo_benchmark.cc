@@ -11,8 +11,8 @@
 
 #include <benchmark/benchmark.h>
 
-#include "dream/agents/hrvo_exact.h"
-#include "dream/agents/hrvo_thesis.h"
+#include "dream/agents/hrvo/hrvo_exact.h"
+#include "dream/agents/hrvo/hrvo_thesis.h"
 
 namespace dream::agents {
 namespace {

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "../agents/hrvo_swap_harness.h"
-#include "dream/agents/hrvo_exact.h"
-#include "dream/agents/hrvo_thesis.h"
+#include "dream/agents/hrvo/hrvo_exact.h"
+#include "dream/agents/hrvo/hrvo_thesis.h"
 
 namespace dream::agents {
 namespace {

@@ -10,8 +10,8 @@
 
 #include <benchmark/benchmark.h>
 
-#include "dream/sim/initial_pose_generator.h"
-#include "dream/sim/unicycle_world.h"
+#include "dream/world/initial_pose_generator.h"
+#include "dream/world/unicycle_world.h"
 
 namespace dream::sim {
 namespace {

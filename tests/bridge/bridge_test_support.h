@@ -10,8 +10,8 @@
 #include "dream/bridge/npy_file.h"
 #include "dream/bridge/run_track.h"
 #include "dream/config/run_config.h"
-#include "dream/sim/run_outcome.h"
-#include "dream/sim/world.h"
+#include "dream/node/run_outcome.h"
+#include "dream/world/world.h"
 
 namespace dream::bridge::testing {
 

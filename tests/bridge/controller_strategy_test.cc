@@ -16,7 +16,7 @@
 #include "dream/bridge/obstacle_schedule.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/bridge/submission_params.h"
-#include "dream/sim/unicycle_world.h"
+#include "dream/world/unicycle_world.h"
 
 namespace dream::bridge {
 namespace {

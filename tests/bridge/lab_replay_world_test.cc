@@ -15,8 +15,8 @@
 #include "dream/bridge/submission_format.h"
 #include "dream/lcm/log_reader.h"
 #include "dream/lcm/run_id.h"
-#include "dream/sim/run_recorder.h"
-#include "dream/sim/unicycle_world.h"
+#include "dream/node/run_recorder.h"
+#include "dream/world/unicycle_world.h"
 
 namespace dream::bridge {
 namespace {

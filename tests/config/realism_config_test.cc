@@ -5,7 +5,7 @@
 #include <string>
 
 #include "dream/config/run_config.h"
-#include "dream/sim/realism_params.h"
+#include "dream/world/realism_params.h"
 
 namespace dream::config {
 namespace {

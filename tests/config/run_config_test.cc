@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "dream/sim/unicycle_world.h"
+#include "dream/world/unicycle_world.h"
 
 namespace dream::config {
 namespace {

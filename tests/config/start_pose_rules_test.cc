@@ -13,7 +13,7 @@
 #include "dream/bridge/pre_validation.h"
 #include "dream/config/run_config.h"
 #include "dream/run_status_t.hpp"
-#include "dream/sim/unicycle_world.h"
+#include "dream/world/unicycle_world.h"
 
 namespace dream::config {
 namespace {

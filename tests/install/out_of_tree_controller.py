@@ -47,7 +47,7 @@ def parse_args():
 
 def installed_files_are_there(prefix):
     for relative in ["bin/dream", "bin/dream-agent", "lib/libdream_agent_host.so", "lib/libdream_agents.so",
-                     "include/dream/agents/controller_plugin.h", "include/dream/agents/robot.h",
+                     "include/dream/agent_host/controller_plugin.h", "include/dream/agents/framework/robot.h",
                      "include/dream/config/config_node.h", "include/dream/robot_poses_t.hpp",
                      "lib/cmake/dream/dreamConfig.cmake", "lib/cmake/dream/dreamConfigVersion.cmake",
                      "lib/cmake/dream/dreamTargets.cmake", "share/dream/java/dream_lcmtypes.jar",

@@ -1,4 +1,4 @@
-#include "dream/sim/output_folder.h"
+#include "dream/node/output_folder.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

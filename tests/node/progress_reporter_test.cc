@@ -1,4 +1,4 @@
-#include "dream/sim/progress_reporter.h"
+#include "dream/node/progress_reporter.h"
 
 #include <gtest/gtest.h>
 

@@ -1,14 +1,14 @@
 // JudgeRun and the summary: what went wrong on the bus (lost robots, failed
 // controllers, command conflicts, bad messages) and the lab verifier's rules
 // make the verdict, with one reason each, in summary.json.
-#include "dream/sim/run_judge.h"
+#include "dream/node/run_judge.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "dream/sim/run_summary.h"
-#include "dream/sim/unicycle_world.h"
+#include "dream/node/run_summary.h"
+#include "dream/world/unicycle_world.h"
 
 namespace dream::sim {
 namespace {

@@ -1,4 +1,4 @@
-#include "dream/sim/run_recorder.h"
+#include "dream/node/run_recorder.h"
 
 #include <gtest/gtest.h>
 
@@ -8,8 +8,8 @@
 #include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/log_reader.h"
 #include "dream/robot_poses_t.hpp"
-#include "dream/sim/atomic_file.h"
-#include "dream/sim/sim_node.h"
+#include "dream/node/atomic_file.h"
+#include "dream/node/sim_node.h"
 #include "run_with_file_size_limit.h"
 #include "scripted_agent.h"
 

@@ -1,4 +1,4 @@
-#include "dream/sim/sim_node.h"
+#include "dream/node/sim_node.h"
 
 #include <gtest/gtest.h>
 
@@ -12,8 +12,8 @@
 #include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/lcm_typed.h"
 #include "dream/lcm/log_reader.h"
-#include "dream/sim/run_recorder.h"
-#include "dream/sim/progress_reporter.h"
+#include "dream/node/run_recorder.h"
+#include "dream/node/progress_reporter.h"
 #include "dream/robot_fault_t.hpp"
 #include "dream/run_status_t.hpp"
 #include "dream/velocity_command_t.hpp"

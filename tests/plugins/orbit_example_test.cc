@@ -10,10 +10,10 @@
 #include <sstream>
 #include <string>
 
-#include "dream/agents/controller_factory.h"
+#include "dream/agent_host/controller_factory.h"
 #include "dream/config/config_error.h"
 #include "dream/config/run_config.h"
-#include "dream/sim/file_text.h"
+#include "dream/node/file_text.h"
 #include "../support/factory_error.h"
 #include "scenario_runner.h"
 

@@ -9,9 +9,9 @@
 #include <cmath>
 #include <string>
 
-#include "dream/agents/controller_factory.h"
+#include "dream/agent_host/controller_factory.h"
 #include "dream/config/run_config.h"
-#include "dream/sim/file_text.h"
+#include "dream/node/file_text.h"
 #include "scenario_runner.h"
 
 namespace dream::agents {

@@ -11,7 +11,7 @@
 #include <memory>
 #include <vector>
 
-#include "dream/agents/controller_plugin.h"
+#include "dream/agent_host/controller_plugin.h"
 
 namespace {
 

@@ -8,8 +8,8 @@
 #include <iostream>
 #include <vector>
 
-#include "dream/agents/hrvo_exact.h"
-#include "dream/agents/hrvo_thesis.h"
+#include "dream/agents/hrvo/hrvo_exact.h"
+#include "dream/agents/hrvo/hrvo_thesis.h"
 
 int main() {
   using dream::agents::HrvoExact;

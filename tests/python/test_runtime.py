@@ -87,7 +87,7 @@ class TimerTest(unittest.TestCase):
 class MixSeedAndMailboxTest(unittest.TestCase):
     def test_mix_seed_matches_cpp(self):
         # NoiseSource::MixSeed values printed by a small C++ program compiled with
-        # g++ -std=c++17 -I agents/include, which includes dream/agents/noise_source.h.
+        # g++ -std=c++17 -I agents/include, which includes dream/agents/framework/noise_source.h.
         self.assertEqual(mix_seed(1, 0, 0), 770544052526001461)
         self.assertEqual(mix_seed(1, 3, 2), 4082488131637046672)
         self.assertEqual(mix_seed(42, 7, 1000), 4214736301870392316)

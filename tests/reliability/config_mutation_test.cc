@@ -13,7 +13,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "dream/agents/controller_factory.h"
+#include "dream/agent_host/controller_factory.h"
 #include "dream/config/config_error.h"
 #include "dream/config/config_node.h"
 #include "dream/config/run_config.h"

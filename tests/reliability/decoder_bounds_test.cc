@@ -16,7 +16,7 @@
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
-#include "dream/sim/robotarium_constants.h"
+#include "dream/world/robotarium_constants.h"
 #include "dream/velocity_command_t.hpp"
 #include "sample_messages.h"
 

@@ -18,7 +18,7 @@
 #include "dream/bridge/run_track.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/lcm/log_reader.h"
-#include "dream/sim/run_track.h"
+#include "dream/render/run_track.h"
 #include "file_mutator.h"
 #include "fuzz_scale.h"
 #include "lab_file_samples.h"

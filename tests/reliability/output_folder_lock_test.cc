@@ -3,7 +3,7 @@
 // the holder's descriptor (dream launch's simulator) adopts the lock. The
 // other process is util-linux's flock(1), which holds the lock file as
 // dream would and writes a holder note into it.
-#include "dream/sim/output_folder_lock.h"
+#include "dream/node/output_folder_lock.h"
 
 #include <fcntl.h>
 #include <signal.h>

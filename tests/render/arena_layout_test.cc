@@ -1,4 +1,4 @@
-#include "dream/sim/arena_layout.h"
+#include "dream/render/arena_layout.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "dream/sim/ffmpeg_encoder.h"
+#include "dream/render/ffmpeg_encoder.h"
 
 #include <gtest/gtest.h>
 #include <signal.h>

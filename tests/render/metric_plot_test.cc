@@ -1,4 +1,4 @@
-#include "dream/sim/metric_plot.h"
+#include "dream/render/metric_plot.h"
 
 #include <gtest/gtest.h>
 

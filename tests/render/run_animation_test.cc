@@ -1,4 +1,4 @@
-#include "dream/sim/run_animation.h"
+#include "dream/render/run_animation.h"
 
 #include <gtest/gtest.h>
 

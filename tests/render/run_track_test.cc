@@ -1,4 +1,4 @@
-#include "dream/sim/run_track.h"
+#include "dream/render/run_track.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 #include "dream/obstacles_t.hpp"
 #include "dream/radio_message_t.hpp"
 #include "dream/robot_poses_t.hpp"
-#include "dream/sim/run_recorder.h"
+#include "dream/node/run_recorder.h"
 
 namespace dream::sim::testing {
 namespace {

@@ -1,4 +1,4 @@
-#include "dream/sim/trajectory_picture.h"
+#include "dream/render/trajectory_picture.h"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "dream/sim/arena_layout.h"
+#include "dream/render/arena_layout.h"
 #include "picture_pixels.h"
 #include "synthetic_run_log.h"
 #include "temp_folder.h"

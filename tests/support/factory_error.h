@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "dream/agents/controller_factory.h"
+#include "dream/agent_host/controller_factory.h"
 #include "dream/config/config_error.h"
 #include "dream/config/run_config.h"
 

@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "dream/sim/unicycle_world.h"
+#include "dream/world/unicycle_world.h"
 
 namespace dream::sim {
 namespace {

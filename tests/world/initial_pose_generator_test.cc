@@ -1,4 +1,4 @@
-#include "dream/sim/initial_pose_generator.h"
+#include "dream/world/initial_pose_generator.h"
 
 #include <chrono>
 #include <cmath>
@@ -8,8 +8,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "dream/sim/start_pose_obstacle_check.h"
-#include "dream/sim/unicycle_world.h"
+#include "dream/world/start_pose_obstacle_check.h"
+#include "dream/world/unicycle_world.h"
 #include "obstacle_block.h"
 
 namespace dream::sim {

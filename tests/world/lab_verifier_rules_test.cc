@@ -1,7 +1,7 @@
 // The lab verifier's rules (robotarium_matlab_verifier) at their boundaries:
 // 100 counts pass and 101 fail, 1.5 x the declared duration, the 900 s cap,
 // the declared robot count.
-#include "dream/sim/lab_verifier_rules.h"
+#include "dream/world/lab_verifier_rules.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 
 #include <Eigen/Core>
 
-#include "dream/sim/rectangle_obstacle_spec.h"
+#include "dream/world/rectangle_obstacle_spec.h"
 
 namespace dream::sim::testing {
 

@@ -6,9 +6,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "dream/sim/initial_pose_params.h"
-#include "dream/sim/rectangle_obstacle_spec.h"
-#include "dream/sim/world_params.h"
+#include "dream/world/initial_pose_params.h"
+#include "dream/world/rectangle_obstacle_spec.h"
+#include "dream/world/world_params.h"
 
 namespace dream::sim {
 namespace {

@@ -1,7 +1,7 @@
 // RealisticWorld (world.realism): each model on its own against the true
 // world, determinism from the seed, and that ideal params through the
 // decorator step exactly like the official UnicycleWorld.
-#include "dream/sim/realistic_world.h"
+#include "dream/world/realistic_world.h"
 
 #include <gtest/gtest.h>
 
@@ -9,9 +9,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include "dream/sim/realism_params.h"
-#include "dream/sim/robotarium_constants.h"
-#include "dream/sim/unicycle_world.h"
+#include "dream/world/realism_params.h"
+#include "dream/world/robotarium_constants.h"
+#include "dream/world/unicycle_world.h"
 
 namespace dream::sim {
 namespace {

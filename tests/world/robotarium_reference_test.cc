@@ -22,8 +22,8 @@
 
 #include <gtest/gtest.h>
 
-#include "dream/sim/run_report.h"
-#include "dream/sim/unicycle_world.h"
+#include "dream/world/run_report.h"
+#include "dream/world/unicycle_world.h"
 
 namespace dream::sim {
 namespace {

@@ -1,7 +1,7 @@
 // RunJudgement: the verdict is the worst reason's; the printed text is
 // debug()'s own, word for word, until a reason beyond it says otherwise, and
 // then never says "will run on the Robotarium".
-#include "dream/sim/run_judgement.h"
+#include "dream/world/run_judgement.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "dream/sim/run_report.h"
+#include "dream/world/run_report.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "dream/sim/start_pose_obstacle_check.h"
+#include "dream/world/start_pose_obstacle_check.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "dream/sim/unicycle_world.h"
+#include "dream/world/unicycle_world.h"
 #include "obstacle_block.h"
 
 namespace dream::sim {

@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "dream/sim/initial_pose_generator.h"
-#include "dream/sim/unicycle_world.h"
+#include "dream/world/initial_pose_generator.h"
+#include "dream/world/unicycle_world.h"
 
 namespace {
 std::atomic<long> allocation_count{0};

@@ -1,6 +1,6 @@
 // TruePoseRecording: with world.realism the log keeps the truth on DREAM_POSES
 // and the message the agents were sent on DREAM_MEASURED_POSES, just before it.
-#include "dream/sim/true_pose_recording.h"
+#include "dream/node/true_pose_recording.h"
 
 #include <gtest/gtest.h>
 
@@ -14,8 +14,8 @@
 #include "dream/lcm/lcm_typed.h"
 #include "dream/lcm/log_reader.h"
 #include "dream/robot_poses_t.hpp"
-#include "dream/sim/realistic_world.h"
-#include "dream/sim/run_recorder.h"
+#include "dream/world/realistic_world.h"
+#include "dream/node/run_recorder.h"
 
 namespace dream::sim {
 namespace {

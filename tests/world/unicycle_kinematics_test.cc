@@ -1,10 +1,10 @@
 // Known answers for the V2 unicycle <-> wheel conversions and saturation,
 // worked out by hand from r = 0.016 m, L = 0.11 m, max wheel 12.5 rad/s.
-#include "dream/sim/unicycle_kinematics.h"
+#include "dream/world/unicycle_kinematics.h"
 
 #include <gtest/gtest.h>
 
-#include "dream/sim/robotarium_constants.h"
+#include "dream/world/robotarium_constants.h"
 
 namespace dream::sim {
 namespace {

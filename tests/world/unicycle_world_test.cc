@@ -1,5 +1,5 @@
 // Known-answer tests for UnicycleWorld::Step against the Robotarium V2 rules.
-#include "dream/sim/unicycle_world.h"
+#include "dream/world/unicycle_world.h"
 
 #include <cmath>
 #include <limits>

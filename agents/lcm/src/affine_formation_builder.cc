@@ -1,12 +1,12 @@
-#include "dream/agents/number_text.h"
-#include "dream/agents/affine_formation_builder.h"
+#include "dream/agents/framework/number_text.h"
+#include "dream/agent_host/affine_formation_builder.h"
 
-#include "dream/agents/affine_maneuver.h"
+#include "dream/agents/experiments/affine_maneuver.h"
 
 #include <cmath>
 #include <sstream>
 
-#include "dream/agents/hrvo_config.h"
+#include "dream/agent_host/hrvo_config.h"
 
 namespace dream::agents {
 namespace {

@@ -1,4 +1,4 @@
-#include "dream/agents/agent_host.h"
+#include "dream/agent_host/agent_host.h"
 
 #include <spdlog/spdlog.h>
 

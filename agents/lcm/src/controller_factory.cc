@@ -1,12 +1,12 @@
-#include "dream/agents/controller_factory.h"
+#include "dream/agent_host/controller_factory.h"
 
 #include <algorithm>
 #include <stdexcept>
 
-#include "dream/agents/controller_plugin_loader.h"
-#include "dream/agents/controller_registry.h"
-#include "dream/agents/noise_source.h"
-#include "dream/agents/safety_metrics.h"
+#include "dream/agent_host/controller_plugin_loader.h"
+#include "dream/agent_host/controller_registry.h"
+#include "dream/agents/framework/noise_source.h"
+#include "dream/agents/framework/safety_metrics.h"
 
 namespace dream::agents {
 namespace {

@@ -1,4 +1,4 @@
-#include "dream/agents/controller_plugin_loader.h"
+#include "dream/agent_host/controller_plugin_loader.h"
 
 #include <dlfcn.h>
 
@@ -7,8 +7,8 @@
 #include <set>
 #include <stdexcept>
 
-#include "dream/agents/controller_plugin.h"
-#include "dream/agents/controller_registry.h"
+#include "dream/agent_host/controller_plugin.h"
+#include "dream/agent_host/controller_registry.h"
 
 namespace dream::agents {
 namespace {
@@ -64,7 +64,7 @@ void ControllerPluginLoader::Load(const std::string& path, const config::ConfigN
     fail(std::string("not a dream controller plugin: it has no ") +
          (api_version == nullptr ? kPluginApiVersionSymbol : kRegisterControllersSymbol) +
          "() (define it with DREAM_REGISTER_CONTROLLER or DREAM_CONTROLLER_PLUGIN from "
-         "dream/agents/controller_plugin.h)");
+         "dream/agent_host/controller_plugin.h)");
   }
   // A plugin linked with another build of the dream libraries (another
   // soname, another prefix's RPATH) would bring a second copy of them:

@@ -1,13 +1,13 @@
-#include "dream/agents/controller_registry.h"
+#include "dream/agent_host/controller_registry.h"
 
 #include <stdexcept>
 
-#include "dream/agents/affine_formation_builder.h"
-#include "dream/agents/go_to_goal_builder.h"
-#include "dream/agents/hrvo_circle_builder.h"
-#include "dream/agents/line_deployment_builder.h"
-#include "dream/agents/python_controller_builder.h"
-#include "dream/agents/voronoi_coverage_builder.h"
+#include "dream/agent_host/affine_formation_builder.h"
+#include "dream/agent_host/go_to_goal_builder.h"
+#include "dream/agent_host/hrvo_circle_builder.h"
+#include "dream/agent_host/line_deployment_builder.h"
+#include "dream/agent_host/python_controller_builder.h"
+#include "dream/agent_host/voronoi_coverage_builder.h"
 
 namespace dream::agents {
 namespace {

@@ -1,4 +1,4 @@
-#include "dream/agents/go_to_goal_builder.h"
+#include "dream/agent_host/go_to_goal_builder.h"
 
 #include <algorithm>
 

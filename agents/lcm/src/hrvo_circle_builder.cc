@@ -1,9 +1,9 @@
-#include "dream/agents/hrvo_circle_builder.h"
+#include "dream/agent_host/hrvo_circle_builder.h"
 
 #include <cmath>
 
-#include "dream/agents/formation_sequence_metrics.h"
-#include "dream/agents/hrvo_config.h"
+#include "dream/agents/experiments/formation_sequence_metrics.h"
+#include "dream/agent_host/hrvo_config.h"
 
 namespace dream::agents {
 

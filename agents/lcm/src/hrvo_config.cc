@@ -1,4 +1,4 @@
-#include "dream/agents/hrvo_config.h"
+#include "dream/agent_host/hrvo_config.h"
 
 namespace dream::agents {
 

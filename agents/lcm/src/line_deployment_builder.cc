@@ -1,7 +1,7 @@
-#include "dream/agents/line_deployment_builder.h"
+#include "dream/agent_host/line_deployment_builder.h"
 
-#include "dream/agents/hrvo_config.h"
-#include "dream/agents/line_formation_metrics.h"
+#include "dream/agent_host/hrvo_config.h"
+#include "dream/agents/experiments/line_formation_metrics.h"
 
 namespace dream::agents {
 

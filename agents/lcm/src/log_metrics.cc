@@ -1,4 +1,4 @@
-#include "dream/agents/log_metrics.h"
+#include "dream/agent_host/log_metrics.h"
 
 #include "dream/lcm/channels.h"
 #include "dream/lcm/lcm_typed.h"

@@ -1,4 +1,4 @@
-#include "dream/agents/python_controller_builder.h"
+#include "dream/agent_host/python_controller_builder.h"
 
 #include <cctype>
 #include <filesystem>

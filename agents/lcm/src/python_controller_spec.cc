@@ -1,12 +1,12 @@
-#include "dream/agents/python_controller_spec.h"
+#include "dream/agent_host/python_controller_spec.h"
 
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
-#include "dream/agents/controller_factory.h"
-#include "dream/agents/python_controller_builder.h"
+#include "dream/agent_host/controller_factory.h"
+#include "dream/agent_host/python_controller_builder.h"
 
 namespace dream::agents {
 namespace {

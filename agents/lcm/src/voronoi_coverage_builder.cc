@@ -1,4 +1,4 @@
-#include "dream/agents/voronoi_coverage_builder.h"
+#include "dream/agent_host/voronoi_coverage_builder.h"
 
 namespace dream::agents {
 namespace {

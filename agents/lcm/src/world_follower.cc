@@ -1,4 +1,4 @@
-#include "dream/agents/world_follower.h"
+#include "dream/agent_host/world_follower.h"
 
 #include <spdlog/spdlog.h>
 

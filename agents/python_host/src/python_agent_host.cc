@@ -1,7 +1,7 @@
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
 
-#include "dream/agents/python_agent_host.h"
+#include "dream/python_host/python_agent_host.h"
 
 #include <spdlog/spdlog.h>
 

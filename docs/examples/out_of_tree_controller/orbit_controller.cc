@@ -4,8 +4,8 @@
 #include <cmath>
 #include <optional>
 
-#include "dream/agents/controller_plugin.h"
-#include "dream/agents/single_integrator_to_unicycle.h"
+#include "dream/agent_host/controller_plugin.h"
+#include "dream/agents/geometry/single_integrator_to_unicycle.h"
 
 class OrbitRobot final : public dream::agents::Robot {
  public:

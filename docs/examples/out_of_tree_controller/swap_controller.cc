@@ -5,9 +5,9 @@
 // (swap.yaml configures one). done() tells the world it has arrived.
 #include <optional>
 
-#include "dream/agents/controller_plugin.h"
-#include "dream/agents/hrvo_config.h"
-#include "dream/agents/hrvo_robot.h"
+#include "dream/agent_host/controller_plugin.h"
+#include "dream/agent_host/hrvo_config.h"
+#include "dream/agents/hrvo/hrvo_robot.h"
 
 class SwapRobot final : public dream::agents::HrvoRobot {
  public:

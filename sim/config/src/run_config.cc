@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "dream/sim/initial_pose_generator.h"
-#include "dream/sim/robotarium_constants.h"
-#include "dream/sim/start_pose_obstacle_check.h"
+#include "dream/world/initial_pose_generator.h"
+#include "dream/world/robotarium_constants.h"
+#include "dream/world/start_pose_obstacle_check.h"
 
 namespace dream::config {
 

@@ -1,4 +1,4 @@
-#include "dream/sim/sim_node_options.h"
+#include "dream/config/sim_node_options.h"
 
 #include <cmath>
 #include <stdexcept>

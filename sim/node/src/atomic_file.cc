@@ -1,4 +1,4 @@
-#include "dream/sim/atomic_file.h"
+#include "dream/node/atomic_file.h"
 
 #include <fcntl.h>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-#include "dream/sim/file_text.h"
+#include "dream/node/file_text.h"
 
 #include <fstream>
 #include <sstream>

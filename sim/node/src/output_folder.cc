@@ -1,9 +1,9 @@
-#include "dream/sim/output_folder.h"
+#include "dream/node/output_folder.h"
 
 #include <filesystem>
 #include <stdexcept>
 
-#include "dream/sim/atomic_file.h"
+#include "dream/node/atomic_file.h"
 
 namespace dream::sim {
 namespace fs = std::filesystem;

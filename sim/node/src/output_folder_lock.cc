@@ -1,4 +1,4 @@
-#include "dream/sim/output_folder_lock.h"
+#include "dream/node/output_folder_lock.h"
 
 #include <fcntl.h>
 #include <sys/file.h>

@@ -1,9 +1,9 @@
-#include "dream/sim/run_judge.h"
+#include "dream/node/run_judge.h"
 
 #include <numeric>
 
 #include "dream/lcm/channels.h"
-#include "dream/sim/lab_verifier_rules.h"
+#include "dream/world/lab_verifier_rules.h"
 
 namespace dream::sim {
 namespace {

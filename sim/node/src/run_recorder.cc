@@ -1,4 +1,4 @@
-#include "dream/sim/run_recorder.h"
+#include "dream/node/run_recorder.h"
 
 #include <stdio_ext.h>  // __fpurge (glibc)
 #include <sys/stat.h>

@@ -1,10 +1,10 @@
-#include "dream/sim/run_summary.h"
+#include "dream/node/run_summary.h"
 
 #include <nlohmann/json.hpp>
 
 #include "dream/lcm/run_id.h"
-#include "dream/sim/run_judge.h"
-#include "dream/sim/run_report.h"
+#include "dream/node/run_judge.h"
+#include "dream/world/run_report.h"
 
 namespace dream::sim {
 

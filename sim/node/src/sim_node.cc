@@ -1,4 +1,4 @@
-#include "dream/sim/sim_node.h"
+#include "dream/node/sim_node.h"
 
 #include <spdlog/spdlog.h>
 
@@ -15,9 +15,9 @@
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
-#include "dream/sim/progress_reporter.h"
-#include "dream/sim/robotarium_constants.h"
-#include "dream/sim/run_recorder.h"
+#include "dream/node/progress_reporter.h"
+#include "dream/world/robotarium_constants.h"
+#include "dream/node/run_recorder.h"
 #include "dream/velocity_command_t.hpp"
 
 namespace dream::sim {

@@ -1,4 +1,4 @@
-#include "dream/sim/true_pose_recording.h"
+#include "dream/node/true_pose_recording.h"
 
 #include "dream/lcm/channels.h"
 #include "dream/lcm/lcm_typed.h"

@@ -1,11 +1,11 @@
-#include "dream/sim/arena_layout.h"
+#include "dream/render/arena_layout.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "dream/sim/robotarium_constants.h"
+#include "dream/world/robotarium_constants.h"
 
 namespace dream::sim {
 namespace {

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <unordered_set>
 
-#include "dream/sim/robotarium_constants.h"
+#include "dream/world/robotarium_constants.h"
 
 namespace dream::sim {
 namespace {

@@ -8,9 +8,9 @@
 
 #include "dream/rectangle_obstacle_t.hpp"
 #include "dream/robot_poses_t.hpp"
-#include "dream/sim/arena_layout.h"
-#include "dream/sim/arena_overlays.h"
-#include "dream/sim/run_track.h"
+#include "dream/render/arena_layout.h"
+#include "dream/render/arena_overlays.h"
+#include "dream/render/run_track.h"
 
 namespace dream::sim {
 

@@ -1,10 +1,10 @@
-#include "dream/sim/comparison_picture.h"
+#include "dream/render/comparison_picture.h"
 
 #include <algorithm>
 #include <vector>
 
 #include "arena_painter.h"
-#include "dream/sim/run_track.h"
+#include "dream/render/run_track.h"
 #include "picture_surface.h"
 
 namespace dream::sim {

@@ -1,4 +1,4 @@
-#include "dream/sim/ffmpeg_encoder.h"
+#include "dream/render/ffmpeg_encoder.h"
 
 #include <fcntl.h>
 #include <signal.h>

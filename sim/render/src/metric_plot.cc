@@ -1,4 +1,4 @@
-#include "dream/sim/metric_plot.h"
+#include "dream/render/metric_plot.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "arena_painter.h"
-#include "dream/sim/robotarium_constants.h"
+#include "dream/world/robotarium_constants.h"
 #include "picture_surface.h"
 
 namespace dream::sim {

@@ -4,7 +4,7 @@
 
 #include <stdexcept>
 
-#include "dream/sim/atomic_file.h"
+#include "dream/node/atomic_file.h"
 
 namespace dream::sim {
 

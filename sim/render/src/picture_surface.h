@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "dream/sim/render_format.h"
+#include "dream/render/render_format.h"
 
 namespace dream::sim {
 

@@ -1,4 +1,4 @@
-#include "dream/sim/render_format.h"
+#include "dream/render/render_format.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,4 +1,4 @@
-#include "dream/sim/run_animation.h"
+#include "dream/render/run_animation.h"
 
 #include <unistd.h>
 
@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "arena_painter.h"
-#include "dream/sim/ffmpeg_encoder.h"
-#include "dream/sim/robotarium_constants.h"
+#include "dream/render/ffmpeg_encoder.h"
+#include "dream/world/robotarium_constants.h"
 #include "picture_surface.h"
 #include "range_sprites.h"
 

@@ -1,4 +1,4 @@
-#include "dream/sim/run_track.h"
+#include "dream/render/run_track.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include "dream/lcm/lcm_typed.h"
 #include "dream/lcm/log_reader.h"
 #include "dream/radio_message_t.hpp"
-#include "dream/sim/robotarium_constants.h"
+#include "dream/world/robotarium_constants.h"
 
 namespace dream::sim {
 

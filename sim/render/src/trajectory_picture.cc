@@ -1,4 +1,4 @@
-#include "dream/sim/trajectory_picture.h"
+#include "dream/render/trajectory_picture.h"
 
 #include <cstdio>
 #include <vector>

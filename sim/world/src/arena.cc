@@ -1,4 +1,4 @@
-#include "dream/sim/arena.h"
+#include "dream/world/arena.h"
 
 #include <cmath>
 

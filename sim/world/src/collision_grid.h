@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "dream/sim/arena.h"
-#include "dream/sim/step_events.h"
+#include "dream/world/arena.h"
+#include "dream/world/step_events.h"
 
 namespace dream::sim {
 

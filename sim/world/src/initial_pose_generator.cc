@@ -1,4 +1,4 @@
-#include "dream/sim/initial_pose_generator.h"
+#include "dream/world/initial_pose_generator.h"
 
 #include <cmath>
 #include <random>

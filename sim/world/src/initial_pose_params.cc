@@ -1,4 +1,4 @@
-#include "dream/sim/initial_pose_params.h"
+#include "dream/world/initial_pose_params.h"
 
 #include <cmath>
 

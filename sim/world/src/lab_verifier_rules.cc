@@ -1,4 +1,4 @@
-#include "dream/sim/lab_verifier_rules.h"
+#include "dream/world/lab_verifier_rules.h"
 
 #include <cstdio>
 

@@ -1,4 +1,4 @@
-#include "dream/sim/obstacle_state.h"
+#include "dream/world/obstacle_state.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "dream/sim/realism_params.h"
+#include "dream/world/realism_params.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "dream/sim/realistic_world.h"
+#include "dream/world/realistic_world.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <string>
 #include <utility>
 
-#include "dream/sim/unicycle_kinematics.h"
+#include "dream/world/unicycle_kinematics.h"
 #include "realism_random.h"
 
 namespace dream::sim {

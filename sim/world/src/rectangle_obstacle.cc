@@ -1,4 +1,4 @@
-#include "dream/sim/rectangle_obstacle.h"
+#include "dream/world/rectangle_obstacle.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "dream/sim/rectangle_obstacle_spec.h"
+#include "dream/world/rectangle_obstacle_spec.h"
 
 #include <cmath>
 

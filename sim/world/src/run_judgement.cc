@@ -1,4 +1,4 @@
-#include "dream/sim/run_judgement.h"
+#include "dream/world/run_judgement.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "dream/sim/run_verdict.h"
+#include "dream/world/run_verdict.h"
 
 namespace dream::sim {
 

@@ -1,4 +1,4 @@
-#include "dream/sim/start_pose_obstacle_check.h"
+#include "dream/world/start_pose_obstacle_check.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "dream/sim/unicycle_world.h"
+#include "dream/world/unicycle_world.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include <utility>
 
 #include "collision_grid.h"
-#include "dream/sim/unicycle_kinematics.h"
+#include "dream/world/unicycle_kinematics.h"
 
 namespace dream::sim {
 namespace {

@@ -1,4 +1,4 @@
-#include "dream/sim/verdict_reason.h"
+#include "dream/world/verdict_reason.h"
 
 namespace dream::sim {
 

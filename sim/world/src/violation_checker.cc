@@ -1,4 +1,4 @@
-#include "dream/sim/violation_checker.h"
+#include "dream/world/violation_checker.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <string>
 
 #include "collision_grid.h"
-#include "dream/sim/unicycle_kinematics.h"
+#include "dream/world/unicycle_kinematics.h"
 
 namespace dream::sim {
 namespace {

@@ -1,4 +1,4 @@
-#include "dream/sim/world_params.h"
+#include "dream/world/world_params.h"
 
 #include <cmath>
 

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "dream/config/run_config.h"
-#include "dream/sim/output_folder.h"
+#include "dream/node/output_folder.h"
 
 namespace dream::bridge {
 

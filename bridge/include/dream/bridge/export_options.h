@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "dream/sim/lab_verifier_rules.h"
+#include "dream/world/lab_verifier_rules.h"
 
 namespace dream::bridge {
 

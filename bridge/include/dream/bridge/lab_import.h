@@ -7,7 +7,7 @@
 #include "dream/bridge/run_track.h"
 #include "dream/bridge/submission_params.h"
 #include "dream/config/run_config.h"
-#include "dream/sim/violation_counts.h"
+#include "dream/world/violation_counts.h"
 
 namespace dream::bridge {
 

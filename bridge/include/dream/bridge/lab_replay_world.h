@@ -5,9 +5,9 @@
 #include <vector>
 
 #include "dream/bridge/run_track.h"
-#include "dream/sim/violation_checker.h"
-#include "dream/sim/world.h"
-#include "dream/sim/world_params.h"
+#include "dream/world/violation_checker.h"
+#include "dream/world/world.h"
+#include "dream/world/world_params.h"
 
 namespace dream::sim {
 class RunRecorder;

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "dream/bridge/npy_file.h"
-#include "dream/sim/rectangle_obstacle_spec.h"
+#include "dream/world/rectangle_obstacle_spec.h"
 
 namespace dream::bridge {
 

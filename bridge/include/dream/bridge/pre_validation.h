@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "dream/bridge/run_track.h"
-#include "dream/sim/lab_verifier_rules.h"
-#include "dream/sim/world_params.h"
+#include "dream/world/lab_verifier_rules.h"
+#include "dream/world/world_params.h"
 
 namespace dream::bridge {
 

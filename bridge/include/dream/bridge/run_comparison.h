@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "dream/sim/violation_counts.h"
+#include "dream/world/violation_counts.h"
 
 namespace dream::bridge {
 

@@ -5,10 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "dream/sim/obstacle_state.h"
-#include "dream/sim/pose2.h"
-#include "dream/sim/unicycle_command.h"
-#include "dream/sim/violation_counts.h"
+#include "dream/world/obstacle_state.h"
+#include "dream/world/pose2.h"
+#include "dream/world/unicycle_command.h"
+#include "dream/world/violation_counts.h"
 
 namespace dream::bridge {
 

@@ -6,11 +6,11 @@
 
 #include "dream/config/config_node.h"
 #include "dream/config/controller_config.h"
-#include "dream/sim/pose2.h"
-#include "dream/sim/realism_params.h"
-#include "dream/sim/rectangle_obstacle_spec.h"
-#include "dream/sim/sim_node_options.h"
-#include "dream/sim/world_params.h"
+#include "dream/world/pose2.h"
+#include "dream/world/realism_params.h"
+#include "dream/world/rectangle_obstacle_spec.h"
+#include "dream/config/sim_node_options.h"
+#include "dream/world/world_params.h"
 
 namespace dream::config {
 

@@ -1,0 +1,41 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+
+#include "dream/agents/framework/robot.h"
+#include "dream/agents/geometry/single_integrator_to_unicycle.h"
+
+namespace dream::agents {
+
+/// Parameters of GoToGoalRobot.
+struct GoToGoalParams {
+  Eigen::Vector2d goal_m = Eigen::Vector2d::Zero();  ///< goal position, world frame
+  double gain = 0.8;                  ///< proportional gain, 1/s; must be positive
+  double max_speed_mps = 0.15;        ///< cap on the planar velocity; (0, 0.2]
+  double tolerance_m = 0.03;          ///< within this distance the robot stops and reports done; > 0
+
+  /// False with a message naming the field, its value and the allowed range.
+  bool IsValid(std::string* error) const;
+};
+
+/// The simplest scripted robot: drive to a fixed goal, knowing only its
+/// odometry. Proportional single-integrator law dxi = k (goal - p), capped at
+/// max_speed (the Robotarium's si position controller), mapped to the unicycle
+/// as the Robotarium's si_to_uni does, limited to what the wheels can do.
+/// Stops and reports done within tolerance; holds still before its first
+/// odometry reading.
+class GoToGoalRobot final : public Robot {
+ public:
+  /// @throws std::invalid_argument when params are invalid.
+  GoToGoalRobot(int id, const RobotParams& robot_params, const GoToGoalParams& params);
+  UnicycleCommand Update(int64_t step) override;
+  bool done() const override { return done_; }
+
+ private:
+  GoToGoalParams params_;
+  SingleIntegratorToUnicycle si_to_uni_;
+  bool done_ = false;
+};
+
+}  // namespace dream::agents

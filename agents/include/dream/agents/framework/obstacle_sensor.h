@@ -1,0 +1,30 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "dream/agents/framework/noise_source.h"
+#include "dream/agents/framework/sensor.h"
+
+namespace dream::agents {
+
+struct ObstacleSensorParams {
+  double range_m = 1.0;    ///< reports obstacles whose closest point is within this distance; > 0
+  double noise_std = 0.0;  ///< std dev added to each coordinate of a closest point, m; >= 0
+  bool IsValid(std::string* error) const;
+};
+
+/// The closest point of every virtual obstacle within range (added for the
+/// Voronoi experiment, where obstacles become virtual neighbours).
+class ObstacleSensor final : public Sensor {
+ public:
+  /// @throws std::invalid_argument when params are invalid.
+  ObstacleSensor(const ObstacleSensorParams& params, uint64_t seed);
+  void Sense(const WorldSnapshot& world, Robot& robot) override;
+
+ private:
+  ObstacleSensorParams params_;
+  NoiseSource noise_;
+};
+
+}  // namespace dream::agents

@@ -1,0 +1,24 @@
+#pragma once
+
+#include <string>
+
+#include "dream/config/run_config.h"
+#include "dream/world/run_judgement.h"
+#include "dream/node/run_outcome.h"
+#include "dream/world/world.h"
+
+namespace dream::sim {
+
+/// The machine-readable summary of a run, as pretty-printed JSON: how it
+/// ended, steps, wall time, the Robotarium's violation counts, the verdict
+/// (clean / warning / not_ready / rejected) with its reasons, debug()'s own
+/// verdict and text, rejected commands, lost agents, bad messages per
+/// channel, handler exceptions, and final poses.
+/// See docs/run-outputs.md for every field.
+std::string RunSummaryJson(const config::RunConfig& config, const RunOutcome& outcome, const World& world,
+                           const std::string& log_file_name, const RunJudgement& judgement);
+/// The same, judged by JudgeRun(config, outcome, world).
+std::string RunSummaryJson(const config::RunConfig& config, const RunOutcome& outcome,
+                           const World& world, const std::string& log_file_name);
+
+}  // namespace dream::sim

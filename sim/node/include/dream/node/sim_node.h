@@ -1,0 +1,148 @@
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "dream/applied_commands_t.hpp"
+#include "dream/lcm/bad_message_log.h"
+#include "dream/lcm/lcm_interface.h"
+#include "dream/node/run_outcome.h"
+#include "dream/config/sim_node_options.h"
+#include "dream/world/obstacle_state.h"
+#include "dream/world/unicycle_world.h"
+#include "dream/world/world.h"
+
+namespace dream {
+class velocity_command_t;
+class robot_fault_t;
+class run_status_t;
+}
+
+namespace dream::sim {
+
+class ProgressReporter;
+class RunRecorder;
+
+/// A world on the bus: publishes it, consumes commands, records the run. The
+/// world is the in-tree simulator (UnicycleWorld) or any other World, such as
+/// the bridge's replay of a lab run (bridge::LabReplayWorld); agents cannot
+/// tell which. The run ends at the step limit, when every robot reports done,
+/// or when the world has no more steps (World::last_step()).
+///
+/// Writes DREAM_OBSTACLES, DREAM_STATUS and then DREAM_POSES (the trigger
+/// agents answer) for every step; reads DREAM_CMD_<id>. Records its own
+/// messages once, as published, and every other channel as received, all with
+/// the simulated time of the current step.
+///
+/// Bad commands never stop the run: a NaN/inf or absurd command is rejected,
+/// counted, and its robot holds still for that step; a command for a robot
+/// that does not exist, from a second agent claiming a robot, or for a step
+/// other than the current one is rejected and counted; undecodable messages
+/// are counted per channel.
+///
+/// Every world message carries the run's random id (run_id()); commands,
+/// radio and faults of another run are refused, and a second world seen on
+/// the bus (its DREAM_STATUS, or commands answering it) is reported in the
+/// outcome's other_worlds. Two different commands for one robot and step are
+/// a conflict: the first is applied, the rest refused and counted, and each
+/// step's applied commands are recorded on DREAM_APPLIED (applied_commands_t).
+///
+/// A run log that cannot be written (full disk, file size limit) ends the run
+/// cleanly as RunOutcome::End::kFailed, with a reason naming the step, the
+/// file and the OS error; the log keeps every whole event before the failure.
+class SimNode {
+ public:
+  /// @param recorder may be null (no log). Must outlive the node.
+  /// @throws std::invalid_argument when options are invalid.
+  SimNode(lcm::LcmInterface& lcm, World& world, RunRecorder* recorder, SimNodeOptions options);
+
+  /// Runs to the end; returns how it ended. Handles every subscription on
+  /// `lcm`, so in one process it also drives the agents sharing the bus.
+  /// Sets no signal handlers: the caller sets `stop` (e.g. from SIGINT).
+  RunOutcome Run(const std::atomic<bool>& stop);
+
+  /// This run's identifier: random, never 0, in every message the world sends.
+  int64_t run_id() const { return run_id_; }
+  /// Other worlds' run ids kept in the outcome, so a flood cannot grow memory.
+  static constexpr size_t kMaxOtherWorlds = 16;
+
+  /// Shows the run's progress (steps/s, ETA to max_steps) on `reporter` from
+  /// the first step on; null (the default): no progress output. Must outlive
+  /// Run().
+  void set_progress_reporter(ProgressReporter* reporter) { progress_ = reporter; }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+
+  struct RobotSlot {
+    int64_t owner_agent_id = 0;
+    bool owned = false;
+    bool lost = false;
+    bool done = false;
+    double v_mps = 0.0;
+    double w_radps = 0.0;
+    int64_t command_step = -1;     // step of the command held in v/w/done (sent by owner_agent_id); -1: none
+    int32_t conflicts = 0;         // refused different commands for command_step
+    double received_v = 0.0;       // the held command as sent (v/w are zeroed when it was absurd)
+    double received_w = 0.0;
+    Clock::time_point last_heard;
+  };
+
+  void OnCommand(const std::string& channel, const velocity_command_t& command);
+  void OnFault(const std::string& channel, const robot_fault_t& fault);
+  void OnStatus(const run_status_t& status);
+  /// Notes a run id of another world (logged once per id).
+  void NoteOtherWorld(int64_t run_id, const std::string& seen_on);
+  /// Counts a command refused because the robot has another for its step
+  /// (a different one, or a second agent's): the first stays. `reason` says which.
+  void Conflict(const std::string& channel, RobotSlot& robot, const velocity_command_t& command,
+                const std::string& reason);
+  /// Lockstep: the robot has a command for the step the world is at.
+  bool Answered(const RobotSlot& robot) const { return robot.command_step == world_.step(); }
+  /// Records which commands are applied at this step (DREAM_APPLIED).
+  void RecordApplied();
+  void OnAnyMessage(const std::string& channel, const void* data, int size);
+  /// Writes one event to the recorder, if any; a write failure is remembered
+  /// (the recorder is failed from then on) for Run() to end the run.
+  void Record(const std::string& channel, const void* data, int size);
+  bool RecorderFailed() const;
+  std::string RecorderFailureReason() const;
+  void Reject(const std::string& channel, const std::string& reason, int64_t agent_id);
+  void PublishStep(bool record);
+  void PublishStatus(int8_t state, const std::string& detail, bool record);
+  template <typename Message>
+  void PublishAndRecord(const char* channel, const Message& message, bool record);
+  bool AllLiveAnswered() const;
+  void MarkSilentRobotsLost(Clock::time_point now);
+  void AdvanceWorld();
+  RunOutcome Finish(RunOutcome::End end, const std::string& reason);
+  int64_t SimUtime() const;
+
+  lcm::LcmInterface& lcm_;
+  World& world_;
+  std::vector<ObstacleState> obstacle_states_;  // scratch for PublishStep
+  applied_commands_t applied_;                  // scratch for RecordApplied
+  std::vector<uint8_t> applied_bytes_;
+  RunRecorder* recorder_;
+  int64_t recorder_failed_at_step_ = -1;
+  SimNodeOptions options_;
+  lcm::BadMessageLog bad_messages_;
+  std::vector<RobotSlot> robots_;
+  int8_t state_;
+  int64_t run_id_;
+  int64_t rejected_commands_ = 0;
+  int64_t command_conflicts_ = 0;
+  std::set<int64_t> other_worlds_;
+  std::set<int> robots_ever_lost_;
+  std::map<int, std::string> robot_faults_;
+  Clock::time_point run_start_;
+  Clock::time_point step_published_;
+  Clock::time_point last_resend_;
+  ProgressReporter* progress_ = nullptr;
+};
+
+}  // namespace dream::sim

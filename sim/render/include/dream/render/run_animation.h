@@ -1,0 +1,81 @@
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "dream/render/arena_layout.h"
+#include "dream/render/arena_overlays.h"
+#include "dream/render/render_format.h"
+#include "dream/render/run_track.h"
+
+namespace dream::sim {
+
+/// How a run becomes a video.
+struct AnimationOptions {
+  int width_px = 720;        ///< frame width (rounded down to even); the height follows the arena
+  double fps = 30.0;         ///< video frames per second, 1..120
+  double speed = 4.0;        ///< simulated seconds per video second (> 0): 3,000 steps = 99 s play in ~25 s
+  double trail_s = 10.0;     ///< simulated seconds of path drawn behind each robot (0: none)
+  double hold_end_s = 1.0;   ///< the last frame stays this long, video seconds (>= 0)
+};
+
+/// A run as a video, like the thesis's videos: the arena to scale, robots as
+/// discs of their 0.11 m diameter with ids and headings, trails, obstacles
+/// where they are at each moment (moving ones with their faint path), goals,
+/// and optionally sensor ranges and radio links (ArenaOverlays), tick labels
+/// in metres, a legend row, and a caption: the run's name and verdict when
+/// known, then the step and time. Frame f shows simulated time min(f * speed / fps,
+/// duration), so there are ceil(duration * fps / speed) + 1 frames of the run
+/// plus round(hold_end_s * fps) of the last one.
+class RunAnimation {
+ public:
+  /// `track` and `overlays` must outlive the animation.
+  /// @throws std::invalid_argument naming the option when one is out of range.
+  RunAnimation(const RunTrack& track, const ArenaOverlays& overlays, AnimationOptions options);
+  ~RunAnimation();
+  RunAnimation(const RunAnimation&) = delete;
+  RunAnimation& operator=(const RunAnimation&) = delete;
+
+  int frame_count() const { return frame_count_; }
+  double fps() const { return options_.fps; }
+  /// frame_count() / fps(), seconds.
+  double duration_s() const { return frame_count_ / options_.fps; }
+  const ArenaLayout& layout() const { return layout_; }
+  /// The simulation step frame `frame` shows.
+  int64_t StepOfFrame(int frame) const;
+
+  /// Draws frame `frame` into the frame buffer (pixels(), stride_bytes()).
+  void DrawFrame(int frame);
+  /// The frame buffer: cairo RGB24 (native-endian xRGB words).
+  const unsigned char* pixels() const;
+  int stride_bytes() const;
+  /// Draws frame `frame` and writes it as a PNG, atomically (previews, tests).
+  void WriteFramePng(int frame, const std::string& png_path);
+
+  /// Encodes every frame to `path` (kMp4: H.264; kGif: two passes, a palette
+  /// from a sample of frames, then the frames) with ffmpeg into a temporary
+  /// file beside `path`, renamed into place when complete.
+  /// @return false, leaving nothing behind, when `cancelled` said so.
+  /// @throws std::runtime_error naming the path, or quoting ffmpeg.
+  bool Write(const std::string& path, RenderFormat format, const std::function<bool()>& cancelled = {});
+
+ private:
+  struct Surfaces;
+  void DrawStaticLayer();
+  bool Encode(const std::string& path, RenderFormat format, const std::function<bool()>& cancelled);
+
+  const RunTrack& track_;
+  const ArenaOverlays& overlays_;
+  AnimationOptions options_;
+  ArenaLayout layout_;
+  bool obstacles_move_;
+  int64_t trail_steps_;
+  int64_t radio_window_steps_;
+  int frame_count_ = 0;
+  std::string run_label_;  // "name — verdict — " before each frame's caption (RunLabel)
+  std::unique_ptr<Surfaces> surfaces_;
+};
+
+}  // namespace dream::sim

@@ -1,0 +1,37 @@
+#pragma once
+
+#include <string>
+
+#include "dream/render/arena_overlays.h"
+#include "dream/render/render_format.h"
+#include "dream/render/run_track.h"
+
+namespace dream::sim {
+
+/// Draws a run as a picture: the arena to scale, each robot's trajectory in
+/// its own colour from a hollow start marker to its final pose (a disc of the
+/// robot's 0.11 m diameter with its id and a heading tick), the virtual
+/// obstacles where they ended with the paths of moving ones dashed, and what
+/// `overlays` adds (goals as crosses; sensor ranges and radio links at the
+/// final poses when asked), with tick labels in metres round the arena, a
+/// legend row (start, end, goal, obstacle) and a caption: the run's name and
+/// verdict when `overlays` has them, the robots, steps and duration. Works on any log with DREAM_POSES: simulated or
+/// imported from the lab.
+class TrajectoryPicture {
+ public:
+  /// Reads `log_path` and writes `png_path` atomically (no overlays).
+  /// @throws std::runtime_error naming the file when the log cannot be read,
+  ///         holds no DREAM_POSES, or the PNG cannot be written.
+  static void Render(const std::string& log_path, const std::string& png_path, int width_px = 1280);
+
+  /// Writes `track` as a PNG or SVG (`format`) to `path`, atomically.
+  /// @throws std::runtime_error naming the path when it cannot be written.
+  static void Render(const RunTrack& track, const ArenaOverlays& overlays, const std::string& path,
+                     RenderFormat format, int width_px = 1280);
+
+  /// The caption under the arena, e.g. "go_to_goal — clean (no errors or
+  /// warnings) — 8 robots, steps 0..206 (6.8 s)".
+  static std::string Caption(const RunTrack& track, const ArenaOverlays& overlays);
+};
+
+}  // namespace dream::sim

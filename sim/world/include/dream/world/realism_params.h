@@ -1,0 +1,64 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dream/world/robotarium_constants.h"
+
+namespace dream::sim {
+
+// How far the simulated world departs from the official (ideal) simulator
+// towards the real lab: what the tracker measures and what the GTernal
+// firmware does with a command. `world.realism` in a run config
+// (docs/experiments.md lists each lab value and its source). Ideal() is the
+// official simulator: a run whose params equal it gets no RealisticWorld at
+// all, so it stays the official simulator step for step.
+struct RealismParams {
+  // Tracker (Vicon over MQTT). Gaussian noise, standard deviations.
+  double pose_noise_m = 0.0;
+  double pose_noise_rad = 0.0;
+  // Measured x, y (theta) rounded to a multiple of this; 0 = not rounded.
+  double pose_quantum_m = 0.0;
+  double pose_quantum_rad = 0.0;
+  // Agents are sent the poses of step k - pose_delay_steps at step k.
+  int pose_delay_steps = 0;
+  // Chance per robot and step that the tracker reports nothing new: the
+  // robot's last measured pose is sent again.
+  double tracking_dropout_probability = 0.0;
+
+  // Robot. A command answering step k reaches the robot at step k + latency.
+  int command_latency_steps = 0;
+  // A robot whose newest command reached it longer ago than this (simulated
+  // time) brakes to a stop; 0 = never. The official world has the same 0.5 s.
+  double command_brake_s = RobotariumConstants::kCommandTimeoutSeconds;
+  // The firmware coasts the motors when |v| < dead_zone_v_mps and
+  // |w| < dead_zone_w_radps; 0, 0 = no dead zone.
+  double dead_zone_v_mps = 0.0;
+  double dead_zone_w_radps = 0.0;
+  // Each wheel's speed changes by at most this per second; 0 = at once.
+  double wheel_accel_limit_radps2 = 0.0;
+  // The robot's axle length: the firmware's conversion to wheel speeds and the
+  // wheel saturation use it. (The Robotarium's checks keep the official one.)
+  double axle_length_m = RobotariumConstants::kBaseLengthMeters;
+
+  static RealismParams Ideal();
+  static RealismParams Lab();
+  // The preset called `name` into *params; false when there is none.
+  static bool FromPreset(const std::string& name, RealismParams* params);
+  static const std::vector<std::string>& PresetNames();
+
+  // Equal to Ideal(): the run uses the official world, no RealisticWorld.
+  bool IsIdeal() const;
+  // Checks every field; on failure writes a message naming the field, its
+  // value and the allowed range into *error (if error is not null).
+  bool IsValid(std::string* error) const;
+
+  // Bounds on the step counts (10 s of 0.033 s steps), so a typo cannot make
+  // the history buffers huge.
+  static constexpr int kMaxDelaySteps = 300;
+};
+
+bool operator==(const RealismParams& a, const RealismParams& b);
+inline bool operator!=(const RealismParams& a, const RealismParams& b) { return !(a == b); }
+
+}  // namespace dream::sim

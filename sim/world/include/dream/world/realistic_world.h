@@ -1,0 +1,118 @@
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <vector>
+
+#include "dream/world/pose2.h"
+#include "dream/world/realism_params.h"
+#include "dream/world/rectangle_obstacle_spec.h"
+#include "dream/world/unicycle_command.h"
+#include "dream/world/unicycle_world.h"
+#include "dream/world/violation_counts.h"
+#include "dream/world/wheel_speeds.h"
+#include "dream/world/world.h"
+#include "dream/world/world_params.h"
+
+namespace dream::sim {
+
+class RealismRandom;
+
+// The official world (a UnicycleWorld, the truth) seen and driven as on the
+// real lab (world.realism): poses() and velocities() are what the tracker
+// measures and what the agents are sent; commands reach the robots through
+// the firmware's models. Violations are those of the true state.
+//
+// Step() does, for each robot:
+//  1. deliver: a command set at step k acts from step k + command_latency_steps
+//     (the newest one due wins);
+//  2. brake: a robot whose delivered command is older than command_brake_s
+//     stops at once (as UnicycleWorld's command timeout, counted from when the
+//     command reached the robot);
+//  3. dead zone: |v| < dead_zone_v_mps and |w| < dead_zone_w_radps coast (the
+//     command becomes 0);
+//  4. wheels: the command converted with axle_length_m, clipped to the wheel
+//     limit, each wheel rate-limited by wheel_accel_limit_radps2;
+//  5. the true world steps with what the robot drives (its wheel saturation
+//     uses axle_length_m);
+//  6. measure: the true poses of step k + 1 - pose_delay_steps, plus Gaussian
+//     noise, rounded to the quanta; with tracking_dropout_probability the
+//     robot's previous measurement is kept instead.
+// Actuator errors are counted on the commands as sent, with the official
+// wheel radius and base length, as the Robotarium does; boundary, collision
+// and obstacle errors on the true poses.
+// Random numbers come from `seed` only, one stream per model, so a lockstep
+// run repeats exactly.
+class RealisticWorld final : public World {
+ public:
+  // Throws std::invalid_argument if params, realism, an obstacle or a pose is
+  // invalid.
+  RealisticWorld(const WorldParams& params, const RealismParams& realism, uint64_t seed,
+                 std::vector<Pose2> initial_poses, const std::vector<RectangleObstacleSpec>& obstacle_specs = {});
+  ~RealisticWorld() override;
+  RealisticWorld(const RealisticWorld&) = delete;
+  RealisticWorld& operator=(const RealisticWorld&) = delete;
+
+  int num_robots() const override { return truth_.num_robots(); }
+  int64_t step() const override { return truth_.step(); }
+  int64_t utime() const override { return truth_.utime(); }
+  double time_step_s() const override { return truth_.time_step_s(); }
+  // Measured poses: what the agents are sent.
+  const std::vector<Pose2>& poses() const override { return measured_poses_; }
+  // The measured poses' velocities (of the same, delayed, step).
+  const std::vector<UnicycleCommand>& velocities() const override { return measured_velocities_; }
+  void GetObstacleStates(std::vector<ObstacleState>* states) const override { truth_.GetObstacleStates(states); }
+  const ViolationCounts& violations() const override { return violations_; }
+
+  // Queues the command for step() + command_latency_steps. Throws like
+  // UnicycleWorld::SetCommand.
+  void SetCommand(int robot_id, const UnicycleCommand& command) override;
+  // Stops the robot at once (its agent is lost) and drops its queued commands.
+  void StopRobot(int robot_id) override;
+  void Step() override;
+
+  // The true state, for the run log and the verdict.
+  const UnicycleWorld& truth() const { return truth_; }
+  const std::vector<Pose2>& true_poses() const { return truth_.poses(); }
+  const std::vector<UnicycleCommand>& true_velocities() const { return truth_.velocities(); }
+  const RealismParams& realism() const { return realism_; }
+
+ private:
+  static constexpr int64_t kNone = -1;
+
+  struct QueuedCommand {
+    int64_t due_step = 0;
+    UnicycleCommand command;
+  };
+  struct Robot {
+    std::deque<QueuedCommand> queue;
+    UnicycleCommand delivered;       // the command the firmware follows
+    int64_t delivered_step = kNone;  // when it reached the robot; kNone: no command
+    WheelSpeeds wheels;              // wheel speeds driven (with an acceleration limit)
+    bool sent_over_limit = false;    // newest command since the last Step() exceeds the wheel limit
+  };
+
+  void CheckRobotId(int robot_id, const char* caller) const;
+  UnicycleCommand Drive(Robot& robot);
+  void Measure(bool first);
+
+  WorldParams official_;  // the Robotarium's constants, for the actuator check
+  RealismParams realism_;
+  UnicycleWorld truth_;
+  std::vector<Robot> robots_;
+  int64_t brake_hold_steps_ = 0;
+  int64_t actuator_errors_ = 0;
+  ViolationCounts violations_{};
+
+  // True poses and velocities of the last pose_delay_steps + 1 steps, by step
+  // modulo their count.
+  std::vector<std::vector<Pose2>> pose_history_;
+  std::vector<std::vector<UnicycleCommand>> velocity_history_;
+  std::vector<Pose2> measured_poses_;
+  std::vector<UnicycleCommand> measured_velocities_;
+  std::unique_ptr<RealismRandom> noise_random_;
+  std::unique_ptr<RealismRandom> dropout_random_;
+};
+
+}  // namespace dream::sim
