@@ -129,7 +129,9 @@ def import_types(types_dir=None):
     """
     candidates = [os.path.abspath(c) for c in _types_dir_candidates(types_dir)]
     for folder in candidates:
-        if os.path.isfile(os.path.join(folder, "dream", "__init__.py")):
+        # robot_poses_t.py, not just __init__.py: in a checkout, python/dream/ beside this file
+        # is the controller runtime (a package dream without the types), not lcm-gen's output.
+        if os.path.isfile(os.path.join(folder, "dream", "robot_poses_t.py")):
             loaded = sys.modules.get("dream")
             if loaded is not None and hasattr(loaded, "robot_poses_t"):
                 return loaded  # already imported (from here or elsewhere): one set of types per process

@@ -114,7 +114,12 @@ def test(ctx):
     example = re.search(r"<!-- analysis-example -->\s*```python\n(.*?)```", doc, re.S)
     check(example, "docs/analysis.md has no ```python block after <!-- analysis-example -->")
     script = example.group(1).replace('"runs/go_to_goal"', repr(out))
-    env = dict(os.environ, DREAM_PYTHON_TYPES_DIR=args.types_dir)
+    # As a reader runs it: in a checkout built in build/, dream_log finds the types by itself
+    # (and must not take the runtime package python/dream/ for them); another build dir is named.
+    env = dict(os.environ)
+    env.pop("DREAM_PYTHON_TYPES_DIR", None)
+    if os.path.realpath(args.types_dir) != os.path.realpath(os.path.join(args.source, "build", "python")):
+        env["DREAM_PYTHON_TYPES_DIR"] = args.types_dir
     result = subprocess.run([sys.executable, "-c", script], cwd=args.source, env=env, stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT, text=True, timeout=60)
     check(result.returncode == 0, f"the docs example failed: {result.stdout[-600:]}")
