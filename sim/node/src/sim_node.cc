@@ -274,18 +274,18 @@ void SimNode::RecordApplied() {
     applied.conflicts.push_back(robot.command_step == world_.step() ? robot.conflicts : 0);
   }
   const int size = applied.getEncodedSize();
-  applied_bytes_.resize(static_cast<size_t>(size));
-  applied.encode(applied_bytes_.data(), 0, size);
-  Record(lcm::kAppliedChannel, applied_bytes_.data(), size);
+  encoded_.resize(static_cast<size_t>(size));
+  applied.encode(encoded_.data(), 0, size);
+  Record(lcm::kAppliedChannel, encoded_.data(), size);
 }
 
 template <typename Message>
 void SimNode::PublishAndRecord(const char* channel, const Message& message, bool record) {
   const int size = message.getEncodedSize();
-  std::vector<uint8_t> buffer(static_cast<size_t>(size));
-  message.encode(buffer.data(), 0, size);
-  lcm_.Publish(channel, buffer.data(), size);
-  if (record) Record(channel, buffer.data(), size);
+  encoded_.resize(static_cast<size_t>(size));
+  message.encode(encoded_.data(), 0, size);
+  lcm_.Publish(channel, encoded_.data(), size);
+  if (record) Record(channel, encoded_.data(), size);
 }
 
 void SimNode::PublishStatus(int8_t state, const std::string& detail, bool record) {

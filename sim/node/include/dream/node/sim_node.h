@@ -126,7 +126,7 @@ class SimNode {
   World& world_;
   std::vector<ObstacleState> obstacle_states_;  // scratch for PublishStep
   applied_commands_t applied_;                  // scratch for RecordApplied
-  std::vector<uint8_t> applied_bytes_;
+  std::vector<uint8_t> encoded_;               // scratch: the message being published or recorded
   RunRecorder* recorder_;
   int64_t recorder_failed_at_step_ = -1;
   SimNodeOptions options_;
