@@ -5,63 +5,48 @@
 #include <stdexcept>
 
 #include "dream/agents/experiments/formation_state_message.h"
+#include "dream/agents/framework/number_text.h"
+#include "dream/agents/framework/params_check.h"
 
 namespace dream::agents {
 
 bool AffineFollowerParams::IsValid(std::string* error) const {
-  auto fail = [error](const std::string& message) {
-    if (error != nullptr) *error = message;
-    return false;
-  };
-  if (neighbours.empty()) return fail("neighbours: a follower needs at least one weighted neighbour");
+  if (neighbours.empty()) return FailParams(error, "neighbours: a follower needs at least one weighted neighbour");
   double gamma = 0.0;
   for (size_t k = 0; k < neighbours.size(); ++k) {
     const auto& [j, w] = neighbours[k];
-    if (j < 0) return fail("neighbours: id " + std::to_string(j) + " is not a robot id");
+    if (j < 0) return FailParams(error, "neighbours: id " + std::to_string(j) + " is not a robot id");
     if (!std::isfinite(w) || w == 0.0) {
-      return fail("neighbours: weight of robot " + std::to_string(j) + " must be finite and non-zero, got " +
-                  std::to_string(w));
+      return FailParams(error, "neighbours: weight of robot " + std::to_string(j) +
+                                   " must be finite and non-zero, got " + std::to_string(w));
     }
     for (size_t m = 0; m < k; ++m) {
-      if (neighbours[m].first == j) return fail("neighbours: robot " + std::to_string(j) + " is listed twice");
+      if (neighbours[m].first == j) {
+        return FailParams(error, "neighbours: robot " + std::to_string(j) + " is listed twice");
+      }
     }
     gamma += w;
   }
   if (law == Law::kZhao && !(gamma > 0.0)) {
-    return fail("neighbours: the weights sum to " + std::to_string(gamma) +
-                "; Zhao's law divides by that sum, which must be > 0");
+    return FailParams(error, "neighbours: the weights sum to " + std::to_string(gamma) +
+                                 "; Zhao's law divides by that sum, which must be > 0");
   }
-  if (!(gain > 0.0) || !std::isfinite(gain)) return fail("gain must be > 0, got " + std::to_string(gain));
-  if (!(max_speed_mps > 0.0 && max_speed_mps <= 0.2)) {
-    return fail("max_speed_mps must be in (0, 0.2], got " + std::to_string(max_speed_mps));
+  if (!CheckPositive(error, "gain", gain) || !CheckMaxSpeed(error, max_speed_mps) ||
+      !CheckPositive(error, "time_step_s", time_step_s)) {
+    return false;
   }
-  if (!(time_step_s > 0.0) || !std::isfinite(time_step_s)) {
-    return fail("time_step_s must be > 0, got " + std::to_string(time_step_s));
-  }
+  // Not CheckPositive: an infinite distance (HRVO for every sensed robot) is allowed.
   if (!(hrvo_engage_distance_m > 0.0)) {
-    return fail("hrvo_engage_distance_m must be > 0, got " + std::to_string(hrvo_engage_distance_m));
+    return FailParams(error, "hrvo_engage_distance_m must be > 0, got " + NumberText(hrvo_engage_distance_m));
   }
-  if (!(hrvo_horizon_s >= 0.0) || !std::isfinite(hrvo_horizon_s)) {
-    return fail("hrvo_horizon_s must be >= 0, got " + std::to_string(hrvo_horizon_s));
-  }
-  if (max_message_age_steps < 1) {
-    return fail("max_message_age_steps must be >= 1, got " + std::to_string(max_message_age_steps));
-  }
-  return true;
+  return CheckNonNegative(error, "hrvo_horizon_s", hrvo_horizon_s) &&
+         CheckAtLeast(error, "max_message_age_steps", max_message_age_steps, 1);
 }
-
-namespace {
-const AffineFollowerParams& Checked(const AffineFollowerParams& params) {
-  std::string error;
-  if (!params.IsValid(&error)) throw std::invalid_argument(error);
-  return params;
-}
-}  // namespace
 
 AffineFollowerRobot::AffineFollowerRobot(int id, const RobotParams& robot_params, const HrvoRobotParams& hrvo,
                                          const AffineFollowerParams& params)
     : HrvoRobot(id, robot_params, hrvo),
-      params_(Checked(params)),
+      params_(CheckedParams(params)),
       safety_radius_m_(hrvo.hrvo.safety_radius_m),
       drive_(robot_params.vel_gain, robot_params.ang_gain) {
   for (const auto& [j, w] : params_.neighbours) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "dream/agents/framework/params_check.h"
 #include "dream/agents/geometry/affine_transform.h"
 
 namespace dream::agents {
@@ -25,29 +26,25 @@ const ObstacleView* FindObstacle(const WorldSnapshot& world, int id) {
 }  // namespace
 
 bool AffineFormationMetricsParams::IsValid(std::string* error) const {
-  auto fail = [error](const std::string& message) {
-    if (error != nullptr) *error = message;
-    return false;
-  };
   std::vector<Eigen::Vector2d> leader_points;
   for (int id : leaders) {
-    if (id < 0 || size_t(id) >= nominal_m.size()) return fail("leaders: id " + std::to_string(id) + " is not a robot");
+    if (id < 0 || size_t(id) >= nominal_m.size())
+      return FailParams(error, "leaders: id " + std::to_string(id) + " is not a robot");
     leader_points.push_back(nominal_m[size_t(id)]);
   }
   if (!AffineTransform::Fit(leader_points, leader_points)) {
-    return fail("leaders: need at least 3 leaders whose nominal points are not collinear");
+    return FailParams(error, "leaders: need at least 3 leaders whose nominal points are not collinear");
   }
-  if (!(tolerance_m > 0.0) || !std::isfinite(tolerance_m)) {
-    return fail("tolerance_m must be > 0, got " + std::to_string(tolerance_m));
+  if (!CheckPositive(error, "tolerance_m", tolerance_m)) return false;
+  if (converged_from_step < 0) {
+    return FailParams(error, "converged_from_step must be >= 0, got " + std::to_string(converged_from_step));
   }
-  if (converged_from_step < 0)
-    return fail("converged_from_step must be >= 0, got " + std::to_string(converged_from_step));
   for (const auto& pair : obstacle_pairs) {
-    if (pair[0] < 0 || pair[1] < 0) return fail("obstacle_pairs: obstacle ids must be >= 0");
+    if (pair[0] < 0 || pair[1] < 0) return FailParams(error, "obstacle_pairs: obstacle ids must be >= 0");
   }
-  if (series_every_steps < 1) return fail("series_every_steps must be >= 1, got " + std::to_string(series_every_steps));
+  if (!CheckAtLeast(error, "series_every_steps", series_every_steps, 1)) return false;
   if (!(collision_diameter_m > 0.0) || !(collision_offset_m >= 0.0)) {
-    return fail("collision_diameter_m must be > 0 and collision_offset_m >= 0");
+    return FailParams(error, "collision_diameter_m must be > 0 and collision_offset_m >= 0");
   }
   return true;
 }

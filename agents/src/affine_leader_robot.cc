@@ -4,37 +4,19 @@
 #include <stdexcept>
 
 #include "dream/agents/experiments/formation_state_message.h"
+#include "dream/agents/framework/params_check.h"
 
 namespace dream::agents {
 
 bool AffineLeaderParams::IsValid(std::string* error) const {
-  auto fail = [error](const std::string& message) {
-    if (error != nullptr) *error = message;
-    return false;
-  };
-  if (!nominal_m.allFinite()) return fail("nominal_m must be finite");
-  if (!maneuver.IsValid(error)) return false;
-  if (!(gain > 0.0) || !std::isfinite(gain)) return fail("gain must be > 0, got " + std::to_string(gain));
-  if (!(max_speed_mps > 0.0 && max_speed_mps <= 0.2)) {
-    return fail("max_speed_mps must be in (0, 0.2], got " + std::to_string(max_speed_mps));
-  }
-  if (!(time_step_s > 0.0) || !std::isfinite(time_step_s)) {
-    return fail("time_step_s must be > 0, got " + std::to_string(time_step_s));
-  }
-  return true;
+  if (!nominal_m.allFinite()) return FailParams(error, "nominal_m must be finite");
+  return maneuver.IsValid(error) && CheckPositive(error, "gain", gain) && CheckMaxSpeed(error, max_speed_mps) &&
+         CheckPositive(error, "time_step_s", time_step_s);
 }
-
-namespace {
-const AffineLeaderParams& Checked(const AffineLeaderParams& params) {
-  std::string error;
-  if (!params.IsValid(&error)) throw std::invalid_argument(error);
-  return params;
-}
-}  // namespace
 
 AffineLeaderRobot::AffineLeaderRobot(int id, const RobotParams& robot_params, const AffineLeaderParams& params)
     : Robot(id, robot_params),
-      params_(Checked(params)),
+      params_(CheckedParams(params)),
       maneuver_(params.maneuver),
       drive_(robot_params.vel_gain, robot_params.ang_gain) {}
 

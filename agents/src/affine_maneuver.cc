@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "dream/agents/framework/params_check.h"
+
 namespace dream::agents {
 namespace {
 
@@ -31,27 +33,20 @@ AffineTransform AffineKeyframe::Transform() const {
 }
 
 bool AffineManeuverParams::IsValid(std::string* error) const {
-  auto fail = [error](const std::string& message) {
-    if (error != nullptr) *error = message;
-    return false;
-  };
-  if (keyframes.empty()) return fail("keyframes: need at least one keyframe");
+  if (keyframes.empty()) return FailParams(error, "keyframes: need at least one keyframe");
   for (size_t k = 0; k < keyframes.size(); ++k) {
     const AffineKeyframe& f = keyframes[k];
     const std::string where = "keyframes[" + std::to_string(k) + "].";
-    if (f.step < 0) return fail(where + "step must be >= 0, got " + std::to_string(f.step));
+    if (f.step < 0) return FailParams(error, where + "step must be >= 0, got " + std::to_string(f.step));
     if (k > 0 && f.step <= keyframes[k - 1].step) {
-      return fail(where + "step must be greater than the previous keyframe's (" +
+      return FailParams(error, where + "step must be greater than the previous keyframe's (" +
                   std::to_string(keyframes[k - 1].step) + "), got " + std::to_string(f.step));
     }
-    if (!(f.scale_x > 0.0) || !std::isfinite(f.scale_x)) {
-      return fail(where + "scale_x must be > 0, got " + std::to_string(f.scale_x));
+    if (!CheckPositive(error, where + "scale_x", f.scale_x) || !CheckPositive(error, where + "scale_y", f.scale_y)) {
+      return false;
     }
-    if (!(f.scale_y > 0.0) || !std::isfinite(f.scale_y)) {
-      return fail(where + "scale_y must be > 0, got " + std::to_string(f.scale_y));
-    }
-    if (!std::isfinite(f.rotation_rad)) return fail(where + "rotation_rad must be finite");
-    if (!f.translation_m.allFinite()) return fail(where + "translation must be finite");
+    if (!std::isfinite(f.rotation_rad)) return FailParams(error, where + "rotation_rad must be finite");
+    if (!f.translation_m.allFinite()) return FailParams(error, where + "translation must be finite");
   }
   return true;
 }

@@ -3,39 +3,23 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "dream/agents/framework/params_check.h"
+
 namespace dream::agents {
 
 bool CircleFormationParams::IsValid(std::string* error) const {
-  auto fail = [error](const std::string& message) {
-    if (error != nullptr) *error = message;
-    return false;
-  };
-  if (goals_m.empty()) return fail("goals_m must hold at least one point");
+  if (goals_m.empty()) return FailParams(error, "goals_m must hold at least one point");
   for (size_t i = 0; i < goals_m.size(); ++i) {
-    if (!goals_m[i].allFinite()) return fail("goals_m[" + std::to_string(i) + "] must be finite");
+    if (!goals_m[i].allFinite()) return FailParams(error, "goals_m[" + std::to_string(i) + "] must be finite");
   }
-  if (num_robots < 1) return fail("num_robots must be >= 1, got " + std::to_string(num_robots));
-  if (!(tolerance_m > 0.0) || !std::isfinite(tolerance_m)) {
-    return fail("tolerance_m must be > 0, got " + std::to_string(tolerance_m));
-  }
-  if (!(max_speed_mps > 0.0 && max_speed_mps <= 0.2)) {
-    return fail("max_speed_mps must be in (0, 0.2], got " + std::to_string(max_speed_mps));
-  }
-  return true;
+  return CheckAtLeast(error, "num_robots", num_robots, 1) && CheckPositive(error, "tolerance_m", tolerance_m) &&
+         CheckMaxSpeed(error, max_speed_mps);
 }
-
-namespace {
-const CircleFormationParams& Checked(const CircleFormationParams& params) {
-  std::string error;
-  if (!params.IsValid(&error)) throw std::invalid_argument(error);
-  return params;
-}
-}  // namespace
 
 CircleFormationRobot::CircleFormationRobot(int id, const RobotParams& robot_params,
                                            const HrvoRobotParams& hrvo_params, const CircleFormationParams& params)
     : HrvoRobot(id, robot_params, hrvo_params),
-      params_(Checked(params)),
+      params_(CheckedParams(params)),
       progress_(params.num_robots, static_cast<int>(params.goals_m.size())) {
   if (id >= params.num_robots) {
     throw std::invalid_argument("robot id " + std::to_string(id) + " is not below num_robots " +

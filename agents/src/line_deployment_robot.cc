@@ -5,50 +5,35 @@
 
 #include "dream/agents/framework/byte_reader.h"
 #include "dream/agents/framework/byte_writer.h"
+#include "dream/agents/framework/number_text.h"
+#include "dream/agents/framework/params_check.h"
 
 namespace dream::agents {
 
 bool LineDeploymentParams::IsValid(std::string* error) const {
-  auto fail = [error](const std::string& message) {
-    if (error != nullptr) *error = message;
+  if (!CheckPositive(error, "spacing_m", spacing_m) || !CheckPositive(error, "gain", gain) ||
+      !CheckMaxSpeed(error, max_speed_mps) || !CheckPositive(error, "tolerance_m", tolerance_m)) {
     return false;
-  };
-  if (!(spacing_m > 0.0) || !std::isfinite(spacing_m)) {
-    return fail("spacing_m must be > 0, got " + std::to_string(spacing_m));
-  }
-  if (!(gain > 0.0) || !std::isfinite(gain)) return fail("gain must be > 0, got " + std::to_string(gain));
-  if (!(max_speed_mps > 0.0 && max_speed_mps <= 0.2)) {
-    return fail("max_speed_mps must be in (0, 0.2], got " + std::to_string(max_speed_mps));
-  }
-  if (!(tolerance_m > 0.0) || !std::isfinite(tolerance_m)) {
-    return fail("tolerance_m must be > 0, got " + std::to_string(tolerance_m));
   }
   if (!(resume_m >= tolerance_m) || !std::isfinite(resume_m)) {
-    return fail("resume_m must be >= tolerance_m (" + std::to_string(tolerance_m) + "), got " +
-                std::to_string(resume_m));
+    return FailParams(error, "resume_m must be >= tolerance_m (" + NumberText(tolerance_m) + "), got " +
+                                 NumberText(resume_m));
   }
-  if (!(hold_avoid_range_m >= 0.0) || !std::isfinite(hold_avoid_range_m)) {
-    return fail("hold_avoid_range_m must be >= 0, got " + std::to_string(hold_avoid_range_m));
+  if (!CheckNonNegative(error, "hold_avoid_range_m", hold_avoid_range_m) ||
+      !CheckAtLeast(error, "settle_updates", settle_updates, 1)) {
+    return false;
   }
-  if (settle_updates < 1) return fail("settle_updates must be >= 1, got " + std::to_string(settle_updates));
   if (!(arena_margin_m >= 0.0) || !arena_min_m.allFinite() || !arena_max_m.allFinite() ||
       !((arena_max_m - arena_min_m).array() > 2.0 * arena_margin_m).all()) {
-    return fail("arena_margin_m must be >= 0 and leave room inside the arena, got " + std::to_string(arena_margin_m));
+    return FailParams(error, "arena_margin_m must be >= 0 and leave room inside the arena, got " +
+                                 NumberText(arena_margin_m));
   }
   return true;
 }
 
-namespace {
-const LineDeploymentParams& Checked(const LineDeploymentParams& params) {
-  std::string error;
-  if (!params.IsValid(&error)) throw std::invalid_argument(error);
-  return params;
-}
-}  // namespace
-
 LineDeploymentRobot::LineDeploymentRobot(int id, const RobotParams& robot_params,
                                          const HrvoRobotParams& hrvo_params, const LineDeploymentParams& params)
-    : HrvoRobot(id, robot_params, hrvo_params), params_(Checked(params)) {}
+    : HrvoRobot(id, robot_params, hrvo_params), params_(CheckedParams(params)) {}
 
 std::vector<uint8_t> LineDeploymentRobot::Encode(int id, const Eigen::Vector2d& position_m) {
   return ByteWriter().Int32(id).Double(position_m.x()).Double(position_m.y()).Take();

@@ -3,18 +3,12 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "dream/agents/framework/number_text.h"
+#include "dream/agents/framework/params_check.h"
 
 namespace dream::agents {
 
 bool RobotParams::IsValid(std::string* error) const {
-  auto fail = [error](const std::string& message) {
-    if (error != nullptr) *error = message;
-    return false;
-  };
-  if (!(vel_gain > 0.0) || !std::isfinite(vel_gain)) return fail("vel_gain must be > 0, got " + NumberText(vel_gain));
-  if (!(ang_gain > 0.0) || !std::isfinite(ang_gain)) return fail("ang_gain must be > 0, got " + NumberText(ang_gain));
-  return true;
+  return CheckPositive(error, "vel_gain", vel_gain) && CheckPositive(error, "ang_gain", ang_gain);
 }
 
 Robot::Robot(int id, RobotParams params) : id_(id), params_(params), actuator_limits_(params.limits) {

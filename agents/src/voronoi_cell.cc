@@ -1,57 +1,34 @@
-#include "dream/agents/framework/number_text.h"
 #include "dream/agents/geometry/voronoi_cell.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include "dream/agents/framework/number_text.h"
+#include "dream/agents/framework/params_check.h"
 #include "dream/agents/geometry/rectangle_union.h"
 
 namespace dream::agents {
-namespace {
-
-bool Fail(std::string* error, const std::string& message) {
-  if (error != nullptr) *error = message;
-  return false;
-}
-
-bool NonNegative(double value) { return std::isfinite(value) && value >= 0.0; }
-
-const VoronoiCellParams& Checked(const VoronoiCellParams& params) {
-  std::string error;
-  if (!params.IsValid(&error)) throw std::invalid_argument(error);
-  return params;
-}
-
-}  // namespace
 
 bool VoronoiCellParams::IsValid(std::string* error) const {
-  if (!(std::isfinite(disc_radius_m) && disc_radius_m > 0.0)) {
-    return Fail(error, "disc_radius_m must be > 0, got " + std::to_string(disc_radius_m));
+  if (!CheckPositive(error, "disc_radius_m", disc_radius_m) || !CheckAtLeast(error, "disc_sides", disc_sides, 8) ||
+      !CheckArena(error, arena_min_m, arena_max_m)) {
+    return false;
   }
-  if (disc_sides < 8) return Fail(error, "disc_sides must be >= 8, got " + std::to_string(disc_sides));
-  if (!arena_min_m.allFinite() || !arena_max_m.allFinite() || !(arena_min_m.x() < arena_max_m.x()) ||
-      !(arena_min_m.y() < arena_max_m.y())) {
-    return Fail(error, "the arena must be finite with min < max on both axes");
+  if (!(std::isfinite(wall_margin_m) && wall_margin_m >= 0.0) ||
+      2.0 * wall_margin_m >= (arena_max_m - arena_min_m).minCoeff()) {
+    return FailParams(error, "wall_margin_m must be >= 0 and leave room inside the arena, got " +
+                                 NumberText(wall_margin_m));
   }
-  if (!NonNegative(wall_margin_m) || 2.0 * wall_margin_m >= (arena_max_m - arena_min_m).minCoeff()) {
-    return Fail(error, "wall_margin_m must be >= 0 and leave room inside the arena, got " +
-                           NumberText(wall_margin_m));
-  }
-  if (!NonNegative(robot_buffer_m)) {
-    return Fail(error, "robot_buffer_m must be >= 0, got " + std::to_string(robot_buffer_m));
-  }
-  if (!NonNegative(obstacle_buffer_m)) {
-    return Fail(error, "obstacle_buffer_m must be >= 0, got " + std::to_string(obstacle_buffer_m));
-  }
-  return true;
+  return CheckNonNegative(error, "robot_buffer_m", robot_buffer_m) &&
+         CheckNonNegative(error, "obstacle_buffer_m", obstacle_buffer_m);
 }
 
 VoronoiCell::VoronoiCell(const VoronoiCellParams& params_in, const Eigen::Vector2d& self_m,
                          const std::vector<VoronoiNeighbour>& neighbours,
                          const std::vector<Eigen::Vector2d>& obstacle_points_m,
                          const std::vector<ObstacleRectangle>& obstacle_rectangles) {
-  const VoronoiCellParams& params = Checked(params_in);
+  const VoronoiCellParams& params = CheckedParams(params_in);
   const ConvexPolygon disc = ConvexPolygon::RegularPolygon(self_m, params.disc_radius_m, params.disc_sides);
 
   // The coverage region: disc & arena & plain bisectors, minus obstacles.

@@ -2,46 +2,25 @@
 
 #include <cstdio>
 #include <cmath>
-#include <stdexcept>
+
+#include "dream/agents/framework/params_check.h"
 
 namespace dream::agents {
-namespace {
-
-bool Fail(std::string* error, const std::string& message) {
-  if (error != nullptr) *error = message;
-  return false;
-}
-
-const VoronoiCoverageMetricsParams& Checked(const VoronoiCoverageMetricsParams& params) {
-  std::string error;
-  if (!params.IsValid(&error)) throw std::invalid_argument(error);
-  return params;
-}
-
-}  // namespace
 
 bool VoronoiCoverageMetricsParams::IsValid(std::string* error) const {
-  if (!arena_min_m.allFinite() || !arena_max_m.allFinite() || !(arena_min_m.x() < arena_max_m.x()) ||
-      !(arena_min_m.y() < arena_max_m.y())) {
-    return Fail(error, "the arena must be finite with min < max on both axes");
-  }
-  if (sample_steps < 1) return Fail(error, "sample_steps must be >= 1, got " + std::to_string(sample_steps));
-  if (!(std::isfinite(step_s) && step_s > 0.0)) return Fail(error, "step_s must be > 0, got " + std::to_string(step_s));
-  if (!(std::isfinite(still_speed_mps) && still_speed_mps > 0.0)) {
-    return Fail(error, "still_speed_mps must be > 0, got " + std::to_string(still_speed_mps));
+  if (!CheckArena(error, arena_min_m, arena_max_m) || !CheckAtLeast(error, "sample_steps", sample_steps, 1) ||
+      !CheckPositive(error, "step_s", step_s) || !CheckPositive(error, "still_speed_mps", still_speed_mps)) {
+    return false;
   }
   if (!(std::isfinite(collision_offset_m) && collision_offset_m >= 0.0) ||
       !(std::isfinite(collision_radius_m) && collision_radius_m >= 0.0)) {
-    return Fail(error, "collision_offset_m and collision_radius_m must be >= 0");
+    return FailParams(error, "collision_offset_m and collision_radius_m must be >= 0");
   }
-  if (still_window_steps < 1) {
-    return Fail(error, "still_window_steps must be >= 1, got " + std::to_string(still_window_steps));
-  }
-  return true;
+  return CheckAtLeast(error, "still_window_steps", still_window_steps, 1);
 }
 
 VoronoiCoverageMetrics::VoronoiCoverageMetrics(const VoronoiCoverageMetricsParams& params)
-    : params_(Checked(params)), cost_(params.arena_min_m, params.arena_max_m) {}
+    : params_(CheckedParams(params)), cost_(params.arena_min_m, params.arena_max_m) {}
 
 void VoronoiCoverageMetrics::Observe(const WorldSnapshot& world) {
   std::vector<Eigen::Vector2d> positions;

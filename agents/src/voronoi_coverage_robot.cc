@@ -6,45 +6,20 @@
 #include <stdexcept>
 
 #include "dream/agents/experiments/position_message.h"
+#include "dream/agents/framework/params_check.h"
 
 namespace dream::agents {
-namespace {
-
-bool Fail(std::string* error, const std::string& message) {
-  if (error != nullptr) *error = message;
-  return false;
-}
-
-const VoronoiCoverageParams& Checked(const VoronoiCoverageParams& params) {
-  std::string error;
-  if (!params.IsValid(&error)) throw std::invalid_argument(error);
-  return params;
-}
-
-}  // namespace
 
 bool VoronoiCoverageParams::IsValid(std::string* error) const {
-  if (!cell.IsValid(error)) return false;
-  if (!(std::isfinite(gain) && gain > 0.0)) return Fail(error, "gain must be > 0, got " + std::to_string(gain));
-  if (!(max_speed_mps > 0.0 && max_speed_mps <= 0.2)) {
-    return Fail(error, "max_speed_mps must be in (0, 0.2], got " + std::to_string(max_speed_mps));
-  }
-  if (!(std::isfinite(tolerance_m) && tolerance_m > 0.0)) {
-    return Fail(error, "tolerance_m must be > 0, got " + std::to_string(tolerance_m));
-  }
-  if (!(std::isfinite(step_s) && step_s > 0.0)) return Fail(error, "step_s must be > 0, got " + std::to_string(step_s));
-  if (done_after_still_steps < 1) {
-    return Fail(error, "done_after_still_steps must be >= 1, got " + std::to_string(done_after_still_steps));
-  }
-  if (radio_rounds_before_moving < 0) {
-    return Fail(error, "radio_rounds_before_moving must be >= 0, got " + std::to_string(radio_rounds_before_moving));
-  }
-  return true;
+  return cell.IsValid(error) && CheckPositive(error, "gain", gain) && CheckMaxSpeed(error, max_speed_mps) &&
+         CheckPositive(error, "tolerance_m", tolerance_m) && CheckPositive(error, "step_s", step_s) &&
+         CheckAtLeast(error, "done_after_still_steps", done_after_still_steps, 1) &&
+         CheckAtLeast(error, "radio_rounds_before_moving", radio_rounds_before_moving, 0);
 }
 
 VoronoiCoverageRobot::VoronoiCoverageRobot(int id, const RobotParams& robot_params,
                                            const VoronoiCoverageParams& params)
-    : Robot(id, robot_params), params_(Checked(params)) {}
+    : Robot(id, robot_params), params_(CheckedParams(params)) {}
 
 std::optional<std::vector<uint8_t>> VoronoiCoverageRobot::OnRadio(const std::vector<RadioMessage>& heard) {
   ++radio_rounds_;

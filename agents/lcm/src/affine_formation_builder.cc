@@ -73,16 +73,9 @@ void CheckPlan(const ConfigNode& node, const AffineManeuverParams& params, const
 
 AgentPartsConfig AffineFormationBuilder::DefaultParts(int num_robots) {
   AgentPartsConfig parts = AgentPartsConfig::Defaults(num_robots);
-  const auto n = static_cast<size_t>(num_robots);
-  SensorConfig odometry;
-  odometry.kind = SensorConfig::Kind::kOdometry;
-  odometry.period_steps.assign(n, 1);
-  SensorConfig movement;
-  movement.kind = SensorConfig::Kind::kMovement;
-  movement.period_steps.assign(n, 1);
-  parts.sensors = {odometry, movement};
-  parts.radio.kind = RadioConfig::Kind::kRole;
-  parts.radio.period_steps.assign(n, 1);
+  parts.sensors = {SensorConfig::Every(SensorConfig::Kind::kOdometry, num_robots, 1),
+                   SensorConfig::Every(SensorConfig::Kind::kMovement, num_robots, 1)};
+  parts.radio = RadioConfig::Every(RadioConfig::Kind::kRole, num_robots, 1);
   return parts;
 }
 

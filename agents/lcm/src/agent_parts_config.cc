@@ -167,15 +167,27 @@ void ReadRadio(const ConfigNode& node, int num_robots, bool graph_must_connect, 
 
 }  // namespace
 
+SensorConfig SensorConfig::Every(Kind kind, int num_robots, int period_steps) {
+  SensorConfig sensor;
+  sensor.kind = kind;
+  sensor.period_steps.assign(static_cast<size_t>(num_robots), period_steps);
+  return sensor;
+}
+
+RadioConfig RadioConfig::Every(Kind kind, int num_robots, int period_steps) {
+  RadioConfig radio;
+  radio.kind = kind;
+  radio.period_steps.assign(static_cast<size_t>(num_robots), period_steps);
+  return radio;
+}
+
 AgentPartsConfig AgentPartsConfig::Defaults(int num_robots) {
   AgentPartsConfig parts;
   const auto n = static_cast<size_t>(num_robots);
   parts.robot_period_steps.assign(n, 1);
   parts.start_delay_steps.assign(n, 0);
-  SensorConfig odometry;
-  odometry.period_steps.assign(n, 1);
-  parts.sensors.push_back(odometry);
-  parts.radio.period_steps.assign(n, 1);
+  parts.sensors.push_back(SensorConfig::Every(SensorConfig::Kind::kOdometry, num_robots, 1));
+  parts.radio = RadioConfig::Every(RadioConfig::Kind::kNone, num_robots, 1);
   return parts;
 }
 

@@ -9,10 +9,8 @@ namespace dream::agents {
 
 AgentPartsConfig HrvoCircleBuilder::DefaultParts(int num_robots) {
   AgentPartsConfig parts = AgentPartsConfig::ThesisHrvoParts(num_robots);
-  const auto n = static_cast<size_t>(num_robots);
-  parts.radio.kind = RadioConfig::Kind::kRange;
+  parts.radio = RadioConfig::Every(RadioConfig::Kind::kRange, num_robots, 30);
   parts.radio.range_m = 1.0;
-  parts.radio.period_steps.assign(n, 30);
   return parts;
 }
 

@@ -18,10 +18,8 @@ Eigen::MatrixXd LineDeploymentBuilder::ThesisAdjacency() {
 
 AgentPartsConfig LineDeploymentBuilder::DefaultParts(int num_robots) {
   AgentPartsConfig parts = AgentPartsConfig::ThesisHrvoParts(num_robots);
-  const auto n = static_cast<size_t>(num_robots);
-  parts.radio.kind = RadioConfig::Kind::kGraph;
   // The thesis found a 1 s radio period slowed convergence a lot; 10 steps is 0.33 s.
-  parts.radio.period_steps.assign(n, 10);
+  parts.radio = RadioConfig::Every(RadioConfig::Kind::kGraph, num_robots, 10);
   if (num_robots == 6) {
     parts.radio.graph = ThesisAdjacency();
   } else {

@@ -15,15 +15,11 @@ namespace {
 
 AgentPartsConfig VoronoiCoverageBuilder::DefaultParts(int num_robots) {
   AgentPartsConfig parts = AgentPartsConfig::Defaults(num_robots);
-  const auto n = static_cast<size_t>(num_robots);
-  SensorConfig obstacle;
-  obstacle.kind = SensorConfig::Kind::kObstacle;
-  obstacle.period_steps.assign(n, 1);
+  SensorConfig obstacle = SensorConfig::Every(SensorConfig::Kind::kObstacle, num_robots, 1);
   obstacle.obstacle.range_m = 1.0;
   parts.sensors.push_back(obstacle);
-  parts.radio.kind = RadioConfig::Kind::kRange;
+  parts.radio = RadioConfig::Every(RadioConfig::Kind::kRange, num_robots, 3);
   parts.radio.range_m = 2.0;
-  parts.radio.period_steps.assign(n, 3);
   return parts;
 }
 

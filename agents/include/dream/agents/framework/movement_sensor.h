@@ -1,11 +1,9 @@
 #pragma once
 
 #include <cmath>
-#include <cstdint>
 #include <string>
 
-#include "dream/agents/framework/noise_source.h"
-#include "dream/agents/framework/sensor.h"
+#include "dream/agents/framework/noisy_sensor.h"
 
 namespace dream::agents {
 
@@ -24,15 +22,10 @@ struct MovementSensorParams {
 /// from this robot to the neighbour, and velocity. (The thesis reported the
 /// angle from the neighbour to this robot and compensated inside HRVO; here
 /// the bearing means what it says.)
-class MovementSensor final : public Sensor {
+class MovementSensor final : public NoisySensor<MovementSensorParams> {
  public:
-  /// @throws std::invalid_argument when params are invalid.
-  MovementSensor(const MovementSensorParams& params, uint64_t seed);
+  using NoisySensor::NoisySensor;
   void Sense(const WorldSnapshot& world, Robot& robot) override;
-
- private:
-  MovementSensorParams params_;
-  NoiseSource noise_;
 };
 
 }  // namespace dream::agents

@@ -1,10 +1,8 @@
 #pragma once
 
-#include <cstdint>
 #include <string>
 
-#include "dream/agents/framework/noise_source.h"
-#include "dream/agents/framework/sensor.h"
+#include "dream/agents/framework/noisy_sensor.h"
 
 namespace dream::agents {
 
@@ -16,15 +14,10 @@ struct ObstacleSensorParams {
 
 /// The closest point of every virtual obstacle within range (added for the
 /// Voronoi experiment, where obstacles become virtual neighbours).
-class ObstacleSensor final : public Sensor {
+class ObstacleSensor final : public NoisySensor<ObstacleSensorParams> {
  public:
-  /// @throws std::invalid_argument when params are invalid.
-  ObstacleSensor(const ObstacleSensorParams& params, uint64_t seed);
+  using NoisySensor::NoisySensor;
   void Sense(const WorldSnapshot& world, Robot& robot) override;
-
- private:
-  ObstacleSensorParams params_;
-  NoiseSource noise_;
 };
 
 }  // namespace dream::agents

@@ -1,10 +1,8 @@
 #pragma once
 
-#include <cstdint>
 #include <string>
 
-#include "dream/agents/framework/noise_source.h"
-#include "dream/agents/framework/sensor.h"
+#include "dream/agents/framework/noisy_sensor.h"
 
 namespace dream::agents {
 
@@ -14,15 +12,10 @@ struct OdometrySensorParams {
 };
 
 /// The robot's own pose, plus gaussian noise on each coordinate.
-class OdometrySensor final : public Sensor {
+class OdometrySensor final : public NoisySensor<OdometrySensorParams> {
  public:
-  /// @throws std::invalid_argument when params are invalid.
-  OdometrySensor(const OdometrySensorParams& params, uint64_t seed);
+  using NoisySensor::NoisySensor;
   void Sense(const WorldSnapshot& world, Robot& robot) override;
-
- private:
-  OdometrySensorParams params_;
-  NoiseSource noise_;
 };
 
 }  // namespace dream::agents

@@ -22,6 +22,9 @@ struct SensorConfig {
   OdometrySensorParams odometry;
   MovementSensorParams movement;
   ObstacleSensorParams obstacle;
+
+  /// A sensor of `kind`, default params, that each of `num_robots` robots reads every `period_steps` steps.
+  static SensorConfig Every(Kind kind, int num_robots, int period_steps);
 };
 
 /// The `radio:` entry of a controller section.
@@ -33,6 +36,9 @@ struct RadioConfig {
   Eigen::MatrixXd graph;          ///< kGraph, kRole: adjacency or weights
   std::vector<int> leaders;       ///< kRole: leader ids; every other robot follows
   RadioLinkParams link;
+
+  /// A radio of `kind`, default params, that each of `num_robots` robots runs every `period_steps` steps.
+  static RadioConfig Every(Kind kind, int num_robots, int period_steps);
 };
 
 /// The parts every robot of an experiment is built from, read from the
