@@ -11,6 +11,7 @@
 #include "dream/bridge/controller_module_copy.h"
 #include "dream/bridge/lab_replay_world.h"
 #include "dream/bridge/mat_file.h"
+#include "dream/bridge/pre_validation.h"
 #include "dream/node/output_folder.h"
 #include "dream/node/output_folder_lock.h"
 #include "dream/bridge/submission_format.h"
@@ -20,6 +21,7 @@
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
 #include "dream/world/rectangle_obstacle.h"
+#include "dream/node/run_judge.h"
 #include "dream/node/run_outcome.h"
 #include "dream/node/run_recorder.h"
 #include "dream/node/run_summary.h"
@@ -208,6 +210,12 @@ int64_t ExportedSubmission::MaxResultValues() const {
   return rows * ResultLayout::Columns(params.num_robots);
 }
 
+sim::LabVerifierRules::Declaration ExportedSubmission::UploadDeclaration() const {
+  // As ExportSubmission computes UPLOAD.txt's "Estimated duration to declare".
+  const int64_t max_iterations = params.steps + params.options.settle_max_steps;
+  return {params.num_robots, static_cast<double>(max_iterations) * config.world.time_step_s};
+}
+
 NpyArray ReadResultFile(const std::string& path, int64_t max_values) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path + ": cannot open the file");
@@ -307,6 +315,7 @@ LabResult ParseLabResult(const NpyArray& rows, const std::string& name, const Ex
   LabResult result;
   result.settle_steps = settle;
   result.planned_steps = params.steps;
+  result.iterations = settle + experiment;  // the script calls step() after each settle and experiment row
   result.complete = final_row;
   RunTrack& track = result.track;
   track.num_robots = n;
@@ -349,9 +358,20 @@ sim::ViolationCounts WriteLabRunLog(const RunTrack& track, const sim::WorldParam
   return WriteLog(track, world, end_state, detail, log_path).violations();
 }
 
-ImportedRun ImportLabRun(const std::string& result_path, const std::string& export_dir, const std::string& out_dir) {
+std::vector<sim::VerdictReason> LabVerifierReasons(const LabResult& lab, const sim::WorldParams& world,
+                                                   const sim::LabVerifierRules::Declaration& declared) {
+  sim::LabVerifierRules rules;
+  rules.time_step_s = world.time_step_s;
+  sim::LabVerifierRules::Counts counts = VerifierCounts(lab.track, world);
+  counts.iterations = lab.iterations;  // the settle phase counts too: the verifier counts every step()
+  return rules.Check(declared, counts);
+}
+
+ImportedRun ImportLabRun(const std::string& result_path, const std::string& export_dir, const std::string& out_dir,
+                         const std::optional<sim::LabVerifierRules::Declaration>& declared) {
   const ExportedSubmission exported = ExportedSubmission::Read(export_dir);
   ImportedRun imported;
+  imported.declared = declared.value_or(exported.UploadDeclaration());
   imported.lab = ParseLabResult(ReadResultFile(result_path, exported.MaxResultValues()), result_path, exported);
   const LabResult& lab = imported.lab;
   const RunTrack& track = lab.track;
@@ -381,8 +401,16 @@ ImportedRun ImportLabRun(const std::string& result_path, const std::string& expo
   outcome.steps = track.last_step();
   outcome.wall_time_s = lab.wall_duration_s;
   outcome.log_events = log_events;
+  // Judged as a lab run: the verifier's rules on what the lab did against
+  // what was declared (not JudgeRun's, which assumes the run is its own export).
+  sim::RunJudgement judgement(
+      sim::RunReport::FromViolations(world.step(), world.violations(), exported.config.world.time_step_s));
+  judgement.Add(LabVerifierReasons(lab, exported.config.world, imported.declared));
+  judgement.Add(sim::OutcomeReasons(outcome));
+  imported.verdict = judgement.verdict();
+  imported.verdict_reasons = judgement.reasons();
   nlohmann::ordered_json summary = nlohmann::ordered_json::parse(
-      sim::RunSummaryJson(exported.config, outcome, world, "run.lcmlog"));
+      sim::RunSummaryJson(exported.config, outcome, world, "run.lcmlog", judgement));
   summary["config"] = "config.yaml";
   summary["metrics"] = MetricsJson(exported.config, imported.log_path);
   nlohmann::ordered_json lab_json;
@@ -395,6 +423,10 @@ ImportedRun ImportLabRun(const std::string& result_path, const std::string& expo
   lab_json["steps"] = track.last_step();
   lab_json["complete"] = lab.complete;
   lab_json["settle_steps"] = lab.settle_steps;
+  lab_json["iterations"] = lab.iterations;
+  lab_json["declared_robots"] = imported.declared.num_robots;
+  lab_json["declared_duration_s"] = imported.declared.duration_s;
+  lab_json["declared_from"] = declared ? "options" : "export";
   lab_json["wall_duration_s"] = lab.wall_duration_s;
   lab_json["max_step_s"] = lab.max_step_s;
   lab_json["clock_steps_back"] = lab.clock_steps_back;

@@ -125,10 +125,26 @@ int RunImport(const ImportArgs& args) {
       RunFolderChoice(args.out_dir, "runs/" + exported.config.name + "_lab", args.overwrite,
                       RunFolderChoice::Create::kLater)  // a refused result must leave no folder
           .dir();
-  const bridge::ImportedRun imported = bridge::ImportLabRun(ResultFile(args.result), args.export_dir, out_dir);
+  // What was declared on the lab's form: UPLOAD.txt's values unless told otherwise.
+  std::optional<sim::LabVerifierRules::Declaration> declared;
+  if (args.declared_robots > 0 || args.declared_duration_s > 0) {
+    declared = exported.UploadDeclaration();
+    if (args.declared_robots > 0) declared->num_robots = args.declared_robots;
+    if (args.declared_duration_s > 0) declared->duration_s = args.declared_duration_s;
+  }
+  const bridge::ImportedRun imported =
+      bridge::ImportLabRun(ResultFile(args.result), args.export_dir, out_dir, declared);
   PrintImported(imported);
+  std::cout << "verdict: " << sim::RunVerdictName(imported.verdict) << " (declared " << imported.declared.num_robots
+            << " robots, " << imported.declared.duration_s << " s; " << imported.lab.iterations << " iterations)\n";
+  for (const sim::VerdictReason& reason : imported.verdict_reasons) std::cout << "  - " << reason.Text() << "\n";
+  // As dream run's exit codes; a run the lab cut short did not finish.
   if (!imported.lab.complete) return kExitRunFailed;
-  return imported.violations.hard_errors() > 0 ? kExitRejected : kExitOk;
+  switch (imported.verdict) {
+    case sim::RunVerdict::kRejected: return kExitRejected;
+    case sim::RunVerdict::kNotReady: return kExitNotReady;
+    default: return kExitOk;
+  }
 }
 
 int RunCompare(const CompareArgs& args) {
@@ -331,7 +347,9 @@ void DeclareBridgeCommands(CommandLine& line) {
   CLI::App* import_command = line.AddCommand(
       "import",
       "Turn what the lab returned (dream_result.npy, or dream_result.mat from MATLAB) into a run\n"
-      "folder like dream run writes: run.lcmlog, summary.json, trajectories.png.\n"
+      "folder like dream run writes: run.lcmlog, summary.json, trajectories.png. Its verdict holds the\n"
+      "run to the lab verifier's rules against what UPLOAD.txt said to declare (robot count, duration),\n"
+      "or what --declared-robots / --declared-duration say was declared.\n"
       "Example: dream import ~/Downloads/dream_result.npy --export exports/go_to_goal --out runs/lab1",
       [import_args] { return RunImport(*import_args); });
   import_command->add_option("result", import_args->result, "dream_result.npy / .mat, or a folder holding one")
@@ -341,6 +359,14 @@ void DeclareBridgeCommands(CommandLine& line) {
                              "Output folder (default runs/<name>_lab, or _2, ... when that holds a run);\n"
                              "refused when it holds a run, unless --overwrite");
   import_command->add_flag("--overwrite", import_args->overwrite, "Replace the run already in the output folder");
+  import_command->add_option("--declared-robots", import_args->declared_robots,
+                             "The robot count declared on the lab's form, when not UPLOAD.txt's;\n"
+                             "the verdict names a mismatch (verifier_robot_count)")
+      ->check(CLI::PositiveNumber);
+  import_command->add_option("--declared-duration", import_args->declared_duration_s,
+                             "The duration (s) declared on the lab's form, when not UPLOAD.txt's; the verdict\n"
+                             "names a run over 1.5x of it (verifier_duration) or over 900 s (lab_duration_cap)")
+      ->check(CLI::PositiveNumber);
 
   auto replay_args = std::make_shared<LabReplayArgs>();
   CLI::App* replay_command = line.AddCommand(

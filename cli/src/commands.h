@@ -117,6 +117,8 @@ struct ImportArgs {
   std::string export_dir;
   std::string out_dir;          ///< empty: runs/<name>_lab (or _2, ... when that holds a run)
   bool overwrite = false;       ///< replace a run already in the output folder
+  int declared_robots = 0;      ///< declared on the lab's form; 0: the export's (UPLOAD.txt)
+  double declared_duration_s = 0.0;  ///< declared on the lab's form; 0: the export's (UPLOAD.txt)
 };
 
 struct LabReplayArgs {

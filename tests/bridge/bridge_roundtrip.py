@@ -181,6 +181,22 @@ def bad_input(loop):
                      loop.path("nan_lab")], expect=1)
     check("as a result of a 7-robot run; this export has 8 robots" in output, "7 robots: " + output)
 
+    # The lab verifier's rules against what was declared on the lab's form (UPLOAD.txt's by default).
+    good = loop.path("go_to_goal_check_track", "lab_files", "dream_result.npy")
+    export = loop.path("go_to_goal_export_track")
+    output, _ = run([dream, "import", good, "--export", export, "--out", loop.path("declared_lab")])
+    check("verdict: clean" in output, "declared as UPLOAD.txt says: " + output)
+    output, _ = run([dream, "import", good, "--export", export, "--out", loop.path("declared_short_lab"),
+                     "--declared-duration", "2"], expect=3)
+    check("verifier_duration: " in output and "over 1.5 x the declared 2.00 s" in output, "too long: " + output)
+    with open(loop.path("declared_short_lab", "summary.json")) as f:
+        summary = json.load(f)
+    check(summary["verdict"] == "rejected" and summary["lab"]["declared_duration_s"] == 2.0,
+          "too long: summary.json %s, %s" % (summary["verdict"], summary["lab"]))
+    output, _ = run([dream, "import", good, "--export", export, "--out", loop.path("declared_robots_lab"),
+                     "--declared-robots", "9"], expect=3)
+    check("verifier_robot_count: the script asks for 8 robots but 9 are declared" in output, "robots: " + output)
+
     # An output folder whose upload/ leads outside it.
     os.makedirs(loop.path("escape", "out"))
     os.makedirs(loop.path("escape", "elsewhere"))
@@ -188,7 +204,8 @@ def bad_input(loop):
     output, _ = run([dream, "export", loop.path("go_to_goal_sim"), "--out", loop.path("escape", "out")], expect=1)
     check("outside the output folder" in output, "escape: " + output)
     check(not os.listdir(loop.path("escape", "elsewhere")), "files were written outside the output folder")
-    loop.report.append("bad input: 21 robots, duration cap, injection, NaN, 7-robot result, escaping path: refused")
+    loop.report.append("bad input: 21 robots, duration cap, injection, NaN, 7-robot result, escaping path: refused; "
+                       "an import over its declared duration or robot count: rejected")
 
 
 def once(loop):

@@ -7,7 +7,9 @@
 
 #include <cmath>
 #include <filesystem>
+#include <cstdio>
 #include <limits>
+#include <optional>
 
 #include "bridge_test_support.h"
 #include "dream/bridge/lab_import.h"
@@ -17,6 +19,7 @@
 #include "dream/bridge/submission_format.h"
 #include "dream/lcm/log_reader.h"
 #include "dream/run_status_t.hpp"
+#include "dream/world/robotarium_constants.h"
 
 namespace dream::bridge {
 namespace {
@@ -37,10 +40,12 @@ class ImportTest : public ::testing::Test {
   }
 
   /// Writes `rows` as a result file and imports it into a fresh folder.
-  static ImportedRun Import(const NpyArray& rows, const std::string& name) {
+  /// `declared`: what the user declared on the lab's form (absent: UPLOAD.txt's).
+  static ImportedRun Import(const NpyArray& rows, const std::string& name,
+                            const std::optional<sim::LabVerifierRules::Declaration>& declared = {}) {
     const std::string dir = testing::NewFolder("import_" + name);
     testing::WriteText(dir + "/dream_result.npy", EncodeNpy(rows));
-    return ImportLabRun(dir + "/dream_result.npy", *export_dir_, dir + "/out");
+    return ImportLabRun(dir + "/dream_result.npy", *export_dir_, dir + "/out", declared);
   }
 
   /// Expects the import of `bytes` to fail with `message` naming the file, writing nothing.
@@ -126,6 +131,101 @@ TEST_F(ImportTest, SettleRowsAreSkippedAndClockJumpsHeld) {
   EXPECT_EQ(imported.lab.settle_steps, 2);
   EXPECT_EQ(imported.lab.clock_steps_back, 1);
   EXPECT_EQ(imported.lab.track.utime[50], imported.lab.track.utime[49]);
+}
+
+// The lab verifier's rules on an imported run, against what was declared:
+// UPLOAD.txt's values by default, or what the user says was declared.
+
+std::string Seconds(double seconds) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.2f s", seconds);
+  return text;
+}
+
+/// `rows` with `count` settle rows in front (copies of the first rows).
+NpyArray WithSettleRows(NpyArray rows, int count) {
+  const int64_t columns = rows.shape[1];
+  std::vector<double> settle(rows.values.begin(), rows.values.begin() + count * columns);
+  for (int s = 0; s < count; ++s) {
+    settle[static_cast<size_t>(s * columns + ResultLayout::kPhaseColumn)] = ResultLayout::kPhaseSettle;
+    settle[static_cast<size_t>(s * columns + ResultLayout::kStepColumn)] = s;
+  }
+  rows.values.insert(rows.values.begin(), settle.begin(), settle.end());
+  rows.shape[0] += count;
+  return rows;
+}
+
+TEST_F(ImportTest, RunWithinOneAndAHalfTimesTheDeclaredDurationIsClean) {
+  const ExportedSubmission exported = ExportedSubmission::Read(*export_dir_);
+  const int64_t steps = exported.params.steps;
+  const double dt = sim::RobotariumConstants::kTimeStepSeconds;
+  const sim::LabVerifierRules::Declaration upload = exported.UploadDeclaration();
+  EXPECT_EQ(upload.num_robots, exported.params.num_robots);
+  EXPECT_DOUBLE_EQ(upload.duration_s, static_cast<double>(steps + exported.params.options.settle_max_steps) * dt);
+
+  const NpyArray rows = testing::PerfectLabResult(*export_dir_);
+  const ImportedRun as_uploaded = Import(rows, "declared_as_uploaded");
+  EXPECT_EQ(as_uploaded.lab.iterations, steps);  // one step() per experiment row, no settle rows
+  EXPECT_EQ(as_uploaded.declared.duration_s, upload.duration_s);
+  EXPECT_EQ(as_uploaded.verdict, sim::RunVerdict::kClean);
+  EXPECT_THAT(as_uploaded.summary_json, HasSubstr("\"declared_from\": \"export\""));
+
+  // Declared shorter than UPLOAD.txt says, but the run takes under 1.5 x of it.
+  sim::LabVerifierRules::Declaration shorter = upload;
+  shorter.duration_s = static_cast<double>(steps) * dt / 1.45;
+  const ImportedRun within = Import(rows, "declared_within", shorter);
+  EXPECT_EQ(within.verdict, sim::RunVerdict::kClean);
+  EXPECT_TRUE(within.verdict_reasons.empty());
+  EXPECT_THAT(within.summary_json, HasSubstr("\"verdict\": \"clean\""));
+  EXPECT_THAT(within.summary_json, HasSubstr("\"declared_from\": \"options\""));
+}
+
+TEST_F(ImportTest, RunLongerThanOneAndAHalfTimesTheDeclaredDurationIsRejected) {
+  const ExportedSubmission exported = ExportedSubmission::Read(*export_dir_);
+  const int64_t steps = exported.params.steps;
+  const double dt = sim::RobotariumConstants::kTimeStepSeconds;
+  sim::LabVerifierRules::Declaration declared = exported.UploadDeclaration();
+  declared.duration_s = static_cast<double>(steps) * dt / 1.6;
+  const ImportedRun too_long = Import(testing::PerfectLabResult(*export_dir_), "declared_too_short", declared);
+  EXPECT_EQ(too_long.verdict, sim::RunVerdict::kRejected);
+  ASSERT_EQ(too_long.verdict_reasons.size(), 1u);
+  const sim::VerdictReason& reason = too_long.verdict_reasons[0];
+  EXPECT_EQ(reason.rule, "verifier_duration");
+  EXPECT_EQ(reason.verdict, sim::RunVerdict::kRejected);
+  // The measured and the declared value.
+  EXPECT_THAT(reason.problem, HasSubstr(std::to_string(steps) + " iterations take " +
+                                        Seconds(static_cast<double>(steps) * dt)));
+  EXPECT_THAT(reason.problem, HasSubstr("over 1.5 x the declared " + Seconds(declared.duration_s)));
+  EXPECT_THAT(too_long.summary_json, HasSubstr("\"verdict\": \"rejected\""));
+  EXPECT_THAT(too_long.summary_json, HasSubstr("\"rule\": \"verifier_duration\""));
+
+  // The verifier counts the settle phase's steps too: two settle rows take
+  // a run that fits 1.5 x the declaration without them over it.
+  declared.duration_s = static_cast<double>(steps + 1) * dt / 1.5;
+  EXPECT_EQ(Import(testing::PerfectLabResult(*export_dir_), "declared_fits", declared).verdict,
+            sim::RunVerdict::kClean);
+  const ImportedRun settled =
+      Import(WithSettleRows(testing::PerfectLabResult(*export_dir_), 2), "declared_settle_over", declared);
+  EXPECT_EQ(settled.lab.iterations, steps + 2);
+  ASSERT_EQ(settled.verdict_reasons.size(), 1u);
+  EXPECT_EQ(settled.verdict_reasons[0].rule, "verifier_duration");
+  EXPECT_THAT(settled.verdict_reasons[0].problem, HasSubstr(std::to_string(steps + 2) + " iterations"));
+}
+
+TEST_F(ImportTest, RobotCountOtherThanDeclaredIsRejected) {
+  const ExportedSubmission exported = ExportedSubmission::Read(*export_dir_);
+  const int robots = exported.params.num_robots;
+  sim::LabVerifierRules::Declaration declared = exported.UploadDeclaration();
+  declared.num_robots = robots + 2;
+  const ImportedRun mismatch = Import(testing::PerfectLabResult(*export_dir_), "declared_robots", declared);
+  EXPECT_EQ(mismatch.verdict, sim::RunVerdict::kRejected);
+  ASSERT_EQ(mismatch.verdict_reasons.size(), 1u);
+  EXPECT_EQ(mismatch.verdict_reasons[0].rule, "verifier_robot_count");
+  EXPECT_THAT(mismatch.verdict_reasons[0].problem, HasSubstr("the script asks for " + std::to_string(robots) +
+                                                             " robots but " + std::to_string(robots + 2) +
+                                                             " are declared"));
+  EXPECT_THAT(mismatch.summary_json, HasSubstr("\"rule\": \"verifier_robot_count\""));
+  EXPECT_THAT(mismatch.summary_json, HasSubstr("\"declared_robots\": " + std::to_string(robots + 2)));
 }
 
 TEST_F(ImportTest, MatFileFromMatlabImportsLikeTheNpy) {

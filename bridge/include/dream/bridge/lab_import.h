@@ -1,12 +1,17 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "dream/bridge/npy_file.h"
 #include "dream/bridge/run_track.h"
 #include "dream/bridge/submission_params.h"
 #include "dream/config/run_config.h"
+#include "dream/world/lab_verifier_rules.h"
+#include "dream/world/run_verdict.h"
+#include "dream/world/verdict_reason.h"
 #include "dream/world/violation_counts.h"
 
 namespace dream::bridge {
@@ -26,6 +31,11 @@ struct ExportedSubmission {
   /// The most values a result of this export can hold: every settle step,
   /// every experiment step and the final pose, of (3 + 5 N) columns.
   int64_t MaxResultValues() const;
+
+  /// What UPLOAD.txt told the user to declare with this submission, from
+  /// dream_params.npy and the config: its robot count, and (experiment steps
+  /// + settle steps) x the time step.
+  sim::LabVerifierRules::Declaration UploadDeclaration() const;
 };
 
 /// A lab run as the submission script saved it, checked and turned into a
@@ -35,6 +45,7 @@ struct LabResult {
   RunTrack track;
   int64_t settle_steps = 0;     ///< iterations the script spent settling
   int64_t planned_steps = 0;    ///< steps the export planned
+  int64_t iterations = 0;       ///< step() calls the script made (settle + experiment rows): the verifier's count
   bool complete = false;        ///< the final pose is there: every planned step, or (controller strategy) every robot done
   double wall_duration_s = 0.0; ///< wall time from step 0 to the last pose
   double max_step_s = 0.0;      ///< longest wall time between two steps
@@ -56,10 +67,23 @@ NpyArray ReadResultFile(const std::string& path, int64_t max_values = int64_t{1}
 /// @throws std::runtime_error "<name>: <problem>" naming row, column and robot.
 LabResult ParseLabResult(const NpyArray& rows, const std::string& name, const ExportedSubmission& exported);
 
+/// The lab verifier's rules (sim::LabVerifierRules) on a lab run: its robot
+/// count and step() calls (settle and experiment) against `declared`, robots
+/// too close or outside the arena counted on its poses. One kRejected reason
+/// per broken rule, naming the measured and the declared value; empty when
+/// the verifier would pass it.
+std::vector<sim::VerdictReason> LabVerifierReasons(const LabResult& lab, const sim::WorldParams& world,
+                                                   const sim::LabVerifierRules::Declaration& declared);
+
 /// What ImportLabRun wrote.
 struct ImportedRun {
   LabResult lab;
   sim::ViolationCounts violations{};
+  sim::LabVerifierRules::Declaration declared;  ///< what the run was judged against
+  /// summary.json's verdict and verdict_reasons: the Robotarium's checks on
+  /// the lab's poses, the verifier's rules (LabVerifierReasons), a cut-short run.
+  sim::RunVerdict verdict = sim::RunVerdict::kClean;
+  std::vector<sim::VerdictReason> verdict_reasons;
   std::string log_path;
   std::string summary_path;
   std::string picture_path;
@@ -72,9 +96,12 @@ struct ImportedRun {
 /// DREAM_STATUS, DREAM_POSES at the lab's timestamps, the commands as sent
 /// on DREAM_CMD_<id>), summary.json (violations on the lab's poses, the
 /// experiment's metrics, a "lab" section), trajectories.png and config.yaml.
+/// The verdict holds the run to `declared` (what the user declared on the
+/// lab's form; absent: what UPLOAD.txt said, UploadDeclaration()).
 /// Nothing is written unless the result file passes every check; each file
 /// is written atomically. @throws std::runtime_error naming the file.
-ImportedRun ImportLabRun(const std::string& result_path, const std::string& export_dir, const std::string& out_dir);
+ImportedRun ImportLabRun(const std::string& result_path, const std::string& export_dir, const std::string& out_dir,
+                         const std::optional<sim::LabVerifierRules::Declaration>& declared = {});
 
 /// Writes `track` as a run log (see ImportLabRun) to `log_path` atomically
 /// and returns the violations counted on it. `end_state` and `detail` go in
