@@ -16,6 +16,7 @@
 #include "command_line.h"
 #include "commands.h"
 #include "run_output.h"
+#include "dream/session/run_session.h"
 #include "dream/node/file_text.h"
 #include "dream/agent_host/agent_host.h"
 #include "dream/agent_host/controller_factory.h"
@@ -29,16 +30,13 @@
 #include "dream/config/run_config.h"
 #include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/lcm_url.h"
-#include "dream/node/run_recorder.h"
 #include "dream/world/run_report.h"
 #include "dream/node/run_summary.h"
-#include "dream/node/sim_node.h"
 #include "dream/render/trajectory_picture.h"
 #include "data_files.h"
 #include "process_group.h"
 #include "run_folder_choice.h"
 #include "shared_options.h"
-#include "terminal_progress.h"
 
 #ifndef DREAM_DEFAULT_PYTHON
 #define DREAM_DEFAULT_PYTHON "/usr/bin/python3"
@@ -168,63 +166,65 @@ int RunLabReplay(const LabReplayArgs& args) {
   config.sim.max_steps = args.steps > 0 ? std::min<int64_t>(args.steps, track.last_step()) : track.last_step();
   config.sim.stop_when_done = false;  // the lab run is replayed to its end
   if (!args.mode.empty()) config.sim.mode = sim::ParseWorldMode(args.mode);
-  HostedAgents::Check(config);
+  session::RunSession::Options options;
+  options.steps_from_command_line = args.steps > 0;
+  options.stop = &StopFlag();
+  session::RunSession run(std::move(config), options);
+  HostedAgents::Check(run.config(), run.factory());
 
-  const sim::OutputFolder out(
-      RunFolderChoice(args.out_dir, "runs/" + config.name + "_lab_replay", args.overwrite).dir());
-  const std::string log_path = out.PathOf("run.lcmlog");
+  const std::string out_dir =
+      RunFolderChoice(args.out_dir, "runs/" + run.config().name + "_lab_replay", args.overwrite).dir();
   const bool in_process = !args.world_only;
   lcm::LcmBus bus(args.lcm_url.empty() ? (in_process ? "memq://" : lcm::ResolveLcmUrl("")) : lcm::ResolveLcmUrl(args.lcm_url));
   std::unique_ptr<HostedAgents> host;
   if (in_process) {
-    std::vector<int> ids(static_cast<size_t>(config.num_robots));
+    std::vector<int> ids(static_cast<size_t>(run.config().num_robots));
     std::iota(ids.begin(), ids.end(), 0);
-    host = std::make_unique<HostedAgents>(bus, config, ids);
-  }
-  out.WriteFile("config.yaml", sim::ReadFileText(config_in));
-  sim::RunOutcome outcome;
-  std::unique_ptr<bridge::LabReplayWorld> world;
-  {
-    sim::RunRecorder recorder(log_path);
-    world = std::make_unique<bridge::LabReplayWorld>(std::move(track), config.world, &recorder);
-    sim::SimNode node(bus, *world, &recorder, config.sim);
-    TerminalProgress progress(config.sim.progress_interval_s);
-    node.set_progress_reporter(progress.reporter());
-    spdlog::info("{}: replaying {} lab steps of {} robots ({}) on {}{}", config.name, config.sim.max_steps,
-                 config.num_robots, sim::WorldModeName(config.sim.mode), bus.url(),
-                 in_process ? " with the agents in this process" : "; start the agents with dream agent");
-    outcome = node.Run(StopFlag());
-    recorder.Close();
+    host = std::make_unique<HostedAgents>(bus, run.config(), ids, run.factory());
   }
 
-  // The agents' commands beside the lab's: how differently the controller
-  // reacts to the real poses than the lab script drove.
-  nlohmann::ordered_json agreement = nlohmann::ordered_json::array();
-  for (int i = 0; i < config.num_robots; ++i) {
-    double dv2 = 0.0;
-    double dw2 = 0.0;
-    int64_t count = 0;
-    for (int64_t k = 0; k < world->step(); ++k) {
-      if (!world->has_agent_command(k, i)) continue;
-      const sim::UnicycleCommand& agent = world->agent_command(k, i);
-      const sim::UnicycleCommand& lab = world->track().command(k, i);
-      dv2 += (agent.v_mps - lab.v_mps) * (agent.v_mps - lab.v_mps);
-      dw2 += (agent.w_radps - lab.w_radps) * (agent.w_radps - lab.w_radps);
-      ++count;
+  // The lab's poses, replayed as the world; what it adds to the summary: the
+  // agents' commands beside the lab's, how differently the controller reacts
+  // to the real poses than the lab script drove.
+  const bridge::LabReplayWorld* replay = nullptr;
+  session::RunSession::GivenWorld world;
+  world.make = [&](sim::RunRecorder& recorder) {
+    auto made = std::make_unique<bridge::LabReplayWorld>(std::move(track), run.config().world, &recorder);
+    replay = made.get();
+    return made;
+  };
+  world.summary_fields = [&](const sim::World&) {
+    nlohmann::ordered_json agreement = nlohmann::ordered_json::array();
+    for (int i = 0; i < run.config().num_robots; ++i) {
+      double dv2 = 0.0;
+      double dw2 = 0.0;
+      int64_t count = 0;
+      for (int64_t k = 0; k < replay->step(); ++k) {
+        if (!replay->has_agent_command(k, i)) continue;
+        const sim::UnicycleCommand& agent = replay->agent_command(k, i);
+        const sim::UnicycleCommand& lab = replay->track().command(k, i);
+        dv2 += (agent.v_mps - lab.v_mps) * (agent.v_mps - lab.v_mps);
+        dw2 += (agent.w_radps - lab.w_radps) * (agent.w_radps - lab.w_radps);
+        ++count;
+      }
+      agreement.push_back({{"robot", i},
+                           {"steps_with_command", count},
+                           {"rms_v_difference_mps", count > 0 ? std::sqrt(dv2 / static_cast<double>(count)) : 0.0},
+                           {"rms_w_difference_radps", count > 0 ? std::sqrt(dw2 / static_cast<double>(count)) : 0.0}});
     }
-    agreement.push_back({{"robot", i},
-                         {"steps_with_command", count},
-                         {"rms_v_difference_mps", count > 0 ? std::sqrt(dv2 / static_cast<double>(count)) : 0.0},
-                         {"rms_w_difference_radps", count > 0 ? std::sqrt(dw2 / static_cast<double>(count)) : 0.0}});
-  }
-  // The same summary, verdict, report and picture as every run (ReportRun),
-  // plus what the replay adds.
-  nlohmann::ordered_json replay_fields;
-  replay_fields["config"] = "config.yaml";
-  replay_fields["lab_replay"] = {{"lab_run", fs::absolute(args.lab_dir).string()},
-                                 {"lab_command_channels", std::string(bridge::kLabCommandChannelPrefix) + "<id>"},
-                                 {"agents_vs_lab_commands", agreement}};
-  return ReportRun(config, outcome, *world, out.dir(), args.steps > 0, replay_fields);
+    nlohmann::ordered_json fields;
+    fields["config"] = "config.yaml";
+    fields["lab_replay"] = {{"lab_run", fs::absolute(args.lab_dir).string()},
+                            {"lab_command_channels", std::string(bridge::kLabCommandChannelPrefix) + "<id>"},
+                            {"agents_vs_lab_commands", agreement}};
+    return fields;
+  };
+  world.start_line = run.config().name + ": replaying " + std::to_string(run.config().sim.max_steps) +
+                     " lab steps of " + std::to_string(run.config().num_robots) + " robots (" +
+                     sim::WorldModeName(run.config().sim.mode) + ") on " + bus.url() +
+                     (in_process ? " with the agents in this process" : "; start the agents with dream agent");
+  // The same recording, summary, verdict, report and picture as every run.
+  return ExitCodeFor(run.Run(bus, {out_dir, sim::ReadFileText(config_in)}, world));
 }
 
 int RunCheckSubmission(const CheckSubmissionArgs& args) {

@@ -16,24 +16,29 @@ agents::PythonAgentHost::Paths PythonPaths() { return {DataFiles::PythonRuntimeD
 
 }  // namespace
 
-void HostedAgents::Check(const config::ControllerConfig& config) {
+void HostedAgents::Check(const config::ControllerConfig& config, const agents::ControllerFactory* built) {
   if (agents::IsPythonController(config)) {
     PythonHostLibrary::Get().Check(agents::PythonControllerSpecJson(config), PythonPaths());
-  } else {
-    agents::ControllerFactory{config};
+  } else if (built == nullptr) {
+    agents::ControllerFactory{config};  // its constructor is the check
   }
 }
 
-HostedAgents::HostedAgents(lcm::LcmBus& bus, const config::ControllerConfig& config, const std::vector<int>& robot_ids)
+HostedAgents::HostedAgents(lcm::LcmBus& bus, const config::ControllerConfig& config, const std::vector<int>& robot_ids,
+                           const agents::ControllerFactory* factory)
     : bus_(bus) {
   if (agents::IsPythonController(config)) {
     python_ = PythonHostLibrary::Get().Create(bus, agents::PythonControllerSpecJson(config), robot_ids, NewAgentId(),
                                               PythonPaths());
     return;
   }
-  const agents::ControllerFactory factory(config);
+  std::unique_ptr<agents::ControllerFactory> own;
+  if (factory == nullptr) {
+    own = std::make_unique<agents::ControllerFactory>(config);
+    factory = own.get();
+  }
   std::vector<std::unique_ptr<agents::RobotAgent>> robots;
-  for (int id : robot_ids) robots.push_back(factory.Make(id));
+  for (int id : robot_ids) robots.push_back(factory->Make(id));
   cpp_ = std::make_unique<agents::AgentHost>(bus, std::move(robots), NewAgentId());
 }
 

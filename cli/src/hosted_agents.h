@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "dream/agent_host/agent_host.h"
+#include "dream/agent_host/controller_factory.h"
 #include "dream/python_host/python_agent_host.h"
 #include "dream/config/controller_config.h"
 #include "dream/lcm/lcm_bus.h"
@@ -21,11 +22,15 @@ class HostedAgents {
  public:
   /// Checks the controller section as far as can be done before a run: the
   /// kind and its keys, and for the python kind its module, class and own
-  /// keys. @throws config::ConfigError naming file, line and key.
-  static void Check(const config::ControllerConfig& config);
+  /// keys. `built`: the run's factory when the caller built it already (a
+  /// RunSession does), so the config's plugins are not loaded again.
+  /// @throws config::ConfigError naming file, line and key.
+  static void Check(const config::ControllerConfig& config, const agents::ControllerFactory* built = nullptr);
 
-  /// Builds the agents of `robot_ids` and subscribes them on `bus`.
-  HostedAgents(lcm::LcmBus& bus, const config::ControllerConfig& config, const std::vector<int>& robot_ids);
+  /// Builds the agents of `robot_ids` and subscribes them on `bus`, C++
+  /// agents with `factory` when given (the run's), else with a factory of their own.
+  HostedAgents(lcm::LcmBus& bus, const config::ControllerConfig& config, const std::vector<int>& robot_ids,
+               const agents::ControllerFactory* factory = nullptr);
 
   /// Handles `bus` until the world ends the run (true), or `stop` / silence (false).
   bool Run(const std::atomic<bool>& stop, double idle_timeout_s);

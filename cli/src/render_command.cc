@@ -22,7 +22,7 @@
 #include "dream/render/run_animation.h"
 #include "dream/render/run_track.h"
 #include "dream/render/trajectory_picture.h"
-#include "render_overlays.h"
+#include "dream/session/render_overlays.h"
 #include "shared_options.h"
 
 namespace dream::cli {
@@ -108,7 +108,7 @@ sim::ArenaOverlays Overlays(const RenderArgs& args, const fs::path& log) {
   }
   sim::ArenaOverlays overlays;
   try {
-    overlays = ArenaOverlaysFromConfig(*config);
+    overlays = session::ArenaOverlaysFromConfig(*config);
   } catch (const std::exception& e) {
     // Goals are a nicety: without them the log still draws the run.
     if (needed || !args.config_path.empty()) throw;

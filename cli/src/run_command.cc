@@ -2,13 +2,10 @@
 
 #include <memory>
 #include <numeric>
-#include <random>
 
 #include "hosted_agents.h"
 #include "command_line.h"
 #include "commands.h"
-#include "dream/agent_host/agent_host.h"
-#include "dream/agent_host/controller_factory.h"
 #include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/lcm_url.h"
 #include "run_output.h"
@@ -17,22 +14,23 @@
 namespace dream::cli {
 
 int RunEmbedded(const RunArgs& args) {
-  const config::RunConfig config = LoadConfig(args);
+  const std::unique_ptr<session::RunSession> run = OpenRunSession(args);
+  const config::RunConfig& config = run->config();
   // One process: the world and every agent share one bus, memq:// unless the
   // user asks for a real transport.
   lcm::LcmBus bus(args.lcm_url.empty() ? "memq://" : lcm::ResolveLcmUrl(args.lcm_url));
   const std::string out_dir = PrepareOutputDir(args, config);
   std::vector<int> ids(static_cast<size_t>(config.num_robots));
   std::iota(ids.begin(), ids.end(), 0);
-  const HostedAgents agents(bus, config, ids);
-  return RunWorld(bus, config, ConfigTextForRunFolder(args, config), out_dir, args.steps != 0);
+  const HostedAgents agents(bus, config, ids, run->factory());
+  return ExitCodeFor(run->Run(bus, {out_dir, ConfigTextForRunFolder(args, config)}));
 }
 
 int RunSimOnly(const RunArgs& args) {
-  const config::RunConfig config = LoadConfig(args);
+  const std::unique_ptr<session::RunSession> run = OpenRunSession(args);
   lcm::LcmBus bus(lcm::ResolveLcmUrl(args.lcm_url));
-  const std::string out_dir = PrepareOutputDir(args, config);
-  return RunWorld(bus, config, ConfigTextForRunFolder(args, config), out_dir, args.steps != 0);
+  const std::string out_dir = PrepareOutputDir(args, run->config());
+  return ExitCodeFor(run->Run(bus, {out_dir, ConfigTextForRunFolder(args, run->config())}));
 }
 
 void DeclareRunCommand(CommandLine& line) {

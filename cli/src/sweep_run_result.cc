@@ -40,7 +40,7 @@ SweepRunResult SweepRunResult::Judge(const SweepPlan::Run& run, int exit_code, b
         metrics["min_pairwise_distance_m"].is_number()) {
       result.min_distance_m = metrics["min_pairwise_distance_m"].get<double>();
     }
-    result.goal = ExperimentGoal::Judge(summary);
+    result.goal = session::ExperimentGoal::Judge(summary);
   }
 
   const std::string hint = failure_hint.empty() ? std::string() : ": " + failure_hint;

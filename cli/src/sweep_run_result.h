@@ -4,7 +4,7 @@
 #include <optional>
 #include <string>
 
-#include "experiment_goal.h"
+#include "dream/session/experiment_goal.h"
 #include "sweep_plan.h"
 
 namespace dream::cli {
@@ -38,7 +38,7 @@ struct SweepRunResult {
   long long actuator_errors = 0;
   long long obstacle_collisions = 0;
   std::optional<double> min_distance_m;  ///< metrics.min_pairwise_distance_m (robot centres)
-  ExperimentGoal goal;
+  session::ExperimentGoal goal;
   bool success = false;
 
   /// Fills the fields above from the process's exit code and its summary.json

@@ -7,6 +7,8 @@
 namespace dream::cli {
 namespace {
 
+using session::ExperimentGoal;
+
 // A summary.json as dream run writes it (the fields the sweep reads).
 nlohmann::json Summary(const std::string& kind, long long steps, long long collisions, double min_distance_m,
                        nlohmann::json metrics_extra) {

@@ -8,7 +8,7 @@
 
 #include "dream/node/progress_reporter.h"
 
-namespace dream::cli {
+namespace dream::session {
 
 /// The progress display of one command, on stderr: a bar redrawn in place when
 /// stderr is a terminal, a plain line every `line_interval_s` when it is not,
@@ -33,4 +33,4 @@ class TerminalProgress {
   std::vector<spdlog::sink_ptr> original_sinks_;
 };
 
-}  // namespace dream::cli
+}  // namespace dream::session

@@ -6,7 +6,7 @@
 
 #include "dream/world/verdict_reason.h"
 
-namespace dream::cli {
+namespace dream::session {
 
 /// Whether a run met its experiment's own goal, read from summary.json:
 /// metrics.goal, which the kind's own success rule wrote when the run's
@@ -32,4 +32,4 @@ struct ExperimentGoal {
   nlohmann::ordered_json Json() const;
 };
 
-}  // namespace dream::cli
+}  // namespace dream::session

@@ -4,7 +4,7 @@
 #include "dream/config/run_config.h"
 #include "dream/render/arena_overlays.h"
 
-namespace dream::cli {
+namespace dream::session {
 
 /// What a run's config adds to its pictures (sim::ArenaOverlays), read with
 /// the agents' own code so a picture shows what the robots had:
@@ -19,4 +19,4 @@ sim::ArenaOverlays ArenaOverlaysFromConfig(const config::RunConfig& config);
 /// The same with the run's factory, when the caller has one already.
 sim::ArenaOverlays ArenaOverlaysFromConfig(const config::RunConfig& config, const agents::ControllerFactory& factory);
 
-}  // namespace dream::cli
+}  // namespace dream::session

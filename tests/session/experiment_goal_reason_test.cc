@@ -4,9 +4,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "experiment_goal.h"
+#include "dream/session/experiment_goal.h"
 
-namespace dream::cli {
+namespace dream::session {
 namespace {
 
 using ::testing::HasSubstr;
@@ -36,4 +36,4 @@ TEST(ExperimentGoalReason, AMissedGoalIsANotReadyReason) {
 }
 
 }  // namespace
-}  // namespace dream::cli
+}  // namespace dream::session

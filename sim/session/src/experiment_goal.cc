@@ -1,6 +1,6 @@
-#include "experiment_goal.h"
+#include "dream/session/experiment_goal.h"
 
-namespace dream::cli {
+namespace dream::session {
 namespace {
 
 double Number(const nlohmann::json& object, const std::string& key, double fallback) {
@@ -62,4 +62,4 @@ nlohmann::ordered_json ExperimentGoal::Json() const {
   return json;
 }
 
-}  // namespace dream::cli
+}  // namespace dream::session

@@ -1,4 +1,4 @@
-#include "terminal_progress.h"
+#include "dream/session/terminal_progress.h"
 
 #include <spdlog/spdlog.h>
 #include <sys/ioctl.h>
@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <iostream>
 
-namespace dream::cli {
+namespace dream::session {
 namespace {
 
 /// Forwards log lines to `inner` after clearing the progress bar off the line.
@@ -64,4 +64,4 @@ TerminalProgress::~TerminalProgress() {
   if (!original_sinks_.empty()) spdlog::default_logger()->sinks() = original_sinks_;
 }
 
-}  // namespace dream::cli
+}  // namespace dream::session

@@ -1,4 +1,4 @@
-#include "render_overlays.h"
+#include "dream/session/render_overlays.h"
 
 #include <memory>
 #include <vector>
@@ -7,7 +7,7 @@
 #include "dream/agent_host/controller_factory.h"
 #include "dream/agents/framework/world_snapshot.h"
 
-namespace dream::cli {
+namespace dream::session {
 namespace {
 
 using Points = std::vector<std::array<double, 2>>;
@@ -74,4 +74,4 @@ sim::ArenaOverlays ArenaOverlaysFromConfig(const config::RunConfig& config, cons
   return overlays;
 }
 
-}  // namespace dream::cli
+}  // namespace dream::session

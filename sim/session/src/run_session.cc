@@ -1,0 +1,251 @@
+#include "dream/session/run_session.h"
+
+#include <spdlog/spdlog.h>
+
+#include <optional>
+#include <utility>
+
+#include "dream/bridge/controller_module_copy.h"
+#include "dream/bridge/metrics_json.h"
+#include "dream/bridge/pre_validation.h"
+#include "dream/bridge/run_track.h"
+#include "dream/node/atomic_file.h"
+#include "dream/node/output_folder.h"
+#include "dream/node/run_judge.h"
+#include "dream/node/run_summary.h"
+#include "dream/node/sim_node.h"
+#include "dream/node/true_pose_recording.h"
+#include "dream/render/run_track.h"
+#include "dream/render/trajectory_picture.h"
+#include "dream/session/experiment_goal.h"
+#include "dream/session/render_overlays.h"
+#include "dream/session/terminal_progress.h"
+#include "dream/world/realistic_world.h"
+#include "dream/world/unicycle_world.h"
+
+namespace dream::session {
+namespace {
+
+constexpr const char* kLogName = "run.lcmlog";
+
+// The models a run with world.realism had (summary.json "realism").
+nlohmann::ordered_json RealismJson(const sim::RealismParams& realism) {
+  nlohmann::ordered_json json;
+  json["pose_noise_m"] = realism.pose_noise_m;
+  json["pose_noise_rad"] = realism.pose_noise_rad;
+  json["pose_quantum_m"] = realism.pose_quantum_m;
+  json["pose_quantum_rad"] = realism.pose_quantum_rad;
+  json["pose_delay_steps"] = realism.pose_delay_steps;
+  json["tracking_dropout_probability"] = realism.tracking_dropout_probability;
+  json["command_latency_steps"] = realism.command_latency_steps;
+  json["command_brake_s"] = realism.command_brake_s;
+  json["dead_zone_v_mps"] = realism.dead_zone_v_mps;
+  json["dead_zone_w_radps"] = realism.dead_zone_w_radps;
+  json["wheel_accel_limit_radps2"] = realism.wheel_accel_limit_radps2;
+  json["axle_length_m"] = realism.axle_length_m;
+  json["poses_channel_seen_by_agents"] = sim::TruePoseRecording::kMeasuredPosesChannel;
+  return json;
+}
+
+}  // namespace
+
+// What the loop left for the report: the world (asked for its counts and
+// final poses), how the run ended and what the world adds to summary.json.
+struct RunSession::Stepped {
+  std::unique_ptr<sim::World> world;
+  sim::RunOutcome outcome;
+  nlohmann::ordered_json world_fields = nlohmann::ordered_json::object();
+};
+
+RunSession::RunSession(config::RunConfig config, Options options)
+    : config_(std::move(config)), options_(options) {
+  try {
+    factory_ = std::make_unique<agents::ControllerFactory>(config_);
+  } catch (const std::exception& e) {
+    factory_error_ = e.what();
+  }
+}
+
+RunSession::RunSession(config::RunConfig config) : RunSession(std::move(config), Options()) {}
+
+RunSession::~RunSession() = default;
+
+RunResult RunSession::Run(lcm::LcmInterface& lcm, const Folder& folder) {
+  // world.realism: the official world seen and driven as on the lab; off
+  // (ideal), the official world itself, with nothing in between.
+  GivenWorld own;
+  own.make = [this](sim::RunRecorder&) -> std::unique_ptr<sim::World> {
+    if (config_.realism.IsIdeal()) {
+      return std::make_unique<sim::UnicycleWorld>(config_.world, config_.initial_poses, config_.obstacles);
+    }
+    return std::make_unique<sim::RealisticWorld>(config_.world, config_.realism, config_.seed, config_.initial_poses,
+                                                 config_.obstacles);
+  };
+  own.summary_fields = [this](const sim::World& world) {
+    nlohmann::ordered_json fields = nlohmann::ordered_json::object();
+    const auto* realistic = dynamic_cast<const sim::RealisticWorld*>(&world);
+    if (realistic == nullptr) return fields;
+    fields["realism"] = RealismJson(config_.realism);
+    // Where the robots really ended (world.poses() is what the agents were sent last).
+    nlohmann::ordered_json poses = nlohmann::ordered_json::array();
+    for (const sim::Pose2& pose : realistic->true_poses()) poses.push_back({pose.x_m, pose.y_m, pose.theta_rad});
+    fields["final_poses"] = poses;
+    return fields;
+  };
+  return Run(lcm, folder, own);
+}
+
+RunResult RunSession::Run(lcm::LcmInterface& lcm, const Folder& folder, const GivenWorld& world) {
+  const Stepped stepped = Step(lcm, folder, world);
+  return Report(stepped, folder.dir);
+}
+
+RunSession::Stepped RunSession::Step(lcm::LcmInterface& lcm, const Folder& folder, const GivenWorld& given) {
+  // A copy of the config beside the log, so the run folder alone is enough
+  // for `dream export` and `dream compare`, and to rerun it.
+  sim::WriteFileAtomically(folder.dir + "/config.yaml", folder.config_text);
+  bridge::KeepControllerModule(config_, sim::OutputFolder(folder.dir));
+  Stepped stepped;
+  const std::string log_path = folder.dir + "/" + kLogName;
+  {
+    sim::RunRecorder recorder(log_path);
+    stepped.world = given.make(recorder);
+    // A realistic world's log keeps the truth on DREAM_POSES, the agents' view on DREAM_MEASURED_POSES.
+    std::optional<sim::TruePoseRecording> truth;
+    if (const auto* realistic = dynamic_cast<const sim::RealisticWorld*>(stepped.world.get())) {
+      truth.emplace(recorder, *realistic);
+    }
+    sim::SimNode node(lcm, *stepped.world, &recorder, config_.sim);
+    if (given.start_line.empty()) {
+      spdlog::info("{}: {} robots, up to {} steps, {} on {}", config_.name, config_.num_robots, config_.sim.max_steps,
+                   sim::WorldModeName(config_.sim.mode), lcm.url());
+    } else {
+      spdlog::info("{}", given.start_line);
+    }
+    TerminalProgress progress(config_.sim.progress_interval_s);
+    node.set_progress_reporter(progress.reporter());
+    static const std::atomic<bool> never(false);
+    stepped.outcome = node.Run(options_.stop != nullptr ? *options_.stop : never);
+    try {
+      recorder.Close();
+    } catch (const std::exception& e) {
+      // The node has flushed the log already, so this is rare (a rename that
+      // fails); the summary still tells what the run did and why the log is short.
+      stepped.outcome.end = sim::RunOutcome::End::kFailed;
+      stepped.outcome.reason = e.what();
+    }
+    stepped.outcome.log_events = recorder.events_written();
+  }
+  if (given.summary_fields) stepped.world_fields = given.summary_fields(*stepped.world);
+  return stepped;
+}
+
+nlohmann::ordered_json RunSession::Metrics(const std::string& log_path) const {
+  if (factory_ == nullptr) {
+    spdlog::warn("{}: {}", config_.source, factory_error_);
+    nlohmann::ordered_json json;
+    json["error"] = factory_error_;
+    return json;
+  }
+  return bridge::MetricsJson(*factory_, log_path);
+}
+
+sim::RunJudgement RunSession::Judge(const sim::RunOutcome& outcome, const sim::World& world,
+                                    const std::string& log_path, nlohmann::ordered_json* summary) const {
+  // The lab's verifier counts each robot outside the arena, the world each
+  // step with any: re-count on the log, only when there is something to count.
+  int64_t outside = 0;
+  if (world.violations().boundary_errors > 0) {
+    try {
+      outside = bridge::VerifierCounts(bridge::ReadRunTrack(log_path), config_.world).robots_outside_boundaries;
+    } catch (const std::exception& e) {
+      spdlog::warn("{}: cannot re-count robots outside the arena ({}); using the steps with any", log_path, e.what());
+      outside = -1;
+    }
+  }
+  sim::RunJudgement judgement = sim::JudgeRun(config_, outcome, world, outside);
+  const ExperimentGoal goal = ExperimentGoal::Judge(*summary);
+  nlohmann::ordered_json goal_json = goal.Json();
+  // A run stopped by --steps at its limit was cut short on purpose: its goal is not judged.
+  const bool cut_short =
+      options_.steps_from_command_line && !goal.met && outcome.steps >= config_.sim.max_steps;
+  goal_json["judged"] = !cut_short && goal.has_criterion;
+  (*summary)["goal"] = goal_json;
+  if (!cut_short) {
+    if (const std::optional<sim::VerdictReason> reason = goal.Reason()) judgement.Add(*reason);
+  }
+  return judgement;
+}
+
+RunResult RunSession::Report(const Stepped& stepped, const std::string& dir) {
+  const std::string log_path = dir + "/" + kLogName;
+  const sim::RunOutcome& outcome = stepped.outcome;
+  const sim::World& world = *stepped.world;
+  std::ostream& report = *options_.report;
+  RunResult result;
+  result.outcome = outcome;
+  // Written whatever the outcome: after a failed run it says why, and the
+  // log keeps every whole event up to the failure.
+  const nlohmann::ordered_json metrics = Metrics(log_path);
+  if (metrics.contains("error")) {
+    // The run and its log stand; only the experiment's own numbers are missing.
+    spdlog::warn("{}: no experiment metrics: {}", log_path, metrics["error"].get<std::string>());
+  }
+  // The goal is judged on the summary (robots done, steps) with its metrics.
+  nlohmann::ordered_json summary = nlohmann::ordered_json::parse(sim::RunSummaryJson(config_, outcome, world, kLogName));
+  summary["metrics"] = metrics;
+  result.judgement = Judge(outcome, world, log_path, &summary);
+  const nlohmann::ordered_json goal = summary["goal"];
+  summary =
+      nlohmann::ordered_json::parse(sim::RunSummaryJson(config_, outcome, world, kLogName, result.judgement));
+  summary["metrics"] = metrics;
+  summary["goal"] = goal;
+  for (auto it = stepped.world_fields.begin(); it != stepped.world_fields.end(); ++it) summary[it.key()] = it.value();
+  try {
+    sim::WriteFileAtomically(dir + "/summary.json", summary.dump(2) + "\n");
+    result.summary_written = true;
+  } catch (const std::exception& e) {
+    // A full disk: say so once, and that the run's outputs are incomplete.
+    spdlog::error("{} ({} after {} steps; the run's outputs are incomplete)", e.what(), sim::EndName(outcome.end),
+                  outcome.steps);
+    return result;
+  }
+
+  const sim::RunJudgement& judgement = result.judgement;
+  spdlog::info("{} after {} steps ({:.1f} s simulated, {:.2f} s wall): {}", sim::EndName(outcome.end), outcome.steps,
+               world.time_s(), outcome.wall_time_s, outcome.reason);
+  report << judgement.Text();
+  if (goal.contains("judged") && goal["judged"] == false && goal["has_criterion"] == true) {
+    report << "goal: not judged, --steps " << config_.sim.max_steps << " stopped the run first ("
+           << goal["detail"].get<std::string>() << ")\n";
+  }
+  if (judgement.verdict() == sim::RunVerdict::kNotReady || judgement.reasons().size() > 1) {
+    report << "verdict: " << sim::RunVerdictName(judgement.verdict()) << " (summary.json verdict_reasons";
+    report << (judgement.verdict() >= sim::RunVerdict::kNotReady ? "; dream export refuses it" : "") << ")\n";
+  }
+  report << "log:     " << log_path << "\nsummary: " << dir + "/summary.json" << "\n";
+  if (outcome.steps > 0 || outcome.end == sim::RunOutcome::End::kFinished) {
+    const std::string picture_path = dir + "/trajectories.png";
+    result.picture_failed = !DrawPicture(log_path, picture_path, judgement.verdict());
+    if (!result.picture_failed) report << "picture: " << picture_path << "\n";
+  }
+  return result;
+}
+
+bool RunSession::DrawPicture(const std::string& log_path, const std::string& picture_path,
+                             sim::RunVerdict verdict) const {
+  try {
+    // With the config's goals, like `dream render` draws them.
+    sim::ArenaOverlays overlays = factory_ ? ArenaOverlaysFromConfig(config_, *factory_) : ArenaOverlaysFromConfig(config_);
+    overlays.run_name = config_.name;
+    overlays.verdict = sim::RunVerdictName(verdict);  // as summary.json says
+    sim::TrajectoryPicture::Render(sim::RunTrack::Read(log_path), overlays, picture_path, sim::RenderFormat::kPng,
+                                   1280);
+    return true;
+  } catch (const std::exception& e) {
+    spdlog::error("no trajectories.png: {}", e.what());
+    return false;
+  }
+}
+
+}  // namespace dream::session

@@ -1,0 +1,177 @@
+// RunSession: one run from its config to its outputs, on a memq bus with the
+// agents in this process (as dream run). The controller is the counting
+// plugin (counting_plugin.cc), so the test sees how many factories were built.
+#include <dlfcn.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "dream/agent_host/agent_host.h"
+#include "dream/config/run_config.h"
+#include "dream/lcm/lcm_bus.h"
+#include "dream/node/file_text.h"
+#include "dream/session/run_session.h"
+
+namespace dream::session {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+// A fresh folder per test, holding the config and the run folder "out".
+class RunSessionTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() / ("dream_run_session_test_" + std::to_string(::getpid()) + "_" + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_ / "out");
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // Two robots of the counting plugin's kind; `x_m` is robot 0's start.
+  std::string WriteConfig(double speed_mps, double x_m, int steps, double start_timeout_s = 10.0) {
+    std::ostringstream yaml;
+    yaml << "name: session_test\nseed: 3\nrobots: 2\nsteps: " << steps << "\nstop_when_done: false\n"
+         << "world: {mode: lockstep, start_timeout_s: " << start_timeout_s << "}\n"
+         << "plugins: [" << SESSION_TEST_PLUGIN_PATH << "]\n"
+         << "initial_poses:\n  - [" << x_m << ", 0.0, 0.0]\n  - [-1.0, 0.5, 0.0]\n"
+         << "controller: {kind: session_test_drive, speed_mps: " << speed_mps << "}\n";
+    const fs::path path = dir_ / "config.yaml";
+    std::ofstream(path) << yaml.str();
+    return path.string();
+  }
+
+  // How many factories the plugin's kind was built for, in this whole process.
+  static int FactoriesBuilt() {
+    void* plugin = dlopen(SESSION_TEST_PLUGIN_PATH, RTLD_NOW | RTLD_NOLOAD);
+    if (plugin == nullptr) return 0;  // not loaded: none built
+    const auto count = reinterpret_cast<int (*)()>(dlsym(plugin, "session_test_factories_built"));
+    const int built = count != nullptr ? count() : -1;
+    dlclose(plugin);
+    return built;
+  }
+
+  // Runs `session` with every robot's agent on the same memq bus (as dream run).
+  RunResult RunWithAgents(RunSession& session) {
+    lcm::LcmBus bus("memq://");
+    std::vector<std::unique_ptr<agents::RobotAgent>> robots;
+    for (int id = 0; id < session.config().num_robots; ++id) robots.push_back(session.factory()->Make(id));
+    agents::AgentHost host(bus, std::move(robots), 77);
+    return session.Run(bus, {out(), "the folder's config\n"});
+  }
+
+  std::string out() const { return (dir_ / "out").string(); }
+  nlohmann::json Summary() const { return nlohmann::json::parse(sim::ReadFileText(out() + "/summary.json")); }
+
+  fs::path dir_;
+  std::ostringstream report_;
+};
+
+TEST_F(RunSessionTest, WritesEveryOutputAndBuildsTheFactoryOnce) {
+  const int built_before = FactoriesBuilt();
+  RunSession::Options options;
+  options.report = &report_;
+  RunSession session(config::LoadRunConfigFile(WriteConfig(0.0, 1.0, 30)), options);
+  ASSERT_NE(session.factory(), nullptr) << session.factory_error();
+  const RunResult result = RunWithAgents(session);
+
+  // One factory for the agents, the metrics and the picture.
+  EXPECT_EQ(FactoriesBuilt() - built_before, 1);
+  EXPECT_EQ(result.outcome.end, sim::RunOutcome::End::kFinished);
+  EXPECT_EQ(result.outcome.steps, 30);
+  EXPECT_TRUE(result.summary_written);
+  EXPECT_FALSE(result.picture_failed);
+  EXPECT_EQ(result.judgement.verdict(), sim::RunVerdict::kClean);
+  EXPECT_EQ(sim::ReadFileText(out() + "/config.yaml"), "the folder's config\n");
+  EXPECT_GT(fs::file_size(out() + "/run.lcmlog"), 0u);
+  EXPECT_GT(fs::file_size(out() + "/trajectories.png"), 0u);
+  const nlohmann::json summary = Summary();
+  EXPECT_EQ(summary["steps"], 30);
+  EXPECT_EQ(summary["verdict"], "clean");
+  EXPECT_EQ(summary["metrics"]["kind"], "session_test_drive");
+  EXPECT_EQ(summary["goal"]["judged"], false);  // the kind has no goal of its own
+  EXPECT_THAT(report_.str(), HasSubstr("log:     " + out() + "/run.lcmlog"));
+  EXPECT_THAT(report_.str(), HasSubstr("picture: " + out() + "/trajectories.png"));
+  // Nothing left half written.
+  for (const auto& entry : fs::directory_iterator(out())) {
+    EXPECT_EQ(entry.path().extension() == ".part" || entry.path().string().find(".tmp") != std::string::npos, false)
+        << entry.path();
+  }
+}
+
+TEST_F(RunSessionTest, ARobotLeavingTheArenaIsRejectedAndCountedAsTheLabsVerifierWould) {
+  RunSession::Options options;
+  options.report = &report_;
+  // Robot 0 starts 0.1 m from the right wall and drives into it.
+  RunSession session(config::LoadRunConfigFile(WriteConfig(0.2, 1.5, 60)), options);
+  const RunResult result = RunWithAgents(session);
+  EXPECT_EQ(result.outcome.end, sim::RunOutcome::End::kFinished);
+  EXPECT_EQ(result.judgement.verdict(), sim::RunVerdict::kRejected);
+  EXPECT_TRUE(result.judgement.Has("boundary")) << result.judgement.Text();
+  const nlohmann::json summary = Summary();
+  EXPECT_EQ(summary["verdict"], "rejected");
+  EXPECT_THAT(report_.str(), HasSubstr(result.judgement.Text()));
+}
+
+TEST_F(RunSessionTest, ARunWithoutAgentsFailsWithASummaryAndNoPicture) {
+  RunSession::Options options;
+  options.report = &report_;
+  RunSession session(config::LoadRunConfigFile(WriteConfig(0.0, 1.0, 30, 0.2)), options);
+  lcm::LcmBus bus("memq://");
+  const RunResult result = session.Run(bus, {out(), "x\n"});
+  EXPECT_EQ(result.outcome.end, sim::RunOutcome::End::kStartTimeout);
+  EXPECT_EQ(result.outcome.steps, 0);
+  EXPECT_TRUE(result.summary_written);
+  EXPECT_FALSE(result.picture_failed);  // none was due
+  EXPECT_FALSE(fs::exists(out() + "/trajectories.png"));
+  EXPECT_TRUE(fs::exists(out() + "/run.lcmlog"));
+  EXPECT_EQ(Summary()["steps"], 0);
+}
+
+TEST_F(RunSessionTest, ASummaryThatCannotBeWrittenIsReportedAndNothingElseIsClaimed) {
+  // A folder where summary.json should go: the rename onto it fails.
+  fs::create_directories(fs::path(out()) / "summary.json" / "occupied");
+  RunSession::Options options;
+  options.report = &report_;
+  RunSession session(config::LoadRunConfigFile(WriteConfig(0.0, 1.0, 10)), options);
+  const RunResult result = RunWithAgents(session);
+  EXPECT_EQ(result.outcome.end, sim::RunOutcome::End::kFinished);
+  EXPECT_FALSE(result.summary_written);
+  EXPECT_EQ(report_.str(), "");  // no verdict, no paths: the outputs are incomplete
+  EXPECT_FALSE(fs::exists(out() + "/trajectories.png"));
+}
+
+TEST_F(RunSessionTest, AStopRequestEndsTheRunAsInterruptedWithItsOutputs) {
+  const std::atomic<bool> stop(true);
+  RunSession::Options options;
+  options.report = &report_;
+  options.stop = &stop;
+  RunSession session(config::LoadRunConfigFile(WriteConfig(0.0, 1.0, 30)), options);
+  const RunResult result = RunWithAgents(session);
+  EXPECT_EQ(result.outcome.end, sim::RunOutcome::End::kInterrupted);
+  EXPECT_TRUE(result.summary_written);
+  EXPECT_EQ(Summary()["end"], "interrupted");
+}
+
+TEST_F(RunSessionTest, AFactoryThatCannotBeBuiltIsRememberedNotThrown) {
+  const std::string path = WriteConfig(0.0, 1.0, 10);
+  std::ofstream(path, std::ios::app) << "# the kind below is unknown\n";
+  std::string text = sim::ReadFileText(path);
+  text.replace(text.find("session_test_drive"), std::string("session_test_drive").size(), "no_such_kind");
+  std::ofstream(path, std::ios::trunc) << text;
+  const RunSession session(config::LoadRunConfigFile(path));
+  EXPECT_EQ(session.factory(), nullptr);
+  EXPECT_THAT(session.factory_error(), HasSubstr("no_such_kind"));
+}
+
+}  // namespace
+}  // namespace dream::session
