@@ -200,7 +200,7 @@ void DeclareLogCommand(CommandLine& line) {
       "Channels and event counts of a log.\n"
       "Example: dream log info runs/go_to_goal/run.lcmlog",
       [info_path] { return RunLogInfo(*info_path); }, log);
-  info->add_option("log", *info_path, "LCM log file, or a run folder (its run.lcmlog)")->required();
+  AddRunLogArgument(info, "log", info_path.get());
 
   auto echo_args = std::make_shared<LogEchoArgs>();
   CLI::App* echo = line.AddCommand(
@@ -211,7 +211,7 @@ void DeclareLogCommand(CommandLine& line) {
       "event is reported there with its byte offset.\n"
       "Example: dream log echo runs/go_to_goal 'DREAM_CMD_.*' --limit 5",
       [echo_args] { return RunLogEcho(echo_args->log, echo_args->channel_regex, echo_args->limit); }, log);
-  echo->add_option("log", echo_args->log, "LCM log file, or a run folder (its run.lcmlog)")->required();
+  AddRunLogArgument(echo, "log", &echo_args->log);
   echo->add_option("channels", echo_args->channel_regex, "Regex of channels to print, e.g. DREAM_POSES or 'DREAM_CMD_.*'")
       ->required();
   echo->add_option("--limit", echo_args->limit, "Stop after this many messages (default: all)")->check(StepCount());

@@ -116,23 +116,23 @@ pid_t ProcessGroup::Start(const std::vector<std::string>& argv, const std::strin
   return pid;
 }
 
+int ProcessGroup::Reaped(pid_t pid, int status) {
+  running_.erase(std::remove(running_.begin(), running_.end(), pid), running_.end());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
 int ProcessGroup::Wait(pid_t pid) {
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
-  running_.erase(std::remove(running_.begin(), running_.end(), pid), running_.end());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return Reaped(pid, status);
 }
 
 int ProcessGroup::WaitFor(pid_t pid, double timeout_s) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
   while (std::chrono::steady_clock::now() < deadline) {
-    int status = 0;
-    const pid_t done = ::waitpid(pid, &status, WNOHANG);
-    if (done == pid) {
-      running_.erase(std::remove(running_.begin(), running_.end(), pid), running_.end());
-      return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    }
+    const int code = TryWait(pid);
+    if (code >= 0) return code;
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   return -1;
@@ -144,8 +144,15 @@ int ProcessGroup::TryWait(pid_t pid) {
   while ((done = ::waitpid(pid, &status, WNOHANG)) < 0 && errno == EINTR) {
   }
   if (done != pid) return -1;
-  running_.erase(std::remove(running_.begin(), running_.end(), pid), running_.end());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return Reaped(pid, status);
+}
+
+int ProcessGroup::WaitPassingOnStop(pid_t pid, const std::atomic<bool>& stop, int stop_signal) {
+  int code = -1;
+  while ((code = WaitFor(pid, 0.1)) < 0) {
+    if (stop.load()) SignalAll(stop_signal);
+  }
+  return code;
 }
 
 void ProcessGroup::SignalAll(int signal) {

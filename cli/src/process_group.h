@@ -2,6 +2,7 @@
 
 #include <sys/types.h>
 
+#include <atomic>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,10 @@ class ProcessGroup {
   int WaitFor(pid_t pid, double timeout_s);
   /// Its exit code if `pid` has ended, else -1 at once.
   int TryWait(pid_t pid);
+  /// Waits for `pid`; once `stop` is set (Ctrl-C), sends `stop_signal` to
+  /// every child still running, again every 0.1 s until `pid` ends, so that
+  /// the children end with this command. Returns `pid`'s exit code.
+  int WaitPassingOnStop(pid_t pid, const std::atomic<bool>& stop, int stop_signal);
   /// Sends `signal` to every child still running.
   void SignalAll(int signal);
 
@@ -45,6 +50,9 @@ class ProcessGroup {
   static void RequireDescriptors(int needed);
 
  private:
+  /// Forgets the ended `pid`; returns its exit code from waitpid's `status`.
+  int Reaped(pid_t pid, int status);
+
   std::vector<pid_t> running_;
 };
 

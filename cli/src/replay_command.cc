@@ -11,6 +11,7 @@
 #include "commands.h"
 #include "dream/lcm/lcm_url.h"
 #include "process_group.h"
+#include "shared_options.h"
 #include "shell_quoted.h"
 
 namespace dream::cli {
@@ -70,10 +71,7 @@ int RunReplay(const ReplayArgs& args) {
   ProcessGroup children;
   if (!spy.empty()) children.Start(spy);
   const pid_t player_pid = children.Start(player);
-  int code = -1;
-  while ((code = children.WaitFor(player_pid, 0.2)) < 0) {
-    if (StopFlag().load()) children.SignalAll(SIGTERM);
-  }
+  const int code = children.WaitPassingOnStop(player_pid, StopFlag(), SIGTERM);
   return code == 0 || StopFlag().load() ? kExitOk : kExitRunFailed;
 }
 
@@ -85,7 +83,7 @@ void DeclareReplayCommand(CommandLine& line) {
       "change the speed, mute channels. Watch it with dream spy, or any LCM tool, on the same URL.\n"
       "Example: dream replay runs/go_to_goal --spy",
       [args] { return RunReplay(*args); });
-  command->add_option("run", args->run, "A run folder (its run.lcmlog) or an .lcmlog file")->required();
+  AddRunLogArgument(command, "run", &args->run);
   command->add_option("--lcm-url", args->lcm_url,
                       "LCM URL to play on (default $LCM_DEFAULT_URL, else udpm://239.255.76.67:7667?ttl=0)");
   command->add_flag("--paused", args->paused, "Open the log paused at its start");

@@ -39,6 +39,10 @@ CLI::Validator SeedValue() {
       "INT>=0");
 }
 
+CLI::Option* AddRunLogArgument(CLI::App* command, const std::string& name, std::string* path) {
+  return command->add_option(name, *path, "A run folder (its run.lcmlog) or an .lcmlog file")->required();
+}
+
 void AddOverrideOptions(CLI::App* command, long long* seed, std::vector<std::string>* sets) {
   command->add_option("--seed", *seed, "Override the config's seed (initial poses and every noise source)")
       ->check(SeedValue());

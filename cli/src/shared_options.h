@@ -22,6 +22,10 @@ CLI::Validator Seconds(bool zero_allowed);
 /// 64-bit numbers), with a message that says so.
 CLI::Validator SeedValue();
 
+/// The required argument `name` of the commands that read one run's log
+/// (log info, log echo, replay, render): a run folder or an .lcmlog file.
+CLI::Option* AddRunLogArgument(CLI::App* command, const std::string& name, std::string* path);
+
 /// --seed N and --set KEY=VALUE (repeatable), which OverriddenConfig applies.
 void AddOverrideOptions(CLI::App* command, long long* seed, std::vector<std::string>* sets);
 

@@ -74,10 +74,7 @@ int RunSpy(const std::string& log_path, const std::string& lcm_url, bool print_c
     sleep(2);  // let lcm-spy subscribe before the first message is played
     children.Start(player);
   }
-  int code = -1;
-  while ((code = children.WaitFor(spy_pid, 0.2)) < 0) {
-    if (StopFlag().load()) children.SignalAll(SIGTERM);
-  }
+  const int code = children.WaitPassingOnStop(spy_pid, StopFlag(), SIGTERM);
   return code == 0 || StopFlag().load() ? kExitOk : kExitRunFailed;
 }
 
