@@ -4,7 +4,8 @@
 Reads the tracked Markdown files (git ls-files '*.md'; without git, every .md outside build
 folders) and takes each command line that invokes dream (`dream`, `./build/dream`,
 `$DREAM/build/dream`, `~/dream/bin/dream`, ...) from fenced code blocks, four-space indented
-blocks and inline code spans. For each it checks, against `dream [SUB [SUBSUB]] --help`:
+blocks and inline code spans; then the `Example:` lines of dream's own --help texts. For each
+it checks, against `dream [SUB [SUBSUB]] --help`:
 
 - the subcommand (and `log`'s sub-subcommand) exists;
 - every option it passes is one that subcommand (or dream itself: -q, -v) accepts;
@@ -170,13 +171,27 @@ class Cli:
         self.cache = {}
 
     def help(self, path):
+        return self.help_and_text(path)[0]
+
+    def help_and_text(self, path):
         if path not in self.cache:
             result = subprocess.run([self.dream, *path, "--help"], stdout=subprocess.PIPE,
                                     stderr=subprocess.STDOUT, text=True, timeout=30)
             check(result.returncode == 0, f"`dream {' '.join(path)} --help` exited {result.returncode}: "
                                           f"{result.stdout[-300:]}")
-            self.cache[path] = parse_help(result.stdout)
+            self.cache[path] = (parse_help(result.stdout), result.stdout)
         return self.cache[path]
+
+    def examples(self):
+        """The `Example: dream ...` lines of dream's own help, as Markdown blocks to check like the docs."""
+        texts = [self.help_and_text(())[1]]
+        subcommands, _ = self.help(())
+        for sub in sorted(subcommands):
+            nested, _ = self.help((sub,))
+            texts.append(self.help_and_text((sub,))[1])
+            texts += [self.help_and_text((sub, inner))[1] for inner in sorted(nested)]
+        lines = sorted({m for text in texts for m in re.findall(r"Example: (dream .*)", text)})
+        return "".join(f"```\n{line}\n```\n" for line in lines)
 
 
 def parse_help(text):
@@ -313,9 +328,15 @@ def test(context, args):
         all_problems += problems
     # The docs show well over a hundred dream commands; far fewer means the extraction broke.
     check(total >= 100, f"only {total} dream commands found in {len(files)} Markdown files")
+    # dream's own --help shows examples too: they must be commands it accepts.
+    count, problems = check_markdown(cli, source, "dream --help", cli.examples())
+    check(count >= 10, f"only {count} examples in dream's --help texts")
+    total += count
+    all_problems += problems
     check(not all_problems, f"{len(all_problems)} documented dream command(s) the command line refuses:\n"
           + "\n".join(all_problems))
-    print(f"{total} dream commands in {len(files)} Markdown files, every subcommand, option and path exists")
+    print(f"{total} dream commands in {len(files)} Markdown files and dream's --help examples: "
+          "every subcommand, option and path exists")
 
 
 if __name__ == "__main__":
