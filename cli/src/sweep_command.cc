@@ -4,7 +4,6 @@
 #include <spdlog/spdlog.h>
 
 #include <chrono>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -20,6 +19,7 @@
 #include "dream/node/output_folder_lock.h"
 #include "dream/config/run_config.h"
 #include "dream/node/atomic_file.h"
+#include "dream/world/printf_text.h"
 #include "parallel_runner.h"
 #include "process_group.h"
 #include "run_output.h"
@@ -95,11 +95,7 @@ nlohmann::json ReadSummary(const std::string& path) {
   }
 }
 
-std::string Seconds(double seconds) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.1f s", seconds);
-  return text;
-}
+std::string Seconds(double seconds) { return sim::PrintfText("%.1f s", seconds); }
 
 /// True when `dir` holds a sweep (its table, or its runs).
 bool HoldsSweep(const fs::path& dir) {

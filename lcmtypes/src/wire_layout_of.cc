@@ -22,12 +22,17 @@ constexpr int kDouble = 8;
 // rectangle_obstacle_t, nested without its fingerprint: id, then six doubles.
 constexpr int kRectangleObstacle = kInt32 + 6 * kDouble;
 
+// What every dream message starts with: its fingerprint, then utime, step and run_id.
+template <typename Message>
+WireLayout MessageStart() {
+  return WireLayout(Message::getHash()).Fixed(kInt64 + kInt64 + kInt64);
+}
+
 }  // namespace
 
 template <>
 const WireLayout& WireLayoutOf<applied_commands_t>() {
-  static const WireLayout layout = WireLayout(applied_commands_t::getHash())
-                                       .Fixed(kInt64 + kInt64 + kInt64)  // utime, step, run_id
+  static const WireLayout layout = MessageStart<applied_commands_t>()
                                        .Count(MessageLimits::kRobots)
                                        .Array(kInt64)   // applied_agent_id
                                        .Array(kDouble)  // commanded_v
@@ -38,17 +43,15 @@ const WireLayout& WireLayoutOf<applied_commands_t>() {
 
 template <>
 const WireLayout& WireLayoutOf<obstacles_t>() {
-  static const WireLayout layout = WireLayout(obstacles_t::getHash())
-                                       .Fixed(kInt64 + kInt64 + kInt64)  // utime, step, run_id
-                                       .Count(MessageLimits::kObstacles)
-                                       .Array(kRectangleObstacle);
+  static const WireLayout layout =
+      MessageStart<obstacles_t>().Count(MessageLimits::kObstacles).Array(kRectangleObstacle);
   return layout;
 }
 
 template <>
 const WireLayout& WireLayoutOf<radio_message_t>() {
-  static const WireLayout layout = WireLayout(radio_message_t::getHash())
-                                       .Fixed(kInt64 + kInt64 + kInt64 + kInt32)  // utime, step, run_id, sender_id
+  static const WireLayout layout = MessageStart<radio_message_t>()
+                                       .Fixed(kInt32)  // sender_id
                                        .AgentId()
                                        .Count(MessageLimits::kRadioPayloadBytes)
                                        .Array(kInt8);
@@ -57,8 +60,8 @@ const WireLayout& WireLayoutOf<radio_message_t>() {
 
 template <>
 const WireLayout& WireLayoutOf<robot_fault_t>() {
-  static const WireLayout layout = WireLayout(robot_fault_t::getHash())
-                                       .Fixed(kInt64 + kInt64 + kInt64 + kInt32)  // utime, step, run_id, robot_id
+  static const WireLayout layout = MessageStart<robot_fault_t>()
+                                       .Fixed(kInt32)  // robot_id
                                        .AgentId()
                                        .String(MessageLimits::kDetailBytes);
   return layout;
@@ -66,13 +69,12 @@ const WireLayout& WireLayoutOf<robot_fault_t>() {
 
 template <>
 const WireLayout& WireLayoutOf<robot_poses_t>() {
-  static const WireLayout layout = WireLayout(robot_poses_t::getHash())
-                                       .Fixed(kInt64 + kInt64 + kInt64)  // utime, step, run_id
+  static const WireLayout layout = MessageStart<robot_poses_t>()
                                        .Count(MessageLimits::kRobots)
-                                       .Array(kDouble)  // x
-                                       .Array(kDouble)  // y
-                                       .Array(kDouble)  // theta
-                                       .Array(kDouble)  // v
+                                       .Array(kDouble)   // x
+                                       .Array(kDouble)   // y
+                                       .Array(kDouble)   // theta
+                                       .Array(kDouble)   // v
                                        .Array(kDouble);  // w
   return layout;
 }
@@ -80,8 +82,8 @@ const WireLayout& WireLayoutOf<robot_poses_t>() {
 template <>
 const WireLayout& WireLayoutOf<run_status_t>() {
   static const WireLayout layout =
-      WireLayout(run_status_t::getHash())
-          .Fixed(kInt64 + kInt64 + kInt64 + kInt8 + kInt32)  // utime, step, run_id, state, num_robots
+      MessageStart<run_status_t>()
+          .Fixed(kInt8 + kInt32)  // state, num_robots
           // boundary, collision, actuator errors, obstacle collisions, rejected commands, conflicts
           .Fixed(6 * kInt64)
           .Count(MessageLimits::kRobots)
@@ -92,8 +94,8 @@ const WireLayout& WireLayoutOf<run_status_t>() {
 
 template <>
 const WireLayout& WireLayoutOf<velocity_command_t>() {
-  static const WireLayout layout = WireLayout(velocity_command_t::getHash())
-                                       .Fixed(kInt64 + kInt64 + kInt64 + kInt32)  // utime, step, run_id, robot_id
+  static const WireLayout layout = MessageStart<velocity_command_t>()
+                                       .Fixed(kInt32)  // robot_id
                                        .AgentId()
                                        .Fixed(kDouble + kDouble + kInt8);  // v, w, done
   return layout;

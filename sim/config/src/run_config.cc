@@ -1,11 +1,11 @@
 #include "dream/config/run_config.h"
 
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 
 #include "dream/world/initial_pose_generator.h"
+#include "dream/world/printf_text.h"
 #include "dream/world/robotarium_constants.h"
 #include "dream/world/start_pose_obstacle_check.h"
 
@@ -34,18 +34,10 @@ bool ClearOfTheWalls(const sim::Arena& arena, const sim::Pose2& pose) {
            pose.y_m > arena.y_max_m - m);
 }
 
-std::string Format(double value) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.3f", value);
-  return text;
-}
+std::string Format(double value) { return sim::PrintfText("%.3f", value); }
 
 // For constants with more digits than millimetres (the 0.0675 m radius).
-std::string FormatExact(double value) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%g", value);
-  return text;
-}
+std::string FormatExact(double value) { return sim::PrintfText("%g", value); }
 
 sim::SimNodeOptions ReadSimOptions(const ConfigNode& root) {
   sim::SimNodeOptions options;
@@ -100,7 +92,8 @@ sim::RealismParams ReadRealism(const ConfigNode& root) {
   if (!node.IsDefined()) return sim::RealismParams::Ideal();
   if (!node.IsMap()) return RealismPreset(node);
   node.RejectUnknownKeys({"preset", "pose_noise_m", "pose_noise_rad", "pose_quantum_m", "pose_quantum_rad",
-                          "pose_delay_steps", "tracking_dropout_probability", "command_latency_steps",
+                          "pose_delay_steps", "tracking_dropout_probability", "tracking_dropout_mean_steps",
+                          "tracker_drop_s", "command_latency_steps",
                           "command_brake_s", "dead_zone_v_mps", "dead_zone_w_radps", "wheel_accel_limit_radps2",
                           "axle_length_m"});
   sim::RealismParams params =
@@ -128,6 +121,8 @@ sim::RealismParams ReadRealism(const ConfigNode& root) {
   number("pose_quantum_rad", &params.pose_quantum_rad);
   steps("pose_delay_steps", &params.pose_delay_steps);
   number("tracking_dropout_probability", &params.tracking_dropout_probability);
+  number("tracking_dropout_mean_steps", &params.tracking_dropout_mean_steps);
+  number("tracker_drop_s", &params.tracker_drop_s);
   steps("command_latency_steps", &params.command_latency_steps);
   number("command_brake_s", &params.command_brake_s);
   number("dead_zone_v_mps", &params.dead_zone_v_mps);

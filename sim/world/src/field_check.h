@@ -1,18 +1,15 @@
 #pragma once
 
 #include <cmath>
-#include <cstdio>
 #include <string>
+
+#include "dream/world/printf_text.h"
 
 namespace dream::sim::field_check {
 
 // Shared wording for IsValid messages: "<field> = <value> ...; allowed: <range>".
 
-inline std::string FormatValue(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof(buffer), "%.10g", value);
-  return buffer;
-}
+inline std::string FormatValue(double value) { return PrintfText("%.10g", value); }
 
 // Writes the message (if error is not null) and returns false, so callers can
 // `return Fail(...)`.
@@ -29,5 +26,6 @@ inline bool FailWithText(std::string* error, const std::string& message) {
 }
 
 inline bool IsPositiveFinite(double value) { return std::isfinite(value) && value > 0.0; }
+inline bool IsNonNegativeFinite(double value) { return std::isfinite(value) && value >= 0.0; }
 
 }  // namespace dream::sim::field_check

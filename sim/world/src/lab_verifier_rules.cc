@@ -1,21 +1,11 @@
 #include "dream/world/lab_verifier_rules.h"
 
-#include <cstdio>
+#include "dream/world/printf_text.h"
 
 namespace dream::sim {
 namespace {
 
-std::string Seconds(double seconds) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.2f s", seconds);
-  return text;
-}
-
-std::string Factor(double factor) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%g", factor);
-  return text;
-}
+std::string Seconds(double seconds) { return PrintfText("%.2f s", seconds); }
 
 }  // namespace
 
@@ -46,7 +36,7 @@ std::vector<VerdictReason> LabVerifierRules::Check(const Declaration& declared, 
   if (run_s > duration_factor * declared.duration_s) {
     reasons.push_back({"verifier_duration", RunVerdict::kRejected,
                        std::to_string(counts.iterations) + " iterations take " + Seconds(run_s) + ", over " +
-                           Factor(duration_factor) + " x the declared " +
+                           PrintfText("%g", duration_factor) + " x the declared " +
                            Seconds(declared.duration_s) + "; the lab's verifier stops such a run",
                        "declare the duration UPLOAD.txt gives"});
   }

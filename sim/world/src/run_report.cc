@@ -4,22 +4,9 @@
 #include <cinttypes>
 #include <cstdio>
 
+#include "dream/world/printf_text.h"
+
 namespace dream::sim {
-namespace {
-
-// printf into a std::string; the wording below copies debug() in
-// rps/robotarium.py, and "%.2f" / "%.0f" round like Python's format specs.
-template <typename... Args>
-std::string Format(const char* format, Args... args) {
-  const int size = std::snprintf(nullptr, 0, format, args...);
-  std::string text(static_cast<std::size_t>(size) + 1, '\0');
-  std::snprintf(text.data(), text.size(), format, args...);
-  text.resize(static_cast<std::size_t>(size));
-  return text;
-}
-
-}  // namespace
-
 RunReport RunReport::FromViolations(int64_t iterations, const ViolationCounts& violations,
                                     double time_step_s) {
   RunReport report;
@@ -36,8 +23,10 @@ RunReport RunReport::FromViolations(int64_t iterations, const ViolationCounts& v
   return report;
 }
 
+// The wording copies debug() in rps/robotarium.py, and "%.2f" / "%.0f" round
+// like Python's format specs.
 std::string RunReport::Text() const {
-  std::string text = Format("Your simulation took approximately %.2f real seconds to execute.\n\n",
+  std::string text = PrintfText("Your simulation took approximately %.2f real seconds to execute.\n\n",
                             estimated_duration_s);
   switch (verdict) {
     case RunVerdict::kNotReady:  // never from counts alone (FromViolations); RunJudgement words it
@@ -48,7 +37,7 @@ std::string RunReport::Text() const {
       const double percent = static_cast<double>(100 * violations.actuator_errors) /
                              static_cast<double>(std::max<int64_t>(iterations, 1));
       text += "No hard errors detected, your script will run on the Robotarium!\n\n";
-      text += Format("WARNING: %" PRId64 " out of %" PRId64
+      text += PrintfText("WARNING: %" PRId64 " out of %" PRId64
                      " (~%.0f%%) timesteps had velocity command(s) exceed actuator limits.\n",
                      violations.actuator_errors, iterations, percent);
       text +=
@@ -61,16 +50,16 @@ std::string RunReport::Text() const {
       text += "Errors:\n";
       // The official wording says "time steps" although it counts pairs.
       if (violations.collision_errors > 0) {
-        text += Format("\t Simulation had %" PRId64
+        text += PrintfText("\t Simulation had %" PRId64
                        " time steps where robots were too close (potential collision).\n",
                        violations.collision_errors);
       }
       if (violations.boundary_errors > 0) {
-        text += Format("\t Simulation had %" PRId64 " time steps where robots were outside boundaries.\n",
+        text += PrintfText("\t Simulation had %" PRId64 " time steps where robots were outside boundaries.\n",
                        violations.boundary_errors);
       }
       if (violations.obstacle_collisions > 0) {
-        text += Format("\t Simulation had %" PRId64
+        text += PrintfText("\t Simulation had %" PRId64
                        " robot-obstacle overlaps (robots touching virtual obstacles).\n",
                        violations.obstacle_collisions);
       }
