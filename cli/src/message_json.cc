@@ -16,9 +16,17 @@
 namespace dream::cli {
 namespace {
 
+// What every dream message starts with (utime, step, run_id), then `fields` in their order.
+template <typename Message>
+nlohmann::ordered_json WithMessageStart(const Message& m, const nlohmann::ordered_json& fields) {
+  nlohmann::ordered_json json = {{"utime", m.utime}, {"step", m.step}, {"run_id", lcm::RunIdText(m.run_id)}};
+  for (const auto& [key, value] : fields.items()) json[key] = value;
+  return json;
+}
+
 nlohmann::ordered_json ToJson(const robot_poses_t& m) {
-  return {{"utime", m.utime}, {"step", m.step}, {"run_id", lcm::RunIdText(m.run_id)}, {"num_robots", m.num_robots}, {"x", m.x}, {"y", m.y},
-          {"theta", m.theta}, {"v", m.v},       {"w", m.w}};
+  return WithMessageStart(
+      m, {{"num_robots", m.num_robots}, {"x", m.x}, {"y", m.y}, {"theta", m.theta}, {"v", m.v}, {"w", m.w}});
 }
 
 nlohmann::ordered_json ToJson(const obstacles_t& m) {
@@ -27,29 +35,26 @@ nlohmann::ordered_json ToJson(const obstacles_t& m) {
     obstacles.push_back({{"id", o.id}, {"center_x", o.center_x}, {"center_y", o.center_y}, {"width", o.width},
                          {"height", o.height}, {"vx", o.vx}, {"vy", o.vy}});
   }
-  return {{"utime", m.utime}, {"step", m.step}, {"run_id", lcm::RunIdText(m.run_id)}, {"num_obstacles", m.num_obstacles}, {"obstacles", obstacles}};
+  return WithMessageStart(m, {{"num_obstacles", m.num_obstacles}, {"obstacles", obstacles}});
 }
 
 nlohmann::ordered_json ToJson(const run_status_t& m) {
-  return {{"utime", m.utime},
-          {"step", m.step},
-          {"run_id", lcm::RunIdText(m.run_id)},
-          {"state", m.state},
-          {"num_robots", m.num_robots},
-          {"boundary_errors", m.boundary_errors},
-          {"collision_errors", m.collision_errors},
-          {"actuator_errors", m.actuator_errors},
-          {"obstacle_collisions", m.obstacle_collisions},
-          {"rejected_commands", m.rejected_commands},
-          {"command_conflicts", m.command_conflicts},
-          {"num_lost", m.num_lost},
-          {"lost_robot_ids", m.lost_robot_ids},
-          {"detail", m.detail}};
+  return WithMessageStart(m, {{"state", m.state},
+                              {"num_robots", m.num_robots},
+                              {"boundary_errors", m.boundary_errors},
+                              {"collision_errors", m.collision_errors},
+                              {"actuator_errors", m.actuator_errors},
+                              {"obstacle_collisions", m.obstacle_collisions},
+                              {"rejected_commands", m.rejected_commands},
+                              {"command_conflicts", m.command_conflicts},
+                              {"num_lost", m.num_lost},
+                              {"lost_robot_ids", m.lost_robot_ids},
+                              {"detail", m.detail}});
 }
 
 nlohmann::ordered_json ToJson(const velocity_command_t& m) {
-  return {{"utime", m.utime}, {"step", m.step}, {"run_id", lcm::RunIdText(m.run_id)}, {"robot_id", m.robot_id},
-          {"agent_id", m.agent_id}, {"v", m.v},         {"w", m.w},       {"done", m.done != 0}};
+  return WithMessageStart(
+      m, {{"robot_id", m.robot_id}, {"agent_id", m.agent_id}, {"v", m.v}, {"w", m.w}, {"done", m.done != 0}});
 }
 
 std::string Hex(const std::vector<uint8_t>& bytes) {
@@ -64,24 +69,22 @@ std::string Hex(const std::vector<uint8_t>& bytes) {
 }
 
 nlohmann::ordered_json ToJson(const radio_message_t& m) {
-  return {{"utime", m.utime},         {"step", m.step},  {"run_id", lcm::RunIdText(m.run_id)}, {"sender_id", m.sender_id},
-          {"agent_id", m.agent_id},   {"payload_size", m.payload_size}, {"payload", Hex(m.payload)}};
+  return WithMessageStart(m, {{"sender_id", m.sender_id},
+                              {"agent_id", m.agent_id},
+                              {"payload_size", m.payload_size},
+                              {"payload", Hex(m.payload)}});
 }
 
 nlohmann::ordered_json ToJson(const robot_fault_t& m) {
-  return {{"utime", m.utime}, {"step", m.step}, {"run_id", lcm::RunIdText(m.run_id)}, {"robot_id", m.robot_id},
-          {"agent_id", m.agent_id}, {"detail", m.detail}};
+  return WithMessageStart(m, {{"robot_id", m.robot_id}, {"agent_id", m.agent_id}, {"detail", m.detail}});
 }
 
 nlohmann::ordered_json ToJson(const applied_commands_t& m) {
-  return {{"utime", m.utime},
-          {"step", m.step},
-          {"run_id", lcm::RunIdText(m.run_id)},
-          {"num_robots", m.num_robots},
-          {"applied_agent_id", m.applied_agent_id},
-          {"commanded_v", m.commanded_v},
-          {"commanded_w", m.commanded_w},
-          {"conflicts", m.conflicts}};
+  return WithMessageStart(m, {{"num_robots", m.num_robots},
+                              {"applied_agent_id", m.applied_agent_id},
+                              {"commanded_v", m.commanded_v},
+                              {"commanded_w", m.commanded_w},
+                              {"conflicts", m.conflicts}});
 }
 
 int64_t Fingerprint(const std::vector<uint8_t>& data) {

@@ -1,7 +1,5 @@
 #include "overridden_config.h"
 
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 #include "config_override.h"
@@ -13,11 +11,7 @@ namespace dream::cli {
 
 OverriddenConfig::OverriddenConfig(const std::string& path, long long seed, const std::vector<std::string>& sets)
     : path_(path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw config::ConfigError(path + ": cannot open the config file (does it exist and is it readable?)");
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  text_ = bytes.str();
+  text_ = config::ConfigNode::ReadFile(path);
   if (seed < 0 && sets.empty()) return;  // Load() reads the file as it always has
 
   // The config's own parser: a duplicate key or a second document is refused
@@ -49,11 +43,7 @@ config::ConfigNode OverriddenConfig::Document() const {
 }
 
 config::ControllerConfig OverriddenConfig::LoadController() const {
-  try {
-    return config::LoadControllerConfig(Document());
-  } catch (const config::ConfigError& e) {
-    throw config::ConfigError(Noted(e.what()));
-  }
+  return LoadWith(&config::LoadControllerConfig);
 }
 
 std::string OverriddenConfig::Noted(const std::string& message) const {

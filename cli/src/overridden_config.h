@@ -56,6 +56,16 @@ class OverriddenConfig {
   std::string Noted(const std::string& message) const;
 
  private:
+  /// `load(Document())`, its ConfigError's message Noted.
+  template <typename Config>
+  Config LoadWith(Config (*load)(const config::ConfigNode&)) const {
+    try {
+      return load(Document());
+    } catch (const config::ConfigError& e) {
+      throw config::ConfigError(Noted(e.what()));
+    }
+  }
+
   std::string path_;
   std::string text_;                    // the file's bytes
   YAML::Node root_;                     // the file with the overrides applied

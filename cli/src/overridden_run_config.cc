@@ -9,12 +9,8 @@
 namespace dream::cli {
 
 config::RunConfig OverriddenConfig::Load() const {
-  try {
-    // Overrides are checked in memory: an overridden value keeps its key's line in the file.
-    return config::LoadRunConfig(Document());
-  } catch (const config::ConfigError& e) {
-    throw config::ConfigError(Noted(e.what()));
-  }
+  // Overrides are checked in memory: an overridden value keeps its key's line in the file.
+  return LoadWith(&config::LoadRunConfig);
 }
 
 std::string OverriddenConfig::FolderText(const config::RunConfig& config) const {

@@ -38,14 +38,6 @@ using Clock = std::chrono::steady_clock;
 /// A stopped run gets this long to write its log and summary before SIGKILL.
 constexpr double kGraceAfterInterruptS = 10.0;
 
-std::string ReadBaseConfig(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw config::ConfigError(path + ": cannot open the config file (does it exist and is it readable?)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 /// A python controller's module named by its absolute path (resolved from the
 /// base config's folder, as `dream run` resolves it): each run's config lives
 /// in its own folder, where a relative path would not lead to the module.
@@ -132,7 +124,7 @@ std::string ReproducingCommand(const SweepArgs& args, const std::string& seeds, 
 
 int RunSweep(const SweepArgs& args) {
   // --- everything checked before anything is written or started ---
-  const std::string base_text = ReadBaseConfig(args.config_path);
+  const std::string base_text = config::ConfigNode::ReadFile(args.config_path);
   RunArgs base_args;
   base_args.config_path = args.config_path;
   base_args.steps = args.steps;

@@ -146,14 +146,14 @@ class TreeCheck {
 
 }  // namespace
 
-ConfigNode ConfigNode::LoadFile(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) {
-    throw ConfigError(path + ": cannot open the config file (does it exist and is it readable?)");
-  }
-  std::stringstream text;
+ConfigNode ConfigNode::LoadFile(const std::string& path) { return LoadString(ReadFile(path), path); }
+
+std::string ConfigNode::ReadFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ConfigError(path + ": cannot open the config file (does it exist and is it readable?)");
+  std::ostringstream text;
   text << in.rdbuf();
-  return LoadString(text.str(), path);
+  return text.str();
 }
 
 YAML::Node ConfigNode::ParseYaml(const std::string& text, const std::string& source_name) {

@@ -16,6 +16,9 @@ class ConfigNode {
  public:
   /// Parses `path`. @throws ConfigError when the file is missing or not YAML.
   static ConfigNode LoadFile(const std::string& path);
+  /// The bytes of the config file `path`, unparsed (for those that edit or
+  /// copy it). @throws ConfigError naming it when it cannot be read.
+  static std::string ReadFile(const std::string& path);
   /// Parses `text` as if it came from `source_name` (tests, embedded configs).
   static ConfigNode LoadString(const std::string& text, const std::string& source_name);
   /// The YAML tree of `text`, refusing what yaml-cpp accepts without a word:
