@@ -1,5 +1,6 @@
 #include "dream/bridge/mat_file.h"
 
+#include <dlfcn.h>
 #include <matio.h>
 
 #include <algorithm>
@@ -9,10 +10,57 @@
 #include <memory>
 #include <mutex>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 namespace dream::bridge {
 namespace {
+
+// libmatio, loaded the first time a .mat file is read or written: linked,
+// it and what it needs (HDF5, curl, GnuTLS, Kerberos, LDAP: some 40
+// libraries, all bound at start-up) would add ~7 ms to every dream command.
+struct Matio {
+  decltype(&::Mat_LogInitFunc) LogInitFunc;
+  decltype(&::Mat_Open) Open;
+  decltype(&::Mat_CreateVer) CreateVer;
+  decltype(&::Mat_Close) Close;
+  decltype(&::Mat_GetVersion) GetVersion;
+  decltype(&::Mat_VarReadInfo) VarReadInfo;
+  decltype(&::Mat_VarReadDataLinear) VarReadDataLinear;
+  decltype(&::Mat_VarCreate) VarCreate;
+  decltype(&::Mat_VarWrite) VarWrite;
+  decltype(&::Mat_VarFree) VarFree;
+
+  /// @throws std::runtime_error naming the library when it cannot be loaded.
+  static const Matio& Get() {
+    static const Matio matio = Load();
+    return matio;
+  }
+
+ private:
+  static Matio Load() {
+    void* library = dlopen(DREAM_MATIO_SONAME, RTLD_NOW | RTLD_LOCAL);
+    if (library == nullptr) {
+      throw std::runtime_error(std::string("cannot load ") + DREAM_MATIO_SONAME + " for .mat files: " + dlerror());
+    }
+    auto symbol = [library](auto& function, const char* name) {
+      function = reinterpret_cast<std::remove_reference_t<decltype(function)>>(dlsym(library, name));
+      if (function == nullptr) throw std::runtime_error(std::string(DREAM_MATIO_SONAME) + " has no " + name);
+    };
+    Matio matio{};
+    symbol(matio.LogInitFunc, "Mat_LogInitFunc");
+    symbol(matio.Open, "Mat_Open");
+    symbol(matio.CreateVer, "Mat_CreateVer");
+    symbol(matio.Close, "Mat_Close");
+    symbol(matio.GetVersion, "Mat_GetVersion");
+    symbol(matio.VarReadInfo, "Mat_VarReadInfo");
+    symbol(matio.VarReadDataLinear, "Mat_VarReadDataLinear");
+    symbol(matio.VarCreate, "Mat_VarCreate");
+    symbol(matio.VarWrite, "Mat_VarWrite");
+    symbol(matio.VarFree, "Mat_VarFree");
+    return matio;  // the library stays loaded for the process
+  }
+};
 
 // libmatio reports problems through one process-wide log function; keep its
 // last message (instead of printing it) so errors can name it.
@@ -22,14 +70,14 @@ void CaptureMatioLog(int /*log_level*/, char* message) { last_matio_message = me
 
 void InstallMatioLog() {
   static std::once_flag once;
-  std::call_once(once, [] { Mat_LogInitFunc("dream", CaptureMatioLog); });
+  std::call_once(once, [] { Matio::Get().LogInitFunc("dream", CaptureMatioLog); });
 }
 
 struct MatCloser {
-  void operator()(mat_t* mat) const { Mat_Close(mat); }
+  void operator()(mat_t* mat) const { Matio::Get().Close(mat); }
 };
 struct VarFreer {
-  void operator()(matvar_t* var) const { Mat_VarFree(var); }
+  void operator()(matvar_t* var) const { Matio::Get().VarFree(var); }
 };
 
 /// libmatio's last message; of an HDF5 error stack (v7.3 files) only its last
@@ -215,9 +263,9 @@ NpyArray ReadMatMatrix(const std::string& path, const std::string& variable, int
     }
     if (IsMat5(bytes)) Mat5Layout(path, bytes).Check(variable);
   }
-  std::unique_ptr<mat_t, MatCloser> mat(Mat_Open(path.c_str(), MAT_ACC_RDONLY));
+  std::unique_ptr<mat_t, MatCloser> mat(Matio::Get().Open(path.c_str(), MAT_ACC_RDONLY));
   if (!mat) fail("cannot open it as a MATLAB .mat file");
-  std::unique_ptr<matvar_t, VarFreer> var(Mat_VarReadInfo(mat.get(), variable.c_str()));
+  std::unique_ptr<matvar_t, VarFreer> var(Matio::Get().VarReadInfo(mat.get(), variable.c_str()));
   if (!var && !last_matio_message.empty()) fail("cannot read variable '" + variable + "' (damaged or cut short?)");
   if (!var) fail("has no variable '" + variable + "'; save the result array under that name");
   if (var->rank != 2 || var->isComplex || var->class_type != MAT_C_DOUBLE || var->isLogical) {
@@ -237,7 +285,7 @@ NpyArray ReadMatMatrix(const std::string& path, const std::string& variable, int
   }
   // A value takes a byte of the file at least (MATLAB may store doubles as
   // smaller integers); zlib packs at most about 1032 bytes into one.
-  const bool compressed = var->compression == MAT_COMPRESSION_ZLIB || Mat_GetVersion(mat.get()) == MAT_FT_MAT73;
+  const bool compressed = var->compression == MAT_COMPRESSION_ZLIB || Matio::Get().GetVersion(mat.get()) == MAT_FT_MAT73;
   const uint64_t holdable = compressed ? file_size * 1032 / sizeof(double) : file_size;
   if (count > holdable) {
     fail(declared + ", but the file's " + std::to_string(file_size) + " bytes cannot hold " + std::to_string(count) +
@@ -249,8 +297,8 @@ NpyArray ReadMatMatrix(const std::string& path, const std::string& variable, int
   std::vector<double> first(count, 1.0e300);
   std::vector<double> second(count, -2.0e-300);
   const int edge = static_cast<int>(count);
-  if (count > 0 && (Mat_VarReadDataLinear(mat.get(), var.get(), first.data(), 0, 1, edge) != 0 ||
-                    Mat_VarReadDataLinear(mat.get(), var.get(), second.data(), 0, 1, edge) != 0 ||
+  if (count > 0 && (Matio::Get().VarReadDataLinear(mat.get(), var.get(), first.data(), 0, 1, edge) != 0 ||
+                    Matio::Get().VarReadDataLinear(mat.get(), var.get(), second.data(), 0, 1, edge) != 0 ||
                     std::memcmp(first.data(), second.data(), count * sizeof(double)) != 0)) {
     fail("cannot read the " + std::to_string(rows) + " x " + std::to_string(columns) + " values of variable '" +
          variable + "' (damaged or cut short?)");
@@ -274,12 +322,12 @@ void WriteMatMatrix(const std::string& path, const std::string& variable, const 
   for (size_t r = 0; r < rows; ++r) {
     for (size_t c = 0; c < columns; ++c) column_major[c * rows + r] = array.values[r * columns + c];
   }
-  std::unique_ptr<mat_t, MatCloser> mat(Mat_CreateVer(path.c_str(), nullptr, v73 ? MAT_FT_MAT73 : MAT_FT_MAT5));
+  std::unique_ptr<mat_t, MatCloser> mat(Matio::Get().CreateVer(path.c_str(), nullptr, v73 ? MAT_FT_MAT73 : MAT_FT_MAT5));
   if (!mat) throw std::runtime_error(path + ": cannot create the .mat file" + MatioDetail());
   size_t dims[2] = {rows, columns};
   std::unique_ptr<matvar_t, VarFreer> var(
-      Mat_VarCreate(variable.c_str(), MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, column_major.data(), MAT_F_DONT_COPY_DATA));
-  if (!var || Mat_VarWrite(mat.get(), var.get(), MAT_COMPRESSION_NONE) != 0) {
+      Matio::Get().VarCreate(variable.c_str(), MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, column_major.data(), MAT_F_DONT_COPY_DATA));
+  if (!var || Matio::Get().VarWrite(mat.get(), var.get(), MAT_COMPRESSION_NONE) != 0) {
     throw std::runtime_error(path + ": cannot write variable '" + variable + "'" + MatioDetail());
   }
 }
