@@ -20,14 +20,9 @@ namespace {
 
 using Payloads = std::map<std::string, std::vector<std::vector<uint8_t>>>;
 
-/// The log of `path`: the file itself, or run.lcmlog in a run folder.
-std::string LogFileOf(const std::string& path) {
-  return std::filesystem::is_directory(path) ? (std::filesystem::path(path) / "run.lcmlog").string() : path;
-}
-
 Payloads PayloadsByChannel(const std::string& path, const std::regex& channels) {
   Payloads payloads;
-  for (lcm::LogRecord& record : lcm::LogReader::ReadAll(LogFileOf(path))) {
+  for (lcm::LogRecord& record : lcm::LogReader::ReadAll(RunLogPath(path))) {
     if (!std::regex_match(record.channel, channels)) continue;
     lcm::ClearRunId(&record.data);  // every run has its own id; the rest must match
     payloads[record.channel].push_back(std::move(record.data));
@@ -67,7 +62,7 @@ struct LogDiffArgs {
 }  // namespace
 
 int RunLogInfo(const std::string& path_given) {
-  const std::string path = LogFileOf(path_given);
+  const std::string path = RunLogPath(path_given);
   struct ChannelStats {
     long events = 0;
     long bytes = 0;
@@ -131,7 +126,7 @@ int RunLogDiff(const std::string& a, const std::string& b, const std::string& ch
 }
 
 int RunLogEcho(const std::string& path_given, const std::string& channel_regex, long long limit) {
-  const std::string path = LogFileOf(path_given);
+  const std::string path = RunLogPath(path_given);
   std::regex channels;
   try {
     channels = std::regex(channel_regex);

@@ -25,15 +25,7 @@ constexpr unsigned char kLcmLogSyncWord[4] = {0xED, 0xA1, 0xDA, 0x01};
 /// The log to play: `run` itself, or run.lcmlog inside a run folder.
 /// @throws std::runtime_error naming the path when it is missing, empty or not an LCM log.
 std::string LogToReplay(const std::string& run) {
-  std::error_code error;
-  if (!fs::exists(run, error)) {
-    throw std::runtime_error(run + ": no such file or folder; give a run folder (runs/<name>) or its run.lcmlog");
-  }
-  const std::string log = fs::is_directory(run, error) ? (fs::path(run) / "run.lcmlog").string() : run;
-  if (!fs::is_regular_file(log, error)) {
-    throw std::runtime_error(log + " is missing: " + run + " is not a run folder written by dream run (or its log "
-                             "was not finished: a run.lcmlog.part is renamed when the run ends)");
-  }
+  const std::string log = RunLogPath(run);
   std::ifstream in(log, std::ios::binary);
   unsigned char head[4] = {0, 0, 0, 0};
   if (!in.read(reinterpret_cast<char*>(head), sizeof(head))) {

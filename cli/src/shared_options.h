@@ -26,6 +26,11 @@ CLI::Validator SeedValue();
 /// (log info, log echo, replay, render): a run folder or an .lcmlog file.
 CLI::Option* AddRunLogArgument(CLI::App* command, const std::string& name, std::string* path);
 
+/// The log that argument names: `run_or_log` itself, or run.lcmlog inside a
+/// run folder. @throws std::runtime_error naming the path when it does not
+/// exist or a folder holds no run.lcmlog (a run still going has only its .part).
+std::string RunLogPath(const std::string& run_or_log);
+
 /// --seed N and --set KEY=VALUE (repeatable), which OverriddenConfig applies.
 void AddOverrideOptions(CLI::App* command, long long* seed, std::vector<std::string>* sets);
 
