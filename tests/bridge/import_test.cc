@@ -7,7 +7,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <cstdio>
 #include <limits>
 #include <optional>
 
@@ -19,6 +18,7 @@
 #include "dream/bridge/submission_format.h"
 #include "dream/lcm/log_reader.h"
 #include "dream/run_status_t.hpp"
+#include "dream/world/printf_text.h"
 #include "dream/world/robotarium_constants.h"
 
 namespace dream::bridge {
@@ -136,11 +136,7 @@ TEST_F(ImportTest, SettleRowsAreSkippedAndClockJumpsHeld) {
 // The lab verifier's rules on an imported run, against what was declared:
 // UPLOAD.txt's values by default, or what the user says was declared.
 
-std::string Seconds(double seconds) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.2f s", seconds);
-  return text;
-}
+std::string Seconds(double seconds) { return sim::PrintfText("%.2f s", seconds); }
 
 /// `rows` with `count` settle rows in front (copies of the first rows).
 NpyArray WithSettleRows(NpyArray rows, int count) {

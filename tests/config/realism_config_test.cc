@@ -52,6 +52,34 @@ TEST(RealismConfigTest, MapStartsFromItsPresetOrIdeal) {
   EXPECT_FALSE(noise_only.IsIdeal());
 }
 
+TEST(RealismConfigTest, TrackerDropAndDropoutBurstsAreRead) {
+  EXPECT_EQ(sim::RealismParams::Lab().tracker_drop_s, 5.0);
+  EXPECT_EQ(sim::RealismParams::Ideal().tracker_drop_s, 0.0);
+  const sim::RealismParams read =
+      Load(ConfigWith("  realism:\n    preset: lab\n    tracker_drop_s: 2.5\n    tracking_dropout_mean_steps: 30\n"))
+          .realism;
+  sim::RealismParams expected = sim::RealismParams::Lab();
+  expected.tracker_drop_s = 2.5;
+  expected.tracking_dropout_mean_steps = 30.0;
+  EXPECT_EQ(read, expected);
+  EXPECT_NE(read, sim::RealismParams::Lab());
+  EXPECT_FALSE(Load(ConfigWith("  realism: {tracker_drop_s: 1}\n")).realism.IsIdeal());
+
+  const std::string negative = ErrorOf(ConfigWith("  realism:\n    preset: lab\n    tracker_drop_s: -5\n"));
+  EXPECT_NE(negative.find("test.yaml:10"), std::string::npos) << negative;
+  EXPECT_NE(negative.find("tracker_drop_s = -5 is out of range"), std::string::npos) << negative;
+  EXPECT_NE(negative.find(">= 0 s"), std::string::npos) << negative;
+
+  const std::string short_burst = ErrorOf(ConfigWith("  realism:\n    tracking_dropout_mean_steps: 0\n"));
+  EXPECT_NE(short_burst.find("test.yaml:9"), std::string::npos) << short_burst;
+  EXPECT_NE(short_burst.find("tracking_dropout_mean_steps"), std::string::npos) << short_burst;
+  EXPECT_NE(short_burst.find(">= 1 step"), std::string::npos) << short_burst;
+
+  const std::string text = ErrorOf(ConfigWith("  realism:\n    tracker_drop_s: soon\n"));
+  EXPECT_NE(text.find("test.yaml:9"), std::string::npos) << text;
+  EXPECT_NE(text.find("tracker_drop_s"), std::string::npos) << text;
+}
+
 TEST(RealismConfigTest, BadValuesNameFileLineAndKey) {
   const std::string negative = ErrorOf(ConfigWith("  realism:\n    pose_noise_m: -0.001\n"));
   EXPECT_NE(negative.find("test.yaml:9"), std::string::npos) << negative;

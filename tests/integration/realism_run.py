@@ -12,6 +12,9 @@
 4. A Python controller (go_to_goal_python) with the lab preset finishes and its agents were sent
    measured poses too.
 5. A bad value given with --set names the key and its range, exits 1 and makes no folder.
+6. The tracker's drop, set with --set: every robot without a pose for over tracker_drop_s is lost
+   to the tracker for the rest of the run, listed in summary.json realism_stats and named in a
+   tracker_lost warning; its agents kept being sent its last measured pose.
 
 Usage: realism_run.py --dream BIN --source DIR --types-dir DIR
 """
@@ -93,6 +96,25 @@ def test(ctx):
                      expect=EXIT_INPUT)
     check("tracking_dropout_probability" in text and "[0, 1]" in text, f"unclear error: {text.strip()}")
     check(not os.path.exists(ctx.path("bad")), "a refused config made its run folder")
+    code, text = run(ctx, args, "bad_drop", "go_to_goal.yaml", "--set", "world.realism.tracker_drop_s=-1",
+                     expect=EXIT_INPUT)
+    check("tracker_drop_s" in text and ">= 0 s" in text, f"unclear error: {text.strip()}")
+
+    # 6. The tracker drops blind robots: no pose after step 0, 0.5 s allowed (15 steps of 0.033 s).
+    run(ctx, args, "blind", "go_to_goal.yaml", "--set", "world.realism.preset=lab",
+        "--set", "world.realism.tracking_dropout_probability=1", "--set", "world.realism.tracker_drop_s=0.5",
+        "--steps", "60", expect=None)
+    summary = read_summary(ctx.path("blind"))
+    check(summary["realism"].get("tracker_drop_s") == 0.5 and summary["realism"].get("tracking_dropout_mean_steps") == 1,
+          f"summary.json realism lacks the tracker's models: {summary['realism']}")
+    lost = summary["realism_stats"]["robots_lost_to_tracker"]
+    check([entry["robot"] for entry in lost] == list(range(summary["robots"])) and
+          all(entry["step"] == 16 for entry in lost), f"robots lost to the tracker: {lost}")
+    reasons = [r for r in summary["verdict_reasons"] if r["rule"] == "tracker_lost"]
+    check(len(reasons) == 1 and reasons[0]["verdict"] == "warning" and "(from step 16)" in reasons[0]["problem"],
+          f"no tracker_lost warning: {summary['verdict_reasons']}")
+    blind = poses_by_channel(dream_types, ctx.path("blind"))["DREAM_MEASURED_POSES"]
+    check(all(m[1:] == blind[0][1:] for m in blind), "a robot lost to the tracker was sent another pose")
 
 
 if __name__ == "__main__":

@@ -5,8 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "dream/world/realism_params.h"
@@ -158,6 +161,152 @@ TEST(RealisticWorldTest, TrackingDropoutsRepeatTheLastMeasurement) {
   EXPECT_NEAR(static_cast<double>(repeated) / steps, 0.3, 0.03);
 }
 
+// Drives every robot straight at 0.1 m/s for `steps` steps; returns, per step
+// and robot, whether the measured pose is the one sent the step before.
+std::vector<std::vector<bool>> RepeatedMeasurements(RealisticWorld& world, int steps) {
+  std::vector<std::vector<bool>> repeated;
+  for (int step = 0; step < steps; ++step) {
+    const std::vector<Pose2> before = world.poses();
+    for (int robot = 0; robot < world.num_robots(); ++robot) world.SetCommand(robot, {0.1, 0.0});
+    world.Step();
+    std::vector<bool> row;
+    for (size_t i = 0; i < before.size(); ++i) row.push_back(world.poses()[i].x_m == before[i].x_m);
+    repeated.push_back(row);
+  }
+  return repeated;
+}
+
+TEST(RealisticWorldTest, TrackerDropsARobotWithoutAPoseForLongerThanTrackerDropS) {
+  RealismParams realism;
+  realism.tracking_dropout_probability = 1.0;  // nothing after step 0
+  realism.tracker_drop_s = 0.2;                // 6 steps of 0.033 s are 0.198 s: the 7th missing one drops it
+  RealisticWorld world(WorldParams{}, realism, 1, {{0.0, 0.0, 0.0}, {0.0, 0.5, 0.0}});
+  RepeatedMeasurements(world, 200);
+  ASSERT_EQ(world.tracker_losses().size(), 2u);
+  EXPECT_EQ(world.tracker_losses()[0].robot_id, 0);
+  EXPECT_EQ(world.tracker_losses()[0].step, 7);
+  EXPECT_EQ(world.tracker_losses()[1].robot_id, 1);
+  EXPECT_EQ(world.tracker_losses()[1].step, 7);
+  // What the agents see of a lost robot: its last measurement, as in a dropout; the robot still drives.
+  EXPECT_EQ(world.poses()[0].x_m, 0.0);
+  EXPECT_EQ(world.poses()[1].y_m, 0.5);
+  EXPECT_NEAR(world.true_poses()[0].x_m, 200 * 0.1 * kDt, 1e-9);
+  EXPECT_EQ(world.dropped_measurements(), 2 * 7);  // not counted after the loss
+
+  const std::optional<VerdictReason> reason = world.TrackerLossReason();
+  ASSERT_TRUE(reason.has_value());
+  EXPECT_EQ(reason->rule, "tracker_lost");
+  EXPECT_EQ(reason->verdict, RunVerdict::kWarning);
+  EXPECT_NE(reason->problem.find("robots 0 (from step 7), 1 (from step 7) lost to the tracker"), std::string::npos)
+      << reason->problem;
+  EXPECT_NE(reason->problem.find("over 0.2 s"), std::string::npos) << reason->problem;
+}
+
+TEST(RealisticWorldTest, TrackerDropOffOrShortDropoutsLoseNoRobot) {
+  RealismParams off;
+  off.tracking_dropout_probability = 1.0;
+  off.tracker_drop_s = 0.0;  // never
+  RealisticWorld blind(WorldParams{}, off, 1, {{0.0, 0.0, 0.0}});
+  RepeatedMeasurements(blind, 400);  // 13 s without a pose
+  EXPECT_TRUE(blind.tracker_losses().empty());
+  EXPECT_FALSE(blind.TrackerLossReason().has_value());
+  EXPECT_EQ(blind.dropped_measurements(), 400);
+
+  // Dropouts that end in time reset the count: a robot measured again within
+  // 0.5 s (15 steps) is never lost, however many dropouts it has.
+  RealismParams some;
+  some.tracking_dropout_probability = 0.5;
+  some.tracker_drop_s = 0.5;
+  RealisticWorld world(WorldParams{}, some, 4, {{0.0, 0.0, 0.0}});
+  const std::vector<std::vector<bool>> repeated = RepeatedMeasurements(world, 2000);
+  int longest = 0;
+  int run = 0;
+  for (const std::vector<bool>& row : repeated) {
+    run = row[0] ? run + 1 : 0;
+    longest = std::max(longest, run);
+  }
+  EXPECT_TRUE(world.tracker_losses().empty());
+  EXPECT_GE(longest, 5);
+  EXPECT_LE(longest, 15);
+  EXPECT_GT(world.dropped_measurements(), 800);
+}
+
+TEST(RealisticWorldTest, DropoutBurstsLastTheConfiguredMeanSteps) {
+  RealismParams bursts;
+  bursts.tracking_dropout_probability = 0.02;
+  bursts.tracking_dropout_mean_steps = 10.0;
+  RealisticWorld world(WorldParams{}, bursts, 5, {{-1.0, 0.0, 0.0}});
+  int count = 0;
+  int total = 0;
+  bool in_burst = false;
+  for (const std::vector<bool>& row : RepeatedMeasurements(world, 30000)) {
+    if (row[0]) {
+      ++total;
+      if (!in_burst) ++count;
+    }
+    in_burst = row[0];
+  }
+  ASSERT_GT(count, 200);
+  // Geometric bursts: 10 steps on average, a little more as a new dropout may start when one ends.
+  const double mean = static_cast<double>(total) / count;
+  EXPECT_NEAR(mean, 10.0 / (1.0 - 0.02), 1.5) << count << " bursts";
+
+  // Without bursts the same probability gives dropouts of about one step.
+  RealismParams single = bursts;
+  single.tracking_dropout_mean_steps = 1.0;
+  RealisticWorld independent(WorldParams{}, single, 5, {{-1.0, 0.0, 0.0}});
+  int single_total = 0;
+  for (const std::vector<bool>& row : RepeatedMeasurements(independent, 30000)) single_total += row[0] ? 1 : 0;
+  EXPECT_NEAR(static_cast<double>(single_total) / 30000, 0.02, 0.005);
+}
+
+TEST(RealisticWorldTest, TrackerLossesRepeatForASeed) {
+  RealismParams realism = RealismParams::Lab();
+  realism.tracking_dropout_probability = 0.05;
+  realism.tracking_dropout_mean_steps = 40.0;
+  realism.tracker_drop_s = 1.0;
+  auto run = [&realism](uint64_t seed) {
+    RealisticWorld world(WorldParams{}, realism, seed, ThreeRobots());
+    std::vector<double> trace;
+    for (int64_t step = 0; step < 400; ++step) {
+      for (int robot = 0; robot < 3; ++robot) world.SetCommand(robot, CommandFor(robot, step));
+      world.Step();
+      for (const Pose2& pose : world.poses()) trace.insert(trace.end(), {pose.x_m, pose.y_m, pose.theta_rad});
+    }
+    for (const RealisticWorld::TrackerLoss& loss : world.tracker_losses()) {
+      trace.insert(trace.end(), {static_cast<double>(loss.robot_id), static_cast<double>(loss.step)});
+    }
+    return std::make_pair(trace, world.tracker_losses().size());
+  };
+  const auto first = run(11);
+  EXPECT_GT(first.second, 0u);
+  EXPECT_EQ(run(11), first);
+  EXPECT_NE(run(12).first, first.first);
+}
+
+// The lab preset's 5 s tracker drop changes nothing while no dropout lasts
+// that long: the other models' draws are the same.
+TEST(RealisticWorldTest, TrackerDropLeavesOtherDrawsAlone) {
+  RealismParams without = RealismParams::Lab();
+  without.tracker_drop_s = 0.0;
+  RealisticWorld lab(WorldParams{}, RealismParams::Lab(), 3, ThreeRobots());
+  RealisticWorld reference(WorldParams{}, without, 3, ThreeRobots());
+  for (int64_t step = 0; step < 300; ++step) {
+    for (int robot = 0; robot < 3; ++robot) {
+      lab.SetCommand(robot, CommandFor(robot, step));
+      reference.SetCommand(robot, CommandFor(robot, step));
+    }
+    lab.Step();
+    reference.Step();
+    for (size_t i = 0; i < 3; ++i) {
+      ASSERT_EQ(lab.poses()[i].x_m, reference.poses()[i].x_m) << "step " << step;
+      ASSERT_EQ(lab.poses()[i].theta_rad, reference.poses()[i].theta_rad) << "step " << step;
+    }
+  }
+  EXPECT_TRUE(lab.tracker_losses().empty());
+  EXPECT_GT(lab.dropped_measurements(), 0);
+}
+
 TEST(RealisticWorldTest, CommandLatencyDelaysWhenACommandActs) {
   RealismParams realism;
   realism.command_latency_steps = 2;
@@ -282,6 +431,15 @@ TEST(RealisticWorldTest, InvalidParamsAndCommandsThrow) {
   std::string error;
   EXPECT_FALSE(bad.IsValid(&error));
   EXPECT_NE(error.find("pose_noise_m"), std::string::npos) << error;
+  bad = RealismParams{};
+  bad.tracking_dropout_mean_steps = 0.5;
+  EXPECT_FALSE(bad.IsValid(&error));
+  EXPECT_NE(error.find("tracking_dropout_mean_steps = 0.5"), std::string::npos) << error;
+  bad = RealismParams{};
+  bad.tracker_drop_s = -1.0;
+  EXPECT_FALSE(bad.IsValid(&error));
+  EXPECT_NE(error.find("tracker_drop_s = -1"), std::string::npos) << error;
+  EXPECT_THROW(RealisticWorld(WorldParams{}, bad, 1, {{0.0, 0.0, 0.0}}), std::invalid_argument);
   RealisticWorld world(WorldParams{}, RealismParams::Lab(), 1, {{0.0, 0.0, 0.0}});
   EXPECT_THROW(world.SetCommand(1, {0.1, 0.0}), std::out_of_range);
   EXPECT_THROW(world.SetCommand(0, {NAN, 0.0}), std::invalid_argument);

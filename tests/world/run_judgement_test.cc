@@ -60,6 +60,18 @@ TEST(RunJudgementTest, WarningPlusNotReadyListsBoth) {
   EXPECT_THAT(judgement.Text(), HasSubstr("  - lost_robots: "));
 }
 
+TEST(RunJudgementTest, AWarningBeyondDebugSaysTheRunRunsWithWarnings) {
+  RunJudgement judgement(RunReport::FromViolations(30, ViolationCounts{}));
+  judgement.Add({"tracker_lost", RunVerdict::kWarning, "robot 1 (from step 200) lost to the tracker",
+                 "summary.json realism_stats"});
+  EXPECT_EQ(judgement.verdict(), RunVerdict::kWarning);
+  const std::string text = judgement.Text();
+  EXPECT_THAT(text, Not(HasSubstr("NOT ready")));
+  EXPECT_THAT(text, Not(HasSubstr("No errors or warnings")));
+  EXPECT_THAT(text, HasSubstr("your script will run on the Robotarium, with warnings:\n"));
+  EXPECT_THAT(text, HasSubstr("  - tracker_lost: robot 1 (from step 200) lost to the tracker"));
+}
+
 TEST(RunJudgementTest, RejectedKeepsDebugTextAndAddsTheRest) {
   ViolationCounts counts;
   counts.collision_errors = 2;

@@ -4,6 +4,7 @@
 
 #include "dream/lcm/channels.h"
 #include "dream/world/lab_verifier_rules.h"
+#include "dream/world/realistic_world.h"
 
 namespace dream::sim {
 namespace {
@@ -93,6 +94,10 @@ RunJudgement JudgeRun(const config::RunConfig& config, const RunOutcome& outcome
       robots_outside_boundaries >= 0 ? robots_outside_boundaries : world.violations().boundary_errors;
   judgement.Add(rules.Check(declared, counts));
   judgement.Add(OutcomeReasons(outcome));
+  // world.realism: a robot lost to the tracker (a warning: the lab runs it, blind).
+  if (const auto* realistic = dynamic_cast<const RealisticWorld*>(&world)) {
+    if (const std::optional<VerdictReason> lost = realistic->TrackerLossReason()) judgement.Add(*lost);
+  }
   return judgement;
 }
 

@@ -4,6 +4,7 @@
 
 #include "dream/lcm/run_id.h"
 #include "dream/node/run_judge.h"
+#include "dream/world/realistic_world.h"
 #include "dream/world/run_report.h"
 
 namespace dream::sim {
@@ -65,6 +66,15 @@ std::string RunSummaryJson(const config::RunConfig& config, const RunOutcome& ou
   nlohmann::json poses = nlohmann::json::array();
   for (const Pose2& pose : world.poses()) poses.push_back({pose.x_m, pose.y_m, pose.theta_rad});
   json["final_poses"] = poses;
+  // world.realism: what the tracker model did to the agents' view.
+  if (const auto* realistic = dynamic_cast<const RealisticWorld*>(&world)) {
+    nlohmann::json lost = nlohmann::json::array();
+    for (const RealisticWorld::TrackerLoss& loss : realistic->tracker_losses()) {
+      lost.push_back({{"robot", loss.robot_id}, {"step", loss.step}});
+    }
+    json["realism_stats"] = {{"dropped_measurements", realistic->dropped_measurements()},
+                             {"robots_lost_to_tracker", lost}};
+  }
   return json.dump(2) + "\n";
 }
 

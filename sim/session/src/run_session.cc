@@ -37,6 +37,8 @@ nlohmann::ordered_json RealismJson(const sim::RealismParams& realism) {
   json["pose_quantum_rad"] = realism.pose_quantum_rad;
   json["pose_delay_steps"] = realism.pose_delay_steps;
   json["tracking_dropout_probability"] = realism.tracking_dropout_probability;
+  json["tracking_dropout_mean_steps"] = realism.tracking_dropout_mean_steps;
+  json["tracker_drop_s"] = realism.tracker_drop_s;
   json["command_latency_steps"] = realism.command_latency_steps;
   json["command_brake_s"] = realism.command_brake_s;
   json["dead_zone_v_mps"] = realism.dead_zone_v_mps;

@@ -7,13 +7,8 @@
 namespace dream::sim {
 
 using field_check::Fail;
+using field_check::IsNonNegativeFinite;
 using field_check::IsPositiveFinite;
-
-namespace {
-
-bool IsNonNegativeFinite(double value) { return std::isfinite(value) && value >= 0.0; }
-
-}  // namespace
 
 RealismParams RealismParams::Ideal() { return RealismParams{}; }
 
@@ -26,6 +21,8 @@ RealismParams RealismParams::Lab() {
   lab.pose_quantum_rad = 0.0;
   lab.pose_delay_steps = 1;
   lab.tracking_dropout_probability = 0.01;
+  lab.tracking_dropout_mean_steps = 1.0;  // how long the lab's dropouts last is not published
+  lab.tracker_drop_s = 5.0;
   lab.command_latency_steps = 1;
   lab.command_brake_s = 0.5;
   lab.dead_zone_v_mps = 1e-4;
@@ -69,6 +66,13 @@ bool RealismParams::IsValid(std::string* error) const {
   if (!(tracking_dropout_probability >= 0.0 && tracking_dropout_probability <= 1.0)) {
     return Fail(error, "tracking_dropout_probability", tracking_dropout_probability, "[0, 1]");
   }
+  if (!(std::isfinite(tracking_dropout_mean_steps) && tracking_dropout_mean_steps >= 1.0)) {
+    return Fail(error, "tracking_dropout_mean_steps", tracking_dropout_mean_steps,
+                ">= 1 step, finite (1: each step on its own)");
+  }
+  if (!IsNonNegativeFinite(tracker_drop_s)) {
+    return Fail(error, "tracker_drop_s", tracker_drop_s, ">= 0 s, finite (0: the tracker never drops a robot)");
+  }
   if (command_latency_steps < 0 || command_latency_steps > kMaxDelaySteps) {
     return Fail(error, "command_latency_steps", command_latency_steps, steps);
   }
@@ -93,6 +97,7 @@ bool operator==(const RealismParams& a, const RealismParams& b) {
          a.pose_quantum_m == b.pose_quantum_m && a.pose_quantum_rad == b.pose_quantum_rad &&
          a.pose_delay_steps == b.pose_delay_steps &&
          a.tracking_dropout_probability == b.tracking_dropout_probability &&
+         a.tracking_dropout_mean_steps == b.tracking_dropout_mean_steps && a.tracker_drop_s == b.tracker_drop_s &&
          a.command_latency_steps == b.command_latency_steps && a.command_brake_s == b.command_brake_s &&
          a.dead_zone_v_mps == b.dead_zone_v_mps && a.dead_zone_w_radps == b.dead_zone_w_radps &&
          a.wheel_accel_limit_radps2 == b.wheel_accel_limit_radps2 && a.axle_length_m == b.axle_length_m;

@@ -7,8 +7,10 @@
 #include <string>
 #include <utility>
 
+#include "dream/world/printf_text.h"
 #include "dream/world/unicycle_kinematics.h"
 #include "realism_random.h"
+#include "world_argument_check.h"
 
 namespace dream::sim {
 namespace {
@@ -18,6 +20,7 @@ constexpr double kPi = 3.14159265358979323846;
 // Random streams, one per model (RealismRandom's `stream`).
 constexpr uint64_t kNoiseStream = 1;
 constexpr uint64_t kDropoutStream = 2;
+constexpr uint64_t kDropoutBurstStream = 3;
 
 const RealismParams& ValidatedRealism(const RealismParams& realism) {
   std::string error;
@@ -35,15 +38,17 @@ WorldParams TruthParams(const WorldParams& params, const RealismParams& realism)
   return truth;
 }
 
-// Largest n with n * dt <= brake (UnicycleWorld's rule for its timeout);
-// INT64_MAX for 0 (never).
-int64_t BrakeHoldSteps(double time_step_s, double brake_s) {
-  if (brake_s == 0.0) return std::numeric_limits<int64_t>::max();
-  auto n = static_cast<int64_t>(std::floor(brake_s / time_step_s));
-  while (static_cast<double>(n + 1) * time_step_s <= brake_s) ++n;
-  while (n > 0 && static_cast<double>(n) * time_step_s > brake_s) --n;
+// Largest n with n * dt <= seconds: the steps a rule "after more than
+// `seconds`" lets pass (UnicycleWorld's rule for its timeout); INT64_MAX for
+// 0 (never).
+int64_t HoldSteps(double time_step_s, double seconds) {
+  if (seconds == 0.0) return std::numeric_limits<int64_t>::max();
+  auto n = static_cast<int64_t>(std::floor(seconds / time_step_s));
+  while (static_cast<double>(n + 1) * time_step_s <= seconds) ++n;
+  while (n > 0 && static_cast<double>(n) * time_step_s > seconds) --n;
   return n;
 }
+
 
 double Quantize(double value, double quantum) {
   return quantum > 0.0 ? std::round(value / quantum) * quantum : value;
@@ -62,32 +67,31 @@ RealisticWorld::RealisticWorld(const WorldParams& params, const RealismParams& r
       realism_(ValidatedRealism(realism)),
       truth_(TruthParams(params, realism), std::move(initial_poses), obstacle_specs),
       robots_(static_cast<size_t>(truth_.num_robots())),
-      brake_hold_steps_(BrakeHoldSteps(params.time_step_s, realism.command_brake_s)),
+      brake_hold_steps_(HoldSteps(params.time_step_s, realism.command_brake_s)),
       pose_history_(static_cast<size_t>(realism.pose_delay_steps) + 1, truth_.poses()),
       velocity_history_(static_cast<size_t>(realism.pose_delay_steps) + 1, truth_.velocities()),
       measured_poses_(truth_.poses()),
       measured_velocities_(truth_.velocities()),
       noise_random_(std::make_unique<RealismRandom>(seed, kNoiseStream)),
-      dropout_random_(std::make_unique<RealismRandom>(seed, kDropoutStream)) {
+      dropout_random_(std::make_unique<RealismRandom>(seed, kDropoutStream)),
+      tracker_hold_steps_(HoldSteps(params.time_step_s, realism.tracker_drop_s)),
+      tracking_(static_cast<size_t>(truth_.num_robots())) {
+  if (realism_.tracking_dropout_mean_steps > 1.0) {
+    burst_random_ = std::make_unique<RealismRandom>(seed, kDropoutBurstStream);
+    burst_continue_probability_ = 1.0 - 1.0 / realism_.tracking_dropout_mean_steps;
+  }
   Measure(true);
 }
 
 RealisticWorld::~RealisticWorld() = default;
 
 void RealisticWorld::CheckRobotId(int robot_id, const char* caller) const {
-  if (robot_id < 0 || robot_id >= num_robots()) {
-    throw std::out_of_range(std::string("RealisticWorld::") + caller + ": robot_id " + std::to_string(robot_id) +
-                            " is not in [0, " + std::to_string(num_robots()) + ")");
-  }
+  world_argument_check::CheckRobotId(std::string("RealisticWorld::") + caller, robot_id, num_robots());
 }
 
 void RealisticWorld::SetCommand(int robot_id, const UnicycleCommand& command) {
   CheckRobotId(robot_id, "SetCommand");
-  if (!std::isfinite(command.v_mps) || !std::isfinite(command.w_radps)) {
-    throw std::invalid_argument("RealisticWorld::SetCommand: robot " + std::to_string(robot_id) +
-                                " command (v_mps=" + std::to_string(command.v_mps) +
-                                ", w_radps=" + std::to_string(command.w_radps) + ") is not finite");
-  }
+  world_argument_check::CheckCommandIsFinite("RealisticWorld::SetCommand", robot_id, command);
   Robot& robot = robots_[static_cast<size_t>(robot_id)];
   const int64_t due_step = step() + realism_.command_latency_steps;
   if (!robot.queue.empty() && robot.queue.back().due_step == due_step) {
@@ -171,8 +175,15 @@ void RealisticWorld::Measure(bool first) {
     const double noise_x = noise_random_->Gaussian() * realism_.pose_noise_m;
     const double noise_y = noise_random_->Gaussian() * realism_.pose_noise_m;
     const double noise_theta = noise_random_->Gaussian() * realism_.pose_noise_rad;
-    const bool dropped = dropout_random_->Uniform() < realism_.tracking_dropout_probability;
-    if (dropped && !first) continue;  // the tracker repeats its last report
+    Tracking& tracking = tracking_[i];
+    if (DropsMeasurement(tracking, first)) {
+      // The tracker repeats its last report; past tracker_drop_s it drops the robot.
+      if (!tracking.lost && tracking.missing_steps > tracker_hold_steps_) {
+        tracking.lost = true;
+        tracker_losses_.push_back({static_cast<int>(i), now});
+      }
+      continue;
+    }
 
     const Pose2& seen = seen_poses[i];
     Pose2& measured = measured_poses_[i];
@@ -183,6 +194,35 @@ void RealisticWorld::Measure(bool first) {
     measured.theta_rad = theta;
     measured_velocities_[i] = seen_velocities[i];
   }
+}
+
+bool RealisticWorld::DropsMeasurement(Tracking& tracking, bool first) {
+  const bool starts = dropout_random_->Uniform() < realism_.tracking_dropout_probability;
+  const bool goes_on = burst_random_ != nullptr && burst_random_->Uniform() < burst_continue_probability_;
+  if (first) return false;  // step 0 is always measured
+  if (tracking.lost) return true;
+  if (starts || (tracking.missing_steps > 0 && goes_on)) {
+    ++tracking.missing_steps;
+    ++dropped_measurements_;
+    return true;
+  }
+  tracking.missing_steps = 0;
+  return false;
+}
+
+std::optional<VerdictReason> RealisticWorld::TrackerLossReason() const {
+  if (tracker_losses_.empty()) return std::nullopt;
+  std::string robots;
+  for (const TrackerLoss& loss : tracker_losses_) {
+    robots += (robots.empty() ? "" : ", ") + std::to_string(loss.robot_id) + " (from step " +
+              std::to_string(loss.step) + ")";
+  }
+  return VerdictReason{"tracker_lost", RunVerdict::kWarning,
+                       std::string(tracker_losses_.size() == 1 ? "robot " : "robots ") + robots +
+                           " lost to the tracker: no new pose for over " + PrintfText("%g s", realism_.tracker_drop_s) +
+                           " (world.realism tracker_drop_s), so their agents were sent the last pose for the rest "
+                           "of the run",
+                       "summary.json realism_stats; dream log echo RUN DREAM_MEASURED_POSES shows what the agents saw"};
 }
 
 }  // namespace dream::sim

@@ -58,9 +58,17 @@ std::string RunJudgement::Text() const {
   }
   const size_t first_line_end = official.find("\n\n");
   std::string text = official.substr(0, first_line_end == std::string::npos ? official.size() : first_line_end + 2);
-  text += verdict_ == RunVerdict::kRejected
-              ? "The lab's verifier would refuse this run, your script will NOT run on the Robotarium!\n"
-              : "The Robotarium's checks pass on the poses, but this run is NOT ready for the Robotarium:\n";
+  switch (verdict_) {
+    case RunVerdict::kRejected:
+      text += "The lab's verifier would refuse this run, your script will NOT run on the Robotarium!\n";
+      break;
+    case RunVerdict::kNotReady:
+      text += "The Robotarium's checks pass on the poses, but this run is NOT ready for the Robotarium:\n";
+      break;
+    default:  // warnings only (e.g. a robot lost to world.realism's tracker): the lab runs it
+      text += "The Robotarium's checks pass on the poses; your script will run on the Robotarium, with warnings:\n";
+      break;
+  }
   return text + list(0);
 }
 

@@ -10,6 +10,7 @@
 
 #include "collision_grid.h"
 #include "dream/world/unicycle_kinematics.h"
+#include "world_argument_check.h"
 
 namespace dream::sim {
 namespace {
@@ -78,20 +79,12 @@ void UnicycleWorld::GetObstacleStates(std::vector<ObstacleState>* states) const 
 }
 
 void UnicycleWorld::CheckRobotId(int robot_id, const char* caller) const {
-  if (robot_id < 0 || robot_id >= num_robots()) {
-    throw std::out_of_range(std::string("UnicycleWorld::") + caller + ": robot_id " +
-                            std::to_string(robot_id) + " is not in [0, " +
-                            std::to_string(num_robots()) + ")");
-  }
+  world_argument_check::CheckRobotId(std::string("UnicycleWorld::") + caller, robot_id, num_robots());
 }
 
 void UnicycleWorld::SetCommand(int robot_id, const UnicycleCommand& command) {
   CheckRobotId(robot_id, "SetCommand");
-  if (!std::isfinite(command.v_mps) || !std::isfinite(command.w_radps)) {
-    throw std::invalid_argument("UnicycleWorld::SetCommand: robot " + std::to_string(robot_id) +
-                                " command (v_mps=" + std::to_string(command.v_mps) +
-                                ", w_radps=" + std::to_string(command.w_radps) + ") is not finite");
-  }
+  world_argument_check::CheckCommandIsFinite("UnicycleWorld::SetCommand", robot_id, command);
   velocities_[static_cast<std::size_t>(robot_id)] = command;
   command_step_[static_cast<std::size_t>(robot_id)] = step_;
 }

@@ -7,6 +7,7 @@
 namespace dream::sim {
 
 using field_check::Fail;
+using field_check::IsNonNegativeFinite;
 using field_check::IsPositiveFinite;
 
 bool WorldParams::IsValid(std::string* error) const {
@@ -26,7 +27,7 @@ bool WorldParams::IsValid(std::string* error) const {
   if (!IsPositiveFinite(collision_diameter_m)) {
     return Fail(error, "collision_diameter_m", collision_diameter_m, "> 0 m, finite");
   }
-  if (!std::isfinite(collision_offset_m) || collision_offset_m < 0.0) {
+  if (!IsNonNegativeFinite(collision_offset_m)) {
     return Fail(error, "collision_offset_m", collision_offset_m, ">= 0 m, finite");
   }
   if (std::isnan(command_timeout_s) || command_timeout_s <= 0.0) {

@@ -19,7 +19,8 @@ std::vector<VerdictReason> OutcomeReasons(const RunOutcome& outcome);
 /// The run's judgement: debug()'s verdict on the world's counts, the lab
 /// verifier's rules (LabVerifierRules: declared = the config's robot count
 /// and (steps + LabVerifierRules::kExportSettleSteps) x the time step, what
-/// `dream export` would declare), and OutcomeReasons. The verifier counts
+/// `dream export` would declare), OutcomeReasons, and for a RealisticWorld
+/// the robots lost to its tracker (RealisticWorld::TrackerLossReason). The verifier counts
 /// robots outside the arena once per robot and step; pass that count as
 /// `robots_outside_boundaries` when known (re-checked on the log), else -1:
 /// the world's boundary_errors (steps with any robot outside) is used, a

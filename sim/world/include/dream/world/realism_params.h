@@ -22,9 +22,17 @@ struct RealismParams {
   double pose_quantum_rad = 0.0;
   // Agents are sent the poses of step k - pose_delay_steps at step k.
   int pose_delay_steps = 0;
-  // Chance per robot and step that the tracker reports nothing new: the
-  // robot's last measured pose is sent again.
+  // Chance per robot and step that a dropout starts: the tracker reports
+  // nothing new, and the robot's last measured pose is sent again.
   double tracking_dropout_probability = 0.0;
+  // Dropouts come in bursts of this many steps on average (geometric: a
+  // dropped robot stays dropped the next step with probability 1 - 1/this,
+  // or when a new dropout starts); 1 = each step on its own.
+  double tracking_dropout_mean_steps = 1.0;
+  // A robot with no new measurement for longer than this (simulated time) is
+  // dropped by the tracker and stays untracked for the rest of the run: its
+  // agents are sent its last measured pose; 0 = never.
+  double tracker_drop_s = 0.0;
 
   // Robot. A command answering step k reaches the robot at step k + latency.
   int command_latency_steps = 0;

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <deque>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "dream/world/pose2.h"
@@ -10,6 +11,7 @@
 #include "dream/world/rectangle_obstacle_spec.h"
 #include "dream/world/unicycle_command.h"
 #include "dream/world/unicycle_world.h"
+#include "dream/world/verdict_reason.h"
 #include "dream/world/violation_counts.h"
 #include "dream/world/wheel_speeds.h"
 #include "dream/world/world.h"
@@ -37,13 +39,18 @@ class RealismRandom;
 //  5. the true world steps with what the robot drives (its wheel saturation
 //     uses axle_length_m);
 //  6. measure: the true poses of step k + 1 - pose_delay_steps, plus Gaussian
-//     noise, rounded to the quanta; with tracking_dropout_probability the
-//     robot's previous measurement is kept instead.
+//     noise, rounded to the quanta; in a dropout (one starts with
+//     tracking_dropout_probability and lasts tracking_dropout_mean_steps on
+//     average) the robot's previous measurement is kept instead. A robot
+//     without a new measurement for longer than tracker_drop_s is lost to the
+//     tracker: its last measurement is kept for the rest of the run (the
+//     robot itself still drives).
 // Actuator errors are counted on the commands as sent, with the official
 // wheel radius and base length, as the Robotarium does; boundary, collision
 // and obstacle errors on the true poses.
 // Random numbers come from `seed` only, one stream per model, so a lockstep
-// run repeats exactly.
+// run repeats exactly; with tracking_dropout_mean_steps 1 and tracker_drop_s
+// 0 the draws and poses are those of independent dropouts.
 class RealisticWorld final : public World {
  public:
   // Throws std::invalid_argument if params, realism, an obstacle or a pose is
@@ -78,6 +85,21 @@ class RealisticWorld final : public World {
   const std::vector<UnicycleCommand>& true_velocities() const { return truth_.velocities(); }
   const RealismParams& realism() const { return realism_; }
 
+  // A robot the tracker dropped (tracker_drop_s): from the measurement of
+  // `step` on, its agents are sent its last measured pose.
+  struct TrackerLoss {
+    int robot_id = 0;
+    int64_t step = 0;
+  };
+  // In the order they were lost; each robot at most once.
+  const std::vector<TrackerLoss>& tracker_losses() const { return tracker_losses_; }
+  // Robot-steps whose measurement was dropped (the previous one sent again),
+  // robots lost to the tracker not counted after their loss.
+  int64_t dropped_measurements() const { return dropped_measurements_; }
+  // A kWarning "tracker_lost" naming every robot lost to the tracker and when;
+  // none when no robot was.
+  std::optional<VerdictReason> TrackerLossReason() const;
+
  private:
   static constexpr int64_t kNone = -1;
 
@@ -93,9 +115,17 @@ class RealisticWorld final : public World {
     bool sent_over_limit = false;    // newest command since the last Step() exceeds the wheel limit
   };
 
+  // What the tracker knows of a robot.
+  struct Tracking {
+    int64_t missing_steps = 0;  // measurements dropped in a row
+    bool lost = false;          // dropped by the tracker for the rest of the run
+  };
+
   void CheckRobotId(int robot_id, const char* caller) const;
   UnicycleCommand Drive(Robot& robot);
   void Measure(bool first);
+  // Whether robot i's measurement of this step is dropped; draws its dropout numbers.
+  bool DropsMeasurement(Tracking& tracking, bool first);
 
   WorldParams official_;  // the Robotarium's constants, for the actuator check
   RealismParams realism_;
@@ -113,6 +143,12 @@ class RealisticWorld final : public World {
   std::vector<UnicycleCommand> measured_velocities_;
   std::unique_ptr<RealismRandom> noise_random_;
   std::unique_ptr<RealismRandom> dropout_random_;
+  std::unique_ptr<RealismRandom> burst_random_;  // only with tracking_dropout_mean_steps > 1
+  double burst_continue_probability_ = 0.0;
+  int64_t tracker_hold_steps_ = 0;  // dropped measurements in a row a robot survives
+  std::vector<Tracking> tracking_;
+  std::vector<TrackerLoss> tracker_losses_;
+  int64_t dropped_measurements_ = 0;
 };
 
 }  // namespace dream::sim
