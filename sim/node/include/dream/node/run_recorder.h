@@ -47,7 +47,7 @@ class RunRecorder {
   /// writing it; `rewrite` writes (with Write, on any channel, its own events
   /// are not handed back) what the log keeps instead. A run with
   /// world.realism keeps the true poses on DREAM_POSES and what the agents
-  /// were sent on DREAM_MEASURED_POSES (cli/src/run_output.cc).
+  /// were sent on DREAM_MEASURED_POSES (TruePoseRecording, for RunSession).
   void RewriteChannel(std::string channel, Rewrite rewrite);
 
   /// Pushes every event written so far to the disk (fflush + fsync), so a
