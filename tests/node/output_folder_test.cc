@@ -63,6 +63,22 @@ TEST_F(OutputFolderTest, NamedFolderNeedsItsParentDefaultFolderIsMadeWithParents
   EXPECT_EQ(made.dir(), Path("runs/go_to_goal")) << "a trailing slash names the same folder";
 }
 
+TEST_F(OutputFolderTest, NamedFolderUnderAMissingToolFolderMakesIt) {
+  // runs/, sweeps/ and exports/ of the working folder are dream's own, made
+  // when missing (`--out exports/x` in a fresh checkout); any other missing
+  // parent is still refused.
+  const fs::path before = fs::current_path();
+  fs::current_path(base_);
+  const OutputFolder exported("exports/go_to_goal");
+  const OutputFolder swept("./sweeps/seeds");
+  EXPECT_THAT(MessageOf([&] { OutputFolder("exprots/go_to_goal"); }), HasSubstr("does not exist"));
+  EXPECT_THAT(MessageOf([&] { OutputFolder("runs/a/b"); }), HasSubstr("its parent folder runs/a does not exist"));
+  fs::current_path(before);
+  EXPECT_TRUE(fs::is_directory(base_ / "exports" / "go_to_goal"));
+  EXPECT_TRUE(fs::is_directory(base_ / "sweeps" / "seeds"));
+  EXPECT_FALSE(fs::exists(base_ / "exprots"));
+}
+
 TEST_F(OutputFolderTest, FileWrittenWholeWithNoTemporaryLeftBehind) {
   const OutputFolder folder(Path("out"));
   folder.WriteFile("a.txt", "first");

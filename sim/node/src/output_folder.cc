@@ -24,6 +24,15 @@ void CheckRelativeName(const std::string& name) {
   }
 }
 
+// True for runs/, sweeps/ or exports/ of the working folder, however written.
+bool IsToolFolder(const fs::path& parent) {
+  const fs::path plain = parent.lexically_normal();
+  for (const char* name : OutputFolder::kToolFolders) {
+    if (plain == fs::path(name) || plain == fs::path(name) / "") return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 OutputFolder::OutputFolder(std::string dir, Parents parents) : dir_(std::move(dir)) {
@@ -33,7 +42,7 @@ OutputFolder::OutputFolder(std::string dir, Parents parents) : dir_(std::move(di
   dir_ = out.string();
   const fs::path parent = out.has_parent_path() ? out.parent_path() : fs::path(".");
   std::error_code error;
-  if (parents == Parents::kCreate) {
+  if (parents == Parents::kCreate || (!fs::exists(parent) && IsToolFolder(parent))) {
     fs::create_directories(out, error);
   } else if (!fs::is_directory(parent)) {
     throw std::runtime_error("output folder " + dir_ + ": its parent folder " + parent.string() + " does not exist");

@@ -14,8 +14,13 @@ class OutputFolder {
  public:
   /// What to do when the folder's parent is missing. A folder the user named
   /// (--out) must have its parent: a mistyped parent is a mistake to report,
-  /// not a tree to create. A default folder (runs/<name>) is made with its parents.
+  /// not a tree to create. The exception is one of the folders dream's own
+  /// defaults write under (kToolFolders: runs/, sweeps/, exports/ in the
+  /// working folder), made when missing as the defaults make them, so
+  /// `--out exports/go_to_goal` works in a fresh checkout. A default folder
+  /// (runs/<name>) is made with its parents.
   enum class Parents { kMustExist, kCreate };
+  static constexpr const char* kToolFolders[] = {"runs", "sweeps", "exports"};
 
   /// Creates `dir` if missing. @throws std::runtime_error naming the folder.
   explicit OutputFolder(std::string dir, Parents parents = Parents::kMustExist);
