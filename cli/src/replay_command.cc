@@ -13,6 +13,7 @@
 #include "process_group.h"
 #include "shared_options.h"
 #include "shell_quoted.h"
+#include "window_display.h"
 
 namespace dream::cli {
 namespace {
@@ -59,6 +60,9 @@ int RunReplay(const ReplayArgs& args) {
     if (!spy.empty()) std::cout << ShellCommandLine(spy) << "\n";
     return kExitOk;
   }
+  RequireWindowDisplay("LCM's log player",
+                       "without one, `dream replay RUN --print` prints the command to run elsewhere, and "
+                       "lcm-logplayer RUN/run.lcmlog plays the log with no window");
   spdlog::info("replaying {} on {}{}", log, url, args.with_spy ? " into lcm-spy" : "");
   ProcessGroup children;
   if (!spy.empty()) children.Start(spy);

@@ -13,6 +13,7 @@
 #include "dream/lcm/lcm_url.h"
 #include "process_group.h"
 #include "shell_quoted.h"
+#include "window_display.h"
 
 namespace dream::cli {
 namespace {
@@ -68,6 +69,8 @@ int RunSpy(const std::string& log_path, const std::string& lcm_url, bool print_c
     }
     return kExitOk;
   }
+  RequireWindowDisplay("lcm-spy", "without one, `dream spy --print` prints the command to run elsewhere, and "
+                                  "`dream log echo RUN CHANNEL` prints a log's messages as text");
   ProcessGroup children;
   const pid_t spy_pid = children.Start(spy);
   if (!player.empty()) {

@@ -84,6 +84,13 @@ def test(ctx):
         check(code == 1 and named in text and words in text,
               f"dream replay {bad}: exit {code} (expected 1), output {text.strip()!r}")
 
+    # Without a display the JVM would print a HeadlessException and never exit: refused at once.
+    headless = {k: v for k, v in env.items() if k not in ("DISPLAY", "WAYLAND_DISPLAY")}
+    result = subprocess.run([args.dream, "replay", run], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                            timeout=20, env=headless)
+    check(result.returncode == 1 and "no display" in result.stdout and "--print" in result.stdout,
+          f"dream replay without a display: exit {result.returncode} (expected 1), output {result.stdout.strip()!r}")
+
     xvfb = shutil.which("xvfb-run")
     if xvfb:
         require_private_netns()  # the player publishes on a udpm group

@@ -81,6 +81,13 @@ def test(ctx):
     code, text = ctx.run([args.dream, "spy", "--print", "--log", missing])
     check(code != 0 and missing in text, f"dream spy --log on a missing file: exit {code}, output {text.strip()!r}")
 
+    # Without a display lcm-spy would fail with a Java stack trace: refused at once, saying what to do.
+    headless = {k: v for k, v in os.environ.items() if k not in ("DISPLAY", "WAYLAND_DISPLAY")}
+    result = subprocess.run([args.dream, "spy", "--log", log], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                            text=True, timeout=20, env=headless)
+    check(result.returncode == 1 and "no display" in result.stdout and "--print" in result.stdout,
+          f"dream spy without a display: exit {result.returncode} (expected 1), output {result.stdout.strip()!r}")
+
     xvfb = shutil.which("xvfb-run")
     if xvfb:
         require_private_netns()  # lcm-spy joins a udpm group
