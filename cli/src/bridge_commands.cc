@@ -362,11 +362,11 @@ void DeclareBridgeCommands(CommandLine& line) {
   import_command->add_option("--declared-robots", import_args->declared_robots,
                              "The robot count declared on the lab's form, when not UPLOAD.txt's;\n"
                              "the verdict names a mismatch (verifier_robot_count)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1, 1000));
   import_command->add_option("--declared-duration", import_args->declared_duration_s,
                              "The duration (s) declared on the lab's form, when not UPLOAD.txt's; the verdict\n"
                              "names a run over 1.5x of it (verifier_duration) or over 900 s (lab_duration_cap)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(0.001, 1e6));
 
   auto replay_args = std::make_shared<LabReplayArgs>();
   CLI::App* replay_command = line.AddCommand(
