@@ -1,7 +1,6 @@
 #include "dream/agent_host/agent_parts_config.h"
 
 #include <algorithm>
-#include <initializer_list>
 #include <limits>
 #include <stdexcept>
 
@@ -100,14 +99,34 @@ SensorConfig ReadSensor(const ConfigNode& node, int num_robots) {
   return sensor;
 }
 
+// The keys of a `radio:` entry of `kind` (none for an unknown kind): those of
+// every radio with the kind's own (range_m; graph; graph and leaders) in between.
+std::vector<std::string> RadioKeys(const std::string& kind) {
+  std::vector<std::string> own;
+  if (kind == "range") {
+    own = {"range_m"};
+  } else if (kind == "graph") {
+    own = {"graph"};
+  } else if (kind == "role") {
+    own = {"graph", "leaders"};
+  } else if (kind != "none") {
+    return {};
+  }
+  std::vector<std::string> keys = {"kind", "period_steps"};
+  keys.insert(keys.end(), own.begin(), own.end());
+  keys.insert(keys.end(), {"loss_probability", "delay_steps"});
+  return keys;
+}
+
 // A key of another radio kind (a range radio's `graph`) would be silently
 // ignored: an error at `kind`, since either the kind or the key is the mistake.
-void RejectKeysOfOtherKinds(const ConfigNode& node, const std::string& kind,
-                            std::initializer_list<const char*> keys) {
+void RejectKeysOfOtherKinds(const ConfigNode& node, const std::string& kind) {
+  const std::vector<std::string> keys = RadioKeys(kind);
+  if (keys.empty()) return;  // an unknown kind: ReadRadio names the known ones
   for (const std::string& key : node.Keys()) {
     if (std::find(keys.begin(), keys.end(), key) != keys.end()) continue;
     std::string allowed;
-    for (const char* k : keys) allowed += (allowed.empty() ? "" : ", ") + std::string(k);
+    for (const std::string& k : keys) allowed += (allowed.empty() ? "" : ", ") + k;
     node.Required("kind").Fail("a radio of kind " + kind + " has no `" + key + "`; its keys: " + allowed);
   }
 }
@@ -116,16 +135,7 @@ void ReadRadio(const ConfigNode& node, int num_robots, bool graph_must_connect, 
   node.RejectUnknownKeys(
       {"kind", "period_steps", "range_m", "graph", "leaders", "loss_probability", "delay_steps"});
   const std::string kind = node.Required("kind").AsString();
-  if (kind == "none") {
-    RejectKeysOfOtherKinds(node, kind, {"kind", "period_steps", "loss_probability", "delay_steps"});
-  } else if (kind == "range") {
-    RejectKeysOfOtherKinds(node, kind, {"kind", "period_steps", "range_m", "loss_probability", "delay_steps"});
-  } else if (kind == "graph") {
-    RejectKeysOfOtherKinds(node, kind, {"kind", "period_steps", "graph", "loss_probability", "delay_steps"});
-  } else if (kind == "role") {
-    RejectKeysOfOtherKinds(node, kind,
-                           {"kind", "period_steps", "graph", "leaders", "loss_probability", "delay_steps"});
-  }
+  RejectKeysOfOtherKinds(node, kind);
   if (node.Has("period_steps")) radio->period_steps = ReadPerRobot(node.Required("period_steps"), num_robots, 1);
   radio->link.loss_probability = node.GetDouble("loss_probability", radio->link.loss_probability);
   if (node.Has("delay_steps")) radio->link.delay_steps = ReadSteps(node.Required("delay_steps"), 0);
