@@ -24,7 +24,7 @@ Payloads PayloadsByChannel(const std::string& path, const std::regex& channels) 
   Payloads payloads;
   for (lcm::LogRecord& record : lcm::LogReader::ReadAll(RunLogPath(path))) {
     if (!std::regex_match(record.channel, channels)) continue;
-    lcm::ClearRunId(&record.data);  // every run has its own id; the rest must match
+    lcm::ClearRandomIds(&record.data);  // every run and agent has its own id; the rest must match
     payloads[record.channel].push_back(std::move(record.data));
   }
   return payloads;
@@ -214,8 +214,8 @@ void DeclareLogCommand(CommandLine& line) {
   auto diff_args = std::make_shared<LogDiffArgs>();
   CLI::App* diff = line.AddCommand(
       "diff",
-      "Compare two logs message by message, per channel, ignoring timestamps and run ids (every run has\n"
-      "its own). Exit 0 when equal.\n"
+      "Compare two logs message by message, per channel, ignoring timestamps, run ids and agent ids\n"
+      "(every run and agent process draws its own). Exit 0 when equal.\n"
       "Example: dream log diff a/run.lcmlog b/run.lcmlog --channels DREAM_POSES",
       [diff_args] { return RunLogDiff(diff_args->first_log, diff_args->second_log, diff_args->channel_regex); }, log);
   diff->add_option("a", diff_args->first_log, "First log (or run folder)")->required();

@@ -11,6 +11,7 @@
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
 #include "dream/velocity_command_t.hpp"
+#include "dream/lcm/lcm_typed.h"
 
 namespace dream::lcm {
 
@@ -40,6 +41,34 @@ bool ClearRunId(std::vector<uint8_t>* encoded) {
   if (!carries_run_id) return false;
   std::memset(encoded->data() + kRunIdAt, 0, 8);
   return true;
+}
+
+namespace {
+
+// Decodes `encoded` as a Message (when its fingerprint says so), lets `clear`
+// zero its agent ids, and encodes it back in place.
+template <typename Message, typename Clear>
+bool Rewrite(std::vector<uint8_t>* encoded, Clear clear) {
+  Message message;
+  if (!Decode(encoded->data(), static_cast<int>(encoded->size()), &message)) return false;
+  clear(&message);
+  const int size = message.getEncodedSize();
+  std::vector<uint8_t> rewritten(static_cast<size_t>(size));
+  if (message.encode(rewritten.data(), 0, size) != size) return false;
+  encoded->swap(rewritten);
+  return true;
+}
+
+}  // namespace
+
+void ClearRandomIds(std::vector<uint8_t>* encoded) {
+  if (!ClearRunId(encoded)) return;  // not a dream message that carries ids
+  Rewrite<velocity_command_t>(encoded, [](velocity_command_t* m) { m->agent_id = 0; }) ||
+      Rewrite<radio_message_t>(encoded, [](radio_message_t* m) { m->agent_id = 0; }) ||
+      Rewrite<robot_fault_t>(encoded, [](robot_fault_t* m) { m->agent_id = 0; }) ||
+      Rewrite<applied_commands_t>(encoded, [](applied_commands_t* m) {
+        for (int64_t& id : m->applied_agent_id) id = 0;
+      });
 }
 
 }  // namespace dream::lcm

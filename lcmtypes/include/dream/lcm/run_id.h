@@ -21,4 +21,11 @@ std::string RunIdText(int64_t run_id);
 /// differ in their ids by design. Returns whether it zeroed one.
 bool ClearRunId(std::vector<uint8_t>* encoded);
 
+/// ClearRunId, and zeroes the sending agents' ids too (velocity_command_t,
+/// radio_message_t, robot_fault_t, applied_commands_t: each agent process
+/// draws its own at random), by decoding and encoding again; bytes that do
+/// not decode are left as they are. Two runs of one seed are then equal
+/// byte for byte (dream log diff).
+void ClearRandomIds(std::vector<uint8_t>* encoded);
+
 }  // namespace dream::lcm
