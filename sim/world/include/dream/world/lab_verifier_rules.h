@@ -24,7 +24,8 @@ namespace dream::sim {
 ///
 /// What is "declared" is what `dream export` writes into UPLOAD.txt from the
 /// submission's parameters: the robot count and (experiment steps + settle
-/// steps) x 0.033 s.
+/// steps) x 0.033 s. `dream import` holds a lab run to that, or to what the
+/// user says was declared (--declared-robots, --declared-duration).
 struct LabVerifierRules {
   /// What the user declares when submitting.
   struct Declaration {
