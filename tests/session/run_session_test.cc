@@ -11,6 +11,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -101,6 +102,10 @@ TEST_F(RunSessionTest, WritesEveryOutputAndBuildsTheFactoryOnce) {
   EXPECT_EQ(summary["goal"]["judged"], false);  // the kind has no goal of its own
   EXPECT_THAT(report_.str(), HasSubstr("log:     " + out() + "/run.lcmlog"));
   EXPECT_THAT(report_.str(), HasSubstr("picture: " + out() + "/trajectories.png"));
+  // One session, one run: a second would overwrite the first's folder.
+  lcm::LcmBus again("memq://");
+  EXPECT_THROW(session.Run(again, {out(), "another config\n"}), std::logic_error);
+  EXPECT_EQ(sim::ReadFileText(out() + "/config.yaml"), "the folder's config\n");
   // Nothing left half written.
   for (const auto& entry : fs::directory_iterator(out())) {
     EXPECT_EQ(entry.path().extension() == ".part" || entry.path().string().find(".tmp") != std::string::npos, false)

@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include <optional>
+#include <stdexcept>
 #include <utility>
 
 #include "dream/bridge/controller_module_copy.h"
@@ -98,6 +99,8 @@ RunResult RunSession::Run(lcm::LcmInterface& lcm, const Folder& folder) {
 }
 
 RunResult RunSession::Run(lcm::LcmInterface& lcm, const Folder& folder, const GivenWorld& world) {
+  if (ran_) throw std::logic_error("RunSession::Run: a session runs once (" + config_.name + ")");
+  ran_ = true;
   const Stepped stepped = Step(lcm, folder, world);
   return Report(stepped, folder.dir);
 }
@@ -112,6 +115,7 @@ RunSession::Stepped RunSession::Step(lcm::LcmInterface& lcm, const Folder& folde
   {
     sim::RunRecorder recorder(log_path);
     stepped.world = given.make(recorder);
+    if (stepped.world == nullptr) throw std::logic_error("RunSession: the given world's make() returned none");
     // A realistic world's log keeps the truth on DREAM_POSES, the agents' view on DREAM_MEASURED_POSES.
     std::optional<sim::TruePoseRecording> truth;
     if (const auto* realistic = dynamic_cast<const sim::RealisticWorld*>(stepped.world.get())) {

@@ -74,7 +74,8 @@ class RunSession {
   /// the realistic world, with true and measured poses both recorded) on
   /// `lcm` until the run ends, then judges and reports it.
   RunResult Run(lcm::LcmInterface& lcm, const Folder& folder);
-  /// The same with `world` instead of the config's.
+  /// The same with `world` instead of the config's. A session runs once:
+  /// @throws std::logic_error when called again.
   RunResult Run(lcm::LcmInterface& lcm, const Folder& folder, const GivenWorld& world);
 
  private:
@@ -90,6 +91,7 @@ class RunSession {
   Options options_;
   std::unique_ptr<agents::ControllerFactory> factory_;
   std::string factory_error_;
+  bool ran_ = false;
 };
 
 }  // namespace dream::session
