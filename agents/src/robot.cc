@@ -26,15 +26,15 @@ std::optional<std::vector<uint8_t>> Robot::OnRadio(const std::vector<RadioMessag
   return std::nullopt;
 }
 
-void Robot::CountBadRadioMessage(const RadioMessage& message) {
-  ++bad_radio_messages_;
-  ++bad_radio_messages_by_sender_[message.sender_id];
+long Robot::bad_radio_messages() const {
+  long total = 0;
+  for (const auto& [sender, count] : bad_radio_messages_by_sender_) total += count;
+  return total;
 }
 
-void Robot::CountBadRadioMessage() {
-  ++bad_radio_messages_;
-  ++bad_radio_messages_by_sender_[kUnknownSender];
-}
+void Robot::CountBadRadioMessage(const RadioMessage& message) { ++bad_radio_messages_by_sender_[message.sender_id]; }
+
+void Robot::CountBadRadioMessage() { ++bad_radio_messages_by_sender_[kUnknownSender]; }
 
 UnicycleCommand Robot::DxiToDxu(const Eigen::Vector2d& dxi_mps, double theta_rad, const RobotParams& params) {
   const double c = std::cos(theta_rad);

@@ -209,7 +209,6 @@ class Robot:
         self.config = config
         self.movement = MovementReading(0, [])
         self.obstacles = ObstacleReading(0, [], [])
-        self.bad_radio_messages = 0
         self.bad_radio_messages_by_sender = {}
         self._odometry = None
         self._actuator_limits = ActuatorLimits(params.limits)
@@ -240,6 +239,11 @@ class Robot:
         return False
 
     @property
+    def bad_radio_messages(self):
+        """Radio payloads this robot could not decode: the sum over bad_radio_messages_by_sender."""
+        return sum(self.bad_radio_messages_by_sender.values())
+
+    @property
     def has_odometry(self):
         return self._odometry is not None
 
@@ -261,5 +265,4 @@ class Robot:
         """Counts a radio message this robot could not decode (it is dropped); by its sender
         when the message is given."""
         sender = message.sender_id if message is not None else Robot.UNKNOWN_SENDER
-        self.bad_radio_messages += 1
         self.bad_radio_messages_by_sender[sender] = self.bad_radio_messages_by_sender.get(sender, 0) + 1

@@ -47,8 +47,9 @@ class Robot {
   /// True once the robot considers its task complete.
   virtual bool done() const { return false; }
 
-  /// Radio payloads this robot could not decode (malformed neighbour messages).
-  long bad_radio_messages() const { return bad_radio_messages_; }
+  /// Radio payloads this robot could not decode (malformed neighbour messages):
+  /// the sum over bad_radio_messages_by_sender().
+  long bad_radio_messages() const;
   /// The same, per sender id; kUnknownSender counts those reported without
   /// their message. The agent host logs them by the sender's channel.
   const std::map<int, long>& bad_radio_messages_by_sender() const { return bad_radio_messages_by_sender_; }
@@ -84,7 +85,6 @@ class Robot {
   std::optional<OdometryReading> odometry_;
   MovementReading movement_;
   ObstacleReading obstacles_;
-  long bad_radio_messages_ = 0;
   std::map<int, long> bad_radio_messages_by_sender_;
 };
 
