@@ -217,11 +217,12 @@ std::optional<VerdictReason> RealisticWorld::TrackerLossReason() const {
     robots += (robots.empty() ? "" : ", ") + std::to_string(loss.robot_id) + " (from step " +
               std::to_string(loss.step) + ")";
   }
+  const bool one = tracker_losses_.size() == 1;
   return VerdictReason{"tracker_lost", RunVerdict::kWarning,
-                       std::string(tracker_losses_.size() == 1 ? "robot " : "robots ") + robots +
+                       std::string(one ? "robot " : "robots ") + robots +
                            " lost to the tracker: no new pose for over " + PrintfText("%g s", realism_.tracker_drop_s) +
-                           " (world.realism tracker_drop_s), so their agents were sent the last pose for the rest "
-                           "of the run",
+                           " (world.realism tracker_drop_s), so " + (one ? "its agent was" : "their agents were") +
+                           " sent the last pose for the rest of the run",
                        "summary.json realism_stats; dream log echo RUN DREAM_MEASURED_POSES shows what the agents saw"};
 }
 
