@@ -74,19 +74,11 @@ HrvoExact::HrvoExact(const HrvoParams& params, const HrvoExactTuning& tuning) : 
   keep_right_sin_ = std::sin(tuning_.keep_right_rad);
 }
 
-HrvoExact::Box HrvoExact::VelocityBox(const Eigen::Vector2d& position_m) const {
+HrvoExact::Box HrvoExact::ArenaBox(const Eigen::Vector2d& position_m) const {
   if (!params_.check_boundaries) return {Eigen::Vector2d(-kInf, -kInf), Eigen::Vector2d(kInf, kInf)};
-  const double h = params_.boundary_horizon_s;
-  const double m = tuning_.wall_margin_m;
-  Box box{Eigen::Vector2d((params_.x_min_m + m - position_m.x()) / h + kBoxMargin,
-                          (params_.y_min_m + m - position_m.y()) / h + kBoxMargin),
-          Eigen::Vector2d((params_.x_max_m - m - position_m.x()) / h - kBoxMargin,
-                          (params_.y_max_m - m - position_m.y()) / h - kBoxMargin)};
-  // A robot already outside (or on the edge) may stop or head back in, never
-  // further out; the box always holds zero.
-  box.lo = box.lo.cwiseMin(Eigen::Vector2d::Zero());
-  box.hi = box.hi.cwiseMax(Eigen::Vector2d::Zero());
-  return box;
+  return VelocityBox::KeepingInside(Eigen::Vector2d(params_.x_min_m, params_.y_min_m),
+                                    Eigen::Vector2d(params_.x_max_m, params_.y_max_m), position_m,
+                                    tuning_.wall_margin_m, params_.boundary_horizon_s, kBoxMargin);
 }
 
 bool HrvoExact::InBox(const Box& box, const Eigen::Vector2d& v) const {
@@ -262,7 +254,7 @@ Eigen::Vector2d HrvoExact::SafeVelocity(const Eigen::Vector2d& position_m, const
     const bool pass_left = HrvoCone::PassesLeft(n.relative_position_m, current, n.velocity_mps);
     cones_.push_back(HrvoCone::Hybrid(n, current, params_.safety_radius_m, pass_left));
   }
-  const Box box = VelocityBox(Finite(position_m) ? position_m : Eigen::Vector2d::Zero());
+  const Box box = ArenaBox(Finite(position_m) ? position_m : Eigen::Vector2d::Zero());
   const double v_max = params_.max_speed_mps;
 
   // Usually the preferred velocity (at most max speed) is already safe.

@@ -3,24 +3,21 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dream/agents/geometry/velocity_box.h"
+
 namespace dream::agents {
 
 UnicycleCommand UnicycleWallGuard::Apply(const Eigen::Vector3d& pose, const UnicycleCommand& command) const {
   if (!pose.allFinite() || !std::isfinite(command.v_mps)) return command;
-  const double h = params_.horizon_s;
-  const double m = params_.margin_m;
-  // Allowed planar velocities: a box holding zero (a robot already past the
-  // margin may stop or head back in, never further out).
-  const Eigen::Vector2d lo(std::min(0.0, (params_.x_min_m + m - pose.x()) / h),
-                           std::min(0.0, (params_.y_min_m + m - pose.y()) / h));
-  const Eigen::Vector2d hi(std::max(0.0, (params_.x_max_m - m - pose.x()) / h),
-                           std::max(0.0, (params_.y_max_m - m - pose.y()) / h));
+  const VelocityBox box = VelocityBox::KeepingInside(Eigen::Vector2d(params_.x_min_m, params_.y_min_m),
+                                                     Eigen::Vector2d(params_.x_max_m, params_.y_max_m),
+                                                     pose.head<2>(), params_.margin_m, params_.horizon_s);
   const Eigen::Vector2d driven = command.v_mps * Eigen::Vector2d(std::cos(pose.z()), std::sin(pose.z()));
   // Largest scale in [0, 1] keeping scale * driven inside the box.
   double scale = 1.0;
   for (int k = 0; k < 2; ++k) {
-    if (driven[k] < lo[k]) scale = std::min(scale, lo[k] / driven[k]);
-    if (driven[k] > hi[k]) scale = std::min(scale, hi[k] / driven[k]);
+    if (driven[k] < box.lo[k]) scale = std::min(scale, box.lo[k] / driven[k]);
+    if (driven[k] > box.hi[k]) scale = std::min(scale, box.hi[k] / driven[k]);
   }
   return {std::max(0.0, scale) * command.v_mps, command.w_radps};
 }

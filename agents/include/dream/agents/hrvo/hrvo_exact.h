@@ -7,6 +7,7 @@
 
 #include "dream/agents/hrvo/hrvo_avoidance.h"
 #include "dream/agents/hrvo/hrvo_cone.h"
+#include "dream/agents/geometry/velocity_box.h"
 #include "dream/agents/hrvo/hrvo_params.h"
 
 namespace dream::agents {
@@ -77,10 +78,7 @@ class HrvoExact final : public HrvoAvoidance {
   const HrvoExactTuning& tuning() const { return tuning_; }
 
  private:
-  struct Box {
-    Eigen::Vector2d lo;
-    Eigen::Vector2d hi;
-  };
+  using Box = VelocityBox;
   // A stretch o + t u, t in [lo, hi], of a wedge leg (cone = its index) or a
   // box edge (cone = -1); bound_sq: its nearest point's squared distance to
   // the target.
@@ -99,7 +97,7 @@ class HrvoExact final : public HrvoAvoidance {
     bool found = false;
   };
 
-  Box VelocityBox(const Eigen::Vector2d& position_m) const;
+  Box ArenaBox(const Eigen::Vector2d& position_m) const;
   bool InBox(const Box& box, const Eigen::Vector2d& v) const;
   bool Free(const Eigen::Vector2d& v) const;
   void Offer(const Eigen::Vector2d& v, const Eigen::Vector2d& target, Best* best) const;
