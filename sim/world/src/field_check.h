@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "dream/world/printf_text.h"
@@ -23,6 +24,15 @@ inline bool Fail(std::string* error, const std::string& field, double value, con
 inline bool FailWithText(std::string* error, const std::string& message) {
   if (error != nullptr) *error = message;
   return false;
+}
+
+// `params` when its IsValid() holds, else std::invalid_argument "<owner>: <IsValid's message>":
+// for constructors' member initialisers, so no part is built from bad params.
+template <typename Params>
+const Params& Checked(const std::string& owner, const Params& params) {
+  std::string error;
+  if (!params.IsValid(&error)) throw std::invalid_argument(owner + ": " + error);
+  return params;
 }
 
 inline bool IsPositiveFinite(double value) { return std::isfinite(value) && value > 0.0; }

@@ -58,9 +58,8 @@ std::string Metres(double value) { return field_check::FormatValue(value); }
 
 // Every check of the constructor's arguments, before the members are built.
 const WorldParams& ValidatedWorld(const WorldParams& world, const InitialPoseParams& params) {
-  std::string error;
-  if (!world.IsValid(&error)) throw std::invalid_argument("InitialPoseGenerator: " + error);
-  if (!params.IsValid(&error)) throw std::invalid_argument("InitialPoseGenerator: " + error);
+  field_check::Checked("InitialPoseGenerator", world);
+  field_check::Checked("InitialPoseGenerator", params);
   // Two robots facing each other have collision centres spacing - 2 * offset
   // apart; that must stay above the collision diameter.
   const double min_safe_spacing_m = world.collision_diameter_m + 2.0 * world.collision_offset_m;

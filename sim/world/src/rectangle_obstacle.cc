@@ -6,11 +6,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "field_check.h"
+
 namespace dream::sim {
 
 RectangleObstacle::RectangleObstacle(const RectangleObstacleSpec& spec) : spec_(spec), center_m_(spec.center_m) {
-  std::string error;
-  if (!spec.IsValid(&error)) throw std::invalid_argument("RectangleObstacle: " + error);
+  field_check::Checked("RectangleObstacle", spec);
   if (!spec.path.has_value()) return;
 
   // Turn either mode into one closed cycle of legs, skipping zero-length legs.

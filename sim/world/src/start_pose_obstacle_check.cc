@@ -4,20 +4,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "field_check.h"
+
 namespace dream::sim {
-namespace {
-
-const WorldParams& ValidatedParams(const WorldParams& world) {
-  std::string error;
-  if (!world.IsValid(&error)) throw std::invalid_argument("StartPoseObstacleCheck: " + error);
-  return world;
-}
-
-}  // namespace
 
 StartPoseObstacleCheck::StartPoseObstacleCheck(const WorldParams& world,
                                                const std::vector<RectangleObstacleSpec>& obstacle_specs)
-    : collision_offset_m_(ValidatedParams(world).collision_offset_m),
+    : collision_offset_m_(field_check::Checked("StartPoseObstacleCheck", world).collision_offset_m),
       collision_radius_m_(world.collision_diameter_m / 2.0),
       obstacles_(RectangleObstacle::BuildAll(obstacle_specs, "StartPoseObstacleCheck", "obstacles")) {}
 

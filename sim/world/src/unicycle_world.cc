@@ -10,6 +10,7 @@
 
 #include "collision_grid.h"
 #include "dream/world/unicycle_kinematics.h"
+#include "field_check.h"
 #include "world_argument_check.h"
 
 namespace dream::sim {
@@ -25,17 +26,11 @@ int64_t CommandHoldSteps(double time_step_s, double command_timeout_s) {
   return n;
 }
 
-const WorldParams& ValidatedParams(const WorldParams& params) {
-  std::string error;
-  if (!params.IsValid(&error)) throw std::invalid_argument("UnicycleWorld: " + error);
-  return params;
-}
-
 }  // namespace
 
 UnicycleWorld::UnicycleWorld(const WorldParams& params, std::vector<Pose2> initial_poses,
                              const std::vector<RectangleObstacleSpec>& obstacle_specs)
-    : params_(ValidatedParams(params)),
+    : params_(field_check::Checked("UnicycleWorld", params)),
       poses_(std::move(initial_poses)),
       velocities_(poses_.size()),
       obstacles_(RectangleObstacle::BuildAll(obstacle_specs, "UnicycleWorld", "obstacle_specs")),

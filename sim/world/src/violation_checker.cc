@@ -7,20 +7,12 @@
 
 #include "collision_grid.h"
 #include "dream/world/unicycle_kinematics.h"
+#include "field_check.h"
 
 namespace dream::sim {
-namespace {
-
-const WorldParams& ValidatedParams(const WorldParams& params) {
-  std::string error;
-  if (!params.IsValid(&error)) throw std::invalid_argument("ViolationChecker: " + error);
-  return params;
-}
-
-}  // namespace
 
 ViolationChecker::ViolationChecker(const WorldParams& params, int num_robots)
-    : params_(ValidatedParams(params)),
+    : params_(field_check::Checked("ViolationChecker", params)),
       num_robots_(static_cast<std::size_t>(std::max(num_robots, 0))),
       center_x_m_(num_robots_),
       center_y_m_(num_robots_),
