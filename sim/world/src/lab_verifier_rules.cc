@@ -7,6 +7,16 @@ namespace {
 
 std::string Seconds(double seconds) { return PrintfText("%.2f s", seconds); }
 
+// A count the lab's verifier caps, over its cap: "robots were <what> <count>
+// times (<counted>); ..." and where to look (summary.json's `summary_key`).
+VerdictReason OverVerifierLimit(const std::string& rule, const std::string& what, int64_t count,
+                                const std::string& counted, int64_t limit, const std::string& summary_key) {
+  return {rule, RunVerdict::kRejected,
+          "robots were " + what + " " + std::to_string(count) + " times (" + counted +
+              "); the lab's verifier refuses more than " + std::to_string(limit),
+          "summary.json violations." + summary_key + "; dream render RUN to see where"};
+}
+
 }  // namespace
 
 std::vector<VerdictReason> LabVerifierRules::Check(const Declaration& declared, const Counts& counts) const {
@@ -19,18 +29,13 @@ std::vector<VerdictReason> LabVerifierRules::Check(const Declaration& declared, 
                        "declare the robot count UPLOAD.txt gives"});
   }
   if (counts.robots_too_close > robots_too_close_limit) {
-    reasons.push_back({"verifier_too_close", RunVerdict::kRejected,
-                       "robots were too close " + std::to_string(counts.robots_too_close) +
-                           " times (pairs x steps); the lab's verifier refuses more than " +
-                           std::to_string(robots_too_close_limit),
-                       "summary.json violations.collision_errors; dream render RUN to see where"});
+    reasons.push_back(OverVerifierLimit("verifier_too_close", "too close", counts.robots_too_close, "pairs x steps",
+                                        robots_too_close_limit, "collision_errors"));
   }
   if (counts.robots_outside_boundaries > robots_outside_boundaries_limit) {
-    reasons.push_back({"verifier_out_of_bounds", RunVerdict::kRejected,
-                       "robots were outside the arena " + std::to_string(counts.robots_outside_boundaries) +
-                           " times (robots x steps); the lab's verifier refuses more than " +
-                           std::to_string(robots_outside_boundaries_limit),
-                       "summary.json violations.boundary_errors; dream render RUN to see where"});
+    reasons.push_back(OverVerifierLimit("verifier_out_of_bounds", "outside the arena",
+                                        counts.robots_outside_boundaries, "robots x steps",
+                                        robots_outside_boundaries_limit, "boundary_errors"));
   }
   const double run_s = static_cast<double>(counts.iterations) * time_step_s;
   if (run_s > duration_factor * declared.duration_s) {
