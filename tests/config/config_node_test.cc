@@ -179,5 +179,16 @@ TEST(ConfigNodeTest, RunConfigTypeErrorsNeverShowYamlCppText) {
   }
 }
 
+TEST(ConfigNodeTest, GetChoiceGivesTheNamedValueOrTheFallbackAndNamesTheAllowedNames) {
+  enum class Mode { kLoop, kPingPong };
+  const auto choose = [](const ConfigNode& node) {
+    return node.GetChoice<Mode>("mode", "loop", "path mode", {{"loop", Mode::kLoop}, {"ping_pong", Mode::kPingPong}});
+  };
+  EXPECT_EQ(choose(ConfigNode::LoadString("mode: ping_pong\n", "test.yaml")), Mode::kPingPong);
+  EXPECT_EQ(choose(ConfigNode::LoadString("other: 1\n", "test.yaml")), Mode::kLoop);
+  EXPECT_EQ(ReadError("other: 1\nmode: bounce\n", [&choose](const ConfigNode& root) { choose(root); }),
+            "test.yaml:2: mode: unknown path mode 'bounce'; allowed: loop, ping_pong");
+}
+
 }  // namespace
 }  // namespace dream::config

@@ -131,11 +131,8 @@ AffineFormationBuilder::AffineFormationBuilder(const ConfigNode& section, int nu
   }
   CheckPlan(section.Required("maneuver"), maneuver_, formation_->nominal_m(), hrvo_.hrvo, min_spacing_m);
 
-  const std::string drive = section.GetString("drive", "reversible");
-  if (drive != "reversible" && drive != "thesis") {
-    section.Required("drive").Fail("unknown drive '" + drive + "'; allowed: reversible, thesis");
-  }
-  leader_.reversible_drive = follower_.reversible_drive = drive == "reversible";
+  leader_.reversible_drive = follower_.reversible_drive =
+      section.GetChoice<bool>("drive", "reversible", "drive", {{"reversible", true}, {"thesis", false}});
 
   leader_.maneuver = maneuver_;
   leader_.time_step_s = time_step_s;
@@ -152,14 +149,9 @@ AffineFormationBuilder::AffineFormationBuilder(const ConfigNode& section, int nu
   if (follower.IsDefined()) {
     follower.RejectUnknownKeys(
         {"law", "gain", "max_speed_mps", "hrvo_engage_distance_m", "hrvo_horizon_s", "max_message_age_steps"});
-    const std::string law = follower.GetString("law", "zhao");
-    if (law == "zhao") {
-      follower_.law = AffineFollowerParams::Law::kZhao;
-    } else if (law == "thesis") {
-      follower_.law = AffineFollowerParams::Law::kThesis;
-    } else {
-      follower.Required("law").Fail("unknown follower law '" + law + "'; allowed: zhao, thesis");
-    }
+    follower_.law = follower.GetChoice<AffineFollowerParams::Law>(
+        "law", "zhao", "follower law",
+        {{"zhao", AffineFollowerParams::Law::kZhao}, {"thesis", AffineFollowerParams::Law::kThesis}});
     follower_.gain = follower.GetDouble("gain", follower_.gain);
     follower_.max_speed_mps = follower.GetDouble("max_speed_mps", follower_.max_speed_mps);
     follower_.hrvo_engage_distance_m = follower.GetDouble("hrvo_engage_distance_m", follower_.hrvo_engage_distance_m);

@@ -254,14 +254,9 @@ std::vector<sim::RectangleObstacleSpec> ReadObstacles(const ConfigNode& root) {
         route.waypoints_m.emplace_back(xy[0], xy[1]);
       }
       route.speed_mps = path.Required("speed_mps").AsDouble();
-      const std::string mode = path.GetString("mode", "loop");
-      if (mode == "loop") {
-        route.mode = sim::ObstaclePathMode::kLoop;
-      } else if (mode == "ping_pong") {
-        route.mode = sim::ObstaclePathMode::kPingPong;
-      } else {
-        path.Required("mode").Fail("unknown path mode '" + mode + "'; allowed: loop, ping_pong");
-      }
+      route.mode = path.GetChoice<sim::ObstaclePathMode>(
+          "mode", "loop", "path mode",
+          {{"loop", sim::ObstaclePathMode::kLoop}, {"ping_pong", sim::ObstaclePathMode::kPingPong}});
       spec.path = route;
     }
     std::string error;

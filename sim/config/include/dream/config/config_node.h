@@ -4,6 +4,7 @@
 
 #include <initializer_list>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "dream/config/config_error.h"
@@ -75,6 +76,19 @@ class ConfigNode {
   long long GetInt(const std::string& key, long long fallback) const;
   bool GetBool(const std::string& key, bool fallback) const;
   std::string GetString(const std::string& key, const std::string& fallback) const;
+  /// The value `choices` gives the name at `key` (`fallback` when absent).
+  /// @throws ConfigError at the key, "unknown <what> '<name>'; allowed: <names>".
+  template <typename Value>
+  Value GetChoice(const std::string& key, const std::string& fallback, const std::string& what,
+                  std::initializer_list<std::pair<const char*, Value>> choices) const {
+    const std::string name = GetString(key, fallback);
+    std::string allowed;
+    for (const auto& [choice, value] : choices) {
+      if (name == choice) return value;
+      allowed += (allowed.empty() ? "" : ", ") + std::string(choice);
+    }
+    Required(key).Fail("unknown " + what + " '" + name + "'; allowed: " + allowed);
+  }
 
   /// A ConfigError for this node: "file:line: key: message".
   [[noreturn]] void Fail(const std::string& message) const;
