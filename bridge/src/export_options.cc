@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace dream::bridge {
 namespace {
@@ -15,25 +16,26 @@ std::string Field(const char* name, double value, const char* range) {
   return std::string(name) + " = " + std::to_string(value) + " is out of range; allowed: " + range;
 }
 
+// Each strategy and its name on the command line, in the order help lists them.
+constexpr std::pair<Strategy, const char*> kStrategyNames[] = {
+    {Strategy::kTrack, "track"}, {Strategy::kReplay, "replay"}, {Strategy::kController, "controller"}};
+
 }  // namespace
 
 const char* StrategyName(Strategy strategy) {
-  switch (strategy) {
-    case Strategy::kTrack:
-      return "track";
-    case Strategy::kReplay:
-      return "replay";
-    case Strategy::kController:
-      return "controller";
+  for (const auto& [named, name] : kStrategyNames) {
+    if (named == strategy) return name;
   }
   return "?";
 }
 
 Strategy ParseStrategy(const std::string& text) {
-  if (text == "track") return Strategy::kTrack;
-  if (text == "replay") return Strategy::kReplay;
-  if (text == "controller") return Strategy::kController;
-  throw std::invalid_argument("unknown strategy '" + text + "'; allowed: track, replay, controller");
+  std::string allowed;
+  for (const auto& [strategy, name] : kStrategyNames) {
+    if (text == name) return strategy;
+    allowed += (allowed.empty() ? "" : ", ") + std::string(name);
+  }
+  throw std::invalid_argument("unknown strategy '" + text + "'; allowed: " + allowed);
 }
 
 bool ExportOptions::IsValid(std::string* error) const {
