@@ -3,8 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "dream/agents/framework/byte_reader.h"
-#include "dream/agents/framework/byte_writer.h"
+#include "dream/agents/experiments/position_message.h"
 #include "dream/agents/framework/number_text.h"
 #include "dream/agents/framework/params_check.h"
 
@@ -35,20 +34,6 @@ LineDeploymentRobot::LineDeploymentRobot(int id, const RobotParams& robot_params
                                          const HrvoRobotParams& hrvo_params, const LineDeploymentParams& params)
     : HrvoRobot(id, robot_params, hrvo_params), params_(CheckedParams(params)) {}
 
-std::vector<uint8_t> LineDeploymentRobot::Encode(int id, const Eigen::Vector2d& position_m) {
-  return ByteWriter().Int32(id).Double(position_m.x()).Double(position_m.y()).Take();
-}
-
-std::optional<NeighbourPosition> LineDeploymentRobot::Decode(const std::vector<uint8_t>& payload) {
-  ByteReader reader(payload);
-  NeighbourPosition neighbour;
-  neighbour.id = reader.Int32();
-  neighbour.position_m.x() = reader.Double();
-  neighbour.position_m.y() = reader.Double();
-  if (!reader.done() || neighbour.id < 0) return std::nullopt;
-  return neighbour;
-}
-
 void LineDeploymentRobot::OnMovement(const MovementReading& reading) {
   if (moving_) {
     HrvoRobot::OnMovement(reading);
@@ -64,16 +49,16 @@ void LineDeploymentRobot::OnMovement(const MovementReading& reading) {
 
 std::optional<std::vector<uint8_t>> LineDeploymentRobot::OnRadio(const std::vector<RadioMessage>& heard) {
   for (const RadioMessage& message : heard) {
-    const std::optional<NeighbourPosition> neighbour = Decode(message.payload);
     // A payload claiming another robot's id is as bad as a truncated one.
-    if (!neighbour || neighbour->id != message.sender_id) {
+    const std::optional<PositionMessage> neighbour = PositionMessage::Decode(message.payload, message.sender_id);
+    if (!neighbour) {
       CountBadRadioMessage(message);
       continue;
     }
     neighbours_[neighbour->id] = neighbour->position_m;
   }
   if (!has_odometry()) return std::nullopt;  // do not advertise a position we do not know
-  return Encode(id(), pose().head<2>());
+  return PositionMessage{id(), pose().head<2>()}.Encode();
 }
 
 std::optional<Eigen::Vector2d> LineDeploymentRobot::Target() const {

@@ -8,6 +8,7 @@
 #include "dream/agent_host/line_deployment_builder.h"
 #include "dream/agents/experiments/line_deployment_robot.h"
 #include "dream/agents/experiments/line_formation_metrics.h"
+#include "dream/agents/experiments/position_message.h"
 #include "dream/config/config_error.h"
 
 namespace dream::agents {
@@ -51,19 +52,19 @@ TEST(LineDeploymentRobotTest, KeepsGoodNeighbourPositionsAndDropsMalformedPayloa
   // Before odometry it knows no position to advertise.
   EXPECT_FALSE(robot.OnRadio({}).has_value());
   robot.OnOdometry({0, Eigen::Vector3d(0.3, -0.2, 0.0)});
-  std::vector<uint8_t> truncated = LineDeploymentRobot::Encode(3, {0.0, 0.0});
+  std::vector<uint8_t> truncated = PositionMessage{3, {0.0, 0.0}}.Encode();
   truncated.pop_back();
   const std::vector<uint8_t> not_finite = ByteWriter().Int32(3).Double(NAN).Double(0.0).Take();
   const std::optional<std::vector<uint8_t>> sent =
-      robot.OnRadio({{0, 5, LineDeploymentRobot::Encode(0, {0.1, 0.2})},
-                     {1, 5, LineDeploymentRobot::Encode(4, {9.0, 9.0})},  // claims another robot's id
+      robot.OnRadio({{0, 5, PositionMessage{0, {0.1, 0.2}}.Encode()},
+                     {1, 5, PositionMessage{4, {9.0, 9.0}}.Encode()},  // claims another robot's id
                      {3, 5, truncated},
                      {4, 5, not_finite}});
   EXPECT_EQ(robot.bad_radio_messages(), 3);
   ASSERT_EQ(robot.neighbour_positions().size(), 1u);
   EXPECT_EQ(robot.neighbour_positions().at(0), Eigen::Vector2d(0.1, 0.2));
   ASSERT_TRUE(sent.has_value());
-  const std::optional<NeighbourPosition> own = LineDeploymentRobot::Decode(*sent);
+  const std::optional<PositionMessage> own = PositionMessage::Decode(*sent, 2);
   ASSERT_TRUE(own.has_value());
   EXPECT_EQ(own->id, 2);
   EXPECT_EQ(own->position_m, Eigen::Vector2d(0.3, -0.2));
@@ -82,7 +83,7 @@ TEST(LineDeploymentRobotTest, TargetsAreClampedInsideTheArenaAndSettledRobotsRep
   LineDeploymentRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
   robot.OnOdometry({0, Eigen::Vector3d(1.0, 0.0, 0.0)});
   // Robot 1 at x = 1.4 puts robot 0's eq. 3.7 target at 1.8, past the wall.
-  robot.OnRadio({{1, 0, LineDeploymentRobot::Encode(1, {1.4, 0.95})}});
+  robot.OnRadio({{1, 0, PositionMessage{1, {1.4, 0.95}}.Encode()}});
   ASSERT_TRUE(robot.Target().has_value());
   EXPECT_NEAR(robot.Target()->x(), 1.6 - 0.15, 1e-15);
   EXPECT_NEAR(robot.Target()->y(), 1.0 - 0.15, 1e-15);
@@ -103,7 +104,7 @@ TEST(LineDeploymentRobotTest, AStillRobotDodgesOnlyNeighboursWithinHoldAvoidRang
   LineDeploymentRobot robot(0, RobotParams{}, HrvoRobotParams{}, LineDeploymentParams{});
   robot.OnOdometry({0, Eigen::Vector3d(0.0, 0.0, 0.0)});
   // Robot 1 at (-0.4, 0): robot 0's target is exactly where it stands.
-  robot.OnRadio({{1, 0, LineDeploymentRobot::Encode(1, {-0.4, 0.0})}});
+  robot.OnRadio({{1, 0, PositionMessage{1, {-0.4, 0.0}}.Encode()}});
   UnicycleCommand command = robot.Update(1);
   EXPECT_EQ(command.v_mps, 0.0);
   EXPECT_EQ(command.w_radps, 0.0);

@@ -65,11 +65,8 @@ class LineDeploymentRobot final : public HrvoRobot {
   /// The eq. 3.7 target from the neighbours heard so far, clamped into the
   /// arena less arena_margin_m.
   std::optional<Eigen::Vector2d> Target() const;
+  /// Neighbours' positions by id, from their radio payloads (PositionMessage).
   const std::map<int, Eigen::Vector2d>& neighbour_positions() const { return neighbours_; }
-
-  /// The radio payload for (id, x, y); Decode returns nothing when malformed.
-  static std::vector<uint8_t> Encode(int id, const Eigen::Vector2d& position_m);
-  static std::optional<NeighbourPosition> Decode(const std::vector<uint8_t>& payload);
 
  private:
   LineDeploymentParams params_;

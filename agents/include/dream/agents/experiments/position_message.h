@@ -7,7 +7,7 @@
 
 namespace dream::agents {
 
-/// The Voronoi robots' radio payload: who I am and where I am.
+/// The Voronoi and line deployment robots' radio payload: who I am and where I am.
 /// Wire format (ByteWriter): int32 id, double x m, double y m (20 bytes).
 struct PositionMessage {
   int32_t id = 0;
