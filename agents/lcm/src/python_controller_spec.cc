@@ -52,26 +52,24 @@ Json PartsJson(const AgentPartsConfig& parts) {
                 {"vel_gain", parts.robot.vel_gain},
                 {"ang_gain", parts.robot.ang_gain}};
   Json sensors = Json::array();
+  static const char* const kSensorKinds[] = {"odometry", "movement", "obstacle"};
   for (const SensorConfig& sensor : parts.sensors) {
-    Json entry;
+    // What every sensor has, then its own params.
+    Json entry = {{"kind", kSensorKinds[static_cast<int>(sensor.kind)]},
+                  {"period_steps", PerRobot(sensor.period_steps)}};
     switch (sensor.kind) {
       case SensorConfig::Kind::kOdometry:
-        entry = {{"kind", "odometry"}, {"period_steps", PerRobot(sensor.period_steps)},
-                 {"noise_std", sensor.odometry.noise_std}};
+        entry["noise_std"] = sensor.odometry.noise_std;
         break;
       case SensorConfig::Kind::kMovement:
-        entry = {{"kind", "movement"},
-                 {"period_steps", PerRobot(sensor.period_steps)},
-                 {"range_m", sensor.movement.range_m},
-                 {"direction_rad", sensor.movement.direction_rad},
-                 {"field_of_view_rad", sensor.movement.field_of_view_rad},
-                 {"noise_std", sensor.movement.noise_std}};
+        entry["range_m"] = sensor.movement.range_m;
+        entry["direction_rad"] = sensor.movement.direction_rad;
+        entry["field_of_view_rad"] = sensor.movement.field_of_view_rad;
+        entry["noise_std"] = sensor.movement.noise_std;
         break;
       case SensorConfig::Kind::kObstacle:
-        entry = {{"kind", "obstacle"},
-                 {"period_steps", PerRobot(sensor.period_steps)},
-                 {"range_m", sensor.obstacle.range_m},
-                 {"noise_std", sensor.obstacle.noise_std}};
+        entry["range_m"] = sensor.obstacle.range_m;
+        entry["noise_std"] = sensor.obstacle.noise_std;
         break;
     }
     sensors.push_back(entry);
