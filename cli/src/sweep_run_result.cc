@@ -30,10 +30,8 @@ SweepRunResult SweepRunResult::Judge(const SweepPlan::Run& run, int exit_code, b
     result.steps = Count(summary, "steps");
     const nlohmann::json violations = summary.contains("violations") ? summary["violations"] : nlohmann::json::object();
     if (violations.is_object()) {
-      result.boundary_errors = Count(violations, "boundary_errors");
-      result.collision_errors = Count(violations, "collision_errors");
-      result.actuator_errors = Count(violations, "actuator_errors");
-      result.obstacle_collisions = Count(violations, "obstacle_collisions");
+      result.violations = {Count(violations, "boundary_errors"), Count(violations, "collision_errors"),
+                           Count(violations, "actuator_errors"), Count(violations, "obstacle_collisions")};
     }
     const nlohmann::json metrics = summary.contains("metrics") ? summary["metrics"] : nlohmann::json::object();
     if (metrics.is_object() && metrics.contains("min_pairwise_distance_m") &&
@@ -76,9 +74,11 @@ std::string SweepRunResult::OutcomeText() const {
   if (success) return "success";
   std::string why;
   auto add = [&why](const std::string& part) { why += (why.empty() ? "" : "; ") + part; };
-  if (collision_errors > 0) add(std::to_string(collision_errors) + " collision errors");
-  if (obstacle_collisions > 0) add(std::to_string(obstacle_collisions) + " obstacle collisions");
-  if (boundary_errors > 0) add(std::to_string(boundary_errors) + " boundary errors");
+  if (violations.collision_errors > 0) add(std::to_string(violations.collision_errors) + " collision errors");
+  if (violations.obstacle_collisions > 0) {
+    add(std::to_string(violations.obstacle_collisions) + " obstacle collisions");
+  }
+  if (violations.boundary_errors > 0) add(std::to_string(violations.boundary_errors) + " boundary errors");
   if (verdict == "rejected" && why.empty()) add("rejected by the Robotarium checks");
   if (!goal.met) add(goal.detail);
   return "no success (" + why + ")";

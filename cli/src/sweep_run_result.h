@@ -5,6 +5,7 @@
 #include <string>
 
 #include "dream/session/experiment_goal.h"
+#include "dream/world/violation_counts.h"
 #include "sweep_plan.h"
 
 namespace dream::cli {
@@ -33,10 +34,7 @@ struct SweepRunResult {
   std::string end;      ///< summary "end"
   std::string verdict;  ///< summary "verdict": clean, warning, rejected
   long long steps = 0;
-  long long boundary_errors = 0;
-  long long collision_errors = 0;
-  long long actuator_errors = 0;
-  long long obstacle_collisions = 0;
+  sim::ViolationCounts violations;  ///< summary "violations"
   std::optional<double> min_distance_m;  ///< metrics.min_pairwise_distance_m (robot centres)
   session::ExperimentGoal goal;
   bool success = false;
@@ -55,7 +53,7 @@ struct SweepRunResult {
   /// why): "success", "no success", "failed to run (...)", "interrupted".
   std::string ShortOutcomeText() const;
   /// Collision errors plus robot-obstacle collisions.
-  long long collisions() const { return collision_errors + obstacle_collisions; }
+  long long collisions() const { return violations.collision_errors + violations.obstacle_collisions; }
 };
 
 }  // namespace dream::cli

@@ -87,10 +87,7 @@ SweepSummary SweepTable::Summary() const {
       s.worst_min_distance_m = *r.min_distance_m;
       s.worst_min_distance_run = r.run.name;
     }
-    s.boundary_errors += r.boundary_errors;
-    s.collision_errors += r.collision_errors;
-    s.actuator_errors += r.actuator_errors;
-    s.obstacle_collisions += r.obstacle_collisions;
+    s.violations += r.violations;
   }
   const size_t judged = s.ran + s.failed;
   s.success_rate = judged > 0 ? static_cast<double>(s.succeeded) / static_cast<double>(judged) : 0.0;
@@ -110,9 +107,9 @@ std::string SweepTable::Csv() const {
     csv += std::string(",") + StatusName(r.status) + "," + (r.success ? "true" : "false") + "," +
            std::to_string(r.exit_code) + "," + CsvField(r.end) + "," + CsvField(r.verdict) + "," +
            std::to_string(r.steps) + "," + StepOrEmpty(r.goal.completion_step, "") + "," +
-           (r.min_distance_m ? Fixed(*r.min_distance_m, 4) : std::string()) + "," + std::to_string(r.boundary_errors) +
-           "," + std::to_string(r.collision_errors) + "," + std::to_string(r.actuator_errors) + "," +
-           std::to_string(r.obstacle_collisions) + "," + (r.has_summary ? (r.goal.met ? "true" : "false") : "") + "," +
+           (r.min_distance_m ? Fixed(*r.min_distance_m, 4) : std::string()) + "," + std::to_string(r.violations.boundary_errors) +
+           "," + std::to_string(r.violations.collision_errors) + "," + std::to_string(r.violations.actuator_errors) + "," +
+           std::to_string(r.violations.obstacle_collisions) + "," + (r.has_summary ? (r.goal.met ? "true" : "false") : "") + "," +
            CsvField(r.goal.detail) + "," + Fixed(r.wall_time_s, 2) + "," + CsvField(r.problem) + "\n";
   }
   return csv;
@@ -137,9 +134,9 @@ std::string SweepTable::SummaryMarkdown(const std::vector<std::pair<std::string,
         (s.has_min_distance ? Fixed(s.worst_min_distance_m, 4) + " m (" + s.worst_min_distance_run + ")"
                             : std::string("-")) +
         " |\n";
-  md += "| violations, all runs | boundary " + std::to_string(s.boundary_errors) + ", collision " +
-        std::to_string(s.collision_errors) + ", actuator " + std::to_string(s.actuator_errors) + ", obstacle " +
-        std::to_string(s.obstacle_collisions) + " |\n";
+  md += "| violations, all runs | boundary " + std::to_string(s.violations.boundary_errors) + ", collision " +
+        std::to_string(s.violations.collision_errors) + ", actuator " + std::to_string(s.violations.actuator_errors) + ", obstacle " +
+        std::to_string(s.violations.obstacle_collisions) + " |\n";
   return md;
 }
 
@@ -157,8 +154,8 @@ std::string SweepTable::Markdown(const std::string& title,
     for (const auto& parameter : r.run.parameters) md += " " + MarkdownCell(parameter.second) + " |";
     md += " " + MarkdownCell(r.ShortOutcomeText()) + " | " + std::to_string(r.steps) + " | " +
           StepOrEmpty(r.goal.completion_step, "-") + " | " + (r.min_distance_m ? Fixed(*r.min_distance_m, 4) : "-") +
-          " | " + std::to_string(r.boundary_errors) + " | " + std::to_string(r.collision_errors) + " | " +
-          std::to_string(r.actuator_errors) + " | " + std::to_string(r.obstacle_collisions) + " | " +
+          " | " + std::to_string(r.violations.boundary_errors) + " | " + std::to_string(r.violations.collision_errors) + " | " +
+          std::to_string(r.violations.actuator_errors) + " | " + std::to_string(r.violations.obstacle_collisions) + " | " +
           MarkdownCell(r.has_summary ? r.goal.detail : "-") + " |\n";
   }
   return md;

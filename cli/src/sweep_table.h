@@ -25,10 +25,7 @@ struct SweepSummary {
   bool has_min_distance = false;
   double worst_min_distance_m = 0.0;  ///< the smallest min_pairwise_distance_m of any run
   std::string worst_min_distance_run;
-  long long boundary_errors = 0;
-  long long collision_errors = 0;
-  long long actuator_errors = 0;
-  long long obstacle_collisions = 0;
+  sim::ViolationCounts violations;  ///< summed over every run
 };
 
 /// One row per run, in plan order, written as CSV (for scripts) and Markdown

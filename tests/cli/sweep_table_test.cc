@@ -126,8 +126,8 @@ TEST(SweepTable, RowsInPlanOrderAndASummaryOfTheFigures) {
   EXPECT_EQ(s.completion_max, 2090);
   EXPECT_DOUBLE_EQ(s.worst_min_distance_m, 0.12);
   EXPECT_EQ(s.worst_min_distance_run, "seed3");
-  EXPECT_EQ(s.collision_errors, 4);
-  EXPECT_EQ(s.actuator_errors, 6);
+  EXPECT_EQ(s.violations.collision_errors, 4);
+  EXPECT_EQ(s.violations.actuator_errors, 6);
 
   const std::string md = table.SummaryMarkdown({{"command", "dream sweep a|b"}});
   EXPECT_NE(md.find("| command | dream sweep a\\|b |"), std::string::npos) << md;

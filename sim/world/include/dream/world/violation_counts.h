@@ -20,6 +20,15 @@ struct ViolationCounts {
   // Errors that make the Robotarium reject a run (plus obstacle overlaps).
   int64_t hard_errors() const { return boundary_errors + collision_errors + obstacle_collisions; }
 
+  // Adds `other`'s counts (a sweep's totals over its runs).
+  ViolationCounts& operator+=(const ViolationCounts& other) {
+    boundary_errors += other.boundary_errors;
+    collision_errors += other.collision_errors;
+    actuator_errors += other.actuator_errors;
+    obstacle_collisions += other.obstacle_collisions;
+    return *this;
+  }
+
   friend bool operator==(const ViolationCounts& a, const ViolationCounts& b) {
     return a.boundary_errors == b.boundary_errors && a.collision_errors == b.collision_errors &&
            a.actuator_errors == b.actuator_errors && a.obstacle_collisions == b.obstacle_collisions;
