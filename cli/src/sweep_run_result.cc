@@ -1,6 +1,6 @@
 #include "sweep_run_result.h"
 
-#include <cstdio>
+#include "dream/world/printf_text.h"
 
 namespace dream::cli {
 namespace {
@@ -43,9 +43,7 @@ SweepRunResult SweepRunResult::Judge(const SweepPlan::Run& run, int exit_code, b
 
   const std::string hint = failure_hint.empty() ? std::string() : ": " + failure_hint;
   if (timed_out) {
-    char seconds[32];
-    std::snprintf(seconds, sizeof(seconds), "%.0f", wall_time_s);
-    result.problem = std::string("timed out after ") + seconds + " s";
+    result.problem = "timed out after " + sim::PrintfText("%.0f", wall_time_s) + " s";
   } else if (exit_code == 130) {
     result.status = Status::kInterrupted;
     result.problem = "interrupted";
