@@ -86,12 +86,12 @@ RealisticWorld::RealisticWorld(const WorldParams& params, const RealismParams& r
 RealisticWorld::~RealisticWorld() = default;
 
 void RealisticWorld::CheckRobotId(int robot_id, const char* caller) const {
-  world_argument_check::CheckRobotId(std::string("RealisticWorld::") + caller, robot_id, num_robots());
+  world_argument_check::CheckRobotId("RealisticWorld", caller, robot_id, num_robots());
 }
 
 void RealisticWorld::SetCommand(int robot_id, const UnicycleCommand& command) {
   CheckRobotId(robot_id, "SetCommand");
-  world_argument_check::CheckCommandIsFinite("RealisticWorld::SetCommand", robot_id, command);
+  world_argument_check::CheckCommandIsFinite("RealisticWorld", robot_id, command);
   Robot& robot = robots_[static_cast<size_t>(robot_id)];
   const int64_t due_step = step() + realism_.command_latency_steps;
   if (!robot.queue.empty() && robot.queue.back().due_step == due_step) {

@@ -74,12 +74,12 @@ void UnicycleWorld::GetObstacleStates(std::vector<ObstacleState>* states) const 
 }
 
 void UnicycleWorld::CheckRobotId(int robot_id, const char* caller) const {
-  world_argument_check::CheckRobotId(std::string("UnicycleWorld::") + caller, robot_id, num_robots());
+  world_argument_check::CheckRobotId("UnicycleWorld", caller, robot_id, num_robots());
 }
 
 void UnicycleWorld::SetCommand(int robot_id, const UnicycleCommand& command) {
   CheckRobotId(robot_id, "SetCommand");
-  world_argument_check::CheckCommandIsFinite("UnicycleWorld::SetCommand", robot_id, command);
+  world_argument_check::CheckCommandIsFinite("UnicycleWorld", robot_id, command);
   velocities_[static_cast<std::size_t>(robot_id)] = command;
   command_step_[static_cast<std::size_t>(robot_id)] = step_;
 }
