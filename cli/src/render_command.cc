@@ -35,19 +35,6 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// The log to draw: RUN_OR_LOG itself, or run.lcmlog in a run folder.
-fs::path LogOf(const std::string& run_or_log) {
-  const fs::path path(run_or_log);
-  if (fs::is_directory(path)) {
-    if (!fs::is_regular_file(path / "run.lcmlog")) {
-      throw std::runtime_error(run_or_log + ": no run.lcmlog in this folder (is it a run folder?)");
-    }
-    return path / "run.lcmlog";
-  }
-  if (!fs::exists(path)) throw std::runtime_error(run_or_log + ": no such run folder or log file");
-  return path;
-}
-
 enum class Kind { kPicture, kVideo, kPlot };
 
 /// The default output beside the log: trajectories.svg, run.mp4 or
@@ -211,7 +198,7 @@ int RunRender(const RenderArgs& args) {
     std::cerr << "dream: " << e.what() << " (dream render --help)\n";
     return kExitUsage;
   }
-  const fs::path log = LogOf(args.input);
+  const fs::path log = RunLogPath(args.input);
   const fs::path out = args.out.empty() ? DefaultOutput(log, kind) : fs::path(args.out);
   const sim::RenderFormat format = *sim::RenderFormatOfPath(out.string());
   CheckOutputFolder(out);
@@ -263,7 +250,7 @@ void DeclareRenderCommand(CommandLine& line) {
       "or metrics.png (--plot) beside the log.\n"
       "Example: dream render runs/hrvo_circle --out runs/hrvo_circle/run.mp4 --radio-links",
       [args] { return RunRender(*args); });
-  command->add_option("run", args->input, "Run folder (its run.lcmlog) or an .lcmlog file")->required();
+  AddRunLogArgument(command, "run", &args->input);
   command->add_option("--out", args->out, "Output file: .png, .svg, .mp4 or .gif");
   command->add_option("--config", args->config_path,
                       "The run's config, for goals, sensors and radio (default: config.yaml beside the log)");
