@@ -17,10 +17,8 @@ std::unique_ptr<HrvoAvoidance> MakeHrvo(const HrvoRobotParams& params) {
 
 UnicycleWallGuardParams WallGuardParams(const HrvoParams& hrvo) {
   UnicycleWallGuardParams guard;
-  guard.x_min_m = hrvo.x_min_m;
-  guard.x_max_m = hrvo.x_max_m;
-  guard.y_min_m = hrvo.y_min_m;
-  guard.y_max_m = hrvo.y_max_m;
+  guard.arena_min_m = Eigen::Vector2d(hrvo.x_min_m, hrvo.y_min_m);
+  guard.arena_max_m = Eigen::Vector2d(hrvo.x_max_m, hrvo.y_max_m);
   guard.horizon_s = hrvo.boundary_horizon_s;
   return guard;
 }

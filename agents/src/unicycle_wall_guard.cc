@@ -9,9 +9,8 @@ namespace dream::agents {
 
 UnicycleCommand UnicycleWallGuard::Apply(const Eigen::Vector3d& pose, const UnicycleCommand& command) const {
   if (!pose.allFinite() || !std::isfinite(command.v_mps)) return command;
-  const VelocityBox box = VelocityBox::KeepingInside(Eigen::Vector2d(params_.x_min_m, params_.y_min_m),
-                                                     Eigen::Vector2d(params_.x_max_m, params_.y_max_m),
-                                                     pose.head<2>(), params_.margin_m, params_.horizon_s);
+  const VelocityBox box = VelocityBox::KeepingInside(params_.arena_min_m, params_.arena_max_m, pose.head<2>(),
+                                                     params_.margin_m, params_.horizon_s);
   const Eigen::Vector2d driven = command.v_mps * Eigen::Vector2d(std::cos(pose.z()), std::sin(pose.z()));
   // Largest scale in [0, 1] keeping scale * driven inside the box.
   double scale = 1.0;

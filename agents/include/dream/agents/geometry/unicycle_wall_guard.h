@@ -8,10 +8,9 @@ namespace dream::agents {
 
 /// Where a UnicycleWallGuard keeps a robot.
 struct UnicycleWallGuardParams {
-  double x_min_m = -1.6;  ///< arena, world frame (the Robotarium's)
-  double x_max_m = 1.6;
-  double y_min_m = -1.0;
-  double y_max_m = 1.0;
+  /// The arena's corners, world frame (the Robotarium's).
+  Eigen::Vector2d arena_min_m = Eigen::Vector2d(-1.6, -1.0);
+  Eigen::Vector2d arena_max_m = Eigen::Vector2d(1.6, 1.0);
   /// position + horizon * (planar velocity actually driven) must stay
   /// margin_m inside the arena; closer in, the robot may not move outwards. s.
   double horizon_s = 1.0;
