@@ -26,6 +26,7 @@
 #include "dream/node/run_recorder.h"
 #include "dream/node/run_summary.h"
 #include "dream/render/trajectory_picture.h"
+#include "dream/run_log/run_log.h"
 #include "dream/velocity_command_t.hpp"
 #include "dream/bridge/metrics_json.h"
 
@@ -412,7 +413,8 @@ ImportedRun ImportLabRun(const std::string& result_path, const std::string& expo
   nlohmann::ordered_json summary = nlohmann::ordered_json::parse(
       sim::RunSummaryJson(exported.config, outcome, world, "run.lcmlog", judgement));
   summary["config"] = "config.yaml";
-  summary["metrics"] = MetricsJson(exported.config, imported.log_path);
+  const run_log::RunLog log = run_log::RunLog::Read(imported.log_path);  // once, for the metrics and the picture
+  summary["metrics"] = MetricsJson(exported.config, log);
   nlohmann::ordered_json lab_json;
   lab_json["result_file"] = fs::absolute(result_path).string();
   lab_json["export"] = fs::absolute(export_dir).string();
@@ -433,7 +435,7 @@ ImportedRun ImportLabRun(const std::string& result_path, const std::string& expo
   summary["lab"] = lab_json;
   imported.summary_json = summary.dump(2) + "\n";
   out.WriteFile("summary.json", imported.summary_json);
-  sim::TrajectoryPicture::Render(imported.log_path, imported.picture_path);
+  sim::TrajectoryPicture::Render(log, sim::ArenaOverlays{}, imported.picture_path, sim::RenderFormat::kPng);
   return imported;
 }
 

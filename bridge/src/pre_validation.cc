@@ -43,6 +43,10 @@ sim::LabVerifierRules::Counts VerifierCounts(const RunTrack& track, const sim::W
   return counts;
 }
 
+sim::LabVerifierRules::Counts VerifierCounts(const run_log::RunLog& log, const sim::WorldParams& world) {
+  return VerifierCounts(RunTrackOf(log), world);
+}
+
 std::vector<ExportProblem> PreValidate(const RunTrack& track, const RunEnd& end, const sim::WorldParams& world,
                                        int64_t settle_max_steps, const LabLimits& limits, int64_t experiment_steps,
                                        const std::optional<sim::LabVerifierRules::Declaration>& declared) {

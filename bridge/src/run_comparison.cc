@@ -27,8 +27,41 @@ std::string Pad(std::string text, size_t width) {
   return text;
 }
 
-ComparedRun Describe(const std::string& folder, const RunTrack& track, const RunEnd& end,
-                     const config::RunConfig& config, const std::string& log_path) {
+/// A run folder's log, read once, and its run.
+struct FolderRun {
+  explicit FolderRun(const std::string& log_path)
+      : log(run_log::RunLog::Read(log_path)), track(RunTrackOf(log, &end)) {}
+  run_log::RunLog log;
+  RunEnd end;
+  RunTrack track;
+};
+
+/// The two folders of a comparison, read: the first's config and both runs.
+struct ComparedFolders {
+  ComparedFolders(const std::string& first_dir, const std::string& second_dir)
+      : config(LoadConfig(first_dir, second_dir)),
+        first((fs::path(first_dir) / "run.lcmlog").string()),
+        second((fs::path(second_dir) / "run.lcmlog").string()) {}
+
+  static config::RunConfig LoadConfig(const std::string& first_dir, const std::string& second_dir) {
+    const std::string config_path = (fs::path(first_dir) / "config.yaml").string();
+    for (const fs::path& path : {fs::path(first_dir) / "run.lcmlog", fs::path(second_dir) / "run.lcmlog",
+                                 fs::path(config_path)}) {
+      if (!fs::exists(path)) {
+        throw std::runtime_error(path.string() + ": missing; pass two run folders (dream run / dream import)");
+      }
+    }
+    return config::LoadRunConfigFile(config_path);
+  }
+
+  config::RunConfig config;
+  FolderRun first;
+  FolderRun second;
+};
+
+ComparedRun Describe(const std::string& folder, const FolderRun& folder_run, const config::RunConfig& config) {
+  const RunTrack& track = folder_run.track;
+  const RunEnd& end = folder_run.end;
   ComparedRun run;
   run.folder = folder;
   run.steps = track.last_step();
@@ -51,7 +84,7 @@ ComparedRun Describe(const std::string& folder, const RunTrack& track, const Run
       }
     }
   }
-  run.metrics = MetricsJson(config, log_path);
+  run.metrics = MetricsJson(config, folder_run.log);
   return run;
 }
 
@@ -69,27 +102,17 @@ std::string MetricText(const nlohmann::ordered_json& value) {
   return value.dump();
 }
 
-}  // namespace
-
-RunComparison CompareRuns(const std::string& first_dir, const std::string& second_dir) {
-  const std::string first_log = (fs::path(first_dir) / "run.lcmlog").string();
-  const std::string second_log = (fs::path(second_dir) / "run.lcmlog").string();
-  const std::string config_path = (fs::path(first_dir) / "config.yaml").string();
-  for (const std::string& path : {first_log, second_log, config_path}) {
-    if (!fs::exists(path)) throw std::runtime_error(path + ": missing; pass two run folders (dream run / dream import)");
-  }
-  const config::RunConfig config = config::LoadRunConfigFile(config_path);
-  RunEnd first_end;
-  RunEnd second_end;
-  const RunTrack first = ReadRunTrack(first_log, &first_end);
-  const RunTrack second = ReadRunTrack(second_log, &second_end);
+RunComparison Compare(const std::string& first_dir, const std::string& second_dir, const ComparedFolders& runs) {
+  const RunTrack& first = runs.first.track;
+  const RunTrack& second = runs.second.track;
   if (first.num_robots != second.num_robots) {
-    throw std::runtime_error(second_log + ": has " + std::to_string(second.num_robots) + " robots, " + first_log +
-                             " " + std::to_string(first.num_robots) + ": these are not runs of one experiment");
+    throw std::runtime_error(runs.second.log.path() + ": has " + std::to_string(second.num_robots) + " robots, " +
+                             runs.first.log.path() + " " + std::to_string(first.num_robots) +
+                             ": these are not runs of one experiment");
   }
   RunComparison comparison;
-  comparison.first = Describe(first_dir, first, first_end, config, first_log);
-  comparison.second = Describe(second_dir, second, second_end, config, second_log);
+  comparison.first = Describe(first_dir, runs.first, runs.config);
+  comparison.second = Describe(second_dir, runs.second, runs.config);
   comparison.compared_steps = std::min(first.last_step(), second.last_step());
   const int n = first.num_robots;
   double total_squared = 0.0;
@@ -123,6 +146,12 @@ RunComparison CompareRuns(const std::string& first_dir, const std::string& secon
   }
   comparison.rms_m = std::sqrt(total_squared / (static_cast<double>(comparison.compared_steps + 1) * n));
   return comparison;
+}
+
+}  // namespace
+
+RunComparison CompareRuns(const std::string& first_dir, const std::string& second_dir) {
+  return Compare(first_dir, second_dir, ComparedFolders(first_dir, second_dir));
 }
 
 std::string RunComparison::Text() const {
@@ -199,12 +228,13 @@ nlohmann::ordered_json RunComparison::Json() const {
 
 RunComparison CompareRunsAndWrite(const std::string& first_dir, const std::string& second_dir,
                                   const std::string& out_dir) {
-  RunComparison comparison = CompareRuns(first_dir, second_dir);
+  const ComparedFolders runs(first_dir, second_dir);
+  RunComparison comparison = Compare(first_dir, second_dir, runs);
   const sim::OutputFolder out(out_dir);
   const std::string picture = out.PathOf("comparison.png");
   out.WriteFile("comparison.json", comparison.Json().dump(2) + "\n");
   sim::ComparisonPicture::Render(
-      (fs::path(first_dir) / "run.lcmlog").string(), (fs::path(second_dir) / "run.lcmlog").string(), picture,
+      runs.first.log, runs.second.log, picture,
       {"dashed: " + first_dir + " (" + std::to_string(comparison.first.steps) + " steps), solid: " + second_dir +
            " (" + std::to_string(comparison.second.steps) + " steps)",
        "tracking error: RMS " + Cm(comparison.rms_m) + " cm, max " + Cm(comparison.max_m) + " cm (robot " +

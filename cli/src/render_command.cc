@@ -20,7 +20,7 @@
 #include "dream/render/render_format.h"
 #include "dream/world/robotarium_constants.h"
 #include "dream/render/run_animation.h"
-#include "dream/render/run_track.h"
+#include "dream/render/run_geometry.h"
 #include "dream/render/trajectory_picture.h"
 #include "dream/session/render_overlays.h"
 #include "shared_options.h"
@@ -130,7 +130,7 @@ void RunLabelFromSummary(const fs::path& log, sim::ArenaOverlays* overlays) {
 
 /// summary.json's metric series ({"name": [[step, value], ...]}) beside the
 /// log, then the closest approach computed from the log's poses.
-std::vector<sim::MetricSeries> MetricSeriesOf(const fs::path& log, const sim::RunTrack& track, std::string* title) {
+std::vector<sim::MetricSeries> MetricSeriesOf(const fs::path& log, const run_log::RunLog& run, std::string* title) {
   std::vector<sim::MetricSeries> series;
   const fs::path summary_path = log.parent_path() / "summary.json";
   *title = log.string();
@@ -154,7 +154,7 @@ std::vector<sim::MetricSeries> MetricSeriesOf(const fs::path& log, const sim::Ru
   }
   sim::MetricSeries closest;
   closest.name = "min_distance_m";
-  closest.points = track.MinimumDistanceSeries();
+  closest.points = sim::MinimumDistanceSeries(run);
   closest.limit = sim::RobotariumConstants::kCollisionDiameterMeters;
   closest.limit_label = "collision distance 0.135 m";
   if (!closest.points.empty()) series.push_back(std::move(closest));
@@ -203,10 +203,11 @@ int RunRender(const RenderArgs& args) {
   const sim::RenderFormat format = *sim::RenderFormatOfPath(out.string());
   CheckOutputFolder(out);
 
-  const sim::RunTrack track = sim::RunTrack::Read(log.string());
+  const run_log::RunLog run = run_log::RunLog::Read(log.string());
+  sim::Drawable(run);
   if (kind == Kind::kPlot) {
     std::string title;
-    const std::vector<sim::MetricSeries> series = PickMetrics(MetricSeriesOf(log, track, &title), args.metrics, log);
+    const std::vector<sim::MetricSeries> series = PickMetrics(MetricSeriesOf(log, run, &title), args.metrics, log);
     sim::MetricPlot::Render(series, title, out.string(), format, args.width_px > 0 ? args.width_px : 1000);
     std::cout << "plot:    " << out.string() << " (" << series.size() << " series)\n";
     return kExitOk;
@@ -214,8 +215,8 @@ int RunRender(const RenderArgs& args) {
   sim::ArenaOverlays overlays = Overlays(args, log);
   RunLabelFromSummary(log, &overlays);
   if (kind == Kind::kPicture) {
-    sim::TrajectoryPicture::Render(track, overlays, out.string(), format, args.width_px > 0 ? args.width_px : 1280);
-    std::cout << "picture: " << out.string() << " (" << track.num_robots() << " robots, " << track.poses().size()
+    sim::TrajectoryPicture::Render(run, overlays, out.string(), format, args.width_px > 0 ? args.width_px : 1280);
+    std::cout << "picture: " << out.string() << " (" << run.num_robots() << " robots, " << run.poses().size()
               << " steps, " << SecondsSince(start) << " s)\n";
     return kExitOk;
   }
@@ -227,7 +228,7 @@ int RunRender(const RenderArgs& args) {
   options.fps = args.fps > 0 ? args.fps : gif ? 15 : 30;
   options.speed = args.speed;
   options.trail_s = args.trail_s;
-  sim::RunAnimation animation(track, overlays, options);
+  sim::RunAnimation animation(run, overlays, options);
   spdlog::info("rendering {} frames ({:.1f} s of video at {} fps) to {}", animation.frame_count(),
                animation.duration_s(), options.fps, out.string());
   if (!animation.Write(out.string(), format, [] { return StopFlag().load(); })) {

@@ -38,7 +38,7 @@ ScenarioResult RunScenario(config::RunConfig config, const std::string& log_name
   }
   result.violations = world.violations();
   result.final_poses = world.poses();
-  result.metrics = MetricsFromLog(factory, log_path);
+  result.metrics = MetricsFromLog(factory, run_log::RunLog::Read(log_path));
   for (int id = 0; id < config.num_robots; ++id) {
     result.bad_radio_messages += host.agent(static_cast<size_t>(id)).robot().bad_radio_messages();
   }

@@ -14,6 +14,7 @@
 #include "dream/bridge/metrics_json.h"
 #include "dream/config/run_config.h"
 #include "dream/render/trajectory_picture.h"
+#include "dream/run_log/run_log.h"
 #include "dream/bridge/npy_file.h"
 #include "dream/bridge/submission_exporter.h"
 #include "dream/bridge/submission_format.h"
@@ -182,7 +183,8 @@ void BM_ImportParts(benchmark::State& state) {
     } else if (part == 2) {
       benchmark::DoNotOptimize(bridge::MetricsJson(exported.config, dir + "/lab/run.lcmlog"));
     } else {
-      sim::TrajectoryPicture::Render(dir + "/lab/run.lcmlog", dir + "/parts.png");
+      sim::TrajectoryPicture::Render(run_log::RunLog::Read(dir + "/lab/run.lcmlog"), sim::ArenaOverlays{},
+                                     dir + "/parts.png", sim::RenderFormat::kPng);
     }
   }
 }

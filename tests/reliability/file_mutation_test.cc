@@ -1,9 +1,9 @@
 // A seeded mutation driver over the files of the lab loop, through the real
 // readers: result files (.npy and every .mat flavour) through the import's
 // ReadResultFile + ParseLabResult, the export's dream_params.npy through
-// ExportedSubmission::Read, and a real run.lcmlog through every log reader
-// (LogReader, render's RunTrack, the bridge's ReadRunTrack, the experiment
-// metrics). Each must read the file or refuse it with a runtime_error naming
+// ExportedSubmission::Read, and a real run.lcmlog through LogReader and the
+// run's one reader, RunLog, then what uses it (the bridge's RunTrackOf, the
+// experiment metrics). Each must read the file or refuse it with a runtime_error naming
 // it; nothing may crash, throw bad_alloc / length_error, or make one
 // allocation far beyond the file. DREAM_FUZZ_SCALE=N multiplies the counts.
 #include <gtest/gtest.h>
@@ -11,14 +11,16 @@
 #include <chrono>
 #include <filesystem>
 #include <new>
+#include <optional>
 
 #include "allocation_watch.h"
+#include "dream/agent_host/controller_factory.h"
 #include "dream/bridge/lab_import.h"
 #include "dream/bridge/metrics_json.h"
 #include "dream/bridge/run_track.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/lcm/log_reader.h"
-#include "dream/render/run_track.h"
+#include "dream/run_log/run_log.h"
 #include "file_mutator.h"
 #include "fuzz_scale.h"
 #include "lab_file_samples.h"
@@ -34,7 +36,7 @@ constexpr uint32_t kSeed = 20261124;
 constexpr long kResultMutations = 1500;   // per result format (npy, mat v4, v5, v5 compressed)
 constexpr long kHdf5Mutations = 300;      // mat v7.3: HDF5 opens are slower
 constexpr long kParamsMutations = 1500;
-constexpr long kLogMutations = 300;       // the run log is 100 KB, read by 4 readers
+constexpr long kLogMutations = 300;       // the run log is 100 KB, read by LogReader and RunLog
 // Readers may hold the file and a decoded copy; libraries keep some buffers.
 constexpr size_t kAllocationSlackBytes = 4 << 20;
 
@@ -125,7 +127,8 @@ TEST(FileMutationDriver, MutatedRunLogsAreReadOrRefusedByEveryLogReader) {
   const auto start = std::chrono::steady_clock::now();
   const std::string original = ReadBytes(samples.run_log());
   const config::RunConfig& config = samples.exported().config;
-  ASSERT_NO_THROW(bridge::MetricsJson(config, samples.run_log()));
+  const agents::ControllerFactory factory(config);
+  ASSERT_FALSE(bridge::MetricsJson(factory, run_log::RunLog::Read(samples.run_log())).contains("error"));
   const std::string path = samples.Scratch("mutated.lcmlog");
   FileMutator mutator(kSeed + 2);
   const long count = kLogMutations * FuzzScale();
@@ -155,9 +158,11 @@ TEST(FileMutationDriver, MutatedRunLogsAreReadOrRefusedByEveryLogReader) {
                   reader_error.find("not an LCM log") != std::string::npos)
           << what << ": " << reader_error;
     }
-    ReadOrRefuse([&] { sim::RunTrack::Read(path); }, path, what + " (render's RunTrack)");
-    ReadOrRefuse([&] { bridge::ReadRunTrack(path); }, path, what + " (bridge's ReadRunTrack)");
-    ReadOrRefuse([&] { bridge::MetricsJson(config, path); }, path, what + " (metrics)");
+    std::optional<run_log::RunLog> run;
+    if (ReadOrRefuse([&] { run = run_log::RunLog::Read(path); }, path, what + " (RunLog)") == Outcome::kRead) {
+      ReadOrRefuse([&] { bridge::RunTrackOf(*run); }, path, what + " (the bridge's RunTrackOf)");
+      ReadOrRefuse([&] { bridge::MetricsJson(factory, *run); }, path, what + " (metrics)");
+    }
     ASSERT_LE(watch.largest(), 4 * mutated.size() + kAllocationSlackBytes) << what;
   }
   EXPECT_GT(refused_by_reader, 0);

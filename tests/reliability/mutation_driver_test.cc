@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <new>
+#include <optional>
 #include <random>
 #include <stdexcept>
 
@@ -24,7 +25,8 @@
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
 #include "dream/node/run_recorder.h"
-#include "dream/render/run_track.h"
+#include "dream/render/run_geometry.h"
+#include "dream/run_log/run_log.h"
 #include "dream/velocity_command_t.hpp"
 #include "fuzz_scale.h"
 #include "sample_messages.h"
@@ -35,7 +37,7 @@ namespace {
 constexpr uint32_t kSeed = 20261123;
 // Counts for CI; DREAM_FUZZ_SCALE multiplies both (fuzz_scale.h).
 constexpr int kMutationsPerMessage = 5000;  // x 6 types, each through 6 decoders
-constexpr int kLogMutations = 3000;         // each through 3 log readers
+constexpr int kLogMutations = 3000;         // each through LogReader, RunLog and its views
 // A decoded message may hold what its bytes hold; the rest is bookkeeping.
 constexpr size_t kAllocationSlackBytes = 64 * 1024;
 
@@ -228,9 +230,10 @@ TEST(MutationDriver, MutatedRunLogsAreReadOrRefusedWithFileAndByte) {
   const TempFolder folder;
   const std::vector<uint8_t> original = SmallRunLog(folder.file("run.lcmlog"));
   // The unmutated log reads everywhere, so the mutations below reach deep.
-  ASSERT_NO_THROW(sim::RunTrack::Read(folder.file("run.lcmlog")));
+  const run_log::RunLog whole = run_log::RunLog::Read(folder.file("run.lcmlog"));
+  ASSERT_EQ(whole.Flaw(true), std::nullopt);
   bridge::RunEnd end;
-  ASSERT_EQ(bridge::ReadRunTrack(folder.file("run.lcmlog"), &end).last_step(), 11);
+  ASSERT_EQ(bridge::RunTrackOf(whole, &end).last_step(), 11);
   ASSERT_EQ(end.robot_faults.count(2), 1U);
 
   Mutator mutator(kSeed + 1);
@@ -266,8 +269,16 @@ TEST(MutationDriver, MutatedRunLogsAreReadOrRefusedWithFileAndByte) {
                   reader_error.find("not an LCM log") != std::string::npos)
           << what << ": " << reader_error;
     }
-    ReadsCleanly([&] { sim::RunTrack::Read(path); }, what + " (render's RunTrack)");
-    ReadsCleanly([&] { bridge::ReadRunTrack(path, &end); }, what + " (bridge's ReadRunTrack)");
+    std::optional<run_log::RunLog> run;
+    if (ReadsCleanly([&] { run = run_log::RunLog::Read(path); }, what + " (RunLog)")) {
+      ReadsCleanly(
+          [&] {
+            sim::MinimumDistanceSeries(*run);
+            sim::MovingObstaclePaths(*run);
+          },
+          what + " (drawing)");
+      ReadsCleanly([&] { bridge::RunTrackOf(*run, &end); }, what + " (the bridge's RunTrackOf)");
+    }
     ASSERT_LE(watch.largest(), mutated.size() + kAllocationSlackBytes) << what;
   }
   EXPECT_GT(refused_by_reader, 0);

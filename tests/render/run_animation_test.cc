@@ -26,7 +26,7 @@ constexpr double kOffsetM = 0.03;
 
 class RunAnimationTest : public ::testing::Test {
  protected:
-  RunAnimationTest() : track_(RunTrack::Read(SyntheticRunLog::TwoRobots(dir_ / "run.lcmlog", 300).Write())) {}
+  RunAnimationTest() : run_(run_log::RunLog::Read(SyntheticRunLog::TwoRobots(dir_ / "run.lcmlog", 300).Write())) {}
 
   AnimationOptions Options() const {
     AnimationOptions options;
@@ -38,12 +38,12 @@ class RunAnimationTest : public ::testing::Test {
   }
 
   TempFolder dir_;
-  RunTrack track_;
+  run_log::RunLog run_;
   ArenaOverlays no_overlays_;
 };
 
 TEST_F(RunAnimationTest, FramesFollowDurationFpsAndSpeed) {
-  const RunAnimation animation(track_, no_overlays_, Options());
+  const RunAnimation animation(run_, no_overlays_, Options());
   // 300 steps = 9.9 s at 2x = 4.95 s of video at 10 fps: frames 0..50 (the
   // last clamped to the final step), then 0.5 s = 5 frames holding it.
   EXPECT_EQ(animation.frame_count(), 56);
@@ -60,8 +60,8 @@ TEST_F(RunAnimationTest, FramesHaveTickLabelsALegendAndTheRunsName) {
   ArenaOverlays overlays;
   overlays.run_name = "demo";
   overlays.verdict = "clean";
-  RunAnimation named(track_, overlays, Options());
-  RunAnimation plain(track_, no_overlays_, Options());
+  RunAnimation named(run_, overlays, Options());
+  RunAnimation plain(run_, no_overlays_, Options());
   named.WriteFramePng(0, dir_ / "named.png");
   plain.WriteFramePng(0, dir_ / "plain.png");
   const PicturePixels with(dir_ / "named.png");
@@ -80,7 +80,7 @@ TEST_F(RunAnimationTest, FramesHaveTickLabelsALegendAndTheRunsName) {
 }
 
 TEST_F(RunAnimationTest, EachFrameShowsTheRobotsWhereTheyAreThen) {
-  RunAnimation animation(track_, no_overlays_, Options());
+  RunAnimation animation(run_, no_overlays_, Options());
   const ArenaLayout& layout = animation.layout();
   animation.WriteFramePng(0, dir_ / "first.png");
   animation.WriteFramePng(animation.frame_count() - 1, dir_ / "last.png");
@@ -102,9 +102,9 @@ TEST_F(RunAnimationTest, EachFrameShowsTheRobotsWhereTheyAreThen) {
 TEST_F(RunAnimationTest, TrailsCoverTheLastSecondsOnly) {
   AnimationOptions options = Options();
   options.trail_s = 3.0;
-  RunAnimation with_trail(track_, no_overlays_, options);
+  RunAnimation with_trail(run_, no_overlays_, options);
   options.trail_s = 0.0;
-  RunAnimation without_trail(track_, no_overlays_, options);
+  RunAnimation without_trail(run_, no_overlays_, options);
   const int last = with_trail.frame_count() - 1;
   with_trail.WriteFramePng(last, dir_ / "trail.png");
   without_trail.WriteFramePng(last, dir_ / "none.png");
@@ -124,8 +124,8 @@ TEST_F(RunAnimationTest, MovingObstaclesAreWhereTheyAreAtEachFrame) {
   for (int step = 0; step <= 100; ++step) {
     log.Poses(step, {{0, 0, 0}}).Obstacles(step, {Box(0, -1.0 + 0.02 * step, 0.6, 0.2, 0.2)});
   }
-  const RunTrack track = RunTrack::Read(log.Write());
-  RunAnimation animation(track, no_overlays_, Options());
+  const run_log::RunLog run = run_log::RunLog::Read(log.Write());
+  RunAnimation animation(run, no_overlays_, Options());
   animation.WriteFramePng(0, dir_ / "first.png");
   animation.WriteFramePng(animation.frame_count() - 1, dir_ / "last.png");
   const PicturePixels first(dir_ / "first.png");
@@ -139,7 +139,7 @@ TEST_F(RunAnimationTest, MovingObstaclesAreWhereTheyAreAtEachFrame) {
 TEST_F(RunAnimationTest, OptionsOutOfRangeAreRefusedNamingThem) {
   auto refused = [&](AnimationOptions options, const std::string& option) {
     try {
-      RunAnimation animation(track_, no_overlays_, options);
+      RunAnimation animation(run_, no_overlays_, options);
       ADD_FAILURE() << option << " accepted";
     } catch (const std::invalid_argument& e) {
       EXPECT_NE(std::string(e.what()).find(option), std::string::npos) << e.what();
@@ -163,7 +163,7 @@ TEST_F(RunAnimationTest, Mp4AndGifHoldEveryFrame) {
   if (!testing::OnPath("ffmpeg") || !testing::OnPath("ffprobe")) GTEST_SKIP() << "ffmpeg is not installed";
   AnimationOptions options = Options();
   options.speed = 5;  // 21 frames of the run and 5 held
-  RunAnimation animation(track_, no_overlays_, options);
+  RunAnimation animation(run_, no_overlays_, options);
   ASSERT_TRUE(animation.Write(dir_ / "run.mp4", RenderFormat::kMp4));
   ASSERT_TRUE(animation.Write(dir_ / "run.gif", RenderFormat::kGif));
   EXPECT_EQ(testing::CountVideoFrames(dir_ / "run.mp4"), animation.frame_count());
@@ -175,7 +175,7 @@ TEST_F(RunAnimationTest, Mp4AndGifHoldEveryFrame) {
 
 TEST_F(RunAnimationTest, ACancelledVideoLeavesNothingBehind) {
   if (!testing::OnPath("ffmpeg")) GTEST_SKIP() << "ffmpeg is not installed";
-  RunAnimation animation(track_, no_overlays_, Options());
+  RunAnimation animation(run_, no_overlays_, Options());
   int frames_drawn = 0;
   EXPECT_FALSE(animation.Write(dir_ / "run.mp4", RenderFormat::kMp4, [&] { return ++frames_drawn > 5; }));
   EXPECT_FALSE(animation.Write(dir_ / "run.gif", RenderFormat::kGif, [&] { return true; }));

@@ -33,6 +33,10 @@ class TrajectoryPictureTest : public ::testing::Test {
     log.Obstacles(100, {Box(0, 1.2, -0.6, 0.2, 0.2)});
     log_path_ = log.Write();
   }
+  /// The run as a PNG with no overlays, as `dream import` draws it.
+  void RenderPng(const std::string& png) const {
+    TrajectoryPicture::Render(run_log::RunLog::Read(log_path_), ArenaOverlays{}, png, RenderFormat::kPng);
+  }
   TempFolder dir_;
   std::string log_path_;
   const ArenaLayout layout_{1280, 1};
@@ -40,7 +44,7 @@ class TrajectoryPictureTest : public ::testing::Test {
 
 TEST_F(TrajectoryPictureTest, RobotsEndWhereTheLogSaysOnAWhiteArena) {
   const std::string png = dir_ / "trajectories.png";
-  TrajectoryPicture::Render(log_path_, png);
+  RenderPng(png);
   const PicturePixels picture(png);
   EXPECT_EQ(picture.width(), layout_.width_px());
   EXPECT_EQ(picture.height(), layout_.height_px());
@@ -65,11 +69,11 @@ TEST_F(TrajectoryPictureTest, OverlaysDrawGoalsSensorRangesAndRadioLinks) {
   overlays.sensor_reaches = {SensorReach{0.5}};
   overlays.hears = [](int, int, const robot_poses_t&) { return true; };
   const std::string plain = dir_ / "plain.png";
-  TrajectoryPicture::Render(RunTrack::Read(log_path_), overlays, plain, RenderFormat::kPng);
+  TrajectoryPicture::Render(run_log::RunLog::Read(log_path_), overlays, plain, RenderFormat::kPng);
   overlays.draw_sensor_ranges = true;
   overlays.draw_radio_links = true;
   const std::string full = dir_ / "full.png";
-  TrajectoryPicture::Render(RunTrack::Read(log_path_), overlays, full, RenderFormat::kPng);
+  TrajectoryPicture::Render(run_log::RunLog::Read(log_path_), overlays, full, RenderFormat::kPng);
 
   for (const std::string& png : {plain, full}) {
     const PicturePixels picture(png);
@@ -88,7 +92,7 @@ TEST_F(TrajectoryPictureTest, OverlaysDrawGoalsSensorRangesAndRadioLinks) {
 
 TEST_F(TrajectoryPictureTest, TickLabelsInMetresSitOutsideTheArenaFrame) {
   const std::string png = dir_ / "trajectories.png";
-  TrajectoryPicture::Render(log_path_, png);
+  RenderPng(png);
   const PicturePixels picture(png);
   const double left = layout_.px(-1.6);
   const double bottom = layout_.py(-1.0);
@@ -109,11 +113,11 @@ TEST_F(TrajectoryPictureTest, TheLegendShowsTheMarkersTheRunUses) {
   ArenaOverlays goals;
   goals.goals_m = {{{-1.2, 0.8}}, {{0.5, -0.8}}};
   const std::string with_goals = dir_ / "goals.png";
-  TrajectoryPicture::Render(RunTrack::Read(log_path_), goals, with_goals, RenderFormat::kPng);
+  TrajectoryPicture::Render(run_log::RunLog::Read(log_path_), goals, with_goals, RenderFormat::kPng);
   const std::string no_goals = dir_ / "plain.png";
-  TrajectoryPicture::Render(RunTrack::Read(log_path_), ArenaOverlays{}, no_goals, RenderFormat::kPng);
+  TrajectoryPicture::Render(run_log::RunLog::Read(log_path_), ArenaOverlays{}, no_goals, RenderFormat::kPng);
   const std::string no_obstacles = dir_ / "empty.png";
-  TrajectoryPicture::Render(RunTrack::Read(SyntheticRunLog::TwoRobots(dir_ / "bare.lcmlog", 100).Write()),
+  TrajectoryPicture::Render(run_log::RunLog::Read(SyntheticRunLog::TwoRobots(dir_ / "bare.lcmlog", 100).Write()),
                             ArenaOverlays{}, no_obstacles, RenderFormat::kPng);
 
   const double top = layout_.legend_center_px() - layout_.legend_row_px() / 2;
@@ -134,21 +138,21 @@ TEST_F(TrajectoryPictureTest, TheLegendShowsTheMarkersTheRunUses) {
 }
 
 TEST_F(TrajectoryPictureTest, TheCaptionNamesTheRunAndItsVerdictWhenKnown) {
-  const RunTrack track = RunTrack::Read(log_path_);
-  EXPECT_EQ(TrajectoryPicture::Caption(track, ArenaOverlays{}), "2 robots, steps 0..100 (3.3 s)");
+  const run_log::RunLog run = run_log::RunLog::Read(log_path_);
+  EXPECT_EQ(TrajectoryPicture::Caption(run, ArenaOverlays{}), "2 robots, steps 0..100 (3.3 s)");
   ArenaOverlays overlays;
   overlays.run_name = "go_to_goal";
   overlays.verdict = "clean";
-  EXPECT_EQ(TrajectoryPicture::Caption(track, overlays),
+  EXPECT_EQ(TrajectoryPicture::Caption(run, overlays),
             "go_to_goal \xe2\x80\x94 clean (no errors or warnings) \xe2\x80\x94 2 robots, steps 0..100 (3.3 s)");
   overlays.verdict = "rejected";
-  EXPECT_EQ(TrajectoryPicture::Caption(track, overlays).rfind("go_to_goal \xe2\x80\x94 rejected (", 0), 0u);
+  EXPECT_EQ(TrajectoryPicture::Caption(run, overlays).rfind("go_to_goal \xe2\x80\x94 rejected (", 0), 0u);
   overlays.run_name.clear();
   overlays.verdict = "odd";  // an unknown verdict is shown as it is
-  EXPECT_EQ(TrajectoryPicture::Caption(track, overlays), "odd \xe2\x80\x94 2 robots, steps 0..100 (3.3 s)");
+  EXPECT_EQ(TrajectoryPicture::Caption(run, overlays), "odd \xe2\x80\x94 2 robots, steps 0..100 (3.3 s)");
   // The picture is one caption line taller than the arena, legend and all: the same size as before.
   const std::string png = dir_ / "named.png";
-  TrajectoryPicture::Render(track, overlays, png, RenderFormat::kPng);
+  TrajectoryPicture::Render(run, overlays, png, RenderFormat::kPng);
   const PicturePixels picture(png);
   EXPECT_EQ(picture.height(), layout_.height_px());
   EXPECT_GT(picture.CountInk(layout_.px(-1.6), layout_.caption_baseline_px(0) - 10, layout_.px(-1.0),
@@ -158,7 +162,7 @@ TEST_F(TrajectoryPictureTest, TheCaptionNamesTheRunAndItsVerdictWhenKnown) {
 
 TEST_F(TrajectoryPictureTest, SvgIsAVectorPictureOfTheSameRun) {
   const std::string svg = dir_ / "trajectories.svg";
-  TrajectoryPicture::Render(RunTrack::Read(log_path_), ArenaOverlays{}, svg, RenderFormat::kSvg);
+  TrajectoryPicture::Render(run_log::RunLog::Read(log_path_), ArenaOverlays{}, svg, RenderFormat::kSvg);
   std::ifstream in(svg);
   std::stringstream text;
   text << in.rdbuf();
@@ -173,7 +177,7 @@ TEST_F(TrajectoryPictureTest, SvgIsAVectorPictureOfTheSameRun) {
 TEST_F(TrajectoryPictureTest, AFolderThatDoesNotExistIsAnErrorAndNothingIsWritten) {
   const std::string png = dir_ / "missing/trajectories.png";
   try {
-    TrajectoryPicture::Render(log_path_, png);
+    RenderPng(png);
     FAIL() << "expected an error";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find(png), std::string::npos) << e.what();

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <set>
 
+#include "dream/agent_host/snapshot_from_messages.h"
 #include "dream/lcm/channels.h"
 #include "dream/lcm/lcm_typed.h"
 #include "dream/lcm/message_limits.h"
@@ -72,15 +73,9 @@ void AgentHost::OnObstacles(const std::string& channel, const obstacles_t& obsta
     return;
   }
   obstacles_run_id_ = obstacles.run_id;
-  world_.obstacles.clear();
-  for (const rectangle_obstacle_t& o : obstacles.obstacles) {
-    ObstacleView view{o.id, {o.center_x, o.center_y}, {o.width, o.height}, {o.vx, o.vy}};
-    if (!view.center_m.allFinite() || !view.size_m.allFinite() || !view.velocity_mps.allFinite()) {
-      bad_messages_.Report(channel, "non-finite obstacle " + std::to_string(o.id));
-      continue;
-    }
-    world_.obstacles.push_back(view);
-  }
+  std::vector<int> non_finite;
+  TakeObstacles(obstacles, &world_, &non_finite);
+  for (int id : non_finite) bad_messages_.Report(channel, "non-finite obstacle " + std::to_string(id));
 }
 
 void AgentHost::OnRadio(const std::string& channel, const radio_message_t& message) {
@@ -190,15 +185,7 @@ void AgentHost::OnPoses(const std::string& channel, const robot_poses_t& poses) 
   const WorldFollower::StepDecision decision = follower_.OnPoses(poses.run_id, poses.step);
   if (decision == WorldFollower::StepDecision::kIgnore) return;
   saw_poses_since_check_ = true;  // only the followed run's steps keep this host waiting
-  if (decision == WorldFollower::StepDecision::kNewStep) {
-    world_.step = poses.step;
-    world_.poses.resize(n);
-    world_.velocities.resize(n);
-    for (size_t i = 0; i < n; ++i) {
-      world_.poses[i] = {poses.x[i], poses.y[i], poses.theta[i]};
-      world_.velocities[i] = {poses.v[i], poses.w[i]};
-    }
-  }
+  if (decision == WorldFollower::StepDecision::kNewStep) TakePoses(poses, &world_);
   if (joining) {
     if (obstacles_run_id_ != poses.run_id) world_.obstacles.clear();
     for (const auto& [radio_channel, radio] : radio_before_joining_) {

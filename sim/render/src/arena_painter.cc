@@ -312,12 +312,12 @@ void ArenaPainter::SensorRanges(const ArenaOverlays& overlays, const robot_poses
   cairo_restore(cr_);
 }
 
-void ArenaPainter::RadioLinks(const ArenaOverlays& overlays, const RunTrack& track, size_t pose_index,
+void ArenaPainter::RadioLinks(const ArenaOverlays& overlays, const run_log::RunLog& log, size_t pose_index,
                               int64_t window_steps) const {
   if (!overlays.draw_radio_links || !overlays.hears) return;
-  const robot_poses_t& poses = track.poses()[pose_index];
+  const robot_poses_t& poses = log.poses()[pose_index];
   const int n = poses.num_robots;
-  if (window_steps <= 0 || track.radio_sends().empty()) {
+  if (window_steps <= 0 || log.radio_sends().empty()) {
     for (int i = 0; i < n; ++i) {
       for (int j = i + 1; j < n; ++j) {
         if (!overlays.hears(i, j, poses) && !overlays.hears(j, i, poses)) continue;
@@ -327,10 +327,10 @@ void ArenaPainter::RadioLinks(const ArenaOverlays& overlays, const RunTrack& tra
     }
     return;
   }
-  const auto& sends = track.radio_sends();
+  const auto& sends = log.radio_sends();
   const int64_t now = poses.step;
   auto send = std::lower_bound(sends.begin(), sends.end(), now - window_steps + 1,
-                               [](const RunTrack::RadioSend& s, int64_t step) { return s.step < step; });
+                               [](const run_log::RadioSend& s, int64_t step) { return s.step < step; });
   for (; send != sends.end() && send->step <= now; ++send) {
     const int sender = send->sender_id;
     if (sender < 0 || sender >= n) continue;

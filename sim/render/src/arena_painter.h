@@ -10,7 +10,7 @@
 #include "dream/robot_poses_t.hpp"
 #include "dream/render/arena_layout.h"
 #include "dream/render/arena_overlays.h"
-#include "dream/render/run_track.h"
+#include "dream/run_log/run_log.h"
 
 namespace dream::sim {
 
@@ -75,11 +75,11 @@ class ArenaPainter {
   /// Every sensor reach of `overlays` round every robot at `poses`, when
   /// overlays.draw_sensor_ranges is set (see SensorRange for `tint`).
   void SensorRanges(const ArenaOverlays& overlays, const robot_poses_t& poses, bool tint) const;
-  /// Radio links at track.poses()[pose_index], when overlays.draw_radio_links
+  /// Radio links at log.poses()[pose_index], when overlays.draw_radio_links
   /// is set: each broadcast of the last `window_steps` steps as lines from its
   /// sender to the robots that hear it, fading with age; with window_steps 0,
   /// or a log without radio messages, every pair that can hear each other.
-  void RadioLinks(const ArenaOverlays& overlays, const RunTrack& track, size_t pose_index,
+  void RadioLinks(const ArenaOverlays& overlays, const run_log::RunLog& log, size_t pose_index,
                   int64_t window_steps) const;
   /// A radio link from (x0, y0) to (x1, y1), with opacity `alpha`.
   void RadioLink(double x0_m, double y0_m, double x1_m, double y1_m, double alpha) const;

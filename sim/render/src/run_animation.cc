@@ -10,6 +10,7 @@
 
 #include "arena_painter.h"
 #include "dream/render/ffmpeg_encoder.h"
+#include "dream/render/run_geometry.h"
 #include "dream/world/robotarium_constants.h"
 #include "picture_surface.h"
 #include "range_sprites.h"
@@ -68,12 +69,12 @@ struct RunAnimation::Surfaces {
   ContextPtr frame_cr{nullptr, cairo_destroy};
 };
 
-RunAnimation::RunAnimation(const RunTrack& track, const ArenaOverlays& overlays, AnimationOptions options)
-    : track_(track),
+RunAnimation::RunAnimation(const run_log::RunLog& log, const ArenaOverlays& overlays, AnimationOptions options)
+    : log_(Drawable(log)),
       overlays_(overlays),
       options_(options),
       layout_(EvenFrameWidth(options.width_px), 1, /*even_size=*/true),
-      obstacles_move_(track.HasMovingObstacles()),
+      obstacles_move_(!MovingObstaclePaths(log).empty()),
       surfaces_(std::make_unique<Surfaces>(layout_)) {
   CheckOption(std::isfinite(options.fps) && options.fps >= 1 && options.fps <= 120,
               "--fps must be 1..120, got " + Number(options.fps));
@@ -86,7 +87,7 @@ RunAnimation::RunAnimation(const RunTrack& track, const ArenaOverlays& overlays,
   trail_steps_ = std::llround(options.trail_s / kStepS);
   radio_window_steps_ = std::max<int64_t>(std::llround(kRadioFlashS / kStepS),
                                           std::llround(std::ceil(options.speed / options.fps / kStepS)));
-  const int run_frames = static_cast<int>(std::ceil(track.duration_s() * options.fps / options.speed - 1e-9)) + 1;
+  const int run_frames = static_cast<int>(std::ceil(DurationS(log) * options.fps / options.speed - 1e-9)) + 1;
   frame_count_ = run_frames + static_cast<int>(std::lround(options.hold_end_s * options.fps));
   run_label_ = RunLabel(overlays, /*short_verdict=*/true);
   DrawStaticLayer();
@@ -102,14 +103,15 @@ void RunAnimation::DrawStaticLayer() {
     const ContextPtr cr(cairo_create(surfaces_->background.get()), cairo_destroy);
     const ArenaPainter painter(cr.get(), layout_);
     painter.Background();
-    painter.ObstaclePaths(track_.MovingObstaclePaths());
-    if (!obstacles_move_) painter.Obstacles(track_.obstacles_at(track_.poses().size() - 1));
+    const std::vector<std::vector<std::array<double, 2>>> moving = MovingObstaclePaths(log_);
+    painter.ObstaclePaths(moving);
+    if (!obstacles_move_) painter.Obstacles(log_.obstacles_at(log_.poses().size() - 1).obstacles);
     painter.Goals(overlays_.goals_m);
     using Item = ArenaPainter::LegendItem;
     std::vector<Item> legend = {{Item::Marker::kRobot, "robot", ArenaPainter::RobotLook::kFilled, 1.0}};
     if (!overlays_.goals_m.empty()) legend.push_back({Item::Marker::kGoal, "goal"});
-    bool obstacles = !track_.MovingObstaclePaths().empty();
-    for (size_t i = 0; i < track_.poses().size() && !obstacles; ++i) obstacles = !track_.obstacles_at(i).empty();
+    bool obstacles = !moving.empty();
+    for (size_t i = 0; i < log_.poses().size() && !obstacles; ++i) obstacles = !log_.obstacles_at(i).obstacles.empty();
     if (obstacles) legend.push_back({Item::Marker::kObstacle, "obstacle"});
     painter.Legend(legend);
   }
@@ -118,8 +120,8 @@ void RunAnimation::DrawStaticLayer() {
 }
 
 int64_t RunAnimation::StepOfFrame(int frame) const {
-  const double t = std::min(frame * options_.speed / options_.fps, track_.duration_s());
-  return std::min<int64_t>(track_.first_step() + std::llround(t / kStepS), track_.last_step());
+  const double t = std::min(frame * options_.speed / options_.fps, DurationS(log_));
+  return std::min<int64_t>(log_.first_step() + std::llround(t / kStepS), log_.last_step());
 }
 
 void RunAnimation::DrawFrame(int frame) {
@@ -131,24 +133,15 @@ void RunAnimation::DrawFrame(int frame) {
 
   const ArenaPainter painter(cr, layout_);
   const int64_t step = StepOfFrame(frame);
-  const size_t now = track_.PoseIndexAtStep(step);
-  const robot_poses_t& poses = track_.poses()[now];
-  if (obstacles_move_) painter.Obstacles(track_.obstacles_at(now));
+  const size_t now = log_.PoseIndexAtStep(step);
+  const robot_poses_t& poses = log_.poses()[now];
+  if (obstacles_move_) painter.Obstacles(log_.obstacles_at(now).obstacles);
   surfaces_->range_sprites.Draw(cr, overlays_, poses);
   if (trail_steps_ > 0) {
-    const size_t from = track_.PoseIndexAtStep(step - trail_steps_);
-    std::vector<std::array<double, 2>> points;
-    for (int32_t i = 0; i < poses.num_robots; ++i) {
-      const auto k = static_cast<size_t>(i);
-      points.clear();
-      for (size_t p = from; p <= now; ++p) {
-        const robot_poses_t& past = track_.poses()[p];
-        if (i < past.num_robots) points.push_back({past.x[k], past.y[k]});
-      }
-      painter.Track(i, points, 2.0, 0.6);
-    }
+    const size_t from = log_.PoseIndexAtStep(step - trail_steps_);
+    for (int32_t i = 0; i < poses.num_robots; ++i) painter.Track(i, RobotPath(log_, i, from, now), 2.0, 0.6);
   }
-  painter.RadioLinks(overlays_, track_, now, radio_window_steps_);
+  painter.RadioLinks(overlays_, log_, now, radio_window_steps_);
   for (int32_t i = 0; i < poses.num_robots; ++i) {
     const auto k = static_cast<size_t>(i);
     painter.Robot(i, poses.x[k], poses.y[k], poses.theta[k], ArenaPainter::RobotLook::kFilled, true);

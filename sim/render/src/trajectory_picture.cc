@@ -4,37 +4,31 @@
 #include <vector>
 
 #include "arena_painter.h"
+#include "dream/render/run_geometry.h"
 #include "picture_surface.h"
 
 namespace dream::sim {
 
-void TrajectoryPicture::Render(const std::string& log_path, const std::string& png_path, int width_px) {
-  Render(RunTrack::Read(log_path), ArenaOverlays{}, png_path, RenderFormat::kPng, width_px);
-}
-
-void TrajectoryPicture::Render(const RunTrack& track, const ArenaOverlays& overlays, const std::string& path,
+void TrajectoryPicture::Render(const run_log::RunLog& log, const ArenaOverlays& overlays, const std::string& path,
                                RenderFormat format, int width_px) {
+  Drawable(log);
   const ArenaLayout layout(width_px, 1);
   PictureSurface surface(format, layout.width_px(), layout.height_px());
   const ArenaPainter painter(surface.cr(), layout);
   painter.Background();
-  painter.ObstaclePaths(track.MovingObstaclePaths());
-  const size_t last_index = track.poses().size() - 1;
-  painter.Obstacles(track.obstacles_at(last_index));
+  painter.ObstaclePaths(MovingObstaclePaths(log));
+  const size_t last_index = log.poses().size() - 1;
+  const std::vector<rectangle_obstacle_t>& obstacles = log.obstacles_at(last_index).obstacles;
+  painter.Obstacles(obstacles);
   painter.Goals(overlays.goals_m);
-  const robot_poses_t& first = track.poses().front();
-  const robot_poses_t& last = track.poses().back();
+  const robot_poses_t& first = log.poses().front();
+  const robot_poses_t& last = log.poses().back();
   painter.SensorRanges(overlays, last, /*tint=*/true);
-  painter.RadioLinks(overlays, track, last_index, 0);
+  painter.RadioLinks(overlays, log, last_index, 0);
 
-  for (int32_t i = 0; i < track.num_robots(); ++i) {
+  for (int32_t i = 0; i < log.num_robots(); ++i) {
     const auto k = static_cast<size_t>(i);
-    std::vector<std::array<double, 2>> points;
-    points.reserve(track.poses().size());
-    for (const robot_poses_t& poses : track.poses()) {
-      if (i < poses.num_robots) points.push_back({poses.x[k], poses.y[k]});
-    }
-    painter.Track(i, points, 2.0);
+    painter.Track(i, RobotPath(log, i), 2.0);
     if (i < first.num_robots) {
       painter.Robot(i, first.x[k], first.y[k], first.theta[k], ArenaPainter::RobotLook::kHollow, false, 0.6);
     }
@@ -48,17 +42,16 @@ void TrajectoryPicture::Render(const RunTrack& track, const ArenaOverlays& overl
   std::vector<Item> legend = {{Item::Marker::kRobot, "start", ArenaPainter::RobotLook::kHollow, 0.6},
                               {Item::Marker::kRobot, "end", ArenaPainter::RobotLook::kFilled, 1.0}};
   if (!overlays.goals_m.empty()) legend.push_back({Item::Marker::kGoal, "goal"});
-  if (!track.obstacles_at(last_index).empty()) legend.push_back({Item::Marker::kObstacle, "obstacle"});
+  if (!obstacles.empty()) legend.push_back({Item::Marker::kObstacle, "obstacle"});
   painter.Legend(legend);
-  painter.Caption(0, Caption(track, overlays));
+  painter.Caption(0, Caption(log, overlays));
   surface.Commit(path);
 }
 
-std::string TrajectoryPicture::Caption(const RunTrack& track, const ArenaOverlays& overlays) {
+std::string TrajectoryPicture::Caption(const run_log::RunLog& log, const ArenaOverlays& overlays) {
   char stats[160];
-  std::snprintf(stats, sizeof(stats), "%d robots, steps %lld..%lld (%.1f s)", track.num_robots(),
-                static_cast<long long>(track.first_step()), static_cast<long long>(track.last_step()),
-                track.duration_s());
+  std::snprintf(stats, sizeof(stats), "%d robots, steps %lld..%lld (%.1f s)", log.num_robots(),
+                static_cast<long long>(log.first_step()), static_cast<long long>(log.last_step()), DurationS(log));
   return RunLabel(overlays) + stats;
 }
 

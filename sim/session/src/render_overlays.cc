@@ -5,6 +5,7 @@
 
 #include "dream/agent_host/agent_parts_config.h"
 #include "dream/agent_host/controller_factory.h"
+#include "dream/agent_host/snapshot_from_messages.h"
 #include "dream/agents/framework/world_snapshot.h"
 
 namespace dream::session {
@@ -45,11 +46,7 @@ sim::ArenaOverlays::RadioHearing HearingOf(const agents::AgentPartsConfig& parts
     if (receiver < 0 || receiver >= static_cast<int>(radios->size()) || !(*radios)[static_cast<size_t>(receiver)]) {
       return false;
     }
-    if (world->step != poses.step || world->num_robots() != poses.num_robots) {
-      world->step = poses.step;
-      world->poses.clear();
-      for (size_t k = 0; k < poses.x.size(); ++k) world->poses.emplace_back(poses.x[k], poses.y[k], poses.theta[k]);
-    }
+    if (world->step != poses.step || world->num_robots() != poses.num_robots) agents::TakePoses(poses, world.get());
     return (*radios)[static_cast<size_t>(receiver)]->CanHear(receiver, sender, *world);
   };
 }

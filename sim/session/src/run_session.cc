@@ -16,7 +16,7 @@
 #include "dream/node/run_summary.h"
 #include "dream/node/sim_node.h"
 #include "dream/node/true_pose_recording.h"
-#include "dream/render/run_track.h"
+#include "dream/run_log/run_log.h"
 #include "dream/render/trajectory_picture.h"
 #include "dream/session/experiment_goal.h"
 #include "dream/session/render_overlays.h"
@@ -245,7 +245,7 @@ bool RunSession::DrawPicture(const std::string& log_path, const std::string& pic
     sim::ArenaOverlays overlays = factory_ ? ArenaOverlaysFromConfig(config_, *factory_) : ArenaOverlaysFromConfig(config_);
     overlays.run_name = config_.name;
     overlays.verdict = sim::RunVerdictName(verdict);  // as summary.json says
-    sim::TrajectoryPicture::Render(sim::RunTrack::Read(log_path), overlays, picture_path, sim::RenderFormat::kPng,
+    sim::TrajectoryPicture::Render(run_log::RunLog::Read(log_path), overlays, picture_path, sim::RenderFormat::kPng,
                                    1280);
     return true;
   } catch (const std::exception& e) {

@@ -74,6 +74,9 @@ std::vector<ExportProblem> PreValidate(const RunTrack& track, const RunEnd& end,
 /// simulator's boundary_errors each step). `iterations` and `num_robots`
 /// are the track's steps and robots.
 sim::LabVerifierRules::Counts VerifierCounts(const RunTrack& track, const sim::WorldParams& world);
+/// The same on a run's log (RunTrackOf(log), without its status).
+/// @throws std::runtime_error with the log's flaw when it is not a whole run.
+sim::LabVerifierRules::Counts VerifierCounts(const run_log::RunLog& log, const sim::WorldParams& world);
 
 /// Risks that do not make the lab refuse the run by rule but may make it fail:
 /// start poses so crowded that the lab's start-up routine may deadlock before

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "dream/run_log/run_log.h"
 #include "dream/world/obstacle_state.h"
 #include "dream/world/pose2.h"
 #include "dream/world/unicycle_command.h"
@@ -13,7 +14,9 @@
 namespace dream::bridge {
 
 /// Every robot's pose at every step of a run, simulated or from the lab, in
-/// the form the bridge works with: steps 0..last_step() with no gap.
+/// the form the bridge works with: steps 0..last_step() with no gap. A view
+/// of a whole run log (RunTrackOf), or what `dream import` builds from the
+/// lab's files before it writes their log.
 struct RunTrack {
   int num_robots = 0;
   /// Per step: the time it was published at, microseconds since step 0.
@@ -37,7 +40,8 @@ struct RunTrack {
   }
 };
 
-/// How a recorded run ended, from its last DREAM_STATUS.
+/// How a recorded run ended, from its last DREAM_STATUS (run_log::RunLog's
+/// last_status() and robot_faults()).
 struct RunEnd {
   bool seen = false;      ///< the log has a DREAM_STATUS at all
   int8_t state = -1;      ///< run_status_t state
@@ -50,12 +54,18 @@ struct RunEnd {
   std::map<int, std::string> robot_faults;
 };
 
-/// Reads DREAM_POSES (the poses, and the velocities of the step that led to
-/// them), DREAM_OBSTACLES and DREAM_STATUS from a run log: what `dream run`
-/// writes and what `dream import` writes.
-/// @throws std::runtime_error naming the file and the step when the log has
-///         no poses, a gap or repeat in the steps, a changing robot count,
-///         an undecodable world message, or is not an LCM log.
+/// The run of `log` (what `dream run` and `dream import` write): its
+/// DREAM_POSES (the poses, and the velocities of the step that led to them)
+/// with the obstacles of each step, and, when `end` is given, how it ended.
+/// @throws std::runtime_error with the log's flaw (RunLog::Flaw, the status
+///         counting when `end` is given): a message of the world that does
+///         not decode, a gap or repeat in the steps, a changing robot count,
+///         no poses.
+RunTrack RunTrackOf(const run_log::RunLog& log, RunEnd* end = nullptr);
+
+/// RunTrackOf(run_log::RunLog::Read(log_path), end), for the commands that
+/// have only the log (export, lab-replay).
+/// @throws std::runtime_error naming the file as RunLog::Read and RunTrackOf do.
 RunTrack ReadRunTrack(const std::string& log_path, RunEnd* end = nullptr);
 
 }  // namespace dream::bridge

@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "dream/run_log/run_log.h"
+
 namespace dream::sim {
 
 /// Draws two runs of one experiment over each other as a PNG, to compare a
@@ -12,10 +14,10 @@ namespace dream::sim {
 /// and caption lines under the arena (e.g. the tracking error).
 class ComparisonPicture {
  public:
-  /// Reads both logs and writes `png_path` atomically.
-  /// @throws std::runtime_error naming the file when a log cannot be read or
-  ///         holds no DREAM_POSES, or the PNG cannot be written.
-  static void Render(const std::string& first_log, const std::string& second_log, const std::string& png_path,
+  /// Writes the two runs to `png_path` atomically.
+  /// @throws std::runtime_error naming the file when a log holds no
+  ///         DREAM_POSES (Drawable) or the PNG cannot be written.
+  static void Render(const run_log::RunLog& first, const run_log::RunLog& second, const std::string& png_path,
                      const std::vector<std::string>& caption_lines, int width_px = 1280);
 };
 

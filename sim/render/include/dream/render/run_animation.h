@@ -8,7 +8,7 @@
 #include "dream/render/arena_layout.h"
 #include "dream/render/arena_overlays.h"
 #include "dream/render/render_format.h"
-#include "dream/render/run_track.h"
+#include "dream/run_log/run_log.h"
 
 namespace dream::sim {
 
@@ -31,9 +31,10 @@ struct AnimationOptions {
 /// plus round(hold_end_s * fps) of the last one.
 class RunAnimation {
  public:
-  /// `track` and `overlays` must outlive the animation.
-  /// @throws std::invalid_argument naming the option when one is out of range.
-  RunAnimation(const RunTrack& track, const ArenaOverlays& overlays, AnimationOptions options);
+  /// `log` and `overlays` must outlive the animation.
+  /// @throws std::invalid_argument naming the option when one is out of range,
+  ///         std::runtime_error when the log holds no DREAM_POSES (Drawable).
+  RunAnimation(const run_log::RunLog& log, const ArenaOverlays& overlays, AnimationOptions options);
   ~RunAnimation();
   RunAnimation(const RunAnimation&) = delete;
   RunAnimation& operator=(const RunAnimation&) = delete;
@@ -66,7 +67,7 @@ class RunAnimation {
   void DrawStaticLayer();
   bool Encode(const std::string& path, RenderFormat format, const std::function<bool()>& cancelled);
 
-  const RunTrack& track_;
+  const run_log::RunLog& log_;
   const ArenaOverlays& overlays_;
   AnimationOptions options_;
   ArenaLayout layout_;

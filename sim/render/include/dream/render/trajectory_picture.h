@@ -4,7 +4,7 @@
 
 #include "dream/render/arena_overlays.h"
 #include "dream/render/render_format.h"
-#include "dream/render/run_track.h"
+#include "dream/run_log/run_log.h"
 
 namespace dream::sim {
 
@@ -19,19 +19,15 @@ namespace dream::sim {
 /// imported from the lab.
 class TrajectoryPicture {
  public:
-  /// Reads `log_path` and writes `png_path` atomically (no overlays).
-  /// @throws std::runtime_error naming the file when the log cannot be read,
-  ///         holds no DREAM_POSES, or the PNG cannot be written.
-  static void Render(const std::string& log_path, const std::string& png_path, int width_px = 1280);
-
-  /// Writes `track` as a PNG or SVG (`format`) to `path`, atomically.
-  /// @throws std::runtime_error naming the path when it cannot be written.
-  static void Render(const RunTrack& track, const ArenaOverlays& overlays, const std::string& path,
+  /// Writes the run of `log` as a PNG or SVG (`format`) to `path`, atomically.
+  /// @throws std::runtime_error naming the file when the log holds no
+  ///         DREAM_POSES (Drawable) or `path` cannot be written.
+  static void Render(const run_log::RunLog& log, const ArenaOverlays& overlays, const std::string& path,
                      RenderFormat format, int width_px = 1280);
 
   /// The caption under the arena, e.g. "go_to_goal — clean (no errors or
   /// warnings) — 8 robots, steps 0..206 (6.8 s)".
-  static std::string Caption(const RunTrack& track, const ArenaOverlays& overlays);
+  static std::string Caption(const run_log::RunLog& log, const ArenaOverlays& overlays);
 };
 
 }  // namespace dream::sim

@@ -1,21 +1,16 @@
 #include "synthetic_run_log.h"
 
+#include "dream/node/run_recorder.h"
 #include "dream/obstacles_t.hpp"
 #include "dream/radio_message_t.hpp"
 #include "dream/robot_poses_t.hpp"
-#include "dream/node/run_recorder.h"
+#include "dream/robot_fault_t.hpp"
+#include "dream/run_status_t.hpp"
 
 namespace dream::sim::testing {
 namespace {
 
 constexpr int64_t kStepUs = 33000;
-
-template <typename Message>
-std::vector<uint8_t> Encode(const Message& message) {
-  std::vector<uint8_t> bytes(static_cast<size_t>(message.getEncodedSize()));
-  message.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-  return bytes;
-}
 
 }  // namespace
 
@@ -41,7 +36,14 @@ SyntheticRunLog& SyntheticRunLog::Poses(int64_t step, const std::vector<std::arr
     message.v.push_back(0.0);
     message.w.push_back(0.0);
   }
-  events_.push_back({"DREAM_POSES", message.utime, Encode(message)});
+  return MessageOn("DREAM_POSES", message);
+}
+
+SyntheticRunLog& SyntheticRunLog::LyingPoses(int64_t step, int32_t claimed_robots) {
+  Poses(step, {{0.0, 0.0, 0.0}});
+  // After the 8-byte fingerprint: utime, step, run_id (8 bytes each), then num_robots, big-endian.
+  std::vector<uint8_t>& bytes = events_.back().data;
+  for (size_t i = 0; i < 4; ++i) bytes[32 + i] = static_cast<uint8_t>(claimed_robots >> (24 - 8 * i));
   return *this;
 }
 
@@ -51,8 +53,7 @@ SyntheticRunLog& SyntheticRunLog::Obstacles(int64_t step, const std::vector<rect
   message.step = step;
   message.num_obstacles = static_cast<int32_t>(obstacles.size());
   message.obstacles = obstacles;
-  events_.push_back({"DREAM_OBSTACLES", message.utime, Encode(message)});
-  return *this;
+  return MessageOn("DREAM_OBSTACLES", message);
 }
 
 SyntheticRunLog& SyntheticRunLog::Radio(int64_t step, int sender) {
@@ -61,8 +62,28 @@ SyntheticRunLog& SyntheticRunLog::Radio(int64_t step, int sender) {
   message.step = step;
   message.sender_id = sender;
   message.payload_size = 0;
-  events_.push_back({"DREAM_RADIO_" + std::to_string(sender), message.utime, Encode(message)});
-  return *this;
+  return MessageOn("DREAM_RADIO_" + std::to_string(sender), message);
+}
+
+SyntheticRunLog& SyntheticRunLog::Status(int64_t step, int8_t state, const std::vector<int32_t>& lost_robot_ids,
+                                         const std::string& detail) {
+  run_status_t message{};
+  message.utime = step * kStepUs;
+  message.step = step;
+  message.state = state;
+  message.num_lost = static_cast<int32_t>(lost_robot_ids.size());
+  message.lost_robot_ids = lost_robot_ids;
+  message.detail = detail;
+  return MessageOn("DREAM_STATUS", message);
+}
+
+SyntheticRunLog& SyntheticRunLog::Fault(int channel_robot, int32_t robot_id, int64_t step, const std::string& detail) {
+  robot_fault_t message{};
+  message.utime = step * kStepUs;
+  message.step = step;
+  message.robot_id = robot_id;
+  message.detail = detail;
+  return MessageOn("DREAM_FAULT_" + std::to_string(channel_robot), message);
 }
 
 SyntheticRunLog& SyntheticRunLog::Other(const std::string& channel) {

@@ -1,0 +1,108 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "dream/obstacles_t.hpp"
+#include "dream/robot_poses_t.hpp"
+#include "dream/run_status_t.hpp"
+
+namespace dream::run_log {
+
+/// One DREAM_RADIO_<n> message: robot `sender_id` broadcast at `step`.
+struct RadioSend {
+  int64_t step = 0;
+  int32_t sender_id = 0;
+};
+
+/// A run's LCM log (run.lcmlog as `dream run`, `sim`, `launch`, `lab-replay`
+/// and `import` write it), read once into what every reader of a run needs:
+/// the experiment's metrics, the pictures and videos, the bridge (export,
+/// compare, lab-replay) and the lab verifier's counts. The one place that
+/// decodes a run log; read it once and hand it to each of them.
+///
+/// Messages are read as they decode: a message that does not (a forged count,
+/// a foreign type on a DREAM_* channel) is left out, channels of no interest
+/// are skipped, and what keeps the log from being a whole run is kept as its
+/// Flaw(): pictures and metrics use what decodes, the bridge refuses it.
+class RunLog {
+ public:
+  /// Reads the log at `path`. Every message is checked against its type's
+  /// wire layout before it is decoded (lcm::DecodeProblem), so no count in
+  /// the log makes it allocate more than the log's own bytes.
+  /// @throws std::runtime_error naming the file (and the byte) when it is
+  ///         missing, not an LCM log, cut short or has a damaged event
+  ///         (lcm::LogReader).
+  static RunLog Read(const std::string& path);
+
+  const std::string& path() const { return path_; }
+
+  /// Every DREAM_POSES message that decodes, in log order (may be empty).
+  const std::vector<robot_poses_t>& poses() const { return poses_; }
+  /// The most robots any step has (0 without poses).
+  int num_robots() const { return num_robots_; }
+  /// The steps of the first and last poses (-1 without poses).
+  int64_t first_step() const { return poses_.empty() ? -1 : poses_.front().step; }
+  int64_t last_step() const { return poses_.empty() ? -1 : poses_.back().step; }
+  /// The index of the last pose whose step is <= `step` (0 before the first).
+  size_t PoseIndexAtStep(int64_t step) const;
+
+  /// Every DREAM_OBSTACLES message that decodes, by step (log order within a step).
+  const std::vector<obstacles_t>& obstacles() const { return obstacles_; }
+  /// The obstacles at the step of poses()[pose_index]: the last DREAM_OBSTACLES
+  /// for that step or an earlier one, wherever it stands in the log (the world
+  /// publishes a step's obstacles next to its poses); an empty message before
+  /// the first.
+  const obstacles_t& obstacles_at(size_t pose_index) const;
+
+  /// Every DREAM_RADIO_<n> broadcast that decodes, by step (log order within a step).
+  const std::vector<RadioSend>& radio_sends() const { return radio_sends_; }
+
+  /// The last DREAM_STATUS that decodes: how the run ended (FINISHED,
+  /// ABORTED), or where it stood when the log stops; none in a log without one.
+  const std::optional<run_status_t>& last_status() const { return last_status_; }
+  /// Of the robots lost at the end (last_status()'s lost_robot_ids), those
+  /// whose agent said why on DREAM_FAULT_<id>: id -> "step k: detail", from
+  /// the first fault on the channel whose robot_id is the channel's (a fault
+  /// from another agent, which the world refused, names a robot that drove on).
+  const std::map<int, std::string>& robot_faults() const { return robot_faults_; }
+
+  /// Why this is not a whole run log, the first in the log, as an error naming
+  /// the file: a DREAM_POSES or DREAM_OBSTACLES message (with `with_status`, a
+  /// DREAM_STATUS too) that does not decode, named by its event and byte, with
+  /// the decoder's reason; poses whose steps do not go 0, 1, 2, ... each once;
+  /// no robot at step 0, or a robot count that changes; or no poses at all.
+  /// Nothing for a whole run log.
+  std::optional<std::string> Flaw(bool with_status) const;
+
+ private:
+  /// A flaw and the index of the event where it shows.
+  struct Problem {
+    int64_t event_index = 0;
+    std::string text;
+  };
+
+  /// Checks the pose just read (poses_.back(), event `event_index`) against
+  /// those before it, while the log is whole so far.
+  void CheckSequence(int64_t event_index);
+  /// Orders obstacles and radio by step, finds each pose's obstacles, keeps
+  /// the faults of the robots lost at the end.
+  void Index(const std::map<int, std::string>& faults);
+
+  std::string path_;
+  std::vector<robot_poses_t> poses_;
+  int num_robots_ = 0;
+  std::vector<obstacles_t> obstacles_;
+  std::vector<size_t> obstacle_index_;  // per pose: index into obstacles_, kNone before the first
+  std::vector<RadioSend> radio_sends_;
+  std::optional<run_status_t> last_status_;
+  std::map<int, std::string> robot_faults_;
+  std::optional<Problem> world_flaw_;   // poses and obstacles
+  std::optional<Problem> status_flaw_;  // an undecodable DREAM_STATUS
+};
+
+}  // namespace dream::run_log

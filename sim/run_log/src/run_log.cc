@@ -1,0 +1,131 @@
+#include "dream/run_log/run_log.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "dream/lcm/channels.h"
+#include "dream/lcm/lcm_typed.h"
+#include "dream/lcm/log_reader.h"
+#include "dream/radio_message_t.hpp"
+#include "dream/robot_fault_t.hpp"
+
+namespace dream::run_log {
+namespace {
+
+constexpr size_t kNone = std::numeric_limits<size_t>::max();
+
+}  // namespace
+
+RunLog RunLog::Read(const std::string& path) {
+  RunLog log;
+  log.path_ = path;
+  lcm::LogReader reader(path);
+  lcm::LogRecord record;
+  run_status_t status;
+  radio_message_t radio;
+  robot_fault_t fault;
+  std::map<int, std::string> faults;  // the first of each robot
+  // A world message that does not decode: named by its event and byte offset.
+  auto undecodable = [&](std::optional<Problem>* flaw, const std::string& problem) {
+    if (*flaw) return;
+    *flaw = Problem{reader.event_index(), path + ": event " + std::to_string(reader.event_index()) + " at byte " +
+                                              std::to_string(reader.event_offset()) + ": a " + record.channel +
+                                              " message cannot be decoded; in the message: " + problem};
+  };
+  while (reader.Next(&record)) {
+    const uint8_t* data = record.data.data();
+    const int size = static_cast<int>(record.data.size());
+    if (record.channel == lcm::kPosesChannel) {
+      robot_poses_t& poses = log.poses_.emplace_back();
+      if (auto problem = lcm::DecodeProblem(data, size, &poses)) {
+        log.poses_.pop_back();
+        undecodable(&log.world_flaw_, *problem);
+        continue;
+      }
+      log.num_robots_ = std::max(log.num_robots_, poses.num_robots);
+      log.CheckSequence(reader.event_index());
+    } else if (record.channel == lcm::kObstaclesChannel) {
+      obstacles_t& obstacles = log.obstacles_.emplace_back();
+      if (auto problem = lcm::DecodeProblem(data, size, &obstacles)) {
+        log.obstacles_.pop_back();
+        undecodable(&log.world_flaw_, *problem);
+      }
+    } else if (record.channel == lcm::kStatusChannel) {
+      if (auto problem = lcm::DecodeProblem(data, size, &status)) {
+        undecodable(&log.status_flaw_, *problem);
+      } else {
+        log.last_status_ = std::move(status);
+      }
+    } else if (lcm::RobotIdFromChannel(record.channel, lcm::kRadioChannelPrefix)) {
+      if (lcm::Decode(data, size, &radio)) log.radio_sends_.push_back({radio.step, radio.sender_id});
+    } else if (const std::optional<int> id = lcm::RobotIdFromChannel(record.channel, lcm::kFaultChannelPrefix)) {
+      if (lcm::Decode(data, size, &fault) && fault.robot_id == *id && faults.count(*id) == 0) {
+        faults[*id] = "step " + std::to_string(fault.step) + ": " + fault.detail;  // bounded by lcm::Decode
+      }
+    }
+  }
+  log.Index(faults);
+  return log;
+}
+
+void RunLog::CheckSequence(int64_t event_index) {
+  if (world_flaw_) return;  // the log stopped being whole before: nothing after counts
+  const robot_poses_t& poses = poses_.back();
+  // Whole so far, so the poses before this one are steps 0 .. expected - 1.
+  const auto expected = static_cast<int64_t>(poses_.size()) - 1;
+  std::string problem;
+  if (poses.step != expected) {
+    problem = "DREAM_POSES jumps from step " + std::to_string(expected - 1) + " to step " + std::to_string(poses.step) +
+              "; a run log has every step once, in order";
+  } else if (expected == 0 && poses.num_robots < 1) {
+    problem = "DREAM_POSES at step 0 has no robots";
+  } else if (poses.num_robots != poses_.front().num_robots) {
+    problem = "DREAM_POSES at step " + std::to_string(poses.step) + " has " + std::to_string(poses.num_robots) +
+              " robots, earlier steps " + std::to_string(poses_.front().num_robots);
+  }
+  if (!problem.empty()) world_flaw_ = Problem{event_index, path_ + ": " + problem};
+}
+
+void RunLog::Index(const std::map<int, std::string>& faults) {
+  // The world publishes a step's obstacles next to its poses, in either order:
+  // match them by step, not by position in the log.
+  std::stable_sort(obstacles_.begin(), obstacles_.end(),
+                   [](const obstacles_t& a, const obstacles_t& b) { return a.step < b.step; });
+  std::stable_sort(radio_sends_.begin(), radio_sends_.end(),
+                   [](const RadioSend& a, const RadioSend& b) { return a.step < b.step; });
+  obstacle_index_.reserve(poses_.size());
+  size_t next = 0;  // obstacles_[0 .. next) are at or before the current pose's step
+  for (const robot_poses_t& poses : poses_) {
+    while (next < obstacles_.size() && obstacles_[next].step <= poses.step) ++next;
+    obstacle_index_.push_back(next == 0 ? kNone : next - 1);
+  }
+  if (!last_status_) return;
+  for (int id : last_status_->lost_robot_ids) {
+    const auto fault = faults.find(id);
+    if (fault != faults.end()) robot_faults_[id] = fault->second;
+  }
+}
+
+size_t RunLog::PoseIndexAtStep(int64_t step) const {
+  const auto after = std::upper_bound(poses_.begin(), poses_.end(), step,
+                                      [](int64_t s, const robot_poses_t& poses) { return s < poses.step; });
+  return after == poses_.begin() ? 0 : static_cast<size_t>(after - poses_.begin() - 1);
+}
+
+const obstacles_t& RunLog::obstacles_at(size_t pose_index) const {
+  static const obstacles_t kNoObstacles{};
+  const size_t index = obstacle_index_.at(pose_index);
+  return index == kNone ? kNoObstacles : obstacles_[index];
+}
+
+std::optional<std::string> RunLog::Flaw(bool with_status) const {
+  const Problem* first = world_flaw_ ? &*world_flaw_ : nullptr;
+  if (with_status && status_flaw_ && (first == nullptr || status_flaw_->event_index < first->event_index)) {
+    first = &*status_flaw_;
+  }
+  if (first != nullptr) return first->text;
+  if (poses_.empty()) return path_ + ": the log holds no DREAM_POSES messages: it is not a run log";
+  return std::nullopt;
+}
+
+}  // namespace dream::run_log
