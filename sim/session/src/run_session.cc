@@ -9,7 +9,6 @@
 #include "dream/bridge/controller_module_copy.h"
 #include "dream/bridge/metrics_json.h"
 #include "dream/bridge/pre_validation.h"
-#include "dream/bridge/run_track.h"
 #include "dream/node/atomic_file.h"
 #include "dream/node/output_folder.h"
 #include "dream/node/run_judge.h"
@@ -146,26 +145,52 @@ RunSession::Stepped RunSession::Step(lcm::LcmInterface& lcm, const Folder& folde
   return stepped;
 }
 
-nlohmann::ordered_json RunSession::Metrics(const std::string& log_path) const {
+/// The run's log, read back once after the run for the metrics, the
+/// verifier's counts and the picture; when it cannot be read, each of them
+/// fails with the reader's error, as when each read it.
+struct RunSession::LogReadBack {
+  explicit LogReadBack(const std::string& log_path) : path(log_path) {
+    try {
+      log.emplace(run_log::RunLog::Read(path));
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+  }
+  /// @throws std::runtime_error (the reader's) when the log could not be read.
+  const run_log::RunLog& Get() const {
+    if (!log) throw std::runtime_error(error);
+    return *log;
+  }
+
+  std::string path;
+  std::optional<run_log::RunLog> log;
+  std::string error;
+};
+
+nlohmann::ordered_json RunSession::Metrics(const LogReadBack& log) const {
+  nlohmann::ordered_json json;
   if (factory_ == nullptr) {
     spdlog::warn("{}: {}", config_.source, factory_error_);
-    nlohmann::ordered_json json;
     json["error"] = factory_error_;
     return json;
   }
-  return bridge::MetricsJson(*factory_, log_path);
+  if (!log.log) {
+    json["error"] = log.error;
+    return json;
+  }
+  return bridge::MetricsJson(*factory_, *log.log);
 }
 
-sim::RunJudgement RunSession::Judge(const sim::RunOutcome& outcome, const sim::World& world,
-                                    const std::string& log_path, nlohmann::ordered_json* summary) const {
+sim::RunJudgement RunSession::Judge(const sim::RunOutcome& outcome, const sim::World& world, const LogReadBack& log,
+                                    nlohmann::ordered_json* summary) const {
   // The lab's verifier counts each robot outside the arena, the world each
   // step with any: re-count on the log, only when there is something to count.
   int64_t outside = 0;
   if (world.violations().boundary_errors > 0) {
     try {
-      outside = bridge::VerifierCounts(bridge::ReadRunTrack(log_path), config_.world).robots_outside_boundaries;
+      outside = bridge::VerifierCounts(log.Get(), config_.world).robots_outside_boundaries;
     } catch (const std::exception& e) {
-      spdlog::warn("{}: cannot re-count robots outside the arena ({}); using the steps with any", log_path, e.what());
+      spdlog::warn("{}: cannot re-count robots outside the arena ({}); using the steps with any", log.path, e.what());
       outside = -1;
     }
   }
@@ -192,7 +217,8 @@ RunResult RunSession::Report(const Stepped& stepped, const std::string& dir) {
   result.outcome = outcome;
   // Written whatever the outcome: after a failed run it says why, and the
   // log keeps every whole event up to the failure.
-  const nlohmann::ordered_json metrics = Metrics(log_path);
+  const LogReadBack log(log_path);  // once, for the metrics, the verifier's counts and the picture
+  const nlohmann::ordered_json metrics = Metrics(log);
   if (metrics.contains("error")) {
     // The run and its log stand; only the experiment's own numbers are missing.
     spdlog::warn("{}: no experiment metrics: {}", log_path, metrics["error"].get<std::string>());
@@ -200,7 +226,7 @@ RunResult RunSession::Report(const Stepped& stepped, const std::string& dir) {
   // The goal is judged on the summary (robots done, steps) with its metrics.
   nlohmann::ordered_json summary = nlohmann::ordered_json::parse(sim::RunSummaryJson(config_, outcome, world, kLogName));
   summary["metrics"] = metrics;
-  result.judgement = Judge(outcome, world, log_path, &summary);
+  result.judgement = Judge(outcome, world, log, &summary);
   const nlohmann::ordered_json goal = summary["goal"];
   summary =
       nlohmann::ordered_json::parse(sim::RunSummaryJson(config_, outcome, world, kLogName, result.judgement));
@@ -232,21 +258,20 @@ RunResult RunSession::Report(const Stepped& stepped, const std::string& dir) {
   report << "log:     " << log_path << "\nsummary: " << dir + "/summary.json" << "\n";
   if (outcome.steps > 0 || outcome.end == sim::RunOutcome::End::kFinished) {
     const std::string picture_path = dir + "/trajectories.png";
-    result.picture_failed = !DrawPicture(log_path, picture_path, judgement.verdict());
+    result.picture_failed = !DrawPicture(log, picture_path, judgement.verdict());
     if (!result.picture_failed) report << "picture: " << picture_path << "\n";
   }
   return result;
 }
 
-bool RunSession::DrawPicture(const std::string& log_path, const std::string& picture_path,
+bool RunSession::DrawPicture(const LogReadBack& log, const std::string& picture_path,
                              sim::RunVerdict verdict) const {
   try {
     // With the config's goals, like `dream render` draws them.
     sim::ArenaOverlays overlays = factory_ ? ArenaOverlaysFromConfig(config_, *factory_) : ArenaOverlaysFromConfig(config_);
     overlays.run_name = config_.name;
     overlays.verdict = sim::RunVerdictName(verdict);  // as summary.json says
-    sim::TrajectoryPicture::Render(run_log::RunLog::Read(log_path), overlays, picture_path, sim::RenderFormat::kPng,
-                                   1280);
+    sim::TrajectoryPicture::Render(log.Get(), overlays, picture_path, sim::RenderFormat::kPng, 1280);
     return true;
   } catch (const std::exception& e) {
     spdlog::error("no trajectories.png: {}", e.what());

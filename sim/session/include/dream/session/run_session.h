@@ -80,12 +80,13 @@ class RunSession {
 
  private:
   struct Stepped;
+  struct LogReadBack;
   Stepped Step(lcm::LcmInterface& lcm, const Folder& folder, const GivenWorld& world);
   RunResult Report(const Stepped& stepped, const std::string& dir);
-  nlohmann::ordered_json Metrics(const std::string& log_path) const;
-  sim::RunJudgement Judge(const sim::RunOutcome& outcome, const sim::World& world, const std::string& log_path,
+  nlohmann::ordered_json Metrics(const LogReadBack& log) const;
+  sim::RunJudgement Judge(const sim::RunOutcome& outcome, const sim::World& world, const LogReadBack& log,
                           nlohmann::ordered_json* summary) const;
-  bool DrawPicture(const std::string& log_path, const std::string& picture_path, sim::RunVerdict verdict) const;
+  bool DrawPicture(const LogReadBack& log, const std::string& picture_path, sim::RunVerdict verdict) const;
 
   config::RunConfig config_;
   Options options_;
