@@ -1,20 +1,19 @@
 #include "dream/bridge/metrics_json.h"
 
-#include <optional>
-
 #include "dream/agent_host/controller_factory.h"
 #include "dream/agent_host/log_metrics.h"
 
 namespace dream::bridge {
-namespace {
 
-nlohmann::ordered_json ErrorJson(const std::exception& e) {
-  nlohmann::ordered_json json;
-  json["error"] = e.what();
-  return json;
+nlohmann::ordered_json MetricsJson(const config::RunConfig& config, const run_log::RunLog& log) {
+  try {
+    return MetricsJson(agents::ControllerFactory(config), log);
+  } catch (const std::exception& e) {
+    nlohmann::ordered_json json;
+    json["error"] = e.what();
+    return json;
+  }
 }
-
-}  // namespace
 
 nlohmann::ordered_json MetricsJson(const agents::ControllerFactory& factory, const run_log::RunLog& log) {
   nlohmann::ordered_json json;
@@ -37,33 +36,6 @@ nlohmann::ordered_json MetricsJson(const agents::ControllerFactory& factory, con
     json["error"] = e.what();
   }
   return json;
-}
-
-nlohmann::ordered_json MetricsJson(const config::RunConfig& config, const run_log::RunLog& log) {
-  try {
-    return MetricsJson(agents::ControllerFactory(config), log);
-  } catch (const std::exception& e) {
-    return ErrorJson(e);
-  }
-}
-
-nlohmann::ordered_json MetricsJson(const agents::ControllerFactory& factory, const std::string& log_path) {
-  std::optional<run_log::RunLog> log;
-  try {
-    log = run_log::RunLog::Read(log_path);
-  } catch (const std::exception& e) {
-    return ErrorJson(e);
-  }
-  return MetricsJson(factory, *log);
-}
-
-nlohmann::ordered_json MetricsJson(const config::RunConfig& config, const std::string& log_path) {
-  try {
-    const agents::ControllerFactory factory(config);
-    return MetricsJson(factory, log_path);
-  } catch (const std::exception& e) {
-    return ErrorJson(e);
-  }
 }
 
 }  // namespace dream::bridge

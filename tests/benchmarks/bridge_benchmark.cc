@@ -181,7 +181,7 @@ void BM_ImportParts(benchmark::State& state) {
       state.ResumeTiming();
       bridge::WriteLabRunLog(lab.track, exported.config.world, 2, "done", dir + "/parts.lcmlog");
     } else if (part == 2) {
-      benchmark::DoNotOptimize(bridge::MetricsJson(exported.config, dir + "/lab/run.lcmlog"));
+      benchmark::DoNotOptimize(bridge::MetricsJson(exported.config, run_log::RunLog::Read(dir + "/lab/run.lcmlog")));
     } else {
       sim::TrajectoryPicture::Render(run_log::RunLog::Read(dir + "/lab/run.lcmlog"), sim::ArenaOverlays{},
                                      dir + "/parts.png", sim::RenderFormat::kPng);

@@ -1,7 +1,6 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
-#include <string>
 
 #include "dream/config/run_config.h"
 #include "dream/run_log/run_log.h"
@@ -15,15 +14,11 @@ namespace dream::bridge {
 /// The experiment's metrics computed from a run's log (agents::MetricsFromLog),
 /// as `dream run` puts them under "metrics" in summary.json ({"kind": ...,
 /// "goal": ..., values, steps, series}); {"error": ...} when they cannot be
-/// computed. `factory` is the run's, when the caller has one already (so its
-/// plugins are not loaded and its section not read again).
-nlohmann::ordered_json MetricsJson(const agents::ControllerFactory& factory, const run_log::RunLog& log);
-/// The same with the factory of `config`; {"error": ...} when it cannot be built.
+/// computed (also when the config's factory cannot be built).
 nlohmann::ordered_json MetricsJson(const config::RunConfig& config, const run_log::RunLog& log);
 
-/// The same for the log at `log_path`, for callers that have only its path;
-/// {"error": ...} naming the file when it cannot be read.
-nlohmann::ordered_json MetricsJson(const agents::ControllerFactory& factory, const std::string& log_path);
-nlohmann::ordered_json MetricsJson(const config::RunConfig& config, const std::string& log_path);
+/// The same with the run's factory, when the caller has one already (so its
+/// plugins are not loaded and its section not read again).
+nlohmann::ordered_json MetricsJson(const agents::ControllerFactory& factory, const run_log::RunLog& log);
 
 }  // namespace dream::bridge
