@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include <cerrno>
+#include <chrono>
 #include <exception>
 #include <lcm/lcm-cpp.hpp>
 #include <regex>
@@ -10,7 +11,8 @@
 
 namespace dream::lcm {
 
-LcmBus::LcmBus(std::string url) : url_(std::move(url)), lcm_(std::make_unique<::lcm::LCM>(url_)) {
+LcmBus::LcmBus(std::string url)
+    : url_(std::move(url)), lcm_(std::make_unique<::lcm::LCM>(url_)), own_queue_(url_.rfind("memq://", 0) == 0) {
   if (!lcm_->good()) {
     throw std::runtime_error("cannot open LCM on '" + url_ +
                              "': check the URL (memq://, udpm://239.255.76.67:7667?ttl=0) and, for "
@@ -48,11 +50,50 @@ void LcmBus::ResubscribeForAllHandlers() {
   subscription_ = replacement;
 }
 
-_lcm_t* LcmBus::c_handle() const { return lcm_->getUnderlyingLCM(); }
+_lcm_t* LcmBus::c_handle() {
+  const std::lock_guard<std::mutex> lock(queue_mutex_);
+  if (own_queue_) PassOwnQueueToLcm();
+  return lcm_->getUnderlyingLCM();
+}
+
+void LcmBus::PassOwnQueueToLcm() {
+  // Called with queue_mutex_ held. LCM's memq publish only queues (it never
+  // calls a handler), so holding the lock here cannot deadlock.
+  own_queue_ = false;
+  for (const Queued& message : queue_) {
+    lcm_->publish(message.channel, message.bytes.data(), static_cast<unsigned int>(message.bytes.size()));
+  }
+  queue_.clear();
+}
+
+long LcmBus::queue_overflows() const {
+  const std::lock_guard<std::mutex> lock(queue_mutex_);
+  return queue_overflows_;
+}
 
 LcmBus::~LcmBus() = default;
 
 void LcmBus::Publish(const std::string& channel, const void* data, int size) {
+  {
+    std::unique_lock<std::mutex> lock(queue_mutex_);
+    if (own_queue_) {
+      // As LCM's memq: a message no handler wants now is dropped, a full queue drops new ones.
+      std::vector<size_t> uncached;
+      if (RouteOf(channel, &uncached).empty()) return;
+      if (queue_.size() >= static_cast<size_t>(kQueueCapacity)) {
+        if (queue_overflows_++ % 1000 == 0) {
+          spdlog::warn("{}: queue full ({} messages): dropped a message on {} (#{})", url_, kQueueCapacity, channel,
+                       queue_overflows_);
+        }
+        return;
+      }
+      const auto* bytes = static_cast<const uint8_t*>(data);
+      queue_.push_back(Queued{channel, std::vector<uint8_t>(bytes, bytes + size)});
+      lock.unlock();
+      queue_filled_.notify_one();
+      return;
+    }
+  }
   if (lcm_->publish(channel, data, static_cast<unsigned int>(size)) != 0) {
     throw std::runtime_error("LCM refused to publish " + std::to_string(size) + " bytes on " +
                              channel + " (url " + url_ + ")");
@@ -66,6 +107,7 @@ void LcmBus::Subscribe(const std::string& channel_regex, RawHandler handler) {
   } catch (const std::regex_error& e) {
     throw std::invalid_argument("cannot subscribe to '" + channel_regex + "': not a valid regex (" + e.what() + ")");
   }
+  const std::lock_guard<std::mutex> lock(queue_mutex_);
   subscribers_.push_back(Subscriber{std::move(regex), channel_regex, std::move(handler)});
   try {
     ResubscribeForAllHandlers();
@@ -82,6 +124,12 @@ void LcmBus::Subscribe(const std::string& channel_regex, RawHandler handler) {
 }
 
 int LcmBus::HandleSubscriptions(int timeout_ms) {
+  bool own_queue = false;
+  {
+    const std::lock_guard<std::mutex> lock(queue_mutex_);
+    own_queue = own_queue_;
+  }
+  if (own_queue) return HandleOwnQueue(timeout_ms);
   errno = 0;
   const int handled = lcm_->handleTimeout(timeout_ms);
   // A signal (Ctrl-C) interrupting the wait is not a failure: the caller
@@ -105,24 +153,49 @@ std::vector<size_t> LcmBus::MatchSubscribers(const std::string& channel) const {
   return matching;
 }
 
-void LcmBus::Deliver(const std::string& channel, const void* data, int size) {
-  // By index up to the count at arrival, as LCM does: a handler that
-  // subscribes appends to this route, and the newcomer starts with the next
-  // message. (unordered_map keeps references to its values valid.)
+int LcmBus::HandleOwnQueue(int timeout_ms) {
+  Queued message;
+  {
+    std::unique_lock<std::mutex> lock(queue_mutex_);
+    if (queue_.empty() && timeout_ms > 0) {
+      queue_filled_.wait_for(lock, std::chrono::milliseconds(timeout_ms), [this] { return !queue_.empty(); });
+    }
+    if (queue_.empty()) return 0;
+    message = std::move(queue_.front());
+    queue_.pop_front();
+  }
+  Deliver(message.channel, message.bytes.data(), static_cast<int>(message.bytes.size()));
+  return 1;
+}
+
+const std::vector<size_t>& LcmBus::RouteOf(const std::string& channel, std::vector<size_t>* uncached) {
+  // Called with queue_mutex_ held.
   auto found = routes_.find(channel);
   if (found == routes_.end() && routes_.size() < kMaxRoutedChannels) {
     found = routes_.emplace(channel, MatchSubscribers(channel)).first;
   }
+  if (found != routes_.end()) return found->second;
   // Past the cap (made-up channel names) the route is matched per message and not kept.
+  *uncached = MatchSubscribers(channel);
+  return *uncached;
+}
+
+void LcmBus::Deliver(const std::string& channel, const void* data, int size) {
+  // By index up to the count at arrival, as LCM does: a handler that
+  // subscribes appends to this route, and the newcomer starts with the next
+  // message. (unordered_map keeps references to its values valid.) The lock
+  // covers finding the route, not the handlers, which may publish or subscribe.
   std::vector<size_t> uncached;
-  if (found == routes_.end()) {
-    uncached = MatchSubscribers(channel);
-    ++uncached_deliveries_;
+  const std::vector<size_t>* targets = nullptr;
+  size_t count = 0;
+  {
+    const std::lock_guard<std::mutex> lock(queue_mutex_);
+    targets = &RouteOf(channel, &uncached);
+    count = targets->size();
+    if (targets == &uncached) ++uncached_deliveries_;
   }
-  const std::vector<size_t>& targets = found != routes_.end() ? found->second : uncached;
-  const size_t count = targets.size();
   for (size_t k = 0; k < count; ++k) {
-    const size_t index = targets[k];
+    const size_t index = (*targets)[k];
     // Nothing may propagate into LCM's C code: log, count, carry on.
     try {
       subscribers_[index].handler(channel, data, size);

@@ -1,7 +1,11 @@
 #include <gtest/gtest.h>
 
+#include <lcm/lcm.h>
+
 #include <cstdlib>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "dream/lcm/channels.h"
 #include "dream/lcm/lcm_bus.h"
@@ -96,6 +100,73 @@ TEST(LcmBusTest, ManyMessagesPerStepAreNotDroppedByTheQueue) {
   for (int i = 0; i < 500; ++i) bus.Publish(CommandChannel(i % 50), &byte, 1);
   DrainBus(bus);
   EXPECT_EQ(received, 500);
+}
+
+// A memq bus queues messages itself (LCM's memq provider costs three system
+// calls per message), with LCM's memq rules: first in, first out; bounded;
+// a message nobody wants when it is published is dropped.
+TEST(LcmBusTest, MemqMessageNobodyWantsWhenPublishedIsDroppedWithOrWithoutLcm) {
+  for (const bool through_lcm : {false, true}) {
+    LcmBus bus("memq://");
+    if (through_lcm) bus.c_handle();
+    const char early = 'e';
+    bus.Publish("LATE", &early, 1);
+    int heard = 0;
+    bus.Subscribe("LATE", [&](const std::string&, const void*, int) { ++heard; });
+    DrainBus(bus);
+    EXPECT_EQ(heard, 0) << (through_lcm ? "LCM's memq" : "the bus's own queue") << " delivered a message published "
+                        << "before anyone subscribed";
+  }
+}
+
+TEST(LcmBusTest, MemqQueueKeepsLcmsOrderBoundAndDropRule) {
+  LcmBus bus("memq://");
+  const char early = 'e';
+  bus.Publish("LATE", &early, 1);  // no handler yet: dropped, as LCM drops it
+  std::vector<std::string> heard;
+  bus.Subscribe("LATE|ORDER", [&](const std::string& channel, const void* data, int size) {
+    heard.push_back(channel + ":" + std::string(static_cast<const char*>(data), static_cast<size_t>(size)));
+  });
+  EXPECT_EQ(bus.HandleSubscriptions(0), 0) << "the message published before any handler must be gone";
+  for (int i = 0; i < LcmBus::kQueueCapacity + 5; ++i) {
+    const std::string text = std::to_string(i);
+    bus.Publish("ORDER", text.data(), static_cast<int>(text.size()));
+  }
+  EXPECT_EQ(bus.queue_overflows(), 5);
+  DrainBus(bus);
+  ASSERT_EQ(heard.size(), static_cast<size_t>(LcmBus::kQueueCapacity));
+  EXPECT_EQ(heard.front(), "ORDER:0");
+  EXPECT_EQ(heard.back(), "ORDER:" + std::to_string(LcmBus::kQueueCapacity - 1));
+  EXPECT_EQ(bus.HandleSubscriptions(5), 0) << "an empty queue waits for the timeout and handles nothing";
+}
+
+// Once another host takes LCM's instance (the embedded Python agents), the
+// bus publishes through LCM: that host hears the bus's messages, the bus
+// hears the host's, and what was queued before is delivered first.
+TEST(LcmBusTest, MemqBusGoesThroughLcmOnceItsInstanceIsShared) {
+  LcmBus bus("memq://");
+  std::vector<std::string> bus_heard;
+  bus.Subscribe("TO_BUS|BOTH", [&](const std::string& channel, const void*, int) { bus_heard.push_back(channel); });
+  const char byte = 1;
+  bus.Publish("BOTH", &byte, 1);  // queued by the bus itself
+  lcm_t* shared = bus.c_handle();
+  std::vector<std::string> host_heard;
+  lcm_subscription_t* host = lcm_subscribe(
+      shared, "BOTH",
+      [](const lcm_recv_buf_t*, const char* channel, void* heard) {
+        static_cast<std::vector<std::string>*>(heard)->push_back(channel);
+      },
+      &host_heard);
+  ASSERT_NE(host, nullptr);
+  bus.Publish("BOTH", &byte, 1);                          // through LCM now
+  ASSERT_EQ(lcm_publish(shared, "TO_BUS", &byte, 1), 0);  // the host's message reaches the bus
+  DrainBus(bus);
+  EXPECT_EQ(bus_heard, (std::vector<std::string>{"BOTH", "BOTH", "TO_BUS"}));
+  // LCM's memq hands a message to whoever is subscribed when it is handled, so
+  // the host hears the one queued before it subscribed too, as it did when
+  // every message went through LCM.
+  EXPECT_EQ(host_heard, (std::vector<std::string>{"BOTH", "BOTH"}));
+  lcm_unsubscribe(shared, host);
 }
 
 TEST(LcmBusTest, OverlappingSubscriptionsEachGetEveryMessage) {

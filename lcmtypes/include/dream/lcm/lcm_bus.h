@@ -1,7 +1,10 @@
 #pragma once
 
+#include <condition_variable>
+#include <cstdint>
 #include <deque>
 #include <memory>
+#include <mutex>
 #include <regex>
 #include <string>
 #include <unordered_map>
@@ -33,6 +36,15 @@ namespace dream::lcm {
 /// Its queue capacity is raised (LCM's default of 30 silently drops messages
 /// when a lockstep step delivers one command per robot), and udpm URLs get a
 /// 4 MB kernel receive buffer unless the URL sets one (see ResolveLcmUrl()).
+///
+/// On `memq://` (everything in this process: `dream run`) the bus queues
+/// messages itself, with LCM's memq semantics (first in, first out; a message
+/// no handler wants when it is published is dropped; kQueueCapacity), instead
+/// of going through LCM's memq provider, which costs three system calls per
+/// message (a notification pipe written, polled and read): half of an
+/// embedded run's loop. Once c_handle() hands LCM's instance to another host
+/// (the embedded Python agents), messages go through LCM again, so that host
+/// hears them; what was queued by then is passed on first, in order.
 class LcmBus final : public LcmInterface {
  public:
   /// Messages queued before LCM drops new ones; enough for several steps of
@@ -60,8 +72,10 @@ class LcmBus final : public LcmInterface {
   /// LCM's C instance under this bus, for a host in another language in this
   /// process (the Python agents of `dream run`, dream::python_host) to
   /// subscribe and publish on the same queue. It stays this bus's: never
-  /// destroy it.
-  _lcm_t* c_handle() const;
+  /// destroy it. From then on a memq bus publishes through LCM too.
+  _lcm_t* c_handle();
+  /// Messages a memq bus's own queue refused because it held kQueueCapacity.
+  long queue_overflows() const;
 
  private:
   struct Subscriber {
@@ -76,6 +90,15 @@ class LcmBus final : public LcmInterface {
   std::vector<size_t> MatchSubscribers(const std::string& channel) const;
   void DiscardStartUpLeftovers();
   void ResubscribeForAllHandlers();
+  const std::vector<size_t>& RouteOf(const std::string& channel, std::vector<size_t>* uncached);
+  int HandleOwnQueue(int timeout_ms);
+  void PassOwnQueueToLcm();
+
+  /// A message on a memq bus's own queue.
+  struct Queued {
+    std::string channel;
+    std::vector<uint8_t> bytes;
+  };
 
   std::string url_;
   std::unique_ptr<::lcm::LCM> lcm_;
@@ -88,6 +111,14 @@ class LcmBus final : public LcmInterface {
   std::unordered_map<std::string, std::vector<size_t>> routes_;
   long handler_failures_ = 0;
   long uncached_deliveries_ = 0;
+  // The memq bus's own queue (own_queue_ while no other host uses LCM's
+  // instance). The mutex keeps Publish as thread-safe as LCM's; it also
+  // guards routes_ and subscribers_ while the own queue is in use.
+  bool own_queue_ = false;
+  mutable std::mutex queue_mutex_;
+  std::condition_variable queue_filled_;
+  std::deque<Queued> queue_;
+  long queue_overflows_ = 0;
 };
 
 }  // namespace dream::lcm
