@@ -14,9 +14,28 @@ std::string RunSummaryJson(const config::RunConfig& config, const RunOutcome& ou
   return RunSummaryJson(config, outcome, world, log_file_name, JudgeRun(config, outcome, world));
 }
 
+void SetSummaryVerdict(nlohmann::ordered_json* summary, const RunJudgement& judgement) {
+  nlohmann::ordered_json& json = *summary;
+  json["verdict"] = RunVerdictName(judgement.verdict());
+  nlohmann::json reasons = nlohmann::json::array();
+  for (const VerdictReason& reason : judgement.reasons()) {
+    reasons.push_back({{"rule", reason.rule},
+                       {"verdict", RunVerdictName(reason.verdict)},
+                       {"problem", reason.problem},
+                       {"find_out", reason.find_out}});
+  }
+  json["verdict_reasons"] = reasons;
+  json["robotarium_verdict"] = RunVerdictName(judgement.report().verdict);
+  json["robotarium_report"] = judgement.report().Text();
+}
+
 std::string RunSummaryJson(const config::RunConfig& config, const RunOutcome& outcome, const World& world,
                            const std::string& log_file_name, const RunJudgement& judgement) {
-  const RunReport& report = judgement.report();
+  return RunSummary(config, outcome, world, log_file_name, judgement).dump(2) + "\n";
+}
+
+nlohmann::ordered_json RunSummary(const config::RunConfig& config, const RunOutcome& outcome, const World& world,
+                                  const std::string& log_file_name, const RunJudgement& judgement) {
   nlohmann::ordered_json json;
   json["run"] = config.name;
   json["config"] = config.source;
@@ -36,17 +55,7 @@ std::string RunSummaryJson(const config::RunConfig& config, const RunOutcome& ou
                         {"collision_errors", counts.collision_errors},
                         {"actuator_errors", counts.actuator_errors},
                         {"obstacle_collisions", counts.obstacle_collisions}};
-  json["verdict"] = RunVerdictName(judgement.verdict());
-  nlohmann::json reasons = nlohmann::json::array();
-  for (const VerdictReason& reason : judgement.reasons()) {
-    reasons.push_back({{"rule", reason.rule},
-                       {"verdict", RunVerdictName(reason.verdict)},
-                       {"problem", reason.problem},
-                       {"find_out", reason.find_out}});
-  }
-  json["verdict_reasons"] = reasons;
-  json["robotarium_verdict"] = RunVerdictName(report.verdict);
-  json["robotarium_report"] = report.Text();
+  SetSummaryVerdict(&json, judgement);
   json["run_id"] = lcm::RunIdText(outcome.run_id);
   json["rejected_commands"] = outcome.rejected_commands;
   json["command_conflicts"] = outcome.command_conflicts;
@@ -75,7 +84,7 @@ std::string RunSummaryJson(const config::RunConfig& config, const RunOutcome& ou
     json["realism_stats"] = {{"dropped_measurements", realistic->dropped_measurements()},
                              {"robots_lost_to_tracker", lost}};
   }
-  return json.dump(2) + "\n";
+  return json;
 }
 
 }  // namespace dream::sim

@@ -224,14 +224,13 @@ RunResult RunSession::Report(const Stepped& stepped, const std::string& dir) {
     spdlog::warn("{}: no experiment metrics: {}", log_path, metrics["error"].get<std::string>());
   }
   // The goal is judged on the summary (robots done, steps) with its metrics.
-  nlohmann::ordered_json summary = nlohmann::ordered_json::parse(sim::RunSummaryJson(config_, outcome, world, kLogName));
+  // Built once: its verdict fields are set again once the goal is judged.
+  nlohmann::ordered_json summary =
+      sim::RunSummary(config_, outcome, world, kLogName, sim::JudgeRun(config_, outcome, world));
   summary["metrics"] = metrics;
   result.judgement = Judge(outcome, world, log, &summary);
-  const nlohmann::ordered_json goal = summary["goal"];
-  summary =
-      nlohmann::ordered_json::parse(sim::RunSummaryJson(config_, outcome, world, kLogName, result.judgement));
-  summary["metrics"] = metrics;
-  summary["goal"] = goal;
+  sim::SetSummaryVerdict(&summary, result.judgement);
+  const nlohmann::ordered_json goal = summary["goal"];  // a copy: adding world fields may move the summary's entries
   for (auto it = stepped.world_fields.begin(); it != stepped.world_fields.end(); ++it) summary[it.key()] = it.value();
   try {
     sim::WriteFileAtomically(dir + "/summary.json", summary.dump(2) + "\n");

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "dream/config/run_config.h"
@@ -15,6 +16,13 @@ namespace dream::sim {
 /// verdict and text, rejected commands, lost agents, bad messages per
 /// channel, handler exceptions, and final poses.
 /// See docs/run-outputs.md for every field.
+nlohmann::ordered_json RunSummary(const config::RunConfig& config, const RunOutcome& outcome, const World& world,
+                                  const std::string& log_file_name, const RunJudgement& judgement);
+/// Replaces a RunSummary's verdict fields (verdict, verdict_reasons,
+/// robotarium_verdict, robotarium_report) in place, for a caller that judges
+/// the run again once the summary exists (the experiment's goal is judged on it).
+void SetSummaryVerdict(nlohmann::ordered_json* summary, const RunJudgement& judgement);
+/// RunSummary as pretty-printed JSON text.
 std::string RunSummaryJson(const config::RunConfig& config, const RunOutcome& outcome, const World& world,
                            const std::string& log_file_name, const RunJudgement& judgement);
 /// The same, judged by JudgeRun(config, outcome, world).
