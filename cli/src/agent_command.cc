@@ -144,14 +144,13 @@ int ExecAgentBinary(int argc, char** argv) {
 void DeclareAgentCommand(CommandLine& line) {
   // The options are parsed here too, so mistakes are reported before the
   // hand-over and `dream agent --help` works; dream-agent then parses the same
-  // words. The action holds `args` only to keep what CLI11 fills alive.
-  auto args = std::make_shared<AgentArgs>();
-  CLI::App* command = line.AddCommand(
+  // words, so the parsed AgentArgs go unused here.
+  const auto [command, args] = line.AddCommand<AgentArgs>(
       "agent",
       "Run the agents of some robots against whichever world is on the bus.\n"
       "Example: dream agent config/go_to_goal.yaml --robots 0-2",
-      [&line, args] { return ExecAgentBinary(line.argc(), line.argv()); });
-  AddAgentOptions(command, args.get());
+      [&line](const AgentArgs&) { return ExecAgentBinary(line.argc(), line.argv()); });
+  AddAgentOptions(command, args);
 }
 
 }  // namespace dream::cli

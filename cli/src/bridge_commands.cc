@@ -316,14 +316,13 @@ int RunCheckSubmission(const CheckSubmissionArgs& args) {
 }
 
 void DeclareBridgeCommands(CommandLine& line) {
-  auto export_args = std::make_shared<ExportArgs>();
-  CLI::App* export_command = line.AddCommand(
+  const auto [export_command, export_args] = line.AddCommand<ExportArgs>(
       "export",
       "Turn a recorded run into a Robotarium submission (a main script plus .npy data, and for\n"
       "--strategy controller the Python controller and DREAM's runtime), after checking it as the\n"
       "lab would: robots, duration, start poses, boundary and collision errors.\n"
       "Example: dream export runs/go_to_goal --out exports/go_to_goal",
-      [export_args] { return RunExport(*export_args); });
+      RunExport);
   export_command->add_option("run", export_args->run_dir, "Run folder written by dream run (run.lcmlog, config.yaml)")
       ->required();
   export_command->add_option("--out", export_args->out_dir, "Output folder (default exports/<name>)");
@@ -343,22 +342,18 @@ void DeclareBridgeCommands(CommandLine& line) {
       ->check(CLI::Range(0, 3000))
       ->capture_default_str();
 
-  auto import_args = std::make_shared<ImportArgs>();
-  CLI::App* import_command = line.AddCommand(
+  const auto [import_command, import_args] = line.AddCommand<ImportArgs>(
       "import",
       "Turn what the lab returned (dream_result.npy, or dream_result.mat from MATLAB) into a run\n"
       "folder like dream run writes: run.lcmlog, summary.json, trajectories.png. Its verdict holds the\n"
       "run to the lab verifier's rules against what UPLOAD.txt said to declare (robot count, duration),\n"
       "or what --declared-robots / --declared-duration say was declared.\n"
       "Example: dream import ~/Downloads/dream_result.npy --export exports/go_to_goal --out runs/lab1",
-      [import_args] { return RunImport(*import_args); });
+      RunImport);
   import_command->add_option("result", import_args->result, "dream_result.npy / .mat, or a folder holding one")
       ->required();
   import_command->add_option("--export", import_args->export_dir, "The folder dream export wrote")->required();
-  import_command->add_option("--out", import_args->out_dir,
-                             "Output folder (default runs/<name>_lab, or _2, ... when that holds a run);\n"
-                             "refused when it holds a run, unless --overwrite");
-  import_command->add_flag("--overwrite", import_args->overwrite, "Replace the run already in the output folder");
+  AddRunFolderOptions(import_command, &import_args->out_dir, &import_args->overwrite, "runs/<name>_lab");
   import_command->add_option("--declared-robots", import_args->declared_robots,
                              "The robot count declared on the lab's form, when not UPLOAD.txt's;\n"
                              "the verdict names a mismatch (verifier_robot_count)")
@@ -368,19 +363,15 @@ void DeclareBridgeCommands(CommandLine& line) {
                              "names a run over 1.5x of it (verifier_duration) or over 900 s (lab_duration_cap)")
       ->check(CLI::Range(0.001, 1e6));
 
-  auto replay_args = std::make_shared<LabReplayArgs>();
-  CLI::App* replay_command = line.AddCommand(
+  const auto [replay_command, replay_args] = line.AddCommand<LabReplayArgs>(
       "lab-replay",
       "Run a lab run (from dream import) as the world on the bus: the agents get the lab's poses\n"
       "and their commands are recorded beside the lab's. Agents run in this process (memq://)\n"
       "unless --world-only.\n"
       "Example: dream lab-replay runs/lab1 --out runs/lab1_replay",
-      [replay_args] { return RunLabReplay(*replay_args); });
+      RunLabReplay);
   replay_command->add_option("lab", replay_args->lab_dir, "Run folder written by dream import")->required();
-  replay_command->add_option("--out", replay_args->out_dir,
-                             "Output folder (default runs/<name>_lab_replay, or _2, ... when that holds a run);\n"
-                             "refused when it holds a run, unless --overwrite");
-  replay_command->add_flag("--overwrite", replay_args->overwrite, "Replace the run already in the output folder");
+  AddRunFolderOptions(replay_command, &replay_args->out_dir, &replay_args->overwrite, "runs/<name>_lab_replay");
   replay_command->add_option("--lcm-url", replay_args->lcm_url,
                              "LCM URL (default memq://, or $LCM_DEFAULT_URL with --world-only)");
   replay_command->add_option("--steps", replay_args->steps, "Replay at most this many steps")->check(StepCount());
@@ -389,24 +380,22 @@ void DeclareBridgeCommands(CommandLine& line) {
   replay_command->add_flag("--world-only", replay_args->world_only,
                            "Only the world; start the agents elsewhere (dream agent CONFIG) on the same URL");
 
-  auto compare_args = std::make_shared<CompareArgs>();
-  CLI::App* compare_command = line.AddCommand(
+  const auto [compare_command, compare_args] = line.AddCommand<CompareArgs>(
       "compare",
       "Compare a simulated run with its lab run: tracking error per robot, closest approach,\n"
       "violations and the experiment's metrics side by side; writes comparison.json and .png.\n"
       "Example: dream compare runs/go_to_goal runs/lab1",
-      [compare_args] { return RunCompare(*compare_args); });
+      RunCompare);
   compare_command->add_option("simulated", compare_args->first_dir, "The simulated run's folder")->required();
   compare_command->add_option("lab", compare_args->second_dir, "The lab run's folder (dream import)")->required();
   compare_command->add_option("--out", compare_args->out_dir, "Output folder (default: the lab run's folder)");
 
-  auto check_args = std::make_shared<CheckSubmissionArgs>();
-  CLI::App* check_command = line.AddCommand(
+  const auto [check_command, check_args] = line.AddCommand<CheckSubmissionArgs>(
       "check-submission",
       "Run an exported submission in the official Robotarium Python simulator (or, when it is\n"
       "not installed, DREAM's stand-in), import what it saved and compare it with the run.\n"
       "Example: dream check-submission exports/go_to_goal --out runs/go_to_goal_check",
-      [check_args] { return RunCheckSubmission(*check_args); });
+      RunCheckSubmission);
   check_command->add_option("export", check_args->export_dir, "The folder dream export wrote")->required();
   check_command->add_option("--out", check_args->out_dir, "Output folder (default runs/<name>_check)");
   check_command->add_option("--run", check_args->run_dir,

@@ -3,7 +3,9 @@
 #include <CLI/CLI.hpp>
 
 #include <functional>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dream::cli {
@@ -29,6 +31,24 @@ class CommandLine {
   /// they are added.
   CLI::App* AddCommand(const std::string& name, const std::string& description, Action action,
                        CLI::App* parent = nullptr);
+  /// A command added with options: `args` is what its options fill in.
+  template <typename Args>
+  struct CommandWithArgs {
+    CLI::App* app;
+    Args* args;
+  };
+
+  /// Adds subcommand `name` whose options fill a new `Args` (the action
+  /// keeps it alive: CLI11 writes into it while parsing) and that calls
+  /// `run` with it when chosen.
+  template <typename Args>
+  CommandWithArgs<Args> AddCommand(const std::string& name, const std::string& description,
+                                   std::function<int(const Args&)> run, CLI::App* parent = nullptr) {
+    auto args = std::make_shared<Args>();
+    CLI::App* app = AddCommand(name, description, [args, run = std::move(run)] { return run(*args); }, parent);
+    return {app, args.get()};
+  }
+
   /// Adds a subcommand that only groups others (dream log): one of them is required.
   CLI::App* AddGroup(const std::string& name, const std::string& description);
 

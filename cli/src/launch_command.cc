@@ -157,13 +157,10 @@ int RunLaunch(const RunArgs& args) {
 }
 
 void DeclareLaunchCommand(CommandLine& line) {
-  auto args = std::make_shared<RunArgs>();
-  CLI::App* command = line.AddCommand(
-      "launch",
-      "Run the simulator and one agent process per robot over udpm.\n"
-      "Example: dream launch config/go_to_goal.yaml --seed 7",
-      [args] { return RunLaunch(*args); });
-  AddRunOptions(command, args.get(), "LCM URL (default $LCM_DEFAULT_URL)");
+  AddRunCommand(line, "launch",
+                "Run the simulator and one agent process per robot over udpm.\n"
+                "Example: dream launch config/go_to_goal.yaml --seed 7",
+                RunLaunch, "LCM URL (default $LCM_DEFAULT_URL)");
 }
 
 }  // namespace dream::cli

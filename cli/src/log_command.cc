@@ -189,35 +189,32 @@ void DeclareLogCommand(CommandLine& line) {
   CLI::App* log = line.AddGroup("log", "Look into recorded runs: info, diff, echo.\n"
                                        "Example: dream log info runs/go_to_goal");
 
-  auto info_path = std::make_shared<std::string>();
-  CLI::App* info = line.AddCommand(
+  const auto [info, info_path] = line.AddCommand<std::string>(
       "info",
       "Channels and event counts of a log.\n"
       "Example: dream log info runs/go_to_goal/run.lcmlog",
-      [info_path] { return RunLogInfo(*info_path); }, log);
-  AddRunLogArgument(info, "log", info_path.get());
+      RunLogInfo, log);
+  AddRunLogArgument(info, "log", info_path);
 
-  auto echo_args = std::make_shared<LogEchoArgs>();
-  CLI::App* echo = line.AddCommand(
+  const auto [echo, echo_args] = line.AddCommand<LogEchoArgs>(
       "echo",
       "Print the decoded messages on channels matching CHANNEL_REGEX (whole name), one JSON object\n"
       "per line: {\"channel\", \"utime\" (the log's), \"type\", \"message\": the message's fields}; radio\n"
       "payloads as hex. Channels of no DREAM type are skipped and counted on stderr; an undecodable\n"
       "event is reported there with its byte offset.\n"
       "Example: dream log echo runs/go_to_goal 'DREAM_CMD_.*' --limit 5",
-      [echo_args] { return RunLogEcho(echo_args->log, echo_args->channel_regex, echo_args->limit); }, log);
+      [](const LogEchoArgs& args) { return RunLogEcho(args.log, args.channel_regex, args.limit); }, log);
   AddRunLogArgument(echo, "log", &echo_args->log);
   echo->add_option("channels", echo_args->channel_regex, "Regex of channels to print, e.g. DREAM_POSES or 'DREAM_CMD_.*'")
       ->required();
   echo->add_option("--limit", echo_args->limit, "Stop after this many messages (default: all)")->check(StepCount());
 
-  auto diff_args = std::make_shared<LogDiffArgs>();
-  CLI::App* diff = line.AddCommand(
+  const auto [diff, diff_args] = line.AddCommand<LogDiffArgs>(
       "diff",
       "Compare two logs message by message, per channel, ignoring timestamps, run ids and agent ids\n"
       "(every run and agent process draws its own). Exit 0 when equal.\n"
       "Example: dream log diff a/run.lcmlog b/run.lcmlog --channels DREAM_POSES",
-      [diff_args] { return RunLogDiff(diff_args->first_log, diff_args->second_log, diff_args->channel_regex); }, log);
+      [](const LogDiffArgs& args) { return RunLogDiff(args.first_log, args.second_log, args.channel_regex); }, log);
   diff->add_option("a", diff_args->first_log, "First log (or run folder)")->required();
   diff->add_option("b", diff_args->second_log, "Second log (or run folder)")->required();
   diff->add_option("--channels", diff_args->channel_regex, "Regex of channels to compare")->capture_default_str();

@@ -242,15 +242,14 @@ int RunRender(const RenderArgs& args) {
 }
 
 void DeclareRenderCommand(CommandLine& line) {
-  auto args = std::make_shared<RenderArgs>();
-  CLI::App* command = line.AddCommand(
+  const auto [command, args] = line.AddCommand<RenderArgs>(
       "render",
       "Draw a recorded run (simulated or imported from the lab): the arena with trajectories, obstacles,\n"
       "goals and final poses (.png/.svg), a video of the run (.mp4/.gif, needs ffmpeg), or the metrics\n"
       "over time (--plot). --out's extension picks; without --out: trajectories.svg, run.mp4 (--video)\n"
       "or metrics.png (--plot) beside the log.\n"
       "Example: dream render runs/hrvo_circle --out runs/hrvo_circle/run.mp4 --radio-links",
-      [args] { return RunRender(*args); });
+      RunRender);
   AddRunLogArgument(command, "run", &args->input);
   command->add_option("--out", args->out, "Output file: .png, .svg, .mp4 or .gif");
   command->add_option("--config", args->config_path,

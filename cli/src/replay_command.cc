@@ -72,13 +72,12 @@ int RunReplay(const ReplayArgs& args) {
 }
 
 void DeclareReplayCommand(CommandLine& line) {
-  auto args = std::make_shared<ReplayArgs>();
-  CLI::App* command = line.AddCommand(
+  const auto [command, args] = line.AddCommand<ReplayArgs>(
       "replay",
       "Play a recorded run on LCM through LCM's log player window: seek with the slider, pause, step,\n"
       "change the speed, mute channels. Watch it with dream spy, or any LCM tool, on the same URL.\n"
       "Example: dream replay runs/go_to_goal --spy",
-      [args] { return RunReplay(*args); });
+      RunReplay);
   AddRunLogArgument(command, "run", &args->run);
   command->add_option("--lcm-url", args->lcm_url,
                       "LCM URL to play on (default $LCM_DEFAULT_URL, else udpm://239.255.76.67:7667?ttl=0)");

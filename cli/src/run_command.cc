@@ -34,23 +34,17 @@ int RunSimOnly(const RunArgs& args) {
 }
 
 void DeclareRunCommand(CommandLine& line) {
-  auto args = std::make_shared<RunArgs>();
-  CLI::App* command = line.AddCommand(
-      "run",
-      "Run an experiment in one process: the simulator and every robot's agent on one bus.\n"
-      "Example: dream run config/go_to_goal.yaml --seed 7 --set controller.max_speed_mps=0.1",
-      [args] { return RunEmbedded(*args); });
-  AddRunOptions(command, args.get(), "LCM URL (default memq://, in-process)");
+  AddRunCommand(line, "run",
+                "Run an experiment in one process: the simulator and every robot's agent on one bus.\n"
+                "Example: dream run config/go_to_goal.yaml --seed 7 --set controller.max_speed_mps=0.1",
+                RunEmbedded, "LCM URL (default memq://, in-process)");
 }
 
 void DeclareSimCommand(CommandLine& line) {
-  auto args = std::make_shared<RunArgs>();
-  CLI::App* command = line.AddCommand(
-      "sim",
-      "Run only the simulator; agents run elsewhere (dream agent) on the same LCM URL.\n"
-      "Example: dream sim config/go_to_goal.yaml --lcm-url 'udpm://239.255.76.67:7667?ttl=0'",
-      [args] { return RunSimOnly(*args); });
-  AddRunOptions(command, args.get(), "LCM URL (default $LCM_DEFAULT_URL, else udpm://239.255.76.67:7667?ttl=0)");
+  AddRunCommand(line, "sim",
+                "Run only the simulator; agents run elsewhere (dream agent) on the same LCM URL.\n"
+                "Example: dream sim config/go_to_goal.yaml --lcm-url 'udpm://239.255.76.67:7667?ttl=0'",
+                RunSimOnly, "LCM URL (default $LCM_DEFAULT_URL, else udpm://239.255.76.67:7667?ttl=0)");
 }
 
 }  // namespace dream::cli

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <utility>
 
 namespace dream::cli {
 
@@ -63,6 +64,13 @@ std::string RunLogPath(const std::string& run_or_log) {
   return log;
 }
 
+void AddRunFolderOptions(CLI::App* command, std::string* out_dir, bool* overwrite, const std::string& default_dir) {
+  command->add_option("--out", *out_dir,
+                      "Output folder for the run (default " + default_dir + ", or " + default_dir +
+                          "_2, _3, ... when that\nalready holds a run); refused when it holds a run, unless --overwrite");
+  command->add_flag("--overwrite", *overwrite, "Replace the run already in the output folder");
+}
+
 void AddOverrideOptions(CLI::App* command, long long* seed, std::vector<std::string>* sets) {
   command->add_option("--seed", *seed, "Override the config's seed (initial poses and every noise source)")
       ->check(SeedValue());
@@ -73,12 +81,11 @@ void AddOverrideOptions(CLI::App* command, long long* seed, std::vector<std::str
       ->allow_extra_args(false);
 }
 
-void AddRunOptions(CLI::App* command, RunArgs* args, const char* url_help) {
+void AddRunCommand(CommandLine& line, const std::string& name, const std::string& description,
+                   std::function<int(const RunArgs&)> run, const char* url_help) {
+  const auto [command, args] = line.AddCommand<RunArgs>(name, description, std::move(run));
   command->add_option("config", args->config_path, "Run config (YAML), e.g. config/go_to_goal.yaml")->required();
-  command->add_option("--out", args->out_dir,
-                      "Output folder for run.lcmlog and summary.json (default runs/<name>, or runs/<name>_2,\n"
-                      "_3, ... when that already holds a run); refused when it holds a run, unless --overwrite");
-  command->add_flag("--overwrite", args->overwrite, "Replace the run already in the output folder");
+  AddRunFolderOptions(command, &args->out_dir, &args->overwrite, "runs/<name>");
   AddOverrideOptions(command, &args->seed, &args->sets);
   command->add_option("--lcm-url", args->lcm_url, url_help);
   command->add_option("--steps", args->steps, "Override the config's step limit")->check(StepCount());

@@ -2,9 +2,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "command_line.h"
 #include "commands.h"
 
 namespace dream::cli {
@@ -31,12 +33,18 @@ CLI::Option* AddRunLogArgument(CLI::App* command, const std::string& name, std::
 /// exist or a folder holds no run.lcmlog (a run still going has only its .part).
 std::string RunLogPath(const std::string& run_or_log);
 
+/// --out DIR and --overwrite of the commands that write a run folder
+/// (RunFolderChoice): `default_dir` is what --help names as the default.
+void AddRunFolderOptions(CLI::App* command, std::string* out_dir, bool* overwrite, const std::string& default_dir);
+
 /// --seed N and --set KEY=VALUE (repeatable), which OverriddenConfig applies.
 void AddOverrideOptions(CLI::App* command, long long* seed, std::vector<std::string>* sets);
 
-/// The options of the commands that run an experiment (run, sim, launch);
-/// only the help of --lcm-url differs, as each picks its own default bus.
-void AddRunOptions(CLI::App* command, RunArgs* args, const char* url_help);
+/// Adds a command that runs an experiment (run, sim, launch): they share
+/// their options; only the help of --lcm-url differs, as each picks its own
+/// default bus.
+void AddRunCommand(CommandLine& line, const std::string& name, const std::string& description,
+                   std::function<int(const RunArgs&)> run, const char* url_help);
 
 /// The options of `dream agent`, which the dream-agent executable it hands
 /// over to must parse the same way.

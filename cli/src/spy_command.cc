@@ -82,12 +82,11 @@ int RunSpy(const std::string& log_path, const std::string& lcm_url, bool print_c
 }
 
 void DeclareSpyCommand(CommandLine& line) {
-  auto args = std::make_shared<SpyArgs>();
-  CLI::App* command = line.AddCommand(
+  const auto [command, args] = line.AddCommand<SpyArgs>(
       "spy",
       "Open lcm-spy with the dream types, on live traffic or on a recorded log.\n"
       "Example: dream spy --log runs/go_to_goal/run.lcmlog",
-      [args] { return RunSpy(args->log_path, args->lcm_url, args->print_command_only); });
+      [](const SpyArgs& spy) { return RunSpy(spy.log_path, spy.lcm_url, spy.print_command_only); });
   command->add_option("--log", args->log_path, "Replay this log into lcm-spy (on a private loopback port)");
   command->add_option("--lcm-url", args->lcm_url, "LCM URL to inspect (default $LCM_DEFAULT_URL)");
   command->add_flag("--print", args->print_command_only, "Print the commands instead of starting them");

@@ -256,13 +256,12 @@ int RunSweep(const SweepArgs& args) {
 }
 
 void DeclareSweepCommand(CommandLine& line) {
-  auto args = std::make_shared<SweepArgs>();
-  CLI::App* command = line.AddCommand(
+  const auto [command, args] = line.AddCommand<SweepArgs>(
       "sweep",
       "Run an experiment over many seeds and parameter values in parallel (one dream run process per\n"
       "run, --jobs at a time) and tabulate the outcomes in <out>/sweep.csv and sweep.md (docs/sweeps.md).\n"
       "Example: dream sweep config/hrvo_circle.yaml --seeds 1-20   (writes sweeps/hrvo_circle)",
-      [args] { return RunSweep(*args); });
+      RunSweep);
   command->add_option("config", args->config_path, "Run config (YAML) to sweep")->required();
   command->add_option("--seeds", args->seeds, "Seeds: 7, 1-20 or 1,4,9-12 (default: the config's seed)");
   command
