@@ -54,9 +54,7 @@ std::vector<std::vector<sim::ObstacleState>> ObstaclesPerStep(const std::vector<
   std::vector<std::vector<sim::ObstacleState>> states(static_cast<size_t>(last_step + 1));
   for (auto& step_states : states) {
     for (sim::RectangleObstacle& o : obstacles) {
-      const Eigen::Vector2d velocity = o.velocity_mps();
-      step_states.push_back(sim::ObstacleState{o.id(), o.center_m().x(), o.center_m().y(), o.width_m(), o.height_m(),
-                                               velocity.x(), velocity.y()});
+      step_states.push_back(o.State());
       o.Advance(time_step_s);
     }
   }

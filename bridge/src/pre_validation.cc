@@ -17,6 +17,19 @@ std::string Num(double value, int digits = 3) {
   return text;
 }
 
+// One problem per robot or pair, at the first step it happened; at most ten
+// of a kind, as the rest are summarised.
+template <typename Key, typename MakeProblem>
+void ListFirstSteps(const std::map<Key, int64_t>& first_steps, std::vector<ExportProblem>* problems,
+                    MakeProblem make_problem) {
+  const size_t kMaxListed = 10;
+  size_t listed = 0;
+  for (const auto& [key, step] : first_steps) {
+    if (listed++ == kMaxListed) break;
+    problems->push_back(make_problem(key, step));
+  }
+}
+
 }  // namespace
 
 std::string ExportProblem::Text() const {
@@ -154,31 +167,23 @@ std::vector<ExportProblem> PreValidate(const RunTrack& track, const RunEnd& end,
       for (const auto& pair : events.colliding_pairs) collisions.emplace(std::make_pair(pair.first_robot_id, pair.second_robot_id), k);
       for (const auto& contact : events.obstacle_contacts) contacts.emplace(std::make_pair(contact.robot_id, contact.obstacle_id), k);
     }
-    const size_t kMaxListed = 10;  // per kind; the rest are summarised
-    size_t listed = 0;
-    for (const auto& [robot, step] : out_of_bounds) {
-      if (listed++ == kMaxListed) break;
+    ListFirstSteps(out_of_bounds, &problems, [&](int robot, int64_t step) -> ExportProblem {
       const sim::Pose2& p = track.pose(step, robot);
-      problems.push_back({"boundary", robot, -1, step,
-                          "is outside the arena at (" + Num(p.x_m) + ", " + Num(p.y_m) +
-                              "): the Robotarium rejects runs with boundary errors",
-                          "keep the controller's targets inside the arena (or enable its wall check) and run again"});
-    }
-    listed = 0;
-    for (const auto& [pair, step] : collisions) {
-      if (listed++ == kMaxListed) break;
-      problems.push_back({"collision", pair.first, pair.second, step,
-                          "are closer than " + Num(world.collision_diameter_m) +
-                              " m (collision): the Robotarium rejects runs with collisions",
-                          "make the controller keep robots apart (e.g. HRVO with a larger safety radius) and run again"});
-    }
-    listed = 0;
-    for (const auto& [pair, step] : contacts) {
-      if (listed++ == kMaxListed) break;
-      problems.push_back({"obstacle", pair.first, pair.second, step,
-                          "touches the virtual obstacle, which stands for a real one",
-                          "make the controller avoid the obstacle (obstacle sensor, buffer) and run again"});
-    }
+      return {"boundary", robot, -1, step,
+              "is outside the arena at (" + Num(p.x_m) + ", " + Num(p.y_m) +
+                  "): the Robotarium rejects runs with boundary errors",
+              "keep the controller's targets inside the arena (or enable its wall check) and run again"};
+    });
+    ListFirstSteps(collisions, &problems, [&](const std::pair<int, int>& pair, int64_t step) -> ExportProblem {
+      return {"collision", pair.first, pair.second, step,
+              "are closer than " + Num(world.collision_diameter_m) +
+                  " m (collision): the Robotarium rejects runs with collisions",
+              "make the controller keep robots apart (e.g. HRVO with a larger safety radius) and run again"};
+    });
+    ListFirstSteps(contacts, &problems, [](const std::pair<int, int>& pair, int64_t step) -> ExportProblem {
+      return {"obstacle", pair.first, pair.second, step, "touches the virtual obstacle, which stands for a real one",
+              "make the controller avoid the obstacle (obstacle sensor, buffer) and run again"};
+    });
     const int64_t hard = end.violations.hard_errors();
     if (hard > 0 && out_of_bounds.empty() && collisions.empty() && contacts.empty()) {
       problems.push_back({"violations", -1, -1, end.step,

@@ -31,21 +31,10 @@ AgentHost::AgentHost(lcm::LcmInterface& lcm, std::vector<std::unique_ptr<RobotAg
   // LCM dispatches in arrival order, and a neighbour sends its radio message
   // of step k before its command, which the world needs before it publishes
   // step k + 1: so the mailbox holds it by the time we act on step k + 1.
-  lcm::Subscribe<radio_message_t>(
-      lcm_, lcm::kRadioChannelRegex,
-      [this](const std::string& channel, const radio_message_t& message) { OnRadio(channel, message); },
-      bad_messages_);
-  lcm::Subscribe<obstacles_t>(
-      lcm_, lcm::kObstaclesChannel,
-      [this](const std::string& channel, const obstacles_t& obstacles) { OnObstacles(channel, obstacles); },
-      bad_messages_);
-  lcm::Subscribe<robot_poses_t>(
-      lcm_, lcm::kPosesChannel,
-      [this](const std::string& channel, const robot_poses_t& poses) { OnPoses(channel, poses); }, bad_messages_);
-  lcm::Subscribe<run_status_t>(
-      lcm_, lcm::kStatusChannel,
-      [this](const std::string& channel, const run_status_t& status) { OnStatus(channel, status); },
-      bad_messages_);
+  lcm::Subscribe(lcm_, lcm::kRadioChannelRegex, this, &AgentHost::OnRadio, bad_messages_);
+  lcm::Subscribe(lcm_, lcm::kObstaclesChannel, this, &AgentHost::OnObstacles, bad_messages_);
+  lcm::Subscribe(lcm_, lcm::kPosesChannel, this, &AgentHost::OnPoses, bad_messages_);
+  lcm::Subscribe(lcm_, lcm::kStatusChannel, this, &AgentHost::OnStatus, bad_messages_);
 }
 
 AgentHost::~AgentHost() {

@@ -60,17 +60,10 @@ SimNode::SimNode(lcm::LcmInterface& lcm, World& world, RunRecorder* recorder, Si
       run_id_(lcm::NewRunId()) {
   std::string error;
   if (!options_.IsValid(&error)) throw std::invalid_argument("sim options: " + error);
-  lcm::Subscribe<velocity_command_t>(
-      lcm_, lcm::kCommandChannelRegex,
-      [this](const std::string& channel, const velocity_command_t& command) { OnCommand(channel, command); },
-      bad_messages_);
-  lcm::Subscribe<robot_fault_t>(
-      lcm_, lcm::kFaultChannelRegex,
-      [this](const std::string& channel, const robot_fault_t& fault) { OnFault(channel, fault); }, bad_messages_);
+  lcm::Subscribe(lcm_, lcm::kCommandChannelRegex, this, &SimNode::OnCommand, bad_messages_);
+  lcm::Subscribe(lcm_, lcm::kFaultChannelRegex, this, &SimNode::OnFault, bad_messages_);
   // Our own statuses come back too (memq, udpm loopback); another run id is a second world.
-  lcm::Subscribe<run_status_t>(
-      lcm_, lcm::kStatusChannel, [this](const std::string&, const run_status_t& status) { OnStatus(status); },
-      bad_messages_);
+  lcm::Subscribe(lcm_, lcm::kStatusChannel, this, &SimNode::OnStatus, bad_messages_);
   if (recorder_ != nullptr) {
     lcm_.Subscribe(".*", [this](const std::string& channel, const void* data, int size) {
       OnAnyMessage(channel, data, size);
@@ -122,7 +115,7 @@ void SimNode::NoteOtherWorld(int64_t run_id, const std::string& seen_on) {
                 lcm::RunIdText(run_id), lcm_.url(), seen_on, lcm::RunIdText(run_id_));
 }
 
-void SimNode::OnStatus(const run_status_t& status) {
+void SimNode::OnStatus(const std::string& /*channel*/, const run_status_t& status) {
   if (status.run_id != run_id_) NoteOtherWorld(status.run_id, lcm::kStatusChannel);
 }
 

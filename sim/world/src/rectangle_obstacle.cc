@@ -56,10 +56,15 @@ void RectangleObstacle::Advance(double time_step_s) {
                                            : Eigen::Vector2d(leg.start_m + leg.direction * distance_along_leg_m_);
 }
 
+ObstacleState RectangleObstacle::State() const {
+  const Eigen::Vector2d velocity = velocity_mps();
+  return {spec_.id, center_m_.x(), center_m_.y(), spec_.width_m, spec_.height_m, velocity.x(), velocity.y()};
+}
+
 bool RectangleObstacle::IntersectsDisc(double center_x_m, double center_y_m, double radius_m) const {
-  const double gap_x_m = std::max(std::abs(center_x_m - center_m_.x()) - spec_.width_m / 2.0, 0.0);
-  const double gap_y_m = std::max(std::abs(center_y_m - center_m_.y()) - spec_.height_m / 2.0, 0.0);
-  return gap_x_m * gap_x_m + gap_y_m * gap_y_m <= radius_m * radius_m;
+  // The velocity plays no part: leave it zero rather than work out the leg.
+  const ObstacleState here{spec_.id, center_m_.x(), center_m_.y(), spec_.width_m, spec_.height_m};
+  return here.IntersectsDisc(center_x_m, center_y_m, radius_m);
 }
 
 std::vector<RectangleObstacle> RectangleObstacle::BuildAll(const std::vector<RectangleObstacleSpec>& specs,

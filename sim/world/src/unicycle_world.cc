@@ -8,9 +8,9 @@
 #include <string>
 #include <utility>
 
-#include "collision_grid.h"
 #include "dream/world/unicycle_kinematics.h"
 #include "field_check.h"
+#include "pairwise_rules.h"
 #include "world_argument_check.h"
 
 namespace dream::sim {
@@ -37,9 +37,7 @@ UnicycleWorld::UnicycleWorld(const WorldParams& params, std::vector<Pose2> initi
       command_step_(poses_.size(), kNoCommand),
       command_hold_steps_(CommandHoldSteps(params.time_step_s, params.command_timeout_s)),
       step_utime_(std::llround(params.time_step_s * 1e6)),
-      collision_center_x_m_(poses_.size()),
-      collision_center_y_m_(poses_.size()),
-      collision_grid_(std::make_unique<CollisionGrid>(poses_.size(), params.collision_diameter_m, params.arena)) {
+      pairwise_rules_(std::make_unique<PairwiseRules>(params, poses_.size())) {
   if (poses_.size() > static_cast<std::size_t>(std::numeric_limits<int32_t>::max() / 4)) {
     throw std::invalid_argument("UnicycleWorld: " + std::to_string(poses_.size()) +
                                 " robots is more than this world supports");
@@ -66,11 +64,7 @@ UnicycleWorld& UnicycleWorld::operator=(UnicycleWorld&&) noexcept = default;
 
 void UnicycleWorld::GetObstacleStates(std::vector<ObstacleState>* states) const {
   states->clear();
-  for (const RectangleObstacle& obstacle : obstacles_) {
-    const Eigen::Vector2d velocity = obstacle.velocity_mps();
-    states->push_back(ObstacleState{obstacle.id(), obstacle.center_m().x(), obstacle.center_m().y(),
-                                    obstacle.width_m(), obstacle.height_m(), velocity.x(), velocity.y()});
-  }
+  for (const RectangleObstacle& obstacle : obstacles_) states->push_back(obstacle.State());
 }
 
 void UnicycleWorld::CheckRobotId(int robot_id, const char* caller) const {
@@ -101,26 +95,12 @@ void UnicycleWorld::ApplyCommandTimeouts() {
   }
 }
 
-void UnicycleWorld::CountObstacleContacts() {
-  if (obstacles_.empty()) return;
-  const double radius_m = params_.collision_diameter_m / 2.0;
-  for (std::size_t i = 0; i < poses_.size(); ++i) {
-    for (const RectangleObstacle& obstacle : obstacles_) {
-      if (obstacle.IntersectsDisc(collision_center_x_m_[i], collision_center_y_m_[i], radius_m)) {
-        events_.obstacle_contacts.push_back({static_cast<int>(i), obstacle.id()});
-      }
-    }
-  }
-  violations_.obstacle_collisions += static_cast<int64_t>(events_.obstacle_contacts.size());
-}
-
 void UnicycleWorld::Step() {
   events_.Reset(step_);
   ApplyCommandTimeouts();
 
   const Arena& arena = params_.arena;
   const double dt = params_.time_step_s;
-  const double offset_m = params_.collision_offset_m;
   const double wheel_radius_m = params_.wheel_radius_m;
   const double base_length_m = params_.base_length_m;
   const double max_wheel_speed_radps = params_.max_wheel_speed_radps;
@@ -136,8 +116,7 @@ void UnicycleWorld::Step() {
     if (!arena.Contains(pose.x_m, pose.y_m)) {
       events_.out_of_bounds_robot_ids.push_back(static_cast<int>(i));
     }
-    collision_center_x_m_[i] = pose.x_m + offset_m * cos_theta;
-    collision_center_y_m_[i] = pose.y_m + offset_m * sin_theta;
+    pairwise_rules_->SetCenter(i, pose, cos_theta, sin_theta);
 
     const WheelSpeeds wheels = UnicycleToWheelSpeeds(velocities_[i], wheel_radius_m, base_length_m);
     if (ExceedsWheelSpeedLimit(wheels, max_wheel_speed_radps)) {
@@ -154,18 +133,8 @@ void UnicycleWorld::Step() {
     pose.theta_rad = std::atan2(std::sin(theta_rad), std::cos(theta_rad));
   }
 
-  collision_grid_->FindPairs(collision_center_x_m_.data(), collision_center_y_m_.data(),
-                             &events_.colliding_pairs);
-  std::sort(events_.colliding_pairs.begin(), events_.colliding_pairs.end(),
-            [](const StepEvents::RobotPair& a, const StepEvents::RobotPair& b) {
-              return a.first_robot_id != b.first_robot_id ? a.first_robot_id < b.first_robot_id
-                                                          : a.second_robot_id < b.second_robot_id;
-            });
-  CountObstacleContacts();
-
-  if (!events_.out_of_bounds_robot_ids.empty()) ++violations_.boundary_errors;
-  violations_.collision_errors += static_cast<int64_t>(events_.colliding_pairs.size());
-  if (!events_.actuator_limited_robot_ids.empty()) ++violations_.actuator_errors;
+  pairwise_rules_->Apply(obstacles_, &events_);
+  violations_.Add(events_);
 
   for (RectangleObstacle& obstacle : obstacles_) obstacle.Advance(dt);
   ++step_;

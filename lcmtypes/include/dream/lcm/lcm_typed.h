@@ -65,4 +65,15 @@ void Subscribe(LcmInterface& lcm, const std::string& channel_regex,
   });
 }
 
+/// Subscribe() with a member function of `owner` as the handler, the usual
+/// case for a node: Subscribe(lcm_, kPosesChannel, this, &AgentHost::OnPoses, bad_messages_).
+template <typename Owner, typename Message>
+void Subscribe(LcmInterface& lcm, const std::string& channel_regex, Owner* owner,
+               void (Owner::*on_message)(const std::string& channel, const Message&), BadMessageLog& bad_messages) {
+  Subscribe<Message>(
+      lcm, channel_regex,
+      [owner, on_message](const std::string& channel, const Message& message) { (owner->*on_message)(channel, message); },
+      bad_messages);
+}
+
 }  // namespace dream::lcm

@@ -94,7 +94,7 @@ class SimNode {
 
   void OnCommand(const std::string& channel, const velocity_command_t& command);
   void OnFault(const std::string& channel, const robot_fault_t& fault);
-  void OnStatus(const run_status_t& status);
+  void OnStatus(const std::string& channel, const run_status_t& status);
   /// Notes a run id of another world (logged once per id).
   void NoteOtherWorld(int64_t run_id, const std::string& seen_on);
   /// Counts a command refused because the robot has another for its step

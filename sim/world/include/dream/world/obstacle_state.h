@@ -14,8 +14,8 @@ struct ObstacleState {
   double vx_mps = 0.0;    // velocity of the leg it travels now (0 when static)
   double vy_mps = 0.0;
 
-  // True if the disc touches or overlaps the rectangle; the same arithmetic
-  // as RectangleObstacle::IntersectsDisc.
+  // True if the disc touches or overlaps the rectangle (the one arithmetic
+  // for it: RectangleObstacle::IntersectsDisc uses it too).
   bool IntersectsDisc(double disc_x_m, double disc_y_m, double radius_m) const;
 };
 

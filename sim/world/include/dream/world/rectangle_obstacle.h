@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include "dream/world/obstacle_state.h"
 #include "dream/world/rectangle_obstacle_spec.h"
 
 namespace dream::sim {
@@ -35,8 +36,12 @@ class RectangleObstacle {
   Eigen::Vector2d velocity_mps() const;
   const RectangleObstacleSpec& spec() const { return spec_; }
 
+  // Where it is now and how it moves, as a world publishes it.
+  ObstacleState State() const;
+
   // True if the disc touches or overlaps the rectangle (distance from the
-  // disc's centre to the closest point of the rectangle <= radius).
+  // disc's centre to the closest point of the rectangle <= radius), by
+  // ObstacleState's arithmetic.
   bool IntersectsDisc(double center_x_m, double center_y_m, double radius_m) const;
 
  private:

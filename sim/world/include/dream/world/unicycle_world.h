@@ -15,7 +15,7 @@
 
 namespace dream::sim {
 
-class CollisionGrid;
+class PairwiseRules;
 
 // The Robotarium V2 world without any transport: unicycle robots, held
 // velocity commands, the official validation rules, plus virtual rectangular
@@ -92,7 +92,6 @@ class UnicycleWorld final : public World {
 
   void CheckRobotId(int robot_id, const char* caller) const;
   void ApplyCommandTimeouts();
-  void CountObstacleContacts();
 
   WorldParams params_;
   std::vector<Pose2> poses_;
@@ -106,10 +105,8 @@ class UnicycleWorld final : public World {
   ViolationCounts violations_{};
   StepEvents events_{};
 
-  // Per-step scratch, sized once: collision centres.
-  std::vector<double> collision_center_x_m_;
-  std::vector<double> collision_center_y_m_;
-  std::unique_ptr<CollisionGrid> collision_grid_;
+  // Collision centres and the rules on them, sized once.
+  std::unique_ptr<PairwiseRules> pairwise_rules_;
 };
 
 }  // namespace dream::sim

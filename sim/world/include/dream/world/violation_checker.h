@@ -13,7 +13,7 @@
 
 namespace dream::sim {
 
-class CollisionGrid;
+class PairwiseRules;
 
 // The Robotarium's validation rules on poses that come from elsewhere (a lab
 // recording, a run log), without any physics: the same counts UnicycleWorld
@@ -41,9 +41,7 @@ class ViolationChecker {
   std::size_t num_robots_;
   ViolationCounts counts_{};
   StepEvents events_{};
-  std::vector<double> center_x_m_;
-  std::vector<double> center_y_m_;
-  std::unique_ptr<CollisionGrid> grid_;
+  std::unique_ptr<PairwiseRules> rules_;
 };
 
 }  // namespace dream::sim

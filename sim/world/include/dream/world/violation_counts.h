@@ -2,6 +2,8 @@
 
 #include <cstdint>
 
+#include "dream/world/step_events.h"
+
 namespace dream::sim {
 
 // Cumulative rule violations of a run, counted the way the Robotarium V2
@@ -19,6 +21,16 @@ struct ViolationCounts {
 
   // Errors that make the Robotarium reject a run (plus obstacle overlaps).
   int64_t hard_errors() const { return boundary_errors + collision_errors + obstacle_collisions; }
+
+  // Counts one step's events: a step with robots outside the arena (or over
+  // the wheel-speed limit) is one error, every colliding pair and every
+  // robot-obstacle overlap one each.
+  void Add(const StepEvents& events) {
+    if (!events.out_of_bounds_robot_ids.empty()) ++boundary_errors;
+    collision_errors += static_cast<int64_t>(events.colliding_pairs.size());
+    if (!events.actuator_limited_robot_ids.empty()) ++actuator_errors;
+    obstacle_collisions += static_cast<int64_t>(events.obstacle_contacts.size());
+  }
 
   // Adds `other`'s counts (a sweep's totals over its runs).
   ViolationCounts& operator+=(const ViolationCounts& other) {
