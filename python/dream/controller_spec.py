@@ -14,6 +14,7 @@ import json
 import math
 import os
 import sys
+from collections import namedtuple
 
 import numpy as np
 
@@ -262,34 +263,21 @@ def _per_robot_steps(num_robots, minimum):
     return check
 
 
-class SensorSpec:
+class SensorSpec(namedtuple("SensorSpec", ("kind", "period_steps", "options"))):
     """One sensor of every robot: kind, per-robot periods and the sensor's keyword arguments."""
 
-    __slots__ = ("kind", "period_steps", "options")
-
-    def __init__(self, kind, period_steps, options):
-        self.kind = kind
-        self.period_steps = period_steps
-        self.options = options
+    __slots__ = ()
 
     def make(self, seed):
         sensor_class = {"odometry": OdometrySensor, "movement": MovementSensor, "obstacle": ObstacleSensor}[self.kind]
         return sensor_class(seed=seed, **self.options)
 
 
-class RadioSpec:
+class RadioSpec(namedtuple("RadioSpec", ("kind", "period_steps", "range_m", "graph", "leaders", "loss_probability",
+                                         "delay_steps"))):
     """Every robot's radio and link: kind, per-robot periods, range, graph, leaders, loss, delay."""
 
-    __slots__ = ("kind", "period_steps", "range_m", "graph", "leaders", "loss_probability", "delay_steps")
-
-    def __init__(self, kind, period_steps, range_m, graph, leaders, loss_probability, delay_steps):
-        self.kind = kind
-        self.period_steps = period_steps
-        self.range_m = range_m
-        self.graph = graph
-        self.leaders = leaders
-        self.loss_probability = loss_probability
-        self.delay_steps = delay_steps
+    __slots__ = ()
 
     def make(self, robot_id):
         """Robot `robot_id`'s radio, or None for kind none."""

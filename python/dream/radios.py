@@ -7,6 +7,7 @@ so a run repeats exactly across process layouts and matches the C++ agents bit f
 
 import bisect
 import math
+from collections import namedtuple
 
 import numpy as np
 
@@ -24,15 +25,10 @@ def mix_seed(run_seed, a, b=0):
     return z ^ (z >> 31)
 
 
-class RadioMessage:
+class RadioMessage(namedtuple("RadioMessage", ("sender_id", "sent_step", "payload"))):
     """One broadcast: who sent it, at which step, and the controller's own payload (bytes)."""
 
-    __slots__ = ("sender_id", "sent_step", "payload")
-
-    def __init__(self, sender_id, sent_step, payload):
-        self.sender_id = sender_id
-        self.sent_step = sent_step
-        self.payload = payload
+    __slots__ = ()
 
     def __repr__(self):
         return f"RadioMessage({self.sender_id}, {self.sent_step}, {self.payload!r})"
