@@ -80,6 +80,33 @@ TEST(RealismConfigTest, TrackerDropAndDropoutBurstsAreRead) {
   EXPECT_NE(text.find("tracker_drop_s"), std::string::npos) << text;
 }
 
+// RealismParams::Fields() is the one list of the models' keys: each entry is
+// read from the config by its key into its own member, and operator== sees it.
+TEST(RealismConfigTest, EveryFieldIsReadByItsKeyAndCompared) {
+  for (const sim::RealismParams::Field& field : sim::RealismParams::Fields()) {
+    SCOPED_TRACE(field.key);
+    ASSERT_TRUE((field.number == nullptr) != (field.steps == nullptr));
+    // Ideal()'s value plus a half (plus one step): valid for every field.
+    sim::RealismParams expected = sim::RealismParams::Ideal();
+    std::string value;
+    if (field.steps != nullptr) {
+      expected.*field.steps += 1;
+      value = std::to_string(expected.*field.steps);
+    } else {
+      expected.*field.number += 0.5;
+      value = std::to_string(expected.*field.number);
+    }
+    const sim::RealismParams read =
+        Load(ConfigWith("  realism:\n    " + std::string(field.key) + ": " + value + "\n")).realism;
+    EXPECT_EQ(read, expected);
+    EXPECT_NE(read, sim::RealismParams::Ideal());
+  }
+  // A member added to RealismParams without its entry in Fields() makes the
+  // struct larger than the fields listed: each takes a double's room (the two
+  // step counts sit between doubles, so each is padded to 8 bytes).
+  EXPECT_EQ(sim::RealismParams::Fields().size() * sizeof(double), sizeof(sim::RealismParams));
+}
+
 TEST(RealismConfigTest, BadValuesNameFileLineAndKey) {
   const std::string negative = ErrorOf(ConfigWith("  realism:\n    pose_noise_m: -0.001\n"));
   EXPECT_NE(negative.find("test.yaml:9"), std::string::npos) << negative;

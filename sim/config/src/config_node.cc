@@ -215,6 +215,10 @@ std::vector<std::string> ConfigNode::Keys() const {
 }
 
 void ConfigNode::RejectUnknownKeys(std::initializer_list<const char*> allowed) const {
+  RejectUnknownKeys(std::vector<const char*>(allowed));
+}
+
+void ConfigNode::RejectUnknownKeys(const std::vector<const char*>& allowed) const {
   if (!node_.IsMap()) Fail("must be a mapping of keys");
   for (const auto& entry : node_) {
     const std::string name = KeyText(entry.first);

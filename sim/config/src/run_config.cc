@@ -91,44 +91,26 @@ sim::RealismParams ReadRealism(const ConfigNode& root) {
   const ConfigNode node = world.IsDefined() ? world.Optional("realism") : ConfigNode();
   if (!node.IsDefined()) return sim::RealismParams::Ideal();
   if (!node.IsMap()) return RealismPreset(node);
-  node.RejectUnknownKeys({"preset", "pose_noise_m", "pose_noise_rad", "pose_quantum_m", "pose_quantum_rad",
-                          "pose_delay_steps", "tracking_dropout_probability", "tracking_dropout_mean_steps",
-                          "tracker_drop_s", "command_latency_steps",
-                          "command_brake_s", "dead_zone_v_mps", "dead_zone_w_radps", "wheel_accel_limit_radps2",
-                          "axle_length_m"});
+  std::vector<const char*> keys = {"preset"};
+  for (const sim::RealismParams::Field& field : sim::RealismParams::Fields()) keys.push_back(field.key);
+  node.RejectUnknownKeys(keys);
   sim::RealismParams params =
       node.Has("preset") ? RealismPreset(node.Required("preset")) : sim::RealismParams::Ideal();
   // Each key in turn, so the error names the first bad one with its line.
-  auto check = [&node, &params](const char* key) {
-    std::string error;
-    if (!params.IsValid(&error)) node.Required(key).Fail(error);
-  };
-  auto number = [&](const char* key, double* field) {
-    *field = node.GetDouble(key, *field);
-    if (node.Has(key)) check(key);
-  };
-  auto steps = [&](const char* key, int* field) {
-    const long long value = node.GetInt(key, *field);
-    if (value < 0 || value > sim::RealismParams::kMaxDelaySteps) {
-      node.Required(key).Fail("must be 0.." + std::to_string(sim::RealismParams::kMaxDelaySteps) +
-                              " steps, got " + std::to_string(value));
+  for (const sim::RealismParams::Field& field : sim::RealismParams::Fields()) {
+    if (field.steps != nullptr) {
+      const long long value = node.GetInt(field.key, params.*field.steps);
+      if (value < 0 || value > sim::RealismParams::kMaxDelaySteps) {
+        node.Required(field.key).Fail("must be 0.." + std::to_string(sim::RealismParams::kMaxDelaySteps) +
+                                      " steps, got " + std::to_string(value));
+      }
+      params.*field.steps = static_cast<int>(value);
+      continue;
     }
-    *field = static_cast<int>(value);
-  };
-  number("pose_noise_m", &params.pose_noise_m);
-  number("pose_noise_rad", &params.pose_noise_rad);
-  number("pose_quantum_m", &params.pose_quantum_m);
-  number("pose_quantum_rad", &params.pose_quantum_rad);
-  steps("pose_delay_steps", &params.pose_delay_steps);
-  number("tracking_dropout_probability", &params.tracking_dropout_probability);
-  number("tracking_dropout_mean_steps", &params.tracking_dropout_mean_steps);
-  number("tracker_drop_s", &params.tracker_drop_s);
-  steps("command_latency_steps", &params.command_latency_steps);
-  number("command_brake_s", &params.command_brake_s);
-  number("dead_zone_v_mps", &params.dead_zone_v_mps);
-  number("dead_zone_w_radps", &params.dead_zone_w_radps);
-  number("wheel_accel_limit_radps2", &params.wheel_accel_limit_radps2);
-  number("axle_length_m", &params.axle_length_m);
+    params.*field.number = node.GetDouble(field.key, params.*field.number);
+    std::string error;
+    if (node.Has(field.key) && !params.IsValid(&error)) node.Required(field.key).Fail(error);
+  }
   std::string error;
   if (!params.IsValid(&error)) node.Fail(error);  // unreachable when the checks above hold
   return params;

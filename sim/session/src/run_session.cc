@@ -31,20 +31,13 @@ constexpr const char* kLogName = "run.lcmlog";
 // The models a run with world.realism had (summary.json "realism").
 nlohmann::ordered_json RealismJson(const sim::RealismParams& realism) {
   nlohmann::ordered_json json;
-  json["pose_noise_m"] = realism.pose_noise_m;
-  json["pose_noise_rad"] = realism.pose_noise_rad;
-  json["pose_quantum_m"] = realism.pose_quantum_m;
-  json["pose_quantum_rad"] = realism.pose_quantum_rad;
-  json["pose_delay_steps"] = realism.pose_delay_steps;
-  json["tracking_dropout_probability"] = realism.tracking_dropout_probability;
-  json["tracking_dropout_mean_steps"] = realism.tracking_dropout_mean_steps;
-  json["tracker_drop_s"] = realism.tracker_drop_s;
-  json["command_latency_steps"] = realism.command_latency_steps;
-  json["command_brake_s"] = realism.command_brake_s;
-  json["dead_zone_v_mps"] = realism.dead_zone_v_mps;
-  json["dead_zone_w_radps"] = realism.dead_zone_w_radps;
-  json["wheel_accel_limit_radps2"] = realism.wheel_accel_limit_radps2;
-  json["axle_length_m"] = realism.axle_length_m;
+  for (const sim::RealismParams::Field& field : sim::RealismParams::Fields()) {
+    if (field.number != nullptr) {
+      json[field.key] = realism.*field.number;
+    } else {
+      json[field.key] = realism.*field.steps;
+    }
+  }
   json["poses_channel_seen_by_agents"] = sim::TruePoseRecording::kMeasuredPosesChannel;
   return json;
 }

@@ -13,6 +13,27 @@ using field_check::IsPositiveFinite;
 RealismParams RealismParams::Ideal() { return RealismParams{}; }
 
 // Each value's source is in docs/experiments.md ("Realism").
+const std::vector<RealismParams::Field>& RealismParams::Fields() {
+  using P = RealismParams;
+  static const std::vector<Field> fields = {
+      {"pose_noise_m", &P::pose_noise_m, nullptr},
+      {"pose_noise_rad", &P::pose_noise_rad, nullptr},
+      {"pose_quantum_m", &P::pose_quantum_m, nullptr},
+      {"pose_quantum_rad", &P::pose_quantum_rad, nullptr},
+      {"pose_delay_steps", nullptr, &P::pose_delay_steps},
+      {"tracking_dropout_probability", &P::tracking_dropout_probability, nullptr},
+      {"tracking_dropout_mean_steps", &P::tracking_dropout_mean_steps, nullptr},
+      {"tracker_drop_s", &P::tracker_drop_s, nullptr},
+      {"command_latency_steps", nullptr, &P::command_latency_steps},
+      {"command_brake_s", &P::command_brake_s, nullptr},
+      {"dead_zone_v_mps", &P::dead_zone_v_mps, nullptr},
+      {"dead_zone_w_radps", &P::dead_zone_w_radps, nullptr},
+      {"wheel_accel_limit_radps2", &P::wheel_accel_limit_radps2, nullptr},
+      {"axle_length_m", &P::axle_length_m, nullptr},
+  };
+  return fields;
+}
+
 RealismParams RealismParams::Lab() {
   RealismParams lab;
   lab.pose_noise_m = 0.001;
@@ -93,14 +114,10 @@ bool RealismParams::IsValid(std::string* error) const {
 }
 
 bool operator==(const RealismParams& a, const RealismParams& b) {
-  return a.pose_noise_m == b.pose_noise_m && a.pose_noise_rad == b.pose_noise_rad &&
-         a.pose_quantum_m == b.pose_quantum_m && a.pose_quantum_rad == b.pose_quantum_rad &&
-         a.pose_delay_steps == b.pose_delay_steps &&
-         a.tracking_dropout_probability == b.tracking_dropout_probability &&
-         a.tracking_dropout_mean_steps == b.tracking_dropout_mean_steps && a.tracker_drop_s == b.tracker_drop_s &&
-         a.command_latency_steps == b.command_latency_steps && a.command_brake_s == b.command_brake_s &&
-         a.dead_zone_v_mps == b.dead_zone_v_mps && a.dead_zone_w_radps == b.dead_zone_w_radps &&
-         a.wheel_accel_limit_radps2 == b.wheel_accel_limit_radps2 && a.axle_length_m == b.axle_length_m;
+  for (const RealismParams::Field& field : RealismParams::Fields()) {
+    if (field.number != nullptr ? a.*field.number != b.*field.number : a.*field.steps != b.*field.steps) return false;
+  }
+  return true;
 }
 
 }  // namespace dream::sim

@@ -63,6 +63,7 @@ class ConfigNode {
 
   /// Throws when the map holds a key not in `allowed` (catches typos).
   void RejectUnknownKeys(std::initializer_list<const char*> allowed) const;
+  void RejectUnknownKeys(const std::vector<const char*>& allowed) const;
 
   // Scalar readers: each throws a ConfigError naming the key and the value
   // when the value has the wrong type or is not finite.

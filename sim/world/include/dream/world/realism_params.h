@@ -49,6 +49,17 @@ struct RealismParams {
   // wheel saturation use it. (The Robotarium's checks keep the official one.)
   double axle_length_m = RobotariumConstants::kBaseLengthMeters;
 
+  // One field by its config key (world.realism.<key>, summary.json's realism.<key>):
+  // a number, or a step count in 0..kMaxDelaySteps. Exactly one member is set.
+  struct Field {
+    const char* key;
+    double RealismParams::*number;
+    int RealismParams::*steps;
+  };
+  // Every field above, in the order above: the one list the config reader,
+  // summary.json and operator== go through, so a new model is added here once.
+  static const std::vector<Field>& Fields();
+
   static RealismParams Ideal();
   static RealismParams Lab();
   // The preset called `name` into *params; false when there is none.
