@@ -12,6 +12,7 @@
 #include "data_files.h"
 #include "dream/lcm/lcm_url.h"
 #include "process_group.h"
+#include "shared_options.h"
 #include "shell_quoted.h"
 #include "window_display.h"
 
@@ -58,13 +59,12 @@ int RunSpy(const std::string& log_path, const std::string& lcm_url, bool print_c
   const std::vector<std::string> spy = {"java", "-cp", classpath, "lcm.spy.Spy", "--lcm-url=" + url};
   std::vector<std::string> player;
   if (!log_path.empty()) {
-    RequireFile(log_path, "log file", "give the run.lcmlog of a run (runs/<name>/run.lcmlog)");
-    player = {"lcm-logplayer", "--lcm-url=" + url, log_path};
+    player = {"lcm-logplayer", "--lcm-url=" + url, RunLogPath(log_path)};
   }
   if (print_command_only) {
     const std::vector<std::string>* commands[] = {&spy, &player};
     for (const std::vector<std::string>* argv : commands) {
-      for (const std::string& arg : *argv) std::cout << ShellQuoted(arg) << ' ';
+      for (size_t i = 0; i < argv->size(); ++i) std::cout << (i > 0 ? " " : "") << ShellQuoted((*argv)[i]);
       if (!argv->empty()) std::cout << '\n';
     }
     return kExitOk;
@@ -87,7 +87,7 @@ void DeclareSpyCommand(CommandLine& line) {
       "Open lcm-spy with the dream types, on live traffic or on a recorded log.\n"
       "Example: dream spy --log runs/go_to_goal/run.lcmlog",
       [](const SpyArgs& spy) { return RunSpy(spy.log_path, spy.lcm_url, spy.print_command_only); });
-  command->add_option("--log", args->log_path, "Replay this log into lcm-spy (on a private loopback port)");
+  command->add_option("--log", args->log_path, "Replay this log (or a run folder's) into lcm-spy (on a private loopback port)");
   command->add_option("--lcm-url", args->lcm_url, "LCM URL to inspect (default $LCM_DEFAULT_URL)");
   command->add_flag("--print", args->print_command_only, "Print the commands instead of starting them");
 }

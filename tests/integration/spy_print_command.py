@@ -44,6 +44,8 @@ def test(ctx):
     result = subprocess.run([args.dream, "spy", "--print", "--log", log], stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT, text=True, timeout=10, env=env)
     check(result.returncode == 0, f"dream spy --print --log exited {result.returncode}: {result.stdout.strip()}")
+    check(all(line == line.rstrip() for line in result.stdout.splitlines()),
+          f"printed command lines end in blanks: {result.stdout!r}")
     lines = [line.strip() for line in result.stdout.strip().splitlines()]
     check(len(lines) == 2, f"expected two command lines (spy, logplayer), got {len(lines)}: {lines}")
     classpath, url = parse_spy_line(lines[0])
@@ -59,6 +61,13 @@ def test(ctx):
     player = shlex.split(lines[1])
     check(player == ["lcm-logplayer", "--lcm-url=" + url, log],
           f"expected `lcm-logplayer --lcm-url={url} {log}`, got `{lines[1]}`")
+
+    # A run folder stands for its run.lcmlog, as for every command that reads a log.
+    result = subprocess.run([args.dream, "spy", "--print", "--log", run], stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, text=True, timeout=10, env=env)
+    lines = result.stdout.strip().splitlines()
+    check(result.returncode == 0 and len(lines) == 2 and shlex.split(lines[1])[-1] == log,
+          f"dream spy --print --log RUN_FOLDER should play {log}: exit {result.returncode}, {result.stdout.strip()!r}")
 
     javap = shutil.which("javap")
     check(javap, "javap not found (apt-get install default-jdk-headless)")
