@@ -65,12 +65,14 @@ const std::string& RunFolder() {
     std::ofstream(path + "/run/config.yaml") << Config();
     std::vector<sim::Pose2> start;
     for (int i = 0; i < kRobots; ++i) start.push_back({-1.2 + 0.6 * (i % 5), -0.75 + 0.5 * (i / 5), 0.0});
-    sim::RectangleObstacleSpec fixed;
-    fixed.id = 0;
-    fixed.center_m = {1.52, 0.95};
-    fixed.width_m = 0.1;
-    fixed.height_m = 0.05;
-    sim::UnicycleWorld world(sim::WorldParams{}, start, {fixed});
+    // One static obstacle, filled in place (copying a spec from an initializer
+    // list makes GCC 12 warn, wrongly, of its empty optional path).
+    std::vector<sim::RectangleObstacleSpec> obstacle_specs(1);
+    obstacle_specs[0].id = 0;
+    obstacle_specs[0].center_m = {1.52, 0.95};
+    obstacle_specs[0].width_m = 0.1;
+    obstacle_specs[0].height_m = 0.05;
+    sim::UnicycleWorld world(sim::WorldParams{}, start, obstacle_specs);
     sim::RunRecorder recorder(path + "/run/run.lcmlog");
     std::vector<sim::ObstacleState> states;
     for (int64_t k = 0; k <= kSteps; ++k) {
