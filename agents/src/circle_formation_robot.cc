@@ -46,7 +46,8 @@ UnicycleCommand CircleFormationRobot::Update(int64_t step) {
   const Eigen::Vector2d delta = params_.goals_m[static_cast<size_t>(goal_index_)] - pose().head<2>();
   const double distance = delta.norm();
   Eigen::Vector2d preferred = Eigen::Vector2d::Zero();
-  if (distance < params_.tolerance_m) {
+  at_goal_ = distance < params_.tolerance_m;
+  if (at_goal_) {
     if (reached_ == goal_index_) ++reached_;
   } else {
     preferred = params_.max_speed_mps * delta / distance;

@@ -10,7 +10,8 @@ brought news that every robot reached the current one: each robot rebroadcasts t
 state it knows of everybody, so the news travels hop by hop (payload as C++'s
 FormationProgress: int32 count, then one int32 state per robot, little-endian). Like the C++
 robot it moves on when every known state is *at least* its own (the thesis's "equal" deadlocks
-when a faster robot is already further on). Done once it has reached its last point.
+when a faster robot is already further on). Done while it holds its last point (reached, and
+within tolerance_m at its latest update), as the C++ kind.
 """
 
 import math
@@ -48,6 +49,7 @@ class HrvoCircleRobot(Robot):
         self.states = [0] * self.num_robots  # highest number of points each robot is known to have reached
         self.reached = 0
         self.goal_index = 0
+        self.at_goal = False  # within tolerance_m of the current point at the latest update
         self.dxi = (0.0, 0.0)  # the last safe velocity: HRVO's current velocity next time
         self._payload = struct.Struct(f"<{self.num_robots + 1}i")
 
@@ -75,7 +77,8 @@ class HrvoCircleRobot(Robot):
         dy = goal_y - y
         distance = math.sqrt(dx * dx + dy * dy)
         preferred = (0.0, 0.0)
-        if distance < self.config["tolerance_m"]:
+        self.at_goal = distance < self.config["tolerance_m"]
+        if self.at_goal:
             if self.reached == self.goal_index:
                 self.reached += 1
         else:
@@ -89,7 +92,7 @@ class HrvoCircleRobot(Robot):
         return self._guard_walls(x, y, theta, command) if self.guard_walls else command
 
     def done(self):
-        return self.reached == len(self.goals)
+        return self.reached == len(self.goals) and self.at_goal
 
     def _decode(self, payload, formations):
         """The states in a neighbour's payload, or None when it is not a valid progress message."""

@@ -112,6 +112,27 @@ TEST(CircleFormationRobotTest, DrivesAtFullSpeedTowardsItsPointAndIsDoneAfterThe
   EXPECT_EQ(stop.v_mps, 0.0);
 }
 
+// A robot that arrived and was pushed off its last point (HRVO stepping aside
+// for a passing robot) is not done until it is back: a run that stops when
+// every robot is done then stops with the formation in place.
+TEST(CircleFormationRobotTest, IsDoneOnlyWhileItHoldsItsLastPoint) {
+  CircleFormationParams params;
+  params.num_robots = 1;
+  params.goals_m = {{1.0, 0.0}};
+  CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
+  robot.OnOdometry({0, Eigen::Vector3d(0.97, 0.0, 0.0)});
+  robot.Update(1);
+  EXPECT_TRUE(robot.done());
+  robot.OnOdometry({0, Eigen::Vector3d(0.94, 0.0, 0.0)});  // 6 cm off: outside the 5 cm tolerance
+  const UnicycleCommand back = robot.Update(2);
+  EXPECT_FALSE(robot.done());
+  EXPECT_EQ(robot.reached(), 1);  // still counts the point as reached once
+  EXPECT_GT(back.v_mps, 0.0);     // drives back towards it
+  robot.OnOdometry({0, Eigen::Vector3d(0.99, 0.0, 0.0)});
+  robot.Update(3);
+  EXPECT_TRUE(robot.done());
+}
+
 TEST(CircleFormationRobotTest, MalformedNeighbourPayloadIsCountedAndDropped) {
   CircleFormationParams params;
   params.num_robots = 2;

@@ -31,7 +31,7 @@ SOURCE_DIR = os.path.abspath(os.environ.get("DREAM_SOURCE_DIR", os.path.join(HER
 sys.path.insert(0, os.path.join(SOURCE_DIR, "python"))
 sys.path.insert(0, HERE)
 
-from dream import RadioMessage  # noqa: E402
+from dream import OdometryReading, RadioMessage  # noqa: E402
 from dream.hrvo import HrvoAvoidance, HrvoParams  # noqa: E402
 
 import hrvo_circle_world  # noqa: E402
@@ -161,6 +161,17 @@ class CircleRobotRadio(unittest.TestCase):
         self.assertEqual(self.robot.goal_index, 0)  # robot 3 is not there yet
         self.robot.on_radio([RadioMessage(3, 35, progress_payload([0, 0, 2, 1]))])
         self.assertEqual(self.robot.goal_index, 1)
+
+    def test_done_only_while_holding_the_last_point(self):
+        # Pushed off its last point (HRVO stepping aside), a robot is not done until it is back.
+        self.robot.reached, self.robot.goal_index = 2, 2  # heading for its last point, (0.85, 0)
+        for x, done in [(0.83, True), (0.79, False), (0.84, True)]:
+            self.robot.on_odometry(OdometryReading(1, np.array([x, 0.0, 0.0])))
+            command = self.robot.update(1)
+            self.assertEqual(self.robot.done(), done, f"at x = {x}")
+            self.assertEqual(self.robot.reached, 3)
+            if not done:
+                self.assertGreater(command[0], 0.0)  # drives back
 
     def test_bad_payloads_are_counted_and_dropped(self):
         bad = [progress_payload([0, 1, 0]), progress_payload([0, 4, 0, 0]), progress_payload([0, 1, 0, 0]) + b"x",

@@ -32,7 +32,11 @@ struct CircleFormationParams {
 /// vector. One deliberate change: the thesis advanced when every known state
 /// *equalled* its own, which deadlocks if a faster robot has already reached
 /// the next point; here every known state must be *at least* its own.
-/// Done once it has reached its last point.
+/// Done while it holds its last point: reached, and within tolerance_m by its
+/// latest update. HRVO may make a robot that has arrived step aside for a
+/// passing one; it then drives back and is not done meanwhile, so a run that
+/// stops when every robot is done stops with the whole formation in place
+/// (the thesis's Robot_c stayed done once it had arrived).
 class CircleFormationRobot final : public HrvoRobot {
  public:
   /// @throws std::invalid_argument when params are invalid.
@@ -41,7 +45,7 @@ class CircleFormationRobot final : public HrvoRobot {
 
   std::optional<std::vector<uint8_t>> OnRadio(const std::vector<RadioMessage>& heard) override;
   UnicycleCommand Update(int64_t step) override;
-  bool done() const override { return reached_ == static_cast<int>(params_.goals_m.size()); }
+  bool done() const override { return reached_ == static_cast<int>(params_.goals_m.size()) && at_goal_; }
 
   /// How many formation points this robot has reached (the thesis's state).
   int reached() const { return reached_; }
@@ -54,6 +58,7 @@ class CircleFormationRobot final : public HrvoRobot {
   FormationProgress progress_;
   int reached_ = 0;
   int goal_index_ = 0;
+  bool at_goal_ = false;  ///< within tolerance_m of the current point at the latest Update
 };
 
 }  // namespace dream::agents
