@@ -88,7 +88,9 @@ int MergeAgentReports(const std::string& out_dir, int num_robots, int sim_exit) 
     const std::string verdict = summary.value("verdict", "");
     if (verdict == "clean" || verdict == "warning") summary["verdict"] = "not_ready";
     if (exit_code == kExitOk) exit_code = kExitNotReady;
-    std::cout << "Not ready for the Robotarium: " << problem << " (summary.json agents)\n";
+    std::cout << "Not ready for the Robotarium: " << problem << " (summary.json agents)\n"
+              << "verdict: " << summary.value("verdict", "") << " (with the agents' reports, which the simulator's "
+              << "report above could not know; summary.json verdict_reasons)\n";
   }
   try {
     sim::WriteFileAtomically(summary_path, summary.dump(2) + "\n");

@@ -127,6 +127,10 @@ def test(ctx):
                                                f"for every agent: {agents_bad.get(channel)}")
     check(any(r["rule"] == "agent_bad_messages" for r in summary["verdict_reasons"]),
           f"the agents' refusals are not a verdict reason: {summary['verdict_reasons']}")
+    # The last verdict printed is the one summary.json holds, the agents' reports included.
+    verdicts = [line for line in output.splitlines() if line.startswith("verdict: ")]
+    check(verdicts and verdicts[-1].startswith(f"verdict: {summary['verdict']} (with the agents' reports"),
+          f"the launch's last printed verdict is not summary.json's {summary['verdict']!r}: {verdicts}")
 
     ctx.run([args.dream, "-q", "run", config, "--out", single] + limit, timeout=90, expect=0)
     log_a, log_b = os.path.join(launched, "run.lcmlog"), os.path.join(single, "run.lcmlog")
