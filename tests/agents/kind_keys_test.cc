@@ -1,0 +1,64 @@
+// Every key a built-in kind declares (ControllerKind::keys, which the factory
+// lets through) is really read: set to a value no key takes, it makes the
+// factory fail naming that key. A key declared but never read would be
+// accepted and silently ignored, the worst answer to a researcher's config.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <filesystem>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include "../support/factory_error.h"
+#include "dream/agent_host/controller_registry.h"
+#include "dream/config/config_node.h"
+#include "dream/config/run_config.h"
+
+namespace dream::agents {
+namespace {
+
+using ::testing::HasSubstr;
+
+/// kind -> a shipped config of that kind (config/*.yaml).
+std::map<std::string, std::string> ShippedConfigsByKind() {
+  std::map<std::string, std::string> configs;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(DREAM_SOURCE_DIR) + "/config")) {
+    if (entry.path().extension() != ".yaml") continue;
+    const YAML::Node root = YAML::LoadFile(entry.path().string());
+    if (!root["controller"] || !root["controller"]["kind"]) continue;
+    configs.emplace(root["controller"]["kind"].as<std::string>(), entry.path().string());
+  }
+  return configs;
+}
+
+/// The error of `path` with controller.<key> set to a string no key takes.
+std::string ErrorWithBadValue(const std::string& path, const std::string& key) {
+  YAML::Node root = YAML::LoadFile(path);
+  root["controller"][key] = "no_such_value";
+  std::ostringstream text;
+  text << root;
+  return testing::FactoryErrorOf(config::LoadRunConfig(config::ConfigNode::LoadString(text.str(), path)));
+}
+
+TEST(KindKeysTest, EveryDeclaredKeyOfEveryBuiltInKindIsRead) {
+  const std::map<std::string, std::string> configs = ShippedConfigsByKind();
+  int keys_checked = 0;
+  for (const std::string& name : ControllerRegistry::Global().Names()) {
+    const ControllerKind* kind = ControllerRegistry::Global().Find(name);
+    if (kind->checks_own_keys) continue;  // the python kind: the Python class declares and reads its keys
+    SCOPED_TRACE(name);
+    const auto config = configs.find(name);
+    ASSERT_NE(config, configs.end()) << "no config/*.yaml of kind " << name;
+    for (const std::string& key : kind->keys) {
+      SCOPED_TRACE(key);
+      EXPECT_THAT(ErrorWithBadValue(config->second, key), HasSubstr("controller." + key));
+      ++keys_checked;
+    }
+  }
+  EXPECT_GE(keys_checked, 30);  // the five built-in experiments' keys, not an empty registry
+}
+
+}  // namespace
+}  // namespace dream::agents
