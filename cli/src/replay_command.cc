@@ -48,9 +48,11 @@ int RunReplay(const ReplayArgs& args) {
   }
   const std::string url = lcm::ResolveLcmUrl(args.lcm_url);
   // Debian's lcm-logplayer-gui passes -Xincgc, which Java 17 refuses: start
-  // its class directly, with the script's heap sizes.
+  // its class directly, with the script's heap sizes. The URL goes as its own
+  // word: LogPlayer cuts `--lcm-url=URL` at every '=', which kept only
+  // "udpm://...?ttl" and dropped the URL's options.
   std::vector<std::string> player = {"java", "-Xmx64m", "-Xms32m", "-cp", DREAM_LCM_JAR, "lcm.logging.LogPlayer",
-                                     "--lcm-url=" + url};
+                                     "--lcm-url", url};
   if (args.paused) player.push_back("--paused");
   player.push_back(log);
   std::vector<std::string> spy;

@@ -3,7 +3,8 @@
 player window on a run, as `dream spy --print` does for lcm-spy.
 
 Checks the printed line of `dream replay --print RUN_FOLDER`: `java -Xmx64m -Xms32m -cp LCM_JAR
-lcm.logging.LogPlayer --lcm-url=URL LOG` (no -Xincgc, which Java 17 refuses), LOG the folder's
+lcm.logging.LogPlayer --lcm-url URL LOG` (no -Xincgc, which Java 17 refuses; the URL as its own
+word, since LogPlayer cuts `--lcm-url=URL` at every '='), LOG the folder's
 run.lcmlog, URL $LCM_DEFAULT_URL; that the class is on that classpath (javap) and its own --help
 answers; --paused and --lcm-url are passed on; --spy adds a `dream spy --lcm-url=URL` line on the
 same URL; an .lcmlog path works as well as its folder; and a missing path, a folder without a log
@@ -48,8 +49,8 @@ def test(ctx):
     jar = words[4]
     check(os.path.isfile(jar) and os.path.basename(jar) == "lcm.jar", f"classpath {jar} is not an existing lcm.jar")
     # dream adds its receive buffer size to a udpm URL (architecture.md, Transport).
-    check(len(words) == 8 and words[6].startswith("--lcm-url=" + url) and words[7] == log,
-          f"expected --lcm-url={url}... {log}, got {words[6:]}")
+    check(len(words) == 9 and words[6] == "--lcm-url" and words[7].startswith(url) and words[8] == log,
+          f"expected --lcm-url {url}... {log}, got {words[6:]}")
 
     javap = shutil.which("javap")
     check(javap, "javap not found (apt-get install default-jdk-headless)")
@@ -59,14 +60,24 @@ def test(ctx):
                          timeout=60)
     check("--paused" in text and "--lcm-url" in text, f"LogPlayer --help does not list its options: {text[-300:]}")
 
+    # The URL reaches the player whole: headless, LogPlayer parses its words and opens LCM (which
+    # says what TTL it got) before it fails to open its window; a cut URL makes its parser complain.
+    # (LCM's threads keep the JVM alive after that: close() ends its process group.)
+    require_private_netns()  # the player joins a udpm group
+    ctx.start("headless_player", words[:1] + ["-Djava.awt.headless=true"] + words[1:], own_group=True)
+    ctx.wait_for_output("headless_player", "HeadlessException", timeout=60)
+    text = ctx.output("headless_player")
+    check("TTL set to zero" in text and "Invalid key-value pair" not in text,
+          f"the log player did not get the whole URL {words[7]}: {text.strip()[-300:]}")
+
     other = "udpm://239.255.76.67:7672?ttl=0"
     lines = printed(args.dream, [log, "--paused", "--spy", "--lcm-url", other], env)
     check(len(lines) == 2, f"--spy: expected the player and a spy line, got {lines}")
-    player_url = lines[0][6]
-    check(player_url.startswith("--lcm-url=" + other) and lines[0][7:] == ["--paused", log],
+    player_url = lines[0][7]
+    check(lines[0][6] == "--lcm-url" and player_url.startswith(other) and lines[0][8:] == ["--paused", log],
           f"--paused/--lcm-url not passed on: {lines[0]}")
-    check(lines[1][1:] == ["spy", player_url] and os.path.basename(lines[1][0]) == "dream",
-          f"--spy: expected `dream spy {player_url}`, got {lines[1]}")
+    check(lines[1][1:] == ["spy", "--lcm-url=" + player_url] and os.path.basename(lines[1][0]) == "dream",
+          f"--spy: expected `dream spy --lcm-url={player_url}`, got {lines[1]}")
 
     code, text = ctx.run([args.dream, "replay", "--help"])
     check(code == 0 and "seek" in text and "--print-command" in text, f"dream replay --help: {code} {text[-400:]}")
