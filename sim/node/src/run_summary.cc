@@ -72,11 +72,16 @@ nlohmann::ordered_json RunSummary(const config::RunConfig& config, const RunOutc
   json["handler_failures"] = outcome.handler_failures;
   json["log"] = log_file_name;
   json["log_events"] = outcome.log_events;
+  // Where the robots really ended: a realistic world's poses() are what the
+  // agents were sent last (measured), its true_poses() where they are.
+  const auto* realistic = dynamic_cast<const RealisticWorld*>(&world);
   nlohmann::json poses = nlohmann::json::array();
-  for (const Pose2& pose : world.poses()) poses.push_back({pose.x_m, pose.y_m, pose.theta_rad});
+  for (const Pose2& pose : realistic != nullptr ? realistic->true_poses() : world.poses()) {
+    poses.push_back({pose.x_m, pose.y_m, pose.theta_rad});
+  }
   json["final_poses"] = poses;
   // world.realism: what the tracker model did to the agents' view.
-  if (const auto* realistic = dynamic_cast<const RealisticWorld*>(&world)) {
+  if (realistic != nullptr) {
     nlohmann::json lost = nlohmann::json::array();
     for (const RealisticWorld::TrackerLoss& loss : realistic->tracker_losses()) {
       lost.push_back({{"robot", loss.robot_id}, {"step", loss.step}});

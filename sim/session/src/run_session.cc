@@ -81,10 +81,6 @@ RunResult RunSession::Run(lcm::LcmInterface& lcm, const Folder& folder) {
     const auto* realistic = dynamic_cast<const sim::RealisticWorld*>(&world);
     if (realistic == nullptr) return fields;
     fields["realism"] = RealismJson(config_.realism);
-    // Where the robots really ended (world.poses() is what the agents were sent last).
-    nlohmann::ordered_json poses = nlohmann::ordered_json::array();
-    for (const sim::Pose2& pose : realistic->true_poses()) poses.push_back({pose.x_m, pose.y_m, pose.theta_rad});
-    fields["final_poses"] = poses;
     return fields;
   };
   return Run(lcm, folder, own);
