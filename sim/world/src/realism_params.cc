@@ -12,7 +12,6 @@ using field_check::IsPositiveFinite;
 
 RealismParams RealismParams::Ideal() { return RealismParams{}; }
 
-// Each value's source is in docs/experiments.md ("Realism").
 const std::vector<RealismParams::Field>& RealismParams::Fields() {
   using P = RealismParams;
   static const std::vector<Field> fields = {
@@ -34,6 +33,7 @@ const std::vector<RealismParams::Field>& RealismParams::Fields() {
   return fields;
 }
 
+// Each value's source is in docs/experiments.md ("Realism").
 RealismParams RealismParams::Lab() {
   RealismParams lab;
   lab.pose_noise_m = 0.001;
