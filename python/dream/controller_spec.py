@@ -19,7 +19,7 @@ from collections import namedtuple
 import numpy as np
 
 from .radios import GraphRadio, RangeRadio, RoleRadio, mix_seed
-from .robot import Key, Robot, RobotParams, key, number_text
+from .robot import Key, Robot, RobotParams, did_you_mean, key, number_text
 from .robot_agent import ControllerFault, RobotAgent, controller_error_text
 from .sensors import MovementSensor, ObstacleSensor, OdometrySensor
 
@@ -36,6 +36,12 @@ RADIO_KEYS = ("kind", "period_steps", "range_m", "graph", "leaders", "loss_proba
 
 _MATRIX = key(None, kind="matrix")
 _module_counter = itertools.count()
+
+
+def _at(config_file, line):
+    """Where a key stands, as C++'s ConfigNode says it: "file:line", or just "file" for a key with
+    no line (one a --set added)."""
+    return f"{config_file}:{line}" if line else config_file
 
 
 class ConfigError(Exception):
@@ -387,7 +393,7 @@ class ControllerSpec:
             robot_class = load_controller_class(module_path, class_name)
         except _Problem as problem:
             line = lines.get(problem.where, section_line)
-            raise ConfigError(f"{config_file}:{line}: controller.{problem.where}: {problem}") from None
+            raise ConfigError(f"{_at(config_file, line)}: controller.{problem.where}: {problem}") from None
         config = check_params(robot_class, params, num_robots, config_file, section_line)
         return cls(name, config_file, num_robots, seed, os.path.abspath(module_path), robot_class, section_line,
                    config, robot_parts, sensors, radio)
@@ -430,23 +436,24 @@ def check_params(robot_class, params, num_robots, config_file, section_line):
     class_name = robot_class.__name__
     for name, spec in keys.items():
         if not isinstance(spec, Key):
-            raise ConfigError(f"{config_file}:{section_line}: controller: {class_name}.KEYS['{name}'] must be "
+            raise ConfigError(f"{_at(config_file, section_line)}: controller: {class_name}.KEYS['{name}'] must be "
                               f"made with dream.key(...), got {spec!r}")
         if name in SECTION_KEYS:
-            raise ConfigError(f"{config_file}:{section_line}: controller: {class_name}.KEYS may not declare "
+            raise ConfigError(f"{_at(config_file, section_line)}: controller: {class_name}.KEYS may not declare "
                               f"'{name}'; the section's own keys are {', '.join(SECTION_KEYS)}")
     for name, entry in params.items():
         if name not in keys:
             allowed = ", ".join(SECTION_KEYS + tuple(keys))
-            raise ConfigError(f"{config_file}:{entry['line']}: controller.{name}: unknown key for kind python "
-                              f"class {class_name}; allowed keys here: {allowed}")
+            suggestion = did_you_mean(name, SECTION_KEYS + tuple(keys))
+            raise ConfigError(f"{_at(config_file, entry['line'])}: controller.{name}: unknown key for kind python "
+                              f"class {class_name}{suggestion}; allowed keys here: {allowed}")
     config = {}
     for name, spec in keys.items():
         if name in params:
             line = params[name]["line"]
             value = params[name]["value"]
         elif spec.required:
-            raise ConfigError(f"{config_file}:{section_line}: controller.{name}: required by class {class_name}; "
+            raise ConfigError(f"{_at(config_file, section_line)}: controller.{name}: required by class {class_name}; "
                               f"missing here")
         else:
             line = section_line
@@ -455,7 +462,8 @@ def check_params(robot_class, params, num_robots, config_file, section_line):
             config[name] = check_key_value(value, spec, num_robots)
         except _Problem as problem:
             origin = "" if name in params else f" (the default of {class_name}.KEYS['{name}'])"
-            raise ConfigError(f"{config_file}:{line}: controller.{name}{problem.where}: {problem}{origin}") from None
+            raise ConfigError(
+                f"{_at(config_file, line)}: controller.{name}{problem.where}: {problem}{origin}") from None
     return config
 
 
@@ -469,6 +477,6 @@ def check(text):
         except ControllerFault as construction_fault:
             fault = construction_fault
         if fault is not None:
-            raise ConfigError(f"{spec.config_file}:{spec.section_line}: controller: robot {robot_id}'s "
+            raise ConfigError(f"{_at(spec.config_file, spec.section_line)}: controller: robot {robot_id}'s "
                               f"{spec.robot_class.__name__} failed to set up: {fault}")
     return spec

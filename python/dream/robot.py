@@ -69,6 +69,37 @@ def number_text(value):
     return repr(value)
 
 
+def _edit_distance(a, b):
+    """Insertions, deletions, replacements and swaps of neighbours from a to b."""
+    d = [[i + j if i * j == 0 else 0 for j in range(len(b) + 1)] for i in range(len(a) + 1)]
+    for i in range(1, len(a) + 1):
+        for j in range(1, len(b) + 1):
+            d[i][j] = min(d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1]))
+            if i > 1 and j > 1 and a[i - 1] == b[j - 2] and a[i - 2] == b[j - 1]:
+                d[i][j] = min(d[i][j], d[i - 2][j - 2] + 1)
+    return d[len(a)][len(b)]
+
+
+def did_you_mean(given, names):
+    """" (did you mean 'x'?)" when `given` looks like a typo of one of `names`, else "": the same
+    rules as C++'s config::DidYouMean (case, up to two edits, one for names of five letters or
+    fewer, or the start of a name), so both languages answer a typo alike."""
+    longest = 64
+    if not given or len(given) > longest:
+        return ""
+    lower = given.lower()
+    best, best_distance = None, None
+    for name in names:
+        if name == given or len(name) > longest:
+            continue
+        distance = _edit_distance(lower, name.lower())
+        if distance <= (1 if min(len(given), len(name)) <= 5 else 2) and (best is None or distance < best_distance):
+            best, best_distance = name, distance
+    if best is None and len(given) >= 3:
+        best = next((name for name in names if len(name) > len(given) and name.lower().startswith(lower)), None)
+    return "" if best is None else f" (did you mean '{best}'?)"
+
+
 class RobotParams:
     """Parameters every Robot has (agents/include/dream/agents/framework/robot_params.h)."""
 

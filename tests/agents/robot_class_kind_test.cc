@@ -137,7 +137,8 @@ TEST(RobotClassKindTest, TheCommonPartsComeFromTheConfig) {
 TEST(RobotClassKindTest, AnUnknownKeyIsRefusedNamingFileLineAndKey) {
   const std::string error = FactoryErrorOf(Config("{kind: test_cruise, speeds_mps: [0.1, 0.1], speed_mps: 0.1}"));
   EXPECT_EQ(error,
-            "test.yaml:5: controller.speed_mps: unknown key for kind test_cruise; allowed keys here: kind, robot, "
+            "test.yaml:5: controller.speed_mps: unknown key for kind test_cruise "
+            "(did you mean 'speeds_mps'?); allowed keys here: kind, robot, "
             "sensors, radio, speeds_mps");
   // A class that reads no keys takes none.
   const std::string parked = FactoryErrorOf(Config("{kind: test_parked, speeds_mps: [0.1, 0.1]}"));
@@ -161,7 +162,8 @@ TEST(RobotClassKindTest, AMissingOrUnknownKindIsAClearError) {
   const std::string missing = FactoryErrorOf(Config("{speeds_mps: [0.1, 0.1]}"));
   EXPECT_EQ(missing, "test.yaml:5: controller.kind: missing; this key is required");
   const std::string unknown = FactoryErrorOf(Config("{kind: test_cruse, speeds_mps: [0.1, 0.1]}"));
-  EXPECT_EQ(unknown.rfind("test.yaml:5: controller.kind: unknown controller kind 'test_cruse'; known kinds: "
+  EXPECT_EQ(unknown.rfind("test.yaml:5: controller.kind: unknown controller kind 'test_cruse' "
+                          "(did you mean 'test_cruise'?); known kinds: "
                           "go_to_goal",
                           0),
             0u)

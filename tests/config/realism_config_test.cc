@@ -120,7 +120,8 @@ TEST(RealismConfigTest, BadValuesNameFileLineAndKey) {
 
   const std::string preset = ErrorOf(ConfigWith("  realism: labb\n"));
   EXPECT_NE(preset.find("test.yaml:8"), std::string::npos) << preset;
-  EXPECT_NE(preset.find("unknown realism preset 'labb'; known presets: ideal, lab"), std::string::npos) << preset;
+  EXPECT_NE(preset.find("unknown realism preset 'labb' "
+                        "(did you mean 'lab'?); known presets: ideal, lab"), std::string::npos) << preset;
 
   const std::string map_preset = ErrorOf(ConfigWith("  realism: {preset: real}\n"));
   EXPECT_NE(map_preset.find("known presets: ideal, lab"), std::string::npos) << map_preset;

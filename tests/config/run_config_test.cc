@@ -196,7 +196,8 @@ TEST(RunConfigTest, WrongPoseCountAndShape) {
 
 TEST(RunConfigTest, UnknownKeysAreTyposAndSayWhatIsAllowed) {
   const std::string error = ErrorOf(Replace(kMinimal, "steps: 100", "stpes: 100"));
-  EXPECT_NE(error.find("test.yaml:4: stpes: unknown key; allowed keys here: name, seed"), std::string::npos)
+  EXPECT_NE(error.find("test.yaml:4: stpes: unknown key "
+                       "(did you mean 'steps'?); allowed keys here: name, seed"), std::string::npos)
       << error;
   EXPECT_NE(ErrorOf(std::string(kMinimal) + "world: {mode: fast}\n").find("unknown world mode 'fast'; allowed: "
                                                                           "lockstep, realtime"),

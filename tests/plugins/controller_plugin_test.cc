@@ -51,8 +51,9 @@ TEST(ControllerPluginTest, AGoodPluginAddsItsKindOnceHoweverOftenItIsNamed) {
       "name: t\nrobots: 1\ninitial_poses: [[0, 0, 0]]\nplugins: [" + Quoted(TEST_PLUGIN_GOOD_PATH) +
           "]\ncontroller: {kind: test_still, patience: 2}\n",
       "test.yaml"));
-  EXPECT_NE(FactoryErrorOf(typo).find("controller.patience: unknown key for kind test_still; allowed keys here: kind, "
-                               "robot, sensors, radio, patience_s"),
+  EXPECT_NE(FactoryErrorOf(typo).find("controller.patience: unknown key for kind test_still "
+                                      "(did you mean 'patience_s'?); allowed keys here: kind, "
+                                      "robot, sensors, radio, patience_s"),
             std::string::npos)
       << FactoryErrorOf(typo);
 }

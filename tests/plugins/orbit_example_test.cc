@@ -98,7 +98,8 @@ TEST(OrbitExampleTest, ThePluginLoadsAndTheRobotsCircleTheirStartingCircles) {
 TEST(OrbitExampleTest, AnUnknownKeyNamesFileLineAndTheAllowedKeys) {
   const std::string error = FactoryErrorOf(ExampleConfig("  radius_m:", "  radius:"));
   EXPECT_EQ(error, "orbit.yaml:" + std::to_string(LineOf("  radius_m:")) +
-                       ": controller.radius: unknown key for kind orbit; allowed keys here: kind, robot, sensors, "
+                       ": controller.radius: unknown key for kind orbit "
+                       "(did you mean 'radius_m'?); allowed keys here: kind, robot, sensors, "
                        "radio, radius_m, speed_mps");
 }
 

@@ -27,6 +27,7 @@ from dream import (ActuatorLimits, ConfigError, ControllerFault, ControllerSpec,
                    MovementSensor, ObstacleSensor, ObstacleView, OdometrySensor, RadioMessage, RangeRadio,
                    Robot, RobotAgent, RobotParams, RoleRadio, SingleIntegratorToUnicycle, Timer, WorldSnapshot,
                    check, dxi_to_dxu, mix_seed, pack_floats, unpack_floats)
+from dream.robot import did_you_mean  # noqa: E402
 
 STEP_S = 0.033
 
@@ -299,6 +300,22 @@ class SpecFixture(unittest.TestCase):
 GO_TO_GOAL = os.path.join(SOURCE_DIR, "config", "python", "go_to_goal.py")
 
 
+class DidYouMeanTest(unittest.TestCase):
+    """The same answers as C++'s config::DidYouMean (tests/config/name_suggestion_test.cc)."""
+
+    KEYS = ["spacing_m", "gain", "max_speed_mps", "tolerance_m", "resume_m"]
+
+    def test_a_typo_gets_the_closest_name(self):
+        for given, name in [("tolerence_m", "tolerance_m"), ("max_sped_mps", "max_speed_mps"), ("gian", "gain"),
+                            ("Spacing_M", "spacing_m"), ("spacing", "spacing_m")]:
+            self.assertEqual(did_you_mean(given, self.KEYS), f" (did you mean '{name}'?)", given)
+
+    def test_nothing_close_gets_no_suggestion(self):
+        for given in ["bogus", "gxyz", "", "ga", "gain", "g" * 10000]:
+            self.assertEqual(did_you_mean(given, self.KEYS), "", given[:20])
+        self.assertEqual(did_you_mean("gain", []), "")
+
+
 class SpecErrorTest(SpecFixture):
     def assert_config_error(self, spec, message):
         with self.assertRaises(ConfigError) as caught:
@@ -311,7 +328,16 @@ class SpecErrorTest(SpecFixture):
 
     def test_own_key_errors_name_file_line_and_key(self):
         self.assert_config_error(self.go_to_goal(gian=(0.5, 24)),
-                                 "run.yaml:24: controller.gian: unknown key for kind python class GoToGoal; allowed "
+                                 "run.yaml:24: controller.gian: unknown key for kind python class GoToGoal (did you "
+                                 "mean 'gain'?); allowed keys here: kind, module, class, robot, sensors, radio, goals, "
+                                 "gain, max_speed_mps, tolerance_m")
+        # A key --set added has no line: the file alone, as C++'s ConfigNode says it.
+        self.assert_config_error(self.go_to_goal(bogus=(0.5, 0)),
+                                 "run.yaml: controller.bogus: unknown key for kind python class GoToGoal; allowed "
+                                 "keys here: kind, module, class, robot, sensors, radio, goals, gain, max_speed_mps, "
+                                 "tolerance_m")
+        self.assert_config_error(self.go_to_goal(bogus=(0.5, 24)),
+                                 "run.yaml:24: controller.bogus: unknown key for kind python class GoToGoal; allowed "
                                  "keys here: kind, module, class, robot, sensors, radio, goals, gain, max_speed_mps, "
                                  "tolerance_m")
         self.assert_config_error(self.spec(GO_TO_GOAL, "GoToGoal", {}),

@@ -9,6 +9,7 @@
 #include "dream/agents/framework/number_text.h"
 #include "dream/agents/framework/range_radio.h"
 #include "dream/agents/framework/role_radio.h"
+#include "dream/config/name_suggestion.h"
 
 namespace dream::agents {
 namespace {
@@ -94,7 +95,9 @@ SensorConfig ReadSensor(const ConfigNode& node, int num_robots) {
     sensor.obstacle.range_m = node.GetDouble("range_m", sensor.obstacle.range_m);
     Validate(node, sensor.obstacle);
   } else {
-    node.Required("kind").Fail("unknown sensor kind '" + kind + "'; known kinds: odometry, movement, obstacle");
+    node.Required("kind").Fail("unknown sensor kind '" + kind + "'" +
+                               config::DidYouMean(kind, {"odometry", "movement", "obstacle"}) +
+                               "; known kinds: odometry, movement, obstacle");
   }
   return sensor;
 }
@@ -171,7 +174,9 @@ void ReadRadio(const ConfigNode& node, int num_robots, bool graph_must_connect, 
       if (radio->leaders.empty()) node.Required("leaders").Fail("a role radio needs at least one leader id");
     }
   } else {
-    node.Required("kind").Fail("unknown radio kind '" + kind + "'; known kinds: none, range, graph, role");
+    node.Required("kind").Fail("unknown radio kind '" + kind + "'" +
+                               config::DidYouMean(kind, {"none", "range", "graph", "role"}) +
+                               "; known kinds: none, range, graph, role");
   }
 }
 

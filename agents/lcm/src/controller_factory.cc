@@ -7,6 +7,7 @@
 #include "dream/agent_host/controller_registry.h"
 #include "dream/agents/framework/noise_source.h"
 #include "dream/agents/framework/safety_metrics.h"
+#include "dream/config/name_suggestion.h"
 
 namespace dream::agents {
 namespace {
@@ -31,8 +32,8 @@ ControllerFactory::ControllerFactory(const config::ConfigNode& section, int num_
   if (entry == nullptr) {
     std::string known;
     for (const std::string& kind : Kinds()) known += (known.empty() ? "" : ", ") + kind;
-    section.Required("kind").Fail("unknown controller kind '" + kind_ + "'; known kinds: " + known +
-                                  " (a plugin's kind needs the plugin under `plugins:`)");
+    section.Required("kind").Fail("unknown controller kind '" + kind_ + "'" + config::DidYouMean(kind_, Kinds()) +
+                                  "; known kinds: " + known + " (a plugin's kind needs the plugin under `plugins:`)");
   }
   std::vector<std::string> keys = {"kind", "robot", "sensors", "radio"};
   keys.insert(keys.end(), entry->keys.begin(), entry->keys.end());
@@ -40,7 +41,8 @@ ControllerFactory::ControllerFactory(const config::ConfigNode& section, int num_
     if (std::find(keys.begin(), keys.end(), key) != keys.end()) continue;
     std::string allowed;
     for (const std::string& k : keys) allowed += (allowed.empty() ? "" : ", ") + k;
-    section.Optional(key).Fail("unknown key for kind " + kind_ + "; allowed keys here: " + allowed);
+    section.Optional(key).Fail("unknown key for kind " + kind_ + config::DidYouMean(key, keys) +
+                               "; allowed keys here: " + allowed);
   }
   parts_ = AgentPartsConfig::Read(section, num_robots, entry->default_parts(num_robots), entry->graph_must_connect);
   builder_ = entry->make_builder(section, num_robots);

@@ -1,5 +1,7 @@
 #include "dream/agent_host/hrvo_config.h"
 
+#include "dream/config/name_suggestion.h"
+
 namespace dream::agents {
 
 HrvoRobotParams ReadHrvoRobotParams(const config::ConfigNode& section, HrvoRobotParams defaults) {
@@ -14,7 +16,8 @@ HrvoRobotParams ReadHrvoRobotParams(const config::ConfigNode& section, HrvoRobot
     } else if (variant == "thesis") {
       params.variant = HrvoVariant::kThesis;
     } else {
-      node.Required("variant").Fail("unknown HRVO variant '" + variant + "'; allowed: exact, thesis");
+      node.Required("variant").Fail("unknown HRVO variant '" + variant + "'" +
+                                    config::DidYouMean(variant, {"exact", "thesis"}) + "; allowed: exact, thesis");
     }
   }
   params.hrvo.safety_radius_m = node.GetDouble("safety_radius_m", params.hrvo.safety_radius_m);

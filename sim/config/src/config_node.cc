@@ -230,7 +230,8 @@ void ConfigNode::RejectUnknownKeys(const std::vector<const char*>& allowed) cons
     }
     if (!known) {
       ConfigNode bad(entry.first, file_, key_.empty() ? name : key_ + "." + name);
-      bad.Fail("unknown key; allowed keys here: " + list);
+      bad.Fail("unknown key" + DidYouMean(name, std::vector<std::string>(allowed.begin(), allowed.end())) +
+               "; allowed keys here: " + list);
     }
   }
 }

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "dream/config/name_suggestion.h"
 #include "dream/world/initial_pose_generator.h"
 #include "dream/world/printf_text.h"
 #include "dream/world/robotarium_constants.h"
@@ -79,7 +80,8 @@ sim::RealismParams RealismPreset(const ConfigNode& name) {
   if (!sim::RealismParams::FromPreset(text, &params)) {
     std::string known;
     for (const std::string& preset : sim::RealismParams::PresetNames()) known += (known.empty() ? "" : ", ") + preset;
-    name.Fail("unknown realism preset '" + text + "'; known presets: " + known);
+    name.Fail("unknown realism preset '" + text + "'" + DidYouMean(text, sim::RealismParams::PresetNames()) +
+              "; known presets: " + known);
   }
   return params;
 }

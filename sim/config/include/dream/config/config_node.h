@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "dream/config/config_error.h"
+#include "dream/config/name_suggestion.h"
 
 namespace dream::config {
 
@@ -84,11 +85,13 @@ class ConfigNode {
                   std::initializer_list<std::pair<const char*, Value>> choices) const {
     const std::string name = GetString(key, fallback);
     std::string allowed;
+    std::vector<std::string> names;
     for (const auto& [choice, value] : choices) {
       if (name == choice) return value;
       allowed += (allowed.empty() ? "" : ", ") + std::string(choice);
+      names.emplace_back(choice);
     }
-    Required(key).Fail("unknown " + what + " '" + name + "'; allowed: " + allowed);
+    Required(key).Fail("unknown " + what + " '" + name + "'" + DidYouMean(name, names) + "; allowed: " + allowed);
   }
 
   /// A ConfigError for this node: "file:line: key: message".
