@@ -1,6 +1,9 @@
 #include "command_line.h"
 
+#include <algorithm>
 #include <utility>
+
+#include "dream/config/name_suggestion.h"
 
 namespace dream::cli {
 
@@ -39,6 +42,31 @@ std::string CommandLine::ParsedCommandName() const {
     name += " " + at->get_name();
   }
   return name;
+}
+
+std::string CommandLine::SuggestionAfterFailedParse() const {
+  const CLI::App* command = &app_;
+  while (!command->get_subcommands().empty()) command = command->get_subcommands().front();
+  std::vector<std::string> options;
+  for (const CLI::Option* option : command->get_options()) {
+    for (const std::string& name : option->get_lnames()) options.push_back("--" + name);
+  }
+  std::vector<std::string> subcommands;  // a group's (dream log's) commands
+  for (const CLI::App* subcommand : command->get_subcommands({})) subcommands.push_back(subcommand->get_name());
+  for (int i = 1; i < argc_; ++i) {
+    const std::string word = argv_[i];
+    std::string suggestion;
+    if (word.rfind("--", 0) == 0 && word.size() > 2) {
+      const std::string name = word.substr(0, word.find('='));
+      if (std::find(options.begin(), options.end(), name) == options.end()) {
+        suggestion = config::DidYouMean(name, options);
+      }
+    } else if (!subcommands.empty() && word[0] != '-') {
+      suggestion = config::DidYouMean(word, subcommands);
+    }
+    if (!suggestion.empty()) return suggestion;
+  }
+  return "";
 }
 
 }  // namespace dream::cli

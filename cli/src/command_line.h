@@ -65,6 +65,11 @@ class CommandLine {
   /// "dream log info": the command words a parse got to, failed or not, for a
   /// pointer to the right --help.
   std::string ParsedCommandName() const;
+  /// After a failed parse: " (did you mean '--overwrite'?)" when one of the
+  /// words given is an unknown --option that looks like a typo of an option
+  /// of the command the parse got to (or, under a group such as dream log, a
+  /// typo of one of its commands), else "".
+  std::string SuggestionAfterFailedParse() const;
 
  private:
   struct Command {

@@ -6,10 +6,13 @@
 
 #include <csignal>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "command_line.h"
 #include "commands.h"
 #include "dream/config/config_error.h"
+#include "dream/config/name_suggestion.h"
 
 int main(int argc, char** argv) {
   using namespace dream::cli;
@@ -58,12 +61,16 @@ int main(int argc, char** argv) {
   if (first_word < argc) {
     bool known = false;
     std::string names;
+    std::vector<std::string> name_list;
     for (const CLI::App* command : app.get_subcommands({})) {
       known = known || command->get_name() == argv[first_word];
       names += (names.empty() ? "" : ", ") + command->get_name();
+      name_list.push_back(command->get_name());
     }
     if (!known) {
-      std::cerr << "dream: unknown subcommand '" << argv[first_word] << "'; known: " << names << " (dream --help)\n";
+      std::cerr << "dream: unknown subcommand '" << argv[first_word] << "'"
+                << dream::config::DidYouMean(argv[first_word], name_list) << "; known: " << names
+                << " (dream --help)\n";
       return kExitUsage;
     }
   }
@@ -73,7 +80,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help
     // One line, like every other failure, and where to read more.
-    std::cerr << "dream: " << e.what() << " (" << line.ParsedCommandName() << " --help)\n";
+    std::cerr << "dream: " << e.what() << line.SuggestionAfterFailedParse() << " (" << line.ParsedCommandName()
+              << " --help)\n";
     return kExitUsage;
   }
 

@@ -114,6 +114,12 @@ def test(ctx):
         ("unknown subcommand", ["frobnicate"], EXIT_USAGE, ["'frobnicate'", "dream --help"], False),
         ("unknown subcommand after a global option", ["-q", "sewp"], EXIT_USAGE, ["'sewp'", "known: run"], False),
         ("unknown option", ["run", config, "--speed", "3"], EXIT_USAGE, ["--speed", "dream run --help"], False),
+        # A near miss is answered with the word meant.
+        ("near-miss subcommand", ["rnu", config], EXIT_USAGE, ["'rnu' (did you mean 'run'?)", "known: run"], False),
+        ("near-miss option", ["run", config, "--ovewrite"], EXIT_USAGE,
+         ["--ovewrite (did you mean '--overwrite'?)", "dream run --help"], False),
+        ("near-miss command of a group", ["log", "ifno", truncated], EXIT_USAGE,
+         ["(did you mean 'info'?)", "dream log --help"], False),
         ("unknown global option", ["--bogus", "run", config], EXIT_USAGE, ["'--bogus'", "dream --help"], False),
         ("missing argument", ["run"], EXIT_USAGE, ["config", "required", "dream run --help"], False),
         ("log without its subcommand", ["log"], EXIT_USAGE, ["subcommand", "dream log --help"], False),
