@@ -146,8 +146,10 @@ def _one_value(value, spec, where=""):
     else:
         checked = value
     if spec.choices is not None and checked not in spec.choices:
-        raise _Problem(f"must be one of {', '.join(value_text(c) for c in spec.choices)}, got {value_text(value)}",
-                       where)
+        names = [c for c in spec.choices if isinstance(c, str)]
+        suggestion = did_you_mean(value, names) if isinstance(value, str) else ""
+        raise _Problem(f"must be one of {', '.join(value_text(c) for c in spec.choices)}, got "
+                       f"{value_text(value)}{suggestion}", where)
     return checked
 
 

@@ -19,6 +19,8 @@ import math
 
 import numpy as np
 
+from .robot import did_you_mean
+
 # Slack, m/s, for points computed on a wedge leg or box edge (rounding may put them a few ulps
 # inside the wedge they border).
 _TOLERANCE = 1e-9
@@ -91,10 +93,12 @@ class HrvoParams:
             raise ValueError(f"hrvo: expected a mapping, got {section!r}")
         for name in section:
             if name not in HRVO_CONFIG_KEYS:
-                raise ValueError(f"hrvo.{name}: unknown key; allowed keys here: {', '.join(HRVO_CONFIG_KEYS)}")
+                raise ValueError(f"hrvo.{name}: unknown key{did_you_mean(name, HRVO_CONFIG_KEYS)}; allowed keys here: "
+                                 f"{', '.join(HRVO_CONFIG_KEYS)}")
         variant = section.get("variant", "exact")
         if variant not in VARIANTS:
-            raise ValueError(f"hrvo.variant: unknown HRVO variant '{variant}'; allowed: exact, thesis")
+            suggestion = did_you_mean(variant, VARIANTS) if isinstance(variant, str) else ""
+            raise ValueError(f"hrvo.variant: unknown HRVO variant '{variant}'{suggestion}; allowed: exact, thesis")
         params = cls(max_speed_mps=max_speed_mps)
         for name in ("safety_radius_m", "boundary_horizon_s"):
             if name in section:

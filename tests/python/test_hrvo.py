@@ -126,6 +126,10 @@ class ParamsAreCheckedAsInCpp(unittest.TestCase):
             HrvoAvoidance(variant="sampled")
         for section, message in [({"speed": 1}, "hrvo.speed: unknown key; allowed keys here: variant, "
                                                 "safety_radius_m, check_boundaries, boundary_horizon_s"),
+                                 ({"safety_radius": 0.3},
+                                  "hrvo.safety_radius: unknown key (did you mean 'safety_radius_m'?); allowed"),
+                                 ({"variant": "exat"},
+                                  "hrvo.variant: unknown HRVO variant 'exat' (did you mean 'exact'?); allowed"),
                                  ({"variant": "fast"},
                                   "hrvo.variant: unknown HRVO variant 'fast'; allowed: exact, thesis"),
                                  ({"safety_radius_m": "big"}, "hrvo.safety_radius_m: expected a number"),

@@ -375,6 +375,9 @@ class SpecErrorTest(SpecFixture):
                                  "run.yaml:22: controller.count: expected a whole number, got 1.5")
         self.assert_config_error(self.spec(module, "Kinds", {"weights": ([[0]], 21), "mode": ("slowly", 23)}),
                                  "run.yaml:23: controller.mode: must be one of 'fast', 'slow', got 'slowly'")
+        self.assert_config_error(self.spec(module, "Kinds", {"weights": ([[0]], 21), "mode": ("fsat", 23)}),
+                                 "run.yaml:23: controller.mode: must be one of 'fast', 'slow', got 'fsat' (did you "
+                                 "mean 'fast'?)")
         self.assert_config_error(self.spec(module, "Kinds", {"weights": ([[0, 1], [1]], 21)}),
                                  "run.yaml:21: controller.weights[1]: row 1 has 1 entries, row 0 has 2")
         self.assert_config_error(self.spec(module, "Kinds", {"weights": ([[0]], 21), "offsets": ([0.5, 1.0], 24)}),
