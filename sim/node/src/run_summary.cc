@@ -4,6 +4,7 @@
 
 #include "dream/lcm/run_id.h"
 #include "dream/node/run_judge.h"
+#include "dream/node/true_pose_recording.h"
 #include "dream/world/realistic_world.h"
 #include "dream/world/run_report.h"
 
@@ -80,8 +81,18 @@ nlohmann::ordered_json RunSummary(const config::RunConfig& config, const RunOutc
     poses.push_back({pose.x_m, pose.y_m, pose.theta_rad});
   }
   json["final_poses"] = poses;
-  // world.realism: what the tracker model did to the agents' view.
+  // world.realism: its models, and what the tracker model did to the agents' view.
   if (realistic != nullptr) {
+    nlohmann::ordered_json realism;
+    for (const RealismParams::Field& field : RealismParams::Fields()) {
+      if (field.number != nullptr) {
+        realism[field.key] = config.realism.*field.number;
+      } else {
+        realism[field.key] = config.realism.*field.steps;
+      }
+    }
+    realism["poses_channel_seen_by_agents"] = TruePoseRecording::kMeasuredPosesChannel;
+    json["realism"] = realism;
     nlohmann::json lost = nlohmann::json::array();
     for (const RealisticWorld::TrackerLoss& loss : realistic->tracker_losses()) {
       lost.push_back({{"robot", loss.robot_id}, {"step", loss.step}});

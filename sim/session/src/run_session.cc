@@ -28,20 +28,6 @@ namespace {
 
 constexpr const char* kLogName = "run.lcmlog";
 
-// The models a run with world.realism had (summary.json "realism").
-nlohmann::ordered_json RealismJson(const sim::RealismParams& realism) {
-  nlohmann::ordered_json json;
-  for (const sim::RealismParams::Field& field : sim::RealismParams::Fields()) {
-    if (field.number != nullptr) {
-      json[field.key] = realism.*field.number;
-    } else {
-      json[field.key] = realism.*field.steps;
-    }
-  }
-  json["poses_channel_seen_by_agents"] = sim::TruePoseRecording::kMeasuredPosesChannel;
-  return json;
-}
-
 }  // namespace
 
 // What the loop left for the report: the world (asked for its counts and
@@ -75,13 +61,6 @@ RunResult RunSession::Run(lcm::LcmInterface& lcm, const Folder& folder) {
     }
     return std::make_unique<sim::RealisticWorld>(config_.world, config_.realism, config_.seed, config_.initial_poses,
                                                  config_.obstacles);
-  };
-  own.summary_fields = [this](const sim::World& world) {
-    nlohmann::ordered_json fields = nlohmann::ordered_json::object();
-    const auto* realistic = dynamic_cast<const sim::RealisticWorld*>(&world);
-    if (realistic == nullptr) return fields;
-    fields["realism"] = RealismJson(config_.realism);
-    return fields;
   };
   return Run(lcm, folder, own);
 }
