@@ -10,6 +10,7 @@
 #include "dream/world/printf_text.h"
 #include "dream/world/unicycle_kinematics.h"
 #include "realism_random.h"
+#include "steps_within.h"
 #include "world_argument_check.h"
 
 namespace dream::sim {
@@ -38,17 +39,10 @@ WorldParams TruthParams(const WorldParams& params, const RealismParams& realism)
   return truth;
 }
 
-// Largest n with n * dt <= seconds: the steps a rule "after more than
-// `seconds`" lets pass (UnicycleWorld's rule for its timeout); INT64_MAX for
-// 0 (never).
+// StepsWithin, with 0 meaning never (the realism models' "off").
 int64_t HoldSteps(double time_step_s, double seconds) {
-  if (seconds == 0.0) return std::numeric_limits<int64_t>::max();
-  auto n = static_cast<int64_t>(std::floor(seconds / time_step_s));
-  while (static_cast<double>(n + 1) * time_step_s <= seconds) ++n;
-  while (n > 0 && static_cast<double>(n) * time_step_s > seconds) --n;
-  return n;
+  return seconds == 0.0 ? std::numeric_limits<int64_t>::max() : StepsWithin(time_step_s, seconds);
 }
-
 
 double Quantize(double value, double quantum) {
   return quantum > 0.0 ? std::round(value / quantum) * quantum : value;

@@ -11,22 +11,10 @@
 #include "dream/world/unicycle_kinematics.h"
 #include "field_check.h"
 #include "pairwise_rules.h"
+#include "steps_within.h"
 #include "world_argument_check.h"
 
 namespace dream::sim {
-namespace {
-
-// Largest n with n * dt <= timeout, computed with the same product the rule
-// is stated in, so the boundary step is exactly the documented one.
-int64_t CommandHoldSteps(double time_step_s, double command_timeout_s) {
-  if (std::isinf(command_timeout_s)) return std::numeric_limits<int64_t>::max();
-  auto n = static_cast<int64_t>(std::floor(command_timeout_s / time_step_s));
-  while (static_cast<double>(n + 1) * time_step_s <= command_timeout_s) ++n;
-  while (n > 0 && static_cast<double>(n) * time_step_s > command_timeout_s) --n;
-  return n;
-}
-
-}  // namespace
 
 UnicycleWorld::UnicycleWorld(const WorldParams& params, std::vector<Pose2> initial_poses,
                              const std::vector<RectangleObstacleSpec>& obstacle_specs)
@@ -35,7 +23,7 @@ UnicycleWorld::UnicycleWorld(const WorldParams& params, std::vector<Pose2> initi
       velocities_(poses_.size()),
       obstacles_(RectangleObstacle::BuildAll(obstacle_specs, "UnicycleWorld", "obstacle_specs")),
       command_step_(poses_.size(), kNoCommand),
-      command_hold_steps_(CommandHoldSteps(params.time_step_s, params.command_timeout_s)),
+      command_hold_steps_(StepsWithin(params.time_step_s, params.command_timeout_s)),
       step_utime_(std::llround(params.time_step_s * 1e6)),
       pairwise_rules_(std::make_unique<PairwiseRules>(params, poses_.size())) {
   if (poses_.size() > static_cast<std::size_t>(std::numeric_limits<int32_t>::max() / 4)) {
