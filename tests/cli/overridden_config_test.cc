@@ -10,6 +10,7 @@
 
 #include "dream/config/config_error.h"
 #include "dream/config/config_node.h"
+#include "../support/scratch_folder.h"
 
 namespace dream::cli {
 namespace {
@@ -26,15 +27,7 @@ controller:
 
 class OverriddenConfigTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("dream_overridden_config_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(dir_);
-    path_ = (dir_ / "demo.yaml").string();
-    std::ofstream(path_) << kConfig;
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
+  void SetUp() override { std::ofstream(path_) << kConfig; }
 
   std::string ErrorOf(long long seed, const std::vector<std::string>& sets) const {
     try {
@@ -45,8 +38,9 @@ class OverriddenConfigTest : public ::testing::Test {
     return "(no error)";
   }
 
-  std::filesystem::path dir_;
-  std::string path_;
+  dream::testing::ScratchFolder folder_{"dream_overridden_config"};
+  const std::filesystem::path dir_ = folder_.path();
+  const std::string path_ = (dir_ / "demo.yaml").string();
 };
 
 TEST_F(OverriddenConfigTest, WithoutOverridesTheFileIsReadAndCopiedAsItIs) {

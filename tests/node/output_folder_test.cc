@@ -8,6 +8,7 @@
 #include <fstream>
 #include <functional>
 #include <sstream>
+#include "../support/scratch_folder.h"
 
 namespace dream::sim {
 namespace {
@@ -17,15 +18,10 @@ using ::testing::HasSubstr;
 
 class OutputFolderTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    base_ = fs::temp_directory_path() / ("dream_output_folder_" + std::to_string(::getpid()));
-    fs::remove_all(base_);
-    fs::create_directories(base_);
-  }
-  void TearDown() override { fs::remove_all(base_); }
+  dream::testing::ScratchFolder folder_{"dream_output_folder"};
+  const fs::path base_ = folder_.path();
 
   std::string Path(const std::string& name) const { return (base_ / name).string(); }
-  fs::path base_;
 };
 
 std::string MessageOf(const std::function<void()>& action) {

@@ -12,6 +12,7 @@
 #include "dream/node/sim_node.h"
 #include "run_with_file_size_limit.h"
 #include "scripted_agent.h"
+#include "../support/scratch_folder.h"
 
 namespace dream::sim {
 namespace {
@@ -20,12 +21,8 @@ namespace fs = std::filesystem;
 
 class RunRecorderTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("dream_recorder_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
+  dream::testing::ScratchFolder folder_{"dream_recorder"};
+  const fs::path dir_ = folder_.path();
 };
 
 TEST_F(RunRecorderTest, LogAppearsOnlyWhenClosedAndHoldsEveryEvent) {

@@ -20,6 +20,7 @@
 #include "dream/lcm/lcm_bus.h"
 #include "dream/node/file_text.h"
 #include "dream/session/run_session.h"
+#include "../support/scratch_folder.h"
 
 namespace dream::session {
 namespace {
@@ -30,13 +31,7 @@ using ::testing::HasSubstr;
 // A fresh folder per test, holding the config and the run folder "out".
 class RunSessionTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("dream_run_session_test_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_ / "out");
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  void SetUp() override { fs::create_directories(dir_ / "out"); }
 
   // Two robots of the counting plugin's kind; `x_m` is robot 0's start.
   std::string WriteConfig(double speed_mps, double x_m, int steps, double start_timeout_s = 10.0) {
@@ -73,7 +68,8 @@ class RunSessionTest : public ::testing::Test {
   std::string out() const { return (dir_ / "out").string(); }
   nlohmann::json Summary() const { return nlohmann::json::parse(sim::ReadFileText(out() + "/summary.json")); }
 
-  fs::path dir_;
+  dream::testing::ScratchFolder folder_{"dream_run_session_test"};
+  const fs::path dir_ = folder_.path();
   std::ostringstream report_;
 };
 
