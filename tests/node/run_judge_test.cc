@@ -98,7 +98,8 @@ TEST(RunJudgeTest, TheVerifierCountsRobotsOutsideWhenGiven) {
 TEST(RunJudgeTest, SummaryHasTheVerdictAndItsReasons) {
   StillRun run(30);
   run.outcome.command_conflicts = 2;
-  const nlohmann::json summary = nlohmann::json::parse(RunSummaryJson(run.config, run.outcome, run.world, "run.lcmlog"));
+  const nlohmann::json summary = RunSummary(run.config, run.outcome, run.world, "run.lcmlog",
+                                            JudgeRun(run.config, run.outcome, run.world));
   EXPECT_EQ(summary["verdict"], "not_ready");
   EXPECT_EQ(summary["robotarium_verdict"], "clean");
   ASSERT_EQ(summary["verdict_reasons"].size(), 1u);

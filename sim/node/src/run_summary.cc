@@ -3,17 +3,11 @@
 #include <nlohmann/json.hpp>
 
 #include "dream/lcm/run_id.h"
-#include "dream/node/run_judge.h"
 #include "dream/node/true_pose_recording.h"
 #include "dream/world/realistic_world.h"
 #include "dream/world/run_report.h"
 
 namespace dream::sim {
-
-std::string RunSummaryJson(const config::RunConfig& config, const RunOutcome& outcome,
-                           const World& world, const std::string& log_file_name) {
-  return RunSummaryJson(config, outcome, world, log_file_name, JudgeRun(config, outcome, world));
-}
 
 void SetSummaryVerdict(nlohmann::ordered_json* summary, const RunJudgement& judgement) {
   nlohmann::ordered_json& json = *summary;

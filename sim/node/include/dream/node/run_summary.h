@@ -25,8 +25,5 @@ void SetSummaryVerdict(nlohmann::ordered_json* summary, const RunJudgement& judg
 /// RunSummary as pretty-printed JSON text.
 std::string RunSummaryJson(const config::RunConfig& config, const RunOutcome& outcome, const World& world,
                            const std::string& log_file_name, const RunJudgement& judgement);
-/// The same, judged by JudgeRun(config, outcome, world).
-std::string RunSummaryJson(const config::RunConfig& config, const RunOutcome& outcome,
-                           const World& world, const std::string& log_file_name);
 
 }  // namespace dream::sim
