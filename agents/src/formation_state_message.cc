@@ -6,23 +6,15 @@
 namespace dream::agents {
 
 std::vector<uint8_t> FormationStateMessage::Encode() const {
-  return ByteWriter()
-      .Int32(id)
-      .Double(position_m.x())
-      .Double(position_m.y())
-      .Double(velocity_mps.x())
-      .Double(velocity_mps.y())
-      .Take();
+  return ByteWriter().Int32(id).Vector2(position_m).Vector2(velocity_mps).Take();
 }
 
 std::optional<FormationStateMessage> FormationStateMessage::Decode(const std::vector<uint8_t>& payload, int sender_id) {
   ByteReader reader(payload);
   FormationStateMessage message;
   message.id = reader.Int32();
-  message.position_m.x() = reader.Double();
-  message.position_m.y() = reader.Double();
-  message.velocity_mps.x() = reader.Double();
-  message.velocity_mps.y() = reader.Double();
+  message.position_m = reader.Vector2();
+  message.velocity_mps = reader.Vector2();
   if (!reader.done() || message.id != sender_id) return std::nullopt;
   return message;
 }

@@ -6,15 +6,14 @@
 namespace dream::agents {
 
 std::vector<uint8_t> PositionMessage::Encode() const {
-  return ByteWriter().Int32(id).Double(position_m.x()).Double(position_m.y()).Take();
+  return ByteWriter().Int32(id).Vector2(position_m).Take();
 }
 
 std::optional<PositionMessage> PositionMessage::Decode(const std::vector<uint8_t>& payload, int sender_id) {
   ByteReader reader(payload);
   PositionMessage message;
   message.id = reader.Int32();
-  message.position_m.x() = reader.Double();
-  message.position_m.y() = reader.Double();
+  message.position_m = reader.Vector2();
   if (!reader.done() || message.id != sender_id) return std::nullopt;
   return message;
 }

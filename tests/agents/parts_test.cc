@@ -296,5 +296,17 @@ TEST(ByteReaderTest, MalformedPayloadsNeverReadPastTheEnd) {
   EXPECT_FALSE(nan_reader.ok());
 }
 
+TEST(ByteReaderTest, Vector2IsXThenYAndFailsOnAHalfVector) {
+  const std::vector<uint8_t> bytes = ByteWriter().Vector2({1.5, -2.0}).Take();
+  EXPECT_EQ(bytes, ByteWriter().Double(1.5).Double(-2.0).Take());
+  ByteReader good(bytes);
+  EXPECT_EQ(good.Vector2(), Eigen::Vector2d(1.5, -2.0));
+  EXPECT_TRUE(good.done());
+  const std::vector<uint8_t> half = ByteWriter().Double(1.5).Take();
+  ByteReader short_reader(half);
+  short_reader.Vector2();
+  EXPECT_FALSE(short_reader.ok());
+}
+
 }  // namespace
 }  // namespace dream::agents

@@ -6,6 +6,8 @@
 #include <optional>
 #include <vector>
 
+#include <Eigen/Core>
+
 namespace dream::agents {
 
 /// Reads a radio payload written by ByteWriter. Never throws and never reads
@@ -21,6 +23,11 @@ class ByteReader {
     const double value = Read<double>();
     if (!std::isfinite(value)) ok_ = false;
     return value;
+  }
+  /// x then y, as ByteWriter::Vector2 writes them.
+  Eigen::Vector2d Vector2() {
+    const double x = Double();
+    return {x, Double()};
   }
 
   /// True when every read so far was complete and valid.

@@ -4,6 +4,8 @@
 #include <cstring>
 #include <vector>
 
+#include <Eigen/Core>
+
 namespace dream::agents {
 
 /// Builds a radio payload: little-endian fixed-size values appended in order.
@@ -12,6 +14,8 @@ class ByteWriter {
  public:
   ByteWriter& Int32(int32_t value) { return Raw(&value, sizeof(value)); }
   ByteWriter& Double(double value) { return Raw(&value, sizeof(value)); }
+  /// x then y.
+  ByteWriter& Vector2(const Eigen::Vector2d& value) { return Double(value.x()).Double(value.y()); }
   std::vector<uint8_t> Take() { return std::move(bytes_); }
 
  private:

@@ -3,7 +3,9 @@
 namespace dream::agents {
 
 /// The physical limits of a Robotarium GRITSBot X, which every controller
-/// must respect. Defaults are the Robotarium V2 constants.
+/// must respect. Defaults are the Robotarium V2 constants (agents/ does not
+/// use the world library; robot_limits_test keeps them equal to
+/// sim::RobotariumConstants).
 struct RobotLimits {
   double max_linear_speed_mps = 0.2;
   double wheel_radius_m = 0.016;
