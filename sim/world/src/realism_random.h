@@ -6,6 +6,10 @@
 
 namespace dream::sim {
 
+// Which realism model a RealismRandom serves; the numbers seed the streams,
+// so they never change (a run's noise would).
+enum class RealismStream : uint64_t { kNoise = 1, kDropout = 2, kDropoutBurst = 3 };
+
 // One seeded stream of the realism models' random numbers. mt19937_64's
 // output is fixed by the C++ standard and the transforms below are written
 // out (the standard distributions are not), so a seed gives the same numbers
@@ -14,7 +18,7 @@ class RealismRandom {
  public:
   // `stream` separates the models: each draws from its own sequence, so
   // turning one model on does not change another's draws.
-  RealismRandom(uint64_t seed, uint64_t stream) : engine_(Mix(seed, stream)) {}
+  RealismRandom(uint64_t seed, RealismStream stream) : engine_(Mix(seed, static_cast<uint64_t>(stream))) {}
 
   // Uniform in [0, 1), 53 random bits.
   double Uniform() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }

@@ -18,10 +18,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Random streams, one per model (RealismRandom's `stream`).
-constexpr uint64_t kNoiseStream = 1;
-constexpr uint64_t kDropoutStream = 2;
-constexpr uint64_t kDropoutBurstStream = 3;
 
 const RealismParams& ValidatedRealism(const RealismParams& realism) {
   std::string error;
@@ -66,12 +62,12 @@ RealisticWorld::RealisticWorld(const WorldParams& params, const RealismParams& r
       velocity_history_(static_cast<size_t>(realism.pose_delay_steps) + 1, truth_.velocities()),
       measured_poses_(truth_.poses()),
       measured_velocities_(truth_.velocities()),
-      noise_random_(std::make_unique<RealismRandom>(seed, kNoiseStream)),
-      dropout_random_(std::make_unique<RealismRandom>(seed, kDropoutStream)),
+      noise_random_(std::make_unique<RealismRandom>(seed, RealismStream::kNoise)),
+      dropout_random_(std::make_unique<RealismRandom>(seed, RealismStream::kDropout)),
       tracker_hold_steps_(HoldSteps(params.time_step_s, realism.tracker_drop_s)),
       tracking_(static_cast<size_t>(truth_.num_robots())) {
   if (realism_.tracking_dropout_mean_steps > 1.0) {
-    burst_random_ = std::make_unique<RealismRandom>(seed, kDropoutBurstStream);
+    burst_random_ = std::make_unique<RealismRandom>(seed, RealismStream::kDropoutBurst);
     burst_continue_probability_ = 1.0 - 1.0 / realism_.tracking_dropout_mean_steps;
   }
   Measure(true);
