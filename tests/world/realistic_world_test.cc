@@ -446,5 +446,34 @@ TEST(RealisticWorldTest, InvalidParamsAndCommandsThrow) {
   EXPECT_THROW(world.StopRobot(-1), std::out_of_range);
 }
 
+// IsValid goes through Fields(): every field has a rule, a NaN (or a step
+// count past kMaxDelaySteps) fails naming it, and the lab's value passes.
+TEST(RealisticWorldTest, EveryRealismFieldIsCheckedByItsRule) {
+  for (const RealismParams::Field& field : RealismParams::Fields()) {
+    SCOPED_TRACE(field.key);
+    RealismParams bad = RealismParams::Lab();
+    if (field.steps != nullptr) {
+      bad.*field.steps = RealismParams::kMaxDelaySteps + 1;
+    } else {
+      ASSERT_NE(field.allows, nullptr);
+      ASSERT_NE(field.allowed, nullptr);
+      EXPECT_TRUE(field.allows(RealismParams::Lab().*field.number));
+      bad.*field.number = NAN;
+    }
+    std::string error;
+    EXPECT_FALSE(bad.IsValid(&error));
+    EXPECT_EQ(error.rfind(std::string(field.key) + " = ", 0), 0u) << error;
+  }
+  RealismParams negative_delay;
+  negative_delay.command_latency_steps = -1;
+  std::string error;
+  EXPECT_FALSE(negative_delay.IsValid(&error));
+  EXPECT_EQ(error, "command_latency_steps = -1 is out of range; allowed: 0..300 steps");
+  RealismParams flat_axle;
+  flat_axle.axle_length_m = 0.0;
+  EXPECT_FALSE(flat_axle.IsValid(&error));
+  EXPECT_EQ(error, "axle_length_m = 0 is out of range; allowed: > 0 m, finite");
+}
+
 }  // namespace
 }  // namespace dream::sim

@@ -12,23 +12,34 @@ using field_check::IsPositiveFinite;
 
 RealismParams RealismParams::Ideal() { return RealismParams{}; }
 
+namespace {
+
+bool IsProbability(double value) { return value >= 0.0 && value <= 1.0; }
+bool IsAtLeastOneFinite(double value) { return std::isfinite(value) && value >= 1.0; }
+
+}  // namespace
+
 const std::vector<RealismParams::Field>& RealismParams::Fields() {
   using P = RealismParams;
   static const std::vector<Field> fields = {
-      {"pose_noise_m", &P::pose_noise_m, nullptr},
-      {"pose_noise_rad", &P::pose_noise_rad, nullptr},
-      {"pose_quantum_m", &P::pose_quantum_m, nullptr},
-      {"pose_quantum_rad", &P::pose_quantum_rad, nullptr},
-      {"pose_delay_steps", nullptr, &P::pose_delay_steps},
-      {"tracking_dropout_probability", &P::tracking_dropout_probability, nullptr},
-      {"tracking_dropout_mean_steps", &P::tracking_dropout_mean_steps, nullptr},
-      {"tracker_drop_s", &P::tracker_drop_s, nullptr},
-      {"command_latency_steps", nullptr, &P::command_latency_steps},
-      {"command_brake_s", &P::command_brake_s, nullptr},
-      {"dead_zone_v_mps", &P::dead_zone_v_mps, nullptr},
-      {"dead_zone_w_radps", &P::dead_zone_w_radps, nullptr},
-      {"wheel_accel_limit_radps2", &P::wheel_accel_limit_radps2, nullptr},
-      {"axle_length_m", &P::axle_length_m, nullptr},
+      {"pose_noise_m", &P::pose_noise_m, nullptr, IsNonNegativeFinite, ">= 0 m, finite"},
+      {"pose_noise_rad", &P::pose_noise_rad, nullptr, IsNonNegativeFinite, ">= 0 rad, finite"},
+      {"pose_quantum_m", &P::pose_quantum_m, nullptr, IsNonNegativeFinite, ">= 0 m, finite (0: not rounded)"},
+      {"pose_quantum_rad", &P::pose_quantum_rad, nullptr, IsNonNegativeFinite, ">= 0 rad, finite (0: not rounded)"},
+      {"pose_delay_steps", nullptr, &P::pose_delay_steps, nullptr, nullptr},
+      {"tracking_dropout_probability", &P::tracking_dropout_probability, nullptr, IsProbability, "[0, 1]"},
+      {"tracking_dropout_mean_steps", &P::tracking_dropout_mean_steps, nullptr, IsAtLeastOneFinite,
+       ">= 1 step, finite (1: each step on its own)"},
+      {"tracker_drop_s", &P::tracker_drop_s, nullptr, IsNonNegativeFinite,
+       ">= 0 s, finite (0: the tracker never drops a robot)"},
+      {"command_latency_steps", nullptr, &P::command_latency_steps, nullptr, nullptr},
+      {"command_brake_s", &P::command_brake_s, nullptr, IsNonNegativeFinite, ">= 0 s, finite (0: never brake)"},
+      {"dead_zone_v_mps", &P::dead_zone_v_mps, nullptr, IsNonNegativeFinite, ">= 0 m/s, finite (0: no dead zone)"},
+      {"dead_zone_w_radps", &P::dead_zone_w_radps, nullptr, IsNonNegativeFinite,
+       ">= 0 rad/s, finite (0: no dead zone)"},
+      {"wheel_accel_limit_radps2", &P::wheel_accel_limit_radps2, nullptr, IsNonNegativeFinite,
+       ">= 0 rad/s^2, finite (0: no limit)"},
+      {"axle_length_m", &P::axle_length_m, nullptr, IsPositiveFinite, "> 0 m, finite"},
   };
   return fields;
 }
@@ -72,44 +83,16 @@ bool RealismParams::FromPreset(const std::string& name, RealismParams* params) {
 bool RealismParams::IsIdeal() const { return *this == Ideal(); }
 
 bool RealismParams::IsValid(std::string* error) const {
-  if (!IsNonNegativeFinite(pose_noise_m)) return Fail(error, "pose_noise_m", pose_noise_m, ">= 0 m, finite");
-  if (!IsNonNegativeFinite(pose_noise_rad)) return Fail(error, "pose_noise_rad", pose_noise_rad, ">= 0 rad, finite");
-  if (!IsNonNegativeFinite(pose_quantum_m)) {
-    return Fail(error, "pose_quantum_m", pose_quantum_m, ">= 0 m, finite (0: not rounded)");
+  for (const Field& field : Fields()) {
+    if (field.steps != nullptr) {
+      const int value = this->*field.steps;
+      if (value < 0 || value > kMaxDelaySteps) {
+        return Fail(error, field.key, value, "0.." + std::to_string(kMaxDelaySteps) + " steps");
+      }
+    } else if (!field.allows(this->*field.number)) {
+      return Fail(error, field.key, this->*field.number, field.allowed);
+    }
   }
-  if (!IsNonNegativeFinite(pose_quantum_rad)) {
-    return Fail(error, "pose_quantum_rad", pose_quantum_rad, ">= 0 rad, finite (0: not rounded)");
-  }
-  const std::string steps = "0.." + std::to_string(kMaxDelaySteps) + " steps";
-  if (pose_delay_steps < 0 || pose_delay_steps > kMaxDelaySteps) {
-    return Fail(error, "pose_delay_steps", pose_delay_steps, steps);
-  }
-  if (!(tracking_dropout_probability >= 0.0 && tracking_dropout_probability <= 1.0)) {
-    return Fail(error, "tracking_dropout_probability", tracking_dropout_probability, "[0, 1]");
-  }
-  if (!(std::isfinite(tracking_dropout_mean_steps) && tracking_dropout_mean_steps >= 1.0)) {
-    return Fail(error, "tracking_dropout_mean_steps", tracking_dropout_mean_steps,
-                ">= 1 step, finite (1: each step on its own)");
-  }
-  if (!IsNonNegativeFinite(tracker_drop_s)) {
-    return Fail(error, "tracker_drop_s", tracker_drop_s, ">= 0 s, finite (0: the tracker never drops a robot)");
-  }
-  if (command_latency_steps < 0 || command_latency_steps > kMaxDelaySteps) {
-    return Fail(error, "command_latency_steps", command_latency_steps, steps);
-  }
-  if (!IsNonNegativeFinite(command_brake_s)) {
-    return Fail(error, "command_brake_s", command_brake_s, ">= 0 s, finite (0: never brake)");
-  }
-  if (!IsNonNegativeFinite(dead_zone_v_mps)) {
-    return Fail(error, "dead_zone_v_mps", dead_zone_v_mps, ">= 0 m/s, finite (0: no dead zone)");
-  }
-  if (!IsNonNegativeFinite(dead_zone_w_radps)) {
-    return Fail(error, "dead_zone_w_radps", dead_zone_w_radps, ">= 0 rad/s, finite (0: no dead zone)");
-  }
-  if (!IsNonNegativeFinite(wheel_accel_limit_radps2)) {
-    return Fail(error, "wheel_accel_limit_radps2", wheel_accel_limit_radps2, ">= 0 rad/s^2, finite (0: no limit)");
-  }
-  if (!IsPositiveFinite(axle_length_m)) return Fail(error, "axle_length_m", axle_length_m, "> 0 m, finite");
   return true;
 }
 

@@ -50,14 +50,18 @@ struct RealismParams {
   double axle_length_m = RobotariumConstants::kBaseLengthMeters;
 
   // One field by its config key (world.realism.<key>, summary.json's realism.<key>):
-  // a number, or a step count in 0..kMaxDelaySteps. Exactly one member is set.
+  // a number, or a step count in 0..kMaxDelaySteps. Exactly one of number and
+  // steps is set; a number's rule is `allows`, in words `allowed`.
   struct Field {
     const char* key;
     double RealismParams::*number;
     int RealismParams::*steps;
+    bool (*allows)(double value);
+    const char* allowed;
   };
-  // Every field above, in the order above: the one list the config reader,
-  // summary.json and operator== go through, so a new model is added here once.
+  // Every field above, in the order above, with its rule: the one list the
+  // config reader, IsValid, summary.json and operator== go through, so a new
+  // model is added here once.
   static const std::vector<Field>& Fields();
 
   static RealismParams Ideal();
