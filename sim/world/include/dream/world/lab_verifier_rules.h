@@ -43,7 +43,7 @@ struct LabVerifierRules {
   int64_t robots_too_close_limit = 100;           ///< config.json robots_too_close_limit
   int64_t robots_outside_boundaries_limit = 100;  ///< config.json robots_outside_boundaries_limit
   double duration_factor = 1.5;                   ///< Robotarium.m: iteration*0.033 > 1.5*duration
-  double max_duration_s = 900.0;                  ///< the lab's 15-minute cap
+  double max_duration_s = RobotariumConstants::kMaxExperimentSeconds;  ///< the lab's 15-minute cap
   double time_step_s = RobotariumConstants::kTimeStepSeconds;
 
   /// The settle steps `dream export` adds by default (ExportOptions), so that

@@ -37,6 +37,8 @@ struct RobotariumConstants {
 
   static constexpr int kMaxRobotsInSimulation = 50;
   static constexpr int kMaxRobotsOnHardware = 20;
+  // The lab's cap on one experiment (15 minutes).
+  static constexpr double kMaxExperimentSeconds = 900.0;
 };
 
 }  // namespace dream::sim
