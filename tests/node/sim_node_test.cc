@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -349,6 +351,26 @@ TEST_F(SimNodeTest, RealTimeModeUsesTheLatestCommands) {
   EXPECT_EQ(outcome.end, RunOutcome::End::kFinished);
   EXPECT_EQ(outcome.steps, 6);
   EXPECT_NEAR(world_.poses()[2].x_m, 1.0 + 6 * 0.033 * 0.1, 1e-12);
+}
+
+// Real time paces by the world's own time step, not the Robotarium's 0.033 s:
+// 5 steps of 0.1 s take at least 0.4 s of wall time after step 0 is answered.
+TEST_F(SimNodeTest, RealTimeStepsAtTheWorldsTimeStep) {
+  WorldParams slow;
+  slow.time_step_s = 0.1;
+  UnicycleWorld world(slow, ThreeRobots());
+  for (int id = 0; id < 3; ++id) AddAgent(id, Forward());
+  SimNodeOptions options = FastOptions(5);
+  options.mode = WorldMode::kRealTime;
+  options.agent_timeout_s = 1.0;
+  SimNode node(bus_, world, nullptr, options);
+  std::atomic<bool> stop{false};
+  const auto start = std::chrono::steady_clock::now();
+  const RunOutcome outcome = node.Run(stop);
+  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(outcome.end, RunOutcome::End::kFinished);
+  EXPECT_EQ(outcome.steps, 5);
+  EXPECT_GE(wall_s, 0.4);
 }
 
 // As on the lab (and UnicycleWorld's command timeout): in real time a robot

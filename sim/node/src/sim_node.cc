@@ -23,8 +23,6 @@
 namespace dream::sim {
 namespace {
 
-constexpr int64_t kMicrosPerStep = 33000;  // 0.033 s, the Robotarium's time step (real-time pacing)
-
 double SecondsBetween(std::chrono::steady_clock::time_point from, std::chrono::steady_clock::time_point to) {
   return std::chrono::duration<double>(to - from).count();
 }
@@ -441,7 +439,9 @@ RunOutcome SimNode::Run(const std::atomic<bool>& stop) {
   PublishStep(true);
   step_published_ = last_resend_ = Clock::now();
   const bool lockstep = options_.mode == WorldMode::kLockstep;
-  const auto step_period = std::chrono::microseconds(kMicrosPerStep);
+  // Real time: one world step per time step of wall time.
+  const auto step_period =
+      std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(world_.time_step_s()));
   Clock::time_point next_realtime_step;
 
   while (true) {
