@@ -10,6 +10,8 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "../support/factory_error.h"
 #include "dream/agent_host/controller_registry.h"
@@ -33,10 +35,12 @@ std::map<std::string, std::string> ShippedConfigsByKind() {
   return configs;
 }
 
-/// The error of `path` with controller.<key> set to a string no key takes.
-std::string ErrorWithBadValue(const std::string& path, const std::string& key) {
+/// The error of `path` with controller.<key> set to `value` (by default a
+/// string no key takes).
+std::string ErrorWithBadValue(const std::string& path, const std::string& key,
+                              const std::string& value = "no_such_value") {
   YAML::Node root = YAML::LoadFile(path);
-  root["controller"][key] = "no_such_value";
+  root["controller"][key] = value;
   std::ostringstream text;
   text << root;
   return testing::FactoryErrorOf(config::LoadRunConfig(config::ConfigNode::LoadString(text.str(), path)));
@@ -58,6 +62,36 @@ TEST(KindKeysTest, EveryDeclaredKeyOfEveryBuiltInKindIsRead) {
     }
   }
   EXPECT_GE(keys_checked, 30);  // the five built-in experiments' keys, not an empty registry
+}
+
+// A whole number past int's range is refused naming the key, never narrowed:
+// 4294967336 would otherwise wrap to 40 sides, steps or rounds and pass.
+TEST(KindKeysTest, WholeNumbersPastIntAreRefusedNotWrapped) {
+  const std::map<std::string, std::string> configs = ShippedConfigsByKind();
+  const std::vector<std::pair<std::string, std::string>> int_keys = {
+      {"voronoi_coverage", "disc_sides"},
+      {"voronoi_coverage", "done_after_still_steps"},
+      {"voronoi_coverage", "radio_rounds_before_moving"},
+      {"voronoi_coverage", "coverage_sample_steps"},
+      {"voronoi_coverage", "still_window_steps"},
+      {"line_deployment", "settle_updates"},
+      {"hrvo_circle", "formations"},
+  };
+  for (const auto& [kind, key] : int_keys) {
+    SCOPED_TRACE(kind + "." + key);
+    ASSERT_NE(configs.find(kind), configs.end());
+    const std::string error = ErrorWithBadValue(configs.at(kind), key, "4294967336");
+    EXPECT_THAT(error, HasSubstr("controller." + key));
+    EXPECT_THAT(error, HasSubstr("4294967336"));
+  }
+  // Nested ones: an obstacle id of the affine formation's gate metrics.
+  ASSERT_NE(configs.find("affine_formation"), configs.end());
+  YAML::Node root = YAML::LoadFile(configs.at("affine_formation"));
+  root["controller"]["metrics"]["obstacle_pairs"] = YAML::Load("[[0, 4294967297]]");
+  std::ostringstream text;
+  text << root;
+  EXPECT_THAT(testing::FactoryErrorOf(config::LoadRunConfig(config::ConfigNode::LoadString(text.str(), "a.yaml"))),
+              HasSubstr("controller.metrics.obstacle_pairs[0][1]: must be <= 2147483647, got 4294967297"));
 }
 
 }  // namespace

@@ -155,6 +155,17 @@ TEST(ConfigNodeTest, EveryScalarReaderNamesFileLineKeyAndWhatItGot) {
             "test.yaml:3: xs[1]: expected a number, got a list");
 }
 
+TEST(ConfigNodeTest, Int32ReadersRefuseWhatIntCannotHold) {
+  const std::string text = "big: 4294967336\nlow: -2147483649\nmax: 2147483647\n";
+  EXPECT_EQ(ReadError(text, [](const ConfigNode& root) { root.GetInt32("big", 0); }),
+            "test.yaml:1: big: must be <= 2147483647, got 4294967336");
+  EXPECT_EQ(ReadError(text, [](const ConfigNode& root) { root.Required("low").AsInt32(); }),
+            "test.yaml:2: low: must be >= -2147483648, got -2147483649");
+  const ConfigNode root = ConfigNode::LoadString(text, "test.yaml");
+  EXPECT_EQ(root.GetInt32("max", 0), 2147483647);
+  EXPECT_EQ(root.GetInt32("absent", -7), -7);
+}
+
 TEST(ConfigNodeTest, RunConfigTypeErrorsNeverShowYamlCppText) {
   const std::string base =
       "name: demo\ndescription: free text\nrobots: 2\nsteps: 100\nstop_when_done: true\nworld: {agent_timeout_s: 2.0}\n"

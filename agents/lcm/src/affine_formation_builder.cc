@@ -157,7 +157,7 @@ AffineFormationBuilder::AffineFormationBuilder(const ConfigNode& section, int nu
     follower_.hrvo_engage_distance_m = follower.GetDouble("hrvo_engage_distance_m", follower_.hrvo_engage_distance_m);
     follower_.hrvo_horizon_s = follower.GetDouble("hrvo_horizon_s", follower_.hrvo_horizon_s);
     follower_.max_message_age_steps =
-        static_cast<int>(follower.GetInt("max_message_age_steps", follower_.max_message_age_steps));
+        follower.GetInt32("max_message_age_steps", follower_.max_message_age_steps);
   }
   for (int f : formation_->followers()) {
     AffineFollowerParams check = follower_;
@@ -173,16 +173,16 @@ AffineFormationBuilder::AffineFormationBuilder(const ConfigNode& section, int nu
     metrics.RejectUnknownKeys({"tolerance_m", "converged_from_step", "obstacle_pairs", "series_every_steps"});
     metrics_.tolerance_m = metrics.GetDouble("tolerance_m", metrics_.tolerance_m);
     metrics_.converged_from_step = metrics.GetInt("converged_from_step", metrics_.converged_from_step);
-    metrics_.series_every_steps = static_cast<int>(metrics.GetInt("series_every_steps", metrics_.series_every_steps));
+    metrics_.series_every_steps = metrics.GetInt32("series_every_steps", metrics_.series_every_steps);
     if (metrics.Has("obstacle_pairs")) {
       const ConfigNode pairs = metrics.Required("obstacle_pairs");
       if (!pairs.IsSequence()) pairs.Fail("expected a list of [id, id] obstacle pairs");
       for (size_t k = 0; k < pairs.size(); ++k) {
-        const std::vector<double> ids = pairs[k].AsDoubles();
-        if (ids.size() != 2 || ids[0] != std::floor(ids[0]) || ids[1] != std::floor(ids[1])) {
-          pairs[k].Fail("expected two obstacle ids [a, b] (their positions in the run config's obstacles list)");
+        const ConfigNode pair = pairs[k];
+        if (!pair.IsSequence() || pair.size() != 2) {
+          pair.Fail("expected two obstacle ids [a, b] (their positions in the run config's obstacles list)");
         }
-        metrics_.obstacle_pairs.push_back({static_cast<int>(ids[0]), static_cast<int>(ids[1])});
+        metrics_.obstacle_pairs.push_back({pair[0].AsInt32(), pair[1].AsInt32()});
       }
     }
     if (!metrics_.IsValid(&error)) metrics.Fail(error);

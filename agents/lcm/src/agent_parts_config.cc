@@ -1,7 +1,6 @@
 #include "dream/agent_host/agent_parts_config.h"
 
 #include <algorithm>
-#include <limits>
 #include <stdexcept>
 
 #include "dream/agents/framework/graph_radio.h"
@@ -16,14 +15,11 @@ namespace {
 
 using config::ConfigNode;
 
-// A whole number of steps in [minimum, INT_MAX], checked before it is narrowed to int.
+// A whole number of steps in [minimum, INT_MAX].
 int ReadSteps(const ConfigNode& node, int minimum) {
-  const long long value = node.AsInt();
+  const int value = node.AsInt32();
   if (value < minimum) node.Fail("must be >= " + std::to_string(minimum) + ", got " + std::to_string(value));
-  if (value > std::numeric_limits<int>::max()) {
-    node.Fail("must be <= " + std::to_string(std::numeric_limits<int>::max()) + ", got " + std::to_string(value));
-  }
-  return static_cast<int>(value);
+  return value;
 }
 
 // One value for every robot, or a list with one per robot.

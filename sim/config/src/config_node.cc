@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <unordered_map>
@@ -261,6 +262,17 @@ long long ConfigNode::AsInt() const {
   return value;
 }
 
+int ConfigNode::AsInt32() const {
+  const long long value = AsInt();
+  if (value > std::numeric_limits<int>::max()) {
+    Fail("must be <= " + std::to_string(std::numeric_limits<int>::max()) + ", got " + std::to_string(value));
+  }
+  if (value < std::numeric_limits<int>::min()) {
+    Fail("must be >= " + std::to_string(std::numeric_limits<int>::min()) + ", got " + std::to_string(value));
+  }
+  return static_cast<int>(value);
+}
+
 bool ConfigNode::AsBool() const {
   bool value = false;
   if (!node_.IsScalar() || !YAML::convert<bool>::decode(node_, value)) {
@@ -286,6 +298,9 @@ double ConfigNode::GetDouble(const std::string& key, double fallback) const {
 }
 long long ConfigNode::GetInt(const std::string& key, long long fallback) const {
   return Has(key) ? Optional(key).AsInt() : fallback;
+}
+int ConfigNode::GetInt32(const std::string& key, int fallback) const {
+  return Has(key) ? Optional(key).AsInt32() : fallback;
 }
 bool ConfigNode::GetBool(const std::string& key, bool fallback) const {
   return Has(key) ? Optional(key).AsBool() : fallback;

@@ -70,12 +70,16 @@ class ConfigNode {
   // when the value has the wrong type or is not finite.
   double AsDouble() const;
   long long AsInt() const;
+  /// AsInt for an int member: a value past int's range is an error naming
+  /// it, never wrapped (4294967336 would otherwise become 40).
+  int AsInt32() const;
   bool AsBool() const;
   std::string AsString() const;
   std::vector<double> AsDoubles() const;
 
   double GetDouble(const std::string& key, double fallback) const;
   long long GetInt(const std::string& key, long long fallback) const;
+  int GetInt32(const std::string& key, int fallback) const;
   bool GetBool(const std::string& key, bool fallback) const;
   std::string GetString(const std::string& key, const std::string& fallback) const;
   /// The value `choices` gives the name at `key` (`fallback` when absent).
