@@ -249,6 +249,54 @@ TEST_F(ImportTest, MatFileFromMatlabImportsLikeTheNpy) {
   EXPECT_FALSE(fs::exists(dir + "/out3"));
 }
 
+/// A MATLAB v4 variable: its 20-byte header (type, rows, columns, imaginary
+/// flag, name length; little-endian), `name` and `data`.
+std::string Mat4Variable(int32_t type, int32_t rows, int32_t columns, int32_t name_bytes, const std::string& name,
+                         const std::vector<double>& data) {
+  std::string bytes;
+  for (const int32_t word : {type, rows, columns, int32_t{0}, name_bytes}) {
+    bytes.append(reinterpret_cast<const char*>(&word), sizeof(word));
+  }
+  bytes += name;
+  bytes.append(reinterpret_cast<const char*>(data.data()), data.size() * sizeof(double));
+  return bytes;
+}
+
+// libmatio allocates what a v4 header declares before reading it (40 forged
+// bytes made it ask for 1.8 GB): the reader walks v4 headers against the
+// file first, names the flaw, and still reads a sound v4 file.
+TEST(MatFileTest, ForgedV4HeadersAreRefusedBeforeLibmatioReadsThem) {
+  const std::string dir = testing::NewFolder("mat_v4");
+  const std::string name("dream_result\0", 13);
+  const std::string sound = dir + "/sound.mat";
+  testing::WriteText(sound, Mat4Variable(0, 2, 3, 13, name, {1, 2, 3, 4, 5, 6}));
+  const NpyArray read = ReadMatMatrix(sound, "dream_result", 100);
+  EXPECT_EQ(read.shape, (std::vector<int64_t>{2, 3}));
+  EXPECT_EQ(read.values, (std::vector<double>{1, 3, 5, 2, 4, 6}));  // the file is column-major
+
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {Mat4Variable(0, 2, 3, 1819636581, name, {1, 2, 3, 4, 5, 6}),
+       "v4 variable 0 at byte 0 has a name of 1819636581 bytes"},
+      {Mat4Variable(0, 65536, 65536, 13, name, {1, 2}),
+       "v4 variable 0 at byte 0 declares 65536 x 65536 values of 8 bytes, but only 16 bytes follow its name"},
+      {Mat4Variable(0, -1, 3, 13, name, {}), "v4 variable 0 at byte 0 has -1 x 3 values"},
+      {Mat4Variable(7777, 2, 3, 13, name, {}), "v4 variable 0 at byte 0 has type 7777, not a v4 MOPT code"},
+      {Mat4Variable(0, 1, 1, 13, name, {1}) + "short", "v4 variable 1 at byte 41 is cut short inside its 20-byte header"},
+      {"not a MATLAB file at all, just text that goes on", "v4 variable 0 at byte 0 has type 544501614, not a v4"},
+  };
+  for (const auto& [bytes, problem] : cases) {
+    SCOPED_TRACE(problem);
+    const std::string path = dir + "/forged.mat";
+    testing::WriteText(path, bytes);
+    try {
+      ReadMatMatrix(path, "dream_result", 100);
+      ADD_FAILURE() << "read a forged v4 file";
+    } catch (const std::runtime_error& e) {
+      EXPECT_THAT(e.what(), HasSubstr(path + ": " + problem));
+    }
+  }
+}
+
 TEST_F(ImportTest, BadResultFilesAreRefusedByNameAndNothingIsWritten) {
   const NpyArray good = testing::PerfectLabResult(*export_dir_);
   const int64_t rows = good.shape[0];
