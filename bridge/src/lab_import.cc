@@ -16,7 +16,9 @@
 #include "dream/node/output_folder_lock.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/lcm/channels.h"
+#include "dream/lcm/message_limits.h"
 #include "dream/lcm/run_id.h"
+#include "dream/lcm/wire_text.h"
 #include "dream/obstacles_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
@@ -85,7 +87,7 @@ void WriteStatus(sim::RunRecorder& recorder, const sim::World& world, int64_t ru
   status.rejected_commands = 0;
   status.command_conflicts = 0;
   status.num_lost = 0;
-  status.detail = detail;
+  status.detail = lcm::WireText::Of(detail, lcm::MessageLimits::kDetailBytes);
   WriteMessage(recorder, lcm::kStatusChannel, world.utime(), status, buffer);
 }
 

@@ -1,6 +1,9 @@
 #include "dream/lcm/wire_layout.h"
 
+#include <cstring>
 #include <stdexcept>
+
+#include "dream/lcm/wire_text.h"
 
 namespace dream::lcm {
 namespace {
@@ -89,6 +92,19 @@ std::optional<std::string> WireLayout::Problem(const void* data, int size) const
         }
         at += 4;
         if (length > left()) return cut("a string");
+        // lcm-gen's decoder drops the last byte unseen and its encoder stops at
+        // the first NUL: only text ending in its one NUL survives both, and
+        // only UTF-8 text can go into summary.json and dream log's JSON.
+        const auto* text = bytes + at;
+        const auto* nul = static_cast<const uint8_t*>(std::memchr(text, 0, static_cast<size_t>(length)));
+        if (nul != text + length - 1) {
+          return "string at byte " + std::to_string(at) + (nul == nullptr ? " does not end in a NUL" : " holds a NUL before its end");
+        }
+        const int64_t bad = WireText::FirstNonUtf8Byte(text, length - 1);
+        if (bad >= 0) {
+          return "string at byte " + std::to_string(at) + " is not UTF-8 text (byte " + std::to_string(at + bad) +
+                 " is " + std::to_string(text[bad]) + ")";
+        }
         at += length;
         break;
       }

@@ -31,6 +31,7 @@ SUBSCRIPTION_REGEX = "DREAM_(POSES|OBSTACLES|STATUS|RADIO_[0-9]+)"
 MAX_ROBOTS = 50          # the simulator's limit (sim/config); larger counts are forged
 MAX_OBSTACLES = 10000    # far beyond any config; bounds the decode of a forged message
 MAX_RADIO_PAYLOAD = 1 << 16
+MAX_DETAIL_BYTES = 1 << 16  # lcm::MessageLimits::kDetailBytes: a longer fault text is refused
 _RADIO_CHANNEL = re.compile(r"DREAM_RADIO_([0-9]{1,6})$")
 _FINISHED, _ABORTED = 2, 3
 # Byte offsets after the 8-byte fingerprint (lcmtypes/dream/*.lcm): utime, step, run_id first.
@@ -249,13 +250,20 @@ class AgentHost:
         self.last_step_answered = max(self.last_step_answered, poses.step)
         return True
 
+    @staticmethod
+    def _wire_text(text):
+        """`text` as the world accepts a string: UTF-8 with no NUL, at most MAX_DETAIL_BYTES
+        (cut on a character boundary). An exception's text may hold anything."""
+        data = text.replace("\x00", "\\x00").encode("utf-8", "replace")[:MAX_DETAIL_BYTES]
+        return data.decode("utf-8", "ignore")
+
     def _fail(self, robot, poses, detail):
         robot.fault = detail
         log.error("robot %d stops at step %d: its controller failed: %s", robot.agent.id, poses.step, detail)
         fault = self._robot_fault_t()
         fault.utime, fault.step, fault.run_id = poses.utime, poses.step, poses.run_id
         fault.robot_id, fault.agent_id = robot.agent.id, self.agent_id
-        fault.detail = detail
+        fault.detail = self._wire_text(detail)
         self.bus.publish(f"DREAM_FAULT_{robot.agent.id}", fault.encode())
 
     # --- for processes that own their loop -----------------------------------------------

@@ -194,6 +194,18 @@ class AgentHostTest(unittest.TestCase):
         self.assertEqual(steps_of("DREAM_CMD_1"), [1, 2])
         self.assertEqual(list(self.host.faults()), [1])
 
+    def test_a_fault_text_is_sent_as_the_world_accepts_it(self):
+        # UTF-8 without NUL, at most MAX_DETAIL_BYTES, cut between characters: the
+        # world refuses anything else (lcmtypes' WireLayout), and the fault would be lost.
+        wire = AgentHost._wire_text
+        self.assertEqual(wire("caf\u00e9 \U0001F916"), "caf\u00e9 \U0001F916")
+        self.assertEqual(wire("a\x00b"), "a\\x00b")
+        self.assertEqual(wire("path \udcff"), "path ?")  # a surrogate-escaped byte of a file name
+        long_text = "\u00e9" * dream.agent_host.MAX_DETAIL_BYTES  # two bytes each
+        cut = wire(long_text)
+        self.assertEqual(cut, "\u00e9" * (dream.agent_host.MAX_DETAIL_BYTES // 2))
+        self.assertEqual(wire("x" + long_text).encode("utf-8"), ("x" + "\u00e9" * (dream.agent_host.MAX_DETAIL_BYTES // 2 - 1)).encode("utf-8"))
+
     def test_the_world_ending_the_run_is_noticed(self):
         self.bus.deliver("DREAM_POSES", poses(1))
         status = dream.run_status_t()

@@ -4,12 +4,14 @@
 
 #include <climits>
 #include <map>
+#include <random>
 
 #include "allocation_watch.h"
 #include "dream/lcm/bad_message_log.h"
 #include "dream/lcm/lcm_typed.h"
 #include "dream/lcm/message_limits.h"
 #include "dream/lcm/wire_layout_of.h"
+#include "dream/lcm/wire_text.h"
 #include "dream/obstacles_t.hpp"
 #include "dream/applied_commands_t.hpp"
 #include "dream/radio_message_t.hpp"
@@ -153,6 +155,70 @@ TEST(DecoderBounds, StringLengthsOutsideTheBytesAreRefused) {
     EXPECT_TRUE(lcm::DecodeProblem(forged.data(), static_cast<int>(forged.size()), &message).has_value())
         << "detail length " << length;
     EXPECT_LE(watch.largest(), kMaxAllocationBytes);
+  }
+}
+
+// A string must be UTF-8 text ending in its one NUL: lcm-gen's decoder drops
+// the last byte unseen and its encoder stops at the first NUL, and text that
+// is not UTF-8 cannot be written to summary.json (the JSON library throws).
+TEST(DecoderBounds, StringsMustBeUtf8TextEndingInTheirOneNul) {
+  robot_fault_t fault;
+  fault.detail = "bad \xC3\xA9 \xE2\x86\x92 \xF0\x9F\xA4\x96";  // é, an arrow, a robot: text
+  std::vector<uint8_t> bytes(static_cast<size_t>(fault.getEncodedSize()));
+  ASSERT_EQ(fault.encode(bytes.data(), 0, static_cast<int>(bytes.size())), static_cast<int>(bytes.size()));
+  robot_fault_t decoded;
+  ASSERT_FALSE(lcm::DecodeProblem(bytes.data(), static_cast<int>(bytes.size()), &decoded).has_value());
+  EXPECT_EQ(decoded.detail, fault.detail);
+
+  const size_t text = kCountOffset.at("robot_fault_t") + 4;
+  const size_t nul = bytes.size() - 1;
+  const std::vector<std::pair<std::pair<size_t, uint8_t>, std::string>> forgeries = {
+      {{text + 1, 0xFF}, "is not UTF-8 text (byte " + std::to_string(text + 1) + " is 255)"},
+      {{text + 5, 0xC3}, "is not UTF-8 text (byte " + std::to_string(text + 4) + " is 195)"},  // é's lead, then a lead
+      {{text + 4, 0x80}, "is not UTF-8 text (byte " + std::to_string(text + 4) + " is 128)"},  // a lone continuation
+      {{text + 2, 0x00}, "holds a NUL before its end"},
+      {{nul, 'x'}, "does not end in a NUL"},
+  };
+  for (const auto& [change, problem] : forgeries) {
+    SCOPED_TRACE(problem);
+    std::vector<uint8_t> forged = bytes;
+    forged[change.first] = change.second;
+    const std::optional<std::string> refused =
+        lcm::DecodeProblem(forged.data(), static_cast<int>(forged.size()), &decoded);
+    ASSERT_TRUE(refused.has_value());
+    EXPECT_NE(refused->find(problem), std::string::npos) << *refused;
+  }
+  // Overlong forms and surrogates are not UTF-8 either.
+  for (const std::string& bad : {std::string("\xC0\xAF"), std::string("\xE0\x80\xAF"), std::string("\xED\xA0\x80"),
+                                 std::string("\xF4\x90\x80\x80")}) {
+    robot_fault_t forged_fault;
+    forged_fault.detail = "x" + bad;
+    std::vector<uint8_t> forged(static_cast<size_t>(forged_fault.getEncodedSize()));
+    forged_fault.encode(forged.data(), 0, static_cast<int>(forged.size()));
+    EXPECT_TRUE(lcm::DecodeProblem(forged.data(), static_cast<int>(forged.size()), &decoded).has_value());
+  }
+}
+
+// What we send that quotes what we were given (a path, a URL, a controller's
+// error) goes through WireText::Of: any bytes come out as a string the
+// decoders accept, cut between characters.
+TEST(DecoderBounds, WireTextMakesAnyBytesAnAcceptedString) {
+  EXPECT_EQ(lcm::WireText::Of("caf\xC3\xA9", 100), "caf\xC3\xA9");
+  EXPECT_EQ(lcm::WireText::Of(std::string("a\0b\xFF\xC3", 5), 100), "a\\0b??");
+  EXPECT_EQ(lcm::WireText::Of("\xC3\xA9\xC3\xA9", 3), "\xC3\xA9");  // not half an é
+  std::mt19937 random(7);
+  for (int trial = 0; trial < 2000; ++trial) {
+    std::string bytes(static_cast<size_t>(random() % 40), '\0');
+    for (char& c : bytes) c = static_cast<char>(random() % 256);
+    robot_fault_t fault;
+    fault.detail = lcm::WireText::Of(bytes, 24);
+    ASSERT_LE(fault.detail.size(), 24u);
+    std::vector<uint8_t> encoded(static_cast<size_t>(fault.getEncodedSize()));
+    ASSERT_EQ(fault.encode(encoded.data(), 0, static_cast<int>(encoded.size())), static_cast<int>(encoded.size()));
+    robot_fault_t decoded;
+    const std::optional<std::string> problem =
+        lcm::DecodeProblem(encoded.data(), static_cast<int>(encoded.size()), &decoded);
+    ASSERT_FALSE(problem.has_value()) << *problem;
   }
 }
 

@@ -10,7 +10,9 @@
 #include "dream/applied_commands_t.hpp"
 #include "dream/lcm/channels.h"
 #include "dream/lcm/lcm_typed.h"
+#include "dream/lcm/message_limits.h"
 #include "dream/lcm/run_id.h"
+#include "dream/lcm/wire_text.h"
 #include "dream/obstacles_t.hpp"
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
@@ -297,7 +299,8 @@ void SimNode::PublishStatus(int8_t state, const std::string& detail, bool record
     if (robots_[i].lost) status.lost_robot_ids.push_back(static_cast<int32_t>(i));
   }
   status.num_lost = static_cast<int32_t>(status.lost_robot_ids.size());
-  status.detail = detail;
+  // The reason may quote a path or URL we were given: sent as a string the bus accepts.
+  status.detail = lcm::WireText::Of(detail, lcm::MessageLimits::kDetailBytes);
   PublishAndRecord(lcm::kStatusChannel, status, record);
 }
 

@@ -26,7 +26,8 @@ class WireLayout {
   WireLayout& Count(int32_t max);
   /// Elements of `element_bytes` each, as many as the latest Count() says.
   WireLayout& Array(int element_bytes);
-  /// An LCM string: int32 length (with its NUL, so >= 1) then that many bytes.
+  /// An LCM string: int32 length (with its NUL, so >= 1) then that many
+  /// bytes: UTF-8 text with no NUL but the last.
   WireLayout& String(int32_t max_bytes);
 
   /// What is wrong with `size` bytes at `data` as one message of this type
