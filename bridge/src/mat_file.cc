@@ -261,12 +261,8 @@ class Mat4Layout {
     const std::string what = "v4 variable " + std::to_string(index) + " at byte " + std::to_string(offset);
     if (bytes_.size() - offset < kHeaderBytes) Fail(what + " is cut short inside its 20-byte header");
     // The type MOPT is small in the file's byte order; libmatio tries both orders the same way.
-    bool swap = false;
-    int32_t type = Word(offset, swap);
-    if (type < 0 || type > 4052) {
-      swap = true;
-      type = Word(offset, swap);
-    }
+    int32_t type = Word(offset, false);
+    if (type < 0 || type > 4052) type = Word(offset, true);
     const int32_t machine = type / 1000;
     const int32_t zero = type / 100 % 10;
     const int32_t precision = type / 10 % 10;
@@ -275,6 +271,9 @@ class Mat4Layout {
       Fail(what + " has type " + std::to_string(Word(offset, false)) +
            ", not a v4 MOPT code (M 0-1, O 0, P 0-5, T 0-2)");
     }
+    // libmatio then reads the rest in the order M names (0 little-, 1 big-endian),
+    // whichever order the type was found in: so must we.
+    const bool swap = (machine == 1) != (__BYTE_ORDER__ == __ORDER_BIG_ENDIAN__);
     const int32_t rows = Word(offset + 4, swap);
     const int32_t columns = Word(offset + 8, swap);
     const int32_t imaginary = Word(offset + 12, swap);

@@ -281,6 +281,9 @@ TEST(MatFileTest, ForgedV4HeadersAreRefusedBeforeLibmatioReadsThem) {
        "v4 variable 0 at byte 0 declares 65536 x 65536 values of 8 bytes, but only 16 bytes follow its name"},
       {Mat4Variable(0, -1, 3, 13, name, {}), "v4 variable 0 at byte 0 has -1 x 3 values"},
       {Mat4Variable(7777, 2, 3, 13, name, {}), "v4 variable 0 at byte 0 has type 7777, not a v4 MOPT code"},
+      // A type found byte-swapped (bytes 00 00 00 01: 1) but whose M (0) says little-endian:
+      // libmatio reads the rest little-endian, a 2013265920-byte name.
+      {Mat4Variable(16777216, 0, 0, 0x78000000, name, {}), "v4 variable 0 at byte 0 has a name of 2013265920 bytes"},
       {Mat4Variable(0, 1, 1, 13, name, {1}) + "short", "v4 variable 1 at byte 41 is cut short inside its 20-byte header"},
       {"not a MATLAB file at all, just text that goes on", "v4 variable 0 at byte 0 has type 544501614, not a v4"},
   };
