@@ -2,11 +2,13 @@
 
 #include <dlfcn.h>
 #include <matio.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
@@ -98,6 +100,9 @@ constexpr uint32_t kMiUint32 = 6;
 constexpr uint32_t kMiMatrix = 14;
 constexpr uint32_t kMiCompressed = 15;
 constexpr size_t kMat5HeaderSize = 128;
+// How much of a compressed matrix is inflated to check its header: MATLAB's
+// names have at most 63 characters and a lab result has two dimensions.
+constexpr size_t kPeekBytes = 4096;
 
 /// Bytes per element of a numeric v5 data type, 0 for the others.
 size_t NumericSize(uint32_t type) {
@@ -126,6 +131,9 @@ class Mat5Layout {
   Mat5Layout(const std::string& path, const std::string& bytes) : path_(path), bytes_(bytes) {
     swap_ = bytes_[126] == 'M' && bytes_[127] == 'I';
   }
+  /// The same walk over `bytes` taken from inside a file of byte order `swap`.
+  Mat5Layout(const std::string& path, const std::string& bytes, bool swap)
+      : path_(path), bytes_(bytes), swap_(swap) {}
 
   /// Every top-level element must be a (compressed) matrix that fits in the
   /// file; the uncompressed `variable`'s parts must agree with its dims.
@@ -138,6 +146,7 @@ class Mat5Layout {
              std::to_string(element.type) + "; a MAT-file holds matrices (14) and compressed matrices (15) only");
       }
       if (element.type == kMiMatrix) CheckMatrix(element, variable);
+      if (element.type == kMiCompressed) CheckCompressed(element, index);
       offset = element.end;
     }
   }
@@ -183,6 +192,44 @@ class Mat5Layout {
     const bool padded = !(top_level && element.type == kMiCompressed);
     element.end = padded ? std::min<uint64_t>(limit, (data_end + 7) / 8 * 8) : data_end;
     return element;
+  }
+
+  /// libmatio inflates a compressed matrix's header and allocates the name
+  /// length and dimensions it declares: the header must be a matrix whose
+  /// flags, dimensions and name lie within its first kPeekBytes inflated.
+  void CheckCompressed(const Mat5Element& element, int index) const {
+    const std::string what = "compressed element " + std::to_string(index) + " at byte " + std::to_string(element.data - 8);
+    std::string inflated(kPeekBytes, '\0');
+    z_stream stream{};
+    if (inflateInit(&stream) != Z_OK) Fail(what + ": zlib cannot start");
+    stream.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes_.data() + element.data));
+    stream.avail_in = static_cast<uInt>(std::min<uint64_t>(element.size, std::numeric_limits<uInt>::max()));
+    stream.next_out = reinterpret_cast<Bytef*>(inflated.data());
+    stream.avail_out = static_cast<uInt>(inflated.size());
+    const int status = inflate(&stream, Z_SYNC_FLUSH);
+    inflated.resize(inflated.size() - stream.avail_out);
+    inflateEnd(&stream);
+    if (status != Z_OK && status != Z_STREAM_END && status != Z_BUF_ERROR) {
+      Fail(what + " is not zlib data (zlib: " + (stream.msg != nullptr ? stream.msg : std::to_string(status)) + ")");
+    }
+    if (inflated.size() < 8) Fail(what + " inflates to " + std::to_string(inflated.size()) + " bytes, not a matrix");
+    const Mat5Layout inner(path_, inflated, swap_);
+    // The matrix may be longer than what was inflated; its header may not.
+    const Mat5Element matrix = inner.Tag(0, what + ": the matrix inside", UINT64_MAX, false);
+    if (matrix.type != kMiMatrix) {
+      Fail(what + " holds data type " + std::to_string(matrix.type) + ", not a matrix (14)");
+    }
+    inner.CheckHeader(matrix, what, std::min<uint64_t>(inflated.size(), matrix.data + matrix.size));
+  }
+
+  /// A matrix's flags, dimensions and name, as libmatio reads them first:
+  /// each a whole tag within `limit` (the element's end, or what was inflated).
+  void CheckHeader(const Mat5Element& matrix, const std::string& what, uint64_t limit) const {
+    const std::string within = " within the first " + std::to_string(limit - matrix.data) + " bytes of " + what;
+    const Mat5Element flags = Tag(matrix.data, "the array flags" + within, limit, false);
+    const Mat5Element dims = Tag(flags.end, "the dimensions" + within, limit, false);
+    const Mat5Element name = Tag(dims.end, "the name" + within, limit, false);
+    (void)name;
   }
 
   void CheckMatrix(const Mat5Element& matrix, const std::string& variable) const {

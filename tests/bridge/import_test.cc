@@ -4,6 +4,7 @@
 // written.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <zlib.h>
 
 #include <cmath>
 #include <filesystem>
@@ -298,6 +299,77 @@ TEST(MatFileTest, ForgedV4HeadersAreRefusedBeforeLibmatioReadsThem) {
       EXPECT_THAT(e.what(), HasSubstr(path + ": " + problem));
     }
   }
+}
+
+/// `words` as little-endian int32s.
+std::string Int32s(std::initializer_list<int32_t> words) {
+  std::string bytes;
+  for (const int32_t word : words) bytes.append(reinterpret_cast<const char*>(&word), sizeof(word));
+  return bytes;
+}
+
+/// A little-endian MAT-file v5 of one compressed element holding `inside`.
+std::string CompressedMat5(const std::string& inside) {
+  std::string header = "MATLAB 5.0 MAT-file, made by a test";
+  header.resize(124, ' ');
+  header += std::string("\x00\x01IM", 4);
+  std::string packed(compressBound(static_cast<uLong>(inside.size())), '\0');
+  uLongf packed_size = packed.size();
+  EXPECT_EQ(compress(reinterpret_cast<Bytef*>(packed.data()), &packed_size,
+                     reinterpret_cast<const Bytef*>(inside.data()), static_cast<uLong>(inside.size())),
+            Z_OK);
+  packed.resize(packed_size);
+  return header + Int32s({15, static_cast<int32_t>(packed.size())}) + packed;
+}
+
+// libmatio inflates a compressed matrix's header and allocates the name and
+// dimensions it declares (296 forged bytes made it ask for 1 GB): the reader
+// inflates the first 4 KiB itself and refuses a header that does not fit.
+TEST(MatFileTest, ForgedCompressedHeadersAreRefusedBeforeLibmatioReadsThem) {
+  const std::string dir = testing::NewFolder("mat_v5_compressed");
+  const std::string flags = Int32s({6, 8, 6, 0});       // miUINT32 x 2: class double
+  const std::string dims = Int32s({5, 8, 2, 3});        // miINT32 x 2: 2 x 3
+  const std::string data = Int32s({9, 48}) + std::string(48, '\0');  // miDOUBLE x 6
+  auto matrix = [](const std::string& body) { return Int32s({14, static_cast<int32_t>(body.size())}) + body; };
+  const std::string name = Int32s({1, 12}) + "dream_result" + std::string(4, '\0');  // padded to 8 bytes
+  const std::string sound = dir + "/sound.mat";
+  testing::WriteText(sound, CompressedMat5(matrix(flags + dims + name + data)));
+  EXPECT_EQ(ReadMatMatrix(sound, "dream_result", 100).shape, (std::vector<int64_t>{2, 3}));
+
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {CompressedMat5(matrix(flags + dims + Int32s({1, 1000000000}) + "dream_result")),
+       "the name within the first"},
+      {CompressedMat5(matrix(flags + Int32s({5, 400000000}) + name)), "the dimensions within the first"},
+      {CompressedMat5(Int32s({9, 8}) + std::string(8, '\0')), "holds data type 9, not a matrix (14)"},
+      {CompressedMat5("abc"), "inflates to 3 bytes, not a matrix"},
+  };
+  for (const auto& [bytes, problem] : cases) {
+    SCOPED_TRACE(problem);
+    const std::string path = dir + "/forged.mat";
+    testing::WriteText(path, bytes);
+    try {
+      ReadMatMatrix(path, "dream_result", 100);
+      ADD_FAILURE() << "read a forged compressed file";
+    } catch (const std::runtime_error& e) {
+      EXPECT_THAT(e.what(), HasSubstr(path + ": "));
+      EXPECT_THAT(e.what(), HasSubstr(problem));
+      EXPECT_THAT(e.what(), HasSubstr("compressed element 0 at byte 128"));
+    }
+  }
+  std::string not_zlib = CompressedMat5(matrix(flags));
+  not_zlib[136] = 'X';  // the zlib header's first byte
+  const std::string path = dir + "/not_zlib.mat";
+  testing::WriteText(path, not_zlib);
+  EXPECT_THROW(
+      {
+        try {
+          ReadMatMatrix(path, "dream_result", 100);
+        } catch (const std::runtime_error& e) {
+          EXPECT_THAT(e.what(), HasSubstr("compressed element 0 at byte 128 is not zlib data"));
+          throw;
+        }
+      },
+      std::runtime_error);
 }
 
 TEST_F(ImportTest, BadResultFilesAreRefusedByNameAndNothingIsWritten) {
