@@ -145,7 +145,7 @@ class Mat5Layout {
         Fail("top-level element " + std::to_string(index) + " at byte " + std::to_string(offset) + " has type " +
              std::to_string(element.type) + "; a MAT-file holds matrices (14) and compressed matrices (15) only");
       }
-      if (element.type == kMiMatrix) CheckMatrix(element, variable);
+      if (element.type == kMiMatrix) CheckMatrix(element, variable, index);
       if (element.type == kMiCompressed) CheckCompressed(element, index);
       offset = element.end;
     }
@@ -219,36 +219,51 @@ class Mat5Layout {
     if (matrix.type != kMiMatrix) {
       Fail(what + " holds data type " + std::to_string(matrix.type) + ", not a matrix (14)");
     }
-    inner.CheckHeader(matrix, what, std::min<uint64_t>(inflated.size(), matrix.data + matrix.size));
+    (void)inner.CheckHeader(matrix, what, std::min<uint64_t>(inflated.size(), matrix.data + matrix.size));
   }
 
-  /// A matrix's flags, dimensions and name, as libmatio reads them first:
-  /// each a whole tag within `limit` (the element's end, or what was inflated).
-  void CheckHeader(const Mat5Element& matrix, const std::string& what, uint64_t limit) const {
+  /// The first three parts of a matrix.
+  struct Header {
+    Mat5Element flags;
+    Mat5Element dims;
+    Mat5Element name;
+  };
+
+  /// A matrix's flags, dimensions and name, the parts libmatio reads first
+  /// and allocates by: each a whole tag within `limit` (the element's end, or
+  /// what was inflated), of the types and sizes every MAT-file v5 array has
+  /// (flags: miUINT32 x 2; dimensions: miINT32, 4 bytes each, two or more; name: miINT8).
+  Header CheckHeader(const Mat5Element& matrix, const std::string& what, uint64_t limit) const {
     const std::string within = " within the first " + std::to_string(limit - matrix.data) + " bytes of " + what;
-    const Mat5Element flags = Tag(matrix.data, "the array flags" + within, limit, false);
-    const Mat5Element dims = Tag(flags.end, "the dimensions" + within, limit, false);
-    const Mat5Element name = Tag(dims.end, "the name" + within, limit, false);
-    (void)name;
+    Header header;
+    header.flags = Tag(matrix.data, "the array flags" + within, limit, false);
+    if (header.flags.type != kMiUint32 || header.flags.size != 8) {
+      Fail(what + ": its array flags are " + std::to_string(header.flags.size) + " bytes of type " +
+           std::to_string(header.flags.type) + ", not 8 bytes of miUINT32 (6)");
+    }
+    header.dims = Tag(header.flags.end, "the dimensions" + within, limit, false);
+    if (header.dims.type != kMiInt32 || header.dims.size % 4 != 0 || header.dims.size < 8) {
+      Fail(what + ": its dimensions are " + std::to_string(header.dims.size) + " bytes of type " +
+           std::to_string(header.dims.type) + ", not miINT32 (5), 4 bytes for each of two or more");
+    }
+    header.name = Tag(header.dims.end, "the name" + within, limit, false);
+    if (header.name.type != kMiInt8) {
+      Fail(what + ": its name has type " + std::to_string(header.name.type) + ", not miINT8 (1)");
+    }
+    return header;
   }
 
-  void CheckMatrix(const Mat5Element& matrix, const std::string& variable) const {
-    const uint64_t limit = matrix.data + matrix.size;
+  void CheckMatrix(const Mat5Element& matrix, const std::string& variable, int index) const {
     if (matrix.size == 0) return;  // an empty matrix element (MATLAB writes them for empty cells)
-    const Mat5Element flags = Tag(matrix.data, "the array flags of a matrix", limit, false);
-    if (flags.type != kMiUint32 || flags.size != 8) return;  // not ours to judge: libmatio says what it is
-    const Mat5Element dims = Tag(flags.end, "the dimensions of a matrix", limit, false);
-    const Mat5Element name = Tag(dims.end, "the name of a matrix", limit, false);
-    if (dims.type != kMiInt32 || name.type != kMiInt8) return;
+    const uint64_t limit = matrix.data + matrix.size;
+    const auto [flags, dims, name] =
+        CheckHeader(matrix, "matrix " + std::to_string(index) + " at byte " + std::to_string(matrix.data - 8), limit);
     const std::string matrix_name = bytes_.substr(name.data, name.size);
     if (matrix_name != variable) return;
     const std::string what = "variable '" + variable + "'";
     const uint32_t matrix_class = Word(flags.data) & 0xff;
     constexpr uint32_t kMxDoubleClass = 6;
     if (matrix_class != kMxDoubleClass) return;  // refused by class below, with libmatio's reading of it
-    if (dims.size % 4 != 0 || dims.size < 8) {
-      Fail(what + ": its dimensions take " + std::to_string(dims.size) + " bytes; a rank-2 or higher array needs 4 per dimension");
-    }
     uint64_t count = 1;
     std::string shape;
     for (uint64_t d = 0; d < dims.size / 4; ++d) {

@@ -356,6 +356,28 @@ TEST(MatFileTest, ForgedCompressedHeadersAreRefusedBeforeLibmatioReadsThem) {
       EXPECT_THAT(e.what(), HasSubstr("compressed element 0 at byte 128"));
     }
   }
+  // The same parts uncompressed: 616 forged bytes whose array flags claimed
+  // 242 bytes made libmatio ask for 3.4 GB.
+  const std::string header = CompressedMat5("").substr(0, 128);
+  const std::vector<std::pair<std::string, std::string>> uncompressed = {
+      {matrix(Int32s({6, 16}) + std::string(16, '\0') + dims + name + data),
+       "matrix 0 at byte 128: its array flags are 16 bytes of type 6, not 8 bytes of miUINT32 (6)"},
+      {matrix(flags + Int32s({5, 4, 2, 0}) + name + data),
+       "matrix 0 at byte 128: its dimensions are 4 bytes of type 5, not miINT32 (5), 4 bytes for each of two or more"},
+      {matrix(flags + dims + Int32s({2, 12}) + "dream_result" + std::string(4, '\0') + data),
+       "matrix 0 at byte 128: its name has type 2, not miINT8 (1)"},
+  };
+  for (const auto& [element, problem] : uncompressed) {
+    SCOPED_TRACE(problem);
+    const std::string path = dir + "/forged_plain.mat";
+    testing::WriteText(path, header + element);
+    try {
+      ReadMatMatrix(path, "dream_result", 100);
+      ADD_FAILURE() << "read a forged file";
+    } catch (const std::runtime_error& e) {
+      EXPECT_THAT(e.what(), HasSubstr(path + ": " + problem));
+    }
+  }
   std::string not_zlib = CompressedMat5(matrix(flags));
   not_zlib[136] = 'X';  // the zlib header's first byte
   const std::string path = dir + "/not_zlib.mat";
