@@ -219,6 +219,11 @@ class Mat5Layout {
     if (matrix.type != kMiMatrix) {
       Fail(what + " holds data type " + std::to_string(matrix.type) + ", not a matrix (14)");
     }
+    constexpr uint64_t kMaxDeflateRatio = 1032;  // zlib's best: about 1032 bytes from one
+    if (matrix.size > element.size * kMaxDeflateRatio) {
+      Fail(what + " says it inflates to " + std::to_string(matrix.size) + " bytes; its " + std::to_string(element.size) +
+           " bytes cannot hold that much");
+    }
     (void)inner.CheckHeader(matrix, what, std::min<uint64_t>(inflated.size(), matrix.data + matrix.size));
   }
 
@@ -227,6 +232,9 @@ class Mat5Layout {
     Mat5Element flags;
     Mat5Element dims;
     Mat5Element name;
+    uint32_t matrix_class = 0;  ///< mxDOUBLE_CLASS 6, mxCELL_CLASS 1, ...
+    uint64_t count = 1;         ///< the product of the dimensions, at most 2^40
+    std::string shape;          ///< "2 x 3"
   };
 
   /// A matrix's flags, dimensions and name, the parts libmatio reads first
@@ -250,34 +258,41 @@ class Mat5Layout {
     if (header.name.type != kMiInt8) {
       Fail(what + ": its name has type " + std::to_string(header.name.type) + ", not miINT8 (1)");
     }
+    for (uint64_t d = 0; d < header.dims.size / 4; ++d) {
+      const auto extent = static_cast<int32_t>(Word(header.dims.data + 4 * d));
+      if (extent < 0) Fail(what + ": dimension " + std::to_string(d) + " is " + std::to_string(extent));
+      header.shape += (d == 0 ? "" : " x ") + std::to_string(extent);
+      constexpr uint64_t kMaxCount = uint64_t{1} << 40;  // far past any file we read, and no overflow below
+      const auto factor = static_cast<uint64_t>(extent);
+      header.count = factor != 0 && header.count > kMaxCount / factor ? kMaxCount : header.count * factor;
+    }
+    // libmatio allocates a cell's or struct's elements by its dimensions: the
+    // matrix must have room for them, a byte per value at least (a tag per
+    // element for cells, structs and objects). Sparse matrices store only nzmax values.
+    header.matrix_class = Word(header.flags.data) & 0xff;
+    constexpr uint32_t kMxSparseClass = 5;
+    const uint64_t per_value = header.matrix_class >= 1 && header.matrix_class <= 3 ? 8 : 1;
+    if (header.matrix_class != kMxSparseClass && header.count > matrix.size / per_value) {
+      Fail(what + ": dimensions " + header.shape + " (class " + std::to_string(header.matrix_class) + ") need " +
+           std::to_string(per_value) + " byte(s) per value, but the matrix has " + std::to_string(matrix.size));
+    }
     return header;
   }
 
   void CheckMatrix(const Mat5Element& matrix, const std::string& variable, int index) const {
     if (matrix.size == 0) return;  // an empty matrix element (MATLAB writes them for empty cells)
     const uint64_t limit = matrix.data + matrix.size;
-    const auto [flags, dims, name] =
+    const Header header =
         CheckHeader(matrix, "matrix " + std::to_string(index) + " at byte " + std::to_string(matrix.data - 8), limit);
-    const std::string matrix_name = bytes_.substr(name.data, name.size);
-    if (matrix_name != variable) return;
-    const std::string what = "variable '" + variable + "'";
-    const uint32_t matrix_class = Word(flags.data) & 0xff;
+    if (bytes_.substr(header.name.data, header.name.size) != variable) return;
     constexpr uint32_t kMxDoubleClass = 6;
-    if (matrix_class != kMxDoubleClass) return;  // refused by class below, with libmatio's reading of it
-    uint64_t count = 1;
-    std::string shape;
-    for (uint64_t d = 0; d < dims.size / 4; ++d) {
-      const auto extent = static_cast<int32_t>(Word(dims.data + 4 * d));
-      if (extent < 0) Fail(what + ": dimension " + std::to_string(d) + " is " + std::to_string(extent));
-      shape += (d == 0 ? "" : " x ") + std::to_string(extent);
-      count *= static_cast<uint64_t>(extent);
-      if (count > (uint64_t{1} << 40)) Fail(what + ": dimensions " + shape + " are absurdly large");
-    }
-    const Mat5Element real = Tag(name.end, what + "'s real part", limit, false);
+    if (header.matrix_class != kMxDoubleClass) return;  // refused by class below, with libmatio's reading of it
+    const std::string what = "variable '" + variable + "'";
+    const Mat5Element real = Tag(header.name.end, what + "'s real part", limit, false);
     const size_t element_size = NumericSize(real.type);
     if (element_size == 0) Fail(what + ": its real part has data type " + std::to_string(real.type) + ", not a number type");
-    if (real.size != count * element_size) {
-      Fail(what + ": dimensions " + shape + " hold " + std::to_string(count) + " values, but its real part has " +
+    if (real.size != header.count * element_size) {
+      Fail(what + ": dimensions " + header.shape + " hold " + std::to_string(header.count) + " values, but its real part has " +
            std::to_string(real.size) + " bytes of " + std::to_string(element_size) + "-byte numbers (" +
            std::to_string(real.size / element_size) + " values)");
     }

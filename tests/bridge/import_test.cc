@@ -342,6 +342,7 @@ TEST(MatFileTest, ForgedCompressedHeadersAreRefusedBeforeLibmatioReadsThem) {
       {CompressedMat5(matrix(flags + Int32s({5, 400000000}) + name)), "the dimensions within the first"},
       {CompressedMat5(Int32s({9, 8}) + std::string(8, '\0')), "holds data type 9, not a matrix (14)"},
       {CompressedMat5("abc"), "inflates to 3 bytes, not a matrix"},
+      {CompressedMat5(Int32s({14, 2000000000}) + flags + dims + name), "says it inflates to 2000000000 bytes"},
   };
   for (const auto& [bytes, problem] : cases) {
     SCOPED_TRACE(problem);
@@ -366,6 +367,9 @@ TEST(MatFileTest, ForgedCompressedHeadersAreRefusedBeforeLibmatioReadsThem) {
        "matrix 0 at byte 128: its dimensions are 4 bytes of type 5, not miINT32 (5), 4 bytes for each of two or more"},
       {matrix(flags + dims + Int32s({2, 12}) + "dream_result" + std::string(4, '\0') + data),
        "matrix 0 at byte 128: its name has type 2, not miINT8 (1)"},
+      // A cell array of 654311940 x 13 cells: libmatio asked for 68 GB of cell pointers.
+      {matrix(Int32s({6, 8, 1, 0}) + Int32s({5, 8, 654311940, 13}) + name),
+       "matrix 0 at byte 128: dimensions 654311940 x 13 (class 1) need 8 byte(s) per value, but the matrix has 56"},
   };
   for (const auto& [element, problem] : uncompressed) {
     SCOPED_TRACE(problem);
