@@ -28,6 +28,11 @@ WireLayout& WireLayout::AgentId() {
   return *this;
 }
 
+WireLayout& WireLayout::Boolean() {
+  fields_.push_back({Kind::kBoolean, 1});
+  return *this;
+}
+
 WireLayout& WireLayout::Count(int32_t max) {
   fields_.push_back({Kind::kCount, max});
   return *this;
@@ -66,6 +71,11 @@ std::optional<std::string> WireLayout::Problem(const void* data, int size) const
       case Kind::kAgentId:
         if (left() < field.bytes_or_max) return cut("fixed fields");
         at += field.bytes_or_max;
+        break;
+      case Kind::kBoolean:
+        if (left() < 1) return cut("a boolean");
+        if (bytes[at] > 1) return "boolean at byte " + std::to_string(at) + " is " + std::to_string(bytes[at]) + ", not 0 or 1";
+        ++at;
         break;
       case Kind::kCount:
         if (left() < 4) return cut("a count");
@@ -131,7 +141,9 @@ std::optional<int64_t> WireLayout::AgentIdOf(const void* data, int size) const {
 int64_t WireLayout::MinimumBytes() const {
   int64_t bytes = kFingerprintBytes;
   for (const Field& field : fields_) {
-    if (field.kind == Kind::kFixed || field.kind == Kind::kAgentId) bytes += field.bytes_or_max;
+    if (field.kind == Kind::kFixed || field.kind == Kind::kAgentId || field.kind == Kind::kBoolean) {
+      bytes += field.bytes_or_max;
+    }
     if (field.kind == Kind::kCount || field.kind == Kind::kString) bytes += 4;
     if (field.kind == Kind::kString) bytes += 1;  // the NUL of an empty string
   }

@@ -97,7 +97,8 @@ const WireLayout& WireLayoutOf<velocity_command_t>() {
   static const WireLayout layout = MessageStart<velocity_command_t>()
                                        .Fixed(kInt32)  // robot_id
                                        .AgentId()
-                                       .Fixed(kDouble + kDouble + kInt8);  // v, w, done
+                                       .Fixed(kDouble + kDouble)  // v, w
+                                       .Boolean();                 // done
   return layout;
 }
 

@@ -199,6 +199,22 @@ TEST(DecoderBounds, StringsMustBeUtf8TextEndingInTheirOneNul) {
   }
 }
 
+// lcm-gen reads any non-zero byte as true and writes it back as 1: a boolean
+// byte must be 0 or 1 for a message to mean one thing.
+TEST(DecoderBounds, BooleansAreZeroOrOne) {
+  velocity_command_t command;
+  command.done = true;
+  std::vector<uint8_t> bytes(static_cast<size_t>(command.getEncodedSize()));
+  command.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  velocity_command_t decoded;
+  ASSERT_FALSE(lcm::DecodeProblem(bytes.data(), static_cast<int>(bytes.size()), &decoded).has_value());
+  EXPECT_TRUE(decoded.done);
+  bytes.back() = 2;
+  const std::optional<std::string> problem = lcm::DecodeProblem(bytes.data(), static_cast<int>(bytes.size()), &decoded);
+  ASSERT_TRUE(problem.has_value());
+  EXPECT_EQ(*problem, "boolean at byte " + std::to_string(bytes.size() - 1) + " is 2, not 0 or 1");
+}
+
 // What we send that quotes what we were given (a path, a URL, a controller's
 // error) goes through WireText::Of: any bytes come out as a string the
 // decoders accept, cut between characters.

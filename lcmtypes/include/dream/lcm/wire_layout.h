@@ -22,6 +22,9 @@ class WireLayout {
   /// An int64 naming the sending agent (the message's agent_id), reported
   /// with a bad message when the bytes reach that far.
   WireLayout& AgentId();
+  /// An LCM boolean: one byte, 0 or 1 (lcm-gen would read 2 as true and
+  /// write it back as 1).
+  WireLayout& Boolean();
   /// An int32 element count that must be in 0..max; the Array()s after it use it.
   WireLayout& Count(int32_t max);
   /// Elements of `element_bytes` each, as many as the latest Count() says.
@@ -44,7 +47,7 @@ class WireLayout {
   int64_t MinimumBytes() const;
 
  private:
-  enum class Kind { kFixed, kAgentId, kCount, kArray, kString };
+  enum class Kind { kFixed, kAgentId, kBoolean, kCount, kArray, kString };
   struct Field {
     Kind kind;
     int64_t bytes_or_max;
