@@ -317,6 +317,16 @@ class Mat4Layout {
     for (int index = 0; offset < bytes_.size(); ++index) offset = CheckVariable(index, offset);
   }
 
+  /// Whether libmatio's v4 reader would take the first word for a type code
+  /// (0..4052 in either byte order) and go on to read and allocate: it falls
+  /// back to v4 when a v7.3 file's HDF5 part does not open.
+  static bool ReadableAsV4(const std::string& bytes) {
+    if (bytes.size() < 4) return false;
+    uint32_t word = 0;
+    std::memcpy(&word, bytes.data(), 4);
+    return word <= 4052 || __builtin_bswap32(word) <= 4052;
+  }
+
  private:
   static constexpr uint64_t kHeaderBytes = 20;
   static constexpr int32_t kMaxNameBytes = 4096;  // MATLAB names have at most 63 characters
@@ -422,8 +432,13 @@ NpyArray ReadMatMatrix(const std::string& path, const std::string& variable, int
     }
     if (IsMat5(bytes)) {
       Mat5Layout(path, bytes).Check(variable);
-    } else if (!IsMat73(bytes)) {
+    } else if (!IsMat73(bytes) || Mat4Layout::ReadableAsV4(bytes)) {
       Mat4Layout(path, bytes).Check();
+    }
+    constexpr size_t kHdf5Offset = 512;  // v7.3: a 512-byte user block (the MATLAB header), then HDF5
+    if (IsMat73(bytes) &&
+        (bytes.size() < kHdf5Offset + 8 || bytes.compare(kHdf5Offset, 8, "\x89HDF\r\n\x1a\n") != 0)) {
+      throw std::runtime_error(path + ": a MATLAB 7.3 MAT-file header, but no HDF5 data at byte 512 (damaged or cut short?)");
     }
   }
   std::unique_ptr<mat_t, MatCloser> mat(Matio::Get().Open(path.c_str(), MAT_ACC_RDONLY));

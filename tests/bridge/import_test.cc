@@ -398,6 +398,32 @@ TEST(MatFileTest, ForgedCompressedHeadersAreRefusedBeforeLibmatioReadsThem) {
       std::runtime_error);
 }
 
+// A v7.3 header must have HDF5 behind it: when the HDF5 part does not open,
+// libmatio reads the file as v4 from byte 0 (a fuzzed file whose first bytes
+// were zeros made it allocate 1.8 GB).
+TEST(MatFileTest, V73HeaderWithoutHdf5IsRefused) {
+  const std::string dir = testing::NewFolder("mat_v73");
+  std::string v73_header = "MATLAB 7.3 MAT-file, made by a test";
+  v73_header.resize(124, ' ');
+  v73_header += std::string("\x00\x02IM", 4);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {std::string(4, '\0') + v73_header.substr(4) + std::string(64, 'x'), "v4 variable 0 at byte 0 has "},
+      {v73_header + std::string(600, '\0'), "a MATLAB 7.3 MAT-file header, but no HDF5 data at byte 512"},
+      {v73_header, "a MATLAB 7.3 MAT-file header, but no HDF5 data at byte 512"},
+  };
+  for (const auto& [bytes, problem] : cases) {
+    SCOPED_TRACE(problem);
+    const std::string path = dir + "/forged.mat";
+    testing::WriteText(path, bytes);
+    try {
+      ReadMatMatrix(path, "dream_result", 100);
+      ADD_FAILURE() << "read a forged v7.3 file";
+    } catch (const std::runtime_error& e) {
+      EXPECT_THAT(e.what(), HasSubstr(path + ": " + problem));
+    }
+  }
+}
+
 TEST_F(ImportTest, BadResultFilesAreRefusedByNameAndNothingIsWritten) {
   const NpyArray good = testing::PerfectLabResult(*export_dir_);
   const int64_t rows = good.shape[0];
