@@ -224,7 +224,8 @@ class Mat5Layout {
       Fail(what + " says it inflates to " + std::to_string(matrix.size) + " bytes; its " + std::to_string(element.size) +
            " bytes cannot hold that much");
     }
-    (void)inner.CheckHeader(matrix, what, std::min<uint64_t>(inflated.size(), matrix.data + matrix.size));
+    (void)inner.CheckHeader(matrix, what + " (inflated, first " + std::to_string(inflated.size()) + " bytes)",
+                            std::min<uint64_t>(inflated.size(), matrix.data + matrix.size));
   }
 
   /// The first three parts of a matrix.
@@ -242,19 +243,18 @@ class Mat5Layout {
   /// what was inflated), of the types and sizes every MAT-file v5 array has
   /// (flags: miUINT32 x 2; dimensions: miINT32, 4 bytes each, two or more; name: miINT8).
   Header CheckHeader(const Mat5Element& matrix, const std::string& what, uint64_t limit) const {
-    const std::string within = " within the first " + std::to_string(limit - matrix.data) + " bytes of " + what;
     Header header;
-    header.flags = Tag(matrix.data, "the array flags" + within, limit, false);
+    header.flags = Tag(matrix.data, what + ": its array flags", limit, false);
     if (header.flags.type != kMiUint32 || header.flags.size != 8) {
       Fail(what + ": its array flags are " + std::to_string(header.flags.size) + " bytes of type " +
            std::to_string(header.flags.type) + ", not 8 bytes of miUINT32 (6)");
     }
-    header.dims = Tag(header.flags.end, "the dimensions" + within, limit, false);
+    header.dims = Tag(header.flags.end, what + ": its dimensions", limit, false);
     if (header.dims.type != kMiInt32 || header.dims.size % 4 != 0 || header.dims.size < 8) {
       Fail(what + ": its dimensions are " + std::to_string(header.dims.size) + " bytes of type " +
            std::to_string(header.dims.type) + ", not miINT32 (5), 4 bytes for each of two or more");
     }
-    header.name = Tag(header.dims.end, "the name" + within, limit, false);
+    header.name = Tag(header.dims.end, what + ": its name", limit, false);
     if (header.name.type != kMiInt8) {
       Fail(what + ": its name has type " + std::to_string(header.name.type) + ", not miINT8 (1)");
     }
