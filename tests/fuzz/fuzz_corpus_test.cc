@@ -53,6 +53,8 @@ TEST(FuzzCorpusTest, RunLogs) { EXPECT_GE(Replay("run_log", RunLogTarget), 3u); 
 
 TEST(FuzzCorpusTest, LabResults) { EXPECT_GE(Replay("lab_result", LabResultTarget), 5u); }
 
+TEST(FuzzCorpusTest, LabRows) { EXPECT_GE(Replay("lab_rows", LabRowsTarget), 2u); }
+
 TEST(FuzzCorpusTest, LcmMessages) { EXPECT_GE(Replay("lcm_message", LcmMessageTarget), 4u); }
 
 TEST(FuzzCorpusTest, RunConfigsAndTheShippedOnes) {

@@ -16,6 +16,9 @@ namespace dream::fuzz {
 void RunLogTarget(const uint8_t* data, size_t size);
 /// A lab result: the first byte picks .npy (even) or .mat (odd), the rest is the file.
 void LabResultTarget(const uint8_t* data, size_t size);
+/// The rows of a lab result (.npy bytes) against a fixed 8-robot export:
+/// ParseLabResult and the lab verifier's rules on what it gives.
+void LabRowsTarget(const uint8_t* data, size_t size);
 /// An LCM datagram: the first byte picks one of the seven dream types, the
 /// rest is the message; also the radio payload codecs.
 void LcmMessageTarget(const uint8_t* data, size_t size);
