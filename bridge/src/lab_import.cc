@@ -1,4 +1,3 @@
-#include "dream/node/file_text.h"
 #include "dream/bridge/lab_import.h"
 
 #include <cmath>
@@ -12,6 +11,8 @@
 #include "dream/bridge/lab_replay_world.h"
 #include "dream/bridge/mat_file.h"
 #include "dream/bridge/pre_validation.h"
+#include "dream/node/file_text.h"
+#include "dream/node/json_text.h"
 #include "dream/node/output_folder.h"
 #include "dream/node/output_folder_lock.h"
 #include "dream/bridge/submission_format.h"
@@ -433,7 +434,7 @@ ImportedRun ImportLabRun(const std::string& result_path, const std::string& expo
   lab_json["max_step_s"] = lab.max_step_s;
   lab_json["clock_steps_back"] = lab.clock_steps_back;
   summary["lab"] = lab_json;
-  imported.summary_json = summary.dump(2) + "\n";
+  imported.summary_json = sim::JsonText(summary) + "\n";
   out.WriteFile("summary.json", imported.summary_json);
   sim::TrajectoryPicture::Render(log, sim::ArenaOverlays{}, imported.picture_path, sim::RenderFormat::kPng);
   return imported;

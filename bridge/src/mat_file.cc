@@ -103,6 +103,9 @@ constexpr size_t kMat5HeaderSize = 128;
 // How much of a compressed matrix is inflated to check its header: MATLAB's
 // names have at most 63 characters and a lab result has two dimensions.
 constexpr size_t kPeekBytes = 4096;
+// zlib's best: about 1032 bytes come out of one, so a compressed part can
+// never inflate past this many times its size.
+constexpr uint64_t kMaxDeflateRatio = 1032;
 
 /// Bytes per element of a numeric v5 data type, 0 for the others.
 size_t NumericSize(uint32_t type) {
@@ -219,7 +222,6 @@ class Mat5Layout {
     if (matrix.type != kMiMatrix) {
       Fail(what + " holds data type " + std::to_string(matrix.type) + ", not a matrix (14)");
     }
-    constexpr uint64_t kMaxDeflateRatio = 1032;  // zlib's best: about 1032 bytes from one
     if (matrix.size > element.size * kMaxDeflateRatio) {
       Fail(what + " says it inflates to " + std::to_string(matrix.size) + " bytes; its " + std::to_string(element.size) +
            " bytes cannot hold that much");
@@ -462,9 +464,9 @@ NpyArray ReadMatMatrix(const std::string& path, const std::string& variable, int
     fail(declared + ": more than the " + std::to_string(max_values) + " values a result of this export can have");
   }
   // A value takes a byte of the file at least (MATLAB may store doubles as
-  // smaller integers); zlib packs at most about 1032 bytes into one.
+  // smaller integers); compressed, kMaxDeflateRatio bytes at most from one.
   const bool compressed = var->compression == MAT_COMPRESSION_ZLIB || Matio::Get().GetVersion(mat.get()) == MAT_FT_MAT73;
-  const uint64_t holdable = compressed ? file_size * 1032 / sizeof(double) : file_size;
+  const uint64_t holdable = compressed ? file_size * kMaxDeflateRatio / sizeof(double) : file_size;
   if (count > holdable) {
     fail(declared + ", but the file's " + std::to_string(file_size) + " bytes cannot hold " + std::to_string(count) +
          " values (damaged or cut short?)");

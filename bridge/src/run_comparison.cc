@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "dream/lcm/wire_text.h"
+#include "dream/node/json_text.h"
 #include "dream/node/output_folder.h"
 #include "dream/bridge/run_track.h"
 #include "dream/config/run_config.h"
@@ -99,7 +101,7 @@ std::string Closest(const ComparedRun& run) {
 std::string MetricText(const nlohmann::ordered_json& value) {
   if (value.is_number()) return Format("%.6g", value.get<double>());
   if (value.is_array()) return std::to_string(value.size()) + " entries";
-  return value.dump();
+  return sim::JsonText(value, -1);
 }
 
 RunComparison Compare(const std::string& first_dir, const std::string& second_dir, const ComparedFolders& runs) {
@@ -232,11 +234,13 @@ RunComparison CompareRunsAndWrite(const std::string& first_dir, const std::strin
   RunComparison comparison = Compare(first_dir, second_dir, runs);
   const sim::OutputFolder out(out_dir);
   const std::string picture = out.PathOf("comparison.png");
-  out.WriteFile("comparison.json", comparison.Json().dump(2) + "\n");
+  out.WriteFile("comparison.json", sim::JsonText(comparison.Json()) + "\n");
+  // cairo draws UTF-8 only: a folder name that is not (Latin-1) would cost the picture.
+  const auto shown = [](const std::string& folder) { return lcm::WireText::Of(folder, folder.size() * 2); };
   sim::ComparisonPicture::Render(
       runs.first.log, runs.second.log, picture,
-      {"dashed: " + first_dir + " (" + std::to_string(comparison.first.steps) + " steps), solid: " + second_dir +
-           " (" + std::to_string(comparison.second.steps) + " steps)",
+      {"dashed: " + shown(first_dir) + " (" + std::to_string(comparison.first.steps) + " steps), solid: " +
+           shown(second_dir) + " (" + std::to_string(comparison.second.steps) + " steps)",
        "tracking error: RMS " + Cm(comparison.rms_m) + " cm, max " + Cm(comparison.max_m) + " cm (robot " +
            std::to_string(comparison.max_robot) + ", step " + std::to_string(comparison.max_step) + ")"});
   return comparison;

@@ -13,6 +13,7 @@
 #include "dream/bridge/flat_python_runtime.h"
 #include "dream/bridge/npy_file.h"
 #include "dream/bridge/obstacle_schedule.h"
+#include "dream/node/json_text.h"
 #include "dream/node/output_folder.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/bridge/submission_params.h"
@@ -110,7 +111,7 @@ ControllerFiles ReadControllerFiles(const config::RunConfig& config, const std::
   // name the export's copy of the config.
   spec["module"] = files.module_name;
   spec["config_file"] = "config.yaml";
-  files.spec_json = spec.dump();
+  files.spec_json = sim::JsonText(spec, -1);
   files.runtime = runtime.files();
   return files;
 }
@@ -324,7 +325,7 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
   }
   out.WriteFile("config.yaml", config_text);
   KeepControllerModule(config, out);
-  out.WriteFile("export.json", manifest.dump(2) + "\n");
+  out.WriteFile("export.json", sim::JsonText(manifest) + "\n");
   out.WriteFile("UPLOAD.txt", text);
   summary.out_dir = out.dir();
   summary.upload_dir = upload.dir();

@@ -23,6 +23,7 @@
 #include "dream/bridge/lab_import.h"
 #include "dream/bridge/lab_replay_world.h"
 #include "dream/bridge/metrics_json.h"
+#include "dream/node/json_text.h"
 #include "dream/node/output_folder.h"
 #include "dream/bridge/run_comparison.h"
 #include "dream/bridge/submission_exporter.h"
@@ -305,7 +306,7 @@ int RunCheckSubmission(const CheckSubmissionArgs& args) {
     std::cout << "\nnot compared: the simulated run " << (run_dir.empty() ? "(unknown)" : run_dir)
               << " is not there (pass --run DIR)\n";
   }
-  out.WriteFile("check.json", check.dump(2) + "\n");
+  out.WriteFile("check.json", sim::JsonText(check) + "\n");
   std::cout << "written: " << out.PathOf("check.json") << "\n";
   if (verdict == "rejected") return kExitRejected;
   if (verdict != "clean" || !warnings.empty()) {

@@ -14,6 +14,7 @@
 
 #include "command_line.h"
 #include "dream/node/atomic_file.h"
+#include "dream/node/json_text.h"
 #include "dream/node/output_folder_lock.h"
 #include "commands.h"
 #include "process_group.h"
@@ -93,7 +94,7 @@ int MergeAgentReports(const std::string& out_dir, int num_robots, int sim_exit) 
               << "report above could not know; summary.json verdict_reasons)\n";
   }
   try {
-    sim::WriteFileAtomically(summary_path, summary.dump(2) + "\n");
+    sim::WriteFileAtomically(summary_path, sim::JsonText(summary) + "\n");
   } catch (const std::exception& e) {
     spdlog::error("{}", e.what());
     return kExitRunFailed;

@@ -12,6 +12,7 @@
 #include "dream/lcm/channels.h"
 #include "dream/lcm/log_reader.h"
 #include "dream/lcm/run_id.h"
+#include "dream/node/json_text.h"
 #include "message_json.h"
 #include "shared_options.h"
 
@@ -153,7 +154,7 @@ int RunLogEcho(const std::string& path_given, const std::string& channel_regex, 
                                      {"utime", record.utime},
                                      {"type", message.type()},
                                      {"message", message.fields()}};
-      std::cout << line.dump() << '\n';
+      std::cout << sim::JsonText(line, -1) << '\n';
       ++printed;
     } else if (message.outcome() == MessageJson::Outcome::kUndecodable || IsDreamDataChannel(record.channel)) {
       // Reported and passed over: one damaged message must not hide the rest.

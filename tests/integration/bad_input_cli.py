@@ -9,8 +9,11 @@ command was given (refused_out*) was created.
 Usage: netns.sh bad_input_cli.py --dream BIN --source DIR
 """
 
+import json
 import os
 import re
+import shutil
+import subprocess
 
 from dreamtest import arguments, check, config_with, fail, main, read_events, require_private_netns
 
@@ -224,6 +227,25 @@ def test(ctx):
         if any(os.path.exists(root) for root in refused_roots):
             problems.append(f"{name}: the refused command created its output folder")
         print(f"{name}: exit {code}: {first}")
+
+    # A folder name that is not UTF-8 (Latin-1 "r\xe9un") is no reason to lose an output:
+    # comparison.json holds U+FFFD for the byte, the picture a '?'.
+    latin1_run = os.fsdecode(os.fsencode(ctx.path("good_run")) + b"_r\xe9un")
+    shutil.copytree(good_run, latin1_run)
+    compare_out = ctx.path("latin1_compare")
+    # dream prints the path as given (bytes), so the output is not read as UTF-8 here.
+    done = subprocess.run([dream, "compare", good_run, latin1_run, "--out", compare_out],
+                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=60)
+    code = done.returncode
+    if code != 0:
+        problems.append(f"compare with a Latin-1 folder name: exit {code}: {done.stdout[-300:]!r}")
+    else:
+        with open(os.path.join(compare_out, "comparison.json"), encoding="utf-8") as f:
+            folders = [run["folder"] for run in json.load(f).values() if isinstance(run, dict) and "folder" in run]
+        if not any("\ufffd" in folder for folder in folders):
+            problems.append(f"compare with a Latin-1 folder name: comparison.json folders {folders!r}")
+        if not os.path.exists(os.path.join(compare_out, "comparison.png")):
+            problems.append("compare with a Latin-1 folder name: no comparison.png")
     check(not problems, "; ".join(problems))
 
 

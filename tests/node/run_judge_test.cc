@@ -111,5 +111,20 @@ TEST(RunJudgeTest, SummaryHasTheVerdictAndItsReasons) {
   EXPECT_THAT(summary["robotarium_report"].get<std::string>(), HasSubstr("will run on the Robotarium"));
 }
 
+// A reason quoting a path with a byte that is not UTF-8 (a Latin-1 folder
+// name) must not cost the run its summary: JsonText writes U+FFFD for it.
+TEST(RunJudgeTest, SummaryOfAReasonThatIsNotUtf8IsStillWritten) {
+  StillRun run(5);
+  run.outcome.end = RunOutcome::End::kFailed;
+  run.outcome.reason = "cannot write /tmp/r\xE9sultats/run.lcmlog";
+  const nlohmann::ordered_json summary = RunSummary(run.config, run.outcome, run.world, "run.lcmlog",
+                                                    JudgeRun(run.config, run.outcome, run.world));
+  EXPECT_THROW((void)summary.dump(), nlohmann::json::type_error);  // what the writers did before
+  const std::string text = RunSummaryJson(run.config, run.outcome, run.world, "run.lcmlog",
+                                          JudgeRun(run.config, run.outcome, run.world));
+  EXPECT_THAT(text, HasSubstr("/tmp/r\xEF\xBF\xBDsultats/run.lcmlog"));
+  EXPECT_EQ(nlohmann::json::parse(text)["run"], "judged");
+}
+
 }  // namespace
 }  // namespace dream::sim

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "dream/lcm/run_id.h"
+#include "dream/node/json_text.h"
 #include "dream/node/true_pose_recording.h"
 #include "dream/world/realistic_world.h"
 #include "dream/world/run_report.h"
@@ -26,7 +27,7 @@ void SetSummaryVerdict(nlohmann::ordered_json* summary, const RunJudgement& judg
 
 std::string RunSummaryJson(const config::RunConfig& config, const RunOutcome& outcome, const World& world,
                            const std::string& log_file_name, const RunJudgement& judgement) {
-  return RunSummary(config, outcome, world, log_file_name, judgement).dump(2) + "\n";
+  return JsonText(RunSummary(config, outcome, world, log_file_name, judgement)) + "\n";
 }
 
 nlohmann::ordered_json RunSummary(const config::RunConfig& config, const RunOutcome& outcome, const World& world,
