@@ -10,6 +10,7 @@
 #include "dream/bridge/metrics_json.h"
 #include "dream/bridge/pre_validation.h"
 #include "dream/node/atomic_file.h"
+#include "dream/node/json_text.h"
 #include "dream/node/output_folder.h"
 #include "dream/node/run_judge.h"
 #include "dream/node/run_summary.h"
@@ -201,7 +202,7 @@ RunResult RunSession::Report(const Stepped& stepped, const std::string& dir) {
   const nlohmann::ordered_json goal = summary["goal"];  // a copy: adding world fields may move the summary's entries
   for (auto it = stepped.world_fields.begin(); it != stepped.world_fields.end(); ++it) summary[it.key()] = it.value();
   try {
-    sim::WriteFileAtomically(dir + "/summary.json", summary.dump(2) + "\n");
+    sim::WriteFileAtomically(dir + "/summary.json", sim::JsonText(summary) + "\n");
     result.summary_written = true;
   } catch (const std::exception& e) {
     // A full disk: say so once, and that the run's outputs are incomplete.
