@@ -7,6 +7,7 @@ Needs lcm-gen's Python types (DREAM_BUILD_DIR/python); exit 77 (skipped) without
 """
 
 import os
+import re
 import struct
 import sys
 import unittest
@@ -193,6 +194,15 @@ class AgentHostTest(unittest.TestCase):
         self.assertEqual(steps_of("DREAM_CMD_0"), [1, 2, 3, 4])
         self.assertEqual(steps_of("DREAM_CMD_1"), [1, 2])
         self.assertEqual(list(self.host.faults()), [1])
+
+    def test_the_detail_limit_is_the_worlds(self):
+        # agent_host.MAX_DETAIL_BYTES mirrors lcm::MessageLimits::kDetailBytes (the runtime stands alone).
+        header = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "lcmtypes", "include",
+                              "dream", "lcm", "message_limits.h")
+        with open(header, encoding="utf-8") as f:
+            declared = re.search(r"kDetailBytes\s*=\s*(\d+)", f.read())
+        self.assertIsNotNone(declared)
+        self.assertEqual(dream.agent_host.MAX_DETAIL_BYTES, int(declared.group(1)))
 
     def test_a_fault_text_is_sent_as_the_world_accepts_it(self):
         # UTF-8 without NUL, at most MAX_DETAIL_BYTES, cut between characters: the
