@@ -390,7 +390,8 @@ TEST(ControllerFactoryTest, UnknownKindsAndBadSectionsAreClearErrors) {
             std::string::npos);
   EXPECT_NE(error_of("controller: {kind: go_to_goal, goals: [[0, 0]]}\n", 2).find("one [x, y] goal per robot (2)"),
             std::string::npos);
-  EXPECT_NE(error_of("controller: {kind: go_to_goal, goals: [[0, 0]], gain: -1}\n", 1).find("gain must be > 0"),
+  EXPECT_NE(error_of("controller: {kind: go_to_goal, goals: [[0, 0]], gain: -1}\n", 1)
+                .find("controller.gain: must be > 0, got -1"),
             std::string::npos);
   EXPECT_EQ(error_of("controller: {kind: go_to_goal, goals: [[0, 0], [1, 0]]}\n", 2), "");
   const std::string base = "controller:\n  kind: go_to_goal\n  goals: [[0, 0], [1, 0]]\n";

@@ -214,8 +214,9 @@ TEST(HrvoCircleConfigTest, DefaultsFollowAppendixBAndBadKeysAreClearErrors) {
   EXPECT_EQ(parts.radio.period_steps, (std::vector<int>{30, 30, 30}));
   std::string error = FactoryError("controller: {kind: hrvo_circle, radius_m: 1.2}\n", 10);
   EXPECT_NE(error.find("leaves the arena"), std::string::npos) << error;
-  error = FactoryError("controller: {kind: hrvo_circle, tolerance_m: 0}\n", 10);
-  EXPECT_NE(error.find("tolerance_m must be > 0"), std::string::npos) << error;
+  // A params rule names the key and its line.
+  error = FactoryError("controller:\n  kind: hrvo_circle\n  tolerance_m: 0\n", 10);
+  EXPECT_EQ(error, "circle.yaml:3: controller.tolerance_m: must be > 0, got 0");
   error = FactoryError("controller: {kind: hrvo_circle, formations: 0}\n", 10);
   EXPECT_NE(error.find("formations: must be in 1..100"), std::string::npos) << error;
 }

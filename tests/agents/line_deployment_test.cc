@@ -231,8 +231,8 @@ TEST(LineDeploymentConfigTest, AdjacencyMustBeSquareSymmetricAndConnectedAndErro
   EXPECT_NE(error.find("the matrix must be 2x2"), std::string::npos) << error;
 
   // Own keys are checked too.
-  error = FactoryError("controller: {kind: line_deployment, spacing_m: -0.4}\n", 6);
-  EXPECT_NE(error.find("spacing_m must be > 0"), std::string::npos) << error;
+  error = FactoryError("controller:\n  kind: line_deployment\n  gain: 1\n  spacing_m: -0.4\n", 6);
+  EXPECT_EQ(error, "line.yaml:4: controller.spacing_m: must be > 0, got -0.4");
   error = FactoryError("controller: {kind: line_deployment, spacing: 0.4}\n", 6);
   EXPECT_NE(error.find("unknown key for kind line_deployment"), std::string::npos) << error;
   error = FactoryError("controller: {kind: line_deployment, hrvo: {variant: magic}}\n", 6);

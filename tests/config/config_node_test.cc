@@ -201,5 +201,27 @@ TEST(ConfigNodeTest, GetChoiceGivesTheNamedValueOrTheFallbackAndNamesTheAllowedN
             "test.yaml:2: mode: unknown path mode 'bounce'; allowed: loop, ping_pong");
 }
 
+TEST(ConfigNodeTest, FailAtPointsAtTheKeyWhenItIsThereElseAtTheMap) {
+  const std::string text = "robot:\n  kind: x\n  gain: -1\n";
+  const auto fail_at = [](const std::string& key) {
+    return [key](const ConfigNode& root) { root.Required("robot").FailAt(key, "bad"); };
+  };
+  EXPECT_EQ(ReadError(text, fail_at("gain")), "test.yaml:3: robot.gain: bad");
+  EXPECT_EQ(ReadError(text, fail_at("speed")), "test.yaml:2: robot: bad");
+}
+
+// A params struct's IsValid() message starts with the field at fault.
+TEST(ConfigNodeTest, FailAtFieldNamesTheFieldsKeyAndLineOrKeepsTheWholeMessage) {
+  const std::string text = "robot:\n  kind: x\n  gain: -1\n";
+  const auto fail_at_field = [](const std::string& error) {
+    return [error](const ConfigNode& root) { root.Required("robot").FailAtField(error); };
+  };
+  EXPECT_EQ(ReadError(text, fail_at_field("gain must be > 0, got -1")), "test.yaml:3: robot.gain: must be > 0, got -1");
+  // A default value at fault (no such key here), or a message about no one field.
+  EXPECT_EQ(ReadError(text, fail_at_field("tolerance_m must be > 0, got 0")),
+            "test.yaml:2: robot: tolerance_m must be > 0, got 0");
+  EXPECT_EQ(ReadError(text, fail_at_field("gain")), "test.yaml:2: robot: gain");
+}
+
 }  // namespace
 }  // namespace dream::config

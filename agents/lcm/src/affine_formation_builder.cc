@@ -109,9 +109,9 @@ AffineFormationBuilder::AffineFormationBuilder(const ConfigNode& section, int nu
       message.replace(pos, std::string("nominal_m").size(), "nominal_positions");
     }
     if (error.rfind("weights:", 0) == 0) radio.Required("graph").Fail("stress " + message);
-    if (error.rfind("leaders:", 0) == 0) (radio.Has("leaders") ? radio.Required("leaders") : radio).Fail(message);
+    if (error.rfind("leaders:", 0) == 0) radio.FailAt("leaders", message);
     if (error.rfind("nominal_m:", 0) == 0) nominal.Fail(message.substr(std::string("nominal_positions: ").size()));
-    (section.Has("equilibrium_tolerance_m") ? section.Required("equilibrium_tolerance_m") : section).Fail(message);
+    section.FailAt("equilibrium_tolerance_m", message);
   }
   formation_ = std::make_unique<StressFormation>(formation);
 
@@ -142,7 +142,7 @@ AffineFormationBuilder::AffineFormationBuilder(const ConfigNode& section, int nu
     leader_.gain = leader.GetDouble("gain", leader_.gain);
     leader_.max_speed_mps = leader.GetDouble("max_speed_mps", leader_.max_speed_mps);
   }
-  if (!leader_.IsValid(&error)) (leader.IsDefined() ? leader : section).Fail(error);
+  if (!leader_.IsValid(&error)) (leader.IsDefined() ? leader : section).FailAtField(error);
 
   follower_.time_step_s = time_step_s;
   const ConfigNode follower = section.Optional("follower");
@@ -185,7 +185,7 @@ AffineFormationBuilder::AffineFormationBuilder(const ConfigNode& section, int nu
         metrics_.obstacle_pairs.push_back({pair[0].AsInt32(), pair[1].AsInt32()});
       }
     }
-    if (!metrics_.IsValid(&error)) metrics.Fail(error);
+    if (!metrics_.IsValid(&error)) metrics.FailAtField(error);
   }
 }
 

@@ -37,14 +37,10 @@ std::vector<int> ReadPerRobot(const ConfigNode& node, int num_robots, int minimu
   return values;
 }
 
-// IsValid()'s messages start with the field at fault: name that key and its line.
 template <typename Params>
 void Validate(const ConfigNode& node, const Params& params) {
   std::string error;
-  if (params.IsValid(&error)) return;
-  const std::string field = error.substr(0, error.find(' '));
-  if (node.Has(field)) node.Required(field).Fail(error.substr(field.size() + 1));
-  node.Fail(error);
+  if (!params.IsValid(&error)) node.FailAtField(error);
 }
 
 Eigen::MatrixXd ReadMatrix(const ConfigNode& node) {
@@ -154,7 +150,7 @@ void ReadRadio(const ConfigNode& node, int num_robots, bool graph_must_connect, 
       // directed stress weights, which need not be symmetric in general.
       CommunicationGraph(radio->graph, num_robots, graph_must_connect && kind == "graph", graph_must_connect);
     } catch (const std::invalid_argument& e) {
-      (node.Has("graph") ? node.Required("graph") : node).Fail(e.what());
+      node.FailAt("graph", e.what());
     }
     if (kind == "role") {
       if (node.Has("leaders")) {

@@ -58,7 +58,7 @@ GoToGoalBuilder::GoToGoalBuilder(const config::ConfigNode& section, int num_robo
     params.max_speed_mps = section.GetDouble("max_speed_mps", params.max_speed_mps);
     params.tolerance_m = section.GetDouble("tolerance_m", params.tolerance_m);
     std::string error;
-    if (!params.IsValid(&error)) section.Fail(error);
+    if (!params.IsValid(&error)) section.FailAtField(error);
     params_.push_back(params);
   }
 }

@@ -57,7 +57,7 @@ HrvoCircleBuilder::HrvoCircleBuilder(const config::ConfigNode& section, int num_
   CircleFormationParams check = params_;
   check.goals_m = {Eigen::Vector2d::Zero()};
   std::string error;
-  if (!check.IsValid(&error)) section.Fail(error);
+  if (!check.IsValid(&error)) section.FailAtField(error);
 }
 
 std::unique_ptr<Robot> HrvoCircleBuilder::MakeRobot(int robot_id, const RobotParams& params) const {

@@ -24,7 +24,7 @@ HrvoRobotParams ReadHrvoRobotParams(const config::ConfigNode& section, HrvoRobot
   params.hrvo.check_boundaries = node.GetBool("check_boundaries", params.hrvo.check_boundaries);
   params.hrvo.boundary_horizon_s = node.GetDouble("boundary_horizon_s", params.hrvo.boundary_horizon_s);
   std::string error;
-  if (!params.IsValid(&error)) node.Fail(error);
+  if (!params.IsValid(&error)) node.FailAtField(error);
   return params;
 }
 

@@ -44,7 +44,7 @@ LineDeploymentBuilder::LineDeploymentBuilder(const config::ConfigNode& section, 
   }
   params_.settle_updates = static_cast<int>(settle);
   std::string error;
-  if (!params_.IsValid(&error)) section.Fail(error);
+  if (!params_.IsValid(&error)) section.FailAtField(error);
   converged_m_ = section.GetDouble("converged_m", converged_m_);
   if (!(converged_m_ > 0.0)) section.Required("converged_m").Fail("must be > 0, got " + std::to_string(converged_m_));
   hrvo_ = ReadHrvoRobotParams(section);

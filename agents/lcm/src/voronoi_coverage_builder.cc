@@ -1,18 +1,6 @@
 #include "dream/agent_host/voronoi_coverage_builder.h"
 
 namespace dream::agents {
-namespace {
-
-// The params' messages start with the field's name, which is also its key:
-// point at that key's line when the config has it.
-[[noreturn]] void FailAtKey(const config::ConfigNode& section, const std::string& error) {
-  const std::string key = error.substr(0, error.find(' '));
-  if (section.Has(key)) section.Required(key).Fail(error);
-  section.Fail(error);
-}
-
-}  // namespace
-
 AgentPartsConfig VoronoiCoverageBuilder::DefaultParts(int num_robots) {
   AgentPartsConfig parts = AgentPartsConfig::Defaults(num_robots);
   SensorConfig obstacle = SensorConfig::Every(SensorConfig::Kind::kObstacle, num_robots, 1);
@@ -39,7 +27,7 @@ VoronoiCoverageBuilder::VoronoiCoverageBuilder(const config::ConfigNode& section
   params_.radio_rounds_before_moving =
       section.GetInt32("radio_rounds_before_moving", params_.radio_rounds_before_moving);
   std::string error;
-  if (!params_.IsValid(&error)) FailAtKey(section, error);
+  if (!params_.IsValid(&error)) section.FailAtField(error);
 
   metrics_.arena_min_m = cell.arena_min_m;
   metrics_.arena_max_m = cell.arena_max_m;
@@ -50,7 +38,7 @@ VoronoiCoverageBuilder::VoronoiCoverageBuilder(const config::ConfigNode& section
   }
   metrics_.still_speed_mps = section.GetDouble("still_speed_mps", metrics_.still_speed_mps);
   metrics_.still_window_steps = section.GetInt32("still_window_steps", metrics_.still_window_steps);
-  if (!metrics_.IsValid(&error)) FailAtKey(section, error);
+  if (!metrics_.IsValid(&error)) section.FailAtField(error);
 }
 
 std::unique_ptr<Robot> VoronoiCoverageBuilder::MakeRobot(int robot_id, const RobotParams& params) const {

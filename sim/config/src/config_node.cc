@@ -317,4 +317,16 @@ std::string ConfigNode::Where() const {
 
 void ConfigNode::Fail(const std::string& message) const { throw ConfigError(Where() + ": " + message); }
 
+void ConfigNode::FailAt(const std::string& key, const std::string& message) const {
+  if (Has(key)) Required(key).Fail(message);
+  Fail(message);
+}
+
+void ConfigNode::FailAtField(const std::string& error) const {
+  const size_t space = error.find(' ');
+  const std::string field = error.substr(0, space);
+  if (space != std::string::npos && Has(field)) Required(field).Fail(error.substr(space + 1));
+  Fail(error);
+}
+
 }  // namespace dream::config

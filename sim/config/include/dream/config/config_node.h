@@ -100,6 +100,13 @@ class ConfigNode {
 
   /// A ConfigError for this node: "file:line: key: message".
   [[noreturn]] void Fail(const std::string& message) const;
+  /// Fail at `key`'s line when this map has `key`, else here (a default
+  /// value is at fault, or the key's parent is the nearest line).
+  [[noreturn]] void FailAt(const std::string& key, const std::string& message) const;
+  /// For a params struct's IsValid() message, which starts with the field at
+  /// fault ("gain must be > 0, got -1"): "file:line: controller.gain: must be
+  /// > 0, got -1" when this map has that key, else the whole message here.
+  [[noreturn]] void FailAtField(const std::string& error) const;
 
   const std::string& file() const { return file_; }
   const std::string& key() const { return key_; }
