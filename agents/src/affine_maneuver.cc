@@ -34,6 +34,10 @@ AffineTransform AffineKeyframe::Transform() const {
 
 bool AffineManeuverParams::IsValid(std::string* error) const {
   if (keyframes.empty()) return FailParams(error, "keyframes: need at least one keyframe");
+  if (keyframes.size() > kMaxKeyframes) {
+    return FailParams(error, "keyframes: at most " + std::to_string(kMaxKeyframes) + ", got " +
+                                 std::to_string(keyframes.size()));
+  }
   for (size_t k = 0; k < keyframes.size(); ++k) {
     const AffineKeyframe& f = keyframes[k];
     const std::string where = "keyframes[" + std::to_string(k) + "].";

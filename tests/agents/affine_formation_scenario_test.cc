@@ -152,5 +152,30 @@ TEST(AffineFormationConfigTest, OtherMistakesNameTheirKeys) {
   EXPECT_NE(error.find("controller.drive"), std::string::npos) << error;
 }
 
+// The plan is checked before the run: every step of a segment up to 1024
+// steps long, and a longer segment at 1024 evenly spaced steps, so a keyframe
+// at step 10^12 is checked at once (it hung `dream run` before) and a target
+// leaving the arena midway is still found.
+TEST(AffineFormationConfigTest, ManeuversOfAnyLengthAreCheckedWithBoundedWork) {
+  const std::string last = "    - {step: 3550, translation: [0.3, 0.0]}";
+  const config::RunConfig long_plan = Load(Edited(last, "    - {step: 1000000000000, translation: [0.3, 0.0]}"));
+  EXPECT_NO_THROW(ControllerFactory(long_plan.controller, long_plan.num_robots, long_plan.seed));
+  const std::string error = ConfigError(Edited(last, "    - {step: 1000000000000, translation: [3.0, 0.0]}"));
+  EXPECT_NE(error.find("controller.maneuver: at step "), std::string::npos) << error;
+  EXPECT_NE(error.find("is not 0.1 m inside the arena"), std::string::npos) << error;
+  // Robot 0 passes x = 1.5 about 30% of the way through the last segment
+  // (step 2.96e11 of 1e12): found there, not at the segment's end.
+  const long long step = std::stoll(error.substr(error.find("at step ") + 8));
+  EXPECT_GT(step, 2.0e11) << error;
+  EXPECT_LT(step, 4.0e11) << error;
+
+  std::string frames;
+  for (int k = 0; k <= 1000; ++k) frames += "    - {step: " + std::to_string(k) + "}\n";
+  const std::string too_many = ConfigError(Edited("    - {step: 0}                                    "
+                                                  "# stand still while the followers arrive\n",
+                                                  frames));
+  EXPECT_NE(too_many.find("controller.maneuver: at most 1000 keyframes, got 1008"), std::string::npos) << too_many;
+}
+
 }  // namespace
 }  // namespace dream::agents

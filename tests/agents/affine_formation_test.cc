@@ -200,6 +200,13 @@ TEST(AffineManeuver, RejectsUnorderedOrDegenerateKeyframes) {
   params.keyframes[0].scale_y = 0.0;
   EXPECT_FALSE(params.IsValid(&error));
   EXPECT_NE(error.find("keyframes[0].scale_y"), std::string::npos);
+  // The list is bounded (robots look keyframes up every step).
+  params.keyframes.clear();
+  for (int64_t k = 0; k < int64_t{AffineManeuverParams::kMaxKeyframes}; ++k) params.keyframes.push_back({k});
+  EXPECT_TRUE(params.IsValid(&error)) << error;
+  params.keyframes.push_back({int64_t{AffineManeuverParams::kMaxKeyframes}});
+  EXPECT_FALSE(params.IsValid(&error));
+  EXPECT_EQ(error, "keyframes: at most 1000, got 1001");
 }
 
 TEST(FormationStateMessage, RoundTripsAndRejectsMalformedPayloads) {

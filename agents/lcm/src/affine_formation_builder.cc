@@ -1,12 +1,11 @@
-#include "dream/agents/framework/number_text.h"
 #include "dream/agent_host/affine_formation_builder.h"
 
-#include "dream/agents/experiments/affine_maneuver.h"
-
+#include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "dream/agent_host/hrvo_config.h"
+#include "dream/agents/experiments/affine_maneuver.h"
+#include "dream/agents/framework/number_text.h"
 
 namespace dream::agents {
 namespace {
@@ -22,6 +21,10 @@ Eigen::Vector2d ReadPoint(const ConfigNode& node) {
 AffineManeuverParams ReadManeuver(const ConfigNode& node) {
   if (!node.IsSequence() || node.size() == 0) {
     node.Fail("expected a list of keyframes {step, scale_x, scale_y, rotation_rad, translation}");
+  }
+  if (node.size() > AffineManeuverParams::kMaxKeyframes) {
+    node.Fail("at most " + std::to_string(AffineManeuverParams::kMaxKeyframes) + " keyframes, got " +
+              std::to_string(node.size()));
   }
   AffineManeuverParams maneuver;
   for (size_t k = 0; k < node.size(); ++k) {
@@ -40,13 +43,37 @@ AffineManeuverParams ReadManeuver(const ConfigNode& node) {
   return maneuver;
 }
 
+// The steps CheckPlan looks at: every step of a segment up to this long; a
+// longer one at this many evenly spaced steps. Between two keyframes the
+// shapes passed through do not depend on the segment's length (only how fast
+// they pass), so this is as fine as checking a 1024-step segment at every
+// step, and a keyframe at step 10^12 costs no more than one at 1024.
+constexpr int64_t kChecksPerSegment = 1024;
+
+std::vector<int64_t> StepsToCheck(const AffineManeuver& maneuver) {
+  std::vector<int64_t> steps{0};
+  int64_t from = 0;
+  for (const AffineKeyframe& frame : maneuver.keyframes()) {
+    const int64_t span = frame.step - from;
+    const int64_t count = std::min(span, kChecksPerSegment);
+    for (int64_t k = 1; k <= count; ++k) {
+      // k * span / count without overflow: span < 2^63, count <= 1024.
+      const auto offset = static_cast<int64_t>(static_cast<long double>(span) * k / count);
+      steps.push_back(from + offset);
+    }
+    from = frame.step;
+  }
+  return steps;
+}
+
 // The plan must keep every target inside the arena and apart, or the robots
-// cannot follow it: checked at every step, so a bad keyframe fails before the run.
+// cannot follow it: checked at every step (StepsToCheck for long segments), so
+// a bad keyframe fails before the run.
 void CheckPlan(const ConfigNode& node, const AffineManeuverParams& params, const std::vector<Eigen::Vector2d>& nominal,
                const HrvoParams& arena, double min_spacing_m) {
   const AffineManeuver maneuver(params);
   constexpr double kWallMarginM = 0.1;
-  for (int64_t step = 0; step <= maneuver.last_step(); ++step) {
+  for (const int64_t step : StepsToCheck(maneuver)) {
     const AffineTransform map = maneuver.At(double(step));
     std::vector<Eigen::Vector2d> targets;
     for (const Eigen::Vector2d& r : nominal) targets.push_back(map.Apply(r));

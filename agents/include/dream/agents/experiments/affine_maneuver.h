@@ -25,6 +25,10 @@ struct AffineKeyframe {
 
 /// The leaders' plan: keyframes at strictly increasing steps.
 struct AffineManeuverParams {
+  /// A bound on the list a config may give (a waypoint every 30 steps of the
+  /// lab's 15 minutes fits); robots look keyframes up every step.
+  static constexpr size_t kMaxKeyframes = 1000;
+
   std::vector<AffineKeyframe> keyframes;
   /// False with a message naming the keyframe index and field.
   bool IsValid(std::string* error) const;
