@@ -15,6 +15,10 @@ bool VoronoiCellParams::IsValid(std::string* error) const {
       !CheckArena(error, arena_min_m, arena_max_m)) {
     return false;
   }
+  if (disc_sides > kMaxDiscSides) {
+    return FailParams(error, "disc_sides must be in 8.." + std::to_string(kMaxDiscSides) + ", got " +
+                                 std::to_string(disc_sides));
+  }
   if (!(std::isfinite(wall_margin_m) && wall_margin_m >= 0.0) ||
       2.0 * wall_margin_m >= (arena_max_m - arena_min_m).minCoeff()) {
     return FailParams(error, "wall_margin_m must be >= 0 and leave room inside the arena, got " +

@@ -1,11 +1,31 @@
 #include "dream/bridge/obstacle_schedule.h"
 
+#include <climits>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
 #include "dream/bridge/submission_format.h"
 #include "dream/world/rectangle_obstacle.h"
 
 namespace dream::bridge {
 
+int64_t ObstacleScheduleBytes(int64_t obstacles, int64_t steps) {
+  // Saturates instead of overflowing: steps may be anything a config says.
+  const int64_t row_bytes = obstacles * kObstacleColumns * int64_t{sizeof(double)};
+  if (row_bytes == 0) return 0;
+  if (steps >= INT64_MAX / row_bytes) return INT64_MAX;
+  return (steps + 1) * row_bytes;
+}
+
 NpyArray ObstacleSchedule(const std::vector<sim::RectangleObstacleSpec>& specs, double time_step_s, int64_t steps) {
+  if (steps < 0) throw std::invalid_argument("an obstacle schedule needs steps >= 0, got " + std::to_string(steps));
+  const int64_t bytes = ObstacleScheduleBytes(static_cast<int64_t>(specs.size()), steps);
+  if (bytes > kMaxObstacleScheduleBytes) {
+    throw std::invalid_argument("an obstacle schedule of " + std::to_string(specs.size()) + " obstacles over " +
+                                std::to_string(steps) + " steps would exceed " +
+                                std::to_string(kMaxObstacleScheduleBytes >> 20) + " MiB");
+  }
   std::vector<sim::RectangleObstacle> obstacles = sim::RectangleObstacle::BuildAll(specs, "config", "obstacles");
   const auto m = static_cast<int64_t>(obstacles.size());
   NpyArray array;

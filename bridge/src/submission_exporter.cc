@@ -171,6 +171,17 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
   }
   // The controller strategy runs until every robot is done, at most the run's step limit.
   const int64_t steps = controller && python_kind ? RunStepLimit(run_dir, config) : track.last_step();
+  if (controller) {
+    const int64_t schedule_bytes = ObstacleScheduleBytes(static_cast<int64_t>(config.obstacles.size()), steps);
+    if (schedule_bytes > kMaxObstacleScheduleBytes) {
+      problems.push_back({"obstacle_schedule", -1, -1, -1,
+                          "upload/dream_obstacles.npy would hold " + std::to_string(config.obstacles.size()) +
+                              " obstacles at each of " + std::to_string(steps + 1) + " steps, " +
+                              std::to_string(schedule_bytes >> 20) + " MiB (at most " +
+                              std::to_string(kMaxObstacleScheduleBytes >> 20) + " MiB)",
+                          "fewer obstacles, or fewer steps (the config's steps: bounds the controller strategy's run)"});
+    }
+  }
   // What UPLOAD.txt tells the user to declare: the lab's verifier holds the run to it.
   const sim::LabVerifierRules::Declaration declared{
       config.num_robots, static_cast<double>(steps + options.settle_max_steps) * config.world.time_step_s};

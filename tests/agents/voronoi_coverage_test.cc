@@ -180,6 +180,13 @@ TEST(VoronoiCellTest, InvalidParamsNameTheField) {
   EXPECT_FALSE(params.IsValid(&error));
   EXPECT_NE(error.find("disc_radius_m"), std::string::npos);
   EXPECT_THROW(VoronoiCell(params, {0.0, 0.0}, {}, {}), std::invalid_argument);
+  // Every robot builds the disc every step: its sides are bounded.
+  params = VoronoiCellParams{};
+  params.disc_sides = VoronoiCellParams::kMaxDiscSides;
+  EXPECT_TRUE(params.IsValid(&error)) << error;
+  params.disc_sides = VoronoiCellParams::kMaxDiscSides + 1;
+  EXPECT_FALSE(params.IsValid(&error));
+  EXPECT_EQ(error, "disc_sides must be in 8..1024, got 1025");
 }
 
 TEST(RectangleUnionTest, OverlappingRectanglesCountOnce) {

@@ -116,6 +116,22 @@ TEST(ObstacleScheduleTest, EveryStepEqualsWhatTheWorldReports) {
   }
 }
 
+// A config may have 10,000 obstacles; their schedule over the lab's 15
+// minutes would be 15 GB. Sizes saturate, and the bound is checked before
+// anything is allocated.
+TEST(ObstacleScheduleTest, SizeIsBoundedBeforeAllocating) {
+  EXPECT_EQ(ObstacleScheduleBytes(2, 600), 601 * 2 * kObstacleColumns * 8);
+  EXPECT_EQ(ObstacleScheduleBytes(0, INT64_MAX), 0);
+  EXPECT_EQ(ObstacleScheduleBytes(10000, INT64_MAX - 1), INT64_MAX);
+  EXPECT_GT(ObstacleScheduleBytes(10000, 27272), kMaxObstacleScheduleBytes);
+  sim::RectangleObstacleSpec still;
+  still.width_m = still.height_m = 0.1;
+  const std::vector<sim::RectangleObstacleSpec> many(10000, still);
+  EXPECT_THAT(ErrorOf([&] { ObstacleSchedule(many, 0.033, 27272); }),
+              HasSubstr("an obstacle schedule of 10000 obstacles over 27272 steps would exceed 256 MiB"));
+  EXPECT_THAT(ErrorOf([&] { ObstacleSchedule({still}, 0.033, -1); }), HasSubstr("needs steps >= 0, got -1"));
+}
+
 TEST(ControllerSpecFileTest, TextTravelsAsUint8Npy) {
   const std::string bytes = EncodeNpyBytes("{\"a\": 1}");
   EXPECT_EQ(bytes.rfind("\x93NUMPY\x01\x00", 0), 0u);

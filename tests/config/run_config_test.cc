@@ -219,6 +219,19 @@ TEST(RunConfigTest, BadObstacles) {
             std::string::npos);
 }
 
+// DREAM_OBSTACLES carries at most lcm::MessageLimits::kObstacles: a run with
+// more would have every agent refuse the world's obstacles.
+TEST(RunConfigTest, ObstacleCountIsBounded) {
+  const auto obstacles = [](size_t count) {
+    std::string text = "obstacles:\n";
+    for (size_t i = 0; i < count; ++i) text += "  - {center: [" + std::to_string(i % 2000) + ", 50], size: [0.1, 0.1]}\n";
+    return text;
+  };
+  EXPECT_EQ(Load(std::string(kMinimal) + obstacles(RunConfig::kMaxObstacles)).obstacles.size(), RunConfig::kMaxObstacles);
+  const std::string error = ErrorOf(std::string(kMinimal) + obstacles(RunConfig::kMaxObstacles + 1));
+  EXPECT_NE(error.find(": obstacles: at most 10000 obstacles, got 10001"), std::string::npos) << error;
+}
+
 TEST(RunConfigTest, UnsafeRunNamesAreRejected) {
   // The name becomes a folder under runs/: no paths, no shell or script text.
   EXPECT_NE(ErrorOf(Replace(kMinimal, "name: demo", "name: ../../etc")).find("not a plain name"), std::string::npos);

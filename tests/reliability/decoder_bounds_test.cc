@@ -7,6 +7,7 @@
 #include <random>
 
 #include "allocation_watch.h"
+#include "dream/config/run_config.h"
 #include "dream/lcm/bad_message_log.h"
 #include "dream/lcm/lcm_typed.h"
 #include "dream/lcm/message_limits.h"
@@ -96,6 +97,10 @@ TEST(DecoderBounds, TheLargestLegalMessagesDecode) {
 
 TEST(DecoderBounds, TheRobotLimitCoversEveryRunTheConfigAllows) {
   EXPECT_GE(MessageLimits::kRobots, sim::RobotariumConstants::kMaxRobotsInSimulation);
+}
+
+TEST(DecoderBounds, TheObstacleLimitIsTheConfigsLimit) {
+  EXPECT_EQ(static_cast<size_t>(MessageLimits::kObstacles), config::RunConfig::kMaxObstacles);
 }
 
 TEST(DecoderBounds, ForgedCountsAreRefusedWithoutLargeAllocations) {

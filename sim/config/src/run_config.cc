@@ -214,6 +214,9 @@ std::vector<sim::RectangleObstacleSpec> ReadObstacles(const ConfigNode& root) {
   const ConfigNode list = root.Optional("obstacles");
   if (!list.IsDefined()) return specs;
   if (!list.IsSequence()) list.Fail("expected a list of obstacles (each with center: and size:)");
+  if (list.size() > RunConfig::kMaxObstacles) {
+    list.Fail("at most " + std::to_string(RunConfig::kMaxObstacles) + " obstacles, got " + std::to_string(list.size()));
+  }
   for (size_t i = 0; i < list.size(); ++i) {
     const ConfigNode item = list[i];
     item.RejectUnknownKeys({"center", "size", "path"});

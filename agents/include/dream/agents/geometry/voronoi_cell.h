@@ -13,7 +13,11 @@ namespace dream::agents {
 /// How a robot's Voronoi cell is shaped.
 struct VoronoiCellParams {
   double disc_radius_m = 1.0;  ///< sensing/communication limit: the cell lies in this disc; > 0
-  int disc_sides = 64;         ///< the disc as an inscribed regular polygon with this many sides; >= 8
+  /// The disc as an inscribed regular polygon with this many sides, 8..1024
+  /// (1024 sides miss 6e-6 of the disc's area; every robot builds the polygon
+  /// every step, so the bound keeps a config from asking for 2^31 vertices).
+  int disc_sides = 64;
+  static constexpr int kMaxDiscSides = 1024;
   Eigen::Vector2d arena_min_m{-1.6, -1.0};  ///< the Robotarium arena
   Eigen::Vector2d arena_max_m{1.6, 1.0};
   double wall_margin_m = 0.06;      ///< the cell keeps this far inside the arena walls; >= 0

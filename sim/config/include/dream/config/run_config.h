@@ -23,6 +23,11 @@ namespace dream::config {
 /// The agents' part (name, seed, robots, controller, plugins) is the base
 /// ControllerConfig: what an agent process reads, without the world.
 struct RunConfig : ControllerConfig {
+  /// The most `obstacles:` a run may have: what one DREAM_OBSTACLES message
+  /// may carry (lcm::MessageLimits::kObstacles; decoder_bounds_test keeps
+  /// them equal), so agents never refuse the world's own obstacles.
+  static constexpr size_t kMaxObstacles = 10000;
+
   sim::SimNodeOptions sim;       ///< pacing, timeouts, step limit
   sim::WorldParams world;        ///< Robotarium V2 constants (not configurable)
   /// `world.realism:` (a preset name, or a map of models); Ideal(), the
