@@ -5,7 +5,10 @@
 #include <string>
 
 #include "dream/config/run_config.h"
+#include "dream/config/world_of_config.h"
 #include "dream/world/realism_params.h"
+#include "dream/world/realistic_world.h"
+#include "dream/world/unicycle_world.h"
 
 namespace dream::config {
 namespace {
@@ -31,6 +34,16 @@ TEST(RealismConfigTest, AbsentIsTheOfficialSimulator) {
   EXPECT_TRUE(Load(ConfigWith("")).realism.IsIdeal());
   EXPECT_TRUE(Load(ConfigWith("  realism: ideal\n")).realism.IsIdeal());
   EXPECT_TRUE(Load(ConfigWith("  realism: {preset: ideal}\n")).realism.IsIdeal());
+}
+
+// Ideal is the official simulator itself, with nothing in between; any
+// other realism wraps it in a RealisticWorld.
+TEST(RealismConfigTest, TheWorldOfAConfigIsTheOfficialOneUnlessRealismAsksOtherwise) {
+  const std::unique_ptr<sim::World> ideal = WorldOfConfig(Load(ConfigWith("")));
+  EXPECT_NE(dynamic_cast<const sim::UnicycleWorld*>(ideal.get()), nullptr);
+  const std::unique_ptr<sim::World> lab = WorldOfConfig(Load(ConfigWith("  realism: lab\n")));
+  ASSERT_NE(dynamic_cast<const sim::RealisticWorld*>(lab.get()), nullptr);
+  EXPECT_EQ(lab->num_robots(), 1);
 }
 
 TEST(RealismConfigTest, PresetNameGivesThePreset) {

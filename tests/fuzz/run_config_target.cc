@@ -12,40 +12,44 @@
 #include "dream/config/config_error.h"
 #include "dream/config/config_node.h"
 #include "dream/config/run_config.h"
+#include "dream/config/world_of_config.h"
+#include "dream/world/world.h"
 #include "fuzz_targets.h"
 
 namespace dream::fuzz {
 namespace {
 
-// Steps every agent runs on the start poses: past the thesis parts' start
-// delays (20 + id steps), so robots, sensors and radios all run.
-constexpr int64_t kAgentSteps = 80;
+// Steps the world and every agent run: past the thesis parts' start delays
+// (20 + id steps), so robots, sensors and radios all run.
+constexpr int64_t kSteps = 80;
 
-agents::WorldSnapshot StartSnapshot(const config::RunConfig& run) {
-  agents::WorldSnapshot world;
-  for (const sim::Pose2& pose : run.initial_poses) {
-    world.poses.emplace_back(pose.x_m, pose.y_m, pose.theta_rad);
-    world.velocities.emplace_back(0.0, 0.0);
+agents::WorldSnapshot SnapshotOf(const sim::World& world, std::vector<sim::ObstacleState>* obstacles) {
+  agents::WorldSnapshot snapshot;
+  snapshot.step = world.step();
+  for (const sim::Pose2& pose : world.poses()) snapshot.poses.emplace_back(pose.x_m, pose.y_m, pose.theta_rad);
+  for (const sim::UnicycleCommand& v : world.velocities()) snapshot.velocities.emplace_back(v.v_mps, v.w_radps);
+  world.GetObstacleStates(obstacles);
+  for (const sim::ObstacleState& o : *obstacles) {
+    snapshot.obstacles.push_back({o.id, {o.center_x_m, o.center_y_m}, {o.width_m, o.height_m}, {o.vx_mps, o.vy_mps}});
   }
-  for (const sim::RectangleObstacleSpec& spec : run.obstacles) {
-    world.obstacles.push_back({spec.id, spec.center_m, {spec.width_m, spec.height_m}, Eigen::Vector2d::Zero()});
-  }
-  return world;
+  return snapshot;
 }
 
-// A few steps of every agent on the start poses (no world: nobody moves),
-// every broadcast delivered to the others, as an agent host would: what a
-// robot builds per step from its config values is only reached here (a
-// 2^31-sided Voronoi disc, allocated by every robot at its first step, was).
-void StepAgents(const config::RunConfig& run, std::vector<std::unique_ptr<agents::RobotAgent>>& robots) {
-  agents::WorldSnapshot world = StartSnapshot(run);
-  if (world.num_robots() != run.num_robots) return;
-  const int64_t steps = std::min<int64_t>(kAgentSteps, run.sim.max_steps);
+// The run in closed loop without a bus, as the session's SimNode and agent
+// hosts run it: the config's world (realism included) and every agent, each
+// broadcast delivered to the others. What a robot builds per step from its
+// config values is only reached here (a 2^31-sided Voronoi disc, allocated by
+// every robot at its first step, was).
+void RunClosedLoop(const config::RunConfig& run, std::vector<std::unique_ptr<agents::RobotAgent>>& robots) {
+  const std::unique_ptr<sim::World> world = config::WorldOfConfig(run);
+  std::vector<sim::ObstacleState> obstacles;
+  const int64_t steps = std::min<int64_t>(kSteps, run.sim.max_steps);
   for (int64_t step = 0; step < steps; ++step) {
-    world.step = step;
+    const agents::WorldSnapshot snapshot = SnapshotOf(*world, &obstacles);
     std::vector<agents::RadioMessage> sent;
     for (auto& robot : robots) {
-      const agents::RobotAgent::Output out = robot->Step(world);
+      const agents::RobotAgent::Output out = robot->Step(snapshot);
+      world->SetCommand(robot->id(), {out.command.v_mps, out.command.w_radps});
       if (out.broadcast) sent.push_back(*out.broadcast);
     }
     for (const agents::RadioMessage& message : sent) {
@@ -53,6 +57,7 @@ void StepAgents(const config::RunConfig& run, std::vector<std::unique_ptr<agents
         if (robot->id() != message.sender_id) robot->Receive(message);
       }
     }
+    world->Step();
   }
 }
 
@@ -82,9 +87,9 @@ void RunConfigTarget(const uint8_t* data, size_t size) {
   // A config that loaded must run: a robot that throws at run time fails
   // its agent (DREAM_FAULT), which the config check should have prevented.
   try {
-    StepAgents(*loaded, robots);
+    RunClosedLoop(*loaded, robots);
   } catch (const std::exception& e) {
-    Finding("an accepted config whose agents throw when they run: " + std::string(e.what()));
+    Finding("an accepted config whose world or agents throw when they run: " + std::string(e.what()));
   }
 }
 

@@ -9,6 +9,7 @@
 #include "dream/bridge/controller_module_copy.h"
 #include "dream/bridge/metrics_json.h"
 #include "dream/bridge/pre_validation.h"
+#include "dream/config/world_of_config.h"
 #include "dream/node/atomic_file.h"
 #include "dream/node/json_text.h"
 #include "dream/node/output_folder.h"
@@ -22,7 +23,6 @@
 #include "dream/session/render_overlays.h"
 #include "dream/session/terminal_progress.h"
 #include "dream/world/realistic_world.h"
-#include "dream/world/unicycle_world.h"
 
 namespace dream::session {
 namespace {
@@ -56,13 +56,7 @@ RunResult RunSession::Run(lcm::LcmInterface& lcm, const Folder& folder) {
   // world.realism: the official world seen and driven as on the lab; off
   // (ideal), the official world itself, with nothing in between.
   GivenWorld own;
-  own.make = [this](sim::RunRecorder&) -> std::unique_ptr<sim::World> {
-    if (config_.realism.IsIdeal()) {
-      return std::make_unique<sim::UnicycleWorld>(config_.world, config_.initial_poses, config_.obstacles);
-    }
-    return std::make_unique<sim::RealisticWorld>(config_.world, config_.realism, config_.seed, config_.initial_poses,
-                                                 config_.obstacles);
-  };
+  own.make = [this](sim::RunRecorder&) { return config::WorldOfConfig(config_); };
   return Run(lcm, folder, own);
 }
 
