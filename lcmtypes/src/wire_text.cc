@@ -38,6 +38,10 @@ int64_t WireText::FirstNonUtf8Byte(const uint8_t* bytes, int64_t size) {
 std::string WireText::Of(const std::string& text, size_t max_bytes) {
   const auto* bytes = reinterpret_cast<const uint8_t*>(text.data());
   const auto size = static_cast<int64_t>(text.size());
+  // The common case (SimNode's "running" every step): already acceptable.
+  if (text.size() <= max_bytes && text.find('\0') == std::string::npos && FirstNonUtf8Byte(bytes, size) < 0) {
+    return text;
+  }
   std::string out;
   int64_t at = 0;
   while (at < size) {

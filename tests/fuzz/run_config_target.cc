@@ -7,12 +7,14 @@
 #include <vector>
 
 #include "dream/agent_host/controller_factory.h"
+#include "dream/agent_host/snapshot_from_messages.h"
 #include "dream/agents/framework/robot_agent.h"
 #include "dream/agents/framework/world_snapshot.h"
 #include "dream/config/config_error.h"
 #include "dream/config/config_node.h"
 #include "dream/config/run_config.h"
 #include "dream/config/world_of_config.h"
+#include "dream/node/world_messages.h"
 #include "dream/world/world.h"
 #include "fuzz_targets.h"
 
@@ -23,29 +25,24 @@ namespace {
 // (20 + id steps), so robots, sensors and radios all run.
 constexpr int64_t kSteps = 80;
 
-agents::WorldSnapshot SnapshotOf(const sim::World& world, std::vector<sim::ObstacleState>* obstacles) {
-  agents::WorldSnapshot snapshot;
-  snapshot.step = world.step();
-  for (const sim::Pose2& pose : world.poses()) snapshot.poses.emplace_back(pose.x_m, pose.y_m, pose.theta_rad);
-  for (const sim::UnicycleCommand& v : world.velocities()) snapshot.velocities.emplace_back(v.v_mps, v.w_radps);
-  world.GetObstacleStates(obstacles);
-  for (const sim::ObstacleState& o : *obstacles) {
-    snapshot.obstacles.push_back({o.id, {o.center_x_m, o.center_y_m}, {o.width_m, o.height_m}, {o.vx_mps, o.vy_mps}});
-  }
-  return snapshot;
-}
-
 // The run in closed loop without a bus, as the session's SimNode and agent
-// hosts run it: the config's world (realism included) and every agent, each
-// broadcast delivered to the others. What a robot builds per step from its
+// hosts run it: the config's world (realism included), its messages as SimNode
+// fills them, every agent, each broadcast delivered to the others. What a robot builds per step from its
 // config values is only reached here (a 2^31-sided Voronoi disc, allocated by
 // every robot at its first step, was).
 void RunClosedLoop(const config::RunConfig& run, std::vector<std::unique_ptr<agents::RobotAgent>>& robots) {
   const std::unique_ptr<sim::World> world = config::WorldOfConfig(run);
-  std::vector<sim::ObstacleState> obstacles;
+  std::vector<sim::ObstacleState> scratch;
+  obstacles_t obstacles;
+  robot_poses_t poses;
+  agents::WorldSnapshot snapshot;
   const int64_t steps = std::min<int64_t>(kSteps, run.sim.max_steps);
   for (int64_t step = 0; step < steps; ++step) {
-    const agents::WorldSnapshot snapshot = SnapshotOf(*world, &obstacles);
+    // What the agents are sent, taken in as an agent host does.
+    sim::WorldMessages::Fill(*world, &scratch, &obstacles);
+    sim::WorldMessages::Fill(*world, &poses);
+    agents::TakeObstacles(obstacles, &snapshot);
+    agents::TakePoses(poses, &snapshot);
     std::vector<agents::RadioMessage> sent;
     for (auto& robot : robots) {
       const agents::RobotAgent::Output out = robot->Step(snapshot);

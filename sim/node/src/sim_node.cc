@@ -13,6 +13,7 @@
 #include "dream/lcm/message_limits.h"
 #include "dream/lcm/run_id.h"
 #include "dream/lcm/wire_text.h"
+#include "dream/node/world_messages.h"
 #include "dream/obstacles_t.hpp"
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
@@ -307,41 +308,16 @@ void SimNode::PublishStatus(int8_t state, const std::string& detail, bool record
 void SimNode::PublishStep(bool record) {
   obstacles_t obstacles;
   obstacles.utime = SimUtime();
-  obstacles.step = world_.step();
   obstacles.run_id = run_id_;
-  world_.GetObstacleStates(&obstacle_states_);
-  for (const ObstacleState& obstacle : obstacle_states_) {
-    rectangle_obstacle_t o;
-    o.id = obstacle.id;
-    o.center_x = obstacle.center_x_m;
-    o.center_y = obstacle.center_y_m;
-    o.width = obstacle.width_m;
-    o.height = obstacle.height_m;
-    o.vx = obstacle.vx_mps;
-    o.vy = obstacle.vy_mps;
-    obstacles.obstacles.push_back(o);
-  }
-  obstacles.num_obstacles = static_cast<int32_t>(obstacles.obstacles.size());
+  WorldMessages::Fill(world_, &obstacle_states_, &obstacles);
   PublishAndRecord(lcm::kObstaclesChannel, obstacles, record);
 
   PublishStatus(state_, state_ == run_status_t::WAITING_FOR_AGENTS ? "waiting for agents" : "running", record);
 
   robot_poses_t poses;
   poses.utime = SimUtime();
-  poses.step = world_.step();
   poses.run_id = run_id_;
-  poses.num_robots = world_.num_robots();
-  for (const Pose2& pose : world_.poses()) {
-    poses.x.push_back(pose.x_m);
-    poses.y.push_back(pose.y_m);
-    poses.theta.push_back(pose.theta_rad);
-  }
-  // After Step() the held velocities are the saturated ones the robots just
-  // drove with: what a tracker on the lab would measure.
-  for (const UnicycleCommand& velocity : world_.velocities()) {
-    poses.v.push_back(world_.step() > 0 ? velocity.v_mps : 0.0);
-    poses.w.push_back(world_.step() > 0 ? velocity.w_radps : 0.0);
-  }
+  WorldMessages::Fill(world_, &poses);
   PublishAndRecord(lcm::kPosesChannel, poses, record);
 }
 

@@ -1,0 +1,25 @@
+#pragma once
+
+#include <vector>
+
+#include "dream/obstacles_t.hpp"
+#include "dream/robot_poses_t.hpp"
+#include "dream/world/obstacle_state.h"
+#include "dream/world/world.h"
+
+namespace dream::sim {
+
+/// The world at its current step as the messages agents are sent
+/// (DREAM_OBSTACLES, DREAM_POSES): step, counts and values. The caller sets
+/// utime and run_id. SimNode publishes these; the config fuzz target feeds
+/// them to agents through the same TakeObstacles/TakePoses as the bus.
+class WorldMessages {
+ public:
+  /// Every obstacle of the step; `scratch` keeps its buffer across steps.
+  static void Fill(const World& world, std::vector<ObstacleState>* scratch, obstacles_t* obstacles);
+  /// Every robot's pose, and the velocity it drove with during the last
+  /// step (zero before the first): what a tracker on the lab would measure.
+  static void Fill(const World& world, robot_poses_t* poses);
+};
+
+}  // namespace dream::sim
