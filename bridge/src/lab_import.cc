@@ -28,6 +28,7 @@
 #include "dream/node/run_outcome.h"
 #include "dream/node/run_recorder.h"
 #include "dream/node/run_summary.h"
+#include "dream/node/world_messages.h"
 #include "dream/render/trajectory_picture.h"
 #include "dream/run_log/run_log.h"
 #include "dream/velocity_command_t.hpp"
@@ -124,35 +125,16 @@ LabReplayWorld WriteLog(const RunTrack& track, const sim::WorldParams& params, i
   const int n = track.num_robots;
   std::vector<std::string> command_channels;
   for (int i = 0; i < n; ++i) command_channels.push_back(lcm::CommandChannel(i));
-  poses.num_robots = n;
-  poses.x.resize(static_cast<size_t>(n));
-  poses.y.resize(static_cast<size_t>(n));
-  poses.theta.resize(static_cast<size_t>(n));
-  poses.v.resize(static_cast<size_t>(n));
-  poses.w.resize(static_cast<size_t>(n));
   while (true) {
     const int64_t k = world.step();
     const int64_t utime = world.utime();
-    world.GetObstacleStates(&states);
+    // The messages SimNode would send on this world (velocities zero at step 0).
+    sim::WorldMessages::Fill(world, &states, &obstacles);
     obstacles.utime = utime;
-    obstacles.step = k;
-    obstacles.obstacles.clear();
-    for (const sim::ObstacleState& s : states) {
-      obstacles.obstacles.push_back(
-          rectangle_obstacle_t{s.id, s.center_x_m, s.center_y_m, s.width_m, s.height_m, s.vx_mps, s.vy_mps});
-    }
-    obstacles.num_obstacles = static_cast<int32_t>(obstacles.obstacles.size());
     WriteMessage(recorder, lcm::kObstaclesChannel, utime, obstacles, &buffer);
     WriteStatus(recorder, world, run_id, run_status_t::RUNNING, "lab run", &buffer);
+    sim::WorldMessages::Fill(world, &poses);
     poses.utime = utime;
-    poses.step = k;
-    for (size_t i = 0; i < static_cast<size_t>(n); ++i) {
-      poses.x[i] = world.poses()[i].x_m;
-      poses.y[i] = world.poses()[i].y_m;
-      poses.theta[i] = world.poses()[i].theta_rad;
-      poses.v[i] = world.velocities()[i].v_mps;
-      poses.w[i] = world.velocities()[i].w_radps;
-    }
     WriteMessage(recorder, lcm::kPosesChannel, utime, poses, &buffer);
     if (k == world.last_step()) break;
     command.utime = utime;
