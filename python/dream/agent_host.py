@@ -253,8 +253,9 @@ class AgentHost:
     @staticmethod
     def _wire_text(text):
         """`text` as the world accepts a string: UTF-8 with no NUL, at most MAX_DETAIL_BYTES
-        (cut on a character boundary). An exception's text may hold anything."""
-        data = text.replace("\x00", "\\x00").encode("utf-8", "replace")[:MAX_DETAIL_BYTES]
+        (cut on a character boundary), a NUL written \\0 as lcm::WireText::Of writes it.
+        An exception's text may hold anything."""
+        data = text.replace("\x00", "\\0").encode("utf-8", "replace")[:MAX_DETAIL_BYTES]
         return data.decode("utf-8", "ignore")
 
     def _fail(self, robot, poses, detail):

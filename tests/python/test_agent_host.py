@@ -209,7 +209,7 @@ class AgentHostTest(unittest.TestCase):
         # world refuses anything else (lcmtypes' WireLayout), and the fault would be lost.
         wire = AgentHost._wire_text
         self.assertEqual(wire("caf\u00e9 \U0001F916"), "caf\u00e9 \U0001F916")
-        self.assertEqual(wire("a\x00b"), "a\\x00b")
+        self.assertEqual(wire("a\x00b"), "a\\0b")  # as the C++ host's WireText::Of writes it
         self.assertEqual(wire("path \udcff"), "path ?")  # a surrogate-escaped byte of a file name
         long_text = "\u00e9" * dream.agent_host.MAX_DETAIL_BYTES  # two bytes each
         cut = wire(long_text)

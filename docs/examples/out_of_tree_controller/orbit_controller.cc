@@ -14,8 +14,8 @@ class OrbitRobot final : public dream::agents::Robot {
       : Robot(id, params),
         radius_m_(section.GetDouble("radius_m", 0.25)),
         speed_mps_(section.GetDouble("speed_mps", 0.1)) {
-    if (radius_m_ <= 0.0) section.Required("radius_m").Fail("must be > 0");
-    if (speed_mps_ <= 0.0) section.Required("speed_mps").Fail("must be > 0");
+    if (radius_m_ <= 0.0) section.FailAt("radius_m", "must be > 0");
+    if (speed_mps_ <= 0.0) section.FailAt("speed_mps", "must be > 0");
   }
 
   dream::agents::UnicycleCommand Update(int64_t /*step*/) override {

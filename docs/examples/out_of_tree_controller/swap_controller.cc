@@ -15,8 +15,8 @@ class SwapRobot final : public dream::agents::HrvoRobot {
       : HrvoRobot(id, params, dream::agents::ReadHrvoRobotParams(section)),
         speed_mps_(section.GetDouble("speed_mps", 0.15)),
         tolerance_m_(section.GetDouble("tolerance_m", 0.03)) {
-    if (speed_mps_ <= 0.0) section.Required("speed_mps").Fail("must be > 0");
-    if (tolerance_m_ <= 0.0) section.Required("tolerance_m").Fail("must be > 0");
+    if (speed_mps_ <= 0.0) section.FailAt("speed_mps", "must be > 0");
+    if (tolerance_m_ <= 0.0) section.FailAt("tolerance_m", "must be > 0");
   }
 
   dream::agents::UnicycleCommand Update(int64_t /*step*/) override {
