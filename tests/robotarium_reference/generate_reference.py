@@ -12,7 +12,7 @@ and the final debug() text to a plain-text fixture (default: stdout).
 tests/world/robotarium_reference_test.cc replays the commands through
 dream::sim::UnicycleWorld and compares.
 
-Needs numpy, scipy, matplotlib and cvxopt (the official package imports
+Needs numpy, matplotlib and cvxopt (the official package imports
 them); on Debian use /usr/bin/python3. See README.md next to this file.
 """
 
