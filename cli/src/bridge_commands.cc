@@ -9,6 +9,7 @@
 #include <iostream>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -20,6 +21,7 @@
 #include "dream/node/file_text.h"
 #include "dream/agent_host/agent_host.h"
 #include "dream/agent_host/controller_factory.h"
+#include "dream/bridge/command_agreement.h"
 #include "dream/bridge/lab_import.h"
 #include "dream/bridge/lab_replay_world.h"
 #include "dream/bridge/metrics_json.h"
@@ -154,7 +156,15 @@ int RunCompare(const CompareArgs& args) {
   return kExitOk;
 }
 
-int RunLabReplay(const LabReplayArgs& args) {
+/// What a lab replay gave: its exit code and, once the world has stepped,
+/// how the agents' commands compare with the lab's.
+struct LabReplayOutcome {
+  int exit_code = kExitOk;
+  std::optional<bridge::CommandAgreement> agreement;
+};
+
+/// dream lab-replay; `report` takes the verdict and the outputs' paths.
+LabReplayOutcome ReplayLabRun(const LabReplayArgs& args, std::ostream* report) {
   const std::string log_in = (fs::path(args.lab_dir) / "run.lcmlog").string();
   const std::string config_in = (fs::path(args.lab_dir) / "config.yaml").string();
   config::RunConfig config = config::LoadRunConfigFile(config_in);
@@ -169,6 +179,7 @@ int RunLabReplay(const LabReplayArgs& args) {
   if (!args.mode.empty()) config.sim.mode = sim::ParseWorldMode(args.mode);
   session::RunSession::Options options;
   options.steps_from_command_line = args.steps > 0;
+  options.report = report;
   options.stop = &StopFlag();
   session::RunSession run(std::move(config), options);
   HostedAgents::Check(run.config(), run.factory());
@@ -194,30 +205,14 @@ int RunLabReplay(const LabReplayArgs& args) {
     replay = made.get();
     return made;
   };
+  LabReplayOutcome outcome;
   world.summary_fields = [&](const sim::World&) {
-    nlohmann::ordered_json agreement = nlohmann::ordered_json::array();
-    for (int i = 0; i < run.config().num_robots; ++i) {
-      double dv2 = 0.0;
-      double dw2 = 0.0;
-      int64_t count = 0;
-      for (int64_t k = 0; k < replay->step(); ++k) {
-        if (!replay->has_agent_command(k, i)) continue;
-        const sim::UnicycleCommand& agent = replay->agent_command(k, i);
-        const sim::UnicycleCommand& lab = replay->track().command(k, i);
-        dv2 += (agent.v_mps - lab.v_mps) * (agent.v_mps - lab.v_mps);
-        dw2 += (agent.w_radps - lab.w_radps) * (agent.w_radps - lab.w_radps);
-        ++count;
-      }
-      agreement.push_back({{"robot", i},
-                           {"steps_with_command", count},
-                           {"rms_v_difference_mps", count > 0 ? std::sqrt(dv2 / static_cast<double>(count)) : 0.0},
-                           {"rms_w_difference_radps", count > 0 ? std::sqrt(dw2 / static_cast<double>(count)) : 0.0}});
-    }
+    outcome.agreement = bridge::CommandAgreement::Of(*replay);
     nlohmann::ordered_json fields;
     fields["config"] = "config.yaml";
     fields["lab_replay"] = {{"lab_run", fs::absolute(args.lab_dir).string()},
                             {"lab_command_channels", std::string(bridge::kLabCommandChannelPrefix) + "<id>"},
-                            {"agents_vs_lab_commands", agreement}};
+                            {"agents_vs_lab_commands", outcome.agreement->Json()}};
     return fields;
   };
   world.start_line = run.config().name + ": replaying " + std::to_string(run.config().sim.max_steps) +
@@ -225,7 +220,74 @@ int RunLabReplay(const LabReplayArgs& args) {
                      sim::WorldModeName(run.config().sim.mode) + ") on " + bus.url() +
                      (in_process ? " with the agents in this process" : "; start the agents with dream agent");
   // The same recording, summary, verdict, report and picture as every run.
-  return ExitCodeFor(run.Run(bus, {out_dir, sim::ReadFileText(config_in)}, world));
+  outcome.exit_code = ExitCodeFor(run.Run(bus, {out_dir, sim::ReadFileText(config_in)}, world));
+  return outcome;
+}
+
+int RunLabReplay(const LabReplayArgs& args) { return ReplayLabRun(args, &std::cout).exit_code; }
+
+/// A controller-strategy submission ran the controllers themselves: replays
+/// the imported run against the same controllers as agents (dream lab-replay,
+/// into `check_dir`/lab_replay) and says whether they sent what the
+/// submission sent. Returns check.json's `controllers_on_lab_poses`.
+nlohmann::ordered_json CheckControllersOnLabPoses(const sim::OutputFolder& check_dir, LabReplayOutcome* outcome) {
+  LabReplayArgs replay;
+  replay.lab_dir = check_dir.dir();
+  replay.out_dir = check_dir.PathOf("lab_replay");
+  replay.overwrite = true;  // the check's own folder: a new check replaces it
+  nlohmann::ordered_json json;
+  json["replay"] = fs::absolute(replay.out_dir).string();
+  std::cout << "\nreplaying the lab's poses against your controllers as agents (dream lab-replay)\n";
+  try {
+    std::ostream quiet(nullptr);  // the replay's own verdict would repeat the check's
+    *outcome = ReplayLabRun(replay, &quiet);
+  } catch (const std::exception& error) {
+    std::cout << "WARNING: not replayed: " << error.what() << "\n";
+    json["replayed"] = false;
+    json["error"] = error.what();
+    return json;
+  }
+  if (!outcome->agreement) {
+    std::cout << "WARNING: the replay ended before its first step (" << replay.out_dir << ")\n";
+    json["replayed"] = false;
+    return json;
+  }
+  const bridge::CommandAgreement& agreement = *outcome->agreement;
+  json["replayed"] = true;
+  json["steps"] = agreement.steps();
+  json["same_commands"] = agreement.Same();
+  json["tolerance"] = bridge::CommandAgreement::kSameTolerance;
+  double max_v = 0.0;
+  double max_w = 0.0;
+  for (const auto& robot : agreement.robots()) {
+    max_v = std::max(max_v, robot.max_v_difference_mps);
+    max_w = std::max(max_w, robot.max_w_difference_radps);
+  }
+  json["max_v_difference_mps"] = max_v;
+  json["max_w_difference_radps"] = max_w;
+  char largest[96];
+  std::snprintf(largest, sizeof(largest), "largest difference %.2g m/s, %.2g rad/s", max_v, max_w);
+  if (agreement.Same()) {
+    std::cout << "your controllers on the lab's poses send what the submission sent (" << largest << " over "
+              << agreement.steps() << " steps):\nwhat differs from the simulated run comes from the poses the lab "
+                 "gave them (the start-up drive leaves up to 5 mm), not from the controllers\n";
+  } else {
+    const auto& worst = agreement.robots()[static_cast<size_t>(agreement.WorstRobot())];
+    std::cout << "WARNING: your controllers decided differently on the lab's poses than in the submission: robot "
+              << worst.robot << " from step " << worst.first_different_step << " (" << largest
+              << ").\nA controller that reads the clock or draws unseeded random numbers cannot be reproduced: the\n"
+                 "simulated run then says little about the lab's. Per robot: "
+              << replay.out_dir << "/summary.json (lab_replay)\n";
+  }
+  nlohmann::ordered_json silent = nlohmann::ordered_json::array();
+  for (const auto& robot : agreement.robots()) {
+    if (robot.steps_with_command == agreement.steps()) continue;
+    silent.push_back({{"robot", robot.robot}, {"steps_without_command", agreement.steps() - robot.steps_with_command}});
+    std::cout << "robot " << robot.robot << " sent no command at " << agreement.steps() - robot.steps_with_command
+              << " of " << agreement.steps() << " replayed steps (its controller failed or its agent was lost)\n";
+  }
+  json["robots_without_commands"] = silent;
+  return json;
 }
 
 int RunCheckSubmission(const CheckSubmissionArgs& args) {
@@ -306,6 +368,10 @@ int RunCheckSubmission(const CheckSubmissionArgs& args) {
     std::cout << "\nnot compared: the simulated run " << (run_dir.empty() ? "(unknown)" : run_dir)
               << " is not there (pass --run DIR)\n";
   }
+  LabReplayOutcome replayed;
+  if (exported.params.options.strategy == bridge::Strategy::kController) {
+    check["controllers_on_lab_poses"] = CheckControllersOnLabPoses(out, &replayed);
+  }
   out.WriteFile("check.json", sim::JsonText(check) + "\n");
   std::cout << "written: " << out.PathOf("check.json") << "\n";
   if (verdict == "rejected") return kExitRejected;
@@ -313,7 +379,9 @@ int RunCheckSubmission(const CheckSubmissionArgs& args) {
     std::cout << "WARNING: the script ran, but with " << (verdict != "clean" ? "debug() warnings" : "Python warnings")
               << "; see above\n";
   }
-  return imported.lab.complete ? kExitOk : kExitRunFailed;
+  if (replayed.exit_code == kExitInterrupted) return kExitInterrupted;
+  if (!imported.lab.complete) return kExitRunFailed;
+  return replayed.agreement && !replayed.agreement->Same() ? kExitNotReady : kExitOk;
 }
 
 void DeclareBridgeCommands(CommandLine& line) {

@@ -21,6 +21,10 @@ compares it with the simulated run:
     poses still equal the simulated run's (where the world stopped the lost robot);
   - a hostile config string (in a controller key and the description): the script is still
     the template, the spec travels as uint8 JSON, and nothing of the string runs;
+  - dream check-submission (with the simulator's start-up drive) replays the lab run against the
+    controllers as agents: go_to_goal_python's send what the submission sent (check.json's
+    controllers_on_lab_poses.same_commands, exit 0); a controller drawing unseeded random numbers
+    does not (a warning naming the robot and step, exit 5); a track export has no such replay;
   - refusals: a C++ kind with --strategy controller (exit 3, naming --strategy track, nothing
     written); controller module names that would clash with the submission's files or the
     modules it imports (exit 1, naming controller.module); track still works for a Python kind.
@@ -33,6 +37,7 @@ the official simulator's poses with the stand-in's for the same submission.
 import argparse
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -92,6 +97,9 @@ class Case:
         self.dream = args.dream
         self.tmp = tmp
         self.flags = simulator_flags
+        # check-submission takes the same choice of simulator, not run_submission.py's flags.
+        self.check_flags = ["--standin"] if simulator_flags == ["--standin"] else \
+            ["--require-official", "--simulator", simulator_flags[-1]]
         self.report = []
         sys.path.insert(0, os.path.join(args.source, "python"))
         import dream_log
@@ -219,6 +227,80 @@ def go_to_goal(case):
         replay = json.load(f)
     check(replay["end"] == "finished", "lab-replay: " + replay["reason"])
     return export_dir, poses
+
+
+JITTER_CONTROLLER = '''"""A test controller no one can reproduce: unseeded random turn rates."""
+
+import random
+
+from dream import Robot
+
+
+class Jitter(Robot):
+    def update(self, step):
+        return (0.05, random.uniform(-0.5, 0.5))
+'''
+
+JITTER_CONFIG = '''name: jitter_python
+seed: 1
+robots: 2
+steps: 60
+stop_when_done: false
+initial_poses:
+  - [-0.5, -0.3, 0.0]
+  - [-0.5, 0.3, 0.0]
+controller:
+  kind: python
+  module: jitter.py
+  class: Jitter
+'''
+
+
+def controllers_on_lab_poses(case, export_dir, name, expect):
+    """dream check-submission on an export; its check.json and output."""
+    check_dir = case.path(name + "_check")
+    output, _ = run([case.dream, "check-submission", export_dir, "--out", check_dir] + case.check_flags,
+                    expect=expect)
+    with open(os.path.join(check_dir, "check.json")) as f:
+        return json.load(f), output
+
+
+def check_submission(case, go_to_goal_export):
+    # The same controllers on the lab's poses send what the submission sent.
+    report, output = controllers_on_lab_poses(case, go_to_goal_export, "go_to_goal_python", expect=0)
+    replayed = report.get("controllers_on_lab_poses", {})
+    check(replayed.get("replayed") is True and replayed.get("same_commands") is True and replayed["steps"] >= 200,
+          "check-submission: go_to_goal_python's controllers on the lab's poses: %s\n%s" % (replayed, output[-2000:]))
+    check(replayed["max_v_difference_mps"] <= TOLERANCE and replayed["max_w_difference_radps"] <= TOLERANCE,
+          "check-submission: command differences %s" % replayed)
+    check("your controllers on the lab's poses send what the submission sent" in output,
+          "check-submission does not say the controllers agree: " + output[-2000:])
+    agreeing = max(replayed["max_v_difference_mps"], replayed["max_w_difference_radps"])
+    # Unseeded randomness: the replay's commands differ from the submission's.
+    folder = case.path("jitter")
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(folder, "jitter.py"), "w") as f:
+        f.write(JITTER_CONTROLLER)
+    config = os.path.join(folder, "jitter.yaml")
+    with open(config, "w") as f:
+        f.write(JITTER_CONFIG)
+    sim_dir = case.simulate(config, "jitter")
+    export_dir, _ = case.export(sim_dir, "jitter")
+    report, output = controllers_on_lab_poses(case, export_dir, "jitter", expect=5)
+    replayed = report["controllers_on_lab_poses"]
+    check(replayed["replayed"] is True and replayed["same_commands"] is False and
+          replayed["max_w_difference_radps"] > 1e-3,
+          "check-submission: a random controller's commands were found equal: %s" % replayed)
+    check("WARNING: your controllers decided differently on the lab's poses" in output and
+          re.search(r"robot [01] from step [0-9]+ \(largest difference", output),
+          "check-submission: no warning naming robot and step for a random controller: " + output[-2000:])
+    # A track export drove the lab with the tracker's commands: nothing to replay.
+    track_dir, _ = case.export(case.path("go_to_goal_python_sim"), "go_to_goal_python", strategy="track")
+    report, output = controllers_on_lab_poses(case, track_dir, "go_to_goal_python_track", expect=0)
+    check("controllers_on_lab_poses" not in report, "check-submission replayed a track export: %s" % report)
+    case.report.append("check-submission: go_to_goal_python's controllers send on the lab's poses what the "
+                       "submission sent (largest difference %.3g); a random controller is caught (exit 5)"
+                       % agreeing)
 
 
 def faulty(case, label='"a plain label"', description="a controller that fails"):
@@ -355,6 +437,7 @@ def main():
         if os.path.isfile(os.path.join(args.source, "config", "hrvo_circle_python.yaml")):
             experiment(case, "hrvo_circle_python", "hrvo_circle.py")  # radios, sensors, periods, delays
         failing_controller(case)
+        check_submission(case, export_dir)
         if args.simulator == "official":
             import numpy as np
             _, _, standin_poses, _ = case.run_script(export_dir, "go_to_goal_python_standin", flags=["--standin"])
