@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """run_log_write_failure: a run whose log cannot be written stops cleanly, never truncated.
 
-Runs `dream run config/go_to_goal.yaml` under `ulimit -f` with SIGXFSZ ignored, so the kernel
+Runs `dream run config/go_to_goal.yaml` under `ulimit -f` (dream ignores SIGXFSZ itself; a shell
+or Python's subprocess leaves it at its default, which would kill the process), so the kernel
 refuses the run log's writes with EFBIG partway through the run (a full disk, reproducibly), and
 requires: exit 4 (a run that did not finish), summary.json with end "failed" and a reason naming
 the log and the error, a run.lcmlog that python/dream_log.py reads to its last event and `dream log
@@ -23,8 +24,9 @@ LIMIT_KB = 64  # ulimit -f counts 1024-byte blocks; a whole go_to_goal run log i
 def check_limited_run(ctx, args):
     config = os.path.join(args.source, "config", "go_to_goal.yaml")
     out = ctx.path("limited")
-    # As a user would see it in a shell: `ulimit -f`, and the signal trapped so write() fails instead.
-    shell = f'ulimit -f {LIMIT_KB} && trap "" XFSZ && exec "$0" "$@"'
+    # As a user would see it in a shell: `ulimit -f`, SIGXFSZ at its default (it kills a process
+    # that does not ignore it).
+    shell = f'ulimit -f {LIMIT_KB} && trap - XFSZ && exec "$0" "$@"'
     code, text = ctx.run(["bash", "-c", shell, args.dream, "run", config, "--out", out], timeout=60)
     check(code == 4, f"dream run with a {LIMIT_KB} kB file size limit exited {code}, expected 4: {tail(text)}")
     check("File too large" in text and "run.lcmlog" in text,
