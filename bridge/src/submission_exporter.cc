@@ -128,6 +128,38 @@ std::string StrategyText(const ExportOptions& options) {
   return "?";
 }
 
+/// An export goes into a folder of its own: not a run's (its config.yaml
+/// would be replaced), and an upload/ there must be an earlier export's.
+void CheckExportFolder(const std::string& out_dir) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  for (const char* run_file : {"run.lcmlog", "summary.json"}) {
+    if (fs::exists(fs::path(out_dir) / run_file, error)) {
+      throw std::runtime_error("--out " + out_dir + " holds a run (" + run_file +
+                               "); an export would replace its config.yaml: choose another --out");
+    }
+  }
+  // A link named upload is refused later, as leading outside the folder.
+  if (fs::is_directory(fs::symlink_status(fs::path(out_dir) / "upload", error)) &&
+      !fs::exists(fs::path(out_dir) / "export.json", error)) {
+    throw std::runtime_error("--out " + out_dir + " has an upload/ that no dream export wrote (no export.json " +
+                             "beside it): choose another --out");
+  }
+}
+
+/// An earlier export's upload/ files, so that every file the new upload/
+/// holds is this export's (UPLOAD.txt says to upload them all).
+void RemoveEarlierUpload(const sim::OutputFolder& upload_folder) {
+  namespace fs = std::filesystem;
+  const fs::path upload(upload_folder.dir());
+  std::error_code error;
+  for (const fs::directory_entry& entry : fs::directory_iterator(upload)) {
+    if (!entry.is_regular_file()) continue;
+    fs::remove(entry.path(), error);
+    if (error) throw std::runtime_error(entry.path().string() + ": cannot remove the earlier export's file: " + error.message());
+  }
+}
+
 }  // namespace
 
 ExportRefused::ExportRefused(std::vector<ExportProblem> problems)
@@ -141,10 +173,14 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
   const std::string config_file = config_path.empty() ? (fs::path(run_dir) / "config.yaml").string() : config_path;
   const std::string log_file = (fs::path(run_dir) / "run.lcmlog").string();
   if (!fs::is_directory(run_dir)) throw std::runtime_error(run_dir + ": not a folder (pass a run folder written by dream run)");
+  if (!config_path.empty() && !fs::is_regular_file(config_path)) {
+    throw std::runtime_error("--config " + config_path + ": no such file");
+  }
   if (!fs::exists(config_file)) {
     throw std::runtime_error(config_file + ": missing; this run folder was written by an older dream run — "
                              "pass its config with --config FILE");
   }
+  CheckExportFolder(out_dir);
   if (!fs::exists(log_file)) throw std::runtime_error(log_file + ": missing; pass a run folder written by dream run");
 
   // Read and check everything before writing anything.
@@ -321,7 +357,8 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
           "Before uploading, try it: dream check-submission <this folder> --out <folder>\n";
 
   sim::OutputFolder out(out_dir);
-  const sim::OutputFolder upload(out.MakeSubfolder("upload"));
+  const sim::OutputFolder upload(out.MakeSubfolder("upload"));  // refuses a link leading outside
+  RemoveEarlierUpload(upload);
   upload.WriteFile(SubmissionFiles::kMainScript, SubmissionScriptTemplate());
   upload.WriteFile(SubmissionFiles::kParams, EncodeNpy(params.ToNpy()));
   upload.WriteFile(SubmissionFiles::kInitialPoses, EncodeNpy(initial));

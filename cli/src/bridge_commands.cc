@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -65,13 +66,6 @@ std::string ResultFile(const std::string& path) {
   }
   throw std::runtime_error(path + ": holds neither " + std::string(bridge::SubmissionFiles::kResult) + " nor " +
                            bridge::SubmissionFiles::kResultMat + "; pass the file the lab returned");
-}
-
-std::string DefaultOut(const std::string& given, const std::string& name, const std::string& suffix) {
-  if (!given.empty()) return given;
-  std::error_code error;
-  fs::create_directories("runs", error);
-  return (fs::path("runs") / (name + suffix)).string();
 }
 
 void PrintImported(const bridge::ImportedRun& imported) {
@@ -292,7 +286,20 @@ nlohmann::ordered_json CheckControllersOnLabPoses(const sim::OutputFolder& check
 
 int RunCheckSubmission(const CheckSubmissionArgs& args) {
   const bridge::ExportedSubmission exported = bridge::ExportedSubmission::Read(args.export_dir);
-  const sim::OutputFolder out(DefaultOut(args.out_dir, exported.config.name, "_check"));
+  if (!args.simulator.empty() && !fs::is_directory(args.simulator)) {
+    throw std::runtime_error("--simulator " + args.simulator +
+                             ": no such folder; pass a checkout of robotarium_python_simulator, or leave it out");
+  }
+  const std::string run_dir = args.run_dir.empty() ? exported.source_run : args.run_dir;
+  std::error_code same_error;
+  if (!args.out_dir.empty() && !run_dir.empty() && fs::equivalent(args.out_dir, run_dir, same_error)) {
+    throw std::runtime_error("--out " + args.out_dir + " is the simulated run the check compares with (" + run_dir +
+                             "); the imported lab run would replace it: choose another --out");
+  }
+  // Chosen and locked before the script runs: a second check into the same
+  // folder is refused before it can write lab_files/.
+  const sim::OutputFolder out(
+      RunFolderChoice(args.out_dir, "runs/" + exported.config.name + "_check", args.overwrite).dir());
   const std::string workdir = out.MakeSubfolder("lab_files");
   const std::string report_path = out.PathOf("check_report.json");
   for (const char* stale : {bridge::SubmissionFiles::kResult, "dream_result.partial.npy"}) {
@@ -314,7 +321,12 @@ int RunCheckSubmission(const CheckSubmissionArgs& args) {
   {
     ProcessGroup group;
     const pid_t pid = group.Start(argv);
-    code = group.Wait(pid);
+    code = group.WaitPassingOnStop(pid, StopFlag(), SIGINT);
+  }
+  if (StopFlag().load()) {
+    std::cerr << "dream check-submission: interrupted while the script ran (its output so far: " << workdir
+              << "/stdout.txt)\n";
+    return kExitInterrupted;
   }
   if (code == 5) {
     std::cerr << "dream check-submission: no official Robotarium simulator found (--simulator DIR, "
@@ -355,7 +367,6 @@ int RunCheckSubmission(const CheckSubmissionArgs& args) {
   check["debug_text"] = report.value("debug_text", std::string());
   check["settle_steps"] = imported.lab.settle_steps;
   check["complete"] = imported.lab.complete;
-  const std::string run_dir = args.run_dir.empty() ? exported.source_run : args.run_dir;
   if (!run_dir.empty() && fs::exists(fs::path(run_dir) / "run.lcmlog")) {
     const bridge::RunComparison comparison = bridge::CompareRunsAndWrite(run_dir, out.dir(), out.dir());
     std::cout << "\n" << comparison.Text();
@@ -466,7 +477,7 @@ void DeclareBridgeCommands(CommandLine& line) {
       "Example: dream check-submission exports/go_to_goal --out runs/go_to_goal_check",
       RunCheckSubmission);
   check_command->add_option("export", check_args->export_dir, "The folder dream export wrote")->required();
-  check_command->add_option("--out", check_args->out_dir, "Output folder (default runs/<name>_check)");
+  AddRunFolderOptions(check_command, &check_args->out_dir, &check_args->overwrite, "runs/<name>_check");
   check_command->add_option("--run", check_args->run_dir,
                             "The simulated run to compare with (default: the exported one)");
   check_command->add_option("--simulator", check_args->simulator,

@@ -23,7 +23,8 @@ enum ExitCode : int {
 
 /// Set by SIGINT/SIGTERM; every loop polls it.
 std::atomic<bool>& StopFlag();
-/// Makes SIGINT and SIGTERM set StopFlag().
+/// Makes SIGINT, SIGTERM and SIGHUP set StopFlag(), and ignores SIGXFSZ
+/// (a write past a file size limit then fails, and the recorder says so).
 void InstallStopSignals();
 
 /// Agents run in the lean dream-agent executable (no simulator, pictures or
@@ -146,6 +147,7 @@ struct CheckSubmissionArgs {
   bool standin = false;         ///< use the stand-in even when the official simulator is there
   bool require_official = false;
   bool skip_initialization = false;
+  bool overwrite = false;       ///< replace a run (an earlier check) already in the output folder
 };
 
 int RunExport(const ExportArgs& args);

@@ -12,8 +12,12 @@ namespace dream::cli {
 namespace fs = std::filesystem;
 namespace {
 
-// The files that make a folder a run's (and that a new run writes).
-constexpr const char* kRunFiles[] = {"run.lcmlog", "summary.json", "trajectories.png"};
+// The files a run and the commands on it write into its folder (run, import,
+// check-submission, render and compare without --out): --overwrite removes
+// them all, so none of the earlier run's can pass for the new one's.
+constexpr const char* kRunFiles[] = {"run.lcmlog",       "summary.json",    "trajectories.png", "trajectories.svg",
+                                     "run.mp4",          "run.gif",         "metrics.png",      "comparison.json",
+                                     "comparison.png",   "check.json",      "check_report.json"};
 
 void RemoveEarlierRun(const std::string& dir) {
   for (const char* name : kRunFiles) {

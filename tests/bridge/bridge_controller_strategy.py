@@ -25,6 +25,7 @@ compares it with the simulated run:
     controllers as agents: go_to_goal_python's send what the submission sent (check.json's
     controllers_on_lab_poses.same_commands, exit 0); a controller drawing unseeded random numbers
     does not (a warning naming the robot and step, exit 5); a track export has no such replay;
+    SIGINT while the script runs ends the check with exit 130, said as an interruption;
   - refusals: a C++ kind with --strategy controller (exit 3, naming --strategy track, nothing
     written); controller module names that would clash with the submission's files or the
     modules it imports (exit 1, naming controller.module); track still works for a Python kind.
@@ -39,9 +40,11 @@ import json
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
+import time
 
 SKIP = 77
 TOLERANCE = 1e-9
@@ -303,6 +306,48 @@ def check_submission(case, go_to_goal_export):
                        % agreeing)
 
 
+SLOW_CONTROLLER = '''"""A test controller that takes DREAM_TEST_STEP_S seconds a step (none when unset)."""
+
+import os
+import time
+
+from dream import Robot
+
+
+class Slow(Robot):
+    def update(self, step):
+        time.sleep(float(os.environ.get("DREAM_TEST_STEP_S", "0")))
+        return (0.02, 0.0)
+'''
+
+
+def interrupted_check(case):
+    """Ctrl-C while the submission runs: exit 130, said as an interruption, not as a failed script."""
+    folder = case.path("slow")
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(folder, "slow.py"), "w") as f:
+        f.write(SLOW_CONTROLLER)
+    config = os.path.join(folder, "slow.yaml")
+    with open(config, "w") as f:
+        f.write(JITTER_CONFIG.replace("jitter", "slow").replace("Jitter", "Slow").replace("steps: 60", "steps: 600"))
+    sim_dir = case.simulate(config, "slow")
+    export_dir, _ = case.export(sim_dir, "slow")
+    check_dir = case.path("slow_check")
+    # Slow only in the submission (the simulated run above took no time).
+    process = subprocess.Popen([case.dream, "check-submission", export_dir, "--out", check_dir] + case.check_flags,
+                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                               env=dict(os.environ, DREAM_TEST_STEP_S="0.02"))
+    time.sleep(3.0)  # the script is running (600 steps of 2 robots at 20 ms: about 24 s)
+    check(process.poll() is None, "check-submission of the slow controller ended before the interruption")
+    process.send_signal(signal.SIGINT)
+    output, _ = process.communicate(timeout=30)
+    check(process.returncode == 130, "check-submission exited %d after SIGINT, expected 130:\n%s" %
+          (process.returncode, output[-2000:]))
+    check("interrupted while the script ran" in output and "the script failed" not in output,
+          "check-submission does not say it was interrupted:\n" + output[-2000:])
+    case.report.append("check-submission interrupted while the script ran: exit 130")
+
+
 def faulty(case, label='"a plain label"', description="a controller that fails"):
     folder = case.path("faulty")
     os.makedirs(folder, exist_ok=True)
@@ -404,12 +449,20 @@ def refusals(case):
               "module %s: %s" % (module, output))
         check(not os.path.exists(out), "a refused export wrote files")
         os.remove(os.path.join(folder, module))
-    # track still works for a Python kind.
+    # track still works for a Python kind; exported into the controller export's folder, its
+    # upload/ holds its own files only (UPLOAD.txt says to upload every file there).
+    controller_export = case.path("go_to_goal_python_export_controller")
+    run([case.dream, "export", case.path("go_to_goal_python_sim"), "--out", controller_export, "--strategy", "track",
+         "-q"])
+    files = case.upload_listing(controller_export, "track over controller")
+    check(files == sorted(["dream_main.py", "dream_params.npy", "dream_initial_poses.npy",
+                           "dream_reference_poses.npy", "dream_reference_commands.npy"]),
+          "an export into an earlier export's folder left its files: %s" % files)
     export_dir, _ = case.export(case.path("go_to_goal_python_sim"), "go_to_goal_python", strategy="track")
     report, _, _, _ = case.run_script(export_dir, "go_to_goal_python_track", flags=["--standin"])
     check(report["verdict"] == "clean", "track on a Python kind: verdict " + report["verdict"])
     case.report.append("refused: a C++ kind (exit 3, advice --strategy track), module names dream_robot.py, "
-                       "numpy.py, json.py (exit 1); track works for a Python kind")
+                       "numpy.py, json.py (exit 1); track works for a Python kind, also over a controller export")
 
 
 def main():
@@ -438,6 +491,7 @@ def main():
             experiment(case, "hrvo_circle_python", "hrvo_circle.py")  # radios, sensors, periods, delays
         failing_controller(case)
         check_submission(case, export_dir)
+        interrupted_check(case)
         if args.simulator == "official":
             import numpy as np
             _, _, standin_poses, _ = case.run_script(export_dir, "go_to_goal_python_standin", flags=["--standin"])

@@ -204,8 +204,32 @@ def bad_input(loop):
     output, _ = run([dream, "export", loop.path("go_to_goal_sim"), "--out", loop.path("escape", "out")], expect=1)
     check("outside the output folder" in output, "escape: " + output)
     check(not os.listdir(loop.path("escape", "elsewhere")), "files were written outside the output folder")
+    # Output folders: a check never replaces the run it compares with, nor another run unless
+    # --overwrite; an export never writes into a run's folder.
+    sim_dir = loop.path("go_to_goal_sim")
+    with open(os.path.join(sim_dir, "run.lcmlog"), "rb") as f:
+        simulated_log = f.read()
+    output, _ = run([dream, "check-submission", export, "--standin", "--out", sim_dir], expect=1)
+    check("is the simulated run the check compares with" in output, "check into its own run: " + output)
+    output, _ = run([dream, "check-submission", export, "--standin", "--out", loop.path("hostile_check")], expect=1)
+    check("already holds a run" in output and "--overwrite" in output, "check into a run: " + output)
+    run([dream, "check-submission", export, "--standin", "--out", loop.path("hostile_check"), "--overwrite", "-q"])
+    with open(loop.path("hostile_check", "check.json")) as f:
+        check(json.load(f)["compared_with"] == sim_dir, "check --overwrite did not check the new export")
+    output, _ = run([dream, "export", sim_dir, "--out", loop.path("hostile_sim")], expect=1)
+    check("holds a run (run.lcmlog)" in output, "export into a run: " + output)
+    output, _ = run([dream, "export", sim_dir, "--config", loop.path("absent.yaml"), "--out",
+                     loop.path("absent_export")], expect=1)
+    check("--config %s: no such file" % loop.path("absent.yaml") in output, "export --config absent: " + output)
+    output, _ = run([dream, "check-submission", export, "--simulator", loop.path("absent"), "--out",
+                     loop.path("absent_check")], expect=1)
+    check("--simulator %s: no such folder" % loop.path("absent") in output, "check --simulator absent: " + output)
+    with open(os.path.join(sim_dir, "run.lcmlog"), "rb") as f:
+        check(f.read() == simulated_log, "the simulated run's log changed")
+
     loop.report.append("bad input: 21 robots, duration cap, injection, NaN, 7-robot result, escaping path: refused; "
-                       "an import over its declared duration or robot count: rejected")
+                       "an import over its declared duration or robot count: rejected; checks and exports "
+                       "into runs' folders: refused")
 
 
 def once(loop):
