@@ -118,12 +118,19 @@ def reruns(ctx, args):
         check(needle in text, f"--out refusal lacks {needle!r}: {text.strip()}")
     after = os.stat(os.path.join(first, "run.lcmlog"))
     check((before.st_size, before.st_mtime_ns) == (after.st_size, after.st_mtime_ns), "the refused run touched the log")
+    # What commands on the earlier run left beside it (a video, a plot, a comparison) goes too.
+    left = ["run.mp4", "metrics.png", "comparison.json", "check.json"]
+    for name in left:
+        with open(os.path.join(first, name), "w") as f:
+            f.write("the earlier run's")
     code, text = run_in(cwd, [args.dream, "-q", "run", config, "--out", "runs/go_to_goal", "--steps", "5",
                                    "--all-steps", "--overwrite"])
     check(code == 0, f"--overwrite exited {code}: {text.strip()}")
     check(read_summary(first)["steps"] == 5, "--overwrite did not replace the summary")
+    kept = [name for name in left if os.path.exists(os.path.join(first, name))]
+    check(not kept, f"--overwrite kept the earlier run's {kept}")
     check(not os.path.exists(os.path.join(cwd, "runs", "go_to_goal_4")), "--overwrite wrote a new folder")
-    return "reruns: runs/go_to_goal, _2, _3; --out refused naming --overwrite; --overwrite replaces"
+    return "reruns: runs/go_to_goal, _2, _3; --out refused naming --overwrite; --overwrite replaces, outputs and all"
 
 
 def sweep_default(ctx, args):
