@@ -179,7 +179,9 @@ std::vector<sim::MetricSeries> PickMetrics(std::vector<sim::MetricSeries> all, c
 void CheckOutputFolder(const fs::path& out) {
   const fs::path folder = out.has_parent_path() ? out.parent_path() : fs::path(".");
   if (!fs::is_directory(folder)) {
-    throw std::runtime_error("--out " + out.string() + ": the folder " + folder.string() + " does not exist");
+    throw std::runtime_error("--out " + out.string() + ": " +
+                             (fs::exists(folder) ? folder.string() + " is a file, not a folder"
+                                                 : "the folder " + folder.string() + " does not exist"));
   }
 }
 

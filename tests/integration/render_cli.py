@@ -134,9 +134,12 @@ def test(ctx):
     empty_log = ctx.path("empty", "status_only.lcmlog")
     os.mkdir(ctx.path("empty"))
     write_log(empty_log, [("DREAM_STATUS", b"\x00" * 8), ("OTHER", b"abc")])
+    with open(ctx.path("a_file"), "w") as f:
+        f.write("not a folder")
     cases = [
         ([run, "--out", ctx.path("x.bmp")], EXIT_USAGE, ["x.bmp", ".png, .svg, .mp4, .gif"]),
         ([run, "--out", ctx.path("no_folder", "x.png")], EXIT_INPUT, ["no_folder", "does not exist"]),
+        ([run, "--out", ctx.path("a_file", "x.png")], EXIT_INPUT, ["a_file is a file, not a folder"]),
         ([empty_log], EXIT_INPUT, [f"no poses in {empty_log}: nothing to render"]),
         ([ctx.path("no_such_run")], EXIT_INPUT, ["no_such_run"]),
         ([os.path.join(bare, "lab1.lcmlog"), "--radio-links", "--out", ctx.path("bare", "x.png")], EXIT_INPUT,

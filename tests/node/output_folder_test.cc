@@ -90,7 +90,9 @@ TEST_F(OutputFolderTest, FileWrittenWholeWithNoTemporaryLeftBehind) {
 
 TEST_F(OutputFolderTest, AFileWhereTheFolderShouldBeIsReported) {
   std::ofstream(Path("taken")) << "x";
-  EXPECT_THAT(MessageOf([&] { OutputFolder(Path("taken")); }), HasSubstr("cannot create the output folder"));
+  EXPECT_THAT(MessageOf([&] { OutputFolder(Path("taken")); }), HasSubstr(Path("taken") + ": is a file, not a folder"));
+  EXPECT_THAT(MessageOf([&] { OutputFolder(Path("taken/run")); }),
+              HasSubstr("its parent " + Path("taken") + " is a file, not a folder"));
 }
 
 }  // namespace

@@ -45,11 +45,16 @@ OutputFolder::OutputFolder(std::string dir, Parents parents) : dir_(std::move(di
   if (parents == Parents::kCreate || (!fs::exists(parent) && IsToolFolder(parent))) {
     fs::create_directories(out, error);
   } else if (!fs::is_directory(parent)) {
-    throw std::runtime_error("output folder " + dir_ + ": its parent folder " + parent.string() + " does not exist");
+    throw std::runtime_error("output folder " + dir_ + ": its parent " +
+                             (fs::exists(parent) ? parent.string() + " is a file, not a folder"
+                                                 : "folder " + parent.string() + " does not exist"));
   } else {
     fs::create_directory(out, error);
   }
   if (error || !fs::is_directory(out)) {
+    if (fs::exists(out) && !fs::is_directory(out)) {
+      throw std::runtime_error("output folder " + dir_ + ": is a file, not a folder");
+    }
     throw std::runtime_error("cannot create the output folder " + dir_ + (error ? ": " + error.message() : std::string()));
   }
   real_dir_ = fs::canonical(out, error).string();
