@@ -205,6 +205,14 @@ TEST(RunConfigTest, UnknownKeysAreTyposAndSayWhatIsAllowed) {
   EXPECT_NE(ErrorOf(std::string(kMinimal) + "world: {agent_timeout_s: -1}\n")
                 .find("test.yaml:11: world.agent_timeout_s: must be > 0, got -1"),
             std::string::npos);
+  // A resend every microsecond flooded memq's queue and lost the agents' answers.
+  for (const char* interval : {"1e-6", "0", "-1"}) {
+    EXPECT_NE(ErrorOf(std::string(kMinimal) + "world: {resend_interval_s: " + interval + "}\n")
+                  .find(std::string("test.yaml:11: world.resend_interval_s: must be >= 0.01 s (more often floods the "
+                                    "bus), got ") + interval),
+              std::string::npos)
+        << interval;
+  }
   EXPECT_NE(ErrorOf(Replace(kMinimal, "steps: 100", "steps: -5")).find("test.yaml:4: steps: must be >= 1, got -5"),
             std::string::npos);
 }

@@ -65,7 +65,11 @@ sim::SimNodeOptions ReadSimOptions(const ConfigNode& root) {
     };
     options.agent_timeout_s = positive("agent_timeout_s", options.agent_timeout_s);
     options.start_timeout_s = positive("start_timeout_s", options.start_timeout_s);
-    options.resend_interval_s = positive("resend_interval_s", options.resend_interval_s);
+    options.resend_interval_s = world.GetDouble("resend_interval_s", options.resend_interval_s);
+    if (!(options.resend_interval_s >= sim::SimNodeOptions::kMinResendIntervalS)) {
+      world.FailAt("resend_interval_s", "must be >= 0.01 s (more often floods the bus), got " +
+                                            world.Required("resend_interval_s").AsString());
+    }
     options.max_abs_v_mps = positive("max_abs_v_mps", options.max_abs_v_mps);
     options.max_abs_w_radps = positive("max_abs_w_radps", options.max_abs_w_radps);
   }

@@ -24,8 +24,9 @@ bool SimNodeOptions::IsValid(std::string* error) const {
   if (max_steps < 1) return fail("max_steps must be >= 1, got " + std::to_string(max_steps));
   if (!positive(agent_timeout_s)) return fail("agent_timeout_s must be > 0, got " + std::to_string(agent_timeout_s));
   if (!positive(start_timeout_s)) return fail("start_timeout_s must be > 0, got " + std::to_string(start_timeout_s));
-  if (!positive(resend_interval_s)) {
-    return fail("resend_interval_s must be > 0, got " + std::to_string(resend_interval_s));
+  if (!(std::isfinite(resend_interval_s) && resend_interval_s >= kMinResendIntervalS)) {
+    return fail("resend_interval_s must be >= " + std::to_string(kMinResendIntervalS) + " s, got " +
+                std::to_string(resend_interval_s));
   }
   if (!positive(max_abs_v_mps)) return fail("max_abs_v_mps must be > 0, got " + std::to_string(max_abs_v_mps));
   if (!positive(max_abs_w_radps)) return fail("max_abs_w_radps must be > 0, got " + std::to_string(max_abs_w_radps));

@@ -33,8 +33,11 @@ struct SimNodeOptions {
   /// Wall time to wait at step 0 for every robot's agent. Must be > 0.
   double start_timeout_s = 30.0;
   /// While waiting, the current step is published again this often, so a
-  /// datagram lost on udpm cannot stall the run. Must be > 0.
+  /// datagram lost on udpm cannot stall the run. At least
+  /// kMinResendIntervalS: more often floods the bus (memq's queue overflows
+  /// and the agents' answers are lost with the rest).
   double resend_interval_s = 0.25;
+  static constexpr double kMinResendIntervalS = 0.01;
   /// Commands beyond these magnitudes (or NaN/inf) are rejected as absurd and
   /// the robot holds still. Far above the Robotarium's limits (0.2 m/s,
   /// 3.6 rad/s): merely fast commands are saturated and counted as actuator
