@@ -75,7 +75,21 @@ def small_sweep(ctx, dream, config):
     check(len(re.findall(r"^\| seed\d \| \d \| no success \| 40 \|", md, re.MULTILINE)) == 3,
           f"sweep.md should have 3 run rows: {md[-900:]}")
     check("| success rate |" in text, "the summary block is not printed at the end")
-    return "3 seeds x 40 steps: 3 rows, 0 successes (as expected)"
+    # The run's config.yaml says how to run it again; that command works and gives the same run.
+    run = os.path.join(out, "runs", "seed2")
+    again = re.search(r"^# Run again \(replacing this run with the same one\): (dream run .*)$",
+                      read_text(os.path.join(run, "config.yaml")), re.MULTILINE)
+    check(again is not None, f"{run}/config.yaml has no 'Run again' line")
+    before = read_summary(run)
+    argv = again.group(1).split()
+    code, text = ctx.run([dream] + argv[1:], timeout=60)
+    # Exit 5, as the sweep's own run: 40 steps are too few to reach the goals.
+    check(code == 5, f"the 'Run again' command exited {code}, expected 5: {text.strip()[-400:]}")
+    after = read_summary(run)
+    check((after["seed"], after["steps"], after["final_poses"]) == (before["seed"], before["steps"],
+                                                                   before["final_poses"]),
+          f"the run again differs: {after['final_poses']} vs {before['final_poses']}")
+    return "3 seeds x 40 steps: 3 rows, 0 successes (as expected); a run's 'Run again' line repeats it"
 
 
 def parameter_sweep(ctx, dream, config):
