@@ -40,6 +40,7 @@ HostedAgents::HostedAgents(lcm::LcmBus& bus, const config::ControllerConfig& con
   std::vector<std::unique_ptr<agents::RobotAgent>> robots;
   for (int id : robot_ids) robots.push_back(factory->Make(id));
   cpp_ = std::make_unique<agents::AgentHost>(bus, std::move(robots), NewAgentId());
+  cpp_->ExpectWorldOfRobots(config.num_robots);
 }
 
 bool HostedAgents::Run(const std::atomic<bool>& stop, double idle_timeout_s) {

@@ -341,6 +341,31 @@ TEST_F(AgentHostTest, MalformedPosesAndMissingRobotsAreCountedNotFatal) {
   EXPECT_EQ(host.bad_messages().count(lcm::kPosesChannel), 2);
 }
 
+// Agents started with another experiment's config (10 robots) against a
+// world of 3 would drive its robots with the wrong controller: they never
+// join it, and Run() says why instead of "no DREAM_POSES".
+TEST_F(AgentHostTest, AWorldOfAnotherRobotCountIsNeverJoined) {
+  int calls = 0;
+  std::vector<std::unique_ptr<RobotAgent>> agents;
+  agents.push_back(MakeAgent(0, &calls));
+  AgentHost host(bus_, std::move(agents), 1);
+  host.ExpectWorldOfRobots(10);
+  lcm::Publish(bus_, lcm::kPosesChannel, Poses(1, 3));
+  Drain();
+  EXPECT_EQ(calls, 0);
+  EXPECT_TRUE(commands_.empty());
+  EXPECT_FALSE(host.follower().joined());
+  EXPECT_EQ(host.bad_messages().count(lcm::kPosesChannel), 1);
+  const std::atomic<bool> stop{false};
+  EXPECT_FALSE(host.Run(stop, 0.05));  // nothing but that world: gives up as a silent world would
+  // The world of its own count is joined as ever.
+  host.ExpectWorldOfRobots(3);
+  lcm::Publish(bus_, lcm::kPosesChannel, Poses(2, 3));
+  Drain();
+  EXPECT_EQ(calls, 1);
+  EXPECT_TRUE(host.follower().joined());
+}
+
 TEST_F(AgentHostTest, AForgedFarStepOrAnotherRunsFinishNeitherFreezesNorEndsTheRobots) {
   int calls = 0;
   std::vector<std::unique_ptr<RobotAgent>> agents;

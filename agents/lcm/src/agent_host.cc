@@ -170,6 +170,12 @@ void AgentHost::OnPoses(const std::string& channel, const robot_poses_t& poses) 
       return;
     }
   }
+  if (expected_robots_ >= 0 && poses.num_robots != expected_robots_) {
+    bad_messages_.Report(channel, "a world of " + std::to_string(poses.num_robots) +
+                                      " robots; this agent's config has " + std::to_string(expected_robots_));
+    last_other_world_robots_ = poses.num_robots;
+    return;
+  }
   const bool joining = !follower_.joined();
   const WorldFollower::StepDecision decision = follower_.OnPoses(poses.run_id, poses.step);
   if (decision == WorldFollower::StepDecision::kIgnore) return;
@@ -214,6 +220,13 @@ bool AgentHost::Run(const std::atomic<bool>& stop, double idle_timeout_s) {
       saw_poses_since_check_ = false;
       last_activity = Clock::now();
     } else if (std::chrono::duration<double>(Clock::now() - last_activity).count() > idle_timeout_s) {
+      if (!follower_.joined() && last_other_world_robots_ >= 0) {
+        spdlog::error(
+            "DREAM_POSES on {} came from a world of {} robots, but this agent's config has {}: start the agents "
+            "with the config the simulator (dream sim) runs",
+            lcm_.url(), last_other_world_robots_, expected_robots_);
+        return false;
+      }
       spdlog::error(
           "no DREAM_POSES for {:g} s on {}: is the simulator (dream sim) running on the same LCM URL?",
           idle_timeout_s, lcm_.url());

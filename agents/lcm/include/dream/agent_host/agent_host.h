@@ -53,6 +53,13 @@ class AgentHost {
   AgentHost(const AgentHost&) = delete;
   AgentHost& operator=(const AgentHost&) = delete;
 
+  /// The robot count of the config the agents were built from: DREAM_POSES
+  /// of a world with another count are refused as bad messages and never
+  /// joined (agents started with another experiment's config would
+  /// otherwise drive its robots), and Run() names the mismatch when that was
+  /// all it heard. Without it, any count is followed.
+  void ExpectWorldOfRobots(int num_robots) { expected_robots_ = num_robots; }
+
   /// Handles messages until the world reports FINISHED or ABORTED, `stop` is
   /// set, or no DREAM_POSES arrived for `idle_timeout_s` of wall time.
   /// Returns true when the world ended the run, false otherwise.
@@ -102,6 +109,8 @@ class AgentHost {
   bool saw_poses_since_check_ = false;
   WorldFollower follower_;
   int64_t obstacles_run_id_ = 0;  // run of world_.obstacles
+  int expected_robots_ = -1;      // -1: any
+  int last_other_world_robots_ = -1;  // the count of the last refused world
   /// Radio messages heard before the first DREAM_POSES (a neighbour may
   /// answer step 0 first); delivered on joining if of the joined run.
   std::vector<std::pair<std::string, radio_message_t>> radio_before_joining_;
