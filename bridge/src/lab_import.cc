@@ -39,6 +39,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/// The largest |x|, |y| (m) and |theta| (rad), and |v|, |w|, an imported
+/// result may hold: far beyond any arena and any robot.
+constexpr double kMaxAbsPose = 1000.0;
+constexpr double kMaxAbsCommand = 1e6;
+
 /// "x of robot 3" for a result column.
 std::string ColumnMeaning(int64_t column, int num_robots) {
   switch (column) {
@@ -242,6 +247,14 @@ LabResult ParseLabResult(const NpyArray& rows, const std::string& name, const Ex
       if (!std::isfinite(value)) {
         fail("row " + std::to_string(r) + ": " + ColumnMeaning(c, n) + " is " + std::to_string(value) +
              "; every value must be finite");
+      }
+      // No tracker reports a robot a kilometre away: such a value is a broken
+      // file, and its square would overflow the comparisons.
+      const bool pose = c >= ResultLayout::kFixedColumns && c < ResultLayout::kFixedColumns + 3 * int64_t{n};
+      const double limit = pose ? kMaxAbsPose : kMaxAbsCommand;
+      if (c >= ResultLayout::kFixedColumns && std::abs(value) > limit) {
+        fail("row " + std::to_string(r) + ": " + ColumnMeaning(c, n) + " is " + std::to_string(value) +
+             "; beyond " + std::to_string(static_cast<int64_t>(limit)) + " in magnitude no lab value is meant");
       }
     }
   }

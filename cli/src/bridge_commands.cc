@@ -413,8 +413,8 @@ void DeclareBridgeCommands(CommandLine& line) {
       ->check(CLI::IsMember({"track", "replay", "controller"}))
       ->capture_default_str();
   export_command->add_flag("--force", export_args->force,
-                           "Export although robots were lost at the end of the run (a controller failed or an agent "
-                           "fell silent); those problems are printed as warnings");
+                           "Export although the run is not ready: robots lost at its end (a controller failed or an\n"
+                           "agent fell silent) or its experiment's goal missed; those problems are printed as warnings");
   export_command->add_flag("--barriers", export_args->barriers,
                            "Pass commands through the Robotarium's barrier certificates (safety layer)");
   export_command->add_option("--settle-steps", export_args->settle_steps,

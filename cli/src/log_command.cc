@@ -91,8 +91,22 @@ int RunLogInfo(const std::string& path_given) {
   return kExitOk;
 }
 
+namespace {
+
+/// `text` as the regular expression an option names; a bad one is an input
+/// error naming the option.
+std::regex ChannelRegex(const std::string& text, const std::string& option) {
+  try {
+    return std::regex(text);
+  } catch (const std::regex_error& e) {
+    throw std::invalid_argument(option + " '" + text + "' is not a regular expression: " + e.what());
+  }
+}
+
+}  // namespace
+
 int RunLogDiff(const std::string& a, const std::string& b, const std::string& channel_regex) {
-  const std::regex channels(channel_regex);
+  const std::regex channels = ChannelRegex(channel_regex, "--channels");
   const Payloads left = PayloadsByChannel(a, channels);
   const Payloads right = PayloadsByChannel(b, channels);
   bool same = true;
@@ -128,12 +142,7 @@ int RunLogDiff(const std::string& a, const std::string& b, const std::string& ch
 
 int RunLogEcho(const std::string& path_given, const std::string& channel_regex, long long limit) {
   const std::string path = RunLogPath(path_given);
-  std::regex channels;
-  try {
-    channels = std::regex(channel_regex);
-  } catch (const std::regex_error& e) {
-    throw std::invalid_argument("CHANNEL_REGEX '" + channel_regex + "' is not a regular expression: " + e.what());
-  }
+  const std::regex channels = ChannelRegex(channel_regex, "CHANNEL_REGEX");
   lcm::LogReader reader(path);
   lcm::LogRecord record;
   int64_t offset = 0;  // of the current event, for reports: LogReader does not tell

@@ -83,7 +83,7 @@ std::optional<config::RunConfig> LoadConfig(const RenderArgs& args, const fs::pa
   }
 }
 
-sim::ArenaOverlays Overlays(const RenderArgs& args, const fs::path& log) {
+sim::ArenaOverlays Overlays(const RenderArgs& args, const fs::path& log, int log_robots) {
   const bool needed = args.radio_links || args.sensor_ranges;
   const std::optional<config::RunConfig> config = LoadConfig(args, log, needed);
   if (!config) {
@@ -91,6 +91,14 @@ sim::ArenaOverlays Overlays(const RenderArgs& args, const fs::path& log) {
       throw std::runtime_error(std::string(args.radio_links ? "--radio-links" : "--sensor-ranges") +
                                " needs the run's config: no config.yaml beside " + log.string() + " (give --config FILE)");
     }
+    return {};
+  }
+  // Another run's config would draw its goals, radio and sensors on these robots.
+  if (config->num_robots != log_robots) {
+    const std::string mismatch = config->source + " has " + std::to_string(config->num_robots) + " robots, " +
+                                 log.string() + " " + std::to_string(log_robots);
+    if (needed || !args.config_path.empty()) throw std::runtime_error("--config: " + mismatch + ": not this run's config");
+    spdlog::warn("drawing without the config's goals: {}", mismatch);
     return {};
   }
   sim::ArenaOverlays overlays;
@@ -214,7 +222,7 @@ int RunRender(const RenderArgs& args) {
     std::cout << "plot:    " << out.string() << " (" << series.size() << " series)\n";
     return kExitOk;
   }
-  sim::ArenaOverlays overlays = Overlays(args, log);
+  sim::ArenaOverlays overlays = Overlays(args, log, run.num_robots());
   RunLabelFromSummary(log, &overlays);
   if (kind == Kind::kPicture) {
     sim::TrajectoryPicture::Render(run, overlays, out.string(), format, args.width_px > 0 ? args.width_px : 1280);

@@ -181,6 +181,8 @@ def test(ctx):
          [truncated, "cut short", f"after event {kept_events}"], False),
         ("log diff with a truncated log", ["log", "diff", truncated, truncated], EXIT_INPUT,
          [truncated, "cut short"], False),
+        ("log diff --channels not a regex", ["log", "diff", truncated, truncated, "--channels", "("], EXIT_INPUT,
+         ["--channels '(' is not a regular expression"], False),
         ("log info on an empty log", ["log", "info", empty_log], EXIT_INPUT, [empty_log, "empty log"], False),
         ("log info on a folder without a log", ["log", "info", folder_without_log], EXIT_INPUT,
          [os.path.join(folder_without_log, "run.lcmlog"), "no such log file"], False),

@@ -140,6 +140,8 @@ def test(ctx):
         ([run, "--out", ctx.path("x.bmp")], EXIT_USAGE, ["x.bmp", ".png, .svg, .mp4, .gif"]),
         ([run, "--out", ctx.path("no_folder", "x.png")], EXIT_INPUT, ["no_folder", "does not exist"]),
         ([run, "--out", ctx.path("a_file", "x.png")], EXIT_INPUT, ["a_file is a file, not a folder"]),
+        ([run, "--config", os.path.join(args.source, "config", "go_to_goal.yaml"), "--out", ctx.path("other.png")],
+         EXIT_INPUT, ["go_to_goal.yaml has 8 robots", "not this run's config"]),
         ([empty_log], EXIT_INPUT, [f"no poses in {empty_log}: nothing to render"]),
         ([ctx.path("no_such_run")], EXIT_INPUT, ["no_such_run"]),
         ([os.path.join(bare, "lab1.lcmlog"), "--radio-links", "--out", ctx.path("bare", "x.png")], EXIT_INPUT,
