@@ -51,6 +51,7 @@ TEST(RunJudgeTest, EachThingThatWentWrongOnTheBusIsAReason) {
   run.outcome.command_conflicts = 4;
   run.outcome.bad_messages = {{"DREAM_CMD_0", 2}, {"DREAM_POSES", 1}};
   run.outcome.handler_failures = 1;
+  run.outcome.dropped_messages = 12;
   const RunJudgement judgement = JudgeRun(run.config, run.outcome, run.world);
   EXPECT_EQ(judgement.verdict(), RunVerdict::kNotReady);
   ASSERT_NE(Find(judgement, "lost_robots"), nullptr);
@@ -64,6 +65,8 @@ TEST(RunJudgeTest, EachThingThatWentWrongOnTheBusIsAReason) {
   EXPECT_THAT(Find(judgement, "bad_messages")->problem, HasSubstr("3 undecodable or refused messages"));
   EXPECT_THAT(Find(judgement, "bad_messages")->problem, HasSubstr("DREAM_CMD_0 (2)"));
   EXPECT_NE(Find(judgement, "handler_failures"), nullptr);
+  ASSERT_NE(Find(judgement, "dropped_messages"), nullptr);
+  EXPECT_THAT(Find(judgement, "dropped_messages")->problem, HasSubstr("12 messages were dropped"));
   EXPECT_EQ(Find(judgement, "did_not_finish"), nullptr);
   EXPECT_THAT(judgement.Text(), Not(HasSubstr("will run on the Robotarium")));
 }

@@ -74,6 +74,12 @@ std::vector<VerdictReason> OutcomeReasons(const RunOutcome& outcome) {
                        std::to_string(outcome.handler_failures) + " exceptions in message handlers (caught and logged)",
                        "summary.json handler_failures; the run's log lines"});
   }
+  if (outcome.dropped_messages > 0) {
+    reasons.push_back({"dropped_messages", RunVerdict::kNotReady,
+                       std::to_string(outcome.dropped_messages) +
+                           " messages were dropped by the in-process bus, its queue full (a message flood)",
+                       "summary.json dropped_messages; the run's log lines"});
+  }
   return reasons;
 }
 

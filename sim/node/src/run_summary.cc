@@ -66,6 +66,7 @@ nlohmann::ordered_json RunSummary(const config::RunConfig& config, const RunOutc
   json["bad_messages"] = outcome.bad_messages;
   json["bad_message_senders"] = outcome.bad_message_senders;
   json["handler_failures"] = outcome.handler_failures;
+  json["dropped_messages"] = outcome.dropped_messages;
   json["log"] = log_file_name;
   json["log_events"] = outcome.log_events;
   // Where the robots really ended: a realistic world's poses() are what the

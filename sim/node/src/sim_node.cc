@@ -408,6 +408,7 @@ RunOutcome SimNode::Finish(RunOutcome::End end, const std::string& reason) {
   outcome.bad_messages = bad_messages_.per_channel();
   outcome.bad_message_senders = bad_messages_.senders();
   outcome.handler_failures = lcm_.handler_failures();
+  outcome.dropped_messages = lcm_.dropped_messages();
   outcome.log_events = recorder_ != nullptr ? recorder_->events_written() : 0;
   return outcome;
 }

@@ -65,6 +65,7 @@ class LcmBus final : public LcmInterface {
   int HandleSubscriptions(int timeout_ms) override;
   const std::string& url() const override { return url_; }
   long handler_failures() const override { return handler_failures_; }
+  long dropped_messages() const override { return queue_overflows(); }
   /// Channels whose routes are cached; beyond it, routes are matched per message.
   static constexpr size_t kMaxRoutedChannels = 1024;
   /// Messages delivered on channels past kMaxRoutedChannels (made-up names, usually).

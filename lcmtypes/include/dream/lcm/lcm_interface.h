@@ -35,6 +35,10 @@ class LcmInterface {
 
   /// Handler exceptions caught so far.
   virtual long handler_failures() const = 0;
+
+  /// Messages the transport dropped so far because its queue was full
+  /// (memq://); a transport without such a queue drops none here.
+  virtual long dropped_messages() const = 0;
 };
 
 }  // namespace dream::lcm

@@ -13,7 +13,7 @@ namespace dream::sim {
 /// What went wrong on the bus, as verdict reasons (all kNotReady):
 /// did_not_finish, controller_failed, lost_robots (silent agents, not those
 /// of controller_failed), command_conflicts, bad_messages, other_worlds,
-/// handler_failures. Empty for a healthy run.
+/// handler_failures, dropped_messages. Empty for a healthy run.
 std::vector<VerdictReason> OutcomeReasons(const RunOutcome& outcome);
 
 /// The run's judgement: debug()'s verdict on the world's counts, the lab

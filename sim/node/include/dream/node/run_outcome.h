@@ -39,6 +39,7 @@ struct RunOutcome {
   /// Per channel of bad_messages, the agent ids that sent them (when the messages carry one).
   std::map<std::string, std::set<int64_t>> bad_message_senders;
   long handler_failures = 0;         ///< exceptions caught in message handlers on the run's bus
+  long dropped_messages = 0;         ///< messages the run's bus dropped, its queue full (memq://)
   int64_t log_events = 0;            ///< events written to the run log
 
   bool ok() const { return end == End::kFinished; }
