@@ -186,7 +186,7 @@ LabReplayOutcome ReplayLabRun(const LabReplayArgs& args, std::ostream* report) {
   if (in_process) {
     std::vector<int> ids(static_cast<size_t>(run.config().num_robots));
     std::iota(ids.begin(), ids.end(), 0);
-    host = std::make_unique<HostedAgents>(bus, run.config(), ids, run.factory());
+    host = std::make_unique<HostedAgents>(bus, run.config(), ids, run.factory(), run.config().sim.agent_timeout_s);
   }
 
   // The lab's poses, replayed as the world; what it adds to the summary: the

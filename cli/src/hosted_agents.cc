@@ -25,9 +25,10 @@ void HostedAgents::Check(const config::ControllerConfig& config, const agents::C
 }
 
 HostedAgents::HostedAgents(lcm::LcmBus& bus, const config::ControllerConfig& config, const std::vector<int>& robot_ids,
-                           const agents::ControllerFactory* factory)
+                           const agents::ControllerFactory* factory, double world_agent_timeout_s)
     : bus_(bus) {
   if (agents::IsPythonController(config)) {
+    if (world_agent_timeout_s > 0.0) PythonHostLibrary::Get().SetAgentTimeout(world_agent_timeout_s);
     python_ = PythonHostLibrary::Get().Create(bus, agents::PythonControllerSpecJson(config), robot_ids, NewAgentId(),
                                               PythonPaths());
     return;

@@ -28,9 +28,13 @@ class HostedAgents {
   static void Check(const config::ControllerConfig& config, const agents::ControllerFactory* built = nullptr);
 
   /// Builds the agents of `robot_ids` and subscribes them on `bus`, C++
-  /// agents with `factory` when given (the run's), else with a factory of their own.
+  /// agents with `factory` when given (the run's), else with a factory of
+  /// their own. `world_agent_timeout_s`: how long the run's world waits for
+  /// an agent (its world.agent_timeout_s, overrides included), which bounds a
+  /// Python controller's step (PythonHostLibrary::SetAgentTimeout); 0 when
+  /// the caller does not know it (dream agent).
   HostedAgents(lcm::LcmBus& bus, const config::ControllerConfig& config, const std::vector<int>& robot_ids,
-               const agents::ControllerFactory* factory = nullptr);
+               const agents::ControllerFactory* factory = nullptr, double world_agent_timeout_s = 0.0);
 
   /// Handles `bus` until the world ends the run (true), or `stop` / silence (false).
   bool Run(const std::atomic<bool>& stop, double idle_timeout_s);

@@ -91,12 +91,10 @@ int main(int argc, char** argv) {
 
   try {
     if (const CommandLine::Action action = line.ChosenAction()) return action();
-  } catch (const dream::config::ConfigError& e) {
+  } catch (const std::exception& e) {  // config::ConfigError included
     std::cerr << "dream: " << e.what() << '\n';
-    return kExitInputError;
-  } catch (const std::exception& e) {
-    std::cerr << "dream: " << e.what() << '\n';
-    return kExitInputError;
+    // Ctrl-C while a controller was being set up (a Python setup() that hangs) is an interruption.
+    return StopFlag().load() ? kExitInterrupted : kExitInputError;
   }
   return kExitUsage;
 }

@@ -17,19 +17,29 @@ class PythonHostLibrary {
   /// @throws std::runtime_error saying what is missing and how to get it.
   static const PythonHostLibrary& Get();
 
+  /// The world's agent_timeout_s, for the module's watchdog
+  /// (agents::PythonHostWatchFunction): a Python controller's step still
+  /// running after 0.8 x this is stopped as failed. A command that knows its
+  /// run's config calls this before Create; otherwise Create reads
+  /// world.agent_timeout_s from the config file the spec names (without
+  /// --set overrides), else takes its default (sim::SimNodeOptions). Ctrl-C
+  /// and SIGTERM (StopFlag) always interrupt a running controller.
+  void SetAgentTimeout(double agent_timeout_s) const;
+
   void Check(const std::string& spec_json, const agents::PythonAgentHost::Paths& paths) const {
     check_(spec_json, paths);
   }
   std::unique_ptr<agents::PythonAgentHost> Create(lcm::LcmBus& bus, const std::string& spec_json,
                                                   const std::vector<int>& robot_ids, int64_t agent_id,
-                                                  const agents::PythonAgentHost::Paths& paths) const {
-    return create_(bus, spec_json, robot_ids, agent_id, paths);
-  }
+                                                  const agents::PythonAgentHost::Paths& paths) const;
 
  private:
-  PythonHostLibrary(agents::PythonHostCheckFunction check, agents::PythonHostCreateFunction create)
-      : check_(check), create_(create) {}
+  PythonHostLibrary(agents::PythonHostWatchFunction watch, agents::PythonHostCheckFunction check,
+                    agents::PythonHostCreateFunction create)
+      : watch_(watch), check_(check), create_(create) {}
 
+  agents::PythonHostWatchFunction watch_;
+  mutable bool agent_timeout_set_ = false;
   agents::PythonHostCheckFunction check_;
   agents::PythonHostCreateFunction create_;
 };

@@ -8,6 +8,6 @@ from .robot import REQUIRED, Key, MovementReading, NeighbourDetection, ObstacleR
 from .radios import GraphRadio, Mailbox, RadioMessage, RangeRadio, RoleRadio, mix_seed, pack_floats, unpack_floats
 from .sensors import MovementSensor, ObstacleSensor, OdometrySensor, wrap_angle
 from .timer import Timer
-from .robot_agent import AgentOutput, ControllerFault, RobotAgent, controller_error_text
+from .robot_agent import AgentOutput, ControllerFault, ControllerTimeout, RobotAgent, RunInterrupted, controller_error_text, is_run_interrupt
 from .controller_spec import ConfigError, ControllerSpec, check
 from .hrvo import HrvoAvoidance, HrvoParams

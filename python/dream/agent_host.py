@@ -9,10 +9,18 @@ twice. Messages are lcm-gen's Python types.
 
 A controller that raises is reported once on DREAM_FAULT_<id> (robot_fault_t: the error's
 file:line), logged, and its robot is no longer answered: the world marks it lost and stops
-it, and the run goes on. Undecodable or inconsistent messages are counted per channel and
-dropped; nothing from the bus can raise out of a handler.
+it, and the run goes on. Any exception counts, SystemExit included, and so does a call the
+embedding tool's watchdog stopped for running too long (ControllerTimeout). Undecodable or
+inconsistent messages are counted per channel and dropped; nothing from the bus can raise out
+of a handler. An interrupt of the whole run (RunInterrupted, raised by that watchdog on Ctrl-C)
+ends the step's handling at once: `interrupted` is set, and nothing is answered any more.
+
+Each controller call is marked in the call cell (set_call_cell): a token unique to the call
+while it runs, 0 otherwise, which the embedding tool's watchdog thread reads
+(agents/python_host).
 """
 
+import itertools
 import logging
 import re
 import struct
@@ -22,7 +30,7 @@ import numpy as np
 
 from .radios import RadioMessage
 from .robot import ObstacleView, WorldSnapshot
-from .robot_agent import ControllerFault
+from .robot_agent import ControllerFault, RunInterrupted
 from .world_follower import IGNORE, NEW_STEP, WorldFollower
 
 log = logging.getLogger("dream")
@@ -39,6 +47,26 @@ _POSES_COUNT_AT = 8 + 24
 _OBSTACLES_COUNT_AT = 8 + 24
 _RADIO_COUNT_AT = 8 + 36        # ... sender_id (int32), agent_id (int64), payload_size
 _STATUS_COUNT_AT = 8 + 29 + 48  # ... state, num_robots, six int64 counts, num_lost
+
+
+_call_cell = memoryview(bytearray(8)).cast("q")  # no watchdog: marks go nowhere
+_call_tokens = itertools.count(1)
+
+
+def set_call_cell(cell):
+    """Where hosts made from now on mark their controller calls: a writable memoryview of one
+    int64 (format "q") that the embedding tool's watchdog reads."""
+    global _call_cell
+    _call_cell = cell
+
+
+def call_cell():
+    return _call_cell
+
+
+def next_call_token():
+    """A token no other controller call of this process had (> 0)."""
+    return next(_call_tokens)
 
 
 def _types():
@@ -113,6 +141,8 @@ class AgentHost:
         self.last_step_answered = -1
         self.poses_seen = 0
         self.bad_messages = {}
+        self.interrupted = False
+        self._call_cell = _call_cell
         self._handlers = {"DREAM_POSES": self._on_poses, "DREAM_OBSTACLES": self._on_obstacles,
                           "DREAM_STATUS": self._on_status}
         bus.subscribe(SUBSCRIPTION_REGEX, self._on_message)
@@ -121,6 +151,8 @@ class AgentHost:
 
     def _on_message(self, channel, data):
         """Never raises: LCM's C code is below this frame."""
+        if self.interrupted:
+            return
         try:
             handler = self._handlers.get(channel)
             if handler is not None:
@@ -129,6 +161,9 @@ class AgentHost:
                 self._on_radio(channel, data)
         except Exception as error:  # a forged message must not stop the agents
             self._report_bad(channel, f"{type(error).__name__}: {error}")
+        except RunInterrupted:  # Ctrl-C while a controller ran: the tool ends the run
+            self.interrupted = True
+            log.info("interrupted while a controller ran: no more answers")
 
     def _report_bad(self, channel, reason):
         count = self.bad_messages.get(channel, 0) + 1
@@ -229,11 +264,16 @@ class AgentHost:
 
     def _answer(self, robot, poses, snapshot):
         """Runs the robot for this step; False when its controller failed."""
+        cell = self._call_cell
         try:
+            cell[0] = next(_call_tokens)  # the watchdog's mark: this call runs
             output = robot.agent.step(snapshot)
         except ControllerFault as fault:
+            cell[0] = 0  # reporting it is not the controller's call
             self._fail(robot, poses, str(fault))
             return False
+        finally:
+            cell[0] = 0
         command = self._velocity_command_t()
         command.utime, command.step, command.run_id = poses.utime, poses.step, poses.run_id
         command.robot_id, command.agent_id = robot.agent.id, self.agent_id
@@ -273,7 +313,7 @@ class AgentHost:
         """Handles messages until the world ends the run (True), or stop / silence (False)."""
         last_activity = time.monotonic()
         seen = self.poses_seen
-        while not self.world_finished and not should_stop():
+        while not self.world_finished and not self.interrupted and not should_stop():
             self.bus.handle_timeout(100)
             if self.poses_seen != seen:
                 seen = self.poses_seen

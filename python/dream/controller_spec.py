@@ -20,7 +20,7 @@ import numpy as np
 
 from .radios import GraphRadio, RangeRadio, RoleRadio, mix_seed
 from .robot import Key, Robot, RobotParams, did_you_mean, key, number_text
-from .robot_agent import ControllerFault, RobotAgent, controller_error_text
+from .robot_agent import ControllerFault, RobotAgent, controller_error_text, is_run_interrupt
 from .sensors import MovementSensor, ObstacleSensor, OdometrySensor
 
 SPEC_FORMAT = 1
@@ -193,8 +193,10 @@ def load_controller_class(module_path, class_name):
     except SyntaxError as exc:
         del sys.modules[module_name]
         raise _Problem(f"cannot load {path}: {exc.filename}:{exc.lineno}: SyntaxError: {exc.msg}", "module") from None
-    except Exception as exc:
+    except BaseException as exc:  # SystemExit at import too: a mistake in the module
         del sys.modules[module_name]
+        if is_run_interrupt(exc):
+            raise
         raise _Problem(f"cannot load {path}: {controller_error_text(exc, path)}", "module") from None
     robot_class = getattr(module, class_name, None)
     if not (isinstance(robot_class, type) and issubclass(robot_class, Robot)):
@@ -410,7 +412,9 @@ class ControllerSpec:
         params = RobotParams(parts["vel_gain"], parts["ang_gain"])
         try:
             robot = self.robot_class(robot_id, params, copy.deepcopy(self.config), self.num_robots)
-        except Exception as exc:
+        except BaseException as exc:  # as RobotAgent: anything but an interrupt of the run is a fault
+            if is_run_interrupt(exc):
+                raise
             raise ControllerFault(controller_error_text(exc, self.module_path)) from exc
         sensors = [(sensor.make(mix_seed(self.seed, robot_id, index + 1)), sensor.period_steps[robot_id])
                    for index, sensor in enumerate(self.sensors)]

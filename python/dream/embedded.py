@@ -10,9 +10,10 @@ import logging
 import os
 import sys
 
-from .agent_host import AgentHost
+from .agent_host import AgentHost, call_cell, next_call_token, set_call_cell
 from .controller_spec import ControllerSpec, check as check_spec
 from .lcm import Lcm
+from .robot_agent import ControllerTimeout, RunInterrupted  # noqa: F401 - the watchdog raises them
 
 _log = logging.getLogger("dream")
 
@@ -25,9 +26,12 @@ class _ToolFormatter(logging.Formatter):
         return super().format(record)
 
 
-def setup(lcmtypes_dir, log_level):
+def setup(lcmtypes_dir, log_level, watchdog_cell=None):
     """Makes lcm-gen's Python types (package dream) importable as dream.<type>, and logs
-    like the tool, on stderr at the tool's level."""
+    like the tool, on stderr at the tool's level. `watchdog_cell`: the tool's watchdog's
+    memory (one int64), where every controller call is marked (agent_host.set_call_cell)."""
+    if watchdog_cell is not None:
+        set_call_cell(watchdog_cell.cast("q") if watchdog_cell.format != "q" else watchdog_cell)
     package = sys.modules[__package__]
     types_package = os.path.join(lcmtypes_dir, "dream")
     if not os.path.isfile(os.path.join(types_package, "robot_poses_t.py")):
@@ -52,9 +56,20 @@ def setup(lcmtypes_dir, log_level):
 _checked = {}  # spec text -> its ControllerSpec, so attach() does not load the module again
 
 
+def _interruptible(work):
+    """work() marked as an untimed controller call (a negative token): it loads the module and
+    runs setup(), which Ctrl-C interrupts (RunInterrupted) but no step time limit applies to."""
+    cell = call_cell()
+    try:
+        cell[0] = -next_call_token()
+        return work()
+    finally:
+        cell[0] = 0
+
+
 def check(spec_json):
     """Raises ConfigError when the controller's module, class or own keys are wrong."""
-    _checked[spec_json] = check_spec(spec_json)
+    _checked[spec_json] = _interruptible(lambda: check_spec(spec_json))
 
 
 class _EmbeddedHost(AgentHost):
@@ -66,6 +81,9 @@ class _EmbeddedHost(AgentHost):
 
 def attach(lcm_address, url, spec_json, robot_ids, agent_id):
     """The agents of `robot_ids`, subscribed on the lcm_t at `lcm_address`."""
-    spec = _checked.get(spec_json) or ControllerSpec.from_json(spec_json)
-    agents = [spec.make_agent(robot_id) for robot_id in robot_ids]
+    def make_agents():
+        spec = _checked.get(spec_json) or ControllerSpec.from_json(spec_json)
+        return spec, [spec.make_agent(robot_id) for robot_id in robot_ids]
+
+    spec, agents = _interruptible(make_agents)
     return _EmbeddedHost(Lcm.wrap(lcm_address, url), agents, agent_id, spec.num_robots)

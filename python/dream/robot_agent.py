@@ -6,6 +6,7 @@ Both routes drive it: the LCM agent host and a Robotarium submission's main loop
 """
 
 import os
+import signal
 import sys
 import traceback
 
@@ -15,6 +16,34 @@ from .timer import Timer
 
 class ControllerFault(Exception):
     """A controller raised inside one of its callbacks; the text says where (see controller_error_text)."""
+
+
+class RunInterrupted(BaseException):
+    """The whole run is being interrupted (Ctrl-C / SIGTERM to the tool that embeds Python): raised
+    inside a running controller by the embedding agent host (agents/python_host), it is never the
+    controller's fault and passes through RobotAgent to end the run."""
+
+
+class ControllerTimeout(BaseException):
+    """Raised inside a controller callback that ran too long for the world (0.8 x its
+    agent_timeout_s), by the embedding agent host's watchdog: the controller failed. A
+    BaseException, so that a controller's own `except Exception` does not swallow it."""
+
+
+def is_run_interrupt(exc):
+    """True when `exc`, raised while a controller ran, ends the whole run rather than failing the
+    controller: RunInterrupted, or a KeyboardInterrupt where Ctrl-C reaches Python as one (its
+    default SIGINT handler: a plain script, such as a Robotarium submission). Where Python has no
+    such handler (embedded in `dream run` / `dream agent`, whose Ctrl-C is the tool's), a
+    KeyboardInterrupt can only be the controller's own doing, and fails it like SystemExit does."""
+    if isinstance(exc, RunInterrupted):
+        return True
+    if not isinstance(exc, KeyboardInterrupt):
+        return False
+    try:
+        return signal.getsignal(signal.SIGINT) is signal.default_int_handler
+    except (ValueError, AttributeError):  # no signal support here
+        return True
 
 
 def controller_error_text(exc, user_file=None):
@@ -51,7 +80,9 @@ class RobotAgent:
 
     `sensors` is a sequence of (sensor, period_steps). Timer components, in order: the sensors,
     the radio, the control law. Calls robot.setup() now; an exception there, or later in any
-    callback, becomes a ControllerFault that every later step() raises again (`fault`).
+    callback, becomes a ControllerFault that every later step() raises again (`fault`): any
+    exception, SystemExit and ControllerTimeout included, except an interrupt of the whole run
+    (is_run_interrupt), which passes through.
     """
 
     def __init__(self, robot, sensors=(), radio=None, robot_period_steps=1, start_delay_steps=0,
@@ -68,7 +99,9 @@ class RobotAgent:
         self.fault = None
         try:
             robot.setup()
-        except Exception as exc:
+        except BaseException as exc:  # SystemExit too: a controller never ends the run
+            if is_run_interrupt(exc):
+                raise
             self.fault = ControllerFault(controller_error_text(exc, self._user_file))
 
     def step(self, world):
@@ -94,7 +127,9 @@ class RobotAgent:
         except ControllerFault as fault:
             self.fault = fault
             raise
-        except Exception as exc:
+        except BaseException as exc:  # SystemExit, KeyboardInterrupt, ...: the controller failed
+            if is_run_interrupt(exc):
+                raise
             self.fault = ControllerFault(controller_error_text(exc, self._user_file))
             raise self.fault from exc
         v, w = self._last_command

@@ -195,6 +195,85 @@ class AgentHostTest(unittest.TestCase):
         self.assertEqual(steps_of("DREAM_CMD_1"), [1, 2])
         self.assertEqual(list(self.host.faults()), [1])
 
+    def host_of(self, robot_class):
+        bus = MemoryBus()
+        agents = [RobotAgent(robot_class(i, dream.RobotParams(), {}, 2)) for i in range(2)]
+        return bus, AgentHost(bus, agents, agent_id=77, num_robots=2)
+
+    def test_a_controller_that_exits_is_reported_like_any_fault(self):
+        class Exits(Robot):
+            def update(self, step):
+                if self.id == 0 and step == 2:
+                    sys.exit(3)  # no "Exception ignored on calling ctypes callback", no silent agent
+                return (0.01, 0.0)
+
+        bus, host = self.host_of(Exits)
+        for step in (1, 2, 3):
+            bus.deliver("DREAM_POSES", poses(step))  # nothing may escape to LCM's C code
+        published = bus.take()
+        faults = [dream.robot_fault_t.decode(data) for channel, data in published if channel == "DREAM_FAULT_0"]
+        self.assertEqual(len(faults), 1)
+        self.assertEqual((faults[0].step, faults[0].robot_id), (2, 0))
+        self.assertRegex(faults[0].detail, r"test_agent_host\.py:\d+: in update: SystemExit: 3$")
+        steps_of = lambda channel: [dream.velocity_command_t.decode(d).step for c, d in published if c == channel]
+        self.assertEqual(steps_of("DREAM_CMD_0"), [1])
+        self.assertEqual(steps_of("DREAM_CMD_1"), [1, 2, 3])
+
+    def test_a_controller_stopped_by_the_watchdog_fails_alone(self):
+        class Stuck(Robot):
+            def update(self, step):
+                if self.id == 0 and step == 2:
+                    raise dream.ControllerTimeout("still running after 0.8 s")  # as the watchdog raises it
+                return (0.01, 0.0)
+
+        bus, host = self.host_of(Stuck)
+        for step in (1, 2, 3):
+            bus.deliver("DREAM_POSES", poses(step))
+        published = bus.take()
+        faults = [dream.robot_fault_t.decode(data) for channel, data in published if channel == "DREAM_FAULT_0"]
+        self.assertEqual([fault.step for fault in faults], [2])
+        self.assertRegex(faults[0].detail, r"in update: ControllerTimeout: still running after 0\.8 s$")
+        self.assertEqual(list(host.faults()), [0])
+
+    def test_an_interrupt_of_the_run_stops_every_answer_and_blames_no_controller(self):
+        class Interrupted(Robot):
+            def update(self, step):
+                if self.id == 0 and step == 2:
+                    raise dream.RunInterrupted("interrupted (Ctrl-C or SIGTERM)")  # as the watchdog raises it
+                return (0.01, 0.0)
+
+        bus, host = self.host_of(Interrupted)
+        for step in (1, 2, 3):
+            bus.deliver("DREAM_POSES", poses(step))
+        published = bus.take()
+        self.assertTrue(host.interrupted)
+        self.assertEqual(host.faults(), {})
+        self.assertEqual([c for c, _ in published if c.startswith("DREAM_FAULT_")], [])
+        steps_of = lambda channel: [dream.velocity_command_t.decode(d).step for c, d in published if c == channel]
+        self.assertEqual(steps_of("DREAM_CMD_0"), [1])
+        self.assertEqual(steps_of("DREAM_CMD_1"), [1])  # the step's handling ended at once
+
+    def test_each_controller_call_is_marked_for_the_watchdog(self):
+        cell = memoryview(bytearray(8)).cast("q")
+        seen = []
+
+        class Marks(Robot):
+            def update(self, step):
+                seen.append(cell[0])
+                if self.id == 1:
+                    raise KeyError("fails")
+                return (0.0, 0.0)
+
+        previous = dream.agent_host.call_cell()
+        dream.agent_host.set_call_cell(cell)
+        self.addCleanup(dream.agent_host.set_call_cell, previous)
+        bus, host = self.host_of(Marks)
+        bus.deliver("DREAM_POSES", poses(1))
+        self.assertEqual(len(seen), 2)
+        self.assertTrue(all(token > 0 for token in seen), seen)
+        self.assertNotEqual(seen[0], seen[1])  # a token per call
+        self.assertEqual(cell[0], 0)  # cleared after each call, a failing one too
+
     def test_the_detail_limit_is_the_worlds(self):
         # agent_host.MAX_DETAIL_BYTES mirrors lcm::MessageLimits::kDetailBytes (the runtime stands alone).
         header = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "lcmtypes", "include",

@@ -27,6 +27,7 @@ from dream import (ActuatorLimits, ConfigError, ControllerFault, ControllerSpec,
                    MovementSensor, ObstacleSensor, ObstacleView, OdometrySensor, RadioMessage, RangeRadio,
                    Robot, RobotAgent, RobotParams, RoleRadio, SingleIntegratorToUnicycle, Timer, WorldSnapshot,
                    check, dxi_to_dxu, mix_seed, pack_floats, unpack_floats)
+import dream  # noqa: E402
 from dream.robot import did_you_mean  # noqa: E402
 
 STEP_S = 0.033
@@ -460,6 +461,91 @@ class ControllerFaultTest(SpecFixture):
         self.assertEqual(str(agent.fault), f"{module}:12: in setup: RuntimeError: no goal for robot 0")
         with self.assertRaisesRegex(ConfigError, "robot 0's BadSetup failed to set up"):
             check(text)
+
+
+class BaseExceptionFaultTest(SpecFixture):
+    """SystemExit and other BaseExceptions a controller raises fail that controller, as any
+    exception does; only an interrupt of the whole run passes through."""
+
+    SOURCE = """
+        import sys
+
+        import dream
+        from dream import Robot
+
+
+        class Raises(Robot):
+            KEYS = {"what": dream.key("exit", kind="string")}
+
+            def setup(self):
+                if self.config["what"] == "exit_in_setup":
+                    sys.exit("no setup")
+
+            def update(self, step):
+                what = self.config["what"]
+                if what == "exit":
+                    sys.exit(3)
+                if what == "keyboard":
+                    raise KeyboardInterrupt
+                if what == "timeout":
+                    raise dream.ControllerTimeout("still running")
+                if what == "interrupt":
+                    raise dream.RunInterrupted("interrupted")
+                return (0.0, 0.0)
+        """
+
+    def agent(self, what):
+        module = self.module("raises.py", self.SOURCE)
+        spec = self.spec(module, "Raises", {"what": (what, 23)})
+        return module, ControllerSpec.from_json(json.dumps(spec)).make_agent(0)
+
+    def test_system_exit_in_update_is_a_fault_naming_the_line(self):
+        module, agent = self.agent("exit")
+        for step in (1, 2):  # the fault stays
+            with self.assertRaises(ControllerFault) as caught:
+                agent.step(world(step, [[0, 0, 0], [1, 0, 0]]))
+            self.assertEqual(str(caught.exception), f"{module}:18: in update: SystemExit: 3")
+
+    def test_system_exit_in_setup_is_a_setup_fault(self):
+        module, agent = self.agent("exit_in_setup")
+        self.assertEqual(str(agent.fault), f"{module}:13: in setup: SystemExit: no setup")
+        with self.assertRaises(ControllerFault):
+            agent.step(world(1, [[0, 0, 0], [1, 0, 0]]))
+
+    def test_system_exit_while_loading_the_module_is_a_config_error(self):
+        module = self.module("exits_on_import.py", """
+            import sys
+            sys.exit(2)
+            """)
+        with self.assertRaisesRegex(ConfigError, rf"cannot load {module}: {module}:3: in <module>: SystemExit: 2"):
+            ControllerSpec.from_json(json.dumps(self.spec(module, "Nope", {})))
+
+    def test_a_watchdog_timeout_is_a_fault(self):
+        module, agent = self.agent("timeout")
+        with self.assertRaisesRegex(ControllerFault, rf"^{module}:22: in update: ControllerTimeout: still running$"):
+            agent.step(world(1, [[0, 0, 0], [1, 0, 0]]))
+
+    def test_an_interrupt_of_the_run_passes_through_and_is_no_fault(self):
+        module, agent = self.agent("interrupt")
+        with self.assertRaises(dream.RunInterrupted):
+            agent.step(world(1, [[0, 0, 0], [1, 0, 0]]))
+        self.assertIsNone(agent.fault)
+
+    def test_keyboard_interrupt_ends_the_run_only_where_ctrl_c_raises_it(self):
+        import signal
+        previous = signal.getsignal(signal.SIGINT)
+        self.addCleanup(signal.signal, signal.SIGINT, previous)
+        # A plain script (a submission): Ctrl-C is Python's KeyboardInterrupt, which ends the run.
+        signal.signal(signal.SIGINT, signal.default_int_handler)
+        module, agent = self.agent("keyboard")
+        with self.assertRaises(KeyboardInterrupt):
+            agent.step(world(1, [[0, 0, 0], [1, 0, 0]]))
+        self.assertIsNone(agent.fault)
+        # Embedded in dream run / dream agent, Python handles no signal: the controller raised it.
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+        module, agent = self.agent("keyboard")
+        with self.assertRaisesRegex(ControllerFault, rf"^{module}:20: in update: KeyboardInterrupt: $"):
+            agent.step(world(1, [[0, 0, 0], [1, 0, 0]]))
 
 
 class SeedingTest(SpecFixture):

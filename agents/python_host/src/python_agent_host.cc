@@ -3,10 +3,14 @@
 
 #include "dream/python_host/python_agent_host.h"
 
+#include <pthread.h>
 #include <spdlog/spdlog.h>
 
 #include <chrono>
+#include <csignal>
+#include <cstdio>
 #include <stdexcept>
+#include <thread>
 
 #include "dream/config/config_error.h"
 
@@ -55,6 +59,7 @@ std::string TextOf(PyObject* object) {
       type == nullptr ? "error" : TextOf(PyRef(PyObject_GetAttrString(type, "__name__")).get());
   const std::string message = TextOf(value);
   if (type_name == "ConfigError") throw config::ConfigError(message);
+  if (type_name == "RunInterrupted") throw std::runtime_error(doing + ": " + message);
   std::string trace;
   if (traceback != nullptr) {
     PyRef module(PyImport_ImportModule("traceback"));
@@ -69,6 +74,150 @@ std::string TextOf(PyObject* object) {
   }
   throw std::runtime_error(doing + ": " + type_name + ": " + message + trace);
 }
+
+// The watchdog: one thread per process that stops a controller call running
+// too long, or running when the tool is asked to stop (Ctrl-C / SIGTERM set
+// its stop flag; Python's own signal handling is off, see EmbeddedModule).
+//
+// The Python side marks each controller call in `cell` (agent_host.py's
+// _answer, embedded.py's check and attach): a token unique to the call, > 0
+// for a step (timed), < 0 for setup (interruptible only), 0 between calls.
+// Two stores per call, nothing else on the hot path. The thread polls the
+// cell; when the same step's call has run for kStopFraction of the world's
+// agent_timeout_s, or any call runs while `stop` is set, it asks the
+// interpreter, with Py_AddPendingCall, to raise ControllerTimeout or
+// RunInterrupted in whatever Python code the interpreter's main thread runs
+// (taking the GIL once, so that the main thread notices); RaiseInCall checks,
+// with the GIL, that the call is still the one it was meant for. The
+// exception lands at the next bytecode the call runs, so a call blocked in C
+// code that never returns to Python (a long time.sleep, a blocking read) is
+// stopped only when it does. Needs the tools' threading: every call on the
+// thread that started the interpreter (its main thread, the only one 3.11
+// runs pending calls on). Never freed (the thread outlives every host, and a
+// queued pending call may run after one is gone).
+class Watchdog {
+ public:
+  enum Kind : int { kNone = 0, kTimeout = 1, kInterrupt = 2 };
+  static constexpr std::chrono::milliseconds kPoll{20};
+  static constexpr std::chrono::milliseconds kRepeat{250};  // again, if the call swallowed it
+
+  static Watchdog& Get() {
+    static Watchdog* watchdog = new Watchdog();  // never freed: see above
+    return *watchdog;
+  }
+
+  std::atomic<int64_t>& cell() { return cell_; }
+
+  /// A step's call is stopped at this fraction of the world's
+  /// agent_timeout_s: early enough that the world hears the fault (and the
+  /// other robots' answers) before it gives up on the robots as silent.
+  static constexpr double kStopFraction = 0.8;
+
+  void Watch(const std::atomic<bool>* stop, double agent_timeout_s) {
+    stop_.store(stop);
+    agent_timeout_s_.store(agent_timeout_s > 0 ? agent_timeout_s : 0.0);
+  }
+
+  /// Starts the thread (once); `timeout_type` and `interrupt_type` are the
+  /// Python exception classes it raises (new references, kept). With the GIL.
+  void Start(PyObject* timeout_type, PyObject* interrupt_type) {
+    if (started_) return;
+    timeout_type_ = timeout_type;
+    interrupt_type_ = interrupt_type;
+    started_ = true;
+    std::thread([this] { Loop(); }).detach();
+  }
+
+ private:
+  static_assert(std::atomic<int64_t>::is_always_lock_free, "the cell is a plain int64 to Python");
+  using Clock = std::chrono::steady_clock;
+
+  void Loop() {
+    // Ctrl-C and SIGTERM stay the main thread's, as without this thread.
+    sigset_t signals;
+    sigemptyset(&signals);
+    sigaddset(&signals, SIGINT);
+    sigaddset(&signals, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+    int64_t watched = 0;
+    Clock::time_point since;
+    Clock::time_point last_fired;
+    bool fired = false;
+    while (true) {
+      std::this_thread::sleep_for(kPoll);
+      const int64_t token = cell_.load(std::memory_order_relaxed);
+      const Clock::time_point now = Clock::now();
+      if (token == 0) {
+        watched = 0;
+        continue;
+      }
+      if (token != watched) {
+        watched = token;
+        since = now;
+        fired = false;
+      }
+      const std::atomic<bool>* stop = stop_.load();
+      const double limit = kStopFraction * agent_timeout_s_.load();
+      Kind kind = kNone;
+      if (stop != nullptr && stop->load()) {
+        kind = kInterrupt;
+      } else if (token > 0 && limit > 0 && std::chrono::duration<double>(now - since).count() > limit) {
+        kind = kTimeout;
+      }
+      if (kind == kNone || (fired && now - last_fired < kRepeat)) continue;
+      if (pending_.exchange(true)) continue;  // one queued at a time
+      pending_kind_.store(kind);
+      pending_token_.store(token);
+      pending_agent_timeout_s_.store(agent_timeout_s_.load());
+      if (Py_AddPendingCall(&Watchdog::RaiseInCall, this) != 0) {
+        pending_.store(false);  // the queue is full: next poll
+        continue;
+      }
+      // Python 3.11 flags a pending call to the main thread only when that
+      // thread recomputes its eval breaker, as it does on taking the GIL
+      // back: ask for the GIL once (within the switch interval while the
+      // call runs Python code; when the call ended meanwhile, whenever the
+      // main thread runs Python again, and RaiseInCall does nothing).
+      const PyGILState_STATE gil = PyGILState_Ensure();
+      PyGILState_Release(gil);
+      fired = true;
+      last_fired = now;
+    }
+  }
+
+  // A pending call: the interpreter's main thread, with the GIL, between two
+  // bytecodes. -1 with an exception set raises it there.
+  static int RaiseInCall(void* self_pointer) {
+    Watchdog& self = *static_cast<Watchdog*>(self_pointer);
+    const int kind = self.pending_kind_.load();
+    const int64_t token = self.pending_token_.load();
+    const double agent_timeout_s = self.pending_agent_timeout_s_.load();
+    self.pending_.store(false);
+    if (self.cell_.load(std::memory_order_relaxed) != token) return 0;  // that call ended meanwhile
+    if (kind == kInterrupt) {
+      PyErr_SetString(self.interrupt_type_, "interrupted (Ctrl-C or SIGTERM)");
+      return -1;
+    }
+    char message[160];
+    std::snprintf(message, sizeof message, "still running after %g s of the world's agent_timeout_s of %g s: stopped",
+                  kStopFraction * agent_timeout_s, agent_timeout_s);
+    PyErr_SetString(self.timeout_type_, message);
+    return -1;
+  }
+
+  Watchdog() = default;
+
+  std::atomic<int64_t> cell_{0};
+  std::atomic<const std::atomic<bool>*> stop_{nullptr};
+  std::atomic<double> agent_timeout_s_{0.0};
+  std::atomic<bool> pending_{false};
+  std::atomic<int> pending_kind_{kNone};
+  std::atomic<int64_t> pending_token_{0};
+  std::atomic<double> pending_agent_timeout_s_{0.0};
+  bool started_ = false;  // with the GIL
+  PyObject* timeout_type_ = nullptr;
+  PyObject* interrupt_type_ = nullptr;
+};
 
 int PythonLogLevel() {
   switch (spdlog::get_level()) {
@@ -92,7 +241,8 @@ PyObject* EmbeddedModule(const PythonAgentHost::Paths& paths) {
     // Isolated: PYTHONPATH, PYTHONHOME and user site-packages of whatever
     // Python the user has on PATH cannot change what the agents run; the
     // system's site-packages (numpy) stay. No signal handlers: Ctrl-C stays
-    // the tool's own (StopFlag).
+    // the tool's own (StopFlag); the Watchdog brings it into a running
+    // controller call as RunInterrupted.
     PyConfig config;
     PyConfig_InitIsolatedConfig(&config);
     config.install_signal_handlers = 0;
@@ -113,8 +263,16 @@ PyObject* EmbeddedModule(const PythonAgentHost::Paths& paths) {
   if (imported.get() == nullptr) {
     ThrowPythonError("cannot load the Python runtime from " + paths.runtime_dir);
   }
-  PyRef done(PyObject_CallMethod(imported.get(), "setup", "si", paths.lcmtypes_dir.c_str(), PythonLogLevel()));
+  Watchdog& watchdog = Watchdog::Get();
+  PyRef cell(PyMemoryView_FromMemory(reinterpret_cast<char*>(&watchdog.cell()), sizeof(int64_t), PyBUF_WRITE));
+  if (cell.get() == nullptr) ThrowPythonError("cannot set up the Python runtime's watchdog");
+  PyRef done(PyObject_CallMethod(imported.get(), "setup", "siO", paths.lcmtypes_dir.c_str(), PythonLogLevel(),
+                                 cell.get()));
   if (done.get() == nullptr) ThrowPythonError("cannot load lcm-gen's Python types from " + paths.lcmtypes_dir);
+  PyObject* timeout_type = PyObject_GetAttrString(imported.get(), "ControllerTimeout");
+  PyObject* interrupt_type = PyObject_GetAttrString(imported.get(), "RunInterrupted");
+  if (timeout_type == nullptr || interrupt_type == nullptr) ThrowPythonError("the Python runtime's watchdog");
+  watchdog.Start(timeout_type, interrupt_type);
   module = imported.release();
   return module;
 }
@@ -203,8 +361,13 @@ class EmbeddedPythonAgentHost final : public PythonAgentHost {
 }  // namespace
 }  // namespace dream::agents
 
-// The module's entry points (PythonHostCheckFunction, PythonHostCreateFunction),
+// The module's entry points (PythonHostWatchFunction, PythonHostCheckFunction, PythonHostCreateFunction),
 // found with dlsym by the tools' PythonHostLibrary.
+extern "C" __attribute__((visibility("default"))) void dream_python_host_watch(const std::atomic<bool>* stop,
+                                                                               double agent_timeout_s) {
+  dream::agents::Watchdog::Get().Watch(stop, agent_timeout_s);
+}
+
 extern "C" __attribute__((visibility("default"))) void dream_python_host_check(
     const std::string& spec_json, const dream::agents::PythonAgentHost::Paths& paths) {
   using dream::agents::PyRef;

@@ -43,6 +43,19 @@ class PythonAgentHost {
   virtual std::string ReportJson() const = 0;
 };
 
+/// dream_python_host_watch: what the module's watchdog thread watches (set it
+/// before the first check or create; it may change later). While `stop` is
+/// set, a running controller call (a step, or setup()) is interrupted: it
+/// raises dream.RunInterrupted, which ends the host's handling of the step
+/// without blaming the controller. A step's call still running after 0.8 x
+/// the world's `agent_timeout_s` (0: no limit) raises
+/// dream.ControllerTimeout: that robot's controller failed (DREAM_FAULT_<id>,
+/// heard before the world would give up on the silent agent), the others go
+/// on. Either lands at the next Python bytecode the call runs: a call blocked
+/// in C code that does not return to Python is stopped only when it does.
+using PythonHostWatchFunction = void (*)(const std::atomic<bool>* stop, double agent_timeout_s);
+inline constexpr const char* kPythonHostWatchSymbol = "dream_python_host_watch";
+
 /// dream_python_host_check: loads the controller's module and class and
 /// checks its own keys against the class's KEYS, without touching a bus.
 /// @throws config::ConfigError naming file, line and key (or the module's own
