@@ -251,6 +251,29 @@ TEST_F(SimNodeTest, SilentAgentIsMarkedLostItsRobotStopsAndItRejoins) {
   EXPECT_TRUE(lost_per_step.back().empty());  // back by the end
 }
 
+// With every robot lost nothing holds a lockstep world back; it still reads
+// the bus each step, so the agents are heard again when they speak.
+TEST_F(SimNodeTest, WhenEveryRobotIsLostTheAgentsStillRejoin) {
+  for (int id = 0; id < 3; ++id) {
+    AddAgent(id, [](const robot_poses_t& poses, velocity_command_t* command) {
+      command->v = 0.1;
+      return poses.step < 5 || poses.step >= 8;  // all silent on steps 5, 6, 7
+    });
+  }
+  std::vector<std::vector<int32_t>> lost_per_step;
+  lcm::BadMessageLog bad;
+  lcm::Subscribe<run_status_t>(
+      bus_, lcm::kStatusChannel,
+      [&](const std::string&, const run_status_t& status) { lost_per_step.push_back(status.lost_robot_ids); }, bad);
+  const RunOutcome outcome = Run(FastOptions(40));
+  EXPECT_EQ(outcome.end, RunOutcome::End::kFinished);
+  EXPECT_EQ(outcome.robots_ever_lost, (std::set<int>{0, 1, 2}));
+  ASSERT_FALSE(lost_per_step.empty());
+  EXPECT_TRUE(lost_per_step.back().empty()) << "the robots never rejoined";
+  EXPECT_GT(world_.poses()[0].x_m, -1.0 + 30 * 0.033 * 0.1);  // driving again after the silence
+  EXPECT_EQ(outcome.rejected_commands, 0);
+}
+
 robot_fault_t Fault(int robot_id, int64_t agent_id, const std::string& detail, int64_t run_id) {
   robot_fault_t fault{};
   fault.run_id = run_id;

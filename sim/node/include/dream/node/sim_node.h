@@ -117,6 +117,7 @@ class SimNode {
   template <typename Message>
   void PublishAndRecord(const char* channel, const Message& message, bool record);
   bool AllLiveAnswered() const;
+  bool AllRobotsLost() const;
   void MarkSilentRobotsLost(Clock::time_point now);
   void AdvanceWorld();
   RunOutcome Finish(RunOutcome::End end, const std::string& reason);
