@@ -140,6 +140,7 @@ class AgentHost:
         self.end_detail = ""
         self.last_step_answered = -1
         self.poses_seen = 0
+        self.other_world_robots = None  # the robot count of the last world refused for it
         self.bad_messages = {}
         self.interrupted = False
         self._call_cell = _call_cell
@@ -224,6 +225,10 @@ class AgentHost:
 
     def _on_poses(self, channel, data):
         n = _count_field(data, _POSES_COUNT_AT, 40, _POSES_COUNT_AT + 4, MAX_ROBOTS, "robot_poses_t")
+        if n != self.num_robots:
+            # Agents started with another experiment's config would drive its robots: never joined.
+            self.other_world_robots = n
+            raise ValueError(f"a world of {n} robots; this agent's config has {self.num_robots}")
         poses = self._robot_poses_t.decode(data)
         if poses.step < 0:
             raise ValueError(f"step {poses.step} is negative")
@@ -319,10 +324,17 @@ class AgentHost:
                 seen = self.poses_seen
                 last_activity = time.monotonic()
             elif time.monotonic() - last_activity > idle_timeout_s:
-                log.error("no DREAM_POSES for %g s on %s: is the simulator (dream sim) running on the "
-                          "same LCM URL?", idle_timeout_s, self.bus.url)
+                log.error("%s", self.silence_text(idle_timeout_s, self.bus.url))
                 return False
         return self.world_finished
+
+    def silence_text(self, idle_timeout_s, url):
+        """Why this host gives up after idle_timeout_s without a step of its run."""
+        if not self.follower.joined and self.other_world_robots is not None:
+            return (f"DREAM_POSES on {url} came from a world of {self.other_world_robots} robots, but this agent's "
+                    f"config has {self.num_robots}: start the agents with the config the simulator (dream sim) runs")
+        return (f"no DREAM_POSES for {idle_timeout_s:g} s on {url}: is the simulator (dream sim) running on the "
+                f"same LCM URL?")
 
     def report_json(self):
         """What this host refused, as JSON for `dream launch`'s summary (AgentReport in C++)."""

@@ -177,10 +177,18 @@ class AgentHostTest(unittest.TestCase):
         self.assertEqual(self.host.bad_messages["DREAM_RADIO_1"], 2)
         self.assertEqual([len(agent.mailbox._by_sender) for agent in self.agents], [0, 0])
 
-    def test_a_robot_not_in_the_run_is_not_answered(self):
+    def test_a_world_of_another_robot_count_is_never_joined(self):
+        # Agents started with another experiment's config would drive its robots.
         self.bus.deliver("DREAM_POSES", poses(1, n=1))
-        self.assertEqual(list(self.commands(self.bus.take())), ["DREAM_CMD_0"])
-        self.assertEqual(self.host.bad_messages, {"DREAM_POSES": 1})
+        self.bus.deliver("DREAM_POSES", poses(1, n=3))
+        self.assertEqual(list(self.commands(self.bus.take())), [])
+        self.assertEqual(self.host.bad_messages, {"DREAM_POSES": 2})
+        self.assertFalse(self.host.follower.joined)
+        self.assertIn("came from a world of 3 robots, but this agent's config has 2",
+                      self.host.silence_text(5, "memq://"))
+        self.bus.deliver("DREAM_POSES", poses(2))  # its own world is joined as ever
+        self.assertEqual(sorted(self.commands(self.bus.take())), ["DREAM_CMD_0", "DREAM_CMD_1"])
+        self.assertIn("no DREAM_POSES for 5 s", AgentHost(MemoryBus(), [], 1, 2).silence_text(5, "memq://"))
 
     def test_a_raising_controller_is_reported_once_and_its_robot_no_longer_answered(self):
         for step in (1, 2, 3, 4):

@@ -322,8 +322,9 @@ class EmbeddedPythonAgentHost final : public PythonAgentHost {
         seen = now_seen;
         last_activity = Clock::now();
       } else if (std::chrono::duration<double>(Clock::now() - last_activity).count() > idle_timeout_s) {
-        spdlog::error("no DREAM_POSES for {:g} s on {}: is the simulator (dream sim) running on the same LCM URL?",
-                      idle_timeout_s, bus.url());
+        PyRef text(PyObject_CallMethod(host_, "silence_text", "ds", idle_timeout_s, bus.url().c_str()));
+        if (text.get() == nullptr) PyErr_Clear();
+        spdlog::error("{}", text.get() != nullptr ? TextOf(text.get()) : "no DREAM_POSES for a while on " + bus.url());
         return false;
       }
     }
