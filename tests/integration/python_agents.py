@@ -22,6 +22,7 @@ Usage: python_agents.py --dream BIN --source DIR --types-dir DIR
 """
 
 import os
+import re
 
 from dreamtest import Context, arguments, check, import_types, main, read_events, read_summary
 
@@ -128,12 +129,20 @@ def test(context, args):
         check("```python\n" + f.read() + "```" in g.read(),
               "docs/python-controllers.md does not show config/python/go_to_goal.py as it is")
 
-    # 3b. A sweep's runs find the module from their own folders.
+    # 3b. A sweep's runs keep the module in their own folders (a copy, as dream run keeps one), so
+    # a run's config.yaml repeats it even after the module is edited.
     sweep_out = context.path("sweep")
     context.run([args.dream, "sweep", os.path.join(source, "config/go_to_goal_python.yaml"), "--seeds", "1",
                  "--out", sweep_out, "-q"], timeout=120, expect=0)
-    check(read_summary(os.path.join(sweep_out, "runs", "seed1"))["steps"] == python_summary["steps"],
+    run_dir = os.path.join(sweep_out, "runs", "seed1")
+    check(read_summary(run_dir)["steps"] == python_summary["steps"],
           "the sweep's run of go_to_goal_python differs from dream run's")
+    with open(os.path.join(source, "config/python/go_to_goal.py")) as f, \
+            open(os.path.join(run_dir, "python", "go_to_goal.py")) as g:
+        check(f.read() == g.read(), "the sweep's run folder holds no copy of the module")
+    with open(os.path.join(run_dir, "config.yaml")) as f:
+        check(re.search(r"^  module: python/go_to_goal\.py$", f.read(), re.MULTILINE),
+              "the sweep run's config.yaml does not name the module's copy beside it")
 
     # 4. A controller that raises.
     write(context.path("faulty.py"), FAULTY_CONTROLLER)
