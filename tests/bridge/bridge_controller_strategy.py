@@ -111,6 +111,17 @@ class Case:
     def path(self, *parts):
         return os.path.join(self.tmp, *parts)
 
+    def write_controller(self, name, module_text, config_text):
+        """<name>/<name>.py and <name>/<name>.yaml; the config's path."""
+        folder = self.path(name)
+        os.makedirs(folder, exist_ok=True)
+        with open(os.path.join(folder, name + ".py"), "w") as f:
+            f.write(module_text)
+        config = os.path.join(folder, name + ".yaml")
+        with open(config, "w") as f:
+            f.write(config_text)
+        return config
+
     def simulate(self, config, name, expect=0):
         sim_dir = self.path(name + "_sim")
         run([self.dream, "run", config, "--out", sim_dir, "-q"], expect=expect)
@@ -280,13 +291,7 @@ def check_submission(case, go_to_goal_export):
           "check-submission does not say the controllers agree: " + output[-2000:])
     agreeing = max(replayed["max_v_difference_mps"], replayed["max_w_difference_radps"])
     # Unseeded randomness: the replay's commands differ from the submission's.
-    folder = case.path("jitter")
-    os.makedirs(folder, exist_ok=True)
-    with open(os.path.join(folder, "jitter.py"), "w") as f:
-        f.write(JITTER_CONTROLLER)
-    config = os.path.join(folder, "jitter.yaml")
-    with open(config, "w") as f:
-        f.write(JITTER_CONFIG)
+    config = case.write_controller("jitter", JITTER_CONTROLLER, JITTER_CONFIG)
     sim_dir = case.simulate(config, "jitter")
     export_dir, _ = case.export(sim_dir, "jitter")
     report, output = controllers_on_lab_poses(case, export_dir, "jitter", expect=5)
@@ -323,13 +328,9 @@ class Slow(Robot):
 
 def interrupted_check(case):
     """Ctrl-C while the submission runs: exit 130, said as an interruption, not as a failed script."""
-    folder = case.path("slow")
-    os.makedirs(folder, exist_ok=True)
-    with open(os.path.join(folder, "slow.py"), "w") as f:
-        f.write(SLOW_CONTROLLER)
-    config = os.path.join(folder, "slow.yaml")
-    with open(config, "w") as f:
-        f.write(JITTER_CONFIG.replace("jitter", "slow").replace("Jitter", "Slow").replace("steps: 60", "steps: 600"))
+    config = case.write_controller(
+        "slow", SLOW_CONTROLLER,
+        JITTER_CONFIG.replace("jitter", "slow").replace("Jitter", "Slow").replace("steps: 60", "steps: 600"))
     sim_dir = case.simulate(config, "slow")
     export_dir, _ = case.export(sim_dir, "slow")
     check_dir = case.path("slow_check")

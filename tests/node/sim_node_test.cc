@@ -62,9 +62,20 @@ class SimNodeTest : public ::testing::Test {
     return node.Run(stop);
   }
 
+  /// The lost robots of every DREAM_STATUS the world sends from now on.
+  const std::vector<std::vector<int32_t>>& RecordLostRobotsPerStep() {
+    lcm::Subscribe<run_status_t>(
+        bus_, lcm::kStatusChannel,
+        [this](const std::string&, const run_status_t& status) { lost_per_step_.push_back(status.lost_robot_ids); },
+        bad_status_);
+    return lost_per_step_;
+  }
+
   lcm::LcmBus bus_;
   UnicycleWorld world_;
   std::vector<std::unique_ptr<ScriptedAgent>> agents_;
+  std::vector<std::vector<int32_t>> lost_per_step_;
+  lcm::BadMessageLog bad_status_;
 };
 
 TEST_F(SimNodeTest, LockstepRunsEveryStepWithTheAgentsCommands) {
@@ -235,11 +246,7 @@ TEST_F(SimNodeTest, SilentAgentIsMarkedLostItsRobotStopsAndItRejoins) {
     return poses.step < 5 || poses.step >= 8;  // silent on steps 5, 6, 7
   });
   AddAgent(2, Forward());
-  std::vector<std::vector<int32_t>> lost_per_step;
-  lcm::BadMessageLog bad;
-  lcm::Subscribe<run_status_t>(
-      bus_, lcm::kStatusChannel,
-      [&](const std::string&, const run_status_t& status) { lost_per_step.push_back(status.lost_robot_ids); }, bad);
+  const std::vector<std::vector<int32_t>>& lost_per_step = RecordLostRobotsPerStep();
   const RunOutcome outcome = Run(FastOptions(20));
   EXPECT_EQ(outcome.end, RunOutcome::End::kFinished);
   EXPECT_EQ(outcome.robots_ever_lost, std::set<int>{1});
@@ -260,11 +267,7 @@ TEST_F(SimNodeTest, WhenEveryRobotIsLostTheAgentsStillRejoin) {
       return poses.step < 5 || poses.step >= 8;  // all silent on steps 5, 6, 7
     });
   }
-  std::vector<std::vector<int32_t>> lost_per_step;
-  lcm::BadMessageLog bad;
-  lcm::Subscribe<run_status_t>(
-      bus_, lcm::kStatusChannel,
-      [&](const std::string&, const run_status_t& status) { lost_per_step.push_back(status.lost_robot_ids); }, bad);
+  const std::vector<std::vector<int32_t>>& lost_per_step = RecordLostRobotsPerStep();
   const RunOutcome outcome = Run(FastOptions(40));
   EXPECT_EQ(outcome.end, RunOutcome::End::kFinished);
   EXPECT_EQ(outcome.robots_ever_lost, (std::set<int>{0, 1, 2}));
