@@ -32,7 +32,10 @@ OverriddenConfig::OverriddenConfig(const std::string& path, long long seed, cons
     if (parameter.key == "seed" && seed >= 0) {
       throw std::invalid_argument(option + ": --seed and --set seed=... both set the seed; give one");
     }
-    ApplyConfigOverride(root_, parameter.key, parameter.values.front(), path);
+    // What the key is looked up in: the file as the overrides before this one left it.
+    std::string document = path;
+    for (size_t i = 0; i < overrides_.size(); ++i) document += (i == 0 ? " after " : ", ") + overrides_[i];
+    ApplyConfigOverride(root_, parameter.key, parameter.values.front(), document);
     overrides_.push_back("--set " + parameter.key + "=" + parameter.values.front());
   }
 }

@@ -43,6 +43,14 @@ class OverriddenConfigTest : public ::testing::Test {
   const std::string path_ = (dir_ / "demo.yaml").string();
 };
 
+// An earlier --set can change what a later one walks through: the error says
+// so instead of blaming the file.
+TEST_F(OverriddenConfigTest, AKeyAnEarlierSetMadeASingleValueIsNamedAsItsDoing) {
+  EXPECT_EQ(ErrorOf(-1, {"controller.goals=none", "controller.goals.x=1"}),
+            "--set controller.goals.x: controller.goals is a single value in " + path_ +
+                " after --set controller.goals=none, it has no 'x'");
+}
+
 TEST_F(OverriddenConfigTest, WithoutOverridesTheFileIsReadAndCopiedAsItIs) {
   const OverriddenConfig overridden(path_, -1, {});
   const config::RunConfig config = overridden.Load();
