@@ -1,6 +1,7 @@
 #include "dream/bridge/lab_import.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -253,8 +254,10 @@ LabResult ParseLabResult(const NpyArray& rows, const std::string& name, const Ex
       const bool pose = c >= ResultLayout::kFixedColumns && c < ResultLayout::kFixedColumns + 3 * int64_t{n};
       const double limit = pose ? kMaxAbsPose : kMaxAbsCommand;
       if (c >= ResultLayout::kFixedColumns && std::abs(value) > limit) {
-        fail("row " + std::to_string(r) + ": " + ColumnMeaning(c, n) + " is " + std::to_string(value) +
-             "; beyond " + std::to_string(static_cast<int64_t>(limit)) + " in magnitude no lab value is meant");
+        char shown[32];
+        std::snprintf(shown, sizeof(shown), "%g", value);
+        fail("row " + std::to_string(r) + ": " + ColumnMeaning(c, n) + " is " + shown + "; beyond " +
+             std::to_string(static_cast<int64_t>(limit)) + " in magnitude no lab value is meant");
       }
     }
   }

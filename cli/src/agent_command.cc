@@ -98,14 +98,24 @@ void WriteAgentReport(const std::string& path, const std::string& json) {
   }
 }
 
+// world.agent_timeout_s of the config as overridden (--set included): how
+// long the world waits for an agent, which bounds a Python controller's step.
+// 0 when the config leaves it to the default (HostedAgents then uses that).
+double WorldAgentTimeout(const config::ConfigNode& root) {
+  const config::ConfigNode world = root.Optional("world");
+  if (!world.IsDefined() || !world.IsMap() || !world.Has("agent_timeout_s")) return 0.0;
+  return world.Required("agent_timeout_s").AsDouble();
+}
+
 }  // namespace
 
 int RunAgents(const AgentArgs& args) {
   // The controller's part only: an agent does no world work (and does not link the world).
-  const config::ControllerConfig config = OverriddenConfig(args.config_path, args.seed, args.sets).LoadController();
+  const OverriddenConfig overridden(args.config_path, args.seed, args.sets);
+  const config::ControllerConfig config = overridden.LoadController();
   const std::vector<int> ids = ParseRobotList(args.robots, config.num_robots);
   lcm::LcmBus bus(lcm::ResolveLcmUrl(args.lcm_url));
-  HostedAgents host(bus, config, ids);
+  HostedAgents host(bus, config, ids, nullptr, WorldAgentTimeout(overridden.Document()));
   spdlog::info("agent for robot(s) {} of {} on {}", args.robots, config.name, bus.url());
   const bool ended_by_world = host.Run(StopFlag(), args.idle_timeout_s);
   // Peak resident memory, so per-agent memory can be checked

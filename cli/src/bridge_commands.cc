@@ -269,8 +269,9 @@ nlohmann::ordered_json CheckControllersOnLabPoses(const sim::OutputFolder& check
     const auto& worst = agreement.robots()[static_cast<size_t>(agreement.WorstRobot())];
     std::cout << "WARNING: your controllers decided differently on the lab's poses than in the submission: robot "
               << worst.robot << " from step " << worst.first_different_step << " (" << largest
-              << ").\nA controller that reads the clock or draws unseeded random numbers cannot be reproduced: the\n"
-                 "simulated run then says little about the lab's. Per robot: "
+              << ").\nA controller that reads the clock or draws unseeded random numbers cannot be reproduced, and\n"
+                 "an upload/ changed by hand after the export is not what the replay runs (the export's copy):\n"
+                 "the simulated run then says little about the lab's. Per robot: "
               << replay.out_dir << "/summary.json (lab_replay)\n";
   }
   nlohmann::ordered_json silent = nlohmann::ordered_json::array();
@@ -302,9 +303,19 @@ int RunCheckSubmission(const CheckSubmissionArgs& args) {
       RunFolderChoice(args.out_dir, "runs/" + exported.config.name + "_check", args.overwrite).dir());
   const std::string workdir = out.MakeSubfolder("lab_files");
   const std::string report_path = out.PathOf("check_report.json");
-  for (const char* stale : {bridge::SubmissionFiles::kResult, "dream_result.partial.npy"}) {
-    std::error_code ignored;
-    fs::remove(fs::path(workdir) / stale, ignored);
+  // An earlier check's files: lab_files/ must hold this upload only (a file
+  // the new upload lacks would still be found there, and a broken upload
+  // pass), and an earlier controller check's replay must not pass for this one's.
+  for (const fs::directory_entry& entry : fs::directory_iterator(workdir)) {
+    if (!entry.is_regular_file()) continue;
+    std::error_code error;
+    fs::remove(entry.path(), error);
+    if (error) throw std::runtime_error(entry.path().string() + ": cannot remove an earlier check's file: " + error.message());
+  }
+  if (RunFolderChoice::HoldsRun(out.PathOf("lab_replay"))) {
+    std::error_code error;
+    fs::remove_all(out.PathOf("lab_replay"), error);
+    if (error) throw std::runtime_error(out.PathOf("lab_replay") + ": cannot remove an earlier check's replay: " + error.message());
   }
   std::vector<std::string> argv = {args.python.empty() ? DREAM_DEFAULT_PYTHON : args.python,
                                    DataFiles::BridgePythonDir() + "/run_submission.py",

@@ -290,6 +290,15 @@ def check_submission(case, go_to_goal_export):
     check("your controllers on the lab's poses send what the submission sent" in output,
           "check-submission does not say the controllers agree: " + output[-2000:])
     agreeing = max(replayed["max_v_difference_mps"], replayed["max_w_difference_radps"])
+    # An earlier check's lab_files/ does not make a broken upload pass, nor its replay outlive it.
+    check_dir = case.path("go_to_goal_python_check")
+    broken = case.path("broken_export")
+    shutil.copytree(go_to_goal_export, broken)
+    os.remove(os.path.join(broken, "upload", "dream_timer.py"))
+    output, _ = run([case.dream, "check-submission", broken, "--out", check_dir, "--overwrite"] + case.check_flags,
+                    expect=4)
+    check("dream_timer" in output, "a check of an upload without dream_timer.py: " + output[-1500:])
+    check(not os.path.exists(os.path.join(check_dir, "lab_replay")), "the earlier check's replay was kept")
     # Unseeded randomness: the replay's commands differ from the submission's.
     config = case.write_controller("jitter", JITTER_CONTROLLER, JITTER_CONFIG)
     sim_dir = case.simulate(config, "jitter")

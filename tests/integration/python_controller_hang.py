@@ -7,7 +7,7 @@ ended it, leaving run.lcmlog.part and no summary), and `sys.exit()` in update() 
 "Exception ignored on calling ctypes callback function" and taken for a silent agent.
 
 1. A controller whose update() loops for ever at step 3 (robot 0 only), world.agent_timeout_s
-   1.0 (under dream run given by --set over the file's 60): the run ends by itself, within seconds, at its step limit; robot 0's call was stopped
+   1.0 (given by --set over the file's 60): the run ends by itself, within seconds, at its step limit; robot 0's call was stopped
    (ControllerTimeout, naming the module's file:line) and the robot failed at step 3: exit 4,
    robot_faults names only robot 0, verdict reason controller_failed; robot 1 was never lost.
 2. The same with agent_timeout_s 60 (so the watchdog would not stop it yet): SIGINT while the
@@ -94,12 +94,11 @@ def line_of(text, needle):
 def stopped_by_watchdog(ctx, args):
     folder = ctx.path("timeout")
     write(os.path.join(folder, "hang.py"), HANG)
-    # dream run: the file says 60 s and --set 1 s, which the watchdog must follow (the world's
-    # limit, overrides included); dream launch's agents read the file, which says 1 s.
+    # The file says 60 s and --set 1 s, which the watchdog must follow (the world's limit,
+    # overrides included; under dream launch, in every agent process).
     config = write(os.path.join(folder, "hang.yaml"),
-                   CONFIG.format(name="hang", timeout=1.0 if args.launch else 60, module="hang.py",
-                                 class_name="Hang"))
-    override = [] if args.launch else ["--set", "world.agent_timeout_s=1"]
+                   CONFIG.format(name="hang", timeout=60, module="hang.py", class_name="Hang"))
+    override = ["--set", "world.agent_timeout_s=1"]
     out = ctx.path("timeout_out")
     started = time.monotonic()
     code, output = ctx.run([args.dream, args.command, config, "--out", out] + override, timeout=30)
