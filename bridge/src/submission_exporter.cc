@@ -147,19 +147,6 @@ void CheckExportFolder(const std::string& out_dir) {
   }
 }
 
-/// An earlier export's upload/ files, so that every file the new upload/
-/// holds is this export's (UPLOAD.txt says to upload them all).
-void RemoveEarlierUpload(const sim::OutputFolder& upload_folder) {
-  namespace fs = std::filesystem;
-  const fs::path upload(upload_folder.dir());
-  std::error_code error;
-  for (const fs::directory_entry& entry : fs::directory_iterator(upload)) {
-    if (!entry.is_regular_file()) continue;
-    fs::remove(entry.path(), error);
-    if (error) throw std::runtime_error(entry.path().string() + ": cannot remove the earlier export's file: " + error.message());
-  }
-}
-
 }  // namespace
 
 ExportRefused::ExportRefused(std::vector<ExportProblem> problems)
@@ -358,7 +345,8 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
 
   sim::OutputFolder out(out_dir);
   const sim::OutputFolder upload(out.MakeSubfolder("upload"));  // refuses a link leading outside
-  RemoveEarlierUpload(upload);
+  // Every file upload/ holds is this export's (UPLOAD.txt says to upload them all).
+  upload.RemoveFiles("an earlier export's file");
   upload.WriteFile(SubmissionFiles::kMainScript, SubmissionScriptTemplate());
   upload.WriteFile(SubmissionFiles::kParams, EncodeNpy(params.ToNpy()));
   upload.WriteFile(SubmissionFiles::kInitialPoses, EncodeNpy(initial));

@@ -306,12 +306,7 @@ int RunCheckSubmission(const CheckSubmissionArgs& args) {
   // An earlier check's files: lab_files/ must hold this upload only (a file
   // the new upload lacks would still be found there, and a broken upload
   // pass), and an earlier controller check's replay must not pass for this one's.
-  for (const fs::directory_entry& entry : fs::directory_iterator(workdir)) {
-    if (!entry.is_regular_file()) continue;
-    std::error_code error;
-    fs::remove(entry.path(), error);
-    if (error) throw std::runtime_error(entry.path().string() + ": cannot remove an earlier check's file: " + error.message());
-  }
+  sim::OutputFolder(workdir).RemoveFiles("an earlier check's file");
   if (RunFolderChoice::HoldsRun(out.PathOf("lab_replay"))) {
     std::error_code error;
     fs::remove_all(out.PathOf("lab_replay"), error);

@@ -87,6 +87,15 @@ std::string OutputFolder::MakeSubfolder(const std::string& name) const {
   return path;
 }
 
+void OutputFolder::RemoveFiles(const std::string& why) const {
+  for (const fs::directory_entry& entry : fs::directory_iterator(real_dir_)) {
+    if (!entry.is_regular_file()) continue;
+    std::error_code error;
+    fs::remove(entry.path(), error);
+    if (error) throw std::runtime_error(entry.path().string() + ": cannot remove " + why + ": " + error.message());
+  }
+}
+
 void OutputFolder::WriteFile(const std::string& name, const std::string& bytes) const {
   WriteFileAtomically(PathOf(name), bytes);
 }

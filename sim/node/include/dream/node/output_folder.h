@@ -32,6 +32,11 @@ class OutputFolder {
   /// Creates the subfolder `name` (if missing) and returns its path.
   std::string MakeSubfolder(const std::string& name) const;
 
+  /// Removes every file directly in the folder (not subfolders), so that what
+  /// it holds next is one command's output only. @throws std::runtime_error
+  /// naming a file that cannot be removed and `why` (whose files they were).
+  void RemoveFiles(const std::string& why) const;
+
   /// Writes `bytes` to `name` atomically. @throws std::runtime_error.
   void WriteFile(const std::string& name, const std::string& bytes) const;
 
