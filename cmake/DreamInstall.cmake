@@ -33,7 +33,7 @@ function(dream_library_targets dir out)
 endfunction()
 
 # What a controller builds against, as dream::<name>.
-set(DREAM_EXPORTED_LIBRARIES world config_node config msgs lcm run_log agents agent_host)
+set(DREAM_EXPORTED_LIBRARIES robotarium world config_node config msgs lcm run_log agents agent_host)
 set(exported_targets)
 foreach(name IN LISTS DREAM_EXPORTED_LIBRARIES)
   set_target_properties(dream_${name} PROPERTIES EXPORT_NAME ${name})
@@ -58,6 +58,7 @@ endif()
 install(TARGETS dream dream-agent RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
 install(DIRECTORY
+    ${PROJECT_SOURCE_DIR}/sim/robotarium/include/
     ${PROJECT_SOURCE_DIR}/sim/world/include/
     ${PROJECT_SOURCE_DIR}/sim/config/include/
     ${PROJECT_SOURCE_DIR}/lcmtypes/include/

@@ -18,7 +18,7 @@
 #include "dream/render/ffmpeg_encoder.h"
 #include "dream/render/metric_plot.h"
 #include "dream/render/render_format.h"
-#include "dream/world/robotarium_constants.h"
+#include "dream/robotarium/robotarium_constants.h"
 #include "dream/render/run_animation.h"
 #include "dream/render/run_geometry.h"
 #include "dream/render/trajectory_picture.h"
@@ -163,7 +163,7 @@ std::vector<sim::MetricSeries> MetricSeriesOf(const fs::path& log, const run_log
   sim::MetricSeries closest;
   closest.name = "min_distance_m";
   closest.points = sim::MinimumDistanceSeries(run);
-  closest.limit = sim::RobotariumConstants::kCollisionDiameterMeters;
+  closest.limit = robotarium::RobotariumConstants::kCollisionDiameterMeters;
   closest.limit_label = "collision distance 0.135 m";
   if (!closest.points.empty()) series.push_back(std::move(closest));
   return series;

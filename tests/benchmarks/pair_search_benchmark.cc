@@ -14,7 +14,7 @@
 
 #include "collision_grid.h"  // sim/world/src: the world's own, not a public header
 #include "dream/world/arena.h"
-#include "dream/world/robotarium_constants.h"
+#include "dream/robotarium/robotarium_constants.h"
 #include "dream/world/step_events.h"
 
 #if __has_include(<nanoflann.hpp>)
@@ -55,7 +55,7 @@ PointCloud UniformPoints(int64_t count) {
   return cloud;
 }
 
-constexpr double kDistanceM = RobotariumConstants::kCollisionDiameterMeters;
+constexpr double kDistanceM = robotarium::RobotariumConstants::kCollisionDiameterMeters;
 
 void BM_CollisionGrid(benchmark::State& state) {
   const PointCloud cloud = UniformPoints(state.range(0));

@@ -20,7 +20,7 @@
 #include "dream/lcm/log_reader.h"
 #include "dream/run_status_t.hpp"
 #include "dream/world/printf_text.h"
-#include "dream/world/robotarium_constants.h"
+#include "dream/robotarium/robotarium_constants.h"
 
 namespace dream::bridge {
 namespace {
@@ -155,7 +155,7 @@ NpyArray WithSettleRows(NpyArray rows, int count) {
 TEST_F(ImportTest, RunWithinOneAndAHalfTimesTheDeclaredDurationIsClean) {
   const ExportedSubmission exported = ExportedSubmission::Read(*export_dir_);
   const int64_t steps = exported.params.steps;
-  const double dt = sim::RobotariumConstants::kTimeStepSeconds;
+  const double dt = robotarium::RobotariumConstants::kTimeStepSeconds;
   const sim::LabVerifierRules::Declaration upload = exported.UploadDeclaration();
   EXPECT_EQ(upload.num_robots, exported.params.num_robots);
   EXPECT_DOUBLE_EQ(upload.duration_s, static_cast<double>(steps + exported.params.options.settle_max_steps) * dt);
@@ -180,7 +180,7 @@ TEST_F(ImportTest, RunWithinOneAndAHalfTimesTheDeclaredDurationIsClean) {
 TEST_F(ImportTest, RunLongerThanOneAndAHalfTimesTheDeclaredDurationIsRejected) {
   const ExportedSubmission exported = ExportedSubmission::Read(*export_dir_);
   const int64_t steps = exported.params.steps;
-  const double dt = sim::RobotariumConstants::kTimeStepSeconds;
+  const double dt = robotarium::RobotariumConstants::kTimeStepSeconds;
   sim::LabVerifierRules::Declaration declared = exported.UploadDeclaration();
   declared.duration_s = static_cast<double>(steps) * dt / 1.6;
   const ImportedRun too_long = Import(testing::PerfectLabResult(*export_dir_), "declared_too_short", declared);

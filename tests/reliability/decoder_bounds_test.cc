@@ -19,7 +19,7 @@
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
-#include "dream/world/robotarium_constants.h"
+#include "dream/robotarium/robotarium_constants.h"
 #include "dream/velocity_command_t.hpp"
 #include "sample_messages.h"
 
@@ -96,7 +96,7 @@ TEST(DecoderBounds, TheLargestLegalMessagesDecode) {
 }
 
 TEST(DecoderBounds, TheRobotLimitCoversEveryRunTheConfigAllows) {
-  EXPECT_GE(MessageLimits::kRobots, sim::RobotariumConstants::kMaxRobotsInSimulation);
+  EXPECT_GE(MessageLimits::kRobots, robotarium::RobotariumConstants::kMaxRobotsInSimulation);
 }
 
 TEST(DecoderBounds, TheObstacleLimitIsTheConfigsLimit) {

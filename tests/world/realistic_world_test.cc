@@ -13,14 +13,14 @@
 #include <vector>
 
 #include "dream/world/realism_params.h"
-#include "dream/world/robotarium_constants.h"
+#include "dream/robotarium/robotarium_constants.h"
 #include "dream/world/unicycle_world.h"
 
 namespace dream::sim {
 namespace {
 
-constexpr double kDt = RobotariumConstants::kTimeStepSeconds;
-constexpr double kWheelRadius = RobotariumConstants::kWheelRadiusMeters;
+constexpr double kDt = robotarium::RobotariumConstants::kTimeStepSeconds;
+constexpr double kWheelRadius = robotarium::RobotariumConstants::kWheelRadiusMeters;
 
 std::vector<Pose2> ThreeRobots() { return {{-0.5, 0.0, 0.0}, {0.5, 0.0, 3.14159}, {0.0, 0.6, -1.0}}; }
 

@@ -4,20 +4,20 @@
 
 #include <gtest/gtest.h>
 
-#include "dream/world/robotarium_constants.h"
+#include "dream/robotarium/robotarium_constants.h"
 
 namespace dream::sim {
 namespace {
 
-constexpr double kR = RobotariumConstants::kWheelRadiusMeters;
-constexpr double kL = RobotariumConstants::kBaseLengthMeters;
-constexpr double kMax = RobotariumConstants::kMaxWheelVelocityRadps;
+constexpr double kR = robotarium::RobotariumConstants::kWheelRadiusMeters;
+constexpr double kL = robotarium::RobotariumConstants::kBaseLengthMeters;
+constexpr double kMax = robotarium::RobotariumConstants::kMaxWheelVelocityRadps;
 
 TEST(RobotariumConstantsTest, DerivedValuesMatchTheOfficialFormulas) {
   EXPECT_EQ(kMax, 12.5);
-  EXPECT_NEAR(RobotariumConstants::kMaxAngularVelocityRadps, 3.6363636363636362, 1e-15);
-  EXPECT_EQ(RobotariumConstants::kMaxRobotsInSimulation, 50);
-  EXPECT_EQ(RobotariumConstants::kMaxRobotsOnHardware, 20);
+  EXPECT_NEAR(robotarium::RobotariumConstants::kMaxAngularVelocityRadps, 3.6363636363636362, 1e-15);
+  EXPECT_EQ(robotarium::RobotariumConstants::kMaxRobotsInSimulation, 50);
+  EXPECT_EQ(robotarium::RobotariumConstants::kMaxRobotsOnHardware, 20);
 }
 
 TEST(UnicycleKinematicsTest, StraightAndTurnInPlaceToWheels) {
@@ -50,7 +50,7 @@ TEST(UnicycleKinematicsTest, PureRotationOverTheLimitClipsToMaxTurnRate) {
   // 6 rad/s needs -+20.625 rad/s; clipped to -+12.5 -> w = 25 r / L = 3.636 rad/s.
   const UnicycleCommand saturated = SaturateUnicycleCommand({0.0, 6.0}, kR, kL, kMax);
   EXPECT_EQ(saturated.v_mps, 0.0);
-  EXPECT_DOUBLE_EQ(saturated.w_radps, RobotariumConstants::kMaxAngularVelocityRadps);
+  EXPECT_DOUBLE_EQ(saturated.w_radps, robotarium::RobotariumConstants::kMaxAngularVelocityRadps);
 }
 
 TEST(UnicycleKinematicsTest, MixedCommandSaturatesOnlyOneWheelAndBends) {

@@ -7,25 +7,25 @@
 #include "dream/config/name_suggestion.h"
 #include "dream/world/initial_pose_generator.h"
 #include "dream/world/printf_text.h"
-#include "dream/world/robotarium_constants.h"
+#include "dream/robotarium/robotarium_constants.h"
 #include "dream/world/start_pose_obstacle_check.h"
 
 namespace dream::config {
 
-static_assert(ControllerConfig::kMaxRobots == sim::RobotariumConstants::kMaxRobotsInSimulation &&
-                  ControllerConfig::kMaxRobotsOnHardware == sim::RobotariumConstants::kMaxRobotsOnHardware,
+static_assert(ControllerConfig::kMaxRobots == robotarium::RobotariumConstants::kMaxRobotsInSimulation &&
+                  ControllerConfig::kMaxRobotsOnHardware == robotarium::RobotariumConstants::kMaxRobotsOnHardware,
               "the agents' robot limits must be the simulator's");
 
 namespace {
 
-using sim::RobotariumConstants;
+using robotarium::RobotariumConstants;
 
 // The lab can only place a robot whose whole body (radius 0.055 m) is inside
 // the arena: `dream export` refuses a start pose closer to a wall than this
 // (rule start_inside_arena, bridge::LabLimits::start_wall_margin_m). It is
 // stricter than the world's boundary error (centre outside the arena), so a
 // start pose that passes it passes both.
-constexpr double kStartWallClearanceM = RobotariumConstants::kRobotDiameterMeters / 2.0;
+constexpr double kStartWallClearanceM = robotarium::RobotariumConstants::kRobotDiameterMeters / 2.0;
 
 // The same comparison as the export's check, so "accepted here" can never be
 // "refused there" through rounding.

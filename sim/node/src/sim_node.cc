@@ -19,7 +19,7 @@
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
 #include "dream/node/progress_reporter.h"
-#include "dream/world/robotarium_constants.h"
+#include "dream/robotarium/robotarium_constants.h"
 #include "dream/node/run_recorder.h"
 #include "dream/velocity_command_t.hpp"
 

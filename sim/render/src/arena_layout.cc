@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "dream/world/robotarium_constants.h"
+#include "dream/robotarium/robotarium_constants.h"
 
 namespace dream::sim {
 namespace {
@@ -39,7 +39,7 @@ double ArenaLayout::tick_font_px() const { return std::max(9.0, 11.0 * ui_scale_
 
 double ArenaLayout::legend_row_px() const {
   return std::max(caption_font_px() * kLegendRowSpacing,
-                  kLegendRowRobots * RobotariumConstants::kRobotDiameterMeters / 2 * scale_);
+                  kLegendRowRobots * robotarium::RobotariumConstants::kRobotDiameterMeters / 2 * scale_);
 }
 
 double ArenaLayout::legend_center_px() const { return py(arena_.y_min_m) + margin_px_ * 0.6 + legend_row_px() / 2; }

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <unordered_set>
 
-#include "dream/world/robotarium_constants.h"
+#include "dream/robotarium/robotarium_constants.h"
 
 namespace dream::sim {
 namespace {
@@ -22,7 +22,7 @@ constexpr std::array<std::array<double, 3>, 10> kColors = {{{0.12, 0.47, 0.71},
                                                             {0.74, 0.74, 0.13},
                                                             {0.09, 0.75, 0.81}}};
 
-constexpr double kRobotRadiusM = RobotariumConstants::kRobotDiameterMeters / 2;
+constexpr double kRobotRadiusM = robotarium::RobotariumConstants::kRobotDiameterMeters / 2;
 
 // "-1.5", "0", "1": a grid line's position in metres.
 std::string TickLabel(double value_m) {

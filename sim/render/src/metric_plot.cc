@@ -6,13 +6,13 @@
 #include <stdexcept>
 
 #include "arena_painter.h"
-#include "dream/world/robotarium_constants.h"
+#include "dream/robotarium/robotarium_constants.h"
 #include "picture_surface.h"
 
 namespace dream::sim {
 namespace {
 
-constexpr double kStepS = RobotariumConstants::kTimeStepSeconds;
+constexpr double kStepS = robotarium::RobotariumConstants::kTimeStepSeconds;
 
 // A round tick spacing (1, 2 or 5 times a power of ten) giving about `ticks` ticks over `span`.
 double TickSpacing(double span, int ticks) {

@@ -11,14 +11,14 @@
 #include "arena_painter.h"
 #include "dream/render/ffmpeg_encoder.h"
 #include "dream/render/run_geometry.h"
-#include "dream/world/robotarium_constants.h"
+#include "dream/robotarium/robotarium_constants.h"
 #include "picture_surface.h"
 #include "range_sprites.h"
 
 namespace dream::sim {
 namespace {
 
-constexpr double kStepS = RobotariumConstants::kTimeStepSeconds;
+constexpr double kStepS = robotarium::RobotariumConstants::kTimeStepSeconds;
 constexpr double kRadioFlashS = 0.5;   // a broadcast's lines fade out over this much simulated time
 constexpr int kPaletteSampleFrames = 40;  // GIF: frames the palette is computed from
 

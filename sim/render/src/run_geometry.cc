@@ -6,7 +6,7 @@
 #include <map>
 #include <stdexcept>
 
-#include "dream/world/robotarium_constants.h"
+#include "dream/robotarium/robotarium_constants.h"
 
 namespace dream::sim {
 
@@ -16,7 +16,7 @@ const run_log::RunLog& Drawable(const run_log::RunLog& log) {
 }
 
 double DurationS(const run_log::RunLog& log) {
-  return static_cast<double>(log.last_step() - log.first_step()) * RobotariumConstants::kTimeStepSeconds;
+  return static_cast<double>(log.last_step() - log.first_step()) * robotarium::RobotariumConstants::kTimeStepSeconds;
 }
 
 std::vector<std::array<double, 2>> RobotPath(const run_log::RunLog& log, int robot, size_t from_index,

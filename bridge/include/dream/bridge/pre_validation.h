@@ -7,7 +7,7 @@
 
 #include "dream/bridge/run_track.h"
 #include "dream/world/lab_verifier_rules.h"
-#include "dream/world/robotarium_constants.h"
+#include "dream/robotarium/robotarium_constants.h"
 #include "dream/world/world_params.h"
 
 namespace dream::bridge {
@@ -15,11 +15,11 @@ namespace dream::bridge {
 /// What the Robotarium accepts, as far as a recorded run can show it.
 struct LabLimits {
   /// Robots on the hardware.
-  int max_robots = sim::RobotariumConstants::kMaxRobotsOnHardware;
+  int max_robots = robotarium::RobotariumConstants::kMaxRobotsOnHardware;
   /// The lab's cap on an experiment: iterations x 0.033 s (15 minutes).
-  double max_duration_s = sim::RobotariumConstants::kMaxExperimentSeconds;
+  double max_duration_s = robotarium::RobotariumConstants::kMaxExperimentSeconds;
   /// Start poses must keep the whole robot (radius 0.055 m) inside the arena.
-  double start_wall_margin_m = sim::RobotariumConstants::kRobotDiameterMeters / 2.0;
+  double start_wall_margin_m = robotarium::RobotariumConstants::kRobotDiameterMeters / 2.0;
   /// The lab's start-up routine drives robots onto their start poses with a
   /// barrier certificate that keeps the points `start_projection_m` ahead of
   /// them 0.25 m apart and stops within 0.05 m of the target: start poses

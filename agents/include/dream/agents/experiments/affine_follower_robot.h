@@ -8,6 +8,7 @@
 
 #include "dream/agents/hrvo/hrvo_robot.h"
 #include "dream/agents/geometry/reversible_si_to_uni.h"
+#include "dream/robotarium/robotarium_constants.h"
 
 namespace dream::agents {
 
@@ -34,7 +35,8 @@ struct AffineFollowerParams {
   std::vector<std::pair<int, double>> neighbours;
   double gain = 1.0;           ///< 1/s; > 0
   double max_speed_mps = 0.2;  ///< cap on the planar velocity; (0, 0.2]
-  double time_step_s = 0.033;  ///< one step, s; used to age neighbours' positions; > 0
+  /// One step, s; used to age neighbours' positions; > 0.
+  double time_step_s = robotarium::RobotariumConstants::kTimeStepSeconds;
   /// HRVO only considers a sensed robot that is closer than this, m (> 0),
   /// or that the law's velocity would bring within the safety radius inside
   /// hrvo_horizon_s. The others are the formation's own neighbours holding

@@ -6,6 +6,7 @@
 #include "dream/agents/experiments/affine_maneuver.h"
 #include "dream/agents/geometry/reversible_si_to_uni.h"
 #include "dream/agents/framework/robot.h"
+#include "dream/robotarium/robotarium_constants.h"
 
 namespace dream::agents {
 
@@ -16,7 +17,7 @@ struct AffineLeaderParams {
   double gain = 1.5;              ///< position feedback, 1/s; > 0
   double max_speed_mps = 0.2;     ///< cap on the planar velocity; (0, 0.2]
   /// Length of one step, s (turns per-step rates into m/s); > 0.
-  double time_step_s = 0.033;
+  double time_step_s = robotarium::RobotariumConstants::kTimeStepSeconds;
   /// Drive with ReversibleSiToUni (default) or the thesis's dxi_to_dxu.
   bool reversible_drive = true;
 

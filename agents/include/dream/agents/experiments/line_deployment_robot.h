@@ -8,6 +8,7 @@
 
 #include "dream/agents/hrvo/hrvo_robot.h"
 #include "dream/agents/experiments/line_consensus.h"
+#include "dream/agents/geometry/robotarium_arena.h"
 
 namespace dream::agents {
 
@@ -38,8 +39,8 @@ struct LineDeploymentParams {
   /// margin anchors the line (the others reach consensus with it), so the
   /// line still forms, shifted. >= 0, and the arena must stay non-empty.
   double arena_margin_m = 0.15;
-  Eigen::Vector2d arena_min_m = Eigen::Vector2d(-1.6, -1.0);  ///< Robotarium arena, world frame
-  Eigen::Vector2d arena_max_m = Eigen::Vector2d(1.6, 1.0);
+  Eigen::Vector2d arena_min_m = RobotariumArenaMin();  ///< Robotarium arena, world frame
+  Eigen::Vector2d arena_max_m = RobotariumArenaMax();
 
   /// False with a message naming the field, its value and the allowed range.
   bool IsValid(std::string* error) const;

@@ -9,14 +9,16 @@
 
 #include "dream/agents/experiments/coverage_cost.h"
 #include "dream/agents/framework/experiment_metrics.h"
+#include "dream/agents/geometry/robotarium_arena.h"
 
 namespace dream::agents {
 
 struct VoronoiCoverageMetricsParams {
-  Eigen::Vector2d arena_min_m{-1.6, -1.0};  ///< the region to cover (minus obstacles)
-  Eigen::Vector2d arena_max_m{1.6, 1.0};
+  Eigen::Vector2d arena_min_m = RobotariumArenaMin();  ///< the region to cover (minus obstacles)
+  Eigen::Vector2d arena_max_m = RobotariumArenaMax();
   int sample_steps = 10;          ///< the cost series keeps every this many steps; >= 1
-  double step_s = 0.033;          ///< time per step, to turn pose changes into speeds; > 0
+  /// Time per step, to turn pose changes into speeds; > 0.
+  double step_s = robotarium::RobotariumConstants::kTimeStepSeconds;
   double still_speed_mps = 0.005; ///< a robot slower than this is still; > 0
   int still_window_steps = 30;    ///< robots have settled once all were still this many steps; >= 1
   double collision_offset_m = 0.025;  ///< Robotarium: the collision disc sits this far ahead of the centre

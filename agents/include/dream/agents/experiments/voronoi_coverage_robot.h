@@ -9,6 +9,7 @@
 
 #include "dream/agents/framework/robot.h"
 #include "dream/agents/geometry/voronoi_cell.h"
+#include "dream/robotarium/robotarium_constants.h"
 
 namespace dream::agents {
 
@@ -18,7 +19,7 @@ struct VoronoiCoverageParams {
   double gain = 1.0;            ///< proportional gain towards the centroid, 1/s; > 0
   double max_speed_mps = 0.15;  ///< cap on the planar velocity, also assumed of neighbours; (0, 0.2]
   double tolerance_m = 0.03;    ///< at the centroid within this distance the robot holds still (thesis: 0.02-0.05); > 0
-  double step_s = 0.033;        ///< the world's time step; > 0
+  double step_s = robotarium::RobotariumConstants::kTimeStepSeconds;  ///< the world's time step; > 0
   int done_after_still_steps = 30;    ///< done after this many consecutive updates holding still; >= 1
   int radio_rounds_before_moving = 2; ///< hold still until the radio ran this often (it has heard its neighbours); >= 0
 

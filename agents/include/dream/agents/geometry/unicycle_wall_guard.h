@@ -3,14 +3,15 @@
 #include <Eigen/Core>
 
 #include "dream/agents/framework/unicycle_command.h"
+#include "dream/agents/geometry/robotarium_arena.h"
 
 namespace dream::agents {
 
 /// Where a UnicycleWallGuard keeps a robot.
 struct UnicycleWallGuardParams {
   /// The arena's corners, world frame (the Robotarium's).
-  Eigen::Vector2d arena_min_m = Eigen::Vector2d(-1.6, -1.0);
-  Eigen::Vector2d arena_max_m = Eigen::Vector2d(1.6, 1.0);
+  Eigen::Vector2d arena_min_m = RobotariumArenaMin();
+  Eigen::Vector2d arena_max_m = RobotariumArenaMax();
   /// position + horizon * (planar velocity actually driven) must stay
   /// margin_m inside the arena; closer in, the robot may not move outwards. s.
   double horizon_s = 1.0;

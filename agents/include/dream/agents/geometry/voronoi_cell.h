@@ -7,6 +7,7 @@
 #include "dream/agents/geometry/convex_polygon.h"
 #include "dream/agents/geometry/half_plane.h"
 #include "dream/agents/framework/sensor_readings.h"
+#include "dream/agents/geometry/robotarium_arena.h"
 
 namespace dream::agents {
 
@@ -18,8 +19,8 @@ struct VoronoiCellParams {
   /// every step, so the bound keeps a config from asking for 2^31 vertices).
   int disc_sides = 64;
   static constexpr int kMaxDiscSides = 1024;
-  Eigen::Vector2d arena_min_m{-1.6, -1.0};  ///< the Robotarium arena
-  Eigen::Vector2d arena_max_m{1.6, 1.0};
+  Eigen::Vector2d arena_min_m = RobotariumArenaMin();  ///< the Robotarium arena
+  Eigen::Vector2d arena_max_m = RobotariumArenaMax();
   double wall_margin_m = 0.06;      ///< the cell keeps this far inside the arena walls; >= 0
   double robot_buffer_m = 0.1;      ///< each bisector moves this far towards the robot; >= 0
   double obstacle_buffer_m = 0.12;  ///< each obstacle's line moves this far towards the robot; >= 0

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include "dream/robotarium/robotarium_constants.h"
 
 namespace dream::agents {
 
@@ -15,10 +16,10 @@ struct HrvoParams {
   double max_speed_mps = 0.2;
   /// Refuse velocities that would leave the arena within boundary_horizon_s.
   bool check_boundaries = true;
-  double x_min_m = -1.6;  ///< arena, world frame; x_min_m < x_max_m
-  double x_max_m = 1.6;
-  double y_min_m = -1.0;  ///< y_min_m < y_max_m
-  double y_max_m = 1.0;
+  double x_min_m = robotarium::RobotariumConstants::kArenaXMinMeters;  ///< arena, world frame; x_min_m < x_max_m
+  double x_max_m = robotarium::RobotariumConstants::kArenaXMaxMeters;
+  double y_min_m = robotarium::RobotariumConstants::kArenaYMinMeters;  ///< y_min_m < y_max_m
+  double y_max_m = robotarium::RobotariumConstants::kArenaYMaxMeters;
   /// position + horizon * velocity must stay strictly inside the arena (the
   /// thesis: 1 s). (0, 100] s.
   double boundary_horizon_s = 1.0;

@@ -26,7 +26,7 @@ struct ControllerConfig {
   std::vector<std::string> plugins;
   std::vector<ConfigNode> plugin_nodes;  ///< the `plugins:` entries, for errors naming them
 
-  /// The Robotarium simulator's robot limit (RobotariumConstants, checked
+  /// The Robotarium simulator's robot limit (robotarium::RobotariumConstants, checked
   /// equal where both are seen, in run_config.cc).
   static constexpr int kMaxRobots = 50;
   /// What the lab runs at most, for the message.

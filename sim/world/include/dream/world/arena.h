@@ -2,16 +2,16 @@
 
 #include <string>
 
-#include "dream/world/robotarium_constants.h"
+#include "dream/robotarium/robotarium_constants.h"
 
 namespace dream::sim {
 
 // The rectangular testbed. Defaults are the Robotarium's.
 struct Arena {
-  double x_min_m = RobotariumConstants::kArenaXMinMeters;
-  double x_max_m = RobotariumConstants::kArenaXMaxMeters;
-  double y_min_m = RobotariumConstants::kArenaYMinMeters;
-  double y_max_m = RobotariumConstants::kArenaYMaxMeters;
+  double x_min_m = robotarium::RobotariumConstants::kArenaXMinMeters;
+  double x_max_m = robotarium::RobotariumConstants::kArenaXMaxMeters;
+  double y_min_m = robotarium::RobotariumConstants::kArenaYMinMeters;
+  double y_max_m = robotarium::RobotariumConstants::kArenaYMaxMeters;
 
   // Like the Robotarium's boundary check: a point exactly on an edge is
   // inside; it is outside iff x < x_min || x > x_max || y < y_min || y > y_max.

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "dream/world/robotarium_constants.h"
+#include "dream/robotarium/robotarium_constants.h"
 #include "dream/world/verdict_reason.h"
 
 namespace dream::sim {
@@ -43,8 +43,8 @@ struct LabVerifierRules {
   int64_t robots_too_close_limit = 100;           ///< config.json robots_too_close_limit
   int64_t robots_outside_boundaries_limit = 100;  ///< config.json robots_outside_boundaries_limit
   double duration_factor = 1.5;                   ///< Robotarium.m: iteration*0.033 > 1.5*duration
-  double max_duration_s = RobotariumConstants::kMaxExperimentSeconds;  ///< the lab's 15-minute cap
-  double time_step_s = RobotariumConstants::kTimeStepSeconds;
+  double max_duration_s = robotarium::RobotariumConstants::kMaxExperimentSeconds;  ///< the lab's 15-minute cap
+  double time_step_s = robotarium::RobotariumConstants::kTimeStepSeconds;
 
   /// The settle steps `dream export` adds by default (ExportOptions), so that
   /// a simulated run is judged with the duration its export would declare.

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "dream/world/robotarium_constants.h"
+#include "dream/robotarium/robotarium_constants.h"
 
 namespace dream::sim {
 
@@ -38,7 +38,7 @@ struct RealismParams {
   int command_latency_steps = 0;
   // A robot whose newest command reached it longer ago than this (simulated
   // time) brakes to a stop; 0 = never. The official world has the same 0.5 s.
-  double command_brake_s = RobotariumConstants::kCommandTimeoutSeconds;
+  double command_brake_s = robotarium::RobotariumConstants::kCommandTimeoutSeconds;
   // The firmware coasts the motors when |v| < dead_zone_v_mps and
   // |w| < dead_zone_w_radps; 0, 0 = no dead zone.
   double dead_zone_v_mps = 0.0;
@@ -47,7 +47,7 @@ struct RealismParams {
   double wheel_accel_limit_radps2 = 0.0;
   // The robot's axle length: the firmware's conversion to wheel speeds and the
   // wheel saturation use it. (The Robotarium's checks keep the official one.)
-  double axle_length_m = RobotariumConstants::kBaseLengthMeters;
+  double axle_length_m = robotarium::RobotariumConstants::kBaseLengthMeters;
 
   // One field by its config key (world.realism.<key>, summary.json's realism.<key>):
   // a number, or a step count in 0..kMaxDelaySteps. Exactly one of number and

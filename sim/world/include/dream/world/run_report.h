@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <string>
 
-#include "dream/world/robotarium_constants.h"
+#include "dream/robotarium/robotarium_constants.h"
 #include "dream/world/run_verdict.h"
 #include "dream/world/violation_counts.h"
 
@@ -21,7 +21,7 @@ struct RunReport {
   // overlaps are ours: a virtual obstacle stands for a real one, so touching
   // it is treated like a collision); Warning if only actuator errors.
   static RunReport FromViolations(int64_t iterations, const ViolationCounts& violations,
-                                  double time_step_s = RobotariumConstants::kTimeStepSeconds);
+                                  double time_step_s = robotarium::RobotariumConstants::kTimeStepSeconds);
 
   // The text debug() prints, character for character when there are no
   // obstacle overlaps (those add one line of ours to the error list).

@@ -2,11 +2,13 @@
 
 #include <cstdint>
 
-namespace dream::sim {
+namespace dream::robotarium {
 
 // Physical constants of the Georgia Tech Robotarium, as the V2.0.0 Python
 // simulator (rps/robotarium_abc.py) defines them. Derived values use the same
 // expressions as the official simulator so they round to the same doubles.
+// The one home of these numbers: the world checks runs against them and the
+// agents' defaults (limits, arena, time step) are taken from them.
 struct RobotariumConstants {
   static constexpr double kTimeStepSeconds = 0.033;
 
@@ -41,4 +43,4 @@ struct RobotariumConstants {
   static constexpr double kMaxExperimentSeconds = 900.0;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::robotarium
