@@ -117,36 +117,19 @@ RunComparison Compare(const std::string& first_dir, const std::string& second_di
   comparison.second = Describe(second_dir, runs.second, runs.config);
   comparison.compared_steps = std::min(first.last_step(), second.last_step());
   const int n = first.num_robots;
-  double total_squared = 0.0;
   for (int i = 0; i < n; ++i) {
     RobotTracking tracking;
     tracking.robot = i;
-    double squared = 0.0;
-    double heading_squared = 0.0;
     for (int64_t k = 0; k <= comparison.compared_steps; ++k) {
       const sim::Pose2& a = first.pose(k, i);
       const sim::Pose2& b = second.pose(k, i);
-      const double error = std::hypot(b.x_m - a.x_m, b.y_m - a.y_m);
-      const double heading = std::remainder(b.theta_rad - a.theta_rad, 2 * M_PI);
-      squared += error * error;
-      heading_squared += heading * heading;
-      if (error > tracking.max_m) {
-        tracking.max_m = error;
-        tracking.max_step = k;
-      }
+      tracking.position_m.Add(std::hypot(b.x_m - a.x_m, b.y_m - a.y_m), k);
+      tracking.heading_rad.Add(std::remainder(b.theta_rad - a.theta_rad, 2 * M_PI), k);
     }
-    const auto count = static_cast<double>(comparison.compared_steps + 1);
-    tracking.rms_m = std::sqrt(squared / count);
-    tracking.rms_heading_rad = std::sqrt(heading_squared / count);
-    total_squared += squared;
-    if (tracking.max_m > comparison.max_m) {
-      comparison.max_m = tracking.max_m;
-      comparison.max_robot = i;
-      comparison.max_step = tracking.max_step;
-    }
+    if (i == 0 || tracking.position_m.max() > comparison.position_m.max()) comparison.max_robot = i;
+    comparison.position_m.Merge(tracking.position_m);
     comparison.robots.push_back(tracking);
   }
-  comparison.rms_m = std::sqrt(total_squared / (static_cast<double>(comparison.compared_steps + 1) * n));
   return comparison;
 }
 
@@ -166,10 +149,12 @@ std::string RunComparison::Text() const {
   text += "tracking error (second - first, robot centre)\n";
   text += "  robot   RMS cm   max cm   at step   RMS heading deg\n";
   for (const RobotTracking& r : robots) {
-    text += Pad(std::to_string(r.robot), 7) + Pad(Cm(r.rms_m), 9) + Pad(Cm(r.max_m), 9) +
-            Pad(std::to_string(r.max_step), 10) + Pad(Format("%.2f", r.rms_heading_rad * 180.0 / M_PI), 18) + "\n";
+    text += Pad(std::to_string(r.robot), 7) + Pad(Cm(r.position_m.Rms()), 9) + Pad(Cm(r.position_m.max()), 9) +
+            Pad(std::to_string(r.position_m.max_step()), 10) +
+            Pad(Format("%.2f", r.heading_rad.Rms() * 180.0 / M_PI), 18) + "\n";
   }
-  text += "    all" + Pad(Cm(rms_m), 9) + Pad(Cm(max_m), 9) + Pad(std::to_string(max_step), 10) + "   (robot " +
+  text += "    all" + Pad(Cm(position_m.Rms()), 9) + Pad(Cm(position_m.max()), 9) +
+          Pad(std::to_string(position_m.max_step()), 10) + "   (robot " +
           std::to_string(max_robot) + ")\n\n";
   text += "closest robots: first " + Closest(first) + "\n                second " + Closest(second) + "\n\n";
   text += "violations            first   second\n";
@@ -212,17 +197,17 @@ nlohmann::ordered_json RunComparison::Json() const {
   json["first"] = side(first);
   json["second"] = side(second);
   json["compared_steps"] = compared_steps;
-  json["tracking_rms_m"] = rms_m;
-  json["tracking_max_m"] = max_m;
+  json["tracking_rms_m"] = position_m.Rms();
+  json["tracking_max_m"] = position_m.max();
   json["tracking_max_robot"] = max_robot;
-  json["tracking_max_step"] = max_step;
+  json["tracking_max_step"] = position_m.max_step();
   nlohmann::ordered_json robots_json = nlohmann::ordered_json::array();
   for (const RobotTracking& r : robots) {
     robots_json.push_back({{"robot", r.robot},
-                           {"rms_m", r.rms_m},
-                           {"max_m", r.max_m},
-                           {"max_step", r.max_step},
-                           {"rms_heading_rad", r.rms_heading_rad}});
+                           {"rms_m", r.position_m.Rms()},
+                           {"max_m", r.position_m.max()},
+                           {"max_step", r.position_m.max_step()},
+                           {"rms_heading_rad", r.heading_rad.Rms()}});
   }
   json["robots"] = robots_json;
   return json;
@@ -241,8 +226,9 @@ RunComparison CompareRunsAndWrite(const std::string& first_dir, const std::strin
       runs.first.log, runs.second.log, picture,
       {"dashed: " + shown(first_dir) + " (" + std::to_string(comparison.first.steps) + " steps), solid: " +
            shown(second_dir) + " (" + std::to_string(comparison.second.steps) + " steps)",
-       "tracking error: RMS " + Cm(comparison.rms_m) + " cm, max " + Cm(comparison.max_m) + " cm (robot " +
-           std::to_string(comparison.max_robot) + ", step " + std::to_string(comparison.max_step) + ")"});
+       "tracking error: RMS " + Cm(comparison.position_m.Rms()) + " cm, max " + Cm(comparison.position_m.max()) +
+           " cm (robot " + std::to_string(comparison.max_robot) + ", step " +
+           std::to_string(comparison.position_m.max_step()) + ")"});
   return comparison;
 }
 

@@ -251,12 +251,8 @@ nlohmann::ordered_json CheckControllersOnLabPoses(const sim::OutputFolder& check
   json["steps"] = agreement.steps();
   json["same_commands"] = agreement.Same();
   json["tolerance"] = bridge::CommandAgreement::kSameTolerance;
-  double max_v = 0.0;
-  double max_w = 0.0;
-  for (const auto& robot : agreement.robots()) {
-    max_v = std::max(max_v, robot.max_v_difference_mps);
-    max_w = std::max(max_w, robot.max_w_difference_radps);
-  }
+  const double max_v = agreement.MaxVDifference();
+  const double max_w = agreement.MaxWDifference();
   json["max_v_difference_mps"] = max_v;
   json["max_w_difference_radps"] = max_w;
   char largest[96];
@@ -276,9 +272,9 @@ nlohmann::ordered_json CheckControllersOnLabPoses(const sim::OutputFolder& check
   }
   nlohmann::ordered_json silent = nlohmann::ordered_json::array();
   for (const auto& robot : agreement.robots()) {
-    if (robot.steps_with_command == agreement.steps()) continue;
-    silent.push_back({{"robot", robot.robot}, {"steps_without_command", agreement.steps() - robot.steps_with_command}});
-    std::cout << "robot " << robot.robot << " sent no command at " << agreement.steps() - robot.steps_with_command
+    if (robot.v_mps.count() == agreement.steps()) continue;
+    silent.push_back({{"robot", robot.robot}, {"steps_without_command", agreement.steps() - robot.v_mps.count()}});
+    std::cout << "robot " << robot.robot << " sent no command at " << agreement.steps() - robot.v_mps.count()
               << " of " << agreement.steps() << " replayed steps (its controller failed or its agent was lost)\n";
   }
   json["robots_without_commands"] = silent;
@@ -376,11 +372,11 @@ int RunCheckSubmission(const CheckSubmissionArgs& args) {
   if (!run_dir.empty() && fs::exists(fs::path(run_dir) / "run.lcmlog")) {
     const bridge::RunComparison comparison = bridge::CompareRunsAndWrite(run_dir, out.dir(), out.dir());
     std::cout << "\n" << comparison.Text();
-    std::cout << "tracking error against " << run_dir << ": RMS " << Cm(comparison.rms_m) << ", max "
-              << Cm(comparison.max_m) << "\n";
+    std::cout << "tracking error against " << run_dir << ": RMS " << Cm(comparison.position_m.Rms()) << ", max "
+              << Cm(comparison.position_m.max()) << "\n";
     check["compared_with"] = run_dir;
-    check["tracking_rms_m"] = comparison.rms_m;
-    check["tracking_max_m"] = comparison.max_m;
+    check["tracking_rms_m"] = comparison.position_m.Rms();
+    check["tracking_max_m"] = comparison.position_m.max();
   } else {
     std::cout << "\nnot compared: the simulated run " << (run_dir.empty() ? "(unknown)" : run_dir)
               << " is not there (pass --run DIR)\n";

@@ -37,8 +37,8 @@ TEST(CommandAgreementTest, AgentsThatSendTheLabsCommandsAgreeWithinRounding) {
   EXPECT_TRUE(agreement.Same());
   EXPECT_TRUE(agreement.Complete());
   ASSERT_EQ(agreement.robots().size(), 2u);
-  EXPECT_EQ(agreement.robots()[0].steps_with_command, 3);
-  EXPECT_NEAR(agreement.robots()[0].max_w_difference_radps, 1e-13, 1e-15);
+  EXPECT_EQ(agreement.robots()[0].v_mps.count(), 3);
+  EXPECT_NEAR(agreement.robots()[0].w_radps.max(), 1e-13, 1e-15);
   EXPECT_EQ(agreement.robots()[0].first_different_step, -1);
 }
 
@@ -56,9 +56,12 @@ TEST(CommandAgreementTest, TheFirstDifferentStepAndTheWorstRobotAreNamed) {
   EXPECT_EQ(agreement.WorstRobot(), 1);
   const CommandAgreement::RobotAgreement& robot = agreement.robots()[1];
   EXPECT_EQ(robot.first_different_step, 2);
-  EXPECT_NEAR(robot.max_w_difference_radps, 0.2, 1e-12);
-  EXPECT_NEAR(robot.rms_w_difference_radps, std::sqrt((0.04 + 0.01) / 4.0), 1e-12);
-  EXPECT_EQ(robot.max_v_difference_mps, 0.0);
+  EXPECT_NEAR(robot.w_radps.max(), 0.2, 1e-12);
+  EXPECT_EQ(robot.w_radps.max_step(), 2);
+  EXPECT_NEAR(robot.w_radps.Rms(), std::sqrt((0.04 + 0.01) / 4.0), 1e-12);
+  EXPECT_EQ(robot.v_mps.max(), 0.0);
+  EXPECT_NEAR(agreement.MaxWDifference(), 0.2, 1e-12);
+  EXPECT_EQ(agreement.MaxVDifference(), 0.0);
   const nlohmann::ordered_json json = agreement.Json();
   ASSERT_EQ(json.size(), 2u);
   EXPECT_EQ(json[1]["robot"], 1);
@@ -80,8 +83,8 @@ TEST(CommandAgreementTest, AnAgentThatFellSilentLeavesTheRunIncompleteButNotDiff
   const CommandAgreement agreement = CommandAgreement::Of(replay);
   EXPECT_TRUE(agreement.Same());
   EXPECT_FALSE(agreement.Complete());
-  EXPECT_EQ(agreement.robots()[1].steps_with_command, 1);
-  EXPECT_EQ(agreement.robots()[0].steps_with_command, 3);
+  EXPECT_EQ(agreement.robots()[1].v_mps.count(), 1);
+  EXPECT_EQ(agreement.robots()[0].v_mps.count(), 3);
 }
 
 TEST(CommandAgreementTest, BeforeTheFirstStepThereIsNothingToCompare) {
@@ -90,7 +93,8 @@ TEST(CommandAgreementTest, BeforeTheFirstStepThereIsNothingToCompare) {
   EXPECT_EQ(agreement.steps(), 0);
   EXPECT_TRUE(agreement.Same());
   EXPECT_TRUE(agreement.Complete());
-  EXPECT_EQ(agreement.robots()[0].rms_v_difference_mps, 0.0);
+  EXPECT_EQ(agreement.robots()[0].v_mps.Rms(), 0.0);
+  EXPECT_EQ(agreement.robots()[0].v_mps.max_step(), -1);
 }
 
 }  // namespace

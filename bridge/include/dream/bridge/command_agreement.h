@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "dream/bridge/difference_stats.h"
 #include "dream/bridge/lab_replay_world.h"
 
 namespace dream::bridge {
@@ -21,12 +22,10 @@ class CommandAgreement {
 
   struct RobotAgreement {
     int robot = 0;
-    /// Replayed steps at which the robot's agent had a command.
-    int64_t steps_with_command = 0;
-    double rms_v_difference_mps = 0.0;
-    double rms_w_difference_radps = 0.0;
-    double max_v_difference_mps = 0.0;
-    double max_w_difference_radps = 0.0;
+    /// Over the replayed steps at which the robot's agent had a command
+    /// (count() of either is how many).
+    DifferenceStats v_mps;
+    DifferenceStats w_radps;
     /// The first step whose commands differ by more than kSameTolerance; -1 when none.
     int64_t first_different_step = -1;
   };
@@ -45,6 +44,9 @@ class CommandAgreement {
   /// The robot whose commands differ most (largest of its v and w
   /// differences); -1 when there are no robots.
   int WorstRobot() const;
+  /// The largest v and w differences over every robot and step.
+  double MaxVDifference() const;
+  double MaxWDifference() const;
 
   /// summary.json's `lab_replay.agents_vs_lab_commands`: one object per robot.
   nlohmann::ordered_json Json() const;

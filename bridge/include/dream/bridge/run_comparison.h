@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dream/bridge/difference_stats.h"
 #include "dream/world/violation_counts.h"
 
 namespace dream::bridge {
@@ -25,13 +26,11 @@ struct ComparedRun {
   nlohmann::ordered_json metrics;       ///< the experiment's metrics, from the log
 };
 
-/// Position error of one robot, second run minus first, over the compared steps.
+/// Errors of one robot, second run minus first, over the compared steps.
 struct RobotTracking {
   int robot = 0;
-  double rms_m = 0.0;
-  double max_m = 0.0;
-  int64_t max_step = 0;
-  double rms_heading_rad = 0.0;
+  DifferenceStats position_m;   ///< distance between the robot's centres
+  DifferenceStats heading_rad;  ///< heading difference, wrapped to [-pi, pi]
 };
 
 /// A simulated run against its lab run (or any two runs of one experiment).
@@ -40,10 +39,8 @@ struct RunComparison {
   ComparedRun second;  ///< the lab run
   int64_t compared_steps = 0;  ///< steps 0..compared_steps are in both
   std::vector<RobotTracking> robots;
-  double rms_m = 0.0;  ///< over every robot and compared step
-  double max_m = 0.0;
-  int max_robot = 0;
-  int64_t max_step = 0;
+  DifferenceStats position_m;  ///< over every robot and compared step
+  int max_robot = 0;           ///< the robot of position_m.max()
 
   /// A report for people: tracking per robot, closest approach, violations
   /// and the experiment's own metrics side by side.
