@@ -1,8 +1,6 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
-#include <csignal>
-#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -10,15 +8,13 @@
 #include "command_line.h"
 #include "commands.h"
 #include "dream/lcm/lcm_url.h"
+#include "lcm_java_tools.h"
 #include "process_group.h"
 #include "shared_options.h"
-#include "shell_quoted.h"
 #include "window_display.h"
 
 namespace dream::cli {
 namespace {
-
-namespace fs = std::filesystem;
 
 // Every event of an LCM log starts with this sync word (big-endian).
 constexpr unsigned char kLcmLogSyncWord[4] = {0xED, 0xA1, 0xDA, 0x01};
@@ -43,34 +39,30 @@ std::string LogToReplay(const std::string& run) {
 
 int RunReplay(const ReplayArgs& args) {
   const std::string log = LogToReplay(args.run);
-  if (!fs::exists(DREAM_LCM_JAR)) {
-    throw std::runtime_error(std::string("lcm.jar ") + DREAM_LCM_JAR + " is missing: apt-get install liblcm-java");
-  }
+  const std::string lcm_jar = RequireLcmJar();
   const std::string url = lcm::ResolveLcmUrl(args.lcm_url);
   // Debian's lcm-logplayer-gui passes -Xincgc, which Java 17 refuses: start
   // its class directly, with the script's heap sizes. The URL goes as its own
   // word: LogPlayer cuts `--lcm-url=URL` at every '=', which kept only
   // "udpm://...?ttl" and dropped the URL's options.
-  std::vector<std::string> player = {"java", "-Xmx64m", "-Xms32m", "-cp", DREAM_LCM_JAR, "lcm.logging.LogPlayer",
+  std::vector<std::string> player = {"java", "-Xmx64m", "-Xms32m", "-cp", lcm_jar, "lcm.logging.LogPlayer",
                                      "--lcm-url", url};
   if (args.paused) player.push_back("--paused");
   player.push_back(log);
   std::vector<std::string> spy;
   if (args.with_spy) spy = {SelfExecutable(), "spy", "--lcm-url=" + url};
   if (args.print_command_only) {
-    std::cout << ShellCommandLine(player) << "\n";
-    if (!spy.empty()) std::cout << ShellCommandLine(spy) << "\n";
+    PrintToolCommands({player, spy});
     return kExitOk;
   }
   RequireWindowDisplay("LCM's log player",
                        "without one, `dream replay RUN --print` prints the command to run elsewhere, and "
                        "lcm-logplayer RUN/run.lcmlog plays the log with no window");
   spdlog::info("replaying {} on {}{}", log, url, args.with_spy ? " into lcm-spy" : "");
-  ProcessGroup children;
-  if (!spy.empty()) children.Start(spy);
-  const pid_t player_pid = children.Start(player);
-  const int code = children.WaitPassingOnStop(player_pid, StopFlag(), SIGTERM);
-  return code == 0 || StopFlag().load() ? kExitOk : kExitRunFailed;
+  // The spy gets 2 s to start and subscribe before the player plays the log's
+  // first message (it missed the start when both started at once); the
+  // player's window ends the replay.
+  return RunToolsUntilClosed({spy, player}, 1, 2);
 }
 
 void DeclareReplayCommand(CommandLine& line) {

@@ -1,7 +1,5 @@
 #include <spdlog/spdlog.h>
-#include <unistd.h>
 
-#include <csignal>
 
 #include <filesystem>
 #include <iostream>
@@ -11,9 +9,8 @@
 #include "commands.h"
 #include "data_files.h"
 #include "dream/lcm/lcm_url.h"
-#include "process_group.h"
+#include "lcm_java_tools.h"
 #include "shared_options.h"
-#include "shell_quoted.h"
 #include "window_display.h"
 
 namespace dream::cli {
@@ -29,11 +26,6 @@ std::string FindTypesJar() {
   throw std::runtime_error("cannot find the types jar " + jar + ": build the project (cmake --build) or set DREAM_TYPES_JAR");
 }
 
-std::string RequireFile(const std::string& path, const char* what, const char* hint) {
-  if (!fs::exists(path)) throw std::runtime_error(std::string(what) + " " + path + " is missing: " + hint);
-  return path;
-}
-
 struct SpyArgs {
   std::string log_path;             ///< empty: live traffic
   std::string lcm_url;              ///< empty: $LCM_DEFAULT_URL, or a private port for a log
@@ -46,8 +38,8 @@ int RunSpy(const std::string& log_path, const std::string& lcm_url, bool print_c
   // Debian's /usr/bin/lcm-spy passes -Xincgc, which Java 17 refuses; start
   // the Spy class directly with our types on the classpath instead.
   const std::string classpath =
-      RequireFile(DREAM_LCM_JAR, "lcm.jar", "apt-get install liblcm-java") + ":" +
-      RequireFile("/usr/share/java/jchart2d.jar", "jchart2d.jar", "apt-get install libjchart2d-java") + ":" +
+      RequireLcmJar() + ":" +
+      RequireToolFile("/usr/share/java/jchart2d.jar", "jchart2d.jar", "apt-get install libjchart2d-java") + ":" +
       FindTypesJar();
   std::string url = lcm_url;
   if (url.empty() && !log_path.empty()) {
@@ -62,23 +54,13 @@ int RunSpy(const std::string& log_path, const std::string& lcm_url, bool print_c
     player = {"lcm-logplayer", "--lcm-url=" + url, RunLogPath(log_path)};
   }
   if (print_command_only) {
-    const std::vector<std::string>* commands[] = {&spy, &player};
-    for (const std::vector<std::string>* argv : commands) {
-      for (size_t i = 0; i < argv->size(); ++i) std::cout << (i > 0 ? " " : "") << ShellQuoted((*argv)[i]);
-      if (!argv->empty()) std::cout << '\n';
-    }
+    PrintToolCommands({spy, player});
     return kExitOk;
   }
   RequireWindowDisplay("lcm-spy", "without one, `dream spy --print` prints the command to run elsewhere, and "
                                   "`dream log echo RUN CHANNEL` prints a log's messages as text");
-  ProcessGroup children;
-  const pid_t spy_pid = children.Start(spy);
-  if (!player.empty()) {
-    sleep(2);  // let lcm-spy subscribe before the first message is played
-    children.Start(player);
-  }
-  const int code = children.WaitPassingOnStop(spy_pid, StopFlag(), SIGTERM);
-  return code == 0 || StopFlag().load() ? kExitOk : kExitRunFailed;
+  // lcm-spy gets 2 s to subscribe before the first message is played; closing it ends the session.
+  return RunToolsUntilClosed({spy, player}, 0, 2);
 }
 
 void DeclareSpyCommand(CommandLine& line) {

@@ -1,0 +1,45 @@
+#include "lcm_java_tools.h"
+
+#include <unistd.h>
+
+#include <csignal>
+#include <filesystem>
+#include <iostream>
+#include <stdexcept>
+
+#include "commands.h"
+#include "process_group.h"
+#include "shell_quoted.h"
+
+namespace dream::cli {
+
+std::string RequireToolFile(const std::string& path, const char* what, const char* hint) {
+  if (!std::filesystem::exists(path)) throw std::runtime_error(std::string(what) + " " + path + " is missing: " + hint);
+  return path;
+}
+
+std::string RequireLcmJar() { return RequireToolFile(DREAM_LCM_JAR, "lcm.jar", "apt-get install liblcm-java"); }
+
+void PrintToolCommands(const std::vector<std::vector<std::string>>& commands) {
+  for (const std::vector<std::string>& command : commands) {
+    if (!command.empty()) std::cout << ShellCommandLine(command) << '\n';
+  }
+}
+
+int RunToolsUntilClosed(const std::vector<std::vector<std::string>>& commands, size_t wait_for, unsigned pause_s) {
+  ProcessGroup children;
+  pid_t waited = -1;
+  bool started_one = false;
+  for (size_t i = 0; i < commands.size(); ++i) {
+    if (commands[i].empty()) continue;
+    if (started_one && pause_s > 0) sleep(pause_s);
+    const pid_t pid = children.Start(commands[i]);
+    started_one = true;
+    if (i == wait_for) waited = pid;
+  }
+  if (waited < 0) throw std::logic_error("RunToolsUntilClosed: the command to wait for is empty");
+  const int code = children.WaitPassingOnStop(waited, StopFlag(), SIGTERM);
+  return code == 0 || StopFlag().load() ? kExitOk : kExitRunFailed;
+}
+
+}  // namespace dream::cli
