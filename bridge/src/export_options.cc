@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 namespace dream::bridge {
 namespace {
@@ -16,24 +17,49 @@ std::string Field(const char* name, double value, const char* range) {
   return std::string(name) + " = " + std::to_string(value) + " is out of range; allowed: " + range;
 }
 
-// Each strategy and its name on the command line, in the order help lists them.
-constexpr std::pair<Strategy, const char*> kStrategyNames[] = {
-    {Strategy::kTrack, "track"}, {Strategy::kReplay, "replay"}, {Strategy::kController, "controller"}};
+// Each strategy: its name on the command line and in manifests, and what it
+// does in words (upload.txt), in the order help lists them.
+struct StrategyEntry {
+  Strategy strategy;
+  const char* name;
+  const char* description;
+};
+constexpr StrategyEntry kStrategies[] = {
+    {Strategy::kTrack, "track", "recorded commands plus feedback on the pose error"},
+    {Strategy::kReplay, "replay", "recorded commands, open loop"},
+    {Strategy::kController, "controller", "the Python controller runs every step on the lab's poses"},
+};
+
+const StrategyEntry* EntryOf(Strategy strategy) {
+  for (const StrategyEntry& entry : kStrategies) {
+    if (entry.strategy == strategy) return &entry;
+  }
+  return nullptr;
+}
 
 }  // namespace
 
 const char* StrategyName(Strategy strategy) {
-  for (const auto& [named, name] : kStrategyNames) {
-    if (named == strategy) return name;
-  }
-  return "?";
+  const StrategyEntry* entry = EntryOf(strategy);
+  return entry != nullptr ? entry->name : "?";
+}
+
+const char* StrategyDescription(Strategy strategy) {
+  const StrategyEntry* entry = EntryOf(strategy);
+  return entry != nullptr ? entry->description : "?";
+}
+
+std::vector<std::string> StrategyNames() {
+  std::vector<std::string> names;
+  for (const StrategyEntry& entry : kStrategies) names.emplace_back(entry.name);
+  return names;
 }
 
 Strategy ParseStrategy(const std::string& text) {
   std::string allowed;
-  for (const auto& [strategy, name] : kStrategyNames) {
-    if (text == name) return strategy;
-    allowed += (allowed.empty() ? "" : ", ") + std::string(name);
+  for (const StrategyEntry& entry : kStrategies) {
+    if (text == entry.name) return entry.strategy;
+    allowed += (allowed.empty() ? "" : ", ") + std::string(entry.name);
   }
   throw std::invalid_argument("unknown strategy '" + text + "'; allowed: " + allowed);
 }

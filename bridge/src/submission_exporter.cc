@@ -116,18 +116,6 @@ ControllerFiles ReadControllerFiles(const config::RunConfig& config, const std::
   return files;
 }
 
-std::string StrategyText(const ExportOptions& options) {
-  switch (options.strategy) {
-    case Strategy::kTrack:
-      return "track (recorded commands plus feedback on the pose error)";
-    case Strategy::kReplay:
-      return "replay (recorded commands, open loop)";
-    case Strategy::kController:
-      return "controller (the Python controller runs every step on the lab's poses)";
-  }
-  return "?";
-}
-
 /// An export goes into a folder of its own: not a run's (its config.yaml
 /// would be replaced), and an upload/ there must be an earlier export's.
 void CheckExportFolder(const std::string& out_dir) {
@@ -326,7 +314,8 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
           (controller ? "at most " : "") + std::to_string(steps) + " steps + at most " +
           std::to_string(options.settle_max_steps) + " settle steps of " + Seconds(config.world.time_step_s * 1000) +
           " ms; the lab's own start-up drive comes on top)\n";
-  text += "Strategy: " + StrategyText(options) +
+  text += "Strategy: " + std::string(StrategyName(options.strategy)) + " (" +
+          StrategyDescription(options.strategy) + ")" +
           (options.barriers ? ", through the Robotarium's barrier certificates" : "") + "\n";
   if (controller) {
     text += std::string("The run ends after ") + std::to_string(steps) + " steps" +

@@ -412,7 +412,7 @@ void DeclareBridgeCommands(CommandLine& line) {
   export_command->add_option("--strategy", export_args->strategy,
                              "track: recorded commands plus feedback on the pose error; replay: open loop;\n"
                              "controller: the run's Python controller itself, every step on the lab's poses")
-      ->check(CLI::IsMember({"track", "replay", "controller"}))
+      ->check(CLI::IsMember(bridge::StrategyNames()))
       ->capture_default_str();
   export_command->add_flag("--force", export_args->force,
                            "Export although the run is not ready: robots lost at its end (a controller failed or an\n"

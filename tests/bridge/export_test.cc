@@ -53,6 +53,23 @@ std::vector<std::string> Rules(const std::vector<ExportProblem>& problems) {
   return rules;
 }
 
+// One table knows each strategy: its name, how it parses, and its words in upload.txt.
+TEST(ExportOptionsTest, EveryStrategyParsesFromItsNameAndIsDescribed) {
+  EXPECT_THAT(StrategyNames(), ElementsAre("track", "replay", "controller"));
+  for (const std::string& name : StrategyNames()) {
+    const Strategy strategy = ParseStrategy(name);
+    EXPECT_EQ(StrategyName(strategy), name);
+    EXPECT_STRNE(StrategyDescription(strategy), "?");
+  }
+  EXPECT_STREQ(StrategyDescription(Strategy::kReplay), "recorded commands, open loop");
+  try {
+    ParseStrategy("closed");
+    ADD_FAILURE() << "an unknown strategy parsed";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_THAT(e.what(), HasSubstr("unknown strategy 'closed'; allowed: track, replay, controller"));
+  }
+}
+
 TEST(PreValidationTest, CleanRunPasses) {
   EXPECT_TRUE(PreValidate(StillTrack(20, 100), Finished(), sim::WorldParams{}, 240).empty());
 }
@@ -144,6 +161,7 @@ TEST_F(ExportTest, WritesTheSubmissionAndInstructions) {
   EXPECT_THAT(text, HasSubstr("dream_main.py    <- mark this file as MAIN"));
   EXPECT_THAT(text, HasSubstr("Number of robots to declare: 8"));
   EXPECT_THAT(text, HasSubstr("Estimated duration to declare: "));
+  EXPECT_THAT(text, HasSubstr("Strategy: track (recorded commands plus feedback on the pose error)"));
   const SubmissionParams params = SubmissionParams::FromNpy(ReadNpyFile(out + "/upload/dream_params.npy"), "p");
   EXPECT_EQ(params.num_robots, 8);
   EXPECT_EQ(params.steps, summary.steps);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "dream/world/lab_verifier_rules.h"
 
@@ -21,6 +22,10 @@ enum class Strategy {
 /// "track" / "replay" / "controller"; ParseStrategy throws std::invalid_argument otherwise.
 const char* StrategyName(Strategy strategy);
 Strategy ParseStrategy(const std::string& text);
+/// What the strategy does, in words ("recorded commands, open loop").
+const char* StrategyDescription(Strategy strategy);
+/// Every strategy's name, in the order help lists them.
+std::vector<std::string> StrategyNames();
 
 /// The tunable part of an export. Defaults suit the Robotarium: a settle
 /// phase of at most 8 s brings each robot to within 5 mm and ~1 degree of
