@@ -283,9 +283,22 @@ nlohmann::ordered_json CheckControllersOnLabPoses(const sim::OutputFolder& check
 
 int RunCheckSubmission(const CheckSubmissionArgs& args) {
   const bridge::ExportedSubmission exported = bridge::ExportedSubmission::Read(args.export_dir);
-  if (!args.simulator.empty() && !fs::is_directory(args.simulator)) {
-    throw std::runtime_error("--simulator " + args.simulator +
+  // The runner's rule for a simulator checkout, checked here so that a wrong
+  // one is named before an output folder is made (it used to exit 4 after).
+  std::string simulator_dir = args.simulator;
+  std::string simulator_named = "--simulator " + args.simulator;
+  if (const char* env = std::getenv("ROBOTARIUM_PYTHON_SIMULATOR");
+      simulator_dir.empty() && !args.standin && env != nullptr && *env != '\0') {
+    simulator_dir = env;
+    simulator_named = "$ROBOTARIUM_PYTHON_SIMULATOR " + simulator_dir;
+  }
+  if (!simulator_dir.empty() && !fs::is_directory(simulator_dir)) {
+    throw std::runtime_error(simulator_named +
                              ": no such folder; pass a checkout of robotarium_python_simulator, or leave it out");
+  }
+  if (!simulator_dir.empty() && !fs::is_regular_file(fs::path(simulator_dir) / "rps" / "robotarium.py")) {
+    throw std::runtime_error(simulator_named + ": has no rps/robotarium.py, so it is no checkout of "
+                             "robotarium/robotarium_python_simulator (git clone it, or leave it out)");
   }
   const std::string run_dir = args.run_dir.empty() ? exported.source_run : args.run_dir;
   std::error_code same_error;

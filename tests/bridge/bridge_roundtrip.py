@@ -46,9 +46,10 @@ def check(condition, message):
         raise Failure(message)
 
 
-def run(argv, expect=0, cwd=None, timeout=600):
+def run(argv, expect=0, cwd=None, timeout=600, env=None):
     started = time.monotonic()
-    result = subprocess.run([str(a) for a in argv], capture_output=True, text=True, cwd=cwd, timeout=timeout)
+    result = subprocess.run([str(a) for a in argv], capture_output=True, text=True, cwd=cwd, timeout=timeout,
+                            env=env)
     output = result.stdout + result.stderr
     if expect is not None and result.returncode != expect:
         raise Failure("%s exited %d (expected %d):\n%s" % (" ".join(map(str, argv)), result.returncode, expect,
@@ -224,6 +225,19 @@ def bad_input(loop):
     output, _ = run([dream, "check-submission", export, "--simulator", loop.path("absent"), "--out",
                      loop.path("absent_check")], expect=1)
     check("--simulator %s: no such folder" % loop.path("absent") in output, "check --simulator absent: " + output)
+    # A folder that is no simulator checkout is named before anything is made (it exited 4 after).
+    not_simulator = loop.path("not_a_simulator")
+    os.makedirs(not_simulator, exist_ok=True)
+    output, _ = run([dream, "check-submission", export, "--simulator", not_simulator, "--out",
+                     loop.path("wrong_simulator_check")], expect=1)
+    check("--simulator %s: has no rps/robotarium.py" % not_simulator in output
+          and not os.path.exists(loop.path("wrong_simulator_check")),
+          "check --simulator with a folder that is no checkout: " + output)
+    output, _ = run([dream, "check-submission", export, "--out", loop.path("wrong_simulator_check")], expect=1,
+                    env=dict(os.environ, ROBOTARIUM_PYTHON_SIMULATOR=not_simulator))
+    check("$ROBOTARIUM_PYTHON_SIMULATOR %s: has no rps/robotarium.py" % not_simulator in output
+          and not os.path.exists(loop.path("wrong_simulator_check")),
+          "check with $ROBOTARIUM_PYTHON_SIMULATOR naming a folder that is no checkout: " + output)
     with open(os.path.join(sim_dir, "run.lcmlog"), "rb") as f:
         check(f.read() == simulated_log, "the simulated run's log changed")
 
