@@ -15,12 +15,7 @@ void KeepControllerModule(const config::RunConfig& config, const sim::OutputFold
   // An absolute path stays valid as written; a relative one never leaves the
   // config's folder (PythonControllerBuilder refuses that).
   if (written.is_absolute()) return;
-  std::filesystem::path folder;
-  for (const auto& part : written.parent_path()) {
-    folder /= part;
-    out.MakeSubfolder(folder.string());
-  }
-  out.WriteFile(written.string(), sim::ReadFileText(controller.module_path()));
+  out.WriteFileInSubfolders(written.string(), sim::ReadFileText(controller.module_path()));
 }
 
 }  // namespace dream::bridge

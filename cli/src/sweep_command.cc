@@ -230,10 +230,7 @@ int RunSweep(const SweepArgs& args) {
     }
     sim::WriteFileAtomically((run_dir / "config.yaml").string(), config_texts[index]);
     if (const std::optional<ModuleCopy>& module = module_copies[index]) {
-      const sim::OutputFolder folder(run_dir.string());
-      fs::path subfolder;
-      for (const auto& part : fs::path(module->relative_path).parent_path()) folder.MakeSubfolder((subfolder /= part).string());
-      folder.WriteFile(module->relative_path, module->text);
+      sim::OutputFolder(run_dir.string()).WriteFileInSubfolders(module->relative_path, module->text);
     }
     return ParallelRunner::Job{{self, "run", (run_dir / "config.yaml").string(), "--out", run_dir.string()},
                                (run_dir / "output.txt").string()};

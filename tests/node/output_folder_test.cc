@@ -95,5 +95,27 @@ TEST_F(OutputFolderTest, AFileWhereTheFolderShouldBeIsReported) {
               HasSubstr("its parent " + Path("taken") + " is a file, not a folder"));
 }
 
+TEST_F(OutputFolderTest, AFileInSubfoldersGetsItsFoldersMadeAndStaysInside) {
+  const OutputFolder out(Path("run"));
+  out.WriteFileInSubfolders("controllers/python/orbit.py", "print('orbit')\n");
+  std::ifstream in(out.PathOf("controllers/python/orbit.py"));
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), "print('orbit')\n");
+  out.WriteFileInSubfolders("controllers/python/orbit.py", "print('again')\n");  // the folders exist: fine
+  EXPECT_THAT(MessageOf([&] { out.WriteFileInSubfolders("../outside/orbit.py", "x"); }), HasSubstr("would escape"));
+  EXPECT_FALSE(fs::exists(base_ / "outside"));
+}
+
+// dream export into a folder whose `upload` is a file said only "File exists".
+TEST_F(OutputFolderTest, AFileWhereASubfolderShouldBeIsNamedAsInTheWay) {
+  const OutputFolder out(Path("export"));
+  std::ofstream(out.PathOf("upload")) << "x";
+  EXPECT_THAT(MessageOf([&] { out.MakeSubfolder("upload"); }),
+              HasSubstr("cannot create the folder " + out.PathOf("upload") + ": a file of that name is in the way"));
+  EXPECT_EQ(out.MakeSubfolder("lab_files"), out.PathOf("lab_files"));
+  EXPECT_EQ(out.MakeSubfolder("lab_files"), out.PathOf("lab_files"));  // an existing folder is fine
+}
+
 }  // namespace
 }  // namespace dream::sim

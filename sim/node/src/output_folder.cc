@@ -81,7 +81,10 @@ std::string OutputFolder::MakeSubfolder(const std::string& name) const {
   std::error_code error;
   fs::create_directory(path, error);
   if (error || !fs::is_directory(path)) {
-    throw std::runtime_error("cannot create the folder " + path + (error ? ": " + error.message() : std::string()));
+    const bool in_the_way = fs::exists(fs::symlink_status(path));
+    throw std::runtime_error("cannot create the folder " + path + ": " +
+                             (in_the_way ? "a file of that name is in the way; move it or choose another output folder"
+                                         : error ? error.message() : std::string("it is no folder")));
   }
   PathOf(name);  // a link created meanwhile must not lead out either
   return path;
@@ -98,6 +101,12 @@ void OutputFolder::RemoveFiles(const std::string& why) const {
 
 void OutputFolder::WriteFile(const std::string& name, const std::string& bytes) const {
   WriteFileAtomically(PathOf(name), bytes);
+}
+
+void OutputFolder::WriteFileInSubfolders(const std::string& name, const std::string& bytes) const {
+  fs::path folder;
+  for (const auto& part : fs::path(name).parent_path()) MakeSubfolder((folder /= part).string());
+  WriteFile(name, bytes);
 }
 
 }  // namespace dream::sim

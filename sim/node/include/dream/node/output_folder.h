@@ -39,6 +39,9 @@ class OutputFolder {
 
   /// Writes `bytes` to `name` atomically. @throws std::runtime_error.
   void WriteFile(const std::string& name, const std::string& bytes) const;
+  /// The same for a `name` with folders in it (a controller module's
+  /// `controllers/orbit.py`): each folder on its way is made first.
+  void WriteFileInSubfolders(const std::string& name, const std::string& bytes) const;
 
   const std::string& dir() const { return dir_; }
 
