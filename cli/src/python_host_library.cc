@@ -2,14 +2,10 @@
 
 #include <dlfcn.h>
 
-#include <cmath>
-#include <nlohmann/json.hpp>
-#include <optional>
 #include <stdexcept>
 
 #include "commands.h"
 #include "data_files.h"
-#include "dream/config/config_node.h"
 #include "dream/config/sim_node_options.h"
 
 namespace dream::cli {
@@ -42,38 +38,12 @@ const PythonHostLibrary& PythonHostLibrary::Get() {
   return library;
 }
 
-void PythonHostLibrary::SetAgentTimeout(double agent_timeout_s) const {
-  watch_(&StopFlag(), agent_timeout_s);
-  agent_timeout_set_ = true;
-}
-
-namespace {
-
-// world.agent_timeout_s of the config file `spec_json` names, when it has a
-// valid one: what the world of a run from that file waits for an agent.
-std::optional<double> AgentTimeoutOfConfigFile(const std::string& spec_json) {
-  try {
-    const nlohmann::json spec = nlohmann::json::parse(spec_json);
-    const config::ConfigNode root = config::ConfigNode::LoadFile(spec.at("config_file").get<std::string>());
-    const config::ConfigNode world = root.Optional("world");
-    if (!world.IsDefined() || !world.IsMap() || !world.Has("agent_timeout_s")) return std::nullopt;
-    const double seconds = world.Required("agent_timeout_s").AsDouble();
-    if (std::isfinite(seconds) && seconds > 0) return seconds;
-  } catch (const std::exception&) {
-    // The run checked its config already; a file that changed since keeps the default.
-  }
-  return std::nullopt;
-}
-
-}  // namespace
+void PythonHostLibrary::SetAgentTimeout(double agent_timeout_s) const { watch_(&StopFlag(), agent_timeout_s); }
 
 std::unique_ptr<agents::PythonAgentHost> PythonHostLibrary::Create(lcm::LcmBus& bus, const std::string& spec_json,
                                                                    const std::vector<int>& robot_ids,
                                                                    int64_t agent_id,
                                                                    const agents::PythonAgentHost::Paths& paths) const {
-  if (!agent_timeout_set_) {
-    watch_(&StopFlag(), AgentTimeoutOfConfigFile(spec_json).value_or(sim::SimNodeOptions{}.agent_timeout_s));
-  }
   return create_(bus, spec_json, robot_ids, agent_id, paths);
 }
 

@@ -19,11 +19,11 @@ class PythonHostLibrary {
 
   /// The world's agent_timeout_s, for the module's watchdog
   /// (agents::PythonHostWatchFunction): a Python controller's step still
-  /// running after 0.8 x this is stopped as failed. A command that knows its
-  /// run's config calls this before Create; otherwise Create reads
-  /// world.agent_timeout_s from the config file the spec names (without
-  /// --set overrides), else takes its default (sim::SimNodeOptions). Ctrl-C
-  /// and SIGTERM (StopFlag) always interrupt a running controller.
+  /// running after 0.8 x this is stopped as failed. Every command that hosts
+  /// agents calls this with its run's value (--set included) before Create
+  /// when the config sets one; until then the watchdog uses the default
+  /// (sim::SimNodeOptions). Ctrl-C and SIGTERM (StopFlag) always interrupt a
+  /// running controller.
   void SetAgentTimeout(double agent_timeout_s) const;
 
   void Check(const std::string& spec_json, const agents::PythonAgentHost::Paths& paths) const {
@@ -39,7 +39,6 @@ class PythonHostLibrary {
       : watch_(watch), check_(check), create_(create) {}
 
   agents::PythonHostWatchFunction watch_;
-  mutable bool agent_timeout_set_ = false;
   agents::PythonHostCheckFunction check_;
   agents::PythonHostCreateFunction create_;
 };
