@@ -67,6 +67,22 @@ def wait_for_note(path, predicate, timeout):
     return False
 
 
+def run_tools(ctx, name, argv, env, **tool_env):
+    """Runs `argv` with the stand-ins living as `tool_env` says: (exit code, their notes, the notes file)."""
+    notes_path = ctx.path(name + "_notes")
+    ctx.start(name, argv, env=dict(env, TOOLS_NOTES=notes_path, **tool_env), own_group=True)
+    code = ctx.wait(name, 30)
+    return code, notes(notes_path), notes_path
+
+
+def start_times(lines, what, player_marker):
+    """When the spy and the player (the tool whose arguments hold `player_marker`) started."""
+    spy_start = started(lines, "lcm.spy.Spy")
+    player_start = started(lines, player_marker)
+    check(spy_start is not None and player_start is not None, f"{what} did not start both tools: {lines}")
+    return spy_start, player_start
+
+
 def test(ctx):
     args = argument_parser().parse_args()
     run = ctx.path("run")
@@ -80,40 +96,26 @@ def test(ctx):
                LCM_DEFAULT_URL="udpm://239.255.76.67:7671?ttl=0", PLAYER_SECONDS="60")
 
     # dream spy --log: the spy, then the player 2 s later; the spy's window closing ends both.
-    spy_notes = ctx.path("spy_notes")
-    ctx.start("spy", [args.dream, "spy", "--log", run],
-              env=dict(env, TOOLS_NOTES=spy_notes, SPY_SECONDS="4", SPY_EXIT="0"), own_group=True)
-    code = ctx.wait("spy", 30)
-    lines = notes(spy_notes)
+    code, lines, spy_notes = run_tools(ctx, "spy", [args.dream, "spy", "--log", run], env,
+                                       SPY_SECONDS="4", SPY_EXIT="0")
     check(code == 0, f"dream spy --log exited {code} when lcm-spy closed normally (expected 0): "
                      f"{ctx.output('spy').strip()[-300:]} notes {lines}")
-    spy_start = started(lines, "lcm.spy.Spy")
-    player_start = started(lines, "lcm-logplayer")
-    check(spy_start is not None and player_start is not None, f"dream spy --log did not start both tools: {lines}")
+    spy_start, player_start = start_times(lines, "dream spy --log", "lcm-logplayer")
     check(player_start - spy_start >= 1.8,
           f"the log player started {player_start - spy_start:.2f} s after lcm-spy; it must wait ~2 s for the spy")
     check(wait_for_note(spy_notes, lambda ls: ["term", "lcm-logplayer"] in ls, 5),
           f"the log player was not ended when lcm-spy closed: {notes(spy_notes)}")
 
     # A spy that fails fails the command.
-    failed_notes = ctx.path("failed_notes")
-    ctx.start("failed_spy", [args.dream, "spy", "--log", run],
-              env=dict(env, TOOLS_NOTES=failed_notes, SPY_SECONDS="3", SPY_EXIT="3"), own_group=True)
-    code = ctx.wait("failed_spy", 30)
+    code, _, _ = run_tools(ctx, "failed_spy", [args.dream, "spy", "--log", run], env, SPY_SECONDS="3", SPY_EXIT="3")
     check(code == 4, f"dream spy exited {code} when lcm-spy failed with 3 (expected 4)")
 
     # dream replay --spy: dream spy on the same URL first, then the player; the player closing ends both.
-    replay_notes = ctx.path("replay_notes")
-    ctx.start("replay", [args.dream, "replay", run, "--spy"],
-              env=dict(env, TOOLS_NOTES=replay_notes, SPY_SECONDS="60", SPY_EXIT="0", PLAYER_SECONDS="4"),
-              own_group=True)
-    code = ctx.wait("replay", 30)
-    lines = notes(replay_notes)
+    code, lines, replay_notes = run_tools(ctx, "replay", [args.dream, "replay", run, "--spy"], env,
+                                          SPY_SECONDS="60", SPY_EXIT="0", PLAYER_SECONDS="4")
     check(code == 0, f"dream replay --spy exited {code} when the player closed normally (expected 0): "
                      f"{ctx.output('replay').strip()[-300:]} notes {lines}")
-    spy_start = started(lines, "lcm.spy.Spy")
-    player_start = started(lines, "lcm.logging.LogPlayer")
-    check(spy_start is not None and player_start is not None, f"dream replay --spy did not start both tools: {lines}")
+    spy_start, player_start = start_times(lines, "dream replay --spy", "lcm.logging.LogPlayer")
     check(player_start - spy_start >= 0.5,
           f"dream replay --spy started the player {player_start - spy_start:.2f} s after lcm-spy: the spy "
           f"misses the log's start (notes {lines})")
