@@ -7,7 +7,8 @@ namespace dream::bridge {
 void DifferenceStats::Add(double difference, int64_t step) {
   const double size = std::abs(difference);
   sum_of_squares_ += size * size;
-  if (count_ == 0 || size > max_) {
+  // A NaN never becomes the largest (the RMS shows it); of equal sizes the first stays.
+  if (size > max_ || (max_step_ < 0 && size == max_)) {
     max_ = size;
     max_step_ = step;
   }
@@ -17,7 +18,7 @@ void DifferenceStats::Add(double difference, int64_t step) {
 void DifferenceStats::Merge(const DifferenceStats& other) {
   if (other.count_ == 0) return;
   sum_of_squares_ += other.sum_of_squares_;
-  if (count_ == 0 || other.max_ > max_) {
+  if (other.max_ > max_ || (max_step_ < 0 && other.max_step_ >= 0 && other.max_ == max_)) {
     max_ = other.max_;
     max_step_ = other.max_step_;
   }

@@ -285,7 +285,8 @@ int RunCheckSubmission(const CheckSubmissionArgs& args) {
   const bridge::ExportedSubmission exported = bridge::ExportedSubmission::Read(args.export_dir);
   // The runner's rule for a simulator checkout, checked here so that a wrong
   // one is named before an output folder is made (it used to exit 4 after).
-  std::string simulator_dir = args.simulator;
+  // With --standin the runner looks at neither.
+  std::string simulator_dir = args.standin ? std::string() : args.simulator;
   std::string simulator_named = "--simulator " + args.simulator;
   if (const char* env = std::getenv("ROBOTARIUM_PYTHON_SIMULATOR");
       simulator_dir.empty() && !args.standin && env != nullptr && *env != '\0') {

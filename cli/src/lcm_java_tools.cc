@@ -3,11 +3,13 @@
 #include <unistd.h>
 
 #include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
 
 #include "commands.h"
+#include "data_files.h"
 #include "process_group.h"
 #include "shell_quoted.h"
 
@@ -19,6 +21,17 @@ std::string RequireToolFile(const std::string& path, const char* what, const cha
 }
 
 std::string RequireLcmJar() { return RequireToolFile(DREAM_LCM_JAR, "lcm.jar", "apt-get install liblcm-java"); }
+
+std::string SpyClasspath() {
+  std::string types_jar = DataFiles::TypesJar();
+  if (const char* env = std::getenv("DREAM_TYPES_JAR"); env != nullptr && std::filesystem::exists(env)) {
+    types_jar = env;
+  }
+  return RequireLcmJar() + ":" +
+         RequireToolFile("/usr/share/java/jchart2d.jar", "jchart2d.jar", "apt-get install libjchart2d-java") + ":" +
+         RequireToolFile(types_jar, "the types jar",
+                         "build the project (cmake --build) or set DREAM_TYPES_JAR to dream_lcmtypes.jar");
+}
 
 void PrintToolCommands(const std::vector<std::vector<std::string>>& commands) {
   for (const std::vector<std::string>& command : commands) {
@@ -32,14 +45,17 @@ int RunToolsUntilClosed(const std::vector<std::vector<std::string>>& commands, s
   bool started_one = false;
   for (size_t i = 0; i < commands.size(); ++i) {
     if (commands[i].empty()) continue;
-    if (started_one && pause_s > 0) sleep(pause_s);
+    if (started_one && pause_s > 0) sleep(pause_s);  // Ctrl-C cuts it short
+    if (StopFlag().load()) break;
     const pid_t pid = children.Start(commands[i]);
     started_one = true;
     if (i == wait_for) waited = pid;
   }
+  if (StopFlag().load()) return kExitInterrupted;  // the group ends what started
   if (waited < 0) throw std::logic_error("RunToolsUntilClosed: the command to wait for is empty");
   const int code = children.WaitPassingOnStop(waited, StopFlag(), SIGTERM);
-  return code == 0 || StopFlag().load() ? kExitOk : kExitRunFailed;
+  if (StopFlag().load()) return kExitInterrupted;
+  return code == 0 ? kExitOk : kExitRunFailed;
 }
 
 }  // namespace dream::cli

@@ -50,9 +50,12 @@ int RunReplay(const ReplayArgs& args) {
   if (args.paused) player.push_back("--paused");
   player.push_back(log);
   std::vector<std::string> spy;
-  if (args.with_spy) spy = {SelfExecutable(), "spy", "--lcm-url=" + url};
+  if (args.with_spy) {
+    SpyClasspath();  // what the spy needs, named now: a spy that cannot start would leave the replay unwatched
+    spy = {SelfExecutable(), "spy", "--lcm-url=" + url};
+  }
   if (args.print_command_only) {
-    PrintToolCommands({player, spy});
+    PrintToolCommands({spy, player});  // in the order to start them
     return kExitOk;
   }
   RequireWindowDisplay("LCM's log player",

@@ -1,13 +1,10 @@
 #include <spdlog/spdlog.h>
 
-
-#include <filesystem>
 #include <iostream>
 #include <memory>
 
 #include "command_line.h"
 #include "commands.h"
-#include "data_files.h"
 #include "dream/lcm/lcm_url.h"
 #include "lcm_java_tools.h"
 #include "shared_options.h"
@@ -15,16 +12,6 @@
 
 namespace dream::cli {
 namespace {
-
-namespace fs = std::filesystem;
-
-// The types jar: $DREAM_TYPES_JAR, else the build tree's or the installed one.
-std::string FindTypesJar() {
-  if (const char* env = std::getenv("DREAM_TYPES_JAR"); env != nullptr && fs::exists(env)) return env;
-  const std::string jar = DataFiles::TypesJar();
-  if (fs::exists(jar)) return jar;
-  throw std::runtime_error("cannot find the types jar " + jar + ": build the project (cmake --build) or set DREAM_TYPES_JAR");
-}
 
 struct SpyArgs {
   std::string log_path;             ///< empty: live traffic
@@ -37,10 +24,7 @@ struct SpyArgs {
 int RunSpy(const std::string& log_path, const std::string& lcm_url, bool print_command_only) {
   // Debian's /usr/bin/lcm-spy passes -Xincgc, which Java 17 refuses; start
   // the Spy class directly with our types on the classpath instead.
-  const std::string classpath =
-      RequireLcmJar() + ":" +
-      RequireToolFile("/usr/share/java/jchart2d.jar", "jchart2d.jar", "apt-get install libjchart2d-java") + ":" +
-      FindTypesJar();
+  const std::string classpath = SpyClasspath();
   std::string url = lcm_url;
   if (url.empty() && !log_path.empty()) {
     // A log is replayed on its own port, loopback only (ttl=0), so it does not

@@ -238,6 +238,9 @@ def bad_input(loop):
     check("$ROBOTARIUM_PYTHON_SIMULATOR %s: has no rps/robotarium.py" % not_simulator in output
           and not os.path.exists(loop.path("wrong_simulator_check")),
           "check with $ROBOTARIUM_PYTHON_SIMULATOR naming a folder that is no checkout: " + output)
+    # --standin uses neither, as the runner does.
+    run([dream, "check-submission", export, "--simulator", not_simulator, "--standin", "--out",
+         loop.path("standin_anyway_check"), "-q"])
     with open(os.path.join(sim_dir, "run.lcmlog"), "rb") as f:
         check(f.read() == simulated_log, "the simulated run's log changed")
 

@@ -37,6 +37,16 @@ TEST(DifferenceStatsTest, AllZeroDifferencesNameTheFirstStep) {
   EXPECT_EQ(stats.Rms(), 0.0);
 }
 
+TEST(DifferenceStatsTest, ANanIsNeverTheLargestButMakesTheRmsNan) {
+  DifferenceStats stats;
+  stats.Add(std::nan(""), 3);
+  EXPECT_EQ(stats.max_step(), -1);
+  stats.Add(0.2, 4);
+  EXPECT_EQ(stats.max(), 0.2);
+  EXPECT_EQ(stats.max_step(), 4);
+  EXPECT_TRUE(std::isnan(stats.Rms()));
+}
+
 TEST(DifferenceStatsTest, MergingIsTakingEverySampleAgain) {
   DifferenceStats first;
   first.Add(0.2, 0);

@@ -6,7 +6,8 @@ A window cannot open here, so stand-ins for `java` and `lcm-logplayer` on PATH n
 with which arguments, and how they end. Checks, with DISPLAY set to a display that is never used:
 - `dream spy --log RUN`: lcm-spy (java lcm.spy.Spy) first, the log player about 2 s later (so the
   spy has subscribed); closing the spy ends the command with exit 0 and ends the player; a spy that
-  fails (exit 3) makes the command exit 4.
+  fails (exit 3) makes the command exit 4; Ctrl-C during the pause exits 130, ends the spy and starts
+  no player.
 - `dream replay RUN --spy`: `dream spy` on the same URL first, then LCM's log player (java
   lcm.logging.LogPlayer) once the spy has had time to start (they once started together and the
   spy missed the log's start); closing the player ends the command with exit 0 and ends the spy.
@@ -15,6 +16,7 @@ Usage: lcm_tools_launch.py --dream BIN --source DIR
 """
 
 import os
+import signal
 import stat
 import time
 
@@ -109,6 +111,20 @@ def test(ctx):
     # A spy that fails fails the command.
     code, _, _ = run_tools(ctx, "failed_spy", [args.dream, "spy", "--log", run], env, SPY_SECONDS="3", SPY_EXIT="3")
     check(code == 4, f"dream spy exited {code} when lcm-spy failed with 3 (expected 4)")
+
+    # Ctrl-C while the spy waits to subscribe: exit 130, and the player never starts.
+    interrupted_notes = ctx.path("interrupted_notes")
+    dream = ctx.start("interrupted", [args.dream, "spy", "--log", run],
+                      env=dict(env, TOOLS_NOTES=interrupted_notes, SPY_SECONDS="60", SPY_EXIT="0"), own_group=True)
+    check(wait_for_note(interrupted_notes, lambda ls: started(ls, "lcm.spy.Spy") is not None, 10),
+          f"dream spy did not start lcm-spy: {ctx.output('interrupted')[-300:]}")
+    dream.send_signal(signal.SIGINT)
+    code = ctx.wait("interrupted", 30)
+    time.sleep(2.5)  # past the pause: a player started after Ctrl-C would have noted itself by now
+    lines = notes(interrupted_notes)
+    check(code == 130, f"dream spy exited {code} on Ctrl-C (expected 130, interrupted)")
+    check(started(lines, "lcm-logplayer") is None, f"the log player started after Ctrl-C: {lines}")
+    check(["term", "java"] in lines, f"lcm-spy was not ended by Ctrl-C: {lines}")
 
     # dream replay --spy: dream spy on the same URL first, then the player; the player closing ends both.
     code, lines, replay_notes = run_tools(ctx, "replay", [args.dream, "replay", run, "--spy"], env,

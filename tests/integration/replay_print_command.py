@@ -72,12 +72,14 @@ def test(ctx):
 
     other = "udpm://239.255.76.67:7672?ttl=0"
     lines = printed(args.dream, [log, "--paused", "--spy", "--lcm-url", other], env)
-    check(len(lines) == 2, f"--spy: expected the player and a spy line, got {lines}")
-    player_url = lines[0][7]
-    check(lines[0][6] == "--lcm-url" and player_url.startswith(other) and lines[0][8:] == ["--paused", log],
-          f"--paused/--lcm-url not passed on: {lines[0]}")
-    check(lines[1][1:] == ["spy", "--lcm-url=" + player_url] and os.path.basename(lines[1][0]) == "dream",
-          f"--spy: expected `dream spy --lcm-url={player_url}`, got {lines[1]}")
+    # In the order to start them: the spy first (it must subscribe before the player plays).
+    check(len(lines) == 2, f"--spy: expected a spy and the player line, got {lines}")
+    spy_line, player_line = lines
+    player_url = player_line[7]
+    check(player_line[6] == "--lcm-url" and player_url.startswith(other) and player_line[8:] == ["--paused", log],
+          f"--paused/--lcm-url not passed on: {player_line}")
+    check(spy_line[1:] == ["spy", "--lcm-url=" + player_url] and os.path.basename(spy_line[0]) == "dream",
+          f"--spy: expected `dream spy --lcm-url={player_url}` first, got {spy_line}")
 
     code, text = ctx.run([args.dream, "replay", "--help"])
     check(code == 0 and "seek" in text and "--print-command" in text, f"dream replay --help: {code} {text[-400:]}")

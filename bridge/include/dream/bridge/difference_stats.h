@@ -19,7 +19,7 @@ class DifferenceStats {
   /// 0 when nothing was taken.
   double Rms() const;
   double max() const { return max_; }
-  /// The step of max(); -1 when nothing was taken.
+  /// The step of max(); -1 when nothing was taken (or only NaN).
   int64_t max_step() const { return max_step_; }
 
  private:
