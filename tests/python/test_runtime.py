@@ -8,6 +8,7 @@ Exit code 77 (skipped) when numpy is missing.
 import json
 import math
 import os
+import re
 import sys
 import tempfile
 import textwrap
@@ -25,9 +26,10 @@ sys.path.insert(0, os.path.join(SOURCE_DIR, "python"))
 
 from dream import (ActuatorLimits, ConfigError, ControllerFault, ControllerSpec, GraphRadio, Mailbox,  # noqa: E402
                    MovementSensor, ObstacleSensor, ObstacleView, OdometrySensor, RadioMessage, RangeRadio,
-                   Robot, RobotAgent, RobotParams, RoleRadio, SingleIntegratorToUnicycle, Timer, WorldSnapshot,
-                   check, dxi_to_dxu, mix_seed, pack_floats, unpack_floats)
+                   Robot, RobotAgent, RobotLimits, RobotParams, RoleRadio, SingleIntegratorToUnicycle, Timer,
+                   WorldSnapshot, check, dxi_to_dxu, mix_seed, pack_floats, unpack_floats)
 import dream  # noqa: E402
+from dream.hrvo import HrvoParams  # noqa: E402
 from dream.robot import did_you_mean  # noqa: E402
 
 STEP_S = 0.033
@@ -244,6 +246,45 @@ class MotionTest(unittest.TestCase):
         self.assertEqual((v, w), (0.0, math.pi))
         with self.assertRaisesRegex(ValueError, "linear_gain must be positive"):
             SingleIntegratorToUnicycle(linear_gain=0.0)
+
+
+class RobotariumNumbersTest(unittest.TestCase):
+    """The Python runtime runs on the lab without the C++ package, so it writes the Robotarium's
+    numbers again; they must stay those of sim/robotarium's RobotariumConstants (the C++ agents'
+    one source), read here from the header itself."""
+
+    @classmethod
+    def setUpClass(cls):
+        header = os.path.join(SOURCE_DIR, "sim", "robotarium", "include", "dream", "robotarium",
+                              "robotarium_constants.h")
+        with open(header, encoding="utf-8") as f:
+            text = f.read()
+        cls.k = {name: float(value) for name, value in
+                 re.findall(r"static constexpr double (k\w+) = (-?[0-9.]+);", text)}
+        for name in ("kMaxLinearVelocityMps", "kWheelRadiusMeters", "kBaseLengthMeters", "kRobotDiameterMeters",
+                     "kArenaXMinMeters", "kArenaXMaxMeters", "kArenaYMinMeters", "kArenaYMaxMeters",
+                     "kTimeStepSeconds"):
+            if name not in cls.k:
+                raise AssertionError(f"{header} has no literal {name} any more: update this test")
+
+    def test_robot_limits_are_the_robotariums(self):
+        k = self.k
+        limits = RobotLimits()
+        self.assertEqual(limits.max_linear_speed_mps, k["kMaxLinearVelocityMps"])
+        self.assertEqual(limits.wheel_radius_m, k["kWheelRadiusMeters"])
+        self.assertEqual(limits.base_length_m, k["kBaseLengthMeters"])
+        # The header's own expressions for the derived limits (the official simulator's).
+        self.assertEqual(limits.max_wheel_speed_radps, k["kMaxLinearVelocityMps"] / k["kWheelRadiusMeters"])
+        self.assertEqual(limits.max_angular_speed_radps,
+                         2.0 * (k["kWheelRadiusMeters"] / k["kRobotDiameterMeters"]) *
+                         (k["kMaxLinearVelocityMps"] / k["kWheelRadiusMeters"]))
+
+    def test_hrvo_arena_is_the_robotariums(self):
+        k = self.k
+        params = HrvoParams()
+        self.assertEqual((params.x_min_m, params.x_max_m, params.y_min_m, params.y_max_m),
+                         (k["kArenaXMinMeters"], k["kArenaXMaxMeters"], k["kArenaYMinMeters"],
+                          k["kArenaYMaxMeters"]))
 
 
 class RobotAgentTest(unittest.TestCase):
