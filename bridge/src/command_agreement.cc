@@ -51,17 +51,15 @@ int CommandAgreement::WorstRobot() const {
   return worst;
 }
 
-double CommandAgreement::MaxVDifference() const {
-  double largest = 0.0;
-  for (const RobotAgreement& robot : robots_) largest = std::max(largest, robot.v_mps.max());
-  return largest;
+DifferenceStats CommandAgreement::OverRobots(DifferenceStats RobotAgreement::*figure) const {
+  DifferenceStats all;
+  for (const RobotAgreement& robot : robots_) all.Merge(robot.*figure);
+  return all;
 }
 
-double CommandAgreement::MaxWDifference() const {
-  double largest = 0.0;
-  for (const RobotAgreement& robot : robots_) largest = std::max(largest, robot.w_radps.max());
-  return largest;
-}
+double CommandAgreement::MaxVDifference() const { return OverRobots(&RobotAgreement::v_mps).max(); }
+
+double CommandAgreement::MaxWDifference() const { return OverRobots(&RobotAgreement::w_radps).max(); }
 
 nlohmann::ordered_json CommandAgreement::Json() const {
   nlohmann::ordered_json robots = nlohmann::ordered_json::array();

@@ -52,6 +52,9 @@ class CommandAgreement {
   nlohmann::ordered_json Json() const;
 
  private:
+  /// One figure (v or w) of every robot, as one run's.
+  DifferenceStats OverRobots(DifferenceStats RobotAgreement::*figure) const;
+
   std::vector<RobotAgreement> robots_;
   int64_t steps_ = 0;
 };
