@@ -18,4 +18,11 @@ void KeepControllerModule(const config::RunConfig& config, const sim::OutputFold
   out.WriteFileInSubfolders(written.string(), sim::ReadFileText(controller.module_path()));
 }
 
+void KeepRealismFile(const config::RunConfig& config, const sim::OutputFolder& out) {
+  if (config.realism_file_as_written.empty()) return;
+  const std::filesystem::path written = std::filesystem::path(config.realism_file_as_written).lexically_normal();
+  if (written.is_absolute()) return;
+  out.WriteFileInSubfolders(written.string(), sim::ReadFileText(config.realism_file));
+}
+
 }  // namespace dream::bridge

@@ -421,6 +421,11 @@ bool IsMat73(const std::string& bytes) { return HasMatHeader(bytes, 0x02); }
 }  // namespace
 
 NpyArray ReadMatMatrix(const std::string& path, const std::string& variable, int64_t max_values) {
+  return ReadMatArray(path, variable, max_values, 2);
+}
+
+NpyArray ReadMatArray(const std::string& path, const std::string& variable, int64_t max_values, int max_rank) {
+  max_rank = std::clamp(max_rank, 2, 3);
   InstallMatioLog();
   last_matio_message.clear();
   auto fail = [&path](const std::string& problem) { throw std::runtime_error(path + ": " + problem + MatioDetail()); };
@@ -448,18 +453,23 @@ NpyArray ReadMatMatrix(const std::string& path, const std::string& variable, int
   std::unique_ptr<matvar_t, VarFreer> var(Matio::Get().VarReadInfo(mat.get(), variable.c_str()));
   if (!var && !last_matio_message.empty()) fail("cannot read variable '" + variable + "' (damaged or cut short?)");
   if (!var) fail("has no variable '" + variable + "'; save the result array under that name");
-  if (var->rank != 2 || var->isComplex || var->class_type != MAT_C_DOUBLE || var->isLogical) {
-    fail("variable '" + variable + "' is not a real 2-D double matrix (rank " + std::to_string(var->rank) +
+  if (var->rank < 2 || var->rank > max_rank || var->isComplex || var->class_type != MAT_C_DOUBLE || var->isLogical) {
+    fail("variable '" + variable + "' is not a real " + (max_rank == 2 ? std::string("2-D") : "2-D to " + std::to_string(max_rank) + "-D") +
+         " double array (rank " + std::to_string(var->rank) +
          ", class " + std::to_string(static_cast<int>(var->class_type)) + (var->isComplex ? ", complex" : "") +
          (var->isLogical ? ", logical" : "") + ")");
   }
   const size_t rows = var->dims[0];
   const size_t columns = var->dims[1];
-  if (rows > (size_t{1} << 28) || columns > (size_t{1} << 16) || rows * columns > (size_t{1} << 28)) {
-    fail("variable '" + variable + "' is absurdly large: " + std::to_string(rows) + " x " + std::to_string(columns));
+  const size_t pages = var->rank == 3 ? var->dims[2] : 1;
+  if (rows > (size_t{1} << 28) || columns > (size_t{1} << 16) || pages > (size_t{1} << 28) ||
+      rows * columns > (size_t{1} << 28) || rows * columns * pages > (size_t{1} << 28)) {
+    fail("variable '" + variable + "' is absurdly large: " + std::to_string(rows) + " x " + std::to_string(columns) +
+         (var->rank == 3 ? " x " + std::to_string(pages) : std::string()));
   }
-  const size_t count = rows * columns;
-  const std::string declared = "variable '" + variable + "' is " + std::to_string(rows) + " x " + std::to_string(columns);
+  const size_t count = rows * columns * pages;
+  const std::string declared = "variable '" + variable + "' is " + std::to_string(rows) + " x " + std::to_string(columns) +
+                               (var->rank == 3 ? " x " + std::to_string(pages) : std::string());
   if (count > static_cast<uint64_t>(max_values)) {
     fail(declared + ": more than the " + std::to_string(max_values) + " values a result of this export can have");
   }
@@ -485,9 +495,12 @@ NpyArray ReadMatMatrix(const std::string& path, const std::string& variable, int
   }
   NpyArray array;
   array.shape = {static_cast<int64_t>(rows), static_cast<int64_t>(columns)};
+  if (var->rank == 3) array.shape.push_back(static_cast<int64_t>(pages));
   array.values.resize(count);
   for (size_t r = 0; r < rows; ++r) {  // the file is column-major
-    for (size_t c = 0; c < columns; ++c) array.values[r * columns + c] = first[c * rows + r];
+    for (size_t c = 0; c < columns; ++c) {
+      for (size_t p = 0; p < pages; ++p) array.values[(r * columns + c) * pages + p] = first[(p * columns + c) * rows + r];
+    }
   }
   return array;
 }
@@ -495,18 +508,22 @@ NpyArray ReadMatMatrix(const std::string& path, const std::string& variable, int
 void WriteMatMatrix(const std::string& path, const std::string& variable, const NpyArray& array, bool v73) {
   InstallMatioLog();
   last_matio_message.clear();
-  if (array.shape.size() != 2) throw std::invalid_argument("WriteMatMatrix: needs a 2-D array");
+  if (array.shape.size() != 2 && array.shape.size() != 3) throw std::invalid_argument("WriteMatMatrix: needs a 2-D or 3-D array");
   const auto rows = static_cast<size_t>(array.shape[0]);
   const auto columns = static_cast<size_t>(array.shape[1]);
-  std::vector<double> column_major(rows * columns);
+  const auto pages = array.shape.size() == 3 ? static_cast<size_t>(array.shape[2]) : size_t{1};
+  std::vector<double> column_major(rows * columns * pages);
   for (size_t r = 0; r < rows; ++r) {
-    for (size_t c = 0; c < columns; ++c) column_major[c * rows + r] = array.values[r * columns + c];
+    for (size_t c = 0; c < columns; ++c) {
+      for (size_t p = 0; p < pages; ++p) column_major[(p * columns + c) * rows + r] = array.values[(r * columns + c) * pages + p];
+    }
   }
   std::unique_ptr<mat_t, MatCloser> mat(Matio::Get().CreateVer(path.c_str(), nullptr, v73 ? MAT_FT_MAT73 : MAT_FT_MAT5));
   if (!mat) throw std::runtime_error(path + ": cannot create the .mat file" + MatioDetail());
-  size_t dims[2] = {rows, columns};
-  std::unique_ptr<matvar_t, VarFreer> var(
-      Matio::Get().VarCreate(variable.c_str(), MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, column_major.data(), MAT_F_DONT_COPY_DATA));
+  size_t dims[3] = {rows, columns, pages};
+  std::unique_ptr<matvar_t, VarFreer> var(Matio::Get().VarCreate(variable.c_str(), MAT_C_DOUBLE, MAT_T_DOUBLE,
+                                                                 static_cast<int>(array.shape.size()), dims,
+                                                                 column_major.data(), MAT_F_DONT_COPY_DATA));
   if (!var || Matio::Get().VarWrite(mat.get(), var.get(), MAT_COMPRESSION_NONE) != 0) {
     throw std::runtime_error(path + ": cannot write variable '" + variable + "'" + MatioDetail());
   }

@@ -156,6 +156,7 @@ int RunLabReplay(const LabReplayArgs& args);
 int RunCompare(const CompareArgs& args);
 int RunCheckSubmission(const CheckSubmissionArgs& args);
 /// dream export, import, lab-replay, compare and check-submission, in that order.
+void DeclareCalibrateCommand(CommandLine& line);
 void DeclareBridgeCommands(CommandLine& line);
 
 // --- sweeps (sweep_command.cc, docs/sweeps.md) ---

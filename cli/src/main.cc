@@ -41,6 +41,7 @@ int main(int argc, char** argv) {
   DeclareReplayCommand(line);
   DeclareLogCommand(line);
   DeclareBridgeCommands(line);  // export, import, lab-replay, compare, check-submission (docs/robotarium.md)
+  DeclareCalibrateCommand(line);  // fit the lab model to real runs (docs/experiments.md)
   DeclareSweepCommand(line);
   DeclareRenderCommand(line);  // pictures and videos (docs/rendering.md)
   DeclareVersionCommand(line);

@@ -2,6 +2,10 @@
 // file, line and key for every bad value.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "dream/config/run_config.h"
@@ -152,6 +156,89 @@ TEST(RealismConfigTest, BadValuesNameFileLineAndKey) {
 
   const std::string zero_axle = ErrorOf(ConfigWith("  realism:\n    axle_length_m: 0\n"));
   EXPECT_NE(zero_axle.find("axle_length_m"), std::string::npos) << zero_axle;
+}
+
+// `file: PATH`: a realism file (what dream calibrate writes) as the base,
+// relative to the config's folder, with the config's own keys over it.
+class RealismFileTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() / ("dream_realism_file_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir_ / "labs");
+    Write("labs/mylab.yaml", "preset: lab\nmotor_lag_s: 0.2  # fitted\ncommand_latency_steps: 6\n");
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  void Write(const std::string& name, const std::string& text) const {
+    std::ofstream(dir_ / name) << text;
+  }
+  RunConfig LoadFile(const std::string& world_lines) const {
+    Write("run.yaml", ConfigWith(world_lines));
+    return LoadRunConfigFile((dir_ / "run.yaml").string());
+  }
+  std::string FileError(const std::string& world_lines) const {
+    try {
+      LoadFile(world_lines);
+    } catch (const ConfigError& e) {
+      return e.what();
+    }
+    return "";
+  }
+  std::filesystem::path dir_;
+};
+
+TEST_F(RealismFileTest, AFileIsTheBaseAndTheConfigsKeysGoOverIt) {
+  const RunConfig config = LoadFile("  realism: {file: labs/mylab.yaml, pose_noise_m: 0.002}\n");
+  sim::RealismParams expected = sim::RealismParams::Lab();
+  expected.motor_lag_s = 0.2;
+  expected.command_latency_steps = 6;
+  expected.pose_noise_m = 0.002;
+  EXPECT_EQ(config.realism, expected);
+  EXPECT_EQ(config.realism_file_as_written, "labs/mylab.yaml");
+  EXPECT_EQ(config.realism_file, (dir_ / "labs/mylab.yaml").lexically_normal().string());
+  // An absolute path works from anywhere.
+  EXPECT_EQ(LoadFile("  realism: {file: " + (dir_ / "labs/mylab.yaml").string() + "}\n").realism.motor_lag_s, 0.2);
+}
+
+TEST_F(RealismFileTest, BadFilesAreNamed) {
+  EXPECT_NE(FileError("  realism: {file: labs/none.yaml}\n").find("no realism file"), std::string::npos);
+  EXPECT_NE(FileError("  realism: {file: ../elsewhere.yaml}\n").find("leaves the config's folder"), std::string::npos);
+  // preset:, then the file, then the config's keys; the file's own preset replaces the config's.
+  Write("labs/partial.yaml", "motor_lag_s: 0.3\n");
+  EXPECT_EQ(LoadFile("  realism: {preset: ideal, file: labs/partial.yaml}\n").realism.linear_gain_spread, 0.0);
+  EXPECT_EQ(LoadFile("  realism: {preset: lab, file: labs/partial.yaml}\n").realism.linear_gain_spread,
+            sim::RealismParams::Lab().linear_gain_spread);
+  EXPECT_EQ(LoadFile("  realism: {preset: ideal, file: labs/mylab.yaml}\n").realism.linear_gain_spread,
+            sim::RealismParams::Lab().linear_gain_spread);
+  Write("labs/typo.yaml", "motor_lag: 0.2\n");
+  const std::string typo = FileError("  realism: {file: labs/typo.yaml}\n");
+  EXPECT_NE(typo.find("typo.yaml"), std::string::npos) << typo;
+  EXPECT_NE(typo.find("motor_lag"), std::string::npos) << typo;
+  Write("labs/bad.yaml", "preset: lab\nmotor_lag_s: -1\n");
+  const std::string bad = FileError("  realism: {file: labs/bad.yaml}\n");
+  EXPECT_NE(bad.find("bad.yaml:2"), std::string::npos) << bad;
+  EXPECT_NE(bad.find("motor_lag_s"), std::string::npos) << bad;
+  Write("labs/list.yaml", "- 1\n- 2\n");
+  EXPECT_NE(FileError("  realism: {file: labs/list.yaml}\n").find("a realism file is a map"), std::string::npos);
+}
+
+TEST(RealismConfigTest, LabModelKeysAreReadAndChecked) {
+  const sim::RealismParams params = Load(ConfigWith(
+      "  realism:\n    motor_lag_s: 0.1\n    motor_startup_m: 0.01\n    linear_gain_mean: 0.95\n"
+      "    angular_gain_spread: 0.02\n    heading_drift_spread_radps: 0.005\n    step_overrun_mean_s: 0.001\n"
+      "    loop_stall_probability: 0.001\n    loop_stall_max_s: 0.5\n    pose_noise_moving_factor: 2\n"
+      "    tracking_dropout_at_rest_factor: 4\n")).realism;
+  EXPECT_EQ(params.motor_lag_s, 0.1);
+  EXPECT_EQ(params.motor_startup_m, 0.01);
+  EXPECT_EQ(params.linear_gain_mean, 0.95);
+  EXPECT_EQ(params.angular_gain_spread, 0.02);
+  EXPECT_EQ(params.heading_drift_spread_radps, 0.005);
+  EXPECT_EQ(params.loop_stall_max_s, 0.5);
+  EXPECT_EQ(params.tracking_dropout_at_rest_factor, 4.0);
+  EXPECT_NE(ErrorOf(ConfigWith("  realism: {linear_gain_mean: 2}\n")).find("linear_gain_mean"), std::string::npos);
+  EXPECT_NE(ErrorOf(ConfigWith("  realism: {pose_noise_moving_factor: 0.5}\n")).find("pose_noise_moving_factor"),
+            std::string::npos);
+  const std::string stall = ErrorOf(ConfigWith("  realism: {loop_stall_probability: 0.1, loop_stall_max_s: 11}\n"));
+  EXPECT_NE(stall.find("loop_stall_max_s = 11"), std::string::npos) << stall;
 }
 
 }  // namespace

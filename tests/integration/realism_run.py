@@ -15,6 +15,10 @@
 6. The tracker's drop, set with --set: every robot without a pose for over tracker_drop_s is lost
    to the tracker for the rest of the run, listed in summary.json realism_stats and named in a
    tracker_lost warning; its agents kept being sent its last measured pose.
+7. A realism file (what dream calibrate writes): `--set world.realism.file=PATH` (absolute) and a
+   config naming one relative to itself; summary.json names the file and has its values, the run
+   folder keeps a copy beside config.yaml so the kept config runs again, and a missing file is
+   named with exit 1.
 
 Usage: realism_run.py --dream BIN --source DIR --types-dir DIR
 """
@@ -51,7 +55,12 @@ def test(ctx):
     realism = summary.get("realism")
     check(realism is not None, f"summary.json has no realism: {sorted(summary)}")
     check(realism["axle_length_m"] == 0.105 and realism["pose_delay_steps"] == 1
-          and realism["command_latency_steps"] == 1, f"summary.json realism is not the lab preset: {realism}")
+          and realism["command_latency_steps"] == 3 and realism["motor_lag_s"] == 0.136,
+          f"summary.json realism is not the lab preset: {realism}")
+    stats = summary["realism_stats"]
+    check(len(stats["robot_traits"]) == summary["robots"] and stats["late_steps"] > 0
+          and len({t["linear_gain"] for t in stats["robot_traits"]}) == summary["robots"],
+          f"realism_stats lacks each robot's drawn traits or the late steps: {stats}")
     check(summary["end"] == "finished", f"the lab run ended {summary['end']}")
     lab = poses_by_channel(dream_types, ctx.path("lab"))
     truth, measured = lab["DREAM_POSES"], lab["DREAM_MEASURED_POSES"]
@@ -105,7 +114,7 @@ def test(ctx):
         "--set", "world.realism.tracking_dropout_probability=1", "--set", "world.realism.tracker_drop_s=0.5",
         "--steps", "60", expect=None)
     summary = read_summary(ctx.path("blind"))
-    check(summary["realism"].get("tracker_drop_s") == 0.5 and summary["realism"].get("tracking_dropout_mean_steps") == 1,
+    check(summary["realism"].get("tracker_drop_s") == 0.5 and summary["realism"].get("tracking_dropout_mean_steps") == 4,
           f"summary.json realism lacks the tracker's models: {summary['realism']}")
     lost = summary["realism_stats"]["robots_lost_to_tracker"]
     check([entry["robot"] for entry in lost] == list(range(summary["robots"])) and
@@ -115,6 +124,30 @@ def test(ctx):
           f"no tracker_lost warning: {summary['verdict_reasons']}")
     blind = poses_by_channel(dream_types, ctx.path("blind"))["DREAM_MEASURED_POSES"]
     check(all(m[1:] == blind[0][1:] for m in blind), "a robot lost to the tracker was sent another pose")
+
+    # 7. A realism file, absolute through --set, and relative to a config.
+    lab_file = ctx.path("labs/mylab.yaml")
+    os.makedirs(os.path.dirname(lab_file), exist_ok=True)
+    with open(lab_file, "w", encoding="utf-8") as out:
+        out.write("preset: lab\nmotor_lag_s: 0.2  # fitted\ncommand_latency_steps: 5\n")
+    run(ctx, args, "file_abs", "go_to_goal.yaml", "--set", f"world.realism.file={lab_file}")
+    realism = read_summary(ctx.path("file_abs"))["realism"]
+    check(realism["file"] == lab_file and realism["motor_lag_s"] == 0.2 and realism["command_latency_steps"] == 5
+          and realism["pose_quantum_rad"] == 0.001, f"summary.json realism is not the file's: {realism}")
+    with open(os.path.join(args.source, "config", "go_to_goal.yaml"), encoding="utf-8") as source:
+        config_text = source.read()
+    with open(ctx.path("relative.yaml"), "w", encoding="utf-8") as out:
+        out.write(config_text)
+    ctx.run([args.dream, "run", ctx.path("relative.yaml"), "--out", ctx.path("file_rel"), "--steps", "30",
+             "--set", "world.realism.file=labs/mylab.yaml"], timeout=120)
+    kept = os.path.join(ctx.path("file_rel"), "labs", "mylab.yaml")
+    check(os.path.exists(kept), "the run folder keeps no copy of its relative realism file")
+    ctx.run([args.dream, "run", os.path.join(ctx.path("file_rel"), "config.yaml"), "--out", ctx.path("rerun"),
+             "--steps", "30"], timeout=120)
+    check(read_summary(ctx.path("rerun"))["realism"]["motor_lag_s"] == 0.2, "the kept config lost its lab model")
+    code, text = run(ctx, args, "no_file", "go_to_goal.yaml", "--set", "world.realism.file=labs/none.yaml",
+                     expect=EXIT_INPUT)
+    check("no realism file" in text and "none.yaml" in text, f"unclear error: {text.strip()}")
 
 
 if __name__ == "__main__":

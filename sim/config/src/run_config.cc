@@ -90,19 +90,9 @@ sim::RealismParams RealismPreset(const ConfigNode& name) {
   return params;
 }
 
-// `world.realism`: a preset name, or a map of models starting from `preset:`
-// (ideal when absent). See docs/experiments.md for each key.
-sim::RealismParams ReadRealism(const ConfigNode& root) {
-  const ConfigNode world = root.Optional("world");
-  const ConfigNode node = world.IsDefined() ? world.Optional("realism") : ConfigNode();
-  if (!node.IsDefined()) return sim::RealismParams::Ideal();
-  if (!node.IsMap()) return RealismPreset(node);
-  std::vector<const char*> keys = {"preset"};
-  for (const sim::RealismParams::Field& field : sim::RealismParams::Fields()) keys.push_back(field.key);
-  node.RejectUnknownKeys(keys);
-  sim::RealismParams params =
-      node.Has("preset") ? RealismPreset(node.Required("preset")) : sim::RealismParams::Ideal();
-  // Each key in turn, so the error names the first bad one with its line.
+// The realism keys of `node` over `base`, each checked in turn so the error
+// names the first bad one with its line.
+sim::RealismParams ReadRealismKeys(const ConfigNode& node, sim::RealismParams params) {
   for (const sim::RealismParams::Field& field : sim::RealismParams::Fields()) {
     if (field.steps != nullptr) {
       const long long value = node.GetInt(field.key, params.*field.steps);
@@ -118,8 +108,73 @@ sim::RealismParams ReadRealism(const ConfigNode& root) {
     if (node.Has(field.key) && !params.IsValid(&error)) node.Required(field.key).Fail(error);
   }
   std::string error;
-  if (!params.IsValid(&error)) node.Fail(error);  // unreachable when the checks above hold
+  if (!params.IsValid(&error)) node.Fail(error);  // a rule between keys (loop_stall_max_s)
   return params;
+}
+
+// A realism map's keys: preset, `extra` (unless null) and every model's.
+std::vector<const char*> RealismKeys(const char* extra) {
+  std::vector<const char*> keys = {"preset"};
+  if (extra != nullptr) keys.push_back(extra);
+  for (const sim::RealismParams::Field& field : sim::RealismParams::Fields()) keys.push_back(field.key);
+  return keys;
+}
+
+// A realism map's base: its preset, else ideal.
+sim::RealismParams RealismBase(const ConfigNode& node) {
+  return node.Has("preset") ? RealismPreset(node.Required("preset")) : sim::RealismParams::Ideal();
+}
+
+// `file: PATH`: a realism file (a map of realism keys, with an optional
+// preset; what dream calibrate writes), relative to the config's folder. Its
+// keys go over `base` (the config's preset), or over its own preset.
+sim::RealismParams ReadRealismFile(const ConfigNode& file_node, const sim::RealismParams& base, RunConfig* config) {
+  namespace fs = std::filesystem;
+  const std::string written = file_node.AsString();
+  fs::path path(written);
+  if (written.empty()) file_node.Fail("expected the path of a realism file (e.g. from dream calibrate), got ''");
+  // A run folder keeps a copy at the same relative path beside its
+  // config.yaml, so a relative path must stay inside the config's folder.
+  if (path.is_relative()) {
+    for (const fs::path& part : path.lexically_normal()) {
+      if (part == "..") {
+        file_node.Fail("'" + written +
+                       "' leaves the config's folder: put the realism file in that folder (or below it), or give "
+                       "its absolute path");
+      }
+    }
+    path = fs::path(file_node.file()).parent_path() / path;
+  }
+  std::error_code error;
+  if (!fs::is_regular_file(path, error)) {
+    file_node.Fail("no realism file '" + path.lexically_normal().string() +
+                   "' (relative paths are taken from the config file's folder)");
+  }
+  const std::string file_path = path.lexically_normal().string();
+  YAML::Node file_root = ConfigNode::ParseYaml(ConfigNode::ReadFile(file_path), file_path);
+  if (!file_root.IsMap()) {
+    file_node.Fail("'" + file_path + "' is not a realism file: a realism file is a map of world.realism keys (as dream "
+                   "calibrate writes)");
+  }
+  const ConfigNode file(file_root, file_path, "");
+  file.RejectUnknownKeys(RealismKeys(nullptr));
+  config->realism_file_as_written = written;
+  config->realism_file = fs::absolute(path, error).lexically_normal().string();
+  return ReadRealismKeys(file, file.Has("preset") ? RealismBase(file) : base);
+}
+
+// `world.realism`: a preset name, or a map of models: `preset:` (ideal when
+// absent), then `file:`, then the map's own keys. See docs/experiments.md.
+sim::RealismParams ReadRealism(const ConfigNode& root, RunConfig* config) {
+  const ConfigNode world = root.Optional("world");
+  const ConfigNode node = world.IsDefined() ? world.Optional("realism") : ConfigNode();
+  if (!node.IsDefined()) return sim::RealismParams::Ideal();
+  if (!node.IsMap()) return RealismPreset(node);
+  node.RejectUnknownKeys(RealismKeys("file"));
+  // Layers, each over the one before: the preset, the file, the keys here.
+  sim::RealismParams base = RealismBase(node);
+  if (node.Has("file")) base = ReadRealismFile(node.Required("file"), base, config);
+  return ReadRealismKeys(node, base);
 }
 
 // Needs config.obstacles: generated poses avoid them and listed poses may not
@@ -268,7 +323,7 @@ RunConfig LoadRunConfig(const ConfigNode& root) {
   // What agents read too, from the one place that checks it.
   static_cast<ControllerConfig&>(config) = LoadControllerConfig(root);
   config.sim = ReadSimOptions(root);
-  config.realism = ReadRealism(root);
+  config.realism = ReadRealism(root, &config);
   config.obstacles = ReadObstacles(root);
   config.initial_poses = ReadInitialPoses(root, config);
   return config;

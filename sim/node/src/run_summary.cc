@@ -87,14 +87,25 @@ nlohmann::ordered_json RunSummary(const config::RunConfig& config, const RunOutc
         realism[field.key] = config.realism.*field.steps;
       }
     }
+    if (!config.realism_file.empty()) realism["file"] = config.realism_file;
     realism["poses_channel_seen_by_agents"] = TruePoseRecording::kMeasuredPosesChannel;
     json["realism"] = realism;
     nlohmann::json lost = nlohmann::json::array();
     for (const RealisticWorld::TrackerLoss& loss : realistic->tracker_losses()) {
       lost.push_back({{"robot", loss.robot_id}, {"step", loss.step}});
     }
+    nlohmann::json robots = nlohmann::json::array();
+    for (const RobotTraits& traits : realistic->robot_traits()) {
+      robots.push_back({{"linear_gain", traits.linear_gain},
+                        {"angular_gain", traits.angular_gain},
+                        {"heading_drift_radps", traits.heading_drift_radps}});
+    }
     json["realism_stats"] = {{"dropped_measurements", realistic->dropped_measurements()},
-                             {"robots_lost_to_tracker", lost}};
+                             {"robots_lost_to_tracker", lost},
+                             {"late_steps", realistic->late_steps()},
+                             {"loop_stalls", realistic->stalls()},
+                             {"late_time_s", realistic->late_time_s()},
+                             {"robot_traits", robots}};
   }
   return json;
 }

@@ -72,6 +72,7 @@ RunSession::Stepped RunSession::Step(lcm::LcmInterface& lcm, const Folder& folde
   // for `dream export` and `dream compare`, and to rerun it.
   sim::WriteFileAtomically(folder.dir + "/config.yaml", folder.config_text);
   bridge::KeepControllerModule(config_, sim::OutputFolder(folder.dir));
+  bridge::KeepRealismFile(config_, sim::OutputFolder(folder.dir));
   Stepped stepped;
   const std::string log_path = folder.dir + "/" + kLogName;
   {

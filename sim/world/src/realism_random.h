@@ -8,7 +8,7 @@ namespace dream::sim {
 
 // Which realism model a RealismRandom serves; the numbers seed the streams,
 // so they never change (a run's noise would).
-enum class RealismStream : uint64_t { kNoise = 1, kDropout = 2, kDropoutBurst = 3 };
+enum class RealismStream : uint64_t { kNoise = 1, kDropout = 2, kDropoutBurst = 3, kRobotTraits = 4, kLoopTiming = 5 };
 
 // One seeded stream of the realism models' random numbers. mt19937_64's
 // output is fixed by the C++ standard and the transforms below are written

@@ -44,11 +44,25 @@ double Quantize(double value, double quantum) {
   return quantum > 0.0 ? std::round(value / quantum) * quantum : value;
 }
 
-double StepTowards(double current, double target, double max_change) {
-  return current + std::clamp(target - current, -max_change, max_change);
-}
+// Below these a robot counts as at rest for the tracker's models: it moves
+// less than 0.07 mm (0.7 mrad) a step.
+constexpr double kMovingSpeedMps = 0.002;
+constexpr double kMovingTurnRadps = 0.02;
 
 }  // namespace
+
+std::vector<RealisticWorld::Robot> RealisticWorld::MakeRobots(const RealismParams& realism,
+                                                               const WorldParams& params, uint64_t seed,
+                                                               int num_robots) {
+  std::vector<Robot> robots;
+  robots.reserve(static_cast<size_t>(num_robots));
+  for (const RobotTraits& traits : RobotTraits::Draw(realism, seed, num_robots)) {
+    robots.push_back(Robot{{}, {}, kNone, 0.0, RobotResponse(realism, traits, params.wheel_radius_m,
+                                                                params.max_wheel_speed_radps), false});
+  }
+  return robots;
+}
+
 
 RealisticWorld::RealisticWorld(const WorldParams& params, const RealismParams& realism, uint64_t seed,
                                std::vector<Pose2> initial_poses,
@@ -56,7 +70,7 @@ RealisticWorld::RealisticWorld(const WorldParams& params, const RealismParams& r
     : official_(params),
       realism_(ValidatedRealism(realism)),
       truth_(TruthParams(params, realism), std::move(initial_poses), obstacle_specs),
-      robots_(static_cast<size_t>(truth_.num_robots())),
+      robots_(MakeRobots(realism_, params, seed, truth_.num_robots())),
       brake_hold_steps_(HoldSteps(params.time_step_s, realism.command_brake_s)),
       pose_history_(static_cast<size_t>(realism.pose_delay_steps) + 1, truth_.poses()),
       velocity_history_(static_cast<size_t>(realism.pose_delay_steps) + 1, truth_.velocities()),
@@ -66,6 +80,10 @@ RealisticWorld::RealisticWorld(const WorldParams& params, const RealismParams& r
       dropout_random_(std::make_unique<RealismRandom>(seed, RealismStream::kDropout)),
       tracker_hold_steps_(HoldSteps(params.time_step_s, realism.tracker_drop_s)),
       tracking_(static_cast<size_t>(truth_.num_robots())) {
+  if (realism_.step_overrun_mean_s > 0.0 || realism_.loop_stall_probability > 0.0) {
+    timing_random_ = std::make_unique<RealismRandom>(seed, RealismStream::kLoopTiming);
+    motion_times_.resize(robots_.size());
+  }
   if (realism_.tracking_dropout_mean_steps > 1.0) {
     burst_random_ = std::make_unique<RealismRandom>(seed, RealismStream::kDropoutBurst);
     burst_continue_probability_ = 1.0 - 1.0 / realism_.tracking_dropout_mean_steps;
@@ -101,53 +119,98 @@ void RealisticWorld::StopRobot(int robot_id) {
   robot.queue.clear();
   robot.delivered = UnicycleCommand{};
   robot.delivered_step = kNone;
-  robot.wheels = WheelSpeeds{};
+  robot.late_since_delivery_s = 0.0;
+  robot.response.Stop();
   robot.sent_over_limit = false;
   truth_.StopRobot(robot_id);
 }
 
-UnicycleCommand RealisticWorld::Drive(Robot& robot) {
+UnicycleCommand RealisticWorld::Follow(Robot& robot) {
   const int64_t now = step();
   while (!robot.queue.empty() && robot.queue.front().due_step <= now) {
     robot.delivered = robot.queue.front().command;
     robot.delivered_step = robot.queue.front().due_step;
+    robot.late_since_delivery_s = 0.0;
     robot.queue.pop_front();
   }
-  if (robot.delivered_step != kNone && now - robot.delivered_step > brake_hold_steps_) {
+  if (robot.delivered_step == kNone) return robot.delivered;
+  const int64_t age_steps = now - robot.delivered_step;
+  const bool braked_by_steps = age_steps > brake_hold_steps_;
+  // Late steps count too: a command that waited through a stall is older
+  // than its steps say.
+  const bool braked_by_time = robot.late_since_delivery_s > 0.0 && realism_.command_brake_s > 0.0 &&
+                              static_cast<double>(age_steps) * official_.time_step_s + robot.late_since_delivery_s >
+                                  realism_.command_brake_s;
+  if (braked_by_steps || braked_by_time) {
     // The firmware shorts the motors: the wheels stop at once.
     robot.delivered = UnicycleCommand{};
     robot.delivered_step = kNone;
-    robot.wheels = WheelSpeeds{};
+    robot.late_since_delivery_s = 0.0;
+    robot.response.Stop();
   }
-  UnicycleCommand target = robot.delivered;
-  if (std::abs(target.v_mps) < realism_.dead_zone_v_mps && std::abs(target.w_radps) < realism_.dead_zone_w_radps) {
-    target = UnicycleCommand{};  // the motors coast
-  }
-  if (realism_.wheel_accel_limit_radps2 == 0.0) return target;  // the true world saturates it
+  return robot.delivered;
+}
 
-  const double radius_m = official_.wheel_radius_m;
-  const double axle_m = realism_.axle_length_m;
-  const WheelSpeeds wanted =
-      ClipWheelSpeeds(UnicycleToWheelSpeeds(target, radius_m, axle_m), official_.max_wheel_speed_radps);
-  const double max_change = realism_.wheel_accel_limit_radps2 * official_.time_step_s;
-  robot.wheels.left_radps = StepTowards(robot.wheels.left_radps, wanted.left_radps, max_change);
-  robot.wheels.right_radps = StepTowards(robot.wheels.right_radps, wanted.right_radps, max_change);
-  return WheelSpeedsToUnicycle(robot.wheels, radius_m, axle_m);
+double RealisticWorld::DrivenLateTime(const Robot& robot, double late_s) const {
+  if (robot.delivered_step == kNone || realism_.command_brake_s == 0.0) return late_s;
+  const double age_after_step_s =
+      static_cast<double>(step() - robot.delivered_step + 1) * official_.time_step_s + robot.late_since_delivery_s;
+  return std::clamp(realism_.command_brake_s - age_after_step_s, 0.0, late_s);
+}
+
+double RealisticWorld::DrawLateTime() {
+  if (timing_random_ == nullptr) return 0.0;
+  // Every draw is taken whether used or not, so the stream stays aligned.
+  const double overrun_u = timing_random_->Uniform();
+  const double stall_u = timing_random_->Uniform();
+  const double stall_length_u = timing_random_->Uniform();
+  double late_s = -realism_.step_overrun_mean_s * std::log1p(-overrun_u);  // exponential
+  if (stall_u < realism_.loop_stall_probability) {
+    const double longest = std::max(realism_.loop_stall_max_s, RealismParams::kMinStallS);
+    late_s += RealismParams::kMinStallS + (longest - RealismParams::kMinStallS) * stall_length_u;
+    ++stalls_;
+  }
+  if (late_s > 0.0) {
+    ++late_steps_;
+    late_time_s_ += late_s;
+  }
+  return late_s;
+}
+
+bool RealisticWorld::IsMoving(const UnicycleCommand& velocity) {
+  return std::abs(velocity.v_mps) >= kMovingSpeedMps || std::abs(velocity.w_radps) >= kMovingTurnRadps;
 }
 
 void RealisticWorld::Step() {
+  const double late_s = DrawLateTime();
+  last_late_s_ = late_s;
+  const double step_s = official_.time_step_s + late_s;
   bool over_limit = false;
   for (size_t i = 0; i < robots_.size(); ++i) {
     Robot& robot = robots_[i];
-    truth_.SetCommand(static_cast<int>(i), Drive(robot));
+    const UnicycleCommand followed = Follow(robot);
+    truth_.SetCommand(static_cast<int>(i), robot.response.Drive(followed, step_s));
+    if (late_s > 0.0) motion_times_[i] = official_.time_step_s + DrivenLateTime(robot, late_s);
+    robot.late_since_delivery_s += late_s;
     over_limit = over_limit || robot.sent_over_limit;
     robot.sent_over_limit = false;
   }
-  truth_.Step();
+  if (late_s > 0.0) {
+    truth_.StepWithMotionTimes(motion_times_);
+  } else {
+    truth_.Step();
+  }
   if (over_limit) ++actuator_errors_;
   violations_ = truth_.violations();
   violations_.actuator_errors = actuator_errors_;
   Measure(false);
+}
+
+std::vector<RobotTraits> RealisticWorld::robot_traits() const {
+  std::vector<RobotTraits> traits;
+  traits.reserve(robots_.size());
+  for (const Robot& robot : robots_) traits.push_back(robot.response.traits());
+  return traits;
 }
 
 void RealisticWorld::Measure(bool first) {
@@ -162,11 +225,16 @@ void RealisticWorld::Measure(bool first) {
 
   for (size_t i = 0; i < measured_poses_.size(); ++i) {
     // Every draw is taken whether used or not, so the streams stay aligned.
-    const double noise_x = noise_random_->Gaussian() * realism_.pose_noise_m;
-    const double noise_y = noise_random_->Gaussian() * realism_.pose_noise_m;
-    const double noise_theta = noise_random_->Gaussian() * realism_.pose_noise_rad;
+    const bool moving = IsMoving(seen_velocities[i]);
+    const double noise_scale = moving ? realism_.pose_noise_moving_factor : 1.0;
+    const double noise_x = noise_random_->Gaussian() * (realism_.pose_noise_m * noise_scale);
+    const double noise_y = noise_random_->Gaussian() * (realism_.pose_noise_m * noise_scale);
+    const double noise_theta = noise_random_->Gaussian() * (realism_.pose_noise_rad * noise_scale);
     Tracking& tracking = tracking_[i];
-    if (DropsMeasurement(tracking, first)) {
+    const double dropout_probability =
+        moving ? realism_.tracking_dropout_probability
+               : std::min(1.0, realism_.tracking_dropout_probability * realism_.tracking_dropout_at_rest_factor);
+    if (DropsMeasurement(tracking, dropout_probability, first)) {
       // The tracker repeats its last report; past tracker_drop_s it drops the robot.
       if (!tracking.lost && tracking.missing_steps > tracker_hold_steps_) {
         tracking.lost = true;
@@ -186,8 +254,8 @@ void RealisticWorld::Measure(bool first) {
   }
 }
 
-bool RealisticWorld::DropsMeasurement(Tracking& tracking, bool first) {
-  const bool starts = dropout_random_->Uniform() < realism_.tracking_dropout_probability;
+bool RealisticWorld::DropsMeasurement(Tracking& tracking, double probability, bool first) {
+  const bool starts = dropout_random_->Uniform() < probability;
   const bool goes_on = burst_random_ != nullptr && burst_random_->Uniform() < burst_continue_probability_;
   if (first) return false;  // step 0 is always measured
   if (tracking.lost) return true;

@@ -83,7 +83,22 @@ void UnicycleWorld::ApplyCommandTimeouts() {
   }
 }
 
-void UnicycleWorld::Step() {
+void UnicycleWorld::Step() { StepRobots(nullptr); }
+
+void UnicycleWorld::StepWithMotionTimes(const std::vector<double>& motion_time_s) {
+  if (motion_time_s.size() != poses_.size()) {
+    throw std::invalid_argument("UnicycleWorld::StepWithMotionTimes: " + std::to_string(motion_time_s.size()) +
+                                " motion times for " + std::to_string(poses_.size()) + " robots");
+  }
+  for (double time_s : motion_time_s) {
+    if (!(std::isfinite(time_s) && time_s >= 0.0)) {
+      throw std::invalid_argument("UnicycleWorld::StepWithMotionTimes: a motion time must be finite and >= 0");
+    }
+  }
+  StepRobots(motion_time_s.data());
+}
+
+void UnicycleWorld::StepRobots(const double* motion_time_s) {
   events_.Reset(step_);
   ApplyCommandTimeouts();
 
@@ -114,10 +129,11 @@ void UnicycleWorld::Step() {
         ClipWheelSpeeds(wheels, max_wheel_speed_radps), wheel_radius_m, base_length_m);
     velocities_[i] = saturated;
 
-    const double distance_m = dt * saturated.v_mps;
+    const double robot_dt = motion_time_s == nullptr ? dt : motion_time_s[i];
+    const double distance_m = robot_dt * saturated.v_mps;
     pose.x_m += distance_m * cos_theta;
     pose.y_m += distance_m * sin_theta;
-    const double theta_rad = pose.theta_rad + dt * saturated.w_radps;
+    const double theta_rad = pose.theta_rad + robot_dt * saturated.w_radps;
     pose.theta_rad = std::atan2(std::sin(theta_rad), std::cos(theta_rad));
   }
 

@@ -14,4 +14,8 @@ namespace dream::bridge {
 /// @throws config::ConfigError when the module cannot be read.
 void KeepControllerModule(const config::RunConfig& config, const sim::OutputFolder& out);
 
+/// The same for a realism file (`world.realism: {file: PATH}`) named by a
+/// relative path, so the run folder's config.yaml finds its lab model.
+void KeepRealismFile(const config::RunConfig& config, const sim::OutputFolder& out);
+
 }  // namespace dream::bridge

@@ -17,6 +17,10 @@ namespace dream::bridge {
 /// zlib's best ratio for a compressed variable).
 NpyArray ReadMatMatrix(const std::string& path, const std::string& variable, int64_t max_values = int64_t{1} << 26);
 
+/// ReadMatMatrix for arrays of rank 2 up to `max_rank` (3 at most): a 3-D
+/// MATLAB array d0 x d1 x d2 comes back with shape {d0, d1, d2}, row-major.
+NpyArray ReadMatArray(const std::string& path, const std::string& variable, int64_t max_values, int max_rank);
+
 /// Writes `array` (2-D) as the double matrix `variable` of a new MATLAB .mat
 /// file at `path`, version 5 or (v73) 7.3 (tests and tools; not atomic).
 /// @throws std::runtime_error.

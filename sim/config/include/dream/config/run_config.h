@@ -33,6 +33,11 @@ struct RunConfig : ControllerConfig {
   /// `world.realism:` (a preset name, or a map of models); Ideal(), the
   /// default, is the official simulator (no sim::RealisticWorld).
   sim::RealismParams realism;
+  /// `world.realism: {file: PATH}` (a realism file, e.g. from dream calibrate):
+  /// the path as written (relative to the config's folder, never leaving it,
+  /// or absolute) and resolved; both empty without one.
+  std::string realism_file_as_written;
+  std::string realism_file;
   std::vector<sim::Pose2> initial_poses;
   std::vector<sim::RectangleObstacleSpec> obstacles;
 };

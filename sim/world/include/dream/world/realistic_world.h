@@ -9,6 +9,8 @@
 #include "dream/world/pose2.h"
 #include "dream/world/realism_params.h"
 #include "dream/world/rectangle_obstacle_spec.h"
+#include "dream/world/robot_response.h"
+#include "dream/world/robot_traits.h"
 #include "dream/world/unicycle_command.h"
 #include "dream/world/unicycle_world.h"
 #include "dream/world/verdict_reason.h"
@@ -31,20 +33,24 @@ class RealismRandom;
 //     (the newest one due wins);
 //  2. brake: a robot whose delivered command is older than command_brake_s
 //     stops at once (as UnicycleWorld's command timeout, counted from when the
-//     command reached the robot);
-//  3. dead zone: |v| < dead_zone_v_mps and |w| < dead_zone_w_radps coast (the
-//     command becomes 0);
-//  4. wheels: the command converted with axle_length_m, clipped to the wheel
-//     limit, each wheel rate-limited by wheel_accel_limit_radps2;
+//     command reached the robot, late steps and stalls included);
+//  3-4. respond (RobotResponse): dead zone, wheel speeds with axle_length_m
+//     clipped to the limit, each wheel's lag (motor_lag_s, motor_startup_m) or
+//     acceleration limit, then the robot's own gains and heading drift
+//     (RobotTraits, drawn once from the seed);
 //  5. the true world steps with what the robot drives (its wheel saturation
-//     uses axle_length_m);
+//     uses axle_length_m). A late step (step_overrun_mean_s) or a loop stall
+//     (loop_stall_probability, loop_stall_max_s) lasts longer than a time
+//     step: the robots drive on through it until their brake;
 //  6. measure: the true poses of step k + 1 - pose_delay_steps, plus Gaussian
-//     noise, rounded to the quanta; in a dropout (one starts with
-//     tracking_dropout_probability and lasts tracking_dropout_mean_steps on
-//     average) the robot's previous measurement is kept instead. A robot
-//     without a new measurement for longer than tracker_drop_s is lost to the
-//     tracker: its last measurement is kept for the rest of the run (the
-//     robot itself still drives).
+//     noise (pose_noise_moving_factor times larger for a moving robot),
+//     rounded to the quanta; in a dropout (one starts with
+//     tracking_dropout_probability, times tracking_dropout_at_rest_factor for
+//     a robot at rest, and lasts tracking_dropout_mean_steps on average) the
+//     robot's previous measurement is kept instead. A robot without a new
+//     measurement for longer than tracker_drop_s is lost to the tracker: its
+//     last measurement is kept for the rest of the run (the robot itself
+//     still drives).
 // Actuator errors are counted on the commands as sent, with the official
 // wheel radius and base length, as the Robotarium does; boundary, collision
 // and obstacle errors on the true poses.
@@ -93,6 +99,15 @@ class RealisticWorld final : public World {
   };
   // In the order they were lost; each robot at most once.
   const std::vector<TrackerLoss>& tracker_losses() const { return tracker_losses_; }
+  // Steps that ran late (an overrun or a stall), stalls among them, and the
+  // total time beyond whole steps.
+  int64_t late_steps() const { return late_steps_; }
+  int64_t stalls() const { return stalls_; }
+  double late_time_s() const { return late_time_s_; }
+  // How much longer than a time step the last Step() lasted (0 on time).
+  double last_late_s() const { return last_late_s_; }
+  // Each robot's drawn gains and drift.
+  std::vector<RobotTraits> robot_traits() const;
   // Robot-steps whose measurement was dropped (the previous one sent again),
   // robots lost to the tracker not counted after their loss.
   int64_t dropped_measurements() const { return dropped_measurements_; }
@@ -111,7 +126,8 @@ class RealisticWorld final : public World {
     std::deque<QueuedCommand> queue;
     UnicycleCommand delivered;       // the command the firmware follows
     int64_t delivered_step = kNone;  // when it reached the robot; kNone: no command
-    WheelSpeeds wheels;              // wheel speeds driven (with an acceleration limit)
+    double late_since_delivery_s = 0.0;  // time beyond whole steps since then (late steps, stalls)
+    RobotResponse response;          // its firmware, motors, gains and drift
     bool sent_over_limit = false;    // newest command since the last Step() exceeds the wheel limit
   };
 
@@ -122,15 +138,30 @@ class RealisticWorld final : public World {
   };
 
   void CheckRobotId(int robot_id, const char* caller) const;
-  UnicycleCommand Drive(Robot& robot);
+  // The command robot's firmware follows this step, after delivery and brake.
+  UnicycleCommand Follow(Robot& robot);
+  // How long this step's `late_s` the robot still drives before its brake.
+  double DrivenLateTime(const Robot& robot, double late_s) const;
+  // This step's time beyond one time step: an overrun, a stall (0 when both are off).
+  double DrawLateTime();
+  // Whether a robot moving at `velocity` counts as moving for the tracker's models.
+  static bool IsMoving(const UnicycleCommand& velocity);
   void Measure(bool first);
   // Whether robot i's measurement of this step is dropped; draws its dropout numbers.
-  bool DropsMeasurement(Tracking& tracking, bool first);
+  bool DropsMeasurement(Tracking& tracking, double probability, bool first);
+  static std::vector<Robot> MakeRobots(const RealismParams& realism, const WorldParams& params, uint64_t seed,
+                                       int num_robots);
 
   WorldParams official_;  // the Robotarium's constants, for the actuator check
   RealismParams realism_;
   UnicycleWorld truth_;
   std::vector<Robot> robots_;
+  std::vector<double> motion_times_;  // per robot, this step's driving time (late steps only)
+  std::unique_ptr<RealismRandom> timing_random_;  // only with overruns or stalls
+  int64_t late_steps_ = 0;
+  int64_t stalls_ = 0;
+  double late_time_s_ = 0.0;
+  double last_late_s_ = 0.0;
   int64_t brake_hold_steps_ = 0;
   int64_t actuator_errors_ = 0;
   ViolationCounts violations_{};

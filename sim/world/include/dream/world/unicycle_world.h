@@ -63,6 +63,12 @@ class UnicycleWorld final : public World {
   void StopRobot(int robot_id) override;
 
   void Step() override;
+  // Step() in which robot i moves for motion_time_s[i] instead of one time
+  // step (the real lab's late steps and loop stalls: the robots keep driving
+  // while the script is late); validation, obstacles and the clock are those
+  // of one step. Throws std::invalid_argument unless there is one finite,
+  // non-negative time per robot.
+  void StepWithMotionTimes(const std::vector<double>& motion_time_s);
 
   int num_robots() const override { return static_cast<int>(poses_.size()); }
   // Poses at time step() * dt.
@@ -92,6 +98,8 @@ class UnicycleWorld final : public World {
 
   void CheckRobotId(int robot_id, const char* caller) const;
   void ApplyCommandTimeouts();
+  // Step()'s body; robot i moves for motion_time_s[i], or one time step when null.
+  void StepRobots(const double* motion_time_s);
 
   WorldParams params_;
   std::vector<Pose2> poses_;

@@ -1,0 +1,34 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dream/bridge/calibration_run.h"
+#include "dream/world/pose2.h"
+#include "dream/world/unicycle_command.h"
+
+namespace dream::bridge {
+
+// One robot of one calibration run, as the fits read it.
+struct CalibrationSeries {
+  std::string run;
+  int robot = 0;
+  std::vector<sim::Pose2> poses;                // per step, as measured
+  std::vector<sim::UnicycleCommand> commands;   // per step, as sent
+  std::vector<double> step_s;                   // per step but the last: how long it lasted
+  std::vector<bool> stale;                      // the pose repeats the step before's exactly
+  // A step within a few steps of a late one (a loop stall): which
+  // measurement shows its motion depends on the tracker's delay, so the fits
+  // of motion and noise leave these out.
+  std::vector<bool> near_late;
+  bool timed = false;
+
+  size_t steps() const { return poses.size(); }
+
+  static std::vector<CalibrationSeries> Of(const std::vector<CalibrationRun>& runs);
+};
+
+// Heading difference wrapped to (-pi, pi].
+double WrappedAngle(double radians);
+
+}  // namespace dream::bridge

@@ -1,0 +1,282 @@
+#include "dream/bridge/lab_calibration.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <stdexcept>
+
+#include "calibration_dynamics.h"
+#include "calibration_evidence.h"
+#include "calibration_series.h"
+#include "calibration_tracker.h"
+#include "dream/robotarium/robotarium_constants.h"
+#include "dream/world/printf_text.h"
+
+namespace dream::bridge {
+namespace {
+
+using robotarium::RobotariumConstants;
+constexpr double kDt = RobotariumConstants::kTimeStepSeconds;
+constexpr double kZ95 = 1.959963984540054;
+constexpr int kMaxDelaySteps = 30;   // 1 s: the real robots answer in under half of it
+constexpr double kMaxLagS = 1.0;
+constexpr double kMaxStartupM = 0.1;
+
+// Minimises f over [lo, hi] by golden-section search (f unimodal enough there).
+template <typename F>
+double GoldenMinimum(F f, double lo, double hi, int evaluations) {
+  const double ratio = (std::sqrt(5.0) - 1.0) / 2.0;
+  double a = lo, b = hi;
+  double c = b - ratio * (b - a), d = a + ratio * (b - a);
+  double fc = f(c), fd = f(d);
+  for (int i = 0; i < evaluations; ++i) {
+    if (fc < fd) {
+      b = d;
+      d = c;
+      fd = fc;
+      c = b - ratio * (b - a);
+      fc = f(c);
+    } else {
+      a = c;
+      c = d;
+      fc = fd;
+      d = a + ratio * (b - a);
+      fd = f(d);
+    }
+  }
+  return fc < fd ? c : d;
+}
+
+// Where f crosses `level` between `inside` (f below it) and `outside`, by bisection.
+template <typename F>
+double Crossing(F f, double inside, double outside, double level, int evaluations) {
+  for (int i = 0; i < evaluations; ++i) {
+    const double middle = 0.5 * (inside + outside);
+    (f(middle) <= level ? inside : outside) = middle;
+  }
+  return 0.5 * (inside + outside);
+}
+
+bool AnyMotionCommanded(const std::vector<CalibrationSeries>& series) {
+  for (const CalibrationSeries& s : series) {
+    for (const sim::UnicycleCommand& c : s.commands) {
+      if (std::abs(c.v_mps) > 0.01 || std::abs(c.w_radps) > 0.1) return true;
+    }
+  }
+  return false;
+}
+
+double LongestPath(const std::vector<CalibrationSeries>& series) {
+  double longest = 0;
+  for (const CalibrationSeries& s : series) {
+    double path = 0;
+    for (size_t k = 1; k < s.steps(); ++k) {
+      path += std::hypot(s.poses[k].x_m - s.poses[k - 1].x_m, s.poses[k].y_m - s.poses[k - 1].y_m);
+    }
+    // Noise alone walks too: measure net extent instead of path length.
+    double min_x = s.poses[0].x_m, max_x = min_x, min_y = s.poses[0].y_m, max_y = min_y;
+    for (const sim::Pose2& p : s.poses) {
+      min_x = std::min(min_x, p.x_m);
+      max_x = std::max(max_x, p.x_m);
+      min_y = std::min(min_y, p.y_m);
+      max_y = std::max(max_y, p.y_m);
+    }
+    longest = std::max(longest, std::hypot(max_x - min_x, max_y - min_y));
+    (void)path;
+  }
+  return longest;
+}
+
+// Mean and spread of per-robot values, and their 95 % intervals. The spread
+// is what is left of the values' variance after their own estimation error.
+struct Population {
+  double mean = 0, mean_half = 0, spread = 0, spread_low = 0, spread_high = 0;
+  int n = 0;
+};
+
+Population PopulationOf(const std::vector<double>& values, const std::vector<double>& errors) {
+  Population p;
+  p.n = static_cast<int>(values.size());
+  if (p.n == 0) return p;
+  double sum = 0, error_sq = 0;
+  for (size_t i = 0; i < values.size(); ++i) {
+    sum += values[i];
+    error_sq += errors[i] * errors[i];
+  }
+  p.mean = sum / p.n;
+  double sq = 0;
+  for (double v : values) sq += (v - p.mean) * (v - p.mean);
+  const double variance = p.n > 1 ? sq / (p.n - 1) : 0.0;
+  p.spread = std::sqrt(std::max(0.0, variance - error_sq / p.n));
+  p.mean_half = kZ95 * std::sqrt(std::max(variance, error_sq / p.n) / p.n);
+  if (p.n >= 3) {
+    // Wilson-Hilferty chi-square quantiles for n - 1 degrees of freedom.
+    const double k = p.n - 1;
+    auto chi2 = [k](double z) { return k * std::pow(1 - 2 / (9 * k) + z * std::sqrt(2 / (9 * k)), 3); };
+    const double spread_sq = p.spread * p.spread;
+    p.spread_low = std::sqrt(spread_sq * k / chi2(kZ95));
+    p.spread_high = std::sqrt(std::max(spread_sq, error_sq / p.n) * k / chi2(-kZ95));
+  }
+  return p;
+}
+
+}  // namespace
+
+CalibrationReport LabCalibration::Fit(const std::vector<CalibrationRun>& runs) const {
+  if (runs.empty()) throw std::runtime_error("nothing to calibrate: give at least one lab run");
+  for (const CalibrationRun& run : runs) CheckCalibrationRun(run);
+  const std::vector<CalibrationSeries> series = CalibrationSeries::Of(runs);
+  if (!AnyMotionCommanded(series)) {
+    throw std::runtime_error("no motion: no robot of " + runs.front().name +
+                             (runs.size() > 1 ? " (or the other runs)" : "") +
+                             " was ever commanded to move (|v| > 0.01 m/s or |w| > 0.1 rad/s); calibrate needs "
+                             "steps in v and w (dream export --calibration writes a run that has them)");
+  }
+  if (LongestPath(series) < 0.02) {
+    throw std::runtime_error("no motion: the poses never move more than 2 cm although commands were sent; are the "
+                             "poses and commands of the same run, and the poses not all the same?");
+  }
+
+  CalibrationReport report;
+  report.params = base_;
+  for (const CalibrationRun& run : runs) {
+    report.sources.push_back(run.name);
+    report.robots += run.track.num_robots;
+    report.robot_steps += static_cast<int64_t>(run.track.utime.size()) * run.track.num_robots;
+  }
+
+  double position_sigma = 0, heading_sigma = 0;
+  CalibrationTracker::RestNoise(series, &position_sigma, &heading_sigma);
+  if (position_sigma == 0.0) position_sigma = base_.pose_noise_m;
+  if (heading_sigma == 0.0) heading_sigma = base_.pose_noise_rad;
+  const CalibrationDynamics dynamics(series, base_, position_sigma, heading_sigma);
+
+  // The delay first, with the base's wheels; then the wheels around it.
+  DynamicsParams best{base_.pose_delay_steps + base_.command_latency_steps, base_.motor_lag_s, base_.motor_startup_m};
+  double best_cost = std::numeric_limits<double>::infinity();
+  std::map<int, double> delay_cost;
+  for (int delay = 0; delay <= kMaxDelaySteps; ++delay) {
+    const double cost = dynamics.Evaluate({delay, best.lag_s, best.startup_m}).cost;
+    delay_cost[delay] = cost;
+    if (cost < best_cost) {
+      best_cost = cost;
+      best.delay_steps = delay;
+    }
+  }
+  const int coarse_delay = best.delay_steps;
+  for (int delay = std::max(0, coarse_delay - 1); delay <= std::min(kMaxDelaySteps, coarse_delay + 1); ++delay) {
+    DynamicsParams trial{delay, best.lag_s, best.startup_m};
+    for (int round = 0; round < 2; ++round) {
+      trial.lag_s = GoldenMinimum([&](double lag) { return dynamics.Evaluate({delay, lag, trial.startup_m}).cost; },
+                                  0.0, kMaxLagS, 22);
+      trial.startup_m = GoldenMinimum(
+          [&](double startup) { return dynamics.Evaluate({delay, trial.lag_s, startup}).cost; }, 0.0, kMaxStartupM, 22);
+    }
+    const double cost = dynamics.Evaluate(trial).cost;
+    delay_cost[delay] = std::min(delay_cost[delay], cost);
+    if (cost < best_cost) {
+      best_cost = cost;
+      best = trial;
+    }
+  }
+  const DynamicsEvaluation fitted = dynamics.Evaluate(best);
+  // 95 % intervals: where the cost, scaled by its residual variance, rises by
+  // chi-square(1) = 3.84 with the other keys held at the fit.
+  const double scale = best_cost / std::max<double>(1.0, 2.0 * static_cast<double>(fitted.transitions) - 3.0);
+  const double level = best_cost + 3.84 * scale;
+  auto interval = [&](auto cost_at, double value, double lo, double hi, double* low, double* high) {
+    *low = cost_at(lo) <= level ? lo : Crossing(cost_at, value, lo, level, 18);
+    *high = cost_at(hi) <= level ? hi : Crossing(cost_at, value, hi, level, 18);
+  };
+  double lag_low = 0, lag_high = 0, startup_low = 0, startup_high = 0;
+  interval([&](double lag) { return dynamics.Evaluate({best.delay_steps, lag, best.startup_m}).cost; }, best.lag_s,
+           0.0, kMaxLagS, &lag_low, &lag_high);
+  interval([&](double s) { return dynamics.Evaluate({best.delay_steps, best.lag_s, s}).cost; }, best.startup_m, 0.0,
+           kMaxStartupM, &startup_low, &startup_high);
+  int delay_low = best.delay_steps, delay_high = best.delay_steps;
+  for (const auto& [delay, cost] : delay_cost) {
+    if (cost <= level) {
+      delay_low = std::min(delay_low, delay);
+      delay_high = std::max(delay_high, delay);
+    }
+  }
+
+  const std::string transitions = sim::PrintfText("%lld", static_cast<long long>(fitted.transitions));
+  const int pose_delay = std::min(base_.pose_delay_steps, best.delay_steps);
+  AddKey(&report, KeptKey(base_, "pose_delay_steps",
+                          "poses and commands show only the sum with command_latency_steps; kept the base's"));
+  AddKey(&report, FittedKey{"command_latency_steps", static_cast<double>(best.delay_steps - pose_delay),
+                            static_cast<double>(std::max(0, delay_low - pose_delay)),
+                            static_cast<double>(std::max(0, delay_high - pose_delay)), true,
+                            "total delay " + std::to_string(best.delay_steps) + " steps, from " + transitions +
+                                " pose pairs"});
+  AddKey(&report, FittedKey{"motor_lag_s", best.lag_s, lag_low, lag_high, true, "from " + transitions + " pose pairs"});
+  AddKey(&report, FittedKey{"motor_startup_m", best.startup_m, startup_low, startup_high, true,
+                            "from starts at the speeds the runs commanded"});
+  AddKey(&report, KeptKey(base_, "wheel_accel_limit_radps2", "the lag models the wheels; kept the base's"));
+
+  std::vector<double> linear, linear_se, angular, angular_se, drift, drift_se;
+  for (const RobotGains& g : fitted.gains) {
+    if (g.linear_seen) {
+      linear.push_back(g.linear);
+      linear_se.push_back(g.linear_se);
+    }
+    if (g.angular_seen) {
+      angular.push_back(g.angular);
+      angular_se.push_back(g.angular_se);
+      drift.push_back(g.drift_radps);
+      drift_se.push_back(g.drift_se);
+    }
+  }
+  auto add_population = [&](const char* mean_key, const char* spread_key, const std::vector<double>& values,
+                            const std::vector<double>& errors, const char* what) {
+    const Population p = PopulationOf(values, errors);
+    if (p.n == 0) {
+      AddKey(&report, KeptKey(base_, mean_key, std::string("no robot ") + what));
+      AddKey(&report, KeptKey(base_, spread_key, std::string("no robot ") + what));
+      return;
+    }
+    const std::string robots = std::to_string(p.n) + (p.n == 1 ? " robot" : " robots");
+    AddKey(&report, FittedKey{mean_key, p.mean, p.mean - p.mean_half, p.mean + p.mean_half, true, robots});
+    if (p.n >= 3) {
+      AddKey(&report, FittedKey{spread_key, p.spread, p.spread_low, p.spread_high, true, "between " + robots});
+    } else {
+      AddKey(&report, KeptKey(base_, spread_key, "a spread between robots needs 3 robots or more (" + robots + ")"));
+    }
+  };
+  add_population("linear_gain_mean", "linear_gain_spread", linear, linear_se, "drove far enough");
+  add_population("angular_gain_mean", "angular_gain_spread", angular, angular_se, "turned far enough");
+  add_population("heading_drift_mean_radps", "heading_drift_spread_radps", drift, drift_se, "turned far enough");
+
+  // Who was moving at each measurement, as the world decides it (the
+  // velocity of the step the measurement shows).
+  std::vector<std::vector<bool>> moving(series.size());
+  std::vector<sim::UnicycleCommand> driven;
+  std::vector<double> motion_s;
+  for (size_t r = 0; r < series.size(); ++r) {
+    dynamics.Predict(series[r], best, &driven, &motion_s);
+    moving[r].assign(series[r].steps(), false);
+    for (size_t k = 1; k < series[r].steps(); ++k) {
+      const sim::UnicycleCommand& v = driven[k - 1];
+      moving[r][k] = std::abs(v.v_mps) >= 0.002 || std::abs(v.w_radps) >= 0.02;
+    }
+  }
+  CalibrationTracker(series, moving, base_).Fit(&report);
+  FillCalibrationEvidence(series, dynamics, best, fitted, &report);
+
+  // Keys nothing here fits keep the base's, and every key appears once, in
+  // RealismParams::Fields() order.
+  std::vector<FittedKey> ordered;
+  for (const sim::RealismParams::Field& field : sim::RealismParams::Fields()) {
+    const FittedKey* found = report.Find(field.key);
+    ordered.push_back(found != nullptr ? *found
+                                       : KeptKey(base_, field.key, "not visible in poses and commands; kept the base's"));
+  }
+  report.keys = std::move(ordered);
+  std::string error;
+  if (!report.params.IsValid(&error)) throw std::runtime_error("the fitted lab model is not valid: " + error);
+  return report;
+}
+
+}  // namespace dream::bridge
