@@ -41,7 +41,6 @@ void CalibrationDynamics::Predict(const CalibrationSeries& series, const Dynamic
   sim::RealismParams model = base_;
   model.motor_lag_s = params.lag_s;
   model.motor_startup_m = params.startup_m;
-  model.wheel_accel_limit_radps2 = 0.0;
   sim::RobotResponse response(model, sim::RobotTraits{}, RobotariumConstants::kWheelRadiusMeters,
                               RobotariumConstants::kMaxWheelVelocityRadps);
   const size_t transitions = series.steps() - 1;

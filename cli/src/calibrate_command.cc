@@ -13,6 +13,8 @@
 #include "dream/bridge/calibration_picture.h"
 #include "dream/bridge/calibration_run.h"
 #include "dream/bridge/lab_calibration.h"
+#include "dream/bridge/lab_model_check.h"
+#include "dream/config/run_config.h"
 #include "dream/node/atomic_file.h"
 #include "dream/render/render_format.h"
 
@@ -26,10 +28,48 @@ struct CalibrateArgs {
   std::string out_path;
   std::string picture_path;  ///< empty: the realism file's name with .png
   std::string base = "lab";
+  std::vector<std::string> check_models;  ///< --check: presets or realism files to hold against the runs
   bridge::CalibrationInputOptions options;
 };
 
+// A preset's name, or a realism file.
+bridge::NamedModel ModelNamed(const std::string& name) {
+  sim::RealismParams params;
+  if (sim::RealismParams::FromPreset(name, &params)) return {name, params};
+  std::error_code error;
+  if (!fs::is_regular_file(name, error)) {
+    throw std::runtime_error("--check " + name + ": neither a realism preset (ideal, lab, lab_v1) nor a realism file");
+  }
+  return {name, config::LoadRealismFile(name)};
+}
+
+// --check: each model against the runs, side by side; nothing is written.
+int RunCheck(const CalibrateArgs& args, const std::vector<bridge::CalibrationRun>& runs, const sim::RealismParams& base) {
+  std::vector<bridge::NamedModel> models;
+  for (const std::string& name : args.check_models) models.push_back(ModelNamed(name));
+  spdlog::info("holding {} model(s) against {} run(s)", models.size(), runs.size());
+  const bridge::CalibrationReport real = bridge::LabCalibration(base).Fit(runs);
+  const std::vector<bridge::ModelPrediction> predictions = bridge::LabModelCheck::Predict(runs, models);
+  std::cout << bridge::LabModelCheck::Table(real, predictions, models);
+  return kExitOk;
+}
+
 int RunCalibrate(const CalibrateArgs& args) {
+  if (args.check_models.empty() && args.out_path.empty()) {
+    throw std::runtime_error("give --out FILE.yaml (the realism file to write), or --check MODEL to hold models "
+                             "against the runs");
+  }
+  sim::RealismParams base;
+  if (!sim::RealismParams::FromPreset(args.base, &base)) {
+    throw std::runtime_error("--base " + args.base + ": not a realism preset (ideal, lab, lab_v1)");
+  }
+  std::vector<bridge::CalibrationRun> runs;
+  for (const std::string& input : args.inputs) {
+    spdlog::info("reading {}", input);
+    runs.push_back(bridge::ReadCalibrationRun(input, args.options));
+    if (StopFlag()) return kExitInterrupted;
+  }
+  if (!args.check_models.empty()) return RunCheck(args, runs, base);
   const fs::path out(args.out_path);
   if (out.extension() != ".yaml" && out.extension() != ".yml") {
     throw std::runtime_error("--out " + args.out_path + ": a realism file is YAML; name it like mylab.yaml");
@@ -39,16 +79,6 @@ int RunCalibrate(const CalibrateArgs& args) {
   const std::optional<sim::RenderFormat> format = sim::RenderFormatOfPath(picture);
   if (!format || !sim::IsPictureFormat(*format)) {
     throw std::runtime_error("--picture " + picture + ": a picture is .png or .svg");
-  }
-  sim::RealismParams base;
-  if (!sim::RealismParams::FromPreset(args.base, &base)) {
-    throw std::runtime_error("--base " + args.base + ": not a realism preset (ideal, lab)");
-  }
-  std::vector<bridge::CalibrationRun> runs;
-  for (const std::string& input : args.inputs) {
-    spdlog::info("reading {}", input);
-    runs.push_back(bridge::ReadCalibrationRun(input, args.options));
-    if (StopFlag()) return kExitInterrupted;
   }
   spdlog::info("fitting the lab model to {} run(s)", runs.size());
   const bridge::CalibrationReport report = bridge::LabCalibration(base).Fit(runs);
@@ -70,13 +100,19 @@ void DeclareCalibrateCommand(CommandLine& line) {
       "and a picture (real against fitted). Keys the runs cannot determine keep --base's value.\n"
       "Inputs: folders made by dream import (or dream run), .npz/.mat files with poses 3 x N x T\n"
       "and commands 2 x N x T (and optionally a time vector), or a .npy of 5 x N x T.\n"
-      "Example: dream calibrate runs/lab1 runs/lab2 --out mylab.yaml",
+      "With --check, holds lab models (presets or realism files) against the runs instead:\n"
+      "delays per speed, 1 s open-loop prediction errors and each key, side by side.\n"
+      "Example: dream calibrate runs/lab1 runs/lab2 --out mylab.yaml\n"
+      "         dream calibrate runs/lab3 --check ideal,lab_v1,lab,mylab.yaml",
       RunCalibrate);
   command->add_option("runs", args->inputs, "Lab runs: run folders, .npz, .mat or .npy files")->required();
-  command->add_option("--out", args->out_path, "The realism file to write (YAML)")->required();
+  command->add_option("--out", args->out_path, "The realism file to write (YAML); not with --check");
+  command->add_option("--check", args->check_models,
+                      "Hold these models (presets or realism files, comma-separated) against the runs; writes nothing")
+      ->delimiter(',');
   command->add_option("--picture", args->picture_path, "The picture to draw (.png or .svg; default: --out as .png)");
   command->add_option("--base", args->base, "The preset whose values the undetermined keys keep")
-      ->check(CLI::IsMember({"lab", "ideal"}));
+      ->check(CLI::IsMember({"lab", "ideal", "lab_v1"}));
   command->add_option("--poses", args->options.poses_name, "Name of the poses array in .npz/.mat files (3 x N x T)");
   command->add_option("--commands", args->options.commands_name,
                       "Name of the commands array in .npz/.mat files (2 x N x T: v, w sent)");

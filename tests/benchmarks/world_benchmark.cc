@@ -70,24 +70,9 @@ BENCHMARK(BM_UnicycleWorldStep)->Arg(20)->Arg(50)->Arg(1000)->Arg(10000)->Unit(b
 
 // The step with world.realism on, 20 robots driving circles: arg 0 the
 // official world (ideal), 1 the lab preset of before issue 22 (1 + 1 steps,
-// wheel acceleration limit, noise, dropouts), 2 today's lab preset (the
+// wheel acceleration limit, noise, dropouts: `lab_v1`), 2 today's lab preset (the
 // wheels' lag and start-up, gains, drift, late steps and stalls as well).
 // docs/performance.md reports what the lab model costs a step.
-RealismParams OldLabPreset() {
-  RealismParams lab;
-  lab.pose_noise_m = 0.001;
-  lab.pose_noise_rad = 0.005;
-  lab.pose_delay_steps = 1;
-  lab.tracking_dropout_probability = 0.01;
-  lab.tracker_drop_s = 5.0;
-  lab.command_latency_steps = 1;
-  lab.dead_zone_v_mps = 1e-4;
-  lab.dead_zone_w_radps = 0.01;
-  lab.wheel_accel_limit_radps2 = 100.0;
-  lab.axle_length_m = 0.105;
-  return lab;
-}
-
 void BM_RealismStep(benchmark::State& state) {
   const UnicycleWorld layout = MakeBusyWorld(20);
   std::vector<Pose2> poses = layout.poses();
@@ -96,7 +81,7 @@ void BM_RealismStep(benchmark::State& state) {
   if (state.range(0) == 0) {
     world = std::make_unique<UnicycleWorld>(WorldParams{}, poses);
   } else {
-    world = std::make_unique<RealisticWorld>(WorldParams{}, state.range(0) == 1 ? OldLabPreset() : RealismParams::Lab(),
+    world = std::make_unique<RealisticWorld>(WorldParams{}, state.range(0) == 1 ? RealismParams::LabV1() : RealismParams::Lab(),
                                              1, poses);
   }
   for (auto _ : state) {

@@ -3,6 +3,7 @@
 // the calibration program, and every key the data determine comes back
 // within its own 95 % interval. Also each refusal of calibrate's input.
 #include "dream/bridge/lab_calibration.h"
+#include "dream/bridge/lab_model_check.h"
 
 #include <gtest/gtest.h>
 
@@ -151,6 +152,45 @@ TEST(LabCalibrationTest, LabPresetShowsTheRealRobotsDelays) {
   const FittedKey* turning = report.Find("angular_gain_mean");
   ASSERT_NE(turning, nullptr);
   EXPECT_NEAR(turning->value, 0.9, 0.05);
+  // The tracker's statistics against the measured table, within 30 %: noise
+  // 0.30-0.35 mm at rest and 0.45-0.76 mm moving, headings on 1 mrad, 0.07-0.7 %
+  // of moving poses repeated, in runs of 2.5-5.6 steps on average.
+  auto value = [&report](const char* key) { return report.Find(key)->value; };
+  EXPECT_NEAR(value("pose_noise_m"), 0.00033, 0.3 * 0.00033);
+  EXPECT_NEAR(value("pose_noise_m") * value("pose_noise_moving_factor"), 0.0006, 0.3 * 0.0006);
+  EXPECT_EQ(value("pose_quantum_rad"), 0.001);
+  EXPECT_EQ(value("pose_quantum_m"), 0.0);
+  double moving_stale = 0;
+  for (int length : report.stale_bursts) moving_stale += length;
+  double mean_run = moving_stale / static_cast<double>(report.stale_bursts.size());
+  EXPECT_NEAR(mean_run, 4.0, 0.3 * 4.0);
+  EXPECT_GE(value("tracking_dropout_probability") * mean_run, 0.0007 * 0.7);
+  EXPECT_LE(value("tracking_dropout_probability") * mean_run, 0.007 * 1.3);
+}
+
+// --check: the model that made a run predicts it better than others do, and
+// its steps from rest show the run's own delays.
+TEST(LabCalibrationTest, TheTrueModelPredictsItsOwnRunsBest) {
+  const sim::RealismParams lab = SyntheticLab();
+  const std::vector<CalibrationRun> runs = {SyntheticRun(lab, 6, 11, 1)};
+  const std::vector<NamedModel> models = {{"ideal", sim::RealismParams::Ideal()},
+                                          {"lab_v1", sim::RealismParams::LabV1()},
+                                          {"truth", lab}};
+  const std::vector<ModelPrediction> predictions = LabModelCheck::Predict(runs, models);
+  ASSERT_EQ(predictions.size(), 3U);
+  EXPECT_GT(predictions[2].predictions, 100);
+  EXPECT_LT(predictions[2].position_error_m, 0.5 * predictions[0].position_error_m);
+  EXPECT_LT(predictions[2].position_error_m, 0.5 * predictions[1].position_error_m);
+  EXPECT_LT(predictions[2].heading_error_rad, predictions[0].heading_error_rad);
+  for (const StepResponseCurve& curve : predictions[2].step_responses) {
+    EXPECT_NEAR(curve.fitted_delay_s, curve.real_delay_s, 0.03) << curve.speed_mps;
+  }
+  for (const StepResponseCurve& curve : predictions[0].step_responses) {
+    EXPECT_LT(curve.fitted_delay_s, curve.real_delay_s - 0.15) << "ideal answers at once; " << curve.speed_mps;
+  }
+  const std::string table = LabModelCheck::Table(LabCalibration().Fit(runs), predictions, models);
+  EXPECT_NE(table.find("| speed (starts) | real | ideal | lab_v1 | truth |"), std::string::npos) << table;
+  EXPECT_NE(table.find("| motor_lag_s |"), std::string::npos) << table;
 }
 
 CalibrationRun Still(int steps) {

@@ -138,10 +138,10 @@ TEST(RealismConfigTest, BadValuesNameFileLineAndKey) {
   const std::string preset = ErrorOf(ConfigWith("  realism: labb\n"));
   EXPECT_NE(preset.find("test.yaml:8"), std::string::npos) << preset;
   EXPECT_NE(preset.find("unknown realism preset 'labb' "
-                        "(did you mean 'lab'?); known presets: ideal, lab"), std::string::npos) << preset;
+                        "(did you mean 'lab'?); known presets: ideal, lab, lab_v1"), std::string::npos) << preset;
 
   const std::string map_preset = ErrorOf(ConfigWith("  realism: {preset: real}\n"));
-  EXPECT_NE(map_preset.find("known presets: ideal, lab"), std::string::npos) << map_preset;
+  EXPECT_NE(map_preset.find("known presets: ideal, lab, lab_v1"), std::string::npos) << map_preset;
 
   const std::string unknown = ErrorOf(ConfigWith("  realism:\n    pose_nosie_m: 0.001\n"));
   EXPECT_NE(unknown.find("pose_nosie_m"), std::string::npos) << unknown;

@@ -24,16 +24,4 @@ inline long FuzzScale() {
   return scale;
 }
 
-/// A time bound of a fuzz test: `ci_seconds` at scale 1 in the Release build,
-/// times the scale, and five times more under AddressSanitizer (which makes
-/// the log readers about three times slower).
-inline double FuzzTimeLimitSeconds(double ci_seconds) {
-#if defined(__SANITIZE_ADDRESS__)
-  constexpr double kSanitizerSlowdown = 5.0;
-#else
-  constexpr double kSanitizerSlowdown = 1.0;
-#endif
-  return ci_seconds * static_cast<double>(FuzzScale()) * kSanitizerSlowdown;
-}
-
 }  // namespace dream::testing

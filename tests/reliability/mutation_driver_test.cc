@@ -202,7 +202,6 @@ class TempFolder {
 };
 
 TEST(MutationDriver, MutatedMessagesAreDecodedOrRefusedByEveryDecoder) {
-  const auto start = std::chrono::steady_clock::now();
   Mutator mutator(kSeed);
   long decoded = 0;
   long refused = 0;
@@ -222,11 +221,9 @@ TEST(MutationDriver, MutatedMessagesAreDecodedOrRefusedByEveryDecoder) {
   EXPECT_GT(refused, decoded);
   EXPECT_GT(decoded, 0);
   RecordProperty("decodes", std::to_string(decoded + refused));
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), FuzzTimeLimitSeconds(10.0));
 }
 
 TEST(MutationDriver, MutatedRunLogsAreReadOrRefusedWithFileAndByte) {
-  const auto start = std::chrono::steady_clock::now();
   const TempFolder folder;
   const std::vector<uint8_t> original = SmallRunLog(folder.file("run.lcmlog"));
   // The unmutated log reads everywhere, so the mutations below reach deep.
@@ -284,7 +281,6 @@ TEST(MutationDriver, MutatedRunLogsAreReadOrRefusedWithFileAndByte) {
   EXPECT_GT(refused_by_reader, 0);
   EXPECT_LT(refused_by_reader, log_mutations);
   RecordProperty("logs", std::to_string(log_mutations));
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), FuzzTimeLimitSeconds(10.0));
 }
 
 }  // namespace

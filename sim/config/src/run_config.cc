@@ -125,6 +125,12 @@ sim::RealismParams RealismBase(const ConfigNode& node) {
   return node.Has("preset") ? RealismPreset(node.Required("preset")) : sim::RealismParams::Ideal();
 }
 
+// A realism file's map over `base`, or over its own preset.
+sim::RealismParams RealismOfFile(const ConfigNode& file, const sim::RealismParams& base) {
+  file.RejectUnknownKeys(RealismKeys(nullptr));
+  return ReadRealismKeys(file, file.Has("preset") ? RealismBase(file) : base);
+}
+
 // `file: PATH`: a realism file (a map of realism keys, with an optional
 // preset; what dream calibrate writes), relative to the config's folder. Its
 // keys go over `base` (the config's preset), or over its own preset.
@@ -156,11 +162,9 @@ sim::RealismParams ReadRealismFile(const ConfigNode& file_node, const sim::Reali
     file_node.Fail("'" + file_path + "' is not a realism file: a realism file is a map of world.realism keys (as dream "
                    "calibrate writes)");
   }
-  const ConfigNode file(file_root, file_path, "");
-  file.RejectUnknownKeys(RealismKeys(nullptr));
   config->realism_file_as_written = written;
   config->realism_file = fs::absolute(path, error).lexically_normal().string();
-  return ReadRealismKeys(file, file.Has("preset") ? RealismBase(file) : base);
+  return RealismOfFile(ConfigNode(file_root, file_path, ""), base);
 }
 
 // `world.realism`: a preset name, or a map of models: `preset:` (ideal when
@@ -327,6 +331,15 @@ RunConfig LoadRunConfig(const ConfigNode& root) {
   config.obstacles = ReadObstacles(root);
   config.initial_poses = ReadInitialPoses(root, config);
   return config;
+}
+
+sim::RealismParams LoadRealismFile(const std::string& path) {
+  YAML::Node root = ConfigNode::ParseYaml(ConfigNode::ReadFile(path), path);
+  if (!root.IsMap()) {
+    throw ConfigError(path + ": not a realism file: a realism file is a map of world.realism keys (as dream calibrate "
+                      "writes)");
+  }
+  return RealismOfFile(ConfigNode(root, path, ""), sim::RealismParams::Ideal());
 }
 
 RunConfig LoadRunConfigFile(const std::string& path) { return LoadRunConfig(ConfigNode::LoadFile(path)); }

@@ -102,8 +102,27 @@ RealismParams RealismParams::Lab() {
   return lab;
 }
 
+// The lab preset before issue 22 fitted it to real runs: estimates from the
+// lab's published sources, kept so a model can be held against it.
+RealismParams RealismParams::LabV1() {
+  RealismParams lab;
+  lab.pose_noise_m = 0.001;
+  lab.pose_noise_rad = 0.005;
+  lab.pose_delay_steps = 1;
+  lab.tracking_dropout_probability = 0.01;
+  lab.tracking_dropout_mean_steps = 1.0;
+  lab.tracker_drop_s = 5.0;
+  lab.command_latency_steps = 1;
+  lab.command_brake_s = 0.5;
+  lab.dead_zone_v_mps = 1e-4;
+  lab.dead_zone_w_radps = 0.01;
+  lab.wheel_accel_limit_radps2 = 100.0;
+  lab.axle_length_m = 0.105;
+  return lab;
+}
+
 const std::vector<std::string>& RealismParams::PresetNames() {
-  static const std::vector<std::string> names{"ideal", "lab"};
+  static const std::vector<std::string> names{"ideal", "lab", "lab_v1"};
   return names;
 }
 
@@ -112,6 +131,8 @@ bool RealismParams::FromPreset(const std::string& name, RealismParams* params) {
     *params = Ideal();
   } else if (name == "lab") {
     *params = Lab();
+  } else if (name == "lab_v1") {
+    *params = LabV1();
   } else {
     return false;
   }

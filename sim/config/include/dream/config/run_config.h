@@ -46,6 +46,11 @@ struct RunConfig : ControllerConfig {
 /// and value, with the allowed values, for any mistake.
 RunConfig LoadRunConfig(const ConfigNode& root);
 
+/// A realism file (what `dream calibrate` writes; `world.realism: {file:}`):
+/// its keys over its own preset, or over ideal. @throws ConfigError naming
+/// the file, line and key.
+sim::RealismParams LoadRealismFile(const std::string& path);
+
 /// LoadRunConfig(ConfigNode::LoadFile(path)).
 RunConfig LoadRunConfigFile(const std::string& path);
 

@@ -98,6 +98,9 @@ struct RealismParams {
 
   static RealismParams Ideal();
   static RealismParams Lab();
+  // `lab_v1`: the lab preset before it was fitted to real runs (estimates:
+  // 1 + 1 steps of delay, 100 rad/s^2 wheels), kept for comparison.
+  static RealismParams LabV1();
   // The preset called `name` into *params; false when there is none.
   static bool FromPreset(const std::string& name, RealismParams* params);
   static const std::vector<std::string>& PresetNames();

@@ -1,0 +1,44 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dream/bridge/calibration_report.h"
+#include "dream/bridge/calibration_run.h"
+#include "dream/world/realism_params.h"
+
+namespace dream::bridge {
+
+/// A lab model to hold against real runs (`dream calibrate --check`).
+struct NamedModel {
+  std::string name;  ///< a preset's name or a realism file's path
+  sim::RealismParams params;
+};
+
+/// How one model predicts real runs it may not have been fitted on.
+struct ModelPrediction {
+  std::string name;
+  std::vector<StepResponseCurve> step_responses;  ///< the runs' starts from rest, real against this model
+  double position_error_m = 0.0;  ///< RMS error of 1 s open-loop predictions from the real poses
+  double heading_error_rad = 0.0;
+  int predictions = 0;
+};
+
+/// Holds lab models against real runs: the effective delay and first motion
+/// of their starts from rest, and the error of 1 s open-loop predictions
+/// (from each real pose, the model driven by the commands the run sent,
+/// against the real pose 1 s later), beside what the runs themselves show
+/// (a fit's statistics: gains, noise, repeated poses).
+class LabModelCheck {
+ public:
+  /// @throws std::runtime_error as LabCalibration::Fit for unusable runs.
+  static std::vector<ModelPrediction> Predict(const std::vector<CalibrationRun>& runs,
+                                              const std::vector<NamedModel>& models);
+  /// The side-by-side table: per speed the real and each model's effective
+  /// delay and first motion; each model's prediction errors; and each key the
+  /// runs show (`real`, a fit of them) against each model's value.
+  static std::string Table(const CalibrationReport& real, const std::vector<ModelPrediction>& predictions,
+                           const std::vector<NamedModel>& models);
+};
+
+}  // namespace dream::bridge
