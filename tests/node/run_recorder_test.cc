@@ -135,6 +135,10 @@ TEST_F(RunRecorderTest, RefusedMessagesStayOutOfTheRunLogAndAreKeptApartBounded)
           lcm::Publish(bus, "DREAM_FAULT_1", fault);
           radio.run_id = poses.run_id + 1;
           lcm::Publish(bus, "DREAM_RADIO_0", radio);  // another run's
+          radio.run_id = poses.run_id;
+          radio.payload.assign(70000, 1);  // over lcm::MessageLimits: every receiver drops it
+          radio.payload_size = 70000;
+          lcm::Publish(bus, "DREAM_RADIO_0", radio);
           for (int i = 0; i < kMadeUpChannels; ++i) {
             bus.Publish("MADE_UP_" + std::to_string(i), junk.data(), static_cast<int>(junk.size()));
           }
@@ -179,12 +183,12 @@ TEST_F(RunRecorderTest, RefusedMessagesStayOutOfTheRunLogAndAreKeptApartBounded)
   EXPECT_EQ(outcome.bad_messages.at("DREAM_APPLIED"), 1);
   EXPECT_EQ(outcome.bad_messages.at("DREAM_MEASURED_POSES"), 1);
   EXPECT_EQ(outcome.bad_messages.at("DREAM_FAULT_1"), 1);
-  EXPECT_EQ(outcome.bad_messages.at("DREAM_RADIO_0"), 1);
+  EXPECT_EQ(outcome.bad_messages.at("DREAM_RADIO_0"), 2);
   EXPECT_TRUE(outcome.robot_faults.empty());
   // Counted all, named at most RefusedRecord::kMaxChannels, first step kept.
   long counted = 0;
   for (const auto& [channel, seen] : outcome.refused) counted += seen.count;
-  EXPECT_EQ(counted, kMadeUpChannels + 4);
+  EXPECT_EQ(counted, kMadeUpChannels + 5);
   EXPECT_LE(outcome.refused.size(), RefusedRecord::kMaxChannels + 1);
   EXPECT_EQ(outcome.refused.at("DREAM_APPLIED").first_step, 3);
   EXPECT_EQ(outcome.refused.at(RefusedRecord::kOtherChannels).first_step, 3);

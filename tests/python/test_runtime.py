@@ -477,6 +477,35 @@ class ControllerFaultTest(SpecFixture):
                 agent.step(world(step, [[0, 0, 0], [1, 0, 0]]))
             self.assertEqual(str(caught.exception), expected)
 
+    def test_an_oversize_radio_payload_is_the_controllers_fault_at_its_on_radio(self):
+        # Issue 23: a 100 KB payload was sent, every receiver dropped it, and the run was clean.
+        module = self.module("loud.py", """
+            from dream import Robot
+
+
+            class Loud(Robot):
+                def on_radio(self, heard):
+                    return b"x" * 100000
+
+                def update(self, step):
+                    return (0.0, 0.0)
+
+
+            class JustRight(Loud):
+                def on_radio(self, heard):
+                    return b"x" * 65536
+            """)
+        radio = {"kind": "range", "period_steps": [1, 1], "range_m": 1.0, "graph": [], "leaders": [],
+                 "loss_probability": 0.0, "delay_steps": 0}
+        agent = ControllerSpec.from_json(json.dumps(self.spec(module, "Loud", {}, radio=radio))).make_agent(0)
+        with self.assertRaises(ControllerFault) as caught:
+            agent.step(world(1, [[0, 0, 0], [1, 0, 0]]))
+        self.assertEqual(str(caught.exception),
+                         f"{module}:6: in on_radio: ValueError: a radio payload of 100000 bytes is over the limit "
+                         f"of 65536 bytes: every receiver would drop it. Send less, e.g. fewer or smaller fields")
+        agent = ControllerSpec.from_json(json.dumps(self.spec(module, "JustRight", {}, radio=radio))).make_agent(0)
+        self.assertEqual(len(agent.step(world(1, [[0, 0, 0], [1, 0, 0]])).broadcast), 65536)
+
     def test_bad_update_result_and_setup_fault(self):
         module = self.module("bad.py", """
             from dream import Robot
