@@ -295,6 +295,17 @@ def check_submission(case, go_to_goal_export):
     broken = case.path("broken_export")
     shutil.copytree(go_to_goal_export, broken)
     os.remove(os.path.join(broken, "upload", "dream_timer.py"))
+    # The export's digests name the missing file before anything runs ...
+    output, _ = run([case.dream, "check-submission", broken, "--out", check_dir, "--overwrite"] + case.check_flags,
+                    expect=1)
+    check("upload/dream_timer.py: missing" in output, "a check of an upload without dream_timer.py: " + output[-1500:])
+    # ... and with them edited too, the script fails in the simulator.
+    manifest_path = os.path.join(broken, "export.json")
+    with open(manifest_path) as f:
+        manifest = json.load(f)
+    del manifest["upload_sha256"]["dream_timer.py"]
+    with open(manifest_path, "w") as f:
+        json.dump(manifest, f)
     output, _ = run([case.dream, "check-submission", broken, "--out", check_dir, "--overwrite"] + case.check_flags,
                     expect=4)
     check("dream_timer" in output, "a check of an upload without dream_timer.py: " + output[-1500:])
