@@ -454,6 +454,20 @@ class SpecErrorTest(SpecFixture):
                                json.dumps(spec))
 
 
+    def test_spec_nested_too_deeply_is_a_config_error_not_a_recursion(self):
+        # Issue 23: an edited spec of deeply nested JSON failed with a RecursionError's traceback.
+        deep = "[" * 100000 + "]" * 100000
+        self.assertRaisesRegex(ConfigError, r"^controller spec: nested more than 128 levels deep",
+                               ControllerSpec.from_json, deep)
+        spec = self.go_to_goal()
+        spec["params"]["goal"] = {"value": json.loads("[" * 129 + "]" * 129), "line": 3}
+        self.assertRaisesRegex(ConfigError, "nested more than 128 levels deep", ControllerSpec.from_json,
+                               json.dumps(spec))
+        # Brackets inside strings are text, not nesting.
+        spec = self.go_to_goal()
+        spec["name"] = "[{" * 200 + '\\"'
+        self.assertEqual(ControllerSpec.from_json(json.dumps(spec)).num_robots, 2)
+
 class ControllerFaultTest(SpecFixture):
     def test_fault_names_the_users_line_even_through_a_helper(self):
         self.module("faulty_helper.py", """
