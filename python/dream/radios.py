@@ -13,7 +13,7 @@ import numpy as np
 
 from .robot import number_text
 
-# The largest payload a broadcast may carry, in bytes (lcm::MessageLimits::kPayloadBytes):
+# The largest payload a broadcast may carry, in bytes (lcm::MessageLimits::kRadioPayloadBytes):
 # every receiver, and the world, refuses a radio message with more.
 MAX_PAYLOAD_BYTES = 1 << 16
 
