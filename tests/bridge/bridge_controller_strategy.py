@@ -295,7 +295,20 @@ def check_submission(case, go_to_goal_export):
     broken = case.path("broken_export")
     shutil.copytree(go_to_goal_export, broken)
     os.remove(os.path.join(broken, "upload", "dream_timer.py"))
-    # The export's digests name the missing file before anything runs ...
+    # Issue 23: start poses moved by 0.3 m after the export passed the check clean; the export's
+    # digests name the edited file before anything runs ...
+    import numpy as np
+    moved = case.path("moved_export")
+    shutil.copytree(go_to_goal_export, moved)
+    poses_path = os.path.join(moved, "upload", "dream_initial_poses.npy")
+    poses = np.load(poses_path, allow_pickle=False)
+    poses[0, 0] += 0.3
+    np.save(poses_path, poses)
+    output, _ = run([case.dream, "check-submission", moved, "--out", case.path("moved_check")] + case.check_flags,
+                    expect=1)
+    check("upload/dream_initial_poses.npy: changed after the export" in output,
+          "a check of an upload whose start poses were edited: " + output[-1500:])
+    # ... and a missing file
     output, _ = run([case.dream, "check-submission", broken, "--out", check_dir, "--overwrite"] + case.check_flags,
                     expect=1)
     check("upload/dream_timer.py: missing" in output, "a check of an upload without dream_timer.py: " + output[-1500:])
