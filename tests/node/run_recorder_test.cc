@@ -115,7 +115,17 @@ TEST_F(RunRecorderTest, RefusedMessagesStayOutOfTheRunLogAndAreKeptApartBounded)
           radio.agent_id = 10;
           radio.payload = {1, 2, 3};
           radio.payload_size = 3;
-          if (poses.step == 2) lcm::Publish(bus, "DREAM_RADIO_0", radio);  // the run's own: kept
+          if (poses.step == 2) {
+            lcm::Publish(bus, "DREAM_RADIO_0", radio);  // the run's own: kept
+            lcm::Publish(bus, "DREAM_RADIO_0", radio);  // a resend of it: not kept twice
+          }
+          if (poses.step == 4) {  // a flood of the run's own radio: kept up to the per-step limit
+            for (uint8_t i = 0; i < 10; ++i) {
+              radio.payload = {i};
+              radio.payload_size = 1;
+              lcm::Publish(bus, "DREAM_RADIO_0", radio);
+            }
+          }
           if (poses.step != 3) return true;
           applied_commands_t applied{};
           applied.step = poses.step;
@@ -179,16 +189,16 @@ TEST_F(RunRecorderTest, RefusedMessagesStayOutOfTheRunLogAndAreKeptApartBounded)
     if (record.channel == "DREAM_RADIO_0") ++radio;
   }
   EXPECT_EQ(applied, 6);  // the world's own, one per step
-  EXPECT_EQ(radio, 1);
+  EXPECT_EQ(radio, 1 + SimNode::kMaxRadioPerRobotPerStep);
   EXPECT_EQ(outcome.bad_messages.at("DREAM_APPLIED"), 1);
   EXPECT_EQ(outcome.bad_messages.at("DREAM_MEASURED_POSES"), 1);
   EXPECT_EQ(outcome.bad_messages.at("DREAM_FAULT_1"), 1);
-  EXPECT_EQ(outcome.bad_messages.at("DREAM_RADIO_0"), 2);
+  EXPECT_EQ(outcome.bad_messages.at("DREAM_RADIO_0"), 2 + 10 - SimNode::kMaxRadioPerRobotPerStep);
   EXPECT_TRUE(outcome.robot_faults.empty());
   // Counted all, named at most RefusedRecord::kMaxChannels, first step kept.
   long counted = 0;
   for (const auto& [channel, seen] : outcome.refused) counted += seen.count;
-  EXPECT_EQ(counted, kMadeUpChannels + 5);
+  EXPECT_EQ(counted, kMadeUpChannels + 5 + 10 - SimNode::kMaxRadioPerRobotPerStep);
   EXPECT_LE(outcome.refused.size(), RefusedRecord::kMaxChannels + 1);
   EXPECT_EQ(outcome.refused.at("DREAM_APPLIED").first_step, 3);
   EXPECT_EQ(outcome.refused.at(RefusedRecord::kOtherChannels).first_step, 3);

@@ -4,7 +4,9 @@
 
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <stdexcept>
+#include <string_view>
 #include <thread>
 
 #include "dream/applied_commands_t.hpp"
@@ -142,7 +144,23 @@ SimNode::Heard SimNode::OnRadio(const std::string& channel, const void* data, in
     problem = "radio sent at step " + std::to_string(radio.step) + " but the world is at step " +
               std::to_string(world_.step());
   }
-  if (problem.empty()) return Heard::kUsed;
+  if (problem.empty()) {
+    RobotSlot& robot = robots_[static_cast<size_t>(*id)];
+    const size_t hash = std::hash<std::string_view>{}(std::string_view(static_cast<const char*>(data), size));
+    if (robot.radio_world_step != world_.step()) {
+      robot.radio_world_step = world_.step();
+      robot.radio_messages = 0;
+    } else if (hash == robot.radio_hash) {
+      return Heard::kRepeat;  // the agent's resend with the world's resent step
+    }
+    if (robot.radio_messages < kMaxRadioPerRobotPerStep) {
+      ++robot.radio_messages;
+      robot.radio_hash = hash;
+      return Heard::kUsed;
+    }
+    problem = "more than " + std::to_string(kMaxRadioPerRobotPerStep) + " different radio messages from robot " +
+              std::to_string(*id) + " at step " + std::to_string(world_.step()) + " (a flood)";
+  }
   bad_messages_.Report(channel, problem, radio.agent_id);
   return Heard::kRefused;
 }

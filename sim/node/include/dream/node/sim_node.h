@@ -74,6 +74,10 @@ class SimNode {
   int64_t run_id() const { return run_id_; }
   /// Other worlds' run ids kept in the outcome, so a flood cannot grow memory.
   static constexpr size_t kMaxOtherWorlds = 16;
+  /// Different radio messages of one robot recorded per world step (its radio
+  /// speaks once a step; resends of the same message are not recorded again):
+  /// more are refused, so a flood with the run's id cannot grow the log.
+  static constexpr int kMaxRadioPerRobotPerStep = 4;
 
   /// Shows the run's progress (steps/s, ETA to max_steps) on `reporter` from
   /// the first step on; null (the default): no progress output. Must outlive
@@ -100,6 +104,9 @@ class SimNode {
     double received_v = 0.0;       // the held command as sent (v/w are zeroed when it was absurd)
     double received_w = 0.0;
     bool held_refused = false;     // the held command's values were refused (absurd): the robot holds still
+    int64_t radio_world_step = -1; // the world's step when radio_messages were recorded
+    int radio_messages = 0;        // different radio messages recorded from this robot at that step
+    size_t radio_hash = 0;         // of the last one recorded: its resend is not recorded again
     Clock::time_point last_heard;
   };
 
