@@ -107,7 +107,10 @@ TEST_F(RunRecorderTest, RefusedMessagesStayOutOfTheRunLogAndAreKeptApartBounded)
     agents.push_back(std::make_unique<testing::ScriptedAgent>(
         bus, id, 10 + id, [&, id](const robot_poses_t& poses, velocity_command_t* c) {
           c->v = 0.05;
-          if (id != 0) return true;
+          if (id != 0) {
+            if (poses.step == 2) lcm::Publish(bus, lcm::CommandChannel(1), *c);  // sent twice: kept once
+            return true;
+          }
           radio_message_t radio{};
           radio.step = poses.step;
           radio.run_id = poses.run_id;
@@ -175,6 +178,7 @@ TEST_F(RunRecorderTest, RefusedMessagesStayOutOfTheRunLogAndAreKeptApartBounded)
   ASSERT_TRUE(outcome.ok()) << outcome.reason;
   int applied = 0;
   int radio = 0;
+  int commands = 0;
   for (const lcm::LogRecord& record : lcm::LogReader::ReadAll(path)) {
     EXPECT_EQ(record.channel.rfind("MADE_UP_", 0), std::string::npos) << record.channel;
     EXPECT_NE(record.channel, "DREAM_MEASURED_POSES");
@@ -187,7 +191,9 @@ TEST_F(RunRecorderTest, RefusedMessagesStayOutOfTheRunLogAndAreKeptApartBounded)
       ++applied;
     }
     if (record.channel == "DREAM_RADIO_0") ++radio;
+    if (record.channel.rfind("DREAM_CMD_", 0) == 0) ++commands;
   }
+  EXPECT_EQ(commands, 2 * 6);  // one per robot and step
   EXPECT_EQ(applied, 6);  // the world's own, one per step
   EXPECT_EQ(radio, 1 + SimNode::kMaxRadioPerRobotPerStep);
   EXPECT_EQ(outcome.bad_messages.at("DREAM_APPLIED"), 1);

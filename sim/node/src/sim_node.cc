@@ -274,7 +274,10 @@ SimNode::Heard SimNode::OnCommand(const std::string& channel, const velocity_com
   }
   const bool lockstep = options_.mode == WorldMode::kLockstep;
   RobotSlot& robot = robots_[static_cast<size_t>(id)];
-  if (command.step < robot.command_step) return Heard::kUsed;  // older than the command held: a late resend
+  // Late (older than the command held, or for a step the robot missed) or
+  // resent: not used again, so not recorded again; the log keeps one command
+  // per robot and step, whoever floods the bus.
+  if (command.step < robot.command_step) return Heard::kRepeat;
   if (command.step == robot.command_step) {
     // The resend of the world's step gets the same answer again; anything
     // else for this robot and step is a second sender, also when it comes
@@ -289,10 +292,9 @@ SimNode::Heard SimNode::OnCommand(const std::string& channel, const velocity_com
                    "); this one from agent " + std::to_string(command.agent_id) + " is refused, the first is applied");
       return Heard::kRefused;
     }
-    // The same again (the world resent its step): recorded as the first was.
-    return robot.held_refused ? Heard::kRepeat : Heard::kUsed;
+    return Heard::kRepeat;  // the same again (the world resent its step)
   }
-  if (lockstep && command.step < world_.step()) return Heard::kUsed;  // late, for a step the robot missed
+  if (lockstep && command.step < world_.step()) return Heard::kRepeat;
   if (!robot.owned || (robot.lost && robot.owner_agent_id != command.agent_id)) {
     if (robot.owned) spdlog::warn("robot {}: agent {:#x} takes over from lost agent {:#x}", id, command.agent_id, robot.owner_agent_id);
     robot.owned = true;
@@ -313,30 +315,27 @@ SimNode::Heard SimNode::OnCommand(const std::string& channel, const velocity_com
 
   robot.command_step = command.step;
   robot.conflicts = 0;
-  robot.held_refused = false;
   robot.received_v = command.v;
   robot.received_w = command.w;
   const bool finite = std::isfinite(command.v) && std::isfinite(command.w);
-  if (!finite || std::abs(command.v) > options_.max_abs_v_mps || std::abs(command.w) > options_.max_abs_w_radps) {
+  const bool absurd =
+      !finite || std::abs(command.v) > options_.max_abs_v_mps || std::abs(command.w) > options_.max_abs_w_radps;
+  if (absurd) {
     Reject(channel, "absurd velocity v=" + std::to_string(command.v) + " m/s, w=" + std::to_string(command.w) +
                         " rad/s (limits " + std::to_string(options_.max_abs_v_mps) + ", " +
                         std::to_string(options_.max_abs_w_radps) + "); robot " + std::to_string(id) +
                         " holds still", command.agent_id);
     robot.v_mps = 0.0;
     robot.w_radps = 0.0;
-    robot.done = command.done;
-    robot.held_refused = true;
-    if (!lockstep) world_.SetCommand(id, UnicycleCommand{robot.v_mps, robot.w_radps});
-    // It answers the step (the robot holds still), but its values were
-    // refused: kept apart from the log, whose DREAM_APPLIED shows the stop.
-    return Heard::kRefused;
   } else {
     robot.v_mps = command.v;
     robot.w_radps = command.w;
   }
   robot.done = command.done;
   if (!lockstep) world_.SetCommand(id, UnicycleCommand{robot.v_mps, robot.w_radps});
-  return Heard::kUsed;
+  // An absurd command answers the step (the robot holds still), but its
+  // values were refused: kept apart from the log, whose DREAM_APPLIED shows the stop.
+  return absurd ? Heard::kRefused : Heard::kUsed;
 }
 
 void SimNode::RecordApplied() {

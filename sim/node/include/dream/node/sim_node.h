@@ -103,7 +103,6 @@ class SimNode {
     int32_t conflicts = 0;         // refused different commands for command_step
     double received_v = 0.0;       // the held command as sent (v/w are zeroed when it was absurd)
     double received_w = 0.0;
-    bool held_refused = false;     // the held command's values were refused (absurd): the robot holds still
     int64_t radio_world_step = -1; // the world's step when radio_messages were recorded
     int radio_messages = 0;        // different radio messages recorded from this robot at that step
     size_t radio_hash = 0;         // of the last one recorded: its resend is not recorded again
@@ -114,7 +113,7 @@ class SimNode {
   enum class Heard {
     kUsed,     ///< part of the run: recorded
     kRefused,  ///< counted in bad_messages, kept out of the log (RefusedRecord)
-    kRepeat,   ///< a repeat of what the run took already (a second fault): neither
+    kRepeat,   ///< a repeat of what the run took already (a resent command or radio, a second fault) or a late one: neither
   };
   /// Every message heard: dispatched by channel, then recorded or refused.
   void OnMessage(const std::string& channel, const void* data, int size);
