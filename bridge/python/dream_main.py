@@ -116,9 +116,19 @@ def data_path(name):
     fail("cannot find " + name + "; upload every .npy file of the export's upload/ folder with this script")
 
 
+def read_npy(name):
+    """The array in the data file `name`; a DREAM: message, not a traceback, when the file is
+    damaged, cut short or no .npy at all. Never a pickle: one would run code."""
+    try:
+        return np.load(data_path(name), allow_pickle=False)
+    except (ValueError, OSError, EOFError, MemoryError) as error:
+        fail(name + " cannot be read as a .npy file of numbers (damaged, cut short, or a pickle, which is "
+             "never loaded): " + str(error) + "; upload the export's file unchanged, or export the run again")
+
+
 def load(name, shape):
     """A float64 array of exactly `shape`, all finite (never a pickle)."""
-    array = np.load(data_path(name), allow_pickle=False)
+    array = read_npy(name)
     if array.dtype != np.float64 or array.shape != shape:
         fail(name + " has dtype " + str(array.dtype) + " and shape " + str(array.shape) +
              ", expected float64 " + str(shape) + "; export the run again")
@@ -131,7 +141,7 @@ def wrap(angle):
     return np.arctan2(np.sin(angle), np.cos(angle))
 
 
-params = np.load(data_path(PARAMS_FILE), allow_pickle=False)
+params = read_npy(PARAMS_FILE)
 if params.dtype != np.float64 or params.shape != (P_COUNT,) or not np.all(np.isfinite(params)):
     fail(PARAMS_FILE + " is not a parameter file of this script version; export the run again")
 if params[P_MAGIC] != MAGIC or params[P_FORMAT_VERSION] != FORMAT_VERSION:
@@ -231,7 +241,7 @@ class Controllers:
     run. step(k, x) runs them all on the poses x and returns their commands (2 x N)."""
 
     def __init__(self):
-        spec_array = np.load(data_path(CONTROLLER_SPEC_FILE), allow_pickle=False)
+        spec_array = read_npy(CONTROLLER_SPEC_FILE)
         if spec_array.dtype != np.uint8 or spec_array.ndim != 1:
             fail(CONTROLLER_SPEC_FILE + " is not the bytes of a controller spec; export the run again")
         try:
@@ -239,6 +249,8 @@ class Controllers:
             module = spec["module"]
         except (ValueError, KeyError, TypeError):
             fail(CONTROLLER_SPEC_FILE + " does not hold a controller spec; export the run again")
+        except RecursionError:  # JSON nested deeper than Python's recursion limit
+            fail(CONTROLLER_SPEC_FILE + " holds JSON nested too deeply to be a controller spec; export the run again")
         # The module is a file beside this script, under a plain name the export checked.
         if not isinstance(module, str) or not MODULE_NAME.fullmatch(module) or module.startswith("dream"):
             fail(CONTROLLER_SPEC_FILE + " names a controller module that is not a plain module file name")
@@ -255,7 +267,7 @@ class Controllers:
         if controller_spec.num_robots != N:
             fail(CONTROLLER_SPEC_FILE + " is for %d robots, not %d; export the run again" %
                  (controller_spec.num_robots, N))
-        obstacles = np.load(data_path(OBSTACLES_FILE), allow_pickle=False)
+        obstacles = read_npy(OBSTACLES_FILE)
         if (obstacles.dtype != np.float64 or obstacles.ndim != 3 or obstacles.shape[0] != STEPS + 1 or
                 obstacles.shape[2] != O_COUNT or not np.all(np.isfinite(obstacles))):
             fail(OBSTACLES_FILE + " is not (steps + 1) x obstacles x %d finite numbers; export the run again" %

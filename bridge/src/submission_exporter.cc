@@ -11,6 +11,8 @@
 #include "dream/agent_host/python_controller_spec.h"
 #include "dream/bridge/controller_module_copy.h"
 #include "dream/bridge/flat_python_runtime.h"
+#include "dream/bridge/lab_import.h"
+#include "dream/bridge/sha256.h"
 #include "dream/bridge/npy_file.h"
 #include "dream/bridge/obstacle_schedule.h"
 #include "dream/node/json_text.h"
@@ -332,22 +334,30 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
           "  dream compare <simulated run folder> <lab run folder>\n"
           "Before uploading, try it: dream check-submission <this folder> --out <folder>\n";
 
+  std::vector<std::pair<std::string, std::string>> upload_files = {
+      {SubmissionFiles::kMainScript, SubmissionScriptTemplate()},
+      {SubmissionFiles::kParams, EncodeNpy(params.ToNpy())},
+      {SubmissionFiles::kInitialPoses, EncodeNpy(initial)}};
+  if (controller) {
+    upload_files.emplace_back(SubmissionFiles::kControllerSpec, EncodeNpyBytes(controller_files.spec_json));
+    upload_files.emplace_back(SubmissionFiles::kObstacles, EncodeNpy(obstacles));
+    upload_files.emplace_back(controller_files.module_name, controller_files.module_text);
+    for (const FlatPythonRuntime::File& file : controller_files.runtime) upload_files.emplace_back(file.name, file.text);
+  } else {
+    upload_files.emplace_back(SubmissionFiles::kReferencePoses, EncodeNpy(poses));
+    upload_files.emplace_back(SubmissionFiles::kReferenceCommands, EncodeNpy(commands));
+  }
+  // The digest of every upload file, so that an edit after the export is
+  // named (ExportedSubmission::Read) before check-submission or import trust it.
+  nlohmann::ordered_json digests = nlohmann::ordered_json::object();
+  for (const auto& [name, bytes] : upload_files) digests[name] = Sha256::Hex(bytes);
+  manifest[ExportedSubmission::kDigestsKey] = digests;
+
   sim::OutputFolder out(out_dir);
   const sim::OutputFolder upload(out.MakeSubfolder("upload"));  // refuses a link leading outside
   // Every file upload/ holds is this export's (UPLOAD.txt says to upload them all).
   upload.RemoveFiles("an earlier export's file");
-  upload.WriteFile(SubmissionFiles::kMainScript, SubmissionScriptTemplate());
-  upload.WriteFile(SubmissionFiles::kParams, EncodeNpy(params.ToNpy()));
-  upload.WriteFile(SubmissionFiles::kInitialPoses, EncodeNpy(initial));
-  if (controller) {
-    upload.WriteFile(SubmissionFiles::kControllerSpec, EncodeNpyBytes(controller_files.spec_json));
-    upload.WriteFile(SubmissionFiles::kObstacles, EncodeNpy(obstacles));
-    upload.WriteFile(controller_files.module_name, controller_files.module_text);
-    for (const FlatPythonRuntime::File& file : controller_files.runtime) upload.WriteFile(file.name, file.text);
-  } else {
-    upload.WriteFile(SubmissionFiles::kReferencePoses, EncodeNpy(poses));
-    upload.WriteFile(SubmissionFiles::kReferenceCommands, EncodeNpy(commands));
-  }
+  for (const auto& [name, bytes] : upload_files) upload.WriteFile(name, bytes);
   out.WriteFile("config.yaml", config_text);
   KeepControllerModule(config, out);
   out.WriteFile("export.json", sim::JsonText(manifest) + "\n");

@@ -282,7 +282,12 @@ nlohmann::ordered_json CheckControllersOnLabPoses(const sim::OutputFolder& check
 }
 
 int RunCheckSubmission(const CheckSubmissionArgs& args) {
+  // Refuses an upload/ edited after the export, naming the file.
   const bridge::ExportedSubmission exported = bridge::ExportedSubmission::Read(args.export_dir);
+  if (!exported.digests_checked) {
+    std::cout << "WARNING: " << args.export_dir << "/export.json has no digests of the upload files (an export "
+              << "from before they were written): an edit of upload/ cannot be found; export the run again\n";
+  }
   // The runner's rule for a simulator checkout, checked here so that a wrong
   // one is named before an output folder is made (it used to exit 4 after).
   // With --standin the runner looks at neither.

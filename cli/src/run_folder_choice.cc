@@ -17,7 +17,8 @@ namespace {
 // them all, so none of the earlier run's can pass for the new one's.
 constexpr const char* kRunFiles[] = {"run.lcmlog",       "summary.json",    "trajectories.png", "trajectories.svg",
                                      "run.mp4",          "run.gif",         "metrics.png",      "comparison.json",
-                                     "comparison.png",   "check.json",      "check_report.json"};
+                                     "comparison.png",   "check.json",      "check_report.json",
+                                     "refused.lcmlog"};
 
 void RemoveEarlierRun(const std::string& dir) {
   for (const char* name : kRunFiles) {

@@ -28,7 +28,7 @@ import time
 
 import numpy as np
 
-from .radios import RadioMessage
+from .radios import MAX_PAYLOAD_BYTES, RadioMessage
 from .robot import ObstacleView, WorldSnapshot
 from .robot_agent import ControllerFault, RunInterrupted
 from .world_follower import IGNORE, NEW_STEP, WorldFollower
@@ -38,7 +38,7 @@ log = logging.getLogger("dream")
 SUBSCRIPTION_REGEX = "DREAM_(POSES|OBSTACLES|STATUS|RADIO_[0-9]+)"
 MAX_ROBOTS = 50          # the simulator's limit (sim/config); larger counts are forged
 MAX_OBSTACLES = 10000    # far beyond any config; bounds the decode of a forged message
-MAX_RADIO_PAYLOAD = 1 << 16
+MAX_RADIO_PAYLOAD = MAX_PAYLOAD_BYTES
 MAX_DETAIL_BYTES = 1 << 16  # lcm::MessageLimits::kDetailBytes: a longer fault text is refused
 _RADIO_CHANNEL = re.compile(r"DREAM_RADIO_([0-9]{1,6})$")
 _FINISHED, _ABORTED = 2, 3

@@ -34,8 +34,38 @@ SENSOR_KEYS = {"odometry": ("kind", "period_steps", "noise_std"),
 RADIO_KINDS = ("none", "range", "graph", "role")
 RADIO_KEYS = ("kind", "period_steps", "range_m", "graph", "leaders", "loss_probability", "delay_steps")
 
+# The deepest nesting a spec may have: a config's (ConfigNode::kMaxDepth, 100) and the spec's own
+# few levels around it. Deeper JSON is refused before it is parsed (Python's parser would recurse).
+MAX_SPEC_DEPTH = 128
+
 _MATRIX = key(None, kind="matrix")
 _module_counter = itertools.count()
+
+
+def _json_depth(text, limit):
+    """The deepest nesting of [ and { in the JSON `text`, counted outside strings, up to limit + 1
+    (the scan stops there): a bound checked before json.loads recurses into it."""
+    depth = deepest = 0
+    in_string = escaped = False
+    for char in text:
+        if in_string:
+            if escaped:
+                escaped = False
+            elif char == "\\":
+                escaped = True
+            elif char == '"':
+                in_string = False
+        elif char == '"':
+            in_string = True
+        elif char in "[{":
+            depth += 1
+            if depth > deepest:
+                deepest = depth
+                if deepest > limit:
+                    break
+        elif char in "]}":
+            depth -= 1
+    return deepest
 
 
 def _at(config_file, line):
@@ -364,6 +394,9 @@ class ControllerSpec:
     @classmethod
     def from_json(cls, text):
         """Parses and checks the spec, loads the controller class and checks its keys."""
+        if _json_depth(text, MAX_SPEC_DEPTH) > MAX_SPEC_DEPTH:
+            raise ConfigError(f"controller spec: nested more than {MAX_SPEC_DEPTH} levels deep; a spec written by "
+                              f"DREAM never is (was it edited?)")
         try:
             data = json.loads(text)
         except ValueError as error:

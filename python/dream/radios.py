@@ -13,6 +13,10 @@ import numpy as np
 
 from .robot import number_text
 
+# The largest payload a broadcast may carry, in bytes (lcm::MessageLimits::kRadioPayloadBytes):
+# every receiver, and the world, refuses a radio message with more.
+MAX_PAYLOAD_BYTES = 1 << 16
+
 _MASK64 = (1 << 64) - 1
 
 

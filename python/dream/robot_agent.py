@@ -10,7 +10,7 @@ import signal
 import sys
 import traceback
 
-from .radios import Mailbox
+from .radios import MAX_PAYLOAD_BYTES, Mailbox
 from .timer import Timer
 
 
@@ -120,7 +120,7 @@ class RobotAgent:
             if due[radio_slot] and self.radio is not None:
                 payload = robot.on_radio(self.mailbox.heard(self.radio, self.id, world))
                 if payload is not None and self.radio.publishes:
-                    broadcast = bytes(payload)
+                    broadcast = self._payload(payload)
             if due[radio_slot + 1]:
                 self._last_command = self._command(robot.update(world.step))
             done = bool(robot.done())
@@ -139,6 +139,23 @@ class RobotAgent:
         """A message another robot broadcast; heard (or not) at later steps. Own messages are ignored."""
         if message.sender_id != self.id:
             self.mailbox.post(message)
+
+    def _payload(self, payload):
+        """on_radio()'s payload as bytes; a ControllerFault at the user's on_radio when it is no
+        bytes or larger than a radio message carries (every receiver would drop it)."""
+        on_radio = type(self.robot).on_radio
+        code = on_radio.__code__
+        where = f"{code.co_filename}:{code.co_firstlineno}: in {on_radio.__name__}: "
+        try:
+            data = bytes(payload)
+        except (TypeError, ValueError) as exc:
+            raise ControllerFault(f"{where}TypeError: on_radio() must return bytes or None, got "
+                                  f"{type(payload).__name__}: {exc}") from None
+        if len(data) > MAX_PAYLOAD_BYTES:
+            raise ControllerFault(f"{where}ValueError: a radio payload of {len(data)} bytes is over the limit of "
+                                  f"{MAX_PAYLOAD_BYTES} bytes: every receiver would drop it. Send less, e.g. "
+                                  f"fewer or smaller fields") from None
+        return data
 
     def _command(self, command):
         """update()'s (v, w) as two floats; a ControllerFault at the user's update otherwise."""

@@ -15,6 +15,8 @@
 #include "dream/lcm/channels.h"
 #include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/lcm_typed.h"
+#include "dream/lcm/message_limits.h"
+#include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 
 namespace dream::agents {
@@ -45,20 +47,24 @@ class CountingRobot final : public Robot {
       }
       heard_ids.push_back(id);
     }
-    return ByteWriter().Int32(id()).Take();
+    std::vector<uint8_t> payload = ByteWriter().Int32(id()).Take();
+    payload.resize(payload.size() + extra_payload_bytes);
+    return payload;
   }
   std::vector<int> heard_ids;
   bool name_bad_senders = true;
+  size_t extra_payload_bytes = 0;  // zeros after its id
 
  private:
   int* calls_;
 };
 
 std::unique_ptr<RobotAgent> MakeAgent(int id, int* calls, std::unique_ptr<Radio> radio = nullptr,
-                                      bool name_bad_senders = true) {
+                                      bool name_bad_senders = true, size_t extra_payload_bytes = 0) {
   RobotAgentSpec spec;
   auto robot = std::make_unique<CountingRobot>(id, calls);
   robot->name_bad_senders = name_bad_senders;
+  robot->extra_payload_bytes = extra_payload_bytes;
   spec.robot = std::move(robot);
   SensorSlot odometry{std::make_unique<OdometrySensor>(OdometrySensorParams{}, 1), 1};
   spec.sensors.push_back(std::move(odometry));
@@ -150,6 +156,35 @@ TEST_F(AgentHostTest, RadioMessagesOfStepKAreHeardAtStepKPlusOne) {
 
 // Every message reaches every host on the bus; each receiving robot's radio
 // decides, from the world's poses, whom it hears.
+// Issue 23: a payload over the limit was sent, every receiver dropped it, and
+// the run was clean. The host gives the robot up instead, saying why.
+TEST_F(AgentHostTest, ARadioPayloadOverTheLimitIsTheControllersFaultNotAMessage) {
+  std::vector<robot_fault_t> faults;
+  lcm::Subscribe<robot_fault_t>(
+      bus_, lcm::kFaultChannelRegex, [&](const std::string&, const robot_fault_t& f) { faults.push_back(f); }, bad_);
+  int calls = 0;
+  std::vector<std::unique_ptr<RobotAgent>> agents;
+  agents.push_back(MakeAgent(0, &calls));
+  agents.push_back(MakeAgent(1, &calls, nullptr, true, lcm::MessageLimits::kRadioPayloadBytes - 3));  // 65537 bytes
+  AgentHost host(bus_, std::move(agents), 5);
+  lcm::Publish(bus_, lcm::kPosesChannel, Poses(1, 2));
+  lcm::Publish(bus_, lcm::kPosesChannel, Poses(1, 2));  // a resend: no second fault
+  lcm::Publish(bus_, lcm::kPosesChannel, Poses(2, 2));
+  Drain();
+  ASSERT_EQ(faults.size(), 1u);
+  EXPECT_EQ(faults[0].robot_id, 1);
+  EXPECT_EQ(faults[0].step, 1);
+  EXPECT_EQ(faults[0].run_id, kRunId);
+  EXPECT_EQ(faults[0].agent_id, 5);
+  EXPECT_EQ(faults[0].detail,
+            "robot 1: OnRadio returned a payload of 65537 bytes, over the limit of 65536 bytes (every receiver "
+            "would drop it)");
+  for (const radio_message_t& radio : radio_) EXPECT_EQ(radio.sender_id, 0);
+  for (const velocity_command_t& command : commands_) EXPECT_EQ(command.robot_id, 0);
+  EXPECT_EQ(commands_.size(), 3u);  // robot 0 goes on
+  EXPECT_EQ(bad_.total(), 0);
+}
+
 TEST_F(AgentHostTest, RangeRadioHearsOnlyRobotsInRangeOfTheReceiver) {
   int calls = 0;
   std::vector<std::unique_ptr<RobotAgent>> agents;

@@ -295,6 +295,30 @@ def check_submission(case, go_to_goal_export):
     broken = case.path("broken_export")
     shutil.copytree(go_to_goal_export, broken)
     os.remove(os.path.join(broken, "upload", "dream_timer.py"))
+    # Issue 23: start poses moved by 0.3 m after the export passed the check clean; the export's
+    # digests name the edited file before anything runs ...
+    import numpy as np
+    moved = case.path("moved_export")
+    shutil.copytree(go_to_goal_export, moved)
+    poses_path = os.path.join(moved, "upload", "dream_initial_poses.npy")
+    poses = np.load(poses_path, allow_pickle=False)
+    poses[0, 0] += 0.3
+    np.save(poses_path, poses)
+    output, _ = run([case.dream, "check-submission", moved, "--out", case.path("moved_check")] + case.check_flags,
+                    expect=1)
+    check("upload/dream_initial_poses.npy: changed after the export" in output,
+          "a check of an upload whose start poses were edited: " + output[-1500:])
+    # ... and a missing file
+    output, _ = run([case.dream, "check-submission", broken, "--out", check_dir, "--overwrite"] + case.check_flags,
+                    expect=1)
+    check("upload/dream_timer.py: missing" in output, "a check of an upload without dream_timer.py: " + output[-1500:])
+    # ... and with them edited too, the script fails in the simulator.
+    manifest_path = os.path.join(broken, "export.json")
+    with open(manifest_path) as f:
+        manifest = json.load(f)
+    del manifest["upload_sha256"]["dream_timer.py"]
+    with open(manifest_path, "w") as f:
+        json.dump(manifest, f)
     output, _ = run([case.dream, "check-submission", broken, "--out", check_dir, "--overwrite"] + case.check_flags,
                     expect=4)
     check("dream_timer" in output, "a check of an upload without dream_timer.py: " + output[-1500:])
@@ -475,6 +499,64 @@ def refusals(case):
                        "numpy.py, json.py (exit 1); track works for a Python kind, also over a controller export")
 
 
+def tampered_files(case):
+    """Issue 23: an upload file edited into something no export writes (deeply nested JSON, a
+    pickle, a file cut short) failed in the lab's Python with a raw traceback; the script says
+    DREAM: and names the file instead."""
+    import pickle
+
+    import numpy as np
+    spec_file = "dream_controller_spec.npy"
+    export_dir, _ = case.export(case.path("go_to_goal_python_sim"), "tampered_source")
+
+    def nested(upload):
+        text = "[" * 100000 + "]" * 100000
+        np.save(os.path.join(upload, spec_file), np.frombuffer(text.encode(), dtype=np.uint8))
+
+    def nested_under_the_limit_of_python(upload):
+        spec = json.loads(np.load(os.path.join(upload, spec_file)).tobytes())
+        spec["params"]["deep"] = {"value": json.loads("[" * 500 + "]" * 500), "line": 1}
+        np.save(os.path.join(upload, spec_file), np.frombuffer(json.dumps(spec).encode(), dtype=np.uint8))
+
+    def pickled_spec(upload):
+        np.save(os.path.join(upload, spec_file), np.array([{"module": "x.py"}], dtype=object), allow_pickle=True)
+
+    def pickle_as_params(upload):
+        with open(os.path.join(upload, "dream_params.npy"), "wb") as f:
+            f.write(pickle.dumps({"steps": 10}))
+
+    def cut(name, keep=None):
+        def cut_file(upload):
+            path = os.path.join(upload, name)
+            with open(path, "rb") as f:
+                data = f.read()
+            with open(path, "wb") as f:
+                f.write(data[:keep if keep is not None else len(data) // 2])
+        return cut_file
+
+    cases = [("nested JSON", nested, spec_file), ("JSON 500 levels deep", nested_under_the_limit_of_python, "nested"),
+             ("a pickled spec", pickled_spec, spec_file), ("a pickle as params", pickle_as_params, "dream_params.npy"),
+             ("spec cut short", cut(spec_file), spec_file), ("params cut short", cut("dream_params.npy"), "dream_params.npy"),
+             ("params header cut", cut("dream_params.npy", 30), "dream_params.npy"),
+             ("start poses cut short", cut("dream_initial_poses.npy"), "dream_initial_poses.npy"),
+             ("obstacles cut short", cut("dream_obstacles.npy"), "dream_obstacles.npy")]
+    for label, tamper, named in cases:
+        upload = case.path("tampered", label.replace(" ", "_"))
+        shutil.copytree(os.path.join(export_dir, "upload"), upload)
+        tamper(upload)
+        workdir = upload + "_lab"
+        report_path = workdir + ".json"
+        run([sys.executable, os.path.join(case.args.source, "bridge", "python", "run_submission.py"), "--upload",
+             upload, "--workdir", workdir, "--report", report_path, "--skip-initialization"] + case.flags, expect=None)
+        with open(report_path) as f:
+            report = json.load(f)
+        error = report.get("error") or ""
+        check(not report["ok"] and "DREAM: " in error and "Traceback" not in error and named in error,
+              "%s: the script did not fail with a DREAM: message naming %s: %s %s" % (label, named, error[-1500:], report))
+    case.report.append("tampered upload files (nested JSON, pickles, cut files): %d cases, each a DREAM: message "
+                       "naming the file" % len(cases))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--dream", required=True)
@@ -512,6 +594,7 @@ def main():
         else:
             injection(case)
             refusals(case)
+            tampered_files(case)
         print("\n".join(case.report))
         print("PASS")
         return 0

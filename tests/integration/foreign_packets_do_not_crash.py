@@ -14,10 +14,13 @@ step 10 it also sends, once each:
   - a truncated velocity_command_t on DREAM_CMD_4, an empty message on DREAM_CMD_6
   - garbage on DREAM_POSES and DREAM_STATUS (the agents' inputs)
   - a datagram that is not LCM at all, and a malformed LCM fragment
+  - a forged DREAM_APPLIED (a command "applied" to robot 0) and DREAM_MEASURED_POSES, the world's
+    own records; at step 30, messages on 300 made-up channel names
 The run must finish (exit 0 or 3), every agent process too (exit 0), nobody may be lost; the
-summary must count the 4 rejected commands and name each bad channel in bad_messages; robot 2 must
-hold still in the step of its NaN command; the log must stay readable and hold the foreign
-command-channel messages.
+summary must count the 4 rejected commands and name each bad channel in bad_messages, with its
+first step in refused_messages; robot 2 must hold still in the step of its NaN command; the log
+must stay readable and hold none of the refused messages: refused.lcmlog beside it holds them
+(issue 23: the forged DREAM_APPLIED showed in `dream log echo` as applied, the run clean).
 
 Usage: netns.sh foreign_packets_do_not_crash.py --dream BIN --source DIR --types-dir DIR
 """
@@ -36,6 +39,8 @@ STRANGER_AGENT_ID = 0x5757575757575757
 INJECT_AT_STEP = 10
 NAN_AT_STEP = 20
 STEPS = 150
+MADE_UP_CHANNELS = 300  # past BadMessageLog's and RefusedRecord's 256 named channels
+MADE_UP_AT_STEP = 30     # after the others, which are named before the table fills
 
 
 def command(dream, step, run_id, robot_id, v, w=0.0, agent_id=OUR_AGENT_ID):
@@ -63,6 +68,11 @@ def inject(bus, dream, step, run_id):
     bus.publish("DREAM_CMD_3", command(dream, step, run_id, 3, 0.1, agent_id=STRANGER_AGENT_ID))
     bus.publish("DREAM_CMD_4", command(dream, step, run_id, 4, 0.1)[:20])
     bus.publish("DREAM_CMD_6", b"")
+    applied = dream.applied_commands_t()
+    applied.step, applied.run_id, applied.num_robots = step, run_id, 1
+    applied.applied_agent_id, applied.commanded_v, applied.commanded_w, applied.conflicts = [666], [9.0], [0.0], [0]
+    bus.publish("DREAM_APPLIED", applied.encode())
+    bus.publish("DREAM_MEASURED_POSES", poses.encode())
     bus.publish("DREAM_POSES", b"\x00" * 40)
     bus.publish("DREAM_STATUS", os.urandom(64))
     bus.send_raw(b"hello, this is no LCM packet")
@@ -70,12 +80,13 @@ def inject(bus, dream, step, run_id):
     bus.send_raw(struct.pack(">IIIIHH", 0x4C433033, 7, 0x7FFFFFFF, 0x7FFFFFF0, 3, 2) + b"DREAM_CMD_1\0junk")
     # The world reads DREAM_STATUS too (a second world's would name another run), so the random
     # bytes there are a bad message of its own.
-    return {"DREAM_CMD_3", "DREAM_CMD_x", "DREAM_CMD_99", "DREAM_CMD_5", "DREAM_CMD_4", "DREAM_CMD_6", "DREAM_STATUS"}
+    return {"DREAM_CMD_3", "DREAM_CMD_x", "DREAM_CMD_99", "DREAM_CMD_5", "DREAM_CMD_4", "DREAM_CMD_6", "DREAM_STATUS",
+            "DREAM_APPLIED", "DREAM_MEASURED_POSES"}
 
 
 def drive_robot_2(ctx, bus, dream, sim):
     """Answers DREAM_POSES for robot 2 until the world finishes; injects the foreign messages."""
-    bad_channels, injected, nan_sent = set(), False, False
+    bad_channels, injected, nan_sent, made_up_sent = set(), False, False, False
     deadline = time.monotonic() + 30
     while time.monotonic() < deadline:
         # 5: finished, but not ready (the bad messages are a reason of its verdict).
@@ -103,13 +114,17 @@ def drive_robot_2(ctx, bus, dream, sim):
         if poses.step == INJECT_AT_STEP and not injected:
             bad_channels = inject(bus, dream, poses.step, poses.run_id)
             injected = True
+        if poses.step == MADE_UP_AT_STEP and not made_up_sent:
+            for i in range(MADE_UP_CHANNELS):
+                bus.publish(f"MADE_UP_{i}", b"x" * 1000)
+            made_up_sent = True
         if poses.step == NAN_AT_STEP:
             if not nan_sent:
                 bus.publish("DREAM_CMD_2", command(dream, poses.step, poses.run_id, 2, math.nan))
                 nan_sent = True
             continue
         bus.publish("DREAM_CMD_2", command(dream, poses.step, poses.run_id, 2, 0.02))
-    check(injected and nan_sent, f"the run ended before step {NAN_AT_STEP}: nothing was injected")
+    check(injected and nan_sent and made_up_sent, f"the run ended before step {MADE_UP_AT_STEP}: nothing was injected")
     return bad_channels
 
 
@@ -145,7 +160,18 @@ def test(ctx):
     bad = summary["bad_messages"]
     missing = sorted((bad_channels | {"DREAM_CMD_2"}) - set(bad))
     check(not missing, f"bad_messages {bad} lacks {missing}")
-    check(not set(bad) - bad_channels - {"DREAM_CMD_2"}, f"bad_messages names unexpected channels: {bad}")
+    made_up = {channel for channel in bad if channel.startswith("MADE_UP_")}
+    check(len(made_up) + len(bad_channels) + 1 == 256 and bad.get("(other channels)", 0) > 0,
+          f"bad_messages names {len(bad)} channels, expected 256 and the rest under (other channels)")
+    check(not set(bad) - bad_channels - made_up - {"DREAM_CMD_2", "(other channels)"},
+          f"bad_messages names unexpected channels: {sorted(set(bad) - made_up)}")
+    refused = summary["refused_messages"]
+    for channel in ["DREAM_APPLIED", "DREAM_MEASURED_POSES", "DREAM_CMD_99"]:
+        check(refused.get(channel, {}).get("first_step") == INJECT_AT_STEP,
+              f"refused_messages {channel}: {refused.get(channel)}, expected first_step {INJECT_AT_STEP}")
+    reason = next(r for r in summary["verdict_reasons"] if r["rule"] == "bad_messages")
+    check(f"first at step {INJECT_AT_STEP}" in reason["problem"] and "refused.lcmlog" in reason["find_out"],
+          f"the verdict's reason does not give the first step and the refused log: {reason}")
     # Counted and logged: the first bad message of each channel gets a warning line.
     sim_output = ctx.output("sim")
     for channel in sorted(bad_channels):
@@ -155,8 +181,18 @@ def test(ctx):
     log = os.path.join(out, "run.lcmlog")
     code, text = ctx.run([args.dream, "log", "info", log])
     check(code == 0, f"dream log info refuses the log: {text.strip()}")
-    for channel in ["DREAM_CMD_x", "DREAM_CMD_99"]:
-        check(channel in text, f"the log does not hold the foreign messages on {channel}")
+    for channel in ["DREAM_CMD_x", "DREAM_CMD_99", "DREAM_APPLIED", "MADE_UP_"]:
+        check(channel not in text or channel == "DREAM_APPLIED", f"the log holds refused messages on {channel}")
+    applied_agents = {agent for event in read_events(log) if event.channel == "DREAM_APPLIED"
+                      for agent in dream.applied_commands_t.decode(event.data).applied_agent_id}
+    check(666 not in applied_agents, "the forged DREAM_APPLIED is in the run's log")
+    refused_log = os.path.join(out, summary["refused_log"])
+    refused_channels = {event.channel for event in read_events(refused_log)}
+    check({"DREAM_APPLIED", "DREAM_MEASURED_POSES", "DREAM_CMD_x", "DREAM_CMD_99", "MADE_UP_0"} <= refused_channels,
+          f"{refused_log} lacks refused messages: it holds {sorted(refused_channels)[:12]}")
+    code, text = ctx.run([args.dream, "log", "echo", refused_log, "DREAM_APPLIED"])
+    check(code == 0 and '"applied_agent_id":[666]' in text.replace(" ", ""),
+          f"dream log echo does not show the refused DREAM_APPLIED: {text.strip()[:500]}")
     robot_2 = {}
     for event in read_events(log):
         if event.channel == "DREAM_POSES":

@@ -5,10 +5,15 @@
 #include <filesystem>
 #include <fstream>
 
+#include "dream/applied_commands_t.hpp"
 #include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/log_reader.h"
+#include "dream/radio_message_t.hpp"
+#include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/node/atomic_file.h"
+#include "dream/node/refused_record.h"
+#include "dream/node/run_judge.h"
 #include "dream/node/sim_node.h"
 #include "run_with_file_size_limit.h"
 #include "scripted_agent.h"
@@ -88,6 +93,141 @@ TEST_F(RunRecorderTest, SimNodeRecordsEveryStepInSimulatedTime) {
   }
   EXPECT_EQ(expected_step, 21);  // steps 0..20: the final poses are recorded too
   EXPECT_EQ(commands, 2 * 20);
+}
+
+// Issue 23: the world recorded every channel it heard, forged ones included;
+// a forged DREAM_APPLIED showed in `dream log echo` as applied, and the run was clean.
+TEST_F(RunRecorderTest, RefusedMessagesStayOutOfTheRunLogAndAreKeptApartBounded) {
+  lcm::LcmBus bus("memq://");
+  UnicycleWorld world(WorldParams{}, {{0.0, 0.0, 0.0}, {0.5, 0.5, 1.0}});
+  constexpr int kMadeUpChannels = 2000;
+  const std::vector<uint8_t> junk(8000, 0x5a);
+  std::vector<std::unique_ptr<testing::ScriptedAgent>> agents;
+  for (int id = 0; id < 2; ++id) {
+    agents.push_back(std::make_unique<testing::ScriptedAgent>(
+        bus, id, 10 + id, [&, id](const robot_poses_t& poses, velocity_command_t* c) {
+          c->v = 0.05;
+          if (id != 0) {
+            if (poses.step == 2) lcm::Publish(bus, lcm::CommandChannel(1), *c);  // sent twice: kept once
+            return true;
+          }
+          radio_message_t radio{};
+          radio.step = poses.step;
+          radio.run_id = poses.run_id;
+          radio.sender_id = 0;
+          radio.agent_id = 10;
+          radio.payload = {1, 2, 3};
+          radio.payload_size = 3;
+          if (poses.step == 2) {
+            lcm::Publish(bus, "DREAM_RADIO_0", radio);  // the run's own: kept
+            lcm::Publish(bus, "DREAM_RADIO_0", radio);  // a resend of it: not kept twice
+          }
+          if (poses.step == 4) {  // a flood of the run's own radio: kept up to the per-step limit
+            for (uint8_t i = 0; i < 10; ++i) {
+              radio.payload = {i};
+              radio.payload_size = 1;
+              lcm::Publish(bus, "DREAM_RADIO_0", radio);
+            }
+          }
+          if (poses.step != 3) return true;
+          applied_commands_t applied{};
+          applied.step = poses.step;
+          applied.run_id = poses.run_id;
+          applied.num_robots = 1;
+          applied.applied_agent_id = {666};
+          applied.commanded_v = {9.0};
+          applied.commanded_w = {0.0};
+          applied.conflicts = {0};
+          lcm::Publish(bus, lcm::kAppliedChannel, applied);
+          lcm::Publish(bus, "DREAM_MEASURED_POSES", poses);
+          robot_fault_t fault{};
+          fault.run_id = poses.run_id + 1;
+          fault.robot_id = 1;
+          fault.agent_id = 666;
+          fault.detail = "forged";
+          lcm::Publish(bus, "DREAM_FAULT_1", fault);
+          radio.run_id = poses.run_id + 1;
+          lcm::Publish(bus, "DREAM_RADIO_0", radio);  // another run's
+          radio.run_id = poses.run_id;
+          radio.payload.assign(70000, 1);  // over lcm::MessageLimits: every receiver drops it
+          radio.payload_size = 70000;
+          lcm::Publish(bus, "DREAM_RADIO_0", radio);
+          for (int i = 0; i < kMadeUpChannels; ++i) {
+            bus.Publish("MADE_UP_" + std::to_string(i), junk.data(), static_cast<int>(junk.size()));
+          }
+          return true;
+        }));
+  }
+  const std::string path = (dir_ / "run.lcmlog").string();
+  const std::string refused_path = (dir_ / "refused.lcmlog").string();
+  SimNodeOptions options;
+  options.max_steps = 6;
+  options.progress_interval_s = 0;
+  RunOutcome outcome;
+  int64_t run_id = 0;
+  {
+    RunRecorder recorder(path);
+    RefusedRecord refused(refused_path);
+    SimNode node(bus, world, &recorder, options);
+    node.set_refused_record(&refused);
+    run_id = node.run_id();
+    std::atomic<bool> stop{false};
+    outcome = node.Run(stop);
+    recorder.Close();
+  }
+  ASSERT_TRUE(outcome.ok()) << outcome.reason;
+  int applied = 0;
+  int radio = 0;
+  int commands = 0;
+  for (const lcm::LogRecord& record : lcm::LogReader::ReadAll(path)) {
+    EXPECT_EQ(record.channel.rfind("MADE_UP_", 0), std::string::npos) << record.channel;
+    EXPECT_NE(record.channel, "DREAM_MEASURED_POSES");
+    EXPECT_NE(record.channel, "DREAM_FAULT_1");
+    if (record.channel == lcm::kAppliedChannel) {
+      applied_commands_t message;
+      ASSERT_TRUE(lcm::Decode(record.data.data(), static_cast<int>(record.data.size()), &message));
+      EXPECT_EQ(message.run_id, run_id);
+      EXPECT_EQ(message.num_robots, 2);
+      ++applied;
+    }
+    if (record.channel == "DREAM_RADIO_0") ++radio;
+    if (record.channel.rfind("DREAM_CMD_", 0) == 0) ++commands;
+  }
+  EXPECT_EQ(commands, 2 * 6);  // one per robot and step
+  EXPECT_EQ(applied, 6);  // the world's own, one per step
+  EXPECT_EQ(radio, 1 + SimNode::kMaxRadioPerRobotPerStep);
+  EXPECT_EQ(outcome.bad_messages.at("DREAM_APPLIED"), 1);
+  EXPECT_EQ(outcome.bad_messages.at("DREAM_MEASURED_POSES"), 1);
+  EXPECT_EQ(outcome.bad_messages.at("DREAM_FAULT_1"), 1);
+  EXPECT_EQ(outcome.bad_messages.at("DREAM_RADIO_0"), 2 + 10 - SimNode::kMaxRadioPerRobotPerStep);
+  EXPECT_TRUE(outcome.robot_faults.empty());
+  // Counted all, named at most RefusedRecord::kMaxChannels, first step kept.
+  long counted = 0;
+  for (const auto& [channel, seen] : outcome.refused) counted += seen.count;
+  EXPECT_EQ(counted, kMadeUpChannels + 5 + 10 - SimNode::kMaxRadioPerRobotPerStep);
+  EXPECT_LE(outcome.refused.size(), RefusedRecord::kMaxChannels + 1);
+  EXPECT_EQ(outcome.refused.at("DREAM_APPLIED").first_step, 3);
+  EXPECT_EQ(outcome.refused.at(RefusedRecord::kOtherChannels).first_step, 3);
+  // The refused log keeps the first ones, within its bounds.
+  EXPECT_EQ(outcome.refused_log, refused_path);
+  const auto refused = lcm::LogReader::ReadAll(refused_path);
+  EXPECT_EQ(static_cast<int64_t>(refused.size()), outcome.refused_log_events);
+  EXPECT_GT(refused.size(), 4u);
+  EXPECT_LE(static_cast<int64_t>(refused.size()), RefusedRecord::kMaxEvents);
+  int64_t refused_bytes = 0;
+  for (const lcm::LogRecord& record : refused) refused_bytes += static_cast<int64_t>(record.data.size());
+  EXPECT_LE(refused_bytes, RefusedRecord::kMaxBytes);
+  EXPECT_EQ(refused.front().channel, lcm::kAppliedChannel);
+  // The verdict says so, naming channel, count and first step.
+  bool said = false;
+  for (const VerdictReason& reason : OutcomeReasons(outcome)) {
+    if (reason.rule != "bad_messages") continue;
+    said = true;
+    EXPECT_EQ(reason.verdict, RunVerdict::kNotReady);
+    EXPECT_NE(reason.problem.find("DREAM_APPLIED (1, first at step 3)"), std::string::npos) << reason.problem;
+    EXPECT_NE(reason.find_out.find(refused_path), std::string::npos) << reason.find_out;
+  }
+  EXPECT_TRUE(said);
 }
 
 // Each test event: channel "CH" and 100 bytes of data, 28 bytes of header.
@@ -193,18 +333,27 @@ std::vector<std::unique_ptr<testing::ScriptedAgent>> ForwardAgents(lcm::LcmInter
 }
 
 /// Runs a lockstep SimNode recording to `path` under a file size limit; when
-/// `big_message_step` >= 0, a foreign 100 kB message is sent at that step.
+/// `big_message_step` >= 0, robot 0's radio sends 60 kB at that step (the
+/// run's own message, so it is recorded; a foreign one would be refused).
 testing::ChildReport RunSimNodeWithFileSizeLimit(const std::string& path, rlim_t limit_bytes,
                                                  int64_t big_message_step) {
   return testing::RunWithFileSizeLimit(limit_bytes, [&](testing::ChildReport* out) {
     lcm::LcmBus bus("memq://");
     UnicycleWorld world(WorldParams{}, {{-1.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}});
-    const std::vector<uint8_t> big_message(100000, 7);
+    lcm::BadMessageLog bad;
     // Subscribed before the agents, so the message is queued before their
     // commands and recorded while the world still waits at that step.
-    bus.Subscribe("DREAM_POSES", [&](const std::string&, const void*, int) {
-      if (world.step() == big_message_step) bus.Publish("BIG", big_message.data(), static_cast<int>(big_message.size()));
-    });
+    lcm::Subscribe<robot_poses_t>(bus, "DREAM_POSES", [&](const std::string&, const robot_poses_t& poses) {
+      if (poses.step != big_message_step) return;
+      radio_message_t radio{};
+      radio.step = poses.step;
+      radio.run_id = poses.run_id;
+      radio.sender_id = 0;
+      radio.agent_id = 10;
+      radio.payload.assign(60000, 7);
+      radio.payload_size = 60000;
+      lcm::Publish(bus, "DREAM_RADIO_0", radio);
+    }, bad);
     const auto agents = ForwardAgents(bus);
     SimNodeOptions options;
     options.max_steps = 100000;

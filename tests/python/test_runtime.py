@@ -454,6 +454,20 @@ class SpecErrorTest(SpecFixture):
                                json.dumps(spec))
 
 
+    def test_spec_nested_too_deeply_is_a_config_error_not_a_recursion(self):
+        # Issue 23: an edited spec of deeply nested JSON failed with a RecursionError's traceback.
+        deep = "[" * 100000 + "]" * 100000
+        self.assertRaisesRegex(ConfigError, r"^controller spec: nested more than 128 levels deep",
+                               ControllerSpec.from_json, deep)
+        spec = self.go_to_goal()
+        spec["params"]["goal"] = {"value": json.loads("[" * 129 + "]" * 129), "line": 3}
+        self.assertRaisesRegex(ConfigError, "nested more than 128 levels deep", ControllerSpec.from_json,
+                               json.dumps(spec))
+        # Brackets inside strings are text, not nesting.
+        spec = self.go_to_goal()
+        spec["name"] = "[{" * 200 + '\\"'
+        self.assertEqual(ControllerSpec.from_json(json.dumps(spec)).num_robots, 2)
+
 class ControllerFaultTest(SpecFixture):
     def test_fault_names_the_users_line_even_through_a_helper(self):
         self.module("faulty_helper.py", """
@@ -476,6 +490,35 @@ class ControllerFaultTest(SpecFixture):
             with self.assertRaises(ControllerFault) as caught:
                 agent.step(world(step, [[0, 0, 0], [1, 0, 0]]))
             self.assertEqual(str(caught.exception), expected)
+
+    def test_an_oversize_radio_payload_is_the_controllers_fault_at_its_on_radio(self):
+        # Issue 23: a 100 KB payload was sent, every receiver dropped it, and the run was clean.
+        module = self.module("loud.py", """
+            from dream import Robot
+
+
+            class Loud(Robot):
+                def on_radio(self, heard):
+                    return b"x" * 100000
+
+                def update(self, step):
+                    return (0.0, 0.0)
+
+
+            class JustRight(Loud):
+                def on_radio(self, heard):
+                    return b"x" * 65536
+            """)
+        radio = {"kind": "range", "period_steps": [1, 1], "range_m": 1.0, "graph": [], "leaders": [],
+                 "loss_probability": 0.0, "delay_steps": 0}
+        agent = ControllerSpec.from_json(json.dumps(self.spec(module, "Loud", {}, radio=radio))).make_agent(0)
+        with self.assertRaises(ControllerFault) as caught:
+            agent.step(world(1, [[0, 0, 0], [1, 0, 0]]))
+        self.assertEqual(str(caught.exception),
+                         f"{module}:6: in on_radio: ValueError: a radio payload of 100000 bytes is over the limit "
+                         f"of 65536 bytes: every receiver would drop it. Send less, e.g. fewer or smaller fields")
+        agent = ControllerSpec.from_json(json.dumps(self.spec(module, "JustRight", {}, radio=radio))).make_agent(0)
+        self.assertEqual(len(agent.step(world(1, [[0, 0, 0], [1, 0, 0]])).broadcast), 65536)
 
     def test_bad_update_result_and_setup_fault(self):
         module = self.module("bad.py", """

@@ -103,6 +103,9 @@ TEST(FileMutationDriver, MutatedParamsFilesAreReadOrRefusedByName) {
   const auto start = std::chrono::steady_clock::now();
   const std::string copy = samples.Scratch("mutated_export");
   fs::copy(samples.export_dir(), copy, fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+  // Without the export's digests, so each damaged file reaches the .npy
+  // reader (the digest check alone refuses every one).
+  WriteBytes(copy + "/export.json", "{}");
   const std::string params = copy + "/upload/" + bridge::SubmissionFiles::kParams;
   FileMutator mutator(kSeed + 1);
   const long count = kParamsMutations * FuzzScale();

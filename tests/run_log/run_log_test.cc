@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "dream/radio_message_t.hpp"
+#include "dream/robot_fault_t.hpp"
 #include "dream/run_status_t.hpp"
 #include "synthetic_run_log.h"
 #include "temp_folder.h"
@@ -95,6 +97,35 @@ TEST(RunLogTest, TheEndIsTheLastStatusWithTheFaultsOfRobotsLostThen) {
   const std::map<int, std::string> faults = {{2, "step 0: controller.py:3: in update: ValueError: first"}};
   EXPECT_EQ(run.robot_faults(), faults);
   EXPECT_EQ(run.Flaw(true), std::nullopt);
+}
+
+// Issue 23: a forged DREAM_FAULT of another run, in the log of a run from
+// before the world kept refused messages out of it, was quoted by `dream
+// export` as the robot's failure.
+TEST(RunLogTest, FaultsAndRadioOfAnotherRunOrAnotherRobotAreNoneOfThisRuns) {
+  TempFolder dir;
+  robot_fault_t forged{};
+  forged.step = 0;
+  forged.run_id = 77;  // the synthetic run's poses carry run id 0
+  forged.robot_id = 1;
+  forged.detail = "forged: another run's";
+  radio_message_t radio{};
+  radio.run_id = 77;
+  radio.sender_id = 0;
+  SyntheticRunLog log(dir / "run.lcmlog");
+  log.Poses(0, {{0, 0, 0}, {1, 0, 0}})
+      .MessageOn("DREAM_FAULT_1", forged)
+      .MessageOn("DREAM_RADIO_0", radio)
+      .Radio(0, 5)  // a sender outside the run's two robots
+      .Radio(0, 1)
+      .Fault(1, 1, 1, "controller.py:3: in update: ValueError: the real one")
+      .Poses(1, {{0, 0, 0}, {1, 0, 0}})
+      .Status(1, run_status_t::FINISHED, {1}, "done");
+  const RunLog run = RunLog::Read(log.Write());
+  const std::map<int, std::string> faults = {{1, "step 1: controller.py:3: in update: ValueError: the real one"}};
+  EXPECT_EQ(run.robot_faults(), faults);
+  ASSERT_EQ(run.radio_sends().size(), 1u);
+  EXPECT_EQ(run.radio_sends()[0].sender_id, 1);
 }
 
 TEST(RunLogTest, ACutLogIsAnErrorNamingTheFileAndByte) {

@@ -11,6 +11,7 @@
 #include "dream/lcm/lcm_typed.h"
 #include "dream/lcm/message_limits.h"
 #include "dream/obstacles_t.hpp"
+#include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 
 namespace dream::agents {
@@ -128,7 +129,21 @@ void AgentHost::ReportBadRadioPayloads(RobotSlot& robot) {
   }
 }
 
-void AgentHost::Answer(RobotSlot& robot, const robot_poses_t& poses) {
+void AgentHost::Fail(RobotSlot& robot, const robot_poses_t& poses, const std::string& detail) {
+  robot.fault = detail;
+  robot.last_radio.reset();
+  spdlog::error("robot {} stops at step {}: its controller failed: {}", robot.agent->id(), poses.step, detail);
+  robot_fault_t fault{};
+  fault.utime = poses.utime;
+  fault.step = poses.step;
+  fault.run_id = poses.run_id;
+  fault.robot_id = robot.agent->id();
+  fault.agent_id = agent_id_;
+  fault.detail = detail;
+  lcm::Publish(lcm_, lcm::kFaultChannelPrefix + std::to_string(robot.agent->id()), fault);
+}
+
+bool AgentHost::Answer(RobotSlot& robot, const robot_poses_t& poses) {
   const RobotAgent::Output output = robot.agent->Step(world_);
   ReportBadRadioPayloads(robot);
   velocity_command_t& command = robot.last_command;
@@ -141,6 +156,14 @@ void AgentHost::Answer(RobotSlot& robot, const robot_poses_t& poses) {
   command.w = output.command.w_radps;
   command.done = output.done;
   robot.last_radio.reset();
+  if (output.broadcast && output.broadcast->payload.size() > static_cast<size_t>(lcm::MessageLimits::kRadioPayloadBytes)) {
+    // Every receiver, and the world, would drop it: the robot would talk to no one, unseen.
+    Fail(robot, poses,
+         "robot " + std::to_string(robot.agent->id()) + ": OnRadio returned a payload of " +
+             std::to_string(output.broadcast->payload.size()) + " bytes, over the limit of " +
+             std::to_string(lcm::MessageLimits::kRadioPayloadBytes) + " bytes (every receiver would drop it)");
+    return false;
+  }
   if (output.broadcast) {
     radio_message_t radio{};
     radio.utime = poses.utime;
@@ -153,6 +176,7 @@ void AgentHost::Answer(RobotSlot& robot, const robot_poses_t& poses) {
     robot.last_radio = std::move(radio);
   }
   last_step_answered_ = std::max(last_step_answered_, poses.step);
+  return true;
 }
 
 void AgentHost::OnPoses(const std::string& channel, const robot_poses_t& poses) {
@@ -196,7 +220,8 @@ void AgentHost::OnPoses(const std::string& channel, const robot_poses_t& poses) 
                                         std::to_string(poses.num_robots) + " robots");
       continue;
     }
-    if (decision == WorldFollower::StepDecision::kNewStep) Answer(robot, poses);
+    if (!robot.fault.empty()) continue;  // given up: the world was told, and stops the robot
+    if (decision == WorldFollower::StepDecision::kNewStep && !Answer(robot, poses)) continue;
     if (robot.last_radio) lcm::Publish(lcm_, robot.radio_channel, *robot.last_radio);
     lcm::Publish(lcm_, robot.command_channel, robot.last_command);
   }

@@ -57,11 +57,18 @@ std::vector<VerdictReason> OutcomeReasons(const RunOutcome& outcome) {
         channels += ", ...";
         break;
       }
-      channels += (channels.empty() ? "" : ", ") + channel + " (" + std::to_string(count) + ")";
+      channels += (channels.empty() ? "" : ", ") + channel + " (" + std::to_string(count);
+      const auto refused = outcome.refused.find(channel);
+      if (refused != outcome.refused.end()) channels += ", first at step " + std::to_string(refused->second.first_step);
+      channels += ")";
     }
     reasons.push_back({"bad_messages", RunVerdict::kNotReady,
                        std::to_string(bad) + " undecodable or refused messages were dropped: " + channels,
-                       "summary.json bad_messages and bad_message_senders"});
+                       outcome.refused_log.empty()
+                           ? std::string("summary.json bad_messages and bad_message_senders")
+                           : "summary.json bad_messages, bad_message_senders and refused_messages; the first " +
+                                 std::to_string(outcome.refused_log_events) + " as heard: dream log echo " +
+                                 outcome.refused_log});
   }
   if (!outcome.other_worlds.empty()) {
     reasons.push_back({"other_worlds", RunVerdict::kNotReady,

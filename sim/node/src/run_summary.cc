@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
+
 #include "dream/lcm/run_id.h"
 #include "dream/node/json_text.h"
 #include "dream/node/true_pose_recording.h"
@@ -65,6 +67,14 @@ nlohmann::ordered_json RunSummary(const config::RunConfig& config, const RunOutc
   json["robots_done"] = outcome.robots_done;
   json["bad_messages"] = outcome.bad_messages;
   json["bad_message_senders"] = outcome.bad_message_senders;
+  nlohmann::json refused = nlohmann::json::object();
+  for (const auto& [channel, seen] : outcome.refused) {
+    refused[channel] = {{"count", seen.count}, {"first_step", seen.first_step}};
+  }
+  json["refused_messages"] = refused;
+  // Only the file's name: it lies beside the log, as `log` does.
+  json["refused_log"] = std::filesystem::path(outcome.refused_log).filename().string();
+  json["refused_log_events"] = outcome.refused_log_events;
   json["handler_failures"] = outcome.handler_failures;
   json["dropped_messages"] = outcome.dropped_messages;
   json["log"] = log_file_name;

@@ -4,7 +4,9 @@
 
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <stdexcept>
+#include <string_view>
 #include <thread>
 
 #include "dream/applied_commands_t.hpp"
@@ -15,6 +17,8 @@
 #include "dream/lcm/wire_text.h"
 #include "dream/node/world_messages.h"
 #include "dream/obstacles_t.hpp"
+#include "dream/radio_message_t.hpp"
+#include "dream/node/refused_record.h"
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
@@ -32,6 +36,20 @@ double SecondsBetween(std::chrono::steady_clock::time_point from, std::chrono::s
 
 // Bit for bit, so a resent NaN command is the same command (and not a conflict).
 bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
+
+// Decodes a message heard on `channel`, or reports why it does not decode
+// (as lcm::Subscribe does) and returns false.
+template <typename Message>
+bool DecodeOrReport(lcm::BadMessageLog& bad_messages, const std::string& channel, const void* data, int size,
+                    Message* message) {
+  if (std::optional<std::string> problem = lcm::DecodeProblem(data, size, message)) {
+    bad_messages.Report(channel,
+                        "cannot decode " + std::to_string(size) + " bytes as " + Message::getTypeName() + ": " + *problem,
+                        lcm::WireLayoutOf<Message>().AgentIdOf(data, size));
+    return false;
+  }
+  return true;
+}
 
 std::string JoinIds(const std::vector<int>& ids) {
   std::string text;
@@ -61,27 +79,90 @@ SimNode::SimNode(lcm::LcmInterface& lcm, World& world, RunRecorder* recorder, Si
       run_id_(lcm::NewRunId()) {
   std::string error;
   if (!options_.IsValid(&error)) throw std::invalid_argument("sim options: " + error);
-  lcm::Subscribe(lcm_, lcm::kCommandChannelRegex, this, &SimNode::OnCommand, bad_messages_);
-  lcm::Subscribe(lcm_, lcm::kFaultChannelRegex, this, &SimNode::OnFault, bad_messages_);
-  // Our own statuses come back too (memq, udpm loopback); another run id is a second world.
-  lcm::Subscribe(lcm_, lcm::kStatusChannel, this, &SimNode::OnStatus, bad_messages_);
-  if (recorder_ != nullptr) {
-    lcm_.Subscribe(".*", [this](const std::string& channel, const void* data, int size) {
-      OnAnyMessage(channel, data, size);
-    });
-  }
+  // One handler hears everything, so that what each message turned out to be
+  // (used or refused) decides where it is recorded.
+  lcm_.Subscribe(".*", [this](const std::string& channel, const void* data, int size) {
+    OnMessage(channel, data, size);
+  });
 }
 
 int64_t SimNode::SimUtime() const { return world_.utime(); }
 
-void SimNode::OnAnyMessage(const std::string& channel, const void* data, int size) {
-  // The world's own channels are recorded once, when published; udpm's
-  // start-up self test is transport noise, not part of the run.
-  if (channel == lcm::kPosesChannel || channel == lcm::kObstaclesChannel || channel == lcm::kStatusChannel ||
-      channel == "LCM_SELF_TEST") {
+void SimNode::OnMessage(const std::string& channel, const void* data, int size) {
+  // The world's own channels are recorded once, when published (another
+  // world's show on its status); udpm's start-up self test is transport
+  // noise, not part of the run.
+  if (channel == lcm::kPosesChannel || channel == lcm::kObstaclesChannel || channel == "LCM_SELF_TEST") return;
+  if (channel == lcm::kStatusChannel) {
+    // Our own statuses come back too (memq, udpm loopback); another run id is a second world.
+    run_status_t status;
+    if (DecodeOrReport(bad_messages_, channel, data, size, &status)) OnStatus(channel, status);
     return;
   }
-  Record(channel, data, size);
+  switch (Hear(channel, data, size)) {
+    case Heard::kUsed:
+      Record(channel, data, size);
+      break;
+    case Heard::kRefused:
+      if (refused_ != nullptr) refused_->Add(channel, world_.step(), SimUtime(), data, size);
+      break;
+    case Heard::kRepeat:
+      break;
+  }
+}
+
+SimNode::Heard SimNode::Hear(const std::string& channel, const void* data, int size) {
+  if (channel.rfind(lcm::kCommandChannelPrefix, 0) == 0) {
+    velocity_command_t command;
+    if (!DecodeOrReport(bad_messages_, channel, data, size, &command)) return Heard::kRefused;
+    return OnCommand(channel, command);
+  }
+  if (channel.rfind(lcm::kFaultChannelPrefix, 0) == 0) {
+    robot_fault_t fault;
+    if (!DecodeOrReport(bad_messages_, channel, data, size, &fault)) return Heard::kRefused;
+    return OnFault(channel, fault);
+  }
+  if (channel.rfind(lcm::kRadioChannelPrefix, 0) == 0) return OnRadio(channel, data, size);
+  // DREAM_APPLIED and DREAM_MEASURED_POSES are the world's own records, never
+  // sent: one heard is forged; any other name is not part of a run.
+  bad_messages_.Report(channel, "not a channel agents send on (DREAM_CMD_<id>, DREAM_RADIO_<id>, DREAM_FAULT_<id>): "
+                                "refused, kept out of the run log");
+  return Heard::kRefused;
+}
+
+SimNode::Heard SimNode::OnRadio(const std::string& channel, const void* data, int size) {
+  radio_message_t radio;
+  if (!DecodeOrReport(bad_messages_, channel, data, size, &radio)) return Heard::kRefused;
+  const std::optional<int> id = lcm::RobotIdFromChannel(channel, lcm::kRadioChannelPrefix);
+  std::string problem;
+  if (radio.run_id != run_id_) {
+    problem = "radio of another run " + lcm::RunIdText(radio.run_id);
+  } else if (!id || *id != radio.sender_id || *id >= world_.num_robots()) {
+    problem = "radio from robot " + std::to_string(radio.sender_id) + " does not match its channel or this run's " +
+              std::to_string(world_.num_robots()) + " robots";
+  } else if (radio.step < 0 || radio.step > world_.step()) {
+    problem = "radio sent at step " + std::to_string(radio.step) + " but the world is at step " +
+              std::to_string(world_.step());
+  }
+  if (problem.empty()) {
+    RobotSlot& robot = robots_[static_cast<size_t>(*id)];
+    const size_t hash = std::hash<std::string_view>{}(std::string_view(static_cast<const char*>(data), size));
+    if (robot.radio_world_step != world_.step()) {
+      robot.radio_world_step = world_.step();
+      robot.radio_messages = 0;
+    } else if (hash == robot.radio_hash) {
+      return Heard::kRepeat;  // the agent's resend with the world's resent step
+    }
+    if (robot.radio_messages < kMaxRadioPerRobotPerStep) {
+      ++robot.radio_messages;
+      robot.radio_hash = hash;
+      return Heard::kUsed;
+    }
+    problem = "more than " + std::to_string(kMaxRadioPerRobotPerStep) + " different radio messages from robot " +
+              std::to_string(*id) + " at step " + std::to_string(world_.step()) + " (a flood)";
+  }
+  bad_messages_.Report(channel, problem, radio.agent_id);
+  return Heard::kRefused;
 }
 
 void SimNode::Record(const std::string& channel, const void* data, int size) {
@@ -127,11 +208,11 @@ void SimNode::Conflict(const std::string& channel, RobotSlot& robot, const veloc
   Reject(channel, "conflict: " + reason, command.agent_id);
 }
 
-void SimNode::OnFault(const std::string& channel, const robot_fault_t& fault) {
+SimNode::Heard SimNode::OnFault(const std::string& channel, const robot_fault_t& fault) {
   if (fault.run_id != run_id_) {
     NoteOtherWorld(fault.run_id, channel);
     bad_messages_.Report(channel, "robot fault of another run " + lcm::RunIdText(fault.run_id), fault.agent_id);
-    return;
+    return Heard::kRefused;
   }
   const std::optional<int> id = lcm::RobotIdFromChannel(channel, lcm::kFaultChannelPrefix);
   if (!id || *id != fault.robot_id || *id >= world_.num_robots()) {
@@ -139,7 +220,7 @@ void SimNode::OnFault(const std::string& channel, const robot_fault_t& fault) {
                          "robot fault for robot " + std::to_string(fault.robot_id) +
                              " does not match its channel or this run's robots",
                          fault.agent_id);
-    return;
+    return Heard::kRefused;
   }
   RobotSlot& robot = robots_[static_cast<size_t>(*id)];
   // Only the agent driving the robot may give it up.
@@ -148,9 +229,9 @@ void SimNode::OnFault(const std::string& channel, const robot_fault_t& fault) {
                          "robot fault from agent " + std::to_string(fault.agent_id) +
                              ", which does not drive robot " + std::to_string(*id),
                          fault.agent_id);
-    return;
+    return Heard::kRefused;
   }
-  if (robot_faults_.count(*id) != 0) return;  // said once is enough
+  if (robot_faults_.count(*id) != 0) return Heard::kRepeat;  // said once is enough
   const std::string& detail = fault.detail;  // at most MessageLimits::kDetailBytes, checked by lcm::Decode
   robot_faults_[*id] = "step " + std::to_string(world_.step()) + ": " + detail;
   robot.lost = true;
@@ -158,41 +239,45 @@ void SimNode::OnFault(const std::string& channel, const robot_fault_t& fault) {
   world_.StopRobot(*id);
   spdlog::error("robot {} lost at step {}: its controller failed: {}; it stops, the run goes on", *id,
                 world_.step(), detail);
+  return Heard::kUsed;
 }
 
-void SimNode::OnCommand(const std::string& channel, const velocity_command_t& command) {
+SimNode::Heard SimNode::OnCommand(const std::string& channel, const velocity_command_t& command) {
   const std::optional<int> channel_id = lcm::RobotIdFromCommandChannel(channel);
   if (!channel_id) {
     Reject(channel, "channel name must be DREAM_CMD_<robot id>", command.agent_id);
-    return;
+    return Heard::kRefused;
   }
   if (command.run_id != run_id_) {
     NoteOtherWorld(command.run_id, channel);
     Reject(channel, "answers run " + lcm::RunIdText(command.run_id) + ", not this run " + lcm::RunIdText(run_id_),
            command.agent_id);
-    return;
+    return Heard::kRefused;
   }
   const int id = *channel_id;
   if (id >= world_.num_robots()) {
     Reject(channel, "robot " + std::to_string(id) + " does not exist: this run has " +
                         std::to_string(world_.num_robots()) + " robots (ids 0.." +
                         std::to_string(world_.num_robots() - 1) + ")", command.agent_id);
-    return;
+    return Heard::kRefused;
   }
   if (command.robot_id != id) {
     Reject(channel, "payload robot_id " + std::to_string(command.robot_id) + " does not match the channel", command.agent_id);
-    return;
+    return Heard::kRefused;
   }
   // Commands answer the step the world is at: a later step was never
   // published, and one further back is late (lockstep: already taken).
   if (command.step < 0 || command.step > world_.step()) {
     Reject(channel, "answers step " + std::to_string(command.step) + " but the world is at step " +
                         std::to_string(world_.step()), command.agent_id);
-    return;
+    return Heard::kRefused;
   }
   const bool lockstep = options_.mode == WorldMode::kLockstep;
   RobotSlot& robot = robots_[static_cast<size_t>(id)];
-  if (command.step < robot.command_step) return;  // older than the command held
+  // Late (older than the command held, or for a step the robot missed) or
+  // resent: not used again, so not recorded again; the log keeps one command
+  // per robot and step, whoever floods the bus.
+  if (command.step < robot.command_step) return Heard::kRepeat;
   if (command.step == robot.command_step) {
     // The resend of the world's step gets the same answer again; anything
     // else for this robot and step is a second sender, also when it comes
@@ -205,10 +290,11 @@ void SimNode::OnCommand(const std::string& channel, const velocity_command_t& co
                "robot " + std::to_string(id) + " already has a different command for step " +
                    std::to_string(command.step) + " (from agent " + std::to_string(robot.owner_agent_id) +
                    "); this one from agent " + std::to_string(command.agent_id) + " is refused, the first is applied");
+      return Heard::kRefused;
     }
-    return;
+    return Heard::kRepeat;  // the same again (the world resent its step)
   }
-  if (lockstep && command.step < world_.step()) return;  // late, for a step the robot missed
+  if (lockstep && command.step < world_.step()) return Heard::kRepeat;
   if (!robot.owned || (robot.lost && robot.owner_agent_id != command.agent_id)) {
     if (robot.owned) spdlog::warn("robot {}: agent {:#x} takes over from lost agent {:#x}", id, command.agent_id, robot.owner_agent_id);
     robot.owned = true;
@@ -218,7 +304,7 @@ void SimNode::OnCommand(const std::string& channel, const velocity_command_t& co
              "robot " + std::to_string(id) + " is already driven by agent " + std::to_string(robot.owner_agent_id) +
                  "; a second agent " + std::to_string(command.agent_id) +
                  " sends commands for it too. Stop one of them.");
-    return;
+    return Heard::kRefused;
   }
   const auto now = Clock::now();
   robot.last_heard = now;
@@ -232,7 +318,9 @@ void SimNode::OnCommand(const std::string& channel, const velocity_command_t& co
   robot.received_v = command.v;
   robot.received_w = command.w;
   const bool finite = std::isfinite(command.v) && std::isfinite(command.w);
-  if (!finite || std::abs(command.v) > options_.max_abs_v_mps || std::abs(command.w) > options_.max_abs_w_radps) {
+  const bool absurd =
+      !finite || std::abs(command.v) > options_.max_abs_v_mps || std::abs(command.w) > options_.max_abs_w_radps;
+  if (absurd) {
     Reject(channel, "absurd velocity v=" + std::to_string(command.v) + " m/s, w=" + std::to_string(command.w) +
                         " rad/s (limits " + std::to_string(options_.max_abs_v_mps) + ", " +
                         std::to_string(options_.max_abs_w_radps) + "); robot " + std::to_string(id) +
@@ -245,6 +333,9 @@ void SimNode::OnCommand(const std::string& channel, const velocity_command_t& co
   }
   robot.done = command.done;
   if (!lockstep) world_.SetCommand(id, UnicycleCommand{robot.v_mps, robot.w_radps});
+  // An absurd command answers the step (the robot holds still), but its
+  // values were refused: kept apart from the log, whose DREAM_APPLIED shows the stop.
+  return absurd ? Heard::kRefused : Heard::kUsed;
 }
 
 void SimNode::RecordApplied() {
@@ -414,6 +505,12 @@ RunOutcome SimNode::Finish(RunOutcome::End end, const std::string& reason) {
   }
   outcome.bad_messages = bad_messages_.per_channel();
   outcome.bad_message_senders = bad_messages_.senders();
+  if (refused_ != nullptr) {
+    outcome.refused = refused_->per_channel();
+    refused_->Close();
+    if (refused_->events_kept() > 0) outcome.refused_log = refused_->path();
+    outcome.refused_log_events = refused_->events_kept();
+  }
   outcome.handler_failures = lcm_.handler_failures();
   outcome.dropped_messages = lcm_.dropped_messages();
   outcome.log_events = recorder_ != nullptr ? recorder_->events_written() : 0;

@@ -24,7 +24,18 @@ RunLog RunLog::Read(const std::string& path) {
   run_status_t status;
   radio_message_t radio;
   robot_fault_t fault;
-  std::map<int, std::string> faults;  // the first of each robot
+  // Radio and faults as heard, kept once the run's id (its poses') is known:
+  // another run's, or a sender that does not match its channel, are no part
+  // of this run (the world refuses them; older logs may hold them).
+  struct Heard {
+    int channel_id;
+    int64_t run_id;
+    int64_t step;
+    int32_t robot_id;
+    std::string detail;
+  };
+  std::vector<Heard> radio_heard;
+  std::vector<Heard> faults_heard;
   // A world message that does not decode: named by its event and byte offset.
   auto undecodable = [&](std::optional<Problem>* flaw, const std::string& problem) {
     if (*flaw) return;
@@ -56,12 +67,25 @@ RunLog RunLog::Read(const std::string& path) {
       } else {
         log.last_status_ = std::move(status);
       }
-    } else if (lcm::RobotIdFromChannel(record.channel, lcm::kRadioChannelPrefix)) {
-      if (lcm::Decode(data, size, &radio)) log.radio_sends_.push_back({radio.step, radio.sender_id});
+    } else if (const std::optional<int> sender = lcm::RobotIdFromChannel(record.channel, lcm::kRadioChannelPrefix)) {
+      if (lcm::Decode(data, size, &radio)) radio_heard.push_back({*sender, radio.run_id, radio.step, radio.sender_id, {}});
     } else if (const std::optional<int> id = lcm::RobotIdFromChannel(record.channel, lcm::kFaultChannelPrefix)) {
-      if (lcm::Decode(data, size, &fault) && fault.robot_id == *id && faults.count(*id) == 0) {
-        faults[*id] = "step " + std::to_string(fault.step) + ": " + fault.detail;  // bounded by lcm::Decode
+      if (lcm::Decode(data, size, &fault)) {
+        faults_heard.push_back({*id, fault.run_id, fault.step, fault.robot_id, std::move(fault.detail)});
       }
+    }
+  }
+  const int64_t run_id = log.poses_.empty() ? 0 : log.poses_.front().run_id;
+  auto of_this_run = [&](const Heard& heard) {
+    return heard.run_id == run_id && heard.robot_id == heard.channel_id && heard.robot_id < log.num_robots_;
+  };
+  for (const Heard& heard : radio_heard) {
+    if (of_this_run(heard)) log.radio_sends_.push_back({heard.step, heard.robot_id});
+  }
+  std::map<int, std::string> faults;  // the first of each robot
+  for (const Heard& heard : faults_heard) {
+    if (of_this_run(heard) && faults.count(heard.robot_id) == 0) {
+      faults[heard.robot_id] = "step " + std::to_string(heard.step) + ": " + heard.detail;  // bounded by lcm::Decode
     }
   }
   log.Index(faults);

@@ -14,6 +14,7 @@
 #include "dream/node/json_text.h"
 #include "dream/node/output_folder.h"
 #include "dream/node/run_judge.h"
+#include "dream/node/refused_record.h"
 #include "dream/node/run_summary.h"
 #include "dream/node/sim_node.h"
 #include "dream/node/true_pose_recording.h"
@@ -28,6 +29,7 @@ namespace dream::session {
 namespace {
 
 constexpr const char* kLogName = "run.lcmlog";
+constexpr const char* kRefusedLogName = "refused.lcmlog";
 
 }  // namespace
 
@@ -84,7 +86,10 @@ RunSession::Stepped RunSession::Step(lcm::LcmInterface& lcm, const Folder& folde
     if (const auto* realistic = dynamic_cast<const sim::RealisticWorld*>(stepped.world.get())) {
       truth.emplace(recorder, *realistic);
     }
+    // What the world refuses is kept apart from the run's log (at most a few MB).
+    sim::RefusedRecord refused(folder.dir + "/" + kRefusedLogName);
     sim::SimNode node(lcm, *stepped.world, &recorder, config_.sim);
+    node.set_refused_record(&refused);
     if (given.start_line.empty()) {
       spdlog::info("{}: {} robots, up to {} steps, {} on {}", config_.name, config_.num_robots, config_.sim.max_steps,
                    sim::WorldModeName(config_.sim.mode), lcm.url());

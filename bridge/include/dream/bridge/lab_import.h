@@ -23,9 +23,17 @@ struct ExportedSubmission {
   config::RunConfig config;     ///< config.yaml (a copy of the run's)
   std::string config_text;
   std::string source_run;       ///< the simulated run it came from (export.json), may be empty
+  /// Whether export.json held the upload files' digests and every file
+  /// matched; false only for an export written before digests were.
+  bool digests_checked = false;
+
+  /// export.json's key for the SHA-256 of each file in upload/, by name.
+  static constexpr const char* kDigestsKey = "upload_sha256";
 
   /// @throws std::runtime_error naming the file when something is missing,
-  ///         or the parameters do not match the config.
+  ///         the parameters do not match the config, or a file in upload/ is
+  ///         not as the export wrote it (its digest differs, it is missing,
+  ///         or the export wrote no such file).
   static ExportedSubmission Read(const std::string& dir);
 
   /// The most values a result of this export can hold: every settle step,

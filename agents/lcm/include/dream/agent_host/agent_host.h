@@ -85,13 +85,19 @@ class AgentHost {
     velocity_command_t last_command{};
     std::optional<radio_message_t> last_radio;
     lcm::BadMessageLog bad_radio_payloads;
+    /// Why the host gave the robot up (its controller broke the contract),
+    /// said once on DREAM_FAULT_<id>; empty while it is answered.
+    std::string fault;
   };
 
   void OnPoses(const std::string& channel, const robot_poses_t& poses);
   void OnObstacles(const std::string& channel, const obstacles_t& obstacles);
   void OnStatus(const std::string& channel, const run_status_t& status);
   void OnRadio(const std::string& channel, const radio_message_t& message);
-  void Answer(RobotSlot& robot, const robot_poses_t& poses);
+  /// Runs the robot for this step; false when its controller failed (the
+  /// host then says so on DREAM_FAULT_<id> and stops answering for it).
+  bool Answer(RobotSlot& robot, const robot_poses_t& poses);
+  void Fail(RobotSlot& robot, const robot_poses_t& poses, const std::string& detail);
   /// Hands a radio message of the followed run to every hosted robot, or
   /// counts it as bad when it was sent at a step not yet reached.
   void Deliver(const std::string& channel, const radio_message_t& message);

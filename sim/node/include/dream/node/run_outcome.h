@@ -5,6 +5,8 @@
 #include <set>
 #include <string>
 
+#include "dream/node/refused_record.h"
+
 namespace dream::sim {
 
 /// How a run ended and what happened on the way; what the summary reports.
@@ -38,6 +40,12 @@ struct RunOutcome {
   std::map<std::string, long> bad_messages;
   /// Per channel of bad_messages, the agent ids that sent them (when the messages carry one).
   std::map<std::string, std::set<int64_t>> bad_message_senders;
+  /// Messages the world heard and refused (kept out of the run log), per
+  /// channel with the step of the first; RefusedRecord's caps apply.
+  std::map<std::string, RefusedRecord::Channel> refused;
+  /// The log of the first refused messages (RefusedRecord), if any was kept.
+  std::string refused_log;
+  int64_t refused_log_events = 0;
   long handler_failures = 0;         ///< exceptions caught in message handlers on the run's bus
   long dropped_messages = 0;         ///< messages the run's bus dropped, its queue full (memq://)
   int64_t log_events = 0;            ///< events written to the run log

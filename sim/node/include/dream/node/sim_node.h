@@ -25,6 +25,7 @@ class run_status_t;
 namespace dream::sim {
 
 class ProgressReporter;
+class RefusedRecord;
 class RunRecorder;
 
 /// A world on the bus: publishes it, consumes commands, records the run. The
@@ -35,8 +36,12 @@ class RunRecorder;
 ///
 /// Writes DREAM_OBSTACLES, DREAM_STATUS and then DREAM_POSES (the trigger
 /// agents answer) for every step; reads DREAM_CMD_<id>. Records its own
-/// messages once, as published, and every other channel as received, all with
-/// the simulated time of the current step.
+/// messages once, as published, and what the run used of what it heard
+/// (commands, radio and faults of this run's robots that pass the checks), all
+/// with the simulated time of the current step. Everything else it hears is
+/// refused and counted (bad_messages), never recorded in the run's log: an
+/// undecodable or refused command, radio or fault, any other channel (a forged
+/// DREAM_APPLIED, made-up names); a RefusedRecord keeps those apart.
 ///
 /// Bad commands never stop the run: a NaN/inf or absurd command is rejected,
 /// counted, and its robot holds still for that step; a command for a robot
@@ -69,11 +74,20 @@ class SimNode {
   int64_t run_id() const { return run_id_; }
   /// Other worlds' run ids kept in the outcome, so a flood cannot grow memory.
   static constexpr size_t kMaxOtherWorlds = 16;
+  /// Different radio messages of one robot recorded per world step (its radio
+  /// speaks once a step; resends of the same message are not recorded again):
+  /// more are refused, so a flood with the run's id cannot grow the log.
+  static constexpr int kMaxRadioPerRobotPerStep = 4;
 
   /// Shows the run's progress (steps/s, ETA to max_steps) on `reporter` from
   /// the first step on; null (the default): no progress output. Must outlive
   /// Run().
   void set_progress_reporter(ProgressReporter* reporter) { progress_ = reporter; }
+
+  /// Counts and keeps the refused messages (see the class comment) in
+  /// `refused`; null (the default): they are only counted in bad_messages.
+  /// Must outlive Run().
+  void set_refused_record(RefusedRecord* refused) { refused_ = refused; }
 
  private:
   using Clock = std::chrono::steady_clock;
@@ -89,11 +103,24 @@ class SimNode {
     int32_t conflicts = 0;         // refused different commands for command_step
     double received_v = 0.0;       // the held command as sent (v/w are zeroed when it was absurd)
     double received_w = 0.0;
+    int64_t radio_world_step = -1; // the world's step when radio_messages were recorded
+    int radio_messages = 0;        // different radio messages recorded from this robot at that step
+    size_t radio_hash = 0;         // of the last one recorded: its resend is not recorded again
     Clock::time_point last_heard;
   };
 
-  void OnCommand(const std::string& channel, const velocity_command_t& command);
-  void OnFault(const std::string& channel, const robot_fault_t& fault);
+  /// What became of a message heard on the bus.
+  enum class Heard {
+    kUsed,     ///< part of the run: recorded
+    kRefused,  ///< counted in bad_messages, kept out of the log (RefusedRecord)
+    kRepeat,   ///< a repeat of what the run took already (a resent command or radio, a second fault) or a late one: neither
+  };
+  /// Every message heard: dispatched by channel, then recorded or refused.
+  void OnMessage(const std::string& channel, const void* data, int size);
+  Heard Hear(const std::string& channel, const void* data, int size);
+  Heard OnCommand(const std::string& channel, const velocity_command_t& command);
+  Heard OnFault(const std::string& channel, const robot_fault_t& fault);
+  Heard OnRadio(const std::string& channel, const void* data, int size);
   void OnStatus(const std::string& channel, const run_status_t& status);
   /// Notes a run id of another world (logged once per id).
   void NoteOtherWorld(int64_t run_id, const std::string& seen_on);
@@ -105,7 +132,6 @@ class SimNode {
   bool Answered(const RobotSlot& robot) const { return robot.command_step == world_.step(); }
   /// Records which commands are applied at this step (DREAM_APPLIED).
   void RecordApplied();
-  void OnAnyMessage(const std::string& channel, const void* data, int size);
   /// Writes one event to the recorder, if any; a write failure is remembered
   /// (the recorder is failed from then on) for Run() to end the run.
   void Record(const std::string& channel, const void* data, int size);
@@ -144,6 +170,7 @@ class SimNode {
   Clock::time_point step_published_;
   Clock::time_point last_resend_;
   ProgressReporter* progress_ = nullptr;
+  RefusedRecord* refused_ = nullptr;
 };
 
 }  // namespace dream::sim

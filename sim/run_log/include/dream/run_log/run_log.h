@@ -59,7 +59,8 @@ class RunLog {
   /// the first.
   const obstacles_t& obstacles_at(size_t pose_index) const;
 
-  /// Every DREAM_RADIO_<n> broadcast that decodes, by step (log order within a step).
+  /// Every DREAM_RADIO_<n> broadcast of this run (the run id of its poses,
+  /// sender n, one of its robots) that decodes, by step (log order within a step).
   const std::vector<RadioSend>& radio_sends() const { return radio_sends_; }
 
   /// The last DREAM_STATUS that decodes: how the run ended (FINISHED,
@@ -67,8 +68,10 @@ class RunLog {
   const std::optional<run_status_t>& last_status() const { return last_status_; }
   /// Of the robots lost at the end (last_status()'s lost_robot_ids), those
   /// whose agent said why on DREAM_FAULT_<id>: id -> "step k: detail", from
-  /// the first fault on the channel whose robot_id is the channel's (a fault
-  /// from another agent, which the world refused, names a robot that drove on).
+  /// the first fault of this run (the run id of its poses) on the channel
+  /// whose robot_id is the channel's (a fault from another agent, which the
+  /// world refused, names a robot that drove on; another run's is none of
+  /// this run's: the world refuses it and logs from before it did are read so).
   const std::map<int, std::string>& robot_faults() const { return robot_faults_; }
 
   /// Why this is not a whole run log, the first in the log, as an error naming
