@@ -20,6 +20,7 @@ test prints SKIP and exits 77.
 import argparse
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -101,6 +102,13 @@ def check_submission(dream, tmp, export_dir, flags):
     report, _ = run([dream, "calibrate", check_dir, "--out", os.path.join(tmp, "fitted.yaml")])
     check("Lab model fitted to 1 run, %d robots" % ROBOTS in report, "dream calibrate on the check: " + report[-2000:])
     check(os.path.isfile(os.path.join(tmp, "fitted.yaml")), "dream calibrate wrote no realism file")
+    # A simulator has no delay: a step from rest shows one step later (the official step), never
+    # the seconds a simulator's fast clock (not real time) would make of it.
+    delays = [float(m.group(1)) for m in re.finditer(r"^\s+\d\.\d\d\s+\d+\s+(-?\d+) ms", report, re.M)]
+    check(len(delays) == 3 and all(-40 <= d <= 40 for d in delays), "effective delays in a simulator: %s\n%s" %
+          (delays, report[-1500:]))
+    check(re.search(r"step_overrun_mean_s\s+\S+\s+kept", report),
+          "a simulator's clock was taken for the lab's:\n" + report[-3000:])
     return result, seconds
 
 
