@@ -114,11 +114,18 @@ int RunCalibrationExport(const ExportArgs& args, bridge::ExportOptions options) 
   options.calibration = true;
   const std::string name = bridge::CalibrationConfig::Name(args.robots);
   const std::string config_text = bridge::CalibrationConfig::Text(args.robots);
-  // The export folder is checked before the run: a folder holding a run is refused by the export.
+  // Both folders are checked before the run, so a refusal wastes none.
   const std::string out_dir = args.out_dir.empty() ? (fs::path("exports") / name).string() : args.out_dir;
+  if (RunFolderChoice::HoldsRun(out_dir)) {
+    throw std::runtime_error("--out " + out_dir + " holds a run (run.lcmlog or summary.json); an export would "
+                             "replace its config.yaml: choose another --out");
+  }
   if (!args.run_dir.empty() && RunFolderChoice::HoldsRun(args.run_dir)) {
     throw std::runtime_error(args.run_dir + ": already holds a run (run.lcmlog or summary.json); --calibration " +
                              "writes a new one: name another folder, or leave it out (runs/" + name + ")");
+  }
+  if (!args.run_dir.empty() && fs::weakly_canonical(fs::absolute(args.run_dir)) == fs::weakly_canonical(fs::absolute(out_dir))) {
+    throw std::runtime_error(args.run_dir + " is also --out: the run and its export need folders of their own");
   }
   config::RunConfig config = config::LoadRunConfig(config::ConfigNode::LoadString(config_text, name + ".yaml"));
   session::RunSession::Options session_options;
@@ -138,6 +145,7 @@ int RunCalibrationExport(const ExportArgs& args, bridge::ExportOptions options) 
     clean = result.judgement.verdict() == sim::RunVerdict::kClean;
   }
   // Clean, not merely accepted: the lab must run the program as it is.
+  if (run_code == kExitInterrupted) return run_code;
   if (run_code != kExitOk || !clean) {
     std::cerr << "dream export: the calibration run in " << run_dir << " is not clean (see above); nothing was "
               << "exported.\n";

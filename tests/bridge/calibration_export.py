@@ -48,10 +48,19 @@ def refusals(dream, tmp):
         (["--calibration", "--robots", "3", "--strategy", "track"], "--strategy track: --calibration exports"),
         (["--calibration", "--robots", "3", "--barriers"], "--barriers: would change the program's commands"),
     ]
+    # A run folder given as RUN and as --out: refused before any run.
+    os.makedirs(os.path.join(cwd, "held"))
+    with open(os.path.join(cwd, "held", "summary.json"), "w") as f:
+        f.write("{}")
+    cases += [
+        (["--calibration", "--robots", "3", "--out", "held"], "--out held holds a run"),
+        (["--calibration", "--robots", "3", "held"], "held: already holds a run"),
+        (["--calibration", "--robots", "3", "same", "--out", "same"], "same is also --out"),
+    ]
     for extra, message in cases:
         output, _ = run([dream, "export"] + extra, expect=1, cwd=cwd)
         check(message in output, "dream export %s: expected '%s', got: %s" % (" ".join(extra), message, output))
-        check(not os.listdir(cwd), "dream export %s left %s" % (" ".join(extra), os.listdir(cwd)))
+        check(os.listdir(cwd) == ["held"], "dream export %s left %s" % (" ".join(extra), os.listdir(cwd)))
 
 
 def export(dream, tmp):
