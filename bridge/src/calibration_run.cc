@@ -255,6 +255,20 @@ CalibrationRun ReadCalibrationRun(const std::string& path, const CalibrationInpu
     throw std::runtime_error(path + ": not a run folder, .lcmlog, .npz, .mat or .npy file (what calibrate reads)");
   }
   CheckCalibrationRun(run);
+  // A simulator that does not run in real time (dream check-submission's)
+  // stamps its steps far faster than the lab's loop can run: that clock says
+  // nothing about the lab's and would scale every speed and delay, so the
+  // run counts nominal steps.
+  const auto steps = static_cast<int64_t>(run.track.utime.size());
+  if (run.timed && steps > 1 &&
+      static_cast<double>(run.track.utime.back() - run.track.utime.front()) * 1e-6 <
+          0.5 * kNominalStepS * static_cast<double>(steps - 1)) {
+    for (int64_t k = 0; k < steps; ++k) {
+      run.track.utime[static_cast<size_t>(k)] =
+          run.track.utime.front() + std::llround(static_cast<double>(k) * kNominalStepS * 1e6);
+    }
+    run.timed = false;
+  }
   return run;
 }
 

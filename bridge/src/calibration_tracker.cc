@@ -202,7 +202,11 @@ void CalibrationTracker::FitNoise(CalibrationReport* report) const {
     // Neighbouring differences share a measurement: about half as many independent ones.
     AddKey(report, SigmaKey("pose_noise_m", sigma, rest_n, Count(rest_n) + " pairs of measurements at rest"));
     AddKey(report, SigmaKey("pose_noise_rad", heading, rest_n, Count(rest_n) + " pairs of measurements at rest"));
-    if (move_n >= 50) {
+    if (sigma <= 0.0) {
+      // Poses without noise at rest (a simulator's): no ratio to take.
+      AddKey(report, KeptKey(base_, "pose_noise_moving_factor",
+                             "no position noise at rest (exact poses, as a simulator gives), so no ratio to it"));
+    } else if (move_n >= 50) {
       const double moving = std::sqrt(move_pos / (12 * move_n));
       const double factor = std::max(1.0, moving / sigma);
       const double relative = kZ95 * std::sqrt(1.0 / (2 * rest_n) + 1.0 / (2 * move_n));

@@ -292,6 +292,7 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
   manifest["source_run"] = source_run;
   manifest["strategy"] = StrategyName(options.strategy);
   manifest["barriers"] = options.barriers;
+  if (options.calibration) manifest["calibration"] = true;
   manifest["robots"] = n;
   manifest["steps"] = steps;
   manifest["recorded_steps"] = recorded_steps;
@@ -306,7 +307,12 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
   manifest["result"] = SubmissionFiles::kResult;
 
   std::string& text = summary.instructions;
-  text += "Robotarium submission made by dream export from the run '" + config.name + "'.\n\n";
+  text += "Robotarium submission made by dream export from the run '" + config.name + "'.\n";
+  if (options.calibration) {
+    text += "It is the calibration drive: every robot drives the same open-loop program (steps in v\n"
+            "and w from rest, turns in place, an arc), from which dream calibrate fits your lab's model.\n";
+  }
+  text += "\n";
   text += "Upload every file in upload/ (" + std::to_string(summary.uploads.size()) + " files, no folders):\n";
   for (size_t i = 0; i < summary.uploads.size(); ++i) {
     text += "  " + summary.uploads[i] + (i == 0 ? "    <- mark this file as MAIN" : "") + "\n";
@@ -333,6 +339,14 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
           "  dream import dream_result.npy --export <this folder> --out <lab run folder>\n"
           "  dream compare <simulated run folder> <lab run folder>\n"
           "Before uploading, try it: dream check-submission <this folder> --out <folder>\n";
+  if (options.calibration) {
+    text += "\nThe lab model: dream_result.npy holds every pose the lab measured and every command sent,\n"
+            "which is what dream calibrate fits. Download it (keep it: each lab run is data about your\n"
+            "lab), import it as above, then:\n"
+            "  dream calibrate <lab run folder> --out mylab.yaml\n"
+            "and run any config on your lab's model: --set world.realism.file=mylab.yaml\n"
+            "(docs/experiments.md, \"Calibrating the lab: dream calibrate\").\n";
+  }
 
   std::vector<std::pair<std::string, std::string>> upload_files = {
       {SubmissionFiles::kMainScript, SubmissionScriptTemplate()},

@@ -104,10 +104,12 @@ int RunReplay(const ReplayArgs& args);
 // --- the bridge to the Robotarium (bridge_commands.cc, docs/robotarium.md) ---
 
 struct ExportArgs {
-  std::string run_dir;          ///< a folder written by dream run
+  std::string run_dir;          ///< a folder written by dream run (--calibration: the run folder to write)
   std::string out_dir;          ///< empty: exports/<name>
   std::string config_path;      ///< empty: <run_dir>/config.yaml
-  std::string strategy = "track";
+  std::string strategy;         ///< empty: track (--calibration: replay)
+  bool calibration = false;     ///< run the calibration drive on `robots` robots, then export it
+  int robots = 0;               ///< --robots, with --calibration only; 0: not given
   bool barriers = false;
   int settle_steps = 240;
   bool force = false;           ///< export although robots were lost

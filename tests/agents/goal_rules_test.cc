@@ -110,6 +110,24 @@ TEST(GoalRules, AffineFormationKeepsItsFollowersWithinTheTolerance) {
   EXPECT_EQ(missed->detail, "worst follower error 0.08 m > 0.05 m");
 }
 
+TEST(GoalRules, CalibrationDriveIsMetWhenItsProgramRanToItsEndClean) {
+  const auto met = Judge("calibration", {{"calibration_program_steps", 1480},
+                                         {"calibration_last_step", 1480},
+                                         {"boundary_error_steps", 0},
+                                         {"collision_steps", 0}});
+  ASSERT_TRUE(met);
+  EXPECT_TRUE(met->met);
+  EXPECT_EQ(met->completion_step, 1480);
+  const auto collided = Judge("calibration", {{"calibration_program_steps", 1480},
+                                              {"calibration_last_step", 1480},
+                                              {"boundary_error_steps", 0},
+                                              {"collision_steps", 2},
+                                              {"first_collision_step", 900}});
+  ASSERT_TRUE(collided);
+  EXPECT_FALSE(collided->met);
+  EXPECT_THAT(collided->detail, HasSubstr("2 with a collision (first 900)"));
+}
+
 TEST(GoalRules, KindsWithGoalsToDrawGiveOnePerRobot) {
   auto goals_of = [](const std::string& name) {
     const config::RunConfig config =

@@ -10,7 +10,7 @@
 #include <fstream>
 #include <string>
 
-#include "dream/bridge/calibration_drive.h"
+#include "dream/agents/experiments/calibration_drive.h"
 #include "dream/bridge/lab_calibration.h"
 #include "dream/bridge/lab_import.h"
 #include "dream/world/realistic_world.h"
@@ -204,8 +204,10 @@ namespace {
 // for under 10 s (docs/performance.md).
 void BM_Calibrate20Robots5000Steps(benchmark::State& state) {
   using namespace dream;
-  sim::RealisticWorld world(sim::WorldParams{}, sim::RealismParams::Lab(), 1,
-                            bridge::CalibrationDrive::StartPoses(20));
+  using agents::CalibrationDrive;
+  std::vector<sim::Pose2> start;
+  for (const Eigen::Vector3d& pose : CalibrationDrive::StartPoses(20)) start.push_back({pose.x(), pose.y(), pose.z()});
+  sim::RealisticWorld world(sim::WorldParams{}, sim::RealismParams::Lab(), 1, start);
   bridge::CalibrationRun run;
   run.name = "synthetic";
   run.timed = true;
@@ -213,7 +215,8 @@ void BM_Calibrate20Robots5000Steps(benchmark::State& state) {
   double time_s = 0;
   for (int64_t k = 0; k < 5000; ++k) {
     run.track.utime.push_back(std::llround(time_s * 1e6));
-    const sim::UnicycleCommand command = bridge::CalibrationDrive::CommandAt(k % bridge::CalibrationDrive::Steps());
+    const agents::UnicycleCommand program = CalibrationDrive::CommandAt(k % CalibrationDrive::Steps());
+    const sim::UnicycleCommand command{program.v_mps, program.w_radps};
     for (int i = 0; i < 20; ++i) {
       run.track.poses.push_back(world.poses()[static_cast<size_t>(i)]);
       run.track.commands.push_back(command);

@@ -12,7 +12,7 @@
 #include <map>
 #include <string>
 
-#include "dream/bridge/calibration_drive.h"
+#include "dream/agents/experiments/calibration_drive.h"
 #include "dream/bridge/calibration_run.h"
 #include "dream/bridge/mat_file.h"
 #include "dream/bridge/npy_file.h"
@@ -52,10 +52,23 @@ sim::RealismParams SyntheticLab() {
   return lab;
 }
 
+using agents::CalibrationDrive;
+
+// The calibration program's start poses and commands as the world takes them.
+std::vector<sim::Pose2> StartPoses(int robots) {
+  std::vector<sim::Pose2> poses;
+  for (const Eigen::Vector3d& pose : CalibrationDrive::StartPoses(robots)) poses.push_back({pose.x(), pose.y(), pose.z()});
+  return poses;
+}
+sim::UnicycleCommand CommandAt(int64_t step) {
+  const agents::UnicycleCommand command = CalibrationDrive::CommandAt(step);
+  return {command.v_mps, command.w_radps};
+}
+
 // The calibration program twice on `robots` robots of a synthetic lab, as a
 // lab run would record it: measured poses, commands sent, the step times.
 CalibrationRun SyntheticRun(const sim::RealismParams& lab, int robots, uint64_t seed, int repeats = 2) {
-  sim::RealisticWorld world(sim::WorldParams{}, lab, seed, CalibrationDrive::StartPoses(robots));
+  sim::RealisticWorld world(sim::WorldParams{}, lab, seed, StartPoses(robots));
   CalibrationRun run;
   run.name = "synthetic lab (seed " + std::to_string(seed) + ")";
   run.timed = true;
@@ -64,7 +77,7 @@ CalibrationRun SyntheticRun(const sim::RealismParams& lab, int robots, uint64_t 
   const int64_t steps = CalibrationDrive::Steps() * repeats;
   for (int64_t k = 0; k < steps; ++k) {
     run.track.utime.push_back(std::llround(time_s * 1e6));
-    const sim::UnicycleCommand command = CalibrationDrive::CommandAt(k % CalibrationDrive::Steps());
+    const sim::UnicycleCommand command = CommandAt(k % CalibrationDrive::Steps());
     for (int i = 0; i < robots; ++i) {
       run.track.poses.push_back(world.poses()[static_cast<size_t>(i)]);
       run.track.commands.push_back(command);

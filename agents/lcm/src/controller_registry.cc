@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "dream/agent_host/affine_formation_builder.h"
+#include "dream/agent_host/calibration_drive_builder.h"
 #include "dream/agent_host/go_to_goal_builder.h"
 #include "dream/agent_host/hrvo_circle_builder.h"
 #include "dream/agent_host/line_deployment_builder.h"
@@ -22,6 +23,7 @@ void AddBuiltIns(ControllerRegistry& registry) {
   registry.Add(ControllerKind::Of<VoronoiCoverageBuilder>(), kBuiltIn);
   registry.Add(ControllerKind::Of<HrvoCircleBuilder>(), kBuiltIn);
   registry.Add(ControllerKind::Of<LineDeploymentBuilder>(), kBuiltIn);
+  registry.Add(ControllerKind::Of<CalibrationDriveBuilder>(), kBuiltIn);
   registry.Add(PythonControllerBuilder::Kind(), kBuiltIn);
 }
 

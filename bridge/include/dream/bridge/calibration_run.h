@@ -34,7 +34,9 @@ struct CalibrationInputOptions {
 /// - a .npy file holding one 5 x N x T array (x, y, theta, v, w).
 /// Refuses, with the file, the array and what is wrong: shapes that
 /// disagree, NaN or infinite values, fewer than kMinSteps steps, time that
-/// does not increase.
+/// does not increase. A clock whose steps average under half the nominal
+/// 33 ms (a simulator not in real time, as in dream check-submission) is
+/// replaced by nominal steps, and the run is then not `timed`.
 /// @throws std::runtime_error.
 CalibrationRun ReadCalibrationRun(const std::string& path, const CalibrationInputOptions& options);
 

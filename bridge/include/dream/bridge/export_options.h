@@ -56,6 +56,10 @@ struct ExportOptions {
   /// Export although robots were lost at the end of the run (`lost_robot`):
   /// those problems become warnings in the output and UPLOAD.txt.
   bool force = false;
+  /// The run is the calibration drive (`dream export --calibration`):
+  /// UPLOAD.txt and export.json say so, and UPLOAD.txt ends with how to fit
+  /// the lab model from what the lab returns (dream import, dream calibrate).
+  bool calibration = false;
 
   /// False with a message naming the field, its value and the allowed range.
   bool IsValid(std::string* error) const;

@@ -1,18 +1,18 @@
-#include "dream/bridge/calibration_drive.h"
+#include "dream/agents/experiments/calibration_drive.h"
 
 #include <stdexcept>
 #include <string>
 
 #include "dream/robotarium/robotarium_constants.h"
 
-namespace dream::bridge {
+namespace dream::agents {
 namespace {
 
 constexpr double kDt = robotarium::RobotariumConstants::kTimeStepSeconds;
 
 struct Segment {
   double seconds;
-  sim::UnicycleCommand command;
+  UnicycleCommand command;
 };
 
 // Each move from rest holds at least 1.5 s (calibrate's steps from rest need
@@ -20,7 +20,7 @@ struct Segment {
 const std::vector<Segment>& Program() {
   static const std::vector<Segment> program = [] {
     std::vector<Segment> segments;
-    auto there_and_back = [&segments](double seconds, sim::UnicycleCommand command) {
+    auto there_and_back = [&segments](double seconds, UnicycleCommand command) {
       segments.push_back({seconds, command});
       segments.push_back({1.5, {}});
       segments.push_back({seconds, {-command.v_mps, -command.w_radps}});
@@ -44,7 +44,7 @@ int64_t StepsOf(double seconds) { return static_cast<int64_t>(seconds / kDt + 0.
 
 }  // namespace
 
-sim::UnicycleCommand CalibrationDrive::CommandAt(int64_t step) {
+UnicycleCommand CalibrationDrive::CommandAt(int64_t step) {
   int64_t start = 0;
   for (const Segment& segment : Program()) {
     const int64_t end = start + StepsOf(segment.seconds);
@@ -60,20 +60,20 @@ int64_t CalibrationDrive::Steps() {
   return steps;
 }
 
-std::vector<sim::Pose2> CalibrationDrive::StartPoses(int robots) {
+std::vector<Eigen::Vector3d> CalibrationDrive::StartPoses(int robots) {
   if (robots < 1 || robots > kMaxRobots) {
     throw std::invalid_argument("CalibrationDrive: " + std::to_string(robots) + " robots; 1 to " +
                                 std::to_string(kMaxRobots) + " fit the arena");
   }
   // Four columns 0.8 m apart (a robot drives 0.3 m ahead and back, and its
   // arc swings 0.1 m aside), five rows 0.4 m apart.
-  std::vector<sim::Pose2> poses;
+  std::vector<Eigen::Vector3d> poses;
   for (int i = 0; i < robots; ++i) {
     const int column = i % 4;
     const int row = i / 4;
-    poses.push_back({-1.3 + 0.8 * column, -0.8 + 0.4 * row, 0.0});
+    poses.emplace_back(-1.3 + 0.8 * column, -0.8 + 0.4 * row, 0.0);
   }
   return poses;
 }
 
-}  // namespace dream::bridge
+}  // namespace dream::agents
