@@ -39,9 +39,9 @@ struct CircleFormationParams {
 
 /// The thesis's Robot_c (Appendix B): drive to the current formation point
 /// through HRVO (slowing down before it: gain, stop_m), count it reached
-/// within tolerance, and move
-/// on to the next point only once the radio has brought news (possibly over
-/// several hops) that every robot has reached the current one.
+/// within tolerance, and move on to the next point only once the radio has
+/// brought news (possibly over several hops) that every robot has reached
+/// the current one.
 ///
 /// Radio: merges every neighbour's FormationProgress (malformed payloads are
 /// counted and dropped), records its own state, and rebroadcasts the whole
