@@ -1,11 +1,22 @@
 #include "dream/agents/experiments/circle_formation_robot.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include "dream/agents/framework/number_text.h"
 #include "dream/agents/framework/params_check.h"
 
 namespace dream::agents {
+namespace {
+
+bool CheckStop(std::string* error, const CircleFormationParams& params) {
+  if (params.stop_m > 0.0 && params.stop_m <= params.tolerance_m) return true;
+  return FailParams(error, "stop_m must be > 0 and <= tolerance_m (" + NumberText(params.tolerance_m) + "), got " +
+                               NumberText(params.stop_m));
+}
+
+}  // namespace
 
 bool CircleFormationParams::IsValid(std::string* error) const {
   if (goals_m.empty()) return FailParams(error, "goals_m must hold at least one point");
@@ -13,7 +24,7 @@ bool CircleFormationParams::IsValid(std::string* error) const {
     if (!goals_m[i].allFinite()) return FailParams(error, "goals_m[" + std::to_string(i) + "] must be finite");
   }
   return CheckAtLeast(error, "num_robots", num_robots, 1) && CheckPositive(error, "tolerance_m", tolerance_m) &&
-         CheckMaxSpeed(error, max_speed_mps);
+         CheckMaxSpeed(error, max_speed_mps) && CheckPositive(error, "gain", gain) && CheckStop(error, *this);
 }
 
 CircleFormationRobot::CircleFormationRobot(int id, const RobotParams& robot_params,
@@ -46,11 +57,17 @@ UnicycleCommand CircleFormationRobot::Update(int64_t step) {
   const Eigen::Vector2d delta = params_.goals_m[static_cast<size_t>(goal_index_)] - pose().head<2>();
   const double distance = delta.norm();
   Eigen::Vector2d preferred = Eigen::Vector2d::Zero();
-  at_goal_ = distance < params_.tolerance_m;
-  if (at_goal_) {
-    if (reached_ == goal_index_) ++reached_;
-  } else {
-    preferred = params_.max_speed_mps * delta / distance;
+  const bool at_goal = distance < params_.tolerance_m;
+  if (at_goal && reached_ == goal_index_) ++reached_;
+  if (distance < params_.stop_m) {
+    holding_ = true;
+  } else if (!at_goal) {
+    holding_ = false;
+  }
+  if (!holding_) {
+    // Slow down before the point: at full speed the loop delay carries the robot past it.
+    const double speed = std::min(params_.max_speed_mps, params_.gain * distance);
+    preferred = speed * delta / distance;
   }
   // HRVO even when holding still: a passing robot may need us to step aside.
   return DriveWithVelocity(preferred);

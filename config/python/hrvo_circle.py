@@ -2,16 +2,17 @@
 circle_formation_robot.cc, agents/lcm/src/hrvo_circle_builder.cc) written as a dream.Robot, so
 config/hrvo_circle_python.yaml runs the experiment of config/hrvo_circle.yaml.
 
-Robot i drives at max_speed_mps towards its point of the current formation (formation k: angle
-2 pi i / N, plus pi when k is odd, on a circle of radius_m), through HRVO (dream.HrvoAvoidance:
-the exact variant, or the thesis's sampled one with `hrvo: {variant: thesis}`), and counts
-the point reached within tolerance_m. It moves on to the next point only once the radio has
-brought news that every robot reached the current one: each robot rebroadcasts the highest
-state it knows of everybody, so the news travels hop by hop (payload as C++'s
-FormationProgress: int32 count, then one int32 state per robot, little-endian). Like the C++
-robot it moves on when every known state is *at least* its own (the thesis's "equal" deadlocks
-when a faster robot is already further on). Done while it holds its last point (reached, and
-within tolerance_m at its latest update), as the C++ kind.
+Robot i drives at min(max_speed_mps, gain * distance) towards its point of the current
+formation (formation k: angle 2 pi i / N, plus pi when k is odd, on a circle of radius_m),
+through HRVO (dream.HrvoAvoidance: the exact variant, or the thesis's sampled one with
+`hrvo: {variant: thesis}`), and counts the point reached within tolerance_m (holding still from
+within stop_m until pushed out of tolerance_m). It moves on to
+the next point only once the radio has brought news that every robot reached the current one:
+each robot rebroadcasts the highest state it knows of everybody, so the news travels hop by
+hop (payload as C++'s FormationProgress: int32 count, then one int32 state per robot,
+little-endian). Like the C++ robot it moves on when every known state is *at least* its own
+(the thesis's "equal" deadlocks when a faster robot is already further on). Done while it holds
+its last point (reached, came within stop_m, not out of tolerance_m since), as the C++ kind.
 """
 
 import math
@@ -30,6 +31,12 @@ class HrvoCircleRobot(Robot):
             "formations": key(3, kind="int", at_least=1, at_most=100),
             "tolerance_m": key(0.05, above=0.0),
             "max_speed_mps": key(0.2, above=0.0, at_most=0.2),
+            # preferred speed = min(max_speed_mps, gain * distance), 1/s: slow down before the
+            # point so the loop delay does not carry the robot past it (C++: CircleFormationParams::gain)
+            "gain": key(0.8, above=0.0),
+            # reached within tolerance_m, it drives on to within stop_m and holds there until pushed
+            # out of tolerance_m, so it settles inside the line the goal is judged by, not on it
+            "stop_m": key(0.025, above=0.0),
             # {variant: exact|thesis, safety_radius_m, check_boundaries, boundary_horizon_s}
             "hrvo": key({}, kind="any")}
 
@@ -44,12 +51,15 @@ class HrvoCircleRobot(Robot):
             if abs(x) > ARENA[1] - GOAL_WALL_MARGIN_M or abs(y) > ARENA[3] - GOAL_WALL_MARGIN_M:
                 raise ValueError(f"the circle (center {center}, radius_m {config['radius_m']}) leaves the arena: every "
                                  f"point must be {GOAL_WALL_MARGIN_M} m inside x in [-1.6, 1.6], y in [-1, 1]")
+        if config["stop_m"] > config["tolerance_m"]:
+            raise ValueError(f"stop_m must be > 0 and <= tolerance_m ({config['tolerance_m']}), "
+                             f"got {config['stop_m']}")
         self.hrvo = HrvoAvoidance.from_config(config["hrvo"])
         self.guard_walls = self.hrvo.params.check_boundaries
         self.states = [0] * self.num_robots  # highest number of points each robot is known to have reached
         self.reached = 0
         self.goal_index = 0
-        self.at_goal = False  # within tolerance_m of the current point at the latest update
+        self.holding = False  # came within stop_m and has not left tolerance_m since
         self.dxi = (0.0, 0.0)  # the last safe velocity: HRVO's current velocity next time
         self._payload = struct.Struct(f"<{self.num_robots + 1}i")
 
@@ -77,12 +87,16 @@ class HrvoCircleRobot(Robot):
         dy = goal_y - y
         distance = math.sqrt(dx * dx + dy * dy)
         preferred = (0.0, 0.0)
-        self.at_goal = distance < self.config["tolerance_m"]
-        if self.at_goal:
-            if self.reached == self.goal_index:
-                self.reached += 1
-        else:
-            speed = self.config["max_speed_mps"]
+        at_goal = distance < self.config["tolerance_m"]
+        if at_goal and self.reached == self.goal_index:
+            self.reached += 1
+        if distance < self.config["stop_m"]:
+            self.holding = True
+        elif not at_goal:
+            self.holding = False
+        if not self.holding:
+            # Slow down before the point: at full speed the loop delay carries the robot past it.
+            speed = min(self.config["max_speed_mps"], self.config["gain"] * distance)
             preferred = (speed * dx / distance, speed * dy / distance)
         # HRVO even when holding still: a passing robot may need us to step aside.
         neighbours = [(n.distance_m * math.cos(n.bearing_rad), n.distance_m * math.sin(n.bearing_rad),
@@ -92,7 +106,7 @@ class HrvoCircleRobot(Robot):
         return self._guard_walls(x, y, theta, command) if self.guard_walls else command
 
     def done(self):
-        return self.reached == len(self.goals) and self.at_goal
+        return self.reached == len(self.goals) and self.holding
 
     def _decode(self, payload, formations):
         """The states in a neighbour's payload, or None when it is not a valid progress message."""

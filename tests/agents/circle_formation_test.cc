@@ -106,10 +106,115 @@ TEST(CircleFormationRobotTest, DrivesAtFullSpeedTowardsItsPointAndIsDoneAfterThe
   const UnicycleCommand go = robot.Update(1);
   EXPECT_NEAR(go.v_mps, 0.8 * 0.2, 1e-12);  // vel_gain * v_max, straight ahead
   EXPECT_NEAR(go.w_radps, 0.0, 1e-12);
-  robot.OnOdometry({0, Eigen::Vector3d(0.96, 0.0, 0.0)});
+  robot.OnOdometry({0, Eigen::Vector3d(0.98, 0.0, 0.0)});  // within stop_m
   const UnicycleCommand stop = robot.Update(2);
   EXPECT_TRUE(robot.done());
   EXPECT_EQ(stop.v_mps, 0.0);
+}
+
+// Delay-aware approach (docs/experiments.md#robustness-ideal-vs-lab): the
+// preferred speed is min(max_speed_mps, gain * distance), so a robot slows
+// down before its point instead of arriving at full speed.
+TEST(CircleFormationRobotTest, SlowsDownInProportionToTheDistanceBeforeItsPoint) {
+  CircleFormationParams params;
+  params.num_robots = 1;
+  params.goals_m = {{1.0, 0.0}};
+  ASSERT_EQ(params.gain, 0.8);
+  CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
+  const double vel_gain = RobotParams{}.vel_gain;
+  for (const auto& [x, speed] : std::vector<std::pair<double, double>>{
+           {0.0, 0.2},            // 1 m off: 0.8 m/s wanted, capped at max_speed_mps
+           {0.75, 0.2},           // 0.25 m off: exactly max_speed_mps
+           {0.9, 0.8 * 0.1},      // 0.1 m off
+           {0.96, 0.8 * 0.04}}) {  // inside the tolerance, still closing in (stop_m below)
+    robot.OnOdometry({0, Eigen::Vector3d(x, 0.0, 0.0)});
+    const UnicycleCommand command = robot.Update(1);
+    EXPECT_NEAR(command.v_mps, vel_gain * speed, 1e-12) << "at x = " << x;
+    EXPECT_NEAR(command.w_radps, 0.0, 1e-12) << "at x = " << x;
+  }
+}
+
+// Reached within tolerance_m, the robot drives on to within stop_m and holds
+// there until it is pushed out of tolerance_m: it settles 2.5 cm inside the
+// line the goal is judged by, not on it, and is done only from then on.
+TEST(CircleFormationRobotTest, DrivesOnIntoTheToleranceUntilStopMThenHoldsAndIsDoneUntilPushedOut) {
+  CircleFormationParams params;
+  params.num_robots = 1;
+  params.goals_m = {{1.0, 0.0}};
+  ASSERT_EQ(params.stop_m, 0.025);
+  CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
+  struct Expect {
+    double x;
+    bool done;
+    bool drives;
+  };
+  for (const Expect& e : std::vector<Expect>{{0.96, false, true},     // 4 cm: reached, closing in
+                                             {0.98, true, false},     // 2 cm: holds, done
+                                             {0.955, true, false},    // nudged to 4.5 cm: still holds
+                                             {0.94, false, true},     // 6 cm: out, drives back
+                                             {0.965, false, true},    // 3.5 cm: in again, closing in
+                                             {0.985, true, false}}) {  // 1.5 cm: holds, done
+    robot.OnOdometry({0, Eigen::Vector3d(e.x, 0.0, 0.0)});
+    const UnicycleCommand command = robot.Update(1);
+    EXPECT_EQ(robot.done(), e.done) << "at x = " << e.x;
+    EXPECT_EQ(command.v_mps > 0.0, e.drives) << "at x = " << e.x;
+    EXPECT_EQ(robot.reached(), 1);
+  }
+}
+
+// gain >= max_speed_mps / tolerance_m and stop_m = tolerance_m is the
+// thesis's Robot_c: full speed until within tolerance_m, then hold.
+TEST(CircleFormationRobotTest, ThesisGainAndStopDriveAtFullSpeedUpToTheTolerance) {
+  CircleFormationParams params;
+  params.num_robots = 1;
+  params.goals_m = {{1.0, 0.0}};
+  params.gain = params.max_speed_mps / params.tolerance_m;
+  params.stop_m = params.tolerance_m;
+  CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
+  robot.OnOdometry({0, Eigen::Vector3d(0.9499, 0.0, 0.0)});
+  EXPECT_NEAR(robot.Update(1).v_mps, RobotParams{}.vel_gain * 0.2, 1e-12);
+  robot.OnOdometry({0, Eigen::Vector3d(0.9501, 0.0, 0.0)});
+  EXPECT_EQ(robot.Update(2).v_mps, 0.0);
+  EXPECT_TRUE(robot.done());
+}
+
+// Why: one robot on a straight line to its point, its pose read every 2
+// steps, its control law run every 4 and each command reaching the wheels
+// 10 steps (0.33 s) later, about the lab's closed-loop delay. At full speed
+// up to the tolerance (the thesis) the delay carries it ~7 cm on after it
+// decided to stop, past the point; slowing down with gain * delay < 1/e it
+// comes in without passing the point.
+TEST(CircleFormationRobotTest, UnderTheLabsLoopDelayTheSlowApproachDoesNotOvershoot) {
+  constexpr int kDelaySteps = 10;
+  constexpr double kStepS = 0.033;
+  auto drive = [&](const CircleFormationParams& params) {
+    CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
+    double x = 0.0;
+    double furthest = 0.0;
+    std::vector<double> in_flight(kDelaySteps, 0.0);  // commands on their way to the wheels
+    double command_v = 0.0;
+    for (int step = 0; step < 600; ++step) {
+      if (step % 2 == 0) robot.OnOdometry({step, Eigen::Vector3d(x, 0.0, 0.0)});
+      if (step % 4 == 0) command_v = robot.Update(step).v_mps;
+      in_flight.push_back(command_v);
+      x += in_flight.front() * kStepS;
+      in_flight.erase(in_flight.begin());
+      furthest = std::max(furthest, x);
+    }
+    return std::pair<double, double>{furthest - 1.0, std::abs(x - 1.0)};
+  };
+  CircleFormationParams params;
+  params.num_robots = 1;
+  params.goals_m = {{1.0, 0.0}};
+  const auto [overshoot_m, final_error_m] = drive(params);
+  EXPECT_LT(overshoot_m, 0.0) << "the slow approach passed its point";
+  EXPECT_LT(final_error_m, params.tolerance_m - 0.015) << "it did not settle well inside the tolerance";
+  CircleFormationParams thesis = params;
+  thesis.gain = thesis.max_speed_mps / thesis.tolerance_m;
+  thesis.stop_m = thesis.tolerance_m;
+  const auto [thesis_overshoot_m, thesis_error_m] = drive(thesis);
+  EXPECT_GT(thesis_overshoot_m, 0.01) << "the full-speed approach should overshoot under this delay";
+  (void)thesis_error_m;
 }
 
 // A robot that arrived and was pushed off its last point (HRVO stepping aside
@@ -120,7 +225,7 @@ TEST(CircleFormationRobotTest, IsDoneOnlyWhileItHoldsItsLastPoint) {
   params.num_robots = 1;
   params.goals_m = {{1.0, 0.0}};
   CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
-  robot.OnOdometry({0, Eigen::Vector3d(0.97, 0.0, 0.0)});
+  robot.OnOdometry({0, Eigen::Vector3d(0.98, 0.0, 0.0)});  // within stop_m
   robot.Update(1);
   EXPECT_TRUE(robot.done());
   robot.OnOdometry({0, Eigen::Vector3d(0.94, 0.0, 0.0)});  // 6 cm off: outside the 5 cm tolerance
@@ -161,6 +266,18 @@ TEST(CircleFormationParamsTest, InvalidParamsNameTheField) {
   EXPECT_FALSE(params.IsValid(&error));
   EXPECT_NE(error.find("max_speed_mps"), std::string::npos);
   params.max_speed_mps = 0.2;
+  params.gain = 0.0;
+  EXPECT_FALSE(params.IsValid(&error));
+  EXPECT_EQ(error, "gain must be > 0, got 0");
+  params.gain = 0.8;
+  params.stop_m = 0.0;
+  EXPECT_FALSE(params.IsValid(&error));
+  EXPECT_EQ(error, "stop_m must be > 0 and <= tolerance_m (0.05), got 0");
+  params.stop_m = 0.06;
+  EXPECT_FALSE(params.IsValid(&error));
+  EXPECT_EQ(error, "stop_m must be > 0 and <= tolerance_m (0.05), got 0.06");
+  params.stop_m = 0.05;
+  EXPECT_TRUE(params.IsValid(&error));
   params.num_robots = 2;  // so robot id 2 is not taking part
   EXPECT_THROW(CircleFormationRobot(2, RobotParams{}, HrvoRobotParams{}, params), std::invalid_argument);
 }
@@ -217,6 +334,11 @@ TEST(HrvoCircleConfigTest, DefaultsFollowAppendixBAndBadKeysAreClearErrors) {
   // A params rule names the key and its line.
   error = FactoryError("controller:\n  kind: hrvo_circle\n  tolerance_m: 0\n", 10);
   EXPECT_EQ(error, "circle.yaml:3: controller.tolerance_m: must be > 0, got 0");
+  error = FactoryError("controller:\n  kind: hrvo_circle\n  gain: -1\n", 10);
+  EXPECT_EQ(error, "circle.yaml:3: controller.gain: must be > 0, got -1");
+  error = FactoryError("controller:\n  kind: hrvo_circle\n  tolerance_m: 0.02\n  stop_m: 0.03\n", 10);
+  EXPECT_EQ(error, "circle.yaml:4: controller.stop_m: must be > 0 and <= tolerance_m (0.02), got 0.03");
+  EXPECT_EQ(FactoryError("controller: {kind: hrvo_circle, gain: 4, stop_m: 0.05}\n", 10), "");
   error = FactoryError("controller: {kind: hrvo_circle, formations: 0}\n", 10);
   EXPECT_NE(error.find("formations: must be in 1..100"), std::string::npos) << error;
 }

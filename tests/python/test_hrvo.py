@@ -177,6 +177,31 @@ class CircleRobotRadio(unittest.TestCase):
             if not done:
                 self.assertGreater(command[0], 0.0)  # drives back
 
+    def test_slows_down_in_proportion_to_the_distance_before_its_point(self):
+        # As C++'s CircleFormationRobot: preferred speed min(max_speed_mps, gain * distance).
+        self.robot.reached, self.robot.goal_index = 2, 2  # heading for (0.85, 0)
+        for x, speed in [(-0.15, 0.2), (0.6, 0.2), (0.75, 0.8 * 0.1), (0.81, 0.8 * 0.04)]:
+            self.robot.on_odometry(OdometryReading(1, np.array([x, 0.0, 0.0])))
+            v, w = self.robot.update(1)
+            self.assertAlmostEqual(v, 0.8 * speed, places=12, msg=f"at x = {x}")  # vel_gain 0.8
+            self.assertAlmostEqual(w, 0.0, places=12)
+
+    def test_drives_on_into_the_tolerance_until_stop_m_then_holds_until_pushed_out(self):
+        self.robot.reached, self.robot.goal_index = 2, 2  # heading for (0.85, 0)
+        # Reached within tolerance_m, it drives on to stop_m, holds, and is done only from there.
+        for x, done, drives in [(0.81, False, True), (0.83, True, False), (0.805, True, False),
+                                (0.79, False, True), (0.815, False, True), (0.835, True, False)]:
+            self.robot.on_odometry(OdometryReading(1, np.array([x, 0.0, 0.0])))
+            v, _ = self.robot.update(1)
+            self.assertEqual(self.robot.done(), done, f"at x = {x}")
+            self.assertEqual(v > 0.0, drives, f"at x = {x}")
+
+    def test_stop_m_beyond_the_tolerance_is_an_error(self):
+        # A setup error becomes the agent's fault, naming the key and both values.
+        agents = hrvo_circle_world.circle_agents(4, params={"tolerance_m": 0.02, "stop_m": 0.03})
+        self.assertIsNotNone(agents[0].fault)
+        self.assertIn("stop_m must be > 0 and <= tolerance_m (0.02), got 0.03", str(agents[0].fault))
+
     def test_bad_payloads_are_counted_and_dropped(self):
         bad = [progress_payload([0, 1, 0]), progress_payload([0, 4, 0, 0]), progress_payload([0, 1, 0, 0]) + b"x",
                struct.pack("<5i", 5, 0, 0, 0, 0)]

@@ -31,6 +31,8 @@ HrvoCircleBuilder::HrvoCircleBuilder(const config::ConfigNode& section, int num_
   params_.num_robots = num_robots;
   params_.tolerance_m = section.GetDouble("tolerance_m", params_.tolerance_m);
   params_.max_speed_mps = section.GetDouble("max_speed_mps", params_.max_speed_mps);
+  params_.gain = section.GetDouble("gain", params_.gain);
+  params_.stop_m = section.GetDouble("stop_m", params_.stop_m);
   hrvo_ = ReadHrvoRobotParams(section);
 
   // Appendix B's p_circ: robot i at angle 2 pi i / N, its opposite at + pi.

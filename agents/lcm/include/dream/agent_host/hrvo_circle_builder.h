@@ -23,7 +23,7 @@ class HrvoCircleBuilder final : public ExperimentBuilder {
  public:
   static constexpr const char* kKind = "hrvo_circle";
   static std::vector<const char*> Keys() {
-    return {"radius_m", "center", "formations", "tolerance_m", "max_speed_mps", "hrvo"};
+    return {"radius_m", "center", "formations", "tolerance_m", "max_speed_mps", "gain", "stop_m", "hrvo"};
   }
   /// Appendix B's parts: robot period 4+(i%2), start delay 20+i; odometry
   /// every 2+(i%2), movement sensor every 3+(i%2) (range 1 m); range radio
