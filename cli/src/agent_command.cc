@@ -98,13 +98,14 @@ void WriteAgentReport(const std::string& path, const std::string& json) {
   }
 }
 
-// world.agent_timeout_s of the config as overridden (--set included): how
-// long the world waits for an agent, which bounds a Python controller's step.
+// world.<key> of the config as overridden (--set included): how long the
+// world waits for an agent (agent_timeout_s) or for every agent at the start
+// (start_timeout_s), which bound a Python controller's step and its setup().
 // 0 when the config leaves it to the default (HostedAgents then uses that).
-double WorldAgentTimeout(const config::ConfigNode& root) {
+double WorldTimeout(const config::ConfigNode& root, const char* key) {
   const config::ConfigNode world = root.Optional("world");
-  if (!world.IsDefined() || !world.IsMap() || !world.Has("agent_timeout_s")) return 0.0;
-  return world.Required("agent_timeout_s").AsDouble();
+  if (!world.IsDefined() || !world.IsMap() || !world.Has(key)) return 0.0;
+  return world.Required(key).AsDouble();
 }
 
 }  // namespace
@@ -115,7 +116,9 @@ int RunAgents(const AgentArgs& args) {
   const config::ControllerConfig config = overridden.LoadController();
   const std::vector<int> ids = ParseRobotList(args.robots, config.num_robots);
   lcm::LcmBus bus(lcm::ResolveLcmUrl(args.lcm_url));
-  HostedAgents host(bus, config, ids, nullptr, WorldAgentTimeout(overridden.Document()));
+  HostedAgents host(bus, config, ids, nullptr,
+                    {WorldTimeout(overridden.Document(), "agent_timeout_s"),
+                     WorldTimeout(overridden.Document(), "start_timeout_s"), args.idle_timeout_s});
   spdlog::info("agent for robot(s) {} of {} on {}", args.robots, config.name, bus.url());
   const bool ended_by_world = host.Run(StopFlag(), args.idle_timeout_s);
   // Peak resident memory, so per-agent memory can be checked

@@ -262,12 +262,14 @@ class AgentHostTest(unittest.TestCase):
         self.assertEqual(steps_of("DREAM_CMD_1"), [1])  # the step's handling ended at once
 
     def test_each_controller_call_is_marked_for_the_watchdog(self):
-        cell = memoryview(bytearray(8)).cast("q")
+        cell = memoryview(bytearray(24)).cast("q")  # token, robot, step: dream times the call by them too
         seen = []
+        marked = []
 
         class Marks(Robot):
             def update(self, step):
                 seen.append(cell[0])
+                marked.append((cell[1], cell[2]))
                 if self.id == 1:
                     raise KeyError("fails")
                 return (0.0, 0.0)
@@ -280,6 +282,7 @@ class AgentHostTest(unittest.TestCase):
         self.assertEqual(len(seen), 2)
         self.assertTrue(all(token > 0 for token in seen), seen)
         self.assertNotEqual(seen[0], seen[1])  # a token per call
+        self.assertEqual(marked, [(0, 1), (1, 1)])  # which robot's call, at which step
         self.assertEqual(cell[0], 0)  # cleared after each call, a failing one too
 
     def test_the_detail_limit_is_the_worlds(self):
