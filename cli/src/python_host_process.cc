@@ -511,8 +511,10 @@ std::string PythonHostProcess::StuckCall(Clock::time_point now) {
     watched_since_ = now;
     return "";
   }
+  // A step's call from its start; loading and setup() from the process's, as
+  // the world counts its start_timeout_s from before they begin.
   const double limit_s = token > 0 ? limits_.agent_timeout_s : limits_.start_timeout_s;
-  if (Seconds(now - watched_since_) <= kKillFraction * limit_s) return "";
+  if (Seconds(now - (token > 0 ? watched_since_ : started_)) <= kKillFraction * limit_s) return "";
   return StuckTextOf(token, cell_[1].load(), cell_[2].load(), limits_);
 }
 
