@@ -371,7 +371,15 @@ void PythonHostProcess::OnBusMessage(const std::string& channel, const void* dat
       world_step_ = {BigEndian64(data, kUtimeAt), BigEndian64(data, kStepAt), BigEndian64(data, kRunIdAt)};
     }
     if (outbox_.size() > kMaxOutboxBytes) return;
+    const bool was_empty = outbox_.empty();
     RelayLink::Encode('M', channel, data, static_cast<size_t>(size), &outbox_);
+    if (was_empty) {
+      // Straight to the socket when it takes it (the usual case): no wake-up
+      // of the relay thread on the step's path.
+      const ssize_t sent = ::send(link_->fd(), outbox_.data(), outbox_.size(), MSG_DONTWAIT | MSG_NOSIGNAL);
+      if (sent > 0) outbox_.erase(0, static_cast<size_t>(sent));
+      if (outbox_.empty()) return;
+    }
   }
   const uint64_t one = 1;
   const ssize_t written = ::write(wake_fd_, &one, sizeof one);
