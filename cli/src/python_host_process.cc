@@ -551,7 +551,8 @@ void PythonHostProcess::EndProcess(const std::string& why, const std::string& ex
   if (!why.empty()) {
     culprit_detail = where + why;
   } else if (!error_.empty()) {
-    culprit_detail = "the Python controllers could not start: " + error_;
+    culprit_detail = (ready_ ? "the Python controllers' process failed: " : "the Python controllers could not start: ") +
+                     error_;
   } else if (token != 0) {
     culprit_detail = where + CallTextOf(robot, step) + " ended its Python process: " + exit_text +
                      " (os._exit, or a crash)";

@@ -82,7 +82,8 @@ class Lcm:
                 record = buffer.contents
                 handler(channel.decode("utf-8", "replace"), ctypes.string_at(record.data, record.data_size))
             except BaseException as error:  # noqa: B036 - see above
-                _log.error("%s: a message handler failed: %s: %s", channel, type(error).__name__, error)
+                _log.error("%s: a message handler failed: %s: %s", channel.decode("utf-8", "replace"),
+                           type(error).__name__, error)
 
         callback = _HANDLER(deliver)
         subscription = self._lib.lcm_subscribe(self._lcm, channel_regex.encode(), callback, None)

@@ -285,6 +285,28 @@ class AgentHostTest(unittest.TestCase):
         self.assertEqual(marked, [(0, 1), (1, 1)])  # which robot's call, at which step
         self.assertEqual(cell[0], 0)  # cleared after each call, a failing one too
 
+    def test_nothing_a_handler_raises_reaches_lcms_c_code(self):
+        # A deep recursion made the host's own handler raise again while it handled the error:
+        # ctypes printed "Exception ignored on calling ctypes callback" and dropped it, and the
+        # host never reported the robot. dream.lcm's callback keeps everything and logs it.
+        from dream.lcm import Lcm
+        bus = Lcm("memq://")
+        self.addCleanup(bus.close)
+
+        def handler(channel, data):
+            raise RecursionError("maximum recursion depth exceeded")
+
+        bus.subscribe("DREAM_TEST", handler)
+        unraised = []
+        previous = sys.unraisablehook
+        sys.unraisablehook = unraised.append
+        self.addCleanup(setattr, sys, "unraisablehook", previous)
+        bus.publish("DREAM_TEST", b"x")
+        with self.assertLogs("dream", level="ERROR") as logged:
+            self.assertGreater(bus.handle_timeout(1000), 0)
+        self.assertEqual(unraised, [])
+        self.assertIn("DREAM_TEST: a message handler failed: RecursionError", logged.output[0])
+
     def test_the_detail_limit_is_the_worlds(self):
         # agent_host.MAX_DETAIL_BYTES mirrors lcm::MessageLimits::kDetailBytes (the runtime stands alone).
         header = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "lcmtypes", "include",
