@@ -1,8 +1,9 @@
-"""Entry points for the C++ tools that embed Python (agents/python_host/PythonAgentHost).
+"""Entry points for the C++ tool that embeds Python (agents/python_host/PythonAgentHost).
 
-`dream run` hosts Python agents on its own in-process bus and `dream agent` (so also
-`dream launch`) on udpm, through these three calls; the work is done by AgentHost and
-ControllerSpec, the same code a Robotarium submission runs.
+`dream-agent --python-host`, the process `dream run`, `dream agent` (so also `dream launch`) and
+`dream lab-replay` start for their Python controllers, hosts the agents on its own memq:// bus
+through these calls, and the command relays the run's messages to it; the work is done by
+AgentHost and ControllerSpec, the same code a Robotarium submission runs.
 """
 
 import importlib
@@ -62,8 +63,9 @@ def _watched_by_parent():
     """In the process that hosts the controllers for dream (PythonHostProcess, which names a
     descriptor in DREAM_PYTHON_TRACE_FD): Python's traceback goes there when the process
     crashes, or on SIGUSR1, which dream sends before it ends a call stuck outside Python, so
-    the fault names the line. A copy of this process made by a controller's os.fork() ends at
-    once: it would answer for the robots a second time, on the same link."""
+    the fault names the line; and when a controller calls os._exit. A copy of this process made
+    by a controller's os.fork() ends at once: it would answer for the robots a second time, on
+    the same link."""
     global _trace_file
     trace_fd = os.environ.pop(TRACE_FD_VARIABLE, None)
     if trace_fd is None or _trace_file is not None:

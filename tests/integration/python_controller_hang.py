@@ -1,7 +1,7 @@
 #!/usr/bin/python3
-"""python_controller_hang: a Python controller that never returns, or exits, under `dream run`.
+"""python_controller_hang: a Python controller that never returns, exits or escapes, under `dream run`.
 
-`dream run` embeds Python and runs every controller call on the world's own thread, so a
+`dream run` embedded Python and ran every controller call on the world's own thread, so a
 controller that blocks used to hang the run for ever, deaf to Ctrl-C and SIGTERM (only kill -9
 ended it, leaving run.lcmlog.part and no summary), and `sys.exit()` in update() was printed as
 "Exception ignored on calling ctypes callback function" and taken for a silent agent.
