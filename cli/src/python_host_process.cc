@@ -158,17 +158,20 @@ void ReadTrace(int fd, std::string* trace) {
 }
 
 // The innermost frame in `module_path` of a faulthandler dump ("  File
-// "/x/y.py", line 7 in update"), else its first frame outside dream's runtime.
+// "/x/y.py", line 7 in update"), else in a file beside it (a helper it
+// imports); "" when neither is there (the dump holds the innermost 100
+// frames only, e.g. all inside the standard library).
 std::string TracedLineOf(const std::string& trace, const std::string& module_path) {
   static const std::regex kFrame(R"re(File "([^"\n]*)", line (\d+) in (\S+))re");
-  std::string first;
+  const std::string folder = module_path.substr(0, module_path.rfind('/') + 1);
+  std::string beside;
   for (auto it = std::sregex_iterator(trace.begin(), trace.end(), kFrame); it != std::sregex_iterator(); ++it) {
     const std::string file = (*it)[1].str();
     const std::string where = file + ":" + (*it)[2].str() + ": in " + (*it)[3].str();
     if (!module_path.empty() && file == module_path) return where;
-    if (first.empty() && file.find("/dream/") == std::string::npos) first = where;
+    if (beside.empty() && !folder.empty() && file.rfind(folder, 0) == 0) beside = where;
   }
-  return first;
+  return beside;
 }
 
 std::string ExitTextOf(int status) {

@@ -280,6 +280,13 @@ class AgentHost:
             cell[0] = 0  # reporting it is not the controller's call
             self._fail(robot, poses, str(fault))
             return False
+        except RunInterrupted:
+            raise
+        except BaseException as error:  # noqa: B036 - the watchdog's repeat, while the fault was written
+            cell[0] = 0
+            self._fail(robot, poses, f"{type(error).__name__}: {error} (raised again while its controller's "
+                                     "error was being reported)")
+            return False
         finally:
             cell[0] = 0
         command = self._velocity_command_t()

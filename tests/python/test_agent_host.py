@@ -243,6 +243,32 @@ class AgentHostTest(unittest.TestCase):
         self.assertRegex(faults[0].detail, r"in update: ControllerTimeout: still running after 0\.8 s$")
         self.assertEqual(list(host.faults()), [0])
 
+    def test_a_timeout_raised_again_while_the_fault_is_written_still_fails_the_robot(self):
+        # The watchdog raises ControllerTimeout again every 0.25 s while the call runs; one that
+        # lands while the first one's text is made (a deep traceback) used to escape the host:
+        # no fault, the robot silent until the world gave up on it.
+        class Slow(Robot):
+            def update(self, step):
+                if self.id == 0 and step == 2:
+                    raise dream.ControllerTimeout("still running after 0.8 s")
+                return (0.01, 0.0)
+
+        def raises_again(exc, user_file=None):
+            raise dream.ControllerTimeout("still running after 0.8 s")
+
+        original = dream.robot_agent.controller_error_text
+        dream.robot_agent.controller_error_text = raises_again
+        self.addCleanup(setattr, dream.robot_agent, "controller_error_text", original)
+        bus, host = self.host_of(Slow)
+        for step in (1, 2, 3):
+            bus.deliver("DREAM_POSES", poses(step))
+        published = bus.take()
+        faults = [dream.robot_fault_t.decode(data) for channel, data in published if channel == "DREAM_FAULT_0"]
+        self.assertEqual([fault.step for fault in faults], [2])
+        self.assertRegex(faults[0].detail, r"^ControllerTimeout: still running after 0\.8 s \(raised again while")
+        steps_of = lambda channel: [dream.velocity_command_t.decode(d).step for c, d in published if c == channel]
+        self.assertEqual(steps_of("DREAM_CMD_1"), [1, 2, 3])  # the other robot goes on
+
     def test_an_interrupt_of_the_run_stops_every_answer_and_blames_no_controller(self):
         class Interrupted(Robot):
             def update(self, step):
