@@ -335,12 +335,16 @@ PythonHostProcess::PythonHostProcess(lcm::LcmBus& bus, const std::string& spec_j
   // Written before the relay starts: the process reads it first.
   const std::string start = StartFrame(spec_json, robot_ids, agent_id, limits_, false);
   RelayLink::Encode('S', "", start.data(), start.size(), &outbox_);
+  // The bus may outlive this object: its handler then does nothing.
   bus_.Subscribe("DREAM_(POSES|OBSTACLES|STATUS|RADIO_[0-9]+)",
-                 [this](const std::string& channel, const void* data, int size) { OnBusMessage(channel, data, size); });
+                 [this, alive = alive_](const std::string& channel, const void* data, int size) {
+                   if (alive->load()) OnBusMessage(channel, data, size);
+                 });
   relay_ = std::thread(&PythonHostProcess::RelayLoop, this);
 }
 
 PythonHostProcess::~PythonHostProcess() {
+  alive_->store(false);
   quit_.store(true);
   if (relay_.joinable()) relay_.join();
   bool ended = false;
@@ -429,6 +433,16 @@ void PythonHostProcess::RelayLoop() {
       }
     }
     std::string how;
+    if (read == RelayLink::Read::kClosed) {
+      // It closed the link: it is ending (a moment to see it), or a controller closed the descriptor.
+      const auto until = Clock::now() + std::chrono::milliseconds(200);
+      while (!HasEnded(pid_) && Clock::now() < until) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      if (!HasEnded(pid_)) {
+        EndProcess("its Python process closed its link to dream (a controller closing dream's descriptors?)", "",
+                   true);
+        return;
+      }
+    }
     if (HasEnded(pid_, &how)) {
       // What it sent last (a fault, its report) counts.
       frames.clear();

@@ -109,6 +109,7 @@ class PythonHostProcess final : public agents::PythonAgentHost {
   std::atomic<int64_t>* cell_ = nullptr;
   std::thread relay_;
   std::atomic<bool> quit_{false};
+  std::shared_ptr<std::atomic<bool>> alive_ = std::make_shared<std::atomic<bool>>(true);
   Clock::time_point started_;
 
   mutable std::mutex mutex_;  // guards what follows
