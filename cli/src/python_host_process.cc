@@ -78,6 +78,10 @@ Spawned SpawnHost() {
   if (cell == MAP_FAILED) ThrowErrno("mmap");
   int report[2];
   if (::pipe2(report, O_CLOEXEC) != 0) ThrowErrno("pipe");
+  // Its stdin: not the terminal, which a process outside the foreground
+  // group may not read (SIGTTIN would stop it).
+  const int null_fd = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
+  if (null_fd < 0) ThrowErrno("/dev/null");
   const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) ThrowErrno("fork");
@@ -91,7 +95,8 @@ Spawned SpawnHost() {
     const int trace_out = ::fcntl(trace[1], F_DUPFD_CLOEXEC, 10);
     const int cell_in = ::fcntl(cell_fd, F_DUPFD_CLOEXEC, 10);
     int error = 0;
-    if (link < 0 || trace_out < 0 || cell_in < 0 || ::dup2(link, kChildLinkFd) < 0 ||
+    if (link < 0 || trace_out < 0 || cell_in < 0 || ::dup2(null_fd, STDIN_FILENO) < 0 ||
+        ::dup2(link, kChildLinkFd) < 0 ||
         ::dup2(trace_out, kChildTraceFd) < 0 || ::dup2(cell_in, kChildCellFd) < 0) {
       error = errno;
     } else {
@@ -106,6 +111,7 @@ Spawned SpawnHost() {
   ::close(sockets[1]);
   ::close(trace[1]);
   ::close(cell_fd);
+  ::close(null_fd);
   ::close(report[1]);
   int error = 0;
   ssize_t got = 0;
