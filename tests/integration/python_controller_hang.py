@@ -32,7 +32,8 @@ ended it, leaving run.lcmlog.part and no summary), and `sys.exit()` in update() 
    setup() line) or already in the check before it (exit 1, the message names the line); a
    recursion 200,000 deep (exit 4, robot 0's fault names the line; it used to print "Exception
    ignored on calling ctypes callback", leave robot_faults empty and lose every robot as silent); bytes that are
-   no message written on the process's link to dream (exit 4, robot 0's fault says so). Every process
+   no message written on the process's link to dream (exit 4, robot 0's fault says so); a
+   SIGSEGV in C code (exit 4, the fault names the line and the signal; it used to crash dream run). Every process
    the controllers ran in is gone when the command ends. (The setup() cases only under dream run:
    dream launch starts its agents while its simulator checks the config.)
 
@@ -46,6 +47,7 @@ Usage: python_controller_hang.py --dream BIN --source DIR [--launch]
 
 import os
 import re
+import resource
 import signal
 import time
 
@@ -247,6 +249,8 @@ class Escapes(Robot):
             if ATTACK == "recursion":
                 sys.setrecursionlimit(200000)
                 deep(0)
+            if ATTACK == "crash":
+                ctypes.string_at(0)  # SIGSEGV
             if ATTACK == "garbage":  # on the descriptor of the process's link to dream
                 os.write(3, b"M" + b"\\xff" * 64)
         return (0.01, 0.0)
@@ -313,6 +317,18 @@ def escapes(ctx, args):
     check(sorted(faults) == lost_with_it, f"os._exit: robot_faults should name robots {lost_with_it}: {faults}")
     no_process_left(folder, "exit")
     results.append("os._exit: exit 4")
+
+    # A crash in C code: the signal and the line.
+    resource.setrlimit(resource.RLIMIT_CORE, (0, 0))  # no core file from the crash below
+    folder, config, out = escape_case(ctx, args, "crash")
+    code, output = ctx.run([args.dream, args.command, config, "--out", out], timeout=30)
+    check(code == 4, f"a SIGSEGV in update(): exit {code}, expected 4: {output[-600:]}")
+    fault = faults_of(read_summary(out), "crash").get("0", "")
+    check(re.match(rf"step 3: .*escapes\.py:{line_of(ESCAPES, 'ctypes.string_at(0)')}: in update: robot 0's call at "
+                   r"step 3 ended its Python process: killed by signal 11 \(SIGSEGV\)", fault) is not None,
+          f"crash: robot 0's fault should name the line and the signal: {fault!r}")
+    no_process_left(folder, "crash")
+    results.append("SIGSEGV: exit 4")
 
     # Bytes that are no frame, written on the link: the process is ended, its robots lost.
     folder, config, out = escape_case(ctx, args, "garbage")
