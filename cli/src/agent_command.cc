@@ -1,5 +1,6 @@
 #include <spdlog/spdlog.h>
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -98,13 +99,14 @@ void WriteAgentReport(const std::string& path, const std::string& json) {
   }
 }
 
-// world.agent_timeout_s of the config as overridden (--set included): how
-// long the world waits for an agent, which bounds a Python controller's step.
+// world.<key> of the config as overridden (--set included): how long the
+// world waits for an agent (agent_timeout_s) or for every agent at the start
+// (start_timeout_s), which bound a Python controller's step and its setup().
 // 0 when the config leaves it to the default (HostedAgents then uses that).
-double WorldAgentTimeout(const config::ConfigNode& root) {
+double WorldTimeout(const config::ConfigNode& root, const char* key) {
   const config::ConfigNode world = root.Optional("world");
-  if (!world.IsDefined() || !world.IsMap() || !world.Has("agent_timeout_s")) return 0.0;
-  return world.Required("agent_timeout_s").AsDouble();
+  if (!world.IsDefined() || !world.IsMap() || !world.Has(key)) return 0.0;
+  return world.Required(key).AsDouble();
 }
 
 }  // namespace
@@ -115,17 +117,33 @@ int RunAgents(const AgentArgs& args) {
   const config::ControllerConfig config = overridden.LoadController();
   const std::vector<int> ids = ParseRobotList(args.robots, config.num_robots);
   lcm::LcmBus bus(lcm::ResolveLcmUrl(args.lcm_url));
-  HostedAgents host(bus, config, ids, nullptr, WorldAgentTimeout(overridden.Document()));
+  auto host = std::make_unique<HostedAgents>(
+      bus, config, ids, nullptr,
+      PythonHostProcess::Limits{WorldTimeout(overridden.Document(), "agent_timeout_s"),
+                                WorldTimeout(overridden.Document(), "start_timeout_s"), args.idle_timeout_s});
   spdlog::info("agent for robot(s) {} of {} on {}", args.robots, config.name, bus.url());
-  const bool ended_by_world = host.Run(StopFlag(), args.idle_timeout_s);
+  const bool ended_by_world = host->Run(StopFlag(), args.idle_timeout_s);
+  const std::string report = host->ReportJson();
+  const int64_t last_step = host->last_step_answered();
+  const std::string end_detail = host->end_detail();
+  host.reset();  // a Python controllers' process is reaped: its peak is known
   // Peak resident memory, so per-agent memory can be checked
   // (docs/performance.md). VmHWM, not getrusage's ru_maxrss: the latter
-  // survives execve and would report the launching process's size.
-  spdlog::info("agent for robot(s) {}: peak resident memory {:.1f} MB", args.robots, PeakResidentMegabytes());
-  if (!args.report_path.empty()) WriteAgentReport(args.report_path, host.ReportJson());
+  // survives execve and would report the launching process's size; but for
+  // the reaped Python process (RUSAGE_CHILDREN), ru_maxrss is its own.
+  const double here_mb = PeakResidentMegabytes();
+  rusage children{};
+  const double python_mb = ::getrusage(RUSAGE_CHILDREN, &children) == 0 ? static_cast<double>(children.ru_maxrss) / 1024.0 : 0.0;
+  if (python_mb > 0.0) {
+    spdlog::info("agent for robot(s) {}: peak resident memory {:.1f} MB ({:.1f} MB here, {:.1f} MB in its Python "
+                 "process)", args.robots, here_mb + python_mb, here_mb, python_mb);
+  } else {
+    spdlog::info("agent for robot(s) {}: peak resident memory {:.1f} MB", args.robots, here_mb);
+  }
+  if (!args.report_path.empty()) WriteAgentReport(args.report_path, report);
   if (StopFlag().load()) return kExitInterrupted;
   if (!ended_by_world) return kExitRunFailed;
-  spdlog::info("world ended the run at step {}: {}", host.last_step_answered(), host.end_detail());
+  spdlog::info("world ended the run at step {}: {}", last_step, end_detail);
   return kExitOk;
 }
 

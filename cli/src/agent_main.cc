@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 
 #include <iostream>
+#include <string>
 
 #include "commands.h"
 #include "dream/config/config_error.h"
@@ -11,6 +12,11 @@
 
 int main(int argc, char** argv) {
   using namespace dream::cli;
+  // Started by PythonHostProcess, not by a user: no options of its own.
+  if (argc == 2 && std::string(argv[1]) == "--python-host") {
+    spdlog::set_pattern("[%H:%M:%S.%e] [%^%l%$] %v");
+    return RunPythonHostChild();
+  }
   CLI::App app{"Run the agents of some robots against whichever world is on the bus.\n"
                "Example: dream agent config/go_to_goal.yaml --robots 0-2",
                "dream agent"};

@@ -264,7 +264,7 @@ LabReplayOutcome ReplayLabRun(const LabReplayArgs& args, std::ostream* report) {
   options.report = report;
   options.stop = &StopFlag();
   session::RunSession run(std::move(config), options);
-  HostedAgents::Check(run.config(), run.factory());
+  HostedAgents::Check(run.config(), run.factory(), run.config().sim.start_timeout_s);
 
   const std::string out_dir =
       RunFolderChoice(args.out_dir, "runs/" + run.config().name + "_lab_replay", args.overwrite).dir();
@@ -274,7 +274,9 @@ LabReplayOutcome ReplayLabRun(const LabReplayArgs& args, std::ostream* report) {
   if (in_process) {
     std::vector<int> ids(static_cast<size_t>(run.config().num_robots));
     std::iota(ids.begin(), ids.end(), 0);
-    host = std::make_unique<HostedAgents>(bus, run.config(), ids, run.factory(), run.config().sim.agent_timeout_s);
+    host = std::make_unique<HostedAgents>(
+        bus, run.config(), ids, run.factory(),
+        PythonHostProcess::Limits{run.config().sim.agent_timeout_s, run.config().sim.start_timeout_s, 0.0});
   }
 
   // The lab's poses, replayed as the world; what it adds to the summary: the

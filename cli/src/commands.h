@@ -33,6 +33,9 @@ void InstallStopSignals();
 int ExecAgentBinary(int argc, char** argv);
 /// The dream-agent executable next to the running one.
 std::string AgentBinaryPath();
+/// `dream-agent --python-host`: the process that hosts Python controllers
+/// for PythonHostProcess (python_host_child.cc). Never returns.
+int RunPythonHostChild();
 
 struct RunArgs {
   std::string config_path;

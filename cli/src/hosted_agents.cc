@@ -4,33 +4,26 @@
 
 #include "commands.h"
 #include "dream/lcm/run_id.h"
-#include "data_files.h"
 #include "dream/agent_host/controller_factory.h"
 #include "dream/agent_host/python_controller_spec.h"
-#include "python_host_library.h"
 
 namespace dream::cli {
-namespace {
-
-agents::PythonAgentHost::Paths PythonPaths() { return {DataFiles::PythonRuntimeDir(), DataFiles::PythonTypesDir()}; }
-
-}  // namespace
-
-void HostedAgents::Check(const config::ControllerConfig& config, const agents::ControllerFactory* built) {
+void HostedAgents::Check(const config::ControllerConfig& config, const agents::ControllerFactory* built,
+                         double start_timeout_s) {
   if (agents::IsPythonController(config)) {
-    PythonHostLibrary::Get().Check(agents::PythonControllerSpecJson(config), PythonPaths());
+    PythonHostProcess::Check(agents::PythonControllerSpecJson(config), start_timeout_s);
   } else if (built == nullptr) {
     agents::ControllerFactory{config};  // its constructor is the check
   }
 }
 
 HostedAgents::HostedAgents(lcm::LcmBus& bus, const config::ControllerConfig& config, const std::vector<int>& robot_ids,
-                           const agents::ControllerFactory* factory, double world_agent_timeout_s)
+                           const agents::ControllerFactory* factory,
+                           const PythonHostProcess::Limits& python_limits)
     : bus_(bus) {
   if (agents::IsPythonController(config)) {
-    if (world_agent_timeout_s > 0.0) PythonHostLibrary::Get().SetAgentTimeout(world_agent_timeout_s);
-    python_ = PythonHostLibrary::Get().Create(bus, agents::PythonControllerSpecJson(config), robot_ids, NewAgentId(),
-                                              PythonPaths());
+    python_ = std::make_unique<PythonHostProcess>(bus, agents::PythonControllerSpecJson(config), robot_ids,
+                                                  NewAgentId(), python_limits);
     return;
   }
   std::unique_ptr<agents::ControllerFactory> own;

@@ -32,13 +32,18 @@ const PythonHostLibrary& PythonHostLibrary::Get() {
     }
     // A controller call blocked in Python ends with Ctrl-C / SIGTERM, and
     // one longer than a world waits for an agent fails its robot.
-    watch(&StopFlag(), sim::SimNodeOptions{}.agent_timeout_s);
+    const sim::SimNodeOptions defaults;
+    watch(&StopFlag(), defaults.agent_timeout_s, defaults.start_timeout_s, nullptr);
     return PythonHostLibrary(watch, check, create);
   }();
   return library;
 }
 
-void PythonHostLibrary::SetAgentTimeout(double agent_timeout_s) const { watch_(&StopFlag(), agent_timeout_s); }
+void PythonHostLibrary::Watch(double agent_timeout_s, double start_timeout_s, std::atomic<int64_t>* cell) const {
+  const sim::SimNodeOptions defaults;
+  watch_(&StopFlag(), agent_timeout_s > 0 ? agent_timeout_s : defaults.agent_timeout_s,
+         start_timeout_s > 0 ? start_timeout_s : defaults.start_timeout_s, cell);
+}
 
 std::unique_ptr<agents::PythonAgentHost> PythonHostLibrary::Create(lcm::LcmBus& bus, const std::string& spec_json,
                                                                    const std::vector<int>& robot_ids,

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <atomic>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -8,23 +10,24 @@
 
 namespace dream::cli {
 
-/// The Python agent host module (agents/python_host), loaded with dlopen the
-/// first time a run's controller is Python, so tools and agents with C++
-/// controllers never map libpython (2.4 MB of every agent process otherwise).
+/// The Python agent host module (agents/python_host), loaded with dlopen only
+/// by the process that hosts Python controllers (dream-agent --python-host,
+/// started by PythonHostProcess), so the tools never map libpython.
 class PythonHostLibrary {
  public:
   /// The module, loaded once per process.
   /// @throws std::runtime_error saying what is missing and how to get it.
   static const PythonHostLibrary& Get();
 
-  /// The world's agent_timeout_s, for the module's watchdog
-  /// (agents::PythonHostWatchFunction): a Python controller's step still
-  /// running after 0.8 x this is stopped as failed. Every command that hosts
-  /// agents calls this with its run's value (--set included) before Create
-  /// when the config sets one; until then the watchdog uses the default
-  /// (sim::SimNodeOptions). Ctrl-C and SIGTERM (StopFlag) always interrupt a
-  /// running controller.
-  void SetAgentTimeout(double agent_timeout_s) const;
+  /// The world's agent_timeout_s and start_timeout_s, for the module's
+  /// watchdog (agents::PythonHostWatchFunction): a Python controller's step
+  /// still running after 0.8 x the first, or its loading and setup() after
+  /// 0.8 x the second, is stopped as failed; `cell` is where the calls are
+  /// marked, shared with the process that watches this one. Called before
+  /// Check and Create (dream-agent --python-host); until then the watchdog
+  /// uses the defaults (sim::SimNodeOptions). Ctrl-C and SIGTERM (StopFlag)
+  /// always interrupt a running controller.
+  void Watch(double agent_timeout_s, double start_timeout_s, std::atomic<int64_t>* cell) const;
 
   void Check(const std::string& spec_json, const agents::PythonAgentHost::Paths& paths) const {
     check_(spec_json, paths);

@@ -22,7 +22,8 @@ int RunEmbedded(const RunArgs& args) {
   const std::string out_dir = PrepareOutputDir(args, config);
   std::vector<int> ids(static_cast<size_t>(config.num_robots));
   std::iota(ids.begin(), ids.end(), 0);
-  const HostedAgents agents(bus, config, ids, run->factory(), config.sim.agent_timeout_s);
+  const HostedAgents agents(bus, config, ids, run->factory(),
+                            {config.sim.agent_timeout_s, config.sim.start_timeout_s, 0.0});
   return ExitCodeFor(run->Run(bus, {out_dir, ConfigTextForRunFolder(args, config)}));
 }
 

@@ -23,7 +23,7 @@ std::unique_ptr<session::RunSession> OpenRunSession(const RunArgs& args) {
   options.stop = &StopFlag();
   auto run = std::make_unique<session::RunSession>(std::move(config), options);
   try {
-    HostedAgents::Check(run->config(), run->factory());
+    HostedAgents::Check(run->config(), run->factory(), run->config().sim.start_timeout_s);
   } catch (const config::ConfigError& e) {
     throw config::ConfigError(overridden.Noted(e.what()));
   }

@@ -16,8 +16,8 @@ of a handler. An interrupt of the whole run (RunInterrupted, raised by that watc
 ends the step's handling at once: `interrupted` is set, and nothing is answered any more.
 
 Each controller call is marked in the call cell (set_call_cell): a token unique to the call
-while it runs, 0 otherwise, which the embedding tool's watchdog thread reads
-(agents/python_host).
+while it runs, 0 otherwise, then the robot and the step, which the embedding tool's watchdog
+thread reads (agents/python_host), and the process that hosts this one (PythonHostProcess).
 """
 
 import itertools
@@ -49,13 +49,14 @@ _RADIO_COUNT_AT = 8 + 36        # ... sender_id (int32), agent_id (int64), paylo
 _STATUS_COUNT_AT = 8 + 29 + 48  # ... state, num_robots, six int64 counts, num_lost
 
 
-_call_cell = memoryview(bytearray(8)).cast("q")  # no watchdog: marks go nowhere
+CELL_TOKEN, CELL_ROBOT, CELL_STEP = 0, 1, 2
+_call_cell = memoryview(bytearray(24)).cast("q")  # no watchdog: marks go nowhere
 _call_tokens = itertools.count(1)
 
 
 def set_call_cell(cell):
-    """Where hosts made from now on mark their controller calls: a writable memoryview of one
-    int64 (format "q") that the embedding tool's watchdog reads."""
+    """Where hosts made from now on mark their controller calls: a writable memoryview of three
+    int64 (format "q": token, robot, step) that the embedding tool's watchdog reads."""
     global _call_cell
     _call_cell = cell
 
@@ -271,11 +272,20 @@ class AgentHost:
         """Runs the robot for this step; False when its controller failed."""
         cell = self._call_cell
         try:
-            cell[0] = next(_call_tokens)  # the watchdog's mark: this call runs
+            cell[CELL_ROBOT] = robot.agent.id
+            cell[CELL_STEP] = poses.step
+            cell[CELL_TOKEN] = next(_call_tokens)  # the watchdog's mark: this call runs (set last)
             output = robot.agent.step(snapshot)
         except ControllerFault as fault:
             cell[0] = 0  # reporting it is not the controller's call
             self._fail(robot, poses, str(fault))
+            return False
+        except RunInterrupted:
+            raise
+        except BaseException as error:  # noqa: B036 - the watchdog's repeat, while the fault was written
+            cell[0] = 0
+            self._fail(robot, poses, f"{type(error).__name__}: {error} (raised again while its controller's "
+                                     "error was being reported)")
             return False
         finally:
             cell[0] = 0

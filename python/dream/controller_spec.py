@@ -506,13 +506,14 @@ def check_params(robot_class, params, num_robots, config_file, section_line):
     return config
 
 
-def check(text):
+def check(text, around=lambda work, robot_id=-1: work()):
     """Everything from_json checks, plus every robot's setup(): the spec, or ConfigError
-    saying which robot's setup failed where."""
-    spec = ControllerSpec.from_json(text)
+    saying which robot's setup failed where. `around(work, robot_id)` runs each part (robot
+    -1: loading the module), so that the embedding tool can watch them."""
+    spec = around(lambda: ControllerSpec.from_json(text))
     for robot_id in range(spec.num_robots):
         try:
-            fault = spec.make_agent(robot_id).fault
+            fault = around(lambda robot_id=robot_id: spec.make_agent(robot_id), robot_id).fault
         except ControllerFault as construction_fault:
             fault = construction_fault
         if fault is not None:

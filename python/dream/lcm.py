@@ -11,6 +11,9 @@ the world and the Python agents share one in-process queue.
 
 import ctypes
 import ctypes.util
+import logging
+
+_log = logging.getLogger("dream")
 
 # LCM's default of 30 queued messages drops commands when many robots answer one step;
 # the C++ LcmBus raises it to the same figure (lcmtypes/src/lcm_bus.cc, kQueueCapacity).
@@ -72,8 +75,15 @@ class Lcm:
         """handler(channel: str, data: bytes) for every message on a matching channel."""
 
         def deliver(buffer, channel, _user):
-            record = buffer.contents
-            handler(channel.decode("utf-8", "replace"), ctypes.string_at(record.data, record.data_size))
+            # Nothing may escape into LCM's C code: ctypes would print "Exception ignored" and
+            # drop it. The handler keeps its own errors (AgentHost._on_message); what is left
+            # (a RecursionError while it handled one) is logged here.
+            try:
+                record = buffer.contents
+                handler(channel.decode("utf-8", "replace"), ctypes.string_at(record.data, record.data_size))
+            except BaseException as error:  # noqa: B036 - see above
+                _log.error("%s: a message handler failed: %s: %s", channel.decode("utf-8", "replace"),
+                           type(error).__name__, error)
 
         callback = _HANDLER(deliver)
         subscription = self._lib.lcm_subscribe(self._lcm, channel_regex.encode(), callback, None)

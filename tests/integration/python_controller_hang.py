@@ -1,7 +1,7 @@
 #!/usr/bin/python3
-"""python_controller_hang: a Python controller that never returns, or exits, under `dream run`.
+"""python_controller_hang: a Python controller that never returns, exits or escapes, under `dream run`.
 
-`dream run` embeds Python and runs every controller call on the world's own thread, so a
+`dream run` embedded Python and ran every controller call on the world's own thread, so a
 controller that blocks used to hang the run for ever, deaf to Ctrl-C and SIGTERM (only kill -9
 ended it, leaving run.lcmlog.part and no summary), and `sys.exit()` in update() was printed as
 "Exception ignored on calling ctypes callback function" and taken for a silent agent.
@@ -19,6 +19,24 @@ ended it, leaving run.lcmlog.part and no summary), and `sys.exit()` in update() 
    controller: exit 4, robot_faults names exit.py:LINE: in update: SystemExit: 3, verdict reason
    controller_failed (not lost_robots), and no "Exception ignored" printed.
 
+4. Controllers that end or escape their Python process (it is dream's child, in its own process
+   group; robot 0 at step 3 unless said): os._exit(0) (exit 4, both robots lost with faults naming
+   escapes.py:LINE and "exit code 0"; it used to end `dream run` itself with exit 0, no summary and
+   run.lcmlog.part); os.fork() and a fork through ctypes whose copy sleeps (the run is clean, exit 0,
+   no copy outlives the run and a second run into the folder is not refused; the copy used to
+   deadlock holding the folder's lock); SIG_IGN for SIGINT and SIGTERM in setup() (SIGTERM still ends
+   the run at once, exit 130; it used to take SIGKILL, and dream launch called the run clean);
+   time.sleep(600) in update() (exit 4 within
+   seconds, robot 0's fault names the line and "did not return"; it used to hang); a setup() that
+   never returns, only in the run (exit 4 within world.start_timeout_s, robot 1's fault names its
+   setup() line) or already in the check before it (exit 1, the message names the line); a
+   recursion 200,000 deep (exit 4, robot 0's fault names the line; it used to print "Exception
+   ignored on calling ctypes callback", leave robot_faults empty and lose every robot as silent); bytes that are
+   no message written on the process's link to dream (exit 4, robot 0's fault says so); a
+   SIGSEGV in C code (exit 4, the fault names the line and the signal; it used to crash dream run). Every process
+   the controllers ran in is gone when the command ends. (The setup() cases only under dream run:
+   dream launch starts its agents while its simulator checks the config.)
+
 With --launch, the same under `dream launch` (one `dream agent` process per robot, udpm; run in
 a private network namespace): the agent's own watchdog stops the stuck call, so the world hears
 the same fault instead of a silent agent, and an interrupted launch ends as promptly (the
@@ -29,6 +47,7 @@ Usage: python_controller_hang.py --dream BIN --source DIR [--launch]
 
 import os
 import re
+import resource
 import signal
 import time
 
@@ -176,6 +195,226 @@ def exits(ctx, args):
     return "sys.exit: controller_failed"
 
 
+ESCAPES = '''\
+import ctypes
+import os
+import signal
+import sys
+import time
+
+from dream import Robot
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def note(name, value):
+    with open(os.path.join(HERE, name), "a") as f:
+        f.write(f"{value}\\n")
+
+
+def deep(n):
+    return deep(n + 1) + 1
+
+
+class Escapes(Robot):
+    """Robot 0 at step 3 (robot 1 in setup) does ATTACK; each robot notes its process."""
+
+    def setup(self):
+        note("hosts", os.getpid())
+        if ATTACK == "ignore_signals":
+            signal.signal(signal.SIGINT, signal.SIG_IGN)
+            signal.signal(signal.SIGTERM, signal.SIG_IGN)
+            note("ignoring", os.getpid())
+        if ATTACK in ("setup_sleeps", "check_sleeps") and self.id == 1:
+            marker = os.path.join(HERE, "checked")
+            if ATTACK == "check_sleeps" or os.path.exists(marker):
+                time.sleep(600)
+            open(marker, "w").close()
+
+    def update(self, step):
+        if step == 3 and self.id == 0:
+            if ATTACK == "exit":
+                os._exit(0)
+            if ATTACK == "fork":
+                pid = os.fork()
+                if pid:
+                    note("forked", pid)
+            if ATTACK == "ctypes_fork":
+                pid = ctypes.CDLL(None).fork()
+                if pid == 0:
+                    time.sleep(600)
+                note("forked", pid)
+            if ATTACK == "sleep":
+                time.sleep(600)
+            if ATTACK == "recursion":
+                sys.setrecursionlimit(200000)
+                deep(0)
+            if ATTACK == "crash":
+                ctypes.string_at(0)  # SIGSEGV
+            if ATTACK == "garbage":  # on the descriptor of the process's link to dream
+                os.write(3, b"M" + b"\\xff" * 64)
+        return (0.01, 0.0)
+
+
+ATTACK = None
+'''
+
+
+def pids_in(folder, name):
+    path = os.path.join(folder, name)
+    if not os.path.exists(path):
+        return []
+    with open(path) as f:
+        return [int(line) for line in f if line.strip()]
+
+
+def running(pid):
+    """True while `pid` runs (a zombie has ended)."""
+    try:
+        with open(f"/proc/{pid}/stat") as f:
+            return f.read().rsplit(")", 1)[1].split()[0] != "Z"
+    except FileNotFoundError:
+        return False
+
+
+def escape_case(ctx, args, attack, timeout=1, start_timeout=20):
+    """ESCAPES with ATTACK and its config: (its folder, the config, the run's folder)."""
+    folder = ctx.path("escape_" + attack)
+    write(os.path.join(folder, "escapes.py"), ESCAPES.replace("ATTACK = None", f"ATTACK = {attack!r}"))
+    config = write(os.path.join(folder, "escapes.yaml"),
+                   CONFIG.format(name=attack, timeout=timeout, module="escapes.py", class_name="Escapes")
+                   .replace("world: {", f"world: {{start_timeout_s: {start_timeout}, "))
+    out = ctx.path("escape_" + attack + "_out")
+    return folder, config, out
+
+
+def no_process_left(folder, attack):
+    time.sleep(0.2)  # the kernel's SIGKILL is not instant
+    for name in ("hosts", "forked", "ignoring"):
+        left = [pid for pid in pids_in(folder, name) if pid > 0 and running(pid)]
+        check(not left, f"{attack}: process(es) {left} ({name}) outlived the command")
+
+
+def faults_of(summary, attack):
+    check(summary is not None, f"{attack}: no summary.json")
+    return summary["robot_faults"]
+
+
+def escapes(ctx, args):
+    results = []
+
+    # os._exit(0): the robots are lost, the run ends by itself with a verdict.
+    folder, config, out = escape_case(ctx, args, "exit")
+    code, output = ctx.run([args.dream, args.command, config, "--out", out], timeout=30)
+    check(code == 4, f"os._exit(0) in update(): exit {code}, expected 4: {output[-600:]}")
+    check(not os.path.exists(os.path.join(out, "run.lcmlog.part")), "os._exit: run.lcmlog.part left behind")
+    faults = faults_of(read_summary(out), "exit")
+    check(re.match(rf"step 3: .*escapes\.py:{line_of(ESCAPES, 'os._exit(0)')}: in update: robot 0's call at step 3 "
+                   r"ended its Python process: exit code 0", faults.get("0", "")) is not None,
+          f"os._exit: robot 0's fault should name the line and the exit code: {faults}")
+    # dream run hosts both robots in one Python process, dream launch one per robot.
+    lost_with_it = ["0", "1"] if args.command == "run" else ["0"]
+    check(sorted(faults) == lost_with_it, f"os._exit: robot_faults should name robots {lost_with_it}: {faults}")
+    no_process_left(folder, "exit")
+    results.append("os._exit: exit 4")
+
+    # A crash in C code: the signal and the line.
+    resource.setrlimit(resource.RLIMIT_CORE, (0, 0))  # no core file from the crash below
+    folder, config, out = escape_case(ctx, args, "crash")
+    code, output = ctx.run([args.dream, args.command, config, "--out", out], timeout=30)
+    check(code == 4, f"a SIGSEGV in update(): exit {code}, expected 4: {output[-600:]}")
+    fault = faults_of(read_summary(out), "crash").get("0", "")
+    check(re.match(rf"step 3: .*escapes\.py:{line_of(ESCAPES, 'ctypes.string_at(0)')}: in update: robot 0's call at "
+                   r"step 3 ended its Python process: killed by signal 11 \(SIGSEGV\)", fault) is not None,
+          f"crash: robot 0's fault should name the line and the signal: {fault!r}")
+    no_process_left(folder, "crash")
+    results.append("SIGSEGV: exit 4")
+
+    # Bytes that are no frame, written on the link: the process is ended, its robots lost.
+    folder, config, out = escape_case(ctx, args, "garbage")
+    code, output = ctx.run([args.dream, args.command, config, "--out", out], timeout=30)
+    check(code == 4, f"garbage on the link: exit {code}, expected 4: {output[-600:]}")
+    fault = faults_of(read_summary(out), "garbage").get("0", "")
+    check("on its link" in fault, f"garbage: robot 0's fault should say what happened: {fault!r}")
+    no_process_left(folder, "garbage")
+    results.append("garbage on the link: exit 4")
+
+    # fork, and a fork through ctypes that the runtime's fork hook cannot see: no copy outlives
+    # the run, nothing holds the folder, the run is clean.
+    for attack in ("fork", "ctypes_fork"):
+        folder, config, out = escape_case(ctx, args, attack)
+        code, output = ctx.run([args.dream, args.command, config, "--out", out], timeout=30)
+        check(code == 0, f"{attack}: exit {code}, expected 0: {output[-600:]}")
+        check(pids_in(folder, "forked"), f"{attack}: the controller did not fork")
+        no_process_left(folder, attack)
+        code, output = ctx.run([args.dream, args.command, config, "--out", out, "--overwrite"], timeout=30)
+        check(code == 0, f"{attack}: a second run into the folder: exit {code}: {output[-600:]}")
+        results.append(f"{attack}: clean, nothing left")
+
+    # Signals ignored in setup(): SIGTERM still ends the run at once.
+    folder, config, out = escape_case(ctx, args, "ignore_signals")
+    run = ctx.start("ignore_signals", [args.dream, args.command, config, "--out", out, "--steps", "100000",
+                                       "--mode", "realtime"])
+    ctx.wait_for_output("ignore_signals", "robots have agents; running", 20)
+    time.sleep(0.5)
+    sent = time.monotonic()
+    run.send_signal(signal.SIGTERM)
+    code = ctx.wait("ignore_signals", timeout=10)
+    took = time.monotonic() - sent
+    check(code == 130, f"ignore_signals: exit {code} after SIGTERM, expected 130: {ctx.output('ignore_signals')[-600:]}")
+    check(took < 5, f"ignore_signals: took {took:.1f} s to end after SIGTERM")
+    check(read_summary(out)["end"] == "interrupted", "ignore_signals: summary end is not 'interrupted'")
+    no_process_left(folder, "ignore_signals")
+    results.append(f"SIG_IGN: ended {took:.2f} s after SIGTERM")
+
+    # A call stuck in C (time.sleep(600)), and a recursion so deep that writing its traceback
+    # outlasts the step (the watchdog raised ControllerTimeout again inside the host).
+    for attack, why in (("sleep", "did not return"), ("recursion", "")):
+        folder, config, out = escape_case(ctx, args, attack)
+        started = time.monotonic()
+        code, output = ctx.run([args.dream, args.command, config, "--out", out], timeout=30)
+        took = time.monotonic() - started
+        check(code == 4, f"{attack}: exit {code}, expected 4: {output[-600:]}")
+        check(took < 15, f"{attack}: the run took {took:.1f} s")
+        fault = faults_of(read_summary(out), attack).get("0", "")
+        lines = [str(n) for n, line in enumerate(ESCAPES.splitlines(), 1)
+                 if ("time.sleep(600)" in line and attack == "sleep") or
+                 (attack == "recursion" and "deep(n + 1)" in line)]
+        # The line of a recursion is named when Python's traceback holds it (its innermost 100 frames).
+        named = re.match(rf"step 3: .*escapes\.py:({'|'.join(lines)}): in (update|deep): ", fault) is not None
+        unnamed = attack == "recursion" and re.match(r"step 3: (robot 0's call|ControllerTimeout)", fault) is not None
+        check((named or unnamed) and why in fault, f"{attack}: robot 0's fault should name the line: {fault!r}")
+        no_process_left(folder, attack)
+        results.append(f"{attack}: exit 4 in {took:.1f} s")
+
+    # setup() that never returns in the run (the check before it passed), or already in the check.
+    # (Not under dream launch, whose agents start while its simulator checks the config.)
+    if args.command != "run":
+        return "; ".join(results)
+    folder, config, out = escape_case(ctx, args, "setup_sleeps", start_timeout=3)
+    started = time.monotonic()
+    code, output = ctx.run([args.dream, args.command, config, "--out", out], timeout=40)
+    took = time.monotonic() - started
+    setup_line = line_of(ESCAPES, "time.sleep(600)")
+    check(code == 4, f"setup_sleeps: exit {code}, expected 4: {output[-600:]}")
+    check(took < 20, f"setup_sleeps: the run took {took:.1f} s")
+    fault = faults_of(read_summary(out), "setup_sleeps").get("1", "")
+    check(re.match(rf".*escapes\.py:{setup_line}: in setup: robot 1's setup\(\) did not return within 2\.7 s", fault)
+          is not None, f"setup_sleeps: robot 1's fault: {fault!r}")
+    no_process_left(folder, "setup_sleeps")
+    results.append(f"setup() hangs in the run: exit 4 in {took:.1f} s")
+    folder, config, out = escape_case(ctx, args, "check_sleeps", start_timeout=3)
+    started = time.monotonic()
+    code, output = ctx.run([args.dream, args.command, config, "--out", out], timeout=40)
+    took = time.monotonic() - started
+    check(code == 1 and re.search(rf"escapes\.py:{setup_line}: in setup: robot 1's setup\(\) did not return",
+                                  output) is not None,
+          f"check_sleeps: exit {code}, expected 1 naming the line: {output[-600:]}")
+    no_process_left(folder, "check_sleeps")
+    results.append(f"setup() hangs in the check: exit 1 in {took:.1f} s")
+    return "; ".join(results)
+
+
 def test(ctx):
     parser = argument_parser()
     parser.add_argument("--launch", action="store_true", help="dream launch instead of dream run")
@@ -187,6 +426,7 @@ def test(ctx):
     print(interrupted(ctx, args, "busy_sigint", False, "lockstep", signal.SIGINT))
     print(interrupted(ctx, args, "sleeping_sigterm", True, "lockstep" if args.launch else "realtime", signal.SIGTERM))
     print(exits(ctx, args))
+    print(escapes(ctx, args))
 
 
 if __name__ == "__main__":

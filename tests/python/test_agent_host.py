@@ -243,6 +243,32 @@ class AgentHostTest(unittest.TestCase):
         self.assertRegex(faults[0].detail, r"in update: ControllerTimeout: still running after 0\.8 s$")
         self.assertEqual(list(host.faults()), [0])
 
+    def test_a_timeout_raised_again_while_the_fault_is_written_still_fails_the_robot(self):
+        # The watchdog raises ControllerTimeout again every 0.25 s while the call runs; one that
+        # lands while the first one's text is made (a deep traceback) used to escape the host:
+        # no fault, the robot silent until the world gave up on it.
+        class Slow(Robot):
+            def update(self, step):
+                if self.id == 0 and step == 2:
+                    raise dream.ControllerTimeout("still running after 0.8 s")
+                return (0.01, 0.0)
+
+        def raises_again(exc, user_file=None):
+            raise dream.ControllerTimeout("still running after 0.8 s")
+
+        original = dream.robot_agent.controller_error_text
+        dream.robot_agent.controller_error_text = raises_again
+        self.addCleanup(setattr, dream.robot_agent, "controller_error_text", original)
+        bus, host = self.host_of(Slow)
+        for step in (1, 2, 3):
+            bus.deliver("DREAM_POSES", poses(step))
+        published = bus.take()
+        faults = [dream.robot_fault_t.decode(data) for channel, data in published if channel == "DREAM_FAULT_0"]
+        self.assertEqual([fault.step for fault in faults], [2])
+        self.assertRegex(faults[0].detail, r"^ControllerTimeout: still running after 0\.8 s \(raised again while")
+        steps_of = lambda channel: [dream.velocity_command_t.decode(d).step for c, d in published if c == channel]
+        self.assertEqual(steps_of("DREAM_CMD_1"), [1, 2, 3])  # the other robot goes on
+
     def test_an_interrupt_of_the_run_stops_every_answer_and_blames_no_controller(self):
         class Interrupted(Robot):
             def update(self, step):
@@ -262,12 +288,14 @@ class AgentHostTest(unittest.TestCase):
         self.assertEqual(steps_of("DREAM_CMD_1"), [1])  # the step's handling ended at once
 
     def test_each_controller_call_is_marked_for_the_watchdog(self):
-        cell = memoryview(bytearray(8)).cast("q")
+        cell = memoryview(bytearray(24)).cast("q")  # token, robot, step: dream times the call by them too
         seen = []
+        marked = []
 
         class Marks(Robot):
             def update(self, step):
                 seen.append(cell[0])
+                marked.append((cell[1], cell[2]))
                 if self.id == 1:
                     raise KeyError("fails")
                 return (0.0, 0.0)
@@ -280,7 +308,30 @@ class AgentHostTest(unittest.TestCase):
         self.assertEqual(len(seen), 2)
         self.assertTrue(all(token > 0 for token in seen), seen)
         self.assertNotEqual(seen[0], seen[1])  # a token per call
+        self.assertEqual(marked, [(0, 1), (1, 1)])  # which robot's call, at which step
         self.assertEqual(cell[0], 0)  # cleared after each call, a failing one too
+
+    def test_nothing_a_handler_raises_reaches_lcms_c_code(self):
+        # A deep recursion made the host's own handler raise again while it handled the error:
+        # ctypes printed "Exception ignored on calling ctypes callback" and dropped it, and the
+        # host never reported the robot. dream.lcm's callback keeps everything and logs it.
+        from dream.lcm import Lcm
+        bus = Lcm("memq://")
+        self.addCleanup(bus.close)
+
+        def handler(channel, data):
+            raise RecursionError("maximum recursion depth exceeded")
+
+        bus.subscribe("DREAM_TEST", handler)
+        unraised = []
+        previous = sys.unraisablehook
+        sys.unraisablehook = unraised.append
+        self.addCleanup(setattr, sys, "unraisablehook", previous)
+        bus.publish("DREAM_TEST", b"x")
+        with self.assertLogs("dream", level="ERROR") as logged:
+            self.assertGreater(bus.handle_timeout(1000), 0)
+        self.assertEqual(unraised, [])
+        self.assertIn("DREAM_TEST: a message handler failed: RecursionError", logged.output[0])
 
     def test_the_detail_limit_is_the_worlds(self):
         # agent_host.MAX_DETAIL_BYTES mirrors lcm::MessageLimits::kDetailBytes (the runtime stands alone).

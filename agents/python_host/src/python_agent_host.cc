@@ -81,17 +81,19 @@ std::string TextOf(PyObject* object) {
 //
 // The Python side marks each controller call in `cell` (agent_host.py's
 // _answer, embedded.py's check and attach): a token unique to the call, > 0
-// for a step (timed), < 0 for setup (interruptible only), 0 between calls.
-// Two stores per call, nothing else on the hot path. The thread polls the
-// cell; when the same step's call has run for kStopFraction of the world's
-// agent_timeout_s, or any call runs while `stop` is set, it asks the
+// for a step, < 0 for loading the module and setup(), 0 between calls; then
+// the robot and the step. A few stores per call, nothing else on the hot
+// path. The thread polls the cell; when the same step's call has run for
+// kStopFraction of the world's agent_timeout_s (loading and setup: of its
+// start_timeout_s), or any call runs while `stop` is set, it asks the
 // interpreter, with Py_AddPendingCall, to raise ControllerTimeout or
 // RunInterrupted in whatever Python code the interpreter's main thread runs
 // (taking the GIL once, so that the main thread notices); RaiseInCall checks,
 // with the GIL, that the call is still the one it was meant for. The
 // exception lands at the next bytecode the call runs, so a call blocked in C
 // code that never returns to Python (a long time.sleep, a blocking read) is
-// stopped only when it does. Needs the tools' threading: every call on the
+// stopped only when it does, or by the process that watches this one through
+// the cell (PythonHostProcess). Needs the tools' threading: every call on the
 // thread that started the interpreter (its main thread, the only one 3.11
 // runs pending calls on). Never freed (the thread outlives every host, and a
 // queued pending call may run after one is gone).
@@ -106,16 +108,20 @@ class Watchdog {
     return *watchdog;
   }
 
-  std::atomic<int64_t>& cell() { return cell_; }
+  /// The cell's first word, the call's token (the words after it: robot, step).
+  std::atomic<int64_t>* cell() { return cell_.load(); }
 
   /// A step's call is stopped at this fraction of the world's
   /// agent_timeout_s: early enough that the world hears the fault (and the
   /// other robots' answers) before it gives up on the robots as silent.
   static constexpr double kStopFraction = 0.8;
 
-  void Watch(const std::atomic<bool>* stop, double agent_timeout_s) {
+  void Watch(const std::atomic<bool>* stop, double agent_timeout_s, double start_timeout_s,
+             std::atomic<int64_t>* cell) {
     stop_.store(stop);
     agent_timeout_s_.store(agent_timeout_s > 0 ? agent_timeout_s : 0.0);
+    start_timeout_s_.store(start_timeout_s > 0 ? start_timeout_s : 0.0);
+    if (cell != nullptr) cell_.store(cell);
   }
 
   /// Starts the thread (once); `timeout_type` and `interrupt_type` are the
@@ -145,7 +151,7 @@ class Watchdog {
     bool fired = false;
     while (true) {
       std::this_thread::sleep_for(kPoll);
-      const int64_t token = cell_.load(std::memory_order_relaxed);
+      const int64_t token = cell_.load()->load(std::memory_order_relaxed);
       const Clock::time_point now = Clock::now();
       if (token == 0) {
         watched = 0;
@@ -157,18 +163,19 @@ class Watchdog {
         fired = false;
       }
       const std::atomic<bool>* stop = stop_.load();
-      const double limit = kStopFraction * agent_timeout_s_.load();
+      const double limit_s = token > 0 ? agent_timeout_s_.load() : start_timeout_s_.load();
+      const double limit = kStopFraction * limit_s;
       Kind kind = kNone;
       if (stop != nullptr && stop->load()) {
         kind = kInterrupt;
-      } else if (token > 0 && limit > 0 && std::chrono::duration<double>(now - since).count() > limit) {
+      } else if (limit > 0 && std::chrono::duration<double>(now - since).count() > limit) {
         kind = kTimeout;
       }
       if (kind == kNone || (fired && now - last_fired < kRepeat)) continue;
       if (pending_.exchange(true)) continue;  // one queued at a time
       pending_kind_.store(kind);
       pending_token_.store(token);
-      pending_agent_timeout_s_.store(agent_timeout_s_.load());
+      pending_limit_s_.store(limit_s);
       if (Py_AddPendingCall(&Watchdog::RaiseInCall, this) != 0) {
         pending_.store(false);  // the queue is full: next poll
         continue;
@@ -191,29 +198,31 @@ class Watchdog {
     Watchdog& self = *static_cast<Watchdog*>(self_pointer);
     const int kind = self.pending_kind_.load();
     const int64_t token = self.pending_token_.load();
-    const double agent_timeout_s = self.pending_agent_timeout_s_.load();
+    const double limit_s = self.pending_limit_s_.load();
     self.pending_.store(false);
-    if (self.cell_.load(std::memory_order_relaxed) != token) return 0;  // that call ended meanwhile
+    if (self.cell()->load(std::memory_order_relaxed) != token) return 0;  // that call ended meanwhile
     if (kind == kInterrupt) {
       PyErr_SetString(self.interrupt_type_, "interrupted (Ctrl-C or SIGTERM)");
       return -1;
     }
     char message[160];
-    std::snprintf(message, sizeof message, "still running after %g s of the world's agent_timeout_s of %g s: stopped",
-                  kStopFraction * agent_timeout_s, agent_timeout_s);
+    std::snprintf(message, sizeof message, "still running after %g s of the world's %s of %g s: stopped",
+                  kStopFraction * limit_s, token > 0 ? "agent_timeout_s" : "start_timeout_s", limit_s);
     PyErr_SetString(self.timeout_type_, message);
     return -1;
   }
 
   Watchdog() = default;
 
-  std::atomic<int64_t> cell_{0};
+  std::atomic<int64_t> own_cell_[kCallCellWords] = {};
+  std::atomic<std::atomic<int64_t>*> cell_{own_cell_};
   std::atomic<const std::atomic<bool>*> stop_{nullptr};
   std::atomic<double> agent_timeout_s_{0.0};
+  std::atomic<double> start_timeout_s_{0.0};
   std::atomic<bool> pending_{false};
   std::atomic<int> pending_kind_{kNone};
   std::atomic<int64_t> pending_token_{0};
-  std::atomic<double> pending_agent_timeout_s_{0.0};
+  std::atomic<double> pending_limit_s_{0.0};
   bool started_ = false;  // with the GIL
   PyObject* timeout_type_ = nullptr;
   PyObject* interrupt_type_ = nullptr;
@@ -264,7 +273,8 @@ PyObject* EmbeddedModule(const PythonAgentHost::Paths& paths) {
     ThrowPythonError("cannot load the Python runtime from " + paths.runtime_dir);
   }
   Watchdog& watchdog = Watchdog::Get();
-  PyRef cell(PyMemoryView_FromMemory(reinterpret_cast<char*>(&watchdog.cell()), sizeof(int64_t), PyBUF_WRITE));
+  PyRef cell(PyMemoryView_FromMemory(reinterpret_cast<char*>(watchdog.cell()), kCallCellWords * sizeof(int64_t),
+                                     PyBUF_WRITE));
   if (cell.get() == nullptr) ThrowPythonError("cannot set up the Python runtime's watchdog");
   PyRef done(PyObject_CallMethod(imported.get(), "setup", "siO", paths.lcmtypes_dir.c_str(), PythonLogLevel(),
                                  cell.get()));
@@ -365,8 +375,10 @@ class EmbeddedPythonAgentHost final : public PythonAgentHost {
 // The module's entry points (PythonHostWatchFunction, PythonHostCheckFunction, PythonHostCreateFunction),
 // found with dlsym by the tools' PythonHostLibrary.
 extern "C" __attribute__((visibility("default"))) void dream_python_host_watch(const std::atomic<bool>* stop,
-                                                                               double agent_timeout_s) {
-  dream::agents::Watchdog::Get().Watch(stop, agent_timeout_s);
+                                                                               double agent_timeout_s,
+                                                                               double start_timeout_s,
+                                                                               std::atomic<int64_t>* cell) {
+  dream::agents::Watchdog::Get().Watch(stop, agent_timeout_s, start_timeout_s, cell);
 }
 
 extern "C" __attribute__((visibility("default"))) void dream_python_host_check(

@@ -44,16 +44,25 @@ class PythonAgentHost {
 };
 
 /// dream_python_host_watch: what the module's watchdog thread watches (set it
-/// before the first check or create; it may change later). While `stop` is
-/// set, a running controller call (a step, or setup()) is interrupted: it
-/// raises dream.RunInterrupted, which ends the host's handling of the step
-/// without blaming the controller. A step's call still running after 0.8 x
-/// the world's `agent_timeout_s` (0: no limit) raises
-/// dream.ControllerTimeout: that robot's controller failed (DREAM_FAULT_<id>,
-/// heard before the world would give up on the silent agent), the others go
-/// on. Either lands at the next Python bytecode the call runs: a call blocked
-/// in C code that does not return to Python is stopped only when it does.
-using PythonHostWatchFunction = void (*)(const std::atomic<bool>* stop, double agent_timeout_s);
+/// before the first check or create; the limits may change later). While
+/// `stop` is set, a running controller call (a step, or loading and setup())
+/// is interrupted: it raises dream.RunInterrupted, which ends the host's
+/// handling of the step without blaming the controller. A step's call still
+/// running after 0.8 x the world's `agent_timeout_s` (0: no limit), or loading
+/// the module and setup() after 0.8 x its `start_timeout_s` (0: no limit),
+/// raises dream.ControllerTimeout: that robot's controller failed
+/// (DREAM_FAULT_<id>, heard before the world would give up on the silent
+/// agent), the others go on. Either lands at the next Python bytecode the
+/// call runs: a call blocked in C code is ended by the process that watches
+/// this one (PythonHostProcess), through `cell`.
+///
+/// `cell`: where the Python side marks each controller call, kCallCellWords
+/// int64 (a token unique to the call, > 0 for a step, < 0 for loading and
+/// setup(), 0 between calls; the robot id; the step), so that a process
+/// sharing the memory can time the call too; nullptr: the module's own.
+inline constexpr int kCallCellWords = 3;
+using PythonHostWatchFunction = void (*)(const std::atomic<bool>* stop, double agent_timeout_s,
+                                         double start_timeout_s, std::atomic<int64_t>* cell);
 inline constexpr const char* kPythonHostWatchSymbol = "dream_python_host_watch";
 
 /// dream_python_host_check: loads the controller's module and class and
