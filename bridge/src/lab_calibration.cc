@@ -204,8 +204,15 @@ CalibrationReport LabCalibration::Fit(const std::vector<CalibrationRun>& runs) c
 
   const std::string transitions = sim::PrintfText("%lld", static_cast<long long>(fitted.transitions));
   const int pose_delay = std::min(base_.pose_delay_steps, best.delay_steps);
-  AddKey(&report, KeptKey(base_, "pose_delay_steps",
-                          "poses and commands show only the sum with command_latency_steps; kept the base's"));
+  if (pose_delay < base_.pose_delay_steps) {
+    // The whole delay is shorter than the base's pose delay: it is all pose delay.
+    AddKey(&report, FittedKey{"pose_delay_steps", static_cast<double>(pose_delay), static_cast<double>(pose_delay),
+                              static_cast<double>(pose_delay), true,
+                              "the total delay is below the base's pose delay, so it is all pose delay"});
+  } else {
+    AddKey(&report, KeptKey(base_, "pose_delay_steps",
+                            "poses and commands show only the sum with command_latency_steps; kept the base's"));
+  }
   AddKey(&report, FittedKey{"command_latency_steps", static_cast<double>(best.delay_steps - pose_delay),
                             static_cast<double>(std::max(0, delay_low - pose_delay)),
                             static_cast<double>(std::max(0, delay_high - pose_delay)), true,

@@ -139,7 +139,8 @@ int RunCalibrationExport(const ExportArgs& args, bridge::ExportOptions options) 
   int run_code = kExitOk;
   bool clean = false;
   {
-    const HostedAgents agents(bus, run.config(), ids, run.factory(), run.config().sim.agent_timeout_s);
+    const HostedAgents agents(bus, run.config(), ids, run.factory(),
+                              {run.config().sim.agent_timeout_s, run.config().sim.start_timeout_s, 0.0});
     const session::RunResult result = run.Run(bus, {run_dir, config_text});
     run_code = ExitCodeFor(result);
     clean = result.judgement.verdict() == sim::RunVerdict::kClean;
