@@ -5,6 +5,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "dream/config/controller_config.h"
+
 namespace dream::agents {
 namespace {
 
@@ -30,20 +32,9 @@ PythonControllerBuilder::PythonControllerBuilder(const config::ConfigNode& secti
   (void)num_robots;
   const config::ConfigNode module = section.Required("module");
   module_as_written_ = module.AsString();
-  fs::path path(module_as_written_);
   // The run folder keeps a copy at the same relative path beside its
   // config.yaml, so a relative path must stay inside the config's folder.
-  if (path.is_relative()) {
-    for (const fs::path& part : path.lexically_normal()) {
-      if (part == "..") {
-        module.Fail("'" + module_as_written_ +
-                    "' leaves the config's folder: put the module in that folder (or below it), or give its "
-                    "absolute path");
-      }
-    }
-    path = fs::path(section.file()).parent_path() / path;
-  }
-  path = path.lexically_normal();
+  const fs::path path = config::FileBesideConfig(module, "module");
   // The module's base name becomes a file of its own in a Robotarium
   // submission and is imported by it, so it must be a module name.
   if (path.extension() != ".py" || !IsPythonIdentifier(path.stem().string())) {

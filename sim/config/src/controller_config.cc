@@ -15,6 +15,20 @@ std::filesystem::path PluginBaseDir(const ConfigNode& root) {
   return folder.empty() ? fs::current_path() : fs::absolute(folder);
 }
 
+std::filesystem::path FileBesideConfig(const ConfigNode& node, const std::string& what) {
+  namespace fs = std::filesystem;
+  const std::string written = node.AsString();
+  fs::path path(written);
+  if (path.is_absolute()) return path.lexically_normal();
+  for (const fs::path& part : path.lexically_normal()) {
+    if (part == "..") {
+      node.Fail("'" + written + "' leaves the config's folder: put the " + what +
+                " in that folder (or below it), or give its absolute path");
+    }
+  }
+  return (fs::path(node.file()).parent_path() / path).lexically_normal();
+}
+
 namespace {
 
 void ReadPlugins(const ConfigNode& root, ControllerConfig* config) {

@@ -137,20 +137,8 @@ sim::RealismParams RealismOfFile(const ConfigNode& file, const sim::RealismParam
 sim::RealismParams ReadRealismFile(const ConfigNode& file_node, const sim::RealismParams& base, RunConfig* config) {
   namespace fs = std::filesystem;
   const std::string written = file_node.AsString();
-  fs::path path(written);
   if (written.empty()) file_node.Fail("expected the path of a realism file (e.g. from dream calibrate), got ''");
-  // A run folder keeps a copy at the same relative path beside its
-  // config.yaml, so a relative path must stay inside the config's folder.
-  if (path.is_relative()) {
-    for (const fs::path& part : path.lexically_normal()) {
-      if (part == "..") {
-        file_node.Fail("'" + written +
-                       "' leaves the config's folder: put the realism file in that folder (or below it), or give "
-                       "its absolute path");
-      }
-    }
-    path = fs::path(file_node.file()).parent_path() / path;
-  }
+  const fs::path path = FileBesideConfig(file_node, "realism file");
   std::error_code error;
   if (!fs::is_regular_file(path, error)) {
     file_node.Fail("no realism file '" + path.lexically_normal().string() +

@@ -42,4 +42,11 @@ ControllerConfig LoadControllerConfig(const ConfigNode& root);
 /// copy of the config elsewhere still finds them), else the config's folder.
 std::filesystem::path PluginBaseDir(const ConfigNode& root);
 
+/// A file a config names (`node`'s text) that its run folder keeps a copy of
+/// at the same relative path beside config.yaml (a Python controller's
+/// module, a realism file): an absolute path as it is, a relative one taken
+/// from the config's folder, which it may not leave (`what` names the file in
+/// that error). Not checked for existence. @throws ConfigError.
+std::filesystem::path FileBesideConfig(const ConfigNode& node, const std::string& what);
+
 }  // namespace dream::config
