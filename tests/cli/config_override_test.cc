@@ -74,6 +74,56 @@ TEST(ConfigOverride, UnknownKeysAndIndicesAreErrorsNamingThem) {
   EXPECT_NE(ErrorOf("controller.max_speed_mps", "[0.1").find("is not valid YAML"), std::string::npos);
 }
 
+/// A flow list holding anchors a0..a<levels-1>, each ten aliases of the one
+/// before (a0 ten x's), then `extra` more aliases of the last: values that
+/// double as a "billion laughs" when `levels` is large.
+std::string Laughs(int levels, int extra) {
+  std::string text = "[&a0 [x, x, x, x, x, x, x, x, x, x]";
+  for (int i = 1; i < levels; ++i) {
+    text += ", &a" + std::to_string(i) + " [";
+    for (int k = 0; k < 10; ++k) text += (k ? ", *a" : "*a") + std::to_string(i - 1);
+    text += "]";
+  }
+  for (int k = 0; k < extra; ++k) text += ", *a" + std::to_string(levels - 1);
+  return text + "]";
+}
+
+TEST(ConfigOverride, AValueHasTheLimitsOfAConfigFile) {
+  // Before: copying a value that contains itself overflowed the stack (SIGSEGV).
+  EXPECT_EQ(ErrorOf("controller.goals", "&a [*a]"),
+            "--set controller.goals:1: [0]: contains itself through an alias (*); write the value out instead");
+  // Before: a 300-byte value took 36 s and 3.9 GB, then std::bad_alloc.
+  const std::string laughs = ErrorOf("controller.goals", Laughs(10, 0));
+  EXPECT_NE(laughs.find("--set controller.goals:1: "), std::string::npos) << laughs;
+  EXPECT_NE(laughs.find("aliases (*) expand this value to more than 1000000 values"), std::string::npos) << laughs;
+  // Nesting counts from the top of the config: 2 levels of key and 101 of value.
+  const std::string deep = std::string(101, '[') + std::string(101, ']');
+  EXPECT_EQ(ErrorOf("controller.goals", deep),
+            "--set controller.goals: the value would nest the config 102 levels deep; at most 100");
+  EXPECT_EQ(ErrorOf("controller.goals", std::string(98, '[') + std::string(98, ']')), "(no error)");
+  EXPECT_EQ(ErrorOf("controller.goals", "{a: 1, a: 2}"),
+            "--set controller.goals:1: a: duplicate key; first given at line 1");
+  EXPECT_NE(ErrorOf("name", std::string(config::ConfigNode::kMaxFileBytes + 1, 'x')).find("at most 16777216"),
+            std::string::npos);
+}
+
+TEST(ConfigOverride, TheConfigWithTheValueStaysWithinAConfigFilesLimit) {
+  // The file's aliases expand to 901,233 values (a file may: up to 1,000,000).
+  YAML::Node root = YAML::Load(std::string(kConfig) + "big: " + Laughs(5, 7) + "\n");
+  ApplyConfigOverride(root, "controller.a", Laughs(4, 0), "demo.yaml");  // 12,345 more: allowed
+  EXPECT_EQ(root["controller"]["a"].size(), 4u);
+  try {
+    ApplyConfigOverride(root, "controller.b", Laughs(5, 0), "demo.yaml");  // 123,456 more: not
+    FAIL() << "a config past 1,000,000 values was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("--set controller.b: the config ("), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("and this value (123456 values once its aliases are expanded) exceed "
+                                         "1000000 values"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(ConfigOverride, AMisspeltNewLastKeyIsCaughtByTheConfigCheck) {
   // (The controller section's keys are checked by the agents' factory, which
   // the integration test exercises; the top level by LoadRunConfig.)
