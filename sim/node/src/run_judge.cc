@@ -50,18 +50,22 @@ std::vector<VerdictReason> OutcomeReasons(const RunOutcome& outcome) {
   const long bad = std::accumulate(outcome.bad_messages.begin(), outcome.bad_messages.end(), 0L,
                                    [](long sum, const auto& entry) { return sum + entry.second; });
   if (bad > 0) {
+    // What was refused, where, how many and from when: "bad messages" alone
+    // does not tell a typo in a controller from forged traffic.
     std::string channels;
     int named = 0;
     for (const auto& [channel, count] : outcome.bad_messages) {
       if (named++ == 3) {
-        channels += ", ...";
+        channels += "; ...";
         break;
       }
-      channels += (channels.empty() ? "" : ", ") + channel + " (" + std::to_string(count) + ")";
+      channels += (channels.empty() ? "" : "; ") + channel + ": " + std::to_string(count);
+      const auto first = outcome.bad_message_first.find(channel);
+      if (first != outcome.bad_message_first.end()) channels += ", the first at " + first->second;
     }
     reasons.push_back({"bad_messages", RunVerdict::kNotReady,
                        std::to_string(bad) + " undecodable or refused messages were dropped: " + channels,
-                       "summary.json bad_messages and bad_message_senders"});
+                       "summary.json bad_messages, bad_message_first and bad_message_senders"});
   }
   if (!outcome.other_worlds.empty()) {
     reasons.push_back({"other_worlds", RunVerdict::kNotReady,

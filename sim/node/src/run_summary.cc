@@ -65,6 +65,7 @@ nlohmann::ordered_json RunSummary(const config::RunConfig& config, const RunOutc
   json["robots_done"] = outcome.robots_done;
   json["bad_messages"] = outcome.bad_messages;
   json["bad_message_senders"] = outcome.bad_message_senders;
+  json["bad_message_first"] = outcome.bad_message_first;
   json["handler_failures"] = outcome.handler_failures;
   json["dropped_messages"] = outcome.dropped_messages;
   json["log"] = log_file_name;

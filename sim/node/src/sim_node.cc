@@ -61,6 +61,7 @@ SimNode::SimNode(lcm::LcmInterface& lcm, World& world, RunRecorder* recorder, Si
       run_id_(lcm::NewRunId()) {
   std::string error;
   if (!options_.IsValid(&error)) throw std::invalid_argument("sim options: " + error);
+  bad_messages_.set_step(world_.step());
   lcm::Subscribe(lcm_, lcm::kCommandChannelRegex, this, &SimNode::OnCommand, bad_messages_);
   lcm::Subscribe(lcm_, lcm::kFaultChannelRegex, this, &SimNode::OnFault, bad_messages_);
   // Our own statuses come back too (memq, udpm loopback); another run id is a second world.
@@ -370,6 +371,7 @@ void SimNode::AdvanceWorld() {
     }
   }
   world_.Step();
+  bad_messages_.set_step(world_.step());
 }
 
 RunOutcome SimNode::Finish(RunOutcome::End end, const std::string& reason) {
@@ -414,6 +416,9 @@ RunOutcome SimNode::Finish(RunOutcome::End end, const std::string& reason) {
   }
   outcome.bad_messages = bad_messages_.per_channel();
   outcome.bad_message_senders = bad_messages_.senders();
+  for (const auto& [channel, first] : bad_messages_.first()) {
+    outcome.bad_message_first[channel] = "step " + std::to_string(first.step) + ": " + first.reason;
+  }
   outcome.handler_failures = lcm_.handler_failures();
   outcome.dropped_messages = lcm_.dropped_messages();
   outcome.log_events = recorder_ != nullptr ? recorder_->events_written() : 0;
