@@ -69,7 +69,8 @@ int MergeAgentReports(const std::string& out_dir, int num_robots, int sim_exit) 
       }
       if (report.contains("bad_message_first")) {
         for (const auto& [channel, what] : report.at("bad_message_first").items()) {
-          if (what.is_string()) first_bad.emplace(channel, what.get<std::string>() + " (the agent of robot " + std::to_string(robot) + ")");
+          if (!what.is_string()) continue;
+          first_bad.emplace(channel, what.get<std::string>() + " (the agent of robot " + std::to_string(robot) + ")");
         }
       }
       for (const auto& run : report.at("other_runs")) other_runs.insert(run.get<std::string>());

@@ -20,8 +20,8 @@ constexpr const char* kRunFiles[] = {"run.lcmlog",       "run.lcmlog.part", "sum
                                      "comparison.json",  "comparison.png",  "check.json",      "check_report.json"};
 
 // The log a run leaves when it is killed before it ends (kill -9, a power
-// cut): every event up to its last flush, readable as a log. It is a run's
-// data, so a folder holding one holds a run (a rerun used to truncate it).
+// cut): every event up to its last flush, the last one possibly cut. It is
+// a run's data, so a folder holding one holds a run (a rerun truncated it).
 constexpr const char* kUnfinishedLog = "run.lcmlog.part";
 
 bool IsFile(const fs::path& path) {

@@ -5,12 +5,11 @@
 #include <unistd.h>
 #include <yaml-cpp/eventhandler.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
-#include <cstring>
-
-#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -188,8 +187,9 @@ std::string ConfigNode::ReadFile(const std::string& path) {
   };
   if (static_cast<uint64_t>(status.st_size) > kMaxFileBytes) throw too_large(std::to_string(status.st_size));
   // Read to at most one byte past the limit, whatever the size said (a file
-  // may grow, /proc files say 0), and within a time limit (a file on a dead
-  // network mount).
+  // may grow, /proc files say 0), and give up past a time limit, checked
+  // between reads (a file on a slow mount; a read the kernel itself holds,
+  // on a hard network mount, is beyond it).
   std::string text;
   const auto deadline = std::chrono::steady_clock::now() + kReadTimeout;
   char buffer[65536];
