@@ -146,6 +146,7 @@ void RunRecorder::Close() {
   // Renamed by the file it is, not by its name: when the folder was removed
   // and made again while the run went on, the path may hold another run's log.
   if (!PartPathHoldsThisLog()) {
+    part_replaced_ = true;
     throw std::runtime_error("the run log " + part_path_ +
                              " is no longer the file this run wrote (its folder was removed, or the file moved or "
                              "replaced, while the run went on): not renamed to " + path_ +

@@ -71,6 +71,10 @@ class RunRecorder {
   /// Why writing failed, in one line naming the file and the OS error, and
   /// how many whole events the log kept; empty while nothing failed.
   const std::string& failure() const { return failure_; }
+  /// True once Close() found <path>.part no longer the file this recorder
+  /// wrote (its folder removed and made again): what the folder holds now is
+  /// another run's, and nothing of this run may be written over it.
+  bool part_replaced() const { return part_replaced_; }
 
  private:
   /// Cuts the file back to its last whole event on disk, records why in
@@ -98,6 +102,7 @@ class RunRecorder {
   bool cut_back_failed_ = false;  // the .part may end mid-event: never renamed
   uint64_t part_device_ = 0;      // the .part file opened, to rename it by what it is
   uint64_t part_inode_ = 0;
+  bool part_replaced_ = false;
 };
 
 }  // namespace dream::sim
