@@ -102,6 +102,15 @@ void ApplyConfigOverride(YAML::Node root, const std::string& dotted_key, const s
     throw std::invalid_argument(e.what());
   }
 
+  // A file's aliases share their nodes; a --set value is copied node by node
+  // (FreshCopy), so its expansion is held to what a command line can write out.
+  if (extent.values > kMaxSetValues) {
+    throw std::invalid_argument(option + ": the value holds " + std::to_string(extent.values) +
+                                " values once its aliases are expanded; a --set value may hold at most " +
+                                std::to_string(kMaxSetValues) + " (it is copied into the config; put a larger "
+                                "value in the config file)");
+  }
+
   const std::vector<std::string> parts = SplitKey(dotted_key);
   YAML::Node node = root;
   std::string path;  // the parts walked so far, for messages

@@ -19,7 +19,7 @@ const char* const kBaseConfig = DREAM_FUZZ_BASE_CONFIG;
 // More would only repeat the same code on a longer input.
 constexpr size_t kMaxSets = 8;
 // A sweep of more runs than this is the same code again, slower.
-constexpr size_t kMaxSweepRuns = 16;
+constexpr size_t kMaxSweepRuns = 4;
 
 // The lines of the input: one `--set` argument each.
 std::vector<std::string> SetsOf(const uint8_t* data, size_t size) {
