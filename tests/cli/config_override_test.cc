@@ -192,6 +192,13 @@ TEST(SweepParameter, BadTextIsAnErrorNamingTheOption) {
   EXPECT_NE(error_of("controller.max_speed_mps").find("expected KEY=V1,V2"), std::string::npos);
   EXPECT_NE(error_of("=1,2").find("the key before '=' is empty"), std::string::npos);
   EXPECT_NE(error_of("a..b=1").find("is not a dotted key"), std::string::npos);
+  // A control byte (or NUL, through the library) in a key would make the run folder's config.yaml
+  // unreadable (found by fuzzing); the message shows it escaped.
+  EXPECT_EQ(error_of("controller.max\x01r=4"),
+            "--set controller.max\\x01r=4: 'controller.max\\x01r' is not a dotted key like controller.sensors.0.noise_std");
+  EXPECT_NE(error_of(std::string("controller.max\0r=4", 18)).find("'controller.max\\x00r' is not a dotted key"),
+            std::string::npos);
+  EXPECT_NE(error_of("controller.m\xa1x=4").find("is not a dotted key"), std::string::npos);
   EXPECT_NE(error_of("a.b=1,,2").find("empty value"), std::string::npos);
   EXPECT_NE(error_of("a.b=").find("empty value"), std::string::npos);
   EXPECT_NE(error_of("a.b=[1,2").find("unclosed"), std::string::npos);

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "dream/agent_host/controller_factory.h"
 #include "dream/config/config_error.h"
 #include "dream/config/config_node.h"
 #include "dream/config/run_config.h"
@@ -47,7 +48,17 @@ void AsDreamRun(const std::vector<std::string>& sets) {
   std::string folder_text;
   try {
     const cli::OverriddenConfig overridden(kBaseConfig, -1, sets);
-    folder_text = overridden.FolderText(overridden.Load());
+    const config::RunConfig run = overridden.Load();
+    // dream run checks the controller's keys before it writes the folder
+    // (HostedAgents::Check; for the C++ kinds, the factory's check).
+    if (run.plugins.empty() && run.controller.GetString("kind", "") != "python") {
+      try {
+        const agents::ControllerFactory factory(run);
+      } catch (const config::ConfigError& e) {
+        throw config::ConfigError(overridden.Noted(e.what()));
+      }
+    }
+    folder_text = overridden.FolderText(run);
   } catch (const config::ConfigError& e) {
     if (!StartsWith(e.what(), kBaseConfig)) Finding("a config error without its file: " + std::string(e.what()));
     return;
