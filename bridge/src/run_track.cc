@@ -1,8 +1,55 @@
 #include "dream/bridge/run_track.h"
 
+#include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace dream::bridge {
+namespace {
+
+std::string Number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+bool Finite(double a, double b, double c = 0.0) { return std::isfinite(a) && std::isfinite(b) && std::isfinite(c); }
+
+// A number that is not finite (NaN, inf) in a log's poses, velocities or
+// obstacles: the world never publishes one, so the log is damaged or forged.
+// Said here, naming the log, robot and step, rather than as a distance of
+// "inf" or an error of the rule that met it first.
+void RequireFiniteNumbers(const run_log::RunLog& log, const RunTrack& track) {
+  const std::string damaged = ": the log is damaged or forged (the world publishes finite numbers only)";
+  for (int64_t k = 0; k <= track.last_step(); ++k) {
+    const std::string at_step = " at step " + std::to_string(k) + " is not finite (";
+    for (int i = 0; i < track.num_robots; ++i) {
+      const sim::Pose2& p = track.pose(k, i);
+      if (!Finite(p.x_m, p.y_m, p.theta_rad)) {
+        throw std::runtime_error(log.path() + ": robot " + std::to_string(i) + "'s pose" + at_step + "x " +
+                                 Number(p.x_m) + ", y " + Number(p.y_m) + ", theta " + Number(p.theta_rad) + ")" +
+                                 damaged);
+      }
+      const sim::UnicycleCommand& c = track.command(k, i);
+      if (!Finite(c.v_mps, c.w_radps)) {
+        // commands[k] came with the poses of step k + 1.
+        throw std::runtime_error(log.path() + ": robot " + std::to_string(i) + "'s velocity at step " +
+                                 std::to_string(k + 1) + " is not finite (v " + Number(c.v_mps) + ", w " +
+                                 Number(c.w_radps) + ")" + damaged);
+      }
+    }
+    for (const sim::ObstacleState& o : track.obstacles[static_cast<size_t>(k)]) {
+      if (!Finite(o.center_x_m, o.center_y_m, o.width_m) || !Finite(o.height_m, o.vx_mps, o.vy_mps)) {
+        throw std::runtime_error(log.path() + ": obstacle " + std::to_string(o.id) + at_step + "centre " +
+                                 Number(o.center_x_m) + ", " + Number(o.center_y_m) + ", size " + Number(o.width_m) +
+                                 " x " + Number(o.height_m) + ", velocity " + Number(o.vx_mps) + ", " +
+                                 Number(o.vy_mps) + ")" + damaged);
+      }
+    }
+  }
+}
+
+}  // namespace
 
 RunTrack RunTrackOf(const run_log::RunLog& log, RunEnd* end) {
   if (const std::optional<std::string> flaw = log.Flaw(/*with_status=*/end != nullptr)) {
@@ -30,6 +77,7 @@ RunTrack RunTrackOf(const run_log::RunLog& log, RunEnd* end) {
       obstacles.push_back(sim::ObstacleState{o.id, o.center_x, o.center_y, o.width, o.height, o.vx, o.vy});
     }
   }
+  RequireFiniteNumbers(log, track);
   if (end != nullptr && log.last_status()) {
     const run_status_t& status = *log.last_status();
     end->seen = true;

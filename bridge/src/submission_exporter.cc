@@ -25,8 +25,8 @@
 namespace dream::bridge {
 namespace {
 
-std::string JoinProblems(const std::vector<ExportProblem>& problems) {
-  std::string text = "the Robotarium would refuse this run (" + std::to_string(problems.size()) + " problem" +
+std::string JoinProblems(const std::string& log_file, const std::vector<ExportProblem>& problems) {
+  std::string text = log_file + ": the Robotarium would refuse this run (" + std::to_string(problems.size()) + " problem" +
                      (problems.size() == 1 ? "" : "s") + "):";
   for (const ExportProblem& p : problems) text += "\n  " + p.Text();
   return text;
@@ -139,8 +139,8 @@ void CheckExportFolder(const std::string& out_dir) {
 
 }  // namespace
 
-ExportRefused::ExportRefused(std::vector<ExportProblem> problems)
-    : std::runtime_error(JoinProblems(problems)), problems_(std::move(problems)) {}
+ExportRefused::ExportRefused(const std::string& log_file, std::vector<ExportProblem> problems)
+    : std::runtime_error(JoinProblems(log_file, problems)), problems_(std::move(problems)) {}
 
 ExportSummary ExportSubmission(const std::string& run_dir, const std::string& out_dir, const ExportOptions& options,
                                const std::string& config_path) {
@@ -214,7 +214,7 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
     force_or_refuse(std::move(problem), forcible);
   }
   for (ExportProblem& problem : NotReadyReasons(run_dir)) force_or_refuse(std::move(problem), true);
-  if (!problems.empty()) throw ExportRefused(problems);
+  if (!problems.empty()) throw ExportRefused(log_file, problems);
   ControllerFiles controller_files;
   NpyArray obstacles;
   if (controller) {

@@ -3,6 +3,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include "dream/config/config_error.h"
+#include "dream/config/config_node.h"
+
 namespace dream::cli {
 namespace {
 
@@ -77,11 +80,35 @@ void AssignInPlace(YAML::Node target, const YAML::Node& value) {
 void ApplyConfigOverride(YAML::Node root, const std::string& dotted_key, const std::string& value_text,
                          const std::string& source_name) {
   const std::string option = "--set " + dotted_key;
+  using config::ConfigNode;
+  if (value_text.size() > ConfigNode::kMaxFileBytes) {
+    throw std::invalid_argument(option + ": the value is " + std::to_string(value_text.size()) +
+                                " bytes; at most " + std::to_string(ConfigNode::kMaxFileBytes) +
+                                " (the limit of a config file)");
+  }
   YAML::Node value;
+  ConfigNode::Extent extent;
   try {
-    value = YAML::Load(value_text);
+    YAML::Load(value_text);  // yaml-cpp's own message for text that is not YAML
   } catch (const YAML::Exception& e) {
     throw std::invalid_argument(option + ": value '" + value_text + "' is not valid YAML: " + e.msg);
+  }
+  try {
+    // The config file's checks: the value is copied below, and an alias to
+    // itself (&a [*a]) or aliases nested ten by ten would be copied without end.
+    value = ConfigNode::ParseYaml(value_text, option);
+    extent = ConfigNode::CheckTree(value, option);
+  } catch (const config::ConfigError& e) {
+    throw std::invalid_argument(e.what());
+  }
+
+  // A file's aliases share their nodes; a --set value is copied node by node
+  // (FreshCopy), so its expansion is held to what a command line can write out.
+  if (extent.values > kMaxSetValues) {
+    throw std::invalid_argument(option + ": the value holds " + std::to_string(extent.values) +
+                                " values once its aliases are expanded; a --set value may hold at most " +
+                                std::to_string(kMaxSetValues) + " (it is copied into the config; put a larger "
+                                "value in the config file)");
   }
 
   const std::vector<std::string> parts = SplitKey(dotted_key);
@@ -117,6 +144,23 @@ void ApplyConfigOverride(YAML::Node root, const std::string& dotted_key, const s
                                   part + "'");
     }
     path += (path.empty() ? "" : ".") + part;
+  }
+  // The config with the value in place must keep a file's limits too.
+  const int depth = static_cast<int>(parts.size()) + extent.height;
+  if (depth > ConfigNode::kMaxDepth) {
+    throw std::invalid_argument(option + ": the value would nest the config " + std::to_string(depth) +
+                                " levels deep; at most " + std::to_string(ConfigNode::kMaxDepth));
+  }
+  ConfigNode::Extent before;
+  try {
+    before = ConfigNode::CheckTree(root, source_name);
+  } catch (const config::ConfigError& e) {
+    throw std::invalid_argument(option + ": " + e.what());
+  }
+  if (before.values + extent.values > ConfigNode::kMaxValues) {
+    throw std::invalid_argument(option + ": the config (" + std::to_string(before.values) + " values) and this value (" +
+                                std::to_string(extent.values) + " values once its aliases are expanded) exceed " +
+                                std::to_string(ConfigNode::kMaxValues) + " values, the limit of a config file");
   }
   AssignInPlace(node, value);
 }

@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <cstddef>
 #include <string>
 
 namespace dream::cli {
@@ -19,6 +20,12 @@ namespace dream::cli {
 /// at the key's line in `source_name`.
 /// @throws std::invalid_argument naming the key, the missing part and the keys
 ///         that are there.
+/// The value is checked as a config file is (ConfigNode::ParseYaml: aliases,
+/// duplicate keys, a second document; at most ConfigNode::kMaxFileBytes), and
+/// the config with it in place must keep a file's limits (kMaxDepth levels,
+/// kMaxValues values once aliases are expanded). Being copied, a value may
+/// expand to at most kMaxSetValues values.
+inline constexpr size_t kMaxSetValues = 100000;
 void ApplyConfigOverride(YAML::Node root, const std::string& dotted_key, const std::string& value_text,
                          const std::string& source_name);
 

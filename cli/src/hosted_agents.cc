@@ -49,6 +49,11 @@ std::string HostedAgents::ReportJson() const {
   if (python_) return python_->ReportJson();
   nlohmann::ordered_json report;
   report["bad_messages"] = cpp_->bad_messages().per_channel();
+  nlohmann::ordered_json first = nlohmann::ordered_json::object();
+  for (const auto& [channel, bad] : cpp_->bad_messages().first()) {
+    first[channel] = (bad.step >= 0 ? "step " + std::to_string(bad.step) + ": " : "") + bad.reason;
+  }
+  report["bad_message_first"] = first;
   nlohmann::json other_runs = nlohmann::json::array();
   for (int64_t run_id : cpp_->follower().other_runs()) other_runs.push_back(lcm::RunIdText(run_id));
   report["other_runs"] = other_runs;

@@ -3,6 +3,7 @@
 #include <csignal>
 #include <chrono>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <set>
 #include <thread>
@@ -51,6 +52,7 @@ int MergeAgentReports(const std::string& out_dir, int num_robots, int sim_exit) 
     return sim_exit;
   }
   nlohmann::ordered_json bad = nlohmann::ordered_json::object();
+  std::map<std::string, std::string> first_bad;  // channel -> the first agent's first refusal there
   std::set<std::string> other_runs;
   long long out_of_sequence = 0;
   long long refused = 0;
@@ -64,6 +66,12 @@ int MergeAgentReports(const std::string& out_dir, int num_robots, int sim_exit) 
         const long long n = count.get<long long>();
         bad[channel] = (bad.contains(channel) ? bad[channel].get<long long>() : 0) + n;
         refused += n;
+      }
+      if (report.contains("bad_message_first")) {
+        for (const auto& [channel, what] : report.at("bad_message_first").items()) {
+          if (!what.is_string()) continue;
+          first_bad.emplace(channel, what.get<std::string>() + " (the agent of robot " + std::to_string(robot) + ")");
+        }
       }
       for (const auto& run : report.at("other_runs")) other_runs.insert(run.get<std::string>());
       out_of_sequence += report.at("steps_out_of_sequence").get<long long>();
@@ -80,6 +88,18 @@ int MergeAgentReports(const std::string& out_dir, int num_robots, int sim_exit) 
   int exit_code = sim_exit;
   if (refused > 0 || !other_runs.empty() || out_of_sequence > 0) {
     std::string problem = "the agents refused " + std::to_string(refused) + " message(s)";
+    // Which channels, how many, and what the first refusal was: forged world
+    // messages and a flaky link read differently.
+    int named = 0;
+    for (const auto& [channel, count] : bad.items()) {
+      if (named++ == 3) {
+        problem += "; ...";
+        break;
+      }
+      problem += (named == 1 ? ": " : "; ") + channel + ": " + std::to_string(count.get<long long>());
+      const auto first = first_bad.find(channel);
+      if (first != first_bad.end()) problem += ", first refused: " + first->second;
+    }
     if (!other_runs.empty()) problem += ", heard " + std::to_string(other_runs.size()) + " other run(s)";
     if (out_of_sequence > 0) problem += ", ignored " + std::to_string(out_of_sequence) + " step(s) out of sequence";
     summary["verdict_reasons"].push_back({{"rule", "agent_bad_messages"},

@@ -15,10 +15,34 @@ namespace {
 // The files a run and the commands on it write into its folder (run, import,
 // check-submission, render and compare without --out): --overwrite removes
 // them all, so none of the earlier run's can pass for the new one's.
-constexpr const char* kRunFiles[] = {"run.lcmlog",       "summary.json",    "trajectories.png", "trajectories.svg",
-                                     "run.mp4",          "run.gif",         "metrics.png",      "comparison.json",
-                                     "comparison.png",   "check.json",      "check_report.json",
+constexpr const char* kRunFiles[] = {"run.lcmlog",       "run.lcmlog.part", "summary.json",    "trajectories.png",
+                                     "trajectories.svg", "run.mp4",         "run.gif",         "metrics.png",
+                                     "comparison.json",  "comparison.png",  "check.json",      "check_report.json",
                                      "refused.lcmlog"};
+
+// The log a run leaves when it is killed before it ends (kill -9, a power
+// cut): every event up to its last flush, the last one possibly cut. It is
+// a run's data, so a folder holding one holds a run (a rerun truncated it).
+constexpr const char* kUnfinishedLog = "run.lcmlog.part";
+
+bool IsFile(const fs::path& path) {
+  std::error_code error;
+  return fs::is_regular_file(path, error);
+}
+
+// Why `dir`, which HoldsRun, cannot be written without --overwrite.
+std::string HeldRun(const std::string& dir) {
+  const fs::path part = fs::path(dir) / kUnfinishedLog;
+  if (IsFile(fs::path(dir) / "run.lcmlog") || IsFile(fs::path(dir) / "summary.json") || !IsFile(part)) {
+    return "--out " + dir + " already holds a run (run.lcmlog or summary.json); pass --overwrite to replace it, or "
+           "another --out";
+  }
+  std::error_code error;
+  const uintmax_t bytes = fs::file_size(part, error);
+  return "--out " + dir + " holds " + part.string() + (error ? "" : " (" + std::to_string(bytes) + " bytes)") +
+         ", the log of a run that did not end (killed?), every event it wrote until then. To keep it, move it out "
+         "of the folder; --overwrite deletes it; or choose another --out";
+}
 
 void RemoveEarlierRun(const std::string& dir) {
   for (const char* name : kRunFiles) {
@@ -33,9 +57,8 @@ void RemoveEarlierRun(const std::string& dir) {
 bool RunFolderChoice::HoldsRun(const std::string& dir) {
   // Files only: anything else by those names is no run's output (and the
   // run will fail to write there, saying so).
-  std::error_code error;
-  return fs::is_regular_file(fs::path(dir) / "run.lcmlog", error) ||
-         fs::is_regular_file(fs::path(dir) / "summary.json", error);
+  return IsFile(fs::path(dir) / "run.lcmlog") || IsFile(fs::path(dir) / "summary.json") ||
+         IsFile(fs::path(dir) / kUnfinishedLog);
 }
 
 RunFolderChoice::RunFolderChoice(const std::string& out, const std::string& default_dir, bool overwrite,
@@ -44,10 +67,7 @@ RunFolderChoice::RunFolderChoice(const std::string& out, const std::string& defa
     // Locked before its run is looked at or removed: a run writing it refuses this one.
     if (fs::is_directory(out)) sim::OutputFolderLock::HoldUntilExit(out);
     if (HoldsRun(out)) {
-      if (!overwrite) {
-        throw std::runtime_error("--out " + out + " already holds a run (run.lcmlog or summary.json); pass " +
-                                 "--overwrite to replace it, or another --out");
-      }
+      if (!overwrite) throw std::runtime_error(HeldRun(out));
       spdlog::info("--overwrite: replacing the run in {}", out);
       RemoveEarlierRun(out);
     }

@@ -13,6 +13,8 @@ namespace dream::cli {
 ///  - with --overwrite, the folder (given or default) even when it holds a
 ///    run, whose run.lcmlog, summary.json and trajectories.png are removed
 ///    first so they cannot pass for the new run's.
+/// A run killed before it ended leaves run.lcmlog.part: that folder holds a
+/// run too (its log is refused to a rerun, not truncated by it).
 /// The chosen folder is created (a default one with its parents, a given
 /// one only when its parent exists, as sim::OutputFolder does), or with
 /// kLater only a default folder's parents: for a command that checks its
@@ -26,7 +28,8 @@ class RunFolderChoice {
   RunFolderChoice(const std::string& out, const std::string& default_dir, bool overwrite,
                   Create create = Create::kNow);
 
-  /// True when `dir` holds a run's outputs: a file run.lcmlog or summary.json.
+  /// True when `dir` holds a run's outputs: a file run.lcmlog, summary.json
+  /// or run.lcmlog.part (a run that did not end).
   static bool HoldsRun(const std::string& dir);
 
   /// The folder to write into.

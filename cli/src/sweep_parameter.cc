@@ -1,5 +1,6 @@
 #include "sweep_parameter.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace dream::cli {
@@ -38,18 +39,37 @@ std::vector<std::string> SplitTopLevel(const std::string& text, const std::strin
   return parts;
 }
 
+// `text` for a message: a control byte (a terminal would act on it) as \xHH.
+std::string Shown(const std::string& text) {
+  static const char kHex[] = "0123456789abcdef";
+  std::string shown;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte != 0x7f) {
+      shown += c;
+    } else {
+      shown += std::string("\\x") + kHex[byte >> 4] + kHex[byte & 0xf];
+    }
+  }
+  return shown;
+}
+
 }  // namespace
 
 SweepParameter SweepParameter::ParseAssignment(const std::string& text, const std::string& expected) {
-  const std::string option = "--set " + text;
+  const std::string option = "--set " + Shown(text);
   const size_t equals = text.find('=');
   if (equals == std::string::npos) throw std::invalid_argument(option + ": expected " + expected);
   SweepParameter parameter;
   parameter.key = Trim(text.substr(0, equals));
   if (parameter.key.empty()) throw std::invalid_argument(option + ": the key before '=' is empty");
-  if (parameter.key.find_first_of(" \t") != std::string::npos || parameter.key.front() == '.' ||
-      parameter.key.back() == '.' || parameter.key.find("..") != std::string::npos) {
-    throw std::invalid_argument(option + ": '" + parameter.key +
+  // Printable ASCII only: a config's keys are names, and a control byte or
+  // NUL in a new key would make the run folder's config.yaml unreadable.
+  const bool printable = std::all_of(parameter.key.begin(), parameter.key.end(),
+                                     [](char c) { return c > ' ' && c < 0x7f; });
+  if (!printable || parameter.key.front() == '.' || parameter.key.back() == '.' ||
+      parameter.key.find("..") != std::string::npos) {
+    throw std::invalid_argument(option + ": '" + Shown(parameter.key) +
                                 "' is not a dotted key like controller.sensors.0.noise_std");
   }
   parameter.values = SplitTopLevel(text.substr(equals + 1), option);
@@ -62,7 +82,7 @@ SweepParameter SweepParameter::ParseAssignment(const std::string& text, const st
 SweepParameter SweepParameter::Parse(const std::string& text) {
   SweepParameter parameter =
       ParseAssignment(text, "KEY=V1,V2,... such as controller.max_speed_mps=0.1,0.2");
-  const std::string option = "--set " + text;
+  const std::string option = "--set " + Shown(text);
   if (parameter.key == "seed") throw std::invalid_argument(option + ": seeds are swept with --seeds, not --set");
   if (parameter.key == "name") throw std::invalid_argument(option + ": the sweep names each run itself");
   return parameter;

@@ -15,6 +15,7 @@ void BadMessageLog::Report(const std::string& channel, const std::string& reason
   }
   const long seen = ++entry->second;
   ++total_;
+  if (seen == 1) first_[entry->first] = First{reason.substr(0, kMaxReasonBytes), step_};
   if (sender_agent_id) {
     std::set<int64_t>& senders = senders_[entry->first];
     if (senders.size() < kMaxSendersPerChannel) senders.insert(*sender_agent_id);

@@ -74,6 +74,66 @@ TEST(ConfigOverride, UnknownKeysAndIndicesAreErrorsNamingThem) {
   EXPECT_NE(ErrorOf("controller.max_speed_mps", "[0.1").find("is not valid YAML"), std::string::npos);
 }
 
+/// A flow list holding anchors a0..a<levels-1>, each ten aliases of the one
+/// before (a0 ten x's), then `extra` more aliases of the last: values that
+/// double as a "billion laughs" when `levels` is large.
+std::string Laughs(int levels, int extra) {
+  std::string text = "[&a0 [x, x, x, x, x, x, x, x, x, x]";
+  for (int i = 1; i < levels; ++i) {
+    text += ", &a" + std::to_string(i) + " [";
+    for (int k = 0; k < 10; ++k) text += (k ? ", *a" : "*a") + std::to_string(i - 1);
+    text += "]";
+  }
+  for (int k = 0; k < extra; ++k) text += ", *a" + std::to_string(levels - 1);
+  return text + "]";
+}
+
+TEST(ConfigOverride, AValueHasTheLimitsOfAConfigFile) {
+  // Before: copying a value that contains itself overflowed the stack (SIGSEGV).
+  EXPECT_EQ(ErrorOf("controller.goals", "&a [*a]"),
+            "--set controller.goals:1: [0]: contains itself through an alias (*); write the value out instead");
+  // Before: a 300-byte value took 36 s and 3.9 GB, then std::bad_alloc.
+  const std::string laughs = ErrorOf("controller.goals", Laughs(10, 0));
+  EXPECT_NE(laughs.find("--set controller.goals:1: "), std::string::npos) << laughs;
+  EXPECT_NE(laughs.find("aliases (*) expand this value to more than 1000000 values"), std::string::npos) << laughs;
+  // Nesting counts from the top of the config: 2 levels of key and 101 of value.
+  const std::string deep = std::string(101, '[') + std::string(101, ']');
+  EXPECT_EQ(ErrorOf("controller.goals", deep),
+            "--set controller.goals: the value would nest the config 102 levels deep; at most 100");
+  EXPECT_EQ(ErrorOf("controller.goals", std::string(98, '[') + std::string(98, ']')), "(no error)");
+  EXPECT_EQ(ErrorOf("controller.goals", "{a: 1, a: 2}"),
+            "--set controller.goals:1: a: duplicate key; first given at line 1");
+  EXPECT_NE(ErrorOf("name", std::string(config::ConfigNode::kMaxFileBytes + 1, 'x')).find("at most 16777216"),
+            std::string::npos);
+}
+
+TEST(ConfigOverride, TheConfigWithTheValueStaysWithinAConfigFilesLimit) {
+  // The file's aliases expand to 969,133 values (a file may: up to 1,000,000).
+  YAML::Node root = YAML::Load(std::string(kConfig) + "big: " + Laughs(5, 7) + "\nbig2: " + Laughs(4, 5) + "\n");
+  ApplyConfigOverride(root, "controller.a", Laughs(3, 0), "demo.yaml");  // 1,234 more: allowed
+  EXPECT_EQ(root["controller"]["a"].size(), 3u);
+  try {
+    ApplyConfigOverride(root, "controller.b", Laughs(4, 7), "demo.yaml");  // 90,122 more: not
+    FAIL() << "a config past 1,000,000 values was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("--set controller.b: the config ("), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("and this value (90122 values once its aliases are expanded) exceed "
+                                         "1000000 values"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(ConfigOverride, AValueIsCopiedSoItsExpansionIsBounded) {
+  // 101,233 values once expanded, from 300 bytes: a file may hold that (it
+  // shares the nodes), a --set value is copied (it took 2.8 s and 440 MB at
+  // 900,000 values; found by fuzzing).
+  EXPECT_EQ(ErrorOf("controller.goals", Laughs(4, 8)),
+            "--set controller.goals: the value holds 101233 values once its aliases are expanded; a --set value may "
+            "hold at most 100000 (it is copied into the config; put a larger value in the config file)");
+  EXPECT_EQ(ErrorOf("controller.goals", Laughs(4, 7)), "(no error)");  // 90,122
+}
+
 TEST(ConfigOverride, AMisspeltNewLastKeyIsCaughtByTheConfigCheck) {
   // (The controller section's keys are checked by the agents' factory, which
   // the integration test exercises; the top level by LoadRunConfig.)
@@ -132,6 +192,13 @@ TEST(SweepParameter, BadTextIsAnErrorNamingTheOption) {
   EXPECT_NE(error_of("controller.max_speed_mps").find("expected KEY=V1,V2"), std::string::npos);
   EXPECT_NE(error_of("=1,2").find("the key before '=' is empty"), std::string::npos);
   EXPECT_NE(error_of("a..b=1").find("is not a dotted key"), std::string::npos);
+  // A control byte (or NUL, through the library) in a key would make the run folder's config.yaml
+  // unreadable (found by fuzzing); the message shows it escaped.
+  EXPECT_EQ(error_of("controller.max\x01r=4"),
+            "--set controller.max\\x01r=4: 'controller.max\\x01r' is not a dotted key like controller.sensors.0.noise_std");
+  EXPECT_NE(error_of(std::string("controller.max\0r=4", 18)).find("'controller.max\\x00r' is not a dotted key"),
+            std::string::npos);
+  EXPECT_NE(error_of("controller.m\xa1x=4").find("is not a dotted key"), std::string::npos);
   EXPECT_NE(error_of("a.b=1,,2").find("empty value"), std::string::npos);
   EXPECT_NE(error_of("a.b=").find("empty value"), std::string::npos);
   EXPECT_NE(error_of("a.b=[1,2").find("unclosed"), std::string::npos);

@@ -4,9 +4,13 @@
 #include "dream/config/config_node.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
 
+#include "../support/scratch_folder.h"
 #include "dream/config/run_config.h"
 
 namespace dream::config {
@@ -123,6 +127,38 @@ TEST(ConfigNodeTest, NestingIsBounded) {
   EXPECT_NE(ParseError(deep).find("nested more than 100 levels deep"), std::string::npos) << ParseError(deep);
   const std::string fine = "a: " + std::string(ConfigNode::kMaxDepth - 1, '[') + std::string(ConfigNode::kMaxDepth - 1, ']');
   EXPECT_EQ(ParseError(fine), "");
+}
+
+/// The ConfigError message of ConfigNode::ReadFile(path), or "" if it reads.
+std::string ReadFileError(const std::string& path) {
+  try {
+    ConfigNode::ReadFile(path);
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ConfigNodeTest, OnlyARegularFileOfBoundedSizeIsReadAsAConfig) {
+  testing::ScratchFolder folder("config_read_file");
+  const std::string fifo = (folder.path() / "config.yaml").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  // Before: opening the FIFO waited for a writer forever (this test hung).
+  EXPECT_EQ(ReadFileError(fifo), fifo + ": is a FIFO (named pipe), not a config file; give the path of a YAML file");
+  // Before: read 2 GB, then std::bad_alloc.
+  EXPECT_EQ(ReadFileError("/dev/zero"), "/dev/zero: is a character device, not a config file; give the path of a YAML file");
+  EXPECT_EQ(ReadFileError(folder.path().string()),
+            folder.path().string() + ": is a folder, not a config file; give the path of a YAML file");
+  const std::string large = (folder.path() / "large.yaml").string();
+  std::ofstream(large) << "name: x\n";
+  std::filesystem::resize_file(large, ConfigNode::kMaxFileBytes + 1);  // sparse: no disk used
+  EXPECT_EQ(ReadFileError(large), large + ": the config file is 16777217 bytes; a config holds at most 16777216 bytes "
+                                          "(is this the right file?)");
+  std::filesystem::resize_file(large, ConfigNode::kMaxFileBytes);
+  EXPECT_EQ(ConfigNode::ReadFile(large).size(), ConfigNode::kMaxFileBytes);
+  const std::string missing = (folder.path() / "missing.yaml").string();
+  EXPECT_EQ(ReadFileError(missing), missing + ": cannot open the config file: No such file or directory (does it "
+                                              "exist and is it readable?)");
 }
 
 TEST(ConfigNodeTest, EveryScalarReaderNamesFileLineKeyAndWhatItGot) {

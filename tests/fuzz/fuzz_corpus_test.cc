@@ -69,5 +69,7 @@ TEST(FuzzCorpusTest, RunConfigsAndTheShippedOnes) {
   EXPECT_GE(shipped, 6u);
 }
 
+TEST(FuzzCorpusTest, SetOverrides) { EXPECT_GE(Replay("set_override", SetOverrideTarget), 4u); }
+
 }  // namespace
 }  // namespace dream::fuzz

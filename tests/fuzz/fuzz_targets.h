@@ -24,6 +24,11 @@ void LabRowsTarget(const uint8_t* data, size_t size);
 void LcmMessageTarget(const uint8_t* data, size_t size);
 /// A run config's YAML text.
 void RunConfigTarget(const uint8_t* data, size_t size);
+/// `--set KEY=VALUE` arguments, one a line (at most 8), on config/go_to_goal.yaml:
+/// as `dream run` applies them (OverriddenConfig, the run config, the run
+/// folder's config.yaml loaded again and run as RunConfigTarget runs a
+/// config) and as `dream sweep` does (SweepParameter, SweepPlan).
+void SetOverrideTarget(const uint8_t* data, size_t size);
 
 /// Prints "fuzz finding: <what>" and aborts, so libFuzzer keeps the input
 /// and fuzz_corpus_test fails.

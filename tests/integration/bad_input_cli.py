@@ -13,6 +13,7 @@ import json
 import os
 import re
 import shutil
+import struct
 import subprocess
 
 from dreamtest import arguments, check, config_with, fail, main, read_events, require_private_netns
@@ -108,6 +109,39 @@ def test(ctx):
                                     len(event.data).to_bytes(4, "big"), channel, event.data]))
     folder_without_log = ctx.path("folder_without_log")
     os.mkdir(folder_without_log)
+    # A run folder whose log gives robot 0 an infinite x at step 3 (compare printed "inf" distances).
+    inf_run = ctx.path("inf_run")
+    os.mkdir(inf_run)
+    shutil.copyfile(os.path.join(good_run, "config.yaml"), os.path.join(inf_run, "config.yaml"))
+    inf_log = os.path.join(inf_run, "run.lcmlog")
+    with open(inf_log, "wb") as out:
+        for event in read_events(os.path.join(good_run, "run.lcmlog")):
+            data = event.data
+            # robot_poses_t: fingerprint, utime, step (at byte 16), run_id, num_robots, then x[0] at byte 36.
+            if event.channel == "DREAM_POSES" and int.from_bytes(data[16:24], "big") == 3:
+                data = data[:36] + struct.pack(">d", float("inf")) + data[44:]
+            channel = event.channel.encode()
+            out.write(b"".join([(0xEDA1DA01).to_bytes(4, "big"), event.eventnum.to_bytes(8, "big"),
+                                event.utime.to_bytes(8, "big"), len(channel).to_bytes(4, "big"),
+                                len(data).to_bytes(4, "big"), channel, data]))
+    # A config path that is no file: a FIFO (its open waited for a writer forever, deaf to Ctrl-C)
+    # and /dev/zero (read 2 GB, then bad_alloc).
+    fifo = ctx.path("fifo.yaml")
+    os.mkfifo(fifo)
+    # --set values with the aliases a config file may not hold: one that contains itself (copying it
+    # overflowed the stack: SIGSEGV) and ten levels of ten (36 s and 3.9 GB, then bad_alloc).
+    self_alias = "controller.gain=&a [*a]"
+    laughs = "&a0 [x,x,x,x,x,x,x,x,x,x]"
+    for level in range(1, 10):
+        laughs += f", &a{level} [" + ",".join([f"*a{level - 1}"] * 10) + "]"
+    billion_laughs = f"controller.gain=[{laughs}]"
+    # The folder of a run killed by SIGKILL: only its run.lcmlog.part (a rerun used to truncate it).
+    killed_run = ctx.path("killed_run")
+    os.mkdir(killed_run)
+    killed_part = os.path.join(killed_run, "run.lcmlog.part")
+    shutil.copyfile(truncated, killed_part)
+    with open(killed_part, "rb") as f:
+        killed_bytes = f.read()
 
     def where(path, line):
         return f"{path}:{line}:"
@@ -200,6 +234,36 @@ def test(ctx):
          EXIT_INPUT, [ctx.path("refused_out_l2"), "does not exist"], False),
         ("import of a missing result", ["import", ctx.path("no_result.npy"), "--export", good_run, "--out",
          ctx.path("refused_out_i")], EXIT_INPUT, [good_run], False),
+        ("compare with a pose that is not finite", ["compare", good_run, inf_run, "--out", ctx.path("refused_out_inf")],
+         EXIT_INPUT, [inf_log + ": robot 0's pose at step 3 is not finite (x inf"], False),
+        # Export named no file here ("ViolationChecker::Check: step 3: robot 0 has a pose that is not finite").
+        ("export of a run with a pose that is not finite", ["export", inf_run, "--out", ctx.path("refused_out_inf_e")],
+         EXIT_INPUT, [inf_log + ": robot 0's pose at step 3 is not finite (x inf"], False),
+        ("run of a FIFO", ["run", fifo, "--out", ctx.path("refused_out_fifo")], EXIT_INPUT,
+         [fifo, "is a FIFO (named pipe), not a config file"], False),
+        ("sweep of a FIFO", ["sweep", fifo, "--out", ctx.path("refused_out_fifo_sweep")], EXIT_INPUT,
+         [fifo, "is a FIFO (named pipe), not a config file"], False),
+        ("run of /dev/zero", ["run", "/dev/zero", "--out", ctx.path("refused_out_zero")], EXIT_INPUT,
+         ["/dev/zero: is a character device, not a config file"], False),
+        ("run of /dev/urandom", ["run", "/dev/urandom", "--out", ctx.path("refused_out_urandom")], EXIT_INPUT,
+         ["/dev/urandom: is a character device, not a config file"], False),
+    ] + [
+        (f"{command} --set with an alias to itself", [command, config, "--set", self_alias] + out, EXIT_INPUT,
+         ["--set controller.gain:1: [0]: contains itself through an alias (*)"], False)
+        for command, out in (("run", ["--out", ctx.path("refused_out_alias_run")]),
+                             ("sim", ["--out", ctx.path("refused_out_alias_sim")]),
+                             ("launch", ["--out", ctx.path("refused_out_alias_launch")]),
+                             ("agent", []),
+                             ("sweep", ["--out", ctx.path("refused_out_alias_sweep")]))
+    ] + [
+        (f"{command} --set with a billion laughs", [command, config, "--set", billion_laughs] + out, EXIT_INPUT,
+         ["--set controller.gain:1: ", "aliases (*) expand this value to more than 1000000 values"], False)
+        for command, out in (("run", ["--out", ctx.path("refused_out_laughs_run")]),
+                             ("sweep", ["--out", ctx.path("refused_out_laughs_sweep")]))
+    ] + [
+        ("run into the folder of a killed run", ["run", config, "--out", killed_run], EXIT_INPUT,
+         [f"--out {killed_run} holds {killed_part} ({len(killed_bytes)} bytes), the log of a run that did not end",
+          "move it out of the folder", "--overwrite deletes it"], False),
     ]
 
     problems = []
@@ -229,6 +293,15 @@ def test(ctx):
         if any(os.path.exists(root) for root in refused_roots):
             problems.append(f"{name}: the refused command created its output folder")
         print(f"{name}: exit {code}: {first}")
+
+    # The killed run's log is as it was; --overwrite replaces it, as it replaces a finished run.
+    with open(killed_part, "rb") as f:
+        if f.read() != killed_bytes:
+            problems.append("run into the folder of a killed run: its run.lcmlog.part was changed")
+    code, text = ctx.run([dream, "-q", "run", config, "--out", killed_run, "--overwrite", "--steps", "5"], timeout=60)
+    if code != 0 or os.path.exists(killed_part) or not os.path.exists(os.path.join(killed_run, "run.lcmlog")):
+        problems.append(f"run --overwrite into the folder of a killed run: exit {code}, .part left: "
+                        f"{os.path.exists(killed_part)}: {text.strip()[-300:]}")
 
     # A folder name that is not UTF-8 (Latin-1 "r\xe9un") is no reason to lose an output:
     # comparison.json holds U+FFFD for the byte, the picture a '?'.

@@ -125,8 +125,12 @@ def test(ctx):
     for channel in ["DREAM_POSES", "DREAM_STATUS", "DREAM_OBSTACLES", "DREAM_RADIO_3", "DREAM_RADIO_1000"]:
         check(agents_bad.get(channel, 0) >= 8, f"summary.json agents.bad_messages does not count {channel} "
                                                f"for every agent: {agents_bad.get(channel)}")
-    check(any(r["rule"] == "agent_bad_messages" for r in summary["verdict_reasons"]),
-          f"the agents' refusals are not a verdict reason: {summary['verdict_reasons']}")
+    agent_reasons = [r for r in summary["verdict_reasons"] if r["rule"] == "agent_bad_messages"]
+    check(agent_reasons, f"the agents' refusals are not a verdict reason: {summary['verdict_reasons']}")
+    # The reason says on which channels, how many, and what was refused first (not only a count).
+    problem = agent_reasons[0]["problem"] if agent_reasons else ""
+    check(any(f"{channel}: " in problem for channel in agents_bad) and "first refused: " in problem
+          and "(the agent of robot " in problem, f"the agents' reason does not say what was refused: {problem}")
     # The last verdict printed is the one summary.json holds, the agents' reports included.
     verdicts = [line for line in output.splitlines() if line.startswith("verdict: ")]
     check(verdicts and verdicts[-1].startswith(f"verdict: {summary['verdict']} (with the agents' reports"),

@@ -50,6 +50,7 @@ TEST(RunJudgeTest, EachThingThatWentWrongOnTheBusIsAReason) {
   run.outcome.robot_faults = {{2, "step 7: ctl.py:3: in update: ValueError: x"}};
   run.outcome.command_conflicts = 4;
   run.outcome.bad_messages = {{"DREAM_CMD_0", 2}, {"DREAM_POSES", 1}};
+  run.outcome.bad_message_first = {{"DREAM_CMD_0", "step 12: rejected command: answers step 13 but the world is at step 12"}};
   run.outcome.handler_failures = 1;
   run.outcome.dropped_messages = 12;
   const RunJudgement judgement = JudgeRun(run.config, run.outcome, run.world);
@@ -63,7 +64,10 @@ TEST(RunJudgeTest, EachThingThatWentWrongOnTheBusIsAReason) {
   EXPECT_THAT(Find(judgement, "command_conflicts")->problem, HasSubstr("4 commands"));
   ASSERT_NE(Find(judgement, "bad_messages"), nullptr);
   EXPECT_THAT(Find(judgement, "bad_messages")->problem, HasSubstr("3 undecodable or refused messages"));
-  EXPECT_THAT(Find(judgement, "bad_messages")->problem, HasSubstr("DREAM_CMD_0 (2)"));
+  // What was refused, on which channel, how many, and from which step (it said only how many per channel).
+  EXPECT_THAT(Find(judgement, "bad_messages")->problem,
+              HasSubstr("DREAM_CMD_0: 2, the first at step 12: rejected command: answers step 13 but the world is at "
+                        "step 12; DREAM_POSES: 1"));
   EXPECT_NE(Find(judgement, "handler_failures"), nullptr);
   ASSERT_NE(Find(judgement, "dropped_messages"), nullptr);
   EXPECT_THAT(Find(judgement, "dropped_messages")->problem, HasSubstr("12 messages were dropped"));

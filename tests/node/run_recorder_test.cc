@@ -47,6 +47,33 @@ TEST_F(RunRecorderTest, LogAppearsOnlyWhenClosedAndHoldsEveryEvent) {
   EXPECT_EQ(records[4].utime, 4 * 33000);
 }
 
+TEST_F(RunRecorderTest, AFolderRemovedAndMadeAgainDuringTheRunKeepsTheNewerRunsLog) {
+  // Run A's folder is removed while A runs, made again, and run B records there.
+  const fs::path folder = dir_ / "run";
+  fs::create_directory(folder);
+  const std::string path = (folder / "run.lcmlog").string();
+  RunRecorder older(path, 1);
+  const char data[] = "abc";
+  older.Write("A", 0, data, 3);
+  fs::remove_all(folder);
+  fs::create_directory(folder);
+  RunRecorder newer(path, 1);
+  newer.Write("B", 0, data, 3);
+  newer.Write("B", 33000, data, 3);
+  // Before: A's Close renamed B's .part (by its path) to run.lcmlog while B still wrote it.
+  try {
+    older.Close();
+    FAIL() << "the older run renamed a file it did not write";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("is no longer the file this run wrote"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(fs::exists(path + ".part"));
+  EXPECT_FALSE(fs::exists(path));
+  newer.Close();
+  ASSERT_EQ(lcm::LogReader::ReadAll(path).size(), 2u);
+  EXPECT_EQ(lcm::LogReader::ReadAll(path)[0].channel, "B");
+}
+
 TEST_F(RunRecorderTest, UnwritableFolderIsAClearError) {
   try {
     RunRecorder recorder((dir_ / "missing" / "run.lcmlog").string());
@@ -224,7 +251,7 @@ TEST_F(RunRecorderTest, RefusedMessagesStayOutOfTheRunLogAndAreKeptApartBounded)
     if (reason.rule != "bad_messages") continue;
     said = true;
     EXPECT_EQ(reason.verdict, RunVerdict::kNotReady);
-    EXPECT_NE(reason.problem.find("DREAM_APPLIED (1, first at step 3)"), std::string::npos) << reason.problem;
+    EXPECT_NE(reason.problem.find("DREAM_APPLIED: 1, the first at step 3"), std::string::npos) << reason.problem;
     EXPECT_NE(reason.find_out.find(refused_path), std::string::npos) << reason.find_out;
   }
   EXPECT_TRUE(said);

@@ -119,6 +119,10 @@ TEST_F(SimNodeTest, NonFiniteAndAbsurdCommandsAreRejectedAndTheRobotHoldsStill) 
   // Robot 0 moved on 7 of 10 steps.
   EXPECT_NEAR(world_.poses()[0].x_m, -1.0 + 7 * 0.033 * 0.1, 1e-12);
   EXPECT_EQ(outcome.bad_messages.at("DREAM_CMD_0"), 3);
+  // What the first refusal was and at which step, for the verdict's reason.
+  ASSERT_EQ(outcome.bad_message_first.count("DREAM_CMD_0"), 1u);
+  EXPECT_EQ(outcome.bad_message_first.at("DREAM_CMD_0").rfind("step 5: rejected command: ", 0), 0u)
+      << outcome.bad_message_first.at("DREAM_CMD_0");
 }
 
 TEST_F(SimNodeTest, CommandsForUnknownRobotsAndGarbageAreCountedNotFatal) {

@@ -18,6 +18,8 @@
 #include "dream/agent_host/agent_host.h"
 #include "dream/config/run_config.h"
 #include "dream/lcm/lcm_bus.h"
+#include "dream/lcm/channels.h"
+#include "dream/robot_poses_t.hpp"
 #include "dream/node/file_text.h"
 #include "dream/session/run_session.h"
 #include "../support/scratch_folder.h"
@@ -72,6 +74,35 @@ class RunSessionTest : public ::testing::Test {
   const fs::path dir_ = folder_.path();
   std::ostringstream report_;
 };
+
+TEST_F(RunSessionTest, AFolderRemovedAndMadeAgainDuringTheRunIsLeftToTheNewerRun) {
+  RunSession::Options options;
+  options.report = &report_;
+  RunSession session(config::LoadRunConfigFile(WriteConfig(0.1, 1.0, 30)), options);
+  ASSERT_NE(session.factory(), nullptr) << session.factory_error();
+  lcm::LcmBus bus("memq://");
+  std::vector<std::unique_ptr<agents::RobotAgent>> robots;
+  for (int id = 0; id < session.config().num_robots; ++id) robots.push_back(session.factory()->Make(id));
+  agents::AgentHost host(bus, std::move(robots), 77);
+  // At step 5 the folder is removed and made again, and a newer run writes there.
+  bus.Subscribe(lcm::kPosesChannel, [this](const std::string&, const void* data, int size) {
+    robot_poses_t poses;
+    if (poses.decode(data, 0, size) < 0 || poses.step != 5 || fs::exists(out() + "/summary.json")) return;
+    fs::remove_all(out());
+    fs::create_directories(out());
+    std::ofstream(out() + "/run.lcmlog.part") << "the newer run's log";
+    std::ofstream(out() + "/summary.json") << "the newer run's summary";
+  });
+  const RunResult result = session.Run(bus, {out(), "the folder's config\n"});
+  EXPECT_EQ(result.outcome.end, sim::RunOutcome::End::kFailed);
+  EXPECT_THAT(result.outcome.reason, HasSubstr("is no longer the file this run wrote"));
+  EXPECT_FALSE(result.summary_written);
+  // Before: the older run renamed the newer run's .part and wrote its summary and picture over the newer's.
+  EXPECT_EQ(sim::ReadFileText(out() + "/run.lcmlog.part"), "the newer run's log");
+  EXPECT_EQ(sim::ReadFileText(out() + "/summary.json"), "the newer run's summary");
+  EXPECT_FALSE(fs::exists(out() + "/run.lcmlog"));
+  EXPECT_FALSE(fs::exists(out() + "/trajectories.png"));
+}
 
 TEST_F(RunSessionTest, WritesEveryOutputAndBuildsTheFactoryOnce) {
   const int built_before = FactoriesBuilt();

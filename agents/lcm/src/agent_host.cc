@@ -204,7 +204,10 @@ void AgentHost::OnPoses(const std::string& channel, const robot_poses_t& poses) 
   const WorldFollower::StepDecision decision = follower_.OnPoses(poses.run_id, poses.step);
   if (decision == WorldFollower::StepDecision::kIgnore) return;
   saw_poses_since_check_ = true;  // only the followed run's steps keep this host waiting
-  if (decision == WorldFollower::StepDecision::kNewStep) TakePoses(poses, &world_);
+  if (decision == WorldFollower::StepDecision::kNewStep) {
+    TakePoses(poses, &world_);
+    bad_messages_.set_step(poses.step);  // kept with each channel's first refusal
+  }
   if (joining) {
     if (obstacles_run_id_ != poses.run_id) world_.obstacles.clear();
     for (const auto& [radio_channel, radio] : radio_before_joining_) {

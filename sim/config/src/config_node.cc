@@ -1,10 +1,15 @@
 #include "dream/config/config_node.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <yaml-cpp/eventhandler.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <chrono>
 #include <cmath>
-#include <fstream>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -13,6 +18,9 @@
 
 namespace dream::config {
 namespace {
+
+// A config file is small and local: reading it never takes this long.
+constexpr std::chrono::seconds kReadTimeout{10};
 
 // What a message says a value is: "'text'", "a list", "a mapping".
 std::string Describe(const YAML::Node& node) {
@@ -72,13 +80,10 @@ class TreeCheck {
  public:
   explicit TreeCheck(const std::string& file) : file_(file) {}
 
-  void Run(const YAML::Node& root) { Visit(root, "", 0); }
+  ConfigNode::Extent Run(const YAML::Node& root) { return Visit(root, "", 0); }
 
  private:
-  struct Extent {
-    size_t values = 1;  // nodes once aliases are expanded
-    int height = 0;     // levels below this node once expanded
-  };
+  using Extent = ConfigNode::Extent;
 
   [[noreturn]] void Fail(const YAML::Node& node, const std::string& key, const std::string& message) const {
     ConfigNode(node, file_, key).Fail(message);
@@ -121,7 +126,10 @@ class TreeCheck {
       }
     }
     open_.pop_back();
-    walked_[node.Mark().pos].emplace_back(node, extent);
+    // A node made in code (a --set value's copy) has no position; only the
+    // parser's nodes can be reached again through an alias, so those made in
+    // code are not kept (they would all share one bucket).
+    if (node.Mark().pos >= 0) walked_[node.Mark().pos].emplace_back(node, extent);
     return extent;
   }
 
@@ -150,11 +158,55 @@ class TreeCheck {
 ConfigNode ConfigNode::LoadFile(const std::string& path) { return LoadString(ReadFile(path), path); }
 
 std::string ConfigNode::ReadFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ConfigError(path + ": cannot open the config file (does it exist and is it readable?)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  // Non-blocking: opening a FIFO for reading would otherwise wait for a
+  // writer, deaf to Ctrl-C; what the path is, is then asked of the opened
+  // descriptor, so it cannot change between the check and the read.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+  if (fd < 0) {
+    throw ConfigError(path + ": cannot open the config file: " + std::strerror(errno) +
+                      " (does it exist and is it readable?)");
+  }
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  struct stat status {};
+  if (::fstat(fd, &status) != 0) throw ConfigError(path + ": cannot read the config file: " + std::strerror(errno));
+  if (!S_ISREG(status.st_mode)) {
+    const char* kind = S_ISDIR(status.st_mode)    ? "a folder"
+                       : S_ISFIFO(status.st_mode) ? "a FIFO (named pipe)"
+                       : S_ISCHR(status.st_mode)  ? "a character device"
+                       : S_ISBLK(status.st_mode)  ? "a block device"
+                       : S_ISSOCK(status.st_mode) ? "a socket"
+                                                  : "not a regular file";
+    throw ConfigError(path + ": is " + std::string(kind) + ", not a config file; give the path of a YAML file");
+  }
+  const auto too_large = [&](const std::string& size) {
+    return ConfigError(path + ": the config file is " + size + " bytes; a config holds at most " +
+                       std::to_string(kMaxFileBytes) + " bytes (is this the right file?)");
+  };
+  if (static_cast<uint64_t>(status.st_size) > kMaxFileBytes) throw too_large(std::to_string(status.st_size));
+  // Read to at most one byte past the limit, whatever the size said (a file
+  // may grow, /proc files say 0), and give up past a time limit, checked
+  // between reads (a file on a slow mount; a read the kernel itself holds,
+  // on a hard network mount, is beyond it).
+  std::string text;
+  const auto deadline = std::chrono::steady_clock::now() + kReadTimeout;
+  char buffer[65536];
+  while (true) {
+    const ssize_t got = ::read(fd, buffer, sizeof buffer);
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) throw ConfigError(path + ": cannot read the config file: " + std::strerror(errno));
+    if (got == 0) break;
+    text.append(buffer, static_cast<size_t>(got));
+    if (text.size() > kMaxFileBytes) throw too_large("more than " + std::to_string(kMaxFileBytes));
+    if (std::chrono::steady_clock::now() > deadline) {
+      throw ConfigError(path + ": reading the config file took more than " +
+                        std::to_string(std::chrono::duration_cast<std::chrono::seconds>(kReadTimeout).count()) +
+                        " s; is it on a mount that does not answer?");
+    }
+  }
+  return text;
 }
 
 YAML::Node ConfigNode::ParseYaml(const std::string& text, const std::string& source_name) {
@@ -165,8 +217,12 @@ YAML::Node ConfigNode::ParseYaml(const std::string& text, const std::string& sou
     throw ConfigError(source_name + ":" + std::to_string(e.mark.line + 1) + ": not valid YAML: " + e.msg);
   }
   RejectSecondDocument(text, source_name);
-  TreeCheck(source_name).Run(root);
+  CheckTree(root, source_name);
   return root;
+}
+
+ConfigNode::Extent ConfigNode::CheckTree(const YAML::Node& root, const std::string& source_name) {
+  return TreeCheck(source_name).Run(root);
 }
 
 ConfigNode ConfigNode::LoadString(const std::string& text, const std::string& source_name) {

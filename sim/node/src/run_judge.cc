@@ -50,24 +50,25 @@ std::vector<VerdictReason> OutcomeReasons(const RunOutcome& outcome) {
   const long bad = std::accumulate(outcome.bad_messages.begin(), outcome.bad_messages.end(), 0L,
                                    [](long sum, const auto& entry) { return sum + entry.second; });
   if (bad > 0) {
+    // What was refused, where, how many and from when: "bad messages" alone
+    // does not tell a typo in a controller from forged traffic.
     std::string channels;
     int named = 0;
     for (const auto& [channel, count] : outcome.bad_messages) {
       if (named++ == 3) {
-        channels += ", ...";
+        channels += "; ...";
         break;
       }
-      channels += (channels.empty() ? "" : ", ") + channel + " (" + std::to_string(count);
-      const auto refused = outcome.refused.find(channel);
-      if (refused != outcome.refused.end()) channels += ", first at step " + std::to_string(refused->second.first_step);
-      channels += ")";
+      channels += (channels.empty() ? "" : "; ") + channel + ": " + std::to_string(count);
+      const auto first = outcome.bad_message_first.find(channel);
+      if (first != outcome.bad_message_first.end()) channels += ", the first at " + first->second;
     }
     reasons.push_back({"bad_messages", RunVerdict::kNotReady,
                        std::to_string(bad) + " undecodable or refused messages were dropped: " + channels,
                        outcome.refused_log.empty()
-                           ? std::string("summary.json bad_messages and bad_message_senders")
-                           : "summary.json bad_messages, bad_message_senders and refused_messages; the first " +
-                                 std::to_string(outcome.refused_log_events) + " as heard: dream log echo " +
+                           ? std::string("summary.json bad_messages, bad_message_first and bad_message_senders")
+                           : "summary.json bad_messages, bad_message_first, bad_message_senders and refused_messages; "
+                             "the first " + std::to_string(outcome.refused_log_events) + " as heard: dream log echo " +
                                  outcome.refused_log});
   }
   if (!outcome.other_worlds.empty()) {

@@ -31,6 +31,16 @@ RunRecorder::RunRecorder(std::string path, int flush_interval_events)
     throw std::runtime_error("cannot create the run log " + part_path_ +
                              ": does the folder exist and is it writable?");
   }
+  struct stat file_status {};
+  if (::fstat(fileno(log_->getFilePtr()), &file_status) == 0) {
+    part_device_ = file_status.st_dev;
+    part_inode_ = file_status.st_ino;
+  }
+}
+
+bool RunRecorder::PartPathHoldsThisLog() const {
+  struct stat at_path {};
+  return ::stat(part_path_.c_str(), &at_path) == 0 && at_path.st_dev == part_device_ && at_path.st_ino == part_inode_;
 }
 
 RunRecorder::~RunRecorder() {
@@ -133,6 +143,15 @@ void RunRecorder::Close() {
   }
   log_.reset();  // fclose writes nothing more: stdio's buffer is flushed or purged
   if (cut_back_failed_) throw std::runtime_error(failure_ + "; the log stays at " + part_path_);
+  // Renamed by the file it is, not by its name: when the folder was removed
+  // and made again while the run went on, the path may hold another run's log.
+  if (!PartPathHoldsThisLog()) {
+    part_replaced_ = true;
+    throw std::runtime_error("the run log " + part_path_ +
+                             " is no longer the file this run wrote (its folder was removed, or the file moved or "
+                             "replaced, while the run went on): not renamed to " + path_ +
+                             ", so whatever is there now is left alone");
+  }
   if (std::rename(part_path_.c_str(), path_.c_str()) != 0) {
     throw std::runtime_error("cannot rename " + part_path_ + " to " + path_ + ": " + ErrorText(errno));
   }

@@ -75,6 +75,7 @@ nlohmann::ordered_json RunSummary(const config::RunConfig& config, const RunOutc
   // Only the file's name: it lies beside the log, as `log` does.
   json["refused_log"] = std::filesystem::path(outcome.refused_log).filename().string();
   json["refused_log_events"] = outcome.refused_log_events;
+  json["bad_message_first"] = outcome.bad_message_first;
   json["handler_failures"] = outcome.handler_failures;
   json["dropped_messages"] = outcome.dropped_messages;
   json["log"] = log_file_name;

@@ -79,6 +79,7 @@ SimNode::SimNode(lcm::LcmInterface& lcm, World& world, RunRecorder* recorder, Si
       run_id_(lcm::NewRunId()) {
   std::string error;
   if (!options_.IsValid(&error)) throw std::invalid_argument("sim options: " + error);
+  bad_messages_.set_step(world_.step());
   // One handler hears everything, so that what each message turned out to be
   // (used or refused) decides where it is recorded.
   lcm_.Subscribe(".*", [this](const std::string& channel, const void* data, int size) {
@@ -461,6 +462,7 @@ void SimNode::AdvanceWorld() {
     }
   }
   world_.Step();
+  bad_messages_.set_step(world_.step());
 }
 
 RunOutcome SimNode::Finish(RunOutcome::End end, const std::string& reason) {
@@ -510,6 +512,9 @@ RunOutcome SimNode::Finish(RunOutcome::End end, const std::string& reason) {
     refused_->Close();
     if (refused_->events_kept() > 0) outcome.refused_log = refused_->path();
     outcome.refused_log_events = refused_->events_kept();
+  }
+  for (const auto& [channel, first] : bad_messages_.first()) {
+    outcome.bad_message_first[channel] = "step " + std::to_string(first.step) + ": " + first.reason;
   }
   outcome.handler_failures = lcm_.handler_failures();
   outcome.dropped_messages = lcm_.dropped_messages();

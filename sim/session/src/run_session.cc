@@ -39,6 +39,9 @@ struct RunSession::Stepped {
   std::unique_ptr<sim::World> world;
   sim::RunOutcome outcome;
   nlohmann::ordered_json world_fields = nlohmann::ordered_json::object();
+  /// The run's folder was removed and made again while it ran (the log's
+  /// .part there is another file): the folder is another run's now.
+  bool folder_replaced = false;
 };
 
 RunSession::RunSession(config::RunConfig config, Options options)
@@ -109,6 +112,7 @@ RunSession::Stepped RunSession::Step(lcm::LcmInterface& lcm, const Folder& folde
       stepped.outcome.reason = e.what();
     }
     stepped.outcome.log_events = recorder.events_written();
+    stepped.folder_replaced = recorder.part_replaced();
   }
   if (given.summary_fields) stepped.world_fields = given.summary_fields(*stepped.world);
   return stepped;
@@ -184,6 +188,13 @@ RunResult RunSession::Report(const Stepped& stepped, const std::string& dir) {
   std::ostream& report = *options_.report;
   RunResult result;
   result.outcome = outcome;
+  if (stepped.folder_replaced) {
+    // Its log, summary and picture there would be another run's, or pass for
+    // them: nothing of this run is written over them.
+    spdlog::error("{}: {}; no summary.json or picture written there either", dir, outcome.reason);
+    report << "failed after " << outcome.steps << " steps: " << outcome.reason << "\n";
+    return result;
+  }
   // Written whatever the outcome: after a failed run it says why, and the
   // log keeps every whole event up to the failure.
   const LogReadBack log(log_path);  // once, for the metrics, the verifier's counts and the picture

@@ -60,7 +60,8 @@ struct RunEnd {
 /// @throws std::runtime_error with the log's flaw (RunLog::Flaw, the status
 ///         counting when `end` is given): a message of the world that does
 ///         not decode, a gap or repeat in the steps, a changing robot count,
-///         no poses.
+///         no poses; or naming the log, robot (or obstacle) and step when a
+///         pose, velocity or obstacle is not finite.
 RunTrack RunTrackOf(const run_log::RunLog& log, RunEnd* end = nullptr);
 
 /// RunTrackOf(run_log::RunLog::Read(log_path), end), for the commands that

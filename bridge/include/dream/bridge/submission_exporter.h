@@ -10,9 +10,11 @@
 namespace dream::bridge {
 
 /// The lab would refuse the run; problems() says why, per rule, robot and step.
+/// what() starts with the run's log file, whose steps the problems count
+/// (a damaged log reads as a refused run: it must say which file).
 class ExportRefused : public std::runtime_error {
  public:
-  explicit ExportRefused(std::vector<ExportProblem> problems);
+  ExportRefused(const std::string& log_file, std::vector<ExportProblem> problems);
   const std::vector<ExportProblem>& problems() const { return problems_; }
 
  private:

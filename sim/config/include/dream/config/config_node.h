@@ -19,8 +19,14 @@ class ConfigNode {
   /// Parses `path`. @throws ConfigError when the file is missing or not YAML.
   static ConfigNode LoadFile(const std::string& path);
   /// The bytes of the config file `path`, unparsed (for those that edit or
-  /// copy it). @throws ConfigError naming it when it cannot be read.
+  /// copy it). Only a regular file of at most kMaxFileBytes is read: it is
+  /// opened without blocking and checked on the opened descriptor, so a FIFO
+  /// cannot hang the command and /dev/zero cannot fill its memory.
+  /// @throws ConfigError naming it when it cannot be read or is refused.
   static std::string ReadFile(const std::string& path);
+  /// The largest config file (or --set value) read: a config of 10,000
+  /// obstacles is under 1 MiB.
+  static constexpr size_t kMaxFileBytes = 16 << 20;
   /// Parses `text` as if it came from `source_name` (tests, embedded configs).
   static ConfigNode LoadString(const std::string& text, const std::string& source_name);
   /// The YAML tree of `text`, refusing what yaml-cpp accepts without a word:
@@ -30,6 +36,15 @@ class ConfigNode {
   /// that edits the tree before reading it (LoadString uses it too).
   /// @throws ConfigError "file:line: key: problem".
   static YAML::Node ParseYaml(const std::string& text, const std::string& source_name);
+  /// A tree's size once aliases are expanded.
+  struct Extent {
+    size_t values = 1;  ///< nodes
+    int height = 0;     ///< levels below the root
+  };
+  /// The checks of ParseYaml on a tree already loaded or edited in code (a
+  /// --set value, a config after --set): its extent when they pass.
+  /// @throws ConfigError "source_name:line: key: problem".
+  static Extent CheckTree(const YAML::Node& root, const std::string& source_name);
   /// Limits on the tree after aliases are expanded: every reader of a config
   /// (the Python controller's JSON, --set) walks it recursively.
   static constexpr size_t kMaxValues = 1000000;

@@ -38,6 +38,8 @@ struct RunOutcome {
   /// Undecodable or refused messages per channel; past lcm::BadMessageLog's
   /// cap the rest are counted under "(other channels)".
   std::map<std::string, long> bad_messages;
+  /// Per channel of bad_messages, the first one: "step k: what was wrong".
+  std::map<std::string, std::string> bad_message_first;
   /// Per channel of bad_messages, the agent ids that sent them (when the messages carry one).
   std::map<std::string, std::set<int64_t>> bad_message_senders;
   /// Messages the world heard and refused (kept out of the run log), per

@@ -56,6 +56,9 @@ class RunRecorder {
 
   /// Flushes, syncs and renames the .part file to the final path; a failed
   /// recorder's log (every whole event before the failure) is renamed too.
+  /// Only the file this recorder created is renamed: when <path>.part is no
+  /// longer it (the folder removed and made again by another run), nothing
+  /// is renamed and Close throws.
   /// Idempotent. @throws std::runtime_error when flushing fails here (the log
   /// is still cut back and renamed), or when the log cannot get its final
   /// name (it then stays at <path>.part).
@@ -68,11 +71,17 @@ class RunRecorder {
   /// Why writing failed, in one line naming the file and the OS error, and
   /// how many whole events the log kept; empty while nothing failed.
   const std::string& failure() const { return failure_; }
+  /// True once Close() found <path>.part no longer the file this recorder
+  /// wrote (its folder removed and made again): what the folder holds now is
+  /// another run's, and nothing of this run may be written over it.
+  bool part_replaced() const { return part_replaced_; }
 
  private:
   /// Cuts the file back to its last whole event on disk, records why in
   /// failure_ and throws it. @param action what failed ("writing", ...).
   [[noreturn]] void Fail(const std::string& action, int error_number);
+  /// True while part_path_ names the file this recorder opened (device and inode).
+  bool PartPathHoldsThisLog() const;
 
   std::string path_;
   std::string part_path_;
@@ -91,6 +100,9 @@ class RunRecorder {
   Rewrite rewrite_;
   bool rewriting_ = false;  // inside rewrite_: its writes go to the log
   bool cut_back_failed_ = false;  // the .part may end mid-event: never renamed
+  uint64_t part_device_ = 0;      // the .part file opened, to rename it by what it is
+  uint64_t part_inode_ = 0;
+  bool part_replaced_ = false;
 };
 
 }  // namespace dream::sim
