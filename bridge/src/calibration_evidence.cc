@@ -4,7 +4,6 @@
 #include <cmath>
 #include <map>
 
-
 namespace dream::bridge {
 namespace {
 
@@ -14,7 +13,6 @@ constexpr size_t kMaxHold = 90;          // and is followed for 3 s at most
 constexpr double kFirstMotionM = 0.003;  // "moving": over 3 mm from the start
 constexpr size_t kMaxTurningSamples = 3000;
 
-bool IsRest(const sim::UnicycleCommand& c) { return std::abs(c.v_mps) < 0.002 && std::abs(c.w_radps) < 0.02; }
 
 struct Start {
   size_t series = 0;
@@ -29,9 +27,9 @@ std::vector<Start> StartsFromRest(const std::vector<CalibrationSeries>& series) 
     const CalibrationSeries& s = series[r];
     for (size_t e = kRestBefore; e + kMinHold < s.steps(); ++e) {
       const sim::UnicycleCommand& c = s.commands[e];
-      if (std::abs(c.v_mps) < 0.02 || std::abs(c.w_radps) > 0.05 || !IsRest(s.commands[e - 1])) continue;
+      if (std::abs(c.v_mps) < 0.02 || std::abs(c.w_radps) > 0.05 || !IsRestCommand(s.commands[e - 1])) continue;
       bool rested = true;
-      for (size_t j = e - kRestBefore; j < e && rested; ++j) rested = IsRest(s.commands[j]);
+      for (size_t j = e - kRestBefore; j < e && rested; ++j) rested = IsRestCommand(s.commands[j]);
       size_t hold = 0;
       while (e + hold < s.steps() && hold < kMaxHold && std::abs(s.commands[e + hold].v_mps - c.v_mps) < 1e-3 &&
              std::abs(s.commands[e + hold].w_radps - c.w_radps) < 1e-2) {

@@ -5,6 +5,7 @@
 
 #include "dream/bridge/calibration_run.h"
 #include "dream/world/pose2.h"
+#include "dream/world/realistic_world.h"
 #include "dream/world/unicycle_command.h"
 
 namespace dream::bridge {
@@ -27,6 +28,9 @@ struct CalibrationSeries {
 
   static std::vector<CalibrationSeries> Of(const std::vector<CalibrationRun>& runs);
 };
+
+// A command to stand still: what the world would not count as moving.
+inline bool IsRestCommand(const sim::UnicycleCommand& command) { return !sim::RealisticWorld::IsMoving(command); }
 
 // Heading difference wrapped to (-pi, pi].
 double WrappedAngle(double radians);

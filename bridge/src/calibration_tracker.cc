@@ -24,9 +24,6 @@ constexpr size_t kLateMargin = 4;
 // The most samples kept for a histogram.
 constexpr size_t kMaxSamples = 20000;
 
-bool IsRestCommand(const sim::UnicycleCommand& command) {
-  return std::abs(command.v_mps) < 0.002 && std::abs(command.w_radps) < 0.02;
-}
 
 bool Settled(const CalibrationSeries& series, size_t k, bool rest) {
   if (k < kSettledSteps) return false;

@@ -12,6 +12,7 @@
 #include "calibration_tracker.h"
 #include "dream/robotarium/robotarium_constants.h"
 #include "dream/world/printf_text.h"
+#include "dream/world/realistic_world.h"
 
 namespace dream::bridge {
 namespace {
@@ -67,14 +68,10 @@ bool AnyMotionCommanded(const std::vector<CalibrationSeries>& series) {
   return false;
 }
 
-double LongestPath(const std::vector<CalibrationSeries>& series) {
+double LargestExtent(const std::vector<CalibrationSeries>& series) {
   double longest = 0;
   for (const CalibrationSeries& s : series) {
-    double path = 0;
-    for (size_t k = 1; k < s.steps(); ++k) {
-      path += std::hypot(s.poses[k].x_m - s.poses[k - 1].x_m, s.poses[k].y_m - s.poses[k - 1].y_m);
-    }
-    // Noise alone walks too: measure net extent instead of path length.
+    // Noise alone walks too: the net extent, not the path length.
     double min_x = s.poses[0].x_m, max_x = min_x, min_y = s.poses[0].y_m, max_y = min_y;
     for (const sim::Pose2& p : s.poses) {
       min_x = std::min(min_x, p.x_m);
@@ -83,7 +80,6 @@ double LongestPath(const std::vector<CalibrationSeries>& series) {
       max_y = std::max(max_y, p.y_m);
     }
     longest = std::max(longest, std::hypot(max_x - min_x, max_y - min_y));
-    (void)path;
   }
   return longest;
 }
@@ -121,39 +117,20 @@ Population PopulationOf(const std::vector<double>& values, const std::vector<dou
   return p;
 }
 
-}  // namespace
+// The delay, then the wheels' lag and start-up around it, and their 95 %
+// intervals: where the cost, scaled by its residual variance, rises by
+// chi-square(1) = 3.84 with the other keys held at the fit.
+struct DynamicsFit {
+  DynamicsParams best;
+  DynamicsEvaluation evaluation;
+  int delay_low = 0, delay_high = 0;
+  double lag_low = 0, lag_high = 0, startup_low = 0, startup_high = 0;
+};
 
-CalibrationReport LabCalibration::Fit(const std::vector<CalibrationRun>& runs) const {
-  if (runs.empty()) throw std::runtime_error("nothing to calibrate: give at least one lab run");
-  for (const CalibrationRun& run : runs) CheckCalibrationRun(run);
-  const std::vector<CalibrationSeries> series = CalibrationSeries::Of(runs);
-  if (!AnyMotionCommanded(series)) {
-    throw std::runtime_error("no motion: no robot of " + runs.front().name +
-                             (runs.size() > 1 ? " (or the other runs)" : "") +
-                             " was ever commanded to move (|v| > 0.01 m/s or |w| > 0.1 rad/s); calibrate needs "
-                             "steps in v and w (dream export --calibration writes a run that has them)");
-  }
-  if (LongestPath(series) < 0.02) {
-    throw std::runtime_error("no motion: the poses never move more than 2 cm although commands were sent; are the "
-                             "poses and commands of the same run, and the poses not all the same?");
-  }
-
-  CalibrationReport report;
-  report.params = base_;
-  for (const CalibrationRun& run : runs) {
-    report.sources.push_back(run.name);
-    report.robots += run.track.num_robots;
-    report.robot_steps += static_cast<int64_t>(run.track.utime.size()) * run.track.num_robots;
-  }
-
-  double position_sigma = 0, heading_sigma = 0;
-  CalibrationTracker::RestNoise(series, &position_sigma, &heading_sigma);
-  if (position_sigma == 0.0) position_sigma = base_.pose_noise_m;
-  if (heading_sigma == 0.0) heading_sigma = base_.pose_noise_rad;
-  const CalibrationDynamics dynamics(series, base_, position_sigma, heading_sigma);
-
-  // The delay first, with the base's wheels; then the wheels around it.
-  DynamicsParams best{base_.pose_delay_steps + base_.command_latency_steps, base_.motor_lag_s, base_.motor_startup_m};
+DynamicsFit FitDynamics(const CalibrationDynamics& dynamics, const sim::RealismParams& base) {
+  DynamicsFit fit;
+  DynamicsParams& best = fit.best;
+  best = {base.pose_delay_steps + base.command_latency_steps, base.motor_lag_s, base.motor_startup_m};
   double best_cost = std::numeric_limits<double>::infinity();
   std::map<int, double> delay_cost;
   for (int delay = 0; delay <= kMaxDelaySteps; ++delay) {
@@ -180,49 +157,74 @@ CalibrationReport LabCalibration::Fit(const std::vector<CalibrationRun>& runs) c
       best = trial;
     }
   }
-  const DynamicsEvaluation fitted = dynamics.Evaluate(best);
-  // 95 % intervals: where the cost, scaled by its residual variance, rises by
-  // chi-square(1) = 3.84 with the other keys held at the fit.
-  const double scale = best_cost / std::max<double>(1.0, 2.0 * static_cast<double>(fitted.transitions) - 3.0);
+  fit.evaluation = dynamics.Evaluate(best);
+  const double scale = best_cost / std::max<double>(1.0, 2.0 * static_cast<double>(fit.evaluation.transitions) - 3.0);
   const double level = best_cost + 3.84 * scale;
   auto interval = [&](auto cost_at, double value, double lo, double hi, double* low, double* high) {
     *low = cost_at(lo) <= level ? lo : Crossing(cost_at, value, lo, level, 18);
     *high = cost_at(hi) <= level ? hi : Crossing(cost_at, value, hi, level, 18);
   };
-  double lag_low = 0, lag_high = 0, startup_low = 0, startup_high = 0;
   interval([&](double lag) { return dynamics.Evaluate({best.delay_steps, lag, best.startup_m}).cost; }, best.lag_s,
-           0.0, kMaxLagS, &lag_low, &lag_high);
+           0.0, kMaxLagS, &fit.lag_low, &fit.lag_high);
   interval([&](double s) { return dynamics.Evaluate({best.delay_steps, best.lag_s, s}).cost; }, best.startup_m, 0.0,
-           kMaxStartupM, &startup_low, &startup_high);
-  int delay_low = best.delay_steps, delay_high = best.delay_steps;
+           kMaxStartupM, &fit.startup_low, &fit.startup_high);
+  fit.delay_low = fit.delay_high = best.delay_steps;
   for (const auto& [delay, cost] : delay_cost) {
     if (cost <= level) {
-      delay_low = std::min(delay_low, delay);
-      delay_high = std::max(delay_high, delay);
+      fit.delay_low = std::min(fit.delay_low, delay);
+      fit.delay_high = std::max(fit.delay_high, delay);
     }
   }
+  return fit;
+}
 
-  const std::string transitions = sim::PrintfText("%lld", static_cast<long long>(fitted.transitions));
-  const int pose_delay = std::min(base_.pose_delay_steps, best.delay_steps);
-  if (pose_delay < base_.pose_delay_steps) {
-    // The whole delay is shorter than the base's pose delay: it is all pose delay.
-    AddKey(&report, FittedKey{"pose_delay_steps", static_cast<double>(pose_delay), static_cast<double>(pose_delay),
-                              static_cast<double>(pose_delay), true,
-                              "the total delay is below the base's pose delay, so it is all pose delay"});
+// The delay and wheel keys of `fit`. Poses and commands show only the total
+// delay: the base's pose delay is kept, unless the total is shorter.
+void AddDynamicsKeys(const DynamicsFit& fit, const sim::RealismParams& base, CalibrationReport* report) {
+  const DynamicsParams& best = fit.best;
+  const std::string transitions = sim::PrintfText("%lld", static_cast<long long>(fit.evaluation.transitions));
+  const int pose_delay = std::min(base.pose_delay_steps, best.delay_steps);
+  if (pose_delay < base.pose_delay_steps) {
+    AddKey(report, FittedKey{"pose_delay_steps", static_cast<double>(pose_delay), static_cast<double>(pose_delay),
+                             static_cast<double>(pose_delay), true,
+                             "the total delay is below the base's pose delay, so it is all pose delay"});
   } else {
-    AddKey(&report, KeptKey(base_, "pose_delay_steps",
-                            "poses and commands show only the sum with command_latency_steps; kept the base's"));
+    AddKey(report, KeptKey(base, "pose_delay_steps",
+                           "poses and commands show only the sum with command_latency_steps; kept the base's"));
   }
-  AddKey(&report, FittedKey{"command_latency_steps", static_cast<double>(best.delay_steps - pose_delay),
-                            static_cast<double>(std::max(0, delay_low - pose_delay)),
-                            static_cast<double>(std::max(0, delay_high - pose_delay)), true,
-                            "total delay " + std::to_string(best.delay_steps) + " steps, from " + transitions +
-                                " pose pairs"});
-  AddKey(&report, FittedKey{"motor_lag_s", best.lag_s, lag_low, lag_high, true, "from " + transitions + " pose pairs"});
-  AddKey(&report, FittedKey{"motor_startup_m", best.startup_m, startup_low, startup_high, true,
-                            "from starts at the speeds the runs commanded"});
-  AddKey(&report, KeptKey(base_, "wheel_accel_limit_radps2", "the lag models the wheels; kept the base's"));
+  AddKey(report, FittedKey{"command_latency_steps", static_cast<double>(best.delay_steps - pose_delay),
+                           static_cast<double>(std::max(0, fit.delay_low - pose_delay)),
+                           static_cast<double>(std::max(0, fit.delay_high - pose_delay)), true,
+                           "total delay " + std::to_string(best.delay_steps) + " steps, from " + transitions +
+                               " pose pairs"});
+  AddKey(report, FittedKey{"motor_lag_s", best.lag_s, fit.lag_low, fit.lag_high, true,
+                           "from " + transitions + " pose pairs"});
+  AddKey(report, FittedKey{"motor_startup_m", best.startup_m, fit.startup_low, fit.startup_high, true,
+                           "from starts at the speeds the runs commanded"});
+  AddKey(report, KeptKey(base, "wheel_accel_limit_radps2", "the lag models the wheels; kept the base's"));
+}
 
+// A mean and spread key pair from per-robot values (and their errors).
+void AddPopulationKeys(const char* mean_key, const char* spread_key, const std::vector<double>& values,
+                       const std::vector<double>& errors, const char* what, const sim::RealismParams& base,
+                       CalibrationReport* report) {
+  const Population p = PopulationOf(values, errors);
+  if (p.n == 0) {
+    AddKey(report, KeptKey(base, mean_key, std::string("no robot ") + what));
+    AddKey(report, KeptKey(base, spread_key, std::string("no robot ") + what));
+    return;
+  }
+  const std::string robots = std::to_string(p.n) + (p.n == 1 ? " robot" : " robots");
+  AddKey(report, FittedKey{mean_key, p.mean, p.mean - p.mean_half, p.mean + p.mean_half, true, robots});
+  if (p.n >= 3) {
+    AddKey(report, FittedKey{spread_key, p.spread, p.spread_low, p.spread_high, true, "between " + robots});
+  } else {
+    AddKey(report, KeptKey(base, spread_key, "a spread between robots needs 3 robots or more (" + robots + ")"));
+  }
+}
+
+// The gains and drift of the robots that drove (turned) far enough to tell.
+void AddGainKeys(const DynamicsEvaluation& fitted, const sim::RealismParams& base, CalibrationReport* report) {
   std::vector<double> linear, linear_se, angular, angular_se, drift, drift_se;
   for (const RobotGains& g : fitted.gains) {
     if (g.linear_seen) {
@@ -236,41 +238,69 @@ CalibrationReport LabCalibration::Fit(const std::vector<CalibrationRun>& runs) c
       drift_se.push_back(g.drift_se);
     }
   }
-  auto add_population = [&](const char* mean_key, const char* spread_key, const std::vector<double>& values,
-                            const std::vector<double>& errors, const char* what) {
-    const Population p = PopulationOf(values, errors);
-    if (p.n == 0) {
-      AddKey(&report, KeptKey(base_, mean_key, std::string("no robot ") + what));
-      AddKey(&report, KeptKey(base_, spread_key, std::string("no robot ") + what));
-      return;
-    }
-    const std::string robots = std::to_string(p.n) + (p.n == 1 ? " robot" : " robots");
-    AddKey(&report, FittedKey{mean_key, p.mean, p.mean - p.mean_half, p.mean + p.mean_half, true, robots});
-    if (p.n >= 3) {
-      AddKey(&report, FittedKey{spread_key, p.spread, p.spread_low, p.spread_high, true, "between " + robots});
-    } else {
-      AddKey(&report, KeptKey(base_, spread_key, "a spread between robots needs 3 robots or more (" + robots + ")"));
-    }
-  };
-  add_population("linear_gain_mean", "linear_gain_spread", linear, linear_se, "drove far enough");
-  add_population("angular_gain_mean", "angular_gain_spread", angular, angular_se, "turned far enough");
-  add_population("heading_drift_mean_radps", "heading_drift_spread_radps", drift, drift_se, "turned far enough");
+  AddPopulationKeys("linear_gain_mean", "linear_gain_spread", linear, linear_se, "drove far enough", base, report);
+  AddPopulationKeys("angular_gain_mean", "angular_gain_spread", angular, angular_se, "turned far enough", base, report);
+  AddPopulationKeys("heading_drift_mean_radps", "heading_drift_spread_radps", drift, drift_se, "turned far enough",
+                    base, report);
+}
 
-  // Who was moving at each measurement, as the world decides it (the
-  // velocity of the step the measurement shows).
+// Who was moving at each measurement, as the world decides it (the velocity
+// of the step the measurement shows).
+std::vector<std::vector<bool>> MovingAtEachMeasurement(const std::vector<CalibrationSeries>& series,
+                                                       const CalibrationDynamics& dynamics,
+                                                       const DynamicsParams& params) {
   std::vector<std::vector<bool>> moving(series.size());
   std::vector<sim::UnicycleCommand> driven;
   std::vector<double> motion_s;
   for (size_t r = 0; r < series.size(); ++r) {
-    dynamics.Predict(series[r], best, &driven, &motion_s);
+    dynamics.Predict(series[r], params, &driven, &motion_s);
     moving[r].assign(series[r].steps(), false);
-    for (size_t k = 1; k < series[r].steps(); ++k) {
-      const sim::UnicycleCommand& v = driven[k - 1];
-      moving[r][k] = std::abs(v.v_mps) >= 0.002 || std::abs(v.w_radps) >= 0.02;
-    }
+    for (size_t k = 1; k < series[r].steps(); ++k) moving[r][k] = sim::RealisticWorld::IsMoving(driven[k - 1]);
   }
+  return moving;
+}
+
+// Refuses runs that hold nothing to fit.
+void CheckSomethingMoved(const std::vector<CalibrationRun>& runs, const std::vector<CalibrationSeries>& series) {
+  if (!AnyMotionCommanded(series)) {
+    throw std::runtime_error("no motion: no robot of " + runs.front().name +
+                             (runs.size() > 1 ? " (or the other runs)" : "") +
+                             " was ever commanded to move (|v| > 0.01 m/s or |w| > 0.1 rad/s); calibrate needs "
+                             "steps in v and w (dream export --calibration writes a run that has them)");
+  }
+  if (LargestExtent(series) < 0.02) {
+    throw std::runtime_error("no motion: the poses never move more than 2 cm although commands were sent; are the "
+                             "poses and commands of the same run, and the poses not all the same?");
+  }
+}
+
+}  // namespace
+
+CalibrationReport LabCalibration::Fit(const std::vector<CalibrationRun>& runs) const {
+  if (runs.empty()) throw std::runtime_error("nothing to calibrate: give at least one lab run");
+  for (const CalibrationRun& run : runs) CheckCalibrationRun(run);
+  const std::vector<CalibrationSeries> series = CalibrationSeries::Of(runs);
+  CheckSomethingMoved(runs, series);
+
+  CalibrationReport report;
+  report.params = base_;
+  for (const CalibrationRun& run : runs) {
+    report.sources.push_back(run.name);
+    report.robots += run.track.num_robots;
+    report.robot_steps += static_cast<int64_t>(run.track.utime.size()) * run.track.num_robots;
+  }
+
+  double position_sigma = 0, heading_sigma = 0;
+  CalibrationTracker::RestNoise(series, &position_sigma, &heading_sigma);
+  if (position_sigma == 0.0) position_sigma = base_.pose_noise_m;
+  if (heading_sigma == 0.0) heading_sigma = base_.pose_noise_rad;
+  const CalibrationDynamics dynamics(series, base_, position_sigma, heading_sigma);
+  const DynamicsFit fit = FitDynamics(dynamics, base_);
+  AddDynamicsKeys(fit, base_, &report);
+  AddGainKeys(fit.evaluation, base_, &report);
+  const std::vector<std::vector<bool>> moving = MovingAtEachMeasurement(series, dynamics, fit.best);
   CalibrationTracker(series, moving, base_).Fit(&report);
-  FillCalibrationEvidence(series, dynamics, best, fitted, &report);
+  FillCalibrationEvidence(series, dynamics, fit.best, fit.evaluation, &report);
 
   // Keys nothing here fits keep the base's, and every key appears once, in
   // RealismParams::Fields() order.

@@ -287,12 +287,9 @@ TEST_F(CalibrationFileTest, ReadsMatFilesAndRefusesShapesThatDisagree) {
   NpyArray poses, commands;
   ArraysOf(run, &poses, &commands);
   WriteMatMatrix(Path("lab.mat"), "poses", poses);
-  const CalibrationRun only_poses_error_probe = run;
-  (void)only_poses_error_probe;
+  // A .mat file with poses but no commands is named; WriteMatMatrix writes
+  // one variable per file, so the arrays' reading is shown on the .npy form.
   EXPECT_NE(Error(Path("lab.mat")).find("no variable 'commands'"), std::string::npos) << Error(Path("lab.mat"));
-  // Both arrays in one file: write with two variables through two files is not
-  // possible with WriteMatMatrix, so poses and commands go to two .mat files
-  // and the shape check is shown on the .npy form below.
   NpyArray stacked;
   stacked.shape = {5, 3, static_cast<int64_t>(run.track.utime.size())};
   stacked.values = poses.values;

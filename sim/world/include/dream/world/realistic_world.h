@@ -104,6 +104,9 @@ class RealisticWorld final : public World {
   int64_t late_steps() const { return late_steps_; }
   int64_t stalls() const { return stalls_; }
   double late_time_s() const { return late_time_s_; }
+  // Whether a robot moving at `velocity` counts as moving for the tracker's
+  // models (noise, dropouts); dream calibrate classes measurements by it too.
+  static bool IsMoving(const UnicycleCommand& velocity);
   // How much longer than a time step the last Step() lasted (0 on time).
   double last_late_s() const { return last_late_s_; }
   // Each robot's drawn gains and drift.
@@ -144,8 +147,7 @@ class RealisticWorld final : public World {
   double DrivenLateTime(const Robot& robot, double late_s) const;
   // This step's time beyond one time step: an overrun, a stall (0 when both are off).
   double DrawLateTime();
-  // Whether a robot moving at `velocity` counts as moving for the tracker's models.
-  static bool IsMoving(const UnicycleCommand& velocity);
+
   void Measure(bool first);
   // Whether robot i's measurement of this step is dropped; draws its dropout numbers.
   bool DropsMeasurement(Tracking& tracking, double probability, bool first);
