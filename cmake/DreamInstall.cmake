@@ -33,7 +33,7 @@ function(dream_library_targets dir out)
 endfunction()
 
 # What a controller builds against, as dream::<name>.
-set(DREAM_EXPORTED_LIBRARIES robotarium world config_node config msgs lcm run_log agents agent_host)
+set(DREAM_EXPORTED_LIBRARIES robotarium world config run_config msgs lcm run_log agents agent_host)
 set(exported_targets)
 foreach(name IN LISTS DREAM_EXPORTED_LIBRARIES)
   set_target_properties(dream_${name} PROPERTIES EXPORT_NAME ${name})
@@ -58,13 +58,14 @@ endif()
 install(TARGETS dream dream-agent RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
 install(DIRECTORY
-    ${PROJECT_SOURCE_DIR}/sim/robotarium/include/
+    ${PROJECT_SOURCE_DIR}/base/robotarium/include/
+    ${PROJECT_SOURCE_DIR}/base/config/include/
+    ${PROJECT_SOURCE_DIR}/base/run_log/include/
+    ${PROJECT_SOURCE_DIR}/lcmtypes/lcm/include/
     ${PROJECT_SOURCE_DIR}/sim/world/include/
-    ${PROJECT_SOURCE_DIR}/sim/config/include/
-    ${PROJECT_SOURCE_DIR}/lcmtypes/include/
-    ${PROJECT_SOURCE_DIR}/sim/run_log/include/
+    ${PROJECT_SOURCE_DIR}/sim/run_config/include/
     ${PROJECT_SOURCE_DIR}/agents/include/
-    ${PROJECT_SOURCE_DIR}/agents/lcm/include/
+    ${PROJECT_SOURCE_DIR}/agents/agent_host/include/
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
   FILES_MATCHING PATTERN "*.h")
 install(DIRECTORY ${PROJECT_BINARY_DIR}/lcmtypes/generated/cpp/

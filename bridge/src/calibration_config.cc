@@ -33,7 +33,7 @@ std::string CalibrationConfig::Text(int robots) {
       "  realism: {preset: ideal}\n"
       "initial_poses:  # agents::CalibrationDrive::StartPoses\n";
   for (const Eigen::Vector3d& pose : agents::CalibrationDrive::StartPoses(robots)) {
-    text += sim::PrintfText("  - [%.10g, %.10g, %.10g]\n", pose.x(), pose.y(), pose.z());
+    text += world::PrintfText("  - [%.10g, %.10g, %.10g]\n", pose.x(), pose.y(), pose.z());
   }
   text += "controller:\n  kind: calibration_drive\n";
   return text;

@@ -29,7 +29,7 @@ struct Sums2 {
 
 }  // namespace
 
-CalibrationDynamics::CalibrationDynamics(const std::vector<CalibrationSeries>& series, const sim::RealismParams& base,
+CalibrationDynamics::CalibrationDynamics(const std::vector<CalibrationSeries>& series, const world::RealismParams& base,
                                          double position_sigma_m, double heading_sigma_rad)
     : series_(series),
       base_(base),
@@ -37,11 +37,11 @@ CalibrationDynamics::CalibrationDynamics(const std::vector<CalibrationSeries>& s
       heading_weight_(1.0 / (2.0 * std::max(heading_sigma_rad, 1e-4) * std::max(heading_sigma_rad, 1e-4))) {}
 
 void CalibrationDynamics::Predict(const CalibrationSeries& series, const DynamicsParams& params,
-                                  std::vector<sim::UnicycleCommand>* driven, std::vector<double>* motion_s) const {
-  sim::RealismParams model = base_;
+                                  std::vector<world::UnicycleCommand>* driven, std::vector<double>* motion_s) const {
+  world::RealismParams model = base_;
   model.motor_lag_s = params.lag_s;
   model.motor_startup_m = params.startup_m;
-  sim::RobotResponse response(model, sim::RobotTraits{}, RobotariumConstants::kWheelRadiusMeters,
+  world::RobotResponse response(model, world::RobotTraits{}, RobotariumConstants::kWheelRadiusMeters,
                               RobotariumConstants::kMaxWheelVelocityRadps);
   const size_t transitions = series.steps() - 1;
   driven->resize(transitions);
@@ -49,7 +49,7 @@ void CalibrationDynamics::Predict(const CalibrationSeries& series, const Dynamic
   const double brake_s = base_.command_brake_s;
   for (size_t k = 0; k < transitions; ++k) {
     const auto delayed = static_cast<int64_t>(k) - params.delay_steps;
-    const sim::UnicycleCommand target = delayed >= 0 ? series.commands[static_cast<size_t>(delayed)] : sim::UnicycleCommand{};
+    const world::UnicycleCommand target = delayed >= 0 ? series.commands[static_cast<size_t>(delayed)] : world::UnicycleCommand{};
     const double step_s = series.step_s[k];
     (*driven)[k] = response.Drive(target, step_s);
     // Through a late step the robot drives on until its brake.
@@ -60,7 +60,7 @@ void CalibrationDynamics::Predict(const CalibrationSeries& series, const Dynamic
 DynamicsEvaluation CalibrationDynamics::Evaluate(const DynamicsParams& params) const {
   DynamicsEvaluation evaluation;
   evaluation.gains.resize(series_.size());
-  std::vector<sim::UnicycleCommand> driven;
+  std::vector<world::UnicycleCommand> driven;
   std::vector<double> motion_s;
   for (size_t r = 0; r < series_.size(); ++r) {
     const CalibrationSeries& series = series_[r];
@@ -78,8 +78,8 @@ DynamicsEvaluation CalibrationDynamics::Evaluate(const DynamicsParams& params) c
           w_sum += driven[k].w_radps * motion_s[k];
           if (driven[k].v_mps != 0.0 || driven[k].w_radps != 0.0) moving_sum += motion_s[k];
         }
-        const sim::Pose2& a = series.poses[from];
-        const sim::Pose2& b = series.poses[to];
+        const world::Pose2& a = series.poses[from];
+        const world::Pose2& b = series.poses[to];
         const double f = (b.x_m - a.x_m) * std::cos(a.theta_rad) + (b.y_m - a.y_m) * std::sin(a.theta_rad);
         const double turned = WrappedAngle(b.theta_rad - a.theta_rad);
         forward.yy += f * f;

@@ -35,11 +35,11 @@ struct DynamicsEvaluation {
   std::vector<RobotGains> gains;  // per series
 };
 
-// The world's robot model (sim::RobotResponse) run on each series' commands,
+// The world's robot model (world::RobotResponse) run on each series' commands,
 // against the motion its measured poses show.
 class CalibrationDynamics {
  public:
-  CalibrationDynamics(const std::vector<CalibrationSeries>& series, const sim::RealismParams& base,
+  CalibrationDynamics(const std::vector<CalibrationSeries>& series, const world::RealismParams& base,
                       double position_sigma_m, double heading_sigma_rad);
 
   DynamicsEvaluation Evaluate(const DynamicsParams& params) const;
@@ -47,11 +47,11 @@ class CalibrationDynamics {
   // What robot `series` drives in each step (unit gains, no drift) and for
   // how long, under `params`.
   void Predict(const CalibrationSeries& series, const DynamicsParams& params,
-               std::vector<sim::UnicycleCommand>* driven, std::vector<double>* motion_s) const;
+               std::vector<world::UnicycleCommand>* driven, std::vector<double>* motion_s) const;
 
  private:
   const std::vector<CalibrationSeries>& series_;
-  sim::RealismParams base_;
+  world::RealismParams base_;
   double position_weight_;
   double heading_weight_;
 };

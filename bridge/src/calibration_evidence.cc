@@ -26,7 +26,7 @@ std::vector<Start> StartsFromRest(const std::vector<CalibrationSeries>& series) 
   for (size_t r = 0; r < series.size(); ++r) {
     const CalibrationSeries& s = series[r];
     for (size_t e = kRestBefore; e + kMinHold < s.steps(); ++e) {
-      const sim::UnicycleCommand& c = s.commands[e];
+      const world::UnicycleCommand& c = s.commands[e];
       if (std::abs(c.v_mps) < 0.02 || std::abs(c.w_radps) > 0.05 || !IsRestCommand(s.commands[e - 1])) continue;
       bool rested = true;
       for (size_t j = e - kRestBefore; j < e && rested; ++j) rested = IsRestCommand(s.commands[j]);
@@ -70,7 +70,7 @@ double EffectiveDelay(const std::vector<double>& distance_m, const std::vector<d
 void FillCalibrationEvidence(const std::vector<CalibrationSeries>& series, const CalibrationDynamics& dynamics,
                              const DynamicsParams& params, const DynamicsEvaluation& fitted,
                              CalibrationReport* report) {
-  std::vector<std::vector<sim::UnicycleCommand>> driven(series.size());
+  std::vector<std::vector<world::UnicycleCommand>> driven(series.size());
   std::vector<std::vector<double>> motion(series.size());
   for (size_t r = 0; r < series.size(); ++r) dynamics.Predict(series[r], params, &driven[r], &motion[r]);
 
@@ -88,7 +88,7 @@ void FillCalibrationEvidence(const std::vector<CalibrationSeries>& series, const
     curve.time_s.assign(length, 0.0);
     for (const Start& start : starts) {
       const CalibrationSeries& s = series[start.series];
-      const sim::Pose2& origin = s.poses[start.step];
+      const world::Pose2& origin = s.poses[start.step];
       const double gain = fitted.gains[start.series].linear;
       const double sign = s.commands[start.step].v_mps < 0 ? -1.0 : 1.0;  // backwards counts forward
       std::vector<double> real(length), model(length);
@@ -98,7 +98,7 @@ void FillCalibrationEvidence(const std::vector<CalibrationSeries>& series, const
         // Time on the run's clock (a lab's steps are late now and then).
         curve.time_s[k] += elapsed / static_cast<double>(starts.size());
         if (start.step + k < s.step_s.size()) elapsed += s.step_s[start.step + k];
-        const sim::Pose2& p = s.poses[start.step + k];
+        const world::Pose2& p = s.poses[start.step + k];
         real[k] = sign * ((p.x_m - origin.x_m) * std::cos(origin.theta_rad) + (p.y_m - origin.y_m) * std::sin(origin.theta_rad));
         model[k] = travelled;
         const size_t at = start.step + k;

@@ -10,15 +10,15 @@
 namespace dream::bridge {
 namespace {
 
-using sim::XyPanel;
-using sim::XySeries;
+using render::XyPanel;
+using render::XySeries;
 
 XyPanel StepPanel(const CalibrationReport& report) {
   XyPanel panel{"Steps in v from rest: real (solid) and fitted (dashed)", "time since the command (s)",
                 "distance driven (m)", {}};
   int color = 0;
   for (const StepResponseCurve& curve : report.step_responses) {
-    XySeries real{sim::PrintfText("%.2f m/s (%d starts)", curve.speed_mps, curve.events), {}, XySeries::Style::kLine, color};
+    XySeries real{world::PrintfText("%.2f m/s (%d starts)", curve.speed_mps, curve.events), {}, XySeries::Style::kLine, color};
     XySeries fitted{"", {}, XySeries::Style::kDashedLine, color};
     for (size_t k = 0; k < curve.time_s.size(); ++k) {
       real.points.push_back({curve.time_s[k], curve.real_m[k]});
@@ -43,7 +43,7 @@ XyPanel TurningPanel(const CalibrationReport& report) {
   const FittedKey* gain = report.Find("angular_gain_mean");
   const double g = gain != nullptr ? gain->value : 1.0;
   panel.series.push_back(std::move(dots));
-  panel.series.push_back({sim::PrintfText("fitted gain %.3f", g), {{lo, g * lo}, {hi, g * hi}}, XySeries::Style::kLine, 1});
+  panel.series.push_back({world::PrintfText("fitted gain %.3f", g), {{lo, g * lo}, {hi, g * hi}}, XySeries::Style::kLine, 1});
   panel.series.push_back({"gain 1", {{lo, lo}, {hi, hi}}, XySeries::Style::kDashedLine, 2});
   return panel;
 }
@@ -73,9 +73,9 @@ void AddHistogram(const std::vector<double>& values, double scale, double sigma,
 XyPanel NoisePanel(const CalibrationReport& report) {
   XyPanel panel{"Position noise (x) with the fitted Gaussians", "noise (mm)", "measurements", {}};
   const double rest = report.params.pose_noise_m;
-  AddHistogram(report.rest_noise_m, 1e3, rest, sim::PrintfText("at rest, sigma %.2f mm", rest * 1e3), 0, &panel);
+  AddHistogram(report.rest_noise_m, 1e3, rest, world::PrintfText("at rest, sigma %.2f mm", rest * 1e3), 0, &panel);
   const double moving = rest * report.params.pose_noise_moving_factor;
-  AddHistogram(report.moving_noise_m, 1e3, moving, sim::PrintfText("moving, sigma %.2f mm", moving * 1e3), 1, &panel);
+  AddHistogram(report.moving_noise_m, 1e3, moving, world::PrintfText("moving, sigma %.2f mm", moving * 1e3), 1, &panel);
   if (panel.series.empty()) panel.series.push_back({"no steady measurements", {{0, 0}}, XySeries::Style::kDots, 0});
   return panel;
 }
@@ -84,13 +84,13 @@ XyPanel StalePanel(const CalibrationReport& report) {
   XyPanel panel{"Runs of repeated poses", "length (steps)", "runs", {}};
   std::map<int, double> counts;
   for (int length : report.stale_bursts) counts[std::min(length, 40)] += 1;
-  XySeries bars{sim::PrintfText("%zu runs seen (40: 40 or more)", report.stale_bursts.size()), {}, XySeries::Style::kBars, 0};
+  XySeries bars{world::PrintfText("%zu runs seen (40: 40 or more)", report.stale_bursts.size()), {}, XySeries::Style::kBars, 0};
   for (const auto& [length, count] : counts) bars.points.push_back({static_cast<double>(length), count});
   // Geometric lengths with the fitted mean: P(L = l) = q^(l-1) (1 - q).
   const double mean = std::max(1.0, report.params.tracking_dropout_mean_steps /
                                         std::max(1e-9, 1.0 - report.params.tracking_dropout_probability));
   const double q = 1.0 - 1.0 / mean;
-  XySeries model{sim::PrintfText("fitted: mean %.1f steps", mean), {}, XySeries::Style::kLine, 1};
+  XySeries model{world::PrintfText("fitted: mean %.1f steps", mean), {}, XySeries::Style::kLine, 1};
   for (int l = 1; l <= 40; ++l) {
     model.points.push_back({static_cast<double>(l), static_cast<double>(report.stale_bursts.size()) * std::pow(q, l - 1) * (1 - q)});
   }
@@ -101,11 +101,11 @@ XyPanel StalePanel(const CalibrationReport& report) {
 
 }  // namespace
 
-void RenderCalibrationPicture(const CalibrationReport& report, const std::string& path, sim::RenderFormat format) {
+void RenderCalibrationPicture(const CalibrationReport& report, const std::string& path, render::RenderFormat format) {
   const std::vector<XyPanel> panels = {StepPanel(report), TurningPanel(report), NoisePanel(report), StalePanel(report)};
   std::string title = "dream calibrate: ";
   title += report.sources.size() == 1 ? report.sources.front() : std::to_string(report.sources.size()) + " runs";
-  sim::XyPlot::Render(panels, 2, title, path, format);
+  render::XyPlot::Render(panels, 2, title, path, format);
 }
 
 }  // namespace dream::bridge

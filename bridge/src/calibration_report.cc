@@ -17,7 +17,7 @@ struct RealMedian {
 };
 constexpr RealMedian kRealMedians[] = {{0.05, 0.515}, {0.1, 0.385}, {0.2, 0.330}};
 
-std::string Number(double value) { return sim::PrintfText("%.6g", value); }
+std::string Number(double value) { return world::PrintfText("%.6g", value); }
 
 }  // namespace
 
@@ -43,8 +43,8 @@ std::string CalibrationReport::Text() const {
     } else {
       interval = "[" + Number(key.low) + ", " + Number(key.high) + "]";
     }
-    out << "  " << key.key << std::string(width - key.key.size() + 2, ' ') << sim::PrintfText("%-12s", Number(key.value).c_str())
-        << sim::PrintfText("%-28s", interval.c_str()) << key.support << "\n";
+    out << "  " << key.key << std::string(width - key.key.size() + 2, ' ') << world::PrintfText("%-12s", Number(key.value).c_str())
+        << world::PrintfText("%-28s", interval.c_str()) << key.support << "\n";
   }
   if (!step_responses.empty()) {
     out << "\nSteps in v from rest (effective delay: where the steady line crosses 0; first motion: first step over 3 mm)\n";
@@ -52,9 +52,9 @@ std::string CalibrationReport::Text() const {
     for (const StepResponseCurve& curve : step_responses) {
       std::string median = "";
       for (const RealMedian& real : kRealMedians) {
-        if (std::abs(curve.speed_mps - real.speed_mps) < 0.2 * real.speed_mps) median = sim::PrintfText("%.0f ms", real.delay_s * 1e3);
+        if (std::abs(curve.speed_mps - real.speed_mps) < 0.2 * real.speed_mps) median = world::PrintfText("%.0f ms", real.delay_s * 1e3);
       }
-      out << sim::PrintfText("  %9.2f  %6d  %7.0f ms  %4.0f ms  %14.1f  %7.1f   %s\n", curve.speed_mps, curve.events,
+      out << world::PrintfText("  %9.2f  %6d  %7.0f ms  %4.0f ms  %14.1f  %7.1f   %s\n", curve.speed_mps, curve.events,
                              curve.real_delay_s * 1e3, curve.fitted_delay_s * 1e3, curve.real_first_motion_step,
                              curve.fitted_first_motion_step, median.c_str());
     }
@@ -71,7 +71,7 @@ std::string CalibrationReport::RealismYaml() const {
   out << "\n# " << robots << " robots, " << robot_steps << " robot-steps. Each key: value, then in the comment\n";
   out << "# its 95 % interval and the data behind it, or why it keeps the base preset's value.\n";
   for (const FittedKey& key : keys) {
-    out << key.key << ": " << sim::PrintfText("%.10g", key.value) << "  # ";
+    out << key.key << ": " << world::PrintfText("%.10g", key.value) << "  # ";
     if (key.determined) {
       out << (key.low == key.high && key.key.rfind("pose_quantum", 0) == 0 ? std::string("exact")
                                                                           : "[" + Number(key.low) + ", " + Number(key.high) + "]")

@@ -146,7 +146,7 @@ RunTrack TrackOfLog(const std::string& log_path, bool* timed) {
   const auto n = static_cast<size_t>(track.num_robots);
   std::vector<bool> measured(steps, false);
   std::vector<bool> applied(steps, false);
-  std::vector<sim::UnicycleCommand> sent(steps * n);
+  std::vector<world::UnicycleCommand> sent(steps * n);
   std::vector<bool> sent_seen(steps * n, false);
   lcm::LogReader reader(log_path);
   lcm::LogRecord record;
@@ -158,12 +158,12 @@ RunTrack TrackOfLog(const std::string& log_path, bool* timed) {
   while (reader.Next(&record)) {
     const uint8_t* data = record.data.data();
     const int size = static_cast<int>(record.data.size());
-    if (record.channel == sim::TruePoseRecording::kMeasuredPosesChannel) {
+    if (record.channel == node::TruePoseRecording::kMeasuredPosesChannel) {
       if (!lcm::Decode(data, size, &poses) || !step_index(poses.step) || static_cast<size_t>(poses.num_robots) != n) {
         continue;
       }
       const auto k = static_cast<size_t>(poses.step);
-      for (size_t i = 0; i < n; ++i) track.poses[k * n + i] = sim::Pose2{poses.x[i], poses.y[i], poses.theta[i]};
+      for (size_t i = 0; i < n; ++i) track.poses[k * n + i] = world::Pose2{poses.x[i], poses.y[i], poses.theta[i]};
       measured[k] = true;
     } else if (record.channel == lcm::kAppliedChannel) {
       if (!lcm::Decode(data, size, &commands) || !step_index(commands.step) ||
@@ -211,8 +211,8 @@ void CheckCalibrationRun(const CalibrationRun& run) {
   }
   const auto n = static_cast<size_t>(track.num_robots);
   for (size_t at = 0; at < track.poses.size(); ++at) {
-    const sim::Pose2& pose = track.poses[at];
-    const sim::UnicycleCommand& command = track.commands[at];
+    const world::Pose2& pose = track.poses[at];
+    const world::UnicycleCommand& command = track.commands[at];
     const char* what = !std::isfinite(pose.x_m) || !std::isfinite(pose.y_m) || !std::isfinite(pose.theta_rad) ? "pose"
                        : !std::isfinite(command.v_mps) || !std::isfinite(command.w_radps)               ? "command"
                                                                                                          : nullptr;

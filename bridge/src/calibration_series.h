@@ -14,8 +14,8 @@ namespace dream::bridge {
 struct CalibrationSeries {
   std::string run;
   int robot = 0;
-  std::vector<sim::Pose2> poses;                // per step, as measured
-  std::vector<sim::UnicycleCommand> commands;   // per step, as sent
+  std::vector<world::Pose2> poses;                // per step, as measured
+  std::vector<world::UnicycleCommand> commands;   // per step, as sent
   std::vector<double> step_s;                   // per step but the last: how long it lasted
   std::vector<bool> stale;                      // the pose repeats the step before's exactly
   // A step within a few steps of a late one (a loop stall): which
@@ -30,7 +30,7 @@ struct CalibrationSeries {
 };
 
 // A command to stand still: what the world would not count as moving.
-inline bool IsRestCommand(const sim::UnicycleCommand& command) { return !sim::RealisticWorld::IsMoving(command); }
+inline bool IsRestCommand(const world::UnicycleCommand& command) { return !world::RealisticWorld::IsMoving(command); }
 
 // Heading difference wrapped to (-pi, pi].
 double WrappedAngle(double radians);

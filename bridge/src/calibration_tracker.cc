@@ -27,9 +27,9 @@ constexpr size_t kMaxSamples = 20000;
 
 bool Settled(const CalibrationSeries& series, size_t k, bool rest) {
   if (k < kSettledSteps) return false;
-  const sim::UnicycleCommand& now = series.commands[k];
+  const world::UnicycleCommand& now = series.commands[k];
   for (size_t j = k - kSettledSteps; j <= k; ++j) {
-    const sim::UnicycleCommand& then = series.commands[j];
+    const world::UnicycleCommand& then = series.commands[j];
     if (rest ? !IsRestCommand(then)
              : std::abs(then.v_mps - now.v_mps) > 1e-3 || std::abs(then.w_radps - now.w_radps) > 1e-2) {
       return false;
@@ -53,7 +53,7 @@ FittedKey ProportionKey(const char* key, double hits, double n, const std::strin
   return FittedKey{key, p, std::max(0.0, centre - half), std::min(1.0, centre + half), true, support};
 }
 
-std::string Count(double n) { return sim::PrintfText("%.0f", n); }
+std::string Count(double n) { return world::PrintfText("%.0f", n); }
 
 }  // namespace
 
@@ -87,8 +87,8 @@ std::vector<CalibrationSeries> CalibrationSeries::Of(const std::vector<Calibrati
       }
       series.stale.assign(steps, false);
       for (size_t k = 1; k < steps; ++k) {
-        const sim::Pose2& a = series.poses[k - 1];
-        const sim::Pose2& b = series.poses[k];
+        const world::Pose2& a = series.poses[k - 1];
+        const world::Pose2& b = series.poses[k];
         series.stale[k] = a.x_m == b.x_m && a.y_m == b.y_m && a.theta_rad == b.theta_rad;
       }
     }
@@ -96,13 +96,13 @@ std::vector<CalibrationSeries> CalibrationSeries::Of(const std::vector<Calibrati
   return all;
 }
 
-FittedKey KeptKey(const sim::RealismParams& base, const char* key, const std::string& why) {
+FittedKey KeptKey(const world::RealismParams& base, const char* key, const std::string& why) {
   const double value = RealismValue(base, key);
   return FittedKey{key, value, value, value, false, why};
 }
 
-double RealismValue(const sim::RealismParams& params, const std::string& key) {
-  for (const sim::RealismParams::Field& field : sim::RealismParams::Fields()) {
+double RealismValue(const world::RealismParams& params, const std::string& key) {
+  for (const world::RealismParams::Field& field : world::RealismParams::Fields()) {
     if (key == field.key) {
       return field.number != nullptr ? params.*field.number : static_cast<double>(params.*field.steps);
     }
@@ -110,8 +110,8 @@ double RealismValue(const sim::RealismParams& params, const std::string& key) {
   throw std::logic_error("no realism key " + key);
 }
 
-void SetRealismValue(sim::RealismParams* params, const std::string& key, double value) {
-  for (const sim::RealismParams::Field& field : sim::RealismParams::Fields()) {
+void SetRealismValue(world::RealismParams* params, const std::string& key, double value) {
+  for (const world::RealismParams::Field& field : world::RealismParams::Fields()) {
     if (key != field.key) continue;
     if (field.number != nullptr) {
       params->*field.number = value;
@@ -129,7 +129,7 @@ void AddKey(CalibrationReport* report, FittedKey key) {
 }
 
 CalibrationTracker::CalibrationTracker(const std::vector<CalibrationSeries>& series,
-                                       const std::vector<std::vector<bool>>& moving, const sim::RealismParams& base)
+                                       const std::vector<std::vector<bool>>& moving, const world::RealismParams& base)
     : series_(series), moving_(moving), base_(base) {}
 
 void CalibrationTracker::RestNoise(const std::vector<CalibrationSeries>& series, double* position_sigma_m,
@@ -167,8 +167,8 @@ void CalibrationTracker::FitNoise(CalibrationReport* report) const {
     const CalibrationSeries& s = series_[r];
     for (size_t k = 1; k < s.steps(); ++k) {
       if (s.stale[k] || s.stale[k - 1] || s.near_late[k]) continue;
-      const sim::Pose2& b = s.poses[k];
-      const sim::Pose2& a = s.poses[k - 1];
+      const world::Pose2& b = s.poses[k];
+      const world::Pose2& a = s.poses[k - 1];
       if (!moving_[r][k] && !moving_[r][k - 1] && Settled(s, k, true)) {
         const double dx = b.x_m - a.x_m;
         const double dy = b.y_m - a.y_m;
@@ -179,7 +179,7 @@ void CalibrationTracker::FitNoise(CalibrationReport* report) const {
       }
       if (k + 1 < s.steps() && !s.stale[k + 1] && moving_[r][k - 1] && moving_[r][k] && moving_[r][k + 1] &&
           Settled(s, k + 1, false) && std::abs(s.commands[k].w_radps) < 0.05) {
-        const sim::Pose2& c = s.poses[k + 1];
+        const world::Pose2& c = s.poses[k + 1];
         // Steps of unequal length move the robot unequally: take that out
         // (at the commanded speed) before reading noise from the difference.
         const double uneven_m = s.commands[k].v_mps * (s.step_s[k] - s.step_s[k - 1]);
@@ -210,8 +210,8 @@ void CalibrationTracker::FitNoise(CalibrationReport* report) const {
       const double heading_moving = std::sqrt(move_head / (6 * move_n));
       AddKey(report, FittedKey{"pose_noise_moving_factor", factor, std::max(1.0, factor * (1 - relative)),
                                std::max(1.0, factor * (1 + relative)), true,
-                               Count(move_n) + " steady moving triples: " + sim::PrintfText("%.2f mm", moving * 1e3) +
-                                   " and " + sim::PrintfText("%.4f rad", heading_moving) + " moving"});
+                               Count(move_n) + " steady moving triples: " + world::PrintfText("%.2f mm", moving * 1e3) +
+                                   " and " + world::PrintfText("%.4f rad", heading_moving) + " moving"});
     } else {
       AddKey(report, KeptKey(base_, "pose_noise_moving_factor", "too few steady moving measurements (" +
                                                                    Count(move_n) + "; 50 needed)"));
@@ -243,11 +243,11 @@ void CalibrationTracker::FitQuanta(CalibrationReport* report) const {
     return 0.0;
   };
   double n = 0;
-  const double heading_q = quantum([](const sim::Pose2& p) { return p.theta_rad; }, &n);
+  const double heading_q = quantum([](const world::Pose2& p) { return p.theta_rad; }, &n);
   AddKey(report, FittedKey{"pose_quantum_rad", heading_q, heading_q, heading_q, true,
                            heading_q > 0 ? "every one of " + Count(n) + " headings is a multiple of it"
                                          : "the " + Count(n) + " headings are not rounded to 0.1 mrad or coarser"});
-  const double position_q = quantum([](const sim::Pose2& p) { return p.x_m; }, &n);
+  const double position_q = quantum([](const world::Pose2& p) { return p.x_m; }, &n);
   AddKey(report, FittedKey{"pose_quantum_m", position_q, position_q, position_q, true,
                            position_q > 0 ? "every one of " + Count(n) + " x values is a multiple of it"
                                           : "the " + Count(n) + " x values are not rounded to 0.1 mm or coarser"});
@@ -321,7 +321,7 @@ void CalibrationTracker::FitTiming(CalibrationReport* report) const {
     for (double step_s : s.step_s) {
       const double late = step_s - dt;
       steps += 1;
-      if (late >= sim::RealismParams::kMinStallS) {
+      if (late >= world::RealismParams::kMinStallS) {
         stalls += 1;
         longest = std::max(longest, late);
       } else {
@@ -344,14 +344,14 @@ void CalibrationTracker::FitTiming(CalibrationReport* report) const {
   const double half = kZ95 * sd / std::sqrt(normal);
   AddKey(report, FittedKey{"step_overrun_mean_s", std::max(0.0, mean), std::max(0.0, mean - half),
                            std::max(0.0, mean + half), true,
-                           Count(normal) + " steps, mean period " + sim::PrintfText("%.2f ms", (dt + mean) * 1e3)});
+                           Count(normal) + " steps, mean period " + world::PrintfText("%.2f ms", (dt + mean) * 1e3)});
   AddKey(report, ProportionKey("loop_stall_probability", stalls, steps,
                                Count(stalls) + " stalls (steps over " +
-                                   sim::PrintfText("%.0f ms", (dt + sim::RealismParams::kMinStallS) * 1e3) + ") in " +
+                                   world::PrintfText("%.0f ms", (dt + world::RealismParams::kMinStallS) * 1e3) + ") in " +
                                    Count(steps) + " steps"));
   if (stalls > 0) {
-    AddKey(report, FittedKey{"loop_stall_max_s", std::max(longest, sim::RealismParams::kMinStallS),
-                             std::max(longest, sim::RealismParams::kMinStallS), sim::RealismParams::kMaxStallS, true,
+    AddKey(report, FittedKey{"loop_stall_max_s", std::max(longest, world::RealismParams::kMinStallS),
+                             std::max(longest, world::RealismParams::kMinStallS), world::RealismParams::kMaxStallS, true,
                              "the longest stall seen (a lower bound)"});
   } else {
     AddKey(report, KeptKey(base_, "loop_stall_max_s", "no stall seen"));

@@ -15,7 +15,7 @@ namespace dream::bridge {
 class CalibrationTracker {
  public:
   CalibrationTracker(const std::vector<CalibrationSeries>& series, const std::vector<std::vector<bool>>& moving,
-                     const sim::RealismParams& base);
+                     const world::RealismParams& base);
 
   // Noise at rest from consecutive measurements of resting robots; needs no
   // dynamics, so the dynamics fit can weigh its residuals with it.
@@ -34,13 +34,13 @@ class CalibrationTracker {
 
   const std::vector<CalibrationSeries>& series_;
   const std::vector<std::vector<bool>>& moving_;
-  sim::RealismParams base_;
+  world::RealismParams base_;
 };
 
 // Helpers shared by the fits.
-FittedKey KeptKey(const sim::RealismParams& base, const char* key, const std::string& why);
-double RealismValue(const sim::RealismParams& params, const std::string& key);
-void SetRealismValue(sim::RealismParams* params, const std::string& key, double value);
+FittedKey KeptKey(const world::RealismParams& base, const char* key, const std::string& why);
+double RealismValue(const world::RealismParams& params, const std::string& key);
+void SetRealismValue(world::RealismParams* params, const std::string& key, double value);
 void AddKey(CalibrationReport* report, FittedKey key);
 
 }  // namespace dream::bridge

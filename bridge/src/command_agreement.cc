@@ -13,8 +13,8 @@ CommandAgreement CommandAgreement::Of(const LabReplayWorld& replay) {
     robot.robot = i;
     for (int64_t k = 0; k < replay.step(); ++k) {
       if (!replay.has_agent_command(k, i)) continue;
-      const sim::UnicycleCommand& agent = replay.agent_command(k, i);
-      const sim::UnicycleCommand& lab = replay.track().command(k, i);
+      const world::UnicycleCommand& agent = replay.agent_command(k, i);
+      const world::UnicycleCommand& lab = replay.track().command(k, i);
       const double dv = agent.v_mps - lab.v_mps;
       const double dw = agent.w_radps - lab.w_radps;
       robot.v_mps.Add(dv, k);

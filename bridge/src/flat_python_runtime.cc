@@ -6,7 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "dream/node/file_text.h"
+#include "dream/files/file_text.h"
 
 namespace dream::bridge {
 namespace {
@@ -119,7 +119,7 @@ FlatPythonRuntime FlatPythonRuntime::Read(const std::string& runtime_dir) {
       throw std::runtime_error(path + ": missing; the controller strategy ships the Python runtime from " +
                                package.string() + " (is this dream's python/ folder complete?)");
     }
-    runtime.files_.push_back({FileNameOf(module), Flatten(module, sim::ReadFileText(path), path)});
+    runtime.files_.push_back({FileNameOf(module), Flatten(module, files::ReadFileText(path), path)});
   }
   return runtime;
 }

@@ -61,7 +61,7 @@ double Crossing(F f, double inside, double outside, double level, int evaluation
 
 bool AnyMotionCommanded(const std::vector<CalibrationSeries>& series) {
   for (const CalibrationSeries& s : series) {
-    for (const sim::UnicycleCommand& c : s.commands) {
+    for (const world::UnicycleCommand& c : s.commands) {
       if (std::abs(c.v_mps) > 0.01 || std::abs(c.w_radps) > 0.1) return true;
     }
   }
@@ -73,7 +73,7 @@ double LargestExtent(const std::vector<CalibrationSeries>& series) {
   for (const CalibrationSeries& s : series) {
     // Noise alone walks too: the net extent, not the path length.
     double min_x = s.poses[0].x_m, max_x = min_x, min_y = s.poses[0].y_m, max_y = min_y;
-    for (const sim::Pose2& p : s.poses) {
+    for (const world::Pose2& p : s.poses) {
       min_x = std::min(min_x, p.x_m);
       max_x = std::max(max_x, p.x_m);
       min_y = std::min(min_y, p.y_m);
@@ -127,7 +127,7 @@ struct DynamicsFit {
   double lag_low = 0, lag_high = 0, startup_low = 0, startup_high = 0;
 };
 
-DynamicsFit FitDynamics(const CalibrationDynamics& dynamics, const sim::RealismParams& base) {
+DynamicsFit FitDynamics(const CalibrationDynamics& dynamics, const world::RealismParams& base) {
   DynamicsFit fit;
   DynamicsParams& best = fit.best;
   best = {base.pose_delay_steps + base.command_latency_steps, base.motor_lag_s, base.motor_startup_m};
@@ -180,9 +180,9 @@ DynamicsFit FitDynamics(const CalibrationDynamics& dynamics, const sim::RealismP
 
 // The delay and wheel keys of `fit`. Poses and commands show only the total
 // delay: the base's pose delay is kept, unless the total is shorter.
-void AddDynamicsKeys(const DynamicsFit& fit, const sim::RealismParams& base, CalibrationReport* report) {
+void AddDynamicsKeys(const DynamicsFit& fit, const world::RealismParams& base, CalibrationReport* report) {
   const DynamicsParams& best = fit.best;
-  const std::string transitions = sim::PrintfText("%lld", static_cast<long long>(fit.evaluation.transitions));
+  const std::string transitions = world::PrintfText("%lld", static_cast<long long>(fit.evaluation.transitions));
   const int pose_delay = std::min(base.pose_delay_steps, best.delay_steps);
   if (pose_delay < base.pose_delay_steps) {
     AddKey(report, FittedKey{"pose_delay_steps", static_cast<double>(pose_delay), static_cast<double>(pose_delay),
@@ -206,7 +206,7 @@ void AddDynamicsKeys(const DynamicsFit& fit, const sim::RealismParams& base, Cal
 
 // A mean and spread key pair from per-robot values (and their errors).
 void AddPopulationKeys(const char* mean_key, const char* spread_key, const std::vector<double>& values,
-                       const std::vector<double>& errors, const char* what, const sim::RealismParams& base,
+                       const std::vector<double>& errors, const char* what, const world::RealismParams& base,
                        CalibrationReport* report) {
   const Population p = PopulationOf(values, errors);
   if (p.n == 0) {
@@ -224,7 +224,7 @@ void AddPopulationKeys(const char* mean_key, const char* spread_key, const std::
 }
 
 // The gains and drift of the robots that drove (turned) far enough to tell.
-void AddGainKeys(const DynamicsEvaluation& fitted, const sim::RealismParams& base, CalibrationReport* report) {
+void AddGainKeys(const DynamicsEvaluation& fitted, const world::RealismParams& base, CalibrationReport* report) {
   std::vector<double> linear, linear_se, angular, angular_se, drift, drift_se;
   for (const RobotGains& g : fitted.gains) {
     if (g.linear_seen) {
@@ -250,12 +250,12 @@ std::vector<std::vector<bool>> MovingAtEachMeasurement(const std::vector<Calibra
                                                        const CalibrationDynamics& dynamics,
                                                        const DynamicsParams& params) {
   std::vector<std::vector<bool>> moving(series.size());
-  std::vector<sim::UnicycleCommand> driven;
+  std::vector<world::UnicycleCommand> driven;
   std::vector<double> motion_s;
   for (size_t r = 0; r < series.size(); ++r) {
     dynamics.Predict(series[r], params, &driven, &motion_s);
     moving[r].assign(series[r].steps(), false);
-    for (size_t k = 1; k < series[r].steps(); ++k) moving[r][k] = sim::RealisticWorld::IsMoving(driven[k - 1]);
+    for (size_t k = 1; k < series[r].steps(); ++k) moving[r][k] = world::RealisticWorld::IsMoving(driven[k - 1]);
   }
   return moving;
 }
@@ -305,7 +305,7 @@ CalibrationReport LabCalibration::Fit(const std::vector<CalibrationRun>& runs) c
   // Keys nothing here fits keep the base's, and every key appears once, in
   // RealismParams::Fields() order.
   std::vector<FittedKey> ordered;
-  for (const sim::RealismParams::Field& field : sim::RealismParams::Fields()) {
+  for (const world::RealismParams::Field& field : world::RealismParams::Fields()) {
     const FittedKey* found = report.Find(field.key);
     ordered.push_back(found != nullptr ? *found
                                        : KeptKey(base_, field.key, "not visible in poses and commands; kept the base's"));

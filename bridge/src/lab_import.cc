@@ -13,10 +13,10 @@
 #include "dream/bridge/mat_file.h"
 #include "dream/bridge/pre_validation.h"
 #include "dream/bridge/sha256.h"
-#include "dream/node/file_text.h"
-#include "dream/node/json_text.h"
-#include "dream/node/output_folder.h"
-#include "dream/node/output_folder_lock.h"
+#include "dream/files/file_text.h"
+#include "dream/files/json_text.h"
+#include "dream/files/output_folder.h"
+#include "dream/files/output_folder_lock.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/lcm/channels.h"
 #include "dream/lcm/message_limits.h"
@@ -59,12 +59,12 @@ std::string ColumnMeaning(int64_t column, int num_robots) {
   return std::string(kNames[index / num_robots]) + " of robot " + std::to_string(index % num_robots);
 }
 
-std::vector<std::vector<sim::ObstacleState>> ObstaclesPerStep(const std::vector<sim::RectangleObstacleSpec>& specs,
+std::vector<std::vector<world::ObstacleState>> ObstaclesPerStep(const std::vector<world::RectangleObstacleSpec>& specs,
                                                               int64_t last_step, double time_step_s) {
-  std::vector<sim::RectangleObstacle> obstacles(specs.begin(), specs.end());
-  std::vector<std::vector<sim::ObstacleState>> states(static_cast<size_t>(last_step + 1));
+  std::vector<world::RectangleObstacle> obstacles(specs.begin(), specs.end());
+  std::vector<std::vector<world::ObstacleState>> states(static_cast<size_t>(last_step + 1));
   for (auto& step_states : states) {
-    for (sim::RectangleObstacle& o : obstacles) {
+    for (world::RectangleObstacle& o : obstacles) {
       step_states.push_back(o.State());
       o.Advance(time_step_s);
     }
@@ -73,14 +73,14 @@ std::vector<std::vector<sim::ObstacleState>> ObstaclesPerStep(const std::vector<
 }
 
 template <typename Message>
-void WriteMessage(sim::RunRecorder& recorder, const std::string& channel, int64_t utime, const Message& message,
+void WriteMessage(node::RunRecorder& recorder, const std::string& channel, int64_t utime, const Message& message,
                   std::vector<uint8_t>* buffer) {
   buffer->resize(static_cast<size_t>(message.getEncodedSize()));
   message.encode(buffer->data(), 0, static_cast<int>(buffer->size()));
   recorder.Write(channel, utime, buffer->data(), static_cast<int>(buffer->size()));
 }
 
-void WriteStatus(sim::RunRecorder& recorder, const sim::World& world, int64_t run_id, int8_t state,
+void WriteStatus(node::RunRecorder& recorder, const world::World& world, int64_t run_id, int8_t state,
                  const std::string& detail, std::vector<uint8_t>* buffer) {
   run_status_t status;
   status.utime = world.utime();
@@ -88,7 +88,7 @@ void WriteStatus(sim::RunRecorder& recorder, const sim::World& world, int64_t ru
   status.run_id = run_id;
   status.state = state;
   status.num_robots = world.num_robots();
-  const sim::ViolationCounts& counts = world.violations();
+  const world::ViolationCounts& counts = world.violations();
   status.boundary_errors = counts.boundary_errors;
   status.collision_errors = counts.collision_errors;
   status.actuator_errors = counts.actuator_errors;
@@ -109,17 +109,17 @@ int64_t ImportedRunId(const RunTrack& track) {
     for (size_t i = 0; i < size; ++i) hash = (hash ^ bytes[i]) * 1099511628211ULL;
   };
   mix(&track.num_robots, sizeof(track.num_robots));
-  for (const sim::Pose2& pose : track.poses) mix(&pose, sizeof(pose));
+  for (const world::Pose2& pose : track.poses) mix(&pose, sizeof(pose));
   return hash == 0 ? 1 : static_cast<int64_t>(hash);
 }
 
 /// Writes the log and returns the world stepped to the end (for the summary).
-LabReplayWorld WriteLog(const RunTrack& track, const sim::WorldParams& params, int8_t end_state,
+LabReplayWorld WriteLog(const RunTrack& track, const world::WorldParams& params, int8_t end_state,
                         const std::string& detail, const std::string& log_path, int64_t* events = nullptr) {
   LabReplayWorld world(track, params);
-  sim::RunRecorder recorder(log_path, 4096);
+  node::RunRecorder recorder(log_path, 4096);
   std::vector<uint8_t> buffer;
-  std::vector<sim::ObstacleState> states;
+  std::vector<world::ObstacleState> states;
   obstacles_t obstacles;
   robot_poses_t poses;
   velocity_command_t command;
@@ -136,18 +136,18 @@ LabReplayWorld WriteLog(const RunTrack& track, const sim::WorldParams& params, i
     const int64_t k = world.step();
     const int64_t utime = world.utime();
     // The messages SimNode would send on this world (velocities zero at step 0).
-    sim::WorldMessages::Fill(world, &states, &obstacles);
+    node::WorldMessages::Fill(world, &states, &obstacles);
     obstacles.utime = utime;
     WriteMessage(recorder, lcm::kObstaclesChannel, utime, obstacles, &buffer);
     WriteStatus(recorder, world, run_id, run_status_t::RUNNING, "lab run", &buffer);
-    sim::WorldMessages::Fill(world, &poses);
+    node::WorldMessages::Fill(world, &poses);
     poses.utime = utime;
     WriteMessage(recorder, lcm::kPosesChannel, utime, poses, &buffer);
     if (k == world.last_step()) break;
     command.utime = utime;
     command.step = k;
     for (int i = 0; i < n; ++i) {
-      const sim::UnicycleCommand& sent = track.command(k, i);
+      const world::UnicycleCommand& sent = track.command(k, i);
       command.robot_id = i;
       command.v = sent.v_mps;
       command.w = sent.w_radps;
@@ -210,7 +210,7 @@ ExportedSubmission ExportedSubmission::Read(const std::string& dir) {
   std::optional<nlohmann::json> manifest;
   if (fs::exists(manifest_path)) {
     try {
-      manifest = nlohmann::json::parse(sim::ReadFileText(manifest_path));
+      manifest = nlohmann::json::parse(files::ReadFileText(manifest_path));
     } catch (const nlohmann::json::exception& e) {
       throw std::runtime_error(manifest_path + ": not valid JSON: " + e.what());
     }
@@ -227,8 +227,8 @@ ExportedSubmission ExportedSubmission::Read(const std::string& dir) {
   exported.params = SubmissionParams::FromNpy(ReadNpyFile(params_path, 1 << 20), params_path);
   const std::string config_path = (root / "config.yaml").string();
   if (!fs::exists(config_path)) throw std::runtime_error(config_path + ": missing; export the run again");
-  exported.config = config::LoadRunConfigFile(config_path);
-  exported.config_text = sim::ReadFileText(config_path);
+  exported.config = run_config::LoadRunConfigFile(config_path);
+  exported.config_text = files::ReadFileText(config_path);
   if (exported.config.num_robots != exported.params.num_robots) {
     throw std::runtime_error(config_path + ": has " + std::to_string(exported.config.num_robots) + " robots but " +
                              params_path + " " + std::to_string(exported.params.num_robots) +
@@ -245,7 +245,7 @@ int64_t ExportedSubmission::MaxResultValues() const {
   return rows * ResultLayout::Columns(params.num_robots);
 }
 
-sim::LabVerifierRules::Declaration ExportedSubmission::UploadDeclaration() const {
+world::LabVerifierRules::Declaration ExportedSubmission::UploadDeclaration() const {
   // As ExportSubmission computes UPLOAD.txt's "Estimated duration to declare".
   const int64_t max_iterations = params.steps + params.options.settle_max_steps;
   return {params.num_robots, static_cast<double>(max_iterations) * config.world.time_step_s};
@@ -384,13 +384,13 @@ LabResult ParseLabResult(const NpyArray& rows, const std::string& name, const Ex
     }
     previous_utime = utime;
     track.utime[static_cast<size_t>(k)] = utime;
-    sim::Pose2* step_poses = &track.poses[static_cast<size_t>(k) * un];
-    sim::UnicycleCommand* step_commands = &track.commands[static_cast<size_t>(k) * un];
+    world::Pose2* step_poses = &track.poses[static_cast<size_t>(k) * un];
+    world::UnicycleCommand* step_commands = &track.commands[static_cast<size_t>(k) * un];
     const bool last = k == pose_rows - 1;
     for (size_t i = 0; i < un; ++i) {
       const double* base = values + ResultLayout::kFixedColumns + i;
-      step_poses[i] = sim::Pose2{base[0], base[un], base[2 * un]};
-      step_commands[i] = last ? sim::UnicycleCommand{} : sim::UnicycleCommand{base[3 * un], base[4 * un]};
+      step_poses[i] = world::Pose2{base[0], base[un], base[2 * un]};
+      step_commands[i] = last ? world::UnicycleCommand{} : world::UnicycleCommand{base[3 * un], base[4 * un]};
     }
   }
   result.wall_duration_s = static_cast<double>(track.utime.back()) / 1e6;
@@ -398,22 +398,22 @@ LabResult ParseLabResult(const NpyArray& rows, const std::string& name, const Ex
   return result;
 }
 
-sim::ViolationCounts WriteLabRunLog(const RunTrack& track, const sim::WorldParams& world, int8_t end_state,
+world::ViolationCounts WriteLabRunLog(const RunTrack& track, const world::WorldParams& world, int8_t end_state,
                                     const std::string& detail, const std::string& log_path) {
   return WriteLog(track, world, end_state, detail, log_path).violations();
 }
 
-std::vector<sim::VerdictReason> LabVerifierReasons(const LabResult& lab, const sim::WorldParams& world,
-                                                   const sim::LabVerifierRules::Declaration& declared) {
-  sim::LabVerifierRules rules;
+std::vector<world::VerdictReason> LabVerifierReasons(const LabResult& lab, const world::WorldParams& world,
+                                                   const world::LabVerifierRules::Declaration& declared) {
+  world::LabVerifierRules rules;
   rules.time_step_s = world.time_step_s;
-  sim::LabVerifierRules::Counts counts = VerifierCounts(lab.track, world);
+  world::LabVerifierRules::Counts counts = VerifierCounts(lab.track, world);
   counts.iterations = lab.iterations;  // the settle phase counts too: the verifier counts every step()
   return rules.Check(declared, counts);
 }
 
 ImportedRun ImportLabRun(const std::string& result_path, const std::string& export_dir, const std::string& out_dir,
-                         const std::optional<sim::LabVerifierRules::Declaration>& declared) {
+                         const std::optional<world::LabVerifierRules::Declaration>& declared) {
   const ExportedSubmission exported = ExportedSubmission::Read(export_dir);
   ImportedRun imported;
   imported.declared = declared.value_or(exported.UploadDeclaration());
@@ -421,8 +421,8 @@ ImportedRun ImportLabRun(const std::string& result_path, const std::string& expo
   const LabResult& lab = imported.lab;
   const RunTrack& track = lab.track;
 
-  const sim::OutputFolder out(out_dir);
-  sim::OutputFolderLock::HoldUntilExit(out.dir());  // a run writing the folder refuses the import, and back
+  const files::OutputFolder out(out_dir);
+  files::OutputFolderLock::HoldUntilExit(out.dir());  // a run writing the folder refuses the import, and back
   imported.log_path = out.PathOf("run.lcmlog");
   imported.summary_path = out.PathOf("summary.json");
   imported.picture_path = out.PathOf("trajectories.png");
@@ -440,22 +440,22 @@ ImportedRun ImportLabRun(const std::string& result_path, const std::string& expo
   out.WriteFile("config.yaml", exported.config_text);
   KeepControllerModule(exported.config, out);
 
-  sim::RunOutcome outcome;
-  outcome.end = lab.complete ? sim::RunOutcome::End::kFinished : sim::RunOutcome::End::kInterrupted;
+  node::RunOutcome outcome;
+  outcome.end = lab.complete ? node::RunOutcome::End::kFinished : node::RunOutcome::End::kInterrupted;
   outcome.reason = detail;
   outcome.steps = track.last_step();
   outcome.wall_time_s = lab.wall_duration_s;
   outcome.log_events = log_events;
   // Judged as a lab run: the verifier's rules on what the lab did against
   // what was declared (not JudgeRun's, which assumes the run is its own export).
-  sim::RunJudgement judgement(
-      sim::RunReport::FromViolations(world.step(), world.violations(), exported.config.world.time_step_s));
+  world::RunJudgement judgement(
+      world::RunReport::FromViolations(world.step(), world.violations(), exported.config.world.time_step_s));
   judgement.Add(LabVerifierReasons(lab, exported.config.world, imported.declared));
-  judgement.Add(sim::OutcomeReasons(outcome));
+  judgement.Add(node::OutcomeReasons(outcome));
   imported.verdict = judgement.verdict();
   imported.verdict_reasons = judgement.reasons();
   nlohmann::ordered_json summary = nlohmann::ordered_json::parse(
-      sim::RunSummaryJson(exported.config, outcome, world, "run.lcmlog", judgement));
+      node::RunSummaryJson(exported.config, outcome, world, "run.lcmlog", judgement));
   summary["config"] = "config.yaml";
   const run_log::RunLog log = run_log::RunLog::Read(imported.log_path);  // once, for the metrics and the picture
   summary["metrics"] = MetricsJson(exported.config, log);
@@ -477,9 +477,9 @@ ImportedRun ImportLabRun(const std::string& result_path, const std::string& expo
   lab_json["max_step_s"] = lab.max_step_s;
   lab_json["clock_steps_back"] = lab.clock_steps_back;
   summary["lab"] = lab_json;
-  imported.summary_json = sim::JsonText(summary) + "\n";
+  imported.summary_json = files::JsonText(summary) + "\n";
   out.WriteFile("summary.json", imported.summary_json);
-  sim::TrajectoryPicture::Render(log, sim::ArenaOverlays{}, imported.picture_path, sim::RenderFormat::kPng);
+  render::TrajectoryPicture::Render(log, render::ArenaOverlays{}, imported.picture_path, render::RenderFormat::kPng);
   return imported;
 }
 

@@ -24,7 +24,7 @@ std::vector<ModelPrediction> LabModelCheck::Predict(const std::vector<Calibratio
   const std::vector<CalibrationSeries> series = CalibrationSeries::Of(runs);
   std::vector<ModelPrediction> predictions;
   for (const NamedModel& model : models) {
-    const sim::RealismParams& p = model.params;
+    const world::RealismParams& p = model.params;
     const CalibrationDynamics dynamics(series, p, std::max(p.pose_noise_m, 1e-4), std::max(p.pose_noise_rad, 1e-3));
     const DynamicsParams dynamics_params{p.pose_delay_steps + p.command_latency_steps, p.motor_lag_s, p.motor_startup_m};
     DynamicsEvaluation gains;
@@ -39,14 +39,14 @@ std::vector<ModelPrediction> LabModelCheck::Predict(const std::vector<Calibratio
     prediction.name = model.name;
     prediction.step_responses = std::move(evidence.step_responses);
     double position_sq = 0, heading_sq = 0;
-    std::vector<sim::UnicycleCommand> driven;
+    std::vector<world::UnicycleCommand> driven;
     std::vector<double> motion_s;
     for (const CalibrationSeries& s : series) {
       dynamics.Predict(s, dynamics_params, &driven, &motion_s);
       for (size_t k = kWarmUp; k + kHorizonSteps < s.steps(); k += kEvery) {
         const size_t end = k + kHorizonSteps;
         if (s.stale[k] || s.stale[end] || s.near_late[k] || s.near_late[end]) continue;
-        sim::Pose2 pose = s.poses[k];
+        world::Pose2 pose = s.poses[k];
         for (size_t j = k; j < end; ++j) {
           const double v = driven[j].v_mps * p.linear_gain_mean;
           double w = driven[j].w_radps * p.angular_gain_mean;
@@ -55,7 +55,7 @@ std::vector<ModelPrediction> LabModelCheck::Predict(const std::vector<Calibratio
           pose.y_m += motion_s[j] * v * std::sin(pose.theta_rad);
           pose.theta_rad += motion_s[j] * w;
         }
-        const sim::Pose2& real = s.poses[end];
+        const world::Pose2& real = s.poses[end];
         position_sq += std::pow(pose.x_m - real.x_m, 2) + std::pow(pose.y_m - real.y_m, 2);
         heading_sq += std::pow(WrappedAngle(pose.theta_rad - real.theta_rad), 2);
         ++prediction.predictions;
@@ -85,11 +85,11 @@ std::string LabModelCheck::Table(const CalibrationReport& real, const std::vecto
   if (!predictions.empty()) {
     for (size_t c = 0; c < predictions.front().step_responses.size(); ++c) {
       const StepResponseCurve& measured = predictions.front().step_responses[c];
-      out << sim::PrintfText("| %.2f m/s (%d) | %.0f / %.1f |", measured.speed_mps, measured.events,
+      out << world::PrintfText("| %.2f m/s (%d) | %.0f / %.1f |", measured.speed_mps, measured.events,
                              measured.real_delay_s * 1e3, measured.real_first_motion_step);
       for (const ModelPrediction& prediction : predictions) {
         const StepResponseCurve& curve = prediction.step_responses[c];
-        out << sim::PrintfText(" %.0f / %.1f |", curve.fitted_delay_s * 1e3, curve.fitted_first_motion_step);
+        out << world::PrintfText(" %.0f / %.1f |", curve.fitted_delay_s * 1e3, curve.fitted_first_motion_step);
       }
       out << "\n";
     }
@@ -97,19 +97,19 @@ std::string LabModelCheck::Table(const CalibrationReport& real, const std::vecto
   out << "\n1 s open-loop prediction from the real poses (RMS error)\n\n";
   header("error");
   out << "| position (cm) | 0 |";
-  for (const ModelPrediction& prediction : predictions) out << sim::PrintfText(" %.2f |", prediction.position_error_m * 100);
+  for (const ModelPrediction& prediction : predictions) out << world::PrintfText(" %.2f |", prediction.position_error_m * 100);
   out << "\n| heading (rad) | 0 |";
-  for (const ModelPrediction& prediction : predictions) out << sim::PrintfText(" %.3f |", prediction.heading_error_rad);
+  for (const ModelPrediction& prediction : predictions) out << world::PrintfText(" %.3f |", prediction.heading_error_rad);
   out << "\n\nWhat the runs show (a fit of them; kept keys are not shown) against each model\n\n";
   header("key");
   for (const FittedKey& key : real.keys) {
     if (!key.determined) continue;
-    out << "| " << key.key << " | " << sim::PrintfText("%.4g", key.value) << " |";
+    out << "| " << key.key << " | " << world::PrintfText("%.4g", key.value) << " |";
     for (const NamedModel& model : models) {
-      for (const sim::RealismParams::Field& field : sim::RealismParams::Fields()) {
+      for (const world::RealismParams::Field& field : world::RealismParams::Fields()) {
         if (key.key != field.key) continue;
         const double value = field.number != nullptr ? model.params.*field.number : model.params.*field.steps;
-        out << " " << sim::PrintfText("%.4g", value) << " |";
+        out << " " << world::PrintfText("%.4g", value) << " |";
       }
     }
     out << "\n";

@@ -23,7 +23,7 @@ const RunTrack& Checked(const RunTrack& track) {
 
 }  // namespace
 
-LabReplayWorld::LabReplayWorld(RunTrack track, const sim::WorldParams& params, sim::RunRecorder* lab_command_log)
+LabReplayWorld::LabReplayWorld(RunTrack track, const world::WorldParams& params, node::RunRecorder* lab_command_log)
     : track_((Checked(track), std::move(track))),
       params_(params),
       lab_command_log_(lab_command_log),
@@ -44,11 +44,11 @@ void LabReplayWorld::Load() {
   for (size_t i = 0; i < n; ++i) {
     poses_[i] = track_.poses[k * n + i];
     lab_commands_[i] = track_.commands[k * n + i];
-    velocities_[i] = k == 0 ? sim::UnicycleCommand{} : track_.commands[(k - 1) * n + i];
+    velocities_[i] = k == 0 ? world::UnicycleCommand{} : track_.commands[(k - 1) * n + i];
   }
 }
 
-void LabReplayWorld::GetObstacleStates(std::vector<sim::ObstacleState>* states) const {
+void LabReplayWorld::GetObstacleStates(std::vector<world::ObstacleState>* states) const {
   *states = track_.obstacles[static_cast<size_t>(step_)];
 }
 
@@ -59,7 +59,7 @@ void LabReplayWorld::CheckRobotId(int robot_id, const char* caller) const {
   }
 }
 
-void LabReplayWorld::SetCommand(int robot_id, const sim::UnicycleCommand& command) {
+void LabReplayWorld::SetCommand(int robot_id, const world::UnicycleCommand& command) {
   CheckRobotId(robot_id, "SetCommand");
   if (!std::isfinite(command.v_mps) || !std::isfinite(command.w_radps)) {
     throw std::invalid_argument("LabReplayWorld::SetCommand: robot " + std::to_string(robot_id) +
@@ -71,7 +71,7 @@ void LabReplayWorld::SetCommand(int robot_id, const sim::UnicycleCommand& comman
 
 void LabReplayWorld::StopRobot(int robot_id) {
   CheckRobotId(robot_id, "StopRobot");
-  held_[static_cast<size_t>(robot_id)] = sim::UnicycleCommand{};
+  held_[static_cast<size_t>(robot_id)] = world::UnicycleCommand{};
   has_held_[static_cast<size_t>(robot_id)] = 0;
 }
 
@@ -114,7 +114,7 @@ bool LabReplayWorld::has_agent_command(int64_t step, int robot) const {
   return has_agent_command_[static_cast<size_t>(step) * static_cast<size_t>(track_.num_robots) + static_cast<size_t>(robot)] != 0;
 }
 
-const sim::UnicycleCommand& LabReplayWorld::agent_command(int64_t step, int robot) const {
+const world::UnicycleCommand& LabReplayWorld::agent_command(int64_t step, int robot) const {
   CheckRobotId(robot, "agent_command");
   if (step < 0 || step >= step_) throw std::out_of_range("LabReplayWorld::agent_command: step not taken yet");
   return agent_commands_[static_cast<size_t>(step) * static_cast<size_t>(track_.num_robots) + static_cast<size_t>(robot)];

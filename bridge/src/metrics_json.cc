@@ -5,9 +5,9 @@
 
 namespace dream::bridge {
 
-nlohmann::ordered_json MetricsJson(const config::RunConfig& config, const run_log::RunLog& log) {
+nlohmann::ordered_json MetricsJson(const run_config::RunConfig& config, const run_log::RunLog& log) {
   try {
-    return MetricsJson(agents::ControllerFactory(config), log);
+    return MetricsJson(agent_host::ControllerFactory(config), log);
   } catch (const std::exception& e) {
     nlohmann::ordered_json json;
     json["error"] = e.what();
@@ -15,11 +15,11 @@ nlohmann::ordered_json MetricsJson(const config::RunConfig& config, const run_lo
   }
 }
 
-nlohmann::ordered_json MetricsJson(const agents::ControllerFactory& factory, const run_log::RunLog& log) {
+nlohmann::ordered_json MetricsJson(const agent_host::ControllerFactory& factory, const run_log::RunLog& log) {
   nlohmann::ordered_json json;
   try {
     std::optional<agents::GoalJudgement> goal;
-    const agents::MetricsReport report = agents::MetricsFromLog(factory, log, &goal);
+    const agents::MetricsReport report = agent_host::MetricsFromLog(factory, log, &goal);
     json["kind"] = factory.kind();
     if (goal) {
       // The kind's own success rule, in the standard form sweeps, export and the verdict read.

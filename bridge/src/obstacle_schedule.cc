@@ -18,7 +18,7 @@ int64_t ObstacleScheduleBytes(int64_t obstacles, int64_t steps) {
   return (steps + 1) * row_bytes;
 }
 
-NpyArray ObstacleSchedule(const std::vector<sim::RectangleObstacleSpec>& specs, double time_step_s, int64_t steps) {
+NpyArray ObstacleSchedule(const std::vector<world::RectangleObstacleSpec>& specs, double time_step_s, int64_t steps) {
   if (steps < 0) throw std::invalid_argument("an obstacle schedule needs steps >= 0, got " + std::to_string(steps));
   const int64_t bytes = ObstacleScheduleBytes(static_cast<int64_t>(specs.size()), steps);
   if (bytes > kMaxObstacleScheduleBytes) {
@@ -26,14 +26,14 @@ NpyArray ObstacleSchedule(const std::vector<sim::RectangleObstacleSpec>& specs, 
                                 std::to_string(steps) + " steps would exceed " +
                                 std::to_string(kMaxObstacleScheduleBytes >> 20) + " MiB");
   }
-  std::vector<sim::RectangleObstacle> obstacles = sim::RectangleObstacle::BuildAll(specs, "config", "obstacles");
+  std::vector<world::RectangleObstacle> obstacles = world::RectangleObstacle::BuildAll(specs, "config", "obstacles");
   const auto m = static_cast<int64_t>(obstacles.size());
   NpyArray array;
   array.shape = {steps + 1, m, kObstacleColumns};
   array.values.resize(static_cast<size_t>((steps + 1) * m * kObstacleColumns));
   double* row = array.values.data();
   for (int64_t k = 0; k <= steps; ++k) {
-    for (sim::RectangleObstacle& obstacle : obstacles) {
+    for (world::RectangleObstacle& obstacle : obstacles) {
       const Eigen::Vector2d velocity = obstacle.velocity_mps();
       row[kObstacleId] = obstacle.id();
       row[kObstacleCenterX] = obstacle.center_m().x();

@@ -40,13 +40,13 @@ std::string ExportProblem::Text() const {
   return rule + ": " + (where.empty() ? "" : where + ": ") + problem + ". Fix: " + fix;
 }
 
-sim::LabVerifierRules::Counts VerifierCounts(const RunTrack& track, const sim::WorldParams& world) {
-  sim::LabVerifierRules::Counts counts;
+world::LabVerifierRules::Counts VerifierCounts(const RunTrack& track, const world::WorldParams& world) {
+  world::LabVerifierRules::Counts counts;
   counts.num_robots = track.num_robots;
   counts.iterations = std::max<int64_t>(track.last_step(), 0);
   if (track.num_robots < 1) return counts;
-  sim::ViolationChecker checker(world, track.num_robots);
-  std::vector<sim::Pose2> poses(static_cast<size_t>(track.num_robots));
+  world::ViolationChecker checker(world, track.num_robots);
+  std::vector<world::Pose2> poses(static_cast<size_t>(track.num_robots));
   for (int64_t k = 0; k < track.last_step(); ++k) {
     for (int i = 0; i < track.num_robots; ++i) poses[static_cast<size_t>(i)] = track.pose(k, i);
     checker.Check(k, poses, nullptr, track.obstacles[static_cast<size_t>(k)]);
@@ -56,13 +56,13 @@ sim::LabVerifierRules::Counts VerifierCounts(const RunTrack& track, const sim::W
   return counts;
 }
 
-sim::LabVerifierRules::Counts VerifierCounts(const run_log::RunLog& log, const sim::WorldParams& world) {
+world::LabVerifierRules::Counts VerifierCounts(const run_log::RunLog& log, const world::WorldParams& world) {
   return VerifierCounts(RunTrackOf(log), world);
 }
 
-std::vector<ExportProblem> PreValidate(const RunTrack& track, const RunEnd& end, const sim::WorldParams& world,
+std::vector<ExportProblem> PreValidate(const RunTrack& track, const RunEnd& end, const world::WorldParams& world,
                                        int64_t settle_max_steps, const LabLimits& limits, int64_t experiment_steps,
-                                       const std::optional<sim::LabVerifierRules::Declaration>& declared) {
+                                       const std::optional<world::LabVerifierRules::Declaration>& declared) {
   std::vector<ExportProblem> problems;
   const int n = track.num_robots;
   const int64_t steps = experiment_steps < 0 ? track.last_step() : experiment_steps;
@@ -88,14 +88,14 @@ std::vector<ExportProblem> PreValidate(const RunTrack& track, const RunEnd& end,
   // The lab verifier's rules, on what the script will do: ask for the
   // recorded robots and run at most `iterations` steps.
   {
-    sim::LabVerifierRules rules;
+    world::LabVerifierRules rules;
     rules.time_step_s = world.time_step_s;
     rules.max_duration_s = limits.max_duration_s;
-    sim::LabVerifierRules::Counts counts = VerifierCounts(track, world);
+    world::LabVerifierRules::Counts counts = VerifierCounts(track, world);
     counts.iterations = iterations;
-    const sim::LabVerifierRules::Declaration declaration =
-        declared.value_or(sim::LabVerifierRules::Declaration{n, duration_s});
-    for (const sim::VerdictReason& reason : rules.Check(declaration, counts)) {
+    const world::LabVerifierRules::Declaration declaration =
+        declared.value_or(world::LabVerifierRules::Declaration{n, duration_s});
+    for (const world::VerdictReason& reason : rules.Check(declaration, counts)) {
       if (reason.rule == "lab_duration_cap" && duration_s > limits.max_duration_s) continue;  // `duration` says it
       problems.push_back({reason.rule, -1, -1, -1, reason.problem, reason.find_out});
     }
@@ -119,10 +119,10 @@ std::vector<ExportProblem> PreValidate(const RunTrack& track, const RunEnd& end,
   }
 
   // Start poses: inside the arena with the whole robot, far enough apart.
-  const sim::Arena& arena = world.arena;
+  const world::Arena& arena = world.arena;
   const double margin = limits.start_wall_margin_m;
   for (int i = 0; i < n; ++i) {
-    const sim::Pose2& p = track.pose(0, i);
+    const world::Pose2& p = track.pose(0, i);
     if (p.x_m < arena.x_min_m + margin || p.x_m > arena.x_max_m - margin || p.y_m < arena.y_min_m + margin ||
         p.y_m > arena.y_max_m - margin) {
       problems.push_back({"start_inside_arena", i, -1, 0,
@@ -137,8 +137,8 @@ std::vector<ExportProblem> PreValidate(const RunTrack& track, const RunEnd& end,
   const double d = limits.start_projection_m;
   for (int i = 0; i < n; ++i) {
     for (int j = i + 1; j < n; ++j) {
-      const sim::Pose2& a = track.pose(0, i);
-      const sim::Pose2& b = track.pose(0, j);
+      const world::Pose2& a = track.pose(0, i);
+      const world::Pose2& b = track.pose(0, j);
       const double gap = std::hypot(a.x_m + d * std::cos(a.theta_rad) - b.x_m - d * std::cos(b.theta_rad),
                                     a.y_m + d * std::sin(a.theta_rad) - b.y_m - d * std::sin(b.theta_rad));
       if (gap < limits.start_spacing_m) {
@@ -154,21 +154,21 @@ std::vector<ExportProblem> PreValidate(const RunTrack& track, const RunEnd& end,
 
   // Hard errors on the recorded poses: the first step of each kind, per robot or pair.
   if (n >= 1) {
-    sim::ViolationChecker checker(world, n);
-    std::vector<sim::Pose2> poses(static_cast<size_t>(n));
+    world::ViolationChecker checker(world, n);
+    std::vector<world::Pose2> poses(static_cast<size_t>(n));
     std::map<int, int64_t> out_of_bounds;  // robot -> first step
     std::map<std::pair<int, int>, int64_t> collisions;
     std::map<std::pair<int, int>, int64_t> contacts;
     for (int64_t k = 0; k <= track.last_step(); ++k) {
       for (int i = 0; i < n; ++i) poses[static_cast<size_t>(i)] = track.pose(k, i);
       checker.Check(k, poses, nullptr, track.obstacles[static_cast<size_t>(k)]);
-      const sim::StepEvents& events = checker.last_step_events();
+      const world::StepEvents& events = checker.last_step_events();
       for (int id : events.out_of_bounds_robot_ids) out_of_bounds.emplace(id, k);
       for (const auto& pair : events.colliding_pairs) collisions.emplace(std::make_pair(pair.first_robot_id, pair.second_robot_id), k);
       for (const auto& contact : events.obstacle_contacts) contacts.emplace(std::make_pair(contact.robot_id, contact.obstacle_id), k);
     }
     ListFirstSteps(out_of_bounds, &problems, [&](int robot, int64_t step) -> ExportProblem {
-      const sim::Pose2& p = track.pose(step, robot);
+      const world::Pose2& p = track.pose(step, robot);
       return {"boundary", robot, -1, step,
               "is outside the arena at (" + Num(p.x_m) + ", " + Num(p.y_m) +
                   "): the Robotarium rejects runs with boundary errors",

@@ -5,10 +5,10 @@
 #include <filesystem>
 
 #include "dream/lcm/wire_text.h"
-#include "dream/node/json_text.h"
-#include "dream/node/output_folder.h"
+#include "dream/files/json_text.h"
+#include "dream/files/output_folder.h"
 #include "dream/bridge/run_track.h"
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 #include "dream/render/comparison_picture.h"
 #include "dream/world/run_report.h"
 #include "dream/bridge/metrics_json.h"
@@ -45,7 +45,7 @@ struct ComparedFolders {
         first((fs::path(first_dir) / "run.lcmlog").string()),
         second((fs::path(second_dir) / "run.lcmlog").string()) {}
 
-  static config::RunConfig LoadConfig(const std::string& first_dir, const std::string& second_dir) {
+  static run_config::RunConfig LoadConfig(const std::string& first_dir, const std::string& second_dir) {
     const std::string config_path = (fs::path(first_dir) / "config.yaml").string();
     for (const fs::path& path : {fs::path(first_dir) / "run.lcmlog", fs::path(second_dir) / "run.lcmlog",
                                  fs::path(config_path)}) {
@@ -53,15 +53,15 @@ struct ComparedFolders {
         throw std::runtime_error(path.string() + ": missing; pass two run folders (dream run / dream import)");
       }
     }
-    return config::LoadRunConfigFile(config_path);
+    return run_config::LoadRunConfigFile(config_path);
   }
 
-  config::RunConfig config;
+  run_config::RunConfig config;
   FolderRun first;
   FolderRun second;
 };
 
-ComparedRun Describe(const std::string& folder, const FolderRun& folder_run, const config::RunConfig& config) {
+ComparedRun Describe(const std::string& folder, const FolderRun& folder_run, const run_config::RunConfig& config) {
   const RunTrack& track = folder_run.track;
   const RunEnd& end = folder_run.end;
   ComparedRun run;
@@ -69,13 +69,13 @@ ComparedRun Describe(const std::string& folder, const FolderRun& folder_run, con
   run.steps = track.last_step();
   run.end = end.detail;
   run.violations = end.violations;
-  run.verdict = sim::RunVerdictName(sim::RunReport::FromViolations(run.steps, end.violations).verdict);
+  run.verdict = world::RunVerdictName(world::RunReport::FromViolations(run.steps, end.violations).verdict);
   const int n = track.num_robots;
   for (int64_t k = 0; k <= track.last_step(); ++k) {
     for (int i = 0; i < n; ++i) {
-      const sim::Pose2& a = track.pose(k, i);
+      const world::Pose2& a = track.pose(k, i);
       for (int j = i + 1; j < n; ++j) {
-        const sim::Pose2& b = track.pose(k, j);
+        const world::Pose2& b = track.pose(k, j);
         const double d = std::hypot(a.x_m - b.x_m, a.y_m - b.y_m);
         if (d < run.min_distance_m) {
           run.min_distance_m = d;
@@ -101,7 +101,7 @@ std::string Closest(const ComparedRun& run) {
 std::string MetricText(const nlohmann::ordered_json& value) {
   if (value.is_number()) return Format("%.6g", value.get<double>());
   if (value.is_array()) return std::to_string(value.size()) + " entries";
-  return sim::JsonText(value, -1);
+  return files::JsonText(value, -1);
 }
 
 RunComparison Compare(const std::string& first_dir, const std::string& second_dir, const ComparedFolders& runs) {
@@ -121,8 +121,8 @@ RunComparison Compare(const std::string& first_dir, const std::string& second_di
     RobotTracking tracking;
     tracking.robot = i;
     for (int64_t k = 0; k <= comparison.compared_steps; ++k) {
-      const sim::Pose2& a = first.pose(k, i);
-      const sim::Pose2& b = second.pose(k, i);
+      const world::Pose2& a = first.pose(k, i);
+      const world::Pose2& b = second.pose(k, i);
       tracking.position_m.Add(std::hypot(b.x_m - a.x_m, b.y_m - a.y_m), k);
       tracking.heading_rad.Add(std::remainder(b.theta_rad - a.theta_rad, 2 * M_PI), k);
     }
@@ -217,12 +217,12 @@ RunComparison CompareRunsAndWrite(const std::string& first_dir, const std::strin
                                   const std::string& out_dir) {
   const ComparedFolders runs(first_dir, second_dir);
   RunComparison comparison = Compare(first_dir, second_dir, runs);
-  const sim::OutputFolder out(out_dir);
+  const files::OutputFolder out(out_dir);
   const std::string picture = out.PathOf("comparison.png");
-  out.WriteFile("comparison.json", sim::JsonText(comparison.Json()) + "\n");
+  out.WriteFile("comparison.json", files::JsonText(comparison.Json()) + "\n");
   // cairo draws UTF-8 only: a folder name that is not (Latin-1) would cost the picture.
   const auto shown = [](const std::string& folder) { return lcm::WireText::Of(folder, folder.size() * 2); };
-  sim::ComparisonPicture::Render(
+  render::ComparisonPicture::Render(
       runs.first.log, runs.second.log, picture,
       {"dashed: " + shown(first_dir) + " (" + std::to_string(comparison.first.steps) + " steps), solid: " +
            shown(second_dir) + " (" + std::to_string(comparison.second.steps) + " steps)",

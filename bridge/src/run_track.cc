@@ -24,13 +24,13 @@ void RequireFiniteNumbers(const run_log::RunLog& log, const RunTrack& track) {
   for (int64_t k = 0; k <= track.last_step(); ++k) {
     const std::string at_step = " at step " + std::to_string(k) + " is not finite (";
     for (int i = 0; i < track.num_robots; ++i) {
-      const sim::Pose2& p = track.pose(k, i);
+      const world::Pose2& p = track.pose(k, i);
       if (!Finite(p.x_m, p.y_m, p.theta_rad)) {
         throw std::runtime_error(log.path() + ": robot " + std::to_string(i) + "'s pose" + at_step + "x " +
                                  Number(p.x_m) + ", y " + Number(p.y_m) + ", theta " + Number(p.theta_rad) + ")" +
                                  damaged);
       }
-      const sim::UnicycleCommand& c = track.command(k, i);
+      const world::UnicycleCommand& c = track.command(k, i);
       if (!Finite(c.v_mps, c.w_radps)) {
         // commands[k] came with the poses of step k + 1.
         throw std::runtime_error(log.path() + ": robot " + std::to_string(i) + "'s velocity at step " +
@@ -38,7 +38,7 @@ void RequireFiniteNumbers(const run_log::RunLog& log, const RunTrack& track) {
                                  Number(c.w_radps) + ")" + damaged);
       }
     }
-    for (const sim::ObstacleState& o : track.obstacles[static_cast<size_t>(k)]) {
+    for (const world::ObstacleState& o : track.obstacles[static_cast<size_t>(k)]) {
       if (!Finite(o.center_x_m, o.center_y_m, o.width_m) || !Finite(o.height_m, o.vx_mps, o.vy_mps)) {
         throw std::runtime_error(log.path() + ": obstacle " + std::to_string(o.id) + at_step + "centre " +
                                  Number(o.center_x_m) + ", " + Number(o.center_y_m) + ", size " + Number(o.width_m) +
@@ -68,13 +68,13 @@ RunTrack RunTrackOf(const run_log::RunLog& log, RunEnd* end) {
     const robot_poses_t& poses = log.poses()[k];
     track.utime.push_back(poses.utime);
     for (size_t i = 0; i < n; ++i) {
-      track.poses.push_back(sim::Pose2{poses.x[i], poses.y[i], poses.theta[i]});
+      track.poses.push_back(world::Pose2{poses.x[i], poses.y[i], poses.theta[i]});
       // This step's velocities are what the robots drove with from the step before.
-      if (k > 0) track.commands[(k - 1) * n + i] = sim::UnicycleCommand{poses.v[i], poses.w[i]};
+      if (k > 0) track.commands[(k - 1) * n + i] = world::UnicycleCommand{poses.v[i], poses.w[i]};
     }
-    std::vector<sim::ObstacleState>& obstacles = track.obstacles.emplace_back();
+    std::vector<world::ObstacleState>& obstacles = track.obstacles.emplace_back();
     for (const rectangle_obstacle_t& o : log.obstacles_at(k).obstacles) {
-      obstacles.push_back(sim::ObstacleState{o.id, o.center_x, o.center_y, o.width, o.height, o.vx, o.vy});
+      obstacles.push_back(world::ObstacleState{o.id, o.center_x, o.center_y, o.width, o.height, o.vx, o.vy});
     }
   }
   RequireFiniteNumbers(log, track);
@@ -84,7 +84,7 @@ RunTrack RunTrackOf(const run_log::RunLog& log, RunEnd* end) {
     end->state = status.state;
     end->detail = status.detail;
     end->step = status.step;
-    end->violations = sim::ViolationCounts{status.boundary_errors, status.collision_errors, status.actuator_errors,
+    end->violations = world::ViolationCounts{status.boundary_errors, status.collision_errors, status.actuator_errors,
                                            status.obstacle_collisions};
     end->lost_robot_ids.assign(status.lost_robot_ids.begin(), status.lost_robot_ids.end());
     end->robot_faults = log.robot_faults();

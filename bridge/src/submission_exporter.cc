@@ -1,4 +1,4 @@
-#include "dream/node/file_text.h"
+#include "dream/files/file_text.h"
 #include "dream/bridge/submission_exporter.h"
 
 #include <cmath>
@@ -15,11 +15,11 @@
 #include "dream/bridge/sha256.h"
 #include "dream/bridge/npy_file.h"
 #include "dream/bridge/obstacle_schedule.h"
-#include "dream/node/json_text.h"
-#include "dream/node/output_folder.h"
+#include "dream/files/json_text.h"
+#include "dream/files/output_folder.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/bridge/submission_params.h"
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 #include "dream/world/run_verdict.h"
 
 namespace dream::bridge {
@@ -40,11 +40,11 @@ std::string Seconds(double s) {
 
 /// The step limit the simulated run had: summary.json's max_steps (which
 /// includes a dream run --steps), else the config's.
-int64_t RunStepLimit(const std::string& run_dir, const config::RunConfig& config) {
+int64_t RunStepLimit(const std::string& run_dir, const run_config::RunConfig& config) {
   const std::string summary_path = (std::filesystem::path(run_dir) / "summary.json").string();
   if (!std::filesystem::exists(summary_path)) return config.sim.max_steps;
   try {
-    const nlohmann::json summary = nlohmann::json::parse(sim::ReadFileText(summary_path));
+    const nlohmann::json summary = nlohmann::json::parse(files::ReadFileText(summary_path));
     if (summary.contains("max_steps") && summary["max_steps"].is_number_integer() &&
         summary["max_steps"].get<int64_t>() >= 1) {
       return summary["max_steps"].get<int64_t>();
@@ -66,7 +66,7 @@ std::vector<ExportProblem> NotReadyReasons(const std::string& run_dir) {
   if (!std::filesystem::exists(summary_path)) return problems;
   nlohmann::json summary;
   try {
-    summary = nlohmann::json::parse(sim::ReadFileText(summary_path));
+    summary = nlohmann::json::parse(files::ReadFileText(summary_path));
   } catch (const nlohmann::json::exception& e) {
     throw std::runtime_error(summary_path + ": not valid JSON: " + e.what());
   }
@@ -82,7 +82,7 @@ std::vector<ExportProblem> NotReadyReasons(const std::string& run_dir) {
       return it->get<std::string>();
     };
     const std::string rule = text("rule");
-    if (text("verdict") != sim::RunVerdictName(sim::RunVerdict::kNotReady) || rule == "controller_failed" ||
+    if (text("verdict") != world::RunVerdictName(world::RunVerdict::kNotReady) || rule == "controller_failed" ||
         rule == "did_not_finish") {
       continue;
     }
@@ -99,13 +99,13 @@ struct ControllerFiles {
   std::vector<FlatPythonRuntime::File> runtime;
 };
 
-ControllerFiles ReadControllerFiles(const config::RunConfig& config, const std::string& config_file,
+ControllerFiles ReadControllerFiles(const run_config::RunConfig& config, const std::string& config_file,
                                     const std::string& runtime_dir) {
   if (runtime_dir.empty()) throw std::invalid_argument("export options: the controller strategy needs python_runtime_dir");
   ControllerFiles files;
-  nlohmann::ordered_json spec = nlohmann::ordered_json::parse(agents::PythonControllerSpecJson(config));
+  nlohmann::ordered_json spec = nlohmann::ordered_json::parse(agent_host::PythonControllerSpecJson(config));
   const std::string module_path = spec["module"].get<std::string>();
-  files.module_text = sim::ReadFileText(module_path);
+  files.module_text = files::ReadFileText(module_path);
   const FlatPythonRuntime runtime = FlatPythonRuntime::Read(runtime_dir);
   files.module_name = FlatPythonRuntime::ControllerFileName(
       module_path, files.module_text, runtime.ImportedModules({SubmissionScriptTemplate()}), config_file);
@@ -113,7 +113,7 @@ ControllerFiles ReadControllerFiles(const config::RunConfig& config, const std::
   // name the export's copy of the config.
   spec["module"] = files.module_name;
   spec["config_file"] = "config.yaml";
-  files.spec_json = sim::JsonText(spec, -1);
+  files.spec_json = files::JsonText(spec, -1);
   files.runtime = runtime.files();
   return files;
 }
@@ -161,8 +161,8 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
   if (!fs::exists(log_file)) throw std::runtime_error(log_file + ": missing; pass a run folder written by dream run");
 
   // Read and check everything before writing anything.
-  const config::RunConfig config = config::LoadRunConfigFile(config_file);
-  const std::string config_text = sim::ReadFileText(config_file);
+  const run_config::RunConfig config = run_config::LoadRunConfigFile(config_file);
+  const std::string config_text = files::ReadFileText(config_file);
   RunEnd end;
   const RunTrack track = ReadRunTrack(log_file, &end);
   if (track.num_robots != config.num_robots) {
@@ -171,7 +171,7 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
   }
   if (track.last_step() < 1) throw std::runtime_error(log_file + ": the run has no step to export");
   const bool controller = options.strategy == Strategy::kController;
-  const bool python_kind = agents::IsPythonController(config);
+  const bool python_kind = agent_host::IsPythonController(config);
   std::vector<ExportProblem> problems;
   if (controller && !python_kind) {
     const config::ConfigNode kind = config.controller.Optional("kind");
@@ -196,7 +196,7 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
     }
   }
   // What UPLOAD.txt tells the user to declare: the lab's verifier holds the run to it.
-  const sim::LabVerifierRules::Declaration declared{
+  const world::LabVerifierRules::Declaration declared{
       config.num_robots, static_cast<double>(steps + options.settle_max_steps) * config.world.time_step_s};
   // --force exports a run whose robots were lost, or that summary.json
   // calls not_ready; the lab's rules are never forced.
@@ -239,7 +239,7 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
   initial.shape = {3, n};
   initial.values.resize(static_cast<size_t>(3 * n));
   for (int i = 0; i < n; ++i) {
-    const sim::Pose2& p = track.pose(0, i);
+    const world::Pose2& p = track.pose(0, i);
     initial.values[static_cast<size_t>(i)] = p.x_m;
     initial.values[static_cast<size_t>(n + i)] = p.y_m;
     initial.values[static_cast<size_t>(2 * n + i)] = p.theta_rad;
@@ -255,7 +255,7 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
   const auto un = static_cast<size_t>(n);
   for (int64_t k = 0; k <= reference_steps; ++k) {
     double* row = &poses.values[static_cast<size_t>(k) * 3 * un];
-    const sim::Pose2* step_poses = &track.poses[static_cast<size_t>(k) * un];
+    const world::Pose2* step_poses = &track.poses[static_cast<size_t>(k) * un];
     for (size_t i = 0; i < un; ++i) {
       row[i] = step_poses[i].x_m;
       row[un + i] = step_poses[i].y_m;
@@ -263,7 +263,7 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
     }
     if (k == reference_steps) break;
     double* command_row = &commands.values[static_cast<size_t>(k) * 2 * un];
-    const sim::UnicycleCommand* step_commands = &track.commands[static_cast<size_t>(k) * un];
+    const world::UnicycleCommand* step_commands = &track.commands[static_cast<size_t>(k) * un];
     for (size_t i = 0; i < un; ++i) {
       command_row[i] = step_commands[i].v_mps;
       command_row[un + i] = step_commands[i].w_radps;
@@ -367,14 +367,14 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
   for (const auto& [name, bytes] : upload_files) digests[name] = Sha256::Hex(bytes);
   manifest[ExportedSubmission::kDigestsKey] = digests;
 
-  sim::OutputFolder out(out_dir);
-  const sim::OutputFolder upload(out.MakeSubfolder("upload"));  // refuses a link leading outside
+  files::OutputFolder out(out_dir);
+  const files::OutputFolder upload(out.MakeSubfolder("upload"));  // refuses a link leading outside
   // Every file upload/ holds is this export's (UPLOAD.txt says to upload them all).
   upload.RemoveFiles("an earlier export's file");
   for (const auto& [name, bytes] : upload_files) upload.WriteFile(name, bytes);
   out.WriteFile("config.yaml", config_text);
   KeepControllerModule(config, out);
-  out.WriteFile("export.json", sim::JsonText(manifest) + "\n");
+  out.WriteFile("export.json", files::JsonText(manifest) + "\n");
   out.WriteFile("UPLOAD.txt", text);
   summary.out_dir = out.dir();
   summary.upload_dir = upload.dir();

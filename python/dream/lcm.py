@@ -16,7 +16,7 @@ import logging
 _log = logging.getLogger("dream")
 
 # LCM's default of 30 queued messages drops commands when many robots answer one step;
-# the C++ LcmBus raises it to the same figure (lcmtypes/src/lcm_bus.cc, kQueueCapacity).
+# the C++ LcmBus raises it to the same figure (lcmtypes/lcm/src/lcm_bus.cc, kQueueCapacity).
 QUEUE_CAPACITY = 10000
 
 

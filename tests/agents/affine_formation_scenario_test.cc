@@ -19,7 +19,7 @@
 #include "dream/agent_host/log_metrics.h"
 #include "dream/config/config_error.h"
 #include "dream/config/config_node.h"
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 #include "dream/lcm/lcm_bus.h"
 #include "dream/node/run_recorder.h"
 #include "dream/node/sim_node.h"
@@ -51,8 +51,8 @@ std::string Edited(const std::string& from, const std::string& to) {
   return at == std::string::npos ? text : text.replace(at, from.size(), to);
 }
 
-config::RunConfig Load(const std::string& text) {
-  return config::LoadRunConfig(config::ConfigNode::LoadString(text, "affine_formation.yaml"));
+run_config::RunConfig Load(const std::string& text) {
+  return run_config::LoadRunConfig(config::ConfigNode::LoadString(text, "affine_formation.yaml"));
 }
 
 // What the experiment must show, whatever the noise: the followers arrive
@@ -61,7 +61,7 @@ config::RunConfig Load(const std::string& text) {
 // the formation is flattened, steps 1100-1700; gate B while it is a line,
 // 2300-3150) without touching anyone; no robot collision, no boundary error.
 void ExpectSuccess(const ScenarioResult& run) {
-  EXPECT_EQ(run.outcome.end, sim::RunOutcome::End::kFinished) << run.outcome.reason;
+  EXPECT_EQ(run.outcome.end, node::RunOutcome::End::kFinished) << run.outcome.reason;
   EXPECT_EQ(run.outcome.steps, 3650);
   EXPECT_EQ(run.violations.boundary_errors, 0);
   EXPECT_EQ(run.violations.collision_errors, 0);
@@ -85,7 +85,7 @@ void ExpectSuccess(const ScenarioResult& run) {
 }
 
 TEST(AffineFormationScenarioTest, ShippedConfigTracksWithin5cmAndPassesBothGates) {
-  const ScenarioResult run = RunScenario(config::LoadRunConfigFile(kConfigPath), "affine_formation");
+  const ScenarioResult run = RunScenario(run_config::LoadRunConfigFile(kConfigPath), "affine_formation");
   ExpectSuccess(run);
   // The shipped run, measured: max follower error 2.0 cm after step 900,
   // settled from step 557, clearances 0.128 m (gate A) and 0.091 m (gate B).
@@ -95,7 +95,7 @@ TEST(AffineFormationScenarioTest, ShippedConfigTracksWithin5cmAndPassesBothGates
 
 TEST(AffineFormationScenarioTest, NoisySensorsStillTrackAndPass) {
   // 2 mm / 2 mrad of odometry and movement-sensor noise, another seed.
-  config::RunConfig config =
+  run_config::RunConfig config =
       Load(Edited("  kind: affine_formation\n",
                   "  kind: affine_formation\n"
                   "  sensors: [{kind: odometry, noise_std: 0.002}, {kind: movement, noise_std: 0.002}]\n"));
@@ -105,8 +105,8 @@ TEST(AffineFormationScenarioTest, NoisySensorsStillTrackAndPass) {
 
 std::string ConfigError(const std::string& text) {
   try {
-    const config::RunConfig config = Load(text);
-    ControllerFactory factory(config.controller, config.num_robots, config.seed);
+    const run_config::RunConfig config = Load(text);
+    agent_host::ControllerFactory factory(config.controller, config.num_robots, config.seed);
   } catch (const config::ConfigError& e) {
     return e.what();
   }
@@ -158,8 +158,8 @@ TEST(AffineFormationConfigTest, OtherMistakesNameTheirKeys) {
 // leaving the arena midway is still found.
 TEST(AffineFormationConfigTest, ManeuversOfAnyLengthAreCheckedWithBoundedWork) {
   const std::string last = "    - {step: 3550, translation: [0.3, 0.0]}";
-  const config::RunConfig long_plan = Load(Edited(last, "    - {step: 1000000000000, translation: [0.3, 0.0]}"));
-  EXPECT_NO_THROW(ControllerFactory(long_plan.controller, long_plan.num_robots, long_plan.seed));
+  const run_config::RunConfig long_plan = Load(Edited(last, "    - {step: 1000000000000, translation: [0.3, 0.0]}"));
+  EXPECT_NO_THROW(agent_host::ControllerFactory(long_plan.controller, long_plan.num_robots, long_plan.seed));
   const std::string error = ConfigError(Edited(last, "    - {step: 1000000000000, translation: [3.0, 0.0]}"));
   EXPECT_NE(error.find("controller.maneuver: at step "), std::string::npos) << error;
   EXPECT_NE(error.find("is not 0.1 m inside the arena"), std::string::npos) << error;

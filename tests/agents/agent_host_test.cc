@@ -72,7 +72,7 @@ std::unique_ptr<RobotAgent> MakeAgent(int id, int* calls, std::unique_ptr<Radio>
   return std::make_unique<RobotAgent>(std::move(spec), 7);
 }
 
-const CountingRobot& Counting(const AgentHost& host, size_t i) {
+const CountingRobot& Counting(const agent_host::AgentHost& host, size_t i) {
   return static_cast<const CountingRobot&>(host.agent(i).robot());
 }
 
@@ -119,7 +119,7 @@ TEST_F(AgentHostTest, AnswersEachStepOncePerRobotAndRepeatsForResends) {
   std::vector<std::unique_ptr<RobotAgent>> agents;
   agents.push_back(MakeAgent(1, &calls));
   agents.push_back(MakeAgent(2, &calls));
-  AgentHost host(bus_, std::move(agents), 42);
+  agent_host::AgentHost host(bus_, std::move(agents), 42);
   lcm::Publish(bus_, lcm::kPosesChannel, Poses(1, 3));
   lcm::Publish(bus_, lcm::kPosesChannel, Poses(1, 3));  // the world resent step 1
   lcm::Publish(bus_, lcm::kPosesChannel, Poses(2, 3));
@@ -140,7 +140,7 @@ TEST_F(AgentHostTest, RadioMessagesOfStepKAreHeardAtStepKPlusOne) {
   agents.push_back(MakeAgent(0, &calls));
   agents.push_back(MakeAgent(1, &calls));
   agents.push_back(MakeAgent(2, &calls));
-  AgentHost host(bus_, std::move(agents), 1);
+  agent_host::AgentHost host(bus_, std::move(agents), 1);
   lcm::Publish(bus_, lcm::kPosesChannel, Poses(1, 3));
   Drain();
   ASSERT_EQ(radio_.size(), 3u);
@@ -166,7 +166,7 @@ TEST_F(AgentHostTest, ARadioPayloadOverTheLimitIsTheControllersFaultNotAMessage)
   std::vector<std::unique_ptr<RobotAgent>> agents;
   agents.push_back(MakeAgent(0, &calls));
   agents.push_back(MakeAgent(1, &calls, nullptr, true, lcm::MessageLimits::kRadioPayloadBytes - 3));  // 65537 bytes
-  AgentHost host(bus_, std::move(agents), 5);
+  agent_host::AgentHost host(bus_, std::move(agents), 5);
   lcm::Publish(bus_, lcm::kPosesChannel, Poses(1, 2));
   lcm::Publish(bus_, lcm::kPosesChannel, Poses(1, 2));  // a resend: no second fault
   lcm::Publish(bus_, lcm::kPosesChannel, Poses(2, 2));
@@ -189,7 +189,7 @@ TEST_F(AgentHostTest, RangeRadioHearsOnlyRobotsInRangeOfTheReceiver) {
   int calls = 0;
   std::vector<std::unique_ptr<RobotAgent>> agents;
   for (int id = 0; id < 3; ++id) agents.push_back(MakeAgent(id, &calls, std::make_unique<RangeRadio>(0.15)));
-  AgentHost host(bus_, std::move(agents), 1);
+  agent_host::AgentHost host(bus_, std::move(agents), 1);
   // Poses() puts robot i at x = 0.1 i: 0 and 2 are 0.2 m apart, beyond 0.15 m.
   lcm::Publish(bus_, lcm::kPosesChannel, Poses(1, 3));
   Drain();
@@ -214,7 +214,7 @@ TEST_F(AgentHostTest, GraphRadioDoesNotHearUnlinkedSenders) {
     auto radio = std::make_unique<GraphRadio>(CommunicationGraph(adjacency, 3, false, false));
     agents.push_back(MakeAgent(id, &calls, std::move(radio)));
   }
-  AgentHost host(bus_, std::move(agents), 1);
+  agent_host::AgentHost host(bus_, std::move(agents), 1);
   lcm::Publish(bus_, lcm::kPosesChannel, Poses(1, 3));
   Drain();  // everyone speaks at step 1...
   lcm::Publish(bus_, lcm::kPosesChannel, Poses(2, 3));
@@ -240,7 +240,7 @@ TEST_F(AgentHostTest, BadNeighbourPayloadsAreDroppedByTheRobot) {
   int calls = 0;
   std::vector<std::unique_ptr<RobotAgent>> agents;
   agents.push_back(MakeAgent(0, &calls));
-  AgentHost host(bus_, std::move(agents), 1);
+  agent_host::AgentHost host(bus_, std::move(agents), 1);
   const radio_message_t bad = UndecodableRadioMessage(5);
   lcm::Publish(bus_, lcm::RadioChannel(5), bad);
   radio_message_t mismatched = bad;
@@ -256,7 +256,7 @@ TEST_F(AgentHostTest, RadioFromSendersOutsideTheRunIsCountedNotKept) {
   int calls = 0;
   std::vector<std::unique_ptr<RobotAgent>> agents;
   agents.push_back(MakeAgent(0, &calls));
-  AgentHost host(bus_, std::move(agents), 1);
+  agent_host::AgentHost host(bus_, std::move(agents), 1);
   lcm::Publish(bus_, lcm::kPosesChannel, Poses(1, 3));
   for (int sender : {2, 3, 1000}) {
     radio_message_t message = UndecodableRadioMessage(sender);
@@ -274,7 +274,7 @@ TEST_F(AgentHostTest, ForgedCountsOnTheWorldsChannelsAreCountedAndTheHostCarries
   int calls = 0;
   std::vector<std::unique_ptr<RobotAgent>> agents;
   agents.push_back(MakeAgent(0, &calls));
-  AgentHost host(bus_, std::move(agents), 1);
+  agent_host::AgentHost host(bus_, std::move(agents), 1);
   // The 48-byte DREAM_POSES: num_robots = 2^28 after the fingerprint, utime and step.
   std::vector<uint8_t> poses(48, 0);
   const robot_poses_t empty{};
@@ -309,7 +309,7 @@ TEST_F(AgentHostTest, UndecodablePayloadsAreLoggedBySenderFirstThenEveryHundredt
     std::vector<std::unique_ptr<RobotAgent>> agents;
     agents.push_back(MakeAgent(0, &calls));
     agents.push_back(MakeAgent(1, &calls, nullptr, /*name_bad_senders=*/false));
-    AgentHost host(bus_, std::move(agents), 1);
+    agent_host::AgentHost host(bus_, std::move(agents), 1);
     const radio_message_t bad = UndecodableRadioMessage(5);
     lcm::Publish(bus_, lcm::RadioChannel(5), bad);
     // The mailbox keeps a sender's latest message, so the robots hear (and
@@ -321,7 +321,7 @@ TEST_F(AgentHostTest, UndecodablePayloadsAreLoggedBySenderFirstThenEveryHundredt
     EXPECT_EQ(host.agent(0).robot().bad_radio_messages(), 100);
     EXPECT_EQ(host.bad_radio_payloads(0).count(lcm::RadioChannel(5)), 100);
     EXPECT_EQ(host.bad_radio_payloads(0).total(), 100);
-    EXPECT_EQ(host.bad_radio_payloads(1).count(AgentHost::kUnknownSenderChannel), 100);
+    EXPECT_EQ(host.bad_radio_payloads(1).count(agent_host::AgentHost::kUnknownSenderChannel), 100);
     EXPECT_EQ(host.bad_messages().total(), 0);  // the LCM message itself was fine
     const std::string during = log.text();
     EXPECT_NE(during.find("DREAM_RADIO_5: dropped bad message #1: robot 0: payload did not decode"),
@@ -352,7 +352,7 @@ TEST_F(AgentHostTest, AHostWhoseRobotsDecodedEverythingLogsNoTotals) {
     std::vector<std::unique_ptr<RobotAgent>> agents;
     agents.push_back(MakeAgent(0, &calls));
     agents.push_back(MakeAgent(1, &calls));
-    AgentHost host(bus_, std::move(agents), 1);
+    agent_host::AgentHost host(bus_, std::move(agents), 1);
     for (int64_t step = 1; step <= 3; ++step) {
       lcm::Publish(bus_, lcm::kPosesChannel, Poses(step, 2));
       Drain();
@@ -367,7 +367,7 @@ TEST_F(AgentHostTest, MalformedPosesAndMissingRobotsAreCountedNotFatal) {
   int calls = 0;
   std::vector<std::unique_ptr<RobotAgent>> agents;
   agents.push_back(MakeAgent(5, &calls));
-  AgentHost host(bus_, std::move(agents), 1);
+  agent_host::AgentHost host(bus_, std::move(agents), 1);
   const char garbage[] = "garbage";
   bus_.Publish(lcm::kPosesChannel, garbage, sizeof(garbage));
   lcm::Publish(bus_, lcm::kPosesChannel, Poses(1, 3));  // robot 5 is not in a 3-robot run
@@ -383,7 +383,7 @@ TEST_F(AgentHostTest, AWorldOfAnotherRobotCountIsNeverJoined) {
   int calls = 0;
   std::vector<std::unique_ptr<RobotAgent>> agents;
   agents.push_back(MakeAgent(0, &calls));
-  AgentHost host(bus_, std::move(agents), 1);
+  agent_host::AgentHost host(bus_, std::move(agents), 1);
   host.ExpectWorldOfRobots(10);
   lcm::Publish(bus_, lcm::kPosesChannel, Poses(1, 3));
   Drain();
@@ -405,7 +405,7 @@ TEST_F(AgentHostTest, AForgedFarStepOrAnotherRunsFinishNeitherFreezesNorEndsTheR
   int calls = 0;
   std::vector<std::unique_ptr<RobotAgent>> agents;
   agents.push_back(MakeAgent(0, &calls));
-  AgentHost host(bus_, std::move(agents), 9);
+  agent_host::AgentHost host(bus_, std::move(agents), 9);
   lcm::Publish(bus_, lcm::kPosesChannel, Poses(1, 2));
   lcm::Publish(bus_, lcm::kPosesChannel, Poses(int64_t{1} << 40, 2));  // forged: would freeze the Timer
   lcm::Publish(bus_, lcm::kPosesChannel, Poses(2, 2, /*run_id=*/0xbad));
@@ -439,7 +439,7 @@ TEST_F(AgentHostTest, AForgedFarStepOrAnotherRunsFinishNeitherFreezesNorEndsTheR
 TEST(ControllerFactoryTest, UnknownKindsAndBadSectionsAreClearErrors) {
   auto error_of = [](const std::string& yaml, int robots) {
     try {
-      ControllerFactory(config::ConfigNode::LoadString(yaml, "c.yaml").Required("controller"), robots, 1);
+      agent_host::ControllerFactory(config::ConfigNode::LoadString(yaml, "c.yaml").Required("controller"), robots, 1);
     } catch (const config::ConfigError& e) {
       return std::string(e.what());
     }
@@ -476,7 +476,7 @@ TEST(ControllerFactoryTest, UnknownKindsAndBadSectionsAreClearErrors) {
 
 std::string FactoryError(const std::string& yaml, int robots) {
   try {
-    ControllerFactory(config::ConfigNode::LoadString(yaml, "c.yaml").Required("controller"), robots, 1);
+    agent_host::ControllerFactory(config::ConfigNode::LoadString(yaml, "c.yaml").Required("controller"), robots, 1);
   } catch (const config::ConfigError& e) {
     return e.what();
   }

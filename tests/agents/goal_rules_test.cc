@@ -8,7 +8,7 @@
 #include <optional>
 
 #include "dream/agent_host/controller_factory.h"
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 
 namespace dream::agents {
 namespace {
@@ -18,9 +18,9 @@ using ::testing::HasSubstr;
 /// The judgement of the shipped config `name` on `values`: the first of its
 /// metrics with a rule (the kind's own come first), or nothing.
 std::optional<GoalJudgement> Judge(const std::string& name, const std::map<std::string, double>& values) {
-  const config::RunConfig config =
-      config::LoadRunConfigFile(std::string(DREAM_SOURCE_DIR) + "/config/" + name + ".yaml");
-  const ControllerFactory factory(config);
+  const run_config::RunConfig config =
+      run_config::LoadRunConfigFile(std::string(DREAM_SOURCE_DIR) + "/config/" + name + ".yaml");
+  const agent_host::ControllerFactory factory(config);
   MetricsReport report;
   report.values = values;
   for (const auto& metrics : factory.MakeMetrics()) {
@@ -130,9 +130,9 @@ TEST(GoalRules, CalibrationDriveIsMetWhenItsProgramRanToItsEndClean) {
 
 TEST(GoalRules, KindsWithGoalsToDrawGiveOnePerRobot) {
   auto goals_of = [](const std::string& name) {
-    const config::RunConfig config =
-        config::LoadRunConfigFile(std::string(DREAM_SOURCE_DIR) + "/config/" + name + ".yaml");
-    return std::make_pair(ControllerFactory(config).GoalsToDraw(), config.num_robots);
+    const run_config::RunConfig config =
+        run_config::LoadRunConfigFile(std::string(DREAM_SOURCE_DIR) + "/config/" + name + ".yaml");
+    return std::make_pair(agent_host::ControllerFactory(config).GoalsToDraw(), config.num_robots);
   };
   const auto [go_to_goal, go_to_goal_robots] = goals_of("go_to_goal");
   ASSERT_EQ(go_to_goal.size(), static_cast<size_t>(go_to_goal_robots));

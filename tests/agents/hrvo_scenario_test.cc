@@ -34,7 +34,7 @@ std::string Describe(const HrvoSwapResult& r) {
 // Pairs 1.2 m apart facing each other, swapping places; optionally offset
 // sideways by `offset_m` (so the pair is not exactly symmetric), one pair
 // per entry of `ys`.
-void HeadOnPairs(const std::vector<double>& ys, double offset_m, std::vector<sim::Pose2>* start,
+void HeadOnPairs(const std::vector<double>& ys, double offset_m, std::vector<world::Pose2>* start,
                  std::vector<Eigen::Vector2d>* goals) {
   for (const double y : ys) {
     start->push_back({-0.6, y, 0.0});
@@ -54,7 +54,7 @@ TEST(HrvoScenarioTest, HeadOnPairsPassWithoutCollision) {
       {{0.0}, 0.0}, {{0.0}, 0.03}, {{0.0}, -0.1}, {{0.3}, 0.0}, {{-0.5, 0.0, 0.5}, 0.0}, {{-0.35, 0.35}, 0.02}};
   for (const bool thesis_timing : {false, true}) {
     for (size_t c = 0; c < cases.size(); ++c) {
-      std::vector<sim::Pose2> start;
+      std::vector<world::Pose2> start;
       std::vector<Eigen::Vector2d> goals;
       HeadOnPairs(cases[c].ys, cases[c].offset_m, &start, &goals);
       HrvoSwapOptions options;
@@ -85,7 +85,7 @@ TEST(HrvoScenarioTest, CircleSwapOfTenRobots) {
     int64_t exact_near = 0, thesis_near = 0;
     constexpr int kSeeds = 5;
     for (int seed = 0; seed < kSeeds; ++seed) {
-      const std::vector<sim::Pose2> start =
+      const std::vector<world::Pose2> start =
           CirclePoses(kRobots, kRadius, seed == 0 ? 0.0 : 0.03, seed == 0 ? 0.0 : 0.3, static_cast<uint64_t>(seed));
       HrvoSwapOptions options;
       options.thesis_timing = thesis_timing;
@@ -116,7 +116,7 @@ TEST(HrvoScenarioTest, CircleSwapOfTenRobots) {
 TEST(HrvoScenarioTest, RandomCrossingsOfTwelveRobots) {
   for (const bool thesis_timing : {false, true}) {
     for (uint64_t seed = 1; seed <= 5; ++seed) {
-      std::vector<sim::Pose2> start;
+      std::vector<world::Pose2> start;
       std::vector<Eigen::Vector2d> goals;
       RandomCrossing(12, seed, &start, &goals);
       HrvoSwapOptions options;

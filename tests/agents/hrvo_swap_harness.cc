@@ -26,11 +26,11 @@ struct Readings {
 
 }  // namespace
 
-HrvoSwapResult RunHrvoSwap(const std::vector<sim::Pose2>& start, const std::vector<Eigen::Vector2d>& goals,
+HrvoSwapResult RunHrvoSwap(const std::vector<world::Pose2>& start, const std::vector<Eigen::Vector2d>& goals,
                            const HrvoFactory& make_hrvo, const HrvoSwapOptions& options) {
   const int n = static_cast<int>(start.size());
   if (goals.size() != start.size()) throw std::invalid_argument("RunHrvoSwap: one goal per robot");
-  sim::UnicycleWorld world(sim::WorldParams{}, start);
+  world::UnicycleWorld world(world::WorldParams{}, start);
   const ActuatorLimits limits;
   // The thesis's dxi_to_dxu is the library's, so this harness cannot drift from the robots.
   RobotParams drive;
@@ -50,14 +50,14 @@ HrvoSwapResult RunHrvoSwap(const std::vector<sim::Pose2>& start, const std::vect
     return step > delay && (step - delay) % period == 0;
   };
   const auto sense_odometry = [&](int i) {
-    const sim::Pose2& p = world.poses()[static_cast<size_t>(i)];
+    const world::Pose2& p = world.poses()[static_cast<size_t>(i)];
     readings[static_cast<size_t>(i)].pose = {p.x_m, p.y_m, p.theta_rad};
   };
   // Velocity of the point velocity_point_ahead_m ahead of robot j's centre,
   // from the velocity the world held during the last step.
   const auto measured_velocity = [&](int j) -> Eigen::Vector2d {
-    const sim::Pose2& p = world.poses()[static_cast<size_t>(j)];
-    const sim::UnicycleCommand& u = world.velocities()[static_cast<size_t>(j)];
+    const world::Pose2& p = world.poses()[static_cast<size_t>(j)];
+    const world::UnicycleCommand& u = world.velocities()[static_cast<size_t>(j)];
     const double c = std::cos(p.theta_rad), s = std::sin(p.theta_rad);
     const double a = options.velocity_point_ahead_m;
     return {c * u.v_mps - a * s * u.w_radps, s * u.v_mps + a * c * u.w_radps};
@@ -65,9 +65,9 @@ HrvoSwapResult RunHrvoSwap(const std::vector<sim::Pose2>& start, const std::vect
   const auto sense_movement = [&](int i) {
     std::vector<HrvoNeighbour>& out = readings[static_cast<size_t>(i)].neighbours;
     out.clear();
-    const sim::Pose2& self = world.poses()[static_cast<size_t>(i)];
+    const world::Pose2& self = world.poses()[static_cast<size_t>(i)];
     for (int j = 0; j < n; ++j) {
-      const sim::Pose2& other = world.poses()[static_cast<size_t>(j)];
+      const world::Pose2& other = world.poses()[static_cast<size_t>(j)];
       const Eigen::Vector2d rel(other.x_m - self.x_m, other.y_m - self.y_m);
       const double d = rel.norm();
       if (j == i || d <= 0.0 || d > options.neighbour_range_m) continue;
@@ -82,13 +82,13 @@ HrvoSwapResult RunHrvoSwap(const std::vector<sim::Pose2>& start, const std::vect
     bool all_arrived = true;
     bool near_miss = false;
     for (int i = 0; i < n; ++i) {
-      const sim::Pose2& p = world.poses()[static_cast<size_t>(i)];
+      const world::Pose2& p = world.poses()[static_cast<size_t>(i)];
       if (std::hypot(goals[static_cast<size_t>(i)].x() - p.x_m, goals[static_cast<size_t>(i)].y() - p.y_m) >=
           options.arrive_tolerance_m) {
         all_arrived = false;
       }
       for (int j = i + 1; j < n; ++j) {
-        const sim::Pose2& q = world.poses()[static_cast<size_t>(j)];
+        const world::Pose2& q = world.poses()[static_cast<size_t>(j)];
         const double d = std::hypot(p.x_m - q.x_m, p.y_m - q.y_m);
         result.min_distance_m = std::min(result.min_distance_m, d);
         if (d < options.near_miss_m) near_miss = true;
@@ -146,14 +146,14 @@ HrvoSwapResult RunHrvoSwap(const std::vector<sim::Pose2>& start, const std::vect
   return result;
 }
 
-std::vector<sim::Pose2> CirclePoses(int num_robots, double radius_m, double jitter_m, double jitter_rad,
+std::vector<world::Pose2> CirclePoses(int num_robots, double radius_m, double jitter_m, double jitter_rad,
                                     uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  std::vector<sim::Pose2> poses;
+  std::vector<world::Pose2> poses;
   for (int i = 0; i < num_robots; ++i) {
     const double angle = 2.0 * M_PI * i / num_robots;
-    sim::Pose2 p{radius_m * std::cos(angle), radius_m * std::sin(angle), angle + M_PI};
+    world::Pose2 p{radius_m * std::cos(angle), radius_m * std::sin(angle), angle + M_PI};
     p.x_m += jitter_m * unit(rng);
     p.y_m += jitter_m * unit(rng);
     p.theta_rad = std::remainder(p.theta_rad + jitter_rad * unit(rng), 2.0 * M_PI);
@@ -171,7 +171,7 @@ std::vector<Eigen::Vector2d> AntipodalGoals(int num_robots, double radius_m) {
   return goals;
 }
 
-void RandomCrossing(int num_robots, uint64_t seed, std::vector<sim::Pose2>* start,
+void RandomCrossing(int num_robots, uint64_t seed, std::vector<world::Pose2>* start,
                     std::vector<Eigen::Vector2d>* goals) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> x(-1.3, 1.3), y(-0.75, 0.75), heading(-M_PI, M_PI);

@@ -50,14 +50,14 @@ struct HrvoSwapResult {
 
 using HrvoFactory = std::function<std::unique_ptr<HrvoAvoidance>()>;
 
-HrvoSwapResult RunHrvoSwap(const std::vector<sim::Pose2>& start, const std::vector<Eigen::Vector2d>& goals,
+HrvoSwapResult RunHrvoSwap(const std::vector<world::Pose2>& start, const std::vector<Eigen::Vector2d>& goals,
                            const HrvoFactory& make_hrvo, const HrvoSwapOptions& options);
 
 /// The thesis's circle (Appendix B): robot i at angle 2 pi i / n on a circle,
 /// facing the centre, each pose perturbed uniformly by up to jitter_m per
 /// coordinate and jitter_rad in heading (seeded; seed 0 and zero jitter give
 /// the exact circle).
-std::vector<sim::Pose2> CirclePoses(int num_robots, double radius_m, double jitter_m, double jitter_rad,
+std::vector<world::Pose2> CirclePoses(int num_robots, double radius_m, double jitter_m, double jitter_rad,
                                     uint64_t seed);
 /// Each robot's diametrically opposite point.
 std::vector<Eigen::Vector2d> AntipodalGoals(int num_robots, double radius_m);
@@ -65,7 +65,7 @@ std::vector<Eigen::Vector2d> AntipodalGoals(int num_robots, double radius_m);
 /// Random crossings: start poses (random headings) and goals uniform in
 /// [-1.3, 1.3] x [-0.75, 0.75] m, starts and goals each at least 0.35 m
 /// apart (seeded).
-void RandomCrossing(int num_robots, uint64_t seed, std::vector<sim::Pose2>* start,
+void RandomCrossing(int num_robots, uint64_t seed, std::vector<world::Pose2>* start,
                     std::vector<Eigen::Vector2d>* goals);
 
 }  // namespace dream::agents

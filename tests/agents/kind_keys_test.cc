@@ -16,7 +16,7 @@
 #include "../support/factory_error.h"
 #include "dream/agent_host/controller_registry.h"
 #include "dream/config/config_node.h"
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 
 namespace dream::agents {
 namespace {
@@ -43,14 +43,14 @@ std::string ErrorWithBadValue(const std::string& path, const std::string& key,
   root["controller"][key] = value;
   std::ostringstream text;
   text << root;
-  return testing::FactoryErrorOf(config::LoadRunConfig(config::ConfigNode::LoadString(text.str(), path)));
+  return testing::FactoryErrorOf(run_config::LoadRunConfig(config::ConfigNode::LoadString(text.str(), path)));
 }
 
 TEST(KindKeysTest, EveryDeclaredKeyOfEveryBuiltInKindIsRead) {
   const std::map<std::string, std::string> configs = ShippedConfigsByKind();
   int keys_checked = 0;
-  for (const std::string& name : ControllerRegistry::Global().Names()) {
-    const ControllerKind* kind = ControllerRegistry::Global().Find(name);
+  for (const std::string& name : agent_host::ControllerRegistry::Global().Names()) {
+    const agent_host::ControllerKind* kind = agent_host::ControllerRegistry::Global().Find(name);
     if (kind->checks_own_keys) continue;  // the python kind: the Python class declares and reads its keys
     SCOPED_TRACE(name);
     const auto config = configs.find(name);
@@ -90,7 +90,7 @@ TEST(KindKeysTest, WholeNumbersPastIntAreRefusedNotWrapped) {
   root["controller"]["metrics"]["obstacle_pairs"] = YAML::Load("[[0, 4294967297]]");
   std::ostringstream text;
   text << root;
-  EXPECT_THAT(testing::FactoryErrorOf(config::LoadRunConfig(config::ConfigNode::LoadString(text.str(), "a.yaml"))),
+  EXPECT_THAT(testing::FactoryErrorOf(run_config::LoadRunConfig(config::ConfigNode::LoadString(text.str(), "a.yaml"))),
               HasSubstr("controller.metrics.obstacle_pairs[0][1]: must be <= 2147483647, got 4294967297"));
 }
 

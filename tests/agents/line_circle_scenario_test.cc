@@ -17,7 +17,7 @@
 #include "dream/agent_host/agent_host.h"
 #include "dream/agent_host/controller_factory.h"
 #include "dream/agent_host/log_metrics.h"
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 #include "dream/lcm/lcm_bus.h"
 #include "dream/node/run_recorder.h"
 #include "dream/node/sim_node.h"
@@ -47,11 +47,11 @@ ScenarioResult RunScenario(const std::string& name, const std::string& from = ""
     EXPECT_NE(at, std::string::npos) << from;
     if (at != std::string::npos) text.replace(at, from.size(), to);
   }
-  return scenario::RunScenario(config::LoadRunConfig(config::ConfigNode::LoadString(text, path)), name);
+  return scenario::RunScenario(run_config::LoadRunConfig(config::ConfigNode::LoadString(text, path)), name);
 }
 
 void ExpectCompletesAllThreeFormations(const ScenarioResult& run) {
-  ASSERT_EQ(run.outcome.end, sim::RunOutcome::End::kFinished) << run.outcome.reason;
+  ASSERT_EQ(run.outcome.end, node::RunOutcome::End::kFinished) << run.outcome.reason;
   EXPECT_EQ(run.outcome.reason, "every robot reported done");
   EXPECT_EQ(run.outcome.robots_done.size(), 10u);
   EXPECT_EQ(run.violations.collision_errors, 0);
@@ -92,14 +92,14 @@ TEST(HrvoCircleScenarioTest, ThesisSampledHrvoAlsoCompletesAllThreeFormations) {
 
 TEST(LineDeploymentScenarioTest, EndsOnAStraightEvenlySpacedLineWithoutCollisions) {
   const ScenarioResult run = RunScenario("line_deployment");
-  ASSERT_EQ(run.outcome.end, sim::RunOutcome::End::kFinished) << run.outcome.reason;
+  ASSERT_EQ(run.outcome.end, node::RunOutcome::End::kFinished) << run.outcome.reason;
   EXPECT_EQ(run.outcome.reason, "every robot reported done");
   EXPECT_EQ(run.violations.collision_errors, 0);
   EXPECT_EQ(run.violations.boundary_errors, 0);
   EXPECT_EQ(run.bad_radio_messages, 0);
   // Straightness and spacing from the final poses themselves...
   double mean_y = 0.0;
-  for (const sim::Pose2& p : run.final_poses) mean_y += p.y_m / static_cast<double>(run.final_poses.size());
+  for (const world::Pose2& p : run.final_poses) mean_y += p.y_m / static_cast<double>(run.final_poses.size());
   for (size_t i = 0; i < run.final_poses.size(); ++i) {
     EXPECT_LT(std::abs(run.final_poses[i].y_m - mean_y), 0.02) << "robot " << i;
     if (i + 1 < run.final_poses.size()) {

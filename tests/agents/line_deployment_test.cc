@@ -34,7 +34,7 @@ TEST(LineConsensusTest, Eq37OnAHandComputedExample) {
 
 TEST(LineConsensusTest, ALineOrderedByDescendingIdIsAFixedPoint) {
   // x_i = 0.5 - 0.4 i, y = 0.1: every robot's target is where it stands.
-  const Eigen::MatrixXd graph = LineDeploymentBuilder::ThesisAdjacency();
+  const Eigen::MatrixXd graph = agent_host::LineDeploymentBuilder::ThesisAdjacency();
   for (int i = 0; i < 6; ++i) {
     std::vector<NeighbourPosition> neighbours;
     for (int j = 0; j < 6; ++j) {
@@ -187,7 +187,7 @@ TEST(LineFormationMetricsTest, StraightnessSpacingAndConvergenceOnPlainPoses) {
 
 std::string FactoryError(const std::string& yaml, int robots) {
   try {
-    ControllerFactory(config::ConfigNode::LoadString(yaml, "line.yaml").Required("controller"), robots, 1);
+    agent_host::ControllerFactory(config::ConfigNode::LoadString(yaml, "line.yaml").Required("controller"), robots, 1);
   } catch (const config::ConfigError& e) {
     return e.what();
   }

@@ -13,7 +13,7 @@
 #include "dream/agent_host/controller_kind.h"
 #include "dream/agent_host/controller_registry.h"
 #include "dream/config/config_error.h"
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 #include "../support/factory_error.h"
 #include "scenario_runner.h"
 
@@ -57,8 +57,8 @@ class ParkedRobot final : public Robot {
 class ChattyRobot final : public Robot {
  public:
   static constexpr bool kGraphMustConnect = true;
-  static AgentPartsConfig DefaultParts(int num_robots) {
-    AgentPartsConfig parts = AgentPartsConfig::Defaults(num_robots);
+  static agent_host::AgentPartsConfig DefaultParts(int num_robots) {
+    agent_host::AgentPartsConfig parts = agent_host::AgentPartsConfig::Defaults(num_robots);
     parts.robot_period_steps.assign(static_cast<size_t>(num_robots), 5);
     return parts;
   }
@@ -70,8 +70,8 @@ class ChattyRobot final : public Robot {
 // built-in ones the same way). Once per process, whichever test runs first.
 void RegisterTestKinds() {
   static const bool registered = [] {
-    ControllerRegistry::Global().Add(ControllerKind::OfRobot<CruiseRobot>("test_cruise", {"speeds_mps"}), "this test");
-    ControllerRegistry::Global().Add(ControllerKind::OfRobot<ParkedRobot>("test_parked", {}), "this test");
+    agent_host::ControllerRegistry::Global().Add(agent_host::ControllerKind::OfRobot<CruiseRobot>("test_cruise", {"speeds_mps"}), "this test");
+    agent_host::ControllerRegistry::Global().Add(agent_host::ControllerKind::OfRobot<ParkedRobot>("test_parked", {}), "this test");
     return true;
   }();
   (void)registered;
@@ -79,9 +79,9 @@ void RegisterTestKinds() {
 
 /// A two-robot run config whose `controller:` section is `controller` (YAML
 /// flow map text), on line 5 of test.yaml.
-config::RunConfig Config(const std::string& controller, int steps = 60) {
+run_config::RunConfig Config(const std::string& controller, int steps = 60) {
   RegisterTestKinds();
-  return config::LoadRunConfig(config::ConfigNode::LoadString(
+  return run_config::LoadRunConfig(config::ConfigNode::LoadString(
       "name: t\nrobots: 2\nsteps: " + std::to_string(steps) +
           "\ninitial_poses: [[-1.0, -0.4, 0.0], [-1.0, 0.4, 0.0]]\ncontroller: " + controller + "\n",
       "test.yaml"));
@@ -92,8 +92,8 @@ using testing::FactoryErrorOf;
 const CruiseRobot& CruiseOf(const RobotAgent& agent) { return dynamic_cast<const CruiseRobot&>(agent.robot()); }
 
 TEST(RobotClassKindTest, ARobotClassRegisteredWithOneLineRunsWithItsOwnKeys) {
-  const config::RunConfig config = Config("{kind: test_cruise, speeds_mps: [0.1, 0.05]}");
-  const ControllerFactory factory(config);
+  const run_config::RunConfig config = Config("{kind: test_cruise, speeds_mps: [0.1, 0.05]}");
+  const agent_host::ControllerFactory factory(config);
   EXPECT_EQ(factory.kind(), "test_cruise");
   EXPECT_EQ(CruiseOf(*factory.Make(0)).speed_mps(), 0.1);
   EXPECT_EQ(CruiseOf(*factory.Make(1)).speed_mps(), 0.05);
@@ -106,8 +106,8 @@ TEST(RobotClassKindTest, ARobotClassRegisteredWithOneLineRunsWithItsOwnKeys) {
   const double step_s = config.world.time_step_s;
   for (size_t id = 0; id < 2; ++id) {
     const double speed_mps = id == 0 ? 0.1 : 0.05;
-    const sim::Pose2& start = config.initial_poses[id];
-    const sim::Pose2& end = run.final_poses[id];
+    const world::Pose2& start = config.initial_poses[id];
+    const world::Pose2& end = run.final_poses[id];
     // Each robot drove straight at its own speed for the run, give or take the
     // step it waits for its first odometry.
     EXPECT_NEAR(end.x_m - start.x_m, speed_mps * step_s * static_cast<double>(config.sim.max_steps),
@@ -118,10 +118,10 @@ TEST(RobotClassKindTest, ARobotClassRegisteredWithOneLineRunsWithItsOwnKeys) {
 }
 
 TEST(RobotClassKindTest, TheCommonPartsComeFromTheConfig) {
-  const config::RunConfig config = Config(
+  const run_config::RunConfig config = Config(
       "{kind: test_cruise, speeds_mps: [0.1, 0.1], robot: {vel_gain: 0.5, start_delay_steps: [0, 30]}, "
       "sensors: [{kind: odometry}, {kind: movement, range_m: 2.0}], radio: {kind: range, range_m: 1.0}}");
-  const ControllerFactory factory(config);
+  const agent_host::ControllerFactory factory(config);
   EXPECT_EQ(CruiseOf(*factory.Make(0)).robot_params().vel_gain, 0.5);
   const scenario::ScenarioResult run = scenario::RunScenario(config, "robot_class_kind_parts");
   const double early_m = run.final_poses[0].x_m - config.initial_poses[0].x_m;
@@ -172,16 +172,16 @@ TEST(RobotClassKindTest, AMissingOrUnknownKindIsAClearError) {
 }
 
 TEST(RobotClassKindTest, OfRobotReadsTheClassesOptionalStaticMembers) {
-  const ControllerKind chatty = ControllerKind::OfRobot<ChattyRobot>("chatty", {"a"});
+  const agent_host::ControllerKind chatty = agent_host::ControllerKind::OfRobot<ChattyRobot>("chatty", {"a"});
   EXPECT_EQ(chatty.name, "chatty");
   EXPECT_EQ(chatty.keys, std::vector<std::string>{"a"});
   EXPECT_TRUE(chatty.graph_must_connect);
   EXPECT_EQ(chatty.default_parts(3).robot_period_steps, (std::vector<int>{5, 5, 5}));
   // Without them: the defaults of every kind.
-  const ControllerKind parked = ControllerKind::OfRobot<ParkedRobot>("parked", {});
+  const agent_host::ControllerKind parked = agent_host::ControllerKind::OfRobot<ParkedRobot>("parked", {});
   EXPECT_FALSE(parked.graph_must_connect);
-  EXPECT_EQ(parked.default_parts(2).robot_period_steps, AgentPartsConfig::Defaults(2).robot_period_steps);
-  const std::unique_ptr<ExperimentBuilder> builder = parked.make_builder(config::ConfigNode(), 2);
+  EXPECT_EQ(parked.default_parts(2).robot_period_steps, agent_host::AgentPartsConfig::Defaults(2).robot_period_steps);
+  const std::unique_ptr<agent_host::ExperimentBuilder> builder = parked.make_builder(config::ConfigNode(), 2);
   EXPECT_EQ(builder->MakeRobot(1, RobotParams())->id(), 1);
   EXPECT_EQ(builder->MakeMetrics(), nullptr);
 }

@@ -17,28 +17,28 @@
 
 namespace dream::agents::scenario {
 
-ScenarioResult RunScenario(config::RunConfig config, const std::string& log_name) {
+ScenarioResult RunScenario(run_config::RunConfig config, const std::string& log_name) {
   config.sim.progress_interval_s = 0.0;
   lcm::LcmBus bus("memq://");
-  const ControllerFactory factory(config.controller, config.num_robots, config.seed);
+  const agent_host::ControllerFactory factory(config.controller, config.num_robots, config.seed);
   std::vector<std::unique_ptr<RobotAgent>> robots;
   for (int id = 0; id < config.num_robots; ++id) robots.push_back(factory.Make(id));
-  AgentHost host(bus, std::move(robots), 1);
-  sim::UnicycleWorld world(config.world, config.initial_poses, config.obstacles);
+  agent_host::AgentHost host(bus, std::move(robots), 1);
+  world::UnicycleWorld world(config.world, config.initial_poses, config.obstacles);
   // ctest runs each test as its own process, possibly in parallel: one log per process.
   const std::string log_path =
       ::testing::TempDir() + "/" + log_name + "_scenario_" + std::to_string(::getpid()) + ".lcmlog";
   ScenarioResult result;
   {
-    sim::RunRecorder recorder(log_path);
-    sim::SimNode node(bus, world, &recorder, config.sim);
+    node::RunRecorder recorder(log_path);
+    node::SimNode node(bus, world, &recorder, config.sim);
     const std::atomic<bool> stop{false};
     result.outcome = node.Run(stop);
     recorder.Close();
   }
   result.violations = world.violations();
   result.final_poses = world.poses();
-  result.metrics = MetricsFromLog(factory, run_log::RunLog::Read(log_path));
+  result.metrics = agent_host::MetricsFromLog(factory, run_log::RunLog::Read(log_path));
   for (int id = 0; id < config.num_robots; ++id) {
     result.bad_radio_messages += host.agent(static_cast<size_t>(id)).robot().bad_radio_messages();
   }

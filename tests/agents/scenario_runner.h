@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "dream/agents/framework/metrics_report.h"
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 #include "dream/world/pose2.h"
 #include "dream/node/run_outcome.h"
 #include "dream/world/violation_counts.h"
@@ -13,17 +13,17 @@ namespace dream::agents::scenario {
 
 /// What a headless run of an experiment produced.
 struct ScenarioResult {
-  sim::RunOutcome outcome;
-  sim::ViolationCounts violations;
+  node::RunOutcome outcome;
+  world::ViolationCounts violations;
   MetricsReport metrics;
-  std::vector<sim::Pose2> final_poses;
+  std::vector<world::Pose2> final_poses;
   long bad_radio_messages = 0;
 };
 
 /// Runs `config` as `dream run` does (every agent and the simulator on one
 /// memq bus, the log recorded), then computes the experiment's metrics from
 /// the log, as the summary does. `log_name` names the temporary log.
-ScenarioResult RunScenario(config::RunConfig config, const std::string& log_name);
+ScenarioResult RunScenario(run_config::RunConfig config, const std::string& log_name);
 
 /// config/<name>.yaml in the source tree.
 std::string ConfigPath(const std::string& name);

@@ -33,7 +33,7 @@ rectangle_obstacle_t Obstacle(int id, double center_x) {
 TEST(SnapshotFromMessagesTest, PosesGiveTheStepPosesAndVelocitiesAndKeepTheObstacles) {
   WorldSnapshot world;
   world.obstacles.push_back(ObstacleView{7});
-  TakePoses(TwoRobotsAt(12), &world);
+  agent_host::TakePoses(TwoRobotsAt(12), &world);
   EXPECT_EQ(world.step, 12);
   ASSERT_EQ(world.num_robots(), 2);
   EXPECT_EQ(world.poses[1], Eigen::Vector3d(-0.4, 0.5, -1.0));
@@ -42,7 +42,7 @@ TEST(SnapshotFromMessagesTest, PosesGiveTheStepPosesAndVelocitiesAndKeepTheObsta
   robot_poses_t one = TwoRobotsAt(13);
   one.num_robots = 1;
   for (auto* values : {&one.x, &one.y, &one.theta, &one.v, &one.w}) values->resize(1);
-  TakePoses(one, &world);
+  agent_host::TakePoses(one, &world);
   EXPECT_EQ(world.num_robots(), 1);
   EXPECT_EQ(world.velocities.size(), 1u);
 }
@@ -55,14 +55,14 @@ TEST(SnapshotFromMessagesTest, ObstaclesReplaceTheOldOnesAndThoseWithANonFiniteV
   obstacles.obstacles[2].vy = INFINITY;
   obstacles.num_obstacles = 3;
   std::vector<int> non_finite;
-  TakeObstacles(obstacles, &world, &non_finite);
+  agent_host::TakeObstacles(obstacles, &world, &non_finite);
   ASSERT_EQ(world.obstacles.size(), 1u);
   EXPECT_EQ(world.obstacles[0].id, 0);
   EXPECT_EQ(world.obstacles[0].center_m, Eigen::Vector2d(0.5, -0.3));
   EXPECT_EQ(world.obstacles[0].size_m, Eigen::Vector2d(0.2, 0.1));
   EXPECT_EQ(world.obstacles[0].velocity_mps, Eigen::Vector2d(0.01, 0.0));
   EXPECT_EQ(non_finite, (std::vector<int>{1, 2}));
-  TakeObstacles(obstacles_t{}, &world);
+  agent_host::TakeObstacles(obstacles_t{}, &world);
   EXPECT_TRUE(world.obstacles.empty());
 }
 

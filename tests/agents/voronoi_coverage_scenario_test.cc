@@ -14,7 +14,7 @@
 #include "dream/agent_host/controller_factory.h"
 #include "dream/agent_host/log_metrics.h"
 #include "dream/config/config_error.h"
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 #include "dream/lcm/lcm_bus.h"
 #include "dream/node/run_recorder.h"
 #include "dream/node/sim_node.h"
@@ -37,8 +37,8 @@ constexpr double kCostRoundingM4 = 1e-12;
 constexpr double kWorstCaseCollisionDistanceM = 0.185;
 
 TEST(VoronoiCoverageScenarioTest, StaticConfigIsTheMovingOneWithoutPaths) {
-  const config::RunConfig moving = config::LoadRunConfigFile(ConfigPath("voronoi_coverage"));
-  const config::RunConfig still = config::LoadRunConfigFile(ConfigPath("voronoi_coverage_static"));
+  const run_config::RunConfig moving = run_config::LoadRunConfigFile(ConfigPath("voronoi_coverage"));
+  const run_config::RunConfig still = run_config::LoadRunConfigFile(ConfigPath("voronoi_coverage_static"));
   EXPECT_EQ(still.num_robots, moving.num_robots);
   EXPECT_EQ(still.seed, moving.seed);
   ASSERT_EQ(still.initial_poses.size(), moving.initial_poses.size());
@@ -62,8 +62,8 @@ TEST(VoronoiCoverageScenarioTest, StaticConfigIsTheMovingOneWithoutPaths) {
 
 TEST(VoronoiCoverageScenarioTest, WithoutMovingObstaclesTheCostNeverRisesAndTheRobotsSettle) {
   const ScenarioResult run =
-      RunScenario(config::LoadRunConfigFile(ConfigPath("voronoi_coverage_static")), "voronoi_coverage_static");
-  ASSERT_EQ(run.outcome.end, sim::RunOutcome::End::kFinished) << run.outcome.reason;
+      RunScenario(run_config::LoadRunConfigFile(ConfigPath("voronoi_coverage_static")), "voronoi_coverage_static");
+  ASSERT_EQ(run.outcome.end, node::RunOutcome::End::kFinished) << run.outcome.reason;
   EXPECT_EQ(run.outcome.reason, "every robot reported done");
   EXPECT_EQ(run.outcome.robots_done.size(), 15u);
   EXPECT_EQ(run.violations.hard_errors(), 0);
@@ -87,8 +87,8 @@ TEST(VoronoiCoverageScenarioTest, WithoutMovingObstaclesTheCostNeverRisesAndTheR
 
 TEST(VoronoiCoverageScenarioTest, WithMovingObstaclesTheRobotsNeverCollide) {
   const ScenarioResult run =
-      RunScenario(config::LoadRunConfigFile(ConfigPath("voronoi_coverage")), "voronoi_coverage");
-  ASSERT_EQ(run.outcome.end, sim::RunOutcome::End::kFinished) << run.outcome.reason;
+      RunScenario(run_config::LoadRunConfigFile(ConfigPath("voronoi_coverage")), "voronoi_coverage");
+  ASSERT_EQ(run.outcome.end, node::RunOutcome::End::kFinished) << run.outcome.reason;
   EXPECT_EQ(run.outcome.steps, 2000);
   EXPECT_EQ(run.violations.boundary_errors, 0);
   EXPECT_EQ(run.violations.collision_errors, 0);
@@ -104,7 +104,7 @@ TEST(VoronoiCoverageScenarioTest, WithMovingObstaclesTheRobotsNeverCollide) {
 
 std::string ConfigErrorOf(const std::string& section_text) {
   try {
-    ControllerFactory(config::ConfigNode::LoadString(section_text, "c.yaml"), 15, 1);
+    agent_host::ControllerFactory(config::ConfigNode::LoadString(section_text, "c.yaml"), 15, 1);
   } catch (const config::ConfigError& e) {
     return e.what();
   }

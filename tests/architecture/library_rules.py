@@ -9,7 +9,12 @@ document and the code cannot drift apart:
 
 - every folder that holds an `include/dream/<name>/` directory is a row of the table;
 - every `#include` of a dream header in a row's sources (its folder, minus the folders of
-  other rows below it) names its own library or one it may use.
+  other rows below it) names its own library or one it may use;
+- a row's folder, include path, namespace and CMake target agree (`sim/world/`,
+  `dream/world/`, `dream::world`, `dream::world`), its folder's CMakeLists.txt defines that
+  target, and its sources open no namespace but `dream::<name>` (and ones nested in it);
+- a row's folder lies on its floor (the folder's first part), and a row may use only
+  libraries of its own floor or of floors below it (the doc's "Floors, bottom up:" line).
 
 Before the sources, the checker must flag a synthetic row that breaks each rule, so a checker
 that accepts everything fails here.
@@ -23,7 +28,12 @@ import re
 import subprocess
 import sys
 
-TABLE_HEADER = re.compile(r"^\|\s*folder\s*\|.*\|\s*include path\s*\|\s*may use\s*\|", re.IGNORECASE)
+TABLE_HEADER = re.compile(r"^\|\s*floor\s*\|\s*folder\s*\|.*\|\s*include path\s*\|\s*namespace\s*\|\s*may use\s*\|",
+                          re.IGNORECASE)
+FLOORS_LINE = re.compile(r"^Floors, bottom up: (.*)\.$")
+NAMESPACE_OPEN = re.compile(r"^\s*namespace\s+(dream(?:::\w+)*)\s*\{", re.MULTILINE)
+FORWARD_DECLARATIONS = re.compile(r"(\s*(class|struct)\s+\w+;[ \t]*(//[^\n]*)?)*\s*")
+TARGET_DEFINITION = re.compile(r"(?:dream_add_library\(|add_library\(dream_)(\w+)[\s)]")
 DREAM_INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]dream/([A-Za-z0-9_]+)(/|\.hpp)', re.MULTILINE)
 LCM_INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]lcm/', re.MULTILINE)
 SOURCE_SUFFIXES = (".h", ".hpp", ".cc", ".cpp")
@@ -35,28 +45,72 @@ def cell_words(cell):
     return {w for w in words if re.fullmatch(r"[a-z_]+", w)}  # library names, not the prose's other code
 
 
+class Row:
+    """One library of the table."""
+
+    def __init__(self, floor, folder, own, namespace, targets, may_use):
+        self.floor, self.folder, self.own = floor, folder, own
+        self.namespace, self.targets, self.may_use = namespace, targets, may_use
+
+
 def read_table(doc_path):
-    """Rows of the library table: {folder: (own include name, may-use names)}."""
-    rows = {}
+    """The floors, bottom up, and the rows of the library table: {folder: Row}; a row without
+    public headers (the command line, lcm-gen's types) only names its library's floor."""
+    rows, floor_of = {}, {}
     with open(doc_path, encoding="utf-8") as doc:
         lines = doc.read().splitlines()
+    floors = next((re.findall(r"`([a-z_]+)`", m.group(1)) for m in map(FLOORS_LINE.match, lines) if m), None)
+    if not floors:
+        raise SystemExit(f"FAIL: {doc_path}: no line 'Floors, bottom up: `a`, `b`, ....'")
     start = next((i for i, line in enumerate(lines) if TABLE_HEADER.match(line)), None)
     if start is None:
-        raise SystemExit(f"FAIL: {doc_path}: no table whose header starts '| folder | ... | include path | may use |'")
+        raise SystemExit(f"FAIL: {doc_path}: no table whose header starts "
+                         "'| floor | folder | ... | include path | namespace | may use |'")
     header = [c.strip().lower() for c in lines[start].strip().strip("|").split("|")]
-    folder_col, path_col, use_col = header.index("folder"), header.index("include path"), header.index("may use")
+    col = {name: header.index(name) for name in ("floor", "folder", "cmake target", "include path", "namespace", "may use")}
     for line in lines[start + 2:]:
         if not line.startswith("|"):
             break
         cells = [c.strip() for c in line.strip().strip("|").split("|")]
-        folders = re.findall(r"`([^`]+)`", cells[folder_col])
-        own = cell_words(cells[path_col])
+        folders = re.findall(r"`([^`]+)`", cells[col["folder"]])
+        targets = set(re.findall(r"`dream::(\w+)`", cells[col["cmake target"]]))
+        for target in targets:
+            floor_of[target] = cells[col["floor"]]
+        own = cell_words(cells[col["include path"]])
         if not own:
             continue  # no public headers (the command line, the Python package): nothing to check
-        if len(folders) != 1 or len(own) != 1:
-            raise SystemExit(f"FAIL: {doc_path}: row needs one `folder/` and one `dream/<name>/`: {line}")
-        rows[folders[0].strip("/")] = (own.pop(), cell_words(cells[use_col]))
-    return rows
+        namespaces = re.findall(r"`([^`]+)`", cells[col["namespace"]])
+        if len(folders) != 1 or len(own) != 1 or len(namespaces) != 1:
+            raise SystemExit(f"FAIL: {doc_path}: row needs one `folder/`, one `dream/<name>/` and one `dream::<name>`: {line}")
+        name = own.pop()
+        floor_of[name] = cells[col["floor"]]
+        rows[folders[0].strip("/")] = Row(cells[col["floor"]], folders[0].strip("/"), name, namespaces[0], targets,
+                                           cell_words(cells[col["may use"]]))
+    return floors, floor_of, rows
+
+
+def row_violations(floors, floor_of, rows, read):
+    """What a row itself breaks: its four names disagree, its folder is off its floor, its
+    target is not defined in its folder, or it may use a library of a higher floor."""
+    found = []
+    for folder, row in rows.items():
+        where = f"docs/architecture.md: {folder}/"
+        if os.path.basename(folder) != row.own:
+            found.append(f"{where}: the folder's name is not its include path's (dream/{row.own}/)")
+        if row.namespace != f"dream::{row.own}":
+            found.append(f"{where}: namespace {row.namespace} is not dream::{row.own}")
+        if row.own not in row.targets:
+            found.append(f"{where}: CMake target is not dream::{row.own}")
+        if row.floor not in floors or folder.split("/")[0] != row.floor:
+            found.append(f"{where}: not on its floor {row.floor!r} (floors: {floors})")
+        cmake = read(f"{folder}/CMakeLists.txt") or ""
+        if row.own not in TARGET_DEFINITION.findall(cmake):
+            found.append(f"{folder}/CMakeLists.txt: defines no target dream_{row.own} (dream::{row.own})")
+        for used in sorted(row.may_use):
+            if used in floor_of and floor_of[used] in floors and row.floor in floors \
+                    and floors.index(floor_of[used]) > floors.index(row.floor):
+                found.append(f"{where}: may use {used}, of the higher floor {floor_of[used]}")
+    return found
 
 
 def tracked_files(source):
@@ -90,8 +144,14 @@ def violations(rows, files, read):
         folder = owner_of(path, rows)
         if folder is None:
             continue
-        own, may_use = rows[folder]
+        own, may_use = rows[folder].own, rows[folder].may_use
         text = read(path)
+        for match in NAMESPACE_OPEN.finditer(text):
+            opened, body = match.group(1), text[match.end():text.find("}", match.end())]
+            if FORWARD_DECLARATIONS.fullmatch(body):
+                continue  # `namespace dream::world { class World; }` declares, it does not define
+            if opened != f"dream::{own}" and not opened.startswith(f"dream::{own}::"):
+                found.append(f"{path}: opens namespace {opened}, but {folder}/ is dream::{own}")
         for match in DREAM_INCLUDE.finditer(text):
             name = "msgs" if match.group(2) == ".hpp" else match.group(1)
             if name != own and name not in may_use:
@@ -104,21 +164,36 @@ def violations(rows, files, read):
 
 def self_test():
     """The checker must flag each kind of breach in a made-up tree."""
-    rows = {"lib/a": ("a", {"b"}), "lib/b": ("b", set())}
+    floors = ["low", "high"]
+    rows = {"low/a": Row("low", "low/a", "a", "dream::a", {"a"}, {"b"}),
+            "low/b": Row("low", "low/b", "b", "dream::b", {"b"}, set()),
+            "low/c": Row("low", "low/c", "cc", "dream::c", {"c"}, {"h"}),     # four names disagree, uses up
+            "high/d": Row("low", "high/d", "d", "dream::d", {"d"}, set()),    # off its floor
+            "high/h": Row("high", "high/h", "h", "dream::h", {"h"}, {"a"})}
+    floor_of = {"a": "low", "b": "low", "cc": "low", "d": "low", "h": "high"}
     texts = {
-        "lib/a/src/x.cc": '#include "dream/a/x.h"\n#include "dream/b/y.h"\n',     # allowed
-        "lib/b/src/y.cc": '#include "dream/a/x.h"\n',                             # b may not use a
-        "lib/b/src/z.cc": "#include <lcm/lcm-cpp.hpp>\n",                         # nor LCM
-        "lib/b/src/t.cc": '#include "dream/robot_poses_t.hpp"\n',                 # nor msgs
+        "low/a/src/x.cc": '#include "dream/a/x.h"\n#include "dream/b/y.h"\nnamespace dream::a {\nnamespace dream::a::detail {\n',
+        "low/b/src/y.cc": '#include "dream/a/x.h"\n',                             # b may not use a
+        "low/b/src/z.cc": "#include <lcm/lcm-cpp.hpp>\n",                         # nor LCM
+        "low/b/src/t.cc": '#include "dream/robot_poses_t.hpp"\n',                 # nor msgs
+        "low/b/src/n.cc": "namespace dream::a {\nint f();\n}\n",                   # nor open a's namespace
+        "low/b/src/f.cc": "namespace dream::a {\nclass X;  // declared only\n}\n",  # (a declaration may)
         "lib/c/include/dream/c/c.h": "",                                          # not in the table
+        "low/a/CMakeLists.txt": "dream_add_library(a\n", "low/b/CMakeLists.txt": "add_library(dream_b STATIC\n",
+        "low/c/CMakeLists.txt": "dream_add_library(c\n", "high/d/CMakeLists.txt": "dream_add_library(d\n",
+        "high/h/CMakeLists.txt": "dream_add_library(hh\n",                       # the wrong target
     }
-    found = violations(rows, list(texts), texts.__getitem__)
-    expected = ["lib/b/src/y.cc", "lib/b/src/z.cc", "lib/b/src/t.cc", "lib/c/include/dream/c/c.h"]
-    for path in expected:
-        if not any(line.startswith(path + ":") for line in found):
-            raise SystemExit(f"FAIL: self test: {path} breaks a rule but was not flagged ({found})")
-    if any(line.startswith("lib/a/") for line in found):
-        raise SystemExit(f"FAIL: self test: lib/a/src/x.cc keeps the rules but was flagged ({found})")
+    found = violations(rows, list(texts), texts.__getitem__) + row_violations(floors, floor_of, rows, texts.get)
+    expected = ["low/b/src/y.cc:", "low/b/src/z.cc:", "low/b/src/t.cc:", "low/b/src/n.cc:", "lib/c/include/dream/c/c.h:",
+                "docs/architecture.md: low/c/: the folder's name", "docs/architecture.md: low/c/: namespace",
+                "docs/architecture.md: low/c/: CMake target", "docs/architecture.md: low/c/: may use h",
+                "docs/architecture.md: high/d/: not on its floor", "high/h/CMakeLists.txt: defines no target"]
+    for prefix in expected:
+        if not any(line.startswith(prefix) for line in found):
+            raise SystemExit(f"FAIL: self test: {prefix} breaks a rule but was not flagged ({found})")
+    if any(line.startswith(("low/a/", "low/b/src/f.cc", "docs/architecture.md: low/a/", "docs/architecture.md: low/b/"))
+           for line in found):
+        raise SystemExit(f"FAIL: self test: low/a and low/b keep the rules but were flagged ({found})")
 
 
 def main():
@@ -126,19 +201,23 @@ def main():
     parser.add_argument("--source", required=True, help="the repository's root")
     args = parser.parse_args()
     self_test()
-    rows = read_table(os.path.join(args.source, "docs", "architecture.md"))
+    floors, floor_of, rows = read_table(os.path.join(args.source, "docs", "architecture.md"))
 
     def read(path):
-        with open(os.path.join(args.source, path), encoding="utf-8", errors="replace") as f:
+        full = os.path.join(args.source, path)
+        if not os.path.isfile(full):
+            return None
+        with open(full, encoding="utf-8", errors="replace") as f:
             return f.read()
 
-    found = violations(rows, tracked_files(args.source), read)
+    found = violations(rows, tracked_files(args.source), read) + row_violations(floors, floor_of, rows, read)
     for line in found:
         print(line)
     if found:
-        print(f"FAIL: {len(found)} include(s) break docs/architecture.md's library table")
+        print(f"FAIL: {len(found)} breach(es) of docs/architecture.md's library table")
         return 1
-    print(f"PASS: {len(rows)} libraries include only what docs/architecture.md allows")
+    print(f"PASS: {len(rows)} libraries on {len(floors)} floors: names agree, includes and namespaces as "
+          "docs/architecture.md allows")
     return 0
 
 

@@ -15,7 +15,7 @@
 #include "dream/bridge/lab_import.h"
 #include "dream/world/realistic_world.h"
 #include "dream/bridge/metrics_json.h"
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 #include "dream/render/trajectory_picture.h"
 #include "dream/run_log/run_log.h"
 #include "dream/bridge/npy_file.h"
@@ -38,7 +38,7 @@ constexpr int kRobots = 20;
 constexpr int64_t kSteps = 27000;
 
 template <typename Message>
-void Write(sim::RunRecorder& recorder, const std::string& channel, int64_t utime, const Message& message) {
+void Write(node::RunRecorder& recorder, const std::string& channel, int64_t utime, const Message& message) {
   std::vector<uint8_t> buffer(static_cast<size_t>(message.getEncodedSize()));
   message.encode(buffer.data(), 0, static_cast<int>(buffer.size()));
   recorder.Write(channel, utime, buffer.data(), static_cast<int>(buffer.size()));
@@ -66,18 +66,18 @@ const std::string& RunFolder() {
     fs::remove_all(path);
     fs::create_directories(path + "/run");
     std::ofstream(path + "/run/config.yaml") << Config();
-    std::vector<sim::Pose2> start;
+    std::vector<world::Pose2> start;
     for (int i = 0; i < kRobots; ++i) start.push_back({-1.2 + 0.6 * (i % 5), -0.75 + 0.5 * (i / 5), 0.0});
     // One static obstacle, filled in place (copying a spec from an initializer
     // list makes GCC 12 warn, wrongly, of its empty optional path).
-    std::vector<sim::RectangleObstacleSpec> obstacle_specs(1);
+    std::vector<world::RectangleObstacleSpec> obstacle_specs(1);
     obstacle_specs[0].id = 0;
     obstacle_specs[0].center_m = {1.52, 0.95};
     obstacle_specs[0].width_m = 0.1;
     obstacle_specs[0].height_m = 0.05;
-    sim::UnicycleWorld world(sim::WorldParams{}, start, obstacle_specs);
-    sim::RunRecorder recorder(path + "/run/run.lcmlog");
-    std::vector<sim::ObstacleState> states;
+    world::UnicycleWorld world(world::WorldParams{}, start, obstacle_specs);
+    node::RunRecorder recorder(path + "/run/run.lcmlog");
+    std::vector<world::ObstacleState> states;
     for (int64_t k = 0; k <= kSteps; ++k) {
       const int64_t utime = world.utime();
       obstacles_t obstacles;
@@ -188,8 +188,8 @@ void BM_ImportParts(benchmark::State& state) {
     } else if (part == 2) {
       benchmark::DoNotOptimize(bridge::MetricsJson(exported.config, run_log::RunLog::Read(dir + "/lab/run.lcmlog")));
     } else {
-      sim::TrajectoryPicture::Render(run_log::RunLog::Read(dir + "/lab/run.lcmlog"), sim::ArenaOverlays{},
-                                     dir + "/parts.png", sim::RenderFormat::kPng);
+      render::TrajectoryPicture::Render(run_log::RunLog::Read(dir + "/lab/run.lcmlog"), render::ArenaOverlays{},
+                                     dir + "/parts.png", render::RenderFormat::kPng);
     }
   }
 }
@@ -205,9 +205,9 @@ namespace {
 void BM_Calibrate20Robots5000Steps(benchmark::State& state) {
   using namespace dream;
   using agents::CalibrationDrive;
-  std::vector<sim::Pose2> start;
+  std::vector<world::Pose2> start;
   for (const Eigen::Vector3d& pose : CalibrationDrive::StartPoses(20)) start.push_back({pose.x(), pose.y(), pose.z()});
-  sim::RealisticWorld world(sim::WorldParams{}, sim::RealismParams::Lab(), 1, start);
+  world::RealisticWorld world(world::WorldParams{}, world::RealismParams::Lab(), 1, start);
   bridge::CalibrationRun run;
   run.name = "synthetic";
   run.timed = true;
@@ -216,7 +216,7 @@ void BM_Calibrate20Robots5000Steps(benchmark::State& state) {
   for (int64_t k = 0; k < 5000; ++k) {
     run.track.utime.push_back(std::llround(time_s * 1e6));
     const agents::UnicycleCommand program = CalibrationDrive::CommandAt(k % CalibrationDrive::Steps());
-    const sim::UnicycleCommand command{program.v_mps, program.w_radps};
+    const world::UnicycleCommand command{program.v_mps, program.w_radps};
     for (int i = 0; i < 20; ++i) {
       run.track.poses.push_back(world.poses()[static_cast<size_t>(i)]);
       run.track.commands.push_back(command);

@@ -38,7 +38,7 @@ struct Variant {
   HrvoFactory make;
 };
 
-using Problem = std::function<void(uint64_t seed, std::vector<sim::Pose2>*, std::vector<Eigen::Vector2d>*)>;
+using Problem = std::function<void(uint64_t seed, std::vector<world::Pose2>*, std::vector<Eigen::Vector2d>*)>;
 
 void Table(const char* title, const Problem& problem, const std::vector<Variant>& variants, int seeds) {
   std::printf("%s, %d seeds\n\n", title, seeds);
@@ -49,7 +49,7 @@ void Table(const char* title, const Problem& problem, const std::vector<Variant>
     for (const Variant& v : variants) {
       Row row;
       for (int seed = 1; seed <= seeds; ++seed) {
-        std::vector<sim::Pose2> start;
+        std::vector<world::Pose2> start;
         std::vector<Eigen::Vector2d> goals;
         problem(static_cast<uint64_t>(seed), &start, &goals);
         HrvoSwapOptions options;
@@ -90,13 +90,13 @@ int Main(int argc, char** argv) {
       {"HrvoExact, keep_right_rad = 0", [plain] { return std::make_unique<HrvoExact>(HrvoParams{}, plain); }},
   };
   Table("10-robot circle swap (radius 0.85 m, start jitter +/-0.03 m, +/-0.3 rad)",
-        [](uint64_t seed, std::vector<sim::Pose2>* start, std::vector<Eigen::Vector2d>* goals) {
+        [](uint64_t seed, std::vector<world::Pose2>* start, std::vector<Eigen::Vector2d>* goals) {
           *start = CirclePoses(10, 0.85, 0.03, 0.3, seed);
           *goals = AntipodalGoals(10, 0.85);
         },
         variants, seeds);
   Table("12-robot random crossings (starts and goals >= 0.35 m apart)",
-        [](uint64_t seed, std::vector<sim::Pose2>* start, std::vector<Eigen::Vector2d>* goals) {
+        [](uint64_t seed, std::vector<world::Pose2>* start, std::vector<Eigen::Vector2d>* goals) {
           RandomCrossing(12, seed, start, goals);
         },
         variants, seeds);

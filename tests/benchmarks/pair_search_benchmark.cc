@@ -22,7 +22,7 @@
 #define DREAM_HAVE_NANOFLANN 1
 #endif
 
-namespace dream::sim {
+namespace dream::world {
 namespace {
 
 // Uniform points at the density of 50 robots in the Robotarium's arena (the
@@ -99,6 +99,6 @@ BENCHMARK(BM_NanoflannKdTree)->Arg(50)->Arg(1000)->Arg(10000);
 #endif
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::world
 
 BENCHMARK_MAIN();

@@ -15,7 +15,7 @@
 #include "dream/world/realistic_world.h"
 #include "dream/world/unicycle_world.h"
 
-namespace dream::sim {
+namespace dream::world {
 namespace {
 
 UnicycleWorld MakeBusyWorld(int num_robots) {
@@ -95,6 +95,6 @@ void BM_RealismStep(benchmark::State& state) {
 BENCHMARK(BM_RealismStep)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::world
 
 BENCHMARK_MAIN();

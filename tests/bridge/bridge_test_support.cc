@@ -61,33 +61,33 @@ std::string ShippedConfig(const std::string& name) {
   return ReadText(std::string(DREAM_SOURCE_DIR) + "/config/" + name + ".yaml");
 }
 
-config::RunConfig LoadConfigText(const std::string& text, const std::string& source) {
-  return config::LoadRunConfig(config::ConfigNode::LoadString(text, source));
+run_config::RunConfig LoadConfigText(const std::string& text, const std::string& source) {
+  return run_config::LoadRunConfig(config::ConfigNode::LoadString(text, source));
 }
 
-sim::RunOutcome RunAgainst(sim::World& world, const config::RunConfig& config, const std::string& log_path) {
+node::RunOutcome RunAgainst(world::World& world, const run_config::RunConfig& config, const std::string& log_path) {
   lcm::LcmBus bus("memq://");
-  const agents::ControllerFactory factory(config.controller, config.num_robots, config.seed);
+  const agent_host::ControllerFactory factory(config.controller, config.num_robots, config.seed);
   std::vector<std::unique_ptr<agents::RobotAgent>> robots;
   for (int id = 0; id < config.num_robots; ++id) robots.push_back(factory.Make(id));
-  agents::AgentHost host(bus, std::move(robots), 7);
-  sim::SimNodeOptions options = config.sim;
+  agent_host::AgentHost host(bus, std::move(robots), 7);
+  config::SimNodeOptions options = config.sim;
   options.progress_interval_s = 0.0;
-  sim::RunRecorder recorder(log_path);
-  sim::SimNode node(bus, world, &recorder, options);
+  node::RunRecorder recorder(log_path);
+  node::SimNode node(bus, world, &recorder, options);
   const std::atomic<bool> stop{false};
-  sim::RunOutcome outcome = node.Run(stop);
+  node::RunOutcome outcome = node.Run(stop);
   recorder.Close();
   return outcome;
 }
 
 std::string MakeRunFolder(const std::string& name, const std::string& config_text) {
   const std::string dir = NewFolder(name);
-  const config::RunConfig config = LoadConfigText(config_text, dir + "/config.yaml");
+  const run_config::RunConfig config = LoadConfigText(config_text, dir + "/config.yaml");
   WriteText(dir + "/config.yaml", config_text);
-  sim::UnicycleWorld world(config.world, config.initial_poses, config.obstacles);
-  const sim::RunOutcome outcome = RunAgainst(world, config, dir + "/run.lcmlog");
-  EXPECT_EQ(outcome.end, sim::RunOutcome::End::kFinished) << outcome.reason;
+  world::UnicycleWorld world(config.world, config.initial_poses, config.obstacles);
+  const node::RunOutcome outcome = RunAgainst(world, config, dir + "/run.lcmlog");
+  EXPECT_EQ(outcome.end, node::RunOutcome::End::kFinished) << outcome.reason;
   return dir;
 }
 

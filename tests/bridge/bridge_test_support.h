@@ -9,7 +9,7 @@
 
 #include "dream/bridge/npy_file.h"
 #include "dream/bridge/run_track.h"
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 #include "dream/node/run_outcome.h"
 #include "dream/world/world.h"
 
@@ -25,11 +25,11 @@ std::string NewFolder(const std::string& name);
 std::string ShippedConfig(const std::string& name);
 
 /// The config in `text` (as if read from <source>).
-config::RunConfig LoadConfigText(const std::string& text, const std::string& source = "test.yaml");
+run_config::RunConfig LoadConfigText(const std::string& text, const std::string& source = "test.yaml");
 
 /// Runs the config's agents against `world` on memq:// and records the run
 /// to log_path: exactly what `dream run` does, with any World.
-sim::RunOutcome RunAgainst(sim::World& world, const config::RunConfig& config, const std::string& log_path);
+node::RunOutcome RunAgainst(world::World& world, const run_config::RunConfig& config, const std::string& log_path);
 
 /// A run folder as `dream run` writes it (run.lcmlog, config.yaml) for the
 /// config text, simulated with UnicycleWorld.

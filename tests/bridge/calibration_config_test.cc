@@ -8,19 +8,19 @@
 #include <stdexcept>
 
 #include "dream/agents/experiments/calibration_drive.h"
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 
 namespace dream::bridge {
 namespace {
 
-config::RunConfig Written(int robots) {
-  return config::LoadRunConfig(config::ConfigNode::LoadString(CalibrationConfig::Text(robots), "written.yaml"));
+run_config::RunConfig Written(int robots) {
+  return run_config::LoadRunConfig(config::ConfigNode::LoadString(CalibrationConfig::Text(robots), "written.yaml"));
 }
 
 TEST(CalibrationConfigTest, ShippedConfigIsTheEightRobotCase) {
-  const config::RunConfig shipped =
-      config::LoadRunConfigFile(std::string(DREAM_SOURCE_DIR) + "/config/calibration.yaml");
-  const config::RunConfig written = Written(8);
+  const run_config::RunConfig shipped =
+      run_config::LoadRunConfigFile(std::string(DREAM_SOURCE_DIR) + "/config/calibration.yaml");
+  const run_config::RunConfig written = Written(8);
   EXPECT_EQ(written.name, "calibration_8");
   EXPECT_EQ(shipped.num_robots, written.num_robots);
   EXPECT_EQ(shipped.sim.max_steps, agents::CalibrationDrive::Steps());

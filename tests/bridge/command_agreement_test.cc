@@ -26,7 +26,7 @@ RunTrack StillTrack(int64_t steps) {
 }
 
 TEST(CommandAgreementTest, AgentsThatSendTheLabsCommandsAgreeWithinRounding) {
-  LabReplayWorld replay(StillTrack(3), sim::WorldParams{});
+  LabReplayWorld replay(StillTrack(3), world::WorldParams{});
   for (int k = 0; k < 3; ++k) {
     replay.SetCommand(0, {0.1, 0.2 + 1e-13});  // the last bits of another numpy build
     replay.SetCommand(1, {0.05, -0.3});
@@ -43,7 +43,7 @@ TEST(CommandAgreementTest, AgentsThatSendTheLabsCommandsAgreeWithinRounding) {
 }
 
 TEST(CommandAgreementTest, TheFirstDifferentStepAndTheWorstRobotAreNamed) {
-  LabReplayWorld replay(StillTrack(4), sim::WorldParams{});
+  LabReplayWorld replay(StillTrack(4), world::WorldParams{});
   const double robot1_w[] = {-0.3, -0.3, -0.1, -0.4};  // differs from step 2: 0.2, then 0.1
   for (int k = 0; k < 4; ++k) {
     replay.SetCommand(0, {0.1, 0.2});
@@ -71,7 +71,7 @@ TEST(CommandAgreementTest, TheFirstDifferentStepAndTheWorstRobotAreNamed) {
 }
 
 TEST(CommandAgreementTest, AnAgentThatFellSilentLeavesTheRunIncompleteButNotDifferent) {
-  LabReplayWorld replay(StillTrack(3), sim::WorldParams{});
+  LabReplayWorld replay(StillTrack(3), world::WorldParams{});
   replay.SetCommand(0, {0.1, 0.2});
   replay.SetCommand(1, {0.05, -0.3});
   replay.Step();
@@ -88,7 +88,7 @@ TEST(CommandAgreementTest, AnAgentThatFellSilentLeavesTheRunIncompleteButNotDiff
 }
 
 TEST(CommandAgreementTest, BeforeTheFirstStepThereIsNothingToCompare) {
-  const LabReplayWorld replay(StillTrack(2), sim::WorldParams{});
+  const LabReplayWorld replay(StillTrack(2), world::WorldParams{});
   const CommandAgreement agreement = CommandAgreement::Of(replay);
   EXPECT_EQ(agreement.steps(), 0);
   EXPECT_TRUE(agreement.Same());

@@ -85,29 +85,29 @@ TEST(FlatPythonRuntimeTest, ControllerModuleNamesThatCannotSitBesideTheScriptAre
 }
 
 TEST(ObstacleScheduleTest, EveryStepEqualsWhatTheWorldReports) {
-  sim::RectangleObstacleSpec moving;
+  world::RectangleObstacleSpec moving;
   moving.id = 4;
   moving.center_m = {-1.3, 0.9};
   moving.width_m = 0.3;
   moving.height_m = 0.1;
-  moving.path = sim::ObstaclePath{{Eigen::Vector2d(1.3, 0.9), Eigen::Vector2d(1.3, -0.9)}, 0.7,
-                                  sim::ObstaclePathMode::kPingPong};
-  sim::RectangleObstacleSpec still;
+  moving.path = world::ObstaclePath{{Eigen::Vector2d(1.3, 0.9), Eigen::Vector2d(1.3, -0.9)}, 0.7,
+                                  world::ObstaclePathMode::kPingPong};
+  world::RectangleObstacleSpec still;
   still.id = 9;
   still.center_m = {0.0, 0.0};
   still.width_m = 0.2;
   still.height_m = 0.2;
-  const std::vector<sim::RectangleObstacleSpec> specs = {moving, still};
+  const std::vector<world::RectangleObstacleSpec> specs = {moving, still};
   const int64_t steps = 600;  // several laps, corners included
   const NpyArray schedule = ObstacleSchedule(specs, 0.033, steps);
   ASSERT_EQ(schedule.shape, (std::vector<int64_t>{steps + 1, 2, kObstacleColumns}));
-  sim::UnicycleWorld world(sim::WorldParams{}, {sim::Pose2{0.5, 0.5, 0.0}}, specs);
-  std::vector<sim::ObstacleState> states;
+  world::UnicycleWorld world(world::WorldParams{}, {world::Pose2{0.5, 0.5, 0.0}}, specs);
+  std::vector<world::ObstacleState> states;
   for (int64_t k = 0; k <= steps; ++k) {
     world.GetObstacleStates(&states);
     for (size_t m = 0; m < states.size(); ++m) {
       const double* row = &schedule.values[static_cast<size_t>((k * 2 + static_cast<int64_t>(m)) * kObstacleColumns)];
-      const sim::ObstacleState& s = states[m];
+      const world::ObstacleState& s = states[m];
       const std::vector<double> expected = {static_cast<double>(s.id), s.center_x_m, s.center_y_m, s.width_m,
                                             s.height_m, s.vx_mps, s.vy_mps};
       ASSERT_EQ(std::vector<double>(row, row + kObstacleColumns), expected) << "step " << k << ", obstacle " << m;
@@ -124,9 +124,9 @@ TEST(ObstacleScheduleTest, SizeIsBoundedBeforeAllocating) {
   EXPECT_EQ(ObstacleScheduleBytes(0, INT64_MAX), 0);
   EXPECT_EQ(ObstacleScheduleBytes(10000, INT64_MAX - 1), INT64_MAX);
   EXPECT_GT(ObstacleScheduleBytes(10000, 27272), kMaxObstacleScheduleBytes);
-  sim::RectangleObstacleSpec still;
+  world::RectangleObstacleSpec still;
   still.width_m = still.height_m = 0.1;
-  const std::vector<sim::RectangleObstacleSpec> many(10000, still);
+  const std::vector<world::RectangleObstacleSpec> many(10000, still);
   EXPECT_THAT(ErrorOf([&] { ObstacleSchedule(many, 0.033, 27272); }),
               HasSubstr("an obstacle schedule of 10000 obstacles over 27272 steps would exceed 256 MiB"));
   EXPECT_THAT(ErrorOf([&] { ObstacleSchedule({still}, 0.033, -1); }), HasSubstr("needs steps >= 0, got -1"));

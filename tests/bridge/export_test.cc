@@ -33,8 +33,8 @@ RunTrack StillTrack(int n, int64_t steps) {
   for (int64_t k = 0; k <= steps; ++k) {
     track.utime.push_back(k * 33000);
     for (int i = 0; i < n; ++i) {
-      track.poses.push_back(sim::Pose2{-1.4 + 0.5 * (i % 6), -0.75 + 0.5 * (i / 6), 0.0});
-      track.commands.push_back(sim::UnicycleCommand{});
+      track.poses.push_back(world::Pose2{-1.4 + 0.5 * (i % 6), -0.75 + 0.5 * (i / 6), 0.0});
+      track.commands.push_back(world::UnicycleCommand{});
     }
     track.obstacles.emplace_back();
   }
@@ -73,11 +73,11 @@ TEST(ExportOptionsTest, EveryStrategyParsesFromItsNameAndIsDescribed) {
 }
 
 TEST(PreValidationTest, CleanRunPasses) {
-  EXPECT_TRUE(PreValidate(StillTrack(20, 100), Finished(), sim::WorldParams{}, 240).empty());
+  EXPECT_TRUE(PreValidate(StillTrack(20, 100), Finished(), world::WorldParams{}, 240).empty());
 }
 
 TEST(PreValidationTest, MoreThanTwentyRobotsIsRefused) {
-  const auto problems = PreValidate(StillTrack(21, 10), Finished(), sim::WorldParams{}, 240);
+  const auto problems = PreValidate(StillTrack(21, 10), Finished(), world::WorldParams{}, 240);
   ASSERT_THAT(Rules(problems), ElementsAre("robots"));
   EXPECT_THAT(problems[0].Text(), HasSubstr("the run has 21 robots; the Robotarium runs 1 to 20"));
   EXPECT_THAT(problems[0].Text(), HasSubstr("Fix: set `robots:` to at most 20"));
@@ -85,8 +85,8 @@ TEST(PreValidationTest, MoreThanTwentyRobotsIsRefused) {
 
 TEST(PreValidationTest, DurationOverTheCapIsRefusedAndTheLimitIsNamed) {
   // 27,000 steps + 240 settle steps = 898.9 s fit; 27,100 + 240 = 902.2 s do not.
-  EXPECT_TRUE(PreValidate(StillTrack(2, 27000), Finished(), sim::WorldParams{}, 240).empty());
-  const auto problems = PreValidate(StillTrack(2, 27100), Finished(), sim::WorldParams{}, 240);
+  EXPECT_TRUE(PreValidate(StillTrack(2, 27000), Finished(), world::WorldParams{}, 240).empty());
+  const auto problems = PreValidate(StillTrack(2, 27100), Finished(), world::WorldParams{}, 240);
   ASSERT_THAT(Rules(problems), ElementsAre("duration"));
   EXPECT_THAT(problems[0].Text(), HasSubstr("902.2 s on the lab, over its cap of 900 s"));
   EXPECT_THAT(problems[0].Text(), HasSubstr("run at most 27032 steps"));
@@ -96,7 +96,7 @@ TEST(PreValidationTest, UnfinishedRunIsRefused) {
   RunEnd end = Finished();
   end.state = run_status_t::ABORTED;
   end.detail = "interrupted (Ctrl-C or SIGTERM)";
-  const auto problems = PreValidate(StillTrack(2, 10), end, sim::WorldParams{}, 240);
+  const auto problems = PreValidate(StillTrack(2, 10), end, world::WorldParams{}, 240);
   ASSERT_THAT(Rules(problems), ElementsAre("finished"));
   EXPECT_THAT(problems[0].Text(), HasSubstr("interrupted (Ctrl-C or SIGTERM)"));
 }
@@ -105,10 +105,10 @@ TEST(PreValidationTest, BoundaryCollisionAndObstacleErrorsNameRobotAndFirstStep)
   RunTrack track = StillTrack(4, 20);
   for (int64_t k = 7; k <= 9; ++k) track.poses[static_cast<size_t>(k * 4 + 0)].x_m = -1.65;  // robot 0 out
   for (int64_t k = 5; k <= 20; ++k) {  // robot 2 onto robot 1
-    track.poses[static_cast<size_t>(k * 4 + 2)] = sim::Pose2{track.pose(k, 1).x_m + 0.1, track.pose(k, 1).y_m, 0.0};
+    track.poses[static_cast<size_t>(k * 4 + 2)] = world::Pose2{track.pose(k, 1).x_m + 0.1, track.pose(k, 1).y_m, 0.0};
   }
   for (int64_t k = 12; k <= 20; ++k) track.obstacles[static_cast<size_t>(k)] = {{3, 0.1, -0.75, 0.1, 0.1, 0, 0}};
-  const auto problems = PreValidate(track, Finished(), sim::WorldParams{}, 240);
+  const auto problems = PreValidate(track, Finished(), world::WorldParams{}, 240);
   ASSERT_THAT(Rules(problems), ElementsAre("boundary", "collision", "obstacle"));
   EXPECT_THAT(problems[0].Text(), HasSubstr("boundary: robot 0, step 7: is outside the arena at (-1.650, -0.750)"));
   EXPECT_THAT(problems[1].Text(), HasSubstr("collision: robots 1 and 2, step 5: are closer than 0.135 m"));
@@ -119,10 +119,10 @@ TEST(PreValidationTest, BoundaryCollisionAndObstacleErrorsNameRobotAndFirstStep)
 TEST(PreValidationTest, StartPosesMustBeReachableByTheLabsStartUp) {
   RunTrack track = StillTrack(3, 5);
   for (int64_t k = 0; k <= 5; ++k) {
-    track.poses[static_cast<size_t>(k * 3 + 1)] = sim::Pose2{track.pose(k, 0).x_m + 0.18, track.pose(k, 0).y_m, 0.0};
-    track.poses[static_cast<size_t>(k * 3 + 2)] = sim::Pose2{1.57, 0.0, 0.0};
+    track.poses[static_cast<size_t>(k * 3 + 1)] = world::Pose2{track.pose(k, 0).x_m + 0.18, track.pose(k, 0).y_m, 0.0};
+    track.poses[static_cast<size_t>(k * 3 + 2)] = world::Pose2{1.57, 0.0, 0.0};
   }
-  const auto problems = PreValidate(track, Finished(), sim::WorldParams{}, 240);
+  const auto problems = PreValidate(track, Finished(), world::WorldParams{}, 240);
   ASSERT_THAT(Rules(problems), ElementsAre("start_inside_arena", "start_spacing"));
   EXPECT_THAT(problems[0].Text(), HasSubstr("robot 2, step 0: starts at (1.570, 0.000), closer than 0.055 m"));
   EXPECT_THAT(problems[1].Text(), HasSubstr("robots 0 and 1, step 0: start poses are 0.180 m apart"));
@@ -133,10 +133,10 @@ TEST(PreValidationTest, CrowdedStartIsAWarningNotARefusal) {
   RunTrack packed = StillTrack(9, 5);
   for (int64_t k = 0; k <= 5; ++k) {
     for (int i = 0; i < 9; ++i) {
-      packed.poses[static_cast<size_t>(k * 9 + i)] = sim::Pose2{0.5 + 0.3 * (i % 3), -0.6 + 0.3 * (i / 3), 0.0};
+      packed.poses[static_cast<size_t>(k * 9 + i)] = world::Pose2{0.5 + 0.3 * (i % 3), -0.6 + 0.3 * (i / 3), 0.0};
     }
   }
-  EXPECT_TRUE(PreValidate(packed, Finished(), sim::WorldParams{}, 240).empty());
+  EXPECT_TRUE(PreValidate(packed, Finished(), world::WorldParams{}, 240).empty());
   const std::vector<std::string> warnings = StartUpWarnings(packed);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_THAT(warnings[0], HasSubstr("start poses are crowded (robot 4 has 4 others within 0.38 m)"));
@@ -228,7 +228,7 @@ TEST_F(ExportTest, RefusedRunWritesNothing) {
   const RunTrack track = ReadRunTrack(*run_dir_ + "/run.lcmlog", &end);
   LabLimits small_lab;
   small_lab.max_robots = 5;
-  EXPECT_THAT(Rules(PreValidate(track, end, sim::WorldParams{}, 240, small_lab)), ElementsAre("robots"));
+  EXPECT_THAT(Rules(PreValidate(track, end, world::WorldParams{}, 240, small_lab)), ElementsAre("robots"));
   // A run that collides: robots 0 and 1 drive to the same goal.
   config.replace(config.find("- [0.172, 0.323]"), 16, "- [0.416, 0.134]");
   const std::string bad_run = testing::MakeRunFolder("export_colliding", config);
@@ -364,7 +364,7 @@ TEST(SubmissionTemplateTest, ParameterIndicesMatchTheScript) {
   EXPECT_EQ(script.find("exec("), std::string::npos);
 }
 
-// --- the lab verifier's rules (sim::LabVerifierRules) in pre-validation ---
+// --- the lab verifier's rules (world::LabVerifierRules) in pre-validation ---
 
 /// Moves robot `robot` of a StillTrack below the arena (y < -1) for steps [from, from + count).
 void PutOutside(RunTrack* track, int robot, int64_t from, int64_t count) {
@@ -378,11 +378,11 @@ TEST(VerifierRulesTest, OutsideHundredRobotStepsIsDebugsErrorAndHundredAndOneThe
   RunTrack track = StillTrack(3, 300);
   PutOutside(&track, 0, 10, 50);
   PutOutside(&track, 1, 10, 50);
-  EXPECT_EQ(VerifierCounts(track, sim::WorldParams{}).robots_outside_boundaries, 100);
-  EXPECT_THAT(Rules(PreValidate(track, Finished(), sim::WorldParams{}, 240)), ElementsAre("boundary", "boundary"));
+  EXPECT_EQ(VerifierCounts(track, world::WorldParams{}).robots_outside_boundaries, 100);
+  EXPECT_THAT(Rules(PreValidate(track, Finished(), world::WorldParams{}, 240)), ElementsAre("boundary", "boundary"));
   PutOutside(&track, 1, 60, 1);  // 101
-  EXPECT_EQ(VerifierCounts(track, sim::WorldParams{}).robots_outside_boundaries, 101);
-  const auto problems = PreValidate(track, Finished(), sim::WorldParams{}, 240);
+  EXPECT_EQ(VerifierCounts(track, world::WorldParams{}).robots_outside_boundaries, 101);
+  const auto problems = PreValidate(track, Finished(), world::WorldParams{}, 240);
   EXPECT_THAT(Rules(problems), ElementsAre("verifier_out_of_bounds", "boundary", "boundary"));
   EXPECT_THAT(problems[0].Text(), HasSubstr("101 times (robots x steps)"));
 }
@@ -391,16 +391,16 @@ TEST(VerifierRulesTest, TooCloseHundredPairStepsAndHundredAndOne) {
   RunTrack track = StillTrack(3, 300);
   auto close_for = [&track](int64_t steps) {
     for (int64_t k = 0; k <= 300; ++k) {
-      const sim::Pose2 beside{track.pose(k, 0).x_m + 0.1, track.pose(k, 0).y_m, 0.0};
+      const world::Pose2 beside{track.pose(k, 0).x_m + 0.1, track.pose(k, 0).y_m, 0.0};
       track.poses[static_cast<size_t>(k * 3 + 1)] =
           k >= 20 && k < 20 + steps ? beside : StillTrack(3, 0).pose(0, 1);
     }
   };
   close_for(100);
-  EXPECT_EQ(VerifierCounts(track, sim::WorldParams{}).robots_too_close, 100);
-  EXPECT_THAT(Rules(PreValidate(track, Finished(), sim::WorldParams{}, 240)), ElementsAre("collision"));
+  EXPECT_EQ(VerifierCounts(track, world::WorldParams{}).robots_too_close, 100);
+  EXPECT_THAT(Rules(PreValidate(track, Finished(), world::WorldParams{}, 240)), ElementsAre("collision"));
   close_for(101);
-  EXPECT_THAT(Rules(PreValidate(track, Finished(), sim::WorldParams{}, 240)),
+  EXPECT_THAT(Rules(PreValidate(track, Finished(), world::WorldParams{}, 240)),
               ElementsAre("verifier_too_close", "collision"));
 }
 
@@ -408,28 +408,28 @@ TEST(VerifierRulesTest, CountsAreThoseOfTheStepsTheWorldValidated) {
   // The last recorded pose is never validated by a step: not counted.
   RunTrack track = StillTrack(2, 10);
   PutOutside(&track, 0, 10, 1);
-  EXPECT_EQ(VerifierCounts(track, sim::WorldParams{}).robots_outside_boundaries, 0);
-  EXPECT_EQ(VerifierCounts(track, sim::WorldParams{}).iterations, 10);
+  EXPECT_EQ(VerifierCounts(track, world::WorldParams{}).robots_outside_boundaries, 0);
+  EXPECT_EQ(VerifierCounts(track, world::WorldParams{}).iterations, 10);
 }
 
 TEST(VerifierRulesTest, TheDeclaredRobotCountAndDuration) {
   const RunTrack track = StillTrack(4, 100);
   // The default declaration is what UPLOAD.txt gives: it always passes.
-  EXPECT_TRUE(PreValidate(track, Finished(), sim::WorldParams{}, 240).empty());
+  EXPECT_TRUE(PreValidate(track, Finished(), world::WorldParams{}, 240).empty());
   // (100 + 240) x 0.033 = 11.22 s: 1.5 x 7.49 s = 11.235 s passes, 1.5 x 7.47 s = 11.205 s does not.
-  EXPECT_TRUE(PreValidate(track, Finished(), sim::WorldParams{}, 240, {}, -1,
-                          sim::LabVerifierRules::Declaration{4, 7.49})
+  EXPECT_TRUE(PreValidate(track, Finished(), world::WorldParams{}, 240, {}, -1,
+                          world::LabVerifierRules::Declaration{4, 7.49})
                   .empty());
-  EXPECT_THAT(Rules(PreValidate(track, Finished(), sim::WorldParams{}, 240, {}, -1,
-                                sim::LabVerifierRules::Declaration{4, 7.47})),
+  EXPECT_THAT(Rules(PreValidate(track, Finished(), world::WorldParams{}, 240, {}, -1,
+                                world::LabVerifierRules::Declaration{4, 7.47})),
               ElementsAre("verifier_duration"));
-  const auto problems = PreValidate(track, Finished(), sim::WorldParams{}, 240, {}, -1,
-                                    sim::LabVerifierRules::Declaration{5, 11.22});
+  const auto problems = PreValidate(track, Finished(), world::WorldParams{}, 240, {}, -1,
+                                    world::LabVerifierRules::Declaration{5, 11.22});
   ASSERT_THAT(Rules(problems), ElementsAre("verifier_robot_count"));
   EXPECT_THAT(problems[0].Text(), HasSubstr("asks for 4 robots but 5 are declared"));
   // A declaration over the lab's 900 s cap, although the run is short.
-  EXPECT_THAT(Rules(PreValidate(track, Finished(), sim::WorldParams{}, 240, {}, -1,
-                                sim::LabVerifierRules::Declaration{4, 901.0})),
+  EXPECT_THAT(Rules(PreValidate(track, Finished(), world::WorldParams{}, 240, {}, -1,
+                                world::LabVerifierRules::Declaration{4, 901.0})),
               ElementsAre("lab_duration_cap"));
 }
 

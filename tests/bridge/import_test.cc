@@ -43,7 +43,7 @@ class ImportTest : public ::testing::Test {
   /// Writes `rows` as a result file and imports it into a fresh folder.
   /// `declared`: what the user declared on the lab's form (absent: UPLOAD.txt's).
   static ImportedRun Import(const NpyArray& rows, const std::string& name,
-                            const std::optional<sim::LabVerifierRules::Declaration>& declared = {}) {
+                            const std::optional<world::LabVerifierRules::Declaration>& declared = {}) {
     const std::string dir = testing::NewFolder("import_" + name);
     testing::WriteText(dir + "/dream_result.npy", EncodeNpy(rows));
     return ImportLabRun(dir + "/dream_result.npy", *export_dir_, dir + "/out", declared);
@@ -137,7 +137,7 @@ TEST_F(ImportTest, SettleRowsAreSkippedAndClockJumpsHeld) {
 // The lab verifier's rules on an imported run, against what was declared:
 // UPLOAD.txt's values by default, or what the user says was declared.
 
-std::string Seconds(double seconds) { return sim::PrintfText("%.2f s", seconds); }
+std::string Seconds(double seconds) { return world::PrintfText("%.2f s", seconds); }
 
 /// `rows` with `count` settle rows in front (copies of the first rows).
 NpyArray WithSettleRows(NpyArray rows, int count) {
@@ -156,7 +156,7 @@ TEST_F(ImportTest, RunWithinOneAndAHalfTimesTheDeclaredDurationIsClean) {
   const ExportedSubmission exported = ExportedSubmission::Read(*export_dir_);
   const int64_t steps = exported.params.steps;
   const double dt = robotarium::RobotariumConstants::kTimeStepSeconds;
-  const sim::LabVerifierRules::Declaration upload = exported.UploadDeclaration();
+  const world::LabVerifierRules::Declaration upload = exported.UploadDeclaration();
   EXPECT_EQ(upload.num_robots, exported.params.num_robots);
   EXPECT_DOUBLE_EQ(upload.duration_s, static_cast<double>(steps + exported.params.options.settle_max_steps) * dt);
 
@@ -164,14 +164,14 @@ TEST_F(ImportTest, RunWithinOneAndAHalfTimesTheDeclaredDurationIsClean) {
   const ImportedRun as_uploaded = Import(rows, "declared_as_uploaded");
   EXPECT_EQ(as_uploaded.lab.iterations, steps);  // one step() per experiment row, no settle rows
   EXPECT_EQ(as_uploaded.declared.duration_s, upload.duration_s);
-  EXPECT_EQ(as_uploaded.verdict, sim::RunVerdict::kClean);
+  EXPECT_EQ(as_uploaded.verdict, world::RunVerdict::kClean);
   EXPECT_THAT(as_uploaded.summary_json, HasSubstr("\"declared_from\": \"export\""));
 
   // Declared shorter than UPLOAD.txt says, but the run takes under 1.5 x of it.
-  sim::LabVerifierRules::Declaration shorter = upload;
+  world::LabVerifierRules::Declaration shorter = upload;
   shorter.duration_s = static_cast<double>(steps) * dt / 1.45;
   const ImportedRun within = Import(rows, "declared_within", shorter);
-  EXPECT_EQ(within.verdict, sim::RunVerdict::kClean);
+  EXPECT_EQ(within.verdict, world::RunVerdict::kClean);
   EXPECT_TRUE(within.verdict_reasons.empty());
   EXPECT_THAT(within.summary_json, HasSubstr("\"verdict\": \"clean\""));
   EXPECT_THAT(within.summary_json, HasSubstr("\"declared_from\": \"options\""));
@@ -181,14 +181,14 @@ TEST_F(ImportTest, RunLongerThanOneAndAHalfTimesTheDeclaredDurationIsRejected) {
   const ExportedSubmission exported = ExportedSubmission::Read(*export_dir_);
   const int64_t steps = exported.params.steps;
   const double dt = robotarium::RobotariumConstants::kTimeStepSeconds;
-  sim::LabVerifierRules::Declaration declared = exported.UploadDeclaration();
+  world::LabVerifierRules::Declaration declared = exported.UploadDeclaration();
   declared.duration_s = static_cast<double>(steps) * dt / 1.6;
   const ImportedRun too_long = Import(testing::PerfectLabResult(*export_dir_), "declared_too_short", declared);
-  EXPECT_EQ(too_long.verdict, sim::RunVerdict::kRejected);
+  EXPECT_EQ(too_long.verdict, world::RunVerdict::kRejected);
   ASSERT_EQ(too_long.verdict_reasons.size(), 1u);
-  const sim::VerdictReason& reason = too_long.verdict_reasons[0];
+  const world::VerdictReason& reason = too_long.verdict_reasons[0];
   EXPECT_EQ(reason.rule, "verifier_duration");
-  EXPECT_EQ(reason.verdict, sim::RunVerdict::kRejected);
+  EXPECT_EQ(reason.verdict, world::RunVerdict::kRejected);
   // The measured and the declared value.
   EXPECT_THAT(reason.problem, HasSubstr(std::to_string(steps) + " iterations take " +
                                         Seconds(static_cast<double>(steps) * dt)));
@@ -200,7 +200,7 @@ TEST_F(ImportTest, RunLongerThanOneAndAHalfTimesTheDeclaredDurationIsRejected) {
   // a run that fits 1.5 x the declaration without them over it.
   declared.duration_s = static_cast<double>(steps + 1) * dt / 1.5;
   EXPECT_EQ(Import(testing::PerfectLabResult(*export_dir_), "declared_fits", declared).verdict,
-            sim::RunVerdict::kClean);
+            world::RunVerdict::kClean);
   const ImportedRun settled =
       Import(WithSettleRows(testing::PerfectLabResult(*export_dir_), 2), "declared_settle_over", declared);
   EXPECT_EQ(settled.lab.iterations, steps + 2);
@@ -212,10 +212,10 @@ TEST_F(ImportTest, RunLongerThanOneAndAHalfTimesTheDeclaredDurationIsRejected) {
 TEST_F(ImportTest, RobotCountOtherThanDeclaredIsRejected) {
   const ExportedSubmission exported = ExportedSubmission::Read(*export_dir_);
   const int robots = exported.params.num_robots;
-  sim::LabVerifierRules::Declaration declared = exported.UploadDeclaration();
+  world::LabVerifierRules::Declaration declared = exported.UploadDeclaration();
   declared.num_robots = robots + 2;
   const ImportedRun mismatch = Import(testing::PerfectLabResult(*export_dir_), "declared_robots", declared);
-  EXPECT_EQ(mismatch.verdict, sim::RunVerdict::kRejected);
+  EXPECT_EQ(mismatch.verdict, world::RunVerdict::kRejected);
   ASSERT_EQ(mismatch.verdict_reasons.size(), 1u);
   EXPECT_EQ(mismatch.verdict_reasons[0].rule, "verifier_robot_count");
   EXPECT_THAT(mismatch.verdict_reasons[0].problem, HasSubstr("the script asks for " + std::to_string(robots) +

@@ -16,7 +16,7 @@
 #include "dream/bridge/calibration_run.h"
 #include "dream/bridge/mat_file.h"
 #include "dream/bridge/npy_file.h"
-#include "dream/node/atomic_file.h"
+#include "dream/files/atomic_file.h"
 #include "dream/robotarium/robotarium_constants.h"
 #include "dream/world/printf_text.h"
 #include "dream/world/realistic_world.h"
@@ -28,8 +28,8 @@ namespace fs = std::filesystem;
 constexpr double kDt = robotarium::RobotariumConstants::kTimeStepSeconds;
 
 // A lab unlike the preset: every fitted key differs from Lab()'s.
-sim::RealismParams SyntheticLab() {
-  sim::RealismParams lab = sim::RealismParams::Lab();
+world::RealismParams SyntheticLab() {
+  world::RealismParams lab = world::RealismParams::Lab();
   lab.pose_noise_m = 0.0005;
   lab.pose_noise_rad = 0.003;
   lab.pose_noise_moving_factor = 1.5;
@@ -55,20 +55,20 @@ sim::RealismParams SyntheticLab() {
 using agents::CalibrationDrive;
 
 // The calibration program's start poses and commands as the world takes them.
-std::vector<sim::Pose2> StartPoses(int robots) {
-  std::vector<sim::Pose2> poses;
+std::vector<world::Pose2> StartPoses(int robots) {
+  std::vector<world::Pose2> poses;
   for (const Eigen::Vector3d& pose : CalibrationDrive::StartPoses(robots)) poses.push_back({pose.x(), pose.y(), pose.z()});
   return poses;
 }
-sim::UnicycleCommand CommandAt(int64_t step) {
+world::UnicycleCommand CommandAt(int64_t step) {
   const agents::UnicycleCommand command = CalibrationDrive::CommandAt(step);
   return {command.v_mps, command.w_radps};
 }
 
 // The calibration program twice on `robots` robots of a synthetic lab, as a
 // lab run would record it: measured poses, commands sent, the step times.
-CalibrationRun SyntheticRun(const sim::RealismParams& lab, int robots, uint64_t seed, int repeats = 2) {
-  sim::RealisticWorld world(sim::WorldParams{}, lab, seed, StartPoses(robots));
+CalibrationRun SyntheticRun(const world::RealismParams& lab, int robots, uint64_t seed, int repeats = 2) {
+  world::RealisticWorld world(world::WorldParams{}, lab, seed, StartPoses(robots));
   CalibrationRun run;
   run.name = "synthetic lab (seed " + std::to_string(seed) + ")";
   run.timed = true;
@@ -77,7 +77,7 @@ CalibrationRun SyntheticRun(const sim::RealismParams& lab, int robots, uint64_t 
   const int64_t steps = CalibrationDrive::Steps() * repeats;
   for (int64_t k = 0; k < steps; ++k) {
     run.track.utime.push_back(std::llround(time_s * 1e6));
-    const sim::UnicycleCommand command = CommandAt(k % CalibrationDrive::Steps());
+    const world::UnicycleCommand command = CommandAt(k % CalibrationDrive::Steps());
     for (int i = 0; i < robots; ++i) {
       run.track.poses.push_back(world.poses()[static_cast<size_t>(i)]);
       run.track.commands.push_back(command);
@@ -91,8 +91,8 @@ CalibrationRun SyntheticRun(const sim::RealismParams& lab, int robots, uint64_t 
 }
 
 // Truth of `key` in a realism map.
-double TruthOf(const sim::RealismParams& lab, const std::string& key) {
-  for (const sim::RealismParams::Field& field : sim::RealismParams::Fields()) {
+double TruthOf(const world::RealismParams& lab, const std::string& key) {
+  for (const world::RealismParams::Field& field : world::RealismParams::Fields()) {
     if (key == field.key) return field.number != nullptr ? lab.*field.number : lab.*field.steps;
   }
   return std::nan("");
@@ -103,7 +103,7 @@ double TruthOf(const sim::RealismParams& lab, const std::string& key) {
 // fits: a systematic bias misses in all three, chance in one at most (with
 // 20 keys, some key misses once in most seeds; that is what 95 % means).
 TEST(LabCalibrationTest, RecoversEveryDeterminedKeyOfASyntheticLabWithinItsInterval) {
-  const sim::RealismParams lab = SyntheticLab();
+  const world::RealismParams lab = SyntheticLab();
   const std::vector<std::string> must_determine = {
       "pose_noise_m", "pose_noise_rad", "pose_noise_moving_factor", "pose_quantum_m", "pose_quantum_rad",
       "tracking_dropout_probability", "tracking_dropout_at_rest_factor", "tracking_dropout_mean_steps",
@@ -114,7 +114,7 @@ TEST(LabCalibrationTest, RecoversEveryDeterminedKeyOfASyntheticLabWithinItsInter
   std::map<std::string, std::string> misses;
   for (uint64_t seed : {5, 6, 7}) {
     const CalibrationReport report = LabCalibration().Fit({SyntheticRun(lab, 12, seed, 3)});
-    ASSERT_EQ(report.keys.size(), sim::RealismParams::Fields().size());
+    ASSERT_EQ(report.keys.size(), world::RealismParams::Fields().size());
     for (const std::string& key : must_determine) {
       const FittedKey* fitted = report.Find(key);
       ASSERT_NE(fitted, nullptr) << key;
@@ -133,7 +133,7 @@ TEST(LabCalibrationTest, RecoversEveryDeterminedKeyOfASyntheticLabWithinItsInter
       if (fitted.low <= truth && truth <= fitted.high) {
         ++held[fitted.key];
       } else {
-        misses[fitted.key] += sim::PrintfText(" seed %d: %.6g [%.6g, %.6g];", static_cast<int>(seed), fitted.value,
+        misses[fitted.key] += world::PrintfText(" seed %d: %.6g [%.6g, %.6g];", static_cast<int>(seed), fitted.value,
                                               fitted.low, fitted.high);
       }
     }
@@ -152,7 +152,7 @@ TEST(LabCalibrationTest, RecoversEveryDeterminedKeyOfASyntheticLabWithinItsInter
 // with the real robots' effective delays (issue 22's table), as calibrate
 // measures them from the poses.
 TEST(LabCalibrationTest, LabPresetShowsTheRealRobotsDelays) {
-  const CalibrationReport report = LabCalibration().Fit({SyntheticRun(sim::RealismParams::Lab(), 8, 3)});
+  const CalibrationReport report = LabCalibration().Fit({SyntheticRun(world::RealismParams::Lab(), 8, 3)});
   const std::map<long, double> real_median = {{5, 0.515}, {10, 0.385}, {19, 0.330}};
   int checked = 0;
   for (const StepResponseCurve& curve : report.step_responses) {
@@ -184,10 +184,10 @@ TEST(LabCalibrationTest, LabPresetShowsTheRealRobotsDelays) {
 // --check: the model that made a run predicts it better than others do, and
 // its steps from rest show the run's own delays.
 TEST(LabCalibrationTest, TheTrueModelPredictsItsOwnRunsBest) {
-  const sim::RealismParams lab = SyntheticLab();
+  const world::RealismParams lab = SyntheticLab();
   const std::vector<CalibrationRun> runs = {SyntheticRun(lab, 6, 11, 1)};
-  const std::vector<NamedModel> models = {{"ideal", sim::RealismParams::Ideal()},
-                                          {"lab_v1", sim::RealismParams::LabV1()},
+  const std::vector<NamedModel> models = {{"ideal", world::RealismParams::Ideal()},
+                                          {"lab_v1", world::RealismParams::LabV1()},
                                           {"truth", lab}};
   const std::vector<ModelPrediction> predictions = LabModelCheck::Predict(runs, models);
   ASSERT_EQ(predictions.size(), 3U);
@@ -233,10 +233,10 @@ TEST(LabCalibrationTest, RefusesDataItCannotUse) {
   CalibrationRun not_moving = Still(500);
   for (auto& command : not_moving.track.commands) command = {0.1, 0.0};
   EXPECT_NE(message({not_moving}).find("never move"), std::string::npos) << message({not_moving});
-  CalibrationRun nan = SyntheticRun(sim::RealismParams::Lab(), 2, 1, 1);
+  CalibrationRun nan = SyntheticRun(world::RealismParams::Lab(), 2, 1, 1);
   nan.track.poses[301].y_m = std::nan("");
   EXPECT_NE(message({nan}).find("robot 1 at step 150 is not a finite number"), std::string::npos) << message({nan});
-  CalibrationRun backwards = SyntheticRun(sim::RealismParams::Lab(), 1, 1, 1);
+  CalibrationRun backwards = SyntheticRun(world::RealismParams::Lab(), 1, 1, 1);
   backwards.track.utime[10] = backwards.track.utime[9];
   EXPECT_NE(message({backwards}).find("time does not increase at step 10"), std::string::npos);
   EXPECT_NE(message({}).find("at least one"), std::string::npos);
@@ -271,8 +271,8 @@ void ArraysOf(const CalibrationRun& run, NpyArray* poses, NpyArray* commands) {
   commands->values.assign(static_cast<size_t>(2 * n * t), 0.0);
   for (int64_t k = 0; k < t; ++k) {
     for (int64_t i = 0; i < n; ++i) {
-      const sim::Pose2& p = run.track.pose(k, static_cast<int>(i));
-      const sim::UnicycleCommand& c = run.track.command(k, static_cast<int>(i));
+      const world::Pose2& p = run.track.pose(k, static_cast<int>(i));
+      const world::UnicycleCommand& c = run.track.command(k, static_cast<int>(i));
       poses->values[static_cast<size_t>((0 * n + i) * t + k)] = p.x_m;
       poses->values[static_cast<size_t>((1 * n + i) * t + k)] = p.y_m;
       poses->values[static_cast<size_t>((2 * n + i) * t + k)] = p.theta_rad;
@@ -283,7 +283,7 @@ void ArraysOf(const CalibrationRun& run, NpyArray* poses, NpyArray* commands) {
 }
 
 TEST_F(CalibrationFileTest, ReadsMatFilesAndRefusesShapesThatDisagree) {
-  const CalibrationRun run = SyntheticRun(sim::RealismParams::Lab(), 3, 2, 1);
+  const CalibrationRun run = SyntheticRun(world::RealismParams::Lab(), 3, 2, 1);
   NpyArray poses, commands;
   ArraysOf(run, &poses, &commands);
   WriteMatMatrix(Path("lab.mat"), "poses", poses);
@@ -294,13 +294,13 @@ TEST_F(CalibrationFileTest, ReadsMatFilesAndRefusesShapesThatDisagree) {
   stacked.shape = {5, 3, static_cast<int64_t>(run.track.utime.size())};
   stacked.values = poses.values;
   stacked.values.insert(stacked.values.end(), commands.values.begin(), commands.values.end());
-  sim::WriteFileAtomically(Path("lab.npy"), EncodeNpy(stacked));
+  files::WriteFileAtomically(Path("lab.npy"), EncodeNpy(stacked));
   const CalibrationRun read = ReadCalibrationRun(Path("lab.npy"), {});
   ASSERT_EQ(read.track.num_robots, 3);
   EXPECT_EQ(read.track.pose(100, 2).x_m, run.track.pose(100, 2).x_m);
   EXPECT_EQ(read.track.command(100, 2).w_radps, run.track.command(100, 2).w_radps);
   EXPECT_FALSE(read.timed);
-  sim::WriteFileAtomically(Path("poses_only.npy"), EncodeNpy(poses));
+  files::WriteFileAtomically(Path("poses_only.npy"), EncodeNpy(poses));
   EXPECT_NE(Error(Path("poses_only.npy")).find("expected 5 x N x T"), std::string::npos) << Error(Path("poses_only.npy"));
   EXPECT_NE(Error(Path("lab.txt")).find("not a run folder"), std::string::npos);
   EXPECT_NE(Error(Path("nothing_here")).find("not a run folder"), std::string::npos);

@@ -64,15 +64,15 @@ std::string* LabReplayTest::export_dir_ = nullptr;
 
 TEST_F(LabReplayTest, AgentsRunUnchangedWhenOnlyTheWorldIsSwapped) {
   const std::string lab_dir = ImportLab("replay_swap");
-  const config::RunConfig config = config::LoadRunConfigFile(lab_dir + "/config.yaml");
+  const run_config::RunConfig config = run_config::LoadRunConfigFile(lab_dir + "/config.yaml");
   const std::string out = testing::NewFolder("replay_swap_out");
 
-  sim::UnicycleWorld simulator(config.world, config.initial_poses, config.obstacles);
-  const sim::RunOutcome sim_outcome = testing::RunAgainst(simulator, config, out + "/sim.lcmlog");
+  world::UnicycleWorld simulator(config.world, config.initial_poses, config.obstacles);
+  const node::RunOutcome sim_outcome = testing::RunAgainst(simulator, config, out + "/sim.lcmlog");
   LabReplayWorld lab(ReadRunTrack(lab_dir + "/run.lcmlog"), config.world);
-  const sim::RunOutcome lab_outcome = testing::RunAgainst(lab, config, out + "/lab.lcmlog");
+  const node::RunOutcome lab_outcome = testing::RunAgainst(lab, config, out + "/lab.lcmlog");
 
-  ASSERT_EQ(lab_outcome.end, sim::RunOutcome::End::kFinished) << lab_outcome.reason;
+  ASSERT_EQ(lab_outcome.end, node::RunOutcome::End::kFinished) << lab_outcome.reason;
   EXPECT_EQ(lab_outcome.steps, sim_outcome.steps);
   EXPECT_TRUE(lab_outcome.robots_ever_lost.empty());
   EXPECT_EQ(lab_outcome.rejected_commands, 0);
@@ -98,13 +98,13 @@ TEST_F(LabReplayTest, RealPosesDriveTheAgentsAndTheLabCommandsAreRecordedBeside)
     if (k < 100) return;
     for (int i = 0; i < 8; ++i) row[ResultLayout::X(8, i)] += 0.01;
   });
-  const config::RunConfig config = config::LoadRunConfigFile(lab_dir + "/config.yaml");
+  const run_config::RunConfig config = run_config::LoadRunConfigFile(lab_dir + "/config.yaml");
   const std::string out = testing::NewFolder("replay_drift_out");
-  sim::RunRecorder lab_commands(out + "/lab_commands.lcmlog");
+  node::RunRecorder lab_commands(out + "/lab_commands.lcmlog");
   LabReplayWorld lab(ReadRunTrack(lab_dir + "/run.lcmlog"), config.world, &lab_commands);
-  const sim::RunOutcome outcome = testing::RunAgainst(lab, config, out + "/replay.lcmlog");
+  const node::RunOutcome outcome = testing::RunAgainst(lab, config, out + "/replay.lcmlog");
   lab_commands.Close();
-  ASSERT_EQ(outcome.end, sim::RunOutcome::End::kFinished) << outcome.reason;
+  ASSERT_EQ(outcome.end, node::RunOutcome::End::kFinished) << outcome.reason;
   // The agents saw the drift and answered it: their commands now differ from the lab's.
   double largest_difference = 0.0;
   for (int64_t k = 100; k < lab.step(); ++k) {
@@ -129,7 +129,7 @@ TEST(LabReplayWorldTest, ReplaysTheTrackAndCountsViolationsOnIt) {
     track.commands.push_back({k < 3 ? 20.0 : 0.0, 0.0});  // over the wheel limit: an actuator error
     track.obstacles.push_back({{0, 1.0, 0.5, 0.2, 0.2, 0.0, 0.0}});
   }
-  LabReplayWorld world(track, sim::WorldParams{});
+  LabReplayWorld world(track, world::WorldParams{});
   EXPECT_EQ(world.num_robots(), 2);
   EXPECT_EQ(world.last_step(), 3);
   EXPECT_EQ(world.velocities()[0].v_mps, 0.0);
@@ -137,7 +137,7 @@ TEST(LabReplayWorldTest, ReplaysTheTrackAndCountsViolationsOnIt) {
   world.Step();
   EXPECT_EQ(world.utime(), 40000);
   EXPECT_EQ(world.velocities()[1].v_mps, 20.0);  // what the lab drove with during step 0
-  std::vector<sim::ObstacleState> obstacles;
+  std::vector<world::ObstacleState> obstacles;
   world.GetObstacleStates(&obstacles);
   ASSERT_EQ(obstacles.size(), 1u);
   EXPECT_EQ(obstacles[0].center_x_m, 1.0);
@@ -154,7 +154,7 @@ TEST(LabReplayWorldTest, ReplaysTheTrackAndCountsViolationsOnIt) {
   EXPECT_THROW(world.SetCommand(2, {}), std::out_of_range);
   EXPECT_THROW(world.SetCommand(0, {std::nan(""), 0.0}), std::invalid_argument);
   RunTrack empty;
-  EXPECT_THROW(LabReplayWorld(empty, sim::WorldParams{}), std::invalid_argument);
+  EXPECT_THROW(LabReplayWorld(empty, world::WorldParams{}), std::invalid_argument);
 }
 
 }  // namespace

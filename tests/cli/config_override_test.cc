@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "dream/config/config_node.h"
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 #include "sweep_parameter.h"
 
 namespace dream::cli {
@@ -54,7 +54,7 @@ TEST(ConfigOverride, AddsALastKeyTheConfigLeavesOut) {
   ApplyConfigOverride(root, "controller.sensors.0.noise_std", "0.002", "demo.yaml");
   EXPECT_EQ(root["controller"]["sensors"][0]["noise_std"].as<double>(), 0.002);
   // The config check then accepts it as a key it knows.
-  EXPECT_NO_THROW(config::LoadRunConfig(config::ConfigNode(root, "demo.yaml", "")));
+  EXPECT_NO_THROW(run_config::LoadRunConfig(config::ConfigNode(root, "demo.yaml", "")));
 }
 
 TEST(ConfigOverride, UnknownKeysAndIndicesAreErrorsNamingThem) {
@@ -140,7 +140,7 @@ TEST(ConfigOverride, AMisspeltNewLastKeyIsCaughtByTheConfigCheck) {
   YAML::Node top = YAML::Load(kConfig);
   ApplyConfigOverride(top, "stepz", "10", "demo.yaml");
   try {
-    config::LoadRunConfig(config::ConfigNode(top, "demo.yaml", ""));
+    run_config::LoadRunConfig(config::ConfigNode(top, "demo.yaml", ""));
     FAIL() << "an unknown top-level key passed the config check";
   } catch (const config::ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("stepz: unknown key"), std::string::npos) << e.what();
@@ -151,7 +151,7 @@ TEST(ConfigOverride, AnErrorAboutAnOverriddenValuePointsAtItsLineInTheBaseFile) 
   YAML::Node root = YAML::Load(kConfig);
   ApplyConfigOverride(root, "robots", "0", "demo.yaml");
   try {
-    config::LoadRunConfig(config::ConfigNode(root, "demo.yaml", ""));
+    run_config::LoadRunConfig(config::ConfigNode(root, "demo.yaml", ""));
     FAIL() << "robots: 0 passed the config check";
   } catch (const config::ConfigError& e) {
     EXPECT_EQ(std::string(e.what()).rfind("demo.yaml:3: robots: must be between 1 and", 0), 0u) << e.what();

@@ -1,6 +1,6 @@
 #include "overridden_config.h"
 
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 
 #include <gtest/gtest.h>
 
@@ -53,7 +53,7 @@ TEST_F(OverriddenConfigTest, AKeyAnEarlierSetMadeASingleValueIsNamedAsItsDoing) 
 
 TEST_F(OverriddenConfigTest, WithoutOverridesTheFileIsReadAndCopiedAsItIs) {
   const OverriddenConfig overridden(path_, -1, {});
-  const config::RunConfig config = overridden.Load();
+  const run_config::RunConfig config = overridden.Load();
   EXPECT_EQ(config.seed, 1u);
   EXPECT_EQ(overridden.FolderText(config), kConfig);  // comments kept
   EXPECT_EQ(overridden.OptionsText(), "");
@@ -61,15 +61,15 @@ TEST_F(OverriddenConfigTest, WithoutOverridesTheFileIsReadAndCopiedAsItIs) {
 
 TEST_F(OverriddenConfigTest, SeedAndSetsChangeTheRunAndTheFolderTextReloadsToTheSameRun) {
   const OverriddenConfig overridden(path_, 7, {"controller.max_speed_mps=0.1", "controller.goals.2=[0.4, 0.4]"});
-  const config::RunConfig config = overridden.Load();
+  const run_config::RunConfig config = overridden.Load();
   EXPECT_EQ(config.seed, 7u);
   EXPECT_EQ(overridden.OptionsText(), "--seed 7 --set controller.max_speed_mps=0.1 --set controller.goals.2=[0.4, 0.4]");
-  EXPECT_NE(config.initial_poses[0].x_m, config::LoadRunConfigFile(path_).initial_poses[0].x_m)
+  EXPECT_NE(config.initial_poses[0].x_m, run_config::LoadRunConfigFile(path_).initial_poses[0].x_m)
       << "another seed must generate other start poses";
 
   const std::string text = overridden.FolderText(config);
   EXPECT_EQ(text.rfind("# " + path_ + " with --seed 7", 0), 0u) << text;
-  const config::RunConfig again = config::LoadRunConfig(config::ConfigNode::LoadString(text, "copy.yaml"));
+  const run_config::RunConfig again = run_config::LoadRunConfig(config::ConfigNode::LoadString(text, "copy.yaml"));
   EXPECT_EQ(again.seed, 7u);
   EXPECT_DOUBLE_EQ(again.controller.Required("max_speed_mps").AsDouble(), 0.1);
   ASSERT_EQ(again.initial_poses.size(), config.initial_poses.size());

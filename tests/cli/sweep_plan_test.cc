@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "dream/config/config_node.h"
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 
 namespace dream::cli {
 namespace {
@@ -71,14 +71,14 @@ TEST(SweepPlan, RunConfigHasSeedNameAndParametersAndPassesTheConfigCheck) {
   const YAML::Node config = SweepPlan::MakeRunConfig(kBase, "base.yaml", run);
   const std::string text = SweepPlan::EmitConfig(config, "generated for a test\nsecond line");
   EXPECT_EQ(text.rfind("# generated for a test\n# second line\n", 0), 0u) << text;
-  const config::RunConfig loaded = config::LoadRunConfig(config::ConfigNode::LoadString(text, "run.yaml"));
+  const run_config::RunConfig loaded = run_config::LoadRunConfig(config::ConfigNode::LoadString(text, "run.yaml"));
   EXPECT_EQ(loaded.seed, 7u);
   EXPECT_EQ(loaded.name, "demo_" + run.name);
   EXPECT_EQ(loaded.sim.max_steps, 250);
   EXPECT_EQ(loaded.controller.Required("max_speed_mps").AsDouble(), 0.1);
   // The seed drives the generated start poses: another seed, other poses.
   const SweepPlan other({8}, {});
-  const config::RunConfig eight = config::LoadRunConfig(config::ConfigNode::LoadString(
+  const run_config::RunConfig eight = run_config::LoadRunConfig(config::ConfigNode::LoadString(
       SweepPlan::EmitConfig(SweepPlan::MakeRunConfig(kBase, "base.yaml", other.runs()[0]), ""), "run8.yaml"));
   EXPECT_NE(eight.initial_poses[0].x_m, loaded.initial_poses[0].x_m);
 }

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "../support/scratch_folder.h"
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 
 namespace dream::config {
 namespace {
@@ -216,7 +216,7 @@ TEST(ConfigNodeTest, RunConfigTypeErrorsNeverShowYamlCppText) {
       const size_t at = text.find(scalar);
       ASSERT_NE(at, std::string::npos) << scalar;
       text.replace(at, std::string(scalar).size(), replacement);
-      const std::string error = ReadError(text, [](const ConfigNode& root) { LoadRunConfig(root); });
+      const std::string error = ReadError(text, [](const ConfigNode& root) { run_config::LoadRunConfig(root); });
       EXPECT_EQ(error.rfind("test.yaml:", 0), 0u) << scalar << " -> " << replacement << ": " << error;
       EXPECT_NE(error.find(std::string(", got ") + (replacement[0] == '[' ? "a list" : "a mapping")),
                 std::string::npos)

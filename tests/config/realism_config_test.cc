@@ -8,8 +8,8 @@
 #include <fstream>
 #include <string>
 
-#include "dream/config/run_config.h"
-#include "dream/config/world_of_config.h"
+#include "dream/run_config/run_config.h"
+#include "dream/run_config/world_of_config.h"
 #include "dream/world/realism_params.h"
 #include "dream/world/realistic_world.h"
 #include "dream/world/unicycle_world.h"
@@ -23,7 +23,7 @@ std::string ConfigWith(const std::string& world_lines) {
          "controller:\n  kind: go_to_goal\n  goals: [[0.1, 0.1]]\n";
 }
 
-RunConfig Load(const std::string& text) { return LoadRunConfig(ConfigNode::LoadString(text, "test.yaml")); }
+run_config::RunConfig Load(const std::string& text) { return run_config::LoadRunConfig(ConfigNode::LoadString(text, "test.yaml")); }
 
 std::string ErrorOf(const std::string& text) {
   try {
@@ -43,43 +43,43 @@ TEST(RealismConfigTest, AbsentIsTheOfficialSimulator) {
 // Ideal is the official simulator itself, with nothing in between; any
 // other realism wraps it in a RealisticWorld.
 TEST(RealismConfigTest, TheWorldOfAConfigIsTheOfficialOneUnlessRealismAsksOtherwise) {
-  const std::unique_ptr<sim::World> ideal = WorldOfConfig(Load(ConfigWith("")));
-  EXPECT_NE(dynamic_cast<const sim::UnicycleWorld*>(ideal.get()), nullptr);
-  const std::unique_ptr<sim::World> lab = WorldOfConfig(Load(ConfigWith("  realism: lab\n")));
-  ASSERT_NE(dynamic_cast<const sim::RealisticWorld*>(lab.get()), nullptr);
+  const std::unique_ptr<world::World> ideal = run_config::WorldOfConfig(Load(ConfigWith("")));
+  EXPECT_NE(dynamic_cast<const world::UnicycleWorld*>(ideal.get()), nullptr);
+  const std::unique_ptr<world::World> lab = run_config::WorldOfConfig(Load(ConfigWith("  realism: lab\n")));
+  ASSERT_NE(dynamic_cast<const world::RealisticWorld*>(lab.get()), nullptr);
   EXPECT_EQ(lab->num_robots(), 1);
 }
 
 TEST(RealismConfigTest, PresetNameGivesThePreset) {
-  EXPECT_EQ(Load(ConfigWith("  realism: lab\n")).realism, sim::RealismParams::Lab());
+  EXPECT_EQ(Load(ConfigWith("  realism: lab\n")).realism, world::RealismParams::Lab());
 }
 
 TEST(RealismConfigTest, MapStartsFromItsPresetOrIdeal) {
-  const sim::RealismParams lab_with_noise =
+  const world::RealismParams lab_with_noise =
       Load(ConfigWith("  realism:\n    preset: lab\n    pose_noise_m: 0.003\n    pose_delay_steps: 2\n")).realism;
-  sim::RealismParams expected = sim::RealismParams::Lab();
+  world::RealismParams expected = world::RealismParams::Lab();
   expected.pose_noise_m = 0.003;
   expected.pose_delay_steps = 2;
   EXPECT_EQ(lab_with_noise, expected);
 
-  const sim::RealismParams noise_only = Load(ConfigWith("  realism: {pose_noise_m: 0.002}\n")).realism;
-  expected = sim::RealismParams::Ideal();
+  const world::RealismParams noise_only = Load(ConfigWith("  realism: {pose_noise_m: 0.002}\n")).realism;
+  expected = world::RealismParams::Ideal();
   expected.pose_noise_m = 0.002;
   EXPECT_EQ(noise_only, expected);
   EXPECT_FALSE(noise_only.IsIdeal());
 }
 
 TEST(RealismConfigTest, TrackerDropAndDropoutBurstsAreRead) {
-  EXPECT_EQ(sim::RealismParams::Lab().tracker_drop_s, 5.0);
-  EXPECT_EQ(sim::RealismParams::Ideal().tracker_drop_s, 0.0);
-  const sim::RealismParams read =
+  EXPECT_EQ(world::RealismParams::Lab().tracker_drop_s, 5.0);
+  EXPECT_EQ(world::RealismParams::Ideal().tracker_drop_s, 0.0);
+  const world::RealismParams read =
       Load(ConfigWith("  realism:\n    preset: lab\n    tracker_drop_s: 2.5\n    tracking_dropout_mean_steps: 30\n"))
           .realism;
-  sim::RealismParams expected = sim::RealismParams::Lab();
+  world::RealismParams expected = world::RealismParams::Lab();
   expected.tracker_drop_s = 2.5;
   expected.tracking_dropout_mean_steps = 30.0;
   EXPECT_EQ(read, expected);
-  EXPECT_NE(read, sim::RealismParams::Lab());
+  EXPECT_NE(read, world::RealismParams::Lab());
   EXPECT_FALSE(Load(ConfigWith("  realism: {tracker_drop_s: 1}\n")).realism.IsIdeal());
 
   const std::string negative = ErrorOf(ConfigWith("  realism:\n    preset: lab\n    tracker_drop_s: -5\n"));
@@ -100,11 +100,11 @@ TEST(RealismConfigTest, TrackerDropAndDropoutBurstsAreRead) {
 // RealismParams::Fields() is the one list of the models' keys: each entry is
 // read from the config by its key into its own member, and operator== sees it.
 TEST(RealismConfigTest, EveryFieldIsReadByItsKeyAndCompared) {
-  for (const sim::RealismParams::Field& field : sim::RealismParams::Fields()) {
+  for (const world::RealismParams::Field& field : world::RealismParams::Fields()) {
     SCOPED_TRACE(field.key);
     ASSERT_TRUE((field.number == nullptr) != (field.steps == nullptr));
     // Ideal()'s value plus a half (plus one step): valid for every field.
-    sim::RealismParams expected = sim::RealismParams::Ideal();
+    world::RealismParams expected = world::RealismParams::Ideal();
     std::string value;
     if (field.steps != nullptr) {
       expected.*field.steps += 1;
@@ -113,15 +113,15 @@ TEST(RealismConfigTest, EveryFieldIsReadByItsKeyAndCompared) {
       expected.*field.number += 0.5;
       value = std::to_string(expected.*field.number);
     }
-    const sim::RealismParams read =
+    const world::RealismParams read =
         Load(ConfigWith("  realism:\n    " + std::string(field.key) + ": " + value + "\n")).realism;
     EXPECT_EQ(read, expected);
-    EXPECT_NE(read, sim::RealismParams::Ideal());
+    EXPECT_NE(read, world::RealismParams::Ideal());
   }
   // A member added to RealismParams without its entry in Fields() makes the
   // struct larger than the fields listed: each takes a double's room (the two
   // step counts sit between doubles, so each is padded to 8 bytes).
-  EXPECT_EQ(sim::RealismParams::Fields().size() * sizeof(double), sizeof(sim::RealismParams));
+  EXPECT_EQ(world::RealismParams::Fields().size() * sizeof(double), sizeof(world::RealismParams));
 }
 
 TEST(RealismConfigTest, BadValuesNameFileLineAndKey) {
@@ -171,9 +171,9 @@ class RealismFileTest : public ::testing::Test {
   void Write(const std::string& name, const std::string& text) const {
     std::ofstream(dir_ / name) << text;
   }
-  RunConfig LoadFile(const std::string& world_lines) const {
+  run_config::RunConfig LoadFile(const std::string& world_lines) const {
     Write("run.yaml", ConfigWith(world_lines));
-    return LoadRunConfigFile((dir_ / "run.yaml").string());
+    return run_config::LoadRunConfigFile((dir_ / "run.yaml").string());
   }
   std::string FileError(const std::string& world_lines) const {
     try {
@@ -187,8 +187,8 @@ class RealismFileTest : public ::testing::Test {
 };
 
 TEST_F(RealismFileTest, AFileIsTheBaseAndTheConfigsKeysGoOverIt) {
-  const RunConfig config = LoadFile("  realism: {file: labs/mylab.yaml, pose_noise_m: 0.002}\n");
-  sim::RealismParams expected = sim::RealismParams::Lab();
+  const run_config::RunConfig config = LoadFile("  realism: {file: labs/mylab.yaml, pose_noise_m: 0.002}\n");
+  world::RealismParams expected = world::RealismParams::Lab();
   expected.motor_lag_s = 0.2;
   expected.command_latency_steps = 6;
   expected.pose_noise_m = 0.002;
@@ -206,9 +206,9 @@ TEST_F(RealismFileTest, BadFilesAreNamed) {
   Write("labs/partial.yaml", "motor_lag_s: 0.3\n");
   EXPECT_EQ(LoadFile("  realism: {preset: ideal, file: labs/partial.yaml}\n").realism.linear_gain_spread, 0.0);
   EXPECT_EQ(LoadFile("  realism: {preset: lab, file: labs/partial.yaml}\n").realism.linear_gain_spread,
-            sim::RealismParams::Lab().linear_gain_spread);
+            world::RealismParams::Lab().linear_gain_spread);
   EXPECT_EQ(LoadFile("  realism: {preset: ideal, file: labs/mylab.yaml}\n").realism.linear_gain_spread,
-            sim::RealismParams::Lab().linear_gain_spread);
+            world::RealismParams::Lab().linear_gain_spread);
   Write("labs/typo.yaml", "motor_lag: 0.2\n");
   const std::string typo = FileError("  realism: {file: labs/typo.yaml}\n");
   EXPECT_NE(typo.find("typo.yaml"), std::string::npos) << typo;
@@ -222,7 +222,7 @@ TEST_F(RealismFileTest, BadFilesAreNamed) {
 }
 
 TEST(RealismConfigTest, LabModelKeysAreReadAndChecked) {
-  const sim::RealismParams params = Load(ConfigWith(
+  const world::RealismParams params = Load(ConfigWith(
       "  realism:\n    motor_lag_s: 0.1\n    motor_startup_m: 0.01\n    linear_gain_mean: 0.95\n"
       "    angular_gain_spread: 0.02\n    heading_drift_spread_radps: 0.005\n    step_overrun_mean_s: 0.001\n"
       "    loop_stall_probability: 0.001\n    loop_stall_max_s: 0.5\n    pose_noise_moving_factor: 2\n"

@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 
 namespace dream::config {
 namespace {
@@ -11,8 +11,8 @@ namespace fs = std::filesystem;
 
 const char* kBase = "name: p\nrobots: 1\ninitial_poses: [[0, 0, 0]]\ncontroller: {kind: orbit}\n";
 
-RunConfig Load(const std::string& extra, const std::string& source = "experiments/p.yaml") {
-  return LoadRunConfig(ConfigNode::LoadString(kBase + extra, source));
+run_config::RunConfig Load(const std::string& extra, const std::string& source = "experiments/p.yaml") {
+  return run_config::LoadRunConfig(ConfigNode::LoadString(kBase + extra, source));
 }
 
 std::string ErrorOf(const std::string& extra) {
@@ -25,7 +25,7 @@ std::string ErrorOf(const std::string& extra) {
 }
 
 TEST(RunConfigPluginsTest, RelativePathsStartAtTheConfigFilesFolder) {
-  const RunConfig config = Load("plugins: [build/liba.so, /opt/x/libb.so, ../libc.so]\n");
+  const run_config::RunConfig config = Load("plugins: [build/liba.so, /opt/x/libb.so, ../libc.so]\n");
   const fs::path folder = fs::absolute("experiments");
   ASSERT_EQ(config.plugins.size(), 3u);
   EXPECT_EQ(config.plugins[0], (folder / "build/liba.so").lexically_normal().string());
@@ -46,17 +46,17 @@ TEST(RunConfigPluginsTest, PluginDirMovesTheStartAndMustBeAbsolute) {
 
 TEST(RunConfigPluginsTest, TheRunFoldersCopyFindsTheSamePlugins) {
   const std::string text = std::string(kBase) + "plugins: [build/liba.so]  # the plugin";
-  const RunConfig config = LoadRunConfig(ConfigNode::LoadString(text, "experiments/p.yaml"));
-  const std::string copy = RunFolderConfigText(config, text);
+  const run_config::RunConfig config = run_config::LoadRunConfig(ConfigNode::LoadString(text, "experiments/p.yaml"));
+  const std::string copy = run_config::RunFolderConfigText(config, text);
   EXPECT_EQ(copy.rfind(text + "\n", 0), 0u) << "the original text comes first, unchanged";
   // Read back from another folder, the copy still names the same file.
-  const RunConfig reread = LoadRunConfig(ConfigNode::LoadString(copy, "runs/p/config.yaml"));
+  const run_config::RunConfig reread = run_config::LoadRunConfig(ConfigNode::LoadString(copy, "runs/p/config.yaml"));
   EXPECT_EQ(reread.plugins, config.plugins);
   // Nothing to add without relative plugin paths, or with plugin_dir already there.
   const std::string plain = std::string(kBase) + "plugins: [/opt/liba.so]\n";
-  EXPECT_EQ(RunFolderConfigText(LoadRunConfig(ConfigNode::LoadString(plain, "p.yaml")), plain), plain);
-  EXPECT_EQ(RunFolderConfigText(reread, copy), copy);
-  EXPECT_EQ(RunFolderConfigText(Load(""), kBase), kBase);
+  EXPECT_EQ(run_config::RunFolderConfigText(run_config::LoadRunConfig(ConfigNode::LoadString(plain, "p.yaml")), plain), plain);
+  EXPECT_EQ(run_config::RunFolderConfigText(reread, copy), copy);
+  EXPECT_EQ(run_config::RunFolderConfigText(Load(""), kBase), kBase);
 }
 
 }  // namespace

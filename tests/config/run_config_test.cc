@@ -1,4 +1,4 @@
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 
 #include <gtest/gtest.h>
 
@@ -19,7 +19,7 @@ controller:
   goals: [[0.1, 0.1], [0.6, 0.1]]
 )";
 
-RunConfig Load(const std::string& text) { return LoadRunConfig(ConfigNode::LoadString(text, "test.yaml")); }
+run_config::RunConfig Load(const std::string& text) { return run_config::LoadRunConfig(ConfigNode::LoadString(text, "test.yaml")); }
 
 /// The ConfigError message for `text`, or "" if it loads.
 std::string ErrorOf(const std::string& text) {
@@ -38,12 +38,12 @@ std::string Replace(std::string text, const std::string& from, const std::string
 }
 
 TEST(RunConfigTest, MinimalConfigLoadsWithDefaults) {
-  const RunConfig config = Load(kMinimal);
+  const run_config::RunConfig config = Load(kMinimal);
   EXPECT_EQ(config.name, "demo");
   EXPECT_EQ(config.seed, 3u);
   EXPECT_EQ(config.num_robots, 2);
   EXPECT_EQ(config.sim.max_steps, 100);
-  EXPECT_EQ(config.sim.mode, sim::WorldMode::kLockstep);
+  EXPECT_EQ(config.sim.mode, config::WorldMode::kLockstep);
   ASSERT_EQ(config.initial_poses.size(), 2u);
   EXPECT_DOUBLE_EQ(config.initial_poses[1].theta_rad, 1.57);
   EXPECT_EQ(config.controller.Required("kind").AsString(), "go_to_goal");
@@ -52,16 +52,16 @@ TEST(RunConfigTest, MinimalConfigLoadsWithDefaults) {
 TEST(RunConfigTest, GeneratedInitialPosesAreDeterministicForASeed) {
   const std::string text = Replace(Replace(kMinimal, "  - [0.0, 0.0, 0.0]\n  - [0.5, 0.0, 1.57]\n", ""),
                                    "initial_poses:\n", "initial_poses: {generate: {min_spacing_m: 0.4}}\n");
-  const RunConfig a = Load(text);
-  const RunConfig b = Load(text);
+  const run_config::RunConfig a = Load(text);
+  const run_config::RunConfig b = Load(text);
   ASSERT_EQ(a.initial_poses.size(), 2u);
   EXPECT_EQ(a.initial_poses[1].x_m, b.initial_poses[1].x_m);
-  const RunConfig c = Load(Replace(text, "seed: 3", "seed: 4"));
+  const run_config::RunConfig c = Load(Replace(text, "seed: 3", "seed: 4"));
   EXPECT_NE(a.initial_poses[1].x_m, c.initial_poses[1].x_m);
 }
 
 TEST(RunConfigTest, ObstaclesWithPaths) {
-  const RunConfig config = Load(std::string(kMinimal) + R"(obstacles:
+  const run_config::RunConfig config = Load(std::string(kMinimal) + R"(obstacles:
   - center: [1.0, 0.5]
     size: [0.2, 0.3]
   - center: [-1.0, -0.5]
@@ -71,7 +71,7 @@ TEST(RunConfigTest, ObstaclesWithPaths) {
   ASSERT_EQ(config.obstacles.size(), 2u);
   EXPECT_FALSE(config.obstacles[0].path.has_value());
   ASSERT_TRUE(config.obstacles[1].path.has_value());
-  EXPECT_EQ(config.obstacles[1].path->mode, sim::ObstaclePathMode::kPingPong);
+  EXPECT_EQ(config.obstacles[1].path->mode, world::ObstaclePathMode::kPingPong);
   EXPECT_EQ(config.obstacles[1].id, 1);
 }
 
@@ -163,11 +163,11 @@ TEST(RunConfigTest, GeneratedPosesAvoidObstacles) {
                              "initial_poses:\n", "initial_poses: {generate: {min_spacing_m: 0.25}}\n");
   text = Replace(text, "robots: 2", "robots: 30") + "obstacles:\n  - center: [0.0, 0.0]\n    size: [1.6, 0.8]\n";
   text = Replace(text, "goals: [[0.1, 0.1], [0.6, 0.1]]", "goals: []");
-  const RunConfig config = Load(text);
+  const run_config::RunConfig config = Load(text);
   ASSERT_EQ(config.initial_poses.size(), 30u);
-  sim::UnicycleWorld world(config.world, config.initial_poses, config.obstacles);
+  world::UnicycleWorld world(config.world, config.initial_poses, config.obstacles);
   world.Step();
-  EXPECT_EQ(world.violations(), sim::ViolationCounts{});
+  EXPECT_EQ(world.violations(), world::ViolationCounts{});
 }
 
 TEST(RunConfigTest, ImpossibleGenerationNamesTheKeyAndWhatToChange) {
@@ -235,8 +235,8 @@ TEST(RunConfigTest, ObstacleCountIsBounded) {
     for (size_t i = 0; i < count; ++i) text += "  - {center: [" + std::to_string(i % 2000) + ", 50], size: [0.1, 0.1]}\n";
     return text;
   };
-  EXPECT_EQ(Load(std::string(kMinimal) + obstacles(RunConfig::kMaxObstacles)).obstacles.size(), RunConfig::kMaxObstacles);
-  const std::string error = ErrorOf(std::string(kMinimal) + obstacles(RunConfig::kMaxObstacles + 1));
+  EXPECT_EQ(Load(std::string(kMinimal) + obstacles(run_config::RunConfig::kMaxObstacles)).obstacles.size(), run_config::RunConfig::kMaxObstacles);
+  const std::string error = ErrorOf(std::string(kMinimal) + obstacles(run_config::RunConfig::kMaxObstacles + 1));
   EXPECT_NE(error.find(": obstacles: at most 10000 obstacles, got 10001"), std::string::npos) << error;
 }
 
@@ -248,7 +248,7 @@ TEST(RunConfigTest, UnsafeRunNamesAreRejected) {
 
 TEST(RunConfigTest, MissingFileAndBrokenYaml) {
   try {
-    LoadRunConfigFile("/nonexistent/run.yaml");
+    run_config::LoadRunConfigFile("/nonexistent/run.yaml");
     FAIL();
   } catch (const ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/run.yaml: cannot open"), std::string::npos);

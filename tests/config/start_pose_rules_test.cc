@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "dream/bridge/pre_validation.h"
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 #include "dream/run_status_t.hpp"
 #include "dream/world/unicycle_world.h"
 
@@ -29,7 +29,7 @@ bool ConfigAccepts(double x, double y) {
   const std::string text = "name: walls\nrobots: 1\ninitial_poses:\n  - [" + Exact(x) + ", " + Exact(y) +
                            ", 0.0]\ncontroller: {kind: go_to_goal, goals: [[0, 0]]}\n";
   try {
-    LoadRunConfig(ConfigNode::LoadString(text, "walls.yaml"));
+    run_config::LoadRunConfig(ConfigNode::LoadString(text, "walls.yaml"));
     return true;
   } catch (const ConfigError&) {
     return false;
@@ -42,26 +42,26 @@ std::vector<std::string> ExportRefusals(double x, double y) {
   track.num_robots = 1;
   for (int64_t k = 0; k <= 1; ++k) {
     track.utime.push_back(k * 33000);
-    track.poses.push_back(sim::Pose2{x, y, 0.0});
-    track.commands.push_back(sim::UnicycleCommand{});
+    track.poses.push_back(world::Pose2{x, y, 0.0});
+    track.commands.push_back(world::UnicycleCommand{});
     track.obstacles.emplace_back();
   }
   bridge::RunEnd end;
   end.seen = true;
   end.state = run_status_t::FINISHED;
   std::vector<std::string> rules;
-  for (const bridge::ExportProblem& p : bridge::PreValidate(track, end, sim::WorldParams{}, 240)) rules.push_back(p.rule);
+  for (const bridge::ExportProblem& p : bridge::PreValidate(track, end, world::WorldParams{}, 240)) rules.push_back(p.rule);
   return rules;
 }
 
 bool BoundaryErrorAtStepZero(double x, double y) {
-  sim::UnicycleWorld world(sim::WorldParams{}, {sim::Pose2{x, y, 0.0}}, {});
+  world::UnicycleWorld world(world::WorldParams{}, {world::Pose2{x, y, 0.0}}, {});
   world.Step();
   return world.violations().boundary_errors > 0;
 }
 
 TEST(StartPoseRulesTest, AcceptedMeansNoBoundaryErrorAndNoExportRefusal) {
-  const sim::Arena arena;
+  const world::Arena arena;
   const double radius = 0.055;
   // (x, y) on a line across each wall, through the limit of the lab's rule.
   struct Wall {

@@ -12,8 +12,8 @@
 #include "dream/agents/framework/world_snapshot.h"
 #include "dream/config/config_error.h"
 #include "dream/config/config_node.h"
-#include "dream/config/run_config.h"
-#include "dream/config/world_of_config.h"
+#include "dream/run_config/run_config.h"
+#include "dream/run_config/world_of_config.h"
 #include "dream/node/world_messages.h"
 #include "dream/world/world.h"
 #include "fuzz_targets.h"
@@ -30,19 +30,19 @@ constexpr int64_t kSteps = 80;
 // fills them, every agent, each broadcast delivered to the others. What a robot builds per step from its
 // config values is only reached here (a 2^31-sided Voronoi disc, allocated by
 // every robot at its first step, was).
-void RunClosedLoop(const config::RunConfig& run, std::vector<std::unique_ptr<agents::RobotAgent>>& robots) {
-  const std::unique_ptr<sim::World> world = config::WorldOfConfig(run);
-  std::vector<sim::ObstacleState> scratch;
+void RunClosedLoop(const run_config::RunConfig& run, std::vector<std::unique_ptr<agents::RobotAgent>>& robots) {
+  const std::unique_ptr<world::World> world = run_config::WorldOfConfig(run);
+  std::vector<world::ObstacleState> scratch;
   obstacles_t obstacles;
   robot_poses_t poses;
   agents::WorldSnapshot snapshot;
   const int64_t steps = std::min<int64_t>(kSteps, run.sim.max_steps);
   for (int64_t step = 0; step < steps; ++step) {
     // What the agents are sent, taken in as an agent host does.
-    sim::WorldMessages::Fill(*world, &scratch, &obstacles);
-    sim::WorldMessages::Fill(*world, &poses);
-    agents::TakeObstacles(obstacles, &snapshot);
-    agents::TakePoses(poses, &snapshot);
+    node::WorldMessages::Fill(*world, &scratch, &obstacles);
+    node::WorldMessages::Fill(*world, &poses);
+    agent_host::TakeObstacles(obstacles, &snapshot);
+    agent_host::TakePoses(poses, &snapshot);
     std::vector<agents::RadioMessage> sent;
     for (auto& robot : robots) {
       const agents::RobotAgent::Output out = robot->Step(snapshot);
@@ -63,16 +63,16 @@ void RunClosedLoop(const config::RunConfig& run, std::vector<std::unique_ptr<age
 void RunConfigTarget(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   std::vector<std::unique_ptr<agents::RobotAgent>> robots;
-  std::optional<config::RunConfig> loaded;
+  std::optional<run_config::RunConfig> loaded;
   try {
-    loaded = config::LoadRunConfig(config::ConfigNode::LoadString(text, "fuzz.yaml"));
-    const config::RunConfig& run = *loaded;
+    loaded = run_config::LoadRunConfig(config::ConfigNode::LoadString(text, "fuzz.yaml"));
+    const run_config::RunConfig& run = *loaded;
     // Then what `dream run` builds from it (as tests/reliability/config_mutation_test.cc
     // does): every robot's agent and the metrics. A plugin (a library to load) and
     // kind python (an embedded interpreter per input) are read by code of their own,
     // tested elsewhere; num_robots is at most ControllerConfig::kMaxRobots (50).
     if (!run.plugins.empty() || run.controller.GetString("kind", "") == "python") return;
-    const agents::ControllerFactory factory(run);
+    const agent_host::ControllerFactory factory(run);
     for (int robot = 0; robot < run.num_robots; ++robot) robots.push_back(factory.Make(robot));
     (void)factory.MakeMetrics();
   } catch (const config::ConfigError& e) {

@@ -6,7 +6,7 @@
 #include "dream/agent_host/controller_factory.h"
 #include "dream/config/config_error.h"
 #include "dream/config/config_node.h"
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 #include "fuzz_targets.h"
 #include "overridden_config.h"
 #include "sweep_parameter.h"
@@ -48,12 +48,12 @@ void AsDreamRun(const std::vector<std::string>& sets) {
   std::string folder_text;
   try {
     const cli::OverriddenConfig overridden(kBaseConfig, -1, sets);
-    const config::RunConfig run = overridden.Load();
+    const run_config::RunConfig run = overridden.Load();
     // dream run checks the controller's keys before it writes the folder
     // (HostedAgents::Check; for the C++ kinds, the factory's check).
     if (run.plugins.empty() && run.controller.GetString("kind", "") != "python") {
       try {
-        const agents::ControllerFactory factory(run);
+        const agent_host::ControllerFactory factory(run);
       } catch (const config::ConfigError& e) {
         throw config::ConfigError(overridden.Noted(e.what()));
       }
@@ -69,7 +69,7 @@ void AsDreamRun(const std::vector<std::string>& sets) {
     Finding("a --set refused by something else than a ConfigError or invalid_argument: " + std::string(e.what()));
   }
   try {
-    (void)config::LoadRunConfig(config::ConfigNode::LoadString(folder_text, "config.yaml"));
+    (void)run_config::LoadRunConfig(config::ConfigNode::LoadString(folder_text, "config.yaml"));
   } catch (const std::exception& e) {
     Finding("the run folder's config.yaml of an accepted --set does not load: " + std::string(e.what()));
   }
@@ -90,7 +90,7 @@ void AsDreamSweep(const std::vector<std::string>& sets) {
     const cli::SweepPlan plan({1}, parameters);
     for (const cli::SweepPlan::Run& run : plan.runs()) {
       const YAML::Node root = cli::SweepPlan::MakeRunConfig(base_text, kBaseConfig, run);
-      (void)config::LoadRunConfig(config::ConfigNode(root, kBaseConfig, ""));
+      (void)run_config::LoadRunConfig(config::ConfigNode(root, kBaseConfig, ""));
     }
   } catch (const config::ConfigError& e) {
     if (!StartsWith(e.what(), kBaseConfig)) Finding("a sweep's config error without its file: " + std::string(e.what()));

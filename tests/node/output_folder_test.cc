@@ -1,4 +1,4 @@
-#include "dream/node/output_folder.h"
+#include "dream/files/output_folder.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 #include <sstream>
 #include "../support/scratch_folder.h"
 
-namespace dream::sim {
+namespace dream::node {
 namespace {
 
 namespace fs = std::filesystem;
@@ -34,7 +34,7 @@ std::string MessageOf(const std::function<void()>& action) {
 }
 
 TEST_F(OutputFolderTest, NamesThatWouldLeaveTheFolderAreRefused) {
-  const OutputFolder folder(Path("plain"));
+  const files::OutputFolder folder(Path("plain"));
   EXPECT_THAT(MessageOf([&] { folder.PathOf("../x"); }), HasSubstr("'..' would escape"));
   EXPECT_THAT(MessageOf([&] { folder.PathOf("a/../../x"); }), HasSubstr("'..' would escape"));
   EXPECT_THAT(MessageOf([&] { folder.PathOf("/etc/passwd"); }), HasSubstr("absolute path"));
@@ -44,17 +44,17 @@ TEST_F(OutputFolderTest, NamesThatWouldLeaveTheFolderAreRefused) {
 
 TEST_F(OutputFolderTest, SymbolicLinkLeadingOutsideIsRefused) {
   fs::create_directories(base_ / "outside");
-  const OutputFolder folder(Path("out"));
+  const files::OutputFolder folder(Path("out"));
   fs::create_directory_symlink(base_ / "outside", base_ / "out" / "upload");
   EXPECT_THAT(MessageOf([&] { folder.WriteFile("upload/x.txt", "x"); }), HasSubstr("outside the output folder"));
   EXPECT_TRUE(fs::is_empty(base_ / "outside"));
 }
 
 TEST_F(OutputFolderTest, NamedFolderNeedsItsParentDefaultFolderIsMadeWithParents) {
-  EXPECT_THAT(MessageOf([&] { OutputFolder(Path("missing/run")); }),
+  EXPECT_THAT(MessageOf([&] { files::OutputFolder(Path("missing/run")); }),
               HasSubstr("its parent folder " + Path("missing") + " does not exist"));
   EXPECT_FALSE(fs::exists(base_ / "missing"));
-  const OutputFolder made(Path("runs/go_to_goal/"), OutputFolder::Parents::kCreate);
+  const files::OutputFolder made(Path("runs/go_to_goal/"), files::OutputFolder::Parents::kCreate);
   EXPECT_TRUE(fs::is_directory(base_ / "runs" / "go_to_goal"));
   EXPECT_EQ(made.dir(), Path("runs/go_to_goal")) << "a trailing slash names the same folder";
 }
@@ -65,10 +65,10 @@ TEST_F(OutputFolderTest, NamedFolderUnderAMissingToolFolderMakesIt) {
   // parent is still refused.
   const fs::path before = fs::current_path();
   fs::current_path(base_);
-  const OutputFolder exported("exports/go_to_goal");
-  const OutputFolder swept("./sweeps/seeds");
-  EXPECT_THAT(MessageOf([&] { OutputFolder("exprots/go_to_goal"); }), HasSubstr("does not exist"));
-  EXPECT_THAT(MessageOf([&] { OutputFolder("runs/a/b"); }), HasSubstr("its parent folder runs/a does not exist"));
+  const files::OutputFolder exported("exports/go_to_goal");
+  const files::OutputFolder swept("./sweeps/seeds");
+  EXPECT_THAT(MessageOf([&] { files::OutputFolder("exprots/go_to_goal"); }), HasSubstr("does not exist"));
+  EXPECT_THAT(MessageOf([&] { files::OutputFolder("runs/a/b"); }), HasSubstr("its parent folder runs/a does not exist"));
   fs::current_path(before);
   EXPECT_TRUE(fs::is_directory(base_ / "exports" / "go_to_goal"));
   EXPECT_TRUE(fs::is_directory(base_ / "sweeps" / "seeds"));
@@ -76,7 +76,7 @@ TEST_F(OutputFolderTest, NamedFolderUnderAMissingToolFolderMakesIt) {
 }
 
 TEST_F(OutputFolderTest, FileWrittenWholeWithNoTemporaryLeftBehind) {
-  const OutputFolder folder(Path("out"));
+  const files::OutputFolder folder(Path("out"));
   folder.WriteFile("a.txt", "first");
   folder.WriteFile("a.txt", "second");
   std::ifstream in(folder.PathOf("a.txt"));
@@ -90,13 +90,13 @@ TEST_F(OutputFolderTest, FileWrittenWholeWithNoTemporaryLeftBehind) {
 
 TEST_F(OutputFolderTest, AFileWhereTheFolderShouldBeIsReported) {
   std::ofstream(Path("taken")) << "x";
-  EXPECT_THAT(MessageOf([&] { OutputFolder(Path("taken")); }), HasSubstr(Path("taken") + ": is a file, not a folder"));
-  EXPECT_THAT(MessageOf([&] { OutputFolder(Path("taken/run")); }),
+  EXPECT_THAT(MessageOf([&] { files::OutputFolder(Path("taken")); }), HasSubstr(Path("taken") + ": is a file, not a folder"));
+  EXPECT_THAT(MessageOf([&] { files::OutputFolder(Path("taken/run")); }),
               HasSubstr("its parent " + Path("taken") + " is a file, not a folder"));
 }
 
 TEST_F(OutputFolderTest, AFileInSubfoldersGetsItsFoldersMadeAndStaysInside) {
-  const OutputFolder out(Path("run"));
+  const files::OutputFolder out(Path("run"));
   out.WriteFileInSubfolders("controllers/python/orbit.py", "print('orbit')\n");
   std::ifstream in(out.PathOf("controllers/python/orbit.py"));
   std::stringstream text;
@@ -109,7 +109,7 @@ TEST_F(OutputFolderTest, AFileInSubfoldersGetsItsFoldersMadeAndStaysInside) {
 
 // dream export into a folder whose `upload` is a file said only "File exists".
 TEST_F(OutputFolderTest, AFileWhereASubfolderShouldBeIsNamedAsInTheWay) {
-  const OutputFolder out(Path("export"));
+  const files::OutputFolder out(Path("export"));
   std::ofstream(out.PathOf("upload")) << "x";
   EXPECT_THAT(MessageOf([&] { out.MakeSubfolder("upload"); }),
               HasSubstr("cannot create the folder " + out.PathOf("upload") + ": a file of that name is in the way"));
@@ -118,4 +118,4 @@ TEST_F(OutputFolderTest, AFileWhereASubfolderShouldBeIsNamedAsInTheWay) {
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::node

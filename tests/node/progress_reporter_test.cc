@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace dream::sim {
+namespace dream::node {
 namespace {
 
 using Clock = ProgressReporter::Clock;
@@ -178,4 +178,4 @@ TEST(ProgressReporterTest, PlainModeRefusesAZeroInterval) {
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::node

@@ -10,19 +10,19 @@
 #include "dream/node/run_summary.h"
 #include "dream/world/unicycle_world.h"
 
-namespace dream::sim {
+namespace dream::node {
 namespace {
 
 using ::testing::HasSubstr;
 using ::testing::Not;
 
 struct StillRun {
-  config::RunConfig config;
-  UnicycleWorld world;
+  run_config::RunConfig config;
+  world::UnicycleWorld world;
   RunOutcome outcome;
 
   explicit StillRun(int steps)
-      : world(WorldParams{}, {{-1.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}}, {}) {
+      : world(world::WorldParams{}, {{-1.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}}, {}) {
     config.name = "judged";
     config.num_robots = 3;
     for (int k = 0; k < steps; ++k) world.Step();
@@ -30,8 +30,8 @@ struct StillRun {
   }
 };
 
-const VerdictReason* Find(const RunJudgement& judgement, const std::string& rule) {
-  for (const VerdictReason& reason : judgement.reasons()) {
+const world::VerdictReason* Find(const world::RunJudgement& judgement, const std::string& rule) {
+  for (const world::VerdictReason& reason : judgement.reasons()) {
     if (reason.rule == rule) return &reason;
   }
   return nullptr;
@@ -39,8 +39,8 @@ const VerdictReason* Find(const RunJudgement& judgement, const std::string& rule
 
 TEST(RunJudgeTest, AHealthyRunIsClean) {
   const StillRun run(30);
-  const RunJudgement judgement = JudgeRun(run.config, run.outcome, run.world);
-  EXPECT_EQ(judgement.verdict(), RunVerdict::kClean);
+  const world::RunJudgement judgement = JudgeRun(run.config, run.outcome, run.world);
+  EXPECT_EQ(judgement.verdict(), world::RunVerdict::kClean);
   EXPECT_TRUE(judgement.reasons().empty());
 }
 
@@ -53,8 +53,8 @@ TEST(RunJudgeTest, EachThingThatWentWrongOnTheBusIsAReason) {
   run.outcome.bad_message_first = {{"DREAM_CMD_0", "step 12: rejected command: answers step 13 but the world is at step 12"}};
   run.outcome.handler_failures = 1;
   run.outcome.dropped_messages = 12;
-  const RunJudgement judgement = JudgeRun(run.config, run.outcome, run.world);
-  EXPECT_EQ(judgement.verdict(), RunVerdict::kNotReady);
+  const world::RunJudgement judgement = JudgeRun(run.config, run.outcome, run.world);
+  EXPECT_EQ(judgement.verdict(), world::RunVerdict::kNotReady);
   ASSERT_NE(Find(judgement, "lost_robots"), nullptr);
   EXPECT_EQ(Find(judgement, "lost_robots")->problem.rfind("robot 1 lost", 0), 0u);  // 2 is under controller_failed
   ASSERT_NE(Find(judgement, "controller_failed"), nullptr);
@@ -79,8 +79,8 @@ TEST(RunJudgeTest, ARunThatDidNotFinishIsNotReady) {
   StillRun run(3);
   run.outcome.end = RunOutcome::End::kStartTimeout;
   run.outcome.reason = "robot 1 never got an agent";
-  const RunJudgement judgement = JudgeRun(run.config, run.outcome, run.world);
-  EXPECT_EQ(judgement.verdict(), RunVerdict::kNotReady);
+  const world::RunJudgement judgement = JudgeRun(run.config, run.outcome, run.world);
+  EXPECT_EQ(judgement.verdict(), world::RunVerdict::kNotReady);
   ASSERT_NE(Find(judgement, "did_not_finish"), nullptr);
   EXPECT_THAT(Find(judgement, "did_not_finish")->problem, HasSubstr("robot 1 never got an agent"));
 }
@@ -88,10 +88,10 @@ TEST(RunJudgeTest, ARunThatDidNotFinishIsNotReady) {
 TEST(RunJudgeTest, TheLabCapCountsTheExportsSettleSteps) {
   // (27032 + 240 settle) x 0.033 s = 899.976 s fits; one step more does not.
   const StillRun fits(27032);
-  EXPECT_EQ(JudgeRun(fits.config, fits.outcome, fits.world).verdict(), RunVerdict::kClean);
+  EXPECT_EQ(JudgeRun(fits.config, fits.outcome, fits.world).verdict(), world::RunVerdict::kClean);
   const StillRun over(27033);
-  const RunJudgement judgement = JudgeRun(over.config, over.outcome, over.world);
-  EXPECT_EQ(judgement.verdict(), RunVerdict::kRejected);
+  const world::RunJudgement judgement = JudgeRun(over.config, over.outcome, over.world);
+  EXPECT_EQ(judgement.verdict(), world::RunVerdict::kRejected);
   EXPECT_NE(Find(judgement, "lab_duration_cap"), nullptr);
 }
 
@@ -134,4 +134,4 @@ TEST(RunJudgeTest, SummaryOfAReasonThatIsNotUtf8IsStillWritten) {
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::node

@@ -11,7 +11,7 @@
 #include "dream/radio_message_t.hpp"
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
-#include "dream/node/atomic_file.h"
+#include "dream/files/atomic_file.h"
 #include "dream/node/refused_record.h"
 #include "dream/node/run_judge.h"
 #include "dream/node/sim_node.h"
@@ -19,7 +19,7 @@
 #include "scripted_agent.h"
 #include "../support/scratch_folder.h"
 
-namespace dream::sim {
+namespace dream::node {
 namespace {
 
 namespace fs = std::filesystem;
@@ -85,7 +85,7 @@ TEST_F(RunRecorderTest, UnwritableFolderIsAClearError) {
 
 TEST_F(RunRecorderTest, SimNodeRecordsEveryStepInSimulatedTime) {
   lcm::LcmBus bus("memq://");
-  UnicycleWorld world(WorldParams{}, {{0.0, 0.0, 0.0}, {0.5, 0.5, 1.0}});
+  world::UnicycleWorld world(world::WorldParams{}, {{0.0, 0.0, 0.0}, {0.5, 0.5, 1.0}});
   std::vector<std::unique_ptr<testing::ScriptedAgent>> agents;
   for (int id = 0; id < 2; ++id) {
     agents.push_back(std::make_unique<testing::ScriptedAgent>(
@@ -95,7 +95,7 @@ TEST_F(RunRecorderTest, SimNodeRecordsEveryStepInSimulatedTime) {
         }));
   }
   const std::string path = (dir_ / "run.lcmlog").string();
-  SimNodeOptions options;
+  config::SimNodeOptions options;
   options.max_steps = 20;
   options.progress_interval_s = 0;
   {
@@ -126,7 +126,7 @@ TEST_F(RunRecorderTest, SimNodeRecordsEveryStepInSimulatedTime) {
 // a forged DREAM_APPLIED showed in `dream log echo` as applied, and the run was clean.
 TEST_F(RunRecorderTest, RefusedMessagesStayOutOfTheRunLogAndAreKeptApartBounded) {
   lcm::LcmBus bus("memq://");
-  UnicycleWorld world(WorldParams{}, {{0.0, 0.0, 0.0}, {0.5, 0.5, 1.0}});
+  world::UnicycleWorld world(world::WorldParams{}, {{0.0, 0.0, 0.0}, {0.5, 0.5, 1.0}});
   constexpr int kMadeUpChannels = 2000;
   const std::vector<uint8_t> junk(8000, 0x5a);
   std::vector<std::unique_ptr<testing::ScriptedAgent>> agents;
@@ -187,7 +187,7 @@ TEST_F(RunRecorderTest, RefusedMessagesStayOutOfTheRunLogAndAreKeptApartBounded)
   }
   const std::string path = (dir_ / "run.lcmlog").string();
   const std::string refused_path = (dir_ / "refused.lcmlog").string();
-  SimNodeOptions options;
+  config::SimNodeOptions options;
   options.max_steps = 6;
   options.progress_interval_s = 0;
   RunOutcome outcome;
@@ -247,10 +247,10 @@ TEST_F(RunRecorderTest, RefusedMessagesStayOutOfTheRunLogAndAreKeptApartBounded)
   EXPECT_EQ(refused.front().channel, lcm::kAppliedChannel);
   // The verdict says so, naming channel, count and first step.
   bool said = false;
-  for (const VerdictReason& reason : OutcomeReasons(outcome)) {
+  for (const world::VerdictReason& reason : OutcomeReasons(outcome)) {
     if (reason.rule != "bad_messages") continue;
     said = true;
-    EXPECT_EQ(reason.verdict, RunVerdict::kNotReady);
+    EXPECT_EQ(reason.verdict, world::RunVerdict::kNotReady);
     EXPECT_NE(reason.problem.find("DREAM_APPLIED: 1, the first at step 3"), std::string::npos) << reason.problem;
     EXPECT_NE(reason.find_out.find(refused_path), std::string::npos) << reason.find_out;
   }
@@ -366,7 +366,7 @@ testing::ChildReport RunSimNodeWithFileSizeLimit(const std::string& path, rlim_t
                                                  int64_t big_message_step) {
   return testing::RunWithFileSizeLimit(limit_bytes, [&](testing::ChildReport* out) {
     lcm::LcmBus bus("memq://");
-    UnicycleWorld world(WorldParams{}, {{-1.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}});
+    world::UnicycleWorld world(world::WorldParams{}, {{-1.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}});
     lcm::BadMessageLog bad;
     // Subscribed before the agents, so the message is queued before their
     // commands and recorded while the world still waits at that step.
@@ -382,7 +382,7 @@ testing::ChildReport RunSimNodeWithFileSizeLimit(const std::string& path, rlim_t
       lcm::Publish(bus, "DREAM_RADIO_0", radio);
     }, bad);
     const auto agents = ForwardAgents(bus);
-    SimNodeOptions options;
+    config::SimNodeOptions options;
     options.max_steps = 100000;
     options.stop_when_done = false;
     options.progress_interval_s = 0;
@@ -453,13 +453,13 @@ TEST_F(RunRecorderTest, WriteFailureInsideAHandlerEndsTheRunAtThatStep) {
 
 TEST_F(RunRecorderTest, AtomicFileReplacesWholeContent) {
   const std::string path = (dir_ / "summary.json").string();
-  WriteFileAtomically(path, "first");
-  WriteFileAtomically(path, "second");
+  files::WriteFileAtomically(path, "first");
+  files::WriteFileAtomically(path, "second");
   std::ifstream in(path);
   std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_EQ(content, "second");
-  EXPECT_THROW(WriteFileAtomically((dir_ / "no" / "x.json").string(), "x"), std::runtime_error);
+  EXPECT_THROW(files::WriteFileAtomically((dir_ / "no" / "x.json").string(), "x"), std::runtime_error);
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::node

@@ -10,7 +10,7 @@
 #include <sstream>
 #include <string>
 
-namespace dream::sim::testing {
+namespace dream::node::testing {
 
 /// What a child run reported: "key=value" lines as a map.
 using ChildReport = std::map<std::string, std::string>;
@@ -64,4 +64,4 @@ inline ChildReport RunWithFileSizeLimit(rlim_t limit_bytes, const std::function<
   return report;
 }
 
-}  // namespace dream::sim::testing
+}  // namespace dream::node::testing

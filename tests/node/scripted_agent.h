@@ -8,7 +8,7 @@
 #include "dream/robot_poses_t.hpp"
 #include "dream/velocity_command_t.hpp"
 
-namespace dream::sim::testing {
+namespace dream::node::testing {
 
 /// A hand-written agent for SimNode tests: answers DREAM_POSES for one robot
 /// with whatever `decide` returns; returning false stays silent that step.
@@ -41,4 +41,4 @@ class ScriptedAgent {
   lcm::BadMessageLog bad_;
 };
 
-}  // namespace dream::sim::testing
+}  // namespace dream::node::testing

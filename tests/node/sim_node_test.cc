@@ -21,16 +21,16 @@
 #include "dream/velocity_command_t.hpp"
 #include "scripted_agent.h"
 
-namespace dream::sim {
+namespace dream::node {
 namespace {
 
 using testing::ScriptedAgent;
 
 /// Three robots in a row, far apart, facing +x.
-std::vector<Pose2> ThreeRobots() { return {{-1.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}}; }
+std::vector<world::Pose2> ThreeRobots() { return {{-1.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}}; }
 
-SimNodeOptions FastOptions(int64_t max_steps) {
-  SimNodeOptions options;
+config::SimNodeOptions FastOptions(int64_t max_steps) {
+  config::SimNodeOptions options;
   options.max_steps = max_steps;
   options.stop_when_done = false;
   options.agent_timeout_s = 0.05;
@@ -49,14 +49,14 @@ ScriptedAgent::Decide Forward(double v = 0.1) {
 
 class SimNodeTest : public ::testing::Test {
  protected:
-  SimNodeTest() : bus_("memq://"), world_(WorldParams{}, ThreeRobots()) {}
+  SimNodeTest() : bus_("memq://"), world_(world::WorldParams{}, ThreeRobots()) {}
 
   void AddAgent(int robot_id, ScriptedAgent::Decide decide, int64_t agent_id = 0) {
     agents_.push_back(
         std::make_unique<ScriptedAgent>(bus_, robot_id, agent_id == 0 ? 100 + robot_id : agent_id, std::move(decide)));
   }
 
-  RunOutcome Run(SimNodeOptions options) {
+  RunOutcome Run(config::SimNodeOptions options) {
     SimNode node(bus_, world_, nullptr, options);
     std::atomic<bool> stop{false};
     return node.Run(stop);
@@ -72,7 +72,7 @@ class SimNodeTest : public ::testing::Test {
   }
 
   lcm::LcmBus bus_;
-  UnicycleWorld world_;
+  world::UnicycleWorld world_;
   std::vector<std::unique_ptr<ScriptedAgent>> agents_;
   std::vector<std::vector<int32_t>> lost_per_step_;
   lcm::BadMessageLog bad_status_;
@@ -97,7 +97,7 @@ TEST_F(SimNodeTest, RunEndsWhenEveryRobotReportsDone) {
       return true;
     });
   }
-  SimNodeOptions options = FastOptions(1000);
+  config::SimNodeOptions options = FastOptions(1000);
   options.stop_when_done = true;
   const RunOutcome outcome = Run(options);
   EXPECT_EQ(outcome.end, RunOutcome::End::kFinished);
@@ -167,7 +167,7 @@ TEST_F(SimNodeTest, EveryWorldMessageCarriesTheRunsIdAndCommandsOfAnotherRunAreR
     return true;
   });
   AddAgent(2, Forward());
-  SimNodeOptions options = FastOptions(10);
+  config::SimNodeOptions options = FastOptions(10);
   options.start_timeout_s = 0.2;
   const RunOutcome outcome = Run(options);
   EXPECT_EQ(outcome.end, RunOutcome::End::kStartTimeout);
@@ -300,7 +300,7 @@ TEST_F(SimNodeTest, FaultFromTheRobotsAgentLosesThatRobotAtOnceAndTheRunGoesOn) 
     return false;
   });
   AddAgent(2, Forward());
-  SimNodeOptions options = FastOptions(20);
+  config::SimNodeOptions options = FastOptions(20);
   options.agent_timeout_s = 30.0;  // a silent robot alone would stall the run this long
   const RunOutcome outcome = Run(options);
   EXPECT_EQ(outcome.end, RunOutcome::End::kFinished);
@@ -354,7 +354,7 @@ TEST_F(SimNodeTest, CommandForAFutureStepIsRejected) {
   });
   AddAgent(1, Forward());
   AddAgent(2, Forward());
-  SimNodeOptions options = FastOptions(5);
+  config::SimNodeOptions options = FastOptions(5);
   const RunOutcome outcome = Run(options);
   EXPECT_EQ(outcome.end, RunOutcome::End::kStartTimeout);
   EXPECT_GE(outcome.rejected_commands, 1);
@@ -374,8 +374,8 @@ TEST_F(SimNodeTest, StopFlagInterruptsTheRun) {
 
 TEST_F(SimNodeTest, RealTimeModeUsesTheLatestCommands) {
   for (int id = 0; id < 3; ++id) AddAgent(id, Forward());
-  SimNodeOptions options = FastOptions(6);
-  options.mode = WorldMode::kRealTime;
+  config::SimNodeOptions options = FastOptions(6);
+  options.mode = config::WorldMode::kRealTime;
   options.agent_timeout_s = 1.0;
   const RunOutcome outcome = Run(options);
   EXPECT_EQ(outcome.end, RunOutcome::End::kFinished);
@@ -386,12 +386,12 @@ TEST_F(SimNodeTest, RealTimeModeUsesTheLatestCommands) {
 // Real time paces by the world's own time step, not the Robotarium's 0.033 s:
 // 5 steps of 0.1 s take at least 0.4 s of wall time after step 0 is answered.
 TEST_F(SimNodeTest, RealTimeStepsAtTheWorldsTimeStep) {
-  WorldParams slow;
+  world::WorldParams slow;
   slow.time_step_s = 0.1;
-  UnicycleWorld world(slow, ThreeRobots());
+  world::UnicycleWorld world(slow, ThreeRobots());
   for (int id = 0; id < 3; ++id) AddAgent(id, Forward());
-  SimNodeOptions options = FastOptions(5);
-  options.mode = WorldMode::kRealTime;
+  config::SimNodeOptions options = FastOptions(5);
+  options.mode = config::WorldMode::kRealTime;
   options.agent_timeout_s = 1.0;
   SimNode node(bus_, world, nullptr, options);
   std::atomic<bool> stop{false};
@@ -423,8 +423,8 @@ TEST_F(SimNodeTest, RealTimeRobotOfASilentAgentKeepsItsLastCommandFor15StepsThen
   });
   AddAgent(1, Forward());
   AddAgent(2, Forward());
-  SimNodeOptions options = FastOptions(28);  // 28 ticks of 33 ms: under a second
-  options.mode = WorldMode::kRealTime;
+  config::SimNodeOptions options = FastOptions(28);  // 28 ticks of 33 ms: under a second
+  options.mode = config::WorldMode::kRealTime;
   options.agent_timeout_s = 30.0;
   options.start_timeout_s = 5.0;
   const RunOutcome outcome = Run(options);
@@ -473,18 +473,18 @@ TEST_F(SimNodeTest, ProgressReporterFollowsTheStepsAndIsFinishedAtTheEnd) {
 }
 
 TEST(SimNodeOptionsTest, InvalidOptionsNameTheField) {
-  SimNodeOptions options;
+  config::SimNodeOptions options;
   options.agent_timeout_s = 0.0;
   std::string error;
   EXPECT_FALSE(options.IsValid(&error));
   EXPECT_NE(error.find("agent_timeout_s"), std::string::npos) << error;
-  options = SimNodeOptions{};
+  options = config::SimNodeOptions{};
   options.max_steps = 0;
   EXPECT_FALSE(options.IsValid(&error));
   EXPECT_NE(error.find("max_steps"), std::string::npos) << error;
-  EXPECT_THROW(ParseWorldMode("fast"), std::invalid_argument);
-  EXPECT_EQ(ParseWorldMode("realtime"), WorldMode::kRealTime);
+  EXPECT_THROW(config::ParseWorldMode("fast"), std::invalid_argument);
+  EXPECT_EQ(config::ParseWorldMode("realtime"), config::WorldMode::kRealTime);
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::node

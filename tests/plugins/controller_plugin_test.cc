@@ -11,7 +11,7 @@
 #include "dream/agent_host/controller_plugin.h"
 #include "dream/agent_host/controller_registry.h"
 #include "dream/config/config_error.h"
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 #include "../support/factory_error.h"
 
 namespace dream::agents {
@@ -20,9 +20,9 @@ namespace {
 namespace fs = std::filesystem;
 
 /// A one-robot run config naming `plugins` (YAML list text) and `kind`.
-config::RunConfig Config(const std::string& plugins, const std::string& kind = "test_still",
+run_config::RunConfig Config(const std::string& plugins, const std::string& kind = "test_still",
                          const std::string& source = "test.yaml") {
-  return config::LoadRunConfig(config::ConfigNode::LoadString(
+  return run_config::LoadRunConfig(config::ConfigNode::LoadString(
       "name: t\nrobots: 1\ninitial_poses: [[0, 0, 0]]\nplugins: " + plugins + "\ncontroller: {kind: " + kind + "}\n",
       source));
 }
@@ -30,7 +30,7 @@ config::RunConfig Config(const std::string& plugins, const std::string& kind = "
 using testing::FactoryErrorOf;
 
 bool Knows(const std::string& kind) {
-  const std::vector<std::string> kinds = ControllerFactory::Kinds();
+  const std::vector<std::string> kinds = agent_host::ControllerFactory::Kinds();
   return std::find(kinds.begin(), kinds.end(), kind) != kinds.end();
 }
 
@@ -38,8 +38,8 @@ std::string Quoted(const std::string& path) { return "'" + path + "'"; }
 
 TEST(ControllerPluginTest, AGoodPluginAddsItsKindOnceHoweverOftenItIsNamed) {
   EXPECT_FALSE(Knows("test_still"));
-  const config::RunConfig config = Config("[" + Quoted(TEST_PLUGIN_GOOD_PATH) + ", " + Quoted(TEST_PLUGIN_GOOD_PATH) + "]");
-  const ControllerFactory factory(config);
+  const run_config::RunConfig config = Config("[" + Quoted(TEST_PLUGIN_GOOD_PATH) + ", " + Quoted(TEST_PLUGIN_GOOD_PATH) + "]");
+  const agent_host::ControllerFactory factory(config);
   EXPECT_EQ(factory.kind(), "test_still");
   EXPECT_TRUE(Knows("test_still"));
   EXPECT_NE(factory.Make(0), nullptr);
@@ -47,7 +47,7 @@ TEST(ControllerPluginTest, AGoodPluginAddsItsKindOnceHoweverOftenItIsNamed) {
   // Another factory (dream run builds several) loads nothing twice.
   EXPECT_EQ(FactoryErrorOf(config), "");
   // The kind's own keys are checked like a built-in kind's.
-  const config::RunConfig typo = config::LoadRunConfig(config::ConfigNode::LoadString(
+  const run_config::RunConfig typo = run_config::LoadRunConfig(config::ConfigNode::LoadString(
       "name: t\nrobots: 1\ninitial_poses: [[0, 0, 0]]\nplugins: [" + Quoted(TEST_PLUGIN_GOOD_PATH) +
           "]\ncontroller: {kind: test_still, patience: 2}\n",
       "test.yaml"));
@@ -60,8 +60,8 @@ TEST(ControllerPluginTest, AGoodPluginAddsItsKindOnceHoweverOftenItIsNamed) {
 
 TEST(ControllerPluginTest, ARobotClassPluginAddsAKindWithoutMetricsOrKeysOfItsOwn) {
   EXPECT_FALSE(Knows("test_parked"));
-  const config::RunConfig config = Config("[" + Quoted(TEST_PLUGIN_ROBOT_PATH) + "]", "test_parked");
-  const ControllerFactory factory(config);
+  const run_config::RunConfig config = Config("[" + Quoted(TEST_PLUGIN_ROBOT_PATH) + "]", "test_parked");
+  const agent_host::ControllerFactory factory(config);
   EXPECT_TRUE(Knows("test_parked"));
   ASSERT_NE(factory.Make(0), nullptr);
   EXPECT_EQ(factory.Make(0)->robot().id(), 0);
@@ -140,13 +140,13 @@ TEST(ControllerPluginTest, TwoPluginsWithOneKindAreRefusedNamingTheFirst) {
 }
 
 // A builder with every optional member ControllerKind::Of reads.
-class FussyBuilder final : public ExperimentBuilder {
+class FussyBuilder final : public agent_host::ExperimentBuilder {
  public:
   static constexpr const char* kKind = "fussy";
   static constexpr bool kGraphMustConnect = true;
   static std::vector<const char*> Keys() { return {"a", "b"}; }
-  static AgentPartsConfig DefaultParts(int num_robots) {
-    AgentPartsConfig parts = AgentPartsConfig::Defaults(num_robots);
+  static agent_host::AgentPartsConfig DefaultParts(int num_robots) {
+    agent_host::AgentPartsConfig parts = agent_host::AgentPartsConfig::Defaults(num_robots);
     parts.robot.vel_gain = 0.5;
     return parts;
   }
@@ -156,24 +156,24 @@ class FussyBuilder final : public ExperimentBuilder {
 };
 
 TEST(ControllerKindTest, OfReadsTheBuildersStaticMembers) {
-  const ControllerKind kind = ControllerKind::Of<FussyBuilder>();
+  const agent_host::ControllerKind kind = agent_host::ControllerKind::Of<FussyBuilder>();
   EXPECT_EQ(kind.name, "fussy");
   EXPECT_EQ(kind.keys, (std::vector<std::string>{"a", "b"}));
   EXPECT_TRUE(kind.graph_must_connect);
   EXPECT_EQ(kind.default_parts(3).robot.vel_gain, 0.5);
   EXPECT_NE(kind.make_builder(config::ConfigNode(), 3), nullptr);
   // Without them: no graph requirement (the built-in go_to_goal).
-  ASSERT_NE(ControllerRegistry::Global().Find("go_to_goal"), nullptr);
-  EXPECT_FALSE(ControllerRegistry::Global().Find("go_to_goal")->graph_must_connect);
-  EXPECT_TRUE(ControllerRegistry::Global().Find("line_deployment")->graph_must_connect);
+  ASSERT_NE(agent_host::ControllerRegistry::Global().Find("go_to_goal"), nullptr);
+  EXPECT_FALSE(agent_host::ControllerRegistry::Global().Find("go_to_goal")->graph_must_connect);
+  EXPECT_TRUE(agent_host::ControllerRegistry::Global().Find("line_deployment")->graph_must_connect);
 }
 
 TEST(ControllerRegistryTest, RefusesNamelessKindsAndDuplicates) {
-  ControllerRegistry registry;
-  EXPECT_THROW(registry.Add(ControllerKind()), std::invalid_argument);
-  registry.Add(ControllerKind::Of<FussyBuilder>(), "here");
+  agent_host::ControllerRegistry registry;
+  EXPECT_THROW(registry.Add(agent_host::ControllerKind()), std::invalid_argument);
+  registry.Add(agent_host::ControllerKind::Of<FussyBuilder>(), "here");
   try {
-    registry.Add(ControllerKind::Of<FussyBuilder>(), "there");
+    registry.Add(agent_host::ControllerKind::Of<FussyBuilder>(), "there");
     ADD_FAILURE() << "a duplicate kind was accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(), "controller kind 'fussy' is registered twice (here and there)");

@@ -12,8 +12,8 @@
 
 #include "dream/agent_host/controller_factory.h"
 #include "dream/config/config_error.h"
-#include "dream/config/run_config.h"
-#include "dream/node/file_text.h"
+#include "dream/run_config/run_config.h"
+#include "dream/files/file_text.h"
 #include "../support/factory_error.h"
 #include "scenario_runner.h"
 
@@ -32,16 +32,16 @@ std::string Replaced(std::string text, const std::string& from, const std::strin
 
 /// The example's orbit.yaml, naming the plugin this build made, with
 /// `from` replaced by `to`; errors name orbit.yaml.
-config::RunConfig ExampleConfig(const std::string& from = "", const std::string& to = "") {
-  std::string text = Replaced(sim::ReadFileText(kExampleDir + "/orbit.yaml"), "build/liborbit_controller.so",
+run_config::RunConfig ExampleConfig(const std::string& from = "", const std::string& to = "") {
+  std::string text = Replaced(files::ReadFileText(kExampleDir + "/orbit.yaml"), "build/liborbit_controller.so",
                               std::string("'") + ORBIT_EXAMPLE_PLUGIN_PATH + "'");
   if (!from.empty()) text = Replaced(text, from, to);
-  return config::LoadRunConfig(config::ConfigNode::LoadString(text, "orbit.yaml"));
+  return run_config::LoadRunConfig(config::ConfigNode::LoadString(text, "orbit.yaml"));
 }
 
 /// The 1-based line of orbit.yaml that starts with `start`.
 int LineOf(const std::string& start) {
-  std::istringstream text(sim::ReadFileText(kExampleDir + "/orbit.yaml"));
+  std::istringstream text(files::ReadFileText(kExampleDir + "/orbit.yaml"));
   std::string line;
   for (int number = 1; std::getline(text, line); ++number) {
     if (line.rfind(start, 0) == 0) return number;
@@ -53,33 +53,33 @@ int LineOf(const std::string& start) {
 using testing::FactoryErrorOf;
 
 TEST(OrbitExampleTest, TheDocumentLeadsWithTheExampleFileVerbatim) {
-  const std::string document = sim::ReadFileText(std::string(DREAM_SOURCE_DIR) + "/docs/writing-a-controller.md");
+  const std::string document = files::ReadFileText(std::string(DREAM_SOURCE_DIR) + "/docs/writing-a-controller.md");
   const std::string fence = "```cpp\n";
   const size_t start = document.find(fence);
   ASSERT_NE(start, std::string::npos) << "no ```cpp block in docs/writing-a-controller.md";
   const size_t code = start + fence.size();
   const size_t end = document.find("```", code);
   ASSERT_NE(end, std::string::npos);
-  EXPECT_EQ(document.substr(code, end - code), sim::ReadFileText(kExampleDir + "/orbit_controller.cc"))
+  EXPECT_EQ(document.substr(code, end - code), files::ReadFileText(kExampleDir + "/orbit_controller.cc"))
       << "the first C++ block of docs/writing-a-controller.md must be orbit_controller.cc as it is";
 }
 
 TEST(OrbitExampleTest, ThePluginLoadsAndTheRobotsCircleTheirStartingCircles) {
-  const config::RunConfig config = ExampleConfig();
-  const ControllerFactory factory(config);  // loads the plugin
+  const run_config::RunConfig config = ExampleConfig();
+  const agent_host::ControllerFactory factory(config);  // loads the plugin
   EXPECT_EQ(factory.kind(), "orbit");
   EXPECT_EQ(factory.MakeMetrics().size(), 1u) << "one class: only the safety metrics";
 
   const scenario::ScenarioResult run = scenario::RunScenario(config, "orbit_example");
   ASSERT_TRUE(run.outcome.ok()) << run.outcome.reason;
-  EXPECT_EQ(run.violations, sim::ViolationCounts()) << "the verdict is clean, actuators included";
+  EXPECT_EQ(run.violations, world::ViolationCounts()) << "the verdict is clean, actuators included";
   EXPECT_GT(scenario::Value(run, "min_pairwise_distance_m"), 0.25);
   const double radius_m = config.controller.Required("radius_m").AsDouble();
   const double speed_mps = config.controller.Required("speed_mps").AsDouble();
   const double run_s = static_cast<double>(config.sim.max_steps) * config.world.time_step_s;
   for (size_t id = 0; id < run.final_poses.size(); ++id) {
-    const sim::Pose2& start = config.initial_poses[id];
-    const sim::Pose2& end = run.final_poses[id];
+    const world::Pose2& start = config.initial_poses[id];
+    const world::Pose2& end = run.final_poses[id];
     // The circle is radius_m to the left of the start pose.
     const double center_x_m = start.x_m - radius_m * std::sin(start.theta_rad);
     const double center_y_m = start.y_m + radius_m * std::cos(start.theta_rad);

@@ -10,8 +10,8 @@
 #include <string>
 
 #include "dream/agent_host/controller_factory.h"
-#include "dream/config/run_config.h"
-#include "dream/node/file_text.h"
+#include "dream/run_config/run_config.h"
+#include "dream/files/file_text.h"
 #include "scenario_runner.h"
 
 namespace dream::agents {
@@ -19,25 +19,25 @@ namespace {
 
 const std::string kExampleDir = std::string(DREAM_SOURCE_DIR) + "/docs/examples/out_of_tree_controller";
 
-config::RunConfig ExampleConfig() {
-  std::string text = sim::ReadFileText(kExampleDir + "/swap.yaml");
+run_config::RunConfig ExampleConfig() {
+  std::string text = files::ReadFileText(kExampleDir + "/swap.yaml");
   const std::string plugin = "build/libswap_controller.so";
   const size_t at = text.find(plugin);
   EXPECT_NE(at, std::string::npos);
   if (at != std::string::npos) text.replace(at, plugin.size(), std::string("'") + SWAP_EXAMPLE_PLUGIN_PATH + "'");
-  return config::LoadRunConfig(config::ConfigNode::LoadString(text, "swap.yaml"));
+  return run_config::LoadRunConfig(config::ConfigNode::LoadString(text, "swap.yaml"));
 }
 
 TEST(SwapExampleTest, TheDocumentShowsTheExampleFileVerbatim) {
-  const std::string document = sim::ReadFileText(std::string(DREAM_SOURCE_DIR) + "/docs/writing-a-controller.md");
-  const std::string file = sim::ReadFileText(kExampleDir + "/swap_controller.cc");
+  const std::string document = files::ReadFileText(std::string(DREAM_SOURCE_DIR) + "/docs/writing-a-controller.md");
+  const std::string file = files::ReadFileText(kExampleDir + "/swap_controller.cc");
   EXPECT_NE(document.find("```cpp\n" + file + "```"), std::string::npos)
       << "docs/writing-a-controller.md must show swap_controller.cc as it is, in a ```cpp block";
 }
 
 TEST(SwapExampleTest, EveryRobotReachesTheOppositePointWithoutACollisionAndTheRunEndsWhenAllAreDone) {
-  const config::RunConfig config = ExampleConfig();
-  EXPECT_EQ(ControllerFactory(config).kind(), "swap");
+  const run_config::RunConfig config = ExampleConfig();
+  EXPECT_EQ(agent_host::ControllerFactory(config).kind(), "swap");
   const scenario::ScenarioResult run = scenario::RunScenario(config, "swap_example");
   ASSERT_TRUE(run.outcome.ok()) << run.outcome.reason;
   EXPECT_EQ(run.violations.collision_errors, 0);
@@ -46,8 +46,8 @@ TEST(SwapExampleTest, EveryRobotReachesTheOppositePointWithoutACollisionAndTheRu
   EXPECT_LT(run.outcome.steps, config.sim.max_steps) << "done() should end the run early";
   const double tolerance_m = config.controller.Required("tolerance_m").AsDouble();
   for (size_t id = 0; id < run.final_poses.size(); ++id) {
-    const sim::Pose2& start = config.initial_poses[id];
-    const sim::Pose2& end = run.final_poses[id];
+    const world::Pose2& start = config.initial_poses[id];
+    const world::Pose2& end = run.final_poses[id];
     // Stopped within the tolerance (and the few mm a last step carries it).
     EXPECT_LT(std::hypot(end.x_m + start.x_m, end.y_m + start.y_m), tolerance_m + 0.01) << "robot " << id;
   }

@@ -31,7 +31,7 @@ class NoMetrics final : public ExperimentMetrics {
   void Write(MetricsReport* report) const override { report->values["still"] = 1.0; }
 };
 
-class StillBuilder final : public dream::agents::ExperimentBuilder {
+class StillBuilder final : public dream::agent_host::ExperimentBuilder {
  public:
   static constexpr const char* kKind = "test_still";
   static std::vector<const char*> Keys() { return {"patience_s"}; }
@@ -42,8 +42,8 @@ class StillBuilder final : public dream::agents::ExperimentBuilder {
   std::unique_ptr<ExperimentMetrics> MakeMetrics() const override { return std::make_unique<NoMetrics>(); }
 };
 
-[[maybe_unused]] dream::agents::ControllerKind Named(const char* name) {
-  dream::agents::ControllerKind kind = dream::agents::ControllerKind::Of<StillBuilder>();
+[[maybe_unused]] dream::agent_host::ControllerKind Named(const char* name) {
+  dream::agent_host::ControllerKind kind = dream::agent_host::ControllerKind::Of<StillBuilder>();
   kind.name = name;
   return kind;
 }
@@ -53,12 +53,12 @@ class StillBuilder final : public dream::agents::ExperimentBuilder {
 #if defined(TEST_PLUGIN_GOOD) || defined(TEST_PLUGIN_TWIN)
 DREAM_REGISTER_CONTROLLER(StillBuilder)
 #elif defined(TEST_PLUGIN_FOREIGN)
-namespace dream::agents {
+namespace dream::agent_host {
 __attribute__((visibility("default"))) ControllerRegistry& ControllerRegistry::Global() {
   static ControllerRegistry registry;
   return registry;
 }
-}  // namespace dream::agents
+}  // namespace dream::agent_host
 DREAM_REGISTER_CONTROLLER(StillBuilder)
 #elif defined(TEST_PLUGIN_ROBOT)
 DREAM_REGISTER_ROBOT("test_parked", StillRobot, {})
@@ -69,7 +69,7 @@ DREAM_CONTROLLER_PLUGIN(registry) {
 }
 #elif defined(TEST_PLUGIN_OLD_API)
 DREAM_PLUGIN_EXPORT int dream_plugin_api_version() { return 0; }
-DREAM_PLUGIN_EXPORT void dream_register_controllers(dream::agents::ControllerRegistry* registry) {
+DREAM_PLUGIN_EXPORT void dream_register_controllers(dream::agent_host::ControllerRegistry* registry) {
   registry->Add(Named("test_old"));
 }
 #elif defined(TEST_PLUGIN_NO_ENTRY)

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Unit tests of the Python agent host (python/dream/agent_host.py) on an in-memory bus: the
-lockstep contract of agents/lcm's AgentHost, and hostile traffic (forged counts, non-finite
+lockstep contract of agents/agent_host's AgentHost, and hostile traffic (forged counts, non-finite
 values, radio messages on the wrong channel, garbage) counted and dropped, never raised.
 
 Needs lcm-gen's Python types (DREAM_BUILD_DIR/python); exit 77 (skipped) without them or numpy.
@@ -335,7 +335,7 @@ class AgentHostTest(unittest.TestCase):
 
     def test_the_detail_limit_is_the_worlds(self):
         # agent_host.MAX_DETAIL_BYTES mirrors lcm::MessageLimits::kDetailBytes (the runtime stands alone).
-        header = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "lcmtypes", "include",
+        header = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "lcmtypes", "lcm", "include",
                               "dream", "lcm", "message_limits.h")
         with open(header, encoding="utf-8") as f:
             declared = re.search(r"kDetailBytes\s*=\s*(\d+)", f.read())

@@ -250,12 +250,12 @@ class MotionTest(unittest.TestCase):
 
 class RobotariumNumbersTest(unittest.TestCase):
     """The Python runtime runs on the lab without the C++ package, so it writes the Robotarium's
-    numbers again; they must stay those of sim/robotarium's RobotariumConstants (the C++ agents'
+    numbers again; they must stay those of base/robotarium's RobotariumConstants (the C++ agents'
     one source), read here from the header itself."""
 
     @classmethod
     def setUpClass(cls):
-        header = os.path.join(SOURCE_DIR, "sim", "robotarium", "include", "dream", "robotarium",
+        header = os.path.join(SOURCE_DIR, "base", "robotarium", "include", "dream", "robotarium",
                               "robotarium_constants.h")
         with open(header, encoding="utf-8") as f:
             text = f.read()

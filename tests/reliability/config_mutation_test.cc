@@ -16,7 +16,7 @@
 #include "dream/agent_host/controller_factory.h"
 #include "dream/config/config_error.h"
 #include "dream/config/config_node.h"
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 #include "fuzz_scale.h"
 #include "yaml_text_mutator.h"
 
@@ -48,11 +48,11 @@ enum class Outcome { kLoaded, kBuilt, kRefused };
 /// What `dream run` does with a config's text before the run starts: parse,
 /// check, and build every robot's agent and the metrics.
 Outcome LoadAndBuild(const std::string& text) {
-  const config::RunConfig run = config::LoadRunConfig(config::ConfigNode::LoadString(text, kSourceName));
+  const run_config::RunConfig run = run_config::LoadRunConfig(config::ConfigNode::LoadString(text, kSourceName));
   // A mutation can name kind python (an interpreter per case) or a plugin
   // (a library to load); both are read by code of their own, tested elsewhere.
   if (!run.plugins.empty() || run.controller.GetString("kind", "") == "python") return Outcome::kLoaded;
-  const agents::ControllerFactory factory(run);
+  const agent_host::ControllerFactory factory(run);
   for (int robot = 0; robot < run.num_robots; ++robot) factory.Make(robot);
   factory.MakeMetrics();
   return Outcome::kBuilt;

@@ -7,7 +7,7 @@
 #include <random>
 
 #include "allocation_watch.h"
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 #include "dream/lcm/bad_message_log.h"
 #include "dream/lcm/lcm_typed.h"
 #include "dream/lcm/message_limits.h"
@@ -100,7 +100,7 @@ TEST(DecoderBounds, TheRobotLimitCoversEveryRunTheConfigAllows) {
 }
 
 TEST(DecoderBounds, TheObstacleLimitIsTheConfigsLimit) {
-  EXPECT_EQ(static_cast<size_t>(MessageLimits::kObstacles), config::RunConfig::kMaxObstacles);
+  EXPECT_EQ(static_cast<size_t>(MessageLimits::kObstacles), run_config::RunConfig::kMaxObstacles);
 }
 
 TEST(DecoderBounds, ForgedCountsAreRefusedWithoutLargeAllocations) {

@@ -129,8 +129,8 @@ TEST(FileMutationDriver, MutatedRunLogsAreReadOrRefusedByEveryLogReader) {
   const LabFileSamples& samples = SharedLabFileSamples();
   const auto start = std::chrono::steady_clock::now();
   const std::string original = ReadBytes(samples.run_log());
-  const config::RunConfig& config = samples.exported().config;
-  const agents::ControllerFactory factory(config);
+  const run_config::RunConfig& config = samples.exported().config;
+  const agent_host::ControllerFactory factory(config);
   ASSERT_FALSE(bridge::MetricsJson(factory, run_log::RunLog::Read(samples.run_log())).contains("error"));
   const std::string path = samples.Scratch("mutated.lcmlog");
   FileMutator mutator(kSeed + 2);

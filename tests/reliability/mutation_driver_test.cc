@@ -105,7 +105,7 @@ class Mutator {
 /// A run log as `dream run` records it: per step obstacles, poses, status,
 /// then each robot's radio message and command; a fault and FINISHED at the end.
 std::vector<uint8_t> SmallRunLog(const std::string& path) {
-  sim::RunRecorder recorder(path);
+  node::RunRecorder recorder(path);
   const auto write = [&recorder](const std::string& channel, int64_t utime, const std::vector<uint8_t>& bytes) {
     recorder.Write(channel, utime, bytes.data(), static_cast<int>(bytes.size()));
   };
@@ -270,8 +270,8 @@ TEST(MutationDriver, MutatedRunLogsAreReadOrRefusedWithFileAndByte) {
     if (ReadsCleanly([&] { run = run_log::RunLog::Read(path); }, what + " (RunLog)")) {
       ReadsCleanly(
           [&] {
-            sim::MinimumDistanceSeries(*run);
-            sim::MovingObstaclePaths(*run);
+            render::MinimumDistanceSeries(*run);
+            render::MovingObstaclePaths(*run);
           },
           what + " (drawing)");
       ReadsCleanly([&] { bridge::RunTrackOf(*run, &end); }, what + " (the bridge's RunTrackOf)");

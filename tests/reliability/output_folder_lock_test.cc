@@ -3,7 +3,7 @@
 // the holder's descriptor (dream launch's simulator) adopts the lock. The
 // other process is util-linux's flock(1), which holds the lock file as
 // dream would and writes a holder note into it.
-#include "dream/node/output_folder_lock.h"
+#include "dream/files/output_folder_lock.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -37,7 +37,7 @@ std::string NewDir(const std::string& name) {
 /// flock(1) holding <dir>/.dream.lock with the note "<its command's pid>\nfake holder" until killed.
 class OtherHolder {
  public:
-  explicit OtherHolder(const std::string& dir) : lock_path_(dir + "/" + sim::OutputFolderLock::kFileName) {
+  explicit OtherHolder(const std::string& dir) : lock_path_(dir + "/" + files::OutputFolderLock::kFileName) {
     pid_ = ::fork();
     if (pid_ == 0) {
       // -o: only flock itself holds the lock, so killing it releases the lock.
@@ -70,13 +70,13 @@ class OtherHolder {
 
 TEST(OutputFolderLock, OneProcessMayHoldAFolderTwiceAndNamesItselfInTheLockFile) {
   const std::string dir = NewDir("lock_twice");
-  sim::OutputFolderLock::HoldUntilExit(dir);
-  EXPECT_NO_THROW(sim::OutputFolderLock::HoldUntilExit(dir + "/"));
-  EXPECT_TRUE(sim::OutputFolderLock::TryHoldUntilExit(dir));
-  const std::string note = ReadBytes(dir + "/" + sim::OutputFolderLock::kFileName);
+  files::OutputFolderLock::HoldUntilExit(dir);
+  EXPECT_NO_THROW(files::OutputFolderLock::HoldUntilExit(dir + "/"));
+  EXPECT_TRUE(files::OutputFolderLock::TryHoldUntilExit(dir));
+  const std::string note = ReadBytes(dir + "/" + files::OutputFolderLock::kFileName);
   EXPECT_EQ(note.substr(0, note.find('\n')), std::to_string(::getpid()));
   EXPECT_THAT(note, HasSubstr("file_damage_test"));
-  EXPECT_GE(sim::OutputFolderLock::DescriptorOf(dir), 0);
+  EXPECT_GE(files::OutputFolderLock::DescriptorOf(dir), 0);
 }
 
 TEST(OutputFolderLock, AFolderHeldByAnotherProcessIsRefusedNamingItsPidAndCommand) {
@@ -86,14 +86,14 @@ TEST(OutputFolderLock, AFolderHeldByAnotherProcessIsRefusedNamingItsPidAndComman
     const OtherHolder other(dir);
     ASSERT_FALSE(other.note_pid().empty());
     try {
-      sim::OutputFolderLock::HoldUntilExit(dir);
+      files::OutputFolderLock::HoldUntilExit(dir);
       ADD_FAILURE() << "locked a folder another process holds";
     } catch (const std::runtime_error& e) {
       EXPECT_THAT(e.what(), HasSubstr("output folder " + dir + " is being written by pid " + other.note_pid() +
                                       " (fake holder); wait for it to end, or choose another --out"));
     }
-    EXPECT_FALSE(sim::OutputFolderLock::TryHoldUntilExit(dir));
-    EXPECT_EQ(sim::OutputFolderLock::DescriptorOf(dir), -1);
+    EXPECT_FALSE(files::OutputFolderLock::TryHoldUntilExit(dir));
+    EXPECT_EQ(files::OutputFolderLock::DescriptorOf(dir), -1);
     // dream import into it is refused too, before anything is written.
     const LabFileSamples& samples = SharedLabFileSamples();
     const std::string result = samples.Scratch("lock_result.npy");
@@ -107,12 +107,12 @@ TEST(OutputFolderLock, AFolderHeldByAnotherProcessIsRefusedNamingItsPidAndComman
     EXPECT_FALSE(fs::exists(dir + "/run.lcmlog"));
   }
   // The holder is gone (killed): the kernel released its lock.
-  EXPECT_NO_THROW(sim::OutputFolderLock::HoldUntilExit(dir));
+  EXPECT_NO_THROW(files::OutputFolderLock::HoldUntilExit(dir));
 }
 
 TEST(OutputFolderLock, AnInheritedDescriptorOfTheSameLockFileIsAdopted) {
   const std::string dir = NewDir("lock_inherited");
-  const std::string lock_path = dir + "/" + sim::OutputFolderLock::kFileName;
+  const std::string lock_path = dir + "/" + files::OutputFolderLock::kFileName;
   // What dream launch holds (another open file: flock locks belong to it, not to the process).
   const int parent_fd = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   ASSERT_GE(parent_fd, 0);
@@ -120,12 +120,12 @@ TEST(OutputFolderLock, AnInheritedDescriptorOfTheSameLockFileIsAdopted) {
   // A descriptor of another file is not taken for the lock.
   const std::string other = dir + "/other";
   const int other_fd = ::open(other.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  ::setenv(sim::OutputFolderLock::kInheritedVariable, std::to_string(other_fd).c_str(), 1);
-  EXPECT_FALSE(sim::OutputFolderLock::TryHoldUntilExit(dir));
-  ::setenv(sim::OutputFolderLock::kInheritedVariable, std::to_string(parent_fd).c_str(), 1);
-  EXPECT_NO_THROW(sim::OutputFolderLock::HoldUntilExit(dir));
-  EXPECT_EQ(sim::OutputFolderLock::DescriptorOf(dir), parent_fd);
-  ::unsetenv(sim::OutputFolderLock::kInheritedVariable);
+  ::setenv(files::OutputFolderLock::kInheritedVariable, std::to_string(other_fd).c_str(), 1);
+  EXPECT_FALSE(files::OutputFolderLock::TryHoldUntilExit(dir));
+  ::setenv(files::OutputFolderLock::kInheritedVariable, std::to_string(parent_fd).c_str(), 1);
+  EXPECT_NO_THROW(files::OutputFolderLock::HoldUntilExit(dir));
+  EXPECT_EQ(files::OutputFolderLock::DescriptorOf(dir), parent_fd);
+  ::unsetenv(files::OutputFolderLock::kInheritedVariable);
   ::close(other_fd);
 }
 

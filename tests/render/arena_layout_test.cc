@@ -4,7 +4,7 @@
 
 #include <stdexcept>
 
-namespace dream::sim {
+namespace dream::render {
 namespace {
 
 TEST(ArenaLayoutTest, MapsTheArenaCornersInsideTheMarginsWithYUp) {
@@ -44,4 +44,4 @@ TEST(ArenaLayoutTest, RefusesAbsurdWidths) {
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::render

@@ -10,10 +10,10 @@
 #include "temp_folder.h"
 #include "video_probe.h"
 
-namespace dream::sim {
+namespace dream::render {
 namespace {
 
-using testing::TempFolder;
+using dream::testing::TempFolder;
 
 // Runs `body` with PATH set to `path`, restoring it afterwards.
 template <typename Body>
@@ -83,4 +83,4 @@ TEST(FfmpegEncoderTest, EncodesEveryFrameAndRestoresSigpipe) {
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::render

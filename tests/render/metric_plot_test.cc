@@ -7,11 +7,11 @@
 #include "picture_pixels.h"
 #include "temp_folder.h"
 
-namespace dream::sim {
+namespace dream::render {
 namespace {
 
 using testing::PicturePixels;
-using testing::TempFolder;
+using dream::testing::TempFolder;
 
 MetricSeries Ramp(const std::string& name, int points) {
   MetricSeries series;
@@ -65,4 +65,4 @@ TEST(MetricPlotTest, ASinglePointAndAFlatSeriesStillPlot) {
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::render

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace dream::sim::testing {
+namespace dream::render::testing {
 
 // Colours the pictures use, 0..1 (robots: matplotlib's tab10).
 inline constexpr std::array<double, 3> kRobot0Blue = {0.12, 0.47, 0.71};
@@ -79,4 +79,4 @@ class PicturePixels {
   cairo_surface_t* surface_;
 };
 
-}  // namespace dream::sim::testing
+}  // namespace dream::render::testing

@@ -9,16 +9,16 @@
 #include "temp_folder.h"
 #include "video_probe.h"
 
-namespace dream::sim {
+namespace dream::render {
 namespace {
 
-using testing::Box;
+using dream::testing::Box;
 using testing::kObstacleGrey;
 using testing::kRobot0Blue;
 using testing::kWhite;
 using testing::PicturePixels;
-using testing::SyntheticRunLog;
-using testing::TempFolder;
+using dream::testing::SyntheticRunLog;
+using dream::testing::TempFolder;
 
 // Inside a robot's disc (radius 0.055 m), clear of its id label, its heading
 // tick (+x here) and the grid lines through its centre.
@@ -183,4 +183,4 @@ TEST_F(RunAnimationTest, ACancelledVideoLeavesNothingBehind) {
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::render

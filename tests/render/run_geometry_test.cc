@@ -7,13 +7,13 @@
 #include "synthetic_run_log.h"
 #include "temp_folder.h"
 
-namespace dream::sim {
+namespace dream::render {
 namespace {
 
 using run_log::RunLog;
-using testing::Box;
-using testing::SyntheticRunLog;
-using testing::TempFolder;
+using dream::testing::Box;
+using dream::testing::SyntheticRunLog;
+using dream::testing::TempFolder;
 
 TEST(RunGeometryTest, DurationPathsAndClosestApproachPerStep) {
   TempFolder dir;
@@ -65,4 +65,4 @@ TEST(RunGeometryTest, ALogWithoutPosesIsNothingToRender) {
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::render

@@ -12,17 +12,17 @@
 #include "synthetic_run_log.h"
 #include "temp_folder.h"
 
-namespace dream::sim {
+namespace dream::render {
 namespace {
 
-using testing::Box;
+using dream::testing::Box;
 using testing::kObstacleGrey;
 using testing::kRobot0Blue;
 using testing::kRobot1Orange;
 using testing::kWhite;
 using testing::PicturePixels;
-using testing::SyntheticRunLog;
-using testing::TempFolder;
+using dream::testing::SyntheticRunLog;
+using dream::testing::TempFolder;
 
 constexpr double kRobotRadiusM = 0.055;
 
@@ -186,4 +186,4 @@ TEST_F(TrajectoryPictureTest, AFolderThatDoesNotExistIsAnErrorAndNothingIsWritte
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::render

@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <string>
 
-namespace dream::sim::testing {
+namespace dream::render::testing {
 
 /// True when `program` is on PATH.
 inline bool OnPath(const std::string& program) {
@@ -23,4 +23,4 @@ inline long CountVideoFrames(const std::string& path) {
   return read ? std::strtol(line, nullptr, 10) : -1;
 }
 
-}  // namespace dream::sim::testing
+}  // namespace dream::render::testing

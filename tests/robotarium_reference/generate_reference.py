@@ -10,7 +10,7 @@ depend only on the step number (open loop), and writes every set_velocities
 call, every get_poses() result, the cumulative error counts after every step
 and the final debug() text to a plain-text fixture (default: stdout).
 tests/world/robotarium_reference_test.cc replays the commands through
-dream::sim::UnicycleWorld and compares.
+dream::world::UnicycleWorld and compares.
 
 Needs numpy, matplotlib and cvxopt (the official package imports
 them); on Debian use /usr/bin/python3. See README.md next to this file.

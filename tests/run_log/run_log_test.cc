@@ -14,9 +14,9 @@
 namespace dream::run_log {
 namespace {
 
-using sim::testing::Box;
-using sim::testing::SyntheticRunLog;
-using sim::testing::TempFolder;
+using dream::testing::Box;
+using dream::testing::SyntheticRunLog;
+using dream::testing::TempFolder;
 
 bool Contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 

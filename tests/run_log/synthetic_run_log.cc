@@ -7,7 +7,7 @@
 #include "dream/robot_fault_t.hpp"
 #include "dream/run_status_t.hpp"
 
-namespace dream::sim::testing {
+namespace dream::testing {
 namespace {
 
 constexpr int64_t kStepUs = 33000;
@@ -92,7 +92,7 @@ SyntheticRunLog& SyntheticRunLog::Other(const std::string& channel) {
 }
 
 std::string SyntheticRunLog::Write() const {
-  RunRecorder recorder(path_);
+  node::RunRecorder recorder(path_);
   for (const Event& event : events_) {
     recorder.Write(event.channel, event.utime, event.data.data(), static_cast<int>(event.data.size()));
   }
@@ -109,4 +109,4 @@ SyntheticRunLog SyntheticRunLog::TwoRobots(const std::string& path, int steps) {
   return log;
 }
 
-}  // namespace dream::sim::testing
+}  // namespace dream::testing

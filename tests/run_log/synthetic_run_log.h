@@ -7,7 +7,7 @@
 
 #include "dream/rectangle_obstacle_t.hpp"
 
-namespace dream::sim::testing {
+namespace dream::testing {
 
 /// Writes small run logs with exactly the poses, obstacles, radio messages,
 /// statuses and faults a test wants, on the channels a run uses (and the
@@ -61,4 +61,4 @@ class SyntheticRunLog {
 /// A rectangle obstacle for tests.
 rectangle_obstacle_t Box(int id, double x, double y, double width, double height);
 
-}  // namespace dream::sim::testing
+}  // namespace dream::testing

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace dream::sim::testing {
+namespace dream::testing {
 
 /// A fresh folder under the system's temporary folder, removed at the end.
 class TempFolder {
@@ -34,4 +34,4 @@ class TempFolder {
   std::filesystem::path path_;
 };
 
-}  // namespace dream::sim::testing
+}  // namespace dream::testing

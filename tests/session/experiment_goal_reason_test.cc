@@ -23,10 +23,10 @@ nlohmann::json Judged(bool met, long long completion_step, const std::string& de
 TEST(ExperimentGoalReason, AMissedGoalIsANotReadyReason) {
   const ExperimentGoal missed =
       ExperimentGoal::Judge(SummaryOf("go_to_goal", Judged(false, -1, "not all at their goals, worst 0.2 m")));
-  const std::optional<sim::VerdictReason> reason = missed.Reason();
+  const std::optional<world::VerdictReason> reason = missed.Reason();
   ASSERT_TRUE(reason.has_value());
   EXPECT_EQ(reason->rule, "goal");
-  EXPECT_EQ(reason->verdict, sim::RunVerdict::kNotReady);
+  EXPECT_EQ(reason->verdict, world::RunVerdict::kNotReady);
   EXPECT_THAT(reason->problem, HasSubstr("the go_to_goal experiment missed its goal: not all at their goals"));
   EXPECT_EQ(missed.Json()["met"], false);
   EXPECT_EQ(missed.Json()["kind"], "go_to_goal");

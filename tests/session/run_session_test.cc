@@ -16,11 +16,11 @@
 #include <vector>
 
 #include "dream/agent_host/agent_host.h"
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 #include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/channels.h"
 #include "dream/robot_poses_t.hpp"
-#include "dream/node/file_text.h"
+#include "dream/files/file_text.h"
 #include "dream/session/run_session.h"
 #include "../support/scratch_folder.h"
 
@@ -63,12 +63,12 @@ class RunSessionTest : public ::testing::Test {
     lcm::LcmBus bus("memq://");
     std::vector<std::unique_ptr<agents::RobotAgent>> robots;
     for (int id = 0; id < session.config().num_robots; ++id) robots.push_back(session.factory()->Make(id));
-    agents::AgentHost host(bus, std::move(robots), 77);
+    agent_host::AgentHost host(bus, std::move(robots), 77);
     return session.Run(bus, {out(), "the folder's config\n"});
   }
 
   std::string out() const { return (dir_ / "out").string(); }
-  nlohmann::json Summary() const { return nlohmann::json::parse(sim::ReadFileText(out() + "/summary.json")); }
+  nlohmann::json Summary() const { return nlohmann::json::parse(files::ReadFileText(out() + "/summary.json")); }
 
   dream::testing::ScratchFolder folder_{"dream_run_session_test"};
   const fs::path dir_ = folder_.path();
@@ -78,12 +78,12 @@ class RunSessionTest : public ::testing::Test {
 TEST_F(RunSessionTest, AFolderRemovedAndMadeAgainDuringTheRunIsLeftToTheNewerRun) {
   RunSession::Options options;
   options.report = &report_;
-  RunSession session(config::LoadRunConfigFile(WriteConfig(0.1, 1.0, 30)), options);
+  RunSession session(run_config::LoadRunConfigFile(WriteConfig(0.1, 1.0, 30)), options);
   ASSERT_NE(session.factory(), nullptr) << session.factory_error();
   lcm::LcmBus bus("memq://");
   std::vector<std::unique_ptr<agents::RobotAgent>> robots;
   for (int id = 0; id < session.config().num_robots; ++id) robots.push_back(session.factory()->Make(id));
-  agents::AgentHost host(bus, std::move(robots), 77);
+  agent_host::AgentHost host(bus, std::move(robots), 77);
   // At step 5 the folder is removed and made again, and a newer run writes there.
   bus.Subscribe(lcm::kPosesChannel, [this](const std::string&, const void* data, int size) {
     robot_poses_t poses;
@@ -94,12 +94,12 @@ TEST_F(RunSessionTest, AFolderRemovedAndMadeAgainDuringTheRunIsLeftToTheNewerRun
     std::ofstream(out() + "/summary.json") << "the newer run's summary";
   });
   const RunResult result = session.Run(bus, {out(), "the folder's config\n"});
-  EXPECT_EQ(result.outcome.end, sim::RunOutcome::End::kFailed);
+  EXPECT_EQ(result.outcome.end, node::RunOutcome::End::kFailed);
   EXPECT_THAT(result.outcome.reason, HasSubstr("is no longer the file this run wrote"));
   EXPECT_FALSE(result.summary_written);
   // Before: the older run renamed the newer run's .part and wrote its summary and picture over the newer's.
-  EXPECT_EQ(sim::ReadFileText(out() + "/run.lcmlog.part"), "the newer run's log");
-  EXPECT_EQ(sim::ReadFileText(out() + "/summary.json"), "the newer run's summary");
+  EXPECT_EQ(files::ReadFileText(out() + "/run.lcmlog.part"), "the newer run's log");
+  EXPECT_EQ(files::ReadFileText(out() + "/summary.json"), "the newer run's summary");
   EXPECT_FALSE(fs::exists(out() + "/run.lcmlog"));
   EXPECT_FALSE(fs::exists(out() + "/trajectories.png"));
 }
@@ -108,18 +108,18 @@ TEST_F(RunSessionTest, WritesEveryOutputAndBuildsTheFactoryOnce) {
   const int built_before = FactoriesBuilt();
   RunSession::Options options;
   options.report = &report_;
-  RunSession session(config::LoadRunConfigFile(WriteConfig(0.0, 1.0, 30)), options);
+  RunSession session(run_config::LoadRunConfigFile(WriteConfig(0.0, 1.0, 30)), options);
   ASSERT_NE(session.factory(), nullptr) << session.factory_error();
   const RunResult result = RunWithAgents(session);
 
   // One factory for the agents, the metrics and the picture.
   EXPECT_EQ(FactoriesBuilt() - built_before, 1);
-  EXPECT_EQ(result.outcome.end, sim::RunOutcome::End::kFinished);
+  EXPECT_EQ(result.outcome.end, node::RunOutcome::End::kFinished);
   EXPECT_EQ(result.outcome.steps, 30);
   EXPECT_TRUE(result.summary_written);
   EXPECT_FALSE(result.picture_failed);
-  EXPECT_EQ(result.judgement.verdict(), sim::RunVerdict::kClean);
-  EXPECT_EQ(sim::ReadFileText(out() + "/config.yaml"), "the folder's config\n");
+  EXPECT_EQ(result.judgement.verdict(), world::RunVerdict::kClean);
+  EXPECT_EQ(files::ReadFileText(out() + "/config.yaml"), "the folder's config\n");
   EXPECT_GT(fs::file_size(out() + "/run.lcmlog"), 0u);
   EXPECT_GT(fs::file_size(out() + "/trajectories.png"), 0u);
   const nlohmann::json summary = Summary();
@@ -132,7 +132,7 @@ TEST_F(RunSessionTest, WritesEveryOutputAndBuildsTheFactoryOnce) {
   // One session, one run: a second would overwrite the first's folder.
   lcm::LcmBus again("memq://");
   EXPECT_THROW(session.Run(again, {out(), "another config\n"}), std::logic_error);
-  EXPECT_EQ(sim::ReadFileText(out() + "/config.yaml"), "the folder's config\n");
+  EXPECT_EQ(files::ReadFileText(out() + "/config.yaml"), "the folder's config\n");
   // Nothing left half written.
   for (const auto& entry : fs::directory_iterator(out())) {
     EXPECT_EQ(entry.path().extension() == ".part" || entry.path().string().find(".tmp") != std::string::npos, false)
@@ -144,10 +144,10 @@ TEST_F(RunSessionTest, ARobotLeavingTheArenaIsRejectedAndCountedAsTheLabsVerifie
   RunSession::Options options;
   options.report = &report_;
   // Robot 0 starts 0.1 m from the right wall and drives into it.
-  RunSession session(config::LoadRunConfigFile(WriteConfig(0.2, 1.5, 60)), options);
+  RunSession session(run_config::LoadRunConfigFile(WriteConfig(0.2, 1.5, 60)), options);
   const RunResult result = RunWithAgents(session);
-  EXPECT_EQ(result.outcome.end, sim::RunOutcome::End::kFinished);
-  EXPECT_EQ(result.judgement.verdict(), sim::RunVerdict::kRejected);
+  EXPECT_EQ(result.outcome.end, node::RunOutcome::End::kFinished);
+  EXPECT_EQ(result.judgement.verdict(), world::RunVerdict::kRejected);
   EXPECT_TRUE(result.judgement.Has("boundary")) << result.judgement.Text();
   const nlohmann::json summary = Summary();
   EXPECT_EQ(summary["verdict"], "rejected");
@@ -157,10 +157,10 @@ TEST_F(RunSessionTest, ARobotLeavingTheArenaIsRejectedAndCountedAsTheLabsVerifie
 TEST_F(RunSessionTest, ARunWithoutAgentsFailsWithASummaryAndNoPicture) {
   RunSession::Options options;
   options.report = &report_;
-  RunSession session(config::LoadRunConfigFile(WriteConfig(0.0, 1.0, 30, 0.2)), options);
+  RunSession session(run_config::LoadRunConfigFile(WriteConfig(0.0, 1.0, 30, 0.2)), options);
   lcm::LcmBus bus("memq://");
   const RunResult result = session.Run(bus, {out(), "x\n"});
-  EXPECT_EQ(result.outcome.end, sim::RunOutcome::End::kStartTimeout);
+  EXPECT_EQ(result.outcome.end, node::RunOutcome::End::kStartTimeout);
   EXPECT_EQ(result.outcome.steps, 0);
   EXPECT_TRUE(result.summary_written);
   EXPECT_FALSE(result.picture_failed);  // none was due
@@ -174,9 +174,9 @@ TEST_F(RunSessionTest, ASummaryThatCannotBeWrittenIsReportedAndNothingElseIsClai
   fs::create_directories(fs::path(out()) / "summary.json" / "occupied");
   RunSession::Options options;
   options.report = &report_;
-  RunSession session(config::LoadRunConfigFile(WriteConfig(0.0, 1.0, 10)), options);
+  RunSession session(run_config::LoadRunConfigFile(WriteConfig(0.0, 1.0, 10)), options);
   const RunResult result = RunWithAgents(session);
-  EXPECT_EQ(result.outcome.end, sim::RunOutcome::End::kFinished);
+  EXPECT_EQ(result.outcome.end, node::RunOutcome::End::kFinished);
   EXPECT_FALSE(result.summary_written);
   EXPECT_EQ(report_.str(), "");  // no verdict, no paths: the outputs are incomplete
   EXPECT_FALSE(fs::exists(out() + "/trajectories.png"));
@@ -187,9 +187,9 @@ TEST_F(RunSessionTest, AStopRequestEndsTheRunAsInterruptedWithItsOutputs) {
   RunSession::Options options;
   options.report = &report_;
   options.stop = &stop;
-  RunSession session(config::LoadRunConfigFile(WriteConfig(0.0, 1.0, 30)), options);
+  RunSession session(run_config::LoadRunConfigFile(WriteConfig(0.0, 1.0, 30)), options);
   const RunResult result = RunWithAgents(session);
-  EXPECT_EQ(result.outcome.end, sim::RunOutcome::End::kInterrupted);
+  EXPECT_EQ(result.outcome.end, node::RunOutcome::End::kInterrupted);
   EXPECT_TRUE(result.summary_written);
   EXPECT_EQ(Summary()["end"], "interrupted");
 }
@@ -197,10 +197,10 @@ TEST_F(RunSessionTest, AStopRequestEndsTheRunAsInterruptedWithItsOutputs) {
 TEST_F(RunSessionTest, AFactoryThatCannotBeBuiltIsRememberedNotThrown) {
   const std::string path = WriteConfig(0.0, 1.0, 10);
   std::ofstream(path, std::ios::app) << "# the kind below is unknown\n";
-  std::string text = sim::ReadFileText(path);
+  std::string text = files::ReadFileText(path);
   text.replace(text.find("session_test_drive"), std::string("session_test_drive").size(), "no_such_kind");
   std::ofstream(path, std::ios::trunc) << text;
-  const RunSession session(config::LoadRunConfigFile(path));
+  const RunSession session(run_config::LoadRunConfigFile(path));
   EXPECT_EQ(session.factory(), nullptr);
   EXPECT_THAT(session.factory_error(), HasSubstr("no_such_kind"));
 }

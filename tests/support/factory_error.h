@@ -4,15 +4,15 @@
 
 #include "dream/agent_host/controller_factory.h"
 #include "dream/config/config_error.h"
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 
 namespace dream::agents::testing {
 
 /// The error of building a ControllerFactory for `config` ("" when it builds),
 /// for tests of the messages a bad controller section gets.
-inline std::string FactoryErrorOf(const config::RunConfig& config) {
+inline std::string FactoryErrorOf(const run_config::RunConfig& config) {
   try {
-    ControllerFactory factory(config);
+    agent_host::ControllerFactory factory(config);
   } catch (const config::ConfigError& e) {
     return e.what();
   }

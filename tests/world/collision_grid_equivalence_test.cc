@@ -9,7 +9,7 @@
 
 #include "dream/world/unicycle_world.h"
 
-namespace dream::sim {
+namespace dream::world {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -123,4 +123,4 @@ TEST(CollisionGridEquivalenceTest, StaysEqualWhileRobotsMove) {
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -12,7 +12,7 @@
 #include "dream/world/unicycle_world.h"
 #include "obstacle_block.h"
 
-namespace dream::sim {
+namespace dream::world {
 namespace {
 
 using ::testing::HasSubstr;
@@ -205,4 +205,4 @@ TEST(InitialPoseGeneratorTest, ZeroRobotsAndBadArguments) {
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::world

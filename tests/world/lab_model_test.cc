@@ -12,7 +12,7 @@
 #include "dream/world/robot_traits.h"
 #include "dream/world/unicycle_world.h"
 
-namespace dream::sim {
+namespace dream::world {
 namespace {
 
 constexpr double kDt = robotarium::RobotariumConstants::kTimeStepSeconds;
@@ -243,4 +243,4 @@ TEST(LabModelTest, MotionTimesOfOneStepAreTheOfficialStep) {
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace dream::sim {
+namespace dream::world {
 namespace {
 
 using ::testing::ElementsAre;
@@ -110,4 +110,4 @@ TEST(LabVerifierRulesTest, EveryBrokenRuleIsListed) {
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::world

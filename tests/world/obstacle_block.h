@@ -4,7 +4,7 @@
 
 #include "dream/world/rectangle_obstacle_spec.h"
 
-namespace dream::sim::testing {
+namespace dream::world::testing {
 
 /// A static rectangular obstacle centred at (x_m, y_m).
 inline RectangleObstacleSpec Block(int id, double x_m, double y_m, double width_m, double height_m) {
@@ -16,4 +16,4 @@ inline RectangleObstacleSpec Block(int id, double x_m, double y_m, double width_
   return spec;
 }
 
-}  // namespace dream::sim::testing
+}  // namespace dream::world::testing

@@ -10,7 +10,7 @@
 #include "dream/world/rectangle_obstacle_spec.h"
 #include "dream/world/world_params.h"
 
-namespace dream::sim {
+namespace dream::world {
 namespace {
 
 using ::testing::AllOf;
@@ -115,4 +115,4 @@ TEST(InitialPoseParamsTest, MessagesNameTheField) {
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::world

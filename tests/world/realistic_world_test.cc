@@ -16,7 +16,7 @@
 #include "dream/robotarium/robotarium_constants.h"
 #include "dream/world/unicycle_world.h"
 
-namespace dream::sim {
+namespace dream::world {
 namespace {
 
 constexpr double kDt = robotarium::RobotariumConstants::kTimeStepSeconds;
@@ -476,4 +476,4 @@ TEST(RealisticWorldTest, EveryRealismFieldIsCheckedByItsRule) {
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-namespace dream::sim {
+namespace dream::world {
 namespace {
 
 RectangleObstacleSpec MovingSpec(std::vector<Eigen::Vector2d> waypoints, double speed_mps, ObstaclePathMode mode) {
@@ -121,4 +121,4 @@ TEST(RectangleObstacleTest, InvalidSpecThrows) {
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::world

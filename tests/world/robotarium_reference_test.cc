@@ -25,7 +25,7 @@
 #include "dream/world/run_report.h"
 #include "dream/world/unicycle_world.h"
 
-namespace dream::sim {
+namespace dream::world {
 namespace {
 
 constexpr double kPoseTolerance = 1e-12;
@@ -163,4 +163,4 @@ TEST_F(RobotariumReferenceTest, ReplayMatchesTheOfficialSimulator) {
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::world

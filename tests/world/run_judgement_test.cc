@@ -6,7 +6,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-namespace dream::sim {
+namespace dream::world {
 namespace {
 
 using ::testing::HasSubstr;
@@ -98,4 +98,4 @@ TEST(RunJudgementTest, VerdictNames) {
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::world

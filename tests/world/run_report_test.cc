@@ -3,7 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-namespace dream::sim {
+namespace dream::world {
 namespace {
 
 using ::testing::HasSubstr;
@@ -69,4 +69,4 @@ TEST(RunReportTest, DurationUsesTheGivenTimeStep) {
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::world

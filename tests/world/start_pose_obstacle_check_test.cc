@@ -9,7 +9,7 @@
 #include "dream/world/unicycle_world.h"
 #include "obstacle_block.h"
 
-namespace dream::sim {
+namespace dream::world {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -85,4 +85,4 @@ TEST(StartPoseObstacleCheckTest, InvalidSpecsAreRefused) {
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -24,7 +24,7 @@ void* operator new(std::size_t size) {
 void operator delete(void* memory) noexcept { std::free(memory); }
 void operator delete(void* memory, std::size_t) noexcept { std::free(memory); }
 
-namespace dream::sim {
+namespace dream::world {
 namespace {
 
 TEST(StepAllocationTest, SteadyStateStepDoesNotAllocate) {
@@ -61,4 +61,4 @@ TEST(StepAllocationTest, SteadyStateStepDoesNotAllocate) {
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::world

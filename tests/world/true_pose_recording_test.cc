@@ -17,7 +17,7 @@
 #include "dream/world/realistic_world.h"
 #include "dream/node/run_recorder.h"
 
-namespace dream::sim {
+namespace dream::world {
 namespace {
 
 // What SimNode publishes on DREAM_POSES for the world's current step.
@@ -56,8 +56,8 @@ TEST(TruePoseRecordingTest, LogKeepsTheTruthOnPosesAndTheMeasurementBesideIt) {
   RealisticWorld world(WorldParams{}, realism, 3, {{0.0, 0.0, 0.0}, {0.5, 0.5, 1.0}});
   std::vector<uint8_t> step0, step1;
   {
-    RunRecorder recorder(path);
-    std::optional<TruePoseRecording> truth;
+    node::RunRecorder recorder(path);
+    std::optional<node::TruePoseRecording> truth;
     truth.emplace(recorder, world);
     step0 = PosesMessage(world);
     recorder.Write(lcm::kPosesChannel, world.utime(), step0.data(), static_cast<int>(step0.size()));
@@ -99,4 +99,4 @@ TEST(TruePoseRecordingTest, LogKeepsTheTruthOnPosesAndTheMeasurementBesideIt) {
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -6,7 +6,7 @@
 
 #include "dream/robotarium/robotarium_constants.h"
 
-namespace dream::sim {
+namespace dream::world {
 namespace {
 
 constexpr double kR = robotarium::RobotariumConstants::kWheelRadiusMeters;
@@ -79,4 +79,4 @@ TEST(UnicycleKinematicsTest, InLimitRoundTripIsTheOfficialArithmetic) {
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -10,7 +10,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-namespace dream::sim {
+namespace dream::world {
 namespace {
 
 using ::testing::ElementsAre;
@@ -329,4 +329,4 @@ TEST(UnicycleWorldTest, NoRobotLimitAndEmptyWorldsStep) {
 }
 
 }  // namespace
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -12,7 +12,7 @@
 class SwapRobot final : public dream::agents::HrvoRobot {
  public:
   SwapRobot(int id, const dream::agents::RobotParams& params, const dream::config::ConfigNode& section)
-      : HrvoRobot(id, params, dream::agents::ReadHrvoRobotParams(section)),
+      : HrvoRobot(id, params, dream::agent_host::ReadHrvoRobotParams(section)),
         speed_mps_(section.GetDouble("speed_mps", 0.15)),
         tolerance_m_(section.GetDouble("tolerance_m", 0.03)) {
     if (speed_mps_ <= 0.0) section.FailAt("speed_mps", "must be > 0");

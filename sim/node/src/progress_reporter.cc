@@ -6,7 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
-namespace dream::sim {
+namespace dream::node {
 namespace {
 
 // The rate is measured over the last one to two seconds: long enough not to
@@ -151,4 +151,4 @@ std::string ProgressReporter::BarLine(int64_t done_steps) const {
   return line;
 }
 
-}  // namespace dream::sim
+}  // namespace dream::node

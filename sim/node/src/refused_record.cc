@@ -7,7 +7,7 @@
 
 #include "dream/node/run_recorder.h"
 
-namespace dream::sim {
+namespace dream::node {
 
 RefusedRecord::RefusedRecord(std::string path) : path_(std::move(path)) {}
 
@@ -45,4 +45,4 @@ void RefusedRecord::Close() {
   log_.reset();
 }
 
-}  // namespace dream::sim
+}  // namespace dream::node

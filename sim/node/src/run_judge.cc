@@ -6,7 +6,7 @@
 #include "dream/world/lab_verifier_rules.h"
 #include "dream/world/realistic_world.h"
 
-namespace dream::sim {
+namespace dream::node {
 namespace {
 
 std::string IdList(const std::set<int>& ids) {
@@ -17,15 +17,15 @@ std::string IdList(const std::set<int>& ids) {
 
 }  // namespace
 
-std::vector<VerdictReason> OutcomeReasons(const RunOutcome& outcome) {
-  std::vector<VerdictReason> reasons;
+std::vector<world::VerdictReason> OutcomeReasons(const RunOutcome& outcome) {
+  std::vector<world::VerdictReason> reasons;
   if (outcome.end != RunOutcome::End::kFinished) {
-    reasons.push_back({"did_not_finish", RunVerdict::kNotReady,
+    reasons.push_back({"did_not_finish", world::RunVerdict::kNotReady,
                        std::string("the run ended '") + EndName(outcome.end) + "': " + outcome.reason,
                        "summary.json end and reason"});
   }
   for (const auto& [id, detail] : outcome.robot_faults) {
-    reasons.push_back({"controller_failed", RunVerdict::kNotReady,
+    reasons.push_back({"controller_failed", world::RunVerdict::kNotReady,
                        "robot " + std::to_string(id) + " was lost, its controller failed at " + detail,
                        "summary.json robot_faults"});
   }
@@ -34,13 +34,13 @@ std::vector<VerdictReason> OutcomeReasons(const RunOutcome& outcome) {
     if (outcome.robot_faults.count(id) == 0) silent.insert(id);
   }
   if (!silent.empty()) {
-    reasons.push_back({"lost_robots", RunVerdict::kNotReady,
+    reasons.push_back({"lost_robots", world::RunVerdict::kNotReady,
                        std::string(silent.size() == 1 ? "robot " : "robots ") + IdList(silent) +
                            " lost: the agent fell silent past agent_timeout_s and the world stopped the robot",
                        "summary.json robots_ever_lost; dream log echo RUN DREAM_STATUS shows lost_robot_ids by step"});
   }
   if (outcome.command_conflicts > 0) {
-    reasons.push_back({"command_conflicts", RunVerdict::kNotReady,
+    reasons.push_back({"command_conflicts", world::RunVerdict::kNotReady,
                        std::to_string(outcome.command_conflicts) +
                            " commands for a robot and step that already had another one (a second sender); "
                            "the first was applied",
@@ -63,7 +63,7 @@ std::vector<VerdictReason> OutcomeReasons(const RunOutcome& outcome) {
       const auto first = outcome.bad_message_first.find(channel);
       if (first != outcome.bad_message_first.end()) channels += ", the first at " + first->second;
     }
-    reasons.push_back({"bad_messages", RunVerdict::kNotReady,
+    reasons.push_back({"bad_messages", world::RunVerdict::kNotReady,
                        std::to_string(bad) + " undecodable or refused messages were dropped: " + channels,
                        outcome.refused_log.empty()
                            ? std::string("summary.json bad_messages, bad_message_first and bad_message_senders")
@@ -72,18 +72,18 @@ std::vector<VerdictReason> OutcomeReasons(const RunOutcome& outcome) {
                                  outcome.refused_log});
   }
   if (!outcome.other_worlds.empty()) {
-    reasons.push_back({"other_worlds", RunVerdict::kNotReady,
+    reasons.push_back({"other_worlds", world::RunVerdict::kNotReady,
                        std::to_string(outcome.other_worlds.size()) +
                            " other world(s) published on the same LCM URL during the run",
                        "summary.json other_worlds; give each run its own --lcm-url"});
   }
   if (outcome.handler_failures > 0) {
-    reasons.push_back({"handler_failures", RunVerdict::kNotReady,
+    reasons.push_back({"handler_failures", world::RunVerdict::kNotReady,
                        std::to_string(outcome.handler_failures) + " exceptions in message handlers (caught and logged)",
                        "summary.json handler_failures; the run's log lines"});
   }
   if (outcome.dropped_messages > 0) {
-    reasons.push_back({"dropped_messages", RunVerdict::kNotReady,
+    reasons.push_back({"dropped_messages", world::RunVerdict::kNotReady,
                        std::to_string(outcome.dropped_messages) +
                            " messages were dropped by the in-process bus, its queue full (a message flood)",
                        "summary.json dropped_messages; the run's log lines"});
@@ -91,16 +91,16 @@ std::vector<VerdictReason> OutcomeReasons(const RunOutcome& outcome) {
   return reasons;
 }
 
-RunJudgement JudgeRun(const config::RunConfig& config, const RunOutcome& outcome, const World& world,
+world::RunJudgement JudgeRun(const run_config::RunConfig& config, const RunOutcome& outcome, const world::World& world,
                       int64_t robots_outside_boundaries) {
-  RunJudgement judgement(RunReport::FromViolations(world.step(), world.violations(), world.time_step_s()));
-  LabVerifierRules rules;
+  world::RunJudgement judgement(world::RunReport::FromViolations(world.step(), world.violations(), world.time_step_s()));
+  world::LabVerifierRules rules;
   rules.time_step_s = world.time_step_s();
   // What the run's export would declare and run: its steps plus the settle phase.
-  const int64_t iterations = world.step() + LabVerifierRules::kExportSettleSteps;
-  const LabVerifierRules::Declaration declared{config.num_robots,
+  const int64_t iterations = world.step() + world::LabVerifierRules::kExportSettleSteps;
+  const world::LabVerifierRules::Declaration declared{config.num_robots,
                                                static_cast<double>(iterations) * world.time_step_s()};
-  LabVerifierRules::Counts counts;
+  world::LabVerifierRules::Counts counts;
   counts.num_robots = world.num_robots();
   counts.iterations = iterations;
   counts.robots_too_close = world.violations().collision_errors;
@@ -109,10 +109,10 @@ RunJudgement JudgeRun(const config::RunConfig& config, const RunOutcome& outcome
   judgement.Add(rules.Check(declared, counts));
   judgement.Add(OutcomeReasons(outcome));
   // world.realism: a robot lost to the tracker (a warning: the lab runs it, blind).
-  if (const auto* realistic = dynamic_cast<const RealisticWorld*>(&world)) {
-    if (const std::optional<VerdictReason> lost = realistic->TrackerLossReason()) judgement.Add(*lost);
+  if (const auto* realistic = dynamic_cast<const world::RealisticWorld*>(&world)) {
+    if (const std::optional<world::VerdictReason> lost = realistic->TrackerLossReason()) judgement.Add(*lost);
   }
   return judgement;
 }
 
-}  // namespace dream::sim
+}  // namespace dream::node

@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <utility>
 
-namespace dream::sim {
+namespace dream::node {
 namespace {
 
 // An LCM log event is a fixed header (magic, event number, timestamp, channel
@@ -158,4 +158,4 @@ void RunRecorder::Close() {
   if (!flush_error.empty()) throw std::runtime_error(flush_error);
 }
 
-}  // namespace dream::sim
+}  // namespace dream::node

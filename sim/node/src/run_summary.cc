@@ -5,40 +5,40 @@
 #include <filesystem>
 
 #include "dream/lcm/run_id.h"
-#include "dream/node/json_text.h"
+#include "dream/files/json_text.h"
 #include "dream/node/true_pose_recording.h"
 #include "dream/world/realistic_world.h"
 #include "dream/world/run_report.h"
 
-namespace dream::sim {
+namespace dream::node {
 
-void SetSummaryVerdict(nlohmann::ordered_json* summary, const RunJudgement& judgement) {
+void SetSummaryVerdict(nlohmann::ordered_json* summary, const world::RunJudgement& judgement) {
   nlohmann::ordered_json& json = *summary;
-  json["verdict"] = RunVerdictName(judgement.verdict());
+  json["verdict"] = world::RunVerdictName(judgement.verdict());
   nlohmann::json reasons = nlohmann::json::array();
-  for (const VerdictReason& reason : judgement.reasons()) {
+  for (const world::VerdictReason& reason : judgement.reasons()) {
     reasons.push_back({{"rule", reason.rule},
-                       {"verdict", RunVerdictName(reason.verdict)},
+                       {"verdict", world::RunVerdictName(reason.verdict)},
                        {"problem", reason.problem},
                        {"find_out", reason.find_out}});
   }
   json["verdict_reasons"] = reasons;
-  json["robotarium_verdict"] = RunVerdictName(judgement.report().verdict);
+  json["robotarium_verdict"] = world::RunVerdictName(judgement.report().verdict);
   json["robotarium_report"] = judgement.report().Text();
 }
 
-std::string RunSummaryJson(const config::RunConfig& config, const RunOutcome& outcome, const World& world,
-                           const std::string& log_file_name, const RunJudgement& judgement) {
-  return JsonText(RunSummary(config, outcome, world, log_file_name, judgement)) + "\n";
+std::string RunSummaryJson(const run_config::RunConfig& config, const RunOutcome& outcome, const world::World& world,
+                           const std::string& log_file_name, const world::RunJudgement& judgement) {
+  return files::JsonText(RunSummary(config, outcome, world, log_file_name, judgement)) + "\n";
 }
 
-nlohmann::ordered_json RunSummary(const config::RunConfig& config, const RunOutcome& outcome, const World& world,
-                                  const std::string& log_file_name, const RunJudgement& judgement) {
+nlohmann::ordered_json RunSummary(const run_config::RunConfig& config, const RunOutcome& outcome, const world::World& world,
+                                  const std::string& log_file_name, const world::RunJudgement& judgement) {
   nlohmann::ordered_json json;
   json["run"] = config.name;
   json["config"] = config.source;
   json["seed"] = config.seed;
-  json["mode"] = WorldModeName(config.sim.mode);
+  json["mode"] = config::WorldModeName(config.sim.mode);
   json["robots"] = config.num_robots;
   json["end"] = EndName(outcome.end);
   json["reason"] = outcome.reason;
@@ -48,7 +48,7 @@ nlohmann::ordered_json RunSummary(const config::RunConfig& config, const RunOutc
   json["wall_time_s"] = outcome.wall_time_s;
   json["steps_per_second"] =
       outcome.wall_time_s > 0 ? static_cast<double>(outcome.steps) / outcome.wall_time_s : 0.0;
-  const ViolationCounts& counts = world.violations();
+  const world::ViolationCounts& counts = world.violations();
   json["violations"] = {{"boundary_errors", counts.boundary_errors},
                         {"collision_errors", counts.collision_errors},
                         {"actuator_errors", counts.actuator_errors},
@@ -82,16 +82,16 @@ nlohmann::ordered_json RunSummary(const config::RunConfig& config, const RunOutc
   json["log_events"] = outcome.log_events;
   // Where the robots really ended: a realistic world's poses() are what the
   // agents were sent last (measured), its true_poses() where they are.
-  const auto* realistic = dynamic_cast<const RealisticWorld*>(&world);
+  const auto* realistic = dynamic_cast<const world::RealisticWorld*>(&world);
   nlohmann::json poses = nlohmann::json::array();
-  for (const Pose2& pose : realistic != nullptr ? realistic->true_poses() : world.poses()) {
+  for (const world::Pose2& pose : realistic != nullptr ? realistic->true_poses() : world.poses()) {
     poses.push_back({pose.x_m, pose.y_m, pose.theta_rad});
   }
   json["final_poses"] = poses;
   // world.realism: its models, and what the tracker model did to the agents' view.
   if (realistic != nullptr) {
     nlohmann::ordered_json realism;
-    for (const RealismParams::Field& field : RealismParams::Fields()) {
+    for (const world::RealismParams::Field& field : world::RealismParams::Fields()) {
       if (field.number != nullptr) {
         realism[field.key] = config.realism.*field.number;
       } else {
@@ -102,11 +102,11 @@ nlohmann::ordered_json RunSummary(const config::RunConfig& config, const RunOutc
     realism["poses_channel_seen_by_agents"] = TruePoseRecording::kMeasuredPosesChannel;
     json["realism"] = realism;
     nlohmann::json lost = nlohmann::json::array();
-    for (const RealisticWorld::TrackerLoss& loss : realistic->tracker_losses()) {
+    for (const world::RealisticWorld::TrackerLoss& loss : realistic->tracker_losses()) {
       lost.push_back({{"robot", loss.robot_id}, {"step", loss.step}});
     }
     nlohmann::json robots = nlohmann::json::array();
-    for (const RobotTraits& traits : realistic->robot_traits()) {
+    for (const world::RobotTraits& traits : realistic->robot_traits()) {
       robots.push_back({{"linear_gain", traits.linear_gain},
                         {"angular_gain", traits.angular_gain},
                         {"heading_drift_radps", traits.heading_drift_radps}});
@@ -121,4 +121,4 @@ nlohmann::ordered_json RunSummary(const config::RunConfig& config, const RunOutc
   return json;
 }
 
-}  // namespace dream::sim
+}  // namespace dream::node

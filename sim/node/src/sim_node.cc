@@ -27,7 +27,7 @@
 #include "dream/node/run_recorder.h"
 #include "dream/velocity_command_t.hpp"
 
-namespace dream::sim {
+namespace dream::node {
 namespace {
 
 double SecondsBetween(std::chrono::steady_clock::time_point from, std::chrono::steady_clock::time_point to) {
@@ -69,7 +69,7 @@ const char* EndName(RunOutcome::End end) {
   return "unknown";
 }
 
-SimNode::SimNode(lcm::LcmInterface& lcm, World& world, RunRecorder* recorder, SimNodeOptions options)
+SimNode::SimNode(lcm::LcmInterface& lcm, world::World& world, RunRecorder* recorder, config::SimNodeOptions options)
     : lcm_(lcm),
       world_(world),
       recorder_(recorder),
@@ -273,7 +273,7 @@ SimNode::Heard SimNode::OnCommand(const std::string& channel, const velocity_com
                         std::to_string(world_.step()), command.agent_id);
     return Heard::kRefused;
   }
-  const bool lockstep = options_.mode == WorldMode::kLockstep;
+  const bool lockstep = options_.mode == config::WorldMode::kLockstep;
   RobotSlot& robot = robots_[static_cast<size_t>(id)];
   // Late (older than the command held, or for a step the robot missed) or
   // resent: not used again, so not recorded again; the log keeps one command
@@ -333,7 +333,7 @@ SimNode::Heard SimNode::OnCommand(const std::string& channel, const velocity_com
     robot.w_radps = command.w;
   }
   robot.done = command.done;
-  if (!lockstep) world_.SetCommand(id, UnicycleCommand{robot.v_mps, robot.w_radps});
+  if (!lockstep) world_.SetCommand(id, world::UnicycleCommand{robot.v_mps, robot.w_radps});
   // An absurd command answers the step (the robot holds still), but its
   // values were refused: kept apart from the log, whose DREAM_APPLIED shows the stop.
   return absurd ? Heard::kRefused : Heard::kUsed;
@@ -351,7 +351,7 @@ void SimNode::RecordApplied() {
   applied.step = world_.step();
   applied.run_id = run_id_;
   applied.num_robots = world_.num_robots();
-  const bool lockstep = options_.mode == WorldMode::kLockstep;
+  const bool lockstep = options_.mode == config::WorldMode::kLockstep;
   for (const RobotSlot& robot : robots_) {
     const bool driven = !robot.lost && (lockstep ? Answered(robot) : robot.command_step >= 0);
     applied.applied_agent_id.push_back(driven ? robot.owner_agent_id : 0);
@@ -381,7 +381,7 @@ void SimNode::PublishStatus(int8_t state, const std::string& detail, bool record
   status.run_id = run_id_;
   status.state = state;
   status.num_robots = world_.num_robots();
-  const ViolationCounts& counts = world_.violations();
+  const world::ViolationCounts& counts = world_.violations();
   status.boundary_errors = counts.boundary_errors;
   status.collision_errors = counts.collision_errors;
   status.actuator_errors = counts.actuator_errors;
@@ -431,7 +431,7 @@ void SimNode::MarkSilentRobotsLost(Clock::time_point now) {
   std::vector<int> newly_lost;
   for (size_t i = 0; i < robots_.size(); ++i) {
     RobotSlot& robot = robots_[i];
-    const bool silent = options_.mode == WorldMode::kLockstep
+    const bool silent = options_.mode == config::WorldMode::kLockstep
                             ? !Answered(robot)
                             : SecondsBetween(robot.last_heard, now) > options_.agent_timeout_s;
     if (silent && !robot.lost) {
@@ -450,12 +450,12 @@ void SimNode::MarkSilentRobotsLost(Clock::time_point now) {
 
 void SimNode::AdvanceWorld() {
   RecordApplied();
-  if (options_.mode == WorldMode::kLockstep) {
+  if (options_.mode == config::WorldMode::kLockstep) {
     for (size_t i = 0; i < robots_.size(); ++i) {
       RobotSlot& robot = robots_[i];
       const int id = static_cast<int>(i);
       if (Answered(robot)) {
-        world_.SetCommand(id, UnicycleCommand{robot.v_mps, robot.w_radps});
+        world_.SetCommand(id, world::UnicycleCommand{robot.v_mps, robot.w_radps});
       } else {
         world_.StopRobot(id);
       }
@@ -527,7 +527,7 @@ RunOutcome SimNode::Run(const std::atomic<bool>& stop) {
   state_ = run_status_t::WAITING_FOR_AGENTS;
   PublishStep(true);
   step_published_ = last_resend_ = Clock::now();
-  const bool lockstep = options_.mode == WorldMode::kLockstep;
+  const bool lockstep = options_.mode == config::WorldMode::kLockstep;
   // Real time: one world step per time step of wall time.
   const auto step_period =
       std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(world_.time_step_s()));
@@ -541,7 +541,7 @@ RunOutcome SimNode::Run(const std::atomic<bool>& stop) {
     if (state_ == run_status_t::WAITING_FOR_AGENTS) {
       if (AllLiveAnswered()) {
         state_ = run_status_t::RUNNING;
-        spdlog::info("all {} robots have agents; running ({})", world_.num_robots(), WorldModeName(options_.mode));
+        spdlog::info("all {} robots have agents; running ({})", world_.num_robots(), config::WorldModeName(options_.mode));
         next_realtime_step = now;
         if (progress_ != nullptr) progress_->Start(options_.max_steps, world_.step(), now);
         // Agents answered step 0; in real time their answer is the latest command.
@@ -612,4 +612,4 @@ RunOutcome SimNode::Run(const std::atomic<bool>& stop) {
   }
 }
 
-}  // namespace dream::sim
+}  // namespace dream::node

@@ -4,9 +4,9 @@
 #include "dream/lcm/lcm_typed.h"
 #include "dream/robot_poses_t.hpp"
 
-namespace dream::sim {
+namespace dream::node {
 
-TruePoseRecording::TruePoseRecording(RunRecorder& recorder, const RealisticWorld& world)
+TruePoseRecording::TruePoseRecording(RunRecorder& recorder, const world::RealisticWorld& world)
     : recorder_(recorder), world_(world) {
   recorder_.RewriteChannel(lcm::kPosesChannel,
                            [this](int64_t utime, const void* data, int size) { Record(utime, data, size); });
@@ -20,8 +20,8 @@ void TruePoseRecording::Record(int64_t utime, const void* data, int size) {
   // The world encoded it a moment ago; a message that does not decode stays
   // measured only (nothing to put the truth into).
   if (!lcm::Decode(data, size, &poses)) return;
-  const std::vector<Pose2>& truth = world_.true_poses();
-  const std::vector<UnicycleCommand>& velocities = world_.true_velocities();
+  const std::vector<world::Pose2>& truth = world_.true_poses();
+  const std::vector<world::UnicycleCommand>& velocities = world_.true_velocities();
   if (poses.x.size() != truth.size() || poses.v.size() != velocities.size()) return;
   for (size_t i = 0; i < truth.size(); ++i) {
     poses.x[i] = truth[i].x_m;
@@ -37,4 +37,4 @@ void TruePoseRecording::Record(int64_t utime, const void* data, int size) {
   recorder_.Write(lcm::kPosesChannel, utime, buffer_.data(), true_size);
 }
 
-}  // namespace dream::sim
+}  // namespace dream::node

@@ -7,7 +7,7 @@
 
 #include "dream/robotarium/robotarium_constants.h"
 
-namespace dream::sim {
+namespace dream::render {
 namespace {
 
 constexpr double kReferenceWidthPx = 1280.0;  // ui_scale() == 1
@@ -50,4 +50,4 @@ double ArenaLayout::caption_baseline_px(int line) const {
          caption_font_px() * 0.2;
 }
 
-}  // namespace dream::sim
+}  // namespace dream::render

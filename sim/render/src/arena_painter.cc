@@ -8,7 +8,7 @@
 
 #include "dream/robotarium/robotarium_constants.h"
 
-namespace dream::sim {
+namespace dream::render {
 namespace {
 
 constexpr std::array<std::array<double, 3>, 10> kColors = {{{0.12, 0.47, 0.71},
@@ -61,7 +61,7 @@ void ArenaPainter::SetColor(int robot_id, double alpha) const {
 }
 
 void ArenaPainter::Background() const {
-  const Arena& arena = layout_.arena();
+  const world::Arena& arena = layout_.arena();
   const double ui = layout_.ui_scale();
   cairo_set_source_rgb(cr_, 1, 1, 1);
   cairo_paint(cr_);
@@ -85,7 +85,7 @@ void ArenaPainter::Background() const {
 }
 
 void ArenaPainter::AxisLabels() const {
-  const Arena& arena = layout_.arena();
+  const world::Arena& arena = layout_.arena();
   const double ui = std::max(layout_.ui_scale(), 0.5);
   const double gap = 5.0 * ui;  // between the frame and a label
   cairo_set_source_rgb(cr_, 0.45, 0.45, 0.45);
@@ -150,7 +150,7 @@ void ArenaPainter::Legend(const std::vector<LegendItem>& items) const {
 }
 
 void ArenaPainter::ClipToArena() const {
-  const Arena& arena = layout_.arena();
+  const world::Arena& arena = layout_.arena();
   const double left = std::floor(layout_.px(arena.x_min_m));
   const double top = std::floor(layout_.py(arena.y_max_m));
   cairo_rectangle(cr_, left, top, std::ceil(layout_.px(arena.x_max_m)) - left, std::ceil(layout_.py(arena.y_min_m)) - top);
@@ -360,4 +360,4 @@ void ArenaPainter::Caption(int line, const std::string& text) const {
   cairo_show_text(cr_, text.c_str());
 }
 
-}  // namespace dream::sim
+}  // namespace dream::render

@@ -12,7 +12,7 @@
 #include "dream/render/arena_overlays.h"
 #include "dream/run_log/run_log.h"
 
-namespace dream::sim {
+namespace dream::render {
 
 /// Matplotlib's tab10, so pictures look like the Robotarium's own plots.
 const std::array<double, 3>& RobotColor(int robot_id);
@@ -96,4 +96,4 @@ class ArenaPainter {
   const ArenaLayout& layout_;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::render

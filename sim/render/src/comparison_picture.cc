@@ -7,7 +7,7 @@
 #include "dream/render/run_geometry.h"
 #include "picture_surface.h"
 
-namespace dream::sim {
+namespace dream::render {
 
 void ComparisonPicture::Render(const run_log::RunLog& first, const run_log::RunLog& second,
                                const std::string& png_path, const std::vector<std::string>& caption_lines,
@@ -43,4 +43,4 @@ void ComparisonPicture::Render(const run_log::RunLog& first, const run_log::RunL
   surface.Commit(png_path);
 }
 
-}  // namespace dream::sim
+}  // namespace dream::render

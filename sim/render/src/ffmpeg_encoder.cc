@@ -17,7 +17,7 @@
 
 extern char** environ;
 
-namespace dream::sim {
+namespace dream::render {
 namespace {
 
 // cairo's RGB24 pixel is a native-endian 32-bit xRGB word.
@@ -166,4 +166,4 @@ void FfmpegEncoder::FailWithErrors(const std::string& what) {
   throw std::runtime_error(what + (errors.empty() ? std::string() : ": " + errors));
 }
 
-}  // namespace dream::sim
+}  // namespace dream::render

@@ -10,7 +10,7 @@
 #include "picture_surface.h"
 #include "plot_ticks.h"
 
-namespace dream::sim {
+namespace dream::render {
 namespace {
 
 constexpr double kStepS = robotarium::RobotariumConstants::kTimeStepSeconds;
@@ -155,4 +155,4 @@ void MetricPlot::Render(const std::vector<MetricSeries>& series, const std::stri
   surface.Commit(path);
 }
 
-}  // namespace dream::sim
+}  // namespace dream::render

@@ -8,9 +8,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include "dream/node/atomic_file.h"
+#include "dream/files/atomic_file.h"
 
-namespace dream::sim {
+namespace dream::render {
 namespace {
 
 void AppendPng(png_structp png, png_bytep data, png_size_t length) {
@@ -123,7 +123,7 @@ void PictureSurface::Commit(const std::string& path) {
   if (status != CAIRO_STATUS_SUCCESS) {
     throw std::runtime_error("cannot draw " + path + ": " + cairo_status_to_string(status));
   }
-  WriteFileAtomically(path, bytes);
+  files::WriteFileAtomically(path, bytes);
 }
 
-}  // namespace dream::sim
+}  // namespace dream::render

@@ -7,7 +7,7 @@
 
 #include "dream/render/render_format.h"
 
-namespace dream::sim {
+namespace dream::render {
 
 /// A cairo surface that becomes a PNG (pixels) or an SVG (vectors) file.
 /// Nothing touches the file until Commit(), which writes it atomically: a
@@ -34,4 +34,4 @@ class PictureSurface {
   cairo_t* cr_ = nullptr;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::render

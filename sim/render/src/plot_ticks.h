@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <string>
 
-namespace dream::sim {
+namespace dream::render {
 
 // A round tick spacing (1, 2 or 5 times a power of ten) giving about `ticks` ticks over `span`.
 inline double TickSpacing(double span, int ticks) {
@@ -24,4 +24,4 @@ inline std::string TickText(double value, double spacing) {
   return text;
 }
 
-}  // namespace dream::sim
+}  // namespace dream::render

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace dream::sim {
+namespace dream::render {
 namespace {
 
 constexpr int kColours = 10;  // RobotColor repeats after this many ids
@@ -57,4 +57,4 @@ void RangeSprites::Draw(cairo_t* cr, const ArenaOverlays& overlays, const robot_
   cairo_restore(cr);
 }
 
-}  // namespace dream::sim
+}  // namespace dream::render

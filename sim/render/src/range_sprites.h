@@ -7,7 +7,7 @@
 
 #include "arena_painter.h"
 
-namespace dream::sim {
+namespace dream::render {
 
 /// Sensor ranges for video frames, fast: a 1 m range is a ring 400 px across
 /// at 720 px, and stroking ten of those costs several milliseconds a frame,
@@ -32,4 +32,4 @@ class RangeSprites {
   std::map<std::pair<int, size_t>, cairo_surface_t*> sprites_;  // by (colour, reach)
 };
 
-}  // namespace dream::sim
+}  // namespace dream::render

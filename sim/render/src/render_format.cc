@@ -4,7 +4,7 @@
 #include <cctype>
 #include <filesystem>
 
-namespace dream::sim {
+namespace dream::render {
 
 std::optional<RenderFormat> RenderFormatOfPath(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
@@ -19,4 +19,4 @@ std::optional<RenderFormat> RenderFormatOfPath(const std::string& path) {
 
 const char* RenderFormatExtensions() { return ".png, .svg, .mp4, .gif"; }
 
-}  // namespace dream::sim
+}  // namespace dream::render

@@ -15,7 +15,7 @@
 #include "picture_surface.h"
 #include "range_sprites.h"
 
-namespace dream::sim {
+namespace dream::render {
 namespace {
 
 constexpr double kStepS = robotarium::RobotariumConstants::kTimeStepSeconds;
@@ -207,4 +207,4 @@ bool RunAnimation::Encode(const std::string& path, RenderFormat format, const st
   return true;
 }
 
-}  // namespace dream::sim
+}  // namespace dream::render

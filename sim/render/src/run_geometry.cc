@@ -8,7 +8,7 @@
 
 #include "dream/robotarium/robotarium_constants.h"
 
-namespace dream::sim {
+namespace dream::render {
 
 const run_log::RunLog& Drawable(const run_log::RunLog& log) {
   if (log.poses().empty()) throw std::runtime_error("no poses in " + log.path() + ": nothing to render");
@@ -68,4 +68,4 @@ std::vector<std::array<double, 2>> MinimumDistanceSeries(const run_log::RunLog& 
   return series;
 }
 
-}  // namespace dream::sim
+}  // namespace dream::render

@@ -7,7 +7,7 @@
 #include "dream/render/run_geometry.h"
 #include "picture_surface.h"
 
-namespace dream::sim {
+namespace dream::render {
 
 void TrajectoryPicture::Render(const run_log::RunLog& log, const ArenaOverlays& overlays, const std::string& path,
                                RenderFormat format, int width_px) {
@@ -55,4 +55,4 @@ std::string TrajectoryPicture::Caption(const run_log::RunLog& log, const ArenaOv
   return RunLabel(overlays) + stats;
 }
 
-}  // namespace dream::sim
+}  // namespace dream::render

@@ -9,7 +9,7 @@
 #include "picture_surface.h"
 #include "plot_ticks.h"
 
-namespace dream::sim {
+namespace dream::render {
 namespace {
 
 struct Bounds {
@@ -171,4 +171,4 @@ void XyPlot::Render(const std::vector<XyPanel>& panels, int columns, const std::
   surface.Commit(path);
 }
 
-}  // namespace dream::sim
+}  // namespace dream::render

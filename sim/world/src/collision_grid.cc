@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace dream::sim {
+namespace dream::world {
 namespace {
 
 // Cells a hair wider than the distance, so rounding in (x - origin) / cell
@@ -94,4 +94,4 @@ void CollisionGrid::FindPairs(const double* x_m, const double* y_m, std::vector<
   }
 }
 
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -7,7 +7,7 @@
 #include "dream/world/arena.h"
 #include "dream/world/step_events.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 // Finds all pairs of points at most a given distance apart in O(N) time.
 // Points are counting-sorted into a dense row-major grid over the arena (plus
@@ -52,4 +52,4 @@ class CollisionGrid {
   std::vector<double> sorted_y_m_;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -6,7 +6,7 @@
 
 #include "dream/world/printf_text.h"
 
-namespace dream::sim::field_check {
+namespace dream::world::field_check {
 
 // Shared wording for IsValid messages: "<field> = <value> ...; allowed: <range>".
 
@@ -38,4 +38,4 @@ const Params& Checked(const std::string& owner, const Params& params) {
 inline bool IsPositiveFinite(double value) { return std::isfinite(value) && value > 0.0; }
 inline bool IsNonNegativeFinite(double value) { return std::isfinite(value) && value >= 0.0; }
 
-}  // namespace dream::sim::field_check
+}  // namespace dream::world::field_check

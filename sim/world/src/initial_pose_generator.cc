@@ -8,7 +8,7 @@
 
 #include "field_check.h"
 
-namespace dream::sim {
+namespace dream::world {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -157,4 +157,4 @@ std::vector<Pose2> InitialPoseGenerator::Generate(int num_robots, uint64_t seed)
   return poses;
 }
 
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -4,7 +4,7 @@
 
 #include "field_check.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 using field_check::Fail;
 
@@ -21,4 +21,4 @@ bool InitialPoseParams::IsValid(std::string* error) const {
   return true;
 }
 
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -2,7 +2,7 @@
 
 #include "dream/world/printf_text.h"
 
-namespace dream::sim {
+namespace dream::world {
 namespace {
 
 std::string Seconds(double seconds) { return PrintfText("%.2f s", seconds); }
@@ -54,4 +54,4 @@ std::vector<VerdictReason> LabVerifierRules::Check(const Declaration& declared, 
   return reasons;
 }
 
-}  // namespace dream::sim
+}  // namespace dream::world

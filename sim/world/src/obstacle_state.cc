@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace dream::sim {
+namespace dream::world {
 
 bool ObstacleState::IntersectsDisc(double disc_x_m, double disc_y_m, double radius_m) const {
   const double gap_x_m = std::max(std::abs(disc_x_m - center_x_m) - width_m / 2.0, 0.0);
@@ -11,4 +11,4 @@ bool ObstacleState::IntersectsDisc(double disc_x_m, double disc_y_m, double radi
   return gap_x_m * gap_x_m + gap_y_m * gap_y_m <= radius_m * radius_m;
 }
 
-}  // namespace dream::sim
+}  // namespace dream::world

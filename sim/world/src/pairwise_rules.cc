@@ -4,7 +4,7 @@
 
 #include "collision_grid.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 PairwiseRules::PairwiseRules(const WorldParams& params, std::size_t num_robots)
     : offset_m_(params.collision_offset_m),
@@ -27,4 +27,4 @@ void PairwiseRules::FindCollidingPairs(std::vector<StepEvents::RobotPair>* pairs
             });
 }
 
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -10,7 +10,7 @@
 #include "dream/world/step_events.h"
 #include "dream/world/world_params.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 class CollisionGrid;
 
@@ -62,4 +62,4 @@ class PairwiseRules {
   std::unique_ptr<CollisionGrid> grid_;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

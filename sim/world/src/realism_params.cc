@@ -4,7 +4,7 @@
 
 #include "field_check.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 using field_check::Fail;
 using field_check::IsNonNegativeFinite;
@@ -162,4 +162,4 @@ bool operator==(const RealismParams& a, const RealismParams& b) {
   return true;
 }
 
-}  // namespace dream::sim
+}  // namespace dream::world

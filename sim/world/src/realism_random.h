@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <random>
 
-namespace dream::sim {
+namespace dream::world {
 
 // Which realism model a RealismRandom serves; the numbers seed the streams,
 // so they never change (a run's noise would).
@@ -53,4 +53,4 @@ class RealismRandom {
   bool has_spare_ = false;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

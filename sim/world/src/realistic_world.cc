@@ -13,7 +13,7 @@
 #include "steps_within.h"
 #include "world_argument_check.h"
 
-namespace dream::sim {
+namespace dream::world {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -284,4 +284,4 @@ std::optional<VerdictReason> RealisticWorld::TrackerLossReason() const {
                        "summary.json realism_stats; dream log echo RUN DREAM_MEASURED_POSES shows what the agents saw"};
 }
 
-}  // namespace dream::sim
+}  // namespace dream::world

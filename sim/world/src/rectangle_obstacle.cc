@@ -8,7 +8,7 @@
 
 #include "field_check.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 RectangleObstacle::RectangleObstacle(const RectangleObstacleSpec& spec) : spec_(spec), center_m_(spec.center_m) {
   field_check::Checked("RectangleObstacle", spec);
@@ -85,4 +85,4 @@ std::vector<RectangleObstacle> RectangleObstacle::BuildAll(const std::vector<Rec
   return obstacles;
 }
 
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -4,7 +4,7 @@
 
 #include "field_check.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 using field_check::Fail;
 using field_check::IsPositiveFinite;
@@ -43,4 +43,4 @@ bool RectangleObstacleSpec::IsValid(std::string* error) const {
   return true;
 }
 
-}  // namespace dream::sim
+}  // namespace dream::world

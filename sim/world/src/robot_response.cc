@@ -5,7 +5,7 @@
 
 #include "dream/world/unicycle_kinematics.h"
 
-namespace dream::sim {
+namespace dream::world {
 namespace {
 
 // A wheel this slow (a rim speed of 0.3 mm/s) has stopped.
@@ -69,4 +69,4 @@ UnicycleCommand RobotResponse::Drive(const UnicycleCommand& target, double durat
   return driven;
 }
 
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -4,7 +4,7 @@
 
 #include "realism_random.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 std::vector<RobotTraits> RobotTraits::Draw(const RealismParams& realism, uint64_t seed, int num_robots) {
   std::vector<RobotTraits> traits(static_cast<size_t>(std::max(num_robots, 0)));
@@ -25,4 +25,4 @@ std::vector<RobotTraits> RobotTraits::Draw(const RealismParams& realism, uint64_
   return traits;
 }
 
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace dream::sim {
+namespace dream::world {
 namespace {
 
 const char* const kFindOutViolations = "summary.json violations; dream render RUN shows where";
@@ -72,4 +72,4 @@ std::string RunJudgement::Text() const {
   return text + list(0);
 }
 
-}  // namespace dream::sim
+}  // namespace dream::world

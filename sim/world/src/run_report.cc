@@ -6,7 +6,7 @@
 
 #include "dream/world/printf_text.h"
 
-namespace dream::sim {
+namespace dream::world {
 RunReport RunReport::FromViolations(int64_t iterations, const ViolationCounts& violations,
                                     double time_step_s) {
   RunReport report;
@@ -69,4 +69,4 @@ std::string RunReport::Text() const {
   return text;
 }
 
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -1,6 +1,6 @@
 #include "dream/world/run_verdict.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 const char* RunVerdictName(RunVerdict verdict) {
   switch (verdict) {
@@ -16,4 +16,4 @@ const char* RunVerdictName(RunVerdict verdict) {
   return "unknown";
 }
 
-}  // namespace dream::sim
+}  // namespace dream::world

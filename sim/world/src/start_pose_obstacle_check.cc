@@ -6,7 +6,7 @@
 
 #include "field_check.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 StartPoseObstacleCheck::StartPoseObstacleCheck(const WorldParams& world,
                                                const std::vector<RectangleObstacleSpec>& obstacle_specs)
@@ -36,4 +36,4 @@ int StartPoseObstacleCheck::FirstTouchedObstacle(const Pose2& pose) const {
   return -1;
 }
 
-}  // namespace dream::sim
+}  // namespace dream::world

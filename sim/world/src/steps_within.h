@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <limits>
 
-namespace dream::sim {
+namespace dream::world {
 
 // Largest n with n * dt <= seconds: how many steps a rule stated as "after
 // more than `seconds`" lets pass (the command timeout, the firmware's brake,
@@ -19,4 +19,4 @@ inline int64_t StepsWithin(double time_step_s, double seconds) {
   return n;
 }
 
-}  // namespace dream::sim
+}  // namespace dream::world

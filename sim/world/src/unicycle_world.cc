@@ -14,7 +14,7 @@
 #include "steps_within.h"
 #include "world_argument_check.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 UnicycleWorld::UnicycleWorld(const WorldParams& params, std::vector<Pose2> initial_poses,
                              const std::vector<RectangleObstacleSpec>& obstacle_specs)
@@ -144,4 +144,4 @@ void UnicycleWorld::StepRobots(const double* motion_time_s) {
   ++step_;
 }
 
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -1,9 +1,9 @@
 #include "dream/world/verdict_reason.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 std::string VerdictReason::Text() const {
   return rule + ": " + problem + (find_out.empty() ? "" : " (more: " + find_out + ")");
 }
 
-}  // namespace dream::sim
+}  // namespace dream::world

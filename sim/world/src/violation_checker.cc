@@ -9,7 +9,7 @@
 #include "field_check.h"
 #include "pairwise_rules.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 ViolationChecker::ViolationChecker(const WorldParams& params, int num_robots)
     : params_(field_check::Checked("ViolationChecker", params)),
@@ -53,4 +53,4 @@ void ViolationChecker::Check(int64_t step, const std::vector<Pose2>& poses,
   counts_.Add(events_);
 }
 
-}  // namespace dream::sim
+}  // namespace dream::world

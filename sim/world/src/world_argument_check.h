@@ -6,7 +6,7 @@
 
 #include "dream/world/unicycle_command.h"
 
-namespace dream::sim::world_argument_check {
+namespace dream::world::world_argument_check {
 
 // The checks every World makes on a caller's robot id and command, with one
 // wording; `world` and `method` name the caller ("UnicycleWorld",
@@ -30,4 +30,4 @@ inline void CheckCommandIsFinite(const char* world, int robot_id, const Unicycle
   }
 }
 
-}  // namespace dream::sim::world_argument_check
+}  // namespace dream::world::world_argument_check

@@ -4,7 +4,7 @@
 
 #include "field_check.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 using field_check::Fail;
 using field_check::IsNonNegativeFinite;
@@ -36,4 +36,4 @@ bool WorldParams::IsValid(std::string* error) const {
   return true;
 }
 
-}  // namespace dream::sim
+}  // namespace dream::world

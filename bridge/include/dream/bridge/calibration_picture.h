@@ -12,6 +12,6 @@ namespace dream::bridge {
 /// position noise at rest and moving with the fitted Gaussians, and the
 /// lengths of runs of repeated poses with the fitted burst model.
 /// @throws std::runtime_error naming the path when it cannot be written.
-void RenderCalibrationPicture(const CalibrationReport& report, const std::string& path, sim::RenderFormat format);
+void RenderCalibrationPicture(const CalibrationReport& report, const std::string& path, render::RenderFormat format);
 
 }  // namespace dream::bridge

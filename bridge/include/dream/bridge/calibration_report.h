@@ -34,7 +34,7 @@ struct StepResponseCurve {
 /// The fit of a lab model to real runs: the realism keys with their
 /// intervals, and the evidence drawn in the calibration picture.
 struct CalibrationReport {
-  sim::RealismParams params;   ///< the base preset with every determined key fitted
+  world::RealismParams params;   ///< the base preset with every determined key fitted
   std::vector<FittedKey> keys;  ///< one per key of RealismParams::Fields(), in that order
   std::vector<std::string> sources;
   int robots = 0;

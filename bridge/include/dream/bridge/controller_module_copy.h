@@ -1,7 +1,7 @@
 #pragma once
 
-#include "dream/config/run_config.h"
-#include "dream/node/output_folder.h"
+#include "dream/run_config/run_config.h"
+#include "dream/files/output_folder.h"
 
 namespace dream::bridge {
 
@@ -12,10 +12,10 @@ namespace dream::bridge {
 /// do the same, so `dream lab-replay` of an imported run runs the same
 /// controller. Other kinds, and absolute module paths, need nothing.
 /// @throws config::ConfigError when the module cannot be read.
-void KeepControllerModule(const config::RunConfig& config, const sim::OutputFolder& out);
+void KeepControllerModule(const run_config::RunConfig& config, const files::OutputFolder& out);
 
 /// The same for a realism file (`world.realism: {file: PATH}`) named by a
 /// relative path, so the run folder's config.yaml finds its lab model.
-void KeepRealismFile(const config::RunConfig& config, const sim::OutputFolder& out);
+void KeepRealismFile(const run_config::RunConfig& config, const files::OutputFolder& out);
 
 }  // namespace dream::bridge

@@ -38,7 +38,7 @@ struct ExportOptions {
   bool barriers = false;
   /// Settle phase before step 0: at most this many steps (0: none). Every
   /// run's verdict assumes this default (the duration its export declares).
-  int settle_max_steps = static_cast<int>(sim::LabVerifierRules::kExportSettleSteps);
+  int settle_max_steps = static_cast<int>(world::LabVerifierRules::kExportSettleSteps);
   double settle_position_tolerance_m = 0.005;
   double settle_heading_tolerance_rad = 0.02;
   double settle_gain_v_per_s = 1.5;  ///< forward speed per metre of distance

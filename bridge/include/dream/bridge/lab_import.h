@@ -8,7 +8,7 @@
 #include "dream/bridge/npy_file.h"
 #include "dream/bridge/run_track.h"
 #include "dream/bridge/submission_params.h"
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 #include "dream/world/lab_verifier_rules.h"
 #include "dream/world/run_verdict.h"
 #include "dream/world/verdict_reason.h"
@@ -20,7 +20,7 @@ namespace dream::bridge {
 struct ExportedSubmission {
   std::string dir;
   SubmissionParams params;      ///< upload/dream_params.npy
-  config::RunConfig config;     ///< config.yaml (a copy of the run's)
+  run_config::RunConfig config;     ///< config.yaml (a copy of the run's)
   std::string config_text;
   std::string source_run;       ///< the simulated run it came from (export.json), may be empty
   /// Whether export.json held the upload files' digests and every file
@@ -43,7 +43,7 @@ struct ExportedSubmission {
   /// What UPLOAD.txt told the user to declare with this submission, from
   /// dream_params.npy and the config: its robot count, and (experiment steps
   /// + settle steps) x the time step.
-  sim::LabVerifierRules::Declaration UploadDeclaration() const;
+  world::LabVerifierRules::Declaration UploadDeclaration() const;
 };
 
 /// A lab run as the submission script saved it, checked and turned into a
@@ -75,23 +75,23 @@ NpyArray ReadResultFile(const std::string& path, int64_t max_values = int64_t{1}
 /// @throws std::runtime_error "<name>: <problem>" naming row, column and robot.
 LabResult ParseLabResult(const NpyArray& rows, const std::string& name, const ExportedSubmission& exported);
 
-/// The lab verifier's rules (sim::LabVerifierRules) on a lab run: its robot
+/// The lab verifier's rules (world::LabVerifierRules) on a lab run: its robot
 /// count and step() calls (settle and experiment) against `declared`, robots
 /// too close or outside the arena counted on its poses. One kRejected reason
 /// per broken rule, naming the measured and the declared value; empty when
 /// the verifier would pass it.
-std::vector<sim::VerdictReason> LabVerifierReasons(const LabResult& lab, const sim::WorldParams& world,
-                                                   const sim::LabVerifierRules::Declaration& declared);
+std::vector<world::VerdictReason> LabVerifierReasons(const LabResult& lab, const world::WorldParams& world,
+                                                   const world::LabVerifierRules::Declaration& declared);
 
 /// What ImportLabRun wrote.
 struct ImportedRun {
   LabResult lab;
-  sim::ViolationCounts violations{};
-  sim::LabVerifierRules::Declaration declared;  ///< what the run was judged against
+  world::ViolationCounts violations{};
+  world::LabVerifierRules::Declaration declared;  ///< what the run was judged against
   /// summary.json's verdict and verdict_reasons: the Robotarium's checks on
   /// the lab's poses, the verifier's rules (LabVerifierReasons), a cut-short run.
-  sim::RunVerdict verdict = sim::RunVerdict::kClean;
-  std::vector<sim::VerdictReason> verdict_reasons;
+  world::RunVerdict verdict = world::RunVerdict::kClean;
+  std::vector<world::VerdictReason> verdict_reasons;
   std::string log_path;
   std::string summary_path;
   std::string picture_path;
@@ -109,12 +109,12 @@ struct ImportedRun {
 /// Nothing is written unless the result file passes every check; each file
 /// is written atomically. @throws std::runtime_error naming the file.
 ImportedRun ImportLabRun(const std::string& result_path, const std::string& export_dir, const std::string& out_dir,
-                         const std::optional<sim::LabVerifierRules::Declaration>& declared = {});
+                         const std::optional<world::LabVerifierRules::Declaration>& declared = {});
 
 /// Writes `track` as a run log (see ImportLabRun) to `log_path` atomically
 /// and returns the violations counted on it. `end_state` and `detail` go in
 /// the final DREAM_STATUS.
-sim::ViolationCounts WriteLabRunLog(const RunTrack& track, const sim::WorldParams& world, int8_t end_state,
+world::ViolationCounts WriteLabRunLog(const RunTrack& track, const world::WorldParams& world, int8_t end_state,
                                     const std::string& detail, const std::string& log_path);
 
 }  // namespace dream::bridge

@@ -12,7 +12,7 @@ namespace dream::bridge {
 /// A lab model to hold against real runs (`dream calibrate --check`).
 struct NamedModel {
   std::string name;  ///< a preset's name or a realism file's path
-  sim::RealismParams params;
+  world::RealismParams params;
 };
 
 /// How one model predicts real runs it may not have been fitted on.

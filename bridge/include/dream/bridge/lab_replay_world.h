@@ -9,9 +9,9 @@
 #include "dream/world/world.h"
 #include "dream/world/world_params.h"
 
-namespace dream::sim {
+namespace dream::node {
 class RunRecorder;
-}
+}  // namespace dream::node
 
 namespace dream::bridge {
 
@@ -27,24 +27,24 @@ inline constexpr const char* kLabCommandChannelPrefix = "DREAM_LAB_CMD_";
 /// ran against the simulator run against the real poses, unchanged, and
 /// their commands can be compared with what the lab executed. Violations are
 /// counted on the lab's poses with the Robotarium's rules.
-class LabReplayWorld final : public sim::World {
+class LabReplayWorld final : public world::World {
  public:
   /// @param track the lab run; needs at least one step.
   /// @param lab_command_log if not null, the lab's command of every robot is
   ///        written to it as DREAM_LAB_CMD_<id> at every step (must outlive
   ///        the world).
   /// @throws std::invalid_argument when the track is empty or inconsistent.
-  LabReplayWorld(RunTrack track, const sim::WorldParams& params, sim::RunRecorder* lab_command_log = nullptr);
+  LabReplayWorld(RunTrack track, const world::WorldParams& params, node::RunRecorder* lab_command_log = nullptr);
 
   int num_robots() const override { return track_.num_robots; }
   int64_t step() const override { return step_; }
   int64_t utime() const override { return track_.utime[static_cast<size_t>(step_)]; }
   double time_step_s() const override { return params_.time_step_s; }
-  const std::vector<sim::Pose2>& poses() const override { return poses_; }
-  const std::vector<sim::UnicycleCommand>& velocities() const override { return velocities_; }
-  void GetObstacleStates(std::vector<sim::ObstacleState>* states) const override;
-  const sim::ViolationCounts& violations() const override { return checker_.counts(); }
-  void SetCommand(int robot_id, const sim::UnicycleCommand& command) override;
+  const std::vector<world::Pose2>& poses() const override { return poses_; }
+  const std::vector<world::UnicycleCommand>& velocities() const override { return velocities_; }
+  void GetObstacleStates(std::vector<world::ObstacleState>* states) const override;
+  const world::ViolationCounts& violations() const override { return checker_.counts(); }
+  void SetCommand(int robot_id, const world::UnicycleCommand& command) override;
   void StopRobot(int robot_id) override;
   /// Validates the lab's poses of this step with the lab's commands, records
   /// the agents' held commands for it, moves on to the next recorded step.
@@ -56,23 +56,23 @@ class LabReplayWorld final : public sim::World {
   /// Whether an agent had a command for `robot` at `step` (< step()).
   bool has_agent_command(int64_t step, int robot) const;
   /// The agent's command for `robot` at `step` (zero when it had none).
-  const sim::UnicycleCommand& agent_command(int64_t step, int robot) const;
+  const world::UnicycleCommand& agent_command(int64_t step, int robot) const;
 
  private:
   void Load();
   void CheckRobotId(int robot_id, const char* caller) const;
 
   RunTrack track_;
-  sim::WorldParams params_;
-  sim::RunRecorder* lab_command_log_;
-  sim::ViolationChecker checker_;
+  world::WorldParams params_;
+  node::RunRecorder* lab_command_log_;
+  world::ViolationChecker checker_;
   int64_t step_ = 0;
-  std::vector<sim::Pose2> poses_;
-  std::vector<sim::UnicycleCommand> velocities_;
-  std::vector<sim::UnicycleCommand> lab_commands_;  // this step's, for the actuator check
-  std::vector<sim::UnicycleCommand> held_;          // agents' current commands
+  std::vector<world::Pose2> poses_;
+  std::vector<world::UnicycleCommand> velocities_;
+  std::vector<world::UnicycleCommand> lab_commands_;  // this step's, for the actuator check
+  std::vector<world::UnicycleCommand> held_;          // agents' current commands
   std::vector<uint8_t> has_held_;
-  std::vector<sim::UnicycleCommand> agent_commands_;  // step-major, steps 0..last_step()-1
+  std::vector<world::UnicycleCommand> agent_commands_;  // step-major, steps 0..last_step()-1
   std::vector<uint8_t> has_agent_command_;
 };
 

@@ -2,23 +2,23 @@
 
 #include <nlohmann/json.hpp>
 
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 #include "dream/run_log/run_log.h"
 
-namespace dream::agents {
+namespace dream::agent_host {
 class ControllerFactory;
-}  // namespace dream::agents
+}  // namespace dream::agent_host
 
 namespace dream::bridge {
 
-/// The experiment's metrics computed from a run's log (agents::MetricsFromLog),
+/// The experiment's metrics computed from a run's log (agent_host::MetricsFromLog),
 /// as `dream run` puts them under "metrics" in summary.json ({"kind": ...,
 /// "goal": ..., values, steps, series}); {"error": ...} when they cannot be
 /// computed (also when the config's factory cannot be built).
-nlohmann::ordered_json MetricsJson(const config::RunConfig& config, const run_log::RunLog& log);
+nlohmann::ordered_json MetricsJson(const run_config::RunConfig& config, const run_log::RunLog& log);
 
 /// The same with the run's factory, when the caller has one already (so its
 /// plugins are not loaded and its section not read again).
-nlohmann::ordered_json MetricsJson(const agents::ControllerFactory& factory, const run_log::RunLog& log);
+nlohmann::ordered_json MetricsJson(const agent_host::ControllerFactory& factory, const run_log::RunLog& log);
 
 }  // namespace dream::bridge

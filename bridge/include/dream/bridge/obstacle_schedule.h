@@ -17,12 +17,12 @@ inline constexpr int64_t kMaxObstacleScheduleBytes = int64_t{256} << 20;
 int64_t ObstacleScheduleBytes(int64_t obstacles, int64_t steps);
 
 /// Every virtual obstacle at every step 0..steps, moved exactly as the
-/// simulator's world moves them (sim::RectangleObstacle, one Advance per
+/// simulator's world moves them (world::RectangleObstacle, one Advance per
 /// step) and as DREAM_OBSTACLES reports them: a (steps + 1) x M x
 /// ObstacleColumns array (id, centre, size, velocity of the current leg) for
 /// a submission whose controllers sense the obstacles on the lab.
 /// @throws std::invalid_argument for an invalid spec (as the world does), or a
 /// schedule over kMaxObstacleScheduleBytes.
-NpyArray ObstacleSchedule(const std::vector<sim::RectangleObstacleSpec>& specs, double time_step_s, int64_t steps);
+NpyArray ObstacleSchedule(const std::vector<world::RectangleObstacleSpec>& specs, double time_step_s, int64_t steps);
 
 }  // namespace dream::bridge

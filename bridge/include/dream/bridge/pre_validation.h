@@ -37,7 +37,7 @@ struct LabLimits {
 
 /// One reason the lab would refuse (or fail) the run.
 struct ExportProblem {
-  std::string rule;       ///< strategy, obstacle_schedule, robots, duration, finished, lost_robot, start_inside_arena, start_spacing, boundary, collision, obstacle, verifier_* (sim::LabVerifierRules), or a summary.json verdict reason
+  std::string rule;       ///< strategy, obstacle_schedule, robots, duration, finished, lost_robot, start_inside_arena, start_spacing, boundary, collision, obstacle, verifier_* (world::LabVerifierRules), or a summary.json verdict reason
   int robot = -1;         ///< the robot concerned, -1 for none
   int other = -1;         ///< the second robot of a pair, or the obstacle id
   int64_t step = -1;      ///< the first step concerned, -1 for none
@@ -55,7 +55,7 @@ struct ExportProblem {
 /// and far enough apart for the start-up routine; and no boundary, collision
 /// or virtual-obstacle error at any step (re-checked on the recorded poses,
 /// so each problem names its first robot and step); and the lab verifier's
-/// rules (sim::LabVerifierRules: the declared robot count, robots too close
+/// rules (world::LabVerifierRules: the declared robot count, robots too close
 /// or outside more than 100 times, the script's iterations within 1.5 x the
 /// declared duration). Empty when the run can be exported.
 /// `experiment_steps` is how many steps the script may run: -1 for the
@@ -63,10 +63,10 @@ struct ExportProblem {
 /// run's step limit. `declared`: what the submission declares; by default
 /// what UPLOAD.txt gives, the run's robot count and (experiment steps +
 /// settle steps) x time step.
-std::vector<ExportProblem> PreValidate(const RunTrack& track, const RunEnd& end, const sim::WorldParams& world,
+std::vector<ExportProblem> PreValidate(const RunTrack& track, const RunEnd& end, const world::WorldParams& world,
                                        int64_t settle_max_steps, const LabLimits& limits = {},
                                        int64_t experiment_steps = -1,
-                                       const std::optional<sim::LabVerifierRules::Declaration>& declared = {});
+                                       const std::optional<world::LabVerifierRules::Declaration>& declared = {});
 
 /// The lab verifier's counts on a recorded run, re-checked on its poses at
 /// steps 0 .. last - 1 (those the simulator validated): robots too close
@@ -74,10 +74,10 @@ std::vector<ExportProblem> PreValidate(const RunTrack& track, const RunEnd& end,
 /// (robots x steps: the verifier counts each robot, the Robotarium
 /// simulator's boundary_errors each step). `iterations` and `num_robots`
 /// are the track's steps and robots.
-sim::LabVerifierRules::Counts VerifierCounts(const RunTrack& track, const sim::WorldParams& world);
+world::LabVerifierRules::Counts VerifierCounts(const RunTrack& track, const world::WorldParams& world);
 /// The same on a run's log (RunTrackOf(log), without its status).
 /// @throws std::runtime_error with the log's flaw when it is not a whole run.
-sim::LabVerifierRules::Counts VerifierCounts(const run_log::RunLog& log, const sim::WorldParams& world);
+world::LabVerifierRules::Counts VerifierCounts(const run_log::RunLog& log, const world::WorldParams& world);
 
 /// Risks that do not make the lab refuse the run by rule but may make it fail:
 /// start poses so crowded that the lab's start-up routine may deadlock before

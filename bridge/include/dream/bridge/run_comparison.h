@@ -17,7 +17,7 @@ struct ComparedRun {
   std::string folder;
   int64_t steps = 0;                    ///< last step with poses
   std::string end;                      ///< the final DREAM_STATUS detail
-  sim::ViolationCounts violations{};    ///< from the final DREAM_STATUS
+  world::ViolationCounts violations{};    ///< from the final DREAM_STATUS
   std::string verdict;                  ///< clean / warning / rejected
   double min_distance_m = std::numeric_limits<double>::infinity();  ///< closest two robot centres
   int64_t min_distance_step = -1;

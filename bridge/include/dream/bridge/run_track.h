@@ -22,20 +22,20 @@ struct RunTrack {
   /// Per step: the time it was published at, microseconds since step 0.
   std::vector<int64_t> utime;
   /// (last_step() + 1) x num_robots, step-major.
-  std::vector<sim::Pose2> poses;
+  std::vector<world::Pose2> poses;
   /// Same size: commands[k] is what each robot drove with from step k to
   /// k + 1 (for a simulated run the saturated velocity, for a lab run the
   /// command the script sent); the last step's row is zero.
-  std::vector<sim::UnicycleCommand> commands;
+  std::vector<world::UnicycleCommand> commands;
   /// Per step: the virtual obstacles.
-  std::vector<std::vector<sim::ObstacleState>> obstacles;
+  std::vector<std::vector<world::ObstacleState>> obstacles;
 
   /// The last step with poses (steps taken); -1 when empty.
   int64_t last_step() const { return static_cast<int64_t>(utime.size()) - 1; }
-  const sim::Pose2& pose(int64_t step, int robot) const {
+  const world::Pose2& pose(int64_t step, int robot) const {
     return poses[static_cast<size_t>(step) * static_cast<size_t>(num_robots) + static_cast<size_t>(robot)];
   }
-  const sim::UnicycleCommand& command(int64_t step, int robot) const {
+  const world::UnicycleCommand& command(int64_t step, int robot) const {
     return commands[static_cast<size_t>(step) * static_cast<size_t>(num_robots) + static_cast<size_t>(robot)];
   }
 };
@@ -46,7 +46,7 @@ struct RunEnd {
   bool seen = false;      ///< the log has a DREAM_STATUS at all
   int8_t state = -1;      ///< run_status_t state
   std::string detail;
-  sim::ViolationCounts violations{};
+  world::ViolationCounts violations{};
   int64_t step = -1;
   /// Robots lost at the end: their agent fell silent or their controller failed.
   std::vector<int> lost_robot_ids;

@@ -8,7 +8,7 @@
 
 #include "dream/lcm/lcm_bus.h"
 
-namespace dream::agents {
+namespace dream::python_host {
 
 /// Hosts robots whose controller is a Python class (`kind: python`) on a bus
 /// of this process, in an embedded Python interpreter: the Python runtime's
@@ -19,7 +19,7 @@ namespace dream::agents {
 /// safe: use it from the thread that handles the bus.
 ///
 /// The implementation is a module the tools load only when a run's
-/// controller is Python (PythonHostLibrary in cli/), so C++ agents never map
+/// controller is Python (PythonHostLibrary in app/cli/), so C++ agents never map
 /// libpython: hence an interface and two C entry points.
 class PythonAgentHost {
  public:
@@ -80,4 +80,4 @@ using PythonHostCreateFunction = std::unique_ptr<PythonAgentHost> (*)(
     const PythonAgentHost::Paths& paths);
 inline constexpr const char* kPythonHostCreateSymbol = "dream_python_host_create";
 
-}  // namespace dream::agents
+}  // namespace dream::python_host

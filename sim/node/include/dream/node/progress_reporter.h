@@ -5,7 +5,7 @@
 #include <ostream>
 #include <string>
 
-namespace dream::sim {
+namespace dream::node {
 
 /// Shows how far a long loop (the steps of a run) has come, on a stream the
 /// caller chooses, in one of two styles:
@@ -96,4 +96,4 @@ class ProgressReporter {
   int drawn_width_ = 0;  // characters of the bar on screen; 0: none
 };
 
-}  // namespace dream::sim
+}  // namespace dream::node

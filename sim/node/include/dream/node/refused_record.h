@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-namespace dream::sim {
+namespace dream::node {
 
 class RunRecorder;
 
@@ -64,4 +64,4 @@ class RefusedRecord {
   std::string failure_;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::node

@@ -3,18 +3,18 @@
 #include <cstdint>
 #include <vector>
 
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 #include "dream/world/run_judgement.h"
 #include "dream/node/run_outcome.h"
 #include "dream/world/world.h"
 
-namespace dream::sim {
+namespace dream::node {
 
 /// What went wrong on the bus, as verdict reasons (all kNotReady):
 /// did_not_finish, controller_failed, lost_robots (silent agents, not those
 /// of controller_failed), command_conflicts, bad_messages, other_worlds,
 /// handler_failures, dropped_messages. Empty for a healthy run.
-std::vector<VerdictReason> OutcomeReasons(const RunOutcome& outcome);
+std::vector<world::VerdictReason> OutcomeReasons(const RunOutcome& outcome);
 
 /// The run's judgement: debug()'s verdict on the world's counts, the lab
 /// verifier's rules (LabVerifierRules: declared = the config's robot count
@@ -26,7 +26,7 @@ std::vector<VerdictReason> OutcomeReasons(const RunOutcome& outcome);
 /// the world's boundary_errors (steps with any robot outside) is used, a
 /// lower bound of it. The experiment's goal is judged by the caller (it
 /// needs the metrics).
-RunJudgement JudgeRun(const config::RunConfig& config, const RunOutcome& outcome, const World& world,
+world::RunJudgement JudgeRun(const run_config::RunConfig& config, const RunOutcome& outcome, const world::World& world,
                       int64_t robots_outside_boundaries = -1);
 
-}  // namespace dream::sim
+}  // namespace dream::node

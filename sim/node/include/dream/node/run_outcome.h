@@ -7,7 +7,7 @@
 
 #include "dream/node/refused_record.h"
 
-namespace dream::sim {
+namespace dream::node {
 
 /// How a run ended and what happened on the way; what the summary reports.
 struct RunOutcome {
@@ -57,4 +57,4 @@ struct RunOutcome {
 
 const char* EndName(RunOutcome::End end);
 
-}  // namespace dream::sim
+}  // namespace dream::node

@@ -10,7 +10,7 @@ namespace lcm {
 class LogFile;
 }
 
-namespace dream::sim {
+namespace dream::node {
 
 /// Writes a run as a standard LCM event log (the format lcm-logger writes and
 /// lcm-logplayer replays), with timestamps in simulated time.
@@ -105,4 +105,4 @@ class RunRecorder {
   bool part_replaced_ = false;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::node

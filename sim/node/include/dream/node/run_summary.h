@@ -3,12 +3,12 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "dream/config/run_config.h"
+#include "dream/run_config/run_config.h"
 #include "dream/world/run_judgement.h"
 #include "dream/node/run_outcome.h"
 #include "dream/world/world.h"
 
-namespace dream::sim {
+namespace dream::node {
 
 /// The machine-readable summary of a run, as pretty-printed JSON: how it
 /// ended, steps, wall time, the Robotarium's violation counts, the verdict
@@ -16,14 +16,14 @@ namespace dream::sim {
 /// verdict and text, rejected commands, lost agents, bad messages per
 /// channel, handler exceptions, and final poses.
 /// See docs/run-outputs.md for every field.
-nlohmann::ordered_json RunSummary(const config::RunConfig& config, const RunOutcome& outcome, const World& world,
-                                  const std::string& log_file_name, const RunJudgement& judgement);
+nlohmann::ordered_json RunSummary(const run_config::RunConfig& config, const RunOutcome& outcome, const world::World& world,
+                                  const std::string& log_file_name, const world::RunJudgement& judgement);
 /// Replaces a RunSummary's verdict fields (verdict, verdict_reasons,
 /// robotarium_verdict, robotarium_report) in place, for a caller that judges
 /// the run again once the summary exists (the experiment's goal is judged on it).
-void SetSummaryVerdict(nlohmann::ordered_json* summary, const RunJudgement& judgement);
+void SetSummaryVerdict(nlohmann::ordered_json* summary, const world::RunJudgement& judgement);
 /// RunSummary as pretty-printed JSON text.
-std::string RunSummaryJson(const config::RunConfig& config, const RunOutcome& outcome, const World& world,
-                           const std::string& log_file_name, const RunJudgement& judgement);
+std::string RunSummaryJson(const run_config::RunConfig& config, const RunOutcome& outcome, const world::World& world,
+                           const std::string& log_file_name, const world::RunJudgement& judgement);
 
-}  // namespace dream::sim
+}  // namespace dream::node

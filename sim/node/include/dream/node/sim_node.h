@@ -22,7 +22,7 @@ class robot_fault_t;
 class run_status_t;
 }
 
-namespace dream::sim {
+namespace dream::node {
 
 class ProgressReporter;
 class RefusedRecord;
@@ -63,7 +63,7 @@ class SimNode {
  public:
   /// @param recorder may be null (no log). Must outlive the node.
   /// @throws std::invalid_argument when options are invalid.
-  SimNode(lcm::LcmInterface& lcm, World& world, RunRecorder* recorder, SimNodeOptions options);
+  SimNode(lcm::LcmInterface& lcm, world::World& world, RunRecorder* recorder, config::SimNodeOptions options);
 
   /// Runs to the end; returns how it ended. Handles every subscription on
   /// `lcm`, so in one process it also drives the agents sharing the bus.
@@ -150,13 +150,13 @@ class SimNode {
   int64_t SimUtime() const;
 
   lcm::LcmInterface& lcm_;
-  World& world_;
-  std::vector<ObstacleState> obstacle_states_;  // scratch for PublishStep
+  world::World& world_;
+  std::vector<world::ObstacleState> obstacle_states_;  // scratch for PublishStep
   applied_commands_t applied_;                  // scratch for RecordApplied
   std::vector<uint8_t> encoded_;               // scratch: the message being published or recorded
   RunRecorder* recorder_;
   int64_t recorder_failed_at_step_ = -1;
-  SimNodeOptions options_;
+  config::SimNodeOptions options_;
   lcm::BadMessageLog bad_messages_;
   std::vector<RobotSlot> robots_;
   int8_t state_;
@@ -173,4 +173,4 @@ class SimNode {
   RefusedRecord* refused_ = nullptr;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::node

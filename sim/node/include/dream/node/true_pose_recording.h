@@ -5,7 +5,7 @@
 #include "dream/world/realistic_world.h"
 #include "dream/node/run_recorder.h"
 
-namespace dream::sim {
+namespace dream::node {
 
 /// How a run with world.realism keeps the truth in its log: the agents are
 /// sent measured poses on DREAM_POSES, but the log records, for each recorded
@@ -19,7 +19,7 @@ class TruePoseRecording {
   static constexpr const char* kMeasuredPosesChannel = "DREAM_MEASURED_POSES";
 
   /// Rewrites `recorder`'s DREAM_POSES until destroyed. Both must outlive it.
-  TruePoseRecording(RunRecorder& recorder, const RealisticWorld& world);
+  TruePoseRecording(RunRecorder& recorder, const world::RealisticWorld& world);
   ~TruePoseRecording();
   TruePoseRecording(const TruePoseRecording&) = delete;
   TruePoseRecording& operator=(const TruePoseRecording&) = delete;
@@ -28,8 +28,8 @@ class TruePoseRecording {
   void Record(int64_t utime, const void* data, int size);
 
   RunRecorder& recorder_;
-  const RealisticWorld& world_;
+  const world::RealisticWorld& world_;
   std::vector<uint8_t> buffer_;  // the true message, reused
 };
 
-}  // namespace dream::sim
+}  // namespace dream::node

@@ -7,7 +7,7 @@
 #include "dream/world/obstacle_state.h"
 #include "dream/world/world.h"
 
-namespace dream::sim {
+namespace dream::node {
 
 /// The world at its current step as the messages agents are sent
 /// (DREAM_OBSTACLES, DREAM_POSES): step, counts and values. The caller sets
@@ -16,10 +16,10 @@ namespace dream::sim {
 class WorldMessages {
  public:
   /// Every obstacle of the step; `scratch` keeps its buffer across steps.
-  static void Fill(const World& world, std::vector<ObstacleState>* scratch, obstacles_t* obstacles);
+  static void Fill(const world::World& world, std::vector<world::ObstacleState>* scratch, obstacles_t* obstacles);
   /// Every robot's pose, and the velocity it drove with during the last
   /// step (zero before the first): what a tracker on the lab would measure.
-  static void Fill(const World& world, robot_poses_t* poses);
+  static void Fill(const world::World& world, robot_poses_t* poses);
 };
 
-}  // namespace dream::sim
+}  // namespace dream::node

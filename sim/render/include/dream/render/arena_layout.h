@@ -2,7 +2,7 @@
 
 #include "dream/world/arena.h"
 
-namespace dream::sim {
+namespace dream::render {
 
 /// Where the arena lands in a picture `width_px` wide: metres to pixels
 /// (x right, y up in the world; y down in the picture), a margin round the
@@ -37,10 +37,10 @@ class ArenaLayout {
   double legend_center_px() const;
   /// Baseline of caption line `line` (0 = first), pixels from the top.
   double caption_baseline_px(int line) const;
-  const Arena& arena() const { return arena_; }
+  const world::Arena& arena() const { return arena_; }
 
  private:
-  Arena arena_{};
+  world::Arena arena_{};
   int width_px_;
   double ui_scale_;
   double margin_px_;
@@ -48,4 +48,4 @@ class ArenaLayout {
   int height_px_;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::render

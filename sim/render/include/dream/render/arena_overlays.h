@@ -8,7 +8,7 @@
 
 #include "dream/robot_poses_t.hpp"
 
-namespace dream::sim {
+namespace dream::render {
 
 /// How far a robot's sensor sees: `range_m` within a field of view of
 /// `field_of_view_rad` centred on `direction_rad` from its heading.
@@ -49,4 +49,4 @@ struct ArenaOverlays {
 /// is explained unless `short_verdict`. Empty when neither is known.
 std::string RunLabel(const ArenaOverlays& overlays, bool short_verdict = false);
 
-}  // namespace dream::sim
+}  // namespace dream::render

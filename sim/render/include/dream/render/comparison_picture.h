@@ -5,7 +5,7 @@
 
 #include "dream/run_log/run_log.h"
 
-namespace dream::sim {
+namespace dream::render {
 
 /// Draws two runs of one experiment over each other as a PNG, to compare a
 /// simulated run with its lab run: each robot in its own colour, the first
@@ -21,4 +21,4 @@ class ComparisonPicture {
                      const std::vector<std::string>& caption_lines, int width_px = 1280);
 };
 
-}  // namespace dream::sim
+}  // namespace dream::render

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace dream::sim {
+namespace dream::render {
 
 /// Encodes video frames with the `ffmpeg` program (Debian package `ffmpeg`):
 /// starts it with raw frames on a pipe as its input, in cairo's RGB24 layout
@@ -55,4 +55,4 @@ class FfmpegEncoder {
   bool sigpipe_changed_ = false;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::render

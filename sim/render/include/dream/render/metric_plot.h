@@ -7,7 +7,7 @@
 
 #include "dream/render/render_format.h"
 
-namespace dream::sim {
+namespace dream::render {
 
 /// One quantity of a run over time, e.g. summary.json's metrics.coverage_cost.
 struct MetricSeries {
@@ -28,4 +28,4 @@ class MetricPlot {
                      RenderFormat format, int width_px = 1000);
 };
 
-}  // namespace dream::sim
+}  // namespace dream::render

@@ -3,7 +3,7 @@
 #include <optional>
 #include <string>
 
-namespace dream::sim {
+namespace dream::render {
 
 /// The files `dream render` writes, picked by the output's extension.
 enum class RenderFormat { kPng, kSvg, kMp4, kGif };
@@ -15,4 +15,4 @@ const char* RenderFormatExtensions();
 /// True for PNG and SVG (pictures), false for MP4 and GIF (videos).
 inline bool IsPictureFormat(RenderFormat format) { return format == RenderFormat::kPng || format == RenderFormat::kSvg; }
 
-}  // namespace dream::sim
+}  // namespace dream::render

@@ -10,7 +10,7 @@
 #include "dream/render/render_format.h"
 #include "dream/run_log/run_log.h"
 
-namespace dream::sim {
+namespace dream::render {
 
 /// How a run becomes a video.
 struct AnimationOptions {
@@ -79,4 +79,4 @@ class RunAnimation {
   std::unique_ptr<Surfaces> surfaces_;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::render

@@ -6,7 +6,7 @@
 
 #include "dream/run_log/run_log.h"
 
-namespace dream::sim {
+namespace dream::render {
 
 // What pictures and plots compute from a run (run_log::RunLog, the one
 // reader of a run's log): works on any log with DREAM_POSES, simulated or
@@ -31,4 +31,4 @@ std::vector<std::vector<std::array<double, 2>>> MovingObstaclePaths(const run_lo
 /// with at least two robots.
 std::vector<std::array<double, 2>> MinimumDistanceSeries(const run_log::RunLog& log);
 
-}  // namespace dream::sim
+}  // namespace dream::render

@@ -6,7 +6,7 @@
 #include "dream/render/render_format.h"
 #include "dream/run_log/run_log.h"
 
-namespace dream::sim {
+namespace dream::render {
 
 /// Draws a run as a picture: the arena to scale, each robot's trajectory in
 /// its own colour from a hollow start marker to its final pose (a disc of the
@@ -30,4 +30,4 @@ class TrajectoryPicture {
   static std::string Caption(const run_log::RunLog& log, const ArenaOverlays& overlays);
 };
 
-}  // namespace dream::sim
+}  // namespace dream::render

@@ -6,7 +6,7 @@
 
 #include "dream/render/render_format.h"
 
-namespace dream::sim {
+namespace dream::render {
 
 /// One data set of a panel: a line, dots or a histogram's bars.
 struct XySeries {
@@ -35,4 +35,4 @@ class XyPlot {
                      const std::string& path, RenderFormat format, int width_px = 1200);
 };
 
-}  // namespace dream::sim
+}  // namespace dream::render

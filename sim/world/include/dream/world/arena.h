@@ -4,7 +4,7 @@
 
 #include "dream/robotarium/robotarium_constants.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 // The rectangular testbed. Defaults are the Robotarium's.
 struct Arena {
@@ -26,4 +26,4 @@ struct Arena {
   bool IsValid(std::string* error) const;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

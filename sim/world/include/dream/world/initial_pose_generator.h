@@ -9,7 +9,7 @@
 #include "dream/world/start_pose_obstacle_check.h"
 #include "dream/world/world_params.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 // Draws collision-free random start poses inside the arena: positions
 // uniform in the arena shrunk by the wall margin, at least min_spacing_m
@@ -38,4 +38,4 @@ class InitialPoseGenerator {
   StartPoseObstacleCheck obstacle_check_;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -2,7 +2,7 @@
 
 #include <string>
 
-namespace dream::sim {
+namespace dream::world {
 
 // How InitialPoseGenerator spreads robots over the arena.
 struct InitialPoseParams {
@@ -19,4 +19,4 @@ struct InitialPoseParams {
   bool IsValid(std::string* error) const;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

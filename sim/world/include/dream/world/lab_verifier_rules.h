@@ -6,7 +6,7 @@
 #include "dream/robotarium/robotarium_constants.h"
 #include "dream/world/verdict_reason.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 /// The rules by which the Robotarium's verifier refuses a submission before
 /// it reaches the robots (robotarium/robotarium_matlab_verifier, Robotarium.m
@@ -56,4 +56,4 @@ struct LabVerifierRules {
   std::vector<VerdictReason> Check(const Declaration& declared, const Counts& counts) const;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -4,7 +4,7 @@
 
 #include <Eigen/Core>
 
-namespace dream::sim {
+namespace dream::world {
 
 // How a moving obstacle repeats its path.
 enum class ObstaclePathMode {
@@ -22,4 +22,4 @@ struct ObstaclePath {
   ObstaclePathMode mode = ObstaclePathMode::kLoop;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

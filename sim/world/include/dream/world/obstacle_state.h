@@ -1,6 +1,6 @@
 #pragma once
 
-namespace dream::sim {
+namespace dream::world {
 
 // Where a virtual rectangular obstacle is at one step, as a world publishes it
 // on DREAM_OBSTACLES: plain numbers, whether the world moves it (the
@@ -19,4 +19,4 @@ struct ObstacleState {
   bool IntersectsDisc(double disc_x_m, double disc_y_m, double radius_m) const;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

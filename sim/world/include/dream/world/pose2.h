@@ -1,6 +1,6 @@
 #pragma once
 
-namespace dream::sim {
+namespace dream::world {
 
 // A planar robot pose in the world frame.
 struct Pose2 {
@@ -11,4 +11,4 @@ struct Pose2 {
   double theta_rad = 0.0;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

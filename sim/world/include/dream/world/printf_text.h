@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <string>
 
-namespace dream::sim {
+namespace dream::world {
 
 /// printf into a std::string, of any length: for numbers in messages and
 /// reports that must keep a given precision ("%.2f s", "%g", "%.10g").
@@ -18,4 +18,4 @@ std::string PrintfText(const char* format, Args... args) {
   return text;
 }
 
-}  // namespace dream::sim
+}  // namespace dream::world

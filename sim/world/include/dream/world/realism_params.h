@@ -5,7 +5,7 @@
 
 #include "dream/robotarium/robotarium_constants.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 // How far the simulated world departs from the official (ideal) simulator
 // towards the real lab: what the tracker measures and what the GTernal
@@ -125,4 +125,4 @@ struct RealismParams {
 bool operator==(const RealismParams& a, const RealismParams& b);
 inline bool operator!=(const RealismParams& a, const RealismParams& b) { return !(a == b); }
 
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -19,7 +19,7 @@
 #include "dream/world/world.h"
 #include "dream/world/world_params.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 class RealismRandom;
 
@@ -184,4 +184,4 @@ class RealisticWorld final : public World {
   int64_t dropped_measurements_ = 0;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -9,7 +9,7 @@
 #include "dream/world/obstacle_state.h"
 #include "dream/world/rectangle_obstacle_spec.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 // A virtual rectangle that moves along its (closed) path at constant speed,
 // covering speed * dt of arc length per Advance, carrying over across corners.
@@ -60,4 +60,4 @@ class RectangleObstacle {
   Eigen::Vector2d center_m_;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

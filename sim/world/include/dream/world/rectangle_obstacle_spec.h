@@ -7,7 +7,7 @@
 
 #include "dream/world/obstacle_path.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 // A virtual axis-aligned rectangular obstacle as configured. Static when it
 // has no path.
@@ -24,4 +24,4 @@ struct RectangleObstacleSpec {
   bool IsValid(std::string* error) const;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

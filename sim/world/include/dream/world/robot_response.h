@@ -5,7 +5,7 @@
 #include "dream/world/unicycle_command.h"
 #include "dream/world/wheel_speeds.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 // What one robot's firmware and motors make of the command it follows (steps
 // 3-5 of RealisticWorld::Step): the dead zone, wheel speeds with the robot's
@@ -43,4 +43,4 @@ class RobotResponse {
   WheelSpeeds wheels_;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

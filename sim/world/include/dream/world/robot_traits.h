@@ -5,7 +5,7 @@
 
 #include "dream/world/realism_params.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 // How one real robot departs from its nominal kinematics: its speed per unit
 // commanded and its heading drift while its wheels turn (world.realism's
@@ -22,4 +22,4 @@ struct RobotTraits {
   static std::vector<RobotTraits> Draw(const RealismParams& realism, uint64_t seed, int num_robots);
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

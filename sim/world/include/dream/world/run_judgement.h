@@ -8,7 +8,7 @@
 #include "dream/world/run_verdict.h"
 #include "dream/world/verdict_reason.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 /// What DREAM makes of a run: the Robotarium simulator's debug() verdict on
 /// its poses, plus every other reason the run is not ready for the lab (the
@@ -42,4 +42,4 @@ class RunJudgement {
   size_t official_reasons_ = 0;  // the first reasons_, from report_'s counts
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -7,7 +7,7 @@
 #include "dream/world/run_verdict.h"
 #include "dream/world/violation_counts.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 // The end-of-run summary the Robotarium V2 simulator prints from debug().
 struct RunReport {
@@ -28,4 +28,4 @@ struct RunReport {
   std::string Text() const;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

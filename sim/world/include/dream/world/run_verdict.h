@@ -1,6 +1,6 @@
 #pragma once
 
-namespace dream::sim {
+namespace dream::world {
 
 /// What a run is worth on the Robotarium, from best to worst (the order is
 /// used: a run's verdict is the worst of its reasons'). The first three are
@@ -17,4 +17,4 @@ enum class RunVerdict {
 /// "clean", "warning", "not_ready", "rejected" (summary.json's words).
 const char* RunVerdictName(RunVerdict verdict);
 
-}  // namespace dream::sim
+}  // namespace dream::world

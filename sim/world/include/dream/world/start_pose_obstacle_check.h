@@ -7,7 +7,7 @@
 #include "dream/world/rectangle_obstacle_spec.h"
 #include "dream/world/world_params.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 // Whether a robot would start inside a virtual obstacle: the test
 // UnicycleWorld counts as an obstacle collision at step 0 (the collision disc,
@@ -36,4 +36,4 @@ class StartPoseObstacleCheck {
   std::vector<RectangleObstacle> obstacles_;  // at step 0
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace dream::sim {
+namespace dream::world {
 
 // What UnicycleWorld::Step found at one step, so a caller can log warnings.
 // Everything here refers to the poses and velocities validated at the start
@@ -45,4 +45,4 @@ struct StepEvents {
   }
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -1,6 +1,6 @@
 #pragma once
 
-namespace dream::sim {
+namespace dream::world {
 
 // A unicycle velocity command: forward speed and turn rate.
 struct UnicycleCommand {
@@ -8,4 +8,4 @@ struct UnicycleCommand {
   double w_radps = 0.0;  ///< turn rate, rad/s, counter-clockwise positive (as theta grows)
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

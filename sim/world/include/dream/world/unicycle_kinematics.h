@@ -5,7 +5,7 @@
 #include "dream/world/unicycle_command.h"
 #include "dream/world/wheel_speeds.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 // Unicycle <-> differential-drive conversions and wheel saturation, written
 // with the same operations in the same order as the Robotarium V2 simulator
@@ -57,4 +57,4 @@ inline UnicycleCommand SaturateUnicycleCommand(const UnicycleCommand& command, d
       wheel_radius_m, base_length_m);
 }
 
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -13,7 +13,7 @@
 #include "dream/world/world.h"
 #include "dream/world/world_params.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 class PairwiseRules;
 
@@ -117,4 +117,4 @@ class UnicycleWorld final : public World {
   std::unique_ptr<PairwiseRules> pairwise_rules_;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

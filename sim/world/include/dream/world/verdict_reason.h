@@ -4,7 +4,7 @@
 
 #include "dream/world/run_verdict.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 /// One reason a run is not clean: which rule, how bad, what happened and
 /// where to look. summary.json lists them under "verdict_reasons".
@@ -23,4 +23,4 @@ struct VerdictReason {
   std::string Text() const;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

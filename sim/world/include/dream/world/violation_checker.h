@@ -11,7 +11,7 @@
 #include "dream/world/violation_counts.h"
 #include "dream/world/world_params.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 class PairwiseRules;
 
@@ -44,4 +44,4 @@ class ViolationChecker {
   std::unique_ptr<PairwiseRules> rules_;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

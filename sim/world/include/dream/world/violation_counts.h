@@ -4,7 +4,7 @@
 
 #include "dream/world/step_events.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 // Cumulative rule violations of a run, counted the way the Robotarium V2
 // simulator counts them (see UnicycleWorld::Step).
@@ -48,4 +48,4 @@ struct ViolationCounts {
   friend bool operator!=(const ViolationCounts& a, const ViolationCounts& b) { return !(a == b); }
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -1,6 +1,6 @@
 #pragma once
 
-namespace dream::sim {
+namespace dream::world {
 
 // Angular speeds of a differential-drive robot's two wheels.
 struct WheelSpeeds {
@@ -8,4 +8,4 @@ struct WheelSpeeds {
   double right_radps = 0.0;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

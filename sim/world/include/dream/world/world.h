@@ -9,7 +9,7 @@
 #include "dream/world/unicycle_command.h"
 #include "dream/world/violation_counts.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 // What the sim node needs from a world: poses, velocities, obstacles and
 // violation counts out; velocity commands in; one step at a time. The
@@ -58,4 +58,4 @@ class World {
   World& operator=(World&&) = default;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

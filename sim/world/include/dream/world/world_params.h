@@ -5,7 +5,7 @@
 #include "dream/world/arena.h"
 #include "dream/robotarium/robotarium_constants.h"
 
-namespace dream::sim {
+namespace dream::world {
 
 // Everything UnicycleWorld needs to know about the testbed. Defaults are the
 // Robotarium V2 values.
@@ -27,4 +27,4 @@ struct WorldParams {
   bool IsValid(std::string* error) const;
 };
 
-}  // namespace dream::sim
+}  // namespace dream::world

@@ -1,0 +1,52 @@
+#pragma once
+
+#include <deque>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "dream/agent_host/controller_kind.h"
+
+namespace dream::agent_host {
+
+/// The experiment kinds a ControllerFactory can build: the built-in ones and
+/// those that controller plugins add (docs/writing-a-controller.md). Safe to
+/// use from several threads.
+class ControllerRegistry {
+ public:
+  /// The registry the tools use: the built-in kinds, then plugins' kinds in
+  /// the order they were loaded.
+  static ControllerRegistry& Global();
+
+  /// An empty registry (a plugin registers into one first, so a plugin that
+  /// fails half way adds nothing).
+  ControllerRegistry() = default;
+  ControllerRegistry(const ControllerRegistry&) = delete;
+  ControllerRegistry& operator=(const ControllerRegistry&) = delete;
+
+  /// Adds `kind`; `origin` says where it came from in later error messages.
+  /// @throws std::invalid_argument when the name is empty, `make_builder` is
+  ///         missing, or a kind of that name is already registered.
+  void Add(ControllerKind kind, const std::string& origin = "");
+  /// Adds every kind of `other`, or none when any name is taken.
+  /// @throws std::invalid_argument naming the kind and both origins.
+  void AddAll(const ControllerRegistry& other, const std::string& origin);
+
+  /// The kind called `name`, or nullptr. The pointer stays valid for the
+  /// registry's lifetime.
+  const ControllerKind* Find(const std::string& name) const;
+  /// Names in registration order.
+  std::vector<std::string> Names() const;
+
+ private:
+  struct Entry {
+    ControllerKind kind;
+    std::string origin;
+  };
+  const Entry* FindLocked(const std::string& name) const;
+
+  mutable std::mutex mutex_;
+  std::deque<Entry> entries_;  // a deque: Find's pointers survive later additions
+};
+
+}  // namespace dream::agent_host

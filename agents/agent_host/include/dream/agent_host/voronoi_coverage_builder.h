@@ -1,0 +1,45 @@
+#pragma once
+
+#include <vector>
+
+#include "dream/agent_host/agent_parts_config.h"
+#include "dream/agent_host/experiment_builder.h"
+#include "dream/agents/experiments/voronoi_coverage_metrics.h"
+#include "dream/agents/experiments/voronoi_coverage_robot.h"
+#include "dream/config/config_node.h"
+
+namespace dream::agent_host {
+
+/// `kind: voronoi_coverage` (thesis section 3.3): every robot heads for the
+/// centroid of its buffered Voronoi cell (VoronoiCoverageRobot).
+///     disc_radius_m: 1.0  disc_sides: 64  wall_margin_m: 0.06
+///     robot_buffer_m: 0.1  obstacle_buffer_m: 0.12
+///     gain: 1.0  max_speed_mps: 0.15  tolerance_m: 0.03
+///     done_after_still_steps: 30  radio_rounds_before_moving: 2
+///     coverage_sample_steps: 10  still_speed_mps: 0.005  still_window_steps: 30
+class VoronoiCoverageBuilder final : public ExperimentBuilder {
+ public:
+  static constexpr const char* kKind = "voronoi_coverage";
+  /// Keys of this kind besides the common ones.
+  static std::vector<const char*> Keys() {
+    return {"disc_radius_m",          "disc_sides",         "wall_margin_m",         "robot_buffer_m",
+            "obstacle_buffer_m",      "gain",               "max_speed_mps",         "tolerance_m",
+            "done_after_still_steps", "radio_rounds_before_moving", "coverage_sample_steps",
+            "still_speed_mps",        "still_window_steps"};
+  }
+  /// The thesis's parts: odometry and obstacle sensor (1 m) every step, a
+  /// range radio every 3 steps reaching 2 m (= twice the disc radius: any
+  /// robot that can cut a 1 m disc is heard), the control law every step
+  /// (its one-step safety check assumes it).
+  static AgentPartsConfig DefaultParts(int num_robots);
+
+  VoronoiCoverageBuilder(const config::ConfigNode& section, int num_robots);
+  std::unique_ptr<agents::Robot> MakeRobot(int robot_id, const agents::RobotParams& params) const override;
+  std::unique_ptr<agents::ExperimentMetrics> MakeMetrics() const override;
+
+ private:
+  agents::VoronoiCoverageParams params_;
+  agents::VoronoiCoverageMetricsParams metrics_;
+};
+
+}  // namespace dream::agent_host

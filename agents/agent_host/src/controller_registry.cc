@@ -1,0 +1,83 @@
+#include "dream/agent_host/controller_registry.h"
+
+#include <stdexcept>
+
+#include "dream/agent_host/affine_formation_builder.h"
+#include "dream/agent_host/calibration_drive_builder.h"
+#include "dream/agent_host/go_to_goal_builder.h"
+#include "dream/agent_host/hrvo_circle_builder.h"
+#include "dream/agent_host/line_deployment_builder.h"
+#include "dream/agent_host/python_controller_builder.h"
+#include "dream/agent_host/voronoi_coverage_builder.h"
+
+namespace dream::agent_host {
+namespace {
+
+constexpr const char* kBuiltIn = "built in";
+
+std::string Described(const std::string& origin) { return origin.empty() ? std::string("unnamed") : origin; }
+
+void AddBuiltIns(ControllerRegistry& registry) {
+  registry.Add(ControllerKind::Of<GoToGoalBuilder>(), kBuiltIn);
+  registry.Add(ControllerKind::Of<AffineFormationBuilder>(), kBuiltIn);
+  registry.Add(ControllerKind::Of<VoronoiCoverageBuilder>(), kBuiltIn);
+  registry.Add(ControllerKind::Of<HrvoCircleBuilder>(), kBuiltIn);
+  registry.Add(ControllerKind::Of<LineDeploymentBuilder>(), kBuiltIn);
+  registry.Add(ControllerKind::Of<CalibrationDriveBuilder>(), kBuiltIn);
+  registry.Add(PythonControllerBuilder::Kind(), kBuiltIn);
+}
+
+}  // namespace
+
+ControllerRegistry& ControllerRegistry::Global() {
+  static ControllerRegistry registry;
+  static const bool built_ins_added = (AddBuiltIns(registry), true);
+  (void)built_ins_added;
+  return registry;
+}
+
+void ControllerRegistry::Add(ControllerKind kind, const std::string& origin) {
+  if (kind.name.empty()) throw std::invalid_argument("a controller kind needs a name");
+  if (!kind.make_builder) throw std::invalid_argument("controller kind '" + kind.name + "' has no make_builder");
+  if (!kind.default_parts) throw std::invalid_argument("controller kind '" + kind.name + "' has no default_parts");
+  const std::lock_guard<std::mutex> lock(mutex_);
+  if (const Entry* taken = FindLocked(kind.name)) {
+    throw std::invalid_argument("controller kind '" + kind.name + "' is registered twice (" +
+                                Described(taken->origin) + " and " + Described(origin) + ")");
+  }
+  entries_.push_back({std::move(kind), origin});
+}
+
+void ControllerRegistry::AddAll(const ControllerRegistry& other, const std::string& origin) {
+  if (&other == this) return;
+  const std::scoped_lock lock(mutex_, other.mutex_);
+  for (const Entry& entry : other.entries_) {
+    if (const Entry* taken = FindLocked(entry.kind.name)) {
+      throw std::invalid_argument("controller kind '" + entry.kind.name + "' is already registered (" +
+                                  Described(taken->origin) + ")");
+    }
+  }
+  for (const Entry& entry : other.entries_) entries_.push_back({entry.kind, origin});
+}
+
+const ControllerKind* ControllerRegistry::Find(const std::string& name) const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  const Entry* entry = FindLocked(name);
+  return entry == nullptr ? nullptr : &entry->kind;
+}
+
+std::vector<std::string> ControllerRegistry::Names() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<std::string> names;
+  for (const Entry& entry : entries_) names.push_back(entry.kind.name);
+  return names;
+}
+
+const ControllerRegistry::Entry* ControllerRegistry::FindLocked(const std::string& name) const {
+  for (const Entry& entry : entries_) {
+    if (entry.kind.name == name) return &entry;
+  }
+  return nullptr;
+}
+
+}  // namespace dream::agent_host

@@ -1,0 +1,80 @@
+#include "dream/agent_host/go_to_goal_builder.h"
+
+#include <algorithm>
+
+namespace dream::agent_host {
+namespace {
+
+/// Reports the largest final distance to goal and when everyone had arrived.
+class GoToGoalMetrics final : public agents::ExperimentMetrics {
+ public:
+  explicit GoToGoalMetrics(std::vector<agents::GoToGoalParams> params) : params_(std::move(params)) {}
+  void Observe(const agents::WorldSnapshot& world) override {
+    double worst = 0.0;
+    bool all_in = true;
+    for (size_t i = 0; i < params_.size() && i < world.poses.size(); ++i) {
+      const double d = (world.poses[i].head<2>() - params_[i].goal_m).norm();
+      worst = std::max(worst, d);
+      all_in = all_in && d <= params_[i].tolerance_m;
+    }
+    final_worst_m_ = worst;
+    if (all_in && arrived_step_ < 0) arrived_step_ = world.step;
+  }
+  void Write(agents::MetricsReport* report) const override {
+    report->values["final_max_goal_error_m"] = final_worst_m_;
+    report->values["all_arrived_step"] = static_cast<double>(arrived_step_);
+  }
+  // Goal: every robot within its tolerance at once.
+  std::optional<agents::GoalJudgement> JudgeGoal(const agents::MetricsReport& report) const override {
+    agents::GoalJudgement goal;
+    goal.completion_step = static_cast<int64_t>(report.Value("all_arrived_step"));
+    goal.met = goal.completion_step >= 0;
+    goal.detail = goal.met ? "all at their goals"
+                           : "not all at their goals, worst " + agents::GoalJudgement::Metres(report.Value("final_max_goal_error_m"));
+    return goal;
+  }
+
+ private:
+  std::vector<agents::GoToGoalParams> params_;
+  double final_worst_m_ = 0.0;
+  int64_t arrived_step_ = -1;
+};
+
+}  // namespace
+
+GoToGoalBuilder::GoToGoalBuilder(const config::ConfigNode& section, int num_robots) {
+  const config::ConfigNode goals = section.Required("goals");
+  if (!goals.IsSequence() || goals.size() != static_cast<size_t>(num_robots)) {
+    goals.Fail("expected one [x, y] goal per robot (" + std::to_string(num_robots) + "), got " +
+               (goals.IsSequence() ? std::to_string(goals.size()) : std::string("no list")));
+  }
+  for (int id = 0; id < num_robots; ++id) {
+    agents::GoToGoalParams params;
+    const config::ConfigNode goal = goals[static_cast<size_t>(id)];
+    const std::vector<double> xy = goal.AsDoubles();
+    if (xy.size() != 2) goal.Fail("expected [x, y] in metres, got " + std::to_string(xy.size()) + " numbers");
+    params.goal_m = Eigen::Vector2d(xy[0], xy[1]);
+    params.gain = section.GetDouble("gain", params.gain);
+    params.max_speed_mps = section.GetDouble("max_speed_mps", params.max_speed_mps);
+    params.tolerance_m = section.GetDouble("tolerance_m", params.tolerance_m);
+    std::string error;
+    if (!params.IsValid(&error)) section.FailAtField(error);
+    params_.push_back(params);
+  }
+}
+
+std::unique_ptr<agents::Robot> GoToGoalBuilder::MakeRobot(int robot_id, const agents::RobotParams& params) const {
+  return std::make_unique<agents::GoToGoalRobot>(robot_id, params, params_.at(static_cast<size_t>(robot_id)));
+}
+
+std::unique_ptr<agents::ExperimentMetrics> GoToGoalBuilder::MakeMetrics() const {
+  return std::make_unique<GoToGoalMetrics>(params_);
+}
+
+std::vector<std::vector<Eigen::Vector2d>> GoToGoalBuilder::GoalsToDraw() const {
+  std::vector<std::vector<Eigen::Vector2d>> goals;
+  for (const agents::GoToGoalParams& params : params_) goals.push_back({params.goal_m});
+  return goals;
+}
+
+}  // namespace dream::agent_host

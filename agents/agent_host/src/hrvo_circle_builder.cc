@@ -1,0 +1,83 @@
+#include "dream/agent_host/hrvo_circle_builder.h"
+
+#include <cmath>
+
+#include "dream/agents/experiments/formation_sequence_metrics.h"
+#include "dream/agent_host/hrvo_config.h"
+
+namespace dream::agent_host {
+
+AgentPartsConfig HrvoCircleBuilder::DefaultParts(int num_robots) {
+  AgentPartsConfig parts = AgentPartsConfig::ThesisHrvoParts(num_robots);
+  parts.radio = RadioConfig::Every(RadioConfig::Kind::kRange, num_robots, 30);
+  parts.radio.range_m = 1.0;
+  return parts;
+}
+
+HrvoCircleBuilder::HrvoCircleBuilder(const config::ConfigNode& section, int num_robots) : num_robots_(num_robots) {
+  const double radius_m = section.GetDouble("radius_m", 0.85);
+  if (!(radius_m > 0.0)) section.Required("radius_m").Fail("must be > 0, got " + std::to_string(radius_m));
+  Eigen::Vector2d center = Eigen::Vector2d::Zero();
+  if (section.Has("center")) {
+    const config::ConfigNode node = section.Required("center");
+    const std::vector<double> xy = node.AsDoubles();
+    if (xy.size() != 2) node.Fail("expected [x, y] in metres, got " + std::to_string(xy.size()) + " numbers");
+    center = Eigen::Vector2d(xy[0], xy[1]);
+  }
+  const long long formations = section.GetInt("formations", 3);
+  if (formations < 1 || formations > 100) {
+    section.Required("formations").Fail("must be in 1..100, got " + std::to_string(formations));
+  }
+  params_.num_robots = num_robots;
+  params_.tolerance_m = section.GetDouble("tolerance_m", params_.tolerance_m);
+  params_.max_speed_mps = section.GetDouble("max_speed_mps", params_.max_speed_mps);
+  params_.gain = section.GetDouble("gain", params_.gain);
+  params_.stop_m = section.GetDouble("stop_m", params_.stop_m);
+  hrvo_ = ReadHrvoRobotParams(section);
+
+  // Appendix B's p_circ: robot i at angle 2 pi i / N, its opposite at + pi.
+  for (long long k = 0; k < formations; ++k) {
+    std::vector<Eigen::Vector2d> points;
+    for (int i = 0; i < num_robots; ++i) {
+      const double angle = 2.0 * M_PI * i / num_robots + (k % 2 == 1 ? M_PI : 0.0);
+      points.push_back(center + radius_m * Eigen::Vector2d(std::cos(angle), std::sin(angle)));
+    }
+    formations_.push_back(points);
+  }
+  // Every point must lie in the arena with a robot's margin, or HRVO's
+  // boundary check would keep the robot from ever reaching it.
+  constexpr double kMarginM = 0.1;
+  for (const auto& formation : formations_) {
+    for (const Eigen::Vector2d& p : formation) {
+      if (std::abs(p.x()) > 1.6 - kMarginM || std::abs(p.y()) > 1.0 - kMarginM) {
+        section.Fail("the circle (center [" + std::to_string(center.x()) + ", " + std::to_string(center.y()) +
+                     "], radius_m " + std::to_string(radius_m) +
+                     ") leaves the arena: every point must be 0.1 m inside x in [-1.6, 1.6], y in [-1, 1]");
+      }
+    }
+  }
+  agents::CircleFormationParams check = params_;
+  check.goals_m = {Eigen::Vector2d::Zero()};
+  std::string error;
+  if (!check.IsValid(&error)) section.FailAtField(error);
+}
+
+std::unique_ptr<agents::Robot> HrvoCircleBuilder::MakeRobot(int robot_id, const agents::RobotParams& params) const {
+  agents::CircleFormationParams robot = params_;
+  for (const auto& formation : formations_) robot.goals_m.push_back(formation.at(static_cast<size_t>(robot_id)));
+  return std::make_unique<agents::CircleFormationRobot>(robot_id, params, hrvo_, robot);
+}
+
+std::unique_ptr<agents::ExperimentMetrics> HrvoCircleBuilder::MakeMetrics() const {
+  return std::make_unique<agents::FormationSequenceMetrics>(formations_, params_.tolerance_m);
+}
+
+std::vector<std::vector<Eigen::Vector2d>> HrvoCircleBuilder::GoalsToDraw() const {
+  std::vector<std::vector<Eigen::Vector2d>> goals(static_cast<size_t>(num_robots_));
+  for (const std::vector<Eigen::Vector2d>& formation : formations_) {
+    for (size_t i = 0; i < formation.size() && i < goals.size(); ++i) goals[i].push_back(formation[i]);
+  }
+  return goals;
+}
+
+}  // namespace dream::agent_host

@@ -1,0 +1,66 @@
+#include "hosted_agents.h"
+
+#include <nlohmann/json.hpp>
+
+#include "commands.h"
+#include "dream/lcm/run_id.h"
+#include "dream/agent_host/controller_factory.h"
+#include "dream/agent_host/python_controller_spec.h"
+
+namespace dream::cli {
+void HostedAgents::Check(const config::ControllerConfig& config, const agent_host::ControllerFactory* built,
+                         double start_timeout_s) {
+  if (agent_host::IsPythonController(config)) {
+    PythonHostProcess::Check(agent_host::PythonControllerSpecJson(config), start_timeout_s);
+  } else if (built == nullptr) {
+    agent_host::ControllerFactory{config};  // its constructor is the check
+  }
+}
+
+HostedAgents::HostedAgents(lcm::LcmBus& bus, const config::ControllerConfig& config, const std::vector<int>& robot_ids,
+                           const agent_host::ControllerFactory* factory,
+                           const PythonHostProcess::Limits& python_limits)
+    : bus_(bus) {
+  if (agent_host::IsPythonController(config)) {
+    python_ = std::make_unique<PythonHostProcess>(bus, agent_host::PythonControllerSpecJson(config), robot_ids,
+                                                  NewAgentId(), python_limits);
+    return;
+  }
+  std::unique_ptr<agent_host::ControllerFactory> own;
+  if (factory == nullptr) {
+    own = std::make_unique<agent_host::ControllerFactory>(config);
+    factory = own.get();
+  }
+  std::vector<std::unique_ptr<agents::RobotAgent>> robots;
+  for (int id : robot_ids) robots.push_back(factory->Make(id));
+  cpp_ = std::make_unique<agent_host::AgentHost>(bus, std::move(robots), NewAgentId());
+  cpp_->ExpectWorldOfRobots(config.num_robots);
+}
+
+bool HostedAgents::Run(const std::atomic<bool>& stop, double idle_timeout_s) {
+  return python_ ? python_->Run(bus_, stop, idle_timeout_s) : cpp_->Run(stop, idle_timeout_s);
+}
+
+int64_t HostedAgents::last_step_answered() const {
+  return python_ ? python_->last_step_answered() : cpp_->last_step_answered();
+}
+
+std::string HostedAgents::ReportJson() const {
+  if (python_) return python_->ReportJson();
+  nlohmann::ordered_json report;
+  report["bad_messages"] = cpp_->bad_messages().per_channel();
+  nlohmann::ordered_json first = nlohmann::ordered_json::object();
+  for (const auto& [channel, bad] : cpp_->bad_messages().first()) {
+    first[channel] = (bad.step >= 0 ? "step " + std::to_string(bad.step) + ": " : "") + bad.reason;
+  }
+  report["bad_message_first"] = first;
+  nlohmann::json other_runs = nlohmann::json::array();
+  for (int64_t run_id : cpp_->follower().other_runs()) other_runs.push_back(lcm::RunIdText(run_id));
+  report["other_runs"] = other_runs;
+  report["steps_out_of_sequence"] = cpp_->follower().steps_out_of_sequence();
+  return report.dump();
+}
+
+std::string HostedAgents::end_detail() const { return python_ ? python_->end_detail() : cpp_->end_detail(); }
+
+}  // namespace dream::cli

@@ -1,0 +1,60 @@
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "dream/agent_host/agent_host.h"
+#include "dream/agent_host/controller_factory.h"
+#include "dream/python_host/python_agent_host.h"
+#include "dream/config/controller_config.h"
+#include "dream/lcm/lcm_bus.h"
+#include "python_host_process.h"
+
+namespace dream::cli {
+
+/// The agents of some robots of a run, on a bus of this process, whatever
+/// language their controller is in: C++ kinds in an agent_host::AgentHost, the
+/// python kind in a PythonHostProcess (a process of their own, relayed to
+/// this bus). Every command that hosts agents (run, agent, lab-replay) goes
+/// through here.
+class HostedAgents {
+ public:
+  /// Checks the controller section as far as can be done before a run: the
+  /// kind and its keys, and for the python kind its module, class and own
+  /// keys (in a process of its own, as the run's). `built`: the run's factory
+  /// when the caller built it already (a
+  /// RunSession does), so the config's plugins are not loaded again.
+  /// @throws config::ConfigError naming file, line and key.
+  /// `start_timeout_s`: the run's world.start_timeout_s (0: the default),
+  /// which bounds loading the module and each robot's setup().
+  static void Check(const config::ControllerConfig& config, const agent_host::ControllerFactory* built = nullptr,
+                    double start_timeout_s = 0.0);
+
+  /// Builds the agents of `robot_ids` and subscribes them on `bus`, C++
+  /// agents with `factory` when given (the run's), else with a factory of
+  /// their own. `python_limits`: the run's world.agent_timeout_s and
+  /// start_timeout_s (overrides included; 0: the defaults), which bound a
+  /// Python controller's step and its setup(), and the idle timeout of
+  /// dream agent (PythonHostProcess::Limits).
+  HostedAgents(lcm::LcmBus& bus, const config::ControllerConfig& config, const std::vector<int>& robot_ids,
+               const agent_host::ControllerFactory* factory = nullptr,
+               const PythonHostProcess::Limits& python_limits = {});
+
+  /// Handles `bus` until the world ends the run (true), or `stop` / silence (false).
+  bool Run(const std::atomic<bool>& stop, double idle_timeout_s);
+  int64_t last_step_answered() const;
+  std::string end_detail() const;
+  /// What the agents refused, as JSON: {"bad_messages": {channel: count},
+  /// "other_runs": [run id hex], "steps_out_of_sequence": n}.
+  std::string ReportJson() const;
+
+ private:
+  lcm::LcmBus& bus_;
+  std::unique_ptr<agent_host::AgentHost> cpp_;
+  std::unique_ptr<python_host::PythonAgentHost> python_;
+};
+
+}  // namespace dream::cli

@@ -1,0 +1,189 @@
+#include <spdlog/spdlog.h>
+
+#include <csignal>
+#include <chrono>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <set>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+#include "command_line.h"
+#include "dream/files/atomic_file.h"
+#include "dream/files/json_text.h"
+#include "dream/files/output_folder_lock.h"
+#include "commands.h"
+#include "process_group.h"
+#include "run_output.h"
+#include "shared_options.h"
+
+namespace dream::cli {
+
+// Measured: the simulator and a C++ agent peak at 13 open descriptors under
+// udpm (LCM's sockets and pipes, the log, the lock, stdio); room for Python agents.
+constexpr int kDescriptorsPerProcess = 24;
+
+namespace {
+
+// Where each agent process writes what it refused (dream-agent --report);
+// merged into summary.json and removed.
+std::filesystem::path AgentReportDir(const std::string& out_dir) { return std::filesystem::path(out_dir) / ".agent_reports"; }
+
+std::string AgentReportPath(const std::string& out_dir, int robot) {
+  return (AgentReportDir(out_dir) / ("robot_" + std::to_string(robot) + ".json")).string();
+}
+
+// The agents' refusals, in summary.json's "agents" section; a run whose
+// agents refused messages is not ready (as one whose world refused some), so
+// the verdict and exit code say so. Returns the launch's exit code.
+int MergeAgentReports(const std::string& out_dir, int num_robots, int sim_exit) {
+  const std::string summary_path = out_dir + "/summary.json";
+  nlohmann::ordered_json summary;
+  try {
+    std::ifstream in(summary_path);
+    summary = nlohmann::ordered_json::parse(in);
+  } catch (const std::exception& e) {
+    spdlog::warn("{}: cannot add the agents' reports ({})", summary_path, e.what());
+    return sim_exit;
+  }
+  nlohmann::ordered_json bad = nlohmann::ordered_json::object();
+  std::map<std::string, std::string> first_bad;  // channel -> the first agent's first refusal there
+  std::set<std::string> other_runs;
+  long long out_of_sequence = 0;
+  long long refused = 0;
+  std::vector<int> missing;
+  for (int robot = 0; robot < num_robots; ++robot) {
+    try {
+      std::ifstream in(AgentReportPath(out_dir, robot));
+      if (!in) throw std::runtime_error("no report");
+      const nlohmann::json report = nlohmann::json::parse(in);
+      for (const auto& [channel, count] : report.at("bad_messages").items()) {
+        const long long n = count.get<long long>();
+        bad[channel] = (bad.contains(channel) ? bad[channel].get<long long>() : 0) + n;
+        refused += n;
+      }
+      if (report.contains("bad_message_first")) {
+        for (const auto& [channel, what] : report.at("bad_message_first").items()) {
+          if (!what.is_string()) continue;
+          first_bad.emplace(channel, what.get<std::string>() + " (the agent of robot " + std::to_string(robot) + ")");
+        }
+      }
+      for (const auto& run : report.at("other_runs")) other_runs.insert(run.get<std::string>());
+      out_of_sequence += report.at("steps_out_of_sequence").get<long long>();
+    } catch (const std::exception&) {
+      missing.push_back(robot);  // the agent died or could not write it: the world's summary says more
+    }
+  }
+  std::error_code ignored;
+  std::filesystem::remove_all(AgentReportDir(out_dir), ignored);
+  summary["agents"] = {{"bad_messages", bad},
+                       {"other_runs", other_runs},
+                       {"steps_out_of_sequence", out_of_sequence},
+                       {"reports_missing", missing}};
+  int exit_code = sim_exit;
+  if (refused > 0 || !other_runs.empty() || out_of_sequence > 0) {
+    std::string problem = "the agents refused " + std::to_string(refused) + " message(s)";
+    // Which channels, how many, and what the first refusal was: forged world
+    // messages and a flaky link read differently.
+    int named = 0;
+    for (const auto& [channel, count] : bad.items()) {
+      if (named++ == 3) {
+        problem += "; ...";
+        break;
+      }
+      problem += (named == 1 ? ": " : "; ") + channel + ": " + std::to_string(count.get<long long>());
+      const auto first = first_bad.find(channel);
+      if (first != first_bad.end()) problem += ", first refused: " + first->second;
+    }
+    if (!other_runs.empty()) problem += ", heard " + std::to_string(other_runs.size()) + " other run(s)";
+    if (out_of_sequence > 0) problem += ", ignored " + std::to_string(out_of_sequence) + " step(s) out of sequence";
+    summary["verdict_reasons"].push_back({{"rule", "agent_bad_messages"},
+                                          {"verdict", "not_ready"},
+                                          {"problem", problem},
+                                          {"find_out", "summary.json agents; the launch's output names each channel"}});
+    const std::string verdict = summary.value("verdict", "");
+    if (verdict == "clean" || verdict == "warning") summary["verdict"] = "not_ready";
+    if (exit_code == kExitOk) exit_code = kExitNotReady;
+    std::cout << "Not ready for the Robotarium: " << problem << " (summary.json agents)\n"
+              << "verdict: " << summary.value("verdict", "") << " (with the agents' reports, which the simulator's "
+              << "report above could not know; summary.json verdict_reasons)\n";
+  }
+  try {
+    files::WriteFileAtomically(summary_path, files::JsonText(summary) + "\n");
+  } catch (const std::exception& e) {
+    spdlog::error("{}", e.what());
+    return kExitRunFailed;
+  }
+  return exit_code;
+}
+
+}  // namespace
+
+int RunLaunch(const RunArgs& args) {
+  ProcessGroup::RequireDescriptors(kDescriptorsPerProcess);
+  // Check the config here, so a mistake is reported once, not by N+1 children.
+  const run_config::RunConfig config = LoadConfig(args);
+  // Chosen once, here: the simulator gets it as --out, so a numbered folder
+  // (runs/<name>_2) is not chosen again, differently, by the child.
+  const std::string out_dir = PrepareOutputDir(args, config);
+  const std::string self = SelfExecutable();
+  std::vector<std::string> common = {args.config_path};
+  if (!args.lcm_url.empty()) common.push_back("--lcm-url=" + args.lcm_url);
+  // The same overrides for the simulator and every agent, so all build the
+  // same run (agents read the config too: robots, controller, seed).
+  if (args.seed >= 0) common.push_back("--seed=" + std::to_string(args.seed));
+  for (const std::string& set : args.sets) common.insert(common.end(), {"--set", set});
+  // The children log (and show progress) as quietly or verbosely as this process.
+  if (!spdlog::should_log(spdlog::level::info)) common.push_back("--quiet");
+  if (spdlog::should_log(spdlog::level::debug)) common.push_back("--verbose");
+
+  ProcessGroup children;
+  std::vector<std::string> sim_argv = {self, "sim"};
+  sim_argv.insert(sim_argv.end(), common.begin(), common.end());
+  sim_argv.push_back("--out=" + out_dir);  // holds no run now (an earlier one was refused or removed)
+  if (args.steps != 0) sim_argv.push_back("--steps=" + std::to_string(args.steps));
+  if (!args.mode.empty()) sim_argv.push_back("--mode=" + args.mode);
+  if (args.all_steps) sim_argv.push_back("--all-steps");
+  // The simulator writes the folder this process has locked: it inherits the lock.
+  const int lock_fd = files::OutputFolderLock::DescriptorOf(out_dir);
+  const pid_t sim = children.Start(
+      sim_argv, std::string(),
+      {std::string(files::OutputFolderLock::kInheritedVariable) + "=" + std::to_string(lock_fd)}, lock_fd);
+  std::filesystem::create_directories(AgentReportDir(out_dir));
+  std::vector<pid_t> agents;
+  for (int id = 0; id < config.num_robots; ++id) {
+    std::vector<std::string> agent_argv = {AgentBinaryPath()};
+    agent_argv.insert(agent_argv.end(), common.begin(), common.end());
+    agent_argv.push_back("--robots=" + std::to_string(id));
+    agent_argv.push_back("--report=" + AgentReportPath(out_dir, id));
+    agents.push_back(children.Start(agent_argv));
+  }
+  spdlog::info("launched the simulator and {} agent processes", agents.size());
+
+  int sim_exit = -1;
+  while ((sim_exit = children.WaitFor(sim, 0.1)) < 0) {
+    if (StopFlag().load()) children.SignalAll(SIGINT);
+  }
+  int failed_agents = 0;
+  for (pid_t agent : agents) {
+    const int code = children.WaitFor(agent, 5.0);
+    if (code != 0) ++failed_agents;
+  }
+  if (failed_agents > 0) spdlog::warn("{} agent process(es) did not exit cleanly", failed_agents);
+  if (sim_exit == kExitInterrupted) return sim_exit;
+  return MergeAgentReports(out_dir, config.num_robots, sim_exit);
+}
+
+void DeclareLaunchCommand(CommandLine& line) {
+  AddRunCommand(line, "launch",
+                "Run the simulator and one agent process per robot over udpm.\n"
+                "Example: dream launch config/go_to_goal.yaml --seed 7",
+                RunLaunch, "LCM URL (default $LCM_DEFAULT_URL)");
+}
+
+}  // namespace dream::cli

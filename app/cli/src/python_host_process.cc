@@ -1,0 +1,659 @@
+#include "python_host_process.h"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <spdlog/spdlog.h>
+#include <sys/eventfd.h>
+#include <sys/mman.h>
+#include <sys/prctl.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <algorithm>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <regex>
+#include <stdexcept>
+
+#include "commands.h"
+#include "dream/config/config_error.h"
+#include "dream/config/sim_node_options.h"
+#include "dream/robot_fault_t.hpp"
+
+namespace dream::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Where the process finds what its parent gives it (python_host_child.cc).
+constexpr int kChildLinkFd = 3;
+constexpr int kChildTraceFd = 4;
+constexpr int kChildCellFd = 5;
+constexpr size_t kCellBytes = 4096;
+constexpr size_t kMaxTraceBytes = 1 << 16;
+// Frames for the process beyond this are dropped: it is far behind, i.e. stuck.
+constexpr size_t kMaxOutboxBytes = size_t{1} << 28;
+// Byte offsets in the LCM messages (after the 8-byte fingerprint): utime, step,
+// run_id; then robot_id / sender_id (int32) and agent_id (int64).
+constexpr int kUtimeAt = 8, kStepAt = 16, kRunIdAt = 24, kAgentIdAt = 36;
+
+double Seconds(Clock::duration duration) { return std::chrono::duration<double>(duration).count(); }
+
+int64_t BigEndian64(const void* data, int at) {
+  const auto* bytes = static_cast<const unsigned char*>(data) + at;
+  uint64_t value = 0;
+  for (int i = 0; i < 8; ++i) value = (value << 8) | bytes[i];
+  return static_cast<int64_t>(value);
+}
+
+struct Spawned {
+  pid_t pid = -1;
+  int link_fd = -1;
+  int trace_fd = -1;
+  std::atomic<int64_t>* cell = nullptr;
+};
+
+[[noreturn]] void ThrowErrno(const std::string& what) {
+  throw std::runtime_error("cannot start the process for the Python controllers: " + what + ": " +
+                           std::strerror(errno));
+}
+
+// dream-agent --python-host in its own process group, with the link, the
+// faulthandler pipe and the shared call cell on descriptors 3, 4 and 5.
+Spawned SpawnHost() {
+  const std::string binary = AgentBinaryPath();
+  const std::string option = "--python-host";
+  char* argv[] = {const_cast<char*>(binary.c_str()), const_cast<char*>(option.c_str()), nullptr};
+  int sockets[2];
+  if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sockets) != 0) ThrowErrno("socketpair");
+  int trace[2];
+  if (::pipe2(trace, O_CLOEXEC) != 0) ThrowErrno("pipe");
+  const int cell_fd = ::memfd_create("dream-python-call-cell", MFD_CLOEXEC);
+  if (cell_fd < 0 || ::ftruncate(cell_fd, kCellBytes) != 0) ThrowErrno("memfd");
+  void* cell = ::mmap(nullptr, kCellBytes, PROT_READ | PROT_WRITE, MAP_SHARED, cell_fd, 0);
+  if (cell == MAP_FAILED) ThrowErrno("mmap");
+  int report[2];
+  if (::pipe2(report, O_CLOEXEC) != 0) ThrowErrno("pipe");
+  // Its stdin: not the terminal, which a process outside the foreground
+  // group may not read (SIGTTIN would stop it).
+  const int null_fd = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
+  if (null_fd < 0) ThrowErrno("/dev/null");
+  const pid_t parent = ::getpid();
+  const pid_t pid = ::fork();
+  if (pid < 0) ThrowErrno("fork");
+  if (pid == 0) {
+    // Only async-signal-safe calls until exec. Its own group: the terminal's
+    // Ctrl-C is the parent's to handle, and the group is what the parent kills.
+    ::setpgid(0, 0);
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(127);
+    const int link = ::fcntl(sockets[1], F_DUPFD_CLOEXEC, 10);
+    const int trace_out = ::fcntl(trace[1], F_DUPFD_CLOEXEC, 10);
+    const int cell_in = ::fcntl(cell_fd, F_DUPFD_CLOEXEC, 10);
+    int error = 0;
+    if (link < 0 || trace_out < 0 || cell_in < 0 || ::dup2(null_fd, STDIN_FILENO) < 0 ||
+        ::dup2(link, kChildLinkFd) < 0 ||
+        ::dup2(trace_out, kChildTraceFd) < 0 || ::dup2(cell_in, kChildCellFd) < 0) {
+      error = errno;
+    } else {
+      ::execv(binary.c_str(), argv);
+      error = errno;
+    }
+    const ssize_t written = ::write(report[1], &error, sizeof error);
+    (void)written;
+    ::_exit(127);
+  }
+  ::setpgid(pid, pid);  // as the child does: whichever runs first
+  ::close(sockets[1]);
+  ::close(trace[1]);
+  ::close(cell_fd);
+  ::close(null_fd);
+  ::close(report[1]);
+  int error = 0;
+  ssize_t got = 0;
+  while ((got = ::read(report[0], &error, sizeof error)) < 0 && errno == EINTR) {
+  }
+  ::close(report[0]);
+  if (got > 0) {
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    ::close(sockets[0]);
+    ::close(trace[0]);
+    ::munmap(cell, kCellBytes);
+    errno = error;
+    ThrowErrno(binary);
+  }
+  ::fcntl(trace[0], F_SETFL, O_NONBLOCK);
+  return {pid, sockets[0], trace[0], static_cast<std::atomic<int64_t>*>(cell)};
+}
+
+// The start frame: what the process hosts, and how.
+std::string StartFrame(const std::string& spec_json, const std::vector<int>& robot_ids, int64_t agent_id,
+                       const PythonHostProcess::Limits& limits, bool check_only) {
+  nlohmann::json start;
+  start["spec"] = spec_json;
+  start["robots"] = robot_ids;
+  start["agent_id"] = agent_id;
+  start["agent_timeout_s"] = limits.agent_timeout_s;
+  start["start_timeout_s"] = limits.start_timeout_s;
+  start["idle_timeout_s"] = limits.idle_timeout_s;
+  start["check_only"] = check_only;
+  start["log_level"] = static_cast<int>(spdlog::get_level());
+  return start.dump();
+}
+
+PythonHostProcess::Limits WithDefaults(PythonHostProcess::Limits limits) {
+  const config::SimNodeOptions defaults;
+  if (!(limits.agent_timeout_s > 0)) limits.agent_timeout_s = defaults.agent_timeout_s;
+  if (!(limits.start_timeout_s > 0)) limits.start_timeout_s = defaults.start_timeout_s;
+  return limits;
+}
+
+// Reads what the faulthandler pipe holds now (bounded).
+void ReadTrace(int fd, std::string* trace) {
+  char chunk[4096];
+  ssize_t n = 0;
+  while ((n = ::read(fd, chunk, sizeof chunk)) > 0) {
+    if (trace->size() < kMaxTraceBytes) trace->append(chunk, std::min<size_t>(n, kMaxTraceBytes - trace->size()));
+  }
+}
+
+// The innermost frame in `module_path` of a faulthandler dump ("  File
+// "/x/y.py", line 7 in update"), else in a file beside it (a helper it
+// imports); "" when neither is there (the dump holds the innermost 100
+// frames only, e.g. all inside the standard library).
+std::string TracedLineOf(const std::string& trace, const std::string& module_path) {
+  static const std::regex kFrame(R"re(File "([^"\n]*)", line (\d+) in (\S+))re");
+  const std::string folder = module_path.substr(0, module_path.rfind('/') + 1);
+  std::string beside;
+  for (auto it = std::sregex_iterator(trace.begin(), trace.end(), kFrame); it != std::sregex_iterator(); ++it) {
+    const std::string file = (*it)[1].str();
+    const std::string where = file + ":" + (*it)[2].str() + ": in " + (*it)[3].str();
+    if (!module_path.empty() && file == module_path) return where;
+    if (beside.empty() && !folder.empty() && file.rfind(folder, 0) == 0) beside = where;
+  }
+  return beside;
+}
+
+std::string ExitTextOf(int status) {
+  if (WIFEXITED(status)) return "exit code " + std::to_string(WEXITSTATUS(status));
+  if (WIFSIGNALED(status)) {
+    const int signal = WTERMSIG(status);
+    const char* name = sigabbrev_np(signal);
+    return "killed by signal " + std::to_string(signal) + (name != nullptr ? std::string(" (SIG") + name + ")" : "");
+  }
+  return "status " + std::to_string(status);
+}
+
+// SIGKILL to the whole group (whatever a controller forked included), then
+// the process itself is reaped; its status.
+int KillAndReap(pid_t pid) {
+  ::kill(-pid, SIGKILL);
+  ::kill(pid, SIGKILL);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  return status;
+}
+
+// True when `pid` has ended (not reaped: its group stays killable); `how`,
+// if given, says how ("exit code N" or "killed by signal N (SIGX)").
+bool HasEnded(pid_t pid, std::string* how = nullptr) {
+  siginfo_t info{};
+  if (::waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOHANG | WNOWAIT) != 0 || info.si_pid != pid) {
+    return false;
+  }
+  if (how != nullptr) {
+    *how = ExitTextOf(info.si_code == CLD_EXITED ? W_EXITCODE(info.si_status, 0) : info.si_status);
+  }
+  return true;
+}
+
+// SIGUSR1 makes faulthandler write every thread's Python traceback; a
+// short moment for it to arrive.
+// moment for it to arrive (it writes at once; the world's deadline is near).
+void RequestTrace(pid_t pid, int trace_fd, std::string* trace) {
+  const size_t before = trace->size();
+  ::kill(pid, SIGUSR1);
+  const auto until = Clock::now() + std::chrono::milliseconds(60);
+  while (Clock::now() < until) {
+    pollfd fd{trace_fd, POLLIN, 0};
+    const bool written = trace->size() > before;
+    if (::poll(&fd, 1, written ? 5 : 10) <= 0) {
+      if (written) break;  // written, and quiet since
+      continue;
+    }
+    ReadTrace(trace_fd, trace);
+  }
+}
+
+// What the call in the cell was: loading the module (robot -1), a robot's
+// setup() (step < 0) or its step's call.
+std::string CallTextOf(int64_t robot, int64_t step) {
+  if (robot < 0) return "loading the controller's module";
+  return "robot " + std::to_string(robot) + "'s " +
+         (step < 0 ? std::string("setup()") : "call at step " + std::to_string(step));
+}
+
+std::string StuckTextOf(int64_t token, int64_t robot, int64_t step, const PythonHostProcess::Limits& limits) {
+  const double limit_s = token > 0 ? limits.agent_timeout_s : limits.start_timeout_s;
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "%s did not return within %g s (%g x the world's %s of %g s), nor stop when dream's watchdog "
+                "raised ControllerTimeout in it (a call blocked outside Python, in time.sleep, a blocking read or "
+                "C code, cannot): its Python process was killed",
+                CallTextOf(robot, token > 0 ? step : -1).c_str(), PythonHostProcess::kKillFraction * limit_s,
+                PythonHostProcess::kKillFraction, token > 0 ? "agent_timeout_s" : "start_timeout_s", limit_s);
+  return text;
+}
+
+std::string ModulePathOf(const std::string& spec_json) {
+  try {
+    const nlohmann::json spec = nlohmann::json::parse(spec_json);
+    return spec.value("module", std::string());
+  } catch (const std::exception&) {
+    return "";
+  }
+}
+
+std::string JoinIds(const std::vector<int>& ids) {
+  std::string text;
+  for (int id : ids) text += (text.empty() ? "" : ", ") + std::to_string(id);
+  return text;
+}
+
+}  // namespace
+
+void PythonHostProcess::Check(const std::string& spec_json, double start_timeout_s) {
+  Limits limits;
+  limits.start_timeout_s = start_timeout_s;
+  limits = WithDefaults(limits);
+  const std::string module_path = ModulePathOf(spec_json);
+  const Spawned spawned = SpawnHost();
+  RelayLink link(spawned.link_fd);
+  std::string trace;
+  auto cleanup = [&] {
+    ::close(spawned.trace_fd);
+    ::munmap(spawned.cell, kCellBytes);
+  };
+  link.Send('S', "", StartFrame(spec_json, {}, 0, limits, true));
+  const auto started = Clock::now();
+  while (true) {
+    pollfd fd{link.fd(), POLLIN, 0};
+    ::poll(&fd, 1, 50);
+    std::vector<RelayLink::Frame> frames;
+    std::string problem;
+    const RelayLink::Read read = link.ReadAvailable(&frames, &problem);
+    for (const RelayLink::Frame& frame : frames) {
+      if (frame.kind == 'R' || frame.kind == 'E') {
+        KillAndReap(spawned.pid);
+        cleanup();
+        if (frame.kind == 'R') return;
+        if (frame.channel == "ConfigError") throw config::ConfigError(frame.data);
+        throw std::runtime_error(frame.data);
+      }
+    }
+    ReadTrace(spawned.trace_fd, &trace);
+    std::string why;
+    if (StopFlag().load()) {
+      KillAndReap(spawned.pid);
+      cleanup();
+      throw std::runtime_error("interrupted (Ctrl-C or SIGTERM) while loading the Python controller " + module_path);
+    }
+    const double waited = Seconds(Clock::now() - started);
+    if (read != RelayLink::Read::kOpen || HasEnded(spawned.pid)) {
+      ReadTrace(spawned.trace_fd, &trace);
+      const bool in_call = spawned.cell[0].load() != 0;
+      const int64_t robot = spawned.cell[1].load();
+      why = (in_call ? CallTextOf(robot, -1) : std::string("the check")) +
+            " ended its Python process: " + ExitTextOf(KillAndReap(spawned.pid)) + " (os._exit, or a crash)";
+    } else if (waited > kKillFraction * limits.start_timeout_s) {
+      const int64_t robot = spawned.cell[1].load();
+      RequestTrace(spawned.pid, spawned.trace_fd, &trace);
+      KillAndReap(spawned.pid);
+      why = StuckTextOf(-1, robot, -1, limits);
+    } else {
+      continue;
+    }
+    ReadTrace(spawned.trace_fd, &trace);
+    cleanup();
+    const std::string line = TracedLineOf(trace, module_path);
+    throw config::ConfigError((line.empty() ? module_path : line) + ": " + why);
+  }
+}
+
+PythonHostProcess::PythonHostProcess(lcm::LcmBus& bus, const std::string& spec_json,
+                                     const std::vector<int>& robot_ids, int64_t agent_id, const Limits& limits)
+    : bus_(bus), robot_ids_(robot_ids), agent_id_(agent_id), limits_(WithDefaults(limits)),
+      module_path_(ModulePathOf(spec_json)) {
+  started_ = Clock::now();
+  const Spawned spawned = SpawnHost();
+  pid_ = spawned.pid;
+  link_ = std::make_unique<RelayLink>(spawned.link_fd);
+  trace_fd_ = spawned.trace_fd;
+  cell_ = spawned.cell;
+  wake_fd_ = ::eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK);
+  // Written before the relay starts: the process reads it first.
+  const std::string start = StartFrame(spec_json, robot_ids, agent_id, limits_, false);
+  RelayLink::Encode('S', "", start.data(), start.size(), &outbox_);
+  // The bus may outlive this object: its handler then does nothing.
+  bus_.Subscribe("DREAM_(POSES|OBSTACLES|STATUS|RADIO_[0-9]+)",
+                 [this, alive = alive_](const std::string& channel, const void* data, int size) {
+                   if (alive->load()) OnBusMessage(channel, data, size);
+                 });
+  relay_ = std::thread(&PythonHostProcess::RelayLoop, this);
+}
+
+PythonHostProcess::~PythonHostProcess() {
+  alive_->store(false);
+  quit_.store(true);
+  if (relay_.joinable()) relay_.join();
+  bool ended = false;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    ended = ended_;
+    ended_ = true;  // the bus's handler forwards nothing more
+  }
+  if (!ended) {
+    // The end of the stream stops it (dream-agent --python-host); a grace
+    // period, then the group goes, whatever it forked or ignores.
+    link_->Shutdown();
+    const auto until = Clock::now() + std::chrono::duration<double>(kGraceS);
+    while (!HasEnded(pid_) && Clock::now() < until) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    KillAndReap(pid_);
+  }
+  if (trace_fd_ >= 0) ::close(trace_fd_);
+  if (wake_fd_ >= 0) ::close(wake_fd_);
+  if (cell_ != nullptr) ::munmap(cell_, kCellBytes);
+}
+
+void PythonHostProcess::OnBusMessage(const std::string& channel, const void* data, int size) {
+  // Radio this host's process sent comes back from the bus: it heard it already.
+  if (channel.rfind("DREAM_RADIO_", 0) == 0 && size >= kAgentIdAt + 8 && BigEndian64(data, kAgentIdAt) == agent_id_) {
+    return;
+  }
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (ended_) return;
+    if (channel == "DREAM_POSES" && size >= kRunIdAt + 8) {
+      world_step_ = {BigEndian64(data, kUtimeAt), BigEndian64(data, kStepAt), BigEndian64(data, kRunIdAt)};
+    }
+    if (outbox_.size() > kMaxOutboxBytes) return;
+    const bool was_empty = outbox_.empty();
+    RelayLink::Encode('M', channel, data, static_cast<size_t>(size), &outbox_);
+    if (was_empty) {
+      // Straight to the socket when it takes it (the usual case): no wake-up
+      // of the relay thread on the step's path.
+      const ssize_t sent = ::send(link_->fd(), outbox_.data(), outbox_.size(), MSG_DONTWAIT | MSG_NOSIGNAL);
+      if (sent > 0) outbox_.erase(0, static_cast<size_t>(sent));
+      if (outbox_.empty()) return;
+    }
+  }
+  const uint64_t one = 1;
+  const ssize_t written = ::write(wake_fd_, &one, sizeof one);
+  (void)written;
+}
+
+bool PythonHostProcess::Ended() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return ended_;
+}
+
+void PythonHostProcess::RelayLoop() {
+  while (!quit_.load()) {
+    bool writing = false;
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      writing = !outbox_.empty();
+    }
+    pollfd fds[3] = {{link_->fd(), static_cast<short>(POLLIN | (writing ? POLLOUT : 0)), 0},
+                     {wake_fd_, POLLIN, 0},
+                     {trace_fd_, POLLIN, 0}};
+    ::poll(fds, 3, 20);
+    if (fds[1].revents & POLLIN) {
+      uint64_t count = 0;
+      const ssize_t got = ::read(wake_fd_, &count, sizeof count);
+      (void)got;
+    }
+    if (fds[2].revents & POLLIN) ReadTrace(trace_fd_, &trace_);
+    std::vector<RelayLink::Frame> frames;
+    std::string problem;
+    const RelayLink::Read read = link_->ReadAvailable(&frames, &problem);
+    for (const RelayLink::Frame& frame : frames) HandleFrame(frame);
+    if (read == RelayLink::Read::kMalformed) {
+      EndProcess("its Python process sent dream " + problem +
+                     " on its link (a controller writing on dream's descriptors, or forking)",
+                 "", false);
+      return;
+    }
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      if (!outbox_.empty()) {
+        const ssize_t sent = ::send(link_->fd(), outbox_.data(), outbox_.size(), MSG_DONTWAIT | MSG_NOSIGNAL);
+        if (sent > 0) outbox_.erase(0, static_cast<size_t>(sent));
+      }
+    }
+    std::string how;
+    if (read == RelayLink::Read::kClosed) {
+      // It closed the link: it is ending (a moment to see it), or a controller closed the descriptor.
+      const auto until = Clock::now() + std::chrono::milliseconds(200);
+      while (!HasEnded(pid_) && Clock::now() < until) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      if (!HasEnded(pid_)) {
+        EndProcess("its Python process closed its link to dream (a controller closing dream's descriptors?)", "",
+                   true);
+        return;
+      }
+    }
+    if (HasEnded(pid_, &how)) {
+      // What it sent last (a fault, its report) counts.
+      frames.clear();
+      link_->ReadAvailable(&frames, &problem);
+      for (const RelayLink::Frame& frame : frames) HandleFrame(frame);
+      EndProcess("", how, false);
+      return;
+    }
+    const std::string stuck = StuckCall(Clock::now());
+    if (!stuck.empty()) {
+      EndProcess(stuck, "", true);
+      return;
+    }
+  }
+}
+
+void PythonHostProcess::HandleFrame(const RelayLink::Frame& frame) {
+  bool publish = false;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    publish = Take(frame);
+  }
+  // Not under mutex_: the bus's handlers take it (OnBusMessage).
+  if (publish) bus_.Publish(frame.channel, frame.data.data(), static_cast<int>(frame.data.size()));
+}
+
+bool PythonHostProcess::Take(const RelayLink::Frame& frame) {
+  switch (frame.kind) {
+    case 'M': {
+      // Only what the process may say: its robots' commands, radio and faults.
+      static const std::regex kOwn("DREAM_(CMD|RADIO|FAULT)_([0-9]{1,6})");
+      std::smatch match;
+      if (!std::regex_match(frame.channel, match, kOwn) ||
+          std::find(robot_ids_.begin(), robot_ids_.end(), std::stoi(match[2].str())) == robot_ids_.end()) {
+        spdlog::warn("the Python controllers' process published on {}, not a channel of its robots: dropped",
+                     frame.channel);
+        return false;
+      }
+      const int size = static_cast<int>(frame.data.size());
+      if (match[1] == "CMD" && size >= kRunIdAt + 8) {
+        answered_step_ = {BigEndian64(frame.data.data(), kUtimeAt), BigEndian64(frame.data.data(), kStepAt),
+                          BigEndian64(frame.data.data(), kRunIdAt)};
+      } else if (match[1] == "FAULT") {
+        failed_.insert(std::stoi(match[2].str()));
+      }
+      return !ended_;
+    }
+    case 'R':
+      ready_ = true;
+      return false;
+    case 'E':
+      error_ = frame.data;
+      return false;
+    case 'D':
+      try {
+        const nlohmann::json done = nlohmann::json::parse(frame.data);
+        world_finished_ = done.at("world_finished").get<bool>();
+        last_step_answered_ = done.at("last_step_answered").get<int64_t>();
+        end_detail_ = done.at("end_detail").get<std::string>();
+        report_json_ = done.at("report").get<std::string>();
+        done_received_ = true;
+      } catch (const std::exception& error) {
+        spdlog::warn("the Python controllers' process ended with a report dream cannot read: {}", error.what());
+      }
+      return false;
+    default:
+      return false;
+  }
+}
+
+std::string PythonHostProcess::StuckCall(Clock::time_point now) {
+  const int64_t token = cell_[0].load(std::memory_order_relaxed);
+  bool ready = false;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    ready = ready_;
+  }
+  if (token == 0) {
+    watched_token_ = 0;
+    // Between calls: the runtime itself must start within the start limit.
+    if (!ready && Seconds(now - started_) > limits_.start_timeout_s) {
+      char text[200];
+      std::snprintf(text, sizeof text, "the Python controllers' process did not start within the world's "
+                    "start_timeout_s of %g s: it was killed", limits_.start_timeout_s);
+      return text;
+    }
+    return "";
+  }
+  if (token != watched_token_) {
+    watched_token_ = token;
+    watched_since_ = now;
+    return "";
+  }
+  // A step's call from its start; loading and setup() from the process's, as
+  // the world counts its start_timeout_s from before they begin.
+  const double limit_s = token > 0 ? limits_.agent_timeout_s : limits_.start_timeout_s;
+  if (Seconds(now - (token > 0 ? watched_since_ : started_)) <= kKillFraction * limit_s) return "";
+  return StuckTextOf(token, cell_[1].load(), cell_[2].load(), limits_);
+}
+
+void PythonHostProcess::EndProcess(const std::string& why, const std::string& exit_text, bool trace) {
+  // Which call ran, read before the process goes.
+  const int64_t token = cell_[0].load();
+  const int64_t robot = cell_[1].load();
+  const int64_t step = token > 0 ? cell_[2].load() : -1;
+  if (trace) RequestTrace(pid_, trace_fd_, &trace_);
+  // Killed now, reaped after the faults are out: the world's deadline is
+  // near, and a large process takes a while to go.
+  ::kill(-pid_, SIGKILL);
+  ::kill(pid_, SIGKILL);
+  ReadTrace(trace_fd_, &trace_);
+  struct Reap {
+    pid_t pid;
+    ~Reap() { KillAndReap(pid); }
+  } reap{pid_};
+  std::unique_lock<std::mutex> lock(mutex_);
+  ended_ = true;
+  if (why.empty() && done_received_ && exit_text == "exit code 0") return;  // it ended as asked
+  std::string culprit_detail;
+  std::string others_detail;
+  const std::string line = TracedLineOf(trace_, module_path_);
+  const std::string where = line.empty() ? "" : line + ": ";
+  if (!why.empty()) {
+    culprit_detail = where + why;
+  } else if (!error_.empty()) {
+    culprit_detail = (ready_ ? "the Python controllers' process failed: " : "the Python controllers could not start: ") +
+                     error_;
+  } else if (token != 0) {
+    culprit_detail = where + CallTextOf(robot, step) + " ended its Python process: " + exit_text +
+                     " (os._exit, or a crash)";
+  } else {
+    culprit_detail = "the Python process of robots " + JoinIds(robot_ids_) + " ended between calls: " +
+                     exit_text + " (os._exit, or a crash)";
+  }
+  const bool named = token != 0 && robot >= 0;
+  others_detail = named ? "lost with its Python process, ended at robot " + std::to_string(robot) + "'s call: " +
+                              culprit_detail
+                        : culprit_detail;
+  lock.unlock();  // the bus's handlers take it
+  PublishFaults(culprit_detail, named ? robot : -1, others_detail);
+}
+
+void PythonHostProcess::PublishFaults(const std::string& culprit_detail, int64_t culprit,
+                                      const std::string& others_detail) {
+  spdlog::error("{}", culprit_detail);
+  Step at;
+  std::set<int> failed;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    // The run the process answered, at the world's latest step of it.
+    at = answered_step_.run_id != 0 ? answered_step_ : world_step_;
+    if (world_step_.run_id == at.run_id && world_step_.step > at.step) at = world_step_;
+    failed = failed_;
+    failed_.insert(robot_ids_.begin(), robot_ids_.end());
+  }
+  if (at.run_id == 0) {
+    spdlog::error("no world was heard yet: robot(s) {} cannot be reported lost to it", JoinIds(robot_ids_));
+    return;
+  }
+  for (int id : robot_ids_) {
+    if (failed.count(id) != 0) continue;
+    robot_fault_t fault;
+    fault.utime = at.utime;
+    fault.step = at.step;
+    fault.run_id = at.run_id;
+    fault.robot_id = id;
+    fault.agent_id = agent_id_;
+    fault.detail = (id == culprit ? culprit_detail : others_detail).substr(0, 60000);
+    std::string bytes(static_cast<size_t>(fault.getEncodedSize()), '\0');
+    fault.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+    bus_.Publish("DREAM_FAULT_" + std::to_string(id), bytes.data(), static_cast<int>(bytes.size()));
+  }
+}
+
+bool PythonHostProcess::Run(lcm::LcmBus& bus, const std::atomic<bool>& stop, double /*idle_timeout_s*/) {
+  std::optional<Clock::time_point> stopping;
+  while (!Ended()) {
+    bus.HandleSubscriptions(100);
+    if (stop.load() && !stopping) {
+      ::kill(pid_, SIGTERM);  // its watchdog interrupts the running call
+      stopping = Clock::now();
+    }
+    if (stopping && Seconds(Clock::now() - *stopping) > kGraceS) break;  // the destructor kills it
+  }
+  return world_finished();
+}
+
+bool PythonHostProcess::world_finished() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return world_finished_;
+}
+
+int64_t PythonHostProcess::last_step_answered() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return last_step_answered_;
+}
+
+std::string PythonHostProcess::end_detail() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return end_detail_;
+}
+
+std::string PythonHostProcess::ReportJson() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return report_json_;
+}
+
+}  // namespace dream::cli

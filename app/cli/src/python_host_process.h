@@ -1,0 +1,133 @@
+#pragma once
+
+#include <sys/types.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <set>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "dream/lcm/lcm_bus.h"
+#include "dream/python_host/python_agent_host.h"
+#include "relay_link.h"
+
+namespace dream::cli {
+
+/// Python controllers in a process of their own (`dream-agent --python-host`,
+/// in its own process group), relayed to and from a bus of this one over a
+/// socket: nothing a controller does can take the command hosting it down or
+/// hide from it. os._exit() or a crash ends only that process: its robots are
+/// lost, each with a fault naming the exit code or signal (and the line, from
+/// Python's faulthandler, which it sets up). A call stuck outside Python (a
+/// long time.sleep, a blocking read, C code), which the process's own
+/// watchdog cannot stop, is timed here through the call cell the two share:
+/// past kKillFraction of the world's agent_timeout_s (loading and setup(): of
+/// its start_timeout_s) the process group is killed and its robots are lost,
+/// the stuck one with the line it was stuck on. Its signal handlers are its
+/// own, and whatever it forks belongs to its group: the group is killed
+/// (SIGKILL after kGraceS) when this object goes, so no process outlives it.
+///
+/// The relay forwards the world's DREAM_POSES, DREAM_OBSTACLES and
+/// DREAM_STATUS and the other agents' DREAM_RADIO_<id> to the process, and
+/// its DREAM_CMD_<id>, DREAM_RADIO_<id> and DREAM_FAULT_<id> back, in order.
+class PythonHostProcess final : public python_host::PythonAgentHost {
+ public:
+  struct Limits {
+    /// The world's agent_timeout_s and start_timeout_s (0: the defaults).
+    double agent_timeout_s = 0.0;
+    double start_timeout_s = 0.0;
+    /// The host ends after this long without a step of its run (0: never;
+    /// it ends when this object goes).
+    double idle_timeout_s = 0.0;
+  };
+  /// A call is ended at this fraction of its limit: after the process's own
+  /// watchdog (0.8, which stops a call running Python code with the line it
+  /// was on), before the world gives up on the robot as silent (1.0).
+  static constexpr double kKillFraction = 0.9;
+  /// How long the process gets to end by itself before SIGKILL.
+  static constexpr double kGraceS = 1.0;
+
+  /// Loads the controller's module and class and checks its own keys, in a
+  /// process of its own. @throws config::ConfigError naming file, line and
+  /// key, also when loading the module ends or hangs the process;
+  /// std::runtime_error when Python cannot start or the check is interrupted.
+  static void Check(const std::string& spec_json, double start_timeout_s);
+
+  /// Starts the process for the agents of `robot_ids` and relays `bus`;
+  /// returns at once (loading and setup() run there, bounded as above).
+  PythonHostProcess(lcm::LcmBus& bus, const std::string& spec_json, const std::vector<int>& robot_ids,
+                    int64_t agent_id, const Limits& limits);
+  ~PythonHostProcess() override;
+  PythonHostProcess(const PythonHostProcess&) = delete;
+  PythonHostProcess& operator=(const PythonHostProcess&) = delete;
+
+  /// Handles `bus` until the process ends (dream agent): true when the
+  /// world ended the run. `stop` ends the process (SIGTERM, then SIGKILL).
+  bool Run(lcm::LcmBus& bus, const std::atomic<bool>& stop, double idle_timeout_s) override;
+  bool world_finished() const override;
+  int64_t last_step_answered() const override;
+  std::string end_detail() const override;
+  std::string ReportJson() const override;
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  /// The world's step the faults this object sends belong to.
+  struct Step {
+    int64_t utime = 0;
+    int64_t step = -1;
+    int64_t run_id = 0;
+  };
+
+  void OnBusMessage(const std::string& channel, const void* data, int size);
+  void RelayLoop();
+  void HandleFrame(const RelayLink::Frame& frame);
+  /// Notes what `frame` says (with mutex_); true when it is to be published.
+  bool Take(const RelayLink::Frame& frame);
+  /// The stuck call's description when the call in the cell ran too long.
+  std::string StuckCall(Clock::time_point now);
+  /// Ends the process group (SIGUSR1 first when `trace`, for the line), reaps
+  /// it, and reports every robot not yet failed as lost: with `why`, or as
+  /// ended by itself (`exit_text`) unless it ended as asked.
+  void EndProcess(const std::string& why, const std::string& exit_text, bool trace);
+  void PublishFaults(const std::string& culprit_detail, int64_t culprit, const std::string& others_detail);
+  bool Ended() const;
+
+  lcm::LcmBus& bus_;
+  std::vector<int> robot_ids_;
+  int64_t agent_id_;
+  Limits limits_;
+  std::string module_path_;
+  pid_t pid_ = -1;
+  std::unique_ptr<RelayLink> link_;
+  int trace_fd_ = -1;
+  int wake_fd_ = -1;
+  std::atomic<int64_t>* cell_ = nullptr;
+  std::thread relay_;
+  std::atomic<bool> quit_{false};
+  std::shared_ptr<std::atomic<bool>> alive_ = std::make_shared<std::atomic<bool>>(true);
+  Clock::time_point started_;
+
+  mutable std::mutex mutex_;  // guards what follows
+  std::string outbox_;        // frames for the process, not yet written
+  bool ready_ = false;
+  bool ended_ = false;
+  bool done_received_ = false;
+  bool world_finished_ = false;
+  int64_t last_step_answered_ = -1;
+  std::string end_detail_;
+  std::string report_json_ = "{}";
+  std::string error_;
+  std::set<int> failed_;  // robots whose fault the process sent
+  Step world_step_;       // the latest DREAM_POSES forwarded
+  Step answered_step_;    // the step of the process's latest answer (its run)
+  std::string trace_;     // faulthandler's output so far
+  int64_t watched_token_ = 0;
+  Clock::time_point watched_since_;
+};
+
+}  // namespace dream::cli

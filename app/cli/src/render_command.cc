@@ -1,0 +1,287 @@
+// dream render: pictures, videos and metric plots of a recorded run
+// (docs/rendering.md).
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <stdexcept>
+
+#include "command_line.h"
+#include "commands.h"
+#include "dream/run_config/run_config.h"
+#include "dream/render/ffmpeg_encoder.h"
+#include "dream/render/metric_plot.h"
+#include "dream/render/render_format.h"
+#include "dream/robotarium/robotarium_constants.h"
+#include "dream/render/run_animation.h"
+#include "dream/render/run_geometry.h"
+#include "dream/render/trajectory_picture.h"
+#include "dream/session/render_overlays.h"
+#include "shared_options.h"
+
+namespace dream::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A failure of the command line itself (exit 2), as opposed to its inputs (exit 1).
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+enum class Kind { kPicture, kVideo, kPlot };
+
+/// The default output beside the log: trajectories.svg, run.mp4 or
+/// metrics.png; for a log not called run.lcmlog, its name before them
+/// (lab1.lcmlog -> lab1_trajectories.svg, lab1.mp4, lab1_metrics.png).
+fs::path DefaultOutput(const fs::path& log, Kind kind) {
+  const bool run_log = log.filename() == "run.lcmlog";
+  const std::string stem = log.stem().string();
+  switch (kind) {
+    case Kind::kVideo: return log.parent_path() / (run_log ? "run.mp4" : stem + ".mp4");
+    case Kind::kPlot: return log.parent_path() / (run_log ? "metrics.png" : stem + "_metrics.png");
+    case Kind::kPicture: break;
+  }
+  return log.parent_path() / (run_log ? "trajectories.svg" : stem + "_trajectories.svg");
+}
+
+Kind KindOf(const RenderArgs& args) {
+  const bool plot = args.plot || !args.metrics.empty();
+  if (plot && args.video) throw UsageError("--plot/--metric and --video: pick one");
+  if (args.out.empty()) return plot ? Kind::kPlot : args.video ? Kind::kVideo : Kind::kPicture;
+  const std::optional<render::RenderFormat> format = render::RenderFormatOfPath(args.out);
+  if (!format) {
+    throw UsageError("--out " + args.out + ": unknown extension '" + fs::path(args.out).extension().string() +
+                     "'; allowed: " + render::RenderFormatExtensions());
+  }
+  if (render::IsPictureFormat(*format)) {
+    if (args.video) throw UsageError("--video needs an --out ending in .mp4 or .gif, got " + args.out);
+    return plot ? Kind::kPlot : Kind::kPicture;
+  }
+  if (plot) throw UsageError("--plot/--metric draw a .png or .svg, got --out " + args.out);
+  return Kind::kVideo;
+}
+
+/// The run's config: --config, else config.yaml beside the log when there.
+/// A broken config.yaml beside the log is only a warning unless `needed`.
+std::optional<run_config::RunConfig> LoadConfig(const RenderArgs& args, const fs::path& log, bool needed) {
+  if (!args.config_path.empty()) return run_config::LoadRunConfigFile(args.config_path);
+  const fs::path beside = log.parent_path() / "config.yaml";
+  if (!fs::is_regular_file(beside)) return std::nullopt;
+  try {
+    return run_config::LoadRunConfigFile(beside.string());
+  } catch (const std::exception& e) {
+    if (needed) throw;
+    spdlog::warn("drawing without the config's goals: {}", e.what());
+    return std::nullopt;
+  }
+}
+
+render::ArenaOverlays Overlays(const RenderArgs& args, const fs::path& log, int log_robots) {
+  const bool needed = args.radio_links || args.sensor_ranges;
+  const std::optional<run_config::RunConfig> config = LoadConfig(args, log, needed);
+  if (!config) {
+    if (needed) {
+      throw std::runtime_error(std::string(args.radio_links ? "--radio-links" : "--sensor-ranges") +
+                               " needs the run's config: no config.yaml beside " + log.string() + " (give --config FILE)");
+    }
+    return {};
+  }
+  // Another run's config would draw its goals, radio and sensors on these robots.
+  if (config->num_robots != log_robots) {
+    const std::string mismatch = config->source + " has " + std::to_string(config->num_robots) + " robots, " +
+                                 log.string() + " " + std::to_string(log_robots);
+    if (needed || !args.config_path.empty()) throw std::runtime_error("--config: " + mismatch + ": not this run's config");
+    spdlog::warn("drawing without the config's goals: {}", mismatch);
+    return {};
+  }
+  render::ArenaOverlays overlays;
+  try {
+    overlays = session::ArenaOverlaysFromConfig(*config);
+  } catch (const std::exception& e) {
+    // Goals are a nicety: without them the log still draws the run.
+    if (needed || !args.config_path.empty()) throw;
+    spdlog::warn("drawing without the config's goals: {}", e.what());
+    return {};
+  }
+  if (args.radio_links && !overlays.hears) {
+    throw std::runtime_error("--radio-links: the robots of " + config->source + " have no radio (controller.radio)");
+  }
+  if (args.sensor_ranges && overlays.sensor_reaches.empty()) {
+    throw std::runtime_error("--sensor-ranges: the robots of " + config->source +
+                             " have no movement or obstacle sensor (controller.sensors)");
+  }
+  overlays.draw_radio_links = args.radio_links;
+  overlays.draw_sensor_ranges = args.sensor_ranges;
+  return overlays;
+}
+
+/// The run's name and verdict from summary.json beside `log`, when it is
+/// there and holds them (the pictures' captions show them).
+void RunLabelFromSummary(const fs::path& log, render::ArenaOverlays* overlays) {
+  const fs::path summary_path = log.parent_path() / "summary.json";
+  if (!fs::is_regular_file(summary_path)) return;
+  std::ifstream in(summary_path);
+  const nlohmann::json summary = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (summary.is_discarded() || !summary.is_object()) return;  // a label is a nicety, not worth failing for
+  if (summary.contains("run") && summary["run"].is_string()) overlays->run_name = summary["run"].get<std::string>();
+  if (summary.contains("verdict") && summary["verdict"].is_string()) {
+    overlays->verdict = summary["verdict"].get<std::string>();
+  }
+}
+
+/// summary.json's metric series ({"name": [[step, value], ...]}) beside the
+/// log, then the closest approach computed from the log's poses.
+std::vector<render::MetricSeries> MetricSeriesOf(const fs::path& log, const run_log::RunLog& run, std::string* title) {
+  std::vector<render::MetricSeries> series;
+  const fs::path summary_path = log.parent_path() / "summary.json";
+  *title = log.string();
+  if (fs::is_regular_file(summary_path)) {
+    std::ifstream in(summary_path);
+    const nlohmann::json summary = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+    if (summary.is_discarded()) throw std::runtime_error(summary_path.string() + ": not valid JSON");
+    if (summary.contains("run") && summary["run"].is_string()) *title = summary["run"].get<std::string>();
+    if (summary.contains("metrics") && summary["metrics"].is_object()) {
+      for (const auto& [name, value] : summary["metrics"].items()) {
+        if (!value.is_array() || value.empty()) continue;
+        render::MetricSeries s;
+        s.name = name;
+        for (const auto& point : value) {
+          if (!point.is_array() || point.size() != 2 || !point[0].is_number() || !point[1].is_number()) break;
+          s.points.push_back({point[0].get<double>(), point[1].get<double>()});
+        }
+        if (s.points.size() == value.size()) series.push_back(std::move(s));
+      }
+    }
+  }
+  render::MetricSeries closest;
+  closest.name = "min_distance_m";
+  closest.points = render::MinimumDistanceSeries(run);
+  closest.limit = robotarium::RobotariumConstants::kCollisionDiameterMeters;
+  closest.limit_label = "collision distance 0.135 m";
+  if (!closest.points.empty()) series.push_back(std::move(closest));
+  return series;
+}
+
+std::vector<render::MetricSeries> PickMetrics(std::vector<render::MetricSeries> all, const std::vector<std::string>& names,
+                                           const fs::path& log) {
+  std::string available;
+  for (const render::MetricSeries& s : all) available += (available.empty() ? "" : ", ") + s.name;
+  if (all.empty()) throw std::runtime_error(log.string() + ": no metric series to plot (a single robot, no summary.json)");
+  if (names.empty()) return all;
+  std::vector<render::MetricSeries> picked;
+  for (const std::string& name : names) {
+    auto found = std::find_if(all.begin(), all.end(), [&](const render::MetricSeries& s) { return s.name == name; });
+    if (found == all.end()) throw std::runtime_error("--metric " + name + ": not a series of this run; it has: " + available);
+    picked.push_back(*found);
+  }
+  return picked;
+}
+
+void CheckOutputFolder(const fs::path& out) {
+  const fs::path folder = out.has_parent_path() ? out.parent_path() : fs::path(".");
+  if (!fs::is_directory(folder)) {
+    throw std::runtime_error("--out " + out.string() + ": " +
+                             (fs::exists(folder) ? folder.string() + " is a file, not a folder"
+                                                 : "the folder " + folder.string() + " does not exist"));
+  }
+}
+
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+int RunRender(const RenderArgs& args) {
+  const auto start = std::chrono::steady_clock::now();
+  Kind kind;
+  try {
+    kind = KindOf(args);
+  } catch (const UsageError& e) {
+    std::cerr << "dream: " << e.what() << " (dream render --help)\n";
+    return kExitUsage;
+  }
+  const fs::path log = RunLogPath(args.input);
+  const fs::path out = args.out.empty() ? DefaultOutput(log, kind) : fs::path(args.out);
+  const render::RenderFormat format = *render::RenderFormatOfPath(out.string());
+  CheckOutputFolder(out);
+
+  const run_log::RunLog run = run_log::RunLog::Read(log.string());
+  render::Drawable(run);
+  if (kind == Kind::kPlot) {
+    std::string title;
+    const std::vector<render::MetricSeries> series = PickMetrics(MetricSeriesOf(log, run, &title), args.metrics, log);
+    render::MetricPlot::Render(series, title, out.string(), format, args.width_px > 0 ? args.width_px : 1000);
+    std::cout << "plot:    " << out.string() << " (" << series.size() << " series)\n";
+    return kExitOk;
+  }
+  render::ArenaOverlays overlays = Overlays(args, log, run.num_robots());
+  RunLabelFromSummary(log, &overlays);
+  if (kind == Kind::kPicture) {
+    render::TrajectoryPicture::Render(run, overlays, out.string(), format, args.width_px > 0 ? args.width_px : 1280);
+    std::cout << "picture: " << out.string() << " (" << run.num_robots() << " robots, " << run.poses().size()
+              << " steps, " << SecondsSince(start) << " s)\n";
+    return kExitOk;
+  }
+
+  if (!render::FfmpegEncoder::IsInstalled()) throw std::runtime_error(render::FfmpegEncoder::NotInstalledMessage());
+  const bool gif = format == render::RenderFormat::kGif;
+  render::AnimationOptions options;
+  options.width_px = args.width_px > 0 ? args.width_px : gif ? 480 : 720;
+  options.fps = args.fps > 0 ? args.fps : gif ? 15 : 30;
+  options.speed = args.speed;
+  options.trail_s = args.trail_s;
+  render::RunAnimation animation(run, overlays, options);
+  spdlog::info("rendering {} frames ({:.1f} s of video at {} fps) to {}", animation.frame_count(),
+               animation.duration_s(), options.fps, out.string());
+  if (!animation.Write(out.string(), format, [] { return StopFlag().load(); })) {
+    std::cerr << "dream: interrupted; " << out.string() << " not written\n";
+    return kExitInterrupted;
+  }
+  std::cout << "video:   " << out.string() << " (" << animation.frame_count() << " frames, " << animation.duration_s()
+            << " s at " << options.fps << " fps, " << animation.layout().width_px() << "x"
+            << animation.layout().height_px() << ", " << SecondsSince(start) << " s)\n";
+  return kExitOk;
+}
+
+void DeclareRenderCommand(CommandLine& line) {
+  const auto [command, args] = line.AddCommand<RenderArgs>(
+      "render",
+      "Draw a recorded run (simulated or imported from the lab): the arena with trajectories, obstacles,\n"
+      "goals and final poses (.png/.svg), a video of the run (.mp4/.gif, needs ffmpeg), or the metrics\n"
+      "over time (--plot). --out's extension picks; without --out: trajectories.svg, run.mp4 (--video)\n"
+      "or metrics.png (--plot) beside the log.\n"
+      "Example: dream render runs/hrvo_circle --out runs/hrvo_circle/run.mp4 --radio-links",
+      RunRender);
+  AddRunLogArgument(command, "run", &args->input);
+  command->add_option("--out", args->out, "Output file: .png, .svg, .mp4 or .gif");
+  command->add_option("--config", args->config_path,
+                      "The run's config, for goals, sensors and radio (default: config.yaml beside the log)");
+  command->add_flag("--video", args->video, "Without --out: write run.mp4 beside the log");
+  command->add_flag("--plot", args->plot, "Plot the metrics over time (summary.json's series and the closest approach)");
+  command->add_option("--metric", args->metrics, "Plot only this series (repeat for more; implies --plot)")
+      ->allow_extra_args(false);
+  command->add_flag("--radio-links", args->radio_links,
+                    "Draw radio broadcasts from sender to the robots that hear it (from the config's radio)");
+  command->add_flag("--sensor-ranges", args->sensor_ranges,
+                    "Draw the reach of the movement/obstacle sensors round each robot");
+  command->add_option("--width", args->width_px, "Width in pixels (default 1280 picture, 1000 plot, 720 MP4, 480 GIF)")
+      ->check(CLI::Range(160, 8192));
+  command->add_option("--fps", args->fps, "Video frames per second (default 30 MP4, 15 GIF)")
+      ->check(CLI::Range(1.0, 120.0));
+  command->add_option("--speed", args->speed, "Simulated seconds per video second")
+      ->check(CLI::Range(0.01, 10000.0))
+      ->capture_default_str();
+  command->add_option("--trail", args->trail_s, "Seconds of simulated time drawn behind each robot")
+      ->check(Seconds(true))
+      ->capture_default_str();
+}
+
+}  // namespace dream::cli

@@ -1,0 +1,51 @@
+#include <spdlog/spdlog.h>
+
+#include <memory>
+#include <numeric>
+
+#include "hosted_agents.h"
+#include "command_line.h"
+#include "commands.h"
+#include "dream/lcm/lcm_bus.h"
+#include "dream/lcm/lcm_url.h"
+#include "run_output.h"
+#include "shared_options.h"
+
+namespace dream::cli {
+
+int RunEmbedded(const RunArgs& args) {
+  const std::unique_ptr<session::RunSession> run = OpenRunSession(args);
+  const run_config::RunConfig& config = run->config();
+  // One process: the world and every agent share one bus, memq:// unless the
+  // user asks for a real transport.
+  lcm::LcmBus bus(args.lcm_url.empty() ? "memq://" : lcm::ResolveLcmUrl(args.lcm_url));
+  const std::string out_dir = PrepareOutputDir(args, config);
+  std::vector<int> ids(static_cast<size_t>(config.num_robots));
+  std::iota(ids.begin(), ids.end(), 0);
+  const HostedAgents agents(bus, config, ids, run->factory(),
+                            {config.sim.agent_timeout_s, config.sim.start_timeout_s, 0.0});
+  return ExitCodeFor(run->Run(bus, {out_dir, ConfigTextForRunFolder(args, config)}));
+}
+
+int RunSimOnly(const RunArgs& args) {
+  const std::unique_ptr<session::RunSession> run = OpenRunSession(args);
+  lcm::LcmBus bus(lcm::ResolveLcmUrl(args.lcm_url));
+  const std::string out_dir = PrepareOutputDir(args, run->config());
+  return ExitCodeFor(run->Run(bus, {out_dir, ConfigTextForRunFolder(args, run->config())}));
+}
+
+void DeclareRunCommand(CommandLine& line) {
+  AddRunCommand(line, "run",
+                "Run an experiment in one process: the simulator and every robot's agent on one bus.\n"
+                "Example: dream run config/go_to_goal.yaml --seed 7 --set controller.max_speed_mps=0.1",
+                RunEmbedded, "LCM URL (default memq://, in-process)");
+}
+
+void DeclareSimCommand(CommandLine& line) {
+  AddRunCommand(line, "sim",
+                "Run only the simulator; agents run elsewhere (dream agent) on the same LCM URL.\n"
+                "Example: dream sim config/go_to_goal.yaml --lcm-url 'udpm://239.255.76.67:7667?ttl=0'",
+                RunSimOnly, "LCM URL (default $LCM_DEFAULT_URL, else udpm://239.255.76.67:7667?ttl=0)");
+}
+
+}  // namespace dream::cli

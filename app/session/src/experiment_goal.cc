@@ -1,0 +1,65 @@
+#include "dream/session/experiment_goal.h"
+
+namespace dream::session {
+namespace {
+
+double Number(const nlohmann::json& object, const std::string& key, double fallback) {
+  if (!object.is_object()) return fallback;
+  const auto it = object.find(key);
+  return it != object.end() && it->is_number() ? it->get<double>() : fallback;
+}
+
+}  // namespace
+
+ExperimentGoal ExperimentGoal::Judge(const nlohmann::json& summary) {
+  ExperimentGoal goal;
+  const nlohmann::json metrics =
+      summary.is_object() && summary.contains("metrics") ? summary["metrics"] : nlohmann::json();
+  if (metrics.is_object() && metrics.contains("kind") && metrics["kind"].is_string()) goal.kind = metrics["kind"];
+  // The kind's own rule wrote metrics.goal (ExperimentMetrics::JudgeGoal).
+  const nlohmann::json judged =
+      metrics.is_object() && metrics.contains("goal") ? metrics["goal"] : nlohmann::json();
+  if (metrics.is_object() && metrics.contains("error")) {
+    goal.has_criterion = true;
+    goal.detail = "no metrics: " + (metrics["error"].is_string() ? metrics["error"].get<std::string>() : "");
+    return goal;
+  }
+  if (judged.is_object()) {
+    goal.has_criterion = true;
+    goal.met = judged.contains("met") && judged["met"].is_boolean() && judged["met"].get<bool>();
+    goal.completion_step = static_cast<long long>(Number(judged, "completion_step", -1.0));
+    goal.detail = judged.contains("detail") && judged["detail"].is_string() ? judged["detail"].get<std::string>()
+                                                                            : std::string();
+    return goal;
+  }
+  // A kind without a rule of its own (e.g. a one-class plugin): the run's own
+  // "every robot reported done" is its completion.
+  goal.met = true;
+  goal.detail = "no goal defined for this kind";
+  const double robots = Number(summary, "robots", -1.0);
+  const nlohmann::json done =
+      summary.is_object() && summary.contains("robots_done") ? summary["robots_done"] : nlohmann::json();
+  const double done_count =
+      done.is_array() ? static_cast<double>(done.size()) : (done.is_number() ? done.get<double>() : -2.0);
+  if (robots > 0 && done_count == robots) goal.completion_step = static_cast<long long>(Number(summary, "steps", -1.0));
+  return goal;
+}
+
+std::optional<world::VerdictReason> ExperimentGoal::Reason() const {
+  if (!has_criterion || met) return std::nullopt;
+  return world::VerdictReason{"goal", world::RunVerdict::kNotReady,
+                            "the " + kind + " experiment missed its goal: " + detail,
+                            "summary.json metrics; dream render RUN --plot shows them over time"};
+}
+
+nlohmann::ordered_json ExperimentGoal::Json() const {
+  nlohmann::ordered_json json;
+  json["kind"] = kind;
+  json["has_criterion"] = has_criterion;
+  json["met"] = met;
+  json["completion_step"] = completion_step;
+  json["detail"] = detail;
+  return json;
+}
+
+}  // namespace dream::session

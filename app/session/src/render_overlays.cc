@@ -1,0 +1,74 @@
+#include "dream/session/render_overlays.h"
+
+#include <memory>
+#include <vector>
+
+#include "dream/agent_host/agent_parts_config.h"
+#include "dream/agent_host/controller_factory.h"
+#include "dream/agent_host/snapshot_from_messages.h"
+#include "dream/agents/framework/world_snapshot.h"
+
+namespace dream::session {
+namespace {
+
+using Points = std::vector<std::array<double, 2>>;
+
+// A robot with no control law: only there so the parts' own MakeSpec builds
+// its radio, exactly as in a run.
+class RadioHolder final : public agents::Robot {
+ public:
+  using agents::Robot::Robot;
+  agents::UnicycleCommand Update(int64_t) override { return {}; }
+};
+
+std::vector<render::SensorReach> SensorReachesOf(const agent_host::AgentPartsConfig& parts) {
+  std::vector<render::SensorReach> reaches;
+  for (const agent_host::SensorConfig& sensor : parts.sensors) {
+    if (sensor.kind == agent_host::SensorConfig::Kind::kMovement) {
+      reaches.push_back({sensor.movement.range_m, sensor.movement.direction_rad, sensor.movement.field_of_view_rad});
+    } else if (sensor.kind == agent_host::SensorConfig::Kind::kObstacle) {
+      reaches.push_back({sensor.obstacle.range_m});
+    }
+  }
+  return reaches;
+}
+
+render::ArenaOverlays::RadioHearing HearingOf(const agent_host::AgentPartsConfig& parts, int num_robots, uint64_t seed) {
+  if (parts.radio.kind == agent_host::RadioConfig::Kind::kNone) return {};
+  auto radios = std::make_shared<std::vector<std::unique_ptr<agents::Radio>>>();
+  for (int id = 0; id < num_robots; ++id) {
+    radios->push_back(parts.MakeSpec(std::make_unique<RadioHolder>(id, parts.robot), seed).radio);
+  }
+  // Radios judge a WorldSnapshot; build it once per step, not once per pair.
+  auto world = std::make_shared<agents::WorldSnapshot>();
+  world->step = -1;
+  return [radios, world](int receiver, int sender, const robot_poses_t& poses) {
+    if (receiver < 0 || receiver >= static_cast<int>(radios->size()) || !(*radios)[static_cast<size_t>(receiver)]) {
+      return false;
+    }
+    if (world->step != poses.step || world->num_robots() != poses.num_robots) agent_host::TakePoses(poses, world.get());
+    return (*radios)[static_cast<size_t>(receiver)]->CanHear(receiver, sender, *world);
+  };
+}
+
+}  // namespace
+
+render::ArenaOverlays ArenaOverlaysFromConfig(const run_config::RunConfig& config) {
+  // The factory loads the config's plugins, checks the kind and reads the parts.
+  return ArenaOverlaysFromConfig(config, agent_host::ControllerFactory(config));
+}
+
+render::ArenaOverlays ArenaOverlaysFromConfig(const run_config::RunConfig& config, const agent_host::ControllerFactory& factory) {
+  const agent_host::AgentPartsConfig& parts = factory.parts();
+  render::ArenaOverlays overlays;
+  for (const std::vector<Eigen::Vector2d>& points : factory.GoalsToDraw()) {
+    Points goals;
+    for (const Eigen::Vector2d& point : points) goals.push_back({point.x(), point.y()});
+    overlays.goals_m.push_back(goals);
+  }
+  overlays.sensor_reaches = SensorReachesOf(parts);
+  overlays.hears = HearingOf(parts, config.num_robots, config.seed);
+  return overlays;
+}
+
+}  // namespace dream::session

@@ -1,0 +1,16 @@
+#include "dream/run_config/world_of_config.h"
+
+#include "dream/world/realistic_world.h"
+#include "dream/world/unicycle_world.h"
+
+namespace dream::run_config {
+
+std::unique_ptr<world::World> WorldOfConfig(const RunConfig& config) {
+  if (config.realism.IsIdeal()) {
+    return std::make_unique<world::UnicycleWorld>(config.world, config.initial_poses, config.obstacles);
+  }
+  return std::make_unique<world::RealisticWorld>(config.world, config.realism, config.seed, config.initial_poses,
+                                               config.obstacles);
+}
+
+}  // namespace dream::run_config
