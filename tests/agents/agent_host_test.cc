@@ -97,12 +97,12 @@ robot_poses_t Poses(int64_t step, int num_robots, int64_t run_id = kRunId) {
 class AgentHostTest : public ::testing::Test {
  protected:
   AgentHostTest() : bus_("memq://") {
-    lcm::Subscribe<velocity_command_t>(
+    subscriptions_.push_back(lcm::Subscribe<velocity_command_t>(
         bus_, lcm::kCommandChannelRegex,
-        [this](const std::string&, const velocity_command_t& c) { commands_.push_back(c); }, bad_);
-    lcm::Subscribe<radio_message_t>(
+        [this](const std::string&, const velocity_command_t& c) { commands_.push_back(c); }, bad_));
+    subscriptions_.push_back(lcm::Subscribe<radio_message_t>(
         bus_, lcm::kRadioChannelRegex,
-        [this](const std::string&, const radio_message_t& m) { radio_.push_back(m); }, bad_);
+        [this](const std::string&, const radio_message_t& m) { radio_.push_back(m); }, bad_));
   }
   void Drain() {
     while (bus_.HandleSubscriptions(0) > 0) {
@@ -112,6 +112,7 @@ class AgentHostTest : public ::testing::Test {
   lcm::BadMessageLog bad_;
   std::vector<velocity_command_t> commands_;
   std::vector<radio_message_t> radio_;
+  std::vector<lcm::Subscription> subscriptions_;  // last: ends before what the handlers use
 };
 
 TEST_F(AgentHostTest, AnswersEachStepOncePerRobotAndRepeatsForResends) {
@@ -160,7 +161,7 @@ TEST_F(AgentHostTest, RadioMessagesOfStepKAreHeardAtStepKPlusOne) {
 // the run was clean. The host gives the robot up instead, saying why.
 TEST_F(AgentHostTest, ARadioPayloadOverTheLimitIsTheControllersFaultNotAMessage) {
   std::vector<robot_fault_t> faults;
-  lcm::Subscribe<robot_fault_t>(
+  const lcm::Subscription fault_reports = lcm::Subscribe<robot_fault_t>(
       bus_, lcm::kFaultChannelRegex, [&](const std::string&, const robot_fault_t& f) { faults.push_back(f); }, bad_);
   int calls = 0;
   std::vector<std::unique_ptr<RobotAgent>> agents;

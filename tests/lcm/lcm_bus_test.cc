@@ -4,6 +4,7 @@
 
 #include <cstdlib>
 #include <stdexcept>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -25,7 +26,7 @@ TEST(LcmBusTest, TypedPublishSubscribeOverMemq) {
   LcmBus bus("memq://");
   BadMessageLog bad;
   std::vector<velocity_command_t> received;
-  Subscribe<velocity_command_t>(
+  const Subscription commands = Subscribe<velocity_command_t>(
       bus, "DREAM_CMD_.*", [&](const std::string&, const velocity_command_t& m) { received.push_back(m); }, bad);
   velocity_command_t command{};
   command.step = 7;
@@ -44,7 +45,7 @@ TEST(LcmBusTest, TypedPublishSubscribeOverMemq) {
 TEST(LcmBusTest, RoutesOfMadeUpChannelsPastTheCapAreNotKeptButStillDelivered) {
   LcmBus bus("memq://");
   int delivered = 0;
-  bus.Subscribe("FLOOD_.*", [&](const std::string&, const void*, int) { ++delivered; });
+  const Subscription flood = bus.Subscribe("FLOOD_.*", [&](const std::string&, const void*, int) { ++delivered; });
   const int channels = static_cast<int>(LcmBus::kMaxRoutedChannels) + 100;
   const char byte = 0;
   for (int i = 0; i < channels; ++i) {
@@ -61,7 +62,7 @@ TEST(LcmBusTest, UndecodableMessagesAreCountedPerChannelNotDelivered) {
   LcmBus bus("memq://");
   BadMessageLog bad;
   int delivered = 0;
-  Subscribe<velocity_command_t>(
+  const Subscription commands = Subscribe<velocity_command_t>(
       bus, "DREAM_CMD_.*", [&](const std::string&, const velocity_command_t&) { ++delivered; }, bad);
   const char garbage[] = "definitely not a velocity_command_t";
   bus.Publish("DREAM_CMD_1", garbage, sizeof(garbage));
@@ -81,8 +82,8 @@ TEST(LcmBusTest, UndecodableMessagesAreCountedPerChannelNotDelivered) {
 TEST(LcmBusTest, ExceptionsInHandlersAreCaughtAndCounted) {
   LcmBus bus("memq://");
   int after = 0;
-  bus.Subscribe("BOOM", [](const std::string&, const void*, int) { throw std::runtime_error("handler bug"); });
-  bus.Subscribe("BOOM", [&](const std::string&, const void*, int) { ++after; });
+  const Subscription failing = bus.Subscribe("BOOM", [](const std::string&, const void*, int) { throw std::runtime_error("handler bug"); });
+  const Subscription after_failing = bus.Subscribe("BOOM", [&](const std::string&, const void*, int) { ++after; });
   const char byte = 1;
   bus.Publish("BOOM", &byte, 1);
   bus.Publish("BOOM", &byte, 1);
@@ -95,7 +96,7 @@ TEST(LcmBusTest, ManyMessagesPerStepAreNotDroppedByTheQueue) {
   // LCM's default queue of 30 would drop most of these before the drain.
   LcmBus bus("memq://");
   int received = 0;
-  bus.Subscribe("DREAM_CMD_.*", [&](const std::string&, const void*, int) { ++received; });
+  const Subscription commands = bus.Subscribe("DREAM_CMD_.*", [&](const std::string&, const void*, int) { ++received; });
   const char byte = 0;
   for (int i = 0; i < 500; ++i) bus.Publish(CommandChannel(i % 50), &byte, 1);
   DrainBus(bus);
@@ -112,7 +113,7 @@ TEST(LcmBusTest, MemqMessageNobodyWantsWhenPublishedIsDroppedWithOrWithoutLcm) {
     const char early = 'e';
     bus.Publish("LATE", &early, 1);
     int heard = 0;
-    bus.Subscribe("LATE", [&](const std::string&, const void*, int) { ++heard; });
+    const Subscription late = bus.Subscribe("LATE", [&](const std::string&, const void*, int) { ++heard; });
     DrainBus(bus);
     EXPECT_EQ(heard, 0) << (through_lcm ? "LCM's memq" : "the bus's own queue") << " delivered a message published "
                         << "before anyone subscribed";
@@ -124,7 +125,7 @@ TEST(LcmBusTest, MemqQueueKeepsLcmsOrderBoundAndDropRule) {
   const char early = 'e';
   bus.Publish("LATE", &early, 1);  // no handler yet: dropped, as LCM drops it
   std::vector<std::string> heard;
-  bus.Subscribe("LATE|ORDER", [&](const std::string& channel, const void* data, int size) {
+  const Subscription late_or_order = bus.Subscribe("LATE|ORDER", [&](const std::string& channel, const void* data, int size) {
     heard.push_back(channel + ":" + std::string(static_cast<const char*>(data), static_cast<size_t>(size)));
   });
   EXPECT_EQ(bus.HandleSubscriptions(0), 0) << "the message published before any handler must be gone";
@@ -147,7 +148,7 @@ TEST(LcmBusTest, MemqQueueKeepsLcmsOrderBoundAndDropRule) {
 TEST(LcmBusTest, MemqBusGoesThroughLcmOnceItsInstanceIsShared) {
   LcmBus bus("memq://");
   std::vector<std::string> bus_heard;
-  bus.Subscribe("TO_BUS|BOTH", [&](const std::string& channel, const void*, int) { bus_heard.push_back(channel); });
+  const Subscription bus_side = bus.Subscribe("TO_BUS|BOTH", [&](const std::string& channel, const void*, int) { bus_heard.push_back(channel); });
   const char byte = 1;
   bus.Publish("BOTH", &byte, 1);  // queued by the bus itself
   lcm_t* shared = bus.c_handle();
@@ -173,9 +174,9 @@ TEST(LcmBusTest, MemqBusGoesThroughLcmOnceItsInstanceIsShared) {
 TEST(LcmBusTest, OverlappingSubscriptionsEachGetEveryMessage) {
   LcmBus bus("memq://");
   int commands = 0, everything = 0, robot_three = 0;
-  bus.Subscribe("DREAM_CMD_.*", [&](const std::string&, const void*, int) { ++commands; });
-  bus.Subscribe(".*", [&](const std::string&, const void*, int) { ++everything; });
-  bus.Subscribe("DREAM_CMD_3", [&](const std::string&, const void*, int) { ++robot_three; });
+  const Subscription commands_only = bus.Subscribe("DREAM_CMD_.*", [&](const std::string&, const void*, int) { ++commands; });
+  const Subscription everything_handler = bus.Subscribe(".*", [&](const std::string&, const void*, int) { ++everything; });
+  const Subscription robot_three_only = bus.Subscribe("DREAM_CMD_3", [&](const std::string&, const void*, int) { ++robot_three; });
   const char byte = 0;
   for (int i = 0; i < 10; ++i) bus.Publish(CommandChannel(i), &byte, 1);
   bus.Publish("DREAM_POSES", &byte, 1);
@@ -190,10 +191,11 @@ TEST(LcmBusTest, HandlerMaySubscribeWhileItRuns) {
   LcmBus bus("memq://");
   int late = 0;
   bool subscribed = false;
-  bus.Subscribe("A", [&](const std::string&, const void*, int) {
+  std::vector<Subscription> late_subscriptions;
+  const Subscription first = bus.Subscribe("A", [&](const std::string&, const void*, int) {
     if (subscribed) return;
     subscribed = true;
-    bus.Subscribe("B", [&](const std::string&, const void*, int) { ++late; });
+    late_subscriptions.push_back(bus.Subscribe("B", [&](const std::string&, const void*, int) { ++late; }));
   });
   const char byte = 0;
   bus.Publish("A", &byte, 1);
@@ -207,7 +209,7 @@ TEST(LcmBusTest, HandlerMaySubscribeWhileItRuns) {
 TEST(LcmBusTest, InvalidChannelRegexNamesIt) {
   LcmBus bus("memq://");
   try {
-    bus.Subscribe("DREAM_CMD_(", [](const std::string&, const void*, int) {});
+    const Subscription never = bus.Subscribe("DREAM_CMD_(", [](const std::string&, const void*, int) {});
     FAIL() << "expected std::invalid_argument";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("DREAM_CMD_("), std::string::npos) << e.what();
@@ -242,6 +244,62 @@ TEST(ChannelsTest, RobotIdFromCommandChannel) {
   EXPECT_FALSE(RobotIdFromCommandChannel("DREAM_CMD_-1"));
   EXPECT_FALSE(RobotIdFromCommandChannel("DREAM_CMD_99999999999"));
   EXPECT_FALSE(RobotIdFromCommandChannel("DREAM_POSES"));
+}
+
+// Issue 24: a subscription lasts as long as its handle, so a host that
+// subscribes its own members is never called after it is gone.
+TEST(LcmBusTest, DestroyingTheSubscriptionStopsItsHandlerOnly) {
+  LcmBus bus("memq://");
+  int kept = 0;
+  int dropped = 0;
+  const Subscription keep = bus.Subscribe("CH", [&](const std::string&, const void*, int) { ++kept; });
+  auto drop = std::make_unique<Subscription>(bus.Subscribe("CH", [&](const std::string&, const void*, int) { ++dropped; }));
+  const char byte = 0;
+  bus.Publish("CH", &byte, 1);
+  DrainBus(bus);
+  drop.reset();
+  bus.Publish("CH", &byte, 1);
+  DrainBus(bus);
+  EXPECT_EQ(kept, 2);
+  EXPECT_EQ(dropped, 1);
+  EXPECT_TRUE(keep.active());
+}
+
+TEST(LcmBusTest, AHandlerMayCancelItsOwnSubscriptionWhileItRuns) {
+  for (const bool through_lcm : {false, true}) {
+    LcmBus bus("memq://");
+    if (through_lcm) bus.c_handle();
+    int heard = 0;
+    Subscription self;
+    self = bus.Subscribe("ONCE", [&](const std::string&, const void*, int) {
+      ++heard;
+      self.Cancel();
+    });
+    const char byte = 0;
+    bus.Publish("ONCE", &byte, 1);
+    bus.Publish("ONCE", &byte, 1);
+    DrainBus(bus);
+    EXPECT_EQ(heard, 1) << (through_lcm ? "LCM's memq" : "the bus's own queue");
+    EXPECT_FALSE(self.active());
+  }
+}
+
+TEST(LcmBusTest, AMovedSubscriptionStaysAndOneOutlivingTheBusIsHarmless) {
+  Subscription outliving;
+  {
+    LcmBus bus("memq://");
+    int heard = 0;
+    Subscription first = bus.Subscribe("CH", [&](const std::string&, const void*, int) { ++heard; });
+    outliving = std::move(first);
+    EXPECT_FALSE(first.active());  // NOLINT(bugprone-use-after-move): moved-from is inactive by contract
+    const char byte = 0;
+    bus.Publish("CH", &byte, 1);
+    DrainBus(bus);
+    EXPECT_EQ(heard, 1);
+  }
+  EXPECT_TRUE(outliving.active());
+  outliving.Cancel();  // the bus is gone: nothing to do, nothing to crash
+  EXPECT_FALSE(outliving.active());
 }
 
 }  // namespace

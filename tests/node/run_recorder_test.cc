@@ -370,7 +370,7 @@ testing::ChildReport RunSimNodeWithFileSizeLimit(const std::string& path, rlim_t
     lcm::BadMessageLog bad;
     // Subscribed before the agents, so the message is queued before their
     // commands and recorded while the world still waits at that step.
-    lcm::Subscribe<robot_poses_t>(bus, "DREAM_POSES", [&](const std::string&, const robot_poses_t& poses) {
+    const lcm::Subscription big_poses = lcm::Subscribe<robot_poses_t>(bus, "DREAM_POSES", [&](const std::string&, const robot_poses_t& poses) {
       if (poses.step != big_message_step) return;
       radio_message_t radio{};
       radio.step = poses.step;

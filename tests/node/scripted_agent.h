@@ -18,9 +18,9 @@ class ScriptedAgent {
 
   ScriptedAgent(lcm::LcmInterface& bus, int robot_id, int64_t agent_id, Decide decide)
       : bus_(bus), robot_id_(robot_id), agent_id_(agent_id), decide_(std::move(decide)) {
-    lcm::Subscribe<robot_poses_t>(
+    subscriptions_.push_back(lcm::Subscribe<robot_poses_t>(
         bus_, lcm::kPosesChannel, [this](const std::string&, const robot_poses_t& poses) { OnPoses(poses); },
-        bad_);
+        bad_));
   }
 
  private:
@@ -39,6 +39,7 @@ class ScriptedAgent {
   int64_t agent_id_;
   Decide decide_;
   lcm::BadMessageLog bad_;
+  std::vector<lcm::Subscription> subscriptions_;  // last: ends before what its handler uses
 };
 
 }  // namespace dream::node::testing

@@ -64,10 +64,10 @@ class SimNodeTest : public ::testing::Test {
 
   /// The lost robots of every DREAM_STATUS the world sends from now on.
   const std::vector<std::vector<int32_t>>& RecordLostRobotsPerStep() {
-    lcm::Subscribe<run_status_t>(
+    subscriptions_.push_back(lcm::Subscribe<run_status_t>(
         bus_, lcm::kStatusChannel,
         [this](const std::string&, const run_status_t& status) { lost_per_step_.push_back(status.lost_robot_ids); },
-        bad_status_);
+        bad_status_));
     return lost_per_step_;
   }
 
@@ -76,6 +76,7 @@ class SimNodeTest : public ::testing::Test {
   std::vector<std::unique_ptr<ScriptedAgent>> agents_;
   std::vector<std::vector<int32_t>> lost_per_step_;
   lcm::BadMessageLog bad_status_;
+  std::vector<lcm::Subscription> subscriptions_;  // last: ends before what the handlers use
 };
 
 TEST_F(SimNodeTest, LockstepRunsEveryStepWithTheAgentsCommands) {
@@ -128,7 +129,7 @@ TEST_F(SimNodeTest, NonFiniteAndAbsurdCommandsAreRejectedAndTheRobotHoldsStill) 
 TEST_F(SimNodeTest, CommandsForUnknownRobotsAndGarbageAreCountedNotFatal) {
   for (int id = 0; id < 3; ++id) AddAgent(id, Forward());
   AddAgent(7, Forward());  // this run has robots 0..2 only
-  bus_.Subscribe(lcm::kPosesChannel, [this](const std::string&, const void*, int) {
+  const lcm::Subscription garbage_sender = bus_.Subscribe(lcm::kPosesChannel, [this](const std::string&, const void*, int) {
     const char garbage[] = "\x01\x02not a command";
     bus_.Publish("DREAM_CMD_1", garbage, sizeof(garbage));
   });
@@ -364,7 +365,7 @@ TEST_F(SimNodeTest, StopFlagInterruptsTheRun) {
   for (int id = 0; id < 3; ++id) AddAgent(id, Forward());
   SimNode node(bus_, world_, nullptr, FastOptions(1000000));
   std::atomic<bool> stop{false};
-  bus_.Subscribe(lcm::kPosesChannel, [&](const std::string&, const void*, int) {
+  const lcm::Subscription stopper = bus_.Subscribe(lcm::kPosesChannel, [&](const std::string&, const void*, int) {
     if (world_.step() == 50) stop = true;
   });
   const RunOutcome outcome = node.Run(stop);
@@ -411,10 +412,10 @@ TEST_F(SimNodeTest, RealTimeRobotOfASilentAgentKeepsItsLastCommandFor15StepsThen
   int64_t last_command_world_step = -1;  // when robot 0's last command reached the world
   std::map<int64_t, std::vector<double>> x_by_step;
   lcm::BadMessageLog bad;
-  lcm::Subscribe<velocity_command_t>(
+  const lcm::Subscription commands = lcm::Subscribe<velocity_command_t>(
       bus_, lcm::CommandChannel(0),
       [&](const std::string&, const velocity_command_t&) { last_command_world_step = world_.step(); }, bad);
-  lcm::Subscribe<robot_poses_t>(
+  const lcm::Subscription poses = lcm::Subscribe<robot_poses_t>(
       bus_, lcm::kPosesChannel, [&](const std::string&, const robot_poses_t& poses) { x_by_step[poses.step] = poses.x; },
       bad);
   AddAgent(0, [](const robot_poses_t& poses, velocity_command_t* command) {

@@ -32,10 +32,10 @@ AgentHost::AgentHost(lcm::LcmInterface& lcm, std::vector<std::unique_ptr<agents:
   // LCM dispatches in arrival order, and a neighbour sends its radio message
   // of step k before its command, which the world needs before it publishes
   // step k + 1: so the mailbox holds it by the time we act on step k + 1.
-  lcm::Subscribe(lcm_, lcm::kRadioChannelRegex, this, &AgentHost::OnRadio, bad_messages_);
-  lcm::Subscribe(lcm_, lcm::kObstaclesChannel, this, &AgentHost::OnObstacles, bad_messages_);
-  lcm::Subscribe(lcm_, lcm::kPosesChannel, this, &AgentHost::OnPoses, bad_messages_);
-  lcm::Subscribe(lcm_, lcm::kStatusChannel, this, &AgentHost::OnStatus, bad_messages_);
+  subscriptions_.push_back(lcm::Subscribe(lcm_, lcm::kRadioChannelRegex, this, &AgentHost::OnRadio, bad_messages_));
+  subscriptions_.push_back(lcm::Subscribe(lcm_, lcm::kObstaclesChannel, this, &AgentHost::OnObstacles, bad_messages_));
+  subscriptions_.push_back(lcm::Subscribe(lcm_, lcm::kPosesChannel, this, &AgentHost::OnPoses, bad_messages_));
+  subscriptions_.push_back(lcm::Subscribe(lcm_, lcm::kStatusChannel, this, &AgentHost::OnStatus, bad_messages_));
 }
 
 AgentHost::~AgentHost() {

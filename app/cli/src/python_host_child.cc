@@ -66,7 +66,8 @@ int RunPythonHostChild() {
     const int64_t agent_id = json.at("agent_id").get<int64_t>();
     lcm::LcmBus bus("memq://");
     // The robots' messages go to the parent; radio from elsewhere came from it.
-    bus.Subscribe("DREAM_(CMD|RADIO|FAULT)_[0-9]+", [&](const std::string& channel, const void* data, int size) {
+    const lcm::Subscription to_parent = bus.Subscribe("DREAM_(CMD|RADIO|FAULT)_[0-9]+", [&](const std::string& channel,
+                                                                                            const void* data, int size) {
       if (channel.rfind("DREAM_RADIO_", 0) == 0) {
         const auto* bytes = static_cast<const unsigned char*>(data);
         uint64_t sender = 0;

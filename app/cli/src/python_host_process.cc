@@ -341,16 +341,16 @@ PythonHostProcess::PythonHostProcess(lcm::LcmBus& bus, const std::string& spec_j
   // Written before the relay starts: the process reads it first.
   const std::string start = StartFrame(spec_json, robot_ids, agent_id, limits_, false);
   RelayLink::Encode('S', "", start.data(), start.size(), &outbox_);
-  // The bus may outlive this object: its handler then does nothing.
-  bus_.Subscribe("DREAM_(POSES|OBSTACLES|STATUS|RADIO_[0-9]+)",
-                 [this, alive = alive_](const std::string& channel, const void* data, int size) {
-                   if (alive->load()) OnBusMessage(channel, data, size);
-                 });
+  // The bus may outlive this object: the subscription ends with it.
+  subscription_ = bus_.Subscribe("DREAM_(POSES|OBSTACLES|STATUS|RADIO_[0-9]+)",
+                                 [this](const std::string& channel, const void* data, int size) {
+                                   OnBusMessage(channel, data, size);
+                                 });
   relay_ = std::thread(&PythonHostProcess::RelayLoop, this);
 }
 
 PythonHostProcess::~PythonHostProcess() {
-  alive_->store(false);
+  subscription_.Cancel();  // no bus message reaches a half-destroyed relay
   quit_.store(true);
   if (relay_.joinable()) relay_.join();
   bool ended = false;

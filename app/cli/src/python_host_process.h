@@ -109,7 +109,7 @@ class PythonHostProcess final : public python_host::PythonAgentHost {
   std::atomic<int64_t>* cell_ = nullptr;
   std::thread relay_;
   std::atomic<bool> quit_{false};
-  std::shared_ptr<std::atomic<bool>> alive_ = std::make_shared<std::atomic<bool>>(true);
+  lcm::Subscription subscription_;  // to the bus's messages for the host; cancelled first when destroyed
   Clock::time_point started_;
 
   mutable std::mutex mutex_;  // guards what follows

@@ -40,8 +40,10 @@ void LcmBus::ResubscribeForAllHandlers() {
   // otherwise wake up for every other robot's command).
   std::string alternatives;
   for (const Subscriber& subscriber : subscribers_) {
+    if (!subscriber.active) continue;
     alternatives += (alternatives.empty() ? "" : "|") + ("(?:" + subscriber.channel_regex_text + ")");
   }
+  if (alternatives.empty()) alternatives = kStartUpChannel;  // nobody listens: LCM drops everything
   ::lcm::Subscription* replacement =
       lcm_->subscribeFunction("(?:" + alternatives + ")", &LcmBus::Dispatch, this);
   if (replacement == nullptr) throw std::runtime_error("cannot subscribe to '" + alternatives + "' on " + url_);
@@ -100,7 +102,7 @@ void LcmBus::Publish(const std::string& channel, const void* data, int size) {
   }
 }
 
-void LcmBus::Subscribe(const std::string& channel_regex, RawHandler handler) {
+Subscription LcmBus::Subscribe(const std::string& channel_regex, RawHandler handler) {
   std::regex regex;
   try {
     regex = std::regex(channel_regex, std::regex::ECMAScript | std::regex::optimize);
@@ -121,6 +123,21 @@ void LcmBus::Subscribe(const std::string& channel_regex, RawHandler handler) {
   for (auto& [channel, targets] : routes_) {
     if (std::regex_match(channel, subscribers_[added].channel_regex)) targets.push_back(added);
   }
+  return Subscription([bus = std::weak_ptr<LcmBus*>(self_), added] {
+    if (const std::shared_ptr<LcmBus*> alive = bus.lock()) (*alive)->Unsubscribe(added);
+  });
+}
+
+void LcmBus::Unsubscribe(size_t index) {
+  const std::lock_guard<std::mutex> lock(queue_mutex_);
+  subscribers_[index].active = false;
+  // Its captures die now, unless a handler is running (it may be this one).
+  if (delivering_ == 0) {
+    subscribers_[index].handler = nullptr;
+  } else {
+    unsubscribed_while_delivering_.push_back(index);
+  }
+  ResubscribeForAllHandlers();
 }
 
 int LcmBus::HandleSubscriptions(int timeout_ms) {
@@ -148,7 +165,7 @@ void LcmBus::Dispatch(const ::lcm::ReceiveBuffer* buffer, const std::string& cha
 std::vector<size_t> LcmBus::MatchSubscribers(const std::string& channel) const {
   std::vector<size_t> matching;
   for (size_t i = 0; i < subscribers_.size(); ++i) {
-    if (std::regex_match(channel, subscribers_[i].channel_regex)) matching.push_back(i);
+    if (subscribers_[i].active && std::regex_match(channel, subscribers_[i].channel_regex)) matching.push_back(i);
   }
   return matching;
 }
@@ -193,9 +210,14 @@ void LcmBus::Deliver(const std::string& channel, const void* data, int size) {
     targets = &RouteOf(channel, &uncached);
     count = targets->size();
     if (targets == &uncached) ++uncached_deliveries_;
+    ++delivering_;
   }
   for (size_t k = 0; k < count; ++k) {
     const size_t index = (*targets)[k];
+    {
+      const std::lock_guard<std::mutex> lock(queue_mutex_);
+      if (!subscribers_[index].active) continue;  // unsubscribed, perhaps by an earlier handler of this message
+    }
     // Nothing may propagate into LCM's C code: log, count, carry on.
     try {
       subscribers_[index].handler(channel, data, size);
@@ -206,6 +228,11 @@ void LcmBus::Deliver(const std::string& channel, const void* data, int size) {
       ++handler_failures_;
       spdlog::error("handler for channel {} failed with an unknown exception", channel);
     }
+  }
+  const std::lock_guard<std::mutex> lock(queue_mutex_);
+  if (--delivering_ == 0) {
+    for (const size_t index : unsubscribed_while_delivering_) subscribers_[index].handler = nullptr;
+    unsubscribed_while_delivering_.clear();
   }
 }
 

@@ -82,7 +82,7 @@ SimNode::SimNode(lcm::LcmInterface& lcm, world::World& world, RunRecorder* recor
   bad_messages_.set_step(world_.step());
   // One handler hears everything, so that what each message turned out to be
   // (used or refused) decides where it is recorded.
-  lcm_.Subscribe(".*", [this](const std::string& channel, const void* data, int size) {
+  subscription_ = lcm_.Subscribe(".*", [this](const std::string& channel, const void* data, int size) {
     OnMessage(channel, data, size);
   });
 }

@@ -120,6 +120,8 @@ class AgentHost {
   /// Radio messages heard before the first DREAM_POSES (a neighbour may
   /// answer step 0 first); delivered on joining if of the joined run.
   std::vector<std::pair<std::string, radio_message_t>> radio_before_joining_;
+  /// Last: unsubscribed first, before anything the handlers use is gone.
+  std::vector<lcm::Subscription> subscriptions_;
 };
 
 }  // namespace dream::agent_host

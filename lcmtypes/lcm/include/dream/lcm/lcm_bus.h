@@ -61,7 +61,7 @@ class LcmBus final : public LcmInterface {
 
   void Publish(const std::string& channel, const void* data, int size) override;
   /// @throws std::invalid_argument naming `channel_regex` when it is not a regex.
-  void Subscribe(const std::string& channel_regex, RawHandler handler) override;
+  Subscription Subscribe(const std::string& channel_regex, RawHandler handler) override;
   int HandleSubscriptions(int timeout_ms) override;
   const std::string& url() const override { return url_; }
   long handler_failures() const override { return handler_failures_; }
@@ -83,11 +83,13 @@ class LcmBus final : public LcmInterface {
     std::regex channel_regex;  // matched against the whole channel name, as LCM does
     std::string channel_regex_text;
     RawHandler handler;
+    bool active = true;  // false once its Subscription is gone; kept so indices stay valid
   };
   /// Where the bus listens before any handler subscribes; nobody publishes there.
   static constexpr const char* kStartUpChannel = "DREAM_LCMBUS_STARTING";
   static void Dispatch(const ::lcm::ReceiveBuffer* buffer, const std::string& channel, LcmBus* bus);
   void Deliver(const std::string& channel, const void* data, int size);
+  void Unsubscribe(size_t index);
   std::vector<size_t> MatchSubscribers(const std::string& channel) const;
   void DiscardStartUpLeftovers();
   void ResubscribeForAllHandlers();
@@ -120,6 +122,12 @@ class LcmBus final : public LcmInterface {
   std::condition_variable queue_filled_;
   std::deque<Queued> queue_;
   long queue_overflows_ = 0;
+  // Handlers running now (Deliver nests when a handler handles); a handler
+  // unsubscribed meanwhile is released once none runs, never while it runs.
+  int delivering_ = 0;
+  std::vector<size_t> unsubscribed_while_delivering_;
+  // What the Subscriptions hold on to: expired once the bus is gone.
+  std::shared_ptr<LcmBus*> self_ = std::make_shared<LcmBus*>(this);
 };
 
 }  // namespace dream::lcm

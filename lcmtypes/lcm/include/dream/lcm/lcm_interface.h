@@ -3,6 +3,8 @@
 #include <functional>
 #include <string>
 
+#include "dream/lcm/subscription.h"
+
 namespace dream::lcm {
 
 /// Receives one raw message: the channel it arrived on and its encoded bytes.
@@ -22,8 +24,9 @@ class LcmInterface {
   /// Calls `handler` for every message whose channel matches the regular
   /// expression `channel_regex` (LCM semantics: the whole name must match).
   /// Exceptions thrown by `handler` are caught, logged and counted; they never
-  /// reach LCM's C code.
-  virtual void Subscribe(const std::string& channel_regex, RawHandler handler) = 0;
+  /// reach LCM's C code. The handler is called until the returned Subscription
+  /// is destroyed: keep it as long as the handler's captures live.
+  [[nodiscard]] virtual Subscription Subscribe(const std::string& channel_regex, RawHandler handler) = 0;
 
   /// Dispatches received messages to their handlers, waiting up to
   /// `timeout_ms` for the first one (0 polls). Returns the number of messages

@@ -46,12 +46,13 @@ bool Decode(const void* data, int size, Message* message) {
 /// Subscribes `handler` to decoded `Message`s on channels matching
 /// `channel_regex`. Undecodable messages are reported to `bad_messages`
 /// (naming the channel, the expected type, what was wrong and, when the bytes
-/// reach it, the sender's agent_id) and dropped.
+/// reach it, the sender's agent_id) and dropped. The handler is called until the
+/// returned Subscription is destroyed.
 template <typename Message>
-void Subscribe(LcmInterface& lcm, const std::string& channel_regex,
+[[nodiscard]] Subscription Subscribe(LcmInterface& lcm, const std::string& channel_regex,
                std::function<void(const std::string& channel, const Message&)> handler,
                BadMessageLog& bad_messages) {
-  lcm.Subscribe(channel_regex, [handler = std::move(handler), &bad_messages](
+  return lcm.Subscribe(channel_regex, [handler = std::move(handler), &bad_messages](
                                    const std::string& channel, const void* data, int size) {
     Message message;
     if (std::optional<std::string> problem = DecodeProblem(data, size, &message)) {
@@ -68,9 +69,10 @@ void Subscribe(LcmInterface& lcm, const std::string& channel_regex,
 /// Subscribe() with a member function of `owner` as the handler, the usual
 /// case for a node: Subscribe(lcm_, kPosesChannel, this, &AgentHost::OnPoses, bad_messages_).
 template <typename Owner, typename Message>
-void Subscribe(LcmInterface& lcm, const std::string& channel_regex, Owner* owner,
-               void (Owner::*on_message)(const std::string& channel, const Message&), BadMessageLog& bad_messages) {
-  Subscribe<Message>(
+[[nodiscard]] Subscription Subscribe(LcmInterface& lcm, const std::string& channel_regex, Owner* owner,
+                                     void (Owner::*on_message)(const std::string& channel, const Message&),
+                                     BadMessageLog& bad_messages) {
+  return Subscribe<Message>(
       lcm, channel_regex,
       [owner, on_message](const std::string& channel, const Message& message) { (owner->*on_message)(channel, message); },
       bad_messages);

@@ -171,6 +171,8 @@ class SimNode {
   Clock::time_point last_resend_;
   ProgressReporter* progress_ = nullptr;
   RefusedRecord* refused_ = nullptr;
+  /// Last: unsubscribed first, before anything the handler uses is gone.
+  lcm::Subscription subscription_;
 };
 
 }  // namespace dream::node
