@@ -1,4 +1,5 @@
 #include "dream/agents/experiments/affine_follower_robot.h"
+#include "dream/agents/fields/field_check.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,16 +32,7 @@ bool AffineFollowerParams::IsValid(std::string* error) const {
     return FailParams(error, "neighbours: the weights sum to " + std::to_string(gamma) +
                                  "; Zhao's law divides by that sum, which must be > 0");
   }
-  if (!CheckPositive(error, "gain", gain) || !CheckMaxSpeed(error, max_speed_mps) ||
-      !CheckPositive(error, "time_step_s", time_step_s)) {
-    return false;
-  }
-  // Not CheckPositive: an infinite distance (HRVO for every sensed robot) is allowed.
-  if (!(hrvo_engage_distance_m > 0.0)) {
-    return FailParams(error, "hrvo_engage_distance_m must be > 0, got " + NumberText(hrvo_engage_distance_m));
-  }
-  return CheckNonNegative(error, "hrvo_horizon_s", hrvo_horizon_s) &&
-         CheckAtLeast(error, "max_message_age_steps", max_message_age_steps, 1);
+  return CheckFields(*this, error) && CheckPositive(error, "time_step_s", time_step_s);
 }
 
 AffineFollowerRobot::AffineFollowerRobot(int id, const RobotParams& robot_params, const HrvoRobotParams& hrvo,

@@ -1,4 +1,5 @@
 #include "dream/agents/experiments/affine_formation_metrics.h"
+#include "dream/agents/fields/field_check.h"
 
 #include <algorithm>
 #include <cmath>
@@ -35,14 +36,10 @@ bool AffineFormationMetricsParams::IsValid(std::string* error) const {
   if (!AffineTransform::Fit(leader_points, leader_points)) {
     return FailParams(error, "leaders: need at least 3 leaders whose nominal points are not collinear");
   }
-  if (!CheckPositive(error, "tolerance_m", tolerance_m)) return false;
-  if (converged_from_step < 0) {
-    return FailParams(error, "converged_from_step must be >= 0, got " + std::to_string(converged_from_step));
-  }
+  if (!CheckFields(*this, error)) return false;
   for (const auto& pair : obstacle_pairs) {
     if (pair[0] < 0 || pair[1] < 0) return FailParams(error, "obstacle_pairs: obstacle ids must be >= 0");
   }
-  if (!CheckAtLeast(error, "series_every_steps", series_every_steps, 1)) return false;
   if (!(collision_diameter_m > 0.0) || !(collision_offset_m >= 0.0)) {
     return FailParams(error, "collision_diameter_m must be > 0 and collision_offset_m >= 0");
   }

@@ -1,4 +1,5 @@
 #include "dream/agents/experiments/affine_leader_robot.h"
+#include "dream/agents/fields/field_check.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -10,8 +11,7 @@ namespace dream::agents {
 
 bool AffineLeaderParams::IsValid(std::string* error) const {
   if (!nominal_m.allFinite()) return FailParams(error, "nominal_m must be finite");
-  return maneuver.IsValid(error) && CheckPositive(error, "gain", gain) && CheckMaxSpeed(error, max_speed_mps) &&
-         CheckPositive(error, "time_step_s", time_step_s);
+  return maneuver.IsValid(error) && CheckFields(*this, error) && CheckPositive(error, "time_step_s", time_step_s);
 }
 
 AffineLeaderRobot::AffineLeaderRobot(int id, const RobotParams& robot_params, const AffineLeaderParams& params)

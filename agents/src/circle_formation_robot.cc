@@ -1,4 +1,5 @@
 #include "dream/agents/experiments/circle_formation_robot.h"
+#include "dream/agents/fields/field_check.h"
 
 #include <algorithm>
 #include <cmath>
@@ -23,8 +24,7 @@ bool CircleFormationParams::IsValid(std::string* error) const {
   for (size_t i = 0; i < goals_m.size(); ++i) {
     if (!goals_m[i].allFinite()) return FailParams(error, "goals_m[" + std::to_string(i) + "] must be finite");
   }
-  return CheckAtLeast(error, "num_robots", num_robots, 1) && CheckPositive(error, "tolerance_m", tolerance_m) &&
-         CheckMaxSpeed(error, max_speed_mps) && CheckPositive(error, "gain", gain) && CheckStop(error, *this);
+  return CheckAtLeast(error, "num_robots", num_robots, 1) && CheckFields(*this, error) && CheckStop(error, *this);
 }
 
 CircleFormationRobot::CircleFormationRobot(int id, const RobotParams& robot_params,

@@ -1,4 +1,5 @@
 #include "dream/agents/experiments/go_to_goal_robot.h"
+#include "dream/agents/fields/field_check.h"
 
 #include <cmath>
 
@@ -8,8 +9,7 @@ namespace dream::agents {
 
 bool GoToGoalParams::IsValid(std::string* error) const {
   if (!goal_m.allFinite()) return FailParams(error, "goal must be finite");
-  return CheckPositive(error, "gain", gain) && CheckMaxSpeed(error, max_speed_mps) &&
-         CheckPositive(error, "tolerance_m", tolerance_m);
+  return CheckFields(*this, error);
 }
 
 GoToGoalRobot::GoToGoalRobot(int id, const RobotParams& robot_params, const GoToGoalParams& params)

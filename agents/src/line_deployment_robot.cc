@@ -1,4 +1,5 @@
 #include "dream/agents/experiments/line_deployment_robot.h"
+#include "dream/agents/fields/field_check.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -10,17 +11,10 @@
 namespace dream::agents {
 
 bool LineDeploymentParams::IsValid(std::string* error) const {
-  if (!CheckPositive(error, "spacing_m", spacing_m) || !CheckPositive(error, "gain", gain) ||
-      !CheckMaxSpeed(error, max_speed_mps) || !CheckPositive(error, "tolerance_m", tolerance_m)) {
-    return false;
-  }
+  if (!CheckFields(*this, error)) return false;
   if (!(resume_m >= tolerance_m) || !std::isfinite(resume_m)) {
     return FailParams(error, "resume_m must be >= tolerance_m (" + NumberText(tolerance_m) + "), got " +
                                  NumberText(resume_m));
-  }
-  if (!CheckNonNegative(error, "hold_avoid_range_m", hold_avoid_range_m) ||
-      !CheckAtLeast(error, "settle_updates", settle_updates, 1)) {
-    return false;
   }
   if (!(arena_margin_m >= 0.0) || !arena_min_m.allFinite() || !arena_max_m.allFinite() ||
       !((arena_max_m - arena_min_m).array() > 2.0 * arena_margin_m).all()) {

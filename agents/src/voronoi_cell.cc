@@ -1,4 +1,5 @@
 #include "dream/agents/geometry/voronoi_cell.h"
+#include "dream/agents/fields/field_check.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,21 +12,14 @@
 namespace dream::agents {
 
 bool VoronoiCellParams::IsValid(std::string* error) const {
-  if (!CheckPositive(error, "disc_radius_m", disc_radius_m) || !CheckAtLeast(error, "disc_sides", disc_sides, 8) ||
-      !CheckArena(error, arena_min_m, arena_max_m)) {
-    return false;
-  }
-  if (disc_sides > kMaxDiscSides) {
-    return FailParams(error, "disc_sides must be in 8.." + std::to_string(kMaxDiscSides) + ", got " +
-                                 std::to_string(disc_sides));
-  }
+  VoronoiCellParams fields = *this;
+  if (!CheckFields(fields, error) || !CheckArena(error, arena_min_m, arena_max_m)) return false;
   if (!(std::isfinite(wall_margin_m) && wall_margin_m >= 0.0) ||
       2.0 * wall_margin_m >= (arena_max_m - arena_min_m).minCoeff()) {
     return FailParams(error, "wall_margin_m must be >= 0 and leave room inside the arena, got " +
                                  NumberText(wall_margin_m));
   }
-  return CheckNonNegative(error, "robot_buffer_m", robot_buffer_m) &&
-         CheckNonNegative(error, "obstacle_buffer_m", obstacle_buffer_m);
+  return true;
 }
 
 VoronoiCell::VoronoiCell(const VoronoiCellParams& params_in, const Eigen::Vector2d& self_m,

@@ -1,4 +1,5 @@
 #include "dream/agents/experiments/voronoi_coverage_metrics.h"
+#include "dream/agents/fields/field_check.h"
 
 #include <cstdio>
 #include <cmath>
@@ -8,15 +9,15 @@
 namespace dream::agents {
 
 bool VoronoiCoverageMetricsParams::IsValid(std::string* error) const {
-  if (!CheckArena(error, arena_min_m, arena_max_m) || !CheckAtLeast(error, "sample_steps", sample_steps, 1) ||
-      !CheckPositive(error, "step_s", step_s) || !CheckPositive(error, "still_speed_mps", still_speed_mps)) {
+  if (!CheckArena(error, arena_min_m, arena_max_m) || !CheckFields(*this, error) ||
+      !CheckPositive(error, "step_s", step_s)) {
     return false;
   }
   if (!(std::isfinite(collision_offset_m) && collision_offset_m >= 0.0) ||
       !(std::isfinite(collision_radius_m) && collision_radius_m >= 0.0)) {
     return FailParams(error, "collision_offset_m and collision_radius_m must be >= 0");
   }
-  return CheckAtLeast(error, "still_window_steps", still_window_steps, 1);
+  return true;
 }
 
 VoronoiCoverageMetrics::VoronoiCoverageMetrics(const VoronoiCoverageMetricsParams& params)

@@ -1,4 +1,5 @@
 #include "dream/agents/experiments/voronoi_coverage_robot.h"
+#include "dream/agents/fields/field_check.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,10 +12,7 @@
 namespace dream::agents {
 
 bool VoronoiCoverageParams::IsValid(std::string* error) const {
-  return cell.IsValid(error) && CheckPositive(error, "gain", gain) && CheckMaxSpeed(error, max_speed_mps) &&
-         CheckPositive(error, "tolerance_m", tolerance_m) && CheckPositive(error, "step_s", step_s) &&
-         CheckAtLeast(error, "done_after_still_steps", done_after_still_steps, 1) &&
-         CheckAtLeast(error, "radio_rounds_before_moving", radio_rounds_before_moving, 0);
+  return cell.IsValid(error) && CheckFields(*this, error) && CheckPositive(error, "step_s", step_s);
 }
 
 VoronoiCoverageRobot::VoronoiCoverageRobot(int id, const RobotParams& robot_params,

@@ -1,4 +1,5 @@
 #include "dream/agent_host/affine_formation_builder.h"
+#include "dream/agent_host/field_reader.h"
 
 #include <algorithm>
 #include <cmath>
@@ -107,6 +108,29 @@ AgentPartsConfig AffineFormationBuilder::DefaultParts(int num_robots) {
 }
 
 AffineFormationBuilder::AffineFormationBuilder(const ConfigNode& section, int num_robots) {
+  Section fields;
+  ReadFields(section, num_robots, &fields);
+  ReadFormation(section, fields, num_robots);
+  hrvo_ = fields.hrvo;
+  std::string error;
+  if (!hrvo_.IsValid(&error)) section.Required("hrvo").FailAtField(error);
+
+  maneuver_ = ReadManeuver(section.Required(Section::kManeuverKey));
+  CheckPlan(section.Required(Section::kManeuverKey), maneuver_, formation_->nominal_m(), hrvo_.hrvo,
+            fields.min_target_spacing_m);
+
+  leader_ = fields.leader;
+  follower_ = fields.follower;
+  leader_.reversible_drive = follower_.reversible_drive = fields.reversible_drive;
+  leader_.maneuver = maneuver_;
+  leader_.time_step_s = follower_.time_step_s = fields.time_step_s;
+  const ConfigNode leader = section.Optional("leader");
+  if (!leader_.IsValid(&error)) (leader.IsDefined() ? leader : section).FailAtField(error);
+  ReadFollowerLaw(section);
+  ReadMetrics(section, fields);
+}
+
+void AffineFormationBuilder::ReadFormation(const ConfigNode& section, const Section& fields, int num_robots) {
   // The stress weights and the leaders are the role radio's graph and leaders:
   // one matrix says both who hears whom and how much each neighbour counts.
   const ConfigNode radio = section.Required("radio");
@@ -116,17 +140,11 @@ AffineFormationBuilder::AffineFormationBuilder(const ConfigNode& section, int nu
         "an affine formation needs `kind: role` (leaders publish, followers hear their "
         "neighbours in `graph`, the stress weights)");
   }
-
   agents::StressFormationParams formation;
   formation.weights = parts.radio.graph;
   formation.leaders = parts.radio.leaders;
-  const ConfigNode nominal = section.Required("nominal_positions");
-  if (!nominal.IsSequence() || nominal.size() != static_cast<size_t>(num_robots)) {
-    nominal.Fail("expected one [x, y] per robot (" + std::to_string(num_robots) + "), got " +
-                 (nominal.IsSequence() ? std::to_string(nominal.size()) : std::string("no list")));
-  }
-  for (size_t i = 0; i < nominal.size(); ++i) formation.nominal_m.push_back(ReadPoint(nominal[i]));
-  formation.equilibrium_tolerance_m = section.GetDouble("equilibrium_tolerance_m", formation.equilibrium_tolerance_m);
+  formation.nominal_m = fields.nominal_positions;
+  formation.equilibrium_tolerance_m = fields.equilibrium_tolerance_m;
   std::string error;
   if (!formation.IsValid(&error)) {
     // Point at the key that holds the fault; the message says which field.
@@ -137,83 +155,45 @@ AffineFormationBuilder::AffineFormationBuilder(const ConfigNode& section, int nu
     }
     if (error.rfind("weights:", 0) == 0) radio.Required("graph").Fail("stress " + message);
     if (error.rfind("leaders:", 0) == 0) radio.FailAt("leaders", message);
-    if (error.rfind("nominal_m:", 0) == 0) nominal.Fail(message.substr(std::string("nominal_positions: ").size()));
+    if (error.rfind("nominal_m:", 0) == 0) {
+      section.Required("nominal_positions").Fail(message.substr(std::string("nominal_positions: ").size()));
+    }
     section.FailAt("equilibrium_tolerance_m", message);
   }
   formation_ = std::make_unique<agents::StressFormation>(formation);
+}
 
-  const double time_step_s = section.GetDouble("time_step_s", 0.033);
-  if (!(time_step_s > 0.0) || !std::isfinite(time_step_s)) {
-    section.Required("time_step_s").Fail("must be > 0 s, got " + agents::NumberText(time_step_s));
-  }
-
-  agents::HrvoRobotParams hrvo_defaults;
-  hrvo_defaults.hrvo.safety_radius_m = 0.2;  // the formation keeps robots >= 0.3 m apart
-  hrvo_ = ReadHrvoRobotParams(section, hrvo_defaults);
-
-  maneuver_ = ReadManeuver(section.Required("maneuver"));
-  const double min_spacing_m = section.GetDouble("min_target_spacing_m", 0.25);
-  if (!(min_spacing_m >= 0.0) || !std::isfinite(min_spacing_m)) {
-    section.Required("min_target_spacing_m").Fail("must be >= 0 m, got " + agents::NumberText(min_spacing_m));
-  }
-  CheckPlan(section.Required("maneuver"), maneuver_, formation_->nominal_m(), hrvo_.hrvo, min_spacing_m);
-
-  leader_.reversible_drive = follower_.reversible_drive =
-      section.GetChoice<bool>("drive", "reversible", "drive", {{"reversible", true}, {"thesis", false}});
-
-  leader_.maneuver = maneuver_;
-  leader_.time_step_s = time_step_s;
-  const ConfigNode leader = section.Optional("leader");
-  if (leader.IsDefined()) {
-    leader.RejectUnknownKeys({"gain", "max_speed_mps"});
-    leader_.gain = leader.GetDouble("gain", leader_.gain);
-    leader_.max_speed_mps = leader.GetDouble("max_speed_mps", leader_.max_speed_mps);
-  }
-  if (!leader_.IsValid(&error)) (leader.IsDefined() ? leader : section).FailAtField(error);
-
-  follower_.time_step_s = time_step_s;
+void AffineFormationBuilder::ReadFollowerLaw(const ConfigNode& section) {
   const ConfigNode follower = section.Optional("follower");
-  if (follower.IsDefined()) {
-    follower.RejectUnknownKeys(
-        {"law", "gain", "max_speed_mps", "hrvo_engage_distance_m", "hrvo_horizon_s", "max_message_age_steps"});
-    follower_.law = follower.GetChoice<agents::AffineFollowerParams::Law>(
-        "law", "zhao", "follower law",
-        {{"zhao", agents::AffineFollowerParams::Law::kZhao}, {"thesis", agents::AffineFollowerParams::Law::kThesis}});
-    follower_.gain = follower.GetDouble("gain", follower_.gain);
-    follower_.max_speed_mps = follower.GetDouble("max_speed_mps", follower_.max_speed_mps);
-    follower_.hrvo_engage_distance_m = follower.GetDouble("hrvo_engage_distance_m", follower_.hrvo_engage_distance_m);
-    follower_.hrvo_horizon_s = follower.GetDouble("hrvo_horizon_s", follower_.hrvo_horizon_s);
-    follower_.max_message_age_steps =
-        follower.GetInt32("max_message_age_steps", follower_.max_message_age_steps);
-  }
+  std::string error;
   for (int f : formation_->followers()) {
     agents::AffineFollowerParams check = follower_;
     check.neighbours = formation_->Neighbours(f);
-    if (!check.IsValid(&error))
+    if (!check.IsValid(&error)) {
       (follower.IsDefined() ? follower : section).Fail("follower " + std::to_string(f) + ": " + error);
+    }
   }
+}
 
+void AffineFormationBuilder::ReadMetrics(const ConfigNode& section, const Section& fields) {
+  metrics_ = fields.metrics;
   metrics_.nominal_m = formation_->nominal_m();
   metrics_.leaders = formation_->leaders();
   const ConfigNode metrics = section.Optional("metrics");
-  if (metrics.IsDefined()) {
-    metrics.RejectUnknownKeys({"tolerance_m", "converged_from_step", "obstacle_pairs", "series_every_steps"});
-    metrics_.tolerance_m = metrics.GetDouble("tolerance_m", metrics_.tolerance_m);
-    metrics_.converged_from_step = metrics.GetInt("converged_from_step", metrics_.converged_from_step);
-    metrics_.series_every_steps = metrics.GetInt32("series_every_steps", metrics_.series_every_steps);
-    if (metrics.Has("obstacle_pairs")) {
-      const ConfigNode pairs = metrics.Required("obstacle_pairs");
-      if (!pairs.IsSequence()) pairs.Fail("expected a list of [id, id] obstacle pairs");
-      for (size_t k = 0; k < pairs.size(); ++k) {
-        const ConfigNode pair = pairs[k];
-        if (!pair.IsSequence() || pair.size() != 2) {
-          pair.Fail("expected two obstacle ids [a, b] (their positions in the run config's obstacles list)");
-        }
-        metrics_.obstacle_pairs.push_back({pair[0].AsInt32(), pair[1].AsInt32()});
+  if (!metrics.IsDefined()) return;
+  if (metrics.Has(agents::AffineFormationMetricsParams::kObstaclePairsKey)) {
+    const ConfigNode pairs = metrics.Required(agents::AffineFormationMetricsParams::kObstaclePairsKey);
+    if (!pairs.IsSequence()) pairs.Fail("expected a list of [id, id] obstacle pairs");
+    for (size_t k = 0; k < pairs.size(); ++k) {
+      const ConfigNode pair = pairs[k];
+      if (!pair.IsSequence() || pair.size() != 2) {
+        pair.Fail("expected two obstacle ids [a, b] (their positions in the run config's obstacles list)");
       }
+      metrics_.obstacle_pairs.push_back({pair[0].AsInt32(), pair[1].AsInt32()});
     }
-    if (!metrics_.IsValid(&error)) metrics.FailAtField(error);
   }
+  std::string error;
+  if (!metrics_.IsValid(&error)) metrics.FailAtField(error);
 }
 
 std::unique_ptr<agents::Robot> AffineFormationBuilder::MakeRobot(int robot_id, const agents::RobotParams& params) const {

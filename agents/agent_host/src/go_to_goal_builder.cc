@@ -1,4 +1,5 @@
 #include "dream/agent_host/go_to_goal_builder.h"
+#include "dream/agent_host/field_reader.h"
 
 #include <algorithm>
 
@@ -43,20 +44,11 @@ class GoToGoalMetrics final : public agents::ExperimentMetrics {
 }  // namespace
 
 GoToGoalBuilder::GoToGoalBuilder(const config::ConfigNode& section, int num_robots) {
-  const config::ConfigNode goals = section.Required("goals");
-  if (!goals.IsSequence() || goals.size() != static_cast<size_t>(num_robots)) {
-    goals.Fail("expected one [x, y] goal per robot (" + std::to_string(num_robots) + "), got " +
-               (goals.IsSequence() ? std::to_string(goals.size()) : std::string("no list")));
-  }
-  for (int id = 0; id < num_robots; ++id) {
-    agents::GoToGoalParams params;
-    const config::ConfigNode goal = goals[static_cast<size_t>(id)];
-    const std::vector<double> xy = goal.AsDoubles();
-    if (xy.size() != 2) goal.Fail("expected [x, y] in metres, got " + std::to_string(xy.size()) + " numbers");
-    params.goal_m = Eigen::Vector2d(xy[0], xy[1]);
-    params.gain = section.GetDouble("gain", params.gain);
-    params.max_speed_mps = section.GetDouble("max_speed_mps", params.max_speed_mps);
-    params.tolerance_m = section.GetDouble("tolerance_m", params.tolerance_m);
+  Section fields;
+  ReadFields(section, num_robots, &fields);
+  for (const Eigen::Vector2d& goal : fields.goals) {
+    agents::GoToGoalParams params = fields.robot;
+    params.goal_m = goal;
     std::string error;
     if (!params.IsValid(&error)) section.FailAtField(error);
     params_.push_back(params);

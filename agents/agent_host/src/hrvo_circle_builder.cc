@@ -3,7 +3,9 @@
 #include <cmath>
 
 #include "dream/agents/experiments/formation_sequence_metrics.h"
-#include "dream/agent_host/hrvo_config.h"
+#include "dream/agent_host/field_reader.h"
+#include "dream/agents/framework/number_text.h"
+#include "dream/robotarium/robotarium_constants.h"
 
 namespace dream::agent_host {
 
@@ -15,28 +17,19 @@ AgentPartsConfig HrvoCircleBuilder::DefaultParts(int num_robots) {
 }
 
 HrvoCircleBuilder::HrvoCircleBuilder(const config::ConfigNode& section, int num_robots) : num_robots_(num_robots) {
-  const double radius_m = section.GetDouble("radius_m", 0.85);
-  if (!(radius_m > 0.0)) section.Required("radius_m").Fail("must be > 0, got " + std::to_string(radius_m));
-  Eigen::Vector2d center = Eigen::Vector2d::Zero();
-  if (section.Has("center")) {
-    const config::ConfigNode node = section.Required("center");
-    const std::vector<double> xy = node.AsDoubles();
-    if (xy.size() != 2) node.Fail("expected [x, y] in metres, got " + std::to_string(xy.size()) + " numbers");
-    center = Eigen::Vector2d(xy[0], xy[1]);
-  }
-  const long long formations = section.GetInt("formations", 3);
-  if (formations < 1 || formations > 100) {
-    section.Required("formations").Fail("must be in 1..100, got " + std::to_string(formations));
-  }
+  Section fields;
+  ReadFields(section, num_robots, &fields);
+  const double radius_m = fields.radius_m;
+  const Eigen::Vector2d center = fields.center;
+  const int formations = fields.formations;
+  params_ = fields.robot;
   params_.num_robots = num_robots;
-  params_.tolerance_m = section.GetDouble("tolerance_m", params_.tolerance_m);
-  params_.max_speed_mps = section.GetDouble("max_speed_mps", params_.max_speed_mps);
-  params_.gain = section.GetDouble("gain", params_.gain);
-  params_.stop_m = section.GetDouble("stop_m", params_.stop_m);
-  hrvo_ = ReadHrvoRobotParams(section);
+  hrvo_ = fields.hrvo;
+  std::string hrvo_error;
+  if (!hrvo_.IsValid(&hrvo_error)) section.Required("hrvo").FailAtField(hrvo_error);
 
   // Appendix B's p_circ: robot i at angle 2 pi i / N, its opposite at + pi.
-  for (long long k = 0; k < formations; ++k) {
+  for (int k = 0; k < formations; ++k) {
     std::vector<Eigen::Vector2d> points;
     for (int i = 0; i < num_robots; ++i) {
       const double angle = 2.0 * M_PI * i / num_robots + (k % 2 == 1 ? M_PI : 0.0);
@@ -47,12 +40,16 @@ HrvoCircleBuilder::HrvoCircleBuilder(const config::ConfigNode& section, int num_
   // Every point must lie in the arena with a robot's margin, or HRVO's
   // boundary check would keep the robot from ever reaching it.
   constexpr double kMarginM = 0.1;
+  using Arena = robotarium::RobotariumConstants;
   for (const auto& formation : formations_) {
     for (const Eigen::Vector2d& p : formation) {
-      if (std::abs(p.x()) > 1.6 - kMarginM || std::abs(p.y()) > 1.0 - kMarginM) {
+      if (p.x() < Arena::kArenaXMinMeters + kMarginM || p.x() > Arena::kArenaXMaxMeters - kMarginM ||
+          p.y() < Arena::kArenaYMinMeters + kMarginM || p.y() > Arena::kArenaYMaxMeters - kMarginM) {
         section.Fail("the circle (center [" + std::to_string(center.x()) + ", " + std::to_string(center.y()) +
-                     "], radius_m " + std::to_string(radius_m) +
-                     ") leaves the arena: every point must be 0.1 m inside x in [-1.6, 1.6], y in [-1, 1]");
+                     "], radius_m " + std::to_string(radius_m) + ") leaves the arena: every point must be " +
+                     agents::NumberText(kMarginM) + " m inside x in [" + agents::NumberText(Arena::kArenaXMinMeters) +
+                     ", " + agents::NumberText(Arena::kArenaXMaxMeters) + "], y in [" +
+                     agents::NumberText(Arena::kArenaYMinMeters) + ", " + agents::NumberText(Arena::kArenaYMaxMeters) + "]");
       }
     }
   }

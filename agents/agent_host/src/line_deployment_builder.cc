@@ -1,4 +1,5 @@
 #include "dream/agent_host/line_deployment_builder.h"
+#include "dream/agent_host/field_reader.h"
 
 #include "dream/agent_host/hrvo_config.h"
 #include "dream/agents/experiments/line_formation_metrics.h"
@@ -30,24 +31,14 @@ AgentPartsConfig LineDeploymentBuilder::DefaultParts(int num_robots) {
 }
 
 LineDeploymentBuilder::LineDeploymentBuilder(const config::ConfigNode& section, int num_robots) {
-  (void)num_robots;
-  params_.spacing_m = section.GetDouble("spacing_m", params_.spacing_m);
-  params_.gain = section.GetDouble("gain", params_.gain);
-  params_.max_speed_mps = section.GetDouble("max_speed_mps", params_.max_speed_mps);
-  params_.tolerance_m = section.GetDouble("tolerance_m", params_.tolerance_m);
-  params_.resume_m = section.GetDouble("resume_m", params_.resume_m);
-  params_.hold_avoid_range_m = section.GetDouble("hold_avoid_range_m", params_.hold_avoid_range_m);
-  params_.arena_margin_m = section.GetDouble("arena_margin_m", params_.arena_margin_m);
-  const long long settle = section.GetInt("settle_updates", params_.settle_updates);
-  if (settle < 1 || settle > 100000) {
-    section.Required("settle_updates").Fail("must be in 1..100000, got " + std::to_string(settle));
-  }
-  params_.settle_updates = static_cast<int>(settle);
+  Section fields;
+  ReadFields(section, num_robots, &fields);
+  params_ = fields.robot;
   std::string error;
   if (!params_.IsValid(&error)) section.FailAtField(error);
-  converged_m_ = section.GetDouble("converged_m", converged_m_);
-  if (!(converged_m_ > 0.0)) section.Required("converged_m").Fail("must be > 0, got " + std::to_string(converged_m_));
-  hrvo_ = ReadHrvoRobotParams(section);
+  converged_m_ = fields.converged_m;
+  hrvo_ = fields.hrvo;
+  if (!hrvo_.IsValid(&error)) section.Required("hrvo").FailAtField(error);
 }
 
 std::unique_ptr<agents::Robot> LineDeploymentBuilder::MakeRobot(int robot_id, const agents::RobotParams& params) const {

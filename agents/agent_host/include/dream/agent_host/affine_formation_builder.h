@@ -4,6 +4,8 @@
 #include <vector>
 
 #include "dream/agents/experiments/affine_follower_robot.h"
+#include "dream/robotarium/robotarium_constants.h"
+#include "dream/agents/fields/field_names.h"
 #include "dream/agents/experiments/affine_formation_metrics.h"
 #include "dream/agents/experiments/affine_leader_robot.h"
 #include "dream/agent_host/agent_parts_config.h"
@@ -32,10 +34,43 @@ class AffineFormationBuilder final : public ExperimentBuilder {
   static constexpr const char* kKind = "affine_formation";
   /// The followers need every leader's word: the role radio's graph must connect.
   static constexpr bool kGraphMustConnect = true;
-  static std::vector<const char*> Keys() {
-    return {"nominal_positions", "maneuver", "leader", "follower", "hrvo", "drive", "time_step_s",
-            "equilibrium_tolerance_m", "min_target_spacing_m", "metrics"};
-  }
+  /// The kind's section: every key named once (the maneuver's and the
+  /// obstacle pairs' structure is read by the builder).
+  struct Section {
+    std::vector<Eigen::Vector2d> nominal_positions;
+    agents::AffineLeaderParams leader;
+    agents::AffineFollowerParams follower;
+    agents::HrvoRobotParams hrvo = FormationHrvo();
+    bool reversible_drive = true;
+    double time_step_s = robotarium::RobotariumConstants::kTimeStepSeconds;
+    double equilibrium_tolerance_m = agents::StressFormationParams{}.equilibrium_tolerance_m;
+    double min_target_spacing_m = 0.25;
+    agents::AffineFormationMetricsParams metrics;
+    static constexpr const char* kManeuverKey = "maneuver";
+
+    template <typename Fields>
+    void ListFields(Fields& fields) {
+      fields.RobotPoints("nominal_positions", nominal_positions, "nominal position");
+      fields.Custom(kManeuverKey, "required: keyframes `{step, scale_x: 1, scale_y: 1, rotation_rad: 0, translation: [0, 0]}` at increasing steps: A = diag(scale_x, scale_y) R(rotation_rad), b = translation, smoothstep between keyframes, held outside");
+      fields.Section("leader", leader, "the leaders' law");
+      fields.Section("follower", follower, "the followers' law");
+      fields.Section("hrvo", hrvo, "collision avoidance");
+      fields.Choice("drive", reversible_drive, {{"reversible", true}, {"thesis", false}}, "drive of every robot: `reversible` (may back up instead of turning round, with hysteresis) or `thesis` (dxi_to_dxu)");
+      fields.Number("time_step_s", time_step_s, agents::FieldRule::Positive(), "one step: leaders' target velocities, followers' ageing of neighbour positions, s");
+      fields.Number("equilibrium_tolerance_m", equilibrium_tolerance_m, agents::FieldRule::Positive(),
+                    "how far a follower's stress equilibrium may lie from its nominal point (weights rounded to 4 decimals move it < 1 mm), m");
+      fields.Number("min_target_spacing_m", min_target_spacing_m, agents::FieldRule::NonNegative(),
+                    "every step of the plan must keep all targets this far apart and 0.1 m inside the arena (checked when the config loads), m");
+      fields.Section("metrics", metrics, "the formation's metrics");
+    }
+    /// HRVO's defaults here: the formation keeps robots >= 0.3 m apart.
+    static agents::HrvoRobotParams FormationHrvo() {
+      agents::HrvoRobotParams hrvo;
+      hrvo.hrvo.safety_radius_m = 0.2;
+      return hrvo;
+    }
+  };
+  static std::vector<std::string> Keys() { return agents::KeysOf<Section>(); }
   /// Every part every step: robot, odometry and movement sensor (1 m) period
   /// 1, role radio period 1 (its graph and leaders come from the config).
   static AgentPartsConfig DefaultParts(int num_robots);
@@ -49,6 +84,10 @@ class AffineFormationBuilder final : public ExperimentBuilder {
   const agents::AffineManeuverParams& maneuver() const { return maneuver_; }
 
  private:
+  void ReadFormation(const config::ConfigNode& section, const Section& fields, int num_robots);
+  void ReadFollowerLaw(const config::ConfigNode& section);
+  void ReadMetrics(const config::ConfigNode& section, const Section& fields);
+
   std::unique_ptr<agents::StressFormation> formation_;
   agents::AffineManeuverParams maneuver_;
   agents::AffineLeaderParams leader_;

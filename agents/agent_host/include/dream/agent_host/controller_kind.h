@@ -9,6 +9,7 @@
 #include "dream/agent_host/agent_parts_config.h"
 #include "dream/agent_host/experiment_builder.h"
 #include "dream/agent_host/robot_class_builder.h"
+#include "dream/agents/fields/field_table.h"
 #include "dream/config/config_node.h"
 
 namespace dream::agent_host {
@@ -28,6 +29,9 @@ struct ControllerKind {
   /// refuse them (the `python` kind: the Python class declares its keys).
   bool checks_own_keys = false;
   std::function<std::unique_ptr<ExperimentBuilder>(const config::ConfigNode& section, int num_robots)> make_builder;
+  /// The kind's rows of the key table in config/README.md (`| key | default | meaning |`), made
+  /// from the builder's field list when it has one (`Builder::Section`); empty otherwise.
+  std::function<std::string()> key_table;
 
   /// The kind of `Builder`, read from its static members: `kKind` (the name),
   /// `Keys()` (its own keys) and, when it has them, `DefaultParts(int)` and
@@ -55,6 +59,10 @@ struct ControllerKind {
   template <typename B>
   struct HasDefaultParts<B, std::void_t<decltype(B::DefaultParts(0))>> : std::true_type {};
   template <typename B, typename = void>
+  struct HasSection : std::false_type {};
+  template <typename B>
+  struct HasSection<B, std::void_t<typename B::Section>> : std::true_type {};
+  template <typename B, typename = void>
   struct HasGraphMustConnect : std::false_type {};
   template <typename B>
   struct HasGraphMustConnect<B, std::void_t<decltype(B::kGraphMustConnect)>> : std::true_type {};
@@ -70,6 +78,7 @@ ControllerKind ControllerKind::Of() {
   kind.make_builder = [](const config::ConfigNode& section, int num_robots) -> std::unique_ptr<ExperimentBuilder> {
     return std::make_unique<Builder>(section, num_robots);
   };
+  if constexpr (HasSection<Builder>::value) kind.key_table = [] { return agents::KeyTableOf<typename Builder::Section>(); };
   return kind;
 }
 

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "dream/agent_host/experiment_builder.h"
+#include "dream/agents/fields/field_names.h"
 #include "dream/agents/experiments/go_to_goal_robot.h"
 #include "dream/config/config_node.h"
 
@@ -14,8 +15,18 @@ namespace dream::agent_host {
 class GoToGoalBuilder final : public ExperimentBuilder {
  public:
   static constexpr const char* kKind = "go_to_goal";
+  /// The kind's section: each robot's goal and the robots' keys, each named once.
+  struct Section {
+    std::vector<Eigen::Vector2d> goals;
+    agents::GoToGoalParams robot;
+    template <typename Fields>
+    void ListFields(Fields& fields) {
+      fields.RobotPoints("goals", goals, "goal");
+      robot.ListFields(fields);
+    }
+  };
   /// Keys of this kind besides the common ones.
-  static std::vector<const char*> Keys() { return {"goals", "gain", "max_speed_mps", "tolerance_m"}; }
+  static std::vector<std::string> Keys() { return agents::KeysOf<Section>(); }
 
   GoToGoalBuilder(const config::ConfigNode& section, int num_robots);
   std::unique_ptr<agents::Robot> MakeRobot(int robot_id, const agents::RobotParams& params) const override;

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "dream/agent_host/agent_parts_config.h"
+#include "dream/agents/fields/field_names.h"
 #include "dream/agents/experiments/circle_formation_robot.h"
 #include "dream/agent_host/experiment_builder.h"
 #include "dream/agents/hrvo/hrvo_robot.h"
@@ -22,9 +23,24 @@ namespace dream::agent_host {
 class HrvoCircleBuilder final : public ExperimentBuilder {
  public:
   static constexpr const char* kKind = "hrvo_circle";
-  static std::vector<const char*> Keys() {
-    return {"radius_m", "center", "formations", "tolerance_m", "max_speed_mps", "gain", "stop_m", "hrvo"};
-  }
+  /// The kind's section: the circle's, the robots' and HRVO's keys, each named once.
+  struct Section {
+    double radius_m = 0.85;
+    Eigen::Vector2d center = Eigen::Vector2d::Zero();
+    int formations = 3;
+    agents::CircleFormationParams robot;
+    agents::HrvoRobotParams hrvo;
+    template <typename Fields>
+    void ListFields(Fields& fields) {
+      fields.Number("radius_m", radius_m, agents::FieldRule::Positive(), "circle radius (Appendix B), m; every point must lie 0.1 m inside the arena");
+      fields.Point("center", center, "circle centre `[x, y]`, m");
+      fields.Whole("formations", formations, agents::FieldRule::Within(1, 100),
+                   "how many formations in turn (circle, opposite, circle, ...)");
+      robot.ListFields(fields);
+      fields.Section("hrvo", hrvo, "collision avoidance");
+    }
+  };
+  static std::vector<std::string> Keys() { return agents::KeysOf<Section>(); }
   /// Appendix B's parts: robot period 4+(i%2), start delay 20+i; odometry
   /// every 2+(i%2), movement sensor every 3+(i%2) (range 1 m); range radio
   /// (1 m) every 30 steps.

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "dream/agent_host/agent_parts_config.h"
+#include "dream/agents/fields/field_names.h"
 #include "dream/agent_host/experiment_builder.h"
 #include "dream/agents/hrvo/hrvo_robot.h"
 #include "dream/agents/experiments/line_deployment_robot.h"
@@ -24,10 +25,20 @@ class LineDeploymentBuilder final : public ExperimentBuilder {
   static constexpr const char* kKind = "line_deployment";
   /// Consensus (eq. 3.7) needs a symmetric, connected graph.
   static constexpr bool kGraphMustConnect = true;
-  static std::vector<const char*> Keys() {
-    return {"spacing_m", "gain", "max_speed_mps", "tolerance_m", "resume_m", "hold_avoid_range_m",
-            "settle_updates", "arena_margin_m", "converged_m", "hrvo"};
-  }
+  /// The kind's section: the robots', the metrics' and HRVO's keys, each named once.
+  struct Section {
+    agents::LineDeploymentParams robot;
+    double converged_m = 0.02;
+    agents::HrvoRobotParams hrvo;
+    template <typename Fields>
+    void ListFields(Fields& fields) {
+      robot.ListFields(fields);
+      fields.Number("converged_m", converged_m, agents::FieldRule::Positive(),
+                    "metrics: converged once both line errors stay below this, m");
+      fields.Section("hrvo", hrvo, "collision avoidance");
+    }
+  };
+  static std::vector<std::string> Keys() { return agents::KeysOf<Section>(); }
   /// The thesis's 6x6 adjacency matrix (section 3.2.2).
   static Eigen::MatrixXd ThesisAdjacency();
   /// Appendix B's timings (robot 4+(i%2), start delay 20+i, odometry 2+(i%2),

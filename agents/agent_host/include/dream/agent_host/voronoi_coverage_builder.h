@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "dream/agent_host/agent_parts_config.h"
+#include "dream/agents/fields/field_names.h"
 #include "dream/agent_host/experiment_builder.h"
 #include "dream/agents/experiments/voronoi_coverage_metrics.h"
 #include "dream/agents/experiments/voronoi_coverage_robot.h"
@@ -20,13 +21,18 @@ namespace dream::agent_host {
 class VoronoiCoverageBuilder final : public ExperimentBuilder {
  public:
   static constexpr const char* kKind = "voronoi_coverage";
+  /// The kind's section: the robots' and the metrics' keys, each named once.
+  struct Section {
+    agents::VoronoiCoverageParams robot;
+    agents::VoronoiCoverageMetricsParams metrics;
+    template <typename Fields>
+    void ListFields(Fields& fields) {
+      robot.ListFields(fields);
+      metrics.ListFields(fields);
+    }
+  };
   /// Keys of this kind besides the common ones.
-  static std::vector<const char*> Keys() {
-    return {"disc_radius_m",          "disc_sides",         "wall_margin_m",         "robot_buffer_m",
-            "obstacle_buffer_m",      "gain",               "max_speed_mps",         "tolerance_m",
-            "done_after_still_steps", "radio_rounds_before_moving", "coverage_sample_steps",
-            "still_speed_mps",        "still_window_steps"};
-  }
+  static std::vector<std::string> Keys() { return agents::KeysOf<Section>(); }
   /// The thesis's parts: odometry and obstacle sensor (1 m) every step, a
   /// range radio every 3 steps reaching 2 m (= twice the disc radius: any
   /// robot that can cut a 1 m disc is heard), the control law every step

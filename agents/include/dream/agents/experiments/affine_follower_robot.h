@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "dream/agents/hrvo/hrvo_robot.h"
+#include "dream/agents/fields/field_rule.h"
 #include "dream/agents/geometry/reversible_si_to_uni.h"
 #include "dream/robotarium/robotarium_constants.h"
 
@@ -53,6 +54,19 @@ struct AffineFollowerParams {
 
   /// False with a message naming the field, its value and the allowed range.
   bool IsValid(std::string* error) const;
+
+  /// The config keys of `follower:` (kind affine_formation).
+  template <typename Fields>
+  void ListFields(Fields& fields) {
+    fields.Choice("law", law, {{"zhao", Law::kZhao}, {"thesis", Law::kThesis}}, "follower law: `zhao` (normalised, the neighbours' velocities fed forward) or `thesis` (eq. 3.9, positions only)");
+    fields.Number("gain", gain, FieldRule::Positive(), "law gain (`zhao`: keep near 1; `thesis`: needs ~10 or more), 1/s");
+    fields.Number("max_speed_mps", max_speed_mps, FieldRule::RobotSpeed(), "cap on the law's velocity, m/s");
+    fields.Number("hrvo_engage_distance_m", hrvo_engage_distance_m, FieldRule::PositiveOrInfinite(),
+                  "HRVO considers robots closer than this, m ...");
+    fields.Number("hrvo_horizon_s", hrvo_horizon_s, FieldRule::NonNegative(), "... or that the law's velocity would bring within the safety radius in this time, s");
+    fields.Whole("max_message_age_steps", max_message_age_steps, FieldRule::AtLeast(1),
+                 "older neighbour news is not used (the follower only avoids collisions), steps");
+  }
 };
 
 /// A follower of the affine formation (thesis section 3.4, Zhao 2018): it

@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "dream/agents/framework/experiment_metrics.h"
+#include "dream/agents/fields/field_rule.h"
+#include "dream/robotarium/robotarium_constants.h"
 
 namespace dream::agents {
 
@@ -23,10 +25,23 @@ struct AffineFormationMetricsParams {
   /// that form a gate the formation passes through, two per pair.
   std::vector<std::array<int, 2>> obstacle_pairs;
   int series_every_steps = 10;          ///< formation error series resolution, >= 1
-  double collision_diameter_m = 0.135;  ///< the Robotarium's collision check...
-  double collision_offset_m = 0.025;    ///< ...around the point this far ahead of the centre
+  /// The Robotarium's collision check...
+  double collision_diameter_m = robotarium::RobotariumConstants::kCollisionDiameterMeters;
+  /// ...around the point this far ahead of the centre.
+  double collision_offset_m = robotarium::RobotariumConstants::kCollisionOffsetMeters;
 
   bool IsValid(std::string* error) const;
+
+  /// The config keys of `metrics:` (kind affine_formation); `obstacle_pairs` is read by the builder.
+  template <typename Fields>
+  void ListFields(Fields& fields) {
+    fields.Number("tolerance_m", tolerance_m, FieldRule::Positive(), "a follower within this of its target tracks it, m");
+    fields.Whole("converged_from_step", converged_from_step, FieldRule::AtLeast(0),
+                 "the convergence window starts here (worst follower error from here to the end)");
+    fields.Custom(kObstaclePairsKey, "`[[a, b], ...]`: obstacle ids (their order in `obstacles:`) forming a gate; clearance and passage per pair (none by default)");
+    fields.Whole("series_every_steps", series_every_steps, FieldRule::AtLeast(1), "resolution of the `max_follower_error_m` series, steps");
+  }
+  static constexpr const char* kObstaclePairsKey = "obstacle_pairs";
 };
 
 /// How well the affine formation did, from the world's poses and obstacles:

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "dream/agents/experiments/affine_maneuver.h"
+#include "dream/agents/fields/field_rule.h"
 #include "dream/agents/geometry/reversible_si_to_uni.h"
 #include "dream/agents/framework/robot.h"
 #include "dream/robotarium/robotarium_constants.h"
@@ -23,6 +24,13 @@ struct AffineLeaderParams {
 
   /// False with a message naming the field, its value and the allowed range.
   bool IsValid(std::string* error) const;
+
+  /// The config keys of `leader:` (kind affine_formation).
+  template <typename Fields>
+  void ListFields(Fields& fields) {
+    fields.Number("gain", gain, FieldRule::Positive(), "leaders' feedback gain on top of the target velocity, 1/s");
+    fields.Number("max_speed_mps", max_speed_mps, FieldRule::RobotSpeed(), "leaders' speed cap, m/s");
+  }
 };
 
 /// A leader of the affine formation: it knows the maneuver and tracks its

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "dream/agents/experiments/formation_progress.h"
+#include "dream/agents/fields/field_rule.h"
 #include "dream/agents/hrvo/hrvo_robot.h"
 
 namespace dream::agents {
@@ -33,6 +34,15 @@ struct CircleFormationParams {
   /// reports done. (0, tolerance_m]; = tolerance_m is the thesis's hold.
   double stop_m = 0.025;
 
+  /// The config keys (`controller:` of kind hrvo_circle), once for reading, checking and the docs.
+  template <typename Fields>
+  void ListFields(Fields& fields) {
+    fields.Number("tolerance_m", tolerance_m, FieldRule::Positive(), "a point counts as reached within this distance (also the metrics' test), m");
+    fields.Number("max_speed_mps", max_speed_mps, FieldRule::RobotSpeed(), "preferred speed towards the point (the thesis's `v_max`), m/s");
+    fields.Number("gain", gain, FieldRule::Positive(), "preferred speed = min(`max_speed_mps`, `gain` x distance to the point), 1/s. 0.8 = 1/(e T) for the lab's loop delay T ~ 0.45 s (pose to motion): no overshoot while `gain` T <= 1/e. >= `max_speed_mps` / `tolerance_m` drives at full speed up to the tolerance (the thesis)");
+    fields.Number("stop_m", stop_m, FieldRule::Finite(),
+                  "a robot that reached its point (within `tolerance_m`) drives on until within `stop_m`, then holds until pushed out of `tolerance_m`; done only from `stop_m` on, so it settles inside the line the goal is judged by, m, > 0 and <= `tolerance_m`");
+  }
   /// False with a message naming the field, its value and the allowed range.
   bool IsValid(std::string* error) const;
 };

@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <string>
 
+#include "dream/agents/fields/field_rule.h"
 #include "dream/agents/framework/robot.h"
 #include "dream/agents/geometry/single_integrator_to_unicycle.h"
 
@@ -15,6 +16,13 @@ struct GoToGoalParams {
   double max_speed_mps = 0.15;        ///< cap on the planar velocity; (0, 0.2]
   double tolerance_m = 0.03;          ///< within this distance the robot stops and reports done; > 0
 
+  /// The config keys (`controller:` of kind go_to_goal), once for reading, checking and the docs.
+  template <typename Fields>
+  void ListFields(Fields& fields) {
+    fields.Number("gain", gain, FieldRule::Positive(), "proportional gain, 1/s");
+    fields.Number("max_speed_mps", max_speed_mps, FieldRule::RobotSpeed(), "cap on the planar velocity, m/s");
+    fields.Number("tolerance_m", tolerance_m, FieldRule::Positive(), "within this distance the robot stops and reports done, m");
+  }
   /// False with a message naming the field, its value and the allowed range.
   bool IsValid(std::string* error) const;
 };

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "dream/agents/fields/field_rule.h"
 #include "dream/agents/hrvo/hrvo_robot.h"
 #include "dream/agents/experiments/line_consensus.h"
 #include "dream/agents/geometry/robotarium_arena.h"
@@ -42,6 +43,22 @@ struct LineDeploymentParams {
   Eigen::Vector2d arena_min_m = RobotariumArenaMin();  ///< Robotarium arena, world frame
   Eigen::Vector2d arena_max_m = RobotariumArenaMax();
 
+  /// The config keys (`controller:` of kind line_deployment), once for reading, checking and the docs.
+  template <typename Fields>
+  void ListFields(Fields& fields) {
+    fields.Number("spacing_m", spacing_m, FieldRule::Positive(), "d of eq. 3.7: spacing between consecutive ids, m (6 robots then span 2 m)");
+    fields.Number("gain", gain, FieldRule::Positive(), "preferred velocity = gain x (target - position), 1/s");
+    fields.Number("max_speed_mps", max_speed_mps, FieldRule::RobotSpeed(), "cap on the preferred speed, m/s");
+    fields.Number("tolerance_m", tolerance_m, FieldRule::Positive(), "a moving robot stops this close to its target, m ...");
+    fields.Number("resume_m", resume_m, FieldRule::Finite(),
+                  "... and a still one moves again when its target is farther than this, m, >= `tolerance_m`");
+    fields.Number("hold_avoid_range_m", hold_avoid_range_m, FieldRule::NonNegative(),
+                  "a still robot's HRVO considers only neighbours closer than this, m");
+    fields.Whole("settle_updates", settle_updates, FieldRule::Within(1, 100000),
+                 "done after this many control updates in a row holding still");
+    fields.Number("arena_margin_m", arena_margin_m, FieldRule::NonNegative(),
+                  "targets are clamped this far inside the arena (a clamped robot anchors the line), m");
+  }
   /// False with a message naming the field, its value and the allowed range.
   bool IsValid(std::string* error) const;
 };

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "dream/agents/experiments/coverage_cost.h"
+#include "dream/agents/fields/field_rule.h"
 #include "dream/agents/framework/experiment_metrics.h"
 #include "dream/agents/geometry/robotarium_arena.h"
 
@@ -21,8 +22,19 @@ struct VoronoiCoverageMetricsParams {
   double step_s = robotarium::RobotariumConstants::kTimeStepSeconds;
   double still_speed_mps = 0.005; ///< a robot slower than this is still; > 0
   int still_window_steps = 30;    ///< robots have settled once all were still this many steps; >= 1
-  double collision_offset_m = 0.025;  ///< Robotarium: the collision disc sits this far ahead of the centre
-  double collision_radius_m = 0.0675; ///< Robotarium: half the 0.135 m collision distance
+  /// Robotarium: the collision disc sits this far ahead of the centre.
+  double collision_offset_m = robotarium::RobotariumConstants::kCollisionOffsetMeters;
+  /// Robotarium: half the collision distance.
+  double collision_radius_m = robotarium::RobotariumConstants::kCollisionDiameterMeters / 2.0;
+
+  /// The config keys of the coverage metrics (in `controller:` of kind voronoi_coverage).
+  template <typename Fields>
+  void ListFields(Fields& fields) {
+    fields.Whole("coverage_sample_steps", sample_steps, FieldRule::AtLeast(1), "the metrics' cost series keeps every this many steps");
+    fields.Number("still_speed_mps", still_speed_mps, FieldRule::Positive(), "metrics: a robot slower than this is still, m/s");
+    fields.Whole("still_window_steps", still_window_steps, FieldRule::AtLeast(1),
+                 "metrics: settled once every robot was still this long, steps");
+  }
 
   bool IsValid(std::string* error) const;
 };

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "dream/agents/framework/robot.h"
+#include "dream/agents/fields/field_rule.h"
 #include "dream/agents/geometry/voronoi_cell.h"
 #include "dream/robotarium/robotarium_constants.h"
 
@@ -22,6 +23,19 @@ struct VoronoiCoverageParams {
   double step_s = robotarium::RobotariumConstants::kTimeStepSeconds;  ///< the world's time step; > 0
   int done_after_still_steps = 30;    ///< done after this many consecutive updates holding still; >= 1
   int radio_rounds_before_moving = 2; ///< hold still until the radio ran this often (it has heard its neighbours); >= 0
+
+  /// The config keys (`controller:` of kind voronoi_coverage, with the cell's).
+  template <typename Fields>
+  void ListFields(Fields& fields) {
+    cell.ListFields(fields);
+    fields.Number("gain", gain, FieldRule::Positive(), "proportional gain towards the goal, 1/s");
+    fields.Number("max_speed_mps", max_speed_mps, FieldRule::RobotSpeed(), "cap on the planar velocity, also assumed of neighbours, m/s");
+    fields.Number("tolerance_m", tolerance_m, FieldRule::Positive(), "within this distance of its goal a robot holds still (thesis: 0.02-0.05), m");
+    fields.Whole("done_after_still_steps", done_after_still_steps, FieldRule::AtLeast(1),
+                 "a robot reports done after holding still this many updates");
+    fields.Whole("radio_rounds_before_moving", radio_rounds_before_moving, FieldRule::AtLeast(0),
+                 "hold still until the radio ran this often (heard the neighbours)");
+  }
 
   /// False with a message naming the field, its value and the allowed range.
   bool IsValid(std::string* error) const;

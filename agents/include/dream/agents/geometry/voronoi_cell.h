@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "dream/agents/geometry/convex_polygon.h"
+#include "dream/agents/fields/field_rule.h"
 #include "dream/agents/geometry/half_plane.h"
 #include "dream/agents/framework/sensor_readings.h"
 #include "dream/agents/geometry/robotarium_arena.h"
@@ -27,6 +28,20 @@ struct VoronoiCellParams {
 
   /// False with a message naming the field, its value and the allowed range.
   bool IsValid(std::string* error) const;
+
+  /// The config keys of the cell (in `controller:` of kind voronoi_coverage).
+  template <typename Fields>
+  void ListFields(Fields& fields) {
+    fields.Number("disc_radius_m", disc_radius_m, FieldRule::Positive(),
+                  "the cell lies in this disc around the robot (Algorithm 1's circle), m");
+    fields.Whole("disc_sides", disc_sides, FieldRule::Within(8, kMaxDiscSides),
+                 "the disc as an inscribed polygon with this many sides");
+    fields.Number("wall_margin_m", wall_margin_m, FieldRule::NonNegative(), "the cell keeps this far inside the arena walls, m");
+    fields.Number("robot_buffer_m", robot_buffer_m, FieldRule::NonNegative(),
+                  "each bisector moves this far towards the robot: robots keep 2x apart, m");
+    fields.Number("obstacle_buffer_m", obstacle_buffer_m, FieldRule::NonNegative(),
+                  "each obstacle's virtual-agent line moves this far towards the robot, m");
+  }
 };
 
 /// A neighbour as a robot knows it: where it was, and how much further its

@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 
+#include "dream/agents/fields/field_rule.h"
 #include "dream/agents/hrvo/hrvo_avoidance.h"
 #include "dream/agents/hrvo/hrvo_params.h"
 #include "dream/agents/framework/robot.h"
@@ -21,6 +22,17 @@ struct HrvoRobotParams {
   HrvoVariant variant = HrvoVariant::kExact;
   HrvoParams hrvo;
   bool IsValid(std::string* error) const { return hrvo.IsValid(error); }
+  /// The keys of a config's `hrvo:` section, once for reading, checking and the docs.
+  template <typename Fields>
+  void ListFields(Fields& fields) {
+    fields.Choice("variant", variant, {{"exact", HrvoVariant::kExact}, {"thesis", HrvoVariant::kThesis}},
+                  "HRVO variant");
+    fields.Number("safety_radius_m", hrvo.safety_radius_m, FieldRule::AboveUpTo(0.0, 10.0),
+                  "centre distance HRVO keeps between robots, m");
+    fields.Flag("check_boundaries", hrvo.check_boundaries, "refuse velocities that would leave the arena ...");
+    fields.Number("boundary_horizon_s", hrvo.boundary_horizon_s, FieldRule::AboveUpTo(0.0, 100.0),
+                  "... within this long, s");
+  }
 };
 
 /// The thesis's Robot_hrvo: a Robot whose controllers ask for a planar
