@@ -75,18 +75,15 @@ void AssignInPlace(YAML::Node target, const YAML::Node& value) {
   }
 }
 
-}  // namespace
-
-void ApplyConfigOverride(YAML::Node root, const std::string& dotted_key, const std::string& value_text,
-                         const std::string& source_name) {
-  const std::string option = "--set " + dotted_key;
+// The value of `--set <key>` (`option`) parsed into `value`, with the checks a
+// config file gets and a bound on its copy; its extent.
+config::ConfigNode::Extent ParseSetValue(const std::string& option, const std::string& value_text, YAML::Node* value) {
   using config::ConfigNode;
   if (value_text.size() > ConfigNode::kMaxFileBytes) {
     throw std::invalid_argument(option + ": the value is " + std::to_string(value_text.size()) +
                                 " bytes; at most " + std::to_string(ConfigNode::kMaxFileBytes) +
                                 " (the limit of a config file)");
   }
-  YAML::Node value;
   ConfigNode::Extent extent;
   try {
     YAML::Load(value_text);  // yaml-cpp's own message for text that is not YAML
@@ -96,8 +93,8 @@ void ApplyConfigOverride(YAML::Node root, const std::string& dotted_key, const s
   try {
     // The config file's checks: the value is copied below, and an alias to
     // itself (&a [*a]) or aliases nested ten by ten would be copied without end.
-    value = ConfigNode::ParseYaml(value_text, option);
-    extent = ConfigNode::CheckTree(value, option);
+    *value = ConfigNode::ParseYaml(value_text, option);
+    extent = ConfigNode::CheckTree(*value, option);
   } catch (const config::ConfigError& e) {
     throw std::invalid_argument(e.what());
   }
@@ -110,6 +107,17 @@ void ApplyConfigOverride(YAML::Node root, const std::string& dotted_key, const s
                                 std::to_string(kMaxSetValues) + " (it is copied into the config; put a larger "
                                 "value in the config file)");
   }
+  return extent;
+}
+
+}  // namespace
+
+void ApplyConfigOverride(YAML::Node root, const std::string& dotted_key, const std::string& value_text,
+                         const std::string& source_name) {
+  const std::string option = "--set " + dotted_key;
+  using config::ConfigNode;
+  YAML::Node value;
+  const ConfigNode::Extent extent = ParseSetValue(option, value_text, &value);
 
   const std::vector<std::string> parts = SplitKey(dotted_key);
   YAML::Node node = root;

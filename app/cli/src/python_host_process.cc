@@ -1,18 +1,15 @@
 #include "python_host_process.h"
 
-#include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
 #include <spdlog/spdlog.h>
 #include <sys/eventfd.h>
 #include <sys/mman.h>
-#include <sys/prctl.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstring>
 #include <algorithm>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -23,18 +20,13 @@
 #include "dream/config/config_error.h"
 #include "dream/config/sim_node_options.h"
 #include "dream/robot_fault_t.hpp"
+#include "spawned_python_host.h"
 
 namespace dream::cli {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Where the process finds what its parent gives it (python_host_child.cc).
-constexpr int kChildLinkFd = 3;
-constexpr int kChildTraceFd = 4;
-constexpr int kChildCellFd = 5;
-constexpr size_t kCellBytes = 4096;
-constexpr size_t kMaxTraceBytes = 1 << 16;
 // Frames for the process beyond this are dropped: it is far behind, i.e. stuck.
 constexpr size_t kMaxOutboxBytes = size_t{1} << 28;
 // Byte offsets in the LCM messages (after the 8-byte fingerprint): utime, step,
@@ -48,88 +40,6 @@ int64_t BigEndian64(const void* data, int at) {
   uint64_t value = 0;
   for (int i = 0; i < 8; ++i) value = (value << 8) | bytes[i];
   return static_cast<int64_t>(value);
-}
-
-struct Spawned {
-  pid_t pid = -1;
-  int link_fd = -1;
-  int trace_fd = -1;
-  std::atomic<int64_t>* cell = nullptr;
-};
-
-[[noreturn]] void ThrowErrno(const std::string& what) {
-  throw std::runtime_error("cannot start the process for the Python controllers: " + what + ": " +
-                           std::strerror(errno));
-}
-
-// dream-agent --python-host in its own process group, with the link, the
-// faulthandler pipe and the shared call cell on descriptors 3, 4 and 5.
-Spawned SpawnHost() {
-  const std::string binary = AgentBinaryPath();
-  const std::string option = "--python-host";
-  char* argv[] = {const_cast<char*>(binary.c_str()), const_cast<char*>(option.c_str()), nullptr};
-  int sockets[2];
-  if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sockets) != 0) ThrowErrno("socketpair");
-  int trace[2];
-  if (::pipe2(trace, O_CLOEXEC) != 0) ThrowErrno("pipe");
-  const int cell_fd = ::memfd_create("dream-python-call-cell", MFD_CLOEXEC);
-  if (cell_fd < 0 || ::ftruncate(cell_fd, kCellBytes) != 0) ThrowErrno("memfd");
-  void* cell = ::mmap(nullptr, kCellBytes, PROT_READ | PROT_WRITE, MAP_SHARED, cell_fd, 0);
-  if (cell == MAP_FAILED) ThrowErrno("mmap");
-  int report[2];
-  if (::pipe2(report, O_CLOEXEC) != 0) ThrowErrno("pipe");
-  // Its stdin: not the terminal, which a process outside the foreground
-  // group may not read (SIGTTIN would stop it).
-  const int null_fd = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
-  if (null_fd < 0) ThrowErrno("/dev/null");
-  const pid_t parent = ::getpid();
-  const pid_t pid = ::fork();
-  if (pid < 0) ThrowErrno("fork");
-  if (pid == 0) {
-    // Only async-signal-safe calls until exec. Its own group: the terminal's
-    // Ctrl-C is the parent's to handle, and the group is what the parent kills.
-    ::setpgid(0, 0);
-    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-    if (::getppid() != parent) ::_exit(127);
-    const int link = ::fcntl(sockets[1], F_DUPFD_CLOEXEC, 10);
-    const int trace_out = ::fcntl(trace[1], F_DUPFD_CLOEXEC, 10);
-    const int cell_in = ::fcntl(cell_fd, F_DUPFD_CLOEXEC, 10);
-    int error = 0;
-    if (link < 0 || trace_out < 0 || cell_in < 0 || ::dup2(null_fd, STDIN_FILENO) < 0 ||
-        ::dup2(link, kChildLinkFd) < 0 ||
-        ::dup2(trace_out, kChildTraceFd) < 0 || ::dup2(cell_in, kChildCellFd) < 0) {
-      error = errno;
-    } else {
-      ::execv(binary.c_str(), argv);
-      error = errno;
-    }
-    const ssize_t written = ::write(report[1], &error, sizeof error);
-    (void)written;
-    ::_exit(127);
-  }
-  ::setpgid(pid, pid);  // as the child does: whichever runs first
-  ::close(sockets[1]);
-  ::close(trace[1]);
-  ::close(cell_fd);
-  ::close(null_fd);
-  ::close(report[1]);
-  int error = 0;
-  ssize_t got = 0;
-  while ((got = ::read(report[0], &error, sizeof error)) < 0 && errno == EINTR) {
-  }
-  ::close(report[0]);
-  if (got > 0) {
-    int status = 0;
-    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
-    ::close(sockets[0]);
-    ::close(trace[0]);
-    ::munmap(cell, kCellBytes);
-    errno = error;
-    ThrowErrno(binary);
-  }
-  ::fcntl(trace[0], F_SETFL, O_NONBLOCK);
-  return {pid, sockets[0], trace[0], static_cast<std::atomic<int64_t>*>(cell)};
 }
 
 // The start frame: what the process hosts, and how.
@@ -152,84 +62,6 @@ PythonHostProcess::Limits WithDefaults(PythonHostProcess::Limits limits) {
   if (!(limits.agent_timeout_s > 0)) limits.agent_timeout_s = defaults.agent_timeout_s;
   if (!(limits.start_timeout_s > 0)) limits.start_timeout_s = defaults.start_timeout_s;
   return limits;
-}
-
-// Reads what the faulthandler pipe holds now (bounded).
-void ReadTrace(int fd, std::string* trace) {
-  char chunk[4096];
-  ssize_t n = 0;
-  while ((n = ::read(fd, chunk, sizeof chunk)) > 0) {
-    if (trace->size() < kMaxTraceBytes) trace->append(chunk, std::min<size_t>(n, kMaxTraceBytes - trace->size()));
-  }
-}
-
-// The innermost frame in `module_path` of a faulthandler dump ("  File
-// "/x/y.py", line 7 in update"), else in a file beside it (a helper it
-// imports); "" when neither is there (the dump holds the innermost 100
-// frames only, e.g. all inside the standard library).
-std::string TracedLineOf(const std::string& trace, const std::string& module_path) {
-  static const std::regex kFrame(R"re(File "([^"\n]*)", line (\d+) in (\S+))re");
-  const std::string folder = module_path.substr(0, module_path.rfind('/') + 1);
-  std::string beside;
-  for (auto it = std::sregex_iterator(trace.begin(), trace.end(), kFrame); it != std::sregex_iterator(); ++it) {
-    const std::string file = (*it)[1].str();
-    const std::string where = file + ":" + (*it)[2].str() + ": in " + (*it)[3].str();
-    if (!module_path.empty() && file == module_path) return where;
-    if (beside.empty() && !folder.empty() && file.rfind(folder, 0) == 0) beside = where;
-  }
-  return beside;
-}
-
-std::string ExitTextOf(int status) {
-  if (WIFEXITED(status)) return "exit code " + std::to_string(WEXITSTATUS(status));
-  if (WIFSIGNALED(status)) {
-    const int signal = WTERMSIG(status);
-    const char* name = sigabbrev_np(signal);
-    return "killed by signal " + std::to_string(signal) + (name != nullptr ? std::string(" (SIG") + name + ")" : "");
-  }
-  return "status " + std::to_string(status);
-}
-
-// SIGKILL to the whole group (whatever a controller forked included), then
-// the process itself is reaped; its status.
-int KillAndReap(pid_t pid) {
-  ::kill(-pid, SIGKILL);
-  ::kill(pid, SIGKILL);
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  return status;
-}
-
-// True when `pid` has ended (not reaped: its group stays killable); `how`,
-// if given, says how ("exit code N" or "killed by signal N (SIGX)").
-bool HasEnded(pid_t pid, std::string* how = nullptr) {
-  siginfo_t info{};
-  if (::waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOHANG | WNOWAIT) != 0 || info.si_pid != pid) {
-    return false;
-  }
-  if (how != nullptr) {
-    *how = ExitTextOf(info.si_code == CLD_EXITED ? W_EXITCODE(info.si_status, 0) : info.si_status);
-  }
-  return true;
-}
-
-// SIGUSR1 makes faulthandler write every thread's Python traceback; a
-// short moment for it to arrive.
-// moment for it to arrive (it writes at once; the world's deadline is near).
-void RequestTrace(pid_t pid, int trace_fd, std::string* trace) {
-  const size_t before = trace->size();
-  ::kill(pid, SIGUSR1);
-  const auto until = Clock::now() + std::chrono::milliseconds(60);
-  while (Clock::now() < until) {
-    pollfd fd{trace_fd, POLLIN, 0};
-    const bool written = trace->size() > before;
-    if (::poll(&fd, 1, written ? 5 : 10) <= 0) {
-      if (written) break;  // written, and quiet since
-      continue;
-    }
-    ReadTrace(trace_fd, trace);
-  }
 }
 
 // What the call in the cell was: loading the module (robot -1), a robot's
@@ -274,12 +106,12 @@ void PythonHostProcess::Check(const std::string& spec_json, double start_timeout
   limits.start_timeout_s = start_timeout_s;
   limits = WithDefaults(limits);
   const std::string module_path = ModulePathOf(spec_json);
-  const Spawned spawned = SpawnHost();
+  const SpawnedPythonHost spawned = SpawnedPythonHost::Start();
   RelayLink link(spawned.link_fd);
   std::string trace;
   auto cleanup = [&] {
     ::close(spawned.trace_fd);
-    ::munmap(spawned.cell, kCellBytes);
+    ::munmap(spawned.cell, SpawnedPythonHost::kCellBytes);
   };
   link.Send('S', "", StartFrame(spec_json, {}, 0, limits, true));
   const auto started = Clock::now();
@@ -332,7 +164,7 @@ PythonHostProcess::PythonHostProcess(lcm::LcmBus& bus, const std::string& spec_j
     : bus_(bus), robot_ids_(robot_ids), agent_id_(agent_id), limits_(WithDefaults(limits)),
       module_path_(ModulePathOf(spec_json)) {
   started_ = Clock::now();
-  const Spawned spawned = SpawnHost();
+  const SpawnedPythonHost spawned = SpawnedPythonHost::Start();
   pid_ = spawned.pid;
   link_ = std::make_unique<RelayLink>(spawned.link_fd);
   trace_fd_ = spawned.trace_fd;
@@ -369,7 +201,7 @@ PythonHostProcess::~PythonHostProcess() {
   }
   if (trace_fd_ >= 0) ::close(trace_fd_);
   if (wake_fd_ >= 0) ::close(wake_fd_);
-  if (cell_ != nullptr) ::munmap(cell_, kCellBytes);
+  if (cell_ != nullptr) ::munmap(cell_, SpawnedPythonHost::kCellBytes);
 }
 
 void PythonHostProcess::OnBusMessage(const std::string& channel, const void* data, int size) {

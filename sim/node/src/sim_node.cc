@@ -3,10 +3,9 @@
 #include <spdlog/spdlog.h>
 
 #include <cmath>
-#include <cstring>
-#include <functional>
+#include <optional>
+#include <utility>
 #include <stdexcept>
-#include <string_view>
 #include <thread>
 
 #include "dream/applied_commands_t.hpp"
@@ -33,9 +32,6 @@ namespace {
 double SecondsBetween(std::chrono::steady_clock::time_point from, std::chrono::steady_clock::time_point to) {
   return std::chrono::duration<double>(to - from).count();
 }
-
-// Bit for bit, so a resent NaN command is the same command (and not a conflict).
-bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
 
 // Decodes a message heard on `channel`, or reports why it does not decode
 // (as lcm::Subscribe does) and returns false.
@@ -76,7 +72,10 @@ SimNode::SimNode(lcm::LcmInterface& lcm, world::World& world, RunRecorder* recor
       options_(options),
       robots_(static_cast<size_t>(world.num_robots())),
       state_(run_status_t::WAITING_FOR_AGENTS),
-      run_id_(lcm::NewRunId()) {
+      run_id_(lcm::NewRunId()),
+      commands_(world, options_, run_id_, robots_, bad_messages_,
+                [this](int64_t run_id, const std::string& seen_on) { NoteOtherWorld(run_id, seen_on); }),
+      radio_(world, run_id_, bad_messages_) {
   std::string error;
   if (!options_.IsValid(&error)) throw std::invalid_argument("sim options: " + error);
   bad_messages_.set_step(world_.step());
@@ -112,57 +111,26 @@ void SimNode::OnMessage(const std::string& channel, const void* data, int size) 
   }
 }
 
-SimNode::Heard SimNode::Hear(const std::string& channel, const void* data, int size) {
+Heard SimNode::Hear(const std::string& channel, const void* data, int size) {
   if (channel.rfind(lcm::kCommandChannelPrefix, 0) == 0) {
     velocity_command_t command;
     if (!DecodeOrReport(bad_messages_, channel, data, size, &command)) return Heard::kRefused;
-    return OnCommand(channel, command);
+    return commands_.Take(channel, command);
   }
   if (channel.rfind(lcm::kFaultChannelPrefix, 0) == 0) {
     robot_fault_t fault;
     if (!DecodeOrReport(bad_messages_, channel, data, size, &fault)) return Heard::kRefused;
     return OnFault(channel, fault);
   }
-  if (channel.rfind(lcm::kRadioChannelPrefix, 0) == 0) return OnRadio(channel, data, size);
+  if (channel.rfind(lcm::kRadioChannelPrefix, 0) == 0) {
+    radio_message_t radio;
+    if (!DecodeOrReport(bad_messages_, channel, data, size, &radio)) return Heard::kRefused;
+    return radio_.Take(channel, radio, data, size);
+  }
   // DREAM_APPLIED and DREAM_MEASURED_POSES are the world's own records, never
   // sent: one heard is forged; any other name is not part of a run.
   bad_messages_.Report(channel, "not a channel agents send on (DREAM_CMD_<id>, DREAM_RADIO_<id>, DREAM_FAULT_<id>): "
                                 "refused, kept out of the run log");
-  return Heard::kRefused;
-}
-
-SimNode::Heard SimNode::OnRadio(const std::string& channel, const void* data, int size) {
-  radio_message_t radio;
-  if (!DecodeOrReport(bad_messages_, channel, data, size, &radio)) return Heard::kRefused;
-  const std::optional<int> id = lcm::RobotIdFromChannel(channel, lcm::kRadioChannelPrefix);
-  std::string problem;
-  if (radio.run_id != run_id_) {
-    problem = "radio of another run " + lcm::RunIdText(radio.run_id);
-  } else if (!id || *id != radio.sender_id || *id >= world_.num_robots()) {
-    problem = "radio from robot " + std::to_string(radio.sender_id) + " does not match its channel or this run's " +
-              std::to_string(world_.num_robots()) + " robots";
-  } else if (radio.step < 0 || radio.step > world_.step()) {
-    problem = "radio sent at step " + std::to_string(radio.step) + " but the world is at step " +
-              std::to_string(world_.step());
-  }
-  if (problem.empty()) {
-    RobotSlot& robot = robots_[static_cast<size_t>(*id)];
-    const size_t hash = std::hash<std::string_view>{}(std::string_view(static_cast<const char*>(data), size));
-    if (robot.radio_world_step != world_.step()) {
-      robot.radio_world_step = world_.step();
-      robot.radio_messages = 0;
-    } else if (hash == robot.radio_hash) {
-      return Heard::kRepeat;  // the agent's resend with the world's resent step
-    }
-    if (robot.radio_messages < kMaxRadioPerRobotPerStep) {
-      ++robot.radio_messages;
-      robot.radio_hash = hash;
-      return Heard::kUsed;
-    }
-    problem = "more than " + std::to_string(kMaxRadioPerRobotPerStep) + " different radio messages from robot " +
-              std::to_string(*id) + " at step " + std::to_string(world_.step()) + " (a flood)";
-  }
-  bad_messages_.Report(channel, problem, radio.agent_id);
   return Heard::kRefused;
 }
 
@@ -184,12 +152,6 @@ std::string SimNode::RecorderFailureReason() const {
   return "the run log could not be written at step " + std::to_string(step) + ": " + recorder_->failure();
 }
 
-void SimNode::Reject(const std::string& channel, const std::string& reason, int64_t agent_id) {
-  ++rejected_commands_;
-  // Rejections are the user's bug; say it once per channel, then every 100th.
-  bad_messages_.Report(channel, "rejected command: " + reason, agent_id);
-}
-
 void SimNode::NoteOtherWorld(int64_t run_id, const std::string& seen_on) {
   // 0 is "no run" (a message made without one), not a world.
   if (run_id == 0 || run_id == run_id_ || other_worlds_.size() >= kMaxOtherWorlds || !other_worlds_.insert(run_id).second) return;
@@ -202,14 +164,7 @@ void SimNode::OnStatus(const std::string& /*channel*/, const run_status_t& statu
   if (status.run_id != run_id_) NoteOtherWorld(status.run_id, lcm::kStatusChannel);
 }
 
-void SimNode::Conflict(const std::string& channel, RobotSlot& robot, const velocity_command_t& command,
-                       const std::string& reason) {
-  ++command_conflicts_;
-  ++robot.conflicts;
-  Reject(channel, "conflict: " + reason, command.agent_id);
-}
-
-SimNode::Heard SimNode::OnFault(const std::string& channel, const robot_fault_t& fault) {
+Heard SimNode::OnFault(const std::string& channel, const robot_fault_t& fault) {
   if (fault.run_id != run_id_) {
     NoteOtherWorld(fault.run_id, channel);
     bad_messages_.Report(channel, "robot fault of another run " + lcm::RunIdText(fault.run_id), fault.agent_id);
@@ -241,102 +196,6 @@ SimNode::Heard SimNode::OnFault(const std::string& channel, const robot_fault_t&
   spdlog::error("robot {} lost at step {}: its controller failed: {}; it stops, the run goes on", *id,
                 world_.step(), detail);
   return Heard::kUsed;
-}
-
-SimNode::Heard SimNode::OnCommand(const std::string& channel, const velocity_command_t& command) {
-  const std::optional<int> channel_id = lcm::RobotIdFromCommandChannel(channel);
-  if (!channel_id) {
-    Reject(channel, "channel name must be DREAM_CMD_<robot id>", command.agent_id);
-    return Heard::kRefused;
-  }
-  if (command.run_id != run_id_) {
-    NoteOtherWorld(command.run_id, channel);
-    Reject(channel, "answers run " + lcm::RunIdText(command.run_id) + ", not this run " + lcm::RunIdText(run_id_),
-           command.agent_id);
-    return Heard::kRefused;
-  }
-  const int id = *channel_id;
-  if (id >= world_.num_robots()) {
-    Reject(channel, "robot " + std::to_string(id) + " does not exist: this run has " +
-                        std::to_string(world_.num_robots()) + " robots (ids 0.." +
-                        std::to_string(world_.num_robots() - 1) + ")", command.agent_id);
-    return Heard::kRefused;
-  }
-  if (command.robot_id != id) {
-    Reject(channel, "payload robot_id " + std::to_string(command.robot_id) + " does not match the channel", command.agent_id);
-    return Heard::kRefused;
-  }
-  // Commands answer the step the world is at: a later step was never
-  // published, and one further back is late (lockstep: already taken).
-  if (command.step < 0 || command.step > world_.step()) {
-    Reject(channel, "answers step " + std::to_string(command.step) + " but the world is at step " +
-                        std::to_string(world_.step()), command.agent_id);
-    return Heard::kRefused;
-  }
-  const bool lockstep = options_.mode == config::WorldMode::kLockstep;
-  RobotSlot& robot = robots_[static_cast<size_t>(id)];
-  // Late (older than the command held, or for a step the robot missed) or
-  // resent: not used again, so not recorded again; the log keeps one command
-  // per robot and step, whoever floods the bus.
-  if (command.step < robot.command_step) return Heard::kRepeat;
-  if (command.step == robot.command_step) {
-    // The resend of the world's step gets the same answer again; anything
-    // else for this robot and step is a second sender, also when it comes
-    // just after the world took the step (the held command is that step's).
-    // The held command came from the robot's owner (others are refused).
-    const bool same = SameBits(command.v, robot.received_v) && SameBits(command.w, robot.received_w) &&
-                      command.done == robot.done && command.agent_id == robot.owner_agent_id;
-    if (!same) {
-      Conflict(channel, robot, command,
-               "robot " + std::to_string(id) + " already has a different command for step " +
-                   std::to_string(command.step) + " (from agent " + std::to_string(robot.owner_agent_id) +
-                   "); this one from agent " + std::to_string(command.agent_id) + " is refused, the first is applied");
-      return Heard::kRefused;
-    }
-    return Heard::kRepeat;  // the same again (the world resent its step)
-  }
-  if (lockstep && command.step < world_.step()) return Heard::kRepeat;
-  if (!robot.owned || (robot.lost && robot.owner_agent_id != command.agent_id)) {
-    if (robot.owned) spdlog::warn("robot {}: agent {:#x} takes over from lost agent {:#x}", id, command.agent_id, robot.owner_agent_id);
-    robot.owned = true;
-    robot.owner_agent_id = command.agent_id;
-  } else if (robot.owner_agent_id != command.agent_id) {
-    Conflict(channel, robot, command,
-             "robot " + std::to_string(id) + " is already driven by agent " + std::to_string(robot.owner_agent_id) +
-                 "; a second agent " + std::to_string(command.agent_id) +
-                 " sends commands for it too. Stop one of them.");
-    return Heard::kRefused;
-  }
-  const auto now = Clock::now();
-  robot.last_heard = now;
-  if (robot.lost) {
-    robot.lost = false;
-    spdlog::info("robot {}: agent is back (step {})", id, world_.step());
-  }
-
-  robot.command_step = command.step;
-  robot.conflicts = 0;
-  robot.received_v = command.v;
-  robot.received_w = command.w;
-  const bool finite = std::isfinite(command.v) && std::isfinite(command.w);
-  const bool absurd =
-      !finite || std::abs(command.v) > options_.max_abs_v_mps || std::abs(command.w) > options_.max_abs_w_radps;
-  if (absurd) {
-    Reject(channel, "absurd velocity v=" + std::to_string(command.v) + " m/s, w=" + std::to_string(command.w) +
-                        " rad/s (limits " + std::to_string(options_.max_abs_v_mps) + ", " +
-                        std::to_string(options_.max_abs_w_radps) + "); robot " + std::to_string(id) +
-                        " holds still", command.agent_id);
-    robot.v_mps = 0.0;
-    robot.w_radps = 0.0;
-  } else {
-    robot.v_mps = command.v;
-    robot.w_radps = command.w;
-  }
-  robot.done = command.done;
-  if (!lockstep) world_.SetCommand(id, world::UnicycleCommand{robot.v_mps, robot.w_radps});
-  // An absurd command answers the step (the robot holds still), but its
-  // values were refused: kept apart from the log, whose DREAM_APPLIED shows the stop.
-  return absurd ? Heard::kRefused : Heard::kUsed;
 }
 
 void SimNode::RecordApplied() {
@@ -386,8 +245,8 @@ void SimNode::PublishStatus(int8_t state, const std::string& detail, bool record
   status.collision_errors = counts.collision_errors;
   status.actuator_errors = counts.actuator_errors;
   status.obstacle_collisions = counts.obstacle_collisions;
-  status.rejected_commands = rejected_commands_;
-  status.command_conflicts = command_conflicts_;
+  status.rejected_commands = commands_.rejected_commands();
+  status.command_conflicts = commands_.command_conflicts();
   for (size_t i = 0; i < robots_.size(); ++i) {
     if (robots_[i].lost) status.lost_robot_ids.push_back(static_cast<int32_t>(i));
   }
@@ -496,8 +355,8 @@ RunOutcome SimNode::Finish(RunOutcome::End end, const std::string& reason) {
   }
   outcome.steps = world_.step();
   outcome.wall_time_s = SecondsBetween(run_start_, Clock::now());
-  outcome.rejected_commands = rejected_commands_;
-  outcome.command_conflicts = command_conflicts_;
+  outcome.rejected_commands = commands_.rejected_commands();
+  outcome.command_conflicts = commands_.command_conflicts();
   outcome.run_id = run_id_;
   outcome.other_worlds = other_worlds_;
   outcome.robots_ever_lost = robots_ever_lost_;
@@ -522,12 +381,86 @@ RunOutcome SimNode::Finish(RunOutcome::End end, const std::string& reason) {
   return outcome;
 }
 
+std::optional<RunOutcome> SimNode::StartWhenAllAnswered(Clock::time_point now, Clock::time_point* next_realtime_step) {
+  if (AllLiveAnswered()) {
+    state_ = run_status_t::RUNNING;
+    spdlog::info("all {} robots have agents; running ({})", world_.num_robots(), config::WorldModeName(options_.mode));
+    *next_realtime_step = now;
+    if (progress_ != nullptr) progress_->Start(options_.max_steps, world_.step(), now);
+    // Agents answered step 0; in real time their answer is the latest command.
+  } else if (SecondsBetween(step_published_, now) > options_.start_timeout_s) {
+    std::vector<int> missing;
+    for (size_t i = 0; i < robots_.size(); ++i) {
+      if (!Answered(robots_[i])) missing.push_back(static_cast<int>(i));
+    }
+    return Finish(RunOutcome::End::kStartTimeout,
+                  "no agent answered for robot(s) " + JoinIds(missing) + " within " +
+                      std::to_string(static_cast<int>(options_.start_timeout_s)) +
+                      " s; start them (dream agent --robots ...) on the same LCM URL " + lcm_.url());
+  }
+  return std::nullopt;
+}
+
+bool SimNode::ReadyForNextStep(Clock::time_point now, Clock::time_point next_realtime_step) {
+  if (options_.mode == config::WorldMode::kLockstep) {
+    if (!AllLiveAnswered() && SecondsBetween(step_published_, now) > options_.agent_timeout_s) {
+      MarkSilentRobotsLost(now);
+    }
+    return AllLiveAnswered();
+  }
+  const bool ready = now >= next_realtime_step;
+  if (ready) MarkSilentRobotsLost(now);
+  return ready;
+}
+
+std::optional<RunOutcome> SimNode::TakeStep() {
+  AdvanceWorld();
+  bool all_done = options_.stop_when_done;
+  for (const RobotSlot& robot : robots_) all_done = all_done && robot.done;
+  const bool world_ended = world_.step() >= world_.last_step();
+  if (world_.step() >= options_.max_steps || all_done || world_ended) {
+    PublishStep(true);
+    return Finish(RunOutcome::End::kFinished, all_done      ? "every robot reported done"
+                                              : world_ended ? "the world has no more steps (end of the recording)"
+                                                            : "reached the step limit");
+  }
+  PublishStep(true);
+  step_published_ = last_resend_ = Clock::now();
+  if (progress_ != nullptr) progress_->Update(world_.step(), step_published_);
+  // With every robot lost nothing holds a lockstep world back, but what
+  // has arrived is still read each step (the in-process agents' answers
+  // to this step included): late faults are recorded, and an agent that
+  // speaks again rejoins (it would never be heard otherwise). Bounded,
+  // so a flood cannot hold the world.
+  if (options_.mode == config::WorldMode::kLockstep && AllRobotsLost()) {
+    for (int handled = 0; handled < 10000 && lcm_.HandleSubscriptions(0) > 0; ++handled) {
+    }
+  }
+  return std::nullopt;
+}
+
+void SimNode::ResendStepAndListen(Clock::time_point now, Clock::time_point next_realtime_step) {
+  const bool lockstep = options_.mode == config::WorldMode::kLockstep;
+  // While waiting for answers, publish the step again: a datagram may have
+  // been lost, or agents started after the world. Agents answer idempotently.
+  const bool waiting = lockstep || state_ == run_status_t::WAITING_FOR_AGENTS;
+  if (waiting && SecondsBetween(last_resend_, now) > options_.resend_interval_s) {
+    PublishStep(false);
+    last_resend_ = now;
+  }
+  int timeout_ms = 10;
+  if (!lockstep && state_ == run_status_t::RUNNING) {
+    const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(next_realtime_step - Clock::now());
+    timeout_ms = static_cast<int>(std::max<int64_t>(0, std::min<int64_t>(wait.count(), 10)));
+  }
+  lcm_.HandleSubscriptions(timeout_ms);
+}
+
 RunOutcome SimNode::Run(const std::atomic<bool>& stop) {
   run_start_ = Clock::now();
   state_ = run_status_t::WAITING_FOR_AGENTS;
   PublishStep(true);
   step_published_ = last_resend_ = Clock::now();
-  const bool lockstep = options_.mode == config::WorldMode::kLockstep;
   // Real time: one world step per time step of wall time.
   const auto step_period =
       std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(world_.time_step_s()));
@@ -537,78 +470,15 @@ RunOutcome SimNode::Run(const std::atomic<bool>& stop) {
     if (RecorderFailed()) return Finish(RunOutcome::End::kFailed, RecorderFailureReason());
     if (stop.load()) return Finish(RunOutcome::End::kInterrupted, "interrupted (Ctrl-C or SIGTERM)");
     const auto now = Clock::now();
-
     if (state_ == run_status_t::WAITING_FOR_AGENTS) {
-      if (AllLiveAnswered()) {
-        state_ = run_status_t::RUNNING;
-        spdlog::info("all {} robots have agents; running ({})", world_.num_robots(), config::WorldModeName(options_.mode));
-        next_realtime_step = now;
-        if (progress_ != nullptr) progress_->Start(options_.max_steps, world_.step(), now);
-        // Agents answered step 0; in real time their answer is the latest command.
-      } else if (SecondsBetween(step_published_, now) > options_.start_timeout_s) {
-        std::vector<int> missing;
-        for (size_t i = 0; i < robots_.size(); ++i) {
-          if (!Answered(robots_[i])) missing.push_back(static_cast<int>(i));
-        }
-        return Finish(RunOutcome::End::kStartTimeout,
-                      "no agent answered for robot(s) " + JoinIds(missing) + " within " +
-                          std::to_string(static_cast<int>(options_.start_timeout_s)) +
-                          " s; start them (dream agent --robots ...) on the same LCM URL " + lcm_.url());
-      }
+      if (std::optional<RunOutcome> timed_out = StartWhenAllAnswered(now, &next_realtime_step)) return std::move(*timed_out);
     }
-
-    if (state_ == run_status_t::RUNNING) {
-      bool ready = false;
-      if (lockstep) {
-        if (!AllLiveAnswered() && SecondsBetween(step_published_, now) > options_.agent_timeout_s) {
-          MarkSilentRobotsLost(now);
-        }
-        ready = AllLiveAnswered();
-      } else {
-        ready = now >= next_realtime_step;
-        if (ready) MarkSilentRobotsLost(now);
-      }
-      if (ready) {
-        AdvanceWorld();
-        next_realtime_step += step_period;
-        bool all_done = options_.stop_when_done;
-        for (const RobotSlot& robot : robots_) all_done = all_done && robot.done;
-        const bool world_ended = world_.step() >= world_.last_step();
-        if (world_.step() >= options_.max_steps || all_done || world_ended) {
-          PublishStep(true);
-          return Finish(RunOutcome::End::kFinished, all_done      ? "every robot reported done"
-                                                    : world_ended ? "the world has no more steps (end of the recording)"
-                                                                  : "reached the step limit");
-        }
-        PublishStep(true);
-        step_published_ = last_resend_ = Clock::now();
-        if (progress_ != nullptr) progress_->Update(world_.step(), step_published_);
-        // With every robot lost nothing holds a lockstep world back, but what
-        // has arrived is still read each step (the in-process agents' answers
-        // to this step included): late faults are recorded, and an agent that
-        // speaks again rejoins (it would never be heard otherwise). Bounded,
-        // so a flood cannot hold the world.
-        if (lockstep && AllRobotsLost()) {
-          for (int handled = 0; handled < 10000 && lcm_.HandleSubscriptions(0) > 0; ++handled) {
-          }
-        }
-        continue;
-      }
+    if (state_ == run_status_t::RUNNING && ReadyForNextStep(now, next_realtime_step)) {
+      next_realtime_step += step_period;
+      if (std::optional<RunOutcome> finished = TakeStep()) return std::move(*finished);
+      continue;
     }
-
-    // While waiting for answers, publish the step again: a datagram may have
-    // been lost, or agents started after the world. Agents answer idempotently.
-    const bool waiting = lockstep || state_ == run_status_t::WAITING_FOR_AGENTS;
-    if (waiting && SecondsBetween(last_resend_, now) > options_.resend_interval_s) {
-      PublishStep(false);
-      last_resend_ = now;
-    }
-    int timeout_ms = 10;
-    if (!lockstep && state_ == run_status_t::RUNNING) {
-      const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(next_realtime_step - Clock::now());
-      timeout_ms = static_cast<int>(std::max<int64_t>(0, std::min<int64_t>(wait.count(), 10)));
-    }
-    lcm_.HandleSubscriptions(timeout_ms);
+    ResendStepAndListen(now, next_realtime_step);
   }
 }
 

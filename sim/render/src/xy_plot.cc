@@ -54,6 +54,38 @@ void Text(cairo_t* cr, double x, double y, const std::string& text, double size,
   cairo_show_text(cr, text.c_str());
 }
 
+// The panel's frame, its title above it and its axes' labels.
+void DrawFrameAndLabels(cairo_t* cr, const XyPanel& panel, double left, double top, double width, double height,
+                        double ui) {
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  cairo_set_line_width(cr, std::max(1.0, ui));
+  cairo_rectangle(cr, left, top, width, height);
+  cairo_stroke(cr);
+  Text(cr, left, top - 8 * ui, panel.title, 13 * ui, true);
+  cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
+  Text(cr, left + width, top + height + 30 * ui, panel.x_label, 11 * ui, false, 1.0);
+  cairo_save(cr);
+  cairo_move_to(cr, left - 42 * ui, top + height / 2);
+  cairo_rotate(cr, -M_PI / 2);
+  Text(cr, 0, 0, panel.y_label, 11 * ui, false, 0.5);
+  cairo_restore(cr);
+}
+
+// The legend, top left inside the panel: a swatch and the label of each labelled series.
+void DrawLegend(cairo_t* cr, const XyPanel& panel, double left, double top, double ui) {
+  double legend_y = top + 16 * ui;
+  for (const XySeries& s : panel.series) {
+    if (s.label.empty()) continue;
+    const auto& rgb = RobotColor(s.color);
+    cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
+    cairo_rectangle(cr, left + 8 * ui, legend_y - 8 * ui, 10 * ui, 8 * ui);
+    cairo_fill(cr);
+    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+    Text(cr, left + 22 * ui, legend_y, s.label, 10 * ui, false);
+    legend_y += 14 * ui;
+  }
+}
+
 void DrawPanel(cairo_t* cr, const XyPanel& panel, double left, double top, double width, double height, double ui) {
   const Bounds b = BoundsOf(panel);
   auto x_px = [&](double x) { return left + (x - b.x_lo) / (b.x_hi - b.x_lo) * width; };
@@ -114,30 +146,8 @@ void DrawPanel(cairo_t* cr, const XyPanel& panel, double left, double top, doubl
     }
   }
   cairo_restore(cr);
-  cairo_set_source_rgb(cr, 0, 0, 0);
-  cairo_set_line_width(cr, std::max(1.0, ui));
-  cairo_rectangle(cr, left, top, width, height);
-  cairo_stroke(cr);
-  Text(cr, left, top - 8 * ui, panel.title, 13 * ui, true);
-  cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
-  Text(cr, left + width, top + height + 30 * ui, panel.x_label, 11 * ui, false, 1.0);
-  cairo_save(cr);
-  cairo_move_to(cr, left - 42 * ui, top + height / 2);
-  cairo_rotate(cr, -M_PI / 2);
-  Text(cr, 0, 0, panel.y_label, 11 * ui, false, 0.5);
-  cairo_restore(cr);
-  // Legend, top left inside the panel.
-  double legend_y = top + 16 * ui;
-  for (const XySeries& s : panel.series) {
-    if (s.label.empty()) continue;
-    const auto& rgb = RobotColor(s.color);
-    cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
-    cairo_rectangle(cr, left + 8 * ui, legend_y - 8 * ui, 10 * ui, 8 * ui);
-    cairo_fill(cr);
-    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-    Text(cr, left + 22 * ui, legend_y, s.label, 10 * ui, false);
-    legend_y += 14 * ui;
-  }
+  DrawFrameAndLabels(cr, panel, left, top, width, height, ui);
+  DrawLegend(cr, panel, left, top, ui);
 }
 
 }  // namespace

@@ -169,79 +169,72 @@ world::RealismParams ReadRealism(const config::ConfigNode& root, RunConfig* conf
   return ReadRealismKeys(node, base);
 }
 
-// Needs config.obstacles: generated poses avoid them and listed poses may not
-// start inside one (either would be an obstacle collision at step 0).
-std::vector<world::Pose2> ReadInitialPoses(const config::ConfigNode& root, const RunConfig& config) {
-  const config::ConfigNode node = root.Optional("initial_poses");
-  if (!node.IsDefined() || node.IsMap()) {
-    world::InitialPoseParams params;
-    config::ConfigNode where = node;  // the key a failure names
-    if (node.IsDefined()) {
-      node.RejectUnknownKeys({"generate"});
-      const config::ConfigNode generate = node.Required("generate");
-      where = generate;
-      if (generate.IsMap()) {
-        generate.RejectUnknownKeys({"min_spacing_m", "wall_margin_m"});
-        params.min_spacing_m = generate.GetDouble("min_spacing_m", params.min_spacing_m);
-        params.wall_margin_m = generate.GetDouble("wall_margin_m", params.wall_margin_m);
-        if (params.wall_margin_m < kStartWallClearanceM) {
-          generate.Required("wall_margin_m")
-              .Fail("must be at least " + FormatExact(kStartWallClearanceM) +
-                    " m (the robot's radius): the lab refuses a start pose closer to a wall "
-                    "(start_inside_arena), got " + generate.Required("wall_margin_m").AsString());
-        }
+// `initial_poses` absent or `{generate: {...}}`: poses drawn clear of the
+// walls, of each other and of the obstacles.
+std::vector<world::Pose2> GenerateInitialPoses(const config::ConfigNode& node, const RunConfig& config) {
+  world::InitialPoseParams params;
+  config::ConfigNode where = node;  // the key a failure names
+  if (node.IsDefined()) {
+    node.RejectUnknownKeys({"generate"});
+    const config::ConfigNode generate = node.Required("generate");
+    where = generate;
+    if (generate.IsMap()) {
+      generate.RejectUnknownKeys({"min_spacing_m", "wall_margin_m"});
+      params.min_spacing_m = generate.GetDouble("min_spacing_m", params.min_spacing_m);
+      params.wall_margin_m = generate.GetDouble("wall_margin_m", params.wall_margin_m);
+      if (params.wall_margin_m < kStartWallClearanceM) {
+        generate.Required("wall_margin_m")
+            .Fail("must be at least " + FormatExact(kStartWallClearanceM) +
+                  " m (the robot's radius): the lab refuses a start pose closer to a wall "
+                  "(start_inside_arena), got " + generate.Required("wall_margin_m").AsString());
       }
     }
-    try {
-      return world::InitialPoseGenerator(config.world, params, config.obstacles)
-          .Generate(config.num_robots, config.seed);
-    } catch (const std::invalid_argument& e) {
-      where.Fail(std::string("cannot generate initial poses: ") + e.what() +
-                 "; or list one [x, y, theta] per robot under initial_poses");
-    }
   }
-  if (!node.IsSequence() || node.size() != static_cast<size_t>(config.num_robots)) {
-    node.Fail("expected one [x, y, theta] per robot (" + std::to_string(config.num_robots) + "), got " +
-              (node.IsSequence() ? std::to_string(node.size()) : std::string("no list")) +
-              "; or write `initial_poses: {generate: {min_spacing_m: 0.3}}`");
+  try {
+    return world::InitialPoseGenerator(config.world, params, config.obstacles)
+        .Generate(config.num_robots, config.seed);
+  } catch (const std::invalid_argument& e) {
+    where.Fail(std::string("cannot generate initial poses: ") + e.what() +
+               "; or list one [x, y, theta] per robot under initial_poses");
   }
-  const world::StartPoseObstacleCheck obstacle_check(config.world, config.obstacles);
-  std::vector<world::Pose2> poses;
-  for (size_t i = 0; i < node.size(); ++i) {
-    const std::vector<double> values = node[i].AsDoubles();
-    if (values.size() != 3) node[i].Fail("expected [x, y, theta] (metres, metres, radians)");
-    const world::Pose2 pose{values[0], values[1], values[2]};
-    if (!config.world.arena.Contains(pose.x_m, pose.y_m)) {
-      node[i].Fail("robot " + std::to_string(i) + " starts at (" + Format(pose.x_m) + ", " + Format(pose.y_m) +
-                   "), outside the arena x in [" + Format(config.world.arena.x_min_m) + ", " +
-                   Format(config.world.arena.x_max_m) + "], y in [" + Format(config.world.arena.y_min_m) + ", " +
-                   Format(config.world.arena.y_max_m) + "]");
-    }
-    if (!ClearOfTheWalls(config.world.arena, pose)) {
-      const world::Arena& arena = config.world.arena;
-      const double m = kStartWallClearanceM;
-      node[i].Fail("robot " + std::to_string(i) + " starts at (" + Format(pose.x_m) + ", " + Format(pose.y_m) +
-                   "), closer than its radius " + FormatExact(m) +
-                   " m to the arena's wall: the lab cannot place it there (dream export's start_inside_arena "
-                   "rule); start poses need x in [" + Format(arena.x_min_m + m) + ", " + Format(arena.x_max_m - m) +
-                   "], y in [" + Format(arena.y_min_m + m) + ", " + Format(arena.y_max_m - m) + "]");
-    }
-    // Only step 0 counts: a moving obstacle may sweep over a start pose later.
-    const int touched = obstacle_check.FirstTouchedObstacle(pose);
-    if (touched >= 0) {
-      const world::RectangleObstacleSpec& obstacle = config.obstacles[static_cast<size_t>(touched)];
-      node[i].Fail("robot " + std::to_string(i) + " starts inside obstacle " + std::to_string(touched) +
-                   ": at (" + Format(pose.x_m) + ", " + Format(pose.y_m) + ", " + Format(pose.theta_rad) +
-                   ") its collision disc (centre (" + Format(obstacle_check.CollisionCenterX(pose)) + ", " +
-                   Format(obstacle_check.CollisionCenterY(pose)) + "), radius " +
-                   FormatExact(obstacle_check.collision_radius_m()) + " m) touches obstacles[" +
-                   std::to_string(touched) + "] (centre (" + Format(obstacle.center_m.x()) + ", " +
-                   Format(obstacle.center_m.y()) + "), size " + Format(obstacle.width_m) + " x " +
-                   Format(obstacle.height_m) + " m, at step 0); move the robot or the obstacle");
-    }
-    poses.push_back(pose);
+}
+
+// A listed start pose the lab would refuse: outside the arena, against a wall,
+// or inside an obstacle at step 0. `item` (robot `i`'s entry) names the failure.
+void CheckListedPose(const config::ConfigNode& item, size_t i, const world::Pose2& pose, const RunConfig& config,
+                     const world::StartPoseObstacleCheck& obstacle_check) {
+  if (!config.world.arena.Contains(pose.x_m, pose.y_m)) {
+    item.Fail("robot " + std::to_string(i) + " starts at (" + Format(pose.x_m) + ", " + Format(pose.y_m) +
+              "), outside the arena x in [" + Format(config.world.arena.x_min_m) + ", " +
+              Format(config.world.arena.x_max_m) + "], y in [" + Format(config.world.arena.y_min_m) + ", " +
+              Format(config.world.arena.y_max_m) + "]");
   }
-  // Robots that start in collision would make the Robotarium reject the run.
+  if (!ClearOfTheWalls(config.world.arena, pose)) {
+    const world::Arena& arena = config.world.arena;
+    const double m = kStartWallClearanceM;
+    item.Fail("robot " + std::to_string(i) + " starts at (" + Format(pose.x_m) + ", " + Format(pose.y_m) +
+              "), closer than its radius " + FormatExact(m) +
+              " m to the arena's wall: the lab cannot place it there (dream export's start_inside_arena "
+              "rule); start poses need x in [" + Format(arena.x_min_m + m) + ", " + Format(arena.x_max_m - m) +
+              "], y in [" + Format(arena.y_min_m + m) + ", " + Format(arena.y_max_m - m) + "]");
+  }
+  // Only step 0 counts: a moving obstacle may sweep over a start pose later.
+  const int touched = obstacle_check.FirstTouchedObstacle(pose);
+  if (touched >= 0) {
+    const world::RectangleObstacleSpec& obstacle = config.obstacles[static_cast<size_t>(touched)];
+    item.Fail("robot " + std::to_string(i) + " starts inside obstacle " + std::to_string(touched) +
+              ": at (" + Format(pose.x_m) + ", " + Format(pose.y_m) + ", " + Format(pose.theta_rad) +
+              ") its collision disc (centre (" + Format(obstacle_check.CollisionCenterX(pose)) + ", " +
+              Format(obstacle_check.CollisionCenterY(pose)) + "), radius " +
+              FormatExact(obstacle_check.collision_radius_m()) + " m) touches obstacles[" +
+              std::to_string(touched) + "] (centre (" + Format(obstacle.center_m.x()) + ", " +
+              Format(obstacle.center_m.y()) + "), size " + Format(obstacle.width_m) + " x " +
+              Format(obstacle.height_m) + " m, at step 0); move the robot or the obstacle");
+  }
+}
+
+// Robots that start in collision would make the Robotarium reject the run.
+void CheckStartsApart(const config::ConfigNode& node, const std::vector<world::Pose2>& poses, const RunConfig& config) {
   const double offset = config.world.collision_offset_m;
   for (size_t i = 0; i < poses.size(); ++i) {
     for (size_t j = i + 1; j < poses.size(); ++j) {
@@ -257,6 +250,28 @@ std::vector<world::Pose2> ReadInitialPoses(const config::ConfigNode& root, const
       }
     }
   }
+}
+
+// Needs config.obstacles: generated poses avoid them and listed poses may not
+// start inside one (either would be an obstacle collision at step 0).
+std::vector<world::Pose2> ReadInitialPoses(const config::ConfigNode& root, const RunConfig& config) {
+  const config::ConfigNode node = root.Optional("initial_poses");
+  if (!node.IsDefined() || node.IsMap()) return GenerateInitialPoses(node, config);
+  if (!node.IsSequence() || node.size() != static_cast<size_t>(config.num_robots)) {
+    node.Fail("expected one [x, y, theta] per robot (" + std::to_string(config.num_robots) + "), got " +
+              (node.IsSequence() ? std::to_string(node.size()) : std::string("no list")) +
+              "; or write `initial_poses: {generate: {min_spacing_m: 0.3}}`");
+  }
+  const world::StartPoseObstacleCheck obstacle_check(config.world, config.obstacles);
+  std::vector<world::Pose2> poses;
+  for (size_t i = 0; i < node.size(); ++i) {
+    const std::vector<double> values = node[i].AsDoubles();
+    if (values.size() != 3) node[i].Fail("expected [x, y, theta] (metres, metres, radians)");
+    const world::Pose2 pose{values[0], values[1], values[2]};
+    CheckListedPose(node[i], i, pose, config, obstacle_check);
+    poses.push_back(pose);
+  }
+  CheckStartsApart(node, poses, config);
   return poses;
 }
 

@@ -4,12 +4,17 @@
 #include <chrono>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "dream/applied_commands_t.hpp"
 #include "dream/lcm/bad_message_log.h"
 #include "dream/lcm/lcm_interface.h"
+#include "dream/node/command_intake.h"
+#include "dream/node/heard.h"
+#include "dream/node/radio_intake.h"
+#include "dream/node/robot_slot.h"
 #include "dream/node/run_outcome.h"
 #include "dream/config/sim_node_options.h"
 #include "dream/world/obstacle_state.h"
@@ -74,10 +79,9 @@ class SimNode {
   int64_t run_id() const { return run_id_; }
   /// Other worlds' run ids kept in the outcome, so a flood cannot grow memory.
   static constexpr size_t kMaxOtherWorlds = 16;
-  /// Different radio messages of one robot recorded per world step (its radio
-  /// speaks once a step; resends of the same message are not recorded again):
-  /// more are refused, so a flood with the run's id cannot grow the log.
-  static constexpr int kMaxRadioPerRobotPerStep = 4;
+  /// Different radio messages of one robot recorded per world step (resends
+  /// of the same message are not recorded again; see RadioIntake).
+  static constexpr int kMaxRadioPerRobotPerStep = RadioIntake::kMaxPerRobotPerStep;
 
   /// Shows the run's progress (steps/s, ETA to max_steps) on `reporter` from
   /// the first step on; null (the default): no progress output. Must outlive
@@ -92,42 +96,13 @@ class SimNode {
  private:
   using Clock = std::chrono::steady_clock;
 
-  struct RobotSlot {
-    int64_t owner_agent_id = 0;
-    bool owned = false;
-    bool lost = false;
-    bool done = false;
-    double v_mps = 0.0;
-    double w_radps = 0.0;
-    int64_t command_step = -1;     // step of the command held in v/w/done (sent by owner_agent_id); -1: none
-    int32_t conflicts = 0;         // refused different commands for command_step
-    double received_v = 0.0;       // the held command as sent (v/w are zeroed when it was absurd)
-    double received_w = 0.0;
-    int64_t radio_world_step = -1; // the world's step when radio_messages were recorded
-    int radio_messages = 0;        // different radio messages recorded from this robot at that step
-    size_t radio_hash = 0;         // of the last one recorded: its resend is not recorded again
-    Clock::time_point last_heard;
-  };
-
-  /// What became of a message heard on the bus.
-  enum class Heard {
-    kUsed,     ///< part of the run: recorded
-    kRefused,  ///< counted in bad_messages, kept out of the log (RefusedRecord)
-    kRepeat,   ///< a repeat of what the run took already (a resent command or radio, a second fault) or a late one: neither
-  };
   /// Every message heard: dispatched by channel, then recorded or refused.
   void OnMessage(const std::string& channel, const void* data, int size);
   Heard Hear(const std::string& channel, const void* data, int size);
-  Heard OnCommand(const std::string& channel, const velocity_command_t& command);
   Heard OnFault(const std::string& channel, const robot_fault_t& fault);
-  Heard OnRadio(const std::string& channel, const void* data, int size);
   void OnStatus(const std::string& channel, const run_status_t& status);
   /// Notes a run id of another world (logged once per id).
   void NoteOtherWorld(int64_t run_id, const std::string& seen_on);
-  /// Counts a command refused because the robot has another for its step
-  /// (a different one, or a second agent's): the first stays. `reason` says which.
-  void Conflict(const std::string& channel, RobotSlot& robot, const velocity_command_t& command,
-                const std::string& reason);
   /// Lockstep: the robot has a command for the step the world is at.
   bool Answered(const RobotSlot& robot) const { return robot.command_step == world_.step(); }
   /// Records which commands are applied at this step (DREAM_APPLIED).
@@ -137,7 +112,6 @@ class SimNode {
   void Record(const std::string& channel, const void* data, int size);
   bool RecorderFailed() const;
   std::string RecorderFailureReason() const;
-  void Reject(const std::string& channel, const std::string& reason, int64_t agent_id);
   void PublishStep(bool record);
   void PublishStatus(int8_t state, const std::string& detail, bool record);
   template <typename Message>
@@ -146,6 +120,16 @@ class SimNode {
   bool AllRobotsLost() const;
   void MarkSilentRobotsLost(Clock::time_point now);
   void AdvanceWorld();
+  /// Waiting for agents: starts the run once every robot has answered; ends
+  /// it (the outcome) when they have not within start_timeout_s.
+  std::optional<RunOutcome> StartWhenAllAnswered(Clock::time_point now, Clock::time_point* next_realtime_step);
+  /// Running: whether the world may take its next step now (lockstep: every
+  /// live robot answered; real time: its time came), marking silent robots lost.
+  bool ReadyForNextStep(Clock::time_point now, Clock::time_point next_realtime_step);
+  /// Steps the world and publishes the new step; the outcome when the run ends there.
+  std::optional<RunOutcome> TakeStep();
+  /// Publishes the step again when answers are awaited, then handles what arrives.
+  void ResendStepAndListen(Clock::time_point now, Clock::time_point next_realtime_step);
   RunOutcome Finish(RunOutcome::End end, const std::string& reason);
   int64_t SimUtime() const;
 
@@ -161,8 +145,8 @@ class SimNode {
   std::vector<RobotSlot> robots_;
   int8_t state_;
   int64_t run_id_;
-  int64_t rejected_commands_ = 0;
-  int64_t command_conflicts_ = 0;
+  CommandIntake commands_;
+  RadioIntake radio_;
   std::set<int64_t> other_worlds_;
   std::set<int> robots_ever_lost_;
   std::map<int, std::string> robot_faults_;

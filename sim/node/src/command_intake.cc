@@ -1,0 +1,160 @@
+#include "dream/node/command_intake.h"
+
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <utility>
+
+#include "dream/lcm/channels.h"
+#include "dream/lcm/run_id.h"
+#include "dream/velocity_command_t.hpp"
+
+namespace dream::node {
+namespace {
+
+// Bit for bit, so a resent NaN command is the same command (and not a conflict).
+bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
+
+}  // namespace
+
+CommandIntake::CommandIntake(world::World& world, const config::SimNodeOptions& options, int64_t run_id,
+                             std::vector<RobotSlot>& robots, lcm::BadMessageLog& bad_messages,
+                             OtherWorldSeen other_world_seen)
+    : world_(world),
+      options_(options),
+      run_id_(run_id),
+      robots_(robots),
+      bad_messages_(bad_messages),
+      other_world_seen_(std::move(other_world_seen)) {}
+
+void CommandIntake::Reject(const std::string& channel, const std::string& reason, int64_t agent_id) {
+  ++rejected_commands_;
+  // Rejections are the user's bug; say it once per channel, then every 100th.
+  bad_messages_.Report(channel, "rejected command: " + reason, agent_id);
+}
+
+void CommandIntake::Conflict(const std::string& channel, RobotSlot& robot, const velocity_command_t& command,
+                             const std::string& reason) {
+  ++command_conflicts_;
+  ++robot.conflicts;
+  Reject(channel, "conflict: " + reason, command.agent_id);
+}
+
+Heard CommandIntake::Take(const std::string& channel, const velocity_command_t& command) {
+  const std::optional<int> id = AddressedRobot(channel, command);
+  if (!id) return Heard::kRefused;
+  const bool lockstep = options_.mode == config::WorldMode::kLockstep;
+  RobotSlot& robot = robots_[static_cast<size_t>(*id)];
+  // Late (older than the command held, or for a step the robot missed) or
+  // resent: not used again, so not recorded again; the log keeps one command
+  // per robot and step, whoever floods the bus.
+  if (command.step < robot.command_step) return Heard::kRepeat;
+  if (command.step == robot.command_step) return AgainForHeldStep(channel, *id, robot, command);
+  if (lockstep && command.step < world_.step()) return Heard::kRepeat;
+  if (!ClaimRobot(channel, *id, robot, command)) return Heard::kRefused;
+  return Hold(channel, *id, robot, command);
+}
+
+std::optional<int> CommandIntake::AddressedRobot(const std::string& channel, const velocity_command_t& command) {
+  const std::optional<int> channel_id = lcm::RobotIdFromCommandChannel(channel);
+  if (!channel_id) {
+    Reject(channel, "channel name must be DREAM_CMD_<robot id>", command.agent_id);
+    return std::nullopt;
+  }
+  if (command.run_id != run_id_) {
+    other_world_seen_(command.run_id, channel);
+    Reject(channel, "answers run " + lcm::RunIdText(command.run_id) + ", not this run " + lcm::RunIdText(run_id_),
+           command.agent_id);
+    return std::nullopt;
+  }
+  const int id = *channel_id;
+  if (id >= world_.num_robots()) {
+    Reject(channel, "robot " + std::to_string(id) + " does not exist: this run has " +
+                        std::to_string(world_.num_robots()) + " robots (ids 0.." +
+                        std::to_string(world_.num_robots() - 1) + ")", command.agent_id);
+    return std::nullopt;
+  }
+  if (command.robot_id != id) {
+    Reject(channel, "payload robot_id " + std::to_string(command.robot_id) + " does not match the channel", command.agent_id);
+    return std::nullopt;
+  }
+  // Commands answer the step the world is at: a later step was never
+  // published, and one further back is late (lockstep: already taken).
+  if (command.step < 0 || command.step > world_.step()) {
+    Reject(channel, "answers step " + std::to_string(command.step) + " but the world is at step " +
+                        std::to_string(world_.step()), command.agent_id);
+    return std::nullopt;
+  }
+  return id;
+}
+
+Heard CommandIntake::AgainForHeldStep(const std::string& channel, int id, RobotSlot& robot,
+                                      const velocity_command_t& command) {
+  // The resend of the world's step gets the same answer again; anything
+  // else for this robot and step is a second sender, also when it comes
+  // just after the world took the step (the held command is that step's).
+  // The held command came from the robot's owner (others are refused).
+  const bool same = SameBits(command.v, robot.received_v) && SameBits(command.w, robot.received_w) &&
+                    command.done == robot.done && command.agent_id == robot.owner_agent_id;
+  if (!same) {
+    Conflict(channel, robot, command,
+             "robot " + std::to_string(id) + " already has a different command for step " +
+                 std::to_string(command.step) + " (from agent " + std::to_string(robot.owner_agent_id) +
+                 "); this one from agent " + std::to_string(command.agent_id) + " is refused, the first is applied");
+    return Heard::kRefused;
+  }
+  return Heard::kRepeat;  // the same again (the world resent its step)
+}
+
+bool CommandIntake::ClaimRobot(const std::string& channel, int id, RobotSlot& robot,
+                               const velocity_command_t& command) {
+  if (!robot.owned || (robot.lost && robot.owner_agent_id != command.agent_id)) {
+    if (robot.owned) spdlog::warn("robot {}: agent {:#x} takes over from lost agent {:#x}", id, command.agent_id, robot.owner_agent_id);
+    robot.owned = true;
+    robot.owner_agent_id = command.agent_id;
+  } else if (robot.owner_agent_id != command.agent_id) {
+    Conflict(channel, robot, command,
+             "robot " + std::to_string(id) + " is already driven by agent " + std::to_string(robot.owner_agent_id) +
+                 "; a second agent " + std::to_string(command.agent_id) +
+                 " sends commands for it too. Stop one of them.");
+    return false;
+  }
+  return true;
+}
+
+Heard CommandIntake::Hold(const std::string& channel, int id, RobotSlot& robot, const velocity_command_t& command) {
+  const auto now = std::chrono::steady_clock::now();
+  robot.last_heard = now;
+  if (robot.lost) {
+    robot.lost = false;
+    spdlog::info("robot {}: agent is back (step {})", id, world_.step());
+  }
+
+  robot.command_step = command.step;
+  robot.conflicts = 0;
+  robot.received_v = command.v;
+  robot.received_w = command.w;
+  const bool finite = std::isfinite(command.v) && std::isfinite(command.w);
+  const bool absurd =
+      !finite || std::abs(command.v) > options_.max_abs_v_mps || std::abs(command.w) > options_.max_abs_w_radps;
+  if (absurd) {
+    Reject(channel, "absurd velocity v=" + std::to_string(command.v) + " m/s, w=" + std::to_string(command.w) +
+                        " rad/s (limits " + std::to_string(options_.max_abs_v_mps) + ", " +
+                        std::to_string(options_.max_abs_w_radps) + "); robot " + std::to_string(id) +
+                        " holds still", command.agent_id);
+    robot.v_mps = 0.0;
+    robot.w_radps = 0.0;
+  } else {
+    robot.v_mps = command.v;
+    robot.w_radps = command.w;
+  }
+  robot.done = command.done;
+  if (options_.mode != config::WorldMode::kLockstep) world_.SetCommand(id, world::UnicycleCommand{robot.v_mps, robot.w_radps});
+  // An absurd command answers the step (the robot holds still), but its
+  // values were refused: kept apart from the log, whose DREAM_APPLIED shows the stop.
+  return absurd ? Heard::kRefused : Heard::kUsed;
+}
+
+}  // namespace dream::node
