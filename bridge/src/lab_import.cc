@@ -14,7 +14,6 @@
 #include "dream/bridge/pre_validation.h"
 #include "dream/bridge/sha256.h"
 #include "dream/files/file_text.h"
-#include "dream/files/json_text.h"
 #include "dream/files/output_folder.h"
 #include "dream/files/output_folder_lock.h"
 #include "dream/bridge/submission_format.h"
@@ -29,12 +28,8 @@
 #include "dream/node/run_judge.h"
 #include "dream/node/run_outcome.h"
 #include "dream/node/run_recorder.h"
-#include "dream/node/run_summary.h"
 #include "dream/node/world_messages.h"
-#include "dream/render/trajectory_picture.h"
-#include "dream/run_log/run_log.h"
 #include "dream/velocity_command_t.hpp"
-#include "dream/bridge/metrics_json.h"
 
 namespace dream::bridge {
 namespace {
@@ -412,74 +407,80 @@ std::vector<world::VerdictReason> LabVerifierReasons(const LabResult& lab, const
   return rules.Check(declared, counts);
 }
 
+namespace {
+
+/// The final status's detail: how the lab run ended.
+std::string EndDetail(const LabResult& lab) {
+  const int64_t last = lab.track.last_step();
+  if (lab.complete && last < lab.planned_steps) {
+    return "every robot reported done after " + std::to_string(last) + " steps on the lab";
+  }
+  if (lab.complete) return "the lab run completed every planned step";
+  return "the lab run stopped after " + std::to_string(last) + " of " + std::to_string(lab.planned_steps) +
+         " planned steps";
+}
+
+/// summary.json's "lab" section.
+nlohmann::ordered_json LabJson(const ImportedRun& imported, const ExportedSubmission& exported,
+                               const std::string& result_path, bool declared_by_options) {
+  const LabResult& lab = imported.lab;
+  nlohmann::ordered_json json;
+  json["result_file"] = fs::absolute(result_path).string();
+  json["export"] = fs::absolute(exported.dir).string();
+  json["source_run"] = exported.source_run;
+  json["strategy"] = StrategyName(exported.params.options.strategy);
+  json["barriers"] = exported.params.options.barriers;
+  json["planned_steps"] = lab.planned_steps;
+  json["steps"] = lab.track.last_step();
+  json["complete"] = lab.complete;
+  json["settle_steps"] = lab.settle_steps;
+  json["iterations"] = lab.iterations;
+  json["declared_robots"] = imported.declared.num_robots;
+  json["declared_duration_s"] = imported.declared.duration_s;
+  json["declared_from"] = declared_by_options ? "options" : "export";
+  json["wall_duration_s"] = lab.wall_duration_s;
+  json["max_step_s"] = lab.max_step_s;
+  json["clock_steps_back"] = lab.clock_steps_back;
+  return json;
+}
+
+}  // namespace
+
 ImportedRun ImportLabRun(const std::string& result_path, const std::string& export_dir, const std::string& out_dir,
                          const std::optional<world::LabVerifierRules::Declaration>& declared) {
   const ExportedSubmission exported = ExportedSubmission::Read(export_dir);
   ImportedRun imported;
+  imported.config = exported.config;
   imported.declared = declared.value_or(exported.UploadDeclaration());
   imported.lab = ParseLabResult(ReadResultFile(result_path, exported.MaxResultValues()), result_path, exported);
   const LabResult& lab = imported.lab;
-  const RunTrack& track = lab.track;
 
   const files::OutputFolder out(out_dir);
   files::OutputFolderLock::HoldUntilExit(out.dir());  // a run writing the folder refuses the import, and back
   imported.log_path = out.PathOf("run.lcmlog");
-  imported.summary_path = out.PathOf("summary.json");
-  imported.picture_path = out.PathOf("trajectories.png");
-  const bool ended_done = lab.complete && track.last_step() < lab.planned_steps;
-  const std::string detail = ended_done     ? "every robot reported done after " + std::to_string(track.last_step()) +
-                                              " steps on the lab"
-                             : lab.complete ? "the lab run completed every planned step"
-                                            : "the lab run stopped after " + std::to_string(track.last_step()) + " of " +
-                                                std::to_string(lab.planned_steps) + " planned steps";
+  const std::string detail = EndDetail(lab);
   int64_t log_events = 0;
-  const LabReplayWorld world =
-      WriteLog(track, exported.config.world, lab.complete ? run_status_t::FINISHED : run_status_t::ABORTED, detail,
-               imported.log_path, &log_events);
-  imported.violations = world.violations();
+  auto world = std::make_shared<LabReplayWorld>(
+      WriteLog(lab.track, exported.config.world, lab.complete ? run_status_t::FINISHED : run_status_t::ABORTED,
+               detail, imported.log_path, &log_events));
+  imported.violations = world->violations();
   out.WriteFile("config.yaml", exported.config_text);
   KeepControllerModule(exported.config, out);
 
-  node::RunOutcome outcome;
+  node::RunOutcome& outcome = imported.outcome;
   outcome.end = lab.complete ? node::RunOutcome::End::kFinished : node::RunOutcome::End::kInterrupted;
   outcome.reason = detail;
-  outcome.steps = track.last_step();
+  outcome.steps = lab.track.last_step();
   outcome.wall_time_s = lab.wall_duration_s;
   outcome.log_events = log_events;
   // Judged as a lab run: the verifier's rules on what the lab did against
   // what was declared (not JudgeRun's, which assumes the run is its own export).
-  world::RunJudgement judgement(
-      world::RunReport::FromViolations(world.step(), world.violations(), exported.config.world.time_step_s));
-  judgement.Add(LabVerifierReasons(lab, exported.config.world, imported.declared));
-  judgement.Add(node::OutcomeReasons(outcome));
-  imported.verdict = judgement.verdict();
-  imported.verdict_reasons = judgement.reasons();
-  nlohmann::ordered_json summary = nlohmann::ordered_json::parse(
-      node::RunSummaryJson(exported.config, outcome, world, "run.lcmlog", judgement));
-  summary["config"] = "config.yaml";
-  const run_log::RunLog log = run_log::RunLog::Read(imported.log_path);  // once, for the metrics and the picture
-  summary["metrics"] = MetricsJson(exported.config, log);
-  nlohmann::ordered_json lab_json;
-  lab_json["result_file"] = fs::absolute(result_path).string();
-  lab_json["export"] = fs::absolute(export_dir).string();
-  lab_json["source_run"] = exported.source_run;
-  lab_json["strategy"] = StrategyName(exported.params.options.strategy);
-  lab_json["barriers"] = exported.params.options.barriers;
-  lab_json["planned_steps"] = lab.planned_steps;
-  lab_json["steps"] = track.last_step();
-  lab_json["complete"] = lab.complete;
-  lab_json["settle_steps"] = lab.settle_steps;
-  lab_json["iterations"] = lab.iterations;
-  lab_json["declared_robots"] = imported.declared.num_robots;
-  lab_json["declared_duration_s"] = imported.declared.duration_s;
-  lab_json["declared_from"] = declared ? "options" : "export";
-  lab_json["wall_duration_s"] = lab.wall_duration_s;
-  lab_json["max_step_s"] = lab.max_step_s;
-  lab_json["clock_steps_back"] = lab.clock_steps_back;
-  summary["lab"] = lab_json;
-  imported.summary_json = files::JsonText(summary) + "\n";
-  out.WriteFile("summary.json", imported.summary_json);
-  render::TrajectoryPicture::Render(log, render::ArenaOverlays{}, imported.picture_path, render::RenderFormat::kPng);
+  imported.judgement = world::RunJudgement(
+      world::RunReport::FromViolations(world->step(), world->violations(), exported.config.world.time_step_s));
+  imported.judgement.Add(LabVerifierReasons(lab, exported.config.world, imported.declared));
+  imported.judgement.Add(node::OutcomeReasons(outcome));
+  imported.lab_json = LabJson(imported, exported, result_path, declared.has_value());
+  imported.world = std::move(world);
   return imported;
 }
 
