@@ -3,16 +3,13 @@
 // file is options, messages and exit codes.
 #include <spdlog/spdlog.h>
 
-#include <cmath>
 #include <csignal>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <numeric>
 #include <optional>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "hosted_agents.h"
 #include "command_line.h"
@@ -29,7 +26,6 @@
 #include "dream/workflows/export_workflow.h"
 #include "dream/workflows/import_workflow.h"
 #include "dream/bridge/lab_replay_world.h"
-#include "dream/bridge/metrics_json.h"
 #include "dream/files/json_text.h"
 #include "dream/files/output_folder.h"
 #include "dream/bridge/run_comparison.h"
@@ -38,9 +34,6 @@
 #include "dream/run_config/run_config.h"
 #include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/lcm_url.h"
-#include "dream/world/run_report.h"
-#include "dream/node/run_summary.h"
-#include "dream/render/trajectory_picture.h"
 #include "data_files.h"
 #include "process_group.h"
 #include "run_folder_choice.h"
@@ -243,7 +236,9 @@ int RunCheckSubmission(const CheckSubmissionArgs& args) {
   return kExitRunFailed;
 }
 
-void DeclareBridgeCommands(CommandLine& line) {
+namespace {
+
+void DeclareExportCommand(CommandLine& line) {
   const auto [export_command, export_args] = line.AddCommand<ExportArgs>(
       "export",
       "Turn a recorded run into a Robotarium submission (a main script plus .npy data, and for\n"
@@ -278,13 +273,16 @@ void DeclareBridgeCommands(CommandLine& line) {
                              "At most this many steps to settle on the start poses before step 0")
       ->check(CLI::Range(0, 3000))
       ->capture_default_str();
+}
 
+void DeclareImportCommand(CommandLine& line) {
   const auto [import_command, import_args] = line.AddCommand<ImportArgs>(
       "import",
       "Turn what the lab returned (dream_result.npy, or dream_result.mat from MATLAB) into a run\n"
       "folder like dream run writes: run.lcmlog, summary.json, trajectories.png. Its verdict holds the\n"
       "run to the lab verifier's rules against what UPLOAD.txt said to declare (robot count, duration),\n"
-      "or what --declared-robots / --declared-duration say was declared.\n"
+      "or what --declared-robots / --declared-duration say was declared, and, as dream run's, to the\n"
+      "experiment's goal.\n"
       "Example: dream import ~/Downloads/dream_result.npy --export exports/go_to_goal --out runs/lab1",
       RunImport);
   import_command->add_option("result", import_args->result, "dream_result.npy / .mat, or a folder holding one")
@@ -299,7 +297,9 @@ void DeclareBridgeCommands(CommandLine& line) {
                              "The duration (s) declared on the lab's form, when not UPLOAD.txt's; the verdict\n"
                              "names a run over 1.5x of it (verifier_duration) or over 900 s (lab_duration_cap)")
       ->check(CLI::Range(0.001, 1e6));
+}
 
+void DeclareLabReplayCommand(CommandLine& line) {
   const auto [replay_command, replay_args] = line.AddCommand<LabReplayArgs>(
       "lab-replay",
       "Run a lab run (from dream import) as the world on the bus: the agents get the lab's poses\n"
@@ -316,7 +316,9 @@ void DeclareBridgeCommands(CommandLine& line) {
       ->check(CLI::IsMember({"lockstep", "realtime"}));
   replay_command->add_flag("--world-only", replay_args->world_only,
                            "Only the world; start the agents elsewhere (dream agent CONFIG) on the same URL");
+}
 
+void DeclareCompareCommand(CommandLine& line) {
   const auto [compare_command, compare_args] = line.AddCommand<CompareArgs>(
       "compare",
       "Compare a simulated run with its lab run: tracking error per robot, closest approach,\n"
@@ -326,7 +328,9 @@ void DeclareBridgeCommands(CommandLine& line) {
   compare_command->add_option("simulated", compare_args->first_dir, "The simulated run's folder")->required();
   compare_command->add_option("lab", compare_args->second_dir, "The lab run's folder (dream import)")->required();
   compare_command->add_option("--out", compare_args->out_dir, "Output folder (default: the lab run's folder)");
+}
 
+void DeclareCheckSubmissionCommand(CommandLine& line) {
   const auto [check_command, check_args] = line.AddCommand<CheckSubmissionArgs>(
       "check-submission",
       "Run an exported submission in the official Robotarium Python simulator (or, when it is\n"
@@ -345,6 +349,16 @@ void DeclareBridgeCommands(CommandLine& line) {
                           "Fail (exit 1) instead of using the stand-in when the official simulator is missing");
   check_command->add_flag("--skip-initialization", check_args->skip_initialization,
                           "Start exactly at the start poses (no start-up drive)");
+}
+
+}  // namespace
+
+void DeclareBridgeCommands(CommandLine& line) {
+  DeclareExportCommand(line);
+  DeclareImportCommand(line);
+  DeclareLabReplayCommand(line);
+  DeclareCompareCommand(line);
+  DeclareCheckSubmissionCommand(line);
 }
 
 }  // namespace dream::cli
