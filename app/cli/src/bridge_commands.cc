@@ -1,6 +1,6 @@
 // dream export / import / lab-replay / compare / check-submission: the bridge
-// to the Robotarium (docs/robotarium.md). The work is in dream::bridge; this
-// file is options, messages and exit codes.
+// to the Robotarium (docs/robotarium.md). The work is in dream::workflows and
+// dream::bridge; this file is options, messages and exit codes.
 #include <spdlog/spdlog.h>
 
 #include <csignal>
