@@ -12,9 +12,7 @@
 #include "dream/bridge/lab_replay_world.h"
 #include "dream/bridge/mat_file.h"
 #include "dream/bridge/pre_validation.h"
-#include "dream/bridge/sha256.h"
 #include "dream/files/file_text.h"
-#include "dream/files/json_text.h"
 #include "dream/files/output_folder.h"
 #include "dream/files/output_folder_lock.h"
 #include "dream/bridge/submission_format.h"
@@ -29,12 +27,8 @@
 #include "dream/node/run_judge.h"
 #include "dream/node/run_outcome.h"
 #include "dream/node/run_recorder.h"
-#include "dream/node/run_summary.h"
 #include "dream/node/world_messages.h"
-#include "dream/render/trajectory_picture.h"
-#include "dream/run_log/run_log.h"
 #include "dream/velocity_command_t.hpp"
-#include "dream/bridge/metrics_json.h"
 
 namespace dream::bridge {
 namespace {
@@ -163,94 +157,6 @@ LabReplayWorld WriteLog(const RunTrack& track, const world::WorldParams& params,
 
 }  // namespace
 
-namespace {
-
-/// Compares every file in `upload` with the digests dream export wrote
-/// (export.json `upload_sha256`): an edit after the export, a file missing or
-/// one the export did not write is an error naming the file.
-void CheckUploadDigests(const fs::path& upload, const nlohmann::json& digests, const std::string& manifest_path) {
-  const std::string again = ": export the run again (dream export), or undo the change";
-  if (!digests.is_object() || digests.empty() || digests.size() > 1000) {
-    throw std::runtime_error(manifest_path + ": " + ExportedSubmission::kDigestsKey +
-                             " is not a table of file digests; export the run again");
-  }
-  for (const auto& [name, digest] : digests.items()) {
-    if (!digest.is_string() || name.find('/') != std::string::npos || name.empty() || name[0] == '.') {
-      throw std::runtime_error(manifest_path + ": " + ExportedSubmission::kDigestsKey + " entry '" + name +
-                               "' is no file digest; export the run again");
-    }
-    const fs::path path = upload / name;
-    std::error_code error;
-    if (!fs::is_regular_file(path, error)) throw std::runtime_error(path.string() + ": missing" + again);
-    const std::string actual = Sha256::HexOfFile(path.string());
-    if (actual != digest.get<std::string>()) {
-      throw std::runtime_error(path.string() + ": changed after the export (its SHA-256 is " + actual + ", " +
-                               manifest_path + " says " + digest.get<std::string>() + ")" + again);
-    }
-  }
-  std::error_code error;
-  for (const fs::directory_entry& entry : fs::directory_iterator(upload, error)) {
-    if (entry.is_regular_file() && !digests.contains(entry.path().filename().string())) {
-      throw std::runtime_error(entry.path().string() + ": not a file of this export (" + manifest_path +
-                               " lists what it wrote); remove it, or export the run again");
-    }
-  }
-  if (error) throw std::runtime_error(upload.string() + ": cannot list the folder: " + error.message());
-}
-
-}  // namespace
-
-ExportedSubmission ExportedSubmission::Read(const std::string& dir) {
-  const fs::path root(dir);
-  if (!fs::is_directory(root)) throw std::runtime_error(dir + ": not a folder (pass the folder dream export wrote)");
-  ExportedSubmission exported;
-  exported.dir = dir;
-  // Before any file is trusted: each must be as the export wrote it.
-  const std::string manifest_path = (root / "export.json").string();
-  std::optional<nlohmann::json> manifest;
-  if (fs::exists(manifest_path)) {
-    try {
-      manifest = nlohmann::json::parse(files::ReadFileText(manifest_path));
-    } catch (const nlohmann::json::exception& e) {
-      throw std::runtime_error(manifest_path + ": not valid JSON: " + e.what());
-    }
-    if (manifest->is_object() && manifest->contains(kDigestsKey)) {
-      CheckUploadDigests(root / "upload", (*manifest)[kDigestsKey], manifest_path);
-      exported.digests_checked = true;
-    }
-  }
-
-  const std::string params_path = (root / "upload" / SubmissionFiles::kParams).string();
-  if (!fs::exists(params_path)) {
-    throw std::runtime_error(params_path + ": missing; " + dir + " is not a folder written by dream export");
-  }
-  exported.params = SubmissionParams::FromNpy(ReadNpyFile(params_path, 1 << 20), params_path);
-  const std::string config_path = (root / "config.yaml").string();
-  if (!fs::exists(config_path)) throw std::runtime_error(config_path + ": missing; export the run again");
-  exported.config = run_config::LoadRunConfigFile(config_path);
-  exported.config_text = files::ReadFileText(config_path);
-  if (exported.config.num_robots != exported.params.num_robots) {
-    throw std::runtime_error(config_path + ": has " + std::to_string(exported.config.num_robots) + " robots but " +
-                             params_path + " " + std::to_string(exported.params.num_robots) +
-                             "; the export folder was changed by hand — export the run again");
-  }
-  if (manifest && manifest->is_object() && manifest->contains("source_run") && (*manifest)["source_run"].is_string()) {
-    exported.source_run = (*manifest)["source_run"].get<std::string>();
-  }
-  return exported;
-}
-
-int64_t ExportedSubmission::MaxResultValues() const {
-  const int64_t rows = int64_t{params.options.settle_max_steps} + params.steps + 1;
-  return rows * ResultLayout::Columns(params.num_robots);
-}
-
-world::LabVerifierRules::Declaration ExportedSubmission::UploadDeclaration() const {
-  // As ExportSubmission computes UPLOAD.txt's "Estimated duration to declare".
-  const int64_t max_iterations = params.steps + params.options.settle_max_steps;
-  return {params.num_robots, static_cast<double>(max_iterations) * config.world.time_step_s};
-}
-
 NpyArray ReadResultFile(const std::string& path, int64_t max_values) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path + ": cannot open the file");
@@ -268,10 +174,16 @@ NpyArray ReadResultFile(const std::string& path, int64_t max_values) {
                            SubmissionFiles::kResult + " the submission saved");
 }
 
-LabResult ParseLabResult(const NpyArray& rows, const std::string& name, const ExportedSubmission& exported) {
-  auto fail = [&name](const std::string& problem) { throw std::runtime_error(name + ": " + problem); };
-  const SubmissionParams& params = exported.params;
-  const int n = params.num_robots;
+namespace {
+
+/// Throws "<file>: <problem>" for a result file's problem.
+struct ResultFileError {
+  const std::string& name;
+  [[noreturn]] void operator()(const std::string& problem) const { throw std::runtime_error(name + ": " + problem); }
+};
+
+/// The array's shape for `n` robots, and every value finite and within reach.
+void CheckResultValues(const NpyArray& rows, int n, const ResultFileError& fail) {
   if (rows.shape.size() != 2) {
     fail("has " + std::to_string(rows.shape.size()) + " dimensions; a result is a 2-D array (rows x " +
          std::to_string(ResultLayout::Columns(n)) + " columns)");
@@ -306,23 +218,36 @@ LabResult ParseLabResult(const NpyArray& rows, const std::string& name, const Ex
       }
     }
   }
-  auto at = [&](int64_t r, int64_t c) { return rows.values[static_cast<size_t>(r * columns + c)]; };
+}
 
-  // Phases in order: settle 0..s-1, experiment 0..e-1, then the final pose.
-  int64_t r = 0;
+/// Where a result's phases lie: settle rows, experiment rows, the final pose.
+struct ResultPhases {
   int64_t settle = 0;
-  for (; r < row_count && at(r, ResultLayout::kPhaseColumn) == ResultLayout::kPhaseSettle; ++r, ++settle) {
-    if (at(r, ResultLayout::kStepColumn) != static_cast<double>(settle)) {
+  int64_t first_experiment_row = 0;
+  int64_t experiment = 0;
+  bool final_row = false;
+  int64_t pose_rows() const { return experiment + (final_row ? 1 : 0); }
+};
+
+/// Phases in order: settle 0..s-1, experiment 0..e-1, then the final pose.
+ResultPhases FindPhases(const NpyArray& rows, const SubmissionParams& params, const ResultFileError& fail) {
+  const int64_t row_count = rows.shape[0];
+  const int64_t columns = rows.shape[1];
+  auto at = [&](int64_t r, int64_t c) { return rows.values[static_cast<size_t>(r * columns + c)]; };
+  ResultPhases phases;
+  int64_t r = 0;
+  for (; r < row_count && at(r, ResultLayout::kPhaseColumn) == ResultLayout::kPhaseSettle; ++r, ++phases.settle) {
+    if (at(r, ResultLayout::kStepColumn) != static_cast<double>(phases.settle)) {
       fail("row " + std::to_string(r) + ": settle step " + std::to_string(at(r, ResultLayout::kStepColumn)) +
-           ", expected " + std::to_string(settle) + " (rows must follow each other)");
+           ", expected " + std::to_string(phases.settle) + " (rows must follow each other)");
     }
-    if (settle >= params.options.settle_max_steps) {
+    if (phases.settle >= params.options.settle_max_steps) {
       fail("has more than the " + std::to_string(params.options.settle_max_steps) +
            " settle steps the export allows: not a result of this export");
     }
   }
-  const int64_t first_experiment_row = r;
-  int64_t experiment = 0;
+  phases.first_experiment_row = r;
+  int64_t& experiment = phases.experiment;
   for (; r < row_count && at(r, ResultLayout::kPhaseColumn) == ResultLayout::kPhaseExperiment; ++r, ++experiment) {
     if (at(r, ResultLayout::kStepColumn) != static_cast<double>(experiment)) {
       fail("row " + std::to_string(r) + ": experiment step " + std::to_string(at(r, ResultLayout::kStepColumn)) +
@@ -333,7 +258,6 @@ LabResult ParseLabResult(const NpyArray& rows, const std::string& name, const Ex
            " the export planned: it is not a result of this export");
     }
   }
-  bool final_row = false;
   if (r < row_count && at(r, ResultLayout::kPhaseColumn) == ResultLayout::kPhaseFinal) {
     // The controller strategy may stop before its step limit, once every robot reports done.
     const bool early_end_allowed = params.options.strategy == Strategy::kController && params.stop_when_done;
@@ -342,7 +266,7 @@ LabResult ParseLabResult(const NpyArray& rows, const std::string& name, const Ex
       fail("row " + std::to_string(r) + ": a final pose after " + std::to_string(experiment) + " of " +
            std::to_string(params.steps) + " planned steps; the file is damaged");
     }
-    final_row = true;
+    phases.final_row = true;
     ++r;
   }
   if (r < row_count) {
@@ -351,35 +275,37 @@ LabResult ParseLabResult(const NpyArray& rows, const std::string& name, const Ex
          (phase == 0 || phase == 1 || phase == 2 ? " out of order" : " is not 0 (settle), 1 (experiment) or 2 (final)") +
          "; the file is damaged or not a dream result");
   }
-  const int64_t pose_rows = experiment + (final_row ? 1 : 0);
-  if (pose_rows < 2) {
-    fail("has " + std::to_string(pose_rows) + " experiment poses; at least 2 are needed (the lab run stopped " +
-         "right at its start: see the lab's output)");
+  if (phases.pose_rows() < 2) {
+    fail("has " + std::to_string(phases.pose_rows()) + " experiment poses; at least 2 are needed (the lab run " +
+         "stopped right at its start: see the lab's output)");
   }
+  return phases;
+}
 
-  LabResult result;
-  result.settle_steps = settle;
-  result.planned_steps = params.steps;
-  result.iterations = settle + experiment;  // the script calls step() after each settle and experiment row
-  result.complete = final_row;
-  RunTrack& track = result.track;
+/// The experiment rows as the track: poses, commands sent, the lab's clock
+/// from step 0 (a stamp earlier than its predecessor held at it).
+void FillTrack(const NpyArray& rows, const ResultPhases& phases, int n, LabResult* result) {
+  const int64_t columns = rows.shape[1];
+  const int64_t pose_rows = phases.pose_rows();
+  RunTrack& track = result->track;
   track.num_robots = n;
   const auto un = static_cast<size_t>(n);
   track.poses.resize(static_cast<size_t>(pose_rows) * un);
   track.commands.resize(track.poses.size());
   track.utime.resize(static_cast<size_t>(pose_rows));
-  const double t0 = at(first_experiment_row, ResultLayout::kWallTimeColumn);
+  const double t0 = rows.values[static_cast<size_t>(phases.first_experiment_row * columns +
+                                                    ResultLayout::kWallTimeColumn)];
   int64_t previous_utime = 0;
   double previous_time = t0;
   for (int64_t k = 0; k < pose_rows; ++k) {
-    const int64_t row = first_experiment_row + k;
+    const int64_t row = phases.first_experiment_row + k;
     const double* values = &rows.values[static_cast<size_t>(row * columns)];
     const double stamp = values[ResultLayout::kWallTimeColumn];
-    result.max_step_s = std::max(result.max_step_s, stamp - previous_time);
+    result->max_step_s = std::max(result->max_step_s, stamp - previous_time);
     previous_time = stamp;
     auto utime = static_cast<int64_t>(std::llround((stamp - t0) * 1e6));
     if (utime < previous_utime) {
-      ++result.clock_steps_back;
+      ++result->clock_steps_back;
       utime = previous_utime;
     }
     previous_utime = utime;
@@ -393,7 +319,23 @@ LabResult ParseLabResult(const NpyArray& rows, const std::string& name, const Ex
       step_commands[i] = last ? world::UnicycleCommand{} : world::UnicycleCommand{base[3 * un], base[4 * un]};
     }
   }
-  result.wall_duration_s = static_cast<double>(track.utime.back()) / 1e6;
+  result->wall_duration_s = static_cast<double>(track.utime.back()) / 1e6;
+}
+
+}  // namespace
+
+LabResult ParseLabResult(const NpyArray& rows, const std::string& name, const ExportedSubmission& exported) {
+  const ResultFileError fail{name};
+  const SubmissionParams& params = exported.params;
+  CheckResultValues(rows, params.num_robots, fail);
+  const ResultPhases phases = FindPhases(rows, params, fail);
+  LabResult result;
+  result.settle_steps = phases.settle;
+  result.planned_steps = params.steps;
+  result.iterations = phases.settle + phases.experiment;  // the script calls step() after each settle and experiment row
+  result.complete = phases.final_row;
+  FillTrack(rows, phases, params.num_robots, &result);
+  RunTrack& track = result.track;
   track.obstacles = ObstaclesPerStep(exported.config.obstacles, track.last_step(), exported.config.world.time_step_s);
   return result;
 }
@@ -412,74 +354,80 @@ std::vector<world::VerdictReason> LabVerifierReasons(const LabResult& lab, const
   return rules.Check(declared, counts);
 }
 
+namespace {
+
+/// The final status's detail: how the lab run ended.
+std::string EndDetail(const LabResult& lab) {
+  const int64_t last = lab.track.last_step();
+  if (lab.complete && last < lab.planned_steps) {
+    return "every robot reported done after " + std::to_string(last) + " steps on the lab";
+  }
+  if (lab.complete) return "the lab run completed every planned step";
+  return "the lab run stopped after " + std::to_string(last) + " of " + std::to_string(lab.planned_steps) +
+         " planned steps";
+}
+
+/// summary.json's "lab" section.
+nlohmann::ordered_json LabJson(const ImportedRun& imported, const ExportedSubmission& exported,
+                               const std::string& result_path, bool declared_by_options) {
+  const LabResult& lab = imported.lab;
+  nlohmann::ordered_json json;
+  json["result_file"] = fs::absolute(result_path).string();
+  json["export"] = fs::absolute(exported.dir).string();
+  json["source_run"] = exported.source_run;
+  json["strategy"] = StrategyName(exported.params.options.strategy);
+  json["barriers"] = exported.params.options.barriers;
+  json["planned_steps"] = lab.planned_steps;
+  json["steps"] = lab.track.last_step();
+  json["complete"] = lab.complete;
+  json["settle_steps"] = lab.settle_steps;
+  json["iterations"] = lab.iterations;
+  json["declared_robots"] = imported.declared.num_robots;
+  json["declared_duration_s"] = imported.declared.duration_s;
+  json["declared_from"] = declared_by_options ? "options" : "export";
+  json["wall_duration_s"] = lab.wall_duration_s;
+  json["max_step_s"] = lab.max_step_s;
+  json["clock_steps_back"] = lab.clock_steps_back;
+  return json;
+}
+
+}  // namespace
+
 ImportedRun ImportLabRun(const std::string& result_path, const std::string& export_dir, const std::string& out_dir,
                          const std::optional<world::LabVerifierRules::Declaration>& declared) {
   const ExportedSubmission exported = ExportedSubmission::Read(export_dir);
   ImportedRun imported;
+  imported.config = exported.config;
   imported.declared = declared.value_or(exported.UploadDeclaration());
   imported.lab = ParseLabResult(ReadResultFile(result_path, exported.MaxResultValues()), result_path, exported);
   const LabResult& lab = imported.lab;
-  const RunTrack& track = lab.track;
 
   const files::OutputFolder out(out_dir);
   files::OutputFolderLock::HoldUntilExit(out.dir());  // a run writing the folder refuses the import, and back
   imported.log_path = out.PathOf("run.lcmlog");
-  imported.summary_path = out.PathOf("summary.json");
-  imported.picture_path = out.PathOf("trajectories.png");
-  const bool ended_done = lab.complete && track.last_step() < lab.planned_steps;
-  const std::string detail = ended_done     ? "every robot reported done after " + std::to_string(track.last_step()) +
-                                              " steps on the lab"
-                             : lab.complete ? "the lab run completed every planned step"
-                                            : "the lab run stopped after " + std::to_string(track.last_step()) + " of " +
-                                                std::to_string(lab.planned_steps) + " planned steps";
+  const std::string detail = EndDetail(lab);
   int64_t log_events = 0;
-  const LabReplayWorld world =
-      WriteLog(track, exported.config.world, lab.complete ? run_status_t::FINISHED : run_status_t::ABORTED, detail,
-               imported.log_path, &log_events);
-  imported.violations = world.violations();
+  auto world = std::make_shared<LabReplayWorld>(
+      WriteLog(lab.track, exported.config.world, lab.complete ? run_status_t::FINISHED : run_status_t::ABORTED,
+               detail, imported.log_path, &log_events));
+  imported.violations = world->violations();
   out.WriteFile("config.yaml", exported.config_text);
   KeepControllerModule(exported.config, out);
 
-  node::RunOutcome outcome;
+  node::RunOutcome& outcome = imported.outcome;
   outcome.end = lab.complete ? node::RunOutcome::End::kFinished : node::RunOutcome::End::kInterrupted;
   outcome.reason = detail;
-  outcome.steps = track.last_step();
+  outcome.steps = lab.track.last_step();
   outcome.wall_time_s = lab.wall_duration_s;
   outcome.log_events = log_events;
   // Judged as a lab run: the verifier's rules on what the lab did against
   // what was declared (not JudgeRun's, which assumes the run is its own export).
-  world::RunJudgement judgement(
-      world::RunReport::FromViolations(world.step(), world.violations(), exported.config.world.time_step_s));
-  judgement.Add(LabVerifierReasons(lab, exported.config.world, imported.declared));
-  judgement.Add(node::OutcomeReasons(outcome));
-  imported.verdict = judgement.verdict();
-  imported.verdict_reasons = judgement.reasons();
-  nlohmann::ordered_json summary = nlohmann::ordered_json::parse(
-      node::RunSummaryJson(exported.config, outcome, world, "run.lcmlog", judgement));
-  summary["config"] = "config.yaml";
-  const run_log::RunLog log = run_log::RunLog::Read(imported.log_path);  // once, for the metrics and the picture
-  summary["metrics"] = MetricsJson(exported.config, log);
-  nlohmann::ordered_json lab_json;
-  lab_json["result_file"] = fs::absolute(result_path).string();
-  lab_json["export"] = fs::absolute(export_dir).string();
-  lab_json["source_run"] = exported.source_run;
-  lab_json["strategy"] = StrategyName(exported.params.options.strategy);
-  lab_json["barriers"] = exported.params.options.barriers;
-  lab_json["planned_steps"] = lab.planned_steps;
-  lab_json["steps"] = track.last_step();
-  lab_json["complete"] = lab.complete;
-  lab_json["settle_steps"] = lab.settle_steps;
-  lab_json["iterations"] = lab.iterations;
-  lab_json["declared_robots"] = imported.declared.num_robots;
-  lab_json["declared_duration_s"] = imported.declared.duration_s;
-  lab_json["declared_from"] = declared ? "options" : "export";
-  lab_json["wall_duration_s"] = lab.wall_duration_s;
-  lab_json["max_step_s"] = lab.max_step_s;
-  lab_json["clock_steps_back"] = lab.clock_steps_back;
-  summary["lab"] = lab_json;
-  imported.summary_json = files::JsonText(summary) + "\n";
-  out.WriteFile("summary.json", imported.summary_json);
-  render::TrajectoryPicture::Render(log, render::ArenaOverlays{}, imported.picture_path, render::RenderFormat::kPng);
+  imported.judgement = world::RunJudgement(
+      world::RunReport::FromViolations(world->step(), world->violations(), exported.config.world.time_step_s));
+  imported.judgement.Add(LabVerifierReasons(lab, exported.config.world, imported.declared));
+  imported.judgement.Add(node::OutcomeReasons(outcome));
+  imported.lab_json = LabJson(imported, exported, result_path, declared.has_value());
+  imported.world = std::move(world);
   return imported;
 }
 

@@ -82,7 +82,7 @@ std::vector<ExportProblem> NotReadyReasons(const std::string& run_dir) {
       return it->get<std::string>();
     };
     const std::string rule = text("rule");
-    if (text("verdict") != world::RunVerdictName(world::RunVerdict::kNotReady) || rule == "controller_failed" ||
+    if (world::ParseRunVerdict(text("verdict")) != world::RunVerdict::kNotReady || rule == "controller_failed" ||
         rule == "did_not_finish") {
       continue;
     }
@@ -137,124 +137,136 @@ void CheckExportFolder(const std::string& out_dir) {
   }
 }
 
-}  // namespace
+/// What an export is made from, read and checked before anything is written.
+struct ExportInput {
+  std::string config_file;
+  std::string log_file;
+  run_config::RunConfig config;
+  std::string config_text;
+  RunTrack track;
+  RunEnd end;
+  bool controller = false;  ///< the controller strategy
+  int64_t steps = 0;        ///< the submission's step limit
+  std::vector<std::string> forced;  ///< problems --force turned into warnings
+};
 
-ExportRefused::ExportRefused(const std::string& log_file, std::vector<ExportProblem> problems)
-    : std::runtime_error(JoinProblems(log_file, problems)), problems_(std::move(problems)) {}
-
-ExportSummary ExportSubmission(const std::string& run_dir, const std::string& out_dir, const ExportOptions& options,
-                               const std::string& config_path) {
+/// The run folder's files, named in the errors; nothing read yet.
+ExportInput CheckExportPaths(const std::string& run_dir, const std::string& out_dir, const ExportOptions& options,
+                             const std::string& config_path) {
   namespace fs = std::filesystem;
   std::string error;
   if (!options.IsValid(&error)) throw std::invalid_argument("export options: " + error);
-  const std::string config_file = config_path.empty() ? (fs::path(run_dir) / "config.yaml").string() : config_path;
-  const std::string log_file = (fs::path(run_dir) / "run.lcmlog").string();
+  ExportInput input;
+  input.config_file = config_path.empty() ? (fs::path(run_dir) / "config.yaml").string() : config_path;
+  input.log_file = (fs::path(run_dir) / "run.lcmlog").string();
   if (!fs::is_directory(run_dir)) throw std::runtime_error(run_dir + ": not a folder (pass a run folder written by dream run)");
   if (!config_path.empty() && !fs::is_regular_file(config_path)) {
     throw std::runtime_error("--config " + config_path + ": no such file");
   }
-  if (!fs::exists(config_file)) {
-    throw std::runtime_error(config_file + ": missing; this run folder was written by an older dream run — "
+  if (!fs::exists(input.config_file)) {
+    throw std::runtime_error(input.config_file + ": missing; this run folder was written by an older dream run — "
                              "pass its config with --config FILE");
   }
   CheckExportFolder(out_dir);
-  if (!fs::exists(log_file)) throw std::runtime_error(log_file + ": missing; pass a run folder written by dream run");
+  if (!fs::exists(input.log_file)) {
+    throw std::runtime_error(input.log_file + ": missing; pass a run folder written by dream run");
+  }
+  return input;
+}
 
-  // Read and check everything before writing anything.
-  const run_config::RunConfig config = run_config::LoadRunConfigFile(config_file);
-  const std::string config_text = files::ReadFileText(config_file);
-  RunEnd end;
-  const RunTrack track = ReadRunTrack(log_file, &end);
-  if (track.num_robots != config.num_robots) {
-    throw std::runtime_error(log_file + ": the log has " + std::to_string(track.num_robots) + " robots, its config " +
-                             config_file + " " + std::to_string(config.num_robots) + "; is it the right config?");
-  }
-  if (track.last_step() < 1) throw std::runtime_error(log_file + ": the run has no step to export");
-  const bool controller = options.strategy == Strategy::kController;
-  const bool python_kind = agent_host::IsPythonController(config);
-  std::vector<ExportProblem> problems;
-  if (controller && !python_kind) {
+/// What the controller strategy cannot export: a C++ controller, an
+/// obstacle schedule too large to upload.
+void AddControllerProblems(const ExportInput& input, std::vector<ExportProblem>* problems) {
+  const run_config::RunConfig& config = input.config;
+  if (!agent_host::IsPythonController(config)) {
     const config::ConfigNode kind = config.controller.Optional("kind");
-    problems.push_back({"strategy", -1, -1, -1,
-                        "the controller strategy runs the run's Python controller in the submission, and this "
-                        "run's controller (kind '" + (kind.IsDefined() ? kind.AsString() : std::string("?")) +
-                            "' in " + config_file + ") is C++: the lab runs Python only",
-                        "export with --strategy track (the recorded run in closed loop) or --strategy replay; "
-                        "or write the controller in Python (controller: {kind: python, module: ..., class: ...})"});
+    problems->push_back({"strategy", -1, -1, -1,
+                         "the controller strategy runs the run's Python controller in the submission, and this "
+                         "run's controller (kind '" + (kind.IsDefined() ? kind.AsString() : std::string("?")) +
+                             "' in " + input.config_file + ") is C++: the lab runs Python only",
+                         "export with --strategy track (the recorded run in closed loop) or --strategy replay; "
+                         "or write the controller in Python (controller: {kind: python, module: ..., class: ...})"});
   }
+  const int64_t schedule_bytes = ObstacleScheduleBytes(static_cast<int64_t>(config.obstacles.size()), input.steps);
+  if (schedule_bytes > kMaxObstacleScheduleBytes) {
+    problems->push_back({"obstacle_schedule", -1, -1, -1,
+                         "upload/dream_obstacles.npy would hold " + std::to_string(config.obstacles.size()) +
+                             " obstacles at each of " + std::to_string(input.steps + 1) + " steps, " +
+                             std::to_string(schedule_bytes >> 20) + " MiB (at most " +
+                             std::to_string(kMaxObstacleScheduleBytes >> 20) + " MiB)",
+                         "fewer obstacles, or fewer steps (the config's steps: bounds the controller strategy's run)"});
+  }
+}
+
+/// Reads the run and checks it as the lab would.
+/// @throws ExportRefused with every problem not forced.
+ExportInput ReadAndCheck(const std::string& run_dir, const std::string& out_dir, const ExportOptions& options,
+                         const std::string& config_path) {
+  ExportInput input = CheckExportPaths(run_dir, out_dir, options, config_path);
+  input.config = run_config::LoadRunConfigFile(input.config_file);
+  input.config_text = files::ReadFileText(input.config_file);
+  input.track = ReadRunTrack(input.log_file, &input.end);
+  const run_config::RunConfig& config = input.config;
+  if (input.track.num_robots != config.num_robots) {
+    throw std::runtime_error(input.log_file + ": the log has " + std::to_string(input.track.num_robots) +
+                             " robots, its config " + input.config_file + " " + std::to_string(config.num_robots) +
+                             "; is it the right config?");
+  }
+  if (input.track.last_step() < 1) throw std::runtime_error(input.log_file + ": the run has no step to export");
+  input.controller = options.strategy == Strategy::kController;
   // The controller strategy runs until every robot is done, at most the run's step limit.
-  const int64_t steps = controller && python_kind ? RunStepLimit(run_dir, config) : track.last_step();
-  if (controller) {
-    const int64_t schedule_bytes = ObstacleScheduleBytes(static_cast<int64_t>(config.obstacles.size()), steps);
-    if (schedule_bytes > kMaxObstacleScheduleBytes) {
-      problems.push_back({"obstacle_schedule", -1, -1, -1,
-                          "upload/dream_obstacles.npy would hold " + std::to_string(config.obstacles.size()) +
-                              " obstacles at each of " + std::to_string(steps + 1) + " steps, " +
-                              std::to_string(schedule_bytes >> 20) + " MiB (at most " +
-                              std::to_string(kMaxObstacleScheduleBytes >> 20) + " MiB)",
-                          "fewer obstacles, or fewer steps (the config's steps: bounds the controller strategy's run)"});
-    }
-  }
+  input.steps = input.controller && agent_host::IsPythonController(config) ? RunStepLimit(run_dir, config)
+                                                                           : input.track.last_step();
+  std::vector<ExportProblem> problems;
+  if (input.controller) AddControllerProblems(input, &problems);
   // What UPLOAD.txt tells the user to declare: the lab's verifier holds the run to it.
   const world::LabVerifierRules::Declaration declared{
-      config.num_robots, static_cast<double>(steps + options.settle_max_steps) * config.world.time_step_s};
+      config.num_robots, static_cast<double>(input.steps + options.settle_max_steps) * config.world.time_step_s};
   // --force exports a run whose robots were lost, or that summary.json
   // calls not_ready; the lab's rules are never forced.
-  std::vector<std::string> forced;
   auto force_or_refuse = [&](ExportProblem problem, bool forcible) {
     if (options.force && forcible) {
-      forced.push_back(problem.Text() + " (exported anyway: --force)");
+      input.forced.push_back(problem.Text() + " (exported anyway: --force)");
     } else {
       problems.push_back(std::move(problem));
     }
   };
-  for (ExportProblem& problem :
-       PreValidate(track, end, config.world, options.settle_max_steps, LabLimits{}, steps, declared)) {
+  for (ExportProblem& problem : PreValidate(input.track, input.end, config.world, options.settle_max_steps,
+                                            LabLimits{}, input.steps, declared)) {
     const bool forcible = problem.rule == "lost_robot";
     force_or_refuse(std::move(problem), forcible);
   }
   for (ExportProblem& problem : NotReadyReasons(run_dir)) force_or_refuse(std::move(problem), true);
-  if (!problems.empty()) throw ExportRefused(log_file, problems);
-  ControllerFiles controller_files;
-  NpyArray obstacles;
-  if (controller) {
-    controller_files = ReadControllerFiles(config, config_file, options.python_runtime_dir);
-    obstacles = ObstacleSchedule(config.obstacles, config.world.time_step_s, steps);
-  }
+  if (!problems.empty()) throw ExportRefused(input.log_file, problems);
+  return input;
+}
 
-  const int n = track.num_robots;
-  const int64_t recorded_steps = track.last_step();
-  SubmissionParams params;
-  params.num_robots = n;
-  params.steps = steps;
-  params.options = options;
-  params.wheel_radius_m = config.world.wheel_radius_m;
-  params.base_length_m = config.world.base_length_m;
-  params.max_wheel_speed_radps = config.world.max_wheel_speed_radps;
-  params.stop_when_done = controller && config.sim.stop_when_done;
-  params.max_abs_v_mps = config.sim.max_abs_v_mps;
-  params.max_abs_w_radps = config.sim.max_abs_w_radps;
-
+/// The start poses, and (track, replay) the recorded poses and commands of every step.
+struct ReferenceArrays {
   NpyArray initial;
-  initial.shape = {3, n};
-  initial.values.resize(static_cast<size_t>(3 * n));
-  for (int i = 0; i < n; ++i) {
-    const world::Pose2& p = track.pose(0, i);
-    initial.values[static_cast<size_t>(i)] = p.x_m;
-    initial.values[static_cast<size_t>(n + i)] = p.y_m;
-    initial.values[static_cast<size_t>(2 * n + i)] = p.theta_rad;
-  }
-  // The recorded plan (track, replay).
   NpyArray poses;
   NpyArray commands;
-  const int64_t reference_steps = controller ? -1 : recorded_steps;
-  poses.shape = {reference_steps + 1, 3, n};
-  poses.values.resize(static_cast<size_t>((reference_steps + 1) * 3 * n));
-  commands.shape = {std::max<int64_t>(reference_steps, 0), 2, n};
-  commands.values.resize(static_cast<size_t>(std::max<int64_t>(reference_steps, 0) * 2 * n));
+};
+
+ReferenceArrays MakeReferenceArrays(const RunTrack& track, bool controller) {
+  const int n = track.num_robots;
   const auto un = static_cast<size_t>(n);
+  ReferenceArrays arrays;
+  arrays.initial.shape = {3, n};
+  arrays.initial.values.resize(3 * un);
+  for (size_t i = 0; i < un; ++i) {
+    const world::Pose2& p = track.pose(0, static_cast<int>(i));
+    arrays.initial.values[i] = p.x_m;
+    arrays.initial.values[un + i] = p.y_m;
+    arrays.initial.values[2 * un + i] = p.theta_rad;
+  }
+  const int64_t reference_steps = controller ? -1 : track.last_step();
+  arrays.poses.shape = {reference_steps + 1, 3, n};
+  arrays.poses.values.resize(static_cast<size_t>((reference_steps + 1) * 3 * n));
+  arrays.commands.shape = {std::max<int64_t>(reference_steps, 0), 2, n};
+  arrays.commands.values.resize(static_cast<size_t>(std::max<int64_t>(reference_steps, 0) * 2 * n));
   for (int64_t k = 0; k <= reference_steps; ++k) {
-    double* row = &poses.values[static_cast<size_t>(k) * 3 * un];
+    double* row = &arrays.poses.values[static_cast<size_t>(k) * 3 * un];
     const world::Pose2* step_poses = &track.poses[static_cast<size_t>(k) * un];
     for (size_t i = 0; i < un; ++i) {
       row[i] = step_poses[i].x_m;
@@ -262,52 +274,64 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
       row[2 * un + i] = step_poses[i].theta_rad;
     }
     if (k == reference_steps) break;
-    double* command_row = &commands.values[static_cast<size_t>(k) * 2 * un];
+    double* command_row = &arrays.commands.values[static_cast<size_t>(k) * 2 * un];
     const world::UnicycleCommand* step_commands = &track.commands[static_cast<size_t>(k) * un];
     for (size_t i = 0; i < un; ++i) {
       command_row[i] = step_commands[i].v_mps;
       command_row[un + i] = step_commands[i].w_radps;
     }
   }
+  return arrays;
+}
 
-  ExportSummary summary;
-  summary.num_robots = n;
-  summary.steps = steps;
-  summary.max_iterations = steps + options.settle_max_steps;
-  summary.estimated_duration_s = static_cast<double>(summary.max_iterations) * config.world.time_step_s;
-  summary.uploads = {SubmissionFiles::kMainScript, SubmissionFiles::kParams, SubmissionFiles::kInitialPoses};
-  if (controller) {
-    summary.uploads.insert(summary.uploads.end(), {SubmissionFiles::kControllerSpec, SubmissionFiles::kObstacles,
-                                                   controller_files.module_name});
-    for (const FlatPythonRuntime::File& file : controller_files.runtime) summary.uploads.push_back(file.name);
-  } else {
-    summary.uploads.insert(summary.uploads.end(), {SubmissionFiles::kReferencePoses, SubmissionFiles::kReferenceCommands});
-  }
+SubmissionParams MakeParams(const ExportInput& input, const ExportOptions& options) {
+  const run_config::RunConfig& config = input.config;
+  SubmissionParams params;
+  params.num_robots = input.track.num_robots;
+  params.steps = input.steps;
+  params.options = options;
+  params.wheel_radius_m = config.world.wheel_radius_m;
+  params.base_length_m = config.world.base_length_m;
+  params.max_wheel_speed_radps = config.world.max_wheel_speed_radps;
+  params.stop_when_done = input.controller && config.sim.stop_when_done;
+  params.max_abs_v_mps = config.sim.max_abs_v_mps;
+  params.max_abs_w_radps = config.sim.max_abs_w_radps;
+  return params;
+}
 
-  const std::string source_run = fs::weakly_canonical(fs::absolute(run_dir)).string();
+/// export.json, without the upload files' digests.
+nlohmann::ordered_json Manifest(const ExportInput& input, const ExportSummary& summary, const SubmissionParams& params,
+                                const std::string& run_dir, const std::string& module_name) {
+  namespace fs = std::filesystem;
+  const ExportOptions& options = params.options;
   nlohmann::ordered_json manifest;
   manifest["format"] = "dream-robotarium-export";
   manifest["format_version"] = kFormatVersion;
-  manifest["run"] = config.name;
-  manifest["source_run"] = source_run;
+  manifest["run"] = input.config.name;
+  manifest["source_run"] = fs::weakly_canonical(fs::absolute(run_dir)).string();
   manifest["strategy"] = StrategyName(options.strategy);
   manifest["barriers"] = options.barriers;
   if (options.calibration) manifest["calibration"] = true;
-  manifest["robots"] = n;
-  manifest["steps"] = steps;
-  manifest["recorded_steps"] = recorded_steps;
-  if (controller) {
+  manifest["robots"] = summary.num_robots;
+  manifest["steps"] = summary.steps;
+  manifest["recorded_steps"] = input.track.last_step();
+  if (input.controller) {
     manifest["stop_when_done"] = params.stop_when_done;
-    manifest["controller_module"] = controller_files.module_name;
+    manifest["controller_module"] = module_name;
   }
   manifest["settle_max_steps"] = options.settle_max_steps;
   manifest["estimated_duration_s"] = summary.estimated_duration_s;
   manifest["main"] = SubmissionFiles::kMainScript;
   manifest["upload"] = summary.uploads;
   manifest["result"] = SubmissionFiles::kResult;
+  return manifest;
+}
 
-  std::string& text = summary.instructions;
-  text += "Robotarium submission made by dream export from the run '" + config.name + "'.\n";
+/// UPLOAD.txt: what to upload and declare, the warnings, what to do with the result.
+std::string Instructions(const ExportInput& input, const ExportSummary& summary, const SubmissionParams& params) {
+  const ExportOptions& options = params.options;
+  const double time_step_s = input.config.world.time_step_s;
+  std::string text = "Robotarium submission made by dream export from the run '" + input.config.name + "'.\n";
   if (options.calibration) {
     text += "It is the calibration drive: every robot drives the same open-loop program (steps in v\n"
             "and w from rest, turns in place, an arc), from which dream calibrate fits your lab's model.\n";
@@ -317,21 +341,19 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
   for (size_t i = 0; i < summary.uploads.size(); ++i) {
     text += "  " + summary.uploads[i] + (i == 0 ? "    <- mark this file as MAIN" : "") + "\n";
   }
-  text += "\nNumber of robots to declare: " + std::to_string(n) + "\n";
+  text += "\nNumber of robots to declare: " + std::to_string(summary.num_robots) + "\n";
   text += "Estimated duration to declare: " + Seconds(summary.estimated_duration_s) + " s (" +
-          (controller ? "at most " : "") + std::to_string(steps) + " steps + at most " +
-          std::to_string(options.settle_max_steps) + " settle steps of " + Seconds(config.world.time_step_s * 1000) +
+          (input.controller ? "at most " : "") + std::to_string(summary.steps) + " steps + at most " +
+          std::to_string(options.settle_max_steps) + " settle steps of " + Seconds(time_step_s * 1000) +
           " ms; the lab's own start-up drive comes on top)\n";
   text += "Strategy: " + std::string(StrategyName(options.strategy)) + " (" +
           StrategyDescription(options.strategy) + ")" +
           (options.barriers ? ", through the Robotarium's barrier certificates" : "") + "\n";
-  if (controller) {
-    text += std::string("The run ends after ") + std::to_string(steps) + " steps" +
+  if (input.controller) {
+    text += std::string("The run ends after ") + std::to_string(summary.steps) + " steps" +
             (params.stop_when_done ? ", or earlier once every robot reports done" : "") + " (the simulated run took " +
-            std::to_string(recorded_steps) + ")\n";
+            std::to_string(input.track.last_step()) + ")\n";
   }
-  summary.warnings = forced;
-  for (std::string& warning : StartUpWarnings(track)) summary.warnings.push_back(std::move(warning));
   for (const std::string& warning : summary.warnings) text += "\nWARNING: " + warning + "\n";
   text += "\nThe script saves dream_result.npy (poses, commands sent, wall-clock stamps; rewritten\n"
           "every " + std::to_string(options.save_every_steps) +
@@ -347,20 +369,60 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
             "and run any config on your lab's model: --set world.realism.file=mylab.yaml\n"
             "(docs/experiments.md, \"Calibrating the lab: dream calibrate\").\n";
   }
+  return text;
+}
 
-  std::vector<std::pair<std::string, std::string>> upload_files = {
+/// upload/'s files, by name, in UPLOAD.txt's order.
+std::vector<std::pair<std::string, std::string>> UploadFiles(const SubmissionParams& params,
+                                                             const ReferenceArrays& arrays,
+                                                             const ControllerFiles& controller_files,
+                                                             const NpyArray& obstacles, bool controller) {
+  std::vector<std::pair<std::string, std::string>> files = {
       {SubmissionFiles::kMainScript, SubmissionScriptTemplate()},
       {SubmissionFiles::kParams, EncodeNpy(params.ToNpy())},
-      {SubmissionFiles::kInitialPoses, EncodeNpy(initial)}};
+      {SubmissionFiles::kInitialPoses, EncodeNpy(arrays.initial)}};
   if (controller) {
-    upload_files.emplace_back(SubmissionFiles::kControllerSpec, EncodeNpyBytes(controller_files.spec_json));
-    upload_files.emplace_back(SubmissionFiles::kObstacles, EncodeNpy(obstacles));
-    upload_files.emplace_back(controller_files.module_name, controller_files.module_text);
-    for (const FlatPythonRuntime::File& file : controller_files.runtime) upload_files.emplace_back(file.name, file.text);
+    files.emplace_back(SubmissionFiles::kControllerSpec, EncodeNpyBytes(controller_files.spec_json));
+    files.emplace_back(SubmissionFiles::kObstacles, EncodeNpy(obstacles));
+    files.emplace_back(controller_files.module_name, controller_files.module_text);
+    for (const FlatPythonRuntime::File& file : controller_files.runtime) files.emplace_back(file.name, file.text);
   } else {
-    upload_files.emplace_back(SubmissionFiles::kReferencePoses, EncodeNpy(poses));
-    upload_files.emplace_back(SubmissionFiles::kReferenceCommands, EncodeNpy(commands));
+    files.emplace_back(SubmissionFiles::kReferencePoses, EncodeNpy(arrays.poses));
+    files.emplace_back(SubmissionFiles::kReferenceCommands, EncodeNpy(arrays.commands));
   }
+  return files;
+}
+
+}  // namespace
+
+ExportRefused::ExportRefused(const std::string& log_file, std::vector<ExportProblem> problems)
+    : std::runtime_error(JoinProblems(log_file, problems)), problems_(std::move(problems)) {}
+
+ExportSummary ExportSubmission(const std::string& run_dir, const std::string& out_dir, const ExportOptions& options,
+                               const std::string& config_path) {
+  // Read and check everything before writing anything.
+  const ExportInput input = ReadAndCheck(run_dir, out_dir, options, config_path);
+  const run_config::RunConfig& config = input.config;
+  ControllerFiles controller_files;
+  NpyArray obstacles;
+  if (input.controller) {
+    controller_files = ReadControllerFiles(config, input.config_file, options.python_runtime_dir);
+    obstacles = ObstacleSchedule(config.obstacles, config.world.time_step_s, input.steps);
+  }
+  const SubmissionParams params = MakeParams(input, options);
+  const ReferenceArrays arrays = MakeReferenceArrays(input.track, input.controller);
+
+  ExportSummary summary;
+  summary.num_robots = input.track.num_robots;
+  summary.steps = input.steps;
+  summary.max_iterations = input.steps + options.settle_max_steps;
+  summary.estimated_duration_s = static_cast<double>(summary.max_iterations) * config.world.time_step_s;
+  const auto upload_files = UploadFiles(params, arrays, controller_files, obstacles, input.controller);
+  for (const auto& file : upload_files) summary.uploads.push_back(file.first);
+  summary.warnings = input.forced;
+  for (std::string& warning : StartUpWarnings(input.track)) summary.warnings.push_back(std::move(warning));
+  summary.instructions = Instructions(input, summary, params);
+  nlohmann::ordered_json manifest = Manifest(input, summary, params, run_dir, controller_files.module_name);
   // The digest of every upload file, so that an edit after the export is
   // named (ExportedSubmission::Read) before check-submission or import trust it.
   nlohmann::ordered_json digests = nlohmann::ordered_json::object();
@@ -372,10 +434,10 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
   // Every file upload/ holds is this export's (UPLOAD.txt says to upload them all).
   upload.RemoveFiles("an earlier export's file");
   for (const auto& [name, bytes] : upload_files) upload.WriteFile(name, bytes);
-  out.WriteFile("config.yaml", config_text);
+  out.WriteFile("config.yaml", input.config_text);
   KeepControllerModule(config, out);
   out.WriteFile("export.json", files::JsonText(manifest) + "\n");
-  out.WriteFile("UPLOAD.txt", text);
+  out.WriteFile("UPLOAD.txt", summary.instructions);
   summary.out_dir = out.dir();
   summary.upload_dir = upload.dir();
   return summary;

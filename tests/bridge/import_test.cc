@@ -97,9 +97,10 @@ TEST_F(ImportTest, PerfectLabResultGivesTheSimulatedRunBack) {
   while (reader.Next(&record)) commands += record.channel.rfind("DREAM_CMD_", 0) == 0 ? 1 : 0;
   EXPECT_EQ(commands, sim.last_step() * sim.num_robots);
   EXPECT_THAT(testing::FilesIn(fs::path(imported.log_path).parent_path().string()),
-              ::testing::ElementsAre(".dream.lock", "config.yaml", "run.lcmlog", "summary.json", "trajectories.png"));
-  EXPECT_THAT(imported.summary_json, HasSubstr("\"lab\": {"));
-  EXPECT_THAT(imported.summary_json, HasSubstr("\"kind\": \"go_to_goal\""));
+              ::testing::ElementsAre(".dream.lock", "config.yaml", "run.lcmlog"));  // the report: ImportWorkflow's
+  EXPECT_EQ(imported.lab_json["complete"], true);
+  EXPECT_EQ(imported.outcome.steps, sim.last_step());
+  EXPECT_EQ(imported.world->step(), sim.last_step());
 }
 
 TEST_F(ImportTest, CutShortRunIsImportedAsSuch) {
@@ -164,17 +165,16 @@ TEST_F(ImportTest, RunWithinOneAndAHalfTimesTheDeclaredDurationIsClean) {
   const ImportedRun as_uploaded = Import(rows, "declared_as_uploaded");
   EXPECT_EQ(as_uploaded.lab.iterations, steps);  // one step() per experiment row, no settle rows
   EXPECT_EQ(as_uploaded.declared.duration_s, upload.duration_s);
-  EXPECT_EQ(as_uploaded.verdict, world::RunVerdict::kClean);
-  EXPECT_THAT(as_uploaded.summary_json, HasSubstr("\"declared_from\": \"export\""));
+  EXPECT_EQ(as_uploaded.verdict(), world::RunVerdict::kClean);
+  EXPECT_EQ(as_uploaded.lab_json["declared_from"], "export");
 
   // Declared shorter than UPLOAD.txt says, but the run takes under 1.5 x of it.
   world::LabVerifierRules::Declaration shorter = upload;
   shorter.duration_s = static_cast<double>(steps) * dt / 1.45;
   const ImportedRun within = Import(rows, "declared_within", shorter);
-  EXPECT_EQ(within.verdict, world::RunVerdict::kClean);
-  EXPECT_TRUE(within.verdict_reasons.empty());
-  EXPECT_THAT(within.summary_json, HasSubstr("\"verdict\": \"clean\""));
-  EXPECT_THAT(within.summary_json, HasSubstr("\"declared_from\": \"options\""));
+  EXPECT_EQ(within.verdict(), world::RunVerdict::kClean);
+  EXPECT_TRUE(within.verdict_reasons().empty());
+  EXPECT_EQ(within.lab_json["declared_from"], "options");
 }
 
 TEST_F(ImportTest, RunLongerThanOneAndAHalfTimesTheDeclaredDurationIsRejected) {
@@ -184,29 +184,27 @@ TEST_F(ImportTest, RunLongerThanOneAndAHalfTimesTheDeclaredDurationIsRejected) {
   world::LabVerifierRules::Declaration declared = exported.UploadDeclaration();
   declared.duration_s = static_cast<double>(steps) * dt / 1.6;
   const ImportedRun too_long = Import(testing::PerfectLabResult(*export_dir_), "declared_too_short", declared);
-  EXPECT_EQ(too_long.verdict, world::RunVerdict::kRejected);
-  ASSERT_EQ(too_long.verdict_reasons.size(), 1u);
-  const world::VerdictReason& reason = too_long.verdict_reasons[0];
+  EXPECT_EQ(too_long.verdict(), world::RunVerdict::kRejected);
+  ASSERT_EQ(too_long.verdict_reasons().size(), 1u);
+  const world::VerdictReason& reason = too_long.verdict_reasons()[0];
   EXPECT_EQ(reason.rule, "verifier_duration");
   EXPECT_EQ(reason.verdict, world::RunVerdict::kRejected);
   // The measured and the declared value.
   EXPECT_THAT(reason.problem, HasSubstr(std::to_string(steps) + " iterations take " +
                                         Seconds(static_cast<double>(steps) * dt)));
   EXPECT_THAT(reason.problem, HasSubstr("over 1.5 x the declared " + Seconds(declared.duration_s)));
-  EXPECT_THAT(too_long.summary_json, HasSubstr("\"verdict\": \"rejected\""));
-  EXPECT_THAT(too_long.summary_json, HasSubstr("\"rule\": \"verifier_duration\""));
 
   // The verifier counts the settle phase's steps too: two settle rows take
   // a run that fits 1.5 x the declaration without them over it.
   declared.duration_s = static_cast<double>(steps + 1) * dt / 1.5;
-  EXPECT_EQ(Import(testing::PerfectLabResult(*export_dir_), "declared_fits", declared).verdict,
+  EXPECT_EQ(Import(testing::PerfectLabResult(*export_dir_), "declared_fits", declared).verdict(),
             world::RunVerdict::kClean);
   const ImportedRun settled =
       Import(WithSettleRows(testing::PerfectLabResult(*export_dir_), 2), "declared_settle_over", declared);
   EXPECT_EQ(settled.lab.iterations, steps + 2);
-  ASSERT_EQ(settled.verdict_reasons.size(), 1u);
-  EXPECT_EQ(settled.verdict_reasons[0].rule, "verifier_duration");
-  EXPECT_THAT(settled.verdict_reasons[0].problem, HasSubstr(std::to_string(steps + 2) + " iterations"));
+  ASSERT_EQ(settled.verdict_reasons().size(), 1u);
+  EXPECT_EQ(settled.verdict_reasons()[0].rule, "verifier_duration");
+  EXPECT_THAT(settled.verdict_reasons()[0].problem, HasSubstr(std::to_string(steps + 2) + " iterations"));
 }
 
 TEST_F(ImportTest, RobotCountOtherThanDeclaredIsRejected) {
@@ -215,14 +213,13 @@ TEST_F(ImportTest, RobotCountOtherThanDeclaredIsRejected) {
   world::LabVerifierRules::Declaration declared = exported.UploadDeclaration();
   declared.num_robots = robots + 2;
   const ImportedRun mismatch = Import(testing::PerfectLabResult(*export_dir_), "declared_robots", declared);
-  EXPECT_EQ(mismatch.verdict, world::RunVerdict::kRejected);
-  ASSERT_EQ(mismatch.verdict_reasons.size(), 1u);
-  EXPECT_EQ(mismatch.verdict_reasons[0].rule, "verifier_robot_count");
-  EXPECT_THAT(mismatch.verdict_reasons[0].problem, HasSubstr("the script asks for " + std::to_string(robots) +
+  EXPECT_EQ(mismatch.verdict(), world::RunVerdict::kRejected);
+  ASSERT_EQ(mismatch.verdict_reasons().size(), 1u);
+  EXPECT_EQ(mismatch.verdict_reasons()[0].rule, "verifier_robot_count");
+  EXPECT_THAT(mismatch.verdict_reasons()[0].problem, HasSubstr("the script asks for " + std::to_string(robots) +
                                                              " robots but " + std::to_string(robots + 2) +
                                                              " are declared"));
-  EXPECT_THAT(mismatch.summary_json, HasSubstr("\"rule\": \"verifier_robot_count\""));
-  EXPECT_THAT(mismatch.summary_json, HasSubstr("\"declared_robots\": " + std::to_string(robots + 2)));
+  EXPECT_EQ(mismatch.lab_json["declared_robots"], robots + 2);
 }
 
 TEST_F(ImportTest, MatFileFromMatlabImportsLikeTheNpy) {

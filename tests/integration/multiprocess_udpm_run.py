@@ -75,6 +75,15 @@ def test(ctx):
     robots = summary["robots"]
     check(read_summary(single)["steps"] == summary["steps"],
           f"steps differ: launch {summary['steps']}, run {read_summary(single)['steps']}")
+    # One writer of summaries: the launched run's carries every field of the one-process run's,
+    # the same goal and verdict, and the agents' reports.
+    run_summary = read_summary(single)
+    missing = sorted(set(run_summary) - set(summary))
+    check(not missing, f"dream launch's summary.json lacks what dream run's has: {missing}")
+    check(summary["goal"] == run_summary["goal"], f"goal differs: launch {summary['goal']}, run {run_summary['goal']}")
+    check(summary["verdict"] == run_summary["verdict"],
+          f"verdict differs: launch {summary['verdict']}, run {run_summary['verdict']}")
+    check(summary["agents"]["bad_messages"] == {}, f"dream launch: agents refused {summary['agents']['bad_messages']}")
 
     log_a, log_b = os.path.join(launched, "run.lcmlog"), os.path.join(single, "run.lcmlog")
     for channel in ["DREAM_POSES", "DREAM_OBSTACLES", "DREAM_STATUS"]:

@@ -20,6 +20,7 @@
 #include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/channels.h"
 #include "dream/robot_poses_t.hpp"
+#include "dream/files/atomic_file.h"
 #include "dream/files/file_text.h"
 #include "dream/session/run_session.h"
 #include "../support/scratch_folder.h"
@@ -137,6 +138,47 @@ TEST_F(RunSessionTest, WritesEveryOutputAndBuildsTheFactoryOnce) {
   for (const auto& entry : fs::directory_iterator(out())) {
     EXPECT_EQ(entry.path().extension() == ".part" || entry.path().string().find(".tmp") != std::string::npos, false)
         << entry.path();
+  }
+}
+
+TEST_F(RunSessionTest, ReasonsFoundAfterTheRunAreAddedByTheSameWriter) {
+  // What dream launch does with its agents' reports once the simulator wrote the summary.
+  RunSession::Options options;
+  options.report = &report_;
+  RunSession session(run_config::LoadRunConfigFile(WriteConfig(0.0, 1.0, 20)), options);
+  ASSERT_EQ(RunWithAgents(session).judgement.verdict(), world::RunVerdict::kClean);
+  const nlohmann::json before = Summary();
+  const std::string picture_before = files::ReadFileText(out() + "/trajectories.png");
+
+  // Nothing refused: the section is added, the verdict and picture stay.
+  EXPECT_EQ(session.Reporter().AddReasons(out(), "agents", {{"bad_messages", nlohmann::json::object()}}, {}),
+            world::RunVerdict::kClean);
+  EXPECT_EQ(Summary()["verdict"], "clean");
+  EXPECT_EQ(Summary()["agents"]["bad_messages"], nlohmann::json::object());
+  EXPECT_EQ(files::ReadFileText(out() + "/trajectories.png"), picture_before);
+
+  const world::VerdictReason refused{"agent_bad_messages", world::RunVerdict::kNotReady, "the agents refused 2",
+                                     "summary.json agents"};
+  EXPECT_EQ(session.Reporter().AddReasons(out(), "agents", {{"bad_messages", {{"DREAM_POSES", 2}}}}, {refused}),
+            world::RunVerdict::kNotReady);
+  const nlohmann::json after = Summary();
+  EXPECT_EQ(after["verdict"], "not_ready");
+  EXPECT_EQ(after["verdict_reasons"].back()["rule"], "agent_bad_messages");
+  EXPECT_EQ(after["verdict_reasons"].back()["verdict"], "not_ready");
+  EXPECT_EQ(after["agents"]["bad_messages"]["DREAM_POSES"], 2);
+  // Everything else as the run wrote it, and the picture says the new verdict.
+  for (const auto& [key, value] : before.items()) {
+    if (key != "verdict" && key != "verdict_reasons") EXPECT_EQ(after[key], value) << key;
+  }
+  EXPECT_NE(files::ReadFileText(out() + "/trajectories.png"), picture_before);
+
+  // A summary that holds no verdict is named, not guessed at.
+  files::WriteFileAtomically(out() + "/summary.json", R"({"verdict": "fine", "verdict_reasons": []})");
+  try {
+    session.Reporter().AddReasons(out(), "agents", {}, {refused});
+    ADD_FAILURE() << "a summary with an unknown verdict was amended";
+  } catch (const std::runtime_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr(out() + "/summary.json: has no verdict"));
   }
 }
 

@@ -97,5 +97,14 @@ TEST(RunJudgementTest, VerdictNames) {
   EXPECT_LT(RunVerdict::kNotReady, RunVerdict::kRejected);
 }
 
+TEST(RunJudgementTest, EveryVerdictNameParsesBackAndNothingElseDoes) {
+  for (RunVerdict verdict : {RunVerdict::kClean, RunVerdict::kWarning, RunVerdict::kNotReady, RunVerdict::kRejected}) {
+    EXPECT_EQ(ParseRunVerdict(RunVerdictName(verdict)), verdict) << RunVerdictName(verdict);
+  }
+  EXPECT_EQ(ParseRunVerdict("unknown"), std::nullopt);
+  EXPECT_EQ(ParseRunVerdict("Clean"), std::nullopt);
+  EXPECT_EQ(ParseRunVerdict(""), std::nullopt);
+}
+
 }  // namespace
 }  // namespace dream::world

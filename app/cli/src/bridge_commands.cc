@@ -1,18 +1,15 @@
 // dream export / import / lab-replay / compare / check-submission: the bridge
-// to the Robotarium (docs/robotarium.md). The work is in dream::bridge; this
-// file is options, messages and exit codes.
+// to the Robotarium (docs/robotarium.md). The work is in dream::workflows and
+// dream::bridge; this file is options, messages and exit codes.
 #include <spdlog/spdlog.h>
 
-#include <cmath>
 #include <csignal>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <numeric>
 #include <optional>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "hosted_agents.h"
 #include "command_line.h"
@@ -25,8 +22,10 @@
 #include "dream/agent_host/controller_factory.h"
 #include "dream/bridge/command_agreement.h"
 #include "dream/bridge/lab_import.h"
+#include "dream/workflows/check_submission.h"
+#include "dream/workflows/export_workflow.h"
+#include "dream/workflows/import_workflow.h"
 #include "dream/bridge/lab_replay_world.h"
-#include "dream/bridge/metrics_json.h"
 #include "dream/files/json_text.h"
 #include "dream/files/output_folder.h"
 #include "dream/bridge/run_comparison.h"
@@ -35,9 +34,6 @@
 #include "dream/run_config/run_config.h"
 #include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/lcm_url.h"
-#include "dream/world/run_report.h"
-#include "dream/node/run_summary.h"
-#include "dream/render/trajectory_picture.h"
 #include "data_files.h"
 #include "process_group.h"
 #include "run_folder_choice.h"
@@ -51,40 +47,6 @@ namespace dream::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string Cm(double m) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.2f cm", m * 100.0);
-  return text;
-}
-
-/// dream_result.npy (or .mat) in `path` when it is a folder, else `path`.
-std::string ResultFile(const std::string& path) {
-  if (!fs::is_directory(path)) return path;
-  for (const char* name : {bridge::SubmissionFiles::kResult, bridge::SubmissionFiles::kResultMat}) {
-    const fs::path candidate = fs::path(path) / name;
-    if (fs::exists(candidate)) return candidate.string();
-  }
-  throw std::runtime_error(path + ": holds neither " + std::string(bridge::SubmissionFiles::kResult) + " nor " +
-                           bridge::SubmissionFiles::kResultMat + "; pass the file the lab returned");
-}
-
-void PrintImported(const bridge::ImportedRun& imported) {
-  const bridge::LabResult& lab = imported.lab;
-  const world::RunReport report = world::RunReport::FromViolations(lab.track.last_step(), imported.violations);
-  std::cout << "imported " << lab.track.last_step() << " of " << lab.planned_steps << " planned steps of "
-            << lab.track.num_robots << " robots (" << (lab.complete ? "complete" : "CUT SHORT") << "), after "
-            << lab.settle_steps << " settle steps; " << lab.wall_duration_s << " s of lab time\n";
-  if (lab.clock_steps_back > 0) {
-    std::cout << "note: the lab's clock went back " << lab.clock_steps_back << " times; those stamps were held\n";
-  }
-  std::cout << "violations on the lab's poses: " << world::RunVerdictName(report.verdict) << " (boundary "
-            << imported.violations.boundary_errors << ", collision " << imported.violations.collision_errors
-            << ", actuator " << imported.violations.actuator_errors << ", obstacle "
-            << imported.violations.obstacle_collisions << ")\n";
-  std::cout << "log:     " << imported.log_path << "\nsummary: " << imported.summary_path
-            << "\npicture: " << imported.picture_path << "\n";
-}
 
 }  // namespace
 
@@ -103,48 +65,33 @@ int RunExport(const ExportArgs& args) {
     throw std::runtime_error("pass the run folder to export (dream export RUN), or --calibration --robots N");
   }
   options.strategy = bridge::ParseStrategy(args.strategy.empty() ? "track" : args.strategy);
-  const std::string config_path =
-      args.config_path.empty() ? (fs::path(args.run_dir) / "config.yaml").string() : args.config_path;
-  std::string out_dir = args.out_dir;
-  if (out_dir.empty()) {
-    const run_config::RunConfig config = run_config::LoadRunConfigFile(config_path);
-    std::error_code error;
-    fs::create_directories("exports", error);
-    out_dir = (fs::path("exports") / config.name).string();
-  }
-  try {
-    const bridge::ExportSummary summary = bridge::ExportSubmission(args.run_dir, out_dir, options, args.config_path);
-    std::cout << summary.instructions << "\nwritten: " << summary.out_dir << "/UPLOAD.txt, " << summary.upload_dir
-              << "/ (" << summary.uploads.size() << " files)\n";
-    return kExitOk;
-  } catch (const bridge::ExportRefused& refused) {
-    std::cerr << "dream export: " << refused.what() << "\nnothing was written.\n";
+  const workflows::ExportWorkflow::Result result =
+      workflows::ExportWorkflow().Export({args.run_dir, args.out_dir, args.config_path, options});
+  if (result.refused) {
+    std::cerr << "dream export: " << result.refusal << "\nnothing was written.\n";
     return kExitRejected;
   }
+  return kExitOk;
 }
 
 int RunImport(const ImportArgs& args) {
   const bridge::ExportedSubmission exported = bridge::ExportedSubmission::Read(args.export_dir);
-  const std::string out_dir =
-      RunFolderChoice(args.out_dir, "runs/" + exported.config.name + "_lab", args.overwrite,
-                      RunFolderChoice::Create::kLater)  // a refused result must leave no folder
-          .dir();
+  workflows::ImportWorkflow::Options options;
+  options.result = args.result;
+  options.export_dir = args.export_dir;
+  options.out_dir = RunFolderChoice(args.out_dir, "runs/" + exported.config.name + "_lab", args.overwrite,
+                                    RunFolderChoice::Create::kLater)  // a refused result must leave no folder
+                        .dir();
   // What was declared on the lab's form: UPLOAD.txt's values unless told otherwise.
-  std::optional<world::LabVerifierRules::Declaration> declared;
-  if (args.declared_robots > 0 || args.declared_duration_s > 0) {
-    declared = exported.UploadDeclaration();
-    if (args.declared_robots > 0) declared->num_robots = args.declared_robots;
-    if (args.declared_duration_s > 0) declared->duration_s = args.declared_duration_s;
-  }
-  const bridge::ImportedRun imported =
-      bridge::ImportLabRun(ResultFile(args.result), args.export_dir, out_dir, declared);
-  PrintImported(imported);
-  std::cout << "verdict: " << world::RunVerdictName(imported.verdict) << " (declared " << imported.declared.num_robots
-            << " robots, " << imported.declared.duration_s << " s; " << imported.lab.iterations << " iterations)\n";
-  for (const world::VerdictReason& reason : imported.verdict_reasons) std::cout << "  - " << reason.Text() << "\n";
+  options.declared = workflows::ImportWorkflow::Declared(exported, args.declared_robots, args.declared_duration_s);
+  const workflows::ImportWorkflow importer;
+  const workflows::ImportWorkflow::Result imported = importer.Import(options);
+  importer.PrintVerdict(imported);
   // As dream run's exit codes; a run the lab cut short did not finish.
-  if (!imported.lab.complete) return kExitRunFailed;
-  switch (imported.verdict) {
+  if (!imported.imported.lab.complete || !imported.report.summary_written || imported.report.picture_failed) {
+    return kExitRunFailed;
+  }
+  switch (imported.verdict()) {
     case world::RunVerdict::kRejected: return kExitRejected;
     case world::RunVerdict::kNotReady: return kExitNotReady;
     default: return kExitOk;
@@ -231,203 +178,67 @@ LabReplayOutcome ReplayLabRun(const LabReplayArgs& args, std::ostream* report) {
 
 int RunLabReplay(const LabReplayArgs& args) { return ReplayLabRun(args, &std::cout).exit_code; }
 
-/// A controller-strategy submission ran the controllers themselves: replays
-/// the imported run against the same controllers as agents (dream lab-replay,
-/// into `check_dir`/lab_replay) and says whether they sent what the
-/// submission sent. Returns check.json's `controllers_on_lab_poses`.
-nlohmann::ordered_json CheckControllersOnLabPoses(const files::OutputFolder& check_dir, LabReplayOutcome* outcome) {
-  LabReplayArgs replay;
-  replay.lab_dir = check_dir.dir();
-  replay.out_dir = check_dir.PathOf("lab_replay");
-  replay.overwrite = true;  // the check's own folder: a new check replaces it
-  nlohmann::ordered_json json;
-  json["replay"] = fs::absolute(replay.out_dir).string();
-  std::cout << "\nreplaying the lab's poses against your controllers as agents (dream lab-replay)\n";
-  try {
+/// What check-submission starts: the runner in its own process group
+/// (Ctrl-C passed on), and the lab replay in this process.
+workflows::CheckSubmission::Tools CheckSubmissionTools() {
+  workflows::CheckSubmission::Tools tools;
+  tools.run_script = [](const std::vector<std::string>& argv) {
+    workflows::CheckSubmission::ScriptRun ran;
+    ProcessGroup group;
+    const pid_t pid = group.Start(argv);
+    ran.exit_code = group.WaitPassingOnStop(pid, StopFlag(), SIGINT);
+    ran.interrupted = StopFlag().load();
+    return ran;
+  };
+  tools.replay_lab = [](const std::string& lab_dir, const std::string& replay_dir) {
+    LabReplayArgs replay;
+    replay.lab_dir = lab_dir;
+    replay.out_dir = replay_dir;
+    replay.overwrite = true;  // the check's own folder: a new check replaces it
     std::ostream quiet(nullptr);  // the replay's own verdict would repeat the check's
-    *outcome = ReplayLabRun(replay, &quiet);
-  } catch (const std::exception& error) {
-    std::cout << "WARNING: not replayed: " << error.what() << "\n";
-    json["replayed"] = false;
-    json["error"] = error.what();
-    return json;
-  }
-  if (!outcome->agreement) {
-    std::cout << "WARNING: the replay ended before its first step (" << replay.out_dir << ")\n";
-    json["replayed"] = false;
-    return json;
-  }
-  const bridge::CommandAgreement& agreement = *outcome->agreement;
-  json["replayed"] = true;
-  json["steps"] = agreement.steps();
-  json["same_commands"] = agreement.Same();
-  json["tolerance"] = bridge::CommandAgreement::kSameTolerance;
-  const double max_v = agreement.MaxVDifference();
-  const double max_w = agreement.MaxWDifference();
-  json["max_v_difference_mps"] = max_v;
-  json["max_w_difference_radps"] = max_w;
-  char largest[96];
-  std::snprintf(largest, sizeof(largest), "largest difference %.2g m/s, %.2g rad/s", max_v, max_w);
-  if (agreement.Same()) {
-    std::cout << "your controllers on the lab's poses send what the submission sent (" << largest << " over "
-              << agreement.steps() << " steps):\nwhat differs from the simulated run comes from the poses the lab "
-                 "gave them (the start-up drive leaves up to 5 mm), not from the controllers\n";
-  } else {
-    const auto& worst = agreement.robots()[static_cast<size_t>(agreement.WorstRobot())];
-    std::cout << "WARNING: your controllers decided differently on the lab's poses than in the submission: robot "
-              << worst.robot << " from step " << worst.first_different_step << " (" << largest
-              << ").\nA controller that reads the clock or draws unseeded random numbers cannot be reproduced, and\n"
-                 "an upload/ changed by hand after the export is not what the replay runs (the export's copy):\n"
-                 "the simulated run then says little about the lab's. Per robot: "
-              << replay.out_dir << "/summary.json (lab_replay)\n";
-  }
-  nlohmann::ordered_json silent = nlohmann::ordered_json::array();
-  for (const auto& robot : agreement.robots()) {
-    if (robot.v_mps.count() == agreement.steps()) continue;
-    silent.push_back({{"robot", robot.robot}, {"steps_without_command", agreement.steps() - robot.v_mps.count()}});
-    std::cout << "robot " << robot.robot << " sent no command at " << agreement.steps() - robot.v_mps.count()
-              << " of " << agreement.steps() << " replayed steps (its controller failed or its agent was lost)\n";
-  }
-  json["robots_without_commands"] = silent;
-  return json;
+    const LabReplayOutcome outcome = ReplayLabRun(replay, &quiet);
+    return workflows::CheckSubmission::Replay{outcome.exit_code == kExitInterrupted, outcome.agreement};
+  };
+  tools.choose_folder = [](const std::string& out, const std::string& default_dir, bool overwrite) {
+    return RunFolderChoice(out, default_dir, overwrite).dir();
+  };
+  return tools;
 }
 
 int RunCheckSubmission(const CheckSubmissionArgs& args) {
-  // Refuses an upload/ edited after the export, naming the file.
-  const bridge::ExportedSubmission exported = bridge::ExportedSubmission::Read(args.export_dir);
-  if (!exported.digests_checked) {
-    std::cout << "WARNING: " << args.export_dir << "/export.json has no digests of the upload files (an export "
-              << "from before they were written): an edit of upload/ cannot be found; export the run again\n";
+  workflows::CheckSubmission::Options options;
+  options.export_dir = args.export_dir;
+  options.out_dir = args.out_dir;
+  options.overwrite = args.overwrite;
+  options.run_dir = args.run_dir;
+  options.simulator = args.simulator;
+  if (const char* env = std::getenv("ROBOTARIUM_PYTHON_SIMULATOR")) options.simulator_from_environment = env;
+  options.python = args.python.empty() ? DREAM_DEFAULT_PYTHON : args.python;
+  options.runner_script = DataFiles::BridgePythonDir() + "/run_submission.py";
+  options.standin = args.standin;
+  options.require_official = args.require_official;
+  options.skip_initialization = args.skip_initialization;
+  const workflows::CheckSubmission::Result result =
+      workflows::CheckSubmission(options, CheckSubmissionTools()).Run();
+  using Outcome = workflows::CheckSubmission::Outcome;
+  if (!result.error.empty()) std::cerr << "dream check-submission: " << result.error << "\n";
+  switch (result.outcome) {
+    case Outcome::kPassed: return kExitOk;
+    case Outcome::kControllersDiffer: return kExitNotReady;
+    case Outcome::kRejected:
+    case Outcome::kStartupTimedOut: return kExitRejected;
+    case Outcome::kNoOfficialSimulator: return kExitInputError;
+    case Outcome::kInterrupted: return kExitInterrupted;
+    case Outcome::kIncomplete:
+    case Outcome::kScriptFailed:
+    case Outcome::kRunnerFailed: break;
   }
-  // The runner's rule for a simulator checkout, checked here so that a wrong
-  // one is named before an output folder is made (it used to exit 4 after).
-  // With --standin the runner looks at neither.
-  std::string simulator_dir = args.standin ? std::string() : args.simulator;
-  std::string simulator_named = "--simulator " + args.simulator;
-  if (const char* env = std::getenv("ROBOTARIUM_PYTHON_SIMULATOR");
-      simulator_dir.empty() && !args.standin && env != nullptr && *env != '\0') {
-    simulator_dir = env;
-    simulator_named = "$ROBOTARIUM_PYTHON_SIMULATOR " + simulator_dir;
-  }
-  if (!simulator_dir.empty() && !fs::is_directory(simulator_dir)) {
-    throw std::runtime_error(simulator_named +
-                             ": no such folder; pass a checkout of robotarium_python_simulator, or leave it out");
-  }
-  if (!simulator_dir.empty() && !fs::is_regular_file(fs::path(simulator_dir) / "rps" / "robotarium.py")) {
-    throw std::runtime_error(simulator_named + ": has no rps/robotarium.py, so it is no checkout of "
-                             "robotarium/robotarium_python_simulator (git clone it, or leave it out)");
-  }
-  const std::string run_dir = args.run_dir.empty() ? exported.source_run : args.run_dir;
-  std::error_code same_error;
-  if (!args.out_dir.empty() && !run_dir.empty() && fs::equivalent(args.out_dir, run_dir, same_error)) {
-    throw std::runtime_error("--out " + args.out_dir + " is the simulated run the check compares with (" + run_dir +
-                             "); the imported lab run would replace it: choose another --out");
-  }
-  // Chosen and locked before the script runs: a second check into the same
-  // folder is refused before it can write lab_files/.
-  const files::OutputFolder out(
-      RunFolderChoice(args.out_dir, "runs/" + exported.config.name + "_check", args.overwrite).dir());
-  const std::string workdir = out.MakeSubfolder("lab_files");
-  const std::string report_path = out.PathOf("check_report.json");
-  // An earlier check's files: lab_files/ must hold this upload only (a file
-  // the new upload lacks would still be found there, and a broken upload
-  // pass), and an earlier controller check's replay must not pass for this one's.
-  files::OutputFolder(workdir).RemoveFiles("an earlier check's file");
-  if (RunFolderChoice::HoldsRun(out.PathOf("lab_replay"))) {
-    std::error_code error;
-    fs::remove_all(out.PathOf("lab_replay"), error);
-    if (error) throw std::runtime_error(out.PathOf("lab_replay") + ": cannot remove an earlier check's replay: " + error.message());
-  }
-  std::vector<std::string> argv = {args.python.empty() ? DREAM_DEFAULT_PYTHON : args.python,
-                                   DataFiles::BridgePythonDir() + "/run_submission.py",
-                                   "--upload", (fs::path(args.export_dir) / "upload").string(),
-                                   "--workdir", workdir,
-                                   "--report", report_path};
-  if (args.standin) argv.push_back("--standin");
-  if (!args.simulator.empty()) argv.insert(argv.end(), {"--simulator", args.simulator});
-  if (args.require_official) argv.push_back("--require-official");
-  if (args.skip_initialization) argv.push_back("--skip-initialization");
-  spdlog::info("running {}/upload/{} in a Robotarium simulator (output in {})", args.export_dir,
-               bridge::SubmissionFiles::kMainScript, workdir);
-  int code = 0;
-  {
-    ProcessGroup group;
-    const pid_t pid = group.Start(argv);
-    code = group.WaitPassingOnStop(pid, StopFlag(), SIGINT);
-  }
-  if (StopFlag().load()) {
-    std::cerr << "dream check-submission: interrupted while the script ran (its output so far: " << workdir
-              << "/stdout.txt)\n";
-    return kExitInterrupted;
-  }
-  if (code == 5) {
-    std::cerr << "dream check-submission: no official Robotarium simulator found (--simulator DIR, "
-                 "$ROBOTARIUM_PYTHON_SIMULATOR, or pip install it); leave out --require-official to use the "
-                 "stand-in\n";
-    return kExitInputError;
-  }
-  if (!fs::exists(report_path)) {
-    std::cerr << "dream check-submission: the runner failed (exit " << code << ") before writing its report\n";
-    return kExitRunFailed;
-  }
-  const nlohmann::json report = nlohmann::json::parse(files::ReadFileText(report_path));
-  const std::string simulator = report.value("simulator", "?");
-  const std::string verdict = report.value("verdict", "unknown");
-  const std::vector<std::string> warnings = report.value("warnings", std::vector<std::string>{});
-  std::cout << "simulator: " << (simulator == "official" ? "the official Robotarium simulator (" +
-                                                               report.value("simulator_path", std::string()) + ")"
-                                                         : std::string("DREAM's stand-in (the official one was not found)"))
-            << "\n";
-  if (!report.value("ok", false)) {
-    std::cerr << "dream check-submission: the script failed in the simulator:\n"
-              << report.value("error", std::string()) << "\n(its output: " << workdir << "/stdout.txt)\n";
-    return report.value("startup_timeout", false) ? kExitRejected : kExitRunFailed;
-  }
-  std::cout << "debug() says:\n" << report.value("debug_text", std::string());
-  for (const std::string& warning : warnings) std::cout << "WARNING (Python): " << warning << "\n";
-
-  const bridge::ImportedRun imported = bridge::ImportLabRun(
-      (fs::path(workdir) / bridge::SubmissionFiles::kResult).string(), args.export_dir, out.dir());
-  PrintImported(imported);
-
-  nlohmann::ordered_json check;
-  check["simulator"] = simulator;
-  check["simulator_path"] = report.value("simulator_path", std::string());
-  check["script_ok"] = true;
-  check["verdict"] = verdict;
-  check["python_warnings"] = warnings;
-  check["debug_text"] = report.value("debug_text", std::string());
-  check["settle_steps"] = imported.lab.settle_steps;
-  check["complete"] = imported.lab.complete;
-  if (!run_dir.empty() && fs::exists(fs::path(run_dir) / "run.lcmlog")) {
-    const bridge::RunComparison comparison = bridge::CompareRunsAndWrite(run_dir, out.dir(), out.dir());
-    std::cout << "\n" << comparison.Text();
-    std::cout << "tracking error against " << run_dir << ": RMS " << Cm(comparison.position_m.Rms()) << ", max "
-              << Cm(comparison.position_m.max()) << "\n";
-    check["compared_with"] = run_dir;
-    check["tracking_rms_m"] = comparison.position_m.Rms();
-    check["tracking_max_m"] = comparison.position_m.max();
-  } else {
-    std::cout << "\nnot compared: the simulated run " << (run_dir.empty() ? "(unknown)" : run_dir)
-              << " is not there (pass --run DIR)\n";
-  }
-  LabReplayOutcome replayed;
-  if (exported.params.options.strategy == bridge::Strategy::kController) {
-    check["controllers_on_lab_poses"] = CheckControllersOnLabPoses(out, &replayed);
-  }
-  out.WriteFile("check.json", files::JsonText(check) + "\n");
-  std::cout << "written: " << out.PathOf("check.json") << "\n";
-  if (verdict == "rejected") return kExitRejected;
-  if (verdict != "clean" || !warnings.empty()) {
-    std::cout << "WARNING: the script ran, but with " << (verdict != "clean" ? "debug() warnings" : "Python warnings")
-              << "; see above\n";
-  }
-  if (replayed.exit_code == kExitInterrupted) return kExitInterrupted;
-  if (!imported.lab.complete) return kExitRunFailed;
-  return replayed.agreement && !replayed.agreement->Same() ? kExitNotReady : kExitOk;
+  return kExitRunFailed;
 }
 
-void DeclareBridgeCommands(CommandLine& line) {
+namespace {
+
+void DeclareExportCommand(CommandLine& line) {
   const auto [export_command, export_args] = line.AddCommand<ExportArgs>(
       "export",
       "Turn a recorded run into a Robotarium submission (a main script plus .npy data, and for\n"
@@ -462,13 +273,16 @@ void DeclareBridgeCommands(CommandLine& line) {
                              "At most this many steps to settle on the start poses before step 0")
       ->check(CLI::Range(0, 3000))
       ->capture_default_str();
+}
 
+void DeclareImportCommand(CommandLine& line) {
   const auto [import_command, import_args] = line.AddCommand<ImportArgs>(
       "import",
       "Turn what the lab returned (dream_result.npy, or dream_result.mat from MATLAB) into a run\n"
       "folder like dream run writes: run.lcmlog, summary.json, trajectories.png. Its verdict holds the\n"
       "run to the lab verifier's rules against what UPLOAD.txt said to declare (robot count, duration),\n"
-      "or what --declared-robots / --declared-duration say was declared.\n"
+      "or what --declared-robots / --declared-duration say was declared, and, as dream run's, to the\n"
+      "experiment's goal.\n"
       "Example: dream import ~/Downloads/dream_result.npy --export exports/go_to_goal --out runs/lab1",
       RunImport);
   import_command->add_option("result", import_args->result, "dream_result.npy / .mat, or a folder holding one")
@@ -483,7 +297,9 @@ void DeclareBridgeCommands(CommandLine& line) {
                              "The duration (s) declared on the lab's form, when not UPLOAD.txt's; the verdict\n"
                              "names a run over 1.5x of it (verifier_duration) or over 900 s (lab_duration_cap)")
       ->check(CLI::Range(0.001, 1e6));
+}
 
+void DeclareLabReplayCommand(CommandLine& line) {
   const auto [replay_command, replay_args] = line.AddCommand<LabReplayArgs>(
       "lab-replay",
       "Run a lab run (from dream import) as the world on the bus: the agents get the lab's poses\n"
@@ -500,7 +316,9 @@ void DeclareBridgeCommands(CommandLine& line) {
       ->check(CLI::IsMember({"lockstep", "realtime"}));
   replay_command->add_flag("--world-only", replay_args->world_only,
                            "Only the world; start the agents elsewhere (dream agent CONFIG) on the same URL");
+}
 
+void DeclareCompareCommand(CommandLine& line) {
   const auto [compare_command, compare_args] = line.AddCommand<CompareArgs>(
       "compare",
       "Compare a simulated run with its lab run: tracking error per robot, closest approach,\n"
@@ -510,7 +328,9 @@ void DeclareBridgeCommands(CommandLine& line) {
   compare_command->add_option("simulated", compare_args->first_dir, "The simulated run's folder")->required();
   compare_command->add_option("lab", compare_args->second_dir, "The lab run's folder (dream import)")->required();
   compare_command->add_option("--out", compare_args->out_dir, "Output folder (default: the lab run's folder)");
+}
 
+void DeclareCheckSubmissionCommand(CommandLine& line) {
   const auto [check_command, check_args] = line.AddCommand<CheckSubmissionArgs>(
       "check-submission",
       "Run an exported submission in the official Robotarium Python simulator (or, when it is\n"
@@ -529,6 +349,16 @@ void DeclareBridgeCommands(CommandLine& line) {
                           "Fail (exit 1) instead of using the stand-in when the official simulator is missing");
   check_command->add_flag("--skip-initialization", check_args->skip_initialization,
                           "Start exactly at the start poses (no start-up drive)");
+}
+
+}  // namespace
+
+void DeclareBridgeCommands(CommandLine& line) {
+  DeclareExportCommand(line);
+  DeclareImportCommand(line);
+  DeclareLabReplayCommand(line);
+  DeclareCompareCommand(line);
+  DeclareCheckSubmissionCommand(line);
 }
 
 }  // namespace dream::cli

@@ -14,8 +14,10 @@
 #include <fstream>
 
 #include "command_line.h"
-#include "dream/files/atomic_file.h"
-#include "dream/files/json_text.h"
+#include "dream/session/run_reporter.h"
+#include "dream/session/run_session.h"
+#include "dream/world/run_verdict.h"
+#include "dream/world/verdict_reason.h"
 #include "dream/files/output_folder_lock.h"
 #include "commands.h"
 #include "process_group.h"
@@ -38,19 +40,15 @@ std::string AgentReportPath(const std::string& out_dir, int robot) {
   return (AgentReportDir(out_dir) / ("robot_" + std::to_string(robot) + ".json")).string();
 }
 
-// The agents' refusals, in summary.json's "agents" section; a run whose
-// agents refused messages is not ready (as one whose world refused some), so
-// the verdict and exit code say so. Returns the launch's exit code.
-int MergeAgentReports(const std::string& out_dir, int num_robots, int sim_exit) {
-  const std::string summary_path = out_dir + "/summary.json";
-  nlohmann::ordered_json summary;
-  try {
-    std::ifstream in(summary_path);
-    summary = nlohmann::ordered_json::parse(in);
-  } catch (const std::exception& e) {
-    spdlog::warn("{}: cannot add the agents' reports ({})", summary_path, e.what());
-    return sim_exit;
-  }
+/// What the agents' reports say together: summary.json's "agents" section,
+/// and what they refused in one line ("" when nothing).
+struct AgentReports {
+  nlohmann::ordered_json section;
+  std::string problem;
+};
+
+// Reads (and removes) each agent's report.
+AgentReports ReadAgentReports(const std::string& out_dir, int num_robots) {
   nlohmann::ordered_json bad = nlohmann::ordered_json::object();
   std::map<std::string, std::string> first_bad;  // channel -> the first agent's first refusal there
   std::set<std::string> other_runs;
@@ -81,45 +79,60 @@ int MergeAgentReports(const std::string& out_dir, int num_robots, int sim_exit) 
   }
   std::error_code ignored;
   std::filesystem::remove_all(AgentReportDir(out_dir), ignored);
-  summary["agents"] = {{"bad_messages", bad},
-                       {"other_runs", other_runs},
-                       {"steps_out_of_sequence", out_of_sequence},
-                       {"reports_missing", missing}};
-  int exit_code = sim_exit;
-  if (refused > 0 || !other_runs.empty() || out_of_sequence > 0) {
-    std::string problem = "the agents refused " + std::to_string(refused) + " message(s)";
-    // Which channels, how many, and what the first refusal was: forged world
-    // messages and a flaky link read differently.
-    int named = 0;
-    for (const auto& [channel, count] : bad.items()) {
-      if (named++ == 3) {
-        problem += "; ...";
-        break;
-      }
-      problem += (named == 1 ? ": " : "; ") + channel + ": " + std::to_string(count.get<long long>());
-      const auto first = first_bad.find(channel);
-      if (first != first_bad.end()) problem += ", first refused: " + first->second;
+  AgentReports reports;
+  reports.section = {{"bad_messages", bad},
+                     {"other_runs", other_runs},
+                     {"steps_out_of_sequence", out_of_sequence},
+                     {"reports_missing", missing}};
+  if (refused == 0 && other_runs.empty() && out_of_sequence == 0) return reports;
+  reports.problem = "the agents refused " + std::to_string(refused) + " message(s)";
+  // Which channels, how many, and what the first refusal was: forged world
+  // messages and a flaky link read differently.
+  int named = 0;
+  for (const auto& [channel, count] : bad.items()) {
+    if (named++ == 3) {
+      reports.problem += "; ...";
+      break;
     }
-    if (!other_runs.empty()) problem += ", heard " + std::to_string(other_runs.size()) + " other run(s)";
-    if (out_of_sequence > 0) problem += ", ignored " + std::to_string(out_of_sequence) + " step(s) out of sequence";
-    summary["verdict_reasons"].push_back({{"rule", "agent_bad_messages"},
-                                          {"verdict", "not_ready"},
-                                          {"problem", problem},
-                                          {"find_out", "summary.json agents; the launch's output names each channel"}});
-    const std::string verdict = summary.value("verdict", "");
-    if (verdict == "clean" || verdict == "warning") summary["verdict"] = "not_ready";
-    if (exit_code == kExitOk) exit_code = kExitNotReady;
-    std::cout << "Not ready for the Robotarium: " << problem << " (summary.json agents)\n"
-              << "verdict: " << summary.value("verdict", "") << " (with the agents' reports, which the simulator's "
-              << "report above could not know; summary.json verdict_reasons)\n";
+    reports.problem += (named == 1 ? ": " : "; ") + channel + ": " + std::to_string(count.get<long long>());
+    const auto first = first_bad.find(channel);
+    if (first != first_bad.end()) reports.problem += ", first refused: " + first->second;
   }
+  if (!other_runs.empty()) reports.problem += ", heard " + std::to_string(other_runs.size()) + " other run(s)";
+  if (out_of_sequence > 0) {
+    reports.problem += ", ignored " + std::to_string(out_of_sequence) + " step(s) out of sequence";
+  }
+  return reports;
+}
+
+// The agents' refusals, in summary.json's "agents" section, added by the
+// run's one writer of reports; a run whose agents refused messages is not
+// ready (as one whose world refused some), so the verdict, the picture and
+// the exit code say so. Returns the launch's exit code.
+int MergeAgentReports(const session::RunSession& session, const std::string& out_dir, int sim_exit) {
+  const AgentReports reports = ReadAgentReports(out_dir, session.config().num_robots);
+  const std::string summary_path = out_dir + "/" + session::RunReporter::kSummaryName;
+  if (!std::filesystem::exists(summary_path)) {
+    spdlog::warn("{}: cannot add the agents' reports (the simulator wrote no summary)", summary_path);
+    return sim_exit;
+  }
+  std::vector<world::VerdictReason> reasons;
+  if (!reports.problem.empty()) {
+    reasons.push_back({"agent_bad_messages", world::RunVerdict::kNotReady, reports.problem,
+                       "summary.json agents; the launch's output names each channel"});
+  }
+  world::RunVerdict verdict = world::RunVerdict::kClean;
   try {
-    files::WriteFileAtomically(summary_path, files::JsonText(summary) + "\n");
+    verdict = session.Reporter().AddReasons(out_dir, "agents", reports.section, reasons);
   } catch (const std::exception& e) {
     spdlog::error("{}", e.what());
     return kExitRunFailed;
   }
-  return exit_code;
+  if (reasons.empty()) return sim_exit;
+  std::cout << "Not ready for the Robotarium: " << reports.problem << " (summary.json agents)\n"
+            << "verdict: " << world::RunVerdictName(verdict) << " (with the agents' reports, which the simulator's "
+            << "report above could not know; summary.json verdict_reasons)\n";
+  return sim_exit == kExitOk ? kExitNotReady : sim_exit;
 }
 
 }  // namespace
@@ -127,7 +140,8 @@ int MergeAgentReports(const std::string& out_dir, int num_robots, int sim_exit) 
 int RunLaunch(const RunArgs& args) {
   ProcessGroup::RequireDescriptors(kDescriptorsPerProcess);
   // Check the config here, so a mistake is reported once, not by N+1 children.
-  const run_config::RunConfig config = LoadConfig(args);
+  const std::unique_ptr<session::RunSession> session = OpenRunSession(args);
+  const run_config::RunConfig& config = session->config();
   // Chosen once, here: the simulator gets it as --out, so a numbered folder
   // (runs/<name>_2) is not chosen again, differently, by the child.
   const std::string out_dir = PrepareOutputDir(args, config);
@@ -176,7 +190,7 @@ int RunLaunch(const RunArgs& args) {
   }
   if (failed_agents > 0) spdlog::warn("{} agent process(es) did not exit cleanly", failed_agents);
   if (sim_exit == kExitInterrupted) return sim_exit;
-  return MergeAgentReports(out_dir, config.num_robots, sim_exit);
+  return MergeAgentReports(*session, out_dir, sim_exit);
 }
 
 void DeclareLaunchCommand(CommandLine& line) {

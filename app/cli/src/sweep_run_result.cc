@@ -26,7 +26,7 @@ SweepRunResult SweepRunResult::Judge(const SweepPlan::Run& run, int exit_code, b
   result.has_summary = summary.is_object();
   if (result.has_summary) {
     result.end = Text(summary, "end");
-    result.verdict = Text(summary, "verdict");
+    result.verdict = world::ParseRunVerdict(Text(summary, "verdict"));
     result.steps = Count(summary, "steps");
     const nlohmann::json violations = summary.contains("violations") ? summary["violations"] : nlohmann::json::object();
     if (violations.is_object()) {
@@ -62,7 +62,7 @@ SweepRunResult SweepRunResult::Judge(const SweepPlan::Run& run, int exit_code, b
     result.status = Status::kRan;
   }
   result.success =
-      result.status == Status::kRan && result.verdict != "rejected" && result.collisions() == 0 && result.goal.met;
+      result.status == Status::kRan && result.verdict != world::RunVerdict::kRejected && result.collisions() == 0 && result.goal.met;
   return result;
 }
 
@@ -77,7 +77,7 @@ std::string SweepRunResult::OutcomeText() const {
     add(std::to_string(violations.obstacle_collisions) + " obstacle collisions");
   }
   if (violations.boundary_errors > 0) add(std::to_string(violations.boundary_errors) + " boundary errors");
-  if (verdict == "rejected" && why.empty()) add("rejected by the Robotarium checks");
+  if (verdict == world::RunVerdict::kRejected && why.empty()) add("rejected by the Robotarium checks");
   if (!goal.met) add(goal.detail);
   return "no success (" + why + ")";
 }

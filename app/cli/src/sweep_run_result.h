@@ -5,6 +5,7 @@
 #include <string>
 
 #include "dream/session/experiment_goal.h"
+#include "dream/world/run_verdict.h"
 #include "dream/world/violation_counts.h"
 #include "sweep_plan.h"
 
@@ -32,7 +33,7 @@ struct SweepRunResult {
 
   bool has_summary = false;
   std::string end;      ///< summary "end"
-  std::string verdict;  ///< summary "verdict": clean, warning, rejected
+  std::optional<world::RunVerdict> verdict;  ///< summary "verdict" (none when missing or unknown)
   long long steps = 0;
   world::ViolationCounts violations;  ///< summary "violations"
   std::optional<double> min_distance_m;  ///< metrics.min_pairwise_distance_m (robot centres)

@@ -4,9 +4,11 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <unordered_set>
 
 #include "dream/robotarium/robotarium_constants.h"
+#include "dream/world/run_verdict.h"
 
 namespace dream::render {
 namespace {
@@ -31,11 +33,16 @@ std::string TickLabel(double value_m) {
   return text;
 }
 
+// Null for a verdict of no known name (shown as it is).
 const char* VerdictExplained(const std::string& verdict) {
-  if (verdict == "clean") return "clean (no errors or warnings)";
-  if (verdict == "warning") return "warning (accepted: actuator limits only)";
-  if (verdict == "not_ready") return "not ready (robots lost, conflicts, bad messages or goal missed)";
-  if (verdict == "rejected") return "rejected (boundary, collision or obstacle errors)";
+  const std::optional<world::RunVerdict> known = world::ParseRunVerdict(verdict);
+  if (!known) return nullptr;
+  switch (*known) {
+    case world::RunVerdict::kClean: return "clean (no errors or warnings)";
+    case world::RunVerdict::kWarning: return "warning (accepted: actuator limits only)";
+    case world::RunVerdict::kNotReady: return "not ready (robots lost, conflicts, bad messages or goal missed)";
+    case world::RunVerdict::kRejected: return "rejected (boundary, collision or obstacle errors)";
+  }
   return nullptr;
 }
 

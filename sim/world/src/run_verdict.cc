@@ -16,4 +16,11 @@ const char* RunVerdictName(RunVerdict verdict) {
   return "unknown";
 }
 
+std::optional<RunVerdict> ParseRunVerdict(const std::string& name) {
+  for (RunVerdict verdict : {RunVerdict::kClean, RunVerdict::kWarning, RunVerdict::kNotReady, RunVerdict::kRejected}) {
+    if (name == RunVerdictName(verdict)) return verdict;
+  }
+  return std::nullopt;
+}
+
 }  // namespace dream::world

@@ -1,6 +1,8 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -8,11 +10,14 @@
 #include "dream/bridge/npy_file.h"
 #include "dream/bridge/run_track.h"
 #include "dream/bridge/submission_params.h"
+#include "dream/node/run_outcome.h"
 #include "dream/run_config/run_config.h"
 #include "dream/world/lab_verifier_rules.h"
+#include "dream/world/run_judgement.h"
 #include "dream/world/run_verdict.h"
 #include "dream/world/verdict_reason.h"
 #include "dream/world/violation_counts.h"
+#include "dream/world/world.h"
 
 namespace dream::bridge {
 
@@ -83,31 +88,41 @@ LabResult ParseLabResult(const NpyArray& rows, const std::string& name, const Ex
 std::vector<world::VerdictReason> LabVerifierReasons(const LabResult& lab, const world::WorldParams& world,
                                                    const world::LabVerifierRules::Declaration& declared);
 
-/// What ImportLabRun wrote.
+/// What ImportLabRun wrote and what the run's report needs: the world
+/// stepped over the lab's poses, how the run ended and its judgement as a lab
+/// run. summary.json and trajectories.png are the caller's to write, with
+/// the one writer of run reports (session::RunReporter, through
+/// workflows::ImportWorkflow), which adds the experiment's metrics and goal.
 struct ImportedRun {
   LabResult lab;
+  run_config::RunConfig config;  ///< the export's copy of the run's config
   world::ViolationCounts violations{};
   world::LabVerifierRules::Declaration declared;  ///< what the run was judged against
-  /// summary.json's verdict and verdict_reasons: the Robotarium's checks on
-  /// the lab's poses, the verifier's rules (LabVerifierReasons), a cut-short run.
-  world::RunVerdict verdict = world::RunVerdict::kClean;
-  std::vector<world::VerdictReason> verdict_reasons;
+  /// Judged as a lab run: the Robotarium's checks on the lab's poses, the
+  /// verifier's rules (LabVerifierReasons), a cut-short run (not
+  /// node::JudgeRun's, which assumes the run is its own export). The goal is
+  /// the report's to add.
+  world::RunJudgement judgement{world::RunReport{}};
+  std::shared_ptr<const world::World> world;  ///< a LabReplayWorld at the lab run's last step
+  node::RunOutcome outcome;
+  /// summary.json's "lab" section: the files, the strategy, the steps, what was declared, the lab's clock.
+  nlohmann::ordered_json lab_json;
   std::string log_path;
-  std::string summary_path;
-  std::string picture_path;
-  std::string summary_json;
+  /// judgement's verdict and reasons.
+  world::RunVerdict verdict() const { return judgement.verdict(); }
+  const std::vector<world::VerdictReason>& verdict_reasons() const { return judgement.reasons(); }
 };
 
-/// `dream import`: reads the lab's result file (.npy or .mat) for the export
-/// in `export_dir` and writes, in `out_dir`, what `dream run` writes for a
-/// simulated run: run.lcmlog (the same channels and types: DREAM_OBSTACLES,
-/// DREAM_STATUS, DREAM_POSES at the lab's timestamps, the commands as sent
-/// on DREAM_CMD_<id>), summary.json (violations on the lab's poses, the
-/// experiment's metrics, a "lab" section), trajectories.png and config.yaml.
-/// The verdict holds the run to `declared` (what the user declared on the
-/// lab's form; absent: what UPLOAD.txt said, UploadDeclaration()).
-/// Nothing is written unless the result file passes every check; each file
-/// is written atomically. @throws std::runtime_error naming the file.
+/// `dream import`'s lab part: reads the lab's result file (.npy or .mat) for
+/// the export in `export_dir` and writes, in `out_dir`, the run's log as
+/// `dream run` writes it: run.lcmlog (the same channels and types:
+/// DREAM_OBSTACLES, DREAM_STATUS, DREAM_POSES at the lab's timestamps, the
+/// commands as sent on DREAM_CMD_<id>), and config.yaml (with the
+/// controller's module). The judgement holds the run to `declared` (what the
+/// user declared on the lab's form; absent: what UPLOAD.txt said,
+/// UploadDeclaration()). Nothing is written unless the result file passes
+/// every check; each file is written atomically; the folder stays locked
+/// until the process exits. @throws std::runtime_error naming the file.
 ImportedRun ImportLabRun(const std::string& result_path, const std::string& export_dir, const std::string& out_dir,
                          const std::optional<world::LabVerifierRules::Declaration>& declared = {});
 

@@ -12,6 +12,7 @@
 #include "dream/run_config/run_config.h"
 #include "dream/lcm/lcm_interface.h"
 #include "dream/node/run_recorder.h"
+#include "dream/session/run_reporter.h"
 #include "dream/session/run_result.h"
 #include "dream/world/world.h"
 
@@ -25,7 +26,8 @@ namespace dream::session {
 /// once), for the agents the command hosts, the metrics and the picture.
 /// Run() writes the run folder: config.yaml, run.lcmlog, summary.json and
 /// trajectories.png, each atomically (docs/run-outputs.md), shows progress
-/// while the world steps, and prints the verdict with its reasons.
+/// while the world steps, and prints the verdict with its reasons; the
+/// summary and the picture through Reporter() (RunReporter).
 class RunSession {
  public:
   /// A world other than the config's own (dream lab-replay's
@@ -78,15 +80,16 @@ class RunSession {
   /// @throws std::logic_error when called again.
   RunResult Run(lcm::LcmInterface& lcm, const Folder& folder, const GivenWorld& world);
 
+  /// The run's one writer of summary.json and trajectories.png, with this
+  /// session's config, factory and options: what Run() reports through, and
+  /// what reports a run that ran elsewhere (dream import's lab run, the
+  /// agents' reports dream launch adds). Valid while the session lives.
+  RunReporter Reporter() const;
+
  private:
   struct Stepped;
-  struct LogReadBack;
   Stepped Step(lcm::LcmInterface& lcm, const Folder& folder, const GivenWorld& world);
   RunResult Report(const Stepped& stepped, const std::string& dir);
-  nlohmann::ordered_json Metrics(const LogReadBack& log) const;
-  world::RunJudgement Judge(const node::RunOutcome& outcome, const world::World& world, const LogReadBack& log,
-                          nlohmann::ordered_json* summary) const;
-  bool DrawPicture(const LogReadBack& log, const std::string& picture_path, world::RunVerdict verdict) const;
 
   run_config::RunConfig config_;
   Options options_;

@@ -1,5 +1,8 @@
 #pragma once
 
+#include <optional>
+#include <string>
+
 namespace dream::world {
 
 /// What a run is worth on the Robotarium, from best to worst (the order is
@@ -16,5 +19,9 @@ enum class RunVerdict {
 
 /// "clean", "warning", "not_ready", "rejected" (summary.json's words).
 const char* RunVerdictName(RunVerdict verdict);
+
+/// The verdict RunVerdictName names; none for any other text. The one way C++
+/// reads a verdict back from JSON (summary.json, a sweep's rows, a runner's report).
+std::optional<RunVerdict> ParseRunVerdict(const std::string& name);
 
 }  // namespace dream::world

@@ -1,0 +1,206 @@
+#include "dream/session/run_reporter.h"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <stdexcept>
+#include <utility>
+
+#include "dream/bridge/metrics_json.h"
+#include "dream/bridge/pre_validation.h"
+#include "dream/files/atomic_file.h"
+#include "dream/files/file_text.h"
+#include "dream/files/json_text.h"
+#include "dream/node/run_judge.h"
+#include "dream/node/run_summary.h"
+#include "dream/render/trajectory_picture.h"
+#include "dream/run_log/run_log.h"
+#include "dream/session/experiment_goal.h"
+#include "dream/session/render_overlays.h"
+
+namespace dream::session {
+
+/// The run's log, read back once after the run for the metrics, the
+/// verifier's counts and the picture; when it cannot be read, each of them
+/// fails with the reader's error, as when each read it.
+struct RunReporter::LogReadBack {
+  explicit LogReadBack(const std::string& log_path) : path(log_path) {
+    try {
+      log.emplace(run_log::RunLog::Read(path));
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+  }
+  /// @throws std::runtime_error (the reader's) when the log could not be read.
+  const run_log::RunLog& Get() const {
+    if (!log) throw std::runtime_error(error);
+    return *log;
+  }
+
+  std::string path;
+  std::optional<run_log::RunLog> log;
+  std::string error;
+};
+
+RunReporter::RunReporter(const run_config::RunConfig& config, const agent_host::ControllerFactory* factory,
+                         std::string factory_error, Options options)
+    : config_(config), factory_(factory), factory_error_(std::move(factory_error)), options_(options) {}
+
+nlohmann::ordered_json RunReporter::Metrics(const LogReadBack& log) const {
+  nlohmann::ordered_json json;
+  if (factory_ == nullptr) {
+    spdlog::warn("{}: {}", config_.source, factory_error_);
+    json["error"] = factory_error_;
+    return json;
+  }
+  if (!log.log) {
+    json["error"] = log.error;
+    return json;
+  }
+  return bridge::MetricsJson(*factory_, *log.log);
+}
+
+world::RunJudgement RunReporter::Judge(const Ended& ended, const LogReadBack& log,
+                                       nlohmann::ordered_json* summary) const {
+  const node::RunOutcome& outcome = ended.outcome;
+  std::optional<world::RunJudgement> judgement = ended.judgement;
+  if (!judgement) {
+    // The lab's verifier counts each robot outside the arena, the world each
+    // step with any: re-count on the log, only when there is something to count.
+    int64_t outside = 0;
+    if (ended.world->violations().boundary_errors > 0) {
+      try {
+        outside = bridge::VerifierCounts(log.Get(), config_.world).robots_outside_boundaries;
+      } catch (const std::exception& e) {
+        spdlog::warn("{}: cannot re-count robots outside the arena ({}); using the steps with any", log.path, e.what());
+        outside = -1;
+      }
+    }
+    judgement.emplace(node::JudgeRun(config_, outcome, *ended.world, outside));
+  }
+  const ExperimentGoal goal = ExperimentGoal::Judge(*summary);
+  nlohmann::ordered_json goal_json = goal.Json();
+  // A run stopped by --steps at its limit was cut short on purpose: its goal is not judged.
+  const bool cut_short =
+      options_.steps_from_command_line && !goal.met && outcome.steps >= config_.sim.max_steps;
+  goal_json["judged"] = !cut_short && goal.has_criterion;
+  (*summary)["goal"] = goal_json;
+  if (!cut_short) {
+    if (const std::optional<world::VerdictReason> reason = goal.Reason()) judgement->Add(*reason);
+  }
+  return *judgement;
+}
+
+RunResult RunReporter::Report(const Ended& ended) const {
+  if (ended.world == nullptr) throw std::logic_error("RunReporter::Report: no world");
+  const std::string log_path = ended.dir + "/" + kLogName;
+  const node::RunOutcome& outcome = ended.outcome;
+  RunResult result;
+  result.outcome = outcome;
+  // Written whatever the outcome: after a failed run it says why, and the
+  // log keeps every whole event up to the failure.
+  const LogReadBack log(log_path);  // once, for the metrics, the verifier's counts and the picture
+  const nlohmann::ordered_json metrics = Metrics(log);
+  if (metrics.contains("error")) {
+    // The run and its log stand; only the experiment's own numbers are missing.
+    spdlog::warn("{}: no experiment metrics: {}", log_path, metrics["error"].get<std::string>());
+  }
+  // The goal is judged on the summary (robots done, steps) with its metrics.
+  // Built once: its verdict fields are set again once the goal is judged.
+  nlohmann::ordered_json summary = node::RunSummary(config_, outcome, *ended.world, kLogName,
+                                                    world::RunJudgement(world::RunReport{}));
+  summary["metrics"] = metrics;
+  result.judgement = Judge(ended, log, &summary);
+  node::SetSummaryVerdict(&summary, result.judgement);
+  const nlohmann::ordered_json goal = summary["goal"];  // a copy: adding fields may move the summary's entries
+  for (auto it = ended.fields.begin(); it != ended.fields.end(); ++it) summary[it.key()] = it.value();
+  try {
+    files::WriteFileAtomically(ended.dir + "/" + kSummaryName, files::JsonText(summary) + "\n");
+    result.summary_written = true;
+  } catch (const std::exception& e) {
+    // A full disk: say so once, and that the run's outputs are incomplete.
+    spdlog::error("{} ({} after {} steps; the run's outputs are incomplete)", e.what(), node::EndName(outcome.end),
+                  outcome.steps);
+    return result;
+  }
+  PrintVerdict(ended, result.judgement, goal);
+  if (outcome.steps > 0 || outcome.end == node::RunOutcome::End::kFinished) {
+    const std::string picture_path = ended.dir + "/" + kPictureName;
+    result.picture_failed = !DrawPicture(log, picture_path, result.judgement.verdict());
+    if (!result.picture_failed) *options_.report << "picture: " << picture_path << "\n";
+  }
+  return result;
+}
+
+void RunReporter::PrintVerdict(const Ended& ended, const world::RunJudgement& judgement,
+                               const nlohmann::ordered_json& goal) const {
+  const node::RunOutcome& outcome = ended.outcome;
+  std::ostream& report = *options_.report;
+  spdlog::info("{} after {} steps ({:.1f} s simulated, {:.2f} s wall): {}", node::EndName(outcome.end), outcome.steps,
+               ended.world->time_s(), outcome.wall_time_s, outcome.reason);
+  report << judgement.Text();
+  if (goal.contains("judged") && goal["judged"] == false && goal["has_criterion"] == true) {
+    report << "goal: not judged, --steps " << config_.sim.max_steps << " stopped the run first ("
+           << goal["detail"].get<std::string>() << ")\n";
+  }
+  if (judgement.verdict() == world::RunVerdict::kNotReady || judgement.reasons().size() > 1) {
+    report << "verdict: " << world::RunVerdictName(judgement.verdict()) << " (summary.json verdict_reasons";
+    report << (judgement.verdict() >= world::RunVerdict::kNotReady ? "; dream export refuses it" : "") << ")\n";
+  }
+  report << "log:     " << ended.dir + "/" + kLogName << "\nsummary: " << ended.dir + "/" + kSummaryName << "\n";
+}
+
+bool RunReporter::DrawPicture(const LogReadBack& log, const std::string& picture_path,
+                              world::RunVerdict verdict) const {
+  try {
+    // With the config's goals, like `dream render` draws them.
+    render::ArenaOverlays overlays =
+        factory_ ? ArenaOverlaysFromConfig(config_, *factory_) : ArenaOverlaysFromConfig(config_);
+    overlays.run_name = config_.name;
+    overlays.verdict = world::RunVerdictName(verdict);  // as summary.json says
+    render::TrajectoryPicture::Render(log.Get(), overlays, picture_path, render::RenderFormat::kPng, 1280);
+    return true;
+  } catch (const std::exception& e) {
+    spdlog::error("no {}: {}", kPictureName, e.what());
+    return false;
+  }
+}
+
+world::RunVerdict RunReporter::AddReasons(const std::string& dir, const std::string& section_key,
+                                          const nlohmann::ordered_json& section,
+                                          const std::vector<world::VerdictReason>& reasons) const {
+  const std::string summary_path = dir + "/" + kSummaryName;
+  nlohmann::ordered_json summary;
+  try {
+    summary = nlohmann::ordered_json::parse(files::ReadFileText(summary_path));
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(summary_path + ": not valid JSON: " + e.what());
+  }
+  const std::optional<world::RunVerdict> old_verdict =
+      summary.is_object() && summary.contains("verdict") && summary["verdict"].is_string()
+          ? world::ParseRunVerdict(summary["verdict"].get<std::string>())
+          : std::nullopt;
+  if (!old_verdict || !summary.contains("verdict_reasons") || !summary["verdict_reasons"].is_array()) {
+    throw std::runtime_error(summary_path + ": has no verdict (clean, warning, not_ready or rejected) with "
+                             "verdict_reasons; is it a dream run's summary?");
+  }
+  world::RunVerdict verdict = *old_verdict;
+  for (const world::VerdictReason& reason : reasons) {
+    // As node::SetSummaryVerdict writes each reason.
+    summary["verdict_reasons"].push_back({{"rule", reason.rule},
+                                          {"verdict", world::RunVerdictName(reason.verdict)},
+                                          {"problem", reason.problem},
+                                          {"find_out", reason.find_out}});
+    verdict = std::max(verdict, reason.verdict);
+  }
+  summary["verdict"] = world::RunVerdictName(verdict);
+  summary[section_key] = section;
+  files::WriteFileAtomically(summary_path, files::JsonText(summary) + "\n");
+  if (verdict != *old_verdict && std::filesystem::exists(dir + "/" + kPictureName)) {
+    DrawPicture(LogReadBack(dir + "/" + kLogName), dir + "/" + kPictureName, verdict);  // says what summary.json says
+  }
+  return verdict;
+}
+
+}  // namespace dream::session

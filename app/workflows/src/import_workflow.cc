@@ -1,0 +1,86 @@
+#include "dream/workflows/import_workflow.h"
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "dream/bridge/submission_format.h"
+#include "dream/session/run_reporter.h"
+#include "dream/session/run_session.h"
+#include "dream/world/run_report.h"
+
+namespace dream::workflows {
+
+namespace fs = std::filesystem;
+
+std::string ImportWorkflow::ResultFile(const std::string& path) {
+  if (!fs::is_directory(path)) return path;
+  for (const char* name : {bridge::SubmissionFiles::kResult, bridge::SubmissionFiles::kResultMat}) {
+    const fs::path candidate = fs::path(path) / name;
+    if (fs::exists(candidate)) return candidate.string();
+  }
+  throw std::runtime_error(path + ": holds neither " + std::string(bridge::SubmissionFiles::kResult) + " nor " +
+                           bridge::SubmissionFiles::kResultMat + "; pass the file the lab returned");
+}
+
+std::optional<world::LabVerifierRules::Declaration> ImportWorkflow::Declared(
+    const bridge::ExportedSubmission& exported, int robots, double duration_s) {
+  if (robots <= 0 && duration_s <= 0) return std::nullopt;
+  world::LabVerifierRules::Declaration declared = exported.UploadDeclaration();
+  if (robots > 0) declared.num_robots = robots;
+  if (duration_s > 0) declared.duration_s = duration_s;
+  return declared;
+}
+
+ImportWorkflow::Result ImportWorkflow::Import(const Options& options) const {
+  Result result;
+  result.imported =
+      bridge::ImportLabRun(ResultFile(options.result), options.export_dir, options.out_dir, options.declared);
+  const bridge::ImportedRun& imported = result.imported;
+  // The run's report, written as every run's is; what it prints is said below, as a lab run's.
+  session::RunSession::Options session_options;
+  std::ostream quiet(nullptr);
+  session_options.report = &quiet;
+  const session::RunSession session(imported.config, session_options);
+  session::RunReporter::Ended ended;
+  ended.world = imported.world.get();
+  ended.outcome = imported.outcome;
+  ended.dir = fs::path(imported.log_path).parent_path().string();
+  ended.judgement = imported.judgement;
+  ended.fields["config"] = "config.yaml";
+  ended.fields["lab"] = imported.lab_json;
+  result.report = session.Reporter().Report(ended);
+  result.summary_path = ended.dir + "/" + session::RunReporter::kSummaryName;
+  if (result.report.summary_written && !result.report.picture_failed &&
+      fs::exists(ended.dir + "/" + session::RunReporter::kPictureName)) {
+    result.picture_path = ended.dir + "/" + session::RunReporter::kPictureName;
+  }
+  PrintLabRun(imported);
+  return result;
+}
+
+void ImportWorkflow::PrintLabRun(const bridge::ImportedRun& imported) const {
+  const bridge::LabResult& lab = imported.lab;
+  const world::RunReport report = world::RunReport::FromViolations(lab.track.last_step(), imported.violations);
+  out_ << "imported " << lab.track.last_step() << " of " << lab.planned_steps << " planned steps of "
+       << lab.track.num_robots << " robots (" << (lab.complete ? "complete" : "CUT SHORT") << "), after "
+       << lab.settle_steps << " settle steps; " << lab.wall_duration_s << " s of lab time\n";
+  if (lab.clock_steps_back > 0) {
+    out_ << "note: the lab's clock went back " << lab.clock_steps_back << " times; those stamps were held\n";
+  }
+  out_ << "violations on the lab's poses: " << world::RunVerdictName(report.verdict) << " (boundary "
+       << imported.violations.boundary_errors << ", collision " << imported.violations.collision_errors
+       << ", actuator " << imported.violations.actuator_errors << ", obstacle "
+       << imported.violations.obstacle_collisions << ")\n";
+  const std::string dir = fs::path(imported.log_path).parent_path().string();
+  out_ << "log:     " << imported.log_path << "\nsummary: " << dir << "/" << session::RunReporter::kSummaryName
+       << "\npicture: " << dir << "/" << session::RunReporter::kPictureName << "\n";
+}
+
+void ImportWorkflow::PrintVerdict(const Result& result) const {
+  const bridge::ImportedRun& imported = result.imported;
+  out_ << "verdict: " << world::RunVerdictName(result.verdict()) << " (declared " << imported.declared.num_robots
+       << " robots, " << imported.declared.duration_s << " s; " << imported.lab.iterations << " iterations)\n";
+  for (const world::VerdictReason& reason : result.report.judgement.reasons()) out_ << "  - " << reason.Text() << "\n";
+}
+
+}  // namespace dream::workflows

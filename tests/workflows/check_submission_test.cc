@@ -1,0 +1,154 @@
+// CheckSubmission with a fake runner: what it makes of each way the runner
+// can end, and what it writes, with no process started.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "../bridge/bridge_test_support.h"
+#include "dream/bridge/npy_file.h"
+#include "dream/bridge/submission_format.h"
+#include "dream/files/file_text.h"
+#include "dream/workflows/check_submission.h"
+#include "workflow_test_support.h"
+
+namespace dream::workflows {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+using Outcome = CheckSubmission::Outcome;
+
+/// What the fake runner does: the report it writes (none when null) and
+/// whether it leaves the lab's result behind.
+struct FakeRunner {
+  nlohmann::json report;
+  bool writes_result = true;
+  CheckSubmission::ScriptRun ends;
+  std::vector<std::string> argv;  ///< what it was started with
+};
+
+class CheckSubmissionTest : public ::testing::Test {
+ protected:
+  CheckSubmission::Options Options() const {
+    CheckSubmission::Options options;
+    options.export_dir = testing::SimulatedExport();
+    options.out_dir = out_dir_;
+    options.python = "python-of-the-test";
+    options.runner_script = "run_submission.py";
+    options.standin = true;
+    return options;
+  }
+
+  CheckSubmission::Tools Tools() {
+    CheckSubmission::Tools tools;
+    tools.run_script = [this](const std::vector<std::string>& argv) {
+      runner_.argv = argv;
+      const auto at = [&argv](const std::string& option) {
+        return *(std::find(argv.begin(), argv.end(), option) + 1);
+      };
+      if (runner_.writes_result) {
+        bridge::testing::WriteText(at("--workdir") + "/" + bridge::SubmissionFiles::kResult,
+                                   bridge::EncodeNpy(bridge::testing::PerfectLabResult(testing::SimulatedExport())));
+      }
+      if (!runner_.report.is_null()) bridge::testing::WriteText(at("--report"), runner_.report.dump());
+      return runner_.ends;
+    };
+    tools.replay_lab = [](const std::string&, const std::string&) -> CheckSubmission::Replay {
+      throw std::runtime_error("a track export is never replayed");
+    };
+    tools.choose_folder = [this](const std::string& out, const std::string&, bool) {
+      ++folders_chosen_;
+      fs::create_directories(out);
+      return out;
+    };
+    return tools;
+  }
+
+  CheckSubmission::Result Check(const CheckSubmission::Options& options) {
+    return CheckSubmission(options, Tools(), out_).Run();
+  }
+
+  static nlohmann::json Passed() {
+    return {{"ok", true}, {"simulator", "standin"}, {"verdict", "clean"}, {"debug_text", "No errors\n"},
+            {"warnings", nlohmann::json::array()}};
+  }
+
+  std::string out_dir_ = bridge::testing::NewFolder("check_submission") + "/check";
+  FakeRunner runner_;
+  int folders_chosen_ = 0;
+  std::ostringstream out_;
+};
+
+TEST_F(CheckSubmissionTest, ARunnerThatPassesGivesAnImportedRunComparedWithTheSimulatedOne) {
+  runner_.report = Passed();
+  const CheckSubmission::Result result = Check(Options());
+  EXPECT_EQ(result.outcome, Outcome::kPassed) << result.error;
+  EXPECT_THAT(runner_.argv, ::testing::ElementsAre("python-of-the-test", "run_submission.py", "--upload",
+                                                   testing::SimulatedExport() + "/upload", "--workdir",
+                                                   out_dir_ + "/lab_files", "--report",
+                                                   out_dir_ + "/check_report.json", "--standin"));
+  const nlohmann::json check = nlohmann::json::parse(files::ReadFileText(out_dir_ + "/check.json"));
+  EXPECT_EQ(check["verdict"], "clean");
+  EXPECT_EQ(check["complete"], true);
+  EXPECT_EQ(check["compared_with"], testing::SimulatedRun());
+  EXPECT_EQ(check["tracking_max_m"], 0.0);  // a perfect lab drives the recorded poses
+  EXPECT_FALSE(check.contains("controllers_on_lab_poses"));  // a track export
+  // The imported run is reported as every run is.
+  const nlohmann::json summary = nlohmann::json::parse(files::ReadFileText(out_dir_ + "/summary.json"));
+  EXPECT_EQ(summary["verdict"], "clean");
+  EXPECT_EQ(summary["goal"]["met"], true);
+  EXPECT_TRUE(fs::exists(out_dir_ + "/comparison.json"));
+  EXPECT_THAT(out_.str(), HasSubstr("DREAM's stand-in"));
+}
+
+TEST_F(CheckSubmissionTest, EachWayTheRunnerFailsHasItsOutcome) {
+  runner_.writes_result = false;
+  runner_.ends = {5, false};
+  EXPECT_EQ(Check(Options()).outcome, Outcome::kNoOfficialSimulator);
+  runner_.ends = {1, false};
+  const CheckSubmission::Result no_report = Check(Options());
+  EXPECT_EQ(no_report.outcome, Outcome::kRunnerFailed);
+  EXPECT_THAT(no_report.error, HasSubstr("exit 1"));
+  runner_.ends = {0, true};
+  EXPECT_EQ(Check(Options()).outcome, Outcome::kInterrupted);
+  runner_.ends = {0, false};
+  runner_.report = {{"ok", false}, {"error", "NameError: x"}};
+  const CheckSubmission::Result raised = Check(Options());
+  EXPECT_EQ(raised.outcome, Outcome::kScriptFailed);
+  EXPECT_THAT(raised.error, HasSubstr("NameError: x"));
+  runner_.report = {{"ok", false}, {"startup_timeout", true}, {"error", "slow"}};
+  EXPECT_EQ(Check(Options()).outcome, Outcome::kStartupTimedOut);
+  EXPECT_FALSE(fs::exists(out_dir_ + "/check.json"));
+}
+
+TEST_F(CheckSubmissionTest, DebugsVerdictIsReadAsAVerdict) {
+  runner_.report = Passed();
+  runner_.report["verdict"] = "rejected";
+  EXPECT_EQ(Check(Options()).outcome, Outcome::kRejected);
+  runner_.report["verdict"] = "warning";
+  EXPECT_EQ(Check(Options()).outcome, Outcome::kPassed);
+  EXPECT_THAT(out_.str(), HasSubstr("WARNING: the script ran, but with debug() warnings"));
+}
+
+TEST_F(CheckSubmissionTest, AWrongSimulatorFolderIsNamedBeforeAnyFolderIsMade) {
+  CheckSubmission::Options options = Options();
+  options.standin = false;
+  options.simulator_from_environment = bridge::testing::NewFolder("not_a_simulator");
+  try {
+    Check(options);
+    ADD_FAILURE() << "a folder without rps/robotarium.py passed for a simulator";
+  } catch (const std::runtime_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("$ROBOTARIUM_PYTHON_SIMULATOR " + options.simulator_from_environment +
+                                    ": has no rps/robotarium.py"));
+  }
+  options.out_dir = testing::SimulatedRun();
+  options.simulator_from_environment.clear();
+  EXPECT_THROW(Check(options), std::runtime_error);  // --out is the run it compares with
+  EXPECT_EQ(folders_chosen_, 0);
+}
+
+}  // namespace
+}  // namespace dream::workflows

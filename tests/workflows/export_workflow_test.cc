@@ -1,0 +1,59 @@
+// ExportWorkflow: where an export goes, and a refusal as a result.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <sstream>
+
+#include "../bridge/bridge_test_support.h"
+#include "dream/workflows/export_workflow.h"
+#include "workflow_test_support.h"
+
+namespace dream::workflows {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+TEST(ExportWorkflowTest, ARunIsExportedAndWhatToUploadPrinted) {
+  std::ostringstream out;
+  ExportWorkflow::Options options;
+  options.run_dir = testing::SimulatedRun();
+  options.out_dir = bridge::testing::NewFolder("export_workflow") + "/export";
+  const ExportWorkflow::Result result = ExportWorkflow(out).Export(options);
+  ASSERT_FALSE(result.refused) << result.refusal;
+  EXPECT_TRUE(fs::exists(options.out_dir + "/UPLOAD.txt"));
+  EXPECT_EQ(result.summary.out_dir, options.out_dir);
+  EXPECT_THAT(out.str(), HasSubstr("written: " + options.out_dir + "/UPLOAD.txt"));
+  EXPECT_THAT(out.str(), HasSubstr("Number of robots to declare"));
+}
+
+TEST(ExportWorkflowTest, WithoutOutAnExportGoesToExportsAndTheConfigsName) {
+  ExportWorkflow::Options options;
+  options.run_dir = testing::SimulatedRun();
+  EXPECT_EQ(ExportWorkflow::OutDir(options), "exports/go_to_goal");
+  options.out_dir = "elsewhere";
+  EXPECT_EQ(ExportWorkflow::OutDir(options), "elsewhere");
+}
+
+TEST(ExportWorkflowTest, ARunTheLabWouldRefuseIsARefusalAndNothingIsWritten) {
+  // The simulated run, with a summary.json that says its goal was missed.
+  const std::string run = bridge::testing::NewFolder("export_workflow_not_ready");
+  for (const char* file : {"config.yaml", "run.lcmlog"}) {
+    fs::copy_file(testing::SimulatedRun() + "/" + file, run + "/" + file);
+  }
+  bridge::testing::WriteText(run + "/summary.json", R"({"max_steps": 1500, "verdict": "not_ready", "verdict_reasons": [
+    {"rule": "goal", "verdict": "not_ready", "problem": "missed its goal", "find_out": "summary.json goal"}]})");
+  std::ostringstream out;
+  ExportWorkflow::Options options;
+  options.run_dir = run;
+  options.out_dir = bridge::testing::NewFolder("export_workflow_refused") + "/export";
+  const ExportWorkflow::Result result = ExportWorkflow(out).Export(options);
+  EXPECT_TRUE(result.refused);
+  EXPECT_THAT(result.refusal, HasSubstr("goal: missed its goal"));
+  EXPECT_FALSE(fs::exists(options.out_dir));
+  EXPECT_EQ(out.str(), "");
+}
+
+}  // namespace
+}  // namespace dream::workflows

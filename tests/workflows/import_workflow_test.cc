@@ -1,0 +1,114 @@
+// ImportWorkflow: a lab run is reported as a simulated run is, by the same
+// writer (session::RunReporter): summary.json with the experiment's metrics,
+// its goal and the goal's verdict, a picture with the goals drawn.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "../bridge/bridge_test_support.h"
+#include "dream/bridge/npy_file.h"
+#include "dream/bridge/submission_format.h"
+#include "dream/files/file_text.h"
+#include "dream/workflows/import_workflow.h"
+#include "workflow_test_support.h"
+
+namespace dream::workflows {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+/// Writes `rows` as a lab result and imports it into `<folder>/out`.
+ImportWorkflow::Result Import(const bridge::NpyArray& rows, const std::string& name, std::ostream& out,
+                              const std::optional<world::LabVerifierRules::Declaration>& declared = {}) {
+  const std::string dir = bridge::testing::NewFolder("workflow_import_" + name);
+  bridge::testing::WriteText(dir + "/" + bridge::SubmissionFiles::kResult, bridge::EncodeNpy(rows));
+  // A folder holding the result file stands for it.
+  return ImportWorkflow(out).Import({dir, testing::SimulatedExport(), dir + "/out", declared});
+}
+
+nlohmann::json ReadJson(const std::string& path) { return nlohmann::json::parse(files::ReadFileText(path)); }
+
+TEST(ImportWorkflowTest, ALabRunsSummaryCarriesEverythingARunsSummaryDoes) {
+  std::ostringstream out;
+  const ImportWorkflow::Result result =
+      Import(bridge::testing::PerfectLabResult(testing::SimulatedExport()), "perfect", out);
+  const nlohmann::json run = ReadJson(testing::SimulatedRun() + "/summary.json");
+  const nlohmann::json lab = ReadJson(result.summary_path);
+  for (const auto& [key, value] : run.items()) EXPECT_TRUE(lab.contains(key)) << "the import's summary lacks " << key;
+  // The goal a run is judged by, judged on the lab's poses (a perfect lab: as the run's).
+  ASSERT_TRUE(lab.contains("goal"));
+  EXPECT_EQ(lab["goal"], run["goal"]);
+  EXPECT_EQ(lab["goal"]["judged"], true);
+  EXPECT_EQ(lab["metrics"]["kind"], "go_to_goal");
+  EXPECT_EQ(lab["verdict"], "clean");
+  EXPECT_EQ(lab["config"], "config.yaml");
+  EXPECT_EQ(lab["lab"]["complete"], true);
+  EXPECT_EQ(lab["lab"]["declared_from"], "export");
+  EXPECT_EQ(result.verdict(), world::RunVerdict::kClean);
+  EXPECT_TRUE(result.report.summary_written);
+  EXPECT_FALSE(result.report.picture_failed);
+  EXPECT_EQ(result.picture_path, fs::path(result.summary_path).parent_path().string() + "/trajectories.png");
+  EXPECT_TRUE(fs::exists(result.picture_path));
+  EXPECT_THAT(out.str(), HasSubstr("imported "));
+  EXPECT_THAT(out.str(), HasSubstr("summary: " + result.summary_path));
+}
+
+TEST(ImportWorkflowTest, ALabRunThatMissedItsGoalIsNotReadyAsASimulatedOneWouldBe) {
+  // The lab's robots stayed where they started: the poses pass every check,
+  // but no robot reached its goal.
+  const bridge::NpyArray start = bridge::ReadNpyFile(testing::SimulatedExport() + "/upload/" +
+                                                     bridge::SubmissionFiles::kInitialPoses);
+  const int64_t n = start.shape[1];
+  const bridge::NpyArray rows = bridge::testing::PerfectLabResult(testing::SimulatedExport(), [&](int64_t, double* row) {
+    for (int64_t q = 0; q < 3 * n; ++q) row[bridge::ResultLayout::kFixedColumns + q] = start.values[static_cast<size_t>(q)];
+  });
+  std::ostringstream out;
+  const ImportWorkflow::Result result = Import(rows, "missed_goal", out);
+  EXPECT_EQ(result.imported.verdict(), world::RunVerdict::kClean);  // the lab part alone sees nothing wrong
+  EXPECT_EQ(result.verdict(), world::RunVerdict::kNotReady);
+  EXPECT_TRUE(result.report.judgement.Has("goal"));
+  const nlohmann::json summary = ReadJson(result.summary_path);
+  EXPECT_EQ(summary["verdict"], "not_ready");
+  EXPECT_EQ(summary["goal"]["met"], false);
+  EXPECT_EQ(summary["verdict_reasons"].back()["rule"], "goal");
+  ImportWorkflow(out).PrintVerdict(result);
+  EXPECT_THAT(out.str(), HasSubstr("verdict: not_ready (declared "));
+  EXPECT_THAT(out.str(), HasSubstr("  - goal: "));
+}
+
+TEST(ImportWorkflowTest, TheVerifiersRulesStayInTheVerdictBesideTheGoal) {
+  const bridge::ExportedSubmission exported = bridge::ExportedSubmission::Read(testing::SimulatedExport());
+  const std::optional<world::LabVerifierRules::Declaration> declared =
+      ImportWorkflow::Declared(exported, exported.params.num_robots + 1, 0.0);
+  ASSERT_TRUE(declared.has_value());
+  EXPECT_EQ(declared->num_robots, exported.params.num_robots + 1);
+  EXPECT_EQ(declared->duration_s, exported.UploadDeclaration().duration_s);  // not given: UPLOAD.txt's
+  std::ostringstream out;
+  const ImportWorkflow::Result result =
+      Import(bridge::testing::PerfectLabResult(testing::SimulatedExport()), "declared", out, declared);
+  EXPECT_EQ(result.verdict(), world::RunVerdict::kRejected);
+  const nlohmann::json summary = ReadJson(result.summary_path);
+  EXPECT_EQ(summary["verdict"], "rejected");
+  EXPECT_EQ(summary["verdict_reasons"][0]["rule"], "verifier_robot_count");
+  EXPECT_EQ(summary["lab"]["declared_from"], "options");
+  EXPECT_EQ(summary["lab"]["declared_robots"], exported.params.num_robots + 1);
+  EXPECT_FALSE(ImportWorkflow::Declared(exported, 0, 0.0).has_value());
+}
+
+TEST(ImportWorkflowTest, AFolderWithoutAResultIsRefusedByName) {
+  const std::string dir = bridge::testing::NewFolder("workflow_import_empty");
+  try {
+    ImportWorkflow::ResultFile(dir);
+    ADD_FAILURE() << "an empty folder passed for a result";
+  } catch (const std::runtime_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr(dir + ": holds neither dream_result.npy nor dream_result.mat"));
+  }
+  EXPECT_EQ(ImportWorkflow::ResultFile(dir + "/x.npy"), dir + "/x.npy");
+}
+
+}  // namespace
+}  // namespace dream::workflows
