@@ -67,20 +67,21 @@ class ChattyRobot final : public Robot {
 };
 
 // The in-tree way: one line adding the kind (controller_registry.cc adds the
-// built-in ones the same way). Once per process, whichever test runs first.
-void RegisterTestKinds() {
-  static const bool registered = [] {
-    agent_host::ControllerRegistry::Global().Add(agent_host::ControllerKind::OfRobot<CruiseRobot>("test_cruise", {"speeds_mps"}), "this test");
-    agent_host::ControllerRegistry::Global().Add(agent_host::ControllerKind::OfRobot<ParkedRobot>("test_parked", {}), "this test");
-    return true;
+// built-in ones the same way), here to a registry of this test's own.
+std::shared_ptr<const agent_host::ControllerRegistry> TestKinds() {
+  static const std::shared_ptr<const agent_host::ControllerRegistry> kinds = [] {
+    auto registry = std::make_shared<agent_host::ControllerRegistry>();
+    registry->AddAll(agent_host::ControllerRegistry::BuiltIns(), "built in");
+    registry->Add(agent_host::ControllerKind::OfRobot<CruiseRobot>("test_cruise", {"speeds_mps"}), "this test");
+    registry->Add(agent_host::ControllerKind::OfRobot<ParkedRobot>("test_parked", {}), "this test");
+    return registry;
   }();
-  (void)registered;
+  return kinds;
 }
 
 /// A two-robot run config whose `controller:` section is `controller` (YAML
 /// flow map text), on line 5 of test.yaml.
 run_config::RunConfig Config(const std::string& controller, int steps = 60) {
-  RegisterTestKinds();
   return run_config::LoadRunConfig(config::ConfigNode::LoadString(
       "name: t\nrobots: 2\nsteps: " + std::to_string(steps) +
           "\ninitial_poses: [[-1.0, -0.4, 0.0], [-1.0, 0.4, 0.0]]\ncontroller: " + controller + "\n",
@@ -93,14 +94,14 @@ const CruiseRobot& CruiseOf(const RobotAgent& agent) { return dynamic_cast<const
 
 TEST(RobotClassKindTest, ARobotClassRegisteredWithOneLineRunsWithItsOwnKeys) {
   const run_config::RunConfig config = Config("{kind: test_cruise, speeds_mps: [0.1, 0.05]}");
-  const agent_host::ControllerFactory factory(config);
+  const agent_host::ControllerFactory factory(config, TestKinds());
   EXPECT_EQ(factory.kind(), "test_cruise");
   EXPECT_EQ(CruiseOf(*factory.Make(0)).speed_mps(), 0.1);
   EXPECT_EQ(CruiseOf(*factory.Make(1)).speed_mps(), 0.05);
   // No metrics of its own: only the safety metrics every kind gets.
   EXPECT_EQ(factory.MakeMetrics().size(), 1u);
 
-  const scenario::ScenarioResult run = scenario::RunScenario(config, "robot_class_kind");
+  const scenario::ScenarioResult run = scenario::RunScenario(config, "robot_class_kind", TestKinds());
   EXPECT_EQ(run.outcome.steps, config.sim.max_steps);
   EXPECT_GT(scenario::Value(run, "min_pairwise_distance_m"), 0.7);
   const double step_s = config.world.time_step_s;
@@ -121,47 +122,47 @@ TEST(RobotClassKindTest, TheCommonPartsComeFromTheConfig) {
   const run_config::RunConfig config = Config(
       "{kind: test_cruise, speeds_mps: [0.1, 0.1], robot: {vel_gain: 0.5, start_delay_steps: [0, 30]}, "
       "sensors: [{kind: odometry}, {kind: movement, range_m: 2.0}], radio: {kind: range, range_m: 1.0}}");
-  const agent_host::ControllerFactory factory(config);
+  const agent_host::ControllerFactory factory(config, TestKinds());
   EXPECT_EQ(CruiseOf(*factory.Make(0)).robot_params().vel_gain, 0.5);
-  const scenario::ScenarioResult run = scenario::RunScenario(config, "robot_class_kind_parts");
+  const scenario::ScenarioResult run = scenario::RunScenario(config, "robot_class_kind_parts", TestKinds());
   const double early_m = run.final_poses[0].x_m - config.initial_poses[0].x_m;
   const double late_m = run.final_poses[1].x_m - config.initial_poses[1].x_m;
   // Robot 1's timer starts 30 steps later: it drove 30 steps' worth less.
   EXPECT_NEAR(early_m - late_m, 0.1 * config.world.time_step_s * 30.0, 0.1 * config.world.time_step_s);
 
   // A part's own mistakes are reported as for the shipped kinds.
-  const std::string error = FactoryErrorOf(Config("{kind: test_cruise, speeds_mps: [0.1, 0.1], radio: {kind: carrier}}"));
+  const std::string error = FactoryErrorOf(TestKinds(), Config("{kind: test_cruise, speeds_mps: [0.1, 0.1], radio: {kind: carrier}}"));
   EXPECT_NE(error.find("controller.radio.kind: unknown radio kind 'carrier'"), std::string::npos) << error;
 }
 
 TEST(RobotClassKindTest, AnUnknownKeyIsRefusedNamingFileLineAndKey) {
-  const std::string error = FactoryErrorOf(Config("{kind: test_cruise, speeds_mps: [0.1, 0.1], speed_mps: 0.1}"));
+  const std::string error = FactoryErrorOf(TestKinds(), Config("{kind: test_cruise, speeds_mps: [0.1, 0.1], speed_mps: 0.1}"));
   EXPECT_EQ(error,
             "test.yaml:5: controller.speed_mps: unknown key for kind test_cruise "
             "(did you mean 'speeds_mps'?); allowed keys here: kind, robot, "
             "sensors, radio, speeds_mps");
   // A class that reads no keys takes none.
-  const std::string parked = FactoryErrorOf(Config("{kind: test_parked, speeds_mps: [0.1, 0.1]}"));
+  const std::string parked = FactoryErrorOf(TestKinds(), Config("{kind: test_parked, speeds_mps: [0.1, 0.1]}"));
   EXPECT_EQ(parked,
             "test.yaml:5: controller.speeds_mps: unknown key for kind test_parked; allowed keys here: kind, robot, "
             "sensors, radio");
-  EXPECT_EQ(FactoryErrorOf(Config("{kind: test_parked}")), "");
+  EXPECT_EQ(FactoryErrorOf(TestKinds(), Config("{kind: test_parked}")), "");
 }
 
 TEST(RobotClassKindTest, TheRobotsBadValuesStopTheFactoryNotALaterAgent) {
   // Robot 1's entry is wrong: the factory refuses the config before any Make().
-  const std::string negative = FactoryErrorOf(Config("{kind: test_cruise,\n  speeds_mps: [0.1,\n    -1]}"));
+  const std::string negative = FactoryErrorOf(TestKinds(), Config("{kind: test_cruise,\n  speeds_mps: [0.1,\n    -1]}"));
   EXPECT_EQ(negative.rfind("test.yaml:7: controller.speeds_mps[1]: must be >= 0, got -1", 0), 0u) << negative;
-  const std::string short_list = FactoryErrorOf(Config("{kind: test_cruise, speeds_mps: [0.1]}"));
+  const std::string short_list = FactoryErrorOf(TestKinds(), Config("{kind: test_cruise, speeds_mps: [0.1]}"));
   EXPECT_EQ(short_list, "test.yaml:5: controller.speeds_mps: expected one speed per robot, robot 1 has none");
-  const std::string missing = FactoryErrorOf(Config("{kind: test_cruise}"));
+  const std::string missing = FactoryErrorOf(TestKinds(), Config("{kind: test_cruise}"));
   EXPECT_EQ(missing, "test.yaml:5: controller.speeds_mps: missing; this key is required");
 }
 
 TEST(RobotClassKindTest, AMissingOrUnknownKindIsAClearError) {
-  const std::string missing = FactoryErrorOf(Config("{speeds_mps: [0.1, 0.1]}"));
+  const std::string missing = FactoryErrorOf(TestKinds(), Config("{speeds_mps: [0.1, 0.1]}"));
   EXPECT_EQ(missing, "test.yaml:5: controller.kind: missing; this key is required");
-  const std::string unknown = FactoryErrorOf(Config("{kind: test_cruse, speeds_mps: [0.1, 0.1]}"));
+  const std::string unknown = FactoryErrorOf(TestKinds(), Config("{kind: test_cruse, speeds_mps: [0.1, 0.1]}"));
   EXPECT_EQ(unknown.rfind("test.yaml:5: controller.kind: unknown controller kind 'test_cruse' "
                           "(did you mean 'test_cruise'?); known kinds: "
                           "go_to_goal",

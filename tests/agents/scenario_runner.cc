@@ -17,10 +17,12 @@
 
 namespace dream::agents::scenario {
 
-ScenarioResult RunScenario(run_config::RunConfig config, const std::string& log_name) {
+ScenarioResult RunScenario(run_config::RunConfig config, const std::string& log_name,
+                           std::shared_ptr<const agent_host::ControllerRegistry> registry) {
   config.sim.progress_interval_s = 0.0;
   lcm::LcmBus bus("memq://");
-  const agent_host::ControllerFactory factory(config.controller, config.num_robots, config.seed);
+  const agent_host::ControllerFactory factory =
+      registry ? agent_host::ControllerFactory(config, registry) : agent_host::ControllerFactory(config);
   std::vector<std::unique_ptr<RobotAgent>> robots;
   for (int id = 0; id < config.num_robots; ++id) robots.push_back(factory.Make(id));
   agent_host::AgentHost host(bus, std::move(robots), 1);

@@ -1,8 +1,10 @@
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "dream/agent_host/controller_registry.h"
 #include "dream/agents/framework/metrics_report.h"
 #include "dream/run_config/run_config.h"
 #include "dream/world/pose2.h"
@@ -23,7 +25,9 @@ struct ScenarioResult {
 /// Runs `config` as `dream run` does (every agent and the simulator on one
 /// memq bus, the log recorded), then computes the experiment's metrics from
 /// the log, as the summary does. `log_name` names the temporary log.
-ScenarioResult RunScenario(run_config::RunConfig config, const std::string& log_name);
+/// `registry`: the kinds to build from (none: the built-in ones and the config's plugins').
+ScenarioResult RunScenario(run_config::RunConfig config, const std::string& log_name,
+                           std::shared_ptr<const agent_host::ControllerRegistry> registry = nullptr);
 
 /// config/<name>.yaml in the source tree.
 std::string ConfigPath(const std::string& name);

@@ -41,7 +41,8 @@ TEST(ControllerPluginTest, AGoodPluginAddsItsKindOnceHoweverOftenItIsNamed) {
   const run_config::RunConfig config = Config("[" + Quoted(TEST_PLUGIN_GOOD_PATH) + ", " + Quoted(TEST_PLUGIN_GOOD_PATH) + "]");
   const agent_host::ControllerFactory factory(config);
   EXPECT_EQ(factory.kind(), "test_still");
-  EXPECT_TRUE(Knows("test_still"));
+  // The kind is the factory's: loading the plugin changed no registry others share.
+  EXPECT_FALSE(Knows("test_still"));
   EXPECT_NE(factory.Make(0), nullptr);
   EXPECT_EQ(factory.MakeMetrics().size(), 2u);  // the plugin's and the safety metrics
   // Another factory (dream run builds several) loads nothing twice.
@@ -62,7 +63,7 @@ TEST(ControllerPluginTest, ARobotClassPluginAddsAKindWithoutMetricsOrKeysOfItsOw
   EXPECT_FALSE(Knows("test_parked"));
   const run_config::RunConfig config = Config("[" + Quoted(TEST_PLUGIN_ROBOT_PATH) + "]", "test_parked");
   const agent_host::ControllerFactory factory(config);
-  EXPECT_TRUE(Knows("test_parked"));
+  EXPECT_FALSE(Knows("test_parked"));  // the factory's kind, not a global one
   ASSERT_NE(factory.Make(0), nullptr);
   EXPECT_EQ(factory.Make(0)->robot().id(), 0);
   EXPECT_EQ(factory.MakeMetrics().size(), 1u);  // the safety metrics only
@@ -163,9 +164,9 @@ TEST(ControllerKindTest, OfReadsTheBuildersStaticMembers) {
   EXPECT_EQ(kind.default_parts(3).robot.vel_gain, 0.5);
   EXPECT_NE(kind.make_builder(config::ConfigNode(), 3), nullptr);
   // Without them: no graph requirement (the built-in go_to_goal).
-  ASSERT_NE(agent_host::ControllerRegistry::Global().Find("go_to_goal"), nullptr);
-  EXPECT_FALSE(agent_host::ControllerRegistry::Global().Find("go_to_goal")->graph_must_connect);
-  EXPECT_TRUE(agent_host::ControllerRegistry::Global().Find("line_deployment")->graph_must_connect);
+  ASSERT_NE(agent_host::ControllerRegistry::BuiltIns().Find("go_to_goal"), nullptr);
+  EXPECT_FALSE(agent_host::ControllerRegistry::BuiltIns().Find("go_to_goal")->graph_must_connect);
+  EXPECT_TRUE(agent_host::ControllerRegistry::BuiltIns().Find("line_deployment")->graph_must_connect);
 }
 
 TEST(ControllerRegistryTest, RefusesNamelessKindsAndDuplicates) {

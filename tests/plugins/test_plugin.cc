@@ -4,7 +4,7 @@
 //   clash:    adds `test_first`, then the built-in `go_to_goal`: fails half way
 //   old_api:  entry points of plugin API 0
 //   no_entry: no entry points at all
-//   foreign:  good, but with its own ControllerRegistry::Global(), as if it
+//   foreign:  good, but with its own ControllerRegistry::BuiltIns(), as if it
 //             linked another copy of the dream libraries
 //   robot:    adds `test_parked`, a Robot subclass alone, with no keys
 //             (DREAM_REGISTER_ROBOT)
@@ -54,8 +54,8 @@ class StillBuilder final : public dream::agent_host::ExperimentBuilder {
 DREAM_REGISTER_CONTROLLER(StillBuilder)
 #elif defined(TEST_PLUGIN_FOREIGN)
 namespace dream::agent_host {
-__attribute__((visibility("default"))) ControllerRegistry& ControllerRegistry::Global() {
-  static ControllerRegistry registry;
+__attribute__((visibility("default"))) const ControllerRegistry& ControllerRegistry::BuiltIns() {
+  static const ControllerRegistry registry;
   return registry;
 }
 }  // namespace dream::agent_host

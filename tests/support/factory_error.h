@@ -1,8 +1,11 @@
 #pragma once
 
+#include <memory>
 #include <string>
+#include <utility>
 
 #include "dream/agent_host/controller_factory.h"
+#include "dream/agent_host/controller_registry.h"
 #include "dream/config/config_error.h"
 #include "dream/run_config/run_config.h"
 
@@ -13,6 +16,17 @@ namespace dream::agents::testing {
 inline std::string FactoryErrorOf(const run_config::RunConfig& config) {
   try {
     agent_host::ControllerFactory factory(config);
+  } catch (const config::ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+/// The same with the kinds of `registry`.
+inline std::string FactoryErrorOf(std::shared_ptr<const agent_host::ControllerRegistry> registry,
+                                  const run_config::RunConfig& config) {
+  try {
+    agent_host::ControllerFactory factory(config, std::move(registry));
   } catch (const config::ConfigError& e) {
     return e.what();
   }

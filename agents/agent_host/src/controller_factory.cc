@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "dream/agent_host/controller_plugin_loader.h"
 #include "dream/agent_host/controller_registry.h"
 #include "dream/agents/framework/noise_source.h"
 #include "dream/agents/framework/safety_metrics.h"
@@ -12,27 +11,35 @@
 namespace dream::agent_host {
 namespace {
 
-// The controller section of `config`, once the plugins it names are loaded.
-const config::ConfigNode& ControllerSectionWithPlugins(const config::ControllerConfig& config) {
-  ControllerPluginLoader::LoadAll(config);
-  return config.controller;
+// The built-in kinds, shared but not owned (they are never destroyed).
+std::shared_ptr<const ControllerRegistry> BuiltInKinds() {
+  return std::shared_ptr<const ControllerRegistry>(&ControllerRegistry::BuiltIns(), [](const ControllerRegistry*) {});
 }
 
 }  // namespace
 
-std::vector<std::string> ControllerFactory::Kinds() { return ControllerRegistry::Global().Names(); }
+std::vector<std::string> ControllerFactory::Kinds() { return ControllerRegistry::BuiltIns().Names(); }
 
 ControllerFactory::ControllerFactory(const config::ControllerConfig& config)
-    : ControllerFactory(ControllerSectionWithPlugins(config), config.num_robots, config.seed) {}
+    : ControllerFactory(config, ControllerRegistry::ForConfig(config)) {}
+
+ControllerFactory::ControllerFactory(const config::ControllerConfig& config,
+                                     std::shared_ptr<const ControllerRegistry> registry)
+    : ControllerFactory(config.controller, config.num_robots, config.seed, std::move(registry)) {}
 
 ControllerFactory::ControllerFactory(const config::ConfigNode& section, int num_robots, uint64_t run_seed)
-    : num_robots_(num_robots), run_seed_(run_seed) {
+    : ControllerFactory(section, num_robots, run_seed, BuiltInKinds()) {}
+
+ControllerFactory::ControllerFactory(const config::ConfigNode& section, int num_robots, uint64_t run_seed,
+                                     std::shared_ptr<const ControllerRegistry> registry)
+    : registry_(std::move(registry)), num_robots_(num_robots), run_seed_(run_seed) {
   kind_ = section.Required("kind").AsString();
-  const ControllerKind* entry = ControllerRegistry::Global().Find(kind_);
+  const ControllerKind* entry = registry_->Find(kind_);
   if (entry == nullptr) {
+    const std::vector<std::string> kinds = registry_->Names();
     std::string known;
-    for (const std::string& kind : Kinds()) known += (known.empty() ? "" : ", ") + kind;
-    section.Required("kind").Fail("unknown controller kind '" + kind_ + "'" + config::DidYouMean(kind_, Kinds()) +
+    for (const std::string& kind : kinds) known += (known.empty() ? "" : ", ") + kind;
+    section.Required("kind").Fail("unknown controller kind '" + kind_ + "'" + config::DidYouMean(kind_, kinds) +
                                   "; known kinds: " + known + " (a plugin's kind needs the plugin under `plugins:`)");
   }
   std::vector<std::string> keys = {"kind", "robot", "sensors", "radio"};

@@ -18,16 +18,9 @@ std::mutex& LoaderMutex() {
   return mutex;
 }
 
-// dlopen handles whose kinds are registered (dlopen returns the same handle
-// for the same file, whatever path names it).
-std::set<void*>& Registered() {
-  static std::set<void*> handles;
-  return handles;
-}
-
 // A function of the dream libraries, by its linker name: the plugin must
 // reach the very copy this process runs (see the check in Load).
-constexpr const char* kRegistrySymbol = "_ZN5dream10agent_host18ControllerRegistry6GlobalEv";
+constexpr const char* kRegistrySymbol = "_ZN5dream10agent_host18ControllerRegistry8BuiltInsEv";
 
 std::string LastDlError() {
   const char* error = dlerror();
@@ -36,11 +29,32 @@ std::string LastDlError() {
 
 }  // namespace
 
-void ControllerPluginLoader::LoadAll(const config::ControllerConfig& config) {
-  for (size_t i = 0; i < config.plugins.size(); ++i) Load(config.plugins[i], config.plugin_nodes.at(i));
+void ControllerPluginLoader::AddKinds(const config::ControllerConfig& config, ControllerRegistry* registry) {
+  // dlopen returns the same handle for the same file, whatever path names it.
+  std::set<void*> added;
+  for (size_t i = 0; i < config.plugins.size(); ++i) {
+    const std::string& path = config.plugins[i];
+    const config::ConfigNode& entry = config.plugin_nodes.at(i);
+    void* handle = nullptr;
+    const Registration register_controllers = Load(path, entry, &handle);
+    if (!added.insert(handle).second) continue;
+    // Register into a scratch registry first, so a plugin that fails half way
+    // adds nothing.
+    ControllerRegistry kinds;
+    try {
+      register_controllers(&kinds);
+      if (kinds.Names().empty()) entry.Fail(path + ": it registers no controller kind");
+      registry->AddAll(kinds, path);
+    } catch (const config::ConfigError&) {
+      throw;
+    } catch (const std::exception& e) {
+      entry.Fail(path + ": " + e.what());
+    }
+  }
 }
 
-void ControllerPluginLoader::Load(const std::string& path, const config::ConfigNode& entry) {
+ControllerPluginLoader::Registration ControllerPluginLoader::Load(const std::string& path,
+                                                                  const config::ConfigNode& entry, void** handle_out) {
   namespace fs = std::filesystem;
   const std::lock_guard<std::mutex> lock(LoaderMutex());
   auto fail = [&](const std::string& reason) { entry.Fail(path + ": " + reason); };
@@ -54,7 +68,7 @@ void ControllerPluginLoader::Load(const std::string& path, const config::ConfigN
   // here, not as a crash in the middle of a run.
   void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (handle == nullptr) fail("cannot load it: " + LastDlError());
-  if (Registered().count(handle) > 0) return;
+  *handle_out = handle;
 
   dlerror();
   auto api_version = reinterpret_cast<PluginApiVersionFunction>(dlsym(handle, kPluginApiVersionSymbol));
@@ -70,7 +84,7 @@ void ControllerPluginLoader::Load(const std::string& path, const config::ConfigN
   // soname, another prefix's RPATH) would bring a second copy of them:
   // classes that look alike but are not the same. Refuse it.
   void* plugins_registry = dlsym(handle, kRegistrySymbol);
-  if (plugins_registry != nullptr && plugins_registry != reinterpret_cast<void*>(&ControllerRegistry::Global)) {
+  if (plugins_registry != nullptr && plugins_registry != reinterpret_cast<void*>(&ControllerRegistry::BuiltIns)) {
     Dl_info origin{};
     const bool known = dladdr(plugins_registry, &origin) != 0 && origin.dli_fname != nullptr;
     fail(std::string("it uses another copy of the dream libraries (") + (known ? origin.dli_fname : "unknown") +
@@ -81,19 +95,7 @@ void ControllerPluginLoader::Load(const std::string& path, const config::ConfigN
     fail("built for dream plugin API " + std::to_string(version) + ", this dream has API " +
          std::to_string(DREAM_PLUGIN_API_VERSION) + "; rebuild it against this dream's installation");
   }
-  // Register into a scratch registry first, so a plugin that fails half way
-  // adds nothing.
-  ControllerRegistry kinds;
-  try {
-    register_controllers(&kinds);
-    if (kinds.Names().empty()) fail("it registers no controller kind");
-    ControllerRegistry::Global().AddAll(kinds, path);
-  } catch (const config::ConfigError&) {
-    throw;
-  } catch (const std::exception& e) {
-    fail(e.what());
-  }
-  Registered().insert(handle);
+  return register_controllers;
 }
 
 }  // namespace dream::agent_host

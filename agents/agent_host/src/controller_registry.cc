@@ -4,6 +4,7 @@
 
 #include "dream/agent_host/affine_formation_builder.h"
 #include "dream/agent_host/calibration_drive_builder.h"
+#include "dream/agent_host/controller_plugin_loader.h"
 #include "dream/agent_host/go_to_goal_builder.h"
 #include "dream/agent_host/hrvo_circle_builder.h"
 #include "dream/agent_host/line_deployment_builder.h"
@@ -29,10 +30,19 @@ void AddBuiltIns(ControllerRegistry& registry) {
 
 }  // namespace
 
-ControllerRegistry& ControllerRegistry::Global() {
-  static ControllerRegistry registry;
-  static const bool built_ins_added = (AddBuiltIns(registry), true);
-  (void)built_ins_added;
+const ControllerRegistry& ControllerRegistry::BuiltIns() {
+  static const ControllerRegistry& registry = *[] {
+    auto* built_ins = new ControllerRegistry();  // never destroyed: kinds outlive every static user
+    AddBuiltIns(*built_ins);
+    return built_ins;
+  }();
+  return registry;
+}
+
+std::shared_ptr<const ControllerRegistry> ControllerRegistry::ForConfig(const config::ControllerConfig& config) {
+  auto registry = std::make_shared<ControllerRegistry>();
+  registry->AddAll(BuiltIns(), kBuiltIn);
+  ControllerPluginLoader::AddKinds(config, registry.get());
   return registry;
 }
 

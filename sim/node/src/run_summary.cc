@@ -32,6 +32,69 @@ std::string RunSummaryJson(const run_config::RunConfig& config, const RunOutcome
   return files::JsonText(RunSummary(config, outcome, world, log_file_name, judgement)) + "\n";
 }
 
+namespace {
+
+/// What the bus brought that the run did not use: rejected, conflicting, refused and bad messages.
+void AddMessageAccounting(const RunOutcome& outcome, nlohmann::ordered_json* json) {
+  (*json)["rejected_commands"] = outcome.rejected_commands;
+  (*json)["command_conflicts"] = outcome.command_conflicts;
+  nlohmann::json other_worlds = nlohmann::json::array();
+  for (int64_t id : outcome.other_worlds) other_worlds.push_back(lcm::RunIdText(id));
+  (*json)["other_worlds"] = other_worlds;
+  (*json)["robots_ever_lost"] = outcome.robots_ever_lost;
+  nlohmann::json faults = nlohmann::json::object();
+  for (const auto& [id, detail] : outcome.robot_faults) faults[std::to_string(id)] = detail;
+  (*json)["robot_faults"] = faults;
+  (*json)["robots_done"] = outcome.robots_done;
+  (*json)["bad_messages"] = outcome.bad_messages;
+  (*json)["bad_message_senders"] = outcome.bad_message_senders;
+  nlohmann::json refused = nlohmann::json::object();
+  for (const auto& [channel, seen] : outcome.refused) {
+    refused[channel] = {{"count", seen.count}, {"first_step", seen.first_step}};
+  }
+  (*json)["refused_messages"] = refused;
+  // Only the file's name: it lies beside the log, as `log` does.
+  (*json)["refused_log"] = std::filesystem::path(outcome.refused_log).filename().string();
+  (*json)["refused_log_events"] = outcome.refused_log_events;
+  (*json)["bad_message_first"] = outcome.bad_message_first;
+  (*json)["handler_failures"] = outcome.handler_failures;
+  (*json)["dropped_messages"] = outcome.dropped_messages;
+}
+
+/// world.realism: its models, and what the tracker model did to the agents' view.
+void AddRealism(const run_config::RunConfig& config, const world::RealisticWorld& realistic,
+                nlohmann::ordered_json* json) {
+  nlohmann::ordered_json realism;
+  for (const world::RealismParams::Field& field : world::RealismParams::Fields()) {
+    if (field.number != nullptr) {
+      realism[field.key] = config.realism.*field.number;
+    } else {
+      realism[field.key] = config.realism.*field.steps;
+    }
+  }
+  if (!config.realism_file.empty()) realism["file"] = config.realism_file;
+  realism["poses_channel_seen_by_agents"] = TruePoseRecording::kMeasuredPosesChannel;
+  (*json)["realism"] = realism;
+  nlohmann::json lost = nlohmann::json::array();
+  for (const world::RealisticWorld::TrackerLoss& loss : realistic.tracker_losses()) {
+    lost.push_back({{"robot", loss.robot_id}, {"step", loss.step}});
+  }
+  nlohmann::json robots = nlohmann::json::array();
+  for (const world::RobotTraits& traits : realistic.robot_traits()) {
+    robots.push_back({{"linear_gain", traits.linear_gain},
+                      {"angular_gain", traits.angular_gain},
+                      {"heading_drift_radps", traits.heading_drift_radps}});
+  }
+  (*json)["realism_stats"] = {{"dropped_measurements", realistic.dropped_measurements()},
+                              {"robots_lost_to_tracker", lost},
+                              {"late_steps", realistic.late_steps()},
+                              {"loop_stalls", realistic.stalls()},
+                              {"late_time_s", realistic.late_time_s()},
+                              {"robot_traits", robots}};
+}
+
+}  // namespace
+
 nlohmann::ordered_json RunSummary(const run_config::RunConfig& config, const RunOutcome& outcome, const world::World& world,
                                   const std::string& log_file_name, const world::RunJudgement& judgement) {
   nlohmann::ordered_json json;
@@ -55,29 +118,7 @@ nlohmann::ordered_json RunSummary(const run_config::RunConfig& config, const Run
                         {"obstacle_collisions", counts.obstacle_collisions}};
   SetSummaryVerdict(&json, judgement);
   json["run_id"] = lcm::RunIdText(outcome.run_id);
-  json["rejected_commands"] = outcome.rejected_commands;
-  json["command_conflicts"] = outcome.command_conflicts;
-  nlohmann::json other_worlds = nlohmann::json::array();
-  for (int64_t id : outcome.other_worlds) other_worlds.push_back(lcm::RunIdText(id));
-  json["other_worlds"] = other_worlds;
-  json["robots_ever_lost"] = outcome.robots_ever_lost;
-  nlohmann::json faults = nlohmann::json::object();
-  for (const auto& [id, detail] : outcome.robot_faults) faults[std::to_string(id)] = detail;
-  json["robot_faults"] = faults;
-  json["robots_done"] = outcome.robots_done;
-  json["bad_messages"] = outcome.bad_messages;
-  json["bad_message_senders"] = outcome.bad_message_senders;
-  nlohmann::json refused = nlohmann::json::object();
-  for (const auto& [channel, seen] : outcome.refused) {
-    refused[channel] = {{"count", seen.count}, {"first_step", seen.first_step}};
-  }
-  json["refused_messages"] = refused;
-  // Only the file's name: it lies beside the log, as `log` does.
-  json["refused_log"] = std::filesystem::path(outcome.refused_log).filename().string();
-  json["refused_log_events"] = outcome.refused_log_events;
-  json["bad_message_first"] = outcome.bad_message_first;
-  json["handler_failures"] = outcome.handler_failures;
-  json["dropped_messages"] = outcome.dropped_messages;
+  AddMessageAccounting(outcome, &json);
   json["log"] = log_file_name;
   json["log_events"] = outcome.log_events;
   // Where the robots really ended: a realistic world's poses() are what the
@@ -88,36 +129,7 @@ nlohmann::ordered_json RunSummary(const run_config::RunConfig& config, const Run
     poses.push_back({pose.x_m, pose.y_m, pose.theta_rad});
   }
   json["final_poses"] = poses;
-  // world.realism: its models, and what the tracker model did to the agents' view.
-  if (realistic != nullptr) {
-    nlohmann::ordered_json realism;
-    for (const world::RealismParams::Field& field : world::RealismParams::Fields()) {
-      if (field.number != nullptr) {
-        realism[field.key] = config.realism.*field.number;
-      } else {
-        realism[field.key] = config.realism.*field.steps;
-      }
-    }
-    if (!config.realism_file.empty()) realism["file"] = config.realism_file;
-    realism["poses_channel_seen_by_agents"] = TruePoseRecording::kMeasuredPosesChannel;
-    json["realism"] = realism;
-    nlohmann::json lost = nlohmann::json::array();
-    for (const world::RealisticWorld::TrackerLoss& loss : realistic->tracker_losses()) {
-      lost.push_back({{"robot", loss.robot_id}, {"step", loss.step}});
-    }
-    nlohmann::json robots = nlohmann::json::array();
-    for (const world::RobotTraits& traits : realistic->robot_traits()) {
-      robots.push_back({{"linear_gain", traits.linear_gain},
-                        {"angular_gain", traits.angular_gain},
-                        {"heading_drift_radps", traits.heading_drift_radps}});
-    }
-    json["realism_stats"] = {{"dropped_measurements", realistic->dropped_measurements()},
-                             {"robots_lost_to_tracker", lost},
-                             {"late_steps", realistic->late_steps()},
-                             {"loop_stalls", realistic->stalls()},
-                             {"late_time_s", realistic->late_time_s()},
-                             {"robot_traits", robots}};
-  }
+  if (realistic != nullptr) AddRealism(config, *realistic, &json);
   return json;
 }
 

@@ -12,23 +12,29 @@
 
 namespace dream::agent_host {
 
+class ControllerRegistry;
+
 /// Builds every robot's agent, and the experiment's metrics, from the
 /// `controller:` section of a run config. `kind` picks the experiment from
-/// ControllerRegistry::Global(); the common keys (robot, sensors, radio) pick
+/// the factory's ControllerRegistry; the common keys (robot, sensors, radio) pick
 /// the parts. To add an experiment, register its kind: a Robot subclass
 /// alone (ControllerKind::OfRobot) or an ExperimentBuilder with metrics of
 /// its own (ControllerKind::Of), built in (controller_registry.cc) or from a
 /// plugin that the config names (see docs/writing-a-controller.md).
 class ControllerFactory {
  public:
-  /// Kinds this factory knows, for error messages and --help.
+  /// The built-in kinds, for error messages and --help.
   static std::vector<std::string> Kinds();
 
-  /// The factory of a run config's controller part (a RunConfig is one): loads the plugins it names
-  /// (ControllerPluginLoader), then reads its `controller:` section.
+  /// The factory of a run config's controller part (a RunConfig is one), with
+  /// the kinds of ControllerRegistry::ForConfig(config): the built-in ones and
+  /// those of the plugins it names. Then reads its `controller:` section.
   /// @throws config::ConfigError naming the key, and the plugin's path.
   explicit ControllerFactory(const config::ControllerConfig& config);
+  /// The same with the kinds of `registry` (a test's own kinds, say).
+  ControllerFactory(const config::ControllerConfig& config, std::shared_ptr<const ControllerRegistry> registry);
 
+  /// A factory of the built-in kinds.
   /// @param run_seed seeds every sensor's noise and radio loss.
   /// @throws config::ConfigError naming the key and value when the section is
   ///         invalid or names an unknown kind.
@@ -50,6 +56,10 @@ class ControllerFactory {
   const AgentPartsConfig& parts() const { return parts_; }
 
  private:
+  ControllerFactory(const config::ConfigNode& section, int num_robots, uint64_t run_seed,
+                    std::shared_ptr<const ControllerRegistry> registry);
+
+  std::shared_ptr<const ControllerRegistry> registry_;  // holds the kind this factory builds
   std::string kind_;
   int num_robots_;
   uint64_t run_seed_;

@@ -1,22 +1,29 @@
 #pragma once
 
 #include <deque>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
 
 #include "dream/agent_host/controller_kind.h"
+#include "dream/config/controller_config.h"
 
 namespace dream::agent_host {
 
 /// The experiment kinds a ControllerFactory can build: the built-in ones and
 /// those that controller plugins add (docs/writing-a-controller.md). Safe to
-/// use from several threads.
+/// use from several threads. No registry is global and changed behind a
+/// caller's back: a run's registry is made for its config (ForConfig), and a
+/// factory keeps the one it was given.
 class ControllerRegistry {
  public:
-  /// The registry the tools use: the built-in kinds, then plugins' kinds in
-  /// the order they were loaded.
-  static ControllerRegistry& Global();
+  /// The built-in kinds, made once and never changed after.
+  static const ControllerRegistry& BuiltIns();
+  /// A new registry: the built-in kinds, then the kinds of the plugins
+  /// `config` names, loaded in order (ControllerPluginLoader).
+  /// @throws config::ConfigError "FILE:LINE: plugins[i]: PATH: reason".
+  static std::shared_ptr<const ControllerRegistry> ForConfig(const config::ControllerConfig& config);
 
   /// An empty registry (a plugin registers into one first, so a plugin that
   /// fails half way adds nothing).
