@@ -4,7 +4,7 @@
 #include "dream/config/config_error.h"
 #include "dream/config/run_config.h"
 #include "overridden_config.h"
-#include "sweep_plan.h"
+#include "dream/workflows/sweep_plan.h"
 
 namespace dream::cli {
 
@@ -16,7 +16,7 @@ config::RunConfig OverriddenConfig::Load() const {
 std::string OverriddenConfig::FolderText(const config::RunConfig& config) const {
   if (overrides_.empty()) return config::RunFolderConfigText(config, text_);
   return config::RunFolderConfigText(
-      config, SweepPlan::EmitConfig(root_, path_ + " with " + OptionsText() +
+      config, workflows::SweepPlan::EmitConfig(root_, path_ + " with " + OptionsText() +
                                                " (the values below include them; comments were not kept)."));
 }
 

@@ -10,7 +10,7 @@
 #include "fuzz_targets.h"
 #include "overridden_config.h"
 #include "sweep_parameter.h"
-#include "sweep_plan.h"
+#include "dream/workflows/sweep_plan.h"
 
 namespace dream::fuzz {
 namespace {
@@ -87,9 +87,9 @@ void AsDreamSweep(const std::vector<std::string>& sets) {
       if (runs > kMaxSweepRuns) return;
     }
     const std::string base_text = config::ConfigNode::ReadFile(kBaseConfig);
-    const cli::SweepPlan plan({1}, parameters);
-    for (const cli::SweepPlan::Run& run : plan.runs()) {
-      const YAML::Node root = cli::SweepPlan::MakeRunConfig(base_text, kBaseConfig, run);
+    const workflows::SweepPlan plan({1}, parameters);
+    for (const workflows::SweepPlan::Run& run : plan.runs()) {
+      const YAML::Node root = workflows::SweepPlan::MakeRunConfig(base_text, kBaseConfig, run);
       (void)config::LoadRunConfig(config::ConfigNode(root, kBaseConfig, ""));
     }
   } catch (const config::ConfigError& e) {

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-namespace dream::cli {
+namespace dream::workflows {
 
 /// The largest seed a config accepts (`seed:` is read as a signed 64-bit number).
 constexpr uint64_t kMaxSeed = 9223372036854775807ULL;
@@ -16,4 +16,4 @@ constexpr size_t kMaxSweepRuns = 100000;
 /// (not a whole number, a range that runs backwards, a seed given twice, too many).
 std::vector<uint64_t> ParseSeedList(const std::string& text);
 
-}  // namespace dream::cli
+}  // namespace dream::workflows

@@ -1,9 +1,11 @@
-#include "sweep_table.h"
+#include "dream/workflows/sweep_table.h"
 
 #include <algorithm>
 #include <cstdio>
 
-namespace dream::cli {
+#include "dream/workflows/sweep_value_stats.h"
+
+namespace dream::workflows {
 namespace {
 
 std::string Fixed(double value, int decimals) {
@@ -39,6 +41,8 @@ const char* StatusName(SweepRunResult::Status status) {
       return "ran";
     case SweepRunResult::Status::kInterrupted:
       return "interrupted";
+    case SweepRunResult::Status::kNotRun:
+      return "not run";
     default:
       return "failed";
   }
@@ -72,6 +76,9 @@ SweepSummary SweepTable::Summary() const {
         break;
       case SweepRunResult::Status::kInterrupted:
         ++s.interrupted;
+        break;
+      case SweepRunResult::Status::kNotRun:
+        ++s.not_run;
         break;
     }
     if (r.success) ++s.succeeded;
@@ -121,7 +128,8 @@ std::string SweepTable::SummaryMarkdown(const std::vector<std::pair<std::string,
   for (const auto& [name, value] : facts) md += "| " + MarkdownCell(name) + " | " + MarkdownCell(value) + " |\n";
   md += "| runs | " + std::to_string(s.listed) + " of " + std::to_string(s.planned) +
         " planned: " + std::to_string(s.ran) + " ran, " + std::to_string(s.failed) + " failed to run, " +
-        std::to_string(s.interrupted) + " interrupted |\n";
+        std::to_string(s.interrupted) + " interrupted" +
+        (s.not_run > 0 ? ", " + std::to_string(s.not_run) + " not run" : std::string()) + " |\n";
   md += "| success rate | " + std::to_string(s.succeeded) + " of " + std::to_string(s.ran + s.failed) + " (" +
         Fixed(100.0 * s.success_rate, 1) + " %) |\n";
   md += "| completion step | " +
@@ -143,6 +151,8 @@ std::string SweepTable::SummaryMarkdown(const std::vector<std::pair<std::string,
 std::string SweepTable::Markdown(const std::string& title,
                                  const std::vector<std::pair<std::string, std::string>>& facts) const {
   std::string md = "# " + MarkdownCell(title) + "\n\n" + SummaryMarkdown(facts) + "\n";
+  const std::string by_value = ByValueMarkdown(results_.size() + 1);
+  if (!by_value.empty()) md += by_value + "\n## Runs\n\n";
   md += "| run | seed |";
   for (const std::string& key : keys_) md += " " + MarkdownCell(key) + " |";
   md += " outcome | steps | completion step | min distance (m) | boundary | collision | actuator | obstacle | goal |\n";
@@ -161,4 +171,8 @@ std::string SweepTable::Markdown(const std::string& title,
   return md;
 }
 
-}  // namespace dream::cli
+std::string SweepTable::ByValueMarkdown(size_t max_rows) const {
+  return SweepValueStats(keys_, results_).Markdown(max_rows);
+}
+
+}  // namespace dream::workflows

@@ -4,9 +4,9 @@
 #include <utility>
 #include <vector>
 
-#include "sweep_run_result.h"
+#include "dream/workflows/sweep_run_result.h"
 
-namespace dream::cli {
+namespace dream::workflows {
 
 /// The figures of a whole sweep (docs/sweeps.md). Success rate = successes /
 /// runs that ran or failed to run; interrupted runs are counted apart.
@@ -16,6 +16,7 @@ struct SweepSummary {
   size_t ran = 0;
   size_t failed = 0;  ///< failed to run (crash, timeout, exit 4)
   size_t interrupted = 0;
+  size_t not_run = 0;  ///< no result yet or never started (dream sweep table on a sweep not done)
   size_t succeeded = 0;
   double success_rate = 0.0;  ///< 0..1; 0 when nothing was judged
   size_t completed = 0;       ///< runs with a completion step
@@ -44,7 +45,10 @@ class SweepTable {
   /// The summary block: `facts` (e.g. command, jobs, wall time) first, then
   /// the figures of Summary(), as a two-column table.
   std::string SummaryMarkdown(const std::vector<std::pair<std::string, std::string>>& facts) const;
-  /// "# title", the summary block and the table of runs.
+  /// The per-value (and per-combination) figures (SweepValueStats), at most
+  /// `max_rows` rows a table; empty without --set keys.
+  std::string ByValueMarkdown(size_t max_rows) const;
+  /// "# title", the summary block, the per-value figures and the table of runs.
   std::string Markdown(const std::string& title, const std::vector<std::pair<std::string, std::string>>& facts) const;
 
  private:
@@ -53,4 +57,4 @@ class SweepTable {
   std::vector<SweepRunResult> results_;
 };
 
-}  // namespace dream::cli
+}  // namespace dream::workflows

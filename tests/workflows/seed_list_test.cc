@@ -1,11 +1,11 @@
-#include "seed_list.h"
+#include "dream/workflows/seed_list.h"
 
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 #include <string>
 
-namespace dream::cli {
+namespace dream::workflows {
 namespace {
 
 std::string ErrorOf(const std::string& text) {
@@ -42,4 +42,4 @@ TEST(SeedList, BadTextNamesThePart) {
 }
 
 }  // namespace
-}  // namespace dream::cli
+}  // namespace dream::workflows

@@ -6,9 +6,9 @@
 
 #include "dream/session/experiment_goal.h"
 #include "dream/world/violation_counts.h"
-#include "sweep_plan.h"
+#include "dream/workflows/sweep_plan.h"
 
-namespace dream::cli {
+namespace dream::workflows {
 
 /// What one run of a sweep gave: how its `dream run` process ended and, when
 /// it wrote one, the figures of its summary.json.
@@ -22,6 +22,7 @@ struct SweepRunResult {
     kRan,          ///< the process exited 0 or 3 with a finished summary
     kFailed,       ///< crashed, timed out, exited 4, or left no readable summary
     kInterrupted,  ///< stopped by Ctrl-C (exit 130)
+    kNotRun,       ///< no result yet: never started, pending or running (`problem` says which)
   };
 
   SweepPlan::Run run;
@@ -52,8 +53,15 @@ struct SweepRunResult {
   /// The short form for the table's outcome column (the other columns say
   /// why): "success", "no success", "failed to run (...)", "interrupted".
   std::string ShortOutcomeText() const;
+  /// A run with no exit record yet (`dream sweep table` while it works, or
+  /// a task that never started): status kNotRun, `why` in the problem column.
+  static SweepRunResult NotRun(const SweepPlan::Run& run, const std::string& why);
+  /// A run that left no exit record because something outside it ended it
+  /// (Slurm cancelled it or hit its time limit, a killed task): failed to run.
+  static SweepRunResult LostRun(const SweepPlan::Run& run, const std::string& why);
+
   /// Collision errors plus robot-obstacle collisions.
   long long collisions() const { return violations.collision_errors + violations.obstacle_collisions; }
 };
 
-}  // namespace dream::cli
+}  // namespace dream::workflows

@@ -9,7 +9,7 @@
 
 #include "sweep_parameter.h"
 
-namespace dream::cli {
+namespace dream::workflows {
 
 /// Every run of a sweep: each combination of the --set values, for every
 /// seed. Each run gets a folder-safe name (seed07_max_speed_mps-0.1) and its
@@ -27,7 +27,12 @@ class SweepPlan {
 
   /// @throws std::invalid_argument when a key is given twice, there are no
   ///         seeds, or there would be more than kMaxSweepRuns runs.
-  SweepPlan(const std::vector<uint64_t>& seeds, const std::vector<SweepParameter>& parameters);
+  SweepPlan(const std::vector<uint64_t>& seeds, const std::vector<cli::SweepParameter>& parameters);
+
+  /// A plan read back from a sweep folder (SweepFolder::ReadPlan): `runs`
+  /// in index order, each with a value for every key. @throws
+  /// std::invalid_argument when they are not.
+  static SweepPlan FromRuns(std::vector<std::string> parameter_keys, std::vector<Run> runs);
 
   const std::vector<Run>& runs() const { return runs_; }
   /// The --set keys in order (the table's parameter columns).
@@ -44,8 +49,10 @@ class SweepPlan {
   static std::string EmitConfig(const YAML::Node& config, const std::string& header);
 
  private:
+  SweepPlan() = default;
+
   std::vector<Run> runs_;
   std::vector<std::string> keys_;
 };
 
-}  // namespace dream::cli
+}  // namespace dream::workflows

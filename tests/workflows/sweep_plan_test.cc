@@ -1,4 +1,4 @@
-#include "sweep_plan.h"
+#include "dream/workflows/sweep_plan.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include "dream/config/config_node.h"
 #include "dream/config/run_config.h"
 
-namespace dream::cli {
+namespace dream::workflows {
 namespace {
 
 const char* kBase = R"(# a comment the generated config does not need
@@ -23,8 +23,8 @@ controller:
 )";
 
 TEST(SweepPlan, EveryCombinationForEverySeedParametersOuter) {
-  const SweepPlan plan({3, 4}, {SweepParameter::Parse("controller.max_speed_mps=0.1,0.2"),
-                                SweepParameter::Parse("controller.hrvo.variant=exact,thesis")});
+  const SweepPlan plan({3, 4}, {cli::SweepParameter::Parse("controller.max_speed_mps=0.1,0.2"),
+                                cli::SweepParameter::Parse("controller.hrvo.variant=exact,thesis")});
   ASSERT_EQ(plan.runs().size(), 8u);
   EXPECT_EQ(plan.parameter_keys(), (std::vector<std::string>{"controller.max_speed_mps", "controller.hrvo.variant"}));
   const SweepPlan::Run& first = plan.runs()[0];
@@ -48,25 +48,25 @@ TEST(SweepPlan, SeedsArePaddedSoFoldersSortAndNamesStaySafe) {
   EXPECT_EQ(seeds.runs()[1].name, "seed20");
   EXPECT_EQ(seeds.runs()[0].Label(), "seed 1");
   // Values with characters a folder name should not have; two that differ only there stay apart.
-  const SweepPlan lists({1}, {SweepParameter::Parse("controller.goals.0=[0.1, 0.2],[0.1; 0.2]")});
+  const SweepPlan lists({1}, {cli::SweepParameter::Parse("controller.goals.0=[0.1, 0.2],[0.1; 0.2]")});
   EXPECT_EQ(lists.runs()[0].name, "seed1_goals.0-0.1-0.2");
   EXPECT_EQ(lists.runs()[1].name, "seed1_goals.0-0.1-0.2_1");
 }
 
 TEST(SweepPlan, RefusesRepeatedKeysAndHugeSweeps) {
-  EXPECT_THROW(SweepPlan({1}, {SweepParameter::Parse("steps=1,2"), SweepParameter::Parse("steps=3")}),
+  EXPECT_THROW(SweepPlan({1}, {cli::SweepParameter::Parse("steps=1,2"), cli::SweepParameter::Parse("steps=3")}),
                std::invalid_argument);
   EXPECT_THROW(SweepPlan({}, {}), std::invalid_argument);
   std::vector<uint64_t> many(1000);
   for (size_t i = 0; i < many.size(); ++i) many[i] = i;
   std::string values = "1";
   for (int i = 2; i <= 101; ++i) values += "," + std::to_string(i);
-  EXPECT_THROW(SweepPlan(many, {SweepParameter::Parse("steps=" + values)}), std::invalid_argument);
+  EXPECT_THROW(SweepPlan(many, {cli::SweepParameter::Parse("steps=" + values)}), std::invalid_argument);
 }
 
 TEST(SweepPlan, RunConfigHasSeedNameAndParametersAndPassesTheConfigCheck) {
   const SweepPlan plan({7},
-                       {SweepParameter::Parse("controller.max_speed_mps=0.1"), SweepParameter::Parse("steps=250")});
+                       {cli::SweepParameter::Parse("controller.max_speed_mps=0.1"), cli::SweepParameter::Parse("steps=250")});
   const SweepPlan::Run& run = plan.runs()[0];
   const YAML::Node config = SweepPlan::MakeRunConfig(kBase, "base.yaml", run);
   const std::string text = SweepPlan::EmitConfig(config, "generated for a test\nsecond line");
@@ -84,7 +84,7 @@ TEST(SweepPlan, RunConfigHasSeedNameAndParametersAndPassesTheConfigCheck) {
 }
 
 TEST(SweepPlan, EachRunConfigStartsFromTheBaseText) {
-  const SweepPlan plan({1}, {SweepParameter::Parse("controller.max_speed_mps=0.05,0.2")});
+  const SweepPlan plan({1}, {cli::SweepParameter::Parse("controller.max_speed_mps=0.05,0.2")});
   const YAML::Node a = SweepPlan::MakeRunConfig(kBase, "base.yaml", plan.runs()[0]);
   const YAML::Node b = SweepPlan::MakeRunConfig(kBase, "base.yaml", plan.runs()[1]);
   EXPECT_EQ(a["controller"]["max_speed_mps"].as<double>(), 0.05);
@@ -108,4 +108,4 @@ TEST(SweepPlan, ABaseThatIsNotAMappingIsAnError) {
 }
 
 }  // namespace
-}  // namespace dream::cli
+}  // namespace dream::workflows

@@ -1,4 +1,4 @@
-#include "sweep_plan.h"
+#include "dream/workflows/sweep_plan.h"
 
 #include <filesystem>
 #include <set>
@@ -6,9 +6,9 @@
 #include <stdexcept>
 
 #include "config_override.h"
-#include "seed_list.h"
+#include "dream/workflows/seed_list.h"
 
-namespace dream::cli {
+namespace dream::workflows {
 namespace {
 
 // Letters, digits, _ - . stay (all the config's `name` allows); each run of
@@ -47,16 +47,16 @@ std::string ZeroPadded(uint64_t value, size_t width) {
 std::string SweepPlan::Run::Label() const {
   std::string label = "seed " + std::to_string(seed);
   for (const auto& [key, value] : parameters) {
-    SweepParameter parameter{key, {}};
+    cli::SweepParameter parameter{key, {}};
     label += ", " + parameter.ShortName() + "=" + value;
   }
   return label;
 }
 
-SweepPlan::SweepPlan(const std::vector<uint64_t>& seeds, const std::vector<SweepParameter>& parameters) {
+SweepPlan::SweepPlan(const std::vector<uint64_t>& seeds, const std::vector<cli::SweepParameter>& parameters) {
   if (seeds.empty()) throw std::invalid_argument("--seeds: no seeds to run");
   size_t combinations = 1;
-  for (const SweepParameter& parameter : parameters) {
+  for (const cli::SweepParameter& parameter : parameters) {
     for (const std::string& key : keys_) {
       if (key == parameter.key)
         throw std::invalid_argument("--set " + key + " is given twice; list every value in one --set");
@@ -102,6 +102,22 @@ SweepPlan::SweepPlan(const std::vector<uint64_t>& seeds, const std::vector<Sweep
   }
 }
 
+SweepPlan SweepPlan::FromRuns(std::vector<std::string> parameter_keys, std::vector<Run> runs) {
+  SweepPlan plan;
+  plan.runs_ = std::move(runs);
+  plan.keys_ = std::move(parameter_keys);
+  const std::vector<Run>& runs_ = plan.runs_;
+  const std::vector<std::string>& keys_ = plan.keys_;
+  for (size_t i = 0; i < runs_.size(); ++i) {
+    if (runs_[i].index != i) throw std::invalid_argument("run " + runs_[i].name + " is not number " + std::to_string(i));
+    if (runs_[i].parameters.size() != keys_.size()) {
+      throw std::invalid_argument("run " + runs_[i].name + " has " + std::to_string(runs_[i].parameters.size()) +
+                                  " values for " + std::to_string(keys_.size()) + " keys");
+    }
+  }
+  return plan;
+}
+
 YAML::Node SweepPlan::MakeRunConfig(const std::string& base_text, const std::string& source_name, const Run& run) {
   YAML::Node root;
   try {
@@ -110,17 +126,17 @@ YAML::Node SweepPlan::MakeRunConfig(const std::string& base_text, const std::str
     throw std::invalid_argument(source_name + ":" + std::to_string(e.mark.line + 1) + ": not valid YAML: " + e.msg);
   }
   if (!root.IsMap()) throw std::invalid_argument(source_name + ": the config must be a YAML mapping of keys");
-  ApplyConfigOverride(root, "seed", std::to_string(run.seed), source_name);
-  for (const auto& [key, value] : run.parameters) ApplyConfigOverride(root, key, value, source_name);
+  cli::ApplyConfigOverride(root, "seed", std::to_string(run.seed), source_name);
+  for (const auto& [key, value] : run.parameters) cli::ApplyConfigOverride(root, key, value, source_name);
   const YAML::Node& read_only = root;
   // The run's config lives in another folder: relative plugin paths must keep
   // starting from the base config's (see `plugin_dir:` in config/README.md).
   if (read_only["plugins"].IsDefined() && !read_only["plugin_dir"].IsDefined()) {
     const std::string base_dir = std::filesystem::absolute(source_name).parent_path().lexically_normal().string();
-    ApplyConfigOverride(root, "plugin_dir", "'" + EscapedForSingleQuotes(base_dir) + "'", source_name);
+    cli::ApplyConfigOverride(root, "plugin_dir", "'" + EscapedForSingleQuotes(base_dir) + "'", source_name);
   }
   if (read_only["name"].IsScalar()) {
-    ApplyConfigOverride(root, "name", read_only["name"].Scalar() + "_" + run.name, source_name);
+    cli::ApplyConfigOverride(root, "name", read_only["name"].Scalar() + "_" + run.name, source_name);
   }
   return root;
 }
@@ -135,4 +151,4 @@ std::string SweepPlan::EmitConfig(const YAML::Node& config, const std::string& h
   return text + out.c_str() + "\n";
 }
 
-}  // namespace dream::cli
+}  // namespace dream::workflows

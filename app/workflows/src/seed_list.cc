@@ -1,9 +1,9 @@
-#include "seed_list.h"
+#include "dream/workflows/seed_list.h"
 
 #include <set>
 #include <stdexcept>
 
-namespace dream::cli {
+namespace dream::workflows {
 namespace {
 
 uint64_t ParseSeed(const std::string& text, const std::string& part) {
@@ -58,4 +58,4 @@ std::vector<uint64_t> ParseSeedList(const std::string& text) {
   return seeds;
 }
 
-}  // namespace dream::cli
+}  // namespace dream::workflows

@@ -1,10 +1,10 @@
-#include "sweep_table.h"
+#include "dream/workflows/sweep_table.h"
 
 #include <gtest/gtest.h>
 
 #include <sstream>
 
-namespace dream::cli {
+namespace dream::workflows {
 namespace {
 
 using session::ExperimentGoal;
@@ -140,7 +140,7 @@ TEST(SweepTable, RowsInPlanOrderAndASummaryOfTheFigures) {
 }
 
 TEST(SweepTable, CsvHasOneQuotedRowPerRunWithParameterColumns) {
-  const SweepPlan plan({1}, {SweepParameter::Parse("controller.goals.0=[0.1, 0.2]")});
+  const SweepPlan plan({1}, {cli::SweepParameter::Parse("controller.goals.0=[0.1, 0.2]")});
   SweepTable table(plan.parameter_keys(), 1);
   table.Add(SweepRunResult::Judge(plan.runs()[0], 4, false, 2.5, nullptr, "said \"no\", twice"));
   std::istringstream csv(table.Csv());
@@ -176,4 +176,4 @@ TEST(SweepTable, MarkdownTableHasAHeaderAndOneLinePerRun) {
 }
 
 }  // namespace
-}  // namespace dream::cli
+}  // namespace dream::workflows

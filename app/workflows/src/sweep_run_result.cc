@@ -1,8 +1,8 @@
-#include "sweep_run_result.h"
+#include "dream/workflows/sweep_run_result.h"
 
 #include "dream/world/printf_text.h"
 
-namespace dream::cli {
+namespace dream::workflows {
 namespace {
 
 long long Count(const nlohmann::json& object, const char* key) {
@@ -66,8 +66,25 @@ SweepRunResult SweepRunResult::Judge(const SweepPlan::Run& run, int exit_code, b
   return result;
 }
 
+SweepRunResult SweepRunResult::NotRun(const SweepPlan::Run& run, const std::string& why) {
+  SweepRunResult result;
+  result.run = run;
+  result.status = Status::kNotRun;
+  result.problem = why;
+  return result;
+}
+
+SweepRunResult SweepRunResult::LostRun(const SweepPlan::Run& run, const std::string& why) {
+  SweepRunResult result;
+  result.run = run;
+  result.status = Status::kFailed;
+  result.problem = why;
+  return result;
+}
+
 std::string SweepRunResult::OutcomeText() const {
   if (status == Status::kInterrupted) return "interrupted";
+  if (status == Status::kNotRun) return "not run (" + problem + ")";
   if (status == Status::kFailed) return "failed to run (" + problem + ")";
   if (success) return "success";
   std::string why;
@@ -87,4 +104,4 @@ std::string SweepRunResult::ShortOutcomeText() const {
   return OutcomeText();
 }
 
-}  // namespace dream::cli
+}  // namespace dream::workflows
