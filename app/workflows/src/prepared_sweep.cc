@@ -118,10 +118,10 @@ void PreparedSweep::WriteRun(const SweepFolder& folder, size_t index) const {
   const SweepPlan::Run& run = plan_.runs().at(index);
   const std::string dir = folder.RunDir(run.name);
   std::error_code error;
-  fs::create_directory(dir, error);
+  const bool made = fs::create_directory(dir, error);
   if (error) throw std::runtime_error("cannot create " + dir + ": " + error.message());
   // A folder left by an earlier sweep: its outputs must not pass for this run's.
-  folder.ClearRun(run.name);
+  if (!made) folder.ClearRun(run.name);
   ReplaceFile(dir + "/config.yaml", config_texts_[index]);
   if (const std::shared_ptr<const ModuleCopy>& module = modules_[index]) {
     sim::OutputFolder(dir).WriteFileInSubfolders(module->relative_path, module->text);

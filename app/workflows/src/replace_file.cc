@@ -1,6 +1,5 @@
 #include "replace_file.h"
 
-#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -26,13 +25,6 @@ void ReplaceFile(const std::string& path, const std::string& content) {
     ::unlink(temporary.c_str());
     throw std::runtime_error("cannot write " + path + ": " + std::strerror(error));
   }
-}
-
-void SyncFolder(const std::string& dir) {
-  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd < 0) return;
-  ::syncfs(fd);
-  ::close(fd);
 }
 
 std::string ReadFileHead(const std::string& path, size_t max_bytes) {

@@ -6,12 +6,10 @@ namespace dream::workflows {
 
 /// Writes `content` to `path` through a temporary file renamed over it, so a
 /// reader sees the old file or the new one, never half of one; unlike
-/// sim::WriteFileAtomically it does not sync each file (a sweep writes
-/// thousands; SyncFolder syncs them at once). @throws std::runtime_error.
+/// sim::WriteFileAtomically it does not sync the file to disk: a sweep
+/// writes thousands (configs, exit records), and a file lost to a crash
+/// makes its run one that resume redoes. @throws std::runtime_error.
 void ReplaceFile(const std::string& path, const std::string& content);
-
-/// Flushes the file system holding `dir` to disk (syncfs); errors ignored.
-void SyncFolder(const std::string& dir);
 
 /// The file's first `max_bytes` (all of a small file); empty when unreadable.
 std::string ReadFileHead(const std::string& path, size_t max_bytes);

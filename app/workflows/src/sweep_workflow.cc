@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "dream/config/config_node.h"
+#include "dream/node/atomic_file.h"
 #include "dream/node/output_folder.h"
 #include "dream/node/output_folder_lock.h"
 #include "dream/world/printf_text.h"
@@ -148,8 +149,9 @@ SweepOutcome SweepWorkflow::Start(const SweepSettings& s, const config::RunConfi
     return outcome;
   }
 
+  // Not synced one by one (thousands of files): a crash before the page
+  // cache reaches the disk leaves a config a run refuses, and resume redoes it.
   for (size_t index : all) prepared.WriteRun(folder, index);
-  SyncFolder(folder.dir());
   if (s.engine == Engine::kPlan) {
     folder.WriteCommands(all);
     if (env_.out != nullptr) {
@@ -218,9 +220,8 @@ void SweepWorkflow::WriteTable(const SweepFolder& folder, const SweepTable& tabl
                                const Facts& facts) const {
   const std::string csv_path = folder.Path("sweep.csv");
   const std::string md_path = folder.Path("sweep.md");
-  ReplaceFile(csv_path, table.Csv());
-  ReplaceFile(md_path, table.Markdown(title, facts));
-  SyncFolder(folder.dir());
+  sim::WriteFileAtomically(csv_path, table.Csv());
+  sim::WriteFileAtomically(md_path, table.Markdown(title, facts));
   if (env_.out == nullptr) return;
   std::string by_value = table.ByValueMarkdown(50);
   *env_.out << "\n" << table.SummaryMarkdown(facts) << (by_value.empty() ? "" : "\n" + by_value) << "\ntable: " << md_path

@@ -180,7 +180,6 @@ SweepOutcome SweepWorkflow::Resume(const std::string& dir, const ResumeSettings&
   outcome.runs = todo.size();
   if (engine == "slurm") {
     for (size_t index : todo) write_run(index);
-    SyncFolder(folder.dir());
     fs::remove(folder.Path("sweep.csv"), error);
     fs::remove(folder.Path("sweep.md"), error);
     const std::vector<std::string> options = rs.slurm_options.empty() ? Strings(c.settings, "slurm_options") : rs.slurm_options;
