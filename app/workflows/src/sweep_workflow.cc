@@ -56,6 +56,43 @@ std::string ParallelText(const std::string& engine, int jobs, int cores) {
   return std::to_string(jobs) + " (" + std::to_string(cores) + " cores)";
 }
 
+/// Creates the sweep folder (a given --out's parent must exist, as for every
+/// --out) and locks it (a second sweep into it is refused while this one
+/// runs); an earlier sweep's table, commands and jobs must not pass for this one's.
+SweepFolder MakeFolder(const SweepSettings& s, const std::string& base_name, const std::string& out_dir) {
+  sim::OutputFolder(out_dir, s.out_dir.empty() ? sim::OutputFolder::Parents::kCreate
+                                               : sim::OutputFolder::Parents::kMustExist)
+      .MakeSubfolder("runs");
+  sim::OutputFolderLock::HoldUntilExit(out_dir);
+  if (s.out_dir.empty() && out_dir != "sweeps/" + base_name) {
+    spdlog::warn("sweeps/{} holds an earlier sweep, so this one goes to {} (--out DIR to choose)", base_name, out_dir);
+  }
+  const SweepFolder folder(out_dir);
+  std::error_code error;
+  for (const char* stale : {"sweep.csv", "sweep.md", SweepFolder::kCommandsFile, SlurmJobs::kJobsFile}) {
+    fs::remove(folder.Path(stale), error);
+  }
+  return folder;
+}
+
+/// sweep.json: what status, resume and table need to know of the start.
+nlohmann::json SettingsJson(const SweepSettings& s, const std::string& base_name, const std::string& command, int jobs,
+                            int cores, long long time_limit_minutes, const std::string& dream_path) {
+  return {{"title", "Sweep of " + base_name + " (" + s.config_path + ")"},
+          {"command", command},
+          {"config", fs::absolute(s.config_path).lexically_normal().string()},
+          {"seeds", s.seeds},
+          {"sets", s.sets},
+          {"steps", s.steps},
+          {"engine", SweepSettings::EngineName(s.engine)},
+          {"jobs", jobs},
+          {"cores", cores},
+          {"run_timeout_s", s.run_timeout_s},
+          {"slurm_options", s.slurm_options},
+          {"slurm_time_limit_minutes", time_limit_minutes},
+          {"dream", dream_path}};
+}
+
 const std::atomic<bool>& NeverStop() {
   static const std::atomic<bool> never{false};
   return never;
@@ -91,63 +128,15 @@ SweepOutcome SweepWorkflow::Start(const SweepSettings& s, const config::RunConfi
   const SweepPlan& plan = prepared.plan();
   const int jobs = s.engine == Engine::kLocal ? (s.jobs > 0 ? s.jobs : cores()) : s.jobs;
 
-  // Created if missing; a given --out's parent must exist, as for every --out.
-  sim::OutputFolder(out_dir, s.out_dir.empty() ? sim::OutputFolder::Parents::kCreate
-                                               : sim::OutputFolder::Parents::kMustExist)
-      .MakeSubfolder("runs");
-  sim::OutputFolderLock::HoldUntilExit(out_dir);  // a second sweep into it is refused while this one runs
-  if (s.out_dir.empty() && out_dir != "sweeps/" + base.name) {
-    spdlog::warn("sweeps/{} holds an earlier sweep, so this one goes to {} (--out DIR to choose)", base.name, out_dir);
-  }
-  const SweepFolder folder(out_dir);
-  // An earlier sweep's table, commands and jobs must not pass for this one's.
-  std::error_code error;
-  for (const char* stale : {"sweep.csv", "sweep.md", SweepFolder::kCommandsFile, SlurmJobs::kJobsFile}) {
-    fs::remove(folder.Path(stale), error);
-  }
+  const SweepFolder folder = MakeFolder(s, base.name, out_dir);
   folder.WritePlan(plan);
   folder.WriteRunScript(env_.dream_path);
   const std::string command = ReproducingCommand(s, prepared.seeds_text(), s.engine == Engine::kLocal ? jobs : s.jobs, out_dir);
   const long long time_limit = SlurmSubmission::DefaultTimeLimitMinutes(prepared.max_steps());
-  folder.WriteSettings({{"title", "Sweep of " + base.name + " (" + s.config_path + ")"},
-                        {"command", command},
-                        {"config", fs::absolute(s.config_path).lexically_normal().string()},
-                        {"seeds", s.seeds},
-                        {"sets", s.sets},
-                        {"steps", s.steps},
-                        {"engine", SweepSettings::EngineName(s.engine)},
-                        {"jobs", jobs},
-                        {"cores", cores()},
-                        {"run_timeout_s", s.run_timeout_s},
-                        {"slurm_options", s.slurm_options},
-                        {"slurm_time_limit_minutes", time_limit},
-                        {"dream", env_.dream_path}});
-  const std::vector<SweepPlan::Run>& runs = plan.runs();
-  std::vector<size_t> all(runs.size());
+  folder.WriteSettings(SettingsJson(s, base.name, command, jobs, cores(), time_limit, env_.dream_path));
+  std::vector<size_t> all(plan.runs().size());
   std::iota(all.begin(), all.end(), size_t{0});
-  SweepOutcome outcome;
-  outcome.out_dir = out_dir;
-  outcome.runs = runs.size();
-
-  if (s.engine == Engine::kLocal) {
-    spdlog::info("sweep: {} runs of {} ({} seeds{}), {} at a time on {} cores -> {}", runs.size(), base.name,
-                 prepared.seed_count(),
-                 s.sets.empty() ? std::string() : " x " + std::to_string(runs.size() / prepared.seed_count()) + " parameter sets",
-                 jobs, cores(), out_dir);
-    SweepTable table(plan.parameter_keys(), runs.size());
-    const Clock::time_point started = Clock::now();
-    const bool done = RunLocally(folder, plan, all, jobs, s.run_timeout_s,
-                                 [&](size_t index) { prepared.WriteRun(folder, index); }, table);
-    if (!done) spdlog::warn("sweep interrupted: {} of {} runs ended, the rest never started", table.results().size(), runs.size());
-    const double wall_s = std::chrono::duration<double>(Clock::now() - started).count();
-    WriteTable(folder, table, "Sweep of " + base.name + " (" + s.config_path + ")",
-               {{"command", command},
-                {"runs in parallel", ParallelText("local", jobs, cores())},
-                {"wall time", sim::PrintfText("%.1f s", wall_s) + (done ? "" : " (interrupted)")}});
-    outcome.kind = done ? SweepOutcome::Kind::kFinished : SweepOutcome::Kind::kInterrupted;
-    outcome.summary = table.Summary();
-    return outcome;
-  }
+  if (s.engine == Engine::kLocal) return RunAll(folder, prepared, s, jobs, command, base.name);
 
   // Not synced one by one (thousands of files): a crash before the page
   // cache reaches the disk leaves a config a run refuses, and resume redoes it.
@@ -155,25 +144,63 @@ SweepOutcome SweepWorkflow::Start(const SweepSettings& s, const config::RunConfi
   if (s.engine == Engine::kPlan) {
     folder.WriteCommands(all);
     if (env_.out != nullptr) {
-      *env_.out << "planned " << runs.size() << " runs: " << folder.Path(SweepFolder::kCommandsFile)
+      *env_.out << "planned " << all.size() << " runs: " << folder.Path(SweepFolder::kCommandsFile)
                 << " holds one shell command per run; run them on any scheduler, then: dream sweep table " << out_dir
                 << std::endl;
     }
+    SweepOutcome outcome;
+    outcome.out_dir = out_dir;
+    outcome.runs = all.size();
     outcome.kind = SweepOutcome::Kind::kPlanned;
     return outcome;
   }
+  return Submit(folder, all, {s.jobs, time_limit, s.slurm_options, env_.dream_path, "dream-sweep-" + base.name});
+}
+
+SweepOutcome SweepWorkflow::RunAll(const SweepFolder& folder, const PreparedSweep& prepared, const SweepSettings& s,
+                                   int jobs, const std::string& command, const std::string& base_name) {
+  const SweepPlan& plan = prepared.plan();
+  const size_t count = plan.runs().size();
+  spdlog::info("sweep: {} runs of {} ({} seeds{}), {} at a time on {} cores -> {}", count, base_name,
+               prepared.seed_count(),
+               s.sets.empty() ? std::string() : " x " + std::to_string(count / prepared.seed_count()) + " parameter sets",
+               jobs, cores(), folder.dir());
+  std::vector<size_t> all(count);
+  std::iota(all.begin(), all.end(), size_t{0});
+  SweepTable table(plan.parameter_keys(), count);
+  const Clock::time_point started = Clock::now();
+  const bool done = RunLocally(folder, plan, all, jobs, s.run_timeout_s,
+                               [&](size_t index) { prepared.WriteRun(folder, index); }, table);
+  if (!done) spdlog::warn("sweep interrupted: {} of {} runs ended, the rest never started", table.results().size(), count);
+  const double wall_s = std::chrono::duration<double>(Clock::now() - started).count();
+  WriteTable(folder, table, "Sweep of " + base_name + " (" + s.config_path + ")",
+             {{"command", command},
+              {"runs in parallel", ParallelText("local", jobs, cores())},
+              {"wall time", sim::PrintfText("%.1f s", wall_s) + (done ? "" : " (interrupted)")}});
+  SweepOutcome outcome;
+  outcome.out_dir = folder.dir();
+  outcome.runs = count;
+  outcome.kind = done ? SweepOutcome::Kind::kFinished : SweepOutcome::Kind::kInterrupted;
+  outcome.summary = table.Summary();
+  return outcome;
+}
+
+SweepOutcome SweepWorkflow::Submit(const SweepFolder& folder, const std::vector<size_t>& indices,
+                                   const SlurmSubmission::Options& options) {
   SlurmSubmission submission(folder, *env_.commands);
-  const SlurmSubmission::Submitted submitted =
-      submission.Submit(all, {s.jobs, time_limit, s.slurm_options, env_.dream_path, "dream-sweep-" + base.name});
+  const SlurmSubmission::Submitted submitted = submission.Submit(indices, options);
+  SweepOutcome outcome;
+  outcome.out_dir = folder.dir();
+  outcome.runs = indices.size();
   outcome.kind = SweepOutcome::Kind::kSubmitted;
   outcome.jobs = submitted.array_jobs;
   outcome.jobs.push_back(submitted.table_job);
   if (env_.out != nullptr) {
     std::string arrays;
     for (const std::string& id : submitted.array_jobs) arrays += (arrays.empty() ? "" : ", ") + id;
-    *env_.out << "submitted " << runs.size() << " runs to Slurm: job array " << arrays << ", then job "
+    *env_.out << "submitted " << indices.size() << " runs to Slurm: job array " << arrays << ", then job "
               << submitted.table_job << " writes " << folder.Path("sweep.md") << "\nfollow it: dream sweep status "
-              << out_dir << std::endl;
+              << folder.dir() << std::endl;
   }
   return outcome;
 }

@@ -1,6 +1,7 @@
 // SweepWorkflow's commands on an existing sweep folder: resume, table, status.
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <ostream>
 
@@ -63,6 +64,31 @@ SweepSettings SettingsOf(const nlohmann::json& settings, const std::string& dir)
   s.steps = Number(settings, "steps");
   s.out_dir = dir;
   return s;
+}
+
+/// The runs of `todo` whose folders were never written (a local sweep
+/// stopped with Ctrl-C before them) get their configs made again from the
+/// base config, which must still give the same plan; null when none needs it.
+std::unique_ptr<PreparedSweep> ConfigsToWriteAgain(const SweepFolder& folder, const CollectedSweep& c,
+                                                   const std::vector<size_t>& todo) {
+  std::error_code error;
+  const auto missing = std::find_if(todo.begin(), todo.end(), [&](size_t index) {
+    return !fs::exists(folder.RunDir(c.plan.runs()[index].name) + "/config.yaml", error);
+  });
+  if (missing == todo.end()) return nullptr;
+  const SweepSettings settings = SettingsOf(c.settings, folder.dir());
+  config::RunConfig base = config::LoadRunConfig(config::ConfigNode::LoadFile(settings.config_path));
+  if (settings.steps > 0) base.sim.max_steps = settings.steps;
+  auto prepared = std::make_unique<PreparedSweep>(settings, base, folder.dir());
+  const std::vector<SweepPlan::Run>& again = prepared->plan().runs();
+  for (size_t i = 0; i < c.plan.runs().size(); ++i) {
+    if (again.size() != c.plan.runs().size() || again[i].name != c.plan.runs()[i].name) {
+      throw std::runtime_error(settings.config_path + " no longer gives the plan of " +
+                               folder.Path(SweepFolder::kPlanFile) + " (run " + c.plan.runs()[i].name +
+                               "); start a new sweep");
+    }
+  }
+  return prepared;
 }
 
 }  // namespace
@@ -144,25 +170,8 @@ SweepOutcome SweepWorkflow::Resume(const std::string& dir, const ResumeSettings&
     if (env_.out != nullptr) *env_.out << "nothing to resume: every run of " << dir << " ran to its end" << std::endl;
     return Table(dir);
   }
-  // Runs whose folders were never written get their configs made again from
-  // the base config, which must still give the same plan.
-  std::unique_ptr<PreparedSweep> prepared;
+  const std::unique_ptr<PreparedSweep> prepared = ConfigsToWriteAgain(folder, c, todo);
   std::error_code error;
-  for (size_t index : todo) {
-    if (fs::exists(folder.RunDir(c.plan.runs()[index].name) + "/config.yaml", error)) continue;
-    const SweepSettings settings = SettingsOf(c.settings, dir);
-    config::RunConfig base = config::LoadRunConfig(config::ConfigNode::LoadFile(settings.config_path));
-    if (settings.steps > 0) base.sim.max_steps = settings.steps;
-    prepared = std::make_unique<PreparedSweep>(settings, base, dir);
-    const auto& again = prepared->plan().runs();
-    for (size_t i = 0; i < c.plan.runs().size(); ++i) {
-      if (again.size() != c.plan.runs().size() || again[i].name != c.plan.runs()[i].name) {
-        throw std::runtime_error(settings.config_path + " no longer gives the plan of " + folder.Path(SweepFolder::kPlanFile) +
-                                 " (run " + c.plan.runs()[i].name + "); start a new sweep");
-      }
-    }
-    break;
-  }
   auto write_run = [&](size_t index) {
     const std::string& name = c.plan.runs()[index].name;
     if (prepared && !fs::exists(folder.RunDir(name) + "/config.yaml", error)) {
@@ -175,28 +184,16 @@ SweepOutcome SweepWorkflow::Resume(const std::string& dir, const ResumeSettings&
   const std::string started_on = Text(c.settings, "engine");
   const long long started_jobs = Number(c.settings, "jobs");
   spdlog::info("resume: {} of {} runs of {} to run again ({})", todo.size(), c.plan.runs().size(), dir, engine);
-  SweepOutcome outcome;
-  outcome.out_dir = folder.dir();
-  outcome.runs = todo.size();
   if (engine == "slurm") {
     for (size_t index : todo) write_run(index);
     fs::remove(folder.Path("sweep.csv"), error);
     fs::remove(folder.Path("sweep.md"), error);
     const std::vector<std::string> options = rs.slurm_options.empty() ? Strings(c.settings, "slurm_options") : rs.slurm_options;
     const long long minutes = Number(c.settings, "slurm_time_limit_minutes");
-    SlurmSubmission submission(folder, *env_.commands);
-    const SlurmSubmission::Submitted submitted = submission.Submit(
-        todo, {rs.jobs > 0 ? rs.jobs : started_on == "slurm" ? static_cast<int>(started_jobs) : 0,
-               minutes > 0 ? minutes : SlurmSubmission::DefaultTimeLimitMinutes(0), options, env_.dream_path,
-               "dream-sweep"});
-    outcome.kind = SweepOutcome::Kind::kSubmitted;
-    outcome.jobs = submitted.array_jobs;
-    outcome.jobs.push_back(submitted.table_job);
-    if (env_.out != nullptr) {
-      *env_.out << "submitted " << todo.size() << " runs again; job " << submitted.table_job
-                << " writes the table; follow it: dream sweep status " << dir << std::endl;
-    }
-    return outcome;
+    return Submit(folder, todo,
+                  {rs.jobs > 0 ? rs.jobs : started_on == "slurm" ? static_cast<int>(started_jobs) : 0,
+                   minutes > 0 ? minutes : SlurmSubmission::DefaultTimeLimitMinutes(0), options, env_.dream_path,
+                   "dream-sweep"});
   }
   const int jobs = rs.jobs > 0                                      ? rs.jobs
                    : started_on == "local" && started_jobs > 0 ? static_cast<int>(started_jobs)

@@ -10,6 +10,7 @@
 #include "dream/config/run_config.h"
 #include "dream/workflows/command_runner.h"
 #include "dream/workflows/job_runner.h"
+#include "dream/workflows/slurm_submission.h"
 #include "dream/workflows/sweep_outcome.h"
 #include "dream/workflows/sweep_settings.h"
 #include "dream/workflows/sweep_status_report.h"
@@ -81,6 +82,12 @@ class SweepWorkflow {
   /// first. Returns false when stopped; `table` gets each ended run.
   bool RunLocally(const SweepFolder& folder, const SweepPlan& plan, const std::vector<size_t>& indices, int jobs,
                   double run_timeout_s, const std::function<void(size_t)>& write_run, SweepTable& table);
+  /// Start's local engine: every run here, then the table.
+  SweepOutcome RunAll(const SweepFolder& folder, const PreparedSweep& prepared, const SweepSettings& settings, int jobs,
+                      const std::string& command, const std::string& base_name);
+  /// Submits `indices` to Slurm (SlurmSubmission) and says so.
+  SweepOutcome Submit(const SweepFolder& folder, const std::vector<size_t>& indices,
+                      const SlurmSubmission::Options& options);
   /// Writes sweep.csv and sweep.md and prints the summary block.
   void WriteTable(const SweepFolder& folder, const SweepTable& table, const std::string& title,
                   const std::vector<std::pair<std::string, std::string>>& facts) const;
