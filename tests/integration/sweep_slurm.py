@@ -88,7 +88,10 @@ def same_sweep(cluster, args, work):
 
 def cancel_and_resume(cluster, args, work):
     config = os.path.join(args.source, "config", "go_to_goal_python.yaml")
-    words = [config, "--seeds", "1-3", "--set", "controller.max_speed_mps=0.1,0.2", "--steps", "60"]
+    # Runs of a second or two (so scancel meets one running), and an agent timeout no load on the
+    # test machine can reach (a Python agent marked lost would change the run, not the engine).
+    words = [config, "--seeds", "1-3", "--set", "controller.max_speed_mps=0.1,0.2", "--set", "world.agent_timeout_s=60",
+             "--steps", "200"]
     local, slurm = os.path.join(work, "py_local"), os.path.join(work, "py_slurm")
     code, text = dream(cluster, args, "-q", "sweep", *words, "--jobs", "2", "--out", local)
     check(code == 0, f"local Python sweep exited {code}: {text[-500:]}")
