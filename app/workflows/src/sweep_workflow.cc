@@ -208,6 +208,7 @@ SweepOutcome SweepWorkflow::Submit(const SweepFolder& folder, const std::vector<
 bool SweepWorkflow::RunLocally(const SweepFolder& folder, const SweepPlan& plan, const std::vector<size_t>& indices,
                                int jobs, double run_timeout_s, const std::function<void(size_t)>& write_run,
                                SweepTable& table) {
+  if (!env_.make_job_runner) throw std::logic_error("SweepWorkflow: no job runner for the local engine");
   const std::unique_ptr<JobRunner> runner = env_.make_job_runner(jobs, run_timeout_s);
   const std::vector<SweepPlan::Run>& runs = plan.runs();
   size_t finished = 0;

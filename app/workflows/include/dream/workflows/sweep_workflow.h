@@ -69,6 +69,9 @@ class SweepWorkflow {
   SweepOutcome Table(const std::string& dir);
 
   /// Counts of finished, running, pending, failed and never started runs.
+  /// Table and Status take the folder's lock when no one holds it (a local
+  /// sweep that does is still working), and keep it until this process
+  /// exits, as every command holding an output folder does.
   SweepStatusReport Status(const std::string& dir);
 
   /// The sweep folder Start writes: --out as given, else sweeps/<name>, or
