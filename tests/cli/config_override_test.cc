@@ -1,4 +1,4 @@
-#include "config_override.h"
+#include "dream/config_overrides/config_override.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 
 #include "dream/config/config_node.h"
 #include "dream/run_config/run_config.h"
-#include "sweep_parameter.h"
+#include "dream/config_overrides/sweep_parameter.h"
 
 namespace dream::cli {
 namespace {
@@ -28,7 +28,7 @@ controller:
 std::string ErrorOf(const std::string& key, const std::string& value) {
   YAML::Node root = YAML::Load(kConfig);
   try {
-    ApplyConfigOverride(root, key, value, "demo.yaml");
+    config_overrides::ApplyConfigOverride(root, key, value, "demo.yaml");
   } catch (const std::invalid_argument& e) {
     return e.what();
   }
@@ -37,10 +37,10 @@ std::string ErrorOf(const std::string& key, const std::string& value) {
 
 TEST(ConfigOverride, SetsNestedKeysAndListItems) {
   YAML::Node root = YAML::Load(kConfig);
-  ApplyConfigOverride(root, "controller.max_speed_mps", "0.1", "demo.yaml");
-  ApplyConfigOverride(root, "controller.sensors.0.period_steps", "3", "demo.yaml");
-  ApplyConfigOverride(root, "controller.goals.1", "[0.3, -0.3]", "demo.yaml");
-  ApplyConfigOverride(root, "robots", "2", "demo.yaml");
+  config_overrides::ApplyConfigOverride(root, "controller.max_speed_mps", "0.1", "demo.yaml");
+  config_overrides::ApplyConfigOverride(root, "controller.sensors.0.period_steps", "3", "demo.yaml");
+  config_overrides::ApplyConfigOverride(root, "controller.goals.1", "[0.3, -0.3]", "demo.yaml");
+  config_overrides::ApplyConfigOverride(root, "robots", "2", "demo.yaml");
   EXPECT_EQ(root["controller"]["max_speed_mps"].as<double>(), 0.1);
   EXPECT_EQ(root["controller"]["sensors"][0]["period_steps"].as<int>(), 3);
   EXPECT_EQ(root["controller"]["goals"][1][0].as<double>(), 0.3);
@@ -51,7 +51,7 @@ TEST(ConfigOverride, SetsNestedKeysAndListItems) {
 
 TEST(ConfigOverride, AddsALastKeyTheConfigLeavesOut) {
   YAML::Node root = YAML::Load(kConfig);
-  ApplyConfigOverride(root, "controller.sensors.0.noise_std", "0.002", "demo.yaml");
+  config_overrides::ApplyConfigOverride(root, "controller.sensors.0.noise_std", "0.002", "demo.yaml");
   EXPECT_EQ(root["controller"]["sensors"][0]["noise_std"].as<double>(), 0.002);
   // The config check then accepts it as a key it knows.
   EXPECT_NO_THROW(run_config::LoadRunConfig(config::ConfigNode(root, "demo.yaml", "")));
@@ -110,10 +110,10 @@ TEST(ConfigOverride, AValueHasTheLimitsOfAConfigFile) {
 TEST(ConfigOverride, TheConfigWithTheValueStaysWithinAConfigFilesLimit) {
   // The file's aliases expand to 969,133 values (a file may: up to 1,000,000).
   YAML::Node root = YAML::Load(std::string(kConfig) + "big: " + Laughs(5, 7) + "\nbig2: " + Laughs(4, 5) + "\n");
-  ApplyConfigOverride(root, "controller.a", Laughs(3, 0), "demo.yaml");  // 1,234 more: allowed
+  config_overrides::ApplyConfigOverride(root, "controller.a", Laughs(3, 0), "demo.yaml");  // 1,234 more: allowed
   EXPECT_EQ(root["controller"]["a"].size(), 3u);
   try {
-    ApplyConfigOverride(root, "controller.b", Laughs(4, 7), "demo.yaml");  // 90,122 more: not
+    config_overrides::ApplyConfigOverride(root, "controller.b", Laughs(4, 7), "demo.yaml");  // 90,122 more: not
     FAIL() << "a config past 1,000,000 values was accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("--set controller.b: the config ("), std::string::npos) << e.what();
@@ -138,7 +138,7 @@ TEST(ConfigOverride, AMisspeltNewLastKeyIsCaughtByTheConfigCheck) {
   // (The controller section's keys are checked by the agents' factory, which
   // the integration test exercises; the top level by LoadRunConfig.)
   YAML::Node top = YAML::Load(kConfig);
-  ApplyConfigOverride(top, "stepz", "10", "demo.yaml");
+  config_overrides::ApplyConfigOverride(top, "stepz", "10", "demo.yaml");
   try {
     run_config::LoadRunConfig(config::ConfigNode(top, "demo.yaml", ""));
     FAIL() << "an unknown top-level key passed the config check";
@@ -149,7 +149,7 @@ TEST(ConfigOverride, AMisspeltNewLastKeyIsCaughtByTheConfigCheck) {
 
 TEST(ConfigOverride, AnErrorAboutAnOverriddenValuePointsAtItsLineInTheBaseFile) {
   YAML::Node root = YAML::Load(kConfig);
-  ApplyConfigOverride(root, "robots", "0", "demo.yaml");
+  config_overrides::ApplyConfigOverride(root, "robots", "0", "demo.yaml");
   try {
     run_config::LoadRunConfig(config::ConfigNode(root, "demo.yaml", ""));
     FAIL() << "robots: 0 passed the config check";
@@ -163,27 +163,27 @@ TEST(ConfigOverride, OverridingDoesNotEditOtherNodes) {
   // key must rebind instead, or "controller.sensors.0" would overwrite
   // controller with its own sensor list.
   YAML::Node root = YAML::Load(kConfig);
-  ApplyConfigOverride(root, "controller.sensors.0.kind", "odometry", "demo.yaml");
+  config_overrides::ApplyConfigOverride(root, "controller.sensors.0.kind", "odometry", "demo.yaml");
   EXPECT_TRUE(root["controller"].IsMap());
   EXPECT_EQ(root["controller"]["goals"].size(), 2u);
   EXPECT_EQ(root["name"].as<std::string>(), "demo");
 }
 
 TEST(SweepParameter, ParsesKeyAndValuesSplittingOnlyTopLevelCommas) {
-  const SweepParameter speeds = SweepParameter::Parse("controller.max_speed_mps=0.1, 0.15,0.2");
+  const config_overrides::SweepParameter speeds = config_overrides::SweepParameter::Parse("controller.max_speed_mps=0.1, 0.15,0.2");
   EXPECT_EQ(speeds.key, "controller.max_speed_mps");
   EXPECT_EQ(speeds.values, (std::vector<std::string>{"0.1", "0.15", "0.2"}));
   EXPECT_EQ(speeds.ShortName(), "max_speed_mps");
-  const SweepParameter goals = SweepParameter::Parse("controller.goals.0=[0.1, 0.2],[0.3,0.4],'a,b'");
+  const config_overrides::SweepParameter goals = config_overrides::SweepParameter::Parse("controller.goals.0=[0.1, 0.2],[0.3,0.4],'a,b'");
   EXPECT_EQ(goals.values, (std::vector<std::string>{"[0.1, 0.2]", "[0.3,0.4]", "'a,b'"}));
   EXPECT_EQ(goals.ShortName(), "goals.0");
-  EXPECT_EQ(SweepParameter::Parse("steps=100").ShortName(), "steps");
+  EXPECT_EQ(config_overrides::SweepParameter::Parse("steps=100").ShortName(), "steps");
 }
 
 TEST(SweepParameter, BadTextIsAnErrorNamingTheOption) {
   auto error_of = [](const std::string& text) -> std::string {
     try {
-      SweepParameter::Parse(text);
+      config_overrides::SweepParameter::Parse(text);
     } catch (const std::invalid_argument& e) {
       return e.what();
     }

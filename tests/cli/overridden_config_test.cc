@@ -1,4 +1,4 @@
-#include "overridden_config.h"
+#include "dream/config_overrides/overridden_config.h"
 
 #include "dream/run_config/run_config.h"
 
@@ -31,7 +31,7 @@ class OverriddenConfigTest : public ::testing::Test {
 
   std::string ErrorOf(long long seed, const std::vector<std::string>& sets) const {
     try {
-      OverriddenConfig(path_, seed, sets).Load();
+      config_overrides::OverriddenConfig(path_, seed, sets).Load();
     } catch (const std::exception& e) {
       return e.what();
     }
@@ -52,7 +52,7 @@ TEST_F(OverriddenConfigTest, AKeyAnEarlierSetMadeASingleValueIsNamedAsItsDoing) 
 }
 
 TEST_F(OverriddenConfigTest, WithoutOverridesTheFileIsReadAndCopiedAsItIs) {
-  const OverriddenConfig overridden(path_, -1, {});
+  const config_overrides::OverriddenConfig overridden(path_, -1, {});
   const run_config::RunConfig config = overridden.Load();
   EXPECT_EQ(config.seed, 1u);
   EXPECT_EQ(overridden.FolderText(config), kConfig);  // comments kept
@@ -60,7 +60,7 @@ TEST_F(OverriddenConfigTest, WithoutOverridesTheFileIsReadAndCopiedAsItIs) {
 }
 
 TEST_F(OverriddenConfigTest, SeedAndSetsChangeTheRunAndTheFolderTextReloadsToTheSameRun) {
-  const OverriddenConfig overridden(path_, 7, {"controller.max_speed_mps=0.1", "controller.goals.2=[0.4, 0.4]"});
+  const config_overrides::OverriddenConfig overridden(path_, 7, {"controller.max_speed_mps=0.1", "controller.goals.2=[0.4, 0.4]"});
   const run_config::RunConfig config = overridden.Load();
   EXPECT_EQ(config.seed, 7u);
   EXPECT_EQ(overridden.OptionsText(), "--seed 7 --set controller.max_speed_mps=0.1 --set controller.goals.2=[0.4, 0.4]");
@@ -97,7 +97,7 @@ TEST_F(OverriddenConfigTest, MistakesNameTheOptionAndTheKey) {
 }
 
 TEST_F(OverriddenConfigTest, AMissingFileIsAConfigErrorNamingIt) {
-  EXPECT_THROW(OverriddenConfig((dir_ / "nope.yaml").string(), 3, {}), config::ConfigError);
+  EXPECT_THROW(config_overrides::OverriddenConfig((dir_ / "nope.yaml").string(), 3, {}), config::ConfigError);
 }
 
 }  // namespace

@@ -8,9 +8,9 @@
 #include "dream/config/config_node.h"
 #include "dream/run_config/run_config.h"
 #include "fuzz_targets.h"
-#include "overridden_config.h"
-#include "sweep_parameter.h"
-#include "sweep_plan.h"
+#include "dream/config_overrides/overridden_config.h"
+#include "dream/config_overrides/sweep_parameter.h"
+#include "dream/workflows/sweep_plan.h"
 
 namespace dream::fuzz {
 namespace {
@@ -47,7 +47,7 @@ bool StartsWith(const std::string& text, const std::string& start) { return text
 void AsDreamRun(const std::vector<std::string>& sets) {
   std::string folder_text;
   try {
-    const cli::OverriddenConfig overridden(kBaseConfig, -1, sets);
+    const config_overrides::OverriddenConfig overridden(kBaseConfig, -1, sets);
     const run_config::RunConfig run = overridden.Load();
     // dream run checks the controller's keys before it writes the folder
     // (HostedAgents::Check; for the C++ kinds, the factory's check).
@@ -79,17 +79,17 @@ void AsDreamRun(const std::vector<std::string>& sets) {
 // What `dream sweep --set ...` does with the same lines (each a list of values).
 void AsDreamSweep(const std::vector<std::string>& sets) {
   try {
-    std::vector<cli::SweepParameter> parameters;
+    std::vector<config_overrides::SweepParameter> parameters;
     size_t runs = 1;
     for (const std::string& set : sets) {
-      parameters.push_back(cli::SweepParameter::Parse(set));
+      parameters.push_back(config_overrides::SweepParameter::Parse(set));
       runs *= parameters.back().values.size();
       if (runs > kMaxSweepRuns) return;
     }
     const std::string base_text = config::ConfigNode::ReadFile(kBaseConfig);
-    const cli::SweepPlan plan({1}, parameters);
-    for (const cli::SweepPlan::Run& run : plan.runs()) {
-      const YAML::Node root = cli::SweepPlan::MakeRunConfig(base_text, kBaseConfig, run);
+    const workflows::SweepPlan plan({1}, parameters);
+    for (const workflows::SweepPlan::Run& run : plan.runs()) {
+      const YAML::Node root = workflows::SweepPlan::MakeRunConfig(base_text, kBaseConfig, run);
       (void)run_config::LoadRunConfig(config::ConfigNode(root, kBaseConfig, ""));
     }
   } catch (const config::ConfigError& e) {

@@ -245,7 +245,8 @@ def check_command(cli, source, words, kind, cwd):
     rest = args[1:]
     subcommands, options = cli.help(path)
     if subcommands:
-        if rest and not rest[0].startswith("-"):
+        if rest and not rest[0].startswith("-") and (rest[0] in subcommands or re.fullmatch(r"[a-z][\w-]*", rest[0])):
+            # (dream sweep also takes a CONFIG path where its subcommands stand)
             if rest[0] not in subcommands:
                 return [f"dream {args[0]} has no subcommand '{rest[0]}'"]
             path += (rest[0],)

@@ -14,7 +14,7 @@
 #include <stdexcept>
 
 #include "hosted_agents.h"
-#include "overridden_config.h"
+#include "dream/config_overrides/overridden_config.h"
 #include "command_line.h"
 #include "commands.h"
 #include "process_group.h"
@@ -113,7 +113,7 @@ double WorldTimeout(const config::ConfigNode& root, const char* key) {
 
 int RunAgents(const AgentArgs& args) {
   // The controller's part only: an agent does no world work (and does not link the world).
-  const OverriddenConfig overridden(args.config_path, args.seed, args.sets);
+  const config_overrides::OverriddenConfig overridden(args.config_path, args.seed, args.sets);
   const config::ControllerConfig config = overridden.LoadController();
   const std::vector<int> ids = ParseRobotList(args.robots, config.num_robots);
   lcm::LcmBus bus(lcm::ResolveLcmUrl(args.lcm_url));

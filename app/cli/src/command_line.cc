@@ -29,8 +29,10 @@ void CommandLine::Parse(int argc, char** argv) {
 }
 
 CommandLine::Action CommandLine::ChosenAction() const {
-  for (const Command& command : commands_) {
-    if (command.app->parsed()) return command.action;
+  // The last added of those parsed: a command's own subcommands (dream sweep
+  // status) are added after it.
+  for (auto it = commands_.rbegin(); it != commands_.rend(); ++it) {
+    if (it->app->parsed()) return it->action;
   }
   return {};
 }

@@ -174,12 +174,16 @@ struct SweepArgs {
   long long steps = 0;            ///< 0: the config's step limit
   std::string out_dir;            ///< empty: sweeps/<name> (or _2, ... when that holds a sweep)
   double run_timeout_s = 1800.0;  ///< a run still going after this is stopped and counts as failed
+  std::string engine = "local";   ///< local, slurm or plan
+  std::vector<std::string> slurm_options;  ///< passed on to sbatch
 };
 
 /// Runs the config over every seed x --set combination, `jobs` `dream run`
-/// processes at a time, and writes <out>/runs/<run>/, sweep.csv and sweep.md.
-/// Exit 0 when every run ran (successful or not), 4 when one failed to run,
-/// 1 for bad input (nothing is started), 130 when interrupted.
+/// processes at a time (or as a Slurm job array, or only planned), and
+/// writes <out>/runs/<run>/, sweep.csv and sweep.md (workflows::SweepWorkflow).
+/// Exit 0 when every run ran (successful or not) or was submitted/planned, 4
+/// when one failed to run, 1 for bad input (nothing is started), 130 when
+/// interrupted. `dream sweep status|resume|table DIR` are its subcommands.
 int RunSweep(const SweepArgs& args);
 void DeclareSweepCommand(CommandLine& line);
 

@@ -3,10 +3,10 @@
 // agent process, which reads only the controller's part, does not link them.
 #include "dream/config/config_error.h"
 #include "dream/run_config/run_config.h"
-#include "overridden_config.h"
-#include "sweep_plan.h"
+#include "dream/config_overrides/overridden_config.h"
+#include "dream/workflows/sweep_plan.h"
 
-namespace dream::cli {
+namespace dream::config_overrides {
 
 run_config::RunConfig OverriddenConfig::Load() const {
   // Overrides are checked in memory: an overridden value keeps its key's line in the file.
@@ -16,8 +16,8 @@ run_config::RunConfig OverriddenConfig::Load() const {
 std::string OverriddenConfig::FolderText(const run_config::RunConfig& config) const {
   if (overrides_.empty()) return run_config::RunFolderConfigText(config, text_);
   return run_config::RunFolderConfigText(
-      config, SweepPlan::EmitConfig(root_, path_ + " with " + OptionsText() +
+      config, workflows::SweepPlan::EmitConfig(root_, path_ + " with " + OptionsText() +
                                                " (the values below include them; comments were not kept)."));
 }
 
-}  // namespace dream::cli
+}  // namespace dream::config_overrides

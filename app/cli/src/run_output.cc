@@ -4,13 +4,13 @@
 
 #include "dream/config/config_error.h"
 #include "hosted_agents.h"
-#include "overridden_config.h"
+#include "dream/config_overrides/overridden_config.h"
 #include "run_folder_choice.h"
 
 namespace dream::cli {
 
 std::unique_ptr<session::RunSession> OpenRunSession(const RunArgs& args) {
-  const OverriddenConfig overridden(args.config_path, args.seed, args.sets);
+  const config_overrides::OverriddenConfig overridden(args.config_path, args.seed, args.sets);
   run_config::RunConfig config = overridden.Load();
   if (args.steps != 0) {
     if (args.steps < 1) throw std::invalid_argument("--steps must be >= 1, got " + std::to_string(args.steps));
@@ -33,7 +33,7 @@ std::unique_ptr<session::RunSession> OpenRunSession(const RunArgs& args) {
 run_config::RunConfig LoadConfig(const RunArgs& args) { return OpenRunSession(args)->config(); }
 
 std::string ConfigTextForRunFolder(const RunArgs& args, const run_config::RunConfig& config) {
-  return OverriddenConfig(args.config_path, args.seed, args.sets).FolderText(config);
+  return config_overrides::OverriddenConfig(args.config_path, args.seed, args.sets).FolderText(config);
 }
 
 std::string PrepareOutputDir(const RunArgs& args, const run_config::RunConfig& config) {

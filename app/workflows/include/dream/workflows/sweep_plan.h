@@ -1,0 +1,58 @@
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "dream/config_overrides/sweep_parameter.h"
+
+namespace dream::workflows {
+
+/// Every run of a sweep: each combination of the --set values, for every
+/// seed. Each run gets a folder-safe name (seed07_max_speed_mps-0.1) and its
+/// own config, made from the base config's text.
+class SweepPlan {
+ public:
+  struct Run {
+    size_t index = 0;  ///< position in the plan, 0-based
+    std::string name;  ///< folder name under <out>/runs/, unique in the plan
+    uint64_t seed = 0;
+    std::vector<std::pair<std::string, std::string>> parameters;  ///< (key, value) in --set order
+    /// "seed 7" or "seed 7, max_speed_mps=0.1" for progress lines.
+    std::string Label() const;
+  };
+
+  /// @throws std::invalid_argument when a key is given twice, there are no
+  ///         seeds, or there would be more than kMaxSweepRuns runs.
+  SweepPlan(const std::vector<uint64_t>& seeds, const std::vector<config_overrides::SweepParameter>& parameters);
+
+  /// A plan read back from a sweep folder (SweepFolder::ReadPlan): `runs`
+  /// in index order, each with a value for every key. @throws
+  /// std::invalid_argument when they are not.
+  static SweepPlan FromRuns(std::vector<std::string> parameter_keys, std::vector<Run> runs);
+
+  const std::vector<Run>& runs() const { return runs_; }
+  /// The --set keys in order (the table's parameter columns).
+  const std::vector<std::string>& parameter_keys() const { return keys_; }
+
+  /// The run's config: `base_text` parsed afresh (so lines in errors are the
+  /// base file's), with `seed`, the run's parameters and `name` (the base
+  /// config's name + "_" + run name) set. @throws std::invalid_argument for
+  /// a key that cannot be set (see ApplyConfigOverride), or base text that is
+  /// not a YAML mapping.
+  static YAML::Node MakeRunConfig(const std::string& base_text, const std::string& source_name, const Run& run);
+
+  /// `config` as YAML text, below `header` as comment lines.
+  static std::string EmitConfig(const YAML::Node& config, const std::string& header);
+
+ private:
+  SweepPlan() = default;
+
+  std::vector<Run> runs_;
+  std::vector<std::string> keys_;
+};
+
+}  // namespace dream::workflows

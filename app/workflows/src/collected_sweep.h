@@ -1,0 +1,25 @@
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "dream/workflows/slurm_task_state.h"
+#include "dream/workflows/sweep_plan.h"
+#include "dream/workflows/sweep_run_result.h"
+
+namespace dream::workflows {
+
+/// Every run of a sweep folder's plan, judged from its files and Slurm
+/// (SweepWorkflow::Collect), for status, resume and table.
+struct CollectedSweep {
+  SweepPlan plan;
+  nlohmann::json settings;                           ///< sweep.json
+  std::vector<SweepRunResult> results;               ///< per run, plan order
+  std::vector<std::optional<SlurmTaskState>> slurm;  ///< per run: what Slurm says, if anything
+  bool busy = false;                                 ///< a local sweep holds the folder
+  std::string note;                                  ///< e.g. squeue could not be asked
+};
+
+}  // namespace dream::workflows

@@ -1,0 +1,283 @@
+#include "dream/workflows/sweep_folder.h"
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "dream/files/atomic_file.h"
+#include "dream/workflows/seed_list.h"
+#include "replace_file.h"
+
+namespace dream::workflows {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr size_t kMaxPlanBytes = size_t{256} << 20;
+constexpr size_t kMaxSummaryBytes = size_t{64} << 20;
+constexpr size_t kMaxSettingsBytes = size_t{16} << 20;
+
+std::string Escaped(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '\\') {
+      out += "\\\\";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+std::string Unescaped(const std::string& text) {
+  std::string out;
+  for (size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '\\' || i + 1 == text.size()) {
+      out += text[i];
+      continue;
+    }
+    const char next = text[++i];
+    out += next == 't' ? '\t' : next == 'n' ? '\n' : next == 'r' ? '\r' : next;
+  }
+  return out;
+}
+
+std::vector<std::string> SplitTabs(const std::string& line) {
+  std::vector<std::string> fields;
+  size_t start = 0;
+  while (true) {
+    const size_t tab = line.find('\t', start);
+    fields.push_back(line.substr(start, tab == std::string::npos ? std::string::npos : tab - start));
+    if (tab == std::string::npos) return fields;
+    start = tab + 1;
+  }
+}
+
+// A run folder's name as SweepPlan makes them: nothing that could leave runs/.
+bool IsRunName(const std::string& name) {
+  if (name.empty() || name.size() > 4096 || name == "." || name == "..") return false;
+  for (char c : name) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' ||
+                    c == '-' || c == '_';
+    if (!ok) return false;
+  }
+  return true;
+}
+
+bool ParseIndex(const std::string& text, size_t& value) {
+  if (text.empty() || text.size() > 9 || text.find_first_not_of("0123456789") != std::string::npos) return false;
+  value = std::stoul(text);
+  return true;
+}
+
+std::string ShellQuoted(const std::string& text) {
+  std::string quoted = "'";
+  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+}  // namespace
+
+const std::vector<std::string>& SweepFolder::RunOutputFiles() {
+  static const std::vector<std::string> files = {RunExit::kFileName, "summary.json",   "run.lcmlog", "run.lcmlog.part",
+                                                 "refused.lcmlog",   "trajectories.png", "output.txt"};
+  return files;
+}
+
+SweepFolder::SweepFolder(const std::string& dir) : dir_(fs::absolute(dir).lexically_normal().string()) {
+  while (dir_.size() > 1 && dir_.back() == '/') dir_.pop_back();
+}
+
+void SweepFolder::WritePlan(const SweepPlan& plan) const {
+  std::string text =
+      "# dream sweep plan: one line per run (number, folder under runs/, seed, the --set values); "
+      "sh run.sh NUMBER runs one\nindex\trun\tseed";
+  for (const std::string& key : plan.parameter_keys()) text += "\t" + Escaped(key);
+  text += "\n";
+  for (const SweepPlan::Run& run : plan.runs()) {
+    text += std::to_string(run.index) + "\t" + run.name + "\t" + std::to_string(run.seed);
+    for (const auto& parameter : run.parameters) text += "\t" + Escaped(parameter.second);
+    text += "\n";
+  }
+  files::WriteFileAtomically(Path(kPlanFile), text);
+}
+
+SweepPlan SweepFolder::ReadPlan() const {
+  const std::string path = Path(kPlanFile);
+  std::error_code error;
+  const auto size = fs::file_size(path, error);
+  if (error) throw std::runtime_error(path + ": cannot read it (" + error.message() + "); is " + dir_ + " a sweep folder?");
+  if (size > kMaxPlanBytes) throw std::runtime_error(path + ": larger than any plan (" + std::to_string(size) + " bytes)");
+  std::ifstream in(path);
+  std::string line;
+  size_t number = 0;
+  auto bad = [&](const std::string& why) { return std::runtime_error(path + ":" + std::to_string(number) + ": " + why); };
+  std::vector<std::string> keys;
+  std::vector<SweepPlan::Run> runs;
+  std::set<std::string> names;
+  bool header = false;
+  while (std::getline(in, line)) {
+    ++number;
+    if (line.empty() || line[0] == '#') continue;
+    const std::vector<std::string> fields = SplitTabs(line);
+    if (!header) {
+      if (fields.size() < 3 || fields[0] != "index" || fields[1] != "run" || fields[2] != "seed") {
+        throw bad("expected the header 'index<TAB>run<TAB>seed...'");
+      }
+      for (size_t i = 3; i < fields.size(); ++i) keys.push_back(Unescaped(fields[i]));
+      header = true;
+      continue;
+    }
+    if (fields.size() != 3 + keys.size()) {
+      throw bad("expected " + std::to_string(3 + keys.size()) + " tab-separated fields, got " + std::to_string(fields.size()));
+    }
+    SweepPlan::Run run;
+    if (!ParseIndex(fields[0], run.index) || run.index != runs.size()) {
+      throw bad("expected run number " + std::to_string(runs.size()) + ", got '" + fields[0].substr(0, 20) + "'");
+    }
+    if (runs.size() >= kMaxSweepRuns) throw bad("more than " + std::to_string(kMaxSweepRuns) + " runs");
+    if (!IsRunName(fields[1]) || !names.insert(fields[1]).second) throw bad("'" + fields[1].substr(0, 80) + "' is no run folder name, or a repeated one");
+    run.name = fields[1];
+    try {
+      const std::vector<uint64_t> seed = ParseSeedList(fields[2]);
+      if (seed.size() != 1 || fields[2].find_first_of("-,") != std::string::npos) throw std::invalid_argument("a range");
+      run.seed = seed[0];
+    } catch (const std::invalid_argument&) {
+      throw bad("'" + fields[2].substr(0, 30) + "' is not a seed");
+    }
+    for (size_t k = 0; k < keys.size(); ++k) run.parameters.emplace_back(keys[k], Unescaped(fields[3 + k]));
+    runs.push_back(std::move(run));
+  }
+  if (!header) throw std::runtime_error(path + ": no header line; not a sweep plan");
+  if (runs.empty()) throw std::runtime_error(path + ": no runs");
+  return SweepPlan::FromRuns(std::move(keys), std::move(runs));
+}
+
+void SweepFolder::WriteSettings(const nlohmann::json& settings) const {
+  files::WriteFileAtomically(Path(kSettingsFile), settings.dump(2) + "\n");
+}
+
+nlohmann::json SweepFolder::ReadSettings() const {
+  const std::string path = Path(kSettingsFile);
+  const std::string text = ReadFileHead(path, kMaxSettingsBytes + 1);
+  if (text.empty()) throw std::runtime_error(path + ": missing or empty; is " + dir_ + " a sweep folder?");
+  if (text.size() > kMaxSettingsBytes) throw std::runtime_error(path + ": larger than any sweep's settings");
+  nlohmann::json settings = nlohmann::json::parse(text, nullptr, false);
+  if (!settings.is_object()) throw std::runtime_error(path + ": not a JSON object; the file is damaged");
+  return settings;
+}
+
+void SweepFolder::WriteRunScript(const std::string& dream_path) const {
+  const std::string text =
+      "#!/bin/sh\n"
+      "# Generated by dream sweep: `sh run.sh N` runs run N of plan.tsv, the same dream run\n"
+      "# the local engine runs, into runs/<run>/ (console output in output.txt), and writes\n"
+      "# runs/<run>/exit.txt (exit code, wall time) last: a folder without it holds no finished run.\n"
+      "out=" + ShellQuoted(dir_) + "\n"
+      "dream=" + ShellQuoted(dream_path) + "\n"
+      "case \"${1:-}\" in ''|*[!0-9]*) echo \"run.sh: usage: sh run.sh N (N: a run number of $out/plan.tsv)\" >&2; exit 2;; esac\n"
+      "name=$(awk -F '\\t' -v i=\"$1\" '$1 == i { print $2; exit }' \"$out/plan.tsv\")\n"
+      "if [ -z \"$name\" ]; then echo \"run.sh: no run $1 in $out/plan.tsv\" >&2; exit 2; fi\n"
+      "dir=\"$out/runs/$name\"\n"
+      "cd \"$dir\" || exit 2\n"
+      "rm -f exit.txt exit.txt.part summary.json run.lcmlog run.lcmlog.part refused.lcmlog trajectories.png\n"
+      "start=$(date +%s%N)\n"
+      "\"$dream\" run \"$dir/config.yaml\" --out \"$dir\" > \"$dir/output.txt\" 2>&1 < /dev/null\n"
+      "code=$?\n"
+      "end=$(date +%s%N)\n"
+      "ms=$(( (end - start) / 1000000 ))\n"
+      "printf '%d %d.%03d 0\\n' \"$code\" $((ms / 1000)) $((ms % 1000)) > exit.txt.part && mv -f exit.txt.part exit.txt\n"
+      "exit \"$code\"\n";
+  files::WriteFileAtomically(Path(kRunScript), text);
+}
+
+std::string SweepFolder::RunCommand(size_t index) const {
+  return "/bin/sh " + ShellQuoted(Path(kRunScript)) + " " + std::to_string(index);
+}
+
+void SweepFolder::WriteCommands(const std::vector<size_t>& indices) const {
+  std::string text;
+  for (size_t index : indices) text += RunCommand(index) + "\n";
+  files::WriteFileAtomically(Path(kCommandsFile), text);
+}
+
+void SweepFolder::ClearRun(const std::string& run_name) const {
+  std::error_code error;
+  for (const std::string& file : RunOutputFiles()) fs::remove(RunDir(run_name) + "/" + file, error);
+}
+
+void SweepFolder::WriteRunExit(const std::string& run_name, const RunExit& exit) const {
+  ReplaceFile(RunDir(run_name) + "/" + RunExit::kFileName, exit.Text());
+}
+
+std::optional<RunExit> SweepFolder::ReadRunExit(const std::string& run_name) const {
+  const std::string text = ReadFileHead(RunDir(run_name) + "/" + RunExit::kFileName, RunExit::kMaxBytes + 1);
+  if (text.empty()) return std::nullopt;
+  return RunExit::Parse(text);
+}
+
+SweepRunResult SweepFolder::JudgeRun(const SweepPlan::Run& run, const RunExit& exit) const {
+  const std::string dir = RunDir(run.name);
+  const bool failed = exit.exit_code != 0 && exit.exit_code != 3 && exit.exit_code != 130;
+  const std::string hint = !exit.problem.empty() ? exit.problem
+                           : failed              ? LastErrorLine(dir + "/output.txt")
+                                                 : std::string();
+  return SweepRunResult::Judge(run, exit.exit_code, exit.timed_out, exit.wall_time_s, ReadSummary(dir + "/summary.json"),
+                               hint);
+}
+
+SweepRunResult SweepFolder::CollectRun(const SweepPlan::Run& run, const std::optional<SlurmTaskState>& slurm,
+                                       bool folder_busy) const {
+  const std::string dir = RunDir(run.name);
+  if (const std::optional<RunExit> exit = ReadRunExit(run.name)) return JudgeRun(run, *exit);
+  if (slurm && slurm->Queued()) return SweepRunResult::NotRun(run, slurm->Why());
+  if (folder_busy) return SweepRunResult::NotRun(run, "not finished: a dream sweep is working in this folder");
+  if (slurm) return SweepRunResult::LostRun(run, slurm->Why());
+  std::error_code error;
+  for (const char* trace : {"run.lcmlog.part", "run.lcmlog", "summary.json", "output.txt"}) {
+    if (fs::exists(dir + "/" + trace, error)) {
+      return SweepRunResult::LostRun(run, "killed before it ended (" + std::string(trace) +
+                                              " but no exit.txt; dream sweep resume runs it again)");
+    }
+  }
+  return SweepRunResult::NotRun(run, "never started");
+}
+
+std::string SweepFolder::LastErrorLine(const std::string& output_path) {
+  std::istringstream in(ReadFileTail(output_path, 64 * 1024));
+  std::string line;
+  std::string last;
+  std::string last_error;
+  while (std::getline(in, line)) {
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    last = line;
+    if (line.find("[error]") != std::string::npos || line.rfind("dream:", 0) == 0) last_error = line;
+  }
+  std::string chosen = last_error.empty() ? last : last_error;
+  // Drop spdlog's "[12:00:00.000] [error] " prefix.
+  const size_t bracket = chosen.find("] ", chosen.find("] ") + 2);
+  if (chosen.rfind("[", 0) == 0 && bracket != std::string::npos) chosen = chosen.substr(bracket + 2);
+  return chosen.size() > 160 ? chosen.substr(0, 157) + "..." : chosen;
+}
+
+nlohmann::json SweepFolder::ReadSummary(const std::string& path) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) return nullptr;
+  const std::streamoff size = in.tellg();
+  if (size <= 0 || size > static_cast<std::streamoff>(kMaxSummaryBytes)) return nullptr;
+  in.seekg(0);
+  std::string text(static_cast<size_t>(size), '\0');
+  in.read(text.data(), size);
+  nlohmann::json summary = nlohmann::json::parse(text, nullptr, false);
+  return summary.is_object() ? summary : nlohmann::json(nullptr);
+}
+
+}  // namespace dream::workflows

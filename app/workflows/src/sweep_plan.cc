@@ -1,0 +1,154 @@
+#include "dream/workflows/sweep_plan.h"
+
+#include <filesystem>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "dream/config_overrides/config_override.h"
+#include "dream/workflows/seed_list.h"
+
+namespace dream::workflows {
+namespace {
+
+// Letters, digits, _ - . stay (all the config's `name` allows); each run of
+// other characters becomes one '-', none at the ends: "[0.1, 0.2]" -> "0.1-0.2".
+std::string FolderSafe(const std::string& text, size_t max_chars) {
+  std::string safe;
+  bool pending_dash = false;
+  for (char c : text) {
+    const bool keep =
+        (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' || c == '-' || c == '_';
+    if (!keep) {
+      pending_dash = !safe.empty();
+      continue;
+    }
+    if (pending_dash) safe += '-';
+    pending_dash = false;
+    safe += c;
+    if (safe.size() >= max_chars) break;
+  }
+  return safe.empty() ? "x" : safe;
+}
+
+std::string EscapedForSingleQuotes(const std::string& text) {
+  std::string escaped;
+  for (char c : text) escaped += c == '\'' ? std::string("''") : std::string(1, c);
+  return escaped;
+}
+
+std::string ZeroPadded(uint64_t value, size_t width) {
+  std::string text = std::to_string(value);
+  return std::string(width > text.size() ? width - text.size() : 0, '0') + text;
+}
+
+}  // namespace
+
+std::string SweepPlan::Run::Label() const {
+  std::string label = "seed " + std::to_string(seed);
+  for (const auto& [key, value] : parameters) {
+    config_overrides::SweepParameter parameter{key, {}};
+    label += ", " + parameter.ShortName() + "=" + value;
+  }
+  return label;
+}
+
+SweepPlan::SweepPlan(const std::vector<uint64_t>& seeds, const std::vector<config_overrides::SweepParameter>& parameters) {
+  if (seeds.empty()) throw std::invalid_argument("--seeds: no seeds to run");
+  size_t combinations = 1;
+  for (const config_overrides::SweepParameter& parameter : parameters) {
+    for (const std::string& key : keys_) {
+      if (key == parameter.key)
+        throw std::invalid_argument("--set " + key + " is given twice; list every value in one --set");
+    }
+    keys_.push_back(parameter.key);
+    if (parameter.values.empty()) throw std::invalid_argument("--set " + parameter.key + ": no values");
+    combinations *= parameter.values.size();
+    if (combinations * seeds.size() > kMaxSweepRuns) {
+      throw std::invalid_argument("the sweep would have more than " + std::to_string(kMaxSweepRuns) + " runs");
+    }
+  }
+  uint64_t largest_seed = 0;
+  for (uint64_t seed : seeds) largest_seed = std::max(largest_seed, seed);
+  const size_t seed_width = std::to_string(largest_seed).size();
+
+  // Parameters outer (the first --set slowest), seeds inner: the table lists
+  // every seed of one combination together.
+  std::set<std::string> names;
+  for (size_t combination = 0; combination < combinations; ++combination) {
+    std::vector<std::pair<std::string, std::string>> values;
+    size_t rest = combination;
+    for (size_t p = parameters.size(); p-- > 0;) {
+      const std::vector<std::string>& choices = parameters[p].values;
+      values.insert(values.begin(), {parameters[p].key, choices[rest % choices.size()]});
+      rest /= choices.size();
+    }
+    for (uint64_t seed : seeds) {
+      Run run;
+      run.index = runs_.size();
+      run.seed = seed;
+      run.parameters = values;
+      run.name = "seed" + ZeroPadded(seed, seed_width);
+      for (size_t p = 0; p < parameters.size(); ++p) {
+        run.name += "_" + FolderSafe(parameters[p].ShortName(), 40) + "-" + FolderSafe(values[p].second, 40);
+      }
+      // Values that differ only in characters made safe would share a folder.
+      if (!names.insert(run.name).second) {
+        run.name += "_" + std::to_string(run.index);
+        names.insert(run.name);
+      }
+      runs_.push_back(std::move(run));
+    }
+  }
+}
+
+SweepPlan SweepPlan::FromRuns(std::vector<std::string> parameter_keys, std::vector<Run> runs) {
+  SweepPlan plan;
+  plan.runs_ = std::move(runs);
+  plan.keys_ = std::move(parameter_keys);
+  const std::vector<Run>& runs_ = plan.runs_;
+  const std::vector<std::string>& keys_ = plan.keys_;
+  for (size_t i = 0; i < runs_.size(); ++i) {
+    if (runs_[i].index != i) throw std::invalid_argument("run " + runs_[i].name + " is not number " + std::to_string(i));
+    if (runs_[i].parameters.size() != keys_.size()) {
+      throw std::invalid_argument("run " + runs_[i].name + " has " + std::to_string(runs_[i].parameters.size()) +
+                                  " values for " + std::to_string(keys_.size()) + " keys");
+    }
+  }
+  return plan;
+}
+
+YAML::Node SweepPlan::MakeRunConfig(const std::string& base_text, const std::string& source_name, const Run& run) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(base_text);
+  } catch (const YAML::Exception& e) {
+    throw std::invalid_argument(source_name + ":" + std::to_string(e.mark.line + 1) + ": not valid YAML: " + e.msg);
+  }
+  if (!root.IsMap()) throw std::invalid_argument(source_name + ": the config must be a YAML mapping of keys");
+  config_overrides::ApplyConfigOverride(root, "seed", std::to_string(run.seed), source_name);
+  for (const auto& [key, value] : run.parameters) config_overrides::ApplyConfigOverride(root, key, value, source_name);
+  const YAML::Node& read_only = root;
+  // The run's config lives in another folder: relative plugin paths must keep
+  // starting from the base config's (see `plugin_dir:` in config/README.md).
+  if (read_only["plugins"].IsDefined() && !read_only["plugin_dir"].IsDefined()) {
+    const std::string base_dir = std::filesystem::absolute(source_name).parent_path().lexically_normal().string();
+    config_overrides::ApplyConfigOverride(root, "plugin_dir", "'" + EscapedForSingleQuotes(base_dir) + "'", source_name);
+  }
+  if (read_only["name"].IsScalar()) {
+    config_overrides::ApplyConfigOverride(root, "name", read_only["name"].Scalar() + "_" + run.name, source_name);
+  }
+  return root;
+}
+
+std::string SweepPlan::EmitConfig(const YAML::Node& config, const std::string& header) {
+  std::string text;
+  std::istringstream lines(header);
+  for (std::string line; std::getline(lines, line);) text += "# " + line + "\n";
+  YAML::Emitter out;
+  out.SetIndent(2);
+  out << config;
+  return text + out.c_str() + "\n";
+}
+
+}  // namespace dream::workflows

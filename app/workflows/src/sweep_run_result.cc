@@ -1,0 +1,107 @@
+#include "dream/workflows/sweep_run_result.h"
+
+#include "dream/world/printf_text.h"
+
+namespace dream::workflows {
+namespace {
+
+long long Count(const nlohmann::json& object, const char* key) {
+  const auto it = object.find(key);
+  return it != object.end() && it->is_number() ? it->get<long long>() : 0;
+}
+
+std::string Text(const nlohmann::json& object, const char* key) {
+  const auto it = object.find(key);
+  return it != object.end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+
+}  // namespace
+
+SweepRunResult SweepRunResult::Judge(const SweepPlan::Run& run, int exit_code, bool timed_out, double wall_time_s,
+                                     const nlohmann::json& summary, const std::string& failure_hint) {
+  SweepRunResult result;
+  result.run = run;
+  result.exit_code = exit_code;
+  result.wall_time_s = wall_time_s;
+  result.has_summary = summary.is_object();
+  if (result.has_summary) {
+    result.end = Text(summary, "end");
+    result.verdict = Text(summary, "verdict");
+    result.steps = Count(summary, "steps");
+    const nlohmann::json violations = summary.contains("violations") ? summary["violations"] : nlohmann::json::object();
+    if (violations.is_object()) {
+      result.violations = {Count(violations, "boundary_errors"), Count(violations, "collision_errors"),
+                           Count(violations, "actuator_errors"), Count(violations, "obstacle_collisions")};
+    }
+    const nlohmann::json metrics = summary.contains("metrics") ? summary["metrics"] : nlohmann::json::object();
+    if (metrics.is_object() && metrics.contains("min_pairwise_distance_m") &&
+        metrics["min_pairwise_distance_m"].is_number()) {
+      result.min_distance_m = metrics["min_pairwise_distance_m"].get<double>();
+    }
+    result.goal = session::ExperimentGoal::Judge(summary);
+  }
+
+  const std::string hint = failure_hint.empty() ? std::string() : ": " + failure_hint;
+  if (timed_out) {
+    result.problem = "timed out after " + world::PrintfText("%.0f", wall_time_s) + " s";
+  } else if (exit_code == 130) {
+    result.status = Status::kInterrupted;
+    result.problem = "interrupted";
+  } else if (exit_code < 0) {
+    result.problem = failure_hint.empty() ? std::string("did not start") : failure_hint;
+  } else if (exit_code != 0 && exit_code != 3 && exit_code != 5) {
+    // dream run: 1 config, 4 did not finish (3 rejected, 5 not ready: it ran); above 128 a signal killed it.
+    result.problem = (exit_code > 128 ? "killed by signal " + std::to_string(exit_code - 128)
+                                      : "exit " + std::to_string(exit_code)) +
+                     hint;
+  } else if (!result.has_summary) {
+    result.problem = "exit " + std::to_string(exit_code) + " but no readable summary.json";
+  } else if (result.end != "finished") {
+    result.problem = "run ended '" + result.end + "'" + hint;
+  } else {
+    result.status = Status::kRan;
+  }
+  result.success =
+      result.status == Status::kRan && result.verdict != "rejected" && result.collisions() == 0 && result.goal.met;
+  return result;
+}
+
+SweepRunResult SweepRunResult::NotRun(const SweepPlan::Run& run, const std::string& why) {
+  SweepRunResult result;
+  result.run = run;
+  result.status = Status::kNotRun;
+  result.problem = why;
+  return result;
+}
+
+SweepRunResult SweepRunResult::LostRun(const SweepPlan::Run& run, const std::string& why) {
+  SweepRunResult result;
+  result.run = run;
+  result.status = Status::kFailed;
+  result.problem = why;
+  return result;
+}
+
+std::string SweepRunResult::OutcomeText() const {
+  if (status == Status::kInterrupted) return "interrupted";
+  if (status == Status::kNotRun) return "not run (" + problem + ")";
+  if (status == Status::kFailed) return "failed to run (" + problem + ")";
+  if (success) return "success";
+  std::string why;
+  auto add = [&why](const std::string& part) { why += (why.empty() ? "" : "; ") + part; };
+  if (violations.collision_errors > 0) add(std::to_string(violations.collision_errors) + " collision errors");
+  if (violations.obstacle_collisions > 0) {
+    add(std::to_string(violations.obstacle_collisions) + " obstacle collisions");
+  }
+  if (violations.boundary_errors > 0) add(std::to_string(violations.boundary_errors) + " boundary errors");
+  if (verdict == "rejected" && why.empty()) add("rejected by the Robotarium checks");
+  if (!goal.met) add(goal.detail);
+  return "no success (" + why + ")";
+}
+
+std::string SweepRunResult::ShortOutcomeText() const {
+  if (status == Status::kRan) return success ? "success" : "no success";
+  return OutcomeText();
+}
+
+}  // namespace dream::workflows

@@ -1,0 +1,26 @@
+#include "dream/workflows/sweep_settings.h"
+
+#include <stdexcept>
+
+namespace dream::workflows {
+
+SweepSettings::Engine SweepSettings::ParseEngine(const std::string& name) {
+  if (name == "local") return Engine::kLocal;
+  if (name == "slurm") return Engine::kSlurm;
+  if (name == "plan") return Engine::kPlan;
+  throw std::invalid_argument("--engine " + name + ": expected local, slurm or plan");
+}
+
+std::string SweepSettings::EngineName(Engine engine) {
+  switch (engine) {
+    case Engine::kSlurm:
+      return "slurm";
+    case Engine::kPlan:
+      return "plan";
+    case Engine::kLocal:
+      break;
+  }
+  return "local";
+}
+
+}  // namespace dream::workflows
