@@ -44,6 +44,7 @@ int main(int argc, char** argv) {
   DeclareCalibrateCommand(line);  // fit the lab model to real runs (docs/experiments.md)
   DeclareSweepCommand(line);
   DeclareRenderCommand(line);  // pictures and videos (docs/rendering.md)
+  DeclareViewCommand(line);    // the live arena in a browser (docs/view.md)
   DeclareVersionCommand(line);
 
   // CLI11 would only say "A subcommand is required"; name the unknown word.

@@ -528,9 +528,12 @@ RunOutcome SimNode::Run(const std::atomic<bool>& stop) {
   PublishStep(true);
   step_published_ = last_resend_ = Clock::now();
   const bool lockstep = options_.mode == WorldMode::kLockstep;
-  // Real time: one world step per time step of wall time.
+  // Real time: one world step per time step of wall time (over the pace).
+  // Lockstep with a pace: no step sooner than that, to watch the run.
+  const bool paced = !lockstep || options_.pace > 0.0;
+  const double pace = options_.pace > 0.0 ? options_.pace : 1.0;
   const auto step_period =
-      std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(world_.time_step_s()));
+      std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(world_.time_step_s() / pace));
   Clock::time_point next_realtime_step;
 
   while (true) {
@@ -563,7 +566,7 @@ RunOutcome SimNode::Run(const std::atomic<bool>& stop) {
         if (!AllLiveAnswered() && SecondsBetween(step_published_, now) > options_.agent_timeout_s) {
           MarkSilentRobotsLost(now);
         }
-        ready = AllLiveAnswered();
+        ready = AllLiveAnswered() && (!paced || now >= next_realtime_step);
       } else {
         ready = now >= next_realtime_step;
         if (ready) MarkSilentRobotsLost(now);
@@ -571,6 +574,8 @@ RunOutcome SimNode::Run(const std::atomic<bool>& stop) {
       if (ready) {
         AdvanceWorld();
         next_realtime_step += step_period;
+        // Paced lockstep behind its pace (slow agents): no burst to catch up.
+        if (lockstep && next_realtime_step < now) next_realtime_step = now;
         bool all_done = options_.stop_when_done;
         for (const RobotSlot& robot : robots_) all_done = all_done && robot.done;
         const bool world_ended = world_.step() >= world_.last_step();
@@ -604,7 +609,7 @@ RunOutcome SimNode::Run(const std::atomic<bool>& stop) {
       last_resend_ = now;
     }
     int timeout_ms = 10;
-    if (!lockstep && state_ == run_status_t::RUNNING) {
+    if (paced && state_ == run_status_t::RUNNING && (!lockstep || AllLiveAnswered())) {
       const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(next_realtime_step - Clock::now());
       timeout_ms = static_cast<int>(std::max<int64_t>(0, std::min<int64_t>(wait.count(), 10)));
     }
