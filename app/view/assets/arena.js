@@ -34,13 +34,13 @@ const DreamArena = (() => {
     ctx.textBaseline = "top";
     for (let x = Math.ceil(xmin / tick) * tick; x <= xmax + 1e-9; x += tick) {
       ctx.beginPath(); ctx.moveTo(T.px(x), T.py(ymin)); ctx.lineTo(T.px(x), T.py(ymax)); ctx.stroke();
-      ctx.fillText(x.toFixed(1), T.px(x), T.py(ymin) + 14);
+      ctx.fillText((Math.abs(x) < 1e-9 ? 0 : x).toFixed(1), T.px(x), T.py(ymin) + 14);
     }
     ctx.textAlign = "right";
     ctx.textBaseline = "middle";
     for (let y = Math.ceil(ymin / tick) * tick; y <= ymax + 1e-9; y += tick) {
       ctx.beginPath(); ctx.moveTo(T.px(xmin), T.py(y)); ctx.lineTo(T.px(xmax), T.py(y)); ctx.stroke();
-      ctx.fillText(y.toFixed(1), T.px(xmin) - 16, T.py(y));
+      ctx.fillText((Math.abs(y) < 1e-9 ? 0 : y).toFixed(1), T.px(xmin) - 16, T.py(y));
     }
     ctx.textAlign = "left";
     ctx.fillText("x (m)", T.px(xmax) - 30, T.py(ymin) + 32);

@@ -181,10 +181,11 @@ void FinalStatus(JsonWriter& json, const run_log::RunLog& log) {
 
 }  // namespace
 
-std::string RunReplayJson(const run_log::RunLog& log, const ViewSetup& setup) {
+std::string RunReplayJson(const run_log::RunLog& log, const ViewSetup& setup, size_t max_pose_values) {
+  max_pose_values = std::max<size_t>(max_pose_values, 1);
   const size_t steps = log.poses().size();
   const size_t per_step = static_cast<size_t>(std::max(1, log.num_robots())) * 3;
-  const size_t stride = std::max<size_t>(1, (steps * per_step + kMaxPoseValues - 1) / kMaxPoseValues);
+  const size_t stride = std::max<size_t>(1, (steps * per_step + max_pose_values - 1) / max_pose_values);
   std::vector<size_t> frames;
   for (size_t i = 0; i < steps; i += stride) frames.push_back(i);
   if (steps > 0 && frames.back() != steps - 1) frames.push_back(steps - 1);
