@@ -10,8 +10,19 @@ const DreamArena = (() => {
   const finite = (...values) => values.every((v) => typeof v === "number" && Number.isFinite(v));
 
   // World metres -> canvas pixels, fitting the arena (and a margin) in the canvas.
-  function transform(canvas, setup) {
-    const [xmin, xmax, ymin, ymax] = setup.arena;
+  // Robots outside the arena widen the view (up to 1 m beyond it), so one
+  // that left is still drawn where it is.
+  function transform(canvas, setup, scene) {
+    let [xmin, xmax, ymin, ymax] = setup.arena;
+    const [ax0, ax1, ay0, ay1] = setup.arena;
+    const r = (setup.robot_diameter || 0.11) / 2;
+    for (let i = 0; scene && i < scene.x.length; i++) {
+      if (!finite(scene.x[i], scene.y[i])) continue;
+      xmin = Math.min(xmin, Math.max(ax0 - 1, scene.x[i] - r));
+      xmax = Math.max(xmax, Math.min(ax1 + 1, scene.x[i] + r));
+      ymin = Math.min(ymin, Math.max(ay0 - 1, scene.y[i] - r));
+      ymax = Math.max(ymax, Math.min(ay1 + 1, scene.y[i] + r));
+    }
     const pad = 0.12;
     const m = { left: 52, right: 14, top: 14, bottom: 40 };
     const w = canvas.width - m.left - m.right;
@@ -161,22 +172,37 @@ const DreamArena = (() => {
     }
   }
 
+  // A rule broken over many steps (robots pushing each other) gives a mark
+  // each step: each robot or pair is drawn once, an X where it started and,
+  // while the latest is new, a ring with what and when.
   function violations(ctx, T, marks) {
+    const episodes = new Map();
     for (const mark of marks || []) {
       if (!finite(mark.x, mark.y)) continue;
-      const x = T.px(mark.x), y = T.py(mark.y);
-      ctx.strokeStyle = "#d00";
-      ctx.lineWidth = 2;
+      const key = `${mark.kind}/${mark.robot}/${mark.other}`;
+      const episode = episodes.get(key);
+      if (!episode) episodes.set(key, { first: mark, latest: mark });
+      else episode.latest = mark;
+    }
+    ctx.strokeStyle = "#d00";
+    ctx.lineWidth = 2;
+    for (const { first, latest } of episodes.values()) {
+      const x = T.px(first.x), y = T.py(first.y);
       ctx.beginPath();
       ctx.moveTo(x - 5, y - 5); ctx.lineTo(x + 5, y + 5); ctx.moveTo(x - 5, y + 5); ctx.lineTo(x + 5, y - 5);
       ctx.stroke();
-      if (mark.flash > 0) {  // new: a ring that shrinks as it fades, and what and when
-        ctx.globalAlpha = mark.flash;
-        ctx.beginPath(); ctx.arc(x, y, 12 + 24 * mark.flash, 0, 2 * Math.PI); ctx.stroke();
+      if (latest.flash > 0) {
+        const lx = T.px(latest.x), ly = T.py(latest.y);
+        ctx.globalAlpha = latest.flash;
+        ctx.beginPath(); ctx.arc(lx, ly, 12 + 24 * latest.flash, 0, 2 * Math.PI); ctx.stroke();
         ctx.fillStyle = "#d00";
         ctx.font = "bold 12px system-ui, sans-serif";
         ctx.textAlign = "left";
-        ctx.fillText(DreamArena.describe(mark), x + 14, y - 14);
+        ctx.textBaseline = "bottom";
+        const since = first.step !== latest.step ? ` (since step ${first.step})` : "";
+        const text = describe(latest) + since;
+        const width = ctx.measureText(text).width;  // near the right edge: written to the left
+        ctx.fillText(text, lx + 14 + width > ctx.canvas.width ? lx - 14 - width : lx + 14, ly - 14);
         ctx.globalAlpha = 1;
       }
     }
@@ -193,7 +219,7 @@ const DreamArena = (() => {
     const ctx = canvas.getContext("2d");
     ctx.clearRect(0, 0, canvas.width, canvas.height);
     if (!setup || !setup.arena) return;
-    const T = transform(canvas, setup);
+    const T = transform(canvas, setup, scene);
     axes(ctx, T, setup);
     obstacles(ctx, T, scene && scene.obstacles);
     if (layers.goals) goals(ctx, T, setup);

@@ -188,6 +188,7 @@
       view.marks.set(`${m.kind}/${m.step}/${m.robot}/${m.other}`, m);
       marks.push({ ...m, flash: Math.max(0, 1 - (step - m.step) / flashSteps) });
     }
+    showViolationList(marks);
     const c = run.counts[lastAtOrBefore(run.counts, step, (entry) => entry[0])];
     const atEnd = i === run.steps.length - 1;
     const fin = run.final || {};
@@ -239,7 +240,6 @@
     $("step-back").onclick = () => { setPlaying(false); seek(view.replay.index - 1); };
     $("scrub").oninput = () => seek(Number($("scrub").value));
     $("speed").onchange = () => { view.replay.speed = Number($("speed").value); replayScene(view.replay.index); };
-    showViolationList(run.violations);
     resize();
     seek(0);
   }
