@@ -47,7 +47,7 @@ struct RunArgs {
   long long steps = 0;          ///< 0: the config's
   std::string mode;             ///< empty: the config's
   bool all_steps = false;       ///< run every step even when all robots report done
-  double pace = 0.0;            ///< --pace: simulated seconds per wall second; 0: the default (unpaced; 1 with --view)
+  double pace = -1.0;           ///< --pace: simulated seconds per wall second; 0: unpaced; < 0 (not given): unpaced, 1 with --view
   bool view = false;            ///< dream run --view: serve the live arena (dream view) while it runs
   int view_port = 8077;         ///< --view-port
   std::string view_bind = "127.0.0.1";  ///< --view-bind

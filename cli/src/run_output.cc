@@ -18,7 +18,7 @@ std::unique_ptr<session::RunSession> OpenRunSession(const RunArgs& args) {
   }
   if (!args.mode.empty()) config.sim.mode = sim::ParseWorldMode(args.mode);
   if (args.all_steps) config.sim.stop_when_done = false;
-  if (args.pace > 0.0) {
+  if (args.pace >= 0.0) {
     config.sim.pace = args.pace;
   } else if (args.view) {
     config.sim.pace = 1.0;  // --view: watched in real time unless --pace says otherwise

@@ -29,8 +29,12 @@ RunView::RunView(lcm::LcmInterface& bus, const config::RunConfig& config, const 
     : server_(view::ViewServer::Options{bind, port, false, 8}) {
   live_ = std::make_unique<view::LiveView>(bus, server_,
                                            ViewSetupOfConfig(config, view::ViewSetup::Mode::kLive, config.source));
-  std::cout << "dream view: open " << server_.url() << " to watch the run (pace "
-            << (config.sim.pace > 0 ? config.sim.pace : 1.0) << "x real time)" << std::endl;
+  std::cout << "dream view: open " << server_.url() << " to watch the run ";
+  if (config.sim.pace > 0) {
+    std::cout << "(paced to " << config.sim.pace << "x real time)" << std::endl;
+  } else {
+    std::cout << "(unpaced: as fast as it goes)" << std::endl;
+  }
 }
 
 }  // namespace dream::cli

@@ -93,9 +93,9 @@ CommandLine::CommandWithArgs<RunArgs> AddRunCommand(CommandLine& line, const std
   command->add_flag("--all-steps", args->all_steps, "Run every step even when all robots report done (benchmarks)");
   command
       ->add_option("--pace", args->pace,
-                   "Simulated seconds per wall second, to watch the run (1: real time, 4: four times faster);\n"
-                   "lockstep stays lockstep, only no faster. Default: as fast as it goes (1 with --view)")
-      ->check(CLI::Range(0.001, 1000.0));
+                   "Simulated seconds per wall second, to watch the run (1: real time, 4: four times faster,\n"
+                   "0: as fast as it goes); lockstep stays lockstep, only no faster. Default: 0 (1 with --view)")
+      ->check(CLI::Range(0.0, 1000.0));
   return {command, args};
 }
 

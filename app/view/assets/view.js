@@ -45,8 +45,16 @@
     return [...view.marks.values()].map((m) => ({ ...m, flash: Math.max(0, 1 - (now - m.seen) / FLASH_MS) }));
   }
 
+  // Drawn when something changed, not on every display frame: a page left
+  // open beside a run should not take a core from it.
   function draw() {
+    view.dirty = false;
     DreamArena.draw(canvas, view.setup, view.scene, layers(), view.paths);
+  }
+
+  function animating() {
+    const s = view.scene;
+    return !!(s && ((s.marks && s.marks.some((m) => m.flash > 0)) || (s.links && s.links.length > 0)));
   }
 
   function showPanel(step, t, counts, stateName) {
@@ -71,6 +79,10 @@
 
   function showViolationList(marks) {
     const list = $("violation-list");
+    const last = marks[marks.length - 1];
+    const key = `${marks.length}/${last ? last.step : -1}`;
+    if (list.dataset.shown === key) return;  // unchanged: no work for the page's layout
+    list.dataset.shown = key;
     const latest = marks.slice(-50).reverse();
     list.replaceChildren(...latest.map((m) => {
       const item = document.createElement("li");
@@ -208,6 +220,7 @@
       obstacles: o >= 0 ? run.obstacles[o][1] : [], links, marks, lost: view.counts.lost || [] };
     const stateName = atEnd && run.final ? STATE_NAMES[run.final.state] || "-" : "replaying";
     showPanel(step, t, view.counts, stateName);
+    view.dirty = true;
     publishState({ state: stateName,
       replay: { index: i, frames: run.steps.length, playing: view.replay.playing, speed: view.replay.speed } });
   }
@@ -262,6 +275,7 @@
   // ---- connection and the drawing loop ----
   function onSetup(setup) {
     view.setup = setup;
+    view.dirty = true;
     $("source").textContent = `${setup.mode}: ${setup.source}`;
     $("run-name").textContent = setup.run_name || "-";
     if (setup.mode === "replay" && !view.replay) {
@@ -289,15 +303,19 @@
       else if (message.type === "frame" && !view.replay) {
         onFrame(message);
         showViolationList([...view.marks.values()]);
-        draw();
+        view.dirty = true;  // drawn on the next display frame: several frames in one are drawn once
       }
     };
   }
 
   function loop(now) {
+    const playing = view.replay && view.replay.playing;
     advanceReplay(now);
-    if (view.live && !view.replay) liveScene(now);  // flashes fade, links age, between frames too
-    draw();
+    if (view.live && !view.replay && (view.dirty || animating())) {
+      liveScene(now);  // flashes fade and links age between frames too
+      view.dirty = true;
+    }
+    if (view.dirty || playing) draw();
     requestAnimationFrame(loop);
   }
 

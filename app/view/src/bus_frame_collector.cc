@@ -46,15 +46,14 @@ void BusFrameCollector::OnMessage(const std::string& channel, const void* data, 
       return;
     }
     std::lock_guard<std::mutex> lock(mutex_);
-    OnPoses(poses_in_);
+    OnPoses();
   } else if (channel == kMeasuredPosesChannel) {
-    robot_poses_t& measured = poses_in_;
-    const bool decoded = lcm::Decode(data, size, &measured);
+    const bool decoded = lcm::Decode(data, size, &measured_in_);
     std::lock_guard<std::mutex> lock(mutex_);
     if (!decoded) {
       ++bad_messages_;
-    } else if (measured.run_id == run_id_) {
-      measured_ = measured;
+    } else if (measured_in_.run_id == run_id_) {
+      std::swap(measured_, measured_in_);
       ++version_;
     }
   } else if (channel == lcm::kObstaclesChannel) {
@@ -65,8 +64,9 @@ void BusFrameCollector::OnMessage(const std::string& channel, const void* data, 
       return;
     }
     if (run_id_ != 0 && obstacles_in_.run_id != run_id_) return;  // another world's: not drawn over this one
+    // Swapped, not copied: the handler's cost per step stays a decode.
     if (obstacles_in_.step != obstacles_.step) std::swap(previous_obstacles_, obstacles_);
-    obstacles_ = obstacles_in_;
+    std::swap(obstacles_, obstacles_in_);
     ++version_;
   } else if (channel == lcm::kStatusChannel) {
     const bool decoded = lcm::Decode(data, size, &status_in_);
@@ -100,11 +100,12 @@ void BusFrameCollector::StartRun(int64_t run_id) {
   marks_located_ = 0;
 }
 
-void BusFrameCollector::OnPoses(const robot_poses_t& poses) {
-  if (poses.run_id != run_id_) StartRun(poses.run_id);
+void BusFrameCollector::OnPoses() {
+  if (poses_in_.run_id != run_id_) StartRun(poses_in_.run_id);
   // A resend of the same step replaces it; a new step moves it to previous.
-  if (poses.step != poses_.step || poses_.num_robots == 0) std::swap(previous_poses_, poses_);
-  poses_ = poses;
+  // Swapped, not copied: the handler's cost per step stays a decode.
+  if (poses_in_.step != poses_.step || poses_.num_robots == 0) std::swap(previous_poses_, poses_);
+  std::swap(poses_, poses_in_);
   ++version_;
 }
 

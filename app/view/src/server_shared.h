@@ -27,6 +27,8 @@ struct ServerShared {
   std::vector<std::weak_ptr<WebSocketSession>> clients;
   std::atomic<size_t> client_count{0};
   std::atomic<int64_t> dropped_frames{0};
+  /// WebSocket writes started and not completed (the server waits for them, briefly, when it stops).
+  std::atomic<int> writes_in_flight{0};
 };
 
 }  // namespace dream::view

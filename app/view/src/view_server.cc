@@ -5,6 +5,8 @@
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/asio/post.hpp>
+#include <chrono>
+#include <future>
 #include <stdexcept>
 #include <thread>
 #include <utility>
@@ -72,6 +74,17 @@ ViewServer::Impl::Impl(const Options& options) : bind_address_(options.bind_addr
 }
 
 ViewServer::Impl::~Impl() {
+  // The last frame (a run's FINISHED) was just broadcast: let the browsers
+  // that keep up receive it, for half a second at most, then stop.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(500);
+  auto flushed = std::make_shared<std::promise<void>>();
+  std::future<void> posted = flushed->get_future();
+  net::post(io_, [flushed] { flushed->set_value(); });
+  if (posted.wait_until(deadline) == std::future_status::ready) {
+    while (shared_->writes_in_flight.load() > 0 && std::chrono::steady_clock::now() < deadline) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+  }
   io_.stop();
   if (thread_.joinable()) thread_.join();
 }

@@ -57,13 +57,15 @@ void WebSocketSession::Send(ClientQueue::Message message) {
 void WebSocketSession::WriteNext() {
   writing_ = queue_.Pop();
   if (writing_ == nullptr) return;
+  shared_.writes_in_flight.fetch_add(1);
   ws_.async_write(boost::asio::buffer(*writing_), [self = shared_from_this()](beast::error_code error, size_t) {
     self->writing_.reset();
     if (error) {
       self->Stop();
-      return;
+    } else {
+      self->WriteNext();
     }
-    self->WriteNext();
+    self->shared_.writes_in_flight.fetch_sub(1);  // after the next write started: never 0 between two
   });
 }
 

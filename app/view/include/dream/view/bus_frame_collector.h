@@ -52,14 +52,16 @@ class BusFrameCollector {
   void OnMessage(const std::string& channel, const void* data, int size);
 
  private:
-  void OnPoses(const robot_poses_t& poses);
+  void OnPoses();  // poses_in_ decoded: the newest poses
   void OnStatus(const run_status_t& status);
   void StartRun(int64_t run_id);
 
   mutable std::mutex mutex_;
   ViolationLocator locator_;
-  // Scratch decoders: the handler allocates only when a message grows.
+  // Where the handler decodes (on the bus's thread, outside the lock); then
+  // swapped with the newest, so it allocates only when a message grows.
   robot_poses_t poses_in_{};
+  robot_poses_t measured_in_{};
   obstacles_t obstacles_in_{};
   run_status_t status_in_{};
   // The newest state, under mutex_.
