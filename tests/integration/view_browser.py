@@ -8,6 +8,8 @@ what it draws) must show the three robots with their ids at the positions the ru
 the step shown, the step advancing, each violation marked where the log says it happened, the
 counts of the run's summary and the verdict "rejected". A screenshot is kept (live.png).
 
+lcm-logplayer: the run's log played on the bus (4x) is drawn live too, as a new run.
+
 Replay: `dream view RUN` of that run; the page's timeline is driven as a user would (play, pause,
 step forward and back, scrub, speed) and must show the log's poses at the chosen step, and only
 the violations up to it. A screenshot is kept (replay.png).
@@ -124,6 +126,9 @@ def watch_live(ctx, args, page, config, run_dir, poses_holder):
         time.sleep(0.05)
     code = ctx.wait("launch", 5)
     check(code == 3, f"dream launch exited {code}; the config's run breaks the rules (expected 3, rejected)")
+    # --pace 3: three times real time at most (a slower machine only goes slower).
+    rate = read_summary(run_dir)["steps_per_second"]
+    check(rate <= 3 / 0.033 * 1.05, f"dream launch --pace 3 ran {rate:.0f} steps/s, over three times real time")
     check(len(steps_seen) >= 5 and steps_seen == sorted(steps_seen),
           f"the page's step did not advance with the run: {steps_seen}")
     check(flash_shot, "no violation was flashing on the page at any time during the run")
@@ -159,6 +164,15 @@ def test(ctx):
           f"the page's counts {final['counts']} are not summary.json's {summary}")
     check(final["verdict"] == "rejected", f"the page's verdict is {final['verdict']}, the run was rejected")
     print(f"live: {len(steps_seen)} steps seen, {len(final['violations'])} violations marked")
+
+    # A lab run, or any run log, watched by playing it on the bus.
+    ctx.start("logplayer", ["lcm-logplayer", f"--lcm-url={os.environ['LCM_DEFAULT_URL']}", "-s", "4",
+                            os.path.join(run_dir, "run.lcmlog")])
+    wait_for(page, "the played log from its start", lambda s: s["step"] < STEPS / 2, 10)
+    played = wait_for(page, "the played log to its end", lambda s: s["step"] == STEPS, 20)
+    check_robots(played, poses, "lcm-logplayer")
+    check_marks(played["violations"], poses, "lcm-logplayer")
+    ctx.wait("logplayer", 10)
 
     ctx.start("replay", [args.dream, "view", run_dir, "--port", "0"])
     ctx.wait_for_output("replay", URL.pattern, 10)

@@ -127,6 +127,19 @@ TEST_F(BusFrameCollectorTest, ANewRunStartsOver) {
   EXPECT_EQ(frame_.violations_located, 0);
 }
 
+TEST_F(BusFrameCollectorTest, TheSameRunFromItsStartAgainStartsOver) {
+  // A run's log played on the bus a second time: the same run id, the steps from 0 again.
+  PublishStep(bus_, 5, 7, {{0.0, 0.0, 0.0}, {0.05, 0.0, 0.0}}, 0);
+  PublishStep(bus_, 5, 8, {{0.0, 0.0, 0.0}, {0.05, 0.0, 0.0}}, 1);
+  PublishStep(bus_, 5, 7, {{0.0, 0.0, 0.0}, {0.05, 0.0, 0.0}}, 0);  // one step back: a resend, not a restart
+  ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
+  EXPECT_EQ(frame_.violations.size(), 1u);
+  PublishStep(bus_, 5, 0, {{0.5, 0.0, 0.0}, {1.0, 0.0, 0.0}}, 0);
+  ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
+  EXPECT_EQ(frame_.step, 0);
+  EXPECT_TRUE(frame_.violations.empty());
+}
+
 TEST_F(BusFrameCollectorTest, AnotherWorldsStatusIsNotDrawnOverThisRun) {
   PublishStep(bus_, 5, 0, {{0.0, 0.0, 0.0}}, 0);
   lcm::Publish(bus_, "DREAM_STATUS", Status(99, 0, 1000));

@@ -125,7 +125,8 @@
 
   function onFrame(f) {
     const now = performance.now();
-    if (f.run !== view.run) startRun(f.run);
+    const last = view.live ? view.live.step : -1;
+    if (f.run !== view.run || f.step + 1 < last) startRun(f.run);  // another run, or this one played again
     view.frames += 1;
     if (f.step >= 0) {
       view.steps.push([now, f.step]);

@@ -101,7 +101,9 @@ void BusFrameCollector::StartRun(int64_t run_id) {
 }
 
 void BusFrameCollector::OnPoses() {
-  if (poses_in_.run_id != run_id_) StartRun(poses_in_.run_id);
+  // Another run, or the same one from its start again (its log played once more): start over.
+  const bool restarted = poses_.num_robots > 0 && poses_in_.step + 1 < poses_.step;
+  if (poses_in_.run_id != run_id_ || restarted) StartRun(poses_in_.run_id);
   // A resend of the same step replaces it; a new step moves it to previous.
   // Swapped, not copied: the handler's cost per step stays a decode.
   if (poses_in_.step != poses_.step || poses_.num_robots == 0) std::swap(previous_poses_, poses_);
