@@ -27,7 +27,9 @@ int RunEmbedded(const RunArgs& args) {
                             {config.sim.agent_timeout_s, config.sim.start_timeout_s, 0.0});
   std::unique_ptr<RunView> view;
   if (args.view) view = std::make_unique<RunView>(bus, config, args.view_bind, args.view_port);
-  return ExitCodeFor(run->Run(bus, {out_dir, ConfigTextForRunFolder(args, config)}));
+  const session::RunResult result = run->Run(bus, {out_dir, ConfigTextForRunFolder(args, config)});
+  if (view) view->ShowEndOf(out_dir);
+  return ExitCodeFor(result);
 }
 
 int RunSimOnly(const RunArgs& args) {

@@ -37,4 +37,12 @@ RunView::RunView(lcm::LcmInterface& bus, const config::RunConfig& config, const 
   }
 }
 
+void RunView::ShowEndOf(const std::string& run_dir) {
+  try {
+    live_->ShowEndOf(run_dir + "/run.lcmlog");
+  } catch (const std::exception& e) {
+    spdlog::warn("dream view: the page shows the run without its last step: {}", e.what());
+  }
+}
+
 }  // namespace dream::cli

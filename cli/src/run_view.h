@@ -18,6 +18,9 @@ class RunView {
   /// Listens on `bind`:`port` and prints the page's address.
   /// @throws std::runtime_error when it cannot listen there.
   RunView(lcm::LcmInterface& bus, const config::RunConfig& config, const std::string& bind, int port);
+  /// Shows the run's end, from its log in `run_dir` (the last messages of a
+  /// memq run are never handled); a log that cannot be read is only logged.
+  void ShowEndOf(const std::string& run_dir);
 
  private:
   view::ViewServer server_;

@@ -17,6 +17,7 @@
 #include "dream/view/frame_json.h"
 #include "dream/view/live_view.h"
 #include "dream/view/replay_json.h"
+#include "dream/view/thread_priority.h"
 #include "dream/view/view_server.h"
 #include "run_view.h"
 #include "shared_options.h"
@@ -71,6 +72,8 @@ int RunLiveView(const ViewArgs& args) {
   }
   setup.mode = view::ViewSetup::Mode::kLive;
   setup.source = url;
+  // Best effort: the runs it watches (on this machine, often) get the cores first.
+  view::LowerThisProcesssPriority();
   lcm::LcmBus bus(url);
   view::ViewServer server({args.bind, args.port, false, 8});
   view::LiveView live(bus, server, setup);

@@ -10,6 +10,9 @@ counts of the run's summary and the verdict "rejected". A screenshot is kept (li
 
 lcm-logplayer: the run's log played on the bus (4x) is drawn live too, as a new run.
 
+Embedded: `dream run --view --pace 4` of the same config: the page follows it to its last step
+(the end of a run on the process's own memq bus, which no handler reads, comes from its log).
+
 Replay: `dream view RUN` of that run; the page's timeline is driven as a user would (play, pause,
 step forward and back, scrub, speed) and must show the log's poses at the chosen step, and only
 the violations up to it. A screenshot is kept (replay.png).
@@ -208,6 +211,18 @@ def test(ctx):
                   " s.dispatchEvent(new Event('change')); })()")
     wait_for(page, "speed 4x", lambda s: s["replay"]["speed"] == 4, 2)
     page.screenshot(os.path.join(args.artifacts, "replay.png"))
+
+    embedded_dir = ctx.path("embedded")
+    ctx.start("embedded", [args.dream, "run", config, "--out", embedded_dir, "--view", "--view-port", "0",
+                           "--pace", "4"])
+    ctx.wait_for_output("embedded", URL.pattern, 10)
+    page.navigate(URL.search(ctx.output("embedded")).group(1))
+    ended = wait_for(page, "dream run --view to its end", lambda s: s["mode"] == "live" and s["step"] == STEPS and
+                     s.get("state") == "finished", 20)
+    ctx.wait("embedded", 10)
+    embedded_poses = poses_by_step(dream, os.path.join(embedded_dir, "run.lcmlog"))
+    check_robots(ended, embedded_poses, "dream run --view")
+    check_marks(ended["violations"], embedded_poses, "dream run --view")
     page.close()
     for shot in ("live.png", "replay.png"):
         path = os.path.join(args.artifacts, shot)

@@ -1,9 +1,12 @@
 #include "dream/view/live_view.h"
 
 #include <exception>
+#include <vector>
 #include <utility>
 
+#include "dream/lcm/log_reader.h"
 #include "dream/view/frame_json.h"
+#include "dream/view/thread_priority.h"
 
 namespace dream::view {
 
@@ -12,6 +15,7 @@ LiveView::LiveView(lcm::LcmInterface& bus, ViewServer& server, ViewSetup setup,
     : server_(server), setup_(std::move(setup)), collector_(bus, setup_.world), frame_period_(frame_period) {
   server_.SetSetup(SetupJson(setup_));
   pump_ = std::thread([this] {
+    LowerThisThreadsPriority();
     while (!stop_.load()) {
       PumpOnce();
       std::this_thread::sleep_for(frame_period_);
@@ -35,6 +39,23 @@ void LiveView::PumpOnce() {
   }
   server_.Broadcast(FrameJson(frame_));
   frames_sent_.fetch_add(1);
+}
+
+void LiveView::ShowEndOf(const std::string& log_path) {
+  lcm::LogReader reader(log_path);
+  lcm::LogRecord record;
+  // The last of each channel, handed over in the order the world publishes a step.
+  const std::vector<std::string> channels = {"DREAM_OBSTACLES", "DREAM_STATUS", "DREAM_POSES", "DREAM_MEASURED_POSES"};
+  std::vector<std::vector<uint8_t>> last(channels.size());
+  while (reader.Next(&record)) {
+    for (size_t i = 0; i < channels.size(); ++i) {
+      if (record.channel == channels[i]) last[i].swap(record.data);
+    }
+  }
+  for (size_t i = 0; i < channels.size(); ++i) {
+    if (!last[i].empty()) collector_.OnMessage(channels[i], last[i].data(), static_cast<int>(last[i].size()));
+  }
+  PumpOnce();
 }
 
 void LiveView::AddRadioLinks(ViewFrame* frame) {

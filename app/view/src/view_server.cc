@@ -11,6 +11,7 @@
 #include <thread>
 #include <utility>
 
+#include "dream/view/thread_priority.h"
 #include "http_session.h"
 #include "server_shared.h"
 #include "websocket_session.h"
@@ -70,7 +71,10 @@ ViewServer::Impl::Impl(const Options& options) : bind_address_(options.bind_addr
   shared_ = std::make_unique<ServerShared>(
       RequestFilter(endpoint.address().is_loopback(), port_, options.replay), options.queue_frames);
   Accept();
-  thread_ = std::thread([this] { io_.run(); });
+  thread_ = std::thread([this] {
+    LowerThisThreadsPriority();
+    io_.run();
+  });
 }
 
 ViewServer::Impl::~Impl() {

@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <string>
 #include <thread>
 
 #include "dream/lcm/lcm_interface.h"
@@ -28,6 +29,11 @@ class LiveView {
 
   /// Encodes and broadcasts the newest frame if it changed; what the pump runs.
   void PumpOnce();
+  /// Shows the end of the run recorded at `log_path` (its last obstacles,
+  /// status and poses), for a run on this process's memq bus, whose last
+  /// messages no handler reads once the world stops (dream run --view).
+  /// @throws std::runtime_error naming the file when it cannot be read.
+  void ShowEndOf(const std::string& log_path);
   /// Frames broadcast so far.
   int64_t frames_sent() const { return frames_sent_.load(); }
   const BusFrameCollector& collector() const { return collector_; }
