@@ -92,7 +92,9 @@ def run_and_watch(argv, folder, watch, url_from=None):
                     browser.open(found.group(1))
                     break
                 time.sleep(0.01)
-        code = proc.wait()
+        _, status, usage = os.wait4(proc.pid, 0)  # with the CPU time of the run's processes (and their children)
+        proc.returncode = code = os.waitstatus_to_exitcode(status)
+        run_and_watch.cpu_s = usage.ru_utime + usage.ru_stime
         state = browser.state() if browser.page else None
     finally:
         browser.close()
@@ -103,19 +105,29 @@ def run_and_watch(argv, folder, watch, url_from=None):
 
 
 def steps_per_second(out_dir):
+    """The run's loop speed, and the CPU seconds its processes spent per 1,000 steps."""
     with open(os.path.join(out_dir, "summary.json")) as f:
-        return json.load(f)["steps_per_second"]
+        summary = json.load(f)
+    return summary["steps_per_second"], run_and_watch.cpu_s * 1000 / summary["steps"]
 
 
 def compare(name, variants, repeat):
-    best = {label: 0.0 for label, _ in variants}
+    """Interleaved runs: the best speed of each, and the median CPU time of the run's own processes
+    (less disturbed by other load on the machine than the wall time)."""
+    speeds = {label: [] for label, _ in variants}
+    cpu = {label: [] for label, _ in variants}
     for _ in range(repeat):
         for label, run in variants:
-            best[label] = max(best[label], run())
-    base = best[variants[0][0]]
-    print(f"\n{name} (best of {repeat}, steps/s):")
+            speed, cpu_s = run()
+            speeds[label].append(speed)
+            cpu[label].append(cpu_s)
+    base_speed = max(speeds[variants[0][0]])
+    base_cpu = sorted(cpu[variants[0][0]])[repeat // 2]
+    print(f"\n{name} (best of {repeat} steps/s; median CPU s of the run's processes per 1,000 steps):")
     for label, _ in variants:
-        print(f"  {label:<42} {best[label]:>9.0f}  {100 * (best[label] / base - 1):+.1f} %")
+        speed, cpu_s = max(speeds[label]), sorted(cpu[label])[repeat // 2]
+        print(f"  {label:<42} {speed:>9.0f}  {100 * (speed / base_speed - 1):+6.1f} %   "
+              f"CPU {cpu_s:.3f} s  {100 * (cpu_s / base_cpu - 1):+6.1f} %")
 
 
 def main():

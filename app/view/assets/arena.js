@@ -208,6 +208,21 @@ const DreamArena = (() => {
     }
   }
 
+  // The axes and the arena's edge, drawn once per size and view into an
+  // offscreen canvas and copied each frame: text is the costly part of a frame.
+  let cached = null;
+  function background(ctx, T, setup) {
+    const key = `${ctx.canvas.width}x${ctx.canvas.height}/${T.s}/${T.px(0)}/${T.py(0)}/${setup.arena}`;
+    if (!cached || cached.key !== key) {
+      const layer = document.createElement("canvas");
+      layer.width = ctx.canvas.width;
+      layer.height = ctx.canvas.height;
+      axes(layer.getContext("2d"), T, setup);
+      cached = { key, layer };
+    }
+    ctx.drawImage(cached.layer, 0, 0);
+  }
+
   function describe(mark) {
     const who = mark.kind === "collision" ? `robots ${mark.robot} and ${mark.other}`
       : mark.kind === "obstacle" ? `robot ${mark.robot} in obstacle ${mark.other}` : `robot ${mark.robot} outside`;
@@ -220,7 +235,7 @@ const DreamArena = (() => {
     ctx.clearRect(0, 0, canvas.width, canvas.height);
     if (!setup || !setup.arena) return;
     const T = transform(canvas, setup, scene);
-    axes(ctx, T, setup);
+    background(ctx, T, setup);
     obstacles(ctx, T, scene && scene.obstacles);
     if (layers.goals) goals(ctx, T, setup);
     if (!scene) return;

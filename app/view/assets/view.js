@@ -59,12 +59,15 @@
 
   function showPanel(step, t, counts, stateName) {
     const dt = view.setup ? view.setup.time_step : 0.033;
-    $("step").textContent = step < 0 ? "-" : String(step);
-    $("sim-time").textContent = step < 0 ? "-" : `${t.toFixed(2)} s`;
     const rate = view.steps.length > 1 ? stepRate() : null;
-    $("rate").textContent = rate === null ? "-" : `${rate.toFixed(0)} steps/s (${(rate * dt).toFixed(2)}x real time)`;
-    $("state").textContent = stateName || "-";
-    const show = (id, value) => { $(id).textContent = value === undefined || value === null ? "-" : String(value); };
+    const show = (id, value) => {
+      const text = value === undefined || value === null ? "-" : String(value);
+      if ($(id).textContent !== text) $(id).textContent = text;  // unchanged text: no layout for the page
+    };
+    show("step", step < 0 ? null : step);
+    show("sim-time", step < 0 ? null : `${t.toFixed(2)} s`);
+    show("rate", rate === null ? null : `${rate.toFixed(0)} steps/s (${(rate * dt).toFixed(2)}x real time)`);
+    show("state", stateName);
     show("count-boundary", counts && counts.boundary);
     show("count-collision", counts && counts.collision);
     show("count-obstacle", counts && counts.obstacle);
