@@ -115,7 +115,7 @@ def check_marks(marks, poses, where):
             fail(f"{where}: unexpected violation {m}")
 
 
-def watch_live(ctx, args, page, config, run_dir, poses_holder):
+def watch_live(ctx, args, page, config, run_dir):
     ctx.start("launch", [args.dream, "launch", config, "--out", run_dir, "--pace", "3"])
     steps_seen, flash_shot = [], False
     deadline = time.monotonic() + 40
@@ -138,25 +138,9 @@ def watch_live(ctx, args, page, config, run_dir, poses_holder):
     return steps_seen
 
 
-def test(ctx):
-    parser = argument_parser(types_dir=True)
-    parser.add_argument("--artifacts", required=True, help="where the screenshots are kept")
-    args = parser.parse_args()
-    require_private_netns()
-    dream = import_types(args.types_dir)
-    os.makedirs(args.artifacts, exist_ok=True)
-    config, run_dir = ctx.path("clash.yaml"), ctx.path("run")
-    with open(config, "w") as f:
-        f.write(CONFIG)
-
-    ctx.start("view", [args.dream, "view", "--port", "0", "--config", config])
-    ctx.wait_for_output("view", URL.pattern, 10)
-    live_url = URL.search(ctx.output("view")).group(1)
-    ctx.start("chromium", chromium_argv(ctx.path("chrome"), live_url), own_group=True)
-    page = Page(devtools_port(ctx.path("chrome")))
-    wait_for(page, "a connected live page", lambda s: s["connected"] and s["mode"] == "live", 20)
-
-    steps_seen = watch_live(ctx, args, page, config, run_dir, None)
+def check_live(ctx, args, dream, page, config, run_dir):
+    """dream launch watched live; then the same run's log played with lcm-logplayer. Returns its poses."""
+    steps_seen = watch_live(ctx, args, page, config, run_dir)
     poses = poses_by_step(dream, os.path.join(run_dir, "run.lcmlog"))
     final = wait_for(page, f"the run's last step ({STEPS})", lambda s: s["step"] == STEPS, 5)
     check_robots(final, poses, "live")
@@ -176,7 +160,11 @@ def test(ctx):
     check_robots(played, poses, "lcm-logplayer")
     check_marks(played["violations"], poses, "lcm-logplayer")
     ctx.wait("logplayer", 10)
+    return poses
 
+
+def check_replay(ctx, args, page, run_dir, poses):
+    """dream view RUN, its timeline driven as a user would."""
     ctx.start("replay", [args.dream, "view", run_dir, "--port", "0"])
     ctx.wait_for_output("replay", URL.pattern, 10)
     page.navigate(URL.search(ctx.output("replay")).group(1))
@@ -212,6 +200,9 @@ def test(ctx):
     wait_for(page, "speed 4x", lambda s: s["replay"]["speed"] == 4, 2)
     page.screenshot(os.path.join(args.artifacts, "replay.png"))
 
+
+def check_embedded(ctx, args, dream, page, config):
+    """dream run --view, followed to its finished last step."""
     embedded_dir = ctx.path("embedded")
     ctx.start("embedded", [args.dream, "run", config, "--out", embedded_dir, "--view", "--view-port", "0",
                            "--pace", "4"])
@@ -223,6 +214,29 @@ def test(ctx):
     embedded_poses = poses_by_step(dream, os.path.join(embedded_dir, "run.lcmlog"))
     check_robots(ended, embedded_poses, "dream run --view")
     check_marks(ended["violations"], embedded_poses, "dream run --view")
+
+
+def test(ctx):
+    parser = argument_parser(types_dir=True)
+    parser.add_argument("--artifacts", required=True, help="where the screenshots are kept")
+    args = parser.parse_args()
+    require_private_netns()
+    dream = import_types(args.types_dir)
+    os.makedirs(args.artifacts, exist_ok=True)
+    config, run_dir = ctx.path("clash.yaml"), ctx.path("run")
+    with open(config, "w") as f:
+        f.write(CONFIG)
+
+    ctx.start("view", [args.dream, "view", "--port", "0", "--config", config])
+    ctx.wait_for_output("view", URL.pattern, 10)
+    live_url = URL.search(ctx.output("view")).group(1)
+    ctx.start("chromium", chromium_argv(ctx.path("chrome"), live_url), own_group=True)
+    page = Page(devtools_port(ctx.path("chrome")))
+    wait_for(page, "a connected live page", lambda s: s["connected"] and s["mode"] == "live", 20)
+
+    poses = check_live(ctx, args, dream, page, config, run_dir)
+    check_replay(ctx, args, page, run_dir, poses)
+    check_embedded(ctx, args, dream, page, config)
     page.close()
     for shot in ("live.png", "replay.png"):
         path = os.path.join(args.artifacts, shot)

@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace dream::view {
 namespace {
@@ -167,6 +168,27 @@ TEST(ViewServerTest, ASlowBrowserLosesFramesAndOthersStillGetThem) {
   EXPECT_EQ(fresh.Read(), big);  // the latest frame
   server.Broadcast("after");
   EXPECT_EQ(fresh.Read(), "after");
+}
+
+TEST(ViewServerTest, AFloodOfConnectionsIsRefusedPastTheLimit) {
+  ViewServer server(AnyPort());
+  net::io_context io;
+  const tcp::endpoint endpoint(net::ip::make_address("127.0.0.1"), static_cast<unsigned short>(server.port()));
+  std::vector<tcp::socket> idle;  // connected, sending nothing
+  for (size_t i = 0; i < ViewServer::kMaxHttpConnections; ++i) idle.emplace_back(io).connect(endpoint);
+  // Accepted in order on the server's one thread: the next one finds the limit reached and is closed.
+  tcp::socket extra(io);
+  extra.connect(endpoint);
+  char byte = 0;
+  boost::system::error_code error;
+  extra.read_some(net::buffer(&byte, 1), error);
+  EXPECT_TRUE(error == net::error::eof || error == net::error::connection_reset) << error.message();
+  idle.clear();  // once they go, the server answers again
+  std::string response;
+  for (int attempt = 0; attempt < 200 && StatusLine(response) != "HTTP/1.1 200 OK"; ++attempt) {
+    response = Exchange(server.port(), Get(server.port(), "/view.css"));
+  }
+  EXPECT_EQ(StatusLine(response), "HTTP/1.1 200 OK");
 }
 
 TEST(ViewServerTest, APortInUseIsAClearError) {

@@ -250,6 +250,8 @@
   function startReplay(run) {
     view.replay = { run, index: 0, playing: false, speed: 1, simTime: 0, lastWall: performance.now() };
     view.run = run.run;
+    if (run.flaw) $("source").textContent += ` (not a whole run: ${run.flaw})`;
+    if (run.stride > 1) $("source").textContent += ` (every ${run.stride}th step)`;
     $("timeline").hidden = false;
     $("scrub").max = String(run.steps.length - 1);
     $("play").onclick = () => setPlaying(!view.replay.playing);

@@ -22,7 +22,11 @@ std::string_view View(beast::string_view text) { return std::string_view(text.da
 }  // namespace
 
 HttpSession::HttpSession(boost::asio::ip::tcp::socket socket, ServerShared& shared)
-    : stream_(std::move(socket)), buffer_(ViewServer::kMaxHeaderBytes), shared_(shared) {}
+    : stream_(std::move(socket)), buffer_(ViewServer::kMaxHeaderBytes), shared_(shared) {
+  shared_.http_connections.fetch_add(1);
+}
+
+HttpSession::~HttpSession() { shared_.http_connections.fetch_sub(1); }
 
 void HttpSession::Read() {
   parser_.emplace();

@@ -18,6 +18,7 @@ namespace dream::view {
 class HttpSession : public std::enable_shared_from_this<HttpSession> {
  public:
   HttpSession(boost::asio::ip::tcp::socket socket, ServerShared& shared);
+  ~HttpSession();
   void Start() { Read(); }
 
  private:

@@ -26,6 +26,8 @@ struct ServerShared {
   std::shared_ptr<const std::string> run_data;      ///< /run.json (replay)
   std::vector<std::weak_ptr<WebSocketSession>> clients;
   std::atomic<size_t> client_count{0};
+  /// HTTP connections open now (a WebSocket's counts here until its upgrade).
+  std::atomic<size_t> http_connections{0};
   std::atomic<int64_t> dropped_frames{0};
   /// WebSocket writes started and not completed (the server waits for them, briefly, when it stops).
   std::atomic<int> writes_in_flight{0};

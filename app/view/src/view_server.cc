@@ -95,7 +95,10 @@ ViewServer::Impl::~Impl() {
 
 void ViewServer::Impl::Accept() {
   acceptor_.async_accept([this](boost::system::error_code error, tcp::socket socket) {
-    if (!error) {
+    if (!error && shared_->http_connections.load() >= kMaxHttpConnections) {
+      boost::system::error_code ignored;
+      socket.close(ignored);  // a flood of connections: refused as they come, not held
+    } else if (!error) {
       std::make_shared<HttpSession>(std::move(socket), *shared_)->Start();
     } else if (error == net::error::operation_aborted) {
       return;

@@ -15,7 +15,8 @@ namespace dream::view {
 ///
 /// Every size is bounded: the request line and headers (kMaxHeaderBytes),
 /// no request body, what a browser may send on its WebSocket
-/// (kMaxClientMessageBytes), the browsers at once (kMaxClients). Requests
+/// (kMaxClientMessageBytes), the browsers at once (kMaxClients), the HTTP
+/// connections at once (kMaxHttpConnections), 15 s to send a request. Requests
 /// that break a rule (RequestFilter, or that do not parse) get a 4xx and
 /// their connection is closed.
 class ViewServer {
@@ -29,6 +30,8 @@ class ViewServer {
   static constexpr size_t kMaxHeaderBytes = 8192;
   static constexpr size_t kMaxClientMessageBytes = 4096;
   static constexpr size_t kMaxClients = 64;
+  /// HTTP connections at once; more are closed as they arrive.
+  static constexpr size_t kMaxHttpConnections = 256;
 
   /// Listens on the address and port, and starts the server's thread.
   /// @throws std::runtime_error naming the address and port when it cannot
