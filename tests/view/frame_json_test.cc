@@ -77,7 +77,8 @@ TEST(FrameJsonTest, NumbersThatAreNotFiniteBecomeNull) {
 
 TEST(FrameJsonTest, ForgedTextIsValidUtf8AndEscaped) {
   ViewFrame frame = TwoRobots();
-  frame.status.detail = std::string("quote \" backslash \\ newline \n bell \a bad \xff\xfe end \xc3\xa9 \xe2\x80\x94", 58);
+  const char forged[] = "quote \" backslash \\ newline \n bell \a bad \xff\xfe end \xc3\xa9 \xe2\x80\x94";
+  frame.status.detail = std::string(forged, sizeof forged - 1);
   const std::string text = FrameJson(frame);
   const nlohmann::json json = nlohmann::json::parse(text);  // throws on invalid UTF-8
   const std::string detail = json["status"]["detail"];

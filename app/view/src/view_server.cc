@@ -45,10 +45,10 @@ tcp::endpoint EndpointOf(const std::string& address, int port) {
   boost::system::error_code error;
   const net::ip::address ip = net::ip::make_address(address, error);
   if (error) {
-    throw std::runtime_error("dream view: --bind " + address + " is not an IP address (e.g. 127.0.0.1, 0.0.0.0, ::1)");
+    throw std::runtime_error("--bind " + address + " is not an IP address (e.g. 127.0.0.1, 0.0.0.0, ::1)");
   }
   if (port < 0 || port > 65535) {
-    throw std::runtime_error("dream view: --port " + std::to_string(port) + " is not a port (0 to 65535)");
+    throw std::runtime_error("--port " + std::to_string(port) + " is not a port (0 to 65535)");
   }
   return tcp::endpoint(ip, static_cast<unsigned short>(port));
 }
@@ -63,7 +63,7 @@ ViewServer::Impl::Impl(const Options& options) : bind_address_(options.bind_addr
   if (!error) acceptor_.bind(endpoint, error);
   if (!error) acceptor_.listen(net::socket_base::max_listen_connections, error);
   if (error) {
-    throw std::runtime_error("dream view: cannot listen on " + options.bind_address + ":" +
+    throw std::runtime_error("the view's page cannot listen on " + options.bind_address + ":" +
                              std::to_string(options.port) + ": " + error.message() +
                              (error == net::error::address_in_use ? " (choose another with --port)" : ""));
   }
@@ -123,7 +123,7 @@ void ViewServer::Impl::Broadcast(std::shared_ptr<const std::string> frame) {
 }
 
 ViewServer::ViewServer(const Options& options) {
-  if (options.queue_frames == 0) throw std::invalid_argument("dream view: a browser's queue must hold a frame");
+  if (options.queue_frames == 0) throw std::invalid_argument("ViewServer: a browser's queue must hold a frame");
   impl_ = std::make_unique<Impl>(options);
 }
 
