@@ -79,12 +79,11 @@ const DreamArena = (() => {
     (setup.goals || []).forEach((list, id) => {
       ctx.strokeStyle = colour(id);
       ctx.lineWidth = 2;
-      for (const [gx, gy] of list) {
+      for (const [gx, gy] of list) {  // a diamond in the robot's colour (an X is a violation)
         if (!finite(gx, gy)) continue;
-        const r = 5;
+        const r = 6, x = T.px(gx), y = T.py(gy);
         ctx.beginPath();
-        ctx.moveTo(T.px(gx) - r, T.py(gy) - r); ctx.lineTo(T.px(gx) + r, T.py(gy) + r);
-        ctx.moveTo(T.px(gx) - r, T.py(gy) + r); ctx.lineTo(T.px(gx) + r, T.py(gy) - r);
+        ctx.moveTo(x, y - r); ctx.lineTo(x + r, y); ctx.lineTo(x, y + r); ctx.lineTo(x - r, y); ctx.closePath();
         ctx.stroke();
       }
     });
