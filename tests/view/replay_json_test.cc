@@ -63,6 +63,30 @@ TEST(ReplayJsonTest, ViolationsLocatedAtTheirStepWithCountsSoFar) {
   EXPECT_EQ(run["obstacles"][0][1][0][0], 4);
 }
 
+TEST(ReplayJsonTest, MeasuredPosesOfARealisticRunBesideTheTrueOnes) {
+  TempFolder folder;
+  SyntheticRunLog log(folder / "run.lcmlog");
+  log.Poses(0, {{0.0, 0.0, 0.0}});
+  log.Poses(1, {{0.1, 0.0, 0.0}});
+  robot_poses_t measured{};
+  measured.step = 1;
+  measured.utime = 33000;
+  measured.num_robots = 1;
+  measured.x = {0.12};
+  measured.y = {-0.01};
+  measured.theta = {0.02};
+  measured.v = {0.0};
+  measured.w = {0.0};
+  log.MessageOn("DREAM_MEASURED_POSES", measured);  // what the agents were sent, with world.realism on
+  const std::string path = log.Write();
+  EXPECT_EQ(run_log::RunLog::Read(path).measured_poses().size(), 1u);
+  const nlohmann::json run = ReplayOf(path);
+  ASSERT_EQ(run["measured"].size(), 2u);
+  EXPECT_TRUE(run["measured"][0].is_null());  // none at step 0
+  EXPECT_EQ(run["measured"][1], nlohmann::json::parse("[0.12,-0.01,0.02]"));
+  EXPECT_EQ(run["poses"][1], nlohmann::json::parse("[0.1,0,0]"));
+}
+
 TEST(ReplayJsonTest, ALongRunIsThinnedToItsBudget) {
   TempFolder folder;
   // 31 steps of 2 robots are 186 numbers; a budget of 60 keeps every 4th step.
