@@ -19,7 +19,9 @@ namespace dream::view {
 /// in dream run --view): the view adds a handler, never a wait.
 class LiveView {
  public:
-  /// Subscribes on `bus` and starts the pump. `bus` and `server` must outlive it.
+  /// Subscribes on `bus` and starts the pump. `bus` and `server` must outlive
+  /// it, and `bus` must not be handled once it is gone (LcmInterface has no
+  /// unsubscribe: its handler stays registered).
   LiveView(lcm::LcmInterface& bus, ViewServer& server, ViewSetup setup,
            std::chrono::milliseconds frame_period = std::chrono::milliseconds(33));
   /// Stops the pump (after one last frame, so the end of a run is shown).
