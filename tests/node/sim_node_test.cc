@@ -487,5 +487,19 @@ TEST(SimNodeOptionsTest, InvalidOptionsNameTheField) {
   EXPECT_EQ(config::ParseWorldMode("realtime"), config::WorldMode::kRealTime);
 }
 
+TEST(SimNodeOptionsTest, PaceIsZeroOrAFactorUpToTheLimit) {
+  config::SimNodeOptions options;
+  std::string error;
+  for (const double pace : {0.0, 0.25, 1.0, config::SimNodeOptions::kMaxPace}) {
+    options.pace = pace;
+    EXPECT_TRUE(options.IsValid(&error)) << pace << ": " << error;
+  }
+  for (const double pace : {-1.0, config::SimNodeOptions::kMaxPace * 2, std::nan(""), HUGE_VAL}) {
+    options.pace = pace;
+    EXPECT_FALSE(options.IsValid(&error)) << pace;
+    EXPECT_NE(error.find("pace"), std::string::npos) << error;
+  }
+}
+
 }  // namespace
 }  // namespace dream::node

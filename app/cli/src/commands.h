@@ -47,6 +47,10 @@ struct RunArgs {
   long long steps = 0;          ///< 0: the config's
   std::string mode;             ///< empty: the config's
   bool all_steps = false;       ///< run every step even when all robots report done
+  double pace = -1.0;           ///< --pace: simulated seconds per wall second; 0: unpaced; < 0 (not given): unpaced, 1 with --view
+  bool view = false;            ///< dream run --view: serve the live arena (dream view) while it runs
+  int view_port = 8077;         ///< --view-port
+  std::string view_bind = "127.0.0.1";  ///< --view-bind
 };
 
 struct AgentArgs {
@@ -70,6 +74,7 @@ void DeclareSpyCommand(CommandLine& line);      ///< dream spy (spy_command.cc)
 void DeclareReplayCommand(CommandLine& line);   ///< dream replay (replay_command.cc)
 void DeclareLogCommand(CommandLine& line);      ///< dream log info / diff / echo (log_command.cc)
 void DeclareVersionCommand(CommandLine& line);  ///< dream version (version_command.cc)
+void DeclareViewCommand(CommandLine& line);     ///< dream view (view_command.cc)
 
 /// "dream 0.1.0 (git 7de8cc9a1b2c)": the version dream --version and dream
 /// version print; without the commit when the build was not configured from git.

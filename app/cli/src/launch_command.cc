@@ -163,6 +163,7 @@ int RunLaunch(const RunArgs& args) {
   if (args.steps != 0) sim_argv.push_back("--steps=" + std::to_string(args.steps));
   if (!args.mode.empty()) sim_argv.push_back("--mode=" + args.mode);
   if (args.all_steps) sim_argv.push_back("--all-steps");
+  if (args.pace >= 0.0) sim_argv.push_back("--pace=" + std::to_string(args.pace));
   // The simulator writes the folder this process has locked: it inherits the lock.
   const int lock_fd = files::OutputFolderLock::DescriptorOf(out_dir);
   const pid_t sim = children.Start(

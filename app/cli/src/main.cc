@@ -14,6 +14,39 @@
 #include "dream/config/config_error.h"
 #include "dream/config/name_suggestion.h"
 
+namespace {
+
+/// CLI11 would only say "A subcommand is required"; this names the unknown
+/// word. Options before the subcommand are the global ones only; the first
+/// other word must be a subcommand. 0 when the words are known, else the
+/// exit code (the message is printed).
+int RefuseUnknownWordsBeforeParsing(CLI::App& app, int argc, char** argv) {
+  using dream::cli::kExitUsage;
+  int first_word = 1;
+  for (; first_word < argc && argv[first_word][0] == '-'; ++first_word) {
+    const std::string option = argv[first_word];
+    if (option != "-q" && option != "--quiet" && option != "-v" && option != "--verbose" && option != "-h" &&
+        option != "--help" && option != "--version") {
+      std::cerr << "dream: unknown option '" << option << "' before the subcommand; global options are -q, -v, -h, --version"
+                << " (dream --help)\n";
+      return kExitUsage;
+    }
+  }
+  if (first_word >= argc) return 0;
+  std::string names;
+  std::vector<std::string> name_list;
+  for (const CLI::App* command : app.get_subcommands({})) {
+    if (command->get_name() == argv[first_word]) return 0;
+    names += (names.empty() ? "" : ", ") + command->get_name();
+    name_list.push_back(command->get_name());
+  }
+  std::cerr << "dream: unknown subcommand '" << argv[first_word] << "'"
+            << dream::config::DidYouMean(argv[first_word], name_list) << "; known: " << names << " (dream --help)\n";
+  return kExitUsage;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace dream::cli;
   CommandLine line{
@@ -44,37 +77,10 @@ int main(int argc, char** argv) {
   DeclareCalibrateCommand(line);  // fit the lab model to real runs (docs/experiments.md)
   DeclareSweepCommand(line);
   DeclareRenderCommand(line);  // pictures and videos (docs/rendering.md)
+  DeclareViewCommand(line);    // the live arena in a browser (docs/view.md)
   DeclareVersionCommand(line);
 
-  // CLI11 would only say "A subcommand is required"; name the unknown word.
-  // Options before the subcommand are the global ones only; the first other
-  // word must be a subcommand.
-  int first_word = 1;
-  for (; first_word < argc && argv[first_word][0] == '-'; ++first_word) {
-    const std::string option = argv[first_word];
-    if (option != "-q" && option != "--quiet" && option != "-v" && option != "--verbose" && option != "-h" &&
-        option != "--help" && option != "--version") {
-      std::cerr << "dream: unknown option '" << option << "' before the subcommand; global options are -q, -v, -h, --version"
-                << " (dream --help)\n";
-      return kExitUsage;
-    }
-  }
-  if (first_word < argc) {
-    bool known = false;
-    std::string names;
-    std::vector<std::string> name_list;
-    for (const CLI::App* command : app.get_subcommands({})) {
-      known = known || command->get_name() == argv[first_word];
-      names += (names.empty() ? "" : ", ") + command->get_name();
-      name_list.push_back(command->get_name());
-    }
-    if (!known) {
-      std::cerr << "dream: unknown subcommand '" << argv[first_word] << "'"
-                << dream::config::DidYouMean(argv[first_word], name_list) << "; known: " << names
-                << " (dream --help)\n";
-      return kExitUsage;
-    }
-  }
+  if (const int refused = RefuseUnknownWordsBeforeParsing(app, argc, argv)) return refused;
 
   try {
     line.Parse(argc, argv);

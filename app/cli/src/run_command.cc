@@ -9,6 +9,7 @@
 #include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/lcm_url.h"
 #include "run_output.h"
+#include "run_view.h"
 #include "shared_options.h"
 
 namespace dream::cli {
@@ -24,7 +25,11 @@ int RunEmbedded(const RunArgs& args) {
   std::iota(ids.begin(), ids.end(), 0);
   const HostedAgents agents(bus, config, ids, run->factory(),
                             {config.sim.agent_timeout_s, config.sim.start_timeout_s, 0.0});
-  return ExitCodeFor(run->Run(bus, {out_dir, ConfigTextForRunFolder(args, config)}));
+  std::unique_ptr<RunView> view;
+  if (args.view) view = std::make_unique<RunView>(bus, config, args.view_bind, args.view_port);
+  const session::RunResult result = run->Run(bus, {out_dir, ConfigTextForRunFolder(args, config)});
+  if (view) view->ShowEndOf(out_dir);
+  return ExitCodeFor(result);
 }
 
 int RunSimOnly(const RunArgs& args) {
@@ -35,10 +40,21 @@ int RunSimOnly(const RunArgs& args) {
 }
 
 void DeclareRunCommand(CommandLine& line) {
-  AddRunCommand(line, "run",
-                "Run an experiment in one process: the simulator and every robot's agent on one bus.\n"
-                "Example: dream run config/go_to_goal.yaml --seed 7 --set controller.max_speed_mps=0.1",
-                RunEmbedded, "LCM URL (default memq://, in-process)");
+  const auto [command, args] = AddRunCommand(
+      line, "run",
+      "Run an experiment in one process: the simulator and every robot's agent on one bus.\n"
+      "Example: dream run config/go_to_goal.yaml --seed 7 --set controller.max_speed_mps=0.1\n"
+      "Watch it: dream run config/go_to_goal.yaml --view (then open http://127.0.0.1:8077/)",
+      RunEmbedded, "LCM URL (default memq://, in-process)");
+  command->add_flag("--view", args->view,
+                    "Serve the live arena while the run runs (dream view; paced to real time unless --pace)");
+  command->add_option("--view-port", args->view_port, "Port of --view's page (0: any free port)")
+      ->check(CLI::Range(0, 65535))
+      ->capture_default_str();
+  command->add_option("--view-bind", args->view_bind,
+                      "Address --view listens on; 127.0.0.1 (the default) is this machine only,\n"
+                      "0.0.0.0 exposes the page to the network on purpose")
+      ->capture_default_str();
 }
 
 void DeclareSimCommand(CommandLine& line) {

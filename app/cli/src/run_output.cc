@@ -18,6 +18,11 @@ std::unique_ptr<session::RunSession> OpenRunSession(const RunArgs& args) {
   }
   if (!args.mode.empty()) config.sim.mode = config::ParseWorldMode(args.mode);
   if (args.all_steps) config.sim.stop_when_done = false;
+  if (args.pace >= 0.0) {
+    config.sim.pace = args.pace;
+  } else if (args.view) {
+    config.sim.pace = 1.0;  // --view: watched in real time unless --pace says otherwise
+  }
   session::RunSession::Options options;
   options.steps_from_command_line = args.steps != 0;
   options.stop = &StopFlag();

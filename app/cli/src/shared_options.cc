@@ -81,7 +81,7 @@ void AddOverrideOptions(CLI::App* command, long long* seed, std::vector<std::str
       ->allow_extra_args(false);
 }
 
-void AddRunCommand(CommandLine& line, const std::string& name, const std::string& description,
+CommandLine::CommandWithArgs<RunArgs> AddRunCommand(CommandLine& line, const std::string& name, const std::string& description,
                    std::function<int(const RunArgs&)> run, const char* url_help) {
   const auto [command, args] = line.AddCommand<RunArgs>(name, description, std::move(run));
   command->add_option("config", args->config_path, "Run config (YAML), e.g. config/go_to_goal.yaml")->required();
@@ -91,6 +91,12 @@ void AddRunCommand(CommandLine& line, const std::string& name, const std::string
   command->add_option("--steps", args->steps, "Override the config's step limit")->check(StepCount());
   command->add_option("--mode", args->mode, "Override the world mode")->check(CLI::IsMember({"lockstep", "realtime"}));
   command->add_flag("--all-steps", args->all_steps, "Run every step even when all robots report done (benchmarks)");
+  command
+      ->add_option("--pace", args->pace,
+                   "Simulated seconds per wall second, to watch the run (1: real time, 4: four times faster,\n"
+                   "0: as fast as it goes); lockstep stays lockstep, only no faster. Default: 0 (1 with --view)")
+      ->check(CLI::Range(0.0, 1000.0));
+  return {command, args};
 }
 
 void AddAgentOptions(CLI::App* command, AgentArgs* args) {

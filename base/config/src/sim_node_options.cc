@@ -33,6 +33,9 @@ bool SimNodeOptions::IsValid(std::string* error) const {
   if (!(progress_interval_s >= 0.0)) {
     return fail("progress_interval_s must be >= 0, got " + std::to_string(progress_interval_s));
   }
+  if (!(std::isfinite(pace) && pace >= 0.0 && pace <= kMaxPace)) {
+    return fail("pace must be from 0 (unpaced) to " + std::to_string(kMaxPace) + ", got " + std::to_string(pace));
+  }
   return true;
 }
 

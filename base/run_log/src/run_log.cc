@@ -55,6 +55,9 @@ RunLog RunLog::Read(const std::string& path) {
       }
       log.num_robots_ = std::max(log.num_robots_, poses.num_robots);
       log.CheckSequence(reader.event_index());
+    } else if (record.channel == "DREAM_MEASURED_POSES") {  // sim::TruePoseRecording::kMeasuredPosesChannel
+      robot_poses_t& measured = log.measured_poses_.emplace_back();
+      if (!lcm::Decode(data, size, &measured)) log.measured_poses_.pop_back();  // not the world's record: skipped
     } else if (record.channel == lcm::kObstaclesChannel) {
       obstacles_t& obstacles = log.obstacles_.emplace_back();
       if (auto problem = lcm::DecodeProblem(data, size, &obstacles)) {

@@ -406,7 +406,7 @@ bool SimNode::ReadyForNextStep(Clock::time_point now, Clock::time_point next_rea
     if (!AllLiveAnswered() && SecondsBetween(step_published_, now) > options_.agent_timeout_s) {
       MarkSilentRobotsLost(now);
     }
-    return AllLiveAnswered();
+    return AllLiveAnswered() && (options_.pace <= 0.0 || now >= next_realtime_step);
   }
   const bool ready = now >= next_realtime_step;
   if (ready) MarkSilentRobotsLost(now);
@@ -449,7 +449,8 @@ void SimNode::ResendStepAndListen(Clock::time_point now, Clock::time_point next_
     last_resend_ = now;
   }
   int timeout_ms = 10;
-  if (!lockstep && state_ == run_status_t::RUNNING) {
+  const bool paced = !lockstep || options_.pace > 0.0;
+  if (paced && state_ == run_status_t::RUNNING && (!lockstep || AllLiveAnswered())) {
     const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(next_realtime_step - Clock::now());
     timeout_ms = static_cast<int>(std::max<int64_t>(0, std::min<int64_t>(wait.count(), 10)));
   }
@@ -461,9 +462,12 @@ RunOutcome SimNode::Run(const std::atomic<bool>& stop) {
   state_ = run_status_t::WAITING_FOR_AGENTS;
   PublishStep(true);
   step_published_ = last_resend_ = Clock::now();
-  // Real time: one world step per time step of wall time.
+  // Real time: one world step per time step of wall time (over the pace).
+  // Lockstep with a pace: no step sooner than that, to watch the run.
+  const bool lockstep = options_.mode == config::WorldMode::kLockstep;
+  const double pace = options_.pace > 0.0 ? options_.pace : 1.0;
   const auto step_period =
-      std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(world_.time_step_s()));
+      std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(world_.time_step_s() / pace));
   Clock::time_point next_realtime_step;
 
   while (true) {
@@ -475,6 +479,8 @@ RunOutcome SimNode::Run(const std::atomic<bool>& stop) {
     }
     if (state_ == run_status_t::RUNNING && ReadyForNextStep(now, next_realtime_step)) {
       next_realtime_step += step_period;
+      // Paced lockstep behind its pace (slow agents): no burst to catch up.
+      if (lockstep && next_realtime_step < now) next_realtime_step = now;
       if (std::optional<RunOutcome> finished = TakeStep()) return std::move(*finished);
       continue;
     }

@@ -48,6 +48,13 @@ struct SimNodeOptions {
   /// terminal (0: no progress at all). The CLI shows them through a
   /// ProgressReporter (SimNode::set_progress_reporter); a terminal gets a bar.
   double progress_interval_s = 2.0;
+  /// Simulated seconds per wall second, to watch a run (dream run --view,
+  /// --pace). Lockstep: a step is taken no sooner than this pace allows
+  /// (still only once every live robot answered: the run is the same); 0
+  /// (the default): as fast as the agents answer. Real time: the step period
+  /// is time_step / pace (0 means 1). At most kMaxPace.
+  double pace = 0.0;
+  static constexpr double kMaxPace = 1000.0;
 
   /// False with a message naming the field, its value and the allowed range.
   bool IsValid(std::string* error) const;

@@ -51,6 +51,11 @@ class RunLog {
   /// The index of the last pose whose step is <= `step` (0 before the first).
   size_t PoseIndexAtStep(int64_t step) const;
 
+  /// Every DREAM_MEASURED_POSES message that decodes, in log order: what the
+  /// agents were sent when world.realism was on (poses() then holds the true
+  /// poses); empty otherwise.
+  const std::vector<robot_poses_t>& measured_poses() const { return measured_poses_; }
+
   /// Every DREAM_OBSTACLES message that decodes, by step (log order within a step).
   const std::vector<obstacles_t>& obstacles() const { return obstacles_; }
   /// The obstacles at the step of poses()[pose_index]: the last DREAM_OBSTACLES
@@ -99,6 +104,7 @@ class RunLog {
   std::string path_;
   std::vector<robot_poses_t> poses_;
   int num_robots_ = 0;
+  std::vector<robot_poses_t> measured_poses_;
   std::vector<obstacles_t> obstacles_;
   std::vector<size_t> obstacle_index_;  // per pose: index into obstacles_, kNone before the first
   std::vector<RadioSend> radio_sends_;

@@ -1,0 +1,249 @@
+"use strict";
+// Draws one scene of a DREAM run on a canvas: the arena to scale in the world
+// frame (x right, y up, metres on the axes), obstacles, goals, trails, radio
+// links, sensor ranges, robots as oriented discs with their ids, measured
+// poses, and violations where they happened (flashing while new).
+const DreamArena = (() => {
+  const palette = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2",
+                   "#7f7f7f", "#bcbd22", "#17becf"];
+  const colour = (id) => palette[id % palette.length];
+  const finite = (...values) => values.every((v) => typeof v === "number" && Number.isFinite(v));
+
+  // World metres -> canvas pixels, fitting the arena (and a margin) in the canvas.
+  // Robots outside the arena widen the view (up to 1 m beyond it), so one
+  // that left is still drawn where it is.
+  function transform(canvas, setup, scene) {
+    let [xmin, xmax, ymin, ymax] = setup.arena;
+    const [ax0, ax1, ay0, ay1] = setup.arena;
+    const r = (setup.robot_diameter || 0.11) / 2;
+    for (let i = 0; scene && i < scene.x.length; i++) {
+      if (!finite(scene.x[i], scene.y[i])) continue;
+      xmin = Math.min(xmin, Math.max(ax0 - 1, scene.x[i] - r));
+      xmax = Math.max(xmax, Math.min(ax1 + 1, scene.x[i] + r));
+      ymin = Math.min(ymin, Math.max(ay0 - 1, scene.y[i] - r));
+      ymax = Math.max(ymax, Math.min(ay1 + 1, scene.y[i] + r));
+    }
+    const pad = 0.12;
+    const m = { left: 52, right: 14, top: 14, bottom: 40 };
+    const w = canvas.width - m.left - m.right;
+    const h = canvas.height - m.top - m.bottom;
+    const s = Math.max(1e-6, Math.min(w / (xmax - xmin + 2 * pad), h / (ymax - ymin + 2 * pad)));
+    const ox = m.left + (w - s * (xmax - xmin + 2 * pad)) / 2 - s * (xmin - pad);
+    const oy = m.top + (h - s * (ymax - ymin + 2 * pad)) / 2 + s * (ymax + pad);
+    return { s, px: (x) => ox + s * x, py: (y) => oy - s * y };
+  }
+
+  function axes(ctx, T, setup) {
+    const [xmin, xmax, ymin, ymax] = setup.arena;
+    const span = Math.max(xmax - xmin, ymax - ymin);
+    const tick = span > 8 ? 1 : span > 4 ? 0.5 : 0.2;
+    ctx.strokeStyle = "#e6e8eb";
+    ctx.fillStyle = "#556";
+    ctx.lineWidth = 1;
+    ctx.font = "11px system-ui, sans-serif";
+    ctx.textAlign = "center";
+    ctx.textBaseline = "top";
+    for (let x = Math.ceil(xmin / tick) * tick; x <= xmax + 1e-9; x += tick) {
+      ctx.beginPath(); ctx.moveTo(T.px(x), T.py(ymin)); ctx.lineTo(T.px(x), T.py(ymax)); ctx.stroke();
+      ctx.fillText((Math.abs(x) < 1e-9 ? 0 : x).toFixed(1), T.px(x), T.py(ymin) + 14);
+    }
+    ctx.textAlign = "right";
+    ctx.textBaseline = "middle";
+    for (let y = Math.ceil(ymin / tick) * tick; y <= ymax + 1e-9; y += tick) {
+      ctx.beginPath(); ctx.moveTo(T.px(xmin), T.py(y)); ctx.lineTo(T.px(xmax), T.py(y)); ctx.stroke();
+      ctx.fillText((Math.abs(y) < 1e-9 ? 0 : y).toFixed(1), T.px(xmin) - 16, T.py(y));
+    }
+    ctx.textAlign = "left";
+    ctx.fillText("x (m)", T.px(xmax) - 30, T.py(ymin) + 32);
+    ctx.save(); ctx.translate(T.px(xmin) - 44, T.py(ymax) + 20); ctx.fillText("y (m)", 0, 0); ctx.restore();
+    ctx.strokeStyle = "#333";
+    ctx.lineWidth = 2;
+    ctx.strokeRect(T.px(xmin), T.py(ymax), T.s * (xmax - xmin), T.s * (ymax - ymin));
+  }
+
+  function obstacles(ctx, T, list) {
+    for (const o of list || []) {
+      const [, cx, cy, w, h, vx, vy] = o;
+      if (!finite(cx, cy, w, h)) continue;
+      const moving = finite(vx, vy) && (vx !== 0 || vy !== 0);
+      ctx.fillStyle = moving ? "rgba(120,90,40,0.45)" : "rgba(80,80,80,0.4)";
+      ctx.fillRect(T.px(cx - w / 2), T.py(cy + h / 2), T.s * w, T.s * h);
+      if (moving) {  // where it heads: a second of travel
+        ctx.strokeStyle = "#7a5a28";
+        ctx.beginPath(); ctx.moveTo(T.px(cx), T.py(cy)); ctx.lineTo(T.px(cx + vx), T.py(cy + vy)); ctx.stroke();
+      }
+    }
+  }
+
+  function goals(ctx, T, setup) {
+    (setup.goals || []).forEach((list, id) => {
+      ctx.strokeStyle = colour(id);
+      ctx.lineWidth = 2;
+      for (const [gx, gy] of list) {  // a diamond in the robot's colour (an X is a violation)
+        if (!finite(gx, gy)) continue;
+        const r = 6, x = T.px(gx), y = T.py(gy);
+        ctx.beginPath();
+        ctx.moveTo(x, y - r); ctx.lineTo(x + r, y); ctx.lineTo(x, y + r); ctx.lineTo(x - r, y); ctx.closePath();
+        ctx.stroke();
+      }
+    });
+  }
+
+  function trails(ctx, T, paths) {
+    (paths || []).forEach((path, id) => {
+      if (!path || path.length < 2) return;
+      ctx.strokeStyle = colour(id);
+      ctx.globalAlpha = 0.55;
+      ctx.lineWidth = 1.5;
+      ctx.beginPath();
+      path.forEach(([x, y], k) => (k === 0 ? ctx.moveTo(T.px(x), T.py(y)) : ctx.lineTo(T.px(x), T.py(y))));
+      ctx.stroke();
+      ctx.globalAlpha = 1;
+    });
+  }
+
+  function sensors(ctx, T, setup, scene) {
+    for (let i = 0; i < scene.x.length; i++) {
+      if (!finite(scene.x[i], scene.y[i], scene.th[i])) continue;
+      for (const [range, dir, fov] of setup.sensors || []) {
+        ctx.strokeStyle = colour(i);
+        ctx.globalAlpha = 0.3;
+        ctx.beginPath();
+        if (fov >= 2 * Math.PI - 1e-6) {
+          ctx.arc(T.px(scene.x[i]), T.py(scene.y[i]), T.s * range, 0, 2 * Math.PI);
+        } else {  // canvas angles run clockwise: negate the world's
+          const mid = -(scene.th[i] + dir);
+          ctx.moveTo(T.px(scene.x[i]), T.py(scene.y[i]));
+          ctx.arc(T.px(scene.x[i]), T.py(scene.y[i]), T.s * range, mid - fov / 2, mid + fov / 2);
+          ctx.closePath();
+        }
+        ctx.stroke();
+        ctx.globalAlpha = 1;
+      }
+    }
+  }
+
+  function links(ctx, T, scene) {
+    for (const [s, r, fade] of scene.links || []) {
+      if (!finite(scene.x[s], scene.y[s], scene.x[r], scene.y[r])) continue;
+      ctx.strokeStyle = `rgba(40,110,200,${0.15 + 0.6 * (fade === undefined ? 1 : fade)})`;
+      ctx.lineWidth = 1;
+      ctx.beginPath(); ctx.moveTo(T.px(scene.x[s]), T.py(scene.y[s])); ctx.lineTo(T.px(scene.x[r]), T.py(scene.y[r]));
+      ctx.stroke();
+    }
+  }
+
+  function disc(ctx, T, x, y, th, radius, fill, stroke, dashed) {
+    ctx.beginPath();
+    ctx.arc(T.px(x), T.py(y), radius, 0, 2 * Math.PI);
+    if (fill) { ctx.fillStyle = fill; ctx.fill(); }
+    ctx.setLineDash(dashed ? [3, 3] : []);
+    ctx.strokeStyle = stroke;
+    ctx.lineWidth = 1.5;
+    ctx.stroke();
+    ctx.setLineDash([]);
+    ctx.beginPath();  // the heading
+    ctx.moveTo(T.px(x), T.py(y));
+    ctx.lineTo(T.px(x + Math.cos(th) * radius / T.s), T.py(y + Math.sin(th) * radius / T.s));
+    ctx.stroke();
+  }
+
+  function robots(ctx, T, setup, scene, layers) {
+    const radius = Math.max(3, (T.s * setup.robot_diameter) / 2);
+    if (layers.measured && scene.mx) {
+      for (let i = 0; i < scene.mx.length; i++) {
+        if (finite(scene.mx[i], scene.my[i], scene.mth[i])) {
+          disc(ctx, T, scene.mx[i], scene.my[i], scene.mth[i], radius, null, colour(i), true);
+        }
+      }
+    }
+    ctx.font = `${Math.max(10, Math.round(radius))}px system-ui, sans-serif`;
+    ctx.textAlign = "center";
+    ctx.textBaseline = "middle";
+    for (let i = 0; i < scene.x.length; i++) {
+      if (!finite(scene.x[i], scene.y[i], scene.th[i])) continue;
+      const lost = scene.lost && scene.lost.includes(i);
+      disc(ctx, T, scene.x[i], scene.y[i], scene.th[i], radius, lost ? "#bbb" : colour(i), "#222", false);
+      if (layers.ids) {
+        ctx.fillStyle = "#111";
+        ctx.fillText(String(i), T.px(scene.x[i]), T.py(scene.y[i]) - radius - 8);
+      }
+    }
+  }
+
+  // A rule broken over many steps (robots pushing each other) gives a mark
+  // each step: each robot or pair is drawn once, an X where it started and,
+  // while the latest is new, a ring with what and when.
+  function violations(ctx, T, marks) {
+    const episodes = new Map();
+    for (const mark of marks || []) {
+      if (!finite(mark.x, mark.y)) continue;
+      const key = `${mark.kind}/${mark.robot}/${mark.other}`;
+      const episode = episodes.get(key);
+      if (!episode) episodes.set(key, { first: mark, latest: mark });
+      else episode.latest = mark;
+    }
+    ctx.strokeStyle = "#d00";
+    ctx.lineWidth = 2;
+    for (const { first, latest } of episodes.values()) {
+      const x = T.px(first.x), y = T.py(first.y);
+      ctx.beginPath();
+      ctx.moveTo(x - 5, y - 5); ctx.lineTo(x + 5, y + 5); ctx.moveTo(x - 5, y + 5); ctx.lineTo(x + 5, y - 5);
+      ctx.stroke();
+      if (latest.flash > 0) {
+        const lx = T.px(latest.x), ly = T.py(latest.y);
+        ctx.globalAlpha = latest.flash;
+        ctx.beginPath(); ctx.arc(lx, ly, 12 + 24 * latest.flash, 0, 2 * Math.PI); ctx.stroke();
+        ctx.fillStyle = "#d00";
+        ctx.font = "bold 12px system-ui, sans-serif";
+        ctx.textAlign = "left";
+        ctx.textBaseline = "bottom";
+        const since = first.step !== latest.step ? ` (since step ${first.step})` : "";
+        const text = describe(latest) + since;
+        const width = ctx.measureText(text).width;  // near the right edge: written to the left
+        ctx.fillText(text, lx + 14 + width > ctx.canvas.width ? lx - 14 - width : lx + 14, ly - 14);
+        ctx.globalAlpha = 1;
+      }
+    }
+  }
+
+  // The axes and the arena's edge, drawn once per size and view into an
+  // offscreen canvas and copied each frame: text is the costly part of a frame.
+  let cached = null;
+  function background(ctx, T, setup) {
+    const key = `${ctx.canvas.width}x${ctx.canvas.height}/${T.s}/${T.px(0)}/${T.py(0)}/${setup.arena}`;
+    if (!cached || cached.key !== key) {
+      const layer = document.createElement("canvas");
+      layer.width = ctx.canvas.width;
+      layer.height = ctx.canvas.height;
+      axes(layer.getContext("2d"), T, setup);
+      cached = { key, layer };
+    }
+    ctx.drawImage(cached.layer, 0, 0);
+  }
+
+  function describe(mark) {
+    const who = mark.kind === "collision" ? `robots ${mark.robot} and ${mark.other}`
+      : mark.kind === "obstacle" ? `robot ${mark.robot} in obstacle ${mark.other}` : `robot ${mark.robot} outside`;
+    return `${mark.kind}: ${who}, step ${mark.step}`;
+  }
+
+  // scene: {x, y, th, mx?, my?, mth?, obstacles, links, marks, lost}; paths: per robot [[x, y], ...].
+  function draw(canvas, setup, scene, layers, paths) {
+    const ctx = canvas.getContext("2d");
+    ctx.clearRect(0, 0, canvas.width, canvas.height);
+    if (!setup || !setup.arena) return;
+    const T = transform(canvas, setup, scene);
+    background(ctx, T, setup);
+    obstacles(ctx, T, scene && scene.obstacles);
+    if (layers.goals) goals(ctx, T, setup);
+    if (!scene) return;
+    if (layers.trails) trails(ctx, T, paths);
+    if (layers.sensors) sensors(ctx, T, setup, scene);
+    if (layers.radio) links(ctx, T, scene);
+    robots(ctx, T, setup, scene, layers);
+    if (layers.violations) violations(ctx, T, scene.marks);
+  }
+
+  return { draw, describe, colour };
+})();

@@ -1,0 +1,333 @@
+"use strict";
+// dream view's page. Live: frames pushed by the server on its WebSocket (the
+// newest state of the run on the bus). Replay: the whole run from /run.json,
+// played on this page's own timeline (play, pause, step, scrub, speed).
+// window.dreamView.state is what is drawn, machine-readable: the tests read it.
+(() => {
+  const $ = (id) => document.getElementById(id);
+  const canvas = $("arena");
+  const TRAIL_SECONDS = 10;   // of simulated time behind each robot
+  const FLASH_MS = 2500;      // a new violation flashes this long (live, wall time)
+  const FLASH_SIM_S = 2;      // and this long in simulated time (replay)
+  const LINK_MS = 1000;       // a radio link stays drawn this long after its message
+  const STATE_NAMES = ["waiting for agents", "running", "finished", "aborted"];
+
+  const view = {
+    setup: null, scene: null, paths: [], run: null, replay: null, frames: 0,
+    marks: new Map(), links: new Map(), steps: [], counts: null,
+    state: { mode: null, connected: false, step: -1, robots: [], violations: [], verdict: "unknown" },
+  };
+  window.dreamView = view;
+
+  const layers = () => ({
+    trails: $("show-trails").checked, goals: $("show-goals").checked, ids: $("show-ids").checked,
+    radio: $("show-radio").checked, sensors: $("show-sensors").checked, measured: $("show-measured").checked,
+    violations: $("show-violations").checked,
+  });
+
+  // The Robotarium's judgement of the counts so far (docs/run-outputs.md's verdicts).
+  function verdictOf(c) {
+    if (!c) return "unknown";
+    if (c.boundary > 0 || c.collision > 0) return "rejected";
+    if (c.obstacle > 0 || (c.lost && c.lost.length > 0) || c.rejected > 0 || c.conflicts > 0) return "not_ready";
+    if (c.actuator > 0) return "warning";
+    return "clean";
+  }
+
+  function resize() {
+    const ratio = window.devicePixelRatio || 1;
+    const box = $("stage").getBoundingClientRect();
+    canvas.width = Math.max(200, Math.round(box.width * ratio));
+    canvas.height = Math.max(150, Math.round(box.height * ratio));
+  }
+
+  function sceneMarks(now) {
+    return [...view.marks.values()].map((m) => ({ ...m, flash: Math.max(0, 1 - (now - m.seen) / FLASH_MS) }));
+  }
+
+  // Drawn when something changed, not on every display frame: a page left
+  // open beside a run should not take a core from it.
+  function draw() {
+    view.dirty = false;
+    DreamArena.draw(canvas, view.setup, view.scene, layers(), view.paths);
+  }
+
+  function animating() {
+    const s = view.scene;
+    return !!(s && ((s.marks && s.marks.some((m) => m.flash > 0)) || (s.links && s.links.length > 0)));
+  }
+
+  function showPanel(step, t, counts, stateName) {
+    const dt = view.setup ? view.setup.time_step : 0.033;
+    const rate = view.steps.length > 1 ? stepRate() : null;
+    const show = (id, value) => {
+      const text = value === undefined || value === null ? "-" : String(value);
+      if ($(id).textContent !== text) $(id).textContent = text;  // unchanged text: no layout for the page
+    };
+    show("step", step < 0 ? null : step);
+    show("sim-time", step < 0 ? null : `${t.toFixed(2)} s`);
+    show("rate", rate === null ? null : `${rate.toFixed(0)} steps/s (${(rate * dt).toFixed(2)}x real time)`);
+    show("state", stateName);
+    show("count-boundary", counts && counts.boundary);
+    show("count-collision", counts && counts.collision);
+    show("count-obstacle", counts && counts.obstacle);
+    show("count-actuator", counts && counts.actuator);
+    show("count-rejected", counts && counts.rejected);
+    show("count-lost", counts && counts.lost ? (counts.lost.length ? counts.lost.join(", ") : "none") : null);
+    const verdict = verdictOf(counts);
+    $("verdict").textContent = verdict.replace("_", " ");
+    $("verdict").className = `verdict ${verdict}`;
+    return verdict;
+  }
+
+  function showViolationList(marks) {
+    const list = $("violation-list");
+    const last = marks[marks.length - 1];
+    const key = `${marks.length}/${last ? last.step : -1}`;
+    if (list.dataset.shown === key) return;  // unchanged: no work for the page's layout
+    list.dataset.shown = key;
+    const latest = marks.slice(-50).reverse();
+    list.replaceChildren(...latest.map((m) => {
+      const item = document.createElement("li");
+      item.textContent = `${DreamArena.describe(m)} at (${m.x.toFixed(2)}, ${m.y.toFixed(2)})`;
+      return item;
+    }));
+  }
+
+  function publishState(extra) {
+    const s = view.scene;
+    const robots = s ? s.x.map((x, id) => ({ id, x, y: s.y[id], theta: s.th[id] })) : [];
+    const marks = [...view.marks.values()].map(({ kind, step, robot, other, x, y }) => ({ kind, step, robot, other, x, y }));
+    view.state = {
+      mode: view.setup ? view.setup.mode : null, connected: view.connected === true, run: view.run,
+      step: s ? s.step : -1, t: s ? s.t : 0, frames: view.frames, robots, counts: view.counts,
+      verdict: verdictOf(view.counts), violations: marks,
+      flashing: s && s.marks ? s.marks.filter((m) => m.flash > 0).length : 0,
+      links: s && s.links ? s.links.length : 0, measured: !!(s && s.mx), ...extra,
+    };
+    document.body.dataset.step = String(view.state.step);
+    document.body.dataset.robots = String(robots.length);
+    document.body.dataset.violations = String(marks.length);
+    document.body.dataset.verdict = view.state.verdict;
+  }
+
+  function stepRate() {
+    const first = view.steps[0], last = view.steps[view.steps.length - 1];
+    const seconds = (last[0] - first[0]) / 1000;
+    return seconds > 0 ? (last[1] - first[1]) / seconds : null;
+  }
+
+  // ---- live: one frame at a time from the server ----
+  function startRun(run) {
+    view.run = run;
+    view.paths = [];
+    view.marks.clear();
+    view.links.clear();
+    view.steps = [];
+  }
+
+  function onFrame(f) {
+    const now = performance.now();
+    const last = view.live ? view.live.step : -1;
+    if (f.run !== view.run || f.step + 1 < last) startRun(f.run);  // another run, or this one played again
+    view.frames += 1;
+    if (f.step >= 0) {
+      view.steps.push([now, f.step]);
+      while (view.steps.length > 2 && now - view.steps[0][0] > 2000) view.steps.shift();
+      f.x.forEach((x, id) => {
+        const path = view.paths[id] || (view.paths[id] = []);
+        const last = path[path.length - 1];
+        if (x !== null && f.y[id] !== null && (!last || last[2] !== f.step)) path.push([x, f.y[id], f.step, f.t]);
+        while (path.length > 2 && path[0][3] < f.t - TRAIL_SECONDS) path.shift();
+      });
+    }
+    for (const m of f.violations) {
+      const key = `${m.kind}/${m.step}/${m.robot}/${m.other}`;
+      if (!view.marks.has(key)) view.marks.set(key, { ...m, seen: now });
+    }
+    for (const [s, r] of f.links) view.links.set(`${s}/${r}`, { s, r, seen: now });
+    view.live = f;
+    view.counts = f.status ? { ...f.status } : null;
+    liveScene(now);
+  }
+
+  function liveScene(now) {
+    const f = view.live;
+    if (!f) return;
+    const links = [];
+    for (const [key, link] of view.links) {
+      const age = now - link.seen;
+      if (age > LINK_MS) view.links.delete(key);
+      else links.push([link.s, link.r, 1 - age / LINK_MS]);
+    }
+    view.scene = {
+      step: f.step, t: f.t, x: f.x, y: f.y, th: f.th, mx: f.mx, my: f.my, mth: f.mth, obstacles: f.obstacles,
+      links, marks: sceneMarks(now), lost: f.status ? f.status.lost : [],
+    };
+    const stateName = f.status ? STATE_NAMES[f.status.state] || String(f.status.state) : "-";
+    showPanel(f.step, f.t, view.counts, stateName);
+    publishState({ state: stateName, detail: f.status ? f.status.detail : "" });
+  }
+
+  // ---- replay: the whole run, on this page's timeline ----
+  function lastAtOrBefore(list, value, keyOf) {
+    let lo = 0, hi = list.length - 1, found = -1;
+    while (lo <= hi) {
+      const mid = (lo + hi) >> 1;
+      if (keyOf(list[mid]) <= value) { found = mid; lo = mid + 1; } else { hi = mid - 1; }
+    }
+    return found;
+  }
+
+  function splitPoses(poses) {
+    const x = [], y = [], th = [];
+    for (let k = 0; k + 2 < poses.length; k += 3) { x.push(poses[k]); y.push(poses[k + 1]); th.push(poses[k + 2]); }
+    return { x, y, th };
+  }
+
+  function replayScene(i) {
+    const run = view.replay.run;
+    const step = run.steps[i], t = run.t[i];
+    const at = splitPoses(run.poses[i]);
+    const measured = run.measured && run.measured[i] ? splitPoses(run.measured[i]) : null;
+    const o = lastAtOrBefore(run.obstacles, i, (entry) => entry[0]);
+    const linkSteps = LINK_MS / 1000 / view.setup.time_step;
+    const links = [];
+    for (let k = lastAtOrBefore(run.links, step, (l) => l[0]); k >= 0 && run.links[k][0] > step - linkSteps; k--) {
+      links.push([run.links[k][1], run.links[k][2], 1 - (step - run.links[k][0]) / linkSteps]);
+    }
+    view.marks.clear();
+    const flashSteps = FLASH_SIM_S / view.setup.time_step;
+    const marks = [];
+    for (const m of run.violations) {
+      if (m.step > step) break;
+      view.marks.set(`${m.kind}/${m.step}/${m.robot}/${m.other}`, m);
+      marks.push({ ...m, flash: Math.max(0, 1 - (step - m.step) / flashSteps) });
+    }
+    showViolationList(marks);
+    const c = run.counts[lastAtOrBefore(run.counts, step, (entry) => entry[0])];
+    const atEnd = i === run.steps.length - 1;
+    const fin = run.final || {};
+    view.counts = {
+      boundary: c ? c[1] : 0, collision: c ? c[2] : 0, obstacle: c ? c[3] : 0,
+      // Only the run's last status says these (the log keeps no per-step status here).
+      actuator: atEnd ? fin.actuator : null, rejected: atEnd ? fin.rejected : null, conflicts: atEnd ? fin.conflicts : 0,
+      lost: atEnd ? fin.lost : null,
+    };
+    const trailFrames = Math.ceil(TRAIL_SECONDS / view.setup.time_step / run.stride);
+    view.paths = at.x.map((_, id) => {
+      const path = [];
+      for (let k = Math.max(0, i - trailFrames); k <= i; k++) path.push([run.poses[k][3 * id], run.poses[k][3 * id + 1]]);
+      return path;
+    });
+    view.scene = { step, t, ...at, mx: measured && measured.x, my: measured && measured.y, mth: measured && measured.th,
+      obstacles: o >= 0 ? run.obstacles[o][1] : [], links, marks, lost: view.counts.lost || [] };
+    const stateName = atEnd && run.final ? STATE_NAMES[run.final.state] || "-" : "replaying";
+    showPanel(step, t, view.counts, stateName);
+    view.dirty = true;
+    publishState({ state: stateName,
+      replay: { index: i, frames: run.steps.length, playing: view.replay.playing, speed: view.replay.speed } });
+  }
+
+  function seek(i) {
+    const r = view.replay;
+    r.index = Math.min(Math.max(0, i), r.run.steps.length - 1);
+    r.simTime = r.run.t[r.index];
+    $("scrub").value = String(r.index);
+    replayScene(r.index);
+    draw();
+  }
+
+  function setPlaying(playing) {
+    const r = view.replay;
+    if (playing && r.index >= r.run.steps.length - 1) seek(0);  // play again from the start
+    r.playing = playing;
+    r.lastWall = performance.now();
+    $("play").textContent = playing ? "pause" : "play";
+    replayScene(r.index);
+  }
+
+  function startReplay(run) {
+    view.replay = { run, index: 0, playing: false, speed: 1, simTime: 0, lastWall: performance.now() };
+    view.run = run.run;
+    if (run.flaw) $("source").textContent += ` (not a whole run: ${run.flaw})`;
+    if (run.stride > 1) $("source").textContent += ` (every ${run.stride}th step)`;
+    $("timeline").hidden = false;
+    $("scrub").max = String(run.steps.length - 1);
+    $("play").onclick = () => setPlaying(!view.replay.playing);
+    $("step-forward").onclick = () => { setPlaying(false); seek(view.replay.index + 1); };
+    $("step-back").onclick = () => { setPlaying(false); seek(view.replay.index - 1); };
+    $("scrub").oninput = () => seek(Number($("scrub").value));
+    $("speed").onchange = () => { view.replay.speed = Number($("speed").value); replayScene(view.replay.index); };
+    resize();
+    seek(0);
+  }
+
+  function advanceReplay(now) {
+    const r = view.replay;
+    if (!r || !r.playing) return;
+    r.simTime += ((now - r.lastWall) / 1000) * r.speed;
+    r.lastWall = now;
+    let i = r.index;
+    while (i + 1 < r.run.t.length && r.run.t[i + 1] <= r.simTime) i++;
+    if (i === r.run.t.length - 1) r.playing = false, $("play").textContent = "play";
+    if (i !== r.index || !r.playing) {
+      r.index = i;
+      $("scrub").value = String(i);
+      replayScene(i);
+    }
+  }
+
+  // ---- connection and the drawing loop ----
+  function onSetup(setup) {
+    view.setup = setup;
+    view.dirty = true;
+    $("source").textContent = `${setup.mode}: ${setup.source}`;
+    $("run-name").textContent = setup.run_name || "-";
+    if (setup.mode === "replay" && !view.replay) {
+      fetch("/run.json").then((response) => {
+        if (!response.ok) throw new Error(`/run.json: ${response.status}`);
+        return response.json();
+      }).then(startReplay).catch((error) => { $("connection").textContent = String(error); });
+    }
+    publishState({});
+  }
+
+  function connect() {
+    const socket = new WebSocket(`ws://${location.host}/ws`);
+    socket.onopen = () => { view.connected = true; document.body.dataset.connected = "true"; $("connection").textContent = "connected"; };
+    socket.onclose = () => {
+      view.connected = false;
+      document.body.dataset.connected = "false";
+      $("connection").textContent = "disconnected: retrying";
+      setTimeout(connect, 1000);
+    };
+    socket.onmessage = (event) => {
+      let message;
+      try { message = JSON.parse(event.data); } catch (error) { return; }
+      if (message.type === "setup") onSetup(message);
+      else if (message.type === "frame" && !view.replay) {
+        onFrame(message);
+        showViolationList([...view.marks.values()]);
+        view.dirty = true;  // drawn on the next display frame: several frames in one are drawn once
+      }
+    };
+  }
+
+  function loop(now) {
+    const playing = view.replay && view.replay.playing;
+    advanceReplay(now);
+    if (view.live && !view.replay && (view.dirty || animating())) {
+      liveScene(now);  // flashes fade and links age between frames too
+      view.dirty = true;
+    }
+    if (view.dirty || playing) draw();
+    requestAnimationFrame(loop);
+  }
+
+  for (const box of document.querySelectorAll("#layers input")) box.onchange = draw;
+  window.addEventListener("resize", () => { resize(); draw(); });
+  resize();
+  connect();
+  requestAnimationFrame(loop);
+})();

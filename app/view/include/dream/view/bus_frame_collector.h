@@ -1,0 +1,85 @@
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "dream/lcm/lcm_interface.h"
+#include "dream/obstacles_t.hpp"
+#include "dream/robot_poses_t.hpp"
+#include "dream/run_status_t.hpp"
+#include "dream/view/view_frame.h"
+#include "dream/view/violation_locator.h"
+#include "dream/world/world_params.h"
+
+namespace dream::view {
+
+/// The view's only handler on the bus: it keeps the newest state of the run
+/// (poses, measured poses, obstacles, status, radio senders) and nothing
+/// older, so it costs a run a decode and a copy per message and never waits
+/// for a browser. Frames are taken from another thread (LiveView's pump) at
+/// the pace the browsers are drawn.
+///
+/// Violations: when a DREAM_STATUS counts more boundary, collision or
+/// obstacle errors than the previous one, the world found them on the poses
+/// of the step before (it validates a step's poses, then steps); those
+/// poses are checked again (ViolationLocator) to place each violation. The
+/// latest kMaxMarks marks are kept.
+///
+/// A new run (another run_id on DREAM_POSES) starts over. Messages that do
+/// not decode (lcm::Decode, with the message size limits) are counted and
+/// dropped.
+class BusFrameCollector {
+ public:
+  /// Violation marks kept (the latest), so a run colliding every step
+  /// cannot grow memory.
+  static constexpr size_t kMaxMarks = 64;
+
+  /// Subscribes to DREAM_POSES, DREAM_MEASURED_POSES, DREAM_OBSTACLES,
+  /// DREAM_STATUS and DREAM_RADIO_<n> on `bus`, until destroyed.
+  BusFrameCollector(lcm::LcmInterface& bus, const world::WorldParams& world);
+
+  /// The newest frame, when it changed since `*version` (then updated);
+  /// false when nothing new arrived. Thread-safe against the handlers.
+  bool TakeFrame(ViewFrame* frame, uint64_t* version);
+
+  /// Messages that did not decode (forged or foreign), since the start.
+  int64_t bad_messages() const;
+
+  /// The handler, public for the benchmark and the tests: what one message costs.
+  void OnMessage(const std::string& channel, const void* data, int size);
+
+ private:
+  void OnPoses();  // poses_in_ decoded: the newest poses
+  void OnStatus(const run_status_t& status);
+  void StartRun(int64_t run_id);
+
+  mutable std::mutex mutex_;
+  ViolationLocator locator_;
+  // Where the handler decodes (on the bus's thread, outside the lock); then
+  // swapped with the newest, so it allocates only when a message grows.
+  robot_poses_t poses_in_{};
+  robot_poses_t measured_in_{};
+  obstacles_t obstacles_in_{};
+  run_status_t status_in_{};
+  // The newest state, under mutex_.
+  uint64_t version_ = 0;
+  int64_t run_id_ = 0;
+  robot_poses_t poses_{};
+  robot_poses_t previous_poses_{};  // the step before poses_: what a status's new counts are about
+  robot_poses_t measured_{};
+  obstacles_t obstacles_{};
+  obstacles_t previous_obstacles_{};
+  run_status_t status_{};
+  bool status_seen_ = false;
+  std::vector<int> radio_senders_;  // since the last TakeFrame
+  std::deque<ViolationMark> marks_;
+  int64_t marks_located_ = 0;
+  int64_t bad_messages_ = 0;
+  /// Last: unsubscribed first, so the bus never calls a half-destroyed collector.
+  lcm::Subscription subscription_;
+};
+
+}  // namespace dream::view

@@ -1,0 +1,61 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "dream/view/violation_mark.h"
+
+namespace dream::view {
+
+/// What the page draws of one step of a run: the newest state seen on the
+/// bus, as BusFrameCollector keeps it and FrameJson() sends it.
+struct ViewFrame {
+  /// A virtual obstacle where it is at the frame's step (rectangle_obstacle_t).
+  struct Obstacle {
+    int id = 0;
+    double center_x_m = 0.0;
+    double center_y_m = 0.0;
+    double width_m = 0.0;
+    double height_m = 0.0;
+    double vx_mps = 0.0;
+    double vy_mps = 0.0;
+  };
+  /// DREAM_STATUS as last seen (run_status_t), for the verdict so far.
+  struct Status {
+    bool seen = false;
+    int state = 0;  ///< run_status_t::WAITING_FOR_AGENTS .. ABORTED
+    int64_t boundary_errors = 0;
+    int64_t collision_errors = 0;
+    int64_t actuator_errors = 0;
+    int64_t obstacle_collisions = 0;
+    int64_t rejected_commands = 0;
+    int64_t command_conflicts = 0;
+    std::vector<int> lost_robot_ids;
+    std::string detail;  ///< cut to kMaxDetailChars
+  };
+  static constexpr size_t kMaxDetailChars = 300;
+
+  int64_t run_id = 0;
+  int64_t step = -1;   ///< -1: no poses seen yet
+  int64_t utime = 0;   ///< simulated time, microseconds
+  /// DREAM_POSES: what the world published (true poses in a log; in a live
+  /// run with realism on, what the agents were sent).
+  std::vector<double> x_m, y_m, theta_rad;
+  /// DREAM_MEASURED_POSES of the same step (in logs with realism on); empty otherwise.
+  std::vector<double> measured_x_m, measured_y_m, measured_theta_rad;
+  std::vector<Obstacle> obstacles;
+  Status status;
+  /// Robots that spoke on the radio since the previous frame, ascending.
+  std::vector<int> radio_senders;
+  /// (sender, receiver) pairs that hear each other at this step, when the
+  /// run's config says who hears whom (ViewSetup); bounded by the robots.
+  std::vector<std::pair<int, int>> radio_links;
+  /// The run's latest violations, oldest first (at most BusFrameCollector::kMaxMarks),
+  /// and how many were located in the run so far (marks beyond the list were dropped).
+  std::vector<ViolationMark> violations;
+  int64_t violations_located = 0;
+};
+
+}  // namespace dream::view

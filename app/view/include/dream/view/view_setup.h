@@ -1,0 +1,24 @@
+#pragma once
+
+#include <string>
+
+#include "dream/render/arena_overlays.h"
+#include "dream/world/world_params.h"
+
+namespace dream::view {
+
+/// What does not change during a run and the page needs before any frame:
+/// the arena, the robots' size, and what the run's config adds (goals,
+/// sensor reaches, who hears whom), when a config is known.
+struct ViewSetup {
+  enum class Mode { kLive, kReplay };
+  Mode mode = Mode::kLive;
+  /// The arena (boundary checks), the time step and the collision rule.
+  world::WorldParams world;
+  /// What the run's config adds; empty without a config (live from the bus).
+  render::ArenaOverlays overlays;
+  /// Where the frames come from, shown on the page (a URL or a run folder).
+  std::string source;
+};
+
+}  // namespace dream::view

@@ -1,0 +1,26 @@
+#pragma once
+
+#include <cstdint>
+
+namespace dream::view {
+
+/// One violation of the Robotarium's rules, located: what the page flashes
+/// where and when it happened.
+struct ViolationMark {
+  enum class Kind {
+    kBoundary,   ///< a robot strictly outside the arena (hard error)
+    kCollision,  ///< two robots too close: centres (moved 0.025 m forward) <= 0.135 m apart (hard error)
+    kObstacle,   ///< a robot overlapping a virtual obstacle
+  };
+  Kind kind = Kind::kBoundary;
+  int64_t step = 0;  ///< the step whose poses broke the rule
+  int robot = 0;     ///< the robot (the smaller id of a colliding pair)
+  int other = -1;    ///< the pair's other robot, or the obstacle's id; -1 for the boundary
+  double x_m = 0.0;  ///< where: the robot, or the middle of a colliding pair
+  double y_m = 0.0;
+};
+
+/// "boundary", "collision", "obstacle": the name the page shows.
+const char* ViolationKindName(ViolationMark::Kind kind);
+
+}  // namespace dream::view

@@ -1,0 +1,190 @@
+#include "dream/view/bus_frame_collector.h"
+
+#include <algorithm>
+#include <utility>
+
+#include "dream/lcm/channels.h"
+#include "dream/lcm/lcm_typed.h"
+#include "dream/lcm/message_limits.h"
+
+namespace dream::view {
+namespace {
+
+constexpr const char* kMeasuredPosesChannel = "DREAM_MEASURED_POSES";  // recorded with world.realism on
+constexpr const char* kViewChannels = "DREAM_(POSES|MEASURED_POSES|OBSTACLES|STATUS|RADIO_[0-9]+)";
+
+/// Which kinds of violation a status counts more of than the one before.
+struct NewViolations {
+  bool boundary = false;
+  bool collision = false;
+  bool obstacle = false;
+  bool any() const { return boundary || collision || obstacle; }
+};
+
+bool WantedKind(const NewViolations& added, ViolationMark::Kind kind) {
+  switch (kind) {
+    case ViolationMark::Kind::kBoundary: return added.boundary;
+    case ViolationMark::Kind::kCollision: return added.collision;
+    case ViolationMark::Kind::kObstacle: return added.obstacle;
+  }
+  return false;
+}
+
+}  // namespace
+
+BusFrameCollector::BusFrameCollector(lcm::LcmInterface& bus, const world::WorldParams& world) : locator_(world) {
+  subscription_ = bus.Subscribe(kViewChannels, [this](const std::string& channel, const void* data, int size) {
+    OnMessage(channel, data, size);
+  });
+}
+
+void BusFrameCollector::OnMessage(const std::string& channel, const void* data, int size) {
+  if (channel == lcm::kPosesChannel) {
+    if (!lcm::Decode(data, size, &poses_in_)) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      ++bad_messages_;
+      return;
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    OnPoses();
+  } else if (channel == kMeasuredPosesChannel) {
+    const bool decoded = lcm::Decode(data, size, &measured_in_);
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!decoded) {
+      ++bad_messages_;
+    } else if (measured_in_.run_id == run_id_) {
+      std::swap(measured_, measured_in_);
+      ++version_;
+    }
+  } else if (channel == lcm::kObstaclesChannel) {
+    const bool decoded = lcm::Decode(data, size, &obstacles_in_);
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!decoded) {
+      ++bad_messages_;
+      return;
+    }
+    if (run_id_ != 0 && obstacles_in_.run_id != run_id_) return;  // another world's: not drawn over this one
+    // Swapped, not copied: the handler's cost per step stays a decode.
+    if (obstacles_in_.step != obstacles_.step) std::swap(previous_obstacles_, obstacles_);
+    std::swap(obstacles_, obstacles_in_);
+    ++version_;
+  } else if (channel == lcm::kStatusChannel) {
+    const bool decoded = lcm::Decode(data, size, &status_in_);
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!decoded) {
+      ++bad_messages_;
+      return;
+    }
+    OnStatus(status_in_);
+  } else if (const std::optional<int> sender = lcm::RobotIdFromChannel(channel, lcm::kRadioChannelPrefix)) {
+    // Who spoke is in the channel's name; the payload is the algorithm's own
+    // and is not decoded (a view draws, it does not listen).
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (*sender >= poses_.num_robots) return;  // no robot of this run (and bounded by the run's robots)
+    const auto at = std::lower_bound(radio_senders_.begin(), radio_senders_.end(), *sender);
+    if (at == radio_senders_.end() || *at != *sender) radio_senders_.insert(at, *sender);
+    ++version_;
+  }
+}
+
+void BusFrameCollector::StartRun(int64_t run_id) {
+  run_id_ = run_id;
+  poses_ = robot_poses_t();
+  previous_poses_ = robot_poses_t();
+  measured_ = robot_poses_t();
+  previous_obstacles_ = obstacles_t();
+  if (obstacles_.run_id != run_id) obstacles_ = obstacles_t();
+  if (status_.run_id != run_id) status_seen_ = false;
+  radio_senders_.clear();
+  marks_.clear();
+  marks_located_ = 0;
+}
+
+void BusFrameCollector::OnPoses() {
+  // Another run, or the same one from its start again (its log played once more): start over.
+  const bool restarted = poses_.num_robots > 0 && poses_in_.step + 1 < poses_.step;
+  if (poses_in_.run_id != run_id_ || restarted) StartRun(poses_in_.run_id);
+  // A resend of the same step replaces it; a new step moves it to previous.
+  // Swapped, not copied: the handler's cost per step stays a decode.
+  if (poses_in_.step != poses_.step || poses_.num_robots == 0) std::swap(previous_poses_, poses_);
+  std::swap(poses_, poses_in_);
+  ++version_;
+}
+
+void BusFrameCollector::OnStatus(const run_status_t& status) {
+  if (run_id_ != 0 && status.run_id != run_id_) return;  // another world on the bus
+  NewViolations added;
+  if (status_seen_ && status.run_id == status_.run_id) {
+    added.boundary = status.boundary_errors > status_.boundary_errors;
+    added.collision = status.collision_errors > status_.collision_errors;
+    added.obstacle = status.obstacle_collisions > status_.obstacle_collisions;
+  }
+  status_ = status;
+  status_seen_ = true;
+  ++version_;
+  // The world validated the poses of the step before this status's, then
+  // stepped; it publishes a step's obstacles and status before its poses, so
+  // those poses are the newest or the ones before, depending on the order.
+  if (!added.any()) return;
+  const int64_t validated = status.step - 1;
+  const robot_poses_t* poses = poses_.step == validated && poses_.num_robots > 0 ? &poses_
+                               : previous_poses_.step == validated && previous_poses_.num_robots > 0 ? &previous_poses_
+                                                                                                     : nullptr;
+  if (poses == nullptr) return;  // frames were missed (a view started mid-run): nothing to place
+  static const obstacles_t kNoObstacles{};
+  const obstacles_t& obstacles = obstacles_.step == validated            ? obstacles_
+                                 : previous_obstacles_.step == validated ? previous_obstacles_
+                                                                         : kNoObstacles;
+  std::vector<ViolationMark> found;
+  locator_.Locate(*poses, obstacles, &found);
+  for (const ViolationMark& mark : found) {
+    if (!WantedKind(added, mark.kind)) continue;
+    if (marks_.size() >= kMaxMarks) marks_.pop_front();
+    marks_.push_back(mark);
+    ++marks_located_;
+  }
+}
+
+bool BusFrameCollector::TakeFrame(ViewFrame* frame, uint64_t* version) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (*version == version_) return false;
+  *version = version_;
+  frame->run_id = run_id_;
+  frame->step = poses_.num_robots > 0 ? poses_.step : -1;
+  frame->utime = poses_.utime;
+  frame->x_m = poses_.x;
+  frame->y_m = poses_.y;
+  frame->theta_rad = poses_.theta;
+  const bool measured_now = measured_.num_robots == poses_.num_robots && measured_.step == poses_.step;
+  frame->measured_x_m = measured_now ? measured_.x : std::vector<double>();
+  frame->measured_y_m = measured_now ? measured_.y : std::vector<double>();
+  frame->measured_theta_rad = measured_now ? measured_.theta : std::vector<double>();
+  frame->obstacles.clear();
+  for (const rectangle_obstacle_t& o : obstacles_.obstacles) {
+    frame->obstacles.push_back({o.id, o.center_x, o.center_y, o.width, o.height, o.vx, o.vy});
+  }
+  ViewFrame::Status& status = frame->status;
+  status.seen = status_seen_;
+  status.state = status_.state;
+  status.boundary_errors = status_.boundary_errors;
+  status.collision_errors = status_.collision_errors;
+  status.actuator_errors = status_.actuator_errors;
+  status.obstacle_collisions = status_.obstacle_collisions;
+  status.rejected_commands = status_.rejected_commands;
+  status.command_conflicts = status_.command_conflicts;
+  status.lost_robot_ids = status_.lost_robot_ids;
+  status.detail = status_.detail.substr(0, ViewFrame::kMaxDetailChars);
+  frame->radio_senders.swap(radio_senders_);
+  radio_senders_.clear();
+  frame->radio_links.clear();
+  frame->violations.assign(marks_.begin(), marks_.end());
+  frame->violations_located = marks_located_;
+  return true;
+}
+
+int64_t BusFrameCollector::bad_messages() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return bad_messages_;
+}
+
+}  // namespace dream::view

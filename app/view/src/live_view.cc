@@ -1,0 +1,83 @@
+#include "dream/view/live_view.h"
+
+#include <exception>
+#include <vector>
+#include <utility>
+
+#include "dream/lcm/log_reader.h"
+#include "dream/view/frame_json.h"
+#include "dream/view/thread_priority.h"
+
+namespace dream::view {
+
+LiveView::LiveView(lcm::LcmInterface& bus, ViewServer& server, ViewSetup setup,
+                   std::chrono::milliseconds frame_period)
+    : server_(server), setup_(std::move(setup)), collector_(bus, setup_.world), frame_period_(frame_period) {
+  server_.SetSetup(SetupJson(setup_));
+  pump_ = std::thread([this] {
+    LowerThisThreadsPriority();
+    while (!stop_.load()) {
+      PumpOnce();
+      std::this_thread::sleep_for(frame_period_);
+    }
+  });
+}
+
+LiveView::~LiveView() {
+  stop_.store(true);
+  if (pump_.joinable()) pump_.join();
+  PumpOnce();  // the run's last state (FINISHED) reaches the page
+}
+
+void LiveView::PumpOnce() {
+  if (!collector_.TakeFrame(&frame_, &version_)) return;
+  try {
+    AddRadioLinks(&frame_);
+  } catch (const std::exception& error) {
+    // The config's radio decided (agents' code): the frame goes without links.
+    frame_.radio_links.clear();
+  }
+  server_.Broadcast(FrameJson(frame_));
+  frames_sent_.fetch_add(1);
+}
+
+void LiveView::ShowEndOf(const std::string& log_path) {
+  lcm::LogReader reader(log_path);
+  lcm::LogRecord record;
+  // The last of each channel, handed over in the order the world publishes a step.
+  const std::vector<std::string> channels = {"DREAM_OBSTACLES", "DREAM_STATUS", "DREAM_POSES", "DREAM_MEASURED_POSES"};
+  std::vector<std::vector<uint8_t>> last(channels.size());
+  while (reader.Next(&record)) {
+    for (size_t i = 0; i < channels.size(); ++i) {
+      if (record.channel == channels[i]) last[i].swap(record.data);
+    }
+  }
+  for (size_t i = 0; i < channels.size(); ++i) {
+    if (!last[i].empty()) collector_.OnMessage(channels[i], last[i].data(), static_cast<int>(last[i].size()));
+  }
+  PumpOnce();
+}
+
+void LiveView::AddRadioLinks(ViewFrame* frame) {
+  if (!setup_.overlays.hears || frame->x_m.empty()) return;
+  // Who hears whom is the robots' own radio deciding on these poses (the
+  // config's range, graph or roles): links from each robot that spoke.
+  robot_poses_t poses{};
+  poses.step = frame->step;
+  poses.num_robots = static_cast<int32_t>(frame->x_m.size());
+  poses.x = frame->x_m;
+  poses.y = frame->y_m;
+  poses.theta = frame->theta_rad;
+  poses.v.assign(frame->x_m.size(), 0.0);
+  poses.w.assign(frame->x_m.size(), 0.0);
+  const int n = poses.num_robots;
+  for (const int sender : frame->radio_senders) {
+    for (int receiver = 0; receiver < n; ++receiver) {
+      if (receiver != sender && setup_.overlays.hears(receiver, sender, poses)) {
+        frame->radio_links.emplace_back(sender, receiver);
+      }
+    }
+  }
+}
+
+}  // namespace dream::view

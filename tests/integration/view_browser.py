@@ -1,0 +1,248 @@
+#!/usr/bin/python3
+"""view_browser: `dream view` as headless Chromium draws it, live and in replay.
+
+Live: `dream view --port 0` listens; Chromium (headless, driven over the DevTools protocol) opens
+it; `dream launch` runs a three-robot config over udpm (in a private network namespace) where
+robot 0 drives out of the arena and robot 1 into robot 2. The page's state (window.dreamView.state,
+what it draws) must show the three robots with their ids at the positions the run's log holds for
+the step shown, the step advancing, each violation marked where the log says it happened, the
+counts of the run's summary and the verdict "rejected". A screenshot is kept (live.png).
+
+lcm-logplayer: the run's log played on the bus (4x) is drawn live too, as a new run.
+
+Embedded: `dream run --view --pace 4` of the same config: the page follows it to its last step
+(the end of a run on the process's own memq bus, which no handler reads, comes from its log).
+
+Replay: `dream view RUN` of that run; the page's timeline is driven as a user would (play, pause,
+step forward and back, scrub, speed) and must show the log's poses at the chosen step, and only
+the violations up to it. A screenshot is kept (replay.png).
+
+Usage: netns.sh view_browser.py --dream BIN --source DIR --types-dir DIR --artifacts DIR
+"""
+
+import json
+import os
+import re
+import time
+
+from devtools import Page, chromium_argv, devtools_port
+from dreamtest import argument_parser, check, fail, import_types, main, read_events, read_summary, require_private_netns
+
+STEPS = 240
+CONFIG = f"""name: clash
+seed: 1
+robots: 3
+steps: {STEPS}
+stop_when_done: false
+world:
+  mode: lockstep
+initial_poses:
+  - [1.2, 0.0, 0.0]
+  - [-0.7, -0.5, 0.0]
+  - [-0.2, -0.5, 3.1416]
+obstacles:
+  - center: [0.0, 0.5]
+    size: [0.3, 0.2]
+controller:
+  kind: go_to_goal
+  gain: 0.8
+  max_speed_mps: 0.15
+  tolerance_m: 0.02
+  goals:
+    - [1.9, 0.0]      # outside the arena: robot 0 leaves it
+    - [-0.2, -0.5]    # where robot 2 stands: robot 1 runs into it
+    - [-0.2, -0.5]
+"""
+URL = re.compile(r"open (http://127\.0\.0\.1:\d+/)")
+ARENA_X = 1.6
+
+
+def state(page):
+    return page.evaluate("window.dreamView ? window.dreamView.state : null")
+
+
+def wait_for(page, what, predicate, timeout):
+    deadline = time.monotonic() + timeout
+    last = None
+    while time.monotonic() < deadline:
+        last = state(page)
+        if last and predicate(last):
+            return last
+        time.sleep(0.05)
+    fail(f"the page did not show {what} within {timeout} s; its state: {json.dumps(last)[:600]}")
+
+
+def poses_by_step(dream, log_path):
+    poses = {}
+    for event in read_events(log_path):
+        if event.channel == "DREAM_POSES":
+            message = dream.robot_poses_t.decode(event.data)
+            poses[message.step] = message
+    return poses
+
+
+def check_robots(shown, poses, where):
+    """The page's robots are the log's at the page's step (sent to 0.1 mm)."""
+    step = shown["step"]
+    check(step in poses, f"{where}: the page shows step {step}, which the log does not have")
+    truth = poses[step]
+    robots = shown["robots"]
+    check([r["id"] for r in robots] == list(range(truth.num_robots)),
+          f"{where}: robots {[r['id'] for r in robots]} drawn, the run has {truth.num_robots}")
+    for r in robots:
+        i = r["id"]
+        error = max(abs(r["x"] - truth.x[i]), abs(r["y"] - truth.y[i]), abs(r["theta"] - truth.theta[i]))
+        check(error < 1e-4, f"{where}: robot {i} drawn at ({r['x']}, {r['y']}, {r['theta']}) at step {step}, "
+                            f"the log has ({truth.x[i]:.5f}, {truth.y[i]:.5f}, {truth.theta[i]:.5f})")
+
+
+def check_marks(marks, poses, where):
+    """Each violation marked is one at its step in the log: robot 0 outside, robots 1 and 2 too close."""
+    kinds = {m["kind"] for m in marks}
+    check({"boundary", "collision"} <= kinds, f"{where}: violations marked: {sorted(kinds)}; expected a boundary "
+                                              f"and a collision")
+    for m in marks:
+        truth = poses[m["step"]]
+        if m["kind"] == "boundary":
+            check(m["robot"] == 0 and truth.x[0] > ARENA_X, f"{where}: boundary mark {m} but robot 0 is at "
+                                                             f"x={truth.x[0]:.3f} at that step")
+            check(abs(m["x"] - truth.x[0]) < 1e-4, f"{where}: boundary mark {m} is not where robot 0 was")
+        elif m["kind"] == "collision":
+            check((m["robot"], m["other"]) == (1, 2), f"{where}: collision mark {m}: expected robots 1 and 2")
+            check(abs(m["x"] - (truth.x[1] + truth.x[2]) / 2) < 1e-4, f"{where}: collision mark {m} is not "
+                                                                       f"between robots 1 and 2")
+        else:
+            fail(f"{where}: unexpected violation {m}")
+
+
+def watch_live(ctx, args, page, config, run_dir):
+    ctx.start("launch", [args.dream, "launch", config, "--out", run_dir, "--pace", "3"])
+    steps_seen, flash_shot = [], False
+    deadline = time.monotonic() + 40
+    while ctx.procs["launch"][0].poll() is None and time.monotonic() < deadline:
+        shown = state(page)
+        if shown and shown["step"] >= 0 and (not steps_seen or steps_seen[-1] != shown["step"]):
+            steps_seen.append(shown["step"])
+        if shown and shown["flashing"] > 0 and not flash_shot:
+            page.screenshot(os.path.join(args.artifacts, "live.png"))  # a violation flashing
+            flash_shot = True
+        time.sleep(0.05)
+    code = ctx.wait("launch", 5)
+    check(code == 3, f"dream launch exited {code}; the config's run breaks the rules (expected 3, rejected)")
+    # --pace 3: three times real time at most (a slower machine only goes slower).
+    rate = read_summary(run_dir)["steps_per_second"]
+    check(rate <= 3 / 0.033 * 1.05, f"dream launch --pace 3 ran {rate:.0f} steps/s, over three times real time")
+    check(len(steps_seen) >= 5 and steps_seen == sorted(steps_seen),
+          f"the page's step did not advance with the run: {steps_seen}")
+    check(flash_shot, "no violation was flashing on the page at any time during the run")
+    return steps_seen
+
+
+def check_live(ctx, args, dream, page, config, run_dir):
+    """dream launch watched live; then the same run's log played with lcm-logplayer. Returns its poses."""
+    steps_seen = watch_live(ctx, args, page, config, run_dir)
+    poses = poses_by_step(dream, os.path.join(run_dir, "run.lcmlog"))
+    final = wait_for(page, f"the run's last step ({STEPS})", lambda s: s["step"] == STEPS, 5)
+    check_robots(final, poses, "live")
+    check_marks(final["violations"], poses, "live")
+    summary = read_summary(run_dir)["violations"]
+    check(final["counts"]["boundary"] == summary["boundary_errors"] and
+          final["counts"]["collision"] == summary["collision_errors"],
+          f"the page's counts {final['counts']} are not summary.json's {summary}")
+    check(final["verdict"] == "rejected", f"the page's verdict is {final['verdict']}, the run was rejected")
+    print(f"live: {len(steps_seen)} steps seen, {len(final['violations'])} violations marked")
+
+    # A lab run, or any run log, watched by playing it on the bus.
+    ctx.start("logplayer", ["lcm-logplayer", f"--lcm-url={os.environ['LCM_DEFAULT_URL']}", "-s", "4",
+                            os.path.join(run_dir, "run.lcmlog")])
+    wait_for(page, "the played log from its start", lambda s: s["step"] < STEPS / 2, 10)
+    played = wait_for(page, "the played log to its end", lambda s: s["step"] == STEPS, 20)
+    check_robots(played, poses, "lcm-logplayer")
+    check_marks(played["violations"], poses, "lcm-logplayer")
+    ctx.wait("logplayer", 10)
+    return poses
+
+
+def check_replay(ctx, args, page, run_dir, poses):
+    """dream view RUN, its timeline driven as a user would."""
+    ctx.start("replay", [args.dream, "view", run_dir, "--port", "0"])
+    ctx.wait_for_output("replay", URL.pattern, 10)
+    page.navigate(URL.search(ctx.output("replay")).group(1))
+    shown = wait_for(page, "the replay loaded", lambda s: s["mode"] == "replay" and "replay" in s, 15)
+    check(shown["replay"]["frames"] == STEPS + 1 and shown["step"] == 0,
+          f"the replay starts at step {shown['step']} of {shown['replay']['frames']} frames; expected 0 of {STEPS + 1}")
+    check(shown["violations"] == [] and shown["verdict"] == "clean", f"step 0 shows violations: {shown['violations']}")
+
+    def click(element_id):
+        page.evaluate(f"document.getElementById('{element_id}').click()")
+
+    click("play")
+    wait_for(page, "play advancing the timeline", lambda s: s["replay"]["playing"] and s["replay"]["index"] > 3, 5)
+    click("play")  # pause
+    paused = wait_for(page, "pause", lambda s: not s["replay"]["playing"], 2)
+    time.sleep(0.3)
+    check(state(page)["replay"]["index"] == paused["replay"]["index"], "the timeline moved while paused")
+    click("step-forward")
+    wait_for(page, "one step forward", lambda s: s["replay"]["index"] == paused["replay"]["index"] + 1, 2)
+    click("step-back")
+    wait_for(page, "one step back", lambda s: s["replay"]["index"] == paused["replay"]["index"], 2)
+    page.evaluate("(() => { const s = document.getElementById('scrub'); s.value = '200';"
+                  " s.dispatchEvent(new Event('input')); })()")
+    scrubbed = wait_for(page, "the scrubbed step", lambda s: s["step"] == 200, 2)
+    check_robots(scrubbed, poses, "replay at step 200")
+    check_marks(scrubbed["violations"], poses, "replay at step 200")
+    check(max(m["step"] for m in scrubbed["violations"]) <= 200, "the replay marks violations after its step")
+    outside = sum(1 for step, p in poses.items() if step <= 200 and any(abs(x) > ARENA_X for x in p.x))
+    check(scrubbed["counts"]["boundary"] == outside,
+          f"at step 200 the page counts {scrubbed['counts']['boundary']} boundary errors, the log {outside}")
+    page.evaluate("(() => { const s = document.getElementById('speed'); s.value = '4';"
+                  " s.dispatchEvent(new Event('change')); })()")
+    wait_for(page, "speed 4x", lambda s: s["replay"]["speed"] == 4, 2)
+    page.screenshot(os.path.join(args.artifacts, "replay.png"))
+
+
+def check_embedded(ctx, args, dream, page, config):
+    """dream run --view, followed to its finished last step."""
+    embedded_dir = ctx.path("embedded")
+    ctx.start("embedded", [args.dream, "run", config, "--out", embedded_dir, "--view", "--view-port", "0",
+                           "--pace", "4"])
+    ctx.wait_for_output("embedded", URL.pattern, 10)
+    page.navigate(URL.search(ctx.output("embedded")).group(1))
+    ended = wait_for(page, "dream run --view to its end", lambda s: s["mode"] == "live" and s["step"] == STEPS and
+                     s.get("state") == "finished", 20)
+    ctx.wait("embedded", 10)
+    embedded_poses = poses_by_step(dream, os.path.join(embedded_dir, "run.lcmlog"))
+    check_robots(ended, embedded_poses, "dream run --view")
+    check_marks(ended["violations"], embedded_poses, "dream run --view")
+
+
+def test(ctx):
+    parser = argument_parser(types_dir=True)
+    parser.add_argument("--artifacts", required=True, help="where the screenshots are kept")
+    args = parser.parse_args()
+    require_private_netns()
+    dream = import_types(args.types_dir)
+    os.makedirs(args.artifacts, exist_ok=True)
+    config, run_dir = ctx.path("clash.yaml"), ctx.path("run")
+    with open(config, "w") as f:
+        f.write(CONFIG)
+
+    ctx.start("view", [args.dream, "view", "--port", "0", "--config", config])
+    ctx.wait_for_output("view", URL.pattern, 10)
+    live_url = URL.search(ctx.output("view")).group(1)
+    ctx.start("chromium", chromium_argv(ctx.path("chrome"), live_url), own_group=True)
+    page = Page(devtools_port(ctx.path("chrome")))
+    wait_for(page, "a connected live page", lambda s: s["connected"] and s["mode"] == "live", 20)
+
+    poses = check_live(ctx, args, dream, page, config, run_dir)
+    check_replay(ctx, args, page, run_dir, poses)
+    check_embedded(ctx, args, dream, page, config)
+    page.close()
+    for shot in ("live.png", "replay.png"):
+        path = os.path.join(args.artifacts, shot)
+        check(os.path.getsize(path) > 10000, f"{path}: the screenshot is nearly empty")
+    print(f"screenshots: {args.artifacts}/live.png, replay.png")
+
+
+if __name__ == "__main__":
+    main(test)
