@@ -5,6 +5,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "dream/agent_host/python_controller_builder.h"
 #include "dream/config_overrides/config_override.h"
 #include "dream/agent_host/controller_factory.h"
 #include "dream/config/config_error.h"
@@ -38,7 +39,7 @@ struct ModuleSource {
 };
 std::optional<ModuleSource> PythonModuleSource(YAML::Node& root, const std::string& base_config_path) {
   YAML::Node controller = root["controller"];
-  if (!controller.IsMap() || !controller["kind"].IsScalar() || controller["kind"].Scalar() != "python" ||
+  if (!controller.IsMap() || !controller["kind"].IsScalar() || controller["kind"].Scalar() != agent_host::PythonControllerBuilder::kKind ||
       !controller["module"].IsScalar()) {
     return std::nullopt;
   }
