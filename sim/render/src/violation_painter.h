@@ -1,0 +1,44 @@
+#pragma once
+
+#include <cairo.h>
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "dream/render/arena_layout.h"
+#include "dream/world/located_violation.h"
+
+namespace dream::render {
+
+/// The red of violation marks.
+inline constexpr double kViolationRed[3] = {0.84, 0.08, 0.08};
+
+/// A violation's mark at pixel (x, y): a red ring with a cross, `radius_px`
+/// wide, with opacity `alpha` (also the legend's marker).
+void ViolationRing(cairo_t* cr, double x, double y, double radius_px, double line_px, double alpha);
+
+/// Marks located violations where they happened: a red ring with a cross
+/// round the robot (or the middle of a colliding pair) and a small
+/// "k=<first step>" label beside it. Labels are placed beside their ring
+/// where they overlap no label already placed, and left out where every
+/// place is taken, so many marks stay readable.
+class ViolationPainter {
+ public:
+  ViolationPainter(cairo_t* cr, const ArenaLayout& layout) : cr_(cr), layout_(layout) {}
+
+  /// Marks every violation that began by `now_step` (all by default); one
+  /// over by then (last_step < now_step) is drawn faded. Returns how many
+  /// labels found a place.
+  int Mark(const std::vector<world::LocatedViolation>& violations,
+           int64_t now_step = std::numeric_limits<int64_t>::max()) const;
+
+  /// The ring's radius in pixels: round a colliding pair (0.135 m apart, 0.11 m wide).
+  double RingRadiusPx() const;
+
+ private:
+  cairo_t* cr_;
+  const ArenaLayout& layout_;
+};
+
+}  // namespace dream::render
