@@ -32,12 +32,15 @@ void ViolationRing(cairo_t* cr, double x, double y, double radius_px, double lin
 
 double ViolationPainter::RingRadiusPx() const { return std::max(6.0, kRingRadiusM * layout_.scale()); }
 
-int ViolationPainter::Mark(const std::vector<world::LocatedViolation>& violations, int64_t now_step) const {
+int ViolationPainter::Mark(const std::vector<world::LocatedViolation>& violations,
+                           std::optional<int64_t> now_step) const {
   const double radius = RingRadiusPx();
   const double line = std::max(1.5, 2.5 * layout_.ui_scale());
+  auto begun = [&](const world::LocatedViolation& v) { return !now_step || v.first_step <= *now_step; };
   for (const world::LocatedViolation& v : violations) {
-    if (v.first_step > now_step) continue;
-    ViolationRing(cr_, layout_.px(v.x_m), layout_.py(v.y_m), radius, line, v.last_step < now_step ? 0.45 : 1.0);
+    if (!begun(v)) continue;
+    const bool over = now_step && v.last_step < *now_step;
+    ViolationRing(cr_, layout_.px(v.x_m), layout_.py(v.y_m), radius, line, over ? 0.45 : 1.0);
   }
   // Labels after every ring, so no ring covers a label.
   cairo_select_font_face(cr_, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
@@ -45,7 +48,7 @@ int ViolationPainter::Mark(const std::vector<world::LocatedViolation>& violation
   std::vector<Box> taken;
   int placed = 0;
   for (const world::LocatedViolation& v : violations) {
-    if (v.first_step > now_step) continue;
+    if (!begun(v)) continue;
     char text[32];
     std::snprintf(text, sizeof(text), "k=%lld", static_cast<long long>(v.first_step));
     cairo_text_extents_t extents;

@@ -3,7 +3,7 @@
 #include <cairo.h>
 
 #include <cstdint>
-#include <limits>
+#include <optional>
 #include <vector>
 
 #include "dream/render/arena_layout.h"
@@ -27,11 +27,10 @@ class ViolationPainter {
  public:
   ViolationPainter(cairo_t* cr, const ArenaLayout& layout) : cr_(cr), layout_(layout) {}
 
-  /// Marks every violation that began by `now_step` (all by default); one
-  /// over by then (last_step < now_step) is drawn faded. Returns how many
-  /// labels found a place.
-  int Mark(const std::vector<world::LocatedViolation>& violations,
-           int64_t now_step = std::numeric_limits<int64_t>::max()) const;
+  /// Marks every violation (a picture of the whole run), or with `now_step`
+  /// (a video frame) those begun by then, the ones over by then
+  /// (last_step < now_step) faded. Returns how many labels found a place.
+  int Mark(const std::vector<world::LocatedViolation>& violations, std::optional<int64_t> now_step = {}) const;
 
   /// The ring's radius in pixels: round a colliding pair (0.135 m apart, 0.11 m wide).
   double RingRadiusPx() const;
