@@ -20,9 +20,11 @@ void ViolationRing(cairo_t* cr, double x, double y, double radius_px, double lin
 
 /// Marks located violations where they happened: a red ring with a cross
 /// round the robot (or the middle of a colliding pair) and a small
-/// "k=<first step>" label beside it. Labels are placed beside their ring
-/// where they overlap no label already placed, and left out where every
-/// place is taken, so many marks stay readable.
+/// "k=<first step>" label beside it. Marks closer than half a ring are one
+/// ring, labelled "k=<earliest> +<how many more>"; labels are placed at a
+/// corner of their ring where they overlap no label already placed (inside
+/// the picture), and left out where every corner is taken, so many marks
+/// stay readable.
 class ViolationPainter {
  public:
   ViolationPainter(cairo_t* cr, const ArenaLayout& layout) : cr_(cr), layout_(layout) {}
@@ -36,6 +38,16 @@ class ViolationPainter {
   double RingRadiusPx() const;
 
  private:
+  /// Where a ring goes, for one violation or several at one place.
+  struct Spot {
+    double x = 0;  // pixels
+    double y = 0;
+    int64_t first_step = 0;  // the earliest of its violations
+    int others = 0;          // violations there besides the first
+    bool going_on = true;    // a video frame: one of them still lasts
+  };
+  std::vector<Spot> Spots(const std::vector<world::LocatedViolation>& violations, std::optional<int64_t> now_step) const;
+
   cairo_t* cr_;
   const ArenaLayout& layout_;
 };
