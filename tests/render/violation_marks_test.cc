@@ -127,6 +127,36 @@ TEST(ViolationMarksTest, ThePictureMarksEachViolationAtItsPlaceWithItsFirstStepA
   EXPECT_EQ(without.CountNear(0, 0, without.width(), without.height(), kRed, 40), 0);
 }
 
+TEST(ViolationMarksTest, MarksAtOnePlaceAreOneRingWithOneLabelCountingTheOthers) {
+  const TempFolder dir;
+  const run_log::RunLog run = run_log::RunLog::Read(SyntheticRunLog::TwoRobots(dir / "run.lcmlog", 50).Write());
+  ArenaOverlays one;
+  one.violations.listed.push_back({Kind::kObstacle, 1, 3, 40, 45, -0.8, -0.6});
+  ArenaOverlays three = one;  // two more at (nearly) the same place
+  three.violations.listed.push_back({Kind::kObstacle, 1, 4, 50, 50, -0.8, -0.6});
+  three.violations.listed.push_back({Kind::kBoundary, 1, -1, 20, 20, -0.79, -0.6});
+  TrajectoryPicture::Render(run, one, dir / "one.png", RenderFormat::kPng, 1280);
+  TrajectoryPicture::Render(run, three, dir / "three.png", RenderFormat::kPng, 1280);
+  const PicturePixels single(dir / "one.png");
+  const PicturePixels merged(dir / "three.png");
+  const ArenaLayout layout(1280, 2);
+  const double ring_px = kRingRadiusM * layout.scale();
+  const double x = layout.px(-0.8);
+  const double y = layout.py(-0.6);
+  // One label, at the upper right: "k=40" alone, "k=20 +2" (wider) merged.
+  auto upper_right = [&](const PicturePixels& p) {
+    return p.CountNear(x + 0.8 * ring_px, y - 0.8 * ring_px - 16, x + 0.8 * ring_px + 90, y - 0.8 * ring_px, kRed, 40);
+  };
+  auto other_corners = [&](const PicturePixels& p) {
+    return p.CountNear(x + 0.8 * ring_px, y + 0.8 * ring_px, x + 0.8 * ring_px + 60, y + 0.8 * ring_px + 16, kRed, 40) +
+           p.CountNear(x - 0.8 * ring_px - 60, y - 0.8 * ring_px - 16, x - 0.8 * ring_px, y - 0.8 * ring_px, kRed, 40);
+  };
+  EXPECT_GT(upper_right(single), 5);
+  EXPECT_GT(upper_right(merged), upper_right(single) + 5);
+  EXPECT_EQ(other_corners(single), 0);
+  EXPECT_EQ(other_corners(merged), 0);  // no second or third label
+}
+
 TEST(ViolationMarksTest, TheCaptionCountsThemAndSaysWhatIsNotMarked) {
   world::LocatedViolations violations;
   violations.listed.push_back({Kind::kCollision, 0, 1, 40, 60, 0.0, 0.0});
