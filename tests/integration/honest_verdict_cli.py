@@ -98,6 +98,22 @@ def test(ctx):
           f"debug()'s count and the verifier's both shown: {text[:700]}")
     print(f"outside: debug() {steps_outside} steps; verifier: {verifier['problem']}")
 
+    # Where and when (issue 25 item 3): robots 0 and 7 drive out past the right
+    # wall; summary.json places each, and the picture and dream render mark them.
+    located = summary["violations_located"]
+    outside_robots = sorted(e["robots"][0] for e in located["listed"] if e["kind"] == "boundary")
+    check(outside_robots == [0, 7] and located["unlisted"] == 0,
+          f"violations_located should list robots 0 and 7 outside: {located}")
+    for entry in located["listed"]:
+        check(entry["kind"] != "boundary" or (entry["position"][0] > 1.6 and 0 < entry["first_step"] <= entry["last_step"]),
+              f"a robot outside is placed past the right wall (x > 1.6) with its steps: {entry}")
+    boundary = next(r for r in summary["verdict_reasons"] if r["rule"] == "boundary")
+    check("violations_located says where and when" in boundary["find_out"] and "dream render RUN" in boundary["find_out"],
+          f"the boundary reason should say where to look: {boundary}")
+    marked = os.path.join(out_run, "marked.png")
+    code, text = ctx.run([dream, "render", out_run, "--out", marked], timeout=60, expect=0)
+    check(os.path.getsize(marked) > 0, "dream render drew no picture")
+
 
 if __name__ == "__main__":
     main(test)

@@ -128,6 +128,8 @@ TEST_F(RunSessionTest, WritesEveryOutputAndBuildsTheFactoryOnce) {
   EXPECT_EQ(summary["verdict"], "clean");
   EXPECT_EQ(summary["metrics"]["kind"], "session_test_drive");
   EXPECT_EQ(summary["goal"]["judged"], false);  // the kind has no goal of its own
+  EXPECT_EQ(summary["violations_located"],
+            nlohmann::json({{"listed", nlohmann::json::array()}, {"unlisted", 0}, {"max_listed", 100}}));
   EXPECT_THAT(report_.str(), HasSubstr("log:     " + out() + "/run.lcmlog"));
   EXPECT_THAT(report_.str(), HasSubstr("picture: " + out() + "/trajectories.png"));
   // One session, one run: a second would overwrite the first's folder.
@@ -194,6 +196,20 @@ TEST_F(RunSessionTest, ARobotLeavingTheArenaIsRejectedAndCountedAsTheLabsVerifie
   const nlohmann::json summary = Summary();
   EXPECT_EQ(summary["verdict"], "rejected");
   EXPECT_THAT(report_.str(), HasSubstr(result.judgement.Text()));
+  // Where and when: one entry, robot 0 outside from the first step the world
+  // counted to the last (each of those steps one boundary error).
+  const nlohmann::json& located = summary["violations_located"];
+  ASSERT_EQ(located["listed"].size(), 1u) << located.dump();
+  const nlohmann::json& entry = located["listed"][0];
+  EXPECT_EQ(entry["kind"], "boundary");
+  EXPECT_EQ(entry["robots"], nlohmann::json::array({0}));
+  const int64_t first = entry["first_step"].get<int64_t>();
+  const int64_t last = entry["last_step"].get<int64_t>();
+  EXPECT_GT(first, 0);
+  EXPECT_EQ(last - first + 1, summary["violations"]["boundary_errors"].get<int64_t>());
+  EXPECT_GT(entry["position"][0].get<double>(), 1.6);  // just past the right wall
+  EXPECT_NEAR(entry["position"][1].get<double>(), 0.0, 1e-9);
+  EXPECT_EQ(located["unlisted"], 0);
 }
 
 TEST_F(RunSessionTest, ARunWithoutAgentsFailsWithASummaryAndNoPicture) {

@@ -80,6 +80,25 @@ TEST(ImportWorkflowTest, ALabRunThatMissedItsGoalIsNotReadyAsASimulatedOneWouldB
   EXPECT_THAT(out.str(), HasSubstr("  - goal: "));
 }
 
+TEST(ImportWorkflowTest, ALabRunsViolationsAreLocatedByTheWorldsRulesAsASimulatedRunsAre) {
+  // Robot 0 stood past the right wall at rows 10..15 of the lab's result.
+  const bridge::NpyArray rows =
+      bridge::testing::PerfectLabResult(testing::SimulatedExport(), [](int64_t k, double* row) {
+        if (k >= 10 && k <= 15) row[bridge::ResultLayout::kFixedColumns] = 1.7;  // robot 0's x
+      });
+  std::ostringstream out;
+  const ImportWorkflow::Result result = Import(rows, "outside", out);
+  EXPECT_EQ(result.verdict(), world::RunVerdict::kRejected);
+  const nlohmann::json located = ReadJson(result.summary_path)["violations_located"];
+  ASSERT_EQ(located["listed"].size(), 1u) << located.dump();
+  const nlohmann::json& entry = located["listed"][0];
+  EXPECT_EQ(entry["kind"], "boundary");
+  EXPECT_EQ(entry["robots"], nlohmann::json::array({0}));
+  EXPECT_EQ(entry["last_step"].get<int64_t>() - entry["first_step"].get<int64_t>(), 5);
+  EXPECT_DOUBLE_EQ(entry["position"][0].get<double>(), 1.7);
+  EXPECT_EQ(located["unlisted"], 0);
+}
+
 TEST(ImportWorkflowTest, TheVerifiersRulesStayInTheVerdictBesideTheGoal) {
   const bridge::ExportedSubmission exported = bridge::ExportedSubmission::Read(testing::SimulatedExport());
   const std::optional<world::LabVerifierRules::Declaration> declared =

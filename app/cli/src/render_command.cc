@@ -224,6 +224,9 @@ int RunRender(const RenderArgs& args) {
   }
   render::ArenaOverlays overlays = Overlays(args, log, run.num_robots());
   RunLabelFromSummary(log, &overlays);
+  // Where and when the run broke a rule, by the world's own checks (the
+  // Robotarium's arena and collision rule: WorldParams is not configurable).
+  overlays.violations = render::LocateViolations(run);
   if (kind == Kind::kPicture) {
     render::TrajectoryPicture::Render(run, overlays, out.string(), format, args.width_px > 0 ? args.width_px : 1280);
     std::cout << "picture: " << out.string() << " (" << run.num_robots() << " robots, " << run.poses().size()

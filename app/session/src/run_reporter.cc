@@ -14,6 +14,7 @@
 #include "dream/files/json_text.h"
 #include "dream/node/run_judge.h"
 #include "dream/node/run_summary.h"
+#include "dream/render/run_geometry.h"
 #include "dream/render/trajectory_picture.h"
 #include "dream/run_log/run_log.h"
 #include "dream/session/experiment_goal.h"
@@ -22,14 +23,20 @@
 namespace dream::session {
 
 /// The run's log, read back once after the run for the metrics, the
-/// verifier's counts and the picture; when it cannot be read, each of them
-/// fails with the reader's error, as when each read it.
+/// verifier's counts, the violations located and the picture; when it cannot
+/// be read, each of them fails with the reader's error, as when each read it.
 struct RunReporter::LogReadBack {
-  explicit LogReadBack(const std::string& log_path) : path(log_path) {
+  LogReadBack(const std::string& log_path, const world::WorldParams& world) : path(log_path) {
     try {
       log.emplace(run_log::RunLog::Read(path));
     } catch (const std::exception& e) {
       error = e.what();
+      return;
+    }
+    try {
+      located = render::LocateViolations(*log, world, kMaxViolationsListed);
+    } catch (const std::exception& e) {
+      located_error = e.what();
     }
   }
   /// @throws std::runtime_error (the reader's) when the log could not be read.
@@ -40,8 +47,25 @@ struct RunReporter::LogReadBack {
 
   std::string path;
   std::optional<run_log::RunLog> log;
+  world::LocatedViolations located;  // by the world's checks on the log's poses
+  std::string located_error;         // why they could not be located
   std::string error;
 };
+
+namespace {
+
+/// summary.json's violations_located, placed right after its violation counts.
+void AddViolationsLocated(const nlohmann::ordered_json& located, nlohmann::ordered_json* summary) {
+  nlohmann::ordered_json placed = nlohmann::ordered_json::object();
+  for (auto it = summary->begin(); it != summary->end(); ++it) {
+    placed[it.key()] = it.value();
+    if (it.key() == "violations") placed["violations_located"] = located;
+  }
+  if (!placed.contains("violations_located")) placed["violations_located"] = located;
+  *summary = std::move(placed);
+}
+
+}  // namespace
 
 RunReporter::RunReporter(const run_config::RunConfig& config, const agent_host::ControllerFactory* factory,
                          std::string factory_error, Options options)
@@ -100,7 +124,7 @@ RunResult RunReporter::Report(const Ended& ended) const {
   result.outcome = outcome;
   // Written whatever the outcome: after a failed run it says why, and the
   // log keeps every whole event up to the failure.
-  const LogReadBack log(log_path);  // once, for the metrics, the verifier's counts and the picture
+  const LogReadBack log(log_path, config_.world);  // once, for the metrics, the verifier's counts and the picture
   const nlohmann::ordered_json metrics = Metrics(log);
   if (metrics.contains("error")) {
     // The run and its log stand; only the experiment's own numbers are missing.
@@ -111,6 +135,10 @@ RunResult RunReporter::Report(const Ended& ended) const {
   nlohmann::ordered_json summary = node::RunSummary(config_, outcome, *ended.world, kLogName,
                                                     world::RunJudgement(world::RunReport{}));
   summary["metrics"] = metrics;
+  const std::string& located_error = log.log ? log.located_error : log.error;
+  AddViolationsLocated(located_error.empty() ? node::ViolationsLocatedJson(log.located, kMaxViolationsListed)
+                                             : nlohmann::ordered_json{{"error", located_error}},
+                       &summary);
   result.judgement = Judge(ended, log, &summary);
   node::SetSummaryVerdict(&summary, result.judgement);
   const nlohmann::ordered_json goal = summary["goal"];  // a copy: adding fields may move the summary's entries
@@ -159,6 +187,7 @@ bool RunReporter::DrawPicture(const LogReadBack& log, const std::string& picture
         factory_ ? ArenaOverlaysFromConfig(config_, *factory_) : ArenaOverlaysFromConfig(config_);
     overlays.run_name = config_.name;
     overlays.verdict = world::RunVerdictName(verdict);  // as summary.json says
+    overlays.violations = log.located;                  // as summary.json lists them
     render::TrajectoryPicture::Render(log.Get(), overlays, picture_path, render::RenderFormat::kPng, 1280);
     return true;
   } catch (const std::exception& e) {
@@ -198,7 +227,7 @@ world::RunVerdict RunReporter::AddReasons(const std::string& dir, const std::str
   summary[section_key] = section;
   files::WriteFileAtomically(summary_path, files::JsonText(summary) + "\n");
   if (verdict != *old_verdict && std::filesystem::exists(dir + "/" + kPictureName)) {
-    DrawPicture(LogReadBack(dir + "/" + kLogName), dir + "/" + kPictureName, verdict);  // says what summary.json says
+    DrawPicture(LogReadBack(dir + "/" + kLogName, config_.world), dir + "/" + kPictureName, verdict);  // says what summary.json says
   }
   return verdict;
 }

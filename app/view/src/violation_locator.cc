@@ -8,14 +8,7 @@
 
 namespace dream::view {
 
-const char* ViolationKindName(ViolationMark::Kind kind) {
-  switch (kind) {
-    case ViolationMark::Kind::kBoundary: return "boundary";
-    case ViolationMark::Kind::kCollision: return "collision";
-    case ViolationMark::Kind::kObstacle: return "obstacle";
-  }
-  return "boundary";
-}
+const char* ViolationKindName(ViolationMark::Kind kind) { return world::LocatedViolationKindName(kind); }
 
 ViolationLocator::ViolationLocator(const world::WorldParams& world) : world_(world) {}
 ViolationLocator::~ViolationLocator() = default;

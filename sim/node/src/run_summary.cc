@@ -27,6 +27,26 @@ void SetSummaryVerdict(nlohmann::ordered_json* summary, const world::RunJudgemen
   json["robotarium_report"] = judgement.report().Text();
 }
 
+nlohmann::ordered_json ViolationsLocatedJson(const world::LocatedViolations& located, size_t max_listed) {
+  nlohmann::ordered_json listed = nlohmann::ordered_json::array();
+  for (const world::LocatedViolation& v : located.listed) {
+    nlohmann::ordered_json entry;
+    entry["kind"] = world::LocatedViolationKindName(v.kind);
+    entry["robots"] = v.kind == world::LocatedViolation::Kind::kCollision ? nlohmann::json::array({v.robot, v.other})
+                                                                           : nlohmann::json::array({v.robot});
+    if (v.kind == world::LocatedViolation::Kind::kObstacle) entry["obstacle"] = v.other;
+    entry["first_step"] = v.first_step;
+    entry["last_step"] = v.last_step;
+    entry["position"] = {v.x_m, v.y_m};
+    listed.push_back(entry);
+  }
+  nlohmann::ordered_json json;
+  json["listed"] = listed;
+  json["unlisted"] = located.unlisted;
+  json["max_listed"] = max_listed;
+  return json;
+}
+
 std::string RunSummaryJson(const run_config::RunConfig& config, const RunOutcome& outcome, const world::World& world,
                            const std::string& log_file_name, const world::RunJudgement& judgement) {
   return files::JsonText(RunSummary(config, outcome, world, log_file_name, judgement)) + "\n";

@@ -9,6 +9,7 @@
 
 #include "dream/robotarium/robotarium_constants.h"
 #include "dream/world/run_verdict.h"
+#include "violation_painter.h"
 
 namespace dream::render {
 namespace {
@@ -139,6 +140,9 @@ void ArenaPainter::Legend(const std::vector<LegendItem>& items) const {
         cairo_set_source_rgb(cr_, 0.25, 0.25, 0.25);
         cairo_rectangle(cr_, x - marker_px * 0.8, y - marker_px * 0.8, marker_px * 1.6, marker_px * 1.6);
         cairo_fill(cr_);
+        break;
+      case LegendItem::Marker::kViolation:
+        ViolationRing(cr_, x, y, marker_px, std::max(1.5, 2.0 * ui), 1.0);
         break;
     }
     // A filled robot's heading tick reaches 1.5 radii from its centre.

@@ -34,6 +34,7 @@ class ArenaPainter {
       kRobot,     ///< a robot disc (robot 0's colour) with `look` and `size_factor`, heading right
       kGoal,      ///< a goal cross (robot 0's colour, as a last goal)
       kObstacle,  ///< a dark grey square, as obstacles are filled
+      kViolation, ///< a violation's red ring with a cross (ViolationRing)
     };
     Marker marker;
     std::string label;

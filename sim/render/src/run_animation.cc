@@ -14,6 +14,7 @@
 #include "dream/robotarium/robotarium_constants.h"
 #include "picture_surface.h"
 #include "range_sprites.h"
+#include "violation_painter.h"
 
 namespace dream::render {
 namespace {
@@ -73,7 +74,7 @@ RunAnimation::RunAnimation(const run_log::RunLog& log, const ArenaOverlays& over
     : log_(Drawable(log)),
       overlays_(overlays),
       options_(options),
-      layout_(EvenFrameWidth(options.width_px), 1, /*even_size=*/true),
+      layout_(EvenFrameWidth(options.width_px), overlays.violations.total() > 0 ? 2 : 1, /*even_size=*/true),
       obstacles_move_(!MovingObstaclePaths(log).empty()),
       surfaces_(std::make_unique<Surfaces>(layout_)) {
   CheckOption(std::isfinite(options.fps) && options.fps >= 1 && options.fps <= 120,
@@ -113,6 +114,7 @@ void RunAnimation::DrawStaticLayer() {
     bool obstacles = !moving.empty();
     for (size_t i = 0; i < log_.poses().size() && !obstacles; ++i) obstacles = !log_.obstacles_at(i).obstacles.empty();
     if (obstacles) legend.push_back({Item::Marker::kObstacle, "obstacle"});
+    if (overlays_.violations.total() > 0) legend.push_back({Item::Marker::kViolation, "violation (k = its first step)"});
     painter.Legend(legend);
   }
   surfaces_->frame.reset(cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height));
@@ -146,11 +148,23 @@ void RunAnimation::DrawFrame(int frame) {
     const auto k = static_cast<size_t>(i);
     painter.Robot(i, poses.x[k], poses.y[k], poses.theta[k], ArenaPainter::RobotLook::kFilled, true);
   }
+  // Each violation from its first step on, where it happened; faded once it is over.
+  ViolationPainter(cr, layout_).Mark(overlays_.violations.listed, poses.step);
   char caption[160];
   std::snprintf(caption, sizeof(caption), "step %lld   t = %.1f s   (%gx speed)", static_cast<long long>(poses.step),
                 static_cast<double>(poses.step) * kStepS, options_.speed);
   painter.Caption(0, run_label_ + caption);
+  if (overlays_.violations.total() > 0) painter.Caption(1, ViolationsSoFar(poses.step));
   cairo_surface_flush(surfaces_->frame.get());
+}
+
+std::string RunAnimation::ViolationsSoFar(int64_t step) const {
+  const world::LocatedViolations& violations = overlays_.violations;
+  int64_t begun = 0;
+  for (const world::LocatedViolation& v : violations.listed) begun += v.first_step <= step ? 1 : 0;
+  std::string text = "violations so far: " + std::to_string(begun) + " of " + std::to_string(violations.listed.size());
+  if (violations.unlisted > 0) text += " marked (" + std::to_string(violations.unlisted) + " more not marked)";
+  return text + " (summary.json violations_located)";
 }
 
 const unsigned char* RunAnimation::pixels() const { return cairo_image_surface_get_data(surfaces_->frame.get()); }

@@ -7,6 +7,8 @@
 #include <stdexcept>
 
 #include "dream/robotarium/robotarium_constants.h"
+#include "dream/world/obstacle_state.h"
+#include "dream/world/violation_checker.h"
 
 namespace dream::render {
 
@@ -66,6 +68,52 @@ std::vector<std::array<double, 2>> MinimumDistanceSeries(const run_log::RunLog& 
     if (std::isfinite(closest_sq)) series.push_back({static_cast<double>(poses.step), std::sqrt(closest_sq)});
   }
   return series;
+}
+
+namespace {
+
+/// The poses of `poses` as the checker takes them; false when they are not
+/// `n` finite poses.
+bool PosesOf(const robot_poses_t& poses, int n, std::vector<world::Pose2>* at) {
+  const auto size = static_cast<size_t>(n);
+  if (poses.num_robots != n || poses.x.size() != size || poses.y.size() != size || poses.theta.size() != size) {
+    return false;
+  }
+  for (size_t i = 0; i < size; ++i) {
+    if (!std::isfinite(poses.x[i]) || !std::isfinite(poses.y[i]) || !std::isfinite(poses.theta[i])) return false;
+    (*at)[i] = {poses.x[i], poses.y[i], poses.theta[i]};
+  }
+  return true;
+}
+
+void ObstaclesOf(const obstacles_t& obstacles, std::vector<world::ObstacleState>* boxes) {
+  boxes->clear();
+  for (const rectangle_obstacle_t& o : obstacles.obstacles) {
+    if (!std::isfinite(o.center_x) || !std::isfinite(o.center_y) || !std::isfinite(o.width) || !std::isfinite(o.height)) {
+      continue;
+    }
+    boxes->push_back({o.id, o.center_x, o.center_y, o.width, o.height, o.vx, o.vy});
+  }
+}
+
+}  // namespace
+
+world::LocatedViolations LocateViolations(const run_log::RunLog& log, const world::WorldParams& world,
+                                          size_t max_listed) {
+  world::ViolationTracker tracker(max_listed);
+  const int n = log.num_robots();
+  if (n < 1 || log.poses().size() < 2) return tracker.located();
+  world::ViolationChecker checker(world, n);
+  std::vector<world::Pose2> at(static_cast<size_t>(n));
+  std::vector<world::ObstacleState> boxes;
+  // The last poses are where the run ended: the world never validated them.
+  for (size_t i = 0; i + 1 < log.poses().size(); ++i) {
+    if (!PosesOf(log.poses()[i], n, &at)) continue;
+    ObstaclesOf(log.obstacles_at(i), &boxes);
+    checker.Check(log.poses()[i].step, at, nullptr, boxes);
+    tracker.Add(checker.last_step_events(), at);
+  }
+  return tracker.located();
 }
 
 }  // namespace dream::render

@@ -5,7 +5,7 @@
 namespace dream::world {
 namespace {
 
-const char* const kFindOutViolations = "summary.json violations; dream render RUN shows where";
+const char* const kFindOutViolations = "summary.json violations_located says where and when; trajectories.png and dream render RUN mark them";
 
 }  // namespace
 

@@ -69,6 +69,8 @@ class RunReporter {
   static constexpr const char* kLogName = "run.lcmlog";
   static constexpr const char* kSummaryName = "summary.json";
   static constexpr const char* kPictureName = "trajectories.png";
+  /// summary.json's violations_located lists at most this many (and counts the rest).
+  static constexpr size_t kMaxViolationsListed = 100;
 
  private:
   struct LogReadBack;

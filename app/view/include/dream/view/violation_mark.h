@@ -2,16 +2,16 @@
 
 #include <cstdint>
 
+#include "dream/world/located_violation.h"
+
 namespace dream::view {
 
 /// One violation of the Robotarium's rules, located: what the page flashes
 /// where and when it happened.
 struct ViolationMark {
-  enum class Kind {
-    kBoundary,   ///< a robot strictly outside the arena (hard error)
-    kCollision,  ///< two robots too close: centres (moved 0.025 m forward) <= 0.135 m apart (hard error)
-    kObstacle,   ///< a robot overlapping a virtual obstacle
-  };
+  /// boundary, collision (centres moved 0.025 m forward <= 0.135 m apart) or
+  /// obstacle: the kinds summary.json's violations_located names too.
+  using Kind = world::LocatedViolation::Kind;
   Kind kind = Kind::kBoundary;
   int64_t step = 0;  ///< the step whose poses broke the rule
   int robot = 0;     ///< the robot (the smaller id of a colliding pair)

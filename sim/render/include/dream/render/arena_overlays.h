@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "dream/robot_poses_t.hpp"
+#include "dream/world/located_violation.h"
 
 namespace dream::render {
 
@@ -42,6 +43,9 @@ struct ArenaOverlays {
   /// written at the start of the caption; empty: not shown.
   std::string run_name;
   std::string verdict;
+  /// The run's violations, located (LocateViolations on its log): each marked
+  /// where it happened with its first step; none: no marks.
+  world::LocatedViolations violations;
 };
 
 /// `overlays`' run name and verdict as the start of a caption, each followed

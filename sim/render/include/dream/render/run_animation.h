@@ -24,7 +24,10 @@ struct AnimationOptions {
 /// A run as a video, like the thesis's videos: the arena to scale, robots as
 /// discs of their 0.11 m diameter with ids and headings, trails, obstacles
 /// where they are at each moment (moving ones with their faint path), goals,
-/// and optionally sensor ranges and radio links (ArenaOverlays), tick labels
+/// and optionally sensor ranges and radio links (ArenaOverlays), each located
+/// violation (ArenaOverlays::violations) from its first step on as a red ring
+/// with "k=<its first step>" (faded once over) and a caption line counting
+/// those begun so far, tick labels
 /// in metres, a legend row, and a caption: the run's name and verdict when
 /// known, then the step and time. Frame f shows simulated time min(f * speed / fps,
 /// duration), so there are ceil(duration * fps / speed) + 1 frames of the run
@@ -65,6 +68,8 @@ class RunAnimation {
  private:
   struct Surfaces;
   void DrawStaticLayer();
+  /// The second caption line when the run has violations: how many began by `step`.
+  std::string ViolationsSoFar(int64_t step) const;
   bool Encode(const std::string& path, RenderFormat format, const std::function<bool()>& cancelled);
 
   const run_log::RunLog& log_;

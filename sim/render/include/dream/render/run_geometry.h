@@ -5,6 +5,9 @@
 #include <vector>
 
 #include "dream/run_log/run_log.h"
+#include "dream/world/located_violation.h"
+#include "dream/world/violation_tracker.h"
+#include "dream/world/world_params.h"
 
 namespace dream::render {
 
@@ -30,5 +33,16 @@ std::vector<std::vector<std::array<double, 2>>> MovingObstaclePaths(const run_lo
 /// {step, distance between the two closest robot centres, metres} per step
 /// with at least two robots.
 std::vector<std::array<double, 2>> MinimumDistanceSeries(const run_log::RunLog& log);
+
+/// Where and when the run broke the Robotarium's rules, by the world's own
+/// checks (world::ViolationChecker) on the log's poses and obstacles of the
+/// steps the world validated (all but the last, the final poses): robots
+/// outside the arena, robots too close, robots on an obstacle, each a
+/// world::LocatedViolation (consecutive steps of one violation are one
+/// entry), at most `max_listed` of them, the rest counted. Works on any log
+/// (simulated or imported from the lab); steps whose poses do not decode
+/// whole (a robot count that changes, a value not finite) are skipped.
+world::LocatedViolations LocateViolations(const run_log::RunLog& log, const world::WorldParams& world = {},
+                                          size_t max_listed = world::ViolationTracker::kDefaultMaxListed);
 
 }  // namespace dream::render
