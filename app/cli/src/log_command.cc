@@ -13,6 +13,7 @@
 #include "dream/lcm/log_reader.h"
 #include "dream/lcm/run_id.h"
 #include "dream/files/json_text.h"
+#include "message_difference.h"
 #include "message_json.h"
 #include "shared_options.h"
 
@@ -105,10 +106,26 @@ std::regex ChannelRegex(const std::string& text, const std::string& option) {
 
 }  // namespace
 
+namespace {
+
+/// `dream log diff` exits as diff(1) and cmp(1) do, so a script can tell
+/// "different" from "could not compare".
+constexpr int kLogsDiffer = 1;
+constexpr int kLogsNotCompared = 2;
+
+}  // namespace
+
 int RunLogDiff(const std::string& a, const std::string& b, const std::string& channel_regex) {
-  const std::regex channels = ChannelRegex(channel_regex, "--channels");
-  const Payloads left = PayloadsByChannel(a, channels);
-  const Payloads right = PayloadsByChannel(b, channels);
+  Payloads left;
+  Payloads right;
+  try {
+    const std::regex channels = ChannelRegex(channel_regex, "--channels");
+    left = PayloadsByChannel(a, channels);
+    right = PayloadsByChannel(b, channels);
+  } catch (const std::exception& e) {  // a missing or damaged log, a bad regex
+    std::cerr << "dream: " << e.what() << '\n';
+    return kLogsNotCompared;
+  }
   bool same = true;
   for (const Payloads* side : {&left, &right}) {
     for (const auto& [channel, unused] : *side) {
@@ -124,7 +141,8 @@ int RunLogDiff(const std::string& a, const std::string& b, const std::string& ch
       const size_t n = std::min(l->second.size(), r->second.size());
       for (size_t i = 0; i < n; ++i) {
         if (l->second[i] != r->second[i]) {
-          std::cout << channel << ": message " << i << " differs\n";
+          std::cout << channel << ": message " << i << " differs first at "
+                    << FirstDifference(l->second[i], r->second[i]) << '\n';
           same = false;
           break;
         }
@@ -137,7 +155,7 @@ int RunLogDiff(const std::string& a, const std::string& b, const std::string& ch
     }
   }
   std::cout << (same ? "same" : "different") << " (channels matching '" << channel_regex << "')\n";
-  return same ? kExitOk : kExitInputError;
+  return same ? kExitOk : kLogsDiffer;
 }
 
 int RunLogEcho(const std::string& path_given, const std::string& channel_regex, long long limit) {
@@ -222,7 +240,8 @@ void DeclareLogCommand(CommandLine& line) {
   const auto [diff, diff_args] = line.AddCommand<LogDiffArgs>(
       "diff",
       "Compare two logs message by message, per channel, ignoring timestamps, run ids and agent ids\n"
-      "(every run and agent process draws its own). Exit 0 when equal.\n"
+      "(every run and agent process draws its own). Says where each channel first differs (step, robot, field).\n"
+      "Exit codes as diff(1): 0 equal, 1 different, 2 not compared (a missing or damaged log, a bad --channels).\n"
       "Example: dream log diff a/run.lcmlog b/run.lcmlog --channels DREAM_POSES",
       [](const LogDiffArgs& args) { return RunLogDiff(args.first_log, args.second_log, args.channel_regex); }, log);
   diff->add_option("a", diff_args->first_log, "First log (or run folder)")->required();
