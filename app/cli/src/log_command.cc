@@ -6,6 +6,8 @@
 #include <regex>
 #include <stdexcept>
 
+#include <spdlog/fmt/fmt.h>
+
 #include "command_line.h"
 #include "commands.h"
 #include "dream/bridge/lab_replay_world.h"
@@ -84,8 +86,8 @@ int RunLogInfo(const std::string& path_given) {
     s.bytes += static_cast<long>(record.data.size());
   }
   if (total == 0) throw std::runtime_error(path + ": an empty log (no events): nothing was recorded");
-  std::cout << path << ": " << total << " events, " << static_cast<double>(last - first) / 1e6
-            << " s of log time\n";
+  std::cout << path << ": " << total << " events, " << fmt::format("{:.2f}", static_cast<double>(last - first) / 1e6)
+            << " s of log time\n";  // to 0.01 s, not "6.66667 s"
   for (const auto& [channel, s] : stats) {
     std::cout << "  " << channel << ": " << s.events << " events, " << s.bytes << " bytes\n";
   }
