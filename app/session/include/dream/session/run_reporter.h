@@ -77,8 +77,8 @@ class RunReporter {
   struct LogReadBack;
   nlohmann::ordered_json Metrics(const LogReadBack& log) const;
   world::RunJudgement Judge(const Ended& ended, const LogReadBack& log, nlohmann::ordered_json* summary) const;
-  /// -q and a clean run: nothing to print.
-  bool QuietAbout(const world::RunJudgement& judgement) const;
+  /// -q and a clean run whose goal was judged: nothing to print.
+  bool QuietAbout(const world::RunJudgement& judgement, const nlohmann::ordered_json& goal) const;
   void PrintVerdict(const Ended& ended, const world::RunJudgement& judgement, const nlohmann::ordered_json& goal) const;
   bool DrawPicture(const LogReadBack& log, const std::string& picture_path, world::RunVerdict verdict) const;
 
