@@ -149,7 +149,7 @@ std::optional<GoalJudgement> AffineFormationMetrics::JudgeGoal(const MetricsRepo
   GoalJudgement goal;
   goal.met = worst_m >= 0.0 && tolerance_m > 0.0 && worst_m <= tolerance_m;
   goal.completion_step = static_cast<int64_t>(report.Value("settled_step"));
-  goal.detail = "worst follower error " + GoalJudgement::Metres(worst_m) + (goal.met ? " <= " : " > ") +
+  goal.detail = "worst follower error " + GoalJudgement::MetresApart(worst_m, tolerance_m) + (goal.met ? " <= " : " > ") +
                 GoalJudgement::Metres(tolerance_m);
   return goal;
 }

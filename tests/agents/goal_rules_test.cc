@@ -37,7 +37,18 @@ TEST(GoalRules, GoToGoalIsMetWhenEveryRobotArrivedAtOnce) {
   const auto missed = Judge("go_to_goal", {{"all_arrived_step", -1}, {"final_max_goal_error_m", 0.2}});
   ASSERT_TRUE(missed);
   EXPECT_FALSE(missed->met);
-  EXPECT_EQ(missed->detail, "not all at their goals, worst 0.2 m");
+  EXPECT_EQ(missed->detail, "not all at their goals, worst 0.2 m (tolerance 0.02 m)");
+  // Missed by a hair: enough digits that the worst does not read as the tolerance.
+  const auto hair = Judge("go_to_goal", {{"all_arrived_step", -1}, {"final_max_goal_error_m", 0.0200082}});
+  ASSERT_TRUE(hair);
+  EXPECT_EQ(hair->detail, "not all at their goals, worst 0.02001 m (tolerance 0.02 m)");
+}
+
+TEST(GoalRules, MetresApartPrintsTheDigitsThatTellAValueFromItsReference) {
+  EXPECT_EQ(GoalJudgement::MetresApart(0.0200082, 0.02), "0.02001 m");
+  EXPECT_EQ(GoalJudgement::MetresApart(0.02, 0.0199999999), "0.02 m");
+  EXPECT_EQ(GoalJudgement::MetresApart(0.0123456, 0.02), "0.0123 m");  // far apart: three digits
+  EXPECT_EQ(GoalJudgement::MetresApart(0.02, 0.02), "0.02 m");
 }
 
 TEST(GoalRules, HrvoCircleCountsItsFormations) {

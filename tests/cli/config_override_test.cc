@@ -57,13 +57,31 @@ TEST(ConfigOverride, AddsALastKeyTheConfigLeavesOut) {
   EXPECT_NO_THROW(run_config::LoadRunConfig(config::ConfigNode(root, "demo.yaml", "")));
 }
 
+TEST(ConfigOverride, CreatesASectionTheSchemaKnowsWhenTheConfigLeavesItOut) {
+  YAML::Node root = YAML::Load(kConfig);  // no world: section
+  config_overrides::ApplyConfigOverride(root, "world.realism", "lab", "demo.yaml");
+  config_overrides::ApplyConfigOverride(root, "world.agent_timeout_s", "1", "demo.yaml");
+  EXPECT_EQ(root["world"]["realism"].as<std::string>(), "lab");
+  EXPECT_EQ(root["world"]["agent_timeout_s"].as<double>(), 1.0);
+  const run_config::RunConfig config = run_config::LoadRunConfig(config::ConfigNode(root, "demo.yaml", ""));
+  EXPECT_FALSE(config.realism.IsIdeal());
+
+  YAML::Node nested = YAML::Load(kConfig);  // two sections created at once
+  config_overrides::ApplyConfigOverride(nested, "world.realism.preset", "lab", "demo.yaml");
+  EXPECT_EQ(nested["world"]["realism"]["preset"].as<std::string>(), "lab");
+  EXPECT_NO_THROW(run_config::LoadRunConfig(config::ConfigNode(nested, "demo.yaml", "")));
+}
+
 TEST(ConfigOverride, UnknownKeysAndIndicesAreErrorsNamingThem) {
   EXPECT_EQ(ErrorOf("controller.robot.max_speed_mps", "0.1"),
             "--set controller.robot.max_speed_mps: demo.yaml has no key 'robot' under controller "
             "(keys there: kind, max_speed_mps, goals, sensors)");
   EXPECT_EQ(ErrorOf("contoller.max_speed_mps", "0.1"),
             "--set contoller.max_speed_mps: demo.yaml has no key 'contoller' at the top level "
-            "(keys there: name, seed, robots, initial_poses, controller)");
+            "(did you mean 'controller'?) (keys there: name, seed, robots, initial_poses, controller)");
+  EXPECT_EQ(ErrorOf("wrold.realism", "lab"),
+            "--set wrold.realism: demo.yaml has no key 'wrold' at the top level "
+            "(did you mean 'world'?) (keys there: name, seed, robots, initial_poses, controller)");
   EXPECT_EQ(ErrorOf("controller.sensors.3.noise_std", "0.1"),
             "--set controller.sensors.3.noise_std: controller.sensors has 1 items in demo.yaml, no index 3");
   EXPECT_EQ(ErrorOf("controller.sensors.first.noise_std", "0.1"),

@@ -109,6 +109,30 @@ class Context:
             self.groups.append(proc.pid)
         return proc
 
+    def stop(self, name, timeout=10):
+        """Ends process `name` (its whole group when started with own_group) and waits for it, so
+        what it held (a UDP port, a display) is free for the next process."""
+        proc = self.procs[name][0]
+        if proc.poll() is None:
+            try:
+                if proc.pid in self.groups:
+                    os.killpg(proc.pid, signal.SIGTERM)
+                else:
+                    proc.terminate()
+            except ProcessLookupError:
+                pass
+            try:
+                proc.wait(timeout=timeout)
+            except subprocess.TimeoutExpired:
+                proc.kill()
+                proc.wait()
+        if proc.pid in self.groups:
+            self.groups.remove(proc.pid)  # its group is gone; never signal a reused id in close()
+            try:
+                os.killpg(proc.pid, signal.SIGKILL)  # a child that ignored SIGTERM
+            except ProcessLookupError:
+                pass
+
     def output(self, name):
         with open(self.procs[name][1], errors="replace") as f:
             return f.read()

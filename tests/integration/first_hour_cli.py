@@ -75,6 +75,16 @@ def seed_and_set(ctx, args, dream_types):
     # Every channel, commands and DREAM_APPLIED too: log diff ignores run and agent ids, random per run and process.
     code, text = ctx.run([args.dream, "log", "diff", b, again])
     check(code == 0 and "same" in text, f"rerunning {b}/config.yaml gave another log: {text.strip()}")
+    # Two seeds differ: exit 1 (as diff(1)) and where first: channel, step, robot, field.
+    code, text = ctx.run([args.dream, "log", "diff", a, b, "--channels", "DREAM_POSES"])
+    check(code == 1 and re.search(r"DREAM_POSES: message \d+ differs first at step \d+, robot \d+: \w+ ", text),
+          f"log diff of --seed 2 and --seed 3: exit {code}, expected 1 and where they differ: {text.strip()}")
+    code, text = ctx.run([args.dream, "log", "info", a])
+    check(code == 0 and re.search(r": \d+ events, \d+\.\d\d s of log time\n", text),
+          f"dream log info: exit {code}, expected its duration to 0.01 s: {text.strip()[:300]}")
+    code, text = ctx.run([args.dream, "log", "diff", a, ctx.path("no_such_run")])
+    check(code == 2 and "no_such_run" in text,
+          f"log diff with a missing run: exit {code}, expected 2 (not compared) naming it: {text.strip()}")
 
     bad = ctx.path("bad")
     cases = [

@@ -47,11 +47,14 @@ def test(ctx):
     shipped = os.path.join(args.source, "config", "go_to_goal.yaml")
 
     clean = ctx.path("clean")
-    code, text = ctx.run([dream, "-q", "run", shipped, "--out", clean], timeout=60, expect=0)
+    code, text = ctx.run([dream, "run", shipped, "--out", clean], timeout=60, expect=0)
     summary = summary_of(clean)
     check(summary["verdict"] == "clean" and summary["verdict_reasons"] == [] and summary["goal"]["met"],
           f"the shipped go_to_goal should be clean with its goal met: {summary['verdict']} {summary['verdict_reasons']}")
-    check(text.startswith(summary["robotarium_report"]), f"a clean run prints debug()'s text as is: {text[:300]}")
+    check(summary["robotarium_report"] in text, f"a clean run prints debug()'s text as is: {text[:300]}")
+    # -q keeps only warnings and errors: a clean run whose goal was met prints nothing.
+    code, text = ctx.run([dream, "-q", "run", shipped, "--out", clean, "--overwrite"], timeout=60, expect=0)
+    check(text == "", f"dream -q run of a clean run printed more than warnings and errors: {text.strip()[-300:]}")
 
     short = config_with(ctx, args.source, "short", [("steps: 1500", "steps: 40")])
     missed = ctx.path("missed")

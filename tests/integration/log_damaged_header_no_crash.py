@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """log_damaged_header_no_crash: `dream log info` and `dream log diff` refuse a log whose event
-header is damaged (absurd or negative lengths, a broken sync word) with exit 1 and a message naming
-the file, and never crash; the Python reader (python/dream_log.py) refuses them too.
+header is damaged (absurd or negative lengths, a broken sync word) with exit 1 (log diff: 2, "not
+compared", as diff(1)) and a message naming the file, and never crash; the Python reader (python/dream_log.py) refuses them too.
 
 Each damaged copy of a real run log changes one field of the header of event 100.
 
@@ -46,8 +46,8 @@ def test(ctx):
             last = text.strip().splitlines()[-1] if text.strip() else ""
             if code >= 128 or code < 0:
                 problems.append(f"{name}: `dream {argv[0]} {argv[1]}` died from signal {abs(code) % 128}")
-            elif code != 1 or path not in last:
-                problems.append(f"{name}: `dream {argv[0]} {argv[1]}` exit {code}, expected 1 and a message "
+            elif code != (2 if argv[1] == "diff" else 1) or path not in last:
+                problems.append(f"{name}: `dream {argv[0]} {argv[1]}` exit {code}, expected 1 (diff: 2) and a message "
                                 f"naming the file: {last!r}")
         try:
             for _ in read_events(path):

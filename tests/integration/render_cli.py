@@ -23,6 +23,7 @@ Usage: render_cli.py --dream BIN --source DIR
 
 import math
 import os
+import re
 import shutil
 import signal
 import struct
@@ -77,6 +78,9 @@ def check_video(ctx, dream, run, out, extra, fps, speed):
     code, text = ctx.run([dream, "render", run, "--out", out] + extra, timeout=120, expect=0)
     check(os.path.isfile(out), f"{out} is missing: {text}")
     reported = int(text.split("(")[-1].split(" frames")[0]) if " frames" in text else -1
+    # Durations for people: "10.93 s", never a raw float such as "6.66667 s".
+    check(re.search(r"frames, \d+\.\d\d s at \d+ fps, \d+x\d+, \d+\.\d\d s\)", text),
+          f"dream render's video line does not give its durations to 0.01 s: {text.strip()}")
     expected = math.ceil(STEPS * STEP_S * fps / speed - 1e-9) + 1 + round(fps)
     info = ffprobe(out, "stream=nb_read_frames:format=duration")
     frames = int(info["nb_read_frames"])

@@ -69,6 +69,9 @@ def test(ctx):
     text = ctx.output("headless_player")
     check("TTL set to zero" in text and "Invalid key-value pair" not in text,
           f"the log player did not get the whole URL {words[7]}: {text.strip()[-300:]}")
+    # Its LCM threads keep it running and holding the player's UDP port: ended here, so the player
+    # under Xvfb below can bind it ("BindException: Address already in use" otherwise).
+    ctx.stop("headless_player")
 
     other = "udpm://239.255.76.67:7672?ttl=0"
     lines = printed(args.dream, [log, "--paused", "--spy", "--lcm-url", other], env)

@@ -63,6 +63,8 @@ def test(context, args):
           "the export lacks ring.py or dream_main.py")
     code, output = context.run([args.dream, "check-submission", "exports/ring", "--standin"], timeout=300)
     check(code == 0, f"dream check-submission exited {code}: {output[-400:]}")
+    check("debug()'s real seconds are the time on the lab's robots" in output,
+          f"check-submission does not say debug()'s seconds are the lab's: {output[-400:]}")
     # The script ends early only when every robot reports done.
     lab = read_summary("runs/ring_check")
     check(lab["lab"]["complete"] and lab["steps"] < lab["lab"]["planned_steps"],

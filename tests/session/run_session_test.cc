@@ -37,10 +37,12 @@ class RunSessionTest : public ::testing::Test {
   void SetUp() override { fs::create_directories(dir_ / "out"); }
 
   // Two robots of the counting plugin's kind; `x_m` is robot 0's start.
-  std::string WriteConfig(double speed_mps, double x_m, int steps, double start_timeout_s = 10.0) {
+  // `world_extra`: more keys of world: (", realism: lab").
+  std::string WriteConfig(double speed_mps, double x_m, int steps, double start_timeout_s = 10.0,
+                          const std::string& world_extra = "") {
     std::ostringstream yaml;
     yaml << "name: session_test\nseed: 3\nrobots: 2\nsteps: " << steps << "\nstop_when_done: false\n"
-         << "world: {mode: lockstep, start_timeout_s: " << start_timeout_s << "}\n"
+         << "world: {mode: lockstep, start_timeout_s: " << start_timeout_s << world_extra << "}\n"
          << "plugins: [" << SESSION_TEST_PLUGIN_PATH << "]\n"
          << "initial_poses:\n  - [" << x_m << ", 0.0, 0.0]\n  - [-1.0, 0.5, 0.0]\n"
          << "controller: {kind: session_test_drive, speed_mps: " << speed_mps << "}\n";
@@ -132,6 +134,9 @@ TEST_F(RunSessionTest, WritesEveryOutputAndBuildsTheFactoryOnce) {
             nlohmann::json({{"listed", nlohmann::json::array()}, {"unlisted", 0}, {"max_listed", 100}}));
   EXPECT_THAT(report_.str(), HasSubstr("log:     " + out() + "/run.lcmlog"));
   EXPECT_THAT(report_.str(), HasSubstr("picture: " + out() + "/trajectories.png"));
+  // debug()'s "real seconds" are the lab's; the report says what they are and what the run took.
+  EXPECT_THAT(report_.str(), HasSubstr("Your simulation took approximately 0.99 real seconds to execute."));
+  EXPECT_THAT(report_.str(), HasSubstr("(real seconds on the lab: 30 steps of 0.033 s; this run took "));
   // One session, one run: a second would overwrite the first's folder.
   lcm::LcmBus again("memq://");
   EXPECT_THROW(session.Run(again, {out(), "another config\n"}), std::logic_error);
@@ -141,6 +146,41 @@ TEST_F(RunSessionTest, WritesEveryOutputAndBuildsTheFactoryOnce) {
     EXPECT_EQ(entry.path().extension() == ".part" || entry.path().string().find(".tmp") != std::string::npos, false)
         << entry.path();
   }
+}
+
+TEST_F(RunSessionTest, TheReportSaysWhenRealismIsOn) {
+  RunSession::Options options;
+  options.report = &report_;
+  RunSession session(run_config::LoadRunConfigFile(WriteConfig(0.0, 1.0, 10, 10.0, ", realism: lab")), options);
+  RunWithAgents(session);
+  EXPECT_THAT(report_.str(), HasSubstr("\nrealism: lab (not the official simulator's ideal world"));
+
+  std::ostringstream ideal;  // the official world: no such line
+  RunSession::Options ideal_options;
+  ideal_options.report = &ideal;
+  fs::remove_all(out());
+  fs::create_directories(out());
+  RunSession ideal_session(run_config::LoadRunConfigFile(WriteConfig(0.0, 1.0, 10)), ideal_options);
+  RunWithAgents(ideal_session);
+  EXPECT_THAT(ideal.str(), HasSubstr("log:     "));
+  EXPECT_THAT(ideal.str(), ::testing::Not(HasSubstr("realism:")));
+}
+
+TEST_F(RunSessionTest, QuietPrintsNoReportForACleanRunAndTheWholeReportOtherwise) {
+  RunSession::Options options;
+  options.report = &report_;
+  options.quiet = true;
+  RunSession clean(run_config::LoadRunConfigFile(WriteConfig(0.0, 1.0, 10)), options);
+  EXPECT_EQ(RunWithAgents(clean).judgement.verdict(), world::RunVerdict::kClean);
+  EXPECT_EQ(report_.str(), "");
+
+  // Robot 0 drives into the right wall: rejected, and -q still says so.
+  fs::remove_all(out());
+  fs::create_directories(out());
+  RunSession rejected(run_config::LoadRunConfigFile(WriteConfig(0.2, 1.5, 60)), options);
+  const RunResult result = RunWithAgents(rejected);
+  ASSERT_EQ(result.judgement.verdict(), world::RunVerdict::kRejected);
+  EXPECT_THAT(report_.str(), HasSubstr(result.judgement.Text()));
 }
 
 TEST_F(RunSessionTest, ReasonsFoundAfterTheRunAreAddedByTheSameWriter) {

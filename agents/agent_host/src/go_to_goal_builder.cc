@@ -2,6 +2,7 @@
 #include "dream/agent_host/field_reader.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace dream::agent_host {
 namespace {
@@ -30,12 +31,24 @@ class GoToGoalMetrics final : public agents::ExperimentMetrics {
     agents::GoalJudgement goal;
     goal.completion_step = static_cast<int64_t>(report.Value("all_arrived_step"));
     goal.met = goal.completion_step >= 0;
-    goal.detail = goal.met ? "all at their goals"
-                           : "not all at their goals, worst " + agents::GoalJudgement::Metres(report.Value("final_max_goal_error_m"));
+    goal.detail = goal.met ? "all at their goals" : "not all at their goals, worst " + WorstText(report);
     return goal;
   }
 
  private:
+  // The worst final error with the digits that tell it from the tolerance
+  // nearest to it, and that tolerance: "0.0200082 m (tolerance 0.02 m)".
+  std::string WorstText(const agents::MetricsReport& report) const {
+    const double worst = report.Value("final_max_goal_error_m");
+    if (params_.empty()) return agents::GoalJudgement::Metres(worst);
+    double tolerance = params_.front().tolerance_m;
+    for (const agents::GoToGoalParams& p : params_) {
+      if (std::abs(p.tolerance_m - worst) < std::abs(tolerance - worst)) tolerance = p.tolerance_m;
+    }
+    return agents::GoalJudgement::MetresApart(worst, tolerance) + " (tolerance " +
+           agents::GoalJudgement::Metres(tolerance) + ")";
+  }
+
   std::vector<agents::GoToGoalParams> params_;
   double final_worst_m_ = 0.0;
   int64_t arrived_step_ = -1;

@@ -6,6 +6,8 @@
 #include <regex>
 #include <stdexcept>
 
+#include <spdlog/fmt/fmt.h>
+
 #include "command_line.h"
 #include "commands.h"
 #include "dream/bridge/lab_replay_world.h"
@@ -13,6 +15,7 @@
 #include "dream/lcm/log_reader.h"
 #include "dream/lcm/run_id.h"
 #include "dream/files/json_text.h"
+#include "message_difference.h"
 #include "message_json.h"
 #include "shared_options.h"
 
@@ -83,8 +86,8 @@ int RunLogInfo(const std::string& path_given) {
     s.bytes += static_cast<long>(record.data.size());
   }
   if (total == 0) throw std::runtime_error(path + ": an empty log (no events): nothing was recorded");
-  std::cout << path << ": " << total << " events, " << static_cast<double>(last - first) / 1e6
-            << " s of log time\n";
+  std::cout << path << ": " << total << " events, " << fmt::format("{:.2f}", static_cast<double>(last - first) / 1e6)
+            << " s of log time\n";  // to 0.01 s, not "6.66667 s"
   for (const auto& [channel, s] : stats) {
     std::cout << "  " << channel << ": " << s.events << " events, " << s.bytes << " bytes\n";
   }
@@ -105,10 +108,26 @@ std::regex ChannelRegex(const std::string& text, const std::string& option) {
 
 }  // namespace
 
+namespace {
+
+/// `dream log diff` exits as diff(1) and cmp(1) do, so a script can tell
+/// "different" from "could not compare".
+constexpr int kLogsDiffer = 1;
+constexpr int kLogsNotCompared = 2;
+
+}  // namespace
+
 int RunLogDiff(const std::string& a, const std::string& b, const std::string& channel_regex) {
-  const std::regex channels = ChannelRegex(channel_regex, "--channels");
-  const Payloads left = PayloadsByChannel(a, channels);
-  const Payloads right = PayloadsByChannel(b, channels);
+  Payloads left;
+  Payloads right;
+  try {
+    const std::regex channels = ChannelRegex(channel_regex, "--channels");
+    left = PayloadsByChannel(a, channels);
+    right = PayloadsByChannel(b, channels);
+  } catch (const std::exception& e) {  // a missing or damaged log, a bad regex
+    std::cerr << "dream: " << e.what() << '\n';
+    return kLogsNotCompared;
+  }
   bool same = true;
   for (const Payloads* side : {&left, &right}) {
     for (const auto& [channel, unused] : *side) {
@@ -124,7 +143,8 @@ int RunLogDiff(const std::string& a, const std::string& b, const std::string& ch
       const size_t n = std::min(l->second.size(), r->second.size());
       for (size_t i = 0; i < n; ++i) {
         if (l->second[i] != r->second[i]) {
-          std::cout << channel << ": message " << i << " differs\n";
+          std::cout << channel << ": message " << i << " differs first at "
+                    << FirstDifference(l->second[i], r->second[i]) << '\n';
           same = false;
           break;
         }
@@ -137,7 +157,7 @@ int RunLogDiff(const std::string& a, const std::string& b, const std::string& ch
     }
   }
   std::cout << (same ? "same" : "different") << " (channels matching '" << channel_regex << "')\n";
-  return same ? kExitOk : kExitInputError;
+  return same ? kExitOk : kLogsDiffer;
 }
 
 int RunLogEcho(const std::string& path_given, const std::string& channel_regex, long long limit) {
@@ -222,7 +242,8 @@ void DeclareLogCommand(CommandLine& line) {
   const auto [diff, diff_args] = line.AddCommand<LogDiffArgs>(
       "diff",
       "Compare two logs message by message, per channel, ignoring timestamps, run ids and agent ids\n"
-      "(every run and agent process draws its own). Exit 0 when equal.\n"
+      "(every run and agent process draws its own). Says where each channel first differs (step, robot, field).\n"
+      "Exit codes as diff(1): 0 equal, 1 different, 2 not compared (a missing or damaged log, a bad --channels).\n"
       "Example: dream log diff a/run.lcmlog b/run.lcmlog --channels DREAM_POSES",
       [](const LogDiffArgs& args) { return RunLogDiff(args.first_log, args.second_log, args.channel_regex); }, log);
   diff->add_option("a", diff_args->first_log, "First log (or run folder)")->required();

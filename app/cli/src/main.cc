@@ -53,7 +53,8 @@ int main(int argc, char** argv) {
       "dream: distributed multi-robot controllers on a Robotarium-faithful simulator, over LCM.\n"
       "Exit codes: 0 ok, 1 bad input, 2 usage, 3 run has hard errors (the Robotarium would reject it),\n"
       "4 run did not finish (or a controller failed), 5 run not ready (robots lost, command conflicts,\n"
-      "bad messages, goal missed: summary.json verdict_reasons), 130 interrupted.",
+      "bad messages, goal missed: summary.json verdict_reasons), 130 interrupted.\n"
+      "dream log diff exits as diff(1): 0 equal, 1 different, 2 not compared.",
       "dream"};
   CLI::App& app = line.app();
   app.require_subcommand(1);

@@ -193,8 +193,11 @@ void CheckOutputFolder(const fs::path& out) {
   }
 }
 
-double SecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+// "2.35 s": durations for people, not "6.66667 s" nor "0.123456 s".
+std::string SecondsText(double seconds) { return fmt::format("{:.2f} s", seconds); }
+
+std::string SecondsSince(std::chrono::steady_clock::time_point start) {
+  return SecondsText(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
 }
 
 }  // namespace
@@ -230,7 +233,7 @@ int RunRender(const RenderArgs& args) {
   if (kind == Kind::kPicture) {
     render::TrajectoryPicture::Render(run, overlays, out.string(), format, args.width_px > 0 ? args.width_px : 1280);
     std::cout << "picture: " << out.string() << " (" << run.num_robots() << " robots, " << run.poses().size()
-              << " steps, " << SecondsSince(start) << " s)\n";
+              << " steps, " << SecondsSince(start) << ")\n";
     return kExitOk;
   }
 
@@ -248,9 +251,9 @@ int RunRender(const RenderArgs& args) {
     std::cerr << "dream: interrupted; " << out.string() << " not written\n";
     return kExitInterrupted;
   }
-  std::cout << "video:   " << out.string() << " (" << animation.frame_count() << " frames, " << animation.duration_s()
-            << " s at " << options.fps << " fps, " << animation.layout().width_px() << "x"
-            << animation.layout().height_px() << ", " << SecondsSince(start) << " s)\n";
+  std::cout << "video:   " << out.string() << " (" << animation.frame_count() << " frames, "
+            << SecondsText(animation.duration_s()) << " at " << options.fps << " fps, " << animation.layout().width_px() << "x"
+            << animation.layout().height_px() << ", " << SecondsSince(start) << ")\n";
   return kExitOk;
 }
 

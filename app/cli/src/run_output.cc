@@ -25,6 +25,8 @@ std::unique_ptr<session::RunSession> OpenRunSession(const RunArgs& args) {
   }
   session::RunSession::Options options;
   options.steps_from_command_line = args.steps != 0;
+  // -q/--quiet set the level to warn: a clean run's report is left out too.
+  options.quiet = spdlog::get_level() >= spdlog::level::warn;
   options.stop = &StopFlag();
   auto run = std::make_unique<session::RunSession>(std::move(config), options);
   try {

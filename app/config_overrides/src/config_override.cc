@@ -5,6 +5,7 @@
 
 #include "dream/config/config_error.h"
 #include "dream/config/config_node.h"
+#include "dream/config/name_suggestion.h"
 
 namespace dream::config_overrides {
 namespace {
@@ -24,6 +25,37 @@ std::string KeysOf(const YAML::Node& map) {
   std::string keys;
   for (const auto& entry : map) keys += (keys.empty() ? "" : ", ") + entry.first.as<std::string>();
   return keys.empty() ? "none" : keys;
+}
+
+// The sections of a run config (LoadRunConfig) whose keys are all optional or
+// checked there: a --set may create them when the config leaves them out
+// (`--set world.realism=lab` on a config without `world:`). Any other missing
+// part is a typo until proven otherwise.
+const std::vector<std::string>& CreatableSections() {
+  static const std::vector<std::string> sections = {"world", "world.realism", "controller", "initial_poses",
+                                                    "initial_poses.generate"};
+  return sections;
+}
+
+bool IsCreatableSection(const std::string& dotted_path) {
+  for (const std::string& section : CreatableSections()) {
+    if (section == dotted_path) return true;
+  }
+  return false;
+}
+
+// The names a missing part may have meant: the keys there and the sections
+// that could be created there.
+std::vector<std::string> NamesAt(const YAML::Node& map, const std::string& path) {
+  std::vector<std::string> names;
+  for (const auto& entry : map) names.push_back(entry.first.as<std::string>());
+  const std::string prefix = path.empty() ? "" : path + ".";
+  for (const std::string& section : CreatableSections()) {
+    if (section.compare(0, prefix.size(), prefix) != 0) continue;
+    const std::string rest = section.substr(prefix.size());
+    if (rest.find('.') == std::string::npos) names.push_back(rest);
+  }
+  return names;
 }
 
 bool IsIndex(const std::string& part) {
@@ -142,10 +174,13 @@ void ApplyConfigOverride(YAML::Node root, const std::string& dotted_key, const s
     } else if (node.IsMap()) {
       const YAML::Node& read_only = node;
       const bool exists = read_only[part].IsDefined();
-      if (!exists && !last) {
+      const std::string section = path + (path.empty() ? "" : ".") + part;
+      if (!exists && !last && !IsCreatableSection(section)) {
         throw std::invalid_argument(option + ": " + source_name + " has no key '" + part + "' " + where +
-                                    " (keys there: " + KeysOf(node) + ")");
+                                    config::DidYouMean(part, NamesAt(node, path)) + " (keys there: " +
+                                    KeysOf(node) + ")");
       }
+      if (!exists && !last) node[part] = YAML::Node(YAML::NodeType::Map);  // a section created
       node.reset(node[part]);
     } else {
       throw std::invalid_argument(option + ": " + path + " is a single value in " + source_name + ", it has no '" +

@@ -13,11 +13,13 @@
 #include "dream/files/file_text.h"
 #include "dream/files/json_text.h"
 #include "dream/node/run_judge.h"
+#include "dream/robotarium/robotarium_constants.h"
 #include "dream/node/run_summary.h"
 #include "dream/render/run_geometry.h"
 #include "dream/render/trajectory_picture.h"
 #include "dream/run_log/run_log.h"
 #include "dream/session/experiment_goal.h"
+#include "dream/session/realism_notice.h"
 #include "dream/session/render_overlays.h"
 
 namespace dream::session {
@@ -156,9 +158,24 @@ RunResult RunReporter::Report(const Ended& ended) const {
   if (outcome.steps > 0 || outcome.end == node::RunOutcome::End::kFinished) {
     const std::string picture_path = ended.dir + "/" + kPictureName;
     result.picture_failed = !DrawPicture(log, picture_path, result.judgement.verdict());
-    if (!result.picture_failed) *options_.report << "picture: " << picture_path << "\n";
+    if (!result.picture_failed && !QuietAbout(result.judgement, goal)) {
+      *options_.report << "picture: " << picture_path << "\n";
+    }
   }
   return result;
+}
+
+namespace {
+
+// A goal --steps stopped the run before it was judged: clean, but not a success.
+bool GoalNotJudged(const nlohmann::ordered_json& goal) {
+  return goal.contains("judged") && goal["judged"] == false && goal["has_criterion"] == true;
+}
+
+}  // namespace
+
+bool RunReporter::QuietAbout(const world::RunJudgement& judgement, const nlohmann::ordered_json& goal) const {
+  return options_.quiet && judgement.verdict() == world::RunVerdict::kClean && !GoalNotJudged(goal);
 }
 
 void RunReporter::PrintVerdict(const Ended& ended, const world::RunJudgement& judgement,
@@ -167,8 +184,14 @@ void RunReporter::PrintVerdict(const Ended& ended, const world::RunJudgement& ju
   std::ostream& report = *options_.report;
   spdlog::info("{} after {} steps ({:.1f} s simulated, {:.2f} s wall): {}", node::EndName(outcome.end), outcome.steps,
                ended.world->time_s(), outcome.wall_time_s, outcome.reason);
+  if (QuietAbout(judgement, goal)) return;
   report << judgement.Text();
-  if (goal.contains("judged") && goal["judged"] == false && goal["has_criterion"] == true) {
+  // debug()'s "took approximately 99.00 real seconds" is the time on the lab's
+  // robots (its wording, kept word for word); this says what it took here.
+  report << fmt::format("(real seconds on the lab: {} steps of {} s; this run took {:.2f} s here)\n", outcome.steps,
+                        robotarium::RobotariumConstants::kTimeStepSeconds, outcome.wall_time_s);
+  if (const std::string realism = RealismNotice(config_); !realism.empty()) report << realism << "\n";
+  if (GoalNotJudged(goal)) {
     report << "goal: not judged, --steps " << config_.sim.max_steps << " stopped the run first ("
            << goal["detail"].get<std::string>() << ")\n";
   }

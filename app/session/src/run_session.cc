@@ -1,4 +1,5 @@
 #include "dream/session/run_session.h"
+#include "dream/session/realism_notice.h"
 
 #include <spdlog/spdlog.h>
 
@@ -91,6 +92,7 @@ RunSession::Stepped RunSession::Step(lcm::LcmInterface& lcm, const Folder& folde
     } else {
       spdlog::info("{}", given.start_line);
     }
+    if (const std::string realism = RealismNotice(config_); !realism.empty()) spdlog::info("{}", realism);
     TerminalProgress progress(config_.sim.progress_interval_s);
     node.set_progress_reporter(progress.reporter());
     static const std::atomic<bool> never(false);
@@ -111,7 +113,7 @@ RunSession::Stepped RunSession::Step(lcm::LcmInterface& lcm, const Folder& folde
 }
 
 RunReporter RunSession::Reporter() const {
-  return RunReporter(config_, factory_.get(), factory_error_, {options_.report, options_.steps_from_command_line});
+  return RunReporter(config_, factory_.get(), factory_error_, {options_.report, options_.steps_from_command_line, options_.quiet});
 }
 
 RunResult RunSession::Report(const Stepped& stepped, const std::string& dir) {

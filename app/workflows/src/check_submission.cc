@@ -169,6 +169,8 @@ CheckSubmission::Result CheckSubmission::Run() const {
   const std::optional<world::RunVerdict> verdict = world::ParseRunVerdict(report.value("verdict", "unknown"));
   const std::vector<std::string> warnings = report.value("warnings", std::vector<std::string>{});
   out_ << "debug() says:\n" << report.value("debug_text", std::string());
+  // Its "took approximately 99.00 real seconds" is the lab's time, not this check's.
+  out_ << "(debug()'s real seconds are the time on the lab's robots: iterations x 0.033 s)\n";
   for (const std::string& warning : warnings) out_ << "WARNING (Python): " << warning << "\n";
 
   const ImportWorkflow importer(out_);

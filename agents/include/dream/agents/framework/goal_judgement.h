@@ -21,6 +21,20 @@ struct GoalJudgement {
     std::snprintf(text, sizeof(text), "%.3g m", value);
     return text;
   }
+
+  /// `value` as Metres does, with more digits when three would print it as
+  /// `reference` (a tolerance it missed by 0.0000082 m must not read
+  /// "0.02 m" against 0.02 m): "0.02001 m".
+  static std::string MetresApart(double value, double reference) {
+    char text[32];
+    char other[32];
+    for (int digits = 3; digits <= 17; ++digits) {
+      std::snprintf(text, sizeof(text), "%.*g m", digits, value);
+      std::snprintf(other, sizeof(other), "%.*g m", digits, reference);
+      if (value == reference || std::string(text) != other) break;
+    }
+    return text;
+  }
 };
 
 }  // namespace dream::agents

@@ -10,10 +10,13 @@ namespace dream::config_overrides {
 /// Sets one key of a loaded run config to a new value, for `dream sweep --set`.
 ///
 /// `dotted_key` walks the YAML: map keys by name, list items by index
-/// (controller.sensors.0.noise_std). Every part but the last must exist; the
+/// (controller.sensors.0.noise_std). Every part but the last must exist or be a
+/// section of the run config schema (world, world.realism, controller,
+/// initial_poses, initial_poses.generate), which is then created; the
 /// last may name a key the config leaves out (it takes its default), which is
 /// then added -- a misspelt one is caught by the config check, which refuses
-/// unknown keys everywhere. `value_text` is parsed as YAML ("0.1", "thesis",
+/// unknown keys everywhere. A missing part that is no such section is an error
+/// with a did-you-mean. `value_text` is parsed as YAML ("0.1", "thesis",
 /// "[0.5, 0]").
 ///
 /// A value replaces the node in place, so a ConfigError about it still points

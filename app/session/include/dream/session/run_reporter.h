@@ -32,6 +32,9 @@ class RunReporter {
     std::ostream* report = &std::cout;
     /// The step limit came from --steps: a run it stopped has its goal not judged.
     bool steps_from_command_line = false;
+    /// -q: a clean run prints no report (the verdict is in summary.json and
+    /// the exit code); a run with anything wrong still prints its whole report.
+    bool quiet = false;
   };
 
   /// A run that has ended, its log written to `dir`/run.lcmlog.
@@ -76,6 +79,8 @@ class RunReporter {
   struct LogReadBack;
   nlohmann::ordered_json Metrics(const LogReadBack& log) const;
   world::RunJudgement Judge(const Ended& ended, const LogReadBack& log, nlohmann::ordered_json* summary) const;
+  /// -q and a clean run whose goal was judged: nothing to print.
+  bool QuietAbout(const world::RunJudgement& judgement, const nlohmann::ordered_json& goal) const;
   void PrintVerdict(const Ended& ended, const world::RunJudgement& judgement, const nlohmann::ordered_json& goal) const;
   bool DrawPicture(const LogReadBack& log, const std::string& picture_path, world::RunVerdict verdict) const;
 

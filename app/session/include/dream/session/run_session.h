@@ -49,6 +49,9 @@ class RunSession {
   struct Options {
     /// The step limit came from --steps: a run it stopped has its goal not judged.
     bool steps_from_command_line = false;
+    /// -q: a clean run prints no report (the verdict is in summary.json and
+    /// the exit code); a run with anything wrong still prints its whole report.
+    bool quiet = false;
     /// Where the verdict, the reasons and the outputs' paths are printed.
     std::ostream* report = &std::cout;
     /// Ends the run early when set (Ctrl-C); none: the run ends by itself.

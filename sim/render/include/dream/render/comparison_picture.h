@@ -10,8 +10,9 @@ namespace dream::render {
 /// Draws two runs of one experiment over each other as a PNG, to compare a
 /// simulated run with its lab run: each robot in its own colour, the first
 /// run's trajectory dashed and thin (the plan), the second's solid (what
-/// happened), both runs' final poses (hollow: first run, filled: second),
-/// and caption lines under the arena (e.g. the tracking error).
+/// happened), the second run's start poses (small hollow discs), both runs'
+/// final poses (hollow: first run, filled with the robot's id: second), and
+/// caption lines under the arena (e.g. the tracking error of robot 7).
 class ComparisonPicture {
  public:
   /// Writes the two runs to `png_path` atomically.
