@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include "dream/config/config_error.h"
+#include "data_files.h"
 #include "hosted_agents.h"
 #include "dream/config_overrides/overridden_config.h"
 #include "run_folder_choice.h"
@@ -26,6 +27,7 @@ std::unique_ptr<session::RunSession> OpenRunSession(const RunArgs& args) {
   session::RunSession::Options options;
   options.steps_from_command_line = args.steps != 0;
   options.stop = &StopFlag();
+  options.python_runtime_dir = DataFiles::PythonRuntimeDir();
   auto run = std::make_unique<session::RunSession>(std::move(config), options);
   try {
     HostedAgents::Check(run->config(), run->factory(), run->config().sim.start_timeout_s);

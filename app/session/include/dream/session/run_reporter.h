@@ -32,6 +32,9 @@ class RunReporter {
     std::ostream* report = &std::cout;
     /// The step limit came from --steps: a run it stopped has its goal not judged.
     bool steps_from_command_line = false;
+    /// The Python runtime (python/), for a Python controller's own metrics
+    /// and goal (bridge::PythonRunMetrics); "": those are not computed.
+    std::string python_runtime_dir;
   };
 
   /// A run that has ended, its log written to `dir`/run.lcmlog.
@@ -75,7 +78,8 @@ class RunReporter {
   nlohmann::ordered_json Metrics(const LogReadBack& log) const;
   world::RunJudgement Judge(const Ended& ended, const LogReadBack& log, nlohmann::ordered_json* summary) const;
   void PrintVerdict(const Ended& ended, const world::RunJudgement& judgement, const nlohmann::ordered_json& goal) const;
-  bool DrawPicture(const LogReadBack& log, const std::string& picture_path, world::RunVerdict verdict) const;
+  bool DrawPicture(const LogReadBack& log, const std::string& picture_path, world::RunVerdict verdict,
+                   const nlohmann::ordered_json& metrics) const;
 
   const run_config::RunConfig& config_;
   const agent_host::ControllerFactory* factory_;
