@@ -10,6 +10,8 @@ a sweep's success column; a class that declares none gets "no goal declared", ne
    (exit 5) with the goal's reason.
 3. `dream sweep --set controller.required_m=0.05,0.001`: the first row a success, the second not.
 4. The class without a goal: the sweep says "no goal declared" (csv success false, sweep.md).
+   `dream render --plot --metric worst_error_m` draws the class's series; `dream compare` lists
+   its figures and goal.
 5. A goal() that raises: summary.json metrics.error names the module and line; not a success.
 
 Usage: python_goal.py --dream BIN --source DIR
@@ -113,6 +115,11 @@ def single_runs(context, dream):
     check(metrics["worst_error_m"][-1][0] == summary["steps"] - 1 or metrics["worst_error_m"][-1][0] == summary["steps"],
           f"worst_error_m should be a series ending at the last step: {metrics['worst_error_m'][-1]}")
 
+    plot = context.path("met", "plot.png")
+    code, output = context.run([dream, "render", context.path("met", "run"), "--plot", "--metric", "worst_error_m",
+                                "--out", plot], timeout=60)
+    check(code == 0 and "(1 series)" in output and os.path.isfile(plot), f"--plot of the class's series: {output[-300:]}")
+
     config = write_experiment(context.path("missed"), MODULE, required=0.001)
     code, output = context.run([dream, "run", config, "--out", context.path("missed", "run")], timeout=120)
     summary = read_summary(context.path("missed", "run"))
@@ -120,6 +127,12 @@ def single_runs(context, dream):
           f"a missed goal: exit {code}, goal {summary['goal']}: {output[-400:]}")
     check(summary["verdict"] == "not_ready" and any(r["rule"] == "goal" for r in summary["verdict_reasons"]),
           f"verdict {summary['verdict']}, reasons {summary['verdict_reasons']}")
+
+    # dream compare: the class's figures and goal of both runs, side by side.
+    code, output = context.run([dream, "compare", context.path("met", "run"), context.path("missed", "run"),
+                                "--out", context.path("compared")], timeout=60)
+    check(code == 0 and "worst_error_m:" in output and "final_error_m:" in output and '"met":true' in output,
+          f"dream compare: exit {code}: {output[-600:]}")
 
 
 def sweeps(context, dream):
