@@ -84,6 +84,7 @@ int RunImport(const ImportArgs& args) {
                         .dir();
   // What was declared on the lab's form: UPLOAD.txt's values unless told otherwise.
   options.declared = workflows::ImportWorkflow::Declared(exported, args.declared_robots, args.declared_duration_s);
+  options.python_runtime_dir = DataFiles::PythonRuntimeDir();
   const workflows::ImportWorkflow importer;
   const workflows::ImportWorkflow::Result imported = importer.Import(options);
   importer.PrintVerdict(imported);
