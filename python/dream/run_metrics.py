@@ -39,6 +39,8 @@ else:
 
 MAX_HEADER_BYTES = 4096
 MAX_DETAIL_CHARS = 200
+# Names summary.json's metrics already use for their own fields.
+RESERVED_NAMES = ("kind", "goal", "goal_points", "error")
 
 
 class MetricsDeclarationError(ValueError):
@@ -147,6 +149,9 @@ def evaluate(robot_class, config, steps, poses):
         for name, value in answer.items():
             if not isinstance(name, str) or not name.replace("_", "").isalnum():
                 raise MetricsDeclarationError(f"metrics(): names are identifiers like 'final_error_m', got {name!r}")
+            if name in RESERVED_NAMES:
+                raise MetricsDeclarationError(f"metrics(): '{name}' is taken by summary.json's own fields "
+                                              f"({', '.join(RESERVED_NAMES)}); pick another name")
             metrics.update(_metric_entries(name, value, run))
     goal = _goal_entry(robot_class.goal(run, answer)) if "goal" in declared else None
     return {"declared": declared, "metrics": metrics, "goal": goal, "goal_points": run.goal_points}

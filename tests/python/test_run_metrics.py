@@ -110,13 +110,19 @@ class DeclarationTest(unittest.TestCase):
             def goal(cls, run, metrics):
                 return {"met": True, "when": 3}
 
+        class Reserved(Robot):
+            @classmethod
+            def metrics(cls, run):
+                return {"goal": 1.0}
+
         class BadPoints(Robot):
             @classmethod
             def goal_points(cls, config, num_robots):
                 return [[(0, 0)]]
 
         for robot_class, words in ((WrongLength, "metrics()['odd']: 3 values"), (NotFinite, "not a finite number"),
-                                   (BadGoal, "unknown keys ['when']"), (BadPoints, "one list of (x, y) per robot")):
+                                   (BadGoal, "unknown keys ['when']"), (BadPoints, "one list of (x, y) per robot"),
+                                   (Reserved, "'goal' is taken by summary.json's own fields")):
             with self.subTest(robot_class.__name__):
                 with self.assertRaises(MetricsDeclarationError) as raised:
                     evaluate(robot_class, {}, steps, poses)
