@@ -2,6 +2,8 @@
 
 #include "dream/agent_host/controller_factory.h"
 #include "dream/agent_host/log_metrics.h"
+#include "dream/agent_host/python_controller_spec.h"
+#include "dream/bridge/python_run_metrics.h"
 
 namespace dream::bridge {
 
@@ -31,6 +33,26 @@ nlohmann::ordered_json MetricsJson(const agent_host::ControllerFactory& factory,
       nlohmann::json points = nlohmann::json::array();
       for (const auto& [step, value] : series) points.push_back({step, value});
       json[name] = points;
+    }
+  } catch (const std::exception& e) {
+    json["error"] = e.what();
+  }
+  return json;
+}
+
+nlohmann::ordered_json MetricsJson(const run_config::RunConfig& config, const agent_host::ControllerFactory& factory,
+                                   const run_log::RunLog& log, const std::string& python_runtime_dir) {
+  nlohmann::ordered_json json = MetricsJson(factory, log);
+  if (json.contains("error") || python_runtime_dir.empty() || !agent_host::IsPythonController(config)) return json;
+  try {
+    const nlohmann::json own =
+        PythonRunMetrics::Compute(python_runtime_dir, agent_host::PythonControllerSpecJson(config), log);
+    if (own.contains("goal") && own["goal"].is_object()) json["goal"] = own["goal"];
+    if (own.contains("goal_points") && own["goal_points"].is_array() && !own["goal_points"].empty()) {
+      json["goal_points"] = own["goal_points"];
+    }
+    for (const auto& [name, value] : own["metrics"].items()) {
+      if (!json.contains(name)) json[name] = value;
     }
   } catch (const std::exception& e) {
     json["error"] = e.what();

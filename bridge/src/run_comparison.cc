@@ -11,6 +11,7 @@
 #include "dream/run_config/run_config.h"
 #include "dream/render/comparison_picture.h"
 #include "dream/world/run_report.h"
+#include "dream/agent_host/controller_factory.h"
 #include "dream/bridge/metrics_json.h"
 
 namespace dream::bridge {
@@ -61,7 +62,8 @@ struct ComparedFolders {
   FolderRun second;
 };
 
-ComparedRun Describe(const std::string& folder, const FolderRun& folder_run, const run_config::RunConfig& config) {
+ComparedRun Describe(const std::string& folder, const FolderRun& folder_run, const run_config::RunConfig& config,
+                     const std::string& python_runtime_dir) {
   const RunTrack& track = folder_run.track;
   const RunEnd& end = folder_run.end;
   ComparedRun run;
@@ -86,7 +88,11 @@ ComparedRun Describe(const std::string& folder, const FolderRun& folder_run, con
       }
     }
   }
-  run.metrics = MetricsJson(config, folder_run.log);
+  try {
+    run.metrics = MetricsJson(config, agent_host::ControllerFactory(config), folder_run.log, python_runtime_dir);
+  } catch (const std::exception& e) {
+    run.metrics = nlohmann::ordered_json{{"error", e.what()}};
+  }
   return run;
 }
 
@@ -104,7 +110,8 @@ std::string MetricText(const nlohmann::ordered_json& value) {
   return files::JsonText(value, -1);
 }
 
-RunComparison Compare(const std::string& first_dir, const std::string& second_dir, const ComparedFolders& runs) {
+RunComparison Compare(const std::string& first_dir, const std::string& second_dir, const ComparedFolders& runs,
+                      const std::string& python_runtime_dir) {
   const RunTrack& first = runs.first.track;
   const RunTrack& second = runs.second.track;
   if (first.num_robots != second.num_robots) {
@@ -113,8 +120,8 @@ RunComparison Compare(const std::string& first_dir, const std::string& second_di
                              ": these are not runs of one experiment");
   }
   RunComparison comparison;
-  comparison.first = Describe(first_dir, runs.first, runs.config);
-  comparison.second = Describe(second_dir, runs.second, runs.config);
+  comparison.first = Describe(first_dir, runs.first, runs.config, python_runtime_dir);
+  comparison.second = Describe(second_dir, runs.second, runs.config, python_runtime_dir);
   comparison.compared_steps = std::min(first.last_step(), second.last_step());
   const int n = first.num_robots;
   for (int i = 0; i < n; ++i) {
@@ -135,8 +142,9 @@ RunComparison Compare(const std::string& first_dir, const std::string& second_di
 
 }  // namespace
 
-RunComparison CompareRuns(const std::string& first_dir, const std::string& second_dir) {
-  return Compare(first_dir, second_dir, ComparedFolders(first_dir, second_dir));
+RunComparison CompareRuns(const std::string& first_dir, const std::string& second_dir,
+                          const std::string& python_runtime_dir) {
+  return Compare(first_dir, second_dir, ComparedFolders(first_dir, second_dir), python_runtime_dir);
 }
 
 std::string RunComparison::Text() const {
@@ -214,9 +222,9 @@ nlohmann::ordered_json RunComparison::Json() const {
 }
 
 RunComparison CompareRunsAndWrite(const std::string& first_dir, const std::string& second_dir,
-                                  const std::string& out_dir) {
+                                  const std::string& out_dir, const std::string& python_runtime_dir) {
   const ComparedFolders runs(first_dir, second_dir);
-  RunComparison comparison = Compare(first_dir, second_dir, runs);
+  RunComparison comparison = Compare(first_dir, second_dir, runs, python_runtime_dir);
   const files::OutputFolder out(out_dir);
   const std::string picture = out.PathOf("comparison.png");
   out.WriteFile("comparison.json", files::JsonText(comparison.Json()) + "\n");

@@ -12,6 +12,7 @@ install test's (tests/install/out_of_tree_controller.py).
 Usage: tutorial_python.py --dream BIN --source DIR
 """
 
+import csv
 import os
 import re
 
@@ -41,6 +42,12 @@ def test(context, args):
     check(summary["robots_done"] == list(range(6)), f"not every robot arrived: {summary['robots_done']}")
     check(summary["violations"]["collision_errors"] == 0, f"collisions: {summary['violations']}")
     check(500 <= summary["steps"] <= 900, f"the tutorial says about 680 steps, the run took {summary['steps']}")
+    # The ring's own goal (its goal_points, metrics and goal classmethods), judged from the log.
+    goal = summary["goal"]
+    check(goal["has_criterion"] and goal["met"] and goal["detail"].startswith("ring formed, worst")
+          and 0 < goal["completion_step"] <= summary["steps"], f"the ring's goal in summary.json: {goal}")
+    check(len(summary["metrics"]["goal_points"]) == 6 and len(summary["metrics"]["final_error_m"]) == 6,
+          f"the ring's goal points and figures: {summary['metrics']}")
 
     context.run([args.dream, "run", "ring.yaml", "--out", "again", "-q"], timeout=120, expect=0)
     code, output = context.run([args.dream, "log", "diff", "runs/ring/run.lcmlog", "again/run.lcmlog", "--channels",
@@ -57,6 +64,16 @@ def test(context, args):
     check(code == 1 and quoted.group(1) in output, f"expected '{quoted.group(1)}', got exit {code}: {output[-300:]}")
     with open("ring.yaml", "w") as f:
         f.write(text)
+
+    # The tutorial's sweep: success means the ring formed; robots too slow to reach it in the
+    # config's 2000 steps never form it.
+    code, output = context.run([args.dream, "-q", "sweep", "ring.yaml", "--seeds", "1", "--set",
+                                "controller.speed_mps=0.15,0.01"], timeout=300)
+    with open(os.path.join("sweeps", "ring", "sweep.csv")) as f:
+        rows = list(csv.DictReader(f))
+    check([(r["success"], r["goal"].split(",")[0].split(":")[0]) for r in rows] == [("true", "ring formed"),
+                                                                                      ("false", "no ring")],
+          f"the ring's sweep (exit {code}): {[(r['success'], r['goal']) for r in rows]}")
 
     context.run([args.dream, "export", "runs/ring", "--strategy", "controller"], timeout=120, expect=0)
     check(os.path.isfile("exports/ring/upload/ring.py") and os.path.isfile("exports/ring/upload/dream_main.py"),

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 
 #include "dream/agent_host/controller_factory.h"
@@ -45,6 +46,20 @@ TEST(ControllerPluginTest, AGoodPluginAddsItsKindOnceHoweverOftenItIsNamed) {
   EXPECT_FALSE(Knows("test_still"));
   EXPECT_NE(factory.Make(0), nullptr);
   EXPECT_EQ(factory.MakeMetrics().size(), 2u);  // the plugin's and the safety metrics
+  // Its metrics' success rule and goals to draw reach the tools as a built-in kind's do
+  // (agent_host::MetricsFromLog runs this loop over a run's log).
+  agents::MetricsReport report;
+  const auto metrics = factory.MakeMetrics();
+  for (const auto& m : metrics) m->Write(&report);
+  std::optional<agents::GoalJudgement> goal;
+  for (const auto& m : metrics) {
+    if (!goal) goal = m->JudgeGoal(report);
+  }
+  ASSERT_TRUE(goal.has_value());
+  EXPECT_TRUE(goal->met);
+  EXPECT_EQ(goal->detail, "held still");
+  ASSERT_EQ(factory.GoalsToDraw().size(), 1u);
+  EXPECT_EQ(factory.GoalsToDraw()[0].at(0), Eigen::Vector2d(0.25, -0.5));
   // Another factory (dream run builds several) loads nothing twice.
   EXPECT_EQ(FactoryErrorOf(config), "");
   // The kind's own keys are checked like a built-in kind's.

@@ -9,6 +9,7 @@
 //   robot:    adds `test_parked`, a Robot subclass alone, with no keys
 //             (DREAM_REGISTER_ROBOT)
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "dream/agent_host/controller_plugin.h"
@@ -29,6 +30,14 @@ class NoMetrics final : public ExperimentMetrics {
  public:
   void Observe(const WorldSnapshot&) override {}
   void Write(MetricsReport* report) const override { report->values["still"] = 1.0; }
+  // The kind's own success rule, as a built-in kind's: summary.json's metrics.goal.
+  std::optional<dream::agents::GoalJudgement> JudgeGoal(const MetricsReport& report) const override {
+    const auto still = report.values.find("still");
+    dream::agents::GoalJudgement goal;
+    goal.met = still != report.values.end() && still->second == 1.0;
+    goal.detail = goal.met ? "held still" : "moved";
+    return goal;
+  }
 };
 
 class StillBuilder final : public dream::agent_host::ExperimentBuilder {
@@ -40,6 +49,7 @@ class StillBuilder final : public dream::agent_host::ExperimentBuilder {
     return std::make_unique<StillRobot>(id, params);
   }
   std::unique_ptr<ExperimentMetrics> MakeMetrics() const override { return std::make_unique<NoMetrics>(); }
+  std::vector<std::vector<Eigen::Vector2d>> GoalsToDraw() const override { return {{Eigen::Vector2d(0.25, -0.5)}}; }
 };
 
 [[maybe_unused]] dream::agent_host::ControllerKind Named(const char* name) {

@@ -99,6 +99,7 @@ SweepRunResult Row(size_t index, const std::string& speed, const std::string& lo
   r.run = {index, "run" + std::to_string(index), index, {{"speed", speed}, {"loss", loss}}};
   r.status = SweepRunResult::Status::kRan;
   r.success = success;
+  r.goal.has_criterion = true;  // a kind with a goal: without one no run is a success
   r.goal.met = success;
   r.goal.completion_step = completion;
   r.min_distance_m = min_distance;

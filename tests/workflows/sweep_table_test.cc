@@ -78,6 +78,29 @@ TEST(SweepRunResult, SuccessNeedsAFinishedAcceptedCollisionFreeRunThatMetItsGoal
   EXPECT_EQ(no_summary.status, SweepRunResult::Status::kFailed);
 }
 
+TEST(SweepRunResult, AKindWithoutAGoalIsNeverASuccessButSaysNoGoalDeclared) {
+  const auto runs = Runs(2);
+  const SweepRunResult clean =
+      SweepRunResult::Judge(runs[0], 0, false, 1.0, Summary("python", 700, 0, 0.3, nlohmann::json::object()), "");
+  EXPECT_EQ(clean.status, SweepRunResult::Status::kRan);
+  EXPECT_FALSE(clean.goal.has_criterion);
+  EXPECT_FALSE(clean.success);
+  EXPECT_EQ(clean.OutcomeText(), "no goal declared");
+  EXPECT_EQ(clean.ShortOutcomeText(), "no goal declared");
+  EXPECT_EQ(clean.goal.detail, "no goal declared");
+  const SweepRunResult crash =
+      SweepRunResult::Judge(runs[1], 3, false, 1.0, Summary("python", 700, 2, 0.1, nlohmann::json::object()), "");
+  EXPECT_EQ(crash.OutcomeText(), "no goal declared (2 collision errors)");
+
+  SweepTable table({}, runs.size());
+  table.Add(clean);
+  table.Add(crash);
+  const std::string md = table.Markdown("no goal", {});
+  EXPECT_NE(md.find("| success rate | no goal declared"), std::string::npos) << md;
+  EXPECT_EQ(md.find("| success |"), std::string::npos) << md;
+  EXPECT_EQ(md.find("| success rate | 0 of"), std::string::npos) << md;
+}
+
 TEST(ExperimentGoal, TheKindsOwnJudgementIsReadAndKindsWithoutOneHaveOnlyTheCommonCriteria) {
   auto judge = [](const std::string& kind, nlohmann::json metrics) {
     return ExperimentGoal::Judge(Summary(kind, 900, 0, 0.3, std::move(metrics)));

@@ -84,6 +84,7 @@ int RunImport(const ImportArgs& args) {
                         .dir();
   // What was declared on the lab's form: UPLOAD.txt's values unless told otherwise.
   options.declared = workflows::ImportWorkflow::Declared(exported, args.declared_robots, args.declared_duration_s);
+  options.python_runtime_dir = DataFiles::PythonRuntimeDir();
   const workflows::ImportWorkflow importer;
   const workflows::ImportWorkflow::Result imported = importer.Import(options);
   importer.PrintVerdict(imported);
@@ -100,7 +101,7 @@ int RunImport(const ImportArgs& args) {
 
 int RunCompare(const CompareArgs& args) {
   const std::string out_dir = args.out_dir.empty() ? args.second_dir : args.out_dir;
-  const bridge::RunComparison comparison = bridge::CompareRunsAndWrite(args.first_dir, args.second_dir, out_dir);
+  const bridge::RunComparison comparison = bridge::CompareRunsAndWrite(args.first_dir, args.second_dir, out_dir, DataFiles::PythonRuntimeDir());
   std::cout << comparison.Text() << "\nwritten: " << out_dir << "/comparison.json, " << out_dir
             << "/comparison.png\n";
   return kExitOk;
@@ -131,6 +132,7 @@ LabReplayOutcome ReplayLabRun(const LabReplayArgs& args, std::ostream* report) {
   options.steps_from_command_line = args.steps > 0;
   options.report = report;
   options.stop = &StopFlag();
+  options.python_runtime_dir = DataFiles::PythonRuntimeDir();
   session::RunSession run(std::move(config), options);
   HostedAgents::Check(run.config(), run.factory(), run.config().sim.start_timeout_s);
 

@@ -134,6 +134,8 @@ void RunLabelFromSummary(const fs::path& log, render::ArenaOverlays* overlays) {
   if (summary.contains("verdict") && summary["verdict"].is_string()) {
     overlays->verdict = summary["verdict"].get<std::string>();
   }
+  // A Python controller's goal_points(), judged when the run was reported.
+  if (summary.contains("metrics")) session::AddDeclaredGoals(summary["metrics"], overlays);
 }
 
 /// summary.json's metric series ({"name": [[step, value], ...]}) beside the

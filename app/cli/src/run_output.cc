@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include "dream/config/config_error.h"
+#include "data_files.h"
 #include "hosted_agents.h"
 #include "dream/config_overrides/overridden_config.h"
 #include "run_folder_choice.h"
@@ -28,6 +29,7 @@ std::unique_ptr<session::RunSession> OpenRunSession(const RunArgs& args) {
   // -q/--quiet set the level to warn: a clean run's report is left out too.
   options.quiet = spdlog::get_level() >= spdlog::level::warn;
   options.stop = &StopFlag();
+  options.python_runtime_dir = DataFiles::PythonRuntimeDir();
   auto run = std::make_unique<session::RunSession>(std::move(config), options);
   try {
     HostedAgents::Check(run->config(), run->factory(), run->config().sim.start_timeout_s);

@@ -35,7 +35,7 @@ ExperimentGoal ExperimentGoal::Judge(const nlohmann::json& summary) {
   // A kind without a rule of its own (e.g. a one-class plugin): the run's own
   // "every robot reported done" is its completion.
   goal.met = true;
-  goal.detail = "no goal defined for this kind";
+  goal.detail = "no goal declared";
   const double robots = Number(summary, "robots", -1.0);
   const nlohmann::json done =
       summary.is_object() && summary.contains("robots_done") ? summary["robots_done"] : nlohmann::json();

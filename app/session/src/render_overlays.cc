@@ -71,4 +71,21 @@ render::ArenaOverlays ArenaOverlaysFromConfig(const run_config::RunConfig& confi
   return overlays;
 }
 
+void AddDeclaredGoals(const nlohmann::json& metrics, render::ArenaOverlays* overlays) {
+  if (!overlays->goals_m.empty() || !metrics.is_object() || !metrics.contains("goal_points")) return;
+  const nlohmann::json& robots = metrics["goal_points"];
+  if (!robots.is_array()) return;
+  for (const nlohmann::json& points : robots) {
+    Points goals;
+    if (points.is_array()) {
+      for (const nlohmann::json& point : points) {
+        if (point.is_array() && point.size() == 2 && point[0].is_number() && point[1].is_number()) {
+          goals.push_back({point[0].get<double>(), point[1].get<double>()});
+        }
+      }
+    }
+    overlays->goals_m.push_back(goals);
+  }
+}
+
 }  // namespace dream::session

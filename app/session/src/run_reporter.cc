@@ -84,7 +84,7 @@ nlohmann::ordered_json RunReporter::Metrics(const LogReadBack& log) const {
     json["error"] = log.error;
     return json;
   }
-  return bridge::MetricsJson(*factory_, *log.log);
+  return bridge::MetricsJson(config_, *factory_, *log.log, options_.python_runtime_dir);
 }
 
 world::RunJudgement RunReporter::Judge(const Ended& ended, const LogReadBack& log,
@@ -157,7 +157,7 @@ RunResult RunReporter::Report(const Ended& ended) const {
   PrintVerdict(ended, result.judgement, goal);
   if (outcome.steps > 0 || outcome.end == node::RunOutcome::End::kFinished) {
     const std::string picture_path = ended.dir + "/" + kPictureName;
-    result.picture_failed = !DrawPicture(log, picture_path, result.judgement.verdict());
+    result.picture_failed = !DrawPicture(log, picture_path, result.judgement.verdict(), metrics);
     if (!result.picture_failed && !QuietAbout(result.judgement, goal)) {
       *options_.report << "picture: " << picture_path << "\n";
     }
@@ -202,12 +202,13 @@ void RunReporter::PrintVerdict(const Ended& ended, const world::RunJudgement& ju
   report << "log:     " << ended.dir + "/" + kLogName << "\nsummary: " << ended.dir + "/" + kSummaryName << "\n";
 }
 
-bool RunReporter::DrawPicture(const LogReadBack& log, const std::string& picture_path,
-                              world::RunVerdict verdict) const {
+bool RunReporter::DrawPicture(const LogReadBack& log, const std::string& picture_path, world::RunVerdict verdict,
+                              const nlohmann::ordered_json& metrics) const {
   try {
     // With the config's goals, like `dream render` draws them.
     render::ArenaOverlays overlays =
         factory_ ? ArenaOverlaysFromConfig(config_, *factory_) : ArenaOverlaysFromConfig(config_);
+    AddDeclaredGoals(metrics, &overlays);  // a Python controller's goal_points()
     overlays.run_name = config_.name;
     overlays.verdict = world::RunVerdictName(verdict);  // as summary.json says
     overlays.violations = log.located;                  // as summary.json lists them
@@ -250,7 +251,8 @@ world::RunVerdict RunReporter::AddReasons(const std::string& dir, const std::str
   summary[section_key] = section;
   files::WriteFileAtomically(summary_path, files::JsonText(summary) + "\n");
   if (verdict != *old_verdict && std::filesystem::exists(dir + "/" + kPictureName)) {
-    DrawPicture(LogReadBack(dir + "/" + kLogName, config_.world), dir + "/" + kPictureName, verdict);  // says what summary.json says
+    const nlohmann::ordered_json metrics = summary.contains("metrics") ? summary["metrics"] : nlohmann::ordered_json();
+    DrawPicture(LogReadBack(dir + "/" + kLogName, config_.world), dir + "/" + kPictureName, verdict, metrics);  // says what summary.json says
   }
   return verdict;
 }

@@ -113,7 +113,7 @@ RunSession::Stepped RunSession::Step(lcm::LcmInterface& lcm, const Folder& folde
 }
 
 RunReporter RunSession::Reporter() const {
-  return RunReporter(config_, factory_.get(), factory_error_, {options_.report, options_.steps_from_command_line, options_.quiet});
+  return RunReporter(config_, factory_.get(), factory_error_, {options_.report, options_.steps_from_command_line, options_.quiet, options_.python_runtime_dir});
 }
 
 RunResult RunSession::Report(const Stepped& stepped, const std::string& dir) {

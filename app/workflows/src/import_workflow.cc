@@ -40,6 +40,7 @@ ImportWorkflow::Result ImportWorkflow::Import(const Options& options) const {
   session::RunSession::Options session_options;
   std::ostream quiet(nullptr);
   session_options.report = &quiet;
+  session_options.python_runtime_dir = options.python_runtime_dir;
   const session::RunSession session(imported.config, session_options);
   session::RunReporter::Ended ended;
   ended.world = imported.world.get();

@@ -61,8 +61,9 @@ SweepRunResult SweepRunResult::Judge(const SweepPlan::Run& run, int exit_code, b
   } else {
     result.status = Status::kRan;
   }
-  result.success =
-      result.status == Status::kRan && result.verdict != "rejected" && result.collisions() == 0 && result.goal.met;
+  // Without a goal of its own a run can be clean but never a success.
+  result.success = result.status == Status::kRan && result.verdict != "rejected" && result.collisions() == 0 &&
+                   result.goal.has_criterion && result.goal.met;
   return result;
 }
 
@@ -95,11 +96,13 @@ std::string SweepRunResult::OutcomeText() const {
   }
   if (violations.boundary_errors > 0) add(std::to_string(violations.boundary_errors) + " boundary errors");
   if (verdict == "rejected" && why.empty()) add("rejected by the Robotarium checks");
+  if (!goal.has_criterion) return why.empty() ? "no goal declared" : "no goal declared (" + why + ")";
   if (!goal.met) add(goal.detail);
   return "no success (" + why + ")";
 }
 
 std::string SweepRunResult::ShortOutcomeText() const {
+  if (status == Status::kRan && !success && !goal.has_criterion) return "no goal declared";
   if (status == Status::kRan) return success ? "success" : "no success";
   return OutcomeText();
 }

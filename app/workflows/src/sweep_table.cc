@@ -82,6 +82,7 @@ SweepSummary SweepTable::Summary() const {
         break;
     }
     if (r.success) ++s.succeeded;
+    if (r.status == SweepRunResult::Status::kRan && !r.goal.has_criterion) ++s.without_goal;
     if (r.status == SweepRunResult::Status::kRan && r.goal.completion_step >= 0) {
       ++s.completed;
       completion_sum += r.goal.completion_step;
@@ -130,8 +131,13 @@ std::string SweepTable::SummaryMarkdown(const std::vector<std::pair<std::string,
         " planned: " + std::to_string(s.ran) + " ran, " + std::to_string(s.failed) + " failed to run, " +
         std::to_string(s.interrupted) + " interrupted" +
         (s.not_run > 0 ? ", " + std::to_string(s.not_run) + " not run" : std::string()) + " |\n";
-  md += "| success rate | " + std::to_string(s.succeeded) + " of " + std::to_string(s.ran + s.failed) + " (" +
-        Fixed(100.0 * s.success_rate, 1) + " %) |\n";
+  if (s.ran > 0 && s.without_goal == s.ran) {
+    md += "| success rate | no goal declared (the experiment judges no goal; see its violations) |\n";
+  } else {
+    md += "| success rate | " + std::to_string(s.succeeded) + " of " + std::to_string(s.ran + s.failed) + " (" +
+          Fixed(100.0 * s.success_rate, 1) + " %)" +
+          (s.without_goal > 0 ? ", " + std::to_string(s.without_goal) + " runs with no goal declared" : "") + " |\n";
+  }
   md += "| completion step | " +
         (s.completed > 0
              ? "mean " + Fixed(s.completion_mean, 0) + ", min " + std::to_string(s.completion_min) + ", max " +

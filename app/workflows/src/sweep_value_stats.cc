@@ -30,6 +30,7 @@ void Count(SweepValueStats::Group& group, const SweepRunResult& r) {
   ++group.runs;
   if (r.status == SweepRunResult::Status::kRan || r.status == SweepRunResult::Status::kFailed) ++group.judged;
   if (r.success) ++group.succeeded;
+  if (r.status == SweepRunResult::Status::kRan && !r.goal.has_criterion) ++group.without_goal;
   if (r.status == SweepRunResult::Status::kRan && r.goal.completion_step >= 0) {
     const long long step = r.goal.completion_step;
     // The mean as a running mean, so no sum can overflow.
@@ -53,7 +54,8 @@ std::string Cell(const std::string& text) {
 
 std::string Row(const SweepValueStats::Group& g) {
   const std::string success =
-      g.judged > 0 ? std::to_string(g.succeeded) + " of " + std::to_string(g.judged) + " (" +
+      g.judged > 0 && g.without_goal == g.judged ? std::string("no goal declared")
+      : g.judged > 0 ? std::to_string(g.succeeded) + " of " + std::to_string(g.judged) + " (" +
                          world::PrintfText("%.1f", 100.0 * static_cast<double>(g.succeeded) / static_cast<double>(g.judged)) +
                          " %)"
                    : std::string("-");

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "dream/run_config/run_config.h"
 #include "dream/run_log/run_log.h"
@@ -20,5 +21,13 @@ nlohmann::ordered_json MetricsJson(const run_config::RunConfig& config, const ru
 /// The same with the run's factory, when the caller has one already (so its
 /// plugins are not loaded and its section not read again).
 nlohmann::ordered_json MetricsJson(const agent_host::ControllerFactory& factory, const run_log::RunLog& log);
+
+/// The same, plus, for a Python controller (kind python), the figures, goal
+/// and goal points its class declares (PythonRunMetrics, with the Python
+/// runtime in `python_runtime_dir`): its goal becomes "goal", its goal points
+/// "goal_points", its figures join the others (never replacing one). A class
+/// that declares nothing adds nothing; one whose functions fail gives "error".
+nlohmann::ordered_json MetricsJson(const run_config::RunConfig& config, const agent_host::ControllerFactory& factory,
+                                   const run_log::RunLog& log, const std::string& python_runtime_dir);
 
 }  // namespace dream::bridge

@@ -50,14 +50,16 @@ struct RunComparison {
 
 /// Compares two run folders (each with run.lcmlog and config.yaml, as
 /// written by dream run, dream import or dream lab-replay), step by step.
-/// The experiment's metrics of both come from the first folder's config.
+/// The experiment's metrics of both come from the first folder's config (a
+/// Python controller's own ones too when `python_runtime_dir` is given).
 /// @throws std::runtime_error naming the file when a folder is not a run, or
 ///         the runs have different robot counts.
-RunComparison CompareRuns(const std::string& first_dir, const std::string& second_dir);
+RunComparison CompareRuns(const std::string& first_dir, const std::string& second_dir,
+                          const std::string& python_runtime_dir = "");
 
 /// CompareRuns, then writes out_dir/comparison.json and
 /// out_dir/comparison.png (both atomically).
 RunComparison CompareRunsAndWrite(const std::string& first_dir, const std::string& second_dir,
-                                  const std::string& out_dir);
+                                  const std::string& out_dir, const std::string& python_runtime_dir = "");
 
 }  // namespace dream::bridge

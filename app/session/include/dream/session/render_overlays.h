@@ -1,5 +1,7 @@
 #pragma once
 
+#include <nlohmann/json.hpp>
+
 #include "dream/agent_host/controller_factory.h"
 #include "dream/run_config/run_config.h"
 #include "dream/render/arena_overlays.h"
@@ -18,5 +20,10 @@ render::ArenaOverlays ArenaOverlaysFromConfig(const run_config::RunConfig& confi
 
 /// The same with the run's factory, when the caller has one already.
 render::ArenaOverlays ArenaOverlaysFromConfig(const run_config::RunConfig& config, const agent_host::ControllerFactory& factory);
+
+/// The goals a run's metrics declare (summary.json metrics.goal_points: a
+/// Python controller's goal_points(), per robot [[x, y], ...]) when the kind
+/// drew none; malformed entries are skipped.
+void AddDeclaredGoals(const nlohmann::json& metrics, render::ArenaOverlays* overlays);
 
 }  // namespace dream::session

@@ -35,6 +35,9 @@ class RunReporter {
     /// -q: a clean run prints no report (the verdict is in summary.json and
     /// the exit code); a run with anything wrong still prints its whole report.
     bool quiet = false;
+    /// The Python runtime (python/), for a Python controller's own metrics
+    /// and goal (bridge::PythonRunMetrics); "": those are not computed.
+    std::string python_runtime_dir;
   };
 
   /// A run that has ended, its log written to `dir`/run.lcmlog.
@@ -82,7 +85,8 @@ class RunReporter {
   /// -q and a clean run whose goal was judged: nothing to print.
   bool QuietAbout(const world::RunJudgement& judgement, const nlohmann::ordered_json& goal) const;
   void PrintVerdict(const Ended& ended, const world::RunJudgement& judgement, const nlohmann::ordered_json& goal) const;
-  bool DrawPicture(const LogReadBack& log, const std::string& picture_path, world::RunVerdict verdict) const;
+  bool DrawPicture(const LogReadBack& log, const std::string& picture_path, world::RunVerdict verdict,
+                   const nlohmann::ordered_json& metrics) const;
 
   const run_config::RunConfig& config_;
   const agent_host::ControllerFactory* factory_;

@@ -56,6 +56,8 @@ class RunSession {
     std::ostream* report = &std::cout;
     /// Ends the run early when set (Ctrl-C); none: the run ends by itself.
     const std::atomic<bool>* stop = nullptr;
+    /// The Python runtime, for a Python controller's own metrics (RunReporter::Options).
+    std::string python_runtime_dir;
   };
 
   /// Builds the factory of `config`'s controller. A factory that cannot be

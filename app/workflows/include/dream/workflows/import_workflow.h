@@ -27,6 +27,8 @@ class ImportWorkflow {
     std::string out_dir;     ///< the run folder to write (chosen by the caller; made when missing)
     /// What was declared on the lab's form; none: what UPLOAD.txt said.
     std::optional<world::LabVerifierRules::Declaration> declared;
+    /// The Python runtime, so a Python controller's own goal judges the lab run too ("": not judged).
+    std::string python_runtime_dir;
   };
 
   /// What the import wrote and how the run was judged.

@@ -16,7 +16,9 @@ namespace dream::workflows {
 /// A run is a **success** when it ran to its end (`end` finished: every
 /// robot done or the step limit), the Robotarium would accept it (verdict not
 /// rejected: no boundary, collision or obstacle errors), it has no
-/// collisions, and its experiment's own goal is met (ExperimentGoal).
+/// collisions, and its experiment's own goal is met (ExperimentGoal). A run
+/// whose experiment declares no goal (has_criterion false) is never a
+/// success: its outcome says "no goal declared".
 struct SweepRunResult {
   enum class Status {
     kRan,          ///< the process exited 0 or 3 with a finished summary

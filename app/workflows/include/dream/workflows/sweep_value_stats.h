@@ -21,6 +21,7 @@ class SweepValueStats {
     size_t runs = 0;        ///< every run of the group in the table
     size_t judged = 0;      ///< ran or failed to run: the success rate's denominator
     size_t succeeded = 0;
+    size_t without_goal = 0;  ///< ran with no goal declared
     size_t completed = 0;   ///< runs with a completion step
     double completion_mean = 0.0;
     long long completion_min = -1;

@@ -1,0 +1,133 @@
+#include "dream/bridge/python_run_metrics.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+extern char** environ;
+
+namespace dream::bridge {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::uintmax_t kMaxOutputBytes = 64ull << 20;  // a per-step series of 50 robots is far less
+
+/// The temporary files of one computation, removed however it ends.
+struct TempFiles {
+  TempFiles() {
+    char pattern[] = "/tmp/dream-run-metrics-XXXXXX";
+    if (::mkdtemp(pattern) == nullptr) throw std::runtime_error("cannot make a temporary folder in /tmp");
+    dir = pattern;
+  }
+  ~TempFiles() {
+    std::error_code ignored;
+    fs::remove_all(dir, ignored);
+  }
+  TempFiles(const TempFiles&) = delete;
+  TempFiles& operator=(const TempFiles&) = delete;
+  fs::path dir;
+};
+
+void WriteInput(const fs::path& path, const std::string& spec_json, const run_log::RunLog& log) {
+  const std::vector<robot_poses_t>& poses = log.poses();
+  if (poses.empty()) throw std::runtime_error("the run's log has no DREAM_POSES");
+  const int32_t robots = poses.front().num_robots;
+  std::ofstream out(path, std::ios::binary);
+  out << nlohmann::json{{"spec_bytes", spec_json.size()}, {"steps", poses.size()}, {"robots", robots}}.dump() << "\n"
+      << spec_json;
+  for (const robot_poses_t& message : poses) out.write(reinterpret_cast<const char*>(&message.step), sizeof(int64_t));
+  for (const robot_poses_t& message : poses) {
+    if (message.num_robots != robots) {
+      throw std::runtime_error("step " + std::to_string(message.step) + " has " + std::to_string(message.num_robots) +
+                               " robots, the first " + std::to_string(robots));
+    }
+    for (int32_t i = 0; i < robots; ++i) {
+      const double pose[3] = {message.x[static_cast<size_t>(i)], message.y[static_cast<size_t>(i)],
+                              message.theta[static_cast<size_t>(i)]};
+      out.write(reinterpret_cast<const char*>(pose), sizeof(pose));
+    }
+  }
+  if (!out.flush()) throw std::runtime_error("cannot write " + path.string());
+}
+
+std::string ReadBounded(const fs::path& path) {
+  std::error_code error;
+  const std::uintmax_t size = fs::file_size(path, error);
+  if (error) return "";
+  if (size > kMaxOutputBytes) throw std::runtime_error(path.string() + ": more than 64 MB of metrics");
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+/// Runs python3 -I script input output with stderr to `errors`; its exit status, -1 when it timed out.
+int RunPython(const std::string& script, const fs::path& input, const fs::path& output, const fs::path& errors) {
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, errors.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+  std::vector<std::string> args = {DREAM_PYTHON3_EXECUTABLE, "-I", script, input.string(), output.string()};
+  std::vector<char*> argv;
+  for (std::string& arg : args) argv.push_back(arg.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  const int spawn_error = ::posix_spawn(&pid, DREAM_PYTHON3_EXECUTABLE, &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawn_error != 0) {
+    throw std::runtime_error(std::string("cannot start ") + DREAM_PYTHON3_EXECUTABLE + " (Debian's python3 and python3-numpy)");
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(PythonRunMetrics::kTimeoutS);
+  int status = 0;
+  while (::waitpid(pid, &status, WNOHANG) == 0) {
+    if (std::chrono::steady_clock::now() > deadline) {
+      ::kill(pid, SIGKILL);
+      ::waitpid(pid, &status, 0);
+      return -1;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+}
+
+}  // namespace
+
+nlohmann::json PythonRunMetrics::Compute(const std::string& runtime_dir, const std::string& spec_json,
+                                         const run_log::RunLog& log) {
+  const std::string script = (fs::path(runtime_dir) / "dream" / "run_metrics.py").string();
+  if (!fs::is_regular_file(script)) {
+    throw std::runtime_error(script + ": missing; it computes a Python controller's own metrics and goal");
+  }
+  TempFiles temp;
+  WriteInput(temp.dir / "input", spec_json, log);
+  const int status = RunPython(script, temp.dir / "input", temp.dir / "output.json", temp.dir / "errors");
+  if (status == -1) {
+    throw std::runtime_error("the controller's metrics()/goal() took more than " +
+                             std::to_string(static_cast<int>(kTimeoutS)) + " s: stopped");
+  }
+  if (status != 0) {
+    std::string errors = ReadBounded(temp.dir / "errors");
+    while (!errors.empty() && (errors.back() == '\n' || errors.back() == '\r')) errors.pop_back();
+    if (errors.size() > 2000) errors = "..." + errors.substr(errors.size() - 2000);
+    throw std::runtime_error("the controller's metrics: " + (errors.empty() ? "python3 exit " + std::to_string(status)
+                                                                              : errors));
+  }
+  const nlohmann::json document = nlohmann::json::parse(ReadBounded(temp.dir / "output.json"), nullptr, false);
+  if (!document.is_object() || !document.contains("metrics") || !document["metrics"].is_object()) {
+    throw std::runtime_error(script + " wrote no metrics document");
+  }
+  return document;
+}
+
+}  // namespace dream::bridge
