@@ -19,6 +19,7 @@ namespace dream::workflows {
 namespace {
 
 namespace fs = std::filesystem;
+using ::testing::ContainsRegex;
 using ::testing::HasSubstr;
 
 /// Writes `rows` as a lab result and imports it into `<folder>/out`.
@@ -54,6 +55,8 @@ TEST(ImportWorkflowTest, ALabRunsSummaryCarriesEverythingARunsSummaryDoes) {
   EXPECT_EQ(result.picture_path, fs::path(result.summary_path).parent_path().string() + "/trajectories.png");
   EXPECT_TRUE(fs::exists(result.picture_path));
   EXPECT_THAT(out.str(), HasSubstr("imported "));
+  // Durations to 0.01 s, never a raw float such as "6.66667 s".
+  EXPECT_THAT(out.str(), ContainsRegex(" settle steps; [0-9]+\\.[0-9][0-9] s of lab time\n"));
   EXPECT_THAT(out.str(), HasSubstr("summary: " + result.summary_path));
 }
 
@@ -77,6 +80,7 @@ TEST(ImportWorkflowTest, ALabRunThatMissedItsGoalIsNotReadyAsASimulatedOneWouldB
   EXPECT_EQ(summary["verdict_reasons"].back()["rule"], "goal");
   ImportWorkflow(out).PrintVerdict(result);
   EXPECT_THAT(out.str(), HasSubstr("verdict: not_ready (declared "));
+  EXPECT_THAT(out.str(), ContainsRegex("robots, [0-9]+\\.[0-9][0-9] s; "));
   EXPECT_THAT(out.str(), HasSubstr("  - goal: "));
 }
 

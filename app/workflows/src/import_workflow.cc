@@ -3,12 +3,21 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "dream/bridge/submission_format.h"
 #include "dream/session/run_reporter.h"
 #include "dream/session/run_session.h"
 #include "dream/world/run_report.h"
 
 namespace dream::workflows {
+namespace {
+
+// Durations to 0.01 s, as dream render and dream log info print them: "6.67 s", never "6.66667 s".
+std::string SecondsText(double seconds) { return fmt::format("{:.2f} s", seconds); }
+
+}  // namespace
+
 
 namespace fs = std::filesystem;
 
@@ -64,7 +73,7 @@ void ImportWorkflow::PrintLabRun(const bridge::ImportedRun& imported) const {
   const world::RunReport report = world::RunReport::FromViolations(lab.track.last_step(), imported.violations);
   out_ << "imported " << lab.track.last_step() << " of " << lab.planned_steps << " planned steps of "
        << lab.track.num_robots << " robots (" << (lab.complete ? "complete" : "CUT SHORT") << "), after "
-       << lab.settle_steps << " settle steps; " << lab.wall_duration_s << " s of lab time\n";
+       << lab.settle_steps << " settle steps; " << SecondsText(lab.wall_duration_s) << " of lab time\n";
   if (lab.clock_steps_back > 0) {
     out_ << "note: the lab's clock went back " << lab.clock_steps_back << " times; those stamps were held\n";
   }
@@ -80,7 +89,7 @@ void ImportWorkflow::PrintLabRun(const bridge::ImportedRun& imported) const {
 void ImportWorkflow::PrintVerdict(const Result& result) const {
   const bridge::ImportedRun& imported = result.imported;
   out_ << "verdict: " << world::RunVerdictName(result.verdict()) << " (declared " << imported.declared.num_robots
-       << " robots, " << imported.declared.duration_s << " s; " << imported.lab.iterations << " iterations)\n";
+       << " robots, " << SecondsText(imported.declared.duration_s) << "; " << imported.lab.iterations << " iterations)\n";
   for (const world::VerdictReason& reason : result.report.judgement.reasons()) out_ << "  - " << reason.Text() << "\n";
 }
 
