@@ -6,13 +6,14 @@ run ring.yaml` (every robot done, no collision, the verdict printed), the same r
 the same DREAM_POSES (`dream log diff`), the config mistake it quotes gives the error it quotes,
 `dream export runs/ring --strategy controller` and `dream check-submission exports/ring`
 (in DREAM's stand-in: exit 0, the script ended early because every robot was done, no
-collision). The C++ part is the
+collision), whose summary.json and comparison.json judge the ring's own goal. The C++ part is the
 install test's (tests/install/out_of_tree_controller.py).
 
 Usage: tutorial_python.py --dream BIN --source DIR
 """
 
 import csv
+import json
 import os
 import re
 
@@ -87,6 +88,14 @@ def test(context, args):
     check(lab["lab"]["complete"] and lab["steps"] < lab["lab"]["planned_steps"],
           f"in the submission not every robot arrived: {lab['steps']} of {lab['lab']['planned_steps']} steps")
     check(lab["violations"]["collision_errors"] == 0, f"collisions in the submission: {lab['violations']}")
+    # The ring's own goal, judged on the lab's poses by the import and by the comparison.
+    check(lab.get("goal", {}).get("met") is True and lab["metrics"].get("goal_points"),
+          f"the check's summary.json lacks the ring's own goal: {lab.get('goal')}, {lab['metrics']}")
+    with open(os.path.join("runs", "ring_check", "comparison.json")) as f:
+        compared = json.load(f)
+    for side in ("first", "second"):
+        check(compared[side]["metrics"].get("goal", {}).get("met") is True,
+              f"comparison.json's {side} run lacks the ring's goal: {compared[side]['metrics']}")
 
 
 if __name__ == "__main__":

@@ -220,6 +220,7 @@ int RunCheckSubmission(const CheckSubmissionArgs& args) {
   options.standin = args.standin;
   options.require_official = args.require_official;
   options.skip_initialization = args.skip_initialization;
+  options.python_runtime_dir = DataFiles::PythonRuntimeDir();
   const workflows::CheckSubmission::Result result =
       workflows::CheckSubmission(options, CheckSubmissionTools()).Run();
   using Outcome = workflows::CheckSubmission::Outcome;

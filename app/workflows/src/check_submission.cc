@@ -131,7 +131,8 @@ void CheckSubmission::CompareWithRun(const std::string& run_dir, const std::stri
          << " is not there (pass --run DIR)\n";
     return;
   }
-  const bridge::RunComparison comparison = bridge::CompareRunsAndWrite(run_dir, dir, dir);
+  const bridge::RunComparison comparison =
+      bridge::CompareRunsAndWrite(run_dir, dir, dir, options_.python_runtime_dir);
   out_ << "\n" << comparison.Text();
   out_ << "tracking error against " << run_dir << ": RMS " << Cm(comparison.position_m.Rms()) << ", max "
        << Cm(comparison.position_m.max()) << "\n";
@@ -178,6 +179,7 @@ CheckSubmission::Result CheckSubmission::Run() const {
   import.result = (fs::path(workdir) / bridge::SubmissionFiles::kResult).string();
   import.export_dir = options_.export_dir;
   import.out_dir = out.dir();
+  import.python_runtime_dir = options_.python_runtime_dir;
   const ImportWorkflow::Result imported = importer.Import(import);
 
   Result result;

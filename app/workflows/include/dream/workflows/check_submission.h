@@ -36,6 +36,10 @@ class CheckSubmission {
     bool standin = false;
     bool require_official = false;
     bool skip_initialization = false;
+    /// DREAM's Python package (python/): a Python controller's own goal and metrics
+    /// (goal_points, metrics, goal) in the import's summary.json and the comparison;
+    /// empty: the built-in kinds' only.
+    std::string python_runtime_dir;
   };
 
   /// How a process the check started ended.
