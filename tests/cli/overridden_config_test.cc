@@ -31,7 +31,7 @@ class OverriddenConfigTest : public ::testing::Test {
 
   std::string ErrorOf(long long seed, const std::vector<std::string>& sets) const {
     try {
-      config_overrides::OverriddenConfig(path_, seed, sets).Load();
+      config_overrides::OverriddenConfig(path_, seed, sets).LoadWith(&run_config::LoadRunConfig);
     } catch (const std::exception& e) {
       return e.what();
     }
@@ -53,21 +53,21 @@ TEST_F(OverriddenConfigTest, AKeyAnEarlierSetMadeASingleValueIsNamedAsItsDoing) 
 
 TEST_F(OverriddenConfigTest, WithoutOverridesTheFileIsReadAndCopiedAsItIs) {
   const config_overrides::OverriddenConfig overridden(path_, -1, {});
-  const run_config::RunConfig config = overridden.Load();
+  const run_config::RunConfig config = overridden.LoadWith(&run_config::LoadRunConfig);
   EXPECT_EQ(config.seed, 1u);
-  EXPECT_EQ(overridden.FolderText(config), kConfig);  // comments kept
+  EXPECT_EQ(run_config::RunFolderConfigText(config, overridden.Text()), kConfig);  // comments kept
   EXPECT_EQ(overridden.OptionsText(), "");
 }
 
 TEST_F(OverriddenConfigTest, SeedAndSetsChangeTheRunAndTheFolderTextReloadsToTheSameRun) {
   const config_overrides::OverriddenConfig overridden(path_, 7, {"controller.max_speed_mps=0.1", "controller.goals.2=[0.4, 0.4]"});
-  const run_config::RunConfig config = overridden.Load();
+  const run_config::RunConfig config = overridden.LoadWith(&run_config::LoadRunConfig);
   EXPECT_EQ(config.seed, 7u);
   EXPECT_EQ(overridden.OptionsText(), "--seed 7 --set controller.max_speed_mps=0.1 --set controller.goals.2=[0.4, 0.4]");
   EXPECT_NE(config.initial_poses[0].x_m, run_config::LoadRunConfigFile(path_).initial_poses[0].x_m)
       << "another seed must generate other start poses";
 
-  const std::string text = overridden.FolderText(config);
+  const std::string text = run_config::RunFolderConfigText(config, overridden.Text());
   EXPECT_EQ(text.rfind("# " + path_ + " with --seed 7", 0), 0u) << text;
   const run_config::RunConfig again = run_config::LoadRunConfig(config::ConfigNode::LoadString(text, "copy.yaml"));
   EXPECT_EQ(again.seed, 7u);

@@ -48,7 +48,7 @@ void AsDreamRun(const std::vector<std::string>& sets) {
   std::string folder_text;
   try {
     const config_overrides::OverriddenConfig overridden(kBaseConfig, -1, sets);
-    const run_config::RunConfig run = overridden.Load();
+    const run_config::RunConfig run = overridden.LoadWith(&run_config::LoadRunConfig);
     // dream run checks the controller's keys before it writes the folder
     // (HostedAgents::Check; for the C++ kinds, the factory's check).
     if (run.plugins.empty() && run.controller.GetString("kind", "") != "python") {
@@ -58,7 +58,7 @@ void AsDreamRun(const std::vector<std::string>& sets) {
         throw config::ConfigError(overridden.Noted(e.what()));
       }
     }
-    folder_text = overridden.FolderText(run);
+    folder_text = run_config::RunFolderConfigText(run, overridden.Text());
   } catch (const config::ConfigError& e) {
     if (!StartsWith(e.what(), kBaseConfig)) Finding("a config error without its file: " + std::string(e.what()));
     return;

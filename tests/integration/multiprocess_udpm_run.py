@@ -66,7 +66,7 @@ def test(ctx):
     check(summary["rejected_commands"] == 0, f"dream launch rejected {summary['rejected_commands']} commands")
 
     if args.extra:
-        # The overrides, as the folder records them (OverriddenConfig::FolderText).
+        # The overrides, as the folder records them (OverriddenConfig::Text).
         with open(os.path.join(launched, "config.yaml")) as f:
             header = f.readline()
         check(args.extra in header, f"dream launch: config.yaml does not name {args.extra!r}: {header.strip()}")

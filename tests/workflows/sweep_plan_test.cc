@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "dream/config/config_node.h"
+#include "dream/config_overrides/config_text.h"
 #include "dream/run_config/run_config.h"
 
 namespace dream::workflows {
@@ -69,7 +70,7 @@ TEST(SweepPlan, RunConfigHasSeedNameAndParametersAndPassesTheConfigCheck) {
                        {config_overrides::SweepParameter::Parse("controller.max_speed_mps=0.1"), config_overrides::SweepParameter::Parse("steps=250")});
   const SweepPlan::Run& run = plan.runs()[0];
   const YAML::Node config = SweepPlan::MakeRunConfig(kBase, "base.yaml", run);
-  const std::string text = SweepPlan::EmitConfig(config, "generated for a test\nsecond line");
+  const std::string text = config_overrides::ConfigText(config, "generated for a test\nsecond line");
   EXPECT_EQ(text.rfind("# generated for a test\n# second line\n", 0), 0u) << text;
   const run_config::RunConfig loaded = run_config::LoadRunConfig(config::ConfigNode::LoadString(text, "run.yaml"));
   EXPECT_EQ(loaded.seed, 7u);
@@ -79,7 +80,7 @@ TEST(SweepPlan, RunConfigHasSeedNameAndParametersAndPassesTheConfigCheck) {
   // The seed drives the generated start poses: another seed, other poses.
   const SweepPlan other({8}, {});
   const run_config::RunConfig eight = run_config::LoadRunConfig(config::ConfigNode::LoadString(
-      SweepPlan::EmitConfig(SweepPlan::MakeRunConfig(kBase, "base.yaml", other.runs()[0]), ""), "run8.yaml"));
+      config_overrides::ConfigText(SweepPlan::MakeRunConfig(kBase, "base.yaml", other.runs()[0]), ""), "run8.yaml"));
   EXPECT_NE(eight.initial_poses[0].x_m, loaded.initial_poses[0].x_m);
 }
 

@@ -6,13 +6,14 @@
 #include "data_files.h"
 #include "hosted_agents.h"
 #include "dream/config_overrides/overridden_config.h"
+#include "dream/run_config/run_config.h"
 #include "run_folder_choice.h"
 
 namespace dream::cli {
 
 std::unique_ptr<session::RunSession> OpenRunSession(const RunArgs& args) {
   const config_overrides::OverriddenConfig overridden(args.config_path, args.seed, args.sets);
-  run_config::RunConfig config = overridden.Load();
+  run_config::RunConfig config = overridden.LoadWith(&run_config::LoadRunConfig);
   if (args.steps != 0) {
     if (args.steps < 1) throw std::invalid_argument("--steps must be >= 1, got " + std::to_string(args.steps));
     config.sim.max_steps = args.steps;
@@ -42,7 +43,7 @@ std::unique_ptr<session::RunSession> OpenRunSession(const RunArgs& args) {
 run_config::RunConfig LoadConfig(const RunArgs& args) { return OpenRunSession(args)->config(); }
 
 std::string ConfigTextForRunFolder(const RunArgs& args, const run_config::RunConfig& config) {
-  return config_overrides::OverriddenConfig(args.config_path, args.seed, args.sets).FolderText(config);
+  return run_config::RunFolderConfigText(config, config_overrides::OverriddenConfig(args.config_path, args.seed, args.sets).Text());
 }
 
 std::string PrepareOutputDir(const RunArgs& args, const run_config::RunConfig& config) {

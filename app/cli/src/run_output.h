@@ -25,7 +25,7 @@ std::unique_ptr<session::RunSession> OpenRunSession(const RunArgs& args);
 run_config::RunConfig LoadConfig(const RunArgs& args);
 
 /// What the run folder's config.yaml holds: the config file, with --seed and
-/// --set applied when given (OverriddenConfig::FolderText), so the folder
+/// --set applied when given (OverriddenConfig::Text), so the folder
 /// alone reruns the run.
 std::string ConfigTextForRunFolder(const RunArgs& args, const run_config::RunConfig& config);
 

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "dream/config_overrides/config_override.h"
+#include "dream/config_overrides/config_text.h"
 #include "dream/config/config_error.h"
 #include "dream/config/config_node.h"
 #include "dream/config_overrides/sweep_parameter.h"
@@ -57,6 +58,12 @@ std::string OverriddenConfig::OptionsText() const {
   std::string text;
   for (const std::string& option : overrides_) text += (text.empty() ? "" : " ") + option;
   return text;
+}
+
+std::string OverriddenConfig::Text() const {
+  if (overrides_.empty()) return text_;
+  return ConfigText(root_, path_ + " with " + OptionsText() +
+                               " (the values below include them; comments were not kept).");
 }
 
 }  // namespace dream::config_overrides

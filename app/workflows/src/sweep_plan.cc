@@ -2,7 +2,6 @@
 
 #include <filesystem>
 #include <set>
-#include <sstream>
 #include <stdexcept>
 
 #include "dream/config_overrides/config_override.h"
@@ -139,16 +138,6 @@ YAML::Node SweepPlan::MakeRunConfig(const std::string& base_text, const std::str
     config_overrides::ApplyConfigOverride(root, "name", read_only["name"].Scalar() + "_" + run.name, source_name);
   }
   return root;
-}
-
-std::string SweepPlan::EmitConfig(const YAML::Node& config, const std::string& header) {
-  std::string text;
-  std::istringstream lines(header);
-  for (std::string line; std::getline(lines, line);) text += "# " + line + "\n";
-  YAML::Emitter out;
-  out.SetIndent(2);
-  out << config;
-  return text + out.c_str() + "\n";
 }
 
 }  // namespace dream::workflows

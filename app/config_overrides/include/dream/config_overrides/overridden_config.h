@@ -6,11 +6,8 @@
 #include <vector>
 
 #include "dream/config/config_node.h"
+#include "dream/config/config_error.h"
 #include "dream/config/controller_config.h"
-
-namespace dream::run_config {
-struct RunConfig;  // run_config.h: the whole run, which links the world
-}  // namespace dream::run_config
 
 namespace dream::config_overrides {
 
@@ -35,17 +32,25 @@ class OverriddenConfig {
   /// @throws config::ConfigError as Load() does, for those keys.
   config::ControllerConfig LoadController() const;
 
-  /// The checked run config (defined in overridden_run_config.cc, which
-  /// links the world). @throws config::ConfigError "file:line: key: ..."
-  /// which, for a config with overrides, also names them (the value at that
-  /// line may be one the command line gave).
-  run_config::RunConfig Load() const;
+  /// `load(Document())`: the checked config, e.g. the whole run with
+  /// `LoadWith(&run_config::LoadRunConfig)` (this library does not link the
+  /// world, which dream-agent leaves out). @throws config::ConfigError
+  /// "file:line: key: ..." which, for a config with overrides, also names them
+  /// (the value at that line may be one the command line gave).
+  template <typename Config>
+  Config LoadWith(Config (*load)(const config::ConfigNode&)) const {
+    try {
+      return load(Document());
+    } catch (const config::ConfigError& e) {
+      throw config::ConfigError(Noted(e.what()));
+    }
+  }
 
-  /// What the run folder's config.yaml holds (overridden_run_config.cc): without overrides the file's
-  /// bytes (comments and all); with them the overridden YAML under a header
-  /// naming the file and the options. Either way through
-  /// run_config::RunFolderConfigText (relative plugin paths keep working).
-  std::string FolderText(const run_config::RunConfig& config) const;
+  /// The config as its run folder keeps it (give it to
+  /// run_config::RunFolderConfigText): without overrides the file's bytes
+  /// (comments and all); with them the overridden YAML under a header naming
+  /// the file and the options.
+  std::string Text() const;
 
   /// "--seed 3 --set controller.max_speed_mps=0.1", empty without overrides.
   std::string OptionsText() const;
@@ -56,16 +61,6 @@ class OverriddenConfig {
   std::string Noted(const std::string& message) const;
 
  private:
-  /// `load(Document())`, its ConfigError's message Noted.
-  template <typename Config>
-  Config LoadWith(Config (*load)(const config::ConfigNode&)) const {
-    try {
-      return load(Document());
-    } catch (const config::ConfigError& e) {
-      throw config::ConfigError(Noted(e.what()));
-    }
-  }
-
   std::string path_;
   std::string text_;                    // the file's bytes
   YAML::Node root_;                     // the file with the overrides applied

@@ -45,9 +45,6 @@ class SweepPlan {
   /// not a YAML mapping.
   static YAML::Node MakeRunConfig(const std::string& base_text, const std::string& source_name, const Run& run);
 
-  /// `config` as YAML text, below `header` as comment lines.
-  static std::string EmitConfig(const YAML::Node& config, const std::string& header);
-
  private:
   SweepPlan() = default;
 
