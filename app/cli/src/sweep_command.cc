@@ -85,24 +85,25 @@ int RunSweepStatus(const SweepFolderArgs& args) {
 }
 
 void DeclareSweepFolderCommands(CommandLine& line, CLI::App* sweep) {
-  const auto [status, status_args] = line.AddCommand<SweepFolderArgs>(
-      "status",
-      "How far a sweep is: runs finished, running, pending, failed and never started, from its folder\n"
-      "and Slurm (squeue, sacct). Example: dream sweep status sweeps/hrvo_circle",
-      RunSweepStatus, sweep);
-  status->add_option("dir", status_args->dir, "The sweep folder")->required();
-  const auto [table, table_args] = line.AddCommand<SweepFolderArgs>(
-      "table",
-      "Write sweep.csv and sweep.md from whatever runs of a sweep have finished, at any time; runs that\n"
-      "failed, were cancelled or never started are rows saying so. Example: dream sweep table sweeps/hrvo_circle",
-      RunSweepTable, sweep);
-  table->add_option("dir", table_args->dir, "The sweep folder")->required();
-  const auto [resume, resume_args] = line.AddCommand<SweepFolderArgs>(
+  // Each command works on one sweep folder, its one positional argument.
+  auto folder_command = [&line, sweep](const char* name, const char* help, int (*run)(const SweepFolderArgs&)) {
+    auto command = line.AddCommand<SweepFolderArgs>(name, help, std::function<int(const SweepFolderArgs&)>(run), sweep);
+    command.app->add_option("dir", command.args->dir, "The sweep folder")->required();
+    return command;
+  };
+  folder_command("status",
+                 "How far a sweep is: runs finished, running, pending, failed and never started, from its folder\n"
+                 "and Slurm (squeue, sacct). Example: dream sweep status sweeps/hrvo_circle",
+                 RunSweepStatus);
+  folder_command("table",
+                 "Write sweep.csv and sweep.md from whatever runs of a sweep have finished, at any time; runs that\n"
+                 "failed, were cancelled or never started are rows saying so. Example: dream sweep table sweeps/hrvo_circle",
+                 RunSweepTable);
+  const auto [resume, resume_args] = folder_command(
       "resume",
       "Run again every run of a sweep without a complete result (failed, cancelled, timed out,\n"
       "interrupted, never started), locally or on Slurm. Example: dream sweep resume sweeps/hrvo_circle",
-      RunSweepResume, sweep);
-  resume->add_option("dir", resume_args->dir, "The sweep folder")->required();
+      RunSweepResume);
   resume->add_option("--engine", resume_args->engine, "local or slurm (default: the sweep's own; plan: local)");
   resume->add_option("-j,--jobs", resume_args->jobs, "Runs at once (default: the sweep's)")->check(CLI::Range(1, 100000));
   resume->add_option("--timeout", resume_args->run_timeout_s, "Local engine: stop a run after this many seconds")
