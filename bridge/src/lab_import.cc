@@ -78,15 +78,9 @@ void WriteStatus(node::RunRecorder& recorder, const world::World& world, int64_t
                  const std::string& detail, std::vector<uint8_t>* buffer) {
   run_status_t status;
   status.utime = world.utime();
-  status.step = world.step();
   status.run_id = run_id;
   status.state = state;
-  status.num_robots = world.num_robots();
-  const world::ViolationCounts& counts = world.violations();
-  status.boundary_errors = counts.boundary_errors;
-  status.collision_errors = counts.collision_errors;
-  status.actuator_errors = counts.actuator_errors;
-  status.obstacle_collisions = counts.obstacle_collisions;
+  node::WorldMessages::Fill(world, &status);
   status.rejected_commands = 0;
   status.command_conflicts = 0;
   status.num_lost = 0;

@@ -236,15 +236,9 @@ void SimNode::PublishAndRecord(const char* channel, const Message& message, bool
 void SimNode::PublishStatus(int8_t state, const std::string& detail, bool record) {
   run_status_t status;
   status.utime = SimUtime();
-  status.step = world_.step();
   status.run_id = run_id_;
   status.state = state;
-  status.num_robots = world_.num_robots();
-  const world::ViolationCounts& counts = world_.violations();
-  status.boundary_errors = counts.boundary_errors;
-  status.collision_errors = counts.collision_errors;
-  status.actuator_errors = counts.actuator_errors;
-  status.obstacle_collisions = counts.obstacle_collisions;
+  WorldMessages::Fill(world_, &status);
   status.rejected_commands = commands_.rejected_commands();
   status.command_conflicts = commands_.command_conflicts();
   for (size_t i = 0; i < robots_.size(); ++i) {

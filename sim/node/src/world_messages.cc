@@ -34,4 +34,14 @@ void WorldMessages::Fill(const world::World& world, robot_poses_t* poses) {
   }
 }
 
+void WorldMessages::Fill(const world::World& world, run_status_t* status) {
+  status->step = world.step();
+  status->num_robots = world.num_robots();
+  const world::ViolationCounts& counts = world.violations();
+  status->boundary_errors = counts.boundary_errors;
+  status->collision_errors = counts.collision_errors;
+  status->actuator_errors = counts.actuator_errors;
+  status->obstacle_collisions = counts.obstacle_collisions;
+}
+
 }  // namespace dream::node
