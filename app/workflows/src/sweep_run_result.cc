@@ -15,6 +15,14 @@ std::string Text(const nlohmann::json& object, const char* key) {
   return it != object.end() && it->is_string() ? it->get<std::string>() : std::string();
 }
 
+SweepRunResult WithoutResult(const SweepPlan::Run& run, SweepRunResult::Status status, const std::string& why) {
+  SweepRunResult result;
+  result.run = run;
+  result.status = status;
+  result.problem = why;
+  return result;
+}
+
 }  // namespace
 
 SweepRunResult SweepRunResult::Judge(const SweepPlan::Run& run, int exit_code, bool timed_out, double wall_time_s,
@@ -68,19 +76,11 @@ SweepRunResult SweepRunResult::Judge(const SweepPlan::Run& run, int exit_code, b
 }
 
 SweepRunResult SweepRunResult::NotRun(const SweepPlan::Run& run, const std::string& why) {
-  SweepRunResult result;
-  result.run = run;
-  result.status = Status::kNotRun;
-  result.problem = why;
-  return result;
+  return WithoutResult(run, Status::kNotRun, why);
 }
 
 SweepRunResult SweepRunResult::LostRun(const SweepPlan::Run& run, const std::string& why) {
-  SweepRunResult result;
-  result.run = run;
-  result.status = Status::kFailed;
-  result.problem = why;
-  return result;
+  return WithoutResult(run, Status::kFailed, why);
 }
 
 std::string SweepRunResult::OutcomeText() const {
