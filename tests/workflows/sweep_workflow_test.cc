@@ -173,7 +173,7 @@ TEST_F(SweepWorkflowTest, PlanEngineWritesOneShellCommandPerRunAndRunsNothing) {
   const SweepFolder folder(out().string());
   EXPECT_EQ(ReadText(out() / "commands.txt"), folder.RunCommand(0) + "\n" + folder.RunCommand(1) + "\n" +
                                                   folder.RunCommand(2) + "\n" + folder.RunCommand(3) + "\n");
-  EXPECT_NE(ReadText(out() / "run.sh").find("dream='/opt/dream/bin/dream'"), std::string::npos);
+  EXPECT_NE(ReadText(out() / "run.sh").find("dream=/opt/dream/bin/dream\n"), std::string::npos);
   const SweepPlan plan = folder.ReadPlan();
   for (const SweepPlan::Run& run : plan.runs()) {
     EXPECT_TRUE(fs::exists(folder.RunDir(run.name) + "/config.yaml")) << run.name;
@@ -202,7 +202,7 @@ TEST_F(SweepWorkflowTest, SlurmEngineSubmitsOneArrayAndATableJobAfterIt) {
   EXPECT_EQ(sbatches[0], array);
   EXPECT_EQ(sbatches[1][3], "--dependency=afterany:100");
   EXPECT_EQ(sbatches[1].back(), folder.Path("slurm/table.sh"));
-  EXPECT_NE(ReadText(folder.Path("slurm/table.sh")).find("'/opt/dream/bin/dream' sweep table"), std::string::npos);
+  EXPECT_NE(ReadText(folder.Path("slurm/table.sh")).find("/opt/dream/bin/dream sweep table"), std::string::npos);
   const SlurmJobs jobs(folder);
   ASSERT_EQ(jobs.arrays().size(), 1u);
   EXPECT_EQ(jobs.arrays()[0].job_id, "100");

@@ -11,7 +11,7 @@
 #include "commands.h"
 #include "data_files.h"
 #include "process_group.h"
-#include "shell_quoted.h"
+#include "dream/workflows/shell_quoted.h"
 
 namespace dream::cli {
 
@@ -35,7 +35,7 @@ std::string SpyClasspath() {
 
 void PrintToolCommands(const std::vector<std::vector<std::string>>& commands) {
   for (const std::vector<std::string>& command : commands) {
-    if (!command.empty()) std::cout << ShellCommandLine(command) << '\n';
+    if (!command.empty()) std::cout << workflows::ShellCommandLine(command) << '\n';
   }
 }
 

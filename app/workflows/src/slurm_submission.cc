@@ -1,4 +1,5 @@
 #include "dream/workflows/slurm_submission.h"
+#include "dream/workflows/shell_quoted.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,18 +16,6 @@ namespace {
 
 constexpr size_t kDefaultMaxArraySize = 1001;  // Slurm's default
 constexpr long long kTableJobMinutes = 30;
-
-std::string ShellQuoted(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-std::string Joined(const std::vector<std::string>& words) {
-  std::string line;
-  for (const std::string& word : words) line += (line.empty() ? "" : " ") + ShellQuoted(word);
-  return line;
-}
 
 }  // namespace
 
@@ -84,7 +73,7 @@ std::string SlurmSubmission::SubmitJob(std::vector<std::string> argv, const std:
     while (!said.empty() && (said.back() == '\n' || said.back() == ' ')) said.pop_back();
     throw std::runtime_error("sbatch refused " + what + " (" +
                              (result.exit_code < 0 ? std::string("could not run sbatch") : "exit " + std::to_string(result.exit_code)) +
-                             (said.empty() ? "" : ": " + said.substr(0, 500)) + "); the command was: " + Joined(argv));
+                             (said.empty() ? "" : ": " + said.substr(0, 500)) + "); the command was: " + ShellCommandLine(argv));
   }
   return *id;
 }
@@ -125,7 +114,7 @@ SlurmSubmission::Submitted SlurmSubmission::Submit(const std::vector<size_t>& in
       id = SubmitJob(argv, "the job array");
     } catch (const std::runtime_error& e) {
       if (submitted.array_jobs.empty()) throw;
-      throw std::runtime_error(std::string(e.what()) + "; already submitted: job arrays " + Joined(submitted.array_jobs) +
+      throw std::runtime_error(std::string(e.what()) + "; already submitted: job arrays " + ShellCommandLine(submitted.array_jobs) +
                                " (scancel them, or let them run and call dream sweep resume)");
     }
     jobs.RecordArray({id, offset});

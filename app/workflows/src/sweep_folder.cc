@@ -1,4 +1,5 @@
 #include "dream/workflows/sweep_folder.h"
+#include "dream/workflows/shell_quoted.h"
 
 #include <filesystem>
 #include <fstream>
@@ -76,12 +77,6 @@ bool ParseIndex(const std::string& text, size_t& value) {
   if (text.empty() || text.size() > 9 || text.find_first_not_of("0123456789") != std::string::npos) return false;
   value = std::stoul(text);
   return true;
-}
-
-std::string ShellQuoted(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
-#include "shell_quoted.h"
+#include "dream/workflows/shell_quoted.h"
 
-namespace dream::cli {
+namespace dream::workflows {
 
 std::string ShellQuoted(const std::string& text) {
   if (!text.empty() && text.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-./:=,+@") ==
@@ -18,4 +18,4 @@ std::string ShellCommandLine(const std::vector<std::string>& argv) {
   return line;
 }
 
-}  // namespace dream::cli
+}  // namespace dream::workflows
