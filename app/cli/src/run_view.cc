@@ -5,12 +5,31 @@
 #include <exception>
 #include <iostream>
 
+#include "data_files.h"
+#include "dream/agent_host/python_controller_spec.h"
 #include "dream/session/render_overlays.h"
 
 namespace dream::cli {
 
+namespace {
+
+/// A Python controller's goal_points(): a finished run's from its summary.json, else computed
+/// from the config, once, before the view starts (a short-lived python3, as for its metrics).
+void AddPythonControllerGoals(const run_config::RunConfig& config, const std::string& run_dir,
+                              render::ArenaOverlays* overlays) {
+  if (!overlays->goals_m.empty() || !agent_host::IsPythonController(config)) return;
+  if (!run_dir.empty() && session::AddDeclaredGoalsOfRun(run_dir + "/summary.json", overlays)) return;
+  try {
+    session::AddPythonGoals(config, DataFiles::PythonRuntimeDir(), overlays);
+  } catch (const std::exception& e) {
+    spdlog::warn("dream view: drawing without the controller's goal points: {}", e.what());
+  }
+}
+
+}  // namespace
+
 view::ViewSetup ViewSetupOfConfig(const run_config::RunConfig& config, view::ViewSetup::Mode mode,
-                                  const std::string& source) {
+                                  const std::string& source, const std::string& run_dir) {
   view::ViewSetup setup;
   setup.mode = mode;
   setup.world = config.world;
@@ -21,6 +40,7 @@ view::ViewSetup ViewSetupOfConfig(const run_config::RunConfig& config, view::Vie
     // Goals and radio are a nicety: the run itself is drawn from the bus.
     spdlog::warn("dream view: drawing without the config's goals and radio: {}", e.what());
   }
+  AddPythonControllerGoals(config, run_dir, &setup.overlays);
   setup.overlays.run_name = config.name;
   return setup;
 }

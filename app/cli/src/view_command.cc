@@ -96,7 +96,7 @@ int RunReplayView(const ViewArgs& args) {
   }
   view::ViewSetup setup;
   if (const std::optional<run_config::RunConfig> config = ConfigOfRun(args, log_path, log.num_robots())) {
-    setup = ViewSetupOfConfig(*config, view::ViewSetup::Mode::kReplay, args.run);
+    setup = ViewSetupOfConfig(*config, view::ViewSetup::Mode::kReplay, args.run, fs::absolute(log_path).parent_path().string());
   }
   setup.mode = view::ViewSetup::Mode::kReplay;
   setup.source = args.run;
