@@ -13,7 +13,7 @@
   const STATE_NAMES = ["waiting for agents", "running", "finished", "aborted"];
 
   const view = {
-    setup: null, scene: null, paths: [], run: null, replay: null, frames: 0,
+    setup: null, scene: null, paths: [], run: null, replay: null, frames: 0, drawn: 0,
     marks: new Map(), links: new Map(), steps: [], counts: null,
     state: { mode: null, connected: false, step: -1, robots: [], violations: [], verdict: "unknown" },
   };
@@ -49,6 +49,7 @@
   // open beside a run should not take a core from it.
   function draw() {
     view.dirty = false;
+    view.drawn += 1;
     DreamArena.draw(canvas, view.setup, view.scene, layers(), view.paths);
   }
 
