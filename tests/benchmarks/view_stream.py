@@ -96,6 +96,7 @@ def main():
     parser.add_argument("--seconds", type=float, default=20.0)
     parser.add_argument("--fps", type=int, default=None, help="dream view --fps (default: its own)")
     parser.add_argument("--no-browser", action="store_true")
+    parser.add_argument("--page-eval", default="", help="JavaScript run in the page before the stream (to try variants)")
     args = parser.parse_args()
     require_private_netns()
     dream = import_types(os.path.join(args.build, "python"))
@@ -118,6 +119,8 @@ def main():
                 page = Page(devtools_port(data))
                 while not page.evaluate("window.dreamView && window.dreamView.state.connected"):
                     time.sleep(0.05)
+                if args.page_eval:
+                    page.evaluate(args.page_eval)
                 time.sleep(1.0)  # the page settled: idle costs are not the stream's
             bus = Udpm()
             steps = int(args.seconds * args.rate)

@@ -12,6 +12,7 @@ What the page is sent is read at the JSON level: the setup message on the view's
   computed from config.yaml;
 - a goal_points() that raises: the view starts anyway, draws no goals and says why (the file and
   line of the exception).
+And `--fps`: the page is told the rate (it draws no more often); 0 is refused.
 
 Usage: view_goals.py --dream BIN --source DIR
 """
@@ -33,8 +34,8 @@ def code_blocks(text, language):
     return re.findall(r"```" + language + r"\n(.*?)```", text, flags=re.S)
 
 
-def setup_goals(ctx, name):
-    """The goals of the setup message the view of process `name` sends a new browser first."""
+def setup_message(ctx, name):
+    """The setup message the view of process `name` sends a new browser first."""
     ctx.wait_for_output(name, URL.pattern, 30)
     port = URL.search(ctx.output(name)).group(2)
     socket = WebSocket(f"ws://127.0.0.1:{port}/ws")
@@ -42,7 +43,7 @@ def setup_goals(ctx, name):
         while True:
             message = json.loads(socket.receive())
             if message.get("type") == "setup":
-                return message["goals"]
+                return message
     finally:
         socket.close()
 
@@ -70,14 +71,17 @@ def test(ctx):
     check(len(declared) == 6 and all(len(p) == 1 and abs(math.hypot(*p[0]) - 0.6) < 1e-9 for p in declared),
           f"the ring's goal points (one a robot, 0.6 m from the centre): {declared}")
 
-    ctx.start("live", [args.dream, "view", "--config", "ring.yaml", "--port", "0", "--lcm-url", "memq://"])
-    live = setup_goals(ctx, "live")
+    ctx.start("live", [args.dream, "view", "--config", "ring.yaml", "--port", "0", "--lcm-url", "memq://",
+                       "--fps", "12"])
+    setup = setup_message(ctx, "live")
+    live = setup["goals"]
     check(same_points(live, declared), f"dream view --config ring.yaml draws goals {live}, the run declared {declared}")
+    check(setup["fps"] == 12, f"dream view --fps 12: the page is told {setup['fps']} frames a second")
     ctx.stop("live")
 
     ctx.start("embedded", [args.dream, "run", "ring.yaml", "--out", "embedded", "--steps", "90", "--view",
                            "--view-port", "0", "--pace", "1", "-q"])
-    embedded = setup_goals(ctx, "embedded")
+    embedded = setup_message(ctx, "embedded")["goals"]
     check(same_points(embedded, declared), f"dream run --view draws goals {embedded}, the run declared {declared}")
     ctx.wait("embedded", 30)
 
@@ -114,12 +118,14 @@ def test(ctx):
         f.write(module.replace("        return [[ring_point(", "        raise ValueError('no ring here')\n"
                                                                 "        return [[ring_point("))
     ctx.start("broken", [args.dream, "view", "--config", "broken.yaml", "--port", "0", "--lcm-url", "memq://"])
-    broken = setup_goals(ctx, "broken")
+    broken = setup_message(ctx, "broken")["goals"]
     output = ctx.output("broken")
     check(broken == [], f"a goal_points() that raised drew goals {broken}")
     check(re.search(r"without the controller's goal points: .*ValueError: no ring here \(.*ring\.py:\d+\)", output),
           f"dream view does not say why it draws no goals: {output[-600:]}")
     ctx.stop("broken")
+    code, output = ctx.run([args.dream, "view", "--fps", "0", "--lcm-url", "memq://"], timeout=30)
+    check(code != 0 and "--fps" in output, f"dream view --fps 0: exit {code}: {output[-300:]}")
     print(f"goals drawn: live, dream run --view, replay (summary.json and computed): {len(declared)} robots")
 
 

@@ -4,6 +4,7 @@
 
 #include <exception>
 #include <iostream>
+#include <utility>
 
 #include "data_files.h"
 #include "dream/agent_host/python_controller_spec.h"
@@ -45,10 +46,12 @@ view::ViewSetup ViewSetupOfConfig(const run_config::RunConfig& config, view::Vie
   return setup;
 }
 
-RunView::RunView(lcm::LcmInterface& bus, const run_config::RunConfig& config, const std::string& bind, int port)
+RunView::RunView(lcm::LcmInterface& bus, const run_config::RunConfig& config, const std::string& bind, int port,
+                 int frames_per_second)
     : server_(view::ViewServer::Options{bind, port, false, 8}) {
-  live_ = std::make_unique<view::LiveView>(bus, server_,
-                                           ViewSetupOfConfig(config, view::ViewSetup::Mode::kLive, config.source));
+  view::ViewSetup setup = ViewSetupOfConfig(config, view::ViewSetup::Mode::kLive, config.source);
+  setup.frames_per_second = frames_per_second;
+  live_ = std::make_unique<view::LiveView>(bus, server_, std::move(setup));
   std::cout << "dream view: open " << server_.url() << " to watch the run ";
   if (config.sim.pace > 0) {
     std::cout << "(paced to " << config.sim.pace << "x real time)" << std::endl;
