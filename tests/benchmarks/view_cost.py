@@ -29,7 +29,9 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "integration"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from devtools import Page, chromium_argv, devtools_port  # noqa: E402
+from view_stream import cpu_seconds, process_tree  # noqa: E402
 
 URL = re.compile(r"open (http://127\.0\.0\.1:\d+/)")
 
@@ -66,6 +68,10 @@ class Browser:
         data = os.path.join(self.folder, f"chrome{time.monotonic_ns()}")
         self.proc = subprocess.Popen(chromium_argv(data, url), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         self.page = Page(devtools_port(data))
+
+    def cpu_s(self):
+        """CPU seconds Chromium's processes have spent so far."""
+        return cpu_seconds(process_tree(self.proc.pid)) if self.proc else 0.0
 
     def state(self):
         return self.page.evaluate("window.dreamView.state")
@@ -139,6 +145,8 @@ def main():
     parser.add_argument("--steps", type=int, default=20000)
     parser.add_argument("--udpm", action="store_true", help="also dream launch (run inside tests/integration/netns.sh)")
     parser.add_argument("--only-udpm", action="store_true", help="only dream launch")
+    parser.add_argument("--baseline-view", help="dream launch: also a page served by this dream binary's view "
+                                                "(another version's page, to compare)")
     parser.add_argument("--fps", type=int, nargs="*", default=[],
                         help="dream launch: also a page with dream view --fps each of these")
     args = parser.parse_args()
@@ -162,12 +170,13 @@ def main():
         if args.udpm or args.only_udpm:
             launch_steps = 3000
 
-            def launched(view, watch, fps=None):
+            def launched(view, watch, fps=None, viewer_binary=None):
                 out = os.path.join(folder, "launch")
                 viewer = None
                 url_file = os.path.join(folder, "view.txt")
                 if view:
-                    viewer = subprocess.Popen([dream, "view", "--port", "0"] + (["--fps", str(fps)] if fps else []),
+                    viewer = subprocess.Popen([viewer_binary or dream, "view", "--port", "0"] +
+                                              (["--fps", str(fps)] if fps else []),
                                               stdout=open(url_file, "w"), stderr=subprocess.STDOUT)
                 browser = Browser(folder)
                 try:
@@ -179,8 +188,13 @@ def main():
                         while not browser.page.evaluate("window.dreamView && window.dreamView.state.connected"):
                             time.sleep(0.05)
                         time.sleep(1.0)
+                    chrome_before = browser.cpu_s()
                     run_and_watch([dream, "launch", config, "--out", out, "--overwrite", "--all-steps",
                                    "--steps", str(launch_steps)], folder, False)
+                    if watch:
+                        which = "the baseline's page" if viewer_binary else f"--fps {fps or 'default'}"
+                        print(f"    Chromium ({which}): {browser.cpu_s() - chrome_before:.2f} s CPU during the run "
+                              f"of {launch_steps} steps", flush=True)
                 finally:
                     browser.close()
                     if viewer:
@@ -193,7 +207,9 @@ def main():
                 ("dream view on the bus, no browser", lambda: launched(True, False)),
                 ("dream view on the bus, a Chromium page", lambda: launched(True, True)),
             ] + [(f"dream view --fps {fps}, a Chromium page", lambda fps=fps: launched(True, True, fps))
-                 for fps in args.fps], args.repeat)
+                 for fps in args.fps] +
+                ([("the page of --baseline-view", lambda: launched(True, True, None, args.baseline_view))]
+                 if args.baseline_view else []), args.repeat)
 
         if args.only_udpm:
             return
