@@ -71,14 +71,19 @@ std::string ReadBounded(const fs::path& path) {
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
-/// Runs python3 -I script input output with stderr to `errors`; its exit status, -1 when it timed out.
-int RunPython(const std::string& script, const fs::path& input, const fs::path& output, const fs::path& errors) {
+/// Runs python3 -I script [mode] input output with stderr to `errors`; its exit status, -1 when it
+/// ran past `timeout_s`.
+int RunPython(const std::string& script, const std::string& mode, const fs::path& input, const fs::path& output,
+              const fs::path& errors, double timeout_s) {
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
   posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, errors.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-  std::vector<std::string> args = {DREAM_PYTHON3_EXECUTABLE, "-I", script, input.string(), output.string()};
+  std::vector<std::string> args = {DREAM_PYTHON3_EXECUTABLE, "-I", script};
+  if (!mode.empty()) args.push_back(mode);
+  args.push_back(input.string());
+  args.push_back(output.string());
   std::vector<char*> argv;
   for (std::string& arg : args) argv.push_back(arg.data());
   argv.push_back(nullptr);
@@ -88,7 +93,7 @@ int RunPython(const std::string& script, const fs::path& input, const fs::path& 
   if (spawn_error != 0) {
     throw std::runtime_error(std::string("cannot start ") + DREAM_PYTHON3_EXECUTABLE + " (Debian's python3 and python3-numpy)");
   }
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(PythonRunMetrics::kTimeoutS);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
   int status = 0;
   while (::waitpid(pid, &status, WNOHANG) == 0) {
     if (std::chrono::steady_clock::now() > deadline) {
@@ -101,33 +106,64 @@ int RunPython(const std::string& script, const fs::path& input, const fs::path& 
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
 }
 
-}  // namespace
-
-nlohmann::json PythonRunMetrics::Compute(const std::string& runtime_dir, const std::string& spec_json,
-                                         const run_log::RunLog& log) {
+std::string ScriptIn(const std::string& runtime_dir) {
   const std::string script = (fs::path(runtime_dir) / "dream" / "run_metrics.py").string();
   if (!fs::is_regular_file(script)) {
-    throw std::runtime_error(script + ": missing; it computes a Python controller's own metrics and goal");
+    throw std::runtime_error(script + ": missing; it computes a Python controller's own metrics, goal and goal points");
   }
-  TempFiles temp;
-  WriteInput(temp.dir / "input", spec_json, log);
-  const int status = RunPython(script, temp.dir / "input", temp.dir / "output.json", temp.dir / "errors");
+  return script;
+}
+
+/// Runs the script on the input in `temp` and reads its output document: `what` names the
+/// class's functions in errors ("metrics()/goal()").
+nlohmann::json RunScript(const std::string& script, const std::string& mode, const TempFiles& temp, double timeout_s,
+                         const std::string& what) {
+  const int status = RunPython(script, mode, temp.dir / "input", temp.dir / "output.json", temp.dir / "errors",
+                               timeout_s);
   if (status == -1) {
-    throw std::runtime_error("the controller's metrics()/goal() took more than " +
-                             std::to_string(static_cast<int>(kTimeoutS)) + " s: stopped");
+    throw std::runtime_error("the controller's " + what + " took more than " +
+                             std::to_string(static_cast<int>(timeout_s)) + " s: stopped");
   }
   if (status != 0) {
     std::string errors = ReadBounded(temp.dir / "errors");
     while (!errors.empty() && (errors.back() == '\n' || errors.back() == '\r')) errors.pop_back();
     if (errors.size() > 2000) errors = "..." + errors.substr(errors.size() - 2000);
-    throw std::runtime_error("the controller's metrics: " + (errors.empty() ? "python3 exit " + std::to_string(status)
-                                                                              : errors));
+    throw std::runtime_error("the controller's " + what + ": " +
+                             (errors.empty() ? "python3 exit " + std::to_string(status) : errors));
   }
   const nlohmann::json document = nlohmann::json::parse(ReadBounded(temp.dir / "output.json"), nullptr, false);
-  if (!document.is_object() || !document.contains("metrics") || !document["metrics"].is_object()) {
+  if (!document.is_object()) throw std::runtime_error(script + " wrote no document for the controller's " + what);
+  return document;
+}
+
+}  // namespace
+
+nlohmann::json PythonRunMetrics::Compute(const std::string& runtime_dir, const std::string& spec_json,
+                                         const run_log::RunLog& log) {
+  const std::string script = ScriptIn(runtime_dir);
+  TempFiles temp;
+  WriteInput(temp.dir / "input", spec_json, log);
+  const nlohmann::json document = RunScript(script, "", temp, kTimeoutS, "metrics");
+  if (!document.contains("metrics") || !document["metrics"].is_object()) {
     throw std::runtime_error(script + " wrote no metrics document");
   }
   return document;
+}
+
+nlohmann::json PythonRunMetrics::GoalPoints(const std::string& runtime_dir, const std::string& spec_json,
+                                            int num_robots) {
+  const std::string script = ScriptIn(runtime_dir);
+  TempFiles temp;
+  {
+    std::ofstream out(temp.dir / "input", std::ios::binary);
+    out << nlohmann::json{{"spec_bytes", spec_json.size()}, {"robots", num_robots}}.dump() << "\n" << spec_json;
+    if (!out.flush()) throw std::runtime_error("cannot write " + (temp.dir / "input").string());
+  }
+  const nlohmann::json document = RunScript(script, "--goal-points", temp, kGoalPointsTimeoutS, "goal_points()");
+  if (!document.contains("goal_points") || !document["goal_points"].is_array()) {
+    throw std::runtime_error(script + " wrote no goal points");
+  }
+  return document["goal_points"];
 }
 
 }  // namespace dream::bridge

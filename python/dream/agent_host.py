@@ -36,7 +36,7 @@ from .world_follower import IGNORE, NEW_STEP, WorldFollower
 log = logging.getLogger("dream")
 
 SUBSCRIPTION_REGEX = "DREAM_(POSES|OBSTACLES|STATUS|RADIO_[0-9]+)"
-MAX_ROBOTS = 50          # the simulator's limit (lcmtypes/lcm message_limits.h); larger counts are forged
+MAX_ROBOTS = 50          # a run's limit (the Robotarium simulator's); an agent refuses larger counts
 MAX_OBSTACLES = 10000    # far beyond any config; bounds the decode of a forged message
 MAX_RADIO_PAYLOAD = MAX_PAYLOAD_BYTES
 MAX_DETAIL_BYTES = 1 << 16  # lcm::MessageLimits::kDetailBytes: a longer fault text is refused

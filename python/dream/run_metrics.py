@@ -22,6 +22,13 @@ INPUT: a JSON header line {"spec_bytes", "steps", "robots"}, the controller spec
 the agents), then `steps` int64 step numbers and steps x robots x 3 float64 poses (native byte
 order). OUTPUT receives {"declared": [...], "metrics": {...}, "goal": {...} | null,
 "goal_points": [...]}; an error goes to stderr with exit status 1. Not shipped in submissions.
+
+Before a run, `dream view` and `dream run --view` ask only for the goal points, to draw them:
+
+    python3 -I run_metrics.py --goal-points INPUT OUTPUT
+
+INPUT: a JSON header line {"spec_bytes", "robots"} and the controller spec; OUTPUT receives
+{"declared": true | false, "goal_points": [...]}.
 """
 
 import json
@@ -39,6 +46,8 @@ else:
 
 MAX_HEADER_BYTES = 4096
 MAX_DETAIL_CHARS = 200
+MAX_GOAL_POINTS_PER_ROBOT = 1000  # a drawing's worth; more is a mistake, not a goal
+MAX_ROBOTS = 1000
 # Names summary.json's metrics already use for their own fields.
 RESERVED_NAMES = ("kind", "goal", "goal_points", "error")
 
@@ -131,6 +140,9 @@ def _goal_points(robot_class, config, num_robots):
     result = []
     for robot, robot_points in enumerate(points):
         pairs = np.asarray(robot_points, dtype=float).reshape(-1, 2)
+        if pairs.shape[0] > MAX_GOAL_POINTS_PER_ROBOT:
+            raise MetricsDeclarationError(f"goal_points()[{robot}]: {pairs.shape[0]} points; at most "
+                                          f"{MAX_GOAL_POINTS_PER_ROBOT} a robot")
         result.append([[_finite(x, f"goal_points()[{robot}]"), _finite(y, f"goal_points()[{robot}]")]
                        for x, y in pairs])
     return result
@@ -157,13 +169,39 @@ def evaluate(robot_class, config, steps, poses):
     return {"declared": declared, "metrics": metrics, "goal": goal, "goal_points": run.goal_points}
 
 
+def declared_goal_points(robot_class, config, num_robots):
+    """Only the goal points (before a run, to draw them): the --goal-points OUTPUT document."""
+    declared = callable(getattr(robot_class, "goal_points", None))
+    return {"declared": declared, "goal_points": _goal_points(robot_class, config, num_robots)}
+
+
+def _read_header(file, path, keys):
+    header_line = file.readline(MAX_HEADER_BYTES)
+    try:
+        header = json.loads(header_line)
+        values = {name: int(header[name]) for name in keys}
+    except (ValueError, KeyError, TypeError) as error:
+        raise ValueError(f"{path}: bad header line {header_line[:200]!r}: {error}") from None
+    if values["spec_bytes"] < 0 or not 1 <= values["robots"] <= MAX_ROBOTS:
+        raise ValueError(f"{path}: bad header {header}")
+    return values
+
+
+def _read_goal_points_input(path):
+    with open(path, "rb") as file:
+        header = _read_header(file, path, ("spec_bytes", "robots"))
+        spec = file.read(header["spec_bytes"])
+        if len(spec) != header["spec_bytes"]:
+            raise ValueError(f"{path}: cut short: expected {header['spec_bytes']} bytes of spec")
+    return spec.decode("utf-8"), header["robots"]
+
+
 def _read_input(path):
     with open(path, "rb") as file:
-        header_line = file.readline(MAX_HEADER_BYTES)
-        header = json.loads(header_line)
-        spec_text = file.read(int(header["spec_bytes"])).decode("utf-8")
-        count, robots = int(header["steps"]), int(header["robots"])
-        if count < 0 or robots < 1:
+        header = _read_header(file, path, ("spec_bytes", "steps", "robots"))
+        spec_text = file.read(header["spec_bytes"]).decode("utf-8")
+        count, robots = header["steps"], header["robots"]
+        if count < 0:
             raise ValueError(f"{path}: bad header {header}")
         steps = np.frombuffer(file.read(8 * count), dtype=np.int64)
         poses = np.frombuffer(file.read(8 * count * robots * 3), dtype=np.float64)
@@ -172,25 +210,35 @@ def _read_input(path):
     return spec_text, steps, poses.reshape(count, robots, 3)
 
 
-def main(argv):
-    if len(argv) != 3:
-        print("usage: run_metrics.py INPUT OUTPUT", file=sys.stderr)
-        return 2
-    try:
+def _document(argv):
+    """What OUTPUT receives, for either mode."""
+    if argv[1] == "--goal-points":
+        spec_text, robots = _read_goal_points_input(argv[2])
+        spec = ControllerSpec.from_json(spec_text)
+        work = lambda: declared_goal_points(spec.robot_class, spec.config, robots)  # noqa: E731
+    else:
         spec_text, steps, poses = _read_input(argv[1])
         spec = ControllerSpec.from_json(spec_text)
-        name = spec.robot_class.__name__
-        try:
-            document = evaluate(spec.robot_class, spec.config, steps, poses)
-        except MetricsDeclarationError as error:
-            raise MetricsDeclarationError(f"{spec.module_path}: {name}.{error}") from None
+        work = lambda: evaluate(spec.robot_class, spec.config, steps, poses)  # noqa: E731
+    try:
+        return work()
+    except MetricsDeclarationError as error:
+        raise MetricsDeclarationError(f"{spec.module_path}: {spec.robot_class.__name__}.{error}") from None
+
+
+def main(argv):
+    if len(argv) != 3 and not (len(argv) == 4 and argv[1] == "--goal-points"):
+        print("usage: run_metrics.py [--goal-points] INPUT OUTPUT", file=sys.stderr)
+        return 2
+    try:
+        document = _document(argv)
     except Exception as error:  # every failure becomes metrics.error in summary.json
         import traceback
         frames = [f for f in traceback.extract_tb(error.__traceback__) if not f.filename.endswith("run_metrics.py")]
         where = f" ({frames[-1].filename}:{frames[-1].lineno})" if frames else ""
         print(f"{type(error).__name__}: {error}{where}", file=sys.stderr)
         return 1
-    with open(argv[2], "w", encoding="utf-8") as out:
+    with open(argv[-1], "w", encoding="utf-8") as out:
         json.dump(document, out)
     return 0
 

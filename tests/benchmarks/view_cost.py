@@ -6,11 +6,13 @@
 
 1. `dream run` (one process, memq) of 20 robots (go to goal on a ring), lockstep, --all-steps:
    without the view, with --view --pace 0 (the view's handler in the run's own loop), and with
-   --view and a headless Chromium page drawing it. Runs interleaved, best of --repeat, steps/s
-   from summary.json.
+   --view and a headless Chromium page drawing it (opened when the run prints its address, so
+   Chromium's start-up overlaps the run). Runs interleaved, best of --repeat, steps/s from
+   summary.json.
 2. With --udpm (inside a private network namespace): `dream launch` of the same config (the
    simulator and 20 agent processes) without and with a `dream view` process on the bus and a
-   Chromium page drawing it.
+   Chromium page drawing it (opened and settled before the run starts, as a user's page is),
+   and with pages of `dream view --fps N` for each N of --fps.
 3. A real-time run of 50 robots (the most a run may have) with --view and a page: how many of
    its steps the page drew, and its frames per second.
 
@@ -27,7 +29,9 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "integration"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from devtools import Page, chromium_argv, devtools_port  # noqa: E402
+from view_stream import cpu_seconds, process_tree  # noqa: E402
 
 URL = re.compile(r"open (http://127\.0\.0\.1:\d+/)")
 
@@ -64,6 +68,10 @@ class Browser:
         data = os.path.join(self.folder, f"chrome{time.monotonic_ns()}")
         self.proc = subprocess.Popen(chromium_argv(data, url), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         self.page = Page(devtools_port(data))
+
+    def cpu_s(self):
+        """CPU seconds Chromium's processes have spent so far."""
+        return cpu_seconds(process_tree(self.proc.pid)) if self.proc else 0.0
 
     def state(self):
         return self.page.evaluate("window.dreamView.state")
@@ -137,6 +145,10 @@ def main():
     parser.add_argument("--steps", type=int, default=20000)
     parser.add_argument("--udpm", action="store_true", help="also dream launch (run inside tests/integration/netns.sh)")
     parser.add_argument("--only-udpm", action="store_true", help="only dream launch")
+    parser.add_argument("--baseline-view", help="dream launch: also a page served by this dream binary's view "
+                                                "(another version's page, to compare)")
+    parser.add_argument("--fps", type=int, nargs="*", default=[],
+                        help="dream launch: also a page with dream view --fps each of these")
     args = parser.parse_args()
     dream = os.path.abspath(os.path.join(args.build, "dream"))
     with tempfile.TemporaryDirectory() as folder:
@@ -158,17 +170,33 @@ def main():
         if args.udpm or args.only_udpm:
             launch_steps = 3000
 
-            def launched(view, watch):
+            def launched(view, watch, fps=None, viewer_binary=None):
                 out = os.path.join(folder, "launch")
                 viewer = None
                 url_file = os.path.join(folder, "view.txt")
                 if view:
-                    viewer = subprocess.Popen([dream, "view", "--port", "0"], stdout=open(url_file, "w"),
-                                              stderr=subprocess.STDOUT)
+                    viewer = subprocess.Popen([viewer_binary or dream, "view", "--port", "0"] +
+                                              (["--fps", str(fps)] if fps else []),
+                                              stdout=open(url_file, "w"), stderr=subprocess.STDOUT)
+                browser = Browser(folder)
                 try:
+                    if watch:  # open and settled before the run: a user's page is, and starting Chromium is not drawing
+                        deadline = time.monotonic() + 10
+                        while not URL.search(open(url_file).read()) and time.monotonic() < deadline:
+                            time.sleep(0.01)
+                        browser.open(URL.search(open(url_file).read()).group(1))
+                        while not browser.page.evaluate("window.dreamView && window.dreamView.state.connected"):
+                            time.sleep(0.05)
+                        time.sleep(1.0)
+                    chrome_before = browser.cpu_s()
                     run_and_watch([dream, "launch", config, "--out", out, "--overwrite", "--all-steps",
-                                   "--steps", str(launch_steps)], folder, watch, url_file if watch else None)
+                                   "--steps", str(launch_steps)], folder, False)
+                    if watch:
+                        which = "the baseline's page" if viewer_binary else f"--fps {fps or 'default'}"
+                        print(f"    Chromium ({which}): {browser.cpu_s() - chrome_before:.2f} s CPU during the run "
+                              f"of {launch_steps} steps", flush=True)
                 finally:
+                    browser.close()
                     if viewer:
                         viewer.terminate()
                         viewer.wait()
@@ -178,7 +206,10 @@ def main():
                 ("without the view", lambda: launched(False, False)),
                 ("dream view on the bus, no browser", lambda: launched(True, False)),
                 ("dream view on the bus, a Chromium page", lambda: launched(True, True)),
-            ], args.repeat)
+            ] + [(f"dream view --fps {fps}, a Chromium page", lambda fps=fps: launched(True, True, fps))
+                 for fps in args.fps] +
+                ([("the page of --baseline-view", lambda: launched(True, True, None, args.baseline_view))]
+                 if args.baseline_view else []), args.repeat)
 
         if args.only_udpm:
             return

@@ -138,33 +138,52 @@ class DeclarationTest(unittest.TestCase):
 class ProtocolTest(unittest.TestCase):
     """What dream run does: python3 -I run_metrics.py INPUT OUTPUT."""
 
+    @staticmethod
+    def spec_bytes(folder, module_text):
+        """The controller spec the agents get, for class Pair of `module_text`."""
+        module = os.path.join(folder, "pair.py")
+        with open(module, "w") as f:
+            f.write(module_text)
+        return json.dumps({"format": 1, "name": "pair", "config_file": "pair.yaml", "robots": 2, "seed": 1,
+                           "module": module, "class": "Pair", "section_line": 3, "module_line": 4,
+                           "class_line": 5, "params": {},
+                           "parts": {"robot": {"period_steps": [1, 1], "start_delay_steps": [0, 0],
+                                               "vel_gain": 0.8, "ang_gain": 3.0},
+                                     "sensors": [], "radio": {"kind": "none", "period_steps": [1, 1], "range_m": 1.0,
+                                                               "graph": [], "leaders": [], "loss_probability": 0.0,
+                                                               "delay_steps": 0}}}).encode()
+
+    @staticmethod
+    def script(folder, *args):
+        """python3 -I run_metrics.py ARGS... OUTPUT: exit status, OUTPUT's document (or None), stderr."""
+        script = os.path.join(SOURCE_DIR, "python", "dream", "run_metrics.py")
+        output_path = os.path.join(folder, "output")
+        done = subprocess.run([sys.executable, "-I", script, *args, output_path], capture_output=True, text=True,
+                              timeout=60)
+        output = None
+        if done.returncode == 0:
+            with open(output_path) as f:
+                output = json.load(f)
+        return done.returncode, output, done.stderr
+
     def run_script(self, module_text, poses):
         with tempfile.TemporaryDirectory() as folder:
-            module = os.path.join(folder, "pair.py")
-            with open(module, "w") as f:
-                f.write(module_text)
-            spec = json.dumps({"format": 1, "name": "pair", "config_file": "pair.yaml", "robots": 2, "seed": 1,
-                               "module": module, "class": "Pair", "section_line": 3, "module_line": 4,
-                               "class_line": 5, "params": {},
-                               "parts": {"robot": {"period_steps": [1, 1], "start_delay_steps": [0, 0],
-                                                   "vel_gain": 0.8, "ang_gain": 3.0},
-                                         "sensors": [], "radio": {"kind": "none", "period_steps": [1, 1], "range_m": 1.0,
-                                                                   "graph": [], "leaders": [], "loss_probability": 0.0,
-                                                                   "delay_steps": 0}}})
-            data = spec.encode()
+            data = self.spec_bytes(folder, module_text)
             with open(os.path.join(folder, "input"), "wb") as f:
                 f.write(json.dumps({"spec_bytes": len(data), "steps": poses.shape[0], "robots": 2}).encode() + b"\n")
                 f.write(data)
                 f.write(np.arange(poses.shape[0], dtype=np.int64).tobytes())
                 f.write(poses.astype(np.float64).tobytes())
-            script = os.path.join(SOURCE_DIR, "python", "dream", "run_metrics.py")
-            done = subprocess.run([sys.executable, "-I", script, os.path.join(folder, "input"),
-                                   os.path.join(folder, "output")], capture_output=True, text=True, timeout=60)
-            output = None
-            if done.returncode == 0:
-                with open(os.path.join(folder, "output")) as f:
-                    output = json.load(f)
-            return done.returncode, output, done.stderr
+            return self.script(folder, os.path.join(folder, "input"))
+
+    def goal_points(self, module_text, robots=2, header=None, cut=0):
+        """--goal-points: the spec alone, before any run."""
+        with tempfile.TemporaryDirectory() as folder:
+            data = self.spec_bytes(folder, module_text)
+            with open(os.path.join(folder, "input"), "wb") as f:
+                f.write((header or json.dumps({"spec_bytes": len(data), "robots": robots}).encode()) + b"\n")
+                f.write(data[:len(data) - cut])
+            return self.script(folder, "--goal-points", os.path.join(folder, "input"))
 
     MODULE = textwrap.dedent('''
         from dream import Robot, key
@@ -191,6 +210,43 @@ class ProtocolTest(unittest.TestCase):
         self.assertEqual(code, 1)
         self.assertIsNone(output)
         self.assertRegex(errors, r"RuntimeError: oops \(.*pair\.py:9\)")
+
+
+    POINTS = textwrap.dedent('''
+        from dream import Robot
+
+        class Pair(Robot):
+            @classmethod
+            def goal_points(cls, config, num_robots):
+                return [[(-0.5, 0.0)], [(0.5, 0.0), (0.5, 0.25)]][:num_robots] + [[]] * max(0, num_robots - 2)
+        ''')
+
+    def test_goal_points_alone_before_a_run(self):
+        code, output, errors = self.goal_points(self.POINTS)
+        self.assertEqual(code, 0, errors)
+        self.assertEqual(output, {"declared": True, "goal_points": [[[-0.5, 0.0]], [[0.5, 0.0], [0.5, 0.25]]]})
+        code, output, errors = self.goal_points(self.MODULE)  # declares a goal, but no points
+        self.assertEqual(code, 0, errors)
+        self.assertEqual(output, {"declared": False, "goal_points": []})
+
+    def test_goal_points_errors_are_named(self):
+        wrong = self.POINTS.replace("[:num_robots] + [[]] * max(0, num_robots - 2)", "")
+        code, _, errors = self.goal_points(wrong, robots=3)
+        self.assertEqual(code, 1)
+        self.assertRegex(errors, r"pair\.py: Pair\.goal_points\(\): expected one list of \(x, y\) per robot \(3\)")
+        many = self.POINTS.replace("[[(-0.5, 0.0)], [(0.5, 0.0), (0.5, 0.25)]]", "[[(0.0, 0.0)] * 1001, []]")
+        code, _, errors = self.goal_points(many)
+        self.assertEqual(code, 1)
+        self.assertIn("goal_points()[0]: 1001 points; at most 1000 a robot", errors)
+        code, _, errors = self.goal_points(self.POINTS, header=b"{not json")
+        self.assertEqual(code, 1)
+        self.assertIn("bad header line", errors)
+        code, _, errors = self.goal_points(self.POINTS, robots=0)
+        self.assertEqual(code, 1)
+        self.assertIn("bad header", errors)
+        code, _, errors = self.goal_points(self.POINTS, cut=10)
+        self.assertEqual(code, 1)
+        self.assertIn("cut short", errors)
 
 
 if __name__ == "__main__":

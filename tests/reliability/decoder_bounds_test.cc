@@ -99,6 +99,27 @@ TEST(DecoderBounds, TheRobotLimitCoversEveryRunTheConfigAllows) {
   EXPECT_GE(MessageLimits::kRobots, robotarium::RobotariumConstants::kMaxRobotsInSimulation);
 }
 
+// Runs stop at 50 robots, but the bus bound is wider: dream view draws any
+// DREAM-format stream of up to 128 (issue 25: a 30 Hz stream of 100 robots).
+TEST(DecoderBounds, AHundredRobotStreamDecodesAndOneOverTheBoundDoesNot) {
+  for (const int32_t robots : {100, MessageLimits::kRobots, MessageLimits::kRobots + 1}) {
+    robot_poses_t poses{};
+    poses.num_robots = robots;
+    poses.x = poses.y = poses.theta = poses.v = poses.w = std::vector<double>(static_cast<size_t>(robots), 0.5);
+    run_status_t status{};
+    status.num_lost = robots;
+    status.lost_robot_ids.assign(static_cast<size_t>(robots), 1);
+    std::vector<uint8_t> bytes = Encoded(poses);
+    robot_poses_t poses_back;
+    EXPECT_EQ(lcm::Decode(bytes.data(), static_cast<int>(bytes.size()), &poses_back), robots <= MessageLimits::kRobots)
+        << robots << " robots";
+    bytes = Encoded(status);
+    run_status_t status_back;
+    EXPECT_EQ(lcm::Decode(bytes.data(), static_cast<int>(bytes.size()), &status_back), robots <= MessageLimits::kRobots)
+        << robots << " lost robots";
+  }
+}
+
 TEST(DecoderBounds, TheObstacleLimitIsTheConfigsLimit) {
   EXPECT_EQ(static_cast<size_t>(MessageLimits::kObstacles), run_config::RunConfig::kMaxObstacles);
 }

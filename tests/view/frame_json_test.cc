@@ -101,6 +101,7 @@ TEST(FrameJsonTest, SetupSaysTheArenaAndTheConfigsGoals) {
   setup.overlays.goals_m = {{{0.5, 0.25}}, {}};
   setup.overlays.sensor_reaches = {{1.0, 0.0, M_PI}};
   setup.overlays.run_name = "ring";
+  setup.frames_per_second = 12;
   const nlohmann::json json = nlohmann::json::parse(SetupJson(setup));
   EXPECT_EQ(json["type"], "setup");
   EXPECT_EQ(json["mode"], "replay");
@@ -111,6 +112,7 @@ TEST(FrameJsonTest, SetupSaysTheArenaAndTheConfigsGoals) {
   EXPECT_DOUBLE_EQ(json["sensors"][0][2].get<double>(), 3.1416);
   EXPECT_EQ(json["run_name"], "ring");
   EXPECT_FALSE(json["hears_known"].get<bool>());
+  EXPECT_EQ(json["fps"], 12);  // the page draws no more often than frames come
 }
 
 }  // namespace

@@ -26,7 +26,7 @@ int RunEmbedded(const RunArgs& args) {
   const HostedAgents agents(bus, config, ids, run->factory(),
                             {config.sim.agent_timeout_s, config.sim.start_timeout_s, 0.0});
   std::unique_ptr<RunView> view;
-  if (args.view) view = std::make_unique<RunView>(bus, config, args.view_bind, args.view_port);
+  if (args.view) view = std::make_unique<RunView>(bus, config, args.view_bind, args.view_port, args.view_fps);
   const session::RunResult result = run->Run(bus, {out_dir, ConfigTextForRunFolder(args, config)});
   if (view) view->ShowEndOf(out_dir);
   return ExitCodeFor(result);
@@ -50,6 +50,10 @@ void DeclareRunCommand(CommandLine& line) {
                     "Serve the live arena while the run runs (dream view; paced to real time unless --pace)");
   command->add_option("--view-port", args->view_port, "Port of --view's page (0: any free port)")
       ->check(CLI::Range(0, 65535))
+      ->capture_default_str();
+  command->add_option("--view-fps", args->view_fps,
+                      "Frames a second --view's page gets and draws at most (fewer cost the machine less)")
+      ->check(CLI::Range(1, view::ViewSetup::kMaxFramesPerSecond))
       ->capture_default_str();
   command->add_option("--view-bind", args->view_bind,
                       "Address --view listens on; 127.0.0.1 (the default) is this machine only,\n"

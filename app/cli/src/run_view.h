@@ -17,7 +17,8 @@ class RunView {
  public:
   /// Listens on `bind`:`port` and prints the page's address.
   /// @throws std::runtime_error when it cannot listen there.
-  RunView(lcm::LcmInterface& bus, const run_config::RunConfig& config, const std::string& bind, int port);
+  RunView(lcm::LcmInterface& bus, const run_config::RunConfig& config, const std::string& bind, int port,
+          int frames_per_second = view::ViewSetup::kDefaultFramesPerSecond);
   /// Shows the run's end, from its log in `run_dir` (the last messages of a
   /// memq run are never handled); a log that cannot be read is only logged.
   void ShowEndOf(const std::string& run_dir);
@@ -30,7 +31,10 @@ class RunView {
 /// The view's setup from a run config: its arena and time step, and what it
 /// adds (goals, sensor reaches, who hears whom), read as dream render reads
 /// them; without them (the config's controller cannot tell) a warning, and
-/// the view draws the run without.
-view::ViewSetup ViewSetupOfConfig(const run_config::RunConfig& config, view::ViewSetup::Mode mode, const std::string& source);
+/// the view draws the run without. A Python controller's goal_points() come
+/// from `run_dir`'s summary.json when given (a replay), else are computed
+/// from the config once, here.
+view::ViewSetup ViewSetupOfConfig(const run_config::RunConfig& config, view::ViewSetup::Mode mode,
+                                  const std::string& source, const std::string& run_dir = "");
 
 }  // namespace dream::cli

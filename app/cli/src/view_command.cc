@@ -33,6 +33,7 @@ struct ViewArgs {
   std::string config_path;  ///< goals, sensors and radio of the run; replay: config.yaml beside the log
   int port = 8077;
   std::string bind = "127.0.0.1";
+  int fps = view::ViewSetup::kDefaultFramesPerSecond;  ///< live: frames a second to each page at most
 };
 
 /// The run's config: --config, else (replay) config.yaml beside the log. One
@@ -72,6 +73,7 @@ int RunLiveView(const ViewArgs& args) {
   }
   setup.mode = view::ViewSetup::Mode::kLive;
   setup.source = url;
+  setup.frames_per_second = args.fps;
   // Best effort: the runs it watches (on this machine, often) get the cores first.
   view::LowerThisProcesssPriority();
   lcm::LcmBus bus(url);
@@ -96,7 +98,7 @@ int RunReplayView(const ViewArgs& args) {
   }
   view::ViewSetup setup;
   if (const std::optional<run_config::RunConfig> config = ConfigOfRun(args, log_path, log.num_robots())) {
-    setup = ViewSetupOfConfig(*config, view::ViewSetup::Mode::kReplay, args.run);
+    setup = ViewSetupOfConfig(*config, view::ViewSetup::Mode::kReplay, args.run, fs::absolute(log_path).parent_path().string());
   }
   setup.mode = view::ViewSetup::Mode::kReplay;
   setup.source = args.run;
@@ -128,6 +130,10 @@ void DeclareViewCommand(CommandLine& line) {
                       "beside the log by default)");
   command->add_option("--port", args->port, "Port of the page (0: any free port)")
       ->check(CLI::Range(0, 65535))
+      ->capture_default_str();
+  command->add_option("--fps", args->fps,
+                      "Live: frames a second each page gets and draws at most (fewer cost the machine less)")
+      ->check(CLI::Range(1, view::ViewSetup::kMaxFramesPerSecond))
       ->capture_default_str();
   command->add_option("--bind", args->bind,
                       "Address to listen on; 127.0.0.1 (the default) is this machine only,\n"

@@ -1,10 +1,14 @@
 #include "dream/session/render_overlays.h"
 
+#include <filesystem>
+#include <fstream>
 #include <memory>
 #include <vector>
 
 #include "dream/agent_host/agent_parts_config.h"
 #include "dream/agent_host/controller_factory.h"
+#include "dream/agent_host/python_controller_spec.h"
+#include "dream/bridge/python_run_metrics.h"
 #include "dream/agent_host/snapshot_from_messages.h"
 #include "dream/agents/framework/world_snapshot.h"
 
@@ -86,6 +90,26 @@ void AddDeclaredGoals(const nlohmann::json& metrics, render::ArenaOverlays* over
     }
     overlays->goals_m.push_back(goals);
   }
+}
+
+bool AddDeclaredGoalsOfRun(const std::string& summary_path, render::ArenaOverlays* overlays) {
+  std::error_code error;
+  const std::uintmax_t size = std::filesystem::file_size(summary_path, error);
+  if (error || size > kMaxSummaryBytes) return false;
+  std::ifstream in(summary_path);
+  const nlohmann::json summary = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (!summary.is_object() || !summary.contains("metrics")) return false;
+  const size_t before = overlays->goals_m.size();
+  AddDeclaredGoals(summary["metrics"], overlays);
+  return overlays->goals_m.size() > before;
+}
+
+void AddPythonGoals(const run_config::RunConfig& config, const std::string& python_runtime_dir,
+                    render::ArenaOverlays* overlays) {
+  if (!overlays->goals_m.empty() || python_runtime_dir.empty() || !agent_host::IsPythonController(config)) return;
+  const nlohmann::json points = bridge::PythonRunMetrics::GoalPoints(
+      python_runtime_dir, agent_host::PythonControllerSpecJson(config), config.num_robots);
+  AddDeclaredGoals(nlohmann::json{{"goal_points", points}}, overlays);
 }
 
 }  // namespace dream::session

@@ -89,17 +89,27 @@ const DreamArena = (() => {
     });
   }
 
+  // Points closer than 2 pixels to the last one drawn add nothing to a
+  // trail but work: they are skipped (the trail's newest point is always drawn).
   function trails(ctx, T, paths) {
+    ctx.globalAlpha = 0.55;
+    ctx.lineWidth = 1.5;
     (paths || []).forEach((path, id) => {
       if (!path || path.length < 2) return;
       ctx.strokeStyle = colour(id);
-      ctx.globalAlpha = 0.55;
-      ctx.lineWidth = 1.5;
       ctx.beginPath();
-      path.forEach(([x, y], k) => (k === 0 ? ctx.moveTo(T.px(x), T.py(y)) : ctx.lineTo(T.px(x), T.py(y))));
+      let lx = T.px(path[0][0]), ly = T.py(path[0][1]);
+      ctx.moveTo(lx, ly);
+      for (let k = 1; k < path.length; k++) {
+        const x = T.px(path[k][0]), y = T.py(path[k][1]);
+        if (k < path.length - 1 && Math.abs(x - lx) < 2 && Math.abs(y - ly) < 2) continue;
+        ctx.lineTo(x, y);
+        lx = x;
+        ly = y;
+      }
       ctx.stroke();
-      ctx.globalAlpha = 1;
     });
+    ctx.globalAlpha = 1;
   }
 
   function sensors(ctx, T, setup, scene) {
@@ -157,18 +167,34 @@ const DreamArena = (() => {
         }
       }
     }
+    // Filled one by one (each its colour), outlined and headed in one path:
+    // one stroke for all robots instead of two each.
+    const shown = [];
+    for (let i = 0; i < scene.x.length; i++) {
+      if (!finite(scene.x[i], scene.y[i], scene.th[i])) continue;
+      shown.push(i);
+      ctx.beginPath();
+      ctx.arc(T.px(scene.x[i]), T.py(scene.y[i]), radius, 0, 2 * Math.PI);
+      ctx.fillStyle = scene.lost && scene.lost.includes(i) ? "#bbb" : colour(i);
+      ctx.fill();
+    }
+    ctx.beginPath();
+    for (const i of shown) {
+      const x = T.px(scene.x[i]), y = T.py(scene.y[i]);
+      ctx.moveTo(x + radius, y);
+      ctx.arc(x, y, radius, 0, 2 * Math.PI);
+      ctx.moveTo(x, y);
+      ctx.lineTo(x + Math.cos(scene.th[i]) * radius, y - Math.sin(scene.th[i]) * radius);
+    }
+    ctx.strokeStyle = "#222";
+    ctx.lineWidth = 1.5;
+    ctx.stroke();
+    if (!layers.ids) return;
     ctx.font = `${Math.max(10, Math.round(radius))}px system-ui, sans-serif`;
     ctx.textAlign = "center";
     ctx.textBaseline = "middle";
-    for (let i = 0; i < scene.x.length; i++) {
-      if (!finite(scene.x[i], scene.y[i], scene.th[i])) continue;
-      const lost = scene.lost && scene.lost.includes(i);
-      disc(ctx, T, scene.x[i], scene.y[i], scene.th[i], radius, lost ? "#bbb" : colour(i), "#222", false);
-      if (layers.ids) {
-        ctx.fillStyle = "#111";
-        ctx.fillText(String(i), T.px(scene.x[i]), T.py(scene.y[i]) - radius - 8);
-      }
-    }
+    ctx.fillStyle = "#111";
+    for (const i of shown) ctx.fillText(String(i), T.px(scene.x[i]), T.py(scene.y[i]) - radius - 8);
   }
 
   // A rule broken over many steps (robots pushing each other) gives a mark
@@ -230,8 +256,10 @@ const DreamArena = (() => {
 
   // scene: {x, y, th, mx?, my?, mth?, obstacles, links, marks, lost}; paths: per robot [[x, y], ...].
   function draw(canvas, setup, scene, layers, paths) {
-    const ctx = canvas.getContext("2d");
-    ctx.clearRect(0, 0, canvas.width, canvas.height);
+    // Opaque: the browser composites it without blending it over the page.
+    const ctx = canvas.getContext("2d", { alpha: false });
+    ctx.fillStyle = "#fff";
+    ctx.fillRect(0, 0, canvas.width, canvas.height);
     if (!setup || !setup.arena) return;
     const T = transform(canvas, setup, scene);
     background(ctx, T, setup);

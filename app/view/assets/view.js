@@ -11,9 +11,10 @@
   const FLASH_SIM_S = 2;      // and this long in simulated time (replay)
   const LINK_MS = 1000;       // a radio link stays drawn this long after its message
   const STATE_NAMES = ["waiting for agents", "running", "finished", "aborted"];
+  const PANEL_MS = 250;       // the side panel's text changes at most this often (each change is layout work)
 
   const view = {
-    setup: null, scene: null, paths: [], run: null, replay: null, frames: 0,
+    setup: null, scene: null, paths: [], run: null, replay: null, frames: 0, drawn: 0,
     marks: new Map(), links: new Map(), steps: [], counts: null,
     state: { mode: null, connected: false, step: -1, robots: [], violations: [], verdict: "unknown" },
   };
@@ -45,11 +46,22 @@
     return [...view.marks.values()].map((m) => ({ ...m, flash: Math.max(0, 1 - (now - m.seen) / FLASH_MS) }));
   }
 
-  // Drawn when something changed, not on every display frame: a page left
-  // open beside a run should not take a core from it.
+  // Drawn when something changed, not on every display frame, and at most
+  // as often as the server sends frames (setup.fps): a page left open beside
+  // a run should not take a core from it.
   function draw() {
     view.dirty = false;
+    view.drawn += 1;
+    view.lastDraw = performance.now();
     DreamArena.draw(canvas, view.setup, view.scene, layers(), view.paths);
+  }
+
+  // One display frame is asked for only when there is something to draw:
+  // an idle page asks for none.
+  function schedule() {
+    if (view.frameAsked) return;
+    view.frameAsked = true;
+    requestAnimationFrame(loop);
   }
 
   function animating() {
@@ -57,7 +69,24 @@
     return !!(s && ((s.marks && s.marks.some((m) => m.flash > 0)) || (s.links && s.links.length > 0)));
   }
 
+  // The side panel and <body>'s data- attributes: at most every PANEL_MS,
+  // the latest values always shown in the end (a trailing update).
   function showPanel(step, t, counts, stateName) {
+    view.panel = [step, t, counts, stateName];
+    const wait = (view.panelShown || 0) + PANEL_MS - performance.now();
+    if (wait > 0) {
+      if (!view.panelTimer) view.panelTimer = setTimeout(() => { view.panelTimer = null; showPanel(...view.panel); }, wait);
+      return;
+    }
+    view.panelShown = performance.now();
+    writePanel(step, t, counts, stateName);
+    document.body.dataset.step = String(view.state.step);
+    document.body.dataset.robots = String(view.state.robots.length);
+    document.body.dataset.violations = String(view.state.violations.length);
+    document.body.dataset.verdict = view.state.verdict;
+  }
+
+  function writePanel(step, t, counts, stateName) {
     const dt = view.setup ? view.setup.time_step : 0.033;
     const rate = view.steps.length > 1 ? stepRate() : null;
     const show = (id, value) => {
@@ -75,9 +104,8 @@
     show("count-rejected", counts && counts.rejected);
     show("count-lost", counts && counts.lost ? (counts.lost.length ? counts.lost.join(", ") : "none") : null);
     const verdict = verdictOf(counts);
-    $("verdict").textContent = verdict.replace("_", " ");
-    $("verdict").className = `verdict ${verdict}`;
-    return verdict;
+    show("verdict", verdict.replace("_", " "));
+    if ($("verdict").className !== `verdict ${verdict}`) $("verdict").className = `verdict ${verdict}`;
   }
 
   function showViolationList(marks) {
@@ -105,10 +133,6 @@
       flashing: s && s.marks ? s.marks.filter((m) => m.flash > 0).length : 0,
       links: s && s.links ? s.links.length : 0, measured: !!(s && s.mx), ...extra,
     };
-    document.body.dataset.step = String(view.state.step);
-    document.body.dataset.robots = String(robots.length);
-    document.body.dataset.violations = String(marks.length);
-    document.body.dataset.verdict = view.state.verdict;
   }
 
   function stepRate() {
@@ -148,7 +172,6 @@
     for (const [s, r] of f.links) view.links.set(`${s}/${r}`, { s, r, seen: now });
     view.live = f;
     view.counts = f.status ? { ...f.status } : null;
-    liveScene(now);
   }
 
   function liveScene(now) {
@@ -165,8 +188,8 @@
       links, marks: sceneMarks(now), lost: f.status ? f.status.lost : [],
     };
     const stateName = f.status ? STATE_NAMES[f.status.state] || String(f.status.state) : "-";
-    showPanel(f.step, f.t, view.counts, stateName);
     publishState({ state: stateName, detail: f.status ? f.status.detail : "" });
+    showPanel(f.step, f.t, view.counts, stateName);
   }
 
   // ---- replay: the whole run, on this page's timeline ----
@@ -223,10 +246,11 @@
     view.scene = { step, t, ...at, mx: measured && measured.x, my: measured && measured.y, mth: measured && measured.th,
       obstacles: o >= 0 ? run.obstacles[o][1] : [], links, marks, lost: view.counts.lost || [] };
     const stateName = atEnd && run.final ? STATE_NAMES[run.final.state] || "-" : "replaying";
-    showPanel(step, t, view.counts, stateName);
     view.dirty = true;
+    schedule();
     publishState({ state: stateName,
       replay: { index: i, frames: run.steps.length, playing: view.replay.playing, speed: view.replay.speed } });
+    showPanel(step, t, view.counts, stateName);
   }
 
   function seek(i) {
@@ -282,6 +306,7 @@
   function onSetup(setup) {
     view.setup = setup;
     view.dirty = true;
+    schedule();
     $("source").textContent = `${setup.mode}: ${setup.source}`;
     $("run-name").textContent = setup.run_name || "-";
     if (setup.mode === "replay" && !view.replay) {
@@ -310,24 +335,35 @@
         onFrame(message);
         showViolationList([...view.marks.values()]);
         view.dirty = true;  // drawn on the next display frame: several frames in one are drawn once
+        schedule();
       }
     };
   }
 
+  // Live, a frame is drawn no sooner than 1/fps after the one before (the
+  // server's rate: more frames than it sends would only redraw the same);
+  // flashes fade and links age between frames too, at the same rate.
   function loop(now) {
-    const playing = view.replay && view.replay.playing;
+    view.frameAsked = false;
     advanceReplay(now);
-    if (view.live && !view.replay && (view.dirty || animating())) {
-      liveScene(now);  // flashes fade and links age between frames too
-      view.dirty = true;
+    const live = view.live && !view.replay;
+    const wanted = view.dirty || (live && animating());
+    if (!wanted) {
+      if (view.replay && view.replay.playing) schedule();
+      return;
     }
-    if (view.dirty || playing) draw();
-    requestAnimationFrame(loop);
+    const wait = (view.lastDraw || 0) + 1000 / ((view.setup && view.setup.fps) || 30) - 2 - now;
+    if (live && wait > 0) {
+      if (!view.drawTimer) view.drawTimer = setTimeout(() => { view.drawTimer = null; schedule(); }, wait);
+      return;
+    }
+    if (live) liveScene(now);
+    draw();
+    if ((view.replay && view.replay.playing) || (live && animating())) schedule();
   }
 
   for (const box of document.querySelectorAll("#layers input")) box.onchange = draw;
   window.addEventListener("resize", () => { resize(); draw(); });
   resize();
   connect();
-  requestAnimationFrame(loop);
 })();

@@ -163,17 +163,7 @@ bool BusFrameCollector::TakeFrame(ViewFrame* frame, uint64_t* version) {
   for (const rectangle_obstacle_t& o : obstacles_.obstacles) {
     frame->obstacles.push_back({o.id, o.center_x, o.center_y, o.width, o.height, o.vx, o.vy});
   }
-  ViewFrame::Status& status = frame->status;
-  status.seen = status_seen_;
-  status.state = status_.state;
-  status.boundary_errors = status_.boundary_errors;
-  status.collision_errors = status_.collision_errors;
-  status.actuator_errors = status_.actuator_errors;
-  status.obstacle_collisions = status_.obstacle_collisions;
-  status.rejected_commands = status_.rejected_commands;
-  status.command_conflicts = status_.command_conflicts;
-  status.lost_robot_ids = status_.lost_robot_ids;
-  status.detail = status_.detail.substr(0, ViewFrame::kMaxDetailChars);
+  frame->status = status_seen_ ? ViewFrame::Status::Of(status_) : ViewFrame::Status{};
   frame->radio_senders.swap(radio_senders_);
   radio_senders_.clear();
   frame->radio_links.clear();

@@ -18,8 +18,25 @@ void NumberArray(JsonWriter& json, std::string_view key, const std::vector<doubl
   json.EndArray();
 }
 
-void StatusObject(JsonWriter& json, const ViewFrame::Status& status) {
-  json.Key("status");
+}  // namespace
+
+ViewFrame::Status ViewFrame::Status::Of(const run_status_t& message) {
+  Status status;
+  status.seen = true;
+  status.state = message.state;
+  status.boundary_errors = message.boundary_errors;
+  status.collision_errors = message.collision_errors;
+  status.actuator_errors = message.actuator_errors;
+  status.obstacle_collisions = message.obstacle_collisions;
+  status.rejected_commands = message.rejected_commands;
+  status.command_conflicts = message.command_conflicts;
+  status.lost_robot_ids = message.lost_robot_ids;
+  status.detail = message.detail.substr(0, kMaxDetailChars);
+  return status;
+}
+
+void WriteStatusJson(JsonWriter& json, std::string_view key, const ViewFrame::Status& status) {
+  json.Key(key);
   if (!status.seen) {
     json.Null();
     return;
@@ -38,8 +55,6 @@ void StatusObject(JsonWriter& json, const ViewFrame::Status& status) {
   json.Key("detail").String(status.detail);
   json.EndObject();
 }
-
-}  // namespace
 
 void AppendViolation(JsonWriter& json, const ViolationMark& mark) {
   json.BeginObject();
@@ -77,7 +92,7 @@ std::string FrameJson(const ViewFrame& frame) {
     json.EndArray();
   }
   json.EndArray();
-  StatusObject(json, frame.status);
+  WriteStatusJson(json, "status", frame.status);
   json.Key("radio").BeginArray();
   for (const int id : frame.radio_senders) json.Integer(id);
   json.EndArray();
@@ -102,6 +117,7 @@ void AppendSetupFields(JsonWriter& json, const ViewSetup& setup) {
   json.Key("robot_diameter").Number(robotarium::RobotariumConstants::kRobotDiameterMeters, kMetres);
   json.Key("collision_diameter").Number(setup.world.collision_diameter_m, kMetres);
   json.Key("time_step").Number(setup.world.time_step_s, 6);
+  json.Key("fps").Integer(setup.frames_per_second);
   json.Key("goals").BeginArray();
   for (const auto& goals : setup.overlays.goals_m) {
     json.BeginArray();

@@ -1,5 +1,6 @@
 #include "dream/view/live_view.h"
 
+#include <algorithm>
 #include <exception>
 #include <vector>
 #include <utility>
@@ -10,9 +11,11 @@
 
 namespace dream::view {
 
-LiveView::LiveView(lcm::LcmInterface& bus, ViewServer& server, ViewSetup setup,
-                   std::chrono::milliseconds frame_period)
-    : server_(server), setup_(std::move(setup)), collector_(bus, setup_.world), frame_period_(frame_period) {
+LiveView::LiveView(lcm::LcmInterface& bus, ViewServer& server, ViewSetup setup)
+    : server_(server),
+      setup_(std::move(setup)),
+      collector_(bus, setup_.world),
+      frame_period_(1'000'000 / std::clamp(setup_.frames_per_second, 1, ViewSetup::kMaxFramesPerSecond)) {
   server_.SetSetup(SetupJson(setup_));
   pump_ = std::thread([this] {
     LowerThisThreadsPriority();

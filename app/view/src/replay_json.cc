@@ -157,28 +157,6 @@ void RadioTraffic(JsonWriter& json, const run_log::RunLog& log, const ViewSetup&
   json.Key("radio_cut").Bool(cut);
 }
 
-void FinalStatus(JsonWriter& json, const run_log::RunLog& log) {
-  json.Key("final");
-  if (!log.last_status()) {
-    json.Null();
-    return;
-  }
-  const run_status_t& status = *log.last_status();
-  json.BeginObject();
-  json.Key("state").Integer(status.state);
-  json.Key("boundary").Integer(status.boundary_errors);
-  json.Key("collision").Integer(status.collision_errors);
-  json.Key("actuator").Integer(status.actuator_errors);
-  json.Key("obstacle").Integer(status.obstacle_collisions);
-  json.Key("rejected").Integer(status.rejected_commands);
-  json.Key("conflicts").Integer(status.command_conflicts);
-  json.Key("lost").BeginArray();
-  for (const int id : status.lost_robot_ids) json.Integer(id);
-  json.EndArray();
-  json.Key("detail").String(status.detail.substr(0, ViewFrame::kMaxDetailChars));
-  json.EndObject();
-}
-
 }  // namespace
 
 std::string RunReplayJson(const run_log::RunLog& log, const ViewSetup& setup, size_t max_pose_values) {
@@ -212,7 +190,8 @@ std::string RunReplayJson(const run_log::RunLog& log, const ViewSetup& setup, si
   json.Key("counts").BeginArray();
   for (const auto& at : judged.counts) json.BeginArray().Integer(at[0]).Integer(at[1]).Integer(at[2]).Integer(at[3]).EndArray();
   json.EndArray();
-  FinalStatus(json, log);
+  // The run's last status: what only it says (actuator warnings, rejected commands, lost robots).
+  WriteStatusJson(json, "final", log.last_status() ? ViewFrame::Status::Of(*log.last_status()) : ViewFrame::Status{});
   json.EndObject();
   return out;
 }

@@ -8,7 +8,7 @@
 
 #include "dream/robotarium/robotarium_constants.h"
 #include "dream/world/obstacle_state.h"
-#include "dream/world/violation_checker.h"
+#include "dream/world/step_violation_locator.h"
 
 namespace dream::render {
 
@@ -70,48 +70,30 @@ std::vector<std::array<double, 2>> MinimumDistanceSeries(const run_log::RunLog& 
   return series;
 }
 
-namespace {
-
-/// The poses of `poses` as the checker takes them; false when they are not
-/// `n` finite poses.
-bool PosesOf(const robot_poses_t& poses, int n, std::vector<world::Pose2>* at) {
-  const auto size = static_cast<size_t>(n);
-  if (poses.num_robots != n || poses.x.size() != size || poses.y.size() != size || poses.theta.size() != size) {
-    return false;
-  }
-  for (size_t i = 0; i < size; ++i) {
-    if (!std::isfinite(poses.x[i]) || !std::isfinite(poses.y[i]) || !std::isfinite(poses.theta[i])) return false;
-    (*at)[i] = {poses.x[i], poses.y[i], poses.theta[i]};
-  }
-  return true;
-}
-
-void ObstaclesOf(const obstacles_t& obstacles, std::vector<world::ObstacleState>* boxes) {
-  boxes->clear();
+void ObstacleStatesOf(const obstacles_t& obstacles, std::vector<world::ObstacleState>* states) {
+  states->clear();
   for (const rectangle_obstacle_t& o : obstacles.obstacles) {
-    if (!std::isfinite(o.center_x) || !std::isfinite(o.center_y) || !std::isfinite(o.width) || !std::isfinite(o.height)) {
-      continue;
-    }
-    boxes->push_back({o.id, o.center_x, o.center_y, o.width, o.height, o.vx, o.vy});
+    states->push_back({o.id, o.center_x, o.center_y, o.width, o.height, o.vx, o.vy});
   }
 }
-
-}  // namespace
 
 world::LocatedViolations LocateViolations(const run_log::RunLog& log, const world::WorldParams& world,
                                           size_t max_listed) {
   world::ViolationTracker tracker(max_listed);
   const int n = log.num_robots();
   if (n < 1 || log.poses().size() < 2) return tracker.located();
-  world::ViolationChecker checker(world, n);
-  std::vector<world::Pose2> at(static_cast<size_t>(n));
+  world::StepViolationLocator locator(world);
   std::vector<world::ObstacleState> boxes;
+  std::vector<world::LocatedViolation> placed;
   // The last poses are where the run ended: the world never validated them.
   for (size_t i = 0; i + 1 < log.poses().size(); ++i) {
-    if (!PosesOf(log.poses()[i], n, &at)) continue;
-    ObstaclesOf(log.obstacles_at(i), &boxes);
-    checker.Check(log.poses()[i].step, at, nullptr, boxes);
-    tracker.Add(checker.last_step_events(), at);
+    const robot_poses_t& poses = log.poses()[i];
+    if (poses.num_robots != n) continue;  // the log's robots, or none: ids must mean the same robots
+    ObstacleStatesOf(log.obstacles_at(i), &boxes);
+    placed.clear();
+    if (locator.Locate(poses.step, n, poses.x, poses.y, poses.theta, boxes, &placed)) {
+      tracker.AddPlaced(poses.step, placed);
+    }
   }
   return tracker.located();
 }

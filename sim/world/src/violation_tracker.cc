@@ -1,5 +1,7 @@
 #include "dream/world/violation_tracker.h"
 
+#include "dream/world/step_violation_locator.h"
+
 namespace dream::world {
 
 const char* LocatedViolationKindName(LocatedViolation::Kind kind) {
@@ -31,29 +33,17 @@ void ViolationTracker::Seen(const Key& key, int64_t step, double x_m, double y_m
 }
 
 void ViolationTracker::Add(const StepEvents& events, const std::vector<Pose2>& poses) {
-  const int n = static_cast<int>(poses.size());
-  auto known = [n](int robot) { return robot >= 0 && robot < n; };
-  for (const int robot : events.out_of_bounds_robot_ids) {
-    if (!known(robot)) continue;
-    const Pose2& at = poses[static_cast<size_t>(robot)];
-    Seen({LocatedViolation::Kind::kBoundary, robot, -1}, events.step, at.x_m, at.y_m);
-  }
-  for (const StepEvents::RobotPair& pair : events.colliding_pairs) {
-    if (!known(pair.first_robot_id) || !known(pair.second_robot_id)) continue;
-    const Pose2& a = poses[static_cast<size_t>(pair.first_robot_id)];
-    const Pose2& b = poses[static_cast<size_t>(pair.second_robot_id)];
-    Seen({LocatedViolation::Kind::kCollision, pair.first_robot_id, pair.second_robot_id}, events.step,
-         (a.x_m + b.x_m) / 2, (a.y_m + b.y_m) / 2);
-  }
-  for (const StepEvents::RobotObstacleContact& contact : events.obstacle_contacts) {
-    if (!known(contact.robot_id)) continue;
-    const Pose2& at = poses[static_cast<size_t>(contact.robot_id)];
-    Seen({LocatedViolation::Kind::kObstacle, contact.robot_id, contact.obstacle_id}, events.step, at.x_m, at.y_m);
-  }
+  placed_.clear();
+  PlaceViolations(events, poses, &placed_);
+  AddPlaced(events.step, placed_);
+}
+
+void ViolationTracker::AddPlaced(int64_t step, const std::vector<LocatedViolation>& placed) {
+  for (const LocatedViolation& v : placed) Seen({v.kind, v.robot, v.other}, step, v.x_m, v.y_m);
   // Violations not seen at this step have ended: forget them, so the map
   // holds only what goes on now.
   for (auto it = open_.begin(); it != open_.end();) {
-    it = it->second.last_step == events.step ? std::next(it) : open_.erase(it);
+    it = it->second.last_step == step ? std::next(it) : open_.erase(it);
   }
 }
 

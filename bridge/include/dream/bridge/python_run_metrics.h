@@ -25,6 +25,15 @@ class PythonRunMetrics {
   ///         exception with file and line, a bad return value, a timeout).
   static nlohmann::json Compute(const std::string& runtime_dir, const std::string& spec_json,
                                 const run_log::RunLog& log);
+
+  /// The most seconds goal_points() may take, before a run (the view draws them).
+  static constexpr double kGoalPointsTimeoutS = 30.0;
+
+  /// Only the goal points the class declares, from its config before any
+  /// run (`run_metrics.py --goal-points`): [[[x, y], ...] per robot], empty
+  /// when it declares none. The view draws them.
+  /// @throws std::runtime_error as Compute() does.
+  static nlohmann::json GoalPoints(const std::string& runtime_dir, const std::string& spec_json, int num_robots);
 };
 
 }  // namespace dream::bridge

@@ -2,6 +2,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
+#include <string>
+
 #include "dream/agent_host/controller_factory.h"
 #include "dream/run_config/run_config.h"
 #include "dream/render/arena_overlays.h"
@@ -25,5 +28,22 @@ render::ArenaOverlays ArenaOverlaysFromConfig(const run_config::RunConfig& confi
 /// Python controller's goal_points(), per robot [[x, y], ...]) when the kind
 /// drew none; malformed entries are skipped.
 void AddDeclaredGoals(const nlohmann::json& metrics, render::ArenaOverlays* overlays);
+
+/// summary.json files larger than this are not read for their goals.
+inline constexpr std::uintmax_t kMaxSummaryBytes = 64ull << 20;
+
+/// The goals a finished run's summary.json (at `summary_path`) declares, by
+/// AddDeclaredGoals; false when the file is missing, too large, malformed or
+/// declares none (goals are a drawing's nicety: nothing to fail for).
+bool AddDeclaredGoalsOfRun(const std::string& summary_path, render::ArenaOverlays* overlays);
+
+/// A Python controller's goals before its run: its class's
+/// goal_points(config, num_robots), through the short-lived python3 its
+/// metrics use (bridge::PythonRunMetrics::GoalPoints), when the kind drew
+/// none. Nothing for other kinds or without `python_runtime_dir`.
+/// @throws std::runtime_error naming the module and what failed (its
+///         exception with file and line, a bad return value, a timeout).
+void AddPythonGoals(const run_config::RunConfig& config, const std::string& python_runtime_dir,
+                    render::ArenaOverlays* overlays);
 
 }  // namespace dream::session

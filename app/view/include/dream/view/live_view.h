@@ -13,7 +13,7 @@
 namespace dream::view {
 
 /// A run on the bus, drawn live: a BusFrameCollector on `bus` and a pump
-/// thread that, at most `frame_period` apart, encodes the newest frame
+/// thread that, at most setup.frames_per_second times a second, encodes the newest frame
 /// (with who hears whom, when the setup knows) and broadcasts it. The bus
 /// is handled by its owner (dream view's loop, or the simulator's own loop
 /// in dream run --view): the view adds a handler, never a wait.
@@ -22,8 +22,7 @@ class LiveView {
   /// Subscribes on `bus` and starts the pump. `bus` and `server` must outlive
   /// it, and `bus` must not be handled once it is gone (LcmInterface has no
   /// unsubscribe: its handler stays registered).
-  LiveView(lcm::LcmInterface& bus, ViewServer& server, ViewSetup setup,
-           std::chrono::milliseconds frame_period = std::chrono::milliseconds(33));
+  LiveView(lcm::LcmInterface& bus, ViewServer& server, ViewSetup setup);
   /// Stops the pump (after one last frame, so the end of a run is shown).
   ~LiveView();
   LiveView(const LiveView&) = delete;
@@ -46,7 +45,7 @@ class LiveView {
   ViewServer& server_;
   ViewSetup setup_;
   BusFrameCollector collector_;
-  std::chrono::milliseconds frame_period_;
+  std::chrono::microseconds frame_period_;
   uint64_t version_ = 0;
   ViewFrame frame_;
   std::atomic<int64_t> frames_sent_{0};

@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "dream/run_status_t.hpp"
 #include "dream/view/violation_mark.h"
 
 namespace dream::view {
@@ -34,6 +35,9 @@ struct ViewFrame {
     int64_t command_conflicts = 0;
     std::vector<int> lost_robot_ids;
     std::string detail;  ///< cut to kMaxDetailChars
+
+    /// A DREAM_STATUS message as the page reads it (seen, the detail cut).
+    static Status Of(const run_status_t& message);
   };
   static constexpr size_t kMaxDetailChars = 300;
 

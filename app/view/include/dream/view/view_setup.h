@@ -19,6 +19,11 @@ struct ViewSetup {
   render::ArenaOverlays overlays;
   /// Where the frames come from, shown on the page (a URL or a run folder).
   std::string source;
+  /// Live: frames sent to the browsers a second at most (the page draws no
+  /// more often): `dream view --fps`, `dream run --view-fps`.
+  int frames_per_second = kDefaultFramesPerSecond;
+  static constexpr int kDefaultFramesPerSecond = 30;
+  static constexpr int kMaxFramesPerSecond = 60;  ///< a screen's refresh: more cannot be seen
 };
 
 }  // namespace dream::view

@@ -8,8 +8,11 @@ namespace dream::lcm {
 /// is refused before it is decoded, so no message can make a receiver
 /// allocate more than a few hundred kilobytes.
 struct MessageLimits {
-  /// Robots in a run: the Robotarium simulator's 50 (a test checks the config agrees).
-  static constexpr int32_t kRobots = 50;
+  /// Robots a message may carry: more than a DREAM run may have (the
+  /// Robotarium simulator's 50, which the config and the world enforce), so
+  /// a viewer (dream view) draws any DREAM-format stream of up to 128 robots;
+  /// a robot_poses_t of 128 robots is 5 KiB.
+  static constexpr int32_t kRobots = 128;
   /// Obstacles in a run (520 KB of DREAM_OBSTACLES at most).
   static constexpr int32_t kObstacles = 10000;
   /// Bytes of one radio payload; real ones are tens of bytes.

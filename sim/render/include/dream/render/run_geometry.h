@@ -6,6 +6,7 @@
 
 #include "dream/run_log/run_log.h"
 #include "dream/world/located_violation.h"
+#include "dream/world/obstacle_state.h"
 #include "dream/world/violation_tracker.h"
 #include "dream/world/world_params.h"
 
@@ -33,6 +34,10 @@ std::vector<std::vector<std::array<double, 2>>> MovingObstaclePaths(const run_lo
 /// {step, distance between the two closest robot centres, metres} per step
 /// with at least two robots.
 std::vector<std::array<double, 2>> MinimumDistanceSeries(const run_log::RunLog& log);
+
+/// `obstacles` as the world's checks take them (world::StepViolationLocator
+/// leaves out those with values that are not finite), into `states`.
+void ObstacleStatesOf(const obstacles_t& obstacles, std::vector<world::ObstacleState>* states);
 
 /// Where and when the run broke the Robotarium's rules, by the world's own
 /// checks (world::ViolationChecker) on the log's poses and obstacles of the

@@ -27,6 +27,9 @@ class ViolationTracker {
   /// events' robot ids index). Steps must come in increasing order; an event
   /// naming a robot outside `poses` is ignored (it cannot be placed).
   void Add(const StepEvents& events, const std::vector<Pose2>& poses);
+  /// Adds the violations of step `step` already placed (PlaceViolations,
+  /// StepViolationLocator); a step with none still ends those going on.
+  void AddPlaced(int64_t step, const std::vector<LocatedViolation>& placed);
 
   const LocatedViolations& located() const { return located_; }
 
@@ -44,6 +47,7 @@ class ViolationTracker {
   size_t max_listed_;
   LocatedViolations located_;
   std::map<Key, Open> open_;  // bounded by the violations of one step
+  std::vector<LocatedViolation> placed_;  // one step's, reused
 };
 
 }  // namespace dream::world
