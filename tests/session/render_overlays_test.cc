@@ -53,6 +53,20 @@ TEST_F(RenderOverlaysTest, DeclaredGoalsAreReadPerRobotAndMalformedPointsSkipped
   EXPECT_TRUE(overlays.goals_m[2].empty());
 }
 
+// summary.json is a file anyone may have edited: what it declares is bounded
+// by what a run can have, not by the file.
+TEST_F(RenderOverlaysTest, DeclaredGoalsStopAtTheRobotsARunCanHaveAndThePointsARobotMayDeclare) {
+  nlohmann::json robots = nlohmann::json::array();
+  for (size_t robot = 0; robot < kMaxGoalRobots + 5; ++robot) robots.push_back({{0.1, 0.2}});
+  robots[0] = nlohmann::json::array();
+  for (size_t point = 0; point < kMaxGoalPointsPerRobot + 7; ++point) robots[0].push_back({0.0, 0.0});
+  render::ArenaOverlays overlays;
+  AddDeclaredGoals(nlohmann::json{{"goal_points", robots}}, &overlays);
+  ASSERT_EQ(overlays.goals_m.size(), kMaxGoalRobots);
+  EXPECT_EQ(overlays.goals_m[0].size(), kMaxGoalPointsPerRobot);
+  EXPECT_EQ(overlays.goals_m[1].size(), 1u);
+}
+
 TEST_F(RenderOverlaysTest, ASummaryJsonGivesItsGoalsAndAMissingOrMalformedOneNone) {
   render::ArenaOverlays overlays;
   EXPECT_FALSE(AddDeclaredGoalsOfRun((dir_ / "none.json").string(), &overlays));

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -14,6 +13,7 @@
 
 #include "command_line.h"
 #include "commands.h"
+#include "dream/files/file_text.h"
 #include "dream/run_config/run_config.h"
 #include "dream/render/ffmpeg_encoder.h"
 #include "dream/render/metric_plot.h"
@@ -127,8 +127,13 @@ render::ArenaOverlays Overlays(const RenderArgs& args, const fs::path& log, int 
 void RunLabelFromSummary(const fs::path& log, render::ArenaOverlays* overlays) {
   const fs::path summary_path = log.parent_path() / "summary.json";
   if (!fs::is_regular_file(summary_path)) return;
-  std::ifstream in(summary_path);
-  const nlohmann::json summary = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  nlohmann::json summary;
+  try {
+    summary = nlohmann::json::parse(files::ReadFileText(summary_path.string()), nullptr, /*allow_exceptions=*/false);
+  } catch (const std::exception& e) {
+    spdlog::warn("{} (the picture goes without the run's name and verdict)", e.what());
+    return;
+  }
   if (summary.is_discarded() || !summary.is_object()) return;  // a label is a nicety, not worth failing for
   if (summary.contains("run") && summary["run"].is_string()) overlays->run_name = summary["run"].get<std::string>();
   if (summary.contains("verdict") && summary["verdict"].is_string()) {
@@ -145,8 +150,8 @@ std::vector<render::MetricSeries> MetricSeriesOf(const fs::path& log, const run_
   const fs::path summary_path = log.parent_path() / "summary.json";
   *title = log.string();
   if (fs::is_regular_file(summary_path)) {
-    std::ifstream in(summary_path);
-    const nlohmann::json summary = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+    const nlohmann::json summary =
+        nlohmann::json::parse(files::ReadFileText(summary_path.string()), nullptr, /*allow_exceptions=*/false);
     if (summary.is_discarded()) throw std::runtime_error(summary_path.string() + ": not valid JSON");
     if (summary.contains("run") && summary["run"].is_string()) *title = summary["run"].get<std::string>();
     if (summary.contains("metrics") && summary["metrics"].is_object()) {

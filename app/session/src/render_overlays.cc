@@ -80,9 +80,11 @@ void AddDeclaredGoals(const nlohmann::json& metrics, render::ArenaOverlays* over
   const nlohmann::json& robots = metrics["goal_points"];
   if (!robots.is_array()) return;
   for (const nlohmann::json& points : robots) {
+    if (overlays->goals_m.size() >= kMaxGoalRobots) break;
     Points goals;
     if (points.is_array()) {
       for (const nlohmann::json& point : points) {
+        if (goals.size() >= kMaxGoalPointsPerRobot) break;
         if (point.is_array() && point.size() == 2 && point[0].is_number() && point[1].is_number()) {
           goals.push_back({point[0].get<double>(), point[1].get<double>()});
         }

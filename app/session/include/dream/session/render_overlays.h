@@ -26,11 +26,17 @@ render::ArenaOverlays ArenaOverlaysFromConfig(const run_config::RunConfig& confi
 
 /// The goals a run's metrics declare (summary.json metrics.goal_points: a
 /// Python controller's goal_points(), per robot [[x, y], ...]) when the kind
-/// drew none; malformed entries are skipped.
+/// drew none; malformed entries are skipped, and what lies beyond
+/// kMaxGoalRobots robots or kMaxGoalPointsPerRobot points of one robot (more
+/// than any run has: a summary.json is a file anyone may have edited).
 void AddDeclaredGoals(const nlohmann::json& metrics, render::ArenaOverlays* overlays);
 
 /// summary.json files larger than this are not read for their goals.
 inline constexpr std::uintmax_t kMaxSummaryBytes = 64ull << 20;
+/// Robots a run may have on the bus (lcm::MessageLimits::kRobots).
+inline constexpr size_t kMaxGoalRobots = 128;
+/// As python/dream/run_metrics.py bounds a goal_points() list.
+inline constexpr size_t kMaxGoalPointsPerRobot = 1000;
 
 /// The goals a finished run's summary.json (at `summary_path`) declares, by
 /// AddDeclaredGoals; false when the file is missing, too large, malformed or
