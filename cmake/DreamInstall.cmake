@@ -33,7 +33,7 @@ function(dream_library_targets dir out)
 endfunction()
 
 # What a controller builds against, as dream::<name>.
-set(DREAM_EXPORTED_LIBRARIES robotarium world config run_config msgs lcm run_log agents agent_host)
+set(DREAM_EXPORTED_LIBRARIES robotarium world config run_config msgs lcm run_log agents kind_api agent_host)
 set(exported_targets)
 foreach(name IN LISTS DREAM_EXPORTED_LIBRARIES)
   set_target_properties(dream_${name} PROPERTIES EXPORT_NAME ${name})
@@ -65,6 +65,7 @@ install(DIRECTORY
     ${PROJECT_SOURCE_DIR}/sim/world/include/
     ${PROJECT_SOURCE_DIR}/sim/run_config/include/
     ${PROJECT_SOURCE_DIR}/agents/include/
+    ${PROJECT_SOURCE_DIR}/agents/kind_api/include/
     ${PROJECT_SOURCE_DIR}/agents/agent_host/include/
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
   FILES_MATCHING PATTERN "*.h")

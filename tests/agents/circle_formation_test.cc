@@ -321,13 +321,13 @@ std::string FactoryError(const std::string& yaml, int robots) {
 
 TEST(HrvoCircleConfigTest, DefaultsFollowAppendixBAndBadKeysAreClearErrors) {
   EXPECT_EQ(FactoryError("controller: {kind: hrvo_circle}\n", 10), "");
-  const agent_host::AgentPartsConfig parts = agent_host::HrvoCircleBuilder::DefaultParts(3);
+  const kind_api::AgentPartsConfig parts = agent_host::HrvoCircleBuilder::DefaultParts(3);
   EXPECT_EQ(parts.robot_period_steps, (std::vector<int>{4, 5, 4}));
   EXPECT_EQ(parts.start_delay_steps, (std::vector<int>{20, 21, 22}));
   ASSERT_EQ(parts.sensors.size(), 2u);
   EXPECT_EQ(parts.sensors[0].period_steps, (std::vector<int>{2, 3, 2}));
   EXPECT_EQ(parts.sensors[1].period_steps, (std::vector<int>{3, 4, 3}));
-  EXPECT_EQ(parts.radio.kind, agent_host::RadioConfig::Kind::kRange);
+  EXPECT_EQ(parts.radio.kind, kind_api::RadioConfig::Kind::kRange);
   EXPECT_EQ(parts.radio.period_steps, (std::vector<int>{30, 30, 30}));
   std::string error = FactoryError("controller: {kind: hrvo_circle, radius_m: 1.2}\n", 10);
   EXPECT_NE(error.find("leaves the arena"), std::string::npos) << error;

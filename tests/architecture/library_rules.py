@@ -16,6 +16,11 @@ document and the code cannot drift apart:
 - a row's folder lies on its floor (the folder's first part), and a row may use only
   libraries of its own floor or of floors below it (the doc's "Floors, bottom up:" line).
 
+A row whose folder is `<parent>/<kind>/` stands for one library per folder of `<parent>/` that
+has a CMakeLists.txt (the built-in experiment kinds, `agents/kinds/<kind>/`): each is checked
+as a row of its own with `<kind>` replaced by the folder's name, and `<kind>` in another row's
+"may use" names every one of them.
+
 Before the sources, the checker must flag a synthetic row that breaks each rule, so a checker
 that accepts everything fails here.
 
@@ -53,12 +58,36 @@ class Row:
         self.namespace, self.targets, self.may_use = namespace, targets, may_use
 
 
-def read_table(doc_path):
+PLACEHOLDER = "<kind>"
+
+
+def expand_templates(lines, subfolders):
+    """The table's lines with each template row (folder `<parent>/<kind>/`) made one row per
+    folder `subfolders(parent)` names, and `<kind>` in other rows standing for all of them."""
+    names = []
+    for line in lines:
+        folder = re.match(r"^\|[^|]*\|\s*`([^`]*)`", line)
+        if line.startswith("|") and folder and PLACEHOLDER in folder.group(1):
+            names += subfolders(folder.group(1).split(PLACEHOLDER)[0].strip("/"))
+    out = []
+    for line in lines:
+        folder = re.match(r"^\|[^|]*\|\s*`([^`]*)`", line)
+        if line.startswith("|") and folder and PLACEHOLDER in folder.group(1):
+            out += [line.replace(PLACEHOLDER, name) for name in subfolders(folder.group(1).split(PLACEHOLDER)[0].strip("/"))]
+        elif line.startswith("|"):
+            out.append(line.replace(f"`{PLACEHOLDER}`", ", ".join(f"`{name}`" for name in names) or "none"))
+        else:
+            out.append(line)
+    return out
+
+
+def read_table(doc_path, subfolders=lambda parent: []):
     """The floors, bottom up, and the rows of the library table: {folder: Row}; a row without
-    public headers (the command line, lcm-gen's types) only names its library's floor."""
+    public headers (the command line, lcm-gen's types) only names its library's floor.
+    `subfolders(parent)`: the library folders a template row's `<parent>/<kind>/` stands for."""
     rows, floor_of = {}, {}
     with open(doc_path, encoding="utf-8") as doc:
-        lines = doc.read().splitlines()
+        lines = expand_templates(doc.read().splitlines(), subfolders)
     floors = next((re.findall(r"`([a-z_]+)`", m.group(1)) for m in map(FLOORS_LINE.match, lines) if m), None)
     if not floors:
         raise SystemExit(f"FAIL: {doc_path}: no line 'Floors, bottom up: `a`, `b`, ....'")
@@ -191,6 +220,13 @@ def self_test():
     for prefix in expected:
         if not any(line.startswith(prefix) for line in found):
             raise SystemExit(f"FAIL: self test: {prefix} breaks a rule but was not flagged ({found})")
+    table = ["| low | `low/k/<kind>/` | `dream::<kind>` | `dream/<kind>/` | `dream::<kind>` | `b` | |",
+             "| high | `high/h/` | `dream::h` | `dream/h/` | `dream::h` | `<kind>`, `a` | |"]
+    expanded = expand_templates(table, lambda parent: ["p", "q"] if parent == "low/k" else [])
+    if expanded != ["| low | `low/k/p/` | `dream::p` | `dream/p/` | `dream::p` | `b` | |",
+                    "| low | `low/k/q/` | `dream::q` | `dream/q/` | `dream::q` | `b` | |",
+                    "| high | `high/h/` | `dream::h` | `dream/h/` | `dream::h` | `p`, `q`, `a` | |"]:
+        raise SystemExit(f"FAIL: self test: the template row `low/k/<kind>/` was not expanded per folder ({expanded})")
     if any(line.startswith(("low/a/", "low/b/src/f.cc", "docs/architecture.md: low/a/", "docs/architecture.md: low/b/"))
            for line in found):
         raise SystemExit(f"FAIL: self test: low/a and low/b keep the rules but were flagged ({found})")
@@ -201,7 +237,12 @@ def main():
     parser.add_argument("--source", required=True, help="the repository's root")
     args = parser.parse_args()
     self_test()
-    floors, floor_of, rows = read_table(os.path.join(args.source, "docs", "architecture.md"))
+    def subfolders(parent):
+        folder = os.path.join(args.source, parent)
+        return sorted(name for name in (os.listdir(folder) if os.path.isdir(folder) else [])
+                      if os.path.isfile(os.path.join(folder, name, "CMakeLists.txt")))
+
+    floors, floor_of, rows = read_table(os.path.join(args.source, "docs", "architecture.md"), subfolders)
 
     def read(path):
         full = os.path.join(args.source, path)

@@ -1,10 +1,10 @@
 #include "dream/agent_host/affine_formation_builder.h"
-#include "dream/agent_host/field_reader.h"
+#include "dream/kind_api/field_reader.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "dream/agent_host/hrvo_config.h"
+#include "dream/kind_api/hrvo_config.h"
 #include "dream/agents/experiments/affine_maneuver.h"
 #include "dream/agents/framework/number_text.h"
 
@@ -99,17 +99,17 @@ void CheckPlan(const ConfigNode& node, const agents::AffineManeuverParams& param
 
 }  // namespace
 
-AgentPartsConfig AffineFormationBuilder::DefaultParts(int num_robots) {
-  AgentPartsConfig parts = AgentPartsConfig::Defaults(num_robots);
-  parts.sensors = {SensorConfig::Every(SensorConfig::Kind::kOdometry, num_robots, 1),
-                   SensorConfig::Every(SensorConfig::Kind::kMovement, num_robots, 1)};
-  parts.radio = RadioConfig::Every(RadioConfig::Kind::kRole, num_robots, 1);
+kind_api::AgentPartsConfig AffineFormationBuilder::DefaultParts(int num_robots) {
+  kind_api::AgentPartsConfig parts = kind_api::AgentPartsConfig::Defaults(num_robots);
+  parts.sensors = {kind_api::SensorConfig::Every(kind_api::SensorConfig::Kind::kOdometry, num_robots, 1),
+                   kind_api::SensorConfig::Every(kind_api::SensorConfig::Kind::kMovement, num_robots, 1)};
+  parts.radio = kind_api::RadioConfig::Every(kind_api::RadioConfig::Kind::kRole, num_robots, 1);
   return parts;
 }
 
 AffineFormationBuilder::AffineFormationBuilder(const ConfigNode& section, int num_robots) {
   Section fields;
-  ReadFields(section, num_robots, &fields);
+  kind_api::ReadFields(section, num_robots, &fields);
   ReadFormation(section, fields, num_robots);
   hrvo_ = fields.hrvo;
   std::string error;
@@ -134,8 +134,8 @@ void AffineFormationBuilder::ReadFormation(const ConfigNode& section, const Sect
   // The stress weights and the leaders are the role radio's graph and leaders:
   // one matrix says both who hears whom and how much each neighbour counts.
   const ConfigNode radio = section.Required("radio");
-  const AgentPartsConfig parts = AgentPartsConfig::Read(section, num_robots, DefaultParts(num_robots), kGraphMustConnect);
-  if (parts.radio.kind != RadioConfig::Kind::kRole) {
+  const kind_api::AgentPartsConfig parts = kind_api::AgentPartsConfig::Read(section, num_robots, DefaultParts(num_robots), kGraphMustConnect);
+  if (parts.radio.kind != kind_api::RadioConfig::Kind::kRole) {
     radio.Required("kind").Fail(
         "an affine formation needs `kind: role` (leaders publish, followers hear their "
         "neighbours in `graph`, the stress weights)");

@@ -19,12 +19,12 @@ constexpr const char* kBuiltIn = "built in";
 std::string Described(const std::string& origin) { return origin.empty() ? std::string("unnamed") : origin; }
 
 void AddBuiltIns(ControllerRegistry& registry) {
-  registry.Add(ControllerKind::Of<GoToGoalBuilder>(), kBuiltIn);
-  registry.Add(ControllerKind::Of<AffineFormationBuilder>(), kBuiltIn);
-  registry.Add(ControllerKind::Of<VoronoiCoverageBuilder>(), kBuiltIn);
-  registry.Add(ControllerKind::Of<HrvoCircleBuilder>(), kBuiltIn);
-  registry.Add(ControllerKind::Of<LineDeploymentBuilder>(), kBuiltIn);
-  registry.Add(ControllerKind::Of<CalibrationDriveBuilder>(), kBuiltIn);
+  registry.Add(kind_api::ControllerKind::Of<GoToGoalBuilder>(), kBuiltIn);
+  registry.Add(kind_api::ControllerKind::Of<AffineFormationBuilder>(), kBuiltIn);
+  registry.Add(kind_api::ControllerKind::Of<VoronoiCoverageBuilder>(), kBuiltIn);
+  registry.Add(kind_api::ControllerKind::Of<HrvoCircleBuilder>(), kBuiltIn);
+  registry.Add(kind_api::ControllerKind::Of<LineDeploymentBuilder>(), kBuiltIn);
+  registry.Add(kind_api::ControllerKind::Of<CalibrationDriveBuilder>(), kBuiltIn);
   registry.Add(PythonControllerBuilder::Kind(), kBuiltIn);
 }
 
@@ -46,7 +46,7 @@ std::shared_ptr<const ControllerRegistry> ControllerRegistry::ForConfig(const co
   return registry;
 }
 
-void ControllerRegistry::Add(ControllerKind kind, const std::string& origin) {
+void ControllerRegistry::Add(kind_api::ControllerKind kind, const std::string& origin) {
   if (kind.name.empty()) throw std::invalid_argument("a controller kind needs a name");
   if (!kind.make_builder) throw std::invalid_argument("controller kind '" + kind.name + "' has no make_builder");
   if (!kind.default_parts) throw std::invalid_argument("controller kind '" + kind.name + "' has no default_parts");
@@ -70,7 +70,7 @@ void ControllerRegistry::AddAll(const ControllerRegistry& other, const std::stri
   for (const Entry& entry : other.entries_) entries_.push_back({entry.kind, origin});
 }
 
-const ControllerKind* ControllerRegistry::Find(const std::string& name) const {
+const kind_api::ControllerKind* ControllerRegistry::Find(const std::string& name) const {
   const std::lock_guard<std::mutex> lock(mutex_);
   const Entry* entry = FindLocked(name);
   return entry == nullptr ? nullptr : &entry->kind;

@@ -1,5 +1,5 @@
 #include "dream/agent_host/go_to_goal_builder.h"
-#include "dream/agent_host/field_reader.h"
+#include "dream/kind_api/field_reader.h"
 
 #include <algorithm>
 #include <cmath>
@@ -58,7 +58,7 @@ class GoToGoalMetrics final : public agents::ExperimentMetrics {
 
 GoToGoalBuilder::GoToGoalBuilder(const config::ConfigNode& section, int num_robots) {
   Section fields;
-  ReadFields(section, num_robots, &fields);
+  kind_api::ReadFields(section, num_robots, &fields);
   for (const Eigen::Vector2d& goal : fields.goals) {
     agents::GoToGoalParams params = fields.robot;
     params.goal_m = goal;

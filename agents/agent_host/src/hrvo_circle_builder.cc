@@ -3,22 +3,22 @@
 #include <cmath>
 
 #include "dream/agents/experiments/formation_sequence_metrics.h"
-#include "dream/agent_host/field_reader.h"
+#include "dream/kind_api/field_reader.h"
 #include "dream/agents/framework/number_text.h"
 #include "dream/robotarium/robotarium_constants.h"
 
 namespace dream::agent_host {
 
-AgentPartsConfig HrvoCircleBuilder::DefaultParts(int num_robots) {
-  AgentPartsConfig parts = AgentPartsConfig::ThesisHrvoParts(num_robots);
-  parts.radio = RadioConfig::Every(RadioConfig::Kind::kRange, num_robots, 30);
+kind_api::AgentPartsConfig HrvoCircleBuilder::DefaultParts(int num_robots) {
+  kind_api::AgentPartsConfig parts = kind_api::AgentPartsConfig::ThesisHrvoParts(num_robots);
+  parts.radio = kind_api::RadioConfig::Every(kind_api::RadioConfig::Kind::kRange, num_robots, 30);
   parts.radio.range_m = 1.0;
   return parts;
 }
 
 HrvoCircleBuilder::HrvoCircleBuilder(const config::ConfigNode& section, int num_robots) : num_robots_(num_robots) {
   Section fields;
-  ReadFields(section, num_robots, &fields);
+  kind_api::ReadFields(section, num_robots, &fields);
   const double radius_m = fields.radius_m;
   const Eigen::Vector2d center = fields.center;
   const int formations = fields.formations;

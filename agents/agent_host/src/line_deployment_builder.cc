@@ -1,7 +1,7 @@
 #include "dream/agent_host/line_deployment_builder.h"
-#include "dream/agent_host/field_reader.h"
+#include "dream/kind_api/field_reader.h"
 
-#include "dream/agent_host/hrvo_config.h"
+#include "dream/kind_api/hrvo_config.h"
 #include "dream/agents/experiments/line_formation_metrics.h"
 
 namespace dream::agent_host {
@@ -17,10 +17,10 @@ Eigen::MatrixXd LineDeploymentBuilder::ThesisAdjacency() {
   return a;
 }
 
-AgentPartsConfig LineDeploymentBuilder::DefaultParts(int num_robots) {
-  AgentPartsConfig parts = AgentPartsConfig::ThesisHrvoParts(num_robots);
+kind_api::AgentPartsConfig LineDeploymentBuilder::DefaultParts(int num_robots) {
+  kind_api::AgentPartsConfig parts = kind_api::AgentPartsConfig::ThesisHrvoParts(num_robots);
   // The thesis found a 1 s radio period slowed convergence a lot; 10 steps is 0.33 s.
-  parts.radio = RadioConfig::Every(RadioConfig::Kind::kGraph, num_robots, 10);
+  parts.radio = kind_api::RadioConfig::Every(kind_api::RadioConfig::Kind::kGraph, num_robots, 10);
   if (num_robots == 6) {
     parts.radio.graph = ThesisAdjacency();
   } else {
@@ -32,7 +32,7 @@ AgentPartsConfig LineDeploymentBuilder::DefaultParts(int num_robots) {
 
 LineDeploymentBuilder::LineDeploymentBuilder(const config::ConfigNode& section, int num_robots) {
   Section fields;
-  ReadFields(section, num_robots, &fields);
+  kind_api::ReadFields(section, num_robots, &fields);
   params_ = fields.robot;
   std::string error;
   if (!params_.IsValid(&error)) section.FailAtField(error);

@@ -22,8 +22,8 @@ bool IsPythonIdentifier(const std::string& text) {
 
 }  // namespace
 
-ControllerKind PythonControllerBuilder::Kind() {
-  ControllerKind kind = ControllerKind::Of<PythonControllerBuilder>();
+kind_api::ControllerKind PythonControllerBuilder::Kind() {
+  kind_api::ControllerKind kind = kind_api::ControllerKind::Of<PythonControllerBuilder>();
   kind.checks_own_keys = true;
   return kind;
 }

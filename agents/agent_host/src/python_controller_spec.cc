@@ -46,35 +46,35 @@ Json YamlToJson(const YAML::Node& node) {
 
 Json PerRobot(const std::vector<int>& values) { return Json(values); }
 
-Json PartsJson(const AgentPartsConfig& parts) {
+Json PartsJson(const kind_api::AgentPartsConfig& parts) {
   Json robot = {{"period_steps", PerRobot(parts.robot_period_steps)},
                 {"start_delay_steps", PerRobot(parts.start_delay_steps)},
                 {"vel_gain", parts.robot.vel_gain},
                 {"ang_gain", parts.robot.ang_gain}};
   Json sensors = Json::array();
   static const char* const kSensorKinds[] = {"odometry", "movement", "obstacle"};
-  for (const SensorConfig& sensor : parts.sensors) {
+  for (const kind_api::SensorConfig& sensor : parts.sensors) {
     // What every sensor has, then its own params.
     Json entry = {{"kind", kSensorKinds[static_cast<int>(sensor.kind)]},
                   {"period_steps", PerRobot(sensor.period_steps)}};
     switch (sensor.kind) {
-      case SensorConfig::Kind::kOdometry:
+      case kind_api::SensorConfig::Kind::kOdometry:
         entry["noise_std"] = sensor.odometry.noise_std;
         break;
-      case SensorConfig::Kind::kMovement:
+      case kind_api::SensorConfig::Kind::kMovement:
         entry["range_m"] = sensor.movement.range_m;
         entry["direction_rad"] = sensor.movement.direction_rad;
         entry["field_of_view_rad"] = sensor.movement.field_of_view_rad;
         entry["noise_std"] = sensor.movement.noise_std;
         break;
-      case SensorConfig::Kind::kObstacle:
+      case kind_api::SensorConfig::Kind::kObstacle:
         entry["range_m"] = sensor.obstacle.range_m;
         entry["noise_std"] = sensor.obstacle.noise_std;
         break;
     }
     sensors.push_back(entry);
   }
-  const RadioConfig& radio = parts.radio;
+  const kind_api::RadioConfig& radio = parts.radio;
   static const char* const kRadioKinds[] = {"none", "range", "graph", "role"};
   Json graph = Json::array();
   for (Eigen::Index i = 0; i < radio.graph.rows(); ++i) {

@@ -1,20 +1,20 @@
 #include "dream/agent_host/voronoi_coverage_builder.h"
-#include "dream/agent_host/field_reader.h"
+#include "dream/kind_api/field_reader.h"
 
 namespace dream::agent_host {
-AgentPartsConfig VoronoiCoverageBuilder::DefaultParts(int num_robots) {
-  AgentPartsConfig parts = AgentPartsConfig::Defaults(num_robots);
-  SensorConfig obstacle = SensorConfig::Every(SensorConfig::Kind::kObstacle, num_robots, 1);
+kind_api::AgentPartsConfig VoronoiCoverageBuilder::DefaultParts(int num_robots) {
+  kind_api::AgentPartsConfig parts = kind_api::AgentPartsConfig::Defaults(num_robots);
+  kind_api::SensorConfig obstacle = kind_api::SensorConfig::Every(kind_api::SensorConfig::Kind::kObstacle, num_robots, 1);
   obstacle.obstacle.range_m = 1.0;
   parts.sensors.push_back(obstacle);
-  parts.radio = RadioConfig::Every(RadioConfig::Kind::kRange, num_robots, 3);
+  parts.radio = kind_api::RadioConfig::Every(kind_api::RadioConfig::Kind::kRange, num_robots, 3);
   parts.radio.range_m = 2.0;
   return parts;
 }
 
 VoronoiCoverageBuilder::VoronoiCoverageBuilder(const config::ConfigNode& section, int num_robots) {
   Section fields;
-  ReadFields(section, num_robots, &fields);
+  kind_api::ReadFields(section, num_robots, &fields);
   params_ = fields.robot;
   std::string error;
   if (!params_.IsValid(&error)) section.FailAtField(error);

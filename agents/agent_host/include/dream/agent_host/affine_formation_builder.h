@@ -8,8 +8,8 @@
 #include "dream/agents/fields/field_names.h"
 #include "dream/agents/experiments/affine_formation_metrics.h"
 #include "dream/agents/experiments/affine_leader_robot.h"
-#include "dream/agent_host/agent_parts_config.h"
-#include "dream/agent_host/experiment_builder.h"
+#include "dream/kind_api/agent_parts_config.h"
+#include "dream/kind_api/experiment_builder.h"
 #include "dream/agents/hrvo/hrvo_robot.h"
 #include "dream/agents/experiments/stress_formation.h"
 #include "dream/config/config_node.h"
@@ -29,7 +29,7 @@ namespace dream::agent_host {
 ///     drive:    reversible | thesis   (ReversibleSiToUni or dxi_to_dxu, every robot)
 ///     time_step_s: 0.033   equilibrium_tolerance_m: 0.005   min_target_spacing_m: 0.25
 ///     metrics:  {tolerance_m: 0.05, converged_from_step: 0, obstacle_pairs: [[0, 1]], series_every_steps: 10}
-class AffineFormationBuilder final : public ExperimentBuilder {
+class AffineFormationBuilder final : public kind_api::ExperimentBuilder {
  public:
   static constexpr const char* kKind = "affine_formation";
   /// The followers need every leader's word: the role radio's graph must connect.
@@ -73,7 +73,7 @@ class AffineFormationBuilder final : public ExperimentBuilder {
   static std::vector<std::string> Keys() { return agents::KeysOf<Section>(); }
   /// Every part every step: robot, odometry and movement sensor (1 m) period
   /// 1, role radio period 1 (its graph and leaders come from the config).
-  static AgentPartsConfig DefaultParts(int num_robots);
+  static kind_api::AgentPartsConfig DefaultParts(int num_robots);
 
   AffineFormationBuilder(const config::ConfigNode& section, int num_robots);
   std::unique_ptr<agents::Robot> MakeRobot(int robot_id, const agents::RobotParams& params) const override;

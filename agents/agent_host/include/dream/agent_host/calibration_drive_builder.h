@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "dream/agent_host/experiment_builder.h"
+#include "dream/kind_api/experiment_builder.h"
 #include "dream/config/config_node.h"
 
 namespace dream::agent_host {
@@ -11,7 +11,7 @@ namespace dream::agent_host {
 /// program (config/calibration.yaml; `dream export --calibration`), and the
 /// goal is that it ran to its end clean (CalibrationDriveMetrics). No keys of
 /// its own: the program is fixed, so every lab run of it fits alike.
-class CalibrationDriveBuilder final : public ExperimentBuilder {
+class CalibrationDriveBuilder final : public kind_api::ExperimentBuilder {
  public:
   static constexpr const char* kKind = "calibration_drive";
   static std::vector<const char*> Keys() { return {}; }

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "dream/agent_host/agent_parts_config.h"
-#include "dream/agent_host/experiment_builder.h"
+#include "dream/kind_api/agent_parts_config.h"
+#include "dream/kind_api/experiment_builder.h"
 #include "dream/agents/framework/robot_agent.h"
 #include "dream/config/config_node.h"
 #include "dream/config/controller_config.h"
@@ -53,7 +53,7 @@ class ControllerFactory {
 
   const std::string& kind() const { return kind_; }
   /// The robots' parts (timer, sensors, radio) as the config sets them.
-  const AgentPartsConfig& parts() const { return parts_; }
+  const kind_api::AgentPartsConfig& parts() const { return parts_; }
 
  private:
   ControllerFactory(const config::ConfigNode& section, int num_robots, uint64_t run_seed,
@@ -63,8 +63,8 @@ class ControllerFactory {
   std::string kind_;
   int num_robots_;
   uint64_t run_seed_;
-  AgentPartsConfig parts_;
-  std::unique_ptr<ExperimentBuilder> builder_;
+  kind_api::AgentPartsConfig parts_;
+  std::unique_ptr<kind_api::ExperimentBuilder> builder_;
 };
 
 }  // namespace dream::agent_host

@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "dream/agent_host/experiment_builder.h"
+#include "dream/kind_api/experiment_builder.h"
 #include "dream/agents/fields/field_names.h"
 #include "dream/agents/experiments/go_to_goal_robot.h"
 #include "dream/config/config_node.h"
@@ -12,7 +12,7 @@ namespace dream::agent_host {
 /// `kind: go_to_goal`: every robot drives to its own goal.
 ///     goals: [[x, y], ...]   one per robot, metres
 ///     gain: 0.8   max_speed_mps: 0.15   tolerance_m: 0.03
-class GoToGoalBuilder final : public ExperimentBuilder {
+class GoToGoalBuilder final : public kind_api::ExperimentBuilder {
  public:
   static constexpr const char* kKind = "go_to_goal";
   /// The kind's section: each robot's goal and the robots' keys, each named once.

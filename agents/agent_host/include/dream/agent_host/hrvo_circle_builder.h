@@ -3,10 +3,10 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "dream/agent_host/agent_parts_config.h"
+#include "dream/kind_api/agent_parts_config.h"
 #include "dream/agents/fields/field_names.h"
 #include "dream/agents/experiments/circle_formation_robot.h"
-#include "dream/agent_host/experiment_builder.h"
+#include "dream/kind_api/experiment_builder.h"
 #include "dream/agents/hrvo/hrvo_robot.h"
 #include "dream/config/config_node.h"
 
@@ -20,7 +20,7 @@ namespace dream::agent_host {
 ///     radius_m: 0.85   center: [0, 0]   formations: 3
 ///     tolerance_m: 0.05   max_speed_mps: 0.2
 ///     hrvo: {variant: exact | thesis, safety_radius_m: 0.24, ...}
-class HrvoCircleBuilder final : public ExperimentBuilder {
+class HrvoCircleBuilder final : public kind_api::ExperimentBuilder {
  public:
   static constexpr const char* kKind = "hrvo_circle";
   /// The kind's section: the circle's, the robots' and HRVO's keys, each named once.
@@ -44,7 +44,7 @@ class HrvoCircleBuilder final : public ExperimentBuilder {
   /// Appendix B's parts: robot period 4+(i%2), start delay 20+i; odometry
   /// every 2+(i%2), movement sensor every 3+(i%2) (range 1 m); range radio
   /// (1 m) every 30 steps.
-  static AgentPartsConfig DefaultParts(int num_robots);
+  static kind_api::AgentPartsConfig DefaultParts(int num_robots);
 
   HrvoCircleBuilder(const config::ConfigNode& section, int num_robots);
   std::unique_ptr<agents::Robot> MakeRobot(int robot_id, const agents::RobotParams& params) const override;

@@ -3,9 +3,9 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "dream/agent_host/agent_parts_config.h"
+#include "dream/kind_api/agent_parts_config.h"
 #include "dream/agents/fields/field_names.h"
-#include "dream/agent_host/experiment_builder.h"
+#include "dream/kind_api/experiment_builder.h"
 #include "dream/agents/hrvo/hrvo_robot.h"
 #include "dream/agents/experiments/line_deployment_robot.h"
 #include "dream/config/config_node.h"
@@ -20,7 +20,7 @@ namespace dream::agent_host {
 ///     hrvo: {...}
 /// A graph radio's adjacency must be symmetric and connected (the factory
 /// checks it: graph_must_connect).
-class LineDeploymentBuilder final : public ExperimentBuilder {
+class LineDeploymentBuilder final : public kind_api::ExperimentBuilder {
  public:
   static constexpr const char* kKind = "line_deployment";
   /// Consensus (eq. 3.7) needs a symmetric, connected graph.
@@ -44,7 +44,7 @@ class LineDeploymentBuilder final : public ExperimentBuilder {
   /// Appendix B's timings (robot 4+(i%2), start delay 20+i, odometry 2+(i%2),
   /// movement 3+(i%2)); graph radio every 10 steps over ThesisAdjacency() for
   /// 6 robots, a path 0-1-...-(N-1) otherwise.
-  static AgentPartsConfig DefaultParts(int num_robots);
+  static kind_api::AgentPartsConfig DefaultParts(int num_robots);
 
   LineDeploymentBuilder(const config::ConfigNode& section, int num_robots);
   std::unique_ptr<agents::Robot> MakeRobot(int robot_id, const agents::RobotParams& params) const override;

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "dream/agent_host/controller_kind.h"
-#include "dream/agent_host/experiment_builder.h"
+#include "dream/kind_api/controller_kind.h"
+#include "dream/kind_api/experiment_builder.h"
 #include "dream/config/config_node.h"
 
 namespace dream::agent_host {
@@ -20,12 +20,12 @@ namespace dream::agent_host {
 /// (AgentPartsConfig::Defaults) and the common safety metrics, and leaves the
 /// class's own keys to the Python side, which checks them against the class's
 /// KEYS with the lines PythonControllerSpecJson() hands it.
-class PythonControllerBuilder final : public ExperimentBuilder {
+class PythonControllerBuilder final : public kind_api::ExperimentBuilder {
  public:
   static constexpr const char* kKind = "python";
   static std::vector<const char*> Keys() { return {"module", "class"}; }
   /// The registry entry: this builder, with the section's other keys left to Python.
-  static ControllerKind Kind();
+  static kind_api::ControllerKind Kind();
 
   /// @throws config::ConfigError when `module` is not a readable .py file
   ///         (relative paths are taken from the config file's folder) or

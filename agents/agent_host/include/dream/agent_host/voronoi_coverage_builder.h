@@ -2,9 +2,9 @@
 
 #include <vector>
 
-#include "dream/agent_host/agent_parts_config.h"
+#include "dream/kind_api/agent_parts_config.h"
 #include "dream/agents/fields/field_names.h"
-#include "dream/agent_host/experiment_builder.h"
+#include "dream/kind_api/experiment_builder.h"
 #include "dream/agents/experiments/voronoi_coverage_metrics.h"
 #include "dream/agents/experiments/voronoi_coverage_robot.h"
 #include "dream/config/config_node.h"
@@ -18,7 +18,7 @@ namespace dream::agent_host {
 ///     gain: 1.0  max_speed_mps: 0.15  tolerance_m: 0.03
 ///     done_after_still_steps: 30  radio_rounds_before_moving: 2
 ///     coverage_sample_steps: 10  still_speed_mps: 0.005  still_window_steps: 30
-class VoronoiCoverageBuilder final : public ExperimentBuilder {
+class VoronoiCoverageBuilder final : public kind_api::ExperimentBuilder {
  public:
   static constexpr const char* kKind = "voronoi_coverage";
   /// The kind's section: the robots' and the metrics' keys, each named once.
@@ -37,7 +37,7 @@ class VoronoiCoverageBuilder final : public ExperimentBuilder {
   /// range radio every 3 steps reaching 2 m (= twice the disc radius: any
   /// robot that can cut a 1 m disc is heard), the control law every step
   /// (its one-step safety check assumes it).
-  static AgentPartsConfig DefaultParts(int num_robots);
+  static kind_api::AgentPartsConfig DefaultParts(int num_robots);
 
   VoronoiCoverageBuilder(const config::ConfigNode& section, int num_robots);
   std::unique_ptr<agents::Robot> MakeRobot(int robot_id, const agents::RobotParams& params) const override;

@@ -12,7 +12,7 @@
 #include "dream/agents/framework/robot_params.h"
 #include "dream/config/config_node.h"
 
-namespace dream::agent_host {
+namespace dream::kind_api {
 
 /// One `sensors:` entry of a controller section.
 struct SensorConfig {
@@ -80,4 +80,4 @@ struct AgentPartsConfig {
   agents::RobotAgentSpec MakeSpec(std::unique_ptr<agents::Robot> control, uint64_t run_seed) const;
 };
 
-}  // namespace dream::agent_host
+}  // namespace dream::kind_api

@@ -7,7 +7,7 @@
 #include "dream/agents/framework/experiment_metrics.h"
 #include "dream/agents/framework/robot.h"
 
-namespace dream::agent_host {
+namespace dream::kind_api {
 
 /// One experiment kind (`controller: {kind: ...}`): it has read and checked
 /// its own keys of the section when constructed, and builds each robot's
@@ -31,4 +31,4 @@ class ExperimentBuilder {
   virtual std::vector<std::vector<Eigen::Vector2d>> GoalsToDraw() const { return {}; }
 };
 
-}  // namespace dream::agent_host
+}  // namespace dream::kind_api

@@ -1,4 +1,4 @@
-#include "dream/agent_host/agent_parts_config.h"
+#include "dream/kind_api/agent_parts_config.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -10,7 +10,7 @@
 #include "dream/agents/framework/role_radio.h"
 #include "dream/config/name_suggestion.h"
 
-namespace dream::agent_host {
+namespace dream::kind_api {
 namespace {
 
 using config::ConfigNode;
@@ -277,4 +277,4 @@ agents::RobotAgentSpec AgentPartsConfig::MakeSpec(std::unique_ptr<agents::Robot>
   return spec;
 }
 
-}  // namespace dream::agent_host
+}  // namespace dream::kind_api

@@ -6,13 +6,13 @@
 #include <type_traits>
 #include <vector>
 
-#include "dream/agent_host/agent_parts_config.h"
-#include "dream/agent_host/experiment_builder.h"
-#include "dream/agent_host/robot_class_builder.h"
+#include "dream/kind_api/agent_parts_config.h"
+#include "dream/kind_api/experiment_builder.h"
+#include "dream/kind_api/robot_class_builder.h"
 #include "dream/agents/fields/field_table.h"
 #include "dream/config/config_node.h"
 
-namespace dream::agent_host {
+namespace dream::kind_api {
 
 /// What one experiment kind (`controller: {kind: NAME}`) brings to the
 /// ControllerFactory: its own config keys, the parts its robots get unless the
@@ -100,4 +100,4 @@ void ControllerKind::ReadOptionalMembers(ControllerKind* kind) {
   if constexpr (HasGraphMustConnect<T>::value) kind->graph_must_connect = T::kGraphMustConnect;
 }
 
-}  // namespace dream::agent_host
+}  // namespace dream::kind_api

@@ -1,8 +1,8 @@
-#include "dream/agent_host/hrvo_config.h"
+#include "dream/kind_api/hrvo_config.h"
 
-#include "dream/agent_host/field_reader.h"
+#include "dream/kind_api/field_reader.h"
 
-namespace dream::agent_host {
+namespace dream::kind_api {
 
 agents::HrvoRobotParams ReadHrvoRobotParams(const config::ConfigNode& section, agents::HrvoRobotParams defaults) {
   agents::HrvoRobotParams params = defaults;
@@ -12,4 +12,4 @@ agents::HrvoRobotParams ReadHrvoRobotParams(const config::ConfigNode& section, a
   return params;
 }
 
-}  // namespace dream::agent_host
+}  // namespace dream::kind_api

@@ -13,7 +13,7 @@
 #include "dream/config/config_node.h"
 #include "dream/config/name_suggestion.h"
 
-namespace dream::agent_host {
+namespace dream::kind_api {
 
 /// Reads a params struct's fields from a config section by its one field
 /// list (agents::FieldNames): a key the section has replaces the default, and
@@ -105,4 +105,4 @@ void ReadFields(const config::ConfigNode& section, int num_robots, Params* param
   params->ListFields(reader);
 }
 
-}  // namespace dream::agent_host
+}  // namespace dream::kind_api

@@ -3,11 +3,11 @@
 #include <memory>
 #include <type_traits>
 
-#include "dream/agent_host/experiment_builder.h"
+#include "dream/kind_api/experiment_builder.h"
 #include "dream/agents/framework/robot.h"
 #include "dream/config/config_node.h"
 
-namespace dream::agent_host {
+namespace dream::kind_api {
 
 /// The ExperimentBuilder of a kind that is nothing but a Robot subclass
 /// (ControllerKind::OfRobot, DREAM_REGISTER_ROBOT): each robot is
@@ -50,4 +50,4 @@ class RobotClassBuilder final : public ExperimentBuilder {
   config::ConfigNode section_;
 };
 
-}  // namespace dream::agent_host
+}  // namespace dream::kind_api
