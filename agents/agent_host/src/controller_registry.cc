@@ -2,10 +2,10 @@
 
 #include <stdexcept>
 
+#include "built_in_kinds.h"
 #include "dream/agent_host/affine_formation_builder.h"
 #include "dream/agent_host/calibration_drive_builder.h"
 #include "dream/agent_host/controller_plugin_loader.h"
-#include "dream/agent_host/go_to_goal_builder.h"
 #include "dream/agent_host/hrvo_circle_builder.h"
 #include "dream/agent_host/line_deployment_builder.h"
 #include "dream/agent_host/python_controller_builder.h"
@@ -19,7 +19,7 @@ constexpr const char* kBuiltIn = "built in";
 std::string Described(const std::string& origin) { return origin.empty() ? std::string("unnamed") : origin; }
 
 void AddBuiltIns(ControllerRegistry& registry) {
-  registry.Add(kind_api::ControllerKind::Of<GoToGoalBuilder>(), kBuiltIn);
+  AddBuiltInKinds(registry, kBuiltIn);  // those of agents/kinds/, then the rest until they move there
   registry.Add(kind_api::ControllerKind::Of<AffineFormationBuilder>(), kBuiltIn);
   registry.Add(kind_api::ControllerKind::Of<VoronoiCoverageBuilder>(), kBuiltIn);
   registry.Add(kind_api::ControllerKind::Of<HrvoCircleBuilder>(), kBuiltIn);

@@ -1,21 +1,21 @@
-#include "dream/agents/experiments/go_to_goal_robot.h"
+#include "dream/go_to_goal/go_to_goal_robot.h"
 #include "dream/agents/fields/field_check.h"
 
 #include <cmath>
 
 #include "dream/agents/framework/params_check.h"
 
-namespace dream::agents {
+namespace dream::go_to_goal {
 
 bool GoToGoalParams::IsValid(std::string* error) const {
-  if (!goal_m.allFinite()) return FailParams(error, "goal must be finite");
-  return CheckFields(*this, error);
+  if (!goal_m.allFinite()) return agents::FailParams(error, "goal must be finite");
+  return agents::CheckFields(*this, error);
 }
 
-GoToGoalRobot::GoToGoalRobot(int id, const RobotParams& robot_params, const GoToGoalParams& params)
-    : Robot(id, robot_params), params_(CheckedParams(params)) {}
+GoToGoalRobot::GoToGoalRobot(int id, const agents::RobotParams& robot_params, const GoToGoalParams& params)
+    : agents::Robot(id, robot_params), params_(agents::CheckedParams(params)) {}
 
-UnicycleCommand GoToGoalRobot::Update(int64_t step) {
+agents::UnicycleCommand GoToGoalRobot::Update(int64_t step) {
   (void)step;
   if (!has_odometry()) return {};
   const Eigen::Vector2d error = params_.goal_m - pose().head<2>();
@@ -26,4 +26,4 @@ UnicycleCommand GoToGoalRobot::Update(int64_t step) {
   return LimitActuators(si_to_uni_.Map(velocity, pose().z()));
 }
 
-}  // namespace dream::agents
+}  // namespace dream::go_to_goal

@@ -4,10 +4,10 @@
 
 #include "dream/kind_api/experiment_builder.h"
 #include "dream/agents/fields/field_names.h"
-#include "dream/agents/experiments/go_to_goal_robot.h"
+#include "dream/go_to_goal/go_to_goal_robot.h"
 #include "dream/config/config_node.h"
 
-namespace dream::agent_host {
+namespace dream::go_to_goal {
 
 /// `kind: go_to_goal`: every robot drives to its own goal.
 ///     goals: [[x, y], ...]   one per robot, metres
@@ -18,7 +18,7 @@ class GoToGoalBuilder final : public kind_api::ExperimentBuilder {
   /// The kind's section: each robot's goal and the robots' keys, each named once.
   struct Section {
     std::vector<Eigen::Vector2d> goals;
-    agents::GoToGoalParams robot;
+    GoToGoalParams robot;
     template <typename Fields>
     void ListFields(Fields& fields) {
       fields.RobotPoints("goals", goals, "goal");
@@ -34,7 +34,7 @@ class GoToGoalBuilder final : public kind_api::ExperimentBuilder {
   std::vector<std::vector<Eigen::Vector2d>> GoalsToDraw() const override;
 
  private:
-  std::vector<agents::GoToGoalParams> params_;
+  std::vector<GoToGoalParams> params_;
 };
 
-}  // namespace dream::agent_host
+}  // namespace dream::go_to_goal

@@ -7,7 +7,7 @@
 #include "dream/agents/framework/robot.h"
 #include "dream/agents/geometry/single_integrator_to_unicycle.h"
 
-namespace dream::agents {
+namespace dream::go_to_goal {
 
 /// Parameters of GoToGoalRobot.
 struct GoToGoalParams {
@@ -19,9 +19,9 @@ struct GoToGoalParams {
   /// The config keys (`controller:` of kind go_to_goal), once for reading, checking and the docs.
   template <typename Fields>
   void ListFields(Fields& fields) {
-    fields.Number("gain", gain, FieldRule::Positive(), "proportional gain, 1/s");
-    fields.Number("max_speed_mps", max_speed_mps, FieldRule::RobotSpeed(), "cap on the planar velocity, m/s");
-    fields.Number("tolerance_m", tolerance_m, FieldRule::Positive(), "within this distance the robot stops and reports done, m");
+    fields.Number("gain", gain, agents::FieldRule::Positive(), "proportional gain, 1/s");
+    fields.Number("max_speed_mps", max_speed_mps, agents::FieldRule::RobotSpeed(), "cap on the planar velocity, m/s");
+    fields.Number("tolerance_m", tolerance_m, agents::FieldRule::Positive(), "within this distance the robot stops and reports done, m");
   }
   /// False with a message naming the field, its value and the allowed range.
   bool IsValid(std::string* error) const;
@@ -33,17 +33,17 @@ struct GoToGoalParams {
 /// as the Robotarium's si_to_uni does, limited to what the wheels can do.
 /// Stops and reports done within tolerance; holds still before its first
 /// odometry reading.
-class GoToGoalRobot final : public Robot {
+class GoToGoalRobot final : public agents::Robot {
  public:
   /// @throws std::invalid_argument when params are invalid.
-  GoToGoalRobot(int id, const RobotParams& robot_params, const GoToGoalParams& params);
-  UnicycleCommand Update(int64_t step) override;
+  GoToGoalRobot(int id, const agents::RobotParams& robot_params, const GoToGoalParams& params);
+  agents::UnicycleCommand Update(int64_t step) override;
   bool done() const override { return done_; }
 
  private:
   GoToGoalParams params_;
-  SingleIntegratorToUnicycle si_to_uni_;
+  agents::SingleIntegratorToUnicycle si_to_uni_;
   bool done_ = false;
 };
 
-}  // namespace dream::agents
+}  // namespace dream::go_to_goal

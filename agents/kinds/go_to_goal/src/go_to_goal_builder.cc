@@ -1,16 +1,16 @@
-#include "dream/agent_host/go_to_goal_builder.h"
+#include "dream/go_to_goal/go_to_goal_builder.h"
 #include "dream/kind_api/field_reader.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace dream::agent_host {
+namespace dream::go_to_goal {
 namespace {
 
 /// Reports the largest final distance to goal and when everyone had arrived.
 class GoToGoalMetrics final : public agents::ExperimentMetrics {
  public:
-  explicit GoToGoalMetrics(std::vector<agents::GoToGoalParams> params) : params_(std::move(params)) {}
+  explicit GoToGoalMetrics(std::vector<GoToGoalParams> params) : params_(std::move(params)) {}
   void Observe(const agents::WorldSnapshot& world) override {
     double worst = 0.0;
     bool all_in = true;
@@ -42,14 +42,14 @@ class GoToGoalMetrics final : public agents::ExperimentMetrics {
     const double worst = report.Value("final_max_goal_error_m");
     if (params_.empty()) return agents::GoalJudgement::Metres(worst);
     double tolerance = params_.front().tolerance_m;
-    for (const agents::GoToGoalParams& p : params_) {
+    for (const GoToGoalParams& p : params_) {
       if (std::abs(p.tolerance_m - worst) < std::abs(tolerance - worst)) tolerance = p.tolerance_m;
     }
     return agents::GoalJudgement::MetresApart(worst, tolerance) + " (tolerance " +
            agents::GoalJudgement::Metres(tolerance) + ")";
   }
 
-  std::vector<agents::GoToGoalParams> params_;
+  std::vector<GoToGoalParams> params_;
   double final_worst_m_ = 0.0;
   int64_t arrived_step_ = -1;
 };
@@ -60,7 +60,7 @@ GoToGoalBuilder::GoToGoalBuilder(const config::ConfigNode& section, int num_robo
   Section fields;
   kind_api::ReadFields(section, num_robots, &fields);
   for (const Eigen::Vector2d& goal : fields.goals) {
-    agents::GoToGoalParams params = fields.robot;
+    GoToGoalParams params = fields.robot;
     params.goal_m = goal;
     std::string error;
     if (!params.IsValid(&error)) section.FailAtField(error);
@@ -69,7 +69,7 @@ GoToGoalBuilder::GoToGoalBuilder(const config::ConfigNode& section, int num_robo
 }
 
 std::unique_ptr<agents::Robot> GoToGoalBuilder::MakeRobot(int robot_id, const agents::RobotParams& params) const {
-  return std::make_unique<agents::GoToGoalRobot>(robot_id, params, params_.at(static_cast<size_t>(robot_id)));
+  return std::make_unique<GoToGoalRobot>(robot_id, params, params_.at(static_cast<size_t>(robot_id)));
 }
 
 std::unique_ptr<agents::ExperimentMetrics> GoToGoalBuilder::MakeMetrics() const {
@@ -78,8 +78,8 @@ std::unique_ptr<agents::ExperimentMetrics> GoToGoalBuilder::MakeMetrics() const 
 
 std::vector<std::vector<Eigen::Vector2d>> GoToGoalBuilder::GoalsToDraw() const {
   std::vector<std::vector<Eigen::Vector2d>> goals;
-  for (const agents::GoToGoalParams& params : params_) goals.push_back({params.goal_m});
+  for (const GoToGoalParams& params : params_) goals.push_back({params.goal_m});
   return goals;
 }
 
-}  // namespace dream::agent_host
+}  // namespace dream::go_to_goal
