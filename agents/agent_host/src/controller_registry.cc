@@ -3,7 +3,6 @@
 #include <stdexcept>
 
 #include "built_in_kinds.h"
-#include "dream/agent_host/affine_formation_builder.h"
 #include "dream/agent_host/calibration_drive_builder.h"
 #include "dream/agent_host/controller_plugin_loader.h"
 #include "dream/agent_host/hrvo_circle_builder.h"
@@ -20,7 +19,6 @@ std::string Described(const std::string& origin) { return origin.empty() ? std::
 
 void AddBuiltIns(ControllerRegistry& registry) {
   AddBuiltInKinds(registry, kBuiltIn);  // those of agents/kinds/, then the rest until they move there
-  registry.Add(kind_api::ControllerKind::Of<AffineFormationBuilder>(), kBuiltIn);
   registry.Add(kind_api::ControllerKind::Of<VoronoiCoverageBuilder>(), kBuiltIn);
   registry.Add(kind_api::ControllerKind::Of<HrvoCircleBuilder>(), kBuiltIn);
   registry.Add(kind_api::ControllerKind::Of<LineDeploymentBuilder>(), kBuiltIn);

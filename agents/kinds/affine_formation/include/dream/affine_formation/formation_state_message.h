@@ -5,7 +5,7 @@
 #include <optional>
 #include <vector>
 
-namespace dream::agents {
+namespace dream::affine_formation {
 
 /// The affine formation robots' radio payload: who I am, where I am and the
 /// planar velocity I am commanding (Zhao's follower law feeds neighbours'
@@ -22,4 +22,4 @@ struct FormationStateMessage {
   static std::optional<FormationStateMessage> Decode(const std::vector<uint8_t>& payload, int sender_id);
 };
 
-}  // namespace dream::agents
+}  // namespace dream::affine_formation

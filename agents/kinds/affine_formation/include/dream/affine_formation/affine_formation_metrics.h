@@ -11,7 +11,7 @@
 #include "dream/agents/fields/field_rule.h"
 #include "dream/robotarium/robotarium_constants.h"
 
-namespace dream::agents {
+namespace dream::affine_formation {
 
 /// Parameters of AffineFormationMetrics.
 struct AffineFormationMetricsParams {
@@ -35,11 +35,11 @@ struct AffineFormationMetricsParams {
   /// The config keys of `metrics:` (kind affine_formation); `obstacle_pairs` is read by the builder.
   template <typename Fields>
   void ListFields(Fields& fields) {
-    fields.Number("tolerance_m", tolerance_m, FieldRule::Positive(), "a follower within this of its target tracks it, m");
-    fields.Whole("converged_from_step", converged_from_step, FieldRule::AtLeast(0),
+    fields.Number("tolerance_m", tolerance_m, agents::FieldRule::Positive(), "a follower within this of its target tracks it, m");
+    fields.Whole("converged_from_step", converged_from_step, agents::FieldRule::AtLeast(0),
                  "the convergence window starts here (worst follower error from here to the end)");
     fields.Custom(kObstaclePairsKey, "`[[a, b], ...]`: obstacle ids (their order in `obstacles:`) forming a gate; clearance and passage per pair (none by default)");
-    fields.Whole("series_every_steps", series_every_steps, FieldRule::AtLeast(1), "resolution of the `max_follower_error_m` series, steps");
+    fields.Whole("series_every_steps", series_every_steps, agents::FieldRule::AtLeast(1), "resolution of the `max_follower_error_m` series, steps");
   }
   static constexpr const char* kObstaclePairsKey = "obstacle_pairs";
 };
@@ -53,13 +53,13 @@ struct AffineFormationMetricsParams {
 ///    either obstacle, the smallest clearance of any robot's collision disc
 ///    (<= 0 is a touch, as the Robotarium counts it), the steps with a touch,
 ///    and the step when the pair's centre crossed the formation's centroid.
-class AffineFormationMetrics final : public ExperimentMetrics {
+class AffineFormationMetrics final : public agents::ExperimentMetrics {
  public:
   /// @throws std::invalid_argument when params are invalid.
   explicit AffineFormationMetrics(AffineFormationMetricsParams params);
-  void Observe(const WorldSnapshot& world) override;
-  void Write(MetricsReport* report) const override;
-  std::optional<GoalJudgement> JudgeGoal(const MetricsReport& report) const override;
+  void Observe(const agents::WorldSnapshot& world) override;
+  void Write(agents::MetricsReport* report) const override;
+  std::optional<agents::GoalJudgement> JudgeGoal(const agents::MetricsReport& report) const override;
 
   double max_error_after_convergence_m() const { return max_after_m_; }
   /// First step from which the max follower error stays within tolerance to
@@ -88,4 +88,4 @@ class AffineFormationMetrics final : public ExperimentMetrics {
   int64_t fit_failures_ = 0;
 };
 
-}  // namespace dream::agents
+}  // namespace dream::affine_formation

@@ -1,16 +1,16 @@
-#include "dream/agents/experiments/formation_state_message.h"
+#include "dream/affine_formation/formation_state_message.h"
 
 #include "dream/agents/framework/byte_reader.h"
 #include "dream/agents/framework/byte_writer.h"
 
-namespace dream::agents {
+namespace dream::affine_formation {
 
 std::vector<uint8_t> FormationStateMessage::Encode() const {
-  return ByteWriter().Int32(id).Vector2(position_m).Vector2(velocity_mps).Take();
+  return agents::ByteWriter().Int32(id).Vector2(position_m).Vector2(velocity_mps).Take();
 }
 
 std::optional<FormationStateMessage> FormationStateMessage::Decode(const std::vector<uint8_t>& payload, int sender_id) {
-  ByteReader reader(payload);
+  agents::ByteReader reader(payload);
   FormationStateMessage message;
   message.id = reader.Int32();
   message.position_m = reader.Vector2();
@@ -19,4 +19,4 @@ std::optional<FormationStateMessage> FormationStateMessage::Decode(const std::ve
   return message;
 }
 
-}  // namespace dream::agents
+}  // namespace dream::affine_formation

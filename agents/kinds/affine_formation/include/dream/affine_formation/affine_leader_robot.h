@@ -3,13 +3,13 @@
 #include <Eigen/Core>
 #include <string>
 
-#include "dream/agents/experiments/affine_maneuver.h"
+#include "dream/affine_formation/affine_maneuver.h"
 #include "dream/agents/fields/field_rule.h"
 #include "dream/agents/geometry/reversible_si_to_uni.h"
 #include "dream/agents/framework/robot.h"
 #include "dream/robotarium/robotarium_constants.h"
 
-namespace dream::agents {
+namespace dream::affine_formation {
 
 /// Parameters of AffineLeaderRobot.
 struct AffineLeaderParams {
@@ -28,8 +28,8 @@ struct AffineLeaderParams {
   /// The config keys of `leader:` (kind affine_formation).
   template <typename Fields>
   void ListFields(Fields& fields) {
-    fields.Number("gain", gain, FieldRule::Positive(), "leaders' feedback gain on top of the target velocity, 1/s");
-    fields.Number("max_speed_mps", max_speed_mps, FieldRule::RobotSpeed(), "leaders' speed cap, m/s");
+    fields.Number("gain", gain, agents::FieldRule::Positive(), "leaders' feedback gain on top of the target velocity, 1/s");
+    fields.Number("max_speed_mps", max_speed_mps, agents::FieldRule::RobotSpeed(), "leaders' speed cap, m/s");
   }
 };
 
@@ -41,14 +41,14 @@ struct AffineLeaderParams {
 /// ignore them; followers avoid) nor at the obstacles (the plan is timed).
 /// Its radio only publishes: position and the velocity it commands at that
 /// step (FormationStateMessage), for the followers' law.
-class AffineLeaderRobot final : public Robot {
+class AffineLeaderRobot final : public agents::Robot {
  public:
   /// @throws std::invalid_argument when params are invalid.
-  AffineLeaderRobot(int id, const RobotParams& robot_params, const AffineLeaderParams& params);
+  AffineLeaderRobot(int id, const agents::RobotParams& robot_params, const AffineLeaderParams& params);
 
-  void OnOdometry(const OdometryReading& reading) override;
-  std::optional<std::vector<uint8_t>> OnRadio(const std::vector<RadioMessage>& heard) override;
-  UnicycleCommand Update(int64_t step) override;
+  void OnOdometry(const agents::OdometryReading& reading) override;
+  std::optional<std::vector<uint8_t>> OnRadio(const std::vector<agents::RadioMessage>& heard) override;
+  agents::UnicycleCommand Update(int64_t step) override;
 
   /// The planar velocity commanded at the last update.
   const Eigen::Vector2d& velocity_mps() const { return velocity_mps_; }
@@ -59,9 +59,9 @@ class AffineLeaderRobot final : public Robot {
 
   AffineLeaderParams params_;
   AffineManeuver maneuver_;
-  ReversibleSiToUni drive_;
+  agents::ReversibleSiToUni drive_;
   Eigen::Vector2d velocity_mps_ = Eigen::Vector2d::Zero();
   int64_t odometry_step_ = 0;
 };
 
-}  // namespace dream::agents
+}  // namespace dream::affine_formation

@@ -8,7 +8,7 @@
 
 #include "dream/agents/geometry/affine_transform.h"
 
-namespace dream::agents {
+namespace dream::affine_formation {
 
 /// What defines an affine formation (Zhao 2018, "Affine Formation Maneuver
 /// Control of Multiagent Systems", IEEE TAC 63(12)): symmetric edge weights
@@ -63,11 +63,11 @@ class StressFormation {
   /// The affine map that takes the leaders' nominal points to their entries
   /// of `positions_m` (least squares when there are more than three leaders);
   /// nothing when those entries are collinear or not finite.
-  std::optional<AffineTransform> LeaderTransform(const std::vector<Eigen::Vector2d>& positions_m) const;
+  std::optional<agents::AffineTransform> LeaderTransform(const std::vector<Eigen::Vector2d>& positions_m) const;
 
  private:
   StressFormationParams params_;
   std::vector<int> followers_;
 };
 
-}  // namespace dream::agents
+}  // namespace dream::affine_formation

@@ -1,11 +1,11 @@
-#include "dream/agents/experiments/affine_maneuver.h"
+#include "dream/affine_formation/affine_maneuver.h"
 
 #include <cmath>
 #include <stdexcept>
 
 #include "dream/agents/framework/params_check.h"
 
-namespace dream::agents {
+namespace dream::affine_formation {
 namespace {
 
 Eigen::Matrix2d Rotation(double angle_rad) {
@@ -25,32 +25,32 @@ double Lerp(double a, double b, double h) { return a + (b - a) * h; }
 
 }  // namespace
 
-AffineTransform AffineKeyframe::Transform() const {
-  AffineTransform transform;
+agents::AffineTransform AffineKeyframe::Transform() const {
+  agents::AffineTransform transform;
   transform.linear = Eigen::Vector2d(scale_x, scale_y).asDiagonal() * Rotation(rotation_rad);
   transform.translation_m = translation_m;
   return transform;
 }
 
 bool AffineManeuverParams::IsValid(std::string* error) const {
-  if (keyframes.empty()) return FailParams(error, "keyframes: need at least one keyframe");
+  if (keyframes.empty()) return agents::FailParams(error, "keyframes: need at least one keyframe");
   if (keyframes.size() > kMaxKeyframes) {
-    return FailParams(error, "keyframes: at most " + std::to_string(kMaxKeyframes) + ", got " +
+    return agents::FailParams(error, "keyframes: at most " + std::to_string(kMaxKeyframes) + ", got " +
                                  std::to_string(keyframes.size()));
   }
   for (size_t k = 0; k < keyframes.size(); ++k) {
     const AffineKeyframe& f = keyframes[k];
     const std::string where = "keyframes[" + std::to_string(k) + "].";
-    if (f.step < 0) return FailParams(error, where + "step must be >= 0, got " + std::to_string(f.step));
+    if (f.step < 0) return agents::FailParams(error, where + "step must be >= 0, got " + std::to_string(f.step));
     if (k > 0 && f.step <= keyframes[k - 1].step) {
-      return FailParams(error, where + "step must be greater than the previous keyframe's (" +
+      return agents::FailParams(error, where + "step must be greater than the previous keyframe's (" +
                   std::to_string(keyframes[k - 1].step) + "), got " + std::to_string(f.step));
     }
-    if (!CheckPositive(error, where + "scale_x", f.scale_x) || !CheckPositive(error, where + "scale_y", f.scale_y)) {
+    if (!agents::CheckPositive(error, where + "scale_x", f.scale_x) || !agents::CheckPositive(error, where + "scale_y", f.scale_y)) {
       return false;
     }
-    if (!std::isfinite(f.rotation_rad)) return FailParams(error, where + "rotation_rad must be finite");
-    if (!f.translation_m.allFinite()) return FailParams(error, where + "translation must be finite");
+    if (!std::isfinite(f.rotation_rad)) return agents::FailParams(error, where + "rotation_rad must be finite");
+    if (!f.translation_m.allFinite()) return agents::FailParams(error, where + "translation must be finite");
   }
   return true;
 }
@@ -79,7 +79,7 @@ AffineManeuver::Blend AffineManeuver::Locate(double step) const {
   return blend;
 }
 
-AffineTransform AffineManeuver::At(double step) const {
+agents::AffineTransform AffineManeuver::At(double step) const {
   const Blend b = Locate(step);
   const AffineKeyframe& f0 = params_.keyframes[b.from];
   const AffineKeyframe& f1 = params_.keyframes[b.to];
@@ -91,7 +91,7 @@ AffineTransform AffineManeuver::At(double step) const {
   return now.Transform();
 }
 
-AffineTransform AffineManeuver::RatePerStep(double step) const {
+agents::AffineTransform AffineManeuver::RatePerStep(double step) const {
   const Blend b = Locate(step);
   const AffineKeyframe& f0 = params_.keyframes[b.from];
   const AffineKeyframe& f1 = params_.keyframes[b.to];
@@ -99,7 +99,7 @@ AffineTransform AffineManeuver::RatePerStep(double step) const {
   const Eigen::Vector2d scale_rate = Eigen::Vector2d(f1.scale_x - f0.scale_x, f1.scale_y - f0.scale_y) * b.dh;
   const double angle = Lerp(f0.rotation_rad, f1.rotation_rad, b.h);
   const double angle_rate = (f1.rotation_rad - f0.rotation_rad) * b.dh;
-  AffineTransform rate;
+  agents::AffineTransform rate;
   // d(S R)/dt = S' R + S R' angle'
   rate.linear = scale_rate.asDiagonal() * Rotation(angle) +
                 Eigen::Matrix2d(scale.asDiagonal() * RotationDerivative(angle)) * angle_rate;
@@ -111,4 +111,4 @@ Eigen::Vector2d AffineManeuver::TargetVelocity(const Eigen::Vector2d& r, double 
   return RatePerStep(step).Apply(r) / time_step_s;
 }
 
-}  // namespace dream::agents
+}  // namespace dream::affine_formation

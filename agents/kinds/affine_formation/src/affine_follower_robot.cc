@@ -1,44 +1,44 @@
-#include "dream/agents/experiments/affine_follower_robot.h"
+#include "dream/affine_formation/affine_follower_robot.h"
 #include "dream/agents/fields/field_check.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-#include "dream/agents/experiments/formation_state_message.h"
+#include "dream/affine_formation/formation_state_message.h"
 #include "dream/agents/framework/number_text.h"
 #include "dream/agents/framework/params_check.h"
 
-namespace dream::agents {
+namespace dream::affine_formation {
 
 bool AffineFollowerParams::IsValid(std::string* error) const {
-  if (neighbours.empty()) return FailParams(error, "neighbours: a follower needs at least one weighted neighbour");
+  if (neighbours.empty()) return agents::FailParams(error, "neighbours: a follower needs at least one weighted neighbour");
   double gamma = 0.0;
   for (size_t k = 0; k < neighbours.size(); ++k) {
     const auto& [j, w] = neighbours[k];
-    if (j < 0) return FailParams(error, "neighbours: id " + std::to_string(j) + " is not a robot id");
+    if (j < 0) return agents::FailParams(error, "neighbours: id " + std::to_string(j) + " is not a robot id");
     if (!std::isfinite(w) || w == 0.0) {
-      return FailParams(error, "neighbours: weight of robot " + std::to_string(j) +
+      return agents::FailParams(error, "neighbours: weight of robot " + std::to_string(j) +
                                    " must be finite and non-zero, got " + std::to_string(w));
     }
     for (size_t m = 0; m < k; ++m) {
       if (neighbours[m].first == j) {
-        return FailParams(error, "neighbours: robot " + std::to_string(j) + " is listed twice");
+        return agents::FailParams(error, "neighbours: robot " + std::to_string(j) + " is listed twice");
       }
     }
     gamma += w;
   }
   if (law == Law::kZhao && !(gamma > 0.0)) {
-    return FailParams(error, "neighbours: the weights sum to " + std::to_string(gamma) +
+    return agents::FailParams(error, "neighbours: the weights sum to " + std::to_string(gamma) +
                                  "; Zhao's law divides by that sum, which must be > 0");
   }
-  return CheckFields(*this, error) && CheckPositive(error, "time_step_s", time_step_s);
+  return agents::CheckFields(*this, error) && agents::CheckPositive(error, "time_step_s", time_step_s);
 }
 
-AffineFollowerRobot::AffineFollowerRobot(int id, const RobotParams& robot_params, const HrvoRobotParams& hrvo,
+AffineFollowerRobot::AffineFollowerRobot(int id, const agents::RobotParams& robot_params, const agents::HrvoRobotParams& hrvo,
                                          const AffineFollowerParams& params)
-    : HrvoRobot(id, robot_params, hrvo),
-      params_(CheckedParams(params)),
+    : agents::HrvoRobot(id, robot_params, hrvo),
+      params_(agents::CheckedParams(params)),
       safety_radius_m_(hrvo.hrvo.safety_radius_m),
       drive_(robot_params.vel_gain, robot_params.ang_gain) {
   for (const auto& [j, w] : params_.neighbours) {
@@ -51,15 +51,15 @@ AffineFollowerRobot::AffineFollowerRobot(int id, const RobotParams& robot_params
   }
 }
 
-void AffineFollowerRobot::OnOdometry(const OdometryReading& reading) {
-  HrvoRobot::OnOdometry(reading);
+void AffineFollowerRobot::OnOdometry(const agents::OdometryReading& reading) {
+  agents::HrvoRobot::OnOdometry(reading);
   odometry_step_ = reading.step;
 }
 
-void AffineFollowerRobot::OnMovement(const MovementReading& reading) { sensed_ = reading; }
+void AffineFollowerRobot::OnMovement(const agents::MovementReading& reading) { sensed_ = reading; }
 
-std::optional<std::vector<uint8_t>> AffineFollowerRobot::OnRadio(const std::vector<RadioMessage>& heard) {
-  for (const RadioMessage& message : heard) {
+std::optional<std::vector<uint8_t>> AffineFollowerRobot::OnRadio(const std::vector<agents::RadioMessage>& heard) {
+  for (const agents::RadioMessage& message : heard) {
     auto it = std::find_if(neighbours_.begin(), neighbours_.end(),
                            [&](const Neighbour& n) { return n.id == message.sender_id; });
     if (it == neighbours_.end()) continue;  // not a graph neighbour: not part of the law
@@ -109,14 +109,14 @@ std::optional<Eigen::Vector2d> AffineFollowerRobot::LawVelocity(int64_t step) co
   return velocity;
 }
 
-UnicycleCommand AffineFollowerRobot::Update(int64_t step) {
+agents::UnicycleCommand AffineFollowerRobot::Update(int64_t step) {
   if (!has_odometry()) return {};
   preferred_mps_ = LawVelocity(step).value_or(Eigen::Vector2d::Zero());
   // HRVO sees the robots that are close, or that the preferred velocity
   // closes on fast enough to reach the safety radius within the horizon.
-  MovementReading engaged;
+  agents::MovementReading engaged;
   engaged.step = sensed_.step;
-  for (const NeighbourDetection& detection : sensed_.neighbours) {
+  for (const agents::NeighbourDetection& detection : sensed_.neighbours) {
     bool engage = detection.distance_m < params_.hrvo_engage_distance_m;
     if (!engage) {
       const Eigen::Vector2d towards = detection.RelativePosition() / detection.distance_m;
@@ -126,9 +126,9 @@ UnicycleCommand AffineFollowerRobot::Update(int64_t step) {
     if (engage) engaged.neighbours.push_back(detection);
   }
   hrvo_engaged_ = static_cast<int>(engaged.neighbours.size());
-  HrvoRobot::OnMovement(engaged);
+  agents::HrvoRobot::OnMovement(engaged);
   if (!params_.reversible_drive) return DriveWithVelocity(preferred_mps_);
   return LimitActuators(drive_.Map(AvoidCollisions(preferred_mps_), pose().z()));
 }
 
-}  // namespace dream::agents
+}  // namespace dream::affine_formation

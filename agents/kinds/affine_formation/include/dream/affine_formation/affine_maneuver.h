@@ -7,7 +7,7 @@
 
 #include "dream/agents/geometry/affine_transform.h"
 
-namespace dream::agents {
+namespace dream::affine_formation {
 
 /// One pose of the formation at a step: A = diag(scale_x, scale_y) R(rotation),
 /// b = translation. The nominal shape is rotated first and then scaled along
@@ -20,7 +20,7 @@ struct AffineKeyframe {
   double rotation_rad = 0.0;  ///< counter-clockwise
   Eigen::Vector2d translation_m = Eigen::Vector2d::Zero();
 
-  AffineTransform Transform() const;
+  agents::AffineTransform Transform() const;
 };
 
 /// The leaders' plan: keyframes at strictly increasing steps.
@@ -45,9 +45,9 @@ class AffineManeuver {
   explicit AffineManeuver(AffineManeuverParams params);
 
   /// The map at a (possibly fractional) step.
-  AffineTransform At(double step) const;
+  agents::AffineTransform At(double step) const;
   /// d/dstep of the map at `step` (per step; divide by the step length for per second).
-  AffineTransform RatePerStep(double step) const;
+  agents::AffineTransform RatePerStep(double step) const;
 
   /// Target and its velocity (m/s) of the point whose nominal position is `r`.
   Eigen::Vector2d Target(const Eigen::Vector2d& r, double step) const { return At(step).Apply(r); }
@@ -69,4 +69,4 @@ class AffineManeuver {
   AffineManeuverParams params_;
 };
 
-}  // namespace dream::agents
+}  // namespace dream::affine_formation

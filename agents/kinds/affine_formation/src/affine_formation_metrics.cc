@@ -1,4 +1,4 @@
-#include "dream/agents/experiments/affine_formation_metrics.h"
+#include "dream/affine_formation/affine_formation_metrics.h"
 #include "dream/agents/fields/field_check.h"
 
 #include <algorithm>
@@ -8,17 +8,17 @@
 #include "dream/agents/framework/params_check.h"
 #include "dream/agents/geometry/affine_transform.h"
 
-namespace dream::agents {
+namespace dream::affine_formation {
 namespace {
 
 // Distance from a point to an axis-aligned rectangle (0 inside).
-double DistanceToRectangle(const Eigen::Vector2d& p, const ObstacleView& o) {
+double DistanceToRectangle(const Eigen::Vector2d& p, const agents::ObstacleView& o) {
   const Eigen::Vector2d gap = ((p - o.center_m).cwiseAbs() - o.size_m / 2.0).cwiseMax(0.0);
   return gap.norm();
 }
 
-const ObstacleView* FindObstacle(const WorldSnapshot& world, int id) {
-  for (const ObstacleView& o : world.obstacles) {
+const agents::ObstacleView* FindObstacle(const agents::WorldSnapshot& world, int id) {
+  for (const agents::ObstacleView& o : world.obstacles) {
     if (o.id == id) return &o;
   }
   return nullptr;
@@ -30,18 +30,18 @@ bool AffineFormationMetricsParams::IsValid(std::string* error) const {
   std::vector<Eigen::Vector2d> leader_points;
   for (int id : leaders) {
     if (id < 0 || size_t(id) >= nominal_m.size())
-      return FailParams(error, "leaders: id " + std::to_string(id) + " is not a robot");
+      return agents::FailParams(error, "leaders: id " + std::to_string(id) + " is not a robot");
     leader_points.push_back(nominal_m[size_t(id)]);
   }
-  if (!AffineTransform::Fit(leader_points, leader_points)) {
-    return FailParams(error, "leaders: need at least 3 leaders whose nominal points are not collinear");
+  if (!agents::AffineTransform::Fit(leader_points, leader_points)) {
+    return agents::FailParams(error, "leaders: need at least 3 leaders whose nominal points are not collinear");
   }
-  if (!CheckFields(*this, error)) return false;
+  if (!agents::CheckFields(*this, error)) return false;
   for (const auto& pair : obstacle_pairs) {
-    if (pair[0] < 0 || pair[1] < 0) return FailParams(error, "obstacle_pairs: obstacle ids must be >= 0");
+    if (pair[0] < 0 || pair[1] < 0) return agents::FailParams(error, "obstacle_pairs: obstacle ids must be >= 0");
   }
   if (!(collision_diameter_m > 0.0) || !(collision_offset_m >= 0.0)) {
-    return FailParams(error, "collision_diameter_m must be > 0 and collision_offset_m >= 0");
+    return agents::FailParams(error, "collision_diameter_m must be > 0 and collision_offset_m >= 0");
   }
   return true;
 }
@@ -55,7 +55,7 @@ AffineFormationMetrics::AffineFormationMetrics(AffineFormationMetricsParams para
   pairs_.resize(params_.obstacle_pairs.size());
 }
 
-void AffineFormationMetrics::Observe(const WorldSnapshot& world) {
+void AffineFormationMetrics::Observe(const agents::WorldSnapshot& world) {
   if (world.poses.size() < params_.nominal_m.size()) return;
   std::vector<Eigen::Vector2d> from;
   std::vector<Eigen::Vector2d> to;
@@ -63,7 +63,7 @@ void AffineFormationMetrics::Observe(const WorldSnapshot& world) {
     from.push_back(params_.nominal_m[size_t(id)]);
     to.push_back(world.poses[size_t(id)].head<2>());
   }
-  const std::optional<AffineTransform> map = AffineTransform::Fit(from, to);
+  const std::optional<agents::AffineTransform> map = agents::AffineTransform::Fit(from, to);
   if (!map) {
     ++fit_failures_;
   } else {
@@ -91,8 +91,8 @@ void AffineFormationMetrics::Observe(const WorldSnapshot& world) {
   const double radius_m = params_.collision_diameter_m / 2.0;
   for (size_t k = 0; k < pairs_.size(); ++k) {
     PairStats& stats = pairs_[k];
-    const ObstacleView* a = FindObstacle(world, params_.obstacle_pairs[k][0]);
-    const ObstacleView* b = FindObstacle(world, params_.obstacle_pairs[k][1]);
+    const agents::ObstacleView* a = FindObstacle(world, params_.obstacle_pairs[k][0]);
+    const agents::ObstacleView* b = FindObstacle(world, params_.obstacle_pairs[k][1]);
     if (a == nullptr || b == nullptr) continue;
     bool contact = false;
     for (size_t i = 0; i < params_.nominal_m.size(); ++i) {
@@ -119,7 +119,7 @@ void AffineFormationMetrics::Observe(const WorldSnapshot& world) {
   }
 }
 
-void AffineFormationMetrics::Write(MetricsReport* report) const {
+void AffineFormationMetrics::Write(agents::MetricsReport* report) const {
   auto& v = report->values;
   v["follower_error_tolerance_m"] = params_.tolerance_m;
   v["convergence_window_start_step"] = static_cast<double>(params_.converged_from_step);
@@ -143,15 +143,15 @@ void AffineFormationMetrics::Write(MetricsReport* report) const {
 }
 
 // Goal: after convergence every follower stays within the tolerance.
-std::optional<GoalJudgement> AffineFormationMetrics::JudgeGoal(const MetricsReport& report) const {
+std::optional<agents::GoalJudgement> AffineFormationMetrics::JudgeGoal(const agents::MetricsReport& report) const {
   const double worst_m = report.Value("max_follower_error_after_convergence_m");
   const double tolerance_m = report.Value("follower_error_tolerance_m");
-  GoalJudgement goal;
+  agents::GoalJudgement goal;
   goal.met = worst_m >= 0.0 && tolerance_m > 0.0 && worst_m <= tolerance_m;
   goal.completion_step = static_cast<int64_t>(report.Value("settled_step"));
-  goal.detail = "worst follower error " + GoalJudgement::MetresApart(worst_m, tolerance_m) + (goal.met ? " <= " : " > ") +
-                GoalJudgement::Metres(tolerance_m);
+  goal.detail = "worst follower error " + agents::GoalJudgement::MetresApart(worst_m, tolerance_m) + (goal.met ? " <= " : " > ") +
+                agents::GoalJudgement::Metres(tolerance_m);
   return goal;
 }
 
-}  // namespace dream::agents
+}  // namespace dream::affine_formation

@@ -3,18 +3,18 @@
 #include <memory>
 #include <vector>
 
-#include "dream/agents/experiments/affine_follower_robot.h"
+#include "dream/affine_formation/affine_follower_robot.h"
 #include "dream/robotarium/robotarium_constants.h"
 #include "dream/agents/fields/field_names.h"
-#include "dream/agents/experiments/affine_formation_metrics.h"
-#include "dream/agents/experiments/affine_leader_robot.h"
+#include "dream/affine_formation/affine_formation_metrics.h"
+#include "dream/affine_formation/affine_leader_robot.h"
 #include "dream/kind_api/agent_parts_config.h"
 #include "dream/kind_api/experiment_builder.h"
 #include "dream/agents/hrvo/hrvo_robot.h"
-#include "dream/agents/experiments/stress_formation.h"
+#include "dream/affine_formation/stress_formation.h"
 #include "dream/config/config_node.h"
 
-namespace dream::agent_host {
+namespace dream::affine_formation {
 
 /// `kind: affine_formation`: the thesis's affine formation maneuver (section
 /// 3.4; Zhao 2018 section VII). The role radio carries the formation: its
@@ -38,14 +38,14 @@ class AffineFormationBuilder final : public kind_api::ExperimentBuilder {
   /// obstacle pairs' structure is read by the builder).
   struct Section {
     std::vector<Eigen::Vector2d> nominal_positions;
-    agents::AffineLeaderParams leader;
-    agents::AffineFollowerParams follower;
+    AffineLeaderParams leader;
+    AffineFollowerParams follower;
     agents::HrvoRobotParams hrvo = FormationHrvo();
     bool reversible_drive = true;
     double time_step_s = robotarium::RobotariumConstants::kTimeStepSeconds;
-    double equilibrium_tolerance_m = agents::StressFormationParams{}.equilibrium_tolerance_m;
+    double equilibrium_tolerance_m = StressFormationParams{}.equilibrium_tolerance_m;
     double min_target_spacing_m = 0.25;
-    agents::AffineFormationMetricsParams metrics;
+    AffineFormationMetricsParams metrics;
     static constexpr const char* kManeuverKey = "maneuver";
 
     template <typename Fields>
@@ -80,20 +80,20 @@ class AffineFormationBuilder final : public kind_api::ExperimentBuilder {
   std::unique_ptr<agents::ExperimentMetrics> MakeMetrics() const override;
   std::vector<std::vector<Eigen::Vector2d>> GoalsToDraw() const override;
 
-  const agents::StressFormation& formation() const { return *formation_; }
-  const agents::AffineManeuverParams& maneuver() const { return maneuver_; }
+  const StressFormation& formation() const { return *formation_; }
+  const AffineManeuverParams& maneuver() const { return maneuver_; }
 
  private:
   void ReadFormation(const config::ConfigNode& section, const Section& fields, int num_robots);
   void ReadFollowerLaw(const config::ConfigNode& section);
   void ReadMetrics(const config::ConfigNode& section, const Section& fields);
 
-  std::unique_ptr<agents::StressFormation> formation_;
-  agents::AffineManeuverParams maneuver_;
-  agents::AffineLeaderParams leader_;
-  agents::AffineFollowerParams follower_;
+  std::unique_ptr<StressFormation> formation_;
+  AffineManeuverParams maneuver_;
+  AffineLeaderParams leader_;
+  AffineFollowerParams follower_;
   agents::HrvoRobotParams hrvo_;
-  agents::AffineFormationMetricsParams metrics_;
+  AffineFormationMetricsParams metrics_;
 };
 
-}  // namespace dream::agent_host
+}  // namespace dream::affine_formation

@@ -11,7 +11,7 @@
 #include "dream/agents/geometry/reversible_si_to_uni.h"
 #include "dream/robotarium/robotarium_constants.h"
 
-namespace dream::agents {
+namespace dream::affine_formation {
 
 /// Parameters of AffineFollowerRobot.
 struct AffineFollowerParams {
@@ -59,12 +59,12 @@ struct AffineFollowerParams {
   template <typename Fields>
   void ListFields(Fields& fields) {
     fields.Choice("law", law, {{"zhao", Law::kZhao}, {"thesis", Law::kThesis}}, "follower law: `zhao` (normalised, the neighbours' velocities fed forward) or `thesis` (eq. 3.9, positions only)");
-    fields.Number("gain", gain, FieldRule::Positive(), "law gain (`zhao`: keep near 1; `thesis`: needs ~10 or more), 1/s");
-    fields.Number("max_speed_mps", max_speed_mps, FieldRule::RobotSpeed(), "cap on the law's velocity, m/s");
-    fields.Number("hrvo_engage_distance_m", hrvo_engage_distance_m, FieldRule::PositiveOrInfinite(),
+    fields.Number("gain", gain, agents::FieldRule::Positive(), "law gain (`zhao`: keep near 1; `thesis`: needs ~10 or more), 1/s");
+    fields.Number("max_speed_mps", max_speed_mps, agents::FieldRule::RobotSpeed(), "cap on the law's velocity, m/s");
+    fields.Number("hrvo_engage_distance_m", hrvo_engage_distance_m, agents::FieldRule::PositiveOrInfinite(),
                   "HRVO considers robots closer than this, m ...");
-    fields.Number("hrvo_horizon_s", hrvo_horizon_s, FieldRule::NonNegative(), "... or that the law's velocity would bring within the safety radius in this time, s");
-    fields.Whole("max_message_age_steps", max_message_age_steps, FieldRule::AtLeast(1),
+    fields.Number("hrvo_horizon_s", hrvo_horizon_s, agents::FieldRule::NonNegative(), "... or that the law's velocity would bring within the safety radius in this time, s");
+    fields.Whole("max_message_age_steps", max_message_age_steps, agents::FieldRule::AtLeast(1),
                  "older neighbour news is not used (the follower only avoids collisions), steps");
   }
 };
@@ -81,18 +81,18 @@ struct AffineFollowerParams {
 /// Until it has heard every neighbour (and while any neighbour's last word is
 /// older than max_message_age_steps) the law has no input: the robot only
 /// avoids collisions. Malformed payloads are counted and dropped.
-class AffineFollowerRobot final : public HrvoRobot {
+class AffineFollowerRobot final : public agents::HrvoRobot {
  public:
   /// @throws std::invalid_argument when params are invalid.
-  AffineFollowerRobot(int id, const RobotParams& robot_params, const HrvoRobotParams& hrvo,
+  AffineFollowerRobot(int id, const agents::RobotParams& robot_params, const agents::HrvoRobotParams& hrvo,
                       const AffineFollowerParams& params);
 
-  void OnOdometry(const OdometryReading& reading) override;
+  void OnOdometry(const agents::OdometryReading& reading) override;
   /// Kept until Update, which hands HRVO the robots that matter (see
   /// hrvo_engage_distance_m).
-  void OnMovement(const MovementReading& reading) override;
-  std::optional<std::vector<uint8_t>> OnRadio(const std::vector<RadioMessage>& heard) override;
-  UnicycleCommand Update(int64_t step) override;
+  void OnMovement(const agents::MovementReading& reading) override;
+  std::optional<std::vector<uint8_t>> OnRadio(const std::vector<agents::RadioMessage>& heard) override;
+  agents::UnicycleCommand Update(int64_t step) override;
 
   /// The law's velocity at the last update, before collision avoidance.
   const Eigen::Vector2d& preferred_velocity_mps() const { return preferred_mps_; }
@@ -124,9 +124,9 @@ class AffineFollowerRobot final : public HrvoRobot {
   Eigen::Vector2d preferred_mps_ = Eigen::Vector2d::Zero();
   int64_t odometry_step_ = 0;
   double safety_radius_m_;
-  ReversibleSiToUni drive_;
-  MovementReading sensed_;  // the movement sensor's latest, unfiltered
+  agents::ReversibleSiToUni drive_;
+  agents::MovementReading sensed_;  // the movement sensor's latest, unfiltered
   int hrvo_engaged_ = 0;
 };
 
-}  // namespace dream::agents
+}  // namespace dream::affine_formation

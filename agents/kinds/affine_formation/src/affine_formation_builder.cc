@@ -1,14 +1,14 @@
-#include "dream/agent_host/affine_formation_builder.h"
+#include "dream/affine_formation/affine_formation_builder.h"
 #include "dream/kind_api/field_reader.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "dream/kind_api/hrvo_config.h"
-#include "dream/agents/experiments/affine_maneuver.h"
+#include "dream/affine_formation/affine_maneuver.h"
 #include "dream/agents/framework/number_text.h"
 
-namespace dream::agent_host {
+namespace dream::affine_formation {
 namespace {
 
 using config::ConfigNode;
@@ -19,19 +19,19 @@ Eigen::Vector2d ReadPoint(const ConfigNode& node) {
   return {xy[0], xy[1]};
 }
 
-agents::AffineManeuverParams ReadManeuver(const ConfigNode& node) {
+AffineManeuverParams ReadManeuver(const ConfigNode& node) {
   if (!node.IsSequence() || node.size() == 0) {
     node.Fail("expected a list of keyframes {step, scale_x, scale_y, rotation_rad, translation}");
   }
-  if (node.size() > agents::AffineManeuverParams::kMaxKeyframes) {
-    node.Fail("at most " + std::to_string(agents::AffineManeuverParams::kMaxKeyframes) + " keyframes, got " +
+  if (node.size() > AffineManeuverParams::kMaxKeyframes) {
+    node.Fail("at most " + std::to_string(AffineManeuverParams::kMaxKeyframes) + " keyframes, got " +
               std::to_string(node.size()));
   }
-  agents::AffineManeuverParams maneuver;
+  AffineManeuverParams maneuver;
   for (size_t k = 0; k < node.size(); ++k) {
     const ConfigNode item = node[k];
     item.RejectUnknownKeys({"step", "scale_x", "scale_y", "rotation_rad", "translation"});
-    agents::AffineKeyframe frame;
+    AffineKeyframe frame;
     frame.step = item.Required("step").AsInt();
     frame.scale_x = item.GetDouble("scale_x", frame.scale_x);
     frame.scale_y = item.GetDouble("scale_y", frame.scale_y);
@@ -51,10 +51,10 @@ agents::AffineManeuverParams ReadManeuver(const ConfigNode& node) {
 // step, and a keyframe at step 10^12 costs no more than one at 1024.
 constexpr int64_t kChecksPerSegment = 1024;
 
-std::vector<int64_t> StepsToCheck(const agents::AffineManeuver& maneuver) {
+std::vector<int64_t> StepsToCheck(const AffineManeuver& maneuver) {
   std::vector<int64_t> steps{0};
   int64_t from = 0;
-  for (const agents::AffineKeyframe& frame : maneuver.keyframes()) {
+  for (const AffineKeyframe& frame : maneuver.keyframes()) {
     const int64_t span = frame.step - from;
     const int64_t count = std::min(span, kChecksPerSegment);
     for (int64_t k = 1; k <= count; ++k) {
@@ -70,9 +70,9 @@ std::vector<int64_t> StepsToCheck(const agents::AffineManeuver& maneuver) {
 // The plan must keep every target inside the arena and apart, or the robots
 // cannot follow it: checked at every step (StepsToCheck for long segments), so
 // a bad keyframe fails before the run.
-void CheckPlan(const ConfigNode& node, const agents::AffineManeuverParams& params, const std::vector<Eigen::Vector2d>& nominal,
+void CheckPlan(const ConfigNode& node, const AffineManeuverParams& params, const std::vector<Eigen::Vector2d>& nominal,
                const agents::HrvoParams& arena, double min_spacing_m) {
-  const agents::AffineManeuver maneuver(params);
+  const AffineManeuver maneuver(params);
   constexpr double kWallMarginM = 0.1;
   for (const int64_t step : StepsToCheck(maneuver)) {
     const agents::AffineTransform map = maneuver.At(double(step));
@@ -140,7 +140,7 @@ void AffineFormationBuilder::ReadFormation(const ConfigNode& section, const Sect
         "an affine formation needs `kind: role` (leaders publish, followers hear their "
         "neighbours in `graph`, the stress weights)");
   }
-  agents::StressFormationParams formation;
+  StressFormationParams formation;
   formation.weights = parts.radio.graph;
   formation.leaders = parts.radio.leaders;
   formation.nominal_m = fields.nominal_positions;
@@ -160,14 +160,14 @@ void AffineFormationBuilder::ReadFormation(const ConfigNode& section, const Sect
     }
     section.FailAt("equilibrium_tolerance_m", message);
   }
-  formation_ = std::make_unique<agents::StressFormation>(formation);
+  formation_ = std::make_unique<StressFormation>(formation);
 }
 
 void AffineFormationBuilder::ReadFollowerLaw(const ConfigNode& section) {
   const ConfigNode follower = section.Optional("follower");
   std::string error;
   for (int f : formation_->followers()) {
-    agents::AffineFollowerParams check = follower_;
+    AffineFollowerParams check = follower_;
     check.neighbours = formation_->Neighbours(f);
     if (!check.IsValid(&error)) {
       (follower.IsDefined() ? follower : section).Fail("follower " + std::to_string(f) + ": " + error);
@@ -181,8 +181,8 @@ void AffineFormationBuilder::ReadMetrics(const ConfigNode& section, const Sectio
   metrics_.leaders = formation_->leaders();
   const ConfigNode metrics = section.Optional("metrics");
   if (!metrics.IsDefined()) return;
-  if (metrics.Has(agents::AffineFormationMetricsParams::kObstaclePairsKey)) {
-    const ConfigNode pairs = metrics.Required(agents::AffineFormationMetricsParams::kObstaclePairsKey);
+  if (metrics.Has(AffineFormationMetricsParams::kObstaclePairsKey)) {
+    const ConfigNode pairs = metrics.Required(AffineFormationMetricsParams::kObstaclePairsKey);
     if (!pairs.IsSequence()) pairs.Fail("expected a list of [id, id] obstacle pairs");
     for (size_t k = 0; k < pairs.size(); ++k) {
       const ConfigNode pair = pairs[k];
@@ -198,22 +198,22 @@ void AffineFormationBuilder::ReadMetrics(const ConfigNode& section, const Sectio
 
 std::unique_ptr<agents::Robot> AffineFormationBuilder::MakeRobot(int robot_id, const agents::RobotParams& params) const {
   if (formation_->IsLeader(robot_id)) {
-    agents::AffineLeaderParams leader = leader_;
+    AffineLeaderParams leader = leader_;
     leader.nominal_m = formation_->nominal_m().at(static_cast<size_t>(robot_id));
-    return std::make_unique<agents::AffineLeaderRobot>(robot_id, params, leader);
+    return std::make_unique<AffineLeaderRobot>(robot_id, params, leader);
   }
-  agents::AffineFollowerParams follower = follower_;
+  AffineFollowerParams follower = follower_;
   follower.neighbours = formation_->Neighbours(robot_id);
-  return std::make_unique<agents::AffineFollowerRobot>(robot_id, params, hrvo_, follower);
+  return std::make_unique<AffineFollowerRobot>(robot_id, params, hrvo_, follower);
 }
 
 std::unique_ptr<agents::ExperimentMetrics> AffineFormationBuilder::MakeMetrics() const {
-  return std::make_unique<agents::AffineFormationMetrics>(metrics_);
+  return std::make_unique<AffineFormationMetrics>(metrics_);
 }
 
 std::vector<std::vector<Eigen::Vector2d>> AffineFormationBuilder::GoalsToDraw() const {
   // Where the maneuver leaves each robot's nominal position at its end.
-  const agents::AffineManeuver maneuver(maneuver_);
+  const AffineManeuver maneuver(maneuver_);
   std::vector<std::vector<Eigen::Vector2d>> goals;
   for (const Eigen::Vector2d& nominal : formation_->nominal_m()) {
     goals.push_back({maneuver.Target(nominal, static_cast<double>(maneuver.last_step()))});
@@ -221,4 +221,4 @@ std::vector<std::vector<Eigen::Vector2d>> AffineFormationBuilder::GoalsToDraw() 
   return goals;
 }
 
-}  // namespace dream::agent_host
+}  // namespace dream::affine_formation
