@@ -8,7 +8,6 @@
 #include "dream/agent_host/hrvo_circle_builder.h"
 #include "dream/agent_host/line_deployment_builder.h"
 #include "dream/agent_host/python_controller_builder.h"
-#include "dream/agent_host/voronoi_coverage_builder.h"
 
 namespace dream::agent_host {
 namespace {
@@ -19,7 +18,6 @@ std::string Described(const std::string& origin) { return origin.empty() ? std::
 
 void AddBuiltIns(ControllerRegistry& registry) {
   AddBuiltInKinds(registry, kBuiltIn);  // those of agents/kinds/, then the rest until they move there
-  registry.Add(kind_api::ControllerKind::Of<VoronoiCoverageBuilder>(), kBuiltIn);
   registry.Add(kind_api::ControllerKind::Of<HrvoCircleBuilder>(), kBuiltIn);
   registry.Add(kind_api::ControllerKind::Of<LineDeploymentBuilder>(), kBuiltIn);
   registry.Add(kind_api::ControllerKind::Of<CalibrationDriveBuilder>(), kBuiltIn);

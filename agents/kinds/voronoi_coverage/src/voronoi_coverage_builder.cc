@@ -1,7 +1,7 @@
-#include "dream/agent_host/voronoi_coverage_builder.h"
+#include "dream/voronoi_coverage/voronoi_coverage_builder.h"
 #include "dream/kind_api/field_reader.h"
 
-namespace dream::agent_host {
+namespace dream::voronoi_coverage {
 kind_api::AgentPartsConfig VoronoiCoverageBuilder::DefaultParts(int num_robots) {
   kind_api::AgentPartsConfig parts = kind_api::AgentPartsConfig::Defaults(num_robots);
   kind_api::SensorConfig obstacle = kind_api::SensorConfig::Every(kind_api::SensorConfig::Kind::kObstacle, num_robots, 1);
@@ -26,11 +26,11 @@ VoronoiCoverageBuilder::VoronoiCoverageBuilder(const config::ConfigNode& section
 }
 
 std::unique_ptr<agents::Robot> VoronoiCoverageBuilder::MakeRobot(int robot_id, const agents::RobotParams& params) const {
-  return std::make_unique<agents::VoronoiCoverageRobot>(robot_id, params, params_);
+  return std::make_unique<VoronoiCoverageRobot>(robot_id, params, params_);
 }
 
 std::unique_ptr<agents::ExperimentMetrics> VoronoiCoverageBuilder::MakeMetrics() const {
-  return std::make_unique<agents::VoronoiCoverageMetrics>(metrics_);
+  return std::make_unique<VoronoiCoverageMetrics>(metrics_);
 }
 
-}  // namespace dream::agent_host
+}  // namespace dream::voronoi_coverage

@@ -12,11 +12,11 @@
 #include "dream/agents/geometry/voronoi_cell.h"
 #include "dream/robotarium/robotarium_constants.h"
 
-namespace dream::agents {
+namespace dream::voronoi_coverage {
 
 /// Parameters of VoronoiCoverageRobot.
 struct VoronoiCoverageParams {
-  VoronoiCellParams cell;
+  agents::VoronoiCellParams cell;
   double gain = 1.0;            ///< proportional gain towards the centroid, 1/s; > 0
   double max_speed_mps = 0.15;  ///< cap on the planar velocity, also assumed of neighbours; (0, 0.2]
   double tolerance_m = 0.03;    ///< at the centroid within this distance the robot holds still (thesis: 0.02-0.05); > 0
@@ -28,12 +28,12 @@ struct VoronoiCoverageParams {
   template <typename Fields>
   void ListFields(Fields& fields) {
     cell.ListFields(fields);
-    fields.Number("gain", gain, FieldRule::Positive(), "proportional gain towards the goal, 1/s");
-    fields.Number("max_speed_mps", max_speed_mps, FieldRule::RobotSpeed(), "cap on the planar velocity, also assumed of neighbours, m/s");
-    fields.Number("tolerance_m", tolerance_m, FieldRule::Positive(), "within this distance of its goal a robot holds still (thesis: 0.02-0.05), m");
-    fields.Whole("done_after_still_steps", done_after_still_steps, FieldRule::AtLeast(1),
+    fields.Number("gain", gain, agents::FieldRule::Positive(), "proportional gain towards the goal, 1/s");
+    fields.Number("max_speed_mps", max_speed_mps, agents::FieldRule::RobotSpeed(), "cap on the planar velocity, also assumed of neighbours, m/s");
+    fields.Number("tolerance_m", tolerance_m, agents::FieldRule::Positive(), "within this distance of its goal a robot holds still (thesis: 0.02-0.05), m");
+    fields.Whole("done_after_still_steps", done_after_still_steps, agents::FieldRule::AtLeast(1),
                  "a robot reports done after holding still this many updates");
-    fields.Whole("radio_rounds_before_moving", radio_rounds_before_moving, FieldRule::AtLeast(0),
+    fields.Whole("radio_rounds_before_moving", radio_rounds_before_moving, agents::FieldRule::AtLeast(0),
                  "hold still until the radio ran this often (heard the neighbours)");
   }
 
@@ -69,13 +69,13 @@ struct VoronoiCoverageParams {
 /// speed, without the tolerance. With an empty cell it heads back across the
 /// constraints it violates. The one-step checks are exact for a robot period
 /// of 1 step; longer periods use the same straight-line prediction.
-class VoronoiCoverageRobot final : public Robot {
+class VoronoiCoverageRobot final : public agents::Robot {
  public:
   /// @throws std::invalid_argument when params are invalid.
-  VoronoiCoverageRobot(int id, const RobotParams& robot_params, const VoronoiCoverageParams& params);
+  VoronoiCoverageRobot(int id, const agents::RobotParams& robot_params, const VoronoiCoverageParams& params);
 
-  std::optional<std::vector<uint8_t>> OnRadio(const std::vector<RadioMessage>& heard) override;
-  UnicycleCommand Update(int64_t step) override;
+  std::optional<std::vector<uint8_t>> OnRadio(const std::vector<agents::RadioMessage>& heard) override;
+  agents::UnicycleCommand Update(int64_t step) override;
   bool done() const override { return still_updates_ >= params_.done_after_still_steps; }
 
   /// The goal of the last update (its cell's centroid); the own position before.
@@ -86,7 +86,7 @@ class VoronoiCoverageRobot final : public Robot {
   /// The forward speed closest to `v_mps` (towards zero) with which one step
   /// of `step_s` from `position` along `heading_rad` keeps every constraint,
   /// or does not worsen one already violated. Always allows 0.
-  static double SafeSpeed(double v_mps, const std::vector<HalfPlane>& constraints, const Eigen::Vector2d& position_m,
+  static double SafeSpeed(double v_mps, const std::vector<agents::HalfPlane>& constraints, const Eigen::Vector2d& position_m,
                           double heading_rad, double step_s);
   /// The forward speed closest to `v_mps` (towards zero) with which one step
   /// does not take the robot farther from `centroid_m`: what keeps every
@@ -108,4 +108,4 @@ class VoronoiCoverageRobot final : public Robot {
   Eigen::Vector2d goal_m_ = Eigen::Vector2d::Zero();
 };
 
-}  // namespace dream::agents
+}  // namespace dream::voronoi_coverage

@@ -7,16 +7,16 @@
 #include <utility>
 #include <vector>
 
-#include "dream/agents/experiments/coverage_cost.h"
+#include "dream/voronoi_coverage/coverage_cost.h"
 #include "dream/agents/fields/field_rule.h"
 #include "dream/agents/framework/experiment_metrics.h"
 #include "dream/agents/geometry/robotarium_arena.h"
 
-namespace dream::agents {
+namespace dream::voronoi_coverage {
 
 struct VoronoiCoverageMetricsParams {
-  Eigen::Vector2d arena_min_m = RobotariumArenaMin();  ///< the region to cover (minus obstacles)
-  Eigen::Vector2d arena_max_m = RobotariumArenaMax();
+  Eigen::Vector2d arena_min_m = agents::RobotariumArenaMin();  ///< the region to cover (minus obstacles)
+  Eigen::Vector2d arena_max_m = agents::RobotariumArenaMax();
   int sample_steps = 10;          ///< the cost series keeps every this many steps; >= 1
   /// Time per step, to turn pose changes into speeds; > 0.
   double step_s = robotarium::RobotariumConstants::kTimeStepSeconds;
@@ -30,9 +30,9 @@ struct VoronoiCoverageMetricsParams {
   /// The config keys of the coverage metrics (in `controller:` of kind voronoi_coverage).
   template <typename Fields>
   void ListFields(Fields& fields) {
-    fields.Whole("coverage_sample_steps", sample_steps, FieldRule::AtLeast(1), "the metrics' cost series keeps every this many steps");
-    fields.Number("still_speed_mps", still_speed_mps, FieldRule::Positive(), "metrics: a robot slower than this is still, m/s");
-    fields.Whole("still_window_steps", still_window_steps, FieldRule::AtLeast(1),
+    fields.Whole("coverage_sample_steps", sample_steps, agents::FieldRule::AtLeast(1), "the metrics' cost series keeps every this many steps");
+    fields.Number("still_speed_mps", still_speed_mps, agents::FieldRule::Positive(), "metrics: a robot slower than this is still, m/s");
+    fields.Whole("still_window_steps", still_window_steps, agents::FieldRule::AtLeast(1),
                  "metrics: settled once every robot was still this long, steps");
   }
 
@@ -52,13 +52,13 @@ struct VoronoiCoverageMetricsParams {
 ///     centre to an obstacle rectangle (obstacles are the thesis's point),
 ///   obstacle_contact_steps: steps where a robot's collision disc (as the
 ///     Robotarium places it) touched an obstacle.
-class VoronoiCoverageMetrics final : public ExperimentMetrics {
+class VoronoiCoverageMetrics final : public agents::ExperimentMetrics {
  public:
   /// @throws std::invalid_argument when params are invalid.
   explicit VoronoiCoverageMetrics(const VoronoiCoverageMetricsParams& params);
-  void Observe(const WorldSnapshot& world) override;
-  void Write(MetricsReport* report) const override;
-  std::optional<GoalJudgement> JudgeGoal(const MetricsReport& report) const override;
+  void Observe(const agents::WorldSnapshot& world) override;
+  void Write(agents::MetricsReport* report) const override;
+  std::optional<agents::GoalJudgement> JudgeGoal(const agents::MetricsReport& report) const override;
 
   const std::vector<std::pair<int64_t, double>>& cost_series() const { return series_; }
   double max_rise_m4() const { return max_rise_m4_; }
@@ -82,4 +82,4 @@ class VoronoiCoverageMetrics final : public ExperimentMetrics {
   int64_t contact_steps_ = 0;
 };
 
-}  // namespace dream::agents
+}  // namespace dream::voronoi_coverage

@@ -1,4 +1,4 @@
-#include "dream/agents/experiments/voronoi_coverage_metrics.h"
+#include "dream/voronoi_coverage/voronoi_coverage_metrics.h"
 #include "dream/agents/fields/field_check.h"
 
 #include <cstdio>
@@ -6,24 +6,24 @@
 
 #include "dream/agents/framework/params_check.h"
 
-namespace dream::agents {
+namespace dream::voronoi_coverage {
 
 bool VoronoiCoverageMetricsParams::IsValid(std::string* error) const {
-  if (!CheckArena(error, arena_min_m, arena_max_m) || !CheckFields(*this, error) ||
-      !CheckPositive(error, "step_s", step_s)) {
+  if (!agents::CheckArena(error, arena_min_m, arena_max_m) || !agents::CheckFields(*this, error) ||
+      !agents::CheckPositive(error, "step_s", step_s)) {
     return false;
   }
   if (!(std::isfinite(collision_offset_m) && collision_offset_m >= 0.0) ||
       !(std::isfinite(collision_radius_m) && collision_radius_m >= 0.0)) {
-    return FailParams(error, "collision_offset_m and collision_radius_m must be >= 0");
+    return agents::FailParams(error, "collision_offset_m and collision_radius_m must be >= 0");
   }
   return true;
 }
 
 VoronoiCoverageMetrics::VoronoiCoverageMetrics(const VoronoiCoverageMetricsParams& params)
-    : params_(CheckedParams(params)), cost_(params.arena_min_m, params.arena_max_m) {}
+    : params_(agents::CheckedParams(params)), cost_(params.arena_min_m, params.arena_max_m) {}
 
-void VoronoiCoverageMetrics::Observe(const WorldSnapshot& world) {
+void VoronoiCoverageMetrics::Observe(const agents::WorldSnapshot& world) {
   std::vector<Eigen::Vector2d> positions;
   positions.reserve(world.poses.size());
   for (const Eigen::Vector3d& pose : world.poses) positions.push_back(pose.head<2>());
@@ -42,7 +42,7 @@ void VoronoiCoverageMetrics::Observe(const WorldSnapshot& world) {
     const Eigen::Vector2d centre = pose.head<2>();
     const Eigen::Vector2d heading(std::cos(pose.z()), std::sin(pose.z()));
     const Eigen::Vector2d disc = centre + params_.collision_offset_m * heading;
-    for (const ObstacleView& obstacle : world.obstacles) {
+    for (const agents::ObstacleView& obstacle : world.obstacles) {
       const Eigen::Vector2d half = obstacle.size_m / 2.0;
       const Eigen::Vector2d lo = obstacle.center_m - half;
       const Eigen::Vector2d hi = obstacle.center_m + half;
@@ -81,7 +81,7 @@ int64_t VoronoiCoverageMetrics::settled_step() const {
   return still_steps_ >= params_.still_window_steps ? still_since_step_ : -1;
 }
 
-void VoronoiCoverageMetrics::Write(MetricsReport* report) const {
+void VoronoiCoverageMetrics::Write(agents::MetricsReport* report) const {
   if (series_.empty()) return;
   std::vector<std::pair<int64_t, double>> series = series_;
   if (series.back().first != last_step_) series.emplace_back(last_step_, previous_cost_);
@@ -102,8 +102,8 @@ void VoronoiCoverageMetrics::Write(MetricsReport* report) const {
 // Goal: settled (every robot still for the last 30+ steps); or, where blocks
 // move to the last step and keep the robots giving way, covering: the cost
 // fell to half or less and never rose by more than 1 %.
-std::optional<GoalJudgement> VoronoiCoverageMetrics::JudgeGoal(const MetricsReport& report) const {
-  GoalJudgement goal;
+std::optional<agents::GoalJudgement> VoronoiCoverageMetrics::JudgeGoal(const agents::MetricsReport& report) const {
+  agents::GoalJudgement goal;
   goal.completion_step = static_cast<int64_t>(report.Value("settled_step"));
   goal.met = goal.completion_step >= 0;
   goal.detail = "settled";
@@ -120,4 +120,4 @@ std::optional<GoalJudgement> VoronoiCoverageMetrics::JudgeGoal(const MetricsRepo
   return goal;
 }
 
-}  // namespace dream::agents
+}  // namespace dream::voronoi_coverage

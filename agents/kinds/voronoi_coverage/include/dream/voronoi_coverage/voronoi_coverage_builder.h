@@ -5,11 +5,11 @@
 #include "dream/kind_api/agent_parts_config.h"
 #include "dream/agents/fields/field_names.h"
 #include "dream/kind_api/experiment_builder.h"
-#include "dream/agents/experiments/voronoi_coverage_metrics.h"
-#include "dream/agents/experiments/voronoi_coverage_robot.h"
+#include "dream/voronoi_coverage/voronoi_coverage_metrics.h"
+#include "dream/voronoi_coverage/voronoi_coverage_robot.h"
 #include "dream/config/config_node.h"
 
-namespace dream::agent_host {
+namespace dream::voronoi_coverage {
 
 /// `kind: voronoi_coverage` (thesis section 3.3): every robot heads for the
 /// centroid of its buffered Voronoi cell (VoronoiCoverageRobot).
@@ -23,8 +23,8 @@ class VoronoiCoverageBuilder final : public kind_api::ExperimentBuilder {
   static constexpr const char* kKind = "voronoi_coverage";
   /// The kind's section: the robots' and the metrics' keys, each named once.
   struct Section {
-    agents::VoronoiCoverageParams robot;
-    agents::VoronoiCoverageMetricsParams metrics;
+    VoronoiCoverageParams robot;
+    VoronoiCoverageMetricsParams metrics;
     template <typename Fields>
     void ListFields(Fields& fields) {
       robot.ListFields(fields);
@@ -44,8 +44,8 @@ class VoronoiCoverageBuilder final : public kind_api::ExperimentBuilder {
   std::unique_ptr<agents::ExperimentMetrics> MakeMetrics() const override;
 
  private:
-  agents::VoronoiCoverageParams params_;
-  agents::VoronoiCoverageMetricsParams metrics_;
+  VoronoiCoverageParams params_;
+  VoronoiCoverageMetricsParams metrics_;
 };
 
-}  // namespace dream::agent_host
+}  // namespace dream::voronoi_coverage

@@ -1,4 +1,4 @@
-#include "dream/agents/experiments/voronoi_coverage_robot.h"
+#include "dream/voronoi_coverage/voronoi_coverage_robot.h"
 #include "dream/agents/fields/field_check.h"
 
 #include <algorithm>
@@ -9,24 +9,24 @@
 #include "dream/agents/experiments/position_message.h"
 #include "dream/agents/framework/params_check.h"
 
-namespace dream::agents {
+namespace dream::voronoi_coverage {
 
 bool VoronoiCoverageParams::IsValid(std::string* error) const {
-  return cell.IsValid(error) && CheckFields(*this, error) && CheckPositive(error, "step_s", step_s);
+  return cell.IsValid(error) && agents::CheckFields(*this, error) && agents::CheckPositive(error, "step_s", step_s);
 }
 
-VoronoiCoverageRobot::VoronoiCoverageRobot(int id, const RobotParams& robot_params,
+VoronoiCoverageRobot::VoronoiCoverageRobot(int id, const agents::RobotParams& robot_params,
                                            const VoronoiCoverageParams& params)
-    : Robot(id, robot_params), params_(CheckedParams(params)) {}
+    : agents::Robot(id, robot_params), params_(agents::CheckedParams(params)) {}
 
-std::optional<std::vector<uint8_t>> VoronoiCoverageRobot::OnRadio(const std::vector<RadioMessage>& heard) {
+std::optional<std::vector<uint8_t>> VoronoiCoverageRobot::OnRadio(const std::vector<agents::RadioMessage>& heard) {
   ++radio_rounds_;
   // Only robots heard now are in range; one out of range cannot share a cell
   // border within the disc (the radio reaches 2 R), so forget it.
   std::map<int, Known> neighbours;
-  for (const RadioMessage& message : heard) {
+  for (const agents::RadioMessage& message : heard) {
     if (message.sender_id == id()) continue;
-    const std::optional<PositionMessage> decoded = PositionMessage::Decode(message.payload, message.sender_id);
+    const std::optional<agents::PositionMessage> decoded = agents::PositionMessage::Decode(message.payload, message.sender_id);
     if (!decoded) {
       CountBadRadioMessage(message);
       const auto previous = neighbours_.find(message.sender_id);
@@ -37,15 +37,15 @@ std::optional<std::vector<uint8_t>> VoronoiCoverageRobot::OnRadio(const std::vec
   }
   neighbours_ = std::move(neighbours);
   if (!has_odometry()) return std::nullopt;
-  return PositionMessage{id(), pose().head<2>()}.Encode();
+  return agents::PositionMessage{id(), pose().head<2>()}.Encode();
 }
 
-double VoronoiCoverageRobot::SafeSpeed(double v_mps, const std::vector<HalfPlane>& constraints,
+double VoronoiCoverageRobot::SafeSpeed(double v_mps, const std::vector<agents::HalfPlane>& constraints,
                                        const Eigen::Vector2d& position_m, double heading_rad, double step_s) {
   const Eigen::Vector2d heading(std::cos(heading_rad), std::sin(heading_rad));
   double lower = -std::numeric_limits<double>::infinity();
   double upper = std::numeric_limits<double>::infinity();
-  for (const HalfPlane& plane : constraints) {
+  for (const agents::HalfPlane& plane : constraints) {
     // Moving v for one step changes the slack by -step_s v (n . h); allow
     // using up the slack there is, and none when it is already negative.
     const double rate = step_s * plane.normal.dot(heading);
@@ -60,7 +60,7 @@ double VoronoiCoverageRobot::SafeSpeed(double v_mps, const std::vector<HalfPlane
   return std::clamp(v_mps, lower, upper);
 }
 
-UnicycleCommand VoronoiCoverageRobot::Update(int64_t step) {
+agents::UnicycleCommand VoronoiCoverageRobot::Update(int64_t step) {
   if (!has_odometry() || radio_rounds_ < params_.radio_rounds_before_moving) {
     goal_m_ = pose().head<2>();
     return {};
@@ -72,23 +72,23 @@ UnicycleCommand VoronoiCoverageRobot::Update(int64_t step) {
   const int64_t hold_steps = last_update_step_ >= 0 ? std::max<int64_t>(step - last_update_step_, 1) : 1;
   last_update_step_ = step;
   const double horizon_s = params_.step_s * static_cast<double>(hold_steps);
-  std::vector<VoronoiNeighbour> neighbours;
+  std::vector<agents::VoronoiNeighbour> neighbours;
   neighbours.reserve(neighbours_.size());
   for (const auto& [neighbour_id, known] : neighbours_) {
     // It may have moved since it spoke, and may move while this command holds.
     const double age_s = params_.step_s * static_cast<double>(std::max<int64_t>(step - known.sent_step, 0));
     neighbours.push_back({known.position_m, params_.max_speed_mps * (age_s + horizon_s)});
   }
-  const VoronoiCell cell(params_.cell, position, neighbours, obstacles().closest_points_m, obstacles().rectangles);
+  const agents::VoronoiCell cell(params_.cell, position, neighbours, obstacles().closest_points_m, obstacles().rectangles);
 
   bool inside = true;
-  for (const HalfPlane& plane : cell.constraints()) inside = inside && plane.Contains(position);
+  for (const agents::HalfPlane& plane : cell.constraints()) inside = inside && plane.Contains(position);
   if (!cell.empty()) {
     goal_m_ = cell.goal_m();
   } else {
     // Squeezed out of every feasible point: head back across the violated lines.
     Eigen::Vector2d push = Eigen::Vector2d::Zero();
-    for (const HalfPlane& plane : cell.constraints()) push += std::min(plane.Slack(position), 0.0) * plane.normal;
+    for (const agents::HalfPlane& plane : cell.constraints()) push += std::min(plane.Slack(position), 0.0) * plane.normal;
     goal_m_ = position + push;
   }
   const Eigen::Vector2d error = goal_m_ - position;
@@ -103,7 +103,7 @@ UnicycleCommand VoronoiCoverageRobot::Update(int64_t step) {
   if (!(velocity.norm() <= params_.max_speed_mps) || !inside) {
     velocity *= velocity.norm() > 0.0 ? params_.max_speed_mps / velocity.norm() : 0.0;
   }
-  UnicycleCommand command = LimitActuators(DxiToDxu(velocity));
+  agents::UnicycleCommand command = LimitActuators(DxiToDxu(velocity));
   // Slowing down never raises a wheel's speed, so the limits still hold.
   command.v_mps = SafeSpeed(command.v_mps, cell.constraints(), position, heading, horizon_s);
   if (inside) {
@@ -124,4 +124,4 @@ double VoronoiCoverageRobot::DescentSpeed(double v_mps, const Eigen::Vector2d& c
   return limit_mps >= 0.0 ? std::clamp(v_mps, 0.0, limit_mps) : std::clamp(v_mps, limit_mps, 0.0);
 }
 
-}  // namespace dream::agents
+}  // namespace dream::voronoi_coverage

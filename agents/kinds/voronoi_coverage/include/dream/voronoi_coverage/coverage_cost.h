@@ -5,7 +5,7 @@
 
 #include "dream/agents/framework/world_snapshot.h"
 
-namespace dream::agents {
+namespace dream::voronoi_coverage {
 
 /// The coverage cost of robot positions p_i over the free arena Q (the arena
 /// minus the obstacles): H = integral over Q of min_i ||q - p_i||^2 dq, in
@@ -23,11 +23,11 @@ class CoverageCost {
   CoverageCost(const Eigen::Vector2d& arena_min_m, const Eigen::Vector2d& arena_max_m);
 
   /// Robots at the same position count once (they cover the same points).
-  double Evaluate(const std::vector<Eigen::Vector2d>& positions_m, const std::vector<ObstacleView>& obstacles) const;
+  double Evaluate(const std::vector<Eigen::Vector2d>& positions_m, const std::vector<agents::ObstacleView>& obstacles) const;
 
  private:
   Eigen::Vector2d arena_min_m_;
   Eigen::Vector2d arena_max_m_;
 };
 
-}  // namespace dream::agents
+}  // namespace dream::voronoi_coverage
