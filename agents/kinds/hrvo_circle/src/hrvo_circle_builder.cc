@@ -1,13 +1,13 @@
-#include "dream/agent_host/hrvo_circle_builder.h"
+#include "dream/hrvo_circle/hrvo_circle_builder.h"
 
 #include <cmath>
 
-#include "dream/agents/experiments/formation_sequence_metrics.h"
+#include "dream/hrvo_circle/formation_sequence_metrics.h"
 #include "dream/kind_api/field_reader.h"
 #include "dream/agents/framework/number_text.h"
 #include "dream/robotarium/robotarium_constants.h"
 
-namespace dream::agent_host {
+namespace dream::hrvo_circle {
 
 kind_api::AgentPartsConfig HrvoCircleBuilder::DefaultParts(int num_robots) {
   kind_api::AgentPartsConfig parts = kind_api::AgentPartsConfig::ThesisHrvoParts(num_robots);
@@ -53,20 +53,20 @@ HrvoCircleBuilder::HrvoCircleBuilder(const config::ConfigNode& section, int num_
       }
     }
   }
-  agents::CircleFormationParams check = params_;
+  CircleFormationParams check = params_;
   check.goals_m = {Eigen::Vector2d::Zero()};
   std::string error;
   if (!check.IsValid(&error)) section.FailAtField(error);
 }
 
 std::unique_ptr<agents::Robot> HrvoCircleBuilder::MakeRobot(int robot_id, const agents::RobotParams& params) const {
-  agents::CircleFormationParams robot = params_;
+  CircleFormationParams robot = params_;
   for (const auto& formation : formations_) robot.goals_m.push_back(formation.at(static_cast<size_t>(robot_id)));
-  return std::make_unique<agents::CircleFormationRobot>(robot_id, params, hrvo_, robot);
+  return std::make_unique<CircleFormationRobot>(robot_id, params, hrvo_, robot);
 }
 
 std::unique_ptr<agents::ExperimentMetrics> HrvoCircleBuilder::MakeMetrics() const {
-  return std::make_unique<agents::FormationSequenceMetrics>(formations_, params_.tolerance_m);
+  return std::make_unique<FormationSequenceMetrics>(formations_, params_.tolerance_m);
 }
 
 std::vector<std::vector<Eigen::Vector2d>> HrvoCircleBuilder::GoalsToDraw() const {
@@ -77,4 +77,4 @@ std::vector<std::vector<Eigen::Vector2d>> HrvoCircleBuilder::GoalsToDraw() const
   return goals;
 }
 
-}  // namespace dream::agent_host
+}  // namespace dream::hrvo_circle

@@ -4,11 +4,11 @@
 #include <string>
 #include <vector>
 
-#include "dream/agents/experiments/formation_progress.h"
+#include "dream/hrvo_circle/formation_progress.h"
 #include "dream/agents/fields/field_rule.h"
 #include "dream/agents/hrvo/hrvo_robot.h"
 
-namespace dream::agents {
+namespace dream::hrvo_circle {
 
 /// Parameters of CircleFormationRobot.
 struct CircleFormationParams {
@@ -37,10 +37,10 @@ struct CircleFormationParams {
   /// The config keys (`controller:` of kind hrvo_circle), once for reading, checking and the docs.
   template <typename Fields>
   void ListFields(Fields& fields) {
-    fields.Number("tolerance_m", tolerance_m, FieldRule::Positive(), "a point counts as reached within this distance (also the metrics' test), m");
-    fields.Number("max_speed_mps", max_speed_mps, FieldRule::RobotSpeed(), "preferred speed towards the point (the thesis's `v_max`), m/s");
-    fields.Number("gain", gain, FieldRule::Positive(), "preferred speed = min(`max_speed_mps`, `gain` x distance to the point), 1/s. 0.8 = 1/(e T) for the lab's loop delay T ~ 0.45 s (pose to motion): no overshoot while `gain` T <= 1/e. >= `max_speed_mps` / `tolerance_m` drives at full speed up to the tolerance (the thesis)");
-    fields.Number("stop_m", stop_m, FieldRule::Finite(),
+    fields.Number("tolerance_m", tolerance_m, agents::FieldRule::Positive(), "a point counts as reached within this distance (also the metrics' test), m");
+    fields.Number("max_speed_mps", max_speed_mps, agents::FieldRule::RobotSpeed(), "preferred speed towards the point (the thesis's `v_max`), m/s");
+    fields.Number("gain", gain, agents::FieldRule::Positive(), "preferred speed = min(`max_speed_mps`, `gain` x distance to the point), 1/s. 0.8 = 1/(e T) for the lab's loop delay T ~ 0.45 s (pose to motion): no overshoot while `gain` T <= 1/e. >= `max_speed_mps` / `tolerance_m` drives at full speed up to the tolerance (the thesis)");
+    fields.Number("stop_m", stop_m, agents::FieldRule::Finite(),
                   "a robot that reached its point (within `tolerance_m`) drives on until within `stop_m`, then holds until pushed out of `tolerance_m`; done only from `stop_m` on, so it settles inside the line the goal is judged by, m, > 0 and <= `tolerance_m`");
   }
   /// False with a message naming the field, its value and the allowed range.
@@ -66,14 +66,14 @@ struct CircleFormationParams {
 /// arrived). Done only from stop_m, not from the tolerance_m line itself: a
 /// last robot creeping over that line would report done by a pose that is
 /// off by noise or age, and the run could stop with it just outside.
-class CircleFormationRobot final : public HrvoRobot {
+class CircleFormationRobot final : public agents::HrvoRobot {
  public:
   /// @throws std::invalid_argument when params are invalid.
-  CircleFormationRobot(int id, const RobotParams& robot_params, const HrvoRobotParams& hrvo_params,
+  CircleFormationRobot(int id, const agents::RobotParams& robot_params, const agents::HrvoRobotParams& hrvo_params,
                        const CircleFormationParams& params);
 
-  std::optional<std::vector<uint8_t>> OnRadio(const std::vector<RadioMessage>& heard) override;
-  UnicycleCommand Update(int64_t step) override;
+  std::optional<std::vector<uint8_t>> OnRadio(const std::vector<agents::RadioMessage>& heard) override;
+  agents::UnicycleCommand Update(int64_t step) override;
   bool done() const override { return reached_ == static_cast<int>(params_.goals_m.size()) && holding_; }
 
   /// How many formation points this robot has reached (the thesis's state).
@@ -90,4 +90,4 @@ class CircleFormationRobot final : public HrvoRobot {
   bool holding_ = false;  ///< came within stop_m and has not left tolerance_m since
 };
 
-}  // namespace dream::agents
+}  // namespace dream::hrvo_circle

@@ -5,12 +5,12 @@
 
 #include "dream/kind_api/agent_parts_config.h"
 #include "dream/agents/fields/field_names.h"
-#include "dream/agents/experiments/circle_formation_robot.h"
+#include "dream/hrvo_circle/circle_formation_robot.h"
 #include "dream/kind_api/experiment_builder.h"
 #include "dream/agents/hrvo/hrvo_robot.h"
 #include "dream/config/config_node.h"
 
-namespace dream::agent_host {
+namespace dream::hrvo_circle {
 
 /// `kind: hrvo_circle`: the thesis's HRVO experiment (section 3.1, Appendix
 /// B). Robot i's point is on a circle at angle 2 pi i / N; formation k
@@ -28,7 +28,7 @@ class HrvoCircleBuilder final : public kind_api::ExperimentBuilder {
     double radius_m = 0.85;
     Eigen::Vector2d center = Eigen::Vector2d::Zero();
     int formations = 3;
-    agents::CircleFormationParams robot;
+    CircleFormationParams robot;
     agents::HrvoRobotParams hrvo;
     template <typename Fields>
     void ListFields(Fields& fields) {
@@ -56,9 +56,9 @@ class HrvoCircleBuilder final : public kind_api::ExperimentBuilder {
 
  private:
   int num_robots_;
-  agents::CircleFormationParams params_;  // goals_m filled per robot
+  CircleFormationParams params_;  // goals_m filled per robot
   agents::HrvoRobotParams hrvo_;
   std::vector<std::vector<Eigen::Vector2d>> formations_;
 };
 
-}  // namespace dream::agent_host
+}  // namespace dream::hrvo_circle

@@ -1,4 +1,4 @@
-#include "dream/agents/experiments/circle_formation_robot.h"
+#include "dream/hrvo_circle/circle_formation_robot.h"
 #include "dream/agents/fields/field_check.h"
 
 #include <algorithm>
@@ -8,29 +8,29 @@
 #include "dream/agents/framework/number_text.h"
 #include "dream/agents/framework/params_check.h"
 
-namespace dream::agents {
+namespace dream::hrvo_circle {
 namespace {
 
 bool CheckStop(std::string* error, const CircleFormationParams& params) {
   if (params.stop_m > 0.0 && params.stop_m <= params.tolerance_m) return true;
-  return FailParams(error, "stop_m must be > 0 and <= tolerance_m (" + NumberText(params.tolerance_m) + "), got " +
-                               NumberText(params.stop_m));
+  return agents::FailParams(error, "stop_m must be > 0 and <= tolerance_m (" + agents::NumberText(params.tolerance_m) + "), got " +
+                               agents::NumberText(params.stop_m));
 }
 
 }  // namespace
 
 bool CircleFormationParams::IsValid(std::string* error) const {
-  if (goals_m.empty()) return FailParams(error, "goals_m must hold at least one point");
+  if (goals_m.empty()) return agents::FailParams(error, "goals_m must hold at least one point");
   for (size_t i = 0; i < goals_m.size(); ++i) {
-    if (!goals_m[i].allFinite()) return FailParams(error, "goals_m[" + std::to_string(i) + "] must be finite");
+    if (!goals_m[i].allFinite()) return agents::FailParams(error, "goals_m[" + std::to_string(i) + "] must be finite");
   }
-  return CheckAtLeast(error, "num_robots", num_robots, 1) && CheckFields(*this, error) && CheckStop(error, *this);
+  return agents::CheckAtLeast(error, "num_robots", num_robots, 1) && agents::CheckFields(*this, error) && CheckStop(error, *this);
 }
 
-CircleFormationRobot::CircleFormationRobot(int id, const RobotParams& robot_params,
-                                           const HrvoRobotParams& hrvo_params, const CircleFormationParams& params)
-    : HrvoRobot(id, robot_params, hrvo_params),
-      params_(CheckedParams(params)),
+CircleFormationRobot::CircleFormationRobot(int id, const agents::RobotParams& robot_params,
+                                           const agents::HrvoRobotParams& hrvo_params, const CircleFormationParams& params)
+    : agents::HrvoRobot(id, robot_params, hrvo_params),
+      params_(agents::CheckedParams(params)),
       progress_(params.num_robots, static_cast<int>(params.goals_m.size())) {
   if (id >= params.num_robots) {
     throw std::invalid_argument("robot id " + std::to_string(id) + " is not below num_robots " +
@@ -38,8 +38,8 @@ CircleFormationRobot::CircleFormationRobot(int id, const RobotParams& robot_para
   }
 }
 
-std::optional<std::vector<uint8_t>> CircleFormationRobot::OnRadio(const std::vector<RadioMessage>& heard) {
-  for (const RadioMessage& message : heard) {
+std::optional<std::vector<uint8_t>> CircleFormationRobot::OnRadio(const std::vector<agents::RadioMessage>& heard) {
+  for (const agents::RadioMessage& message : heard) {
     if (!progress_.Merge(message.payload)) CountBadRadioMessage(message);
   }
   progress_.Set(id(), reached_);
@@ -51,7 +51,7 @@ std::optional<std::vector<uint8_t>> CircleFormationRobot::OnRadio(const std::vec
   return progress_.Encode();
 }
 
-UnicycleCommand CircleFormationRobot::Update(int64_t step) {
+agents::UnicycleCommand CircleFormationRobot::Update(int64_t step) {
   (void)step;
   if (!has_odometry()) return {};
   const Eigen::Vector2d delta = params_.goals_m[static_cast<size_t>(goal_index_)] - pose().head<2>();
@@ -73,4 +73,4 @@ UnicycleCommand CircleFormationRobot::Update(int64_t step) {
   return DriveWithVelocity(preferred);
 }
 
-}  // namespace dream::agents
+}  // namespace dream::hrvo_circle

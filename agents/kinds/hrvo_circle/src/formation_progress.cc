@@ -1,4 +1,4 @@
-#include "dream/agents/experiments/formation_progress.h"
+#include "dream/hrvo_circle/formation_progress.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -7,7 +7,7 @@
 #include "dream/agents/framework/byte_reader.h"
 #include "dream/agents/framework/byte_writer.h"
 
-namespace dream::agents {
+namespace dream::hrvo_circle {
 
 FormationProgress::FormationProgress(int num_robots, int num_formations) : num_formations_(num_formations) {
   if (num_robots < 1) throw std::invalid_argument("num_robots must be >= 1, got " + std::to_string(num_robots));
@@ -18,7 +18,7 @@ FormationProgress::FormationProgress(int num_robots, int num_formations) : num_f
 }
 
 bool FormationProgress::Merge(const std::vector<uint8_t>& payload) {
-  ByteReader reader(payload);
+  agents::ByteReader reader(payload);
   if (reader.Int32() != static_cast<int32_t>(states_.size()) || !reader.ok()) return false;
   // Decode everything before touching states_: a bad tail must not leave a half merge.
   scratch_.resize(states_.size());
@@ -42,10 +42,10 @@ void FormationProgress::Set(int robot_id, int state) {
 int FormationProgress::MinState() const { return *std::min_element(states_.begin(), states_.end()); }
 
 std::vector<uint8_t> FormationProgress::Encode() const {
-  ByteWriter writer;
+  agents::ByteWriter writer;
   writer.Int32(static_cast<int32_t>(states_.size()));
   for (int value : states_) writer.Int32(value);
   return writer.Take();
 }
 
-}  // namespace dream::agents
+}  // namespace dream::hrvo_circle

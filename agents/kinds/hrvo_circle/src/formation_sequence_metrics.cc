@@ -1,14 +1,14 @@
-#include "dream/agents/experiments/formation_sequence_metrics.h"
+#include "dream/hrvo_circle/formation_sequence_metrics.h"
 
 #include <string>
 
-namespace dream::agents {
+namespace dream::hrvo_circle {
 
 FormationSequenceMetrics::FormationSequenceMetrics(std::vector<std::vector<Eigen::Vector2d>> formations_m,
                                                    double tolerance_m)
     : formations_m_(std::move(formations_m)), tolerance_m_(tolerance_m) {}
 
-void FormationSequenceMetrics::Observe(const WorldSnapshot& world) {
+void FormationSequenceMetrics::Observe(const agents::WorldSnapshot& world) {
   const size_t next = completed_steps_.size();
   if (next >= formations_m_.size()) return;
   const std::vector<Eigen::Vector2d>& points = formations_m_[next];
@@ -19,7 +19,7 @@ void FormationSequenceMetrics::Observe(const WorldSnapshot& world) {
   completed_steps_.push_back(world.step);
 }
 
-void FormationSequenceMetrics::Write(MetricsReport* report) const {
+void FormationSequenceMetrics::Write(agents::MetricsReport* report) const {
   report->values["formations_completed"] = static_cast<double>(completed_steps_.size());
   for (size_t k = 0; k < formations_m_.size(); ++k) {
     report->values["formation_" + std::to_string(k + 1) + "_completed_step"] =
@@ -33,7 +33,7 @@ void FormationSequenceMetrics::Write(MetricsReport* report) const {
 }
 
 // Goal: every formation completed (all_formations_completed_step).
-std::optional<GoalJudgement> FormationSequenceMetrics::JudgeGoal(const MetricsReport& report) const {
+std::optional<agents::GoalJudgement> FormationSequenceMetrics::JudgeGoal(const agents::MetricsReport& report) const {
   int formations = 0;
   for (const auto& [name, value] : report.values) {
     (void)value;
@@ -43,7 +43,7 @@ std::optional<GoalJudgement> FormationSequenceMetrics::JudgeGoal(const MetricsRe
       ++formations;
     }
   }
-  GoalJudgement goal;
+  agents::GoalJudgement goal;
   goal.completion_step = static_cast<int64_t>(report.Value("all_formations_completed_step"));
   goal.met = goal.completion_step >= 0;
   goal.detail = std::to_string(static_cast<int>(report.Value("formations_completed", 0.0))) + " of " +
@@ -51,4 +51,4 @@ std::optional<GoalJudgement> FormationSequenceMetrics::JudgeGoal(const MetricsRe
   return goal;
 }
 
-}  // namespace dream::agents
+}  // namespace dream::hrvo_circle

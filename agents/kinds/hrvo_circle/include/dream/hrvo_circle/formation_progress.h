@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace dream::agents {
+namespace dream::hrvo_circle {
 
 /// What one robot knows of everybody's progress through a sequence of
 /// formations (the thesis's Robot_c.robot_states): per robot, the highest
@@ -40,4 +40,4 @@ class FormationProgress {
   std::vector<int> scratch_;
 };
 
-}  // namespace dream::agents
+}  // namespace dream::hrvo_circle

@@ -6,7 +6,7 @@
 
 #include "dream/agents/framework/experiment_metrics.h"
 
-namespace dream::agents {
+namespace dream::hrvo_circle {
 
 /// Judges a sequence of formations from the poses alone: formation k counts
 /// as completed at the first step, after formation k-1 completed, where every
@@ -15,13 +15,13 @@ namespace dream::agents {
 /// Writes formations_completed, formation_<k>_completed_step (1-based k; -1
 /// when not completed), all_formations_completed_step and the step list
 /// formation_completed_steps.
-class FormationSequenceMetrics final : public ExperimentMetrics {
+class FormationSequenceMetrics final : public agents::ExperimentMetrics {
  public:
   /// @param formations_m formations_m[k][i] is robot i's point in formation k.
   FormationSequenceMetrics(std::vector<std::vector<Eigen::Vector2d>> formations_m, double tolerance_m);
-  void Observe(const WorldSnapshot& world) override;
-  void Write(MetricsReport* report) const override;
-  std::optional<GoalJudgement> JudgeGoal(const MetricsReport& report) const override;
+  void Observe(const agents::WorldSnapshot& world) override;
+  void Write(agents::MetricsReport* report) const override;
+  std::optional<agents::GoalJudgement> JudgeGoal(const agents::MetricsReport& report) const override;
 
   int completed() const { return static_cast<int>(completed_steps_.size()); }
   const std::vector<int64_t>& completed_steps() const { return completed_steps_; }
@@ -32,4 +32,4 @@ class FormationSequenceMetrics final : public ExperimentMetrics {
   std::vector<int64_t> completed_steps_;
 };
 
-}  // namespace dream::agents
+}  // namespace dream::hrvo_circle
