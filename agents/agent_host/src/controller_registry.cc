@@ -5,7 +5,6 @@
 #include "built_in_kinds.h"
 #include "dream/agent_host/calibration_drive_builder.h"
 #include "dream/agent_host/controller_plugin_loader.h"
-#include "dream/agent_host/line_deployment_builder.h"
 #include "dream/agent_host/python_controller_builder.h"
 
 namespace dream::agent_host {
@@ -17,7 +16,6 @@ std::string Described(const std::string& origin) { return origin.empty() ? std::
 
 void AddBuiltIns(ControllerRegistry& registry) {
   AddBuiltInKinds(registry, kBuiltIn);  // those of agents/kinds/, then the rest until they move there
-  registry.Add(kind_api::ControllerKind::Of<LineDeploymentBuilder>(), kBuiltIn);
   registry.Add(kind_api::ControllerKind::Of<CalibrationDriveBuilder>(), kBuiltIn);
   registry.Add(PythonControllerBuilder::Kind(), kBuiltIn);
 }

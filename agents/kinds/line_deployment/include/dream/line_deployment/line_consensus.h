@@ -4,7 +4,7 @@
 #include <optional>
 #include <vector>
 
-namespace dream::agents {
+namespace dream::line_deployment {
 
 /// A neighbour's position as its radio reported it.
 struct NeighbourPosition {
@@ -21,4 +21,4 @@ struct NeighbourPosition {
 std::optional<Eigen::Vector2d> LineConsensusTarget(int self_id, const std::vector<NeighbourPosition>& neighbours,
                                                    double spacing_m);
 
-}  // namespace dream::agents
+}  // namespace dream::line_deployment

@@ -1,10 +1,10 @@
-#include "dream/agent_host/line_deployment_builder.h"
+#include "dream/line_deployment/line_deployment_builder.h"
 #include "dream/kind_api/field_reader.h"
 
 #include "dream/kind_api/hrvo_config.h"
-#include "dream/agents/experiments/line_formation_metrics.h"
+#include "dream/line_deployment/line_formation_metrics.h"
 
-namespace dream::agent_host {
+namespace dream::line_deployment {
 
 Eigen::MatrixXd LineDeploymentBuilder::ThesisAdjacency() {
   Eigen::MatrixXd a(6, 6);
@@ -42,12 +42,12 @@ LineDeploymentBuilder::LineDeploymentBuilder(const config::ConfigNode& section, 
 }
 
 std::unique_ptr<agents::Robot> LineDeploymentBuilder::MakeRobot(int robot_id, const agents::RobotParams& params) const {
-  return std::make_unique<agents::LineDeploymentRobot>(robot_id, params, hrvo_, params_);
+  return std::make_unique<LineDeploymentRobot>(robot_id, params, hrvo_, params_);
 }
 
 std::unique_ptr<agents::ExperimentMetrics> LineDeploymentBuilder::MakeMetrics() const {
   // Eq. 3.7 as printed converges to x_i = c - id_i d: ids descend along x.
-  return std::make_unique<agents::LineFormationMetrics>(-params_.spacing_m, converged_m_);
+  return std::make_unique<LineFormationMetrics>(-params_.spacing_m, converged_m_);
 }
 
-}  // namespace dream::agent_host
+}  // namespace dream::line_deployment

@@ -7,10 +7,10 @@
 #include "dream/agents/fields/field_names.h"
 #include "dream/kind_api/experiment_builder.h"
 #include "dream/agents/hrvo/hrvo_robot.h"
-#include "dream/agents/experiments/line_deployment_robot.h"
+#include "dream/line_deployment/line_deployment_robot.h"
 #include "dream/config/config_node.h"
 
-namespace dream::agent_host {
+namespace dream::line_deployment {
 
 /// `kind: line_deployment`: the thesis's consensus line (section 3.2, eq.
 /// 3.7) over a graph radio; robots end on one horizontal line ordered by id,
@@ -27,7 +27,7 @@ class LineDeploymentBuilder final : public kind_api::ExperimentBuilder {
   static constexpr bool kGraphMustConnect = true;
   /// The kind's section: the robots', the metrics' and HRVO's keys, each named once.
   struct Section {
-    agents::LineDeploymentParams robot;
+    LineDeploymentParams robot;
     double converged_m = 0.02;
     agents::HrvoRobotParams hrvo;
     template <typename Fields>
@@ -51,9 +51,9 @@ class LineDeploymentBuilder final : public kind_api::ExperimentBuilder {
   std::unique_ptr<agents::ExperimentMetrics> MakeMetrics() const override;
 
  private:
-  agents::LineDeploymentParams params_;
+  LineDeploymentParams params_;
   agents::HrvoRobotParams hrvo_;
   double converged_m_ = 0.02;
 };
 
-}  // namespace dream::agent_host
+}  // namespace dream::line_deployment

@@ -8,10 +8,10 @@
 
 #include "dream/agents/fields/field_rule.h"
 #include "dream/agents/hrvo/hrvo_robot.h"
-#include "dream/agents/experiments/line_consensus.h"
+#include "dream/line_deployment/line_consensus.h"
 #include "dream/agents/geometry/robotarium_arena.h"
 
-namespace dream::agents {
+namespace dream::line_deployment {
 
 /// Parameters of LineDeploymentRobot.
 struct LineDeploymentParams {
@@ -40,23 +40,23 @@ struct LineDeploymentParams {
   /// margin anchors the line (the others reach consensus with it), so the
   /// line still forms, shifted. >= 0, and the arena must stay non-empty.
   double arena_margin_m = 0.15;
-  Eigen::Vector2d arena_min_m = RobotariumArenaMin();  ///< Robotarium arena, world frame
-  Eigen::Vector2d arena_max_m = RobotariumArenaMax();
+  Eigen::Vector2d arena_min_m = agents::RobotariumArenaMin();  ///< Robotarium arena, world frame
+  Eigen::Vector2d arena_max_m = agents::RobotariumArenaMax();
 
   /// The config keys (`controller:` of kind line_deployment), once for reading, checking and the docs.
   template <typename Fields>
   void ListFields(Fields& fields) {
-    fields.Number("spacing_m", spacing_m, FieldRule::Positive(), "d of eq. 3.7: spacing between consecutive ids, m (6 robots then span 2 m)");
-    fields.Number("gain", gain, FieldRule::Positive(), "preferred velocity = gain x (target - position), 1/s");
-    fields.Number("max_speed_mps", max_speed_mps, FieldRule::RobotSpeed(), "cap on the preferred speed, m/s");
-    fields.Number("tolerance_m", tolerance_m, FieldRule::Positive(), "a moving robot stops this close to its target, m ...");
-    fields.Number("resume_m", resume_m, FieldRule::Finite(),
+    fields.Number("spacing_m", spacing_m, agents::FieldRule::Positive(), "d of eq. 3.7: spacing between consecutive ids, m (6 robots then span 2 m)");
+    fields.Number("gain", gain, agents::FieldRule::Positive(), "preferred velocity = gain x (target - position), 1/s");
+    fields.Number("max_speed_mps", max_speed_mps, agents::FieldRule::RobotSpeed(), "cap on the preferred speed, m/s");
+    fields.Number("tolerance_m", tolerance_m, agents::FieldRule::Positive(), "a moving robot stops this close to its target, m ...");
+    fields.Number("resume_m", resume_m, agents::FieldRule::Finite(),
                   "... and a still one moves again when its target is farther than this, m, >= `tolerance_m`");
-    fields.Number("hold_avoid_range_m", hold_avoid_range_m, FieldRule::NonNegative(),
+    fields.Number("hold_avoid_range_m", hold_avoid_range_m, agents::FieldRule::NonNegative(),
                   "a still robot's HRVO considers only neighbours closer than this, m");
-    fields.Whole("settle_updates", settle_updates, FieldRule::Within(1, 100000),
+    fields.Whole("settle_updates", settle_updates, agents::FieldRule::Within(1, 100000),
                  "done after this many control updates in a row holding still");
-    fields.Number("arena_margin_m", arena_margin_m, FieldRule::NonNegative(),
+    fields.Number("arena_margin_m", arena_margin_m, agents::FieldRule::NonNegative(),
                   "targets are clamped this far inside the arena (a clamped robot anchors the line), m");
   }
   /// False with a message naming the field, its value and the allowed range.
@@ -69,15 +69,15 @@ struct LineDeploymentParams {
 /// (LineConsensusTarget). A neighbour's malformed payload (wrong size,
 /// non-finite value, id not the sender's) is counted and dropped; its last
 /// good position is kept. Holds still until it has heard from a neighbour.
-class LineDeploymentRobot final : public HrvoRobot {
+class LineDeploymentRobot final : public agents::HrvoRobot {
  public:
   /// @throws std::invalid_argument when params are invalid.
-  LineDeploymentRobot(int id, const RobotParams& robot_params, const HrvoRobotParams& hrvo_params,
+  LineDeploymentRobot(int id, const agents::RobotParams& robot_params, const agents::HrvoRobotParams& hrvo_params,
                       const LineDeploymentParams& params);
 
-  void OnMovement(const MovementReading& reading) override;
-  std::optional<std::vector<uint8_t>> OnRadio(const std::vector<RadioMessage>& heard) override;
-  UnicycleCommand Update(int64_t step) override;
+  void OnMovement(const agents::MovementReading& reading) override;
+  std::optional<std::vector<uint8_t>> OnRadio(const std::vector<agents::RadioMessage>& heard) override;
+  agents::UnicycleCommand Update(int64_t step) override;
   bool done() const override { return settled_updates_ >= params_.settle_updates; }
 
   /// The eq. 3.7 target from the neighbours heard so far, clamped into the
@@ -90,8 +90,8 @@ class LineDeploymentRobot final : public HrvoRobot {
   LineDeploymentParams params_;
   std::map<int, Eigen::Vector2d> neighbours_;  // by id: latest good position
   bool moving_ = true;
-  MovementReading near_;  // scratch: the neighbours a still robot avoids
+  agents::MovementReading near_;  // scratch: the neighbours a still robot avoids
   int settled_updates_ = 0;
 };
 
-}  // namespace dream::agents
+}  // namespace dream::line_deployment

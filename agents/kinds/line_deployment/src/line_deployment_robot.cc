@@ -1,4 +1,4 @@
-#include "dream/agents/experiments/line_deployment_robot.h"
+#include "dream/line_deployment/line_deployment_robot.h"
 #include "dream/agents/fields/field_check.h"
 
 #include <cmath>
@@ -8,43 +8,43 @@
 #include "dream/agents/framework/number_text.h"
 #include "dream/agents/framework/params_check.h"
 
-namespace dream::agents {
+namespace dream::line_deployment {
 
 bool LineDeploymentParams::IsValid(std::string* error) const {
-  if (!CheckFields(*this, error)) return false;
+  if (!agents::CheckFields(*this, error)) return false;
   if (!(resume_m >= tolerance_m) || !std::isfinite(resume_m)) {
-    return FailParams(error, "resume_m must be >= tolerance_m (" + NumberText(tolerance_m) + "), got " +
-                                 NumberText(resume_m));
+    return agents::FailParams(error, "resume_m must be >= tolerance_m (" + agents::NumberText(tolerance_m) + "), got " +
+                                 agents::NumberText(resume_m));
   }
   if (!(arena_margin_m >= 0.0) || !arena_min_m.allFinite() || !arena_max_m.allFinite() ||
       !((arena_max_m - arena_min_m).array() > 2.0 * arena_margin_m).all()) {
-    return FailParams(error, "arena_margin_m must be >= 0 and leave room inside the arena, got " +
-                                 NumberText(arena_margin_m));
+    return agents::FailParams(error, "arena_margin_m must be >= 0 and leave room inside the arena, got " +
+                                 agents::NumberText(arena_margin_m));
   }
   return true;
 }
 
-LineDeploymentRobot::LineDeploymentRobot(int id, const RobotParams& robot_params,
-                                         const HrvoRobotParams& hrvo_params, const LineDeploymentParams& params)
-    : HrvoRobot(id, robot_params, hrvo_params), params_(CheckedParams(params)) {}
+LineDeploymentRobot::LineDeploymentRobot(int id, const agents::RobotParams& robot_params,
+                                         const agents::HrvoRobotParams& hrvo_params, const LineDeploymentParams& params)
+    : agents::HrvoRobot(id, robot_params, hrvo_params), params_(agents::CheckedParams(params)) {}
 
-void LineDeploymentRobot::OnMovement(const MovementReading& reading) {
+void LineDeploymentRobot::OnMovement(const agents::MovementReading& reading) {
   if (moving_) {
-    HrvoRobot::OnMovement(reading);
+    agents::HrvoRobot::OnMovement(reading);
     return;
   }
   near_.step = reading.step;
   near_.neighbours.clear();
-  for (const NeighbourDetection& n : reading.neighbours) {
+  for (const agents::NeighbourDetection& n : reading.neighbours) {
     if (n.distance_m < params_.hold_avoid_range_m) near_.neighbours.push_back(n);
   }
-  HrvoRobot::OnMovement(near_);
+  agents::HrvoRobot::OnMovement(near_);
 }
 
-std::optional<std::vector<uint8_t>> LineDeploymentRobot::OnRadio(const std::vector<RadioMessage>& heard) {
-  for (const RadioMessage& message : heard) {
+std::optional<std::vector<uint8_t>> LineDeploymentRobot::OnRadio(const std::vector<agents::RadioMessage>& heard) {
+  for (const agents::RadioMessage& message : heard) {
     // A payload claiming another robot's id is as bad as a truncated one.
-    const std::optional<PositionMessage> neighbour = PositionMessage::Decode(message.payload, message.sender_id);
+    const std::optional<agents::PositionMessage> neighbour = agents::PositionMessage::Decode(message.payload, message.sender_id);
     if (!neighbour) {
       CountBadRadioMessage(message);
       continue;
@@ -52,7 +52,7 @@ std::optional<std::vector<uint8_t>> LineDeploymentRobot::OnRadio(const std::vect
     neighbours_[neighbour->id] = neighbour->position_m;
   }
   if (!has_odometry()) return std::nullopt;  // do not advertise a position we do not know
-  return PositionMessage{id(), pose().head<2>()}.Encode();
+  return agents::PositionMessage{id(), pose().head<2>()}.Encode();
 }
 
 std::optional<Eigen::Vector2d> LineDeploymentRobot::Target() const {
@@ -65,7 +65,7 @@ std::optional<Eigen::Vector2d> LineDeploymentRobot::Target() const {
   return Eigen::Vector2d(target->cwiseMax(params_.arena_min_m + margin).cwiseMin(params_.arena_max_m - margin));
 }
 
-UnicycleCommand LineDeploymentRobot::Update(int64_t step) {
+agents::UnicycleCommand LineDeploymentRobot::Update(int64_t step) {
   (void)step;
   if (!has_odometry()) return {};
   Eigen::Vector2d preferred = Eigen::Vector2d::Zero();
@@ -86,4 +86,4 @@ UnicycleCommand LineDeploymentRobot::Update(int64_t step) {
   return DriveWithVelocity(preferred);
 }
 
-}  // namespace dream::agents
+}  // namespace dream::line_deployment

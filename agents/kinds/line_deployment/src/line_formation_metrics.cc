@@ -1,14 +1,14 @@
-#include "dream/agents/experiments/line_formation_metrics.h"
+#include "dream/line_deployment/line_formation_metrics.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace dream::agents {
+namespace dream::line_deployment {
 
 LineFormationMetrics::LineFormationMetrics(double step_m, double converged_m, int series_every_steps)
     : step_m_(step_m), converged_m_(converged_m), series_every_steps_(std::max(1, series_every_steps)) {}
 
-double LineFormationMetrics::StraightnessError(const WorldSnapshot& world) {
+double LineFormationMetrics::StraightnessError(const agents::WorldSnapshot& world) {
   if (world.poses.empty()) return 0.0;
   double mean_y = 0.0;
   for (const Eigen::Vector3d& pose : world.poses) mean_y += pose.y();
@@ -18,7 +18,7 @@ double LineFormationMetrics::StraightnessError(const WorldSnapshot& world) {
   return worst;
 }
 
-double LineFormationMetrics::SpacingError(const WorldSnapshot& world, double step_m) {
+double LineFormationMetrics::SpacingError(const agents::WorldSnapshot& world, double step_m) {
   double worst = 0.0;
   for (size_t i = 0; i + 1 < world.poses.size(); ++i) {
     worst = std::max(worst, std::abs(world.poses[i + 1].x() - world.poses[i].x() - step_m));
@@ -26,7 +26,7 @@ double LineFormationMetrics::SpacingError(const WorldSnapshot& world, double ste
   return worst;
 }
 
-void LineFormationMetrics::Observe(const WorldSnapshot& world) {
+void LineFormationMetrics::Observe(const agents::WorldSnapshot& world) {
   straightness_m_ = StraightnessError(world);
   spacing_error_m_ = SpacingError(world, step_m_);
   last_step_ = world.step;
@@ -42,7 +42,7 @@ void LineFormationMetrics::Observe(const WorldSnapshot& world) {
   }
 }
 
-void LineFormationMetrics::Write(MetricsReport* report) const {
+void LineFormationMetrics::Write(agents::MetricsReport* report) const {
   report->values["final_line_straightness_error_m"] = straightness_m_;
   report->values["final_spacing_error_m"] = spacing_error_m_;
   report->values["converged_step"] = static_cast<double>(converged_step_);
@@ -59,15 +59,15 @@ void LineFormationMetrics::Write(MetricsReport* report) const {
 }
 
 // Goal: the line converged (both errors under converged_m from then on).
-std::optional<GoalJudgement> LineFormationMetrics::JudgeGoal(const MetricsReport& report) const {
-  GoalJudgement goal;
+std::optional<agents::GoalJudgement> LineFormationMetrics::JudgeGoal(const agents::MetricsReport& report) const {
+  agents::GoalJudgement goal;
   goal.completion_step = static_cast<int64_t>(report.Value("converged_step"));
   goal.met = goal.completion_step >= 0;
   goal.detail = goal.met ? "line converged"
                          : "line not converged: straightness " +
-                               GoalJudgement::Metres(report.Value("final_line_straightness_error_m")) + ", spacing " +
-                               GoalJudgement::Metres(report.Value("final_spacing_error_m"));
+                               agents::GoalJudgement::Metres(report.Value("final_line_straightness_error_m")) + ", spacing " +
+                               agents::GoalJudgement::Metres(report.Value("final_spacing_error_m"));
   return goal;
 }
 
-}  // namespace dream::agents
+}  // namespace dream::line_deployment

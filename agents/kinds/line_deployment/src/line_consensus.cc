@@ -1,6 +1,6 @@
-#include "dream/agents/experiments/line_consensus.h"
+#include "dream/line_deployment/line_consensus.h"
 
-namespace dream::agents {
+namespace dream::line_deployment {
 
 std::optional<Eigen::Vector2d> LineConsensusTarget(int self_id, const std::vector<NeighbourPosition>& neighbours,
                                                    double spacing_m) {
@@ -12,4 +12,4 @@ std::optional<Eigen::Vector2d> LineConsensusTarget(int self_id, const std::vecto
   return Eigen::Vector2d(sum / static_cast<double>(neighbours.size()));
 }
 
-}  // namespace dream::agents
+}  // namespace dream::line_deployment

@@ -5,7 +5,7 @@
 
 #include "dream/agents/framework/experiment_metrics.h"
 
-namespace dream::agents {
+namespace dream::line_deployment {
 
 /// Judges a line deployment from the poses alone, per step:
 ///   straightness error = max_i |y_i - mean y|,
@@ -16,16 +16,16 @@ namespace dream::agents {
 /// step) and final values, and converged_step: the first step from which
 /// both stay within `converged_m` to the end of the run (-1 if they do not
 /// at the end).
-class LineFormationMetrics final : public ExperimentMetrics {
+class LineFormationMetrics final : public agents::ExperimentMetrics {
  public:
   LineFormationMetrics(double step_m, double converged_m, int series_every_steps = 10);
-  void Observe(const WorldSnapshot& world) override;
-  void Write(MetricsReport* report) const override;
-  std::optional<GoalJudgement> JudgeGoal(const MetricsReport& report) const override;
+  void Observe(const agents::WorldSnapshot& world) override;
+  void Write(agents::MetricsReport* report) const override;
+  std::optional<agents::GoalJudgement> JudgeGoal(const agents::MetricsReport& report) const override;
 
   /// Errors of one set of poses, for tests and plotting.
-  static double StraightnessError(const WorldSnapshot& world);
-  static double SpacingError(const WorldSnapshot& world, double step_m);
+  static double StraightnessError(const agents::WorldSnapshot& world);
+  static double SpacingError(const agents::WorldSnapshot& world, double step_m);
 
  private:
   double step_m_;
@@ -39,4 +39,4 @@ class LineFormationMetrics final : public ExperimentMetrics {
   std::vector<std::pair<int64_t, double>> spacing_series_;
 };
 
-}  // namespace dream::agents
+}  // namespace dream::line_deployment
