@@ -3,7 +3,6 @@
 #include <stdexcept>
 
 #include "built_in_kinds.h"
-#include "dream/agent_host/calibration_drive_builder.h"
 #include "dream/agent_host/controller_plugin_loader.h"
 #include "dream/agent_host/python_controller_builder.h"
 
@@ -16,7 +15,6 @@ std::string Described(const std::string& origin) { return origin.empty() ? std::
 
 void AddBuiltIns(ControllerRegistry& registry) {
   AddBuiltInKinds(registry, kBuiltIn);  // those of agents/kinds/, then the rest until they move there
-  registry.Add(kind_api::ControllerKind::Of<CalibrationDriveBuilder>(), kBuiltIn);
   registry.Add(PythonControllerBuilder::Kind(), kBuiltIn);
 }
 

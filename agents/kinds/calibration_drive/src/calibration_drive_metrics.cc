@@ -1,14 +1,14 @@
-#include "dream/agents/experiments/calibration_drive_metrics.h"
+#include "dream/calibration_drive/calibration_drive_metrics.h"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
-#include "dream/agents/experiments/calibration_drive.h"
+#include "dream/calibration_drive/calibration_drive.h"
 #include "dream/robotarium/robotarium_constants.h"
 
-namespace dream::agents {
+namespace dream::calibration_drive {
 namespace {
 
 using robotarium::RobotariumConstants;
@@ -20,7 +20,7 @@ bool OutsideArena(const Eigen::Vector3d& pose) {
 
 }  // namespace
 
-void CalibrationDriveMetrics::Observe(const WorldSnapshot& world) {
+void CalibrationDriveMetrics::Observe(const agents::WorldSnapshot& world) {
   last_step_ = world.step;
   bool outside = false;
   std::vector<Eigen::Vector2d> fronts;
@@ -50,7 +50,7 @@ void CalibrationDriveMetrics::Observe(const WorldSnapshot& world) {
   }
 }
 
-void CalibrationDriveMetrics::Write(MetricsReport* report) const {
+void CalibrationDriveMetrics::Write(agents::MetricsReport* report) const {
   report->values["calibration_program_steps"] = static_cast<double>(CalibrationDrive::Steps());
   report->values["calibration_last_step"] = static_cast<double>(last_step_);
   report->values["boundary_error_steps"] = static_cast<double>(boundary_error_steps_);
@@ -59,12 +59,12 @@ void CalibrationDriveMetrics::Write(MetricsReport* report) const {
   report->values["first_collision_step"] = static_cast<double>(first_collision_step_);
 }
 
-std::optional<GoalJudgement> CalibrationDriveMetrics::JudgeGoal(const MetricsReport& report) const {
+std::optional<agents::GoalJudgement> CalibrationDriveMetrics::JudgeGoal(const agents::MetricsReport& report) const {
   const auto program_steps = static_cast<int64_t>(report.Value("calibration_program_steps"));
   const auto last_step = static_cast<int64_t>(report.Value("calibration_last_step"));
   const auto boundary = static_cast<int64_t>(report.Value("boundary_error_steps"));
   const auto collisions = static_cast<int64_t>(report.Value("collision_steps"));
-  GoalJudgement goal;
+  agents::GoalJudgement goal;
   // Missing figures read as -1: never met.
   const bool ended = program_steps > 0 && last_step >= program_steps;
   goal.met = ended && boundary == 0 && collisions == 0;
@@ -82,4 +82,4 @@ std::optional<GoalJudgement> CalibrationDriveMetrics::JudgeGoal(const MetricsRep
   return goal;
 }
 
-}  // namespace dream::agents
+}  // namespace dream::calibration_drive

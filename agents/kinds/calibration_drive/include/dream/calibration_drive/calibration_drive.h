@@ -6,7 +6,7 @@
 
 #include "dream/agents/framework/unicycle_command.h"
 
-namespace dream::agents {
+namespace dream::calibration_drive {
 
 /// The drive that shows `dream calibrate` what it fits: every robot, side by
 /// side, does the same open-loop program of steps from rest in v (0.05,
@@ -19,7 +19,7 @@ namespace dream::agents {
 class CalibrationDrive {
  public:
   /// The command at `step` (0 before step 0 and from the program's end on).
-  static UnicycleCommand CommandAt(int64_t step);
+  static agents::UnicycleCommand CommandAt(int64_t step);
   /// Steps the program lasts (about 47 s).
   static int64_t Steps();
   /// Start poses [x m, y m, theta rad] for `robots` robots (1..kMaxRobots):
@@ -30,4 +30,4 @@ class CalibrationDrive {
   static constexpr int kMaxRobots = 20;
 };
 
-}  // namespace dream::agents
+}  // namespace dream::calibration_drive

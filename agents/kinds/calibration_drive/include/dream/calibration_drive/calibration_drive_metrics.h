@@ -4,7 +4,7 @@
 
 #include "dream/agents/framework/experiment_metrics.h"
 
-namespace dream::agents {
+namespace dream::calibration_drive {
 
 /// The calibration drive's outcome: whether its program ran to its end
 /// clean, as the Robotarium's debug() judges poses: no robot centre outside
@@ -12,13 +12,13 @@ namespace dream::agents {
 /// their headings at most 0.135 m apart; RobotariumConstants). Writes
 /// calibration_last_step, calibration_program_steps, boundary_error_steps,
 /// collision_steps and the first step of each (-1: none).
-class CalibrationDriveMetrics final : public ExperimentMetrics {
+class CalibrationDriveMetrics final : public agents::ExperimentMetrics {
  public:
-  void Observe(const WorldSnapshot& world) override;
-  void Write(MetricsReport* report) const override;
+  void Observe(const agents::WorldSnapshot& world) override;
+  void Write(agents::MetricsReport* report) const override;
   /// Met: the program reached its last step with no boundary or collision
   /// error; completion_step is that step.
-  std::optional<GoalJudgement> JudgeGoal(const MetricsReport& report) const override;
+  std::optional<agents::GoalJudgement> JudgeGoal(const agents::MetricsReport& report) const override;
 
  private:
   int64_t last_step_ = -1;
@@ -28,4 +28,4 @@ class CalibrationDriveMetrics final : public ExperimentMetrics {
   int64_t first_collision_step_ = -1;
 };
 
-}  // namespace dream::agents
+}  // namespace dream::calibration_drive

@@ -1,18 +1,18 @@
-#include "dream/agents/experiments/calibration_drive.h"
+#include "dream/calibration_drive/calibration_drive.h"
 
 #include <stdexcept>
 #include <string>
 
 #include "dream/robotarium/robotarium_constants.h"
 
-namespace dream::agents {
+namespace dream::calibration_drive {
 namespace {
 
 constexpr double kDt = robotarium::RobotariumConstants::kTimeStepSeconds;
 
 struct Segment {
   double seconds;
-  UnicycleCommand command;
+  agents::UnicycleCommand command;
 };
 
 // Each move from rest holds at least 1.5 s (calibrate's steps from rest need
@@ -20,7 +20,7 @@ struct Segment {
 const std::vector<Segment>& Program() {
   static const std::vector<Segment> program = [] {
     std::vector<Segment> segments;
-    auto there_and_back = [&segments](double seconds, UnicycleCommand command) {
+    auto there_and_back = [&segments](double seconds, agents::UnicycleCommand command) {
       segments.push_back({seconds, command});
       segments.push_back({1.5, {}});
       segments.push_back({seconds, {-command.v_mps, -command.w_radps}});
@@ -44,7 +44,7 @@ int64_t StepsOf(double seconds) { return static_cast<int64_t>(seconds / kDt + 0.
 
 }  // namespace
 
-UnicycleCommand CalibrationDrive::CommandAt(int64_t step) {
+agents::UnicycleCommand CalibrationDrive::CommandAt(int64_t step) {
   int64_t start = 0;
   for (const Segment& segment : Program()) {
     const int64_t end = start + StepsOf(segment.seconds);
@@ -76,4 +76,4 @@ std::vector<Eigen::Vector3d> CalibrationDrive::StartPoses(int robots) {
   return poses;
 }
 
-}  // namespace dream::agents
+}  // namespace dream::calibration_drive

@@ -5,7 +5,7 @@
 #include "dream/kind_api/experiment_builder.h"
 #include "dream/config/config_node.h"
 
-namespace dream::agent_host {
+namespace dream::calibration_drive {
 
 /// `kind: calibration_drive`: every robot drives CalibrationDrive's open-loop
 /// program (config/calibration.yaml; `dream export --calibration`), and the
@@ -21,4 +21,4 @@ class CalibrationDriveBuilder final : public kind_api::ExperimentBuilder {
   std::unique_ptr<agents::ExperimentMetrics> MakeMetrics() const override;
 };
 
-}  // namespace dream::agent_host
+}  // namespace dream::calibration_drive
