@@ -53,6 +53,7 @@ ControllerFactory::ControllerFactory(const config::ConfigNode& section, int num_
   }
   parts_ = kind_api::AgentPartsConfig::Read(section, num_robots, entry->default_parts(num_robots), entry->graph_must_connect);
   builder_ = entry->make_builder(section, num_robots);
+  entry_ = entry;
 }
 
 ControllerFactory::~ControllerFactory() = default;

@@ -4,7 +4,6 @@
 
 #include "built_in_kinds.h"
 #include "dream/agent_host/controller_plugin_loader.h"
-#include "dream/agent_host/python_controller_builder.h"
 
 namespace dream::agent_host {
 namespace {
@@ -14,8 +13,7 @@ constexpr const char* kBuiltIn = "built in";
 std::string Described(const std::string& origin) { return origin.empty() ? std::string("unnamed") : origin; }
 
 void AddBuiltIns(ControllerRegistry& registry) {
-  AddBuiltInKinds(registry, kBuiltIn);  // those of agents/kinds/, then the rest until they move there
-  registry.Add(PythonControllerBuilder::Kind(), kBuiltIn);
+  AddBuiltInKinds(registry, kBuiltIn);
 }
 
 }  // namespace
@@ -34,6 +32,15 @@ std::shared_ptr<const ControllerRegistry> ControllerRegistry::ForConfig(const co
   registry->AddAll(BuiltIns(), kBuiltIn);
   ControllerPluginLoader::AddKinds(config, registry.get());
   return registry;
+}
+
+std::shared_ptr<const kind_api::ControllerKind> ControllerRegistry::KindOf(const config::ControllerConfig& config) {
+  const config::ConfigNode name = config.controller.Optional("kind");
+  if (!name.IsDefined() || name.IsMap() || name.IsSequence()) return nullptr;
+  std::shared_ptr<const ControllerRegistry> registry = ForConfig(config);
+  const kind_api::ControllerKind* kind = registry->Find(name.AsString());
+  if (kind == nullptr) return nullptr;
+  return {std::move(registry), kind};  // shares the registry's ownership
 }
 
 void ControllerRegistry::Add(kind_api::ControllerKind kind, const std::string& origin) {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "dream/kind_api/agent_parts_config.h"
+#include "dream/kind_api/controller_kind.h"
 #include "dream/kind_api/experiment_builder.h"
 #include "dream/agents/framework/robot_agent.h"
 #include "dream/config/config_node.h"
@@ -52,6 +53,8 @@ class ControllerFactory {
   std::vector<std::vector<Eigen::Vector2d>> GoalsToDraw() const { return builder_->GoalsToDraw(); }
 
   const std::string& kind() const { return kind_; }
+  /// What the registry says of that kind (where its robots run, its file, ...).
+  const kind_api::ControllerKind& registered_kind() const { return *entry_; }
   /// The robots' parts (timer, sensors, radio) as the config sets them.
   const kind_api::AgentPartsConfig& parts() const { return parts_; }
 
@@ -61,6 +64,7 @@ class ControllerFactory {
 
   std::shared_ptr<const ControllerRegistry> registry_;  // holds the kind this factory builds
   std::string kind_;
+  const kind_api::ControllerKind* entry_ = nullptr;  // in registry_
   int num_robots_;
   uint64_t run_seed_;
   kind_api::AgentPartsConfig parts_;

@@ -24,6 +24,12 @@ class ControllerRegistry {
   /// `config` names, loaded in order (ControllerPluginLoader).
   /// @throws config::ConfigError "FILE:LINE: plugins[i]: PATH: reason".
   static std::shared_ptr<const ControllerRegistry> ForConfig(const config::ControllerConfig& config);
+  /// The kind `config`'s section names, from ForConfig(config) (which it
+  /// keeps alive), so a tool asks the kind what it is (where its robots run,
+  /// its file) without building its agents; nullptr when the section names no
+  /// kind or an unknown one (ControllerFactory says why).
+  /// @throws config::ConfigError as ForConfig does.
+  static std::shared_ptr<const kind_api::ControllerKind> KindOf(const config::ControllerConfig& config);
 
   /// An empty registry (a plugin registers into one first, so a plugin that
   /// fails half way adds nothing).

@@ -11,14 +11,29 @@
 #include "dream/kind_api/robot_class_builder.h"
 #include "dream/agents/fields/field_table.h"
 #include "dream/config/config_node.h"
+#include "dream/config/controller_config.h"
 
 namespace dream::kind_api {
 
 /// What one experiment kind (`controller: {kind: NAME}`) brings to the
 /// ControllerFactory: its own config keys, the parts its robots get unless the
-/// config says otherwise, and how to build its ExperimentBuilder. Made from a
-/// Robot subclass alone (OfRobot) or from an ExperimentBuilder (Of).
+/// config says otherwise, how to build its ExperimentBuilder, and where its
+/// robots run. Made from a Robot subclass alone (OfRobot) or from an
+/// ExperimentBuilder (Of). The tools ask a run's kind these things (through
+/// the registry), never its name.
 struct ControllerKind {
+  /// Where a kind's robots run.
+  enum class Runtime {
+    /// C++ agents::Robots from the kind's ExperimentBuilder, hosted by an
+    /// agent_host::AgentHost; a Robotarium submission can only replay them.
+    kCpp,
+    /// The Python runtime (python/dream/), built there from `runtime_spec`:
+    /// in a process of its own on the bus (dream::python_host), or shipped in a
+    /// Robotarium submission (the export's controller strategy); the run's own
+    /// metrics and goal come from that runtime too (bridge::PythonRunMetrics).
+    kPython,
+  };
+
   std::string name;
   /// Keys of the `controller:` section besides the common kind, robot, sensors, radio.
   std::vector<std::string> keys;
@@ -29,6 +44,15 @@ struct ControllerKind {
   /// refuse them (the `python` kind: the Python class declares its keys).
   bool checks_own_keys = false;
   std::function<std::unique_ptr<ExperimentBuilder>(const config::ConfigNode& section, int num_robots)> make_builder;
+  Runtime runtime = Runtime::kCpp;
+  /// For Runtime::kPython: the controller spec the runtime builds every robot
+  /// from, as JSON (docs/python-runtime-contract.md), for a run's config.
+  /// @throws config::ConfigError as the factory does.
+  std::function<std::string(const config::ControllerConfig& config)> runtime_spec;
+  /// The key of the section naming the kind's own file by a path that a run
+  /// folder, an export, an import and a sweep keep beside their copy of the
+  /// config (the python kind's `module`: config::FileBesideConfig); empty: none.
+  std::string file_key;
   /// The kind's rows of the key table in config/README.md (`| key | default | meaning |`), made
   /// from the builder's field list when it has one (`Builder::Section`); empty otherwise.
   std::function<std::string()> key_table;

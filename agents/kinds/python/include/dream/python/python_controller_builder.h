@@ -4,11 +4,10 @@
 #include <string>
 #include <vector>
 
-#include "dream/kind_api/controller_kind.h"
 #include "dream/kind_api/experiment_builder.h"
 #include "dream/config/config_node.h"
 
-namespace dream::agent_host {
+namespace dream::python {
 
 /// The `python` kind: robots whose controller is a Python class,
 ///
@@ -24,8 +23,6 @@ class PythonControllerBuilder final : public kind_api::ExperimentBuilder {
  public:
   static constexpr const char* kKind = "python";
   static std::vector<const char*> Keys() { return {"module", "class"}; }
-  /// The registry entry: this builder, with the section's other keys left to Python.
-  static kind_api::ControllerKind Kind();
 
   /// @throws config::ConfigError when `module` is not a readable .py file
   ///         (relative paths are taken from the config file's folder) or
@@ -47,4 +44,4 @@ class PythonControllerBuilder final : public kind_api::ExperimentBuilder {
   std::string class_name_;
 };
 
-}  // namespace dream::agent_host
+}  // namespace dream::python

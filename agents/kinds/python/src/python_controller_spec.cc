@@ -1,14 +1,14 @@
-#include "dream/agent_host/python_controller_spec.h"
+#include "dream/python/python_controller_spec.h"
 
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
-#include "dream/agent_host/controller_factory.h"
-#include "dream/agent_host/python_controller_builder.h"
+#include "dream/kind_api/agent_parts_config.h"
+#include "dream/python/python_controller_builder.h"
 
-namespace dream::agent_host {
+namespace dream::python {
 namespace {
 
 using Json = nlohmann::ordered_json;
@@ -94,17 +94,15 @@ Json PartsJson(const kind_api::AgentPartsConfig& parts) {
 
 }  // namespace
 
-bool IsPythonController(const config::ControllerConfig& config) {
-  const config::ConfigNode kind = config.controller.Optional("kind");
-  return kind.IsDefined() && kind.AsString() == PythonControllerBuilder::kKind;
-}
-
 std::string PythonControllerSpecJson(const config::ControllerConfig& config) {
   const config::ConfigNode& section = config.controller;
-  if (!IsPythonController(config)) {
+  if (section.Required("kind").AsString() != PythonControllerBuilder::kKind) {
     section.Required("kind").Fail("expected kind python for a Python controller spec");
   }
-  const ControllerFactory factory(config);
+  // The parts and the builder as the factory reads them for this kind (its
+  // default parts, no graph rule), so the spec holds what the factory checked.
+  const kind_api::AgentPartsConfig parts = kind_api::AgentPartsConfig::Read(
+      section, config.num_robots, kind_api::AgentPartsConfig::Defaults(config.num_robots), false);
   const PythonControllerBuilder builder(section, config.num_robots);
   Json params = Json::object();
   static const std::vector<std::string> kNotOwn = {"kind", "module", "class", "robot", "sensors", "radio"};
@@ -124,8 +122,8 @@ std::string PythonControllerSpecJson(const config::ControllerConfig& config) {
                      {"module_line", section.Required("module").line()},
                      {"class_line", section.Required("class").line()},
                      {"params", params},
-                     {"parts", PartsJson(factory.parts())}};
+                     {"parts", PartsJson(parts)}};
   return spec.dump();
 }
 
-}  // namespace dream::agent_host
+}  // namespace dream::python

@@ -1,4 +1,4 @@
-#include "dream/agent_host/python_controller_builder.h"
+#include "dream/python/python_controller_builder.h"
 
 #include <cctype>
 #include <filesystem>
@@ -7,7 +7,7 @@
 
 #include "dream/config/controller_config.h"
 
-namespace dream::agent_host {
+namespace dream::python {
 namespace {
 
 namespace fs = std::filesystem;
@@ -21,12 +21,6 @@ bool IsPythonIdentifier(const std::string& text) {
 }
 
 }  // namespace
-
-kind_api::ControllerKind PythonControllerBuilder::Kind() {
-  kind_api::ControllerKind kind = kind_api::ControllerKind::Of<PythonControllerBuilder>();
-  kind.checks_own_keys = true;
-  return kind;
-}
 
 PythonControllerBuilder::PythonControllerBuilder(const config::ConfigNode& section, int num_robots) {
   (void)num_robots;
@@ -59,4 +53,4 @@ std::unique_ptr<agents::Robot> PythonControllerBuilder::MakeRobot(int robot_id, 
                          module_path_ + "), hosted by dream::python_host, not as a C++ agents::Robot");
 }
 
-}  // namespace dream::agent_host
+}  // namespace dream::python

@@ -4,7 +4,7 @@
 
 #include "dream/config/controller_config.h"
 
-namespace dream::agent_host {
+namespace dream::python {
 
 /// The controller spec of a run whose `controller:` is of kind python: what
 /// the Python runtime needs to build every robot's agent, as JSON (format 1,
@@ -15,11 +15,9 @@ namespace dream::agent_host {
 /// The same text feeds the Python agents (dream::python_host) and a
 /// submission of the controller strategy (bridge), so both build the same
 /// agents.
+/// The python kind's ControllerKind::runtime_spec.
 /// @throws config::ConfigError as ControllerFactory does, or when the kind is
 ///         not python.
 std::string PythonControllerSpecJson(const config::ControllerConfig& config);
 
-/// True when the run's controller is of kind python.
-bool IsPythonController(const config::ControllerConfig& config);
-
-}  // namespace dream::agent_host
+}  // namespace dream::python
