@@ -8,7 +8,7 @@
 #include "dream/line_deployment/line_deployment_builder.h"
 #include "dream/line_deployment/line_deployment_robot.h"
 #include "dream/line_deployment/line_formation_metrics.h"
-#include "dream/agents/experiments/position_message.h"
+#include "dream/agents/framework/position_message.h"
 #include "dream/config/config_error.h"
 
 namespace dream::agents {

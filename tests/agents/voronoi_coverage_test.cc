@@ -8,7 +8,7 @@
 #include "dream/agents/geometry/convex_polygon.h"
 #include "dream/voronoi_coverage/coverage_cost.h"
 #include "dream/agents/framework/obstacle_sensor.h"
-#include "dream/agents/experiments/position_message.h"
+#include "dream/agents/framework/position_message.h"
 #include "dream/agents/geometry/rectangle_union.h"
 #include "dream/agents/geometry/voronoi_cell.h"
 #include "dream/voronoi_coverage/voronoi_coverage_metrics.h"

@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "dream/affine_formation/formation_state_message.h"
-#include "dream/agents/experiments/position_message.h"
+#include "dream/agents/framework/position_message.h"
 #include "dream/applied_commands_t.hpp"
 #include "dream/lcm/lcm_typed.h"
 #include "dream/lcm/wire_layout_of.h"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "dream/agents/experiments/position_message.h"
+#include "dream/agents/framework/position_message.h"
 #include "dream/agents/framework/number_text.h"
 #include "dream/agents/framework/params_check.h"
 

@@ -6,7 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "dream/agents/experiments/position_message.h"
+#include "dream/agents/framework/position_message.h"
 #include "dream/agents/framework/params_check.h"
 
 namespace dream::voronoi_coverage {
