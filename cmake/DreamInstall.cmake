@@ -33,7 +33,9 @@ function(dream_library_targets dir out)
 endfunction()
 
 # What a controller builds against, as dream::<name>.
-set(DREAM_EXPORTED_LIBRARIES robotarium world config run_config msgs lcm run_log agents agent_host)
+# The built-in kinds (agents/kinds/) too: the agent host links them.
+set(DREAM_EXPORTED_LIBRARIES robotarium world config run_config msgs lcm run_log agents kind_api ${DREAM_BUILT_IN_KINDS}
+  agent_host)
 set(exported_targets)
 foreach(name IN LISTS DREAM_EXPORTED_LIBRARIES)
   set_target_properties(dream_${name} PROPERTIES EXPORT_NAME ${name})
@@ -65,9 +67,14 @@ install(DIRECTORY
     ${PROJECT_SOURCE_DIR}/sim/world/include/
     ${PROJECT_SOURCE_DIR}/sim/run_config/include/
     ${PROJECT_SOURCE_DIR}/agents/include/
+    ${PROJECT_SOURCE_DIR}/agents/kind_api/include/
     ${PROJECT_SOURCE_DIR}/agents/agent_host/include/
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
   FILES_MATCHING PATTERN "*.h")
+foreach(kind IN LISTS DREAM_BUILT_IN_KINDS)
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/agents/kinds/${kind}/include/
+    DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.h")
+endforeach()
 install(DIRECTORY ${PROJECT_BINARY_DIR}/lcmtypes/generated/cpp/
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
   FILES_MATCHING PATTERN "*.hpp")

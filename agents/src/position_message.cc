@@ -1,4 +1,4 @@
-#include "dream/agents/experiments/position_message.h"
+#include "dream/agents/framework/position_message.h"
 
 #include "dream/agents/framework/byte_reader.h"
 #include "dream/agents/framework/byte_writer.h"

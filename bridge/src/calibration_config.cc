@@ -4,12 +4,12 @@
 #include <stdexcept>
 #include <vector>
 
-#include "dream/agents/experiments/calibration_drive.h"
+#include "dream/calibration_drive/calibration_drive.h"
 #include "dream/world/printf_text.h"
 
 namespace dream::bridge {
 
-static_assert(CalibrationConfig::kMaxRobots == agents::CalibrationDrive::kMaxRobots,
+static_assert(CalibrationConfig::kMaxRobots == calibration_drive::CalibrationDrive::kMaxRobots,
               "the export offers as many robots as the program has start poses for");
 
 std::string CalibrationConfig::Name(int robots) { return "calibration_" + std::to_string(robots); }
@@ -26,13 +26,13 @@ std::string CalibrationConfig::Text(int robots) {
       "description: " + std::to_string(robots) + " robots drive the open-loop calibration program side by side\n"
       "seed: 1\n"
       "robots: " + std::to_string(robots) + "\n"
-      "steps: " + std::to_string(agents::CalibrationDrive::Steps()) + "  # the program's length\n"
+      "steps: " + std::to_string(calibration_drive::CalibrationDrive::Steps()) + "  # the program's length\n"
       "stop_when_done: true\n"
       "world:\n"
       "  mode: lockstep\n"
       "  realism: {preset: ideal}\n"
-      "initial_poses:  # agents::CalibrationDrive::StartPoses\n";
-  for (const Eigen::Vector3d& pose : agents::CalibrationDrive::StartPoses(robots)) {
+      "initial_poses:  # calibration_drive::CalibrationDrive::StartPoses\n";
+  for (const Eigen::Vector3d& pose : calibration_drive::CalibrationDrive::StartPoses(robots)) {
     text += world::PrintfText("  - [%.10g, %.10g, %.10g]\n", pose.x(), pose.y(), pose.z());
   }
   text += "controller:\n  kind: calibration_drive\n";

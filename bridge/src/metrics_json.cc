@@ -2,8 +2,8 @@
 
 #include "dream/agent_host/controller_factory.h"
 #include "dream/agent_host/log_metrics.h"
-#include "dream/agent_host/python_controller_spec.h"
 #include "dream/bridge/python_run_metrics.h"
+#include "dream/kind_api/controller_kind.h"
 
 namespace dream::bridge {
 
@@ -43,10 +43,13 @@ nlohmann::ordered_json MetricsJson(const agent_host::ControllerFactory& factory,
 nlohmann::ordered_json MetricsJson(const run_config::RunConfig& config, const agent_host::ControllerFactory& factory,
                                    const run_log::RunLog& log, const std::string& python_runtime_dir) {
   nlohmann::ordered_json json = MetricsJson(factory, log);
-  if (json.contains("error") || python_runtime_dir.empty() || !agent_host::IsPythonController(config)) return json;
+  // A kind whose robots run in the Python runtime has its own metrics and goal there.
+  const kind_api::ControllerKind& kind = factory.registered_kind();
+  if (json.contains("error") || python_runtime_dir.empty() || kind.runtime != kind_api::ControllerKind::Runtime::kPython) {
+    return json;
+  }
   try {
-    const nlohmann::json own =
-        PythonRunMetrics::Compute(python_runtime_dir, agent_host::PythonControllerSpecJson(config), log);
+    const nlohmann::json own = PythonRunMetrics::Compute(python_runtime_dir, kind.runtime_spec(config), log);
     if (own.contains("goal") && own["goal"].is_object()) json["goal"] = own["goal"];
     if (own.contains("goal_points") && own["goal_points"].is_array() && !own["goal_points"].empty()) {
       json["goal_points"] = own["goal_points"];

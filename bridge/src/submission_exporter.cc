@@ -5,10 +5,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "dream/agent_host/python_controller_spec.h"
+#include "dream/agent_host/controller_registry.h"
 #include "dream/bridge/controller_module_copy.h"
 #include "dream/bridge/flat_python_runtime.h"
 #include "dream/bridge/lab_import.h"
@@ -17,6 +18,7 @@
 #include "dream/bridge/obstacle_schedule.h"
 #include "dream/files/json_text.h"
 #include "dream/files/output_folder.h"
+#include "dream/kind_api/controller_kind.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/bridge/submission_params.h"
 #include "dream/run_config/run_config.h"
@@ -99,11 +101,11 @@ struct ControllerFiles {
   std::vector<FlatPythonRuntime::File> runtime;
 };
 
-ControllerFiles ReadControllerFiles(const run_config::RunConfig& config, const std::string& config_file,
-                                    const std::string& runtime_dir) {
+ControllerFiles ReadControllerFiles(const run_config::RunConfig& config, const kind_api::ControllerKind& kind,
+                                    const std::string& config_file, const std::string& runtime_dir) {
   if (runtime_dir.empty()) throw std::invalid_argument("export options: the controller strategy needs python_runtime_dir");
   ControllerFiles files;
-  nlohmann::ordered_json spec = nlohmann::ordered_json::parse(agent_host::PythonControllerSpecJson(config));
+  nlohmann::ordered_json spec = nlohmann::ordered_json::parse(kind.runtime_spec(config));
   const std::string module_path = spec["module"].get<std::string>();
   files.module_text = files::ReadFileText(module_path);
   const FlatPythonRuntime runtime = FlatPythonRuntime::Read(runtime_dir);
@@ -146,6 +148,9 @@ struct ExportInput {
   RunTrack track;
   RunEnd end;
   bool controller = false;  ///< the controller strategy
+  /// The controller strategy's: the run's kind, when its robots run in the
+  /// Python runtime (what a submission ships; the lab runs Python only).
+  std::shared_ptr<const kind_api::ControllerKind> python_kind;
   int64_t steps = 0;        ///< the submission's step limit
   std::vector<std::string> forced;  ///< problems --force turned into warnings
 };
@@ -178,7 +183,7 @@ ExportInput CheckExportPaths(const std::string& run_dir, const std::string& out_
 /// obstacle schedule too large to upload.
 void AddControllerProblems(const ExportInput& input, std::vector<ExportProblem>* problems) {
   const run_config::RunConfig& config = input.config;
-  if (!agent_host::IsPythonController(config)) {
+  if (input.python_kind == nullptr) {
     const config::ConfigNode kind = config.controller.Optional("kind");
     problems->push_back({"strategy", -1, -1, -1,
                          "the controller strategy runs the run's Python controller in the submission, and this "
@@ -214,9 +219,12 @@ ExportInput ReadAndCheck(const std::string& run_dir, const std::string& out_dir,
   }
   if (input.track.last_step() < 1) throw std::runtime_error(input.log_file + ": the run has no step to export");
   input.controller = options.strategy == Strategy::kController;
+  if (input.controller) {
+    std::shared_ptr<const kind_api::ControllerKind> kind = agent_host::ControllerRegistry::KindOf(config);
+    if (kind != nullptr && kind->runtime == kind_api::ControllerKind::Runtime::kPython) input.python_kind = std::move(kind);
+  }
   // The controller strategy runs until every robot is done, at most the run's step limit.
-  input.steps = input.controller && agent_host::IsPythonController(config) ? RunStepLimit(run_dir, config)
-                                                                           : input.track.last_step();
+  input.steps = input.python_kind != nullptr ? RunStepLimit(run_dir, config) : input.track.last_step();
   std::vector<ExportProblem> problems;
   if (input.controller) AddControllerProblems(input, &problems);
   // What UPLOAD.txt tells the user to declare: the lab's verifier holds the run to it.
@@ -406,7 +414,7 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
   ControllerFiles controller_files;
   NpyArray obstacles;
   if (input.controller) {
-    controller_files = ReadControllerFiles(config, input.config_file, options.python_runtime_dir);
+    controller_files = ReadControllerFiles(config, *input.python_kind, input.config_file, options.python_runtime_dir);
     obstacles = ObstacleSchedule(config.obstacles, config.world.time_step_s, input.steps);
   }
   const SubmissionParams params = MakeParams(input, options);

@@ -1,4 +1,4 @@
-"""Go to goal in Python: the same law as the C++ go_to_goal (agents/src/go_to_goal_robot.cc),
+"""Go to goal in Python: the same law as the C++ go_to_goal (agents/kinds/go_to_goal/src/go_to_goal_robot.cc),
 so that config/go_to_goal_python.yaml drives the robots along the same paths as
 config/go_to_goal.yaml.
 

@@ -1,5 +1,5 @@
 """The thesis's HRVO circle swap in Python: the C++ kind hrvo_circle (agents/src/hrvo_robot.cc,
-circle_formation_robot.cc, agents/agent_host/src/hrvo_circle_builder.cc) written as a dream.Robot, so
+agents/kinds/hrvo_circle/: circle_formation_robot.cc, hrvo_circle_builder.cc) written as a dream.Robot, so
 config/hrvo_circle_python.yaml runs the experiment of config/hrvo_circle.yaml.
 
 Robot i drives at min(max_speed_mps, gain * distance) towards its point of the current

@@ -1,7 +1,7 @@
 """From the controller spec (JSON text C++ makes from a config's `kind: python` section) to
 RobotAgents: checks the spec strictly, loads the user's module, checks the controller's own
 keys against its class's KEYS and builds each robot's parts as
-agents/agent_host/src/agent_parts_config.cc and controller_factory.cc do (same seeds).
+agents/kind_api/src/agent_parts_config.cc and agents/agent_host/src/controller_factory.cc do (same seeds).
 
 Config mistakes raise ConfigError("FILE:LINE: controller.KEY: problem"), FILE being the
 config file, so that a Python controller's keys are reported like a C++ one's.

@@ -31,7 +31,7 @@ _BOX_MARGIN = 2e-9
 _IN_BOX_SLACK = 1e-12
 _INF = math.inf
 
-# The keys of a config's `hrvo:` section (agents/agent_host/src/hrvo_config.cc).
+# The keys of a config's `hrvo:` section (agents/kind_api/src/hrvo_config.cc).
 HRVO_CONFIG_KEYS = ("variant", "safety_radius_m", "check_boundaries", "boundary_horizon_s")
 VARIANTS = ("exact", "thesis")
 

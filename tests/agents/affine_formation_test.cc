@@ -5,14 +5,14 @@
 
 #include <cmath>
 
-#include "dream/agents/experiments/affine_follower_robot.h"
-#include "dream/agents/experiments/affine_formation_metrics.h"
-#include "dream/agents/experiments/affine_leader_robot.h"
-#include "dream/agents/experiments/affine_maneuver.h"
+#include "dream/affine_formation/affine_follower_robot.h"
+#include "dream/affine_formation/affine_formation_metrics.h"
+#include "dream/affine_formation/affine_leader_robot.h"
+#include "dream/affine_formation/affine_maneuver.h"
 #include "dream/agents/framework/byte_writer.h"
-#include "dream/agents/experiments/formation_state_message.h"
+#include "dream/affine_formation/formation_state_message.h"
 #include "dream/agents/geometry/reversible_si_to_uni.h"
-#include "dream/agents/experiments/stress_formation.h"
+#include "dream/affine_formation/stress_formation.h"
 
 namespace dream::agents {
 namespace {
@@ -51,22 +51,22 @@ std::vector<Eigen::Vector2d> Nominal() {
   return {{0.6, 0.0}, {0.2, 0.4}, {0.2, -0.4}, {-0.2, 0.4}, {-0.2, -0.4}, {-0.6, 0.4}, {-0.6, -0.4}};
 }
 
-StressFormationParams ThesisFormation(bool exact = false) {
-  StressFormationParams params;
+affine_formation::StressFormationParams ThesisFormation(bool exact = false) {
+  affine_formation::StressFormationParams params;
   params.weights = exact ? ExactWeights() : ThesisWeights();
   params.nominal_m = Nominal();
   params.leaders = {0, 1, 2};
   return params;
 }
 
-std::string Error(const StressFormationParams& params) {
+std::string Error(const affine_formation::StressFormationParams& params) {
   std::string error;
   EXPECT_FALSE(params.IsValid(&error));
   return error;
 }
 
 TEST(StressFormation, ThesisWeightsAreAnEquilibriumStressOfTheNominalShape) {
-  const StressFormation formation(ThesisFormation());
+  const affine_formation::StressFormation formation(ThesisFormation());
   // sum_j w_ij (r_i - r_j) = 0 for every follower: the weights times the
   // nominal positions vanish (up to the thesis's 4-decimal rounding).
   for (int f : formation.followers()) {
@@ -92,7 +92,7 @@ TEST(StressFormation, FollowersSettleOnTheAffineImageTheLeadersDefine) {
   map.linear << 1.3, -0.4, 0.2, 0.6;
   map.translation_m = {0.3, -0.2};
   for (bool exact : {true, false}) {
-    const StressFormation formation(ThesisFormation(exact));
+    const affine_formation::StressFormation formation(ThesisFormation(exact));
     std::vector<Eigen::Vector2d> positions(7, Eigen::Vector2d(9.0, 9.0));
     for (int l : formation.leaders()) positions[size_t(l)] = map.Apply(Nominal()[size_t(l)]);
     const std::vector<Eigen::Vector2d> settled = formation.FollowerEquilibrium(positions);
@@ -108,7 +108,7 @@ TEST(StressFormation, FollowersSettleOnTheAffineImageTheLeadersDefine) {
 }
 
 TEST(StressFormation, RejectsBadWeightsNamingTheProblem) {
-  StressFormationParams params = ThesisFormation();
+  affine_formation::StressFormationParams params = ThesisFormation();
   params.weights = ThesisWeights().topLeftCorner(6, 6);
   EXPECT_NE(Error(params).find("weights: must be 7x7"), std::string::npos);
 
@@ -156,11 +156,11 @@ TEST(AffineTransform, FitIsExactForThreePointsAndRefusesCollinearOnes) {
   EXPECT_FALSE(AffineTransform::Fit({{0, 0}, {1, 0}}, {{0, 0}, {1, 0}}).has_value());
 }
 
-AffineManeuverParams TwoKeyframes() {
-  AffineManeuverParams params;
-  AffineKeyframe a;
+affine_formation::AffineManeuverParams TwoKeyframes() {
+  affine_formation::AffineManeuverParams params;
+  affine_formation::AffineKeyframe a;
   a.step = 100;
-  AffineKeyframe b;
+  affine_formation::AffineKeyframe b;
   b.step = 400;
   b.scale_x = 1.5;
   b.scale_y = 0.2;
@@ -171,7 +171,7 @@ AffineManeuverParams TwoKeyframes() {
 }
 
 TEST(AffineManeuver, PassesThroughKeyframesSmoothlyAndHoldsOutside) {
-  const AffineManeuver maneuver(TwoKeyframes());
+  const affine_formation::AffineManeuver maneuver(TwoKeyframes());
   const AffineTransform start = maneuver.At(100);
   EXPECT_LT((start.linear - Eigen::Matrix2d::Identity()).norm(), 1e-12);
   EXPECT_LT((maneuver.At(0).linear - start.linear).norm(), 1e-12);
@@ -191,7 +191,7 @@ TEST(AffineManeuver, PassesThroughKeyframesSmoothlyAndHoldsOutside) {
 }
 
 TEST(AffineManeuver, RejectsUnorderedOrDegenerateKeyframes) {
-  AffineManeuverParams params = TwoKeyframes();
+  affine_formation::AffineManeuverParams params = TwoKeyframes();
   params.keyframes[1].step = 100;
   std::string error;
   EXPECT_FALSE(params.IsValid(&error));
@@ -202,28 +202,28 @@ TEST(AffineManeuver, RejectsUnorderedOrDegenerateKeyframes) {
   EXPECT_NE(error.find("keyframes[0].scale_y"), std::string::npos);
   // The list is bounded (robots look keyframes up every step).
   params.keyframes.clear();
-  for (int64_t k = 0; k < int64_t{AffineManeuverParams::kMaxKeyframes}; ++k) params.keyframes.push_back({k});
+  for (int64_t k = 0; k < int64_t{affine_formation::AffineManeuverParams::kMaxKeyframes}; ++k) params.keyframes.push_back({k});
   EXPECT_TRUE(params.IsValid(&error)) << error;
-  params.keyframes.push_back({int64_t{AffineManeuverParams::kMaxKeyframes}});
+  params.keyframes.push_back({int64_t{affine_formation::AffineManeuverParams::kMaxKeyframes}});
   EXPECT_FALSE(params.IsValid(&error));
   EXPECT_EQ(error, "keyframes: at most 1000, got 1001");
 }
 
 TEST(FormationStateMessage, RoundTripsAndRejectsMalformedPayloads) {
-  const FormationStateMessage message{3, {0.1, -0.2}, {0.05, 0.0}};
-  const auto decoded = FormationStateMessage::Decode(message.Encode(), 3);
+  const affine_formation::FormationStateMessage message{3, {0.1, -0.2}, {0.05, 0.0}};
+  const auto decoded = affine_formation::FormationStateMessage::Decode(message.Encode(), 3);
   ASSERT_TRUE(decoded.has_value());
   EXPECT_EQ(decoded->position_m, message.position_m);
   EXPECT_EQ(decoded->velocity_mps, message.velocity_mps);
-  EXPECT_FALSE(FormationStateMessage::Decode(message.Encode(), 4).has_value());  // speaks for another robot
+  EXPECT_FALSE(affine_formation::FormationStateMessage::Decode(message.Encode(), 4).has_value());  // speaks for another robot
   std::vector<uint8_t> short_payload = message.Encode();
   short_payload.pop_back();
-  EXPECT_FALSE(FormationStateMessage::Decode(short_payload, 3).has_value());
+  EXPECT_FALSE(affine_formation::FormationStateMessage::Decode(short_payload, 3).has_value());
   std::vector<uint8_t> long_payload = message.Encode();
   long_payload.push_back(0);
-  EXPECT_FALSE(FormationStateMessage::Decode(long_payload, 3).has_value());
+  EXPECT_FALSE(affine_formation::FormationStateMessage::Decode(long_payload, 3).has_value());
   const auto nan_payload = ByteWriter().Int32(3).Double(0.1).Double(std::nan("")).Double(0).Double(0).Take();
-  EXPECT_FALSE(FormationStateMessage::Decode(nan_payload, 3).has_value());
+  EXPECT_FALSE(affine_formation::FormationStateMessage::Decode(nan_payload, 3).has_value());
 }
 
 // The followers of the thesis formation, driven in a plain loop: odometry is
@@ -233,15 +233,15 @@ TEST(FormationStateMessage, RoundTripsAndRejectsMalformedPayloads) {
 class FollowerLoop {
  public:
   // Exact weights, so the loop converges onto the affine image itself.
-  FollowerLoop(AffineFollowerParams::Law law, double gain) : formation_(ThesisFormation(true)) {
-    AffineFollowerParams params;
+  FollowerLoop(affine_formation::AffineFollowerParams::Law law, double gain) : formation_(ThesisFormation(true)) {
+    affine_formation::AffineFollowerParams params;
     params.law = law;
     params.gain = gain;
     const std::vector<Eigen::Vector2d> corners = {{1.45, 0.85}, {1.45, -0.85}, {-1.45, 0.85}, {-1.45, -0.85}};
     for (size_t k = 0; k < formation_.followers().size(); ++k) {
       const int f = formation_.followers()[k];
       params.neighbours = formation_.Neighbours(f);
-      followers_.push_back(std::make_unique<AffineFollowerRobot>(f, RobotParams{}, HrvoRobotParams{}, params));
+      followers_.push_back(std::make_unique<affine_formation::AffineFollowerRobot>(f, RobotParams{}, HrvoRobotParams{}, params));
       positions_.push_back(corners[k]);
     }
   }
@@ -253,10 +253,10 @@ class FollowerLoop {
     for (int l : formation_.leaders()) {
       const Eigen::Vector2d r = Nominal()[size_t(l)];
       last_broadcasts_.push_back(
-          {l, step, FormationStateMessage{l, map.Apply(r), map_rate.linear * r + map_rate.translation_m}.Encode()});
+          {l, step, affine_formation::FormationStateMessage{l, map.Apply(r), map_rate.linear * r + map_rate.translation_m}.Encode()});
     }
     for (size_t k = 0; k < followers_.size(); ++k) {
-      AffineFollowerRobot& robot = *followers_[k];
+      affine_formation::AffineFollowerRobot& robot = *followers_[k];
       robot.OnOdometry({step, Eigen::Vector3d(positions_[k].x(), positions_[k].y(), 0.0)});
       const std::optional<std::vector<uint8_t>> payload = robot.OnRadio(heard);
       if (payload) last_broadcasts_.push_back({robot.id(), step, *payload});
@@ -275,11 +275,11 @@ class FollowerLoop {
     return worst;
   }
 
-  const AffineFollowerRobot& follower(size_t k) const { return *followers_[k]; }
+  const affine_formation::AffineFollowerRobot& follower(size_t k) const { return *followers_[k]; }
 
  private:
-  StressFormation formation_;
-  std::vector<std::unique_ptr<AffineFollowerRobot>> followers_;
+  affine_formation::StressFormation formation_;
+  std::vector<std::unique_ptr<affine_formation::AffineFollowerRobot>> followers_;
   std::vector<Eigen::Vector2d> positions_;
   std::vector<RadioMessage> last_broadcasts_;
 };
@@ -289,11 +289,11 @@ TEST(AffineFollowerLaw, ConvergesToTheAffineImageForStaticLeaders) {
   map.linear << 1.1, 0.3, -0.2, 0.7;
   map.translation_m = {-0.1, 0.05};
   const AffineTransform still{Eigen::Matrix2d::Zero(), Eigen::Vector2d::Zero()};
-  for (auto law : {AffineFollowerParams::Law::kZhao, AffineFollowerParams::Law::kThesis}) {
+  for (auto law : {affine_formation::AffineFollowerParams::Law::kZhao, affine_formation::AffineFollowerParams::Law::kThesis}) {
     // The thesis's law needs a high gain: its slowest mode decays at 0.024 gain.
-    FollowerLoop loop(law, law == AffineFollowerParams::Law::kZhao ? 1.0 : 10.0);
+    FollowerLoop loop(law, law == affine_formation::AffineFollowerParams::Law::kZhao ? 1.0 : 10.0);
     for (int64_t step = 0; step < 2000; ++step) loop.Step(step, map, still);
-    EXPECT_LT(loop.MaxError(map), 1e-3) << (law == AffineFollowerParams::Law::kZhao ? "zhao" : "thesis");
+    EXPECT_LT(loop.MaxError(map), 1e-3) << (law == affine_formation::AffineFollowerParams::Law::kZhao ? "zhao" : "thesis");
     for (size_t k = 0; k < 4; ++k) EXPECT_EQ(loop.follower(k).bad_radio_messages(), 0);
   }
 }
@@ -318,7 +318,7 @@ TEST(AffineFollowerLaw, ZhaosFeedForwardTracksMovingLeadersTheThesisLawLags) {
   };
   double worst[2] = {0.0, 0.0};
   for (int which = 0; which < 2; ++which) {
-    const auto law = which == 0 ? AffineFollowerParams::Law::kZhao : AffineFollowerParams::Law::kThesis;
+    const auto law = which == 0 ? affine_formation::AffineFollowerParams::Law::kZhao : affine_formation::AffineFollowerParams::Law::kThesis;
     FollowerLoop loop(law, which == 0 ? 1.0 : 10.0);
     const AffineTransform still{Eigen::Matrix2d::Zero(), Eigen::Vector2d::Zero()};
     for (int64_t step = 0; step < 2000; ++step) loop.Step(step, map_at(0.0), still);
@@ -336,23 +336,23 @@ TEST(AffineFollowerLaw, ZhaosFeedForwardTracksMovingLeadersTheThesisLawLags) {
 }
 
 TEST(AffineFollowerRobot, DropsMalformedPayloadsOnceAndIgnoresStrangers) {
-  const StressFormation formation(ThesisFormation());
-  AffineFollowerParams params;
+  const affine_formation::StressFormation formation(ThesisFormation());
+  affine_formation::AffineFollowerParams params;
   params.neighbours = formation.Neighbours(5);  // robots 2, 3, 6
-  AffineFollowerRobot robot(5, RobotParams{}, HrvoRobotParams{}, params);
+  affine_formation::AffineFollowerRobot robot(5, RobotParams{}, HrvoRobotParams{}, params);
   robot.OnOdometry({1, Eigen::Vector3d(-0.6, 0.4, 0.0)});
-  std::vector<uint8_t> truncated = FormationStateMessage{2, {0.2, -0.4}, {0, 0}}.Encode();
+  std::vector<uint8_t> truncated = affine_formation::FormationStateMessage{2, {0.2, -0.4}, {0, 0}}.Encode();
   truncated.resize(10);
   const std::vector<RadioMessage> heard = {
       {2, 1, truncated},
       {3, 1, ByteWriter().Int32(3).Double(-0.2).Double(std::nan("")).Double(0).Double(0).Take()},
-      {6, 1, FormationStateMessage{4, {-0.6, -0.4}, {0, 0}}.Encode()},  // claims to be robot 4
+      {6, 1, affine_formation::FormationStateMessage{4, {-0.6, -0.4}, {0, 0}}.Encode()},  // claims to be robot 4
       {0, 1, {1, 2, 3}},                                                // not a neighbour of 5: ignored
   };
   const auto reply = robot.OnRadio(heard);
   EXPECT_EQ(robot.bad_radio_messages(), 3);
   ASSERT_TRUE(reply.has_value());
-  EXPECT_TRUE(FormationStateMessage::Decode(*reply, 5).has_value());
+  EXPECT_TRUE(affine_formation::FormationStateMessage::Decode(*reply, 5).has_value());
   robot.OnRadio(heard);  // the mailbox repeats the same messages: not counted again
   EXPECT_EQ(robot.bad_radio_messages(), 3);
   EXPECT_FALSE(robot.knows_all_neighbours());
@@ -362,17 +362,17 @@ TEST(AffineFollowerRobot, DropsMalformedPayloadsOnceAndIgnoresStrangers) {
 }
 
 TEST(AffineFollowerRobot, HandsHrvoOnlyTheRobotsItClosesOnOrIsCloseTo) {
-  const StressFormation formation(ThesisFormation(true));
-  AffineFollowerParams params;
+  const affine_formation::StressFormation formation(ThesisFormation(true));
+  affine_formation::AffineFollowerParams params;
   params.neighbours = formation.Neighbours(5);  // robots 2, 3, 6
   HrvoRobotParams hrvo;
   hrvo.hrvo.safety_radius_m = 0.2;
-  AffineFollowerRobot robot(5, RobotParams{}, hrvo, params);
+  affine_formation::AffineFollowerRobot robot(5, RobotParams{}, hrvo, params);
   const Eigen::Vector2d shift(0.5, 0.0);  // neighbours' shape moved 0.5 m right: the law says go +x
   robot.OnOdometry({1, Eigen::Vector3d(-0.6, 0.4, 0.0)});
   std::vector<RadioMessage> heard;
   for (int j : {2, 3, 6})
-    heard.push_back({j, 0, FormationStateMessage{j, Nominal()[size_t(j)] + shift, {0, 0}}.Encode()});
+    heard.push_back({j, 0, affine_formation::FormationStateMessage{j, Nominal()[size_t(j)] + shift, {0, 0}}.Encode()});
   robot.OnRadio(heard);
   auto seen = [](double x, double y) {
     NeighbourDetection d;
@@ -416,12 +416,12 @@ TEST(ReversibleSiToUni, BacksUpInsteadOfTurningRoundWithHysteresis) {
 }
 
 TEST(AffineLeaderRobot, TracksItsTargetWithFeedForwardAndPublishesOnly) {
-  AffineLeaderParams params;
+  affine_formation::AffineLeaderParams params;
   params.nominal_m = {0.6, 0.0};
   params.maneuver = TwoKeyframes();
-  AffineLeaderRobot leader(0, RobotParams{}, params);
+  affine_formation::AffineLeaderRobot leader(0, RobotParams{}, params);
   EXPECT_FALSE(leader.OnRadio({}).has_value());  // nothing to say before odometry
-  const AffineManeuver maneuver(TwoKeyframes());
+  const affine_formation::AffineManeuver maneuver(TwoKeyframes());
   const double step = 250;
   const Eigen::Vector2d target = maneuver.Target(params.nominal_m, step);
   leader.OnOdometry({250, Eigen::Vector3d(target.x(), target.y(), 0.0)});
@@ -429,7 +429,7 @@ TEST(AffineLeaderRobot, TracksItsTargetWithFeedForwardAndPublishesOnly) {
   EXPECT_LT((leader.velocity_mps() - maneuver.TargetVelocity(params.nominal_m, step, kDt)).norm(), 1e-12);
   const auto payload = leader.OnRadio({});
   ASSERT_TRUE(payload.has_value());
-  const auto message = FormationStateMessage::Decode(*payload, 0);
+  const auto message = affine_formation::FormationStateMessage::Decode(*payload, 0);
   ASSERT_TRUE(message.has_value());
   EXPECT_LT((message->position_m - target).norm(), 1e-12);
 }
@@ -443,12 +443,12 @@ WorldSnapshot World(int64_t step, const std::vector<Eigen::Vector2d>& positions)
 }
 
 TEST(AffineFormationMetrics, JudgesFollowersAgainstTheLeadersActualMapAndGateClearance) {
-  AffineFormationMetricsParams params;
+  affine_formation::AffineFormationMetricsParams params;
   params.nominal_m = Nominal();
   params.leaders = {0, 1, 2};
   params.converged_from_step = 10;
   params.obstacle_pairs = {{0, 1}};
-  AffineFormationMetrics metrics(params);
+  affine_formation::AffineFormationMetrics metrics(params);
   AffineTransform map;
   map.linear << 0.9, 0.1, 0.0, 0.5;
   map.translation_m = {0.2, 0.1};

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "dream/agents/framework/actuator_limits.h"
-#include "dream/agents/experiments/go_to_goal_robot.h"
+#include "dream/go_to_goal/go_to_goal_robot.h"
 #include "dream/agents/framework/robot.h"
 #include "dream/agents/geometry/single_integrator_to_unicycle.h"
 
@@ -166,9 +166,9 @@ TEST(RobotTest, BadRadioMessagesAreCountedPerSender) {
 }
 
 TEST(GoToGoalRobotTest, DrivesTowardTheGoalAndReportsDoneWithinTolerance) {
-  GoToGoalParams params;
+  go_to_goal::GoToGoalParams params;
   params.goal_m = {1.0, 0.0};
-  GoToGoalRobot robot(0, RobotParams{}, params);
+  go_to_goal::GoToGoalRobot robot(0, RobotParams{}, params);
   // Before any odometry it does not know where it is, so it holds still.
   UnicycleCommand command = robot.Update(0);
   EXPECT_EQ(command.v_mps, 0.0);
@@ -184,9 +184,9 @@ TEST(GoToGoalRobotTest, DrivesTowardTheGoalAndReportsDoneWithinTolerance) {
 }
 
 TEST(GoToGoalRobotTest, ReachesItsGoalUnderUnicycleKinematics) {
-  GoToGoalParams params;
+  go_to_goal::GoToGoalParams params;
   params.goal_m = {-0.4, 0.3};
-  GoToGoalRobot robot(0, RobotParams{}, params);
+  go_to_goal::GoToGoalRobot robot(0, RobotParams{}, params);
   Eigen::Vector3d pose(0.5, -0.2, 2.5);
   for (int step = 0; step < 2000 && !robot.done(); ++step) {
     See(robot, pose);
@@ -201,16 +201,16 @@ TEST(GoToGoalRobotTest, ReachesItsGoalUnderUnicycleKinematics) {
 }
 
 TEST(GoToGoalParamsTest, InvalidParamsNameTheField) {
-  GoToGoalParams params;
+  go_to_goal::GoToGoalParams params;
   params.max_speed_mps = 0.5;
   std::string error;
   EXPECT_FALSE(params.IsValid(&error));
   EXPECT_NE(error.find("max_speed_mps must be in (0, 0.2]"), std::string::npos) << error;
-  params = GoToGoalParams{};
+  params = go_to_goal::GoToGoalParams{};
   params.tolerance_m = 0;
   EXPECT_FALSE(params.IsValid(&error));
   EXPECT_NE(error.find("tolerance_m"), std::string::npos);
-  EXPECT_THROW(GoToGoalRobot(0, RobotParams{}, params), std::invalid_argument);
+  EXPECT_THROW(go_to_goal::GoToGoalRobot(0, RobotParams{}, params), std::invalid_argument);
 }
 
 }  // namespace

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "dream/agents/experiments/calibration_drive.h"
-#include "dream/agents/experiments/calibration_drive_metrics.h"
-#include "dream/agents/experiments/calibration_drive_robot.h"
+#include "dream/calibration_drive/calibration_drive.h"
+#include "dream/calibration_drive/calibration_drive_metrics.h"
+#include "dream/calibration_drive/calibration_drive_robot.h"
 #include "dream/robotarium/robotarium_constants.h"
 
 namespace dream::agents {
@@ -17,7 +17,7 @@ namespace {
 using robotarium::RobotariumConstants;
 
 void ExpectCommand(int64_t step, double v, double w) {
-  const UnicycleCommand command = CalibrationDrive::CommandAt(step);
+  const UnicycleCommand command = calibration_drive::CalibrationDrive::CommandAt(step);
   EXPECT_EQ(command.v_mps, v) << "step " << step;
   EXPECT_EQ(command.w_radps, w) << "step " << step;
 }
@@ -25,7 +25,7 @@ void ExpectCommand(int64_t step, double v, double w) {
 // Segments of round(seconds / 0.033) steps: rest 2 s (61 steps), 0.05 m/s
 // 3 s (91), rest 1.5 s (45), back 3 s (91), rest (45), 0.1 m/s 2 s (61), ...
 TEST(CalibrationDriveTest, CommandsEachStepOfTheProgram) {
-  EXPECT_EQ(CalibrationDrive::Steps(), 1480);
+  EXPECT_EQ(calibration_drive::CalibrationDrive::Steps(), 1480);
   ExpectCommand(-1, 0.0, 0.0);
   ExpectCommand(0, 0.0, 0.0);
   ExpectCommand(60, 0.0, 0.0);
@@ -37,8 +37,8 @@ TEST(CalibrationDriveTest, CommandsEachStepOfTheProgram) {
   ExpectCommand(287, -0.05, 0.0);
   ExpectCommand(288, 0.0, 0.0);
   ExpectCommand(333, 0.1, 0.0);
-  ExpectCommand(CalibrationDrive::Steps() - 1, 0.0, 0.0);
-  ExpectCommand(CalibrationDrive::Steps(), 0.0, 0.0);
+  ExpectCommand(calibration_drive::CalibrationDrive::Steps() - 1, 0.0, 0.0);
+  ExpectCommand(calibration_drive::CalibrationDrive::Steps(), 0.0, 0.0);
   ExpectCommand(int64_t{1} << 40, 0.0, 0.0);
 }
 
@@ -47,8 +47,8 @@ TEST(CalibrationDriveTest, CommandsEachStepOfTheProgram) {
 TEST(CalibrationDriveTest, ExcitesEverySpeedAndTurnBothWaysWithinTheWheelLimit) {
   std::vector<std::pair<double, double>> starts;
   UnicycleCommand before;
-  for (int64_t k = 0; k < CalibrationDrive::Steps(); ++k) {
-    const UnicycleCommand command = CalibrationDrive::CommandAt(k);
+  for (int64_t k = 0; k < calibration_drive::CalibrationDrive::Steps(); ++k) {
+    const UnicycleCommand command = calibration_drive::CalibrationDrive::CommandAt(k);
     const double wheel_radps = (std::abs(command.v_mps) + std::abs(command.w_radps) * RobotariumConstants::kBaseLengthMeters / 2) /
                                RobotariumConstants::kWheelRadiusMeters;
     EXPECT_LT(wheel_radps, RobotariumConstants::kMaxWheelVelocityRadps) << "step " << k;
@@ -68,8 +68,8 @@ TEST(CalibrationDriveTest, ExcitesEverySpeedAndTurnBothWaysWithinTheWheelLimit) 
 // and never leaves a box that fits beside its neighbours.
 TEST(CalibrationDriveTest, EndsWhereItStartedAndStaysNearItsStart) {
   double x = 0, y = 0, theta = 0, max_dx = 0, min_dx = 0, max_dy = 0, min_dy = 0;
-  for (int64_t k = 0; k < CalibrationDrive::Steps(); ++k) {
-    const UnicycleCommand command = CalibrationDrive::CommandAt(k);
+  for (int64_t k = 0; k < calibration_drive::CalibrationDrive::Steps(); ++k) {
+    const UnicycleCommand command = calibration_drive::CalibrationDrive::CommandAt(k);
     x += command.v_mps * std::cos(theta) * RobotariumConstants::kTimeStepSeconds;
     y += command.v_mps * std::sin(theta) * RobotariumConstants::kTimeStepSeconds;
     theta += command.w_radps * RobotariumConstants::kTimeStepSeconds;
@@ -88,8 +88,8 @@ TEST(CalibrationDriveTest, EndsWhereItStartedAndStaysNearItsStart) {
 }
 
 TEST(CalibrationDriveTest, StartPosesFitTheArenaAndAreSpacedForTheProgram) {
-  for (int robots = 1; robots <= CalibrationDrive::kMaxRobots; ++robots) {
-    const std::vector<Eigen::Vector3d> poses = CalibrationDrive::StartPoses(robots);
+  for (int robots = 1; robots <= calibration_drive::CalibrationDrive::kMaxRobots; ++robots) {
+    const std::vector<Eigen::Vector3d> poses = calibration_drive::CalibrationDrive::StartPoses(robots);
     ASSERT_EQ(poses.size(), static_cast<size_t>(robots));
     for (const Eigen::Vector3d& pose : poses) {
       // The robot drives up to 0.3 m ahead and swings 0.1 m to its left.
@@ -105,21 +105,21 @@ TEST(CalibrationDriveTest, StartPosesFitTheArenaAndAreSpacedForTheProgram) {
       }
     }
   }
-  EXPECT_THROW(CalibrationDrive::StartPoses(0), std::invalid_argument);
-  EXPECT_THROW(CalibrationDrive::StartPoses(CalibrationDrive::kMaxRobots + 1), std::invalid_argument);
+  EXPECT_THROW(calibration_drive::CalibrationDrive::StartPoses(0), std::invalid_argument);
+  EXPECT_THROW(calibration_drive::CalibrationDrive::StartPoses(calibration_drive::CalibrationDrive::kMaxRobots + 1), std::invalid_argument);
 }
 
 TEST(CalibrationDriveRobotTest, DrivesTheProgramOpenLoopAndIsDoneAtItsEnd) {
-  CalibrationDriveRobot robot(3, RobotParams{});
-  for (int64_t k = 0; k < CalibrationDrive::Steps() - 1; ++k) {
+  calibration_drive::CalibrationDriveRobot robot(3, RobotParams{});
+  for (int64_t k = 0; k < calibration_drive::CalibrationDrive::Steps() - 1; ++k) {
     const UnicycleCommand command = robot.Update(k);
-    EXPECT_EQ(command.v_mps, CalibrationDrive::CommandAt(k).v_mps) << "step " << k;
-    EXPECT_EQ(command.w_radps, CalibrationDrive::CommandAt(k).w_radps) << "step " << k;
+    EXPECT_EQ(command.v_mps, calibration_drive::CalibrationDrive::CommandAt(k).v_mps) << "step " << k;
+    EXPECT_EQ(command.w_radps, calibration_drive::CalibrationDrive::CommandAt(k).w_radps) << "step " << k;
     ASSERT_FALSE(robot.done()) << "step " << k;
   }
-  robot.Update(CalibrationDrive::Steps() - 1);
+  robot.Update(calibration_drive::CalibrationDrive::Steps() - 1);
   EXPECT_TRUE(robot.done());
-  const UnicycleCommand after = robot.Update(CalibrationDrive::Steps() + 5);
+  const UnicycleCommand after = robot.Update(calibration_drive::CalibrationDrive::Steps() + 5);
   EXPECT_EQ(after.v_mps, 0.0);
   EXPECT_EQ(after.w_radps, 0.0);
   EXPECT_TRUE(robot.done());
@@ -128,7 +128,7 @@ TEST(CalibrationDriveRobotTest, DrivesTheProgramOpenLoopAndIsDoneAtItsEnd) {
 // The goal over `steps` snapshots of two robots; `move` places them per step.
 template <typename Move>
 GoalJudgement JudgeRun(int64_t steps, Move move) {
-  CalibrationDriveMetrics metrics;
+  calibration_drive::CalibrationDriveMetrics metrics;
   for (int64_t k = 0; k <= steps; ++k) {
     WorldSnapshot world;
     world.step = k;
@@ -142,9 +142,9 @@ GoalJudgement JudgeRun(int64_t steps, Move move) {
 }
 
 TEST(CalibrationDriveMetricsTest, MetWhenTheProgramRanToItsEndClean) {
-  const GoalJudgement goal = JudgeRun(CalibrationDrive::Steps(), [](int64_t, auto*) {});
+  const GoalJudgement goal = JudgeRun(calibration_drive::CalibrationDrive::Steps(), [](int64_t, auto*) {});
   EXPECT_TRUE(goal.met) << goal.detail;
-  EXPECT_EQ(goal.completion_step, CalibrationDrive::Steps());
+  EXPECT_EQ(goal.completion_step, calibration_drive::CalibrationDrive::Steps());
   EXPECT_EQ(goal.detail, "the program ran clean");
 }
 
@@ -155,7 +155,7 @@ TEST(CalibrationDriveMetricsTest, MissedWhenCutShortOutsideTheArenaOrColliding) 
   EXPECT_EQ(cut.detail, "cut short at step 100 of 1480");
 
   // Robot 1 just past the right wall at steps 200-202.
-  const GoalJudgement outside = JudgeRun(CalibrationDrive::Steps(), [](int64_t k, auto* poses) {
+  const GoalJudgement outside = JudgeRun(calibration_drive::CalibrationDrive::Steps(), [](int64_t k, auto* poses) {
     if (k >= 200 && k <= 202) (*poses)[1].x() = RobotariumConstants::kArenaXMaxMeters + 1e-6;
   });
   EXPECT_FALSE(outside.met);
@@ -163,14 +163,14 @@ TEST(CalibrationDriveMetricsTest, MissedWhenCutShortOutsideTheArenaOrColliding) 
 
   // Facing each other 0.185 m apart: their points 0.025 m ahead are 0.135 m
   // apart, a collision by the Robotarium's rule; facing away, none.
-  const GoalJudgement facing = JudgeRun(CalibrationDrive::Steps(), [](int64_t k, auto* poses) {
+  const GoalJudgement facing = JudgeRun(calibration_drive::CalibrationDrive::Steps(), [](int64_t k, auto* poses) {
     if (k != 700) return;
     (*poses)[0] = Eigen::Vector3d(0.0, 0.0, 0.0);
     (*poses)[1] = Eigen::Vector3d(0.185, 0.0, M_PI);
   });
   EXPECT_FALSE(facing.met);
   EXPECT_EQ(facing.detail, "0 steps outside the arena (first -1), 1 with a collision (first 700)");
-  const GoalJudgement away = JudgeRun(CalibrationDrive::Steps(), [](int64_t k, auto* poses) {
+  const GoalJudgement away = JudgeRun(calibration_drive::CalibrationDrive::Steps(), [](int64_t k, auto* poses) {
     if (k != 700) return;
     (*poses)[0] = Eigen::Vector3d(0.0, 0.0, M_PI);
     (*poses)[1] = Eigen::Vector3d(0.185, 0.0, 0.0);

@@ -3,11 +3,11 @@
 #include <cmath>
 
 #include "dream/agents/framework/byte_writer.h"
-#include "dream/agents/experiments/circle_formation_robot.h"
+#include "dream/hrvo_circle/circle_formation_robot.h"
 #include "dream/agent_host/controller_factory.h"
-#include "dream/agents/experiments/formation_progress.h"
-#include "dream/agents/experiments/formation_sequence_metrics.h"
-#include "dream/agent_host/hrvo_circle_builder.h"
+#include "dream/hrvo_circle/formation_progress.h"
+#include "dream/hrvo_circle/formation_sequence_metrics.h"
+#include "dream/hrvo_circle/hrvo_circle_builder.h"
 #include "dream/config/config_error.h"
 
 namespace dream::agents {
@@ -21,7 +21,7 @@ std::vector<uint8_t> States(std::vector<int32_t> states) {
 }
 
 TEST(FormationProgressTest, MergeKeepsTheHighestKnownStateOfEveryRobot) {
-  FormationProgress progress(4, 3);
+  hrvo_circle::FormationProgress progress(4, 3);
   EXPECT_EQ(progress.states(), (std::vector<int>{0, 0, 0, 0}));
   ASSERT_TRUE(progress.Merge(States({1, 0, 2, 0})));
   ASSERT_TRUE(progress.Merge(States({0, 1, 1, 0})));  // older news about robot 2 does not lower it
@@ -33,11 +33,11 @@ TEST(FormationProgressTest, MergeKeepsTheHighestKnownStateOfEveryRobot) {
   EXPECT_EQ(progress.Encode(), States({1, 1, 2, 1}));
   EXPECT_THROW(progress.Set(4, 0), std::out_of_range);
   EXPECT_THROW(progress.Set(0, 4), std::out_of_range);
-  EXPECT_THROW(FormationProgress(0, 3), std::invalid_argument);
+  EXPECT_THROW(hrvo_circle::FormationProgress(0, 3), std::invalid_argument);
 }
 
 TEST(FormationProgressTest, MalformedPayloadsAreDroppedWhole) {
-  FormationProgress progress(3, 3);
+  hrvo_circle::FormationProgress progress(3, 3);
   ASSERT_TRUE(progress.Merge(States({1, 1, 1})));
   std::vector<uint8_t> trailing = States({2, 2, 2});
   trailing.push_back(0);
@@ -53,12 +53,12 @@ TEST(FormationProgressTest, MalformedPayloadsAreDroppedWhole) {
 
 // Robots 0 - 1 - 2 in a chain: 0 hears only 1, 2 hears only 1.
 TEST(CircleFormationRobotTest, AdvancesOnlyOnceNewsOfEveryArrivalHasComeOverSeveralHops) {
-  CircleFormationParams params;
+  hrvo_circle::CircleFormationParams params;
   params.num_robots = 3;
-  std::vector<std::unique_ptr<CircleFormationRobot>> robots;
+  std::vector<std::unique_ptr<hrvo_circle::CircleFormationRobot>> robots;
   for (int id = 0; id < 3; ++id) {
     params.goals_m = {{0.5 * id, 0.0}, {0.5 * id, 0.5}, {0.5 * id, 0.0}};
-    robots.push_back(std::make_unique<CircleFormationRobot>(id, RobotParams{}, HrvoRobotParams{}, params));
+    robots.push_back(std::make_unique<hrvo_circle::CircleFormationRobot>(id, RobotParams{}, HrvoRobotParams{}, params));
   }
   // Everyone sits on its first point and counts it reached.
   for (int id = 0; id < 3; ++id) {
@@ -96,10 +96,10 @@ TEST(CircleFormationRobotTest, AdvancesOnlyOnceNewsOfEveryArrivalHasComeOverSeve
 }
 
 TEST(CircleFormationRobotTest, DrivesAtFullSpeedTowardsItsPointAndIsDoneAfterTheLast) {
-  CircleFormationParams params;
+  hrvo_circle::CircleFormationParams params;
   params.num_robots = 1;
   params.goals_m = {{1.0, 0.0}};
-  CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
+  hrvo_circle::CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
   const UnicycleCommand hold = robot.Update(0);  // no odometry yet
   EXPECT_EQ(hold.v_mps, 0.0);
   robot.OnOdometry({0, Eigen::Vector3d(0.0, 0.0, 0.0)});
@@ -116,11 +116,11 @@ TEST(CircleFormationRobotTest, DrivesAtFullSpeedTowardsItsPointAndIsDoneAfterThe
 // preferred speed is min(max_speed_mps, gain * distance), so a robot slows
 // down before its point instead of arriving at full speed.
 TEST(CircleFormationRobotTest, SlowsDownInProportionToTheDistanceBeforeItsPoint) {
-  CircleFormationParams params;
+  hrvo_circle::CircleFormationParams params;
   params.num_robots = 1;
   params.goals_m = {{1.0, 0.0}};
   ASSERT_EQ(params.gain, 0.8);
-  CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
+  hrvo_circle::CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
   const double vel_gain = RobotParams{}.vel_gain;
   for (const auto& [x, speed] : std::vector<std::pair<double, double>>{
            {0.0, 0.2},            // 1 m off: 0.8 m/s wanted, capped at max_speed_mps
@@ -138,11 +138,11 @@ TEST(CircleFormationRobotTest, SlowsDownInProportionToTheDistanceBeforeItsPoint)
 // there until it is pushed out of tolerance_m: it settles 2.5 cm inside the
 // line the goal is judged by, not on it, and is done only from then on.
 TEST(CircleFormationRobotTest, DrivesOnIntoTheToleranceUntilStopMThenHoldsAndIsDoneUntilPushedOut) {
-  CircleFormationParams params;
+  hrvo_circle::CircleFormationParams params;
   params.num_robots = 1;
   params.goals_m = {{1.0, 0.0}};
   ASSERT_EQ(params.stop_m, 0.025);
-  CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
+  hrvo_circle::CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
   struct Expect {
     double x;
     bool done;
@@ -165,12 +165,12 @@ TEST(CircleFormationRobotTest, DrivesOnIntoTheToleranceUntilStopMThenHoldsAndIsD
 // gain >= max_speed_mps / tolerance_m and stop_m = tolerance_m is the
 // thesis's Robot_c: full speed until within tolerance_m, then hold.
 TEST(CircleFormationRobotTest, ThesisGainAndStopDriveAtFullSpeedUpToTheTolerance) {
-  CircleFormationParams params;
+  hrvo_circle::CircleFormationParams params;
   params.num_robots = 1;
   params.goals_m = {{1.0, 0.0}};
   params.gain = params.max_speed_mps / params.tolerance_m;
   params.stop_m = params.tolerance_m;
-  CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
+  hrvo_circle::CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
   robot.OnOdometry({0, Eigen::Vector3d(0.9499, 0.0, 0.0)});
   EXPECT_NEAR(robot.Update(1).v_mps, RobotParams{}.vel_gain * 0.2, 1e-12);
   robot.OnOdometry({0, Eigen::Vector3d(0.9501, 0.0, 0.0)});
@@ -187,8 +187,8 @@ TEST(CircleFormationRobotTest, ThesisGainAndStopDriveAtFullSpeedUpToTheTolerance
 TEST(CircleFormationRobotTest, UnderTheLabsLoopDelayTheSlowApproachDoesNotOvershoot) {
   constexpr int kDelaySteps = 10;
   constexpr double kStepS = 0.033;
-  auto drive = [&](const CircleFormationParams& params) {
-    CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
+  auto drive = [&](const hrvo_circle::CircleFormationParams& params) {
+    hrvo_circle::CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
     double x = 0.0;
     double furthest = 0.0;
     std::vector<double> in_flight(kDelaySteps, 0.0);  // commands on their way to the wheels
@@ -203,13 +203,13 @@ TEST(CircleFormationRobotTest, UnderTheLabsLoopDelayTheSlowApproachDoesNotOversh
     }
     return std::pair<double, double>{furthest - 1.0, std::abs(x - 1.0)};
   };
-  CircleFormationParams params;
+  hrvo_circle::CircleFormationParams params;
   params.num_robots = 1;
   params.goals_m = {{1.0, 0.0}};
   const auto [overshoot_m, final_error_m] = drive(params);
   EXPECT_LT(overshoot_m, 0.0) << "the slow approach passed its point";
   EXPECT_LT(final_error_m, params.tolerance_m - 0.015) << "it did not settle well inside the tolerance";
-  CircleFormationParams thesis = params;
+  hrvo_circle::CircleFormationParams thesis = params;
   thesis.gain = thesis.max_speed_mps / thesis.tolerance_m;
   thesis.stop_m = thesis.tolerance_m;
   const auto [thesis_overshoot_m, thesis_error_m] = drive(thesis);
@@ -221,10 +221,10 @@ TEST(CircleFormationRobotTest, UnderTheLabsLoopDelayTheSlowApproachDoesNotOversh
 // for a passing robot) is not done until it is back: a run that stops when
 // every robot is done then stops with the formation in place.
 TEST(CircleFormationRobotTest, IsDoneOnlyWhileItHoldsItsLastPoint) {
-  CircleFormationParams params;
+  hrvo_circle::CircleFormationParams params;
   params.num_robots = 1;
   params.goals_m = {{1.0, 0.0}};
-  CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
+  hrvo_circle::CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
   robot.OnOdometry({0, Eigen::Vector3d(0.98, 0.0, 0.0)});  // within stop_m
   robot.Update(1);
   EXPECT_TRUE(robot.done());
@@ -239,10 +239,10 @@ TEST(CircleFormationRobotTest, IsDoneOnlyWhileItHoldsItsLastPoint) {
 }
 
 TEST(CircleFormationRobotTest, MalformedNeighbourPayloadIsCountedAndDropped) {
-  CircleFormationParams params;
+  hrvo_circle::CircleFormationParams params;
   params.num_robots = 2;
   params.goals_m = {{0.0, 0.0}, {0.5, 0.0}};
-  CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
+  hrvo_circle::CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
   const std::optional<std::vector<uint8_t>> sent =
       robot.OnRadio({{1, 0, {1, 2, 3}}, {1, 0, States({2, 2, 2})}, {1, 0, States({0, 1})}});
   EXPECT_EQ(robot.bad_radio_messages(), 2);
@@ -252,7 +252,7 @@ TEST(CircleFormationRobotTest, MalformedNeighbourPayloadIsCountedAndDropped) {
 }
 
 TEST(CircleFormationParamsTest, InvalidParamsNameTheField) {
-  CircleFormationParams params;
+  hrvo_circle::CircleFormationParams params;
   std::string error;
   EXPECT_FALSE(params.IsValid(&error));
   EXPECT_NE(error.find("goals_m"), std::string::npos);
@@ -279,7 +279,7 @@ TEST(CircleFormationParamsTest, InvalidParamsNameTheField) {
   params.stop_m = 0.05;
   EXPECT_TRUE(params.IsValid(&error));
   params.num_robots = 2;  // so robot id 2 is not taking part
-  EXPECT_THROW(CircleFormationRobot(2, RobotParams{}, HrvoRobotParams{}, params), std::invalid_argument);
+  EXPECT_THROW(hrvo_circle::CircleFormationRobot(2, RobotParams{}, HrvoRobotParams{}, params), std::invalid_argument);
 }
 
 WorldSnapshot At(int64_t step, std::vector<Eigen::Vector3d> poses) {
@@ -291,7 +291,7 @@ WorldSnapshot At(int64_t step, std::vector<Eigen::Vector3d> poses) {
 
 TEST(FormationSequenceMetricsTest, FormationsCompleteInOrderWhenEveryRobotIsWithinTolerance) {
   // Two robots; formation 1 at x = -+1, formation 2 swapped.
-  FormationSequenceMetrics metrics({{{-1.0, 0.0}, {1.0, 0.0}}, {{1.0, 0.0}, {-1.0, 0.0}}}, 0.05);
+  hrvo_circle::FormationSequenceMetrics metrics({{{-1.0, 0.0}, {1.0, 0.0}}, {{1.0, 0.0}, {-1.0, 0.0}}}, 0.05);
   metrics.Observe(At(0, {{1.0, 0.0, 0.0}, {-1.0, 0.0, 0.0}}));    // formation 2's shape first: not counted
   metrics.Observe(At(1, {{-1.0, 0.04, 0.0}, {1.0, 0.2, 0.0}}));   // only one robot in place
   metrics.Observe(At(2, {{-1.0, 0.04, 0.0}, {1.03, 0.0, 0.0}}));  // formation 1
@@ -321,13 +321,13 @@ std::string FactoryError(const std::string& yaml, int robots) {
 
 TEST(HrvoCircleConfigTest, DefaultsFollowAppendixBAndBadKeysAreClearErrors) {
   EXPECT_EQ(FactoryError("controller: {kind: hrvo_circle}\n", 10), "");
-  const agent_host::AgentPartsConfig parts = agent_host::HrvoCircleBuilder::DefaultParts(3);
+  const kind_api::AgentPartsConfig parts = hrvo_circle::HrvoCircleBuilder::DefaultParts(3);
   EXPECT_EQ(parts.robot_period_steps, (std::vector<int>{4, 5, 4}));
   EXPECT_EQ(parts.start_delay_steps, (std::vector<int>{20, 21, 22}));
   ASSERT_EQ(parts.sensors.size(), 2u);
   EXPECT_EQ(parts.sensors[0].period_steps, (std::vector<int>{2, 3, 2}));
   EXPECT_EQ(parts.sensors[1].period_steps, (std::vector<int>{3, 4, 3}));
-  EXPECT_EQ(parts.radio.kind, agent_host::RadioConfig::Kind::kRange);
+  EXPECT_EQ(parts.radio.kind, kind_api::RadioConfig::Kind::kRange);
   EXPECT_EQ(parts.radio.period_steps, (std::vector<int>{30, 30, 30}));
   std::string error = FactoryError("controller: {kind: hrvo_circle, radius_m: 1.2}\n", 10);
   EXPECT_NE(error.find("leaves the arena"), std::string::npos) << error;

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "dream/agent_host/controller_registry.h"
-#include "dream/agent_host/field_reader.h"
+#include "dream/kind_api/field_reader.h"
 #include "dream/agents/fields/field_check.h"
 #include "dream/agents/fields/field_names.h"
 #include "dream/agents/fields/field_rule.h"
@@ -17,7 +17,7 @@
 #include "dream/config/config_node.h"
 #include "dream/files/file_text.h"
 
-namespace dream::agent_host {
+namespace dream::kind_api {
 namespace {
 
 using ::testing::HasSubstr;
@@ -118,7 +118,7 @@ TEST(FieldListTest, RulesSayWhatTheyHold) {
 // docs say the same (the rows to paste are in the message).
 TEST(FieldListTest, ConfigReadmeShowsEveryKindsGeneratedKeyTable) {
   const std::string readme = files::ReadFileText(std::string(DREAM_SOURCE_DIR) + "/config/README.md");
-  const ControllerRegistry& registry = ControllerRegistry::BuiltIns();
+  const agent_host::ControllerRegistry& registry = agent_host::ControllerRegistry::BuiltIns();
   int tables = 0;
   for (const std::string& name : registry.Names()) {
     const ControllerKind* kind = registry.Find(name);
@@ -134,4 +134,4 @@ TEST(FieldListTest, ConfigReadmeShowsEveryKindsGeneratedKeyTable) {
 }
 
 }  // namespace
-}  // namespace dream::agent_host
+}  // namespace dream::kind_api

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "dream/agents/experiments/circle_formation_robot.h"
+#include "dream/hrvo_circle/circle_formation_robot.h"
 #include "dream/agents/hrvo/hrvo_cone.h"
 #include "dream/agents/hrvo/hrvo_exact.h"
 #include "dream/agents/hrvo/hrvo_params.h"
@@ -548,10 +548,10 @@ TEST(HrvoWallGuardTest, ForwardSpeedIsCutOnlyWhenTheHeadingCarriesTheRobotOut) {
 // 90 degrees of that answer: down-left, over the wall. With the guard it
 // turns on the spot, then drives along the wall.
 TEST(HrvoWallGuardTest, RobotSqueezedAgainstTheWallTurnsAroundWithoutCrossingIt) {
-  CircleFormationParams params;
+  hrvo_circle::CircleFormationParams params;
   params.num_robots = 1;
   params.goals_m = {{-1.0, -0.99}};  // back along the wall, a little outside HRVO's margin line
-  CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
+  hrvo_circle::CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
   const double dt_s = 0.033;  // Robotarium step
   const Eigen::Vector3d start(-0.35, -0.975, -0.05);
   const Vector2d neighbour_m(-0.45, -0.73);  // standing still above the path

@@ -50,7 +50,7 @@ TEST(KindKeysTest, EveryDeclaredKeyOfEveryBuiltInKindIsRead) {
   const std::map<std::string, std::string> configs = ShippedConfigsByKind();
   int keys_checked = 0;
   for (const std::string& name : agent_host::ControllerRegistry::BuiltIns().Names()) {
-    const agent_host::ControllerKind* kind = agent_host::ControllerRegistry::BuiltIns().Find(name);
+    const kind_api::ControllerKind* kind = agent_host::ControllerRegistry::BuiltIns().Find(name);
     if (kind->checks_own_keys) continue;  // the python kind: the Python class declares and reads its keys
     SCOPED_TRACE(name);
     const auto config = configs.find(name);

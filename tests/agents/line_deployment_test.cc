@@ -4,11 +4,11 @@
 
 #include "dream/agents/framework/byte_writer.h"
 #include "dream/agent_host/controller_factory.h"
-#include "dream/agents/experiments/line_consensus.h"
-#include "dream/agent_host/line_deployment_builder.h"
-#include "dream/agents/experiments/line_deployment_robot.h"
-#include "dream/agents/experiments/line_formation_metrics.h"
-#include "dream/agents/experiments/position_message.h"
+#include "dream/line_deployment/line_consensus.h"
+#include "dream/line_deployment/line_deployment_builder.h"
+#include "dream/line_deployment/line_deployment_robot.h"
+#include "dream/line_deployment/line_formation_metrics.h"
+#include "dream/agents/framework/position_message.h"
 #include "dream/config/config_error.h"
 
 namespace dream::agents {
@@ -19,28 +19,28 @@ TEST(LineConsensusTest, Eq37OnAHandComputedExample) {
   //   x: (0.1 + (0-2) 0.4) = -0.7,  (0.5 + (1-2) 0.4) = 0.1,  (-0.3 + (3-2) 0.4) = 0.1  -> mean -0.5/3
   //   y: (0.2 - 0.1 + 0.4) / 3 = 0.5/3
   const std::optional<Eigen::Vector2d> target =
-      LineConsensusTarget(2, {{0, {0.1, 0.2}}, {1, {0.5, -0.1}}, {3, {-0.3, 0.4}}}, 0.4);
+      line_deployment::LineConsensusTarget(2, {{0, {0.1, 0.2}}, {1, {0.5, -0.1}}, {3, {-0.3, 0.4}}}, 0.4);
   ASSERT_TRUE(target.has_value());
   EXPECT_NEAR(target->x(), -0.5 / 3.0, 1e-15);
   EXPECT_NEAR(target->y(), 0.5 / 3.0, 1e-15);
   // One neighbour: stand d from it on its line; eq. 3.7's sign puts the
   // higher id on the left.
-  const std::optional<Eigen::Vector2d> single = LineConsensusTarget(0, {{1, {0.2, -0.3}}}, 0.4);
+  const std::optional<Eigen::Vector2d> single = line_deployment::LineConsensusTarget(0, {{1, {0.2, -0.3}}}, 0.4);
   ASSERT_TRUE(single.has_value());
   EXPECT_NEAR(single->x(), 0.6, 1e-15);
   EXPECT_NEAR(single->y(), -0.3, 1e-15);
-  EXPECT_FALSE(LineConsensusTarget(0, {}, 0.4).has_value());
+  EXPECT_FALSE(line_deployment::LineConsensusTarget(0, {}, 0.4).has_value());
 }
 
 TEST(LineConsensusTest, ALineOrderedByDescendingIdIsAFixedPoint) {
   // x_i = 0.5 - 0.4 i, y = 0.1: every robot's target is where it stands.
-  const Eigen::MatrixXd graph = agent_host::LineDeploymentBuilder::ThesisAdjacency();
+  const Eigen::MatrixXd graph = line_deployment::LineDeploymentBuilder::ThesisAdjacency();
   for (int i = 0; i < 6; ++i) {
-    std::vector<NeighbourPosition> neighbours;
+    std::vector<line_deployment::NeighbourPosition> neighbours;
     for (int j = 0; j < 6; ++j) {
       if (graph(i, j) != 0.0) neighbours.push_back({j, {0.5 - 0.4 * j, 0.1}});
     }
-    const std::optional<Eigen::Vector2d> target = LineConsensusTarget(i, neighbours, 0.4);
+    const std::optional<Eigen::Vector2d> target = line_deployment::LineConsensusTarget(i, neighbours, 0.4);
     ASSERT_TRUE(target.has_value());
     EXPECT_NEAR(target->x(), 0.5 - 0.4 * i, 1e-12) << "robot " << i;
     EXPECT_NEAR(target->y(), 0.1, 1e-12) << "robot " << i;
@@ -48,7 +48,7 @@ TEST(LineConsensusTest, ALineOrderedByDescendingIdIsAFixedPoint) {
 }
 
 TEST(LineDeploymentRobotTest, KeepsGoodNeighbourPositionsAndDropsMalformedPayloads) {
-  LineDeploymentRobot robot(2, RobotParams{}, HrvoRobotParams{}, LineDeploymentParams{});
+  line_deployment::LineDeploymentRobot robot(2, RobotParams{}, HrvoRobotParams{}, line_deployment::LineDeploymentParams{});
   // Before odometry it knows no position to advertise.
   EXPECT_FALSE(robot.OnRadio({}).has_value());
   robot.OnOdometry({0, Eigen::Vector3d(0.3, -0.2, 0.0)});
@@ -78,9 +78,9 @@ TEST(LineDeploymentRobotTest, KeepsGoodNeighbourPositionsAndDropsMalformedPayloa
 }
 
 TEST(LineDeploymentRobotTest, TargetsAreClampedInsideTheArenaAndSettledRobotsReportDone) {
-  LineDeploymentParams params;
+  line_deployment::LineDeploymentParams params;
   params.settle_updates = 2;
-  LineDeploymentRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
+  line_deployment::LineDeploymentRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
   robot.OnOdometry({0, Eigen::Vector3d(1.0, 0.0, 0.0)});
   // Robot 1 at x = 1.4 puts robot 0's eq. 3.7 target at 1.8, past the wall.
   robot.OnRadio({{1, 0, PositionMessage{1, {1.4, 0.95}}.Encode()}});
@@ -101,7 +101,7 @@ TEST(LineDeploymentRobotTest, TargetsAreClampedInsideTheArenaAndSettledRobotsRep
 }
 
 TEST(LineDeploymentRobotTest, AStillRobotDodgesOnlyNeighboursWithinHoldAvoidRange) {
-  LineDeploymentRobot robot(0, RobotParams{}, HrvoRobotParams{}, LineDeploymentParams{});
+  line_deployment::LineDeploymentRobot robot(0, RobotParams{}, HrvoRobotParams{}, line_deployment::LineDeploymentParams{});
   robot.OnOdometry({0, Eigen::Vector3d(0.0, 0.0, 0.0)});
   // Robot 1 at (-0.4, 0): robot 0's target is exactly where it stands.
   robot.OnRadio({{1, 0, PositionMessage{1, {-0.4, 0.0}}.Encode()}});
@@ -128,8 +128,8 @@ TEST(LineDeploymentRobotTest, AStillRobotDodgesOnlyNeighboursWithinHoldAvoidRang
 
 TEST(LineDeploymentParamsTest, InvalidParamsNameTheField) {
   std::string error;
-  EXPECT_TRUE(LineDeploymentParams{}.IsValid(&error));
-  LineDeploymentParams p;
+  EXPECT_TRUE(line_deployment::LineDeploymentParams{}.IsValid(&error));
+  line_deployment::LineDeploymentParams p;
   p.spacing_m = 0.0;
   EXPECT_FALSE(p.IsValid(&error));
   EXPECT_NE(error.find("spacing_m"), std::string::npos);
@@ -149,7 +149,7 @@ TEST(LineDeploymentParamsTest, InvalidParamsNameTheField) {
   p.arena_margin_m = 1.0;  // leaves no room in y
   EXPECT_FALSE(p.IsValid(&error));
   EXPECT_NE(error.find("arena_margin_m"), std::string::npos);
-  EXPECT_THROW(LineDeploymentRobot(0, RobotParams{}, HrvoRobotParams{}, p), std::invalid_argument);
+  EXPECT_THROW(line_deployment::LineDeploymentRobot(0, RobotParams{}, HrvoRobotParams{}, p), std::invalid_argument);
 }
 
 WorldSnapshot At(int64_t step, std::vector<Eigen::Vector3d> poses) {
@@ -162,9 +162,9 @@ WorldSnapshot At(int64_t step, std::vector<Eigen::Vector3d> poses) {
 TEST(LineFormationMetricsTest, StraightnessSpacingAndConvergenceOnPlainPoses) {
   // ids descend along x by 0.4 (step -0.4), as eq. 3.7 arranges them.
   const WorldSnapshot bent = At(0, {{0.4, 0.0, 0}, {0.0, 0.03, 0}, {-0.45, 0.0, 0}});
-  EXPECT_NEAR(LineFormationMetrics::StraightnessError(bent), 0.02, 1e-15);  // mean y 0.01
-  EXPECT_NEAR(LineFormationMetrics::SpacingError(bent, -0.4), 0.05, 1e-15);
-  LineFormationMetrics metrics(-0.4, 0.02, 10);
+  EXPECT_NEAR(line_deployment::LineFormationMetrics::StraightnessError(bent), 0.02, 1e-15);  // mean y 0.01
+  EXPECT_NEAR(line_deployment::LineFormationMetrics::SpacingError(bent, -0.4), 0.05, 1e-15);
+  line_deployment::LineFormationMetrics metrics(-0.4, 0.02, 10);
   metrics.Observe(bent);
   metrics.Observe(At(5, {{0.4, 0.0, 0}, {0.0, 0.01, 0}, {-0.41, 0.0, 0}}));   // within 2 cm
   metrics.Observe(At(10, {{0.4, 0.0, 0}, {0.0, 0.04, 0}, {-0.41, 0.0, 0}}));  // out again

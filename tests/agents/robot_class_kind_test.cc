@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "dream/agent_host/controller_factory.h"
-#include "dream/agent_host/controller_kind.h"
+#include "dream/kind_api/controller_kind.h"
 #include "dream/agent_host/controller_registry.h"
 #include "dream/config/config_error.h"
 #include "dream/run_config/run_config.h"
@@ -57,8 +57,8 @@ class ParkedRobot final : public Robot {
 class ChattyRobot final : public Robot {
  public:
   static constexpr bool kGraphMustConnect = true;
-  static agent_host::AgentPartsConfig DefaultParts(int num_robots) {
-    agent_host::AgentPartsConfig parts = agent_host::AgentPartsConfig::Defaults(num_robots);
+  static kind_api::AgentPartsConfig DefaultParts(int num_robots) {
+    kind_api::AgentPartsConfig parts = kind_api::AgentPartsConfig::Defaults(num_robots);
     parts.robot_period_steps.assign(static_cast<size_t>(num_robots), 5);
     return parts;
   }
@@ -72,8 +72,8 @@ std::shared_ptr<const agent_host::ControllerRegistry> TestKinds() {
   static const std::shared_ptr<const agent_host::ControllerRegistry> kinds = [] {
     auto registry = std::make_shared<agent_host::ControllerRegistry>();
     registry->AddAll(agent_host::ControllerRegistry::BuiltIns(), "built in");
-    registry->Add(agent_host::ControllerKind::OfRobot<CruiseRobot>("test_cruise", {"speeds_mps"}), "this test");
-    registry->Add(agent_host::ControllerKind::OfRobot<ParkedRobot>("test_parked", {}), "this test");
+    registry->Add(kind_api::ControllerKind::OfRobot<CruiseRobot>("test_cruise", {"speeds_mps"}), "this test");
+    registry->Add(kind_api::ControllerKind::OfRobot<ParkedRobot>("test_parked", {}), "this test");
     return registry;
   }();
   return kinds;
@@ -173,16 +173,16 @@ TEST(RobotClassKindTest, AMissingOrUnknownKindIsAClearError) {
 }
 
 TEST(RobotClassKindTest, OfRobotReadsTheClassesOptionalStaticMembers) {
-  const agent_host::ControllerKind chatty = agent_host::ControllerKind::OfRobot<ChattyRobot>("chatty", {"a"});
+  const kind_api::ControllerKind chatty = kind_api::ControllerKind::OfRobot<ChattyRobot>("chatty", {"a"});
   EXPECT_EQ(chatty.name, "chatty");
   EXPECT_EQ(chatty.keys, std::vector<std::string>{"a"});
   EXPECT_TRUE(chatty.graph_must_connect);
   EXPECT_EQ(chatty.default_parts(3).robot_period_steps, (std::vector<int>{5, 5, 5}));
   // Without them: the defaults of every kind.
-  const agent_host::ControllerKind parked = agent_host::ControllerKind::OfRobot<ParkedRobot>("parked", {});
+  const kind_api::ControllerKind parked = kind_api::ControllerKind::OfRobot<ParkedRobot>("parked", {});
   EXPECT_FALSE(parked.graph_must_connect);
-  EXPECT_EQ(parked.default_parts(2).robot_period_steps, agent_host::AgentPartsConfig::Defaults(2).robot_period_steps);
-  const std::unique_ptr<agent_host::ExperimentBuilder> builder = parked.make_builder(config::ConfigNode(), 2);
+  EXPECT_EQ(parked.default_parts(2).robot_period_steps, kind_api::AgentPartsConfig::Defaults(2).robot_period_steps);
+  const std::unique_ptr<kind_api::ExperimentBuilder> builder = parked.make_builder(config::ConfigNode(), 2);
   EXPECT_EQ(builder->MakeRobot(1, RobotParams())->id(), 1);
   EXPECT_EQ(builder->MakeMetrics(), nullptr);
 }

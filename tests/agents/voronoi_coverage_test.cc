@@ -6,13 +6,13 @@
 #include <cmath>
 
 #include "dream/agents/geometry/convex_polygon.h"
-#include "dream/agents/experiments/coverage_cost.h"
+#include "dream/voronoi_coverage/coverage_cost.h"
 #include "dream/agents/framework/obstacle_sensor.h"
-#include "dream/agents/experiments/position_message.h"
+#include "dream/agents/framework/position_message.h"
 #include "dream/agents/geometry/rectangle_union.h"
 #include "dream/agents/geometry/voronoi_cell.h"
-#include "dream/agents/experiments/voronoi_coverage_metrics.h"
-#include "dream/agents/experiments/voronoi_coverage_robot.h"
+#include "dream/voronoi_coverage/voronoi_coverage_metrics.h"
+#include "dream/voronoi_coverage/voronoi_coverage_robot.h"
 
 namespace dream::agents {
 namespace {
@@ -203,7 +203,7 @@ TEST(RectangleUnionTest, OverlappingRectanglesCountOnce) {
 }
 
 TEST(CoverageCostTest, OneRobotAtTheCentreOfTheEmptyArena) {
-  const CoverageCost cost({-1.6, -1.0}, {1.6, 1.0});
+  const voronoi_coverage::CoverageCost cost({-1.6, -1.0}, {1.6, 1.0});
   // Integral of x^2 + y^2 over a W x H box about its centre: W H (W^2 + H^2) / 12.
   EXPECT_NEAR(cost.Evaluate({{0.0, 0.0}}, {}), 3.2 * 2.0 * (3.2 * 3.2 + 2.0 * 2.0) / 12.0, 1e-12);
   // Two robots splitting it in halves: each half 1.6 x 2 about its centre.
@@ -216,7 +216,7 @@ TEST(CoverageCostTest, OneRobotAtTheCentreOfTheEmptyArena) {
 TEST(CoverageCostTest, MatchesAFineGridWithOverlappingObstaclesAndOneOutsideTheArena) {
   const Vector2d lo(-1.6, -1.0);
   const Vector2d hi(1.6, 1.0);
-  const CoverageCost cost(lo, hi);
+  const voronoi_coverage::CoverageCost cost(lo, hi);
   const std::vector<Vector2d> robots = {{-1.0, 0.5}, {0.3, -0.4}, {1.2, 0.7}, {0.0, 0.6}, {-0.9, -0.8}};
   std::vector<ObstacleView> obstacles(3);
   obstacles[0].center_m = {-0.5, 0.0};
@@ -251,23 +251,23 @@ TEST(SafeSpeedTest, AStepMayUseTheSlackButNotLeaveTheCell) {
   const std::vector<HalfPlane> wall = {{Vector2d(1.0, 0.0), 1.0}};  // x <= 1
   const double dt = 0.033;
   // Facing the wall from 0.999 m: at most 0.001 m in one step.
-  EXPECT_NEAR(VoronoiCoverageRobot::SafeSpeed(0.15, wall, {0.999, 0.0}, 0.0, dt), 0.001 / dt, 1e-12);
-  EXPECT_DOUBLE_EQ(VoronoiCoverageRobot::SafeSpeed(0.15, wall, {0.5, 0.0}, 0.0, dt), 0.15);
+  EXPECT_NEAR(voronoi_coverage::VoronoiCoverageRobot::SafeSpeed(0.15, wall, {0.999, 0.0}, 0.0, dt), 0.001 / dt, 1e-12);
+  EXPECT_DOUBLE_EQ(voronoi_coverage::VoronoiCoverageRobot::SafeSpeed(0.15, wall, {0.5, 0.0}, 0.0, dt), 0.15);
   // Backing away, or driving along the wall, is free.
-  EXPECT_DOUBLE_EQ(VoronoiCoverageRobot::SafeSpeed(-0.15, wall, {0.99, 0.0}, 0.0, dt), -0.15);
-  EXPECT_DOUBLE_EQ(VoronoiCoverageRobot::SafeSpeed(0.15, wall, {0.99, 0.0}, M_PI / 2, dt), 0.15);
+  EXPECT_DOUBLE_EQ(voronoi_coverage::VoronoiCoverageRobot::SafeSpeed(-0.15, wall, {0.99, 0.0}, 0.0, dt), -0.15);
+  EXPECT_DOUBLE_EQ(voronoi_coverage::VoronoiCoverageRobot::SafeSpeed(0.15, wall, {0.99, 0.0}, M_PI / 2, dt), 0.15);
   // Already beyond it: no step further out, any step back.
-  EXPECT_DOUBLE_EQ(VoronoiCoverageRobot::SafeSpeed(0.15, wall, {1.01, 0.0}, 0.0, dt), 0.0);
-  EXPECT_DOUBLE_EQ(VoronoiCoverageRobot::SafeSpeed(0.15, wall, {1.01, 0.0}, M_PI, dt), 0.15);
+  EXPECT_DOUBLE_EQ(voronoi_coverage::VoronoiCoverageRobot::SafeSpeed(0.15, wall, {1.01, 0.0}, 0.0, dt), 0.0);
+  EXPECT_DOUBLE_EQ(voronoi_coverage::VoronoiCoverageRobot::SafeSpeed(0.15, wall, {1.01, 0.0}, M_PI, dt), 0.15);
 }
 
 TEST(DescentSpeedTest, AStepNeverEndsFartherFromTheCentroid) {
   const double dt = 0.033;
   // Centroid 0.001 m ahead: one step may cover at most that (half the break-even 0.002 m).
-  EXPECT_NEAR(VoronoiCoverageRobot::DescentSpeed(0.15, {0.001, 0.0}, {0.0, 0.0}, 0.0, dt), 0.001 / dt, 1e-12);
+  EXPECT_NEAR(voronoi_coverage::VoronoiCoverageRobot::DescentSpeed(0.15, {0.001, 0.0}, {0.0, 0.0}, 0.0, dt), 0.001 / dt, 1e-12);
   // Centroid behind: driving forward is not allowed, backing is.
-  EXPECT_DOUBLE_EQ(VoronoiCoverageRobot::DescentSpeed(0.15, {-1.0, 0.0}, {0.0, 0.0}, 0.0, dt), 0.0);
-  EXPECT_DOUBLE_EQ(VoronoiCoverageRobot::DescentSpeed(-0.15, {-1.0, 0.0}, {0.0, 0.0}, 0.0, dt), -0.15);
+  EXPECT_DOUBLE_EQ(voronoi_coverage::VoronoiCoverageRobot::DescentSpeed(0.15, {-1.0, 0.0}, {0.0, 0.0}, 0.0, dt), 0.0);
+  EXPECT_DOUBLE_EQ(voronoi_coverage::VoronoiCoverageRobot::DescentSpeed(-0.15, {-1.0, 0.0}, {0.0, 0.0}, 0.0, dt), -0.15);
 }
 
 TEST(PositionMessageTest, RoundTripsAndRejectsMalformedPayloads) {
@@ -297,8 +297,8 @@ OdometryReading Odometry(int64_t step, double x, double y, double theta) {
 }
 
 TEST(VoronoiCoverageRobotTest, HoldsStillUntilItHeardItsNeighboursThenHeadsForItsGoal) {
-  VoronoiCoverageParams params;
-  VoronoiCoverageRobot robot(0, RobotParams{}, params);
+  voronoi_coverage::VoronoiCoverageParams params;
+  voronoi_coverage::VoronoiCoverageRobot robot(0, RobotParams{}, params);
   robot.OnOdometry(Odometry(1, 1.0, -0.5, M_PI));
   EXPECT_DOUBLE_EQ(robot.Update(1).v_mps, 0.0);
   // First radio round: nobody has spoken yet; it sends its own position.
@@ -323,11 +323,11 @@ TEST(VoronoiCoverageRobotTest, HoldsStillUntilItHeardItsNeighboursThenHeadsForIt
 }
 
 TEST(VoronoiCoverageRobotTest, StopsAtItsGoalAndReportsDoneAfterHoldingStill) {
-  VoronoiCoverageParams params;
+  voronoi_coverage::VoronoiCoverageParams params;
   params.done_after_still_steps = 3;
   params.radio_rounds_before_moving = 0;
   params.cell.disc_radius_m = 0.3;
-  VoronoiCoverageRobot robot(0, RobotParams{}, params);
+  voronoi_coverage::VoronoiCoverageRobot robot(0, RobotParams{}, params);
   // Alone in the middle of the arena: its disc's centroid is where it is.
   robot.OnOdometry(Odometry(1, 0.0, 0.0, 0.0));
   for (int step = 1; step <= 3; ++step) {
@@ -339,9 +339,9 @@ TEST(VoronoiCoverageRobotTest, StopsAtItsGoalAndReportsDoneAfterHoldingStill) {
 }
 
 TEST(VoronoiCoverageRobotTest, OutsideItsCellItLeavesAtFullSpeed) {
-  VoronoiCoverageParams params;
+  voronoi_coverage::VoronoiCoverageParams params;
   params.radio_rounds_before_moving = 0;
-  VoronoiCoverageRobot robot(0, RobotParams{}, params);
+  voronoi_coverage::VoronoiCoverageRobot robot(0, RobotParams{}, params);
   // An obstacle's closest point 0.05 m ahead, inside the 0.12 m buffer.
   robot.OnOdometry(Odometry(1, 0.0, 0.0, M_PI));
   ObstacleReading obstacles;
@@ -353,12 +353,12 @@ TEST(VoronoiCoverageRobotTest, OutsideItsCellItLeavesAtFullSpeed) {
 }
 
 TEST(VoronoiCoverageParamsTest, InvalidParamsNameTheField) {
-  VoronoiCoverageParams params;
+  voronoi_coverage::VoronoiCoverageParams params;
   params.max_speed_mps = 0.3;
   std::string error;
   EXPECT_FALSE(params.IsValid(&error));
   EXPECT_NE(error.find("max_speed_mps"), std::string::npos);
-  EXPECT_THROW(VoronoiCoverageRobot(0, RobotParams{}, params), std::invalid_argument);
+  EXPECT_THROW(voronoi_coverage::VoronoiCoverageRobot(0, RobotParams{}, params), std::invalid_argument);
 }
 
 class ObstacleRecorder final : public Robot {
@@ -398,10 +398,10 @@ WorldSnapshot Snapshot(int64_t step, std::vector<Eigen::Vector3d> poses) {
 }
 
 TEST(VoronoiCoverageMetricsTest, CostSeriesRiseSettlingAndObstacleClearance) {
-  VoronoiCoverageMetricsParams params;
+  voronoi_coverage::VoronoiCoverageMetricsParams params;
   params.sample_steps = 10;
   params.still_window_steps = 30;
-  VoronoiCoverageMetrics metrics(params);
+  voronoi_coverage::VoronoiCoverageMetrics metrics(params);
   // Two robots move apart for 20 steps at 0.1 m/s, then hold still for 40.
   for (int64_t step = 0; step <= 60; ++step) {
     const double spread = 0.1 + 0.1 * 0.033 * static_cast<double>(std::min<int64_t>(step, 20));
@@ -420,7 +420,7 @@ TEST(VoronoiCoverageMetricsTest, CostSeriesRiseSettlingAndObstacleClearance) {
   EXPECT_EQ(report.values.count("min_obstacle_clearance_m"), 0u);  // no obstacles
 
   // Moving back together raises the cost; an obstacle close by is measured.
-  VoronoiCoverageMetrics again(params);
+  voronoi_coverage::VoronoiCoverageMetrics again(params);
   WorldSnapshot world = Snapshot(0, {{-0.5, 0.0, 0.0}, {0.5, 0.0, 0.0}});
   world.obstacles.push_back({0, {1.0, 0.0}, {0.2, 0.2}, {0.0, 0.0}});
   again.Observe(world);

@@ -14,7 +14,13 @@ document and the code cannot drift apart:
   `dream/world/`, `dream::world`, `dream::world`), its folder's CMakeLists.txt defines that
   target, and its sources open no namespace but `dream::<name>` (and ones nested in it);
 - a row's folder lies on its floor (the folder's first part), and a row may use only
-  libraries of its own floor or of floors below it (the doc's "Floors, bottom up:" line).
+  libraries of its own floor or of floors below it (the doc's "Floors, bottom up:" line);
+- no two libraries may use each other, directly or through others (inside a floor too).
+
+A row whose folder is `<parent>/<kind>/` stands for one library per folder of `<parent>/` that
+has a CMakeLists.txt (the built-in experiment kinds, `agents/kinds/<kind>/`): each is checked
+as a row of its own with `<kind>` replaced by the folder's name, and `<kind>` in another row's
+"may use" names every one of them.
 
 Before the sources, the checker must flag a synthetic row that breaks each rule, so a checker
 that accepts everything fails here.
@@ -53,12 +59,40 @@ class Row:
         self.namespace, self.targets, self.may_use = namespace, targets, may_use
 
 
-def read_table(doc_path):
+PLACEHOLDER = "<kind>"
+
+
+def template_parent(line):
+    """`agents/kinds` for a template row (folder `agents/kinds/<kind>/`), else None."""
+    folder = re.match(r"^\|[^|]*\|\s*`([^`]*)`", line)
+    if not line.startswith("|") or not folder or PLACEHOLDER not in folder.group(1):
+        return None
+    return folder.group(1).split(PLACEHOLDER)[0].strip("/")
+
+
+def expand_templates(lines, subfolders):
+    """The table's lines with each template row (folder `<parent>/<kind>/`) made one row per
+    folder `subfolders(parent)` names, and `<kind>` in other rows standing for all of them."""
+    names = [name for line in lines if template_parent(line) is not None for name in subfolders(template_parent(line))]
+    out = []
+    for line in lines:
+        parent = template_parent(line)
+        if parent is not None:
+            out += [line.replace(PLACEHOLDER, name) for name in subfolders(parent)]
+        elif line.startswith("|"):
+            out.append(line.replace(f"`{PLACEHOLDER}`", ", ".join(f"`{name}`" for name in names) or "none"))
+        else:
+            out.append(line)
+    return out
+
+
+def read_table(doc_path, subfolders=lambda parent: []):
     """The floors, bottom up, and the rows of the library table: {folder: Row}; a row without
-    public headers (the command line, lcm-gen's types) only names its library's floor."""
+    public headers (the command line, lcm-gen's types) only names its library's floor.
+    `subfolders(parent)`: the library folders a template row's `<parent>/<kind>/` stands for."""
     rows, floor_of = {}, {}
     with open(doc_path, encoding="utf-8") as doc:
-        lines = doc.read().splitlines()
+        lines = expand_templates(doc.read().splitlines(), subfolders)
     floors = next((re.findall(r"`([a-z_]+)`", m.group(1)) for m in map(FLOORS_LINE.match, lines) if m), None)
     if not floors:
         raise SystemExit(f"FAIL: {doc_path}: no line 'Floors, bottom up: `a`, `b`, ....'")
@@ -110,6 +144,27 @@ def row_violations(floors, floor_of, rows, read):
             if used in floor_of and floor_of[used] in floors and row.floor in floors \
                     and floors.index(floor_of[used]) > floors.index(row.floor):
                 found.append(f"{where}: may use {used}, of the higher floor {floor_of[used]}")
+    return found
+
+
+def cycles(rows):
+    """Libraries that may use themselves through others (an arrow running back up, also
+    inside a floor: agents -> kind_api -> <kind> -> agent_host), one line each."""
+    uses = {row.own: row.may_use for row in rows.values()}
+    found = []
+    for start in sorted(uses):
+        path, todo, seen = {start: [start]}, [start], set()
+        while todo:
+            name = todo.pop()
+            for used in sorted(uses.get(name, ())):
+                if used == start:
+                    found.append(f"docs/architecture.md: {' -> '.join(path[name] + [start])}: the libraries use each other")
+                    todo = []
+                    break
+                if used in uses and used not in seen:
+                    seen.add(used)
+                    path[used] = path[name] + [used]
+                    todo.append(used)
     return found
 
 
@@ -184,6 +239,9 @@ def self_test():
         "high/h/CMakeLists.txt": "dream_add_library(hh\n",                       # the wrong target
     }
     found = violations(rows, list(texts), texts.__getitem__) + row_violations(floors, floor_of, rows, texts.get)
+    looped = {"x": Row("low", "low/x", "x", "dream::x", {"x"}, {"y"}), "y": Row("low", "low/y", "y", "dream::y", {"y"}, {"x"})}
+    if not cycles(looped) or cycles(rows):
+        raise SystemExit(f"FAIL: self test: x and y use each other, a and b do not ({cycles(looped)}, {cycles(rows)})")
     expected = ["low/b/src/y.cc:", "low/b/src/z.cc:", "low/b/src/t.cc:", "low/b/src/n.cc:", "lib/c/include/dream/c/c.h:",
                 "docs/architecture.md: low/c/: the folder's name", "docs/architecture.md: low/c/: namespace",
                 "docs/architecture.md: low/c/: CMake target", "docs/architecture.md: low/c/: may use h",
@@ -191,6 +249,13 @@ def self_test():
     for prefix in expected:
         if not any(line.startswith(prefix) for line in found):
             raise SystemExit(f"FAIL: self test: {prefix} breaks a rule but was not flagged ({found})")
+    table = ["| low | `low/k/<kind>/` | `dream::<kind>` | `dream/<kind>/` | `dream::<kind>` | `b` | |",
+             "| high | `high/h/` | `dream::h` | `dream/h/` | `dream::h` | `<kind>`, `a` | |"]
+    expanded = expand_templates(table, lambda parent: ["p", "q"] if parent == "low/k" else [])
+    if expanded != ["| low | `low/k/p/` | `dream::p` | `dream/p/` | `dream::p` | `b` | |",
+                    "| low | `low/k/q/` | `dream::q` | `dream/q/` | `dream::q` | `b` | |",
+                    "| high | `high/h/` | `dream::h` | `dream/h/` | `dream::h` | `p`, `q`, `a` | |"]:
+        raise SystemExit(f"FAIL: self test: the template row `low/k/<kind>/` was not expanded per folder ({expanded})")
     if any(line.startswith(("low/a/", "low/b/src/f.cc", "docs/architecture.md: low/a/", "docs/architecture.md: low/b/"))
            for line in found):
         raise SystemExit(f"FAIL: self test: low/a and low/b keep the rules but were flagged ({found})")
@@ -201,7 +266,12 @@ def main():
     parser.add_argument("--source", required=True, help="the repository's root")
     args = parser.parse_args()
     self_test()
-    floors, floor_of, rows = read_table(os.path.join(args.source, "docs", "architecture.md"))
+    def subfolders(parent):
+        folder = os.path.join(args.source, parent)
+        return sorted(name for name in (os.listdir(folder) if os.path.isdir(folder) else [])
+                      if os.path.isfile(os.path.join(folder, name, "CMakeLists.txt")))
+
+    floors, floor_of, rows = read_table(os.path.join(args.source, "docs", "architecture.md"), subfolders)
 
     def read(path):
         full = os.path.join(args.source, path)
@@ -210,7 +280,7 @@ def main():
         with open(full, encoding="utf-8", errors="replace") as f:
             return f.read()
 
-    found = violations(rows, tracked_files(args.source), read) + row_violations(floors, floor_of, rows, read)
+    found = violations(rows, tracked_files(args.source), read) + row_violations(floors, floor_of, rows, read) + cycles(rows)
     for line in found:
         print(line)
     if found:

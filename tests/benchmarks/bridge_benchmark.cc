@@ -11,7 +11,7 @@
 #include <ostream>
 #include <string>
 
-#include "dream/agents/experiments/calibration_drive.h"
+#include "dream/calibration_drive/calibration_drive.h"
 #include "dream/bridge/lab_calibration.h"
 #include "dream/bridge/lab_import.h"
 #include "dream/workflows/import_workflow.h"
@@ -209,9 +209,9 @@ namespace {
 // for under 10 s (docs/performance.md).
 void BM_Calibrate20Robots5000Steps(benchmark::State& state) {
   using namespace dream;
-  using agents::CalibrationDrive;
+  using calibration_drive::CalibrationDrive;
   std::vector<world::Pose2> start;
-  for (const Eigen::Vector3d& pose : CalibrationDrive::StartPoses(20)) start.push_back({pose.x(), pose.y(), pose.z()});
+  for (const Eigen::Vector3d& pose : calibration_drive::CalibrationDrive::StartPoses(20)) start.push_back({pose.x(), pose.y(), pose.z()});
   world::RealisticWorld world(world::WorldParams{}, world::RealismParams::Lab(), 1, start);
   bridge::CalibrationRun run;
   run.name = "synthetic";
@@ -220,7 +220,7 @@ void BM_Calibrate20Robots5000Steps(benchmark::State& state) {
   double time_s = 0;
   for (int64_t k = 0; k < 5000; ++k) {
     run.track.utime.push_back(std::llround(time_s * 1e6));
-    const agents::UnicycleCommand program = CalibrationDrive::CommandAt(k % CalibrationDrive::Steps());
+    const agents::UnicycleCommand program = calibration_drive::CalibrationDrive::CommandAt(k % calibration_drive::CalibrationDrive::Steps());
     const world::UnicycleCommand command{program.v_mps, program.w_radps};
     for (int i = 0; i < 20; ++i) {
       run.track.poses.push_back(world.poses()[static_cast<size_t>(i)]);

@@ -7,7 +7,7 @@
 
 #include <stdexcept>
 
-#include "dream/agents/experiments/calibration_drive.h"
+#include "dream/calibration_drive/calibration_drive.h"
 #include "dream/run_config/run_config.h"
 
 namespace dream::bridge {
@@ -23,15 +23,15 @@ TEST(CalibrationConfigTest, ShippedConfigIsTheEightRobotCase) {
   const run_config::RunConfig written = Written(8);
   EXPECT_EQ(written.name, "calibration_8");
   EXPECT_EQ(shipped.num_robots, written.num_robots);
-  EXPECT_EQ(shipped.sim.max_steps, agents::CalibrationDrive::Steps());
-  EXPECT_EQ(written.sim.max_steps, agents::CalibrationDrive::Steps());
+  EXPECT_EQ(shipped.sim.max_steps, calibration_drive::CalibrationDrive::Steps());
+  EXPECT_EQ(written.sim.max_steps, calibration_drive::CalibrationDrive::Steps());
   EXPECT_TRUE(shipped.sim.stop_when_done);
   EXPECT_TRUE(written.sim.stop_when_done);
   EXPECT_EQ(shipped.controller.Required("kind").AsString(), "calibration_drive");
   EXPECT_EQ(written.controller.Required("kind").AsString(), "calibration_drive");
   ASSERT_EQ(shipped.initial_poses.size(), 8u);
   ASSERT_EQ(written.initial_poses.size(), 8u);
-  const std::vector<Eigen::Vector3d> program = agents::CalibrationDrive::StartPoses(8);
+  const std::vector<Eigen::Vector3d> program = calibration_drive::CalibrationDrive::StartPoses(8);
   for (size_t i = 0; i < 8; ++i) {
     EXPECT_NEAR(shipped.initial_poses[i].x_m, program[i].x(), 1e-9) << i;
     EXPECT_NEAR(shipped.initial_poses[i].y_m, program[i].y(), 1e-9) << i;

@@ -12,7 +12,7 @@
 #include <map>
 #include <string>
 
-#include "dream/agents/experiments/calibration_drive.h"
+#include "dream/calibration_drive/calibration_drive.h"
 #include "dream/bridge/calibration_run.h"
 #include "dream/bridge/mat_file.h"
 #include "dream/bridge/npy_file.h"
@@ -52,16 +52,16 @@ world::RealismParams SyntheticLab() {
   return lab;
 }
 
-using agents::CalibrationDrive;
+using calibration_drive::CalibrationDrive;
 
 // The calibration program's start poses and commands as the world takes them.
 std::vector<world::Pose2> StartPoses(int robots) {
   std::vector<world::Pose2> poses;
-  for (const Eigen::Vector3d& pose : CalibrationDrive::StartPoses(robots)) poses.push_back({pose.x(), pose.y(), pose.z()});
+  for (const Eigen::Vector3d& pose : calibration_drive::CalibrationDrive::StartPoses(robots)) poses.push_back({pose.x(), pose.y(), pose.z()});
   return poses;
 }
 world::UnicycleCommand CommandAt(int64_t step) {
-  const agents::UnicycleCommand command = CalibrationDrive::CommandAt(step);
+  const agents::UnicycleCommand command = calibration_drive::CalibrationDrive::CommandAt(step);
   return {command.v_mps, command.w_radps};
 }
 
@@ -74,10 +74,10 @@ CalibrationRun SyntheticRun(const world::RealismParams& lab, int robots, uint64_
   run.timed = true;
   run.track.num_robots = robots;
   double time_s = 0;
-  const int64_t steps = CalibrationDrive::Steps() * repeats;
+  const int64_t steps = calibration_drive::CalibrationDrive::Steps() * repeats;
   for (int64_t k = 0; k < steps; ++k) {
     run.track.utime.push_back(std::llround(time_s * 1e6));
-    const world::UnicycleCommand command = CommandAt(k % CalibrationDrive::Steps());
+    const world::UnicycleCommand command = CommandAt(k % calibration_drive::CalibrationDrive::Steps());
     for (int i = 0; i < robots; ++i) {
       run.track.poses.push_back(world.poses()[static_cast<size_t>(i)]);
       run.track.commands.push_back(command);

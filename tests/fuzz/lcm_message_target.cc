@@ -2,8 +2,8 @@
 #include <cstring>
 #include <vector>
 
-#include "dream/agents/experiments/formation_state_message.h"
-#include "dream/agents/experiments/position_message.h"
+#include "dream/affine_formation/formation_state_message.h"
+#include "dream/agents/framework/position_message.h"
 #include "dream/applied_commands_t.hpp"
 #include "dream/lcm/lcm_typed.h"
 #include "dream/lcm/wire_layout_of.h"
@@ -49,7 +49,7 @@ void LcmMessageTarget(const uint8_t* data, size_t size) {
     case 6: Decode<velocity_command_t>(bytes); break;
     default:
       (void)agents::PositionMessage::Decode(bytes, 1);
-      (void)agents::FormationStateMessage::Decode(bytes, 1);
+      (void)affine_formation::FormationStateMessage::Decode(bytes, 1);
   }
 }
 

@@ -48,6 +48,8 @@ def parse_args():
 def installed_files_are_there(prefix):
     for relative in ["bin/dream", "bin/dream-agent", "lib/libdream_agent_host.so", "lib/libdream_agents.so",
                      "include/dream/agent_host/controller_plugin.h", "include/dream/agents/framework/robot.h",
+                     "include/dream/kind_api/controller_kind.h", "lib/libdream_kind_api.so",
+                     "include/dream/go_to_goal/kind.h", "lib/libdream_go_to_goal.so",
                      "include/dream/config/config_node.h", "include/dream/robot_poses_t.hpp",
                      "lib/cmake/dream/dreamConfig.cmake", "lib/cmake/dream/dreamConfigVersion.cmake",
                      "lib/cmake/dream/dreamTargets.cmake", "share/dream/java/dream_lcmtypes.jar",

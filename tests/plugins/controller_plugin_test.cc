@@ -156,13 +156,13 @@ TEST(ControllerPluginTest, TwoPluginsWithOneKindAreRefusedNamingTheFirst) {
 }
 
 // A builder with every optional member ControllerKind::Of reads.
-class FussyBuilder final : public agent_host::ExperimentBuilder {
+class FussyBuilder final : public kind_api::ExperimentBuilder {
  public:
   static constexpr const char* kKind = "fussy";
   static constexpr bool kGraphMustConnect = true;
   static std::vector<const char*> Keys() { return {"a", "b"}; }
-  static agent_host::AgentPartsConfig DefaultParts(int num_robots) {
-    agent_host::AgentPartsConfig parts = agent_host::AgentPartsConfig::Defaults(num_robots);
+  static kind_api::AgentPartsConfig DefaultParts(int num_robots) {
+    kind_api::AgentPartsConfig parts = kind_api::AgentPartsConfig::Defaults(num_robots);
     parts.robot.vel_gain = 0.5;
     return parts;
   }
@@ -172,7 +172,7 @@ class FussyBuilder final : public agent_host::ExperimentBuilder {
 };
 
 TEST(ControllerKindTest, OfReadsTheBuildersStaticMembers) {
-  const agent_host::ControllerKind kind = agent_host::ControllerKind::Of<FussyBuilder>();
+  const kind_api::ControllerKind kind = kind_api::ControllerKind::Of<FussyBuilder>();
   EXPECT_EQ(kind.name, "fussy");
   EXPECT_EQ(kind.keys, (std::vector<std::string>{"a", "b"}));
   EXPECT_TRUE(kind.graph_must_connect);
@@ -186,10 +186,10 @@ TEST(ControllerKindTest, OfReadsTheBuildersStaticMembers) {
 
 TEST(ControllerRegistryTest, RefusesNamelessKindsAndDuplicates) {
   agent_host::ControllerRegistry registry;
-  EXPECT_THROW(registry.Add(agent_host::ControllerKind()), std::invalid_argument);
-  registry.Add(agent_host::ControllerKind::Of<FussyBuilder>(), "here");
+  EXPECT_THROW(registry.Add(kind_api::ControllerKind()), std::invalid_argument);
+  registry.Add(kind_api::ControllerKind::Of<FussyBuilder>(), "here");
   try {
-    registry.Add(agent_host::ControllerKind::Of<FussyBuilder>(), "there");
+    registry.Add(kind_api::ControllerKind::Of<FussyBuilder>(), "there");
     ADD_FAILURE() << "a duplicate kind was accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(), "controller kind 'fussy' is registered twice (here and there)");

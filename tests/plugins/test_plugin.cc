@@ -40,7 +40,7 @@ class NoMetrics final : public ExperimentMetrics {
   }
 };
 
-class StillBuilder final : public dream::agent_host::ExperimentBuilder {
+class StillBuilder final : public dream::kind_api::ExperimentBuilder {
  public:
   static constexpr const char* kKind = "test_still";
   static std::vector<const char*> Keys() { return {"patience_s"}; }
@@ -52,8 +52,8 @@ class StillBuilder final : public dream::agent_host::ExperimentBuilder {
   std::vector<std::vector<Eigen::Vector2d>> GoalsToDraw() const override { return {{Eigen::Vector2d(0.25, -0.5)}}; }
 };
 
-[[maybe_unused]] dream::agent_host::ControllerKind Named(const char* name) {
-  dream::agent_host::ControllerKind kind = dream::agent_host::ControllerKind::Of<StillBuilder>();
+[[maybe_unused]] dream::kind_api::ControllerKind Named(const char* name) {
+  dream::kind_api::ControllerKind kind = dream::kind_api::ControllerKind::Of<StillBuilder>();
   kind.name = name;
   return kind;
 }

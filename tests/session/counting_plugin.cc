@@ -20,7 +20,7 @@ class DriveRobot final : public dream::agents::Robot {
   double speed_mps_;
 };
 
-class DriveBuilder final : public dream::agent_host::ExperimentBuilder {
+class DriveBuilder final : public dream::kind_api::ExperimentBuilder {
  public:
   static constexpr const char* kKind = "session_test_drive";
   static std::vector<const char*> Keys() { return {"speed_mps"}; }

@@ -34,7 +34,7 @@ ControllerFactory::ControllerFactory(const config::ConfigNode& section, int num_
                                      std::shared_ptr<const ControllerRegistry> registry)
     : registry_(std::move(registry)), num_robots_(num_robots), run_seed_(run_seed) {
   kind_ = section.Required("kind").AsString();
-  const ControllerKind* entry = registry_->Find(kind_);
+  const kind_api::ControllerKind* entry = registry_->Find(kind_);
   if (entry == nullptr) {
     const std::vector<std::string> kinds = registry_->Names();
     std::string known;
@@ -51,8 +51,9 @@ ControllerFactory::ControllerFactory(const config::ConfigNode& section, int num_
     section.Optional(key).Fail("unknown key for kind " + kind_ + config::DidYouMean(key, keys) +
                                "; allowed keys here: " + allowed);
   }
-  parts_ = AgentPartsConfig::Read(section, num_robots, entry->default_parts(num_robots), entry->graph_must_connect);
+  parts_ = kind_api::AgentPartsConfig::Read(section, num_robots, entry->default_parts(num_robots), entry->graph_must_connect);
   builder_ = entry->make_builder(section, num_robots);
+  entry_ = entry;
 }
 
 ControllerFactory::~ControllerFactory() = default;

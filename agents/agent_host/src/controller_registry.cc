@@ -2,14 +2,8 @@
 
 #include <stdexcept>
 
-#include "dream/agent_host/affine_formation_builder.h"
-#include "dream/agent_host/calibration_drive_builder.h"
+#include "built_in_kinds.h"
 #include "dream/agent_host/controller_plugin_loader.h"
-#include "dream/agent_host/go_to_goal_builder.h"
-#include "dream/agent_host/hrvo_circle_builder.h"
-#include "dream/agent_host/line_deployment_builder.h"
-#include "dream/agent_host/python_controller_builder.h"
-#include "dream/agent_host/voronoi_coverage_builder.h"
 
 namespace dream::agent_host {
 namespace {
@@ -19,13 +13,7 @@ constexpr const char* kBuiltIn = "built in";
 std::string Described(const std::string& origin) { return origin.empty() ? std::string("unnamed") : origin; }
 
 void AddBuiltIns(ControllerRegistry& registry) {
-  registry.Add(ControllerKind::Of<GoToGoalBuilder>(), kBuiltIn);
-  registry.Add(ControllerKind::Of<AffineFormationBuilder>(), kBuiltIn);
-  registry.Add(ControllerKind::Of<VoronoiCoverageBuilder>(), kBuiltIn);
-  registry.Add(ControllerKind::Of<HrvoCircleBuilder>(), kBuiltIn);
-  registry.Add(ControllerKind::Of<LineDeploymentBuilder>(), kBuiltIn);
-  registry.Add(ControllerKind::Of<CalibrationDriveBuilder>(), kBuiltIn);
-  registry.Add(PythonControllerBuilder::Kind(), kBuiltIn);
+  AddBuiltInKinds(registry, kBuiltIn);
 }
 
 }  // namespace
@@ -46,7 +34,16 @@ std::shared_ptr<const ControllerRegistry> ControllerRegistry::ForConfig(const co
   return registry;
 }
 
-void ControllerRegistry::Add(ControllerKind kind, const std::string& origin) {
+std::shared_ptr<const kind_api::ControllerKind> ControllerRegistry::KindOf(const config::ControllerConfig& config) {
+  const config::ConfigNode name = config.controller.Optional("kind");
+  if (!name.IsDefined() || name.IsMap() || name.IsSequence()) return nullptr;
+  std::shared_ptr<const ControllerRegistry> registry = ForConfig(config);
+  const kind_api::ControllerKind* kind = registry->Find(name.AsString());
+  if (kind == nullptr) return nullptr;
+  return {std::move(registry), kind};  // shares the registry's ownership
+}
+
+void ControllerRegistry::Add(kind_api::ControllerKind kind, const std::string& origin) {
   if (kind.name.empty()) throw std::invalid_argument("a controller kind needs a name");
   if (!kind.make_builder) throw std::invalid_argument("controller kind '" + kind.name + "' has no make_builder");
   if (!kind.default_parts) throw std::invalid_argument("controller kind '" + kind.name + "' has no default_parts");
@@ -70,7 +67,7 @@ void ControllerRegistry::AddAll(const ControllerRegistry& other, const std::stri
   for (const Entry& entry : other.entries_) entries_.push_back({entry.kind, origin});
 }
 
-const ControllerKind* ControllerRegistry::Find(const std::string& name) const {
+const kind_api::ControllerKind* ControllerRegistry::Find(const std::string& name) const {
   const std::lock_guard<std::mutex> lock(mutex_);
   const Entry* entry = FindLocked(name);
   return entry == nullptr ? nullptr : &entry->kind;

@@ -5,31 +5,40 @@
 #include "commands.h"
 #include "dream/lcm/run_id.h"
 #include "dream/agent_host/controller_factory.h"
-#include "dream/agent_host/python_controller_spec.h"
+#include "dream/kind_api/controller_kind.h"
 
 namespace dream::cli {
+namespace {
+
+bool RunsInPython(const agent_host::ControllerFactory& factory) {
+  return factory.registered_kind().runtime == kind_api::ControllerKind::Runtime::kPython;
+}
+
+}  // namespace
+
 void HostedAgents::Check(const config::ControllerConfig& config, const agent_host::ControllerFactory* built,
                          double start_timeout_s) {
-  if (agent_host::IsPythonController(config)) {
-    PythonHostProcess::Check(agent_host::PythonControllerSpecJson(config), start_timeout_s);
-  } else if (built == nullptr) {
-    agent_host::ControllerFactory{config};  // its constructor is the check
+  std::unique_ptr<agent_host::ControllerFactory> own;
+  if (built == nullptr) {
+    own = std::make_unique<agent_host::ControllerFactory>(config);  // its constructor checks the section
+    built = own.get();
   }
+  if (RunsInPython(*built)) PythonHostProcess::Check(built->registered_kind().runtime_spec(config), start_timeout_s);
 }
 
 HostedAgents::HostedAgents(lcm::LcmBus& bus, const config::ControllerConfig& config, const std::vector<int>& robot_ids,
                            const agent_host::ControllerFactory* factory,
                            const PythonHostProcess::Limits& python_limits)
     : bus_(bus) {
-  if (agent_host::IsPythonController(config)) {
-    python_ = std::make_unique<PythonHostProcess>(bus, agent_host::PythonControllerSpecJson(config), robot_ids,
-                                                  NewAgentId(), python_limits);
-    return;
-  }
   std::unique_ptr<agent_host::ControllerFactory> own;
   if (factory == nullptr) {
     own = std::make_unique<agent_host::ControllerFactory>(config);
     factory = own.get();
+  }
+  if (RunsInPython(*factory)) {
+    python_ = std::make_unique<PythonHostProcess>(bus, factory->registered_kind().runtime_spec(config), robot_ids,
+                                                  NewAgentId(), python_limits);
+    return;
   }
   std::vector<std::unique_ptr<agents::RobotAgent>> robots;
   for (int id : robot_ids) robots.push_back(factory->Make(id));

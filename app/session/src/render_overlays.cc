@@ -5,7 +5,7 @@
 #include <memory>
 #include <vector>
 
-#include "dream/agent_host/agent_parts_config.h"
+#include "dream/kind_api/agent_parts_config.h"
 #include "dream/agent_host/controller_factory.h"
 #include "dream/agent_host/python_controller_spec.h"
 #include "dream/bridge/python_run_metrics.h"
@@ -25,20 +25,20 @@ class RadioHolder final : public agents::Robot {
   agents::UnicycleCommand Update(int64_t) override { return {}; }
 };
 
-std::vector<render::SensorReach> SensorReachesOf(const agent_host::AgentPartsConfig& parts) {
+std::vector<render::SensorReach> SensorReachesOf(const kind_api::AgentPartsConfig& parts) {
   std::vector<render::SensorReach> reaches;
-  for (const agent_host::SensorConfig& sensor : parts.sensors) {
-    if (sensor.kind == agent_host::SensorConfig::Kind::kMovement) {
+  for (const kind_api::SensorConfig& sensor : parts.sensors) {
+    if (sensor.kind == kind_api::SensorConfig::Kind::kMovement) {
       reaches.push_back({sensor.movement.range_m, sensor.movement.direction_rad, sensor.movement.field_of_view_rad});
-    } else if (sensor.kind == agent_host::SensorConfig::Kind::kObstacle) {
+    } else if (sensor.kind == kind_api::SensorConfig::Kind::kObstacle) {
       reaches.push_back({sensor.obstacle.range_m});
     }
   }
   return reaches;
 }
 
-render::ArenaOverlays::RadioHearing HearingOf(const agent_host::AgentPartsConfig& parts, int num_robots, uint64_t seed) {
-  if (parts.radio.kind == agent_host::RadioConfig::Kind::kNone) return {};
+render::ArenaOverlays::RadioHearing HearingOf(const kind_api::AgentPartsConfig& parts, int num_robots, uint64_t seed) {
+  if (parts.radio.kind == kind_api::RadioConfig::Kind::kNone) return {};
   auto radios = std::make_shared<std::vector<std::unique_ptr<agents::Radio>>>();
   for (int id = 0; id < num_robots; ++id) {
     radios->push_back(parts.MakeSpec(std::make_unique<RadioHolder>(id, parts.robot), seed).radio);
@@ -63,7 +63,7 @@ render::ArenaOverlays ArenaOverlaysFromConfig(const run_config::RunConfig& confi
 }
 
 render::ArenaOverlays ArenaOverlaysFromConfig(const run_config::RunConfig& config, const agent_host::ControllerFactory& factory) {
-  const agent_host::AgentPartsConfig& parts = factory.parts();
+  const kind_api::AgentPartsConfig& parts = factory.parts();
   render::ArenaOverlays overlays;
   for (const std::vector<Eigen::Vector2d>& points : factory.GoalsToDraw()) {
     Points goals;

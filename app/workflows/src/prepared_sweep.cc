@@ -5,10 +5,10 @@
 #include <optional>
 #include <stdexcept>
 
-#include "dream/agent_host/python_controller_builder.h"
 #include "dream/config_overrides/config_override.h"
 #include "dream/config_overrides/config_text.h"
 #include "dream/agent_host/controller_factory.h"
+#include "dream/agent_host/controller_registry.h"
 #include "dream/config/config_error.h"
 #include "dream/files/file_text.h"
 #include "dream/files/output_folder.h"
@@ -29,26 +29,28 @@ run_config::RunConfig CheckRunConfig(const config::ConfigNode& root) {
   return config;
 }
 
-/// A python controller's module that `root` names by a relative path: that
-/// path, and the file it names (resolved from the base config's folder as
-/// `dream run` resolves it), which is set into `root` so the checks find it
-/// while the run folders do not exist yet. Nothing for other kinds and
-/// absolute paths.
+/// The file of the controller's kind (its ControllerKind::file_key: a python
+/// controller's module) that `root` names by a relative path: that path, and
+/// the file it names (resolved from the base config's folder as `dream run`
+/// resolves it), which is set into `root` so the checks find it while the run
+/// folders do not exist yet. Nothing for kinds without a file and absolute
+/// paths.
 struct ModuleSource {
   fs::path relative;
   fs::path source;
+  std::string key;  ///< of the controller section
 };
-std::optional<ModuleSource> PythonModuleSource(YAML::Node& root, const std::string& base_config_path) {
+std::optional<ModuleSource> KindFileSource(YAML::Node& root, const std::string& base_config_path,
+                                           const agent_host::ControllerRegistry& kinds) {
   YAML::Node controller = root["controller"];
-  if (!controller.IsMap() || !controller["kind"].IsScalar() || controller["kind"].Scalar() != agent_host::PythonControllerBuilder::kKind ||
-      !controller["module"].IsScalar()) {
-    return std::nullopt;
-  }
-  const fs::path module(controller["module"].Scalar());
+  if (!controller.IsMap() || !controller["kind"].IsScalar()) return std::nullopt;
+  const kind_api::ControllerKind* kind = kinds.Find(controller["kind"].Scalar());
+  if (kind == nullptr || kind->file_key.empty() || !controller[kind->file_key].IsScalar()) return std::nullopt;
+  const fs::path module(controller[kind->file_key].Scalar());
   if (module.is_absolute()) return std::nullopt;
   const fs::path source = (fs::absolute(base_config_path).parent_path() / module).lexically_normal();
-  controller["module"] = source.string();
-  return ModuleSource{module.lexically_normal(), source};
+  controller[kind->file_key] = source.string();
+  return ModuleSource{module.lexically_normal(), source, kind->file_key};
 }
 
 }  // namespace
@@ -75,9 +77,10 @@ PreparedSweep::PreparedSweep(const SweepSettings& settings, const run_config::Ru
 
   const fs::path out(out_dir);
   std::map<std::string, std::shared_ptr<const ModuleCopy>> module_texts;
+  const std::shared_ptr<const agent_host::ControllerRegistry> kinds = agent_host::ControllerRegistry::ForConfig(base);
   for (const SweepPlan::Run& run : plan_.runs()) {
     YAML::Node root = SweepPlan::MakeRunConfig(base_text, settings.config_path, run);
-    const std::optional<ModuleSource> module_source = PythonModuleSource(root, settings.config_path);
+    const std::optional<ModuleSource> module_source = KindFileSource(root, settings.config_path, *kinds);
     // In the file, not on dream run's command line: the run folder's config alone repeats the run.
     if (settings.steps > 0) config_overrides::ApplyConfigOverride(root, "steps", std::to_string(settings.steps), settings.config_path);
     const std::string where = "run " + run.name + " (" + run.Label() + "): ";
@@ -107,7 +110,7 @@ PreparedSweep::PreparedSweep(const SweepSettings& settings, const run_config::Ru
         shared = std::make_shared<const ModuleCopy>(ModuleCopy{relative, files::ReadFileText(module_source->source.string())});
       }
       module = shared;
-      root["controller"]["module"] = relative;
+      root["controller"][module_source->key] = relative;
       config_texts_.push_back(config_overrides::ConfigText(root, header));
     } else {
       config_texts_.push_back(text);

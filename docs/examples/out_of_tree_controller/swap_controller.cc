@@ -6,13 +6,13 @@
 #include <optional>
 
 #include "dream/agent_host/controller_plugin.h"
-#include "dream/agent_host/hrvo_config.h"
+#include "dream/kind_api/hrvo_config.h"
 #include "dream/agents/hrvo/hrvo_robot.h"
 
 class SwapRobot final : public dream::agents::HrvoRobot {
  public:
   SwapRobot(int id, const dream::agents::RobotParams& params, const dream::config::ConfigNode& section)
-      : HrvoRobot(id, params, dream::agent_host::ReadHrvoRobotParams(section)),
+      : HrvoRobot(id, params, dream::kind_api::ReadHrvoRobotParams(section)),
         speed_mps_(section.GetDouble("speed_mps", 0.15)),
         tolerance_m_(section.GetDouble("tolerance_m", 0.03)) {
     if (speed_mps_ <= 0.0) section.FailAt("speed_mps", "must be > 0");

@@ -6,7 +6,7 @@ namespace dream::bridge {
 
 /// The run behind `dream export --calibration --robots N`: the config of N
 /// robots driving the calibration program (kind calibration_drive, start
-/// poses agents::CalibrationDrive::StartPoses(N), steps = the program's
+/// poses calibration_drive::CalibrationDrive::StartPoses(N), steps = the program's
 /// length, the ideal world), as config/calibration.yaml is for 8.
 class CalibrationConfig {
  public:

@@ -5,12 +5,14 @@
 
 namespace dream::bridge {
 
-/// Copies a Python controller's module (kind python) into `out` at the path
-/// the config names it by, when that path is relative (it then stays inside
-/// the config's folder: PythonControllerBuilder refuses others), so that the copy of the config in `out` finds it: `dream
-/// run` keeps the module in the run folder this way, and export and import
-/// do the same, so `dream lab-replay` of an imported run runs the same
-/// controller. Other kinds, and absolute module paths, need nothing.
+/// Copies the file a kind's section names by its ControllerKind::file_key (the
+/// python kind's `module`) into `out` at the path the config names it by, when
+/// that path is relative (it then stays inside the config's folder:
+/// config::FileBesideConfig refuses others), so that the copy of the config in
+/// `out` finds it: `dream run` keeps the module in the run folder this way,
+/// and export and import do the same, so `dream lab-replay` of an imported run
+/// runs the same controller. Kinds without a file, and absolute paths, need
+/// nothing.
 /// @throws config::ConfigError when the module cannot be read.
 void KeepControllerModule(const run_config::RunConfig& config, const files::OutputFolder& out);
 

@@ -22,7 +22,8 @@ nlohmann::ordered_json MetricsJson(const run_config::RunConfig& config, const ru
 /// plugins are not loaded and its section not read again).
 nlohmann::ordered_json MetricsJson(const agent_host::ControllerFactory& factory, const run_log::RunLog& log);
 
-/// The same, plus, for a Python controller (kind python), the figures, goal
+/// The same, plus, for a kind whose robots run in the Python runtime
+/// (ControllerKind::Runtime::kPython: the python kind), the figures, goal
 /// and goal points its class declares (PythonRunMetrics, with the Python
 /// runtime in `python_runtime_dir`): its goal becomes "goal", its goal points
 /// "goal_points", its figures join the others (never replacing one). A class

@@ -20,7 +20,7 @@ class PythonRunMetrics {
 
   /// {"declared": [...], "metrics": {...}, "goal": {...} or null,
   /// "goal_points": [[[x, y], ...] per robot]} for the controller of
-  /// `spec_json` (agent_host::PythonControllerSpecJson) over `log`'s poses.
+  /// `spec_json` (the kind's ControllerKind::runtime_spec) over `log`'s poses.
   /// @throws std::runtime_error naming the module and what failed (its
   ///         exception with file and line, a bad return value, a timeout).
   static nlohmann::json Compute(const std::string& runtime_dir, const std::string& spec_json,

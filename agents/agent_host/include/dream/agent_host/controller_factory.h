@@ -4,8 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "dream/agent_host/agent_parts_config.h"
-#include "dream/agent_host/experiment_builder.h"
+#include "dream/kind_api/agent_parts_config.h"
+#include "dream/kind_api/controller_kind.h"
+#include "dream/kind_api/experiment_builder.h"
 #include "dream/agents/framework/robot_agent.h"
 #include "dream/config/config_node.h"
 #include "dream/config/controller_config.h"
@@ -52,8 +53,10 @@ class ControllerFactory {
   std::vector<std::vector<Eigen::Vector2d>> GoalsToDraw() const { return builder_->GoalsToDraw(); }
 
   const std::string& kind() const { return kind_; }
+  /// What the registry says of that kind (where its robots run, its file, ...).
+  const kind_api::ControllerKind& registered_kind() const { return *entry_; }
   /// The robots' parts (timer, sensors, radio) as the config sets them.
-  const AgentPartsConfig& parts() const { return parts_; }
+  const kind_api::AgentPartsConfig& parts() const { return parts_; }
 
  private:
   ControllerFactory(const config::ConfigNode& section, int num_robots, uint64_t run_seed,
@@ -61,10 +64,11 @@ class ControllerFactory {
 
   std::shared_ptr<const ControllerRegistry> registry_;  // holds the kind this factory builds
   std::string kind_;
+  const kind_api::ControllerKind* entry_ = nullptr;  // in registry_
   int num_robots_;
   uint64_t run_seed_;
-  AgentPartsConfig parts_;
-  std::unique_ptr<ExperimentBuilder> builder_;
+  kind_api::AgentPartsConfig parts_;
+  std::unique_ptr<kind_api::ExperimentBuilder> builder_;
 };
 
 }  // namespace dream::agent_host

@@ -11,13 +11,13 @@
 //     DREAM_REGISTER_CONTROLLER(OrbitBuilder)   // one ExperimentBuilder (own metrics)
 //
 //     DREAM_CONTROLLER_PLUGIN(registry) {       // several kinds, or by hand
-//       registry->Add(dream::agent_host::ControllerKind::Of<OrbitBuilder>());
-//       registry->Add(dream::agent_host::ControllerKind::OfRobot<SpiralRobot>("spiral", {"pitch_m"}));
+//       registry->Add(dream::kind_api::ControllerKind::Of<OrbitBuilder>());
+//       registry->Add(dream::kind_api::ControllerKind::OfRobot<SpiralRobot>("spiral", {"pitch_m"}));
 //     }
 //
 // See docs/writing-a-controller.md and docs/examples/out_of_tree_controller/.
 
-#include "dream/agent_host/controller_kind.h"
+#include "dream/kind_api/controller_kind.h"
 #include "dream/agent_host/controller_registry.h"
 
 /// Bumped whenever a change to the classes a plugin builds on (Robot,
@@ -25,8 +25,9 @@
 /// the parts) breaks plugins compiled against an older version. The tools
 /// refuse a plugin built for another version. 2: a builder may return no
 /// experiment metrics (MakeMetrics() default), which a version-1 tool would
-/// not expect.
-#define DREAM_PLUGIN_API_VERSION 2
+/// not expect. 3: the kind API (ExperimentBuilder, ControllerKind, the parts,
+/// FieldReader, RobotClassBuilder) moved to dream::kind_api.
+#define DREAM_PLUGIN_API_VERSION 3
 
 /// Keeps a plugin's entry points visible under -fvisibility=hidden.
 #define DREAM_PLUGIN_EXPORT extern "C" __attribute__((visibility("default")))
@@ -53,7 +54,7 @@ using RegisterControllersFunction = void (*)(ControllerRegistry* registry);
 /// A whole plugin with one kind, described by its ExperimentBuilder (see
 /// ControllerKind::Of for the static members it needs).
 #define DREAM_REGISTER_CONTROLLER(Builder) \
-  DREAM_CONTROLLER_PLUGIN(dream_plugin_registry_) { dream_plugin_registry_->Add(::dream::agent_host::ControllerKind::Of<Builder>()); }
+  DREAM_CONTROLLER_PLUGIN(dream_plugin_registry_) { dream_plugin_registry_->Add(::dream::kind_api::ControllerKind::Of<Builder>()); }
 
 /// A whole plugin with one kind that is one Robot subclass: the kind's name,
 /// the class, and the robot's own keys of the `controller:` section as a
@@ -63,6 +64,6 @@ using RegisterControllersFunction = void (*)(ControllerRegistry* registry);
 /// (Variadic only because the preprocessor splits the braced list at its commas.)
 #define DREAM_REGISTER_ROBOT(kind_name, RobotClass, ...)                              \
   DREAM_CONTROLLER_PLUGIN(dream_plugin_registry_) {                                   \
-    dream_plugin_registry_->Add(::dream::agent_host::ControllerKind::OfRobot<RobotClass>( \
+    dream_plugin_registry_->Add(::dream::kind_api::ControllerKind::OfRobot<RobotClass>( \
         kind_name, std::vector<std::string> __VA_ARGS__));                            \
   }

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "dream/agent_host/controller_kind.h"
+#include "dream/kind_api/controller_kind.h"
 #include "dream/config/controller_config.h"
 
 namespace dream::agent_host {
@@ -24,6 +24,12 @@ class ControllerRegistry {
   /// `config` names, loaded in order (ControllerPluginLoader).
   /// @throws config::ConfigError "FILE:LINE: plugins[i]: PATH: reason".
   static std::shared_ptr<const ControllerRegistry> ForConfig(const config::ControllerConfig& config);
+  /// The kind `config`'s section names, from ForConfig(config) (which it
+  /// keeps alive), so a tool asks the kind what it is (where its robots run,
+  /// its file) without building its agents; nullptr when the section names no
+  /// kind or an unknown one (ControllerFactory says why).
+  /// @throws config::ConfigError as ForConfig does.
+  static std::shared_ptr<const kind_api::ControllerKind> KindOf(const config::ControllerConfig& config);
 
   /// An empty registry (a plugin registers into one first, so a plugin that
   /// fails half way adds nothing).
@@ -34,20 +40,20 @@ class ControllerRegistry {
   /// Adds `kind`; `origin` says where it came from in later error messages.
   /// @throws std::invalid_argument when the name is empty, `make_builder` is
   ///         missing, or a kind of that name is already registered.
-  void Add(ControllerKind kind, const std::string& origin = "");
+  void Add(kind_api::ControllerKind kind, const std::string& origin = "");
   /// Adds every kind of `other`, or none when any name is taken.
   /// @throws std::invalid_argument naming the kind and both origins.
   void AddAll(const ControllerRegistry& other, const std::string& origin);
 
   /// The kind called `name`, or nullptr. The pointer stays valid for the
   /// registry's lifetime.
-  const ControllerKind* Find(const std::string& name) const;
+  const kind_api::ControllerKind* Find(const std::string& name) const;
   /// Names in registration order.
   std::vector<std::string> Names() const;
 
  private:
   struct Entry {
-    ControllerKind kind;
+    kind_api::ControllerKind kind;
     std::string origin;
   };
   const Entry* FindLocked(const std::string& name) const;

@@ -74,7 +74,7 @@ using PythonHostCheckFunction = void (*)(const std::string& spec_json, const Pyt
 inline constexpr const char* kPythonHostCheckSymbol = "dream_python_host_check";
 
 /// dream_python_host_create: the agents of `robot_ids` built from `spec_json`
-/// (PythonControllerSpecJson), subscribed on `bus`. @throws as the check.
+/// (the python kind's ControllerKind::runtime_spec), subscribed on `bus`. @throws as the check.
 using PythonHostCreateFunction = std::unique_ptr<PythonAgentHost> (*)(
     lcm::LcmBus& bus, const std::string& spec_json, const std::vector<int>& robot_ids, int64_t agent_id,
     const PythonAgentHost::Paths& paths);

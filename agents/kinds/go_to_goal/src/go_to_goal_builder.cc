@@ -1,0 +1,85 @@
+#include "dream/go_to_goal/go_to_goal_builder.h"
+#include "dream/kind_api/field_reader.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dream::go_to_goal {
+namespace {
+
+/// Reports the largest final distance to goal and when everyone had arrived.
+class GoToGoalMetrics final : public agents::ExperimentMetrics {
+ public:
+  explicit GoToGoalMetrics(std::vector<GoToGoalParams> params) : params_(std::move(params)) {}
+  void Observe(const agents::WorldSnapshot& world) override {
+    double worst = 0.0;
+    bool all_in = true;
+    for (size_t i = 0; i < params_.size() && i < world.poses.size(); ++i) {
+      const double d = (world.poses[i].head<2>() - params_[i].goal_m).norm();
+      worst = std::max(worst, d);
+      all_in = all_in && d <= params_[i].tolerance_m;
+    }
+    final_worst_m_ = worst;
+    if (all_in && arrived_step_ < 0) arrived_step_ = world.step;
+  }
+  void Write(agents::MetricsReport* report) const override {
+    report->values["final_max_goal_error_m"] = final_worst_m_;
+    report->values["all_arrived_step"] = static_cast<double>(arrived_step_);
+  }
+  // Goal: every robot within its tolerance at once.
+  std::optional<agents::GoalJudgement> JudgeGoal(const agents::MetricsReport& report) const override {
+    agents::GoalJudgement goal;
+    goal.completion_step = static_cast<int64_t>(report.Value("all_arrived_step"));
+    goal.met = goal.completion_step >= 0;
+    goal.detail = goal.met ? "all at their goals" : "not all at their goals, worst " + WorstText(report);
+    return goal;
+  }
+
+ private:
+  // The worst final error with the digits that tell it from the tolerance
+  // nearest to it, and that tolerance: "0.0200082 m (tolerance 0.02 m)".
+  std::string WorstText(const agents::MetricsReport& report) const {
+    const double worst = report.Value("final_max_goal_error_m");
+    if (params_.empty()) return agents::GoalJudgement::Metres(worst);
+    double tolerance = params_.front().tolerance_m;
+    for (const GoToGoalParams& p : params_) {
+      if (std::abs(p.tolerance_m - worst) < std::abs(tolerance - worst)) tolerance = p.tolerance_m;
+    }
+    return agents::GoalJudgement::MetresApart(worst, tolerance) + " (tolerance " +
+           agents::GoalJudgement::Metres(tolerance) + ")";
+  }
+
+  std::vector<GoToGoalParams> params_;
+  double final_worst_m_ = 0.0;
+  int64_t arrived_step_ = -1;
+};
+
+}  // namespace
+
+GoToGoalBuilder::GoToGoalBuilder(const config::ConfigNode& section, int num_robots) {
+  Section fields;
+  kind_api::ReadFields(section, num_robots, &fields);
+  for (const Eigen::Vector2d& goal : fields.goals) {
+    GoToGoalParams params = fields.robot;
+    params.goal_m = goal;
+    std::string error;
+    if (!params.IsValid(&error)) section.FailAtField(error);
+    params_.push_back(params);
+  }
+}
+
+std::unique_ptr<agents::Robot> GoToGoalBuilder::MakeRobot(int robot_id, const agents::RobotParams& params) const {
+  return std::make_unique<GoToGoalRobot>(robot_id, params, params_.at(static_cast<size_t>(robot_id)));
+}
+
+std::unique_ptr<agents::ExperimentMetrics> GoToGoalBuilder::MakeMetrics() const {
+  return std::make_unique<GoToGoalMetrics>(params_);
+}
+
+std::vector<std::vector<Eigen::Vector2d>> GoToGoalBuilder::GoalsToDraw() const {
+  std::vector<std::vector<Eigen::Vector2d>> goals;
+  for (const GoToGoalParams& params : params_) goals.push_back({params.goal_m});
+  return goals;
+}
+
+}  // namespace dream::go_to_goal
