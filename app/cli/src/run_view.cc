@@ -7,18 +7,18 @@
 #include <utility>
 
 #include "data_files.h"
-#include "dream/agent_host/python_controller_spec.h"
 #include "dream/session/render_overlays.h"
 
 namespace dream::cli {
 
 namespace {
 
-/// A Python controller's goal_points(): a finished run's from its summary.json, else computed
-/// from the config, once, before the view starts (a short-lived python3, as for its metrics).
+/// A Python controller's goal_points(), when the kind drew no goals: a finished run's from its
+/// summary.json, else computed from the config, once, before the view starts (a short-lived
+/// python3, as for its metrics; nothing for other kinds).
 void AddPythonControllerGoals(const run_config::RunConfig& config, const std::string& run_dir,
                               render::ArenaOverlays* overlays) {
-  if (!overlays->goals_m.empty() || !agent_host::IsPythonController(config)) return;
+  if (!overlays->goals_m.empty()) return;
   if (!run_dir.empty() && session::AddDeclaredGoalsOfRun(run_dir + "/summary.json", overlays)) return;
   try {
     session::AddPythonGoals(config, DataFiles::PythonRuntimeDir(), overlays);

@@ -7,7 +7,7 @@
 
 #include "dream/kind_api/agent_parts_config.h"
 #include "dream/agent_host/controller_factory.h"
-#include "dream/agent_host/python_controller_spec.h"
+#include "dream/agent_host/controller_registry.h"
 #include "dream/bridge/python_run_metrics.h"
 #include "dream/agent_host/snapshot_from_messages.h"
 #include "dream/agents/framework/world_snapshot.h"
@@ -108,9 +108,12 @@ bool AddDeclaredGoalsOfRun(const std::string& summary_path, render::ArenaOverlay
 
 void AddPythonGoals(const run_config::RunConfig& config, const std::string& python_runtime_dir,
                     render::ArenaOverlays* overlays) {
-  if (!overlays->goals_m.empty() || python_runtime_dir.empty() || !agent_host::IsPythonController(config)) return;
-  const nlohmann::json points = bridge::PythonRunMetrics::GoalPoints(
-      python_runtime_dir, agent_host::PythonControllerSpecJson(config), config.num_robots);
+  if (!overlays->goals_m.empty() || python_runtime_dir.empty()) return;
+  // A kind whose robots run in the Python runtime declares its goals there.
+  const std::shared_ptr<const kind_api::ControllerKind> kind = agent_host::ControllerRegistry::KindOf(config);
+  if (!kind || kind->runtime != kind_api::ControllerKind::Runtime::kPython) return;
+  const nlohmann::json points =
+      bridge::PythonRunMetrics::GoalPoints(python_runtime_dir, kind->runtime_spec(config), config.num_robots);
   AddDeclaredGoals(nlohmann::json{{"goal_points", points}}, overlays);
 }
 
