@@ -13,6 +13,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "../support/scratch_folder.h"
+
 namespace dream::files {
 namespace {
 
@@ -21,13 +23,6 @@ using ::testing::HasSubstr;
 
 class FileTextTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    char pattern[] = "/tmp/file-text-test-XXXXXX";
-    ASSERT_NE(::mkdtemp(pattern), nullptr);
-    dir_ = pattern;
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   std::string ErrorOf(const fs::path& path, std::uintmax_t max_bytes = kMaxTextFileBytes) {
     try {
       ReadFileText(path.string(), max_bytes);
@@ -37,7 +32,8 @@ class FileTextTest : public ::testing::Test {
     return "(no error)";
   }
 
-  fs::path dir_;
+  dream::testing::ScratchFolder folder_{"dream_file_text"};
+  const fs::path dir_ = folder_.path();
 };
 
 TEST_F(FileTextTest, ARegularFileIsReadWhole) {

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "dream/run_config/run_config.h"
+#include "../support/scratch_folder.h"
 
 namespace dream::session {
 namespace {
@@ -19,13 +20,6 @@ namespace fs = std::filesystem;
 
 class RenderOverlaysTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    char pattern[] = "/tmp/render-overlays-test-XXXXXX";
-    ASSERT_NE(::mkdtemp(pattern), nullptr);
-    dir_ = pattern;
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   std::string Write(const std::string& name, const std::string& text) {
     const fs::path path = dir_ / name;
     std::ofstream(path) << text;
@@ -40,7 +34,8 @@ class RenderOverlaysTest : public ::testing::Test {
         "controller:\n  kind: python\n  module: pair.py\n  class: Pair\n"));
   }
 
-  fs::path dir_;
+  dream::testing::ScratchFolder folder_{"dream_render_overlays"};
+  const fs::path dir_ = folder_.path();
 };
 
 TEST_F(RenderOverlaysTest, DeclaredGoalsAreReadPerRobotAndMalformedPointsSkipped) {

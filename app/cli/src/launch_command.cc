@@ -11,13 +11,13 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
-#include <fstream>
 
 #include "command_line.h"
 #include "dream/session/run_reporter.h"
 #include "dream/session/run_session.h"
 #include "dream/world/run_verdict.h"
 #include "dream/world/verdict_reason.h"
+#include "dream/files/file_text.h"
 #include "dream/files/output_folder_lock.h"
 #include "commands.h"
 #include "process_group.h"
@@ -57,9 +57,8 @@ AgentReports ReadAgentReports(const std::string& out_dir, int num_robots) {
   std::vector<int> missing;
   for (int robot = 0; robot < num_robots; ++robot) {
     try {
-      std::ifstream in(AgentReportPath(out_dir, robot));
-      if (!in) throw std::runtime_error("no report");
-      const nlohmann::json report = nlohmann::json::parse(in);
+      // Bounded like every file read whole: a report is a few hundred bytes.
+      const nlohmann::json report = nlohmann::json::parse(files::ReadFileText(AgentReportPath(out_dir, robot)));
       for (const auto& [channel, count] : report.at("bad_messages").items()) {
         const long long n = count.get<long long>();
         bad[channel] = (bad.contains(channel) ? bad[channel].get<long long>() : 0) + n;
