@@ -63,6 +63,22 @@ TEST(ReplayJsonTest, ViolationsLocatedAtTheirStepWithCountsSoFar) {
   EXPECT_EQ(run["obstacles"][0][1][0][0], 4);
 }
 
+// The world validates a step's poses before it steps on, so the poses a run
+// ended at are never judged: the replay's counts must be summary.json's.
+TEST(ReplayJsonTest, ThePosesARunEndedAtAreNotJudgedAsTheWorldNeverJudgedThem) {
+  TempFolder folder;
+  SyntheticRunLog log(folder / "run.lcmlog");
+  log.Poses(0, {{0.0, 0.0, 0.0}, {0.5, 0.0, 0.0}});
+  log.Poses(1, {{1.7, 0.0, 0.0}, {0.5, 0.0, 0.0}});  // outside, judged before step 2
+  log.Poses(2, {{1.8, 0.0, 0.0}, {0.5, 0.0, 0.0}});  // outside, where the run ended
+  log.Status(2, run_status_t::FINISHED, {}, "reached the step limit");
+  const nlohmann::json run = ReplayOf(log.Write());
+  ASSERT_EQ(run["violations"].size(), 1u) << run["violations"].dump();
+  EXPECT_EQ(run["violations"][0]["step"], 1);
+  EXPECT_EQ(run["counts"], nlohmann::json::parse("[[1,1,0,0]]"));
+  ASSERT_EQ(run["steps"].size(), 3u);  // the last poses are still drawn
+}
+
 TEST(ReplayJsonTest, MeasuredPosesOfARealisticRunBesideTheTrueOnes) {
   TempFolder folder;
   SyntheticRunLog log(folder / "run.lcmlog");
