@@ -51,7 +51,7 @@ struct RunArgs {
   bool view = false;            ///< dream run --view: serve the live arena (dream view) while it runs
   int view_port = 8077;         ///< --view-port
   std::string view_bind = "127.0.0.1";  ///< --view-bind
-  int view_fps = 30;            ///< --view-fps: frames a second to the page at most
+  int view_fps = 0;             ///< --view-fps: frames a second to the page at most; 0: 30, or 10 while the run is fast
 };
 
 struct AgentArgs {

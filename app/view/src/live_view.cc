@@ -15,13 +15,14 @@ LiveView::LiveView(lcm::LcmInterface& bus, ViewServer& server, ViewSetup setup)
     : server_(server),
       setup_(std::move(setup)),
       collector_(bus, setup_.world),
-      frame_period_(1'000'000 / std::clamp(setup_.frames_per_second, 1, ViewSetup::kMaxFramesPerSecond)) {
+      pacer_(std::clamp(setup_.frames_per_second, 1, ViewSetup::kMaxFramesPerSecond),
+             std::clamp(setup_.fast_frames_per_second, 1, ViewSetup::kMaxFramesPerSecond), setup_.world.time_step_s) {
   server_.SetSetup(SetupJson(setup_));
   pump_ = std::thread([this] {
     LowerThisThreadsPriority();
     while (!stop_.load()) {
       PumpOnce();
-      std::this_thread::sleep_for(frame_period_);
+      std::this_thread::sleep_for(pacer_.Next(frame_.step, std::chrono::steady_clock::now()));
     }
   });
 }

@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "dream/lcm/lcm_interface.h"
+#include "dream/view/frame_pacer.h"
 #include "dream/view/bus_frame_collector.h"
 #include "dream/view/view_server.h"
 #include "dream/view/view_setup.h"
@@ -45,7 +46,7 @@ class LiveView {
   ViewServer& server_;
   ViewSetup setup_;
   BusFrameCollector collector_;
-  std::chrono::microseconds frame_period_;
+  FramePacer pacer_;
   uint64_t version_ = 0;
   ViewFrame frame_;
   std::atomic<int64_t> frames_sent_{0};
