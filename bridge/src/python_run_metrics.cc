@@ -80,7 +80,8 @@ int RunPython(const std::string& script, const std::string& mode, const fs::path
   posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
   posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, errors.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-  std::vector<std::string> args = {DREAM_PYTHON3_EXECUTABLE, "-I", script};
+  // -B: no __pycache__ beside the user's module or in DREAM's install.
+  std::vector<std::string> args = {DREAM_PYTHON3_EXECUTABLE, "-I", "-B", script};
   if (!mode.empty()) args.push_back(mode);
   args.push_back(input.string());
   args.push_back(output.string());

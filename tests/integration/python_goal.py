@@ -13,6 +13,7 @@ a sweep's success column; a class that declares none gets "no goal declared", ne
    `dream render --plot --metric worst_error_m` draws the class's series; `dream compare` lists
    its figures and goal.
 5. A goal() that raises: summary.json metrics.error names the module and line; not a success.
+6. No run leaves __pycache__ beside the module.
 
 Usage: python_goal.py --dream BIN --source DIR
 """
@@ -115,6 +116,11 @@ def single_runs(context, dream):
     check(metrics["worst_error_m"][-1][0] == summary["steps"] - 1 or metrics["worst_error_m"][-1][0] == summary["steps"],
           f"worst_error_m should be a series ending at the last step: {metrics['worst_error_m'][-1]}")
 
+    # The module's folder holds only what the user put there: no __pycache__ from the agents'
+    # interpreter or the metrics' python3 (PYTHONDONTWRITEBYTECODE is unset for this test).
+    cached = [root for root, dirs, _ in os.walk(context.path("met")) if "__pycache__" in dirs]
+    check(not cached, f"dream run left __pycache__ in {cached}")
+
     plot = context.path("met", "plot.png")
     code, output = context.run([dream, "render", context.path("met", "run"), "--plot", "--metric", "worst_error_m",
                                 "--out", plot], timeout=60)
@@ -169,6 +175,7 @@ def sweeps(context, dream):
 
 
 def test(context, args):
+    os.environ.pop("PYTHONDONTWRITEBYTECODE", None)  # as on a user's machine
     single_runs(context, args.dream)
     sweeps(context, args.dream)
 

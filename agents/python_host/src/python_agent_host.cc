@@ -256,6 +256,9 @@ PyObject* EmbeddedModule(const PythonAgentHost::Paths& paths) {
     PyConfig_InitIsolatedConfig(&config);
     config.install_signal_handlers = 0;
     config.site_import = 1;
+    // No __pycache__ beside the user's module or in DREAM's install: a run
+    // writes only its own folder.
+    config.write_bytecode = 0;
     const PyStatus status = Py_InitializeFromConfig(&config);
     PyConfig_Clear(&config);
     if (PyStatus_Exception(status)) {
