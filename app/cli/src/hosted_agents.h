@@ -16,15 +16,16 @@
 namespace dream::cli {
 
 /// The agents of some robots of a run, on a bus of this process, whatever
-/// language their controller is in: C++ kinds in an agent_host::AgentHost, the
-/// python kind in a PythonHostProcess (a process of their own, relayed to
-/// this bus). Every command that hosts agents (run, agent, lab-replay) goes
+/// language their controller is in: kinds whose robots run in C++ in an
+/// agent_host::AgentHost, kinds whose robots run in the Python runtime
+/// (ControllerKind::runtime, as `python` does) in a PythonHostProcess (a
+/// process of their own, relayed to this bus). Every command that hosts agents (run, agent, lab-replay) goes
 /// through here.
 class HostedAgents {
  public:
   /// Checks the controller section as far as can be done before a run: the
-  /// kind and its keys, and for the python kind its module, class and own
-  /// keys (in a process of its own, as the run's). `built`: the run's factory
+  /// kind and its keys, and for a kind of the Python runtime its module,
+  /// class and own keys (in a process of its own, as the run's). `built`: the run's factory
   /// when the caller built it already (a
   /// RunSession does), so the config's plugins are not loaded again.
   /// @throws config::ConfigError naming file, line and key.
