@@ -124,8 +124,9 @@ class Page:
         self.ws.close()
 
 
-def devtools_port(user_data_dir, timeout=15):
-    """The port a Chromium started with --remote-debugging-port=0 chose (its DevToolsActivePort file)."""
+def devtools_port(user_data_dir, timeout=60):
+    """The port a Chromium started with --remote-debugging-port=0 chose (its DevToolsActivePort file).
+    Chromium took over 15 s to start on two cores busy with other tests: a wait, not a speed check."""
     path = os.path.join(user_data_dir, "DevToolsActivePort")
     deadline = time.monotonic() + timeout
     while time.monotonic() < deadline:
