@@ -16,15 +16,11 @@
 #include "dream/run_status_t.hpp"
 #include "dream/view/bus_frame_collector.h"
 #include "dream/view/frame_json.h"
+#include "../support/encoded_message.h"
 
 namespace {
 
-template <typename Message>
-std::vector<uint8_t> Encoded(const Message& message) {
-  std::vector<uint8_t> bytes(static_cast<size_t>(message.getEncodedSize()));
-  message.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-  return bytes;
-}
+using dream::testing::Encoded;
 
 dream::robot_poses_t PosesOf(int robots, int64_t step) {
   dream::robot_poses_t poses{};

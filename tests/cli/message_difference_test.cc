@@ -6,16 +6,12 @@
 
 #include "dream/robot_poses_t.hpp"
 #include "dream/velocity_command_t.hpp"
+#include "../support/encoded_message.h"
 
 namespace dream::cli {
 namespace {
 
-template <typename Message>
-std::vector<uint8_t> Encode(const Message& message) {
-  std::vector<uint8_t> bytes(static_cast<size_t>(message.getEncodedSize()));
-  message.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-  return bytes;
-}
+using dream::testing::Encoded;
 
 robot_poses_t ThreeRobots() {
   robot_poses_t poses;
@@ -35,7 +31,7 @@ TEST(MessageDifference, NamesTheStepRobotAndFieldOfAPoseThatDiffers) {
   robot_poses_t other = ThreeRobots();
   other.y[2] = 0.31;
   other.theta[0] = 1.0;  // a later field: the first difference in field order wins
-  EXPECT_EQ(FirstDifference(Encode(ThreeRobots()), Encode(other)), "step 12, robot 2: y 0.3 vs 0.31");
+  EXPECT_EQ(FirstDifference(Encoded(ThreeRobots()), Encoded(other)), "step 12, robot 2: y 0.3 vs 0.31");
 }
 
 TEST(MessageDifference, NamesTheRobotOfACommand) {
@@ -45,7 +41,7 @@ TEST(MessageDifference, NamesTheRobotOfACommand) {
   a.v = 0.1;
   velocity_command_t b = a;
   b.v = 0.2;
-  EXPECT_EQ(FirstDifference(Encode(a), Encode(b)), "step 7, robot 4: v 0.1 vs 0.2");
+  EXPECT_EQ(FirstDifference(Encoded(a), Encoded(b)), "step 7, robot 4: v 0.1 vs 0.2");
 }
 
 TEST(MessageDifference, UndecodableBytesAreComparedByteByByte) {

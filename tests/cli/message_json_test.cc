@@ -7,16 +7,12 @@
 #include "dream/applied_commands_t.hpp"
 #include "dream/radio_message_t.hpp"
 #include "dream/robot_poses_t.hpp"
+#include "../support/encoded_message.h"
 
 namespace dream::cli {
 namespace {
 
-template <typename Message>
-std::vector<uint8_t> Encode(const Message& message) {
-  std::vector<uint8_t> bytes(static_cast<size_t>(message.getEncodedSize()));
-  message.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-  return bytes;
-}
+using dream::testing::Encoded;
 
 robot_poses_t TwoRobots() {
   robot_poses_t poses;
@@ -33,7 +29,7 @@ robot_poses_t TwoRobots() {
 }
 
 TEST(MessageJson, PosesDecodeToTheirFieldsInOrder) {
-  const MessageJson json(Encode(TwoRobots()));
+  const MessageJson json(Encoded(TwoRobots()));
   ASSERT_EQ(json.outcome(), MessageJson::Outcome::kDecoded) << json.problem();
   EXPECT_EQ(json.type(), "robot_poses_t");
   EXPECT_EQ(json.fields().dump(),
@@ -50,7 +46,7 @@ TEST(MessageJson, RadioPayloadIsHex) {
   radio.agent_id = 99;
   radio.payload = {0x00, 0xab, 0x10, 0xff};
   radio.payload_size = 4;
-  const MessageJson json(Encode(radio));
+  const MessageJson json(Encoded(radio));
   ASSERT_EQ(json.outcome(), MessageJson::Outcome::kDecoded) << json.problem();
   EXPECT_EQ(json.fields()["payload"], "00ab10ff");
   EXPECT_EQ(json.fields()["sender_id"], 3);
@@ -65,7 +61,7 @@ TEST(MessageJson, AppliedCommandsSayWhichAgentDroveEachRobot) {
   applied.commanded_v = {0.1, 0.0};
   applied.commanded_w = {0.5, 0.0};
   applied.conflicts = {1, 0};
-  const MessageJson json(Encode(applied));
+  const MessageJson json(Encoded(applied));
   ASSERT_EQ(json.outcome(), MessageJson::Outcome::kDecoded) << json.problem();
   EXPECT_EQ(json.type(), "applied_commands_t");
   EXPECT_EQ(json.fields()["applied_agent_id"].dump(), "[42,0]");
@@ -74,7 +70,7 @@ TEST(MessageJson, AppliedCommandsSayWhichAgentDroveEachRobot) {
 }
 
 TEST(MessageJson, CutShortIsUndecodableWithTheTypeAndWhy) {
-  std::vector<uint8_t> bytes = Encode(TwoRobots());
+  std::vector<uint8_t> bytes = Encoded(TwoRobots());
   bytes.resize(bytes.size() - 5);
   const MessageJson json(bytes);
   EXPECT_EQ(json.outcome(), MessageJson::Outcome::kUndecodable);
@@ -83,7 +79,7 @@ TEST(MessageJson, CutShortIsUndecodableWithTheTypeAndWhy) {
 }
 
 TEST(MessageJson, AForgedCountIsRefusedWithoutDecoding) {
-  std::vector<uint8_t> bytes = Encode(TwoRobots());
+  std::vector<uint8_t> bytes = Encoded(TwoRobots());
   // num_robots (after the 8-byte fingerprint, utime, step and run_id) set to 2^31 - 1.
   bytes[32] = 0x7f;
   bytes[33] = bytes[34] = bytes[35] = 0xff;

@@ -8,16 +8,12 @@
 #include "dream/lcm/run_id.h"
 #include "dream/robot_poses_t.hpp"
 #include "dream/velocity_command_t.hpp"
+#include "../support/encoded_message.h"
 
 namespace dream::lcm {
 namespace {
 
-template <typename Message>
-std::vector<uint8_t> Encoded(const Message& message) {
-  std::vector<uint8_t> bytes(static_cast<size_t>(message.getEncodedSize()));
-  message.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-  return bytes;
-}
+using dream::testing::Encoded;
 
 template <typename Message>
 Message Decoded(const std::vector<uint8_t>& bytes) {

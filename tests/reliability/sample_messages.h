@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "../support/encoded_message.h"
+
 namespace dream::testing {
 
 /// One encoded dream message and the name of its type.
@@ -22,12 +24,5 @@ std::vector<EncodedMessage> SampleMessages();
 using TypedDecoder = std::function<bool(const uint8_t* data, int size)>;
 const std::map<std::string, TypedDecoder>& Decoders();
 
-/// Encodes an lcm-gen message.
-template <typename Message>
-std::vector<uint8_t> Encoded(const Message& message) {
-  std::vector<uint8_t> bytes(static_cast<size_t>(message.getEncodedSize()));
-  message.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-  return bytes;
-}
 
 }  // namespace dream::testing

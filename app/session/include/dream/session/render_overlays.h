@@ -6,6 +6,7 @@
 #include <string>
 
 #include "dream/agent_host/controller_factory.h"
+#include "dream/lcm/message_limits.h"
 #include "dream/run_config/run_config.h"
 #include "dream/render/arena_overlays.h"
 
@@ -33,8 +34,8 @@ void AddDeclaredGoals(const nlohmann::json& metrics, render::ArenaOverlays* over
 
 /// summary.json files larger than this are not read for their goals.
 inline constexpr std::uintmax_t kMaxSummaryBytes = 64ull << 20;
-/// Robots a run may have on the bus (lcm::MessageLimits::kRobots).
-inline constexpr size_t kMaxGoalRobots = 128;
+/// Robots a message on the bus may carry.
+inline constexpr size_t kMaxGoalRobots = lcm::MessageLimits::kRobots;
 /// As python/dream/run_metrics.py bounds a goal_points() list.
 inline constexpr size_t kMaxGoalPointsPerRobot = 1000;
 
