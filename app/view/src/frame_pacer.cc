@@ -22,10 +22,10 @@ std::chrono::microseconds FramePacer::Next(int64_t step, std::chrono::steady_clo
     window_start_ = now;
   }
   last_step_ = step;
-  const std::chrono::duration<double> elapsed = now - window_start_;
-  if (now - window_start_ >= kWindow) {
+  const std::chrono::duration<double> elapsed_s = now - window_start_;
+  if (elapsed_s >= kWindow) {
     const double simulated_s = static_cast<double>(step - window_step_) * step_s_;
-    fast_ = simulated_s > kFastFactor * elapsed.count();
+    fast_ = simulated_s > kFastFactor * elapsed_s.count();
     window_step_ = step;
     window_start_ = now;
   }
