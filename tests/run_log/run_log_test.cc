@@ -78,6 +78,16 @@ TEST(RunLogTest, PoseIndexAtStepFindsTheLastPoseNotAfterIt) {
             run.path() + ": DREAM_POSES jumps from step -1 to step 10; a run log has every step once, in order");
 }
 
+// The world judges a step's poses before it steps on: never the last ones.
+TEST(RunLogTest, ThePosesTheWorldJudgedAreAllButTheLast) {
+  TempFolder dir;
+  SyntheticRunLog three(dir / "three.lcmlog");
+  three.Poses(0, {{0, 0, 0}}).Poses(1, {{0, 0, 0}}).Poses(2, {{0, 0, 0}});
+  EXPECT_EQ(RunLog::Read(three.Write()).judged_poses(), 2u);
+  SyntheticRunLog none(dir / "none.lcmlog");
+  EXPECT_EQ(RunLog::Read(none.Write()).judged_poses(), 0u);
+}
+
 TEST(RunLogTest, TheEndIsTheLastStatusWithTheFaultsOfRobotsLostThen) {
   TempFolder dir;
   SyntheticRunLog log(dir / "run.lcmlog");

@@ -35,9 +35,7 @@ Judged JudgeEveryStep(const run_log::RunLog& log, const ViewSetup& setup) {
   ViolationLocator locator(setup.world);
   std::array<int64_t, 4> so_far{0, 0, 0, 0};
   std::vector<ViolationMark> found;
-  // The last poses are where the run ended: the world never validated them, so neither
-  // summary.json nor dream render counts them (render::LocateViolations).
-  for (size_t i = 0; i + 1 < log.poses().size(); ++i) {
+  for (size_t i = 0; i < log.judged_poses(); ++i) {
     const robot_poses_t& poses = log.poses()[i];
     found.clear();
     locator.Locate(poses, log.obstacles_at(i), &found);

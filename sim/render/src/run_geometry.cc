@@ -85,8 +85,7 @@ world::LocatedViolations LocateViolations(const run_log::RunLog& log, const worl
   world::StepViolationLocator locator(world);
   std::vector<world::ObstacleState> boxes;
   std::vector<world::LocatedViolation> placed;
-  // The last poses are where the run ended: the world never validated them.
-  for (size_t i = 0; i + 1 < log.poses().size(); ++i) {
+  for (size_t i = 0; i < log.judged_poses(); ++i) {
     const robot_poses_t& poses = log.poses()[i];
     if (poses.num_robots != n) continue;  // the log's robots, or none: ids must mean the same robots
     ObstacleStatesOf(log.obstacles_at(i), &boxes);

@@ -43,6 +43,10 @@ class RunLog {
 
   /// Every DREAM_POSES message that decodes, in log order (may be empty).
   const std::vector<robot_poses_t>& poses() const { return poses_; }
+  /// How many of poses(), from the first, the world judged: all but the last,
+  /// where the run ended (the world checks a step's poses before it steps on),
+  /// so whatever locates violations in a log counts what summary.json counts.
+  size_t judged_poses() const { return poses_.empty() ? 0 : poses_.size() - 1; }
   /// The most robots any step has (0 without poses).
   int num_robots() const { return num_robots_; }
   /// The steps of the first and last poses (-1 without poses).
