@@ -28,7 +28,7 @@ dream::robot_poses_t PosesOf(int robots, int64_t step) {
   poses.step = step;
   poses.num_robots = robots;
   for (int i = 0; i < robots; ++i) {
-    const double angle = 2 * M_PI * i / robots + 0.001 * step;
+    const double angle = 2 * M_PI * i / robots + 0.001 * static_cast<double>(step);
     poses.x.push_back(0.8 * std::cos(angle));
     poses.y.push_back(0.8 * std::sin(angle));
     poses.theta.push_back(angle + M_PI / 2);

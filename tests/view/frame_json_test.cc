@@ -101,7 +101,7 @@ TEST(FrameJsonTest, SetupSaysTheArenaAndTheConfigsGoals) {
   setup.overlays.goals_m = {{{0.5, 0.25}}, {}};
   setup.overlays.sensor_reaches = {{1.0, 0.0, M_PI}};
   setup.overlays.run_name = "ring";
-  setup.frames_per_second = 12;
+  setup.frame_rates = FrameRates::One(12);
   const nlohmann::json json = nlohmann::json::parse(SetupJson(setup));
   EXPECT_EQ(json["type"], "setup");
   EXPECT_EQ(json["mode"], "replay");

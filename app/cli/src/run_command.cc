@@ -53,8 +53,8 @@ void DeclareRunCommand(CommandLine& line) {
       ->capture_default_str();
   command->add_option("--view-fps", args->view_fps,
                       "Frames a second --view's page gets and draws at most; fewer cost the machine less\n"
-                      "(default: 30, and 10 while the run goes faster than twice real time)")
-      ->check(CLI::Range(1, view::ViewSetup::kMaxFramesPerSecond));
+                      "(default: 30; 10 while the run goes faster than twice real time, 5 beyond ten times)")
+      ->check(CLI::Range(1, view::FrameRates::kMax));
   command->add_option("--view-bind", args->view_bind,
                       "Address --view listens on; 127.0.0.1 (the default) is this machine only,\n"
                       "0.0.0.0 exposes the page to the network on purpose")

@@ -50,7 +50,7 @@ RunView::RunView(lcm::LcmInterface& bus, const run_config::RunConfig& config, co
                  int frames_per_second)
     : server_(view::ViewServer::Options{bind, port, false, 8}) {
   view::ViewSetup setup = ViewSetupOfConfig(config, view::ViewSetup::Mode::kLive, config.source);
-  if (frames_per_second > 0) setup.frames_per_second = setup.fast_frames_per_second = frames_per_second;
+  if (frames_per_second > 0) setup.frame_rates = view::FrameRates::One(frames_per_second);
   live_ = std::make_unique<view::LiveView>(bus, server_, std::move(setup));
   std::cout << "dream view: open " << server_.url() << " to watch the run ";
   if (config.sim.pace > 0) {

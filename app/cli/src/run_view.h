@@ -18,7 +18,7 @@ class RunView {
   /// Listens on `bind`:`port` and prints the page's address.
   /// @throws std::runtime_error when it cannot listen there.
   RunView(lcm::LcmInterface& bus, const run_config::RunConfig& config, const std::string& bind, int port,
-          int frames_per_second = 0);  ///< 0: ViewSetup's (30, and 10 while the run is fast)
+          int frames_per_second = 0);  ///< 0: FrameRates' defaults (30, fewer while the run is fast)
   /// Shows the run's end, from its log in `run_dir` (the last messages of a
   /// memq run are never handled); a log that cannot be read is only logged.
   void ShowEndOf(const std::string& run_dir);

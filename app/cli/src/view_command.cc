@@ -33,7 +33,7 @@ struct ViewArgs {
   std::string config_path;  ///< goals, sensors and radio of the run; replay: config.yaml beside the log
   int port = 8077;
   std::string bind = "127.0.0.1";
-  int fps = 0;  ///< live: frames a second to each page at most; 0: ViewSetup's defaults (30, 10 while the run is fast)
+  int fps = 0;  ///< live: frames a second to each page at most; 0: FrameRates' defaults (30, fewer while the run is fast)
 };
 
 /// The run's config: --config, else (replay) config.yaml beside the log. One
@@ -73,7 +73,7 @@ int RunLiveView(const ViewArgs& args) {
   }
   setup.mode = view::ViewSetup::Mode::kLive;
   setup.source = url;
-  if (args.fps > 0) setup.frames_per_second = setup.fast_frames_per_second = args.fps;
+  if (args.fps > 0) setup.frame_rates = view::FrameRates::One(args.fps);
   // Best effort: the runs it watches (on this machine, often) get the cores first.
   view::LowerThisProcesssPriority();
   lcm::LcmBus bus(url);
@@ -133,8 +133,8 @@ void DeclareViewCommand(CommandLine& line) {
       ->capture_default_str();
   command->add_option("--fps", args->fps,
                       "Live: frames a second each page gets and draws at most; fewer cost the machine less\n"
-                      "(default: 30, and 10 while the run goes faster than twice real time)")
-      ->check(CLI::Range(1, view::ViewSetup::kMaxFramesPerSecond));
+                      "(default: 30; 10 while the run goes faster than twice real time, 5 beyond ten times)")
+      ->check(CLI::Range(1, view::FrameRates::kMax));
   command->add_option("--bind", args->bind,
                       "Address to listen on; 127.0.0.1 (the default) is this machine only,\n"
                       "0.0.0.0 exposes the page to the network on purpose")

@@ -117,7 +117,7 @@ void AppendSetupFields(JsonWriter& json, const ViewSetup& setup) {
   json.Key("robot_diameter").Number(robotarium::RobotariumConstants::kRobotDiameterMeters, kMetres);
   json.Key("collision_diameter").Number(setup.world.collision_diameter_m, kMetres);
   json.Key("time_step").Number(setup.world.time_step_s, 6);
-  json.Key("fps").Integer(setup.frames_per_second);
+  json.Key("fps").Integer(setup.frame_rates.real_time);
   json.Key("goals").BeginArray();
   for (const auto& goals : setup.overlays.goals_m) {
     json.BeginArray();

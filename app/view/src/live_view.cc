@@ -15,8 +15,7 @@ LiveView::LiveView(lcm::LcmInterface& bus, ViewServer& server, ViewSetup setup)
     : server_(server),
       setup_(std::move(setup)),
       collector_(bus, setup_.world),
-      pacer_(std::clamp(setup_.frames_per_second, 1, ViewSetup::kMaxFramesPerSecond),
-             std::clamp(setup_.fast_frames_per_second, 1, ViewSetup::kMaxFramesPerSecond), setup_.world.time_step_s) {
+      pacer_(setup_.frame_rates, setup_.world.time_step_s) {
   server_.SetSetup(SetupJson(setup_));
   pump_ = std::thread([this] {
     LowerThisThreadsPriority();

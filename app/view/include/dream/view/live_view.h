@@ -14,7 +14,7 @@
 namespace dream::view {
 
 /// A run on the bus, drawn live: a BusFrameCollector on `bus` and a pump
-/// thread that, at most setup.frames_per_second times a second, encodes the newest frame
+/// thread that, at most setup.frame_rates' rate for the run's speed (FramePacer), encodes the newest frame
 /// (with who hears whom, when the setup knows) and broadcasts it. The bus
 /// is handled by its owner (dream view's loop, or the simulator's own loop
 /// in dream run --view): the view adds a handler, never a wait.

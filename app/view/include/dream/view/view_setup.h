@@ -3,6 +3,7 @@
 #include <string>
 
 #include "dream/render/arena_overlays.h"
+#include "dream/view/frame_rates.h"
 #include "dream/world/world_params.h"
 
 namespace dream::view {
@@ -19,15 +20,10 @@ struct ViewSetup {
   render::ArenaOverlays overlays;
   /// Where the frames come from, shown on the page (a URL or a run folder).
   std::string source;
-  /// Live: frames sent to the browsers a second at most (the page draws no
-  /// more often): `dream view --fps`, `dream run --view-fps`; while the run
-  /// goes faster than twice real time, `fast_frames_per_second` (FramePacer).
-  /// An --fps given sets both.
-  int frames_per_second = kDefaultFramesPerSecond;
-  int fast_frames_per_second = kDefaultFastFramesPerSecond;
-  static constexpr int kDefaultFramesPerSecond = 30;
-  static constexpr int kDefaultFastFramesPerSecond = 10;
-  static constexpr int kMaxFramesPerSecond = 60;  ///< a screen's refresh: more cannot be seen
+  /// Live: frames sent to the browsers a second at most, by the run's speed
+  /// (the page draws no more often). `dream view --fps`, `dream run
+  /// --view-fps` set one rate (FrameRates::One).
+  FrameRates frame_rates;
 };
 
 }  // namespace dream::view
