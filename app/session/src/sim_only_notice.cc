@@ -8,8 +8,9 @@ std::string SimOnlyNotice(const config::ControllerConfig& config) {
   const std::string beyond = config.num_robots > ControllerConfig::kMaxRobots
                                  ? ", beyond the Robotarium's " + std::to_string(ControllerConfig::kMaxRobots)
                                  : "";
-  return "sim-only run: " + std::to_string(config.num_robots) + " robots" + beyond +
-         " (declared `sim_only: true` in " + config.source + ": it never goes to the lab; dream export refuses it)";
+  // After debug()'s words, which may say the script "will run on the Robotarium".
+  return "sim-only run: " + std::to_string(config.num_robots) + " robots" + beyond + " (`sim_only: true` in " +
+         config.source + "): it never goes to the Robotarium, whatever debug() says above; dream export refuses it";
 }
 
 }  // namespace dream::session
