@@ -4,10 +4,9 @@ namespace dream::session {
 
 std::string SimOnlyNotice(const config::ControllerConfig& config) {
   if (!config.sim_only) return "";
-  using config::ControllerConfig;
-  const std::string beyond = config.num_robots > ControllerConfig::kMaxRobots
-                                 ? ", beyond the Robotarium's " + std::to_string(ControllerConfig::kMaxRobots)
-                                 : "";
+  constexpr int kSimulatorLimit = config::ControllerConfig::kMaxRobots;
+  const std::string beyond =
+      config.num_robots > kSimulatorLimit ? ", beyond the Robotarium's " + std::to_string(kSimulatorLimit) : "";
   // After debug()'s words, which may say the script "will run on the Robotarium".
   return "sim-only run: " + std::to_string(config.num_robots) + " robots" + beyond + " (`sim_only: true` in " +
          config.source + "): it never goes to the Robotarium, whatever debug() says above; dream export refuses it";

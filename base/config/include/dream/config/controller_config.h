@@ -18,7 +18,7 @@ struct ControllerConfig {
   std::string source;            ///< the file it came from (for messages)
   std::string name;              ///< run name; default output folder runs/<name>
   uint64_t seed = 1;             ///< seeds initial poses and every noise source
-  int num_robots = 0;            ///< 1..kMaxRobots, as the Robotarium simulator allows; 1..kMaxRobotsSimOnly with sim_only
+  int num_robots = 0;            ///< 1..kMaxRobots (the Robotarium simulator's), 1..kMaxRobotsSimOnly with sim_only
   /// `sim_only: true`: a run declared for simulation only, which may have up to
   /// kMaxRobotsSimOnly robots and which nothing sends to the lab (dream export,
   /// check-submission and import refuse it).
@@ -37,7 +37,7 @@ struct ControllerConfig {
   /// What the lab runs at most, for the message.
   static constexpr int kMaxRobotsOnHardware = 20;
   /// With `sim_only: true`: what one bus message may carry
-  /// (lcm::MessageLimits::kRobots, checked equal in run_config.cc).
+  /// (lcm::MessageLimits::kRobots, checked equal in sim/node's sim_node.cc).
   static constexpr int kMaxRobotsSimOnly = 128;
 
   /// Why this run may not go to the lab, as "<file>:<line>: sim_only: true — ...
