@@ -9,7 +9,7 @@ SafetyMetrics::SafetyMetrics(double near_miss_m) : near_miss_m_(near_miss_m) {}
 void SafetyMetrics::Observe(const WorldSnapshot& world) {
   ++steps_;
   bool near_miss = false;
-  // O(N^2) is fine: experiments have at most 50 robots, and this runs after the run.
+  // O(N^2) is fine: a run has at most 128 robots (sim_only; 50 otherwise), and this runs after the run.
   for (size_t i = 0; i < world.poses.size(); ++i) {
     for (size_t j = i + 1; j < world.poses.size(); ++j) {
       const double d = (world.poses[i].head<2>() - world.poses[j].head<2>()).norm();

@@ -81,6 +81,11 @@ ExportedSubmission ExportedSubmission::Read(const std::string& dir) {
   const std::string config_path = (root / "config.yaml").string();
   if (!fs::exists(config_path)) throw std::runtime_error(config_path + ": missing; export the run again");
   exported.config = run_config::LoadRunConfigFile(config_path);
+  // dream export never writes one: the folder was changed by hand.
+  if (const std::string refusal = exported.config.LabRefusal("export it"); !refusal.empty()) {
+    throw std::runtime_error(refusal + "; dream export never writes such a config, so " + dir +
+                             " was changed by hand: export the run again");
+  }
   exported.config_text = files::ReadFileText(config_path);
   if (exported.config.num_robots != exported.params.num_robots) {
     throw std::runtime_error(config_path + ": has " + std::to_string(exported.config.num_robots) + " robots but " +

@@ -22,7 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::uintmax_t kMaxOutputBytes = 64ull << 20;  // a per-step series of 50 robots is far less
+constexpr std::uintmax_t kMaxOutputBytes = 64ull << 20;  // a per-step series of 128 robots is far less
 
 /// The temporary files of one computation, removed however it ends.
 struct TempFiles {

@@ -209,6 +209,10 @@ ExportInput ReadAndCheck(const std::string& run_dir, const std::string& out_dir,
                          const std::string& config_path) {
   ExportInput input = CheckExportPaths(run_dir, out_dir, options, config_path);
   input.config = run_config::LoadRunConfigFile(input.config_file);
+  // Declared for simulation only: nothing about its recording matters.
+  if (const std::string refusal = input.config.LabRefusal("export it"); !refusal.empty()) {
+    throw std::runtime_error(refusal);
+  }
   input.config_text = files::ReadFileText(input.config_file);
   input.track = ReadRunTrack(input.log_file, &input.end);
   const run_config::RunConfig& config = input.config;

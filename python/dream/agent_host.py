@@ -36,7 +36,9 @@ from .world_follower import IGNORE, NEW_STEP, WorldFollower
 log = logging.getLogger("dream")
 
 SUBSCRIPTION_REGEX = "DREAM_(POSES|OBSTACLES|STATUS|RADIO_[0-9]+)"
-MAX_ROBOTS = 50          # a run's limit (the Robotarium simulator's); an agent refuses larger counts
+# The bus's bound (lcm::MessageLimits::kRobots): a sim_only run has up to 128 robots; the config
+# (ControllerConfig) holds other runs to the Robotarium simulator's 50. Larger counts are refused.
+MAX_ROBOTS = 128
 MAX_OBSTACLES = 10000    # far beyond any config; bounds the decode of a forged message
 MAX_RADIO_PAYLOAD = MAX_PAYLOAD_BYTES
 MAX_DETAIL_BYTES = 1 << 16  # lcm::MessageLimits::kDetailBytes: a longer fault text is refused

@@ -2,6 +2,7 @@
 
 #include "dream/run_config/run_config.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -98,6 +99,32 @@ TEST_F(OverriddenConfigTest, MistakesNameTheOptionAndTheKey) {
 
 TEST_F(OverriddenConfigTest, AMissingFileIsAConfigErrorNamingIt) {
   EXPECT_THROW(config_overrides::OverriddenConfig((dir_ / "nope.yaml").string(), 3, {}), config::ConfigError);
+}
+
+}  // namespace
+}  // namespace dream::cli
+
+namespace dream::cli {
+namespace {
+
+// `--set sim_only=true` lifts the robot limit as the key in the file does,
+// for the whole run and for an agent, and the run folder's copy keeps it.
+TEST_F(OverriddenConfigTest, SimOnlyCanBeSetFromTheCommandLine) {
+  EXPECT_THAT(ErrorOf(-1, {"robots=60"}), ::testing::HasSubstr("add `sim_only: true` to run up to 128 robots"));
+  const config_overrides::OverriddenConfig overridden(path_, -1, {"robots=60", "sim_only=true"});
+  const config::ControllerConfig agent = overridden.LoadWith(&config::LoadControllerConfig);
+  EXPECT_TRUE(agent.sim_only);
+  EXPECT_EQ(agent.num_robots, 60);
+  const std::string copy = overridden.Text();
+  const config::ControllerConfig again = config::LoadControllerConfig(config::ConfigNode::LoadString(copy, "copy.yaml"));
+  EXPECT_TRUE(again.sim_only);
+  EXPECT_EQ(again.num_robots, 60);
+  // A quoted value in the file is replaced by the command line's plain one.
+  std::ofstream(path_, std::ios::app) << "sim_only: \"no\"\n";
+  EXPECT_THAT(ErrorOf(-1, {}), ::testing::HasSubstr("sim_only: expected true or false, got the quoted text"));
+  EXPECT_TRUE(config_overrides::OverriddenConfig(path_, -1, {"robots=60", "sim_only=true"})
+                  .LoadWith(&config::LoadControllerConfig)
+                  .sim_only);
 }
 
 }  // namespace

@@ -191,6 +191,20 @@ TEST(ConfigNodeTest, EveryScalarReaderNamesFileLineKeyAndWhatItGot) {
             "test.yaml:3: xs[1]: expected a number, got a list");
 }
 
+TEST(ConfigNodeTest, AQuotedValueIsTextNotAFlag) {
+  // yaml-cpp reads "yes" (quoted) as true; YAML says a quoted value is text.
+  const std::string text = "quoted: \"yes\"\nsingle: 'true'\nplain: true\nword: no\n";
+  EXPECT_EQ(ReadError(text, [](const ConfigNode& root) { root.GetBool("quoted", false); }),
+            "test.yaml:1: quoted: expected true or false, got the quoted text \"yes\" (write true or false without "
+            "quotes)");
+  EXPECT_EQ(ReadError(text, [](const ConfigNode& root) { root.GetBool("single", false); }),
+            "test.yaml:2: single: expected true or false, got the quoted text \"true\" (write true or false without "
+            "quotes)");
+  const ConfigNode root = ConfigNode::LoadString(text, "test.yaml");
+  EXPECT_TRUE(root.GetBool("plain", false));
+  EXPECT_FALSE(root.GetBool("word", true));  // YAML 1.1's words, plain, are still flags
+}
+
 TEST(ConfigNodeTest, Int32ReadersRefuseWhatIntCannotHold) {
   const std::string text = "big: 4294967336\nlow: -2147483649\nmax: 2147483647\n";
   EXPECT_EQ(ReadError(text, [](const ConfigNode& root) { root.GetInt32("big", 0); }),

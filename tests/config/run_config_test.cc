@@ -77,7 +77,7 @@ TEST(RunConfigTest, ObstaclesWithPaths) {
 
 TEST(RunConfigTest, TooManyRobotsNamesFileLineKeyAndRange) {
   const std::string error = ErrorOf(Replace(kMinimal, "robots: 2", "robots: 51"));
-  EXPECT_NE(error.find("test.yaml:3: robots: must be between 1 and 50"), std::string::npos) << error;
+  EXPECT_NE(error.find("test.yaml:3: robots: must be at most 50"), std::string::npos) << error;
   EXPECT_NE(error.find("got 51"), std::string::npos) << error;
   EXPECT_NE(ErrorOf(Replace(kMinimal, "robots: 2", "robots: 0")).find("between 1 and 50"), std::string::npos);
   EXPECT_NE(ErrorOf(Replace(kMinimal, "robots: 2", "robots: two")).find("expected a whole number, got 'two'"),

@@ -70,7 +70,7 @@ void RunConfigTarget(const uint8_t* data, size_t size) {
     // Then what `dream run` builds from it (as tests/reliability/config_mutation_test.cc
     // does): every robot's agent and the metrics. A plugin (a library to load) and
     // kind python (an embedded interpreter per input) are read by code of their own,
-    // tested elsewhere; num_robots is at most ControllerConfig::kMaxRobots (50).
+    // tested elsewhere; num_robots is at most ControllerConfig::kMaxRobotsSimOnly (128).
     if (!run.plugins.empty() || run.controller.GetString("kind", "") == "python") return;
     const agent_host::ControllerFactory factory(run);
     for (int robot = 0; robot < run.num_robots; ++robot) robots.push_back(factory.Make(robot));

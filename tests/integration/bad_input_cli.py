@@ -173,7 +173,7 @@ def test(ctx):
          EXIT_USAGE, ["--trail", "seconds >= 0", "got nan"], False),
         ("missing config file", ["run", missing, "--out", ctx.path("refused_out1")], None, [missing], False),
         ("robots: 51", ["run", robots51, "--out", ctx.path("refused_out2")], EXIT_INPUT,
-         [where(robots51, robots51_line), "robots", "51", "50"], True),
+         [where(robots51, robots51_line), "robots", "51", "50", "add `sim_only: true` to run up to 128 robots"], True),
         ("robots: eight", ["run", eight, "--out", ctx.path("refused_out3")], EXIT_INPUT,
          [where(eight, eight_line), "robots", "'eight'"], True),
         ("overlapping initial poses", ["run", overlap, "--out", ctx.path("refused_out4")], EXIT_INPUT,

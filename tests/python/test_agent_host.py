@@ -333,6 +333,37 @@ class AgentHostTest(unittest.TestCase):
         self.assertEqual(unraised, [])
         self.assertIn("DREAM_TEST: a message handler failed: RecursionError", logged.output[0])
 
+    def test_a_sim_only_run_of_100_robots_is_hosted_and_129_are_refused(self):
+        # The config holds a run to 50 robots unless it is sim_only (up to the bus's 128);
+        # the host bounds what it decodes by the bus alone.
+        bus = MemoryBus()
+        agents = [RobotAgent(Counter(i, dream.RobotParams(), {}, 100)) for i in range(100)]
+        host = AgentHost(bus, agents, agent_id=5, num_robots=100)
+        bus.deliver("DREAM_POSES", poses(1, n=100))
+        commands = self.commands(bus.take())
+        self.assertEqual(sorted(commands), sorted(f"DREAM_CMD_{i}" for i in range(100)))
+        self.assertEqual({c.step for c in commands.values()}, {1})
+        self.assertEqual(host.bad_messages, {})
+        bus.deliver("DREAM_POSES", poses(2, n=129))  # past the bus's bound: refused before it is decoded
+        self.assertEqual(bus.take(), [])
+        self.assertEqual(host.bad_messages, {"DREAM_POSES": 1})
+        self.assertIsNone(host.other_world_robots)  # never read as a world of 129 robots
+        status = dream.run_status_t()
+        status.run_id, status.step, status.state, status.detail = RUN, 2, dream.run_status_t.FINISHED, "done"
+        status.num_lost, status.lost_robot_ids = 129, list(range(129))
+        bus.deliver("DREAM_STATUS", status.encode())
+        self.assertEqual(host.bad_messages, {"DREAM_POSES": 1, "DREAM_STATUS": 1})
+        self.assertFalse(host.world_finished)
+
+    def test_the_robot_limit_is_the_buses(self):
+        # agent_host.MAX_ROBOTS mirrors lcm::MessageLimits::kRobots (the runtime stands alone).
+        header = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "lcmtypes", "lcm", "include",
+                              "dream", "lcm", "message_limits.h")
+        with open(header, encoding="utf-8") as f:
+            declared = re.search(r"kRobots\s*=\s*(\d+)", f.read())
+        self.assertIsNotNone(declared)
+        self.assertEqual(dream.agent_host.MAX_ROBOTS, int(declared.group(1)))
+
     def test_the_detail_limit_is_the_worlds(self):
         # agent_host.MAX_DETAIL_BYTES mirrors lcm::MessageLimits::kDetailBytes (the runtime stands alone).
         header = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "lcmtypes", "lcm", "include",

@@ -99,8 +99,8 @@ TEST(DecoderBounds, TheRobotLimitCoversEveryRunTheConfigAllows) {
   EXPECT_GE(MessageLimits::kRobots, robotarium::RobotariumConstants::kMaxRobotsInSimulation);
 }
 
-// Runs stop at 50 robots, but the bus bound is wider: dream view draws any
-// DREAM-format stream of up to 128 (issue 25: a 30 Hz stream of 100 robots).
+// A sim_only run has up to 128 robots (50 otherwise), and dream view draws
+// any DREAM-format stream up to that bound (issue 25: a 30 Hz stream of 100 robots).
 TEST(DecoderBounds, AHundredRobotStreamDecodesAndOneOverTheBoundDoesNot) {
   for (const int32_t robots : {100, MessageLimits::kRobots, MessageLimits::kRobots + 1}) {
     robot_poses_t poses{};

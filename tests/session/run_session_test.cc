@@ -166,6 +166,33 @@ TEST_F(RunSessionTest, TheReportSaysWhenRealismIsOn) {
   EXPECT_THAT(ideal.str(), ::testing::Not(HasSubstr("realism:")));
 }
 
+// A run declared simulation-only says so once in its report and in summary.json,
+// so nobody takes it for a lab-ready run; any other run says sim_only: false.
+TEST_F(RunSessionTest, TheReportAndSummarySayWhenARunIsSimOnly) {
+  const std::string path = WriteConfig(0.0, 1.0, 10);
+  std::ostringstream plain_report;
+  RunSession::Options plain_options;
+  plain_options.report = &plain_report;
+  RunSession plain(run_config::LoadRunConfigFile(path), plain_options);
+  RunWithAgents(plain);
+  EXPECT_THAT(plain_report.str(), ::testing::Not(HasSubstr("sim-only")));
+  EXPECT_EQ(Summary()["sim_only"], false);
+
+  std::ofstream(path, std::ios::app) << "sim_only: true\n";
+  fs::remove_all(out());
+  fs::create_directories(out());
+  RunSession::Options options;
+  options.report = &report_;
+  RunSession session(run_config::LoadRunConfigFile(path), options);
+  RunWithAgents(session);
+  EXPECT_EQ(Summary()["sim_only"], true);
+  const std::string report = report_.str();
+  const std::string line = "\nsim-only run: 2 robots (`sim_only: true` in " + path +
+                           "): it never goes to the Robotarium, whatever debug() says above; dream export refuses it\n";
+  EXPECT_THAT(report, HasSubstr(line));
+  EXPECT_EQ(report.find("sim-only run"), report.rfind("sim-only run")) << report;  // once
+}
+
 TEST_F(RunSessionTest, QuietPrintsNoReportForACleanRunAndTheWholeReportOtherwise) {
   RunSession::Options options;
   options.report = &report_;

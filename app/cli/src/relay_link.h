@@ -15,7 +15,7 @@ namespace dream::cli {
 class RelayLink {
  public:
   static constexpr size_t kMaxChannelBytes = 1024;
-  /// Far above any message of a run (a 50-robot DREAM_POSES is 2 KB).
+  /// Far above any message of a run (a 128-robot DREAM_POSES is 5 KB).
   static constexpr size_t kMaxDataBytes = size_t{1} << 27;
 
   struct Frame {

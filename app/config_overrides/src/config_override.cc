@@ -91,6 +91,7 @@ void AssignInPlace(YAML::Node target, const YAML::Node& value) {
   switch (value.Type()) {
     case YAML::NodeType::Scalar:
       target = value.Scalar();
+      target.SetTag(value.Tag());  // quoted or not as --set wrote it, not as the file did
       return;
     case YAML::NodeType::Sequence:
       target = YAML::Null;

@@ -21,6 +21,7 @@
 #include "dream/session/experiment_goal.h"
 #include "dream/session/realism_notice.h"
 #include "dream/session/render_overlays.h"
+#include "dream/session/sim_only_notice.h"
 
 namespace dream::session {
 
@@ -191,6 +192,7 @@ void RunReporter::PrintVerdict(const Ended& ended, const world::RunJudgement& ju
   report << fmt::format("(real seconds on the lab: {} steps of {} s; this run took {:.2f} s here)\n", outcome.steps,
                         robotarium::RobotariumConstants::kTimeStepSeconds, outcome.wall_time_s);
   if (const std::string realism = RealismNotice(config_); !realism.empty()) report << realism << "\n";
+  if (const std::string sim_only = SimOnlyNotice(config_); !sim_only.empty()) report << sim_only << "\n";
   if (GoalNotJudged(goal)) {
     report << "goal: not judged, --steps " << config_.sim.max_steps << " stopped the run first ("
            << goal["detail"].get<std::string>() << ")\n";

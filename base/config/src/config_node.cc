@@ -334,6 +334,10 @@ bool ConfigNode::AsBool() const {
   if (!node_.IsScalar() || !YAML::convert<bool>::decode(node_, value)) {
     Fail("expected true or false, got " + ScalarText());
   }
+  // yaml-cpp would read "yes" as true; in YAML a quoted value is text.
+  if (node_.Tag() == "!") {
+    Fail("expected true or false, got the quoted text \"" + node_.Scalar() + "\" (write true or false without quotes)");
+  }
   return value;
 }
 

@@ -44,7 +44,39 @@ void ReadPlugins(const ConfigNode& root, ControllerConfig* config) {
   }
 }
 
+// `robots:` within the Robotarium simulator's 50, or with `sim_only: true`
+// within the bus's 128; a count in between says how to lift the limit.
+void ReadRobots(const ConfigNode& root, ControllerConfig* config) {
+  if (root.Has("sim_only")) config->sim_only_node = root.Required("sim_only");
+  config->sim_only = root.GetBool("sim_only", false);
+  const ConfigNode robots = root.Required("robots");
+  const long long n = robots.AsInt();
+  const std::string got = ", got " + std::to_string(n);
+  const std::string simulator = " (the Robotarium simulator's limit; the lab runs at most " +
+                                std::to_string(ControllerConfig::kMaxRobotsOnHardware) + ")";
+  if (config->sim_only && (n < 1 || n > ControllerConfig::kMaxRobotsSimOnly)) {
+    robots.Fail("must be between 1 and " + std::to_string(ControllerConfig::kMaxRobotsSimOnly) +
+                " with sim_only (what one message of the bus carries)" + got);
+  }
+  if (!config->sim_only && n > ControllerConfig::kMaxRobots && n <= ControllerConfig::kMaxRobotsSimOnly) {
+    robots.Fail("must be at most " + std::to_string(ControllerConfig::kMaxRobots) + simulator + got +
+                "; add `sim_only: true` to run up to " + std::to_string(ControllerConfig::kMaxRobotsSimOnly) +
+                " robots in simulation only (it can never go to the lab)");
+  }
+  if (!config->sim_only && (n < 1 || n > ControllerConfig::kMaxRobots)) {
+    robots.Fail("must be between 1 and " + std::to_string(ControllerConfig::kMaxRobots) + simulator + got);
+  }
+  config->num_robots = static_cast<int>(n);
+}
+
 }  // namespace
+
+std::string ControllerConfig::LabRefusal(const std::string& action) const {
+  if (!sim_only) return "";
+  const std::string where = sim_only_node.line() > 0 ? source + ":" + std::to_string(sim_only_node.line()) : source;
+  return where + ": sim_only: true — this run was declared simulation-only; remove `sim_only` (and use at most " +
+         std::to_string(kMaxRobotsOnHardware) + " robots) to " + action;
+}
 
 ControllerConfig LoadControllerConfig(const ConfigNode& root) {
   ControllerConfig config;
@@ -60,14 +92,7 @@ ControllerConfig LoadControllerConfig(const ConfigNode& root) {
   const long long seed = root.GetInt("seed", 1);
   if (seed < 0) root.Required("seed").Fail("must be >= 0, got " + std::to_string(seed));
   config.seed = static_cast<uint64_t>(seed);
-  const ConfigNode robots = root.Required("robots");
-  const long long num_robots = robots.AsInt();
-  if (num_robots < 1 || num_robots > ControllerConfig::kMaxRobots) {
-    robots.Fail("must be between 1 and " + std::to_string(ControllerConfig::kMaxRobots) +
-                " (the Robotarium simulator's limit; the lab runs at most " +
-                std::to_string(ControllerConfig::kMaxRobotsOnHardware) + "), got " + std::to_string(num_robots));
-  }
-  config.num_robots = static_cast<int>(num_robots);
+  ReadRobots(root, &config);
   config.controller = root.Required("controller");
   if (!config.controller.IsMap()) config.controller.Fail("expected a mapping with at least `kind:`");
   ReadPlugins(root, &config);

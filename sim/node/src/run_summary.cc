@@ -123,6 +123,7 @@ nlohmann::ordered_json RunSummary(const run_config::RunConfig& config, const Run
   json["seed"] = config.seed;
   json["mode"] = config::WorldModeName(config.sim.mode);
   json["robots"] = config.num_robots;
+  json["sim_only"] = config.sim_only;  // declared for simulation only: never a lab-ready run
   json["end"] = EndName(outcome.end);
   json["reason"] = outcome.reason;
   json["steps"] = outcome.steps;

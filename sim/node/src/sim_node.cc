@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "dream/applied_commands_t.hpp"
+#include "dream/config/controller_config.h"
 #include "dream/lcm/channels.h"
 #include "dream/lcm/lcm_typed.h"
 #include "dream/lcm/message_limits.h"
@@ -27,6 +28,12 @@
 #include "dream/velocity_command_t.hpp"
 
 namespace dream::node {
+
+// A sim_only run's robots are published in one DREAM_POSES, which receivers
+// refuse past the bus's bound.
+static_assert(config::ControllerConfig::kMaxRobotsSimOnly == lcm::MessageLimits::kRobots,
+              "sim_only's robot limit must be what one message of the bus carries");
+
 namespace {
 
 double SecondsBetween(std::chrono::steady_clock::time_point from, std::chrono::steady_clock::time_point to) {

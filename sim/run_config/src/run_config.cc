@@ -322,7 +322,7 @@ std::vector<world::RectangleObstacleSpec> ReadObstacles(const config::ConfigNode
 }  // namespace
 
 RunConfig LoadRunConfig(const config::ConfigNode& root) {
-  root.RejectUnknownKeys({"name", "seed", "robots", "steps", "stop_when_done", "world", "initial_poses",
+  root.RejectUnknownKeys({"name", "seed", "robots", "sim_only", "steps", "stop_when_done", "world", "initial_poses",
                           "obstacles", "controller", "description", "plugins", "plugin_dir"});
   RunConfig config;
   // Free text nobody reads back; a list or mapping here is still a mistake.

@@ -42,7 +42,7 @@ class SlurmSubmission {
   /// them (ranges merged), with "%K" when max_parallel > 0.
   static std::string ArraySpec(const std::vector<size_t>& indices, size_t offset, int max_parallel);
   /// A task's default wall-clock limit for a run of `steps` steps, in
-  /// minutes: 10 minutes plus 0.1 s per step (a 50-robot Python run needs
+  /// minutes: 10 minutes plus 0.1 s per step (a 128-robot Python run needs
   /// far less), so a run that hangs does not hold a node for days.
   static long long DefaultTimeLimitMinutes(long long steps);
   /// True when one of `options` sets the time limit (--time, -t).

@@ -18,7 +18,12 @@ struct ControllerConfig {
   std::string source;            ///< the file it came from (for messages)
   std::string name;              ///< run name; default output folder runs/<name>
   uint64_t seed = 1;             ///< seeds initial poses and every noise source
-  int num_robots = 0;            ///< 1..kMaxRobots, as the Robotarium simulator allows
+  int num_robots = 0;            ///< 1..kMaxRobots (the Robotarium simulator's), 1..kMaxRobotsSimOnly with sim_only
+  /// `sim_only: true`: a run declared for simulation only, which may have up to
+  /// kMaxRobotsSimOnly robots and which nothing sends to the lab (dream export,
+  /// check-submission and import refuse it).
+  bool sim_only = false;
+  ConfigNode sim_only_node;      ///< the `sim_only:` entry, for errors naming its line (undefined without one)
   ConfigNode controller;         ///< the `controller:` section, read by the agents' factory
   /// `plugins:` shared libraries that add controller kinds, as absolute
   /// paths (relative ones are relative to `plugin_dir:`, by default the
@@ -31,10 +36,18 @@ struct ControllerConfig {
   static constexpr int kMaxRobots = 50;
   /// What the lab runs at most, for the message.
   static constexpr int kMaxRobotsOnHardware = 20;
+  /// With `sim_only: true`: what one bus message may carry
+  /// (lcm::MessageLimits::kRobots, checked equal in sim/node's sim_node.cc).
+  static constexpr int kMaxRobotsSimOnly = 128;
+
+  /// Why this run may not go to the lab, as "<file>:<line>: sim_only: true — ...
+  /// remove `sim_only` (and use at most 20 robots) to <action>"; empty when it
+  /// may (not sim_only). `action` says what was refused ("export it").
+  std::string LabRefusal(const std::string& action) const;
 };
 
-/// Reads and checks `name`, `seed`, `robots`, `controller` and `plugins` /
-/// `plugin_dir` of a run config's root; other keys are left to
+/// Reads and checks `name`, `seed`, `sim_only`, `robots`, `controller` and
+/// `plugins` / `plugin_dir` of a run config's root; other keys are left to
 /// LoadRunConfig. @throws ConfigError naming file, line, key and value.
 ControllerConfig LoadControllerConfig(const ConfigNode& root);
 

@@ -48,7 +48,7 @@ namespace dream::lcm {
 class LcmBus final : public LcmInterface {
  public:
   /// Messages queued before LCM drops new ones; enough for several steps of
-  /// 50 robots' commands and radio traffic.
+  /// 128 robots' commands and radio traffic (a sim_only run's most).
   static constexpr int kQueueCapacity = 10000;
 
   /// Opens LCM on `url` as given (use ResolveLcmUrl() to apply defaults).

@@ -8,10 +8,10 @@ namespace dream::lcm {
 /// is refused before it is decoded, so no message can make a receiver
 /// allocate more than a few hundred kilobytes.
 struct MessageLimits {
-  /// Robots a message may carry: more than a DREAM run may have (the
-  /// Robotarium simulator's 50, which the config and the world enforce), so
-  /// a viewer (dream view) draws any DREAM-format stream of up to 128 robots;
-  /// a robot_poses_t of 128 robots is 5 KiB.
+  /// Robots a message may carry: the most a `sim_only: true` run may have
+  /// (config::ControllerConfig::kMaxRobotsSimOnly, checked equal in
+  /// sim_node.cc; other runs stop at the Robotarium simulator's 50), and what
+  /// dream view draws; a robot_poses_t of 128 robots is 5 KiB.
   static constexpr int32_t kRobots = 128;
   /// Obstacles in a run (520 KB of DREAM_OBSTACLES at most).
   static constexpr int32_t kObstacles = 10000;

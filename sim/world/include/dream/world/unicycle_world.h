@@ -41,7 +41,8 @@ class PairwiseRules;
 // Collisions are found with a uniform grid (cell >= collision
 // diameter), giving exactly the brute-force pair count in O(N). Step() does
 // not allocate once its event lists have grown to their working size.
-// There is no robot-count limit here; the configuration layer enforces 50.
+// There is no robot-count limit here; the configuration layer enforces 50
+// (128, the bus's bound, for a run declared `sim_only: true`).
 class UnicycleWorld final : public World {
  public:
   // Throws std::invalid_argument if params or an obstacle spec is invalid,
