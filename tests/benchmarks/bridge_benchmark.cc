@@ -163,7 +163,7 @@ void BM_Import20Robots27000Steps(benchmark::State& state) {
     // The whole of dream import: the lab part and the run's report (summary, metrics, goal, picture).
     std::ostream quiet(nullptr);
     const workflows::ImportWorkflow::Result imported =
-        workflows::ImportWorkflow(quiet).Import({dir + "/dream_result.npy", dir + "/export", dir + "/lab", {}});
+        workflows::ImportWorkflow(quiet).Import({dir + "/dream_result.npy", dir + "/export", dir + "/lab", {}, ""});
     benchmark::DoNotOptimize(imported.imported.violations.collision_errors);
   }
   state.counters["steps"] = kSteps;

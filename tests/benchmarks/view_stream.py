@@ -5,8 +5,8 @@
     tests/integration/netns.sh tests/benchmarks/view_stream.py --build build
     tests/integration/netns.sh tests/benchmarks/view_stream.py --build build --robots 20 --fps 15
 
-DREAM runs stop at 50 robots (the Robotarium simulator's limit), so no run can make this stream:
-a small publisher here sends what a world sends each step (DREAM_OBSTACLES, DREAM_STATUS,
+This isolates the page's cost from a run's (view_cost.py's part 3 watches a real 100-robot run,
+`sim_only: true`): a small publisher here sends what a world sends each step (DREAM_OBSTACLES, DREAM_STATUS,
 DREAM_POSES of --robots robots driving circles; lcmtypes' messages, udpm inside the private
 network namespace netns.sh makes) at --rate steps a second for --seconds, then a FINISHED status.
 `dream view` (and its page in a headless Chromium) watches it. Reported: the steps published and

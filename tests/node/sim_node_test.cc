@@ -416,11 +416,11 @@ TEST_F(SimNodeTest, RealTimeRobotOfASilentAgentKeepsItsLastCommandFor15StepsThen
       bus_, lcm::CommandChannel(0),
       [&](const std::string&, const velocity_command_t&) { last_command_world_step = world_.step(); }, bad);
   const lcm::Subscription poses = lcm::Subscribe<robot_poses_t>(
-      bus_, lcm::kPosesChannel, [&](const std::string&, const robot_poses_t& poses) { x_by_step[poses.step] = poses.x; },
+      bus_, lcm::kPosesChannel, [&](const std::string&, const robot_poses_t& message) { x_by_step[message.step] = message.x; },
       bad);
-  AddAgent(0, [](const robot_poses_t& poses, velocity_command_t* command) {
+  AddAgent(0, [](const robot_poses_t& seen, velocity_command_t* command) {
     command->v = 0.1;
-    return poses.step <= kLastAnsweredStep;
+    return seen.step <= kLastAnsweredStep;
   });
   AddAgent(1, Forward());
   AddAgent(2, Forward());

@@ -237,7 +237,9 @@ TEST_F(RunSessionTest, ReasonsFoundAfterTheRunAreAddedByTheSameWriter) {
   EXPECT_EQ(after["agents"]["bad_messages"]["DREAM_POSES"], 2);
   // Everything else as the run wrote it, and the picture says the new verdict.
   for (const auto& [key, value] : before.items()) {
-    if (key != "verdict" && key != "verdict_reasons") EXPECT_EQ(after[key], value) << key;
+    if (key != "verdict" && key != "verdict_reasons") {
+      EXPECT_EQ(after[key], value) << key;
+    }
   }
   EXPECT_NE(files::ReadFileText(out() + "/trajectories.png"), picture_before);
 

@@ -28,7 +28,7 @@ ImportWorkflow::Result Import(const bridge::NpyArray& rows, const std::string& n
   const std::string dir = bridge::testing::NewFolder("workflow_import_" + name);
   bridge::testing::WriteText(dir + "/" + bridge::SubmissionFiles::kResult, bridge::EncodeNpy(rows));
   // A folder holding the result file stands for it.
-  return ImportWorkflow(out).Import({dir, testing::SimulatedExport(), dir + "/out", declared});
+  return ImportWorkflow(out).Import({dir, testing::SimulatedExport(), dir + "/out", declared, ""});
 }
 
 nlohmann::json ReadJson(const std::string& path) { return nlohmann::json::parse(files::ReadFileText(path)); }

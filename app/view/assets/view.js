@@ -340,35 +340,44 @@
       else if (message.type === "frame" && !view.replay) {
         onFrame(message);
         showViolationList([...view.marks.values()]);
-        view.dirty = true;  // drawn on the next display frame: several frames in one are drawn once
-        schedule();
+        view.dirty = true;
+        if (!view.liveTimer) liveTick();
       }
     };
   }
 
-  // Live, a frame is drawn no sooner than 1/fps after the one before (the
-  // server's rate: more frames than it sends would only redraw the same);
-  // flashes fade and links age between frames too, at the same rate.
+  // Live, a frame is drawn in the task that brought it or in a timer's, not
+  // in a display frame asked for: asking for one costs a software-rendering
+  // browser about as much again as drawing (docs/performance.md#dream-view).
+  // A frame is drawn no sooner than 1/fps after the one before (the server's
+  // rate: more frames than it sends would only redraw the same); flashes
+  // fade and links age between frames too, at the same rate. A hidden page
+  // draws nothing until it is shown again.
+  function liveTick() {
+    view.liveTimer = null;
+    if (document.hidden || view.replay || !(view.dirty || animating())) return;
+    const now = performance.now();
+    const period = 1000 / ((view.setup && view.setup.fps) || 30);
+    const wait = (view.lastDraw || 0) + period - 2 - now;
+    if (wait > 0) {
+      view.liveTimer = setTimeout(liveTick, wait);
+      return;
+    }
+    liveScene(now);
+    draw();
+    if (animating()) view.liveTimer = setTimeout(liveTick, period);
+  }
+
+  // Replay (and the page's first picture): drawn in display frames.
   function loop(now) {
     view.frameAsked = false;
     advanceReplay(now);
-    const live = view.live && !view.replay;
-    const wanted = view.dirty || (live && animating());
-    if (!wanted) {
-      if (view.replay && view.replay.playing) schedule();
-      return;
-    }
-    const wait = (view.lastDraw || 0) + 1000 / ((view.setup && view.setup.fps) || 30) - 2 - now;
-    if (live && wait > 0) {
-      if (!view.drawTimer) view.drawTimer = setTimeout(() => { view.drawTimer = null; schedule(); }, wait);
-      return;
-    }
-    if (live) liveScene(now);
-    draw();
-    if ((view.replay && view.replay.playing) || (live && animating())) schedule();
+    if (view.dirty) draw();
+    if (view.replay && view.replay.playing) schedule();
   }
 
   for (const box of document.querySelectorAll("#layers input")) box.onchange = draw;
+  document.addEventListener("visibilitychange", () => { if (!document.hidden && !view.liveTimer) liveTick(); });
   window.addEventListener("resize", () => { resize(); draw(); });
   resize();
   connect();
