@@ -32,6 +32,7 @@ import time
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "integration"))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from devtools import Page, chromium_argv, devtools_port  # noqa: E402
+from dreamtest import TestFailure  # noqa: E402
 from view_stream import cpu_seconds, process_tree  # noqa: E402
 
 URL = re.compile(r"open (http://127\.0\.0\.1:\d+/)")
@@ -77,7 +78,9 @@ class Browser:
         return cpu_seconds(process_tree(self.proc.pid)) if self.proc else 0.0
 
     def state(self):
-        return self.page.evaluate("Object.assign({drawn: window.dreamView.drawn}, window.dreamView.state)")
+        """What the page drew (None when the run ended before the page had loaded)."""
+        return self.page.evaluate("window.dreamView ? Object.assign({drawn: window.dreamView.drawn}, "
+                                  "window.dreamView.state) : null")
 
     def close(self):
         if self.page:
@@ -106,7 +109,10 @@ def run_and_watch(argv, folder, watch, url_from=None):
         _, status, usage = os.wait4(proc.pid, 0)  # with the CPU time of the run's processes (and their children)
         proc.returncode = code = os.waitstatus_to_exitcode(status)
         run_and_watch.cpu_s = usage.ru_utime + usage.ru_stime
-        state = browser.state() if browser.page else None
+        try:
+            state = browser.state() if browser.page else None
+        except TestFailure:  # a short run ends before its page has loaded
+            state = None
     finally:
         browser.close()
     if code not in (0, 3, 5):
@@ -229,7 +235,7 @@ def main():
         print(f"\nreal time, 100 robots (sim_only), {summary['steps']} steps at {summary['steps_per_second']:.1f} "
               f"steps/s ({summary['verdict']}) with --view and a page: the page received {state['frames']} "
               f"frames ({state['frames'] / wall_s:.1f}/s), drew {state['drawn']}, showed step {state['step']} "
-              f"of the last {summary['steps'] - 1}, {len(state['robots'])} robots")
+              f"(the run's last: {summary['steps']}), {len(state['robots'])} robots")
 
 
 if __name__ == "__main__":
