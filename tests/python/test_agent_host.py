@@ -355,23 +355,20 @@ class AgentHostTest(unittest.TestCase):
         self.assertEqual(host.bad_messages, {"DREAM_POSES": 1, "DREAM_STATUS": 1})
         self.assertFalse(host.world_finished)
 
-    def test_the_robot_limit_is_the_buses(self):
-        # agent_host.MAX_ROBOTS mirrors lcm::MessageLimits::kRobots (the runtime stands alone).
+    def message_limit(self, name):
+        """lcm::MessageLimits' `name`, read from its header (the Python runtime stands alone)."""
         header = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "lcmtypes", "lcm", "include",
                               "dream", "lcm", "message_limits.h")
         with open(header, encoding="utf-8") as f:
-            declared = re.search(r"kRobots\s*=\s*(\d+)", f.read())
-        self.assertIsNotNone(declared)
-        self.assertEqual(dream.agent_host.MAX_ROBOTS, int(declared.group(1)))
+            declared = re.search(name + r"\s*=\s*(\d+)", f.read())
+        self.assertIsNotNone(declared, f"{name} in {header}")
+        return int(declared.group(1))
+
+    def test_the_robot_limit_is_the_buses(self):
+        self.assertEqual(dream.agent_host.MAX_ROBOTS, self.message_limit("kRobots"))
 
     def test_the_detail_limit_is_the_worlds(self):
-        # agent_host.MAX_DETAIL_BYTES mirrors lcm::MessageLimits::kDetailBytes (the runtime stands alone).
-        header = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "lcmtypes", "lcm", "include",
-                              "dream", "lcm", "message_limits.h")
-        with open(header, encoding="utf-8") as f:
-            declared = re.search(r"kDetailBytes\s*=\s*(\d+)", f.read())
-        self.assertIsNotNone(declared)
-        self.assertEqual(dream.agent_host.MAX_DETAIL_BYTES, int(declared.group(1)))
+        self.assertEqual(dream.agent_host.MAX_DETAIL_BYTES, self.message_limit("kDetailBytes"))
 
     def test_a_fault_text_is_sent_as_the_world_accepts_it(self):
         # UTF-8 without NUL, at most MAX_DETAIL_BYTES, cut between characters: the
