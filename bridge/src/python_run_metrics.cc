@@ -10,10 +10,11 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <stdexcept>
 #include <thread>
 #include <vector>
+
+#include "dream/files/file_text.h"
 
 extern char** environ;
 
@@ -62,13 +63,11 @@ void WriteInput(const fs::path& path, const std::string& spec_json, const run_lo
   if (!out.flush()) throw std::runtime_error("cannot write " + path.string());
 }
 
+// What the script wrote ("" when it wrote nothing there), bounded.
 std::string ReadBounded(const fs::path& path) {
   std::error_code error;
-  const std::uintmax_t size = fs::file_size(path, error);
-  if (error) return "";
-  if (size > kMaxOutputBytes) throw std::runtime_error(path.string() + ": more than 64 MB of metrics");
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  if (!fs::exists(path, error)) return "";
+  return files::ReadFileText(path.string(), kMaxOutputBytes);
 }
 
 /// Runs python3 -I script [mode] input output with stderr to `errors`; its exit status, -1 when it
