@@ -145,6 +145,11 @@ TEST_F(TrajectoryPictureTest, TheCaptionNamesTheRunAndItsVerdictWhenKnown) {
   overlays.verdict = "clean";
   EXPECT_EQ(TrajectoryPicture::Caption(run, overlays),
             "go_to_goal \xe2\x80\x94 clean (no errors or warnings) \xe2\x80\x94 2 robots, steps 0..100 (3.3 s)");
+  overlays.sim_only = true;  // a clean sim_only run is not to be taken for a lab-ready one
+  EXPECT_EQ(TrajectoryPicture::Caption(run, overlays),
+            "go_to_goal \xe2\x80\x94 clean (no errors or warnings) \xe2\x80\x94 sim-only run (never to the lab) "
+            "\xe2\x80\x94 2 robots, steps 0..100 (3.3 s)");
+  overlays.sim_only = false;
   overlays.verdict = "rejected";
   EXPECT_EQ(TrajectoryPicture::Caption(run, overlays).rfind("go_to_goal \xe2\x80\x94 rejected (", 0), 0u);
   overlays.run_name.clear();

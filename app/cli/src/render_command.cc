@@ -139,6 +139,7 @@ void RunLabelFromSummary(const fs::path& log, render::ArenaOverlays* overlays) {
   if (summary.contains("verdict") && summary["verdict"].is_string()) {
     overlays->verdict = summary["verdict"].get<std::string>();
   }
+  overlays->sim_only = summary.contains("sim_only") && summary["sim_only"].is_boolean() && summary["sim_only"].get<bool>();
   // A Python controller's goal_points(), judged when the run was reported.
   if (summary.contains("metrics")) session::AddDeclaredGoals(summary["metrics"], overlays);
 }

@@ -213,6 +213,7 @@ bool RunReporter::DrawPicture(const LogReadBack& log, const std::string& picture
     AddDeclaredGoals(metrics, &overlays);  // a Python controller's goal_points()
     overlays.run_name = config_.name;
     overlays.verdict = world::RunVerdictName(verdict);  // as summary.json says
+    overlays.sim_only = config_.sim_only;
     overlays.violations = log.located;                  // as summary.json lists them
     render::TrajectoryPicture::Render(log.Get(), overlays, picture_path, render::RenderFormat::kPng, 1280);
     return true;

@@ -56,6 +56,7 @@ std::string RunLabel(const ArenaOverlays& overlays, bool short_verdict) {
     const char* explained = short_verdict ? nullptr : VerdictExplained(overlays.verdict);
     label += (explained != nullptr ? std::string(explained) : overlays.verdict) + " \xe2\x80\x94 ";
   }
+  if (overlays.sim_only) label += "sim-only run (never to the lab) \xe2\x80\x94 ";
   return label;
 }
 

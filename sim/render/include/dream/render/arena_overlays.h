@@ -43,6 +43,9 @@ struct ArenaOverlays {
   /// written at the start of the caption; empty: not shown.
   std::string run_name;
   std::string verdict;
+  /// A run declared `sim_only: true` (summary.json "sim_only"): the caption
+  /// says so, so that a clean picture is not taken for a lab-ready run.
+  bool sim_only = false;
   /// The run's violations, located (LocateViolations on its log): each marked
   /// where it happened with its first step; none: no marks.
   world::LocatedViolations violations;
@@ -50,7 +53,8 @@ struct ArenaOverlays {
 
 /// `overlays`' run name and verdict as the start of a caption, each followed
 /// by " — " ("go_to_goal — clean (no errors or warnings) — "); a known verdict
-/// is explained unless `short_verdict`. Empty when neither is known.
+/// is explained unless `short_verdict`; then "sim-only run (never to the lab)
+/// — " for a sim_only run. Empty when none is known.
 std::string RunLabel(const ArenaOverlays& overlays, bool short_verdict = false);
 
 }  // namespace dream::render
