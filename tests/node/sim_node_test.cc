@@ -345,6 +345,7 @@ TEST_F(SimNodeTest, MissingAgentAtStartEndsTheRunWithAClearReason) {
   const RunOutcome outcome = Run(FastOptions(10));
   EXPECT_EQ(outcome.end, RunOutcome::End::kStartTimeout);
   EXPECT_NE(outcome.reason.find("robot(s) 2"), std::string::npos) << outcome.reason;
+  EXPECT_NE(outcome.reason.find("raise world.start_timeout_s"), std::string::npos) << outcome.reason;
   EXPECT_EQ(outcome.steps, 0);
 }
 

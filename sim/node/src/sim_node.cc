@@ -397,7 +397,9 @@ std::optional<RunOutcome> SimNode::StartWhenAllAnswered(Clock::time_point now, C
     return Finish(RunOutcome::End::kStartTimeout,
                   "no agent answered for robot(s) " + JoinIds(missing) + " within " +
                       std::to_string(static_cast<int>(options_.start_timeout_s)) +
-                      " s; start them (dream agent --robots ...) on the same LCM URL " + lcm_.url());
+                      " s; start them (dream agent --robots ...) on the same LCM URL " + lcm_.url() +
+                      ", or, if they were started and are still starting (many Python agents on few cores), "
+                      "raise world.start_timeout_s");
   }
   return std::nullopt;
 }
