@@ -103,7 +103,10 @@ def run_and_watch(argv, folder, watch, url_from=None):
                 with open(source) as f:
                     found = URL.search(f.read())
                 if found:
-                    browser.open(found.group(1))
+                    try:
+                        browser.open(found.group(1))
+                    except (TestFailure, OSError):  # the run ended (and its page went) while Chromium started
+                        pass
                     break
                 time.sleep(0.01)
         _, status, usage = os.wait4(proc.pid, 0)  # with the CPU time of the run's processes (and their children)
@@ -111,7 +114,7 @@ def run_and_watch(argv, folder, watch, url_from=None):
         run_and_watch.cpu_s = usage.ru_utime + usage.ru_stime
         try:
             state = browser.state() if browser.page else None
-        except TestFailure:  # a short run ends before its page has loaded
+        except (TestFailure, OSError):  # a short run ends before its page has loaded
             state = None
     finally:
         browser.close()
