@@ -69,16 +69,18 @@
     return !!(s && ((s.marks && s.marks.some((m) => m.flash > 0)) || (s.links && s.links.length > 0)));
   }
 
-  // The side panel and <body>'s data- attributes: at most every PANEL_MS, in
-  // the frame being drawn (a write of its own would make the browser lay out
-  // and present one more frame); the latest values are written anyway when
-  // no frame comes for another PANEL_MS (a trailing update: the run ended).
+  // The side panel and <body>'s data- attributes: at most every PANEL_MS.
+  // Live, in the frame being drawn (a write of its own would make the browser
+  // lay out and present one more frame), the latest values written anyway
+  // when no frame comes for another PANEL_MS (the run ended); in a replay, as
+  // soon as PANEL_MS allow (the user stepped or scrubbed).
   function showPanel(step, t, counts, stateName) {
     view.panel = [step, t, counts, stateName];
     const wait = (view.panelShown || 0) + PANEL_MS - performance.now();
     if (wait > 0) {
       if (!view.panelTimer) {
-        view.panelTimer = setTimeout(() => { view.panelTimer = null; showPanel(...view.panel); }, wait + PANEL_MS);
+        const trailing = wait + (view.replay ? 0 : PANEL_MS);
+        view.panelTimer = setTimeout(() => { view.panelTimer = null; showPanel(...view.panel); }, trailing);
       }
       return;
     }
