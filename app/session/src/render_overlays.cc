@@ -1,14 +1,15 @@
 #include "dream/session/render_overlays.h"
 
-#include <filesystem>
-#include <fstream>
+#include <exception>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "dream/kind_api/agent_parts_config.h"
 #include "dream/agent_host/controller_factory.h"
 #include "dream/agent_host/controller_registry.h"
 #include "dream/bridge/python_run_metrics.h"
+#include "dream/files/file_text.h"
 #include "dream/agent_host/snapshot_from_messages.h"
 #include "dream/agents/framework/world_snapshot.h"
 
@@ -95,11 +96,13 @@ void AddDeclaredGoals(const nlohmann::json& metrics, render::ArenaOverlays* over
 }
 
 bool AddDeclaredGoalsOfRun(const std::string& summary_path, render::ArenaOverlays* overlays) {
-  std::error_code error;
-  const std::uintmax_t size = std::filesystem::file_size(summary_path, error);
-  if (error || size > kMaxSummaryBytes) return false;
-  std::ifstream in(summary_path);
-  const nlohmann::json summary = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  std::string text;
+  try {
+    text = files::ReadFileText(summary_path, kMaxSummaryBytes);
+  } catch (const std::exception&) {
+    return false;  // goals are a nicety: a missing, odd or huge summary.json goes without
+  }
+  const nlohmann::json summary = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (!summary.is_object() || !summary.contains("metrics")) return false;
   const size_t before = overlays->goals_m.size();
   AddDeclaredGoals(summary["metrics"], overlays);
