@@ -1,6 +1,5 @@
 #include "dream/view/live_view.h"
 
-#include <algorithm>
 #include <exception>
 #include <vector>
 #include <utility>

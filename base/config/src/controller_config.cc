@@ -47,24 +47,22 @@ void ReadPlugins(const ConfigNode& root, ControllerConfig* config) {
 // `robots:` within the Robotarium simulator's 50, or with `sim_only: true`
 // within the bus's 128; a count in between says how to lift the limit.
 void ReadRobots(const ConfigNode& root, ControllerConfig* config) {
-  if (root.Has("sim_only")) config->sim_only_node = root.Required("sim_only");
+  if (root.Has("sim_only")) config->sim_only_node = root.Required("sim_only");  // a missing key has no node to keep
   config->sim_only = root.GetBool("sim_only", false);
   const ConfigNode robots = root.Required("robots");
   const long long n = robots.AsInt();
-  const std::string got = ", got " + std::to_string(n);
-  const std::string simulator = " (the Robotarium simulator's limit; the lab runs at most " +
-                                std::to_string(ControllerConfig::kMaxRobotsOnHardware) + ")";
-  if (config->sim_only && (n < 1 || n > ControllerConfig::kMaxRobotsSimOnly)) {
-    robots.Fail("must be between 1 and " + std::to_string(ControllerConfig::kMaxRobotsSimOnly) +
-                " with sim_only (what one message of the bus carries)" + got);
-  }
-  if (!config->sim_only && n > ControllerConfig::kMaxRobots && n <= ControllerConfig::kMaxRobotsSimOnly) {
-    robots.Fail("must be at most " + std::to_string(ControllerConfig::kMaxRobots) + simulator + got +
-                "; add `sim_only: true` to run up to " + std::to_string(ControllerConfig::kMaxRobotsSimOnly) +
-                " robots in simulation only (it can never go to the lab)");
-  }
-  if (!config->sim_only && (n < 1 || n > ControllerConfig::kMaxRobots)) {
-    robots.Fail("must be between 1 and " + std::to_string(ControllerConfig::kMaxRobots) + simulator + got);
+  const int limit = config->sim_only ? ControllerConfig::kMaxRobotsSimOnly : ControllerConfig::kMaxRobots;
+  if (n < 1 || n > limit) {
+    const std::string got = ", got " + std::to_string(n);
+    const std::string why = config->sim_only ? " with sim_only (what one message of the bus carries)"
+                                             : " (the Robotarium simulator's limit; the lab runs at most " +
+                                                   std::to_string(ControllerConfig::kMaxRobotsOnHardware) + ")";
+    if (!config->sim_only && n > limit && n <= ControllerConfig::kMaxRobotsSimOnly) {
+      robots.Fail("must be at most " + std::to_string(limit) + why + got + "; add `sim_only: true` to run up to " +
+                  std::to_string(ControllerConfig::kMaxRobotsSimOnly) +
+                  " robots in simulation only (it can never go to the lab)");
+    }
+    robots.Fail("must be between 1 and " + std::to_string(limit) + why + got);
   }
   config->num_robots = static_cast<int>(n);
 }
