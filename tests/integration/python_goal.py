@@ -13,6 +13,8 @@ a sweep's success column; a class that declares none gets "no goal declared", ne
    `dream render --plot --metric worst_error_m` draws the class's series; `dream compare` lists
    its figures and goal.
 5. A goal() that raises: summary.json metrics.error names the module and line; not a success.
+   With --steps too (issue 34): a goal() that raises or goal_points() that are unusable make the run
+   not_ready ("could not be judged"), exit 5; only a goal not reached yet is "not judged".
 6. No run leaves __pycache__ beside the module.
 
 Usage: python_goal.py --dream BIN --source DIR
@@ -172,6 +174,21 @@ def sweeps(context, dream):
     error = summary["metrics"].get("error", "")
     check("ValueError: broken rule" in error and "pair.py:" in error, f"metrics.error: {error!r}")
     check(code == 5 and not summary["goal"]["met"], f"a failing goal(): exit {code}, goal {summary['goal']}")
+
+    # A goal that cannot be judged is a failure even when --steps cut the run
+    # short (a goal that merely was not reached yet is not judged then).
+    unusable = MODULE.replace("return [[point] for point in POINTS]", "return [['not', 'a point']]")
+    for name, module in (("broken", broken), ("unusable", unusable)):
+        config = write_experiment(context.path(name + "_cut"), module)
+        run = context.path(name + "_cut", "run")
+        code, output = context.run([dream, "run", config, "--out", run, "--steps", "40"], timeout=120)
+        summary = read_summary(run)
+        goal = [r for r in summary["verdict_reasons"] if r["rule"] == "goal"]
+        check(code == 5 and summary["verdict"] == "not_ready" and goal and "could not be judged" in goal[0]["problem"],
+              f"{name} goal with --steps 40: exit {code}, verdict {summary['verdict']}, reasons "
+              f"{summary['verdict_reasons']}: {output[-400:]}")
+        check(summary["goal"].get("judge_error"), f"{name}: summary.json goal.judge_error: {summary['goal']}")
+        check("goal: not judged" not in output, f"{name}: must not say the goal was merely not judged: {output[-400:]}")
 
 
 def test(context, args):

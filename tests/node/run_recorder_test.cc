@@ -16,6 +16,7 @@
 #include "dream/node/run_judge.h"
 #include "dream/node/sim_node.h"
 #include "run_with_file_size_limit.h"
+#include "quiet_bus.h"
 #include "scripted_agent.h"
 #include "../support/scratch_folder.h"
 
@@ -100,7 +101,9 @@ TEST_F(RunRecorderTest, SimNodeRecordsEveryStepInSimulatedTime) {
   options.progress_interval_s = 0;
   {
     RunRecorder recorder(path);
-    SimNode node(bus, world, &recorder, options);
+    testing::QuietBus quiet_bus(bus);  // time passes only while the bus is quiet
+    SimNode node(quiet_bus, world, &recorder, options);
+    node.set_clock(quiet_bus.clock());
     std::atomic<bool> stop{false};
     ASSERT_TRUE(node.Run(stop).ok());
     recorder.Close();
@@ -195,7 +198,9 @@ TEST_F(RunRecorderTest, RefusedMessagesStayOutOfTheRunLogAndAreKeptApartBounded)
   {
     RunRecorder recorder(path);
     RefusedRecord refused(refused_path);
-    SimNode node(bus, world, &recorder, options);
+    testing::QuietBus quiet_bus(bus);  // time passes only while the bus is quiet
+    SimNode node(quiet_bus, world, &recorder, options);
+    node.set_clock(quiet_bus.clock());
     node.set_refused_record(&refused);
     run_id = node.run_id();
     std::atomic<bool> stop{false};
@@ -387,7 +392,9 @@ testing::ChildReport RunSimNodeWithFileSizeLimit(const std::string& path, rlim_t
     options.stop_when_done = false;
     options.progress_interval_s = 0;
     RunRecorder recorder(path);
-    SimNode node(bus, world, &recorder, options);
+    testing::QuietBus quiet_bus(bus);  // time passes only while the bus is quiet
+    SimNode node(quiet_bus, world, &recorder, options);
+    node.set_clock(quiet_bus.clock());
     std::atomic<bool> stop{false};
     const RunOutcome outcome = node.Run(stop);
     recorder.Close();

@@ -35,5 +35,27 @@ TEST(ExperimentGoalReason, AMissedGoalIsANotReadyReason) {
   EXPECT_FALSE(ExperimentGoal::Judge(SummaryOf("my_kind", nlohmann::json::object())).Reason().has_value());
 }
 
+// Metrics that could not be computed (a goal() that raised or hung, unusable
+// goal points) are a goal that could not be judged: not ready, and said so
+// apart from a goal the run missed (issue 34: RunReporter never excuses it as
+// cut short by --steps).
+TEST(ExperimentGoalReason, AGoalThatCouldNotBeJudgedIsNotReadyAndSaysWhy) {
+  nlohmann::json summary = SummaryOf("python", nlohmann::json::object());
+  summary["metrics"] = {{"error", "pair.py:70: in goal: ValueError: broken rule"}};
+  const ExperimentGoal failed = ExperimentGoal::Judge(summary);
+  EXPECT_TRUE(failed.has_criterion);
+  EXPECT_FALSE(failed.met);
+  EXPECT_EQ(failed.judge_error, "pair.py:70: in goal: ValueError: broken rule");
+  const std::optional<world::VerdictReason> reason = failed.Reason();
+  ASSERT_TRUE(reason.has_value());
+  EXPECT_EQ(reason->verdict, world::RunVerdict::kNotReady);
+  EXPECT_THAT(reason->problem, HasSubstr("goal could not be judged: pair.py:70: in goal: ValueError: broken rule"));
+  EXPECT_EQ(failed.Json()["judge_error"], "pair.py:70: in goal: ValueError: broken rule");
+
+  const ExperimentGoal judged = ExperimentGoal::Judge(SummaryOf("go_to_goal", Judged(false, -1, "worst 0.2 m")));
+  EXPECT_TRUE(judged.judge_error.empty());
+  EXPECT_FALSE(judged.Json().contains("judge_error"));
+}
+
 }  // namespace
 }  // namespace dream::session

@@ -21,7 +21,9 @@ ExperimentGoal ExperimentGoal::Judge(const nlohmann::json& summary) {
       metrics.is_object() && metrics.contains("goal") ? metrics["goal"] : nlohmann::json();
   if (metrics.is_object() && metrics.contains("error")) {
     goal.has_criterion = true;
-    goal.detail = "no metrics: " + (metrics["error"].is_string() ? metrics["error"].get<std::string>() : "");
+    goal.judge_error = metrics["error"].is_string() ? metrics["error"].get<std::string>() : "metrics.error";
+    if (goal.judge_error.empty()) goal.judge_error = "metrics.error";
+    goal.detail = "no metrics: " + goal.judge_error;
     return goal;
   }
   if (judged.is_object()) {
@@ -47,6 +49,13 @@ ExperimentGoal ExperimentGoal::Judge(const nlohmann::json& summary) {
 
 std::optional<world::VerdictReason> ExperimentGoal::Reason() const {
   if (!has_criterion || met) return std::nullopt;
+  if (!judge_error.empty()) {
+    return world::VerdictReason{"goal", world::RunVerdict::kNotReady,
+                                "the " + (kind.empty() ? std::string("run") : kind) +
+                                    " experiment's goal could not be judged: " + judge_error,
+                                "fix the experiment's metrics or goal (its error above); dream render RUN --plot "
+                                "shows the run"};
+  }
   return world::VerdictReason{"goal", world::RunVerdict::kNotReady,
                             "the " + kind + " experiment missed its goal: " + detail,
                             "summary.json metrics; dream render RUN --plot shows them over time"};
@@ -59,6 +68,7 @@ nlohmann::ordered_json ExperimentGoal::Json() const {
   json["met"] = met;
   json["completion_step"] = completion_step;
   json["detail"] = detail;
+  if (!judge_error.empty()) json["judge_error"] = judge_error;
   return json;
 }
 

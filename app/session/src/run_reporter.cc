@@ -108,9 +108,10 @@ world::RunJudgement RunReporter::Judge(const Ended& ended, const LogReadBack& lo
   }
   const ExperimentGoal goal = ExperimentGoal::Judge(*summary);
   nlohmann::ordered_json goal_json = goal.Json();
-  // A run stopped by --steps at its limit was cut short on purpose: its goal is not judged.
-  const bool cut_short =
-      options_.steps_from_command_line && !goal.met && outcome.steps >= config_.sim.max_steps;
+  // A run stopped by --steps at its limit was cut short on purpose: its goal is
+  // not judged. A goal that could not be judged at all is a failure either way.
+  const bool cut_short = options_.steps_from_command_line && !goal.met && goal.judge_error.empty() &&
+                         outcome.steps >= config_.sim.max_steps;
   goal_json["judged"] = !cut_short && goal.has_criterion;
   (*summary)["goal"] = goal_json;
   if (!cut_short) {

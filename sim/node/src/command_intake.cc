@@ -21,12 +21,13 @@ bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) =
 
 CommandIntake::CommandIntake(world::World& world, const config::SimNodeOptions& options, int64_t run_id,
                              std::vector<RobotSlot>& robots, lcm::BadMessageLog& bad_messages,
-                             OtherWorldSeen other_world_seen)
+                             const NodeClock& clock, OtherWorldSeen other_world_seen)
     : world_(world),
       options_(options),
       run_id_(run_id),
       robots_(robots),
       bad_messages_(bad_messages),
+      clock_(clock),
       other_world_seen_(std::move(other_world_seen)) {}
 
 void CommandIntake::Reject(const std::string& channel, const std::string& reason, int64_t agent_id) {
@@ -125,8 +126,7 @@ bool CommandIntake::ClaimRobot(const std::string& channel, int id, RobotSlot& ro
 }
 
 Heard CommandIntake::Hold(const std::string& channel, int id, RobotSlot& robot, const velocity_command_t& command) {
-  const auto now = std::chrono::steady_clock::now();
-  robot.last_heard = now;
+  robot.last_heard = clock_.now();
   if (robot.lost) {
     robot.lost = false;
     spdlog::info("robot {}: agent is back (step {})", id, world_.step());

@@ -80,7 +80,7 @@ SimNode::SimNode(lcm::LcmInterface& lcm, world::World& world, RunRecorder* recor
       robots_(static_cast<size_t>(world.num_robots())),
       state_(run_status_t::WAITING_FOR_AGENTS),
       run_id_(lcm::NewRunId()),
-      commands_(world, options_, run_id_, robots_, bad_messages_,
+      commands_(world, options_, run_id_, robots_, bad_messages_, clock_,
                 [this](int64_t run_id, const std::string& seen_on) { NoteOtherWorld(run_id, seen_on); }),
       radio_(world, run_id_, bad_messages_) {
   std::string error;
@@ -329,7 +329,7 @@ RunOutcome SimNode::Finish(RunOutcome::End end, const std::string& reason) {
   const int8_t state = end == RunOutcome::End::kFinished ? run_status_t::FINISHED : run_status_t::ABORTED;
   state_ = state;
   if (progress_ != nullptr) {
-    const auto now = Clock::now();
+    const auto now = clock_.now();
     progress_->Update(world_.step(), now);
     progress_->Finish(now);
   }
@@ -355,7 +355,7 @@ RunOutcome SimNode::Finish(RunOutcome::End end, const std::string& reason) {
     outcome.reason = RecorderFailureReason();
   }
   outcome.steps = world_.step();
-  outcome.wall_time_s = SecondsBetween(run_start_, Clock::now());
+  outcome.wall_time_s = SecondsBetween(run_start_, clock_.now());
   outcome.rejected_commands = commands_.rejected_commands();
   outcome.command_conflicts = commands_.command_conflicts();
   outcome.run_id = run_id_;
@@ -428,7 +428,7 @@ std::optional<RunOutcome> SimNode::TakeStep() {
                                                             : "reached the step limit");
   }
   PublishStep(true);
-  step_published_ = last_resend_ = Clock::now();
+  step_published_ = last_resend_ = clock_.now();
   if (progress_ != nullptr) progress_->Update(world_.step(), step_published_);
   // With every robot lost nothing holds a lockstep world back, but what
   // has arrived is still read each step (the in-process agents' answers
@@ -454,17 +454,17 @@ void SimNode::ResendStepAndListen(Clock::time_point now, Clock::time_point next_
   int timeout_ms = 10;
   const bool paced = !lockstep || options_.pace > 0.0;
   if (paced && state_ == run_status_t::RUNNING && (!lockstep || AllLiveAnswered())) {
-    const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(next_realtime_step - Clock::now());
+    const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(next_realtime_step - clock_.now());
     timeout_ms = static_cast<int>(std::max<int64_t>(0, std::min<int64_t>(wait.count(), 10)));
   }
   lcm_.HandleSubscriptions(timeout_ms);
 }
 
 RunOutcome SimNode::Run(const std::atomic<bool>& stop) {
-  run_start_ = Clock::now();
+  run_start_ = clock_.now();
   state_ = run_status_t::WAITING_FOR_AGENTS;
   PublishStep(true);
-  step_published_ = last_resend_ = Clock::now();
+  step_published_ = last_resend_ = clock_.now();
   // Real time: one world step per time step of wall time (over the pace).
   // Lockstep with a pace: no step sooner than that, to watch the run.
   const bool lockstep = options_.mode == config::WorldMode::kLockstep;
@@ -476,7 +476,7 @@ RunOutcome SimNode::Run(const std::atomic<bool>& stop) {
   while (true) {
     if (RecorderFailed()) return Finish(RunOutcome::End::kFailed, RecorderFailureReason());
     if (stop.load()) return Finish(RunOutcome::End::kInterrupted, "interrupted (Ctrl-C or SIGTERM)");
-    const auto now = Clock::now();
+    const auto now = clock_.now();
     if (state_ == run_status_t::WAITING_FOR_AGENTS) {
       if (std::optional<RunOutcome> timed_out = StartWhenAllAnswered(now, &next_realtime_step)) return std::move(*timed_out);
     }

@@ -21,6 +21,10 @@ struct ExperimentGoal {
   bool met = false;
   long long completion_step = -1;  ///< -1: never completed
   std::string detail;              ///< short, for tables: "3 of 3 formations", "not settled"
+  /// Why the goal could not be judged (metrics.error: a goal() or metrics()
+  /// that raised or hung, unusable goal points); "" when it was. A run whose
+  /// goal failed to be judged is not ready whatever stopped it, --steps too.
+  std::string judge_error;
 
   /// Judges a parsed summary.json. Missing metrics count as not met.
   static ExperimentGoal Judge(const nlohmann::json& summary);
@@ -28,7 +32,8 @@ struct ExperimentGoal {
   /// The verdict reason "goal" (not_ready) when the kind has a criterion and
   /// the run missed it; none otherwise.
   std::optional<world::VerdictReason> Reason() const;
-  /// {kind, has_criterion, met, completion_step, detail} for summary.json.
+  /// {kind, has_criterion, met, completion_step, detail} for summary.json,
+  /// and judge_error when there is one.
   nlohmann::ordered_json Json() const;
 };
 

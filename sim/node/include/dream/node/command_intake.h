@@ -9,6 +9,7 @@
 #include "dream/config/sim_node_options.h"
 #include "dream/lcm/bad_message_log.h"
 #include "dream/node/heard.h"
+#include "dream/node/node_clock.h"
 #include "dream/node/robot_slot.h"
 #include "dream/world/world.h"
 
@@ -31,9 +32,10 @@ class CommandIntake {
   using OtherWorldSeen = std::function<void(int64_t run_id, const std::string& seen_on)>;
 
   /// Everything given by reference must outlive the intake; `robots` has one
-  /// slot per robot of `world`.
+  /// slot per robot of `world`; `clock` says when a command was heard.
   CommandIntake(world::World& world, const config::SimNodeOptions& options, int64_t run_id,
-                std::vector<RobotSlot>& robots, lcm::BadMessageLog& bad_messages, OtherWorldSeen other_world_seen);
+                std::vector<RobotSlot>& robots, lcm::BadMessageLog& bad_messages, const NodeClock& clock,
+                OtherWorldSeen other_world_seen);
 
   Heard Take(const std::string& channel, const velocity_command_t& command);
 
@@ -63,6 +65,7 @@ class CommandIntake {
   int64_t run_id_;
   std::vector<RobotSlot>& robots_;
   lcm::BadMessageLog& bad_messages_;
+  const NodeClock& clock_;
   OtherWorldSeen other_world_seen_;
   int64_t rejected_commands_ = 0;
   int64_t command_conflicts_ = 0;

@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "dream/applied_commands_t.hpp"
@@ -13,6 +14,7 @@
 #include "dream/lcm/lcm_interface.h"
 #include "dream/node/command_intake.h"
 #include "dream/node/heard.h"
+#include "dream/node/node_clock.h"
 #include "dream/node/radio_intake.h"
 #include "dream/node/robot_slot.h"
 #include "dream/node/run_outcome.h"
@@ -93,6 +95,10 @@ class SimNode {
   /// Must outlive Run().
   void set_refused_record(RefusedRecord* refused) { refused_ = refused; }
 
+  /// Reads the time from `clock` instead of the steady clock (tests: time
+  /// that passes only as the test says). Before Run().
+  void set_clock(NodeClock clock) { clock_ = std::move(clock); }
+
  private:
   using Clock = std::chrono::steady_clock;
 
@@ -145,6 +151,7 @@ class SimNode {
   std::vector<RobotSlot> robots_;
   int8_t state_;
   int64_t run_id_;
+  NodeClock clock_;  // before commands_, which reads it
   CommandIntake commands_;
   RadioIntake radio_;
   std::set<int64_t> other_worlds_;
