@@ -46,7 +46,7 @@ def check(condition, message):
         raise Failure(message)
 
 
-def run(argv, expect=0, cwd=None, timeout=600, env=None):
+def run_with_code(argv, expect=0, cwd=None, timeout=600, env=None):
     started = time.monotonic()
     result = subprocess.run([str(a) for a in argv], capture_output=True, text=True, cwd=cwd, timeout=timeout,
                             env=env)
@@ -54,7 +54,12 @@ def run(argv, expect=0, cwd=None, timeout=600, env=None):
     if expect is not None and result.returncode != expect:
         raise Failure("%s exited %d (expected %d):\n%s" % (" ".join(map(str, argv)), result.returncode, expect,
                                                           output[-3000:]))
-    return output, time.monotonic() - started
+    return result.returncode, output, time.monotonic() - started
+
+
+def run(argv, expect=0, cwd=None, timeout=600, env=None):
+    _, output, seconds = run_with_code(argv, expect, cwd, timeout, env)
+    return output, seconds
 
 
 def official_checkout(tmp):
@@ -101,12 +106,16 @@ class Loop:
             # check the script itself from its exact start poses.
             flags.append("--skip-initialization")
             note = ", start-up drive skipped (crowded start poses)"
-        output, seconds = run([self.dream, "check-submission", export_dir, "--out", check_dir, "-q"] + flags)
+        code, output, seconds = run_with_code([self.dream, "check-submission", export_dir, "--out", check_dir] + flags,
+                                              expect=None)
         with open(os.path.join(check_dir, "check.json")) as f:
             result = json.load(f)
         where = "%s (%s, %s)" % (name, variant, result["simulator"])
         check(result["script_ok"], where + ": the script failed")
-        check(result["verdict"] == "clean", where + ": debug() verdict " + result["verdict"] + ":\n" + result["debug_text"])
+        check(result["debug_verdict"] == "clean",
+              where + ": debug() verdict " + result["debug_verdict"] + ":\n" + result["debug_text"])
+        verdict = one_judge_of(self, where, check_dir, export_dir, output)
+        check(code == EXIT_OF_VERDICT[verdict], where + ": check-submission exited %d for a %s run" % (code, verdict))
         check(not result["python_warnings"], where + ": Python warnings: %s" % result["python_warnings"])
         check(result["complete"], where + ": the run did not complete")
         check("tracking_rms_m" in result, where + ": not compared with the run:\n" + output[-2000:])
@@ -117,6 +126,29 @@ class Loop:
                            (where, seconds, result["settle_steps"], 100 * result["tracking_rms_m"],
                             100 * result["tracking_max_m"], note))
         return sim_dir, export_dir, check_dir
+
+
+EXIT_OF_VERDICT = {"clean": 0, "warning": 0, "not_ready": 5, "rejected": 3}
+
+
+def one_judge_of(loop, where, check_dir, export_dir, output):
+    """Issue 33, one judge: check-submission's exit code and check.json verdict are the imported run's
+    summary.json verdict, and `dream import` of the same result says the same."""
+    with open(os.path.join(check_dir, "check.json")) as f:
+        verdict = json.load(f)["verdict"]
+    with open(os.path.join(check_dir, "summary.json")) as f:
+        summary = json.load(f)
+    check(verdict == summary["verdict"], where + ": check.json verdict %s, its summary.json %s" %
+          (verdict, summary["verdict"]))
+    check(verdict in ("clean", "warning", "not_ready"), where + ": verdict " + verdict + ":\n" + output[-2000:])
+    check("\ngoal: " in output, where + ": check-submission did not print the goal:\n" + output[-1500:])
+    result_file = os.path.join(check_dir, "lab_files", "dream_result.npy")
+    imported = os.path.join(tempfile.mkdtemp(prefix="one_judge_"), "lab")
+    import_output, _ = run([loop.dream, "import", result_file, "--export", export_dir, "--out", imported, "-q"],
+                           expect=EXIT_OF_VERDICT[verdict])
+    with open(os.path.join(imported, "summary.json")) as f:
+        check(json.load(f)["verdict"] == verdict, where + ": dream import of the same result judges otherwise")
+    return verdict
 
 
 def bad_input(loop):

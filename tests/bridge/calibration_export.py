@@ -104,7 +104,8 @@ def check_submission(dream, tmp, export_dir, flags):
         result = json.load(f)
     where = "check-submission (%s)" % result["simulator"]
     check(result["script_ok"], where + ": the script failed")
-    check(result["verdict"] == "clean", where + ": debug() verdict " + result["verdict"] + ":\n" + result["debug_text"])
+    check(result["verdict"] == "clean" and result["debug_verdict"] == "clean",
+          where + ": verdict " + result["verdict"] + ", debug() " + result["debug_verdict"] + ":\n" + result["debug_text"])
     check(not result["python_warnings"], where + ": Python warnings: %s" % result["python_warnings"])
     check(result["complete"], where + ": the run did not complete")
     # What the lab would return, imported: what dream calibrate reads.

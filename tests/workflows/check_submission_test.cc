@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -28,6 +29,7 @@ struct FakeRunner {
   bool writes_result = true;
   CheckSubmission::ScriptRun ends;
   std::vector<std::string> argv;  ///< what it was started with
+  std::function<void(int64_t, double*)> perturb;  ///< changes the lab's rows (PerfectLabResult's)
 };
 
 class CheckSubmissionTest : public ::testing::Test {
@@ -51,7 +53,8 @@ class CheckSubmissionTest : public ::testing::Test {
       };
       if (runner_.writes_result) {
         bridge::testing::WriteText(at("--workdir") + "/" + bridge::SubmissionFiles::kResult,
-                                   bridge::EncodeNpy(bridge::testing::PerfectLabResult(testing::SimulatedExport())));
+                                   bridge::EncodeNpy(bridge::testing::PerfectLabResult(testing::SimulatedExport(),
+                                                                                       runner_.perturb)));
       }
       if (!runner_.report.is_null()) bridge::testing::WriteText(at("--report"), runner_.report.dump());
       return runner_.ends;
@@ -131,6 +134,40 @@ TEST_F(CheckSubmissionTest, DebugsVerdictIsReadAsAVerdict) {
   runner_.report["verdict"] = "warning";
   EXPECT_EQ(Check(Options()).outcome, Outcome::kPassed);
   EXPECT_THAT(out_.str(), HasSubstr("WARNING: the script ran, but with debug() warnings"));
+}
+
+// Issue 33, one judge: debug() saw nothing wrong, but the lab run misses its
+// goal: check-submission says not ready, as dream import of the same result
+// does, in its outcome (exit 5), check.json and what it prints.
+TEST_F(CheckSubmissionTest, ALabRunThatMissesItsGoalIsNotReadyAsDreamImportSays) {
+  runner_.report = Passed();
+  const int64_t steps = bridge::ReadNpyFile(testing::SimulatedExport() + "/upload/" +
+                                            bridge::SubmissionFiles::kReferenceCommands).shape[0];
+  constexpr int robots = 8;  // the shipped go_to_goal
+  // Every robot drifts 6 cm to the right over the run: no collision, no jump,
+  // but none ends within go_to_goal's 2 cm of its goal.
+  runner_.perturb = [steps](int64_t k, double* row) {
+    for (int robot = 0; robot < robots; ++robot) {
+      row[bridge::ResultLayout::X(robots, robot)] += 0.06 * static_cast<double>(k) / static_cast<double>(steps);
+    }
+  };
+  const CheckSubmission::Result result = Check(Options());
+  EXPECT_EQ(result.outcome, Outcome::kNotReady) << out_.str();
+  const nlohmann::json check = nlohmann::json::parse(files::ReadFileText(out_dir_ + "/check.json"));
+  EXPECT_EQ(check["verdict"], "not_ready");
+  EXPECT_EQ(check["debug_verdict"], "clean");
+  EXPECT_EQ(check["goal"]["met"], false);
+  ASSERT_FALSE(check["verdict_reasons"].empty());
+  EXPECT_EQ(check["verdict_reasons"][0]["rule"], "goal");
+  const nlohmann::json summary = nlohmann::json::parse(files::ReadFileText(out_dir_ + "/summary.json"));
+  EXPECT_EQ(summary["verdict"], check["verdict"]);
+  EXPECT_THAT(out_.str(), HasSubstr("goal: missed"));
+  EXPECT_THAT(out_.str(), HasSubstr("verdict: not_ready"));
+
+  runner_.perturb = nullptr;
+  const CheckSubmission::Result passed = Check(Options());
+  EXPECT_EQ(passed.outcome, Outcome::kPassed);
+  EXPECT_THAT(out_.str(), HasSubstr("goal: met at step"));
 }
 
 TEST_F(CheckSubmissionTest, AWrongSimulatorFolderIsNamedBeforeAnyFolderIsMade) {

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "hosted_agents.h"
+#include "dream/session/run_exit_code.h"
 #include "command_line.h"
 #include "calibration_export.h"
 #include "commands.h"
@@ -92,11 +93,7 @@ int RunImport(const ImportArgs& args) {
   if (!imported.imported.lab.complete || !imported.report.summary_written || imported.report.picture_failed) {
     return kExitRunFailed;
   }
-  switch (imported.verdict()) {
-    case world::RunVerdict::kRejected: return kExitRejected;
-    case world::RunVerdict::kNotReady: return kExitNotReady;
-    default: return kExitOk;
-  }
+  return session::ExitCodeOf(imported.verdict());
 }
 
 int RunCompare(const CompareArgs& args) {
@@ -174,7 +171,7 @@ LabReplayOutcome ReplayLabRun(const LabReplayArgs& args, std::ostream* report) {
                      config::WorldModeName(run.config().sim.mode) + ") on " + bus.url() +
                      (in_process ? " with the agents in this process" : "; start the agents with dream agent");
   // The same recording, summary, verdict, report and picture as every run.
-  outcome.exit_code = ExitCodeFor(run.Run(bus, {out_dir, files::ReadFileText(config_in)}, world));
+  outcome.exit_code = session::ExitCodeOf(run.Run(bus, {out_dir, files::ReadFileText(config_in)}, world));
   return outcome;
 }
 
@@ -227,6 +224,7 @@ int RunCheckSubmission(const CheckSubmissionArgs& args) {
   if (!result.error.empty()) std::cerr << "dream check-submission: " << result.error << "\n";
   switch (result.outcome) {
     case Outcome::kPassed: return kExitOk;
+    case Outcome::kNotReady:
     case Outcome::kControllersDiffer: return kExitNotReady;
     case Outcome::kRejected:
     case Outcome::kStartupTimedOut: return kExitRejected;

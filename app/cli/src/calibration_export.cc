@@ -1,5 +1,6 @@
 // dream export --calibration: the calibration drive run and exported (docs/calibration.md).
 #include "calibration_export.h"
+#include "dream/session/run_exit_code.h"
 
 #include <filesystem>
 #include <iostream>
@@ -72,7 +73,7 @@ int RunCalibrationExport(const ExportArgs& args, bridge::ExportOptions options) 
     const HostedAgents agents(bus, run.config(), ids, run.factory(),
                               {run.config().sim.agent_timeout_s, run.config().sim.start_timeout_s, 0.0});
     const session::RunResult result = run.Run(bus, {run_dir, config_text});
-    run_code = ExitCodeFor(result);
+    run_code = session::ExitCodeOf(result);
     clean = result.judgement.verdict() == world::RunVerdict::kClean;
   }
   // Clean, not merely accepted: the lab must run the program as it is.

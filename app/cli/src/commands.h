@@ -5,21 +5,21 @@
 #include <string>
 #include <vector>
 
+#include "dream/session/exit_code.h"
+
 namespace dream::cli {
 
 class CommandLine;
 
-/// Exit codes scripts can rely on (also in `dream --help`).
-enum ExitCode : int {
-  kExitOk = 0,              ///< the run finished; the Robotarium would accept it
-  kExitInputError = 1,      ///< bad config, file or argument; nothing was run
-  kExitUsage = 2,           ///< unknown subcommand or option
-  kExitRejected = 3,        ///< the run finished but has hard errors (the Robotarium would reject it)
-  kExitRunFailed = 4,       ///< the run did not finish (agents missing, lost world, I/O error) or a controller failed
-  kExitNotReady = 5,        ///< the run finished and the lab's checks pass, but it is not ready: robots lost, command
-                            ///< conflicts, bad messages, its goal missed (summary.json verdict_reasons)
-  kExitInterrupted = 130,   ///< Ctrl-C / SIGTERM; outputs are complete up to the interruption
-};
+// Exit codes: the one list every command uses (dream::session::ExitCode).
+using session::ExitCode;
+using session::kExitInputError;
+using session::kExitInterrupted;
+using session::kExitNotReady;
+using session::kExitOk;
+using session::kExitRejected;
+using session::kExitRunFailed;
+using session::kExitUsage;
 
 /// Set by SIGINT/SIGTERM; every loop polls it.
 std::atomic<bool>& StopFlag();

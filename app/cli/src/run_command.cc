@@ -4,6 +4,7 @@
 #include <numeric>
 
 #include "hosted_agents.h"
+#include "dream/session/run_exit_code.h"
 #include "command_line.h"
 #include "commands.h"
 #include "dream/lcm/lcm_bus.h"
@@ -29,14 +30,14 @@ int RunEmbedded(const RunArgs& args) {
   if (args.view) view = std::make_unique<RunView>(bus, config, args.view_bind, args.view_port, args.view_fps);
   const session::RunResult result = run->Run(bus, {out_dir, ConfigTextForRunFolder(args, config)});
   if (view) view->ShowEndOf(out_dir);
-  return ExitCodeFor(result);
+  return session::ExitCodeOf(result);
 }
 
 int RunSimOnly(const RunArgs& args) {
   const std::unique_ptr<session::RunSession> run = OpenRunSession(args);
   lcm::LcmBus bus(lcm::ResolveLcmUrl(args.lcm_url));
   const std::string out_dir = PrepareOutputDir(args, run->config());
-  return ExitCodeFor(run->Run(bus, {out_dir, ConfigTextForRunFolder(args, run->config())}));
+  return session::ExitCodeOf(run->Run(bus, {out_dir, ConfigTextForRunFolder(args, run->config())}));
 }
 
 void DeclareRunCommand(CommandLine& line) {

@@ -50,39 +50,4 @@ std::string PrepareOutputDir(const RunArgs& args, const run_config::RunConfig& c
   return RunFolderChoice(args.out_dir, "runs/" + config.name, args.overwrite).dir();
 }
 
-int ExitCodeFor(const session::RunResult& result) {
-  if (!result.summary_written) return kExitRunFailed;  // the session said which output, and why
-  const int exit_code = ExitCodeFor(result.outcome, result.judgement);
-  return result.picture_failed ? kExitRunFailed : exit_code;
-}
-
-int ExitCodeFor(const node::RunOutcome& outcome, const world::RunJudgement& judgement) {
-  const int ended = ExitCodeFor(outcome, judgement.report());
-  if (ended != kExitOk && ended != kExitRejected) return ended;  // did not finish, interrupted
-  // A robot whose controller failed makes the run fail, whatever the rest did.
-  if (!outcome.robot_faults.empty()) return kExitRunFailed;
-  switch (judgement.verdict()) {
-    case world::RunVerdict::kRejected:
-      return kExitRejected;
-    case world::RunVerdict::kNotReady:
-      return kExitNotReady;
-    case world::RunVerdict::kClean:
-    case world::RunVerdict::kWarning:
-      break;
-  }
-  return kExitOk;
-}
-
-int ExitCodeFor(const node::RunOutcome& outcome, const world::RunReport& report) {
-  switch (outcome.end) {
-    case node::RunOutcome::End::kFinished:
-      return report.verdict == world::RunVerdict::kRejected ? kExitRejected : kExitOk;
-    case node::RunOutcome::End::kInterrupted:
-      return kExitInterrupted;
-    default:
-      spdlog::error("{}", outcome.reason);
-      return kExitRunFailed;
-  }
-}
-
 }  // namespace dream::cli

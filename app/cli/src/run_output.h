@@ -34,14 +34,4 @@ std::string ConfigTextForRunFolder(const RunArgs& args, const run_config::RunCon
 /// --overwrite. Created if missing. @throws std::runtime_error naming the folder.
 std::string PrepareOutputDir(const RunArgs& args, const run_config::RunConfig& config);
 
-/// The process exit code of a run (see ExitCode): kExitRunFailed when an
-/// output could not be written, else as ExitCodeFor(outcome, judgement).
-int ExitCodeFor(const session::RunResult& result);
-/// 130 interrupted, 4 did not finish or a controller failed, 3 rejected,
-/// 5 not ready (any reason of the judgement), else 0.
-int ExitCodeFor(const node::RunOutcome& outcome, const world::RunJudgement& judgement);
-/// How the run ended and what the Robotarium would make of its poses; logs
-/// the reason when the run did not finish.
-int ExitCodeFor(const node::RunOutcome& outcome, const world::RunReport& report);
-
 }  // namespace dream::cli

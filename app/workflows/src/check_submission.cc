@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include <cstdio>
+#include <algorithm>
 #include <filesystem>
 #include <stdexcept>
 #include <utility>
@@ -11,6 +12,7 @@
 #include "dream/bridge/submission_format.h"
 #include "dream/files/file_text.h"
 #include "dream/files/json_text.h"
+#include "dream/node/run_summary.h"
 #include "dream/world/run_verdict.h"
 #include "dream/workflows/import_workflow.h"
 
@@ -38,6 +40,29 @@ void RemoveEarlierReplay(const std::string& dir) {
   if (!holds_run) return;
   fs::remove_all(dir, error);
   if (error) throw std::runtime_error(dir + ": cannot remove an earlier check's replay: " + error.message());
+}
+
+/// summary.json's goal of the imported run ({} when it cannot be read).
+nlohmann::json GoalOf(const std::string& summary_path) {
+  try {
+    const nlohmann::json summary = nlohmann::json::parse(files::ReadFileText(summary_path));
+    return summary.contains("goal") && summary["goal"].is_object() ? summary["goal"] : nlohmann::json::object();
+  } catch (const std::exception& error) {
+    spdlog::warn("{}: cannot read the imported run's goal: {}", summary_path, error.what());
+    return nlohmann::json::object();
+  }
+}
+
+/// One line for a run's goal: met (and when), missed (and how), or none declared.
+std::string GoalText(const nlohmann::json& goal) {
+  const std::string detail = goal.value("detail", std::string());
+  if (!goal.value("has_criterion", false)) return detail.empty() ? "none declared" : detail;
+  if (goal.value("met", false)) {
+    const long long step = goal.value("completion_step", -1LL);
+    return "met" + (step >= 0 ? " at step " + std::to_string(step) : std::string()) +
+           (detail.empty() ? "" : " (" + detail + ")");
+  }
+  return "missed" + (detail.empty() ? std::string() : " (" + detail + ")");
 }
 
 }  // namespace
@@ -169,18 +194,13 @@ CheckSubmission::Result CheckSubmission::Run() const {
   if (std::optional<Result> ended = RunRunner(out, workdir, &report)) return *ended;
   const std::optional<world::RunVerdict> verdict = world::ParseRunVerdict(report.value("verdict", "unknown"));
   const std::vector<std::string> warnings = report.value("warnings", std::vector<std::string>{});
-  out_ << "debug() says:\n" << report.value("debug_text", std::string());
-  // Its "took approximately 99.00 real seconds" is the lab's time, not this check's.
-  out_ << "(debug()'s real seconds are the time on the lab's robots: iterations x 0.033 s)\n";
-  for (const std::string& warning : warnings) out_ << "WARNING (Python): " << warning << "\n";
+  PrintDebugReport(report, warnings);
 
-  const ImportWorkflow importer(out_);
-  ImportWorkflow::Options import;
-  import.result = (fs::path(workdir) / bridge::SubmissionFiles::kResult).string();
-  import.export_dir = options_.export_dir;
-  import.out_dir = out.dir();
-  import.python_runtime_dir = options_.python_runtime_dir;
-  const ImportWorkflow::Result imported = importer.Import(import);
+  const ImportWorkflow::Result imported = ImportLabRun(out.dir(), workdir);
+  // One verdict: the imported run judged as every run is (the lab verifier's
+  // rules, the goal, the run's state), and no better than debug() said.
+  const world::RunVerdict one_verdict = std::max(verdict.value_or(world::RunVerdict::kRejected), imported.verdict());
+  const nlohmann::json goal = GoalOf(imported.summary_path);
 
   Result result;
   result.dir = out.dir();
@@ -188,7 +208,10 @@ CheckSubmission::Result CheckSubmission::Run() const {
   check["simulator"] = report.value("simulator", "?");
   check["simulator_path"] = report.value("simulator_path", std::string());
   check["script_ok"] = true;
-  check["verdict"] = report.value("verdict", "unknown");
+  node::SetSummaryVerdict(&check, imported.report.judgement);  // the reasons, as summary.json has them
+  check["verdict"] = world::RunVerdictName(one_verdict);
+  check["debug_verdict"] = report.value("verdict", "unknown");
+  check["goal"] = goal;
   check["python_warnings"] = warnings;
   check["debug_text"] = report.value("debug_text", std::string());
   check["settle_steps"] = imported.imported.lab.settle_steps;
@@ -200,7 +223,7 @@ CheckSubmission::Result CheckSubmission::Run() const {
   }
   out.WriteFile("check.json", files::JsonText(check) + "\n");
   out_ << "written: " << out.PathOf("check.json") << "\n";
-  if (verdict == world::RunVerdict::kRejected) {
+  if (one_verdict == world::RunVerdict::kRejected) {
     result.outcome = Outcome::kRejected;
     return result;
   }
@@ -214,8 +237,31 @@ CheckSubmission::Result CheckSubmission::Run() const {
     result.outcome = Outcome::kIncomplete;
   } else if (replayed.agreement && !replayed.agreement->Same()) {
     result.outcome = Outcome::kControllersDiffer;
+  } else if (one_verdict == world::RunVerdict::kNotReady) {
+    result.outcome = Outcome::kNotReady;
   }
   return result;
+}
+
+void CheckSubmission::PrintDebugReport(const nlohmann::json& report, const std::vector<std::string>& warnings) const {
+  out_ << "debug() says:\n" << report.value("debug_text", std::string());
+  // Its "took approximately 99.00 real seconds" is the lab's time, not this check's.
+  out_ << "(debug()'s real seconds are the time on the lab's robots: iterations x 0.033 s)\n";
+  for (const std::string& warning : warnings) out_ << "WARNING (Python): " << warning << "\n";
+}
+
+ImportWorkflow::Result CheckSubmission::ImportLabRun(const std::string& out_dir, const std::string& workdir) const {
+  const ImportWorkflow importer(out_);
+  ImportWorkflow::Options import;
+  import.result = (fs::path(workdir) / bridge::SubmissionFiles::kResult).string();
+  import.export_dir = options_.export_dir;
+  import.out_dir = out_dir;
+  import.python_runtime_dir = options_.python_runtime_dir;
+  ImportWorkflow::Result imported = importer.Import(import);
+  out_ << "\nthe lab run as dream import judges it:\n";
+  importer.PrintVerdict(imported);
+  out_ << "goal: " << GoalText(GoalOf(imported.summary_path)) << "\n";
+  return imported;
 }
 
 /// A controller-strategy submission ran the controllers themselves: replays

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "dream/files/atomic_file.h"
+#include "dream/session/run_exit_code.h"
 #include "dream/workflows/seed_list.h"
 #include "replace_file.h"
 
@@ -221,7 +222,7 @@ std::optional<RunExit> SweepFolder::ReadRunExit(const std::string& run_name) con
 
 SweepRunResult SweepFolder::JudgeRun(const SweepPlan::Run& run, const RunExit& exit) const {
   const std::string dir = RunDir(run.name);
-  const bool failed = exit.exit_code != 0 && exit.exit_code != 3 && exit.exit_code != 130;
+  const bool failed = !session::RanToAVerdict(exit.exit_code) && exit.exit_code != session::kExitInterrupted;
   const std::string hint = !exit.problem.empty() ? exit.problem
                            : failed              ? LastErrorLine(dir + "/output.txt")
                                                  : std::string();

@@ -1,5 +1,6 @@
 #include "dream/workflows/sweep_run_result.h"
 
+#include "dream/session/run_exit_code.h"
 #include "dream/world/printf_text.h"
 
 namespace dream::workflows {
@@ -52,12 +53,12 @@ SweepRunResult SweepRunResult::Judge(const SweepPlan::Run& run, int exit_code, b
   const std::string hint = failure_hint.empty() ? std::string() : ": " + failure_hint;
   if (timed_out) {
     result.problem = "timed out after " + world::PrintfText("%.0f", wall_time_s) + " s";
-  } else if (exit_code == 130) {
+  } else if (exit_code == session::kExitInterrupted) {
     result.status = Status::kInterrupted;
     result.problem = "interrupted";
   } else if (exit_code < 0) {
     result.problem = failure_hint.empty() ? std::string("did not start") : failure_hint;
-  } else if (exit_code != 0 && exit_code != 3 && exit_code != 5) {
+  } else if (!session::RanToAVerdict(exit_code)) {
     // dream run: 1 config, 4 did not finish (3 rejected, 5 not ready: it ran); above 128 a signal killed it.
     result.problem = (exit_code > 128 ? "killed by signal " + std::to_string(exit_code - 128)
                                       : "exit " + std::to_string(exit_code)) +

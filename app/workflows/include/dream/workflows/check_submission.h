@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "dream/workflows/import_workflow.h"
 #include "dream/bridge/command_agreement.h"
 #include "dream/bridge/lab_import.h"
 #include "dream/files/output_folder.h"
@@ -65,6 +66,7 @@ class CheckSubmission {
 
   enum class Outcome {
     kPassed,               ///< the script ran to its end and the lab run was imported
+    kNotReady,             ///< the imported run's verdict is not_ready (its goal missed, ...), as dream import says
     kControllersDiffer,    ///< the controllers decided differently on the lab's poses (not ready)
     kIncomplete,           ///< the script stopped before its last step
     kRejected,             ///< debug() rejected the run
@@ -97,6 +99,9 @@ class CheckSubmission {
   std::optional<Result> RunRunner(const files::OutputFolder& out, const std::string& workdir,
                                   nlohmann::json* report) const;
   void CompareWithRun(const std::string& run_dir, const std::string& dir, nlohmann::ordered_json* check) const;
+  void PrintDebugReport(const nlohmann::json& report, const std::vector<std::string>& warnings) const;
+  /// The lab's result imported into `out_dir` (dream import's run), its verdict and goal printed.
+  ImportWorkflow::Result ImportLabRun(const std::string& out_dir, const std::string& workdir) const;
   nlohmann::ordered_json ControllersOnLabPoses(const files::OutputFolder& out, Replay* replayed) const;
   void PrintAgreement(const bridge::CommandAgreement& agreement, const std::string& replay_dir) const;
 
