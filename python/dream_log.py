@@ -182,6 +182,9 @@ class Run:
     channels     {channel: events} for the whole log
     summary      summary.json of the run folder as a dict, or None when there is none
     log_path     the log file read
+    run_id       the run the log is of; a recording of the bus (lcm-logger) is read as the run's
+                 own log: resends counts the world's resends of a step left out, other_run_ids
+                 the other worlds heard (a `dream sim` idling beside the run), left out
     """
 
     def __init__(self):
@@ -199,6 +202,9 @@ class Run:
         self.obstacles = []
         self.radio_counts = {}
         self.channels = {}
+        self.run_id = 0
+        self.resends = 0          # the world's resends of a step left out (an lcm-logger recording has them)
+        self.other_run_ids = []   # other worlds heard in the log, left out
         self.summary = None
 
     @property
@@ -221,6 +227,27 @@ class Run:
 STATUS_DTYPE = [("step", "i8"), ("t_s", "f8"), ("state", "i1"), ("boundary_errors", "i8"),
                 ("collision_errors", "i8"), ("actuator_errors", "i8"), ("obstacle_collisions", "i8"),
                 ("rejected_commands", "i8"), ("num_lost", "i4")]
+
+
+def _followed_run(poses_rows):
+    """The rows of the run a log is of, with the world's resends left out.
+
+    A recording of the bus (lcm-logger) holds the world's resends of a step (the same message
+    again while it waits for answers) and maybe a second world's messages (another run id, such
+    as a `dream sim` waiting beside the run). As RunLog in C++: each run id's rows in log order,
+    a row equal to the one before it dropped; the run with the most steps is the log's, the first
+    heard on a tie. Returns (rows, run_id, resends, other_run_ids).
+    """
+    by_run = {}
+    resends = {}
+    for row in poses_rows:
+        rows = by_run.setdefault(row[8], [])
+        if rows and rows[-1][:7] == row[:7]:
+            resends[row[8]] = resends.get(row[8], 0) + 1
+            continue
+        rows.append(row)
+    run_id = max(by_run, key=lambda rid: len(by_run[rid]))  # max keeps the first heard on a tie
+    return by_run[run_id], run_id, resends.get(run_id, 0), [rid for rid in by_run if rid != run_id]
 
 
 def load(path, types_dir=None):
@@ -256,21 +283,21 @@ def load(path, types_dir=None):
         channels[channel] = channels.get(channel, 0) + 1
         if channel == POSES_CHANNEL:
             m = decode(dream.robot_poses_t, event, index)
-            poses_rows.append((m.step, m.utime, m.x, m.y, m.theta, m.v, m.w, index))
+            poses_rows.append((m.step, m.utime, m.x, m.y, m.theta, m.v, m.w, index, m.run_id))
         elif channel == STATUS_CHANNEL:
             m = decode(dream.run_status_t, event, index)
-            status_rows.append((m.step, m.utime * 1e-6, m.state, m.boundary_errors, m.collision_errors,
-                                m.actuator_errors, m.obstacle_collisions, m.rejected_commands, m.num_lost))
-            final_status = m
+            status_rows.append((m.run_id, (m.step, m.utime * 1e-6, m.state, m.boundary_errors, m.collision_errors,
+                                           m.actuator_errors, m.obstacle_collisions, m.rejected_commands, m.num_lost),
+                                m))
         elif channel == OBSTACLES_CHANNEL:
             m = decode(dream.obstacles_t, event, index)
-            obstacles_by_step.setdefault(m.step, [(o.id, o.center_x, o.center_y, o.width, o.height, o.vx, o.vy)
-                                                  for o in m.obstacles])
+            obstacles_by_step.setdefault((m.run_id, m.step), [(o.id, o.center_x, o.center_y, o.width, o.height,
+                                                               o.vx, o.vy) for o in m.obstacles])
         else:
             match = _COMMAND_CHANNEL.fullmatch(channel)
             if match:
                 m = decode(dream.velocity_command_t, event, index)
-                commands.setdefault((m.step, int(match.group(1))), (m.v, m.w, m.done))
+                commands.setdefault((m.run_id, m.step, int(match.group(1))), (m.v, m.w, m.done))
                 continue
             match = _RADIO_CHANNEL.fullmatch(channel)
             if match:
@@ -280,16 +307,27 @@ def load(path, types_dir=None):
     if not poses_rows:
         raise RunLogError(f"{log_path}: no {POSES_CHANNEL} message in {sum(channels.values())} events: "
                           f"not a DREAM run log, or the run never published its first step")
+    poses_rows, run_id, resends, other_run_ids = _followed_run(poses_rows)
     num_robots = len(poses_rows[0][2])
     previous_step = None
-    for step, _, x, _, _, _, _, index in poses_rows:
+    for step, _, x, _, _, _, _, index, _ in poses_rows:
         if len(x) != num_robots:
             raise RunLogError(f"{log_path}: event {index}: {POSES_CHANNEL} step {step} has {len(x)} robots, "
                               f"step {poses_rows[0][0]} had {num_robots}")
+        if previous_step is not None and step == previous_step:
+            raise RunLogError(f"{log_path}: event {index}: two different {POSES_CHANNEL} for step {step} of one run "
+                              f"(a resend is the same message again)")
         if previous_step is not None and step != previous_step + 1:
             raise RunLogError(f"{log_path}: event {index}: {POSES_CHANNEL} step {step} follows step "
                               f"{previous_step}; expected consecutive steps")
         previous_step = step
+    statuses = [(row, m) for rid, row, m in status_rows if rid == run_id]
+    # The world repeats its last status so agents hear it: a resend, once.
+    statuses = [item for i, item in enumerate(statuses) if i == 0 or item[0] != statuses[i - 1][0]]
+    final_status = statuses[-1][1] if statuses else None
+    status_rows = [row for row, _ in statuses]
+    obstacles_by_step = {step: rows for (rid, step), rows in obstacles_by_step.items() if rid == run_id}
+    commands = {(step, robot): value for (rid, step, robot), value in commands.items() if rid == run_id}
 
     run = Run()
     run.log_path = log_path
@@ -315,6 +353,9 @@ def load(path, types_dir=None):
                      if int(k) in obstacles_by_step else empty for k in run.steps]
     run.radio_counts = radio_counts
     run.channels = channels
+    run.run_id = run_id
+    run.resends = resends
+    run.other_run_ids = other_run_ids
     summary_path = os.path.join(os.path.dirname(log_path), "summary.json")
     if os.path.isfile(summary_path):
         with open(summary_path) as f:

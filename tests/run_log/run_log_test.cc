@@ -199,11 +199,17 @@ TEST(RunLogTest, ARunMustKeepItsRobots) {
   const RunLog run = RunLog::Read(changing.Write());
   EXPECT_EQ(run.num_robots(), 2);  // the most any step has
   EXPECT_EQ(run.Flaw(false), run.path() + ": DREAM_POSES at step 1 has 2 robots, earlier steps 1");
+  // The same step again, changed, is no resend (those are the same message).
   SyntheticRunLog repeated(dir / "repeated.lcmlog");
-  repeated.Poses(0, {{0, 0, 0}}).Poses(0, {{0, 0, 0}});
+  repeated.Poses(0, {{0, 0, 0}}).Poses(0, {{0, 0, 1}});
   EXPECT_EQ(RunLog::Read(repeated.Write()).Flaw(false),
             dir / "repeated.lcmlog" +
-                ": DREAM_POSES jumps from step 0 to step 0; a run log has every step once, in order");
+                ": two different DREAM_POSES for step 0 of one run; a run log has every step once (a resend is "
+                "the same message again)");
+  SyntheticRunLog backwards(dir / "backwards.lcmlog");
+  backwards.Poses(0, {{0, 0, 0}}).Poses(1, {{0, 0, 0}}).Poses(0, {{0, 0, 0}});
+  EXPECT_EQ(RunLog::Read(backwards.Write()).Flaw(false),
+            dir / "backwards.lcmlog" + ": DREAM_POSES jumps from step 1 to step 0; a run log has every step once, in order");
 }
 
 TEST(RunLogTest, AnEmptyLogHasNoPosesAndIsNoRun) {
@@ -226,6 +232,89 @@ TEST(RunLogTest, AMissingOrForeignFileIsAnErrorNamingIt) {
   const std::string error = ReadError(text);
   EXPECT_TRUE(Contains(error, text)) << error;
   EXPECT_TRUE(Contains(error, "not an LCM log")) << error;
+}
+
+// Issue 37 item 8: lcm-logger's recording of a live lockstep run holds the
+// world's resends of a step (the same message again while it waits for
+// answers); they are that step, once, as in the run's own log.
+TEST(RunLogTest, ARecordingsResendsAreTheStepOnce) {
+  TempFolder dir;
+  SyntheticRunLog log(dir / "recorded.lcmlog");
+  log.Status(0, run_status_t::WAITING_FOR_AGENTS, {}, "")
+      .Poses(0, {{0, 0, 0}})
+      .Poses(0, {{0, 0, 0}})  // resent: an agent was late
+      .Poses(0, {{0, 0, 0}})
+      .Poses(1, {{0.1, 0, 0}})
+      .Poses(1, {{0.1, 0, 0}})
+      .Poses(2, {{0.2, 0, 0}})
+      .Status(2, run_status_t::FINISHED, {}, "done");
+  const RunLog run = RunLog::Read(log.Write());
+  EXPECT_FALSE(run.Flaw(true).has_value()) << *run.Flaw(true);
+  ASSERT_EQ(run.poses().size(), 3u);
+  EXPECT_EQ(run.last_step(), 2);
+  EXPECT_EQ(run.resends(), 3);
+  EXPECT_TRUE(run.other_run_ids().empty());
+}
+
+TEST(RunLogTest, TwoDifferentPosesForOneStepAreAFlawNotAResend) {
+  TempFolder dir;
+  SyntheticRunLog log(dir / "forged.lcmlog");
+  log.Poses(0, {{0, 0, 0}}).Poses(1, {{0.1, 0, 0}}).Poses(1, {{0.5, 0, 0}}).Poses(2, {{0.2, 0, 0}});
+  const RunLog run = RunLog::Read(log.Write());
+  ASSERT_TRUE(run.Flaw(false).has_value());
+  EXPECT_TRUE(Contains(*run.Flaw(false), "two different DREAM_POSES for step 1")) << *run.Flaw(false);
+  EXPECT_TRUE(Contains(*run.Flaw(false), "recorded.lcmlog") || Contains(*run.Flaw(false), "forged.lcmlog"));
+}
+
+// A second world on the bus while it was recorded (a `dream sim` waiting for
+// agents, resending its step 0): the log is of the run, the other world's
+// poses, obstacles and status are left out and named.
+TEST(RunLogTest, ASecondWorldInARecordingIsLeftOutAndNamed) {
+  constexpr int64_t kRun = 11;
+  constexpr int64_t kIdle = 22;
+  auto poses = [](int64_t run_id, int64_t step, double x) {
+    robot_poses_t message{};
+    message.utime = step * 33000;
+    message.step = step;
+    message.run_id = run_id;
+    message.num_robots = 1;
+    message.x = {x};
+    message.y = {0.0};
+    message.theta = {0.0};
+    message.v = {0.0};
+    message.w = {0.0};
+    return message;
+  };
+  auto status = [](int64_t run_id, int64_t step, int8_t state) {
+    run_status_t message{};
+    message.step = step;
+    message.run_id = run_id;
+    message.state = state;
+    return message;
+  };
+  obstacles_t idle_obstacles{};
+  idle_obstacles.run_id = kIdle;
+  idle_obstacles.num_obstacles = 1;
+  idle_obstacles.obstacles = {Box(0, 1.0, 1.0, 0.1, 0.1)};
+  TempFolder dir;
+  SyntheticRunLog log(dir / "two_worlds.lcmlog");
+  log.MessageOn("DREAM_POSES", poses(kIdle, 0, -1.0)).MessageOn("DREAM_OBSTACLES", idle_obstacles);
+  for (int64_t step = 0; step < 5; ++step) {
+    log.MessageOn("DREAM_POSES", poses(kRun, step, 0.1 * static_cast<double>(step)));
+    log.MessageOn("DREAM_POSES", poses(kIdle, 0, -1.0));  // the idle world resends its step 0
+    log.MessageOn("DREAM_STATUS", status(kIdle, 0, run_status_t::WAITING_FOR_AGENTS));
+  }
+  log.MessageOn("DREAM_STATUS", status(kRun, 4, run_status_t::FINISHED));
+  log.MessageOn("DREAM_STATUS", status(kIdle, 0, run_status_t::WAITING_FOR_AGENTS));
+  const RunLog run = RunLog::Read(log.Write());
+  EXPECT_FALSE(run.Flaw(true).has_value()) << *run.Flaw(true);
+  EXPECT_EQ(run.run_id(), kRun);
+  ASSERT_EQ(run.poses().size(), 5u);
+  EXPECT_DOUBLE_EQ(run.poses().back().x[0], 0.4);
+  EXPECT_EQ(run.other_run_ids(), std::vector<int64_t>{kIdle});
+  EXPECT_TRUE(run.obstacles().empty());
+  ASSERT_TRUE(run.last_status().has_value());
+  EXPECT_EQ(run.last_status()->state, run_status_t::FINISHED);
 }
 
 }  // namespace

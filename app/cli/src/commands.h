@@ -91,7 +91,7 @@ int RunLaunch(const RunArgs& args);
 int RunLogInfo(const std::string& path);
 /// Compares the payloads of each channel matching `channel_regex`, in order
 /// (timestamps ignored). Exit 0 when equal.
-int RunLogDiff(const std::string& a, const std::string& b, const std::string& channel_regex);
+int RunLogDiff(const std::string& a, const std::string& b, const std::string& channel_regex, bool raw = false);
 /// Prints each decoded DREAM_* message on channels matching `channel_regex`
 /// as one JSON object per line (at most `limit` when > 0).
 int RunLogEcho(const std::string& path, const std::string& channel_regex, long long limit);

@@ -24,12 +24,19 @@ namespace {
 
 using Payloads = std::map<std::string, std::vector<std::vector<uint8_t>>>;
 
-Payloads PayloadsByChannel(const std::string& path, const std::regex& channels) {
+/// Each channel's messages in log order. Unless `raw`, a message equal to the
+/// one before it on its channel is a resend and left out: a recording of the
+/// bus (lcm-logger) holds the world's resends of a step and the agents'
+/// answers to them, a run's own log holds each message once, and both hold
+/// the same steps (no two different messages of a run are byte for byte the same).
+Payloads PayloadsByChannel(const std::string& path, const std::regex& channels, bool raw) {
   Payloads payloads;
   for (lcm::LogRecord& record : lcm::LogReader::ReadAll(RunLogPath(path))) {
     if (!std::regex_match(record.channel, channels)) continue;
     lcm::ClearRandomIds(&record.data);  // every run and agent has its own id; the rest must match
-    payloads[record.channel].push_back(std::move(record.data));
+    std::vector<std::vector<uint8_t>>& messages = payloads[record.channel];
+    if (!raw && !messages.empty() && messages.back() == record.data) continue;
+    messages.push_back(std::move(record.data));
   }
   return payloads;
 }
@@ -61,6 +68,7 @@ struct LogDiffArgs {
   std::string first_log;
   std::string second_log;
   std::string channel_regex = ".*";
+  bool raw = false;
 };
 
 }  // namespace
@@ -117,13 +125,13 @@ constexpr int kLogsNotCompared = 2;
 
 }  // namespace
 
-int RunLogDiff(const std::string& a, const std::string& b, const std::string& channel_regex) {
+int RunLogDiff(const std::string& a, const std::string& b, const std::string& channel_regex, bool raw) {
   Payloads left;
   Payloads right;
   try {
     const std::regex channels = ChannelRegex(channel_regex, "--channels");
-    left = PayloadsByChannel(a, channels);
-    right = PayloadsByChannel(b, channels);
+    left = PayloadsByChannel(a, channels, raw);
+    right = PayloadsByChannel(b, channels, raw);
   } catch (const std::exception& e) {  // a missing or damaged log, a bad regex
     std::cerr << "dream: " << e.what() << '\n';
     return kLogsNotCompared;
@@ -243,12 +251,16 @@ void DeclareLogCommand(CommandLine& line) {
       "diff",
       "Compare two logs message by message, per channel, ignoring timestamps, run ids and agent ids\n"
       "(every run and agent process draws its own). Says where each channel first differs (step, robot, field).\n"
+      "A message equal to the one before it on its channel is a resend and counted once, so an lcm-logger\n"
+      "recording of a live run compares equal to the run's own log (--raw: every datagram as it is).\n"
       "Exit codes as diff(1): 0 equal, 1 different, 2 not compared (a missing or damaged log, a bad --channels).\n"
       "Example: dream log diff a/run.lcmlog b/run.lcmlog --channels DREAM_POSES",
-      [](const LogDiffArgs& args) { return RunLogDiff(args.first_log, args.second_log, args.channel_regex); }, log);
+      [](const LogDiffArgs& args) { return RunLogDiff(args.first_log, args.second_log, args.channel_regex, args.raw); },
+      log);
   diff->add_option("a", diff_args->first_log, "First log (or run folder)")->required();
   diff->add_option("b", diff_args->second_log, "Second log (or run folder)")->required();
   diff->add_option("--channels", diff_args->channel_regex, "Regex of channels to compare")->capture_default_str();
+  diff->add_flag("--raw", diff_args->raw, "Compare every datagram, resends included");
 }
 
 }  // namespace dream::cli

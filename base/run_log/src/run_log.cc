@@ -8,6 +8,7 @@
 #include "dream/lcm/log_reader.h"
 #include "dream/radio_message_t.hpp"
 #include "dream/robot_fault_t.hpp"
+#include "dream/run_log/worlds_heard.h"
 
 namespace dream::run_log {
 namespace {
@@ -36,6 +37,7 @@ RunLog RunLog::Read(const std::string& path) {
   };
   std::vector<Heard> radio_heard;
   std::vector<Heard> faults_heard;
+  WorldsHeard worlds;
   // A world message that does not decode: named by its event and byte offset.
   auto undecodable = [&](std::optional<Problem>* flaw, const std::string& problem) {
     if (*flaw) return;
@@ -47,17 +49,15 @@ RunLog RunLog::Read(const std::string& path) {
     const uint8_t* data = record.data.data();
     const int size = static_cast<int>(record.data.size());
     if (record.channel == lcm::kPosesChannel) {
-      robot_poses_t& poses = log.poses_.emplace_back();
+      robot_poses_t poses;
       if (auto problem = lcm::DecodeProblem(data, size, &poses)) {
-        log.poses_.pop_back();
         undecodable(&log.world_flaw_, *problem);
         continue;
       }
-      log.num_robots_ = std::max(log.num_robots_, poses.num_robots);
-      log.CheckSequence(reader.event_index());
+      worlds.AddPoses(std::move(poses), reader.event_index());
     } else if (record.channel == "DREAM_MEASURED_POSES") {  // sim::TruePoseRecording::kMeasuredPosesChannel
-      robot_poses_t& measured = log.measured_poses_.emplace_back();
-      if (!lcm::Decode(data, size, &measured)) log.measured_poses_.pop_back();  // not the world's record: skipped
+      robot_poses_t measured;
+      if (lcm::Decode(data, size, &measured)) worlds.AddMeasured(std::move(measured));  // else not the world's record
     } else if (record.channel == lcm::kObstaclesChannel) {
       obstacles_t& obstacles = log.obstacles_.emplace_back();
       if (auto problem = lcm::DecodeProblem(data, size, &obstacles)) {
@@ -68,7 +68,7 @@ RunLog RunLog::Read(const std::string& path) {
       if (auto problem = lcm::DecodeProblem(data, size, &status)) {
         undecodable(&log.status_flaw_, *problem);
       } else {
-        log.last_status_ = std::move(status);
+        worlds.AddStatus(std::move(status));
       }
     } else if (const std::optional<int> sender = lcm::RobotIdFromChannel(record.channel, lcm::kRadioChannelPrefix)) {
       if (lcm::Decode(data, size, &radio)) radio_heard.push_back({*sender, radio.run_id, radio.step, radio.sender_id, {}});
@@ -78,7 +78,8 @@ RunLog RunLog::Read(const std::string& path) {
       }
     }
   }
-  const int64_t run_id = log.poses_.empty() ? 0 : log.poses_.front().run_id;
+  log.TakeRun(std::move(worlds));
+  const int64_t run_id = log.run_id_;
   auto of_this_run = [&](const Heard& heard) {
     return heard.run_id == run_id && heard.robot_id == heard.channel_id && heard.robot_id < log.num_robots_;
   };
@@ -95,22 +96,50 @@ RunLog RunLog::Read(const std::string& path) {
   return log;
 }
 
-void RunLog::CheckSequence(int64_t event_index) {
-  if (world_flaw_) return;  // the log stopped being whole before: nothing after counts
-  const robot_poses_t& poses = poses_.back();
-  // Whole so far, so the poses before this one are steps 0 .. expected - 1.
-  const auto expected = static_cast<int64_t>(poses_.size()) - 1;
-  std::string problem;
-  if (poses.step != expected) {
-    problem = "DREAM_POSES jumps from step " + std::to_string(expected - 1) + " to step " + std::to_string(poses.step) +
-              "; a run log has every step once, in order";
-  } else if (expected == 0 && poses.num_robots < 1) {
-    problem = "DREAM_POSES at step 0 has no robots";
-  } else if (poses.num_robots != poses_.front().num_robots) {
-    problem = "DREAM_POSES at step " + std::to_string(poses.step) + " has " + std::to_string(poses.num_robots) +
-              " robots, earlier steps " + std::to_string(poses_.front().num_robots);
+void RunLog::TakeRun(WorldsHeard worlds) {
+  WorldsHeard::World* followed = worlds.Followed();
+  if (followed == nullptr) return;
+  run_id_ = followed->run_id;
+  resends_ = followed->resends;
+  for (const WorldsHeard::World& other : worlds.worlds()) {
+    if (&other != followed) other_run_ids_.push_back(other.run_id);
   }
-  if (!problem.empty()) world_flaw_ = Problem{event_index, path_ + ": " + problem};
+  poses_ = std::move(followed->poses);
+  measured_poses_ = std::move(followed->measured);
+  last_status_ = std::move(followed->last_status);
+  for (const robot_poses_t& poses : poses_) num_robots_ = std::max(num_robots_, poses.num_robots);
+  // A foreign world's obstacles are no part of this run's.
+  obstacles_.erase(std::remove_if(obstacles_.begin(), obstacles_.end(),
+                                  [this](const obstacles_t& o) { return o.run_id != run_id_; }),
+                   obstacles_.end());
+  CheckSequence(followed->events);
+}
+
+void RunLog::CheckSequence(const std::vector<int64_t>& events) {
+  for (size_t i = 0; i < poses_.size(); ++i) {
+    // The flaw that shows first in the log is the log's.
+    if (world_flaw_ && world_flaw_->event_index < events[i]) return;
+    const robot_poses_t& poses = poses_[i];
+    // Whole so far, so the poses before this one are steps 0 .. expected - 1.
+    const auto expected = static_cast<int64_t>(i);
+    std::string problem;
+    if (poses.step == expected - 1) {
+      problem = "two different DREAM_POSES for step " + std::to_string(poses.step) +
+                " of one run; a run log has every step once (a resend is the same message again)";
+    } else if (poses.step != expected) {
+      problem = "DREAM_POSES jumps from step " + std::to_string(expected - 1) + " to step " +
+                std::to_string(poses.step) + "; a run log has every step once, in order";
+    } else if (expected == 0 && poses.num_robots < 1) {
+      problem = "DREAM_POSES at step 0 has no robots";
+    } else if (poses.num_robots != poses_.front().num_robots) {
+      problem = "DREAM_POSES at step " + std::to_string(poses.step) + " has " + std::to_string(poses.num_robots) +
+                " robots, earlier steps " + std::to_string(poses_.front().num_robots);
+    }
+    if (!problem.empty()) {
+      world_flaw_ = Problem{events[i], path_ + ": " + problem};
+      return;
+    }
+  }
 }
 
 void RunLog::Index(const std::map<int, std::string>& faults) {

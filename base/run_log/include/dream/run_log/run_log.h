@@ -13,6 +13,8 @@
 
 namespace dream::run_log {
 
+class WorldsHeard;
+
 /// One DREAM_RADIO_<n> message: robot `sender_id` broadcast at `step`.
 struct RadioSend {
   int64_t step = 0;
@@ -29,6 +31,11 @@ struct RadioSend {
 /// a foreign type on a DREAM_* channel) is left out, channels of no interest
 /// are skipped, and what keeps the log from being a whole run is kept as its
 /// Flaw(): pictures and metrics use what decodes, the bridge refuses it.
+///
+/// A recording of the bus (lcm-logger of a live run) reads as the run's own
+/// log does: the world's resends of a step are taken as that step, once
+/// (resends()), and a second world's messages (another run id) are left out
+/// (other_run_ids()): the log is of the world with the most steps.
 class RunLog {
  public:
   /// Reads the log at `path`. Every message is checked against its type's
@@ -43,6 +50,14 @@ class RunLog {
 
   /// Every DREAM_POSES message that decodes, in log order (may be empty).
   const std::vector<robot_poses_t>& poses() const { return poses_; }
+  /// The run id of poses() (0 without poses).
+  int64_t run_id() const { return run_id_; }
+  /// The world's resends of a step (the same message again) left out of
+  /// poses() and measured_poses(): none in a run's own log, many in an
+  /// lcm-logger recording of a lockstep run.
+  int64_t resends() const { return resends_; }
+  /// Other worlds heard in the log (their poses or status), left out.
+  const std::vector<int64_t>& other_run_ids() const { return other_run_ids_; }
   /// How many of poses(), from the first, the world judged: all but the last,
   /// where the run ended (the world checks a step's poses before it steps on),
   /// so whatever locates violations in a log counts what summary.json counts.
@@ -98,14 +113,19 @@ class RunLog {
     std::string text;
   };
 
-  /// Checks the pose just read (poses_.back(), event `event_index`) against
-  /// those before it, while the log is whole so far.
-  void CheckSequence(int64_t event_index);
+  /// Keeps the followed world's poses, measured poses, status and obstacles.
+  void TakeRun(WorldsHeard worlds);
+  /// Checks poses_ (poses_[i] read at event events[i]) go 0, 1, 2, ..., up to
+  /// the first flaw already found.
+  void CheckSequence(const std::vector<int64_t>& events);
   /// Orders obstacles and radio by step, finds each pose's obstacles, keeps
   /// the faults of the robots lost at the end.
   void Index(const std::map<int, std::string>& faults);
 
   std::string path_;
+  int64_t run_id_ = 0;
+  int64_t resends_ = 0;
+  std::vector<int64_t> other_run_ids_;
   std::vector<robot_poses_t> poses_;
   int num_robots_ = 0;
   std::vector<robot_poses_t> measured_poses_;
