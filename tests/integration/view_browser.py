@@ -26,7 +26,8 @@ import re
 import time
 
 from devtools import Page, chromium_argv, devtools_port
-from dreamtest import argument_parser, check, fail, import_types, main, read_events, read_summary, require_private_netns
+from dreamtest import (Udpm, argument_parser, check, fail, import_types, main, read_events, read_summary,
+                       require_private_netns)
 
 STEPS = 240
 CONFIG = f"""name: clash
@@ -53,6 +54,7 @@ controller:
     - [-0.2, -0.5]    # where robot 2 stands: robot 1 runs into it
     - [-0.2, -0.5]
 """
+FORGED_RUN_ID = 0x0BADC0FFEE
 URL = re.compile(r"open (http://127\.0\.0\.1:\d+/)")
 ARENA_X = 1.6
 
@@ -138,6 +140,36 @@ def watch_live(ctx, args, page, config, run_dir):
     return steps_seen
 
 
+def check_forged_run_after_the_end(dream, page, final):
+    """Issue 34: one DREAM_POSES of a made-up run after the end replaced the finished run on the
+    page and wiped its violations. Now the finished run stays, and the page says another world
+    is on the bus."""
+    forged = dream.robot_poses_t()
+    forged.step, forged.run_id, forged.num_robots = 0, FORGED_RUN_ID, 1
+    forged.x, forged.y, forged.theta, forged.v, forged.w = [0.5], [0.5], [0.0], [0.0], [0.0]
+    bus = Udpm()
+    line_js = ("document.getElementById('other-world').hidden ? '' : "
+               "document.getElementById('other-world').textContent")
+    # Sent again until the page says it: the line goes 2 s after the other world's last message,
+    # and a loaded machine may take longer than that to draw it.
+    deadline, told, line = time.monotonic() + 10, None, ""
+    while time.monotonic() < deadline and not (told and line):
+        bus.publish("DREAM_POSES", forged.encode())
+        time.sleep(0.1)
+        shown = state(page)
+        told = shown if shown and shown.get("otherWorld") else told
+        line = page.evaluate(line_js) or line
+    check(told is not None and line, f"the page never said another world is on the bus: {json.dumps(state(page))[:600]}")
+    check(told["otherWorld"]["run"] == f"{FORGED_RUN_ID:016x}" and told["otherWorld"]["step"] == 0,
+          f"the page names another world {told['otherWorld']}, not the forged run {FORGED_RUN_ID:016x} at step 0")
+    check(told["run"] == final["run"] and told["step"] == STEPS and told["violations"] == final["violations"],
+          f"a forged DREAM_POSES of another run changed the finished run drawn: run {told['run']} step "
+          f"{told['step']}, {len(told['violations'])} violations (was run {final['run']} step {STEPS}, "
+          f"{len(final['violations'])})")
+    check(f"{FORGED_RUN_ID:016x}" in line, f"the status line says {line!r}, not the forged run")
+    print(f"forged run after the end: the finished run stays drawn; the page says {line!r}")
+
+
 def check_live(ctx, args, dream, page, config, run_dir):
     """dream launch watched live; then the same run's log played with lcm-logplayer. Returns its poses."""
     steps_seen = watch_live(ctx, args, page, config, run_dir)
@@ -151,6 +183,7 @@ def check_live(ctx, args, dream, page, config, run_dir):
           f"the page's counts {final['counts']} are not summary.json's {summary}")
     check(final["verdict"] == "rejected", f"the page's verdict is {final['verdict']}, the run was rejected")
     print(f"live: {len(steps_seen)} steps seen, {len(final['violations'])} violations marked")
+    check_forged_run_after_the_end(dream, page, final)
 
     # A lab run, or any run log, watched by playing it on the bus.
     ctx.start("logplayer", ["lcm-logplayer", f"--lcm-url={os.environ['LCM_DEFAULT_URL']}", "-s", "4",
