@@ -246,6 +246,19 @@ TEST_F(BusFrameCollectorTest, ASecondWorldWaitingBesideTheRunIsSaidNotDrawn) {
   EXPECT_FALSE(frame_.other_world.has_value());
 }
 
+TEST_F(BusFrameCollectorTest, TheUsersChoiceOfTheOtherWorldIsDrawnFromItsNextStep) {
+  RunWithACollision();
+  PublishStep(bus_, 9, 0, {{0.5, 0.5, 0.0}}, 0, 0, run_status_t::WAITING_FOR_AGENTS);
+  EXPECT_FALSE(collector_.Follow(77));  // no such run heard
+  EXPECT_TRUE(collector_.Follow(9));
+  PublishStep(bus_, 9, 0, {{0.5, 0.5, 0.0}}, 0, 0, run_status_t::WAITING_FOR_AGENTS);  // its resend
+  ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
+  EXPECT_EQ(frame_.run_id, 9);
+  EXPECT_EQ(frame_.x_m.size(), 1u);
+  EXPECT_EQ(frame_.status.state, run_status_t::WAITING_FOR_AGENTS);
+  EXPECT_TRUE(frame_.violations.empty());
+}
+
 TEST_F(BusFrameCollectorTest, ASecondWorldGoneQuietIsNoLongerSaid) {
   RunWithACollision();
   Finish(5, 2, 1);

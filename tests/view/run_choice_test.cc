@@ -162,5 +162,21 @@ TEST_F(RunChoiceTest, AFloodOfMadeUpRunsIsBoundedAndChangesNothing) {
   EXPECT_EQ(choice_.OtherWorldHeard()->run_id, kForged + 10000);
 }
 
+TEST_F(RunChoiceTest, TheUsersChoiceIsDrawnFromItsNextPoses) {
+  for (int64_t step = 0; step < 5; ++step) {
+    Step(kRun, step);
+    Step(kSecond, 40 + step);
+  }
+  EXPECT_FALSE(choice_.Choose(kForged));  // never heard
+  EXPECT_FALSE(choice_.Choose(kRun));     // the one drawn
+  EXPECT_EQ(choice_.run_id(), kRun);
+  EXPECT_TRUE(choice_.Choose(kSecond));
+  EXPECT_EQ(Step(kRun, 5), Decision::kNewStep);  // until the chosen run's next poses
+  EXPECT_EQ(choice_.OnPoses(kSecond, 45), Decision::kStartOver);  // whatever its step, status or not
+  EXPECT_EQ(choice_.run_id(), kSecond);
+  EXPECT_EQ(Step(kRun, 6), Decision::kIgnore);
+  EXPECT_EQ(Step(kSecond, 46), Decision::kNewStep);
+}
+
 }  // namespace
 }  // namespace dream::view

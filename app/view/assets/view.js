@@ -128,11 +128,11 @@
   function otherWorldOf(f) {
     const o = f && f.other_world;
     if (!o) return null;
-    return { run: runIdText(o.run), step: o.step, state: o.state === null ? null : STATE_NAMES[o.state] || String(o.state), runs: o.runs };
+    return { run: runIdText(o.run), id: o.run, step: o.step, state: o.state === null ? null : STATE_NAMES[o.state] || String(o.state), runs: o.runs };
   }
 
   function showOtherWorld(other) {
-    const line = $("other-world");
+    const line = $("other-world"), shown = $("other-world-text");
     let text = "";
     if (other) {
       const where = `run ${other.run}${other.step >= 0 ? ` at step ${other.step}` : ""}${other.state ? `, ${other.state}` : ""}`;
@@ -140,7 +140,7 @@
                              : `Another world is on this bus (${where}); not drawn.`) +
              " This page stays on its run; a run that starts after it ends is drawn.";
     }
-    if (line.textContent !== text) line.textContent = text;  // unchanged text: no layout for the page
+    if (shown.textContent !== text) shown.textContent = text;  // unchanged text: no layout for the page
     if (line.hidden !== !other) line.hidden = !other;
     document.body.dataset.otherWorld = other ? other.run : "";
   }
@@ -357,6 +357,7 @@
 
   function connect() {
     const socket = new WebSocket(`ws://${location.host}/ws`);
+    view.socket = socket;
     socket.onopen = () => { view.connected = true; document.body.dataset.connected = "true"; $("connection").textContent = "connected"; };
     socket.onclose = () => {
       view.connected = false;
@@ -408,6 +409,11 @@
   }
 
   for (const box of document.querySelectorAll("#layers input")) box.onchange = draw;
+  // The user's choice: the server draws the other run from its next step (for every page).
+  $("follow-other").onclick = () => {
+    const other = view.state.otherWorld;
+    if (other && view.socket && view.socket.readyState === WebSocket.OPEN) view.socket.send(`follow ${other.id}`);
+  };
   document.addEventListener("visibilitychange", () => { if (!document.hidden && !view.liveTimer) liveTick(); });
   window.addEventListener("resize", () => { resize(); draw(); });
   resize();

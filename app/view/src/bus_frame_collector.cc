@@ -205,6 +205,11 @@ bool BusFrameCollector::TakeFrame(ViewFrame* frame, uint64_t* version) {
   return true;
 }
 
+bool BusFrameCollector::Follow(int64_t run_id) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return choice_.Choose(run_id);
+}
+
 int64_t BusFrameCollector::bad_messages() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return bad_messages_;

@@ -76,7 +76,7 @@ RunChoice::Decision RunChoice::OnPoses(int64_t run_id, int64_t step) {
     return Decision::kStartOver;
   }
   RunHeard& run = Heard(run_id, now);
-  const bool clean = StartsCleanly(run, step, now);
+  const bool clean = run_id == chosen_ || StartsCleanly(run, step, now);
   run.poses_step = step;
   if (!clean) {
     if (follower_.joined()) follower_.OnPoses(run_id, step);  // ignored, and the other world logged once
@@ -84,6 +84,7 @@ RunChoice::Decision RunChoice::OnPoses(int64_t run_id, int64_t step) {
   }
   follower_ = lcm::WorldFollower();
   follower_.OnPoses(run_id, step);
+  chosen_ = 0;
   ended_ = false;
   followed_heard_ = now;
   return Decision::kStartOver;
@@ -100,6 +101,13 @@ bool RunChoice::OnStatus(int64_t run_id, int64_t step, int state) {
     ended_ = true;
     ended_at_ = now;
   }
+  return true;
+}
+
+bool RunChoice::Choose(int64_t run_id) {
+  const bool heard = std::any_of(heard_.begin(), heard_.end(), [run_id](const RunHeard& r) { return r.run_id == run_id; });
+  if (!heard || run_id == 0 || (follower_.joined() && run_id == follower_.run_id())) return false;
+  chosen_ = run_id;
   return true;
 }
 

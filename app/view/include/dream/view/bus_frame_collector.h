@@ -54,6 +54,10 @@ class BusFrameCollector {
   /// changes the frame too. Thread-safe against the handlers.
   bool TakeFrame(ViewFrame* frame, uint64_t* version);
 
+  /// The user's choice of another run heard (RunChoice::Choose): drawn from
+  /// its next poses on. False for a run not heard, or the one drawn.
+  bool Follow(int64_t run_id);
+
   /// Messages that did not decode (forged or foreign), since the start.
   int64_t bad_messages() const;
 

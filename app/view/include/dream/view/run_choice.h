@@ -28,7 +28,8 @@ namespace dream::view {
 /// now runs). So a finished run stays drawn until a new one starts. The
 /// first run is joined at any step (a view started mid-run). A followed run
 /// still at its step 0 (waiting for agents) gives way to a run heard at two
-/// steps in a row: the one that runs, not the idle one, is drawn.
+/// steps in a row: the one that runs, not the idle one, is drawn. And the
+/// user may choose another run heard (Choose): its next poses are drawn.
 ///
 /// Runs heard are remembered (at most kMaxRunsHeard, the least recently
 /// heard forgotten first) so the page can say that a second world is on the
@@ -60,6 +61,11 @@ class RunChoice {
   bool OnStatus(int64_t run_id, int64_t step, int state);
   /// DREAM_OBSTACLES or DREAM_MEASURED_POSES: whether they are the followed run's.
   bool OnMessageOf(int64_t run_id);
+
+  /// The user's choice: `run_id`, a run heard and not followed, is drawn
+  /// from its next DREAM_POSES on, whatever its step. False (and nothing
+  /// chosen) for a run not heard, or the one followed.
+  bool Choose(int64_t run_id);
 
   /// The other run heard last within kOtherWorldShown, and how many were;
   /// runs whose last status said FINISHED or ABORTED are not counted.
@@ -93,6 +99,7 @@ class RunChoice {
   Clock::time_point ended_at_;
   Clock::time_point followed_heard_;  ///< the followed run's last message
   std::vector<RunHeard> heard_;       ///< at most kMaxRunsHeard
+  int64_t chosen_ = 0;                ///< the user's choice, until its poses come; 0: none
   uint64_t messages_ = 0;             ///< messages heard: RunHeard::order
 };
 
