@@ -142,6 +142,7 @@ TEST_F(BusFrameCollectorTest, ANewRunAfterTheEndStartsOver) {
   PublishStep(bus_, 5, 0, {{0.0, 0.0, 0.0}, {0.05, 0.0, 0.0}}, 0);
   PublishStep(bus_, 5, 1, {{0.0, 0.0, 0.0}, {0.05, 0.0, 0.0}}, 1);
   Finish(5, 1, 1);
+  now_ += std::chrono::seconds(1);
   PublishStep(bus_, 6, 0, {{0.5, 0.0, 0.0}}, 0);
   ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
   EXPECT_EQ(frame_.run_id, 6);

@@ -57,7 +57,7 @@ bool RunChoice::StartsCleanly(const RunHeard& run, int64_t step, Clock::time_poi
   if (!over) return follower_.step() == 0 && runs_on;
   // Once the followed run is over: a world started after that, at its step
   // 0, or one that waited at step 0 beside it and now runs.
-  return (step == 0 && run.first >= *over) || (step == 1 && runs_on);
+  return (step == 0 && run.first > *over) || (step == 1 && runs_on);
 }
 
 RunChoice::Decision RunChoice::OnPoses(int64_t run_id, int64_t step) {
