@@ -33,10 +33,10 @@ class RunChoiceTest : public ::testing::Test {
   RunChoice choice_{[this] { return now_; }};
 };
 
-TEST_F(RunChoiceTest, TheFirstRunIsJoinedAtAnyStepOnceASecondMessageConfirmsIt) {
+TEST_F(RunChoiceTest, TheFirstRunIsJoinedAtAnyStepOnAWholeStepOfAWorld) {
   EXPECT_EQ(choice_.OnPoses(kForged, 40), Decision::kIgnore);  // one datagram alone: not a run yet
   EXPECT_EQ(choice_.run_id(), 0);
-  EXPECT_EQ(Step(kRun, 12), Decision::kStartOver);  // its status of the same step confirms it
+  EXPECT_EQ(Step(kRun, 12), Decision::kStartOver);  // its status, then its poses of the same step
   EXPECT_EQ(choice_.run_id(), kRun);
   EXPECT_EQ(Step(kRun, 13), Decision::kNewStep);
   EXPECT_EQ(choice_.OnPoses(kRun, 13), Decision::kResend);
@@ -123,7 +123,7 @@ TEST_F(RunChoiceTest, ASecondWorldRunningBesideTheRunIsNeverTaken) {
   EXPECT_EQ(choice_.run_id(), kRun);
 }
 
-TEST_F(RunChoiceTest, ARunSilentForkSilenceIsOverAndANewWorldIsTaken) {
+TEST_F(RunChoiceTest, ARunSilentFor3SecondsIsOverAndANewWorldIsTaken) {
   for (int64_t step = 0; step < 5; ++step) Step(kRun, step);  // then killed: no FINISHED
   now_ += RunChoice::kSilence - std::chrono::milliseconds(1);
   EXPECT_EQ(Step(kSecond, 0, run_status_t::WAITING_FOR_AGENTS), Decision::kIgnore);  // not silent long enough
@@ -140,7 +140,7 @@ TEST_F(RunChoiceTest, TheFollowedRunFromItsStartAgainStartsOverOnceConfirmed) {
   EXPECT_EQ(Step(kRun, 2), Decision::kNewStep);
 }
 
-TEST_F(RunChoiceTest, AnotherWorldIsSaidUntilQuietForkOtherWorldShown) {
+TEST_F(RunChoiceTest, AnotherWorldIsSaidUntilQuietFor2Seconds) {
   Step(kRun, 0);
   choice_.OnPoses(kForged, 3);
   EXPECT_TRUE(choice_.OtherWorldHeard().has_value());
