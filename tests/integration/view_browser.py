@@ -140,7 +140,7 @@ def watch_live(ctx, args, page, config, run_dir):
     return steps_seen
 
 
-def check_forged_run_after_the_end(dream, page, final):
+def check_forged_run_after_the_end(dream, page, final, artifacts):
     """Issue 34: one DREAM_POSES of a made-up run after the end replaced the finished run on the
     page and wiped its violations. Now the finished run stays, and the page says another world
     is on the bus."""
@@ -167,6 +167,7 @@ def check_forged_run_after_the_end(dream, page, final):
           f"{told['step']}, {len(told['violations'])} violations (was run {final['run']} step {STEPS}, "
           f"{len(final['violations'])})")
     check(f"{FORGED_RUN_ID:016x}" in line, f"the status line says {line!r}, not the forged run")
+    page.screenshot(os.path.join(artifacts, "other_world.png"))
     print(f"forged run after the end: the finished run stays drawn; the page says {line!r}")
 
 
@@ -183,7 +184,7 @@ def check_live(ctx, args, dream, page, config, run_dir):
           f"the page's counts {final['counts']} are not summary.json's {summary}")
     check(final["verdict"] == "rejected", f"the page's verdict is {final['verdict']}, the run was rejected")
     print(f"live: {len(steps_seen)} steps seen, {len(final['violations'])} violations marked")
-    check_forged_run_after_the_end(dream, page, final)
+    check_forged_run_after_the_end(dream, page, final, args.artifacts)
 
     # A lab run, or any run log, watched by playing it on the bus.
     ctx.start("logplayer", ["lcm-logplayer", f"--lcm-url={os.environ['LCM_DEFAULT_URL']}", "-s", "4",
