@@ -8,7 +8,11 @@ what it draws) must show the three robots with their ids at the positions the ru
 the step shown, the step advancing, each violation marked where the log says it happened, the
 counts of the run's summary and the verdict "rejected". A screenshot is kept (live.png).
 
-lcm-logplayer: the run's log played on the bus (4x) is drawn live too, as a new run.
+A forged DREAM_POSES of a made-up run after the end (issue 34): the finished run stays drawn with
+its violations, and the page's status line names the other run (other_world.png).
+
+lcm-logplayer: the run's log played on the bus (4x) is drawn live too, from its start again. Then
+the status line's "draw it instead": the other run is drawn from its next step.
 
 Embedded: `dream run --view --pace 4` of the same config: the page follows it to its last step
 (the end of a run on the process's own memq bus, which no handler reads, comes from its log).
@@ -171,6 +175,30 @@ def check_forged_run_after_the_end(dream, page, final, artifacts):
     print(f"forged run after the end: the finished run stays drawn; the page says {line!r}")
 
 
+def check_users_choice(dream, page):
+    """The status line's button: the view draws the other run named there, from its next step."""
+    other = dream.robot_poses_t()
+    other.step, other.run_id, other.num_robots = 7, FORGED_RUN_ID, 1
+    other.x, other.y, other.theta, other.v, other.w = [0.5], [0.5], [0.0], [0.0], [0.0]
+    bus, clicked, shown = Udpm(), False, None
+    deadline = time.monotonic() + 10
+    while time.monotonic() < deadline:
+        bus.publish("DREAM_POSES", other.encode())
+        time.sleep(0.1)
+        shown = state(page)
+        if shown and shown["run"] == str(FORGED_RUN_ID):
+            check(clicked, "the page drew the other run before the user chose it")
+            check(shown["step"] == 7 and len(shown["robots"]) == 1 and not shown["violations"],
+                  f"the run chosen is drawn at step {shown['step']} with {len(shown['robots'])} robots and "
+                  f"{len(shown['violations'])} violations, not its step 7, one robot and none")
+            print("the user's choice: the other run is drawn from its next step")
+            return
+        if shown and shown.get("otherWorld") and not clicked:
+            page.evaluate("document.getElementById('follow-other').click()")
+            clicked = True
+    fail(f"the page never drew the run chosen with 'draw it instead' (clicked: {clicked}): {json.dumps(shown)[:600]}")
+
+
 def check_live(ctx, args, dream, page, config, run_dir):
     """dream launch watched live; then the same run's log played with lcm-logplayer. Returns its poses."""
     steps_seen = watch_live(ctx, args, page, config, run_dir)
@@ -194,6 +222,7 @@ def check_live(ctx, args, dream, page, config, run_dir):
     check_robots(played, poses, "lcm-logplayer")
     check_marks(played["violations"], poses, "lcm-logplayer")
     ctx.wait("logplayer", 10)
+    check_users_choice(dream, page)
     return poses
 
 
