@@ -120,7 +120,11 @@
   // A run id as logs and summary.json print it: 16 hex digits (the frame
   // sends it as a decimal string: 64 bits do not fit a JavaScript number).
   function runIdText(decimal) {
-    try { return BigInt.asUintN(64, BigInt(decimal)).toString(16).padStart(16, "0"); } catch (error) { return String(decimal); }
+    try {
+      return BigInt.asUintN(64, BigInt(decimal)).toString(16).padStart(16, "0");
+    } catch (error) {
+      return String(decimal);
+    }
   }
 
   // The status line saying that another world is on the bus: the server
@@ -128,14 +132,16 @@
   function otherWorldOf(f) {
     const o = f && f.other_world;
     if (!o) return null;
-    return { run: runIdText(o.run), id: o.run, step: o.step, state: o.state === null ? null : STATE_NAMES[o.state] || String(o.state), runs: o.runs };
+    const state = o.state === null ? null : STATE_NAMES[o.state] || String(o.state);
+    return { run: runIdText(o.run), id: o.run, step: o.step, state, runs: o.runs };
   }
 
   function showOtherWorld(other) {
     const line = $("other-world"), shown = $("other-world-text");
     let text = "";
     if (other) {
-      const where = `run ${other.run}${other.step >= 0 ? ` at step ${other.step}` : ""}${other.state ? `, ${other.state}` : ""}`;
+      const at = other.step >= 0 ? ` at step ${other.step}` : "";
+      const where = `run ${other.run}${at}${other.state ? `, ${other.state}` : ""}`;
       text = (other.runs > 1 ? `${other.runs} other runs are on this bus (the latest: ${where}); not drawn.`
                              : `Another world is on this bus (${where}); not drawn.`) +
              " This page stays on its run; a run that starts after it ends is drawn.";

@@ -18,7 +18,8 @@ bool Ended(int state) { return state == run_status_t::FINISHED || state == run_s
 RunChoice::RunChoice(std::function<Clock::time_point()> now) : now_(std::move(now)) {}
 
 RunChoice::RunHeard& RunChoice::Heard(int64_t run_id, Clock::time_point now) {
-  auto run = std::find_if(heard_.begin(), heard_.end(), [run_id](const RunHeard& r) { return r.run_id == run_id; });
+  const auto is_it = [run_id](const RunHeard& r) { return r.run_id == run_id; };
+  auto run = std::find_if(heard_.begin(), heard_.end(), is_it);
   if (run == heard_.end()) {
     if (heard_.size() < kMaxRunsHeard) {
       run = heard_.emplace(heard_.end());
@@ -105,7 +106,8 @@ bool RunChoice::OnStatus(int64_t run_id, int64_t step, int state) {
 }
 
 bool RunChoice::Choose(int64_t run_id) {
-  const bool heard = std::any_of(heard_.begin(), heard_.end(), [run_id](const RunHeard& r) { return r.run_id == run_id; });
+  const auto is_it = [run_id](const RunHeard& r) { return r.run_id == run_id; };
+  const bool heard = std::any_of(heard_.begin(), heard_.end(), is_it);
   if (!heard || run_id == 0 || (follower_.joined() && run_id == follower_.run_id())) return false;
   chosen_ = run_id;
   return true;

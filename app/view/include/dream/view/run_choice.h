@@ -80,7 +80,9 @@ class RunChoice {
     int64_t run_id = 0;
     Clock::time_point first;
     Clock::time_point last;
-    uint64_t order = 0;        ///< when heard last, in messages: the latest and the least recent, whatever the clock's grain
+    /// When heard last, counted in messages: which is the latest, and the
+    /// least recent, whatever the clock's grain.
+    uint64_t order = 0;
     int64_t poses_step = -1;   ///< its newest DREAM_POSES' step; -1: none
     int64_t status_step = -1;  ///< its newest DREAM_STATUS' step; -1: none
     int state = -1;            ///< its newest DREAM_STATUS' state; -1: none
