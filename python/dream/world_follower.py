@@ -1,4 +1,4 @@
-"""Which world messages an agent host acts on: agents/agent_host's WorldFollower, in Python.
+"""Which world messages an agent host acts on: dream::lcm's WorldFollower (lcmtypes/lcm), in Python.
 
 The host follows the run (run_id) it joined with its first DREAM_POSES, and within it takes
 only the next step, a resend of the current one, or a short forward gap (lost datagrams in

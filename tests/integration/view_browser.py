@@ -8,7 +8,11 @@ what it draws) must show the three robots with their ids at the positions the ru
 the step shown, the step advancing, each violation marked where the log says it happened, the
 counts of the run's summary and the verdict "rejected". A screenshot is kept (live.png).
 
-lcm-logplayer: the run's log played on the bus (4x) is drawn live too, as a new run.
+A forged DREAM_POSES of a made-up run after the end (issue 34): the finished run stays drawn with
+its violations, and the page's status line names the other run (other_world.png).
+
+lcm-logplayer: the run's log played on the bus (4x) is drawn live too, from its start again. Then
+the status line's "draw it instead": the other run is drawn from its next step.
 
 Embedded: `dream run --view --pace 4` of the same config: the page follows it to its last step
 (the end of a run on the process's own memq bus, which no handler reads, comes from its log).
@@ -26,7 +30,8 @@ import re
 import time
 
 from devtools import Page, chromium_argv, devtools_port
-from dreamtest import argument_parser, check, fail, import_types, main, read_events, read_summary, require_private_netns
+from dreamtest import (Udpm, argument_parser, check, fail, import_types, main, read_events, read_summary,
+                       require_private_netns)
 
 STEPS = 240
 CONFIG = f"""name: clash
@@ -53,6 +58,7 @@ controller:
     - [-0.2, -0.5]    # where robot 2 stands: robot 1 runs into it
     - [-0.2, -0.5]
 """
+FORGED_RUN_ID = 0x0BADC0FFEE
 URL = re.compile(r"open (http://127\.0\.0\.1:\d+/)")
 ARENA_X = 1.6
 
@@ -138,6 +144,61 @@ def watch_live(ctx, args, page, config, run_dir):
     return steps_seen
 
 
+def check_forged_run_after_the_end(dream, page, final, artifacts):
+    """Issue 34: one DREAM_POSES of a made-up run after the end replaced the finished run on the
+    page and wiped its violations. Now the finished run stays, and the page says another world
+    is on the bus."""
+    forged = dream.robot_poses_t()
+    forged.step, forged.run_id, forged.num_robots = 0, FORGED_RUN_ID, 1
+    forged.x, forged.y, forged.theta, forged.v, forged.w = [0.5], [0.5], [0.0], [0.0], [0.0]
+    bus = Udpm()
+    line_js = ("document.getElementById('other-world').hidden ? '' : "
+               "document.getElementById('other-world').textContent")
+    # Sent again until the page says it: the line goes 2 s after the other world's last message,
+    # and a loaded machine may take longer than that to draw it.
+    deadline, told, line = time.monotonic() + 10, None, ""
+    while time.monotonic() < deadline and not (told and line):
+        bus.publish("DREAM_POSES", forged.encode())
+        time.sleep(0.1)
+        shown = state(page)
+        told = shown if shown and shown.get("otherWorld") else told
+        line = page.evaluate(line_js) or line
+    check(told is not None and line, f"the page never said another world is on the bus: {json.dumps(state(page))[:600]}")
+    check(told["otherWorld"]["run"] == f"{FORGED_RUN_ID:016x}" and told["otherWorld"]["step"] == 0,
+          f"the page names another world {told['otherWorld']}, not the forged run {FORGED_RUN_ID:016x} at step 0")
+    check(told["run"] == final["run"] and told["step"] == STEPS and told["violations"] == final["violations"],
+          f"a forged DREAM_POSES of another run changed the finished run drawn: run {told['run']} step "
+          f"{told['step']}, {len(told['violations'])} violations (was run {final['run']} step {STEPS}, "
+          f"{len(final['violations'])})")
+    check(f"{FORGED_RUN_ID:016x}" in line, f"the status line says {line!r}, not the forged run")
+    page.screenshot(os.path.join(artifacts, "other_world.png"))
+    print(f"forged run after the end: the finished run stays drawn; the page says {line!r}")
+
+
+def check_users_choice(dream, page):
+    """The status line's button: the view draws the other run named there, from its next step."""
+    other = dream.robot_poses_t()
+    other.step, other.run_id, other.num_robots = 7, FORGED_RUN_ID, 1
+    other.x, other.y, other.theta, other.v, other.w = [0.5], [0.5], [0.0], [0.0], [0.0]
+    bus, clicked, shown = Udpm(), False, None
+    deadline = time.monotonic() + 10
+    while time.monotonic() < deadline:
+        bus.publish("DREAM_POSES", other.encode())
+        time.sleep(0.1)
+        shown = state(page)
+        if shown and shown["run"] == str(FORGED_RUN_ID):
+            check(clicked, "the page drew the other run before the user chose it")
+            check(shown["step"] == 7 and len(shown["robots"]) == 1 and not shown["violations"],
+                  f"the run chosen is drawn at step {shown['step']} with {len(shown['robots'])} robots and "
+                  f"{len(shown['violations'])} violations, not its step 7, one robot and none")
+            print("the user's choice: the other run is drawn from its next step")
+            return
+        if shown and shown.get("otherWorld") and not clicked:
+            page.evaluate("document.getElementById('follow-other').click()")
+            clicked = True
+    fail(f"the page never drew the run chosen with 'draw it instead' (clicked: {clicked}): {json.dumps(shown)[:600]}")
+
+
 def check_live(ctx, args, dream, page, config, run_dir):
     """dream launch watched live; then the same run's log played with lcm-logplayer. Returns its poses."""
     steps_seen = watch_live(ctx, args, page, config, run_dir)
@@ -151,6 +212,7 @@ def check_live(ctx, args, dream, page, config, run_dir):
           f"the page's counts {final['counts']} are not summary.json's {summary}")
     check(final["verdict"] == "rejected", f"the page's verdict is {final['verdict']}, the run was rejected")
     print(f"live: {len(steps_seen)} steps seen, {len(final['violations'])} violations marked")
+    check_forged_run_after_the_end(dream, page, final, args.artifacts)
 
     # A lab run, or any run log, watched by playing it on the bus.
     ctx.start("logplayer", ["lcm-logplayer", f"--lcm-url={os.environ['LCM_DEFAULT_URL']}", "-s", "4",
@@ -160,6 +222,7 @@ def check_live(ctx, args, dream, page, config, run_dir):
     check_robots(played, poses, "lcm-logplayer")
     check_marks(played["violations"], poses, "lcm-logplayer")
     ctx.wait("logplayer", 10)
+    check_users_choice(dream, page)
     return poses
 
 

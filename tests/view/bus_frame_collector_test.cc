@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <chrono>
 #include <cmath>
 
 #include <cstdint>
@@ -32,11 +33,12 @@ robot_poses_t Poses(int64_t run_id, int64_t step, const std::vector<std::array<d
   return poses;
 }
 
-run_status_t Status(int64_t run_id, int64_t step, int64_t collisions, int64_t boundary = 0) {
+run_status_t Status(int64_t run_id, int64_t step, int64_t collisions, int64_t boundary = 0,
+                    int8_t state = run_status_t::RUNNING) {
   run_status_t status{};
   status.run_id = run_id;
   status.step = step;
-  status.state = run_status_t::RUNNING;
+  status.state = state;
   status.num_robots = 2;
   status.collision_errors = collisions;
   status.boundary_errors = boundary;
@@ -53,18 +55,38 @@ obstacles_t NoObstacles(int64_t run_id, int64_t step) {
 
 /// One step as the world publishes it: obstacles, status, then poses.
 void PublishStep(lcm::LcmBus& bus, int64_t run_id, int64_t step, const std::vector<std::array<double, 3>>& robots,
-                 int64_t collisions, int64_t boundary = 0) {
+                 int64_t collisions, int64_t boundary = 0, int8_t state = run_status_t::RUNNING) {
   lcm::Publish(bus, "DREAM_OBSTACLES", NoObstacles(run_id, step));
-  lcm::Publish(bus, "DREAM_STATUS", Status(run_id, step, collisions, boundary));
+  lcm::Publish(bus, "DREAM_STATUS", Status(run_id, step, collisions, boundary, state));
   lcm::Publish(bus, "DREAM_POSES", Poses(run_id, step, robots));
+  while (bus.HandleSubscriptions(0) > 0) {
+  }
+}
+
+/// One message on the bus, handled.
+template <typename Message>
+void PublishOne(lcm::LcmBus& bus, const std::string& channel, const Message& message) {
+  lcm::Publish(bus, channel, message);
   while (bus.HandleSubscriptions(0) > 0) {
   }
 }
 
 class BusFrameCollectorTest : public ::testing::Test {
  protected:
+  /// Run 5's steps 0..2, robots 0 and 1 too close from step 1 on: one collision located.
+  void RunWithACollision() {
+    PublishStep(bus_, 5, 0, {{0.0, 0.0, 0.0}, {1.0, 0.0, M_PI}}, 0);
+    PublishStep(bus_, 5, 1, {{0.0, 0.0, 0.0}, {0.1, 0.0, M_PI}}, 0);
+    PublishStep(bus_, 5, 2, {{0.0, 0.0, 0.0}, {0.1, 0.0, M_PI}}, 1);
+  }
+  /// The run's FINISHED status, after its last step.
+  void Finish(int64_t run_id, int64_t step, int64_t collisions) {
+    PublishOne(bus_, "DREAM_STATUS", Status(run_id, step, collisions, 0, run_status_t::FINISHED));
+  }
+
+  RunChoice::Clock::time_point now_{};
   lcm::LcmBus bus_{"memq://"};
-  BusFrameCollector collector_{bus_, world::WorldParams()};
+  BusFrameCollector collector_{bus_, world::WorldParams(), [this] { return now_; }};
   uint64_t version_ = 0;
   ViewFrame frame_;
 };
@@ -116,28 +138,140 @@ TEST_F(BusFrameCollectorTest, KeepsABoundedNumberOfMarks) {
   EXPECT_EQ(frame_.violations_located, 199);
 }
 
-TEST_F(BusFrameCollectorTest, ANewRunStartsOver) {
+TEST_F(BusFrameCollectorTest, ANewRunAfterTheEndStartsOver) {
   PublishStep(bus_, 5, 0, {{0.0, 0.0, 0.0}, {0.05, 0.0, 0.0}}, 0);
   PublishStep(bus_, 5, 1, {{0.0, 0.0, 0.0}, {0.05, 0.0, 0.0}}, 1);
+  Finish(5, 1, 1);
+  now_ += std::chrono::seconds(1);
   PublishStep(bus_, 6, 0, {{0.5, 0.0, 0.0}}, 0);
   ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
   EXPECT_EQ(frame_.run_id, 6);
   EXPECT_EQ(frame_.x_m.size(), 1u);
   EXPECT_TRUE(frame_.violations.empty());
   EXPECT_EQ(frame_.violations_located, 0);
+  EXPECT_EQ(frame_.status.collision_errors, 0);  // the new run's status, published before its poses
+  EXPECT_FALSE(frame_.other_world.has_value());  // the run that ended is no second world
+}
+
+TEST_F(BusFrameCollectorTest, ANewRunAfterTheOneDrawnWentSilentStartsOver) {
+  RunWithACollision();  // then killed: no FINISHED
+  now_ += RunChoice::kSilence;
+  PublishStep(bus_, 6, 0, {{0.5, 0.0, 0.0}}, 0, 0, run_status_t::WAITING_FOR_AGENTS);
+  ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
+  EXPECT_EQ(frame_.run_id, 6);
+  EXPECT_TRUE(frame_.violations.empty());
 }
 
 TEST_F(BusFrameCollectorTest, TheSameRunFromItsStartAgainStartsOver) {
   // A run's log played on the bus a second time: the same run id, the steps from 0 again.
   PublishStep(bus_, 5, 7, {{0.0, 0.0, 0.0}, {0.05, 0.0, 0.0}}, 0);
   PublishStep(bus_, 5, 8, {{0.0, 0.0, 0.0}, {0.05, 0.0, 0.0}}, 1);
-  PublishStep(bus_, 5, 7, {{0.0, 0.0, 0.0}, {0.05, 0.0, 0.0}}, 0);  // one step back: a resend, not a restart
+  PublishStep(bus_, 5, 7, {{0.0, 0.0, 0.0}, {0.05, 0.0, 0.0}}, 0);  // one step back: a late resend, not a restart
   ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
   EXPECT_EQ(frame_.violations.size(), 1u);
+  EXPECT_EQ(frame_.step, 8);
   PublishStep(bus_, 5, 0, {{0.5, 0.0, 0.0}, {1.0, 0.0, 0.0}}, 0);
+  PublishStep(bus_, 5, 1, {{0.5, 0.0, 0.0}, {1.0, 0.0, 0.0}}, 0);  // the step after confirms the step back
   ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
-  EXPECT_EQ(frame_.step, 0);
+  EXPECT_EQ(frame_.step, 1);
   EXPECT_TRUE(frame_.violations.empty());
+}
+
+// Issue 34: one forged DREAM_POSES of a made-up run id made every view switch to it and wipe its violations.
+TEST_F(BusFrameCollectorTest, AForgedPosesOfAnotherRunMidRunIsSaidNotDrawn) {
+  RunWithACollision();
+  PublishOne(bus_, "DREAM_POSES", Poses(0xbad, 0, {{1.0, 1.0, 0.0}}));
+  PublishOne(bus_, "DREAM_POSES", Poses(0xbad, 3, {{1.0, 1.0, 0.0}}));
+  PublishStep(bus_, 5, 3, {{0.0, 0.0, 0.0}, {0.1, 0.0, M_PI}}, 2);
+  ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
+  EXPECT_EQ(frame_.run_id, 5);
+  EXPECT_EQ(frame_.step, 3);
+  EXPECT_EQ(frame_.x_m.size(), 2u);
+  EXPECT_EQ(frame_.violations.size(), 2u);  // step 1's and step 2's: none wiped
+  EXPECT_EQ(frame_.violations_located, 2);
+  ASSERT_TRUE(frame_.other_world.has_value());
+  EXPECT_EQ(frame_.other_world->run_id, 0xbad);
+  EXPECT_EQ(frame_.other_world->step, 3);
+}
+
+// Issue 34: sent after the run ended, the forged run replaced the finished one on screen.
+TEST_F(BusFrameCollectorTest, AForgedPosesAfterTheEndLeavesTheFinishedRunDrawn) {
+  RunWithACollision();
+  Finish(5, 2, 1);
+  for (const int64_t step : {0, 1, 500}) PublishOne(bus_, "DREAM_POSES", Poses(0xbad, step, {{1.0, 1.0, 0.0}}));
+  ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
+  EXPECT_EQ(frame_.run_id, 5);
+  EXPECT_EQ(frame_.step, 2);
+  EXPECT_EQ(frame_.status.state, run_status_t::FINISHED);
+  EXPECT_EQ(frame_.violations.size(), 1u);
+  ASSERT_TRUE(frame_.other_world.has_value());
+  EXPECT_EQ(frame_.other_world->run_id, 0xbad);
+}
+
+// Issue 34: a second dream sim waiting for agents made the views flip between the runs and end on its step 0.
+TEST_F(BusFrameCollectorTest, ASecondWorldWaitingBesideTheRunIsSaidNotDrawn) {
+  const std::vector<std::array<double, 3>> idle = {{-1.0, -0.5, 0.0}, {1.0, 0.5, 0.0}, {0.0, 0.0, 0.0}};
+  // It was there first: drawn, until a run that moves comes.
+  PublishStep(bus_, 9, 0, idle, 0, 0, run_status_t::WAITING_FOR_AGENTS);
+  ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
+  EXPECT_EQ(frame_.run_id, 9);
+  for (int64_t step = 0; step < 3; ++step) {
+    PublishStep(bus_, 5, step, {{0.0, 0.0, 0.0}, {step == 0 ? 1.0 : 0.1, 0.0, M_PI}}, step == 2 ? 1 : 0);
+    PublishStep(bus_, 9, 0, idle, 0, 0, run_status_t::WAITING_FOR_AGENTS);  // its resends
+  }
+  ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
+  EXPECT_EQ(frame_.run_id, 5);
+  EXPECT_EQ(frame_.step, 2);
+  EXPECT_EQ(frame_.violations.size(), 1u);
+  ASSERT_TRUE(frame_.other_world.has_value());
+  EXPECT_EQ(frame_.other_world->run_id, 9);
+  EXPECT_EQ(frame_.other_world->step, 0);
+  EXPECT_EQ(frame_.other_world->state, run_status_t::WAITING_FOR_AGENTS);
+  EXPECT_EQ(frame_.other_world->runs, 1);
+
+  // The watched run ends; the idle world still waits: the finished run stays drawn.
+  PublishOne(bus_, "DREAM_STATUS", Status(5, 2, 1, 0, run_status_t::FINISHED));
+  for (int i = 0; i < 3; ++i) PublishStep(bus_, 9, 0, idle, 0, 0, run_status_t::WAITING_FOR_AGENTS);
+  ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
+  EXPECT_EQ(frame_.run_id, 5);
+  EXPECT_EQ(frame_.status.state, run_status_t::FINISHED);
+  EXPECT_EQ(frame_.violations.size(), 1u);
+
+  // Its agents come and it runs: a run that starts after the end is drawn.
+  PublishStep(bus_, 9, 1, idle, 0);
+  ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
+  EXPECT_EQ(frame_.run_id, 9);
+  EXPECT_EQ(frame_.step, 1);
+  EXPECT_EQ(frame_.x_m.size(), 3u);
+  EXPECT_TRUE(frame_.violations.empty());
+  EXPECT_FALSE(frame_.other_world.has_value());
+}
+
+TEST_F(BusFrameCollectorTest, TheUsersChoiceOfTheOtherWorldIsDrawnFromItsNextStep) {
+  RunWithACollision();
+  PublishStep(bus_, 9, 0, {{0.5, 0.5, 0.0}}, 0, 0, run_status_t::WAITING_FOR_AGENTS);
+  EXPECT_FALSE(collector_.Follow(77));  // no such run heard
+  EXPECT_TRUE(collector_.Follow(9));
+  PublishStep(bus_, 9, 0, {{0.5, 0.5, 0.0}}, 0, 0, run_status_t::WAITING_FOR_AGENTS);  // its resend
+  ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
+  EXPECT_EQ(frame_.run_id, 9);
+  EXPECT_EQ(frame_.x_m.size(), 1u);
+  EXPECT_EQ(frame_.status.state, run_status_t::WAITING_FOR_AGENTS);
+  EXPECT_TRUE(frame_.violations.empty());
+}
+
+TEST_F(BusFrameCollectorTest, ASecondWorldGoneQuietIsNoLongerSaid) {
+  RunWithACollision();
+  Finish(5, 2, 1);
+  PublishOne(bus_, "DREAM_POSES", Poses(0xbad, 0, {{1.0, 1.0, 0.0}}));
+  ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
+  ASSERT_TRUE(frame_.other_world.has_value());
+  EXPECT_FALSE(collector_.TakeFrame(&frame_, &version_));  // nothing new
+  now_ += RunChoice::kOtherWorldShown + std::chrono::milliseconds(1);
+  ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_)) << "nothing else changed, but the page must be told";
+  EXPECT_FALSE(frame_.other_world.has_value());
+  EXPECT_EQ(frame_.run_id, 5);
+  EXPECT_EQ(frame_.violations.size(), 1u);
 }
 
 TEST_F(BusFrameCollectorTest, AnotherWorldsStatusIsNotDrawnOverThisRun) {

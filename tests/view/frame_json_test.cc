@@ -51,6 +51,20 @@ TEST(FrameJsonTest, WritesWhatThePageReads) {
   EXPECT_EQ(json["violations"][0]["step"], 41);
   EXPECT_EQ(json["violations"][0]["other"], 1);
   EXPECT_EQ(json["located"], 7);
+  EXPECT_TRUE(json["other_world"].is_null());  // alone on the bus
+}
+
+TEST(FrameJsonTest, ASecondWorldOnTheBusIsSaid) {
+  ViewFrame frame = TwoRobots();
+  frame.other_world = ViewFrame::OtherWorld{-2, 0, 0, 3};  // a run id above 2^63, as int64
+  nlohmann::json json = nlohmann::json::parse(FrameJson(frame));
+  EXPECT_EQ(json["other_world"]["run"], "-2");  // a string, exact, as "run" is
+  EXPECT_EQ(json["other_world"]["step"], 0);
+  EXPECT_EQ(json["other_world"]["state"], 0);  // waiting for agents
+  EXPECT_EQ(json["other_world"]["runs"], 3);
+  frame.other_world->state = -1;  // poses heard, no status
+  json = nlohmann::json::parse(FrameJson(frame));
+  EXPECT_TRUE(json["other_world"]["state"].is_null());
 }
 
 TEST(FrameJsonTest, MeasuredPosesAreSentWhenThere) {

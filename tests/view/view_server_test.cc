@@ -10,6 +10,7 @@
 #include <boost/beast/core.hpp>
 #include <boost/beast/websocket.hpp>
 #include <chrono>
+#include <future>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -145,6 +146,21 @@ TEST(ViewServerTest, AnOversizedMessageFromABrowserClosesItsSocket) {
   boost::system::error_code error;
   browser.ws().read(buffer, error);
   EXPECT_TRUE(error) << "the server kept a socket that sent " << ViewServer::kMaxClientMessageBytes + 1 << " bytes";
+}
+
+TEST(ViewServerTest, ABrowsersTextMessageReachesTheHandler) {
+  ViewServer server(AnyPort());
+  server.SetSetup("setup");
+  std::promise<std::string> heard;
+  server.SetClientMessageHandler([&heard](const std::string& message) { heard.set_value(message); });
+  Browser browser(server.port());
+  EXPECT_EQ(browser.Read(), "setup");
+  browser.ws().text(true);
+  browser.ws().write(net::buffer(std::string("follow 9")));
+  std::future<std::string> message = heard.get_future();
+  ASSERT_EQ(message.wait_for(std::chrono::seconds(60)), std::future_status::ready);  // a bound, not a margin
+  EXPECT_EQ(message.get(), "follow 9");
+  server.SetClientMessageHandler(nullptr);  // before `heard` is gone
 }
 
 TEST(ViewServerTest, ASlowBrowserLosesFramesAndOthersStillGetThem) {

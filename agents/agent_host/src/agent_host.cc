@@ -201,10 +201,10 @@ void AgentHost::OnPoses(const std::string& channel, const robot_poses_t& poses) 
     return;
   }
   const bool joining = !follower_.joined();
-  const WorldFollower::StepDecision decision = follower_.OnPoses(poses.run_id, poses.step);
-  if (decision == WorldFollower::StepDecision::kIgnore) return;
+  const lcm::WorldFollower::StepDecision decision = follower_.OnPoses(poses.run_id, poses.step);
+  if (decision == lcm::WorldFollower::StepDecision::kIgnore) return;
   saw_poses_since_check_ = true;  // only the followed run's steps keep this host waiting
-  if (decision == WorldFollower::StepDecision::kNewStep) {
+  if (decision == lcm::WorldFollower::StepDecision::kNewStep) {
     TakePoses(poses, &world_);
     bad_messages_.set_step(poses.step);  // kept with each channel's first refusal
   }
@@ -224,7 +224,7 @@ void AgentHost::OnPoses(const std::string& channel, const robot_poses_t& poses) 
       continue;
     }
     if (!robot.fault.empty()) continue;  // given up: the world was told, and stops the robot
-    if (decision == WorldFollower::StepDecision::kNewStep && !Answer(robot, poses)) continue;
+    if (decision == lcm::WorldFollower::StepDecision::kNewStep && !Answer(robot, poses)) continue;
     if (robot.last_radio) lcm::Publish(lcm_, robot.radio_channel, *robot.last_radio);
     lcm::Publish(lcm_, robot.command_channel, robot.last_command);
   }

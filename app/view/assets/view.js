@@ -88,6 +88,7 @@
     view.panelTimer = null;
     view.panelShown = performance.now();
     writePanel(step, t, counts, stateName);
+    if (!view.replay) showOtherWorld(view.state.otherWorld);
     document.body.dataset.step = String(view.state.step);
     document.body.dataset.robots = String(view.state.robots.length);
     document.body.dataset.violations = String(view.state.violations.length);
@@ -116,6 +117,40 @@
     if ($("verdict").className !== `verdict ${verdict}`) $("verdict").className = `verdict ${verdict}`;
   }
 
+  // A run id as logs and summary.json print it: 16 hex digits (the frame
+  // sends it as a decimal string: 64 bits do not fit a JavaScript number).
+  function runIdText(decimal) {
+    try {
+      return BigInt.asUintN(64, BigInt(decimal)).toString(16).padStart(16, "0");
+    } catch (error) {
+      return String(decimal);
+    }
+  }
+
+  // The status line saying that another world is on the bus: the server
+  // draws one run (the one it follows) and names the others it hears.
+  function otherWorldOf(f) {
+    const o = f && f.other_world;
+    if (!o) return null;
+    const state = o.state === null ? null : STATE_NAMES[o.state] || String(o.state);
+    return { run: runIdText(o.run), id: o.run, step: o.step, state, runs: o.runs };
+  }
+
+  function showOtherWorld(other) {
+    const line = $("other-world"), shown = $("other-world-text");
+    let text = "";
+    if (other) {
+      const at = other.step >= 0 ? ` at step ${other.step}` : "";
+      const where = `run ${other.run}${at}${other.state ? `, ${other.state}` : ""}`;
+      text = (other.runs > 1 ? `${other.runs} other runs are on this bus (the latest: ${where}); not drawn.`
+                             : `Another world is on this bus (${where}); not drawn.`) +
+             " This page stays on its run; a run that starts after it ends is drawn.";
+    }
+    if (shown.textContent !== text) shown.textContent = text;  // unchanged text: no layout for the page
+    if (line.hidden !== !other) line.hidden = !other;
+    document.body.dataset.otherWorld = other ? other.run : "";
+  }
+
   function showViolationList(marks) {
     const list = $("violation-list");
     const last = marks[marks.length - 1];
@@ -139,7 +174,7 @@
       step: s ? s.step : -1, t: s ? s.t : 0, frames: view.frames, robots, counts: view.counts,
       verdict: verdictOf(view.counts), violations: marks,
       flashing: s && s.marks ? s.marks.filter((m) => m.flash > 0).length : 0,
-      links: s && s.links ? s.links.length : 0, measured: !!(s && s.mx), ...extra,
+      links: s && s.links ? s.links.length : 0, measured: !!(s && s.mx), otherWorld: null, ...extra,
     };
   }
 
@@ -196,7 +231,7 @@
       links, marks: sceneMarks(now), lost: f.status ? f.status.lost : [],
     };
     const stateName = f.status ? STATE_NAMES[f.status.state] || String(f.status.state) : "-";
-    publishState({ state: stateName, detail: f.status ? f.status.detail : "" });
+    publishState({ state: stateName, detail: f.status ? f.status.detail : "", otherWorld: otherWorldOf(f) });
     showPanel(f.step, f.t, view.counts, stateName);
   }
 
@@ -328,6 +363,7 @@
 
   function connect() {
     const socket = new WebSocket(`ws://${location.host}/ws`);
+    view.socket = socket;
     socket.onopen = () => { view.connected = true; document.body.dataset.connected = "true"; $("connection").textContent = "connected"; };
     socket.onclose = () => {
       view.connected = false;
@@ -379,6 +415,11 @@
   }
 
   for (const box of document.querySelectorAll("#layers input")) box.onchange = draw;
+  // The user's choice: the server draws the other run from its next step (for every page).
+  $("follow-other").onclick = () => {
+    const other = view.state.otherWorld;
+    if (other && view.socket && view.socket.readyState === WebSocket.OPEN) view.socket.send(`follow ${other.id}`);
+  };
   document.addEventListener("visibilitychange", () => { if (!document.hidden && !view.liveTimer) liveTick(); });
   window.addEventListener("resize", () => { resize(); draw(); });
   resize();

@@ -32,7 +32,9 @@ bool WantedKind(const NewViolations& added, ViolationMark::Kind kind) {
 
 }  // namespace
 
-BusFrameCollector::BusFrameCollector(lcm::LcmInterface& bus, const world::WorldParams& world) : locator_(world) {
+BusFrameCollector::BusFrameCollector(lcm::LcmInterface& bus, const world::WorldParams& world,
+                                     std::function<RunChoice::Clock::time_point()> now)
+    : choice_(std::move(now)), locator_(world) {
   subscription_ = bus.Subscribe(kViewChannels, [this](const std::string& channel, const void* data, int size) {
     OnMessage(channel, data, size);
   });
@@ -52,7 +54,7 @@ void BusFrameCollector::OnMessage(const std::string& channel, const void* data, 
     std::lock_guard<std::mutex> lock(mutex_);
     if (!decoded) {
       ++bad_messages_;
-    } else if (measured_in_.run_id == run_id_) {
+    } else if (choice_.OnMessageOf(measured_in_.run_id)) {
       std::swap(measured_, measured_in_);
       ++version_;
     }
@@ -63,11 +65,7 @@ void BusFrameCollector::OnMessage(const std::string& channel, const void* data, 
       ++bad_messages_;
       return;
     }
-    if (run_id_ != 0 && obstacles_in_.run_id != run_id_) return;  // another world's: not drawn over this one
-    // Swapped, not copied: the handler's cost per step stays a decode.
-    if (obstacles_in_.step != obstacles_.step) std::swap(previous_obstacles_, obstacles_);
-    std::swap(obstacles_, obstacles_in_);
-    ++version_;
+    OnObstacles();
   } else if (channel == lcm::kStatusChannel) {
     const bool decoded = lcm::Decode(data, size, &status_in_);
     std::lock_guard<std::mutex> lock(mutex_);
@@ -93,17 +91,43 @@ void BusFrameCollector::StartRun(int64_t run_id) {
   previous_poses_ = robot_poses_t();
   measured_ = robot_poses_t();
   previous_obstacles_ = obstacles_t();
-  if (obstacles_.run_id != run_id) obstacles_ = obstacles_t();
-  if (status_.run_id != run_id) status_seen_ = false;
+  // The status and obstacles a world publishes just before a step's poses.
+  if (unfollowed_obstacles_.run_id == run_id) {
+    std::swap(obstacles_, unfollowed_obstacles_);
+  } else if (obstacles_.run_id != run_id) {
+    obstacles_ = obstacles_t();
+  }
+  unfollowed_obstacles_ = obstacles_t();
+  if (unfollowed_status_.run_id == run_id) {
+    status_ = unfollowed_status_;
+    status_seen_ = true;
+  } else if (status_.run_id != run_id) {
+    status_seen_ = false;
+  }
+  unfollowed_status_ = run_status_t();
   radio_senders_.clear();
   marks_.clear();
   marks_located_ = 0;
 }
 
+void BusFrameCollector::OnObstacles() {
+  if (!choice_.OnMessageOf(obstacles_in_.run_id)) {
+    std::swap(unfollowed_obstacles_, obstacles_in_);  // another world's: not drawn over this one
+    return;
+  }
+  // Swapped, not copied: the handler's cost per step stays a decode.
+  if (obstacles_in_.step != obstacles_.step) std::swap(previous_obstacles_, obstacles_);
+  std::swap(obstacles_, obstacles_in_);
+  ++version_;
+}
+
 void BusFrameCollector::OnPoses() {
-  // Another run, or the same one from its start again (its log played once more): start over.
-  const bool restarted = poses_.num_robots > 0 && poses_in_.step + 1 < poses_.step;
-  if (poses_in_.run_id != run_id_ || restarted) StartRun(poses_in_.run_id);
+  switch (choice_.OnPoses(poses_in_.run_id, poses_in_.step)) {
+    case RunChoice::Decision::kIgnore: return;  // another run, out of sequence, or not confirmed
+    case RunChoice::Decision::kStartOver: StartRun(poses_in_.run_id); break;
+    case RunChoice::Decision::kResend:
+    case RunChoice::Decision::kNewStep: break;
+  }
   // A resend of the same step replaces it; a new step moves it to previous.
   // Swapped, not copied: the handler's cost per step stays a decode.
   if (poses_in_.step != poses_.step || poses_.num_robots == 0) std::swap(previous_poses_, poses_);
@@ -112,7 +136,10 @@ void BusFrameCollector::OnPoses() {
 }
 
 void BusFrameCollector::OnStatus(const run_status_t& status) {
-  if (run_id_ != 0 && status.run_id != run_id_) return;  // another world on the bus
+  if (!choice_.OnStatus(status.run_id, status.step, status.state)) {
+    unfollowed_status_ = status;  // another world's, or of a run not drawn yet
+    return;
+  }
   NewViolations added;
   if (status_seen_ && status.run_id == status_.run_id) {
     added.boundary = status.boundary_errors > status_.boundary_errors;
@@ -147,6 +174,11 @@ void BusFrameCollector::OnStatus(const run_status_t& status) {
 
 bool BusFrameCollector::TakeFrame(ViewFrame* frame, uint64_t* version) {
   std::lock_guard<std::mutex> lock(mutex_);
+  const std::optional<ViewFrame::OtherWorld> other_world = choice_.OtherWorldHeard();
+  if (other_world != other_world_) {  // heard, or gone quiet: said even when the run drawn is still
+    other_world_ = other_world;
+    ++version_;
+  }
   if (*version == version_) return false;
   *version = version_;
   frame->run_id = run_id_;
@@ -169,7 +201,13 @@ bool BusFrameCollector::TakeFrame(ViewFrame* frame, uint64_t* version) {
   frame->radio_links.clear();
   frame->violations.assign(marks_.begin(), marks_.end());
   frame->violations_located = marks_located_;
+  frame->other_world = other_world_;
   return true;
+}
+
+bool BusFrameCollector::Follow(int64_t run_id) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return choice_.Choose(run_id);
 }
 
 int64_t BusFrameCollector::bad_messages() const {

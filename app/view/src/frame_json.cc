@@ -103,6 +103,23 @@ std::string FrameJson(const ViewFrame& frame) {
   for (const ViolationMark& mark : frame.violations) AppendViolation(json, mark);
   json.EndArray();
   json.Key("located").Integer(frame.violations_located);
+  json.Key("other_world");
+  if (frame.other_world) {
+    const ViewFrame::OtherWorld& other = *frame.other_world;
+    json.BeginObject();
+    json.Key("run").String(std::to_string(other.run_id));
+    json.Key("step").Integer(other.step);
+    json.Key("state");
+    if (other.state >= 0) {
+      json.Integer(other.state);
+    } else {
+      json.Null();
+    }
+    json.Key("runs").Integer(other.runs);
+    json.EndObject();
+  } else {
+    json.Null();
+  }
   json.EndObject();
   return out;
 }

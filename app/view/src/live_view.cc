@@ -1,10 +1,15 @@
 #include "dream/view/live_view.h"
 
+#include <spdlog/spdlog.h>
+
+#include <charconv>
 #include <exception>
+#include <string_view>
 #include <vector>
 #include <utility>
 
 #include "dream/lcm/log_reader.h"
+#include "dream/lcm/run_id.h"
 #include "dream/view/frame_json.h"
 #include "dream/view/thread_priority.h"
 
@@ -16,6 +21,7 @@ LiveView::LiveView(lcm::LcmInterface& bus, ViewServer& server, ViewSetup setup)
       collector_(bus, setup_.world),
       pacer_(setup_.frame_rates, setup_.world.time_step_s) {
   server_.SetSetup(SetupJson(setup_));
+  server_.SetClientMessageHandler([this](const std::string& message) { OnPageMessage(message); });
   pump_ = std::thread([this] {
     LowerThisThreadsPriority();
     while (!stop_.load()) {
@@ -26,6 +32,7 @@ LiveView::LiveView(lcm::LcmInterface& bus, ViewServer& server, ViewSetup setup)
 }
 
 LiveView::~LiveView() {
+  server_.SetClientMessageHandler(nullptr);  // synchronous: no page's message reaches a half-destroyed view
   stop_.store(true);
   if (pump_.joinable()) pump_.join();
   PumpOnce();  // the run's last state (FINISHED) reaches the page
@@ -41,6 +48,17 @@ void LiveView::PumpOnce() {
   }
   server_.Broadcast(FrameJson(frame_));
   frames_sent_.fetch_add(1);
+}
+
+bool LiveView::OnPageMessage(const std::string& message) {
+  constexpr std::string_view kFollow = "follow ";
+  if (message.compare(0, kFollow.size(), kFollow) != 0) return false;
+  const char* const end = message.data() + message.size();
+  int64_t run_id = 0;
+  const auto [parsed, error] = std::from_chars(message.data() + kFollow.size(), end, run_id);
+  if (error != std::errc() || parsed != end || !collector_.Follow(run_id)) return false;
+  spdlog::info("dream view: a page chose run {}: it is drawn from its next step", lcm::RunIdText(run_id));
+  return true;
 }
 
 void LiveView::ShowEndOf(const std::string& log_path) {

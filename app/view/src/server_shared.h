@@ -3,7 +3,9 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -31,6 +33,20 @@ struct ServerShared {
   std::atomic<int64_t> dropped_frames{0};
   /// WebSocket writes started and not completed (the server waits for them, briefly, when it stops).
   std::atomic<int> writes_in_flight{0};
+
+  /// What a page sends (ViewServer::SetClientMessageHandler), under its own
+  /// lock: the handler is set from other threads and called on the server's.
+  std::mutex client_message_mutex;
+  std::function<void(const std::string&)> on_client_message;
+  /// Hands a page's message to the handler, if any; what it throws is dropped.
+  void HandClientMessage(const std::string& message) {
+    std::lock_guard<std::mutex> lock(client_message_mutex);
+    if (!on_client_message) return;
+    try {
+      on_client_message(message);
+    } catch (...) {  // a page's message is never worth the server's thread
+    }
+  }
 };
 
 }  // namespace dream::view

@@ -7,6 +7,7 @@
 #include <boost/asio/post.hpp>
 #include <chrono>
 #include <future>
+#include <mutex>
 #include <stdexcept>
 #include <thread>
 #include <utility>
@@ -147,6 +148,11 @@ void ViewServer::SetSetup(std::string setup_json) {
 void ViewServer::SetRunData(std::string run_json) {
   auto data = std::make_shared<const std::string>(std::move(run_json));
   net::post(impl_->io_, [impl = impl_.get(), data] { impl->shared_->run_data = data; });
+}
+
+void ViewServer::SetClientMessageHandler(std::function<void(const std::string&)> handler) {
+  std::lock_guard<std::mutex> lock(impl_->shared_->client_message_mutex);
+  impl_->shared_->on_client_message = std::move(handler);
 }
 
 void ViewServer::Broadcast(std::string frame_json) {

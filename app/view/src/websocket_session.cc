@@ -41,6 +41,7 @@ void WebSocketSession::Read() {
       self->Stop();
       return;
     }
+    if (self->ws_.got_text()) self->shared_.HandClientMessage(beast::buffers_to_string(self->read_buffer_.data()));
     self->read_buffer_.consume(self->read_buffer_.size());
     self->Read();
   });

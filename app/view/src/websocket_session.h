@@ -15,7 +15,8 @@ namespace dream::view {
 /// frame sent while it keeps up; a frame arriving while its ClientQueue is
 /// full drops the oldest waiting one. What the browser sends is read (at most
 /// ViewServer::kMaxClientMessageBytes a message, else the connection is
-/// closed) and ignored: the page has nothing to tell the server.
+/// closed) and its text handed to the server's client message handler (the
+/// user's choice of the run to draw), if any.
 class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
  public:
   WebSocketSession(boost::asio::ip::tcp::socket socket, ServerShared& shared);

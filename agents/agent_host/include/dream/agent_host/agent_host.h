@@ -7,10 +7,10 @@
 #include <vector>
 
 #include "dream/agents/framework/robot_agent.h"
-#include "dream/agent_host/world_follower.h"
 #include "dream/agents/framework/world_snapshot.h"
 #include "dream/lcm/bad_message_log.h"
 #include "dream/lcm/lcm_interface.h"
+#include "dream/lcm/world_follower.h"
 #include "dream/radio_message_t.hpp"
 #include "dream/run_status_t.hpp"
 #include "dream/velocity_command_t.hpp"
@@ -68,7 +68,7 @@ class AgentHost {
   bool world_finished() const { return world_finished_; }
   int64_t last_step_answered() const { return last_step_answered_; }
   const lcm::BadMessageLog& bad_messages() const { return bad_messages_; }
-  const WorldFollower& follower() const { return follower_; }
+  const lcm::WorldFollower& follower() const { return follower_; }
   const std::string& end_detail() const { return end_detail_; }
   const agents::RobotAgent& agent(size_t i) const { return *robots_.at(i).agent; }
   /// Radio payloads hosted robot `i` (in the order given) dropped because
@@ -113,7 +113,7 @@ class AgentHost {
   std::string end_detail_;
   int64_t last_step_answered_ = -1;
   bool saw_poses_since_check_ = false;
-  WorldFollower follower_;
+  lcm::WorldFollower follower_;
   int64_t obstacles_run_id_ = 0;  // run of world_.obstacles
   int expected_robots_ = -1;      // -1: any
   int last_other_world_robots_ = -1;  // the count of the last refused world

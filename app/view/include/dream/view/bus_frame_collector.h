@@ -2,7 +2,9 @@
 
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,6 +12,7 @@
 #include "dream/obstacles_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
+#include "dream/view/run_choice.h"
 #include "dream/view/view_frame.h"
 #include "dream/view/violation_locator.h"
 #include "dream/world/world_params.h"
@@ -28,9 +31,12 @@ namespace dream::view {
 /// poses are checked again (ViolationLocator) to place each violation. The
 /// latest kMaxMarks marks are kept.
 ///
-/// A new run (another run_id on DREAM_POSES) starts over. Messages that do
-/// not decode (lcm::Decode, with the message size limits) are counted and
-/// dropped.
+/// One run is drawn (RunChoice: the agents' WorldFollower, and another run
+/// only when it starts cleanly once this one is over), so a forged message or
+/// a second world on the bus wipes nothing; a run drawn from scratch (a new
+/// one, or the same from its start again) starts over. The frame says when
+/// another run is heard. Messages that do not decode (lcm::Decode, with the
+/// message size limits) are counted and dropped.
 class BusFrameCollector {
  public:
   /// Violation marks kept (the latest), so a run colliding every step
@@ -39,11 +45,18 @@ class BusFrameCollector {
 
   /// Subscribes to DREAM_POSES, DREAM_MEASURED_POSES, DREAM_OBSTACLES,
   /// DREAM_STATUS and DREAM_RADIO_<n> on `bus`, until destroyed.
-  BusFrameCollector(lcm::LcmInterface& bus, const world::WorldParams& world);
+  /// `now` is RunChoice's clock (tests give their own).
+  BusFrameCollector(lcm::LcmInterface& bus, const world::WorldParams& world,
+                    std::function<RunChoice::Clock::time_point()> now = &RunChoice::Clock::now);
 
   /// The newest frame, when it changed since `*version` (then updated);
-  /// false when nothing new arrived. Thread-safe against the handlers.
+  /// false when nothing new arrived. A second world heard, or gone quiet,
+  /// changes the frame too. Thread-safe against the handlers.
   bool TakeFrame(ViewFrame* frame, uint64_t* version);
+
+  /// The user's choice of another run heard (RunChoice::Choose): drawn from
+  /// its next poses on. False for a run not heard, or the one drawn.
+  bool Follow(int64_t run_id);
 
   /// Messages that did not decode (forged or foreign), since the start.
   int64_t bad_messages() const;
@@ -55,8 +68,10 @@ class BusFrameCollector {
   void OnPoses();  // poses_in_ decoded: the newest poses
   void OnStatus(const run_status_t& status);
   void StartRun(int64_t run_id);
+  void OnObstacles();  // obstacles_in_ decoded
 
   mutable std::mutex mutex_;
+  RunChoice choice_;
   ViolationLocator locator_;
   // Where the handler decodes (on the bus's thread, outside the lock); then
   // swapped with the newest, so it allocates only when a message grows.
@@ -74,6 +89,11 @@ class BusFrameCollector {
   obstacles_t previous_obstacles_{};
   run_status_t status_{};
   bool status_seen_ = false;
+  // The newest status and obstacles of a run not drawn: a run drawn from its
+  // first poses on gets them, as they come just before.
+  run_status_t unfollowed_status_{};
+  obstacles_t unfollowed_obstacles_{};
+  std::optional<ViewFrame::OtherWorld> other_world_;  // as last taken
   std::vector<int> radio_senders_;  // since the last TakeFrame
   std::deque<ViolationMark> marks_;
   int64_t marks_located_ = 0;

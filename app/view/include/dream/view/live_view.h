@@ -17,7 +17,9 @@ namespace dream::view {
 /// thread that, at most setup.frame_rates' rate for the run's speed (FramePacer), encodes the newest frame
 /// (with who hears whom, when the setup knows) and broadcasts it. The bus
 /// is handled by its owner (dream view's loop, or the simulator's own loop
-/// in dream run --view): the view adds a handler, never a wait.
+/// in dream run --view): the view adds a handler, never a wait. A page may
+/// choose another run heard on the bus: it sends "follow <run id>" (the id
+/// in decimal, as frames carry it) on its WebSocket (OnPageMessage).
 class LiveView {
  public:
   /// Subscribes on `bus` and starts the pump. `bus` and `server` must outlive
@@ -36,6 +38,9 @@ class LiveView {
   /// messages no handler reads once the world stops (dream run --view).
   /// @throws std::runtime_error naming the file when it cannot be read.
   void ShowEndOf(const std::string& log_path);
+  /// What a page sent: "follow <run id>" draws that run (BusFrameCollector::Follow);
+  /// anything else is ignored. Returns whether it was a choice taken.
+  bool OnPageMessage(const std::string& message);
   /// Frames broadcast so far.
   int64_t frames_sent() const { return frames_sent_.load(); }
   const BusFrameCollector& collector() const { return collector_; }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -40,6 +41,17 @@ struct ViewFrame {
     static Status Of(const run_status_t& message);
   };
   static constexpr size_t kMaxDetailChars = 300;
+  /// A second world on the bus: another run heard lately, not drawn (RunChoice).
+  struct OtherWorld {
+    int64_t run_id = 0;  ///< the other run heard last
+    int64_t step = -1;   ///< its newest step heard; -1: none
+    int state = -1;      ///< its newest DREAM_STATUS state; -1: none heard
+    int runs = 0;        ///< other runs heard lately, this one included
+    bool operator==(const OtherWorld& other) const {
+      return run_id == other.run_id && step == other.step && state == other.state && runs == other.runs;
+    }
+    bool operator!=(const OtherWorld& other) const { return !(*this == other); }
+  };
 
   int64_t run_id = 0;
   int64_t step = -1;   ///< -1: no poses seen yet
@@ -60,6 +72,8 @@ struct ViewFrame {
   /// and how many were located in the run so far (marks beyond the list were dropped).
   std::vector<ViolationMark> violations;
   int64_t violations_located = 0;
+  /// Another run heard lately on the bus and not drawn; none when alone.
+  std::optional<OtherWorld> other_world;
 };
 
 }  // namespace dream::view

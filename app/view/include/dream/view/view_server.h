@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -54,6 +55,12 @@ class ViewServer {
   /// Sends `frame_json` to every browser (queued per browser; never waits),
   /// and keeps it for browsers that connect later. Thread-safe.
   void Broadcast(std::string frame_json);
+
+  /// Text messages browsers send on their WebSocket (at most
+  /// kMaxClientMessageBytes each) are handed to `handler` on the server's
+  /// thread; none (empty) drops them. Once this returns, the handler it
+  /// replaced is not running and never called again. Thread-safe.
+  void SetClientMessageHandler(std::function<void(const std::string&)> handler);
 
   /// Browsers connected now, and frames dropped for slow ones so far.
   size_t clients() const;

@@ -1,16 +1,16 @@
-#include "dream/agent_host/world_follower.h"
+#include "dream/lcm/world_follower.h"
 
 #include <gtest/gtest.h>
 
-namespace dream::agents {
+namespace dream::lcm {
 namespace {
 
-using Decision = agent_host::WorldFollower::StepDecision;
+using Decision = WorldFollower::StepDecision;
 constexpr int64_t kRun = 0x7e57;
 constexpr int64_t kOtherRun = 0xbad;
 
 TEST(WorldFollowerTest, JoinsTheFirstRunAndTakesItsNextStepsAndResends) {
-  agent_host::WorldFollower follower;
+  WorldFollower follower;
   EXPECT_FALSE(follower.InRun(kRun));  // nothing joined yet
   EXPECT_EQ(follower.OnPoses(kRun, 4), Decision::kNewStep);
   EXPECT_EQ(follower.run_id(), kRun);
@@ -22,7 +22,7 @@ TEST(WorldFollowerTest, JoinsTheFirstRunAndTakesItsNextStepsAndResends) {
 }
 
 TEST(WorldFollowerTest, RunIdZeroAndNegativeStepsNeverJoin) {
-  agent_host::WorldFollower follower;
+  WorldFollower follower;
   EXPECT_EQ(follower.OnPoses(0, 1), Decision::kIgnore);
   EXPECT_EQ(follower.OnPoses(kRun, -3), Decision::kIgnore);
   EXPECT_FALSE(follower.joined());
@@ -30,7 +30,7 @@ TEST(WorldFollowerTest, RunIdZeroAndNegativeStepsNeverJoin) {
 }
 
 TEST(WorldFollowerTest, AnotherRunIsIgnoredAndRemembered) {
-  agent_host::WorldFollower follower;
+  WorldFollower follower;
   follower.OnPoses(kRun, 0);
   EXPECT_EQ(follower.OnPoses(kOtherRun, 1), Decision::kIgnore);
   EXPECT_FALSE(follower.InRun(kOtherRun));
@@ -40,16 +40,16 @@ TEST(WorldFollowerTest, AnotherRunIsIgnoredAndRemembered) {
 }
 
 TEST(WorldFollowerTest, OtherRunsKeptAreBounded) {
-  agent_host::WorldFollower follower;
+  WorldFollower follower;
   follower.OnPoses(kRun, 0);
   for (int64_t id = 1; id < 1000; ++id) follower.OnPoses(kRun + id, 1);
-  EXPECT_EQ(follower.other_runs().size(), agent_host::WorldFollower::kMaxOtherRuns);
+  EXPECT_EQ(follower.other_runs().size(), WorldFollower::kMaxOtherRuns);
 }
 
 TEST(WorldFollowerTest, AShortGapIsTakenAFarJumpOnlyOnceTheNextStepConfirmsIt) {
-  agent_host::WorldFollower follower;
+  WorldFollower follower;
   follower.OnPoses(kRun, 10);
-  EXPECT_EQ(follower.OnPoses(kRun, 10 + agent_host::WorldFollower::kMaxStepGap), Decision::kNewStep);  // lost datagrams
+  EXPECT_EQ(follower.OnPoses(kRun, 10 + WorldFollower::kMaxStepGap), Decision::kNewStep);  // lost datagrams
   const int64_t at = follower.step();
   EXPECT_EQ(follower.OnPoses(kRun, int64_t{1} << 62), Decision::kIgnore);  // a forged step
   EXPECT_EQ(follower.OnPoses(kRun, at + 1), Decision::kNewStep);           // the real world goes on
@@ -61,7 +61,7 @@ TEST(WorldFollowerTest, AShortGapIsTakenAFarJumpOnlyOnceTheNextStepConfirmsIt) {
 }
 
 TEST(WorldFollowerTest, OnlyTheFollowedRunsEndAtOrAfterItsStepEndsIt) {
-  agent_host::WorldFollower follower;
+  WorldFollower follower;
   EXPECT_FALSE(follower.EndsRun(kRun, 0));  // not joined: a stale FINISHED of an earlier run
   follower.OnPoses(kRun, 7);
   EXPECT_FALSE(follower.EndsRun(kRun, 6));
@@ -69,4 +69,4 @@ TEST(WorldFollowerTest, OnlyTheFollowedRunsEndAtOrAfterItsStepEndsIt) {
 }
 
 }  // namespace
-}  // namespace dream::agents
+}  // namespace dream::lcm

@@ -1,17 +1,17 @@
-#include "dream/agent_host/world_follower.h"
+#include "dream/lcm/world_follower.h"
 
 #include <spdlog/spdlog.h>
 
 #include "dream/lcm/run_id.h"
 
-namespace dream::agent_host {
+namespace dream::lcm {
 
 void WorldFollower::NoteOtherRun(int64_t run_id) {
   if (other_runs_.size() >= kMaxOtherRuns || !other_runs_.insert(run_id).second) return;
   spdlog::error(
-      "another world (run {}) publishes on this LCM URL while this agent follows run {}: two "
+      "another world (run {}) publishes on this LCM URL while this process follows run {}: two "
       "simulators (or a stale one) share the URL. Its messages are ignored; stop it or give each run its own URL",
-      lcm::RunIdText(run_id), lcm::RunIdText(run_id_));
+      RunIdText(run_id), RunIdText(run_id_));
 }
 
 WorldFollower::StepDecision WorldFollower::OnPoses(int64_t run_id, int64_t step) {
@@ -34,7 +34,7 @@ WorldFollower::StepDecision WorldFollower::OnPoses(int64_t run_id, int64_t step)
   const bool confirmed = unconfirmed_step_ && step == *unconfirmed_step_ + 1;
   if (short_gap || confirmed) {
     if (confirmed && !short_gap) {
-      spdlog::warn("run {}: the world moved from step {} to step {}; following it", lcm::RunIdText(run_id_),
+      spdlog::warn("run {}: the world moved from step {} to step {}; following it", RunIdText(run_id_),
                    step_, step);
     }
     step_ = step;
@@ -45,7 +45,7 @@ WorldFollower::StepDecision WorldFollower::OnPoses(int64_t run_id, int64_t step)
   ++steps_out_of_sequence_;
   if (steps_out_of_sequence_ == 1 || steps_out_of_sequence_ % 100 == 0) {
     spdlog::warn("DREAM_POSES: ignored step {} of run {} while at step {} ({} out of sequence so far)", step,
-                 lcm::RunIdText(run_id_), step_, steps_out_of_sequence_);
+                 RunIdText(run_id_), step_, steps_out_of_sequence_);
   }
   return StepDecision::kIgnore;
 }
@@ -59,4 +59,4 @@ bool WorldFollower::InRun(int64_t run_id) {
 
 bool WorldFollower::EndsRun(int64_t run_id, int64_t step) { return InRun(run_id) && step >= step_; }
 
-}  // namespace dream::agent_host
+}  // namespace dream::lcm

@@ -4,16 +4,18 @@
 #include <optional>
 #include <set>
 
-namespace dream::agent_host {
+namespace dream::lcm {
 
-/// Decides which world messages an agent host acts on, so that a stray or
-/// forged message cannot steer or freeze its robots: the host follows the run
+/// Decides which world messages a follower of one run acts on (an agent
+/// host; dream view's RunChoice), so that a stray or forged message cannot
+/// steer or freeze its robots, nor redraw the run watched: it follows the run
 /// (run_id) it joined with its first DREAM_POSES, and within it takes only
 /// the next step, a resend of the current one, or a short forward gap (lost
 /// datagrams in real-time mode). A jump further away (or backwards) is taken
 /// only once the world confirms it with the step after it, which a single
 /// forged datagram cannot do. Statuses and radio messages of other runs are
 /// ignored; other runs seen are remembered (a second world on the same URL).
+/// Here, below the agents and the view, so both follow a run by one rule.
 ///
 /// LCM has no authentication: this stops mistakes (a second `dream sim`, a
 /// stale process) and blind forgeries, not a sender who copies the run id
@@ -58,4 +60,4 @@ class WorldFollower {
   int64_t steps_out_of_sequence_ = 0;
 };
 
-}  // namespace dream::agent_host
+}  // namespace dream::lcm
