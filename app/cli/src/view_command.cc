@@ -3,6 +3,7 @@
 #include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -10,7 +11,9 @@
 
 #include "command_line.h"
 #include "commands.h"
+#include "dream/files/file_text.h"
 #include "dream/run_config/run_config.h"
+#include "dream/session/experiment_goal.h"
 #include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/lcm_url.h"
 #include "dream/run_log/run_log.h"
@@ -89,6 +92,28 @@ int RunLiveView(const ViewArgs& args) {
   return kExitOk;
 }
 
+/// The run's judgement from summary.json beside its log: what the page shows
+/// as the verdict at the run's end (none without a readable summary).
+std::optional<view::ViewSetup::Judged> JudgedOfRun(const std::string& log_path) {
+  const std::string summary_path = (fs::path(log_path).parent_path() / "summary.json").string();
+  std::error_code error;
+  if (!fs::exists(summary_path, error)) return std::nullopt;
+  try {
+    const nlohmann::json summary = nlohmann::json::parse(files::ReadFileText(summary_path));
+    view::ViewSetup::Judged judged;
+    judged.verdict = summary.value("verdict", std::string());
+    if (judged.verdict.empty()) return std::nullopt;
+    for (const nlohmann::json& reason : summary.value("verdict_reasons", nlohmann::json::array())) {
+      if (reason.is_object()) judged.reasons.push_back(reason.value("rule", "?") + ": " + reason.value("problem", ""));
+    }
+    judged.goal = session::ExperimentGoal::Text(summary.value("goal", nlohmann::json::object()));
+    return judged;
+  } catch (const std::exception& e) {
+    spdlog::warn("{}: not read, the page shows the verdict of the counts only: {}", summary_path, e.what());
+    return std::nullopt;
+  }
+}
+
 int RunReplayView(const ViewArgs& args) {
   const std::string log_path = RunLogPath(args.run);
   const run_log::RunLog log = run_log::RunLog::Read(log_path);
@@ -102,6 +127,7 @@ int RunReplayView(const ViewArgs& args) {
   }
   setup.mode = view::ViewSetup::Mode::kReplay;
   setup.source = args.run;
+  setup.judged = JudgedOfRun(log_path);
   view::ViewServer server({args.bind, args.port, true, 8});
   server.SetSetup(view::SetupJson(setup));
   server.SetRunData(view::RunReplayJson(log, setup));

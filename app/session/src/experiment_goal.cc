@@ -72,4 +72,18 @@ nlohmann::ordered_json ExperimentGoal::Json() const {
   return json;
 }
 
+std::string ExperimentGoal::Text(const nlohmann::json& goal) {
+  if (!goal.is_object()) return "none declared";
+  const std::string detail = goal.value("detail", std::string());
+  const std::string judge_error = goal.value("judge_error", std::string());
+  if (!judge_error.empty()) return "could not be judged: " + judge_error;
+  if (!goal.value("has_criterion", false)) return detail.empty() ? "none declared" : detail;
+  if (goal.value("met", false)) {
+    const long long step = goal.value("completion_step", -1LL);
+    return "met" + (step >= 0 ? " at step " + std::to_string(step) : std::string()) +
+           (detail.empty() ? "" : " (" + detail + ")");
+  }
+  return "missed" + (detail.empty() ? std::string() : " (" + detail + ")");
+}
+
 }  // namespace dream::session

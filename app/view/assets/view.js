@@ -35,6 +35,12 @@
     return "clean";
   }
 
+  // The verdict shown: at a judged run's end, summary.json's (the one judge's,
+  // goal included); before it, the counts' so far.
+  function shownVerdict(c) {
+    return c && c.judged ? c.judged.verdict : verdictOf(c);
+  }
+
   function resize() {
     const ratio = window.devicePixelRatio || 1;
     const box = $("stage").getBoundingClientRect();
@@ -112,9 +118,16 @@
     show("count-actuator", counts && counts.actuator);
     show("count-rejected", counts && counts.rejected);
     show("count-lost", counts && counts.lost ? (counts.lost.length ? counts.lost.join(", ") : "none") : null);
-    const verdict = verdictOf(counts);
+    const verdict = shownVerdict(counts);
     show("verdict", verdict.replace("_", " "));
     if ($("verdict").className !== `verdict ${verdict}`) $("verdict").className = `verdict ${verdict}`;
+    const judged = counts && counts.judged;
+    show("verdict-label", judged ? "verdict" : "verdict so far");
+    if ($("goal-line").hidden === !!judged) $("goal-line").hidden = !judged;
+    if (judged) {
+      show("goal", judged.goal);
+      $("verdict").title = judged.reasons.join("\n");
+    }
   }
 
   // A run id as logs and summary.json print it: 16 hex digits (the frame
@@ -172,7 +185,7 @@
     view.state = {
       mode: view.setup ? view.setup.mode : null, connected: view.connected === true, run: view.run,
       step: s ? s.step : -1, t: s ? s.t : 0, frames: view.frames, robots, counts: view.counts,
-      verdict: verdictOf(view.counts), violations: marks,
+      verdict: shownVerdict(view.counts), violations: marks,
       flashing: s && s.marks ? s.marks.filter((m) => m.flash > 0).length : 0,
       links: s && s.links ? s.links.length : 0, measured: !!(s && s.mx), otherWorld: null, ...extra,
     };
@@ -279,6 +292,7 @@
       // Only the run's last status says these (the log keeps no per-step status here).
       actuator: atEnd ? fin.actuator : null, rejected: atEnd ? fin.rejected : null, conflicts: atEnd ? fin.conflicts : 0,
       lost: atEnd ? fin.lost : null,
+      judged: atEnd && view.setup.judged ? view.setup.judged : null,
     };
     const trailFrames = Math.ceil(TRAIL_SECONDS / view.setup.time_step / run.stride);
     view.paths = at.x.map((_, id) => {

@@ -149,6 +149,15 @@ void AppendSetupFields(JsonWriter& json, const ViewSetup& setup) {
   }
   json.EndArray();
   json.Key("hears_known").Bool(static_cast<bool>(setup.overlays.hears));
+  if (setup.judged) {
+    json.Key("judged").BeginObject();
+    json.Key("verdict").String(setup.judged->verdict);
+    json.Key("reasons").BeginArray();
+    for (const std::string& reason : setup.judged->reasons) json.String(reason);
+    json.EndArray();
+    json.Key("goal").String(setup.judged->goal);
+    json.EndObject();
+  }
 }
 
 std::string SetupJson(const ViewSetup& setup) {

@@ -13,6 +13,7 @@
 #include "dream/files/file_text.h"
 #include "dream/files/json_text.h"
 #include "dream/node/run_summary.h"
+#include "dream/session/experiment_goal.h"
 #include "dream/world/run_verdict.h"
 #include "dream/workflows/import_workflow.h"
 
@@ -51,18 +52,6 @@ nlohmann::json GoalOf(const std::string& summary_path) {
     spdlog::warn("{}: cannot read the imported run's goal: {}", summary_path, error.what());
     return nlohmann::json::object();
   }
-}
-
-/// One line for a run's goal: met (and when), missed (and how), or none declared.
-std::string GoalText(const nlohmann::json& goal) {
-  const std::string detail = goal.value("detail", std::string());
-  if (!goal.value("has_criterion", false)) return detail.empty() ? "none declared" : detail;
-  if (goal.value("met", false)) {
-    const long long step = goal.value("completion_step", -1LL);
-    return "met" + (step >= 0 ? " at step " + std::to_string(step) : std::string()) +
-           (detail.empty() ? "" : " (" + detail + ")");
-  }
-  return "missed" + (detail.empty() ? std::string() : " (" + detail + ")");
 }
 
 }  // namespace
@@ -260,7 +249,7 @@ ImportWorkflow::Result CheckSubmission::ImportLabRun(const std::string& out_dir,
   ImportWorkflow::Result imported = importer.Import(import);
   out_ << "\nthe lab run as dream import judges it:\n";
   importer.PrintVerdict(imported);
-  out_ << "goal: " << GoalText(GoalOf(imported.summary_path)) << "\n";
+  out_ << "goal: " << session::ExperimentGoal::Text(GoalOf(imported.summary_path)) << "\n";
   return imported;
 }
 

@@ -35,6 +35,9 @@ struct ExperimentGoal {
   /// {kind, has_criterion, met, completion_step, detail} for summary.json,
   /// and judge_error when there is one.
   nlohmann::ordered_json Json() const;
+  /// One line for summary.json's goal (as Json() writes it): "met at step N
+  /// (detail)", "missed (detail)", "could not be judged: error", or "none declared".
+  static std::string Text(const nlohmann::json& goal);
 };
 
 }  // namespace dream::session

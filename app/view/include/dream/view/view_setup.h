@@ -1,6 +1,8 @@
 #pragma once
 
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "dream/render/arena_overlays.h"
 #include "dream/view/frame_rates.h"
@@ -24,6 +26,16 @@ struct ViewSetup {
   /// (the page draws no more often). `dream view --fps`, `dream run
   /// --view-fps` set one rate (FrameRates::One).
   FrameRates frame_rates;
+  /// The run's judgement as its summary.json holds it (the one judge's:
+  /// Robotarium errors, the goal, the run's state), for a replay of a run
+  /// folder that has one: the page shows it as the verdict at the run's end,
+  /// so the view never ends a run with a verdict of its own.
+  struct Judged {
+    std::string verdict;               ///< clean, warning, not_ready or rejected
+    std::vector<std::string> reasons;  ///< "rule: problem" each
+    std::string goal;                  ///< "met at step N (...)", "missed (...)", "none declared"
+  };
+  std::optional<Judged> judged;
 };
 
 }  // namespace dream::view
