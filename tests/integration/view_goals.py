@@ -11,7 +11,8 @@ What the page is sent is read at the JSON level: the setup message on the view's
   with: a summary.json edited to other points shows those), and without summary.json, the points
   computed from config.yaml;
 - a goal_points() that raises: the view starts anyway, draws no goals and says why (the file and
-  line of the exception).
+  line of the exception);
+- replay: the setup carries summary.json's verdict and goal, which the page shows at the run's end.
 And `--fps`: the page is told the rate (it draws no more often); 0 is refused.
 
 Usage: view_goals.py --dream BIN --source DIR
@@ -97,6 +98,12 @@ def test(ctx):
     with urllib.request.urlopen(URL.search(ctx.output("replay")).group(1) + "run.json", timeout=30) as response:
         replayed = json.load(response)["goals"]
     check(same_points(replayed, moved), f"the replay draws goals {replayed}, its summary.json declares {moved}")
+    # One judge (issue 33): at the run's end the page shows summary.json's verdict and goal, not its own.
+    judged = setup_message(ctx, "replay").get("judged")
+    check(judged is not None and judged["verdict"] == summary["verdict"]
+          and judged["goal"].startswith("met" if summary["goal"]["met"] else "missed"),
+          f"the replay's setup should carry summary.json's verdict {summary['verdict']} and goal "
+          f"{summary['goal']}: {judged}")
     ctx.stop("replay")
 
     os.remove("runs/ring/summary.json")

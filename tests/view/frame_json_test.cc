@@ -129,5 +129,19 @@ TEST(FrameJsonTest, SetupSaysTheArenaAndTheConfigsGoals) {
   EXPECT_EQ(json["fps"], 12);  // the page draws no more often than frames come
 }
 
+// One judge (issue 33): a replay's setup carries the run's summary.json
+// verdict and goal, which the page shows at the run's end.
+TEST(FrameJsonTest, ASetupCarriesTheRunsJudgementWhenItHasOne) {
+  ViewSetup setup;
+  setup.mode = ViewSetup::Mode::kReplay;
+  EXPECT_EQ(SetupJson(setup).find("\"judged\""), std::string::npos);
+  setup.judged = ViewSetup::Judged{"not_ready", {"goal: the go_to_goal experiment missed its goal"}, "missed (worst 0.03 m)"};
+  const std::string json = SetupJson(setup);
+  EXPECT_NE(json.find("\"judged\":{\"verdict\":\"not_ready\",\"reasons\":[\"goal: the go_to_goal experiment missed its goal\"],"
+                      "\"goal\":\"missed (worst 0.03 m)\"}"),
+            std::string::npos)
+      << json;
+}
+
 }  // namespace
 }  // namespace dream::view
