@@ -17,6 +17,7 @@
 Usage: sweep_hostile.py --dream BIN --source DIR
 """
 
+import fcntl
 import hashlib
 import os
 import re
@@ -103,7 +104,9 @@ def plan_run_still_running(ctx, dream, config):
     check(code == 75 and "still running" in text, f"a second sh run.sh 0 exited {code}: {text}")
     check(task.poll() is None, "the second run.sh disturbed the first")
 
-    ctx.stop("task0")  # killed: the lock goes with it, no exit record is written
+    ctx.stop("task0")  # killed: no exit record is written, and the lock goes with its processes
+    with open(os.path.join(busy, ".dream.lock")) as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)  # waits until the last of them has exited
     code, text = ctx.run([dream, "sweep", "status", out], timeout=30, expect=0)
     check(re.search(r"running\s+0", text) and "killed before it ended" in text, f"status after the kill: {text}")
     return "a running plan run: status 'running', resume ran the other and left it alone, a second run.sh refused"
@@ -132,8 +135,8 @@ def edited_plan_and_links(ctx, dream, config):
     check(os.listdir(victim) == ["summary.json"] and read_text(os.path.join(victim, "summary.json")) == "precious",
           f"the victim folder was touched: {os.listdir(victim)}")
     code, text = ctx.run([dream, "sweep", "resume", out], timeout=30)
-    check(code == EXIT_INPUT and "plan.tsv changed since the sweep was planned" in text,
-          f"resume of an edited plan exited {code}: {text[-400:]}")
+    check(code == EXIT_INPUT and "plan.tsv" in text and "victim" in text, f"resume of an edited plan exited {code}: {text[-400:]}")
+    check(os.listdir(victim) == ["summary.json"], f"resume touched the victim folder: {os.listdir(victim)}")
     write_text(plan_path, plan)
     write_text(run_sh, script)
 

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "dream/files/atomic_file.h"
+#include "dream/files/output_folder.h"
 #include "dream/workflows/slurm_jobs.h"
 
 namespace dream::workflows {
@@ -94,9 +95,8 @@ std::string SlurmSubmission::SubmitJob(std::vector<std::string> argv, const std:
 SlurmSubmission::Submitted SlurmSubmission::Submit(const std::vector<size_t>& indices, const Options& options) {
   if (indices.empty()) throw std::invalid_argument("no runs to submit");
   CheckFolderPath(folder_.dir());
-  std::error_code error;
-  std::filesystem::create_directories(folder_.Path(SweepFolder::kSlurmFolder), error);
-  if (error) throw std::runtime_error("cannot create " + folder_.Path(SweepFolder::kSlurmFolder) + ": " + error.message());
+  // Checked to stay inside the sweep folder: a slurm/ linked elsewhere would take the job scripts with it.
+  files::OutputFolder(folder_.dir()).MakeSubfolder(SweepFolder::kSlurmFolder);
   const std::string array_script = folder_.Path("slurm/array.sh");
   const std::string table_script = folder_.Path("slurm/table.sh");
   files::WriteFileAtomically(array_script,
