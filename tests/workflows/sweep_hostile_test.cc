@@ -133,6 +133,24 @@ TEST_F(SweepWorkflowTest, ARunStillRunningIsRunningInStatusAndResumeLeavesItAlon
   EXPECT_EQ(started_[0].at(4), busy);
 }
 
+TEST_F(SweepWorkflowTest, ACancelledSlurmTaskWhoseRunIsStillEndingIsCancelledAndLeftAloneByResume) {
+  settings_.engine = SweepSettings::Engine::kSlurm;
+  Workflow().Start(settings_, Base());
+  const SweepFolder folder(out().string());
+  const std::string ending = folder.RunDir(folder.ReadPlan().runs()[1].name);
+  std::ofstream(folder.Path("slurm/100_1.out")) << "slurmstepd: error: *** JOB 102 ON vm CANCELLED AT 2026-11-27T12:00:00 ***\n";
+  RunningRun still_writing(ending);  // its dream run, past Slurm's notice, still writing its log
+
+  EXPECT_EQ(Workflow().Table(out().string()).summary.failed, 1u);
+  EXPECT_NE(ReadText(out() / "sweep.md").find("failed to run (cancelled in Slurm"), std::string::npos);
+  const size_t before = slurm_.Sbatches().size();
+  Workflow().Resume(out().string(), {});
+  const auto sbatches = slurm_.Sbatches();
+  ASSERT_EQ(sbatches.size(), before + 2);
+  EXPECT_EQ(sbatches[before][3], "--array=0,2-3") << "the run still ending was submitted again";
+  EXPECT_EQ(ReadText(ending + "/run.lcmlog.part"), "half a log");
+}
+
 TEST_F(SweepWorkflowTest, ResumeRefusesASweepWhoseConfigSweepJsonOrPlanChangedNamingWhat) {
   Workflow(nullptr, 1).Start(settings_, Base());  // interrupted: three runs to resume, from the base config
   const std::string config = settings_.config_path;

@@ -303,7 +303,11 @@ SweepRunResult SweepFolder::CollectRun(const SweepPlan::Run& run, const std::opt
   const std::string dir = RunDir(run.name);
   const std::string problem = RunFolderProblem(run.name);
   if (!problem.empty()) return SweepRunResult::LostRun(run, problem);
-  if (run_locked) return SweepRunResult::NotRun(run, std::string(kRunningReason));
+  // The lock says it runs, unless Slurm says its task ended: then its processes are only ending (a
+  // cancelled task's dream run still writing its log), and Slurm's word is the row; resume leaves
+  // the run alone while its lock is held either way.
+  const bool ended_in_slurm = slurm && !slurm->Queued();
+  if (run_locked && !ended_in_slurm) return SweepRunResult::NotRun(run, std::string(kRunningReason));
   try {
     if (const std::optional<RunExit> exit = ReadRunExit(run.name)) return JudgeRun(run, *exit);
   } catch (const std::runtime_error& e) {

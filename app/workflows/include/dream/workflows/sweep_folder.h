@@ -96,7 +96,8 @@ class SweepFolder {
   /// the last error line of output.txt: the one judgement of every engine.
   SweepRunResult JudgeRun(const SweepPlan::Run& run, const RunExit& exit) const;
   /// The run's row, from what its folder holds: not run while `run_locked`
-  /// (its dream run holds the folder: running); judged from its exit record
+  /// (its dream run holds the folder: running) unless `slurm` says its task
+  /// ended (its processes are ending: Slurm's word stands); judged from its exit record
   /// and summary.json when it has a record; else not run (`slurm` pending or
   /// running, never started, or `folder_busy`: a local sweep is working in
   /// the folder), or failed when Slurm ended it (cancelled, timed out), its
