@@ -102,12 +102,15 @@ def cancel_and_resume(cluster, args, work):
     check(code == 0, f"Python slurm sweep exited {code}: {text[-500:]}")
     with open(os.path.join(slurm, "slurm", "jobs.txt")) as f:
         array = next(line.split()[1] for line in f if line.startswith("array"))
-    # Wait until one run has finished and the next task runs, then cancel the whole array.
+    # Wait until one run has finished and the next one's dream run has started (its output.txt, no
+    # exit.txt: squeue says RUNNING before the task's script even starts), then cancel the array.
     deadline = time.monotonic() + 60
+    runs = os.path.join(slurm, "runs")
     while time.monotonic() < deadline:
-        finished = [n for n in os.listdir(os.path.join(slurm, "runs"))
-                    if os.path.exists(os.path.join(slurm, "runs", n, "exit.txt"))]
-        if finished and any(s.endswith("|RUNNING") and s.startswith(array + "_") for s in cluster.queue()):
+        finished = [n for n in os.listdir(runs) if os.path.exists(os.path.join(runs, n, "exit.txt"))]
+        started = [n for n in os.listdir(runs) if os.path.exists(os.path.join(runs, n, "output.txt"))
+                   and not os.path.exists(os.path.join(runs, n, "exit.txt"))]
+        if finished and started and any(s.endswith("|RUNNING") and s.startswith(array + "_") for s in cluster.queue()):
             break
         time.sleep(0.05)
     else:
