@@ -13,6 +13,9 @@ started, also when a check fails. It shows:
    those, and the table then equals the local engine's.
 3. A node-side failure: the dream binary the tasks run is gone when they start (exit 127); every
    run is a "failed to run (exit 127: ... not found)" row; resume with an installed dream completes it.
+4. Issue 34: a sweep folder whose name holds '%' (and Slurm's own %A, %j): sbatch gets it quoted
+   (%%), so the tasks' logs and the table land in that folder and every run finishes; a folder
+   holding a backslash (which turns sbatch's symbols off) is refused before anything is submitted.
 Skipped (exit 77) when not root or slurm-wlm / munge are missing.
 
 Usage: sweep_slurm.py --dream BIN --source DIR
@@ -99,12 +102,15 @@ def cancel_and_resume(cluster, args, work):
     check(code == 0, f"Python slurm sweep exited {code}: {text[-500:]}")
     with open(os.path.join(slurm, "slurm", "jobs.txt")) as f:
         array = next(line.split()[1] for line in f if line.startswith("array"))
-    # Wait until one run has finished and the next task runs, then cancel the whole array.
+    # Wait until one run has finished and the next one's dream run has started (its output.txt, no
+    # exit.txt: squeue says RUNNING before the task's script even starts), then cancel the array.
     deadline = time.monotonic() + 60
+    runs = os.path.join(slurm, "runs")
     while time.monotonic() < deadline:
-        finished = [n for n in os.listdir(os.path.join(slurm, "runs"))
-                    if os.path.exists(os.path.join(slurm, "runs", n, "exit.txt"))]
-        if finished and any(s.endswith("|RUNNING") and s.startswith(array + "_") for s in cluster.queue()):
+        finished = [n for n in os.listdir(runs) if os.path.exists(os.path.join(runs, n, "exit.txt"))]
+        started = [n for n in os.listdir(runs) if os.path.exists(os.path.join(runs, n, "output.txt"))
+                   and not os.path.exists(os.path.join(runs, n, "exit.txt"))]
+        if finished and started and any(s.endswith("|RUNNING") and s.startswith(array + "_") for s in cluster.queue()):
             break
         time.sleep(0.05)
     else:
@@ -160,6 +166,25 @@ def node_failure(cluster, args, work):
     return "a missing dream on the node is an 'exit 127: ... not found' row; resume completes the sweep"
 
 
+def percent_folder(cluster, args, work):
+    out = os.path.join(work, "100% of %A_%j")
+    config = os.path.join(args.source, "config", "hrvo_circle.yaml")
+    code, text = dream(cluster, args, "sweep", config, "--seeds", "1-2", "--steps", "30", "--out", out, "--engine", "slurm")
+    check(code == 0, f"sweep into {out!r} exited {code}: {text[-500:]}")
+    wait_for_table(cluster, out, 120)
+    with open(os.path.join(out, "slurm", "jobs.txt")) as f:
+        array = next(line.split()[1] for line in f if line.startswith("array"))
+    logs = sorted(n for n in os.listdir(os.path.join(out, "slurm")) if n.endswith(".out"))
+    check(f"{array}_0.out" in logs and f"{array}_1.out" in logs and any(n.startswith("table_") for n in logs),
+          f"the tasks' logs are not in {out}/slurm: {logs}")
+    code, text = dream(cluster, args, "sweep", "status", out)
+    check(code == 0 and "finished     2" in text, f"status of the '%' sweep: {text}")
+    backslash = os.path.join(work, "back\\slash")
+    code, text = dream(cluster, args, "sweep", config, "--seeds", "1", "--out", backslash, "--engine", "slurm")
+    check(code == 1 and "backslash" in text and not os.path.exists(backslash), f"--out with a backslash exited {code}: {text}")
+    return "a folder named '100% of %A_%j': logs and table in it, 2 finished; a backslash refused"
+
+
 def test(ctx, args):
     work = ctx.path("work")
     os.makedirs(work)
@@ -170,7 +195,7 @@ def test(ctx, args):
         shutil.rmtree(folder, ignore_errors=True)
         raise
     try:
-        for part in (same_sweep, cancel_and_resume, node_failure):
+        for part in (same_sweep, cancel_and_resume, node_failure, percent_folder):
             started = time.monotonic()
             print(f"{part(cluster, args, work)} ({time.monotonic() - started:.1f} s)", flush=True)
     finally:

@@ -18,8 +18,11 @@ struct CollectedSweep {
   nlohmann::json settings;                           ///< sweep.json
   std::vector<SweepRunResult> results;               ///< per run, plan order
   std::vector<std::optional<SlurmTaskState>> slurm;  ///< per run: what Slurm says, if anything
+  std::vector<bool> locked;                          ///< per run: its folder's lock is held (it runs)
   bool busy = false;                                 ///< a local sweep holds the folder
   std::string note;                                  ///< e.g. squeue could not be asked
+  std::vector<std::string> changed_inputs;           ///< SweepInputs::Changed: what changed since planned
+  std::string unchecked_inputs;                      ///< what could not be checked
 };
 
 }  // namespace dream::workflows

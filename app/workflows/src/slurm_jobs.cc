@@ -1,9 +1,11 @@
 #include "dream/workflows/slurm_jobs.h"
 
+#include <filesystem>
 #include <sstream>
 #include <stdexcept>
 
 #include "dream/files/atomic_file.h"
+#include "dream/files/file_text.h"
 #include "replace_file.h"
 
 namespace dream::workflows {
@@ -27,8 +29,10 @@ std::string JoinedIds(const std::vector<std::string>& ids) {
 
 SlurmJobs::SlurmJobs(const SweepFolder& folder) : folder_(folder) {
   const std::string path = folder_.Path(kJobsFile);
-  const std::string text = ReadFileHead(path, kMaxJobsFileBytes + 1);
-  if (text.size() > kMaxJobsFileBytes) throw std::runtime_error(path + ": larger than any list of jobs");
+  std::error_code error;
+  // No jobs.txt: no job was submitted. One that is there is read bounded, a FIFO refused.
+  if (!std::filesystem::exists(std::filesystem::symlink_status(path, error))) return;
+  const std::string text = files::ReadFileText(path, kMaxJobsFileBytes);
   std::istringstream in(text);
   std::string line;
   for (size_t number = 1; std::getline(in, line); ++number) {

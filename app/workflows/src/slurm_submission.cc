@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "dream/files/atomic_file.h"
+#include "dream/files/output_folder.h"
 #include "dream/workflows/slurm_jobs.h"
 
 namespace dream::workflows {
@@ -43,6 +44,19 @@ bool SlurmSubmission::SetsTimeLimit(const std::vector<std::string>& options) {
   return std::any_of(options.begin(), options.end(), [](const std::string& option) {
     return option == "-t" || option.rfind("--time", 0) == 0 || (option.rfind("-t", 0) == 0 && option.size() > 2);
   });
+}
+
+std::string SlurmSubmission::OutputPattern(const std::string& path) {
+  std::string pattern;
+  for (char c : path) pattern += c == '%' ? std::string("%%") : std::string(1, c);
+  return pattern;
+}
+
+void SlurmSubmission::CheckFolderPath(const std::string& dir) {
+  if (dir.find('\\') != std::string::npos) {
+    throw std::invalid_argument("--out " + dir + ": Slurm cannot name the tasks' logs in a folder whose path holds a "
+                                "backslash (sbatch drops it and every replacement symbol); choose another folder");
+  }
 }
 
 size_t SlurmSubmission::MaxArraySize() {
@@ -80,9 +94,9 @@ std::string SlurmSubmission::SubmitJob(std::vector<std::string> argv, const std:
 
 SlurmSubmission::Submitted SlurmSubmission::Submit(const std::vector<size_t>& indices, const Options& options) {
   if (indices.empty()) throw std::invalid_argument("no runs to submit");
-  std::error_code error;
-  std::filesystem::create_directories(folder_.Path(SweepFolder::kSlurmFolder), error);
-  if (error) throw std::runtime_error("cannot create " + folder_.Path(SweepFolder::kSlurmFolder) + ": " + error.message());
+  CheckFolderPath(folder_.dir());
+  // Checked to stay inside the sweep folder: a slurm/ linked elsewhere would take the job scripts with it.
+  files::OutputFolder(folder_.dir()).MakeSubfolder(SweepFolder::kSlurmFolder);
   const std::string array_script = folder_.Path("slurm/array.sh");
   const std::string table_script = folder_.Path("slurm/table.sh");
   files::WriteFileAtomically(array_script,
@@ -104,7 +118,7 @@ SlurmSubmission::Submitted SlurmSubmission::Submit(const std::vector<size_t>& in
     const size_t offset = chunk * span;
     std::vector<std::string> argv = {"sbatch", "--parsable", "--job-name=" + options.job_name,
                                      "--array=" + ArraySpec(chunk_indices, offset, options.max_parallel),
-                                     "--output=" + folder_.Path("slurm/%A_%a.out")};
+                                     "--output=" + OutputPattern(folder_.Path("slurm/")) + "%A_%a.out"};
     if (!user_time) argv.push_back("--time=" + std::to_string(options.time_limit_minutes));
     argv.insert(argv.end(), options.sbatch_options.begin(), options.sbatch_options.end());
     argv.push_back(array_script);
@@ -123,7 +137,7 @@ SlurmSubmission::Submitted SlurmSubmission::Submit(const std::vector<size_t>& in
   std::string dependency = "--dependency=afterany";
   for (const std::string& id : submitted.array_jobs) dependency += ":" + id;
   std::vector<std::string> argv = {"sbatch", "--parsable", "--job-name=" + options.job_name + "-table", dependency,
-                                   "--output=" + folder_.Path("slurm/table_%j.out")};
+                                   "--output=" + OutputPattern(folder_.Path("slurm/")) + "table_%j.out"};
   if (!user_time) argv.push_back("--time=" + std::to_string(kTableJobMinutes));
   argv.insert(argv.end(), options.sbatch_options.begin(), options.sbatch_options.end());
   argv.push_back(table_script);

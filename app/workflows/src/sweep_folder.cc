@@ -1,16 +1,20 @@
 #include "dream/workflows/sweep_folder.h"
 #include "dream/workflows/shell_quoted.h"
 
+#include <sys/stat.h>
+
 #include <filesystem>
-#include <fstream>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 
+#include "dream/bridge/sha256.h"
 #include "dream/files/atomic_file.h"
+#include "dream/files/file_text.h"
 #include "dream/session/run_exit_code.h"
 #include "dream/workflows/seed_list.h"
 #include "replace_file.h"
+#include "run_folder_lock.h"
 
 namespace dream::workflows {
 namespace {
@@ -63,15 +67,14 @@ std::vector<std::string> SplitTabs(const std::string& line) {
   }
 }
 
-// A run folder's name as SweepPlan makes them: nothing that could leave runs/.
-bool IsRunName(const std::string& name) {
-  if (name.empty() || name.size() > 4096 || name == "." || name == "..") return false;
-  for (char c : name) {
-    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' ||
-                    c == '-' || c == '_';
-    if (!ok) return false;
+/// The whole of a sweep file it reads (bounded, regular files only: a FIFO
+/// is refused, never waited on), its errors saying which folder was meant.
+std::string ReadSweepFile(const std::string& path, size_t max_bytes, const std::string& dir) {
+  try {
+    return files::ReadFileText(path, max_bytes);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(std::string(e.what()) + "; is " + dir + " a sweep folder?");
   }
-  return true;
 }
 
 bool ParseIndex(const std::string& text, size_t& value) {
@@ -92,6 +95,46 @@ SweepFolder::SweepFolder(const std::string& dir) : dir_(fs::absolute(dir).lexica
   while (dir_.size() > 1 && dir_.back() == '/') dir_.pop_back();
 }
 
+bool SweepFolder::IsRunName(const std::string& name) {
+  if (name.empty() || name.size() > 4096 || name == "." || name == "..") return false;
+  for (char c : name) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' ||
+                    c == '-' || c == '_';
+    if (!ok) return false;
+  }
+  return true;
+}
+
+void SweepFolder::CheckFolderPath(const std::string& dir) {
+  const std::string path = SweepFolder(dir).dir();
+  for (char c : path) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || byte == 0x7f) {
+      throw std::invalid_argument("--out " + Escaped(dir) + ": a sweep folder whose path holds a control character (\\n, \\t, ...) "
+                                  "would split the lines of commands.txt and of any scheduler's; choose another folder");
+    }
+  }
+}
+
+std::string SweepFolder::RunDir(const std::string& run_name) const {
+  if (!IsRunName(run_name)) throw std::invalid_argument("'" + Escaped(run_name.substr(0, 80)) + "' is no run folder name of a sweep");
+  return dir_ + "/runs/" + run_name;
+}
+
+std::string SweepFolder::RunFolderProblem(const std::string& run_name) const {
+  struct stat status {};
+  for (const std::string& path : {Path("runs"), RunDir(run_name)}) {
+    if (::lstat(path.c_str(), &status) != 0) return "";  // missing: nothing to refuse yet
+    if (S_ISLNK(status.st_mode)) return path + " is a symbolic link, not a run folder of this sweep";
+    if (!S_ISDIR(status.st_mode)) return path + " is not a folder";
+  }
+  return "";
+}
+
+bool SweepFolder::RunIsLocked(const std::string& run_name) const {
+  return RunFolderProblem(run_name).empty() && RunFolderLock::HeldElsewhere(RunDir(run_name));
+}
+
 void SweepFolder::WritePlan(const SweepPlan& plan) const {
   std::string text =
       "# dream sweep plan: one line per run (number, folder under runs/, seed, the --set values); "
@@ -108,11 +151,7 @@ void SweepFolder::WritePlan(const SweepPlan& plan) const {
 
 SweepPlan SweepFolder::ReadPlan() const {
   const std::string path = Path(kPlanFile);
-  std::error_code error;
-  const auto size = fs::file_size(path, error);
-  if (error) throw std::runtime_error(path + ": cannot read it (" + error.message() + "); is " + dir_ + " a sweep folder?");
-  if (size > kMaxPlanBytes) throw std::runtime_error(path + ": larger than any plan (" + std::to_string(size) + " bytes)");
-  std::ifstream in(path);
+  std::istringstream in(ReadSweepFile(path, kMaxPlanBytes, dir_));
   std::string line;
   size_t number = 0;
   auto bad = [&](const std::string& why) { return std::runtime_error(path + ":" + std::to_string(number) + ": " + why); };
@@ -163,30 +202,44 @@ void SweepFolder::WriteSettings(const nlohmann::json& settings) const {
 
 nlohmann::json SweepFolder::ReadSettings() const {
   const std::string path = Path(kSettingsFile);
-  const std::string text = ReadFileHead(path, kMaxSettingsBytes + 1);
-  if (text.empty()) throw std::runtime_error(path + ": missing or empty; is " + dir_ + " a sweep folder?");
-  if (text.size() > kMaxSettingsBytes) throw std::runtime_error(path + ": larger than any sweep's settings");
+  const std::string text = ReadSweepFile(path, kMaxSettingsBytes, dir_);
+  if (text.empty()) throw std::runtime_error(path + ": empty; is " + dir_ + " a sweep folder?");
   nlohmann::json settings = nlohmann::json::parse(text, nullptr, false);
   if (!settings.is_object()) throw std::runtime_error(path + ": not a JSON object; the file is damaged");
   return settings;
 }
 
 void SweepFolder::WriteRunScript(const std::string& dream_path) const {
+  const std::string plan_sha256 = bridge::Sha256::Hex(ReadSweepFile(Path(kPlanFile), kMaxPlanBytes, dir_));
   const std::string text =
       "#!/bin/sh\n"
       "# Generated by dream sweep: `sh run.sh N` runs run N of plan.tsv, the same dream run\n"
       "# the local engine runs, into runs/<run>/ (console output in output.txt), and writes\n"
       "# runs/<run>/exit.txt (exit code, wall time) last: a folder without it holds no finished run.\n"
+      "# It holds the run folder's lock (.dream.lock, which its dream run inherits) from before it\n"
+      "# clears the folder until exit.txt is written, and refuses a plan.tsv changed since the sweep\n"
+      "# was planned, a run name that could leave runs/, a run folder that is a link, a running run.\n"
       "out=" + ShellQuoted(dir_) + "\n"
       "dream=" + ShellQuoted(dream_path) + "\n"
+      "plan_sha256=" + plan_sha256 + "\n"
       "case \"${1:-}\" in ''|*[!0-9]*) echo \"run.sh: usage: sh run.sh N (N: a run number of $out/plan.tsv)\" >&2; exit 2;; esac\n"
+      "if [ \"$(sha256sum < \"$out/plan.tsv\" | cut -d ' ' -f 1)\" != \"$plan_sha256\" ]; then\n"
+      "  echo \"run.sh: $out/plan.tsv changed since the sweep was planned; run $1 not run\" >&2; exit 2\n"
+      "fi\n"
       "name=$(awk -F '\\t' -v i=\"$1\" '$1 == i { print $2; exit }' \"$out/plan.tsv\")\n"
       "if [ -z \"$name\" ]; then echo \"run.sh: no run $1 in $out/plan.tsv\" >&2; exit 2; fi\n"
+      "case \"$name\" in .|..|*[!A-Za-z0-9._-]*) echo \"run.sh: run $1 of $out/plan.tsv is named '$name', no run folder name; not run\" >&2; exit 2;; esac\n"
       "dir=\"$out/runs/$name\"\n"
+      "if [ -L \"$out/runs\" ] || [ -L \"$dir\" ] || [ ! -d \"$dir\" ]; then\n"
+      "  echo \"run.sh: $dir is not a run folder of this sweep (missing, or a symbolic link); not run\" >&2; exit 2\n"
+      "fi\n"
       "cd \"$dir\" || exit 2\n"
-      "rm -f exit.txt exit.txt.part summary.json run.lcmlog run.lcmlog.part refused.lcmlog trajectories.png\n"
+      "exec 9>>.dream.lock || exit 2\n"
+      "# (waits a little: dream sweep status holds a run's lock for an instant to see whether it runs)\n"
+      "if ! flock -w 5 9; then echo \"run.sh: run $name is still running (a process holds $dir/.dream.lock); not touched\" >&2; exit 75; fi\n"
+      "rm -f exit.txt exit.txt.part summary.json run.lcmlog run.lcmlog.part refused.lcmlog trajectories.png output.txt\n"
       "start=$(date +%s%N)\n"
-      "\"$dream\" run \"$dir/config.yaml\" --out \"$dir\" > \"$dir/output.txt\" 2>&1 < /dev/null\n"
+      "DREAM_OUTPUT_LOCK_FD=9 \"$dream\" run \"$dir/config.yaml\" --out \"$dir\" > \"$dir/output.txt\" 2>&1 < /dev/null\n"
       "code=$?\n"
       "end=$(date +%s%N)\n"
       "ms=$(( (end - start) / 1000000 ))\n"
@@ -206,6 +259,13 @@ void SweepFolder::WriteCommands(const std::vector<size_t>& indices) const {
 }
 
 void SweepFolder::ClearRun(const std::string& run_name) const {
+  const std::string problem = RunFolderProblem(run_name);
+  if (!problem.empty()) throw std::runtime_error("run " + run_name + ": " + problem + "; not touched");
+  const RunFolderLock lock(RunDir(run_name));
+  if (!lock.held()) {
+    throw std::runtime_error("run " + run_name + " is still running (a process holds " + RunDir(run_name) +
+                             "/.dream.lock); not touched");
+  }
   std::error_code error;
   for (const std::string& file : RunOutputFiles()) fs::remove(RunDir(run_name) + "/" + file, error);
 }
@@ -215,8 +275,17 @@ void SweepFolder::WriteRunExit(const std::string& run_name, const RunExit& exit)
 }
 
 std::optional<RunExit> SweepFolder::ReadRunExit(const std::string& run_name) const {
-  const std::string text = ReadFileHead(RunDir(run_name) + "/" + RunExit::kFileName, RunExit::kMaxBytes + 1);
-  if (text.empty()) return std::nullopt;
+  const std::string path = RunDir(run_name) + "/" + RunExit::kFileName;
+  std::error_code error;
+  if (!fs::exists(fs::symlink_status(path, error))) return std::nullopt;
+  std::string text;
+  try {
+    text = files::ReadFileText(path, RunExit::kMaxBytes);
+  } catch (const std::runtime_error& e) {
+    // Too large to be a record: one that does not parse; anything else (a FIFO, a folder) is named.
+    if (fs::is_regular_file(path, error)) return std::nullopt;
+    throw;
+  }
   return RunExit::Parse(text);
 }
 
@@ -231,9 +300,20 @@ SweepRunResult SweepFolder::JudgeRun(const SweepPlan::Run& run, const RunExit& e
 }
 
 SweepRunResult SweepFolder::CollectRun(const SweepPlan::Run& run, const std::optional<SlurmTaskState>& slurm,
-                                       bool folder_busy) const {
+                                       bool folder_busy, bool run_locked) const {
   const std::string dir = RunDir(run.name);
-  if (const std::optional<RunExit> exit = ReadRunExit(run.name)) return JudgeRun(run, *exit);
+  const std::string problem = RunFolderProblem(run.name);
+  if (!problem.empty()) return SweepRunResult::LostRun(run, problem);
+  // The lock says it runs, unless Slurm says its task ended: then its processes are only ending (a
+  // cancelled task's dream run still writing its log), and Slurm's word is the row; resume leaves
+  // the run alone while its lock is held either way.
+  const bool ended_in_slurm = slurm && !slurm->Queued();
+  if (run_locked && !ended_in_slurm) return SweepRunResult::NotRun(run, std::string(kRunningReason));
+  try {
+    if (const std::optional<RunExit> exit = ReadRunExit(run.name)) return JudgeRun(run, *exit);
+  } catch (const std::runtime_error& e) {
+    return SweepRunResult::LostRun(run, std::string("no readable exit record (") + e.what() + ")");
+  }
   if (slurm && slurm->Queued()) return SweepRunResult::NotRun(run, slurm->Why());
   if (folder_busy) return SweepRunResult::NotRun(run, "not finished: a dream sweep is working in this folder");
   if (slurm) return SweepRunResult::LostRun(run, slurm->Why());
@@ -265,13 +345,12 @@ std::string SweepFolder::LastErrorLine(const std::string& output_path) {
 }
 
 nlohmann::json SweepFolder::ReadSummary(const std::string& path) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) return nullptr;
-  const std::streamoff size = in.tellg();
-  if (size <= 0 || size > static_cast<std::streamoff>(kMaxSummaryBytes)) return nullptr;
-  in.seekg(0);
-  std::string text(static_cast<size_t>(size), '\0');
-  in.read(text.data(), size);
+  std::string text;
+  try {
+    text = files::ReadFileText(path, kMaxSummaryBytes);
+  } catch (const std::runtime_error&) {
+    return nullptr;  // missing, too large or no regular file: the run left no readable summary
+  }
   nlohmann::json summary = nlohmann::json::parse(text, nullptr, false);
   return summary.is_object() ? summary : nlohmann::json(nullptr);
 }

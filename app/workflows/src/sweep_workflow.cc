@@ -19,6 +19,7 @@
 #include "dream/workflows/sweep_folder.h"
 #include "collected_sweep.h"
 #include "replace_file.h"
+#include "sweep_inputs.h"
 
 namespace dream::workflows {
 namespace {
@@ -69,7 +70,7 @@ SweepFolder MakeFolder(const SweepSettings& s, const std::string& base_name, con
   }
   const SweepFolder folder(out_dir);
   std::error_code error;
-  for (const char* stale : {"sweep.csv", "sweep.md", SweepFolder::kCommandsFile, SlurmJobs::kJobsFile}) {
+  for (const char* stale : {"sweep.csv", "sweep.md", SweepFolder::kCommandsFile, SlurmJobs::kJobsFile, SweepInputs::kFileName}) {
     fs::remove(folder.Path(stale), error);
   }
   return folder;
@@ -124,6 +125,8 @@ SweepOutcome SweepWorkflow::Start(const SweepSettings& s, const run_config::RunC
   if (s.engine == Engine::kSlurm && env_.commands == nullptr) throw std::logic_error("no command runner for Slurm");
   // --- everything checked before anything is written or started ---
   const std::string out_dir = ChooseFolder(s.out_dir, base.name);
+  SweepFolder::CheckFolderPath(out_dir);
+  if (s.engine == Engine::kSlurm) SlurmSubmission::CheckFolderPath(SweepFolder(out_dir).dir());
   const PreparedSweep prepared(s, base, out_dir);
   const SweepPlan& plan = prepared.plan();
   const int jobs = s.engine == Engine::kLocal ? (s.jobs > 0 ? s.jobs : cores()) : s.jobs;
@@ -134,6 +137,7 @@ SweepOutcome SweepWorkflow::Start(const SweepSettings& s, const run_config::RunC
   const std::string command = ReproducingCommand(s, prepared.seeds_text(), s.engine == Engine::kLocal ? jobs : s.jobs, out_dir);
   const long long time_limit = SlurmSubmission::DefaultTimeLimitMinutes(prepared.max_steps());
   folder.WriteSettings(SettingsJson(s, base.name, command, jobs, cores(), time_limit, env_.dream_path));
+  SweepInputs::Record(folder, s.config_path);  // what resume checks before it adds runs to this table
   std::vector<size_t> all(plan.runs().size());
   std::iota(all.begin(), all.end(), size_t{0});
   if (s.engine == Engine::kLocal) return RunAll(folder, prepared, s, jobs, command, base.name);
@@ -221,6 +225,13 @@ bool SweepWorkflow::RunLocally(const SweepFolder& folder, const SweepPlan& plan,
   auto on_finished = [&](const JobRunner::Finished& done) {
     const SweepPlan::Run& run = runs[indices[done.index]];
     if (done.timed_out) spdlog::warn("{}: still running after {:.0f} s (--timeout); stopped", run.Label(), run_timeout_s);
+    if (folder.RunIsLocked(run.name)) {
+      // Another process runs it (its own run.sh or dream run), which writes its record: not ours to touch.
+      spdlog::warn("{}: left alone, another process holds its folder ({})", run.Label(), done.start_error);
+      ++finished;
+      table.Add(SweepRunResult::NotRun(run, SweepFolder::kRunningReason));
+      return;
+    }
     RunExit exit;
     exit.exit_code = done.exit_code;
     exit.wall_time_s = done.wall_time_s;
@@ -257,7 +268,14 @@ void SweepWorkflow::WriteTable(const SweepFolder& folder, const SweepTable& tabl
 }
 
 CollectedSweep SweepWorkflow::Collect(const SweepFolder& folder, bool check_busy) const {
-  CollectedSweep c{folder.ReadPlan(), folder.ReadSettings(), {}, {}, false, {}};
+  CollectedSweep c{folder.ReadPlan(), folder.ReadSettings(), {}, {}, {}, false, {}, {}, {}};
+  const auto config = c.settings.find("config");
+  try {
+    c.changed_inputs = SweepInputs::Changed(
+        folder, config != c.settings.end() && config->is_string() ? config->get<std::string>() : "", &c.unchecked_inputs);
+  } catch (const std::runtime_error& e) {
+    c.changed_inputs = {std::string(SweepInputs::kFileName) + " (" + e.what() + ")"};  // a damaged record proves nothing
+  }
   const SlurmJobs jobs(folder);
   std::map<size_t, SlurmTaskState> states;
   if (!jobs.arrays().empty()) states = jobs.TaskStates(env_.commands, &c.note);
@@ -267,7 +285,9 @@ CollectedSweep SweepWorkflow::Collect(const SweepFolder& folder, bool check_busy
   for (const SweepPlan::Run& run : c.plan.runs()) {
     const auto it = states.find(run.index);
     c.slurm.push_back(it == states.end() ? std::nullopt : std::optional<SlurmTaskState>(it->second));
-    c.results.push_back(folder.CollectRun(run, c.slurm.back(), c.busy));
+    // While a local sweep works here its runs are its children: no one else's lock to look for.
+    c.locked.push_back(!c.busy && folder.RunIsLocked(run.name));
+    c.results.push_back(folder.CollectRun(run, c.slurm.back(), c.busy, c.locked.back()));
   }
   return c;
 }

@@ -14,6 +14,7 @@
 #include "dream/workflows/sweep_workflow.h"
 #include "collected_sweep.h"
 #include "replace_file.h"
+#include "sweep_inputs.h"
 
 namespace dream::workflows {
 namespace {
@@ -38,6 +39,18 @@ std::vector<std::string> Strings(const nlohmann::json& object, const char* key) 
     if (word.is_string()) words.push_back(word.get<std::string>());
   }
   return words;
+}
+
+std::string Joined(const std::vector<std::string>& words) {
+  std::string text;
+  for (size_t i = 0; i < words.size(); ++i) text += (i == 0 ? "" : i + 1 == words.size() ? " and " : ", ") + words[i];
+  return text;
+}
+
+/// What status and table say of inputs changed since the sweep was planned.
+std::string ChangedInputsNote(const CollectedSweep& c) {
+  if (c.changed_inputs.empty()) return "";
+  return Joined(c.changed_inputs) + " changed since the sweep was planned; dream sweep resume refuses it";
 }
 
 std::vector<std::pair<std::string, std::string>> FactsOf(const nlohmann::json& settings) {
@@ -91,6 +104,47 @@ std::unique_ptr<PreparedSweep> ConfigsToWriteAgain(const SweepFolder& folder, co
   return prepared;
 }
 
+/// The runs of `c` that resume runs again: every one without a complete
+/// result, except those still running (`running` counts them).
+/// @throws std::runtime_error, before anything is touched, when inputs of
+///         the sweep changed since it was planned, runs are still queued in
+///         Slurm, or a run folder to redo is a link.
+std::vector<size_t> RunsToResume(const SweepFolder& folder, const CollectedSweep& c, size_t* running) {
+  // Runs of other inputs must not join this table (nothing is touched before these checks).
+  if (!c.changed_inputs.empty()) {
+    throw std::runtime_error(folder.dir() + ": " + Joined(c.changed_inputs) +
+                             " changed since the sweep was planned, so its runs would not be one experiment's; "
+                             "put them back, or start a new sweep");
+  }
+  if (!c.unchecked_inputs.empty()) spdlog::warn("{}: {}", folder.dir(), c.unchecked_inputs);
+  size_t queued = 0;
+  for (const auto& state : c.slurm) queued += state && state->Queued() ? 1 : 0;
+  if (queued > 0) {
+    throw std::runtime_error(std::to_string(queued) + " runs of " + folder.dir() +
+                             " are still pending or running in Slurm; wait for them (dream sweep status " + folder.dir() +
+                             ") or scancel them, then resume");
+  }
+  std::vector<size_t> todo;
+  for (size_t i = 0; i < c.results.size(); ++i) {
+    const SweepRunResult& r = c.results[i];
+    if (c.locked[i]) {
+      ++*running;  // its dream run still works there: never cleared, never run twice
+    } else if (r.status != SweepRunResult::Status::kRan) {
+      const std::string problem = folder.RunFolderProblem(r.run.name);
+      if (!problem.empty()) {
+        throw std::runtime_error("resume refused: " + problem + " (replaced after the sweep was planned?); "
+                                 "remove it, and resume runs the run again");
+      }
+      todo.push_back(r.run.index);
+    }
+  }
+  if (*running > 0) {
+    spdlog::warn("{} runs of {} are still running (a process holds their folders): left alone; "
+                 "dream sweep status {} says when they end", *running, folder.dir(), folder.dir());
+  }
+  return todo;
+}
+
 }  // namespace
 
 SweepOutcome SweepWorkflow::Table(const std::string& dir) {
@@ -99,6 +153,7 @@ SweepOutcome SweepWorkflow::Table(const std::string& dir) {
   SweepTable table(c.plan.parameter_keys(), c.plan.runs().size());
   for (const SweepRunResult& result : c.results) table.Add(result);
   if (!c.note.empty()) spdlog::warn("{}", c.note);
+  if (!ChangedInputsNote(c).empty()) spdlog::warn("{}: {}", folder.dir(), ChangedInputsNote(c));
   std::string title = Text(c.settings, "title");
   WriteTable(folder, table, title.empty() ? "Sweep " + folder.dir() : title, FactsOf(c.settings));
   SweepOutcome outcome;
@@ -115,6 +170,7 @@ SweepStatusReport SweepWorkflow::Status(const std::string& dir) {
   report.engine = Text(c.settings, "engine");
   report.planned = c.results.size();
   report.note = c.note;
+  if (!ChangedInputsNote(c).empty()) report.note += (report.note.empty() ? "" : "; ") + ChangedInputsNote(c);
   for (size_t i = 0; i < c.results.size(); ++i) {
     const SweepRunResult& r = c.results[i];
     if (r.success) ++report.succeeded;
@@ -129,7 +185,7 @@ SweepStatusReport SweepWorkflow::Status(const std::string& dir) {
         ++report.interrupted;
         break;
       case SweepRunResult::Status::kNotRun:
-        if (c.slurm[i] && c.slurm[i]->state == SlurmTaskState::State::kRunning) {
+        if (c.locked[i] || (c.slurm[i] && c.slurm[i]->state == SlurmTaskState::State::kRunning)) {
           ++report.running;
         } else if ((c.slurm[i] && c.slurm[i]->Queued()) || c.busy) {
           ++report.pending;  // queued in Slurm, or waiting its turn in a local sweep
@@ -150,24 +206,20 @@ SweepOutcome SweepWorkflow::Resume(const std::string& dir, const ResumeSettings&
   if (!fs::is_regular_file(folder.Path(SweepFolder::kPlanFile))) {
     throw std::runtime_error(folder.dir() + " holds no sweep (no " + SweepFolder::kPlanFile + ")");
   }
+  SweepFolder::CheckFolderPath(folder.dir());
   files::OutputFolderLock::HoldUntilExit(folder.dir());  // refused while a local sweep works in it
   const CollectedSweep c = Collect(folder, false);
-  size_t queued = 0;
-  for (const auto& state : c.slurm) queued += state && state->Queued() ? 1 : 0;
-  if (queued > 0) {
-    throw std::runtime_error(std::to_string(queued) + " runs of " + folder.dir() +
-                             " are still pending or running in Slurm; wait for them (dream sweep status " + dir +
-                             ") or scancel them, then resume");
-  }
-  std::vector<size_t> todo;
-  for (const SweepRunResult& r : c.results) {
-    if (r.status != SweepRunResult::Status::kRan) todo.push_back(r.run.index);
-  }
+  size_t running = 0;
+  const std::vector<size_t> todo = RunsToResume(folder, c, &running);
   std::string engine = rs.engine.empty() ? Text(c.settings, "engine") : rs.engine;
   if (engine != "slurm") engine = "local";
   if (engine == "slurm" && env_.commands == nullptr) throw std::logic_error("no command runner for Slurm");
+  if (engine == "slurm") SlurmSubmission::CheckFolderPath(folder.dir());
   if (todo.empty()) {
-    if (env_.out != nullptr) *env_.out << "nothing to resume: every run of " << dir << " ran to its end" << std::endl;
+    if (env_.out != nullptr) {
+      *env_.out << "nothing to resume: every run of " << dir
+                << (running > 0 ? " ran to its end or is still running" : " ran to its end") << std::endl;
+    }
     return Table(dir);
   }
   const std::unique_ptr<PreparedSweep> prepared = ConfigsToWriteAgain(folder, c, todo);

@@ -47,6 +47,13 @@ class SlurmSubmission {
   static long long DefaultTimeLimitMinutes(long long steps);
   /// True when one of `options` sets the time limit (--time, -t).
   static bool SetsTimeLimit(const std::vector<std::string>& options);
+  /// `path` as sbatch's --output takes it: every '%' doubled, so a folder
+  /// named "100%" is not read as a replacement symbol (%A, %j, ...).
+  static std::string OutputPattern(const std::string& path);
+  /// @throws std::invalid_argument naming `dir` when Slurm cannot name a log
+  ///         in it: a backslash turns off sbatch's replacement symbols and is
+  ///         itself dropped from the path.
+  static void CheckFolderPath(const std::string& dir);
 
  private:
   /// The cluster's MaxArraySize (scontrol show config), 1001 when unknown.
