@@ -167,8 +167,8 @@ TEST(InteriorPointQpTest, ExactSettingsReachTheKnownOptimum) {
   settings.relative_gap_tolerance = 1e-10;
   settings.absolute_gap_tolerance = 1e-12;
   InteriorPointQp qp(settings);
-  LinearInequalities g(2);
-  g.AddRow({0, 1}, {1.0, 1.0}, 1.0);
+  LinearInequalities g(1);
+  g.AddRow(0, 1.0, 1.0, 1.0);
   const QpSolution solution = qp.Solve(Eigen::Vector2d(2, 2), Eigen::Vector2d(-2, -4), g);
   ASSERT_EQ(solution.status, QpStatus::kOptimal);
   EXPECT_NEAR(solution.x[0], 0.0, 1e-7);

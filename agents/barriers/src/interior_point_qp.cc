@@ -20,21 +20,54 @@ bool AllFinite(const Eigen::VectorXd& v) { return v.allFinite(); }
 
 bool InteriorPointQp::Factor(const Eigen::VectorXd& p, const LinearInequalities& g,
                              const Eigen::VectorXd& inverse_scale) {
-  const int n = g.num_variables();
-  normal_matrix_.setZero(n, n);
+  cholesky_.Reset(g.num_variables());
+  // A run of rows of one robot (its walls, its speed octagon) adds to that
+  // robot's 2 x 2 diagonal block only: summed here, added once.
+  int run_block = LinearInequalities::kNoBlock;
+  double s00 = 0.0, s10 = 0.0, s11 = 0.0;
+  auto flush = [&] {
+    if (run_block == LinearInequalities::kNoBlock) return;
+    cholesky_.AddLower(2 * run_block, 2 * run_block, s00);
+    cholesky_.AddLower(2 * run_block + 1, 2 * run_block, s10);
+    cholesky_.AddLower(2 * run_block + 1, 2 * run_block + 1, s11);
+    run_block = LinearInequalities::kNoBlock;
+    s00 = s10 = s11 = 0.0;
+  };
   for (int row = 0; row < g.num_rows(); ++row) {
     const double weight = inverse_scale[row] * inverse_scale[row];
-    for (int a = g.row_begin(row); a < g.row_end(row); ++a) {
-      const double wa = weight * g.value(a);
-      for (int b = g.row_begin(row); b < g.row_end(row); ++b) {
-        normal_matrix_(g.column(a), g.column(b)) += wa * g.value(b);
+    const double* c = g.coefficients(row);
+    const int a = g.block_a(row);
+    const int b = g.block_b(row);
+    const double wa0 = weight * c[0];
+    const double wa1 = weight * c[1];
+    if (b == LinearInequalities::kNoBlock) {
+      if (a != run_block) {
+        flush();
+        run_block = a;
       }
+      s00 += wa0 * c[0];
+      s10 += wa1 * c[0];
+      s11 += wa1 * c[1];
+      continue;
     }
+    flush();
+    const int a0 = 2 * a, a1 = 2 * a + 1, b0 = 2 * b, b1 = 2 * b + 1;
+    const double wb0 = weight * c[2];
+    const double wb1 = weight * c[3];
+    cholesky_.AddLower(a0, a0, wa0 * c[0]);
+    cholesky_.AddLower(a1, a0, wa1 * c[0]);
+    cholesky_.AddLower(a1, a1, wa1 * c[1]);
+    cholesky_.AddLower(b0, b0, wb0 * c[2]);
+    cholesky_.AddLower(b1, b0, wb1 * c[2]);
+    cholesky_.AddLower(b1, b1, wb1 * c[3]);
+    cholesky_.AddLower(b0, a0, wb0 * c[0]);
+    cholesky_.AddLower(b0, a1, wb0 * c[1]);
+    cholesky_.AddLower(b1, a0, wb1 * c[0]);
+    cholesky_.AddLower(b1, a1, wb1 * c[1]);
   }
-  normal_matrix_.diagonal() += p;
-  if (!normal_matrix_.allFinite()) return false;
-  cholesky_.compute(normal_matrix_);
-  return cholesky_.info() == Eigen::Success;
+  flush();
+  cholesky_.AddDiagonal(p);
+  return cholesky_.Factor();
 }
 
 void InteriorPointQp::SolveKkt(const LinearInequalities& g, const Eigen::VectorXd& inverse_scale, Eigen::VectorXd* x,
@@ -44,7 +77,7 @@ void InteriorPointQp::SolveKkt(const LinearInequalities& g, const Eigen::VectorX
   work_m_ = z->cwiseProduct(inverse_scale);
   g.MultiplyTransposed(work_m_, &work_n_);
   *x += work_n_;
-  cholesky_.solveInPlace(*x);
+  cholesky_.SolveInPlace(x);
   g.Multiply(*x, &work_m_);
   *z = work_m_.cwiseProduct(inverse_scale) - *z;
 }
@@ -80,7 +113,7 @@ QpSolution InteriorPointQp::Solve(const Eigen::VectorXd& p, const Eigen::VectorX
   if (tz0 >= -1e-8 * std::max(z.norm(), 1.0)) z.array() += 1.0 + tz0;
   double gap = s.dot(z);
 
-  Eigen::VectorXd lambda(m), lambda_sq(m), rx, rz, gz, dx, dz, ds, correction(m);
+  Eigen::VectorXd lambda(m), lambda_sq(m), inverse_lambda(m), rx, rz, gz, dx, dz, ds, correction(m);
   for (int iteration = 0; iteration <= settings_.max_iterations; ++iteration) {
     solution.iterations = iteration;
     rx = p.cwiseProduct(x) + q;
@@ -119,6 +152,7 @@ QpSolution InteriorPointQp::Solve(const Eigen::VectorXd& p, const Eigen::VectorX
       lambda = (s.array() * z.array()).sqrt();
     }
     lambda_sq = lambda.cwiseProduct(lambda);
+    inverse_lambda = lambda.cwiseInverse();  // multiplied by below: six divisions of m fewer per iteration
     if (!Factor(p, g, di)) {
       solution.status = QpStatus::kSingularSystem;
       return solution;
@@ -137,14 +171,14 @@ QpSolution InteriorPointQp::Solve(const Eigen::VectorXd& p, const Eigen::VectorX
       ds.array() += sigma * mu;
       dx = -rx;
       dz = -rz;
-      ds.array() /= lambda.array();
+      ds.array() *= inverse_lambda.array();
       dz -= d.cwiseProduct(ds);
       SolveKkt(g, di, &dx, &dz);
       ds -= dz;
       const double dsdz = ds.dot(dz);
       if (pass == 0) correction = ds.cwiseProduct(dz);
-      ds.array() /= lambda.array();
-      dz.array() /= lambda.array();
+      ds.array() *= inverse_lambda.array();
+      dz.array() *= inverse_lambda.array();
       const double t = std::max({0.0, MaxStep(ds), MaxStep(dz)});
       if (t == 0.0) {
         step = 1.0;

@@ -29,14 +29,13 @@ void SingleIntegratorBarrier::BuildConstraints(const Eigen::Matrix2Xd& positions
   const int n = static_cast<int>(positions.cols());
   const double radius = params_.safety_radius_m;
   const double gain = params_.barrier_gain;
-  constraints_.Reset(2 * n);
+  constraints_.Reset(n);
   for (int i = 0; i + 1 < n; ++i) {
     for (int j = i + 1; j < n; ++j) {
       const double dx = positions(0, i) - positions(0, j);
       const double dy = positions(1, i) - positions(1, j);
       const double h = dx * dx + dy * dy - radius * radius;
-      constraints_.AddRow({2 * i, 2 * i + 1, 2 * j, 2 * j + 1}, {-2 * dx, -2 * dy, 2 * dx, 2 * dy},
-                          gain * std::pow(h, 3));
+      constraints_.AddRow(i, -2 * dx, -2 * dy, j, 2 * dx, 2 * dy, gain * std::pow(h, 3));
     }
   }
   if (params_.boundary) {
@@ -45,10 +44,10 @@ void SingleIntegratorBarrier::BuildConstraints(const Eigen::Matrix2Xd& positions
     for (int k = 0; k < n; ++k) {
       const double x = positions(0, k);
       const double y = positions(1, k);
-      constraints_.AddRow({2 * k + 1}, {1.0}, wall_gain * std::pow(b.y_max_m - radius / 2 - y, 3));
-      constraints_.AddRow({2 * k + 1}, {-1.0}, wall_gain * std::pow(y - b.y_min_m - radius / 2, 3));
-      constraints_.AddRow({2 * k}, {1.0}, wall_gain * std::pow(b.x_max_m - radius / 2 - x, 3));
-      constraints_.AddRow({2 * k}, {-1.0}, wall_gain * std::pow(x - b.x_min_m - radius / 2, 3));
+      constraints_.AddRow(k, 0.0, 1.0, wall_gain * std::pow(b.y_max_m - radius / 2 - y, 3));
+      constraints_.AddRow(k, 0.0, -1.0, wall_gain * std::pow(y - b.y_min_m - radius / 2, 3));
+      constraints_.AddRow(k, 1.0, 0.0, wall_gain * std::pow(b.x_max_m - radius / 2 - x, 3));
+      constraints_.AddRow(k, -1.0, 0.0, wall_gain * std::pow(x - b.x_min_m - radius / 2, 3));
     }
   }
   const double side_bound = params_.magnitude_limit_mps * std::cos(M_PI / 8);
@@ -56,7 +55,7 @@ void SingleIntegratorBarrier::BuildConstraints(const Eigen::Matrix2Xd& positions
     for (int side = 0; side < 8; ++side) {
       // rps's certificate without boundary bounds its first side by the limit itself.
       const double bound = (side == 0 && !params_.boundary) ? params_.magnitude_limit_mps : side_bound;
-      constraints_.AddRow({2 * k, 2 * k + 1}, {kOctagonSides[side][0], kOctagonSides[side][1]}, bound);
+      constraints_.AddRow(k, kOctagonSides[side][0], kOctagonSides[side][1], bound);
     }
   }
 }

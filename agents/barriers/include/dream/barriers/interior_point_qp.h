@@ -1,8 +1,8 @@
 #pragma once
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
+#include "dream/barriers/dense_cholesky.h"
 #include "dream/barriers/linear_inequalities.h"
 #include "dream/barriers/qp_settings.h"
 #include "dream/barriers/qp_solution.h"
@@ -37,8 +37,7 @@ class InteriorPointQp {
                 Eigen::VectorXd* z);
 
   QpSettings settings_;
-  Eigen::MatrixXd normal_matrix_;
-  Eigen::LLT<Eigen::MatrixXd> cholesky_;
+  DenseCholesky cholesky_;
   Eigen::VectorXd work_n_;
   Eigen::VectorXd work_m_;
 };

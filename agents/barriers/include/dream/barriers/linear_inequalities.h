@@ -1,30 +1,39 @@
 #pragma once
 
-#include <initializer_list>
 #include <vector>
 
 #include <Eigen/Core>
 
 namespace dream::barriers {
 
-/// The constraints G x <= h of a QP, G stored by rows with only its nonzeros:
-/// a barrier's rows touch two robots at most (four columns), so the solver's
-/// G' D G costs a few products per row instead of a dense n x n per row.
+/// The constraints G x <= h of a barrier QP. The unknowns come in pairs, one
+/// robot's velocity (x[2k], x[2k+1]), and a row touches one robot (a wall, a
+/// side of the speed octagon) or two (a pair): so a row is one or two 2-column
+/// blocks, and the solver's G' D G costs a few products per row instead of a
+/// dense n x n per row.
 class LinearInequalities {
  public:
-  explicit LinearInequalities(int num_variables = 0) : num_variables_(num_variables) { row_start_.push_back(0); }
+  static constexpr int kNoBlock = -1;
+
+  explicit LinearInequalities(int num_blocks = 0) { Reset(num_blocks); }
 
   /// Starts again with no rows, keeping the storage (one solver per run, a QP per step).
-  void Reset(int num_variables);
-  /// Appends the row `sum_k values[k] x[columns[k]] <= bound`.
-  void AddRow(std::initializer_list<int> columns, std::initializer_list<double> values, double bound);
+  void Reset(int num_blocks);
+  /// Appends `a0 x[2a] + a1 x[2a+1] <= bound` (a row of one robot).
+  /// @throws std::out_of_range for a block outside [0, num_blocks).
+  void AddRow(int block_a, double a0, double a1, double bound);
+  /// Appends `a0 x[2a] + a1 x[2a+1] + b0 x[2b] + b1 x[2b+1] <= bound`, a < b.
+  /// @throws std::out_of_range unless 0 <= a < b < num_blocks.
+  void AddRow(int block_a, double a0, double a1, int block_b, double b0, double b1, double bound);
 
-  int num_variables() const { return num_variables_; }
+  int num_blocks() const { return num_blocks_; }
+  int num_variables() const { return 2 * num_blocks_; }
   int num_rows() const { return static_cast<int>(bounds_.size()); }
-  int row_begin(int row) const { return row_start_[static_cast<size_t>(row)]; }
-  int row_end(int row) const { return row_start_[static_cast<size_t>(row) + 1]; }
-  int column(int entry) const { return columns_[static_cast<size_t>(entry)]; }
-  double value(int entry) const { return values_[static_cast<size_t>(entry)]; }
+  int block_a(int row) const { return block_a_[static_cast<size_t>(row)]; }
+  /// kNoBlock for a row of one robot.
+  int block_b(int row) const { return block_b_[static_cast<size_t>(row)]; }
+  /// The row's coefficients: a0, a1, b0, b1.
+  const double* coefficients(int row) const { return &coefficients_[4 * static_cast<size_t>(row)]; }
   double bound(int row) const { return bounds_[static_cast<size_t>(row)]; }
   const std::vector<double>& bounds() const { return bounds_; }
 
@@ -36,10 +45,10 @@ class LinearInequalities {
   Eigen::MatrixXd Dense() const;
 
  private:
-  int num_variables_ = 0;
-  std::vector<int> row_start_;
-  std::vector<int> columns_;
-  std::vector<double> values_;
+  int num_blocks_ = 0;
+  std::vector<int> block_a_;
+  std::vector<int> block_b_;
+  std::vector<double> coefficients_;
   std::vector<double> bounds_;
 };
 
