@@ -54,9 +54,10 @@ TEST(BarrierWorldTest, DrivesWithTheCertificatesCommandsOnTheSeenPoses) {
   wanted << 0.15, 0.15, 0.0, 0.0;
   const barriers::BarrierResult expected = barrier.Apply(wanted, poses);
   DriveAtEachOther(&guarded, 1);
-  for (int i = 0; i < 2; ++i) {  // within the wheels' limits, so unsaturated
-    EXPECT_EQ(guarded.velocities()[static_cast<size_t>(i)].v_mps, expected.commands(0, i));
-    EXPECT_EQ(guarded.velocities()[static_cast<size_t>(i)].w_radps, expected.commands(1, i));
+  ASSERT_GT(std::abs(expected.commands(0, 0) - 0.15), 1e-3);  // the certificate does bend them here
+  for (int i = 0; i < 2; ++i) {  // within the wheels' limits: only the wheel-speed round trip's rounding
+    EXPECT_NEAR(guarded.velocities()[static_cast<size_t>(i)].v_mps, expected.commands(0, i), 1e-12);
+    EXPECT_NEAR(guarded.velocities()[static_cast<size_t>(i)].w_radps, expected.commands(1, i), 1e-12);
   }
 }
 
