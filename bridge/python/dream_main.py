@@ -75,7 +75,8 @@ P_BARRIER_GAIN = 22
 P_BARRIER_PROJECTION_DISTANCE = 23
 P_BARRIER_MAGNITUDE_LIMIT = 24
 P_BARRIER_HAS_BOUNDARY = 25
-P_BARRIER_BOUNDARY = 26  # x_min, x_max, y_min, y_max
+# The certificate's boundary: x_min, x_max, y_min, y_max from here.
+P_BARRIER_BOUNDARY = 26
 P_COUNT = 30
 
 MAGIC = 1146242369.0  # "DREA"

@@ -6,6 +6,24 @@
 #include "dream/bridge/submission_format.h"
 
 namespace dream::bridge {
+namespace {
+
+/// The barrier certificate's parameters of a format-3 file (its flag checked to be 0 or 1).
+barriers::UnicycleBarrierParams BarrierParamsOf(const double* p) {
+  barriers::UnicycleBarrierParams barrier;
+  barrier.safety_radius_m = p[kParamBarrierSafetyRadius];
+  barrier.barrier_gain = p[kParamBarrierGain];
+  barrier.projection_distance_m = p[kParamBarrierProjectionDistance];
+  barrier.magnitude_limit_mps = p[kParamBarrierMagnitudeLimit];
+  barrier.boundary.reset();
+  if (p[kParamBarrierHasBoundary] == 1.0) {
+    barrier.boundary = barriers::BoundaryBox{p[kParamBarrierBoundaryXMin], p[kParamBarrierBoundaryXMax],
+                                             p[kParamBarrierBoundaryYMin], p[kParamBarrierBoundaryYMax]};
+  }
+  return barrier;
+}
+
+}  // namespace
 
 NpyArray SubmissionParams::ToNpy() const {
   NpyArray array;
@@ -111,16 +129,8 @@ SubmissionParams SubmissionParams::FromNpy(const NpyArray& array, const std::str
     }
   }
   if (!format1 && !format2) {
-    barriers::UnicycleBarrierParams& barrier = params.options.barrier_params;
-    barrier.safety_radius_m = p[kParamBarrierSafetyRadius];
-    barrier.barrier_gain = p[kParamBarrierGain];
-    barrier.projection_distance_m = p[kParamBarrierProjectionDistance];
-    barrier.magnitude_limit_mps = p[kParamBarrierMagnitudeLimit];
-    barrier.boundary.reset();
-    if (whole(kParamBarrierHasBoundary, 0, 1, "barrier boundary") == 1) {
-      barrier.boundary = barriers::BoundaryBox{p[kParamBarrierBoundaryXMin], p[kParamBarrierBoundaryXMax],
-                                               p[kParamBarrierBoundaryYMin], p[kParamBarrierBoundaryYMax]};
-    }
+    whole(kParamBarrierHasBoundary, 0, 1, "barrier boundary");
+    params.options.barrier_params = BarrierParamsOf(p);
   }
   std::string error;
   if (!params.options.barrier_params.IsValid(&error)) fail("barriers: " + error);

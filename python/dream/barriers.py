@@ -4,8 +4,7 @@ iterations), so a command agrees with the official simulator's and the lab's. Th
 dream::barriers (agents/barriers/), iterates as cvxopt does and agrees to ~1e-11
 (tests/data/robotarium_v2_barriers.json; docs/python-controllers.md#barrier-certificates).
 
-    from dream.barriers import create_uni_barrier_certificate_with_boundary
-    barrier = create_uni_barrier_certificate_with_boundary()
+    barrier = dream.create_uni_barrier_certificate_with_boundary()   # dream re-exports all four
     dxu = barrier(dxu, poses)          # 2 x N commands, 3 x N poses, all robots at once
 
 A certificate is one quadratic program over every robot: it needs every robot's wanted command.

@@ -169,5 +169,46 @@ TEST(SubmissionParamsTest, ControllerStrategyRoundTripsAndFormatOneIsStillRead) 
   EXPECT_THAT(ErrorOf([&] { SubmissionParams::FromNpy(old, "old.npy"); }), HasSubstr("old.npy: unknown strategy"));
 }
 
+TEST(SubmissionParamsTest, TheBarrierCertificateRoundTripsAndFormatTwoGetsRpsDefaults) {
+  SubmissionParams params;
+  params.num_robots = 4;
+  params.steps = 50;
+  params.wheel_radius_m = 0.016;
+  params.base_length_m = 0.11;
+  params.max_wheel_speed_radps = 12.5;
+  params.options.barriers = true;
+  params.options.barrier_params = barriers::UnicycleBarrierParams::Rps();  // create_uni_barrier_certificate()
+  const SubmissionParams read = SubmissionParams::FromNpy(params.ToNpy(), "p.npy");
+  EXPECT_TRUE(read.options.barriers);
+  EXPECT_EQ(read.options.barrier_params.safety_radius_m, 0.15);
+  EXPECT_EQ(read.options.barrier_params.barrier_gain, 100.0);
+  EXPECT_EQ(read.options.barrier_params.projection_distance_m, 0.05);
+  EXPECT_FALSE(read.options.barrier_params.boundary.has_value());
+
+  params.options.barrier_params = barriers::UnicycleBarrierParams::RpsWithBoundary();
+  params.options.barrier_params.boundary->x_max_m = 1.4;
+  const SubmissionParams boxed = SubmissionParams::FromNpy(params.ToNpy(), "p.npy");
+  ASSERT_TRUE(boxed.options.barrier_params.boundary.has_value());
+  EXPECT_EQ(boxed.options.barrier_params.boundary->x_max_m, 1.4);
+
+  // An export made before the barriers' parameters: 21 numbers, format 2, rps's defaults.
+  NpyArray old = params.ToNpy();
+  old.shape = {kParamCountFormat2};
+  old.values.resize(kParamCountFormat2);
+  old.values[kParamFormatVersion] = 2.0;
+  const SubmissionParams old_read = SubmissionParams::FromNpy(old, "old.npy");
+  EXPECT_TRUE(old_read.options.barriers);
+  EXPECT_EQ(old_read.options.barrier_params.barrier_gain, 150.0);
+  EXPECT_EQ(old_read.options.barrier_params.boundary->x_max_m, 1.6);
+
+  NpyArray bad = params.ToNpy();
+  bad.values[kParamBarrierHasBoundary] = 2.0;
+  EXPECT_THAT(ErrorOf([&] { SubmissionParams::FromNpy(bad, "bad.npy"); }), HasSubstr("bad.npy: barrier boundary"));
+  bad = params.ToNpy();
+  bad.values[kParamBarrierSafetyRadius] = 0.0;
+  EXPECT_THAT(ErrorOf([&] { SubmissionParams::FromNpy(bad, "bad.npy"); }),
+              HasSubstr("bad.npy: barriers: safety_radius_m = 0"));
+}
+
 }  // namespace
 }  // namespace dream::bridge

@@ -82,122 +82,129 @@ void InteriorPointQp::SolveKkt(const LinearInequalities& g, const Eigen::VectorX
   *z = work_m_.cwiseProduct(inverse_scale) - *z;
 }
 
-QpSolution InteriorPointQp::Solve(const Eigen::VectorXd& p, const Eigen::VectorXd& q,
-                                                  const LinearInequalities& constraints) {
-  const LinearInequalities& g = constraints;
+bool InteriorPointQp::Start(const Eigen::VectorXd& p, const Eigen::VectorXd& q, const LinearInequalities& g) {
+  // The KKT system with W = I, then s and z moved inside the orthant.
   const int m = g.num_rows();
-  const Eigen::Map<const Eigen::VectorXd> h(g.bounds().data(), m);
+  d_ = Eigen::VectorXd::Ones(m);
+  di_ = Eigen::VectorXd::Ones(m);
+  if (!Factor(p, g, di_)) return false;
+  x_ = -q;
+  z_ = Eigen::Map<const Eigen::VectorXd>(g.bounds().data(), m);
+  SolveKkt(g, di_, &x_, &z_);
+  s_ = -z_;
+  const double ts = MaxStep(s_);
+  if (ts >= -1e-8 * std::max(s_.norm(), 1.0)) s_.array() += 1.0 + ts;
+  const double tz = MaxStep(z_);
+  if (tz >= -1e-8 * std::max(z_.norm(), 1.0)) z_.array() += 1.0 + tz;
+  gap_ = s_.dot(z_);
+  return true;
+}
+
+InteriorPointQp::Residuals InteriorPointQp::ComputeResiduals(const Eigen::VectorXd& p, const Eigen::VectorXd& q,
+                                                             const LinearInequalities& g) {
+  const Eigen::Map<const Eigen::VectorXd> h(g.bounds().data(), g.num_rows());
+  rx_ = p.cwiseProduct(x_) + q;
+  const double f0 = 0.5 * (x_.dot(rx_) + x_.dot(q));
+  g.MultiplyTransposed(z_, &work_n_);
+  rx_ += work_n_;
+  g.Multiply(x_, &work_m_);
+  rz_ = s_ - h + work_m_;
+  const double pcost = f0;
+  const double dcost = f0 + z_.dot(rz_) - gap_;
+  Residuals r;
+  r.has_relative_gap = pcost < 0.0 || dcost > 0.0;
+  r.relative_gap = pcost < 0.0 ? gap_ / -pcost : (dcost > 0.0 ? gap_ / dcost : 0.0);
+  r.primal = rz_.norm() / std::max(1.0, h.norm());
+  r.dual = rx_.norm() / std::max(1.0, q.norm());
+  return r;
+}
+
+bool InteriorPointQp::Converged(const Residuals& r) const {
+  return r.primal <= settings_.feasibility_tolerance && r.dual <= settings_.feasibility_tolerance &&
+         (gap_ <= settings_.absolute_gap_tolerance ||
+          (r.has_relative_gap && r.relative_gap <= settings_.relative_gap_tolerance));
+}
+
+QpStatus InteriorPointQp::Step(const Eigen::VectorXd& p, const LinearInequalities& g, bool first) {
+  if (first) {  // the Nesterov-Todd scaling of the starting point
+    d_ = (s_.array() / z_.array()).sqrt();
+    di_ = (z_.array() / s_.array()).sqrt();
+    lambda_ = (s_.array() * z_.array()).sqrt();
+  }
+  lambda_sq_ = lambda_.cwiseProduct(lambda_);
+  inverse_lambda_ = lambda_.cwiseInverse();  // multiplied by below: six divisions of m fewer
+  if (!Factor(p, g, di_)) return QpStatus::kSingularSystem;
+  if (gap_ == 0.0) return QpStatus::kNotFinite;  // CVXOPT divides by it below and raises
+  const double mu = gap_ / static_cast<double>(g.num_rows());
+  double sigma = 0.0;
+  double step = 1.0;
+  for (int pass = 0; pass < 2; ++pass) {
+    // Predictor (pass 0), then corrector with Mehrotra's second-order term (pass 1).
+    ds_ = -lambda_sq_;
+    if (pass == 1) ds_ -= correction_;
+    ds_.array() += sigma * mu;
+    dx_ = -rx_;
+    dz_ = -rz_;
+    ds_.array() *= inverse_lambda_.array();
+    dz_ -= d_.cwiseProduct(ds_);
+    SolveKkt(g, di_, &dx_, &dz_);
+    ds_ -= dz_;
+    const double dsdz = ds_.dot(dz_);
+    if (pass == 0) correction_ = ds_.cwiseProduct(dz_);
+    ds_.array() *= inverse_lambda_.array();
+    dz_.array() *= inverse_lambda_.array();
+    const double t = std::max({0.0, MaxStep(ds_), MaxStep(dz_)});
+    step = t == 0.0 ? 1.0 : std::min(1.0, (pass == 0 ? 1.0 : kCorrectorStepFraction) / t);
+    if (pass == 0) {
+      sigma = std::pow(std::min(1.0, std::max(0.0, 1.0 - step + dsdz / gap_ * step * step)), kCenteringExponent);
+    }
+  }
+  x_ += step * dx_;
+  // The new s and z in the current scaling, then the scaling and lambda updated.
+  ds_ = ((1.0 + step * ds_.array()) * lambda_.array()).sqrt();
+  dz_ = ((1.0 + step * dz_.array()) * lambda_.array()).sqrt();
+  d_ = (d_.array() * ds_.array()) / dz_.array();
+  di_ = d_.cwiseInverse();
+  lambda_ = ds_.cwiseProduct(dz_);
+  s_ = d_.cwiseProduct(lambda_);
+  z_ = di_.cwiseProduct(lambda_);
+  gap_ = lambda_.dot(lambda_);
+  return QpStatus::kOptimal;
+}
+
+QpSolution InteriorPointQp::Solve(const Eigen::VectorXd& p, const Eigen::VectorXd& q,
+                                  const LinearInequalities& constraints) {
+  const LinearInequalities& g = constraints;
+  const Eigen::Map<const Eigen::VectorXd> h(g.bounds().data(), g.num_rows());
   QpSolution solution;
   solution.x = Eigen::VectorXd::Zero(g.num_variables());
   if (!AllFinite(p) || !AllFinite(q) || !h.allFinite()) return solution;
-  if (m == 0) {  // no constraint: the unconstrained minimum
+  if (g.num_rows() == 0) {  // no constraint: the unconstrained minimum
     solution.x = -q.cwiseQuotient(p);
     solution.status = QpStatus::kOptimal;
     return solution;
   }
-  const double resx0 = std::max(1.0, q.norm());
-  const double resz0 = std::max(1.0, h.norm());
-
-  // The starting point: the KKT system with W = I, then s and z moved inside the orthant.
-  Eigen::VectorXd d = Eigen::VectorXd::Ones(m);
-  Eigen::VectorXd di = Eigen::VectorXd::Ones(m);
   solution.status = QpStatus::kSingularSystem;
-  if (!Factor(p, g, di)) return solution;
-  Eigen::VectorXd x = -q;
-  Eigen::VectorXd z = h;
-  SolveKkt(g, di, &x, &z);
-  Eigen::VectorXd s = -z;
-  const double ts0 = MaxStep(s);
-  if (ts0 >= -1e-8 * std::max(s.norm(), 1.0)) s.array() += 1.0 + ts0;
-  const double tz0 = MaxStep(z);
-  if (tz0 >= -1e-8 * std::max(z.norm(), 1.0)) z.array() += 1.0 + tz0;
-  double gap = s.dot(z);
-
-  Eigen::VectorXd lambda(m), lambda_sq(m), inverse_lambda(m), rx, rz, gz, dx, dz, ds, correction(m);
+  if (!Start(p, q, g)) return solution;
   for (int iteration = 0; iteration <= settings_.max_iterations; ++iteration) {
     solution.iterations = iteration;
-    rx = p.cwiseProduct(x) + q;
-    const double f0 = 0.5 * (x.dot(rx) + x.dot(q));
-    g.MultiplyTransposed(z, &work_n_);
-    rx += work_n_;
-    const double resx = rx.norm();
-    g.Multiply(x, &gz);
-    rz = s - h + gz;
-    const double resz = rz.norm();
-    const double pcost = f0;
-    const double dcost = f0 + z.dot(rz) - gap;
-    const bool has_relgap = pcost < 0.0 || dcost > 0.0;
-    const double relgap = pcost < 0.0 ? gap / -pcost : (dcost > 0.0 ? gap / dcost : 0.0);
-    const double pres = resz / resz0;
-    const double dres = resx / resx0;
-    if (!std::isfinite(pres) || !std::isfinite(dres) || !std::isfinite(gap) || !AllFinite(x)) {
+    const Residuals residuals = ComputeResiduals(p, q, g);
+    if (!std::isfinite(residuals.primal) || !std::isfinite(residuals.dual) || !std::isfinite(gap_) ||
+        !AllFinite(x_)) {
       solution.status = QpStatus::kNotFinite;
       return solution;
     }
-    solution.x = x;
-    const bool converged = pres <= settings_.feasibility_tolerance && dres <= settings_.feasibility_tolerance &&
-                           (gap <= settings_.absolute_gap_tolerance ||
-                            (has_relgap && relgap <= settings_.relative_gap_tolerance));
-    if (converged) {
+    solution.x = x_;
+    if (Converged(residuals)) {
       solution.status = QpStatus::kOptimal;
       return solution;
     }
-    if (iteration == settings_.max_iterations) {
-      solution.status = QpStatus::kIterationLimit;
+    if (iteration == settings_.max_iterations) break;
+    const QpStatus stepped = Step(p, g, iteration == 0);
+    if (stepped != QpStatus::kOptimal) {
+      solution.status = stepped;
       return solution;
     }
-    if (iteration == 0) {  // the Nesterov-Todd scaling of the starting point
-      d = (s.array() / z.array()).sqrt();
-      di = (z.array() / s.array()).sqrt();
-      lambda = (s.array() * z.array()).sqrt();
-    }
-    lambda_sq = lambda.cwiseProduct(lambda);
-    inverse_lambda = lambda.cwiseInverse();  // multiplied by below: six divisions of m fewer per iteration
-    if (!Factor(p, g, di)) {
-      solution.status = QpStatus::kSingularSystem;
-      return solution;
-    }
-    if (gap == 0.0) {  // CVXOPT divides by it below and raises
-      solution.status = QpStatus::kNotFinite;
-      return solution;
-    }
-    const double mu = gap / m;
-    double sigma = 0.0;
-    double step = 1.0;
-    for (int pass = 0; pass < 2; ++pass) {
-      // Predictor (pass 0), then corrector with Mehrotra's second-order term (pass 1).
-      ds = -lambda_sq;
-      if (pass == 1) ds -= correction;
-      ds.array() += sigma * mu;
-      dx = -rx;
-      dz = -rz;
-      ds.array() *= inverse_lambda.array();
-      dz -= d.cwiseProduct(ds);
-      SolveKkt(g, di, &dx, &dz);
-      ds -= dz;
-      const double dsdz = ds.dot(dz);
-      if (pass == 0) correction = ds.cwiseProduct(dz);
-      ds.array() *= inverse_lambda.array();
-      dz.array() *= inverse_lambda.array();
-      const double t = std::max({0.0, MaxStep(ds), MaxStep(dz)});
-      if (t == 0.0) {
-        step = 1.0;
-      } else {
-        step = std::min(1.0, (pass == 0 ? 1.0 : kCorrectorStepFraction) / t);
-      }
-      if (pass == 0) {
-        sigma = std::pow(std::min(1.0, std::max(0.0, 1.0 - step + dsdz / gap * step * step)), kCenteringExponent);
-      }
-    }
-    x += step * dx;
-    ds = ((1.0 + step * ds.array()) * lambda.array()).sqrt();
-    dz = ((1.0 + step * dz.array()) * lambda.array()).sqrt();
-    d = (d.array() * ds.array()) / dz.array();
-    di = d.cwiseInverse();
-    lambda = ds.cwiseProduct(dz);
-    s = d.cwiseProduct(lambda);
-    z = di.cwiseProduct(lambda);
-    gap = lambda.dot(lambda);
   }
   solution.status = QpStatus::kIterationLimit;
   return solution;

@@ -30,6 +30,21 @@ class InteriorPointQp {
   QpSolution Solve(const Eigen::VectorXd& p, const Eigen::VectorXd& q, const LinearInequalities& constraints);
 
  private:
+  /// How far the current iterate is from optimal, as coneqp measures it.
+  struct Residuals {
+    double primal = 0.0;  ///< |s + G x - h| / max(1, |h|)
+    double dual = 0.0;    ///< |P x + q + G' z| / max(1, |q|)
+    double relative_gap = 0.0;
+    bool has_relative_gap = false;  ///< CVXOPT's relgap is None when neither cost has the right sign
+  };
+
+  /// The starting point (x, s, z, gap); false when S cannot be factored.
+  bool Start(const Eigen::VectorXd& p, const Eigen::VectorXd& q, const LinearInequalities& g);
+  /// rx, rz and the stopping figures of the current iterate.
+  Residuals ComputeResiduals(const Eigen::VectorXd& p, const Eigen::VectorXd& q, const LinearInequalities& g);
+  bool Converged(const Residuals& residuals) const;
+  /// One predictor-corrector step; kOptimal when it was taken, else why not.
+  QpStatus Step(const Eigen::VectorXd& p, const LinearInequalities& g, bool first);
   /// S = diag(p) + G' diag(scale)^2 G, factored; false when not positive definite.
   bool Factor(const Eigen::VectorXd& p, const LinearInequalities& g, const Eigen::VectorXd& inverse_scale);
   /// The reduced KKT solve of coneqp's kkt_chol2: on entry bx, bz; on exit ux and W uz.
@@ -38,6 +53,11 @@ class InteriorPointQp {
 
   QpSettings settings_;
   DenseCholesky cholesky_;
+  // The iterate and the scaling W = diag(d) (di = 1/d), lambda = W z = W^-T s.
+  Eigen::VectorXd x_, s_, z_, d_, di_, lambda_;
+  double gap_ = 0.0;
+  // Work vectors, kept so that a solver per run allocates once.
+  Eigen::VectorXd rx_, rz_, dx_, dz_, ds_, lambda_sq_, inverse_lambda_, correction_;
   Eigen::VectorXd work_n_;
   Eigen::VectorXd work_m_;
 };
