@@ -140,13 +140,13 @@ QpStatus InteriorPointQp::Step(const Eigen::VectorXd& p, const LinearInequalitie
   double step = 1.0;
   for (int pass = 0; pass < 2; ++pass) {
     // Predictor (pass 0), then corrector with Mehrotra's second-order term (pass 1).
-    ds_ = -lambda_sq_;
-    if (pass == 1) ds_ -= correction_;
-    ds_.array() += sigma * mu;
+    if (pass == 0) {
+      ds_ = ((-lambda_sq_).array() + sigma * mu) * inverse_lambda_.array();
+    } else {
+      ds_ = ((-lambda_sq_ - correction_).array() + sigma * mu) * inverse_lambda_.array();
+    }
     dx_ = -rx_;
-    dz_ = -rz_;
-    ds_.array() *= inverse_lambda_.array();
-    dz_ -= d_.cwiseProduct(ds_);
+    dz_ = -rz_ - d_.cwiseProduct(ds_);
     SolveKkt(g, di_, &dx_, &dz_);
     ds_ -= dz_;
     const double dsdz = ds_.dot(dz_);

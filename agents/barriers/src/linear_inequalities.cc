@@ -51,16 +51,32 @@ void LinearInequalities::Multiply(const Eigen::VectorXd& x, Eigen::VectorXd* out
 void LinearInequalities::MultiplyTransposed(const Eigen::VectorXd& y, Eigen::VectorXd* out) const {
   out->setZero(num_variables());
   double* v = out->data();
+  // Rows come in runs of one first block (rps's pairs (i, j > i), then each robot's walls and
+  // octagon): its two sums stay in registers over the run instead of a store and load per row.
+  int run = kNoBlock;
+  double sum0 = 0.0, sum1 = 0.0;
   for (int row = 0; row < num_rows(); ++row) {
     const double* c = coefficients(row);
-    const int a = 2 * block_a(row);
-    v[a] += c[0] * y[row];
-    v[a + 1] += c[1] * y[row];
+    const int a = block_a(row);
+    if (a != run) {
+      if (run != kNoBlock) {
+        v[2 * run] += sum0;
+        v[2 * run + 1] += sum1;
+      }
+      run = a;
+      sum0 = sum1 = 0.0;
+    }
+    sum0 += c[0] * y[row];
+    sum1 += c[1] * y[row];
     const int b = block_b(row);
     if (b != kNoBlock) {
       v[2 * b] += c[2] * y[row];
       v[2 * b + 1] += c[3] * y[row];
     }
+  }
+  if (run != kNoBlock) {
+    v[2 * run] += sum0;
+    v[2 * run + 1] += sum1;
   }
 }
 
