@@ -34,7 +34,7 @@ endfunction()
 
 # What a controller builds against, as dream::<name>.
 # The built-in kinds (agents/kinds/) too: the agent host links them.
-set(DREAM_EXPORTED_LIBRARIES robotarium world config run_config msgs lcm run_log agents kind_api ${DREAM_BUILT_IN_KINDS}
+set(DREAM_EXPORTED_LIBRARIES robotarium barriers world config run_config msgs lcm run_log agents kind_api ${DREAM_BUILT_IN_KINDS}
   agent_host)
 set(exported_targets)
 foreach(name IN LISTS DREAM_EXPORTED_LIBRARIES)
@@ -67,6 +67,7 @@ install(DIRECTORY
     ${PROJECT_SOURCE_DIR}/sim/world/include/
     ${PROJECT_SOURCE_DIR}/sim/run_config/include/
     ${PROJECT_SOURCE_DIR}/agents/include/
+    ${PROJECT_SOURCE_DIR}/agents/barriers/include/
     ${PROJECT_SOURCE_DIR}/agents/kind_api/include/
     ${PROJECT_SOURCE_DIR}/agents/agent_host/include/
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}

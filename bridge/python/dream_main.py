@@ -70,10 +70,17 @@ P_MAX_WHEEL_SPEED = 17
 P_STOP_WHEN_DONE = 18
 P_MAX_ABS_V = 19
 P_MAX_ABS_W = 20
-P_COUNT = 21
+P_BARRIER_SAFETY_RADIUS = 21
+P_BARRIER_GAIN = 22
+P_BARRIER_PROJECTION_DISTANCE = 23
+P_BARRIER_MAGNITUDE_LIMIT = 24
+P_BARRIER_HAS_BOUNDARY = 25
+# The certificate's boundary: x_min, x_max, y_min, y_max from here.
+P_BARRIER_BOUNDARY = 26
+P_COUNT = 30
 
 MAGIC = 1146242369.0  # "DREA"
-FORMAT_VERSION = 2.0
+FORMAT_VERSION = 3.0
 STRATEGY_REPLAY = 0.0
 STRATEGY_TRACK = 1.0
 STRATEGY_CONTROLLER = 2.0
@@ -155,6 +162,12 @@ STOP_WHEN_DONE = params[P_STOP_WHEN_DONE] != 0.0
 MAX_ABS_V = params[P_MAX_ABS_V]
 MAX_ABS_W = params[P_MAX_ABS_W]
 USE_BARRIERS = params[P_BARRIERS] != 0.0
+BARRIER_SAFETY_RADIUS = params[P_BARRIER_SAFETY_RADIUS]
+BARRIER_GAIN = params[P_BARRIER_GAIN]
+BARRIER_PROJECTION_DISTANCE = params[P_BARRIER_PROJECTION_DISTANCE]
+BARRIER_MAGNITUDE_LIMIT = params[P_BARRIER_MAGNITUDE_LIMIT]
+BARRIER_BOUNDARY = (params[P_BARRIER_BOUNDARY:P_BARRIER_BOUNDARY + 4].copy()
+                    if params[P_BARRIER_HAS_BOUNDARY] != 0.0 else None)
 SETTLE_MAX_STEPS = int(params[P_SETTLE_MAX_STEPS])
 SETTLE_POSITION_TOLERANCE = params[P_SETTLE_POSITION_TOLERANCE]
 SETTLE_HEADING_TOLERANCE = params[P_SETTLE_HEADING_TOLERANCE]
@@ -168,7 +181,9 @@ WHEEL_RADIUS = params[P_WHEEL_RADIUS]
 BASE_LENGTH = params[P_BASE_LENGTH]
 WHEEL_LIMIT = params[P_MAX_WHEEL_SPEED] * (1.0 - WHEEL_LIMIT_MARGIN)
 if not (1 <= N <= 50 and STEPS >= 1 and SETTLE_MAX_STEPS >= 0 and WHEEL_RADIUS > 0 and BASE_LENGTH > 0 and
-        WHEEL_LIMIT > 0 and (not CONTROLLER or (MAX_ABS_V > 0 and MAX_ABS_W > 0))):
+        WHEEL_LIMIT > 0 and (not CONTROLLER or (MAX_ABS_V > 0 and MAX_ABS_W > 0)) and
+        (not USE_BARRIERS or (BARRIER_SAFETY_RADIUS > 0 and BARRIER_GAIN > 0 and BARRIER_PROJECTION_DISTANCE > 0 and
+                              BARRIER_MAGNITUDE_LIMIT > 0))):
     fail(PARAMS_FILE + " holds values out of range; export the run again")
 
 x0 = load(INITIAL_POSES_FILE, (3, N))
@@ -353,8 +368,17 @@ r = robotarium.Robotarium(number_of_robots=N, show_figure=False, initial_conditi
                           sim_in_real_time=False)
 barrier = None
 if USE_BARRIERS:
-    from rps.utilities.barrier_certificates import create_uni_barrier_certificate_with_boundary
-    barrier = create_uni_barrier_certificate_with_boundary()
+    # The certificate the simulated run applied (config barriers:, or dream export --barriers).
+    from rps.utilities import barrier_certificates
+    if BARRIER_BOUNDARY is not None:
+        barrier = barrier_certificates.create_uni_barrier_certificate_with_boundary(
+            safety_radius=BARRIER_SAFETY_RADIUS, barrier_gain=BARRIER_GAIN,
+            projection_distance=BARRIER_PROJECTION_DISTANCE, velocity_magnitude_limit=BARRIER_MAGNITUDE_LIMIT,
+            boundary_points=BARRIER_BOUNDARY)
+    else:
+        barrier = barrier_certificates.create_uni_barrier_certificate(
+            barrier_gain=BARRIER_GAIN, safety_radius=BARRIER_SAFETY_RADIUS,
+            projection_distance=BARRIER_PROJECTION_DISTANCE, velocity_magnitude_limit=BARRIER_MAGNITUDE_LIMIT)
 
 settle_steps = 0
 completed = 0

@@ -64,8 +64,8 @@ const std::vector<std::string>& FlatPythonRuntime::ShippedModules() {
   // robot_agent and controller_spec drive the controller; the others are what
   // they and a controller import. Never lcm, agent_host, embedded: the
   // LCM transport and hosting, which the script replaces.
-  static const std::vector<std::string> kModules = {"motion", "robot",           "sensors", "radios",  "timer",
-                                                    "robot_agent", "controller_spec", "hrvo", "__init__"};
+  static const std::vector<std::string> kModules = {"motion",      "robot",           "sensors", "radios",   "timer",
+                                                    "robot_agent", "controller_spec", "hrvo",    "barriers", "__init__"};
   return kModules;
 }
 
@@ -89,7 +89,7 @@ std::string FlatPythonRuntime::Flatten(const std::string& module, const std::str
       if (std::find(shipped.begin(), shipped.end(), target) == shipped.end() || target == "__init__") {
         throw std::runtime_error(where + "imports ." + target +
                                  ", which a Robotarium submission does not ship (it ships " +
-                                 "motion, robot, sensors, radios, timer, robot_agent, controller_spec, hrvo)");
+                                 "motion, robot, sensors, radios, timer, robot_agent, controller_spec, hrvo, barriers)");
       }
       const bool opens = names.find('(') != std::string::npos && names.find(')') == std::string::npos;
       if (opens || (!names.empty() && names.back() == '\\')) {

@@ -214,6 +214,13 @@ ExportInput ReadAndCheck(const std::string& run_dir, const std::string& out_dir,
     throw std::runtime_error(refusal);
   }
   input.config_text = files::ReadFileText(input.config_file);
+  const run_config::BarrierConfig& barriers = input.config.barriers;
+  if (options.barriers && barriers.kind != run_config::BarrierConfig::Kind::kNone &&
+      barriers.apply_in == run_config::BarrierConfig::ApplyIn::kController) {
+    throw std::runtime_error(input.config_file + ": barriers: apply_in: controller: the controller applies its " +
+                             "certificate itself (dream.barriers ships with it); --barriers would put a second " +
+                             "one on its commands. Drop --barriers, or set apply_in: world");
+  }
   input.track = ReadRunTrack(input.log_file, &input.end);
   const run_config::RunConfig& config = input.config;
   if (input.track.num_robots != config.num_robots) {
@@ -302,6 +309,11 @@ SubmissionParams MakeParams(const ExportInput& input, const ExportOptions& optio
   params.num_robots = input.track.num_robots;
   params.steps = input.steps;
   params.options = options;
+  // The certificate the simulator applied is the one the lab's script applies.
+  if (config.barriers.InWorld()) {
+    params.options.barriers = true;
+    params.options.barrier_params = config.barriers.unicycle;
+  }
   params.wheel_radius_m = config.world.wheel_radius_m;
   params.base_length_m = config.world.base_length_m;
   params.max_wheel_speed_radps = config.world.max_wheel_speed_radps;
@@ -323,6 +335,19 @@ nlohmann::ordered_json Manifest(const ExportInput& input, const ExportSummary& s
   manifest["source_run"] = fs::weakly_canonical(fs::absolute(run_dir)).string();
   manifest["strategy"] = StrategyName(options.strategy);
   manifest["barriers"] = options.barriers;
+  if (options.barriers) {
+    const barriers::UnicycleBarrierParams& b = options.barrier_params;
+    nlohmann::ordered_json barrier;
+    barrier["from"] = input.config.barriers.InWorld() ? "config" : "--barriers";
+    barrier["safety_radius_m"] = b.safety_radius_m;
+    barrier["barrier_gain"] = b.barrier_gain;
+    barrier["projection_distance_m"] = b.projection_distance_m;
+    barrier["magnitude_limit_mps"] = b.magnitude_limit_mps;
+    barrier["boundary_m"] = b.boundary ? nlohmann::ordered_json::array({b.boundary->x_min_m, b.boundary->x_max_m,
+                                                                         b.boundary->y_min_m, b.boundary->y_max_m})
+                                       : nlohmann::ordered_json();
+    manifest["barrier_params"] = barrier;
+  }
   if (options.calibration) manifest["calibration"] = true;
   manifest["robots"] = summary.num_robots;
   manifest["steps"] = summary.steps;
@@ -360,7 +385,11 @@ std::string Instructions(const ExportInput& input, const ExportSummary& summary,
           " ms; the lab's own start-up drive comes on top)\n";
   text += "Strategy: " + std::string(StrategyName(options.strategy)) + " (" +
           StrategyDescription(options.strategy) + ")" +
-          (options.barriers ? ", through the Robotarium's barrier certificates" : "") + "\n";
+          (options.barriers ? std::string(", through the Robotarium's unicycle barrier certificate") +
+                                  (input.config.barriers.InWorld() ? " (the config's barriers:, as the simulator applied it)"
+                                                                   : "")
+                            : std::string()) +
+          "\n";
   if (input.controller) {
     text += std::string("The run ends after ") + std::to_string(summary.steps) + " steps" +
             (params.stop_when_done ? ", or earlier once every robot reports done" : "") + " (the simulated run took " +

@@ -6,6 +6,24 @@
 #include "dream/bridge/submission_format.h"
 
 namespace dream::bridge {
+namespace {
+
+/// The barrier certificate's parameters of a format-3 file (its flag checked to be 0 or 1).
+barriers::UnicycleBarrierParams BarrierParamsOf(const double* p) {
+  barriers::UnicycleBarrierParams barrier;
+  barrier.safety_radius_m = p[kParamBarrierSafetyRadius];
+  barrier.barrier_gain = p[kParamBarrierGain];
+  barrier.projection_distance_m = p[kParamBarrierProjectionDistance];
+  barrier.magnitude_limit_mps = p[kParamBarrierMagnitudeLimit];
+  barrier.boundary.reset();
+  if (p[kParamBarrierHasBoundary] == 1.0) {
+    barrier.boundary = barriers::BoundaryBox{p[kParamBarrierBoundaryXMin], p[kParamBarrierBoundaryXMax],
+                                             p[kParamBarrierBoundaryYMin], p[kParamBarrierBoundaryYMax]};
+  }
+  return barrier;
+}
+
+}  // namespace
 
 NpyArray SubmissionParams::ToNpy() const {
   NpyArray array;
@@ -35,25 +53,37 @@ NpyArray SubmissionParams::ToNpy() const {
   p[kParamStopWhenDone] = stop_when_done ? 1.0 : 0.0;
   p[kParamMaxAbsV] = max_abs_v_mps;
   p[kParamMaxAbsW] = max_abs_w_radps;
+  const barriers::UnicycleBarrierParams& barrier = options.barrier_params;
+  p[kParamBarrierSafetyRadius] = barrier.safety_radius_m;
+  p[kParamBarrierGain] = barrier.barrier_gain;
+  p[kParamBarrierProjectionDistance] = barrier.projection_distance_m;
+  p[kParamBarrierMagnitudeLimit] = barrier.magnitude_limit_mps;
+  p[kParamBarrierHasBoundary] = barrier.boundary ? 1.0 : 0.0;
+  const barriers::BoundaryBox box = barrier.boundary.value_or(barriers::BoundaryBox{});
+  p[kParamBarrierBoundaryXMin] = box.x_min_m;
+  p[kParamBarrierBoundaryXMax] = box.x_max_m;
+  p[kParamBarrierBoundaryYMin] = box.y_min_m;
+  p[kParamBarrierBoundaryYMax] = box.y_max_m;
   return array;
 }
 
 SubmissionParams SubmissionParams::FromNpy(const NpyArray& array, const std::string& name) {
   auto fail = [&name](const std::string& problem) { throw std::runtime_error(name + ": " + problem); };
   const bool format1 = array.shape == std::vector<int64_t>{kParamCountFormat1};
-  if (array.shape != std::vector<int64_t>{kParamCount} && !format1) {
+  const bool format2 = array.shape == std::vector<int64_t>{kParamCountFormat2};
+  if (array.shape != std::vector<int64_t>{kParamCount} && !format1 && !format2) {
     fail("expected " + std::to_string(kParamCount) + " numbers (a dream_params.npy of this dream version)");
   }
   const double* p = array.values.data();
-  const int count = format1 ? kParamCountFormat1 : kParamCount;
+  const int count = format1 ? kParamCountFormat1 : format2 ? kParamCountFormat2 : kParamCount;
   for (int i = 0; i < count; ++i) {
     if (!std::isfinite(p[i])) fail("value " + std::to_string(i) + " is not finite");
   }
   if (p[kParamMagic] != kParamsMagic) fail("is not a dream_params.npy (wrong magic number)");
-  const double version = format1 ? 1.0 : kFormatVersion;
+  const double version = format1 ? 1.0 : format2 ? 2.0 : kFormatVersion;
   if (p[kParamFormatVersion] != version) {
     fail("has format version " + std::to_string(p[kParamFormatVersion]) + " with " + std::to_string(count) +
-         " numbers; this dream reads version 1 (18 numbers) and " + std::to_string(kFormatVersion) +
+         " numbers; this dream reads version 1 (18 numbers), 2 (21) and " + std::to_string(kFormatVersion) +
          " (" + std::to_string(kParamCount) + "); export the run again");
   }
   auto whole = [&](int index, double low, double high, const char* what) {
@@ -98,7 +128,12 @@ SubmissionParams SubmissionParams::FromNpy(const NpyArray& array, const std::str
       fail("the command limits must be positive for the controller strategy");
     }
   }
+  if (!format1 && !format2) {
+    whole(kParamBarrierHasBoundary, 0, 1, "barrier boundary");
+    params.options.barrier_params = BarrierParamsOf(p);
+  }
   std::string error;
+  if (!params.options.barrier_params.IsValid(&error)) fail("barriers: " + error);
   if (!params.options.IsValid(&error)) fail(error);
   if (!(params.wheel_radius_m > 0 && params.base_length_m > 0 && params.max_wheel_speed_radps > 0)) {
     fail("robot constants must be positive");

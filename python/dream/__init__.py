@@ -11,3 +11,4 @@ from .timer import Timer
 from .robot_agent import AgentOutput, ControllerFault, ControllerTimeout, RobotAgent, RunInterrupted, controller_error_text, is_run_interrupt
 from .controller_spec import ConfigError, ControllerSpec, check
 from .hrvo import HrvoAvoidance, HrvoParams
+from .barriers import create_si_barrier_certificate, create_si_barrier_certificate_with_boundary, create_uni_barrier_certificate, create_uni_barrier_certificate_with_boundary

@@ -57,7 +57,7 @@ TEST(FlatPythonRuntimeTest, ShipsTheRuntimeFlatWithoutItsTransport) {
   }
   EXPECT_THAT(names, ::testing::UnorderedElementsAre("dream.py", "dream_robot.py", "dream_motion.py", "dream_sensors.py",
                                                      "dream_radios.py", "dream_timer.py", "dream_robot_agent.py",
-                                                     "dream_controller_spec.py", "dream_hrvo.py"));
+                                                     "dream_controller_spec.py", "dream_hrvo.py", "dream_barriers.py"));
   const std::set<std::string> imported = runtime.ImportedModules({"import rps.robotarium as r\n"});
   for (const char* name : {"numpy", "json", "os", "rps"}) EXPECT_EQ(imported.count(name), 1u) << name;
   EXPECT_THAT(ErrorOf([] { FlatPythonRuntime::Read("/nonexistent"); }),
@@ -167,6 +167,47 @@ TEST(SubmissionParamsTest, ControllerStrategyRoundTripsAndFormatOneIsStillRead) 
   EXPECT_FALSE(old_read.stop_when_done);
   old.values[kParamStrategy] = kStrategyController;  // format 1 had no controller strategy
   EXPECT_THAT(ErrorOf([&] { SubmissionParams::FromNpy(old, "old.npy"); }), HasSubstr("old.npy: unknown strategy"));
+}
+
+TEST(SubmissionParamsTest, TheBarrierCertificateRoundTripsAndFormatTwoGetsRpsDefaults) {
+  SubmissionParams params;
+  params.num_robots = 4;
+  params.steps = 50;
+  params.wheel_radius_m = 0.016;
+  params.base_length_m = 0.11;
+  params.max_wheel_speed_radps = 12.5;
+  params.options.barriers = true;
+  params.options.barrier_params = barriers::UnicycleBarrierParams::Rps();  // create_uni_barrier_certificate()
+  const SubmissionParams read = SubmissionParams::FromNpy(params.ToNpy(), "p.npy");
+  EXPECT_TRUE(read.options.barriers);
+  EXPECT_EQ(read.options.barrier_params.safety_radius_m, 0.15);
+  EXPECT_EQ(read.options.barrier_params.barrier_gain, 100.0);
+  EXPECT_EQ(read.options.barrier_params.projection_distance_m, 0.05);
+  EXPECT_FALSE(read.options.barrier_params.boundary.has_value());
+
+  params.options.barrier_params = barriers::UnicycleBarrierParams::RpsWithBoundary();
+  params.options.barrier_params.boundary->x_max_m = 1.4;
+  const SubmissionParams boxed = SubmissionParams::FromNpy(params.ToNpy(), "p.npy");
+  ASSERT_TRUE(boxed.options.barrier_params.boundary.has_value());
+  EXPECT_EQ(boxed.options.barrier_params.boundary->x_max_m, 1.4);
+
+  // An export made before the barriers' parameters: 21 numbers, format 2, rps's defaults.
+  NpyArray old = params.ToNpy();
+  old.shape = {kParamCountFormat2};
+  old.values.resize(kParamCountFormat2);
+  old.values[kParamFormatVersion] = 2.0;
+  const SubmissionParams old_read = SubmissionParams::FromNpy(old, "old.npy");
+  EXPECT_TRUE(old_read.options.barriers);
+  EXPECT_EQ(old_read.options.barrier_params.barrier_gain, 150.0);
+  EXPECT_EQ(old_read.options.barrier_params.boundary->x_max_m, 1.6);
+
+  NpyArray bad = params.ToNpy();
+  bad.values[kParamBarrierHasBoundary] = 2.0;
+  EXPECT_THAT(ErrorOf([&] { SubmissionParams::FromNpy(bad, "bad.npy"); }), HasSubstr("bad.npy: barrier boundary"));
+  bad = params.ToNpy();
+  bad.values[kParamBarrierSafetyRadius] = 0.0;
+  EXPECT_THAT(ErrorOf([&] { SubmissionParams::FromNpy(bad, "bad.npy"); }),
+              HasSubstr("bad.npy: barriers: safety_radius_m = 0"));
 }
 
 }  // namespace

@@ -70,6 +70,10 @@ TEST(ConfigOverride, CreatesASectionTheSchemaKnowsWhenTheConfigLeavesItOut) {
   config_overrides::ApplyConfigOverride(nested, "world.realism.preset", "lab", "demo.yaml");
   EXPECT_EQ(nested["world"]["realism"]["preset"].as<std::string>(), "lab");
   EXPECT_NO_THROW(run_config::LoadRunConfig(config::ConfigNode(nested, "demo.yaml", "")));
+
+  YAML::Node guarded = YAML::Load(kConfig);  // no barriers: section
+  config_overrides::ApplyConfigOverride(guarded, "barriers.kind", "unicycle", "demo.yaml");
+  EXPECT_TRUE(run_config::LoadRunConfig(config::ConfigNode(guarded, "demo.yaml", "")).barriers.InWorld());
 }
 
 TEST(ConfigOverride, UnknownKeysAndIndicesAreErrorsNamingThem) {

@@ -29,11 +29,12 @@ std::string KeysOf(const YAML::Node& map) {
 
 // The sections of a run config (LoadRunConfig) whose keys are all optional or
 // checked there: a --set may create them when the config leaves them out
-// (`--set world.realism=lab` on a config without `world:`). Any other missing
+// (`--set world.realism=lab` on a config without `world:`, `--set
+// barriers.kind=unicycle` on one without `barriers:`). Any other missing
 // part is a typo until proven otherwise.
 const std::vector<std::string>& CreatableSections() {
   static const std::vector<std::string> sections = {"world", "world.realism", "controller", "initial_poses",
-                                                    "initial_poses.generate"};
+                                                    "initial_poses.generate", "barriers"};
   return sections;
 }
 

@@ -16,6 +16,7 @@
 #include "dream/node/sim_node.h"
 #include "dream/node/true_pose_recording.h"
 #include "dream/session/terminal_progress.h"
+#include "dream/world/barrier_world.h"
 #include "dream/world/realistic_world.h"
 
 namespace dream::session {
@@ -79,7 +80,7 @@ RunSession::Stepped RunSession::Step(lcm::LcmInterface& lcm, const Folder& folde
     if (stepped.world == nullptr) throw std::logic_error("RunSession: the given world's make() returned none");
     // A realistic world's log keeps the truth on DREAM_POSES, the agents' view on DREAM_MEASURED_POSES.
     std::optional<node::TruePoseRecording> truth;
-    if (const auto* realistic = dynamic_cast<const world::RealisticWorld*>(stepped.world.get())) {
+    if (const auto* realistic = dynamic_cast<const world::RealisticWorld*>(&world::SteppingWorldOf(*stepped.world))) {
       truth.emplace(recorder, *realistic);
     }
     // What the world refuses is kept apart from the run's log (at most a few MB).

@@ -4,6 +4,7 @@
 
 #include "dream/lcm/channels.h"
 #include "dream/world/lab_verifier_rules.h"
+#include "dream/world/barrier_world.h"
 #include "dream/world/realistic_world.h"
 
 namespace dream::node {
@@ -109,7 +110,7 @@ world::RunJudgement JudgeRun(const run_config::RunConfig& config, const RunOutco
   judgement.Add(rules.Check(declared, counts));
   judgement.Add(OutcomeReasons(outcome));
   // world.realism: a robot lost to the tracker (a warning: the lab runs it, blind).
-  if (const auto* realistic = dynamic_cast<const world::RealisticWorld*>(&world)) {
+  if (const auto* realistic = dynamic_cast<const world::RealisticWorld*>(&world::SteppingWorldOf(world))) {
     if (const std::optional<world::VerdictReason> lost = realistic->TrackerLossReason()) judgement.Add(*lost);
   }
   return judgement;

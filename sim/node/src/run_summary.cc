@@ -7,6 +7,7 @@
 #include "dream/lcm/run_id.h"
 #include "dream/files/json_text.h"
 #include "dream/node/true_pose_recording.h"
+#include "dream/world/barrier_world.h"
 #include "dream/world/realistic_world.h"
 #include "dream/world/run_report.h"
 
@@ -144,7 +145,7 @@ nlohmann::ordered_json RunSummary(const run_config::RunConfig& config, const Run
   json["log_events"] = outcome.log_events;
   // Where the robots really ended: a realistic world's poses() are what the
   // agents were sent last (measured), its true_poses() where they are.
-  const auto* realistic = dynamic_cast<const world::RealisticWorld*>(&world);
+  const auto* realistic = dynamic_cast<const world::RealisticWorld*>(&world::SteppingWorldOf(world));
   nlohmann::json poses = nlohmann::json::array();
   for (const world::Pose2& pose : realistic != nullptr ? realistic->true_poses() : world.poses()) {
     poses.push_back({pose.x_m, pose.y_m, pose.theta_rad});

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "dream/barriers/unicycle_barrier_params.h"
 #include "dream/world/lab_verifier_rules.h"
 
 namespace dream::bridge {
@@ -34,8 +35,12 @@ std::vector<std::string> StrategyNames();
 struct ExportOptions {
   Strategy strategy = Strategy::kTrack;
   /// Pass every command through the Robotarium's own unicycle barrier
-  /// certificate with boundary (a safety layer; it bends the plan slightly).
+  /// certificate (`--barriers`, or the run config's `barriers:` with
+  /// `apply_in: world`, so the lab applies what the simulator did).
   bool barriers = false;
+  /// Its parameters: rps's create_uni_barrier_certificate_with_boundary()
+  /// defaults, or the config's.
+  barriers::UnicycleBarrierParams barrier_params = barriers::UnicycleBarrierParams::RpsWithBoundary();
   /// Settle phase before step 0: at most this many steps (0: none). Every
   /// run's verdict assumes this default (the duration its export declares).
   int settle_max_steps = static_cast<int>(world::LabVerifierRules::kExportSettleSteps);

@@ -60,12 +60,27 @@ enum ParamIndex : int {
   /// (config world.max_abs_v_mps / max_abs_w_radps).
   kParamMaxAbsV = 19,
   kParamMaxAbsW = 20,
-  kParamCount = 21,
+  /// With barriers: the unicycle certificate's parameters (config `barriers:`),
+  /// and whether it keeps the robots inside kParamBoundary* (1: rps's
+  /// create_uni_barrier_certificate_with_boundary, 0: create_uni_barrier_certificate).
+  kParamBarrierSafetyRadius = 21,
+  kParamBarrierGain = 22,
+  kParamBarrierProjectionDistance = 23,
+  kParamBarrierMagnitudeLimit = 24,
+  kParamBarrierHasBoundary = 25,
+  kParamBarrierBoundaryXMin = 26,
+  kParamBarrierBoundaryXMax = 27,
+  kParamBarrierBoundaryYMin = 28,
+  kParamBarrierBoundaryYMax = 29,
+  kParamCount = 30,
 };
 
 /// Format 1 (before the controller strategy) had the first 18 numbers; its
 /// exports are still imported.
 inline constexpr int kParamCountFormat1 = 18;
+/// Format 2 (before the barriers' parameters) had the first 21; its exports
+/// are still imported, their barriers rps's defaults.
+inline constexpr int kParamCountFormat2 = 21;
 
 /// One obstacle at one step in dream_obstacles.npy, as DREAM_OBSTACLES carries it.
 enum ObstacleColumn : int {
@@ -81,7 +96,7 @@ enum ObstacleColumn : int {
 
 /// "DREA" as a number: dream_params.npy starts with it.
 inline constexpr double kParamsMagic = 1146242369.0;
-inline constexpr double kFormatVersion = 2.0;
+inline constexpr double kFormatVersion = 3.0;
 inline constexpr double kStrategyReplay = 0.0;
 inline constexpr double kStrategyTrack = 1.0;
 inline constexpr double kStrategyController = 2.0;

@@ -1,4 +1,4 @@
-"""Stand-in for rps.utilities.barrier_certificates (unicycle barrier with boundary).
+"""Stand-in for rps.utilities.barrier_certificates (the unicycle barriers, with and without boundary).
 
 The same constraints as the V2.0.0 certificate (pairwise barrier h = |d|^2 - r^2
 with rate gain * h^3, four wall barriers with 0.4 * gain, an octagon speed
@@ -35,9 +35,21 @@ def _project(u_nominal, a, b, sweeps=2000, tolerance=1e-10):
     return None
 
 
+def create_uni_barrier_certificate(barrier_gain=100.0, safety_radius=0.15, projection_distance=0.05,
+                                   velocity_magnitude_limit=0.2):
+    """Without walls; as in V2.0.0 the octagon's first side is bounded by the limit itself."""
+    return _unicycle(safety_radius, barrier_gain, projection_distance, velocity_magnitude_limit, None,
+                     "create_uni_barrier_certificate")
+
+
 def create_uni_barrier_certificate_with_boundary(safety_radius=0.12, barrier_gain=150.0, projection_distance=0.03,
                                                  velocity_magnitude_limit=0.2, boundary_points=None):
     bounds = np.array([-1.6, 1.6, -1.0, 1.0]) if boundary_points is None else np.asarray(boundary_points, float)
+    return _unicycle(safety_radius, barrier_gain, projection_distance, velocity_magnitude_limit, bounds,
+                     "create_uni_barrier_certificate_with_boundary")
+
+
+def _unicycle(safety_radius, barrier_gain, projection_distance, velocity_magnitude_limit, bounds, name):
     radius = safety_radius + 2 * projection_distance
     limit = velocity_magnitude_limit * math.cos(math.pi / 8)
     c = 1 / math.sqrt(2)
@@ -67,20 +79,22 @@ def create_uni_barrier_certificate_with_boundary(safety_radius=0.12, barrier_gai
                 rhs.append(barrier_gain * h ** 3)
         for k in range(m):
             px, py = points[:, k]
-            for direction, gap in (((0, 1), bounds[3] - radius / 2 - py), ((0, -1), py - bounds[2] - radius / 2),
-                                   ((1, 0), bounds[1] - radius / 2 - px), ((-1, 0), px - bounds[0] - radius / 2)):
+            walls = () if bounds is None else (
+                ((0, 1), bounds[3] - radius / 2 - py), ((0, -1), py - bounds[2] - radius / 2),
+                ((1, 0), bounds[1] - radius / 2 - px), ((-1, 0), px - bounds[0] - radius / 2))
+            for direction, gap in walls:
                 row = np.zeros(2 * m)
                 row[2 * k:2 * k + 2] = direction
                 rows.append(row)
                 rhs.append(0.4 * barrier_gain * gap ** 3)
-            for side in octagon:
+            for index, side in enumerate(octagon):
                 row = np.zeros(2 * m)
                 row[2 * k:2 * k + 2] = side
                 rows.append(row)
-                rhs.append(limit)
+                rhs.append(velocity_magnitude_limit if (index == 0 and bounds is None) else limit)
         safe = _project(dxi.reshape(-1, order="F"), np.array(rows), np.array(rhs))
         if safe is None:
-            warnings.warn("create_uni_barrier_certificate_with_boundary: Safety QP failed. Commanding zero velocities.")
+            warnings.warn(name + ": Safety QP failed. Commanding zero velocities.")
             return np.zeros((2, n))
         safe = safe.reshape((2, m), order="F")[:, :n]
         return np.vstack([cos_t * safe[0] + sin_t * safe[1],

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "dream/config/config_node.h"
+#include "dream/run_config/barrier_config.h"
 #include "dream/config/controller_config.h"
 #include "dream/world/pose2.h"
 #include "dream/world/realism_params.h"
@@ -40,6 +41,8 @@ struct RunConfig : config::ControllerConfig {
   std::string realism_file;
   std::vector<world::Pose2> initial_poses;
   std::vector<world::RectangleObstacleSpec> obstacles;
+  /// `barriers:`: the Robotarium's barrier certificate, if any, and where it is applied.
+  BarrierConfig barriers;
 };
 
 /// Reads and checks a run config. @throws ConfigError naming file, line, key

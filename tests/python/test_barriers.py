@@ -1,0 +1,84 @@
+#!/usr/bin/python3
+"""dream.barriers (python/dream/barriers.py) against the official Robotarium V2 barrier
+certificates: tests/data/robotarium_v2_barriers.json holds rps's outputs on random states
+(tests/robotarium_reference/generate_barrier_reference.py), the C++ barriers_test reads the same
+file. Same solver, same settings: the commands must agree to 1e-9 (1e-5 is the issue's bar).
+
+Exit code 77 (skipped) when numpy or cvxopt is missing (Debian: python3-cvxopt).
+"""
+
+import json
+import os
+import sys
+import unittest
+import warnings
+
+try:
+    import numpy as np
+    import cvxopt  # noqa: F401  (what dream.barriers solves with)
+except ImportError as error:
+    print("skipped: %s (Debian: apt-get install python3-numpy python3-cvxopt)" % error)
+    sys.exit(77)
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SOURCE_DIR = os.path.abspath(os.environ.get("DREAM_SOURCE_DIR", os.path.join(HERE, "..", "..")))
+sys.path.insert(0, os.path.join(SOURCE_DIR, "python"))
+
+from dream import barriers  # noqa: E402
+
+FIXTURE = os.path.join(SOURCE_DIR, "tests", "data", "robotarium_v2_barriers.json")
+TOLERANCE = 1e-9
+
+
+class ReferenceTest(unittest.TestCase):
+    def test_same_commands_as_rps(self):
+        with open(FIXTURE, encoding="utf-8") as f:
+            cases = json.load(f)["cases"]
+        self.assertGreaterEqual(len(cases), 20)
+        failures = 0
+        for index, case in enumerate(cases):
+            with self.subTest(case=index, function=case["function"]):
+                certificate = getattr(barriers, case["function"])(**case["params"])
+                args = [np.array(case["dx"]), np.array(case["x"])]
+                if "obstacles" in case:
+                    args.append(np.array(case["obstacles"]))
+                with warnings.catch_warnings(record=True) as caught:
+                    warnings.simplefilter("always")
+                    out = certificate(*args)
+                failed = any("QP failed" in str(w.message) for w in caught)
+                self.assertEqual(failed, case["qp_failed"])
+                failures += failed
+                np.testing.assert_allclose(out, np.array(case["expected"]), rtol=0, atol=TOLERANCE)
+        self.assertGreaterEqual(failures, 1, "the fixture should hold a QP that fails")
+
+
+class InputTest(unittest.TestCase):
+    def test_one_robot_passes_unchanged(self):
+        dxu = np.array([[5.0], [9.0]])
+        out = barriers.create_uni_barrier_certificate_with_boundary()(dxu, np.array([[1.59], [0.0], [0.0]]))
+        np.testing.assert_array_equal(out, dxu)
+
+    def test_bad_parameters_are_named(self):
+        with self.assertRaisesRegex(ValueError, "projection_distance must be a positive number, got 0"):
+            barriers.create_uni_barrier_certificate_with_boundary(projection_distance=0)
+        with self.assertRaisesRegex(ValueError, "boundary_points must be"):
+            barriers.create_si_barrier_certificate_with_boundary(boundary_points=[1, -1, 0, 1])
+        with self.assertRaisesRegex(ValueError, "safety_radius"):
+            barriers.create_si_barrier_certificate(safety_radius=float("nan"))
+
+    def test_bad_shapes_are_named(self):
+        certificate = barriers.create_uni_barrier_certificate_with_boundary()
+        with self.assertRaisesRegex(ValueError, "x must be 3 x N"):
+            certificate(np.zeros((2, 3)), np.zeros((2, 3)))
+        with self.assertRaisesRegex(ValueError, "dxu has 3 columns, x 2"):
+            certificate(np.zeros((2, 3)), np.zeros((3, 2)))
+
+    def test_head_on_robots_are_slowed(self):
+        poses = np.array([[-0.12, 0.12], [0.0, 0.0], [0.0, np.pi]])
+        out = barriers.create_uni_barrier_certificate_with_boundary()(np.array([[0.2, 0.2], [0.0, 0.0]]), poses)
+        self.assertLess(out[0, 0], 0.05)
+        self.assertLess(out[0, 1], 0.05)
+
+
+if __name__ == "__main__":
+    unittest.main()
