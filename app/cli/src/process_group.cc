@@ -1,6 +1,7 @@
 #include "process_group.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
@@ -85,9 +86,14 @@ pid_t ProcessGroup::Start(const std::vector<std::string>& argv, const std::strin
     int error = 0;
     if (!output_path.empty()) {
       const int in = ::open("/dev/null", O_RDONLY);
-      const int out = ::open(output_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      if (in < 0 || out < 0 || ::dup2(in, STDIN_FILENO) < 0 || ::dup2(out, STDOUT_FILENO) < 0 ||
-          ::dup2(out, STDERR_FILENO) < 0) {
+      // O_NOFOLLOW: a link planted at the output's name is not written
+      // through; O_NONBLOCK and the check: a FIFO there is refused, not waited on.
+      const int out = ::open(output_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_NONBLOCK, 0644);
+      struct stat status {};
+      if (out >= 0 && (::fstat(out, &status) != 0 || !S_ISREG(status.st_mode))) {
+        error = EINVAL;
+      } else if (in < 0 || out < 0 || ::fcntl(out, F_SETFL, 0) != 0 || ::dup2(in, STDIN_FILENO) < 0 ||
+                 ::dup2(out, STDOUT_FILENO) < 0 || ::dup2(out, STDERR_FILENO) < 0) {
         error = errno;
       }
     }

@@ -3,49 +3,45 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <stdexcept>
+
+#include "dream/files/atomic_file.h"
+#include "dream/files/regular_file.h"
 
 namespace dream::workflows {
 
 void ReplaceFile(const std::string& path, const std::string& content) {
-  const std::string temporary = path + ".part";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << content;
-    out.close();
-    if (!out) {
-      ::unlink(temporary.c_str());
-      throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
+  files::WriteFileAtomically(path, content, files::Durability::kRenamedOnly);
+}
+
+namespace {
+
+// `max_bytes` of the regular file at `path` from `offset`; empty when it
+// cannot be read (a FIFO or device there is refused, not waited on).
+std::string ReadPart(const std::string& path, size_t max_bytes, bool from_end) {
+  try {
+    const files::RegularFile file(path);
+    const std::uintmax_t size = file.size();
+    const std::uintmax_t start = from_end && size > max_bytes ? size - max_bytes : 0;
+    std::string text(max_bytes, '\0');
+    size_t got = 0;
+    while (got < max_bytes) {
+      const ssize_t n = ::pread(file.descriptor(), text.data() + got, max_bytes - got, static_cast<off_t>(start + got));
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;
+      got += static_cast<size_t>(n);
     }
-  }
-  if (::rename(temporary.c_str(), path.c_str()) != 0) {
-    const int error = errno;
-    ::unlink(temporary.c_str());
-    throw std::runtime_error("cannot write " + path + ": " + std::strerror(error));
+    text.resize(got);
+    return text;
+  } catch (const std::runtime_error&) {
+    return "";
   }
 }
 
-std::string ReadFileHead(const std::string& path, size_t max_bytes) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return "";
-  std::string text(max_bytes, '\0');
-  in.read(text.data(), static_cast<std::streamsize>(max_bytes));
-  text.resize(static_cast<size_t>(in.gcount()));
-  return text;
-}
+}  // namespace
 
-std::string ReadFileTail(const std::string& path, size_t max_bytes) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) return "";
-  const std::streamoff size = in.tellg();
-  const std::streamoff start = size > static_cast<std::streamoff>(max_bytes) ? size - static_cast<std::streamoff>(max_bytes) : 0;
-  in.seekg(start);
-  std::string text(static_cast<size_t>(size - start), '\0');
-  in.read(text.data(), static_cast<std::streamsize>(text.size()));
-  text.resize(static_cast<size_t>(in.gcount()));
-  return text;
-}
+std::string ReadFileHead(const std::string& path, size_t max_bytes) { return ReadPart(path, max_bytes, false); }
+
+std::string ReadFileTail(const std::string& path, size_t max_bytes) { return ReadPart(path, max_bytes, true); }
 
 }  // namespace dream::workflows
