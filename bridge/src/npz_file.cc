@@ -1,5 +1,6 @@
 #include "dream/bridge/npz_file.h"
 
+#include <fcntl.h>
 #include <unistd.h>
 #include <zip.h>
 
@@ -24,7 +25,7 @@ NpzFile::NpzFile(std::string path) : path_(std::move(path)) {
   // Opened without blocking (a FIFO or device is refused), then handed to
   // libzip by descriptor: it reads the very file that was checked.
   const files::RegularFile file(path_);
-  const int fd = ::dup(file.descriptor());
+  const int fd = ::fcntl(file.descriptor(), F_DUPFD_CLOEXEC, 0);
   if (fd < 0) throw std::runtime_error(path_ + ": cannot read the file: " + std::strerror(errno));
   int error = 0;
   archive_ = zip_fdopen(fd, ZIP_CHECKCONS, &error);  // on success libzip owns (and closes) fd

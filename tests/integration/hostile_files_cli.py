@@ -9,7 +9,8 @@
    picture, video or temporary file); the fit used to go on for 45-54 s, then exit 0 and write.
    The test waits on those progress lines, not on time; its timeouts only stop a hang.
 3. Links planted at lab.yaml.tmp.<pid> for the next 3000 process ids in a shared folder, then
-   `dream calibrate --out shared/lab.yaml`: the victim behind them is untouched, lab.yaml written.
+   `dream calibrate small.npz --out shared/lab.yaml`: the victim behind them is untouched, lab.yaml
+   written.
 
 Usage: hostile_files_cli.py --dream BIN --source DIR
 """
@@ -20,6 +21,7 @@ import os
 import shutil
 import signal
 import struct
+import zipfile
 
 from dreamtest import arguments, check, main
 
@@ -27,16 +29,14 @@ EXIT_INPUT = 1
 EXIT_INTERRUPTED = 130
 
 
-def write_npy(path, shape, values):
+def npy_bytes(shape, values):
     """A little-endian float64 .npy of `shape` (C order) holding `values` (an array('d'))."""
     header = "{'descr': '<f8', 'fortran_order': False, 'shape': (%s), }" % ", ".join(str(d) for d in shape)
     header += " " * (63 - (len(header) + 10) % 64) + "\n"
-    with open(path, "wb") as f:
-        f.write(b"\x93NUMPY\x01\x00" + struct.pack("<H", len(header)) + header.encode())
-        values.tofile(f)
+    return b"\x93NUMPY\x01\x00" + struct.pack("<H", len(header)) + header.encode() + values.tobytes()
 
 
-def calibration_npy(path, robots, steps):
+def calibration_values(robots, steps):
     """5 x N x T (x, y, theta, v, w): robots answering steps in v and w a few steps late."""
     dt, delay = 0.033, 5
     rows = [array.array("d", bytes(8 * robots * steps)) for _ in range(5)]
@@ -60,7 +60,21 @@ def calibration_npy(path, robots, steps):
     values = array.array("d")
     for row in rows:
         values.extend(row)
-    write_npy(path, (5, robots, steps), values)
+    return values
+
+
+def calibration_npy(path, robots, steps):
+    with open(path, "wb") as f:
+        f.write(npy_bytes((5, robots, steps), calibration_values(robots, steps)))
+
+
+def calibration_npz(path, robots, steps):
+    """numpy.savez_compressed's layout: poses.npy (3 x N x T) and commands.npy (2 x N x T) in a zip."""
+    values = calibration_values(robots, steps)
+    split = 3 * robots * steps
+    with zipfile.ZipFile(path, "w", zipfile.ZIP_DEFLATED) as archive:
+        archive.writestr("poses.npy", npy_bytes((3, robots, steps), values[:split]))
+        archive.writestr("commands.npy", npy_bytes((2, robots, steps), values[split:]))
 
 
 def leftovers(folder):
@@ -130,8 +144,8 @@ def test(ctx):
     victim = ctx.path("victim.txt")
     with open(victim, "w") as f:
         f.write("the victim's own text\n")
-    small = ctx.path("small_fit.npy")
-    calibration_npy(small, 3, 1500)
+    small = ctx.path("small_fit.npz")  # an .npz: read by libzip from the descriptor checked
+    calibration_npz(small, 3, 1500)
     with open("/proc/sys/kernel/ns_last_pid") as f:
         last_pid = int(f.read())
     target = os.path.join(shared, "lab.yaml")
