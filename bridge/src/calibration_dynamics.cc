@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "dream/robotarium/robotarium_constants.h"
 #include "dream/world/robot_response.h"
@@ -30,11 +31,12 @@ struct Sums2 {
 }  // namespace
 
 CalibrationDynamics::CalibrationDynamics(const std::vector<CalibrationSeries>& series, const world::RealismParams& base,
-                                         double position_sigma_m, double heading_sigma_rad)
+                                         double position_sigma_m, double heading_sigma_rad, files::StopToken stop)
     : series_(series),
       base_(base),
       position_weight_(1.0 / (2.0 * std::max(position_sigma_m, 1e-5) * std::max(position_sigma_m, 1e-5))),
-      heading_weight_(1.0 / (2.0 * std::max(heading_sigma_rad, 1e-4) * std::max(heading_sigma_rad, 1e-4))) {}
+      heading_weight_(1.0 / (2.0 * std::max(heading_sigma_rad, 1e-4) * std::max(heading_sigma_rad, 1e-4))),
+      stop_(std::move(stop)) {}
 
 void CalibrationDynamics::Predict(const CalibrationSeries& series, const DynamicsParams& params,
                                   std::vector<world::UnicycleCommand>* driven, std::vector<double>* motion_s) const {
@@ -63,6 +65,7 @@ DynamicsEvaluation CalibrationDynamics::Evaluate(const DynamicsParams& params) c
   std::vector<world::UnicycleCommand> driven;
   std::vector<double> motion_s;
   for (size_t r = 0; r < series_.size(); ++r) {
+    stop_.ThrowIfRequested();
     const CalibrationSeries& series = series_[r];
     Predict(series, params, &driven, &motion_s);
     Sums1 forward;

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "calibration_series.h"
+#include "dream/files/stop_token.h"
 #include "dream/world/realism_params.h"
 #include "dream/world/unicycle_command.h"
 
@@ -39,8 +40,10 @@ struct DynamicsEvaluation {
 // against the motion its measured poses show.
 class CalibrationDynamics {
  public:
+  // `stop` is polled once per robot of every evaluation (the fit runs
+  // hundreds): asked to stop, Evaluate throws files::Stopped.
   CalibrationDynamics(const std::vector<CalibrationSeries>& series, const world::RealismParams& base,
-                      double position_sigma_m, double heading_sigma_rad);
+                      double position_sigma_m, double heading_sigma_rad, files::StopToken stop = {});
 
   DynamicsEvaluation Evaluate(const DynamicsParams& params) const;
 
@@ -54,6 +57,7 @@ class CalibrationDynamics {
   world::RealismParams base_;
   double position_weight_;
   double heading_weight_;
+  files::StopToken stop_;
 };
 
 }  // namespace dream::bridge

@@ -279,8 +279,10 @@ void CheckSomethingMoved(const std::vector<CalibrationRun>& runs, const std::vec
 CalibrationReport LabCalibration::Fit(const std::vector<CalibrationRun>& runs) const {
   if (runs.empty()) throw std::runtime_error("nothing to calibrate: give at least one lab run");
   for (const CalibrationRun& run : runs) CheckCalibrationRun(run);
+  stop_.ThrowIfRequested();
   const std::vector<CalibrationSeries> series = CalibrationSeries::Of(runs);
   CheckSomethingMoved(runs, series);
+  stop_.ThrowIfRequested();
 
   CalibrationReport report;
   report.params = base_;
@@ -294,13 +296,17 @@ CalibrationReport LabCalibration::Fit(const std::vector<CalibrationRun>& runs) c
   CalibrationTracker::RestNoise(series, &position_sigma, &heading_sigma);
   if (position_sigma == 0.0) position_sigma = base_.pose_noise_m;
   if (heading_sigma == 0.0) heading_sigma = base_.pose_noise_rad;
-  const CalibrationDynamics dynamics(series, base_, position_sigma, heading_sigma);
+  stop_.ThrowIfRequested();
+  const CalibrationDynamics dynamics(series, base_, position_sigma, heading_sigma, stop_);
   const DynamicsFit fit = FitDynamics(dynamics, base_);
   AddDynamicsKeys(fit, base_, &report);
   AddGainKeys(fit.evaluation, base_, &report);
   const std::vector<std::vector<bool>> moving = MovingAtEachMeasurement(series, dynamics, fit.best);
+  stop_.ThrowIfRequested();
   CalibrationTracker(series, moving, base_).Fit(&report);
+  stop_.ThrowIfRequested();
   FillCalibrationEvidence(series, dynamics, fit.best, fit.evaluation, &report);
+  stop_.ThrowIfRequested();
 
   // Keys nothing here fits keep the base's, and every key appears once, in
   // RealismParams::Fields() order.

@@ -1,10 +1,12 @@
 #include "dream/bridge/lab_import.h"
 
+#include <unistd.h>
+
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -15,6 +17,7 @@
 #include "dream/files/file_text.h"
 #include "dream/files/output_folder.h"
 #include "dream/files/output_folder_lock.h"
+#include "dream/files/regular_file.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/lcm/channels.h"
 #include "dream/lcm/message_limits.h"
@@ -152,12 +155,13 @@ LabReplayWorld WriteLog(const RunTrack& track, const world::WorldParams& params,
 }  // namespace
 
 NpyArray ReadResultFile(const std::string& path, int64_t max_values) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open the file");
   char head[8] = {};
-  in.read(head, sizeof(head));
-  const std::streamsize got = in.gcount();
-  in.close();
+  ssize_t got = 0;
+  {
+    const files::RegularFile file(path);  // a FIFO or device is refused, not waited on
+    got = ::pread(file.descriptor(), head, sizeof(head), 0);
+    if (got < 0) throw std::runtime_error(path + ": cannot read the file: " + std::strerror(errno));
+  }
   if (got >= 6 && std::memcmp(head, "\x93NUMPY", 6) == 0) return ReadNpyFile(path);
   // MATLAB v5/v7.3 files start with a text header ("MATLAB 5.0 MAT-file"); v4 has none.
   const std::string extension = fs::path(path).extension().string();

@@ -19,13 +19,15 @@ constexpr size_t kWarmUp = 60;        // the model's wheels settle on the run's 
 }  // namespace
 
 std::vector<ModelPrediction> LabModelCheck::Predict(const std::vector<CalibrationRun>& runs,
-                                                    const std::vector<NamedModel>& models) {
+                                                    const std::vector<NamedModel>& models,
+                                                    const files::StopToken& stop) {
   for (const CalibrationRun& run : runs) CheckCalibrationRun(run);
   const std::vector<CalibrationSeries> series = CalibrationSeries::Of(runs);
   std::vector<ModelPrediction> predictions;
   for (const NamedModel& model : models) {
     const world::RealismParams& p = model.params;
-    const CalibrationDynamics dynamics(series, p, std::max(p.pose_noise_m, 1e-4), std::max(p.pose_noise_rad, 1e-3));
+    const CalibrationDynamics dynamics(series, p, std::max(p.pose_noise_m, 1e-4), std::max(p.pose_noise_rad, 1e-3),
+                                       stop);
     const DynamicsParams dynamics_params{p.pose_delay_steps + p.command_latency_steps, p.motor_lag_s, p.motor_startup_m};
     DynamicsEvaluation gains;
     RobotGains mean_robot;
@@ -42,6 +44,7 @@ std::vector<ModelPrediction> LabModelCheck::Predict(const std::vector<Calibratio
     std::vector<world::UnicycleCommand> driven;
     std::vector<double> motion_s;
     for (const CalibrationSeries& s : series) {
+      stop.ThrowIfRequested();
       dynamics.Predict(s, dynamics_params, &driven, &motion_s);
       for (size_t k = kWarmUp; k + kHorizonSteps < s.steps(); k += kEvery) {
         const size_t end = k + kHorizonSteps;

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -15,6 +14,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "dream/files/regular_file.h"
 #include "mat4_layout.h"
 
 namespace dream::bridge {
@@ -308,17 +308,12 @@ class Mat5Layout {
 };
 
 /// The file's bytes, refusing more than any lab result holds.
-std::string ReadAll(const std::string& path) {
-  constexpr int64_t kMaxBytes = int64_t{1} << 31;
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) throw std::runtime_error(path + ": cannot open the file");
-  const std::streamoff size = in.tellg();
-  if (size < 0) throw std::runtime_error(path + ": cannot read the file");
-  if (size > kMaxBytes) throw std::runtime_error(path + ": " + std::to_string(size) + " bytes is larger than any lab result");
-  std::string bytes(static_cast<size_t>(size), '\0');
-  in.seekg(0);
-  if (size > 0 && !in.read(bytes.data(), size)) throw std::runtime_error(path + ": cannot read the file");
-  return bytes;
+std::string ReadAll(files::RegularFile& file) {
+  constexpr std::uintmax_t kMaxBytes = std::uintmax_t{1} << 31;
+  if (file.size() > kMaxBytes) {
+    throw std::runtime_error(file.path() + ": " + std::to_string(file.size()) + " bytes is larger than any lab result");
+  }
+  return file.ReadAll(kMaxBytes);
 }
 
 /// A 128-byte MATLAB header of version `major` (1: v5/v7, 2: v7.3, HDF5).
@@ -332,6 +327,28 @@ bool HasMatHeader(const std::string& bytes, char major) {
 bool IsMat5(const std::string& bytes) { return HasMatHeader(bytes, 0x01); }
 bool IsMat73(const std::string& bytes) { return HasMatHeader(bytes, 0x02); }
 
+/// Checks the file's layout before libmatio reads it (which trusts what the
+/// file declares); returns its size. @throws std::runtime_error naming the path.
+uint64_t CheckMatLayout(files::RegularFile& file, const std::string& variable) {
+  const std::string& path = file.path();
+  const std::string bytes = ReadAll(file);
+  if (bytes.size() >= 116 && bytes.compare(0, 10, "MATLAB 5.0") == 0 && !IsMat5(bytes)) {
+    throw std::runtime_error(path + ": a MATLAB 5.0 MAT-file header, but cut short or damaged before byte 128 " +
+                             "(the version and byte-order marks)");
+  }
+  if (IsMat5(bytes)) {
+    Mat5Layout(path, bytes).Check(variable);
+  } else if (!IsMat73(bytes) || Mat4Layout::ReadableAsV4(bytes)) {
+    Mat4Layout(path, bytes).Check();
+  }
+  constexpr size_t kHdf5Offset = 512;  // v7.3: a 512-byte user block (the MATLAB header), then HDF5
+  if (IsMat73(bytes) &&
+      (bytes.size() < kHdf5Offset + 8 || bytes.compare(kHdf5Offset, 8, "\x89HDF\r\n\x1a\n") != 0)) {
+    throw std::runtime_error(path + ": a MATLAB 7.3 MAT-file header, but no HDF5 data at byte 512 (damaged or cut short?)");
+  }
+  return bytes.size();
+}
+
 }  // namespace
 
 NpyArray ReadMatMatrix(const std::string& path, const std::string& variable, int64_t max_values) {
@@ -343,26 +360,11 @@ NpyArray ReadMatArray(const std::string& path, const std::string& variable, int6
   InstallMatioLog();
   last_matio_message.clear();
   auto fail = [&path](const std::string& problem) { throw std::runtime_error(path + ": " + problem + MatioDetail()); };
-  uint64_t file_size = 0;
-  {
-    const std::string bytes = ReadAll(path);
-    file_size = bytes.size();
-    if (bytes.size() >= 116 && bytes.compare(0, 10, "MATLAB 5.0") == 0 && !IsMat5(bytes)) {
-      throw std::runtime_error(path + ": a MATLAB 5.0 MAT-file header, but cut short or damaged before byte 128 " +
-                               "(the version and byte-order marks)");
-    }
-    if (IsMat5(bytes)) {
-      Mat5Layout(path, bytes).Check(variable);
-    } else if (!IsMat73(bytes) || Mat4Layout::ReadableAsV4(bytes)) {
-      Mat4Layout(path, bytes).Check();
-    }
-    constexpr size_t kHdf5Offset = 512;  // v7.3: a 512-byte user block (the MATLAB header), then HDF5
-    if (IsMat73(bytes) &&
-        (bytes.size() < kHdf5Offset + 8 || bytes.compare(kHdf5Offset, 8, "\x89HDF\r\n\x1a\n") != 0)) {
-      throw std::runtime_error(path + ": a MATLAB 7.3 MAT-file header, but no HDF5 data at byte 512 (damaged or cut short?)");
-    }
-  }
-  std::unique_ptr<mat_t, MatCloser> mat(Matio::Get().Open(path.c_str(), MAT_ACC_RDONLY));
+  // Opened once, without blocking (a FIFO or device is refused): libmatio
+  // then reopens this very file by its descriptor's name, not the path.
+  files::RegularFile file(path);
+  const uint64_t file_size = CheckMatLayout(file, variable);
+  std::unique_ptr<mat_t, MatCloser> mat(Matio::Get().Open(file.OpenedName().c_str(), MAT_ACC_RDONLY));
   if (!mat) fail("cannot open it as a MATLAB .mat file");
   std::unique_ptr<matvar_t, VarFreer> var(Matio::Get().VarReadInfo(mat.get(), variable.c_str()));
   if (!var && !last_matio_message.empty()) fail("cannot read variable '" + variable + "' (damaged or cut short?)");

@@ -1,10 +1,12 @@
 #include "dream/bridge/npy_file.h"
 
 #include <cctype>
+#include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <limits>
 #include <stdexcept>
+
+#include "dream/files/regular_file.h"
 
 namespace dream::bridge {
 namespace {
@@ -249,18 +251,12 @@ NpyArray DecodeNpy(const std::string& bytes, const std::string& name) {
 }
 
 NpyArray ReadNpyFile(const std::string& path, int64_t max_bytes) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) throw std::runtime_error(path + ": cannot open the file");
-  const std::streamoff size = in.tellg();
-  if (size < 0) throw std::runtime_error(path + ": cannot read the file");
-  if (size > max_bytes) {
-    throw std::runtime_error(path + ": " + std::to_string(size) + " bytes is larger than any result of a " +
+  files::RegularFile file(path);  // a FIFO or device is refused, not waited on
+  if (file.size() > static_cast<std::uintmax_t>(max_bytes)) {
+    throw std::runtime_error(path + ": " + std::to_string(file.size()) + " bytes is larger than any result of a " +
                              "Robotarium run (" + std::to_string(max_bytes) + " bytes); is it the right file?");
   }
-  std::string bytes(static_cast<size_t>(size), '\0');
-  in.seekg(0);
-  if (size > 0 && !in.read(bytes.data(), size)) throw std::runtime_error(path + ": cannot read the file");
-  return DecodeNpy(bytes, path);
+  return DecodeNpy(file.ReadAll(static_cast<std::uintmax_t>(max_bytes)), path);
 }
 
 }  // namespace dream::bridge

@@ -1,9 +1,15 @@
 #include "dream/bridge/npz_file.h"
 
+#include <fcntl.h>
+#include <unistd.h>
 #include <zip.h>
 
+#include <cerrno>
+#include <cstring>
 #include <stdexcept>
 #include <utility>
+
+#include "dream/files/regular_file.h"
 
 namespace dream::bridge {
 namespace {
@@ -16,9 +22,15 @@ constexpr zip_int64_t kMaxListedMembers = 1000;
 }  // namespace
 
 NpzFile::NpzFile(std::string path) : path_(std::move(path)) {
+  // Opened without blocking (a FIFO or device is refused), then handed to
+  // libzip by descriptor: it reads the very file that was checked.
+  const files::RegularFile file(path_);
+  const int fd = ::fcntl(file.descriptor(), F_DUPFD_CLOEXEC, 0);
+  if (fd < 0) throw std::runtime_error(path_ + ": cannot read the file: " + std::strerror(errno));
   int error = 0;
-  archive_ = zip_open(path_.c_str(), ZIP_RDONLY | ZIP_CHECKCONS, &error);
+  archive_ = zip_fdopen(fd, ZIP_CHECKCONS, &error);  // on success libzip owns (and closes) fd
   if (archive_ == nullptr) {
+    ::close(fd);
     zip_error_t reason;
     zip_error_init_with_code(&reason, error);
     const std::string text = zip_error_strerror(&reason);

@@ -1,10 +1,14 @@
 #include "dream/bridge/sha256.h"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cstring>
-#include <fstream>
 #include <stdexcept>
 #include <vector>
+
+#include "dream/files/regular_file.h"
 
 namespace dream::bridge {
 namespace {
@@ -108,15 +112,16 @@ std::string Sha256::Hex(std::string_view bytes) {
 }
 
 std::string Sha256::HexOfFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open the file");
+  const files::RegularFile file(path);  // a FIFO or device is refused, not waited on
   Sha256 hash;
   std::vector<char> block(1 << 16);
-  while (in) {
-    in.read(block.data(), static_cast<std::streamsize>(block.size()));
-    hash.Add(std::string_view(block.data(), static_cast<size_t>(in.gcount())));
+  for (;;) {
+    const ssize_t got = ::read(file.descriptor(), block.data(), block.size());
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) throw std::runtime_error(path + ": cannot be read: " + std::strerror(errno));
+    if (got == 0) break;
+    hash.Add(std::string_view(block.data(), static_cast<size_t>(got)));
   }
-  if (in.bad()) throw std::runtime_error(path + ": cannot be read");
   return hash.HexDigest();
 }
 

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -17,6 +18,8 @@
 #include "dream/bridge/mat_file.h"
 #include "dream/bridge/npy_file.h"
 #include "dream/files/atomic_file.h"
+#include "dream/files/stop_token.h"
+#include "dream/files/stopped.h"
 #include "dream/robotarium/robotarium_constants.h"
 #include "dream/world/printf_text.h"
 #include "dream/world/realistic_world.h"
@@ -179,6 +182,31 @@ TEST(LabCalibrationTest, LabPresetShowsTheRealRobotsDelays) {
   EXPECT_NEAR(mean_run, 4.0, 0.3 * 4.0);
   EXPECT_GE(value("tracking_dropout_probability") * mean_run, 0.0007 * 0.7);
   EXPECT_LE(value("tracking_dropout_probability") * mean_run, 0.007 * 1.3);
+}
+
+// Issue 34: Ctrl-C in a long fit was ignored until the fit ended, and the
+// realism file written anyway. The fit polls its stop token inside its search
+// (once per robot of each of its hundreds of evaluations), and stops at the
+// first poll that says so, by files::Stopped.
+TEST(LabCalibrationTest, AStopAskedForDuringTheFitEndsItAtTheNextPoll) {
+  const std::vector<CalibrationRun> runs = {SyntheticRun(world::RealismParams::Lab(), 4, 3, 1)};
+  int polls = 0;
+  const CalibrationReport whole = LabCalibration(world::RealismParams::Lab(), files::StopToken([&polls] {
+                                                   ++polls;
+                                                   return false;
+                                                 })).Fit(runs);
+  EXPECT_FALSE(whole.keys.empty());
+  // 4 robots per evaluation, and hundreds of evaluations: never long between polls.
+  EXPECT_GT(polls, 4 * 300);
+  for (const int stop_at : {1, 50, polls / 2, polls}) {
+    int asked = 0;
+    const LabCalibration fit(world::RealismParams::Lab(), files::StopToken([&asked, stop_at] { return ++asked >= stop_at; }));
+    EXPECT_THROW(fit.Fit(runs), files::Stopped) << "stop at poll " << stop_at;
+    EXPECT_EQ(asked, stop_at) << "nothing more is computed once asked";
+  }
+  std::atomic<bool> flag{true};
+  EXPECT_THROW(LabModelCheck::Predict(runs, {{"ideal", world::RealismParams::Ideal()}}, files::StopToken(flag)),
+               files::Stopped);
 }
 
 // --check: the model that made a run predicts it better than others do, and

@@ -55,7 +55,7 @@ TEST_F(FileTextTest, AFileOverTheBoundIsRefusedWithItsSize) {
 TEST_F(FileTextTest, AFifoAFolderAndAMissingFileAreRefusedByName) {
   const fs::path fifo = dir_ / "pipe";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-  EXPECT_EQ(ErrorOf(fifo), fifo.string() + ": is not a regular file, not a file to read");  // not waited on
+  EXPECT_EQ(ErrorOf(fifo), fifo.string() + ": is a FIFO (named pipe), not a file to read");  // not waited on
   EXPECT_EQ(ErrorOf(dir_), dir_.string() + ": is a folder, not a file to read");
   EXPECT_THAT(ErrorOf(dir_ / "missing.yaml"), HasSubstr((dir_ / "missing.yaml").string() + ": cannot open the file"));
 }

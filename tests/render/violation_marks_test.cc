@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "dream/files/stop_token.h"
+#include "dream/files/stopped.h"
 #include "dream/render/arena_layout.h"
 #include "dream/render/run_animation.h"
 #include "dream/render/run_geometry.h"
@@ -41,6 +43,27 @@ std::string ViolatingRun(const TempFolder& dir) {
     log.Poses(step, {{step == 100 ? 1.8 : -0.5, 0.3, 0.0}, one});
   }
   return log.Write();
+}
+
+// dream render polls its stop token (Ctrl-C, SIGTERM) while locating a long
+// run's violations, every 1000 steps (issue 34): a 2,500-step run is asked 3
+// times, and a stop asked at the second poll ends it there.
+TEST(LocateViolationsTest, AStopAskedForWhileLocatingEndsItAtTheNextPoll) {
+  const TempFolder dir;
+  SyntheticRunLog log(dir / "run.lcmlog");
+  for (int step = 0; step < 2500; ++step) log.Poses(step, {{-0.5, 0.3, 0.0}, {0.5, 0.3, 0.0}});
+  const run_log::RunLog run = run_log::RunLog::Read(log.Write());
+  int polls = 0;
+  LocateViolations(run, {}, world::ViolationTracker::kDefaultMaxListed, files::StopToken([&polls] {
+                     ++polls;
+                     return false;
+                   }));
+  EXPECT_EQ(polls, 3);
+  polls = 0;
+  EXPECT_THROW(LocateViolations(run, {}, world::ViolationTracker::kDefaultMaxListed,
+                                files::StopToken([&polls] { return ++polls == 2; })),
+               files::Stopped);
+  EXPECT_EQ(polls, 2);
 }
 
 TEST(LocateViolationsTest, EachViolationOfTheLogAtItsPlaceFirstAndLastStepByTheWorldsRules) {

@@ -22,6 +22,7 @@
 #include "dream/agent_host/agent_host.h"
 #include "dream/agent_host/controller_factory.h"
 #include "dream/config/controller_config.h"
+#include "dream/files/atomic_file.h"
 #include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/lcm_url.h"
 
@@ -85,17 +86,10 @@ namespace {
 // Written to a temporary name and renamed, so dream launch never reads half
 // a report; a failure is logged, not fatal: the run itself is done.
 void WriteAgentReport(const std::string& path, const std::string& json) {
-  const std::string temporary = path + ".part";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << json << '\n';
-    if (!out.flush()) {
-      spdlog::error("{}: cannot write the agents' report: {}", temporary, std::strerror(errno));
-      return;
-    }
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    spdlog::error("{}: cannot rename the agents' report into place: {}", path, std::strerror(errno));
+  try {
+    files::WriteFileAtomically(path, json + "\n", files::Durability::kRenamedOnly);
+  } catch (const std::runtime_error& e) {
+    spdlog::error("cannot write the agents' report: {}", e.what());
   }
 }
 

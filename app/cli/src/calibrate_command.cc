@@ -16,6 +16,7 @@
 #include "dream/bridge/lab_model_check.h"
 #include "dream/run_config/run_config.h"
 #include "dream/files/atomic_file.h"
+#include "dream/files/stop_token.h"
 #include "dream/render/render_format.h"
 
 namespace dream::cli {
@@ -48,8 +49,9 @@ int RunCheck(const CalibrateArgs& args, const std::vector<bridge::CalibrationRun
   std::vector<bridge::NamedModel> models;
   for (const std::string& name : args.check_models) models.push_back(ModelNamed(name));
   spdlog::info("holding {} model(s) against {} run(s)", models.size(), runs.size());
-  const bridge::CalibrationReport real = bridge::LabCalibration(base).Fit(runs);
-  const std::vector<bridge::ModelPrediction> predictions = bridge::LabModelCheck::Predict(runs, models);
+  const files::StopToken stop(StopFlag());
+  const bridge::CalibrationReport real = bridge::LabCalibration(base, stop).Fit(runs);
+  const std::vector<bridge::ModelPrediction> predictions = bridge::LabModelCheck::Predict(runs, models, stop);
   std::cout << bridge::LabModelCheck::Table(real, predictions, models);
   return kExitOk;
 }
@@ -63,11 +65,14 @@ int RunCalibrate(const CalibrateArgs& args) {
   if (!world::RealismParams::FromPreset(args.base, &base)) {
     throw std::runtime_error("--base " + args.base + ": not a realism preset (ideal, lab, lab_v1)");
   }
+  // Ctrl-C or SIGTERM: the fit stops within a fraction of a second
+  // (files::Stopped, exit 130) and nothing is written.
+  const files::StopToken stop(StopFlag());
   std::vector<bridge::CalibrationRun> runs;
   for (const std::string& input : args.inputs) {
     spdlog::info("reading {}", input);
     runs.push_back(bridge::ReadCalibrationRun(input, args.options));
-    if (StopFlag()) return kExitInterrupted;
+    stop.ThrowIfRequested();
   }
   if (!args.check_models.empty()) return RunCheck(args, runs, base);
   const fs::path out(args.out_path);
@@ -81,7 +86,8 @@ int RunCalibrate(const CalibrateArgs& args) {
     throw std::runtime_error("--picture " + picture + ": a picture is .png or .svg");
   }
   spdlog::info("fitting the lab model to {} run(s)", runs.size());
-  const bridge::CalibrationReport report = bridge::LabCalibration(base).Fit(runs);
+  const bridge::CalibrationReport report = bridge::LabCalibration(base, stop).Fit(runs);
+  stop.ThrowIfRequested();  // asked as the fit ended: still nothing written
   if (!out.parent_path().empty()) fs::create_directories(out.parent_path());
   files::WriteFileAtomically(out.string(), report.RealismYaml());
   bridge::RenderCalibrationPicture(report, picture, *format);

@@ -13,6 +13,7 @@
 #include "commands.h"
 #include "dream/config/config_error.h"
 #include "dream/config/name_suggestion.h"
+#include "dream/files/stopped.h"
 
 namespace {
 
@@ -99,6 +100,9 @@ int main(int argc, char** argv) {
 
   try {
     if (const CommandLine::Action action = line.ChosenAction()) return action();
+  } catch (const dream::files::Stopped& e) {  // a long computation saw Ctrl-C or SIGTERM
+    std::cerr << "dream: " << e.what() << '\n';
+    return kExitInterrupted;
   } catch (const std::exception& e) {  // config::ConfigError included
     std::cerr << "dream: " << e.what() << '\n';
     // Ctrl-C while a controller was being set up (a Python setup() that hangs) is an interruption.

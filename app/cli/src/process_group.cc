@@ -1,6 +1,7 @@
 #include "process_group.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
@@ -28,6 +29,26 @@ ProcessGroup::~ProcessGroup() {
     }
   }
 }
+
+namespace {
+
+// In the child, before exec (async-signal-safe calls only): stdin from
+// /dev/null, stdout and stderr to `output_path`. O_NOFOLLOW: a link planted
+// at the output's name is not written through; O_NONBLOCK and the check: a
+// FIFO there is refused, not waited on. 0, or the errno to report.
+int RedirectToFile(const std::string& output_path) {
+  const int in = ::open("/dev/null", O_RDONLY);
+  const int out = ::open(output_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_NONBLOCK, 0644);
+  struct stat status {};
+  if (out >= 0 && (::fstat(out, &status) != 0 || !S_ISREG(status.st_mode))) return EINVAL;
+  if (in < 0 || out < 0 || ::fcntl(out, F_SETFL, 0) != 0 || ::dup2(in, STDIN_FILENO) < 0 ||
+      ::dup2(out, STDOUT_FILENO) < 0 || ::dup2(out, STDERR_FILENO) < 0) {
+    return errno;
+  }
+  return 0;
+}
+
+}  // namespace
 
 pid_t ProcessGroup::Start(const std::vector<std::string>& argv) { return Start(argv, std::string(), {}, -1); }
 
@@ -82,15 +103,7 @@ pid_t ProcessGroup::Start(const std::vector<std::string>& argv, const std::strin
     // Dies with the parent; if the parent died before prctl, it is already gone.
     ::prctl(PR_SET_PDEATHSIG, SIGTERM);
     if (::getppid() != parent) ::_exit(127);
-    int error = 0;
-    if (!output_path.empty()) {
-      const int in = ::open("/dev/null", O_RDONLY);
-      const int out = ::open(output_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      if (in < 0 || out < 0 || ::dup2(in, STDIN_FILENO) < 0 || ::dup2(out, STDOUT_FILENO) < 0 ||
-          ::dup2(out, STDERR_FILENO) < 0) {
-        error = errno;
-      }
-    }
+    int error = output_path.empty() ? 0 : RedirectToFile(output_path);
     if (error == 0 && inherited_fd >= 0 && ::fcntl(inherited_fd, F_SETFD, 0) != 0) error = errno;
     if (error == 0) {
       ::execve(program.c_str(), args.data(), envp.data());

@@ -14,6 +14,7 @@
 #include "command_line.h"
 #include "commands.h"
 #include "dream/files/file_text.h"
+#include "dream/files/stop_token.h"
 #include "dream/run_config/run_config.h"
 #include "dream/render/ffmpeg_encoder.h"
 #include "dream/render/metric_plot.h"
@@ -224,11 +225,16 @@ int RunRender(const RenderArgs& args) {
   const render::RenderFormat format = *render::RenderFormatOfPath(out.string());
   CheckOutputFolder(out);
 
+  // Ctrl-C or SIGTERM: asked between the stages and within the long ones;
+  // files::Stopped (exit 130) before anything is written.
+  const files::StopToken stop(StopFlag());
   const run_log::RunLog run = run_log::RunLog::Read(log.string());
+  stop.ThrowIfRequested();
   render::Drawable(run);
   if (kind == Kind::kPlot) {
     std::string title;
     const std::vector<render::MetricSeries> series = PickMetrics(MetricSeriesOf(log, run, &title), args.metrics, log);
+    stop.ThrowIfRequested();
     render::MetricPlot::Render(series, title, out.string(), format, args.width_px > 0 ? args.width_px : 1000);
     std::cout << "plot:    " << out.string() << " (" << series.size() << " series)\n";
     return kExitOk;
@@ -237,7 +243,8 @@ int RunRender(const RenderArgs& args) {
   RunLabelFromSummary(log, &overlays);
   // Where and when the run broke a rule, by the world's own checks (the
   // Robotarium's arena and collision rule: WorldParams is not configurable).
-  overlays.violations = render::LocateViolations(run);
+  overlays.violations = render::LocateViolations(run, {}, world::ViolationTracker::kDefaultMaxListed, stop);
+  stop.ThrowIfRequested();
   if (kind == Kind::kPicture) {
     render::TrajectoryPicture::Render(run, overlays, out.string(), format, args.width_px > 0 ? args.width_px : 1280);
     std::cout << "picture: " << out.string() << " (" << run.num_robots() << " robots, " << run.poses().size()
@@ -255,7 +262,7 @@ int RunRender(const RenderArgs& args) {
   render::RunAnimation animation(run, overlays, options);
   spdlog::info("rendering {} frames ({:.1f} s of video at {} fps) to {}", animation.frame_count(),
                animation.duration_s(), options.fps, out.string());
-  if (!animation.Write(out.string(), format, [] { return StopFlag().load(); })) {
+  if (!animation.Write(out.string(), format, [&stop] { return stop.Requested(); })) {
     std::cerr << "dream: interrupted; " << out.string() << " not written\n";
     return kExitInterrupted;
   }

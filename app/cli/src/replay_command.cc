@@ -1,12 +1,13 @@
 #include <spdlog/spdlog.h>
+#include <unistd.h>
 
 #include <algorithm>
-#include <fstream>
 #include <iostream>
 #include <memory>
 
 #include "command_line.h"
 #include "commands.h"
+#include "dream/files/regular_file.h"
 #include "dream/lcm/lcm_url.h"
 #include "lcm_java_tools.h"
 #include "process_group.h"
@@ -23,10 +24,11 @@ constexpr unsigned char kLcmLogSyncWord[4] = {0xED, 0xA1, 0xDA, 0x01};
 /// @throws std::runtime_error naming the path when it is missing, empty or not an LCM log.
 std::string LogToReplay(const std::string& run) {
   const std::string log = RunLogPath(run);
-  std::ifstream in(log, std::ios::binary);
+  const files::RegularFile file(log);  // a FIFO or device is refused, not waited on
   unsigned char head[4] = {0, 0, 0, 0};
-  if (!in.read(reinterpret_cast<char*>(head), sizeof(head))) {
-    throw std::runtime_error(log + ": " + (in.eof() ? "empty or shorter than one event" : "cannot be read") +
+  const ssize_t got = ::pread(file.descriptor(), head, sizeof(head), 0);
+  if (got != static_cast<ssize_t>(sizeof(head))) {
+    throw std::runtime_error(log + ": " + (got >= 0 ? "empty or shorter than one event" : "cannot be read") +
                              "; not an LCM log");
   }
   if (!std::equal(head, head + 4, kLcmLogSyncWord)) {

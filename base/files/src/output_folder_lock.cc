@@ -12,7 +12,10 @@
 #include <fstream>
 #include <map>
 #include <mutex>
+#include <sstream>
 #include <stdexcept>
+
+#include "dream/files/regular_file.h"
 
 namespace dream::files {
 namespace {
@@ -65,7 +68,13 @@ int InheritedDescriptor(const std::string& lock_path) {
 }
 
 std::string HolderText(const std::string& lock_path) {
-  std::ifstream in(lock_path);
+  constexpr std::uintmax_t kMaxHolderBytes = 4096;  // a pid and a command line cut at 300 characters
+  std::istringstream in;
+  try {
+    in.str(RegularFile(lock_path).ReadAll(kMaxHolderBytes));  // a FIFO there is refused, not read forever
+  } catch (const std::runtime_error&) {
+    return "another process";
+  }
   std::string pid;
   std::string command;
   std::getline(in, pid);

@@ -1,6 +1,11 @@
 #include "dream/lcm/log_reader.h"
 
-#include <filesystem>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <stdexcept>
 
 namespace dream::lcm {
@@ -25,24 +30,41 @@ uint64_t BigEndian(const unsigned char* bytes, int count) {
 }  // namespace
 
 LogReader::LogReader(std::string path) : path_(std::move(path)) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path_, error)) {
-    throw std::runtime_error(path_ + ": no such log file");
+  // As files::RegularFile does (this floor is below it): O_NONBLOCK, so a FIFO
+  // is not waited on in open(), then the opened descriptor (not the path,
+  // which could change in between) is asked whether it is a regular file.
+  const int fd = ::open(path_.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+  if (fd < 0) {
+    throw std::runtime_error(path_ + (errno == ENOENT ? std::string(": no such log file")
+                                                      : ": cannot open the log: " + std::string(std::strerror(errno))));
   }
-  file_size_ = static_cast<int64_t>(std::filesystem::file_size(path_, error));
-  in_.open(path_, std::ios::binary);
-  if (!in_) throw std::runtime_error(path_ + ": cannot open the log");
+  struct stat status {};
+  if (::fstat(fd, &status) != 0 || !S_ISREG(status.st_mode)) {
+    ::close(fd);
+    throw std::runtime_error(path_ + ": not a regular file (a folder, FIFO or device), so no log file");
+  }
+  ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+  file_size_ = static_cast<int64_t>(status.st_size);
+  in_ = ::fdopen(fd, "rb");
+  if (in_ == nullptr) {
+    ::close(fd);
+    throw std::runtime_error(path_ + ": cannot open the log: " + std::strerror(errno));
+  }
   if (file_size_ > 0) {
     unsigned char head[4] = {0, 0, 0, 0};
-    in_.read(reinterpret_cast<char*>(head), 4);
-    if (!in_ || BigEndian(head, 4) != kSyncWord) {
+    if (!Read(head, 4) || BigEndian(head, 4) != kSyncWord) {
+      std::fclose(in_);
       throw std::runtime_error(path_ + ": not an LCM log (it does not start with the LCM event sync word)");
     }
-    in_.seekg(0);
+    std::rewind(in_);
   }
 }
 
-LogReader::~LogReader() = default;
+LogReader::~LogReader() { std::fclose(in_); }
+
+bool LogReader::Read(void* into, int64_t bytes) {
+  return std::fread(into, 1, static_cast<size_t>(bytes), in_) == static_cast<size_t>(bytes);
+}
 
 void LogReader::Fail(const std::string& problem) const {
   throw std::runtime_error(path_ + ": " + problem + " at byte " + std::to_string(bytes_read_) + " (after event " +
@@ -54,8 +76,7 @@ bool LogReader::Next(LogRecord* record) {
   if (remaining == 0) return false;
   if (remaining < kEventHeaderBytes) Fail("an incomplete event header");
   unsigned char header[kEventHeaderBytes];
-  in_.read(reinterpret_cast<char*>(header), kEventHeaderBytes);
-  if (!in_) Fail("a read error");
+  if (!Read(header, kEventHeaderBytes)) Fail("a read error");
   if (BigEndian(header, 4) != kSyncWord) Fail("no LCM sync word");
   const auto channel_bytes = static_cast<int32_t>(BigEndian(header + 20, 4));
   const auto data_bytes = static_cast<int32_t>(BigEndian(header + 24, 4));
@@ -67,10 +88,8 @@ bool LogReader::Next(LogRecord* record) {
   }
   record->utime = static_cast<int64_t>(BigEndian(header + 12, 8));
   record->channel.resize(static_cast<size_t>(channel_bytes));
-  in_.read(record->channel.data(), channel_bytes);
   record->data.resize(static_cast<size_t>(data_bytes));
-  in_.read(reinterpret_cast<char*>(record->data.data()), data_bytes);
-  if (!in_) Fail("a read error");
+  if (!Read(record->channel.data(), channel_bytes) || !Read(record->data.data(), data_bytes)) Fail("a read error");
   event_offset_ = bytes_read_;
   bytes_read_ += kEventHeaderBytes + channel_bytes + data_bytes;
   ++events_;

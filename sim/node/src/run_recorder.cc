@@ -1,5 +1,6 @@
 #include "dream/node/run_recorder.h"
 
+#include <fcntl.h>
 #include <stdio_ext.h>  // __fpurge (glibc)
 #include <sys/stat.h>
 #include <unistd.h>
@@ -26,16 +27,33 @@ std::string ErrorText(int error_number) {
 
 RunRecorder::RunRecorder(std::string path, int flush_interval_events)
     : path_(std::move(path)), part_path_(path_ + ".part"), flush_interval_events_(flush_interval_events) {
-  log_ = std::make_unique<::lcm::LogFile>(part_path_, "w");
+  // The part file is made new and exclusively (O_EXCL | O_NOFOLLOW), then
+  // opened by LogFile for appending and checked to be that very file: a link
+  // planted at the .part name in a shared folder is removed, never written
+  // through (LogFile's fopen would follow it and truncate what it names).
+  ::unlink(part_path_.c_str());  // a killed run's part, or something planted there
+  const int created = ::open(part_path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+  if (created < 0) {
+    throw std::runtime_error("cannot create the run log " + part_path_ + ": " + ErrorText(errno) +
+                             " (does the folder exist and is it writable?)");
+  }
+  struct stat made {};
+  const bool made_known = ::fstat(created, &made) == 0;
+  log_ = std::make_unique<::lcm::LogFile>(part_path_, "a");
+  ::close(created);
   if (!log_->good()) {
     throw std::runtime_error("cannot create the run log " + part_path_ +
                              ": does the folder exist and is it writable?");
   }
   struct stat file_status {};
-  if (::fstat(fileno(log_->getFilePtr()), &file_status) == 0) {
-    part_device_ = file_status.st_dev;
-    part_inode_ = file_status.st_ino;
+  if (!made_known || ::fstat(fileno(log_->getFilePtr()), &file_status) != 0 || file_status.st_dev != made.st_dev ||
+      file_status.st_ino != made.st_ino) {
+    log_.reset();
+    throw std::runtime_error("cannot create the run log " + part_path_ +
+                             ": the file was replaced while it was opened (by another process in a shared folder?)");
   }
+  part_device_ = file_status.st_dev;
+  part_inode_ = file_status.st_ino;
 }
 
 bool RunRecorder::PartPathHoldsThisLog() const {

@@ -1,7 +1,5 @@
 #include "dream/render/run_animation.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -9,6 +7,7 @@
 #include <vector>
 
 #include "arena_painter.h"
+#include "dream/files/temporary_file.h"
 #include "dream/render/ffmpeg_encoder.h"
 #include "dream/render/run_geometry.h"
 #include "dream/robotarium/robotarium_constants.h"
@@ -43,20 +42,6 @@ std::string Number(double value) {
   std::snprintf(text, sizeof(text), "%g", value);
   return text;
 }
-
-// Removes a temporary file unless released (the rename took it).
-class TempFile {
- public:
-  explicit TempFile(std::string path) : path_(std::move(path)) {}
-  ~TempFile() {
-    if (!path_.empty()) ::unlink(path_.c_str());
-  }
-  const std::string& path() const { return path_; }
-  void Release() { path_.clear(); }
-
- private:
-  std::string path_;
-};
 
 }  // namespace
 
@@ -185,9 +170,11 @@ bool RunAnimation::Write(const std::string& path, RenderFormat format, const std
 }
 
 bool RunAnimation::Encode(const std::string& path, RenderFormat format, const std::function<bool()>& cancelled) {
-  const std::string pid = std::to_string(::getpid());
-  TempFile video(path + ".tmp." + pid);
-  TempFile palette(path + ".palette.tmp." + pid + ".png");
+  // Created here, exclusively under unguessable names (files::TemporaryFile),
+  // before ffmpeg opens them by name: nothing planted in the folder is
+  // written through; the video is renamed over `path` once whole.
+  files::TemporaryFile video(path);
+  files::TemporaryFile palette(path + ".palette", ".png");
   const FfmpegEncoder::Input input{layout_.width_px(), layout_.height_px(), options_.fps};
   auto feed = [&](FfmpegEncoder& encoder, int every) {
     for (int frame = 0; frame < frame_count_; frame += every) {
@@ -214,10 +201,7 @@ bool RunAnimation::Encode(const std::string& path, RenderFormat format, const st
                                   "-f", "gif", video.path()});
     if (!feed(encoder, 1)) return false;
   }
-  if (std::rename(video.path().c_str(), path.c_str()) != 0) {
-    throw std::runtime_error("cannot write " + path + " (does the folder exist?)");
-  }
-  video.Release();
+  video.Commit();
   return true;
 }
 

@@ -78,7 +78,8 @@ void ObstacleStatesOf(const obstacles_t& obstacles, std::vector<world::ObstacleS
 }
 
 world::LocatedViolations LocateViolations(const run_log::RunLog& log, const world::WorldParams& world,
-                                          size_t max_listed) {
+                                          size_t max_listed, const files::StopToken& stop) {
+  constexpr size_t kStepsPerPoll = 1000;
   world::ViolationTracker tracker(max_listed);
   const int n = log.num_robots();
   if (n < 1 || log.poses().size() < 2) return tracker.located();
@@ -86,6 +87,7 @@ world::LocatedViolations LocateViolations(const run_log::RunLog& log, const worl
   std::vector<world::ObstacleState> boxes;
   std::vector<world::LocatedViolation> placed;
   for (size_t i = 0; i < log.judged_poses(); ++i) {
+    if (i % kStepsPerPoll == 0) stop.ThrowIfRequested();
     const robot_poses_t& poses = log.poses()[i];
     if (poses.num_robots != n) continue;  // the log's robots, or none: ids must mean the same robots
     ObstacleStatesOf(log.obstacles_at(i), &boxes);

@@ -1,8 +1,9 @@
 #include "dream/python/python_controller_builder.h"
 
+#include <unistd.h>
+
 #include <cctype>
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
 #include "dream/config/controller_config.h"
@@ -36,7 +37,8 @@ PythonControllerBuilder::PythonControllerBuilder(const config::ConfigNode& secti
                 "' is not a Python module file: expected a name like my_robot.py (letters, digits, _)");
   }
   std::error_code error;
-  if (!fs::is_regular_file(path, error) || !std::ifstream(path).good()) {
+  // access(), not an open: nothing here can wait on what the path names.
+  if (!fs::is_regular_file(path, error) || ::access(path.c_str(), R_OK) != 0) {
     module.Fail("cannot read '" + path.string() + "'; relative paths are taken from the config file's folder");
   }
   module_path_ = fs::absolute(path, error).lexically_normal().string();

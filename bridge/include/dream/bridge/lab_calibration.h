@@ -1,9 +1,11 @@
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "dream/bridge/calibration_report.h"
 #include "dream/bridge/calibration_run.h"
+#include "dream/files/stop_token.h"
 #include "dream/world/realism_params.h"
 
 namespace dream::bridge {
@@ -16,14 +18,19 @@ namespace dream::bridge {
 /// cannot determine keep the base preset's value and say so.
 class LabCalibration {
  public:
-  explicit LabCalibration(world::RealismParams base = world::RealismParams::Lab()) : base_(base) {}
+  /// `stop`: polled between the fit's stages and within its search (at
+  /// least every few milliseconds of work), so Ctrl-C ends a long fit at once.
+  explicit LabCalibration(world::RealismParams base = world::RealismParams::Lab(), files::StopToken stop = {})
+      : base_(base), stop_(std::move(stop)) {}
 
   /// @throws std::runtime_error when the runs hold nothing to fit (no robot
-  ///         ever commanded to move, or never moving), naming why.
+  ///         ever commanded to move, or never moving), naming why;
+  ///         files::Stopped when the stop token is requested meanwhile.
   CalibrationReport Fit(const std::vector<CalibrationRun>& runs) const;
 
  private:
   world::RealismParams base_;
+  files::StopToken stop_;
 };
 
 }  // namespace dream::bridge

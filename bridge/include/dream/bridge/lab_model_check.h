@@ -6,6 +6,7 @@
 #include "dream/bridge/calibration_report.h"
 #include "dream/bridge/calibration_run.h"
 #include "dream/world/realism_params.h"
+#include "dream/files/stop_token.h"
 
 namespace dream::bridge {
 
@@ -31,9 +32,11 @@ struct ModelPrediction {
 /// (a fit's statistics: gains, noise, repeated poses).
 class LabModelCheck {
  public:
-  /// @throws std::runtime_error as LabCalibration::Fit for unusable runs.
+  /// @throws std::runtime_error as LabCalibration::Fit for unusable runs;
+  ///         files::Stopped when `stop` is requested meanwhile (polled per robot).
   static std::vector<ModelPrediction> Predict(const std::vector<CalibrationRun>& runs,
-                                              const std::vector<NamedModel>& models);
+                                              const std::vector<NamedModel>& models,
+                                              const files::StopToken& stop = {});
   /// The side-by-side table: per speed the real and each model's effective
   /// delay and first motion; each model's prediction errors; and each key the
   /// runs show (`real`, a fit of them) against each model's value.

@@ -1,7 +1,7 @@
 #pragma once
 
 #include <cstdint>
-#include <fstream>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -19,10 +19,14 @@ struct LogRecord {
 /// gives a clear error naming the file and byte, never garbage or a crash.
 class LogReader {
  public:
-  /// @throws std::runtime_error naming the path when it cannot be opened or
-  ///         does not start like an LCM log.
+  /// The path is opened without blocking and the opened file asked what it
+  /// is, so a FIFO or device given as a log is refused instead of waited on.
+  /// @throws std::runtime_error naming the path when it cannot be opened, is
+  ///         not a regular file or does not start like an LCM log.
   explicit LogReader(std::string path);
   ~LogReader();
+  LogReader(const LogReader&) = delete;
+  LogReader& operator=(const LogReader&) = delete;
 
   /// The next event, or false at the end of the log.
   /// @throws std::runtime_error when the file ends inside an event.
@@ -38,9 +42,10 @@ class LogReader {
 
  private:
   [[noreturn]] void Fail(const std::string& problem) const;
+  bool Read(void* into, int64_t bytes);
 
   std::string path_;
-  std::ifstream in_;
+  std::FILE* in_ = nullptr;
   int64_t file_size_ = 0;
   int64_t events_ = 0;
   int64_t bytes_read_ = 0;  // bytes of complete events so far

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "dream/files/stop_token.h"
 #include "dream/run_log/run_log.h"
 #include "dream/world/located_violation.h"
 #include "dream/world/obstacle_state.h"
@@ -47,7 +48,9 @@ void ObstacleStatesOf(const obstacles_t& obstacles, std::vector<world::ObstacleS
 /// entry), at most `max_listed` of them, the rest counted. Works on any log
 /// (simulated or imported from the lab); steps whose poses do not decode
 /// whole (a robot count that changes, a value not finite) are skipped.
+/// @throws files::Stopped when `stop` is requested (polled every 1000 steps).
 world::LocatedViolations LocateViolations(const run_log::RunLog& log, const world::WorldParams& world = {},
-                                          size_t max_listed = world::ViolationTracker::kDefaultMaxListed);
+                                          size_t max_listed = world::ViolationTracker::kDefaultMaxListed,
+                                          const files::StopToken& stop = {});
 
 }  // namespace dream::render
