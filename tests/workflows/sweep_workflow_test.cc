@@ -5,9 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 
+#include "dream/files/stopped.h"
 #include "dream/workflows/slurm_jobs.h"
 #include "dream/workflows/sweep_folder.h"
 #include "sweep_workflow_fixture.h"
@@ -234,4 +236,25 @@ TEST_F(SweepWorkflowTest, BadInputWritesNothing) {
 }
 
 }  // namespace
+// Issue 34: Ctrl-C stops `dream sweep table` (and status, resume) while it
+// reads thousands of runs' files, before it writes anything (exit 130).
+TEST_F(SweepWorkflowTest, CtrlCStopsTheTableBeforeItWritesAnything) {
+  Workflow().Start(settings_, Base());
+  fs::remove(out() / "sweep.csv");
+  fs::remove(out() / "sweep.md");
+  std::atomic<bool> stop{true};
+  SweepWorkflow::Environment env;
+  env.commands = &slurm_;
+  env.out = &printed_;
+  env.stop = &stop;
+  SweepWorkflow stopped(std::move(env));
+  EXPECT_THROW(stopped.Table(out().string()), files::Stopped);
+  EXPECT_FALSE(fs::exists(out() / "sweep.csv"));
+  EXPECT_FALSE(fs::exists(out() / "sweep.md"));
+  EXPECT_THROW(stopped.Status(out().string()), files::Stopped);
+  stop = false;
+  EXPECT_TRUE(stopped.Table(out().string()).AllRan());
+  EXPECT_TRUE(fs::exists(out() / "sweep.csv"));
+}
+
 }  // namespace dream::workflows

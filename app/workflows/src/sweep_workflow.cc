@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "dream/config/config_node.h"
+#include "dream/files/stopped.h"
 #include "dream/files/atomic_file.h"
 #include "dream/files/output_folder.h"
 #include "dream/files/output_folder_lock.h"
@@ -283,6 +284,8 @@ CollectedSweep SweepWorkflow::Collect(const SweepFolder& folder, bool check_busy
   c.busy = check_busy && jobs.arrays().empty() && !files::OutputFolderLock::TryHoldUntilExit(folder.dir());
   c.results.reserve(c.plan.runs().size());
   for (const SweepPlan::Run& run : c.plan.runs()) {
+    // Thousands of runs' files: Ctrl-C stops the table, status or resume here, before it writes anything.
+    if (env_.stop != nullptr && env_.stop->load()) throw files::Stopped();
     const auto it = states.find(run.index);
     c.slurm.push_back(it == states.end() ? std::nullopt : std::optional<SlurmTaskState>(it->second));
     // While a local sweep works here its runs are its children: no one else's lock to look for.
