@@ -108,7 +108,9 @@ RunTrack TrackOfArrays(const std::string& file, Arrays arrays, double step_perio
                                std::to_string(steps) + " times, one per step of '" + arrays.poses_name + "'");
     }
     for (size_t k = 0; k < t; ++k) {
-      if (!std::isfinite(time.values[k]) || std::abs(time.values[k]) > 1e9) {
+      // Seconds since 1970 are a clock too; a run lasts under 30 years.
+      if (!std::isfinite(time.values[k]) || std::abs(time.values[k]) > 1e11 ||
+          std::abs(time.values[k] - time.values[0]) > 1e9) {
         throw std::runtime_error(file + ": " + time_array + " at step " + std::to_string(k) + " is " +
                                  std::to_string(time.values[k]) + ", not a finite number of seconds");
       }
