@@ -185,6 +185,25 @@ TEST(LabCalibrationTest, LabPresetShowsTheRealRobotsDelays) {
   EXPECT_LE(value("tracking_dropout_probability") * mean_run, 0.007 * 1.3);
 }
 
+// Two halves of one lab (6 robots each, other seeds): each half's 95 %
+// interval holds what the other half gives, for the keys fitted per robot
+// and the wheels' (issue 32: intervals over pose pairs did not).
+TEST(LabCalibrationTest, EachHalfsIntervalHoldsTheOtherHalfsValue) {
+  const world::RealismParams lab = SyntheticLab();
+  const CalibrationReport a = LabCalibration().Fit({SyntheticRun(lab, 6, 21, 2)});
+  const CalibrationReport b = LabCalibration().Fit({SyntheticRun(lab, 6, 22, 2)});
+  for (const char* key : {"command_latency_steps", "motor_lag_s", "motor_startup_m", "linear_gain_mean",
+                          "angular_gain_mean", "heading_drift_mean_radps"}) {
+    const FittedKey* in_a = a.Find(key);
+    const FittedKey* in_b = b.Find(key);
+    ASSERT_TRUE(in_a->determined && in_b->determined) << key;
+    EXPECT_TRUE(in_a->low <= in_b->value && in_b->value <= in_a->high)
+        << key << ": " << in_b->value << " outside [" << in_a->low << ", " << in_a->high << "]";
+    EXPECT_TRUE(in_b->low <= in_a->value && in_a->value <= in_b->high)
+        << key << ": " << in_a->value << " outside [" << in_b->low << ", " << in_b->high << "]";
+  }
+}
+
 // --check: the model that made a run predicts it better than others do, and
 // its steps from rest show the run's own delays.
 TEST(LabCalibrationTest, TheTrueModelPredictsItsOwnRunsBest) {
