@@ -224,9 +224,25 @@ TEST(LabCalibrationTest, TheTrueModelPredictsItsOwnRunsBest) {
   for (const StepResponseCurve& curve : predictions[0].step_responses) {
     EXPECT_LT(curve.fitted_delay_s, curve.real_delay_s - 0.15) << "ideal answers at once; " << curve.speed_mps;
   }
+  // Each error with an interval over the run's 6 robots; a ranking only
+  // where the intervals separate.
+  for (const ModelPrediction& prediction : predictions) {
+    EXPECT_EQ(prediction.robots, 6);
+    EXPECT_LT(prediction.position_error_low_m, prediction.position_error_m) << prediction.name;
+    EXPECT_GT(prediction.position_error_high_m, prediction.position_error_m) << prediction.name;
+  }
+  ASSERT_LT(predictions[2].position_error_high_m, predictions[0].position_error_low_m);
+  const std::string ranking = LabModelCheck::Ranking(predictions);
+  EXPECT_NE(ranking.find("truth predicts better than ideal"), std::string::npos) << ranking;
+  ModelPrediction twin = predictions[2];
+  twin.name = "twin";
+  EXPECT_NE(LabModelCheck::Ranking({predictions[2], twin}).find("not ranked (intervals overlap): truth / twin"),
+            std::string::npos);
   const std::string table = LabModelCheck::Table(LabCalibration().Fit(runs), predictions, models);
   EXPECT_NE(table.find("| speed (starts) | real | ideal | lab_v1 | truth |"), std::string::npos) << table;
   EXPECT_NE(table.find("| motor_lag_s |"), std::string::npos) << table;
+  EXPECT_NE(table.find("Steady turning seen"), std::string::npos) << table;
+  EXPECT_NE(table.find("| heading_drift_mean_radps |"), std::string::npos) << table;
 }
 
 CalibrationRun Still(int steps) {
