@@ -4,11 +4,13 @@
 // within its own 95 % interval. Also each refusal of calibrate's input.
 #include "dream/bridge/lab_calibration.h"
 #include "dream/bridge/lab_model_check.h"
+#include "dream/bridge/calibration_picture.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <string>
 
@@ -243,6 +245,13 @@ TEST(LabCalibrationTest, TheTrueModelPredictsItsOwnRunsBest) {
   EXPECT_NE(table.find("| motor_lag_s |"), std::string::npos) << table;
   EXPECT_NE(table.find("Steady turning seen"), std::string::npos) << table;
   EXPECT_NE(table.find("| heading_drift_mean_radps |"), std::string::npos) << table;
+  const fs::path picture = fs::temp_directory_path() / ("dream_check_" + std::to_string(::getpid()) + ".png");
+  RenderModelCheckPicture(predictions, picture.string(), render::RenderFormat::kPng);
+  std::ifstream png(picture, std::ios::binary);
+  std::string magic(4, '\0');
+  png.read(magic.data(), 4);
+  EXPECT_EQ(magic, "\x89PNG");
+  fs::remove(picture);
 }
 
 CalibrationRun Still(int steps) {
