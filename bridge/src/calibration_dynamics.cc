@@ -32,10 +32,60 @@ struct Sums2 {
 // differences telescope, so a stretch's turn carries two measurements'
 // noise), its time, and the stretches' count.
 struct Straight {
-  double turned = 0, seconds = 0, rate_sq = 0;
+  double turned = 0, seconds = 0;
   int stretches = 0;
   bool open = false;  // the last pair compared was straight
 };
+
+// Every pair of fresh poses of `series` up to kMaxGapSteps apart, away from
+// late steps: the forward motion and turn measured against what the model
+// drove, and the straight driving among them.
+void ComparePosePairs(const CalibrationSeries& series, const std::vector<world::UnicycleCommand>& driven,
+                      const std::vector<double>& motion_s, double base_gain, Sums1* forward, Sums2* turn,
+                      Straight* straight) {
+  size_t from = 0;
+  while (from < series.steps() && series.stale[from]) ++from;
+  for (size_t to = from + 1; to < series.steps(); ++to) {
+    if (series.stale[to]) continue;
+    bool is_straight = false;
+    if (to - from <= kMaxGapSteps && !series.near_late[from] && !series.near_late[to]) {
+      double v_sum = 0, w_sum = 0, moving_sum = 0;
+      is_straight = true;
+      for (size_t k = from; k < to; ++k) {
+        v_sum += driven[k].v_mps * motion_s[k];
+        w_sum += driven[k].w_radps * motion_s[k];
+        if (driven[k].v_mps != 0.0 || driven[k].w_radps != 0.0) moving_sum += motion_s[k];
+        is_straight = is_straight && std::abs(driven[k].w_radps) < kStraightTurnRadps &&
+                      std::abs(driven[k].v_mps) >= 0.01;
+      }
+      const world::Pose2& a = series.poses[from];
+      const world::Pose2& b = series.poses[to];
+      const double f = (b.x_m - a.x_m) * std::cos(a.theta_rad) + (b.y_m - a.y_m) * std::sin(a.theta_rad);
+      // Headings may wrap anywhere and come in [-pi, pi) or [0, 2 pi): a
+      // pair's difference, wrapped, is the turn (far under pi in 3 steps).
+      const double turned = WrappedAngle(b.theta_rad - a.theta_rad);
+      forward->yy += f * f;
+      forward->xy += f * v_sum;
+      forward->xx += v_sum * v_sum;
+      ++forward->n;
+      turn->yy += turned * turned;
+      turn->ya += turned * w_sum;
+      turn->yb += turned * moving_sum;
+      turn->aa += w_sum * w_sum;
+      turn->ab += w_sum * moving_sum;
+      turn->bb += moving_sum * moving_sum;
+      ++turn->n;
+      if (is_straight) {
+        // What the command's small turn explains is taken out at the base's gain.
+        straight->turned += turned - base_gain * w_sum;
+        straight->seconds += moving_sum;
+        if (!straight->open) ++straight->stretches;
+      }
+    }
+    straight->open = is_straight;
+    from = to;
+  }
+}
 
 }  // namespace
 
@@ -84,48 +134,7 @@ DynamicsEvaluation CalibrationDynamics::Evaluate(const DynamicsParams& params) c
     Sums1 forward;
     Sums2& turn = turns[r];
     Straight straight;
-    size_t from = 0;
-    while (from < series.steps() && series.stale[from]) ++from;
-    for (size_t to = from + 1; to < series.steps(); ++to) {
-      if (series.stale[to]) continue;
-      bool is_straight = false;
-      if (to - from <= kMaxGapSteps && !series.near_late[from] && !series.near_late[to]) {
-        double v_sum = 0, w_sum = 0, moving_sum = 0;
-        is_straight = true;
-        for (size_t k = from; k < to; ++k) {
-          v_sum += driven[k].v_mps * motion_s[k];
-          w_sum += driven[k].w_radps * motion_s[k];
-          if (driven[k].v_mps != 0.0 || driven[k].w_radps != 0.0) moving_sum += motion_s[k];
-          is_straight = is_straight && std::abs(driven[k].w_radps) < kStraightTurnRadps &&
-                        std::abs(driven[k].v_mps) >= 0.01;
-        }
-        const world::Pose2& a = series.poses[from];
-        const world::Pose2& b = series.poses[to];
-        const double f = (b.x_m - a.x_m) * std::cos(a.theta_rad) + (b.y_m - a.y_m) * std::sin(a.theta_rad);
-        // Headings may wrap anywhere and come in [-pi, pi) or [0, 2 pi): a
-        // pair's difference, wrapped, is the turn (far under pi in 3 steps).
-        const double turned = WrappedAngle(b.theta_rad - a.theta_rad);
-        forward.yy += f * f;
-        forward.xy += f * v_sum;
-        forward.xx += v_sum * v_sum;
-        ++forward.n;
-        turn.yy += turned * turned;
-        turn.ya += turned * w_sum;
-        turn.yb += turned * moving_sum;
-        turn.aa += w_sum * w_sum;
-        turn.ab += w_sum * moving_sum;
-        turn.bb += moving_sum * moving_sum;
-        ++turn.n;
-        if (is_straight) {
-          // What the command's small turn explains is taken out at the base's gain.
-          straight.turned += turned - base_.angular_gain_mean * w_sum;
-          straight.seconds += moving_sum;
-          if (!straight.open) ++straight.stretches;
-        }
-      }
-      straight.open = is_straight;
-      from = to;
-    }
+    ComparePosePairs(series, driven, motion_s, base_.angular_gain_mean, &forward, &turn, &straight);
     RobotGains& gains = evaluation.gains[r];
     double forward_rss = forward.yy;
     if (forward.xx > 0.0) {

@@ -62,6 +62,54 @@ void CheckLayout(const std::string& file, const std::string& name, const NpyArra
   }
 }
 
+// Whether `arrays`' time vector is a clock: refuses a damaged one (naming
+// the file and the array); a per-step one (not increasing, values under a
+// second) is not a clock, and `notes` says so.
+bool IsClock(const std::string& file, const Arrays& arrays, int64_t steps, double step_period_s,
+             std::vector<std::string>* notes) {
+  const auto t = static_cast<size_t>(steps);
+  const NpyArray& time = *arrays.time;
+  const std::string time_array = "the time vector '" + arrays.time_name + "'";
+  if (time.size() != steps || time.shape.size() > 2) {
+    throw std::runtime_error(file + ": " + time_array + " is " + ShapeText(time) + "; expected " +
+                             std::to_string(steps) + " times, one per step of '" + arrays.poses_name + "'");
+  }
+  for (size_t k = 0; k < t; ++k) {
+    // Seconds since 1970 are a clock too; a run lasts under 30 years.
+    if (!std::isfinite(time.values[k]) || std::abs(time.values[k]) > 1e11 ||
+        std::abs(time.values[k] - time.values[0]) > 1e9) {
+      throw std::runtime_error(file + ": " + time_array + " at step " + std::to_string(k) + " is " +
+                               std::to_string(time.values[k]) + ", not a finite number of seconds");
+    }
+  }
+  // A clock increases. Per-step times (what a script measured each step:
+  // its compute time, or the step's length) do not, and lie under a second.
+  size_t back = 0;
+  for (size_t k = 1; k < t && back == 0; ++k) back = time.values[k] <= time.values[k - 1] ? k : 0;
+  const auto [low, high] = std::minmax_element(time.values.begin(), time.values.end());
+  if (back != 0 && *low >= 0.0 && *high < 1.0) {
+    const double median = Median(time.values);
+    const bool step_lengths = median >= 0.5 * kNominalStepS && median <= 3.0 * kNominalStepS;
+    notes->push_back(file + ": " + time_array + " is not a clock: it does not increase (step " +
+                     std::to_string(back) + ") and its values lie in [" + world::PrintfText("%.3g", *low) + ", " +
+                     world::PrintfText("%.3g", *high) + "] s, median " + world::PrintfText("%.3g", median) + " s: " +
+                     (step_lengths ? "per-step durations, it seems (give their cumulative sum as the clock to fit "
+                                     "step timing)"
+                                   : "per-step times far below a step period (compute times?), not a step "
+                                     "period") +
+                     "; ignored, the steps are taken as " +
+                     world::PrintfText("%g", step_period_s > 0.0 ? step_period_s : kNominalStepS) + " s apart");
+    return false;
+  }
+  if (back != 0) {
+    throw std::runtime_error(file + ": " + time_array + " does not increase at step " + std::to_string(back) + " (" +
+                             world::PrintfText("%.9g", time.values[back - 1]) + " s then " +
+                             world::PrintfText("%.9g", time.values[back]) +
+                             " s); calibrate needs a clock (or no time vector: give --step-period)");
+  }
+  return true;
+}
+
 RunTrack TrackOfArrays(const std::string& file, Arrays arrays, double step_period_s, bool* timed,
                        std::vector<std::string>* notes) {
   const bool stacked = arrays.commands.shape.empty();
@@ -100,46 +148,7 @@ RunTrack TrackOfArrays(const std::string& file, Arrays arrays, double step_perio
   }
   track.obstacles.resize(t);
   track.utime.resize(t);
-  if (arrays.time) {
-    const NpyArray& time = *arrays.time;
-    const std::string time_array = "the time vector '" + arrays.time_name + "'";
-    if (time.size() != steps || time.shape.size() > 2) {
-      throw std::runtime_error(file + ": " + time_array + " is " + ShapeText(time) + "; expected " +
-                               std::to_string(steps) + " times, one per step of '" + arrays.poses_name + "'");
-    }
-    for (size_t k = 0; k < t; ++k) {
-      // Seconds since 1970 are a clock too; a run lasts under 30 years.
-      if (!std::isfinite(time.values[k]) || std::abs(time.values[k]) > 1e11 ||
-          std::abs(time.values[k] - time.values[0]) > 1e9) {
-        throw std::runtime_error(file + ": " + time_array + " at step " + std::to_string(k) + " is " +
-                                 std::to_string(time.values[k]) + ", not a finite number of seconds");
-      }
-    }
-    // A clock increases. Per-step times (what a script measured each step:
-    // its compute time, or the step's length) do not, and lie under a second.
-    size_t back = 0;
-    for (size_t k = 1; k < t && back == 0; ++k) back = time.values[k] <= time.values[k - 1] ? k : 0;
-    const auto [low, high] = std::minmax_element(time.values.begin(), time.values.end());
-    if (back != 0 && *low >= 0.0 && *high < 1.0) {
-      const double median = Median(time.values);
-      const bool step_lengths = median >= 0.5 * kNominalStepS && median <= 3.0 * kNominalStepS;
-      notes->push_back(file + ": " + time_array + " is not a clock: it does not increase (step " +
-                       std::to_string(back) + ") and its values lie in [" + world::PrintfText("%.3g", *low) + ", " +
-                       world::PrintfText("%.3g", *high) + "] s, median " + world::PrintfText("%.3g", median) + " s: " +
-                       (step_lengths ? "per-step durations, it seems (give their cumulative sum as the clock to fit "
-                                       "step timing)"
-                                     : "per-step times far below a step period (compute times?), not a step "
-                                       "period") +
-                       "; ignored, the steps are taken as " +
-                       world::PrintfText("%g", step_period_s > 0.0 ? step_period_s : kNominalStepS) + " s apart");
-      arrays.time.reset();
-    } else if (back != 0) {
-      throw std::runtime_error(file + ": " + time_array + " does not increase at step " + std::to_string(back) + " (" +
-                               world::PrintfText("%.9g", time.values[back - 1]) + " s then " +
-                               world::PrintfText("%.9g", time.values[back]) +
-                               " s); calibrate needs a clock (or no time vector: give --step-period)");
-    }
-  }
+  if (arrays.time && !IsClock(file, arrays, steps, step_period_s, notes)) arrays.time.reset();
   *timed = arrays.time.has_value();
   if (arrays.time) {
     const NpyArray& time = *arrays.time;

@@ -143,7 +143,7 @@ Population PopulationOf(const std::vector<double>& values, const std::vector<dou
 template <typename EvaluateAt>
 void BootstrapOverRobots(EvaluateAt evaluate_at, double lo, double hi, const std::vector<bool>& used, double* low,
                          double* high) {
-  constexpr int kPoints = 33;
+  constexpr int kPoints = 21;
   constexpr int kResamples = 400;
   std::vector<size_t> robots;
   for (size_t r = 0; r < used.size(); ++r) {
