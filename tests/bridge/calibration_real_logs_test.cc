@@ -18,6 +18,7 @@
 #include "dream/bridge/calibration_run.h"
 #include "dream/bridge/lab_calibration.h"
 #include "dream/bridge/npy_file.h"
+#include "dream/bridge/open_loop_drive_measure.h"
 #include "dream/robotarium/robotarium_constants.h"
 #include "dream/world/realistic_world.h"
 
@@ -399,6 +400,38 @@ TEST(CalibrationRealLogsTest, ClosedLoopTurningPinsNeitherDriftNorStartUp) {
   ASSERT_TRUE(lag.determined);
   EXPECT_LE(lag.low, lab.motor_lag_s);
   EXPECT_GE(lag.high, lab.motor_lag_s);
+}
+
+// The measure of success: a model fitted on closed-loop runs alone
+// predicts open-loop drives (OpenLoopDriveMeasure, seeded): effective
+// delays within 25 % of the lab's own, turning within 0.05.
+TEST(CalibrationRealLogsTest, AFitOnClosedLoopRunsPredictsOpenLoopDrives) {
+  const world::RealismParams lab = world::RealismParams::Lab();
+  auto closed_loop = [](int robot, int64_t step) {
+    const double phase = 0.011 * static_cast<double>(step) + 0.7 * robot;
+    return world::UnicycleCommand{0.1 + 0.05 * std::sin(phase), 0.6 * std::sin(1.9 * phase)};
+  };
+  const CalibrationReport report = LabCalibration().Fit(
+      {Drive(lab, 51, 6, 3000, closed_loop), Drive(lab, 52, 6, 3000, closed_loop)});
+  auto delay = [](const world::RealismParams& model, double v) {
+    const OpenLoopDriveMeasure::Drive drive = OpenLoopDriveMeasure::Simulate(model, 3, 20, 500, {v, 0.0});
+    double sum = 0;
+    for (const auto& poses : drive.poses) sum += OpenLoopDriveMeasure::EffectiveDelay(poses, drive.time_s);
+    return sum / static_cast<double>(drive.poses.size());
+  };
+  auto turning = [](const world::RealismParams& model, double v, double w) {
+    const OpenLoopDriveMeasure::Drive drive = OpenLoopDriveMeasure::Simulate(model, 3, 40, 1500, {v, w});
+    double sum = 0;
+    for (const auto& poses : drive.poses) sum += OpenLoopDriveMeasure::TurningRatio(poses, drive.time_s, w);
+    return sum / static_cast<double>(drive.poses.size());
+  };
+  for (double v : {0.05, 0.1, 0.2}) {
+    const double truth = delay(lab, v);
+    EXPECT_NEAR(delay(report.params, v), truth, 0.25 * truth) << v << " m/s";
+  }
+  for (const auto& [v, w] : std::vector<std::pair<double, double>>{{0.05, 0.1}, {0.15, 0.3}, {0.1, 0.2}}) {
+    EXPECT_NEAR(turning(report.params, v, w), turning(lab, v, w), 0.05) << "v " << v << ", w " << w;
+  }
 }
 
 // Runs where some robots never move (off, or held) although commanded: they
