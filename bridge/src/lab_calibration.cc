@@ -72,19 +72,21 @@ bool AnyMotionCommanded(const std::vector<CalibrationSeries>& series) {
   return false;
 }
 
+// How far a robot's poses spread (noise alone walks too: the net extent, not the path length).
+double Extent(const CalibrationSeries& s) {
+  double min_x = s.poses[0].x_m, max_x = min_x, min_y = s.poses[0].y_m, max_y = min_y;
+  for (const world::Pose2& p : s.poses) {
+    min_x = std::min(min_x, p.x_m);
+    max_x = std::max(max_x, p.x_m);
+    min_y = std::min(min_y, p.y_m);
+    max_y = std::max(max_y, p.y_m);
+  }
+  return std::hypot(max_x - min_x, max_y - min_y);
+}
+
 double LargestExtent(const std::vector<CalibrationSeries>& series) {
   double longest = 0;
-  for (const CalibrationSeries& s : series) {
-    // Noise alone walks too: the net extent, not the path length.
-    double min_x = s.poses[0].x_m, max_x = min_x, min_y = s.poses[0].y_m, max_y = min_y;
-    for (const world::Pose2& p : s.poses) {
-      min_x = std::min(min_x, p.x_m);
-      max_x = std::max(max_x, p.x_m);
-      min_y = std::min(min_y, p.y_m);
-      max_y = std::max(max_y, p.y_m);
-    }
-    longest = std::max(longest, std::hypot(max_x - min_x, max_y - min_y));
-  }
+  for (const CalibrationSeries& s : series) longest = std::max(longest, Extent(s));
   return longest;
 }
 
@@ -384,7 +386,7 @@ void MarkStuckRobots(std::vector<CalibrationSeries>* series, CalibrationReport* 
   for (CalibrationSeries& s : *series) {
     bool commanded = false;
     for (const world::UnicycleCommand& c : s.commands) commanded = commanded || !IsRestCommand(c);
-    if (!commanded || LargestExtent({s}) >= 0.02) continue;
+    if (!commanded || Extent(s) >= 0.02) continue;
     s.stuck = true;
     report->notes.push_back(s.run + ": robot " + std::to_string(s.robot) +
                             " was commanded to move but never moved 2 cm: left out of the fits of motion");
