@@ -28,13 +28,31 @@ struct RobotGains {
   double drift_se = 0.0;
   bool linear_seen = false;   // enough forward motion to tell
   bool angular_seen = false;  // enough turning to tell
+  // The drift shows apart from the angular gain only while the robot drives
+  // straight (|w| near 0): turning at one rate cannot tell a gain from a
+  // drift (an open-loop circle gave a gain of -28), and closed-loop turning
+  // lets the drift absorb what the model misses. Seen: the robot drove
+  // straight long enough; else its drift is the prior (DynamicsEvaluation).
+  bool drift_seen = false;
+  double straight_s = 0.0;  // time driven straight, moving
 };
 
 struct DynamicsEvaluation {
   double cost = 0.0;           // weighted residual sum of squares
   int64_t transitions = 0;     // pose pairs compared
   std::vector<RobotGains> gains;  // per series
+  // The drift of robots that did not drive straight: the mean of those that
+  // did, else the base's mean.
+  double drift_prior_radps = 0.0;
+  int drift_robots = 0;  // robots whose drift was seen
+  std::vector<double> series_cost;  // each series' part of cost (for intervals over robots)
 };
+
+// Below this commanded rate (after the delay and the wheels' response) a
+// robot drives straight: what it turns is drift.
+inline constexpr double kStraightTurnRadps = 0.02;
+// Driving straight for this long (in all) shows a robot's drift.
+inline constexpr double kMinStraightS = 2.0;
 
 // The world's robot model (world::RobotResponse) run on each series' commands,
 // against the motion its measured poses show.
@@ -55,6 +73,7 @@ class CalibrationDynamics {
  private:
   const std::vector<CalibrationSeries>& series_;
   world::RealismParams base_;
+  double heading_sigma_rad_;
   double position_weight_;
   double heading_weight_;
   files::StopToken stop_;

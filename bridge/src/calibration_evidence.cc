@@ -25,6 +25,7 @@ std::vector<Start> StartsFromRest(const std::vector<CalibrationSeries>& series) 
   std::vector<Start> starts;
   for (size_t r = 0; r < series.size(); ++r) {
     const CalibrationSeries& s = series[r];
+    if (s.stuck) continue;
     for (size_t e = kRestBefore; e + kMinHold < s.steps(); ++e) {
       const world::UnicycleCommand& c = s.commands[e];
       if (std::abs(c.v_mps) < 0.02 || std::abs(c.w_radps) > 0.05 || !IsRestCommand(s.commands[e - 1])) continue;
@@ -49,6 +50,17 @@ size_t FirstMotion(const std::vector<double>& distance) {
 }
 
 }  // namespace
+
+int StartsFromRestAtOrBelow(const std::vector<CalibrationSeries>& series, double max_speed_mps, int* speeds) {
+  int slow = 0;
+  std::map<long, int> by_speed;
+  for (const Start& start : StartsFromRest(series)) {
+    ++by_speed[std::lround(start.speed * 100)];
+    slow += start.speed <= max_speed_mps + 1e-9 ? 1 : 0;
+  }
+  *speeds = static_cast<int>(by_speed.size());
+  return slow;
+}
 
 double EffectiveDelay(const std::vector<double>& distance_m, const std::vector<double>& time_s) {
   const size_t n = distance_m.size();

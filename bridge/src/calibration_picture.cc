@@ -13,11 +13,10 @@ namespace {
 using render::XyPanel;
 using render::XySeries;
 
-XyPanel StepPanel(const CalibrationReport& report) {
-  XyPanel panel{"Steps in v from rest: real (solid) and fitted (dashed)", "time since the command (s)",
-                "distance driven (m)", {}};
+XyPanel StepPanel(const std::vector<StepResponseCurve>& curves, const std::string& title) {
+  XyPanel panel{title, "time since the command (s)", "distance driven (m)", {}};
   int color = 0;
-  for (const StepResponseCurve& curve : report.step_responses) {
+  for (const StepResponseCurve& curve : curves) {
     XySeries real{world::PrintfText("%.2f m/s (%d starts)", curve.speed_mps, curve.events), {}, XySeries::Style::kLine, color};
     XySeries fitted{"", {}, XySeries::Style::kDashedLine, color};
     for (size_t k = 0; k < curve.time_s.size(); ++k) {
@@ -41,9 +40,13 @@ XyPanel TurningPanel(const CalibrationReport& report) {
     hi = std::max(hi, p[0]);
   }
   const FittedKey* gain = report.Find("angular_gain_mean");
+  const FittedKey* drift = report.Find("heading_drift_mean_radps");
   const double g = gain != nullptr ? gain->value : 1.0;
+  const double d = drift != nullptr ? drift->value : 0.0;
   panel.series.push_back(std::move(dots));
-  panel.series.push_back({world::PrintfText("fitted gain %.3f", g), {{lo, g * lo}, {hi, g * hi}}, XySeries::Style::kLine, 1});
+  // The model turns g w + d while its wheels turn.
+  panel.series.push_back({world::PrintfText("fitted: gain %.3f, drift %.4f rad/s", g, d),
+                          {{lo, g * lo + d}, {hi, g * hi + d}}, XySeries::Style::kLine, 1});
   panel.series.push_back({"gain 1", {{lo, lo}, {hi, hi}}, XySeries::Style::kDashedLine, 2});
   return panel;
 }
@@ -71,7 +74,7 @@ void AddHistogram(const std::vector<double>& values, double scale, double sigma,
 }
 
 XyPanel NoisePanel(const CalibrationReport& report) {
-  XyPanel panel{"Position noise (x) with the fitted Gaussians", "noise (mm)", "measurements", {}};
+  XyPanel panel{"Position noise (x) with the fitted Gaussians", "noise (mm)", "measurements (count)", {}};
   const double rest = report.params.pose_noise_m;
   AddHistogram(report.rest_noise_m, 1e3, rest, world::PrintfText("at rest, sigma %.2f mm", rest * 1e3), 0, &panel);
   const double moving = rest * report.params.pose_noise_moving_factor;
@@ -81,7 +84,7 @@ XyPanel NoisePanel(const CalibrationReport& report) {
 }
 
 XyPanel StalePanel(const CalibrationReport& report) {
-  XyPanel panel{"Runs of repeated poses", "length (steps)", "runs", {}};
+  XyPanel panel{"Runs of repeated poses", "length (steps)", "runs (count)", {}};
   std::map<int, double> counts;
   for (int length : report.stale_bursts) counts[std::min(length, 40)] += 1;
   XySeries bars{world::PrintfText("%zu runs seen (40: 40 or more)", report.stale_bursts.size()), {}, XySeries::Style::kBars, 0};
@@ -102,10 +105,34 @@ XyPanel StalePanel(const CalibrationReport& report) {
 }  // namespace
 
 void RenderCalibrationPicture(const CalibrationReport& report, const std::string& path, render::RenderFormat format) {
-  const std::vector<XyPanel> panels = {StepPanel(report), TurningPanel(report), NoisePanel(report), StalePanel(report)};
+  const std::vector<XyPanel> panels = {
+      StepPanel(report.step_responses, "Steps in v from rest: real (solid) and fitted (dashed)"), TurningPanel(report),
+      NoisePanel(report), StalePanel(report)};
   std::string title = "dream calibrate: ";
   title += report.sources.size() == 1 ? report.sources.front() : std::to_string(report.sources.size()) + " runs";
   render::XyPlot::Render(panels, 2, title, path, format);
+}
+
+void RenderModelCheckPicture(const std::vector<ModelPrediction>& predictions, const std::string& path,
+                             render::RenderFormat format) {
+  std::string models;
+  for (size_t i = 0; i < predictions.size(); ++i) {
+    models += (i == 0 ? "" : ", ") + std::to_string(i + 1) + " " + predictions[i].name;
+  }
+  XyPanel errors{"1 s open-loop prediction error, 95 % interval over robots", "model (" + models + ")",
+                 "RMS position error after 1 s (cm)", {}};
+  for (size_t i = 0; i < predictions.size(); ++i) {
+    const ModelPrediction& p = predictions[i];
+    const auto x = static_cast<double>(i + 1);
+    errors.series.push_back({p.name, {{x, p.position_error_m * 100}}, XySeries::Style::kDots, static_cast<int>(i)});
+    errors.series.push_back({"", {{x, p.position_error_low_m * 100}, {x, p.position_error_high_m * 100}},
+                             XySeries::Style::kLine, static_cast<int>(i)});
+  }
+  std::vector<XyPanel> panels = {errors};
+  for (const ModelPrediction& p : predictions) {
+    panels.push_back(StepPanel(p.step_responses, "Steps in v from rest: real (solid), " + p.name + " (dashed)"));
+  }
+  render::XyPlot::Render(panels, 2, "dream calibrate --check", path, format);
 }
 
 }  // namespace dream::bridge

@@ -9,13 +9,13 @@
 namespace dream::bridge {
 namespace {
 
-// Real medians of the Robotarium's GRITSbot X (issue 22, docs/experiments.md):
-// the effective delay of a step in v from rest.
+// The Robotarium's GRITSbot X on open-loop drives from rest (issue 32,
+// docs/experiments.md): the effective delay by the maintainers' measure.
 struct RealMedian {
   double speed_mps;
   double delay_s;
 };
-constexpr RealMedian kRealMedians[] = {{0.05, 0.515}, {0.1, 0.385}, {0.2, 0.330}};
+constexpr RealMedian kRealMedians[] = {{0.05, 0.635}, {0.1, 0.419}, {0.2, 0.337}};
 
 std::string Number(double value) { return world::PrintfText("%.6g", value); }
 
@@ -46,9 +46,13 @@ std::string CalibrationReport::Text() const {
     out << "  " << key.key << std::string(width - key.key.size() + 2, ' ') << world::PrintfText("%-12s", Number(key.value).c_str())
         << world::PrintfText("%-28s", interval.c_str()) << key.support << "\n";
   }
+  if (!notes.empty()) {
+    out << "\nNotes\n";
+    for (const std::string& note : notes) out << "  - " << note << "\n";
+  }
   if (!step_responses.empty()) {
     out << "\nSteps in v from rest (effective delay: where the steady line crosses 0; first motion: first step over 3 mm)\n";
-    out << "  speed m/s  starts  delay real  fitted   first motion real  fitted   real robots (median)\n";
+    out << "  speed m/s  starts  delay real  fitted   first motion real  fitted   real robots (open loop)\n";
     for (const StepResponseCurve& curve : step_responses) {
       std::string median = "";
       for (const RealMedian& real : kRealMedians) {
@@ -70,6 +74,7 @@ std::string CalibrationReport::RealismYaml() const {
   for (const std::string& source : sources) out << " " << source;
   out << "\n# " << robots << " robots, " << robot_steps << " robot-steps. Each key: value, then in the comment\n";
   out << "# its 95 % interval and the data behind it, or why it keeps the base preset's value.\n";
+  for (const std::string& note : notes) out << "# Note: " << note << "\n";
   for (const FittedKey& key : keys) {
     out << key.key << ": " << world::PrintfText("%.10g", key.value) << "  # ";
     if (key.determined) {

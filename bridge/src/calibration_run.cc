@@ -1,5 +1,6 @@
 #include "dream/bridge/calibration_run.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
@@ -15,6 +16,7 @@
 #include "dream/robot_poses_t.hpp"
 #include "dream/robotarium/robotarium_constants.h"
 #include "dream/run_log/run_log.h"
+#include "dream/world/printf_text.h"
 #include "dream/velocity_command_t.hpp"
 
 namespace dream::bridge {
@@ -36,19 +38,83 @@ struct Arrays {
   std::optional<NpyArray> time;
   std::string poses_name;
   std::string commands_name;
+  std::string time_name;
 };
+
+// A one-robot array rows x T as rows x 1 x T (the same values in C order).
+void AsOneRobot(NpyArray* array, int64_t rows) {
+  if (array->shape.size() == 2 && array->shape[0] == rows) array->shape = {rows, 1, array->shape[1]};
+}
+
+// The median of `values` (a copy).
+double Median(std::vector<double> values) {
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2), values.end());
+  return values[values.size() / 2];
+}
 
 // Robots and steps of a (rows x N x T) array named `name`, or an error.
 void CheckLayout(const std::string& file, const std::string& name, const NpyArray& array, int64_t rows,
                  const char* meaning) {
   if (array.shape.size() != 3 || array.shape[0] != rows) {
     throw std::runtime_error(file + ": array '" + name + "' is " + ShapeText(array) + "; expected " +
-                             std::to_string(rows) + " x N x T (" + meaning + " of N robots over T steps)");
+                             std::to_string(rows) + " x N x T (" + meaning + " of N robots over T steps; " +
+                             std::to_string(rows) + " x T for one robot)");
   }
 }
 
-RunTrack TrackOfArrays(const std::string& file, const Arrays& arrays, double step_period_s, bool* timed) {
+// Whether `arrays`' time vector is a clock: refuses a damaged one (naming
+// the file and the array); a per-step one (not increasing, values under a
+// second) is not a clock, and `notes` says so.
+bool IsClock(const std::string& file, const Arrays& arrays, int64_t steps, double step_period_s,
+             std::vector<std::string>* notes) {
+  const auto t = static_cast<size_t>(steps);
+  const NpyArray& time = *arrays.time;
+  const std::string time_array = "the time vector '" + arrays.time_name + "'";
+  if (time.size() != steps || time.shape.size() > 2) {
+    throw std::runtime_error(file + ": " + time_array + " is " + ShapeText(time) + "; expected " +
+                             std::to_string(steps) + " times, one per step of '" + arrays.poses_name + "'");
+  }
+  for (size_t k = 0; k < t; ++k) {
+    // Seconds since 1970 are a clock too; a run lasts under 30 years.
+    if (!std::isfinite(time.values[k]) || std::abs(time.values[k]) > 1e11 ||
+        std::abs(time.values[k] - time.values[0]) > 1e9) {
+      throw std::runtime_error(file + ": " + time_array + " at step " + std::to_string(k) + " is " +
+                               std::to_string(time.values[k]) + ", not a finite number of seconds");
+    }
+  }
+  // A clock increases. Per-step times (what a script measured each step:
+  // its compute time, or the step's length) do not, and lie under a second.
+  size_t back = 0;
+  for (size_t k = 1; k < t && back == 0; ++k) back = time.values[k] <= time.values[k - 1] ? k : 0;
+  const auto [low, high] = std::minmax_element(time.values.begin(), time.values.end());
+  if (back != 0 && *low >= 0.0 && *high < 1.0) {
+    const double median = Median(time.values);
+    const bool step_lengths = median >= 0.5 * kNominalStepS && median <= 3.0 * kNominalStepS;
+    notes->push_back(file + ": " + time_array + " is not a clock: it does not increase (step " +
+                     std::to_string(back) + ") and its values lie in [" + world::PrintfText("%.3g", *low) + ", " +
+                     world::PrintfText("%.3g", *high) + "] s, median " + world::PrintfText("%.3g", median) + " s: " +
+                     (step_lengths ? "per-step durations, it seems (give their cumulative sum as the clock to fit "
+                                     "step timing)"
+                                   : "per-step times far below a step period (compute times?), not a step "
+                                     "period") +
+                     "; ignored, the steps are taken as " +
+                     world::PrintfText("%g", step_period_s > 0.0 ? step_period_s : kNominalStepS) + " s apart");
+    return false;
+  }
+  if (back != 0) {
+    throw std::runtime_error(file + ": " + time_array + " does not increase at step " + std::to_string(back) + " (" +
+                             world::PrintfText("%.9g", time.values[back - 1]) + " s then " +
+                             world::PrintfText("%.9g", time.values[back]) +
+                             " s); calibrate needs a clock (or no time vector: give --step-period)");
+  }
+  return true;
+}
+
+RunTrack TrackOfArrays(const std::string& file, Arrays arrays, double step_period_s, bool* timed,
+                       std::vector<std::string>* notes) {
   const bool stacked = arrays.commands.shape.empty();
+  AsOneRobot(&arrays.poses, stacked ? 5 : 3);
+  if (!stacked) AsOneRobot(&arrays.commands, 2);
   CheckLayout(file, arrays.poses_name, arrays.poses, stacked ? 5 : 3, stacked ? "x, y, theta, v, w" : "x, y, theta");
   const int64_t robots = arrays.poses.shape[1];
   const int64_t steps = arrays.poses.shape[2];
@@ -82,20 +148,11 @@ RunTrack TrackOfArrays(const std::string& file, const Arrays& arrays, double ste
   }
   track.obstacles.resize(t);
   track.utime.resize(t);
+  if (arrays.time && !IsClock(file, arrays, steps, step_period_s, notes)) arrays.time.reset();
   *timed = arrays.time.has_value();
   if (arrays.time) {
     const NpyArray& time = *arrays.time;
-    if (time.size() != steps || time.shape.size() > 2) {
-      throw std::runtime_error(file + ": the time vector is " + ShapeText(time) + "; expected " +
-                               std::to_string(steps) + " times, one per step of '" + arrays.poses_name + "'");
-    }
-    for (size_t k = 0; k < t; ++k) {
-      const double seconds = time.values[k] - time.values[0];
-      if (!std::isfinite(seconds) || std::abs(seconds) > 1e9) {
-        throw std::runtime_error(file + ": time " + std::to_string(k) + " is not a finite number of seconds");
-      }
-      track.utime[k] = std::llround(seconds * 1e6);
-    }
+    for (size_t k = 0; k < t; ++k) track.utime[k] = std::llround((time.values[k] - time.values[0]) * 1e6);
   } else {
     const double period = step_period_s > 0.0 ? step_period_s : kNominalStepS;
     for (size_t k = 0; k < t; ++k) track.utime[k] = std::llround(static_cast<double>(k) * period * 1e6);
@@ -120,6 +177,7 @@ Arrays ReadNpz(const std::string& path, const CalibrationInputOptions& options) 
   arrays.commands_name = options.commands_name;
   arrays.poses = required(options.poses_name, "--poses");
   arrays.commands = required(options.commands_name, "--commands");
+  arrays.time_name = options.time_name;
   arrays.time = npz.Read(options.time_name, max_bytes);
   return arrays;
 }
@@ -130,6 +188,7 @@ Arrays ReadMat(const std::string& path, const CalibrationInputOptions& options) 
   arrays.commands_name = options.commands_name;
   arrays.poses = ReadMatArray(path, options.poses_name, options.max_values, 3);
   arrays.commands = ReadMatArray(path, options.commands_name, options.max_values, 3);
+  arrays.time_name = options.time_name;
   try {
     arrays.time = ReadMatArray(path, options.time_name, options.max_values, 2);
   } catch (const std::runtime_error& error) {
@@ -243,14 +302,14 @@ CalibrationRun ReadCalibrationRun(const std::string& path, const CalibrationInpu
     }
     run.track = TrackOfLog(log, &run.timed);
   } else if (extension == ".npz") {
-    run.track = TrackOfArrays(path, ReadNpz(path, options), options.step_period_s, &run.timed);
+    run.track = TrackOfArrays(path, ReadNpz(path, options), options.step_period_s, &run.timed, &run.notes);
   } else if (extension == ".mat") {
-    run.track = TrackOfArrays(path, ReadMat(path, options), options.step_period_s, &run.timed);
+    run.track = TrackOfArrays(path, ReadMat(path, options), options.step_period_s, &run.timed, &run.notes);
   } else if (extension == ".npy") {
     Arrays arrays;
     arrays.poses = ReadNpyFile(path, options.max_values * 8 + 4096);
     arrays.poses_name = "(the .npy's array)";
-    run.track = TrackOfArrays(path, arrays, options.step_period_s, &run.timed);
+    run.track = TrackOfArrays(path, arrays, options.step_period_s, &run.timed, &run.notes);
   } else {
     throw std::runtime_error(path + ": not a run folder, .lcmlog, .npz, .mat or .npy file (what calibrate reads)");
   }
@@ -263,6 +322,10 @@ CalibrationRun ReadCalibrationRun(const std::string& path, const CalibrationInpu
   if (run.timed && steps > 1 &&
       static_cast<double>(run.track.utime.back() - run.track.utime.front()) * 1e-6 <
           0.5 * kNominalStepS * static_cast<double>(steps - 1)) {
+    run.notes.push_back(path + ": its clock's steps average " +
+                        world::PrintfText("%.3g ms", static_cast<double>(run.track.utime.back() - run.track.utime.front()) *
+                                                         1e-3 / static_cast<double>(steps - 1)) +
+                        ", under half of 33 ms (a simulator not in real time): the steps are taken as 33 ms apart");
     for (int64_t k = 0; k < steps; ++k) {
       run.track.utime[static_cast<size_t>(k)] =
           run.track.utime.front() + std::llround(static_cast<double>(k) * kNominalStepS * 1e6);

@@ -23,6 +23,9 @@ struct CalibrationSeries {
   // of motion and noise leave these out.
   std::vector<bool> near_late;
   bool timed = false;
+  // Commanded to move but never moved 2 cm (a robot off or held): left out
+  // of the fits of motion, as it says nothing of how robots answer commands.
+  bool stuck = false;
 
   size_t steps() const { return poses.size(); }
 

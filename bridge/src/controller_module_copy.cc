@@ -23,10 +23,9 @@ void KeepControllerModule(const run_config::RunConfig& config, const files::Outp
 }
 
 void KeepRealismFile(const run_config::RunConfig& config, const files::OutputFolder& out) {
-  if (config.realism_file_as_written.empty()) return;
-  const std::filesystem::path written = std::filesystem::path(config.realism_file_as_written).lexically_normal();
-  if (written.is_absolute()) return;
-  out.WriteFileInSubfolders(written.string(), files::ReadFileText(config.realism_file));
+  const std::string copy = run_config::RealismFileInRunFolder(config);
+  if (copy.empty()) return;
+  out.WriteFileInSubfolders(copy, files::ReadFileText(config.realism_file));
 }
 
 }  // namespace dream::bridge

@@ -134,6 +134,22 @@ class HeaderParser {
   size_t pos_ = 0;
 };
 
+// The values of a Fortran-order array of `shape` in C order (the last index fastest).
+std::vector<double> COrderOfFortran(const std::vector<double>& fortran, const std::vector<int64_t>& shape) {
+  std::vector<double> c_order(fortran.size());
+  std::vector<int64_t> index(shape.size(), 0);
+  for (size_t c = 0; c < c_order.size(); ++c) {
+    int64_t at = 0;  // the Fortran position of `index`
+    for (size_t d = shape.size(); d-- > 0;) at = at * shape[d] + index[d];
+    c_order[c] = fortran[static_cast<size_t>(at)];
+    for (size_t d = shape.size(); d-- > 0;) {  // the next index in C order
+      if (++index[d] < shape[d]) break;
+      index[d] = 0;
+    }
+  }
+  return c_order;
+}
+
 }  // namespace
 
 int64_t NpyArray::size() const {
@@ -224,9 +240,6 @@ NpyArray DecodeNpy(const std::string& bytes, const std::string& name) {
   if (descr != "<f8") {
     Fail(name, "holds dtype '" + descr + "'; expected float64 ('<f8'); save it with np.save(name, array.astype(np.float64))");
   }
-  if (fortran_order) {
-    Fail(name, "is in Fortran order; save it with np.save(name, np.ascontiguousarray(array))");
-  }
   int64_t count = 1;
   std::string shape_text;
   for (int64_t d : array.shape) shape_text += (shape_text.empty() ? "" : ", ") + std::to_string(d);
@@ -247,6 +260,9 @@ NpyArray DecodeNpy(const std::string& bytes, const std::string& name) {
   }
   array.values.resize(static_cast<size_t>(count));
   if (count > 0) std::memcpy(array.values.data(), bytes.data() + data_start, static_cast<size_t>(expected));
+  // Fortran order (what scipy.io.loadmat and MATLAB give; numpy saves it so):
+  // the first index runs fastest. NpyArray is always C order.
+  if (fortran_order && array.shape.size() > 1) array.values = COrderOfFortran(array.values, array.shape);
   return array;
 }
 

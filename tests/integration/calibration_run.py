@@ -6,7 +6,7 @@
    no boundary or collision error.
 2. Under `--set world.realism=lab`: still clean, and `dream calibrate` on the run folder fits a
    lab model whose effective delays of steps from rest are within 25 % of the real robots'
-   medians (issue 22: 515, 385 and 330 ms at 0.05, 0.1 and 0.19-0.2 m/s), and writes the
+   open-loop drives (issue 32: 635, 419 and 337 ms at 0.05, 0.1 and 0.19-0.2 m/s), and writes the
    realism file it names, which a run then uses (--set world.realism.file=...).
 
 Usage: calibration_run.py --dream BIN --source DIR
@@ -17,7 +17,7 @@ import re
 
 from dreamtest import arguments, check, main, read_summary
 
-REAL_MEDIAN_DELAY_S = {0.05: 0.515, 0.10: 0.385, 0.19: 0.330}
+REAL_MEDIAN_DELAY_S = {0.05: 0.635, 0.10: 0.419, 0.19: 0.337}
 
 
 def check_clean(run_dir):

@@ -159,11 +159,12 @@ class Context:
             time.sleep(0.01)
         fail(f"{name} did not print /{pattern}/ within {timeout} s: {tail(self.output(name))}")
 
-    def run(self, argv, timeout=30, expect=None):
-        """Runs argv to completion; returns (exit code, stdout+stderr). `expect`: required exit code."""
+    def run(self, argv, timeout=30, expect=None, cwd=None):
+        """Runs argv to completion (in the folder `cwd`, else this one); returns (exit code, stdout+stderr).
+        `expect`: required exit code."""
         try:
             result = subprocess.run(argv, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                                    timeout=timeout, stdin=subprocess.DEVNULL)
+                                    timeout=timeout, stdin=subprocess.DEVNULL, cwd=cwd)
         except subprocess.TimeoutExpired:
             fail(f"`{' '.join(map(str, argv))}` still running after {timeout} s")
         if expect is not None and result.returncode != expect:

@@ -15,10 +15,13 @@
 6. The tracker's drop, set with --set: every robot without a pose for over tracker_drop_s is lost
    to the tracker for the rest of the run, listed in summary.json realism_stats and named in a
    tracker_lost warning; its agents kept being sent its last measured pose.
-7. A realism file (what dream calibrate writes): `--set world.realism.file=PATH` (absolute) and a
-   config naming one relative to itself; summary.json names the file and has its values, the run
-   folder keeps a copy beside config.yaml so the kept config runs again, and a missing file is
-   named with exit 1.
+7. A realism file (what dream calibrate writes): `--set world.realism.file=PATH` (absolute, and
+   relative to the current folder: run from the folder holding FILE) and a config naming one
+   relative to itself; summary.json names the file and has its values, the run folder keeps a copy
+   (beside config.yaml, or under realism/ with config.yaml naming it) so the kept config runs again
+   from anywhere, and a missing file is named with exit 1. `dream sweep --set
+   world.realism.file=FILE` from the folder holding FILE: every run on the file's model, each run
+   folder with its copy.
 
 Usage: realism_run.py --dream BIN --source DIR --types-dir DIR
 """
@@ -138,16 +141,47 @@ def test(ctx):
         config_text = source.read()
     with open(ctx.path("relative.yaml"), "w", encoding="utf-8") as out:
         out.write(config_text)
-    ctx.run([args.dream, "run", ctx.path("relative.yaml"), "--out", ctx.path("file_rel"), "--steps", "30",
-             "--set", "world.realism.file=labs/mylab.yaml"], timeout=120)
+    relative_config = config_text.replace("realism: {preset: ideal}", "realism: {file: labs/mylab.yaml}")
+    check(relative_config != config_text, "go_to_goal.yaml no longer says realism: {preset: ideal}")
+    with open(ctx.path("relative.yaml"), "w", encoding="utf-8") as out:
+        out.write(relative_config)
+    ctx.run([args.dream, "run", ctx.path("relative.yaml"), "--out", ctx.path("file_rel"), "--steps", "30"],
+            timeout=120, expect=0)
     kept = os.path.join(ctx.path("file_rel"), "labs", "mylab.yaml")
     check(os.path.exists(kept), "the run folder keeps no copy of its relative realism file")
     ctx.run([args.dream, "run", os.path.join(ctx.path("file_rel"), "config.yaml"), "--out", ctx.path("rerun"),
-             "--steps", "30"], timeout=120)
+             "--steps", "30"], timeout=120, expect=0)
     check(read_summary(ctx.path("rerun"))["realism"]["motor_lag_s"] == 0.2, "the kept config lost its lab model")
+    # From the folder holding FILE, the config elsewhere: the path is the current folder's.
+    labs = os.path.dirname(lab_file)
+    ctx.run([args.dream, "run", os.path.join(args.source, "config", "go_to_goal.yaml"), "--out", ctx.path("file_cwd"),
+             "--steps", "30", "--set", "world.realism.file=mylab.yaml"], timeout=120, expect=0, cwd=labs)
+    realism = read_summary(ctx.path("file_cwd"))["realism"]
+    check(realism["file"] == lab_file and realism["motor_lag_s"] == 0.2, f"not the current folder's file: {realism}")
+    kept = os.path.join(ctx.path("file_cwd"), "realism", "mylab.yaml")
+    check(os.path.exists(kept), "the run folder keeps no copy of a realism file given with --set")
+    with open(os.path.join(ctx.path("file_cwd"), "config.yaml"), encoding="utf-8") as kept_config:
+        check("realism/mylab.yaml" in kept_config.read(), "the run folder's config.yaml does not name its copy")
+    os.rename(lab_file, lab_file + ".moved")  # the folder alone must do
+    ctx.run([args.dream, "run", os.path.join(ctx.path("file_cwd"), "config.yaml"), "--out", ctx.path("rerun_cwd"),
+             "--steps", "30"], timeout=120, expect=0)
+    check(read_summary(ctx.path("rerun_cwd"))["realism"]["motor_lag_s"] == 0.2, "the run folder is not on its own")
+    os.rename(lab_file + ".moved", lab_file)
     code, text = run(ctx, args, "no_file", "go_to_goal.yaml", "--set", "world.realism.file=labs/none.yaml",
                      expect=EXIT_INPUT)
     check("no realism file" in text and "none.yaml" in text, f"unclear error: {text.strip()}")
+
+    # 8. dream sweep with a realism file, from the folder holding it.
+    ctx.run([args.dream, "sweep", os.path.join(args.source, "config", "go_to_goal.yaml"), "--seeds", "1-2",
+             "--steps", "30", "--set", "world.realism.file=mylab.yaml", "--out", ctx.path("sweep")],
+            timeout=300, expect=0, cwd=labs)
+    runs_dir = os.path.join(ctx.path("sweep"), "runs")
+    runs = sorted(d for d in os.listdir(runs_dir) if os.path.isfile(os.path.join(runs_dir, d, "summary.json")))
+    check(len(runs) == 2, f"the sweep made {runs}")
+    for name in runs:
+        folder = os.path.join(runs_dir, name)
+        check(read_summary(folder)["realism"]["motor_lag_s"] == 0.2, f"{name} did not run on the file's model")
+        check(os.path.exists(os.path.join(folder, "realism", "mylab.yaml")), f"{name} keeps no copy of the file")
 
 
 if __name__ == "__main__":

@@ -116,6 +116,29 @@ TEST(RealisticWorldTest, QuantisationRoundsMeasuredPoses) {
   }
 }
 
+// The lab's tracker wraps a heading to [-pi, pi) and then rounds it: every
+// heading lies on the 1 mrad grid, also near +-pi (rounding first and then
+// wrapping gave values such as 3.155 - 2 pi, off the grid).
+TEST(RealisticWorldTest, HeadingsAreWrappedThenRoundedSoAllStayOnTheGrid) {
+  RealismParams realism = RealismParams::Lab();
+  realism.tracking_dropout_probability = 0.0;
+  RealisticWorld world(WorldParams{}, realism, 3, {{0.0, 0.0, 3.14}, {0.5, 0.0, -3.14}});
+  int near_pi = 0;
+  for (int step = 0; step < 6000; ++step) {
+    world.SetCommand(0, {0.0, 2.0});
+    world.SetCommand(1, {0.0, -2.0});
+    world.Step();
+    for (const Pose2& measured : world.poses()) {
+      const double units = measured.theta_rad / 0.001;
+      ASSERT_NEAR(units, std::round(units), 1e-6) << measured.theta_rad << " at step " << step;
+      ASSERT_GE(measured.theta_rad, -M_PI) << "step " << step;
+      ASSERT_LT(measured.theta_rad, M_PI) << "step " << step;
+      near_pi += std::abs(measured.theta_rad) > 3.13;
+    }
+  }
+  EXPECT_GT(near_pi, 20) << "the robots must pass +-pi often for this to test anything";
+}
+
 TEST(RealisticWorldTest, PoseDelaySendsThePosesOfEarlierSteps) {
   RealismParams realism;
   realism.pose_delay_steps = 3;

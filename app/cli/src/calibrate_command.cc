@@ -52,7 +52,16 @@ int RunCheck(const CalibrateArgs& args, const std::vector<bridge::CalibrationRun
   const files::StopToken stop(StopFlag());
   const bridge::CalibrationReport real = bridge::LabCalibration(base, stop).Fit(runs);
   const std::vector<bridge::ModelPrediction> predictions = bridge::LabModelCheck::Predict(runs, models, stop);
+  for (const std::string& note : real.notes) spdlog::warn("{}", note);
   std::cout << bridge::LabModelCheck::Table(real, predictions, models);
+  if (!args.picture_path.empty()) {
+    const std::optional<render::RenderFormat> format = render::RenderFormatOfPath(args.picture_path);
+    if (!format || !render::IsPictureFormat(*format)) {
+      throw std::runtime_error("--picture " + args.picture_path + ": a picture is .png or .svg");
+    }
+    bridge::RenderModelCheckPicture(predictions, args.picture_path, *format);
+    std::cout << "\nWrote " << args.picture_path << "\n";
+  }
   return kExitOk;
 }
 
@@ -116,7 +125,8 @@ void DeclareCalibrateCommand(CommandLine& line) {
   command->add_option("--check", args->check_models,
                       "Hold these models (presets or realism files, comma-separated) against the runs; writes nothing")
       ->delimiter(',');
-  command->add_option("--picture", args->picture_path, "The picture to draw (.png or .svg; default: --out as .png)");
+  command->add_option("--picture", args->picture_path,
+                      "The picture to draw (.png or .svg; default: --out as .png; with --check: only when given)");
   command->add_option("--base", args->base, "The preset whose values the undetermined keys keep")
       ->check(CLI::IsMember({"lab", "ideal", "lab_v1"}));
   command->add_option("--poses", args->options.poses_name, "Name of the poses array in .npz/.mat files (3 x N x T)");

@@ -1,5 +1,6 @@
 #include "dream/config_overrides/config_override.h"
 
+#include <filesystem>
 #include <stdexcept>
 #include <vector>
 
@@ -152,6 +153,13 @@ void ApplyConfigOverride(YAML::Node root, const std::string& dotted_key, const s
   using config::ConfigNode;
   YAML::Node value;
   const ConfigNode::Extent extent = ParseSetValue(option, value_text, &value);
+
+  // A path given on the command line is relative to the current folder, as
+  // every command-line path is (in a config file it is relative to the config).
+  if (dotted_key == "world.realism.file" && value.IsScalar() && !value.Scalar().empty() &&
+      std::filesystem::path(value.Scalar()).is_relative()) {
+    value = YAML::Node(std::filesystem::absolute(value.Scalar()).lexically_normal().string());
+  }
 
   const std::vector<std::string> parts = SplitKey(dotted_key);
   YAML::Node node = root;

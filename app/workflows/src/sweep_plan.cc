@@ -134,6 +134,15 @@ YAML::Node SweepPlan::MakeRunConfig(const std::string& base_text, const std::str
     const std::string base_dir = std::filesystem::absolute(source_name).parent_path().lexically_normal().string();
     config_overrides::ApplyConfigOverride(root, "plugin_dir", "'" + EscapedForSingleQuotes(base_dir) + "'", source_name);
   }
+  // So must a relative realism file of the base config (one given with
+  // --set is absolute by now).
+  const YAML::Node world = read_only["world"];  // a missing key's node may only be asked IsDefined()
+  const YAML::Node realism = world.IsDefined() && world.IsMap() ? world["realism"] : YAML::Node();
+  const YAML::Node realism_file = realism.IsDefined() && realism.IsMap() ? realism["file"] : YAML::Node();
+  if (realism_file.IsDefined() && realism_file.IsScalar() && std::filesystem::path(realism_file.Scalar()).is_relative()) {
+    const std::filesystem::path base_dir = std::filesystem::absolute(source_name).parent_path();
+    root["world"]["realism"]["file"] = (base_dir / realism_file.Scalar()).lexically_normal().string();
+  }
   if (read_only["name"].IsScalar()) {
     config_overrides::ApplyConfigOverride(root, "name", read_only["name"].Scalar() + "_" + run.name, source_name);
   }

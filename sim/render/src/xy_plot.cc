@@ -65,7 +65,9 @@ void DrawFrameAndLabels(cairo_t* cr, const XyPanel& panel, double left, double t
   cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
   Text(cr, left + width, top + height + 30 * ui, panel.x_label, 11 * ui, false, 1.0);
   cairo_save(cr);
-  cairo_move_to(cr, left - 42 * ui, top + height / 2);
+  // Rotate about the label's place (a move_to would not move the origin the
+  // label is drawn from: it was drawn off the picture's top left corner).
+  cairo_translate(cr, left - 42 * ui, top + height / 2);
   cairo_rotate(cr, -M_PI / 2);
   Text(cr, 0, 0, panel.y_label, 11 * ui, false, 0.5);
   cairo_restore(cr);

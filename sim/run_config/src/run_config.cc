@@ -427,7 +427,38 @@ world::RealismParams LoadRealismFile(const std::string& path) {
 
 RunConfig LoadRunConfigFile(const std::string& path) { return LoadRunConfig(config::ConfigNode::LoadFile(path)); }
 
-std::string RunFolderConfigText(const RunConfig& config, const std::string& text) {
+std::string RealismFileInRunFolder(const RunConfig& config) {
+  if (config.realism_file_as_written.empty()) return "";
+  const std::filesystem::path written = std::filesystem::path(config.realism_file_as_written).lexically_normal();
+  return written.is_absolute() ? (std::filesystem::path("realism") / written.filename()).string() : written.string();
+}
+
+namespace {
+
+// `text` with world.realism.file naming the run folder's copy, when it names
+// an absolute path (the copy is elsewhere than written). The text is
+// re-emitted, so its comments go; a header says why.
+std::string WithRealismCopy(const RunConfig& config, const std::string& text) {
+  const std::string copy = RealismFileInRunFolder(config);
+  if (copy.empty() || copy == std::filesystem::path(config.realism_file_as_written).lexically_normal().string()) {
+    return text;
+  }
+  YAML::Node root = config::ConfigNode::ParseYaml(text, config.source);
+  const YAML::Node& read_only = root;
+  const YAML::Node world = read_only["world"];  // a missing key's node may only be asked IsDefined()
+  if (!world.IsDefined() || !world.IsMap()) return text;
+  const YAML::Node realism_read = world["realism"];
+  if (!realism_read.IsDefined() || !realism_read.IsMap() || !realism_read["file"].IsDefined()) return text;
+  YAML::Node realism = root["world"]["realism"];
+  realism["file"] = copy;
+  YAML::Emitter out;
+  out.SetIndent(2);
+  out << root;
+  return "# Written by dream: world.realism.file names this folder's copy of " + config.realism_file + "\n" +
+         out.c_str() + "\n";
+}
+
+std::string WithPluginDir(const RunConfig& config, const std::string& text) {
   if (config.plugin_nodes.empty()) return text;
   const config::ConfigNode root = config::ConfigNode::LoadString(text, config.source);
   bool relative = false;
@@ -449,6 +480,12 @@ std::string RunFolderConfigText(const RunConfig& config, const std::string& text
   } catch (const config::ConfigError&) {
   }
   return text;
+}
+
+}  // namespace
+
+std::string RunFolderConfigText(const RunConfig& config, const std::string& text) {
+  return WithPluginDir(config, WithRealismCopy(config, text));
 }
 
 }  // namespace dream::run_config

@@ -88,12 +88,12 @@ RealismParams RealismParams::Lab() {
   lab.dead_zone_w_radps = 0.01;
   lab.wheel_accel_limit_radps2 = 0.0;  // the lag below models the wheels' response
   lab.motor_lag_s = 0.136;
-  lab.motor_startup_m = 0.0123;
+  lab.motor_startup_m = 0.018;
   lab.linear_gain_mean = 0.99;
   lab.linear_gain_spread = 0.035;
-  lab.angular_gain_mean = 0.9;
+  lab.angular_gain_mean = 1.009;
   lab.angular_gain_spread = 0.03;
-  lab.heading_drift_mean_radps = 0.0;
+  lab.heading_drift_mean_radps = -0.011;
   lab.heading_drift_spread_radps = 0.007;
   lab.step_overrun_mean_s = 0.0009;
   lab.loop_stall_probability = 0.0005;

@@ -44,6 +44,20 @@ double Quantize(double value, double quantum) {
   return quantum > 0.0 ? std::round(value / quantum) * quantum : value;
 }
 
+// A heading as the lab's tracker reports it: wrapped to [-pi, pi) first,
+// then rounded, so every value is on the quantum's grid (rounding after the
+// wrap would leave the grid near +-pi: -3.128185 = 3.155 - 2 pi). A value
+// that rounds onto or past +-pi takes the grid's last value inside. An
+// unrounded heading is only wrapped, to (-pi, pi] as the official world's.
+double MeasuredHeading(double theta, double quantum) {
+  if (quantum <= 0.0) return theta > kPi || theta <= -kPi ? std::atan2(std::sin(theta), std::cos(theta)) : theta;
+  theta = std::remainder(theta, 2 * kPi);  // [-pi, pi]
+  if (theta >= kPi) theta = -kPi;
+  const double lowest = std::ceil(-kPi / quantum);       // the first multiple at or above -pi
+  const double highest = std::ceil(kPi / quantum) - 1.0;  // the last multiple below pi
+  return std::clamp(std::round(theta / quantum), lowest, highest) * quantum;
+}
+
 // Below these a robot counts as at rest for the tracker's models: it moves
 // less than 0.07 mm (0.7 mrad) a step.
 constexpr double kMovingSpeedMps = 0.002;
@@ -247,9 +261,7 @@ void RealisticWorld::Measure(bool first) {
     Pose2& measured = measured_poses_[i];
     measured.x_m = Quantize(seen.x_m + noise_x, realism_.pose_quantum_m);
     measured.y_m = Quantize(seen.y_m + noise_y, realism_.pose_quantum_m);
-    double theta = Quantize(seen.theta_rad + noise_theta, realism_.pose_quantum_rad);
-    if (theta > kPi || theta <= -kPi) theta = std::atan2(std::sin(theta), std::cos(theta));
-    measured.theta_rad = theta;
+    measured.theta_rad = MeasuredHeading(seen.theta_rad + noise_theta, realism_.pose_quantum_rad);
     measured_velocities_[i] = seen_velocities[i];
   }
 }

@@ -2,7 +2,10 @@
 
 #include <string>
 
+#include <vector>
+
 #include "dream/bridge/calibration_report.h"
+#include "dream/bridge/lab_model_check.h"
 #include "dream/render/render_format.h"
 
 namespace dream::bridge {
@@ -13,5 +16,11 @@ namespace dream::bridge {
 /// lengths of runs of repeated poses with the fitted burst model.
 /// @throws std::runtime_error naming the path when it cannot be written.
 void RenderCalibrationPicture(const CalibrationReport& report, const std::string& path, render::RenderFormat format);
+
+/// dream calibrate --check's picture: each model's 1 s position error with
+/// its 95 % interval, then per model the runs' steps from rest, real (solid)
+/// against the model (dashed). @throws std::runtime_error naming the path.
+void RenderModelCheckPicture(const std::vector<ModelPrediction>& predictions, const std::string& path,
+                             render::RenderFormat format);
 
 }  // namespace dream::bridge

@@ -37,6 +37,9 @@ struct CalibrationReport {
   world::RealismParams params;   ///< the base preset with every determined key fitted
   std::vector<FittedKey> keys;  ///< one per key of RealismParams::Fields(), in that order
   std::vector<std::string> sources;
+  /// What the inputs needed (a time vector that is no clock, robots left
+  /// out) and what the data could not pin, in words, for the report.
+  std::vector<std::string> notes;
   int robots = 0;
   int64_t robot_steps = 0;
 

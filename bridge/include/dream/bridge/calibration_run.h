@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "dream/bridge/run_track.h"
 
@@ -15,6 +16,9 @@ struct CalibrationRun {
   /// track.utime is a real clock (a lab run's wall time, or a time vector);
   /// false when it is only the nominal step (then step timing cannot be fitted).
   bool timed = false;
+  /// What was taken differently from the file as it came (a time vector
+  /// that is not a clock), for the report.
+  std::vector<std::string> notes;
 };
 
 /// Where `dream calibrate` finds poses, commands and time in an array file.
@@ -32,6 +36,11 @@ struct CalibrationInputOptions {
 ///   commands sent, DREAM_APPLIED or DREAM_CMD_<id>);
 /// - a .npz (numpy.savez) or .mat file with the arrays named in `options`;
 /// - a .npy file holding one 5 x N x T array (x, y, theta, v, w).
+/// Arrays may be in C or Fortran order (as scipy.io.loadmat gives them), and
+/// of one robot also 3 x T (2 x T, 5 x T). A time vector that is not a
+/// clock (it does not increase, and its values are per-step times under a
+/// second, e.g. compute times of 1e-5 s) is ignored with a note, and the
+/// steps are the step period apart.
 /// Refuses, with the file, the array and what is wrong: shapes that
 /// disagree, NaN or infinite values, fewer than kMinSteps steps, time that
 /// does not increase. A clock whose steps average under half the nominal

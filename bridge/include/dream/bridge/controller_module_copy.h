@@ -16,8 +16,10 @@ namespace dream::bridge {
 /// @throws config::ConfigError when the module cannot be read.
 void KeepControllerModule(const run_config::RunConfig& config, const files::OutputFolder& out);
 
-/// The same for a realism file (`world.realism: {file: PATH}`) named by a
-/// relative path, so the run folder's config.yaml finds its lab model.
+/// The same for a realism file (`world.realism: {file: PATH}`), at
+/// run_config::RealismFileInRunFolder (a relative path as written, an
+/// absolute one under realism/), so the run folder's config.yaml (which
+/// RunFolderConfigText points at the copy) finds its lab model on its own.
 void KeepRealismFile(const run_config::RunConfig& config, const files::OutputFolder& out);
 
 }  // namespace dream::bridge

@@ -22,7 +22,13 @@ struct ModelPrediction {
   std::vector<StepResponseCurve> step_responses;  ///< the runs' starts from rest, real against this model
   double position_error_m = 0.0;  ///< RMS error of 1 s open-loop predictions from the real poses
   double heading_error_rad = 0.0;
+  /// 95 % interval of position_error_m over robots and their start points
+  /// (a bootstrap over the runs' robots: one robot's predictions are not
+  /// independent of each other).
+  double position_error_low_m = 0.0;
+  double position_error_high_m = 0.0;
   int predictions = 0;
+  int robots = 0;  ///< robots the predictions came from
 };
 
 /// Holds lab models against real runs: the effective delay and first motion
@@ -38,10 +44,15 @@ class LabModelCheck {
                                               const std::vector<NamedModel>& models,
                                               const files::StopToken& stop = {});
   /// The side-by-side table: per speed the real and each model's effective
-  /// delay and first motion; each model's prediction errors; and each key the
-  /// runs show (`real`, a fit of them) against each model's value.
+  /// delay and first motion; each model's prediction errors with their
+  /// intervals, and a ranking only where the intervals separate; the steady
+  /// turning seen against each model's; and each key the runs show (`real`,
+  /// a fit of them, or why it is not pinned) against each model's value.
   static std::string Table(const CalibrationReport& real, const std::vector<ModelPrediction>& predictions,
                            const std::vector<NamedModel>& models);
+  /// Which models predict better than which: "a < b" only where a's interval
+  /// lies wholly below b's; the others overlap and are not ranked.
+  static std::string Ranking(const std::vector<ModelPrediction>& predictions);
 };
 
 }  // namespace dream::bridge

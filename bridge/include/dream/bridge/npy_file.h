@@ -26,10 +26,11 @@ std::string EncodeNpy(const NpyArray& array);
 std::string EncodeNpyBytes(const std::string& bytes);
 
 /// Parses .npy bytes, strictly: magic, version 1.0/2.0/3.0, a header dict
-/// with exactly descr '<f8', fortran_order False and a shape tuple, and
-/// exactly product(shape) * 8 bytes of data after it. Values may be NaN/inf
-/// (callers decide). @throws std::runtime_error "<name>: <problem>" naming
-/// what is wrong (truncated, foreign dtype, Fortran order, ...).
+/// with exactly descr '<f8', fortran_order and a shape tuple, and exactly
+/// product(shape) * 8 bytes of data after it. A Fortran-order array (as
+/// scipy.io.loadmat gives them) is returned in C order, as numpy reads it.
+/// Values may be NaN/inf (callers decide). @throws std::runtime_error
+/// "<name>: <problem>" naming what is wrong (truncated, foreign dtype, ...).
 NpyArray DecodeNpy(const std::string& bytes, const std::string& name);
 
 /// DecodeNpy of the file at `path`; refuses files over `max_bytes` before

@@ -19,6 +19,9 @@ namespace dream::config_overrides {
 /// with a did-you-mean. `value_text` is parsed as YAML ("0.1", "thesis",
 /// "[0.5, 0]").
 ///
+/// `world.realism.file`'s value, a path, is taken from the current folder
+/// (made absolute here), as every command-line path is.
+///
 /// A value replaces the node in place, so a ConfigError about it still points
 /// at the key's line in `source_name`.
 /// @throws std::invalid_argument naming the key, the missing part and the keys

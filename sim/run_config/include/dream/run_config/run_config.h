@@ -57,9 +57,17 @@ world::RealismParams LoadRealismFile(const std::string& path);
 /// LoadRunConfig(ConfigNode::LoadFile(path)).
 RunConfig LoadRunConfigFile(const std::string& path);
 
+/// Where a run folder keeps its copy of the config's realism file (empty:
+/// none): a relative path as written (beside the folder's config.yaml, as
+/// beside the config), an absolute one (a file elsewhere, or given with
+/// --set) as realism/<its name>.
+std::string RealismFileInRunFolder(const RunConfig& config);
+
 /// The text to store as a run folder's config.yaml: `text` (the config's
 /// bytes) as is, or, when it names plugins by relative paths, with a
-/// `plugin_dir:` line appended so the copy finds the same plugins.
+/// `plugin_dir:` line appended so the copy finds the same plugins; and with
+/// an absolute realism file replaced by the folder's copy
+/// (RealismFileInRunFolder), so the folder reruns on its own.
 std::string RunFolderConfigText(const RunConfig& config, const std::string& text);
 
 }  // namespace dream::run_config
