@@ -1,6 +1,7 @@
 #pragma once
 
 #include "dream/barriers/single_integrator_barrier_params.h"
+#include "dream/config/config_node.h"
 #include "dream/barriers/unicycle_barrier_params.h"
 
 namespace dream::run_config {
@@ -28,6 +29,10 @@ struct BarrierConfig {
 
   /// The simulator (and the exported script) filter commands through `unicycle`.
   bool InWorld() const { return kind == Kind::kUnicycle && apply_in == ApplyIn::kWorld; }
+  /// The config's `barriers:` section (none: kind none). Each key's default is
+  /// rps's for the kind; a key the kind does not take is a mistake naming file, line and key.
+  /// @throws config::ConfigError.
+  static BarrierConfig Read(const config::ConfigNode& root);
   static const char* KindName(Kind kind);
   static const char* ApplyInName(ApplyIn apply_in);
 };
