@@ -301,3 +301,25 @@ class Udpm:
         self.send_socket.close()
         if self.recv_socket:
             self.recv_socket.close()
+
+
+def start_lcm_logger(ctx, name, captured):
+    """Starts lcm-logger (process `name`) recording LCM_DEFAULT_URL into `captured`, and returns
+    once it records: a probe message published until it shows up in the file. Its socket gets
+    4 MB, as dream's own receivers have, so a step's burst does not overflow it."""
+    url = os.environ["LCM_DEFAULT_URL"]
+    logger_url = url + ("&" if "?" in url else "?") + "recv_buf_size=4194304"
+    logger = ctx.start(name, ["lcm-logger", "--lcm-url=" + logger_url, "--flush-interval=10", "-f", captured])
+    bus = Udpm()
+    deadline = time.monotonic() + 10
+    while True:
+        bus.publish("PROBE_LOGGER_UP", b"probe")
+        time.sleep(0.05)
+        if os.path.exists(captured):
+            with open(captured, "rb") as f:
+                if b"PROBE_LOGGER_UP" in f.read():
+                    break
+        check(logger.poll() is None, f"lcm-logger exited ({logger.returncode}): {ctx.output(name).strip()}")
+        check(time.monotonic() < deadline, "lcm-logger did not record a probe message within 10 s")
+    bus.close()
+    return logger

@@ -21,30 +21,15 @@ import signal
 import sys
 import time
 
-from dreamtest import Udpm, arguments, check, main, require_private_netns
+from dreamtest import arguments, check, main, require_private_netns, start_lcm_logger
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
 import dream_log  # noqa: E402
 
 
 def start_logger(ctx, name):
-    url = os.environ["LCM_DEFAULT_URL"]
-    # 4 MB of socket buffer, as dream's own receivers have: a step's burst must not overflow it.
-    logger_url = url + ("&" if "?" in url else "?") + "recv_buf_size=4194304"
     captured = ctx.path(name + ".lcmlog")
-    logger = ctx.start(name, ["lcm-logger", "--lcm-url=" + logger_url, "--flush-interval=10", "-f", captured])
-    bus = Udpm()
-    deadline = time.monotonic() + 10
-    while True:  # recording once a probe shows up in its file
-        bus.publish("PROBE_LOGGER_UP", b"probe")
-        time.sleep(0.05)
-        if os.path.exists(captured):
-            with open(captured, "rb") as f:
-                if b"PROBE_LOGGER_UP" in f.read():
-                    break
-        check(logger.poll() is None, f"lcm-logger exited ({logger.returncode}): {ctx.output(name)}")
-        check(time.monotonic() < deadline, "lcm-logger did not record a probe message within 10 s")
-    bus.close()
+    start_lcm_logger(ctx, name, captured)
     return captured
 
 
@@ -54,7 +39,7 @@ def stop_logger(ctx, name):
     check(ctx.wait(name, timeout=10) == 0, f"lcm-logger exited badly: {ctx.output(name)}")
 
 
-def launch(ctx, args, name, steps, expect):
+def launch(ctx, args, name, steps):
     config = os.path.join(args.source, "config", "go_to_goal.yaml")
     run = ctx.path(name)
     ctx.start(name + "_launch", [args.dream, "launch", config, "--out", run, "--steps", str(steps), "--pace", "1"])
@@ -67,7 +52,7 @@ def test(ctx):
 
     # 1-3: the run alone on the bus.
     captured = start_logger(ctx, "logger")
-    run, _ = launch(ctx, args, "alone", 45, 0)
+    run, _ = launch(ctx, args, "alone", 45)
     code = ctx.wait("alone_launch", timeout=120)
     check(code == 0, f"dream launch exited {code}: {ctx.output('alone_launch')[-600:]}")
     stop_logger(ctx, "logger")
@@ -97,7 +82,7 @@ def test(ctx):
 
     # A second world on the bus: a dream sim waiting for agents that never come.
     captured = start_logger(ctx, "logger2")
-    run, config = launch(ctx, args, "beside", 90, 5)
+    run, config = launch(ctx, args, "beside", 90)
     ctx.wait_for_output("beside_launch", r"running \(lockstep", timeout=60)
     ctx.start("idle_sim", [args.dream, "sim", config, "--out", ctx.path("idle"), "--set",
                            "world.start_timeout_s=600"])

@@ -15,7 +15,7 @@ import os
 import signal
 import time
 
-from dreamtest import Udpm, argument_parser, check, main, read_all, require_private_netns
+from dreamtest import argument_parser, check, main, read_all, require_private_netns, start_lcm_logger
 
 
 def test(ctx):
@@ -25,9 +25,6 @@ def test(ctx):
     args = parser.parse_args()
     require_private_netns()
     url = os.environ["LCM_DEFAULT_URL"]
-    # The logger must not lose a burst while it waits for a CPU (ctest -j on 2 cores): give its
-    # socket 4 MB, as dream does (a small datagram costs ~1 KB of the default 208 KB buffer).
-    logger_url = url + ("&" if "?" in url else "?") + "recv_buf_size=4194304"
 
     if args.log:
         original = os.path.abspath(args.log)
@@ -38,19 +35,8 @@ def test(ctx):
         original = os.path.join(run, "run.lcmlog")
     captured = ctx.path("captured.lcmlog")
 
-    logger = ctx.start("logger", ["lcm-logger", "--lcm-url=" + logger_url, "--flush-interval=10", "-f", captured])
-    bus = Udpm()
-    deadline = time.monotonic() + 10
-    while True:
-        bus.publish("PROBE_LOGGER_UP", b"probe")
-        time.sleep(0.05)
-        if os.path.exists(captured):
-            with open(captured, "rb") as f:
-                if b"PROBE_LOGGER_UP" in f.read():
-                    break
-        check(logger.poll() is None, f"lcm-logger exited ({logger.returncode}): {ctx.output('logger').strip()}")
-        check(time.monotonic() < deadline, "lcm-logger did not record a probe message within 10 s")
-    bus.close()
+    # lcm-logger must not lose a burst while it waits for a CPU (ctest -j on 2 cores): it gets 4 MB.
+    logger = start_lcm_logger(ctx, "logger", captured)
 
     # Real time (1x), as a user replays: lcm-logger 1.3.1 keeps LCM's default 30-message
     # subscription queue and silently drops a step's burst of 11 messages when it misses a few ms
