@@ -117,7 +117,7 @@ SweepPlan SweepPlan::FromRuns(std::vector<std::string> parameter_keys, std::vect
   return plan;
 }
 
-YAML::Node SweepPlan::MakeRunConfig(const std::string& base_text, const std::string& source_name, const Run& run) {
+YAML::Node SweepPlan::ParseBase(const std::string& base_text, const std::string& source_name) {
   YAML::Node root;
   try {
     root = YAML::Load(base_text);
@@ -125,6 +125,22 @@ YAML::Node SweepPlan::MakeRunConfig(const std::string& base_text, const std::str
     throw std::invalid_argument(source_name + ":" + std::to_string(e.mark.line + 1) + ": not valid YAML: " + e.msg);
   }
   if (!root.IsMap()) throw std::invalid_argument(source_name + ": the config must be a YAML mapping of keys");
+  return root;
+}
+
+YAML::Node SweepPlan::MakeRunConfig(const std::string& base_text, const std::string& source_name, const Run& run) {
+  YAML::Node root = ParseBase(base_text, source_name);
+  ApplyRun(root, source_name, run);
+  return root;
+}
+
+YAML::Node SweepPlan::MakeRunConfig(const YAML::Node& parsed_base, const std::string& source_name, const Run& run) {
+  YAML::Node root = YAML::Clone(parsed_base);
+  ApplyRun(root, source_name, run);
+  return root;
+}
+
+void SweepPlan::ApplyRun(YAML::Node& root, const std::string& source_name, const Run& run) {
   config_overrides::ApplyConfigOverride(root, "seed", std::to_string(run.seed), source_name);
   for (const auto& [key, value] : run.parameters) config_overrides::ApplyConfigOverride(root, key, value, source_name);
   const YAML::Node& read_only = root;
@@ -146,7 +162,6 @@ YAML::Node SweepPlan::MakeRunConfig(const std::string& base_text, const std::str
   if (read_only["name"].IsScalar()) {
     config_overrides::ApplyConfigOverride(root, "name", read_only["name"].Scalar() + "_" + run.name, source_name);
   }
-  return root;
 }
 
 }  // namespace dream::workflows

@@ -20,7 +20,8 @@ class SweepPlan {
     size_t index = 0;  ///< position in the plan, 0-based
     std::string name;  ///< folder name under <out>/runs/, unique in the plan
     uint64_t seed = 0;
-    std::vector<std::pair<std::string, std::string>> parameters;  ///< (key, value) in --set order
+    using Values = std::vector<std::pair<std::string, std::string>>;
+    Values parameters;  ///< (key, value) in --set order
     /// "seed 7" or "seed 7, max_speed_mps=0.1" for progress lines.
     std::string Label() const;
   };
@@ -44,9 +45,17 @@ class SweepPlan {
   /// a key that cannot be set (see ApplyConfigOverride), or base text that is
   /// not a YAML mapping.
   static YAML::Node MakeRunConfig(const std::string& base_text, const std::string& source_name, const Run& run);
+  /// The same from the base config parsed once (ParseBase), for the many runs
+  /// of a sweep: a copy without the file's lines (YAML::Clone keeps none), so
+  /// an error found in it is best reported from MakeRunConfig(base_text, ...).
+  static YAML::Node MakeRunConfig(const YAML::Node& parsed_base, const std::string& source_name, const Run& run);
+  /// `base_text` parsed. @throws std::invalid_argument naming the line, or
+  /// when it is not a YAML mapping.
+  static YAML::Node ParseBase(const std::string& base_text, const std::string& source_name);
 
  private:
   SweepPlan() = default;
+  static void ApplyRun(YAML::Node& root, const std::string& source_name, const Run& run);
 
   std::vector<Run> runs_;
   std::vector<std::string> keys_;
