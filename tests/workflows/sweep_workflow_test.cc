@@ -27,7 +27,7 @@ using testing::SweepWorkflowTest;
 TEST_F(SweepWorkflowTest, LocalSweepWritesEveryRunItsExitRecordAndTheSameTableAsSweepTable) {
   const SweepOutcome outcome = Workflow().Start(settings_, Base());
   EXPECT_EQ(outcome.kind, SweepOutcome::Kind::kFinished);
-  EXPECT_TRUE(outcome.AllRan());
+  EXPECT_TRUE(outcome.AllRan()) << ReadText(out() / "sweep.csv");
   EXPECT_EQ(jobs_asked_, 2);  // one per core
   ASSERT_EQ(started_.size(), 4u);
   EXPECT_EQ(started_[0][0], "/opt/dream/bin/dream");
@@ -185,7 +185,8 @@ TEST_F(SweepWorkflowTest, SlurmRowsSayCancelledPendingAndRunningAndResumeWaitsTh
   const SweepPlan plan = folder.ReadPlan();
   // Run 0 finished on a node; run 1's task was cancelled while it ran; 2 pending, 3 running.
   folder.WriteRunExit(plan.runs()[0].name, {0, 2.5, false, ""});
-  std::ofstream(folder.RunDir(plan.runs()[0].name) + "/summary.json") << FinishedSummary(true, 30, 0.3).dump();
+  std::ofstream(folder.RunDir(plan.runs()[0].name) + "/summary.json")
+      << testing::AsDreamRunWrites(folder.RunDir(plan.runs()[0].name), FinishedSummary(true, 30, 0.3)).dump();
   std::ofstream(folder.Path("slurm/100_1.out")) << "slurmstepd: error: *** JOB 102 ON vm CANCELLED AT 2026-11-27T12:00:00 ***\n";
   slurm_.queue = "100_2|PENDING\n100_3|RUNNING\n";
 

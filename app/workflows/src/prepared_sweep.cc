@@ -82,12 +82,16 @@ PreparedSweep::PreparedSweep(const SweepSettings& settings, const run_config::Ru
   seed_count_ = seeds.size();
   std::vector<config_overrides::SweepParameter> parameters;
   for (const std::string& set : settings.sets) parameters.push_back(config_overrides::SweepParameter::Parse(set));
-  for (const config_overrides::SweepParameter& parameter : parameters) {
-    if (parameter.key == "steps" && settings.steps > 0) {
-      throw std::invalid_argument("--steps and --set steps=... both set the step limit; give one");
+  std::vector<config_overrides::SweepParameter> zipped;
+  for (const std::string& zip : settings.zips) zipped.push_back(config_overrides::SweepParameter::Parse(zip));
+  for (const auto* swept : {&parameters, &zipped}) {
+    for (const config_overrides::SweepParameter& parameter : *swept) {
+      if (parameter.key == "steps" && settings.steps > 0) {
+        throw std::invalid_argument("--steps and a swept steps=... both set the step limit; give one");
+      }
     }
   }
-  plan_ = SweepPlan(seeds, parameters);
+  plan_ = SweepPlan(seeds, parameters, zipped);
 
   RunConfigMaker maker{settings, base_text, SweepPlan::ParseBase(base_text, settings.config_path),
                        agent_host::ControllerRegistry::ForConfig(base), fs::path(out_dir), {}, {}, {}};
