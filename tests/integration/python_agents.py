@@ -110,6 +110,15 @@ def test(context, args):
     check(poses_by_step(os.path.join(circle_python, "run.lcmlog"), dream) ==
           poses_by_step(os.path.join(circle_cpp, "run.lcmlog"), dream),
           "the Python and C++ HRVO circle swaps differ")
+    # The twin declares the kind's goal (issue 37): the same verdict, step and formation figures.
+    cpp_circle = read_summary(circle_cpp)
+    for field in ("met", "completion_step", "detail"):
+        check(circle_summary["goal"].get(field) == cpp_circle["goal"].get(field),
+              f"goal {field}: Python circle {circle_summary['goal'].get(field)!r}, C++ {cpp_circle['goal'].get(field)!r}")
+    check(circle_summary["goal"].get("met") is True, f"the Python circle swap's goal: {circle_summary['goal']}")
+    for name in ("formations_completed", "formation_1_completed_step", "all_formations_completed_step"):
+        check(circle_summary["metrics"].get(name) == cpp_circle["metrics"].get(name),
+              f"{name}: Python {circle_summary['metrics'].get(name)}, C++ {cpp_circle['metrics'].get(name)}")
 
     # 2. Deterministic.
     again = context.path("again")
