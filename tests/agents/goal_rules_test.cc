@@ -37,11 +37,12 @@ TEST(GoalRules, GoToGoalIsMetWhenEveryRobotArrivedAtOnce) {
   const auto missed = Judge("go_to_goal", {{"all_arrived_step", -1}, {"final_max_goal_error_m", 0.2}});
   ASSERT_TRUE(missed);
   EXPECT_FALSE(missed->met);
-  EXPECT_EQ(missed->detail, "not all at their goals, worst 0.2 m (tolerance 0.02 m)");
+  // The goal's tolerance (goal_tolerance_m: 0.05), not where the robots stop (tolerance_m: 0.02).
+  EXPECT_EQ(missed->detail, "not all at their goals, worst 0.2 m on the logged poses (tolerance 0.05 m, compared unrounded)");
   // Missed by a hair: enough digits that the worst does not read as the tolerance.
-  const auto hair = Judge("go_to_goal", {{"all_arrived_step", -1}, {"final_max_goal_error_m", 0.0200082}});
+  const auto hair = Judge("go_to_goal", {{"all_arrived_step", -1}, {"final_max_goal_error_m", 0.0500082}});
   ASSERT_TRUE(hair);
-  EXPECT_EQ(hair->detail, "not all at their goals, worst 0.02001 m (tolerance 0.02 m)");
+  EXPECT_EQ(hair->detail, "not all at their goals, worst 0.05001 m on the logged poses (tolerance 0.05 m, compared unrounded)");
 }
 
 TEST(GoalRules, MetresApartPrintsTheDigitsThatTellAValueFromItsReference) {
