@@ -80,7 +80,8 @@ void DeclareRunCommand(CommandLine& line) {
                       "With --view: how long the page serves the finished run (a replay, same URL) after the\n"
                       "run: watched (until Ctrl-C if a browser is connected at the end, else not at all),\n"
                       "ctrl-c (until Ctrl-C), or a number of seconds (0: stop with the run)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->needs(view);
   command->add_option("--view-bind", args->view_bind,
                       "Address --view listens on; 127.0.0.1 (the default) is this machine only,\n"
                       "0.0.0.0 exposes the page to the network on purpose")
