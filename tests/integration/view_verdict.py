@@ -11,7 +11,9 @@ What the page is sent is read at the JSON level (the WebSocket's setup, /run.jso
   and by default (`--view-keep watched`) the page is served until Ctrl-C while a browser is there;
 - `--view-wait`: no step before a browser connects (the run folder holds no summary until then);
   Ctrl-C while waiting runs nothing (exit 130); `--view-wait-timeout` starts the run anyway;
-- bad `--view-keep`, and `--view-wait` without `--view`, are refused.
+- bad `--view-keep`, and `--view-wait` without `--view`, are refused;
+- `dream view RUN` of a summary.json that dream did not write (a verdict that is no text, metrics
+  that are no mapping, 5000 metrics): the counts' verdict with a warning, no metrics, 64 metrics.
 Every wait is on an event (a console line, a message, a process's exit), never on a time margin.
 
 Usage: view_verdict.py --dream BIN --source DIR
@@ -87,6 +89,41 @@ def run_to_replay(ctx, args, name, extra, expect):
     return summary
 
 
+def replay_setup(ctx, args, name, run_dir):
+    ctx.start(name, [args.dream, "view", run_dir, "--port", "0"])
+    socket = page_socket(ctx, name)
+    try:
+        return next_setup(socket, "replay")
+    finally:
+        socket.close()
+        ctx.stop(name)
+
+
+def damaged_summaries(ctx, args):
+    """A summary.json that is not what dream wrote: the replay shows the counts' verdict (a warning
+    naming the file), or at most 64 metrics of a summary listing thousands."""
+    with open(ctx.path("met", "summary.json")) as f:
+        summary = json.load(f)
+    for name, damage in (("verdict_not_text", {"verdict": 5}), ("metrics_not_object", {"metrics": [1, 2]}),
+                         ("many_metrics", {"metrics": {f"m{i}": i for i in range(5000)}})):
+        run_dir = ctx.path(name)
+        os.makedirs(run_dir)
+        for file in ("run.lcmlog", "config.yaml"):
+            os.link(ctx.path("met", file), os.path.join(run_dir, file))
+        with open(os.path.join(run_dir, "summary.json"), "w") as f:
+            json.dump({**summary, **damage}, f)
+        judged = replay_setup(ctx, args, "view_" + name, run_dir).get("judged")
+        if name == "verdict_not_text":
+            check(judged is None and "summary.json: not read" in ctx.output("view_" + name),
+                  f"a summary.json whose verdict is 5: judged {judged}: {ctx.output('view_' + name)[-300:]}")
+        elif name == "metrics_not_object":
+            check(judged is not None and judged["verdict"] == "clean" and judged["metrics"] == [],
+                  f"a summary.json whose metrics are a list: judged {judged}")
+        else:
+            check(judged is not None and len(judged["metrics"]) == 64,
+                  f"5000 metrics in summary.json: the page lists {len(judged['metrics']) if judged else None}")
+
+
 def test(ctx):
     args = arguments()
     os.chdir(args.source)
@@ -96,6 +133,7 @@ def test(ctx):
     check(missed["verdict"] == "not_ready" and not missed["goal"]["met"], f"60 steps: {missed['goal']}")
     met = run_to_replay(ctx, args, "met", [], 0)
     check(met["verdict"] == "clean" and met["goal"]["met"], f"the README's go_to_goal: {met['goal']}")
+    damaged_summaries(ctx, args)
 
     # --view-wait: nothing runs before a browser; the open page switches to the replay by itself.
     ctx.start("wait", [args.dream, "run", "config/go_to_goal.yaml", "--out", ctx.path("wait"), "--view",
