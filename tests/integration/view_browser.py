@@ -14,8 +14,11 @@ its violations, and the page's status line names the other run (other_world.png)
 lcm-logplayer: the run's log played on the bus (4x) is drawn live too, from its start again. Then
 the status line's "draw it instead": the other run is drawn from its next step.
 
-Embedded: `dream run --view --pace 4` of the same config: the page follows it to its last step
-(the end of a run on the process's own memq bus, which no handler reads, comes from its log).
+Embedded: `dream run --view --pace 4` of the same config: the page follows it to its end (the end
+of a run on the process's own memq bus, which no handler reads, comes from its log), where the same
+URL turns into the run's replay at its last step showing summary.json's verdict and goal (one
+judge, issue 33); the browser being there, the page is served until Ctrl-C, which leaves the run's
+exit code, and the page keeps the replay without retrying (issue 37 item 1).
 
 Replay: `dream view RUN` of that run; the page's timeline is driven as a user would (play, pause,
 step forward and back, scrub, speed) and must show the log's poses at the chosen step, and only
@@ -27,6 +30,7 @@ Usage: netns.sh view_browser.py --dream BIN --source DIR --types-dir DIR --artif
 import json
 import os
 import re
+import signal
 import time
 
 from devtools import Page, chromium_argv, devtools_port
@@ -76,6 +80,17 @@ def wait_for(page, what, predicate, timeout):
             return last
         time.sleep(0.05)
     fail(f"the page did not show {what} within {timeout} s; its state: {json.dumps(last)[:600]}")
+
+
+def wait_for_page(page, what, expression, predicate, timeout):
+    deadline = time.monotonic() + timeout
+    last = None
+    while time.monotonic() < deadline:
+        last = page.evaluate(expression)
+        if predicate(last):
+            return last
+        time.sleep(0.05)
+    fail(f"the page did not show {what} within {timeout} s: {json.dumps(last)[:300]}")
 
 
 def poses_by_step(dream, log_path):
@@ -265,18 +280,33 @@ def check_replay(ctx, args, page, run_dir, poses):
 
 
 def check_embedded(ctx, args, dream, page, config):
-    """dream run --view, followed to its finished last step."""
+    """dream run --view, followed to its end, where the page becomes the run's replay with summary.json's verdict."""
     embedded_dir = ctx.path("embedded")
     ctx.start("embedded", [args.dream, "run", config, "--out", embedded_dir, "--view", "--view-port", "0",
                            "--pace", "4"])
     ctx.wait_for_output("embedded", URL.pattern, 10)
     page.navigate(URL.search(ctx.output("embedded")).group(1))
-    ended = wait_for(page, "dream run --view to its end", lambda s: s["mode"] == "live" and s["step"] == STEPS and
-                     s.get("state") == "finished", 20)
-    ctx.wait("embedded", 10)
+    ended = wait_for(page, "dream run --view to its end, replayed", lambda s: s["mode"] == "replay" and
+                     s["step"] == STEPS and s.get("state") == "finished", 30)
+    ctx.wait_for_output("embedded", r"a browser is watching: serving until Ctrl-C", 10)
+    summary = read_summary(embedded_dir)
+    check(ended["verdict"] == summary["verdict"],
+          f"dream run --view ends the page on {ended['verdict']}, summary.json says {summary['verdict']}")
+    shown = wait_for_page(page, "summary.json's verdict and goal in the side panel",
+                          "[document.body.dataset.verdict, document.getElementById('goal').textContent]",
+                          lambda v: v[0] == summary["verdict"] and v[1] != "-", 5)
+    check(shown[1].startswith("met" if summary["goal"]["met"] else "missed") and
+          summary["goal"]["detail"] in shown[1], f"the page's goal line '{shown[1]}', summary.json's {summary['goal']}")
     embedded_poses = poses_by_step(dream, os.path.join(embedded_dir, "run.lcmlog"))
     check_robots(ended, embedded_poses, "dream run --view")
     check_marks(ended["violations"], embedded_poses, "dream run --view")
+    page.screenshot(os.path.join(args.artifacts, "run_view_end.png"))
+    ctx.procs["embedded"][0].send_signal(signal.SIGINT)
+    code = ctx.wait("embedded", 10)
+    check(code == 3, f"dream run --view of a rejected run: exit {code} after Ctrl-C ended its page (expected 3)")
+    wait_for_page(page, "the page keeping the replay after the server stopped",
+                  "document.getElementById('connection').textContent",
+                  lambda text: text.startswith("dream stopped serving"), 10)
 
 
 def test(ctx):

@@ -52,6 +52,9 @@ struct RunArgs {
   int view_port = 8077;         ///< --view-port
   std::string view_bind = "127.0.0.1";  ///< --view-bind
   int view_fps = 0;             ///< --view-fps: frames a second to the page at most; 0: 30, or 10 while the run is fast
+  bool view_wait = false;       ///< --view-wait: no step 0 before a browser has the page open
+  double view_wait_timeout_s = 0.0;  ///< --view-wait-timeout: start anyway after this long; 0: wait until Ctrl-C
+  std::string view_keep = "watched";  ///< --view-keep: how long the replay is served after the run (RunView::Keep)
 };
 
 struct AgentArgs {

@@ -128,6 +128,25 @@
       show("goal", judged.goal);
       $("verdict").title = judged.reasons.join("\n");
     }
+    showMetrics(judged ? judged.metrics || [] : []);
+  }
+
+  // The experiment's metrics as summary.json holds them, at a judged run's end.
+  function showMetrics(metrics) {
+    const block = $("metrics-block");
+    if (block.hidden !== (metrics.length === 0)) block.hidden = metrics.length === 0;
+    const key = metrics.map(([name, value]) => `${name}=${value}`).join(";");
+    if ($("metrics").dataset.shown === key) return;  // unchanged: no layout for the page
+    $("metrics").dataset.shown = key;
+    $("metrics").replaceChildren(...metrics.map(([name, value]) => {
+      const row = document.createElement("tr");
+      for (const text of [name, value]) {
+        const cell = document.createElement("td");
+        cell.textContent = text;
+        row.appendChild(cell);
+      }
+      return row;
+    }));
   }
 
   // A run id as logs and summary.json print it: 16 hex digits (the frame
@@ -341,7 +360,8 @@
     $("scrub").oninput = () => seek(Number($("scrub").value));
     $("speed").onchange = () => { view.replay.speed = Number($("speed").value); replayScene(view.replay.index); };
     resize();
-    seek(0);
+    // A run that was watched live and is over: the replay opens on its last step, where its verdict is.
+    seek(view.live ? run.steps.length - 1 : 0);
   }
 
   function advanceReplay(now) {
@@ -382,6 +402,11 @@
     socket.onclose = () => {
       view.connected = false;
       document.body.dataset.connected = "false";
+      if (view.replay) {
+        // The page holds the whole run: nothing to reconnect for.
+        $("connection").textContent = `dream stopped serving; the replay stays here (again: dream view ${view.setup.source})`;
+        return;
+      }
       $("connection").textContent = "disconnected: retrying";
       setTimeout(connect, 1000);
     };

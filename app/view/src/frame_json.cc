@@ -156,6 +156,11 @@ void AppendSetupFields(JsonWriter& json, const ViewSetup& setup) {
     for (const std::string& reason : setup.judged->reasons) json.String(reason);
     json.EndArray();
     json.Key("goal").String(setup.judged->goal);
+    json.Key("metrics").BeginArray();
+    for (const auto& [name, value] : setup.judged->metrics) {
+      json.BeginArray().String(name).String(value).EndArray();
+    }
+    json.EndArray();
     json.EndObject();
   }
 }
