@@ -136,6 +136,30 @@ def check_marks(marks, poses, where):
             fail(f"{where}: unexpected violation {m}")
 
 
+def check_episodes(page, shown, where):
+    """Issue 37: a violation held over steps is one episode in the page's list: each run of
+    consecutive steps of one (kind, robots) is one entry, listed as 'steps FIRST-LAST'."""
+    expected = []
+    for m in sorted(shown["violations"], key=lambda m: m["step"]):
+        key = (m["kind"], m["robot"], m["other"])
+        going = next((e for e in reversed(expected) if e["key"] == key), None)
+        if going and m["step"] <= going["last"] + 1:
+            going["last"] = max(going["last"], m["step"])
+        else:
+            expected.append({"key": key, "first": m["step"], "last": m["step"]})
+    got = [((e["kind"], e["robot"], e["other"]), e["first"], e["last"]) for e in shown["episodes"]]
+    check(sorted(got) == sorted((e["key"], e["first"], e["last"]) for e in expected),
+          f"{where}: the page's episodes {got} are not the marks' runs of steps {expected}")
+    check(len(got) < len(shown["violations"]), f"{where}: {len(got)} episodes for {len(shown['violations'])} marks: "
+                                               "no violation was held over steps")
+    items = page.evaluate("[...document.querySelectorAll('#violation-list li')].map((li) => li.textContent)")
+    check(len(items) == min(50, len(got)), f"{where}: {len(items)} lines listed for {len(got)} episodes")
+    held = [e for e in expected if e["last"] > e["first"]]
+    check(any(f"steps {e['first']}-{e['last']}" in line for e in held for line in items),
+          f"{where}: no line lists a held violation as 'steps FIRST-LAST': {items[:3]}")
+    print(f"{where}: {len(shown['violations'])} violation marks listed as {len(got)} episodes, e.g. {items[0]!r}")
+
+
 def watch_live(ctx, args, page, config, run_dir):
     ctx.start("launch", [args.dream, "launch", config, "--out", run_dir, "--pace", "3"])
     steps_seen, flash_shot = [], False
@@ -221,6 +245,7 @@ def check_live(ctx, args, dream, page, config, run_dir):
     final = wait_for(page, f"the run's last step ({STEPS})", lambda s: s["step"] == STEPS, 5)
     check_robots(final, poses, "live")
     check_marks(final["violations"], poses, "live")
+    check_episodes(page, final, "live")
     summary = read_summary(run_dir)["violations"]
     check(final["counts"]["boundary"] == summary["boundary_errors"] and
           final["counts"]["collision"] == summary["collision_errors"],
@@ -270,6 +295,7 @@ def check_replay(ctx, args, page, run_dir, poses):
     check_robots(scrubbed, poses, "replay at step 200")
     check_marks(scrubbed["violations"], poses, "replay at step 200")
     check(max(m["step"] for m in scrubbed["violations"]) <= 200, "the replay marks violations after its step")
+    check_episodes(page, scrubbed, "replay at step 200")
     outside = sum(1 for step, p in poses.items() if step <= 200 and any(abs(x) > ARENA_X for x in p.x))
     check(scrubbed["counts"]["boundary"] == outside,
           f"at step 200 the page counts {scrubbed['counts']['boundary']} boundary errors, the log {outside}")

@@ -183,16 +183,49 @@
     document.body.dataset.otherWorld = other ? other.run : "";
   }
 
+  // A violation held over many steps is one episode (kind, robots, first and last step), as
+  // summary.json's violations_located lists it: one line per episode, not per step.
+  function episodesOf(marks) {
+    const open = new Map();
+    const episodes = [];
+    for (const m of [...marks].sort((a, b) => a.step - b.step)) {
+      const key = `${m.kind}/${m.robot}/${m.other}`;
+      const going = open.get(key);
+      if (going && m.step <= going.last + 1) {
+        going.last = Math.max(going.last, m.step);
+        continue;
+      }
+      const episode = { kind: m.kind, robot: m.robot, other: m.other, first: m.step, last: m.step, x: m.x, y: m.y };
+      open.set(key, episode);
+      episodes.push(episode);
+    }
+    return episodes;
+  }
+
+  function describeEpisode(e) {
+    const steps = e.first === e.last ? `step ${e.first}` : `steps ${e.first}-${e.last}`;
+    return DreamArena.describe({ ...e, step: e.first }).replace(/step \d+$/, steps);
+  }
+
+  // The episodes of `marks`, worked out again only when the marks changed.
+  function episodesCached(marks) {
+    const last = marks[marks.length - 1];
+    const key = `${marks.length}/${last ? last.step : -1}`;
+    if (!view.episodeCache || view.episodeCache.key !== key) view.episodeCache = { key, episodes: episodesOf(marks) };
+    return view.episodeCache.episodes;
+  }
+
   function showViolationList(marks) {
     const list = $("violation-list");
     const last = marks[marks.length - 1];
     const key = `${marks.length}/${last ? last.step : -1}`;
     if (list.dataset.shown === key) return;  // unchanged: no work for the page's layout
     list.dataset.shown = key;
-    const latest = marks.slice(-50).reverse();
-    list.replaceChildren(...latest.map((m) => {
+    const episodes = episodesCached(marks);
+    const latest = episodes.slice().sort((a, b) => b.last - a.last || b.first - a.first).slice(0, 50);
+    list.replaceChildren(...latest.map((e) => {
       const item = document.createElement("li");
-      item.textContent = `${DreamArena.describe(m)} at (${m.x.toFixed(2)}, ${m.y.toFixed(2)})`;
+      item.textContent = `${describeEpisode(e)}, first at (${e.x.toFixed(2)}, ${e.y.toFixed(2)})`;
       return item;
     }));
   }
@@ -204,7 +237,7 @@
     view.state = {
       mode: view.setup ? view.setup.mode : null, connected: view.connected === true, run: view.run,
       step: s ? s.step : -1, t: s ? s.t : 0, frames: view.frames, robots, counts: view.counts,
-      verdict: shownVerdict(view.counts), violations: marks,
+      verdict: shownVerdict(view.counts), violations: marks, episodes: episodesCached(marks),
       flashing: s && s.marks ? s.marks.filter((m) => m.flash > 0).length : 0,
       links: s && s.links ? s.links.length : 0, measured: !!(s && s.mx), otherWorld: null, ...extra,
     };
