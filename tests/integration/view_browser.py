@@ -128,6 +128,8 @@ def check_marks(marks, poses, where):
             check(m["robot"] == 0 and truth.x[0] > ARENA_X, f"{where}: boundary mark {m} but robot 0 is at "
                                                              f"x={truth.x[0]:.3f} at that step")
             check(abs(m["x"] - truth.x[0]) < 1e-4, f"{where}: boundary mark {m} is not where robot 0 was")
+            check(abs(m["worst"] - (truth.x[0] - ARENA_X)) < 1e-4,
+                  f"{where}: boundary mark {m}: robot 0 was {truth.x[0] - ARENA_X:.4f} m outside")
         elif m["kind"] == "collision":
             check((m["robot"], m["other"]) == (1, 2), f"{where}: collision mark {m}: expected robots 1 and 2")
             check(abs(m["x"] - (truth.x[1] + truth.x[2]) / 2) < 1e-4, f"{where}: collision mark {m} is not "
@@ -142,20 +144,22 @@ def check_episodes(page, shown, where):
     expected = []
     for m in sorted(shown["violations"], key=lambda m: m["step"]):
         key = (m["kind"], m["robot"], m["other"])
+        check(isinstance(m.get("worst"), (int, float)), f"{where}: mark {m} has no worst value")
         going = next((e for e in reversed(expected) if e["key"] == key), None)
         if going and m["step"] <= going["last"] + 1:
             going["last"] = max(going["last"], m["step"])
+            going["worst"] = (min if m["kind"] == "collision" else max)(going["worst"], m["worst"])
         else:
-            expected.append({"key": key, "first": m["step"], "last": m["step"]})
-    got = [((e["kind"], e["robot"], e["other"]), e["first"], e["last"]) for e in shown["episodes"]]
-    check(sorted(got) == sorted((e["key"], e["first"], e["last"]) for e in expected),
+            expected.append({"key": key, "first": m["step"], "last": m["step"], "worst": m["worst"]})
+    got = [((e["kind"], e["robot"], e["other"]), e["first"], e["last"], e["worst"]) for e in shown["episodes"]]
+    check(sorted(got) == sorted((e["key"], e["first"], e["last"], e["worst"]) for e in expected),
           f"{where}: the page's episodes {got} are not the marks' runs of steps {expected}")
     check(len(got) < len(shown["violations"]), f"{where}: {len(got)} episodes for {len(shown['violations'])} marks: "
                                                "no violation was held over steps")
     items = page.evaluate("[...document.querySelectorAll('#violation-list li')].map((li) => li.textContent)")
     check(len(items) == min(50, len(got)), f"{where}: {len(items)} lines listed for {len(got)} episodes")
     held = [e for e in expected if e["last"] > e["first"]]
-    check(any(f"steps {e['first']}-{e['last']}" in line for e in held for line in items),
+    check(any(f"steps {e['first']}-{e['last']}" in line and "at worst" in line for e in held for line in items),
           f"{where}: no line lists a held violation as 'steps FIRST-LAST': {items[:3]}")
     print(f"{where}: {len(shown['violations'])} violation marks listed as {len(got)} episodes, e.g. {items[0]!r}")
 

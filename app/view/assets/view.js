@@ -193,18 +193,31 @@
       const going = open.get(key);
       if (going && m.step <= going.last + 1) {
         going.last = Math.max(going.last, m.step);
+        if (worse(m.kind, m.worst, going.worst)) going.worst = m.worst;
         continue;
       }
-      const episode = { kind: m.kind, robot: m.robot, other: m.other, first: m.step, last: m.step, x: m.x, y: m.y };
+      const episode = { kind: m.kind, robot: m.robot, other: m.other, first: m.step, last: m.step, x: m.x, y: m.y,
+                        worst: m.worst };
       open.set(key, episode);
       episodes.push(episode);
     }
     return episodes;
   }
 
+  // The worst of an episode: the farthest outside or deepest overlap, the closest pair.
+  function worse(kind, value, worst) {
+    if (typeof value !== "number") return false;
+    if (typeof worst !== "number") return true;
+    return kind === "collision" ? value < worst : value > worst;
+  }
+
   function describeEpisode(e) {
     const steps = e.first === e.last ? `step ${e.first}` : `steps ${e.first}-${e.last}`;
-    return DreamArena.describe({ ...e, step: e.first }).replace(/step \d+$/, steps);
+    const worst = typeof e.worst !== "number" ? ""
+      : e.kind === "collision" ? `, closest ${(e.worst * 100).toFixed(1)} cm`
+        : e.kind === "obstacle" ? `, ${(e.worst * 100).toFixed(1)} cm in at worst`
+          : `, ${(e.worst * 100).toFixed(1)} cm out at worst`;
+    return DreamArena.describe({ ...e, step: e.first }).replace(/step \d+$/, steps) + worst;
   }
 
   // The episodes of `marks`, worked out again only when the marks changed.
@@ -233,7 +246,8 @@
   function publishState(extra) {
     const s = view.scene;
     const robots = s ? s.x.map((x, id) => ({ id, x, y: s.y[id], theta: s.th[id] })) : [];
-    const marks = [...view.marks.values()].map(({ kind, step, robot, other, x, y }) => ({ kind, step, robot, other, x, y }));
+    const marks = [...view.marks.values()].map(({ kind, step, robot, other, x, y, worst }) =>
+      ({ kind, step, robot, other, x, y, worst }));
     view.state = {
       mode: view.setup ? view.setup.mode : null, connected: view.connected === true, run: view.run,
       step: s ? s.step : -1, t: s ? s.t : 0, frames: view.frames, robots, counts: view.counts,

@@ -1,5 +1,6 @@
 #include "dream/view/frame_json.h"
 
+#include <cmath>
 #include <string_view>
 
 #include "dream/robotarium/robotarium_constants.h"
@@ -64,6 +65,7 @@ void AppendViolation(JsonWriter& json, const ViolationMark& mark) {
   json.Key("other").Integer(mark.other);
   json.Key("x").Number(mark.x_m, kMetres);
   json.Key("y").Number(mark.y_m, kMetres);
+  if (std::isfinite(mark.worst_m)) json.Key("worst").Number(mark.worst_m, kMetres);
   json.EndObject();
 }
 
