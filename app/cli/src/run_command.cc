@@ -18,6 +18,7 @@ namespace dream::cli {
 int RunEmbedded(const RunArgs& args) {
   const std::unique_ptr<session::RunSession> run = OpenRunSession(args);
   const run_config::RunConfig& config = run->config();
+  CheckStartupDrive(config);
   // One process: the world and every agent share one bus, memq:// unless the
   // user asks for a real transport.
   lcm::LcmBus bus(args.lcm_url.empty() ? "memq://" : lcm::ResolveLcmUrl(args.lcm_url));
@@ -35,6 +36,7 @@ int RunEmbedded(const RunArgs& args) {
 
 int RunSimOnly(const RunArgs& args) {
   const std::unique_ptr<session::RunSession> run = OpenRunSession(args);
+  CheckStartupDrive(run->config());
   lcm::LcmBus bus(lcm::ResolveLcmUrl(args.lcm_url));
   const std::string out_dir = PrepareOutputDir(args, run->config());
   return session::ExitCodeOf(run->Run(bus, {out_dir, ConfigTextForRunFolder(args, run->config())}));

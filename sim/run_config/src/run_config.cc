@@ -10,6 +10,7 @@
 #include "dream/world/printf_text.h"
 #include "dream/robotarium/robotarium_constants.h"
 #include "dream/world/start_pose_obstacle_check.h"
+#include "dream/world/startup_drive_trials.h"
 
 namespace dream::run_config {
 
@@ -49,7 +50,7 @@ config::SimNodeOptions ReadSimOptions(const config::ConfigNode& root) {
   const config::ConfigNode world = root.Optional("world");
   if (world.IsDefined()) {
     world.RejectUnknownKeys({"mode", "agent_timeout_s", "start_timeout_s", "resend_interval_s", "max_abs_v_mps",
-                             "max_abs_w_radps", "realism"});
+                             "max_abs_w_radps", "realism", "start"});
     if (world.Has("mode")) {
       const config::ConfigNode mode = world.Required("mode");
       try {
@@ -77,6 +78,14 @@ config::SimNodeOptions ReadSimOptions(const config::ConfigNode& root) {
   std::string error;
   if (!options.IsValid(&error)) root.Fail(error);  // unreachable when the checks above hold
   return options;
+}
+
+// `world.start: exact | placed` (docs/experiments.md#the-start-up-drive).
+WorldStart ReadWorldStart(const config::ConfigNode& root) {
+  const config::ConfigNode world = root.Optional("world");
+  if (!world.IsDefined()) return WorldStart::kExact;
+  return world.GetChoice<WorldStart>("start", "exact", "world start",
+                                     {{"exact", WorldStart::kExact}, {"placed", WorldStart::kPlaced}});
 }
 
 world::RealismParams RealismPreset(const config::ConfigNode& name) {
@@ -170,17 +179,36 @@ world::RealismParams ReadRealism(const config::ConfigNode& root, RunConfig* conf
   return ReadRealismKeys(node, base);
 }
 
+// `generate: {lab_safe: true}`: the spacing rps's generate_random_poses gives
+// the official simulator's own random start poses.
+constexpr double kLabSafeSpacingM = 0.5;
+
+// Lab-safe poses must survive the start-up drive from every tried placement.
+void CheckLabSafe(const config::ConfigNode& generate, const std::vector<world::Pose2>& poses, const RunConfig& config,
+                  double spacing_m) {
+  const world::StartupDriveTrials trials = world::StartupDriveTrials::Try(config.world, poses, config.seed);
+  if (trials.AllSettled()) return;
+  generate.Required("lab_safe")
+      .Fail("the start poses generated " + Format(spacing_m) + " m apart (min_spacing_m) are not lab-safe: " +
+            trials.Describe() + "; raise min_spacing_m, try another seed or use fewer robots");
+}
+
 // `initial_poses` absent or `{generate: {...}}`: poses drawn clear of the
-// walls, of each other and of the obstacles.
+// walls, of each other and of the obstacles; with `lab_safe: true` spaced as
+// the official simulator spaces random start poses and driven by the
+// start-up drive.
 std::vector<world::Pose2> GenerateInitialPoses(const config::ConfigNode& node, const RunConfig& config) {
   world::InitialPoseParams params;
   config::ConfigNode where = node;  // the key a failure names
+  bool lab_safe = false;
   if (node.IsDefined()) {
     node.RejectUnknownKeys({"generate"});
     const config::ConfigNode generate = node.Required("generate");
     where = generate;
     if (generate.IsMap()) {
-      generate.RejectUnknownKeys({"min_spacing_m", "wall_margin_m"});
+      generate.RejectUnknownKeys({"min_spacing_m", "wall_margin_m", "lab_safe"});
+      lab_safe = generate.GetBool("lab_safe", false);
+      if (lab_safe) params.min_spacing_m = kLabSafeSpacingM;
       params.min_spacing_m = generate.GetDouble("min_spacing_m", params.min_spacing_m);
       params.wall_margin_m = generate.GetDouble("wall_margin_m", params.wall_margin_m);
       if (params.wall_margin_m < kStartWallClearanceM) {
@@ -191,13 +219,15 @@ std::vector<world::Pose2> GenerateInitialPoses(const config::ConfigNode& node, c
       }
     }
   }
+  std::vector<world::Pose2> poses;
   try {
-    return world::InitialPoseGenerator(config.world, params, config.obstacles)
-        .Generate(config.num_robots, config.seed);
+    poses = world::InitialPoseGenerator(config.world, params, config.obstacles).Generate(config.num_robots, config.seed);
   } catch (const std::invalid_argument& e) {
     where.Fail(std::string("cannot generate initial poses: ") + e.what() +
                "; or list one [x, y, theta] per robot under initial_poses");
   }
+  if (lab_safe) CheckLabSafe(where, poses, config, params.min_spacing_m);
+  return poses;
 }
 
 // A listed start pose the lab would refuse: outside the arena, against a wall,
@@ -331,6 +361,7 @@ RunConfig LoadRunConfig(const config::ConfigNode& root) {
   // What agents read too, from the one place that checks it.
   static_cast<config::ControllerConfig&>(config) = config::LoadControllerConfig(root);
   config.sim = ReadSimOptions(root);
+  config.start = ReadWorldStart(root);
   config.realism = ReadRealism(root, &config);
   config.obstacles = ReadObstacles(root);
   config.initial_poses = ReadInitialPoses(root, config);
