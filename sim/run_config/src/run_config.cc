@@ -189,7 +189,7 @@ void CheckLabSafe(const config::ConfigNode& generate, const std::vector<world::P
   const world::StartupDriveTrials trials = world::StartupDriveTrials::Try(config.world, poses, config.seed);
   if (trials.AllSettled()) return;
   generate.Required("lab_safe")
-      .Fail("the start poses generated " + Format(spacing_m) + " m apart (min_spacing_m) are not lab-safe: " +
+      .Fail("the start poses generated at least " + Format(spacing_m) + " m apart (min_spacing_m) are not lab-safe: " +
             trials.Describe() + "; raise min_spacing_m, try another seed or use fewer robots");
 }
 
