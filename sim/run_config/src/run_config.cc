@@ -80,7 +80,7 @@ config::SimNodeOptions ReadSimOptions(const config::ConfigNode& root) {
   return options;
 }
 
-// `world.start: exact | placed` (docs/experiments.md#the-start-up-drive).
+// `world.start: exact | placed` (config/README.md#the-start-up-drive-worldstart-and-lab_safe).
 WorldStart ReadWorldStart(const config::ConfigNode& root) {
   const config::ConfigNode world = root.Optional("world");
   if (!world.IsDefined()) return WorldStart::kExact;

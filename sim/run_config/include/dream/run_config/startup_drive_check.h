@@ -10,7 +10,7 @@ namespace dream::run_config {
 /// What the Robotarium's start-up drive makes of a run's start poses, tried
 /// from world::StartupDriveTrials::kPlacements random charger placements
 /// seeded by the run's seed: what `dream run`, `sim`, `launch`, `sweep` and
-/// `export` ask before step 0 (docs/experiments.md#the-start-up-drive).
+/// `export` ask before step 0 (config/README.md#the-start-up-drive-worldstart-and-lab_safe).
 class StartupDriveCheck {
  public:
   /// Drives `config`'s start poses; a `sim_only` run (which the lab never
