@@ -87,6 +87,50 @@ Pose2 Waypoint(const Pose2& from, const Arena& arena, std::mt19937_64& rng) {
   return waypoint;
 }
 
+// rps initialize()'s deadlock rule, per robot: one that moved less than 0.1 m
+// in 150 steps while its command was not small is sent to a random waypoint
+// within 0.25 m (a new one every 150 steps) until it has moved 0.1 m.
+class DeadlockBreaker {
+ public:
+  DeadlockBreaker(const std::vector<Pose2>& start, const Arena& arena, uint64_t seed)
+      : timers_(start.size(), 0), last_still_(start), waypointing_(start.size(), 0), waypoints_(start.size()),
+        arena_(arena), rng_(seed) {}
+
+  // Robot i at `pose` heading for `goal` at the drive's iteration; may replace its command.
+  void Steer(std::size_t i, const Pose2& pose, const Pose2& goal, int iteration, HybridPoseController* controller,
+             UnicycleCommand* command) {
+    const double moved_m = PlanarDistance(last_still_[i], pose);
+    if (waypointing_[i]) {
+      *command = controller->ApplyOne(pose, waypoints_[i]);
+      if (moved_m > kDeadlockEpsilonM) {
+        waypointing_[i] = 0;
+      } else if (iteration - timers_[i] > kDeadlockSteps) {
+        waypoints_[i] = Waypoint(pose, arena_, rng_);
+        timers_[i] = iteration;
+      }
+    } else if (iteration - timers_[i] > kDeadlockSteps && moved_m < kDeadlockEpsilonM) {
+      waypointing_[i] = 1;
+      waypoints_[i] = Waypoint(pose, arena_, rng_);
+      timers_[i] = iteration;
+    } else if (moved_m > kDeadlockEpsilonM || Small(controller->ApplyOne(pose, goal))) {
+      timers_[i] = iteration;
+      last_still_[i] = pose;
+    }
+  }
+
+ private:
+  static bool Small(const UnicycleCommand& command) {
+    return std::sqrt(command.v_mps * command.v_mps + command.w_radps * command.w_radps) <= kStillCommand;
+  }
+
+  std::vector<int> timers_;
+  std::vector<Pose2> last_still_;
+  std::vector<char> waypointing_;
+  std::vector<Pose2> waypoints_;
+  Arena arena_;
+  std::mt19937_64 rng_;
+};
+
 std::vector<StartupDriveResult::Miss> MissesOf(const std::vector<Pose2>& poses, const std::vector<Pose2>& goals) {
   std::vector<StartupDriveResult::Miss> misses;
   for (std::size_t i = 0; i < poses.size(); ++i) {
@@ -176,17 +220,12 @@ StartupDriveResult StartupDrive::RunFrom(const std::vector<Pose2>& charger_poses
   UnicycleWorld world(params, charger_poses);
   barriers::UnicycleBarrier barrier(barriers::UnicycleBarrierParams::Rps());
   HybridPoseController controller;
-  std::mt19937_64 rng(seed);
 
-  std::vector<int> timers(n, 0);
-  std::vector<Pose2> last_deadlock_poses = charger_poses;
-  std::vector<char> waypointing(n, 0);
-  std::vector<Pose2> waypoints(n);
+  DeadlockBreaker deadlock(charger_poses, params.arena, seed);
   std::vector<char> at_pose(n, 0);
   std::vector<UnicycleCommand> commands;
   Eigen::Matrix2Xd wanted(2, static_cast<Eigen::Index>(n));
   Eigen::Matrix3Xd pose_matrix(3, static_cast<Eigen::Index>(n));
-  const Arena& arena = params.arena;
 
   // rps: x = get_poses(); step() with no velocity set; then the loop tests the
   // poses read before each step.
@@ -206,27 +245,7 @@ StartupDriveResult StartupDrive::RunFrom(const std::vector<Pose2>& charger_poses
     for (std::size_t i = 0; i < n; ++i) at_pose[i] = AtPose(x[i], start_poses_[i]);
     const DeadlockWatch watch = DeadlockWatchOf(at_pose);
     for (std::size_t i = 0; i < n; ++i) {
-      if (!Watched(static_cast<int>(i), watch)) continue;
-      const double moved_m = PlanarDistance(last_deadlock_poses[i], x[i]);
-      if (waypointing[i]) {
-        commands[i] = controller.ApplyOne(x[i], waypoints[i]);
-        if (moved_m > kDeadlockEpsilonM) {
-          waypointing[i] = 0;
-        } else if (step - timers[i] > kDeadlockSteps) {
-          waypoints[i] = Waypoint(x[i], arena, rng);
-          timers[i] = step;
-        }
-      } else if (step - timers[i] > kDeadlockSteps && moved_m < kDeadlockEpsilonM) {
-        waypointing[i] = 1;
-        waypoints[i] = Waypoint(x[i], arena, rng);
-        timers[i] = step;
-      } else if (moved_m > kDeadlockEpsilonM || [&] {
-                   const UnicycleCommand towards = controller.ApplyOne(x[i], start_poses_[i]);
-                   return std::sqrt(towards.v_mps * towards.v_mps + towards.w_radps * towards.w_radps) <= kStillCommand;
-                 }()) {
-        timers[i] = step;
-        last_deadlock_poses[i] = x[i];
-      }
+      if (Watched(static_cast<int>(i), watch)) deadlock.Steer(i, x[i], start_poses_[i], step, &controller, &commands[i]);
     }
     ++step;
     for (std::size_t i = 0; i < n; ++i) {
