@@ -44,9 +44,7 @@ std::unique_ptr<session::RunSession> OpenRunSession(const RunArgs& args) {
 
 void CheckStartupDrive(const run_config::RunConfig& config) {
   const run_config::StartupDriveCheck check = run_config::StartupDriveCheck::Of(config);
-  if (check.Refuses()) {
-    throw config::ConfigError(check.Message() + "; world.start: placed runs that drive first, so this run cannot start");
-  }
+  if (const std::string refusal = check.Refusal(); !refusal.empty()) throw config::ConfigError(refusal);
   if (!check.AllSettled()) spdlog::warn("{}", check.Message());
 }
 

@@ -131,16 +131,14 @@ PreparedSweep::PreparedSweep(const SweepSettings& settings, const run_config::Ru
 void PreparedSweep::CheckStartupDrive(const run_config::RunConfig& config, const std::string& where,
                                       std::set<std::string>* driven) {
   // Once per distinct start poses (and start mode): runs that differ only in a controller key start alike.
-  std::string key = std::to_string(static_cast<int>(config.start)) + (config.sim_only ? "s" : "l");
+  std::string key = std::to_string(static_cast<int>(config.start)) + (config.sim_only ? "s" : "l") +
+                    std::to_string(config.lab_safe_spacing_m);
   for (const world::Pose2& pose : config.initial_poses) {
     key += world::PrintfText(" %.17g %.17g %.17g", pose.x_m, pose.y_m, pose.theta_rad);
   }
   if (!driven->insert(key).second) return;
   const run_config::StartupDriveCheck check = run_config::StartupDriveCheck::Of(config);
-  if (check.Refuses()) {
-    throw config::ConfigError(where + check.Message() + "; world.start: placed runs that drive first, so this run "
-                              "cannot start");
-  }
+  if (const std::string refusal = check.Refusal(); !refusal.empty()) throw config::ConfigError(where + refusal);
   if (!check.AllSettled()) startup_warnings_.push_back(where + check.Message());
 }
 

@@ -10,7 +10,6 @@
 #include "dream/world/printf_text.h"
 #include "dream/robotarium/robotarium_constants.h"
 #include "dream/world/start_pose_obstacle_check.h"
-#include "dream/world/startup_drive_trials.h"
 
 namespace dream::run_config {
 
@@ -183,21 +182,13 @@ world::RealismParams ReadRealism(const config::ConfigNode& root, RunConfig* conf
 // the official simulator's own random start poses.
 constexpr double kLabSafeSpacingM = 0.5;
 
-// Lab-safe poses must survive the start-up drive from every tried placement.
-void CheckLabSafe(const config::ConfigNode& generate, const std::vector<world::Pose2>& poses, const RunConfig& config,
-                  double spacing_m) {
-  const world::StartupDriveTrials trials = world::StartupDriveTrials::Try(config.world, poses, config.seed);
-  if (trials.AllSettled()) return;
-  generate.Required("lab_safe")
-      .Fail("the start poses generated at least " + Format(spacing_m) + " m apart (min_spacing_m) are not lab-safe: " +
-            trials.Describe() + "; raise min_spacing_m, try another seed or use fewer robots");
-}
-
 // `initial_poses` absent or `{generate: {...}}`: poses drawn clear of the
 // walls, of each other and of the obstacles; with `lab_safe: true` spaced as
-// the official simulator spaces random start poses and driven by the
-// start-up drive.
-std::vector<world::Pose2> GenerateInitialPoses(const config::ConfigNode& node, const RunConfig& config) {
+// the official simulator spaces random start poses (StartupDriveCheck refuses
+// them when the start-up drive does not settle: when a command runs, not at
+// every load of the config).
+std::vector<world::Pose2> GenerateInitialPoses(const config::ConfigNode& node, RunConfig* config_out) {
+  const RunConfig& config = *config_out;
   world::InitialPoseParams params;
   config::ConfigNode where = node;  // the key a failure names
   bool lab_safe = false;
@@ -226,7 +217,7 @@ std::vector<world::Pose2> GenerateInitialPoses(const config::ConfigNode& node, c
     where.Fail(std::string("cannot generate initial poses: ") + e.what() +
                "; or list one [x, y, theta] per robot under initial_poses");
   }
-  if (lab_safe) CheckLabSafe(where, poses, config, params.min_spacing_m);
+  if (lab_safe) config_out->lab_safe_spacing_m = params.min_spacing_m;
   return poses;
 }
 
@@ -285,9 +276,10 @@ void CheckStartsApart(const config::ConfigNode& node, const std::vector<world::P
 
 // Needs config.obstacles: generated poses avoid them and listed poses may not
 // start inside one (either would be an obstacle collision at step 0).
-std::vector<world::Pose2> ReadInitialPoses(const config::ConfigNode& root, const RunConfig& config) {
+std::vector<world::Pose2> ReadInitialPoses(const config::ConfigNode& root, RunConfig* config_out) {
+  const RunConfig& config = *config_out;
   const config::ConfigNode node = root.Optional("initial_poses");
-  if (!node.IsDefined() || node.IsMap()) return GenerateInitialPoses(node, config);
+  if (!node.IsDefined() || node.IsMap()) return GenerateInitialPoses(node, config_out);
   if (!node.IsSequence() || node.size() != static_cast<size_t>(config.num_robots)) {
     node.Fail("expected one [x, y, theta] per robot (" + std::to_string(config.num_robots) + "), got " +
               (node.IsSequence() ? std::to_string(node.size()) : std::string("no list")) +
@@ -364,7 +356,7 @@ RunConfig LoadRunConfig(const config::ConfigNode& root) {
   config.start = ReadWorldStart(root);
   config.realism = ReadRealism(root, &config);
   config.obstacles = ReadObstacles(root);
-  config.initial_poses = ReadInitialPoses(root, config);
+  config.initial_poses = ReadInitialPoses(root, &config);
   config.barriers = BarrierConfig::Read(root);
   return config;
 }

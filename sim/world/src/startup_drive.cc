@@ -201,7 +201,9 @@ StartupDriveResult StartupDrive::Run(uint64_t seed, const StepObserver& observer
     return refused;
   }
   // The waypoints from a stream of their own, so a placement is the same whatever the drive draws.
-  return RunFrom(PlaceOnChargers(world_, n, seed), seed ^ 0x9e3779b97f4a7c15ULL, observer);
+  StartupDriveResult result = RunFrom(PlaceOnChargers(world_, n, seed), seed ^ 0x9e3779b97f4a7c15ULL, observer);
+  result.seed = seed;
+  return result;
 }
 
 StartupDriveResult StartupDrive::RunFrom(const std::vector<Pose2>& charger_poses, uint64_t seed,

@@ -43,6 +43,9 @@ struct RunConfig : config::ControllerConfig {
   std::string realism_file_as_written;
   std::string realism_file;
   std::vector<world::Pose2> initial_poses;
+  /// `initial_poses: {generate: {lab_safe: true}}`: their spacing (0: not lab-safe
+  /// poses); StartupDriveCheck refuses them when the start-up drive does not settle.
+  double lab_safe_spacing_m = 0.0;
   std::vector<world::RectangleObstacleSpec> obstacles;
   /// `barriers:`: the Robotarium's barrier certificate, if any, and where it is applied.
   BarrierConfig barriers;

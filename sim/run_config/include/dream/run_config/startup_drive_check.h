@@ -21,9 +21,10 @@ class StartupDriveCheck {
   bool applies() const { return applies_; }
   /// Every placement settled (true when nothing was tried).
   bool AllSettled() const { return !applies_ || trials_.AllSettled(); }
-  /// The run cannot start: `world.start: placed` and its own drive (placement
-  /// 0) did not settle, or more robots than charger slots with `placed`.
-  bool Refuses() const;
+  /// Why the run may not start ("" when it may): `world.start: placed` and its
+  /// own drive (placement 0) did not settle, or `lab_safe` start poses that
+  /// some placement did not settle.
+  std::string Refusal() const;
   /// "<name>: the Robotarium's start-up drive settled from 3 of 5 ...; ..."
   /// with what to do; empty when every placement settled.
   std::string Message() const;
@@ -32,6 +33,7 @@ class StartupDriveCheck {
  private:
   std::string name_;
   WorldStart start_ = WorldStart::kExact;
+  double lab_safe_spacing_m_ = 0.0;
   bool applies_ = false;
   world::StartupDriveTrials trials_;
 };

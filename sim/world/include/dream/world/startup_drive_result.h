@@ -22,7 +22,7 @@ struct StartupDriveResult {
   // Simulator steps taken, the official drive's first (still) step included:
   // what check-submission's step limit counts.
   int steps = 0;
-  // The placement's seed.
+  // The seed Run() drew the placement from (RunFrom: the one it drew waypoints from).
   uint64_t seed = 0;
   // Where the robots came off their chargers, and where the drive left them
   // (the experiment's step 0 when it settled).
