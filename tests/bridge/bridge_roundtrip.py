@@ -291,7 +291,11 @@ def once(loop):
     for name in ("comparison.json", "comparison.png"):
         check(os.path.isfile(loop.path("compare", name)), "compare wrote no " + name)
     # The agents run unchanged against the lab's poses, through the command.
-    output, _ = run([dream, "lab-replay", check_dir, "--out", loop.path("replay"), "-q"])
+    # Exit 0, or 5 when the lab run missed go_to_goal's goal: since the stand-in runs the official
+    # start-up drive, its lab run starts as the official one does, up to 5 mm off, and can end
+    # 0.0200082 m from a goal judged at 0.02 m (docs/robotarium.md#measured), as import judges it too.
+    code, output, _ = run_with_code([dream, "lab-replay", check_dir, "--out", loop.path("replay"), "-q"], expect=None)
+    check(code in (0, 5), "lab-replay exited %d:\n%s" % (code, output[-2000:]))
     with open(loop.path("replay", "summary.json")) as f:
         summary = json.load(f)
     check(summary["end"] == "finished", "lab-replay: " + summary["reason"])
