@@ -36,6 +36,9 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 STANDIN = os.path.join(HERE, "standin")
 MAIN_SCRIPT = "dream_main.py"
 UPLOAD_SUFFIXES = (".py", ".npy", ".mat", ".png", ".jpg")
+# The start-up drive's step budget (198 s); DREAM's C++ drive (world::StartupDrive) reads this
+# line when it is built, so the number is written here only.
+STARTUP_MAX_STEPS = 6000
 
 
 class StartupTimeout(Exception):
@@ -122,8 +125,9 @@ def main():
     parser.add_argument("--record-poses", default="", help="save every get_poses() result here (.npy, K x 3 x N)")
     parser.add_argument("--seed", type=int, default=0, help="seeds Python's and numpy's random generators")
     parser.add_argument("--echo", action="store_true", help="print the script's output as it runs")
-    parser.add_argument("--startup-max-steps", type=int, default=6000,
-                        help="give up when the simulator's start-up drive takes more steps (default 6000 = 198 s)")
+    parser.add_argument("--startup-max-steps", type=int, default=STARTUP_MAX_STEPS,
+                        help="give up when the simulator's start-up drive takes more steps (default %d = %.0f s)" %
+                        (STARTUP_MAX_STEPS, STARTUP_MAX_STEPS * 0.033))
     args = parser.parse_args()
 
     # The script runs in its working folder: make every path absolute first.

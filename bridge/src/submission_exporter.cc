@@ -1,6 +1,8 @@
 #include "dream/files/file_text.h"
 #include "dream/bridge/submission_exporter.h"
 
+#include "dream/run_config/startup_drive_check.h"
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -267,14 +269,17 @@ struct ReferenceArrays {
   NpyArray commands;
 };
 
-ReferenceArrays MakeReferenceArrays(const RunTrack& track, bool controller) {
+/// `start_poses`: the initial conditions the script asks the lab for (the
+/// config's for `world.start: placed`, whose step 0 is where the start-up
+/// drive ended; else the track's step 0).
+ReferenceArrays MakeReferenceArrays(const RunTrack& track, bool controller, const std::vector<world::Pose2>& start_poses) {
   const int n = track.num_robots;
   const auto un = static_cast<size_t>(n);
   ReferenceArrays arrays;
   arrays.initial.shape = {3, n};
   arrays.initial.values.resize(3 * un);
   for (size_t i = 0; i < un; ++i) {
-    const world::Pose2& p = track.pose(0, static_cast<int>(i));
+    const world::Pose2& p = start_poses.size() == un ? start_poses[i] : track.pose(0, static_cast<int>(i));
     arrays.initial.values[i] = p.x_m;
     arrays.initial.values[un + i] = p.y_m;
     arrays.initial.values[2 * un + i] = p.theta_rad;
@@ -451,7 +456,9 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
     obstacles = ObstacleSchedule(config.obstacles, config.world.time_step_s, input.steps);
   }
   const SubmissionParams params = MakeParams(input, options);
-  const ReferenceArrays arrays = MakeReferenceArrays(input.track, input.controller);
+  const ReferenceArrays arrays = MakeReferenceArrays(
+      input.track, input.controller,
+      config.start == run_config::WorldStart::kPlaced ? config.initial_poses : std::vector<world::Pose2>());
 
   ExportSummary summary;
   summary.num_robots = input.track.num_robots;
@@ -462,6 +469,12 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
   for (const auto& file : upload_files) summary.uploads.push_back(file.first);
   summary.warnings = input.forced;
   for (std::string& warning : StartUpWarnings(input.track)) summary.warnings.push_back(std::move(warning));
+  // The lab's start-up drive on the start poses, from several random placements: loud, for the
+  // lab is where a failure costs a slot.
+  const run_config::StartupDriveCheck drive = run_config::StartupDriveCheck::Of(config);
+  if (!drive.AllSettled()) {
+    summary.warnings.push_back("THE LAB WOULD LIKELY REJECT THIS RUN BEFORE STEP 0: " + drive.Message());
+  }
   summary.instructions = Instructions(input, summary, params);
   nlohmann::ordered_json manifest = Manifest(input, summary, params, run_dir, controller_files.module_name);
   // The digest of every upload file, so that an edit after the export is

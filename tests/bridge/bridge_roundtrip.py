@@ -62,6 +62,16 @@ def run(argv, expect=0, cwd=None, timeout=600, env=None):
     return output, seconds
 
 
+def run_check(argv):
+    """A go_to_goal check-submission in the stand-in: exit 0, or 5 when the lab run missed the goal by
+    the official start-up drive's millimetres (docs/robotarium.md#measured); these calls check what
+    is written, not the verdict."""
+    code, output, seconds = run_with_code(argv, expect=None)
+    if code not in (0, 5):
+        raise Failure("%s exited %d (expected 0 or 5):\n%s" % (" ".join(map(str, argv)), code, output[-3000:]))
+    return output, seconds
+
+
 def official_checkout(tmp):
     path = os.environ.get("ROBOTARIUM_PYTHON_SIMULATOR", "")
     if not path:
@@ -195,8 +205,8 @@ def bad_input(loop):
     script = open(loop.path("hostile_export", "upload", "dream_main.py")).read()
     template = open(os.path.join(source, "bridge", "python", "dream_main.py")).read()
     check(script == template, "the exported script differs from the fixed template")
-    run([dream, "check-submission", loop.path("hostile_export"), "--out", loop.path("hostile_check"), "--standin",
-         "-q"])
+    run_check([dream, "check-submission", loop.path("hostile_export"), "--out", loop.path("hostile_check"),
+               "--standin", "-q"])
     check(not os.path.exists(marker), "code from the config ran: %s exists" % marker)
 
     # A result with NaN: refused naming the file, nothing written.
@@ -217,8 +227,10 @@ def bad_input(loop):
     # The lab verifier's rules against what was declared on the lab's form (UPLOAD.txt's by default).
     good = loop.path("go_to_goal_check_track", "lab_files", "dream_result.npy")
     export = loop.path("go_to_goal_export_track")
-    output, _ = run([dream, "import", good, "--export", export, "--out", loop.path("declared_lab")])
-    check("verdict: clean" in output, "declared as UPLOAD.txt says: " + output)
+    # Declared as UPLOAD.txt says: not rejected (clean, or not_ready when the goal was missed by the
+    # official start-up drive's millimetres, which the stand-in now reproduces).
+    output, _ = run_check([dream, "import", good, "--export", export, "--out", loop.path("declared_lab")])
+    check("verdict: clean" in output or "verdict: not_ready" in output, "declared as UPLOAD.txt says: " + output)
     output, _ = run([dream, "import", good, "--export", export, "--out", loop.path("declared_short_lab"),
                      "--declared-duration", "2"], expect=3)
     check("verifier_duration: " in output and "over 1.5 x the declared 2.00 s" in output, "too long: " + output)
@@ -246,7 +258,8 @@ def bad_input(loop):
     check("is the simulated run the check compares with" in output, "check into its own run: " + output)
     output, _ = run([dream, "check-submission", export, "--standin", "--out", loop.path("hostile_check")], expect=1)
     check("already holds a run" in output and "--overwrite" in output, "check into a run: " + output)
-    run([dream, "check-submission", export, "--standin", "--out", loop.path("hostile_check"), "--overwrite", "-q"])
+    run_check([dream, "check-submission", export, "--standin", "--out", loop.path("hostile_check"), "--overwrite",
+               "-q"])
     with open(loop.path("hostile_check", "check.json")) as f:
         check(json.load(f)["compared_with"] == sim_dir, "check --overwrite did not check the new export")
     output, _ = run([dream, "export", sim_dir, "--out", loop.path("hostile_sim")], expect=1)
@@ -271,8 +284,8 @@ def bad_input(loop):
           and not os.path.exists(loop.path("wrong_simulator_check")),
           "check with $ROBOTARIUM_PYTHON_SIMULATOR naming a folder that is no checkout: " + output)
     # --standin uses neither, as the runner does.
-    run([dream, "check-submission", export, "--simulator", not_simulator, "--standin", "--out",
-         loop.path("standin_anyway_check"), "-q"])
+    run_check([dream, "check-submission", export, "--simulator", not_simulator, "--standin", "--out",
+               loop.path("standin_anyway_check"), "-q"])
     with open(os.path.join(sim_dir, "run.lcmlog"), "rb") as f:
         check(f.read() == simulated_log, "the simulated run's log changed")
 
@@ -291,7 +304,11 @@ def once(loop):
     for name in ("comparison.json", "comparison.png"):
         check(os.path.isfile(loop.path("compare", name)), "compare wrote no " + name)
     # The agents run unchanged against the lab's poses, through the command.
-    output, _ = run([dream, "lab-replay", check_dir, "--out", loop.path("replay"), "-q"])
+    # Exit 0, or 5 when the lab run missed go_to_goal's goal: since the stand-in runs the official
+    # start-up drive, its lab run starts as the official one does, up to 5 mm off, and can end
+    # 0.0200082 m from a goal judged at 0.02 m (docs/robotarium.md#measured), as import judges it too.
+    code, output, _ = run_with_code([dream, "lab-replay", check_dir, "--out", loop.path("replay"), "-q"], expect=None)
+    check(code in (0, 5), "lab-replay exited %d:\n%s" % (code, output[-2000:]))
     with open(loop.path("replay", "summary.json")) as f:
         summary = json.load(f)
     check(summary["end"] == "finished", "lab-replay: " + summary["reason"])

@@ -141,6 +141,7 @@ int RunLaunch(const RunArgs& args) {
   // Check the config here, so a mistake is reported once, not by N+1 children.
   const std::unique_ptr<session::RunSession> session = OpenRunSession(args);
   const run_config::RunConfig& config = session->config();
+  CheckStartupDrive(config);
   // Chosen once, here: the simulator gets it as --out, so a numbered folder
   // (runs/<name>_2) is not chosen again, differently, by the child.
   const std::string out_dir = PrepareOutputDir(args, config);

@@ -19,6 +19,7 @@ namespace dream::cli {
 int RunEmbedded(const RunArgs& args) {
   const std::unique_ptr<session::RunSession> run = OpenRunSession(args);
   const run_config::RunConfig& config = run->config();
+  CheckStartupDrive(config);
   // One process: the world and every agent share one bus, memq:// unless the
   // user asks for a real transport.
   const RunView::Keep keep = RunView::Keep::Parse(args.view_keep);  // a bad value before anything runs
@@ -45,6 +46,7 @@ int RunEmbedded(const RunArgs& args) {
 
 int RunSimOnly(const RunArgs& args) {
   const std::unique_ptr<session::RunSession> run = OpenRunSession(args);
+  CheckStartupDrive(run->config());
   lcm::LcmBus bus(lcm::ResolveLcmUrl(args.lcm_url));
   const std::string out_dir = PrepareOutputDir(args, run->config());
   return session::ExitCodeOf(run->Run(bus, {out_dir, ConfigTextForRunFolder(args, run->config())}));

@@ -1,5 +1,7 @@
 #include "run_output.h"
 
+#include "dream/run_config/startup_drive_check.h"
+
 #include <spdlog/spdlog.h>
 
 #include "dream/config/config_error.h"
@@ -38,6 +40,12 @@ std::unique_ptr<session::RunSession> OpenRunSession(const RunArgs& args) {
     throw config::ConfigError(overridden.Noted(e.what()));
   }
   return run;
+}
+
+void CheckStartupDrive(const run_config::RunConfig& config) {
+  const run_config::StartupDriveCheck check = run_config::StartupDriveCheck::Of(config);
+  if (const std::string refusal = check.Refusal(); !refusal.empty()) throw config::ConfigError(refusal);
+  if (!check.AllSettled()) spdlog::warn("{}", check.Message());
 }
 
 run_config::RunConfig LoadConfig(const RunArgs& args) { return OpenRunSession(args)->config(); }

@@ -21,6 +21,13 @@ namespace dream::cli {
 /// @throws config::ConfigError or std::invalid_argument with a clear message.
 std::unique_ptr<session::RunSession> OpenRunSession(const RunArgs& args);
 
+/// The Robotarium's start-up drive on the run's start poses, from several
+/// random placements (run_config::StartupDriveCheck), before anything runs:
+/// a warning naming robots and distances when a placement does not settle;
+/// with `world.start: placed` a run whose own drive does not settle is
+/// refused (config::ConfigError).
+void CheckStartupDrive(const run_config::RunConfig& config);
+
 /// The checked config alone (OpenRunSession), for commands that run no world here (dream sweep).
 run_config::RunConfig LoadConfig(const RunArgs& args);
 

@@ -1,4 +1,5 @@
 #include "dream/session/run_session.h"
+#include "dream/session/placed_start.h"
 #include "dream/session/realism_notice.h"
 
 #include <spdlog/spdlog.h>
@@ -55,7 +56,13 @@ RunResult RunSession::Run(lcm::LcmInterface& lcm, const Folder& folder) {
   // world.realism: the official world seen and driven as on the lab; off
   // (ideal), the official world itself, with nothing in between.
   GivenWorld own;
-  own.make = [this](node::RunRecorder&) { return run_config::WorldOfConfig(config_); };
+  own.make = [this](node::RunRecorder& recorder) {
+    // world.start: placed: the lab's start-up drive first; step 0 is where it ended.
+    if (config_.start == run_config::WorldStart::kPlaced) {
+      return run_config::WorldOfConfig(PlacedStart::Drive(config_, recorder));
+    }
+    return run_config::WorldOfConfig(config_);
+  };
   return Run(lcm, folder, own);
 }
 

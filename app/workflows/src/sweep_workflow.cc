@@ -131,6 +131,7 @@ SweepOutcome SweepWorkflow::Start(const SweepSettings& s, const run_config::RunC
   SweepFolder::CheckFolderPath(out_dir);
   if (s.engine == Engine::kSlurm) SlurmSubmission::CheckFolderPath(SweepFolder(out_dir).dir());
   const PreparedSweep prepared(s, base, out_dir);
+  for (const std::string& warning : prepared.startup_warnings()) spdlog::warn("{}", warning);
   const SweepPlan& plan = prepared.plan();
   const int jobs = s.engine == Engine::kLocal ? (s.jobs > 0 ? s.jobs : cores()) : s.jobs;
 

@@ -49,7 +49,7 @@ config::SimNodeOptions ReadSimOptions(const config::ConfigNode& root) {
   const config::ConfigNode world = root.Optional("world");
   if (world.IsDefined()) {
     world.RejectUnknownKeys({"mode", "agent_timeout_s", "start_timeout_s", "resend_interval_s", "max_abs_v_mps",
-                             "max_abs_w_radps", "realism"});
+                             "max_abs_w_radps", "realism", "start"});
     if (world.Has("mode")) {
       const config::ConfigNode mode = world.Required("mode");
       try {
@@ -77,6 +77,14 @@ config::SimNodeOptions ReadSimOptions(const config::ConfigNode& root) {
   std::string error;
   if (!options.IsValid(&error)) root.Fail(error);  // unreachable when the checks above hold
   return options;
+}
+
+// `world.start: exact | placed` (config/README.md#the-start-up-drive-worldstart-and-lab_safe).
+WorldStart ReadWorldStart(const config::ConfigNode& root) {
+  const config::ConfigNode world = root.Optional("world");
+  if (!world.IsDefined()) return WorldStart::kExact;
+  return world.GetChoice<WorldStart>("start", "exact", "world start",
+                                     {{"exact", WorldStart::kExact}, {"placed", WorldStart::kPlaced}});
 }
 
 world::RealismParams RealismPreset(const config::ConfigNode& name) {
@@ -170,17 +178,28 @@ world::RealismParams ReadRealism(const config::ConfigNode& root, RunConfig* conf
   return ReadRealismKeys(node, base);
 }
 
+// `generate: {lab_safe: true}`: the spacing rps's generate_random_poses gives
+// the official simulator's own random start poses.
+constexpr double kLabSafeSpacingM = 0.5;
+
 // `initial_poses` absent or `{generate: {...}}`: poses drawn clear of the
-// walls, of each other and of the obstacles.
-std::vector<world::Pose2> GenerateInitialPoses(const config::ConfigNode& node, const RunConfig& config) {
+// walls, of each other and of the obstacles; with `lab_safe: true` spaced as
+// the official simulator spaces random start poses (StartupDriveCheck refuses
+// them when the start-up drive does not settle: when a command runs, not at
+// every load of the config).
+std::vector<world::Pose2> GenerateInitialPoses(const config::ConfigNode& node, RunConfig* config_out) {
+  const RunConfig& config = *config_out;
   world::InitialPoseParams params;
   config::ConfigNode where = node;  // the key a failure names
+  bool lab_safe = false;
   if (node.IsDefined()) {
     node.RejectUnknownKeys({"generate"});
     const config::ConfigNode generate = node.Required("generate");
     where = generate;
     if (generate.IsMap()) {
-      generate.RejectUnknownKeys({"min_spacing_m", "wall_margin_m"});
+      generate.RejectUnknownKeys({"min_spacing_m", "wall_margin_m", "lab_safe"});
+      lab_safe = generate.GetBool("lab_safe", false);
+      if (lab_safe) params.min_spacing_m = kLabSafeSpacingM;
       params.min_spacing_m = generate.GetDouble("min_spacing_m", params.min_spacing_m);
       params.wall_margin_m = generate.GetDouble("wall_margin_m", params.wall_margin_m);
       if (params.wall_margin_m < kStartWallClearanceM) {
@@ -191,13 +210,15 @@ std::vector<world::Pose2> GenerateInitialPoses(const config::ConfigNode& node, c
       }
     }
   }
+  std::vector<world::Pose2> poses;
   try {
-    return world::InitialPoseGenerator(config.world, params, config.obstacles)
-        .Generate(config.num_robots, config.seed);
+    poses = world::InitialPoseGenerator(config.world, params, config.obstacles).Generate(config.num_robots, config.seed);
   } catch (const std::invalid_argument& e) {
     where.Fail(std::string("cannot generate initial poses: ") + e.what() +
                "; or list one [x, y, theta] per robot under initial_poses");
   }
+  if (lab_safe) config_out->lab_safe_spacing_m = params.min_spacing_m;
+  return poses;
 }
 
 // A listed start pose the lab would refuse: outside the arena, against a wall,
@@ -255,9 +276,10 @@ void CheckStartsApart(const config::ConfigNode& node, const std::vector<world::P
 
 // Needs config.obstacles: generated poses avoid them and listed poses may not
 // start inside one (either would be an obstacle collision at step 0).
-std::vector<world::Pose2> ReadInitialPoses(const config::ConfigNode& root, const RunConfig& config) {
+std::vector<world::Pose2> ReadInitialPoses(const config::ConfigNode& root, RunConfig* config_out) {
+  const RunConfig& config = *config_out;
   const config::ConfigNode node = root.Optional("initial_poses");
-  if (!node.IsDefined() || node.IsMap()) return GenerateInitialPoses(node, config);
+  if (!node.IsDefined() || node.IsMap()) return GenerateInitialPoses(node, config_out);
   if (!node.IsSequence() || node.size() != static_cast<size_t>(config.num_robots)) {
     node.Fail("expected one [x, y, theta] per robot (" + std::to_string(config.num_robots) + "), got " +
               (node.IsSequence() ? std::to_string(node.size()) : std::string("no list")) +
@@ -331,9 +353,10 @@ RunConfig LoadRunConfig(const config::ConfigNode& root) {
   // What agents read too, from the one place that checks it.
   static_cast<config::ControllerConfig&>(config) = config::LoadControllerConfig(root);
   config.sim = ReadSimOptions(root);
+  config.start = ReadWorldStart(root);
   config.realism = ReadRealism(root, &config);
   config.obstacles = ReadObstacles(root);
-  config.initial_poses = ReadInitialPoses(root, config);
+  config.initial_poses = ReadInitialPoses(root, &config);
   config.barriers = BarrierConfig::Read(root);
   return config;
 }

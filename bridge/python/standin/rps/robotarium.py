@@ -9,20 +9,23 @@ Semantics (V2.0.0, as DREAM's simulator reproduces them):
     the held velocity and takes an Euler step with the heading wrapped by atan2.
   - get_poses() once per step(), step() once per get_poses().
   - debug() prints the same text as the official simulator.
+  - Start-up: as the official simulator, the robots come off random charger slots
+    (Python's `random`) and the start-up drive (rps/startup_drive.py) takes them onto
+    the initial conditions with the unicycle barrier certificate; the experiment
+    starts where it ended, within 0.05 m / 0.2 rad. Its steps count in debug()'s
+    iterations but not as errors. skip_initialization=True starts exactly at the
+    initial conditions (the placement is still drawn, as the official one draws it).
+  - numpy's global stream: every step draws the sensors' noise the official step
+    draws (encoders, accelerometer, gyro, magnetometer, orientation) and throws it
+    away, so a seeded script's numpy draws are the official simulator's.
 Differences from the official simulator, on purpose:
-  - No figure, no real-time throttle, no sensors (distances, IMU, encoders).
-  - Start-up: the official simulator drives the robots from their chargers to
-    the initial conditions and stops within 0.05 m / 0.2 rad of them. The
-    stand-in puts each robot at its initial condition moved by a fixed,
-    deterministic offset of that order (up to 0.03 m and 0.1 rad), so scripts
-    meet an imperfect start as on the lab; start-up steps are not counted.
-    skip_initialization=True starts exactly at the initial conditions, as the
-    official simulator does with that flag.
+  - No figure, no real-time throttle, no sensor readings (distances, IMU, encoders).
 """
 
-import math
-
 import numpy as np
+
+from rps import startup_drive
+from rps.utilities.barrier_certificates import create_uni_barrier_certificate
 
 
 class Robotarium:
@@ -43,9 +46,6 @@ class Robotarium:
     # fails above 22 robots even with initial conditions; the stand-in says so.
     CHARGER_SLOTS = 22
 
-    START_OFFSET_M = 0.03
-    START_OFFSET_RAD = 0.1
-
     def __init__(self, number_of_robots=-1, show_figure=False, initial_conditions=np.array([]),
                  sim_in_real_time=True, skip_initialization=False, **unused_options):
         if not isinstance(number_of_robots, int) or isinstance(number_of_robots, bool):
@@ -65,35 +65,32 @@ class Robotarium:
                              "cannot start more than %d robots)" % self.CHARGER_SLOTS)
         n = number_of_robots
         self.number_of_robots = n
+        # Drawn first, in the official order: the charger slots, then default initial conditions.
+        chargers = startup_drive.charger_poses(n, self.BOUNDARIES[1] - self.BOUNDARIES[0] - self.ROBOT_DIAMETER,
+                                               self.BOUNDARIES[3] - self.BOUNDARIES[2] - self.ROBOT_DIAMETER)
         if initial_conditions.size == 0:
-            raise NotImplementedError("the stand-in needs initial_conditions (3 x N)")
+            initial_conditions = startup_drive.random_poses(n, 0.5, startup_drive.RANDOM_POSE_WIDTH,
+                                                            startup_drive.RANDOM_POSE_HEIGHT)
         if initial_conditions.shape != (3, n):
             raise AssertionError("initial_conditions must be 3 x %d, got %s" % (n, initial_conditions.shape))
         if not np.all(np.isfinite(initial_conditions)):
             raise AssertionError("initial_conditions must be finite")
 
-        self._poses = np.array(initial_conditions, dtype=float)
-        if not skip_initialization:
-            self._poses = self._poses + self._start_offsets(n)
+        self._poses = np.array(chargers, dtype=float).reshape(3, n)
         self._velocities = np.zeros((2, n))
         self._iteration = 0
         self._errors = {}
         self._poses_read = False
         self._stepped = True
-        print("Initializing %d robots to initial conditions..." % n)
-        print("At initial conditions... Starting Experiment")
-
-    @classmethod
-    def _start_offsets(cls, n):
-        """Deterministic offsets like the lab's start-up leaves them (within its 0.05 m / 0.2 rad)."""
-        offsets = np.zeros((3, n))
-        for i in range(n):
-            angle = 2.399963 * i  # golden angle: directions spread evenly
-            radius = cls.START_OFFSET_M * (0.5 + 0.5 * ((i * 7) % 5) / 4.0)
-            offsets[0, i] = radius * math.cos(angle)
-            offsets[1, i] = radius * math.sin(angle)
-            offsets[2, i] = cls.START_OFFSET_RAD * (1.0 if i % 2 == 0 else -1.0) * (0.4 + 0.6 * ((i * 3) % 4) / 3.0)
-        return offsets
+        # True during the start-up drive: no errors are counted (run_submission.py watches it too).
+        self.initializing = True
+        if skip_initialization:
+            self._poses = np.array(initial_conditions, dtype=float)
+        else:
+            print("Initializing %d robots to initial conditions..." % n)
+            startup_drive.drive(self, np.array(initial_conditions, dtype=float), create_uni_barrier_certificate())
+            print("At initial conditions... Starting Experiment")
+        self.initializing = False
 
     def get_poses(self):
         if self._poses_read:
@@ -145,7 +142,8 @@ class Robotarium:
             raise AssertionError("Make sure you call get_poses before calling step()!")
         self._stepped = True
         self._poses_read = False
-        self._validate()
+        if not self.initializing:
+            self._validate()
         self._iteration += 1
         self._velocities = self._saturate(self._velocities)
         i = np.arange(self.number_of_robots)
@@ -154,6 +152,15 @@ class Robotarium:
         self._poses[1, i] += distance * np.sin(self._poses[2, i])
         self._poses[2, i] += self.TIME_STEP * self._velocities[1, i]
         self._poses[2, i] = np.arctan2(np.sin(self._poses[2, i]), np.cos(self._poses[2, i]))
+        self._draw_sensor_noise()
+
+    def _draw_sensor_noise(self):
+        """The normal draws of the official step's sensor models (encoders 2 x N, accelerometer,
+        gyro and magnetometer 3 x N each, orientation N), in its order, unused: they keep numpy's
+        global stream where the official simulator leaves it."""
+        n = self.number_of_robots
+        for shape in ((2, n), (3, n), (3, n), (3, n), (n,)):
+            np.random.randn(*shape)
 
     def debug(self):
         seconds = self._iteration * self.TIME_STEP

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,13 @@ class PreparedSweep {
   /// The largest step limit of any run (for Slurm's default time limit).
   long long max_steps() const { return max_steps_; }
 
+  /// What the Robotarium's start-up drive said of the runs' start poses
+  /// (run_config::StartupDriveCheck, once per distinct start poses) when
+  /// some placement did not settle: one line each, naming the run, robots
+  /// and distances. A `world.start: placed` run whose own drive does not
+  /// settle stops the sweep instead (config::ConfigError).
+  const std::vector<std::string>& startup_warnings() const { return startup_warnings_; }
+
   /// Writes run `index`'s folder: its config.yaml (and the Python module it
   /// names, copied as `dream run` keeps it), its earlier outputs removed.
   void WriteRun(const SweepFolder& folder, size_t index) const;
@@ -46,8 +54,10 @@ class PreparedSweep {
   /// What every run's config is made from, and what the runs share.
   struct RunConfigMaker;
   void PrepareRun(RunConfigMaker& maker, const SweepPlan::Run& run);
+  void CheckStartupDrive(const run_config::RunConfig& config, const std::string& where, std::set<std::string>* driven);
 
   SweepPlan plan_;
+  std::vector<std::string> startup_warnings_;
   std::string base_name_;
   std::string seeds_text_;
   size_t seed_count_ = 0;

@@ -18,6 +18,11 @@ inline constexpr const char* kStatusChannel = "DREAM_STATUS";
 /// The commands the world applied at a step (applied_commands_t): recorded in
 /// the run log by the world, never published.
 inline constexpr const char* kAppliedChannel = "DREAM_APPLIED";
+/// `world.start: placed`: the Robotarium's start-up drive before step 0
+/// (robot_poses_t, step 1.. of the drive, utime negative: before the
+/// experiment's time 0): recorded in the run log, never published, no step
+/// of the experiment's.
+inline constexpr const char* kStartupPosesChannel = "DREAM_STARTUP_POSES";
 /// Prefix of the per-robot command channels DREAM_CMD_<id>; agent -> world.
 inline constexpr const char* kCommandChannelPrefix = "DREAM_CMD_";
 /// LCM regex matching every command channel.

@@ -6,6 +6,7 @@
 
 #include "dream/config/config_node.h"
 #include "dream/run_config/barrier_config.h"
+#include "dream/run_config/world_start.h"
 #include "dream/config/controller_config.h"
 #include "dream/world/pose2.h"
 #include "dream/world/realism_params.h"
@@ -30,6 +31,8 @@ struct RunConfig : config::ControllerConfig {
   static constexpr size_t kMaxObstacles = 10000;
 
   config::SimNodeOptions sim;       ///< pacing, timeouts, step limit
+  /// `world.start`: step 0 on the start poses, or where the Robotarium's start-up drive left the robots.
+  WorldStart start = WorldStart::kExact;
   world::WorldParams world;        ///< Robotarium V2 constants (not configurable)
   /// `world.realism:` (a preset name, or a map of models); Ideal(), the
   /// default, is the official simulator (no world::RealisticWorld).
@@ -40,6 +43,9 @@ struct RunConfig : config::ControllerConfig {
   std::string realism_file_as_written;
   std::string realism_file;
   std::vector<world::Pose2> initial_poses;
+  /// `initial_poses: {generate: {lab_safe: true}}`: their spacing (0: not lab-safe
+  /// poses); StartupDriveCheck refuses them when the start-up drive does not settle.
+  double lab_safe_spacing_m = 0.0;
   std::vector<world::RectangleObstacleSpec> obstacles;
   /// `barriers:`: the Robotarium's barrier certificate, if any, and where it is applied.
   BarrierConfig barriers;
