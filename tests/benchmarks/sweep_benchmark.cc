@@ -15,6 +15,7 @@
 #include "dream/run_config/run_config.h"
 #include "dream/workflows/sweep_folder.h"
 #include "dream/workflows/sweep_workflow.h"
+#include "../support/source_tree.h"
 
 namespace {
 
@@ -100,7 +101,7 @@ void BM_Table10000FinishedRuns(benchmark::State& state) {
   StandInSlurm slurm;
   Workflow(slurm).Start(settings, base);
   // Every run finished: its exit record and a summary.json as dream run writes it.
-  std::ifstream in(DREAM_TEST_DATA_DIR "/sweep_run_summary.json");
+  std::ifstream in(dream::testing::SourceDir() + "/tests/data/sweep_run_summary.json");
   std::stringstream summary;
   summary << in.rdbuf();
   const SweepFolder folder(settings.out_dir);
