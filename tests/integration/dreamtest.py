@@ -323,3 +323,25 @@ def start_lcm_logger(ctx, name, captured):
         check(time.monotonic() < deadline, "lcm-logger did not record a probe message within 10 s")
     bus.close()
     return logger
+
+
+def stop_lcm_logger(ctx, name, captured):
+    """Stops lcm-logger `name` (started by start_lcm_logger) once it has written everything it
+    received: a probe published after the last message it must hold, until the probe shows up in
+    `captured` (it records in the order it receives, so what comes before has been written by
+    then). A wait on that event, not a fixed pause, which a loaded machine can outlast."""
+    logger = ctx.procs[name][0]
+    bus = Udpm()
+    deadline = time.monotonic() + 30  # only turns a lost logger into a failure
+    while True:
+        bus.publish("PROBE_LOGGER_DRAINED", b"probe")
+        time.sleep(0.05)
+        with open(captured, "rb") as f:
+            if b"PROBE_LOGGER_DRAINED" in f.read():
+                break
+        check(logger.poll() is None, f"lcm-logger exited ({logger.returncode}): {ctx.output(name).strip()}")
+        check(time.monotonic() < deadline, "lcm-logger did not record the last probe message within 30 s")
+    bus.close()
+    logger.send_signal(signal.SIGINT)
+    code = ctx.wait(name, timeout=30)
+    check(code == 0, f"lcm-logger exited {code} on SIGINT: {ctx.output(name).strip()}")
