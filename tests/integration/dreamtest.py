@@ -306,14 +306,14 @@ class Udpm:
 def start_lcm_logger(ctx, name, captured):
     """Starts lcm-logger (process `name`) recording LCM_DEFAULT_URL into `captured`, and returns
     once it records: a probe message published until it shows up in the file. Its socket gets
-    4 MB, as dream's own receivers have, so a step's burst does not overflow it. It runs at nice -10
-    (the tests in a network namespace run as root): lcm-logger 1.3.1 keeps LCM's 30-message queue
-    and drops a burst when it waits for a CPU, which a hog on every core made it do; the recorder
-    is the test's instrument, not what it tests. (Without the right, nice warns and runs it as is.)"""
+    4 MB, as dream's own receivers have, so a step's burst does not overflow it. It runs at a real-time
+    priority (chrt --rr 1; the tests in a network namespace run as root): lcm-logger 1.3.1 keeps
+    LCM's 30-message queue and drops a burst when it waits for a CPU, which a hog on every core made
+    it do at nice -10 too; the recorder is the test's instrument, not what it tests."""
     url = os.environ["LCM_DEFAULT_URL"]
     logger_url = url + ("&" if "?" in url else "?") + "recv_buf_size=4194304"
-    logger = ctx.start(name, ["nice", "-n", "-10", "lcm-logger", "--lcm-url=" + logger_url, "--flush-interval=10",
-                              "-f", captured])
+    priority = ["chrt", "--rr", "1"] if os.geteuid() == 0 else []
+    logger = ctx.start(name, priority + ["lcm-logger", "--lcm-url=" + logger_url, "--flush-interval=10", "-f", captured])
     bus = Udpm()
     deadline = time.monotonic() + 10
     while True:
