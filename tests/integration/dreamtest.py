@@ -313,7 +313,8 @@ def start_lcm_logger(ctx, name, captured):
     url = os.environ["LCM_DEFAULT_URL"]
     logger_url = url + ("&" if "?" in url else "?") + "recv_buf_size=4194304"
     priority = ["chrt", "--rr", "1"] if os.geteuid() == 0 else []
-    logger = ctx.start(name, priority + ["lcm-logger", "--lcm-url=" + logger_url, "--flush-interval=10", "-f", captured])
+    logger = ctx.start(name, priority + ["lcm-logger", "--lcm-url=" + logger_url, "--flush-interval=10",
+                                         "-f", captured])
     bus = Udpm()
     deadline = time.monotonic() + 10
     while True:
