@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "dream/lcm/wire_text.h"
+#include "dream/files/file_text.h"
 #include "dream/files/json_text.h"
 #include "dream/files/output_folder.h"
 #include "dream/bridge/run_track.h"
@@ -62,12 +63,30 @@ struct ComparedFolders {
   FolderRun second;
 };
 
+/// What a run folder holds, from the sections its summary.json has (what
+/// wrote it): dream import adds "lab", dream lab-replay "lab_replay", a world
+/// with realism "realism". Only named: a summary that cannot be read says nothing.
+std::string WhatRunIs(const std::string& folder) {
+  const std::string path = (fs::path(folder) / "summary.json").string();
+  try {
+    const nlohmann::json summary = nlohmann::json::parse(files::ReadFileText(path));
+    if (!summary.is_object()) return "run (summary.json is no JSON object)";
+    if (summary.contains("lab")) return "lab run (dream import)";
+    if (summary.contains("lab_replay")) return "lab replay (dream lab-replay)";
+    if (summary.contains("realism")) return "simulation, world.realism on";
+    return "simulation";
+  } catch (const std::exception&) {
+    return "run (no readable summary.json)";
+  }
+}
+
 ComparedRun Describe(const std::string& folder, const FolderRun& folder_run, const run_config::RunConfig& config,
                      const std::string& python_runtime_dir) {
   const RunTrack& track = folder_run.track;
   const RunEnd& end = folder_run.end;
   ComparedRun run;
   run.folder = folder;
+  run.what = WhatRunIs(folder);
   run.steps = track.last_step();
   run.end = end.detail;
   run.violations = end.violations;
@@ -149,10 +168,10 @@ RunComparison CompareRuns(const std::string& first_dir, const std::string& secon
 
 std::string RunComparison::Text() const {
   std::string text;
-  text += "first (simulation): " + first.folder + ": " + std::to_string(first.steps) + " steps, " + first.verdict +
-          (first.end.empty() ? "" : " (" + first.end + ")") + "\n";
-  text += "second (lab):       " + second.folder + ": " + std::to_string(second.steps) + " steps, " + second.verdict +
-          (second.end.empty() ? "" : " (" + second.end + ")") + "\n";
+  text += "first (" + first.what + "): " + first.folder + ": " + std::to_string(first.steps) + " steps, " +
+          first.verdict + (first.end.empty() ? "" : " (" + first.end + ")") + "\n";
+  text += "second (" + second.what + "): " + second.folder + ": " + std::to_string(second.steps) + " steps, " +
+          second.verdict + (second.end.empty() ? "" : " (" + second.end + ")") + "\n";
   text += "compared steps 0.." + std::to_string(compared_steps) + "\n\n";
   text += "tracking error (second - first, robot centre)\n";
   text += "  robot   RMS cm   max cm   at step   RMS heading deg\n";
@@ -188,6 +207,7 @@ nlohmann::ordered_json RunComparison::Json() const {
   auto side = [](const ComparedRun& run) {
     nlohmann::ordered_json json;
     json["folder"] = run.folder;
+    json["what"] = run.what;
     json["steps"] = run.steps;
     json["end"] = run.end;
     json["verdict"] = run.verdict;

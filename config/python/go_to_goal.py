@@ -16,7 +16,9 @@ class GoToGoal(Robot):
     KEYS = {"goals": key(kind="points", per_robot=True),      # [x m, y m] per robot
             "gain": key(0.8, above=0.0),                        # 1/s
             "max_speed_mps": key(0.15, above=0.0, at_most=0.2),
-            "tolerance_m": key(0.03, above=0.0)}
+            "tolerance_m": key(0.03, above=0.0),
+            # the goal: every robot within this of its goal at once; 0: within tolerance_m (as C++)
+            "goal_tolerance_m": key(0.0, at_least=0.0)}
 
     def setup(self):
         self.goal_x, self.goal_y = self.config["goals"][self.id].tolist()
@@ -43,3 +45,26 @@ class GoToGoal(Robot):
 
     def done(self):
         return self.arrived
+
+    # The goal, judged after the run on the logged poses as the C++ kind's GoToGoalMetrics judges it.
+    @classmethod
+    def goal_points(cls, config, num_robots):
+        return [[tuple(config["goals"][i])] for i in range(num_robots)]
+
+    @classmethod
+    def metrics(cls, run):
+        errors = run.distances_to([points[0] for points in run.goal_points])   # (steps, robots)
+        tolerance = run.config["goal_tolerance_m"] or run.config["tolerance_m"]
+        all_in = (errors <= tolerance).all(axis=1)
+        arrived = [int(step) for step, inside in zip(run.steps, all_in) if inside][:1]
+        return {"final_max_goal_error_m": float(errors[-1].max()) if len(errors) else 0.0,
+                "all_arrived_step": arrived[0] if arrived else -1}
+
+    @classmethod
+    def goal(cls, run, metrics):
+        step = metrics["all_arrived_step"]
+        tolerance = run.config["goal_tolerance_m"] or run.config["tolerance_m"]
+        detail = ("all at their goals" if step >= 0 else
+                  f"not all at their goals, worst {metrics['final_max_goal_error_m']:.7g} m on the logged poses "
+                  f"(tolerance {tolerance:g} m, compared unrounded)")
+        return {"met": step >= 0, "completion_step": step, "detail": detail}

@@ -108,6 +108,39 @@ class HrvoCircleRobot(Robot):
     def done(self):
         return self.reached == len(self.goals) and self.holding
 
+    # The goal, judged after the run as the C++ kind's FormationSequenceMetrics judges it: formation
+    # k is complete at the first step (after formation k-1's) where every robot is within
+    # tolerance_m of its point; the goal is every formation complete.
+    @classmethod
+    def goal_points(cls, config, num_robots):
+        return [[_circle_point(config["center"], config["radius_m"], i, num_robots, formation)
+                 for formation in range(config["formations"])] for i in range(num_robots)]
+
+    @classmethod
+    def metrics(cls, run):
+        completed = []
+        for formation in range(run.config["formations"]):
+            points = [robot_points[formation] for robot_points in run.goal_points]
+            formed = (run.distances_to(points) <= run.config["tolerance_m"]).all(axis=1)
+            after = 0 if not completed else completed[-1][0] + 1
+            at = [index for index in range(after, len(formed)) if formed[index]][:1]
+            if not at:
+                break
+            completed.append((at[0], int(run.steps[at[0]])))
+        figures = {"formations_completed": len(completed)}
+        for formation in range(run.config["formations"]):
+            figures[f"formation_{formation + 1}_completed_step"] = (completed[formation][1] if formation < len(completed)
+                                                                    else -1)
+        all_done = len(completed) == run.config["formations"]
+        figures["all_formations_completed_step"] = completed[-1][1] if all_done else -1
+        return figures
+
+    @classmethod
+    def goal(cls, run, metrics):
+        step = metrics["all_formations_completed_step"]
+        return {"met": step >= 0, "completion_step": step,
+                "detail": f"{metrics['formations_completed']} of {run.config['formations']} formations"}
+
     def _decode(self, payload, formations):
         """The states in a neighbour's payload, or None when it is not a valid progress message."""
         if len(payload) != self._payload.size:

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "dream/agent_host/controller_factory.h"
+#include "dream/config/config_node.h"
 #include "dream/run_config/run_config.h"
 #include "../support/source_tree.h"
 
@@ -38,11 +39,44 @@ TEST(GoalRules, GoToGoalIsMetWhenEveryRobotArrivedAtOnce) {
   const auto missed = Judge("go_to_goal", {{"all_arrived_step", -1}, {"final_max_goal_error_m", 0.2}});
   ASSERT_TRUE(missed);
   EXPECT_FALSE(missed->met);
-  EXPECT_EQ(missed->detail, "not all at their goals, worst 0.2 m (tolerance 0.02 m)");
+  // The goal's tolerance (goal_tolerance_m: 0.05), not where the robots stop (tolerance_m: 0.02).
+  EXPECT_EQ(missed->detail, "not all at their goals, worst 0.2 m on the logged poses (tolerance 0.05 m, compared unrounded)");
   // Missed by a hair: enough digits that the worst does not read as the tolerance.
-  const auto hair = Judge("go_to_goal", {{"all_arrived_step", -1}, {"final_max_goal_error_m", 0.0200082}});
+  const auto hair = Judge("go_to_goal", {{"all_arrived_step", -1}, {"final_max_goal_error_m", 0.0500082}});
   ASSERT_TRUE(hair);
-  EXPECT_EQ(hair->detail, "not all at their goals, worst 0.02001 m (tolerance 0.02 m)");
+  EXPECT_EQ(hair->detail, "not all at their goals, worst 0.05001 m on the logged poses (tolerance 0.05 m, compared unrounded)");
+}
+
+/// Two robots 3 cm from their goals, stopping at 2 cm, judged at `goal_tolerance`
+/// (a YAML number, or nothing: tolerance_m).
+std::optional<GoalJudgement> GoToGoalAtThreeCentimetres(const std::string& goal_tolerance) {
+  const std::string text = "name: two\nrobots: 2\nsteps: 10\ninitial_poses: [[0, 0, 0], [0.5, 0, 0]]\n"
+                           "controller:\n  kind: go_to_goal\n  tolerance_m: 0.02\n"
+                           "  goals: [[0.03, 0], [0.5, 0.03]]\n" +
+                           (goal_tolerance.empty() ? std::string() : "  goal_tolerance_m: " + goal_tolerance + "\n");
+  const run_config::RunConfig config = run_config::LoadRunConfig(config::ConfigNode::LoadString(text, "two.yaml"));
+  const agent_host::ControllerFactory factory(config);
+  auto metrics = std::move(factory.MakeMetrics().front());
+  WorldSnapshot world;
+  world.step = 5;
+  world.poses = {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.5, 0, 0)};
+  world.velocities.assign(2, Eigen::Vector2d::Zero());
+  metrics->Observe(world);
+  MetricsReport report;
+  metrics->Write(&report);
+  return metrics->JudgeGoal(report);
+}
+
+// The goal is judged at goal_tolerance_m, apart from where robots stop (tolerance_m).
+TEST(GoalRules, GoToGoalIsJudgedAtItsGoalToleranceNotWhereRobotsStop) {
+  const auto stop_line = GoToGoalAtThreeCentimetres("");
+  ASSERT_TRUE(stop_line);
+  EXPECT_FALSE(stop_line->met);
+  EXPECT_EQ(stop_line->detail, "not all at their goals, worst 0.03 m on the logged poses (tolerance 0.02 m, compared unrounded)");
+  const auto goal_line = GoToGoalAtThreeCentimetres("0.05");
+  ASSERT_TRUE(goal_line);
+  EXPECT_TRUE(goal_line->met);
+  EXPECT_EQ(goal_line->completion_step, 5);
 }
 
 TEST(GoalRules, MetresApartPrintsTheDigitsThatTellAValueFromItsReference) {

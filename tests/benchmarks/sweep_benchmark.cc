@@ -92,6 +92,31 @@ void BM_PlanAndSubmit10000Runs(benchmark::State& state) {
 }
 BENCHMARK(BM_PlanAndSubmit10000Runs)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
+/// 10,000 seeds of a shipped config, planned (--engine plan): every run's
+/// config generated from the whole file, checked and written (issue 37: under
+/// 10 s for any shipped config). Argument: the config's file in config/.
+void BM_PlanShippedConfig10000Seeds(benchmark::State& state, const std::string& config_file) {
+  const fs::path dir = Scratch("shipped");
+  SweepSettings settings;
+  settings.config_path = dream::testing::SourceDir() + "/config/" + config_file;
+  settings.seeds = "1-10000";
+  settings.engine = SweepSettings::Engine::kPlan;
+  const dream::run_config::RunConfig base =
+      dream::run_config::LoadRunConfig(dream::config::ConfigNode::LoadFile(settings.config_path));
+  int attempt = 0;
+  for (auto _ : state) {
+    settings.out_dir = (dir / ("sweep" + std::to_string(attempt++))).string();
+    StandInSlurm never_called;
+    const auto outcome = Workflow(never_called).Start(settings, base);
+    benchmark::DoNotOptimize(outcome.runs);
+  }
+  fs::remove_all(dir);
+}
+BENCHMARK_CAPTURE(BM_PlanShippedConfig10000Seeds, hrvo_circle, std::string("hrvo_circle.yaml"))
+    ->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime()->MeasureProcessCPUTime();
+BENCHMARK_CAPTURE(BM_PlanShippedConfig10000Seeds, voronoi_coverage, std::string("voronoi_coverage.yaml"))
+    ->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime()->MeasureProcessCPUTime();
+
 void BM_Table10000FinishedRuns(benchmark::State& state) {
   const fs::path dir = Scratch("table");
   SweepSettings settings = TenThousandRuns(dir);

@@ -236,7 +236,12 @@ def go_to_goal(case):
     # compare and lab-replay take the imported run as any other.
     output, _ = run([case.dream, "compare", sim_dir, lab_dir, "--out", case.path("compare")])
     check("tracking error" in output, "compare: " + output[-1000:])
+    check("first (simulation): " in output and "second (lab run (dream import)): " in output,
+          "compare names the simulated run and the imported one: " + output[:400])
     run([case.dream, "lab-replay", lab_dir, "--out", case.path("lab_replay"), "-q"])
+    output, _ = run([case.dream, "compare", lab_dir, case.path("lab_replay"), "--out", case.path("compare_replay")])
+    check("first (lab run (dream import)): " in output and "second (lab replay (dream lab-replay)): " in output,
+          "compare names the imported run and its lab replay: " + output[:400])
     with open(case.path("lab_replay", "summary.json")) as f:
         replay = json.load(f)
     check(replay["end"] == "finished", "lab-replay: " + replay["reason"])

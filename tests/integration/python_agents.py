@@ -94,6 +94,13 @@ def test(context, args):
           f"{len(python_poses)} DREAM_POSES for {python_summary['steps']} steps")
     for step, poses in cpp_poses.items():
         check(python_poses.get(step) == poses, f"step {step}: Python and C++ poses differ")
+    # The twin declares the kind's goal: the same verdict, step and figures.
+    for field in ("met", "completion_step", "detail"):
+        check(python_summary["goal"].get(field) == cpp_summary["goal"].get(field),
+              f"goal {field}: Python {python_summary['goal'].get(field)!r}, C++ {cpp_summary['goal'].get(field)!r}")
+    for name in ("final_max_goal_error_m", "all_arrived_step"):
+        check(python_summary["metrics"].get(name) == cpp_summary["metrics"].get(name),
+              f"{name}: Python {python_summary['metrics'].get(name)}, C++ {cpp_summary['metrics'].get(name)}")
     check(python_summary["robot_faults"] == {}, f"unexpected robot_faults {python_summary['robot_faults']}")
 
     # 1b. The thesis's HRVO circle swap in Python (config/python/hrvo_circle.py) and in C++:
@@ -110,6 +117,15 @@ def test(context, args):
     check(poses_by_step(os.path.join(circle_python, "run.lcmlog"), dream) ==
           poses_by_step(os.path.join(circle_cpp, "run.lcmlog"), dream),
           "the Python and C++ HRVO circle swaps differ")
+    # The twin declares the kind's goal (issue 37): the same verdict, step and formation figures.
+    cpp_circle = read_summary(circle_cpp)
+    for field in ("met", "completion_step", "detail"):
+        check(circle_summary["goal"].get(field) == cpp_circle["goal"].get(field),
+              f"goal {field}: Python circle {circle_summary['goal'].get(field)!r}, C++ {cpp_circle['goal'].get(field)!r}")
+    check(circle_summary["goal"].get("met") is True, f"the Python circle swap's goal: {circle_summary['goal']}")
+    for name in ("formations_completed", "formation_1_completed_step", "all_formations_completed_step"):
+        check(circle_summary["metrics"].get(name) == cpp_circle["metrics"].get(name),
+              f"{name}: Python {circle_summary['metrics'].get(name)}, C++ {cpp_circle['metrics'].get(name)}")
 
     # 2. Deterministic.
     again = context.path("again")

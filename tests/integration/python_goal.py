@@ -21,6 +21,7 @@ Usage: python_goal.py --dream BIN --source DIR
 """
 
 import csv
+import json
 import os
 import textwrap
 
@@ -141,6 +142,13 @@ def single_runs(context, dream):
                                 "--out", context.path("compared")], timeout=60)
     check(code == 0 and "worst_error_m:" in output and "final_error_m:" in output and '"met":true' in output,
           f"dream compare: exit {code}: {output[-600:]}")
+    # Two simulated runs are named so, not "(lab)" (issue 37): what each is comes from its summary.json.
+    check("first (simulation): " in output and "second (simulation): " in output and "(lab)" not in output,
+          f"dream compare names two simulated runs: {output[:400]}")
+    with open(context.path("compared", "comparison.json")) as f:
+        compared = json.load(f)
+    check(compared["first"]["what"] == "simulation" and compared["second"]["what"] == "simulation",
+          f"comparison.json's what: {compared['first'].get('what')}, {compared['second'].get('what')}")
 
 
 def sweeps(context, dream):

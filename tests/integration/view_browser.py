@@ -14,8 +14,11 @@ its violations, and the page's status line names the other run (other_world.png)
 lcm-logplayer: the run's log played on the bus (4x) is drawn live too, from its start again. Then
 the status line's "draw it instead": the other run is drawn from its next step.
 
-Embedded: `dream run --view --pace 4` of the same config: the page follows it to its last step
-(the end of a run on the process's own memq bus, which no handler reads, comes from its log).
+Embedded: `dream run --view --pace 4` of the same config: the page follows it to its end (the end
+of a run on the process's own memq bus, which no handler reads, comes from its log), where the same
+URL turns into the run's replay at its last step showing summary.json's verdict and goal (one
+judge, issue 33); the browser being there, the page is served until Ctrl-C, which leaves the run's
+exit code, and the page keeps the replay without retrying (issue 37 item 1).
 
 Replay: `dream view RUN` of that run; the page's timeline is driven as a user would (play, pause,
 step forward and back, scrub, speed) and must show the log's poses at the chosen step, and only
@@ -27,6 +30,7 @@ Usage: netns.sh view_browser.py --dream BIN --source DIR --types-dir DIR --artif
 import json
 import os
 import re
+import signal
 import time
 
 from devtools import Page, chromium_argv, devtools_port
@@ -80,6 +84,17 @@ def wait_for(page, what, predicate, timeout):
     fail(f"the page did not show {what} within {timeout} s; its state: {json.dumps(last)[:600]}")
 
 
+def wait_for_page(page, what, expression, predicate, timeout):
+    deadline = time.monotonic() + timeout
+    last = None
+    while time.monotonic() < deadline:
+        last = page.evaluate(expression)
+        if predicate(last):
+            return last
+        time.sleep(0.05)
+    fail(f"the page did not show {what} within {timeout} s: {json.dumps(last)[:300]}")
+
+
 def poses_by_step(dream, log_path):
     poses = {}
     for event in read_events(log_path):
@@ -115,12 +130,40 @@ def check_marks(marks, poses, where):
             check(m["robot"] == 0 and truth.x[0] > ARENA_X, f"{where}: boundary mark {m} but robot 0 is at "
                                                              f"x={truth.x[0]:.3f} at that step")
             check(abs(m["x"] - truth.x[0]) < 1e-4, f"{where}: boundary mark {m} is not where robot 0 was")
+            check(abs(m["worst"] - (truth.x[0] - ARENA_X)) < 1e-4,
+                  f"{where}: boundary mark {m}: robot 0 was {truth.x[0] - ARENA_X:.4f} m outside")
         elif m["kind"] == "collision":
             check((m["robot"], m["other"]) == (1, 2), f"{where}: collision mark {m}: expected robots 1 and 2")
             check(abs(m["x"] - (truth.x[1] + truth.x[2]) / 2) < 1e-4, f"{where}: collision mark {m} is not "
                                                                        f"between robots 1 and 2")
         else:
             fail(f"{where}: unexpected violation {m}")
+
+
+def check_episodes(page, shown, where):
+    """Issue 37: a violation held over steps is one episode in the page's list: each run of
+    consecutive steps of one (kind, robots) is one entry, listed as 'steps FIRST-LAST'."""
+    expected = []
+    for m in sorted(shown["violations"], key=lambda m: m["step"]):
+        key = (m["kind"], m["robot"], m["other"])
+        check(isinstance(m.get("worst"), (int, float)), f"{where}: mark {m} has no worst value")
+        going = next((e for e in reversed(expected) if e["key"] == key), None)
+        if going and m["step"] <= going["last"] + 1:
+            going["last"] = max(going["last"], m["step"])
+            going["worst"] = (min if m["kind"] == "collision" else max)(going["worst"], m["worst"])
+        else:
+            expected.append({"key": key, "first": m["step"], "last": m["step"], "worst": m["worst"]})
+    got = [((e["kind"], e["robot"], e["other"]), e["first"], e["last"], e["worst"]) for e in shown["episodes"]]
+    check(sorted(got) == sorted((e["key"], e["first"], e["last"], e["worst"]) for e in expected),
+          f"{where}: the page's episodes {got} are not the marks' runs of steps {expected}")
+    check(len(got) < len(shown["violations"]), f"{where}: {len(got)} episodes for {len(shown['violations'])} marks: "
+                                               "no violation was held over steps")
+    items = page.evaluate("[...document.querySelectorAll('#violation-list li')].map((li) => li.textContent)")
+    check(len(items) == min(50, len(got)), f"{where}: {len(items)} lines listed for {len(got)} episodes")
+    held = [e for e in expected if e["last"] > e["first"]]
+    check(any(f"steps {e['first']}-{e['last']}" in line and "at worst" in line for e in held for line in items),
+          f"{where}: no line lists a held violation as 'steps FIRST-LAST': {items[:3]}")
+    print(f"{where}: {len(shown['violations'])} violation marks listed as {len(got)} episodes, e.g. {items[0]!r}")
 
 
 def watch_live(ctx, args, page, config, run_dir):
@@ -208,6 +251,7 @@ def check_live(ctx, args, dream, page, config, run_dir):
     final = wait_for(page, f"the run's last step ({STEPS})", lambda s: s["step"] == STEPS, 30)
     check_robots(final, poses, "live")
     check_marks(final["violations"], poses, "live")
+    check_episodes(page, final, "live")
     summary = read_summary(run_dir)["violations"]
     check(final["counts"]["boundary"] == summary["boundary_errors"] and
           final["counts"]["collision"] == summary["collision_errors"],
@@ -257,6 +301,7 @@ def check_replay(ctx, args, page, run_dir, poses):
     check_robots(scrubbed, poses, "replay at step 200")
     check_marks(scrubbed["violations"], poses, "replay at step 200")
     check(max(m["step"] for m in scrubbed["violations"]) <= 200, "the replay marks violations after its step")
+    check_episodes(page, scrubbed, "replay at step 200")
     outside = sum(1 for step, p in poses.items() if step <= 200 and any(abs(x) > ARENA_X for x in p.x))
     check(scrubbed["counts"]["boundary"] == outside,
           f"at step 200 the page counts {scrubbed['counts']['boundary']} boundary errors, the log {outside}")
@@ -267,18 +312,33 @@ def check_replay(ctx, args, page, run_dir, poses):
 
 
 def check_embedded(ctx, args, dream, page, config):
-    """dream run --view, followed to its finished last step."""
+    """dream run --view, followed to its end, where the page becomes the run's replay with summary.json's verdict."""
     embedded_dir = ctx.path("embedded")
     ctx.start("embedded", [args.dream, "run", config, "--out", embedded_dir, "--view", "--view-port", "0",
                            "--pace", "4"])
     ctx.wait_for_output("embedded", URL.pattern, 10)
     page.navigate(URL.search(ctx.output("embedded")).group(1))
-    ended = wait_for(page, "dream run --view to its end", lambda s: s["mode"] == "live" and s["step"] == STEPS and
-                     s.get("state") == "finished", 20)
-    ctx.wait("embedded", 10)
+    ended = wait_for(page, "dream run --view to its end, replayed", lambda s: s["mode"] == "replay" and
+                     s["step"] == STEPS and s.get("state") == "finished", 30)
+    ctx.wait_for_output("embedded", r"a browser is watching: serving until Ctrl-C", 10)
+    summary = read_summary(embedded_dir)
+    check(ended["verdict"] == summary["verdict"],
+          f"dream run --view ends the page on {ended['verdict']}, summary.json says {summary['verdict']}")
+    shown = wait_for_page(page, "summary.json's verdict and goal in the side panel",
+                          "[document.body.dataset.verdict, document.getElementById('goal').textContent]",
+                          lambda v: v[0] == summary["verdict"] and v[1] != "-", 5)
+    check(shown[1].startswith("met" if summary["goal"]["met"] else "missed") and
+          summary["goal"]["detail"] in shown[1], f"the page's goal line '{shown[1]}', summary.json's {summary['goal']}")
     embedded_poses = poses_by_step(dream, os.path.join(embedded_dir, "run.lcmlog"))
     check_robots(ended, embedded_poses, "dream run --view")
     check_marks(ended["violations"], embedded_poses, "dream run --view")
+    page.screenshot(os.path.join(args.artifacts, "run_view_end.png"))
+    ctx.procs["embedded"][0].send_signal(signal.SIGINT)
+    code = ctx.wait("embedded", 10)
+    check(code == 3, f"dream run --view of a rejected run: exit {code} after Ctrl-C ended its page (expected 3)")
+    wait_for_page(page, "the page keeping the replay after the server stopped",
+                  "document.getElementById('connection').textContent",
+                  lambda text: text.startswith("dream stopped serving"), 10)
 
 
 def test(ctx):

@@ -52,6 +52,42 @@ class ReferenceTest(unittest.TestCase):
         self.assertGreaterEqual(failures, 1, "the fixture should hold a QP that fails")
 
 
+
+class StructuredKktTest(unittest.TestCase):
+    """dream.barriers solves cvxopt's KKT systems through the QP's structure (_StructuredKkt); on
+    the same QPs cvxopt's own dense KKT solver must give the same commands, crowded states (the QP
+    fails) and obstacle points included."""
+
+    def test_same_commands_as_cvxopts_own_kkt_solver(self):
+        import cvxopt
+        import cvxopt.solvers
+        real = cvxopt.solvers.qp
+        rng = np.random.default_rng(7)
+        compared = 0
+        for n in (5, 12, 20):  # below 10 robots the structured path is not taken: a control
+            for crowded in (False, True):
+                for _ in range(10):
+                    spread = 0.4 if crowded else 1.3
+                    x = np.vstack([rng.uniform(-spread, spread, n), rng.uniform(-spread * 0.6, spread * 0.6, n),
+                                   rng.uniform(-np.pi, np.pi, n)])
+                    dxu = np.vstack([rng.uniform(-0.2, 0.2, n), rng.uniform(-2, 2, n)])
+                    obstacles = rng.uniform(-1, 1, (2, 2))
+                    for make, args in ((barriers.create_uni_barrier_certificate_with_boundary, (dxu, x, obstacles)),
+                                       (barriers.create_uni_barrier_certificate, (dxu, x)),
+                                       (barriers.create_si_barrier_certificate_with_boundary, (dxu, x[:2]))):
+                        certificate = make()
+                        with warnings.catch_warnings():
+                            warnings.simplefilter("ignore")
+                            ours = certificate(*args)
+                            try:
+                                cvxopt.solvers.qp = lambda *a, kktsolver=None, **k: real(*a, **k)
+                                theirs = certificate(*args)
+                            finally:
+                                cvxopt.solvers.qp = real
+                        np.testing.assert_allclose(ours, theirs, rtol=0, atol=1e-9)
+                        compared += 1
+        self.assertEqual(compared, 180)
+
 class InputTest(unittest.TestCase):
     def test_one_robot_passes_unchanged(self):
         dxu = np.array([[5.0], [9.0]])

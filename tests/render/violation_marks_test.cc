@@ -180,6 +180,29 @@ TEST(ViolationMarksTest, MarksAtOnePlaceAreOneRingWithOneLabelCountingTheOthers)
   EXPECT_EQ(other_corners(merged), 0);  // no second or third label
 }
 
+// An episode is labelled with its steps: "k=40-95" is wider than one step's "k=40".
+TEST(ViolationMarksTest, AnEpisodesLabelGivesItsFirstAndLastStep) {
+  const TempFolder dir;
+  const run_log::RunLog run = run_log::RunLog::Read(SyntheticRunLog::TwoRobots(dir / "run.lcmlog", 100).Write());
+  ArenaOverlays step;
+  step.violations.listed.push_back({Kind::kObstacle, 1, 3, 40, 40, -0.8, -0.6});
+  ArenaOverlays episode;
+  episode.violations.listed.push_back({Kind::kObstacle, 1, 3, 40, 95, -0.8, -0.6});
+  TrajectoryPicture::Render(run, step, dir / "step.png", RenderFormat::kPng, 1280);
+  TrajectoryPicture::Render(run, episode, dir / "episode.png", RenderFormat::kPng, 1280);
+  const ArenaLayout layout(1280, 2);
+  const double ring_px = kRingRadiusM * layout.scale();
+  const double x = layout.px(-0.8);
+  const double y = layout.py(-0.6);
+  auto label = [&](const PicturePixels& p) {
+    return p.CountNear(x + 0.8 * ring_px, y - 0.8 * ring_px - 16, x + 0.8 * ring_px + 120, y - 0.8 * ring_px, kRed, 40);
+  };
+  const PicturePixels one_step(dir / "step.png");
+  const PicturePixels many(dir / "episode.png");
+  EXPECT_GT(label(one_step), 5);
+  EXPECT_GT(label(many), label(one_step) + 5);
+}
+
 TEST(ViolationMarksTest, TheCaptionCountsThemAndSaysWhatIsNotMarked) {
   world::LocatedViolations violations;
   violations.listed.push_back({Kind::kCollision, 0, 1, 40, 60, 0.0, 0.0});

@@ -130,15 +130,19 @@ TEST(FrameJsonTest, SetupSaysTheArenaAndTheConfigsGoals) {
 }
 
 // One judge (issue 33): a replay's setup carries the run's summary.json
-// verdict and goal, which the page shows at the run's end.
+// verdict, goal and metrics, which the page shows at the run's end.
 TEST(FrameJsonTest, ASetupCarriesTheRunsJudgementWhenItHasOne) {
   ViewSetup setup;
   setup.mode = ViewSetup::Mode::kReplay;
   EXPECT_EQ(SetupJson(setup).find("\"judged\""), std::string::npos);
-  setup.judged = ViewSetup::Judged{"not_ready", {"goal: the go_to_goal experiment missed its goal"}, "missed (worst 0.03 m)"};
+  setup.judged = ViewSetup::Judged{"not_ready",
+                                   {"goal: the go_to_goal experiment missed its goal"},
+                                   "missed (worst 0.03 m)",
+                                   {{"final_max_goal_error_m", "0.03"}, {"all_arrived_step", "-1"}}};
   const std::string json = SetupJson(setup);
   EXPECT_NE(json.find("\"judged\":{\"verdict\":\"not_ready\",\"reasons\":[\"goal: the go_to_goal experiment missed its goal\"],"
-                      "\"goal\":\"missed (worst 0.03 m)\"}"),
+                      "\"goal\":\"missed (worst 0.03 m)\",\"metrics\":[[\"final_max_goal_error_m\",\"0.03\"],"
+                      "[\"all_arrived_step\",\"-1\"]]}"),
             std::string::npos)
       << json;
 }

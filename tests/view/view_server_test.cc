@@ -136,6 +136,30 @@ TEST(ViewServerTest, EachBrowserGetsTheSetupThenTheFrames) {
   EXPECT_EQ(server.clients(), 3u);
 }
 
+// dream run --view at the run's end (issue 37 item 1): the live server serves
+// the finished run at the same port; a page open gets the replay's setup, a
+// page that connects later the replay's setup and no live frame.
+TEST(ViewServerTest, ALiveServerBecomesTheReplayOfItsRun) {
+  ViewServer server(AnyPort());
+  server.SetSetup("{\"type\":\"setup\",\"mode\":\"live\"}");
+  Browser open(server.port());
+  EXPECT_EQ(open.Read(), "{\"type\":\"setup\",\"mode\":\"live\"}");
+  server.Broadcast("last live frame");
+  EXPECT_EQ(open.Read(), "last live frame");
+  EXPECT_EQ(StatusLine(Exchange(server.port(), Get(server.port(), "/run.json"))), "HTTP/1.1 404 Not Found");
+
+  server.ServeReplay("{\"type\":\"setup\",\"mode\":\"replay\"}", "{\"type\":\"run\"}");
+  EXPECT_EQ(open.Read(), "{\"type\":\"setup\",\"mode\":\"replay\"}");
+  const std::string response = Exchange(server.port(), Get(server.port(), "/run.json"));
+  EXPECT_EQ(StatusLine(response), "HTTP/1.1 200 OK");
+  EXPECT_EQ(response.substr(response.size() - 14), "{\"type\":\"run\"}");
+  Browser late(server.port());
+  EXPECT_EQ(late.Read(), "{\"type\":\"setup\",\"mode\":\"replay\"}");
+  // Nothing follows the setup: a frame sent now would be the next message.
+  server.Broadcast("marker");
+  EXPECT_EQ(late.Read(), "marker");
+}
+
 TEST(ViewServerTest, AnOversizedMessageFromABrowserClosesItsSocket) {
   ViewServer server(AnyPort());
   server.SetSetup("setup");

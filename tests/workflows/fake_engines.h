@@ -1,6 +1,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <yaml-cpp/yaml.h>
 
 #include <fstream>
 #include <functional>
@@ -25,6 +26,19 @@ inline nlohmann::json FinishedSummary(bool goal_met, long long completion_step, 
             {"goal", {{"met", goal_met}, {"completion_step", completion_step}, {"detail", goal_met ? "all arrived" : "not all"}}}}}};
 }
 
+/// `summary` with what dream run adds of its own where the test left it out:
+/// the seed and name of the run folder's config, and a run id of its own.
+inline nlohmann::json AsDreamRunWrites(const std::string& run_dir, nlohmann::json summary) {
+  if (!summary.is_object()) return summary;
+  const YAML::Node config = YAML::LoadFile(run_dir + "/config.yaml");
+  if (!summary.contains("seed")) summary["seed"] = config["seed"].as<uint64_t>();
+  if (!summary.contains("run")) summary["run"] = config["name"].as<std::string>();
+  // Unique across the runners of one test (a resume's runs are new runs).
+  static int next_run_id = 0;
+  if (!summary.contains("run_id")) summary["run_id"] = "fa4e" + std::to_string(1000000 + next_run_id++);
+  return summary;
+}
+
 /// The local engine without processes: each "run" writes the summary
 /// `outcome` gives for its folder and "exits" with the code it gives.
 class FakeJobRunner : public JobRunner {
@@ -46,7 +60,7 @@ class FakeJobRunner : public JobRunner {
       const std::string dir = job.argv.at(4);  // dream run CONFIG --out DIR
       const Outcome outcome = outcome_(dir);
       std::ofstream(job.output_path) << (outcome.exit_code == 0 ? "done\n" : "[12:00:00.000] [error] it broke\n");
-      if (!outcome.summary.is_null()) std::ofstream(dir + "/summary.json") << outcome.summary.dump();
+      if (!outcome.summary.is_null()) std::ofstream(dir + "/summary.json") << AsDreamRunWrites(dir, outcome.summary).dump();
       Finished done;
       done.index = i;
       done.exit_code = outcome.exit_code;

@@ -65,6 +65,40 @@ TEST(SweepPlan, RefusesRepeatedKeysAndHugeSweeps) {
   EXPECT_THROW(SweepPlan(many, {config_overrides::SweepParameter::Parse("steps=" + values)}), std::invalid_argument);
 }
 
+// --zip: keys varied together (a controller's range with its sensor's), the
+// i-th values in one run, in every combination with the --set keys.
+TEST(SweepPlan, ZippedKeysVaryTogetherInEveryCombinationWithTheSetKeys) {
+  using config_overrides::SweepParameter;
+  const SweepPlan plan({1, 2}, {SweepParameter::Parse("controller.hrvo.variant=exact,thesis")},
+                       {SweepParameter::Parse("controller.max_speed_mps=0.1,0.2,0.3"),
+                        SweepParameter::Parse("controller.sensors.0.range_m=0.5,1.0,1.5")});
+  ASSERT_EQ(plan.runs().size(), 2u * 2u * 3u);
+  EXPECT_EQ(plan.parameter_keys(), (std::vector<std::string>{"controller.hrvo.variant", "controller.max_speed_mps",
+                                                             "controller.sensors.0.range_m"}));
+  std::set<std::pair<std::string, std::string>> speed_with_range;
+  for (const SweepPlan::Run& run : plan.runs()) {
+    ASSERT_EQ(run.parameters.size(), 3u);
+    speed_with_range.insert({run.parameters[1].second, run.parameters[2].second});
+  }
+  EXPECT_EQ(speed_with_range, (std::set<std::pair<std::string, std::string>>{{"0.1", "0.5"}, {"0.2", "1.0"}, {"0.3", "1.5"}}));
+  EXPECT_EQ(plan.runs()[0].name, "seed1_variant-exact_max_speed_mps-0.1_range_m-0.5");
+  EXPECT_EQ(plan.runs()[2].name, "seed1_variant-exact_max_speed_mps-0.2_range_m-1.0");
+  EXPECT_EQ(plan.runs()[2].Label(), "seed 1, variant=exact, max_speed_mps=0.2, range_m=1.0");
+}
+
+TEST(SweepPlan, ZippedKeysNeedAsManyValuesAndNoKeyIsSweptTwice) {
+  using config_overrides::SweepParameter;
+  try {
+    SweepPlan({1}, {}, {SweepParameter::Parse("controller.max_speed_mps=0.1,0.2"), SweepParameter::Parse("steps=10,20,30")});
+    FAIL() << "zipped keys with 2 and 3 values were planned";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("--zip steps has 3 values and --zip controller.max_speed_mps 2"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(SweepPlan({1}, {SweepParameter::Parse("steps=1,2")}, {SweepParameter::Parse("steps=3,4")}),
+               std::invalid_argument);
+}
+
 TEST(SweepPlan, RunConfigHasSeedNameAndParametersAndPassesTheConfigCheck) {
   const SweepPlan plan({7},
                        {config_overrides::SweepParameter::Parse("controller.max_speed_mps=0.1"), config_overrides::SweepParameter::Parse("steps=250")});

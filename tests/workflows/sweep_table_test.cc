@@ -42,46 +42,97 @@ std::vector<SweepPlan::Run> Runs(uint64_t count) {
   return SweepPlan(seeds, {}).runs();
 }
 
+/// SweepRunResult::Judge of `summary` as `run`'s own dream run writes it:
+/// with the run's seed, its config's name and a run id of its own.
+SweepRunResult JudgeOwn(const SweepPlan::Run& run, int exit_code, bool timed_out, double wall_time_s,
+                        nlohmann::json summary, const std::string& failure_hint) {
+  if (summary.is_object()) {
+    summary["seed"] = run.seed;
+    summary["run"] = "demo_" + run.name;
+    summary["run_id"] = "00c0ffee" + std::to_string(1000 + run.index);
+  }
+  return SweepRunResult::Judge(run, exit_code, timed_out, wall_time_s, summary, failure_hint);
+}
+
+// Issue 37: a summary.json of another run (another seed, another run's name,
+// no run id, or a run id two runs share) is no result of this run.
+TEST(SweepRunResult, ASummaryOfAnotherRunIsAFailedRowNamingWhy) {
+  const auto runs = Runs(3);
+  nlohmann::json copied = Circle(1990, 1985, 3, 0, 0.21);
+  copied["seed"] = 1;
+  copied["run"] = "demo_seed1";
+  copied["run_id"] = "1234abcd";
+  const SweepRunResult other_seed = SweepRunResult::Judge(runs[1], 0, false, 1.0, copied, "");
+  EXPECT_EQ(other_seed.status, SweepRunResult::Status::kFailed);
+  EXPECT_FALSE(other_seed.success);
+  EXPECT_EQ(other_seed.problem, "summary.json is not this run's: its seed is 1, the run's 2");
+  copied["seed"] = 2;
+  EXPECT_EQ(SweepRunResult::Judge(runs[1], 0, false, 1.0, copied, "").problem,
+            "summary.json is not this run's: it is run 'demo_seed1's, not seed2's");
+  copied["run"] = "demo_seed2";
+  copied.erase("run_id");
+  EXPECT_EQ(SweepRunResult::Judge(runs[1], 0, false, 1.0, copied, "").problem, "summary.json names no run_id");
+  copied["run_id"] = "1234abcd";
+  EXPECT_TRUE(SweepRunResult::Judge(runs[1], 0, false, 1.0, copied, "").success);
+
+  std::vector<SweepRunResult> results;
+  for (const SweepPlan::Run& run : runs) results.push_back(JudgeOwn(run, 0, false, 1.0, Circle(1990, 1985, 3, 0, 0.21), ""));
+  nlohmann::json twin = Circle(1990, 1985, 3, 0, 0.21);
+  twin["seed"] = 3;
+  twin["run"] = "demo_seed3";
+  twin["run_id"] = results[0].run_id;
+  results[2] = SweepRunResult::Judge(runs[2], 0, false, 1.0, twin, "");
+  ASSERT_TRUE(results[2].success);
+  SweepRunResult::RefuseSharedRunIds(results);
+  EXPECT_TRUE(results[1].success);
+  for (size_t copy : {0u, 2u}) {
+    EXPECT_EQ(results[copy].status, SweepRunResult::Status::kFailed);
+    EXPECT_FALSE(results[copy].success);
+    EXPECT_NE(results[copy].problem.find("one is a copy"), std::string::npos) << results[copy].problem;
+  }
+  EXPECT_NE(results[0].problem.find("of run seed3"), std::string::npos) << results[0].problem;
+}
+
 TEST(SweepRunResult, SuccessNeedsAFinishedAcceptedCollisionFreeRunThatMetItsGoal) {
   const auto runs = Runs(5);
-  const SweepRunResult good = SweepRunResult::Judge(runs[0], 0, false, 1.0, Circle(1990, 1985, 3, 0, 0.21), "");
+  const SweepRunResult good = JudgeOwn(runs[0], 0, false, 1.0, Circle(1990, 1985, 3, 0, 0.21), "");
   EXPECT_TRUE(good.success);
   EXPECT_EQ(good.goal.completion_step, 1985);
   EXPECT_EQ(good.goal.detail, "3 of 3 formations");
   EXPECT_EQ(good.OutcomeText(), "success");
 
-  const SweepRunResult short_run = SweepRunResult::Judge(runs[1], 0, false, 1.0, Circle(500, -1, 2, 0, 0.2), "");
+  const SweepRunResult short_run = JudgeOwn(runs[1], 0, false, 1.0, Circle(500, -1, 2, 0, 0.2), "");
   EXPECT_EQ(short_run.status, SweepRunResult::Status::kRan);
   EXPECT_FALSE(short_run.success);
   EXPECT_EQ(short_run.OutcomeText(), "no success (2 of 3 formations)");
 
-  const SweepRunResult crash = SweepRunResult::Judge(runs[2], 3, false, 1.0, Circle(1990, 1985, 3, 4, 0.1), "");
+  const SweepRunResult crash = JudgeOwn(runs[2], 3, false, 1.0, Circle(1990, 1985, 3, 4, 0.1), "");
   EXPECT_EQ(crash.status, SweepRunResult::Status::kRan);
   EXPECT_FALSE(crash.success);
   EXPECT_EQ(crash.OutcomeText(), "no success (4 collision errors)");
 
-  const SweepRunResult died = SweepRunResult::Judge(runs[3], 134, false, 1.0, nullptr, "");
+  const SweepRunResult died = JudgeOwn(runs[3], 134, false, 1.0, nullptr, "");
   EXPECT_EQ(died.status, SweepRunResult::Status::kFailed);
   EXPECT_EQ(died.OutcomeText(), "failed to run (killed by signal 6)");
 
-  const SweepRunResult lost = SweepRunResult::Judge(runs[3], 4, false, 1.0, nullptr, "agents never answered");
+  const SweepRunResult lost = JudgeOwn(runs[3], 4, false, 1.0, nullptr, "agents never answered");
   EXPECT_EQ(lost.OutcomeText(), "failed to run (exit 4: agents never answered)");
-  const SweepRunResult slow = SweepRunResult::Judge(runs[3], 130, true, 61.0, Circle(90, -1, 0, 0, 0.3), "");
+  const SweepRunResult slow = JudgeOwn(runs[3], 130, true, 61.0, Circle(90, -1, 0, 0, 0.3), "");
   EXPECT_EQ(slow.status, SweepRunResult::Status::kFailed);
   EXPECT_EQ(slow.OutcomeText(), "failed to run (timed out after 61 s)");
-  const SweepRunResult stopped = SweepRunResult::Judge(runs[3], 130, false, 1.0, Circle(90, -1, 0, 0, 0.3), "");
+  const SweepRunResult stopped = JudgeOwn(runs[3], 130, false, 1.0, Circle(90, -1, 0, 0, 0.3), "");
   EXPECT_EQ(stopped.status, SweepRunResult::Status::kInterrupted);
   const SweepRunResult unstarted =
-      SweepRunResult::Judge(runs[3], -1, false, 0.0, nullptr, "could not start: disk full");
+      JudgeOwn(runs[3], -1, false, 0.0, nullptr, "could not start: disk full");
   EXPECT_EQ(unstarted.OutcomeText(), "failed to run (could not start: disk full)");
-  const SweepRunResult no_summary = SweepRunResult::Judge(runs[3], 0, false, 1.0, nullptr, "");
+  const SweepRunResult no_summary = JudgeOwn(runs[3], 0, false, 1.0, nullptr, "");
   EXPECT_EQ(no_summary.status, SweepRunResult::Status::kFailed);
 }
 
 TEST(SweepRunResult, AKindWithoutAGoalIsNeverASuccessButSaysNoGoalDeclared) {
   const auto runs = Runs(2);
   const SweepRunResult clean =
-      SweepRunResult::Judge(runs[0], 0, false, 1.0, Summary("python", 700, 0, 0.3, nlohmann::json::object()), "");
+      JudgeOwn(runs[0], 0, false, 1.0, Summary("python", 700, 0, 0.3, nlohmann::json::object()), "");
   EXPECT_EQ(clean.status, SweepRunResult::Status::kRan);
   EXPECT_FALSE(clean.goal.has_criterion);
   EXPECT_FALSE(clean.success);
@@ -89,7 +140,7 @@ TEST(SweepRunResult, AKindWithoutAGoalIsNeverASuccessButSaysNoGoalDeclared) {
   EXPECT_EQ(clean.ShortOutcomeText(), "no goal declared");
   EXPECT_EQ(clean.goal.detail, "no goal declared");
   const SweepRunResult crash =
-      SweepRunResult::Judge(runs[1], 3, false, 1.0, Summary("python", 700, 2, 0.1, nlohmann::json::object()), "");
+      JudgeOwn(runs[1], 3, false, 1.0, Summary("python", 700, 2, 0.1, nlohmann::json::object()), "");
   EXPECT_EQ(crash.OutcomeText(), "no goal declared (2 collision errors)");
 
   SweepTable table({}, runs.size());
@@ -128,10 +179,10 @@ TEST(SweepTable, RowsInPlanOrderAndASummaryOfTheFigures) {
   const auto runs = Runs(5);
   SweepTable table({}, runs.size());
   // Added in the order they finish, not the plan's.
-  table.Add(SweepRunResult::Judge(runs[2], 3, false, 1.0, Circle(2100, 2090, 3, 4, 0.12), ""));
-  table.Add(SweepRunResult::Judge(runs[0], 0, false, 1.0, Circle(1990, 1985, 3, 0, 0.21), ""));
-  table.Add(SweepRunResult::Judge(runs[1], 0, false, 1.0, Circle(2000, 1995, 3, 0, 0.19), ""));
-  table.Add(SweepRunResult::Judge(runs[3], 4, false, 1.0, nullptr, "world lost"));
+  table.Add(JudgeOwn(runs[2], 3, false, 1.0, Circle(2100, 2090, 3, 4, 0.12), ""));
+  table.Add(JudgeOwn(runs[0], 0, false, 1.0, Circle(1990, 1985, 3, 0, 0.21), ""));
+  table.Add(JudgeOwn(runs[1], 0, false, 1.0, Circle(2000, 1995, 3, 0, 0.19), ""));
+  table.Add(JudgeOwn(runs[3], 4, false, 1.0, nullptr, "world lost"));
   ASSERT_EQ(table.results().size(), 4u);
   EXPECT_EQ(table.results()[0].run.seed, 1u);
   EXPECT_EQ(table.results()[3].run.seed, 4u);
@@ -165,7 +216,7 @@ TEST(SweepTable, RowsInPlanOrderAndASummaryOfTheFigures) {
 TEST(SweepTable, CsvHasOneQuotedRowPerRunWithParameterColumns) {
   const SweepPlan plan({1}, {config_overrides::SweepParameter::Parse("controller.goals.0=[0.1, 0.2]")});
   SweepTable table(plan.parameter_keys(), 1);
-  table.Add(SweepRunResult::Judge(plan.runs()[0], 4, false, 2.5, nullptr, "said \"no\", twice"));
+  table.Add(JudgeOwn(plan.runs()[0], 4, false, 2.5, nullptr, "said \"no\", twice"));
   std::istringstream csv(table.Csv());
   std::string header;
   std::string row;
@@ -186,8 +237,8 @@ TEST(SweepTable, CsvHasOneQuotedRowPerRunWithParameterColumns) {
 TEST(SweepTable, MarkdownTableHasAHeaderAndOneLinePerRun) {
   const auto runs = Runs(5);
   SweepTable table({}, 2);
-  table.Add(SweepRunResult::Judge(runs[0], 0, false, 1.0, Circle(1990, 1985, 3, 0, 0.21), ""));
-  table.Add(SweepRunResult::Judge(runs[1], 0, false, 1.0, Circle(600, -1, 1, 0, 0.2), ""));
+  table.Add(JudgeOwn(runs[0], 0, false, 1.0, Circle(1990, 1985, 3, 0, 0.21), ""));
+  table.Add(JudgeOwn(runs[1], 0, false, 1.0, Circle(600, -1, 1, 0, 0.2), ""));
   const std::string md = table.Markdown("Sweep of demo", {});
   EXPECT_EQ(md.rfind("# Sweep of demo\n", 0), 0u);
   EXPECT_NE(md.find("| seed1 | 1 | success | 1990 | 1985 | 0.2100 | 0 | 0 | 2 | 0 | 3 of 3 formations |"),

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "dream/config_overrides/config_text.h"
 #include "dream/files/stopped.h"
 #include "dream/workflows/slurm_jobs.h"
 #include "dream/workflows/sweep_folder.h"
@@ -26,7 +27,7 @@ using testing::SweepWorkflowTest;
 TEST_F(SweepWorkflowTest, LocalSweepWritesEveryRunItsExitRecordAndTheSameTableAsSweepTable) {
   const SweepOutcome outcome = Workflow().Start(settings_, Base());
   EXPECT_EQ(outcome.kind, SweepOutcome::Kind::kFinished);
-  EXPECT_TRUE(outcome.AllRan());
+  EXPECT_TRUE(outcome.AllRan()) << ReadText(out() / "sweep.csv");
   EXPECT_EQ(jobs_asked_, 2);  // one per core
   ASSERT_EQ(started_.size(), 4u);
   EXPECT_EQ(started_[0][0], "/opt/dream/bin/dream");
@@ -184,7 +185,8 @@ TEST_F(SweepWorkflowTest, SlurmRowsSayCancelledPendingAndRunningAndResumeWaitsTh
   const SweepPlan plan = folder.ReadPlan();
   // Run 0 finished on a node; run 1's task was cancelled while it ran; 2 pending, 3 running.
   folder.WriteRunExit(plan.runs()[0].name, {0, 2.5, false, ""});
-  std::ofstream(folder.RunDir(plan.runs()[0].name) + "/summary.json") << FinishedSummary(true, 30, 0.3).dump();
+  std::ofstream(folder.RunDir(plan.runs()[0].name) + "/summary.json")
+      << testing::AsDreamRunWrites(folder.RunDir(plan.runs()[0].name), FinishedSummary(true, 30, 0.3)).dump();
   std::ofstream(folder.Path("slurm/100_1.out")) << "slurmstepd: error: *** JOB 102 ON vm CANCELLED AT 2026-11-27T12:00:00 ***\n";
   slurm_.queue = "100_2|PENDING\n100_3|RUNNING\n";
 
@@ -221,6 +223,43 @@ TEST_F(SweepWorkflowTest, SbatchRefusingTheArrayQuotesIt) {
     FAIL() << "expected sbatch's refusal";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("Invalid partition name"), std::string::npos) << e.what();
+  }
+}
+
+// Planning parses the base config once and copies it per run (YAML::Clone,
+// which keeps no lines); a run whose config is bad is checked again on a fresh
+// parse, so the error still names the run and the key's line in the base file.
+TEST_F(SweepWorkflowTest, ABadRunConfigNamesItsRunAndTheBaseFilesLine) {
+  settings_.sets = {"robots=2,3"};  // 3 robots, 2 initial poses (line 5)
+  try {
+    Workflow().Start(settings_, Base());
+    FAIL() << "a run with 3 robots and 2 initial poses was planned";
+  } catch (const std::exception& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("run seed1_robots-3"), std::string::npos) << message;
+    EXPECT_NE(message.find("base.yaml:5"), std::string::npos) << message;
+  }
+  EXPECT_FALSE(fs::exists(out() / "runs" / "seed1_robots-2" / "config.yaml"));
+}
+
+// Each run's config.yaml is written from the text kept per parameter value
+// (only seed and name emitted afresh): it must be exactly what emitting the
+// whole config gives.
+TEST_F(SweepWorkflowTest, EveryRunsConfigIsTheWholeConfigsText) {
+  settings_.seeds = "1-3";
+  settings_.sets = {"controller.max_speed_mps=0.1,0.2", "controller.goals=[[0.3, 0.3], [-0.3, -0.3]],[[0.1, 0.1], [0, 0]]"};
+  Workflow().Start(settings_, Base());
+  const SweepPlan plan = SweepFolder(out().string()).ReadPlan();
+  ASSERT_EQ(plan.runs().size(), 12u);
+  const std::string base_text = ReadText(settings_.config_path);
+  for (const SweepPlan::Run& run : plan.runs()) {
+    const std::string written = ReadText(SweepFolder(out().string()).RunDir(run.name) + "/config.yaml");
+    const std::string header_end = "--overwrite\n";
+    const size_t body = written.find(header_end);
+    ASSERT_NE(body, std::string::npos) << written;
+    const std::string whole = config_overrides::ConfigText(SweepPlan::MakeRunConfig(base_text, settings_.config_path, run), "");
+    EXPECT_EQ(written.substr(body + header_end.size()), whole) << run.name;
+    EXPECT_NE(written.find("seed: " + std::to_string(run.seed) + "\n"), std::string::npos) << written;
   }
 }
 

@@ -37,6 +37,12 @@ TEST(StepViolationLocatorTest, PlacesABoundaryACollisionAndAnObstacleAtTheirRobo
   }
   EXPECT_EQ(locator.last_step_events().step, 42);
   EXPECT_EQ(locator.last_poses().size(), 4u);
+  // How bad each is: 0.1 m outside; collision centres (0.025 m ahead) 0.1 m apart; robot 3's
+  // centre (-0.975, -0.5) is 0.075 m inside the box's nearest edge, so its 0.0675 m disc reaches
+  // 0.1425 m into it.
+  EXPECT_NEAR(found[0].worst_m, 0.1, 1e-12);
+  EXPECT_NEAR(found[1].worst_m, 0.1, 1e-12);
+  EXPECT_NEAR(found[2].worst_m, 0.0675 + 0.075, 1e-12);
 }
 
 TEST(StepViolationLocatorTest, PosesThatAreNotWholeAndFiniteFindNothing) {

@@ -45,6 +45,26 @@ TEST(ViolationTrackerTest, ConsecutiveStepsOfOneViolationAreOneEntryFromItsFirst
   EXPECT_EQ(located.unlisted, 0);
 }
 
+// An episode keeps the worst of its steps: the farthest outside, the closest pair.
+TEST(ViolationTrackerTest, AnEpisodeKeepsTheWorstOfItsSteps) {
+  ViolationTracker tracker;
+  const std::vector<double> outside = {0.05, 0.2, 0.1}, apart = {0.12, 0.09, 0.11};
+  for (size_t i = 0; i < outside.size(); ++i) {
+    LocatedViolation boundary{Kind::kBoundary, 2, -1, 0, 0, 1.7, 0.9};
+    boundary.worst_m = outside[i];
+    LocatedViolation collision{Kind::kCollision, 0, 1, 0, 0, 0.05, 0.0};
+    collision.worst_m = apart[i];
+    tracker.AddPlaced(static_cast<int64_t>(20 + i), {boundary, collision});
+  }
+  const LocatedViolations& located = tracker.located();
+  ASSERT_EQ(located.listed.size(), 2u);
+  EXPECT_EQ(located.listed[0].first_step, 20);
+  EXPECT_EQ(located.listed[0].last_step, 22);
+  EXPECT_DOUBLE_EQ(located.listed[0].worst_m, 0.2);   // boundary: the largest
+  EXPECT_DOUBLE_EQ(located.listed[1].worst_m, 0.09);  // collision: the smallest
+  EXPECT_DOUBLE_EQ(located.listed[0].x_m, 1.7);       // placed where it started
+}
+
 TEST(ViolationTrackerTest, EachRobotAndObstacleIsItsOwnEntryPlacedAtTheRobot) {
   ViolationTracker tracker;
   StepEvents events = Events(3);

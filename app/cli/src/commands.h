@@ -52,6 +52,9 @@ struct RunArgs {
   int view_port = 8077;         ///< --view-port
   std::string view_bind = "127.0.0.1";  ///< --view-bind
   int view_fps = 0;             ///< --view-fps: frames a second to the page at most; 0: 30, or 10 while the run is fast
+  bool view_wait = false;       ///< --view-wait: no step 0 before a browser has the page open
+  double view_wait_timeout_s = 0.0;  ///< --view-wait-timeout: start anyway after this long; 0: wait until Ctrl-C
+  std::string view_keep = "watched";  ///< --view-keep: how long the replay is served after the run (RunView::Keep)
 };
 
 struct AgentArgs {
@@ -176,6 +179,7 @@ struct SweepArgs {
   std::string config_path;
   std::string seeds;              ///< "1-20", "7", "1,4,9-12"; empty: the config's seed
   std::vector<std::string> sets;  ///< "KEY=V1,V2,..." each
+  std::vector<std::string> zips;  ///< --zip "KEY=V1,V2,..." each
   int jobs = 0;                   ///< runs at once; 0: one per core
   long long steps = 0;            ///< 0: the config's step limit
   std::string out_dir;            ///< empty: sweeps/<name> (or _2, ... when that holds a sweep)

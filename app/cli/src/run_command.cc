@@ -1,6 +1,7 @@
 #include <spdlog/spdlog.h>
 
 #include <memory>
+#include <iostream>
 #include <numeric>
 
 #include "hosted_agents.h"
@@ -20,16 +21,25 @@ int RunEmbedded(const RunArgs& args) {
   const run_config::RunConfig& config = run->config();
   // One process: the world and every agent share one bus, memq:// unless the
   // user asks for a real transport.
+  const RunView::Keep keep = RunView::Keep::Parse(args.view_keep);  // a bad value before anything runs
   lcm::LcmBus bus(args.lcm_url.empty() ? "memq://" : lcm::ResolveLcmUrl(args.lcm_url));
   const std::string out_dir = PrepareOutputDir(args, config);
+  std::unique_ptr<RunView> view;
+  if (args.view) view = std::make_unique<RunView>(bus, config, args.view_bind, args.view_port, args.view_fps);
+  // Before the agents start: none of them waits on a world that waits on a browser.
+  if (view && args.view_wait && !view->WaitForBrowser(args.view_wait_timeout_s)) {
+    std::cout << "dream run: stopped while waiting for a browser; nothing was run" << std::endl;
+    return session::kExitInterrupted;
+  }
   std::vector<int> ids(static_cast<size_t>(config.num_robots));
   std::iota(ids.begin(), ids.end(), 0);
   const HostedAgents agents(bus, config, ids, run->factory(),
                             {config.sim.agent_timeout_s, config.sim.start_timeout_s, 0.0});
-  std::unique_ptr<RunView> view;
-  if (args.view) view = std::make_unique<RunView>(bus, config, args.view_bind, args.view_port, args.view_fps);
   const session::RunResult result = run->Run(bus, {out_dir, ConfigTextForRunFolder(args, config)});
-  if (view) view->ShowEndOf(out_dir);
+  if (view) {
+    view->ServeReplayOf(out_dir);
+    view->KeepServing(keep);  // Ctrl-C here ends the serving, not the run: its exit code stands
+  }
   return session::ExitCodeOf(result);
 }
 
@@ -47,8 +57,10 @@ void DeclareRunCommand(CommandLine& line) {
       "Example: dream run config/go_to_goal.yaml --seed 7 --set controller.max_speed_mps=0.1\n"
       "Watch it: dream run config/go_to_goal.yaml --view (then open http://127.0.0.1:8077/)",
       RunEmbedded, "LCM URL (default memq://, in-process)");
-  command->add_flag("--view", args->view,
-                    "Serve the live arena while the run runs (dream view; paced to real time unless --pace)");
+  CLI::Option* const view = command->add_flag(
+      "--view", args->view,
+      "Serve the live arena while the run runs (dream view; paced to real time unless --pace), then\n"
+      "the finished run as a replay at the same URL (--view-keep)");
   command->add_option("--view-port", args->view_port, "Port of --view's page (0: any free port)")
       ->check(CLI::Range(0, 65535))
       ->capture_default_str();
@@ -56,6 +68,20 @@ void DeclareRunCommand(CommandLine& line) {
                       "Frames a second --view's page gets and draws at most; fewer cost the machine less\n"
                       "(default: 30; 10 while the run goes faster than twice real time, 5 beyond ten times)")
       ->check(CLI::Range(1, view::FrameRates::kMax));
+  command->add_flag("--view-wait", args->view_wait,
+                    "With --view: take no step before a browser has the page open (Ctrl-C to give up)")
+      ->needs(view);
+  command->add_option("--view-wait-timeout", args->view_wait_timeout_s,
+                      "With --view-wait: start the run anyway after this many seconds (default 0: wait until\n"
+                      "a browser comes or Ctrl-C)")
+      ->check(CLI::Range(0.0, 1e6))
+      ->needs(view);
+  command->add_option("--view-keep", args->view_keep,
+                      "With --view: how long the page serves the finished run (a replay, same URL) after the\n"
+                      "run: watched (until Ctrl-C if a browser is connected at the end, else not at all),\n"
+                      "ctrl-c (until Ctrl-C), or a number of seconds (0: stop with the run)")
+      ->capture_default_str()
+      ->needs(view);
   command->add_option("--view-bind", args->view_bind,
                       "Address --view listens on; 127.0.0.1 (the default) is this machine only,\n"
                       "0.0.0.0 exposes the page to the network on purpose")

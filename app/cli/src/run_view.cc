@@ -2,12 +2,20 @@
 
 #include <spdlog/spdlog.h>
 
+#include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <exception>
 #include <iostream>
+#include <stdexcept>
+#include <thread>
 #include <utility>
 
+#include "commands.h"
 #include "data_files.h"
 #include "dream/session/render_overlays.h"
+#include "dream/view/frame_json.h"
+#include "view_replay.h"
 
 namespace dream::cli {
 
@@ -60,11 +68,100 @@ RunView::RunView(lcm::LcmInterface& bus, const run_config::RunConfig& config, co
   }
 }
 
-void RunView::ShowEndOf(const std::string& run_dir) {
+namespace {
+
+std::string FormatSeconds(double seconds) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%g s", seconds);
+  return text;
+}
+
+/// Waits, a tenth of a second at a time, until `done` or Ctrl-C or the
+/// deadline (none when `seconds` <= 0); returns whether `done`.
+template <typename Done>
+bool WaitUntil(Done done, double seconds) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  while (!done()) {
+    if (StopFlag().load() || (seconds > 0 && std::chrono::steady_clock::now() >= deadline)) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  return true;
+}
+
+}  // namespace
+
+bool RunView::WaitForBrowser(double timeout_s) {
+  std::cout << "dream view: waiting for a browser at " << server_.url() << " before step 0 (Ctrl-C to stop"
+            << (timeout_s > 0 ? ", the run starts anyway after " + FormatSeconds(timeout_s) : std::string()) << ")"
+            << std::endl;
+  if (WaitUntil([this] { return server_.clients() > 0; }, timeout_s)) {
+    std::cout << "dream view: a browser is watching: the run starts" << std::endl;
+    return true;
+  }
+  if (StopFlag().load()) return false;
+  std::cout << "dream view: no browser within " << FormatSeconds(timeout_s) << ": the run starts" << std::endl;
+  return true;
+}
+
+void RunView::ServeReplayOf(const std::string& run_dir) {
   try {
     live_->ShowEndOf(run_dir + "/run.lcmlog");
   } catch (const std::exception& e) {
     spdlog::warn("dream view: the page shows the run without its last step: {}", e.what());
+  }
+  live_.reset();  // its last frame is out; no live frame may follow the replay's setup
+  try {
+    const ViewReplay replay = ViewReplay::OfRun(run_dir, "");
+    server_.ServeReplay(view::SetupJson(replay.setup), replay.run_json);
+    std::cout << "dream view: the run is over; " << server_.url() << " replays it. Later: dream view " << run_dir
+              << std::endl;
+  } catch (const std::exception& e) {
+    spdlog::warn("dream view: the page keeps the run's live end, not its replay: {}", e.what());
+  }
+}
+
+RunView::Keep RunView::Keep::Parse(const std::string& text) {
+  Keep keep;
+  if (text == "watched") return keep;
+  if (text == "ctrl-c") {
+    keep.until = Until::kCtrlC;
+    return keep;
+  }
+  size_t used = 0;
+  double seconds = -1.0;
+  try {
+    seconds = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || !std::isfinite(seconds) || seconds < 0) {
+    throw std::runtime_error("--view-keep " + text +
+                             ": not watched, ctrl-c or a number of seconds (0 or more) to serve the page after the run");
+  }
+  keep.until = Until::kSeconds;
+  keep.seconds = seconds;
+  return keep;
+}
+
+void RunView::KeepServing(const Keep& keep) {
+  if (StopFlag().load()) return;  // the run was interrupted: the user is leaving
+  switch (keep.until) {
+    case Keep::Until::kWatched:
+      if (server_.clients() == 0) return;
+      std::cout << "dream view: a browser is watching: serving until Ctrl-C (--view-keep 0 to stop at the run's end)"
+                << std::endl;
+      WaitUntil([] { return false; }, 0);
+      return;
+    case Keep::Until::kCtrlC:
+      std::cout << "dream view: serving until Ctrl-C" << std::endl;
+      WaitUntil([] { return false; }, 0);
+      return;
+    case Keep::Until::kSeconds:
+      if (keep.seconds <= 0) return;
+      std::cout << "dream view: serving for " << FormatSeconds(keep.seconds) << " (Ctrl-C to stop sooner)"
+                << std::endl;
+      WaitUntil([] { return false; }, keep.seconds);
+      return;
   }
 }
 

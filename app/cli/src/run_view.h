@@ -11,17 +11,38 @@
 namespace dream::cli {
 
 /// `dream run --view`: the live arena served while the run runs in this
-/// process. Its bus handler only keeps the newest frame; the simulator's
-/// loop drives it, the view never waits for a browser.
+/// process, then the finished run as a replay at the same URL. Its bus
+/// handler only keeps the newest frame; the simulator's loop drives it, the
+/// view never waits for a browser (except before step 0, when asked:
+/// WaitForBrowser).
 class RunView {
  public:
   /// Listens on `bind`:`port` and prints the page's address.
   /// @throws std::runtime_error when it cannot listen there.
   RunView(lcm::LcmInterface& bus, const run_config::RunConfig& config, const std::string& bind, int port,
           int frames_per_second = 0);  ///< 0: FrameRates' defaults (30, fewer while the run is fast)
-  /// Shows the run's end, from its log in `run_dir` (the last messages of a
-  /// memq run are never handled); a log that cannot be read is only logged.
-  void ShowEndOf(const std::string& run_dir);
+  /// --view-wait: waits until a browser has the page open, so the user sees
+  /// step 0. Returns false when Ctrl-C came first (StopFlag), true when a
+  /// browser connected or `timeout_s` (> 0; 0: none) passed, which it says.
+  bool WaitForBrowser(double timeout_s);
+  /// The run is over: shows its end (its last step, from `run_dir`'s log: the
+  /// last messages of a memq run are never handled), then serves it as the
+  /// replay `dream view run_dir` gives, at the same URL: the pages open now
+  /// load it and show its last step with summary.json's verdict, goal and
+  /// metrics. A run folder that cannot be replayed is only logged (the page
+  /// keeps the live end). Prints the replay command.
+  void ServeReplayOf(const std::string& run_dir);
+  /// How long the page is served after the run (--view-keep).
+  struct Keep {
+    enum class Until { kWatched, kCtrlC, kSeconds };
+    Until until = Until::kWatched;  ///< kWatched: until Ctrl-C if a browser is connected now, else not at all
+    double seconds = 0.0;           ///< kSeconds: this long, or less at Ctrl-C
+    /// "watched", "ctrl-c" or seconds (0: stop at once).
+    /// @throws std::runtime_error naming --view-keep and the value.
+    static Keep Parse(const std::string& text);
+  };
+  /// Serves the page as `keep` says, saying so and how to stop.
+  void KeepServing(const Keep& keep);
 
  private:
   view::ViewServer server_;

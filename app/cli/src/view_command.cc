@@ -1,9 +1,7 @@
 #include <spdlog/spdlog.h>
 
 #include <chrono>
-#include <filesystem>
 #include <iostream>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -11,24 +9,19 @@
 
 #include "command_line.h"
 #include "commands.h"
-#include "dream/files/file_text.h"
 #include "dream/run_config/run_config.h"
-#include "dream/session/experiment_goal.h"
 #include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/lcm_url.h"
-#include "dream/run_log/run_log.h"
 #include "dream/view/frame_json.h"
 #include "dream/view/live_view.h"
-#include "dream/view/replay_json.h"
 #include "dream/view/thread_priority.h"
 #include "dream/view/view_server.h"
 #include "run_view.h"
 #include "shared_options.h"
+#include "view_replay.h"
 
 namespace dream::cli {
 namespace {
-
-namespace fs = std::filesystem;
 
 struct ViewArgs {
   std::string run;          ///< a run folder or .lcmlog to replay; empty: live from the bus
@@ -39,31 +32,6 @@ struct ViewArgs {
   int fps = 0;  ///< live: frames a second to each page at most; 0: FrameRates' defaults (30, fewer while the run is fast)
 };
 
-/// The run's config: --config, else (replay) config.yaml beside the log. One
-/// that cannot be read or is another run's is an error when given, a
-/// warning when found beside the log.
-std::optional<run_config::RunConfig> ConfigOfRun(const ViewArgs& args, const std::string& log_path, int log_robots) {
-  std::string path = args.config_path;
-  if (path.empty() && !log_path.empty()) {
-    const fs::path beside = fs::path(log_path).parent_path() / "config.yaml";
-    if (!fs::is_regular_file(beside)) return std::nullopt;
-    path = beside.string();
-  }
-  if (path.empty()) return std::nullopt;
-  try {
-    run_config::RunConfig config = run_config::LoadRunConfigFile(path);
-    if (log_robots > 0 && config.num_robots != log_robots) {
-      throw std::runtime_error(path + " has " + std::to_string(config.num_robots) + " robots, " + log_path + " " +
-                               std::to_string(log_robots) + ": not this run's config");
-    }
-    return config;
-  } catch (const std::exception& e) {
-    if (!args.config_path.empty()) throw;
-    spdlog::warn("dream view: drawing without the config's goals and radio: {}", e.what());
-    return std::nullopt;
-  }
-}
-
 void WaitForCtrlC() {
   while (!StopFlag().load()) std::this_thread::sleep_for(std::chrono::milliseconds(100));
 }
@@ -71,8 +39,8 @@ void WaitForCtrlC() {
 int RunLiveView(const ViewArgs& args) {
   const std::string url = lcm::ResolveLcmUrl(args.lcm_url);
   view::ViewSetup setup;
-  if (const std::optional<run_config::RunConfig> config = ConfigOfRun(args, "", 0)) {
-    setup = ViewSetupOfConfig(*config, view::ViewSetup::Mode::kLive, url);
+  if (!args.config_path.empty()) {
+    setup = ViewSetupOfConfig(run_config::LoadRunConfigFile(args.config_path), view::ViewSetup::Mode::kLive, url);
   }
   setup.mode = view::ViewSetup::Mode::kLive;
   setup.source = url;
@@ -92,46 +60,12 @@ int RunLiveView(const ViewArgs& args) {
   return kExitOk;
 }
 
-/// The run's judgement from summary.json beside its log: what the page shows
-/// as the verdict at the run's end (none without a readable summary).
-std::optional<view::ViewSetup::Judged> JudgedOfRun(const std::string& log_path) {
-  const std::string summary_path = (fs::path(log_path).parent_path() / "summary.json").string();
-  std::error_code error;
-  if (!fs::exists(summary_path, error)) return std::nullopt;
-  try {
-    const nlohmann::json summary = nlohmann::json::parse(files::ReadFileText(summary_path));
-    view::ViewSetup::Judged judged;
-    judged.verdict = summary.value("verdict", std::string());
-    if (judged.verdict.empty()) return std::nullopt;
-    for (const nlohmann::json& reason : summary.value("verdict_reasons", nlohmann::json::array())) {
-      if (reason.is_object()) judged.reasons.push_back(reason.value("rule", "?") + ": " + reason.value("problem", ""));
-    }
-    judged.goal = session::ExperimentGoal::Text(summary.value("goal", nlohmann::json::object()));
-    return judged;
-  } catch (const std::exception& e) {
-    spdlog::warn("{}: not read, the page shows the verdict of the counts only: {}", summary_path, e.what());
-    return std::nullopt;
-  }
-}
-
 int RunReplayView(const ViewArgs& args) {
-  const std::string log_path = RunLogPath(args.run);
-  const run_log::RunLog log = run_log::RunLog::Read(log_path);
-  if (log.poses().empty()) {
-    throw std::runtime_error(log_path + ": no DREAM_POSES that decode: nothing to replay" +
-                             (log.Flaw(true) ? " (" + *log.Flaw(true) + ")" : std::string()));
-  }
-  view::ViewSetup setup;
-  if (const std::optional<run_config::RunConfig> config = ConfigOfRun(args, log_path, log.num_robots())) {
-    setup = ViewSetupOfConfig(*config, view::ViewSetup::Mode::kReplay, args.run, fs::absolute(log_path).parent_path().string());
-  }
-  setup.mode = view::ViewSetup::Mode::kReplay;
-  setup.source = args.run;
-  setup.judged = JudgedOfRun(log_path);
+  const ViewReplay replay = ViewReplay::OfRun(args.run, args.config_path);
   view::ViewServer server({args.bind, args.port, true, 8});
-  server.SetSetup(view::SetupJson(setup));
-  server.SetRunData(view::RunReplayJson(log, setup));
-  std::cout << "dream view: open " << server.url() << " (replay of " << args.run << ", " << log.poses().size()
+  server.SetSetup(view::SetupJson(replay.setup));
+  server.SetRunData(replay.run_json);
+  std::cout << "dream view: open " << server.url() << " (replay of " << args.run << ", " << replay.steps
             << " steps); Ctrl-C to stop" << std::endl;
   WaitForCtrlC();
   return kExitOk;

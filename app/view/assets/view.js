@@ -128,6 +128,25 @@
       show("goal", judged.goal);
       $("verdict").title = judged.reasons.join("\n");
     }
+    showMetrics(judged ? judged.metrics || [] : []);
+  }
+
+  // The experiment's metrics as summary.json holds them, at a judged run's end.
+  function showMetrics(metrics) {
+    const block = $("metrics-block");
+    if (block.hidden !== (metrics.length === 0)) block.hidden = metrics.length === 0;
+    const key = metrics.map(([name, value]) => `${name}=${value}`).join(";");
+    if ($("metrics").dataset.shown === key) return;  // unchanged: no layout for the page
+    $("metrics").dataset.shown = key;
+    $("metrics").replaceChildren(...metrics.map(([name, value]) => {
+      const row = document.createElement("tr");
+      for (const text of [name, value]) {
+        const cell = document.createElement("td");
+        cell.textContent = text;
+        row.appendChild(cell);
+      }
+      return row;
+    }));
   }
 
   // A run id as logs and summary.json print it: 16 hex digits (the frame
@@ -164,16 +183,62 @@
     document.body.dataset.otherWorld = other ? other.run : "";
   }
 
+  // A violation held over many steps is one episode (kind, robots, first and last step), as
+  // summary.json's violations_located lists it: one line per episode, not per step.
+  function episodesOf(marks) {
+    const open = new Map();
+    const episodes = [];
+    for (const m of [...marks].sort((a, b) => a.step - b.step)) {
+      const key = `${m.kind}/${m.robot}/${m.other}`;
+      const going = open.get(key);
+      if (going && m.step <= going.last + 1) {
+        going.last = Math.max(going.last, m.step);
+        if (worse(m.kind, m.worst, going.worst)) going.worst = m.worst;
+        continue;
+      }
+      const episode = { kind: m.kind, robot: m.robot, other: m.other, first: m.step, last: m.step, x: m.x, y: m.y,
+                        worst: m.worst };
+      open.set(key, episode);
+      episodes.push(episode);
+    }
+    return episodes;
+  }
+
+  // The worst of an episode: the farthest outside or deepest overlap, the closest pair.
+  function worse(kind, value, worst) {
+    if (typeof value !== "number") return false;
+    if (typeof worst !== "number") return true;
+    return kind === "collision" ? value < worst : value > worst;
+  }
+
+  function describeEpisode(e) {
+    const steps = e.first === e.last ? `step ${e.first}` : `steps ${e.first}-${e.last}`;
+    const worst = typeof e.worst !== "number" ? ""
+      : e.kind === "collision" ? `, closest ${(e.worst * 100).toFixed(1)} cm`
+        : e.kind === "obstacle" ? `, ${(e.worst * 100).toFixed(1)} cm in at worst`
+          : `, ${(e.worst * 100).toFixed(1)} cm out at worst`;
+    return DreamArena.describe({ ...e, step: e.first }).replace(/step \d+$/, steps) + worst;
+  }
+
+  // The episodes of `marks`, worked out again only when the marks changed.
+  function episodesCached(marks) {
+    const last = marks[marks.length - 1];
+    const key = `${marks.length}/${last ? last.step : -1}`;
+    if (!view.episodeCache || view.episodeCache.key !== key) view.episodeCache = { key, episodes: episodesOf(marks) };
+    return view.episodeCache.episodes;
+  }
+
   function showViolationList(marks) {
     const list = $("violation-list");
     const last = marks[marks.length - 1];
     const key = `${marks.length}/${last ? last.step : -1}`;
     if (list.dataset.shown === key) return;  // unchanged: no work for the page's layout
     list.dataset.shown = key;
-    const latest = marks.slice(-50).reverse();
-    list.replaceChildren(...latest.map((m) => {
+    const episodes = episodesCached(marks);
+    const latest = episodes.slice().sort((a, b) => b.last - a.last || b.first - a.first).slice(0, 50);
+    list.replaceChildren(...latest.map((e) => {
       const item = document.createElement("li");
-      item.textContent = `${DreamArena.describe(m)} at (${m.x.toFixed(2)}, ${m.y.toFixed(2)})`;
+      item.textContent = `${describeEpisode(e)}, first at (${e.x.toFixed(2)}, ${e.y.toFixed(2)})`;
       return item;
     }));
   }
@@ -181,11 +246,12 @@
   function publishState(extra) {
     const s = view.scene;
     const robots = s ? s.x.map((x, id) => ({ id, x, y: s.y[id], theta: s.th[id] })) : [];
-    const marks = [...view.marks.values()].map(({ kind, step, robot, other, x, y }) => ({ kind, step, robot, other, x, y }));
+    const marks = [...view.marks.values()].map(({ kind, step, robot, other, x, y, worst }) =>
+      ({ kind, step, robot, other, x, y, worst }));
     view.state = {
       mode: view.setup ? view.setup.mode : null, connected: view.connected === true, run: view.run,
       step: s ? s.step : -1, t: s ? s.t : 0, frames: view.frames, robots, counts: view.counts,
-      verdict: shownVerdict(view.counts), violations: marks,
+      verdict: shownVerdict(view.counts), violations: marks, episodes: episodesCached(marks),
       flashing: s && s.marks ? s.marks.filter((m) => m.flash > 0).length : 0,
       links: s && s.links ? s.links.length : 0, measured: !!(s && s.mx), otherWorld: null, ...extra,
     };
@@ -341,7 +407,8 @@
     $("scrub").oninput = () => seek(Number($("scrub").value));
     $("speed").onchange = () => { view.replay.speed = Number($("speed").value); replayScene(view.replay.index); };
     resize();
-    seek(0);
+    // A run that was watched live and is over: the replay opens on its last step, where its verdict is.
+    seek(view.live ? run.steps.length - 1 : 0);
   }
 
   function advanceReplay(now) {
@@ -382,6 +449,11 @@
     socket.onclose = () => {
       view.connected = false;
       document.body.dataset.connected = "false";
+      if (view.replay) {
+        // The page holds the whole run: nothing to reconnect for.
+        $("connection").textContent = `dream stopped serving; the replay stays here (again: dream view ${view.setup.source})`;
+        return;
+      }
       $("connection").textContent = "disconnected: retrying";
       setTimeout(connect, 1000);
     };

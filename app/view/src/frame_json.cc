@@ -1,5 +1,6 @@
 #include "dream/view/frame_json.h"
 
+#include <cmath>
 #include <string_view>
 
 #include "dream/robotarium/robotarium_constants.h"
@@ -64,6 +65,7 @@ void AppendViolation(JsonWriter& json, const ViolationMark& mark) {
   json.Key("other").Integer(mark.other);
   json.Key("x").Number(mark.x_m, kMetres);
   json.Key("y").Number(mark.y_m, kMetres);
+  if (std::isfinite(mark.worst_m)) json.Key("worst").Number(mark.worst_m, kMetres);
   json.EndObject();
 }
 
@@ -156,6 +158,11 @@ void AppendSetupFields(JsonWriter& json, const ViewSetup& setup) {
     for (const std::string& reason : setup.judged->reasons) json.String(reason);
     json.EndArray();
     json.Key("goal").String(setup.judged->goal);
+    json.Key("metrics").BeginArray();
+    for (const auto& [name, value] : setup.judged->metrics) {
+      json.BeginArray().String(name).String(value).EndArray();
+    }
+    json.EndArray();
     json.EndObject();
   }
 }

@@ -150,6 +150,20 @@ void ViewServer::SetRunData(std::string run_json) {
   net::post(impl_->io_, [impl = impl_.get(), data] { impl->shared_->run_data = data; });
 }
 
+void ViewServer::ServeReplay(std::string setup_json, std::string run_json) {
+  auto setup = std::make_shared<const std::string>(std::move(setup_json));
+  auto data = std::make_shared<const std::string>(std::move(run_json));
+  net::post(impl_->io_, [impl = impl_.get(), setup, data] {
+    ServerShared& shared = *impl->shared_;
+    shared.run_data = data;
+    shared.filter.ServeRunData();
+    shared.setup = setup;
+    shared.latest_frame = nullptr;  // a browser that connects now gets the replay's setup alone
+    impl->Broadcast(setup);         // pages open now: the setup tells them to load /run.json
+    shared.latest_frame = nullptr;
+  });
+}
+
 void ViewServer::SetClientMessageHandler(std::function<void(const std::string&)> handler) {
   std::lock_guard<std::mutex> lock(impl_->shared_->client_message_mutex);
   impl_->shared_->on_client_message = std::move(handler);

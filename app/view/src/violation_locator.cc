@@ -11,7 +11,9 @@ void ViolationLocator::Locate(const robot_poses_t& poses, const obstacles_t& obs
   render::ObstacleStatesOf(obstacles, &boxes_);
   found_.clear();
   locator_.Locate(poses.step, poses.num_robots, poses.x, poses.y, poses.theta, boxes_, &found_);
-  for (const world::LocatedViolation& v : found_) marks->push_back({v.kind, poses.step, v.robot, v.other, v.x_m, v.y_m});
+  for (const world::LocatedViolation& v : found_) {
+    marks->push_back({v.kind, poses.step, v.robot, v.other, v.x_m, v.y_m, v.worst_m});
+  }
 }
 
 }  // namespace dream::view

@@ -52,17 +52,34 @@ std::string SweepPlan::Run::Label() const {
   return label;
 }
 
-SweepPlan::SweepPlan(const std::vector<uint64_t>& seeds, const std::vector<config_overrides::SweepParameter>& parameters) {
+SweepPlan::SweepPlan(const std::vector<uint64_t>& seeds, const std::vector<config_overrides::SweepParameter>& parameters,
+                     const std::vector<config_overrides::SweepParameter>& zipped) {
   if (seeds.empty()) throw std::invalid_argument("--seeds: no seeds to run");
-  size_t combinations = 1;
+  // Each --set is a dimension of its own; the --zip keys are one dimension
+  // together, their i-th values in the same run.
+  std::vector<std::vector<Run::Values>> dimensions;
   for (const config_overrides::SweepParameter& parameter : parameters) {
-    for (const std::string& key : keys_) {
-      if (key == parameter.key)
-        throw std::invalid_argument("--set " + key + " is given twice; list every value in one --set");
+    AddKey(parameter, "--set");
+    std::vector<Run::Values> choices;
+    for (const std::string& value : parameter.values) choices.push_back({{parameter.key, value}});
+    dimensions.push_back(std::move(choices));
+  }
+  if (!zipped.empty()) {
+    std::vector<Run::Values> choices(zipped.front().values.size());
+    for (const config_overrides::SweepParameter& parameter : zipped) {
+      AddKey(parameter, "--zip");
+      if (parameter.values.size() != choices.size()) {
+        throw std::invalid_argument("--zip " + parameter.key + " has " + std::to_string(parameter.values.size()) +
+                                    " values and --zip " + zipped.front().key + " " + std::to_string(choices.size()) +
+                                    "; keys zipped together need as many values each");
+      }
+      for (size_t i = 0; i < choices.size(); ++i) choices[i].emplace_back(parameter.key, parameter.values[i]);
     }
-    keys_.push_back(parameter.key);
-    if (parameter.values.empty()) throw std::invalid_argument("--set " + parameter.key + ": no values");
-    combinations *= parameter.values.size();
+    dimensions.push_back(std::move(choices));
+  }
+  size_t combinations = 1;
+  for (const std::vector<Run::Values>& choices : dimensions) {
+    combinations *= choices.size();
     if (combinations * seeds.size() > kMaxSweepRuns) {
       throw std::invalid_argument("the sweep would have more than " + std::to_string(kMaxSweepRuns) + " runs");
     }
@@ -71,34 +88,48 @@ SweepPlan::SweepPlan(const std::vector<uint64_t>& seeds, const std::vector<confi
   for (uint64_t seed : seeds) largest_seed = std::max(largest_seed, seed);
   const size_t seed_width = std::to_string(largest_seed).size();
 
-  // Parameters outer (the first --set slowest), seeds inner: the table lists
+  // Dimensions outer (the first --set slowest), seeds inner: the table lists
   // every seed of one combination together.
   std::set<std::string> names;
   for (size_t combination = 0; combination < combinations; ++combination) {
-    std::vector<std::pair<std::string, std::string>> values;
+    Run::Values values;
     size_t rest = combination;
-    for (size_t p = parameters.size(); p-- > 0;) {
-      const std::vector<std::string>& choices = parameters[p].values;
-      values.insert(values.begin(), {parameters[p].key, choices[rest % choices.size()]});
-      rest /= choices.size();
+    for (size_t d = dimensions.size(); d-- > 0;) {
+      const Run::Values& choice = dimensions[d][rest % dimensions[d].size()];
+      values.insert(values.begin(), choice.begin(), choice.end());
+      rest /= dimensions[d].size();
     }
-    for (uint64_t seed : seeds) {
-      Run run;
-      run.index = runs_.size();
-      run.seed = seed;
-      run.parameters = values;
-      run.name = "seed" + ZeroPadded(seed, seed_width);
-      for (size_t p = 0; p < parameters.size(); ++p) {
-        run.name += "_" + FolderSafe(parameters[p].ShortName(), 40) + "-" + FolderSafe(values[p].second, 40);
-      }
-      // Values that differ only in characters made safe would share a folder.
-      if (!names.insert(run.name).second) {
-        run.name += "_" + std::to_string(run.index);
-        names.insert(run.name);
-      }
-      runs_.push_back(std::move(run));
+    for (uint64_t seed : seeds) AddRun(seed, seed_width, values, &names);
+  }
+}
+
+void SweepPlan::AddKey(const config_overrides::SweepParameter& parameter, const std::string& option) {
+  for (const std::string& key : keys_) {
+    if (key == parameter.key) {
+      throw std::invalid_argument(option + " " + key + ": the key is swept already; give each key once, with all its "
+                                  "values (in one --set, or in one --zip to vary it with other keys)");
     }
   }
+  if (parameter.values.empty()) throw std::invalid_argument(option + " " + parameter.key + ": no values");
+  keys_.push_back(parameter.key);
+}
+
+void SweepPlan::AddRun(uint64_t seed, size_t seed_width, const Run::Values& values, std::set<std::string>* names) {
+  Run run;
+  run.index = runs_.size();
+  run.seed = seed;
+  run.parameters = values;
+  run.name = "seed" + ZeroPadded(seed, seed_width);
+  for (const auto& [key, value] : values) {
+    config_overrides::SweepParameter parameter{key, {}};
+    run.name += "_" + FolderSafe(parameter.ShortName(), 40) + "-" + FolderSafe(value, 40);
+  }
+  // Values that differ only in characters made safe would share a folder.
+  if (!names->insert(run.name).second) {
+    run.name += "_" + std::to_string(run.index);
+    names->insert(run.name);
+  }
+  runs_.push_back(std::move(run));
 }
 
 SweepPlan SweepPlan::FromRuns(std::vector<std::string> parameter_keys, std::vector<Run> runs) {
@@ -117,7 +148,7 @@ SweepPlan SweepPlan::FromRuns(std::vector<std::string> parameter_keys, std::vect
   return plan;
 }
 
-YAML::Node SweepPlan::MakeRunConfig(const std::string& base_text, const std::string& source_name, const Run& run) {
+YAML::Node SweepPlan::ParseBase(const std::string& base_text, const std::string& source_name) {
   YAML::Node root;
   try {
     root = YAML::Load(base_text);
@@ -125,6 +156,22 @@ YAML::Node SweepPlan::MakeRunConfig(const std::string& base_text, const std::str
     throw std::invalid_argument(source_name + ":" + std::to_string(e.mark.line + 1) + ": not valid YAML: " + e.msg);
   }
   if (!root.IsMap()) throw std::invalid_argument(source_name + ": the config must be a YAML mapping of keys");
+  return root;
+}
+
+YAML::Node SweepPlan::MakeRunConfig(const std::string& base_text, const std::string& source_name, const Run& run) {
+  YAML::Node root = ParseBase(base_text, source_name);
+  ApplyRun(root, source_name, run);
+  return root;
+}
+
+YAML::Node SweepPlan::MakeRunConfig(const YAML::Node& parsed_base, const std::string& source_name, const Run& run) {
+  YAML::Node root = YAML::Clone(parsed_base);
+  ApplyRun(root, source_name, run);
+  return root;
+}
+
+void SweepPlan::ApplyRun(YAML::Node& root, const std::string& source_name, const Run& run) {
   config_overrides::ApplyConfigOverride(root, "seed", std::to_string(run.seed), source_name);
   for (const auto& [key, value] : run.parameters) config_overrides::ApplyConfigOverride(root, key, value, source_name);
   const YAML::Node& read_only = root;
@@ -146,7 +193,6 @@ YAML::Node SweepPlan::MakeRunConfig(const std::string& base_text, const std::str
   if (read_only["name"].IsScalar()) {
     config_overrides::ApplyConfigOverride(root, "name", read_only["name"].Scalar() + "_" + run.name, source_name);
   }
-  return root;
 }
 
 }  // namespace dream::workflows

@@ -1,5 +1,7 @@
 #include "dream/workflows/sweep_run_result.h"
 
+#include <map>
+
 #include "dream/session/run_exit_code.h"
 #include "dream/world/printf_text.h"
 
@@ -14,6 +16,26 @@ long long Count(const nlohmann::json& object, const char* key) {
 std::string Text(const nlohmann::json& object, const char* key) {
   const auto it = object.find(key);
   return it != object.end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+
+/// Why `summary` is not `run`'s own (another seed's, another run's, or
+/// without a run id); empty when it is.
+std::string OtherRunsSummary(const SweepPlan::Run& run, const nlohmann::json& summary) {
+  const auto seed = summary.find("seed");
+  const bool same_seed = seed != summary.end() && seed->is_number_integer() &&
+                         (seed->is_number_unsigned() ? seed->get<uint64_t>() == run.seed
+                                                     : seed->get<int64_t>() >= 0 && static_cast<uint64_t>(seed->get<int64_t>()) == run.seed);
+  if (!same_seed) {
+    return "summary.json is not this run's: its seed is " + (seed == summary.end() ? std::string("missing") : seed->dump()) +
+           ", the run's " + std::to_string(run.seed);
+  }
+  const std::string name = Text(summary, "run");
+  const std::string suffix = "_" + run.name;
+  const bool names_run =
+      name == run.name || (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0);
+  if (!names_run) return "summary.json is not this run's: it is run '" + name.substr(0, 80) + "'s, not " + run.name + "'s";
+  if (Text(summary, "run_id").empty()) return "summary.json names no run_id";
+  return {};
 }
 
 SweepRunResult WithoutResult(const SweepPlan::Run& run, SweepRunResult::Status status, const std::string& why) {
@@ -34,6 +56,7 @@ SweepRunResult SweepRunResult::Judge(const SweepPlan::Run& run, int exit_code, b
   result.wall_time_s = wall_time_s;
   result.has_summary = summary.is_object();
   if (result.has_summary) {
+    result.run_id = Text(summary, "run_id");
     result.end = Text(summary, "end");
     result.verdict = Text(summary, "verdict");
     result.steps = Count(summary, "steps");
@@ -65,6 +88,8 @@ SweepRunResult SweepRunResult::Judge(const SweepPlan::Run& run, int exit_code, b
                      hint;
   } else if (!result.has_summary) {
     result.problem = "exit " + std::to_string(exit_code) + " but no readable summary.json";
+  } else if (const std::string other = OtherRunsSummary(run, summary); !other.empty()) {
+    result.problem = other;
   } else if (result.end != "finished") {
     result.problem = "run ended '" + result.end + "'" + hint;
   } else {
@@ -82,6 +107,23 @@ SweepRunResult SweepRunResult::NotRun(const SweepPlan::Run& run, const std::stri
 
 SweepRunResult SweepRunResult::LostRun(const SweepPlan::Run& run, const std::string& why) {
   return WithoutResult(run, Status::kFailed, why);
+}
+
+void SweepRunResult::RefuseSharedRunIds(std::vector<SweepRunResult>& results) {
+  std::map<std::string, size_t> first_with_id;
+  for (size_t i = 0; i < results.size(); ++i) {
+    if (results[i].run_id.empty()) continue;
+    const auto [first, inserted] = first_with_id.emplace(results[i].run_id, i);
+    if (inserted) continue;
+    for (size_t copy : {first->second, i}) {
+      SweepRunResult& result = results[copy];
+      const SweepRunResult& other = results[copy == i ? first->second : i];
+      result.status = Status::kFailed;
+      result.success = false;
+      result.problem = "summary.json has the run id " + result.run_id + " of run " + other.run.name +
+                       " too: one is a copy";
+    }
+  }
 }
 
 std::string SweepRunResult::OutcomeText() const {

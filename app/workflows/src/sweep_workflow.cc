@@ -44,6 +44,7 @@ std::string Quoted(const std::string& text) {
 std::string ReproducingCommand(const SweepSettings& s, const std::string& seeds, int jobs, const std::string& out_dir) {
   std::string line = "dream sweep " + Quoted(s.config_path) + " --seeds " + seeds;
   for (const std::string& set : s.sets) line += " --set " + Quoted(set);
+  for (const std::string& zip : s.zips) line += " --zip " + Quoted(zip);
   if (jobs > 0) line += " --jobs " + std::to_string(jobs);
   if (s.steps > 0) line += " --steps " + std::to_string(s.steps);
   if (s.engine != SweepSettings::Engine::kLocal) line += " --engine " + SweepSettings::EngineName(s.engine);
@@ -85,6 +86,7 @@ nlohmann::json SettingsJson(const SweepSettings& s, const std::string& base_name
           {"config", fs::absolute(s.config_path).lexically_normal().string()},
           {"seeds", s.seeds},
           {"sets", s.sets},
+          {"zips", s.zips},
           {"steps", s.steps},
           {"engine", SweepSettings::EngineName(s.engine)},
           {"jobs", jobs},
@@ -168,7 +170,9 @@ SweepOutcome SweepWorkflow::RunAll(const SweepFolder& folder, const PreparedSwee
   const size_t count = plan.runs().size();
   spdlog::info("sweep: {} runs of {} ({} seeds{}), {} at a time on {} cores -> {}", count, base_name,
                prepared.seed_count(),
-               s.sets.empty() ? std::string() : " x " + std::to_string(count / prepared.seed_count()) + " parameter sets",
+               s.sets.empty() && s.zips.empty()
+                   ? std::string()
+                   : " x " + std::to_string(count / prepared.seed_count()) + " parameter sets",
                jobs, cores(), folder.dir());
   std::vector<size_t> all(count);
   std::iota(all.begin(), all.end(), size_t{0});
@@ -292,6 +296,7 @@ CollectedSweep SweepWorkflow::Collect(const SweepFolder& folder, bool check_busy
     c.locked.push_back(!c.busy && folder.RunIsLocked(run.name));
     c.results.push_back(folder.CollectRun(run, c.slurm.back(), c.busy, c.locked.back()));
   }
+  SweepRunResult::RefuseSharedRunIds(c.results);
   return c;
 }
 

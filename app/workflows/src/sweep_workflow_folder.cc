@@ -74,6 +74,7 @@ SweepSettings SettingsOf(const nlohmann::json& settings, const std::string& dir)
   s.config_path = Text(settings, "config");
   s.seeds = Text(settings, "seeds");
   s.sets = Strings(settings, "sets");
+  s.zips = settings.contains("zips") ? Strings(settings, "zips") : std::vector<std::string>{};  // older sweeps had none
   s.steps = Number(settings, "steps");
   s.out_dir = dir;
   return s;

@@ -126,10 +126,12 @@ class TreeCheck {
       }
     }
     open_.pop_back();
-    // A node made in code (a --set value's copy) has no position; only the
-    // parser's nodes can be reached again through an alias, so those made in
-    // code are not kept (they would all share one bucket).
-    if (node.Mark().pos >= 0) walked_[node.Mark().pos].emplace_back(node, extent);
+    // A node made in code (a --set value's copy) has no position, and one
+    // copied by YAML::Clone (a sweep's run config) has position 0; only the
+    // parser's nodes can be reached again through an alias (and at position 0
+    // the parser puts only the root, which no alias can reach), so the others
+    // are not kept: they would all share one bucket.
+    if (node.Mark().pos > 0) walked_[node.Mark().pos].emplace_back(node, extent);
     return extent;
   }
 

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <filesystem>
 
 #include "dream/lcm/run_id.h"
@@ -39,6 +40,11 @@ nlohmann::ordered_json ViolationsLocatedJson(const world::LocatedViolations& loc
     entry["first_step"] = v.first_step;
     entry["last_step"] = v.last_step;
     entry["position"] = {v.x_m, v.y_m};
+    // How bad it got: metres outside, the pair's closest centres, or the deepest overlap.
+    const char* worst_key = v.kind == world::LocatedViolation::Kind::kBoundary    ? "worst_outside_m"
+                            : v.kind == world::LocatedViolation::Kind::kCollision ? "closest_m"
+                                                                                  : "worst_overlap_m";
+    if (std::isfinite(v.worst_m)) entry[worst_key] = v.worst_m;
     listed.push_back(entry);
   }
   nlohmann::ordered_json json;

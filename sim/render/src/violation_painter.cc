@@ -48,9 +48,10 @@ std::vector<ViolationPainter::Spot> ViolationPainter::Spots(const std::vector<wo
       return std::hypot(spot.x - x, spot.y - y) < merge_px;
     });
     if (near == spots.end()) {
-      spots.push_back({x, y, v.first_step, 0, going_on});
+      spots.push_back({x, y, v.first_step, v.last_step, 0, going_on});
     } else {
       near->first_step = std::min(near->first_step, v.first_step);
+      near->last_step = std::max(near->last_step, v.last_step);
       ++near->others;
       near->going_on = near->going_on || going_on;
     }
@@ -70,11 +71,19 @@ int ViolationPainter::Mark(const std::vector<world::LocatedViolation>& violation
   std::vector<Box> taken;
   int placed = 0;
   for (const Spot& spot : spots) {
-    char text[48];
-    if (spot.others > 0) {
-      std::snprintf(text, sizeof(text), "k=%lld +%d", static_cast<long long>(spot.first_step), spot.others);
+    // An episode as its steps, "k=82-239"; "+2" for the others at the same spot.
+    char steps[48];
+    if (spot.last_step > spot.first_step && !now_step) {
+      std::snprintf(steps, sizeof(steps), "k=%lld-%lld", static_cast<long long>(spot.first_step),
+                    static_cast<long long>(spot.last_step));
     } else {
-      std::snprintf(text, sizeof(text), "k=%lld", static_cast<long long>(spot.first_step));
+      std::snprintf(steps, sizeof(steps), "k=%lld", static_cast<long long>(spot.first_step));
+    }
+    char text[64];
+    if (spot.others > 0) {
+      std::snprintf(text, sizeof(text), "%s +%d", steps, spot.others);
+    } else {
+      std::snprintf(text, sizeof(text), "%s", steps);
     }
     cairo_text_extents_t extents;
     cairo_text_extents(cr_, text, &extents);

@@ -43,6 +43,7 @@ class ViolationPainter {
     double x = 0;  // pixels
     double y = 0;
     int64_t first_step = 0;  // the earliest of its violations
+    int64_t last_step = 0;   // the latest step of its violations (an episode's end)
     int others = 0;          // violations there besides the first
     bool going_on = true;    // a video frame: one of them still lasts
   };

@@ -1,6 +1,9 @@
 #include "dream/world/step_violation_locator.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 
 #include "dream/world/violation_checker.h"
 
@@ -36,8 +39,47 @@ bool StepViolationLocator::Locate(int64_t step, int num_robots, const std::vecto
     checked_robots_ = num_robots;
   }
   checker_->Check(step, poses_, nullptr, obstacles_);
+  const size_t placed_from = found->size();
   PlaceViolations(checker_->last_step_events(), poses_, found);
+  for (size_t i = placed_from; i < found->size(); ++i) (*found)[i].worst_m = Measure((*found)[i]);
   return true;
+}
+
+double StepViolationLocator::Measure(const LocatedViolation& v) const {
+  const auto robot = static_cast<size_t>(v.robot);
+  // The Robotarium's collision centre: collision_offset_m ahead of the pose.
+  auto centre = [this](size_t i) {
+    const Pose2& p = poses_[i];
+    return std::pair<double, double>{p.x_m + world_.collision_offset_m * std::cos(p.theta_rad),
+                                     p.y_m + world_.collision_offset_m * std::sin(p.theta_rad)};
+  };
+  switch (v.kind) {
+    case LocatedViolation::Kind::kBoundary: {
+      const Pose2& p = poses_[robot];
+      const Arena& a = world_.arena;
+      return std::max({a.x_min_m - p.x_m, p.x_m - a.x_max_m, a.y_min_m - p.y_m, p.y_m - a.y_max_m});
+    }
+    case LocatedViolation::Kind::kCollision: {
+      const auto [ax, ay] = centre(robot);
+      const auto [bx, by] = centre(static_cast<size_t>(v.other));
+      return std::hypot(ax - bx, ay - by);
+    }
+    case LocatedViolation::Kind::kObstacle: {
+      const auto [cx, cy] = centre(robot);
+      for (const ObstacleState& o : obstacles_) {
+        if (o.id != v.other) continue;
+        // How far the collision disc reaches into the box: its radius less the gap to the
+        // box, or more, by the distance to the nearest edge, when its centre is inside.
+        const double dx = std::abs(cx - o.center_x_m) - o.width_m / 2.0;
+        const double dy = std::abs(cy - o.center_y_m) - o.height_m / 2.0;
+        const double outside = std::hypot(std::max(dx, 0.0), std::max(dy, 0.0));
+        const double inside = std::min(std::max(dx, dy), 0.0);
+        return world_.collision_diameter_m / 2.0 - outside - inside;
+      }
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+  }
+  return std::numeric_limits<double>::quiet_NaN();
 }
 
 void PlaceViolations(const StepEvents& events, const std::vector<Pose2>& poses, std::vector<LocatedViolation>* found) {

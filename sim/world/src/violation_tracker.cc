@@ -1,8 +1,16 @@
 #include "dream/world/violation_tracker.h"
 
+#include <cmath>
+
 #include "dream/world/step_violation_locator.h"
 
 namespace dream::world {
+
+bool LocatedViolation::IsWorse(double value_m) const {
+  if (std::isnan(value_m)) return false;
+  if (std::isnan(worst_m)) return true;
+  return kind == Kind::kCollision ? value_m < worst_m : value_m > worst_m;
+}
 
 const char* LocatedViolationKindName(LocatedViolation::Kind kind) {
   switch (kind) {
@@ -13,19 +21,28 @@ const char* LocatedViolationKindName(LocatedViolation::Kind kind) {
   return "boundary";
 }
 
-void ViolationTracker::Seen(const Key& key, int64_t step, double x_m, double y_m) {
+void ViolationTracker::Seen(const LocatedViolation& seen, int64_t step) {
+  const Key key{seen.kind, seen.robot, seen.other};
   auto it = open_.find(key);
-  if (it != open_.end() && it->second.last_step == step) return;  // named twice in one step
-  if (it != open_.end() && it->second.last_step == step - 1) {
-    // The same violation going on: one entry from its first step to this one.
+  const bool going_on = it != open_.end() && (it->second.last_step == step || it->second.last_step == step - 1);
+  if (going_on) {
+    // The same violation going on (or named twice in one step): one entry
+    // from its first step to this one, with the worst of its steps.
     it->second.last_step = step;
-    if (it->second.index != kUnlisted) located_.listed[it->second.index].last_step = step;
+    if (it->second.index != kUnlisted) {
+      LocatedViolation& entry = located_.listed[it->second.index];
+      entry.last_step = step;
+      if (entry.IsWorse(seen.worst_m)) entry.worst_m = seen.worst_m;
+    }
     return;
   }
   Open open{kUnlisted, step};
   if (located_.listed.size() < max_listed_) {
     open.index = located_.listed.size();
-    located_.listed.push_back({std::get<0>(key), std::get<1>(key), std::get<2>(key), step, step, x_m, y_m});
+    LocatedViolation entry = seen;
+    entry.first_step = step;
+    entry.last_step = step;
+    located_.listed.push_back(entry);
   } else {
     ++located_.unlisted;
   }
@@ -39,7 +56,7 @@ void ViolationTracker::Add(const StepEvents& events, const std::vector<Pose2>& p
 }
 
 void ViolationTracker::AddPlaced(int64_t step, const std::vector<LocatedViolation>& placed) {
-  for (const LocatedViolation& v : placed) Seen({v.kind, v.robot, v.other}, step, v.x_m, v.y_m);
+  for (const LocatedViolation& v : placed) Seen(v, step);
   // Violations not seen at this step have ended: forget them, so the map
   // holds only what goes on now.
   for (auto it = open_.begin(); it != open_.end();) {

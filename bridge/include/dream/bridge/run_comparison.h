@@ -15,6 +15,10 @@ namespace dream::bridge {
 /// One run's side of a comparison.
 struct ComparedRun {
   std::string folder;
+  /// What the run is, from its summary.json: "lab run (dream import)", "lab
+  /// replay (dream lab-replay)", "simulation" or "simulation, world.realism
+  /// on"; "run (no summary.json)" when it cannot tell.
+  std::string what;
   int64_t steps = 0;                    ///< last step with poses
   std::string end;                      ///< the final DREAM_STATUS detail
   world::ViolationCounts violations{};    ///< from the final DREAM_STATUS
@@ -35,8 +39,8 @@ struct RobotTracking {
 
 /// A simulated run against its lab run (or any two runs of one experiment).
 struct RunComparison {
-  ComparedRun first;   ///< the simulated run (the plan)
-  ComparedRun second;  ///< the lab run
+  ComparedRun first;   ///< usually the simulated run (the plan)
+  ComparedRun second;  ///< usually the lab run; ComparedRun::what says what each is
   int64_t compared_steps = 0;  ///< steps 0..compared_steps are in both
   std::vector<RobotTracking> robots;
   DifferenceStats position_m;  ///< over every robot and compared step

@@ -11,4 +11,7 @@ namespace dream::config_overrides {
 /// alone reruns the run and says where it came from.
 std::string ConfigText(const YAML::Node& config, const std::string& header);
 
+/// `header` as ConfigText writes it above the config: each line as "# line".
+std::string CommentLines(const std::string& header);
+
 }  // namespace dream::config_overrides

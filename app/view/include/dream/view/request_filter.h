@@ -43,6 +43,9 @@ class RequestFilter {
   RequestFilter(bool loopback_only, int port, bool replay);
 
   Decision Decide(const Request& request) const;
+  /// From now on /run.json is served (a live view that became the replay of
+  /// the run it drew: dream run --view at the run's end).
+  void ServeRunData() { replay_ = true; }
 
  private:
   bool HostAllowed(std::string_view host) const;

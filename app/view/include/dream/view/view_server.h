@@ -52,6 +52,11 @@ class ViewServer {
   void SetSetup(std::string setup_json);
   /// The replayed run (RunReplayJson), served on /run.json.
   void SetRunData(std::string run_json);
+  /// Turns a live server into the replay of the run it showed, at the same
+  /// URL: /run.json serves `run_json` from now on, and every browser gets
+  /// `setup_json` (a replay's SetupJson), now and when it connects, and no
+  /// live frame after it. Call it once no more frames are broadcast. Thread-safe.
+  void ServeReplay(std::string setup_json, std::string run_json);
   /// Sends `frame_json` to every browser (queued per browser; never waits),
   /// and keeps it for browsers that connect later. Thread-safe.
   void Broadcast(std::string frame_json);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 
 #include "dream/world/located_violation.h"
 
@@ -18,6 +19,9 @@ struct ViolationMark {
   int other = -1;    ///< the pair's other robot, or the obstacle's id; -1 for the boundary
   double x_m = 0.0;  ///< where: the robot, or the middle of a colliding pair
   double y_m = 0.0;
+  /// How bad at this step (world::LocatedViolation::worst_m): metres outside,
+  /// the pair's collision centres apart, or the overlap with the obstacle.
+  double worst_m = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// "boundary", "collision", "obstacle": the name the page shows.

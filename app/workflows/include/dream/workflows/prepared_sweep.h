@@ -43,6 +43,10 @@ class PreparedSweep {
     std::string text;
   };
 
+  /// What every run's config is made from, and what the runs share.
+  struct RunConfigMaker;
+  void PrepareRun(RunConfigMaker& maker, const SweepPlan::Run& run);
+
   SweepPlan plan_;
   std::string base_name_;
   std::string seeds_text_;

@@ -34,6 +34,7 @@ struct SweepRunResult {
   double wall_time_s = 0.0;  ///< measured by the sweep: start of the process to its exit
 
   bool has_summary = false;
+  std::string run_id;   ///< summary "run_id": two runs with one id are one summary copied
   std::string end;      ///< summary "end"
   std::string verdict;  ///< summary "verdict": clean, warning, rejected
   long long steps = 0;
@@ -58,6 +59,9 @@ struct SweepRunResult {
   /// A run with no exit record yet (`dream sweep table` while it works, or
   /// a task that never started): status kNotRun, `why` in the problem column.
   static SweepRunResult NotRun(const SweepPlan::Run& run, const std::string& why);
+  /// Marks the results whose summaries share a run id (one run's summary.json
+  /// copied into another's folder) as failed, naming the other run.
+  static void RefuseSharedRunIds(std::vector<SweepRunResult>& results);
   /// A run that left no exit record because something outside it ended it
   /// (Slurm cancelled it or hit its time limit, a killed task): failed to run.
   static SweepRunResult LostRun(const SweepPlan::Run& run, const std::string& why);

@@ -13,7 +13,8 @@ struct SweepSettings {
 
   std::string config_path;
   std::string seeds;              ///< "1-20", "7", "1,4,9-12"; empty: the config's seed
-  std::vector<std::string> sets;  ///< "KEY=V1,V2,..." each
+  std::vector<std::string> sets;  ///< "KEY=V1,V2,..." each: every combination runs
+  std::vector<std::string> zips;  ///< "KEY=V1,V2,..." each: varied together, the i-th values in one run
   int jobs = 0;                   ///< runs at once; 0: local one per core, Slurm no limit
   long long steps = 0;            ///< 0: the config's step limit
   std::string out_dir;            ///< empty: sweeps/<name> (or _2, ... when that holds a sweep)

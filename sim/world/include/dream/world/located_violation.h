@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace dream::world {
@@ -21,6 +22,14 @@ struct LocatedViolation {
   int64_t last_step = 0;   ///< the last step of the uninterrupted stretch
   double x_m = 0.0;        ///< where, at first_step: the robot, or the middle of a colliding pair
   double y_m = 0.0;
+  /// How bad it got over the episode, in metres: how far outside the arena
+  /// (boundary, largest), how close the pair's collision centres came
+  /// (collision, smallest), how deep the collision disc overlapped the
+  /// obstacle (obstacle, largest). NaN when it could not be measured.
+  double worst_m = std::numeric_limits<double>::quiet_NaN();
+
+  /// Whether `value_m` is worse than `worst_m` for this kind (smaller for a collision).
+  bool IsWorse(double value_m) const;
 };
 
 /// "boundary", "collision", "obstacle".

@@ -30,7 +30,8 @@ class StepViolationLocator {
   /// per robot) among `obstacles` (those with a value that is not finite are
   /// left out) and appends each violation of step `step` to `found` (its
   /// first and last step that step). False, and nothing found, when the poses
-  /// are not `num_robots` (at least one) finite poses: a forged message
+  /// are not `num_robots` (at least one) finite poses (each found violation's
+  /// worst_m is measured: see LocatedViolation): a forged message
   /// breaks no rule the checker can place. The robot count may change from
   /// one call to the next (the checker is remade).
   bool Locate(int64_t step, int num_robots, const std::vector<double>& x, const std::vector<double>& y,
@@ -42,6 +43,9 @@ class StepViolationLocator {
   const std::vector<Pose2>& last_poses() const { return poses_; }
 
  private:
+  /// `v`'s measure at this step (LocatedViolation::worst_m), on the poses and obstacles Locate took.
+  double Measure(const LocatedViolation& v) const;
+
   WorldParams world_;
   std::vector<Pose2> poses_;
   std::vector<ObstacleState> obstacles_;

@@ -42,7 +42,7 @@ class ViolationTracker {
   };
   static constexpr size_t kUnlisted = static_cast<size_t>(-1);
 
-  void Seen(const Key& key, int64_t step, double x_m, double y_m);
+  void Seen(const LocatedViolation& seen, int64_t step);
 
   size_t max_listed_;
   LocatedViolations located_;

@@ -12,6 +12,7 @@ namespace dream::go_to_goal {
 /// `kind: go_to_goal`: every robot drives to its own goal.
 ///     goals: [[x, y], ...]   one per robot, metres
 ///     gain: 0.8   max_speed_mps: 0.15   tolerance_m: 0.03
+///     goal_tolerance_m: 0.05   the goal is judged by this (0: tolerance_m)
 class GoToGoalBuilder final : public kind_api::ExperimentBuilder {
  public:
   static constexpr const char* kKind = "go_to_goal";
@@ -19,10 +20,18 @@ class GoToGoalBuilder final : public kind_api::ExperimentBuilder {
   struct Section {
     std::vector<Eigen::Vector2d> goals;
     GoToGoalParams robot;
+    /// The goal: every robot this close to its goal at once, measured on the
+    /// log's poses (the true ones; the tracker's for a lab run). Apart from
+    /// `tolerance_m`, where robots stop, so a lab run's millimetres do not
+    /// decide it; 0: `tolerance_m`.
+    double goal_tolerance_m = 0.0;
     template <typename Fields>
     void ListFields(Fields& fields) {
       fields.RobotPoints("goals", goals, "goal");
       robot.ListFields(fields);
+      fields.Number("goal_tolerance_m", goal_tolerance_m, agents::FieldRule::NonNegative(),
+                    "the goal is met when every robot is within this of its goal at once (true poses; the "
+                    "tracker's in a lab run), m; 0: tolerance_m");
     }
   };
   /// Keys of this kind besides the common ones.
@@ -35,6 +44,7 @@ class GoToGoalBuilder final : public kind_api::ExperimentBuilder {
 
  private:
   std::vector<GoToGoalParams> params_;
+  double goal_tolerance_m_ = 0.0;  ///< 0: each robot's tolerance_m
 };
 
 }  // namespace dream::go_to_goal

@@ -1,0 +1,116 @@
+#include "view_replay.h"
+
+#include <spdlog/spdlog.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "dream/files/file_text.h"
+#include "dream/run_config/run_config.h"
+#include "dream/run_log/run_log.h"
+#include "dream/session/experiment_goal.h"
+#include "dream/view/replay_json.h"
+#include "run_view.h"
+#include "shared_options.h"
+
+namespace dream::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The run's config: `config_path`, else config.yaml beside the log. One that
+/// cannot be read or is another run's is an error when given, a warning when
+/// found beside the log.
+std::optional<run_config::RunConfig> ConfigOfRun(const std::string& config_path, const std::string& log_path,
+                                                 int log_robots) {
+  std::string path = config_path;
+  if (path.empty()) {
+    const fs::path beside = fs::path(log_path).parent_path() / "config.yaml";
+    if (!fs::is_regular_file(beside)) return std::nullopt;
+    path = beside.string();
+  }
+  try {
+    run_config::RunConfig config = run_config::LoadRunConfigFile(path);
+    if (log_robots > 0 && config.num_robots != log_robots) {
+      throw std::runtime_error(path + " has " + std::to_string(config.num_robots) + " robots, " + log_path + " " +
+                               std::to_string(log_robots) + ": not this run's config");
+    }
+    return config;
+  } catch (const std::exception& e) {
+    if (!config_path.empty()) throw;
+    spdlog::warn("dream view: drawing without the config's goals and radio: {}", e.what());
+    return std::nullopt;
+  }
+}
+
+/// A metric's value as the page lists it; lists and tables (goal points,
+/// per-robot series) are left to summary.json.
+std::optional<std::string> MetricText(const nlohmann::json& value) {
+  constexpr size_t kMaxChars = 80;
+  if (value.is_number()) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.6g", value.get<double>());
+    return std::string(text);
+  }
+  if (value.is_boolean()) return std::string(value.get<bool>() ? "true" : "false");
+  if (value.is_string()) return value.get<std::string>().substr(0, kMaxChars);
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<view::ViewSetup::Judged> JudgedOfRun(const std::string& log_path) {
+  const std::string summary_path = (fs::path(log_path).parent_path() / "summary.json").string();
+  std::error_code error;
+  if (!fs::exists(summary_path, error)) return std::nullopt;
+  try {
+    const nlohmann::json summary = nlohmann::json::parse(files::ReadFileText(summary_path));
+    if (!summary.is_object()) throw std::runtime_error("not a JSON object");
+    view::ViewSetup::Judged judged;
+    judged.verdict = summary.value("verdict", std::string());
+    if (judged.verdict.empty()) return std::nullopt;
+    const nlohmann::json reasons = summary.value("verdict_reasons", nlohmann::json::array());
+    for (const nlohmann::json& reason : reasons.is_array() ? reasons : nlohmann::json::array()) {
+      if (judged.reasons.size() == view::ViewSetup::Judged::kMaxListed) break;
+      if (reason.is_object()) judged.reasons.push_back(reason.value("rule", "?") + ": " + reason.value("problem", ""));
+    }
+    judged.goal = session::ExperimentGoal::Text(summary.value("goal", nlohmann::json::object()));
+    nlohmann::json metrics = summary.value("metrics", nlohmann::json::object());
+    if (!metrics.is_object()) metrics = nlohmann::json::object();
+    for (const auto& [name, value] : metrics.items()) {
+      if (judged.metrics.size() == view::ViewSetup::Judged::kMaxListed) break;
+      if (name == "kind") continue;  // the experiment's name, not a measure
+      if (std::optional<std::string> text = MetricText(value)) judged.metrics.emplace_back(name, *text);
+    }
+    return judged;
+  } catch (const std::exception& e) {
+    spdlog::warn("{}: not read, the page shows the verdict of the counts only: {}", summary_path, e.what());
+    return std::nullopt;
+  }
+}
+
+ViewReplay ViewReplay::OfRun(const std::string& run, const std::string& config_path) {
+  const std::string log_path = RunLogPath(run);
+  const run_log::RunLog log = run_log::RunLog::Read(log_path);
+  if (log.poses().empty()) {
+    throw std::runtime_error(log_path + ": no DREAM_POSES that decode: nothing to replay" +
+                             (log.Flaw(true) ? " (" + *log.Flaw(true) + ")" : std::string()));
+  }
+  ViewReplay replay;
+  if (const std::optional<run_config::RunConfig> config = ConfigOfRun(config_path, log_path, log.num_robots())) {
+    replay.setup = ViewSetupOfConfig(*config, view::ViewSetup::Mode::kReplay, run,
+                                     fs::absolute(log_path).parent_path().string());
+  }
+  replay.setup.mode = view::ViewSetup::Mode::kReplay;
+  replay.setup.source = run;
+  replay.setup.judged = JudgedOfRun(log_path);
+  replay.run_json = view::RunReplayJson(log, replay.setup);
+  replay.steps = log.poses().size();
+  return replay;
+}
+
+}  // namespace dream::cli

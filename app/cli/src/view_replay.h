@@ -1,0 +1,31 @@
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "dream/view/view_setup.h"
+
+namespace dream::cli {
+
+/// A finished run as dream view replays it: the page's setup (the config's
+/// goals, sensors and radio; summary.json's judgement and metrics) and
+/// /run.json. What `dream view RUN` serves and what `dream run --view`
+/// turns into at the run's end, built once here so both show the same.
+struct ViewReplay {
+  view::ViewSetup setup;
+  std::string run_json;  ///< RunReplayJson
+  size_t steps = 0;      ///< steps with poses in the log
+
+  /// `run`: a run folder or an .lcmlog; `config_path`: the run's config, or
+  /// "" for config.yaml beside the log (a warning when that one cannot be used).
+  /// @throws std::runtime_error naming the file when the log has no poses or
+  ///         a given config cannot be read or is another run's.
+  static ViewReplay OfRun(const std::string& run, const std::string& config_path);
+};
+
+/// The run's judgement from summary.json beside its log: what the page shows
+/// as the verdict at the run's end (none without a readable summary; a
+/// summary that cannot be read is only logged).
+std::optional<view::ViewSetup::Judged> JudgedOfRun(const std::string& log_path);
+
+}  // namespace dream::cli
