@@ -303,6 +303,24 @@ class Udpm:
             self.recv_socket.close()
 
 
+def _publish_until_recorded(ctx, name, captured, channel):
+    """Publishes a probe on `channel` until lcm-logger `name` has written it to `captured`; 30 s
+    only turns a logger that never records into a failure."""
+    logger = ctx.procs[name][0]
+    bus = Udpm()
+    deadline = time.monotonic() + 30
+    while True:
+        bus.publish(channel, b"probe")
+        time.sleep(0.05)
+        if os.path.exists(captured):
+            with open(captured, "rb") as f:
+                if channel.encode() in f.read():
+                    break
+        check(logger.poll() is None, f"lcm-logger exited ({logger.returncode}): {ctx.output(name).strip()}")
+        check(time.monotonic() < deadline, f"lcm-logger did not record a {channel} message within 30 s")
+    bus.close()
+
+
 def start_lcm_logger(ctx, name, captured):
     """Starts lcm-logger (process `name`) recording LCM_DEFAULT_URL into `captured`, and returns
     once it records: a probe message published until it shows up in the file. Its socket gets
@@ -315,18 +333,7 @@ def start_lcm_logger(ctx, name, captured):
     priority = ["chrt", "--rr", "1"] if os.geteuid() == 0 else []
     logger = ctx.start(name, priority + ["lcm-logger", "--lcm-url=" + logger_url, "--flush-interval=10",
                                          "-f", captured])
-    bus = Udpm()
-    deadline = time.monotonic() + 10
-    while True:
-        bus.publish("PROBE_LOGGER_UP", b"probe")
-        time.sleep(0.05)
-        if os.path.exists(captured):
-            with open(captured, "rb") as f:
-                if b"PROBE_LOGGER_UP" in f.read():
-                    break
-        check(logger.poll() is None, f"lcm-logger exited ({logger.returncode}): {ctx.output(name).strip()}")
-        check(time.monotonic() < deadline, "lcm-logger did not record a probe message within 10 s")
-    bus.close()
+    _publish_until_recorded(ctx, name, captured, "PROBE_LOGGER_UP")
     return logger
 
 
@@ -335,18 +342,8 @@ def stop_lcm_logger(ctx, name, captured):
     received: a probe published after the last message it must hold, until the probe shows up in
     `captured` (it records in the order it receives, so what comes before has been written by
     then). A wait on that event, not a fixed pause, which a loaded machine can outlast."""
+    _publish_until_recorded(ctx, name, captured, "PROBE_LOGGER_DRAINED")
     logger = ctx.procs[name][0]
-    bus = Udpm()
-    deadline = time.monotonic() + 30  # only turns a lost logger into a failure
-    while True:
-        bus.publish("PROBE_LOGGER_DRAINED", b"probe")
-        time.sleep(0.05)
-        with open(captured, "rb") as f:
-            if b"PROBE_LOGGER_DRAINED" in f.read():
-                break
-        check(logger.poll() is None, f"lcm-logger exited ({logger.returncode}): {ctx.output(name).strip()}")
-        check(time.monotonic() < deadline, "lcm-logger did not record the last probe message within 30 s")
-    bus.close()
     logger.send_signal(signal.SIGINT)
     code = ctx.wait(name, timeout=30)
     check(code == 0, f"lcm-logger exited {code} on SIGINT: {ctx.output(name).strip()}")
