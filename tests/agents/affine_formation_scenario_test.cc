@@ -24,6 +24,7 @@
 #include "dream/node/run_recorder.h"
 #include "dream/node/sim_node.h"
 #include "dream/world/unicycle_world.h"
+#include "../support/source_tree.h"
 
 namespace dream::agents {
 namespace {
@@ -33,7 +34,7 @@ using scenario::ScenarioResult;
 using scenario::Value;
 using scenario::ConfigPath;
 
-const std::string kConfigPath = std::string(DREAM_SOURCE_DIR) + "/config/affine_formation.yaml";
+const std::string kConfigPath = dream::testing::SourceDir() + "/config/affine_formation.yaml";
 
 std::string ConfigText() {
   std::ifstream in(kConfigPath);

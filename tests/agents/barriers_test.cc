@@ -16,6 +16,7 @@
 #include "dream/barriers/interior_point_qp.h"
 #include "dream/barriers/single_integrator_barrier.h"
 #include "dream/barriers/unicycle_barrier.h"
+#include "../support/source_tree.h"
 
 namespace dream::barriers {
 namespace {
@@ -26,7 +27,8 @@ constexpr double kTolerance = 1e-5;
 
 std::string FixturePath() {
   const char* live = std::getenv("DREAM_BARRIER_REFERENCE");
-  return live != nullptr && *live != '\0' ? live : std::string(DREAM_TEST_DATA_DIR) + "/robotarium_v2_barriers.json";
+  if (live != nullptr && *live != '\0') return live;
+  return dream::testing::SourceDir() + "/tests/data/robotarium_v2_barriers.json";
 }
 
 nlohmann::json LoadFixture() {

@@ -16,6 +16,7 @@
 #include "dream/config/config_error.h"
 #include "dream/config/config_node.h"
 #include "dream/files/file_text.h"
+#include "../support/source_tree.h"
 
 namespace dream::kind_api {
 namespace {
@@ -117,7 +118,7 @@ TEST(FieldListTest, RulesSayWhatTheyHold) {
 // change a default, a rule or a meaning in code and this fails until the
 // docs say the same (the rows to paste are in the message).
 TEST(FieldListTest, ConfigReadmeShowsEveryKindsGeneratedKeyTable) {
-  const std::string readme = files::ReadFileText(std::string(DREAM_SOURCE_DIR) + "/config/README.md");
+  const std::string readme = files::ReadFileText(dream::testing::SourceDir() + "/config/README.md");
   const agent_host::ControllerRegistry& registry = agent_host::ControllerRegistry::BuiltIns();
   int tables = 0;
   for (const std::string& name : registry.Names()) {

@@ -10,6 +10,7 @@
 #include "dream/agent_host/controller_factory.h"
 #include "dream/config/config_node.h"
 #include "dream/run_config/run_config.h"
+#include "../support/source_tree.h"
 
 namespace dream::agents {
 namespace {
@@ -20,7 +21,7 @@ using ::testing::HasSubstr;
 /// metrics with a rule (the kind's own come first), or nothing.
 std::optional<GoalJudgement> Judge(const std::string& name, const std::map<std::string, double>& values) {
   const run_config::RunConfig config =
-      run_config::LoadRunConfigFile(std::string(DREAM_SOURCE_DIR) + "/config/" + name + ".yaml");
+      run_config::LoadRunConfigFile(dream::testing::SourceDir() + "/config/" + name + ".yaml");
   const agent_host::ControllerFactory factory(config);
   MetricsReport report;
   report.values = values;
@@ -176,7 +177,7 @@ TEST(GoalRules, CalibrationDriveIsMetWhenItsProgramRanToItsEndClean) {
 TEST(GoalRules, KindsWithGoalsToDrawGiveOnePerRobot) {
   auto goals_of = [](const std::string& name) {
     const run_config::RunConfig config =
-        run_config::LoadRunConfigFile(std::string(DREAM_SOURCE_DIR) + "/config/" + name + ".yaml");
+        run_config::LoadRunConfigFile(dream::testing::SourceDir() + "/config/" + name + ".yaml");
     return std::make_pair(agent_host::ControllerFactory(config).GoalsToDraw(), config.num_robots);
   };
   const auto [go_to_goal, go_to_goal_robots] = goals_of("go_to_goal");

@@ -17,6 +17,7 @@
 #include "dream/agent_host/controller_registry.h"
 #include "dream/config/config_node.h"
 #include "dream/run_config/run_config.h"
+#include "../support/source_tree.h"
 
 namespace dream::agents {
 namespace {
@@ -26,7 +27,7 @@ using ::testing::HasSubstr;
 /// kind -> a shipped config of that kind (config/*.yaml).
 std::map<std::string, std::string> ShippedConfigsByKind() {
   std::map<std::string, std::string> configs;
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(DREAM_SOURCE_DIR) + "/config")) {
+  for (const auto& entry : std::filesystem::directory_iterator(dream::testing::SourceDir() + "/config")) {
     if (entry.path().extension() != ".yaml") continue;
     const YAML::Node root = YAML::LoadFile(entry.path().string());
     if (!root["controller"] || !root["controller"]["kind"]) continue;

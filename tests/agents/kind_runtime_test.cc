@@ -12,6 +12,7 @@
 #include "dream/agent_host/controller_registry.h"
 #include "dream/config/config_node.h"
 #include "dream/run_config/run_config.h"
+#include "../support/source_tree.h"
 
 namespace dream::agent_host {
 namespace {
@@ -19,7 +20,7 @@ namespace {
 using Runtime = kind_api::ControllerKind::Runtime;
 
 run_config::RunConfig ShippedConfig(const std::string& name) {
-  return run_config::LoadRunConfigFile(std::string(DREAM_SOURCE_DIR) + "/config/" + name);
+  return run_config::LoadRunConfigFile(dream::testing::SourceDir() + "/config/" + name);
 }
 
 TEST(KindRuntimeTest, ThePythonKindRunsInThePythonRuntimeWithItsSpecAndModule) {

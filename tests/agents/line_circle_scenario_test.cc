@@ -22,6 +22,7 @@
 #include "dream/node/run_recorder.h"
 #include "dream/node/sim_node.h"
 #include "dream/world/unicycle_world.h"
+#include "../support/source_tree.h"
 
 namespace dream::agents {
 namespace {
@@ -40,7 +41,7 @@ std::string ReadText(const std::string& path) {
 
 /// Runs config/<name>.yaml, after replacing `from` with `to` in its text.
 ScenarioResult RunScenario(const std::string& name, const std::string& from = "", const std::string& to = "") {
-  const std::string path = std::string(DREAM_SOURCE_DIR) + "/config/" + name + ".yaml";
+  const std::string path = dream::testing::SourceDir() + "/config/" + name + ".yaml";
   std::string text = ReadText(path);
   if (!from.empty()) {
     const size_t at = text.find(from);

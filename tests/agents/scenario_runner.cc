@@ -14,6 +14,7 @@
 #include "dream/node/run_recorder.h"
 #include "dream/node/sim_node.h"
 #include "dream/world/unicycle_world.h"
+#include "../support/source_tree.h"
 
 namespace dream::agents::scenario {
 
@@ -48,7 +49,7 @@ ScenarioResult RunScenario(run_config::RunConfig config, const std::string& log_
   return result;
 }
 
-std::string ConfigPath(const std::string& name) { return std::string(DREAM_SOURCE_DIR) + "/config/" + name + ".yaml"; }
+std::string ConfigPath(const std::string& name) { return dream::testing::SourceDir() + "/config/" + name + ".yaml"; }
 
 double Value(const ScenarioResult& run, const std::string& name) {
   const auto it = run.metrics.values.find(name);

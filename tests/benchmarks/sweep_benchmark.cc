@@ -15,6 +15,7 @@
 #include "dream/run_config/run_config.h"
 #include "dream/workflows/sweep_folder.h"
 #include "dream/workflows/sweep_workflow.h"
+#include "../support/source_tree.h"
 
 namespace {
 
@@ -97,7 +98,7 @@ BENCHMARK(BM_PlanAndSubmit10000Runs)->Unit(benchmark::kSecond)->Iterations(1)->U
 void BM_PlanShippedConfig10000Seeds(benchmark::State& state, const std::string& config_file) {
   const fs::path dir = Scratch("shipped");
   SweepSettings settings;
-  settings.config_path = std::string(DREAM_CONFIG_DIR) + "/" + config_file;
+  settings.config_path = dream::testing::SourceDir() + "/config/" + config_file;
   settings.seeds = "1-10000";
   settings.engine = SweepSettings::Engine::kPlan;
   const dream::run_config::RunConfig base =
@@ -125,7 +126,7 @@ void BM_Table10000FinishedRuns(benchmark::State& state) {
   StandInSlurm slurm;
   Workflow(slurm).Start(settings, base);
   // Every run finished: its exit record and a summary.json as dream run writes it.
-  std::ifstream in(DREAM_TEST_DATA_DIR "/sweep_run_summary.json");
+  std::ifstream in(dream::testing::SourceDir() + "/tests/data/sweep_run_summary.json");
   std::stringstream summary;
   summary << in.rdbuf();
   const SweepFolder folder(settings.out_dir);

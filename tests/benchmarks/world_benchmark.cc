@@ -68,6 +68,18 @@ void BM_UnicycleWorldStep(benchmark::State& state) {
 }
 BENCHMARK(BM_UnicycleWorldStep)->Arg(20)->Arg(50)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 
+// Start poses for 10,000 robots in a 50 m x 40 m arena (InitialPoseGeneratorTest checks them; target under 2 s).
+void BM_InitialPoses(benchmark::State& state) {
+  WorldParams params;
+  params.arena = Arena{-25.0, 25.0, -20.0, 20.0};
+  for (auto _ : state) {
+    const std::vector<Pose2> poses =
+        InitialPoseGenerator(params, InitialPoseParams{}).Generate(static_cast<int>(state.range(0)), 5);
+    benchmark::DoNotOptimize(poses.data());
+  }
+}
+BENCHMARK(BM_InitialPoses)->Arg(10000)->Unit(benchmark::kMillisecond);
+
 // The step with world.realism on, 20 robots driving circles: arg 0 the
 // official world (ideal), 1 the lab preset of before issue 22 (1 + 1 steps,
 // wheel acceleration limit, noise, dropouts: `lab_v1`), 2 today's lab preset (the

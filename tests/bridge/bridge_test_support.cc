@@ -17,6 +17,7 @@
 #include "dream/node/run_recorder.h"
 #include "dream/node/sim_node.h"
 #include "dream/world/unicycle_world.h"
+#include "../support/source_tree.h"
 
 namespace dream::bridge::testing {
 
@@ -58,7 +59,7 @@ std::string NewFolder(const std::string& name) {
 }
 
 std::string ShippedConfig(const std::string& name) {
-  return ReadText(std::string(DREAM_SOURCE_DIR) + "/config/" + name + ".yaml");
+  return ReadText(dream::testing::SourceDir() + "/config/" + name + ".yaml");
 }
 
 run_config::RunConfig LoadConfigText(const std::string& text, const std::string& source) {

@@ -9,6 +9,7 @@
 
 #include "dream/calibration_drive/calibration_drive.h"
 #include "dream/run_config/run_config.h"
+#include "../support/source_tree.h"
 
 namespace dream::bridge {
 namespace {
@@ -19,7 +20,7 @@ run_config::RunConfig Written(int robots) {
 
 TEST(CalibrationConfigTest, ShippedConfigIsTheEightRobotCase) {
   const run_config::RunConfig shipped =
-      run_config::LoadRunConfigFile(std::string(DREAM_SOURCE_DIR) + "/config/calibration.yaml");
+      run_config::LoadRunConfigFile(dream::testing::SourceDir() + "/config/calibration.yaml");
   const run_config::RunConfig written = Written(8);
   EXPECT_EQ(written.name, "calibration_8");
   EXPECT_EQ(shipped.num_robots, written.num_robots);

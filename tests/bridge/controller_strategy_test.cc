@@ -17,6 +17,7 @@
 #include "dream/bridge/submission_format.h"
 #include "dream/bridge/submission_params.h"
 #include "dream/world/unicycle_world.h"
+#include "../support/source_tree.h"
 
 namespace dream::bridge {
 namespace {
@@ -49,7 +50,7 @@ TEST(FlatPythonRuntimeTest, RefusesImportsTheFlatLayoutCannotFollowNamingFileAnd
 }
 
 TEST(FlatPythonRuntimeTest, ShipsTheRuntimeFlatWithoutItsTransport) {
-  const FlatPythonRuntime runtime = FlatPythonRuntime::Read(std::string(DREAM_SOURCE_DIR) + "/python");
+  const FlatPythonRuntime runtime = FlatPythonRuntime::Read(dream::testing::SourceDir() + "/python");
   std::vector<std::string> names;
   for (const FlatPythonRuntime::File& file : runtime.files()) {
     names.push_back(file.name);

@@ -18,6 +18,7 @@
 #include "dream/bridge/submission_params.h"
 #include "dream/config/config_error.h"
 #include "dream/run_status_t.hpp"
+#include "../support/source_tree.h"
 
 namespace dream::bridge {
 namespace {
@@ -298,7 +299,7 @@ TEST_F(ExportTest, ConfigStringsCannotInjectCodeIntoTheSubmission) {
 
   const std::string script = testing::ReadText(out + "/upload/dream_main.py");
   EXPECT_EQ(script, SubmissionScriptTemplate()) << "the script must be the fixed template, byte for byte";
-  EXPECT_EQ(script, testing::ReadText(std::string(DREAM_SOURCE_DIR) + "/bridge/python/dream_main.py"));
+  EXPECT_EQ(script, testing::ReadText(dream::testing::SourceDir() + "/bridge/python/dream_main.py"));
   for (const char* fragment : {"dream_pwned", "__import__('os')", "${HOME}", "go_to_goal", "eight robots"}) {
     EXPECT_EQ(script.find(fragment), std::string::npos) << fragment;
   }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "fuzz_targets.h"
+#include "../support/source_tree.h"
 
 // Read by AddressSanitizer when it is linked in (the asan preset): libmatio's
 // mallocs go through it, so a forged header asking for gigabytes stops the test.
@@ -40,7 +41,7 @@ std::vector<fs::path> FilesOf(const fs::path& folder) {
 
 /// Runs `target` on every file of corpus/<name>; returns how many.
 size_t Replay(const std::string& name, void (*target)(const uint8_t*, size_t)) {
-  const std::vector<fs::path> files = FilesOf(fs::path(DREAM_SOURCE_DIR) / "tests/fuzz/corpus" / name);
+  const std::vector<fs::path> files = FilesOf(fs::path(dream::testing::SourceDir()) / "tests/fuzz/corpus" / name);
   for (const fs::path& file : files) {
     SCOPED_TRACE(file.string());
     const std::vector<uint8_t> bytes = ReadBytes(file);
@@ -60,7 +61,7 @@ TEST(FuzzCorpusTest, LcmMessages) { EXPECT_GE(Replay("lcm_message", LcmMessageTa
 TEST(FuzzCorpusTest, RunConfigsAndTheShippedOnes) {
   EXPECT_GE(Replay("run_config", RunConfigTarget), 1u);
   size_t shipped = 0;
-  for (const fs::path& file : FilesOf(fs::path(DREAM_SOURCE_DIR) / "config")) {
+  for (const fs::path& file : FilesOf(fs::path(dream::testing::SourceDir()) / "config")) {
     if (file.extension() != ".yaml") continue;
     const std::vector<uint8_t> bytes = ReadBytes(file);
     RunConfigTarget(bytes.data(), bytes.size());

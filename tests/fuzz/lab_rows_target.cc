@@ -6,12 +6,14 @@
 #include "dream/bridge/npy_file.h"
 #include "dream/bridge/pre_validation.h"
 #include "fuzz_targets.h"
+#include "../support/source_tree.h"
 
 namespace dream::fuzz {
 
 void LabRowsTarget(const uint8_t* data, size_t size) {
   // An 8-robot, 20-step go_to_goal export (tests/fuzz/lab_export), read once.
-  static const bridge::ExportedSubmission exported = bridge::ExportedSubmission::Read(DREAM_FUZZ_LAB_EXPORT);
+  static const bridge::ExportedSubmission exported =
+      bridge::ExportedSubmission::Read(dream::testing::SourceDir() + "/tests/fuzz/lab_export");
   const std::string name = "fuzz_result.npy";
   try {
     const bridge::NpyArray rows = bridge::DecodeNpy(std::string(reinterpret_cast<const char*>(data), size), name);

@@ -19,6 +19,7 @@
 #include "../reliability/fuzz_scale.h"
 #include "../reliability/yaml_text_mutator.h"
 #include "fuzz_targets.h"
+#include "../support/source_tree.h"
 
 namespace dream::fuzz {
 namespace {
@@ -85,7 +86,7 @@ std::vector<std::string> MissingKeys() {
 }
 
 TEST(SetOverrideMutation, MutatedSetLinesApplyOrFailNamingTheOption) {
-  const std::string config_path = std::string(DREAM_SOURCE_DIR) + "/config/go_to_goal.yaml";
+  const std::string config_path = dream::testing::SourceDir() + "/config/go_to_goal.yaml";
   std::vector<std::pair<std::string, std::string>> keys;
   CollectKeys(YAML::LoadFile(config_path), "", &keys);
   ASSERT_GT(keys.size(), 20u);

@@ -11,12 +11,13 @@
 #include "dream/config_overrides/overridden_config.h"
 #include "dream/config_overrides/sweep_parameter.h"
 #include "dream/workflows/sweep_plan.h"
+#include "../support/source_tree.h"
 
 namespace dream::fuzz {
 namespace {
 
 // The config the overrides edit: a shipped one, so most keys exist.
-const char* const kBaseConfig = DREAM_FUZZ_BASE_CONFIG;
+const std::string kBaseConfig = dream::testing::SourceDir() + "/config/go_to_goal.yaml";
 // More would only repeat the same code on a longer input.
 constexpr size_t kMaxSets = 8;
 // A sweep of more runs than this is the same code again, slower.

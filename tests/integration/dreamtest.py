@@ -303,23 +303,47 @@ class Udpm:
             self.recv_socket.close()
 
 
-def start_lcm_logger(ctx, name, captured):
-    """Starts lcm-logger (process `name`) recording LCM_DEFAULT_URL into `captured`, and returns
-    once it records: a probe message published until it shows up in the file. Its socket gets
-    4 MB, as dream's own receivers have, so a step's burst does not overflow it."""
-    url = os.environ["LCM_DEFAULT_URL"]
-    logger_url = url + ("&" if "?" in url else "?") + "recv_buf_size=4194304"
-    logger = ctx.start(name, ["lcm-logger", "--lcm-url=" + logger_url, "--flush-interval=10", "-f", captured])
+def _publish_until_recorded(ctx, name, captured, channel):
+    """Publishes a probe on `channel` until lcm-logger `name` has written it to `captured`; 30 s
+    only turns a logger that never records into a failure."""
+    logger = ctx.procs[name][0]
     bus = Udpm()
-    deadline = time.monotonic() + 10
+    deadline = time.monotonic() + 30
     while True:
-        bus.publish("PROBE_LOGGER_UP", b"probe")
+        bus.publish(channel, b"probe")
         time.sleep(0.05)
         if os.path.exists(captured):
             with open(captured, "rb") as f:
-                if b"PROBE_LOGGER_UP" in f.read():
+                if channel.encode() in f.read():
                     break
         check(logger.poll() is None, f"lcm-logger exited ({logger.returncode}): {ctx.output(name).strip()}")
-        check(time.monotonic() < deadline, "lcm-logger did not record a probe message within 10 s")
+        check(time.monotonic() < deadline, f"lcm-logger did not record a {channel} message within 30 s")
     bus.close()
+
+
+def start_lcm_logger(ctx, name, captured):
+    """Starts lcm-logger (process `name`) recording LCM_DEFAULT_URL into `captured`, and returns
+    once it records: a probe message published until it shows up in the file. Its socket gets
+    4 MB, as dream's own receivers have, so a step's burst does not overflow it. It runs at a real-time
+    priority (chrt --rr 1; the tests in a network namespace run as root): lcm-logger 1.3.1 keeps
+    LCM's 30-message queue and drops a burst when it waits for a CPU, which a hog on every core made
+    it do at nice -10 too; the recorder is the test's instrument, not what it tests."""
+    url = os.environ["LCM_DEFAULT_URL"]
+    logger_url = url + ("&" if "?" in url else "?") + "recv_buf_size=4194304"
+    priority = ["chrt", "--rr", "1"] if os.geteuid() == 0 else []
+    logger = ctx.start(name, priority + ["lcm-logger", "--lcm-url=" + logger_url, "--flush-interval=10",
+                                         "-f", captured])
+    _publish_until_recorded(ctx, name, captured, "PROBE_LOGGER_UP")
     return logger
+
+
+def stop_lcm_logger(ctx, name, captured):
+    """Stops lcm-logger `name` (started by start_lcm_logger) once it has written everything it
+    received: a probe published after the last message it must hold, until the probe shows up in
+    `captured` (it records in the order it receives, so what comes before has been written by
+    then). A wait on that event, not a fixed pause, which a loaded machine can outlast."""
+    _publish_until_recorded(ctx, name, captured, "PROBE_LOGGER_DRAINED")
+    logger = ctx.procs[name][0]
+    logger.send_signal(signal.SIGINT)
+    code = ctx.wait(name, timeout=30)
+    check(code == 0, f"lcm-logger exited {code} on SIGINT: {ctx.output(name).strip()}")

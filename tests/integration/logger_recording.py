@@ -17,11 +17,9 @@ Usage: netns.sh logger_recording.py --dream BIN --source DIR --types-dir DIR
 
 import os
 import re
-import signal
 import sys
-import time
 
-from dreamtest import arguments, check, main, require_private_netns, start_lcm_logger
+from dreamtest import arguments, check, main, require_private_netns, start_lcm_logger, stop_lcm_logger
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
 import dream_log  # noqa: E402
@@ -31,12 +29,6 @@ def start_logger(ctx, name):
     captured = ctx.path(name + ".lcmlog")
     start_lcm_logger(ctx, name, captured)
     return captured
-
-
-def stop_logger(ctx, name):
-    time.sleep(0.3)  # let the logger drain its socket
-    ctx.procs[name][0].send_signal(signal.SIGINT)
-    check(ctx.wait(name, timeout=10) == 0, f"lcm-logger exited badly: {ctx.output(name)}")
 
 
 def launch(ctx, args, name, steps):
@@ -55,7 +47,7 @@ def test(ctx):
     run, _ = launch(ctx, args, "alone", 45)
     code = ctx.wait("alone_launch", timeout=120)
     check(code == 0, f"dream launch exited {code}: {ctx.output('alone_launch')[-600:]}")
-    stop_logger(ctx, "logger")
+    stop_lcm_logger(ctx, "logger", captured)
 
     own = dream_log.load(run, args.types_dir)
     recorded = dream_log.load(captured, args.types_dir)
@@ -89,7 +81,7 @@ def test(ctx):
     ctx.wait_for_output("idle_sim", r"waiting|agents", timeout=30)
     code = ctx.wait("beside_launch", timeout=120)
     check(code in (0, 5), f"dream launch beside a second world exited {code}: {ctx.output('beside_launch')[-600:]}")
-    stop_logger(ctx, "logger2")
+    stop_lcm_logger(ctx, "logger2", captured)
     ctx.stop("idle_sim")
     own = dream_log.load(run, args.types_dir)
     recorded = dream_log.load(captured, args.types_dir)

@@ -72,6 +72,8 @@ def state(page):
 
 
 def wait_for(page, what, predicate, timeout):
+    """The page's state once `predicate` holds; `timeout` only turns a page that never gets there
+    into a failure (generous: Chromium on a loaded machine can take seconds per frame)."""
     deadline = time.monotonic() + timeout
     last = None
     while time.monotonic() < deadline:
@@ -246,7 +248,7 @@ def check_live(ctx, args, dream, page, config, run_dir):
     """dream launch watched live; then the same run's log played with lcm-logplayer. Returns its poses."""
     steps_seen = watch_live(ctx, args, page, config, run_dir)
     poses = poses_by_step(dream, os.path.join(run_dir, "run.lcmlog"))
-    final = wait_for(page, f"the run's last step ({STEPS})", lambda s: s["step"] == STEPS, 5)
+    final = wait_for(page, f"the run's last step ({STEPS})", lambda s: s["step"] == STEPS, 30)
     check_robots(final, poses, "live")
     check_marks(final["violations"], poses, "live")
     check_episodes(page, final, "live")
@@ -261,7 +263,7 @@ def check_live(ctx, args, dream, page, config, run_dir):
     # A lab run, or any run log, watched by playing it on the bus.
     ctx.start("logplayer", ["lcm-logplayer", f"--lcm-url={os.environ['LCM_DEFAULT_URL']}", "-s", "4",
                             os.path.join(run_dir, "run.lcmlog")])
-    wait_for(page, "the played log from its start", lambda s: s["step"] < STEPS / 2, 10)
+    wait_for(page, "the played log from its start", lambda s: s["step"] < STEPS / 2, 30)
     played = wait_for(page, "the played log to its end", lambda s: s["step"] == STEPS, 20)
     check_robots(played, poses, "lcm-logplayer")
     check_marks(played["violations"], poses, "lcm-logplayer")
@@ -284,18 +286,18 @@ def check_replay(ctx, args, page, run_dir, poses):
         page.evaluate(f"document.getElementById('{element_id}').click()")
 
     click("play")
-    wait_for(page, "play advancing the timeline", lambda s: s["replay"]["playing"] and s["replay"]["index"] > 3, 5)
+    wait_for(page, "play advancing the timeline", lambda s: s["replay"]["playing"] and s["replay"]["index"] > 3, 30)
     click("play")  # pause
-    paused = wait_for(page, "pause", lambda s: not s["replay"]["playing"], 2)
+    paused = wait_for(page, "pause", lambda s: not s["replay"]["playing"], 20)
     time.sleep(0.3)
     check(state(page)["replay"]["index"] == paused["replay"]["index"], "the timeline moved while paused")
     click("step-forward")
-    wait_for(page, "one step forward", lambda s: s["replay"]["index"] == paused["replay"]["index"] + 1, 2)
+    wait_for(page, "one step forward", lambda s: s["replay"]["index"] == paused["replay"]["index"] + 1, 20)
     click("step-back")
-    wait_for(page, "one step back", lambda s: s["replay"]["index"] == paused["replay"]["index"], 2)
+    wait_for(page, "one step back", lambda s: s["replay"]["index"] == paused["replay"]["index"], 20)
     page.evaluate("(() => { const s = document.getElementById('scrub'); s.value = '200';"
                   " s.dispatchEvent(new Event('input')); })()")
-    scrubbed = wait_for(page, "the scrubbed step", lambda s: s["step"] == 200, 2)
+    scrubbed = wait_for(page, "the scrubbed step", lambda s: s["step"] == 200, 20)
     check_robots(scrubbed, poses, "replay at step 200")
     check_marks(scrubbed["violations"], poses, "replay at step 200")
     check(max(m["step"] for m in scrubbed["violations"]) <= 200, "the replay marks violations after its step")
@@ -305,7 +307,7 @@ def check_replay(ctx, args, page, run_dir, poses):
           f"at step 200 the page counts {scrubbed['counts']['boundary']} boundary errors, the log {outside}")
     page.evaluate("(() => { const s = document.getElementById('speed'); s.value = '4';"
                   " s.dispatchEvent(new Event('change')); })()")
-    wait_for(page, "speed 4x", lambda s: s["replay"]["speed"] == 4, 2)
+    wait_for(page, "speed 4x", lambda s: s["replay"]["speed"] == 4, 20)
     page.screenshot(os.path.join(args.artifacts, "replay.png"))
 
 

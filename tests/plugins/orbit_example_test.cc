@@ -16,11 +16,12 @@
 #include "dream/files/file_text.h"
 #include "../support/factory_error.h"
 #include "scenario_runner.h"
+#include "../support/source_tree.h"
 
 namespace dream::agents {
 namespace {
 
-const std::string kExampleDir = std::string(DREAM_SOURCE_DIR) + "/docs/examples/out_of_tree_controller";
+const std::string kExampleDir = dream::testing::SourceDir() + "/docs/examples/out_of_tree_controller";
 
 /// Replaces the one occurrence of `from` in `text` by `to`.
 std::string Replaced(std::string text, const std::string& from, const std::string& to) {
@@ -53,7 +54,7 @@ int LineOf(const std::string& start) {
 using testing::FactoryErrorOf;
 
 TEST(OrbitExampleTest, TheDocumentLeadsWithTheExampleFileVerbatim) {
-  const std::string document = files::ReadFileText(std::string(DREAM_SOURCE_DIR) + "/docs/writing-a-controller.md");
+  const std::string document = files::ReadFileText(dream::testing::SourceDir() + "/docs/writing-a-controller.md");
   const std::string fence = "```cpp\n";
   const size_t start = document.find(fence);
   ASSERT_NE(start, std::string::npos) << "no ```cpp block in docs/writing-a-controller.md";

@@ -13,11 +13,12 @@
 #include "dream/run_config/run_config.h"
 #include "dream/files/file_text.h"
 #include "scenario_runner.h"
+#include "../support/source_tree.h"
 
 namespace dream::agents {
 namespace {
 
-const std::string kExampleDir = std::string(DREAM_SOURCE_DIR) + "/docs/examples/out_of_tree_controller";
+const std::string kExampleDir = dream::testing::SourceDir() + "/docs/examples/out_of_tree_controller";
 
 run_config::RunConfig ExampleConfig() {
   std::string text = files::ReadFileText(kExampleDir + "/swap.yaml");
@@ -29,7 +30,7 @@ run_config::RunConfig ExampleConfig() {
 }
 
 TEST(SwapExampleTest, TheDocumentShowsTheExampleFileVerbatim) {
-  const std::string document = files::ReadFileText(std::string(DREAM_SOURCE_DIR) + "/docs/writing-a-controller.md");
+  const std::string document = files::ReadFileText(dream::testing::SourceDir() + "/docs/writing-a-controller.md");
   const std::string file = files::ReadFileText(kExampleDir + "/swap_controller.cc");
   EXPECT_NE(document.find("```cpp\n" + file + "```"), std::string::npos)
       << "docs/writing-a-controller.md must show swap_controller.cc as it is, in a ```cpp block";

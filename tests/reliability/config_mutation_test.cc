@@ -19,6 +19,7 @@
 #include "dream/run_config/run_config.h"
 #include "fuzz_scale.h"
 #include "yaml_text_mutator.h"
+#include "../support/source_tree.h"
 
 namespace dream::testing {
 namespace {
@@ -33,7 +34,7 @@ std::vector<std::pair<std::string, std::string>> SeedConfigs() {
   std::vector<std::pair<std::string, std::string>> seeds;
   for (const char* name : {"go_to_goal", "hrvo_circle", "line_deployment", "voronoi_coverage",
                            "voronoi_coverage_static", "affine_formation"}) {
-    const std::string path = std::string(DREAM_SOURCE_DIR) + "/config/" + name + ".yaml";
+    const std::string path = dream::testing::SourceDir() + "/config/" + name + ".yaml";
     std::ifstream in(path);
     std::ostringstream text;
     text << in.rdbuf();

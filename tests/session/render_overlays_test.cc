@@ -12,6 +12,7 @@
 
 #include "dream/run_config/run_config.h"
 #include "../support/scratch_folder.h"
+#include "../support/source_tree.h"
 
 namespace dream::session {
 namespace {
@@ -76,7 +77,7 @@ TEST_F(RenderOverlaysTest, ASummaryJsonGivesItsGoalsAndAMissingOrMalformedOneNon
 TEST_F(RenderOverlaysTest, APythonControllersGoalPointsAreComputedBeforeItsRun) {
   const run_config::RunConfig config = PairConfig("return [[(-0.25, 0.0)], [(0.25, 0.0), (0.25, 0.5)]]");
   render::ArenaOverlays overlays;
-  AddPythonGoals(config, DREAM_TEST_PYTHON_RUNTIME_DIR, &overlays);
+  AddPythonGoals(config, dream::testing::SourceDir() + "/python", &overlays);
   ASSERT_EQ(overlays.goals_m.size(), 2u);
   ASSERT_EQ(overlays.goals_m[1].size(), 2u);
   EXPECT_DOUBLE_EQ(overlays.goals_m[1][1][1], 0.5);
@@ -89,7 +90,7 @@ TEST_F(RenderOverlaysTest, AGoalPointsThatFailsIsAnErrorNamingTheModule) {
   const run_config::RunConfig config = PairConfig("return [[(0.0, 0.0)]]");  // one list for two robots
   render::ArenaOverlays overlays;
   try {
-    AddPythonGoals(config, DREAM_TEST_PYTHON_RUNTIME_DIR, &overlays);
+    AddPythonGoals(config, dream::testing::SourceDir() + "/python", &overlays);
     FAIL() << "expected an error";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("pair.py: Pair.goal_points(): expected one list of (x, y) per robot (2)"),

@@ -24,6 +24,7 @@
 
 #include "dream/world/run_report.h"
 #include "dream/world/unicycle_world.h"
+#include "../support/source_tree.h"
 
 namespace dream::world {
 namespace {
@@ -111,7 +112,7 @@ std::vector<Scenario> LoadFixture(const std::string& path, std::string* commit) 
 class RobotariumReferenceTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    scenarios_ = LoadFixture(std::string(DREAM_SOURCE_DIR) + "/tests/data/robotarium_v2_reference.csv", &commit_);
+    scenarios_ = LoadFixture(dream::testing::SourceDir() + "/tests/data/robotarium_v2_reference.csv", &commit_);
   }
   std::vector<Scenario> scenarios_;
   std::string commit_;
