@@ -372,16 +372,16 @@ class SpecErrorTest(SpecFixture):
         self.assert_config_error(self.go_to_goal(gian=(0.5, 24)),
                                  "run.yaml:24: controller.gian: unknown key for kind python class GoToGoal (did you "
                                  "mean 'gain'?); allowed keys here: kind, module, class, robot, sensors, radio, goals, "
-                                 "gain, max_speed_mps, tolerance_m")
+                                 "gain, max_speed_mps, tolerance_m, goal_tolerance_m")
         # A key --set added has no line: the file alone, as C++'s ConfigNode says it.
         self.assert_config_error(self.go_to_goal(bogus=(0.5, 0)),
                                  "run.yaml: controller.bogus: unknown key for kind python class GoToGoal; allowed "
                                  "keys here: kind, module, class, robot, sensors, radio, goals, gain, max_speed_mps, "
-                                 "tolerance_m")
+                                 "tolerance_m, goal_tolerance_m")
         self.assert_config_error(self.go_to_goal(bogus=(0.5, 24)),
                                  "run.yaml:24: controller.bogus: unknown key for kind python class GoToGoal; allowed "
                                  "keys here: kind, module, class, robot, sensors, radio, goals, gain, max_speed_mps, "
-                                 "tolerance_m")
+                                 "tolerance_m, goal_tolerance_m")
         self.assert_config_error(self.spec(GO_TO_GOAL, "GoToGoal", {}),
                                  "run.yaml:20: controller.goals: required by class GoToGoal; missing here")
         self.assert_config_error(self.go_to_goal(gain=(-1, 25)), "run.yaml:25: controller.gain: must be > 0, got -1")
