@@ -12,6 +12,7 @@
 #include "dream/run_config/run_config.h"
 #include "dream/world/startup_drive.h"
 #include "dream/world/startup_drive_trials.h"
+#include "../support/source_tree.h"
 
 namespace dream::run_config {
 namespace {
@@ -20,7 +21,7 @@ using ::testing::HasSubstr;
 
 std::vector<std::string> ShippedConfigs() {
   std::vector<std::string> paths;
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(DREAM_SOURCE_DIR) + "/config")) {
+  for (const auto& entry : std::filesystem::directory_iterator(dream::testing::SourceDir() + "/config")) {
     if (entry.path().extension() == ".yaml") paths.push_back(entry.path().string());
   }
   return paths;
@@ -40,7 +41,7 @@ TEST(StartupDriveConfigsTest, EveryShippedConfigTheLabCanStartSettles) {
 }
 
 TEST(StartupDriveConfigsTest, TheCrowdedConfigDeadlocksNamingRobots) {
-  const RunConfig config = LoadRunConfigFile(std::string(DREAM_TEST_DATA_DIR) + "/startup_crowded.yaml");
+  const RunConfig config = LoadRunConfigFile(dream::testing::SourceDir() + "/tests/data/startup_crowded.yaml");
   const world::StartupDriveTrials trials =
       world::StartupDriveTrials::Try(config.world, config.initial_poses, config.seed, 1);
   EXPECT_EQ(trials.settled(), 0);

@@ -1,6 +1,9 @@
 #include "dream/world/startup_drive_trials.h"
 
 #include <algorithm>
+#include <future>
+#include <system_error>
+#include <vector>
 
 #include "dream/robotarium/robotarium_constants.h"
 #include "dream/world/printf_text.h"
@@ -20,11 +23,20 @@ StartupDriveTrials StartupDriveTrials::Try(const WorldParams& world, const std::
                                            uint64_t run_seed, int placements) {
   const StartupDrive drive(world, start_poses);
   StartupDriveTrials trials;
+  // More robots than charger slots fails every placement alike: once is enough.
+  if (static_cast<int>(start_poses.size()) > StartupDrive::kChargerSlots) placements = std::min(placements, 1);
+  // The placements are independent drives (Run builds its own world and barrier): one thread
+  // each, so `dream run` waits for the slowest drive rather than for their sum.
+  std::vector<std::future<StartupDriveResult>> drives;
   for (int i = 0; i < placements; ++i) {
-    trials.results_.push_back(drive.Run(PlacementSeed(run_seed, i)));
-    // More robots than charger slots fails every placement alike: once is enough.
-    if (!trials.results_.back().refusal.empty()) break;
+    const auto run = [&drive, run_seed, i] { return drive.Run(PlacementSeed(run_seed, i)); };
+    try {
+      drives.push_back(std::async(std::launch::async, run));
+    } catch (const std::system_error&) {
+      drives.push_back(std::async(std::launch::deferred, run));  // no thread to be had: in this one, later
+    }
   }
+  for (std::future<StartupDriveResult>& result : drives) trials.results_.push_back(result.get());
   return trials;
 }
 
