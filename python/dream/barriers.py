@@ -70,8 +70,9 @@ def _solve_qp(vhat, A, b):
     H = cvxopt.spmatrix(2.0, range(2 * n), range(2 * n))
     f = cvxopt.matrix(-2.0 * vhat.reshape(-1, order="F"))
     kkt = _StructuredKkt(A)
-    # A few entries per row: sparse, cvxopt's own products with G are cheap too.
-    G = cvxopt.spmatrix(kkt.entries, kkt.rows, kkt.columns, A.shape)
+    # A few entries per row: sparse, cvxopt's own products with G are cheap too; below
+    # SMALLEST_ROBOTS dense, exactly as rps hands it over (setting up the sparse one costs more).
+    G = cvxopt.spmatrix(kkt.entries, kkt.rows, kkt.columns, A.shape) if kkt.usable else cvxopt.matrix(A)
     try:
         solution = cvxopt.solvers.qp(H, f, G, cvxopt.matrix(b),
                                      kktsolver=kkt.factor if kkt.usable else None, options=dict(QP_OPTIONS))
