@@ -64,8 +64,10 @@ const std::vector<std::string>& FlatPythonRuntime::ShippedModules() {
   // robot_agent and controller_spec drive the controller; the others are what
   // they and a controller import. Never lcm, agent_host, embedded: the
   // LCM transport and hosting, which the script replaces.
-  static const std::vector<std::string> kModules = {"motion",      "robot",           "sensors", "radios",   "timer",
-                                                    "robot_agent", "controller_spec", "hrvo",    "barriers", "__init__"};
+  static const std::vector<std::string> kModules = {
+      "motion", "robot",    "sensors",        "radios",          "timer",       "robot_agent", "controller_spec",
+      "hrvo",   "barriers", "toolbox_checks", "transformations", "controllers", "graph",       "misc",
+      "__init__"};
   return kModules;
 }
 
@@ -87,9 +89,12 @@ std::string FlatPythonRuntime::Flatten(const std::string& module, const std::str
       const std::string target = match[2].str();
       const std::string names = match[3].str();
       if (std::find(shipped.begin(), shipped.end(), target) == shipped.end() || target == "__init__") {
+        std::string listed;
+        for (const std::string& name : shipped) {
+          if (name != "__init__") listed += (listed.empty() ? "" : ", ") + name;
+        }
         throw std::runtime_error(where + "imports ." + target +
-                                 ", which a Robotarium submission does not ship (it ships " +
-                                 "motion, robot, sensors, radios, timer, robot_agent, controller_spec, hrvo, barriers)");
+                                 ", which a Robotarium submission does not ship (it ships " + listed + ")");
       }
       const bool opens = names.find('(') != std::string::npos && names.find(')') == std::string::npos;
       if (opens || (!names.empty() && names.back() == '\\')) {

@@ -12,3 +12,8 @@ from .robot_agent import AgentOutput, ControllerFault, ControllerTimeout, RobotA
 from .controller_spec import ConfigError, ControllerSpec, check
 from .hrvo import HrvoAvoidance, HrvoParams
 from .barriers import create_si_barrier_certificate, create_si_barrier_certificate_with_boundary, create_uni_barrier_certificate, create_uni_barrier_certificate_with_boundary
+from .transformations import create_si_to_uni_dynamics, create_si_to_uni_dynamics_with_backwards_motion, create_si_to_uni_mapping, create_uni_to_si_mapping
+from .controllers import create_pose_controller_clf, create_pose_controller_hybrid, create_pose_parking_controller_clf, create_pose_parking_controller_hybrid, create_si_position_controller, create_uni_position_controller
+from .graph import completeGL, cycleGL, delta_disk_neighbors, lineGL, randomGL, random_connectedGL, topological_neighbors
+from .misc import create_at_pose, create_at_position, determine_font_size, generate_initial_poses, generate_random_poses, generate_random_positions, rotation_matrix, unique_filename
+from .toolbox_checks import ToolboxArgumentError

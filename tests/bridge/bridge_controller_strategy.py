@@ -199,7 +199,9 @@ def experiment(case, name, module):
     export_dir, _ = case.export(sim_dir, name)
     files = case.upload_listing(export_dir, name)
     runtime = ["dream.py"] + ["dream_%s.py" % m for m in ("robot", "motion", "sensors", "radios", "timer",
-                                                          "robot_agent", "controller_spec", "hrvo", "barriers")]
+                                                          "robot_agent", "controller_spec", "hrvo", "barriers",
+                                                          "toolbox_checks", "transformations", "controllers", "graph",
+                                                          "misc")]
     expected = sorted(["dream_main.py", "dream_params.npy", "dream_initial_poses.npy", "dream_controller_spec.npy",
                        "dream_obstacles.npy", module] + runtime)
     check(files == expected, "%s: upload/ holds %s, expected %s" % (name, files, expected))

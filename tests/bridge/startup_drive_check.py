@@ -96,6 +96,9 @@ def crowded_fails(dream, source, tmp, flags, label):
     print("%s: the crowded config fails check-submission on the start-up drive (exit %d)" % (label, code))
 
 
+POSE_TOLERANCE = 1e-9
+
+
 def recorded_drive(simulator, seed, limit, starts, tmp, name):
     out = os.path.join(tmp, name + ".npz")
     run([sys.executable, "-c", RECORDER, simulator, str(seed), str(limit), out, json.dumps(starts)], expect=0)
@@ -112,11 +115,15 @@ def same_drive(official, standin, tmp):
         check(a["steps"].shape == b["steps"].shape, "%s: the official drive took %s steps, the stand-in's %s" %
               (name, a["steps"].shape, b["steps"].shape))
         worst = float(np.max(np.abs(a["steps"] - b["steps"])))
-        check(worst == 0.0, "%s: the stand-in's drive leaves the official one by %g" % (name, worst))
+        # The barrier's QP is built vectorised (rps loops), so its answers are rps's to ~1e-13, not
+        # bit for bit; 1e-9 is the step-for-step bar of "faithful" (issue 36). The drive's course
+        # (its step count, settling, every draw from numpy's stream) must be the same exactly.
+        check(worst <= POSE_TOLERANCE, "%s: the stand-in's drive leaves the official one by %g (more than %g)" %
+              (name, worst, POSE_TOLERANCE))
         check(bool(a["settled"]) == bool(b["settled"]), name + ": one drive settled, the other did not")
         check(float(a["next_draw"]) == float(b["next_draw"]), name + ": numpy's stream differs after the drive")
-        print("%s (seed %d): the stand-in's drive is the official one at all %d steps (%s)" %
-              (name, seed, len(a["steps"]), "settled" if a["settled"] else "still deadlocked, waypoints drawn"))
+        print("%s (seed %d): the stand-in's drive is the official one (within %g) at all %d steps (%s)" %
+              (name, seed, worst, len(a["steps"]), "settled" if a["settled"] else "still deadlocked, waypoints drawn"))
 
 
 def main():

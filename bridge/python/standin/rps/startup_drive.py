@@ -12,9 +12,11 @@ twin, world::StartupDrive (sim/world/), drives the same way from its own random 
 """
 
 import math
-import random
 
 import numpy as np
+
+from rps.utilities.controllers import create_pose_controller_hybrid
+from rps.utilities.misc import create_at_pose, generate_initial_poses, generate_random_poses
 
 CHARGER_SLOTS_PER_EDGE = 11
 # rps's initialize(): pose controller gains, at-pose tolerances, deadlock rule.
@@ -33,89 +35,41 @@ STILL_COMMAND = 0.1
 # The area rps draws random poses in (default initial conditions, first waypoints).
 RANDOM_POSE_WIDTH = 2.75
 RANDOM_POSE_HEIGHT = 1.75
-RANDOM_POSE_ATTEMPTS = 10000
 
 
 def charger_poses(n, width, height):
-    """n charger slots (3 x n) drawn with random.sample from the 22 (x left to right; at each x
-    the bottom slot, facing up, then the top one, facing down)."""
-    slots = []
-    for x in np.linspace(-width / 2, width / 2, CHARGER_SLOTS_PER_EDGE, endpoint=True):
-        for y in (-height / 2, height / 2):
-            slots.append([x, y, np.pi / 2 if y < 0 else -np.pi / 2])
-    return np.array(random.sample(slots, n)).T
+    """n charger slots (3 x n) drawn with random.sample from the 22 (misc.generate_initial_poses)."""
+    return generate_initial_poses(n, width, height)
 
 
 def random_poses(n, spacing, width, height):
-    """3 x n poses at least `spacing` apart, uniform in a width x height rectangle about the
-    origin, by rejection from numpy's global stream (as rps's generate_random_poses draws)."""
-    capacity = int(np.floor((width * height) / (spacing ** 2)))
-    if n > capacity:
-        raise AssertionError("Cannot fit %d poses with spacing %.2f m into a %.2f x %.2f m area. Approximate "
-                             "maximum: %d." % (n, spacing, width, height, capacity))
-    points = []
-    attempts = 0
-    while attempts < RANDOM_POSE_ATTEMPTS and len(points) < n:
-        attempts += 1
-        x = (np.random.rand() - 0.5) * width
-        y = (np.random.rand() - 0.5) * height
-        candidate = np.array([x, y])
-        if not points or np.all(np.linalg.norm(np.array(points) - candidate, axis=1) >= spacing):
-            points.append(candidate)
-    if len(points) != n:
-        raise AssertionError("Could not place %d poses with spacing %.2f m after %d attempts. Try reducing N or "
-                             "Spacing." % (n, spacing, RANDOM_POSE_ATTEMPTS))
-    poses = np.zeros((3, n))
-    poses[:2, :] = np.array(points).T
-    poses[2, :] = np.random.rand(n) * 2 * np.pi - np.pi
-    return poses
+    """3 x n poses at least `spacing` apart, drawn from numpy's global stream (misc.generate_random_poses)."""
+    return generate_random_poses(n, spacing, width, height)
 
 
-def wrap(angle):
-    return np.arctan2(np.sin(angle), np.cos(angle))
+_at_pose = create_at_pose(AT_POSITION, AT_ROTATION)
 
 
 def at_pose(states, poses):
     """Per robot: within AT_POSITION metres and AT_ROTATION radians of its pose."""
-    close = np.linalg.norm(states[:2, :] - poses[:2, :], axis=0) <= AT_POSITION
-    turned = np.abs(wrap(states[2, :] - poses[2, :])) <= AT_ROTATION
-    return close & turned
+    return _at_pose(states, poses)[1]
 
 
-class HybridPoseController:
-    """Approach the goal's position (single integrator to unicycle), then turn on the spot.
+def pose_controller():
+    """The drive's two-phase pose controller (controllers.create_pose_controller_hybrid with the
+    drive's gains). It keeps each robot's phase between calls and resets it whenever it is called
+    with another number of robots than the last time; the drive calls it for all robots and for
+    single robots in turn, so that matters."""
+    return create_pose_controller_hybrid(linear_velocity_gain=LINEAR_VELOCITY_GAIN,
+                                         angular_velocity_limit=ANGULAR_VELOCITY_LIMIT,
+                                         velocity_magnitude_limit=VELOCITY_MAGNITUDE_LIMIT,
+                                         position_error=CONTROLLER_POSITION_ERROR,
+                                         position_epsilon=CONTROLLER_POSITION_EPSILON,
+                                         rotation_error=CONTROLLER_ROTATION_ERROR)
 
-    One 'approaching' flag per robot lives between calls and is reset (all approaching) whenever
-    the controller is called with another number of robots than the last time, as rps's closure
-    does; the drive calls it for all robots and for single robots in turn, so that matters."""
 
-    def __init__(self):
-        self.approaching = np.array([])
-
-    def __call__(self, states, poses):
-        n = states.shape[1]
-        if self.approaching.shape[0] != n:
-            self.approaching = np.ones(n)
-        dxu = np.zeros((2, n))
-        for i in range(n):
-            offset = poses[:2, i] - states[:2, i]
-            distance = np.linalg.norm(offset)
-            heading_error = wrap(poses[2, i] - states[2, i])
-            if self.approaching[i] and distance > CONTROLLER_POSITION_ERROR - CONTROLLER_POSITION_EPSILON:
-                if distance > VELOCITY_MAGNITUDE_LIMIT:
-                    offset = VELOCITY_MAGNITUDE_LIMIT * offset / distance
-                heading = states[2, i]
-                forward = np.dot(np.array([np.cos(heading), np.sin(heading)]), offset)
-                left = np.dot(np.array([-np.sin(heading), np.cos(heading)]), offset)
-                dxu[0, i] = LINEAR_VELOCITY_GAIN * forward
-                dxu[1, i] = ANGULAR_VELOCITY_LIMIT * np.arctan2(left, forward) / (np.pi / 2)
-            elif np.abs(heading_error) > CONTROLLER_ROTATION_ERROR:
-                self.approaching[i] = 1 if distance > CONTROLLER_POSITION_ERROR else 0
-                dxu[1, i] = 2 * heading_error
-        return dxu
-
-    def one(self, state, pose):
-        return self(state.reshape(-1, 1), pose.reshape(-1, 1))[:, 0]
+def one_robot(controller, state, pose):
+    return controller(state.reshape(-1, 1), pose.reshape(-1, 1))[:, 0]
 
 
 def deadlock_watched(at):
@@ -145,7 +99,7 @@ def waypoint_near(pose, boundaries):
 def drive(robotarium, targets, barrier):
     """Drives `robotarium` (its get_poses / set_velocities / step) onto `targets` (3 x N)."""
     n = robotarium.number_of_robots
-    controller = HybridPoseController()
+    controller = pose_controller()
     ids = np.arange(n)
     x = robotarium.get_poses()
     iteration = 0
@@ -162,7 +116,7 @@ def drive(robotarium, targets, barrier):
             moved = np.linalg.norm(last_still[:2, i] - x[:2, i])
             stuck_for = iteration - timers[i]
             if waypointing[i]:
-                dxu[:, i] = controller.one(x[:, i], waypoints[:, i])
+                dxu[:, i] = one_robot(controller, x[:, i], waypoints[:, i])
                 if moved > DEADLOCK_EPSILON:
                     waypointing[i] = False
                 elif stuck_for > DEADLOCK_STEPS:
@@ -172,7 +126,7 @@ def drive(robotarium, targets, barrier):
                 waypointing[i] = True
                 waypoints[:, i] = waypoint_near(x[:, i], robotarium.BOUNDARIES)
                 timers[i] = iteration
-            elif moved > DEADLOCK_EPSILON or np.linalg.norm(controller.one(x[:, i], targets[:, i])) <= STILL_COMMAND:
+            elif moved > DEADLOCK_EPSILON or np.linalg.norm(one_robot(controller, x[:, i], targets[:, i])) <= STILL_COMMAND:
                 timers[i] = iteration
                 last_still[:, i] = x[:, i].copy()
         iteration += 1
