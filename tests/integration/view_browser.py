@@ -22,7 +22,9 @@ exit code, and the page keeps the replay without retrying (issue 37 item 1).
 
 Replay: `dream view RUN` of that run; the page's timeline is driven as a user would (play, pause,
 step forward and back, scrub, speed) and must show the log's poses at the chosen step, and only
-the violations up to it. A screenshot is kept (replay.png).
+the violations up to it; a robot clicked with the browser's mouse shows its pose, velocity and goal
+as the log has them, the wheel zooms about the cursor, keys fit, step, play and let go (issue 37
+item 2). Screenshots are kept (replay.png, inspect.png: robot 1 picked, zoomed, velocity arrows).
 
 Usage: netns.sh view_browser.py --dream BIN --source DIR --types-dir DIR --artifacts DIR
 """
@@ -305,10 +307,63 @@ def check_replay(ctx, args, page, run_dir, poses):
     outside = sum(1 for step, p in poses.items() if step <= 200 and any(abs(x) > ARENA_X for x in p.x))
     check(scrubbed["counts"]["boundary"] == outside,
           f"at step 200 the page counts {scrubbed['counts']['boundary']} boundary errors, the log {outside}")
+    check_inspection(page, poses, args.artifacts)
     page.evaluate("(() => { const s = document.getElementById('speed'); s.value = '4';"
                   " s.dispatchEvent(new Event('change')); })()")
     wait_for(page, "speed 4x", lambda s: s["replay"]["speed"] == 4, 20)
     page.screenshot(os.path.join(args.artifacts, "replay.png"))
+
+
+def mouse(page, kind, x, y, **more):
+    page.call("Input.dispatchMouseEvent", type=kind, x=x, y=y, **more)
+
+
+def key(page, name, code):
+    for kind in ("keyDown", "keyUp"):
+        page.call("Input.dispatchKeyEvent", type=kind, key=name, code=code, text=name if len(name) == 1 else "")
+
+
+def check_inspection(page, poses, artifacts):
+    """Issue 37 item 2, with the browser's own mouse and keys: a robot clicked shows its pose,
+    velocity and goal as the log has them; the wheel zooms about the cursor, f fits; the arrows
+    step and space plays; Escape lets go; 50 robots get 50 colours."""
+    colours = page.evaluate("new Set(Array.from({length: 50}, (_, i) => DreamArena.colour(i))).size")
+    check(colours == 50, f"50 robots get {colours} distinct colours")
+    at = page.evaluate("window.dreamView.pixelOf(1)")
+    check(at is not None, "robot 1 has no place on the page")
+    mouse(page, "mousePressed", at[0], at[1], button="left", clickCount=1)
+    mouse(page, "mouseReleased", at[0], at[1], button="left", clickCount=1)
+    shown = wait_for(page, "robot 1 picked by a click", lambda s: (s["selected"] or {}).get("id") == 1, 10)
+    picked, truth = shown["selected"], poses[shown["step"]]
+    check(abs(picked["x"] - truth.x[1]) < 1e-4 and abs(picked["y"] - truth.y[1]) < 1e-4,
+          f"robot 1's details say ({picked['x']}, {picked['y']}), the log ({truth.x[1]:.4f}, {truth.y[1]:.4f})")
+    check(abs(picked["v"] - truth.v[1]) < 1e-4 and abs(picked["w"] - truth.w[1]) < 1e-4,
+          f"robot 1 drove ({picked['v']}, {picked['w']}) says the page, the log ({truth.v[1]}, {truth.w[1]})")
+    goal_distance = ((-0.2 - truth.x[1]) ** 2 + (-0.5 - truth.y[1]) ** 2) ** 0.5
+    check(picked["goals"]["count"] == 1 and (picked["goals"]["reached"] == 1) == (goal_distance <= 0.05),
+          f"robot 1's goal (-0.2, -0.5), {goal_distance:.3f} m away: the page says {picked['goals']}")
+    text = page.evaluate("document.getElementById('inspect').hidden ? '' : "
+                         "document.getElementById('inspect-table').textContent")
+    check(text.startswith("robot1") and f"({truth.x[1]:.3f}, {truth.y[1]:.3f}) m" in text,
+          f"the side panel's robot details: {text!r}")
+    page.evaluate("(() => { document.getElementById('show-velocities').checked = true; })()")
+    mouse(page, "mouseWheel", at[0], at[1], deltaX=0, deltaY=-120)
+    zoomed = wait_for(page, "the wheel zooming in", lambda s: s["camera"]["zoom"] > 1.1, 10)
+    page.screenshot(os.path.join(artifacts, "inspect.png"))
+    after = page.evaluate("window.dreamView.pixelOf(1)")
+    check(abs(after[0] - at[0]) < 1.5 and abs(after[1] - at[1]) < 1.5,
+          f"zooming about robot 1 (zoom {zoomed['camera']['zoom']:.2f}) moved it from {at} to {after}")
+    key(page, "f", "KeyF")
+    wait_for(page, "f fitting the arena again", lambda s: s["camera"]["zoom"] == 1, 10)
+    index = shown["replay"]["index"]
+    key(page, "ArrowRight", "ArrowRight")
+    wait_for(page, "the right arrow stepping", lambda s: s["replay"]["index"] == index + 1, 10)
+    key(page, " ", "Space")
+    wait_for(page, "space playing", lambda s: s["replay"]["playing"], 10)
+    key(page, " ", "Space")
+    wait_for(page, "space pausing", lambda s: not s["replay"]["playing"], 10)
+    key(page, "Escape", "Escape")
+    wait_for(page, "Escape letting robot 1 go", lambda s: s["selected"] is None, 10)
 
 
 def check_embedded(ctx, args, dream, page, config):

@@ -18,6 +18,8 @@ ViewFrame TwoRobots() {
   frame.x_m = {0.5, -1.25};
   frame.y_m = {0.123456, 0.0};
   frame.theta_rad = {M_PI / 2, -0.1};
+  frame.v_mps = {0.123456, -0.05};
+  frame.w_radps = {1.0, -2.5};
   frame.obstacles.push_back({3, 0.1, 0.2, 0.3, 0.4, 0.05, 0.0});
   frame.status.seen = true;
   frame.status.state = 1;
@@ -40,6 +42,8 @@ TEST(FrameJsonTest, WritesWhatThePageReads) {
   EXPECT_EQ(json["x"], nlohmann::json::parse("[0.5,-1.25]"));
   EXPECT_DOUBLE_EQ(json["y"][0].get<double>(), 0.1235);  // to 0.1 mm
   EXPECT_DOUBLE_EQ(json["th"][0].get<double>(), 1.5708);
+  EXPECT_EQ(json["v"], nlohmann::json::parse("[0.1235,-0.05]"));  // what each robot drove with, for the arrows
+  EXPECT_EQ(json["w"], nlohmann::json::parse("[1,-2.5]"));
   EXPECT_FALSE(json.contains("mx"));  // no measured poses: none sent
   EXPECT_EQ(json["obstacles"], nlohmann::json::parse("[[3,0.1,0.2,0.3,0.4,0.05,0]]"));
   EXPECT_EQ(json["status"]["collision"], 2);

@@ -33,6 +33,8 @@ TEST(ReplayJsonTest, EveryStepsPosesForTheTimeline) {
   ASSERT_EQ(run["poses"].size(), 30u);
   EXPECT_EQ(run["poses"][0].size(), 6u);  // x, y, theta of each robot
   EXPECT_DOUBLE_EQ(run["poses"][0][0].get<double>(), -1.0);
+  ASSERT_EQ(run["velocities"].size(), 30u);
+  EXPECT_EQ(run["velocities"][29], nlohmann::json::parse("[0,0,0,0]"));  // v, w of each robot
   EXPECT_TRUE(run["measured"].is_null());
   EXPECT_TRUE(run["violations"].empty());
   EXPECT_EQ(run["flaw"], "");

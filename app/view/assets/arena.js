@@ -4,15 +4,21 @@
 // links, sensor ranges, robots as oriented discs with their ids, measured
 // poses, and violations where they happened (flashing while new).
 const DreamArena = (() => {
-  const palette = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2",
-                   "#7f7f7f", "#bcbd22", "#17becf"];
-  const colour = (id) => palette[id % palette.length];
+  // 50 colours, one per robot up to the Robotarium's caps: the ten familiar ones first, then hues
+  // a golden angle apart in three lightnesses, so neighbours in id never look alike.
+  const PALETTE_SIZE = 50;
+  const familiar = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2",
+                    "#7f7f7f", "#bcbd22", "#17becf"];
+  const palette = familiar.concat(Array.from({ length: PALETTE_SIZE - familiar.length }, (_, k) =>
+    `hsl(${((k * 137.508 + 20) % 360).toFixed(1)}, ${[70, 55, 80][k % 3]}%, ${[38, 52, 30][k % 3]}%)`));
+  const colour = (id) => palette[id % PALETTE_SIZE];
   const finite = (...values) => values.every((v) => typeof v === "number" && Number.isFinite(v));
 
   // World metres -> canvas pixels, fitting the arena (and a margin) in the canvas.
   // Robots outside the arena widen the view (up to 1 m beyond it), so one
   // that left is still drawn where it is.
-  function transform(canvas, setup, scene) {
+  // camera: {zoom, panX, panY} (canvas pixels) on top of the fitted view; zoom 1, no pan: fitted.
+  function transform(canvas, setup, scene, camera) {
     let [xmin, xmax, ymin, ymax] = setup.arena;
     const [ax0, ax1, ay0, ay1] = setup.arena;
     const r = (setup.robot_diameter || 0.11) / 2;
@@ -30,7 +36,11 @@ const DreamArena = (() => {
     const s = Math.max(1e-6, Math.min(w / (xmax - xmin + 2 * pad), h / (ymax - ymin + 2 * pad)));
     const ox = m.left + (w - s * (xmax - xmin + 2 * pad)) / 2 - s * (xmin - pad);
     const oy = m.top + (h - s * (ymax - ymin + 2 * pad)) / 2 + s * (ymax + pad);
-    return { s, px: (x) => ox + s * x, py: (y) => oy - s * y };
+    const zoom = camera ? camera.zoom : 1;
+    const cx = canvas.width / 2 + (camera ? camera.panX : 0), cy = canvas.height / 2 + (camera ? camera.panY : 0);
+    const zx = cx + zoom * (ox - canvas.width / 2), zy = cy + zoom * (oy - canvas.height / 2);
+    const zs = s * zoom;
+    return { s: zs, px: (x) => zx + zs * x, py: (y) => zy - zs * y, wx: (px) => (px - zx) / zs, wy: (py) => (zy - py) / zs };
   }
 
   function axes(ctx, T, setup) {
@@ -75,18 +85,51 @@ const DreamArena = (() => {
     }
   }
 
-  function goals(ctx, T, setup) {
+  // A diamond in the robot's colour (an X is a violation): its current goal larger and filled,
+  // goals it reached faint. progress[id]: how many of its goals it has reached, in order.
+  function goals(ctx, T, setup, progress) {
     (setup.goals || []).forEach((list, id) => {
       ctx.strokeStyle = colour(id);
+      ctx.fillStyle = colour(id);
       ctx.lineWidth = 2;
-      for (const [gx, gy] of list) {  // a diamond in the robot's colour (an X is a violation)
-        if (!finite(gx, gy)) continue;
-        const r = 6, x = T.px(gx), y = T.py(gy);
+      const reached = progress && progress[id] !== undefined ? progress[id] : -1;
+      list.forEach(([gx, gy], k) => {
+        if (!finite(gx, gy)) return;
+        const current = k === reached, done = reached >= 0 && k < reached;
+        const r = current ? 9 : 6, x = T.px(gx), y = T.py(gy);
+        ctx.globalAlpha = done ? 0.3 : 1;
         ctx.beginPath();
         ctx.moveTo(x, y - r); ctx.lineTo(x + r, y); ctx.lineTo(x, y + r); ctx.lineTo(x - r, y); ctx.closePath();
+        if (current) { ctx.globalAlpha = 0.35; ctx.fill(); ctx.globalAlpha = 1; }
+        ctx.stroke();
+      });
+      ctx.globalAlpha = 1;
+    });
+  }
+
+  // What each robot drove with: an arrow along its heading, one second of travel long (backwards
+  // when v < 0), and an arc at its tip for the turn rate (half a second of turning).
+  function velocities(ctx, T, scene) {
+    if (!scene.v) return;
+    ctx.lineWidth = 2;
+    for (let i = 0; i < scene.x.length; i++) {
+      const v = scene.v[i], w = scene.w ? scene.w[i] : 0;
+      if (!finite(scene.x[i], scene.y[i], scene.th[i], v)) continue;
+      const x0 = T.px(scene.x[i]), y0 = T.py(scene.y[i]);
+      const x1 = T.px(scene.x[i] + v * Math.cos(scene.th[i])), y1 = T.py(scene.y[i] + v * Math.sin(scene.th[i]));
+      ctx.strokeStyle = "#111";
+      ctx.beginPath(); ctx.moveTo(x0, y0); ctx.lineTo(x1, y1);
+      const a = Math.atan2(y1 - y0, x1 - x0), head = Math.min(8, Math.hypot(x1 - x0, y1 - y0) / 2);
+      ctx.moveTo(x1, y1); ctx.lineTo(x1 - head * Math.cos(a - 0.4), y1 - head * Math.sin(a - 0.4));
+      ctx.moveTo(x1, y1); ctx.lineTo(x1 - head * Math.cos(a + 0.4), y1 - head * Math.sin(a + 0.4));
+      ctx.stroke();
+      if (finite(w) && Math.abs(w) > 1e-3) {  // canvas angles run clockwise: negate the world's
+        ctx.strokeStyle = "#c2185b";
+        ctx.beginPath();
+        ctx.arc(x0, y0, 14, -scene.th[i], -scene.th[i] - w * 0.5, w > 0);
         ctx.stroke();
       }
-    });
+    }
   }
 
   // Points closer than 2 pixels to the last one drawn add nothing to a
@@ -161,9 +204,14 @@ const DreamArena = (() => {
   function robots(ctx, T, setup, scene, layers) {
     const radius = Math.max(3, (T.s * setup.robot_diameter) / 2);
     if (layers.measured && scene.mx) {
+      // The measurement's error times layers.measuredScale (1: as measured), so noise of a few
+      // millimetres shows.
+      const k = layers.measuredScale || 1;
       for (let i = 0; i < scene.mx.length; i++) {
-        if (finite(scene.mx[i], scene.my[i], scene.mth[i])) {
-          disc(ctx, T, scene.mx[i], scene.my[i], scene.mth[i], radius, null, colour(i), true);
+        if (finite(scene.mx[i], scene.my[i], scene.mth[i], scene.x[i], scene.y[i], scene.th[i])) {
+          const dth = Math.atan2(Math.sin(scene.mth[i] - scene.th[i]), Math.cos(scene.mth[i] - scene.th[i]));
+          disc(ctx, T, scene.x[i] + k * (scene.mx[i] - scene.x[i]), scene.y[i] + k * (scene.my[i] - scene.y[i]),
+               scene.th[i] + k * dth, radius, null, colour(i), true);
         }
       }
     }
@@ -195,6 +243,24 @@ const DreamArena = (() => {
     ctx.textBaseline = "middle";
     ctx.fillStyle = "#111";
     for (const i of shown) ctx.fillText(String(i), T.px(scene.x[i]), T.py(scene.y[i]) - radius - 8);
+  }
+
+  // The robot looked at: a ring around it and lines to the robots it hears or sees.
+  function selection(ctx, T, setup, scene, selected) {
+    const i = selected.id;
+    if (!finite(scene.x[i], scene.y[i])) return;
+    const radius = Math.max(3, (T.s * setup.robot_diameter) / 2);
+    ctx.strokeStyle = "#000";
+    ctx.lineWidth = 1;
+    ctx.setLineDash([4, 3]);
+    for (const j of selected.neighbours || []) {
+      if (!finite(scene.x[j], scene.y[j])) continue;
+      ctx.beginPath(); ctx.moveTo(T.px(scene.x[i]), T.py(scene.y[i])); ctx.lineTo(T.px(scene.x[j]), T.py(scene.y[j]));
+      ctx.stroke();
+    }
+    ctx.setLineDash([]);
+    ctx.lineWidth = 3;
+    ctx.beginPath(); ctx.arc(T.px(scene.x[i]), T.py(scene.y[i]), radius + 5, 0, 2 * Math.PI); ctx.stroke();
   }
 
   // A rule broken over many steps (robots pushing each other) gives a mark
@@ -254,24 +320,29 @@ const DreamArena = (() => {
     return `${mark.kind}: ${who}, step ${mark.step}`;
   }
 
-  // scene: {x, y, th, mx?, my?, mth?, obstacles, links, marks, lost}; paths: per robot [[x, y], ...].
-  function draw(canvas, setup, scene, layers, paths) {
+  // scene: {x, y, th, v?, w?, mx?, my?, mth?, obstacles, links, marks, lost, goalProgress?, selected?};
+  // paths: per robot [[x, y], ...]; camera: {zoom, panX, panY}. Returns the transform drawn with
+  // (world <-> canvas pixels), for what the page does with the mouse.
+  function draw(canvas, setup, scene, layers, paths, camera) {
     // Opaque: the browser composites it without blending it over the page.
     const ctx = canvas.getContext("2d", { alpha: false });
     ctx.fillStyle = "#fff";
     ctx.fillRect(0, 0, canvas.width, canvas.height);
-    if (!setup || !setup.arena) return;
-    const T = transform(canvas, setup, scene);
+    if (!setup || !setup.arena) return null;
+    const T = transform(canvas, setup, scene, camera);
     background(ctx, T, setup);
     obstacles(ctx, T, scene && scene.obstacles);
-    if (layers.goals) goals(ctx, T, setup);
-    if (!scene) return;
+    if (layers.goals) goals(ctx, T, setup, scene && scene.goalProgress);
+    if (!scene) return T;
     if (layers.trails) trails(ctx, T, paths);
     if (layers.sensors) sensors(ctx, T, setup, scene);
     if (layers.radio) links(ctx, T, scene);
     robots(ctx, T, setup, scene, layers);
+    if (layers.velocities) velocities(ctx, T, scene);
+    if (scene.selected) selection(ctx, T, setup, scene, scene.selected);
     if (layers.violations) violations(ctx, T, scene.marks);
+    return T;
   }
 
-  return { draw, describe, colour };
+  return { draw, describe, colour, PALETTE_SIZE };
 })();

@@ -16,6 +16,7 @@
   const view = {
     setup: null, scene: null, paths: [], run: null, replay: null, frames: 0, drawn: 0,
     marks: new Map(), links: new Map(), steps: [], counts: null,
+    camera: { zoom: 1, panX: 0, panY: 0 }, T: null, selected: null, hover: null, goalProgress: [],
     state: { mode: null, connected: false, step: -1, robots: [], violations: [], verdict: "unknown" },
   };
   window.dreamView = view;
@@ -23,7 +24,8 @@
   const layers = () => ({
     trails: $("show-trails").checked, goals: $("show-goals").checked, ids: $("show-ids").checked,
     radio: $("show-radio").checked, sensors: $("show-sensors").checked, measured: $("show-measured").checked,
-    violations: $("show-violations").checked,
+    violations: $("show-violations").checked, velocities: $("show-velocities").checked,
+    measuredScale: Number($("measured-scale").value) || 1,
   });
 
   // The Robotarium's judgement of the counts so far (docs/run-outputs.md's verdicts).
@@ -59,7 +61,7 @@
     view.dirty = false;
     view.drawn += 1;
     view.lastDraw = performance.now();
-    DreamArena.draw(canvas, view.setup, view.scene, layers(), view.paths);
+    view.T = DreamArena.draw(canvas, view.setup, view.scene, layers(), view.paths, view.camera);
   }
 
   // One display frame is asked for only when there is something to draw:
@@ -129,6 +131,7 @@
       $("verdict").title = judged.reasons.join("\n");
     }
     showMetrics(judged ? judged.metrics || [] : []);
+    writeInspector(view.scene && view.scene.selected);
   }
 
   // The experiment's metrics as summary.json holds them, at a judged run's end.
@@ -245,7 +248,8 @@
 
   function publishState(extra) {
     const s = view.scene;
-    const robots = s ? s.x.map((x, id) => ({ id, x, y: s.y[id], theta: s.th[id] })) : [];
+    const robots = s ? s.x.map((x, id) => ({ id, x, y: s.y[id], theta: s.th[id], v: s.v ? s.v[id] : null,
+                                             w: s.w ? s.w[id] : null })) : [];
     const marks = [...view.marks.values()].map(({ kind, step, robot, other, x, y, worst }) =>
       ({ kind, step, robot, other, x, y, worst }));
     view.state = {
@@ -253,8 +257,121 @@
       step: s ? s.step : -1, t: s ? s.t : 0, frames: view.frames, robots, counts: view.counts,
       verdict: shownVerdict(view.counts), violations: marks, episodes: episodesCached(marks),
       flashing: s && s.marks ? s.marks.filter((m) => m.flash > 0).length : 0,
-      links: s && s.links ? s.links.length : 0, measured: !!(s && s.mx), otherWorld: null, ...extra,
+      links: s && s.links ? s.links.length : 0, measured: !!(s && s.mx), otherWorld: null,
+      camera: { ...view.camera }, selected: s && s.selected ? s.selected : null,
+      goalProgress: s && s.goalProgress ? s.goalProgress.slice() : [], ...extra,
     };
+  }
+
+  // ---- looking at one robot: its details, neighbours and goals ----
+  const GOAL_REACHED_M = 0.05;  // a goal counts as reached within this (rps's at_position default)
+
+  function wrapAngle(a) { return Math.atan2(Math.sin(a), Math.cos(a)); }
+
+  // The robots robot `id` hears (radio links drawn now, either way) and sees (within a sensor's
+  // range and field of view, as the config's sensors say).
+  function neighboursOf(id, s) {
+    const radio = new Set(), seen = new Set();
+    for (const [a, b] of s.links || []) {
+      if (a === id) radio.add(b);
+      if (b === id) radio.add(a);
+    }
+    for (let j = 0; j < s.x.length; j++) {
+      if (j === id || s.x[j] === null || s.x[id] === null) continue;
+      const dx = s.x[j] - s.x[id], dy = s.y[j] - s.y[id], d = Math.hypot(dx, dy);
+      for (const [range, dir, fov] of view.setup.sensors || []) {
+        if (d <= range && Math.abs(wrapAngle(Math.atan2(dy, dx) - s.th[id] - dir)) <= fov / 2 + 1e-9) seen.add(j);
+      }
+    }
+    return { radio: [...radio].sort((a, b) => a - b), seen: [...seen].sort((a, b) => a - b) };
+  }
+
+  function detailsOf(id, s) {
+    if (!s || id === null || id < 0 || id >= s.x.length) return null;
+    const near = neighboursOf(id, s);
+    const d = { id, x: s.x[id], y: s.y[id], theta: s.th[id], v: s.v ? s.v[id] : null, w: s.w ? s.w[id] : null,
+                radio: near.radio, seen: near.seen, neighbours: [...new Set([...near.radio, ...near.seen])],
+                lost: !!(s.lost && s.lost.includes(id)) };
+    if (s.mx && s.mx[id] !== null) {
+      d.measured = { x: s.mx[id], y: s.my[id], theta: s.mth[id],
+                     error_m: Math.hypot(s.mx[id] - s.x[id], s.my[id] - s.y[id]),
+                     heading_error_rad: wrapAngle(s.mth[id] - s.th[id]) };
+    }
+    const goals = (view.setup.goals || [])[id] || [];
+    const done = s.goalProgress ? s.goalProgress[id] || 0 : 0;
+    d.goals = { count: goals.length, reached: done };
+    if (done < goals.length) {
+      const [gx, gy] = goals[done];
+      d.goals.current = [gx, gy];
+      d.goals.distance_m = Math.hypot(gx - s.x[id], gy - s.y[id]);
+    }
+    d.episodes = episodesCached([...view.marks.values()]).filter((e) => e.robot === id || e.other === id).length;
+    return d;
+  }
+
+  function writeInspector(d) {
+    const block = $("inspect");
+    if (block.hidden !== !d) block.hidden = !d;
+    if (!d) return;
+    const f = (value, digits) => (value === null || value === undefined ? "-" : value.toFixed(digits));
+    const deg = (rad) => (rad === null || rad === undefined ? "-" : `${(rad * 180 / Math.PI).toFixed(1)}°`);
+    const rows = [
+      ["robot", `${d.id}${d.lost ? " (lost)" : ""}${view.selected === d.id ? "" : " (hover; click to keep)"}`],
+      ["pose", `(${f(d.x, 3)}, ${f(d.y, 3)}) m, ${deg(d.theta)}`],
+      ["measured", d.measured ? `(${f(d.measured.x, 3)}, ${f(d.measured.y, 3)}) m, ${deg(d.measured.theta)}; off by ` +
+        `${f(d.measured.error_m * 1000, 1)} mm, ${deg(d.measured.heading_error_rad)}` : "-"],
+      ["drove", `v ${f(d.v, 3)} m/s, w ${f(d.w, 2)} rad/s`],
+      ["goal", d.goals.count === 0 ? "-" : d.goals.current
+        ? `${d.goals.reached} of ${d.goals.count} reached; now (${f(d.goals.current[0], 2)}, ${f(d.goals.current[1], 2)}),` +
+          ` ${f(d.goals.distance_m, 3)} m away` : `all ${d.goals.count} reached`],
+      ["hears (radio)", d.radio.length ? d.radio.join(", ") : "-"],
+      ["sees (sensors)", d.seen.length ? d.seen.join(", ") : "-"],
+      ["violations", String(d.episodes)],
+    ];
+    const key = JSON.stringify(rows);
+    if ($("inspect-table").dataset.shown === key) return;  // unchanged: no layout for the page
+    $("inspect-table").dataset.shown = key;
+    $("inspect-swatch").style.background = DreamArena.colour(d.id);
+    $("inspect-table").replaceChildren(...rows.map(([name, value]) => {
+      const row = document.createElement("tr");
+      for (const text of [name, value]) {
+        const cell = document.createElement("td");
+        cell.textContent = text;
+        row.appendChild(cell);
+      }
+      return row;
+    }));
+  }
+
+  // Marks the current goal and the reached ones, and the robot looked at, on a scene.
+  function decorate(s, progress) {
+    s.goalProgress = progress;
+    const id = view.selected !== null ? view.selected : view.hover;
+    s.selected = id !== null ? detailsOf(id, s) : null;
+  }
+
+  // Live: each robot's goals are reached in order; a goal counts once the robot came within
+  // GOAL_REACHED_M of it.
+  function advanceGoals(f) {
+    (view.setup && view.setup.goals || []).forEach((list, id) => {
+      let k = view.goalProgress[id] || 0;
+      while (k < list.length && f.x[id] !== null && Math.hypot(list[k][0] - f.x[id], list[k][1] - f.y[id]) <= GOAL_REACHED_M) k++;
+      view.goalProgress[id] = k;
+    });
+  }
+
+  // Replay: the frame at which each robot reached each of its goals, in order (Infinity: never).
+  function goalTimeline(run) {
+    return (view.setup.goals || []).map((list, id) => {
+      const at = [];
+      let k = 0;
+      for (let i = 0; i < run.poses.length && k < list.length; i++) {
+        const x = run.poses[i][3 * id], y = run.poses[i][3 * id + 1];
+        while (k < list.length && x !== null && Math.hypot(list[k][0] - x, list[k][1] - y) <= GOAL_REACHED_M) at[k++] = i;
+      }
+      while (at.length < list.length) at.push(Infinity);
+      return at;
+    });
   }
 
   function stepRate() {
@@ -270,6 +387,7 @@
     view.marks.clear();
     view.links.clear();
     view.steps = [];
+    view.goalProgress = [];
   }
 
   function onFrame(f) {
@@ -293,6 +411,7 @@
     }
     for (const [s, r] of f.links) view.links.set(`${s}/${r}`, { s, r, seen: now });
     view.live = f;
+    if (f.step >= 0) advanceGoals(f);
     view.counts = f.status ? { ...f.status } : null;
   }
 
@@ -306,9 +425,10 @@
       else links.push([link.s, link.r, 1 - age / LINK_MS]);
     }
     view.scene = {
-      step: f.step, t: f.t, x: f.x, y: f.y, th: f.th, mx: f.mx, my: f.my, mth: f.mth, obstacles: f.obstacles,
-      links, marks: sceneMarks(now), lost: f.status ? f.status.lost : [],
+      step: f.step, t: f.t, x: f.x, y: f.y, th: f.th, v: f.v, w: f.w, mx: f.mx, my: f.my, mth: f.mth,
+      obstacles: f.obstacles, links, marks: sceneMarks(now), lost: f.status ? f.status.lost : [],
     };
+    decorate(view.scene, view.goalProgress.slice());
     const stateName = f.status ? STATE_NAMES[f.status.state] || String(f.status.state) : "-";
     publishState({ state: stateName, detail: f.status ? f.status.detail : "", otherWorld: otherWorldOf(f) });
     showPanel(f.step, f.t, view.counts, stateName);
@@ -366,8 +486,11 @@
       for (let k = Math.max(0, i - trailFrames); k <= i; k++) path.push([run.poses[k][3 * id], run.poses[k][3 * id + 1]]);
       return path;
     });
+    const vel = run.velocities && run.velocities[i] ? run.velocities[i] : null;
     view.scene = { step, t, ...at, mx: measured && measured.x, my: measured && measured.y, mth: measured && measured.th,
+      v: vel && vel.filter((_, k) => k % 2 === 0), w: vel && vel.filter((_, k) => k % 2 === 1),
       obstacles: o >= 0 ? run.obstacles[o][1] : [], links, marks, lost: view.counts.lost || [] };
+    decorate(view.scene, view.replay.goalsAt.map((at) => at.filter((frame) => frame <= i).length));
     const stateName = atEnd && run.final ? STATE_NAMES[run.final.state] || "-" : "replaying";
     view.dirty = true;
     schedule();
@@ -396,6 +519,7 @@
 
   function startReplay(run) {
     view.replay = { run, index: 0, playing: false, speed: 1, simTime: 0, lastWall: performance.now() };
+    view.replay.goalsAt = goalTimeline(run);
     view.run = run.run;
     if (run.flaw) $("source").textContent += ` (not a whole run: ${run.flaw})`;
     if (run.stride > 1) $("source").textContent += ` (every ${run.stride}th step)`;
@@ -500,7 +624,106 @@
     if (view.replay && view.replay.playing) schedule();
   }
 
-  for (const box of document.querySelectorAll("#layers input")) box.onchange = draw;
+  for (const box of document.querySelectorAll("#layers input, #layers select")) box.onchange = draw;
+
+  // ---- mouse and keyboard: pick, zoom, pan, fit, play ----
+  function canvasPoint(event) {
+    const box = canvas.getBoundingClientRect();
+    return [(event.clientX - box.left) * (canvas.width / box.width), (event.clientY - box.top) * (canvas.height / box.height)];
+  }
+
+  function robotAt([px, py]) {
+    const s = view.scene, T = view.T;
+    if (!s || !T) return null;
+    const radius = Math.max(3, (T.s * view.setup.robot_diameter) / 2) + 4;
+    let best = null, bestDistance = radius;
+    for (let i = 0; i < s.x.length; i++) {
+      if (s.x[i] === null) continue;
+      const d = Math.hypot(T.px(s.x[i]) - px, T.py(s.y[i]) - py);
+      if (d <= bestDistance) { best = i; bestDistance = d; }
+    }
+    return best;
+  }
+
+  // Where robot `id` is drawn, in CSS pixels of the page (for tests and tooltips).
+  view.pixelOf = (id) => {
+    const s = view.scene, T = view.T, box = canvas.getBoundingClientRect();
+    if (!s || !T || s.x[id] === null || s.x[id] === undefined) return null;
+    return [box.left + T.px(s.x[id]) * box.width / canvas.width, box.top + T.py(s.y[id]) * box.height / canvas.height];
+  };
+
+  function refresh() {
+    if (view.scene) decorate(view.scene, view.scene.goalProgress);
+    publishState({ state: view.state.state, replay: view.state.replay, otherWorld: view.state.otherWorld });
+    writeInspector(view.scene && view.scene.selected);
+    draw();
+  }
+
+  function select(id) {
+    view.selected = id;
+    refresh();
+  }
+
+  function zoomAt([px, py], factor) {
+    const c = view.camera, zoom = Math.min(40, Math.max(0.25, c.zoom * factor));
+    // Keeps the world point under (px, py) where it is.
+    const qx = (px - canvas.width / 2 - c.panX) / c.zoom, qy = (py - canvas.height / 2 - c.panY) / c.zoom;
+    view.camera = { zoom, panX: px - canvas.width / 2 - zoom * qx, panY: py - canvas.height / 2 - zoom * qy };
+    refresh();
+  }
+
+  function fit() {
+    view.camera = { zoom: 1, panX: 0, panY: 0 };
+    refresh();
+  }
+
+  let drag = null;
+  canvas.addEventListener("mousedown", (event) => {
+    drag = { start: canvasPoint(event), pan: [view.camera.panX, view.camera.panY], moved: false };
+  });
+  canvas.addEventListener("mousemove", (event) => {
+    const p = canvasPoint(event);
+    if (drag) {
+      const dx = p[0] - drag.start[0], dy = p[1] - drag.start[1];
+      if (drag.moved || Math.hypot(dx, dy) > 4) {
+        drag.moved = true;
+        view.camera = { ...view.camera, panX: drag.pan[0] + dx, panY: drag.pan[1] + dy };
+        draw();
+      }
+      return;
+    }
+    const id = robotAt(p);
+    if (id !== view.hover) {
+      view.hover = id;
+      if (view.selected === null) refresh();
+    }
+    canvas.style.cursor = id !== null ? "pointer" : "grab";
+  });
+  window.addEventListener("mouseup", (event) => {
+    if (drag && !drag.moved && event.target === canvas) select(robotAt(canvasPoint(event)));
+    drag = null;
+  });
+  canvas.addEventListener("mouseleave", () => { if (view.hover !== null) { view.hover = null; refresh(); } });
+  canvas.addEventListener("wheel", (event) => {
+    event.preventDefault();
+    zoomAt(canvasPoint(event), Math.pow(1.2, -Math.sign(event.deltaY)));
+  }, { passive: false });
+  $("fit").onclick = fit;
+  document.addEventListener("keydown", (event) => {
+    if (event.target && ["INPUT", "SELECT", "BUTTON", "TEXTAREA"].includes(event.target.tagName)) return;
+    const centre = [canvas.width / 2, canvas.height / 2];
+    const r = view.replay;
+    if (event.key === " " && r) setPlaying(!r.playing);
+    else if (event.key === "ArrowRight" && r) { setPlaying(false); seek(r.index + 1); }
+    else if (event.key === "ArrowLeft" && r) { setPlaying(false); seek(r.index - 1); }
+    else if (event.key === "+" || event.key === "=") zoomAt(centre, 1.25);
+    else if (event.key === "-") zoomAt(centre, 1 / 1.25);
+    else if (event.key === "f" || event.key === "0") fit();
+    else if (event.key === "Escape") select(null);
+    else if (event.key === "v") { $("show-velocities").checked = !$("show-velocities").checked; draw(); }
+    else return;
+    event.preventDefault();
+  });
   // The user's choice: the server draws the other run from its next step (for every page).
   $("follow-other").onclick = () => {
     const other = view.state.otherWorld;

@@ -187,6 +187,8 @@ bool BusFrameCollector::TakeFrame(ViewFrame* frame, uint64_t* version) {
   frame->x_m = poses_.x;
   frame->y_m = poses_.y;
   frame->theta_rad = poses_.theta;
+  frame->v_mps = poses_.v;
+  frame->w_radps = poses_.w;
   const bool measured_now = measured_.num_robots == poses_.num_robots && measured_.step == poses_.step;
   frame->measured_x_m = measured_now ? measured_.x : std::vector<double>();
   frame->measured_y_m = measured_now ? measured_.y : std::vector<double>();

@@ -82,6 +82,8 @@ std::string FrameJson(const ViewFrame& frame) {
   NumberArray(json, "x", frame.x_m, kMetres);
   NumberArray(json, "y", frame.y_m, kMetres);
   NumberArray(json, "th", frame.theta_rad, kRadians);
+  NumberArray(json, "v", frame.v_mps, kMetres);
+  NumberArray(json, "w", frame.w_radps, kRadians);
   if (!frame.measured_x_m.empty()) {
     NumberArray(json, "mx", frame.measured_x_m, kMetres);
     NumberArray(json, "my", frame.measured_y_m, kMetres);

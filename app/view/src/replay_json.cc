@@ -63,6 +63,16 @@ void PoseArray(JsonWriter& json, const robot_poses_t& poses) {
   json.EndArray();
 }
 
+// What each robot drove with during the step that led to a frame: [v0, w0, v1, w1, ...].
+void VelocityArray(JsonWriter& json, const robot_poses_t& poses) {
+  json.BeginArray();
+  for (int r = 0; r < poses.num_robots && static_cast<size_t>(r) < poses.v.size() && static_cast<size_t>(r) < poses.w.size();
+       ++r) {
+    json.Number(poses.v[r], kMetres).Number(poses.w[r], kRadians);
+  }
+  json.EndArray();
+}
+
 void FrameArrays(JsonWriter& json, const run_log::RunLog& log, const std::vector<size_t>& frames) {
   std::map<int64_t, const robot_poses_t*> measured;
   for (const robot_poses_t& m : log.measured_poses()) measured[m.step] = &m;
@@ -74,6 +84,9 @@ void FrameArrays(JsonWriter& json, const run_log::RunLog& log, const std::vector
   json.EndArray();
   json.Key("poses").BeginArray();
   for (const size_t i : frames) PoseArray(json, log.poses()[i]);
+  json.EndArray();
+  json.Key("velocities").BeginArray();
+  for (const size_t i : frames) VelocityArray(json, log.poses()[i]);
   json.EndArray();
   json.Key("measured");
   if (measured.empty()) {

@@ -61,6 +61,9 @@ struct ViewFrame {
   std::vector<double> x_m, y_m, theta_rad;
   /// DREAM_MEASURED_POSES of the same step (in logs with realism on); empty otherwise.
   std::vector<double> measured_x_m, measured_y_m, measured_theta_rad;
+  /// What each robot drove with during the step that led here (DREAM_POSES' v, w: after the
+  /// wheels' saturation), for the page's velocity arrows and a robot's details.
+  std::vector<double> v_mps, w_radps;
   std::vector<Obstacle> obstacles;
   Status status;
   /// Robots that spoke on the radio since the previous frame, ascending.
