@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "barrier_input.h"
+
 namespace dream::world {
 
 BarrierWorld::BarrierWorld(std::unique_ptr<World> inner, const barriers::UnicycleBarrierParams& params)
@@ -31,17 +33,7 @@ void BarrierWorld::Step() {
     inner_->Step();
     return;
   }
-  const std::vector<Pose2>& seen = inner_->poses();
-  commands_.resize(2, n);
-  pose_matrix_.resize(3, n);
-  for (int i = 0; i < n; ++i) {
-    const size_t k = static_cast<size_t>(i);
-    commands_(0, i) = wanted_[k].v_mps;
-    commands_(1, i) = wanted_[k].w_radps;
-    pose_matrix_(0, i) = seen[k].x_m;
-    pose_matrix_(1, i) = seen[k].y_m;
-    pose_matrix_(2, i) = seen[k].theta_rad;
-  }
+  FillBarrierInput(wanted_, inner_->poses(), &commands_, &pose_matrix_);
   const barriers::BarrierResult safe = barrier_.Apply(commands_, pose_matrix_);
   failed_steps_ += safe.qp_failed;
   steps_changed_ += (safe.commands - commands_).cwiseAbs().maxCoeff() > 1e-9;

@@ -13,6 +13,7 @@
 #include "dream/robotarium/robotarium_constants.h"
 #include "dream/world/hybrid_pose_controller.h"
 #include "dream/world/unicycle_world.h"
+#include "barrier_input.h"
 #include "field_check.h"
 
 #ifndef DREAM_STARTUP_MAX_STEPS
@@ -250,14 +251,7 @@ StartupDriveResult StartupDrive::RunFrom(const std::vector<Pose2>& charger_poses
       if (Watched(static_cast<int>(i), watch)) deadlock.Steer(i, x[i], start_poses_[i], step, &controller, &commands[i]);
     }
     ++step;
-    for (std::size_t i = 0; i < n; ++i) {
-      const Eigen::Index k = static_cast<Eigen::Index>(i);
-      wanted(0, k) = commands[i].v_mps;
-      wanted(1, k) = commands[i].w_radps;
-      pose_matrix(0, k) = x[i].x_m;
-      pose_matrix(1, k) = x[i].y_m;
-      pose_matrix(2, k) = x[i].theta_rad;
-    }
+    FillBarrierInput(commands, x, &wanted, &pose_matrix);
     const barriers::BarrierResult safe = barrier.Apply(wanted, pose_matrix);
     for (std::size_t i = 0; i < n; ++i) {
       const Eigen::Index k = static_cast<Eigen::Index>(i);
