@@ -8,7 +8,7 @@ gives. Each create_* returns a function of all robots' states and goals at once.
 
 import numpy as np
 
-from .toolbox_checks import non_negative, positive, rows, same_columns, wrap
+from .toolbox_checks import non_negative, pair, positive, wrap
 from .transformations import create_si_to_uni_dynamics, create_si_to_uni_mapping
 
 
@@ -20,9 +20,7 @@ def create_si_position_controller(x_velocity_gain=0.8, y_velocity_gain=0.8, velo
     limit = non_negative(name, "velocity_magnitude_limit", velocity_magnitude_limit)
 
     def position_controller_si(states, poses):
-        states = rows("position_controller_si", "states", states, 2)
-        poses = rows("position_controller_si", "poses", poses, 2)
-        same_columns("position_controller_si", "states", states, "poses", poses)
+        states, poses = pair("position_controller_si", "states", states, 2, "poses", poses, 2)
         dx = gains * (poses - states)
         norms = np.linalg.norm(dx, axis=0)
         over = norms > limit
@@ -40,9 +38,7 @@ def create_uni_position_controller(x_velocity_gain=0.8, y_velocity_gain=0.8, vel
     si_to_uni, uni_to_si = create_si_to_uni_mapping(projection_distance)
 
     def position_controller_uni(states, poses):
-        states = rows("position_controller_uni", "states", states, 3)
-        poses = rows("position_controller_uni", "poses", poses, 2)
-        same_columns("position_controller_uni", "states", states, "poses", poses)
+        states, poses = pair("position_controller_uni", "states", states, 3, "poses", poses, 2)
         return si_to_uni(position(uni_to_si(states), poses), states)
 
     return position_controller_uni
@@ -61,9 +57,7 @@ def create_pose_controller_clf(approach_angle_gain=1, desired_angle_gain=2.7, ro
     wheel_limit = non_negative(name, "wheel_velocity_limit", wheel_velocity_limit)
 
     def controller_clf(states, poses):
-        states = rows("controller_clf", "states", states, 3)
-        poses = rows("controller_clf", "poses", poses, 3)
-        same_columns("controller_clf", "states", states, "poses", poses)
+        states, poses = pair("controller_clf", "states", states, 3, "poses", poses, 3)
         # The position error in the goal's frame.
         c, s = np.cos(poses[2, :]), np.sin(poses[2, :])
         dx, dy = poses[0, :] - states[0, :], poses[1, :] - states[1, :]
@@ -94,9 +88,7 @@ def create_pose_controller_hybrid(linear_velocity_gain=0.8, angular_velocity_lim
     kept = {"approach": np.array([])}
 
     def controller_hybrid(states, poses, in_approach_state=None):
-        states = rows("controller_hybrid", "states", states, 3)
-        poses = rows("controller_hybrid", "poses", poses, 3)
-        same_columns("controller_hybrid", "states", states, "poses", poses)
+        states, poses = pair("controller_hybrid", "states", states, 3, "poses", poses, 3)
         n = states.shape[1]
         if in_approach_state is not None:
             approach = in_approach_state
@@ -123,10 +115,18 @@ def create_pose_controller_hybrid(linear_velocity_gain=0.8, angular_velocity_lim
     return controller_hybrid
 
 
-def _parked(states, poses, position_error, rotation_error):
-    close = np.linalg.norm(states[:2, :] - poses[:2, :], axis=0) < position_error
-    turned = np.abs(wrap(states[2, :] - poses[2, :])) < rotation_error
-    return close & turned
+def _parking(controller, position_error, rotation_error):
+    """controller, with robots already within position_error and rotation_error of their goal
+    pose told to stop."""
+
+    def parking(states, poses):
+        dxu = controller(states, poses)
+        states, poses = np.asarray(states, dtype=float), np.asarray(poses, dtype=float)
+        close = np.linalg.norm(states[:2, :] - poses[:2, :], axis=0) < position_error
+        dxu[:, close & (np.abs(wrap(states[2, :] - poses[2, :])) < rotation_error)] = 0
+        return dxu
+
+    return parking
 
 
 def create_pose_parking_controller_clf(approach_angle_gain=1, desired_angle_gain=2.7, rotation_error_gain=1,
@@ -134,16 +134,9 @@ def create_pose_parking_controller_clf(approach_angle_gain=1, desired_angle_gain
                                        position_error=0.05, rotation_error=0.2):
     """create_pose_controller_clf, with robots already within position_error and rotation_error of
     their goal pose told to stop."""
-    clf = create_pose_controller_clf(approach_angle_gain, desired_angle_gain, rotation_error_gain,
-                                     wheel_velocity_limit, wheel_radius, base_length)
-
-    def controller_clf_parking(states, poses):
-        dxu = clf(states, poses)
-        dxu[:, _parked(np.asarray(states, dtype=float), np.asarray(poses, dtype=float), position_error,
-                       rotation_error)] = 0
-        return dxu
-
-    return controller_clf_parking
+    return _parking(create_pose_controller_clf(approach_angle_gain, desired_angle_gain, rotation_error_gain,
+                                               wheel_velocity_limit, wheel_radius, base_length),
+                    position_error, rotation_error)
 
 
 def create_pose_parking_controller_hybrid(linear_velocity_gain=0.8, angular_velocity_limit=np.pi,
@@ -151,13 +144,7 @@ def create_pose_parking_controller_hybrid(linear_velocity_gain=0.8, angular_velo
                                           rotation_error=0.2):
     """create_pose_controller_hybrid, with robots already within position_error and rotation_error
     of their goal pose told to stop."""
-    hybrid = create_pose_controller_hybrid(linear_velocity_gain, angular_velocity_limit, velocity_magnitude_limit,
-                                           position_error, position_epsilon, rotation_error)
-
-    def controller_hybrid_parking(states, poses):
-        dxu = hybrid(states, poses)
-        dxu[:, _parked(np.asarray(states, dtype=float), np.asarray(poses, dtype=float), position_error,
-                       rotation_error)] = 0
-        return dxu
-
-    return controller_hybrid_parking
+    return _parking(create_pose_controller_hybrid(linear_velocity_gain, angular_velocity_limit,
+                                                  velocity_magnitude_limit, position_error, position_epsilon,
+                                                  rotation_error),
+                    position_error, rotation_error)

@@ -8,7 +8,7 @@ from datetime import datetime
 
 import numpy as np
 
-from .toolbox_checks import ToolboxArgumentError, positive, rows, same_columns, whole, wrap
+from .toolbox_checks import ToolboxArgumentError, pair, positive, whole, wrap
 
 CHARGER_SLOTS_PER_EDGE = 11
 RANDOM_POSE_ATTEMPTS = 10000
@@ -81,9 +81,7 @@ def create_at_pose(position_error=0.05, rotation_error=0.2):
     and rotation_error radians of its pose."""
 
     def check_at_pose(states, poses):
-        states = rows("check_at_pose", "states", states, 3)
-        poses = rows("check_at_pose", "poses", poses, 3)
-        same_columns("check_at_pose", "states", states, "poses", poses)
+        states, poses = pair("check_at_pose", "states", states, 3, "poses", poses, 3)
         close = np.linalg.norm(states[:2, :] - poses[:2, :], axis=0) <= position_error
         there = close & (np.abs(wrap(states[2, :] - poses[2, :])) <= rotation_error)
         return bool(np.all(there)), there
@@ -96,9 +94,8 @@ def create_at_position(position_error=0.05):
     metres of its position."""
 
     def check_at_position(states, positions):
-        states = rows("check_at_position", "states", states, 2, at_least=True)
-        positions = rows("check_at_position", "positions", positions, 2)
-        same_columns("check_at_position", "states", states, "positions", positions)
+        states, positions = pair("check_at_position", "states", states, 2, "positions", positions, 2,
+                                 first_at_least=True)
         there = np.linalg.norm(states[:2, :] - positions[:2, :], axis=0) <= position_error
         return bool(np.all(there)), there
 

@@ -46,6 +46,14 @@ def same_columns(function, first_name, first, second_name, second):
                                    (function, first_name, second_name, first.shape[1], second.shape[1]))
 
 
+def pair(function, first_name, first, first_rows, second_name, second, second_rows, first_at_least=False):
+    """Two arrays, first_rows x N (at least, if first_at_least) and second_rows x N, checked."""
+    first = rows(function, first_name, first, first_rows, at_least=first_at_least)
+    second = rows(function, second_name, second, second_rows)
+    same_columns(function, first_name, first, second_name, second)
+    return first, second
+
+
 def wrap(angle):
     """An angle (or array of them) wrapped to [-pi, pi], as rps wraps: atan2(sin, cos)."""
     return np.arctan2(np.sin(angle), np.cos(angle))

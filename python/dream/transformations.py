@@ -8,7 +8,7 @@ ones). Vectorised over robots; every function takes and returns 2 x N or 3 x N a
 
 import numpy as np
 
-from .toolbox_checks import non_negative, positive, rows, same_columns, wrap
+from .toolbox_checks import non_negative, pair, positive, rows, wrap
 
 
 def _headings(states):
@@ -29,9 +29,7 @@ def create_si_to_uni_dynamics(linear_velocity_gain=1, angular_velocity_limit=np.
     limit = non_negative(name, "angular_velocity_limit", angular_velocity_limit)
 
     def si_to_uni(dxi, states):
-        dxi = rows("si_to_uni", "dxi", dxi, 2)
-        states = rows("si_to_uni", "states", states, 3)
-        same_columns("si_to_uni", "dxi", dxi, "states", states)
+        dxi, states = pair("si_to_uni", "dxi", dxi, 2, "states", states, 3)
         c, s = _headings(states)
         forward = _dot(c, dxi[0, :], s, dxi[1, :])
         left = _dot(-s, dxi[0, :], c, dxi[1, :])
@@ -48,9 +46,7 @@ def create_si_to_uni_dynamics_with_backwards_motion(linear_velocity_gain=1, angu
     limit = non_negative(name, "angular_velocity_limit", angular_velocity_limit)
 
     def si_to_uni(dxi, states):
-        dxi = rows("si_to_uni", "dxi", dxi, 2)
-        states = rows("si_to_uni", "states", states, 3)
-        same_columns("si_to_uni", "dxi", dxi, "states", states)
+        dxi, states = pair("si_to_uni", "dxi", dxi, 2, "states", states, 3)
         off = wrap(np.arctan2(dxi[1, :], dxi[0, :]) - states[2, :])
         ahead = (off > -np.pi / 2) & (off < np.pi / 2)
         heading = np.where(ahead, states[2, :], wrap(states[2, :] + np.pi))
@@ -68,9 +64,7 @@ def create_si_to_uni_mapping(projection_distance=0.05):
     d = positive("create_si_to_uni_mapping", "projection_distance", projection_distance)
 
     def si_to_uni(dxi, states):
-        dxi = rows("si_to_uni", "dxi", dxi, 2)
-        states = rows("si_to_uni", "states", states, 3)
-        same_columns("si_to_uni", "dxi", dxi, "states", states)
+        dxi, states = pair("si_to_uni", "dxi", dxi, 2, "states", states, 3)
         c, s = _headings(states)
         return np.vstack([_dot(c, dxi[0, :], s, dxi[1, :]), _dot(-s / d, dxi[0, :], c / d, dxi[1, :])])
 
@@ -88,17 +82,13 @@ def create_uni_to_si_mapping(projection_distance=0.05):
     d = positive("create_uni_to_si_mapping", "projection_distance", projection_distance)
 
     def uni_to_si(dxu, states):
-        dxu = rows("uni_to_si", "dxu", dxu, 2)
-        states = rows("uni_to_si", "states", states, 3)
-        same_columns("uni_to_si", "dxu", dxu, "states", states)
+        dxu, states = pair("uni_to_si", "dxu", dxu, 2, "states", states, 3)
         c, s = _headings(states)
         lateral = d * dxu[1, :]
         return np.vstack([_dot(c, dxu[0, :], -s, lateral), _dot(s, dxu[0, :], c, lateral)])
 
     def si_to_uni(uni_states, si_states):
-        uni_states = rows("si_to_uni", "uni_states", uni_states, 3)
-        si_states = rows("si_to_uni", "si_states", si_states, 2)
-        same_columns("si_to_uni", "uni_states", uni_states, "si_states", si_states)
+        uni_states, si_states = pair("si_to_uni", "uni_states", uni_states, 3, "si_states", si_states, 2)
         c, s = _headings(uni_states)
         return si_states[0:2, :] - d * np.vstack([c, s])
 

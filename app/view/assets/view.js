@@ -141,7 +141,12 @@
     const key = metrics.map(([name, value]) => `${name}=${value}`).join(";");
     if ($("metrics").dataset.shown === key) return;  // unchanged: no layout for the page
     $("metrics").dataset.shown = key;
-    $("metrics").replaceChildren(...metrics.map(([name, value]) => {
+    fillTable($("metrics"), metrics);
+  }
+
+  // A two-column table's rows, [name, value] each.
+  function fillTable(table, rows) {
+    table.replaceChildren(...rows.map(([name, value]) => {
       const row = document.createElement("tr");
       for (const text of [name, value]) {
         const cell = document.createElement("td");
@@ -332,15 +337,7 @@
     if ($("inspect-table").dataset.shown === key) return;  // unchanged: no layout for the page
     $("inspect-table").dataset.shown = key;
     $("inspect-swatch").style.background = DreamArena.colour(d.id);
-    $("inspect-table").replaceChildren(...rows.map(([name, value]) => {
-      const row = document.createElement("tr");
-      for (const text of [name, value]) {
-        const cell = document.createElement("td");
-        cell.textContent = text;
-        row.appendChild(cell);
-      }
-      return row;
-    }));
+    fillTable($("inspect-table"), rows);
   }
 
   // Marks the current goal and the reached ones, and the robot looked at, on a scene.
