@@ -1,13 +1,12 @@
 #include "dream/lcm/udpm_receive_socket.h"
 
+#include <dirent.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
 
 #include <cstdlib>
-#include <filesystem>
 #include <map>
-#include <system_error>
 
 namespace dream::lcm {
 
@@ -17,16 +16,20 @@ namespace {
 // a descriptor number reused meanwhile is not mistaken for an old socket.
 std::map<int, ino_t> OpenSockets() {
   std::map<int, ino_t> sockets;
-  std::error_code error;
+  // libc's readdir rather than std::filesystem: every agent process runs
+  // this, and the latter maps pages of libstdc++ nothing else there uses.
+  DIR* folder = opendir("/proc/self/fd");
+  if (folder == nullptr) return sockets;
+  const int own = dirfd(folder);
   // Bounded: a process has at most its descriptor limit open.
-  for (const auto& entry : std::filesystem::directory_iterator("/proc/self/fd", error)) {
+  while (const dirent* entry = readdir(folder)) {
     char* end = nullptr;
-    const std::string name = entry.path().filename().string();
-    const long fd = std::strtol(name.c_str(), &end, 10);
-    if (end == name.c_str() || *end != '\0' || fd < 0) continue;
+    const long fd = std::strtol(entry->d_name, &end, 10);
+    if (end == entry->d_name || *end != '\0' || fd < 0 || fd == own) continue;
     struct stat info {};
     if (fstat(static_cast<int>(fd), &info) == 0 && S_ISSOCK(info.st_mode)) sockets[static_cast<int>(fd)] = info.st_ino;
   }
+  closedir(folder);
   return sockets;
 }
 
