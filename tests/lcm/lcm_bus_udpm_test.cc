@@ -85,8 +85,10 @@ TEST(LcmBusUdpmTest, TheKernelDropsOnlyChannelsNoHandlerCanMatch) {
   int poses = 0;
   int radio = 0;
   int commands = 0;
-  const lcm::Subscription poses_handler = agent.Subscribe("DREAM_POSES", [&](const std::string&, const void*, int) { ++poses; });
-  const lcm::Subscription radio_handler = agent.Subscribe("DREAM_RADIO_.*", [&](const std::string&, const void*, int) { ++radio; });
+  const lcm::Subscription poses_handler =
+      agent.Subscribe("DREAM_POSES", [&](const std::string&, const void*, int) { ++poses; });
+  const lcm::Subscription radio_handler =
+      agent.Subscribe("DREAM_RADIO_.*", [&](const std::string&, const void*, int) { ++radio; });
   EXPECT_EQ(agent.kernel_filter_prefixes(), (std::vector<std::string>{"DREAM_POSES", "DREAM_RADIO_"}));
 
   constexpr int kSteps = 100;

@@ -51,7 +51,8 @@ int UdpmReceiveSocket::PortOf(const std::string& url) {
   const std::string scheme = "udpm://";
   if (url.rfind(scheme, 0) != 0) return -1;
   const size_t end = url.find('?', scheme.size());
-  const std::string address = url.substr(scheme.size(), end == std::string::npos ? std::string::npos : end - scheme.size());
+  const size_t length = end == std::string::npos ? std::string::npos : end - scheme.size();
+  const std::string address = url.substr(scheme.size(), length);
   const size_t colon = address.find(':');
   if (colon == std::string::npos) return 7667;  // LCM's default port
   const std::string digits = address.substr(colon + 1);
