@@ -9,6 +9,7 @@
 #include <functional>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "dream/lcm/lcm_bus.h"
 
@@ -70,6 +71,50 @@ TEST(LcmBusUdpmTest, EveryMatchingHandlerSeesEveryMessageWhileOthersStartUp) {
   HandleUntil(bus, [&] { return specific >= kMessages && everything >= kMessages; });
   EXPECT_EQ(specific, kMessages);
   EXPECT_EQ(everything, kMessages) << "the '.*' subscription missed messages the specific one received";
+}
+
+// An agent's bus lets the kernel drop the channels its handlers cannot match
+// (the other robots' commands), and still hears every message it wants; a
+// handler of everything, or another host given LCM's instance, lifts it.
+TEST(LcmBusUdpmTest, TheKernelDropsOnlyChannelsNoHandlerCanMatch) {
+  const std::string url = PrivateUdpmUrlOrEmpty();
+  if (url.empty()) GTEST_SKIP() << "needs udpm in a private network namespace (run under netns.sh)";
+
+  LcmBus world(url);
+  LcmBus agent(url);
+  int poses = 0;
+  int radio = 0;
+  int commands = 0;
+  const lcm::Subscription poses_handler =
+      agent.Subscribe("DREAM_POSES", [&](const std::string&, const void*, int) { ++poses; });
+  const lcm::Subscription radio_handler =
+      agent.Subscribe("DREAM_RADIO_.*", [&](const std::string&, const void*, int) { ++radio; });
+  EXPECT_EQ(agent.kernel_filter_prefixes(), (std::vector<std::string>{"DREAM_POSES", "DREAM_RADIO_"}));
+
+  constexpr int kSteps = 100;
+  const char byte = 0;
+  for (int step = 0; step < kSteps; ++step) {
+    for (int robot = 0; robot < 10; ++robot) world.Publish("DREAM_CMD_" + std::to_string(robot), &byte, 1);
+    world.Publish("DREAM_RADIO_" + std::to_string(step % 10), &byte, 1);
+    world.Publish("DREAM_POSES", &byte, 1);
+    if (step % 10 == 9) std::this_thread::sleep_for(std::chrono::milliseconds(1));  // stay within the socket buffer
+  }
+  HandleUntil(agent, [&] { return poses >= kSteps && radio >= kSteps; });
+  EXPECT_EQ(poses, kSteps);
+  EXPECT_EQ(radio, kSteps);
+
+  {
+    const lcm::Subscription everything = agent.Subscribe(".*", [&](const std::string& channel, const void*, int) {
+      if (channel.rfind("DREAM_CMD_", 0) == 0) ++commands;
+    });
+    EXPECT_TRUE(agent.kernel_filter_prefixes().empty()) << "a handler of every channel must hear every channel";
+    world.Publish("DREAM_CMD_0", &byte, 1);
+    HandleUntil(agent, [&] { return commands >= 1; });
+    EXPECT_EQ(commands, 1);
+  }
+  EXPECT_FALSE(agent.kernel_filter_prefixes().empty()) << "filtered again once the handler of everything is gone";
+  (void)agent.c_handle();
+  EXPECT_TRUE(agent.kernel_filter_prefixes().empty()) << "another host on LCM's instance subscribes unseen by the bus";
 }
 
 }  // namespace

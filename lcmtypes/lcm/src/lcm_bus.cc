@@ -4,10 +4,13 @@
 
 #include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <exception>
 #include <lcm/lcm-cpp.hpp>
 #include <regex>
 #include <stdexcept>
+
+#include "dream/lcm/channel_prefix_filter.h"
 
 namespace dream::lcm {
 
@@ -23,6 +26,7 @@ LcmBus::LcmBus(std::string url)
   // queued is gone before any handler subscribes.
   subscription_ = lcm_->subscribeFunction(kStartUpChannel, &LcmBus::Dispatch, this);
   if (subscription_ == nullptr) throw std::runtime_error("cannot subscribe to LCM on " + url_);
+  receive_fd_ = receive_socket_.Find();
   DiscardStartUpLeftovers();
 }
 
@@ -50,11 +54,39 @@ void LcmBus::ResubscribeForAllHandlers() {
   replacement->setQueueCapacity(kQueueCapacity);
   lcm_->unsubscribe(subscription_);
   subscription_ = replacement;
+  UpdateKernelFilter();
+}
+
+void LcmBus::UpdateKernelFilter() {
+  if (receive_fd_ < 0) return;
+  std::vector<std::string> prefixes;
+  for (const Subscriber& subscriber : subscribers_) {
+    if (subscriber.active) prefixes.push_back(ChannelPrefixFilter::LiteralPrefix(subscriber.channel_regex_text));
+  }
+  // Nobody listens: LCM drops everything anyway; the start-up channel's prefix lets nothing real through.
+  if (prefixes.empty()) prefixes.push_back(kStartUpChannel);
+  const ChannelPrefixFilter filter(prefixes);
+  kernel_filter_prefixes_.clear();
+  if (!kernel_filter_allowed_) {
+    ChannelPrefixFilter::RemoveFrom(receive_fd_);
+    return;
+  }
+  if (!filter.ApplyTo(receive_fd_)) {
+    // Only a cost: LCM's receive thread drops what the kernel did not.
+    spdlog::debug("{}: the kernel refused the channel filter ({}); every datagram goes to LCM", url_,
+                  std::strerror(errno));
+    ChannelPrefixFilter::RemoveFrom(receive_fd_);
+    return;
+  }
+  if (!filter.passes_everything()) kernel_filter_prefixes_ = prefixes;
 }
 
 _lcm_t* LcmBus::c_handle() {
   const std::lock_guard<std::mutex> lock(queue_mutex_);
   if (own_queue_) PassOwnQueueToLcm();
+  // The other host's subscriptions are not the bus's: the kernel must not drop their channels.
+  kernel_filter_allowed_ = false;
+  UpdateKernelFilter();
   return lcm_->getUnderlyingLCM();
 }
 

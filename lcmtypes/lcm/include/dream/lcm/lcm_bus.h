@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "dream/lcm/lcm_interface.h"
+#include "dream/lcm/udpm_receive_socket.h"
 
 struct _lcm_t;  // LCM's C instance (lcm_t)
 
@@ -45,6 +46,13 @@ namespace dream::lcm {
 /// embedded run's loop. Once c_handle() hands LCM's instance to another host
 /// (the embedded Python agents), messages go through LCM again, so that host
 /// hears them; what was queued by then is passed on first, in order.
+///
+/// On udpm the bus puts a ChannelPrefixFilter on LCM's receive socket, kept
+/// to its handlers' regexes, so the kernel drops datagrams on channels no
+/// handler can match instead of waking LCM's receive thread for each (an
+/// agent would wake for every other robot's command). A handler of ".*" (the
+/// simulator's) lifts it, and so does c_handle(): another host subscribes
+/// behind the bus's back.
 class LcmBus final : public LcmInterface {
  public:
   /// Messages queued before LCM drops new ones; enough for several steps of
@@ -77,6 +85,9 @@ class LcmBus final : public LcmInterface {
   _lcm_t* c_handle();
   /// Messages a memq bus's own queue refused because it held kQueueCapacity.
   long queue_overflows() const;
+  /// The channel prefixes the kernel lets through to this bus (udpm); empty
+  /// when it filters nothing.
+  const std::vector<std::string>& kernel_filter_prefixes() const { return kernel_filter_prefixes_; }
 
  private:
   struct Subscriber {
@@ -93,6 +104,7 @@ class LcmBus final : public LcmInterface {
   std::vector<size_t> MatchSubscribers(const std::string& channel) const;
   void DiscardStartUpLeftovers();
   void ResubscribeForAllHandlers();
+  void UpdateKernelFilter();
   const std::vector<size_t>& RouteOf(const std::string& channel, std::vector<size_t>* uncached);
   int HandleOwnQueue(int timeout_ms);
   void PassOwnQueueToLcm();
@@ -104,7 +116,12 @@ class LcmBus final : public LcmInterface {
   };
 
   std::string url_;
+  // Before lcm_: notes the sockets open before LCM opens its own.
+  UdpmReceiveSocket receive_socket_{url_};
   std::unique_ptr<::lcm::LCM> lcm_;
+  int receive_fd_ = -1;  // LCM's udpm receive socket, when found
+  bool kernel_filter_allowed_ = true;  // false once c_handle() handed LCM out
+  std::vector<std::string> kernel_filter_prefixes_;
   ::lcm::Subscription* subscription_ = nullptr;  // owned by lcm_
   // deque: a handler may subscribe while it runs; its own element must not move.
   std::deque<Subscriber> subscribers_;
