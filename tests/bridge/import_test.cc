@@ -13,8 +13,8 @@
 
 #include "bridge_test_support.h"
 #include "dream/bridge/lab_import.h"
-#include "dream/bridge/mat_file.h"
-#include "dream/bridge/npy_file.h"
+#include "dream/formats/mat_file.h"
+#include "dream/formats/npy_file.h"
 #include "dream/bridge/submission_exporter.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/lcm/log_reader.h"
@@ -42,10 +42,10 @@ class ImportTest : public ::testing::Test {
 
   /// Writes `rows` as a result file and imports it into a fresh folder.
   /// `declared`: what the user declared on the lab's form (absent: UPLOAD.txt's).
-  static ImportedRun Import(const NpyArray& rows, const std::string& name,
+  static ImportedRun Import(const formats::NpyArray& rows, const std::string& name,
                             const std::optional<world::LabVerifierRules::Declaration>& declared = {}) {
     const std::string dir = testing::NewFolder("import_" + name);
-    testing::WriteText(dir + "/dream_result.npy", EncodeNpy(rows));
+    testing::WriteText(dir + "/dream_result.npy", formats::EncodeNpy(rows));
     return ImportLabRun(dir + "/dream_result.npy", *export_dir_, dir + "/out", declared);
   }
 
@@ -104,7 +104,7 @@ TEST_F(ImportTest, PerfectLabResultGivesTheSimulatedRunBack) {
 }
 
 TEST_F(ImportTest, CutShortRunIsImportedAsSuch) {
-  NpyArray rows = testing::PerfectLabResult(*export_dir_);
+  formats::NpyArray rows = testing::PerfectLabResult(*export_dir_);
   const int64_t columns = rows.shape[1];
   rows.shape[0] = 100;  // the lab stopped after 100 steps: no final row
   rows.values.resize(static_cast<size_t>(100 * columns));
@@ -118,7 +118,7 @@ TEST_F(ImportTest, CutShortRunIsImportedAsSuch) {
 }
 
 TEST_F(ImportTest, SettleRowsAreSkippedAndClockJumpsHeld) {
-  NpyArray rows = testing::PerfectLabResult(*export_dir_, [](int64_t k, double* row) {
+  formats::NpyArray rows = testing::PerfectLabResult(*export_dir_, [](int64_t k, double* row) {
     if (k == 50) row[ResultLayout::kWallTimeColumn] -= 1.0;  // the lab's clock stepped back
   });
   const int64_t columns = rows.shape[1];
@@ -141,7 +141,7 @@ TEST_F(ImportTest, SettleRowsAreSkippedAndClockJumpsHeld) {
 std::string Seconds(double seconds) { return world::PrintfText("%.2f s", seconds); }
 
 /// `rows` with `count` settle rows in front (copies of the first rows).
-NpyArray WithSettleRows(NpyArray rows, int count) {
+formats::NpyArray WithSettleRows(formats::NpyArray rows, int count) {
   const int64_t columns = rows.shape[1];
   std::vector<double> settle(rows.values.begin(), rows.values.begin() + count * columns);
   for (int s = 0; s < count; ++s) {
@@ -161,7 +161,7 @@ TEST_F(ImportTest, RunWithinOneAndAHalfTimesTheDeclaredDurationIsClean) {
   EXPECT_EQ(upload.num_robots, exported.params.num_robots);
   EXPECT_DOUBLE_EQ(upload.duration_s, static_cast<double>(steps + exported.params.options.settle_max_steps) * dt);
 
-  const NpyArray rows = testing::PerfectLabResult(*export_dir_);
+  const formats::NpyArray rows = testing::PerfectLabResult(*export_dir_);
   const ImportedRun as_uploaded = Import(rows, "declared_as_uploaded");
   EXPECT_EQ(as_uploaded.lab.iterations, steps);  // one step() per experiment row, no settle rows
   EXPECT_EQ(as_uploaded.declared.duration_s, upload.duration_s);
@@ -223,18 +223,18 @@ TEST_F(ImportTest, RobotCountOtherThanDeclaredIsRejected) {
 }
 
 TEST_F(ImportTest, MatFileFromMatlabImportsLikeTheNpy) {
-  const NpyArray rows = testing::PerfectLabResult(*export_dir_);
+  const formats::NpyArray rows = testing::PerfectLabResult(*export_dir_);
   const std::string dir = testing::NewFolder("import_mat");
-  WriteMatMatrix(dir + "/dream_result.mat", SubmissionFiles::kResultMatVariable, rows);
+  formats::WriteMatMatrix(dir + "/dream_result.mat", SubmissionFiles::kResultMatVariable, rows);
   const ImportedRun from_mat = ImportLabRun(dir + "/dream_result.mat", *export_dir_, dir + "/out");
   const ImportedRun from_npy = Import(rows, "mat_reference");
   EXPECT_EQ(testing::ReadText(from_mat.log_path), testing::ReadText(from_npy.log_path));
   // MATLAB's -v7.3 files are HDF5.
-  WriteMatMatrix(dir + "/dream_result_v73.mat", SubmissionFiles::kResultMatVariable, rows, true);
+  formats::WriteMatMatrix(dir + "/dream_result_v73.mat", SubmissionFiles::kResultMatVariable, rows, true);
   const ImportedRun from_v73 = ImportLabRun(dir + "/dream_result_v73.mat", *export_dir_, dir + "/out_v73");
   EXPECT_EQ(testing::ReadText(from_v73.log_path), testing::ReadText(from_npy.log_path));
   // A .mat without the variable, or with the wrong one, is refused by name.
-  WriteMatMatrix(dir + "/other.mat", "poses", rows);
+  formats::WriteMatMatrix(dir + "/other.mat", "poses", rows);
   try {
     ImportLabRun(dir + "/other.mat", *export_dir_, dir + "/out2");
     ADD_FAILURE() << "imported a .mat without dream_result";
@@ -251,7 +251,7 @@ TEST_F(ImportTest, MatFileFromMatlabImportsLikeTheNpy) {
 std::string MatReadError(const std::string& path, const std::string& bytes) {
   testing::WriteText(path, bytes);
   try {
-    ReadMatMatrix(path, "dream_result", 100);
+    formats::ReadMatMatrix(path, "dream_result", 100);
   } catch (const std::runtime_error& e) {
     return e.what();
   }
@@ -279,7 +279,7 @@ TEST(MatFileTest, ForgedV4HeadersAreRefusedBeforeLibmatioReadsThem) {
   const std::string name("dream_result\0", 13);
   const std::string sound = dir + "/sound.mat";
   testing::WriteText(sound, Mat4Variable(0, 2, 3, 13, name, {1, 2, 3, 4, 5, 6}));
-  const NpyArray read = ReadMatMatrix(sound, "dream_result", 100);
+  const formats::NpyArray read = formats::ReadMatMatrix(sound, "dream_result", 100);
   EXPECT_EQ(read.shape, (std::vector<int64_t>{2, 3}));
   EXPECT_EQ(read.values, (std::vector<double>{1, 3, 5, 2, 4, 6}));  // the file is column-major
 
@@ -336,7 +336,7 @@ TEST(MatFileTest, ForgedCompressedHeadersAreRefusedBeforeLibmatioReadsThem) {
   const std::string name = Int32s({1, 12}) + "dream_result" + std::string(4, '\0');  // padded to 8 bytes
   const std::string sound = dir + "/sound.mat";
   testing::WriteText(sound, CompressedMat5(matrix(flags + dims + name + data)));
-  EXPECT_EQ(ReadMatMatrix(sound, "dream_result", 100).shape, (std::vector<int64_t>{2, 3}));
+  EXPECT_EQ(formats::ReadMatMatrix(sound, "dream_result", 100).shape, (std::vector<int64_t>{2, 3}));
 
   const std::vector<std::pair<std::string, std::string>> cases = {
       {CompressedMat5(matrix(flags + dims + Int32s({1, 1000000000}) + "dream_result")),
@@ -399,36 +399,36 @@ TEST(MatFileTest, V73HeaderWithoutHdf5IsRefused) {
 }
 
 TEST_F(ImportTest, BadResultFilesAreRefusedByNameAndNothingIsWritten) {
-  const NpyArray good = testing::PerfectLabResult(*export_dir_);
+  const formats::NpyArray good = testing::PerfectLabResult(*export_dir_);
   const int64_t rows = good.shape[0];
   const int64_t columns = good.shape[1];
-  auto with = [&good](const std::function<void(NpyArray*)>& change) {
-    NpyArray array = good;
+  auto with = [&good](const std::function<void(formats::NpyArray*)>& change) {
+    formats::NpyArray array = good;
     change(&array);
-    return EncodeNpy(array);
+    return formats::EncodeNpy(array);
   };
-  const std::string bytes = EncodeNpy(good);
+  const std::string bytes = formats::EncodeNpy(good);
 
   // Shape and robot count.
-  ExpectRefused(with([](NpyArray* a) { a->shape = {a->shape[0] * a->shape[1]}; }), "has 1 dimensions", "1d");
-  ExpectRefused(with([&](NpyArray* a) { a->shape = {rows, 1, columns}; }), "has 3 dimensions", "3d");
-  ExpectRefused(with([&](NpyArray* a) {
+  ExpectRefused(with([](formats::NpyArray* a) { a->shape = {a->shape[0] * a->shape[1]}; }), "has 1 dimensions", "1d");
+  ExpectRefused(with([&](formats::NpyArray* a) { a->shape = {rows, 1, columns}; }), "has 3 dimensions", "3d");
+  ExpectRefused(with([&](formats::NpyArray* a) {
                   a->shape = {rows, columns - 5};
                   a->values.resize(static_cast<size_t>(rows * (columns - 5)));
                 }),
                 "as a result of a 7-robot run; this export has 8 robots", "seven_robots");
-  ExpectRefused(with([&](NpyArray* a) {
+  ExpectRefused(with([&](formats::NpyArray* a) {
                   a->shape = {rows, columns + 1};
                   a->values.resize(static_cast<size_t>(rows * (columns + 1)));
                 }),
                 "has 44 columns; this export has 8 robots", "odd_columns");
-  ExpectRefused(with([](NpyArray* a) {
+  ExpectRefused(with([](formats::NpyArray* a) {
                   a->shape = {0, a->shape[1]};
                   a->values.clear();
                 }),
                 "holds no rows", "empty");
   // Step count and order.
-  ExpectRefused(with([&](NpyArray* a) {
+  ExpectRefused(with([&](formats::NpyArray* a) {
                   // The final row becomes experiment step K, and another final row follows.
                   double* last = &a->values[static_cast<size_t>((rows - 1) * columns)];
                   last[ResultLayout::kPhaseColumn] = ResultLayout::kPhaseExperiment;
@@ -439,28 +439,28 @@ TEST_F(ImportTest, BadResultFilesAreRefusedByNameAndNothingIsWritten) {
                   a->shape[0] += 1;
                 }),
                 "more experiment steps than the", "too_many_steps");
-  ExpectRefused(with([&](NpyArray* a) { a->values[static_cast<size_t>(10 * columns + ResultLayout::kStepColumn)] = 11; }),
+  ExpectRefused(with([&](formats::NpyArray* a) { a->values[static_cast<size_t>(10 * columns + ResultLayout::kStepColumn)] = 11; }),
                 "row 10: experiment step 11.000000, expected 10", "step_gap");
-  ExpectRefused(with([&](NpyArray* a) { a->values[static_cast<size_t>(10 * columns + ResultLayout::kPhaseColumn)] = 7; }),
+  ExpectRefused(with([&](formats::NpyArray* a) { a->values[static_cast<size_t>(10 * columns + ResultLayout::kPhaseColumn)] = 7; }),
                 "row 10: phase 7.000000 is not 0 (settle), 1 (experiment) or 2 (final)", "bad_phase");
-  ExpectRefused(with([&](NpyArray* a) {
+  ExpectRefused(with([&](formats::NpyArray* a) {
                   a->shape[0] = 1;
                   a->values.resize(static_cast<size_t>(columns));
                 }),
                 "has 1 experiment poses; at least 2 are needed", "one_row");
   // NaN and infinity, named by row, quantity and robot.
-  ExpectRefused(with([&](NpyArray* a) {
+  ExpectRefused(with([&](formats::NpyArray* a) {
                   a->values[static_cast<size_t>(20 * columns + ResultLayout::Y(8, 5))] = std::numeric_limits<double>::quiet_NaN();
                 }),
                 "row 20: y of robot 5 is nan", "nan");
-  ExpectRefused(with([&](NpyArray* a) {
+  ExpectRefused(with([&](formats::NpyArray* a) {
                   a->values[static_cast<size_t>(3 * columns + ResultLayout::kWallTimeColumn)] = std::numeric_limits<double>::infinity();
                 }),
                 "row 3: the wall-clock column is inf", "inf");
   // Finite but absurd: 1e300 m made the comparison's squares overflow to inf.
-  ExpectRefused(with([&](NpyArray* a) { a->values[static_cast<size_t>(20 * columns + ResultLayout::X(8, 2))] = 1e300; }),
+  ExpectRefused(with([&](formats::NpyArray* a) { a->values[static_cast<size_t>(20 * columns + ResultLayout::X(8, 2))] = 1e300; }),
                 "row 20: x of robot 2 is 1e+300; beyond 1000 in magnitude", "far_pose");
-  ExpectRefused(with([&](NpyArray* a) {
+  ExpectRefused(with([&](formats::NpyArray* a) {
                   a->values[static_cast<size_t>(20 * columns + ResultLayout::Theta(8, 2))] = -2000.0;
                 }),
                 "row 20: theta of robot 2 is -2000; beyond 1000", "far_heading");
@@ -476,7 +476,7 @@ TEST_F(ImportTest, BadResultFilesAreRefusedByNameAndNothingIsWritten) {
 
 TEST_F(ImportTest, ForeignExportFolderIsRefused) {
   const std::string dir = testing::NewFolder("import_foreign_export");
-  testing::WriteText(dir + "/dream_result.npy", EncodeNpy(testing::PerfectLabResult(*export_dir_)));
+  testing::WriteText(dir + "/dream_result.npy", formats::EncodeNpy(testing::PerfectLabResult(*export_dir_)));
   EXPECT_THROW(
       {
         try {
