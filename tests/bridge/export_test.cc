@@ -11,7 +11,6 @@
 #include "bridge_test_support.h"
 #include "dream/bridge/lab_import.h"
 #include "dream/formats/npy_file.h"
-#include "dream/formats/sha256.h"
 #include "dream/bridge/pre_validation.h"
 #include "dream/bridge/submission_exporter.h"
 #include "dream/bridge/submission_format.h"
@@ -176,19 +175,6 @@ TEST_F(ExportTest, WritesTheSubmissionAndInstructions) {
   const RunTrack track = ReadRunTrack(*run_dir_ + "/run.lcmlog");
   const formats::NpyArray poses = formats::ReadNpyFile(out + "/upload/dream_reference_poses.npy");
   EXPECT_EQ(poses.values[static_cast<size_t>(100 * 24 + 8 + 3)], track.pose(100, 3).y_m);
-}
-
-TEST(Sha256Test, KnownDigests) {
-  // FIPS 180-2's examples, and a million 'a's added in uneven pieces.
-  EXPECT_EQ(formats::Sha256::Hex(""), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
-  EXPECT_EQ(formats::Sha256::Hex("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
-  EXPECT_EQ(formats::Sha256::Hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"),
-            "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
-  formats::Sha256 million;
-  const std::string piece(999, 'a');
-  for (int i = 0; i < 1001; ++i) million.Add(piece);
-  million.Add(std::string(1000000 - 999 * 1001, 'a'));
-  EXPECT_EQ(million.HexDigest(), "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
 }
 
 // Issue 23: an upload whose dream_initial_poses.npy was edited by +0.3 m passed
