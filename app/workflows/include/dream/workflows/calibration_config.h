@@ -8,6 +8,7 @@ namespace dream::workflows {
 /// robots driving the calibration program (kind calibration_drive, start
 /// poses calibration_drive::CalibrationDrive::StartPoses(N), steps = the program's
 /// length, the ideal world), as config/calibration.yaml is for 8.
+/// It names the kind, so it lives here, above the kinds, and the bridge names none.
 class CalibrationConfig {
  public:
   static constexpr int kMinRobots = 1;
