@@ -7,8 +7,8 @@
 #include <string>
 
 #include "dream/bridge/lab_import.h"
-#include "dream/bridge/npy_file.h"
-#include "dream/bridge/sha256.h"
+#include "dream/formats/npy_file.h"
+#include "dream/formats/sha256.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/files/file_text.h"
 
@@ -35,7 +35,7 @@ void CheckUploadDigests(const fs::path& upload, const nlohmann::json& digests, c
     const fs::path path = upload / name;
     std::error_code error;
     if (!fs::is_regular_file(path, error)) throw std::runtime_error(path.string() + ": missing" + again);
-    const std::string actual = Sha256::HexOfFile(path.string());
+    const std::string actual = formats::Sha256::HexOfFile(path.string());
     if (actual != digest.get<std::string>()) {
       throw std::runtime_error(path.string() + ": changed after the export (its SHA-256 is " + actual + ", " +
                                manifest_path + " says " + digest.get<std::string>() + ")" + again);
@@ -77,7 +77,7 @@ ExportedSubmission ExportedSubmission::Read(const std::string& dir) {
   if (!fs::exists(params_path)) {
     throw std::runtime_error(params_path + ": missing; " + dir + " is not a folder written by dream export");
   }
-  exported.params = SubmissionParams::FromNpy(ReadNpyFile(params_path, 1 << 20), params_path);
+  exported.params = SubmissionParams::FromNpy(formats::ReadNpyFile(params_path, 1 << 20), params_path);
   const std::string config_path = (root / "config.yaml").string();
   if (!fs::exists(config_path)) throw std::runtime_error(config_path + ": missing; export the run again");
   exported.config = run_config::LoadRunConfigFile(config_path);

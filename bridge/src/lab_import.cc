@@ -12,7 +12,7 @@
 
 #include "dream/bridge/controller_module_copy.h"
 #include "dream/bridge/lab_replay_world.h"
-#include "dream/bridge/mat_file.h"
+#include "dream/formats/mat_file.h"
 #include "dream/bridge/pre_validation.h"
 #include "dream/files/file_text.h"
 #include "dream/files/output_folder.h"
@@ -154,7 +154,7 @@ LabReplayWorld WriteLog(const RunTrack& track, const world::WorldParams& params,
 
 }  // namespace
 
-NpyArray ReadResultFile(const std::string& path, int64_t max_values) {
+formats::NpyArray ReadResultFile(const std::string& path, int64_t max_values) {
   char head[8] = {};
   ssize_t got = 0;
   {
@@ -162,11 +162,11 @@ NpyArray ReadResultFile(const std::string& path, int64_t max_values) {
     got = ::pread(file.descriptor(), head, sizeof(head), 0);
     if (got < 0) throw std::runtime_error(path + ": cannot read the file: " + std::strerror(errno));
   }
-  if (got >= 6 && std::memcmp(head, "\x93NUMPY", 6) == 0) return ReadNpyFile(path);
+  if (got >= 6 && std::memcmp(head, "\x93NUMPY", 6) == 0) return formats::ReadNpyFile(path);
   // MATLAB v5/v7.3 files start with a text header ("MATLAB 5.0 MAT-file"); v4 has none.
   const std::string extension = fs::path(path).extension().string();
   if ((got >= 6 && std::memcmp(head, "MATLAB", 6) == 0) || extension == ".mat") {
-    return ReadMatMatrix(path, SubmissionFiles::kResultMatVariable, max_values);
+    return formats::ReadMatMatrix(path, SubmissionFiles::kResultMatVariable, max_values);
   }
   throw std::runtime_error(path + ": neither a .npy file nor a MATLAB .mat file; pass the " +
                            SubmissionFiles::kResult + " the submission saved");
@@ -181,7 +181,7 @@ struct ResultFileError {
 };
 
 /// The array's shape for `n` robots, and every value finite and within reach.
-void CheckResultValues(const NpyArray& rows, int n, const ResultFileError& fail) {
+void CheckResultValues(const formats::NpyArray& rows, int n, const ResultFileError& fail) {
   if (rows.shape.size() != 2) {
     fail("has " + std::to_string(rows.shape.size()) + " dimensions; a result is a 2-D array (rows x " +
          std::to_string(ResultLayout::Columns(n)) + " columns)");
@@ -228,7 +228,7 @@ struct ResultPhases {
 };
 
 /// Phases in order: settle 0..s-1, experiment 0..e-1, then the final pose.
-ResultPhases FindPhases(const NpyArray& rows, const SubmissionParams& params, const ResultFileError& fail) {
+ResultPhases FindPhases(const formats::NpyArray& rows, const SubmissionParams& params, const ResultFileError& fail) {
   const int64_t row_count = rows.shape[0];
   const int64_t columns = rows.shape[1];
   auto at = [&](int64_t r, int64_t c) { return rows.values[static_cast<size_t>(r * columns + c)]; };
@@ -282,7 +282,7 @@ ResultPhases FindPhases(const NpyArray& rows, const SubmissionParams& params, co
 
 /// The experiment rows as the track: poses, commands sent, the lab's clock
 /// from step 0 (a stamp earlier than its predecessor held at it).
-void FillTrack(const NpyArray& rows, const ResultPhases& phases, int n, LabResult* result) {
+void FillTrack(const formats::NpyArray& rows, const ResultPhases& phases, int n, LabResult* result) {
   const int64_t columns = rows.shape[1];
   const int64_t pose_rows = phases.pose_rows();
   RunTrack& track = result->track;
@@ -322,7 +322,7 @@ void FillTrack(const NpyArray& rows, const ResultPhases& phases, int n, LabResul
 
 }  // namespace
 
-LabResult ParseLabResult(const NpyArray& rows, const std::string& name, const ExportedSubmission& exported) {
+LabResult ParseLabResult(const formats::NpyArray& rows, const std::string& name, const ExportedSubmission& exported) {
   const ResultFileError fail{name};
   const SubmissionParams& params = exported.params;
   CheckResultValues(rows, params.num_robots, fail);

@@ -18,7 +18,8 @@ int64_t ObstacleScheduleBytes(int64_t obstacles, int64_t steps) {
   return (steps + 1) * row_bytes;
 }
 
-NpyArray ObstacleSchedule(const std::vector<world::RectangleObstacleSpec>& specs, double time_step_s, int64_t steps) {
+formats::NpyArray ObstacleSchedule(const std::vector<world::RectangleObstacleSpec>& specs, double time_step_s,
+                                   int64_t steps) {
   if (steps < 0) throw std::invalid_argument("an obstacle schedule needs steps >= 0, got " + std::to_string(steps));
   const int64_t bytes = ObstacleScheduleBytes(static_cast<int64_t>(specs.size()), steps);
   if (bytes > kMaxObstacleScheduleBytes) {
@@ -28,7 +29,7 @@ NpyArray ObstacleSchedule(const std::vector<world::RectangleObstacleSpec>& specs
   }
   std::vector<world::RectangleObstacle> obstacles = world::RectangleObstacle::BuildAll(specs, "config", "obstacles");
   const auto m = static_cast<int64_t>(obstacles.size());
-  NpyArray array;
+  formats::NpyArray array;
   array.shape = {steps + 1, m, kObstacleColumns};
   array.values.resize(static_cast<size_t>((steps + 1) * m * kObstacleColumns));
   double* row = array.values.data();

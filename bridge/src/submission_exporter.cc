@@ -15,8 +15,8 @@
 #include "dream/bridge/controller_module_copy.h"
 #include "dream/bridge/flat_python_runtime.h"
 #include "dream/bridge/lab_import.h"
-#include "dream/bridge/sha256.h"
-#include "dream/bridge/npy_file.h"
+#include "dream/formats/sha256.h"
+#include "dream/formats/npy_file.h"
 #include "dream/bridge/obstacle_schedule.h"
 #include "dream/files/json_text.h"
 #include "dream/files/output_folder.h"
@@ -264,9 +264,9 @@ ExportInput ReadAndCheck(const std::string& run_dir, const std::string& out_dir,
 
 /// The start poses, and (track, replay) the recorded poses and commands of every step.
 struct ReferenceArrays {
-  NpyArray initial;
-  NpyArray poses;
-  NpyArray commands;
+  formats::NpyArray initial;
+  formats::NpyArray poses;
+  formats::NpyArray commands;
 };
 
 /// `start_poses`: the initial conditions the script asks the lab for (the
@@ -422,19 +422,19 @@ std::string Instructions(const ExportInput& input, const ExportSummary& summary,
 std::vector<std::pair<std::string, std::string>> UploadFiles(const SubmissionParams& params,
                                                              const ReferenceArrays& arrays,
                                                              const ControllerFiles& controller_files,
-                                                             const NpyArray& obstacles, bool controller) {
+                                                             const formats::NpyArray& obstacles, bool controller) {
   std::vector<std::pair<std::string, std::string>> files = {
       {SubmissionFiles::kMainScript, SubmissionScriptTemplate()},
-      {SubmissionFiles::kParams, EncodeNpy(params.ToNpy())},
-      {SubmissionFiles::kInitialPoses, EncodeNpy(arrays.initial)}};
+      {SubmissionFiles::kParams, formats::EncodeNpy(params.ToNpy())},
+      {SubmissionFiles::kInitialPoses, formats::EncodeNpy(arrays.initial)}};
   if (controller) {
-    files.emplace_back(SubmissionFiles::kControllerSpec, EncodeNpyBytes(controller_files.spec_json));
-    files.emplace_back(SubmissionFiles::kObstacles, EncodeNpy(obstacles));
+    files.emplace_back(SubmissionFiles::kControllerSpec, formats::EncodeNpyBytes(controller_files.spec_json));
+    files.emplace_back(SubmissionFiles::kObstacles, formats::EncodeNpy(obstacles));
     files.emplace_back(controller_files.module_name, controller_files.module_text);
     for (const FlatPythonRuntime::File& file : controller_files.runtime) files.emplace_back(file.name, file.text);
   } else {
-    files.emplace_back(SubmissionFiles::kReferencePoses, EncodeNpy(arrays.poses));
-    files.emplace_back(SubmissionFiles::kReferenceCommands, EncodeNpy(arrays.commands));
+    files.emplace_back(SubmissionFiles::kReferencePoses, formats::EncodeNpy(arrays.poses));
+    files.emplace_back(SubmissionFiles::kReferenceCommands, formats::EncodeNpy(arrays.commands));
   }
   return files;
 }
@@ -450,7 +450,7 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
   const ExportInput input = ReadAndCheck(run_dir, out_dir, options, config_path);
   const run_config::RunConfig& config = input.config;
   ControllerFiles controller_files;
-  NpyArray obstacles;
+  formats::NpyArray obstacles;
   if (input.controller) {
     controller_files = ReadControllerFiles(config, *input.python_kind, input.config_file, options.python_runtime_dir);
     obstacles = ObstacleSchedule(config.obstacles, config.world.time_step_s, input.steps);
@@ -480,7 +480,7 @@ ExportSummary ExportSubmission(const std::string& run_dir, const std::string& ou
   // The digest of every upload file, so that an edit after the export is
   // named (ExportedSubmission::Read) before check-submission or import trust it.
   nlohmann::ordered_json digests = nlohmann::ordered_json::object();
-  for (const auto& [name, bytes] : upload_files) digests[name] = Sha256::Hex(bytes);
+  for (const auto& [name, bytes] : upload_files) digests[name] = formats::Sha256::Hex(bytes);
   manifest[ExportedSubmission::kDigestsKey] = digests;
 
   files::OutputFolder out(out_dir);

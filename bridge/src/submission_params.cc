@@ -25,8 +25,8 @@ barriers::UnicycleBarrierParams BarrierParamsOf(const double* p) {
 
 }  // namespace
 
-NpyArray SubmissionParams::ToNpy() const {
-  NpyArray array;
+formats::NpyArray SubmissionParams::ToNpy() const {
+  formats::NpyArray array;
   array.shape = {kParamCount};
   array.values.assign(kParamCount, 0.0);
   double* p = array.values.data();
@@ -67,7 +67,7 @@ NpyArray SubmissionParams::ToNpy() const {
   return array;
 }
 
-SubmissionParams SubmissionParams::FromNpy(const NpyArray& array, const std::string& name) {
+SubmissionParams SubmissionParams::FromNpy(const formats::NpyArray& array, const std::string& name) {
   auto fail = [&name](const std::string& problem) { throw std::runtime_error(name + ": " + problem); };
   const bool format1 = array.shape == std::vector<int64_t>{kParamCountFormat1};
   const bool format2 = array.shape == std::vector<int64_t>{kParamCountFormat2};

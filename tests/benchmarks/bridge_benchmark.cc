@@ -12,7 +12,7 @@
 #include <string>
 
 #include "dream/calibration_drive/calibration_drive.h"
-#include "dream/bridge/lab_calibration.h"
+#include "dream/calibration/lab_calibration.h"
 #include "dream/bridge/lab_import.h"
 #include "dream/workflows/import_workflow.h"
 #include "dream/world/realistic_world.h"
@@ -20,7 +20,7 @@
 #include "dream/run_config/run_config.h"
 #include "dream/render/trajectory_picture.h"
 #include "dream/run_log/run_log.h"
-#include "dream/bridge/npy_file.h"
+#include "dream/formats/npy_file.h"
 #include "dream/bridge/submission_exporter.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/lcm/channels.h"
@@ -142,9 +142,9 @@ void BM_Import20Robots27000Steps(benchmark::State& state) {
   const std::string& dir = RunFolder();
   bridge::ExportSubmission(dir + "/run", dir + "/export", bridge::ExportOptions{});
   // What a perfect lab would return: the plan itself, with wall-clock stamps.
-  const bridge::NpyArray poses = bridge::ReadNpyFile(dir + "/export/upload/dream_reference_poses.npy");
-  const bridge::NpyArray commands = bridge::ReadNpyFile(dir + "/export/upload/dream_reference_commands.npy");
-  bridge::NpyArray rows;
+  const formats::NpyArray poses = formats::ReadNpyFile(dir + "/export/upload/dream_reference_poses.npy");
+  const formats::NpyArray commands = formats::ReadNpyFile(dir + "/export/upload/dream_reference_commands.npy");
+  formats::NpyArray rows;
   const int64_t columns = bridge::ResultLayout::Columns(kRobots);
   rows.shape = {kSteps + 1, columns};
   rows.values.assign(static_cast<size_t>((kSteps + 1) * columns), 0.0);
@@ -158,7 +158,7 @@ void BM_Import20Robots27000Steps(benchmark::State& state) {
       row[3 + 3 * kRobots + q] = commands.values[static_cast<size_t>(k * 2 * kRobots + q)];
     }
   }
-  std::ofstream(dir + "/dream_result.npy", std::ios::binary) << bridge::EncodeNpy(rows);
+  std::ofstream(dir + "/dream_result.npy", std::ios::binary) << formats::EncodeNpy(rows);
   for (auto _ : state) {
     // The whole of dream import: the lab part and the run's report (summary, metrics, goal, picture).
     std::ostream quiet(nullptr);
@@ -213,7 +213,7 @@ void BM_Calibrate20Robots5000Steps(benchmark::State& state) {
   std::vector<world::Pose2> start;
   for (const Eigen::Vector3d& pose : calibration_drive::CalibrationDrive::StartPoses(20)) start.push_back({pose.x(), pose.y(), pose.z()});
   world::RealisticWorld world(world::WorldParams{}, world::RealismParams::Lab(), 1, start);
-  bridge::CalibrationRun run;
+  calibration::CalibrationRun run;
   run.name = "synthetic";
   run.timed = true;
   run.track.num_robots = 20;
@@ -232,7 +232,7 @@ void BM_Calibrate20Robots5000Steps(benchmark::State& state) {
   }
   run.track.obstacles.resize(run.track.utime.size());
   for (auto _ : state) {
-    benchmark::DoNotOptimize(bridge::LabCalibration().Fit({run}).keys.size());
+    benchmark::DoNotOptimize(calibration::LabCalibration().Fit({run}).keys.size());
   }
 }
 BENCHMARK(BM_Calibrate20Robots5000Steps)->Unit(benchmark::kMillisecond)->Iterations(1);

@@ -92,13 +92,14 @@ std::string MakeRunFolder(const std::string& name, const std::string& config_tex
   return dir;
 }
 
-NpyArray PerfectLabResult(const std::string& export_dir, const std::function<void(int64_t, double*)>& perturb) {
+formats::NpyArray PerfectLabResult(const std::string& export_dir,
+                                   const std::function<void(int64_t, double*)>& perturb) {
   const std::string upload = export_dir + "/upload/";
-  const NpyArray poses = ReadNpyFile(upload + SubmissionFiles::kReferencePoses);
-  const NpyArray commands = ReadNpyFile(upload + SubmissionFiles::kReferenceCommands);
+  const formats::NpyArray poses = formats::ReadNpyFile(upload + SubmissionFiles::kReferencePoses);
+  const formats::NpyArray commands = formats::ReadNpyFile(upload + SubmissionFiles::kReferenceCommands);
   const int64_t steps = commands.shape[0];
   const int64_t n = commands.shape[2];
-  NpyArray rows;
+  formats::NpyArray rows;
   const int64_t columns = ResultLayout::Columns(static_cast<int>(n));
   rows.shape = {steps + 1, columns};
   rows.values.assign(static_cast<size_t>((steps + 1) * columns), 0.0);

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "dream/bridge/npy_file.h"
+#include "dream/formats/npy_file.h"
 #include "dream/bridge/run_track.h"
 #include "dream/run_config/run_config.h"
 #include "dream/node/run_outcome.h"
@@ -38,8 +38,8 @@ std::string MakeRunFolder(const std::string& name, const std::string& config_tex
 /// The rows a perfect lab would save for the export in export_dir: no
 /// settle steps, the recorded poses and commands, 0.033 s stamps; `perturb`
 /// may change each row (row index, values) before it is stored.
-NpyArray PerfectLabResult(const std::string& export_dir,
-                          const std::function<void(int64_t, double*)>& perturb = nullptr);
+formats::NpyArray PerfectLabResult(const std::string& export_dir,
+                                   const std::function<void(int64_t, double*)>& perturb = nullptr);
 
 /// Every file name in a folder (recursively, relative), sorted.
 std::vector<std::string> FilesIn(const std::string& dir);

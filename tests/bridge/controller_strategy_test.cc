@@ -12,7 +12,7 @@
 
 #include "bridge_test_support.h"
 #include "dream/bridge/flat_python_runtime.h"
-#include "dream/bridge/npy_file.h"
+#include "dream/formats/npy_file.h"
 #include "dream/bridge/obstacle_schedule.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/bridge/submission_params.h"
@@ -102,7 +102,7 @@ TEST(ObstacleScheduleTest, EveryStepEqualsWhatTheWorldReports) {
   still.height_m = 0.2;
   const std::vector<world::RectangleObstacleSpec> specs = {moving, still};
   const int64_t steps = 600;  // several laps, corners included
-  const NpyArray schedule = ObstacleSchedule(specs, 0.033, steps);
+  const formats::NpyArray schedule = ObstacleSchedule(specs, 0.033, steps);
   ASSERT_EQ(schedule.shape, (std::vector<int64_t>{steps + 1, 2, kObstacleColumns}));
   world::UnicycleWorld world(world::WorldParams{}, {world::Pose2{0.5, 0.5, 0.0}}, specs);
   std::vector<world::ObstacleState> states;
@@ -136,7 +136,7 @@ TEST(ObstacleScheduleTest, SizeIsBoundedBeforeAllocating) {
 }
 
 TEST(ControllerSpecFileTest, TextTravelsAsUint8Npy) {
-  const std::string bytes = EncodeNpyBytes("{\"a\": 1}");
+  const std::string bytes = formats::EncodeNpyBytes("{\"a\": 1}");
   EXPECT_EQ(bytes.rfind("\x93NUMPY\x01\x00", 0), 0u);
   EXPECT_THAT(bytes, HasSubstr("{'descr': '|u1', 'fortran_order': False, 'shape': (8,), }"));
   EXPECT_EQ(bytes.size() % 64, 8u);  // the header is padded to 64 bytes, then the 8 bytes of text
@@ -161,7 +161,7 @@ TEST(SubmissionParamsTest, ControllerStrategyRoundTripsAndFormatOneIsStillRead) 
 
   // An export made before the controller strategy: 18 numbers, format 1.
   params.options.strategy = Strategy::kTrack;
-  NpyArray old = params.ToNpy();
+  formats::NpyArray old = params.ToNpy();
   old.shape = {kParamCountFormat1};
   old.values.resize(kParamCountFormat1);
   old.values[kParamFormatVersion] = 1.0;
@@ -195,7 +195,7 @@ TEST(SubmissionParamsTest, TheBarrierCertificateRoundTripsAndFormatTwoGetsRpsDef
   EXPECT_EQ(boxed.options.barrier_params.boundary->x_max_m, 1.4);
 
   // An export made before the barriers' parameters: 21 numbers, format 2, rps's defaults.
-  NpyArray old = params.ToNpy();
+  formats::NpyArray old = params.ToNpy();
   old.shape = {kParamCountFormat2};
   old.values.resize(kParamCountFormat2);
   old.values[kParamFormatVersion] = 2.0;
@@ -204,7 +204,7 @@ TEST(SubmissionParamsTest, TheBarrierCertificateRoundTripsAndFormatTwoGetsRpsDef
   EXPECT_EQ(old_read.options.barrier_params.barrier_gain, 150.0);
   EXPECT_EQ(old_read.options.barrier_params.boundary->x_max_m, 1.6);
 
-  NpyArray bad = params.ToNpy();
+  formats::NpyArray bad = params.ToNpy();
   bad.values[kParamBarrierHasBoundary] = 2.0;
   EXPECT_THAT(ErrorOf([&] { SubmissionParams::FromNpy(bad, "bad.npy"); }), HasSubstr("bad.npy: barrier boundary"));
   bad = params.ToNpy();

@@ -10,8 +10,7 @@
 
 #include "bridge_test_support.h"
 #include "dream/bridge/lab_import.h"
-#include "dream/bridge/npy_file.h"
-#include "dream/bridge/sha256.h"
+#include "dream/formats/npy_file.h"
 #include "dream/bridge/pre_validation.h"
 #include "dream/bridge/submission_exporter.h"
 #include "dream/bridge/submission_format.h"
@@ -165,30 +164,17 @@ TEST_F(ExportTest, WritesTheSubmissionAndInstructions) {
   EXPECT_THAT(text, HasSubstr("Number of robots to declare: 8"));
   EXPECT_THAT(text, HasSubstr("Estimated duration to declare: "));
   EXPECT_THAT(text, HasSubstr("Strategy: track (recorded commands plus feedback on the pose error)"));
-  const SubmissionParams params = SubmissionParams::FromNpy(ReadNpyFile(out + "/upload/dream_params.npy"), "p");
+  const SubmissionParams params = SubmissionParams::FromNpy(formats::ReadNpyFile(out + "/upload/dream_params.npy"), "p");
   EXPECT_EQ(params.num_robots, 8);
   EXPECT_EQ(params.steps, summary.steps);
   EXPECT_EQ(params.options.strategy, Strategy::kTrack);
-  EXPECT_EQ(ReadNpyFile(out + "/upload/dream_reference_poses.npy").shape,
+  EXPECT_EQ(formats::ReadNpyFile(out + "/upload/dream_reference_poses.npy").shape,
             (std::vector<int64_t>{summary.steps + 1, 3, 8}));
-  EXPECT_EQ(ReadNpyFile(out + "/upload/dream_reference_commands.npy").shape, (std::vector<int64_t>{summary.steps, 2, 8}));
+  EXPECT_EQ(formats::ReadNpyFile(out + "/upload/dream_reference_commands.npy").shape, (std::vector<int64_t>{summary.steps, 2, 8}));
   // The reference is the recorded run, exactly.
   const RunTrack track = ReadRunTrack(*run_dir_ + "/run.lcmlog");
-  const NpyArray poses = ReadNpyFile(out + "/upload/dream_reference_poses.npy");
+  const formats::NpyArray poses = formats::ReadNpyFile(out + "/upload/dream_reference_poses.npy");
   EXPECT_EQ(poses.values[static_cast<size_t>(100 * 24 + 8 + 3)], track.pose(100, 3).y_m);
-}
-
-TEST(Sha256Test, KnownDigests) {
-  // FIPS 180-2's examples, and a million 'a's added in uneven pieces.
-  EXPECT_EQ(Sha256::Hex(""), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
-  EXPECT_EQ(Sha256::Hex("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
-  EXPECT_EQ(Sha256::Hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"),
-            "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
-  Sha256 million;
-  const std::string piece(999, 'a');
-  for (int i = 0; i < 1001; ++i) million.Add(piece);
-  million.Add(std::string(1000000 - 999 * 1001, 'a'));
-  EXPECT_EQ(million.HexDigest(), "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
 }
 
 // Issue 23: an upload whose dream_initial_poses.npy was edited by +0.3 m passed
@@ -207,9 +193,9 @@ TEST_F(ExportTest, AnUploadFileEditedAfterTheExportIsNamed) {
   };
   const std::string poses = out + "/upload/dream_initial_poses.npy";
   const std::string original = testing::ReadText(poses);
-  NpyArray moved = ReadNpyFile(poses);
+  formats::NpyArray moved = formats::ReadNpyFile(poses);
   moved.values[0] += 0.3;
-  testing::WriteText(poses, EncodeNpy(moved));
+  testing::WriteText(poses, formats::EncodeNpy(moved));
   EXPECT_THAT(read_error(), HasSubstr(poses + ": changed after the export (its SHA-256 is "));
   EXPECT_THAT(read_error(), HasSubstr("export the run again"));
   testing::WriteText(poses, original);
@@ -307,7 +293,7 @@ TEST_F(ExportTest, ConfigStringsCannotInjectCodeIntoTheSubmission) {
   for (const std::string& name : testing::FilesIn(out + "/upload")) {
     if (name == SubmissionFiles::kMainScript) continue;
     const std::string bytes = testing::ReadText(out + "/upload/" + name);
-    EXPECT_NO_THROW(DecodeNpy(bytes, name)) << name;
+    EXPECT_NO_THROW(formats::DecodeNpy(bytes, name)) << name;
     EXPECT_EQ(bytes.find("pwned"), std::string::npos) << name;
   }
   // The run name cannot carry code either: the config refuses it.

@@ -4,7 +4,6 @@
 // written.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <zlib.h>
 
 #include <cmath>
 #include <filesystem>
@@ -13,8 +12,8 @@
 
 #include "bridge_test_support.h"
 #include "dream/bridge/lab_import.h"
-#include "dream/bridge/mat_file.h"
-#include "dream/bridge/npy_file.h"
+#include "dream/formats/mat_file.h"
+#include "dream/formats/npy_file.h"
 #include "dream/bridge/submission_exporter.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/lcm/log_reader.h"
@@ -42,10 +41,10 @@ class ImportTest : public ::testing::Test {
 
   /// Writes `rows` as a result file and imports it into a fresh folder.
   /// `declared`: what the user declared on the lab's form (absent: UPLOAD.txt's).
-  static ImportedRun Import(const NpyArray& rows, const std::string& name,
+  static ImportedRun Import(const formats::NpyArray& rows, const std::string& name,
                             const std::optional<world::LabVerifierRules::Declaration>& declared = {}) {
     const std::string dir = testing::NewFolder("import_" + name);
-    testing::WriteText(dir + "/dream_result.npy", EncodeNpy(rows));
+    testing::WriteText(dir + "/dream_result.npy", formats::EncodeNpy(rows));
     return ImportLabRun(dir + "/dream_result.npy", *export_dir_, dir + "/out", declared);
   }
 
@@ -104,7 +103,7 @@ TEST_F(ImportTest, PerfectLabResultGivesTheSimulatedRunBack) {
 }
 
 TEST_F(ImportTest, CutShortRunIsImportedAsSuch) {
-  NpyArray rows = testing::PerfectLabResult(*export_dir_);
+  formats::NpyArray rows = testing::PerfectLabResult(*export_dir_);
   const int64_t columns = rows.shape[1];
   rows.shape[0] = 100;  // the lab stopped after 100 steps: no final row
   rows.values.resize(static_cast<size_t>(100 * columns));
@@ -118,7 +117,7 @@ TEST_F(ImportTest, CutShortRunIsImportedAsSuch) {
 }
 
 TEST_F(ImportTest, SettleRowsAreSkippedAndClockJumpsHeld) {
-  NpyArray rows = testing::PerfectLabResult(*export_dir_, [](int64_t k, double* row) {
+  formats::NpyArray rows = testing::PerfectLabResult(*export_dir_, [](int64_t k, double* row) {
     if (k == 50) row[ResultLayout::kWallTimeColumn] -= 1.0;  // the lab's clock stepped back
   });
   const int64_t columns = rows.shape[1];
@@ -141,7 +140,7 @@ TEST_F(ImportTest, SettleRowsAreSkippedAndClockJumpsHeld) {
 std::string Seconds(double seconds) { return world::PrintfText("%.2f s", seconds); }
 
 /// `rows` with `count` settle rows in front (copies of the first rows).
-NpyArray WithSettleRows(NpyArray rows, int count) {
+formats::NpyArray WithSettleRows(formats::NpyArray rows, int count) {
   const int64_t columns = rows.shape[1];
   std::vector<double> settle(rows.values.begin(), rows.values.begin() + count * columns);
   for (int s = 0; s < count; ++s) {
@@ -161,7 +160,7 @@ TEST_F(ImportTest, RunWithinOneAndAHalfTimesTheDeclaredDurationIsClean) {
   EXPECT_EQ(upload.num_robots, exported.params.num_robots);
   EXPECT_DOUBLE_EQ(upload.duration_s, static_cast<double>(steps + exported.params.options.settle_max_steps) * dt);
 
-  const NpyArray rows = testing::PerfectLabResult(*export_dir_);
+  const formats::NpyArray rows = testing::PerfectLabResult(*export_dir_);
   const ImportedRun as_uploaded = Import(rows, "declared_as_uploaded");
   EXPECT_EQ(as_uploaded.lab.iterations, steps);  // one step() per experiment row, no settle rows
   EXPECT_EQ(as_uploaded.declared.duration_s, upload.duration_s);
@@ -223,18 +222,18 @@ TEST_F(ImportTest, RobotCountOtherThanDeclaredIsRejected) {
 }
 
 TEST_F(ImportTest, MatFileFromMatlabImportsLikeTheNpy) {
-  const NpyArray rows = testing::PerfectLabResult(*export_dir_);
+  const formats::NpyArray rows = testing::PerfectLabResult(*export_dir_);
   const std::string dir = testing::NewFolder("import_mat");
-  WriteMatMatrix(dir + "/dream_result.mat", SubmissionFiles::kResultMatVariable, rows);
+  formats::WriteMatMatrix(dir + "/dream_result.mat", SubmissionFiles::kResultMatVariable, rows);
   const ImportedRun from_mat = ImportLabRun(dir + "/dream_result.mat", *export_dir_, dir + "/out");
   const ImportedRun from_npy = Import(rows, "mat_reference");
   EXPECT_EQ(testing::ReadText(from_mat.log_path), testing::ReadText(from_npy.log_path));
   // MATLAB's -v7.3 files are HDF5.
-  WriteMatMatrix(dir + "/dream_result_v73.mat", SubmissionFiles::kResultMatVariable, rows, true);
+  formats::WriteMatMatrix(dir + "/dream_result_v73.mat", SubmissionFiles::kResultMatVariable, rows, true);
   const ImportedRun from_v73 = ImportLabRun(dir + "/dream_result_v73.mat", *export_dir_, dir + "/out_v73");
   EXPECT_EQ(testing::ReadText(from_v73.log_path), testing::ReadText(from_npy.log_path));
   // A .mat without the variable, or with the wrong one, is refused by name.
-  WriteMatMatrix(dir + "/other.mat", "poses", rows);
+  formats::WriteMatMatrix(dir + "/other.mat", "poses", rows);
   try {
     ImportLabRun(dir + "/other.mat", *export_dir_, dir + "/out2");
     ADD_FAILURE() << "imported a .mat without dream_result";
@@ -247,188 +246,37 @@ TEST_F(ImportTest, MatFileFromMatlabImportsLikeTheNpy) {
   EXPECT_FALSE(fs::exists(dir + "/out3"));
 }
 
-/// The error of reading `bytes` as `path`'s .mat file, "" when it was read.
-std::string MatReadError(const std::string& path, const std::string& bytes) {
-  testing::WriteText(path, bytes);
-  try {
-    ReadMatMatrix(path, "dream_result", 100);
-  } catch (const std::runtime_error& e) {
-    return e.what();
-  }
-  return "";
-}
-
-/// A MATLAB v4 variable: its 20-byte header (type, rows, columns, imaginary
-/// flag, name length; little-endian), `name` and `data`.
-std::string Mat4Variable(int32_t type, int32_t rows, int32_t columns, int32_t name_bytes, const std::string& name,
-                         const std::vector<double>& data) {
-  std::string bytes;
-  for (const int32_t word : {type, rows, columns, int32_t{0}, name_bytes}) {
-    bytes.append(reinterpret_cast<const char*>(&word), sizeof(word));
-  }
-  bytes += name;
-  bytes.append(reinterpret_cast<const char*>(data.data()), data.size() * sizeof(double));
-  return bytes;
-}
-
-// libmatio allocates what a v4 header declares before reading it (40 forged
-// bytes made it ask for 1.8 GB): the reader walks v4 headers against the
-// file first, names the flaw, and still reads a sound v4 file.
-TEST(MatFileTest, ForgedV4HeadersAreRefusedBeforeLibmatioReadsThem) {
-  const std::string dir = testing::NewFolder("mat_v4");
-  const std::string name("dream_result\0", 13);
-  const std::string sound = dir + "/sound.mat";
-  testing::WriteText(sound, Mat4Variable(0, 2, 3, 13, name, {1, 2, 3, 4, 5, 6}));
-  const NpyArray read = ReadMatMatrix(sound, "dream_result", 100);
-  EXPECT_EQ(read.shape, (std::vector<int64_t>{2, 3}));
-  EXPECT_EQ(read.values, (std::vector<double>{1, 3, 5, 2, 4, 6}));  // the file is column-major
-
-  const std::vector<std::pair<std::string, std::string>> cases = {
-      {Mat4Variable(0, 2, 3, 1819636581, name, {1, 2, 3, 4, 5, 6}),
-       "v4 variable 0 at byte 0 has a name of 1819636581 bytes"},
-      {Mat4Variable(0, 65536, 65536, 13, name, {1, 2}),
-       "v4 variable 0 at byte 0 declares 65536 x 65536 values of 8 bytes, but only 16 bytes follow its name"},
-      {Mat4Variable(0, -1, 3, 13, name, {}), "v4 variable 0 at byte 0 has -1 x 3 values"},
-      {Mat4Variable(7777, 2, 3, 13, name, {}), "v4 variable 0 at byte 0 has type 7777, not a v4 MOPT code"},
-      // A type found byte-swapped (bytes 00 00 00 01: 1) but whose M (0) says little-endian:
-      // libmatio reads the rest little-endian, a 2013265920-byte name.
-      {Mat4Variable(16777216, 0, 0, 0x78000000, name, {}), "v4 variable 0 at byte 0 has a name of 2013265920 bytes"},
-      {Mat4Variable(0, 1, 1, 13, name, {1}) + "short", "v4 variable 1 at byte 41 is cut short inside its 20-byte header"},
-      {"not a MATLAB file at all, just text that goes on", "v4 variable 0 at byte 0 has type 544501614, not a v4"},
-  };
-  for (const auto& [bytes, problem] : cases) {
-    SCOPED_TRACE(problem);
-    const std::string path = dir + "/forged.mat";
-    EXPECT_THAT(MatReadError(path, bytes), HasSubstr(path + ": " + problem));
-  }
-}
-
-/// `words` as little-endian int32s.
-std::string Int32s(std::initializer_list<int32_t> words) {
-  std::string bytes;
-  for (const int32_t word : words) bytes.append(reinterpret_cast<const char*>(&word), sizeof(word));
-  return bytes;
-}
-
-/// A little-endian MAT-file v5 of one compressed element holding `inside`.
-std::string CompressedMat5(const std::string& inside) {
-  std::string header = "MATLAB 5.0 MAT-file, made by a test";
-  header.resize(124, ' ');
-  header += std::string("\x00\x01IM", 4);
-  std::string packed(compressBound(static_cast<uLong>(inside.size())), '\0');
-  uLongf packed_size = packed.size();
-  EXPECT_EQ(compress(reinterpret_cast<Bytef*>(packed.data()), &packed_size,
-                     reinterpret_cast<const Bytef*>(inside.data()), static_cast<uLong>(inside.size())),
-            Z_OK);
-  packed.resize(packed_size);
-  return header + Int32s({15, static_cast<int32_t>(packed.size())}) + packed;
-}
-
-// libmatio inflates a compressed matrix's header and allocates the name and
-// dimensions it declares (296 forged bytes made it ask for 1 GB): the reader
-// inflates the first 4 KiB itself and refuses a header that does not fit.
-TEST(MatFileTest, ForgedCompressedHeadersAreRefusedBeforeLibmatioReadsThem) {
-  const std::string dir = testing::NewFolder("mat_v5_compressed");
-  const std::string flags = Int32s({6, 8, 6, 0});       // miUINT32 x 2: class double
-  const std::string dims = Int32s({5, 8, 2, 3});        // miINT32 x 2: 2 x 3
-  const std::string data = Int32s({9, 48}) + std::string(48, '\0');  // miDOUBLE x 6
-  auto matrix = [](const std::string& body) { return Int32s({14, static_cast<int32_t>(body.size())}) + body; };
-  const std::string name = Int32s({1, 12}) + "dream_result" + std::string(4, '\0');  // padded to 8 bytes
-  const std::string sound = dir + "/sound.mat";
-  testing::WriteText(sound, CompressedMat5(matrix(flags + dims + name + data)));
-  EXPECT_EQ(ReadMatMatrix(sound, "dream_result", 100).shape, (std::vector<int64_t>{2, 3}));
-
-  const std::vector<std::pair<std::string, std::string>> cases = {
-      {CompressedMat5(matrix(flags + dims + Int32s({1, 1000000000}) + "dream_result")),
-       "(inflated, first 60 bytes): its name at byte 40 declares 1000000000 bytes of data, but only 12 follow"},
-      {CompressedMat5(matrix(flags + Int32s({5, 400000000}) + name)), "(inflated, first 56 bytes): its dimensions at byte 24 declares 400000000 bytes"},
-      {CompressedMat5(Int32s({9, 8}) + std::string(8, '\0')), "holds data type 9, not a matrix (14)"},
-      {CompressedMat5("abc"), "inflates to 3 bytes, not a matrix"},
-      {CompressedMat5(Int32s({14, 2000000000}) + flags + dims + name), "says it inflates to 2000000000 bytes"},
-  };
-  for (const auto& [bytes, problem] : cases) {
-    SCOPED_TRACE(problem);
-    const std::string path = dir + "/forged.mat";
-    const std::string error = MatReadError(path, bytes);
-    EXPECT_THAT(error, HasSubstr(path + ": compressed element 0 at byte 128"));  // what and where
-    EXPECT_THAT(error, HasSubstr(problem));
-  }
-  // The same parts uncompressed: 616 forged bytes whose array flags claimed
-  // 242 bytes made libmatio ask for 3.4 GB.
-  const std::string header = CompressedMat5("").substr(0, 128);
-  const std::vector<std::pair<std::string, std::string>> uncompressed = {
-      {matrix(Int32s({6, 16}) + std::string(16, '\0') + dims + name + data),
-       "matrix 0 at byte 128: its array flags are 16 bytes of type 6, not 8 bytes of miUINT32 (6)"},
-      {matrix(flags + Int32s({5, 4, 2, 0}) + name + data),
-       "matrix 0 at byte 128: its dimensions are 4 bytes of type 5, not miINT32 (5), 4 bytes for each of two or more"},
-      {matrix(flags + dims + Int32s({2, 12}) + "dream_result" + std::string(4, '\0') + data),
-       "matrix 0 at byte 128: its name has type 2, not miINT8 (1)"},
-      // A cell array of 654311940 x 13 cells: libmatio asked for 68 GB of cell pointers.
-      {matrix(Int32s({6, 8, 1, 0}) + Int32s({5, 8, 654311940, 13}) + name),
-       "matrix 0 at byte 128: dimensions 654311940 x 13 (class 1) need 8 byte(s) per value, but the matrix has 56"},
-  };
-  for (const auto& [element, problem] : uncompressed) {
-    SCOPED_TRACE(problem);
-    const std::string path = dir + "/forged_plain.mat";
-    EXPECT_THAT(MatReadError(path, header + element), HasSubstr(path + ": " + problem));
-  }
-  std::string not_zlib = CompressedMat5(matrix(flags));
-  not_zlib[136] = 'X';  // the zlib header's first byte
-  const std::string path = dir + "/not_zlib.mat";
-  EXPECT_THAT(MatReadError(path, not_zlib), HasSubstr("compressed element 0 at byte 128 is not zlib data"));
-}
-
-// A v7.3 header must have HDF5 behind it: when the HDF5 part does not open,
-// libmatio reads the file as v4 from byte 0 (a fuzzed file whose first bytes
-// were zeros made it allocate 1.8 GB).
-TEST(MatFileTest, V73HeaderWithoutHdf5IsRefused) {
-  const std::string dir = testing::NewFolder("mat_v73");
-  std::string v73_header = "MATLAB 7.3 MAT-file, made by a test";
-  v73_header.resize(124, ' ');
-  v73_header += std::string("\x00\x02IM", 4);
-  const std::vector<std::pair<std::string, std::string>> cases = {
-      {std::string(4, '\0') + v73_header.substr(4) + std::string(64, 'x'), "v4 variable 0 at byte 0 has "},
-      {v73_header + std::string(600, '\0'), "a MATLAB 7.3 MAT-file header, but no HDF5 data at byte 512"},
-      {v73_header, "a MATLAB 7.3 MAT-file header, but no HDF5 data at byte 512"},
-  };
-  for (const auto& [bytes, problem] : cases) {
-    SCOPED_TRACE(problem);
-    const std::string path = dir + "/forged.mat";
-    EXPECT_THAT(MatReadError(path, bytes), HasSubstr(path + ": " + problem));
-  }
-}
-
 TEST_F(ImportTest, BadResultFilesAreRefusedByNameAndNothingIsWritten) {
-  const NpyArray good = testing::PerfectLabResult(*export_dir_);
+  const formats::NpyArray good = testing::PerfectLabResult(*export_dir_);
   const int64_t rows = good.shape[0];
   const int64_t columns = good.shape[1];
-  auto with = [&good](const std::function<void(NpyArray*)>& change) {
-    NpyArray array = good;
+  auto with = [&good](const std::function<void(formats::NpyArray*)>& change) {
+    formats::NpyArray array = good;
     change(&array);
-    return EncodeNpy(array);
+    return formats::EncodeNpy(array);
   };
-  const std::string bytes = EncodeNpy(good);
+  const std::string bytes = formats::EncodeNpy(good);
 
   // Shape and robot count.
-  ExpectRefused(with([](NpyArray* a) { a->shape = {a->shape[0] * a->shape[1]}; }), "has 1 dimensions", "1d");
-  ExpectRefused(with([&](NpyArray* a) { a->shape = {rows, 1, columns}; }), "has 3 dimensions", "3d");
-  ExpectRefused(with([&](NpyArray* a) {
+  ExpectRefused(with([](formats::NpyArray* a) { a->shape = {a->shape[0] * a->shape[1]}; }), "has 1 dimensions", "1d");
+  ExpectRefused(with([&](formats::NpyArray* a) { a->shape = {rows, 1, columns}; }), "has 3 dimensions", "3d");
+  ExpectRefused(with([&](formats::NpyArray* a) {
                   a->shape = {rows, columns - 5};
                   a->values.resize(static_cast<size_t>(rows * (columns - 5)));
                 }),
                 "as a result of a 7-robot run; this export has 8 robots", "seven_robots");
-  ExpectRefused(with([&](NpyArray* a) {
+  ExpectRefused(with([&](formats::NpyArray* a) {
                   a->shape = {rows, columns + 1};
                   a->values.resize(static_cast<size_t>(rows * (columns + 1)));
                 }),
                 "has 44 columns; this export has 8 robots", "odd_columns");
-  ExpectRefused(with([](NpyArray* a) {
+  ExpectRefused(with([](formats::NpyArray* a) {
                   a->shape = {0, a->shape[1]};
                   a->values.clear();
                 }),
                 "holds no rows", "empty");
   // Step count and order.
-  ExpectRefused(with([&](NpyArray* a) {
+  ExpectRefused(with([&](formats::NpyArray* a) {
                   // The final row becomes experiment step K, and another final row follows.
                   double* last = &a->values[static_cast<size_t>((rows - 1) * columns)];
                   last[ResultLayout::kPhaseColumn] = ResultLayout::kPhaseExperiment;
@@ -439,28 +287,28 @@ TEST_F(ImportTest, BadResultFilesAreRefusedByNameAndNothingIsWritten) {
                   a->shape[0] += 1;
                 }),
                 "more experiment steps than the", "too_many_steps");
-  ExpectRefused(with([&](NpyArray* a) { a->values[static_cast<size_t>(10 * columns + ResultLayout::kStepColumn)] = 11; }),
+  ExpectRefused(with([&](formats::NpyArray* a) { a->values[static_cast<size_t>(10 * columns + ResultLayout::kStepColumn)] = 11; }),
                 "row 10: experiment step 11.000000, expected 10", "step_gap");
-  ExpectRefused(with([&](NpyArray* a) { a->values[static_cast<size_t>(10 * columns + ResultLayout::kPhaseColumn)] = 7; }),
+  ExpectRefused(with([&](formats::NpyArray* a) { a->values[static_cast<size_t>(10 * columns + ResultLayout::kPhaseColumn)] = 7; }),
                 "row 10: phase 7.000000 is not 0 (settle), 1 (experiment) or 2 (final)", "bad_phase");
-  ExpectRefused(with([&](NpyArray* a) {
+  ExpectRefused(with([&](formats::NpyArray* a) {
                   a->shape[0] = 1;
                   a->values.resize(static_cast<size_t>(columns));
                 }),
                 "has 1 experiment poses; at least 2 are needed", "one_row");
   // NaN and infinity, named by row, quantity and robot.
-  ExpectRefused(with([&](NpyArray* a) {
+  ExpectRefused(with([&](formats::NpyArray* a) {
                   a->values[static_cast<size_t>(20 * columns + ResultLayout::Y(8, 5))] = std::numeric_limits<double>::quiet_NaN();
                 }),
                 "row 20: y of robot 5 is nan", "nan");
-  ExpectRefused(with([&](NpyArray* a) {
+  ExpectRefused(with([&](formats::NpyArray* a) {
                   a->values[static_cast<size_t>(3 * columns + ResultLayout::kWallTimeColumn)] = std::numeric_limits<double>::infinity();
                 }),
                 "row 3: the wall-clock column is inf", "inf");
   // Finite but absurd: 1e300 m made the comparison's squares overflow to inf.
-  ExpectRefused(with([&](NpyArray* a) { a->values[static_cast<size_t>(20 * columns + ResultLayout::X(8, 2))] = 1e300; }),
+  ExpectRefused(with([&](formats::NpyArray* a) { a->values[static_cast<size_t>(20 * columns + ResultLayout::X(8, 2))] = 1e300; }),
                 "row 20: x of robot 2 is 1e+300; beyond 1000 in magnitude", "far_pose");
-  ExpectRefused(with([&](NpyArray* a) {
+  ExpectRefused(with([&](formats::NpyArray* a) {
                   a->values[static_cast<size_t>(20 * columns + ResultLayout::Theta(8, 2))] = -2000.0;
                 }),
                 "row 20: theta of robot 2 is -2000; beyond 1000", "far_heading");
@@ -476,7 +324,7 @@ TEST_F(ImportTest, BadResultFilesAreRefusedByNameAndNothingIsWritten) {
 
 TEST_F(ImportTest, ForeignExportFolderIsRefused) {
   const std::string dir = testing::NewFolder("import_foreign_export");
-  testing::WriteText(dir + "/dream_result.npy", EncodeNpy(testing::PerfectLabResult(*export_dir_)));
+  testing::WriteText(dir + "/dream_result.npy", formats::EncodeNpy(testing::PerfectLabResult(*export_dir_)));
   EXPECT_THROW(
       {
         try {

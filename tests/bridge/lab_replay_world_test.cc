@@ -51,7 +51,7 @@ class LabReplayTest : public ::testing::Test {
   /// Imports a lab result made from the export (perturbed or not); returns the lab run folder.
   static std::string ImportLab(const std::string& name, const std::function<void(int64_t, double*)>& perturb = nullptr) {
     const std::string dir = testing::NewFolder(name);
-    testing::WriteText(dir + "/dream_result.npy", EncodeNpy(testing::PerfectLabResult(*export_dir_, perturb)));
+    testing::WriteText(dir + "/dream_result.npy", formats::EncodeNpy(testing::PerfectLabResult(*export_dir_, perturb)));
     ImportLabRun(dir + "/dream_result.npy", *export_dir_, dir + "/lab");
     return dir + "/lab";
   }

@@ -2,8 +2,8 @@
 #include <exception>
 #include <filesystem>
 
-#include "dream/bridge/mat_file.h"
-#include "dream/bridge/npy_file.h"
+#include "dream/formats/mat_file.h"
+#include "dream/formats/npy_file.h"
 #include "dream/bridge/submission_params.h"
 #include "fuzz_targets.h"
 
@@ -15,12 +15,12 @@ void LabResultTarget(const uint8_t* data, size_t size) {
   const std::string path = ScratchFile(data + 1, size - 1, mat ? ".mat" : ".npy");
   try {
     if (mat) {
-      const bridge::NpyArray array = bridge::ReadMatMatrix(path, "dream_result");
+      const formats::NpyArray array = formats::ReadMatMatrix(path, "dream_result");
       if (static_cast<int64_t>(array.values.size()) != array.size()) Finding("a .mat array whose values are not its shape");
     } else {
-      const bridge::NpyArray array = bridge::ReadNpyFile(path, int64_t{1} << 20);
+      const formats::NpyArray array = formats::ReadNpyFile(path, int64_t{1} << 20);
       if (static_cast<int64_t>(array.values.size()) != array.size()) Finding("an .npy array whose values are not its shape");
-      if (bridge::DecodeNpy(bridge::EncodeNpy(array), "again.npy").shape != array.shape) Finding("an .npy round trip changed the shape");
+      if (formats::DecodeNpy(formats::EncodeNpy(array), "again.npy").shape != array.shape) Finding("an .npy round trip changed the shape");
       if (array.shape.size() == 1) (void)bridge::SubmissionParams::FromNpy(array, path);
     }
   } catch (const std::exception& e) {

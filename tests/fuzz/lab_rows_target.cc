@@ -3,7 +3,7 @@
 #include <string>
 
 #include "dream/bridge/lab_import.h"
-#include "dream/bridge/npy_file.h"
+#include "dream/formats/npy_file.h"
 #include "dream/bridge/pre_validation.h"
 #include "fuzz_targets.h"
 #include "../support/source_tree.h"
@@ -16,7 +16,7 @@ void LabRowsTarget(const uint8_t* data, size_t size) {
       bridge::ExportedSubmission::Read(dream::testing::SourceDir() + "/tests/fuzz/lab_export");
   const std::string name = "fuzz_result.npy";
   try {
-    const bridge::NpyArray rows = bridge::DecodeNpy(std::string(reinterpret_cast<const char*>(data), size), name);
+    const formats::NpyArray rows = formats::DecodeNpy(std::string(reinterpret_cast<const char*>(data), size), name);
     const bridge::LabResult lab = bridge::ParseLabResult(rows, name, exported);
     (void)bridge::LabVerifierReasons(lab, exported.config.world, exported.UploadDeclaration());
     (void)bridge::VerifierCounts(lab.track, exported.config.world);

@@ -19,12 +19,12 @@
 #include <string>
 
 #include "../support/scratch_folder.h"
-#include "dream/bridge/calibration_run.h"
+#include "dream/calibration/calibration_run.h"
 #include "dream/bridge/lab_import.h"
-#include "dream/bridge/mat_file.h"
-#include "dream/bridge/npy_file.h"
-#include "dream/bridge/npz_file.h"
-#include "dream/bridge/sha256.h"
+#include "dream/formats/mat_file.h"
+#include "dream/formats/npy_file.h"
+#include "dream/formats/npz_file.h"
+#include "dream/formats/sha256.h"
 #include "dream/files/atomic_file.h"
 #include "dream/files/file_text.h"
 #include "dream/files/regular_file.h"
@@ -94,21 +94,21 @@ TEST_F(HostileFilesTest, TheOpenedNameIsTheCheckedFileWhateverThePathNamesLater)
 // Every reader of a lab file (issue 34: dream calibrate f.npy / f.mat / f.npz,
 // dream import dream_result.npy / .mat, logs, hashes of uploads).
 TEST_F(HostileFilesTest, EveryLabFileReaderRefusesAFifoInsteadOfWaitingOnIt) {
-  const bridge::CalibrationInputOptions options;
+  const calibration::CalibrationInputOptions options;
   for (const char* name : {"f.npy", "f.mat", "f.npz", "run.lcmlog"}) {
     const std::string fifo = Fifo(name);
-    EXPECT_THAT(ErrorOf([&] { bridge::ReadCalibrationRun(fifo, options); }), HasSubstr(fifo + ": ")) << name;
-    EXPECT_THAT(ErrorOf([&] { bridge::ReadCalibrationRun(fifo, options); }), HasSubstr("FIFO")) << name;
+    EXPECT_THAT(ErrorOf([&] { calibration::ReadCalibrationRun(fifo, options); }), HasSubstr(fifo + ": ")) << name;
+    EXPECT_THAT(ErrorOf([&] { calibration::ReadCalibrationRun(fifo, options); }), HasSubstr("FIFO")) << name;
   }
   for (const char* name : {"dream_result.npy", "dream_result.mat"}) {
     const std::string fifo = Fifo(name);
     EXPECT_EQ(ErrorOf([&] { bridge::ReadResultFile(fifo); }), fifo + ": is a FIFO (named pipe), not a file to read");
   }
   const std::string fifo = (dir_ / "f.npy").string();
-  EXPECT_THAT(ErrorOf([&] { bridge::ReadNpyFile(fifo); }), HasSubstr("is a FIFO"));
-  EXPECT_THAT(ErrorOf([&] { bridge::ReadMatArray((dir_ / "f.mat").string(), "poses", 1000, 3); }), HasSubstr("is a FIFO"));
-  EXPECT_THAT(ErrorOf([&] { bridge::NpzFile{(dir_ / "f.npz").string()}; }), HasSubstr("is a FIFO"));
-  EXPECT_THAT(ErrorOf([&] { bridge::Sha256::HexOfFile(fifo); }), HasSubstr("is a FIFO"));
+  EXPECT_THAT(ErrorOf([&] { formats::ReadNpyFile(fifo); }), HasSubstr("is a FIFO"));
+  EXPECT_THAT(ErrorOf([&] { formats::ReadMatArray((dir_ / "f.mat").string(), "poses", 1000, 3); }), HasSubstr("is a FIFO"));
+  EXPECT_THAT(ErrorOf([&] { formats::NpzFile{(dir_ / "f.npz").string()}; }), HasSubstr("is a FIFO"));
+  EXPECT_THAT(ErrorOf([&] { formats::Sha256::HexOfFile(fifo); }), HasSubstr("is a FIFO"));
   const std::string log = (dir_ / "run.lcmlog").string();
   EXPECT_EQ(ErrorOf([&] { lcm::LogReader{log}; }), log + ": not a regular file (a folder, FIFO or device), so no log file");
   EXPECT_THAT(ErrorOf([&] { run_log::RunLog::Read(log); }), HasSubstr(log + ": not a regular file"));

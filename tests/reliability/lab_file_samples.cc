@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "bridge_test_support.h"
-#include "dream/bridge/mat_file.h"
+#include "dream/formats/mat_file.h"
 #include "dream/bridge/submission_exporter.h"
 #include "dream/bridge/submission_format.h"
 
@@ -16,7 +16,7 @@ namespace dream::testing {
 namespace {
 
 /// A .mat file of a flavour WriteMatMatrix does not write (v4, compressed v5).
-std::string MatioFile(const std::string& path, const bridge::NpyArray& array, mat_ft version, matio_compression compression) {
+std::string MatioFile(const std::string& path, const formats::NpyArray& array, mat_ft version, matio_compression compression) {
   const auto rows = static_cast<size_t>(array.shape[0]);
   const auto columns = static_cast<size_t>(array.shape[1]);
   std::vector<double> column_major(rows * columns);
@@ -57,14 +57,14 @@ LabFileSamples::LabFileSamples() {
   exported_ = bridge::ExportedSubmission::Read(export_dir_);
   dir_ = bridge::testing::NewFolder("samples_files");
   result_ = bridge::testing::PerfectLabResult(export_dir_);
-  results_.push_back({"npy", bridge::EncodeNpy(result_)});
+  results_.push_back({"npy", formats::EncodeNpy(result_)});
   const std::string mat = dir_ + "/sample.mat";
-  bridge::WriteMatMatrix(mat, bridge::SubmissionFiles::kResultMatVariable, result_);
+  formats::WriteMatMatrix(mat, bridge::SubmissionFiles::kResultMatVariable, result_);
   results_.push_back({"mat_v5", ReadBytes(mat)});
   results_.push_back({"mat_v5_compressed", MatioFile(mat, result_, MAT_FT_MAT5, MAT_COMPRESSION_ZLIB)});
   results_.push_back({"mat_v4", MatioFile(mat, result_, MAT_FT_MAT4, MAT_COMPRESSION_NONE)});
   std::filesystem::remove(mat);
-  bridge::WriteMatMatrix(mat, bridge::SubmissionFiles::kResultMatVariable, result_, true);
+  formats::WriteMatMatrix(mat, bridge::SubmissionFiles::kResultMatVariable, result_, true);
   results_.push_back({"mat_v73", ReadBytes(mat)});
   params_ = {"params_npy", ReadBytes(export_dir_ + "/upload/" + bridge::SubmissionFiles::kParams)};
 }

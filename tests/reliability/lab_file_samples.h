@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "dream/bridge/lab_import.h"
-#include "dream/bridge/npy_file.h"
+#include "dream/formats/npy_file.h"
 
 namespace dream::testing {
 
@@ -25,7 +25,7 @@ class LabFileSamples {
   const bridge::ExportedSubmission& exported() const { return exported_; }
   const std::string& export_dir() const { return export_dir_; }
   const std::string& run_log() const { return run_log_; }
-  const bridge::NpyArray& result() const { return result_; }
+  const formats::NpyArray& result() const { return result_; }
   /// The result file in each format (npy, mat_v4, mat_v5, mat_v5_compressed, mat_v73).
   const std::vector<Sample>& results() const { return results_; }
   /// The export's upload/dream_params.npy.
@@ -38,7 +38,7 @@ class LabFileSamples {
   std::string export_dir_;
   std::string run_log_;
   bridge::ExportedSubmission exported_;
-  bridge::NpyArray result_;
+  formats::NpyArray result_;
   std::vector<Sample> results_;
   Sample params_;
 };

@@ -61,7 +61,7 @@ TEST(TruncatedFiles, EveryCutResultFileIsRefusedByNameOrReadsAsTheOriginal) {
                                std::to_string(sample.bytes.size()) + " bytes";
       PoisonFreedHeap(samples.result().values.size() * sizeof(double));
       try {
-        const bridge::NpyArray rows = bridge::ReadResultFile(path, samples.exported().MaxResultValues());
+        const formats::NpyArray rows = bridge::ReadResultFile(path, samples.exported().MaxResultValues());
         bridge::ParseLabResult(rows, path, samples.exported());
         EXPECT_EQ(rows.shape, samples.result().shape) << what << " was read as another array";
         EXPECT_EQ(rows.values, samples.result().values) << what << " was read with other values";

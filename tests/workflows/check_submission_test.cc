@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "../bridge/bridge_test_support.h"
-#include "dream/bridge/npy_file.h"
+#include "dream/formats/npy_file.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/files/file_text.h"
 #include "dream/workflows/check_submission.h"
@@ -53,7 +53,7 @@ class CheckSubmissionTest : public ::testing::Test {
       };
       if (runner_.writes_result) {
         bridge::testing::WriteText(at("--workdir") + "/" + bridge::SubmissionFiles::kResult,
-                                   bridge::EncodeNpy(bridge::testing::PerfectLabResult(testing::SimulatedExport(),
+                                   formats::EncodeNpy(bridge::testing::PerfectLabResult(testing::SimulatedExport(),
                                                                                        runner_.perturb)));
       }
       if (!runner_.report.is_null()) bridge::testing::WriteText(at("--report"), runner_.report.dump());
@@ -141,7 +141,7 @@ TEST_F(CheckSubmissionTest, DebugsVerdictIsReadAsAVerdict) {
 // does, in its outcome (exit 5), check.json and what it prints.
 TEST_F(CheckSubmissionTest, ALabRunThatMissesItsGoalIsNotReadyAsDreamImportSays) {
   runner_.report = Passed();
-  const int64_t steps = bridge::ReadNpyFile(testing::SimulatedExport() + "/upload/" +
+  const int64_t steps = formats::ReadNpyFile(testing::SimulatedExport() + "/upload/" +
                                             bridge::SubmissionFiles::kReferenceCommands).shape[0];
   constexpr int robots = 8;  // the shipped go_to_goal
   // Every robot drifts 6 cm to the right over the run: no collision, no jump,

@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "../bridge/bridge_test_support.h"
-#include "dream/bridge/npy_file.h"
+#include "dream/formats/npy_file.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/files/file_text.h"
 #include "dream/workflows/import_workflow.h"
@@ -23,10 +23,10 @@ using ::testing::ContainsRegex;
 using ::testing::HasSubstr;
 
 /// Writes `rows` as a lab result and imports it into `<folder>/out`.
-ImportWorkflow::Result Import(const bridge::NpyArray& rows, const std::string& name, std::ostream& out,
+ImportWorkflow::Result Import(const formats::NpyArray& rows, const std::string& name, std::ostream& out,
                               const std::optional<world::LabVerifierRules::Declaration>& declared = {}) {
   const std::string dir = bridge::testing::NewFolder("workflow_import_" + name);
-  bridge::testing::WriteText(dir + "/" + bridge::SubmissionFiles::kResult, bridge::EncodeNpy(rows));
+  bridge::testing::WriteText(dir + "/" + bridge::SubmissionFiles::kResult, formats::EncodeNpy(rows));
   // A folder holding the result file stands for it.
   return ImportWorkflow(out).Import({dir, testing::SimulatedExport(), dir + "/out", declared, ""});
 }
@@ -63,10 +63,10 @@ TEST(ImportWorkflowTest, ALabRunsSummaryCarriesEverythingARunsSummaryDoes) {
 TEST(ImportWorkflowTest, ALabRunThatMissedItsGoalIsNotReadyAsASimulatedOneWouldBe) {
   // The lab's robots stayed where they started: the poses pass every check,
   // but no robot reached its goal.
-  const bridge::NpyArray start = bridge::ReadNpyFile(testing::SimulatedExport() + "/upload/" +
+  const formats::NpyArray start = formats::ReadNpyFile(testing::SimulatedExport() + "/upload/" +
                                                      bridge::SubmissionFiles::kInitialPoses);
   const int64_t n = start.shape[1];
-  const bridge::NpyArray rows = bridge::testing::PerfectLabResult(testing::SimulatedExport(), [&](int64_t, double* row) {
+  const formats::NpyArray rows = bridge::testing::PerfectLabResult(testing::SimulatedExport(), [&](int64_t, double* row) {
     for (int64_t q = 0; q < 3 * n; ++q) row[bridge::ResultLayout::kFixedColumns + q] = start.values[static_cast<size_t>(q)];
   });
   std::ostringstream out;
@@ -86,7 +86,7 @@ TEST(ImportWorkflowTest, ALabRunThatMissedItsGoalIsNotReadyAsASimulatedOneWouldB
 
 TEST(ImportWorkflowTest, ALabRunsViolationsAreLocatedByTheWorldsRulesAsASimulatedRunsAre) {
   // Robot 0 stood past the right wall at rows 10..15 of the lab's result.
-  const bridge::NpyArray rows =
+  const formats::NpyArray rows =
       bridge::testing::PerfectLabResult(testing::SimulatedExport(), [](int64_t k, double* row) {
         if (k >= 10 && k <= 15) row[bridge::ResultLayout::kFixedColumns] = 1.7;  // robot 0's x
       });

@@ -10,10 +10,10 @@
 
 #include "command_line.h"
 #include "commands.h"
-#include "dream/bridge/calibration_picture.h"
-#include "dream/bridge/calibration_run.h"
-#include "dream/bridge/lab_calibration.h"
-#include "dream/bridge/lab_model_check.h"
+#include "dream/calibration/calibration_picture.h"
+#include "dream/calibration/calibration_run.h"
+#include "dream/calibration/lab_calibration.h"
+#include "dream/calibration/lab_model_check.h"
 #include "dream/run_config/run_config.h"
 #include "dream/files/atomic_file.h"
 #include "dream/files/stop_token.h"
@@ -30,11 +30,11 @@ struct CalibrateArgs {
   std::string picture_path;  ///< empty: the realism file's name with .png
   std::string base = "lab";
   std::vector<std::string> check_models;  ///< --check: presets or realism files to hold against the runs
-  bridge::CalibrationInputOptions options;
+  calibration::CalibrationInputOptions options;
 };
 
 // A preset's name, or a realism file.
-bridge::NamedModel ModelNamed(const std::string& name) {
+calibration::NamedModel ModelNamed(const std::string& name) {
   world::RealismParams params;
   if (world::RealismParams::FromPreset(name, &params)) return {name, params};
   std::error_code error;
@@ -45,21 +45,21 @@ bridge::NamedModel ModelNamed(const std::string& name) {
 }
 
 // --check: each model against the runs, side by side; nothing is written.
-int RunCheck(const CalibrateArgs& args, const std::vector<bridge::CalibrationRun>& runs, const world::RealismParams& base) {
-  std::vector<bridge::NamedModel> models;
+int RunCheck(const CalibrateArgs& args, const std::vector<calibration::CalibrationRun>& runs, const world::RealismParams& base) {
+  std::vector<calibration::NamedModel> models;
   for (const std::string& name : args.check_models) models.push_back(ModelNamed(name));
   spdlog::info("holding {} model(s) against {} run(s)", models.size(), runs.size());
   const files::StopToken stop(StopFlag());
-  const bridge::CalibrationReport real = bridge::LabCalibration(base, stop).Fit(runs);
-  const std::vector<bridge::ModelPrediction> predictions = bridge::LabModelCheck::Predict(runs, models, stop);
+  const calibration::CalibrationReport real = calibration::LabCalibration(base, stop).Fit(runs);
+  const std::vector<calibration::ModelPrediction> predictions = calibration::LabModelCheck::Predict(runs, models, stop);
   for (const std::string& note : real.notes) spdlog::warn("{}", note);
-  std::cout << bridge::LabModelCheck::Table(real, predictions, models);
+  std::cout << calibration::LabModelCheck::Table(real, predictions, models);
   if (!args.picture_path.empty()) {
     const std::optional<render::RenderFormat> format = render::RenderFormatOfPath(args.picture_path);
     if (!format || !render::IsPictureFormat(*format)) {
       throw std::runtime_error("--picture " + args.picture_path + ": a picture is .png or .svg");
     }
-    bridge::RenderModelCheckPicture(predictions, args.picture_path, *format);
+    calibration::RenderModelCheckPicture(predictions, args.picture_path, *format);
     std::cout << "\nWrote " << args.picture_path << "\n";
   }
   return kExitOk;
@@ -77,10 +77,10 @@ int RunCalibrate(const CalibrateArgs& args) {
   // Ctrl-C or SIGTERM: the fit stops within a fraction of a second
   // (files::Stopped, exit 130) and nothing is written.
   const files::StopToken stop(StopFlag());
-  std::vector<bridge::CalibrationRun> runs;
+  std::vector<calibration::CalibrationRun> runs;
   for (const std::string& input : args.inputs) {
     spdlog::info("reading {}", input);
-    runs.push_back(bridge::ReadCalibrationRun(input, args.options));
+    runs.push_back(calibration::ReadCalibrationRun(input, args.options));
     stop.ThrowIfRequested();
   }
   if (!args.check_models.empty()) return RunCheck(args, runs, base);
@@ -95,11 +95,11 @@ int RunCalibrate(const CalibrateArgs& args) {
     throw std::runtime_error("--picture " + picture + ": a picture is .png or .svg");
   }
   spdlog::info("fitting the lab model to {} run(s)", runs.size());
-  const bridge::CalibrationReport report = bridge::LabCalibration(base, stop).Fit(runs);
+  const calibration::CalibrationReport report = calibration::LabCalibration(base, stop).Fit(runs);
   stop.ThrowIfRequested();  // asked as the fit ended: still nothing written
   if (!out.parent_path().empty()) fs::create_directories(out.parent_path());
   files::WriteFileAtomically(out.string(), report.RealismYaml());
-  bridge::RenderCalibrationPicture(report, picture, *format);
+  calibration::RenderCalibrationPicture(report, picture, *format);
   std::cout << report.Text() << "\nWrote " << out.string() << " (use it as world: {realism: {file: " << out.string()
             << "}}, or --set world.realism.file=" << out.string() << ")\nand " << picture << "\n";
   return kExitOk;

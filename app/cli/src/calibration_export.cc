@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "dream/bridge/calibration_config.h"
+#include "dream/workflows/calibration_config.h"
 #include "dream/bridge/submission_exporter.h"
 #include "dream/run_config/run_config.h"
 #include "dream/lcm/lcm_bus.h"
@@ -23,10 +23,10 @@ namespace dream::cli {
 namespace fs = std::filesystem;
 
 int RunCalibrationExport(const ExportArgs& args, bridge::ExportOptions options) {
-  if (args.robots < bridge::CalibrationConfig::kMinRobots || args.robots > bridge::CalibrationConfig::kMaxRobots) {
+  if (args.robots < workflows::CalibrationConfig::kMinRobots || args.robots > workflows::CalibrationConfig::kMaxRobots) {
     throw std::runtime_error("--robots " + std::to_string(args.robots) + ": the calibration drive runs " +
-                             std::to_string(bridge::CalibrationConfig::kMinRobots) + " to " +
-                             std::to_string(bridge::CalibrationConfig::kMaxRobots) +
+                             std::to_string(workflows::CalibrationConfig::kMinRobots) + " to " +
+                             std::to_string(workflows::CalibrationConfig::kMaxRobots) +
                              " robots (the lab's limit is 20)" +
                              (args.robots == 0 ? "; pass --robots N with --calibration" : ""));
   }
@@ -43,8 +43,8 @@ int RunCalibrationExport(const ExportArgs& args, bridge::ExportOptions options) 
   }
   options.strategy = bridge::Strategy::kReplay;
   options.calibration = true;
-  const std::string name = bridge::CalibrationConfig::Name(args.robots);
-  const std::string config_text = bridge::CalibrationConfig::Text(args.robots);
+  const std::string name = workflows::CalibrationConfig::Name(args.robots);
+  const std::string config_text = workflows::CalibrationConfig::Text(args.robots);
   // Both folders are checked before the run, so a refusal wastes none.
   const std::string out_dir = args.out_dir.empty() ? (fs::path("exports") / name).string() : args.out_dir;
   if (RunFolderChoice::HoldsRun(out_dir)) {

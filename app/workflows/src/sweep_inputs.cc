@@ -4,7 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "dream/bridge/sha256.h"
+#include "dream/formats/sha256.h"
 #include "dream/files/atomic_file.h"
 #include "dream/files/file_text.h"
 
@@ -13,7 +13,7 @@ namespace {
 
 constexpr size_t kMaxRecordBytes = 64 * 1024;
 
-std::string Digest(const std::string& path) { return bridge::Sha256::Hex(files::ReadFileText(path)); }
+std::string Digest(const std::string& path) { return formats::Sha256::Hex(files::ReadFileText(path)); }
 
 /// A path on one line of the record (sha256sum's format has no room for a newline in it).
 std::string OneLine(std::string path) {

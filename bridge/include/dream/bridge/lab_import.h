@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "dream/bridge/npy_file.h"
+#include "dream/formats/npy_file.h"
 #include "dream/bridge/run_track.h"
 #include "dream/bridge/submission_params.h"
 #include "dream/node/run_outcome.h"
@@ -70,7 +70,7 @@ struct LabResult {
 /// a .mat variable declaring more than `max_values` values is refused before
 /// anything is allocated for them (a .npy's shape must match its bytes).
 /// @throws std::runtime_error naming the file.
-NpyArray ReadResultFile(const std::string& path, int64_t max_values = int64_t{1} << 26);
+formats::NpyArray ReadResultFile(const std::string& path, int64_t max_values = int64_t{1} << 26);
 
 /// Checks the rows strictly against the export (column count for its robot
 /// count, phases and steps in order, no more steps than planned, every value
@@ -78,7 +78,7 @@ NpyArray ReadResultFile(const std::string& path, int64_t max_values = int64_t{1}
 /// each step. A run cut short (the lab stopped it) is accepted with
 /// complete = false; it needs at least two experiment steps.
 /// @throws std::runtime_error "<name>: <problem>" naming row, column and robot.
-LabResult ParseLabResult(const NpyArray& rows, const std::string& name, const ExportedSubmission& exported);
+LabResult ParseLabResult(const formats::NpyArray& rows, const std::string& name, const ExportedSubmission& exported);
 
 /// The lab verifier's rules (world::LabVerifierRules) on a lab run: its robot
 /// count and step() calls (settle and experiment) against `declared`, robots

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "dream/bridge/npy_file.h"
+#include "dream/formats/npy_file.h"
 #include "dream/world/rectangle_obstacle_spec.h"
 
 namespace dream::bridge {
@@ -23,6 +23,7 @@ int64_t ObstacleScheduleBytes(int64_t obstacles, int64_t steps);
 /// a submission whose controllers sense the obstacles on the lab.
 /// @throws std::invalid_argument for an invalid spec (as the world does), or a
 /// schedule over kMaxObstacleScheduleBytes.
-NpyArray ObstacleSchedule(const std::vector<world::RectangleObstacleSpec>& specs, double time_step_s, int64_t steps);
+formats::NpyArray ObstacleSchedule(const std::vector<world::RectangleObstacleSpec>& specs, double time_step_s,
+                                   int64_t steps);
 
 }  // namespace dream::bridge

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "dream/bridge/export_options.h"
-#include "dream/bridge/npy_file.h"
+#include "dream/formats/npy_file.h"
 
 namespace dream::bridge {
 
@@ -26,11 +26,11 @@ struct SubmissionParams {
   double max_abs_w_radps = 0.0;
 
   /// The ParamIndex::kParamCount float64 values.
-  NpyArray ToNpy() const;
+  formats::NpyArray ToNpy() const;
   /// Parses and checks dream_params.npy (format 2, or format 1 of exports
   /// made before the controller strategy). @throws std::runtime_error
   /// "<name>: <problem>".
-  static SubmissionParams FromNpy(const NpyArray& array, const std::string& name);
+  static SubmissionParams FromNpy(const formats::NpyArray& array, const std::string& name);
 };
 
 }  // namespace dream::bridge
