@@ -11,7 +11,7 @@
 #include <optional>
 #include <nlohmann/json.hpp>
 
-#include "hosted_agents.h"
+#include "dream/hosting/hosted_agents.h"
 #include "dream/session/run_exit_code.h"
 #include "command_line.h"
 #include "calibration_export.h"
@@ -35,9 +35,9 @@
 #include "dream/run_config/run_config.h"
 #include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/lcm_url.h"
-#include "data_files.h"
-#include "process_group.h"
-#include "run_folder_choice.h"
+#include "dream/process/data_files.h"
+#include "dream/process/process_group.h"
+#include "dream/files/run_folder_choice.h"
 #include "shared_options.h"
 
 #ifndef DREAM_DEFAULT_PYTHON
@@ -56,7 +56,7 @@ int RunExport(const ExportArgs& args) {
   options.barriers = args.barriers;
   options.settle_max_steps = args.settle_steps;
   options.force = args.force;
-  options.python_runtime_dir = DataFiles::PythonRuntimeDir();
+  options.python_runtime_dir = process::DataFiles::PythonRuntimeDir();
   if (args.calibration) return RunCalibrationExport(args, options);
   if (args.robots != 0) {
     throw std::runtime_error("--robots " + std::to_string(args.robots) +
@@ -80,12 +80,12 @@ int RunImport(const ImportArgs& args) {
   workflows::ImportWorkflow::Options options;
   options.result = args.result;
   options.export_dir = args.export_dir;
-  options.out_dir = RunFolderChoice(args.out_dir, "runs/" + exported.config.name + "_lab", args.overwrite,
-                                    RunFolderChoice::Create::kLater)  // a refused result must leave no folder
+  options.out_dir = files::RunFolderChoice(args.out_dir, "runs/" + exported.config.name + "_lab", args.overwrite,
+                                    files::RunFolderChoice::Create::kLater)  // a refused result must leave no folder
                         .dir();
   // What was declared on the lab's form: UPLOAD.txt's values unless told otherwise.
   options.declared = workflows::ImportWorkflow::Declared(exported, args.declared_robots, args.declared_duration_s);
-  options.python_runtime_dir = DataFiles::PythonRuntimeDir();
+  options.python_runtime_dir = process::DataFiles::PythonRuntimeDir();
   const workflows::ImportWorkflow importer;
   const workflows::ImportWorkflow::Result imported = importer.Import(options);
   importer.PrintVerdict(imported);
@@ -98,7 +98,7 @@ int RunImport(const ImportArgs& args) {
 
 int RunCompare(const CompareArgs& args) {
   const std::string out_dir = args.out_dir.empty() ? args.second_dir : args.out_dir;
-  const bridge::RunComparison comparison = bridge::CompareRunsAndWrite(args.first_dir, args.second_dir, out_dir, DataFiles::PythonRuntimeDir());
+  const bridge::RunComparison comparison = bridge::CompareRunsAndWrite(args.first_dir, args.second_dir, out_dir, process::DataFiles::PythonRuntimeDir());
   std::cout << comparison.Text() << "\nwritten: " << out_dir << "/comparison.json, " << out_dir
             << "/comparison.png\n";
   return kExitOk;
@@ -129,21 +129,21 @@ LabReplayOutcome ReplayLabRun(const LabReplayArgs& args, std::ostream* report) {
   options.steps_from_command_line = args.steps > 0;
   options.report = report;
   options.stop = &StopFlag();
-  options.python_runtime_dir = DataFiles::PythonRuntimeDir();
+  options.python_runtime_dir = process::DataFiles::PythonRuntimeDir();
   session::RunSession run(std::move(config), options);
-  HostedAgents::Check(run.config(), run.factory(), run.config().sim.start_timeout_s);
+  hosting::HostedAgents::Check(run.config(), run.factory(), run.config().sim.start_timeout_s, StopFlag());
 
   const std::string out_dir =
-      RunFolderChoice(args.out_dir, "runs/" + run.config().name + "_lab_replay", args.overwrite).dir();
+      files::RunFolderChoice(args.out_dir, "runs/" + run.config().name + "_lab_replay", args.overwrite).dir();
   const bool in_process = !args.world_only;
   lcm::LcmBus bus(args.lcm_url.empty() ? (in_process ? "memq://" : lcm::ResolveLcmUrl("")) : lcm::ResolveLcmUrl(args.lcm_url));
-  std::unique_ptr<HostedAgents> host;
+  std::unique_ptr<hosting::HostedAgents> host;
   if (in_process) {
     std::vector<int> ids(static_cast<size_t>(run.config().num_robots));
     std::iota(ids.begin(), ids.end(), 0);
-    host = std::make_unique<HostedAgents>(
+    host = std::make_unique<hosting::HostedAgents>(
         bus, run.config(), ids, run.factory(),
-        PythonHostProcess::Limits{run.config().sim.agent_timeout_s, run.config().sim.start_timeout_s, 0.0});
+        python_host::PythonHostProcess::Limits{run.config().sim.agent_timeout_s, run.config().sim.start_timeout_s, 0.0});
   }
 
   // The lab's poses, replayed as the world; what it adds to the summary: the
@@ -183,7 +183,7 @@ workflows::CheckSubmission::Tools CheckSubmissionTools() {
   workflows::CheckSubmission::Tools tools;
   tools.run_script = [](const std::vector<std::string>& argv) {
     workflows::CheckSubmission::ScriptRun ran;
-    ProcessGroup group;
+    process::ProcessGroup group;
     const pid_t pid = group.Start(argv);
     ran.exit_code = group.WaitPassingOnStop(pid, StopFlag(), SIGINT);
     ran.interrupted = StopFlag().load();
@@ -199,7 +199,7 @@ workflows::CheckSubmission::Tools CheckSubmissionTools() {
     return workflows::CheckSubmission::Replay{outcome.exit_code == kExitInterrupted, outcome.agreement};
   };
   tools.choose_folder = [](const std::string& out, const std::string& default_dir, bool overwrite) {
-    return RunFolderChoice(out, default_dir, overwrite).dir();
+    return files::RunFolderChoice(out, default_dir, overwrite).dir();
   };
   return tools;
 }
@@ -213,11 +213,11 @@ int RunCheckSubmission(const CheckSubmissionArgs& args) {
   options.simulator = args.simulator;
   if (const char* env = std::getenv("ROBOTARIUM_PYTHON_SIMULATOR")) options.simulator_from_environment = env;
   options.python = args.python.empty() ? DREAM_DEFAULT_PYTHON : args.python;
-  options.runner_script = DataFiles::BridgePythonDir() + "/run_submission.py";
+  options.runner_script = process::DataFiles::BridgePythonDir() + "/run_submission.py";
   options.standin = args.standin;
   options.require_official = args.require_official;
   options.skip_initialization = args.skip_initialization;
-  options.python_runtime_dir = DataFiles::PythonRuntimeDir();
+  options.python_runtime_dir = process::DataFiles::PythonRuntimeDir();
   const workflows::CheckSubmission::Result result =
       workflows::CheckSubmission(options, CheckSubmissionTools()).Run();
   using Outcome = workflows::CheckSubmission::Outcome;

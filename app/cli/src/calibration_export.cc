@@ -14,8 +14,8 @@
 #include "dream/run_config/run_config.h"
 #include "dream/lcm/lcm_bus.h"
 #include "dream/session/run_session.h"
-#include "hosted_agents.h"
-#include "run_folder_choice.h"
+#include "dream/hosting/hosted_agents.h"
+#include "dream/files/run_folder_choice.h"
 #include "run_output.h"
 
 namespace dream::cli {
@@ -47,11 +47,11 @@ int RunCalibrationExport(const ExportArgs& args, bridge::ExportOptions options) 
   const std::string config_text = bridge::CalibrationConfig::Text(args.robots);
   // Both folders are checked before the run, so a refusal wastes none.
   const std::string out_dir = args.out_dir.empty() ? (fs::path("exports") / name).string() : args.out_dir;
-  if (RunFolderChoice::HoldsRun(out_dir)) {
+  if (files::RunFolderChoice::HoldsRun(out_dir)) {
     throw std::runtime_error("--out " + out_dir + " holds a run (run.lcmlog or summary.json); an export would "
                              "replace its config.yaml: choose another --out");
   }
-  if (!args.run_dir.empty() && RunFolderChoice::HoldsRun(args.run_dir)) {
+  if (!args.run_dir.empty() && files::RunFolderChoice::HoldsRun(args.run_dir)) {
     throw std::runtime_error(args.run_dir + ": already holds a run (run.lcmlog or summary.json); --calibration " +
                              "writes a new one: name another folder, or leave it out (runs/" + name + ")");
   }
@@ -62,15 +62,15 @@ int RunCalibrationExport(const ExportArgs& args, bridge::ExportOptions options) 
   session::RunSession::Options session_options;
   session_options.stop = &StopFlag();
   session::RunSession run(std::move(config), session_options);
-  HostedAgents::Check(run.config(), run.factory());
-  const std::string run_dir = RunFolderChoice(args.run_dir, "runs/" + name, false).dir();
+  hosting::HostedAgents::Check(run.config(), run.factory(), 0.0, StopFlag());
+  const std::string run_dir = files::RunFolderChoice(args.run_dir, "runs/" + name, false).dir();
   lcm::LcmBus bus("memq://");
   std::vector<int> ids(static_cast<size_t>(run.config().num_robots));
   std::iota(ids.begin(), ids.end(), 0);
   int run_code = kExitOk;
   bool clean = false;
   {
-    const HostedAgents agents(bus, run.config(), ids, run.factory(),
+    const hosting::HostedAgents agents(bus, run.config(), ids, run.factory(),
                               {run.config().sim.agent_timeout_s, run.config().sim.start_timeout_s, 0.0});
     const session::RunResult result = run.Run(bus, {run_dir, config_text});
     run_code = session::ExitCodeOf(result);

@@ -4,7 +4,7 @@
 #include <iostream>
 #include <numeric>
 
-#include "hosted_agents.h"
+#include "dream/hosting/hosted_agents.h"
 #include "dream/session/run_exit_code.h"
 #include "command_line.h"
 #include "commands.h"
@@ -34,7 +34,7 @@ int RunEmbedded(const RunArgs& args) {
   }
   std::vector<int> ids(static_cast<size_t>(config.num_robots));
   std::iota(ids.begin(), ids.end(), 0);
-  const HostedAgents agents(bus, config, ids, run->factory(),
+  const hosting::HostedAgents agents(bus, config, ids, run->factory(),
                             {config.sim.agent_timeout_s, config.sim.start_timeout_s, 0.0});
   const session::RunResult result = run->Run(bus, {out_dir, ConfigTextForRunFolder(args, config)});
   if (view) {
