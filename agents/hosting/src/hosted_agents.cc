@@ -29,7 +29,9 @@ void HostedAgents::Check(const config::ControllerConfig& config, const agent_hos
     own = std::make_unique<agent_host::ControllerFactory>(config);  // its constructor checks the section
     built = own.get();
   }
-  if (RunsInPython(*built)) python_host::PythonHostProcess::Check(built->registered_kind().runtime_spec(config), start_timeout_s, stop);
+  if (RunsInPython(*built)) {
+    python_host::PythonHostProcess::Check(built->registered_kind().runtime_spec(config), start_timeout_s, stop);
+  }
 }
 
 HostedAgents::HostedAgents(lcm::LcmBus& bus, const config::ControllerConfig& config, const std::vector<int>& robot_ids,
@@ -42,8 +44,8 @@ HostedAgents::HostedAgents(lcm::LcmBus& bus, const config::ControllerConfig& con
     factory = own.get();
   }
   if (RunsInPython(*factory)) {
-    python_ = std::make_unique<python_host::PythonHostProcess>(bus, factory->registered_kind().runtime_spec(config), robot_ids,
-                                                  NewAgentId(), python_limits);
+    python_ = std::make_unique<python_host::PythonHostProcess>(bus, factory->registered_kind().runtime_spec(config),
+                                                               robot_ids, NewAgentId(), python_limits);
     return;
   }
   std::vector<std::unique_ptr<agents::RobotAgent>> robots;

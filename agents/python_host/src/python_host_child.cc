@@ -48,7 +48,8 @@ void PythonHostChild::Run(std::atomic<bool>& stop, const ExitCodes& codes) {
     const nlohmann::json json = nlohmann::json::parse(start.data);
     spdlog::set_level(static_cast<spdlog::level::level_enum>(json.at("log_level").get<int>()));
     const std::string spec = json.at("spec").get<std::string>();
-    const python_embedded::PythonAgentHost::Paths paths{process::DataFiles::PythonRuntimeDir(), process::DataFiles::PythonTypesDir()};
+    const python_embedded::PythonAgentHost::Paths paths{process::DataFiles::PythonRuntimeDir(),
+                                                        process::DataFiles::PythonTypesDir()};
     const PythonHostLibrary& library = PythonHostLibrary::Get(stop);
     library.Watch(json.at("agent_timeout_s").get<double>(), json.at("start_timeout_s").get<double>(),
                   static_cast<std::atomic<int64_t>*>(cell));

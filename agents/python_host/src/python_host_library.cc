@@ -22,10 +22,10 @@ const PythonHostLibrary& PythonHostLibrary::Get(const std::atomic<bool>& stop) {
                                (error != nullptr ? error : "unknown error") +
                                "); Python controllers need Debian's libpython3.11 (apt-get install libpython3-dev)");
     }
-    auto watch = reinterpret_cast<python_embedded::PythonHostWatchFunction>(::dlsym(handle, python_embedded::kPythonHostWatchSymbol));
-    auto check = reinterpret_cast<python_embedded::PythonHostCheckFunction>(::dlsym(handle, python_embedded::kPythonHostCheckSymbol));
-    auto create =
-        reinterpret_cast<python_embedded::PythonHostCreateFunction>(::dlsym(handle, python_embedded::kPythonHostCreateSymbol));
+    using namespace python_embedded;  // the module's interface: its function types and symbol names
+    auto watch = reinterpret_cast<PythonHostWatchFunction>(::dlsym(handle, kPythonHostWatchSymbol));
+    auto check = reinterpret_cast<PythonHostCheckFunction>(::dlsym(handle, kPythonHostCheckSymbol));
+    auto create = reinterpret_cast<PythonHostCreateFunction>(::dlsym(handle, kPythonHostCreateSymbol));
     if (watch == nullptr || check == nullptr || create == nullptr) {
       throw std::runtime_error(path + " is not the Python agent host of this dream (rebuild or reinstall dream)");
     }
@@ -44,10 +44,9 @@ void PythonHostLibrary::Watch(double agent_timeout_s, double start_timeout_s, st
          start_timeout_s > 0 ? start_timeout_s : defaults.start_timeout_s, cell);
 }
 
-std::unique_ptr<python_embedded::PythonAgentHost> PythonHostLibrary::Create(lcm::LcmBus& bus, const std::string& spec_json,
-                                                                   const std::vector<int>& robot_ids,
-                                                                   int64_t agent_id,
-                                                                   const python_embedded::PythonAgentHost::Paths& paths) const {
+std::unique_ptr<python_embedded::PythonAgentHost> PythonHostLibrary::Create(
+    lcm::LcmBus& bus, const std::string& spec_json, const std::vector<int>& robot_ids, int64_t agent_id,
+    const python_embedded::PythonAgentHost::Paths& paths) const {
   return create_(bus, spec_json, robot_ids, agent_id, paths);
 }
 

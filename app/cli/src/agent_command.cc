@@ -20,8 +20,6 @@
 #include "dream/process/data_files.h"
 #include "dream/process/process_group.h"
 #include "shared_options.h"
-#include "dream/agent_host/agent_host.h"
-#include "dream/agent_host/controller_factory.h"
 #include "dream/config/controller_config.h"
 #include "dream/files/atomic_file.h"
 #include "dream/lcm/lcm_bus.h"

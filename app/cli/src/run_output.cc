@@ -6,7 +6,6 @@
 
 #include "dream/config/config_error.h"
 #include "dream/process/data_files.h"
-#include "dream/hosting/hosted_agents.h"
 #include "dream/config_overrides/overridden_config.h"
 #include "dream/run_config/run_config.h"
 #include "dream/files/run_folder_choice.h"
@@ -35,7 +34,7 @@ std::unique_ptr<session::RunSession> OpenRunSession(const RunArgs& args) {
   options.python_runtime_dir = process::DataFiles::PythonRuntimeDir();
   auto run = std::make_unique<session::RunSession>(std::move(config), options);
   try {
-    hosting::HostedAgents::Check(run->config(), run->factory(), run->config().sim.start_timeout_s, StopFlag());
+    run->CheckAgents();
   } catch (const config::ConfigError& e) {
     throw config::ConfigError(overridden.Noted(e.what()));
   }
