@@ -17,7 +17,7 @@ ends the step's handling at once: `interrupted` is set, and nothing is answered 
 
 Each controller call is marked in the call cell (set_call_cell): a token unique to the call
 while it runs, 0 otherwise, then the robot and the step, which the embedding tool's watchdog
-thread reads (agents/python_host), and the process that hosts this one (PythonHostProcess).
+thread reads (agents/python_embedded), and the process that hosts this one (PythonHostProcess).
 """
 
 import itertools

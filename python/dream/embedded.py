@@ -1,4 +1,4 @@
-"""Entry points for the C++ tool that embeds Python (agents/python_host/PythonAgentHost).
+"""Entry points for the C++ tool that embeds Python (agents/python_embedded/PythonAgentHost).
 
 `dream-agent --python-host`, the process `dream run`, `dream agent` (so also `dream launch`) and
 `dream lab-replay` start for their Python controllers, hosts the agents on its own memq:// bus

@@ -20,7 +20,7 @@ class ControllerFault(Exception):
 
 class RunInterrupted(BaseException):
     """The whole run is being interrupted (Ctrl-C / SIGTERM to the tool that embeds Python): raised
-    inside a running controller by the embedding agent host (agents/python_host), it is never the
+    inside a running controller by the embedding agent host (agents/python_embedded), it is never the
     controller's fault and passes through RobotAgent to end the run."""
 
 

@@ -17,6 +17,10 @@ document and the code cannot drift apart:
   libraries of its own floor or of floors below it (the doc's "Floors, bottom up:" line);
 - no two libraries may use each other, directly or through others (inside a floor too).
 
+A row with no include path and a `dream::<name>` namespace is a program's folder (the command
+line, `app/cli/`): it has no target of its own, but its sources' includes and namespaces are
+checked against its "may use" as a library's are, unless that says `all`.
+
 A row whose folder is `<parent>/<kind>/` stands for one library per folder of `<parent>/` that
 has a CMakeLists.txt (the built-in experiment kinds, `agents/kinds/<kind>/`): each is checked
 as a row of its own with `<kind>` replaced by the folder's name, and `<kind>` in another row's
@@ -54,9 +58,10 @@ def cell_words(cell):
 class Row:
     """One library of the table."""
 
-    def __init__(self, floor, folder, own, namespace, targets, may_use):
+    def __init__(self, floor, folder, own, namespace, targets, may_use, program=False):
         self.floor, self.folder, self.own = floor, folder, own
         self.namespace, self.targets, self.may_use = namespace, targets, may_use
+        self.program = program  # a program's folder: no target or public headers of its own
 
 
 PLACEHOLDER = "<kind>"
@@ -111,9 +116,15 @@ def read_table(doc_path, subfolders=lambda parent: []):
         for target in targets:
             floor_of[target] = cells[col["floor"]]
         own = cell_words(cells[col["include path"]])
-        if not own:
-            continue  # no public headers (the command line, the Python package): nothing to check
         namespaces = re.findall(r"`([^`]+)`", cells[col["namespace"]])
+        if not own:
+            # No public headers: lcm-gen's types (nothing to check), or a program's folder whose
+            # "may use" is a list (the command line): its sources are checked as a library's.
+            program = re.fullmatch(r"dream::(\w+)", namespaces[0]) if len(namespaces) == 1 else None
+            if program and len(folders) == 1 and cells[col["may use"]].strip() != "all":
+                rows[folders[0].strip("/")] = Row(cells[col["floor"]], folders[0].strip("/"), program.group(1),
+                                                   namespaces[0], set(), cell_words(cells[col["may use"]]), True)
+            continue
         if len(folders) != 1 or len(own) != 1 or len(namespaces) != 1:
             raise SystemExit(f"FAIL: {doc_path}: row needs one `folder/`, one `dream/<name>/` and one `dream::<name>`: {line}")
         name = own.pop()
@@ -133,12 +144,12 @@ def row_violations(floors, floor_of, rows, read):
             found.append(f"{where}: the folder's name is not its include path's (dream/{row.own}/)")
         if row.namespace != f"dream::{row.own}":
             found.append(f"{where}: namespace {row.namespace} is not dream::{row.own}")
-        if row.own not in row.targets:
+        if not row.program and row.own not in row.targets:
             found.append(f"{where}: CMake target is not dream::{row.own}")
         if row.floor not in floors or folder.split("/")[0] != row.floor:
             found.append(f"{where}: not on its floor {row.floor!r} (floors: {floors})")
         cmake = read(f"{folder}/CMakeLists.txt") or ""
-        if row.own not in TARGET_DEFINITION.findall(cmake):
+        if not row.program and row.own not in TARGET_DEFINITION.findall(cmake):
             found.append(f"{folder}/CMakeLists.txt: defines no target dream_{row.own} (dream::{row.own})")
         for used in sorted(row.may_use):
             if used in floor_of and floor_of[used] in floors and row.floor in floors \
@@ -224,7 +235,8 @@ def self_test():
             "low/b": Row("low", "low/b", "b", "dream::b", {"b"}, set()),
             "low/c": Row("low", "low/c", "cc", "dream::c", {"c"}, {"h"}),     # four names disagree, uses up
             "high/d": Row("low", "high/d", "d", "dream::d", {"d"}, set()),    # off its floor
-            "high/h": Row("high", "high/h", "h", "dream::h", {"h"}, {"a"})}
+            "high/h": Row("high", "high/h", "h", "dream::h", {"h"}, {"a"}),
+            "high/p": Row("high", "high/p", "p", "dream::p", set(), {"h"}, True)}  # a program: may use h only
     floor_of = {"a": "low", "b": "low", "cc": "low", "d": "low", "h": "high"}
     texts = {
         "low/a/src/x.cc": '#include "dream/a/x.h"\n#include "dream/b/y.h"\nnamespace dream::a {\nnamespace dream::a::detail {\n',
@@ -233,6 +245,7 @@ def self_test():
         "low/b/src/t.cc": '#include "dream/robot_poses_t.hpp"\n',                 # nor msgs
         "low/b/src/n.cc": "namespace dream::a {\nint f();\n}\n",                   # nor open a's namespace
         "low/b/src/f.cc": "namespace dream::a {\nclass X;  // declared only\n}\n",  # (a declaration may)
+        "high/p/src/main.cc": '#include "dream/h/h.h"\n#include "dream/a/x.h"\n',  # the program may not use a
         "lib/c/include/dream/c/c.h": "",                                          # not in the table
         "low/a/CMakeLists.txt": "dream_add_library(a\n", "low/b/CMakeLists.txt": "add_library(dream_b STATIC\n",
         "low/c/CMakeLists.txt": "dream_add_library(c\n", "high/d/CMakeLists.txt": "dream_add_library(d\n",
@@ -245,7 +258,8 @@ def self_test():
     expected = ["low/b/src/y.cc:", "low/b/src/z.cc:", "low/b/src/t.cc:", "low/b/src/n.cc:", "lib/c/include/dream/c/c.h:",
                 "docs/architecture.md: low/c/: the folder's name", "docs/architecture.md: low/c/: namespace",
                 "docs/architecture.md: low/c/: CMake target", "docs/architecture.md: low/c/: may use h",
-                "docs/architecture.md: high/d/: not on its floor", "high/h/CMakeLists.txt: defines no target"]
+                "docs/architecture.md: high/d/: not on its floor", "high/h/CMakeLists.txt: defines no target",
+                "high/p/src/main.cc: includes dream/a/"]
     for prefix in expected:
         if not any(line.startswith(prefix) for line in found):
             raise SystemExit(f"FAIL: self test: {prefix} breaks a rule but was not flagged ({found})")
@@ -256,7 +270,20 @@ def self_test():
                     "| low | `low/k/q/` | `dream::q` | `dream/q/` | `dream::q` | `b` | |",
                     "| high | `high/h/` | `dream::h` | `dream/h/` | `dream::h` | `p`, `q`, `a` | |"]:
         raise SystemExit(f"FAIL: self test: the template row `low/k/<kind>/` was not expanded per folder ({expanded})")
-    if any(line.startswith(("low/a/", "low/b/src/f.cc", "docs/architecture.md: low/a/", "docs/architecture.md: low/b/"))
+    import tempfile
+    with tempfile.NamedTemporaryFile("w", suffix=".md", delete=False) as doc:
+        doc.write("Floors, bottom up: `low`, `high`.\n\n| floor | folder | CMake target | include path | namespace | may use |\n"
+                  "|---|---|---|---|---|---|\n| high | `high/p/` | `p` (program) | (no public headers) | `dream::p` | `h` |\n"
+                  "| high | `high/q/` | `q` (program) | (no public headers) | `dream::q` | all |\n")
+    try:
+        _, _, read_rows = read_table(doc.name)
+    finally:
+        os.unlink(doc.name)
+    if set(read_rows) != {"high/p"} or not read_rows["high/p"].program or read_rows["high/p"].may_use != {"h"}:
+        raise SystemExit(f"FAIL: self test: a program's row with a 'may use' list was not read as one "
+                         f"({ {k: vars(v) for k, v in read_rows.items()} })")
+    if any(line.startswith(("low/a/", "low/b/src/f.cc", "docs/architecture.md: low/a/", "docs/architecture.md: low/b/",
+                            "docs/architecture.md: high/p/", "high/p/CMakeLists.txt", "high/p/src/main.cc: includes dream/h/"))
            for line in found):
         raise SystemExit(f"FAIL: self test: low/a and low/b keep the rules but were flagged ({found})")
 

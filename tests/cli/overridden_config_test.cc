@@ -82,7 +82,7 @@ TEST_F(OverriddenConfigTest, SeedAndSetsChangeTheRunAndTheFolderTextReloadsToThe
 
 TEST_F(OverriddenConfigTest, MistakesNameTheOptionAndTheKey) {
   // A misspelt last key is added, then refused by the config check (the
-  // controller section's by HostedAgents::Check, in LoadConfig).
+  // controller section's by RunSession::CheckAgents, in LoadConfig).
   const std::string misspelt = ErrorOf(-1, {"stepz=3"});
   EXPECT_NE(misspelt.find("stepz"), std::string::npos) << misspelt;
   EXPECT_NE(misspelt.find("(with --set stepz=3)"), std::string::npos) << misspelt;

@@ -51,7 +51,7 @@ void AsDreamRun(const std::vector<std::string>& sets) {
     const config_overrides::OverriddenConfig overridden(kBaseConfig, -1, sets);
     const run_config::RunConfig run = overridden.LoadWith(&run_config::LoadRunConfig);
     // dream run checks the controller's keys before it writes the folder
-    // (HostedAgents::Check; for the C++ kinds, the factory's check).
+    // (session::RunSession::CheckAgents; for the C++ kinds, the factory's check).
     if (run.plugins.empty() && run.controller.GetString("kind", "") != "python") {
       try {
         const agent_host::ControllerFactory factory(run);

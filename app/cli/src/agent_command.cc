@@ -13,14 +13,13 @@
 #include <set>
 #include <stdexcept>
 
-#include "hosted_agents.h"
+#include "dream/hosting/hosted_agents.h"
 #include "dream/config_overrides/overridden_config.h"
 #include "command_line.h"
 #include "commands.h"
-#include "process_group.h"
+#include "dream/process/data_files.h"
+#include "dream/process/process_group.h"
 #include "shared_options.h"
-#include "dream/agent_host/agent_host.h"
-#include "dream/agent_host/controller_factory.h"
 #include "dream/config/controller_config.h"
 #include "dream/files/atomic_file.h"
 #include "dream/lcm/lcm_bus.h"
@@ -35,11 +34,6 @@ double PeakResidentMegabytes() {
     if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;  // "VmHWM:   7472 kB"
   }
   return 0.0;
-}
-
-int64_t NewAgentId() {
-  std::random_device device;
-  return static_cast<int64_t>((static_cast<uint64_t>(device()) << 32) | device()) & INT64_MAX;
 }
 
 std::vector<int> ParseRobotList(const std::string& text, int num_robots) {
@@ -111,9 +105,9 @@ int RunAgents(const AgentArgs& args) {
   const config::ControllerConfig config = overridden.LoadController();
   const std::vector<int> ids = ParseRobotList(args.robots, config.num_robots);
   lcm::LcmBus bus(lcm::ResolveLcmUrl(args.lcm_url));
-  auto host = std::make_unique<HostedAgents>(
+  auto host = std::make_unique<hosting::HostedAgents>(
       bus, config, ids, nullptr,
-      PythonHostProcess::Limits{WorldTimeout(overridden.Document(), "agent_timeout_s"),
+      python_host::PythonHostProcess::Limits{WorldTimeout(overridden.Document(), "agent_timeout_s"),
                                 WorldTimeout(overridden.Document(), "start_timeout_s"), args.idle_timeout_s});
   spdlog::info("agent for robot(s) {} of {} on {}", args.robots, config.name, bus.url());
   const bool ended_by_world = host->Run(StopFlag(), args.idle_timeout_s);
@@ -141,12 +135,8 @@ int RunAgents(const AgentArgs& args) {
   return kExitOk;
 }
 
-std::string AgentBinaryPath() {
-  return (std::filesystem::path(SelfExecutable()).parent_path() / "dream-agent").string();
-}
-
 int ExecAgentBinary(int argc, char** argv) {
-  const std::string binary = AgentBinaryPath();
+  const std::string binary = process::DataFiles::AgentBinary();
   // argv is "dream [-q|-v] agent ARGS...": run "dream-agent [-q|-v] ARGS...".
   std::vector<char*> args = {const_cast<char*>(binary.c_str())};
   bool skipped_subcommand = false;

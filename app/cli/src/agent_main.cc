@@ -8,6 +8,7 @@
 
 #include "commands.h"
 #include "dream/config/config_error.h"
+#include "dream/python_host/python_host_child.h"
 #include "shared_options.h"
 
 int main(int argc, char** argv) {
@@ -15,7 +16,8 @@ int main(int argc, char** argv) {
   // Started by PythonHostProcess, not by a user: no options of its own.
   if (argc == 2 && std::string(argv[1]) == "--python-host") {
     spdlog::set_pattern("[%H:%M:%S.%e] [%^%l%$] %v");
-    return RunPythonHostChild();
+    InstallStopSignals();
+    dream::python_host::PythonHostChild::Run(StopFlag(), {kExitOk, kExitUsage, kExitInputError, kExitRunFailed});
   }
   CLI::App app{"Run the agents of some robots against whichever world is on the bus.\n"
                "Example: dream agent config/go_to_goal.yaml --robots 0-2",

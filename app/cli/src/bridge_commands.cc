@@ -6,38 +6,23 @@
 #include <csignal>
 #include <filesystem>
 #include <iostream>
-#include <memory>
-#include <numeric>
-#include <optional>
-#include <nlohmann/json.hpp>
 
-#include "hosted_agents.h"
 #include "dream/session/run_exit_code.h"
 #include "command_line.h"
-#include "calibration_export.h"
 #include "commands.h"
 #include "run_output.h"
-#include "dream/session/run_session.h"
-#include "dream/files/file_text.h"
-#include "dream/agent_host/agent_host.h"
-#include "dream/agent_host/controller_factory.h"
-#include "dream/bridge/command_agreement.h"
 #include "dream/bridge/lab_import.h"
+#include "dream/workflows/calibration_export_workflow.h"
 #include "dream/workflows/check_submission.h"
 #include "dream/workflows/export_workflow.h"
 #include "dream/workflows/import_workflow.h"
-#include "dream/bridge/lab_replay_world.h"
-#include "dream/files/json_text.h"
-#include "dream/files/output_folder.h"
+#include "dream/workflows/lab_replay_workflow.h"
 #include "dream/bridge/run_comparison.h"
 #include "dream/bridge/submission_exporter.h"
 #include "dream/bridge/submission_format.h"
-#include "dream/run_config/run_config.h"
-#include "dream/lcm/lcm_bus.h"
-#include "dream/lcm/lcm_url.h"
-#include "data_files.h"
-#include "process_group.h"
-#include "run_folder_choice.h"
+#include "dream/process/data_files.h"
+#include "dream/process/process_group.h"
+#include "dream/files/run_folder_choice.h"
 #include "shared_options.h"
 
 #ifndef DREAM_DEFAULT_PYTHON
@@ -49,6 +34,29 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/// dream export --calibration --robots N: the flags that do not go with it
+/// refused, then the workflow (CalibrationExportWorkflow).
+int RunCalibrationExport(const ExportArgs& args, const bridge::ExportOptions& options) {
+  if (!args.config_path.empty()) {
+    throw std::runtime_error("--config " + args.config_path + ": --calibration writes its own config; leave --config out");
+  }
+  if (!args.strategy.empty() && args.strategy != bridge::StrategyName(bridge::Strategy::kReplay)) {
+    throw std::runtime_error("--strategy " + args.strategy + ": --calibration exports the program's commands open "
+                             "loop (replay), which is what calibrate fits; leave --strategy out");
+  }
+  if (args.barriers) {
+    throw std::runtime_error("--barriers: would change the program's commands where robots come close; "
+                             "--calibration sends them unchanged (its robots never come close)");
+  }
+  workflows::CalibrationExportWorkflow::Options calibration;
+  calibration.robots = args.robots;
+  calibration.out_dir = args.out_dir;
+  calibration.run_dir = args.run_dir;
+  calibration.export_options = options;
+  calibration.stop = &StopFlag();
+  return workflows::CalibrationExportWorkflow().Export(calibration).exit_code;
+}
+
 }  // namespace
 
 int RunExport(const ExportArgs& args) {
@@ -56,7 +64,7 @@ int RunExport(const ExportArgs& args) {
   options.barriers = args.barriers;
   options.settle_max_steps = args.settle_steps;
   options.force = args.force;
-  options.python_runtime_dir = DataFiles::PythonRuntimeDir();
+  options.python_runtime_dir = process::DataFiles::PythonRuntimeDir();
   if (args.calibration) return RunCalibrationExport(args, options);
   if (args.robots != 0) {
     throw std::runtime_error("--robots " + std::to_string(args.robots) +
@@ -80,12 +88,12 @@ int RunImport(const ImportArgs& args) {
   workflows::ImportWorkflow::Options options;
   options.result = args.result;
   options.export_dir = args.export_dir;
-  options.out_dir = RunFolderChoice(args.out_dir, "runs/" + exported.config.name + "_lab", args.overwrite,
-                                    RunFolderChoice::Create::kLater)  // a refused result must leave no folder
+  options.out_dir = files::RunFolderChoice(args.out_dir, "runs/" + exported.config.name + "_lab", args.overwrite,
+                                    files::RunFolderChoice::Create::kLater)  // a refused result must leave no folder
                         .dir();
   // What was declared on the lab's form: UPLOAD.txt's values unless told otherwise.
   options.declared = workflows::ImportWorkflow::Declared(exported, args.declared_robots, args.declared_duration_s);
-  options.python_runtime_dir = DataFiles::PythonRuntimeDir();
+  options.python_runtime_dir = process::DataFiles::PythonRuntimeDir();
   const workflows::ImportWorkflow importer;
   const workflows::ImportWorkflow::Result imported = importer.Import(options);
   importer.PrintVerdict(imported);
@@ -98,108 +106,40 @@ int RunImport(const ImportArgs& args) {
 
 int RunCompare(const CompareArgs& args) {
   const std::string out_dir = args.out_dir.empty() ? args.second_dir : args.out_dir;
-  const bridge::RunComparison comparison = bridge::CompareRunsAndWrite(args.first_dir, args.second_dir, out_dir, DataFiles::PythonRuntimeDir());
+  const bridge::RunComparison comparison = bridge::CompareRunsAndWrite(args.first_dir, args.second_dir, out_dir, process::DataFiles::PythonRuntimeDir());
   std::cout << comparison.Text() << "\nwritten: " << out_dir << "/comparison.json, " << out_dir
             << "/comparison.png\n";
   return kExitOk;
 }
 
-/// What a lab replay gave: its exit code and, once the world has stepped,
-/// how the agents' commands compare with the lab's.
-struct LabReplayOutcome {
-  int exit_code = kExitOk;
-  std::optional<bridge::CommandAgreement> agreement;
-};
-
-/// dream lab-replay; `report` takes the verdict and the outputs' paths.
-LabReplayOutcome ReplayLabRun(const LabReplayArgs& args, std::ostream* report) {
-  const std::string log_in = (fs::path(args.lab_dir) / "run.lcmlog").string();
-  const std::string config_in = (fs::path(args.lab_dir) / "config.yaml").string();
-  run_config::RunConfig config = run_config::LoadRunConfigFile(config_in);
-  bridge::RunTrack track = bridge::ReadRunTrack(log_in);
-  if (track.num_robots != config.num_robots) {
-    throw std::runtime_error(log_in + ": has " + std::to_string(track.num_robots) + " robots, " + config_in + " " +
-                             std::to_string(config.num_robots));
-  }
-  if (track.last_step() < 1) throw std::runtime_error(log_in + ": the lab run has no step to replay");
-  config.sim.max_steps = args.steps > 0 ? std::min<int64_t>(args.steps, track.last_step()) : track.last_step();
-  config.sim.stop_when_done = false;  // the lab run is replayed to its end
-  if (!args.mode.empty()) config.sim.mode = config::ParseWorldMode(args.mode);
-  session::RunSession::Options options;
-  options.steps_from_command_line = args.steps > 0;
-  options.report = report;
+int RunLabReplay(const LabReplayArgs& args) {
+  workflows::LabReplayWorkflow::Options options;
+  options.lab_dir = args.lab_dir;
+  options.out_dir = args.out_dir;
+  options.overwrite = args.overwrite;
+  options.lcm_url = args.lcm_url;
+  options.steps = args.steps;
+  options.mode = args.mode;
+  options.world_only = args.world_only;
+  options.python_runtime_dir = process::DataFiles::PythonRuntimeDir();
   options.stop = &StopFlag();
-  options.python_runtime_dir = DataFiles::PythonRuntimeDir();
-  session::RunSession run(std::move(config), options);
-  HostedAgents::Check(run.config(), run.factory(), run.config().sim.start_timeout_s);
-
-  const std::string out_dir =
-      RunFolderChoice(args.out_dir, "runs/" + run.config().name + "_lab_replay", args.overwrite).dir();
-  const bool in_process = !args.world_only;
-  lcm::LcmBus bus(args.lcm_url.empty() ? (in_process ? "memq://" : lcm::ResolveLcmUrl("")) : lcm::ResolveLcmUrl(args.lcm_url));
-  std::unique_ptr<HostedAgents> host;
-  if (in_process) {
-    std::vector<int> ids(static_cast<size_t>(run.config().num_robots));
-    std::iota(ids.begin(), ids.end(), 0);
-    host = std::make_unique<HostedAgents>(
-        bus, run.config(), ids, run.factory(),
-        PythonHostProcess::Limits{run.config().sim.agent_timeout_s, run.config().sim.start_timeout_s, 0.0});
-  }
-
-  // The lab's poses, replayed as the world; what it adds to the summary: the
-  // agents' commands beside the lab's, how differently the controller reacts
-  // to the real poses than the lab script drove.
-  const bridge::LabReplayWorld* replay = nullptr;
-  session::RunSession::GivenWorld world;
-  world.make = [&](node::RunRecorder& recorder) {
-    auto made = std::make_unique<bridge::LabReplayWorld>(std::move(track), run.config().world, &recorder);
-    replay = made.get();
-    return made;
-  };
-  LabReplayOutcome outcome;
-  world.summary_fields = [&](const world::World&) {
-    outcome.agreement = bridge::CommandAgreement::Of(*replay);
-    nlohmann::ordered_json fields;
-    fields["config"] = "config.yaml";
-    fields["lab_replay"] = {{"lab_run", fs::absolute(args.lab_dir).string()},
-                            {"lab_command_channels", std::string(bridge::kLabCommandChannelPrefix) + "<id>"},
-                            {"agents_vs_lab_commands", outcome.agreement->Json()}};
-    return fields;
-  };
-  world.start_line = run.config().name + ": replaying " + std::to_string(run.config().sim.max_steps) +
-                     " lab steps of " + std::to_string(run.config().num_robots) + " robots (" +
-                     config::WorldModeName(run.config().sim.mode) + ") on " + bus.url() +
-                     (in_process ? " with the agents in this process" : "; start the agents with dream agent");
-  // The same recording, summary, verdict, report and picture as every run.
-  outcome.exit_code = session::ExitCodeOf(run.Run(bus, {out_dir, files::ReadFileText(config_in)}, world));
-  return outcome;
+  return workflows::LabReplayWorkflow().Replay(options).exit_code;
 }
 
-int RunLabReplay(const LabReplayArgs& args) { return ReplayLabRun(args, &std::cout).exit_code; }
-
 /// What check-submission starts: the runner in its own process group
-/// (Ctrl-C passed on), and the lab replay in this process.
+/// (Ctrl-C passed on); its lab replay is the workflow's own (in this process).
 workflows::CheckSubmission::Tools CheckSubmissionTools() {
   workflows::CheckSubmission::Tools tools;
   tools.run_script = [](const std::vector<std::string>& argv) {
     workflows::CheckSubmission::ScriptRun ran;
-    ProcessGroup group;
+    process::ProcessGroup group;
     const pid_t pid = group.Start(argv);
     ran.exit_code = group.WaitPassingOnStop(pid, StopFlag(), SIGINT);
     ran.interrupted = StopFlag().load();
     return ran;
   };
-  tools.replay_lab = [](const std::string& lab_dir, const std::string& replay_dir) {
-    LabReplayArgs replay;
-    replay.lab_dir = lab_dir;
-    replay.out_dir = replay_dir;
-    replay.overwrite = true;  // the check's own folder: a new check replaces it
-    std::ostream quiet(nullptr);  // the replay's own verdict would repeat the check's
-    const LabReplayOutcome outcome = ReplayLabRun(replay, &quiet);
-    return workflows::CheckSubmission::Replay{outcome.exit_code == kExitInterrupted, outcome.agreement};
-  };
   tools.choose_folder = [](const std::string& out, const std::string& default_dir, bool overwrite) {
-    return RunFolderChoice(out, default_dir, overwrite).dir();
+    return files::RunFolderChoice(out, default_dir, overwrite).dir();
   };
   return tools;
 }
@@ -213,11 +153,12 @@ int RunCheckSubmission(const CheckSubmissionArgs& args) {
   options.simulator = args.simulator;
   if (const char* env = std::getenv("ROBOTARIUM_PYTHON_SIMULATOR")) options.simulator_from_environment = env;
   options.python = args.python.empty() ? DREAM_DEFAULT_PYTHON : args.python;
-  options.runner_script = DataFiles::BridgePythonDir() + "/run_submission.py";
+  options.runner_script = process::DataFiles::BridgePythonDir() + "/run_submission.py";
   options.standin = args.standin;
   options.require_official = args.require_official;
   options.skip_initialization = args.skip_initialization;
-  options.python_runtime_dir = DataFiles::PythonRuntimeDir();
+  options.python_runtime_dir = process::DataFiles::PythonRuntimeDir();
+  options.stop = &StopFlag();
   const workflows::CheckSubmission::Result result =
       workflows::CheckSubmission(options, CheckSubmissionTools()).Run();
   using Outcome = workflows::CheckSubmission::Outcome;

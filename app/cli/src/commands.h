@@ -31,11 +31,6 @@ void InstallStopSignals();
 /// their libraries: a third of the memory). `dream agent ...` replaces itself
 /// with `dream-agent ...`, found next to `dream`. Returns only on failure.
 int ExecAgentBinary(int argc, char** argv);
-/// The dream-agent executable next to the running one.
-std::string AgentBinaryPath();
-/// `dream-agent --python-host`: the process that hosts Python controllers
-/// for PythonHostProcess (python_host_child.cc). Never returns.
-int RunPythonHostChild();
 
 struct RunArgs {
   std::string config_path;
@@ -84,8 +79,6 @@ void DeclareViewCommand(CommandLine& line);     ///< dream view (view_command.cc
 /// version print; without the commit when the build was not configured from git.
 std::string VersionLine();
 
-/// A random identifier for this process's agents (see velocity_command_t.agent_id).
-int64_t NewAgentId();
 
 int RunEmbedded(const RunArgs& args);
 int RunSimOnly(const RunArgs& args);

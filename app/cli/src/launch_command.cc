@@ -20,7 +20,8 @@
 #include "dream/files/file_text.h"
 #include "dream/files/output_folder_lock.h"
 #include "commands.h"
-#include "process_group.h"
+#include "dream/process/data_files.h"
+#include "dream/process/process_group.h"
 #include "run_output.h"
 #include "shared_options.h"
 
@@ -137,7 +138,7 @@ int MergeAgentReports(const session::RunSession& session, const std::string& out
 }  // namespace
 
 int RunLaunch(const RunArgs& args) {
-  ProcessGroup::RequireDescriptors(kDescriptorsPerProcess);
+  process::ProcessGroup::RequireDescriptors(kDescriptorsPerProcess);
   // Check the config here, so a mistake is reported once, not by N+1 children.
   const std::unique_ptr<session::RunSession> session = OpenRunSession(args);
   const run_config::RunConfig& config = session->config();
@@ -145,7 +146,7 @@ int RunLaunch(const RunArgs& args) {
   // Chosen once, here: the simulator gets it as --out, so a numbered folder
   // (runs/<name>_2) is not chosen again, differently, by the child.
   const std::string out_dir = PrepareOutputDir(args, config);
-  const std::string self = SelfExecutable();
+  const std::string self = process::SelfExecutable();
   std::vector<std::string> common = {args.config_path};
   if (!args.lcm_url.empty()) common.push_back("--lcm-url=" + args.lcm_url);
   // The same overrides for the simulator and every agent, so all build the
@@ -156,7 +157,7 @@ int RunLaunch(const RunArgs& args) {
   if (!spdlog::should_log(spdlog::level::info)) common.push_back("--quiet");
   if (spdlog::should_log(spdlog::level::debug)) common.push_back("--verbose");
 
-  ProcessGroup children;
+  process::ProcessGroup children;
   std::vector<std::string> sim_argv = {self, "sim"};
   sim_argv.insert(sim_argv.end(), common.begin(), common.end());
   sim_argv.push_back("--out=" + out_dir);  // holds no run now (an earlier one was refused or removed)
@@ -172,7 +173,7 @@ int RunLaunch(const RunArgs& args) {
   std::filesystem::create_directories(AgentReportDir(out_dir));
   std::vector<pid_t> agents;
   for (int id = 0; id < config.num_robots; ++id) {
-    std::vector<std::string> agent_argv = {AgentBinaryPath()};
+    std::vector<std::string> agent_argv = {process::DataFiles::AgentBinary()};
     agent_argv.insert(agent_argv.end(), common.begin(), common.end());
     agent_argv.push_back("--robots=" + std::to_string(id));
     agent_argv.push_back("--report=" + AgentReportPath(out_dir, id));

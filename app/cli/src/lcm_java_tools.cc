@@ -9,8 +9,8 @@
 #include <stdexcept>
 
 #include "commands.h"
-#include "data_files.h"
-#include "process_group.h"
+#include "dream/process/data_files.h"
+#include "dream/process/process_group.h"
 #include "dream/workflows/shell_quoted.h"
 
 namespace dream::cli {
@@ -23,7 +23,7 @@ std::string RequireToolFile(const std::string& path, const char* what, const cha
 std::string RequireLcmJar() { return RequireToolFile(DREAM_LCM_JAR, "lcm.jar", "apt-get install liblcm-java"); }
 
 std::string SpyClasspath() {
-  std::string types_jar = DataFiles::TypesJar();
+  std::string types_jar = process::DataFiles::TypesJar();
   if (const char* env = std::getenv("DREAM_TYPES_JAR"); env != nullptr && std::filesystem::exists(env)) {
     types_jar = env;
   }
@@ -40,7 +40,7 @@ void PrintToolCommands(const std::vector<std::vector<std::string>>& commands) {
 }
 
 int RunToolsUntilClosed(const std::vector<std::vector<std::string>>& commands, size_t wait_for, unsigned pause_s) {
-  ProcessGroup children;
+  process::ProcessGroup children;
   pid_t waited = -1;
   bool started_one = false;
   for (size_t i = 0; i < commands.size(); ++i) {

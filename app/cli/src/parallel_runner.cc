@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "process_group.h"
+#include "dream/process/process_group.h"
 
 namespace dream::cli {
 namespace {
@@ -37,7 +37,7 @@ ParallelRunner::ParallelRunner(int max_parallel, double timeout_s, double grace_
 
 bool ParallelRunner::Run(size_t count, const std::atomic<bool>& stop, const PrepareFn& prepare,
                          const FinishedFn& finished) {
-  ProcessGroup children;  // whatever is left when this returns or throws gets SIGTERM
+  process::ProcessGroup children;  // whatever is left when this returns or throws gets SIGTERM
   std::vector<Running> running;
   size_t next = 0;
   bool stopping = false;

@@ -6,7 +6,7 @@
 
 #include <fstream>
 
-#include "process_group.h"
+#include "dream/process/process_group.h"
 
 namespace dream::cli {
 namespace {
@@ -26,7 +26,7 @@ workflows::CommandRunner::Result ProcessCommandRunner::Run(const std::vector<std
   }
   ::close(fd);
   try {
-    ProcessGroup group;
+    process::ProcessGroup group;
     const pid_t pid = group.Start(argv, path);
     result.exit_code = group.WaitFor(pid, timeout_s_);
     if (result.exit_code < 0) {

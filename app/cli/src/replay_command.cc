@@ -10,7 +10,7 @@
 #include "dream/files/regular_file.h"
 #include "dream/lcm/lcm_url.h"
 #include "lcm_java_tools.h"
-#include "process_group.h"
+#include "dream/process/process_group.h"
 #include "shared_options.h"
 #include "window_display.h"
 
@@ -54,7 +54,7 @@ int RunReplay(const ReplayArgs& args) {
   std::vector<std::string> spy;
   if (args.with_spy) {
     SpyClasspath();  // what the spy needs, named now: a spy that cannot start would leave the replay unwatched
-    spy = {SelfExecutable(), "spy", "--lcm-url=" + url};
+    spy = {process::SelfExecutable(), "spy", "--lcm-url=" + url};
   }
   if (args.print_command_only) {
     PrintToolCommands({spy, player});  // in the order to start them

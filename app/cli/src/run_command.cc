@@ -2,9 +2,7 @@
 
 #include <memory>
 #include <iostream>
-#include <numeric>
 
-#include "hosted_agents.h"
 #include "dream/session/run_exit_code.h"
 #include "command_line.h"
 #include "commands.h"
@@ -32,11 +30,7 @@ int RunEmbedded(const RunArgs& args) {
     std::cout << "dream run: stopped while waiting for a browser; nothing was run" << std::endl;
     return session::kExitInterrupted;
   }
-  std::vector<int> ids(static_cast<size_t>(config.num_robots));
-  std::iota(ids.begin(), ids.end(), 0);
-  const HostedAgents agents(bus, config, ids, run->factory(),
-                            {config.sim.agent_timeout_s, config.sim.start_timeout_s, 0.0});
-  const session::RunResult result = run->Run(bus, {out_dir, ConfigTextForRunFolder(args, config)});
+  const session::RunResult result = run->RunWithAgents(bus, {out_dir, ConfigTextForRunFolder(args, config)});
   if (view) {
     view->ServeReplayOf(out_dir);
     view->KeepServing(keep);  // Ctrl-C here ends the serving, not the run: its exit code stands

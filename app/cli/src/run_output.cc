@@ -5,11 +5,10 @@
 #include <spdlog/spdlog.h>
 
 #include "dream/config/config_error.h"
-#include "data_files.h"
-#include "hosted_agents.h"
+#include "dream/process/data_files.h"
 #include "dream/config_overrides/overridden_config.h"
 #include "dream/run_config/run_config.h"
-#include "run_folder_choice.h"
+#include "dream/files/run_folder_choice.h"
 
 namespace dream::cli {
 
@@ -32,10 +31,10 @@ std::unique_ptr<session::RunSession> OpenRunSession(const RunArgs& args) {
   // -q/--quiet set the level to warn: a clean run's report is left out too.
   options.quiet = spdlog::get_level() >= spdlog::level::warn;
   options.stop = &StopFlag();
-  options.python_runtime_dir = DataFiles::PythonRuntimeDir();
+  options.python_runtime_dir = process::DataFiles::PythonRuntimeDir();
   auto run = std::make_unique<session::RunSession>(std::move(config), options);
   try {
-    HostedAgents::Check(run->config(), run->factory(), run->config().sim.start_timeout_s);
+    run->CheckAgents();
   } catch (const config::ConfigError& e) {
     throw config::ConfigError(overridden.Noted(e.what()));
   }
@@ -55,7 +54,7 @@ std::string ConfigTextForRunFolder(const RunArgs& args, const run_config::RunCon
 }
 
 std::string PrepareOutputDir(const RunArgs& args, const run_config::RunConfig& config) {
-  return RunFolderChoice(args.out_dir, "runs/" + config.name, args.overwrite).dir();
+  return files::RunFolderChoice(args.out_dir, "runs/" + config.name, args.overwrite).dir();
 }
 
 }  // namespace dream::cli

@@ -16,7 +16,7 @@ namespace dream::cli {
 /// Loads the config, applies the command-line overrides (--seed, --set,
 /// --steps, --mode, --all-steps) and opens its run: the session builds the
 /// controller factory once, which checks the controller section (with
-/// HostedAgents::Check), so a mistake stops every command (sim, launch)
+/// RunSession::CheckAgents), so a mistake stops every command (sim, launch)
 /// before anything starts or any folder is made.
 /// @throws config::ConfigError or std::invalid_argument with a clear message.
 std::unique_ptr<session::RunSession> OpenRunSession(const RunArgs& args);

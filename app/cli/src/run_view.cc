@@ -12,7 +12,7 @@
 #include <utility>
 
 #include "commands.h"
-#include "data_files.h"
+#include "dream/process/data_files.h"
 #include "dream/session/render_overlays.h"
 #include "dream/view/frame_json.h"
 #include "view_replay.h"
@@ -29,7 +29,7 @@ void AddPythonControllerGoals(const run_config::RunConfig& config, const std::st
   if (!overlays->goals_m.empty()) return;
   if (!run_dir.empty() && session::AddDeclaredGoalsOfRun(run_dir + "/summary.json", overlays)) return;
   try {
-    session::AddPythonGoals(config, DataFiles::PythonRuntimeDir(), overlays);
+    session::AddPythonGoals(config, process::DataFiles::PythonRuntimeDir(), overlays);
   } catch (const std::exception& e) {
     spdlog::warn("dream view: drawing without the controller's goal points: {}", e.what());
   }

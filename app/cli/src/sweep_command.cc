@@ -14,7 +14,7 @@
 #include "dream/workflows/sweep_workflow.h"
 #include "parallel_runner.h"
 #include "process_command_runner.h"
-#include "process_group.h"
+#include "dream/process/process_group.h"
 #include "run_output.h"
 #include "shared_options.h"
 
@@ -43,7 +43,7 @@ workflows::SweepWorkflow Workflow(ProcessCommandRunner& commands) {
   env.stop = &StopFlag();
   env.out = &std::cout;
   env.progress = spdlog::default_logger()->should_log(spdlog::level::info);
-  env.dream_path = SelfExecutable();
+  env.dream_path = process::SelfExecutable();
   return workflows::SweepWorkflow(std::move(env));
 }
 

@@ -4,6 +4,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <numeric>
 #include <optional>
 #include <stdexcept>
 #include <utility>
@@ -13,6 +14,7 @@
 #include "dream/run_config/world_of_config.h"
 #include "dream/files/atomic_file.h"
 #include "dream/files/output_folder.h"
+#include "dream/hosting/hosted_agents.h"
 #include "dream/node/refused_record.h"
 #include "dream/node/sim_node.h"
 #include "dream/node/true_pose_recording.h"
@@ -52,7 +54,28 @@ RunSession::RunSession(run_config::RunConfig config) : RunSession(std::move(conf
 
 RunSession::~RunSession() = default;
 
-RunResult RunSession::Run(lcm::LcmInterface& lcm, const Folder& folder) {
+void RunSession::CheckAgents() const {
+  static const std::atomic<bool> never{false};
+  hosting::HostedAgents::Check(config_, factory_.get(), config_.sim.start_timeout_s,
+                               options_.stop != nullptr ? *options_.stop : never);
+}
+
+RunResult RunSession::Run(lcm::LcmInterface& lcm, const Folder& folder) { return Run(lcm, folder, OwnWorld()); }
+
+RunResult RunSession::RunWithAgents(lcm::LcmBus& bus, const Folder& folder) {
+  return RunWithAgents(bus, folder, OwnWorld());
+}
+
+RunResult RunSession::RunWithAgents(lcm::LcmBus& bus, const Folder& folder, const GivenWorld& world) {
+  std::vector<int> ids(static_cast<size_t>(config_.num_robots));
+  std::iota(ids.begin(), ids.end(), 0);
+  // Hosted before the world starts and until its last status: they answer step 0.
+  const hosting::HostedAgents agents(bus, config_, ids, factory_.get(),
+                                     {config_.sim.agent_timeout_s, config_.sim.start_timeout_s, 0.0});
+  return Run(bus, folder, world);
+}
+
+RunSession::GivenWorld RunSession::OwnWorld() {
   // world.realism: the official world seen and driven as on the lab; off
   // (ideal), the official world itself, with nothing in between.
   GivenWorld own;
@@ -63,7 +86,7 @@ RunResult RunSession::Run(lcm::LcmInterface& lcm, const Folder& folder) {
     }
     return run_config::WorldOfConfig(config_);
   };
-  return Run(lcm, folder, own);
+  return own;
 }
 
 RunResult RunSession::Run(lcm::LcmInterface& lcm, const Folder& folder, const GivenWorld& world) {

@@ -1,4 +1,5 @@
 #include "dream/workflows/check_submission.h"
+#include "dream/workflows/lab_replay_workflow.h"
 
 #include <spdlog/spdlog.h>
 
@@ -57,7 +58,21 @@ nlohmann::json GoalOf(const std::string& summary_path) {
 }  // namespace
 
 CheckSubmission::CheckSubmission(Options options, Tools tools, std::ostream& out)
-    : options_(std::move(options)), tools_(std::move(tools)), out_(out) {}
+    : options_(std::move(options)), tools_(std::move(tools)), out_(out) {
+  if (!tools_.replay_lab) {
+    tools_.replay_lab = [this](const std::string& lab_dir, const std::string& replay_dir) {
+      LabReplayWorkflow::Options replay;
+      replay.lab_dir = lab_dir;
+      replay.out_dir = replay_dir;
+      replay.overwrite = true;  // the check's own folder: a new check replaces it
+      replay.python_runtime_dir = options_.python_runtime_dir;
+      replay.stop = options_.stop;
+      std::ostream quiet(nullptr);
+      const LabReplayWorkflow::Result replayed = LabReplayWorkflow(quiet).Replay(replay);
+      return Replay{replayed.exit_code == session::kExitInterrupted, replayed.agreement};
+    };
+  }
+}
 
 std::string CheckSubmission::SimulatorChecked() const {
   // The runner's rule for a simulator checkout, checked here so that a wrong

@@ -10,6 +10,7 @@
 
 #include "dream/agent_host/controller_factory.h"
 #include "dream/run_config/run_config.h"
+#include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/lcm_interface.h"
 #include "dream/node/run_recorder.h"
 #include "dream/session/run_reporter.h"
@@ -61,9 +62,9 @@ class RunSession {
   };
 
   /// Builds the factory of `config`'s controller. A factory that cannot be
-  /// built is remembered, not thrown (factory_error()): a C++ kind's command
-  /// refuses to run then (HostedAgents::Check), and a run that goes ahead
-  /// reports the error under metrics.
+  /// built is remembered, not thrown (factory_error()): a command that hosts
+  /// or checks agents refuses to run then (CheckAgents), and a run that goes
+  /// ahead with agents elsewhere reports the error under metrics.
   RunSession(run_config::RunConfig config, Options options);
   explicit RunSession(run_config::RunConfig config);
   ~RunSession();
@@ -77,6 +78,13 @@ class RunSession {
   /// Why the factory could not be built ("" when it was).
   const std::string& factory_error() const { return factory_error_; }
 
+  /// Checks the controller section as far as can be done before a run
+  /// (hosting::HostedAgents::Check with this session's factory): the kind and
+  /// its keys, and for a kind of the Python runtime its module, class and own
+  /// keys, bounded by world.start_timeout_s and ended by Options::stop.
+  /// @throws config::ConfigError naming file, line and key.
+  void CheckAgents() const;
+
   /// Runs the config's world (world.realism off: the official world; on:
   /// the realistic world, with true and measured poses both recorded) on
   /// `lcm` until the run ends, then judges and reports it.
@@ -84,6 +92,12 @@ class RunSession {
   /// The same with `world` instead of the config's. A session runs once:
   /// @throws std::logic_error when called again.
   RunResult Run(lcm::LcmInterface& lcm, const Folder& folder, const GivenWorld& world);
+  /// The same with every robot's agent hosted on `bus` for the run
+  /// (hosting::HostedAgents, in the runtime the kind says: dream run,
+  /// lab-replay with its agents, export --calibration), built with this
+  /// session's factory and bounded by the config's world time-outs.
+  RunResult RunWithAgents(lcm::LcmBus& bus, const Folder& folder);
+  RunResult RunWithAgents(lcm::LcmBus& bus, const Folder& folder, const GivenWorld& world);
 
   /// The run's one writer of summary.json and trajectories.png, with this
   /// session's config, factory and options: what Run() reports through, and
@@ -93,6 +107,8 @@ class RunSession {
 
  private:
   struct Stepped;
+  /// The config's own world (the start-up drive first with world.start: placed).
+  GivenWorld OwnWorld();
   Stepped Step(lcm::LcmInterface& lcm, const Folder& folder, const GivenWorld& world);
   RunResult Report(const Stepped& stepped, const std::string& dir);
 

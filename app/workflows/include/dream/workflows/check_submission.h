@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <functional>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -41,6 +42,8 @@ class CheckSubmission {
     /// (goal_points, metrics, goal) in the import's summary.json and the comparison;
     /// empty: the built-in kinds' only.
     std::string python_runtime_dir;
+    /// Ends the check's own lab replay early when set (Ctrl-C); none: it ends by itself.
+    const std::atomic<bool>* stop = nullptr;
   };
 
   /// How a process the check started ended.
@@ -58,6 +61,8 @@ class CheckSubmission {
     std::function<ScriptRun(const std::vector<std::string>& argv)> run_script;
     /// Replays the run folder `lab_dir` into `replay_dir` (replacing it) with
     /// the config's controllers as agents. @throws std::exception when it cannot.
+    /// None: LabReplayWorkflow in this process, quietly (its verdict would
+    /// repeat the check's).
     std::function<Replay(const std::string& lab_dir, const std::string& replay_dir)> replay_lab;
     /// The output folder, made and locked: (--out, the default, --overwrite).
     /// @throws std::runtime_error when it holds a run and overwrite is off.
@@ -84,6 +89,9 @@ class CheckSubmission {
   };
 
   CheckSubmission(Options options, Tools tools, std::ostream& out = std::cout);
+  // Its default replay_lab refers to this object's options.
+  CheckSubmission(const CheckSubmission&) = delete;
+  CheckSubmission& operator=(const CheckSubmission&) = delete;
 
   /// @throws std::runtime_error naming the file or option: an upload edited
   ///         after the export, a simulator folder that is no checkout, --out

@@ -1,14 +1,20 @@
-#include "hosted_agents.h"
+#include "dream/hosting/hosted_agents.h"
 
 #include <nlohmann/json.hpp>
+#include <random>
 
-#include "commands.h"
 #include "dream/lcm/run_id.h"
 #include "dream/agent_host/controller_factory.h"
 #include "dream/kind_api/controller_kind.h"
 
-namespace dream::cli {
+namespace dream::hosting {
 namespace {
+
+// A random identifier for this host's agents (velocity_command_t.agent_id).
+int64_t NewAgentId() {
+  std::random_device device;
+  return static_cast<int64_t>((static_cast<uint64_t>(device()) << 32) | device()) & INT64_MAX;
+}
 
 bool RunsInPython(const agent_host::ControllerFactory& factory) {
   return factory.registered_kind().runtime == kind_api::ControllerKind::Runtime::kPython;
@@ -17,18 +23,20 @@ bool RunsInPython(const agent_host::ControllerFactory& factory) {
 }  // namespace
 
 void HostedAgents::Check(const config::ControllerConfig& config, const agent_host::ControllerFactory* built,
-                         double start_timeout_s) {
+                         double start_timeout_s, const std::atomic<bool>& stop) {
   std::unique_ptr<agent_host::ControllerFactory> own;
   if (built == nullptr) {
     own = std::make_unique<agent_host::ControllerFactory>(config);  // its constructor checks the section
     built = own.get();
   }
-  if (RunsInPython(*built)) PythonHostProcess::Check(built->registered_kind().runtime_spec(config), start_timeout_s);
+  if (RunsInPython(*built)) {
+    python_host::PythonHostProcess::Check(built->registered_kind().runtime_spec(config), start_timeout_s, stop);
+  }
 }
 
 HostedAgents::HostedAgents(lcm::LcmBus& bus, const config::ControllerConfig& config, const std::vector<int>& robot_ids,
                            const agent_host::ControllerFactory* factory,
-                           const PythonHostProcess::Limits& python_limits)
+                           const python_host::PythonHostProcess::Limits& python_limits)
     : bus_(bus) {
   std::unique_ptr<agent_host::ControllerFactory> own;
   if (factory == nullptr) {
@@ -36,8 +44,8 @@ HostedAgents::HostedAgents(lcm::LcmBus& bus, const config::ControllerConfig& con
     factory = own.get();
   }
   if (RunsInPython(*factory)) {
-    python_ = std::make_unique<PythonHostProcess>(bus, factory->registered_kind().runtime_spec(config), robot_ids,
-                                                  NewAgentId(), python_limits);
+    python_ = std::make_unique<python_host::PythonHostProcess>(bus, factory->registered_kind().runtime_spec(config),
+                                                               robot_ids, NewAgentId(), python_limits);
     return;
   }
   std::vector<std::unique_ptr<agents::RobotAgent>> robots;
@@ -72,4 +80,4 @@ std::string HostedAgents::ReportJson() const {
 
 std::string HostedAgents::end_detail() const { return python_ ? python_->end_detail() : cpp_->end_detail(); }
 
-}  // namespace dream::cli
+}  // namespace dream::hosting

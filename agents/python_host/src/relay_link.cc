@@ -1,4 +1,4 @@
-#include "relay_link.h"
+#include "dream/python_host/relay_link.h"
 
 #include <sys/socket.h>
 #include <unistd.h>
@@ -8,7 +8,7 @@
 #include <cstring>
 #include <stdexcept>
 
-namespace dream::cli {
+namespace dream::python_host {
 namespace {
 
 constexpr size_t kHeaderBytes = 9;
@@ -112,4 +112,4 @@ RelayLink::Read RelayLink::ReadAvailable(std::vector<Frame>* frames, std::string
 
 void RelayLink::Shutdown() { ::shutdown(fd_, SHUT_RDWR); }
 
-}  // namespace dream::cli
+}  // namespace dream::python_host

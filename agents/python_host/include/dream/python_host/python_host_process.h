@@ -13,10 +13,10 @@
 #include <vector>
 
 #include "dream/lcm/lcm_bus.h"
-#include "dream/python_host/python_agent_host.h"
-#include "relay_link.h"
+#include "dream/python_embedded/python_agent_host.h"
+#include "dream/python_host/relay_link.h"
 
-namespace dream::cli {
+namespace dream::python_host {
 
 /// Python controllers in a process of their own (`dream-agent --python-host`,
 /// in its own process group), relayed to and from a bus of this one over a
@@ -35,7 +35,7 @@ namespace dream::cli {
 /// The relay forwards the world's DREAM_POSES, DREAM_OBSTACLES and
 /// DREAM_STATUS and the other agents' DREAM_RADIO_<id> to the process, and
 /// its DREAM_CMD_<id>, DREAM_RADIO_<id> and DREAM_FAULT_<id> back, in order.
-class PythonHostProcess final : public python_host::PythonAgentHost {
+class PythonHostProcess final : public python_embedded::PythonAgentHost {
  public:
   struct Limits {
     /// The world's agent_timeout_s and start_timeout_s (0: the defaults).
@@ -55,8 +55,9 @@ class PythonHostProcess final : public python_host::PythonAgentHost {
   /// Loads the controller's module and class and checks its own keys, in a
   /// process of its own. @throws config::ConfigError naming file, line and
   /// key, also when loading the module ends or hangs the process;
-  /// std::runtime_error when Python cannot start or the check is interrupted.
-  static void Check(const std::string& spec_json, double start_timeout_s);
+  /// std::runtime_error when Python cannot start or the check is interrupted
+  /// (`stop` set: Ctrl-C).
+  static void Check(const std::string& spec_json, double start_timeout_s, const std::atomic<bool>& stop);
 
   /// Starts the process for the agents of `robot_ids` and relays `bus`;
   /// returns at once (loading and setup() run there, bounded as above).
@@ -130,4 +131,4 @@ class PythonHostProcess final : public python_host::PythonAgentHost {
   Clock::time_point watched_since_;
 };
 
-}  // namespace dream::cli
+}  // namespace dream::python_host

@@ -8,19 +8,19 @@
 
 #include "dream/agent_host/agent_host.h"
 #include "dream/agent_host/controller_factory.h"
-#include "dream/python_host/python_agent_host.h"
+#include "dream/python_embedded/python_agent_host.h"
 #include "dream/config/controller_config.h"
 #include "dream/lcm/lcm_bus.h"
-#include "python_host_process.h"
+#include "dream/python_host/python_host_process.h"
 
-namespace dream::cli {
+namespace dream::hosting {
 
 /// The agents of some robots of a run, on a bus of this process, whatever
 /// language their controller is in: kinds whose robots run in C++ in an
 /// agent_host::AgentHost, kinds whose robots run in the Python runtime
 /// (ControllerKind::runtime, as `python` does) in a PythonHostProcess (a
-/// process of their own, relayed to this bus). Every command that hosts agents (run, agent, lab-replay) goes
-/// through here.
+/// process of their own, relayed to this bus). Every command that hosts agents
+/// (run, agent, lab-replay) goes through here.
 class HostedAgents {
  public:
   /// Checks the controller section as far as can be done before a run: the
@@ -31,8 +31,9 @@ class HostedAgents {
   /// @throws config::ConfigError naming file, line and key.
   /// `start_timeout_s`: the run's world.start_timeout_s (0: the default),
   /// which bounds loading the module and each robot's setup().
-  static void Check(const config::ControllerConfig& config, const agent_host::ControllerFactory* built = nullptr,
-                    double start_timeout_s = 0.0);
+  /// `stop` (Ctrl-C) ends a Python check early.
+  static void Check(const config::ControllerConfig& config, const agent_host::ControllerFactory* built,
+                    double start_timeout_s, const std::atomic<bool>& stop);
 
   /// Builds the agents of `robot_ids` and subscribes them on `bus`, C++
   /// agents with `factory` when given (the run's), else with a factory of
@@ -42,7 +43,7 @@ class HostedAgents {
   /// dream agent (PythonHostProcess::Limits).
   HostedAgents(lcm::LcmBus& bus, const config::ControllerConfig& config, const std::vector<int>& robot_ids,
                const agent_host::ControllerFactory* factory = nullptr,
-               const PythonHostProcess::Limits& python_limits = {});
+               const python_host::PythonHostProcess::Limits& python_limits = {});
 
   /// Handles `bus` until the world ends the run (true), or `stop` / silence (false).
   bool Run(const std::atomic<bool>& stop, double idle_timeout_s);
@@ -55,7 +56,7 @@ class HostedAgents {
  private:
   lcm::LcmBus& bus_;
   std::unique_ptr<agent_host::AgentHost> cpp_;
-  std::unique_ptr<python_host::PythonAgentHost> python_;
+  std::unique_ptr<python_embedded::PythonAgentHost> python_;
 };
 
-}  // namespace dream::cli
+}  // namespace dream::hosting

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace dream::cli {
+namespace dream::python_host {
 
 /// Frames between dream and the process that hosts its Python controllers
 /// (PythonHostProcess), over one stream socket: a kind byte, the channel's and
@@ -65,4 +65,4 @@ class RelayLink {
   std::string buffer_;  // bytes read, not yet framed
 };
 
-}  // namespace dream::cli
+}  // namespace dream::python_host

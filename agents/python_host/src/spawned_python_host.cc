@@ -1,4 +1,4 @@
-#include "spawned_python_host.h"
+#include "dream/python_host/spawned_python_host.h"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -16,9 +16,9 @@
 #include <regex>
 #include <stdexcept>
 
-#include "commands.h"
+#include "dream/process/data_files.h"
 
-namespace dream::cli {
+namespace dream::python_host {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -39,7 +39,7 @@ constexpr size_t kMaxTraceBytes = 1 << 16;
 // dream-agent --python-host in its own process group, with the link, the
 // faulthandler pipe and the shared call cell on descriptors 3, 4 and 5.
 SpawnedPythonHost SpawnedPythonHost::Start() {
-  const std::string binary = AgentBinaryPath();
+  const std::string binary = process::DataFiles::AgentBinary();
   const std::string option = "--python-host";
   char* argv[] = {const_cast<char*>(binary.c_str()), const_cast<char*>(option.c_str()), nullptr};
   int sockets[2];
@@ -183,4 +183,4 @@ void RequestTrace(pid_t pid, int trace_fd, std::string* trace) {
   }
 }
 
-}  // namespace dream::cli
+}  // namespace dream::python_host

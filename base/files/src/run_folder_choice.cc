@@ -1,4 +1,4 @@
-#include "run_folder_choice.h"
+#include "dream/files/run_folder_choice.h"
 
 #include <spdlog/spdlog.h>
 
@@ -8,7 +8,7 @@
 #include "dream/files/output_folder.h"
 #include "dream/files/output_folder_lock.h"
 
-namespace dream::cli {
+namespace dream::files {
 namespace fs = std::filesystem;
 namespace {
 
@@ -106,4 +106,4 @@ RunFolderChoice::RunFolderChoice(const std::string& out, const std::string& defa
   }
 }
 
-}  // namespace dream::cli
+}  // namespace dream::files

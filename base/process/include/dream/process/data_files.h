@@ -2,11 +2,12 @@
 
 #include <string>
 
-namespace dream::cli {
+namespace dream::process {
 
-/// Files the dream tool needs at run time besides the libraries: the Java
-/// types jar (dream spy) and the bridge's Python runner (dream
-/// check-submission). A tool in the build tree it was built in uses the build
+/// Files the dream tools need at run time besides the libraries: the Java
+/// types jar (dream spy), the bridge's Python runner (dream
+/// check-submission), the dream-agent program and what it loads to host
+/// Python controllers. A tool in the build tree it was built in uses the build
 /// and source trees' files; an installed tool those under
 /// <prefix>/share/dream, found relative to its own location so the prefix
 /// can move. Paths are returned whether or not the file exists.
@@ -19,8 +20,11 @@ class DataFiles {
   static std::string PythonRuntimeDir();
   /// The folder holding lcm-gen's Python types, their package `dream`.
   static std::string PythonTypesDir();
-  /// The Python agent host module (libdream_python_host.so), in lib/ when installed.
+  /// The embedded Python module (libdream_python_embedded.so), in lib/ when installed.
   static std::string PythonHostModule();
+  /// The dream-agent program, next to the running one (dream and dream-agent
+  /// are built and installed side by side).
+  static std::string AgentBinary();
   /// True when the running executable is the one in its build tree.
   static bool RunningFromBuildTree();
 
@@ -28,4 +32,4 @@ class DataFiles {
   static std::string Locate(const std::string& installed_relative_path, const std::string& build_tree_path);
 };
 
-}  // namespace dream::cli
+}  // namespace dream::process

@@ -1,4 +1,4 @@
-#include "python_host_process.h"
+#include "dream/python_host/python_host_process.h"
 
 #include <poll.h>
 #include <signal.h>
@@ -16,13 +16,12 @@
 #include <regex>
 #include <stdexcept>
 
-#include "commands.h"
 #include "dream/config/config_error.h"
 #include "dream/config/sim_node_options.h"
 #include "dream/robot_fault_t.hpp"
-#include "spawned_python_host.h"
+#include "dream/python_host/spawned_python_host.h"
 
-namespace dream::cli {
+namespace dream::python_host {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -101,7 +100,7 @@ std::string JoinIds(const std::vector<int>& ids) {
 
 }  // namespace
 
-void PythonHostProcess::Check(const std::string& spec_json, double start_timeout_s) {
+void PythonHostProcess::Check(const std::string& spec_json, double start_timeout_s, const std::atomic<bool>& stop) {
   Limits limits;
   limits.start_timeout_s = start_timeout_s;
   limits = WithDefaults(limits);
@@ -132,7 +131,7 @@ void PythonHostProcess::Check(const std::string& spec_json, double start_timeout
     }
     ReadTrace(spawned.trace_fd, &trace);
     std::string why;
-    if (StopFlag().load()) {
+    if (stop.load()) {
       KillAndReap(spawned.pid);
       cleanup();
       throw std::runtime_error("interrupted (Ctrl-C or SIGTERM) while loading the Python controller " + module_path);
@@ -488,4 +487,4 @@ std::string PythonHostProcess::ReportJson() const {
   return report_json_;
 }
 
-}  // namespace dream::cli
+}  // namespace dream::python_host

@@ -1,6 +1,6 @@
 // RelayLink: the frames between dream and the process hosting its Python
 // controllers, which a controller gone wrong may write anything into.
-#include "relay_link.h"
+#include "dream/python_host/relay_link.h"
 
 #include <gtest/gtest.h>
 #include <sys/socket.h>
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace dream::cli {
+namespace dream::python_host {
 namespace {
 
 struct LinkPair {
@@ -92,4 +92,4 @@ TEST(RelayLinkTest, SendIsReceivedAndFailsOnceTheOtherSideIsGone) {
 }
 
 }  // namespace
-}  // namespace dream::cli
+}  // namespace dream::python_host

@@ -8,7 +8,7 @@
 
 #include "dream/lcm/lcm_bus.h"
 
-namespace dream::python_host {
+namespace dream::python_embedded {
 
 /// Hosts robots whose controller is a Python class (`kind: python`) on a bus
 /// of this process, in an embedded Python interpreter: the Python runtime's
@@ -80,4 +80,4 @@ using PythonHostCreateFunction = std::unique_ptr<PythonAgentHost> (*)(
     const PythonAgentHost::Paths& paths);
 inline constexpr const char* kPythonHostCreateSymbol = "dream_python_host_create";
 
-}  // namespace dream::python_host
+}  // namespace dream::python_embedded

@@ -1,16 +1,16 @@
-#include "data_files.h"
+#include "dream/process/data_files.h"
 
 #include <filesystem>
 
-#include "process_group.h"
+#include "dream/process/process_group.h"
 
 #if !defined(DREAM_BUILD_DIR) || !defined(DREAM_BIN_TO_DATA) || !defined(DREAM_BUILD_TYPES_JAR) || \
     !defined(DREAM_BRIDGE_PYTHON_DIR) || !defined(DREAM_PYTHON_RUNTIME_DIR) || !defined(DREAM_PYTHON_TYPES_DIR) || \
     !defined(DREAM_PYTHON_HOST_MODULE) || !defined(DREAM_BIN_TO_LIB)
-#error "app/cli/CMakeLists.txt defines where the build tree and the installed data files are"
+#error "base/process/CMakeLists.txt defines where the build tree and the installed data files are"
 #endif
 
-namespace dream::cli {
+namespace dream::process {
 
 namespace fs = std::filesystem;
 
@@ -36,9 +36,11 @@ std::string DataFiles::PythonTypesDir() { return Locate("python", DREAM_PYTHON_T
 
 std::string DataFiles::PythonHostModule() {
   if (RunningFromBuildTree()) return DREAM_PYTHON_HOST_MODULE;
-  return (fs::path(SelfExecutable()).parent_path() / DREAM_BIN_TO_LIB / "libdream_python_host.so")
+  return (fs::path(SelfExecutable()).parent_path() / DREAM_BIN_TO_LIB / "libdream_python_embedded.so")
       .lexically_normal()
       .string();
 }
 
-}  // namespace dream::cli
+std::string DataFiles::AgentBinary() { return (fs::path(SelfExecutable()).parent_path() / "dream-agent").string(); }
+
+}  // namespace dream::process

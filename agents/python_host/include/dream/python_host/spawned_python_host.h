@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string>
 
-namespace dream::cli {
+namespace dream::python_host {
 
 /// The process that hosts Python controllers (`dream-agent --python-host`),
 /// started in a process group of its own with the link to it (a socket), the
@@ -51,4 +51,4 @@ void RequestTrace(pid_t pid, int trace_fd, std::string* trace);
 /// imports); "" when neither is there.
 std::string TracedLineOf(const std::string& trace, const std::string& module_path);
 
-}  // namespace dream::cli
+}  // namespace dream::python_host

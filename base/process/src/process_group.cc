@@ -1,4 +1,4 @@
-#include "process_group.h"
+#include "dream/process/process_group.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -18,7 +18,7 @@
 
 extern char** environ;
 
-namespace dream::cli {
+namespace dream::process {
 
 ProcessGroup::~ProcessGroup() {
   SignalAll(SIGTERM);
@@ -193,4 +193,4 @@ std::string SelfExecutable() {
   return path;
 }
 
-}  // namespace dream::cli
+}  // namespace dream::process

@@ -2,7 +2,7 @@
 
 #include <string>
 
-namespace dream::cli {
+namespace dream::files {
 
 /// The folder a command that records a run (dream run, sim, launch,
 /// lab-replay, import) writes into, chosen so that a rerun never overwrites
@@ -42,4 +42,4 @@ class RunFolderChoice {
   bool renamed_ = false;
 };
 
-}  // namespace dream::cli
+}  // namespace dream::files

@@ -1,7 +1,7 @@
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
 
-#include "dream/python_host/python_agent_host.h"
+#include "dream/python_embedded/python_agent_host.h"
 
 #include <pthread.h>
 #include <spdlog/spdlog.h>
@@ -14,7 +14,7 @@
 
 #include "dream/config/config_error.h"
 
-namespace dream::python_host {
+namespace dream::python_embedded {
 namespace {
 
 /// A strong reference, released when it goes out of scope.
@@ -373,7 +373,7 @@ class EmbeddedPythonAgentHost final : public PythonAgentHost {
 };
 
 }  // namespace
-}  // namespace dream::python_host
+}  // namespace dream::python_embedded
 
 // The module's entry points (PythonHostWatchFunction, PythonHostCheckFunction, PythonHostCreateFunction),
 // found with dlsym by the tools' PythonHostLibrary.
@@ -381,18 +381,18 @@ extern "C" __attribute__((visibility("default"))) void dream_python_host_watch(c
                                                                                double agent_timeout_s,
                                                                                double start_timeout_s,
                                                                                std::atomic<int64_t>* cell) {
-  dream::python_host::Watchdog::Get().Watch(stop, agent_timeout_s, start_timeout_s, cell);
+  dream::python_embedded::Watchdog::Get().Watch(stop, agent_timeout_s, start_timeout_s, cell);
 }
 
 extern "C" __attribute__((visibility("default"))) void dream_python_host_check(
-    const std::string& spec_json, const dream::python_host::PythonAgentHost::Paths& paths) {
-  using dream::python_host::PyRef;
-  PyRef result(PyObject_CallMethod(dream::python_host::EmbeddedModule(paths), "check", "s", spec_json.c_str()));
-  if (result.get() == nullptr) dream::python_host::ThrowPythonError("Python controller");
+    const std::string& spec_json, const dream::python_embedded::PythonAgentHost::Paths& paths) {
+  using dream::python_embedded::PyRef;
+  PyRef result(PyObject_CallMethod(dream::python_embedded::EmbeddedModule(paths), "check", "s", spec_json.c_str()));
+  if (result.get() == nullptr) dream::python_embedded::ThrowPythonError("Python controller");
 }
 
-extern "C" __attribute__((visibility("default"))) std::unique_ptr<dream::python_host::PythonAgentHost>
+extern "C" __attribute__((visibility("default"))) std::unique_ptr<dream::python_embedded::PythonAgentHost>
 dream_python_host_create(dream::lcm::LcmBus& bus, const std::string& spec_json, const std::vector<int>& robot_ids,
-                         int64_t agent_id, const dream::python_host::PythonAgentHost::Paths& paths) {
-  return std::make_unique<dream::python_host::EmbeddedPythonAgentHost>(bus, spec_json, robot_ids, agent_id, paths);
+                         int64_t agent_id, const dream::python_embedded::PythonAgentHost::Paths& paths) {
+  return std::make_unique<dream::python_embedded::EmbeddedPythonAgentHost>(bus, spec_json, robot_ids, agent_id, paths);
 }

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace dream::cli {
+namespace dream::process {
 
 /// Child processes started by one `dream` command (launch, sweep, spy).
 /// None outlives its parent: each gets SIGTERM when the group is destroyed,
@@ -59,4 +59,4 @@ class ProcessGroup {
 /// The path of the running executable (/proc/self/exe).
 std::string SelfExecutable();
 
-}  // namespace dream::cli
+}  // namespace dream::process
