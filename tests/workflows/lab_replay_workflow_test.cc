@@ -10,7 +10,7 @@
 #include <stdexcept>
 
 #include "../bridge/bridge_test_support.h"
-#include "dream/bridge/npy_file.h"
+#include "dream/formats/npy_file.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/files/file_text.h"
 #include "dream/workflows/calibration_export_workflow.h"
@@ -30,7 +30,7 @@ nlohmann::json ReadJson(const std::string& path) { return nlohmann::json::parse(
 std::string ImportedLabRun(const std::string& name) {
   const std::string dir = bridge::testing::NewFolder("workflow_lab_replay_" + name);
   bridge::testing::WriteText(dir + "/" + bridge::SubmissionFiles::kResult,
-                             bridge::EncodeNpy(bridge::testing::PerfectLabResult(testing::SimulatedExport())));
+                             formats::EncodeNpy(bridge::testing::PerfectLabResult(testing::SimulatedExport())));
   std::ostringstream quiet;
   ImportWorkflow(quiet).Import({dir, testing::SimulatedExport(), dir + "/lab", std::nullopt, ""});
   return dir;
