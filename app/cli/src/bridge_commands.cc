@@ -33,6 +33,7 @@
 #include "dream/bridge/submission_exporter.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/run_config/run_config.h"
+#include "dream/lcm/channels.h"
 #include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/lcm_url.h"
 #include "data_files.h"
@@ -162,7 +163,7 @@ LabReplayOutcome ReplayLabRun(const LabReplayArgs& args, std::ostream* report) {
     nlohmann::ordered_json fields;
     fields["config"] = "config.yaml";
     fields["lab_replay"] = {{"lab_run", fs::absolute(args.lab_dir).string()},
-                            {"lab_command_channels", std::string(bridge::kLabCommandChannelPrefix) + "<id>"},
+                            {"lab_command_channels", std::string(lcm::kLabCommandChannelPrefix) + "<id>"},
                             {"agents_vs_lab_commands", outcome.agreement->Json()}};
     return fields;
   };

@@ -16,7 +16,9 @@
 #include "commands.h"
 #include "data_files.h"
 #include "dream/config/config_error.h"
+#include "dream/lcm/channels.h"
 #include "dream/lcm/lcm_bus.h"
+#include "dream/lcm/message_header.h"
 #include "python_host_library.h"
 #include "relay_link.h"
 
@@ -26,7 +28,6 @@ namespace {
 constexpr int kLinkFd = 3;
 constexpr const char* kTraceFd = "4";
 constexpr int kCellFd = 5;
-constexpr int kAgentIdAt = 36;  // of a radio_message_t, after its fingerprint
 
 [[noreturn]] void End(int code) {
   spdlog::default_logger()->flush();
@@ -66,13 +67,11 @@ int RunPythonHostChild() {
     const int64_t agent_id = json.at("agent_id").get<int64_t>();
     lcm::LcmBus bus("memq://");
     // The robots' messages go to the parent; radio from elsewhere came from it.
-    const lcm::Subscription to_parent = bus.Subscribe("DREAM_(CMD|RADIO|FAULT)_[0-9]+", [&](const std::string& channel,
+    const lcm::Subscription to_parent = bus.Subscribe(lcm::kAgentOutboxRegex, [&](const std::string& channel,
                                                                                             const void* data, int size) {
-      if (channel.rfind("DREAM_RADIO_", 0) == 0) {
-        const auto* bytes = static_cast<const unsigned char*>(data);
-        uint64_t sender = 0;
-        for (int i = 0; size >= kAgentIdAt + 8 && i < 8; ++i) sender = (sender << 8) | bytes[kAgentIdAt + i];
-        if (static_cast<int64_t>(sender) != agent_id) return;
+      if (channel.rfind(lcm::kRadioChannelPrefix, 0) == 0 &&
+          lcm::MessageHeader::AgentIdOf(data, static_cast<size_t>(size)).value_or(0) != agent_id) {
+        return;
       }
       if (!link.Send('M', channel, data, static_cast<size_t>(size))) StopFlag().store(true);
     });

@@ -8,12 +8,17 @@
 #include "dream/lcm/log_reader.h"
 #include "dream/radio_message_t.hpp"
 #include "dream/robot_fault_t.hpp"
+#include "dream/velocity_command_t.hpp"
 #include "dream/run_log/worlds_heard.h"
 
 namespace dream::run_log {
 namespace {
 
 constexpr size_t kNone = std::numeric_limits<size_t>::max();
+
+RecordedCommand RecordedOf(const velocity_command_t& command) {
+  return {command.step, command.robot_id, command.agent_id, command.v, command.w, command.done != 0};
+}
 
 }  // namespace
 
@@ -25,6 +30,8 @@ RunLog RunLog::Read(const std::string& path) {
   run_status_t status;
   radio_message_t radio;
   robot_fault_t fault;
+  velocity_command_t command;
+  applied_commands_t applied;
   // Radio and faults as heard, kept once the run's id (its poses') is known:
   // another run's, or a sender that does not match its channel, are no part
   // of this run (the world refuses them; older logs may hold them).
@@ -37,6 +44,11 @@ RunLog RunLog::Read(const std::string& path) {
   };
   std::vector<Heard> radio_heard;
   std::vector<Heard> faults_heard;
+  // Held as heard (each at least its message's bytes of the log, so bounded by the file),
+  // then sifted once the run's id and steps are known.
+  std::vector<HeardCommand> commands_heard;
+  std::vector<HeardCommand> lab_commands_heard;
+  std::vector<applied_commands_t> applied_heard;
   WorldsHeard worlds;
   // A world message that does not decode: named by its event and byte offset.
   auto undecodable = [&](std::optional<Problem>* flaw, const std::string& problem) {
@@ -55,7 +67,7 @@ RunLog RunLog::Read(const std::string& path) {
         continue;
       }
       worlds.AddPoses(std::move(poses), reader.event_index());
-    } else if (record.channel == "DREAM_MEASURED_POSES") {  // sim::TruePoseRecording::kMeasuredPosesChannel
+    } else if (record.channel == lcm::kMeasuredPosesChannel) {
       robot_poses_t measured;
       if (lcm::Decode(data, size, &measured)) worlds.AddMeasured(std::move(measured));  // else not the world's record
     } else if (record.channel == lcm::kObstaclesChannel) {
@@ -76,6 +88,12 @@ RunLog RunLog::Read(const std::string& path) {
       if (lcm::Decode(data, size, &fault)) {
         faults_heard.push_back({*id, fault.run_id, fault.step, fault.robot_id, std::move(fault.detail)});
       }
+    } else if (const std::optional<int> robot = lcm::RobotIdFromCommandChannel(record.channel)) {
+      if (lcm::Decode(data, size, &command)) commands_heard.push_back({*robot, command.run_id, RecordedOf(command)});
+    } else if (const std::optional<int> lab = lcm::RobotIdFromChannel(record.channel, lcm::kLabCommandChannelPrefix)) {
+      if (lcm::Decode(data, size, &command)) lab_commands_heard.push_back({*lab, command.run_id, RecordedOf(command)});
+    } else if (record.channel == lcm::kAppliedChannel) {
+      if (lcm::Decode(data, size, &applied)) applied_heard.push_back(std::move(applied));
     }
   }
   log.TakeRun(std::move(worlds));
@@ -93,7 +111,47 @@ RunLog RunLog::Read(const std::string& path) {
     }
   }
   log.Index(faults);
+  log.commands_ = log.CommandsOfThisRun(std::move(commands_heard), /*lab=*/false);
+  log.lab_commands_ = log.CommandsOfThisRun(std::move(lab_commands_heard), /*lab=*/true);
+  log.applied_ = log.AppliedOfThisRun(std::move(applied_heard));
   return log;
+}
+
+std::vector<RecordedCommand> RunLog::CommandsOfThisRun(std::vector<HeardCommand> heard, bool lab) const {
+  auto of_this_run = [&](const HeardCommand& h) {
+    return (h.run_id == run_id_ || (lab && h.run_id == 0)) && h.command.robot_id == h.channel_id &&
+           h.command.robot_id < num_robots_ && h.command.step >= first_step() && h.command.step <= last_step();
+  };
+  std::vector<RecordedCommand> kept;
+  for (HeardCommand& h : heard) {
+    if (!poses_.empty() && of_this_run(h)) kept.push_back(h.command);
+  }
+  // By step, then robot; the first heard of each robot and step stays.
+  std::stable_sort(kept.begin(), kept.end(), [](const RecordedCommand& a, const RecordedCommand& b) {
+    return a.step != b.step ? a.step < b.step : a.robot_id < b.robot_id;
+  });
+  kept.erase(std::unique(kept.begin(), kept.end(),
+                         [](const RecordedCommand& a, const RecordedCommand& b) {
+                           return a.step == b.step && a.robot_id == b.robot_id;
+                         }),
+             kept.end());
+  return kept;
+}
+
+std::vector<applied_commands_t> RunLog::AppliedOfThisRun(std::vector<applied_commands_t> heard) const {
+  std::vector<applied_commands_t> kept;
+  for (applied_commands_t& applied : heard) {
+    if (!poses_.empty() && applied.run_id == run_id_ && applied.num_robots == num_robots_ &&
+        applied.step >= first_step() && applied.step <= last_step()) {
+      kept.push_back(std::move(applied));
+    }
+  }
+  std::stable_sort(kept.begin(), kept.end(),
+                   [](const applied_commands_t& a, const applied_commands_t& b) { return a.step < b.step; });
+  kept.erase(std::unique(kept.begin(), kept.end(),
+                         [](const applied_commands_t& a, const applied_commands_t& b) { return a.step == b.step; }),
+             kept.end());
+  return kept;
 }
 
 void RunLog::TakeRun(WorldsHeard worlds) {

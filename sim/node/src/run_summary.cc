@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "dream/lcm/channels.h"
 #include "dream/lcm/run_id.h"
 #include "dream/files/json_text.h"
 #include "dream/node/true_pose_recording.h"
@@ -100,7 +101,7 @@ void AddRealism(const run_config::RunConfig& config, const world::RealisticWorld
     }
   }
   if (!config.realism_file.empty()) realism["file"] = config.realism_file;
-  realism["poses_channel_seen_by_agents"] = TruePoseRecording::kMeasuredPosesChannel;
+  realism["poses_channel_seen_by_agents"] = lcm::kMeasuredPosesChannel;
   (*json)["realism"] = realism;
   nlohmann::json lost = nlohmann::json::array();
   for (const world::RealisticWorld::TrackerLoss& loss : realistic.tracker_losses()) {
