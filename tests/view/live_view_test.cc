@@ -7,6 +7,8 @@
 #include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/lcm_typed.h"
 #include "dream/view/view_server.h"
+#include "synthetic_run_log.h"
+#include "temp_folder.h"
 
 namespace dream::view {
 namespace {
@@ -43,6 +45,32 @@ TEST(LiveViewTest, APageChoosesAnotherRunHeardByItsDecimalId) {
   EXPECT_FALSE(live.OnPageMessage("draw -9"));
   EXPECT_FALSE(live.OnPageMessage(std::string("follow -9\0", 10)));
   EXPECT_TRUE(live.OnPageMessage("follow -9"));
+}
+
+// dream run --view: the run's end is read from its log (RunLog) and drawn once.
+TEST(LiveViewTest, TheEndOfARunIsDrawnFromItsLog) {
+  testing::TempFolder dir;
+  testing::SyntheticRunLog log(dir / "run.lcmlog");
+  log.Poses(0, {{0, 0, 0}}).Poses(1, {{0.1, 0, 0}}).Status(1, run_status_t::FINISHED, {}, "done");
+  testing::SyntheticRunLog no_run(dir / "no_run.lcmlog");
+  no_run.Other("SOMETHING_ELSE");
+  lcm::LcmBus bus("memq://");
+  {
+    ViewServer server({"127.0.0.1", 0, false, 4});
+    LiveView live(bus, server, ViewSetup{});
+    live.ShowEndOf(log.Write());
+    EXPECT_EQ(live.frames_sent(), 1);
+  }
+  ViewServer server({"127.0.0.1", 0, false, 4});
+  LiveView other(bus, server, ViewSetup{});
+  other.ShowEndOf(no_run.Write());
+  EXPECT_EQ(other.frames_sent(), 0);  // nothing of a run to draw
+  try {
+    other.ShowEndOf(dir / "missing.lcmlog");
+    ADD_FAILURE() << "showed a log that is not there";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(dir / "missing.lcmlog"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
