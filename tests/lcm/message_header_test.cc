@@ -47,8 +47,8 @@ TEST(MessageHeaderTest, ReadsWhatLcmGenWroteForEveryMessageWithTheHeader) {
   poses.step = kStep;
   poses.run_id = kRunId;
   for (const auto& [bytes, fingerprint] :
-       {std::pair{Encoded(command), velocity_command_t::getHash()}, std::pair{Encoded(radio), radio_message_t::getHash()},
-        std::pair{Encoded(poses), robot_poses_t::getHash()}}) {
+       {std::pair{Encoded(command), velocity_command_t::getHash()},
+        std::pair{Encoded(radio), radio_message_t::getHash()}, std::pair{Encoded(poses), robot_poses_t::getHash()}}) {
     const std::optional<MessageHeader> header = MessageHeader::Read(bytes.data(), bytes.size());
     ASSERT_TRUE(header.has_value());
     EXPECT_EQ(header->fingerprint, fingerprint);

@@ -106,7 +106,8 @@ TEST(RunJudgeTest, SummaryHasTheVerdictAndItsReasons) {
   StillRun run(30);
   run.outcome.command_conflicts = 2;
   const nlohmann::json summary =
-      RunSummary::Of(run.config, run.outcome, run.world, "run.lcmlog", JudgeRun(run.config, run.outcome, run.world)).Json();
+      RunSummary::Of(run.config, run.outcome, run.world, "run.lcmlog", JudgeRun(run.config, run.outcome, run.world))
+          .Json();
   EXPECT_EQ(summary["verdict"], "not_ready");
   EXPECT_EQ(summary["robotarium_verdict"], "clean");
   ASSERT_EQ(summary["verdict_reasons"].size(), 1u);
@@ -125,10 +126,12 @@ TEST(RunJudgeTest, SummaryOfAReasonThatIsNotUtf8IsStillWritten) {
   run.outcome.end = RunOutcome::End::kFailed;
   run.outcome.reason = "cannot write /tmp/r\xE9sultats/run.lcmlog";
   const nlohmann::ordered_json summary =
-      RunSummary::Of(run.config, run.outcome, run.world, "run.lcmlog", JudgeRun(run.config, run.outcome, run.world)).Json();
+      RunSummary::Of(run.config, run.outcome, run.world, "run.lcmlog", JudgeRun(run.config, run.outcome, run.world))
+          .Json();
   EXPECT_THROW((void)summary.dump(), nlohmann::json::type_error);  // what the writers did before
   const std::string text =
-      RunSummary::Of(run.config, run.outcome, run.world, "run.lcmlog", JudgeRun(run.config, run.outcome, run.world)).Text();
+      RunSummary::Of(run.config, run.outcome, run.world, "run.lcmlog", JudgeRun(run.config, run.outcome, run.world))
+          .Text();
   EXPECT_THAT(text, HasSubstr("/tmp/r\xEF\xBF\xBDsultats/run.lcmlog"));
   EXPECT_EQ(nlohmann::json::parse(text)["run"], "judged");
 }

@@ -125,11 +125,12 @@ TEST(RunSummaryTest, ABadFieldIsAnErrorNamingTheFileTheFieldAndTheValue) {
             "runs/x/summary.json: violations.collision_errors: expected a whole number >= 0, got -2");
   EXPECT_EQ(ReadError({{"metrics", {1, 2}}}), "runs/x/summary.json: metrics: expected an object, got [1,2]");
   EXPECT_EQ(ReadError({{"verdict_reasons", {{{"rule", "goal"}, {"verdict", "fine"}}}}}),
-            "runs/x/summary.json: verdict_reasons[0].verdict: expected a verdict (clean, warning, not_ready, rejected), "
-            "got \"fine\"");
+            "runs/x/summary.json: verdict_reasons[0].verdict: expected a verdict (clean, warning, not_ready, "
+            "rejected), got \"fine\"");
   EXPECT_EQ(ReadError({{"verdict_reasons", {{{"rule", "goal"}, {"verdict", "warning"}, {"problem", "p"}}}}}),
             "runs/x/summary.json: verdict_reasons[0].find_out: expected text, got nothing");
-  EXPECT_EQ(ReadError(nlohmann::ordered_json::array()), "runs/x/summary.json: not a run's summary: a JSON array, not an object");
+  EXPECT_EQ(ReadError(nlohmann::ordered_json::array()),
+            "runs/x/summary.json: not a run's summary: a JSON array, not an object");
   // A huge value is named by its start, not copied whole into the message.
   const std::string error = ReadError({{"reason", std::vector<int>(100000, 1)}});
   EXPECT_THAT(error, HasSubstr("reason: expected text, got [1,1,1"));

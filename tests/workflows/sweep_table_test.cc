@@ -162,7 +162,8 @@ TEST(SweepRunResult, AKindWithoutAGoalIsNeverASuccessButSaysNoGoalDeclared) {
 
 TEST(ExperimentGoal, TheKindsOwnJudgementIsReadAndKindsWithoutOneHaveOnlyTheCommonCriteria) {
   auto judge = [](const std::string& kind, nlohmann::json metrics) {
-    return ExperimentGoal::Judge(Summary(kind, 900, 0, 0.3, std::move(metrics)));
+    return ExperimentGoal::Judge(node::RunSummary::FromJson(
+        nlohmann::ordered_json(Summary(kind, 900, 0, 0.3, std::move(metrics))), "summary.json"));
   };
   const ExperimentGoal line = judge("line_deployment", Goal(true, 700, "line converged"));
   EXPECT_TRUE(line.has_criterion);
@@ -180,7 +181,7 @@ TEST(ExperimentGoal, TheKindsOwnJudgementIsReadAndKindsWithoutOneHaveOnlyTheComm
   EXPECT_FALSE(broken.met);
   EXPECT_EQ(broken.detail, "no metrics: run.lcmlog: cannot open");
   // A summary without metrics: no kind, nothing to judge by but the common criteria.
-  EXPECT_FALSE(ExperimentGoal::Judge(nlohmann::json::object()).has_criterion);
+  EXPECT_FALSE(ExperimentGoal::Judge(node::RunSummary()).has_criterion);
 }
 
 TEST(SweepTable, RowsInPlanOrderAndASummaryOfTheFigures) {

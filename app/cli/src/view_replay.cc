@@ -79,7 +79,8 @@ std::optional<view::ViewSetup::Judged> JudgedOfRun(const std::string& log_path) 
     }
     judged.goal = session::ExperimentGoal::Text(summary.goal.is_object() ? nlohmann::json(summary.goal)
                                                                          : nlohmann::json::object());
-    const nlohmann::json metrics = summary.metrics.is_object() ? nlohmann::json(summary.metrics) : nlohmann::json::object();
+    const nlohmann::json metrics =
+        summary.metrics.is_object() ? nlohmann::json(summary.metrics) : nlohmann::json::object();
     for (const auto& [name, value] : metrics.items()) {
       if (judged.metrics.size() == view::ViewSetup::Judged::kMaxListed) break;
       if (name == "kind") continue;  // the experiment's name, not a measure

@@ -90,7 +90,7 @@ world::RunJudgement RunReporter::Judge(const Ended& ended, const LogReadBack& lo
     }
     judgement.emplace(node::JudgeRun(config_, outcome, *ended.world, outside));
   }
-  const ExperimentGoal goal = ExperimentGoal::Judge(summary->Json());
+  const ExperimentGoal goal = ExperimentGoal::Judge(*summary);
   nlohmann::ordered_json goal_json = goal.Json();
   // A run stopped by --steps at its limit was cut short on purpose: its goal is
   // not judged. A goal that could not be judged at all is a failure either way.

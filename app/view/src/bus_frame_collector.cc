@@ -32,9 +32,10 @@ bool WantedKind(const NewViolations& added, ViolationMark::Kind kind) {
 BusFrameCollector::BusFrameCollector(lcm::LcmInterface& bus, const world::WorldParams& world,
                                      std::function<RunChoice::Clock::time_point()> now)
     : choice_(std::move(now)), locator_(world) {
-  subscription_ = bus.Subscribe(lcm::kViewChannelsRegex, [this](const std::string& channel, const void* data, int size) {
-    OnMessage(channel, data, size);
-  });
+  subscription_ = bus.Subscribe(lcm::kViewChannelsRegex,
+                                [this](const std::string& channel, const void* data, int size) {
+                                  OnMessage(channel, data, size);
+                                });
 }
 
 void BusFrameCollector::OnMessage(const std::string& channel, const void* data, int size) {

@@ -295,7 +295,8 @@ SweepRunResult SweepFolder::JudgeRun(const SweepPlan::Run& run, const RunExit& e
                            : failed              ? LastErrorLine(dir + "/output.txt")
                                                  : std::string();
   std::string summary_problem;
-  const std::optional<node::RunSummary> summary = ReadSummary(dir + "/" + node::RunSummary::kFileName, &summary_problem);
+  const std::optional<node::RunSummary> summary =
+      ReadSummary(dir + "/" + node::RunSummary::kFileName, &summary_problem);
   return SweepRunResult::Judge(run, exit.exit_code, exit.timed_out, exit.wall_time_s, summary, hint, summary_problem);
 }
 

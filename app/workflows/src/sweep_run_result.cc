@@ -54,7 +54,7 @@ SweepRunResult SweepRunResult::Judge(const SweepPlan::Run& run, int exit_code, b
         metrics["min_pairwise_distance_m"].is_number()) {
       result.min_distance_m = metrics["min_pairwise_distance_m"].get<double>();
     }
-    result.goal = session::ExperimentGoal::Judge(summary->Json());
+    result.goal = session::ExperimentGoal::Judge(*summary);
   }
 
   const std::string hint = failure_hint.empty() ? std::string() : ": " + failure_hint;
@@ -73,7 +73,7 @@ SweepRunResult SweepRunResult::Judge(const SweepPlan::Run& run, int exit_code, b
   } else if (!result.has_summary) {
     result.problem = "exit " + std::to_string(exit_code) + " but no readable summary.json" +
                      (summary_problem.empty() ? std::string() : " (" + summary_problem + ")");
-  } else if (const std::string other = OtherRunsSummary(run, summary); !other.empty()) {
+  } else if (const std::string other = OtherRunsSummary(run, *summary); !other.empty()) {
     result.problem = other;
   } else if (result.end != node::RunOutcome::End::kFinished) {
     result.problem = std::string("run ended '") + (result.end ? node::EndName(*result.end) : "") + "'" + hint;
@@ -81,7 +81,8 @@ SweepRunResult SweepRunResult::Judge(const SweepPlan::Run& run, int exit_code, b
     result.status = Status::kRan;
   }
   // Without a goal of its own a run can be clean but never a success.
-  result.success = result.status == Status::kRan && result.verdict != world::RunVerdict::kRejected && result.collisions() == 0 &&
+  result.success = result.status == Status::kRan && result.verdict != world::RunVerdict::kRejected &&
+                   result.collisions() == 0 &&
                    result.goal.has_criterion && result.goal.met;
   return result;
 }
@@ -123,7 +124,7 @@ std::string SweepRunResult::OutcomeText() const {
     add(std::to_string(violations.obstacle_collisions) + " obstacle collisions");
   }
   if (violations.boundary_errors > 0) add(std::to_string(violations.boundary_errors) + " boundary errors");
-  if (verdict == "rejected" && why.empty()) add("rejected by the Robotarium checks");
+  if (verdict == world::RunVerdict::kRejected && why.empty()) add("rejected by the Robotarium checks");
   if (!goal.has_criterion) return why.empty() ? "no goal declared" : "no goal declared (" + why + ")";
   if (!goal.met) add(goal.detail);
   return "no success (" + why + ")";

@@ -178,8 +178,8 @@ class JsonReader {
         return it->get<std::string>();
       };
       reason.rule = text("rule");
-      reason.verdict = ChoiceOf(at + ".verdict", entry.contains("verdict") ? entry["verdict"] : nlohmann::ordered_json(),
-                                RunSummary::VerdictNames(), "verdict");
+      const nlohmann::ordered_json verdict = entry.contains("verdict") ? entry["verdict"] : nlohmann::ordered_json();
+      reason.verdict = ChoiceOf(at + ".verdict", verdict, RunSummary::VerdictNames(), "verdict");
       reason.problem = text("problem");
       reason.find_out = text("find_out");
       reasons.push_back(std::move(reason));
@@ -210,8 +210,8 @@ class JsonReader {
     return field.get<int64_t>();
   }
   template <typename E>
-  E ChoiceOf(const std::string& key, const nlohmann::ordered_json& field, const std::vector<std::pair<const char*, E>>& names,
-             const char* meaning) const {
+  E ChoiceOf(const std::string& key, const nlohmann::ordered_json& field,
+             const std::vector<std::pair<const char*, E>>& names, const char* meaning) const {
     std::string allowed;
     for (const auto& [name, choice] : names) {
       if (field.is_string() && field.get<std::string>() == name) return choice;
