@@ -113,9 +113,9 @@ TEST(RunSummaryTest, AMissingFieldKeepsItsDefaultAndIsNotHad) {
 
 TEST(RunSummaryTest, ABadFieldIsAnErrorNamingTheFileTheFieldAndTheValue) {
   EXPECT_EQ(ReadError({{"verdict", "great"}}),
-            "runs/x/summary.json: verdict: expected a verdict (clean, warning, not_ready, rejected), got \"great\"");
+            "runs/x/summary.json: verdict: expected one of clean, warning, not_ready, rejected, got \"great\"");
   EXPECT_EQ(ReadError({{"end", 3}}),
-            "runs/x/summary.json: end: expected a end (finished, interrupted, start_timeout, failed), got 3");
+            "runs/x/summary.json: end: expected one of finished, interrupted, start_timeout, failed, got 3");
   EXPECT_EQ(ReadError({{"steps", -1}}), "runs/x/summary.json: steps: expected a whole number >= 0, got -1");
   EXPECT_EQ(ReadError({{"steps", 1.5}}), "runs/x/summary.json: steps: expected a whole number >= 0, got 1.5");
   EXPECT_EQ(ReadError({{"seed", "7"}}), "runs/x/summary.json: seed: expected a whole number >= 0, got \"7\"");
@@ -125,8 +125,8 @@ TEST(RunSummaryTest, ABadFieldIsAnErrorNamingTheFileTheFieldAndTheValue) {
             "runs/x/summary.json: violations.collision_errors: expected a whole number >= 0, got -2");
   EXPECT_EQ(ReadError({{"metrics", {1, 2}}}), "runs/x/summary.json: metrics: expected an object, got [1,2]");
   EXPECT_EQ(ReadError({{"verdict_reasons", {{{"rule", "goal"}, {"verdict", "fine"}}}}}),
-            "runs/x/summary.json: verdict_reasons[0].verdict: expected a verdict (clean, warning, not_ready, "
-            "rejected), got \"fine\"");
+            "runs/x/summary.json: verdict_reasons[0].verdict: expected one of clean, warning, not_ready, "
+            "rejected, got \"fine\"");
   EXPECT_EQ(ReadError({{"verdict_reasons", {{{"rule", "goal"}, {"verdict", "warning"}, {"problem", "p"}}}}}),
             "runs/x/summary.json: verdict_reasons[0].find_out: expected text, got nothing");
   EXPECT_EQ(ReadError(nlohmann::ordered_json::array()),

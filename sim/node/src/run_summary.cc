@@ -146,10 +146,10 @@ class JsonReader {
     }
   }
   template <typename E>
-  void Choice(const char* key, E& value, const std::vector<std::pair<const char*, E>>& names, const char* meaning) {
+  void Choice(const char* key, E& value, const std::vector<std::pair<const char*, E>>& names, const char*) {
     const nlohmann::ordered_json* field = Field(key);
     if (field == nullptr) return;
-    value = ChoiceOf(key, *field, names, meaning);
+    value = ChoiceOf(key, *field, names);
   }
   void Counts(const char* key, world::ViolationCounts& counts) {
     const nlohmann::ordered_json* field = Field(key);
@@ -179,7 +179,7 @@ class JsonReader {
       };
       reason.rule = text("rule");
       const nlohmann::ordered_json verdict = entry.contains("verdict") ? entry["verdict"] : nlohmann::ordered_json();
-      reason.verdict = ChoiceOf(at + ".verdict", verdict, RunSummary::VerdictNames(), "verdict");
+      reason.verdict = ChoiceOf(at + ".verdict", verdict, RunSummary::VerdictNames());
       reason.problem = text("problem");
       reason.find_out = text("find_out");
       reasons.push_back(std::move(reason));
@@ -211,13 +211,13 @@ class JsonReader {
   }
   template <typename E>
   E ChoiceOf(const std::string& key, const nlohmann::ordered_json& field,
-             const std::vector<std::pair<const char*, E>>& names, const char* meaning) const {
+             const std::vector<std::pair<const char*, E>>& names) const {
     std::string allowed;
     for (const auto& [name, choice] : names) {
       if (field.is_string() && field.get<std::string>() == name) return choice;
       allowed += (allowed.empty() ? "" : ", ") + std::string(name);
     }
-    Fail(key, std::string("a ") + meaning + " (" + allowed + ")", field);
+    Fail(key, "one of " + allowed, field);
   }
   [[noreturn]] void Fail(const std::string& key, const std::string& expected, const nlohmann::ordered_json& got) const {
     std::string value = got.is_null() ? std::string("nothing") : got.dump();
