@@ -139,16 +139,6 @@ class RunLog {
   /// Orders obstacles and radio by step, finds each pose's obstacles, keeps
   /// the faults of the robots lost at the end.
   void Index(const std::map<int, std::string>& faults);
-  /// A command as heard, before the run's id is known.
-  struct HeardCommand {
-    int channel_id = 0;
-    int64_t run_id = 0;
-    RecordedCommand command;
-  };
-  /// Of `heard`, the commands of this run by commands()'s rules; `lab`: run id 0 is the run's too.
-  std::vector<RecordedCommand> CommandsOfThisRun(std::vector<HeardCommand> heard, bool lab) const;
-  /// Of `heard`, the DREAM_APPLIED of this run by applied()'s rules.
-  std::vector<applied_commands_t> AppliedOfThisRun(std::vector<applied_commands_t> heard) const;
 
   std::string path_;
   int64_t run_id_ = 0;
