@@ -203,8 +203,11 @@ void PythonHostProcess::OnBusMessage(const std::string& channel, const void* dat
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     if (ended_) return;
-    const std::optional<lcm::MessageHeader> header = lcm::MessageHeader::Read(data, static_cast<size_t>(size));
-    if (channel == lcm::kPosesChannel && header) world_step_ = {header->utime, header->step, header->run_id};
+    if (channel == lcm::kPosesChannel) {
+      if (const auto header = lcm::MessageHeader::Read(data, static_cast<size_t>(size))) {
+        world_step_ = {header->utime, header->step, header->run_id};
+      }
+    }
     if (outbox_.size() > kMaxOutboxBytes) return;
     const bool was_empty = outbox_.empty();
     RelayLink::Encode('M', channel, data, static_cast<size_t>(size), &outbox_);
