@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "dream/lcm/channels.h"
 #include "dream/node/run_recorder.h"
 #include "dream/velocity_command_t.hpp"
 
@@ -100,7 +101,7 @@ void LabReplayWorld::Step() {
       message.w = lab_commands_[i].w_radps;
       buffer.resize(static_cast<size_t>(message.getEncodedSize()));
       message.encode(buffer.data(), 0, static_cast<int>(buffer.size()));
-      lab_command_log_->Write(kLabCommandChannelPrefix + std::to_string(i), utime(), buffer.data(),
+      lab_command_log_->Write(lcm::LabCommandChannel(static_cast<int>(i)), utime(), buffer.data(),
                               static_cast<int>(buffer.size()));
     }
   }

@@ -7,6 +7,7 @@
 #include "dream/lcm/wire_text.h"
 #include "dream/files/file_text.h"
 #include "dream/files/json_text.h"
+#include "dream/node/run_summary.h"
 #include "dream/files/output_folder.h"
 #include "dream/bridge/run_track.h"
 #include "dream/run_config/run_config.h"
@@ -67,13 +68,12 @@ struct ComparedFolders {
 /// wrote it): dream import adds "lab", dream lab-replay "lab_replay", a world
 /// with realism "realism". Only named: a summary that cannot be read says nothing.
 std::string WhatRunIs(const std::string& folder) {
-  const std::string path = (fs::path(folder) / "summary.json").string();
+  const std::string path = (fs::path(folder) / node::RunSummary::kFileName).string();
   try {
-    const nlohmann::json summary = nlohmann::json::parse(files::ReadFileText(path));
-    if (!summary.is_object()) return "run (summary.json is no JSON object)";
-    if (summary.contains("lab")) return "lab run (dream import)";
-    if (summary.contains("lab_replay")) return "lab replay (dream lab-replay)";
-    if (summary.contains("realism")) return "simulation, world.realism on";
+    const node::RunSummary summary = node::RunSummary::Read(path);
+    if (summary.Has("lab")) return "lab run (dream import)";
+    if (summary.Has("lab_replay")) return "lab replay (dream lab-replay)";
+    if (summary.Has("realism")) return "simulation, world.realism on";
     return "simulation";
   } catch (const std::exception&) {
     return "run (no readable summary.json)";

@@ -19,6 +19,7 @@
 #include "dream/formats/npy_file.h"
 #include "dream/bridge/obstacle_schedule.h"
 #include "dream/files/json_text.h"
+#include "dream/node/run_summary.h"
 #include "dream/files/output_folder.h"
 #include "dream/kind_api/controller_kind.h"
 #include "dream/bridge/submission_format.h"
@@ -45,17 +46,10 @@ std::string Seconds(double s) {
 /// The step limit the simulated run had: summary.json's max_steps (which
 /// includes a dream run --steps), else the config's.
 int64_t RunStepLimit(const std::string& run_dir, const run_config::RunConfig& config) {
-  const std::string summary_path = (std::filesystem::path(run_dir) / "summary.json").string();
+  const std::string summary_path = (std::filesystem::path(run_dir) / node::RunSummary::kFileName).string();
   if (!std::filesystem::exists(summary_path)) return config.sim.max_steps;
-  try {
-    const nlohmann::json summary = nlohmann::json::parse(files::ReadFileText(summary_path));
-    if (summary.contains("max_steps") && summary["max_steps"].is_number_integer() &&
-        summary["max_steps"].get<int64_t>() >= 1) {
-      return summary["max_steps"].get<int64_t>();
-    }
-  } catch (const nlohmann::json::exception& e) {
-    throw std::runtime_error(summary_path + ": not valid JSON: " + e.what());
-  }
+  const node::RunSummary summary = node::RunSummary::Read(summary_path);
+  if (summary.Has("max_steps") && summary.max_steps >= 1) return summary.max_steps;
   throw std::runtime_error(summary_path + ": has no max_steps (a whole number >= 1); is it a dream run's summary?");
 }
 
@@ -65,32 +59,16 @@ int64_t RunStepLimit(const std::string& run_dir, const run_config::RunConfig& co
 /// PreValidate finds again in the log (controller_failed, did_not_finish) and
 /// the pose rules it re-checks are left to it.
 std::vector<ExportProblem> NotReadyReasons(const std::string& run_dir) {
-  const std::string summary_path = (std::filesystem::path(run_dir) / "summary.json").string();
+  const std::string summary_path = (std::filesystem::path(run_dir) / node::RunSummary::kFileName).string();
   std::vector<ExportProblem> problems;
   if (!std::filesystem::exists(summary_path)) return problems;
-  nlohmann::json summary;
-  try {
-    summary = nlohmann::json::parse(files::ReadFileText(summary_path));
-  } catch (const nlohmann::json::exception& e) {
-    throw std::runtime_error(summary_path + ": not valid JSON: " + e.what());
-  }
-  const auto reasons = summary.find("verdict_reasons");
-  if (!summary.is_object() || reasons == summary.end()) return problems;  // written before verdict reasons
-  if (!reasons->is_array()) throw std::runtime_error(summary_path + ": verdict_reasons is not a list");
-  for (const nlohmann::json& reason : *reasons) {
-    auto text = [&](const char* key) {
-      const auto it = reason.is_object() ? reason.find(key) : reason.end();
-      if (it == reason.end() || !it->is_string()) {
-        throw std::runtime_error(summary_path + ": a verdict_reasons entry has no text '" + key + "'");
-      }
-      return it->get<std::string>();
-    };
-    const std::string rule = text("rule");
-    if (world::ParseRunVerdict(text("verdict")) != world::RunVerdict::kNotReady || rule == "controller_failed" ||
-        rule == "did_not_finish") {
+  // Written before verdict reasons, a summary has none: nothing to add.
+  for (const world::VerdictReason& reason : node::RunSummary::Read(summary_path).verdict_reasons) {
+    if (reason.verdict != world::RunVerdict::kNotReady || reason.rule == "controller_failed" ||
+        reason.rule == "did_not_finish") {
       continue;
     }
-    problems.push_back({rule, -1, -1, -1, text("problem"), text("find_out") + "; or export anyway with --force"});
+    problems.push_back({reason.rule, -1, -1, -1, reason.problem, reason.find_out + "; or export anyway with --force"});
   }
   return problems;
 }

@@ -457,7 +457,7 @@ TEST_F(ExportTest, SummaryReasonsRefuseTheRunUnlessForced) {
     ExportSubmission(run, testing::NewFolder("export_bad_summary") + "/out", forced);
     ADD_FAILURE() << "a malformed summary.json was accepted";
   } catch (const std::runtime_error& e) {
-    EXPECT_THAT(e.what(), HasSubstr("summary.json: verdict_reasons is not a list"));
+    EXPECT_THAT(e.what(), HasSubstr("summary.json: verdict_reasons: expected a list, got \"not a list\""));
   }
 }
 

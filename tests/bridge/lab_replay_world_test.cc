@@ -13,6 +13,7 @@
 #include "dream/bridge/lab_import.h"
 #include "dream/bridge/submission_exporter.h"
 #include "dream/bridge/submission_format.h"
+#include "dream/lcm/channels.h"
 #include "dream/lcm/log_reader.h"
 #include "dream/lcm/run_id.h"
 #include "dream/node/run_recorder.h"
@@ -112,7 +113,7 @@ TEST_F(LabReplayTest, RealPosesDriveTheAgentsAndTheLabCommandsAreRecordedBeside)
     largest_difference = std::max(largest_difference, std::abs(lab.agent_command(k, 0).v_mps - lab.track().command(k, 0).v_mps));
   }
   EXPECT_GT(largest_difference, 1e-4);
-  const auto recorded = Messages(out + "/lab_commands.lcmlog", kLabCommandChannelPrefix);
+  const auto recorded = Messages(out + "/lab_commands.lcmlog", lcm::kLabCommandChannelPrefix);
   ASSERT_EQ(recorded.size(), 8u);
   EXPECT_EQ(recorded.at("DREAM_LAB_CMD_0").size(), static_cast<size_t>(lab.step()));
 }

@@ -105,8 +105,9 @@ TEST(RunJudgeTest, TheVerifierCountsRobotsOutsideWhenGiven) {
 TEST(RunJudgeTest, SummaryHasTheVerdictAndItsReasons) {
   StillRun run(30);
   run.outcome.command_conflicts = 2;
-  const nlohmann::json summary = RunSummary(run.config, run.outcome, run.world, "run.lcmlog",
-                                            JudgeRun(run.config, run.outcome, run.world));
+  const nlohmann::json summary =
+      RunSummary::Of(run.config, run.outcome, run.world, "run.lcmlog", JudgeRun(run.config, run.outcome, run.world))
+          .Json();
   EXPECT_EQ(summary["verdict"], "not_ready");
   EXPECT_EQ(summary["robotarium_verdict"], "clean");
   ASSERT_EQ(summary["verdict_reasons"].size(), 1u);
@@ -124,11 +125,13 @@ TEST(RunJudgeTest, SummaryOfAReasonThatIsNotUtf8IsStillWritten) {
   StillRun run(5);
   run.outcome.end = RunOutcome::End::kFailed;
   run.outcome.reason = "cannot write /tmp/r\xE9sultats/run.lcmlog";
-  const nlohmann::ordered_json summary = RunSummary(run.config, run.outcome, run.world, "run.lcmlog",
-                                                    JudgeRun(run.config, run.outcome, run.world));
+  const nlohmann::ordered_json summary =
+      RunSummary::Of(run.config, run.outcome, run.world, "run.lcmlog", JudgeRun(run.config, run.outcome, run.world))
+          .Json();
   EXPECT_THROW((void)summary.dump(), nlohmann::json::type_error);  // what the writers did before
-  const std::string text = RunSummaryJson(run.config, run.outcome, run.world, "run.lcmlog",
-                                          JudgeRun(run.config, run.outcome, run.world));
+  const std::string text =
+      RunSummary::Of(run.config, run.outcome, run.world, "run.lcmlog", JudgeRun(run.config, run.outcome, run.world))
+          .Text();
   EXPECT_THAT(text, HasSubstr("/tmp/r\xEF\xBF\xBDsultats/run.lcmlog"));
   EXPECT_EQ(nlohmann::json::parse(text)["run"], "judged");
 }

@@ -39,6 +39,11 @@ class SyntheticRunLog {
     events_.push_back({channel, message.utime, std::move(bytes)});
     return *this;
   }
+  /// `bytes` as they are on `channel` at `utime` (a message made to lie).
+  SyntheticRunLog& Bytes(const std::string& channel, int64_t utime, std::vector<uint8_t> bytes) {
+    events_.push_back({channel, utime, std::move(bytes)});
+    return *this;
+  }
   /// Any channel with bytes that are no dream type.
   SyntheticRunLog& Other(const std::string& channel);
   /// Writes the log; returns its path.

@@ -243,13 +243,21 @@ TEST_F(RunSessionTest, ReasonsFoundAfterTheRunAreAddedByTheSameWriter) {
   }
   EXPECT_NE(files::ReadFileText(out() + "/trajectories.png"), picture_before);
 
-  // A summary that holds no verdict is named, not guessed at.
+  // A summary that holds no verdict, or one that is none of the four, is named, not guessed at.
+  files::WriteFileAtomically(out() + "/summary.json", R"({"verdict_reasons": []})");
+  try {
+    session.Reporter().AddReasons(out(), "agents", {}, {refused});
+    ADD_FAILURE() << "a summary without a verdict was amended";
+  } catch (const std::runtime_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr(out() + "/summary.json: has no verdict"));
+  }
   files::WriteFileAtomically(out() + "/summary.json", R"({"verdict": "fine", "verdict_reasons": []})");
   try {
     session.Reporter().AddReasons(out(), "agents", {}, {refused});
     ADD_FAILURE() << "a summary with an unknown verdict was amended";
   } catch (const std::runtime_error& e) {
-    EXPECT_THAT(e.what(), HasSubstr(out() + "/summary.json: has no verdict"));
+    EXPECT_THAT(e.what(), HasSubstr(out() + "/summary.json: verdict: expected one of clean, warning, not_ready, "
+                                            "rejected, got \"fine\""));
   }
 }
 

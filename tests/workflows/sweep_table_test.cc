@@ -42,6 +42,14 @@ std::vector<SweepPlan::Run> Runs(uint64_t count) {
   return SweepPlan(seeds, {}).runs();
 }
 
+/// SweepRunResult::Judge of a summary.json holding `summary` (none: not an object), read as the sweep reads the file.
+SweepRunResult JudgeJson(const SweepPlan::Run& run, int exit_code, bool timed_out, double wall_time_s,
+                         const nlohmann::json& summary, const std::string& failure_hint) {
+  std::optional<node::RunSummary> typed;
+  if (summary.is_object()) typed = node::RunSummary::FromJson(nlohmann::ordered_json(summary), "summary.json");
+  return SweepRunResult::Judge(run, exit_code, timed_out, wall_time_s, typed, failure_hint);
+}
+
 /// SweepRunResult::Judge of `summary` as `run`'s own dream run writes it:
 /// with the run's seed, its config's name and a run id of its own.
 SweepRunResult JudgeOwn(const SweepPlan::Run& run, int exit_code, bool timed_out, double wall_time_s,
@@ -51,7 +59,7 @@ SweepRunResult JudgeOwn(const SweepPlan::Run& run, int exit_code, bool timed_out
     summary["run"] = "demo_" + run.name;
     summary["run_id"] = "00c0ffee" + std::to_string(1000 + run.index);
   }
-  return SweepRunResult::Judge(run, exit_code, timed_out, wall_time_s, summary, failure_hint);
+  return JudgeJson(run, exit_code, timed_out, wall_time_s, summary, failure_hint);
 }
 
 // Issue 37: a summary.json of another run (another seed, another run's name,
@@ -62,18 +70,18 @@ TEST(SweepRunResult, ASummaryOfAnotherRunIsAFailedRowNamingWhy) {
   copied["seed"] = 1;
   copied["run"] = "demo_seed1";
   copied["run_id"] = "1234abcd";
-  const SweepRunResult other_seed = SweepRunResult::Judge(runs[1], 0, false, 1.0, copied, "");
+  const SweepRunResult other_seed = JudgeJson(runs[1], 0, false, 1.0, copied, "");
   EXPECT_EQ(other_seed.status, SweepRunResult::Status::kFailed);
   EXPECT_FALSE(other_seed.success);
   EXPECT_EQ(other_seed.problem, "summary.json is not this run's: its seed is 1, the run's 2");
   copied["seed"] = 2;
-  EXPECT_EQ(SweepRunResult::Judge(runs[1], 0, false, 1.0, copied, "").problem,
+  EXPECT_EQ(JudgeJson(runs[1], 0, false, 1.0, copied, "").problem,
             "summary.json is not this run's: it is run 'demo_seed1's, not seed2's");
   copied["run"] = "demo_seed2";
   copied.erase("run_id");
-  EXPECT_EQ(SweepRunResult::Judge(runs[1], 0, false, 1.0, copied, "").problem, "summary.json names no run_id");
+  EXPECT_EQ(JudgeJson(runs[1], 0, false, 1.0, copied, "").problem, "summary.json names no run_id");
   copied["run_id"] = "1234abcd";
-  EXPECT_TRUE(SweepRunResult::Judge(runs[1], 0, false, 1.0, copied, "").success);
+  EXPECT_TRUE(JudgeJson(runs[1], 0, false, 1.0, copied, "").success);
 
   std::vector<SweepRunResult> results;
   for (const SweepPlan::Run& run : runs) results.push_back(JudgeOwn(run, 0, false, 1.0, Circle(1990, 1985, 3, 0, 0.21), ""));
@@ -81,7 +89,7 @@ TEST(SweepRunResult, ASummaryOfAnotherRunIsAFailedRowNamingWhy) {
   twin["seed"] = 3;
   twin["run"] = "demo_seed3";
   twin["run_id"] = results[0].run_id;
-  results[2] = SweepRunResult::Judge(runs[2], 0, false, 1.0, twin, "");
+  results[2] = JudgeJson(runs[2], 0, false, 1.0, twin, "");
   ASSERT_TRUE(results[2].success);
   SweepRunResult::RefuseSharedRunIds(results);
   EXPECT_TRUE(results[1].success);
@@ -154,7 +162,8 @@ TEST(SweepRunResult, AKindWithoutAGoalIsNeverASuccessButSaysNoGoalDeclared) {
 
 TEST(ExperimentGoal, TheKindsOwnJudgementIsReadAndKindsWithoutOneHaveOnlyTheCommonCriteria) {
   auto judge = [](const std::string& kind, nlohmann::json metrics) {
-    return ExperimentGoal::Judge(Summary(kind, 900, 0, 0.3, std::move(metrics)));
+    return ExperimentGoal::Judge(node::RunSummary::FromJson(
+        nlohmann::ordered_json(Summary(kind, 900, 0, 0.3, std::move(metrics))), "summary.json"));
   };
   const ExperimentGoal line = judge("line_deployment", Goal(true, 700, "line converged"));
   EXPECT_TRUE(line.has_criterion);
@@ -172,7 +181,7 @@ TEST(ExperimentGoal, TheKindsOwnJudgementIsReadAndKindsWithoutOneHaveOnlyTheComm
   EXPECT_FALSE(broken.met);
   EXPECT_EQ(broken.detail, "no metrics: run.lcmlog: cannot open");
   // A summary without metrics: no kind, nothing to judge by but the common criteria.
-  EXPECT_FALSE(ExperimentGoal::Judge(nlohmann::json::object()).has_criterion);
+  EXPECT_FALSE(ExperimentGoal::Judge(node::RunSummary()).has_criterion);
 }
 
 TEST(SweepTable, RowsInPlanOrderAndASummaryOfTheFigures) {

@@ -10,7 +10,9 @@
 #include <thread>
 
 #include "dream/config/config_error.h"
+#include "dream/lcm/channels.h"
 #include "dream/lcm/lcm_bus.h"
+#include "dream/lcm/message_header.h"
 #include "dream/process/data_files.h"
 #include "dream/python_host/python_host_library.h"
 #include "dream/python_host/relay_link.h"
@@ -21,7 +23,6 @@ namespace {
 constexpr int kLinkFd = 3;
 constexpr const char* kTraceFd = "4";
 constexpr int kCellFd = 5;
-constexpr int kAgentIdAt = 36;  // of a radio_message_t, after its fingerprint
 
 [[noreturn]] void End(int code) {
   spdlog::default_logger()->flush();
@@ -61,13 +62,11 @@ void PythonHostChild::Run(std::atomic<bool>& stop, const ExitCodes& codes) {
     const int64_t agent_id = json.at("agent_id").get<int64_t>();
     lcm::LcmBus bus("memq://");
     // The robots' messages go to the parent; radio from elsewhere came from it.
-    const lcm::Subscription to_parent = bus.Subscribe("DREAM_(CMD|RADIO|FAULT)_[0-9]+", [&](const std::string& channel,
+    const lcm::Subscription to_parent = bus.Subscribe(lcm::kAgentOutboxRegex, [&](const std::string& channel,
                                                                                             const void* data, int size) {
-      if (channel.rfind("DREAM_RADIO_", 0) == 0) {
-        const auto* bytes = static_cast<const unsigned char*>(data);
-        uint64_t sender = 0;
-        for (int i = 0; size >= kAgentIdAt + 8 && i < 8; ++i) sender = (sender << 8) | bytes[kAgentIdAt + i];
-        if (static_cast<int64_t>(sender) != agent_id) return;
+      if (channel.rfind(lcm::kRadioChannelPrefix, 0) == 0 &&
+          lcm::MessageHeader::AgentIdOf(data, static_cast<size_t>(size)).value_or(0) != agent_id) {
+        return;
       }
       if (!link.Send('M', channel, data, static_cast<size_t>(size))) stop.store(true);
     });

@@ -13,11 +13,12 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 #include <optional>
-#include <regex>
 #include <stdexcept>
 
 #include "dream/config/config_error.h"
 #include "dream/config/sim_node_options.h"
+#include "dream/lcm/channels.h"
+#include "dream/lcm/message_header.h"
 #include "dream/robot_fault_t.hpp"
 #include "dream/python_host/spawned_python_host.h"
 
@@ -28,18 +29,7 @@ using Clock = std::chrono::steady_clock;
 
 // Frames for the process beyond this are dropped: it is far behind, i.e. stuck.
 constexpr size_t kMaxOutboxBytes = size_t{1} << 28;
-// Byte offsets in the LCM messages (after the 8-byte fingerprint): utime, step,
-// run_id; then robot_id / sender_id (int32) and agent_id (int64).
-constexpr int kUtimeAt = 8, kStepAt = 16, kRunIdAt = 24, kAgentIdAt = 36;
-
 double Seconds(Clock::duration duration) { return std::chrono::duration<double>(duration).count(); }
-
-int64_t BigEndian64(const void* data, int at) {
-  const auto* bytes = static_cast<const unsigned char*>(data) + at;
-  uint64_t value = 0;
-  for (int i = 0; i < 8; ++i) value = (value << 8) | bytes[i];
-  return static_cast<int64_t>(value);
-}
 
 // The start frame: what the process hosts, and how.
 std::string StartFrame(const std::string& spec_json, const std::vector<int>& robot_ids, int64_t agent_id,
@@ -173,7 +163,7 @@ PythonHostProcess::PythonHostProcess(lcm::LcmBus& bus, const std::string& spec_j
   const std::string start = StartFrame(spec_json, robot_ids, agent_id, limits_, false);
   RelayLink::Encode('S', "", start.data(), start.size(), &outbox_);
   // The bus may outlive this object: the subscription ends with it.
-  subscription_ = bus_.Subscribe("DREAM_(POSES|OBSTACLES|STATUS|RADIO_[0-9]+)",
+  subscription_ = bus_.Subscribe(lcm::kAgentInboxRegex,
                                  [this](const std::string& channel, const void* data, int size) {
                                    OnBusMessage(channel, data, size);
                                  });
@@ -205,14 +195,17 @@ PythonHostProcess::~PythonHostProcess() {
 
 void PythonHostProcess::OnBusMessage(const std::string& channel, const void* data, int size) {
   // Radio this host's process sent comes back from the bus: it heard it already.
-  if (channel.rfind("DREAM_RADIO_", 0) == 0 && size >= kAgentIdAt + 8 && BigEndian64(data, kAgentIdAt) == agent_id_) {
+  if (channel.rfind(lcm::kRadioChannelPrefix, 0) == 0 &&
+      lcm::MessageHeader::AgentIdOf(data, static_cast<size_t>(size)) == agent_id_) {
     return;
   }
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     if (ended_) return;
-    if (channel == "DREAM_POSES" && size >= kRunIdAt + 8) {
-      world_step_ = {BigEndian64(data, kUtimeAt), BigEndian64(data, kStepAt), BigEndian64(data, kRunIdAt)};
+    if (channel == lcm::kPosesChannel) {
+      if (const auto header = lcm::MessageHeader::Read(data, static_cast<size_t>(size))) {
+        world_step_ = {header->utime, header->step, header->run_id};
+      }
     }
     if (outbox_.size() > kMaxOutboxBytes) return;
     const bool was_empty = outbox_.empty();
@@ -310,20 +303,17 @@ bool PythonHostProcess::Take(const RelayLink::Frame& frame) {
   switch (frame.kind) {
     case 'M': {
       // Only what the process may say: its robots' commands, radio and faults.
-      static const std::regex kOwn("DREAM_(CMD|RADIO|FAULT)_([0-9]{1,6})");
-      std::smatch match;
-      if (!std::regex_match(frame.channel, match, kOwn) ||
-          std::find(robot_ids_.begin(), robot_ids_.end(), std::stoi(match[2].str())) == robot_ids_.end()) {
+      const std::optional<lcm::AgentChannel> own = lcm::ParseAgentChannel(frame.channel);
+      if (!own || std::find(robot_ids_.begin(), robot_ids_.end(), own->robot_id) == robot_ids_.end()) {
         spdlog::warn("the Python controllers' process published on {}, not a channel of its robots: dropped",
                      frame.channel);
         return false;
       }
-      const int size = static_cast<int>(frame.data.size());
-      if (match[1] == "CMD" && size >= kRunIdAt + 8) {
-        answered_step_ = {BigEndian64(frame.data.data(), kUtimeAt), BigEndian64(frame.data.data(), kStepAt),
-                          BigEndian64(frame.data.data(), kRunIdAt)};
-      } else if (match[1] == "FAULT") {
-        failed_.insert(std::stoi(match[2].str()));
+      const std::optional<lcm::MessageHeader> header = lcm::MessageHeader::Read(frame.data.data(), frame.data.size());
+      if (own->kind == lcm::AgentChannel::Kind::kCommand && header) {
+        answered_step_ = {header->utime, header->step, header->run_id};
+      } else if (own->kind == lcm::AgentChannel::Kind::kFault) {
+        failed_.insert(own->robot_id);
       }
       return !ended_;
     }
@@ -450,7 +440,7 @@ void PythonHostProcess::PublishFaults(const std::string& culprit_detail, int64_t
     fault.detail = (id == culprit ? culprit_detail : others_detail).substr(0, 60000);
     std::string bytes(static_cast<size_t>(fault.getEncodedSize()), '\0');
     fault.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-    bus_.Publish("DREAM_FAULT_" + std::to_string(id), bytes.data(), static_cast<int>(bytes.size()));
+    bus_.Publish(lcm::FaultChannel(id), bytes.data(), static_cast<int>(bytes.size()));
   }
 }
 

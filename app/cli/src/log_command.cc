@@ -10,7 +10,6 @@
 
 #include "command_line.h"
 #include "commands.h"
-#include "dream/bridge/lab_replay_world.h"
 #include "dream/lcm/channels.h"
 #include "dream/lcm/log_reader.h"
 #include "dream/lcm/run_id.h"
@@ -52,7 +51,7 @@ bool IsDreamDataChannel(const std::string& channel) {
     if (channel == name) return true;
   }
   for (const char* prefix : {lcm::kCommandChannelPrefix, lcm::kRadioChannelPrefix, lcm::kFaultChannelPrefix,
-                             bridge::kLabCommandChannelPrefix}) {
+                             lcm::kLabCommandChannelPrefix}) {
     if (channel.rfind(prefix, 0) == 0) return true;
   }
   return false;

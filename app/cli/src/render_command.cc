@@ -14,6 +14,7 @@
 #include "command_line.h"
 #include "commands.h"
 #include "dream/files/file_text.h"
+#include "dream/node/run_summary.h"
 #include "dream/files/stop_token.h"
 #include "dream/run_config/run_config.h"
 #include "dream/render/ffmpeg_encoder.h"
@@ -126,38 +127,34 @@ render::ArenaOverlays Overlays(const RenderArgs& args, const fs::path& log, int 
 /// The run's name and verdict from summary.json beside `log`, when it is
 /// there and holds them (the pictures' captions show them).
 void RunLabelFromSummary(const fs::path& log, render::ArenaOverlays* overlays) {
-  const fs::path summary_path = log.parent_path() / "summary.json";
+  const fs::path summary_path = log.parent_path() / node::RunSummary::kFileName;
   if (!fs::is_regular_file(summary_path)) return;
-  nlohmann::json summary;
+  node::RunSummary summary;
   try {
-    summary = nlohmann::json::parse(files::ReadFileText(summary_path.string()), nullptr, /*allow_exceptions=*/false);
+    summary = node::RunSummary::Read(summary_path.string());
   } catch (const std::exception& e) {
+    // A label is a nicety, not worth failing for.
     spdlog::warn("{} (the picture goes without the run's name and verdict)", e.what());
     return;
   }
-  if (summary.is_discarded() || !summary.is_object()) return;  // a label is a nicety, not worth failing for
-  if (summary.contains("run") && summary["run"].is_string()) overlays->run_name = summary["run"].get<std::string>();
-  if (summary.contains("verdict") && summary["verdict"].is_string()) {
-    overlays->verdict = summary["verdict"].get<std::string>();
-  }
-  overlays->sim_only = summary.contains("sim_only") && summary["sim_only"].is_boolean() && summary["sim_only"].get<bool>();
+  if (summary.Has("run")) overlays->run_name = summary.run;
+  if (summary.Has("verdict")) overlays->verdict = world::RunVerdictName(summary.verdict);  // the caption's text
+  overlays->sim_only = summary.sim_only;
   // A Python controller's goal_points(), judged when the run was reported.
-  if (summary.contains("metrics")) session::AddDeclaredGoals(summary["metrics"], overlays);
+  if (summary.metrics.is_object()) session::AddDeclaredGoals(summary.metrics, overlays);
 }
 
 /// summary.json's metric series ({"name": [[step, value], ...]}) beside the
 /// log, then the closest approach computed from the log's poses.
 std::vector<render::MetricSeries> MetricSeriesOf(const fs::path& log, const run_log::RunLog& run, std::string* title) {
   std::vector<render::MetricSeries> series;
-  const fs::path summary_path = log.parent_path() / "summary.json";
+  const fs::path summary_path = log.parent_path() / node::RunSummary::kFileName;
   *title = log.string();
   if (fs::is_regular_file(summary_path)) {
-    const nlohmann::json summary =
-        nlohmann::json::parse(files::ReadFileText(summary_path.string()), nullptr, /*allow_exceptions=*/false);
-    if (summary.is_discarded()) throw std::runtime_error(summary_path.string() + ": not valid JSON");
-    if (summary.contains("run") && summary["run"].is_string()) *title = summary["run"].get<std::string>();
-    if (summary.contains("metrics") && summary["metrics"].is_object()) {
-      for (const auto& [name, value] : summary["metrics"].items()) {
+    const node::RunSummary summary = node::RunSummary::Read(summary_path.string());
+    if (summary.Has("run")) *title = summary.run;
+    if (summary.metrics.is_object()) {
+      for (const auto& [name, value] : summary.metrics.items()) {
         if (!value.is_array() || value.empty()) continue;
         render::MetricSeries s;
         s.name = name;

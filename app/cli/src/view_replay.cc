@@ -10,6 +10,7 @@
 #include <string>
 
 #include "dream/files/file_text.h"
+#include "dream/node/run_summary.h"
 #include "dream/run_config/run_config.h"
 #include "dream/run_log/run_log.h"
 #include "dream/session/experiment_goal.h"
@@ -64,23 +65,22 @@ std::optional<std::string> MetricText(const nlohmann::json& value) {
 }  // namespace
 
 std::optional<view::ViewSetup::Judged> JudgedOfRun(const std::string& log_path) {
-  const std::string summary_path = (fs::path(log_path).parent_path() / "summary.json").string();
+  const std::string summary_path = (fs::path(log_path).parent_path() / node::RunSummary::kFileName).string();
   std::error_code error;
   if (!fs::exists(summary_path, error)) return std::nullopt;
   try {
-    const nlohmann::json summary = nlohmann::json::parse(files::ReadFileText(summary_path));
-    if (!summary.is_object()) throw std::runtime_error("not a JSON object");
+    const node::RunSummary summary = node::RunSummary::Read(summary_path);
+    if (!summary.Has("verdict")) return std::nullopt;
     view::ViewSetup::Judged judged;
-    judged.verdict = summary.value("verdict", std::string());
-    if (judged.verdict.empty()) return std::nullopt;
-    const nlohmann::json reasons = summary.value("verdict_reasons", nlohmann::json::array());
-    for (const nlohmann::json& reason : reasons.is_array() ? reasons : nlohmann::json::array()) {
+    judged.verdict = world::RunVerdictName(summary.verdict);  // the page's text
+    for (const world::VerdictReason& reason : summary.verdict_reasons) {
       if (judged.reasons.size() == view::ViewSetup::Judged::kMaxListed) break;
-      if (reason.is_object()) judged.reasons.push_back(reason.value("rule", "?") + ": " + reason.value("problem", ""));
+      judged.reasons.push_back(reason.rule + ": " + reason.problem);
     }
-    judged.goal = session::ExperimentGoal::Text(summary.value("goal", nlohmann::json::object()));
-    nlohmann::json metrics = summary.value("metrics", nlohmann::json::object());
-    if (!metrics.is_object()) metrics = nlohmann::json::object();
+    judged.goal = session::ExperimentGoal::Text(summary.goal.is_object() ? nlohmann::json(summary.goal)
+                                                                         : nlohmann::json::object());
+    const nlohmann::json metrics =
+        summary.metrics.is_object() ? nlohmann::json(summary.metrics) : nlohmann::json::object();
     for (const auto& [name, value] : metrics.items()) {
       if (judged.metrics.size() == view::ViewSetup::Judged::kMaxListed) break;
       if (name == "kind") continue;  // the experiment's name, not a measure

@@ -11,10 +11,9 @@ double Number(const nlohmann::json& object, const std::string& key, double fallb
 
 }  // namespace
 
-ExperimentGoal ExperimentGoal::Judge(const nlohmann::json& summary) {
+ExperimentGoal ExperimentGoal::Judge(const node::RunSummary& summary) {
   ExperimentGoal goal;
-  const nlohmann::json metrics =
-      summary.is_object() && summary.contains("metrics") ? summary["metrics"] : nlohmann::json();
+  const nlohmann::json metrics = summary.metrics;  // the kind's section, as it wrote it
   if (metrics.is_object() && metrics.contains("kind") && metrics["kind"].is_string()) goal.kind = metrics["kind"];
   // The kind's own rule wrote metrics.goal (ExperimentMetrics::JudgeGoal).
   const nlohmann::json judged =
@@ -38,12 +37,10 @@ ExperimentGoal ExperimentGoal::Judge(const nlohmann::json& summary) {
   // "every robot reported done" is its completion.
   goal.met = true;
   goal.detail = "no goal declared";
-  const double robots = Number(summary, "robots", -1.0);
-  const nlohmann::json done =
-      summary.is_object() && summary.contains("robots_done") ? summary["robots_done"] : nlohmann::json();
-  const double done_count =
-      done.is_array() ? static_cast<double>(done.size()) : (done.is_number() ? done.get<double>() : -2.0);
-  if (robots > 0 && done_count == robots) goal.completion_step = static_cast<long long>(Number(summary, "steps", -1.0));
+  const auto done_count = static_cast<int64_t>(summary.robots_done.size());
+  if (summary.robots > 0 && summary.Has("robots_done") && done_count == summary.robots && summary.Has("steps")) {
+    goal.completion_step = summary.steps;
+  }
   return goal;
 }
 

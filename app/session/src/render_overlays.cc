@@ -10,6 +10,7 @@
 #include "dream/agent_host/controller_registry.h"
 #include "dream/bridge/python_run_metrics.h"
 #include "dream/files/file_text.h"
+#include "dream/node/run_summary.h"
 #include "dream/agent_host/snapshot_from_messages.h"
 #include "dream/agents/framework/world_snapshot.h"
 
@@ -96,16 +97,15 @@ void AddDeclaredGoals(const nlohmann::json& metrics, render::ArenaOverlays* over
 }
 
 bool AddDeclaredGoalsOfRun(const std::string& summary_path, render::ArenaOverlays* overlays) {
-  std::string text;
+  node::RunSummary summary;
   try {
-    text = files::ReadFileText(summary_path, kMaxSummaryBytes);
+    summary = node::RunSummary::Read(summary_path);
   } catch (const std::exception&) {
     return false;  // goals are a nicety: a missing, odd or huge summary.json goes without
   }
-  const nlohmann::json summary = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
-  if (!summary.is_object() || !summary.contains("metrics")) return false;
+  if (!summary.metrics.is_object()) return false;
   const size_t before = overlays->goals_m.size();
-  AddDeclaredGoals(summary["metrics"], overlays);
+  AddDeclaredGoals(summary.metrics, overlays);
   return overlays->goals_m.size() > before;
 }
 

@@ -55,21 +55,6 @@ struct RunReporter::LogReadBack {
   std::string error;
 };
 
-namespace {
-
-/// summary.json's violations_located, placed right after its violation counts.
-void AddViolationsLocated(const nlohmann::ordered_json& located, nlohmann::ordered_json* summary) {
-  nlohmann::ordered_json placed = nlohmann::ordered_json::object();
-  for (auto it = summary->begin(); it != summary->end(); ++it) {
-    placed[it.key()] = it.value();
-    if (it.key() == "violations") placed["violations_located"] = located;
-  }
-  if (!placed.contains("violations_located")) placed["violations_located"] = located;
-  *summary = std::move(placed);
-}
-
-}  // namespace
-
 RunReporter::RunReporter(const run_config::RunConfig& config, const agent_host::ControllerFactory* factory,
                          std::string factory_error, Options options)
     : config_(config), factory_(factory), factory_error_(std::move(factory_error)), options_(options) {}
@@ -88,8 +73,7 @@ nlohmann::ordered_json RunReporter::Metrics(const LogReadBack& log) const {
   return bridge::MetricsJson(config_, *factory_, *log.log, options_.python_runtime_dir);
 }
 
-world::RunJudgement RunReporter::Judge(const Ended& ended, const LogReadBack& log,
-                                       nlohmann::ordered_json* summary) const {
+world::RunJudgement RunReporter::Judge(const Ended& ended, const LogReadBack& log, node::RunSummary* summary) const {
   const node::RunOutcome& outcome = ended.outcome;
   std::optional<world::RunJudgement> judgement = ended.judgement;
   if (!judgement) {
@@ -113,7 +97,7 @@ world::RunJudgement RunReporter::Judge(const Ended& ended, const LogReadBack& lo
   const bool cut_short = options_.steps_from_command_line && !goal.met && goal.judge_error.empty() &&
                          outcome.steps >= config_.sim.max_steps;
   goal_json["judged"] = !cut_short && goal.has_criterion;
-  (*summary)["goal"] = goal_json;
+  summary->goal = goal_json;
   if (!cut_short) {
     if (const std::optional<world::VerdictReason> reason = goal.Reason()) judgement->Add(*reason);
   }
@@ -136,19 +120,18 @@ RunResult RunReporter::Report(const Ended& ended) const {
   }
   // The goal is judged on the summary (robots done, steps) with its metrics.
   // Built once: its verdict fields are set again once the goal is judged.
-  nlohmann::ordered_json summary = node::RunSummary(config_, outcome, *ended.world, kLogName,
-                                                    world::RunJudgement(world::RunReport{}));
-  summary["metrics"] = metrics;
+  node::RunSummary summary =
+      node::RunSummary::Of(config_, outcome, *ended.world, kLogName, world::RunJudgement(world::RunReport{}));
+  summary.metrics = metrics;
   const std::string& located_error = log.log ? log.located_error : log.error;
-  AddViolationsLocated(located_error.empty() ? node::ViolationsLocatedJson(log.located, kMaxViolationsListed)
-                                             : nlohmann::ordered_json{{"error", located_error}},
-                       &summary);
+  summary.violations_located = located_error.empty() ? node::ViolationsLocatedJson(log.located, kMaxViolationsListed)
+                                                     : nlohmann::ordered_json{{"error", located_error}};
   result.judgement = Judge(ended, log, &summary);
-  node::SetSummaryVerdict(&summary, result.judgement);
-  const nlohmann::ordered_json goal = summary["goal"];  // a copy: adding fields may move the summary's entries
-  for (auto it = ended.fields.begin(); it != ended.fields.end(); ++it) summary[it.key()] = it.value();
+  summary.SetVerdict(result.judgement);
+  const nlohmann::ordered_json goal = summary.goal;
+  for (auto it = ended.fields.begin(); it != ended.fields.end(); ++it) summary.Set(it.key(), it.value());
   try {
-    files::WriteFileAtomically(ended.dir + "/" + kSummaryName, files::JsonText(summary) + "\n");
+    files::WriteFileAtomically(ended.dir + "/" + kSummaryName, summary.Text());
     result.summary_written = true;
   } catch (const std::exception& e) {
     // A full disk: say so once, and that the run's outputs are incomplete.
@@ -228,34 +211,22 @@ world::RunVerdict RunReporter::AddReasons(const std::string& dir, const std::str
                                           const nlohmann::ordered_json& section,
                                           const std::vector<world::VerdictReason>& reasons) const {
   const std::string summary_path = dir + "/" + kSummaryName;
-  nlohmann::ordered_json summary;
-  try {
-    summary = nlohmann::ordered_json::parse(files::ReadFileText(summary_path));
-  } catch (const nlohmann::json::exception& e) {
-    throw std::runtime_error(summary_path + ": not valid JSON: " + e.what());
-  }
-  const std::optional<world::RunVerdict> old_verdict =
-      summary.is_object() && summary.contains("verdict") && summary["verdict"].is_string()
-          ? world::ParseRunVerdict(summary["verdict"].get<std::string>())
-          : std::nullopt;
-  if (!old_verdict || !summary.contains("verdict_reasons") || !summary["verdict_reasons"].is_array()) {
+  node::RunSummary summary = node::RunSummary::Read(summary_path);
+  if (!summary.Has("verdict") || !summary.Has("verdict_reasons")) {
     throw std::runtime_error(summary_path + ": has no verdict (clean, warning, not_ready or rejected) with "
                              "verdict_reasons; is it a dream run's summary?");
   }
-  world::RunVerdict verdict = *old_verdict;
+  const world::RunVerdict old_verdict = summary.verdict;
+  world::RunVerdict verdict = old_verdict;
   for (const world::VerdictReason& reason : reasons) {
-    // As node::SetSummaryVerdict writes each reason.
-    summary["verdict_reasons"].push_back({{"rule", reason.rule},
-                                          {"verdict", world::RunVerdictName(reason.verdict)},
-                                          {"problem", reason.problem},
-                                          {"find_out", reason.find_out}});
+    summary.verdict_reasons.push_back(reason);
     verdict = std::max(verdict, reason.verdict);
   }
-  summary["verdict"] = world::RunVerdictName(verdict);
-  summary[section_key] = section;
-  files::WriteFileAtomically(summary_path, files::JsonText(summary) + "\n");
-  if (verdict != *old_verdict && std::filesystem::exists(dir + "/" + kPictureName)) {
-    const nlohmann::ordered_json metrics = summary.contains("metrics") ? summary["metrics"] : nlohmann::ordered_json();
+  summary.verdict = verdict;
+  summary.Set(section_key, section);
+  files::WriteFileAtomically(summary_path, summary.Text());
+  if (verdict != old_verdict && std::filesystem::exists(dir + "/" + kPictureName)) {
+    const nlohmann::ordered_json metrics = summary.metrics;
     DrawPicture(LogReadBack(dir + "/" + kLogName, config_.world), dir + "/" + kPictureName, verdict, metrics);  // says what summary.json says
   }
   return verdict;

@@ -10,9 +10,6 @@
 namespace dream::view {
 namespace {
 
-constexpr const char* kMeasuredPosesChannel = "DREAM_MEASURED_POSES";  // recorded with world.realism on
-constexpr const char* kViewChannels = "DREAM_(POSES|MEASURED_POSES|OBSTACLES|STATUS|RADIO_[0-9]+)";
-
 /// Which kinds of violation a status counts more of than the one before.
 struct NewViolations {
   bool boundary = false;
@@ -35,9 +32,10 @@ bool WantedKind(const NewViolations& added, ViolationMark::Kind kind) {
 BusFrameCollector::BusFrameCollector(lcm::LcmInterface& bus, const world::WorldParams& world,
                                      std::function<RunChoice::Clock::time_point()> now)
     : choice_(std::move(now)), locator_(world) {
-  subscription_ = bus.Subscribe(kViewChannels, [this](const std::string& channel, const void* data, int size) {
-    OnMessage(channel, data, size);
-  });
+  subscription_ = bus.Subscribe(lcm::kViewChannelsRegex,
+                                [this](const std::string& channel, const void* data, int size) {
+                                  OnMessage(channel, data, size);
+                                });
 }
 
 void BusFrameCollector::OnMessage(const std::string& channel, const void* data, int size) {
@@ -49,7 +47,7 @@ void BusFrameCollector::OnMessage(const std::string& channel, const void* data, 
     }
     std::lock_guard<std::mutex> lock(mutex_);
     OnPoses();
-  } else if (channel == kMeasuredPosesChannel) {
+  } else if (channel == lcm::kMeasuredPosesChannel) {  // recorded with world.realism on
     const bool decoded = lcm::Decode(data, size, &measured_in_);
     std::lock_guard<std::mutex> lock(mutex_);
     if (!decoded) {

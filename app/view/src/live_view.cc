@@ -8,8 +8,9 @@
 #include <vector>
 #include <utility>
 
-#include "dream/lcm/log_reader.h"
+#include "dream/lcm/channels.h"
 #include "dream/lcm/run_id.h"
+#include "dream/run_log/run_log.h"
 #include "dream/view/frame_json.h"
 #include "dream/view/thread_priority.h"
 
@@ -62,19 +63,18 @@ bool LiveView::OnPageMessage(const std::string& message) {
 }
 
 void LiveView::ShowEndOf(const std::string& log_path) {
-  lcm::LogReader reader(log_path);
-  lcm::LogRecord record;
-  // The last of each channel, handed over in the order the world publishes a step.
-  const std::vector<std::string> channels = {"DREAM_OBSTACLES", "DREAM_STATUS", "DREAM_POSES", "DREAM_MEASURED_POSES"};
-  std::vector<std::vector<uint8_t>> last(channels.size());
-  while (reader.Next(&record)) {
-    for (size_t i = 0; i < channels.size(); ++i) {
-      if (record.channel == channels[i]) last[i].swap(record.data);
-    }
-  }
-  for (size_t i = 0; i < channels.size(); ++i) {
-    if (!last[i].empty()) collector_.OnMessage(channels[i], last[i].data(), static_cast<int>(last[i].size()));
-  }
+  // The run's last obstacles, status and poses, as RunLog reads them (the run's own, decoded once),
+  // handed to the collector as the bus would: in the order the world publishes a step.
+  const run_log::RunLog log = run_log::RunLog::Read(log_path);
+  auto hand_over = [this](const char* channel, const auto& message) {
+    std::vector<uint8_t> bytes(static_cast<size_t>(message.getEncodedSize()));
+    message.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+    collector_.OnMessage(channel, bytes.data(), static_cast<int>(bytes.size()));
+  };
+  if (!log.poses().empty()) hand_over(lcm::kObstaclesChannel, log.obstacles_at(log.poses().size() - 1));
+  if (log.last_status()) hand_over(lcm::kStatusChannel, *log.last_status());
+  if (!log.poses().empty()) hand_over(lcm::kPosesChannel, log.poses().back());
+  if (!log.measured_poses().empty()) hand_over(lcm::kMeasuredPosesChannel, log.measured_poses().back());
   PumpOnce();
 }
 

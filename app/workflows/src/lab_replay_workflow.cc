@@ -10,6 +10,7 @@
 #include "dream/bridge/run_track.h"
 #include "dream/files/file_text.h"
 #include "dream/files/run_folder_choice.h"
+#include "dream/lcm/channels.h"
 #include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/lcm_url.h"
 #include "dream/run_config/run_config.h"
@@ -63,7 +64,7 @@ LabReplayWorkflow::Result LabReplayWorkflow::Replay(const Options& options) cons
     nlohmann::ordered_json fields;
     fields["config"] = "config.yaml";
     fields["lab_replay"] = {{"lab_run", fs::absolute(options.lab_dir).string()},
-                            {"lab_command_channels", std::string(bridge::kLabCommandChannelPrefix) + "<id>"},
+                            {"lab_command_channels", std::string(lcm::kLabCommandChannelPrefix) + "<id>"},
                             {"agents_vs_lab_commands", result.agreement->Json()}};
     return fields;
   };

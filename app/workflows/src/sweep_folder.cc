@@ -22,7 +22,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr size_t kMaxPlanBytes = size_t{256} << 20;
-constexpr size_t kMaxSummaryBytes = size_t{64} << 20;
 constexpr size_t kMaxSettingsBytes = size_t{16} << 20;
 
 std::string Escaped(const std::string& text) {
@@ -295,8 +294,10 @@ SweepRunResult SweepFolder::JudgeRun(const SweepPlan::Run& run, const RunExit& e
   const std::string hint = !exit.problem.empty() ? exit.problem
                            : failed              ? LastErrorLine(dir + "/output.txt")
                                                  : std::string();
-  return SweepRunResult::Judge(run, exit.exit_code, exit.timed_out, exit.wall_time_s, ReadSummary(dir + "/summary.json"),
-                               hint);
+  std::string summary_problem;
+  const std::optional<node::RunSummary> summary =
+      ReadSummary(dir + "/" + node::RunSummary::kFileName, &summary_problem);
+  return SweepRunResult::Judge(run, exit.exit_code, exit.timed_out, exit.wall_time_s, summary, hint, summary_problem);
 }
 
 SweepRunResult SweepFolder::CollectRun(const SweepPlan::Run& run, const std::optional<SlurmTaskState>& slurm,
@@ -344,15 +345,16 @@ std::string SweepFolder::LastErrorLine(const std::string& output_path) {
   return chosen.size() > 160 ? chosen.substr(0, 157) + "..." : chosen;
 }
 
-nlohmann::json SweepFolder::ReadSummary(const std::string& path) {
-  std::string text;
+std::optional<node::RunSummary> SweepFolder::ReadSummary(const std::string& path, std::string* problem) {
+  problem->clear();
+  std::error_code error;
+  if (!fs::exists(fs::symlink_status(path, error))) return std::nullopt;  // the run left none
   try {
-    text = files::ReadFileText(path, kMaxSummaryBytes);
-  } catch (const std::runtime_error&) {
-    return nullptr;  // missing, too large or no regular file: the run left no readable summary
+    return node::RunSummary::Read(path);
+  } catch (const std::runtime_error& e) {
+    *problem = e.what();  // too large, no regular file, not JSON, or a field that is wrong
+    return std::nullopt;
   }
-  nlohmann::json summary = nlohmann::json::parse(text, nullptr, false);
-  return summary.is_object() ? summary : nlohmann::json(nullptr);
 }
 
 }  // namespace dream::workflows

@@ -8,33 +8,20 @@
 namespace dream::workflows {
 namespace {
 
-long long Count(const nlohmann::json& object, const char* key) {
-  const auto it = object.find(key);
-  return it != object.end() && it->is_number() ? it->get<long long>() : 0;
-}
-
-std::string Text(const nlohmann::json& object, const char* key) {
-  const auto it = object.find(key);
-  return it != object.end() && it->is_string() ? it->get<std::string>() : std::string();
-}
-
 /// Why `summary` is not `run`'s own (another seed's, another run's, or
 /// without a run id); empty when it is.
-std::string OtherRunsSummary(const SweepPlan::Run& run, const nlohmann::json& summary) {
-  const auto seed = summary.find("seed");
-  const bool same_seed = seed != summary.end() && seed->is_number_integer() &&
-                         (seed->is_number_unsigned() ? seed->get<uint64_t>() == run.seed
-                                                     : seed->get<int64_t>() >= 0 && static_cast<uint64_t>(seed->get<int64_t>()) == run.seed);
-  if (!same_seed) {
-    return "summary.json is not this run's: its seed is " + (seed == summary.end() ? std::string("missing") : seed->dump()) +
-           ", the run's " + std::to_string(run.seed);
+std::string OtherRunsSummary(const SweepPlan::Run& run, const node::RunSummary& summary) {
+  if (!summary.Has("seed") || summary.seed != run.seed) {
+    return "summary.json is not this run's: its seed is " +
+           (summary.Has("seed") ? std::to_string(summary.seed) : std::string("missing")) + ", the run's " +
+           std::to_string(run.seed);
   }
-  const std::string name = Text(summary, "run");
+  const std::string& name = summary.run;
   const std::string suffix = "_" + run.name;
   const bool names_run =
       name == run.name || (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0);
   if (!names_run) return "summary.json is not this run's: it is run '" + name.substr(0, 80) + "'s, not " + run.name + "'s";
-  if (Text(summary, "run_id").empty()) return "summary.json names no run_id";
+  if (summary.run_id.empty()) return "summary.json names no run_id";
   return {};
 }
 
@@ -49,28 +36,25 @@ SweepRunResult WithoutResult(const SweepPlan::Run& run, SweepRunResult::Status s
 }  // namespace
 
 SweepRunResult SweepRunResult::Judge(const SweepPlan::Run& run, int exit_code, bool timed_out, double wall_time_s,
-                                     const nlohmann::json& summary, const std::string& failure_hint) {
+                                     const std::optional<node::RunSummary>& summary, const std::string& failure_hint,
+                                     const std::string& summary_problem) {
   SweepRunResult result;
   result.run = run;
   result.exit_code = exit_code;
   result.wall_time_s = wall_time_s;
-  result.has_summary = summary.is_object();
-  if (result.has_summary) {
-    result.run_id = Text(summary, "run_id");
-    result.end = Text(summary, "end");
-    result.verdict = Text(summary, "verdict");
-    result.steps = Count(summary, "steps");
-    const nlohmann::json violations = summary.contains("violations") ? summary["violations"] : nlohmann::json::object();
-    if (violations.is_object()) {
-      result.violations = {Count(violations, "boundary_errors"), Count(violations, "collision_errors"),
-                           Count(violations, "actuator_errors"), Count(violations, "obstacle_collisions")};
-    }
-    const nlohmann::json metrics = summary.contains("metrics") ? summary["metrics"] : nlohmann::json::object();
+  result.has_summary = summary.has_value();
+  if (summary) {
+    result.run_id = summary->run_id;
+    if (summary->Has("end")) result.end = summary->end;
+    if (summary->Has("verdict")) result.verdict = summary->verdict;
+    result.steps = summary->steps;
+    result.violations = summary->violations;
+    const nlohmann::ordered_json& metrics = summary->metrics;
     if (metrics.is_object() && metrics.contains("min_pairwise_distance_m") &&
         metrics["min_pairwise_distance_m"].is_number()) {
       result.min_distance_m = metrics["min_pairwise_distance_m"].get<double>();
     }
-    result.goal = session::ExperimentGoal::Judge(summary);
+    result.goal = session::ExperimentGoal::Judge(*summary);
   }
 
   const std::string hint = failure_hint.empty() ? std::string() : ": " + failure_hint;
@@ -87,16 +71,18 @@ SweepRunResult SweepRunResult::Judge(const SweepPlan::Run& run, int exit_code, b
                                       : "exit " + std::to_string(exit_code)) +
                      hint;
   } else if (!result.has_summary) {
-    result.problem = "exit " + std::to_string(exit_code) + " but no readable summary.json";
-  } else if (const std::string other = OtherRunsSummary(run, summary); !other.empty()) {
+    result.problem = "exit " + std::to_string(exit_code) + " but no readable summary.json" +
+                     (summary_problem.empty() ? std::string() : " (" + summary_problem + ")");
+  } else if (const std::string other = OtherRunsSummary(run, *summary); !other.empty()) {
     result.problem = other;
-  } else if (result.end != "finished") {
-    result.problem = "run ended '" + result.end + "'" + hint;
+  } else if (result.end != node::RunOutcome::End::kFinished) {
+    result.problem = std::string("run ended '") + (result.end ? node::EndName(*result.end) : "") + "'" + hint;
   } else {
     result.status = Status::kRan;
   }
   // Without a goal of its own a run can be clean but never a success.
-  result.success = result.status == Status::kRan && result.verdict != "rejected" && result.collisions() == 0 &&
+  result.success = result.status == Status::kRan && result.verdict != world::RunVerdict::kRejected &&
+                   result.collisions() == 0 &&
                    result.goal.has_criterion && result.goal.met;
   return result;
 }
@@ -138,7 +124,7 @@ std::string SweepRunResult::OutcomeText() const {
     add(std::to_string(violations.obstacle_collisions) + " obstacle collisions");
   }
   if (violations.boundary_errors > 0) add(std::to_string(violations.boundary_errors) + " boundary errors");
-  if (verdict == "rejected" && why.empty()) add("rejected by the Robotarium checks");
+  if (verdict == world::RunVerdict::kRejected && why.empty()) add("rejected by the Robotarium checks");
   if (!goal.has_criterion) return why.empty() ? "no goal declared" : "no goal declared (" + why + ")";
   if (!goal.met) add(goal.detail);
   return "no success (" + why + ")";

@@ -113,7 +113,8 @@ std::string SweepTable::Csv() const {
     csv += CsvField(r.run.name) + "," + std::to_string(r.run.seed);
     for (const auto& parameter : r.run.parameters) csv += "," + CsvField(parameter.second);
     csv += std::string(",") + StatusName(r.status) + "," + (r.success ? "true" : "false") + "," +
-           std::to_string(r.exit_code) + "," + CsvField(r.end) + "," + CsvField(r.verdict) + "," +
+           std::to_string(r.exit_code) + "," + CsvField(r.end ? node::EndName(*r.end) : "") + "," +
+           CsvField(r.verdict ? world::RunVerdictName(*r.verdict) : "") + "," +
            std::to_string(r.steps) + "," + StepOrEmpty(r.goal.completion_step, "") + "," +
            (r.min_distance_m ? Fixed(*r.min_distance_m, 4) : std::string()) + "," + std::to_string(r.violations.boundary_errors) +
            "," + std::to_string(r.violations.collision_errors) + "," + std::to_string(r.violations.actuator_errors) + "," +

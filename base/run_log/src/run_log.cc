@@ -8,12 +8,139 @@
 #include "dream/lcm/log_reader.h"
 #include "dream/radio_message_t.hpp"
 #include "dream/robot_fault_t.hpp"
+#include "dream/velocity_command_t.hpp"
 #include "dream/run_log/worlds_heard.h"
 
 namespace dream::run_log {
 namespace {
 
 constexpr size_t kNone = std::numeric_limits<size_t>::max();
+
+RecordedCommand RecordedOf(const velocity_command_t& command) {
+  return {command.step, command.robot_id, command.agent_id, command.v, command.w, command.done != 0};
+}
+
+/// What agents sent (radio, faults, commands) and the world applied (DREAM_APPLIED), as a log
+/// holds it, kept until the run's id and steps are known: another run's, a robot not of the run or
+/// not its channel's, a step the log has no poses for, are no part of this run (the world refuses
+/// them; older logs and recordings of the bus may hold them). Each message kept took at least its
+/// own bytes of the file, so what is held is bounded by the file.
+class AgentMessagesHeard {
+ public:
+  /// Takes `record` when it is on one of those channels and decodes.
+  void Take(const lcm::LogRecord& record) {
+    const uint8_t* data = record.data.data();
+    const int size = static_cast<int>(record.data.size());
+    if (const std::optional<int> sender = lcm::RobotIdFromChannel(record.channel, lcm::kRadioChannelPrefix)) {
+      if (lcm::Decode(data, size, &radio_)) {
+        radio_heard_.push_back({*sender, radio_.run_id, radio_.step, radio_.sender_id});
+      }
+    } else if (const std::optional<int> id = lcm::RobotIdFromChannel(record.channel, lcm::kFaultChannelPrefix)) {
+      if (lcm::Decode(data, size, &fault_)) {
+        faults_heard_.push_back({{*id, fault_.run_id, fault_.step, fault_.robot_id}, std::move(fault_.detail)});
+      }
+    } else if (const std::optional<int> robot = lcm::RobotIdFromCommandChannel(record.channel)) {
+      if (lcm::Decode(data, size, &command_)) {
+        commands_heard_.push_back({*robot, command_.run_id, RecordedOf(command_)});
+      }
+    } else if (const std::optional<int> lab = lcm::RobotIdFromChannel(record.channel, lcm::kLabCommandChannelPrefix)) {
+      if (lcm::Decode(data, size, &command_)) lab_heard_.push_back({*lab, command_.run_id, RecordedOf(command_)});
+    } else if (record.channel == lcm::kAppliedChannel) {
+      if (lcm::Decode(data, size, &applied_)) applied_heard_.push_back(std::move(applied_));
+    }
+  }
+
+  /// RunLog::radio_sends() (before Index orders them).
+  std::vector<RadioSend> RadioOf(const RunLog& log) const {
+    std::vector<RadioSend> sends;
+    for (const Heard& heard : radio_heard_) {
+      if (OfRun(heard, log)) sends.push_back({heard.step, heard.robot_id});
+    }
+    return sends;
+  }
+  /// The first fault of each robot of the run: id -> "step k: detail" (bounded by lcm::Decode).
+  std::map<int, std::string> FaultsOf(const RunLog& log) const {
+    std::map<int, std::string> faults;
+    for (const HeardFault& fault : faults_heard_) {
+      const Heard& heard = fault.heard;
+      if (OfRun(heard, log) && faults.count(heard.robot_id) == 0) {
+        faults[heard.robot_id] = "step " + std::to_string(heard.step) + ": " + fault.detail;
+      }
+    }
+    return faults;
+  }
+  /// RunLog::commands() (`lab`: lab_commands(), whose run id 0 is the run's too).
+  std::vector<RecordedCommand> CommandsOf(const RunLog& log, bool lab) const {
+    std::vector<RecordedCommand> kept;
+    for (const HeardCommand& h : lab ? lab_heard_ : commands_heard_) {
+      const bool run = h.run_id == log.run_id() || (lab && h.run_id == 0);
+      if (run && h.command.robot_id == h.channel_id && h.command.robot_id < log.num_robots() &&
+          InSteps(h.command.step, log)) {
+        kept.push_back(h.command);
+      }
+    }
+    // By step, then robot; the first heard of each robot and step stays.
+    std::stable_sort(kept.begin(), kept.end(), [](const RecordedCommand& a, const RecordedCommand& b) {
+      return a.step != b.step ? a.step < b.step : a.robot_id < b.robot_id;
+    });
+    kept.erase(std::unique(kept.begin(), kept.end(),
+                           [](const RecordedCommand& a, const RecordedCommand& b) {
+                             return a.step == b.step && a.robot_id == b.robot_id;
+                           }),
+               kept.end());
+    return kept;
+  }
+  /// RunLog::applied(): the run's, for its robots and steps, the first of each step.
+  std::vector<applied_commands_t> AppliedOf(const RunLog& log) {
+    std::vector<applied_commands_t> kept;
+    for (applied_commands_t& applied : applied_heard_) {
+      if (applied.run_id == log.run_id() && applied.num_robots == log.num_robots() && InSteps(applied.step, log)) {
+        kept.push_back(std::move(applied));
+      }
+    }
+    std::stable_sort(kept.begin(), kept.end(),
+                     [](const applied_commands_t& a, const applied_commands_t& b) { return a.step < b.step; });
+    kept.erase(std::unique(kept.begin(), kept.end(),
+                           [](const applied_commands_t& a, const applied_commands_t& b) { return a.step == b.step; }),
+               kept.end());
+    return kept;
+  }
+
+ private:
+  struct Heard {
+    int channel_id;
+    int64_t run_id;
+    int64_t step;
+    int32_t robot_id;
+  };
+  struct HeardFault {
+    Heard heard;
+    std::string detail;
+  };
+  struct HeardCommand {
+    int channel_id;
+    int64_t run_id;
+    RecordedCommand command;
+  };
+
+  static bool OfRun(const Heard& heard, const RunLog& log) {
+    return heard.run_id == log.run_id() && heard.robot_id == heard.channel_id && heard.robot_id < log.num_robots();
+  }
+  /// A step the log has poses for (none without poses).
+  static bool InSteps(int64_t step, const RunLog& log) {
+    return !log.poses().empty() && step >= log.first_step() && step <= log.last_step();
+  }
+
+  radio_message_t radio_;
+  robot_fault_t fault_;
+  velocity_command_t command_;
+  applied_commands_t applied_;
+  std::vector<Heard> radio_heard_;
+  std::vector<HeardFault> faults_heard_;
+  std::vector<HeardCommand> commands_heard_;
+  std::vector<HeardCommand> lab_heard_;
+  std::vector<applied_commands_t> applied_heard_;
+};
 
 }  // namespace
 
@@ -23,20 +150,7 @@ RunLog RunLog::Read(const std::string& path) {
   lcm::LogReader reader(path);
   lcm::LogRecord record;
   run_status_t status;
-  radio_message_t radio;
-  robot_fault_t fault;
-  // Radio and faults as heard, kept once the run's id (its poses') is known:
-  // another run's, or a sender that does not match its channel, are no part
-  // of this run (the world refuses them; older logs may hold them).
-  struct Heard {
-    int channel_id;
-    int64_t run_id;
-    int64_t step;
-    int32_t robot_id;
-    std::string detail;
-  };
-  std::vector<Heard> radio_heard;
-  std::vector<Heard> faults_heard;
+  AgentMessagesHeard heard;
   WorldsHeard worlds;
   // A world message that does not decode: named by its event and byte offset.
   auto undecodable = [&](std::optional<Problem>* flaw, const std::string& problem) {
@@ -55,7 +169,7 @@ RunLog RunLog::Read(const std::string& path) {
         continue;
       }
       worlds.AddPoses(std::move(poses), reader.event_index());
-    } else if (record.channel == "DREAM_MEASURED_POSES") {  // sim::TruePoseRecording::kMeasuredPosesChannel
+    } else if (record.channel == lcm::kMeasuredPosesChannel) {
       robot_poses_t measured;
       if (lcm::Decode(data, size, &measured)) worlds.AddMeasured(std::move(measured));  // else not the world's record
     } else if (record.channel == lcm::kObstaclesChannel) {
@@ -70,29 +184,16 @@ RunLog RunLog::Read(const std::string& path) {
       } else {
         worlds.AddStatus(std::move(status));
       }
-    } else if (const std::optional<int> sender = lcm::RobotIdFromChannel(record.channel, lcm::kRadioChannelPrefix)) {
-      if (lcm::Decode(data, size, &radio)) radio_heard.push_back({*sender, radio.run_id, radio.step, radio.sender_id, {}});
-    } else if (const std::optional<int> id = lcm::RobotIdFromChannel(record.channel, lcm::kFaultChannelPrefix)) {
-      if (lcm::Decode(data, size, &fault)) {
-        faults_heard.push_back({*id, fault.run_id, fault.step, fault.robot_id, std::move(fault.detail)});
-      }
+    } else {
+      heard.Take(record);
     }
   }
   log.TakeRun(std::move(worlds));
-  const int64_t run_id = log.run_id_;
-  auto of_this_run = [&](const Heard& heard) {
-    return heard.run_id == run_id && heard.robot_id == heard.channel_id && heard.robot_id < log.num_robots_;
-  };
-  for (const Heard& heard : radio_heard) {
-    if (of_this_run(heard)) log.radio_sends_.push_back({heard.step, heard.robot_id});
-  }
-  std::map<int, std::string> faults;  // the first of each robot
-  for (const Heard& heard : faults_heard) {
-    if (of_this_run(heard) && faults.count(heard.robot_id) == 0) {
-      faults[heard.robot_id] = "step " + std::to_string(heard.step) + ": " + heard.detail;  // bounded by lcm::Decode
-    }
-  }
-  log.Index(faults);
+  log.radio_sends_ = heard.RadioOf(log);
+  log.Index(heard.FaultsOf(log));
+  log.commands_ = heard.CommandsOf(log, /*lab=*/false);
+  log.lab_commands_ = heard.CommandsOf(log, /*lab=*/true);
+  log.applied_ = heard.AppliedOf(log);
   return log;
 }
 

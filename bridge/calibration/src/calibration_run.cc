@@ -9,15 +9,10 @@
 #include "dream/applied_commands_t.hpp"
 #include "dream/formats/mat_file.h"
 #include "dream/formats/npz_file.h"
-#include "dream/lcm/channels.h"
-#include "dream/lcm/lcm_typed.h"
-#include "dream/lcm/log_reader.h"
-#include "dream/node/true_pose_recording.h"
 #include "dream/robot_poses_t.hpp"
 #include "dream/robotarium/robotarium_constants.h"
 #include "dream/run_log/run_log.h"
 #include "dream/world/printf_text.h"
-#include "dream/velocity_command_t.hpp"
 
 namespace dream::calibration {
 namespace {
@@ -207,47 +202,31 @@ Arrays ReadMat(const std::string& path, const CalibrationInputOptions& options) 
 
 // A run folder's log: the poses the agents were sent and the commands applied.
 RunTrack TrackOfLog(const std::string& log_path, bool* timed) {
-  RunTrack track = ReadRunTrack(log_path);
+  const run_log::RunLog log = run_log::RunLog::Read(log_path);
+  RunTrack track = RunTrackOf(log);
   const size_t steps = track.utime.size();
   const auto n = static_cast<size_t>(track.num_robots);
-  std::vector<bool> measured(steps, false);
   std::vector<bool> applied(steps, false);
   std::vector<world::UnicycleCommand> sent(steps * n);
   std::vector<bool> sent_seen(steps * n, false);
-  lcm::LogReader reader(log_path);
-  lcm::LogRecord record;
-  robot_poses_t poses;
-  applied_commands_t commands;
-  velocity_command_t command;
-  // Steps and ids come from the file: each is checked before it indexes.
+  // Steps and robot counts come from the file: each is checked before it indexes.
   auto step_index = [steps](int64_t step) { return step >= 0 && static_cast<size_t>(step) < steps; };
-  while (reader.Next(&record)) {
-    const uint8_t* data = record.data.data();
-    const int size = static_cast<int>(record.data.size());
-    if (record.channel == node::TruePoseRecording::kMeasuredPosesChannel) {
-      if (!lcm::Decode(data, size, &poses) || !step_index(poses.step) || static_cast<size_t>(poses.num_robots) != n) {
-        continue;
-      }
-      const auto k = static_cast<size_t>(poses.step);
-      for (size_t i = 0; i < n; ++i) track.poses[k * n + i] = world::Pose2{poses.x[i], poses.y[i], poses.theta[i]};
-      measured[k] = true;
-    } else if (record.channel == lcm::kAppliedChannel) {
-      if (!lcm::Decode(data, size, &commands) || !step_index(commands.step) ||
-          static_cast<size_t>(commands.num_robots) != n) {
-        continue;
-      }
-      const auto k = static_cast<size_t>(commands.step);
-      for (size_t i = 0; i < n; ++i) track.commands[k * n + i] = {commands.commanded_v[i], commands.commanded_w[i]};
-      applied[k] = true;
-    } else if (const std::optional<int> id = lcm::RobotIdFromChannel(record.channel, lcm::kCommandChannelPrefix)) {
-      if (!lcm::Decode(data, size, &command) || !step_index(command.step) || command.robot_id != *id ||
-          *id < 0 || static_cast<size_t>(*id) >= n) {
-        continue;
-      }
-      const size_t at = static_cast<size_t>(command.step) * n + static_cast<size_t>(*id);
-      sent[at] = {command.v, command.w};
-      sent_seen[at] = true;
-    }
+  for (const robot_poses_t& poses : log.measured_poses()) {
+    if (!step_index(poses.step) || static_cast<size_t>(poses.num_robots) != n) continue;
+    const auto k = static_cast<size_t>(poses.step);
+    for (size_t i = 0; i < n; ++i) track.poses[k * n + i] = world::Pose2{poses.x[i], poses.y[i], poses.theta[i]};
+  }
+  for (const applied_commands_t& commands : log.applied()) {  // the run's robots, one per step (RunLog)
+    if (!step_index(commands.step)) continue;
+    const auto k = static_cast<size_t>(commands.step);
+    for (size_t i = 0; i < n; ++i) track.commands[k * n + i] = {commands.commanded_v[i], commands.commanded_w[i]};
+    applied[k] = true;
+  }
+  for (const run_log::RecordedCommand& command : log.commands()) {  // the run's robots and steps (RunLog)
+    if (!step_index(command.step)) continue;
+    const size_t at = static_cast<size_t>(command.step) * n + static_cast<size_t>(command.robot_id);
+    sent[at] = {command.v_mps, command.w_radps};
+    sent_seen[at] = true;
   }
   // Commands: DREAM_APPLIED (a simulated run) where there is one, else the
   // DREAM_CMD_<id> of the step (an imported lab run writes those).

@@ -12,6 +12,7 @@
 #include "dream/run_status_t.hpp"
 #include "dream/velocity_command_t.hpp"
 #include "dream/lcm/lcm_typed.h"
+#include "dream/lcm/message_header.h"
 
 namespace dream::lcm {
 
@@ -29,7 +30,7 @@ std::string RunIdText(int64_t run_id) {
 }
 
 bool ClearRunId(std::vector<uint8_t>* encoded) {
-  constexpr size_t kRunIdAt = 8 + 8 + 8;  // fingerprint, utime, step
+  constexpr size_t kRunIdAt = MessageHeader::kRunIdAt;
   if (encoded->size() < kRunIdAt + 8) return false;
   uint64_t fingerprint = 0;
   for (size_t i = 0; i < 8; ++i) fingerprint = (fingerprint << 8) | (*encoded)[i];

@@ -15,7 +15,7 @@ TruePoseRecording::TruePoseRecording(RunRecorder& recorder, const world::Realist
 TruePoseRecording::~TruePoseRecording() { recorder_.RewriteChannel("", nullptr); }
 
 void TruePoseRecording::Record(int64_t utime, const void* data, int size) {
-  recorder_.Write(kMeasuredPosesChannel, utime, data, size);
+  recorder_.Write(lcm::kMeasuredPosesChannel, utime, data, size);
   robot_poses_t poses;
   // The world encoded it a moment ago; a message that does not decode stays
   // measured only (nothing to put the truth into).

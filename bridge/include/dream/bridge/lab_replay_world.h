@@ -15,11 +15,6 @@ class RunRecorder;
 
 namespace dream::bridge {
 
-/// Prefix of the channels DREAM_LAB_CMD_<id> on which a lab replay records
-/// the command the lab executed at each step (velocity_command_t), beside
-/// the agents' own DREAM_CMD_<id>.
-inline constexpr const char* kLabCommandChannelPrefix = "DREAM_LAB_CMD_";
-
 /// The bridge world: a lab run (imported with `dream import`) replayed step
 /// by step. The poses, velocities and obstacles it offers are the lab's, at
 /// the lab's timestamps; commands from agents change nothing in it and are

@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "dream/node/run_summary.h"
 #include "dream/world/verdict_reason.h"
 
 namespace dream::session {
@@ -26,8 +27,9 @@ struct ExperimentGoal {
   /// goal failed to be judged is not ready whatever stopped it, --steps too.
   std::string judge_error;
 
-  /// Judges a parsed summary.json. Missing metrics count as not met.
-  static ExperimentGoal Judge(const nlohmann::json& summary);
+  /// Judges a summary.json (its metrics, robots, robots_done and steps).
+  /// Missing metrics count as not met.
+  static ExperimentGoal Judge(const node::RunSummary& summary);
 
   /// The verdict reason "goal" (not_ready) when the kind has a criterion and
   /// the run missed it; none otherwise.

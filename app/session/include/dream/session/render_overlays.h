@@ -32,8 +32,6 @@ render::ArenaOverlays ArenaOverlaysFromConfig(const run_config::RunConfig& confi
 /// than any run has: a summary.json is a file anyone may have edited).
 void AddDeclaredGoals(const nlohmann::json& metrics, render::ArenaOverlays* overlays);
 
-/// summary.json files larger than this are not read for their goals.
-inline constexpr std::uintmax_t kMaxSummaryBytes = 64ull << 20;
 /// Robots a message on the bus may carry.
 inline constexpr size_t kMaxGoalRobots = lcm::MessageLimits::kRobots;
 /// As python/dream/run_metrics.py bounds a goal_points() list.

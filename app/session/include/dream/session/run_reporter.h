@@ -9,6 +9,7 @@
 
 #include "dream/agent_host/controller_factory.h"
 #include "dream/node/run_outcome.h"
+#include "dream/node/run_summary.h"
 #include "dream/run_config/run_config.h"
 #include "dream/session/run_result.h"
 #include "dream/world/run_judgement.h"
@@ -73,7 +74,7 @@ class RunReporter {
                                const std::vector<world::VerdictReason>& reasons) const;
 
   static constexpr const char* kLogName = "run.lcmlog";
-  static constexpr const char* kSummaryName = "summary.json";
+  static constexpr const char* kSummaryName = node::RunSummary::kFileName;
   static constexpr const char* kPictureName = "trajectories.png";
   /// summary.json's violations_located lists at most this many (and counts the rest).
   static constexpr size_t kMaxViolationsListed = 100;
@@ -81,7 +82,7 @@ class RunReporter {
  private:
   struct LogReadBack;
   nlohmann::ordered_json Metrics(const LogReadBack& log) const;
-  world::RunJudgement Judge(const Ended& ended, const LogReadBack& log, nlohmann::ordered_json* summary) const;
+  world::RunJudgement Judge(const Ended& ended, const LogReadBack& log, node::RunSummary* summary) const;
   /// -q and a clean run whose goal was judged: nothing to print.
   bool QuietAbout(const world::RunJudgement& judgement, const nlohmann::ordered_json& goal) const;
   void PrintVerdict(const Ended& ended, const world::RunJudgement& judgement, const nlohmann::ordered_json& goal) const;

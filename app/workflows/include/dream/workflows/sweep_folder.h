@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "dream/node/run_summary.h"
 #include "dream/workflows/run_exit.h"
 #include "dream/workflows/slurm_task_state.h"
 #include "dream/workflows/sweep_plan.h"
@@ -108,9 +109,11 @@ class SweepFolder {
 
   /// The last line of a run's output that says what went wrong, for the table.
   static std::string LastErrorLine(const std::string& output_path);
-  /// summary.json, or null when it is missing, larger than 64 MiB, not a
-  /// regular file or not JSON.
-  static nlohmann::json ReadSummary(const std::string& path);
+  /// summary.json read by node::RunSummary, or none when it is missing,
+  /// larger than RunSummary::kMaxBytes, not a regular file, not JSON or a
+  /// field is not what summary.json's field list says (`*problem` then says
+  /// which, with the file; empty for a file that is not there).
+  static std::optional<node::RunSummary> ReadSummary(const std::string& path, std::string* problem);
 
  private:
   std::string dir_;

@@ -4,7 +4,10 @@
 #include <optional>
 #include <string>
 
+#include "dream/node/run_outcome.h"
+#include "dream/node/run_summary.h"
 #include "dream/session/experiment_goal.h"
+#include "dream/world/run_verdict.h"
 #include "dream/world/violation_counts.h"
 #include "dream/workflows/sweep_plan.h"
 
@@ -35,8 +38,8 @@ struct SweepRunResult {
 
   bool has_summary = false;
   std::string run_id;   ///< summary "run_id": two runs with one id are one summary copied
-  std::string end;      ///< summary "end"
-  std::string verdict;  ///< summary "verdict": clean, warning, rejected
+  std::optional<node::RunOutcome::End> end;  ///< summary "end" (none: the summary has none)
+  std::optional<world::RunVerdict> verdict;  ///< summary "verdict" (none: the summary has none)
   long long steps = 0;
   world::ViolationCounts violations;  ///< summary "violations"
   std::optional<double> min_distance_m;  ///< metrics.min_pairwise_distance_m (robot centres)
@@ -44,11 +47,13 @@ struct SweepRunResult {
   bool success = false;
 
   /// Fills the fields above from the process's exit code and its summary.json
-  /// (null when there is none or it could not be read), and judges success.
+  /// (none when there is none or it could not be read: `summary_problem`
+  /// says why, e.g. the field that is wrong), and judges success.
   /// `timed_out`: the sweep stopped it at its time limit (it failed to run).
   /// `failure_hint`: a line from the run's output to quote when it failed.
   static SweepRunResult Judge(const SweepPlan::Run& run, int exit_code, bool timed_out, double wall_time_s,
-                              const nlohmann::json& summary, const std::string& failure_hint);
+                              const std::optional<node::RunSummary>& summary, const std::string& failure_hint,
+                              const std::string& summary_problem = "");
 
   /// For progress lines and the table: "success", "no success (3 collision
   /// errors; 2 of 3 formations)", "failed to run (exit 4: ...)".

@@ -7,9 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "dream/applied_commands_t.hpp"
 #include "dream/obstacles_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
+#include "dream/run_log/recorded_command.h"
 
 namespace dream::run_log {
 
@@ -83,6 +85,22 @@ class RunLog {
   /// the first.
   const obstacles_t& obstacles_at(size_t pose_index) const;
 
+  /// The commands of this run on DREAM_CMD_<id>, ordered by step, then robot:
+  /// of the run id of its poses, for a robot of the run whose id is the
+  /// channel's, answering a step the log has poses for (first_step() ..
+  /// last_step()); one per robot and step (the first: the world records the
+  /// one it took, a recording of the bus may hold resends). So at most
+  /// poses().size() x num_robots(), whatever the log holds; the rest is left out.
+  const std::vector<RecordedCommand>& commands() const { return commands_; }
+  /// In a `dream lab-replay` log, what the lab executed at each step on
+  /// DREAM_LAB_CMD_<id>, by the rules of commands() (the lab's carry run id 0,
+  /// as they answer no world, or the run's); empty in other logs.
+  const std::vector<RecordedCommand>& lab_commands() const { return lab_commands_; }
+  /// Every DREAM_APPLIED of this run that decodes: which command drove each
+  /// robot, one per step the log has poses for (the first), for as many
+  /// robots as the poses have; ordered by step.
+  const std::vector<applied_commands_t>& applied() const { return applied_; }
+
   /// Every DREAM_RADIO_<n> broadcast of this run (the run id of its poses,
   /// sender n, one of its robots) that decodes, by step (log order within a step).
   const std::vector<RadioSend>& radio_sends() const { return radio_sends_; }
@@ -132,6 +150,9 @@ class RunLog {
   std::vector<obstacles_t> obstacles_;
   std::vector<size_t> obstacle_index_;  // per pose: index into obstacles_, kNone before the first
   std::vector<RadioSend> radio_sends_;
+  std::vector<RecordedCommand> commands_;
+  std::vector<RecordedCommand> lab_commands_;
+  std::vector<applied_commands_t> applied_;
   std::optional<run_status_t> last_status_;
   std::map<int, std::string> robot_faults_;
   std::optional<Problem> world_flaw_;   // poses and obstacles

@@ -2,6 +2,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace dream::lcm {
 
@@ -23,6 +24,10 @@ inline constexpr const char* kAppliedChannel = "DREAM_APPLIED";
 /// experiment's time 0): recorded in the run log, never published, no step
 /// of the experiment's.
 inline constexpr const char* kStartupPosesChannel = "DREAM_STARTUP_POSES";
+/// With world.realism on: what the agents were sent on DREAM_POSES (measured:
+/// noisy, delayed), recorded just before the step's true DREAM_POSES; never
+/// published.
+inline constexpr const char* kMeasuredPosesChannel = "DREAM_MEASURED_POSES";
 /// Prefix of the per-robot command channels DREAM_CMD_<id>; agent -> world.
 inline constexpr const char* kCommandChannelPrefix = "DREAM_CMD_";
 /// LCM regex matching every command channel.
@@ -37,6 +42,19 @@ inline constexpr const char* kRadioChannelRegex = "DREAM_RADIO_.*";
 inline constexpr const char* kFaultChannelPrefix = "DREAM_FAULT_";
 inline constexpr const char* kFaultChannelRegex = "DREAM_FAULT_.*";
 
+/// Prefix of DREAM_LAB_CMD_<id> (velocity_command_t): in a `dream lab-replay`
+/// log, the command the lab executed at that step, beside the agent's; never published.
+inline constexpr const char* kLabCommandChannelPrefix = "DREAM_LAB_CMD_";
+
+/// What an agent host hears: the world's step (poses, obstacles, status) and
+/// the robots' radio. (The Python host process relays exactly these.)
+inline constexpr const char* kAgentInboxRegex = "DREAM_(POSES|OBSTACLES|STATUS|RADIO_[0-9]+)";
+/// What an agent host may say: its robots' commands, radio and faults.
+inline constexpr const char* kAgentOutboxRegex = "DREAM_(CMD|RADIO|FAULT)_[0-9]+";
+/// What a viewer of a run draws: the world's step, the measured poses a
+/// realistic world records, and who spoke on the radio.
+inline constexpr const char* kViewChannelsRegex = "DREAM_(POSES|MEASURED_POSES|OBSTACLES|STATUS|RADIO_[0-9]+)";
+
 /// "DREAM_RADIO_<robot_id>".
 inline std::string RadioChannel(int robot_id) { return kRadioChannelPrefix + std::to_string(robot_id); }
 
@@ -44,6 +62,12 @@ inline std::string RadioChannel(int robot_id) { return kRadioChannelPrefix + std
 inline std::string CommandChannel(int robot_id) {
   return kCommandChannelPrefix + std::to_string(robot_id);
 }
+
+/// "DREAM_FAULT_<robot_id>".
+inline std::string FaultChannel(int robot_id) { return kFaultChannelPrefix + std::to_string(robot_id); }
+
+/// "DREAM_LAB_CMD_<robot_id>".
+inline std::string LabCommandChannel(int robot_id) { return kLabCommandChannelPrefix + std::to_string(robot_id); }
 
 /// The robot id after `prefix` in a channel name, or nothing when the suffix
 /// is not a plain non-negative decimal number.
@@ -63,6 +87,25 @@ inline std::optional<int> RobotIdFromChannel(const std::string& channel, const s
 /// The robot id of a DREAM_CMD_<id> channel (see RobotIdFromChannel).
 inline std::optional<int> RobotIdFromCommandChannel(const std::string& channel) {
   return RobotIdFromChannel(channel, kCommandChannelPrefix);
+}
+
+/// A channel an agent host sends on (kAgentOutboxRegex), by its kind and robot.
+struct AgentChannel {
+  enum class Kind { kCommand, kRadio, kFault };
+  Kind kind = Kind::kCommand;
+  int robot_id = 0;
+};
+
+/// `channel` as DREAM_CMD_<id>, DREAM_RADIO_<id> or DREAM_FAULT_<id> (an id of
+/// at most 6 decimal digits), or nothing for any other name.
+inline std::optional<AgentChannel> ParseAgentChannel(const std::string& channel) {
+  using Kind = AgentChannel::Kind;
+  for (const auto& [prefix, kind] : {std::pair{kCommandChannelPrefix, Kind::kCommand},
+                                     std::pair{kRadioChannelPrefix, Kind::kRadio},
+                                     std::pair{kFaultChannelPrefix, Kind::kFault}}) {
+    if (const std::optional<int> id = RobotIdFromChannel(channel, prefix)) return AgentChannel{kind, *id};
+  }
+  return std::nullopt;
 }
 
 }  // namespace dream::lcm

@@ -16,7 +16,6 @@ namespace dream::node {
 class TruePoseRecording {
  public:
   /// The channel of the poses the agents were sent.
-  static constexpr const char* kMeasuredPosesChannel = "DREAM_MEASURED_POSES";
 
   /// Rewrites `recorder`'s DREAM_POSES until destroyed. Both must outlive it.
   TruePoseRecording(RunRecorder& recorder, const world::RealisticWorld& world);
