@@ -21,6 +21,7 @@ namespace fs = std::filesystem;
 // A lab run is read into the bridge's RunTrack from the file formats' arrays.
 using bridge::ReadRunTrack;
 using bridge::RunTrack;
+using bridge::RunTrackOf;
 using formats::NpyArray;
 using formats::NpzFile;
 using formats::ReadMatArray;
