@@ -107,8 +107,8 @@ void HrvoExact::Offer(const Eigen::Vector2d& v, const Eigen::Vector2d& target, B
   }
 }
 
-bool HrvoExact::LineRange(const Eigen::Vector2d& o, const Eigen::Vector2d& u, double t_min, const Box& box,
-                          double* lo, double* hi) const {
+bool HrvoExact::LineRange(const Eigen::Vector2d& o, const Eigen::Vector2d& u, double t_min, const Box& box, double* lo,
+                          double* hi) const {
   *lo = t_min;
   *hi = kInf;
   // |o + t u| <= v_max (u is a unit vector).
@@ -206,9 +206,7 @@ Eigen::Vector2d HrvoExact::LeastPenetrating(const Box& box, const Eigen::Vector2
   const double v_max = params_.max_speed_mps;
   // Made to respect speed and arena: the box holds zero and is convex, so
   // shrinking towards zero after clamping stays inside it.
-  const auto hard = [&](const Eigen::Vector2d& v) {
-    return ClipToDisc(v.cwiseMax(box.lo).cwiseMin(box.hi), v_max);
-  };
+  const auto hard = [&](const Eigen::Vector2d& v) { return ClipToDisc(v.cwiseMax(box.lo).cwiseMin(box.hi), v_max); };
   Eigen::Vector2d best = Eigen::Vector2d::Zero();
   double best_score = kInf;
   double best_distance_sq = kInf;

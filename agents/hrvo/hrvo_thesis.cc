@@ -88,8 +88,7 @@ bool RemoveSamplesInside(const Wedge& wedge, const std::vector<Eigen::Vector2d>&
   for (size_t k = 0; k < samples.size(); ++k) {
     if (!(*keep)[k]) continue;
     const Eigen::Vector2d& v = samples[k];
-    const bool inside = left.m0 * v.x() + left.m1 * v.y() < left.vec &&
-                        right.m0 * v.x() + right.m1 * v.y() < right.vec;
+    const bool inside = left.m0 * v.x() + left.m1 * v.y() < left.vec && right.m0 * v.x() + right.m1 * v.y() < right.vec;
     if (inside) {
       (*keep)[k] = 0;
     } else {

@@ -5,9 +5,7 @@
 
 namespace dream::agents {
 
-std::vector<uint8_t> PositionMessage::Encode() const {
-  return ByteWriter().Int32(id).Vector2(position_m).Take();
-}
+std::vector<uint8_t> PositionMessage::Encode() const { return ByteWriter().Int32(id).Vector2(position_m).Take(); }
 
 std::optional<PositionMessage> PositionMessage::Decode(const std::vector<uint8_t>& payload, int sender_id) {
   ByteReader reader(payload);

@@ -41,8 +41,8 @@ CommunicationGraph::CommunicationGraph(Eigen::MatrixXd adjacency, int num_robots
       }
       if (require_symmetric && adjacency_(i, j) != adjacency_(j, i)) {
         throw std::invalid_argument("must be symmetric, but entry (" + std::to_string(i) + ", " + std::to_string(j) +
-                                    ") is " + NumberText(adjacency_(i, j)) + " and (" + std::to_string(j) +
-                                    ", " + std::to_string(i) + ") is " + NumberText(adjacency_(j, i)));
+                                    ") is " + NumberText(adjacency_(i, j)) + " and (" + std::to_string(j) + ", " +
+                                    std::to_string(i) + ") is " + NumberText(adjacency_(j, i)));
       }
     }
     if (adjacency_(i, i) != 0.0) {
@@ -110,8 +110,8 @@ Mailbox::Mailbox(const RadioLinkParams& params, uint64_t seed) : params_(params)
 
 void Mailbox::Post(RadioMessage message) {
   if (params_.loss_probability > 0.0) {
-    const uint64_t draw = NoiseSource::MixSeed(seed_, static_cast<uint64_t>(message.sender_id),
-                                               static_cast<uint64_t>(message.sent_step));
+    const uint64_t draw =
+        NoiseSource::MixSeed(seed_, static_cast<uint64_t>(message.sender_id), static_cast<uint64_t>(message.sent_step));
     if (static_cast<double>(draw >> 11) * 0x1.0p-53 < params_.loss_probability) {
       ++lost_;
       return;

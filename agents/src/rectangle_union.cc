@@ -5,9 +5,7 @@
 namespace dream::agents {
 namespace {
 
-bool Empty(const RectangleUnion::Box& box) {
-  return !(box.min_m.x() < box.max_m.x() && box.min_m.y() < box.max_m.y());
-}
+bool Empty(const RectangleUnion::Box& box) { return !(box.min_m.x() < box.max_m.x() && box.min_m.y() < box.max_m.y()); }
 
 RectangleUnion::Box Intersect(const RectangleUnion::Box& a, const RectangleUnion::Box& b) {
   return {a.min_m.cwiseMax(b.min_m), a.max_m.cwiseMin(b.max_m)};

@@ -28,8 +28,7 @@ RobotAgent::Output RobotAgent::Step(const WorldSnapshot& world) {
     if (due[i]) spec_.sensors[i].sensor->Sense(world, *spec_.robot);
   }
   if (due[radio_slot] && spec_.radio) {
-    std::optional<std::vector<uint8_t>> payload =
-        spec_.robot->OnRadio(mailbox_.Heard(*spec_.radio, id(), world));
+    std::optional<std::vector<uint8_t>> payload = spec_.robot->OnRadio(mailbox_.Heard(*spec_.radio, id(), world));
     if (payload && spec_.radio->publishes()) {
       output.broadcast = RadioMessage{id(), world.step, std::move(*payload)};
     }

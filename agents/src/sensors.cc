@@ -17,17 +17,14 @@ double WrapAngle(double angle_rad) { return std::atan2(std::sin(angle_rad), std:
 
 }  // namespace
 
-bool OdometrySensorParams::IsValid(std::string* error) const {
-  return CheckNonNegative(error, "noise_std", noise_std);
-}
+bool OdometrySensorParams::IsValid(std::string* error) const { return CheckNonNegative(error, "noise_std", noise_std); }
 
 bool MovementSensorParams::IsValid(std::string* error) const {
   if (!CheckPositive(error, "range_m", range_m)) return false;
   if (!std::isfinite(direction_rad)) return FailParams(error, "direction_rad must be finite");
   // 2 pi as people write it (6.2832, rounded up) is a full circle too.
   if (!(field_of_view_rad > 0.0 && field_of_view_rad <= 2 * M_PI + kFullCircleSlackRad)) {
-    return FailParams(error,
-                      "field_of_view_rad must be in (0, 2 pi = 6.2832], got " + NumberText(field_of_view_rad));
+    return FailParams(error, "field_of_view_rad must be in (0, 2 pi = 6.2832], got " + NumberText(field_of_view_rad));
   }
   return CheckNonNegative(error, "noise_std", noise_std) &&
          CheckNonNegative(error, "velocity_point_ahead_m", velocity_point_ahead_m);
@@ -65,10 +62,9 @@ void MovementSensor::Sense(const WorldSnapshot& world, Robot& robot) {
     const double theta = world.poses[i].z();
     const Eigen::Vector2d vw = i < world.velocities.size() ? world.velocities[i] : Eigen::Vector2d::Zero();
     const double ahead = params().velocity_point_ahead_m;
-    detection.velocity_mps = {std::cos(theta) * vw.x() - ahead * std::sin(theta) * vw.y() +
-                                  noise().Gaussian(params().noise_std),
-                              std::sin(theta) * vw.x() + ahead * std::cos(theta) * vw.y() +
-                                  noise().Gaussian(params().noise_std)};
+    detection.velocity_mps = {
+        std::cos(theta) * vw.x() - ahead * std::sin(theta) * vw.y() + noise().Gaussian(params().noise_std),
+        std::sin(theta) * vw.x() + ahead * std::cos(theta) * vw.y() + noise().Gaussian(params().noise_std)};
     reading.neighbours.push_back(detection);
   }
   robot.OnMovement(reading);

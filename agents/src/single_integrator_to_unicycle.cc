@@ -16,8 +16,7 @@ SingleIntegratorToUnicycle::SingleIntegratorToUnicycle(double linear_gain, doubl
   }
 }
 
-UnicycleCommand SingleIntegratorToUnicycle::Map(const Eigen::Vector2d& velocity_world_mps,
-                                                double theta_rad) const {
+UnicycleCommand SingleIntegratorToUnicycle::Map(const Eigen::Vector2d& velocity_world_mps, double theta_rad) const {
   const Eigen::Vector2d forward(std::cos(theta_rad), std::sin(theta_rad));
   const Eigen::Vector2d left(-std::sin(theta_rad), std::cos(theta_rad));
   const double along = forward.dot(velocity_world_mps);

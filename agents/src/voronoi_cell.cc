@@ -16,8 +16,8 @@ bool VoronoiCellParams::IsValid(std::string* error) const {
   if (!CheckFields(fields, error) || !CheckArena(error, arena_min_m, arena_max_m)) return false;
   if (!(std::isfinite(wall_margin_m) && wall_margin_m >= 0.0) ||
       2.0 * wall_margin_m >= (arena_max_m - arena_min_m).minCoeff()) {
-    return FailParams(error, "wall_margin_m must be >= 0 and leave room inside the arena, got " +
-                                 NumberText(wall_margin_m));
+    return FailParams(error,
+                      "wall_margin_m must be >= 0 and leave room inside the arena, got " + NumberText(wall_margin_m));
   }
   return true;
 }

@@ -19,7 +19,8 @@ void KeepControllerModule(const run_config::RunConfig& config, const files::Outp
   // An absolute path stays valid as written; a relative one never leaves the
   // config's folder (FileBesideConfig refuses that).
   if (written.is_absolute()) return;
-  out.WriteFileInSubfolders(written.string(), files::ReadFileText(config::FileBesideConfig(node, kind->file_key).string()));
+  out.WriteFileInSubfolders(written.string(),
+                            files::ReadFileText(config::FileBesideConfig(node, kind->file_key).string()));
 }
 
 void KeepRealismFile(const run_config::RunConfig& config, const files::OutputFolder& out) {

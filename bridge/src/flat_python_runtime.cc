@@ -46,10 +46,10 @@ void AddImportedNames(const std::string& text, std::set<std::string>* names) {
 
 bool IsPythonKeyword(const std::string& word) {
   static const std::set<std::string> kKeywords = {
-      "False", "None",   "True",    "and",      "as",       "assert", "async", "await",  "break",
-      "class", "continue", "def",   "del",      "elif",     "else",   "except", "finally", "for",
-      "from",  "global", "if",      "import",   "in",       "is",     "lambda", "nonlocal", "not",
-      "or",    "pass",   "raise",   "return",   "try",      "while",  "with",  "yield"};
+      "False", "None",     "True",  "and",    "as",   "assert", "async",  "await",    "break",
+      "class", "continue", "def",   "del",    "elif", "else",   "except", "finally",  "for",
+      "from",  "global",   "if",    "import", "in",   "is",     "lambda", "nonlocal", "not",
+      "or",    "pass",     "raise", "return", "try",  "while",  "with",   "yield"};
   return kKeywords.count(word) != 0;
 }
 
@@ -65,9 +65,8 @@ const std::vector<std::string>& FlatPythonRuntime::ShippedModules() {
   // they and a controller import. Never lcm, agent_host, embedded: the
   // LCM transport and hosting, which the script replaces.
   static const std::vector<std::string> kModules = {
-      "motion", "robot",    "sensors",        "radios",          "timer",       "robot_agent", "controller_spec",
-      "hrvo",   "barriers", "toolbox_checks", "transformations", "controllers", "graph",       "misc",
-      "__init__"};
+      "motion",   "robot",          "sensors",         "radios",      "timer", "robot_agent", "controller_spec", "hrvo",
+      "barriers", "toolbox_checks", "transformations", "controllers", "graph", "misc",        "__init__"};
   return kModules;
 }
 
@@ -98,15 +97,18 @@ std::string FlatPythonRuntime::Flatten(const std::string& module, const std::str
       }
       const bool opens = names.find('(') != std::string::npos && names.find(')') == std::string::npos;
       if (opens || (!names.empty() && names.back() == '\\')) {
-        throw std::runtime_error(where + "a relative import spans lines; the flat-file rule wants one line, "
-                                 "`from ." + target + " import a, b` (docs/python-runtime-contract.md)");
+        throw std::runtime_error(where +
+                                 "a relative import spans lines; the flat-file rule wants one line, "
+                                 "`from ." +
+                                 target + " import a, b` (docs/python-runtime-contract.md)");
       }
       out += match[1].str() + "from " + FileNameOf(target).substr(0, FileNameOf(target).size() - 3) + " import " +
              names + "\n";
       continue;
     }
     if (std::regex_search(line, kOtherPackageImport)) {
-      throw std::runtime_error(where + "'" + line + "': inside the package only single-line `from .X import a, b` "
+      throw std::runtime_error(where + "'" + line +
+                               "': inside the package only single-line `from .X import a, b` "
                                "imports work in a Robotarium submission's flat files "
                                "(docs/python-runtime-contract.md)");
     }
@@ -145,14 +147,16 @@ std::string FlatPythonRuntime::ControllerFileName(const std::string& module_path
     throw std::runtime_error(config_file + ": controller.module: '" + module_path + "': " + problem);
   };
   if (path.extension() != ".py" || !IsIdentifier(stem) || IsPythonKeyword(stem)) {
-    refuse("'" + name + "' is not an importable module file name (letters, digits and _, not a Python keyword, "
+    refuse("'" + name +
+           "' is not an importable module file name (letters, digits and _, not a Python keyword, "
            "ending in .py); rename the file");
   }
   if (stem == "dream" || stem.rfind("dream_", 0) == 0) {
     refuse("'" + name + "' would clash with the submission's own files (dream.py, dream_*.py); rename the module");
   }
   if (taken.count(stem) != 0) {
-    refuse("'" + name + "' would hide the module '" + stem + "' that the submission script or the runtime imports; "
+    refuse("'" + name + "' would hide the module '" + stem +
+           "' that the submission script or the runtime imports; "
            "rename the module");
   }
   std::set<std::string> imported;
@@ -167,7 +171,8 @@ std::string FlatPythonRuntime::ControllerFileName(const std::string& module_path
     if (helper == "dream") continue;  // the runtime, shipped as dream.py
     std::error_code error;
     if (fs::is_regular_file(folder / (helper + ".py"), error) || fs::is_directory(folder / helper, error)) {
-      refuse("it imports '" + helper + "', which sits beside it; a submission ships the controller module alone — "
+      refuse("it imports '" + helper +
+             "', which sits beside it; a submission ships the controller module alone — "
              "put what it needs into the module");
     }
   }

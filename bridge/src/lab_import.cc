@@ -46,10 +46,14 @@ constexpr double kMaxAbsCommand = 1e6;
 /// "x of robot 3" for a result column.
 std::string ColumnMeaning(int64_t column, int num_robots) {
   switch (column) {
-    case ResultLayout::kPhaseColumn: return "the phase column";
-    case ResultLayout::kStepColumn: return "the step column";
-    case ResultLayout::kWallTimeColumn: return "the wall-clock column";
-    default: break;
+    case ResultLayout::kPhaseColumn:
+      return "the phase column";
+    case ResultLayout::kStepColumn:
+      return "the step column";
+    case ResultLayout::kWallTimeColumn:
+      return "the wall-clock column";
+    default:
+      break;
   }
   static const char* kNames[] = {"x", "y", "theta", "v", "w"};
   const int64_t index = column - ResultLayout::kFixedColumns;
@@ -57,7 +61,7 @@ std::string ColumnMeaning(int64_t column, int num_robots) {
 }
 
 std::vector<std::vector<world::ObstacleState>> ObstaclesPerStep(const std::vector<world::RectangleObstacleSpec>& specs,
-                                                              int64_t last_step, double time_step_s) {
+                                                                int64_t last_step, double time_step_s) {
   std::vector<world::RectangleObstacle> obstacles(specs.begin(), specs.end());
   std::vector<std::vector<world::ObstacleState>> states(static_cast<size_t>(last_step + 1));
   for (auto& step_states : states) {
@@ -168,8 +172,8 @@ formats::NpyArray ReadResultFile(const std::string& path, int64_t max_values) {
   if ((got >= 6 && std::memcmp(head, "MATLAB", 6) == 0) || extension == ".mat") {
     return formats::ReadMatMatrix(path, SubmissionFiles::kResultMatVariable, max_values);
   }
-  throw std::runtime_error(path + ": neither a .npy file nor a MATLAB .mat file; pass the " +
-                           SubmissionFiles::kResult + " the submission saved");
+  throw std::runtime_error(path + ": neither a .npy file nor a MATLAB .mat file; pass the " + SubmissionFiles::kResult +
+                           " the submission saved");
 }
 
 namespace {
@@ -193,8 +197,8 @@ void CheckResultValues(const formats::NpyArray& rows, int n, const ResultFileErr
     const bool other_run = columns > ResultLayout::kFixedColumns && (columns - ResultLayout::kFixedColumns) % 5 == 0;
     fail("has " + std::to_string(columns) + " columns" +
          (other_run ? ", as a result of a " + std::to_string(robots) + "-robot run;" : ";") + " this export has " +
-         std::to_string(n) + " robots, whose results have " + std::to_string(ResultLayout::Columns(n)) +
-         " (3 + 5 x " + std::to_string(n) + "): is it the result of another export?");
+         std::to_string(n) + " robots, whose results have " + std::to_string(ResultLayout::Columns(n)) + " (3 + 5 x " +
+         std::to_string(n) + "): is it the result of another export?");
   }
   if (row_count == 0) fail("holds no rows: the script stopped before its first step (see the lab's output)");
   for (int64_t r = 0; r < row_count; ++r) {
@@ -269,9 +273,10 @@ ResultPhases FindPhases(const formats::NpyArray& rows, const SubmissionParams& p
   }
   if (r < row_count) {
     const double phase = at(r, ResultLayout::kPhaseColumn);
-    fail("row " + std::to_string(r) + ": phase " + std::to_string(phase) +
-         (phase == 0 || phase == 1 || phase == 2 ? " out of order" : " is not 0 (settle), 1 (experiment) or 2 (final)") +
-         "; the file is damaged or not a dream result");
+    fail(
+        "row " + std::to_string(r) + ": phase " + std::to_string(phase) +
+        (phase == 0 || phase == 1 || phase == 2 ? " out of order" : " is not 0 (settle), 1 (experiment) or 2 (final)") +
+        "; the file is damaged or not a dream result");
   }
   if (phases.pose_rows() < 2) {
     fail("has " + std::to_string(phases.pose_rows()) + " experiment poses; at least 2 are needed (the lab run " +
@@ -291,8 +296,8 @@ void FillTrack(const formats::NpyArray& rows, const ResultPhases& phases, int n,
   track.poses.resize(static_cast<size_t>(pose_rows) * un);
   track.commands.resize(track.poses.size());
   track.utime.resize(static_cast<size_t>(pose_rows));
-  const double t0 = rows.values[static_cast<size_t>(phases.first_experiment_row * columns +
-                                                    ResultLayout::kWallTimeColumn)];
+  const double t0 =
+      rows.values[static_cast<size_t>(phases.first_experiment_row * columns + ResultLayout::kWallTimeColumn)];
   int64_t previous_utime = 0;
   double previous_time = t0;
   for (int64_t k = 0; k < pose_rows; ++k) {
@@ -330,7 +335,8 @@ LabResult ParseLabResult(const formats::NpyArray& rows, const std::string& name,
   LabResult result;
   result.settle_steps = phases.settle;
   result.planned_steps = params.steps;
-  result.iterations = phases.settle + phases.experiment;  // the script calls step() after each settle and experiment row
+  result.iterations =
+      phases.settle + phases.experiment;  // the script calls step() after each settle and experiment row
   result.complete = phases.final_row;
   FillTrack(rows, phases, params.num_robots, &result);
   RunTrack& track = result.track;
@@ -339,12 +345,12 @@ LabResult ParseLabResult(const formats::NpyArray& rows, const std::string& name,
 }
 
 world::ViolationCounts WriteLabRunLog(const RunTrack& track, const world::WorldParams& world, int8_t end_state,
-                                    const std::string& detail, const std::string& log_path) {
+                                      const std::string& detail, const std::string& log_path) {
   return WriteLog(track, world, end_state, detail, log_path).violations();
 }
 
 std::vector<world::VerdictReason> LabVerifierReasons(const LabResult& lab, const world::WorldParams& world,
-                                                   const world::LabVerifierRules::Declaration& declared) {
+                                                     const world::LabVerifierRules::Declaration& declared) {
   world::LabVerifierRules rules;
   rules.time_step_s = world.time_step_s;
   world::LabVerifierRules::Counts counts = VerifierCounts(lab.track, world);
@@ -405,9 +411,9 @@ ImportedRun ImportLabRun(const std::string& result_path, const std::string& expo
   imported.log_path = out.PathOf("run.lcmlog");
   const std::string detail = EndDetail(lab);
   int64_t log_events = 0;
-  auto world = std::make_shared<LabReplayWorld>(
-      WriteLog(lab.track, exported.config.world, lab.complete ? run_status_t::FINISHED : run_status_t::ABORTED,
-               detail, imported.log_path, &log_events));
+  auto world = std::make_shared<LabReplayWorld>(WriteLog(lab.track, exported.config.world,
+                                                         lab.complete ? run_status_t::FINISHED : run_status_t::ABORTED,
+                                                         detail, imported.log_path, &log_events));
   imported.violations = world->violations();
   out.WriteFile("config.yaml", exported.config_text);
   KeepControllerModule(exported.config, out);

@@ -112,13 +112,15 @@ void LabReplayWorld::Step() {
 bool LabReplayWorld::has_agent_command(int64_t step, int robot) const {
   CheckRobotId(robot, "has_agent_command");
   if (step < 0 || step >= step_) return false;
-  return has_agent_command_[static_cast<size_t>(step) * static_cast<size_t>(track_.num_robots) + static_cast<size_t>(robot)] != 0;
+  return has_agent_command_[static_cast<size_t>(step) * static_cast<size_t>(track_.num_robots) +
+                            static_cast<size_t>(robot)] != 0;
 }
 
 const world::UnicycleCommand& LabReplayWorld::agent_command(int64_t step, int robot) const {
   CheckRobotId(robot, "agent_command");
   if (step < 0 || step >= step_) throw std::out_of_range("LabReplayWorld::agent_command: step not taken yet");
-  return agent_commands_[static_cast<size_t>(step) * static_cast<size_t>(track_.num_robots) + static_cast<size_t>(robot)];
+  return agent_commands_[static_cast<size_t>(step) * static_cast<size_t>(track_.num_robots) +
+                         static_cast<size_t>(robot)];
 }
 
 }  // namespace dream::bridge

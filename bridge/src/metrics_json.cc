@@ -45,7 +45,8 @@ nlohmann::ordered_json MetricsJson(const run_config::RunConfig& config, const ag
   nlohmann::ordered_json json = MetricsJson(factory, log);
   // A kind whose robots run in the Python runtime has its own metrics and goal there.
   const kind_api::ControllerKind& kind = factory.registered_kind();
-  if (json.contains("error") || python_runtime_dir.empty() || kind.runtime != kind_api::ControllerKind::Runtime::kPython) {
+  if (json.contains("error") || python_runtime_dir.empty() ||
+      kind.runtime != kind_api::ControllerKind::Runtime::kPython) {
     return json;
   }
   try {

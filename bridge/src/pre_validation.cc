@@ -69,22 +69,23 @@ void AddLabLimitProblems(const RunTrack& track, const world::WorldParams& world,
                          std::vector<ExportProblem>* problems) {
   const int n = track.num_robots;
   if (n < 1 || n > limits.max_robots) {
-    problems->push_back({"robots", -1, -1, -1,
-                        "the run has " + std::to_string(n) + " robots; the Robotarium runs 1 to " +
-                            std::to_string(limits.max_robots),
-                        "set `robots:` to at most " + std::to_string(limits.max_robots) + " in the config and run again"});
+    problems->push_back(
+        {"robots", -1, -1, -1,
+         "the run has " + std::to_string(n) + " robots; the Robotarium runs 1 to " + std::to_string(limits.max_robots),
+         "set `robots:` to at most " + std::to_string(limits.max_robots) + " in the config and run again"});
   }
   const int64_t iterations = steps + settle_max_steps;
   const double duration_s = static_cast<double>(iterations) * world.time_step_s;
   if (duration_s > limits.max_duration_s) {
-    const auto max_steps = static_cast<int64_t>(std::floor(limits.max_duration_s / world.time_step_s)) - settle_max_steps;
+    const auto max_steps =
+        static_cast<int64_t>(std::floor(limits.max_duration_s / world.time_step_s)) - settle_max_steps;
     problems->push_back({"duration", -1, -1, -1,
-                        std::to_string(steps) + " steps + " + std::to_string(settle_max_steps) + " settle steps take " +
-                            Num(duration_s, 1) + " s on the lab, over its cap of " + Num(limits.max_duration_s, 0) +
-                            " s (iterations x " + Num(world.time_step_s) + " s)",
-                        "run at most " + std::to_string(std::max<int64_t>(max_steps, 0)) +
-                            " steps (`steps:` in the config, or dream run --steps), or export with fewer "
-                            "--settle-steps"});
+                         std::to_string(steps) + " steps + " + std::to_string(settle_max_steps) +
+                             " settle steps take " + Num(duration_s, 1) + " s on the lab, over its cap of " +
+                             Num(limits.max_duration_s, 0) + " s (iterations x " + Num(world.time_step_s) + " s)",
+                         "run at most " + std::to_string(std::max<int64_t>(max_steps, 0)) +
+                             " steps (`steps:` in the config, or dream run --steps), or export with fewer "
+                             "--settle-steps"});
   }
   // The lab verifier's rules, on what the script will do: ask for the
   // recorded robots and run at most `iterations` steps.
@@ -107,19 +108,20 @@ void AddLabLimitProblems(const RunTrack& track, const world::WorldParams& world,
 void AddEndProblems(const RunTrack& track, const RunEnd& end, std::vector<ExportProblem>* problems) {
   if (!end.seen || end.state != run_status_t::FINISHED) {
     problems->push_back({"finished", -1, -1, track.last_step(),
-                        "the run did not finish (" + (end.seen ? end.detail : std::string("no DREAM_STATUS in the log")) +
-                            "); its recording stops early",
-                        "run the experiment to its end and export that run"});
+                         "the run did not finish (" +
+                             (end.seen ? end.detail : std::string("no DREAM_STATUS in the log")) +
+                             "); its recording stops early",
+                         "run the experiment to its end and export that run"});
   }
   for (int id : end.lost_robot_ids) {
     const auto fault = end.robot_faults.find(id);
     if (fault != end.robot_faults.end()) {
       problems->push_back({"lost_robot", id, -1, -1, "its controller failed at " + fault->second,
-                          "fix the controller and run again (summary.json robot_faults has the error)"});
+                           "fix the controller and run again (summary.json robot_faults has the error)"});
     } else {
       problems->push_back({"lost_robot", id, -1, -1,
-                          "was lost at the end of the run: its agent fell silent, so the world stopped it",
-                          "run again with every robot's agent running to the end"});
+                           "was lost at the end of the run: its agent fell silent, so the world stopped it",
+                           "run again with every robot's agent running to the end"});
     }
   }
 }
@@ -135,12 +137,12 @@ void AddStartPoseProblems(const RunTrack& track, const world::WorldParams& world
     if (p.x_m < arena.x_min_m + margin || p.x_m > arena.x_max_m - margin || p.y_m < arena.y_min_m + margin ||
         p.y_m > arena.y_max_m - margin) {
       problems->push_back({"start_inside_arena", i, -1, 0,
-                          "starts at (" + Num(p.x_m) + ", " + Num(p.y_m) + "), closer than " + Num(margin) +
-                              " m to the arena's edge (x in [" + Num(arena.x_min_m, 1) + ", " + Num(arena.x_max_m, 1) +
-                              "], y in [" + Num(arena.y_min_m, 1) + ", " + Num(arena.y_max_m, 1) +
-                              "]): the lab cannot place the robot there",
-                          "move robot " + std::to_string(i) + "'s start pose (initial_poses) at least " + Num(margin) +
-                              " m inside the arena"});
+                           "starts at (" + Num(p.x_m) + ", " + Num(p.y_m) + "), closer than " + Num(margin) +
+                               " m to the arena's edge (x in [" + Num(arena.x_min_m, 1) + ", " + Num(arena.x_max_m, 1) +
+                               "], y in [" + Num(arena.y_min_m, 1) + ", " + Num(arena.y_max_m, 1) +
+                               "]): the lab cannot place the robot there",
+                           "move robot " + std::to_string(i) + "'s start pose (initial_poses) at least " + Num(margin) +
+                               " m inside the arena"});
     }
   }
   const double d = limits.start_projection_m;
@@ -151,12 +153,12 @@ void AddStartPoseProblems(const RunTrack& track, const world::WorldParams& world
       const double gap = std::hypot(a.x_m + d * std::cos(a.theta_rad) - b.x_m - d * std::cos(b.theta_rad),
                                     a.y_m + d * std::sin(a.theta_rad) - b.y_m - d * std::sin(b.theta_rad));
       if (gap < limits.start_spacing_m) {
-        problems->push_back({"start_spacing", i, j, 0,
-                            "start poses are " + Num(gap) + " m apart (measured " + Num(d, 2) +
-                                " m ahead of each robot); the lab's start-up routine cannot bring robots closer than " +
-                                Num(limits.start_spacing_m, 2) + " m, so the run would likely be rejected",
-                            "spread the start poses (initial_poses) to at least " + Num(limits.start_spacing_m, 2) +
-                                " m apart"});
+        problems->push_back(
+            {"start_spacing", i, j, 0,
+             "start poses are " + Num(gap) + " m apart (measured " + Num(d, 2) +
+                 " m ahead of each robot); the lab's start-up routine cannot bring robots closer than " +
+                 Num(limits.start_spacing_m, 2) + " m, so the run would likely be rejected",
+             "spread the start poses (initial_poses) to at least " + Num(limits.start_spacing_m, 2) + " m apart"});
       }
     }
   }
@@ -177,32 +179,44 @@ void AddRecordedViolations(const RunTrack& track, const RunEnd& end, const world
       checker.Check(k, poses, nullptr, track.obstacles[static_cast<size_t>(k)]);
       const world::StepEvents& events = checker.last_step_events();
       for (int id : events.out_of_bounds_robot_ids) out_of_bounds.emplace(id, k);
-      for (const auto& pair : events.colliding_pairs) collisions.emplace(std::make_pair(pair.first_robot_id, pair.second_robot_id), k);
-      for (const auto& contact : events.obstacle_contacts) contacts.emplace(std::make_pair(contact.robot_id, contact.obstacle_id), k);
+      for (const auto& pair : events.colliding_pairs)
+        collisions.emplace(std::make_pair(pair.first_robot_id, pair.second_robot_id), k);
+      for (const auto& contact : events.obstacle_contacts)
+        contacts.emplace(std::make_pair(contact.robot_id, contact.obstacle_id), k);
     }
     ListFirstSteps(out_of_bounds, problems, [&](int robot, int64_t step) -> ExportProblem {
       const world::Pose2& p = track.pose(step, robot);
-      return {"boundary", robot, -1, step,
+      return {"boundary",
+              robot,
+              -1,
+              step,
               "is outside the arena at (" + Num(p.x_m) + ", " + Num(p.y_m) +
                   "): the Robotarium rejects runs with boundary errors",
               "keep the controller's targets inside the arena (or enable its wall check) and run again"};
     });
     ListFirstSteps(collisions, problems, [&](const std::pair<int, int>& pair, int64_t step) -> ExportProblem {
-      return {"collision", pair.first, pair.second, step,
+      return {"collision",
+              pair.first,
+              pair.second,
+              step,
               "are closer than " + Num(world.collision_diameter_m) +
                   " m (collision): the Robotarium rejects runs with collisions",
               "make the controller keep robots apart (e.g. HRVO with a larger safety radius) and run again"};
     });
     ListFirstSteps(contacts, problems, [](const std::pair<int, int>& pair, int64_t step) -> ExportProblem {
-      return {"obstacle", pair.first, pair.second, step, "touches the virtual obstacle, which stands for a real one",
+      return {"obstacle",
+              pair.first,
+              pair.second,
+              step,
+              "touches the virtual obstacle, which stands for a real one",
               "make the controller avoid the obstacle (obstacle sensor, buffer) and run again"};
     });
     const int64_t hard = end.violations.hard_errors();
     if (hard > 0 && out_of_bounds.empty() && collisions.empty() && contacts.empty()) {
-      problems->push_back({"violations", -1, -1, end.step,
-                          "the run's status reports " + std::to_string(hard) +
-                              " hard errors that its recorded poses do not show",
-                          "run the experiment again and export the new run"});
+      problems->push_back(
+          {"violations", -1, -1, end.step,
+           "the run's status reports " + std::to_string(hard) + " hard errors that its recorded poses do not show",
+           "run the experiment again and export the new run"});
     }
   }
 }

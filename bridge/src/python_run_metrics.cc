@@ -91,7 +91,8 @@ int RunPython(const std::string& script, const std::string& mode, const fs::path
   const int spawn_error = ::posix_spawn(&pid, DREAM_PYTHON3_EXECUTABLE, &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   if (spawn_error != 0) {
-    throw std::runtime_error(std::string("cannot start ") + DREAM_PYTHON3_EXECUTABLE + " (Debian's python3 and python3-numpy)");
+    throw std::runtime_error(std::string("cannot start ") + DREAM_PYTHON3_EXECUTABLE +
+                             " (Debian's python3 and python3-numpy)");
   }
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
   int status = 0;
@@ -118,8 +119,8 @@ std::string ScriptIn(const std::string& runtime_dir) {
 /// class's functions in errors ("metrics()/goal()").
 nlohmann::json RunScript(const std::string& script, const std::string& mode, const TempFiles& temp, double timeout_s,
                          const std::string& what) {
-  const int status = RunPython(script, mode, temp.dir / "input", temp.dir / "output.json", temp.dir / "errors",
-                               timeout_s);
+  const int status =
+      RunPython(script, mode, temp.dir / "input", temp.dir / "output.json", temp.dir / "errors", timeout_s);
   if (status == -1) {
     throw std::runtime_error("the controller's " + what + " took more than " +
                              std::to_string(static_cast<int>(timeout_s)) + " s: stopped");

@@ -50,8 +50,8 @@ struct ComparedFolders {
 
   static run_config::RunConfig LoadConfig(const std::string& first_dir, const std::string& second_dir) {
     const std::string config_path = (fs::path(first_dir) / "config.yaml").string();
-    for (const fs::path& path : {fs::path(first_dir) / "run.lcmlog", fs::path(second_dir) / "run.lcmlog",
-                                 fs::path(config_path)}) {
+    for (const fs::path& path :
+         {fs::path(first_dir) / "run.lcmlog", fs::path(second_dir) / "run.lcmlog", fs::path(config_path)}) {
       if (!fs::exists(path)) {
         throw std::runtime_error(path.string() + ": missing; pass two run folders (dream run / dream import)");
       }
@@ -181,8 +181,7 @@ std::string RunComparison::Text() const {
             Pad(Format("%.2f", r.heading_rad.Rms() * 180.0 / M_PI), 18) + "\n";
   }
   text += "    all" + Pad(Cm(position_m.Rms()), 9) + Pad(Cm(position_m.max()), 9) +
-          Pad(std::to_string(position_m.max_step()), 10) + "   (robot " +
-          std::to_string(max_robot) + ")\n\n";
+          Pad(std::to_string(position_m.max_step()), 10) + "   (robot " + std::to_string(max_robot) + ")\n\n";
   text += "closest robots: first " + Closest(first) + "\n                second " + Closest(second) + "\n\n";
   text += "violations            first   second\n";
   auto row = [&text](const char* name, int64_t a, int64_t b) {
@@ -193,8 +192,8 @@ std::string RunComparison::Text() const {
   row("collision", first.violations.collision_errors, second.violations.collision_errors);
   row("actuator", first.violations.actuator_errors, second.violations.actuator_errors);
   row("obstacle", first.violations.obstacle_collisions, second.violations.obstacle_collisions);
-  text += "\nmetrics (" + (first.metrics.contains("kind") ? first.metrics["kind"].get<std::string>() : std::string("?")) +
-          ")\n";
+  text += "\nmetrics (" +
+          (first.metrics.contains("kind") ? first.metrics["kind"].get<std::string>() : std::string("?")) + ")\n";
   for (const auto& [name, value] : first.metrics.items()) {
     if (name == "kind") continue;
     const std::string other = second.metrics.contains(name) ? MetricText(second.metrics[name]) : "-";
@@ -252,8 +251,8 @@ RunComparison CompareRunsAndWrite(const std::string& first_dir, const std::strin
   const auto shown = [](const std::string& folder) { return lcm::WireText::Of(folder, folder.size() * 2); };
   render::ComparisonPicture::Render(
       runs.first.log, runs.second.log, picture,
-      {"dashed: " + shown(first_dir) + " (" + std::to_string(comparison.first.steps) + " steps), solid: " +
-           shown(second_dir) + " (" + std::to_string(comparison.second.steps) + " steps)",
+      {"dashed: " + shown(first_dir) + " (" + std::to_string(comparison.first.steps) +
+           " steps), solid: " + shown(second_dir) + " (" + std::to_string(comparison.second.steps) + " steps)",
        "tracking error: RMS " + Cm(comparison.position_m.Rms()) + " cm, max " + Cm(comparison.position_m.max()) +
            " cm (robot " + std::to_string(comparison.max_robot) + ", step " +
            std::to_string(comparison.position_m.max_step()) + ")"});

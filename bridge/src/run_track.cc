@@ -85,7 +85,7 @@ RunTrack RunTrackOf(const run_log::RunLog& log, RunEnd* end) {
     end->detail = status.detail;
     end->step = status.step;
     end->violations = world::ViolationCounts{status.boundary_errors, status.collision_errors, status.actuator_errors,
-                                           status.obstacle_collisions};
+                                             status.obstacle_collisions};
     end->lost_robot_ids.assign(status.lost_robot_ids.begin(), status.lost_robot_ids.end());
     end->robot_faults = log.robot_faults();
   }

@@ -31,8 +31,8 @@ namespace dream::bridge {
 namespace {
 
 std::string JoinProblems(const std::string& log_file, const std::vector<ExportProblem>& problems) {
-  std::string text = log_file + ": the Robotarium would refuse this run (" + std::to_string(problems.size()) + " problem" +
-                     (problems.size() == 1 ? "" : "s") + "):";
+  std::string text = log_file + ": the Robotarium would refuse this run (" + std::to_string(problems.size()) +
+                     " problem" + (problems.size() == 1 ? "" : "s") + "):";
   for (const ExportProblem& p : problems) text += "\n  " + p.Text();
   return text;
 }
@@ -75,15 +75,16 @@ std::vector<ExportProblem> NotReadyReasons(const std::string& run_dir) {
 
 /// What the controller strategy ships besides the script and the params.
 struct ControllerFiles {
-  std::string spec_json;                   ///< module: the bare file name
-  std::string module_name;                 ///< e.g. go_to_goal.py
+  std::string spec_json;    ///< module: the bare file name
+  std::string module_name;  ///< e.g. go_to_goal.py
   std::string module_text;
   std::vector<FlatPythonRuntime::File> runtime;
 };
 
 ControllerFiles ReadControllerFiles(const run_config::RunConfig& config, const kind_api::ControllerKind& kind,
                                     const std::string& config_file, const std::string& runtime_dir) {
-  if (runtime_dir.empty()) throw std::invalid_argument("export options: the controller strategy needs python_runtime_dir");
+  if (runtime_dir.empty())
+    throw std::invalid_argument("export options: the controller strategy needs python_runtime_dir");
   ControllerFiles files;
   nlohmann::ordered_json spec = nlohmann::ordered_json::parse(kind.runtime_spec(config));
   const std::string module_path = spec["module"].get<std::string>();
@@ -131,7 +132,7 @@ struct ExportInput {
   /// The controller strategy's: the run's kind, when its robots run in the
   /// Python runtime (what a submission ships; the lab runs Python only).
   std::shared_ptr<const kind_api::ControllerKind> python_kind;
-  int64_t steps = 0;        ///< the submission's step limit
+  int64_t steps = 0;                ///< the submission's step limit
   std::vector<std::string> forced;  ///< problems --force turned into warnings
 };
 
@@ -144,12 +145,14 @@ ExportInput CheckExportPaths(const std::string& run_dir, const std::string& out_
   ExportInput input;
   input.config_file = config_path.empty() ? (fs::path(run_dir) / "config.yaml").string() : config_path;
   input.log_file = (fs::path(run_dir) / "run.lcmlog").string();
-  if (!fs::is_directory(run_dir)) throw std::runtime_error(run_dir + ": not a folder (pass a run folder written by dream run)");
+  if (!fs::is_directory(run_dir))
+    throw std::runtime_error(run_dir + ": not a folder (pass a run folder written by dream run)");
   if (!config_path.empty() && !fs::is_regular_file(config_path)) {
     throw std::runtime_error("--config " + config_path + ": no such file");
   }
   if (!fs::exists(input.config_file)) {
-    throw std::runtime_error(input.config_file + ": missing; this run folder was written by an older dream run — "
+    throw std::runtime_error(input.config_file +
+                             ": missing; this run folder was written by an older dream run — "
                              "pass its config with --config FILE");
   }
   CheckExportFolder(out_dir);
@@ -167,8 +170,9 @@ void AddControllerProblems(const ExportInput& input, std::vector<ExportProblem>*
     const config::ConfigNode kind = config.controller.Optional("kind");
     problems->push_back({"strategy", -1, -1, -1,
                          "the controller strategy runs the run's Python controller in the submission, and this "
-                         "run's controller (kind '" + (kind.IsDefined() ? kind.AsString() : std::string("?")) +
-                             "' in " + input.config_file + ") is C++: the lab runs Python only",
+                         "run's controller (kind '" +
+                             (kind.IsDefined() ? kind.AsString() : std::string("?")) + "' in " + input.config_file +
+                             ") is C++: the lab runs Python only",
                          "export with --strategy track (the recorded run in closed loop) or --strategy replay; "
                          "or write the controller in Python (controller: {kind: python, module: ..., class: ...})"});
   }
@@ -212,7 +216,8 @@ ExportInput ReadAndCheck(const std::string& run_dir, const std::string& out_dir,
   input.controller = options.strategy == Strategy::kController;
   if (input.controller) {
     std::shared_ptr<const kind_api::ControllerKind> kind = agent_host::ControllerRegistry::KindOf(config);
-    if (kind != nullptr && kind->runtime == kind_api::ControllerKind::Runtime::kPython) input.python_kind = std::move(kind);
+    if (kind != nullptr && kind->runtime == kind_api::ControllerKind::Runtime::kPython)
+      input.python_kind = std::move(kind);
   }
   // The controller strategy runs until every robot is done, at most the run's step limit.
   input.steps = input.python_kind != nullptr ? RunStepLimit(run_dir, config) : input.track.last_step();
@@ -230,8 +235,8 @@ ExportInput ReadAndCheck(const std::string& run_dir, const std::string& out_dir,
       problems.push_back(std::move(problem));
     }
   };
-  for (ExportProblem& problem : PreValidate(input.track, input.end, config.world, options.settle_max_steps,
-                                            LabLimits{}, input.steps, declared)) {
+  for (ExportProblem& problem : PreValidate(input.track, input.end, config.world, options.settle_max_steps, LabLimits{},
+                                            input.steps, declared)) {
     const bool forcible = problem.rule == "lost_robot";
     force_or_refuse(std::move(problem), forcible);
   }
@@ -250,7 +255,8 @@ struct ReferenceArrays {
 /// `start_poses`: the initial conditions the script asks the lab for (the
 /// config's for `world.start: placed`, whose step 0 is where the start-up
 /// drive ended; else the track's step 0).
-ReferenceArrays MakeReferenceArrays(const RunTrack& track, bool controller, const std::vector<world::Pose2>& start_poses) {
+ReferenceArrays MakeReferenceArrays(const RunTrack& track, bool controller,
+                                    const std::vector<world::Pose2>& start_poses) {
   const int n = track.num_robots;
   const auto un = static_cast<size_t>(n);
   ReferenceArrays arrays;
@@ -327,7 +333,7 @@ nlohmann::ordered_json Manifest(const ExportInput& input, const ExportSummary& s
     barrier["projection_distance_m"] = b.projection_distance_m;
     barrier["magnitude_limit_mps"] = b.magnitude_limit_mps;
     barrier["boundary_m"] = b.boundary ? nlohmann::ordered_json::array({b.boundary->x_min_m, b.boundary->x_max_m,
-                                                                         b.boundary->y_min_m, b.boundary->y_max_m})
+                                                                        b.boundary->y_min_m, b.boundary->y_max_m})
                                        : nlohmann::ordered_json();
     manifest["barrier_params"] = barrier;
   }
@@ -353,8 +359,9 @@ std::string Instructions(const ExportInput& input, const ExportSummary& summary,
   const double time_step_s = input.config.world.time_step_s;
   std::string text = "Robotarium submission made by dream export from the run '" + input.config.name + "'.\n";
   if (options.calibration) {
-    text += "It is the calibration drive: every robot drives the same open-loop program (steps in v\n"
-            "and w from rest, turns in place, an arc), from which dream calibrate fits your lab's model.\n";
+    text +=
+        "It is the calibration drive: every robot drives the same open-loop program (steps in v\n"
+        "and w from rest, turns in place, an arc), from which dream calibrate fits your lab's model.\n";
   }
   text += "\n";
   text += "Upload every file in upload/ (" + std::to_string(summary.uploads.size()) + " files, no folders):\n";
@@ -366,12 +373,12 @@ std::string Instructions(const ExportInput& input, const ExportSummary& summary,
           (input.controller ? "at most " : "") + std::to_string(summary.steps) + " steps + at most " +
           std::to_string(options.settle_max_steps) + " settle steps of " + Seconds(time_step_s * 1000) +
           " ms; the lab's own start-up drive comes on top)\n";
-  text += "Strategy: " + std::string(StrategyName(options.strategy)) + " (" +
-          StrategyDescription(options.strategy) + ")" +
-          (options.barriers ? std::string(", through the Robotarium's unicycle barrier certificate") +
-                                  (input.config.barriers.InWorld() ? " (the config's barriers:, as the simulator applied it)"
-                                                                   : "")
-                            : std::string()) +
+  text += "Strategy: " + std::string(StrategyName(options.strategy)) + " (" + StrategyDescription(options.strategy) +
+          ")" +
+          (options.barriers
+               ? std::string(", through the Robotarium's unicycle barrier certificate") +
+                     (input.config.barriers.InWorld() ? " (the config's barriers:, as the simulator applied it)" : "")
+               : std::string()) +
           "\n";
   if (input.controller) {
     text += std::string("The run ends after ") + std::to_string(summary.steps) + " steps" +
@@ -379,19 +386,22 @@ std::string Instructions(const ExportInput& input, const ExportSummary& summary,
             std::to_string(input.track.last_step()) + ")\n";
   }
   for (const std::string& warning : summary.warnings) text += "\nWARNING: " + warning + "\n";
-  text += "\nThe script saves dream_result.npy (poses, commands sent, wall-clock stamps; rewritten\n"
-          "every " + std::to_string(options.save_every_steps) +
-          " steps). Download it from the lab's results, then:\n"
-          "  dream import dream_result.npy --export <this folder> --out <lab run folder>\n"
-          "  dream compare <simulated run folder> <lab run folder>\n"
-          "Before uploading, try it: dream check-submission <this folder> --out <folder>\n";
+  text +=
+      "\nThe script saves dream_result.npy (poses, commands sent, wall-clock stamps; rewritten\n"
+      "every " +
+      std::to_string(options.save_every_steps) +
+      " steps). Download it from the lab's results, then:\n"
+      "  dream import dream_result.npy --export <this folder> --out <lab run folder>\n"
+      "  dream compare <simulated run folder> <lab run folder>\n"
+      "Before uploading, try it: dream check-submission <this folder> --out <folder>\n";
   if (options.calibration) {
-    text += "\nThe lab model: dream_result.npy holds every pose the lab measured and every command sent,\n"
-            "which is what dream calibrate fits. Download it (keep it: each lab run is data about your\n"
-            "lab), import it as above, then:\n"
-            "  dream calibrate <lab run folder> --out mylab.yaml\n"
-            "and run any config on your lab's model: --set world.realism.file=mylab.yaml\n"
-            "(docs/experiments.md, \"Calibrating the lab: dream calibrate\").\n";
+    text +=
+        "\nThe lab model: dream_result.npy holds every pose the lab measured and every command sent,\n"
+        "which is what dream calibrate fits. Download it (keep it: each lab run is data about your\n"
+        "lab), import it as above, then:\n"
+        "  dream calibrate <lab run folder> --out mylab.yaml\n"
+        "and run any config on your lab's model: --set world.realism.file=mylab.yaml\n"
+        "(docs/experiments.md, \"Calibrating the lab: dream calibrate\").\n";
   }
   return text;
 }

@@ -34,7 +34,7 @@ formats::NpyArray SubmissionParams::ToNpy() const {
   p[kParamFormatVersion] = kFormatVersion;
   p[kParamNumRobots] = num_robots;
   p[kParamSteps] = static_cast<double>(steps);
-  p[kParamStrategy] = options.strategy == Strategy::kTrack     ? kStrategyTrack
+  p[kParamStrategy] = options.strategy == Strategy::kTrack    ? kStrategyTrack
                       : options.strategy == Strategy::kReplay ? kStrategyReplay
                                                               : kStrategyController;
   p[kParamBarriers] = options.barriers ? 1.0 : 0.0;
@@ -83,8 +83,8 @@ SubmissionParams SubmissionParams::FromNpy(const formats::NpyArray& array, const
   const double version = format1 ? 1.0 : format2 ? 2.0 : kFormatVersion;
   if (p[kParamFormatVersion] != version) {
     fail("has format version " + std::to_string(p[kParamFormatVersion]) + " with " + std::to_string(count) +
-         " numbers; this dream reads version 1 (18 numbers), 2 (21) and " + std::to_string(kFormatVersion) +
-         " (" + std::to_string(kParamCount) + "); export the run again");
+         " numbers; this dream reads version 1 (18 numbers), 2 (21) and " + std::to_string(kFormatVersion) + " (" +
+         std::to_string(kParamCount) + "); export the run again");
   }
   auto whole = [&](int index, double low, double high, const char* what) {
     const double value = p[index];

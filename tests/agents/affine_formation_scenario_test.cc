@@ -29,10 +29,10 @@
 namespace dream::agents {
 namespace {
 
+using scenario::ConfigPath;
 using scenario::RunScenario;
 using scenario::ScenarioResult;
 using scenario::Value;
-using scenario::ConfigPath;
 
 const std::string kConfigPath = dream::testing::SourceDir() + "/config/affine_formation.yaml";
 
@@ -172,9 +172,10 @@ TEST(AffineFormationConfigTest, ManeuversOfAnyLengthAreCheckedWithBoundedWork) {
 
   std::string frames;
   for (int k = 0; k <= 1000; ++k) frames += "    - {step: " + std::to_string(k) + "}\n";
-  const std::string too_many = ConfigError(Edited("    - {step: 0}                                    "
-                                                  "# stand still while the followers arrive\n",
-                                                  frames));
+  const std::string too_many =
+      ConfigError(Edited("    - {step: 0}                                    "
+                         "# stand still while the followers arrive\n",
+                         frames));
   EXPECT_NE(too_many.find("controller.maneuver: at most 1000 keyframes, got 1008"), std::string::npos) << too_many;
 }
 

@@ -202,7 +202,8 @@ TEST(AffineManeuver, RejectsUnorderedOrDegenerateKeyframes) {
   EXPECT_NE(error.find("keyframes[0].scale_y"), std::string::npos);
   // The list is bounded (robots look keyframes up every step).
   params.keyframes.clear();
-  for (int64_t k = 0; k < int64_t{affine_formation::AffineManeuverParams::kMaxKeyframes}; ++k) params.keyframes.push_back({k});
+  for (int64_t k = 0; k < int64_t{affine_formation::AffineManeuverParams::kMaxKeyframes}; ++k)
+    params.keyframes.push_back({k});
   EXPECT_TRUE(params.IsValid(&error)) << error;
   params.keyframes.push_back({int64_t{affine_formation::AffineManeuverParams::kMaxKeyframes}});
   EXPECT_FALSE(params.IsValid(&error));
@@ -215,7 +216,8 @@ TEST(FormationStateMessage, RoundTripsAndRejectsMalformedPayloads) {
   ASSERT_TRUE(decoded.has_value());
   EXPECT_EQ(decoded->position_m, message.position_m);
   EXPECT_EQ(decoded->velocity_mps, message.velocity_mps);
-  EXPECT_FALSE(affine_formation::FormationStateMessage::Decode(message.Encode(), 4).has_value());  // speaks for another robot
+  EXPECT_FALSE(
+      affine_formation::FormationStateMessage::Decode(message.Encode(), 4).has_value());  // speaks for another robot
   std::vector<uint8_t> short_payload = message.Encode();
   short_payload.pop_back();
   EXPECT_FALSE(affine_formation::FormationStateMessage::Decode(short_payload, 3).has_value());
@@ -241,7 +243,8 @@ class FollowerLoop {
     for (size_t k = 0; k < formation_.followers().size(); ++k) {
       const int f = formation_.followers()[k];
       params.neighbours = formation_.Neighbours(f);
-      followers_.push_back(std::make_unique<affine_formation::AffineFollowerRobot>(f, RobotParams{}, HrvoRobotParams{}, params));
+      followers_.push_back(
+          std::make_unique<affine_formation::AffineFollowerRobot>(f, RobotParams{}, HrvoRobotParams{}, params));
       positions_.push_back(corners[k]);
     }
   }
@@ -253,7 +256,9 @@ class FollowerLoop {
     for (int l : formation_.leaders()) {
       const Eigen::Vector2d r = Nominal()[size_t(l)];
       last_broadcasts_.push_back(
-          {l, step, affine_formation::FormationStateMessage{l, map.Apply(r), map_rate.linear * r + map_rate.translation_m}.Encode()});
+          {l, step,
+           affine_formation::FormationStateMessage{l, map.Apply(r), map_rate.linear * r + map_rate.translation_m}
+               .Encode()});
     }
     for (size_t k = 0; k < followers_.size(); ++k) {
       affine_formation::AffineFollowerRobot& robot = *followers_[k];
@@ -289,11 +294,13 @@ TEST(AffineFollowerLaw, ConvergesToTheAffineImageForStaticLeaders) {
   map.linear << 1.1, 0.3, -0.2, 0.7;
   map.translation_m = {-0.1, 0.05};
   const AffineTransform still{Eigen::Matrix2d::Zero(), Eigen::Vector2d::Zero()};
-  for (auto law : {affine_formation::AffineFollowerParams::Law::kZhao, affine_formation::AffineFollowerParams::Law::kThesis}) {
+  for (auto law :
+       {affine_formation::AffineFollowerParams::Law::kZhao, affine_formation::AffineFollowerParams::Law::kThesis}) {
     // The thesis's law needs a high gain: its slowest mode decays at 0.024 gain.
     FollowerLoop loop(law, law == affine_formation::AffineFollowerParams::Law::kZhao ? 1.0 : 10.0);
     for (int64_t step = 0; step < 2000; ++step) loop.Step(step, map, still);
-    EXPECT_LT(loop.MaxError(map), 1e-3) << (law == affine_formation::AffineFollowerParams::Law::kZhao ? "zhao" : "thesis");
+    EXPECT_LT(loop.MaxError(map), 1e-3) << (law == affine_formation::AffineFollowerParams::Law::kZhao ? "zhao"
+                                                                                                      : "thesis");
     for (size_t k = 0; k < 4; ++k) EXPECT_EQ(loop.follower(k).bad_radio_messages(), 0);
   }
 }
@@ -318,7 +325,8 @@ TEST(AffineFollowerLaw, ZhaosFeedForwardTracksMovingLeadersTheThesisLawLags) {
   };
   double worst[2] = {0.0, 0.0};
   for (int which = 0; which < 2; ++which) {
-    const auto law = which == 0 ? affine_formation::AffineFollowerParams::Law::kZhao : affine_formation::AffineFollowerParams::Law::kThesis;
+    const auto law = which == 0 ? affine_formation::AffineFollowerParams::Law::kZhao
+                                : affine_formation::AffineFollowerParams::Law::kThesis;
     FollowerLoop loop(law, which == 0 ? 1.0 : 10.0);
     const AffineTransform still{Eigen::Matrix2d::Zero(), Eigen::Vector2d::Zero()};
     for (int64_t step = 0; step < 2000; ++step) loop.Step(step, map_at(0.0), still);
@@ -347,7 +355,7 @@ TEST(AffineFollowerRobot, DropsMalformedPayloadsOnceAndIgnoresStrangers) {
       {2, 1, truncated},
       {3, 1, ByteWriter().Int32(3).Double(-0.2).Double(std::nan("")).Double(0).Double(0).Take()},
       {6, 1, affine_formation::FormationStateMessage{4, {-0.6, -0.4}, {0, 0}}.Encode()},  // claims to be robot 4
-      {0, 1, {1, 2, 3}},                                                // not a neighbour of 5: ignored
+      {0, 1, {1, 2, 3}},  // not a neighbour of 5: ignored
   };
   const auto reply = robot.OnRadio(heard);
   EXPECT_EQ(robot.bad_radio_messages(), 3);

@@ -101,8 +101,8 @@ class AgentHostTest : public ::testing::Test {
         bus_, lcm::kCommandChannelRegex,
         [this](const std::string&, const velocity_command_t& c) { commands_.push_back(c); }, bad_));
     subscriptions_.push_back(lcm::Subscribe<radio_message_t>(
-        bus_, lcm::kRadioChannelRegex,
-        [this](const std::string&, const radio_message_t& m) { radio_.push_back(m); }, bad_));
+        bus_, lcm::kRadioChannelRegex, [this](const std::string&, const radio_message_t& m) { radio_.push_back(m); },
+        bad_));
   }
   void Drain() {
     while (bus_.HandleSubscriptions(0) > 0) {
@@ -325,8 +325,7 @@ TEST_F(AgentHostTest, UndecodablePayloadsAreLoggedBySenderFirstThenEveryHundredt
     EXPECT_EQ(host.bad_radio_payloads(1).count(agent_host::AgentHost::kUnknownSenderChannel), 100);
     EXPECT_EQ(host.bad_messages().total(), 0);  // the LCM message itself was fine
     const std::string during = log.text();
-    EXPECT_NE(during.find("DREAM_RADIO_5: dropped bad message #1: robot 0: payload did not decode"),
-              std::string::npos)
+    EXPECT_NE(during.find("DREAM_RADIO_5: dropped bad message #1: robot 0: payload did not decode"), std::string::npos)
         << during;
     EXPECT_NE(during.find("DREAM_RADIO_5: dropped bad message #100: robot 0: payload did not decode"),
               std::string::npos)
@@ -446,8 +445,9 @@ TEST(ControllerFactoryTest, UnknownKindsAndBadSectionsAreClearErrors) {
     }
     return std::string();
   };
-  EXPECT_NE(error_of("controller: {kind: teleport}\n", 1).find("unknown controller kind 'teleport'; known kinds: "
-                                                               "go_to_goal"),
+  EXPECT_NE(error_of("controller: {kind: teleport}\n", 1)
+                .find("unknown controller kind 'teleport'; known kinds: "
+                      "go_to_goal"),
             std::string::npos);
   EXPECT_NE(error_of("controller: {kind: go_to_goal, goals: [[0, 0]]}\n", 2).find("one [x, y] goal per robot (2)"),
             std::string::npos);
@@ -464,9 +464,9 @@ TEST(ControllerFactoryTest, UnknownKindsAndBadSectionsAreClearErrors) {
             std::string::npos);
   EXPECT_NE(error_of(base + "  radio: {kind: carrier_pigeon}\n", 2).find("unknown radio kind 'carrier_pigeon'"),
             std::string::npos);
-  EXPECT_NE(error_of(base + "  radio: {kind: graph, graph: [[0, 1, 0], [1, 0, 0], [0, 0, 0]]}\n", 2)
-                .find("must be 2x2"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of(base + "  radio: {kind: graph, graph: [[0, 1, 0], [1, 0, 0], [0, 0, 0]]}\n", 2).find("must be 2x2"),
+      std::string::npos);
   EXPECT_NE(error_of(base + "  radio: {kind: range, loss_probability: 1.5}\n", 2)
                 .find("controller.radio.loss_probability: must be in [0, 1), got 1.5"),
             std::string::npos);

@@ -99,8 +99,9 @@ TEST(BarriersReferenceTest, SameCommandsAsRpsOnRandomStates) {
     const Eigen::Matrix2Xd expected = Matrix<2>(c["expected"]);
     ASSERT_EQ(result.commands.cols(), expected.cols());
     EXPECT_EQ(result.qp_failed, c["qp_failed"].get<bool>());
-    EXPECT_LE((result.commands - expected).cwiseAbs().maxCoeff(), kTolerance)
-        << "ours\n" << result.commands << "\nrps\n" << expected;
+    EXPECT_LE((result.commands - expected).cwiseAbs().maxCoeff(), kTolerance) << "ours\n"
+                                                                              << result.commands << "\nrps\n"
+                                                                              << expected;
     worst = std::max(worst, (result.commands - expected).cwiseAbs().maxCoeff());
     failed += result.qp_failed;
     changed += (Matrix<2>(c["dx"]) - expected).cwiseAbs().maxCoeff() > 1e-3;

@@ -49,8 +49,9 @@ TEST(CalibrationDriveTest, ExcitesEverySpeedAndTurnBothWaysWithinTheWheelLimit) 
   UnicycleCommand before;
   for (int64_t k = 0; k < calibration_drive::CalibrationDrive::Steps(); ++k) {
     const UnicycleCommand command = calibration_drive::CalibrationDrive::CommandAt(k);
-    const double wheel_radps = (std::abs(command.v_mps) + std::abs(command.w_radps) * RobotariumConstants::kBaseLengthMeters / 2) /
-                               RobotariumConstants::kWheelRadiusMeters;
+    const double wheel_radps =
+        (std::abs(command.v_mps) + std::abs(command.w_radps) * RobotariumConstants::kBaseLengthMeters / 2) /
+        RobotariumConstants::kWheelRadiusMeters;
     EXPECT_LT(wheel_radps, RobotariumConstants::kMaxWheelVelocityRadps) << "step " << k;
     if (before.v_mps == 0.0 && before.w_radps == 0.0 && (command.v_mps != 0.0 || command.w_radps != 0.0)) {
       starts.emplace_back(command.v_mps, command.w_radps);
@@ -58,8 +59,8 @@ TEST(CalibrationDriveTest, ExcitesEverySpeedAndTurnBothWaysWithinTheWheelLimit) 
     before = command;
   }
   const std::vector<std::pair<double, double>> expected = {{0.05, 0.0}, {-0.05, 0.0}, {0.1, 0.0}, {-0.1, 0.0},
-                                                            {0.19, 0.0}, {-0.19, 0.0}, {0.0, 1.0}, {0.0, -1.0},
-                                                            {0.0, 2.0},  {0.0, -2.0},  {0.1, 0.5}, {-0.1, -0.5}};
+                                                           {0.19, 0.0}, {-0.19, 0.0}, {0.0, 1.0}, {0.0, -1.0},
+                                                           {0.0, 2.0},  {0.0, -2.0},  {0.1, 0.5}, {-0.1, -0.5}};
   EXPECT_EQ(starts, expected);
 }
 
@@ -106,7 +107,8 @@ TEST(CalibrationDriveTest, StartPosesFitTheArenaAndAreSpacedForTheProgram) {
     }
   }
   EXPECT_THROW(calibration_drive::CalibrationDrive::StartPoses(0), std::invalid_argument);
-  EXPECT_THROW(calibration_drive::CalibrationDrive::StartPoses(calibration_drive::CalibrationDrive::kMaxRobots + 1), std::invalid_argument);
+  EXPECT_THROW(calibration_drive::CalibrationDrive::StartPoses(calibration_drive::CalibrationDrive::kMaxRobots + 1),
+               std::invalid_argument);
 }
 
 TEST(CalibrationDriveRobotTest, DrivesTheProgramOpenLoopAndIsDoneAtItsEnd) {

@@ -123,9 +123,9 @@ TEST(CircleFormationRobotTest, SlowsDownInProportionToTheDistanceBeforeItsPoint)
   hrvo_circle::CircleFormationRobot robot(0, RobotParams{}, HrvoRobotParams{}, params);
   const double vel_gain = RobotParams{}.vel_gain;
   for (const auto& [x, speed] : std::vector<std::pair<double, double>>{
-           {0.0, 0.2},            // 1 m off: 0.8 m/s wanted, capped at max_speed_mps
-           {0.75, 0.2},           // 0.25 m off: exactly max_speed_mps
-           {0.9, 0.8 * 0.1},      // 0.1 m off
+           {0.0, 0.2},             // 1 m off: 0.8 m/s wanted, capped at max_speed_mps
+           {0.75, 0.2},            // 0.25 m off: exactly max_speed_mps
+           {0.9, 0.8 * 0.1},       // 0.1 m off
            {0.96, 0.8 * 0.04}}) {  // inside the tolerance, still closing in (stop_m below)
     robot.OnOdometry({0, Eigen::Vector3d(x, 0.0, 0.0)});
     const UnicycleCommand command = robot.Update(1);
@@ -148,11 +148,11 @@ TEST(CircleFormationRobotTest, DrivesOnIntoTheToleranceUntilStopMThenHoldsAndIsD
     bool done;
     bool drives;
   };
-  for (const Expect& e : std::vector<Expect>{{0.96, false, true},     // 4 cm: reached, closing in
-                                             {0.98, true, false},     // 2 cm: holds, done
-                                             {0.955, true, false},    // nudged to 4.5 cm: still holds
-                                             {0.94, false, true},     // 6 cm: out, drives back
-                                             {0.965, false, true},    // 3.5 cm: in again, closing in
+  for (const Expect& e : std::vector<Expect>{{0.96, false, true},      // 4 cm: reached, closing in
+                                             {0.98, true, false},      // 2 cm: holds, done
+                                             {0.955, true, false},     // nudged to 4.5 cm: still holds
+                                             {0.94, false, true},      // 6 cm: out, drives back
+                                             {0.965, false, true},     // 3.5 cm: in again, closing in
                                              {0.985, true, false}}) {  // 1.5 cm: holds, done
     robot.OnOdometry({0, Eigen::Vector3d(e.x, 0.0, 0.0)});
     const UnicycleCommand command = robot.Update(1);
@@ -312,7 +312,8 @@ TEST(FormationSequenceMetricsTest, FormationsCompleteInOrderWhenEveryRobotIsWith
 
 std::string FactoryError(const std::string& yaml, int robots) {
   try {
-    agent_host::ControllerFactory(config::ConfigNode::LoadString(yaml, "circle.yaml").Required("controller"), robots, 1);
+    agent_host::ControllerFactory(config::ConfigNode::LoadString(yaml, "circle.yaml").Required("controller"), robots,
+                                  1);
   } catch (const config::ConfigError& e) {
     return e.what();
   }

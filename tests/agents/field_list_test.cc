@@ -79,7 +79,8 @@ TEST(FieldListTest, ReadingRefusesWhatBreaksTheRuleNamingKeyAndValue) {
   EXPECT_THAT(ReadError("gain: .nan\n"), HasSubstr("gain: expected a finite number"));
   EXPECT_THAT(ReadError("count: 11\n"), HasSubstr("count: must be in 1..10, got 11"));
   EXPECT_THAT(ReadError("count: 4294967297\n"), HasSubstr("count"));  // not wrapped to 1
-  EXPECT_THAT(ReadError("shape: sqare\n"), HasSubstr("unknown shape 'sqare' (did you mean 'square'?); allowed: round, square"));
+  EXPECT_THAT(ReadError("shape: sqare\n"),
+              HasSubstr("unknown shape 'sqare' (did you mean 'square'?); allowed: round, square"));
   EXPECT_THAT(ReadError("inner: {depth_m: -0.1}\n"), HasSubstr("depth_m: must be >= 0, got -0.1"));
   EXPECT_THAT(ReadError("inner: {dept_m: 1}\n"), HasSubstr("dept_m"));
 }

@@ -40,20 +40,23 @@ TEST(GoalRules, GoToGoalIsMetWhenEveryRobotArrivedAtOnce) {
   ASSERT_TRUE(missed);
   EXPECT_FALSE(missed->met);
   // The goal's tolerance (goal_tolerance_m: 0.05), not where the robots stop (tolerance_m: 0.02).
-  EXPECT_EQ(missed->detail, "not all at their goals, worst 0.2 m on the logged poses (tolerance 0.05 m, compared unrounded)");
+  EXPECT_EQ(missed->detail,
+            "not all at their goals, worst 0.2 m on the logged poses (tolerance 0.05 m, compared unrounded)");
   // Missed by a hair: enough digits that the worst does not read as the tolerance.
   const auto hair = Judge("go_to_goal", {{"all_arrived_step", -1}, {"final_max_goal_error_m", 0.0500082}});
   ASSERT_TRUE(hair);
-  EXPECT_EQ(hair->detail, "not all at their goals, worst 0.05001 m on the logged poses (tolerance 0.05 m, compared unrounded)");
+  EXPECT_EQ(hair->detail,
+            "not all at their goals, worst 0.05001 m on the logged poses (tolerance 0.05 m, compared unrounded)");
 }
 
 /// Two robots 3 cm from their goals, stopping at 2 cm, judged at `goal_tolerance`
 /// (a YAML number, or nothing: tolerance_m).
 std::optional<GoalJudgement> GoToGoalAtThreeCentimetres(const std::string& goal_tolerance) {
-  const std::string text = "name: two\nrobots: 2\nsteps: 10\ninitial_poses: [[0, 0, 0], [0.5, 0, 0]]\n"
-                           "controller:\n  kind: go_to_goal\n  tolerance_m: 0.02\n"
-                           "  goals: [[0.03, 0], [0.5, 0.03]]\n" +
-                           (goal_tolerance.empty() ? std::string() : "  goal_tolerance_m: " + goal_tolerance + "\n");
+  const std::string text =
+      "name: two\nrobots: 2\nsteps: 10\ninitial_poses: [[0, 0, 0], [0.5, 0, 0]]\n"
+      "controller:\n  kind: go_to_goal\n  tolerance_m: 0.02\n"
+      "  goals: [[0.03, 0], [0.5, 0.03]]\n" +
+      (goal_tolerance.empty() ? std::string() : "  goal_tolerance_m: " + goal_tolerance + "\n");
   const run_config::RunConfig config = run_config::LoadRunConfig(config::ConfigNode::LoadString(text, "two.yaml"));
   const agent_host::ControllerFactory factory(config);
   auto metrics = std::move(factory.MakeMetrics().front());
@@ -72,7 +75,8 @@ TEST(GoalRules, GoToGoalIsJudgedAtItsGoalToleranceNotWhereRobotsStop) {
   const auto stop_line = GoToGoalAtThreeCentimetres("");
   ASSERT_TRUE(stop_line);
   EXPECT_FALSE(stop_line->met);
-  EXPECT_EQ(stop_line->detail, "not all at their goals, worst 0.03 m on the logged poses (tolerance 0.02 m, compared unrounded)");
+  EXPECT_EQ(stop_line->detail,
+            "not all at their goals, worst 0.03 m on the logged poses (tolerance 0.02 m, compared unrounded)");
   const auto goal_line = GoToGoalAtThreeCentimetres("0.05");
   ASSERT_TRUE(goal_line);
   EXPECT_TRUE(goal_line->met);
@@ -110,9 +114,9 @@ TEST(GoalRules, LineDeploymentIsMetOnceConverged) {
   ASSERT_TRUE(met);
   EXPECT_TRUE(met->met);
   EXPECT_EQ(met->completion_step, 700);
-  const auto missed = Judge("line_deployment", {{"converged_step", -1},
-                                                {"final_line_straightness_error_m", 0.05},
-                                                {"final_spacing_error_m", 0.02}});
+  const auto missed =
+      Judge("line_deployment",
+            {{"converged_step", -1}, {"final_line_straightness_error_m", 0.05}, {"final_spacing_error_m", 0.02}});
   ASSERT_TRUE(missed);
   EXPECT_FALSE(missed->met);
   EXPECT_THAT(missed->detail, HasSubstr("straightness 0.05 m, spacing 0.02 m"));
@@ -143,14 +147,14 @@ TEST(GoalRules, VoronoiCoverageSettlesOrElseIsJudgedByItsCost) {
 }
 
 TEST(GoalRules, AffineFormationKeepsItsFollowersWithinTheTolerance) {
-  const auto met = Judge("affine_formation", {{"max_follower_error_after_convergence_m", 0.02},
-                                              {"follower_error_tolerance_m", 0.05},
-                                              {"settled_step", 557}});
+  const auto met = Judge(
+      "affine_formation",
+      {{"max_follower_error_after_convergence_m", 0.02}, {"follower_error_tolerance_m", 0.05}, {"settled_step", 557}});
   ASSERT_TRUE(met);
   EXPECT_TRUE(met->met);
   EXPECT_EQ(met->completion_step, 557);
-  const auto missed =
-      Judge("affine_formation", {{"max_follower_error_after_convergence_m", 0.08}, {"follower_error_tolerance_m", 0.05}});
+  const auto missed = Judge("affine_formation",
+                            {{"max_follower_error_after_convergence_m", 0.08}, {"follower_error_tolerance_m", 0.05}});
   ASSERT_TRUE(missed);
   EXPECT_FALSE(missed->met);
   EXPECT_EQ(missed->detail, "worst follower error 0.08 m > 0.05 m");
@@ -185,7 +189,7 @@ TEST(GoalRules, KindsWithGoalsToDrawGiveOnePerRobot) {
   EXPECT_EQ(go_to_goal[0].size(), 1U);
   const auto [circle, circle_robots] = goals_of("hrvo_circle");
   ASSERT_EQ(circle.size(), static_cast<size_t>(circle_robots));
-  EXPECT_EQ(circle[0].size(), 3U);  // one point per formation
+  EXPECT_EQ(circle[0].size(), 3U);                         // one point per formation
   EXPECT_TRUE(goals_of("line_deployment").first.empty());  // a line, not points: nothing to mark
 }
 

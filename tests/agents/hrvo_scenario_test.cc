@@ -50,8 +50,8 @@ struct PairCase {
 };
 
 TEST(HrvoScenarioTest, HeadOnPairsPassWithoutCollision) {
-  const std::vector<PairCase> cases = {
-      {{0.0}, 0.0}, {{0.0}, 0.03}, {{0.0}, -0.1}, {{0.3}, 0.0}, {{-0.5, 0.0, 0.5}, 0.0}, {{-0.35, 0.35}, 0.02}};
+  const std::vector<PairCase> cases = {{{0.0}, 0.0}, {{0.0}, 0.03},           {{0.0}, -0.1},
+                                       {{0.3}, 0.0}, {{-0.5, 0.0, 0.5}, 0.0}, {{-0.35, 0.35}, 0.02}};
   for (const bool thesis_timing : {false, true}) {
     for (size_t c = 0; c < cases.size(); ++c) {
       std::vector<world::Pose2> start;

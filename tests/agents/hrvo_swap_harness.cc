@@ -147,7 +147,7 @@ HrvoSwapResult RunHrvoSwap(const std::vector<world::Pose2>& start, const std::ve
 }
 
 std::vector<world::Pose2> CirclePoses(int num_robots, double radius_m, double jitter_m, double jitter_rad,
-                                    uint64_t seed) {
+                                      uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   std::vector<world::Pose2> poses;

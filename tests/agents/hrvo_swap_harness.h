@@ -38,14 +38,14 @@ struct HrvoSwapOptions {
 };
 
 struct HrvoSwapResult {
-  bool completed = false;          ///< every robot within tolerance of its goal at once
-  int64_t completion_steps = -1;   ///< first step at which that held
-  int64_t collision_errors = 0;    ///< the world's (Robotarium) count
+  bool completed = false;         ///< every robot within tolerance of its goal at once
+  int64_t completion_steps = -1;  ///< first step at which that held
+  int64_t collision_errors = 0;   ///< the world's (Robotarium) count
   int64_t boundary_errors = 0;
-  int64_t near_miss_steps = 0;     ///< steps with some pair's centres closer than near_miss_m
-  double min_distance_m = 1e9;     ///< smallest centre distance seen
-  int64_t calls = 0;               ///< SafeVelocity calls
-  double ns_per_call = 0.0;        ///< mean thread CPU time per SafeVelocity call
+  int64_t near_miss_steps = 0;  ///< steps with some pair's centres closer than near_miss_m
+  double min_distance_m = 1e9;  ///< smallest centre distance seen
+  int64_t calls = 0;            ///< SafeVelocity calls
+  double ns_per_call = 0.0;     ///< mean thread CPU time per SafeVelocity call
 };
 
 using HrvoFactory = std::function<std::unique_ptr<HrvoAvoidance>()>;
@@ -58,7 +58,7 @@ HrvoSwapResult RunHrvoSwap(const std::vector<world::Pose2>& start, const std::ve
 /// coordinate and jitter_rad in heading (seeded; seed 0 and zero jitter give
 /// the exact circle).
 std::vector<world::Pose2> CirclePoses(int num_robots, double radius_m, double jitter_m, double jitter_rad,
-                                    uint64_t seed);
+                                      uint64_t seed);
 /// Each robot's diametrically opposite point.
 std::vector<Eigen::Vector2d> AntipodalGoals(int num_robots, double radius_m);
 

@@ -27,10 +27,10 @@
 namespace dream::agents {
 namespace {
 
+using scenario::ConfigPath;
 using scenario::RunScenario;
 using scenario::ScenarioResult;
 using scenario::Value;
-using scenario::ConfigPath;
 
 std::string ReadText(const std::string& path) {
   std::ifstream in(path);

@@ -48,7 +48,8 @@ TEST(LineConsensusTest, ALineOrderedByDescendingIdIsAFixedPoint) {
 }
 
 TEST(LineDeploymentRobotTest, KeepsGoodNeighbourPositionsAndDropsMalformedPayloads) {
-  line_deployment::LineDeploymentRobot robot(2, RobotParams{}, HrvoRobotParams{}, line_deployment::LineDeploymentParams{});
+  line_deployment::LineDeploymentRobot robot(2, RobotParams{}, HrvoRobotParams{},
+                                             line_deployment::LineDeploymentParams{});
   // Before odometry it knows no position to advertise.
   EXPECT_FALSE(robot.OnRadio({}).has_value());
   robot.OnOdometry({0, Eigen::Vector3d(0.3, -0.2, 0.0)});
@@ -101,7 +102,8 @@ TEST(LineDeploymentRobotTest, TargetsAreClampedInsideTheArenaAndSettledRobotsRep
 }
 
 TEST(LineDeploymentRobotTest, AStillRobotDodgesOnlyNeighboursWithinHoldAvoidRange) {
-  line_deployment::LineDeploymentRobot robot(0, RobotParams{}, HrvoRobotParams{}, line_deployment::LineDeploymentParams{});
+  line_deployment::LineDeploymentRobot robot(0, RobotParams{}, HrvoRobotParams{},
+                                             line_deployment::LineDeploymentParams{});
   robot.OnOdometry({0, Eigen::Vector3d(0.0, 0.0, 0.0)});
   // Robot 1 at (-0.4, 0): robot 0's target is exactly where it stands.
   robot.OnRadio({{1, 0, PositionMessage{1, {-0.4, 0.0}}.Encode()}});

@@ -76,12 +76,12 @@ TEST(OdometrySensorTest, ReportsOwnPoseExactlyWithoutNoiseAndRepeatablyWithIt) {
 TEST(MovementSensorTest, SeesExactlyWhatIsInRangeAndFieldOfView) {
   // Robot 0 at the origin heading +x; sensor looks ahead with a 90-degree cone, range 1 m.
   const WorldSnapshot world = World({{0, 0, 0},
-                                     {0.5, 0.0, 0},        // ahead, in range: seen
-                                     {0.5, 0.45, 0},       // ~42 degrees left: seen
-                                     {0.5, 0.55, 0},       // ~48 degrees left: outside the cone
-                                     {-0.5, 0.0, 0},       // behind: not seen
-                                     {1.2, 0.0, 0},        // ahead, out of range
-                                     {1.0, 0.0, 0}});      // exactly at range: seen
+                                     {0.5, 0.0, 0},    // ahead, in range: seen
+                                     {0.5, 0.45, 0},   // ~42 degrees left: seen
+                                     {0.5, 0.55, 0},   // ~48 degrees left: outside the cone
+                                     {-0.5, 0.0, 0},   // behind: not seen
+                                     {1.2, 0.0, 0},    // ahead, out of range
+                                     {1.0, 0.0, 0}});  // exactly at range: seen
   MovementSensorParams params;
   params.range_m = 1.0;
   params.field_of_view_rad = M_PI / 2;
@@ -120,9 +120,9 @@ TEST(MovementSensorTest, NeighbourVelocityIsThatOfThePointAhead) {
 
 TEST(ObstacleSensorTest, ReportsClosestPointsOfObstaclesInRange) {
   WorldSnapshot world = World({{0, 0, 0}});
-  world.obstacles = {{0, {1.0, 0.0}, {0.4, 0.4}, {0, 0}},    // closest point (0.8, 0): in range
-                     {1, {0.0, 2.0}, {1.0, 0.2}, {0, 0}},    // closest (0, 1.9): out of range
-                     {2, {-0.5, -0.5}, {0.2, 0.2}, {0, 0}}}; // closest corner (-0.4, -0.4)
+  world.obstacles = {{0, {1.0, 0.0}, {0.4, 0.4}, {0, 0}},     // closest point (0.8, 0): in range
+                     {1, {0.0, 2.0}, {1.0, 0.2}, {0, 0}},     // closest (0, 1.9): out of range
+                     {2, {-0.5, -0.5}, {0.2, 0.2}, {0, 0}}};  // closest corner (-0.4, -0.4)
   RecordingRobot robot(0);
   ObstacleSensor({1.0, 0.0}, 1).Sense(world, robot);
   const auto& points = robot.obstacle_readings[0].closest_points_m;
@@ -150,9 +150,9 @@ TEST(RadioTest, RangeRadioHearsExactlyTheRobotsInRange) {
   const RangeRadio radio(1.0);
   EXPECT_TRUE(radio.CanHear(0, 1, world));
   EXPECT_FALSE(radio.CanHear(0, 2, world));
-  EXPECT_TRUE(radio.CanHear(0, 3, world));  // exactly at range
-  EXPECT_FALSE(radio.CanHear(0, 0, world)); // not itself
-  EXPECT_FALSE(radio.CanHear(0, 9, world)); // unknown sender
+  EXPECT_TRUE(radio.CanHear(0, 3, world));   // exactly at range
+  EXPECT_FALSE(radio.CanHear(0, 0, world));  // not itself
+  EXPECT_FALSE(radio.CanHear(0, 9, world));  // unknown sender
   EXPECT_THROW(RangeRadio(0.0), std::invalid_argument);
 }
 

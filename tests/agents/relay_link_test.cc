@@ -86,7 +86,7 @@ TEST(RelayLinkTest, SendIsReceivedAndFailsOnceTheOtherSideIsGone) {
     ASSERT_TRUE(b.Receive(&frame));
     EXPECT_EQ(frame.kind, 'D');
     EXPECT_EQ(frame.data, "{\"x\":1}");
-  }  // b closed
+  }                                                                     // b closed
   EXPECT_FALSE(a.Send('M', "DREAM_POSES", std::string(1 << 20, 'x')));  // no SIGPIPE: false
   EXPECT_FALSE(a.Send('M', std::string(RelayLink::kMaxChannelBytes + 1, 'c'), std::string()));
 }

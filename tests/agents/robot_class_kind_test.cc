@@ -131,12 +131,14 @@ TEST(RobotClassKindTest, TheCommonPartsComeFromTheConfig) {
   EXPECT_NEAR(early_m - late_m, 0.1 * config.world.time_step_s * 30.0, 0.1 * config.world.time_step_s);
 
   // A part's own mistakes are reported as for the shipped kinds.
-  const std::string error = FactoryErrorOf(TestKinds(), Config("{kind: test_cruise, speeds_mps: [0.1, 0.1], radio: {kind: carrier}}"));
+  const std::string error =
+      FactoryErrorOf(TestKinds(), Config("{kind: test_cruise, speeds_mps: [0.1, 0.1], radio: {kind: carrier}}"));
   EXPECT_NE(error.find("controller.radio.kind: unknown radio kind 'carrier'"), std::string::npos) << error;
 }
 
 TEST(RobotClassKindTest, AnUnknownKeyIsRefusedNamingFileLineAndKey) {
-  const std::string error = FactoryErrorOf(TestKinds(), Config("{kind: test_cruise, speeds_mps: [0.1, 0.1], speed_mps: 0.1}"));
+  const std::string error =
+      FactoryErrorOf(TestKinds(), Config("{kind: test_cruise, speeds_mps: [0.1, 0.1], speed_mps: 0.1}"));
   EXPECT_EQ(error,
             "test.yaml:5: controller.speed_mps: unknown key for kind test_cruise "
             "(did you mean 'speeds_mps'?); allowed keys here: kind, robot, "
@@ -151,7 +153,8 @@ TEST(RobotClassKindTest, AnUnknownKeyIsRefusedNamingFileLineAndKey) {
 
 TEST(RobotClassKindTest, TheRobotsBadValuesStopTheFactoryNotALaterAgent) {
   // Robot 1's entry is wrong: the factory refuses the config before any Make().
-  const std::string negative = FactoryErrorOf(TestKinds(), Config("{kind: test_cruise,\n  speeds_mps: [0.1,\n    -1]}"));
+  const std::string negative =
+      FactoryErrorOf(TestKinds(), Config("{kind: test_cruise,\n  speeds_mps: [0.1,\n    -1]}"));
   EXPECT_EQ(negative.rfind("test.yaml:7: controller.speeds_mps[1]: must be >= 0, got -1", 0), 0u) << negative;
   const std::string short_list = FactoryErrorOf(TestKinds(), Config("{kind: test_cruise, speeds_mps: [0.1]}"));
   EXPECT_EQ(short_list, "test.yaml:5: controller.speeds_mps: expected one speed per robot, robot 1 has none");

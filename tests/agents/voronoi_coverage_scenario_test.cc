@@ -23,10 +23,10 @@
 namespace dream::agents {
 namespace {
 
+using scenario::ConfigPath;
 using scenario::RunScenario;
 using scenario::ScenarioResult;
 using scenario::Value;
-using scenario::ConfigPath;
 
 // The coverage cost is computed exactly (polygon formulas, no grid), as a
 // sum of ~100 terms of at most ~10 m^4: rounding stays below ~1e-13 m^4, so
@@ -116,9 +116,9 @@ TEST(VoronoiCoverageConfigTest, MistakesNameTheKeyAndItsLine) {
             std::string::npos);
   EXPECT_NE(ConfigErrorOf("kind: voronoi_coverage\ngain: 1\nmax_speed_mps: 0.5\n").find("c.yaml:3: max_speed_mps: "),
             std::string::npos);
-  EXPECT_NE(ConfigErrorOf("kind: voronoi_coverage\ncoverage_sample_steps: 0\n")
-                .find("c.yaml:2: coverage_sample_steps: "),
-            std::string::npos);
+  EXPECT_NE(
+      ConfigErrorOf("kind: voronoi_coverage\ncoverage_sample_steps: 0\n").find("c.yaml:2: coverage_sample_steps: "),
+      std::string::npos);
   EXPECT_NE(ConfigErrorOf("kind: voronoi_coverage\ntolerance: 0.03\n").find("unknown key for kind voronoi_coverage"),
             std::string::npos);
   EXPECT_EQ(ConfigErrorOf("kind: voronoi_coverage\n"), "");  // every key has a default

@@ -146,9 +146,9 @@ TEST(VoronoiCellTest, CoverageCentroidLeavesTheObstacleOutAndTheGoalStaysInTheCe
   // its goal is the nearest point of its cell, short of the obstacle.
   const VoronoiCell near(PlainParams(), {1.2, 0.5}, {}, {Vector2d(1.2, 0.2)},
                          {ObstacleRectangle{{1.2, -0.2}, {0.6, 0.8}}});
-  EXPECT_LT(near.coverage_centroid_m().y(), 0.2);        // centroid pulled below the obstacle's top
+  EXPECT_LT(near.coverage_centroid_m().y(), 0.2);  // centroid pulled below the obstacle's top
   EXPECT_TRUE(near.polygon().Contains(near.goal_m(), 1e-12));
-  EXPECT_GE(near.goal_m().y(), 0.2 - 1e-12);             // the goal is not behind the line
+  EXPECT_GE(near.goal_m().y(), 0.2 - 1e-12);  // the goal is not behind the line
   ExpectNear(near.goal_m(), near.polygon().ClosestPoint(near.coverage_centroid_m()), 1e-15);
 }
 
@@ -232,8 +232,8 @@ TEST(CoverageCostTest, MatchesAFineGridWithOverlappingObstaclesAndOneOutsideTheA
     for (double y = lo.y() + h / 2; y < hi.y(); y += h) {
       bool blocked = false;
       for (const ObstacleView& o : obstacles) {
-        blocked = blocked || (std::abs(x - o.center_m.x()) < o.size_m.x() / 2 &&
-                              std::abs(y - o.center_m.y()) < o.size_m.y() / 2);
+        blocked = blocked ||
+                  (std::abs(x - o.center_m.x()) < o.size_m.x() / 2 && std::abs(y - o.center_m.y()) < o.size_m.y() / 2);
       }
       if (blocked) continue;
       double best = INFINITY;
@@ -264,10 +264,12 @@ TEST(SafeSpeedTest, AStepMayUseTheSlackButNotLeaveTheCell) {
 TEST(DescentSpeedTest, AStepNeverEndsFartherFromTheCentroid) {
   const double dt = 0.033;
   // Centroid 0.001 m ahead: one step may cover at most that (half the break-even 0.002 m).
-  EXPECT_NEAR(voronoi_coverage::VoronoiCoverageRobot::DescentSpeed(0.15, {0.001, 0.0}, {0.0, 0.0}, 0.0, dt), 0.001 / dt, 1e-12);
+  EXPECT_NEAR(voronoi_coverage::VoronoiCoverageRobot::DescentSpeed(0.15, {0.001, 0.0}, {0.0, 0.0}, 0.0, dt), 0.001 / dt,
+              1e-12);
   // Centroid behind: driving forward is not allowed, backing is.
   EXPECT_DOUBLE_EQ(voronoi_coverage::VoronoiCoverageRobot::DescentSpeed(0.15, {-1.0, 0.0}, {0.0, 0.0}, 0.0, dt), 0.0);
-  EXPECT_DOUBLE_EQ(voronoi_coverage::VoronoiCoverageRobot::DescentSpeed(-0.15, {-1.0, 0.0}, {0.0, 0.0}, 0.0, dt), -0.15);
+  EXPECT_DOUBLE_EQ(voronoi_coverage::VoronoiCoverageRobot::DescentSpeed(-0.15, {-1.0, 0.0}, {0.0, 0.0}, 0.0, dt),
+                   -0.15);
 }
 
 TEST(PositionMessageTest, RoundTripsAndRejectsMalformedPayloads) {
@@ -372,8 +374,8 @@ TEST(ObstacleSensorRectanglesTest, ReportsTheRectanglesOfTheObstaclesInRangeWith
   WorldSnapshot world;
   world.step = 4;
   world.poses = {{0.0, 0.0, 0.0}};
-  world.obstacles.push_back({0, {0.5, 0.0}, {0.2, 0.4}, {0.0, 0.0}});   // 0.4 m away
-  world.obstacles.push_back({1, {0.0, 1.5}, {0.2, 0.2}, {0.0, 0.0}});   // 1.4 m away: out of range
+  world.obstacles.push_back({0, {0.5, 0.0}, {0.2, 0.4}, {0.0, 0.0}});  // 0.4 m away
+  world.obstacles.push_back({1, {0.0, 1.5}, {0.2, 0.2}, {0.0, 0.0}});  // 1.4 m away: out of range
   ObstacleRecorder robot;
   ObstacleSensor(ObstacleSensorParams{}, 1).Sense(world, robot);
   ASSERT_EQ(robot.obstacles().closest_points_m.size(), 1u);

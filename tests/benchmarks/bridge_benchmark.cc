@@ -47,14 +47,15 @@ void Write(node::RunRecorder& recorder, const std::string& channel, int64_t utim
 }
 
 std::string Config() {
-  std::string text =
-      "name: bench20\nrobots: 20\nsteps: 27000\nstop_when_done: false\ninitial_poses:\n";
+  std::string text = "name: bench20\nrobots: 20\nsteps: 27000\nstop_when_done: false\ninitial_poses:\n";
   for (int i = 0; i < kRobots; ++i) {
     text += "  - [" + std::to_string(-1.2 + 0.6 * (i % 5)) + ", " + std::to_string(-0.75 + 0.5 * (i / 5)) + ", 0.0]\n";
   }
-  text += "obstacles:\n  - {center: [1.52, 0.95], size: [0.1, 0.05]}\n"
-          "  - {center: [-1.5, -0.95], size: [0.05, 0.05], path: {waypoints: [[-1.5, 0.95]], speed_mps: 0.05, mode: ping_pong}}\n"
-          "controller:\n  kind: go_to_goal\n  goals:\n";
+  text +=
+      "obstacles:\n  - {center: [1.52, 0.95], size: [0.1, 0.05]}\n"
+      "  - {center: [-1.5, -0.95], size: [0.05, 0.05], path: {waypoints: [[-1.5, 0.95]], speed_mps: 0.05, mode: "
+      "ping_pong}}\n"
+      "controller:\n  kind: go_to_goal\n  goals:\n";
   for (int i = 0; i < kRobots; ++i) {
     text += "    - [" + std::to_string(-1.2 + 0.6 * (i % 5)) + ", " + std::to_string(-0.75 + 0.5 * (i / 5)) + "]\n";
   }
@@ -86,7 +87,8 @@ const std::string& RunFolder() {
       obstacles.utime = utime;
       obstacles.step = k;
       world.GetObstacleStates(&states);
-      for (const auto& s : states) obstacles.obstacles.push_back({s.id, s.center_x_m, s.center_y_m, s.width_m, s.height_m, 0, 0});
+      for (const auto& s : states)
+        obstacles.obstacles.push_back({s.id, s.center_x_m, s.center_y_m, s.width_m, s.height_m, 0, 0});
       obstacles.num_obstacles = static_cast<int32_t>(obstacles.obstacles.size());
       Write(recorder, dream::lcm::kObstaclesChannel, utime, obstacles);
       run_status_t status{};
@@ -131,7 +133,8 @@ const std::string& RunFolder() {
 void BM_Export20Robots27000Steps(benchmark::State& state) {
   const std::string& dir = RunFolder();
   for (auto _ : state) {
-    const bridge::ExportSummary summary = bridge::ExportSubmission(dir + "/run", dir + "/export", bridge::ExportOptions{});
+    const bridge::ExportSummary summary =
+        bridge::ExportSubmission(dir + "/run", dir + "/export", bridge::ExportOptions{});
     benchmark::DoNotOptimize(summary.steps);
   }
   state.counters["steps"] = kSteps;
@@ -184,17 +187,19 @@ void BM_ImportParts(benchmark::State& state) {
   for (auto _ : state) {
     const int part = static_cast<int>(state.range(0));
     if (part == 0) {
-      benchmark::DoNotOptimize(bridge::ParseLabResult(bridge::ReadResultFile(dir + "/dream_result.npy"), "r", exported));
+      benchmark::DoNotOptimize(
+          bridge::ParseLabResult(bridge::ReadResultFile(dir + "/dream_result.npy"), "r", exported));
     } else if (part == 1) {
       state.PauseTiming();
-      const bridge::LabResult lab = bridge::ParseLabResult(bridge::ReadResultFile(dir + "/dream_result.npy"), "r", exported);
+      const bridge::LabResult lab =
+          bridge::ParseLabResult(bridge::ReadResultFile(dir + "/dream_result.npy"), "r", exported);
       state.ResumeTiming();
       bridge::WriteLabRunLog(lab.track, exported.config.world, 2, "done", dir + "/parts.lcmlog");
     } else if (part == 2) {
       benchmark::DoNotOptimize(bridge::MetricsJson(exported.config, run_log::RunLog::Read(dir + "/lab/run.lcmlog")));
     } else {
       render::TrajectoryPicture::Render(run_log::RunLog::Read(dir + "/lab/run.lcmlog"), render::ArenaOverlays{},
-                                     dir + "/parts.png", render::RenderFormat::kPng);
+                                        dir + "/parts.png", render::RenderFormat::kPng);
     }
   }
 }
@@ -211,7 +216,8 @@ void BM_Calibrate20Robots5000Steps(benchmark::State& state) {
   using namespace dream;
   using calibration_drive::CalibrationDrive;
   std::vector<world::Pose2> start;
-  for (const Eigen::Vector3d& pose : calibration_drive::CalibrationDrive::StartPoses(20)) start.push_back({pose.x(), pose.y(), pose.z()});
+  for (const Eigen::Vector3d& pose : calibration_drive::CalibrationDrive::StartPoses(20))
+    start.push_back({pose.x(), pose.y(), pose.z()});
   world::RealisticWorld world(world::WorldParams{}, world::RealismParams::Lab(), 1, start);
   calibration::CalibrationRun run;
   run.name = "synthetic";
@@ -220,7 +226,8 @@ void BM_Calibrate20Robots5000Steps(benchmark::State& state) {
   double time_s = 0;
   for (int64_t k = 0; k < 5000; ++k) {
     run.track.utime.push_back(std::llround(time_s * 1e6));
-    const agents::UnicycleCommand program = calibration_drive::CalibrationDrive::CommandAt(k % calibration_drive::CalibrationDrive::Steps());
+    const agents::UnicycleCommand program =
+        calibration_drive::CalibrationDrive::CommandAt(k % calibration_drive::CalibrationDrive::Steps());
     const world::UnicycleCommand command{program.v_mps, program.w_radps};
     for (int i = 0; i < 20; ++i) {
       run.track.poses.push_back(world.poses()[static_cast<size_t>(i)]);

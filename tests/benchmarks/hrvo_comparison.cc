@@ -42,8 +42,9 @@ using Problem = std::function<void(uint64_t seed, std::vector<world::Pose2>*, st
 
 void Table(const char* title, const Problem& problem, const std::vector<Variant>& variants, int seeds) {
   std::printf("%s, %d seeds\n\n", title, seeds);
-  std::printf("| variant | timing | completed | mean steps | max steps | collisions | boundary errors |"
-              " near-miss steps (<0.2 m): total (runs with any) | min centre distance, m | CPU per call, us |\n");
+  std::printf(
+      "| variant | timing | completed | mean steps | max steps | collisions | boundary errors |"
+      " near-miss steps (<0.2 m): total (runs with any) | min centre distance, m | CPU per call, us |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
   for (const bool thesis_timing : {false, true}) {
     for (const Variant& v : variants) {
@@ -89,17 +90,19 @@ int Main(int argc, char** argv) {
       {"HrvoExact", [] { return std::make_unique<HrvoExact>(); }},
       {"HrvoExact, keep_right_rad = 0", [plain] { return std::make_unique<HrvoExact>(HrvoParams{}, plain); }},
   };
-  Table("10-robot circle swap (radius 0.85 m, start jitter +/-0.03 m, +/-0.3 rad)",
-        [](uint64_t seed, std::vector<world::Pose2>* start, std::vector<Eigen::Vector2d>* goals) {
-          *start = CirclePoses(10, 0.85, 0.03, 0.3, seed);
-          *goals = AntipodalGoals(10, 0.85);
-        },
-        variants, seeds);
-  Table("12-robot random crossings (starts and goals >= 0.35 m apart)",
-        [](uint64_t seed, std::vector<world::Pose2>* start, std::vector<Eigen::Vector2d>* goals) {
-          RandomCrossing(12, seed, start, goals);
-        },
-        variants, seeds);
+  Table(
+      "10-robot circle swap (radius 0.85 m, start jitter +/-0.03 m, +/-0.3 rad)",
+      [](uint64_t seed, std::vector<world::Pose2>* start, std::vector<Eigen::Vector2d>* goals) {
+        *start = CirclePoses(10, 0.85, 0.03, 0.3, seed);
+        *goals = AntipodalGoals(10, 0.85);
+      },
+      variants, seeds);
+  Table(
+      "12-robot random crossings (starts and goals >= 0.35 m apart)",
+      [](uint64_t seed, std::vector<world::Pose2>* start, std::vector<Eigen::Vector2d>* goals) {
+        RandomCrossing(12, seed, start, goals);
+      },
+      variants, seeds);
   return 0;
 }
 

@@ -113,9 +113,15 @@ void BM_PlanShippedConfig10000Seeds(benchmark::State& state, const std::string& 
   fs::remove_all(dir);
 }
 BENCHMARK_CAPTURE(BM_PlanShippedConfig10000Seeds, hrvo_circle, std::string("hrvo_circle.yaml"))
-    ->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime()->MeasureProcessCPUTime();
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
 BENCHMARK_CAPTURE(BM_PlanShippedConfig10000Seeds, voronoi_coverage, std::string("voronoi_coverage.yaml"))
-    ->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime()->MeasureProcessCPUTime();
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
 
 void BM_Table10000FinishedRuns(benchmark::State& state) {
   const fs::path dir = Scratch("table");

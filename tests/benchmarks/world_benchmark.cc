@@ -93,8 +93,8 @@ void BM_RealismStep(benchmark::State& state) {
   if (state.range(0) == 0) {
     world = std::make_unique<UnicycleWorld>(WorldParams{}, poses);
   } else {
-    world = std::make_unique<RealisticWorld>(WorldParams{}, state.range(0) == 1 ? RealismParams::LabV1() : RealismParams::Lab(),
-                                             1, poses);
+    world = std::make_unique<RealisticWorld>(
+        WorldParams{}, state.range(0) == 1 ? RealismParams::LabV1() : RealismParams::Lab(), 1, poses);
   }
   for (auto _ : state) {
     // Commands every step, as agents send them.

@@ -108,7 +108,8 @@ formats::NpyArray PerfectLabResult(const std::string& export_dir,
     row[ResultLayout::kPhaseColumn] = k < steps ? ResultLayout::kPhaseExperiment : ResultLayout::kPhaseFinal;
     row[ResultLayout::kStepColumn] = static_cast<double>(k);
     row[ResultLayout::kWallTimeColumn] = 1.7e9 + 0.033 * static_cast<double>(k);
-    for (int64_t q = 0; q < 3 * n; ++q) row[ResultLayout::kFixedColumns + q] = poses.values[static_cast<size_t>(k * 3 * n + q)];
+    for (int64_t q = 0; q < 3 * n; ++q)
+      row[ResultLayout::kFixedColumns + q] = poses.values[static_cast<size_t>(k * 3 * n + q)];
     if (k < steps) {
       for (int64_t q = 0; q < 2 * n; ++q) {
         row[ResultLayout::kFixedColumns + 3 * n + q] = commands.values[static_cast<size_t>(k * 2 * n + q)];

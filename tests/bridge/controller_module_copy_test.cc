@@ -20,7 +20,8 @@ using ::testing::HasSubstr;
 
 std::string PythonConfig(const std::string& module) {
   return "name: m\nrobots: 1\ninitial_poses: [[0, 0, 0]]\n"
-         "controller: {kind: python, module: " + module + ", class: Still}\n";
+         "controller: {kind: python, module: " +
+         module + ", class: Still}\n";
 }
 
 TEST(ControllerModuleCopyTest, ThePythonKindsModuleIsKeptAtItsRelativePath) {
@@ -35,7 +36,8 @@ TEST(ControllerModuleCopyTest, ThePythonKindsModuleIsKeptAtItsRelativePath) {
 
 TEST(ControllerModuleCopyTest, AKindWithoutAFileKeepsNothing) {
   const std::string source = testing::NewFolder("module_copy_cpp");
-  const run_config::RunConfig config = testing::LoadConfigText(testing::ShippedConfig("go_to_goal"), source + "/c.yaml");
+  const run_config::RunConfig config =
+      testing::LoadConfigText(testing::ShippedConfig("go_to_goal"), source + "/c.yaml");
   const std::string out = testing::NewFolder("module_copy_cpp_out");
   KeepControllerModule(config, files::OutputFolder(out));
   EXPECT_TRUE(fs::is_empty(out));

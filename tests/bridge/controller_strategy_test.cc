@@ -34,16 +34,19 @@ std::string ErrorOf(const std::function<void()>& action) {
 }
 
 TEST(FlatPythonRuntimeTest, RewritesRelativeImportsToFlatModules) {
-  const std::string text = "\"\"\"Doc.\"\"\"\nimport math\n\nfrom .robot import Robot, key\n    from .timer import Timer\nx = 1\n";
+  const std::string text =
+      "\"\"\"Doc.\"\"\"\nimport math\n\nfrom .robot import Robot, key\n    from .timer import Timer\nx = 1\n";
   EXPECT_EQ(FlatPythonRuntime::Flatten("sensors", text, "sensors.py"),
-            "\"\"\"Doc.\"\"\"\nimport math\n\nfrom dream_robot import Robot, key\n    from dream_timer import Timer\nx = 1\n");
+            "\"\"\"Doc.\"\"\"\nimport math\n\nfrom dream_robot import Robot, key\n    from dream_timer import Timer\nx "
+            "= 1\n");
 }
 
 TEST(FlatPythonRuntimeTest, RefusesImportsTheFlatLayoutCannotFollowNamingFileAndLine) {
   auto error = [](const std::string& line) {
     return ErrorOf([&] { FlatPythonRuntime::Flatten("robot", "import os\n" + line + "\n", "robot.py"); });
   };
-  EXPECT_THAT(error("from .lcm import Lcm"), HasSubstr("robot.py:2: imports .lcm, which a Robotarium submission does not ship"));
+  EXPECT_THAT(error("from .lcm import Lcm"),
+              HasSubstr("robot.py:2: imports .lcm, which a Robotarium submission does not ship"));
   EXPECT_THAT(error("from . import timer"), HasSubstr("robot.py:2: 'from . import timer'"));
   EXPECT_THAT(error("import dream.timer"), HasSubstr("robot.py:2:"));
   EXPECT_THAT(error("from .timer import (Timer,"), HasSubstr("robot.py:2: a relative import spans lines"));
@@ -56,11 +59,11 @@ TEST(FlatPythonRuntimeTest, ShipsTheRuntimeFlatWithoutItsTransport) {
     names.push_back(file.name);
     EXPECT_EQ(file.text.find("from ."), std::string::npos) << file.name;
   }
-  EXPECT_THAT(names, ::testing::UnorderedElementsAre("dream.py", "dream_robot.py", "dream_motion.py", "dream_sensors.py",
-                                                     "dream_radios.py", "dream_timer.py", "dream_robot_agent.py",
-                                                     "dream_controller_spec.py", "dream_hrvo.py", "dream_barriers.py",
-                                                     "dream_toolbox_checks.py", "dream_transformations.py",
-                                                     "dream_controllers.py", "dream_graph.py", "dream_misc.py"));
+  EXPECT_THAT(names, ::testing::UnorderedElementsAre(
+                         "dream.py", "dream_robot.py", "dream_motion.py", "dream_sensors.py", "dream_radios.py",
+                         "dream_timer.py", "dream_robot_agent.py", "dream_controller_spec.py", "dream_hrvo.py",
+                         "dream_barriers.py", "dream_toolbox_checks.py", "dream_transformations.py",
+                         "dream_controllers.py", "dream_graph.py", "dream_misc.py"));
   const std::set<std::string> imported = runtime.ImportedModules({"import rps.robotarium as r\n"});
   for (const char* name : {"numpy", "json", "os", "rps"}) EXPECT_EQ(imported.count(name), 1u) << name;
   EXPECT_THAT(ErrorOf([] { FlatPythonRuntime::Read("/nonexistent"); }),
@@ -83,7 +86,9 @@ TEST(FlatPythonRuntimeTest, ControllerModuleNamesThatCannotSitBesideTheScriptAre
                 FlatPythonRuntime::ControllerFileName(dir + "/mine.py", "from helpers import X\n", taken, "c.yaml");
               }),
               HasSubstr("it imports 'helpers', which sits beside it"));
-  EXPECT_THAT(ErrorOf([&] { FlatPythonRuntime::ControllerFileName("/x/mine.py", "from .helpers import X\n", taken, "c.yaml"); }),
+  EXPECT_THAT(ErrorOf([&] {
+                FlatPythonRuntime::ControllerFileName("/x/mine.py", "from .helpers import X\n", taken, "c.yaml");
+              }),
               HasSubstr("it imports relatively"));
 }
 
@@ -93,8 +98,8 @@ TEST(ObstacleScheduleTest, EveryStepEqualsWhatTheWorldReports) {
   moving.center_m = {-1.3, 0.9};
   moving.width_m = 0.3;
   moving.height_m = 0.1;
-  moving.path = world::ObstaclePath{{Eigen::Vector2d(1.3, 0.9), Eigen::Vector2d(1.3, -0.9)}, 0.7,
-                                  world::ObstaclePathMode::kPingPong};
+  moving.path = world::ObstaclePath{
+      {Eigen::Vector2d(1.3, 0.9), Eigen::Vector2d(1.3, -0.9)}, 0.7, world::ObstaclePathMode::kPingPong};
   world::RectangleObstacleSpec still;
   still.id = 9;
   still.center_m = {0.0, 0.0};
@@ -111,8 +116,8 @@ TEST(ObstacleScheduleTest, EveryStepEqualsWhatTheWorldReports) {
     for (size_t m = 0; m < states.size(); ++m) {
       const double* row = &schedule.values[static_cast<size_t>((k * 2 + static_cast<int64_t>(m)) * kObstacleColumns)];
       const world::ObstacleState& s = states[m];
-      const std::vector<double> expected = {static_cast<double>(s.id), s.center_x_m, s.center_y_m, s.width_m,
-                                            s.height_m, s.vx_mps, s.vy_mps};
+      const std::vector<double> expected = {
+          static_cast<double>(s.id), s.center_x_m, s.center_y_m, s.width_m, s.height_m, s.vx_mps, s.vy_mps};
       ASSERT_EQ(std::vector<double>(row, row + kObstacleColumns), expected) << "step " << k << ", obstacle " << m;
     }
     world.Step();

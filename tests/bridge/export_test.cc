@@ -104,7 +104,7 @@ TEST(PreValidationTest, UnfinishedRunIsRefused) {
 TEST(PreValidationTest, BoundaryCollisionAndObstacleErrorsNameRobotAndFirstStep) {
   RunTrack track = StillTrack(4, 20);
   for (int64_t k = 7; k <= 9; ++k) track.poses[static_cast<size_t>(k * 4 + 0)].x_m = -1.65;  // robot 0 out
-  for (int64_t k = 5; k <= 20; ++k) {  // robot 2 onto robot 1
+  for (int64_t k = 5; k <= 20; ++k) {                                                        // robot 2 onto robot 1
     track.poses[static_cast<size_t>(k * 4 + 2)] = world::Pose2{track.pose(k, 1).x_m + 0.1, track.pose(k, 1).y_m, 0.0};
   }
   for (int64_t k = 12; k <= 20; ++k) track.obstacles[static_cast<size_t>(k)] = {{3, 0.1, -0.75, 0.1, 0.1, 0, 0}};
@@ -144,7 +144,9 @@ TEST(PreValidationTest, CrowdedStartIsAWarningNotARefusal) {
 
 class ExportTest : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() { run_dir_ = new std::string(testing::MakeRunFolder("export_run", testing::ShippedConfig("go_to_goal"))); }
+  static void SetUpTestSuite() {
+    run_dir_ = new std::string(testing::MakeRunFolder("export_run", testing::ShippedConfig("go_to_goal")));
+  }
   static void TearDownTestSuite() { delete run_dir_; }
   static std::string* run_dir_;
 };
@@ -164,13 +166,15 @@ TEST_F(ExportTest, WritesTheSubmissionAndInstructions) {
   EXPECT_THAT(text, HasSubstr("Number of robots to declare: 8"));
   EXPECT_THAT(text, HasSubstr("Estimated duration to declare: "));
   EXPECT_THAT(text, HasSubstr("Strategy: track (recorded commands plus feedback on the pose error)"));
-  const SubmissionParams params = SubmissionParams::FromNpy(formats::ReadNpyFile(out + "/upload/dream_params.npy"), "p");
+  const SubmissionParams params =
+      SubmissionParams::FromNpy(formats::ReadNpyFile(out + "/upload/dream_params.npy"), "p");
   EXPECT_EQ(params.num_robots, 8);
   EXPECT_EQ(params.steps, summary.steps);
   EXPECT_EQ(params.options.strategy, Strategy::kTrack);
   EXPECT_EQ(formats::ReadNpyFile(out + "/upload/dream_reference_poses.npy").shape,
             (std::vector<int64_t>{summary.steps + 1, 3, 8}));
-  EXPECT_EQ(formats::ReadNpyFile(out + "/upload/dream_reference_commands.npy").shape, (std::vector<int64_t>{summary.steps, 2, 8}));
+  EXPECT_EQ(formats::ReadNpyFile(out + "/upload/dream_reference_commands.npy").shape,
+            (std::vector<int64_t>{summary.steps, 2, 8}));
   // The reference is the recorded run, exactly.
   const RunTrack track = ReadRunTrack(*run_dir_ + "/run.lcmlog");
   const formats::NpyArray poses = formats::ReadNpyFile(out + "/upload/dream_reference_poses.npy");
@@ -385,8 +389,7 @@ TEST(VerifierRulesTest, TooCloseHundredPairStepsAndHundredAndOne) {
   auto close_for = [&track](int64_t steps) {
     for (int64_t k = 0; k <= 300; ++k) {
       const world::Pose2 beside{track.pose(k, 0).x_m + 0.1, track.pose(k, 0).y_m, 0.0};
-      track.poses[static_cast<size_t>(k * 3 + 1)] =
-          k >= 20 && k < 20 + steps ? beside : StillTrack(3, 0).pose(0, 1);
+      track.poses[static_cast<size_t>(k * 3 + 1)] = k >= 20 && k < 20 + steps ? beside : StillTrack(3, 0).pose(0, 1);
     }
   };
   close_for(100);
@@ -410,14 +413,14 @@ TEST(VerifierRulesTest, TheDeclaredRobotCountAndDuration) {
   // The default declaration is what UPLOAD.txt gives: it always passes.
   EXPECT_TRUE(PreValidate(track, Finished(), world::WorldParams{}, 240).empty());
   // (100 + 240) x 0.033 = 11.22 s: 1.5 x 7.49 s = 11.235 s passes, 1.5 x 7.47 s = 11.205 s does not.
-  EXPECT_TRUE(PreValidate(track, Finished(), world::WorldParams{}, 240, {}, -1,
-                          world::LabVerifierRules::Declaration{4, 7.49})
-                  .empty());
+  EXPECT_TRUE(
+      PreValidate(track, Finished(), world::WorldParams{}, 240, {}, -1, world::LabVerifierRules::Declaration{4, 7.49})
+          .empty());
   EXPECT_THAT(Rules(PreValidate(track, Finished(), world::WorldParams{}, 240, {}, -1,
                                 world::LabVerifierRules::Declaration{4, 7.47})),
               ElementsAre("verifier_duration"));
-  const auto problems = PreValidate(track, Finished(), world::WorldParams{}, 240, {}, -1,
-                                    world::LabVerifierRules::Declaration{5, 11.22});
+  const auto problems =
+      PreValidate(track, Finished(), world::WorldParams{}, 240, {}, -1, world::LabVerifierRules::Declaration{5, 11.22});
   ASSERT_THAT(Rules(problems), ElementsAre("verifier_robot_count"));
   EXPECT_THAT(problems[0].Text(), HasSubstr("asks for 4 robots but 5 are declared"));
   // A declaration over the lab's 900 s cap, although the run is short.
@@ -441,7 +444,8 @@ TEST_F(ExportTest, SummaryReasonsRefuseTheRunUnlessForced) {
     ADD_FAILURE() << "exported a run summary.json calls not ready";
   } catch (const ExportRefused& refused) {
     EXPECT_THAT(Rules(refused.problems()), ElementsAre("goal", "command_conflicts"));
-    EXPECT_THAT(refused.what(), HasSubstr("goal: missed its goal. Fix: summary.json metrics; or export anyway with --force"));
+    EXPECT_THAT(refused.what(),
+                HasSubstr("goal: missed its goal. Fix: summary.json metrics; or export anyway with --force"));
   }
   EXPECT_FALSE(fs::exists(out));
   ExportOptions forced;

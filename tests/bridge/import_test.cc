@@ -87,7 +87,8 @@ TEST_F(ImportTest, PerfectLabResultGivesTheSimulatedRunBack) {
     EXPECT_EQ(lab.utime[static_cast<size_t>(k)], k * 33000);
     // The virtual obstacles are where the simulator had them.
     ASSERT_EQ(lab.obstacles[static_cast<size_t>(k)].size(), sim.obstacles[static_cast<size_t>(k)].size());
-    EXPECT_NEAR(lab.obstacles[static_cast<size_t>(k)][1].center_x_m, sim.obstacles[static_cast<size_t>(k)][1].center_x_m, 1e-12);
+    EXPECT_NEAR(lab.obstacles[static_cast<size_t>(k)][1].center_x_m,
+                sim.obstacles[static_cast<size_t>(k)][1].center_x_m, 1e-12);
   }
   // The commands as sent are on DREAM_CMD_<id>, like a simulated run's.
   int64_t commands = 0;
@@ -189,8 +190,8 @@ TEST_F(ImportTest, RunLongerThanOneAndAHalfTimesTheDeclaredDurationIsRejected) {
   EXPECT_EQ(reason.rule, "verifier_duration");
   EXPECT_EQ(reason.verdict, world::RunVerdict::kRejected);
   // The measured and the declared value.
-  EXPECT_THAT(reason.problem, HasSubstr(std::to_string(steps) + " iterations take " +
-                                        Seconds(static_cast<double>(steps) * dt)));
+  EXPECT_THAT(reason.problem,
+              HasSubstr(std::to_string(steps) + " iterations take " + Seconds(static_cast<double>(steps) * dt)));
   EXPECT_THAT(reason.problem, HasSubstr("over 1.5 x the declared " + Seconds(declared.duration_s)));
 
   // The verifier counts the settle phase's steps too: two settle rows take
@@ -215,9 +216,9 @@ TEST_F(ImportTest, RobotCountOtherThanDeclaredIsRejected) {
   EXPECT_EQ(mismatch.verdict(), world::RunVerdict::kRejected);
   ASSERT_EQ(mismatch.verdict_reasons().size(), 1u);
   EXPECT_EQ(mismatch.verdict_reasons()[0].rule, "verifier_robot_count");
-  EXPECT_THAT(mismatch.verdict_reasons()[0].problem, HasSubstr("the script asks for " + std::to_string(robots) +
-                                                             " robots but " + std::to_string(robots + 2) +
-                                                             " are declared"));
+  EXPECT_THAT(mismatch.verdict_reasons()[0].problem,
+              HasSubstr("the script asks for " + std::to_string(robots) + " robots but " + std::to_string(robots + 2) +
+                        " are declared"));
   EXPECT_EQ(mismatch.lab_json["declared_robots"], robots + 2);
 }
 
@@ -287,9 +288,13 @@ TEST_F(ImportTest, BadResultFilesAreRefusedByNameAndNothingIsWritten) {
                   a->shape[0] += 1;
                 }),
                 "more experiment steps than the", "too_many_steps");
-  ExpectRefused(with([&](formats::NpyArray* a) { a->values[static_cast<size_t>(10 * columns + ResultLayout::kStepColumn)] = 11; }),
+  ExpectRefused(with([&](formats::NpyArray* a) {
+                  a->values[static_cast<size_t>(10 * columns + ResultLayout::kStepColumn)] = 11;
+                }),
                 "row 10: experiment step 11.000000, expected 10", "step_gap");
-  ExpectRefused(with([&](formats::NpyArray* a) { a->values[static_cast<size_t>(10 * columns + ResultLayout::kPhaseColumn)] = 7; }),
+  ExpectRefused(with([&](formats::NpyArray* a) {
+                  a->values[static_cast<size_t>(10 * columns + ResultLayout::kPhaseColumn)] = 7;
+                }),
                 "row 10: phase 7.000000 is not 0 (settle), 1 (experiment) or 2 (final)", "bad_phase");
   ExpectRefused(with([&](formats::NpyArray* a) {
                   a->shape[0] = 1;
@@ -298,16 +303,19 @@ TEST_F(ImportTest, BadResultFilesAreRefusedByNameAndNothingIsWritten) {
                 "has 1 experiment poses; at least 2 are needed", "one_row");
   // NaN and infinity, named by row, quantity and robot.
   ExpectRefused(with([&](formats::NpyArray* a) {
-                  a->values[static_cast<size_t>(20 * columns + ResultLayout::Y(8, 5))] = std::numeric_limits<double>::quiet_NaN();
+                  a->values[static_cast<size_t>(20 * columns + ResultLayout::Y(8, 5))] =
+                      std::numeric_limits<double>::quiet_NaN();
                 }),
                 "row 20: y of robot 5 is nan", "nan");
   ExpectRefused(with([&](formats::NpyArray* a) {
-                  a->values[static_cast<size_t>(3 * columns + ResultLayout::kWallTimeColumn)] = std::numeric_limits<double>::infinity();
+                  a->values[static_cast<size_t>(3 * columns + ResultLayout::kWallTimeColumn)] =
+                      std::numeric_limits<double>::infinity();
                 }),
                 "row 3: the wall-clock column is inf", "inf");
   // Finite but absurd: 1e300 m made the comparison's squares overflow to inf.
-  ExpectRefused(with([&](formats::NpyArray* a) { a->values[static_cast<size_t>(20 * columns + ResultLayout::X(8, 2))] = 1e300; }),
-                "row 20: x of robot 2 is 1e+300; beyond 1000 in magnitude", "far_pose");
+  ExpectRefused(
+      with([&](formats::NpyArray* a) { a->values[static_cast<size_t>(20 * columns + ResultLayout::X(8, 2))] = 1e300; }),
+      "row 20: x of robot 2 is 1e+300; beyond 1000 in magnitude", "far_pose");
   ExpectRefused(with([&](formats::NpyArray* a) {
                   a->values[static_cast<size_t>(20 * columns + ResultLayout::Theta(8, 2))] = -2000.0;
                 }),

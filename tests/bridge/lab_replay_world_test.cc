@@ -50,7 +50,8 @@ class LabReplayTest : public ::testing::Test {
   }
 
   /// Imports a lab result made from the export (perturbed or not); returns the lab run folder.
-  static std::string ImportLab(const std::string& name, const std::function<void(int64_t, double*)>& perturb = nullptr) {
+  static std::string ImportLab(const std::string& name,
+                               const std::function<void(int64_t, double*)>& perturb = nullptr) {
     const std::string dir = testing::NewFolder(name);
     testing::WriteText(dir + "/dream_result.npy", formats::EncodeNpy(testing::PerfectLabResult(*export_dir_, perturb)));
     ImportLabRun(dir + "/dream_result.npy", *export_dir_, dir + "/lab");
@@ -110,7 +111,8 @@ TEST_F(LabReplayTest, RealPosesDriveTheAgentsAndTheLabCommandsAreRecordedBeside)
   double largest_difference = 0.0;
   for (int64_t k = 100; k < lab.step(); ++k) {
     if (!lab.has_agent_command(k, 0)) continue;
-    largest_difference = std::max(largest_difference, std::abs(lab.agent_command(k, 0).v_mps - lab.track().command(k, 0).v_mps));
+    largest_difference =
+        std::max(largest_difference, std::abs(lab.agent_command(k, 0).v_mps - lab.track().command(k, 0).v_mps));
   }
   EXPECT_GT(largest_difference, 1e-4);
   const auto recorded = Messages(out + "/lab_commands.lcmlog", lcm::kLabCommandChannelPrefix);

@@ -34,8 +34,8 @@ using CommandOf = std::function<world::UnicycleCommand(int robot, int64_t step)>
 
 // `robots` robots of the lab model `lab` driven by `command` for `steps`
 // steps, recorded as a lab run: measured poses, commands sent, the clock.
-CalibrationRun Drive(const world::RealismParams& lab, uint64_t seed, int robots, int64_t steps, const CommandOf& command,
-                     std::vector<world::RobotTraits>* traits = nullptr) {
+CalibrationRun Drive(const world::RealismParams& lab, uint64_t seed, int robots, int64_t steps,
+                     const CommandOf& command, std::vector<world::RobotTraits>* traits = nullptr) {
   std::vector<world::Pose2> start;
   for (int i = 0; i < robots; ++i) start.push_back({-1.2 + 0.5 * (i % 5), -0.6 + 0.6 * (i / 5), 0.0});
   world::RealisticWorld world(world::WorldParams{}, lab, seed, start);
@@ -128,14 +128,14 @@ std::string Npz(const std::vector<std::pair<std::string, std::string>>& members)
   std::string zip, directory;
   for (const auto& [name, bytes] : members) {
     const std::string file = name + ".npy";
-    const auto crc = static_cast<uint32_t>(crc32(0, reinterpret_cast<const Bytef*>(bytes.data()),
-                                                 static_cast<uInt>(bytes.size())));
+    const auto crc =
+        static_cast<uint32_t>(crc32(0, reinterpret_cast<const Bytef*>(bytes.data()), static_cast<uInt>(bytes.size())));
     const auto offset = static_cast<uint32_t>(zip.size());
     auto common = [&](std::string* out) {
-      Put16(out, 20);  // version needed
-      Put16(out, 0);   // flags
-      Put16(out, 0);   // stored
-      Put16(out, 0);   // time
+      Put16(out, 20);    // version needed
+      Put16(out, 0);     // flags
+      Put16(out, 0);     // stored
+      Put16(out, 0);     // time
       Put16(out, 0x21);  // date
       Put32(out, crc);
       Put32(out, static_cast<uint32_t>(bytes.size()));
@@ -217,9 +217,9 @@ TEST(CalibrationRealLogsTest, ReadsFortranOrderArraysAsNumpyDoes) {
   formats::NpyArray poses, commands;
   ArraysOf(run, &poses, &commands);
   const std::string dir = testing::NewFolder("calibration_fortran");
-  testing::WriteText(dir + "/lab.npz", Npz({{"poses", FortranNpy(poses)},
-                                            {"commands", FortranNpy(commands)},
-                                            {"t", FortranNpy(TimeOf(run))}}));
+  testing::WriteText(
+      dir + "/lab.npz",
+      Npz({{"poses", FortranNpy(poses)}, {"commands", FortranNpy(commands)}, {"t", FortranNpy(TimeOf(run))}}));
   const CalibrationRun read = ReadCalibrationRun(dir + "/lab.npz", {});
   ASSERT_EQ(read.track.num_robots, 3);
   ASSERT_EQ(read.track.utime.size(), run.track.utime.size());
@@ -256,7 +256,8 @@ TEST(CalibrationRealLogsTest, ReadsOneRobotArraysOfTwoDimensions) {
   EXPECT_EQ(read.track.pose(250, 0).x_m, run.track.pose(250, 0).x_m);
   EXPECT_EQ(read.track.command(250, 0).w_radps, run.track.command(250, 0).w_radps);
   poses.shape = {300, 3};  // transposed: named, with what was expected
-  testing::WriteText(dir + "/transposed.npz", Npz({{"poses", formats::EncodeNpy(poses)}, {"commands", formats::EncodeNpy(commands)}}));
+  testing::WriteText(dir + "/transposed.npz",
+                     Npz({{"poses", formats::EncodeNpy(poses)}, {"commands", formats::EncodeNpy(commands)}}));
   const std::string error = ReadError(dir + "/transposed.npz");
   EXPECT_NE(error.find(dir + "/transposed.npz: array 'poses' is 300 x 3; expected 3 x N x T"), std::string::npos)
       << error;
@@ -357,7 +358,12 @@ TEST(CalibrationRealLogsTest, StraightDrivesShowTheDrift) {
   uint64_t seed = 20;
   for (double v : {0.05, 0.1, 0.2}) {
     std::vector<world::RobotTraits> traits;
-    runs.push_back(Drive(lab, seed++, 5, 500, [v](int, int64_t) { return world::UnicycleCommand{v, 0.0}; }, &traits));
+    runs.push_back(Drive(
+        lab, seed++, 5, 500,
+        [v](int, int64_t) {
+          return world::UnicycleCommand{v, 0.0};
+        },
+        &traits));
     for (const world::RobotTraits& t : traits) {
       truth += t.heading_drift_radps;
       ++robots;
@@ -413,8 +419,8 @@ TEST(CalibrationRealLogsTest, AFitOnClosedLoopRunsPredictsOpenLoopDrives) {
     const double phase = 0.011 * static_cast<double>(step) + 0.7 * robot;
     return world::UnicycleCommand{0.1 + 0.05 * std::sin(phase), 0.6 * std::sin(1.9 * phase)};
   };
-  const CalibrationReport report = LabCalibration().Fit(
-      {Drive(lab, 51, 6, 3000, closed_loop), Drive(lab, 52, 6, 3000, closed_loop)});
+  const CalibrationReport report =
+      LabCalibration().Fit({Drive(lab, 51, 6, 3000, closed_loop), Drive(lab, 52, 6, 3000, closed_loop)});
   auto delay = [](const world::RealismParams& model, double v) {
     const OpenLoopDriveMeasure::Drive drive = OpenLoopDriveMeasure::Simulate(model, 3, 20, 500, {v, 0.0});
     double sum = 0;

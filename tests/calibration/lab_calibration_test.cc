@@ -62,7 +62,8 @@ using calibration_drive::CalibrationDrive;
 // The calibration program's start poses and commands as the world takes them.
 std::vector<world::Pose2> StartPoses(int robots) {
   std::vector<world::Pose2> poses;
-  for (const Eigen::Vector3d& pose : calibration_drive::CalibrationDrive::StartPoses(robots)) poses.push_back({pose.x(), pose.y(), pose.z()});
+  for (const Eigen::Vector3d& pose : calibration_drive::CalibrationDrive::StartPoses(robots))
+    poses.push_back({pose.x(), pose.y(), pose.z()});
   return poses;
 }
 world::UnicycleCommand CommandAt(int64_t step) {
@@ -109,12 +110,26 @@ double TruthOf(const world::RealismParams& lab, const std::string& key) {
 // 20 keys, some key misses once in most seeds; that is what 95 % means).
 TEST(LabCalibrationTest, RecoversEveryDeterminedKeyOfASyntheticLabWithinItsInterval) {
   const world::RealismParams lab = SyntheticLab();
-  const std::vector<std::string> must_determine = {
-      "pose_noise_m", "pose_noise_rad", "pose_noise_moving_factor", "pose_quantum_m", "pose_quantum_rad",
-      "tracking_dropout_probability", "tracking_dropout_at_rest_factor", "tracking_dropout_mean_steps",
-      "command_latency_steps", "motor_lag_s", "motor_startup_m", "linear_gain_mean", "linear_gain_spread",
-      "angular_gain_mean", "angular_gain_spread", "heading_drift_mean_radps", "heading_drift_spread_radps",
-      "step_overrun_mean_s", "loop_stall_probability", "loop_stall_max_s"};
+  const std::vector<std::string> must_determine = {"pose_noise_m",
+                                                   "pose_noise_rad",
+                                                   "pose_noise_moving_factor",
+                                                   "pose_quantum_m",
+                                                   "pose_quantum_rad",
+                                                   "tracking_dropout_probability",
+                                                   "tracking_dropout_at_rest_factor",
+                                                   "tracking_dropout_mean_steps",
+                                                   "command_latency_steps",
+                                                   "motor_lag_s",
+                                                   "motor_startup_m",
+                                                   "linear_gain_mean",
+                                                   "linear_gain_spread",
+                                                   "angular_gain_mean",
+                                                   "angular_gain_spread",
+                                                   "heading_drift_mean_radps",
+                                                   "heading_drift_spread_radps",
+                                                   "step_overrun_mean_s",
+                                                   "loop_stall_probability",
+                                                   "loop_stall_max_s"};
   std::map<std::string, int> held;
   std::map<std::string, std::string> misses;
   for (uint64_t seed : {5, 6, 7}) {
@@ -139,7 +154,7 @@ TEST(LabCalibrationTest, RecoversEveryDeterminedKeyOfASyntheticLabWithinItsInter
         ++held[fitted.key];
       } else {
         misses[fitted.key] += world::PrintfText(" seed %d: %.6g [%.6g, %.6g];", static_cast<int>(seed), fitted.value,
-                                              fitted.low, fitted.high);
+                                                fitted.low, fitted.high);
       }
     }
     std::string error;
@@ -200,13 +215,15 @@ TEST(LabCalibrationTest, AStopAskedForDuringTheFitEndsItAtTheNextPoll) {
   const CalibrationReport whole = LabCalibration(world::RealismParams::Lab(), files::StopToken([&polls] {
                                                    ++polls;
                                                    return false;
-                                                 })).Fit(runs);
+                                                 }))
+                                      .Fit(runs);
   EXPECT_FALSE(whole.keys.empty());
   // 4 robots per evaluation, and hundreds of evaluations: never long between polls.
   EXPECT_GT(polls, 4 * 300);
   for (const int stop_at : {1, 50, polls / 2, polls}) {
     int asked = 0;
-    const LabCalibration fit(world::RealismParams::Lab(), files::StopToken([&asked, stop_at] { return ++asked >= stop_at; }));
+    const LabCalibration fit(world::RealismParams::Lab(),
+                             files::StopToken([&asked, stop_at] { return ++asked >= stop_at; }));
     EXPECT_THROW(fit.Fit(runs), files::Stopped) << "stop at poll " << stop_at;
     EXPECT_EQ(asked, stop_at) << "nothing more is computed once asked";
   }
@@ -239,9 +256,8 @@ TEST(LabCalibrationTest, EachHalfsIntervalHoldsTheOtherHalfsValue) {
 TEST(LabCalibrationTest, TheTrueModelPredictsItsOwnRunsBest) {
   const world::RealismParams lab = SyntheticLab();
   const std::vector<CalibrationRun> runs = {SyntheticRun(lab, 6, 11, 1)};
-  const std::vector<NamedModel> models = {{"ideal", world::RealismParams::Ideal()},
-                                          {"lab_v1", world::RealismParams::LabV1()},
-                                          {"truth", lab}};
+  const std::vector<NamedModel> models = {
+      {"ideal", world::RealismParams::Ideal()}, {"lab_v1", world::RealismParams::LabV1()}, {"truth", lab}};
   const std::vector<ModelPrediction> predictions = LabModelCheck::Predict(runs, models);
   ASSERT_EQ(predictions.size(), 3U);
   EXPECT_GT(predictions[2].predictions, 100);
@@ -377,7 +393,8 @@ TEST_F(CalibrationFileTest, ReadsMatFilesAndRefusesShapesThatDisagree) {
   EXPECT_EQ(read.track.command(100, 2).w_radps, run.track.command(100, 2).w_radps);
   EXPECT_FALSE(read.timed);
   files::WriteFileAtomically(Path("poses_only.npy"), formats::EncodeNpy(poses));
-  EXPECT_NE(Error(Path("poses_only.npy")).find("expected 5 x N x T"), std::string::npos) << Error(Path("poses_only.npy"));
+  EXPECT_NE(Error(Path("poses_only.npy")).find("expected 5 x N x T"), std::string::npos)
+      << Error(Path("poses_only.npy"));
   EXPECT_NE(Error(Path("lab.txt")).find("not a run folder"), std::string::npos);
   EXPECT_NE(Error(Path("nothing_here")).find("not a run folder"), std::string::npos);
 }

@@ -192,11 +192,13 @@ TEST(ConfigOverride, OverridingDoesNotEditOtherNodes) {
 }
 
 TEST(SweepParameter, ParsesKeyAndValuesSplittingOnlyTopLevelCommas) {
-  const config_overrides::SweepParameter speeds = config_overrides::SweepParameter::Parse("controller.max_speed_mps=0.1, 0.15,0.2");
+  const config_overrides::SweepParameter speeds =
+      config_overrides::SweepParameter::Parse("controller.max_speed_mps=0.1, 0.15,0.2");
   EXPECT_EQ(speeds.key, "controller.max_speed_mps");
   EXPECT_EQ(speeds.values, (std::vector<std::string>{"0.1", "0.15", "0.2"}));
   EXPECT_EQ(speeds.ShortName(), "max_speed_mps");
-  const config_overrides::SweepParameter goals = config_overrides::SweepParameter::Parse("controller.goals.0=[0.1, 0.2],[0.3,0.4],'a,b'");
+  const config_overrides::SweepParameter goals =
+      config_overrides::SweepParameter::Parse("controller.goals.0=[0.1, 0.2],[0.3,0.4],'a,b'");
   EXPECT_EQ(goals.values, (std::vector<std::string>{"[0.1, 0.2]", "[0.3,0.4]", "'a,b'"}));
   EXPECT_EQ(goals.ShortName(), "goals.0");
   EXPECT_EQ(config_overrides::SweepParameter::Parse("steps=100").ShortName(), "steps");
@@ -216,8 +218,9 @@ TEST(SweepParameter, BadTextIsAnErrorNamingTheOption) {
   EXPECT_NE(error_of("a..b=1").find("is not a dotted key"), std::string::npos);
   // A control byte (or NUL, through the library) in a key would make the run folder's config.yaml
   // unreadable (found by fuzzing); the message shows it escaped.
-  EXPECT_EQ(error_of("controller.max\x01r=4"),
-            "--set controller.max\\x01r=4: 'controller.max\\x01r' is not a dotted key like controller.sensors.0.noise_std");
+  EXPECT_EQ(
+      error_of("controller.max\x01r=4"),
+      "--set controller.max\\x01r=4: 'controller.max\\x01r' is not a dotted key like controller.sensors.0.noise_std");
   EXPECT_NE(error_of(std::string("controller.max\0r=4", 18)).find("'controller.max\\x00r' is not a dotted key"),
             std::string::npos);
   EXPECT_NE(error_of("controller.m\xa1x=4").find("is not a dotted key"), std::string::npos);

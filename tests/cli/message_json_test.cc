@@ -32,9 +32,10 @@ TEST(MessageJson, PosesDecodeToTheirFieldsInOrder) {
   const MessageJson json(Encoded(TwoRobots()));
   ASSERT_EQ(json.outcome(), MessageJson::Outcome::kDecoded) << json.problem();
   EXPECT_EQ(json.type(), "robot_poses_t");
-  EXPECT_EQ(json.fields().dump(),
-            R"({"utime":33000,"step":1,"run_id":"0000000000000abc","num_robots":2,"x":[0.5,-0.25],"y":[0.1,0.2],"theta":[3.0,-1.5],)"
-            R"("v":[0.1,0.0],"w":[0.0,0.5]})");
+  EXPECT_EQ(
+      json.fields().dump(),
+      R"({"utime":33000,"step":1,"run_id":"0000000000000abc","num_robots":2,"x":[0.5,-0.25],"y":[0.1,0.2],"theta":[3.0,-1.5],)"
+      R"("v":[0.1,0.0],"w":[0.0,0.5]})");
 }
 
 TEST(MessageJson, RadioPayloadIsHex) {

@@ -61,10 +61,12 @@ TEST_F(OverriddenConfigTest, WithoutOverridesTheFileIsReadAndCopiedAsItIs) {
 }
 
 TEST_F(OverriddenConfigTest, SeedAndSetsChangeTheRunAndTheFolderTextReloadsToTheSameRun) {
-  const config_overrides::OverriddenConfig overridden(path_, 7, {"controller.max_speed_mps=0.1", "controller.goals.2=[0.4, 0.4]"});
+  const config_overrides::OverriddenConfig overridden(
+      path_, 7, {"controller.max_speed_mps=0.1", "controller.goals.2=[0.4, 0.4]"});
   const run_config::RunConfig config = overridden.LoadWith(&run_config::LoadRunConfig);
   EXPECT_EQ(config.seed, 7u);
-  EXPECT_EQ(overridden.OptionsText(), "--seed 7 --set controller.max_speed_mps=0.1 --set controller.goals.2=[0.4, 0.4]");
+  EXPECT_EQ(overridden.OptionsText(),
+            "--seed 7 --set controller.max_speed_mps=0.1 --set controller.goals.2=[0.4, 0.4]");
   EXPECT_NE(config.initial_poses[0].x_m, run_config::LoadRunConfigFile(path_).initial_poses[0].x_m)
       << "another seed must generate other start poses";
 
@@ -116,7 +118,8 @@ TEST_F(OverriddenConfigTest, SimOnlyCanBeSetFromTheCommandLine) {
   EXPECT_TRUE(agent.sim_only);
   EXPECT_EQ(agent.num_robots, 60);
   const std::string copy = overridden.Text();
-  const config::ControllerConfig again = config::LoadControllerConfig(config::ConfigNode::LoadString(copy, "copy.yaml"));
+  const config::ControllerConfig again =
+      config::LoadControllerConfig(config::ConfigNode::LoadString(copy, "copy.yaml"));
   EXPECT_TRUE(again.sim_only);
   EXPECT_EQ(again.num_robots, 60);
   // A quoted value in the file is replaced by the command line's plain one.

@@ -20,8 +20,8 @@ using run_config::BarrierConfig;
 
 std::string ConfigWith(const std::string& barrier_lines, const std::string& world_lines = "") {
   return "name: demo\nrobots: 2\nsteps: 10\ninitial_poses:\n  - [-0.3, 0.0, 0.0]\n  - [0.3, 0.0, 3.14159]\n"
-         "world:\n  mode: lockstep\n" + world_lines + barrier_lines +
-         "controller:\n  kind: go_to_goal\n  goals: [[0.3, 0.0], [-0.3, 0.0]]\n";
+         "world:\n  mode: lockstep\n" +
+         world_lines + barrier_lines + "controller:\n  kind: go_to_goal\n  goals: [[0.3, 0.0], [-0.3, 0.0]]\n";
 }
 
 run_config::RunConfig Load(const std::string& text) {
@@ -80,8 +80,9 @@ TEST(BarrierConfigTest, EveryKeyIsRead) {
 }
 
 TEST(BarrierConfigTest, MistakesNameFileLineKeyAndValue) {
-  EXPECT_NE(ErrorOf(ConfigWith("barriers:\n  kind: unicycel\n")).find("test.yaml:10: barriers.kind: unknown barrier kind "
-                                                                      "'unicycel' (did you mean 'unicycle'?)"),
+  EXPECT_NE(ErrorOf(ConfigWith("barriers:\n  kind: unicycel\n"))
+                .find("test.yaml:10: barriers.kind: unknown barrier kind "
+                      "'unicycel' (did you mean 'unicycle'?)"),
             std::string::npos)
       << ErrorOf(ConfigWith("barriers:\n  kind: unicycel\n"));
   EXPECT_NE(ErrorOf(ConfigWith("barriers:\n  kind: unicycle\n  safety_radius_m: -0.1\n"))
@@ -104,8 +105,8 @@ TEST(BarrierConfigTest, MistakesNameFileLineKeyAndValue) {
 TEST(BarrierConfigTest, TheWorldFiltersOnlyWhenTheConfigSaysWorld) {
   const auto plain = run_config::WorldOfConfig(Load(ConfigWith("")));
   EXPECT_EQ(dynamic_cast<const world::BarrierWorld*>(plain.get()), nullptr);
-  const auto controller = run_config::WorldOfConfig(
-      Load(ConfigWith("barriers:\n  kind: unicycle\n  apply_in: controller\n")));
+  const auto controller =
+      run_config::WorldOfConfig(Load(ConfigWith("barriers:\n  kind: unicycle\n  apply_in: controller\n")));
   EXPECT_EQ(dynamic_cast<const world::BarrierWorld*>(controller.get()), nullptr);
   const auto filtered = run_config::WorldOfConfig(Load(ConfigWith("barriers:\n  kind: unicycle\n")));
   const auto* barrier_world = dynamic_cast<const world::BarrierWorld*>(filtered.get());

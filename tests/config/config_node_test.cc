@@ -38,8 +38,7 @@ std::string ReadError(const std::string& text, Read read) {
 }
 
 TEST(ConfigNodeTest, DuplicateTopLevelKeyNamesBothLines) {
-  EXPECT_EQ(ParseError("name: a\nrobots: 1\nname: b\n"),
-            "test.yaml:3: name: duplicate key; first given at line 1");
+  EXPECT_EQ(ParseError("name: a\nrobots: 1\nname: b\n"), "test.yaml:3: name: duplicate key; first given at line 1");
 }
 
 TEST(ConfigNodeTest, DuplicateKeysAreFoundAtAnyDepth) {
@@ -54,9 +53,8 @@ TEST(ConfigNodeTest, DuplicateKeysAreFoundAtAnyDepth) {
 }
 
 TEST(ConfigNodeTest, SameKeyInDifferentMapsIsNotADuplicate) {
-  const ConfigNode root =
-      ConfigNode::LoadString("obstacles:\n  - {center: [0, 0], size: [1, 1]}\n  - {center: [1, 0], size: [1, 1]}\n",
-                             "test.yaml");
+  const ConfigNode root = ConfigNode::LoadString(
+      "obstacles:\n  - {center: [0, 0], size: [1, 1]}\n  - {center: [1, 0], size: [1, 1]}\n", "test.yaml");
   EXPECT_EQ(root.Required("obstacles")[1].Required("center").AsDoubles(), (std::vector<double>{1.0, 0.0}));
 }
 
@@ -123,9 +121,11 @@ TEST(ConfigNodeTest, AliasesThatExplodeAreAnError) {
 }
 
 TEST(ConfigNodeTest, NestingIsBounded) {
-  const std::string deep = "a: " + std::string(ConfigNode::kMaxDepth + 5, '[') + std::string(ConfigNode::kMaxDepth + 5, ']');
+  const std::string deep =
+      "a: " + std::string(ConfigNode::kMaxDepth + 5, '[') + std::string(ConfigNode::kMaxDepth + 5, ']');
   EXPECT_NE(ParseError(deep).find("nested more than 100 levels deep"), std::string::npos) << ParseError(deep);
-  const std::string fine = "a: " + std::string(ConfigNode::kMaxDepth - 1, '[') + std::string(ConfigNode::kMaxDepth - 1, ']');
+  const std::string fine =
+      "a: " + std::string(ConfigNode::kMaxDepth - 1, '[') + std::string(ConfigNode::kMaxDepth - 1, ']');
   EXPECT_EQ(ParseError(fine), "");
 }
 
@@ -146,19 +146,22 @@ TEST(ConfigNodeTest, OnlyARegularFileOfBoundedSizeIsReadAsAConfig) {
   // Before: opening the FIFO waited for a writer forever (this test hung).
   EXPECT_EQ(ReadFileError(fifo), fifo + ": is a FIFO (named pipe), not a config file; give the path of a YAML file");
   // Before: read 2 GB, then std::bad_alloc.
-  EXPECT_EQ(ReadFileError("/dev/zero"), "/dev/zero: is a character device, not a config file; give the path of a YAML file");
+  EXPECT_EQ(ReadFileError("/dev/zero"),
+            "/dev/zero: is a character device, not a config file; give the path of a YAML file");
   EXPECT_EQ(ReadFileError(folder.path().string()),
             folder.path().string() + ": is a folder, not a config file; give the path of a YAML file");
   const std::string large = (folder.path() / "large.yaml").string();
   std::ofstream(large) << "name: x\n";
   std::filesystem::resize_file(large, ConfigNode::kMaxFileBytes + 1);  // sparse: no disk used
-  EXPECT_EQ(ReadFileError(large), large + ": the config file is 16777217 bytes; a config holds at most 16777216 bytes "
-                                          "(is this the right file?)");
+  EXPECT_EQ(ReadFileError(large), large +
+                                      ": the config file is 16777217 bytes; a config holds at most 16777216 bytes "
+                                      "(is this the right file?)");
   std::filesystem::resize_file(large, ConfigNode::kMaxFileBytes);
   EXPECT_EQ(ConfigNode::ReadFile(large).size(), ConfigNode::kMaxFileBytes);
   const std::string missing = (folder.path() / "missing.yaml").string();
-  EXPECT_EQ(ReadFileError(missing), missing + ": cannot open the config file: No such file or directory (does it "
-                                              "exist and is it readable?)");
+  EXPECT_EQ(ReadFileError(missing), missing +
+                                        ": cannot open the config file: No such file or directory (does it "
+                                        "exist and is it readable?)");
 }
 
 TEST(ConfigNodeTest, EveryScalarReaderNamesFileLineKeyAndWhatItGot) {
@@ -169,13 +172,20 @@ TEST(ConfigNodeTest, EveryScalarReaderNamesFileLineKeyAndWhatItGot) {
     const char* expected;
   };
   const Case cases[] = {
-      {"list", [](const ConfigNode& n) { return std::to_string(n.AsDouble()); }, "test.yaml:1: list: expected a number, got a list"},
-      {"map", [](const ConfigNode& n) { return std::to_string(n.AsDouble()); }, "test.yaml:2: map: expected a number, got a mapping"},
-      {"word", [](const ConfigNode& n) { return std::to_string(n.AsDouble()); }, "test.yaml:3: word: expected a number, got 'many'"},
-      {"list", [](const ConfigNode& n) { return std::to_string(n.AsInt()); }, "test.yaml:1: list: expected a whole number, got a list"},
-      {"number", [](const ConfigNode& n) { return std::to_string(n.AsInt()); }, "test.yaml:4: number: expected a whole number, got '2.5'"},
-      {"map", [](const ConfigNode& n) { return std::to_string(n.AsBool()); }, "test.yaml:2: map: expected true or false, got a mapping"},
-      {"word", [](const ConfigNode& n) { return std::to_string(n.AsBool()); }, "test.yaml:3: word: expected true or false, got 'many'"},
+      {"list", [](const ConfigNode& n) { return std::to_string(n.AsDouble()); },
+       "test.yaml:1: list: expected a number, got a list"},
+      {"map", [](const ConfigNode& n) { return std::to_string(n.AsDouble()); },
+       "test.yaml:2: map: expected a number, got a mapping"},
+      {"word", [](const ConfigNode& n) { return std::to_string(n.AsDouble()); },
+       "test.yaml:3: word: expected a number, got 'many'"},
+      {"list", [](const ConfigNode& n) { return std::to_string(n.AsInt()); },
+       "test.yaml:1: list: expected a whole number, got a list"},
+      {"number", [](const ConfigNode& n) { return std::to_string(n.AsInt()); },
+       "test.yaml:4: number: expected a whole number, got '2.5'"},
+      {"map", [](const ConfigNode& n) { return std::to_string(n.AsBool()); },
+       "test.yaml:2: map: expected true or false, got a mapping"},
+      {"word", [](const ConfigNode& n) { return std::to_string(n.AsBool()); },
+       "test.yaml:3: word: expected true or false, got 'many'"},
       {"list", [](const ConfigNode& n) { return n.AsString(); }, "test.yaml:1: list: expected text, got a list"},
       {"map", [](const ConfigNode& n) { return n.AsString(); }, "test.yaml:2: map: expected text, got a mapping"},
       {"map", [](const ConfigNode& n) { return std::to_string(n.AsDoubles().size()); },
@@ -232,8 +242,7 @@ TEST(ConfigNodeTest, RunConfigTypeErrorsNeverShowYamlCppText) {
       text.replace(at, std::string(scalar).size(), replacement);
       const std::string error = ReadError(text, [](const ConfigNode& root) { run_config::LoadRunConfig(root); });
       EXPECT_EQ(error.rfind("test.yaml:", 0), 0u) << scalar << " -> " << replacement << ": " << error;
-      EXPECT_NE(error.find(std::string(", got ") + (replacement[0] == '[' ? "a list" : "a mapping")),
-                std::string::npos)
+      EXPECT_NE(error.find(std::string(", got ") + (replacement[0] == '[' ? "a list" : "a mapping")), std::string::npos)
           << scalar << " -> " << replacement << ": " << error;
       EXPECT_EQ(error.find("bad conversion"), std::string::npos) << error;
     }

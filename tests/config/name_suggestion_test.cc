@@ -16,11 +16,11 @@ namespace {
 const std::vector<std::string> kKeys = {"spacing_m", "gain", "max_speed_mps", "tolerance_m", "resume_m"};
 
 TEST(NameSuggestionTest, ATypoGetsTheClosestName) {
-  EXPECT_EQ(DidYouMean("tolerence_m", kKeys), " (did you mean 'tolerance_m'?)");  // a letter wrong
+  EXPECT_EQ(DidYouMean("tolerence_m", kKeys), " (did you mean 'tolerance_m'?)");     // a letter wrong
   EXPECT_EQ(DidYouMean("max_sped_mps", kKeys), " (did you mean 'max_speed_mps'?)");  // one missing
-  EXPECT_EQ(DidYouMean("gian", kKeys), " (did you mean 'gain'?)");                    // two swapped
-  EXPECT_EQ(DidYouMean("Spacing_M", kKeys), " (did you mean 'spacing_m'?)");          // case
-  EXPECT_EQ(DidYouMean("spacing", kKeys), " (did you mean 'spacing_m'?)");            // the start of one
+  EXPECT_EQ(DidYouMean("gian", kKeys), " (did you mean 'gain'?)");                   // two swapped
+  EXPECT_EQ(DidYouMean("Spacing_M", kKeys), " (did you mean 'spacing_m'?)");         // case
+  EXPECT_EQ(DidYouMean("spacing", kKeys), " (did you mean 'spacing_m'?)");           // the start of one
   EXPECT_EQ(DidYouMean("hrvo_cirlce", {"go_to_goal", "hrvo_circle", "line_deployment"}),
             " (did you mean 'hrvo_circle'?)");
 }
@@ -29,7 +29,7 @@ TEST(NameSuggestionTest, NothingCloseGetsNoSuggestion) {
   EXPECT_EQ(DidYouMean("bogus", kKeys), "");
   EXPECT_EQ(DidYouMean("gxyz", kKeys), "");  // short names allow one edit only
   EXPECT_EQ(DidYouMean("", kKeys), "");
-  EXPECT_EQ(DidYouMean("ga", kKeys), "");  // too short to be taken for the start of "gain"
+  EXPECT_EQ(DidYouMean("ga", kKeys), "");    // too short to be taken for the start of "gain"
   EXPECT_EQ(DidYouMean("gain", kKeys), "");  // a known name needs no suggestion
   EXPECT_EQ(DidYouMean(std::string(10000, 'g'), kKeys), "");
   EXPECT_EQ(DidYouMean("gain", {}), "");

@@ -19,11 +19,13 @@ namespace {
 
 std::string ConfigWith(const std::string& world_lines) {
   return "name: demo\nrobots: 1\nsteps: 10\ninitial_poses:\n  - [0.0, 0.0, 0.0]\n"
-         "world:\n  mode: lockstep\n" + world_lines +
-         "controller:\n  kind: go_to_goal\n  goals: [[0.1, 0.1]]\n";
+         "world:\n  mode: lockstep\n" +
+         world_lines + "controller:\n  kind: go_to_goal\n  goals: [[0.1, 0.1]]\n";
 }
 
-run_config::RunConfig Load(const std::string& text) { return run_config::LoadRunConfig(ConfigNode::LoadString(text, "test.yaml")); }
+run_config::RunConfig Load(const std::string& text) {
+  return run_config::LoadRunConfig(ConfigNode::LoadString(text, "test.yaml"));
+}
 
 std::string ErrorOf(const std::string& text) {
   try {
@@ -138,7 +140,9 @@ TEST(RealismConfigTest, BadValuesNameFileLineAndKey) {
   const std::string preset = ErrorOf(ConfigWith("  realism: labb\n"));
   EXPECT_NE(preset.find("test.yaml:8"), std::string::npos) << preset;
   EXPECT_NE(preset.find("unknown realism preset 'labb' "
-                        "(did you mean 'lab'?); known presets: ideal, lab, lab_v1"), std::string::npos) << preset;
+                        "(did you mean 'lab'?); known presets: ideal, lab, lab_v1"),
+            std::string::npos)
+      << preset;
 
   const std::string map_preset = ErrorOf(ConfigWith("  realism: {preset: real}\n"));
   EXPECT_NE(map_preset.find("known presets: ideal, lab, lab_v1"), std::string::npos) << map_preset;
@@ -168,9 +172,7 @@ class RealismFileTest : public ::testing::Test {
     Write("labs/mylab.yaml", "preset: lab\nmotor_lag_s: 0.2  # fitted\ncommand_latency_steps: 6\n");
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
-  void Write(const std::string& name, const std::string& text) const {
-    std::ofstream(dir_ / name) << text;
-  }
+  void Write(const std::string& name, const std::string& text) const { std::ofstream(dir_ / name) << text; }
   run_config::RunConfig LoadFile(const std::string& world_lines) const {
     Write("run.yaml", ConfigWith(world_lines));
     return run_config::LoadRunConfigFile((dir_ / "run.yaml").string());
@@ -222,11 +224,13 @@ TEST_F(RealismFileTest, BadFilesAreNamed) {
 }
 
 TEST(RealismConfigTest, LabModelKeysAreReadAndChecked) {
-  const world::RealismParams params = Load(ConfigWith(
-      "  realism:\n    motor_lag_s: 0.1\n    motor_startup_m: 0.01\n    linear_gain_mean: 0.95\n"
-      "    angular_gain_spread: 0.02\n    heading_drift_spread_radps: 0.005\n    step_overrun_mean_s: 0.001\n"
-      "    loop_stall_probability: 0.001\n    loop_stall_max_s: 0.5\n    pose_noise_moving_factor: 2\n"
-      "    tracking_dropout_at_rest_factor: 4\n")).realism;
+  const world::RealismParams params =
+      Load(ConfigWith(
+               "  realism:\n    motor_lag_s: 0.1\n    motor_startup_m: 0.01\n    linear_gain_mean: 0.95\n"
+               "    angular_gain_spread: 0.02\n    heading_drift_spread_radps: 0.005\n    step_overrun_mean_s: 0.001\n"
+               "    loop_stall_probability: 0.001\n    loop_stall_max_s: 0.5\n    pose_noise_moving_factor: 2\n"
+               "    tracking_dropout_at_rest_factor: 4\n"))
+          .realism;
   EXPECT_EQ(params.motor_lag_s, 0.1);
   EXPECT_EQ(params.motor_startup_m, 0.01);
   EXPECT_EQ(params.linear_gain_mean, 0.95);

@@ -54,7 +54,8 @@ TEST(RunConfigPluginsTest, TheRunFoldersCopyFindsTheSamePlugins) {
   EXPECT_EQ(reread.plugins, config.plugins);
   // Nothing to add without relative plugin paths, or with plugin_dir already there.
   const std::string plain = std::string(kBase) + "plugins: [/opt/liba.so]\n";
-  EXPECT_EQ(run_config::RunFolderConfigText(run_config::LoadRunConfig(ConfigNode::LoadString(plain, "p.yaml")), plain), plain);
+  EXPECT_EQ(run_config::RunFolderConfigText(run_config::LoadRunConfig(ConfigNode::LoadString(plain, "p.yaml")), plain),
+            plain);
   EXPECT_EQ(run_config::RunFolderConfigText(reread, copy), copy);
   EXPECT_EQ(run_config::RunFolderConfigText(Load(""), kBase), kBase);
 }

@@ -19,7 +19,9 @@ controller:
   goals: [[0.1, 0.1], [0.6, 0.1]]
 )";
 
-run_config::RunConfig Load(const std::string& text) { return run_config::LoadRunConfig(ConfigNode::LoadString(text, "test.yaml")); }
+run_config::RunConfig Load(const std::string& text) {
+  return run_config::LoadRunConfig(ConfigNode::LoadString(text, "test.yaml"));
+}
 
 /// The ConfigError message for `text`, or "" if it loads.
 std::string ErrorOf(const std::string& text) {
@@ -159,8 +161,8 @@ TEST(RunConfigTest, MovingObstacleMayCrossAStartPoseLater) {
 TEST(RunConfigTest, GeneratedPosesAvoidObstacles) {
   // Thirty robots around a block covering a fifth of the arena (without the
   // obstacles in the generator, seed 3 puts several on it).
-  std::string text = Replace(Replace(kMinimal, "  - [0.0, 0.0, 0.0]\n  - [0.5, 0.0, 1.57]\n", ""),
-                             "initial_poses:\n", "initial_poses: {generate: {min_spacing_m: 0.25}}\n");
+  std::string text = Replace(Replace(kMinimal, "  - [0.0, 0.0, 0.0]\n  - [0.5, 0.0, 1.57]\n", ""), "initial_poses:\n",
+                             "initial_poses: {generate: {min_spacing_m: 0.25}}\n");
   text = Replace(text, "robots: 2", "robots: 30") + "obstacles:\n  - center: [0.0, 0.0]\n    size: [1.6, 0.8]\n";
   text = Replace(text, "goals: [[0.1, 0.1], [0.6, 0.1]]", "goals: []");
   const run_config::RunConfig config = Load(text);
@@ -171,8 +173,8 @@ TEST(RunConfigTest, GeneratedPosesAvoidObstacles) {
 }
 
 TEST(RunConfigTest, ImpossibleGenerationNamesTheKeyAndWhatToChange) {
-  std::string text = Replace(Replace(kMinimal, "  - [0.0, 0.0, 0.0]\n  - [0.5, 0.0, 1.57]\n", ""),
-                             "initial_poses:\n", "initial_poses:\n  generate: {min_spacing_m: 0.25}\n");
+  std::string text = Replace(Replace(kMinimal, "  - [0.0, 0.0, 0.0]\n  - [0.5, 0.0, 1.57]\n", ""), "initial_poses:\n",
+                             "initial_poses:\n  generate: {min_spacing_m: 0.25}\n");
   text += "obstacles:\n  - center: [0.0, 0.0]\n    size: [3.2, 2.0]\n";
   const std::string error = ErrorOf(text);
   EXPECT_NE(error.find("test.yaml:6: initial_poses.generate: cannot generate initial poses"), std::string::npos)
@@ -197,10 +199,12 @@ TEST(RunConfigTest, WrongPoseCountAndShape) {
 TEST(RunConfigTest, UnknownKeysAreTyposAndSayWhatIsAllowed) {
   const std::string error = ErrorOf(Replace(kMinimal, "steps: 100", "stpes: 100"));
   EXPECT_NE(error.find("test.yaml:4: stpes: unknown key "
-                       "(did you mean 'steps'?); allowed keys here: name, seed"), std::string::npos)
+                       "(did you mean 'steps'?); allowed keys here: name, seed"),
+            std::string::npos)
       << error;
-  EXPECT_NE(ErrorOf(std::string(kMinimal) + "world: {mode: fast}\n").find("unknown world mode 'fast'; allowed: "
-                                                                          "lockstep, realtime"),
+  EXPECT_NE(ErrorOf(std::string(kMinimal) + "world: {mode: fast}\n")
+                .find("unknown world mode 'fast'; allowed: "
+                      "lockstep, realtime"),
             std::string::npos);
   EXPECT_NE(ErrorOf(std::string(kMinimal) + "world: {agent_timeout_s: -1}\n")
                 .find("test.yaml:11: world.agent_timeout_s: must be > 0, got -1"),
@@ -209,7 +213,8 @@ TEST(RunConfigTest, UnknownKeysAreTyposAndSayWhatIsAllowed) {
   for (const char* interval : {"1e-6", "0", "-1"}) {
     EXPECT_NE(ErrorOf(std::string(kMinimal) + "world: {resend_interval_s: " + interval + "}\n")
                   .find(std::string("test.yaml:11: world.resend_interval_s: must be >= 0.01 s (more often floods the "
-                                    "bus), got ") + interval),
+                                    "bus), got ") +
+                        interval),
               std::string::npos)
         << interval;
   }
@@ -232,10 +237,12 @@ TEST(RunConfigTest, BadObstacles) {
 TEST(RunConfigTest, ObstacleCountIsBounded) {
   const auto obstacles = [](size_t count) {
     std::string text = "obstacles:\n";
-    for (size_t i = 0; i < count; ++i) text += "  - {center: [" + std::to_string(i % 2000) + ", 50], size: [0.1, 0.1]}\n";
+    for (size_t i = 0; i < count; ++i)
+      text += "  - {center: [" + std::to_string(i % 2000) + ", 50], size: [0.1, 0.1]}\n";
     return text;
   };
-  EXPECT_EQ(Load(std::string(kMinimal) + obstacles(run_config::RunConfig::kMaxObstacles)).obstacles.size(), run_config::RunConfig::kMaxObstacles);
+  EXPECT_EQ(Load(std::string(kMinimal) + obstacles(run_config::RunConfig::kMaxObstacles)).obstacles.size(),
+            run_config::RunConfig::kMaxObstacles);
   const std::string error = ErrorOf(std::string(kMinimal) + obstacles(run_config::RunConfig::kMaxObstacles + 1));
   EXPECT_NE(error.find(": obstacles: at most 10000 obstacles, got 10001"), std::string::npos) << error;
 }

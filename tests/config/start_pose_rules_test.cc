@@ -50,7 +50,8 @@ std::vector<std::string> ExportRefusals(double x, double y) {
   end.seen = true;
   end.state = run_status_t::FINISHED;
   std::vector<std::string> rules;
-  for (const bridge::ExportProblem& p : bridge::PreValidate(track, end, world::WorldParams{}, 240)) rules.push_back(p.rule);
+  for (const bridge::ExportProblem& p : bridge::PreValidate(track, end, world::WorldParams{}, 240))
+    rules.push_back(p.rule);
   return rules;
 }
 
@@ -87,8 +88,7 @@ TEST(StartPoseRulesTest, AcceptedMeansNoBoundaryErrorAndNoExportRefusal) {
       const double x = wall.is_x ? v : 0.3;
       const double y = wall.is_x ? 0.3 : v;
       const std::vector<std::string> refusals = ExportRefusals(x, y);
-      const bool export_refuses =
-          std::find(refusals.begin(), refusals.end(), "start_inside_arena") != refusals.end();
+      const bool export_refuses = std::find(refusals.begin(), refusals.end(), "start_inside_arena") != refusals.end();
       const bool accepts = ConfigAccepts(x, y);
       EXPECT_EQ(accepts, !export_refuses) << "(" << Exact(x) << ", " << Exact(y) << ")";
       if (accepts) {

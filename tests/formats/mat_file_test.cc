@@ -23,9 +23,7 @@ namespace {
 
 using ::testing::HasSubstr;
 
-void WriteFile(const std::string& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary) << bytes;
-}
+void WriteFile(const std::string& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
 
 class MatFileTest : public ::testing::Test {
  protected:
@@ -86,7 +84,8 @@ TEST_F(MatFileTest, ForgedV4HeadersAreRefusedBeforeLibmatioReadsThem) {
       // A type found byte-swapped (bytes 00 00 00 01: 1) but whose M (0) says little-endian:
       // libmatio reads the rest little-endian, a 2013265920-byte name.
       {Mat4Variable(16777216, 0, 0, 0x78000000, name, {}), "v4 variable 0 at byte 0 has a name of 2013265920 bytes"},
-      {Mat4Variable(0, 1, 1, 13, name, {1}) + "short", "v4 variable 1 at byte 41 is cut short inside its 20-byte header"},
+      {Mat4Variable(0, 1, 1, 13, name, {1}) + "short",
+       "v4 variable 1 at byte 41 is cut short inside its 20-byte header"},
       {"not a MATLAB file at all, just text that goes on", "v4 variable 0 at byte 0 has type 544501614, not a v4"},
   };
   for (const auto& [bytes, problem] : cases) {
@@ -122,8 +121,8 @@ std::string CompressedMat5(const std::string& inside) {
 // inflates the first 4 KiB itself and refuses a header that does not fit.
 TEST_F(MatFileTest, ForgedCompressedHeadersAreRefusedBeforeLibmatioReadsThem) {
   const std::string dir = NewFolder("mat_v5_compressed");
-  const std::string flags = Int32s({6, 8, 6, 0});       // miUINT32 x 2: class double
-  const std::string dims = Int32s({5, 8, 2, 3});        // miINT32 x 2: 2 x 3
+  const std::string flags = Int32s({6, 8, 6, 0});                    // miUINT32 x 2: class double
+  const std::string dims = Int32s({5, 8, 2, 3});                     // miINT32 x 2: 2 x 3
   const std::string data = Int32s({9, 48}) + std::string(48, '\0');  // miDOUBLE x 6
   auto matrix = [](const std::string& body) { return Int32s({14, static_cast<int32_t>(body.size())}) + body; };
   const std::string name = Int32s({1, 12}) + "dream_result" + std::string(4, '\0');  // padded to 8 bytes
@@ -134,7 +133,8 @@ TEST_F(MatFileTest, ForgedCompressedHeadersAreRefusedBeforeLibmatioReadsThem) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {CompressedMat5(matrix(flags + dims + Int32s({1, 1000000000}) + "dream_result")),
        "(inflated, first 60 bytes): its name at byte 40 declares 1000000000 bytes of data, but only 12 follow"},
-      {CompressedMat5(matrix(flags + Int32s({5, 400000000}) + name)), "(inflated, first 56 bytes): its dimensions at byte 24 declares 400000000 bytes"},
+      {CompressedMat5(matrix(flags + Int32s({5, 400000000}) + name)),
+       "(inflated, first 56 bytes): its dimensions at byte 24 declares 400000000 bytes"},
       {CompressedMat5(Int32s({9, 8}) + std::string(8, '\0')), "holds data type 9, not a matrix (14)"},
       {CompressedMat5("abc"), "inflates to 3 bytes, not a matrix"},
       {CompressedMat5(Int32s({14, 2000000000}) + flags + dims + name), "says it inflates to 2000000000 bytes"},

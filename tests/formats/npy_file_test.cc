@@ -66,12 +66,15 @@ TEST(NpyFileTest, WritesTheHeaderNumpyWrites) {
 }
 
 TEST(NpyFileTest, ReadsNumpyLayoutsVersionTwoAndAnyKeyOrder) {
-  const NpyArray a = DecodeNpy(NpyBytes("{'descr': '<f8', 'fortran_order': False, 'shape': (2,), }", Doubles({1.5, 2.5})), "a");
+  const NpyArray a =
+      DecodeNpy(NpyBytes("{'descr': '<f8', 'fortran_order': False, 'shape': (2,), }", Doubles({1.5, 2.5})), "a");
   EXPECT_EQ(a.shape, (std::vector<int64_t>{2}));
   EXPECT_EQ(a.values, (std::vector<double>{1.5, 2.5}));
-  const NpyArray b = DecodeNpy(NpyBytes("{'shape': (1, 1), 'fortran_order': False, 'descr': '<f8'}", Doubles({7}), 2), "b");
+  const NpyArray b =
+      DecodeNpy(NpyBytes("{'shape': (1, 1), 'fortran_order': False, 'descr': '<f8'}", Doubles({7}), 2), "b");
   EXPECT_EQ(b.shape, (std::vector<int64_t>{1, 1}));
-  const NpyArray scalar = DecodeNpy(NpyBytes("{'descr': '<f8', 'fortran_order': False, 'shape': (), }", Doubles({4})), "c");
+  const NpyArray scalar =
+      DecodeNpy(NpyBytes("{'descr': '<f8', 'fortran_order': False, 'shape': (), }", Doubles({4})), "c");
   EXPECT_TRUE(scalar.shape.empty());
   EXPECT_EQ(scalar.values, (std::vector<double>{4}));
 }
@@ -93,12 +96,18 @@ TEST(NpyFileTest, RefusesEverythingButFloat64NamingTheFile) {
       {"float32", NpyBytes("{'descr': '<f4', 'fortran_order': False, 'shape': (2,), }", std::string(8, '\0')), "'<f4'"},
       {"big endian", NpyBytes("{'descr': '>f8', 'fortran_order': False, 'shape': (2,), }", Doubles({1, 2})), "'>f8'"},
       {"int64", NpyBytes("{'descr': '<i8', 'fortran_order': False, 'shape': (2,), }", Doubles({1, 2})), "'<i8'"},
-      {"pickled objects", NpyBytes("{'descr': '|O', 'fortran_order': False, 'shape': (2,), }", Doubles({1, 2})), "'|O'"},
-      {"extra key", NpyBytes("{'descr': '<f8', 'fortran_order': False, 'shape': (2,), 'x': 1}", Doubles({1, 2})), "unexpected key"},
+      {"pickled objects", NpyBytes("{'descr': '|O', 'fortran_order': False, 'shape': (2,), }", Doubles({1, 2})),
+       "'|O'"},
+      {"extra key", NpyBytes("{'descr': '<f8', 'fortran_order': False, 'shape': (2,), 'x': 1}", Doubles({1, 2})),
+       "unexpected key"},
       {"missing shape", NpyBytes("{'descr': '<f8', 'fortran_order': False}", Doubles({1, 2})), "lacks"},
-      {"code in the header", NpyBytes("{'descr': '<f8', 'fortran_order': __import__('os'), 'shape': (2,)}", Doubles({1, 2})), "True or False"},
-      {"negative shape", NpyBytes("{'descr': '<f8', 'fortran_order': False, 'shape': (-2,), }", Doubles({1, 2})), "tuple of whole numbers"},
-      {"absurd shape", NpyBytes("{'descr': '<f8', 'fortran_order': False, 'shape': (99999999999, 99999999999), }", ""), "absurd"},
+      {"code in the header",
+       NpyBytes("{'descr': '<f8', 'fortran_order': __import__('os'), 'shape': (2,)}", Doubles({1, 2})),
+       "True or False"},
+      {"negative shape", NpyBytes("{'descr': '<f8', 'fortran_order': False, 'shape': (-2,), }", Doubles({1, 2})),
+       "tuple of whole numbers"},
+      {"absurd shape", NpyBytes("{'descr': '<f8', 'fortran_order': False, 'shape': (99999999999, 99999999999), }", ""),
+       "absurd"},
       {"version 9", std::string("\x93NUMPY\x09\x00", 8) + std::string(100, ' '), "version 9.0"},
   };
   for (const BadNpy& bad : cases) {
@@ -127,12 +136,14 @@ TEST(NpyFileTest, ReadsFortranOrderAsNumpyDoes) {
   ASSERT_EQ(array.shape, (std::vector<int64_t>{2, 3, 4}));
   for (int i = 0; i < 2; ++i) {
     for (int j = 0; j < 3; ++j) {
-      for (int k = 0; k < 4; ++k) EXPECT_EQ(array.values[static_cast<size_t>((i * 3 + j) * 4 + k)], 100 * i + 10 * j + k);
+      for (int k = 0; k < 4; ++k)
+        EXPECT_EQ(array.values[static_cast<size_t>((i * 3 + j) * 4 + k)], 100 * i + 10 * j + k);
     }
   }
   // One dimension: the same either way.
-  EXPECT_EQ(DecodeNpy(NpyBytes("{'descr': '<f8', 'fortran_order': True, 'shape': (2,), }", Doubles({1, 2})), "f.npy").values,
-            (std::vector<double>{1, 2}));
+  EXPECT_EQ(
+      DecodeNpy(NpyBytes("{'descr': '<f8', 'fortran_order': True, 'shape': (2,), }", Doubles({1, 2})), "f.npy").values,
+      (std::vector<double>{1, 2}));
 }
 
 TEST(NpyFileTest, ReadFileNamesMissingAndOversizedFiles) {

@@ -15,8 +15,8 @@ void Finding(const std::string& what) {
 }
 
 std::string ScratchFile(const uint8_t* data, size_t size, const std::string& suffix) {
-  const std::string path = (std::filesystem::temp_directory_path() /
-                            ("dream_fuzz_" + std::to_string(::getpid()) + suffix)).string();
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("dream_fuzz_" + std::to_string(::getpid()) + suffix)).string();
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
   if (!out.flush()) Finding("cannot write the scratch file " + path);

@@ -16,15 +16,19 @@ void LabResultTarget(const uint8_t* data, size_t size) {
   try {
     if (mat) {
       const formats::NpyArray array = formats::ReadMatMatrix(path, "dream_result");
-      if (static_cast<int64_t>(array.values.size()) != array.size()) Finding("a .mat array whose values are not its shape");
+      if (static_cast<int64_t>(array.values.size()) != array.size())
+        Finding("a .mat array whose values are not its shape");
     } else {
       const formats::NpyArray array = formats::ReadNpyFile(path, int64_t{1} << 20);
-      if (static_cast<int64_t>(array.values.size()) != array.size()) Finding("an .npy array whose values are not its shape");
-      if (formats::DecodeNpy(formats::EncodeNpy(array), "again.npy").shape != array.shape) Finding("an .npy round trip changed the shape");
+      if (static_cast<int64_t>(array.values.size()) != array.size())
+        Finding("an .npy array whose values are not its shape");
+      if (formats::DecodeNpy(formats::EncodeNpy(array), "again.npy").shape != array.shape)
+        Finding("an .npy round trip changed the shape");
       if (array.shape.size() == 1) (void)bridge::SubmissionParams::FromNpy(array, path);
     }
   } catch (const std::exception& e) {
-    if (std::string(e.what()).find(path) == std::string::npos) Finding("a lab result error without its file: " + std::string(e.what()));
+    if (std::string(e.what()).find(path) == std::string::npos)
+      Finding("a lab result error without its file: " + std::string(e.what()));
   }
   std::filesystem::remove(path);
 }

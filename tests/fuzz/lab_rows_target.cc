@@ -21,7 +21,8 @@ void LabRowsTarget(const uint8_t* data, size_t size) {
     (void)bridge::LabVerifierReasons(lab, exported.config.world, exported.UploadDeclaration());
     (void)bridge::VerifierCounts(lab.track, exported.config.world);
   } catch (const std::exception& e) {
-    if (std::string(e.what()).find(name) == std::string::npos) Finding("a lab result error without its file: " + std::string(e.what()));
+    if (std::string(e.what()).find(name) == std::string::npos)
+      Finding("a lab result error without its file: " + std::string(e.what()));
   }
 }
 

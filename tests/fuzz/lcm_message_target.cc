@@ -40,13 +40,27 @@ void LcmMessageTarget(const uint8_t* data, size_t size) {
   // A copy of exactly the message's bytes, so ASan sees any read past them.
   const std::vector<uint8_t> bytes(data + 1, data + size);
   switch (data[0] % 8) {
-    case 0: Decode<applied_commands_t>(bytes); break;
-    case 1: Decode<obstacles_t>(bytes); break;
-    case 2: Decode<radio_message_t>(bytes); break;
-    case 3: Decode<robot_fault_t>(bytes); break;
-    case 4: Decode<robot_poses_t>(bytes); break;
-    case 5: Decode<run_status_t>(bytes); break;
-    case 6: Decode<velocity_command_t>(bytes); break;
+    case 0:
+      Decode<applied_commands_t>(bytes);
+      break;
+    case 1:
+      Decode<obstacles_t>(bytes);
+      break;
+    case 2:
+      Decode<radio_message_t>(bytes);
+      break;
+    case 3:
+      Decode<robot_fault_t>(bytes);
+      break;
+    case 4:
+      Decode<robot_poses_t>(bytes);
+      break;
+    case 5:
+      Decode<run_status_t>(bytes);
+      break;
+    case 6:
+      Decode<velocity_command_t>(bytes);
+      break;
     default:
       (void)agents::PositionMessage::Decode(bytes, 1);
       (void)affine_formation::FormationStateMessage::Decode(bytes, 1);

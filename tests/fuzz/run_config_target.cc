@@ -76,7 +76,8 @@ void RunConfigTarget(const uint8_t* data, size_t size) {
     for (int robot = 0; robot < run.num_robots; ++robot) robots.push_back(factory.Make(robot));
     (void)factory.MakeMetrics();
   } catch (const config::ConfigError& e) {
-    if (std::string(e.what()).rfind("fuzz.yaml", 0) != 0) Finding("a config error without its file: " + std::string(e.what()));
+    if (std::string(e.what()).rfind("fuzz.yaml", 0) != 0)
+      Finding("a config error without its file: " + std::string(e.what()));
     return;
   } catch (const std::exception& e) {
     Finding("a config refused by something else than a ConfigError: " + std::string(e.what()));

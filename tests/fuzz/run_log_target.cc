@@ -18,7 +18,8 @@ void RunLogTarget(const uint8_t* data, size_t size) {
     (void)log.PoseIndexAtStep(INT64_MIN);
     (void)log.PoseIndexAtStep(INT64_MAX);
   } catch (const std::exception& e) {
-    if (std::string(e.what()).find(path) == std::string::npos) Finding("a run log error without its file: " + std::string(e.what()));
+    if (std::string(e.what()).find(path) == std::string::npos)
+      Finding("a run log error without its file: " + std::string(e.what()));
   }
   std::filesystem::remove(path);
 }

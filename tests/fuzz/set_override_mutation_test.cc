@@ -29,7 +29,8 @@ constexpr long kCases = 1500;  // times DREAM_FUZZ_SCALE
 
 // Every dotted key of `node` (map keys by name, list items by index) with the
 // value there as one line of flow YAML.
-void CollectKeys(const YAML::Node& node, const std::string& key, std::vector<std::pair<std::string, std::string>>* out) {
+void CollectKeys(const YAML::Node& node, const std::string& key,
+                 std::vector<std::pair<std::string, std::string>>* out) {
   if (!key.empty()) {
     YAML::Emitter flow;
     flow.SetMapFormat(YAML::Flow);
@@ -80,9 +81,18 @@ std::vector<std::string> AttackValues() {
 
 // Keys that are not in the config, or walk it wrongly.
 std::vector<std::string> MissingKeys() {
-  return {"controller.nope", "nope.deeper", "controller.goals.99", "controller.goals.x", "robots.0", "seed.x",
-          "controller.goals.0.0.0", "initial_poses.generate", "world.realism.x", "controller.kind.x",
-          "controller.goals.4294967296", "a.b.c.d.e.f.g.h.i.j.k"};
+  return {"controller.nope",
+          "nope.deeper",
+          "controller.goals.99",
+          "controller.goals.x",
+          "robots.0",
+          "seed.x",
+          "controller.goals.0.0.0",
+          "initial_poses.generate",
+          "world.realism.x",
+          "controller.kind.x",
+          "controller.goals.4294967296",
+          "a.b.c.d.e.f.g.h.i.j.k"};
 }
 
 TEST(SetOverrideMutation, MutatedSetLinesApplyOrFailNamingTheOption) {
@@ -105,10 +115,18 @@ TEST(SetOverrideMutation, MutatedSetLinesApplyOrFailNamingTheOption) {
       const auto& [key, value] = keys[below(keys.size())];
       std::string line;
       switch (below(6)) {
-        case 0: line = key + "=" + attacks[below(attacks.size())]; break;
-        case 1: line = missing[below(missing.size())] + "=" + value; break;
-        case 2: line = key + "=" + keys[below(keys.size())].second; break;  // another key's value
-        default: line = key + "=" + mutator.Mutate(value); break;
+        case 0:
+          line = key + "=" + attacks[below(attacks.size())];
+          break;
+        case 1:
+          line = missing[below(missing.size())] + "=" + value;
+          break;
+        case 2:
+          line = key + "=" + keys[below(keys.size())].second;
+          break;  // another key's value
+        default:
+          line = key + "=" + mutator.Mutate(value);
+          break;
       }
       lines += (n == 0 ? "" : "\n") + line;
     }

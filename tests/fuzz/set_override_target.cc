@@ -94,7 +94,8 @@ void AsDreamSweep(const std::vector<std::string>& sets) {
       (void)run_config::LoadRunConfig(config::ConfigNode(root, kBaseConfig, ""));
     }
   } catch (const config::ConfigError& e) {
-    if (!StartsWith(e.what(), kBaseConfig)) Finding("a sweep's config error without its file: " + std::string(e.what()));
+    if (!StartsWith(e.what(), kBaseConfig))
+      Finding("a sweep's config error without its file: " + std::string(e.what()));
   } catch (const std::invalid_argument& e) {
     if (!StartsWith(e.what(), "--set ")) Finding("a sweep's --set error without its option: " + std::string(e.what()));
   } catch (const std::exception& e) {

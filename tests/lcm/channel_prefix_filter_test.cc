@@ -106,14 +106,17 @@ TEST(ChannelPrefixFilterTest, TheKernelDropsOnlyChannelsNoPrefixStarts) {
 
   const std::string fragment = std::string("LC03") + std::string(16, '\0') + "DREAM_CMD_1";
   const std::vector<std::string> kept = {
-      ShortDatagram("DREAM_POSES"), ShortDatagram("DREAM_RADIO_3"), ShortDatagram("DREAM_RADIO_12", ""),
-      ShortDatagram("AB", ""),      ShortDatagram("DREAM_POSES_AND_MORE"),
-      fragment,                     // fragments are LCM's to judge
+      ShortDatagram("DREAM_POSES"),
+      ShortDatagram("DREAM_RADIO_3"),
+      ShortDatagram("DREAM_RADIO_12", ""),
+      ShortDatagram("AB", ""),
+      ShortDatagram("DREAM_POSES_AND_MORE"),
+      fragment,  // fragments are LCM's to judge
       std::string("not LCM at all"),
   };
   const std::vector<std::string> dropped = {
-      ShortDatagram("DREAM_CMD_3"), ShortDatagram("DREAM_POSE"), ShortDatagram("A", ""), ShortDatagram("DREAM_STATUS"),
-      ShortDatagram("dream_poses"),
+      ShortDatagram("DREAM_CMD_3"),  ShortDatagram("DREAM_POSE"),  ShortDatagram("A", ""),
+      ShortDatagram("DREAM_STATUS"), ShortDatagram("dream_poses"),
   };
   for (size_t i = 0; i < kept.size() || i < dropped.size(); ++i) {
     if (i < dropped.size()) socket.Send(dropped[i]);

@@ -82,7 +82,8 @@ TEST(LcmBusTest, UndecodableMessagesAreCountedPerChannelNotDelivered) {
 TEST(LcmBusTest, ExceptionsInHandlersAreCaughtAndCounted) {
   LcmBus bus("memq://");
   int after = 0;
-  const Subscription failing = bus.Subscribe("BOOM", [](const std::string&, const void*, int) { throw std::runtime_error("handler bug"); });
+  const Subscription failing =
+      bus.Subscribe("BOOM", [](const std::string&, const void*, int) { throw std::runtime_error("handler bug"); });
   const Subscription after_failing = bus.Subscribe("BOOM", [&](const std::string&, const void*, int) { ++after; });
   const char byte = 1;
   bus.Publish("BOOM", &byte, 1);
@@ -96,7 +97,8 @@ TEST(LcmBusTest, ManyMessagesPerStepAreNotDroppedByTheQueue) {
   // LCM's default queue of 30 would drop most of these before the drain.
   LcmBus bus("memq://");
   int received = 0;
-  const Subscription commands = bus.Subscribe("DREAM_CMD_.*", [&](const std::string&, const void*, int) { ++received; });
+  const Subscription commands =
+      bus.Subscribe("DREAM_CMD_.*", [&](const std::string&, const void*, int) { ++received; });
   const char byte = 0;
   for (int i = 0; i < 500; ++i) bus.Publish(CommandChannel(i % 50), &byte, 1);
   DrainBus(bus);
@@ -125,9 +127,10 @@ TEST(LcmBusTest, MemqQueueKeepsLcmsOrderBoundAndDropRule) {
   const char early = 'e';
   bus.Publish("LATE", &early, 1);  // no handler yet: dropped, as LCM drops it
   std::vector<std::string> heard;
-  const Subscription late_or_order = bus.Subscribe("LATE|ORDER", [&](const std::string& channel, const void* data, int size) {
-    heard.push_back(channel + ":" + std::string(static_cast<const char*>(data), static_cast<size_t>(size)));
-  });
+  const Subscription late_or_order =
+      bus.Subscribe("LATE|ORDER", [&](const std::string& channel, const void* data, int size) {
+        heard.push_back(channel + ":" + std::string(static_cast<const char*>(data), static_cast<size_t>(size)));
+      });
   EXPECT_EQ(bus.HandleSubscriptions(0), 0) << "the message published before any handler must be gone";
   for (int i = 0; i < LcmBus::kQueueCapacity + 5; ++i) {
     const std::string text = std::to_string(i);
@@ -148,7 +151,8 @@ TEST(LcmBusTest, MemqQueueKeepsLcmsOrderBoundAndDropRule) {
 TEST(LcmBusTest, MemqBusGoesThroughLcmOnceItsInstanceIsShared) {
   LcmBus bus("memq://");
   std::vector<std::string> bus_heard;
-  const Subscription bus_side = bus.Subscribe("TO_BUS|BOTH", [&](const std::string& channel, const void*, int) { bus_heard.push_back(channel); });
+  const Subscription bus_side =
+      bus.Subscribe("TO_BUS|BOTH", [&](const std::string& channel, const void*, int) { bus_heard.push_back(channel); });
   const char byte = 1;
   bus.Publish("BOTH", &byte, 1);  // queued by the bus itself
   lcm_t* shared = bus.c_handle();
@@ -174,9 +178,12 @@ TEST(LcmBusTest, MemqBusGoesThroughLcmOnceItsInstanceIsShared) {
 TEST(LcmBusTest, OverlappingSubscriptionsEachGetEveryMessage) {
   LcmBus bus("memq://");
   int commands = 0, everything = 0, robot_three = 0;
-  const Subscription commands_only = bus.Subscribe("DREAM_CMD_.*", [&](const std::string&, const void*, int) { ++commands; });
-  const Subscription everything_handler = bus.Subscribe(".*", [&](const std::string&, const void*, int) { ++everything; });
-  const Subscription robot_three_only = bus.Subscribe("DREAM_CMD_3", [&](const std::string&, const void*, int) { ++robot_three; });
+  const Subscription commands_only =
+      bus.Subscribe("DREAM_CMD_.*", [&](const std::string&, const void*, int) { ++commands; });
+  const Subscription everything_handler =
+      bus.Subscribe(".*", [&](const std::string&, const void*, int) { ++everything; });
+  const Subscription robot_three_only =
+      bus.Subscribe("DREAM_CMD_3", [&](const std::string&, const void*, int) { ++robot_three; });
   const char byte = 0;
   for (int i = 0; i < 10; ++i) bus.Publish(CommandChannel(i), &byte, 1);
   bus.Publish("DREAM_POSES", &byte, 1);
@@ -253,7 +260,8 @@ TEST(LcmBusTest, DestroyingTheSubscriptionStopsItsHandlerOnly) {
   int kept = 0;
   int dropped = 0;
   const Subscription keep = bus.Subscribe("CH", [&](const std::string&, const void*, int) { ++kept; });
-  auto drop = std::make_unique<Subscription>(bus.Subscribe("CH", [&](const std::string&, const void*, int) { ++dropped; }));
+  auto drop =
+      std::make_unique<Subscription>(bus.Subscribe("CH", [&](const std::string&, const void*, int) { ++dropped; }));
   const char byte = 0;
   bus.Publish("CH", &byte, 1);
   DrainBus(bus);

@@ -55,7 +55,8 @@ TEST(LcmBusUdpmTest, EveryMatchingHandlerSeesEveryMessageWhileOthersStartUp) {
   LcmBus bus(url);
   int specific = 0;
   int everything = 0;
-  const lcm::Subscription specific_handler = bus.Subscribe("DREAM_CMD_[0-9]+", [&](const std::string&, const void*, int) { ++specific; });
+  const lcm::Subscription specific_handler =
+      bus.Subscribe("DREAM_CMD_[0-9]+", [&](const std::string&, const void*, int) { ++specific; });
   const lcm::Subscription everything_handler = bus.Subscribe(".*", [&](const std::string& channel, const void*, int) {
     if (channel.rfind("DREAM_CMD_", 0) == 0) ++everything;
   });

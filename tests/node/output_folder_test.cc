@@ -68,7 +68,8 @@ TEST_F(OutputFolderTest, NamedFolderUnderAMissingToolFolderMakesIt) {
   const files::OutputFolder exported("exports/go_to_goal");
   const files::OutputFolder swept("./sweeps/seeds");
   EXPECT_THAT(MessageOf([&] { files::OutputFolder("exprots/go_to_goal"); }), HasSubstr("does not exist"));
-  EXPECT_THAT(MessageOf([&] { files::OutputFolder("runs/a/b"); }), HasSubstr("its parent folder runs/a does not exist"));
+  EXPECT_THAT(MessageOf([&] { files::OutputFolder("runs/a/b"); }),
+              HasSubstr("its parent folder runs/a does not exist"));
   fs::current_path(before);
   EXPECT_TRUE(fs::is_directory(base_ / "exports" / "go_to_goal"));
   EXPECT_TRUE(fs::is_directory(base_ / "sweeps" / "seeds"));
@@ -90,7 +91,8 @@ TEST_F(OutputFolderTest, FileWrittenWholeWithNoTemporaryLeftBehind) {
 
 TEST_F(OutputFolderTest, AFileWhereTheFolderShouldBeIsReported) {
   std::ofstream(Path("taken")) << "x";
-  EXPECT_THAT(MessageOf([&] { files::OutputFolder(Path("taken")); }), HasSubstr(Path("taken") + ": is a file, not a folder"));
+  EXPECT_THAT(MessageOf([&] { files::OutputFolder(Path("taken")); }),
+              HasSubstr(Path("taken") + ": is a file, not a folder"));
   EXPECT_THAT(MessageOf([&] { files::OutputFolder(Path("taken/run")); }),
               HasSubstr("its parent " + Path("taken") + " is a file, not a folder"));
 }

@@ -21,8 +21,7 @@ struct StillRun {
   world::UnicycleWorld world;
   RunOutcome outcome;
 
-  explicit StillRun(int steps)
-      : world(world::WorldParams{}, {{-1.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}}, {}) {
+  explicit StillRun(int steps) : world(world::WorldParams{}, {{-1.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}}, {}) {
     config.name = "judged";
     config.num_robots = 3;
     for (int k = 0; k < steps; ++k) world.Step();
@@ -50,7 +49,8 @@ TEST(RunJudgeTest, EachThingThatWentWrongOnTheBusIsAReason) {
   run.outcome.robot_faults = {{2, "step 7: ctl.py:3: in update: ValueError: x"}};
   run.outcome.command_conflicts = 4;
   run.outcome.bad_messages = {{"DREAM_CMD_0", 2}, {"DREAM_POSES", 1}};
-  run.outcome.bad_message_first = {{"DREAM_CMD_0", "step 12: rejected command: answers step 13 but the world is at step 12"}};
+  run.outcome.bad_message_first = {
+      {"DREAM_CMD_0", "step 12: rejected command: answers step 13 but the world is at step 12"}};
   run.outcome.handler_failures = 1;
   run.outcome.dropped_messages = 12;
   const world::RunJudgement judgement = JudgeRun(run.config, run.outcome, run.world);

@@ -89,8 +89,8 @@ TEST_F(RunRecorderTest, SimNodeRecordsEveryStepInSimulatedTime) {
   world::UnicycleWorld world(world::WorldParams{}, {{0.0, 0.0, 0.0}, {0.5, 0.5, 1.0}});
   std::vector<std::unique_ptr<testing::ScriptedAgent>> agents;
   for (int id = 0; id < 2; ++id) {
-    agents.push_back(std::make_unique<testing::ScriptedAgent>(
-        bus, id, 10 + id, [](const robot_poses_t&, velocity_command_t* c) {
+    agents.push_back(
+        std::make_unique<testing::ScriptedAgent>(bus, id, 10 + id, [](const robot_poses_t&, velocity_command_t* c) {
           c->v = 0.05;
           return true;
         }));
@@ -226,7 +226,7 @@ TEST_F(RunRecorderTest, RefusedMessagesStayOutOfTheRunLogAndAreKeptApartBounded)
     if (record.channel.rfind("DREAM_CMD_", 0) == 0) ++commands;
   }
   EXPECT_EQ(commands, 2 * 6);  // one per robot and step
-  EXPECT_EQ(applied, 6);  // the world's own, one per step
+  EXPECT_EQ(applied, 6);       // the world's own, one per step
   EXPECT_EQ(radio, 1 + SimNode::kMaxRadioPerRobotPerStep);
   EXPECT_EQ(outcome.bad_messages.at("DREAM_APPLIED"), 1);
   EXPECT_EQ(outcome.bad_messages.at("DREAM_MEASURED_POSES"), 1);
@@ -266,7 +266,9 @@ TEST_F(RunRecorderTest, RefusedMessagesStayOutOfTheRunLogAndAreKeptApartBounded)
 constexpr int kTestDataBytes = 100;
 constexpr int64_t kTestEventBytes = 28 + 2 + kTestDataBytes;
 
-std::vector<uint8_t> TestEventData(int index) { return std::vector<uint8_t>(kTestDataBytes, static_cast<uint8_t>(index)); }
+std::vector<uint8_t> TestEventData(int index) {
+  return std::vector<uint8_t>(kTestDataBytes, static_cast<uint8_t>(index));
+}
 
 /// The log at `path` holds exactly events 0..count-1 as the tests write them.
 void ExpectTestEvents(const std::string& path, int64_t count) {
@@ -355,11 +357,11 @@ TEST_F(RunRecorderTest, FailureFoundByCloseIsReportedAndTheWholeEventsKept) {
 std::vector<std::unique_ptr<testing::ScriptedAgent>> ForwardAgents(lcm::LcmInterface& bus) {
   std::vector<std::unique_ptr<testing::ScriptedAgent>> agents;
   for (int id = 0; id < 3; ++id) {
-    agents.push_back(std::make_unique<testing::ScriptedAgent>(bus, id, 10 + id,
-                                                              [](const robot_poses_t&, velocity_command_t* c) {
-                                                                c->v = 0.05;
-                                                                return true;
-                                                              }));
+    agents.push_back(
+        std::make_unique<testing::ScriptedAgent>(bus, id, 10 + id, [](const robot_poses_t&, velocity_command_t* c) {
+          c->v = 0.05;
+          return true;
+        }));
   }
   return agents;
 }
@@ -375,17 +377,20 @@ testing::ChildReport RunSimNodeWithFileSizeLimit(const std::string& path, rlim_t
     lcm::BadMessageLog bad;
     // Subscribed before the agents, so the message is queued before their
     // commands and recorded while the world still waits at that step.
-    const lcm::Subscription big_poses = lcm::Subscribe<robot_poses_t>(bus, "DREAM_POSES", [&](const std::string&, const robot_poses_t& poses) {
-      if (poses.step != big_message_step) return;
-      radio_message_t radio{};
-      radio.step = poses.step;
-      radio.run_id = poses.run_id;
-      radio.sender_id = 0;
-      radio.agent_id = 10;
-      radio.payload.assign(60000, 7);
-      radio.payload_size = 60000;
-      lcm::Publish(bus, "DREAM_RADIO_0", radio);
-    }, bad);
+    const lcm::Subscription big_poses = lcm::Subscribe<robot_poses_t>(
+        bus, "DREAM_POSES",
+        [&](const std::string&, const robot_poses_t& poses) {
+          if (poses.step != big_message_step) return;
+          radio_message_t radio{};
+          radio.step = poses.step;
+          radio.run_id = poses.run_id;
+          radio.sender_id = 0;
+          radio.agent_id = 10;
+          radio.payload.assign(60000, 7);
+          radio.payload_size = 60000;
+          lcm::Publish(bus, "DREAM_RADIO_0", radio);
+        },
+        bad);
     const auto agents = ForwardAgents(bus);
     config::SimNodeOptions options;
     options.max_steps = 100000;
@@ -451,8 +456,7 @@ TEST_F(RunRecorderTest, WriteFailureInsideAHandlerEndsTheRunAtThatStep) {
   ASSERT_EQ(report.count("child_error"), 0u) << report.at("child_error");
   EXPECT_EQ(report.at("end"), "failed");
   EXPECT_EQ(report.at("steps"), "5");
-  EXPECT_NE(report.at("reason").find("at step 5: writing " + path + ".part failed: File too large"),
-            std::string::npos)
+  EXPECT_NE(report.at("reason").find("at step 5: writing " + path + ".part failed: File too large"), std::string::npos)
       << report.at("reason");
   EXPECT_EQ(report.at("handler_failures"), "0");
   EXPECT_EQ(LastLoggedPoseStep(path, std::stoll(report.at("log_events"))), 5);

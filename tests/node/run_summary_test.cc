@@ -68,13 +68,46 @@ TEST(RunSummaryTest, TheFieldsAreInSummaryJsonsOrder) {
   std::vector<std::string> keys;
   const nlohmann::ordered_json json = summary.Json();
   for (auto it = json.begin(); it != json.end(); ++it) keys.push_back(it.key());
-  const std::vector<std::string> expected = {
-      "run", "config", "seed", "mode", "robots", "sim_only", "end", "reason", "steps", "max_steps", "simulated_time_s",
-      "wall_time_s", "steps_per_second", "violations", "violations_located", "verdict", "verdict_reasons",
-      "robotarium_verdict", "robotarium_report", "run_id", "rejected_commands", "command_conflicts", "other_worlds",
-      "robots_ever_lost", "robot_faults", "robots_done", "bad_messages", "bad_message_senders", "refused_messages",
-      "refused_log", "refused_log_events", "bad_message_first", "handler_failures", "dropped_messages", "log",
-      "log_events", "final_poses", "metrics", "goal", "lab"};
+  const std::vector<std::string> expected = {"run",
+                                             "config",
+                                             "seed",
+                                             "mode",
+                                             "robots",
+                                             "sim_only",
+                                             "end",
+                                             "reason",
+                                             "steps",
+                                             "max_steps",
+                                             "simulated_time_s",
+                                             "wall_time_s",
+                                             "steps_per_second",
+                                             "violations",
+                                             "violations_located",
+                                             "verdict",
+                                             "verdict_reasons",
+                                             "robotarium_verdict",
+                                             "robotarium_report",
+                                             "run_id",
+                                             "rejected_commands",
+                                             "command_conflicts",
+                                             "other_worlds",
+                                             "robots_ever_lost",
+                                             "robot_faults",
+                                             "robots_done",
+                                             "bad_messages",
+                                             "bad_message_senders",
+                                             "refused_messages",
+                                             "refused_log",
+                                             "refused_log_events",
+                                             "bad_message_first",
+                                             "handler_failures",
+                                             "dropped_messages",
+                                             "log",
+                                             "log_events",
+                                             "final_poses",
+                                             "metrics",
+                                             "goal",
+                                             "lab"};
   EXPECT_EQ(keys, expected);
   EXPECT_EQ(json["verdict"], "not_ready");
   EXPECT_EQ(json["end"], "finished");

@@ -19,8 +19,7 @@ class ScriptedAgent {
   ScriptedAgent(lcm::LcmInterface& bus, int robot_id, int64_t agent_id, Decide decide)
       : bus_(bus), robot_id_(robot_id), agent_id_(agent_id), decide_(std::move(decide)) {
     subscriptions_.push_back(lcm::Subscribe<robot_poses_t>(
-        bus_, lcm::kPosesChannel, [this](const std::string&, const robot_poses_t& poses) { OnPoses(poses); },
-        bad_));
+        bus_, lcm::kPosesChannel, [this](const std::string&, const robot_poses_t& poses) { OnPoses(poses); }, bad_));
   }
 
  private:

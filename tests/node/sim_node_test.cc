@@ -135,10 +135,11 @@ TEST_F(SimNodeTest, NonFiniteAndAbsurdCommandsAreRejectedAndTheRobotHoldsStill) 
 TEST_F(SimNodeTest, CommandsForUnknownRobotsAndGarbageAreCountedNotFatal) {
   for (int id = 0; id < 3; ++id) AddAgent(id, Forward());
   AddAgent(7, Forward());  // this run has robots 0..2 only
-  const lcm::Subscription garbage_sender = bus_.Subscribe(lcm::kPosesChannel, [this](const std::string&, const void*, int) {
-    const char garbage[] = "\x01\x02not a command";
-    bus_.Publish("DREAM_CMD_1", garbage, sizeof(garbage));
-  });
+  const lcm::Subscription garbage_sender =
+      bus_.Subscribe(lcm::kPosesChannel, [this](const std::string&, const void*, int) {
+        const char garbage[] = "\x01\x02not a command";
+        bus_.Publish("DREAM_CMD_1", garbage, sizeof(garbage));
+      });
   const RunOutcome outcome = Run(FastOptions(10));
   EXPECT_EQ(outcome.end, RunOutcome::End::kFinished);
   EXPECT_EQ(outcome.steps, 10);
@@ -304,7 +305,8 @@ TEST_F(SimNodeTest, FaultFromTheRobotsAgentLosesThatRobotAtOnceAndTheRunGoesOn) 
   AddAgent(1, [this](const robot_poses_t& poses, velocity_command_t* command) {
     command->v = 0.1;
     if (poses.step < 5) return true;
-    if (poses.step == 5) lcm::Publish(bus_, "DREAM_FAULT_1", Fault(1, 101, "my_robot.py:12: in update: KeyError: 'x'", poses.run_id));
+    if (poses.step == 5)
+      lcm::Publish(bus_, "DREAM_FAULT_1", Fault(1, 101, "my_robot.py:12: in update: KeyError: 'x'", poses.run_id));
     return false;
   });
   AddAgent(2, Forward());
@@ -316,7 +318,7 @@ TEST_F(SimNodeTest, FaultFromTheRobotsAgentLosesThatRobotAtOnceAndTheRunGoesOn) 
   EXPECT_EQ(outcome.robots_ever_lost, std::set<int>{1});
   ASSERT_EQ(outcome.robot_faults.size(), 1U);
   EXPECT_EQ(outcome.robot_faults.at(1), "step 5: my_robot.py:12: in update: KeyError: 'x'");
-  EXPECT_NEAR(world_.poses()[1].x_m, 5 * 0.033 * 0.1, 1e-12);   // stopped at step 5
+  EXPECT_NEAR(world_.poses()[1].x_m, 5 * 0.033 * 0.1, 1e-12);  // stopped at step 5
   EXPECT_NEAR(world_.poses()[0].x_m, -1.0 + 20 * 0.033 * 0.1, 1e-12);
 }
 
@@ -425,8 +427,8 @@ TEST_F(SimNodeTest, RealTimeRobotOfASilentAgentKeepsItsLastCommandFor15StepsThen
       bus_, lcm::CommandChannel(0),
       [&](const std::string&, const velocity_command_t&) { last_command_world_step = world_.step(); }, bad);
   const lcm::Subscription poses = lcm::Subscribe<robot_poses_t>(
-      bus_, lcm::kPosesChannel, [&](const std::string&, const robot_poses_t& message) { x_by_step[message.step] = message.x; },
-      bad);
+      bus_, lcm::kPosesChannel,
+      [&](const std::string&, const robot_poses_t& message) { x_by_step[message.step] = message.x; }, bad);
   AddAgent(0, [](const robot_poses_t& seen, velocity_command_t* command) {
     command->v = 0.1;
     return seen.step <= kLastAnsweredStep;
@@ -466,7 +468,7 @@ TEST_F(SimNodeTest, ProgressReporterFollowsTheStepsAndIsFinishedAtTheEnd) {
   std::ostringstream out;
   ProgressReporter::Options progress_options;
   progress_options.interactive = true;
-  progress_options.show_after_s = 0.0;      // draw from the first step
+  progress_options.show_after_s = 0.0;       // draw from the first step
   progress_options.redraw_interval_s = 0.0;  // and at every one
   ProgressReporter progress(out, progress_options);
   SimNode node(quiet_bus_, world_, nullptr, FastOptions(40));

@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 
 /// A one-robot run config naming `plugins` (YAML list text) and `kind`.
 run_config::RunConfig Config(const std::string& plugins, const std::string& kind = "test_still",
-                         const std::string& source = "test.yaml") {
+                             const std::string& source = "test.yaml") {
   return run_config::LoadRunConfig(config::ConfigNode::LoadString(
       "name: t\nrobots: 1\ninitial_poses: [[0, 0, 0]]\nplugins: " + plugins + "\ncontroller: {kind: " + kind + "}\n",
       source));
@@ -39,7 +39,8 @@ std::string Quoted(const std::string& path) { return "'" + path + "'"; }
 
 TEST(ControllerPluginTest, AGoodPluginAddsItsKindOnceHoweverOftenItIsNamed) {
   EXPECT_FALSE(Knows("test_still"));
-  const run_config::RunConfig config = Config("[" + Quoted(TEST_PLUGIN_GOOD_PATH) + ", " + Quoted(TEST_PLUGIN_GOOD_PATH) + "]");
+  const run_config::RunConfig config =
+      Config("[" + Quoted(TEST_PLUGIN_GOOD_PATH) + ", " + Quoted(TEST_PLUGIN_GOOD_PATH) + "]");
   const agent_host::ControllerFactory factory(config);
   EXPECT_EQ(factory.kind(), "test_still");
   // The kind is the factory's: loading the plugin changed no registry others share.

@@ -108,10 +108,10 @@ TEST(OrbitExampleTest, ABadValueNamesFileLineAndKey) {
   const std::string error = FactoryErrorOf(ExampleConfig("speed_mps: 0.1", "speed_mps: -0.1"));
   EXPECT_EQ(error, "orbit.yaml:" + std::to_string(LineOf("  speed_mps:")) + ": controller.speed_mps: must be > 0");
   const std::string text = FactoryErrorOf(ExampleConfig("radius_m: 0.25", "radius_m: big"));
-  EXPECT_EQ(text.rfind("orbit.yaml:" + std::to_string(LineOf("  radius_m:")) +
-                           ": controller.radius_m: expected a number, got",
-                       0),
-            0u)
+  EXPECT_EQ(
+      text.rfind(
+          "orbit.yaml:" + std::to_string(LineOf("  radius_m:")) + ": controller.radius_m: expected a number, got", 0),
+      0u)
       << text;
 }
 

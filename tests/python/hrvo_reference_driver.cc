@@ -15,8 +15,8 @@ int main() {
   using dream::agents::HrvoExact;
   double safety, v_max, horizon, keep_right, margin, px, py, cx, cy, qx, qy;
   int variant, check, n;
-  while (std::cin >> variant >> safety >> v_max >> check >> horizon >> keep_right >> margin >> px >> py >> cx >> cy >> qx >> qy >>
-         n) {
+  while (std::cin >> variant >> safety >> v_max >> check >> horizon >> keep_right >> margin >> px >> py >> cx >> cy >>
+         qx >> qy >> n) {
     std::vector<dream::agents::HrvoNeighbour> neighbours(static_cast<size_t>(n));
     for (auto& h : neighbours) {
       std::cin >> h.relative_position_m.x() >> h.relative_position_m.y() >> h.velocity_mps.x() >> h.velocity_mps.y();

@@ -65,8 +65,8 @@ Outcome LoadsOrNamesTheFile(const std::string& text, const std::string& what) {
   try {
     return LoadAndBuild(text);
   } catch (const config::ConfigError& e) {
-    EXPECT_EQ(std::string(e.what()).rfind(kSourceName, 0), 0U) << what << ": the error does not start with the file: "
-                                                               << e.what();
+    EXPECT_EQ(std::string(e.what()).rfind(kSourceName, 0), 0U)
+        << what << ": the error does not start with the file: " << e.what();
   } catch (const std::exception& e) {
     ADD_FAILURE() << what << ": not a ConfigError but " << typeid(e).name() << ": " << e.what();
   } catch (...) {
@@ -91,9 +91,15 @@ TEST(ConfigMutation, MutatedConfigsLoadOrFailNamingTheFile) {
     for (long i = 0; i < mutations; ++i) {
       const std::string mutated = mutator.Mutate(text);
       switch (LoadsOrNamesTheFile(mutated, name + " mutation " + std::to_string(i))) {
-        case Outcome::kBuilt: ++built; break;
-        case Outcome::kLoaded: ++loaded; break;
-        case Outcome::kRefused: ++refused; break;
+        case Outcome::kBuilt:
+          ++built;
+          break;
+        case Outcome::kLoaded:
+          ++loaded;
+          break;
+        case Outcome::kRefused:
+          ++refused;
+          break;
       }
       if (HasFailure()) {
         // The first failing text, to replay by hand with `dream run`.

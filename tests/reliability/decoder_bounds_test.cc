@@ -32,14 +32,14 @@ using lcm::MessageLimits;
 // fingerprint and the fixed fields before it.
 const std::map<std::string, size_t> kCountOffset = {
     {"robot_poses_t", 8 + 24},   {"obstacles_t", 8 + 24},   {"run_status_t", 8 + 8 + 8 + 8 + 1 + 4 + 48},
-    {"radio_message_t", 8 + 36}, {"robot_fault_t", 8 + 36},   {"applied_commands_t", 8 + 24},
+    {"radio_message_t", 8 + 36}, {"robot_fault_t", 8 + 36}, {"applied_commands_t", 8 + 24},
 };
 
 // Counts an attacker would pick: huge, negative, just over the limit, and
 // ones whose byte size wraps a 32-bit int to something small
 // (40 * 0x6666667 = 2^32 + 24: robot_poses_t's five doubles per robot).
-const std::vector<int32_t> kForgedCounts = {1 << 28,   -1,         INT_MAX,   INT_MIN, 0x6666667,
-                                            0x20000000, 0x40000000, MessageLimits::kRobots + 1};
+const std::vector<int32_t> kForgedCounts = {1 << 28,   -1,         INT_MAX,    INT_MIN,
+                                            0x6666667, 0x20000000, 0x40000000, MessageLimits::kRobots + 1};
 
 // Nothing a forged message makes us allocate may exceed this.
 constexpr size_t kMaxAllocationBytes = 64 * 1024;

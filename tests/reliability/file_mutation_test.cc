@@ -33,10 +33,10 @@ namespace fs = std::filesystem;
 constexpr uint32_t kSeed = 20261124;
 // Counts for CI (each test a few seconds on 2 cores; not asserted, tests are not timed);
 // DREAM_FUZZ_SCALE multiplies them.
-constexpr long kResultMutations = 1500;   // per result format (npy, mat v4, v5, v5 compressed)
-constexpr long kHdf5Mutations = 300;      // mat v7.3: HDF5 opens are slower
+constexpr long kResultMutations = 1500;  // per result format (npy, mat v4, v5, v5 compressed)
+constexpr long kHdf5Mutations = 300;     // mat v7.3: HDF5 opens are slower
 constexpr long kParamsMutations = 1500;
-constexpr long kLogMutations = 300;       // the run log is 100 KB, read by LogReader and RunLog
+constexpr long kLogMutations = 300;  // the run log is 100 KB, read by LogReader and RunLog
 // Readers may hold the file and a decoded copy; libraries keep some buffers.
 constexpr size_t kAllocationSlackBytes = 4 << 20;
 
@@ -84,8 +84,7 @@ TEST(FileMutationDriver, MutatedResultFilesAreImportedOrRefusedByName) {
             const bridge::ExportedSubmission& exported = samples.exported();
             bridge::ParseLabResult(bridge::ReadResultFile(path, exported.MaxResultValues()), path, exported);
           },
-          path,
-          sample.name + " mutation " + std::to_string(i));
+          path, sample.name + " mutation " + std::to_string(i));
       if (outcome == Outcome::kRead) ++read;
       ASSERT_LE(watch.largest(), 4 * mutated.size() + kAllocationSlackBytes) << sample.name << " mutation " << i;
     }

@@ -46,9 +46,9 @@ TEST_F(FileTextTest, ARegularFileIsReadWhole) {
 
 TEST_F(FileTextTest, AFileOverTheBoundIsRefusedWithItsSize) {
   std::ofstream(dir_ / "summary.json") << std::string(1001, ' ');
-  EXPECT_EQ(ErrorOf(dir_ / "summary.json", 1000),
-            (dir_ / "summary.json").string() + ": 1001 bytes, more than the 1000 a file read here may hold; "
-                                               "is it the file you meant?");
+  EXPECT_EQ(ErrorOf(dir_ / "summary.json", 1000), (dir_ / "summary.json").string() +
+                                                      ": 1001 bytes, more than the 1000 a file read here may hold; "
+                                                      "is it the file you meant?");
   EXPECT_EQ(ReadFileText((dir_ / "summary.json").string(), 1001).size(), 1001u);
 }
 

@@ -18,8 +18,8 @@ inline long FuzzScale() {
   char* end = nullptr;
   const long scale = std::strtol(text, &end, 10);
   if (*end != '\0' || scale < 1 || scale > 1000000) {
-    throw std::invalid_argument("DREAM_FUZZ_SCALE must be a whole number from 1 to 1000000, got '" +
-                                std::string(text) + "'");
+    throw std::invalid_argument("DREAM_FUZZ_SCALE must be a whole number from 1 to 1000000, got '" + std::string(text) +
+                                "'");
   }
   return scale;
 }

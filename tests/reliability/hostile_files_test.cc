@@ -106,11 +106,13 @@ TEST_F(HostileFilesTest, EveryLabFileReaderRefusesAFifoInsteadOfWaitingOnIt) {
   }
   const std::string fifo = (dir_ / "f.npy").string();
   EXPECT_THAT(ErrorOf([&] { formats::ReadNpyFile(fifo); }), HasSubstr("is a FIFO"));
-  EXPECT_THAT(ErrorOf([&] { formats::ReadMatArray((dir_ / "f.mat").string(), "poses", 1000, 3); }), HasSubstr("is a FIFO"));
+  EXPECT_THAT(ErrorOf([&] { formats::ReadMatArray((dir_ / "f.mat").string(), "poses", 1000, 3); }),
+              HasSubstr("is a FIFO"));
   EXPECT_THAT(ErrorOf([&] { formats::NpzFile{(dir_ / "f.npz").string()}; }), HasSubstr("is a FIFO"));
   EXPECT_THAT(ErrorOf([&] { formats::Sha256::HexOfFile(fifo); }), HasSubstr("is a FIFO"));
   const std::string log = (dir_ / "run.lcmlog").string();
-  EXPECT_EQ(ErrorOf([&] { lcm::LogReader{log}; }), log + ": not a regular file (a folder, FIFO or device), so no log file");
+  EXPECT_EQ(ErrorOf([&] { lcm::LogReader{log}; }),
+            log + ": not a regular file (a folder, FIFO or device), so no log file");
   EXPECT_THAT(ErrorOf([&] { run_log::RunLog::Read(log); }), HasSubstr(log + ": not a regular file"));
   EXPECT_THAT(ErrorOf([&] { lcm::LogReader{"/dev/zero"}; }), HasSubstr("not a regular file"));
 }

@@ -16,7 +16,8 @@ namespace dream::testing {
 namespace {
 
 /// A .mat file of a flavour WriteMatMatrix does not write (v4, compressed v5).
-std::string MatioFile(const std::string& path, const formats::NpyArray& array, mat_ft version, matio_compression compression) {
+std::string MatioFile(const std::string& path, const formats::NpyArray& array, mat_ft version,
+                      matio_compression compression) {
   const auto rows = static_cast<size_t>(array.shape[0]);
   const auto columns = static_cast<size_t>(array.shape[1]);
   std::vector<double> column_major(rows * columns);
@@ -50,7 +51,8 @@ void WriteBytes(const std::string& path, const std::string& bytes) {
 }
 
 LabFileSamples::LabFileSamples() {
-  const std::string run_dir = bridge::testing::MakeRunFolder("samples_run", bridge::testing::ShippedConfig("go_to_goal"));
+  const std::string run_dir =
+      bridge::testing::MakeRunFolder("samples_run", bridge::testing::ShippedConfig("go_to_goal"));
   run_log_ = run_dir + "/run.lcmlog";
   export_dir_ = bridge::testing::NewFolder("samples_export");
   bridge::ExportSubmission(run_dir, export_dir_, bridge::ExportOptions{});

@@ -250,7 +250,8 @@ TEST(MutationDriver, MutatedRunLogsAreReadOrRefusedWithFileAndByte) {
         [&] {
           try {
             for (const lcm::LogRecord& record : lcm::LogReader::ReadAll(path)) {
-              for (const auto& [type, decode] : Decoders()) decode(record.data.data(), static_cast<int>(record.data.size()));
+              for (const auto& [type, decode] : Decoders())
+                decode(record.data.data(), static_cast<int>(record.data.size()));
             }
           } catch (const std::runtime_error& e) {
             reader_error = e.what();

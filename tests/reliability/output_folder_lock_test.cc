@@ -46,7 +46,8 @@ class OtherHolder {
       ::_exit(127);
     }
     // Ready once the note is written (the lock is taken before it).
-    for (int i = 0; i < 1000 && (!fs::exists(lock_path_) || ReadBytes(lock_path_).find("fake holder") == std::string::npos); ++i) {
+    for (int i = 0;
+         i < 1000 && (!fs::exists(lock_path_) || ReadBytes(lock_path_).find("fake holder") == std::string::npos); ++i) {
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
   }

@@ -72,9 +72,9 @@ std::vector<EncodedMessage> SampleMessages() {
   applied.commanded_w = {-0.5, 0.0};
   applied.conflicts = {1, 0};
 
-  return {{"robot_poses_t", Encoded(poses)},     {"obstacles_t", Encoded(obstacles)},
-          {"run_status_t", Encoded(status)},     {"velocity_command_t", Encoded(command)},
-          {"radio_message_t", Encoded(radio)},   {"robot_fault_t", Encoded(fault)},
+  return {{"robot_poses_t", Encoded(poses)},       {"obstacles_t", Encoded(obstacles)},
+          {"run_status_t", Encoded(status)},       {"velocity_command_t", Encoded(command)},
+          {"radio_message_t", Encoded(radio)},     {"robot_fault_t", Encoded(fault)},
           {"applied_commands_t", Encoded(applied)}};
 }
 
@@ -92,9 +92,12 @@ TypedDecoder DecoderOf() {
 
 const std::map<std::string, TypedDecoder>& Decoders() {
   static const std::map<std::string, TypedDecoder> decoders = {
-      {"robot_poses_t", DecoderOf<robot_poses_t>()},     {"obstacles_t", DecoderOf<obstacles_t>()},
-      {"run_status_t", DecoderOf<run_status_t>()},       {"velocity_command_t", DecoderOf<velocity_command_t>()},
-      {"radio_message_t", DecoderOf<radio_message_t>()}, {"robot_fault_t", DecoderOf<robot_fault_t>()},
+      {"robot_poses_t", DecoderOf<robot_poses_t>()},
+      {"obstacles_t", DecoderOf<obstacles_t>()},
+      {"run_status_t", DecoderOf<run_status_t>()},
+      {"velocity_command_t", DecoderOf<velocity_command_t>()},
+      {"radio_message_t", DecoderOf<radio_message_t>()},
+      {"robot_fault_t", DecoderOf<robot_fault_t>()},
       {"applied_commands_t", DecoderOf<applied_commands_t>()},
   };
   return decoders;

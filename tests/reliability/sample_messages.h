@@ -24,5 +24,4 @@ std::vector<EncodedMessage> SampleMessages();
 using TypedDecoder = std::function<bool(const uint8_t* data, int size)>;
 const std::map<std::string, TypedDecoder>& Decoders();
 
-
 }  // namespace dream::testing

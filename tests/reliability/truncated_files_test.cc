@@ -57,8 +57,8 @@ TEST(TruncatedFiles, EveryCutResultFileIsRefusedByNameOrReadsAsTheOriginal) {
     long identical = 0;
     for (const size_t length : CutLengths(sample.bytes.size())) {
       WriteBytes(path, sample.bytes.substr(0, length));
-      const std::string what = sample.name + " cut to " + std::to_string(length) + " of " +
-                               std::to_string(sample.bytes.size()) + " bytes";
+      const std::string what =
+          sample.name + " cut to " + std::to_string(length) + " of " + std::to_string(sample.bytes.size()) + " bytes";
       PoisonFreedHeap(samples.result().values.size() * sizeof(double));
       try {
         const formats::NpyArray rows = bridge::ReadResultFile(path, samples.exported().MaxResultValues());
@@ -136,8 +136,9 @@ TEST(TruncatedFiles, MatDimensionsThatDisagreeWithTheDataAreRefusedByVariable) {
     bridge::ReadResultFile(path);
     ADD_FAILURE() << "read a .mat whose dims disagree with its data";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find(path + ": variable 'dream_result': dimensions " + std::to_string(fewer) + " x "),
-              std::string::npos)
+    EXPECT_NE(
+        std::string(e.what()).find(path + ": variable 'dream_result': dimensions " + std::to_string(fewer) + " x "),
+        std::string::npos)
         << e.what();
   }
 }

@@ -20,7 +20,9 @@ std::string Joined(const std::vector<std::string>& lines) {
   return text;
 }
 
-size_t Indentation(const std::string& line) { return line.find_first_not_of(' ') == std::string::npos ? 0 : line.find_first_not_of(' '); }
+size_t Indentation(const std::string& line) {
+  return line.find_first_not_of(' ') == std::string::npos ? 0 : line.find_first_not_of(' ');
+}
 
 // Where a line's value starts ("key: VALUE", "- VALUE"), or npos.
 size_t ValueStart(const std::string& line) {
@@ -33,14 +35,67 @@ size_t ValueStart(const std::string& line) {
 
 // Values that a reader of numbers, flags, text and lists must refuse or take.
 const std::vector<std::string>& HostileScalars() {
-  static const std::vector<std::string> scalars = {
-      "0", "-1", "-0.0", "1e308", "-1e308", "1e309", "4.9e-324", "1e-320", ".inf", "-.inf", ".nan", "nan",
-      "2147483647", "2147483648", "-2147483649", "9223372036854775807", "9223372036854775808",
-      "-9223372036854775809", "18446744073709551616", "0x7fffffff", "0o17", "0b101", "1_000", "+5", "51",
-      "1000000", "1.5.5", "1e", "~", "null", "", "true", "no", "''", "\"\"", "[]", "{}", "[1, 2, 3]",
-      "{a: 1}", "[[1, 2], [3]]", "[1e309, -1e309]", "[.nan, .nan, .nan]", "!!binary aGVsbG8=", "!!str 5",
-      "!!int 5.5", "!!float x", "!custom 1", "*undefined", "&anchor 3", "'unterminated", "\"unterminated",
-      "a: b: c", "- x", "? x", "|", ">-", "@", "`", "%", "\"\\x00\"", "\"\\uFFFF\""};
+  static const std::vector<std::string> scalars = {"0",
+                                                   "-1",
+                                                   "-0.0",
+                                                   "1e308",
+                                                   "-1e308",
+                                                   "1e309",
+                                                   "4.9e-324",
+                                                   "1e-320",
+                                                   ".inf",
+                                                   "-.inf",
+                                                   ".nan",
+                                                   "nan",
+                                                   "2147483647",
+                                                   "2147483648",
+                                                   "-2147483649",
+                                                   "9223372036854775807",
+                                                   "9223372036854775808",
+                                                   "-9223372036854775809",
+                                                   "18446744073709551616",
+                                                   "0x7fffffff",
+                                                   "0o17",
+                                                   "0b101",
+                                                   "1_000",
+                                                   "+5",
+                                                   "51",
+                                                   "1000000",
+                                                   "1.5.5",
+                                                   "1e",
+                                                   "~",
+                                                   "null",
+                                                   "",
+                                                   "true",
+                                                   "no",
+                                                   "''",
+                                                   "\"\"",
+                                                   "[]",
+                                                   "{}",
+                                                   "[1, 2, 3]",
+                                                   "{a: 1}",
+                                                   "[[1, 2], [3]]",
+                                                   "[1e309, -1e309]",
+                                                   "[.nan, .nan, .nan]",
+                                                   "!!binary aGVsbG8=",
+                                                   "!!str 5",
+                                                   "!!int 5.5",
+                                                   "!!float x",
+                                                   "!custom 1",
+                                                   "*undefined",
+                                                   "&anchor 3",
+                                                   "'unterminated",
+                                                   "\"unterminated",
+                                                   "a: b: c",
+                                                   "- x",
+                                                   "? x",
+                                                   "|",
+                                                   ">-",
+                                                   "@",
+                                                   "`",
+                                                   "%",
+                                                   "\"\\x00\"",
+                                                   "\"\\uFFFF\""};
   return scalars;
 }
 
@@ -78,7 +133,7 @@ std::string YamlTextMutator::ScaledNumber(const std::string& number) {
   switch (Below(6)) {
     case 0:
       return number.find_first_of("eE") == std::string::npos ? number + kExponents[Below(std::size(kExponents))]
-                                                               : number + "0";
+                                                             : number + "0";
     case 1:
       return number[0] == '-' ? number.substr(1) : "-" + number;
     case 2:
@@ -99,14 +154,17 @@ void YamlTextMutator::MutateOnce(std::vector<std::string>* lines_pointer) {
   switch (Below(13)) {
     case 0: {  // a hostile value
       const int line = LineWithValue(lines);
-      if (line >= 0) lines[static_cast<size_t>(line)].replace(ValueStart(lines[static_cast<size_t>(line)]), std::string::npos, HostileScalar());
+      if (line >= 0)
+        lines[static_cast<size_t>(line)].replace(ValueStart(lines[static_cast<size_t>(line)]), std::string::npos,
+                                                 HostileScalar());
       break;
     }
     case 1: {  // a number scaled, negated, lengthened
       static const std::regex kNumber(R"(-?[0-9]+(\.[0-9]+)?([eE][-+]?[0-9]+)?)");
       std::string& line = lines[any_line()];
       std::vector<std::smatch> numbers;
-      for (auto it = std::sregex_iterator(line.begin(), line.end(), kNumber); it != std::sregex_iterator(); ++it) numbers.push_back(*it);
+      for (auto it = std::sregex_iterator(line.begin(), line.end(), kNumber); it != std::sregex_iterator(); ++it)
+        numbers.push_back(*it);
       if (numbers.empty()) break;
       const std::smatch& chosen = numbers[static_cast<size_t>(Below(numbers.size()))];
       const auto at = static_cast<size_t>(chosen.position(0));
@@ -128,16 +186,25 @@ void YamlTextMutator::MutateOnce(std::vector<std::string>* lines_pointer) {
     case 5: {  // indentation off by one, two, four, or a tab
       std::string& line = lines[any_line()];
       switch (Below(4)) {
-        case 0: line.insert(0, std::string(static_cast<size_t>(1 << Below(3)), ' ')); break;
-        case 1: line.erase(0, std::min(Indentation(line), static_cast<size_t>(1 << Below(3)))); break;
-        case 2: line.insert(0, "\t"); break;
-        default: line = std::string(Indentation(line) / 2, '\t') + line.substr(Indentation(line)); break;
+        case 0:
+          line.insert(0, std::string(static_cast<size_t>(1 << Below(3)), ' '));
+          break;
+        case 1:
+          line.erase(0, std::min(Indentation(line), static_cast<size_t>(1 << Below(3))));
+          break;
+        case 2:
+          line.insert(0, "\t");
+          break;
+        default:
+          line = std::string(Indentation(line) / 2, '\t') + line.substr(Indentation(line));
+          break;
       }
       break;
     }
     case 6: {  // document and directive markers, complex keys, tags
-      static const char* const kMarkers[] = {"---", "...", "%YAML 1.2", "%TAG ! tag:x,2000:", "--- !!map",
-                                             "? complex", ": value", "!!set", "--- |", "&top"};
+      static const char* const kMarkers[] = {
+          "---",   "...",   "%YAML 1.2", "%TAG ! tag:x,2000:", "--- !!map", "? complex", ": value",
+          "!!set", "--- |", "&top"};
       lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(any_line()), kMarkers[Below(std::size(kMarkers))]);
       break;
     }
@@ -154,7 +221,9 @@ void YamlTextMutator::MutateOnce(std::vector<std::string>* lines_pointer) {
           break;
         }
         case 1:
-          if (line >= 0) lines[static_cast<size_t>(line)].replace(ValueStart(lines[static_cast<size_t>(line)]), std::string::npos, "&s {x: *s}");
+          if (line >= 0)
+            lines[static_cast<size_t>(line)].replace(ValueStart(lines[static_cast<size_t>(line)]), std::string::npos,
+                                                     "&s {x: *s}");
           break;
         case 2: {
           std::vector<std::string> laughs = {"lol0: &l0 [1, 1, 1, 1, 1, 1, 1, 1, 1, 1]"};
@@ -163,11 +232,14 @@ void YamlTextMutator::MutateOnce(std::vector<std::string>* lines_pointer) {
             for (int i = 0; i < 10; ++i) row += (i ? ", *l" : "*l") + std::to_string(level - 1);
             laughs.push_back(row + "]");
           }
-          lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(Below(2) == 0 ? 0 : lines.size()), laughs.begin(), laughs.end());
+          lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(Below(2) == 0 ? 0 : lines.size()), laughs.begin(),
+                       laughs.end());
           break;
         }
         default:
-          if (line >= 0) lines[static_cast<size_t>(line)].replace(ValueStart(lines[static_cast<size_t>(line)]), std::string::npos, "*nowhere");
+          if (line >= 0)
+            lines[static_cast<size_t>(line)].replace(ValueStart(lines[static_cast<size_t>(line)]), std::string::npos,
+                                                     "*nowhere");
           break;
       }
       break;
@@ -177,15 +249,17 @@ void YamlTextMutator::MutateOnce(std::vector<std::string>* lines_pointer) {
       const int depth = kDepths[Below(std::size(kDepths))];
       const int line = LineWithValue(lines);
       if (line >= 0 && (depth <= 300 ? Below(2) == 0 : true)) {
-        lines[static_cast<size_t>(line)].replace(ValueStart(lines[static_cast<size_t>(line)]), std::string::npos, Nested(depth, true));
+        lines[static_cast<size_t>(line)].replace(ValueStart(lines[static_cast<size_t>(line)]), std::string::npos,
+                                                 Nested(depth, true));
       } else if (depth <= 300) {
         lines.push_back("deep:" + Nested(depth, false));
       }
       break;
     }
     case 9: {  // a byte an editor or a transfer could leave
-      static const char kBytes[] = {'\0', '\t', '\v', '\x1b', '\x7f', '\x80', '\xc3', '\xff', '\xfe', '\r',
-                                    '"', '\'', '{', '[', ']', ':', '#', '&', '*', '!', '|', '>', '%', '-', ','};
+      static const char kBytes[] = {'\0', '\t', '\v', '\x1b', '\x7f', '\x80', '\xc3', '\xff', '\xfe',
+                                    '\r', '"',  '\'', '{',    '[',    ']',    ':',    '#',    '&',
+                                    '*',  '!',  '|',  '>',    '%',    '-',    ','};
       std::string& line = lines[any_line()];
       line.insert(static_cast<size_t>(Below(line.size() + 1)), 1, kBytes[Below(sizeof(kBytes))]);
       break;
@@ -201,8 +275,12 @@ void YamlTextMutator::MutateOnce(std::vector<std::string>* lines_pointer) {
       if (line < 0) break;
       std::string& target = lines[static_cast<size_t>(line)];
       switch (Below(3)) {
-        case 0: target.replace(ValueStart(target), std::string::npos, std::string(20000, 'x')); break;
-        case 1: target = std::string(Indentation(target), ' ') + std::string(2000, 'k') + ": 1"; break;
+        case 0:
+          target.replace(ValueStart(target), std::string::npos, std::string(20000, 'x'));
+          break;
+        case 1:
+          target = std::string(Indentation(target), ' ') + std::string(2000, 'k') + ": 1";
+          break;
         default: {
           std::string list = "[";
           for (int i = 0; i < 2000; ++i) list += (i ? ", " : "") + std::to_string(i % 7);
@@ -216,8 +294,10 @@ void YamlTextMutator::MutateOnce(std::vector<std::string>* lines_pointer) {
       std::string& line = lines[any_line()];
       const size_t colon = line.find(':');
       if (colon == std::string::npos || colon == 0) break;
-      if (Below(2) == 0) line.erase(static_cast<size_t>(Below(colon)), 1);
-      else line.insert(colon, "_x");
+      if (Below(2) == 0)
+        line.erase(static_cast<size_t>(Below(colon)), 1);
+      else
+        line.insert(colon, "_x");
       break;
     }
   }

@@ -38,9 +38,9 @@ TEST(ComparisonPicture, MarksStartsAndNamesEachRobotAtItsEnd) {
   // Robot 1's end holds its id in white: a filled disc without one is its
   // colour and a black heading tick only.
   const double half = 0.3 * 0.8 * kRobotRadiusM;
-  EXPECT_GT(picture.CountNear(layout.px(-half), layout.py(-0.5 + half), layout.px(half), layout.py(-0.5 - half), kWhite,
-                              60),
-            0)
+  EXPECT_GT(
+      picture.CountNear(layout.px(-half), layout.py(-0.5 + half), layout.px(half), layout.py(-0.5 - half), kWhite, 60),
+      0)
       << "no id drawn on robot 1";
 }
 

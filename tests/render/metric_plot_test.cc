@@ -10,8 +10,8 @@
 namespace dream::render {
 namespace {
 
-using testing::PicturePixels;
 using dream::testing::TempFolder;
+using testing::PicturePixels;
 
 MetricSeries Ramp(const std::string& name, int points) {
   MetricSeries series;

@@ -49,7 +49,8 @@ class PicturePixels {
   bool Near(double x, double y, const std::array<double, 3>& rgb, int tolerance = 12) const {
     const std::array<int, 3> got = Rgb(x, y);
     for (int c = 0; c < 3; ++c) {
-      if (std::abs(got[static_cast<size_t>(c)] - static_cast<int>(rgb[static_cast<size_t>(c)] * 255 + 0.5)) > tolerance) {
+      if (std::abs(got[static_cast<size_t>(c)] - static_cast<int>(rgb[static_cast<size_t>(c)] * 255 + 0.5)) >
+          tolerance) {
         return false;
       }
     }

@@ -13,12 +13,12 @@ namespace dream::render {
 namespace {
 
 using dream::testing::Box;
+using dream::testing::SyntheticRunLog;
+using dream::testing::TempFolder;
 using testing::kObstacleGrey;
 using testing::kRobot0Blue;
 using testing::kWhite;
 using testing::PicturePixels;
-using dream::testing::SyntheticRunLog;
-using dream::testing::TempFolder;
 
 // Inside a robot's disc (radius 0.055 m), clear of its id label, its heading
 // tick (+x here) and the grid lines through its centre.

@@ -10,10 +10,10 @@
 namespace dream::render {
 namespace {
 
-using run_log::RunLog;
 using dream::testing::Box;
 using dream::testing::SyntheticRunLog;
 using dream::testing::TempFolder;
+using run_log::RunLog;
 
 TEST(RunGeometryTest, DurationPathsAndClosestApproachPerStep) {
   TempFolder dir;
@@ -26,7 +26,7 @@ TEST(RunGeometryTest, DurationPathsAndClosestApproachPerStep) {
   EXPECT_DOUBLE_EQ(path[1][0], 0.6);
   EXPECT_DOUBLE_EQ(path[1][1], 0.8);
   ASSERT_EQ(RobotPath(run, 1, 1, 1).size(), 1u);  // a trail: poses 1..1
-  EXPECT_TRUE(RobotPath(run, 2).empty());          // no such robot
+  EXPECT_TRUE(RobotPath(run, 2).empty());         // no such robot
 
   const auto closest = MinimumDistanceSeries(run);
   ASSERT_EQ(closest.size(), 3u);

@@ -16,13 +16,13 @@ namespace dream::render {
 namespace {
 
 using dream::testing::Box;
+using dream::testing::SyntheticRunLog;
+using dream::testing::TempFolder;
 using testing::kObstacleGrey;
 using testing::kRobot0Blue;
 using testing::kRobot1Orange;
 using testing::kWhite;
 using testing::PicturePixels;
-using dream::testing::SyntheticRunLog;
-using dream::testing::TempFolder;
 
 constexpr double kRobotRadiusM = 0.055;
 
@@ -77,7 +77,7 @@ TEST_F(TrajectoryPictureTest, OverlaysDrawGoalsSensorRangesAndRadioLinks) {
 
   for (const std::string& png : {plain, full}) {
     const PicturePixels picture(png);
-    EXPECT_TRUE(picture.Near(layout_.px(-1.2), layout_.py(0.8), kRobot0Blue, 25)) << png;   // goal crosses
+    EXPECT_TRUE(picture.Near(layout_.px(-1.2), layout_.py(0.8), kRobot0Blue, 25)) << png;  // goal crosses
     EXPECT_TRUE(picture.Near(layout_.px(0.5), layout_.py(-0.8), kRobot1Orange, 25)) << png;
   }
   const PicturePixels without(plain);
@@ -132,8 +132,8 @@ TEST_F(TrajectoryPictureTest, TheLegendShowsTheMarkersTheRunUses) {
   const double disc_px = M_PI * std::pow(kRobotRadiusM * layout_.scale(), 2);
   EXPECT_GT(blue(plain_picture), 0.7 * disc_px);
   EXPECT_GT(blue(goals_picture), blue(plain_picture) + 20);  // and a goal cross
-  EXPECT_GT(grey(plain_picture), 200);                        // the obstacle swatch
-  EXPECT_LT(grey(bare_picture), 20);                          // no obstacles, no swatch (text edges only)
+  EXPECT_GT(grey(plain_picture), 200);                       // the obstacle swatch
+  EXPECT_LT(grey(bare_picture), 20);                         // no obstacles, no swatch (text edges only)
   EXPECT_EQ(blue(bare_picture), blue(plain_picture));
 }
 

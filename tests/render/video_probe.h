@@ -13,8 +13,10 @@ inline bool OnPath(const std::string& program) {
 
 /// Frames in the first video stream of `path`, counted by ffprobe (-1 on failure).
 inline long CountVideoFrames(const std::string& path) {
-  const std::string command = "ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames "
-                              "-of default=nokey=1:noprint_wrappers=1 '" + path + "' 2>/dev/null";
+  const std::string command =
+      "ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames "
+      "-of default=nokey=1:noprint_wrappers=1 '" +
+      path + "' 2>/dev/null";
   FILE* pipe = ::popen(command.c_str(), "r");
   if (pipe == nullptr) return -1;
   char line[64] = {0};

@@ -136,8 +136,8 @@ TEST(ViolationMarksTest, ThePictureMarksEachViolationAtItsPlaceWithItsFirstStepA
     int label = 0;
     for (const double left : {x + 0.8 * ring_px, x - 0.8 * ring_px - 40}) {
       for (const double top : {y - 0.8 * ring_px - 16, y + 0.8 * ring_px}) {
-        label += picture.CountNear(std::max(left, 0.0), top, std::min(left + 40, picture.width() - 1.0), top + 16,
-                                   kRed, 40);
+        label +=
+            picture.CountNear(std::max(left, 0.0), top, std::min(left + 40, picture.width() - 1.0), top + 16, kRed, 40);
       }
     }
     EXPECT_GT(label, 5) << "label of k=" << v.first_step;

@@ -90,13 +90,13 @@ TEST(RunLogCommandsTest, LabCommandsAreTheLabsWithRunIdZeroOrTheRuns) {
 TEST(RunLogCommandsTest, CommandsWithBadIdsAreLeftOut) {
   TempFolder dir;
   SyntheticRunLog log = ThreeSteps(dir / "run.lcmlog");
-  log.MessageOn("DREAM_CMD_1", Command(0, 0, 1.0))         // payload robot 0 on robot 1's channel
-      .MessageOn("DREAM_CMD_2", Command(0, 2, 1.0))        // no robot 2 in a run of two
-      .MessageOn("DREAM_CMD_-1", Command(0, -1, 1.0))      // no number
-      .MessageOn("DREAM_CMD_01x", Command(0, 1, 1.0))      // not a number
+  log.MessageOn("DREAM_CMD_1", Command(0, 0, 1.0))                 // payload robot 0 on robot 1's channel
+      .MessageOn("DREAM_CMD_2", Command(0, 2, 1.0))                // no robot 2 in a run of two
+      .MessageOn("DREAM_CMD_-1", Command(0, -1, 1.0))              // no number
+      .MessageOn("DREAM_CMD_01x", Command(0, 1, 1.0))              // not a number
       .MessageOn("DREAM_CMD_99999999", Command(0, 99999999, 1.0))  // past 6 digits
-      .MessageOn("DREAM_CMD_0", Command(0, 0, 1.0, 77))    // another run's
-      .MessageOn("DREAM_CMD_0", Command(2, 0, 0.3));       // the one of this run
+      .MessageOn("DREAM_CMD_0", Command(0, 0, 1.0, 77))            // another run's
+      .MessageOn("DREAM_CMD_0", Command(2, 0, 0.3));               // the one of this run
   const RunLog run = RunLog::Read(log.Write());
   ASSERT_EQ(run.commands().size(), 1u);
   EXPECT_EQ(run.commands()[0].step, 2);

@@ -167,12 +167,12 @@ TEST(RunLogTest, ForeignTypesOnTheRunsChannelsAreLeftOutAndOtherChannelsIgnored)
   status.detail = "a status where poses belong";
   SyntheticRunLog log(dir / "run.lcmlog");
   log.Poses(0, {{0, 0, 0}})
-      .Other("DREAM_CMD_0")             // not read at all
-      .Other("DREAM_RADIO_0")           // a radio message that does not decode: no broadcast
-      .Other("DREAM_FAULT_0")           // nor a fault
-      .Other("DREAM_STATUS")            // a status that does not decode
+      .Other("DREAM_CMD_0")              // not read at all
+      .Other("DREAM_RADIO_0")            // a radio message that does not decode: no broadcast
+      .Other("DREAM_FAULT_0")            // nor a fault
+      .Other("DREAM_STATUS")             // a status that does not decode
       .MessageOn("DREAM_POSES", status)  // a foreign type
-      .Other("DREAM_OBSTACLES")         // obstacles that do not decode
+      .Other("DREAM_OBSTACLES")          // obstacles that do not decode
       .Poses(1, {{0, 0, 0}});
   const RunLog run = RunLog::Read(log.Write());
   EXPECT_EQ(run.poses().size(), 2u);
@@ -208,8 +208,9 @@ TEST(RunLogTest, ARunMustKeepItsRobots) {
                 "the same message again)");
   SyntheticRunLog backwards(dir / "backwards.lcmlog");
   backwards.Poses(0, {{0, 0, 0}}).Poses(1, {{0, 0, 0}}).Poses(0, {{0, 0, 0}});
-  EXPECT_EQ(RunLog::Read(backwards.Write()).Flaw(false),
-            dir / "backwards.lcmlog" + ": DREAM_POSES jumps from step 1 to step 0; a run log has every step once, in order");
+  EXPECT_EQ(
+      RunLog::Read(backwards.Write()).Flaw(false),
+      dir / "backwards.lcmlog" + ": DREAM_POSES jumps from step 1 to step 0; a run log has every step once, in order");
 }
 
 TEST(RunLogTest, AnEmptyLogHasNoPosesAndIsNoRun) {

@@ -13,7 +13,8 @@ int factories_built = 0;
 
 class DriveRobot final : public dream::agents::Robot {
  public:
-  DriveRobot(int id, const dream::agents::RobotParams& params, double speed_mps) : Robot(id, params), speed_mps_(speed_mps) {}
+  DriveRobot(int id, const dream::agents::RobotParams& params, double speed_mps)
+      : Robot(id, params), speed_mps_(speed_mps) {}
   dream::agents::UnicycleCommand Update(int64_t) override { return {speed_mps_, 0.0}; }
 
  private:

@@ -28,11 +28,14 @@ class RenderOverlaysTest : public ::testing::Test {
   }
 
   run_config::RunConfig PairConfig(const std::string& goal_points_body) {
-    Write("pair.py", "from dream import Robot\n\nclass Pair(Robot):\n    @classmethod\n"
-                     "    def goal_points(cls, config, num_robots):\n        " + goal_points_body + "\n");
-    return run_config::LoadRunConfigFile(Write("pair.yaml",
-        "name: pair\nrobots: 2\nsteps: 10\ninitial_poses:\n  - [-0.5, 0.0, 0.0]\n  - [0.5, 0.0, 0.0]\n"
-        "controller:\n  kind: python\n  module: pair.py\n  class: Pair\n"));
+    Write("pair.py",
+          "from dream import Robot\n\nclass Pair(Robot):\n    @classmethod\n"
+          "    def goal_points(cls, config, num_robots):\n        " +
+              goal_points_body + "\n");
+    return run_config::LoadRunConfigFile(
+        Write("pair.yaml",
+              "name: pair\nrobots: 2\nsteps: 10\ninitial_poses:\n  - [-0.5, 0.0, 0.0]\n  - [0.5, 0.0, 0.0]\n"
+              "controller:\n  kind: python\n  module: pair.py\n  class: Pair\n"));
   }
 
   dream::testing::ScratchFolder folder_{"dream_render_overlays"};

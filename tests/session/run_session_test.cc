@@ -88,14 +88,15 @@ TEST_F(RunSessionTest, AFolderRemovedAndMadeAgainDuringTheRunIsLeftToTheNewerRun
   for (int id = 0; id < session.config().num_robots; ++id) robots.push_back(session.factory()->Make(id));
   agent_host::AgentHost host(bus, std::move(robots), 77);
   // At step 5 the folder is removed and made again, and a newer run writes there.
-  const lcm::Subscription folder_swapper = bus.Subscribe(lcm::kPosesChannel, [this](const std::string&, const void* data, int size) {
-    robot_poses_t poses;
-    if (poses.decode(data, 0, size) < 0 || poses.step != 5 || fs::exists(out() + "/summary.json")) return;
-    fs::remove_all(out());
-    fs::create_directories(out());
-    std::ofstream(out() + "/run.lcmlog.part") << "the newer run's log";
-    std::ofstream(out() + "/summary.json") << "the newer run's summary";
-  });
+  const lcm::Subscription folder_swapper =
+      bus.Subscribe(lcm::kPosesChannel, [this](const std::string&, const void* data, int size) {
+        robot_poses_t poses;
+        if (poses.decode(data, 0, size) < 0 || poses.step != 5 || fs::exists(out() + "/summary.json")) return;
+        fs::remove_all(out());
+        fs::create_directories(out());
+        std::ofstream(out() + "/run.lcmlog.part") << "the newer run's log";
+        std::ofstream(out() + "/summary.json") << "the newer run's summary";
+      });
   const RunResult result = session.Run(bus, {out(), "the folder's config\n"});
   EXPECT_EQ(result.outcome.end, node::RunOutcome::End::kFailed);
   EXPECT_THAT(result.outcome.reason, HasSubstr("is no longer the file this run wrote"));

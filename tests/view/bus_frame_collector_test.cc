@@ -92,7 +92,8 @@ class BusFrameCollectorTest : public ::testing::Test {
 };
 
 TEST_F(BusFrameCollectorTest, KeepsOnlyTheNewestStep) {
-  for (int64_t step = 0; step < 5; ++step) PublishStep(bus_, 77, step, {{0.1 * static_cast<double>(step), 0.0, 0.0}, {1.0, 0.5, 1.0}}, 0);
+  for (int64_t step = 0; step < 5; ++step)
+    PublishStep(bus_, 77, step, {{0.1 * static_cast<double>(step), 0.0, 0.0}, {1.0, 0.5, 1.0}}, 0);
   ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
   EXPECT_EQ(frame_.run_id, 77);
   EXPECT_EQ(frame_.step, 4);

@@ -102,7 +102,7 @@ TEST(FrameJsonTest, ForgedTextIsValidUtf8AndEscaped) {
   const std::string detail = json["status"]["detail"];
   EXPECT_NE(detail.find("quote \" backslash \\ newline \n bell \a bad "), std::string::npos);
   EXPECT_NE(detail.find("\xef\xbf\xbd\xef\xbf\xbd end"), std::string::npos);  // each bad byte: U+FFFD
-  EXPECT_NE(detail.find("\xc3\xa9 \xe2\x80\x94"), std::string::npos);        // good UTF-8 kept
+  EXPECT_NE(detail.find("\xc3\xa9 \xe2\x80\x94"), std::string::npos);         // good UTF-8 kept
 }
 
 TEST(FrameJsonTest, AFrameBeforeAnyPosesHasNoRobotsAndNoStatus) {
@@ -144,10 +144,12 @@ TEST(FrameJsonTest, ASetupCarriesTheRunsJudgementWhenItHasOne) {
                                    "missed (worst 0.03 m)",
                                    {{"final_max_goal_error_m", "0.03"}, {"all_arrived_step", "-1"}}};
   const std::string json = SetupJson(setup);
-  EXPECT_NE(json.find("\"judged\":{\"verdict\":\"not_ready\",\"reasons\":[\"goal: the go_to_goal experiment missed its goal\"],"
-                      "\"goal\":\"missed (worst 0.03 m)\",\"metrics\":[[\"final_max_goal_error_m\",\"0.03\"],"
-                      "[\"all_arrived_step\",\"-1\"]]}"),
-            std::string::npos)
+  EXPECT_NE(
+      json.find(
+          "\"judged\":{\"verdict\":\"not_ready\",\"reasons\":[\"goal: the go_to_goal experiment missed its goal\"],"
+          "\"goal\":\"missed (worst 0.03 m)\",\"metrics\":[[\"final_max_goal_error_m\",\"0.03\"],"
+          "[\"all_arrived_step\",\"-1\"]]}"),
+      std::string::npos)
       << json;
 }
 

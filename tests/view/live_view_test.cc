@@ -37,8 +37,8 @@ TEST(LiveViewTest, APageChoosesAnotherRunHeardByItsDecimalId) {
   LiveView live(bus, server, ViewSetup{});
   PublishStep(bus, 5, 0, run_status_t::RUNNING);
   PublishStep(bus, -9, 0, run_status_t::WAITING_FOR_AGENTS);  // a run id above 2^63, as frames carry it: "-9"
-  EXPECT_FALSE(live.OnPageMessage("follow 77"));  // no such run heard
-  EXPECT_FALSE(live.OnPageMessage("follow 5"));   // the one drawn
+  EXPECT_FALSE(live.OnPageMessage("follow 77"));              // no such run heard
+  EXPECT_FALSE(live.OnPageMessage("follow 5"));               // the one drawn
   EXPECT_FALSE(live.OnPageMessage("follow -9x"));
   EXPECT_FALSE(live.OnPageMessage("follow "));
   EXPECT_FALSE(live.OnPageMessage("follow 99999999999999999999"));  // past int64

@@ -45,8 +45,8 @@ TEST(ReplayJsonTest, ViolationsLocatedAtTheirStepWithCountsSoFar) {
   SyntheticRunLog log(folder / "run.lcmlog");
   log.Obstacles(0, {dream::testing::Box(4, 1.0, 0.5, 0.2, 0.2)});
   log.Poses(0, {{0.0, 0.0, 0.0}, {0.5, 0.0, 0.0}});
-  log.Poses(1, {{0.0, 0.0, 0.0}, {0.1, 0.0, M_PI}});    // too close
-  log.Poses(2, {{1.7, 0.0, 0.0}, {1.0, 0.5, 0.0}});     // outside; in the obstacle
+  log.Poses(1, {{0.0, 0.0, 0.0}, {0.1, 0.0, M_PI}});  // too close
+  log.Poses(2, {{1.7, 0.0, 0.0}, {1.0, 0.5, 0.0}});   // outside; in the obstacle
   log.Poses(3, {{0.0, 0.0, 0.0}, {0.5, 0.0, 0.0}});
   log.Status(3, run_status_t::FINISHED, {}, "reached the step limit");
   const nlohmann::json run = ReplayOf(log.Write());

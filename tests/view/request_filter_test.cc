@@ -19,8 +19,11 @@ RequestFilter::Request Get(std::string_view target, std::string_view host = "127
 
 TEST(RequestFilterTest, ServesThePagesOwnAssets) {
   const RequestFilter filter(true, 8077, false);
-  for (const auto& [target, asset] : {std::pair{"/", "index.html"}, {"/index.html", "index.html"},
-                                      {"/view.js", "view.js"}, {"/arena.js", "arena.js"}, {"/view.css", "view.css"},
+  for (const auto& [target, asset] : {std::pair{"/", "index.html"},
+                                      {"/index.html", "index.html"},
+                                      {"/view.js", "view.js"},
+                                      {"/arena.js", "arena.js"},
+                                      {"/view.css", "view.css"},
                                       {"/view.js?v=2", "view.js"}}) {
     const auto decision = filter.Decide(Get(target));
     EXPECT_EQ(decision.action, Action::kAsset) << target << ": " << decision.reason;

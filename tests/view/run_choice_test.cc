@@ -40,7 +40,6 @@ TEST_F(RunChoiceTest, TheFirstRunIsJoinedAtAnyStepOnAWholeStepOfAWorld) {
   EXPECT_EQ(choice_.run_id(), kRun);
   EXPECT_EQ(Step(kRun, 13), Decision::kNewStep);
   EXPECT_EQ(choice_.OnPoses(kRun, 13), Decision::kResend);
-
 }
 
 TEST_F(RunChoiceTest, PosesAloneHoweverManyAreNoRun) {
@@ -80,7 +79,7 @@ TEST_F(RunChoiceTest, AFinishedRunStaysUntilANewWorldStartsFromItsStep0) {
   EXPECT_EQ(choice_.run_id(), kRun);
   EXPECT_EQ(choice_.OtherWorldHeard()->run_id, kForged);
   now_ += RunChoice::kOtherWorldShown + std::chrono::milliseconds(1);
-  EXPECT_FALSE(choice_.OtherWorldHeard().has_value());  // the forged run is quiet
+  EXPECT_FALSE(choice_.OtherWorldHeard().has_value());                                  // the forged run is quiet
   EXPECT_EQ(Step(kSecond, 0, run_status_t::WAITING_FOR_AGENTS), Decision::kStartOver);  // a new world
   EXPECT_EQ(choice_.run_id(), kSecond);
   EXPECT_FALSE(choice_.ended());
@@ -171,7 +170,7 @@ TEST_F(RunChoiceTest, TheUsersChoiceIsDrawnFromItsNextPoses) {
   EXPECT_FALSE(choice_.Choose(kRun));     // the one drawn
   EXPECT_EQ(choice_.run_id(), kRun);
   EXPECT_TRUE(choice_.Choose(kSecond));
-  EXPECT_EQ(Step(kRun, 5), Decision::kNewStep);  // until the chosen run's next poses
+  EXPECT_EQ(Step(kRun, 5), Decision::kNewStep);                   // until the chosen run's next poses
   EXPECT_EQ(choice_.OnPoses(kSecond, 45), Decision::kStartOver);  // whatever its step, status or not
   EXPECT_EQ(choice_.run_id(), kSecond);
   EXPECT_EQ(Step(kRun, 6), Decision::kIgnore);

@@ -28,7 +28,7 @@ struct FakeRunner {
   nlohmann::json report;
   bool writes_result = true;
   CheckSubmission::ScriptRun ends;
-  std::vector<std::string> argv;  ///< what it was started with
+  std::vector<std::string> argv;                  ///< what it was started with
   std::function<void(int64_t, double*)> perturb;  ///< changes the lab's rows (PerfectLabResult's)
 };
 
@@ -48,13 +48,11 @@ class CheckSubmissionTest : public ::testing::Test {
     CheckSubmission::Tools tools;
     tools.run_script = [this](const std::vector<std::string>& argv) {
       runner_.argv = argv;
-      const auto at = [&argv](const std::string& option) {
-        return *(std::find(argv.begin(), argv.end(), option) + 1);
-      };
+      const auto at = [&argv](const std::string& option) { return *(std::find(argv.begin(), argv.end(), option) + 1); };
       if (runner_.writes_result) {
-        bridge::testing::WriteText(at("--workdir") + "/" + bridge::SubmissionFiles::kResult,
-                                   formats::EncodeNpy(bridge::testing::PerfectLabResult(testing::SimulatedExport(),
-                                                                                       runner_.perturb)));
+        bridge::testing::WriteText(
+            at("--workdir") + "/" + bridge::SubmissionFiles::kResult,
+            formats::EncodeNpy(bridge::testing::PerfectLabResult(testing::SimulatedExport(), runner_.perturb)));
       }
       if (!runner_.report.is_null()) bridge::testing::WriteText(at("--report"), runner_.report.dump());
       return runner_.ends;
@@ -75,7 +73,10 @@ class CheckSubmissionTest : public ::testing::Test {
   }
 
   static nlohmann::json Passed() {
-    return {{"ok", true}, {"simulator", "standin"}, {"verdict", "clean"}, {"debug_text", "No errors\n"},
+    return {{"ok", true},
+            {"simulator", "standin"},
+            {"verdict", "clean"},
+            {"debug_text", "No errors\n"},
             {"warnings", nlohmann::json::array()}};
   }
 
@@ -89,15 +90,15 @@ TEST_F(CheckSubmissionTest, ARunnerThatPassesGivesAnImportedRunComparedWithTheSi
   runner_.report = Passed();
   const CheckSubmission::Result result = Check(Options());
   EXPECT_EQ(result.outcome, Outcome::kPassed) << result.error;
-  EXPECT_THAT(runner_.argv, ::testing::ElementsAre("python-of-the-test", "run_submission.py", "--upload",
-                                                   testing::SimulatedExport() + "/upload", "--workdir",
-                                                   out_dir_ + "/lab_files", "--report",
-                                                   out_dir_ + "/check_report.json", "--standin"));
+  EXPECT_THAT(runner_.argv,
+              ::testing::ElementsAre("python-of-the-test", "run_submission.py", "--upload",
+                                     testing::SimulatedExport() + "/upload", "--workdir", out_dir_ + "/lab_files",
+                                     "--report", out_dir_ + "/check_report.json", "--standin"));
   const nlohmann::json check = nlohmann::json::parse(files::ReadFileText(out_dir_ + "/check.json"));
   EXPECT_EQ(check["verdict"], "clean");
   EXPECT_EQ(check["complete"], true);
   EXPECT_EQ(check["compared_with"], testing::SimulatedRun());
-  EXPECT_EQ(check["tracking_max_m"], 0.0);  // a perfect lab drives the recorded poses
+  EXPECT_EQ(check["tracking_max_m"], 0.0);                   // a perfect lab drives the recorded poses
   EXPECT_FALSE(check.contains("controllers_on_lab_poses"));  // a track export
   // The imported run is reported as every run is.
   const nlohmann::json summary = nlohmann::json::parse(files::ReadFileText(out_dir_ + "/summary.json"));
@@ -141,8 +142,9 @@ TEST_F(CheckSubmissionTest, DebugsVerdictIsReadAsAVerdict) {
 // does, in its outcome (exit 5), check.json and what it prints.
 TEST_F(CheckSubmissionTest, ALabRunThatMissesItsGoalIsNotReadyAsDreamImportSays) {
   runner_.report = Passed();
-  const int64_t steps = formats::ReadNpyFile(testing::SimulatedExport() + "/upload/" +
-                                            bridge::SubmissionFiles::kReferenceCommands).shape[0];
+  const int64_t steps =
+      formats::ReadNpyFile(testing::SimulatedExport() + "/upload/" + bridge::SubmissionFiles::kReferenceCommands)
+          .shape[0];
   constexpr int robots = 8;  // the shipped go_to_goal
   // Every robot drifts 6 cm to the right over the run: no collision, no jump,
   // but none ends within go_to_goal's 2 cm of its goal.

@@ -19,11 +19,15 @@ inline nlohmann::json FinishedSummary(bool goal_met, long long completion_step, 
   return {{"end", "finished"},
           {"verdict", "clean"},
           {"steps", 40},
-          {"violations", {{"boundary_errors", 0}, {"collision_errors", 0}, {"actuator_errors", 0}, {"obstacle_collisions", 0}}},
+          {"violations",
+           {{"boundary_errors", 0}, {"collision_errors", 0}, {"actuator_errors", 0}, {"obstacle_collisions", 0}}},
           {"metrics",
            {{"kind", "go_to_goal"},
             {"min_pairwise_distance_m", min_distance_m},
-            {"goal", {{"met", goal_met}, {"completion_step", completion_step}, {"detail", goal_met ? "all arrived" : "not all"}}}}}};
+            {"goal",
+             {{"met", goal_met},
+              {"completion_step", completion_step},
+              {"detail", goal_met ? "all arrived" : "not all"}}}}}};
 }
 
 /// `summary` with what dream run adds of its own where the test left it out:
@@ -60,7 +64,8 @@ class FakeJobRunner : public JobRunner {
       const std::string dir = job.argv.at(4);  // dream run CONFIG --out DIR
       const Outcome outcome = outcome_(dir);
       std::ofstream(job.output_path) << (outcome.exit_code == 0 ? "done\n" : "[12:00:00.000] [error] it broke\n");
-      if (!outcome.summary.is_null()) std::ofstream(dir + "/summary.json") << AsDreamRunWrites(dir, outcome.summary).dump();
+      if (!outcome.summary.is_null())
+        std::ofstream(dir + "/summary.json") << AsDreamRunWrites(dir, outcome.summary).dump();
       Finished done;
       done.index = i;
       done.exit_code = outcome.exit_code;

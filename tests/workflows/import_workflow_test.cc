@@ -63,12 +63,14 @@ TEST(ImportWorkflowTest, ALabRunsSummaryCarriesEverythingARunsSummaryDoes) {
 TEST(ImportWorkflowTest, ALabRunThatMissedItsGoalIsNotReadyAsASimulatedOneWouldBe) {
   // The lab's robots stayed where they started: the poses pass every check,
   // but no robot reached its goal.
-  const formats::NpyArray start = formats::ReadNpyFile(testing::SimulatedExport() + "/upload/" +
-                                                     bridge::SubmissionFiles::kInitialPoses);
+  const formats::NpyArray start =
+      formats::ReadNpyFile(testing::SimulatedExport() + "/upload/" + bridge::SubmissionFiles::kInitialPoses);
   const int64_t n = start.shape[1];
-  const formats::NpyArray rows = bridge::testing::PerfectLabResult(testing::SimulatedExport(), [&](int64_t, double* row) {
-    for (int64_t q = 0; q < 3 * n; ++q) row[bridge::ResultLayout::kFixedColumns + q] = start.values[static_cast<size_t>(q)];
-  });
+  const formats::NpyArray rows =
+      bridge::testing::PerfectLabResult(testing::SimulatedExport(), [&](int64_t, double* row) {
+        for (int64_t q = 0; q < 3 * n; ++q)
+          row[bridge::ResultLayout::kFixedColumns + q] = start.values[static_cast<size_t>(q)];
+      });
   std::ostringstream out;
   const ImportWorkflow::Result result = Import(rows, "missed_goal", out);
   EXPECT_EQ(result.imported.verdict(), world::RunVerdict::kClean);  // the lab part alone sees nothing wrong

@@ -55,9 +55,9 @@ TEST_F(SweepFolderTest, PlanRoundTripsValuesWithTabsAndNewlines) {
 
 TEST_F(SweepFolderTest, ADamagedPlanIsRefusedNamingTheLine) {
   const std::string header = "index\trun\tseed\n";
-  for (const std::string& rows : {std::string("0\t../escape\t1\n"), std::string("1\tseed1\t1\n"),
-                                  std::string("0\tseed1\t-3\n"), std::string("0\tseed1\t1\textra\n"),
-                                  std::string("0\tseed1\t1\n1\tseed1\t2\n")}) {
+  for (const std::string& rows :
+       {std::string("0\t../escape\t1\n"), std::string("1\tseed1\t1\n"), std::string("0\tseed1\t-3\n"),
+        std::string("0\tseed1\t1\textra\n"), std::string("0\tseed1\t1\n1\tseed1\t2\n")}) {
     WritePlanText(header + rows);
     try {
       folder_.ReadPlan();
@@ -75,7 +75,9 @@ TEST(SlurmTaskState, ReadsSlurmsWordsAndItsLogLines) {
   EXPECT_EQ(SlurmTaskState::FromSlurmWord("PENDING")->state, SlurmTaskState::State::kPending);
   EXPECT_EQ(SlurmTaskState::FromSlurmWord("NODE_FAIL")->state, SlurmTaskState::State::kFailed);
   EXPECT_FALSE(SlurmTaskState::FromSlurmWord(""));
-  EXPECT_EQ(SlurmTaskState::FromTaskLog("x\nslurmstepd: error: *** JOB 7 ON vm CANCELLED AT 2026-11-27T12:00:00 DUE TO TIME LIMIT ***\n")->state,
+  EXPECT_EQ(SlurmTaskState::FromTaskLog(
+                "x\nslurmstepd: error: *** JOB 7 ON vm CANCELLED AT 2026-11-27T12:00:00 DUE TO TIME LIMIT ***\n")
+                ->state,
             SlurmTaskState::State::kTimedOut);
   EXPECT_EQ(SlurmTaskState::FromTaskLog("*** JOB 7 ON vm CANCELLED AT 2026-11-27T12:00:00 ***")->state,
             SlurmTaskState::State::kCancelled);

@@ -34,7 +34,8 @@ void ReplaceWithFifo(const std::string& path) {
 /// Holds a run folder's lock as its dream run (or run.sh) does while it runs.
 class RunningRun {
  public:
-  explicit RunningRun(const std::string& dir) : fd_(::open((dir + "/.dream.lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644)) {
+  explicit RunningRun(const std::string& dir)
+      : fd_(::open((dir + "/.dream.lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644)) {
     EXPECT_GE(fd_, 0);
     EXPECT_EQ(::flock(fd_, LOCK_EX | LOCK_NB), 0);
     std::ofstream(dir + "/output.txt") << "step 100\n";
@@ -90,7 +91,8 @@ TEST_F(SweepWorkflowTest, AFifoAsASweepFileIsRefusedNamingIt) {
     ReplaceWithFifo(path);
     for (const bool status : {true, false}) {
       try {
-        status ? static_cast<void>(Workflow().Status(out().string())) : static_cast<void>(Workflow().Table(out().string()));
+        status ? static_cast<void>(Workflow().Status(out().string()))
+               : static_cast<void>(Workflow().Table(out().string()));
         ADD_FAILURE() << "a FIFO as " << file << " was read";
       } catch (const std::runtime_error& e) {
         EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
@@ -138,7 +140,8 @@ TEST_F(SweepWorkflowTest, ACancelledSlurmTaskWhoseRunIsStillEndingIsCancelledAnd
   Workflow().Start(settings_, Base());
   const SweepFolder folder(out().string());
   const std::string ending = folder.RunDir(folder.ReadPlan().runs()[1].name);
-  std::ofstream(folder.Path("slurm/100_1.out")) << "slurmstepd: error: *** JOB 102 ON vm CANCELLED AT 2026-11-27T12:00:00 ***\n";
+  std::ofstream(folder.Path("slurm/100_1.out"))
+      << "slurmstepd: error: *** JOB 102 ON vm CANCELLED AT 2026-11-27T12:00:00 ***\n";
   RunningRun still_writing(ending);  // its dream run, past Slurm's notice, still writing its log
 
   EXPECT_EQ(Workflow().Table(out().string()).summary.failed, 1u);

@@ -55,7 +55,8 @@ TEST(SweepPlan, SeedsArePaddedSoFoldersSortAndNamesStaySafe) {
 }
 
 TEST(SweepPlan, RefusesRepeatedKeysAndHugeSweeps) {
-  EXPECT_THROW(SweepPlan({1}, {config_overrides::SweepParameter::Parse("steps=1,2"), config_overrides::SweepParameter::Parse("steps=3")}),
+  EXPECT_THROW(SweepPlan({1}, {config_overrides::SweepParameter::Parse("steps=1,2"),
+                               config_overrides::SweepParameter::Parse("steps=3")}),
                std::invalid_argument);
   EXPECT_THROW(SweepPlan({}, {}), std::invalid_argument);
   std::vector<uint64_t> many(1000);
@@ -80,7 +81,8 @@ TEST(SweepPlan, ZippedKeysVaryTogetherInEveryCombinationWithTheSetKeys) {
     ASSERT_EQ(run.parameters.size(), 3u);
     speed_with_range.insert({run.parameters[1].second, run.parameters[2].second});
   }
-  EXPECT_EQ(speed_with_range, (std::set<std::pair<std::string, std::string>>{{"0.1", "0.5"}, {"0.2", "1.0"}, {"0.3", "1.5"}}));
+  EXPECT_EQ(speed_with_range,
+            (std::set<std::pair<std::string, std::string>>{{"0.1", "0.5"}, {"0.2", "1.0"}, {"0.3", "1.5"}}));
   EXPECT_EQ(plan.runs()[0].name, "seed1_variant-exact_max_speed_mps-0.1_range_m-0.5");
   EXPECT_EQ(plan.runs()[2].name, "seed1_variant-exact_max_speed_mps-0.2_range_m-1.0");
   EXPECT_EQ(plan.runs()[2].Label(), "seed 1, variant=exact, max_speed_mps=0.2, range_m=1.0");
@@ -89,10 +91,12 @@ TEST(SweepPlan, ZippedKeysVaryTogetherInEveryCombinationWithTheSetKeys) {
 TEST(SweepPlan, ZippedKeysNeedAsManyValuesAndNoKeyIsSweptTwice) {
   using config_overrides::SweepParameter;
   try {
-    SweepPlan({1}, {}, {SweepParameter::Parse("controller.max_speed_mps=0.1,0.2"), SweepParameter::Parse("steps=10,20,30")});
+    SweepPlan({1}, {},
+              {SweepParameter::Parse("controller.max_speed_mps=0.1,0.2"), SweepParameter::Parse("steps=10,20,30")});
     FAIL() << "zipped keys with 2 and 3 values were planned";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("--zip steps has 3 values and --zip controller.max_speed_mps 2"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("--zip steps has 3 values and --zip controller.max_speed_mps 2"),
+              std::string::npos)
         << e.what();
   }
   EXPECT_THROW(SweepPlan({1}, {SweepParameter::Parse("steps=1,2")}, {SweepParameter::Parse("steps=3,4")}),
@@ -100,8 +104,8 @@ TEST(SweepPlan, ZippedKeysNeedAsManyValuesAndNoKeyIsSweptTwice) {
 }
 
 TEST(SweepPlan, RunConfigHasSeedNameAndParametersAndPassesTheConfigCheck) {
-  const SweepPlan plan({7},
-                       {config_overrides::SweepParameter::Parse("controller.max_speed_mps=0.1"), config_overrides::SweepParameter::Parse("steps=250")});
+  const SweepPlan plan({7}, {config_overrides::SweepParameter::Parse("controller.max_speed_mps=0.1"),
+                             config_overrides::SweepParameter::Parse("steps=250")});
   const SweepPlan::Run& run = plan.runs()[0];
   const YAML::Node config = SweepPlan::MakeRunConfig(kBase, "base.yaml", run);
   const std::string text = config_overrides::ConfigText(config, "generated for a test\nsecond line");

@@ -31,9 +31,9 @@ nlohmann::json Goal(bool met, long long completion_step, const std::string& deta
 }
 
 nlohmann::json Circle(long long steps, long long completed_step, int completed, long long collisions, double min_m) {
-  return Summary("hrvo_circle", steps, collisions, min_m,
-                 Goal(completed == 3, completed == 3 ? completed_step : -1,
-                      std::to_string(completed) + " of 3 formations"));
+  return Summary(
+      "hrvo_circle", steps, collisions, min_m,
+      Goal(completed == 3, completed == 3 ? completed_step : -1, std::to_string(completed) + " of 3 formations"));
 }
 
 std::vector<SweepPlan::Run> Runs(uint64_t count) {
@@ -84,7 +84,8 @@ TEST(SweepRunResult, ASummaryOfAnotherRunIsAFailedRowNamingWhy) {
   EXPECT_TRUE(JudgeJson(runs[1], 0, false, 1.0, copied, "").success);
 
   std::vector<SweepRunResult> results;
-  for (const SweepPlan::Run& run : runs) results.push_back(JudgeOwn(run, 0, false, 1.0, Circle(1990, 1985, 3, 0, 0.21), ""));
+  for (const SweepPlan::Run& run : runs)
+    results.push_back(JudgeOwn(run, 0, false, 1.0, Circle(1990, 1985, 3, 0, 0.21), ""));
   nlohmann::json twin = Circle(1990, 1985, 3, 0, 0.21);
   twin["seed"] = 3;
   twin["run"] = "demo_seed3";
@@ -130,8 +131,7 @@ TEST(SweepRunResult, SuccessNeedsAFinishedAcceptedCollisionFreeRunThatMetItsGoal
   EXPECT_EQ(slow.OutcomeText(), "failed to run (timed out after 61 s)");
   const SweepRunResult stopped = JudgeOwn(runs[3], 130, false, 1.0, Circle(90, -1, 0, 0, 0.3), "");
   EXPECT_EQ(stopped.status, SweepRunResult::Status::kInterrupted);
-  const SweepRunResult unstarted =
-      JudgeOwn(runs[3], -1, false, 0.0, nullptr, "could not start: disk full");
+  const SweepRunResult unstarted = JudgeOwn(runs[3], -1, false, 0.0, nullptr, "could not start: disk full");
   EXPECT_EQ(unstarted.OutcomeText(), "failed to run (could not start: disk full)");
   const SweepRunResult no_summary = JudgeOwn(runs[3], 0, false, 1.0, nullptr, "");
   EXPECT_EQ(no_summary.status, SweepRunResult::Status::kFailed);

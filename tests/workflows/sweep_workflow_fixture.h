@@ -52,7 +52,8 @@ class SweepWorkflowTest : public ::testing::Test {
 
   /// A workflow whose local runs end as `outcome` says.
   SweepWorkflow Workflow(FakeJobRunner::OutcomeFn outcome = nullptr, size_t stop_after = SIZE_MAX) {
-    if (!outcome) outcome = [](const std::string&) { return FakeJobRunner::Outcome{0, FinishedSummary(true, 30, 0.3)}; };
+    if (!outcome)
+      outcome = [](const std::string&) { return FakeJobRunner::Outcome{0, FinishedSummary(true, 30, 0.3)}; };
     SweepWorkflow::Environment env;
     env.make_job_runner = [this, outcome, stop_after](int jobs, double) -> std::unique_ptr<JobRunner> {
       jobs_asked_ = jobs;

@@ -87,7 +87,8 @@ TEST_F(SweepWorkflowTest, AnInterruptedLocalSweepResumesTheRunsThatNeverStarted)
   const SweepOutcome resumed = Workflow().Resume(out().string(), {});
   EXPECT_EQ(started_.size(), 3u);
   EXPECT_TRUE(resumed.AllRan());
-  EXPECT_NE(ReadText(folder.RunDir(plan.runs()[3].name) + "/config.yaml").find("max_speed_mps: 0.2"), std::string::npos);
+  EXPECT_NE(ReadText(folder.RunDir(plan.runs()[3].name) + "/config.yaml").find("max_speed_mps: 0.2"),
+            std::string::npos);
 }
 
 TEST_F(SweepWorkflowTest, AHalfWrittenRunFolderIsAFailedRowAndIsRunAgain) {
@@ -139,10 +140,16 @@ TEST_F(SweepWorkflowTest, SlurmEngineSubmitsOneArrayAndATableJobAfterIt) {
   const auto sbatches = slurm_.Sbatches();
   ASSERT_EQ(sbatches.size(), 2u);
   const SweepFolder folder(out().string());
-  const std::vector<std::string> array = {"sbatch", "--parsable", "--job-name=dream-sweep-demo", "--array=0-3%3",
+  const std::vector<std::string> array = {"sbatch",
+                                          "--parsable",
+                                          "--job-name=dream-sweep-demo",
+                                          "--array=0-3%3",
                                           "--output=" + folder.Path("slurm/%A_%a.out"),
                                           "--time=11",  // 10 min + 0.1 s per step of 40
-                                          "--partition=short", "--account=lab", folder.Path("slurm/array.sh"), "0"};
+                                          "--partition=short",
+                                          "--account=lab",
+                                          folder.Path("slurm/array.sh"),
+                                          "0"};
   EXPECT_EQ(sbatches[0], array);
   EXPECT_EQ(sbatches[1][3], "--dependency=afterany:100");
   EXPECT_EQ(sbatches[1].back(), folder.Path("slurm/table.sh"));
@@ -173,7 +180,8 @@ TEST_F(SweepWorkflowTest, SlurmArraysAreCutAtTheClustersMaxArraySize) {
   EXPECT_EQ(sbatches[2].back(), "6");
   EXPECT_EQ(sbatches[3][3], "--dependency=afterany:100:101:102");
   for (const auto& sbatch : sbatches) {
-    EXPECT_EQ(std::count_if(sbatch.begin(), sbatch.end(), [](const std::string& w) { return w.rfind("--time", 0) == 0; }), 1)
+    EXPECT_EQ(
+        std::count_if(sbatch.begin(), sbatch.end(), [](const std::string& w) { return w.rfind("--time", 0) == 0; }), 1)
         << "the user's --time replaces the default";
   }
 }
@@ -187,7 +195,8 @@ TEST_F(SweepWorkflowTest, SlurmRowsSayCancelledPendingAndRunningAndResumeWaitsTh
   folder.WriteRunExit(plan.runs()[0].name, {0, 2.5, false, ""});
   std::ofstream(folder.RunDir(plan.runs()[0].name) + "/summary.json")
       << testing::AsDreamRunWrites(folder.RunDir(plan.runs()[0].name), FinishedSummary(true, 30, 0.3)).dump();
-  std::ofstream(folder.Path("slurm/100_1.out")) << "slurmstepd: error: *** JOB 102 ON vm CANCELLED AT 2026-11-27T12:00:00 ***\n";
+  std::ofstream(folder.Path("slurm/100_1.out"))
+      << "slurmstepd: error: *** JOB 102 ON vm CANCELLED AT 2026-11-27T12:00:00 ***\n";
   slurm_.queue = "100_2|PENDING\n100_3|RUNNING\n";
 
   const SweepStatusReport status = Workflow().Status(out().string());
@@ -247,7 +256,8 @@ TEST_F(SweepWorkflowTest, ABadRunConfigNamesItsRunAndTheBaseFilesLine) {
 // whole config gives.
 TEST_F(SweepWorkflowTest, EveryRunsConfigIsTheWholeConfigsText) {
   settings_.seeds = "1-3";
-  settings_.sets = {"controller.max_speed_mps=0.1,0.2", "controller.goals=[[0.3, 0.3], [-0.3, -0.3]],[[0.1, 0.1], [0, 0]]"};
+  settings_.sets = {"controller.max_speed_mps=0.1,0.2",
+                    "controller.goals=[[0.3, 0.3], [-0.3, -0.3]],[[0.1, 0.1], [0, 0]]"};
   Workflow().Start(settings_, Base());
   const SweepPlan plan = SweepFolder(out().string()).ReadPlan();
   ASSERT_EQ(plan.runs().size(), 12u);
@@ -257,7 +267,8 @@ TEST_F(SweepWorkflowTest, EveryRunsConfigIsTheWholeConfigsText) {
     const std::string header_end = "--overwrite\n";
     const size_t body = written.find(header_end);
     ASSERT_NE(body, std::string::npos) << written;
-    const std::string whole = config_overrides::ConfigText(SweepPlan::MakeRunConfig(base_text, settings_.config_path, run), "");
+    const std::string whole =
+        config_overrides::ConfigText(SweepPlan::MakeRunConfig(base_text, settings_.config_path, run), "");
     EXPECT_EQ(written.substr(body + header_end.size()), whole) << run.name;
     EXPECT_NE(written.find("seed: " + std::to_string(run.seed) + "\n"), std::string::npos) << written;
   }

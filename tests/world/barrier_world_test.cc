@@ -35,8 +35,8 @@ TEST(BarrierWorldTest, HeadOnRobotsCollideWithoutAndStopShortWith) {
   EXPECT_GT(guarded.steps_changed(), 0);
   EXPECT_EQ(guarded.failed_steps(), 0);
   // They stop short of each other, beyond the certificate's distance between their projected points.
-  const double gap = std::hypot(guarded.poses()[1].x_m - guarded.poses()[0].x_m,
-                                guarded.poses()[1].y_m - guarded.poses()[0].y_m);
+  const double gap =
+      std::hypot(guarded.poses()[1].x_m - guarded.poses()[0].x_m, guarded.poses()[1].y_m - guarded.poses()[0].y_m);
   EXPECT_GT(gap, 0.12);
   EXPECT_LT(gap, 0.4);
 }

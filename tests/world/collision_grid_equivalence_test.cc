@@ -41,8 +41,7 @@ void ExpectGridMatchesBruteForce(const std::vector<Pose2>& poses, const WorldPar
   world.Step();
   EXPECT_EQ(world.violations().collision_errors, static_cast<int64_t>(expected.size()));
   EXPECT_TRUE(world.last_step_events().colliding_pairs == expected)
-      << "grid found " << world.last_step_events().colliding_pairs.size() << " pairs, brute force "
-      << expected.size();
+      << "grid found " << world.last_step_events().colliding_pairs.size() << " pairs, brute force " << expected.size();
 }
 
 std::vector<Pose2> RandomPoses(std::mt19937_64& rng, int count, double half_width_m, double half_height_m) {

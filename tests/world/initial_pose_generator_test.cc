@@ -161,14 +161,12 @@ TEST(InitialPoseGeneratorTest, ObstacleOutOfTheWayChangesNothing) {
 TEST(InitialPoseGeneratorTest, ArenaFilledByObstaclesFailsSayingWhatToChange) {
   // Covers the whole sampling area: every candidate is refused, the attempt
   // budget ends the search and the message says why.
-  const std::string covered =
-      GenerateError(WorldParams{}, InitialPoseParams{}, 30, {Block(0, 0.0, 0.0, 3.2, 2.0)});
+  const std::string covered = GenerateError(WorldParams{}, InitialPoseParams{}, 30, {Block(0, 0.0, 0.0, 3.2, 2.0)});
   EXPECT_THAT(covered, HasSubstr("placed only 0 of 30 robots"));
   EXPECT_THAT(covered, HasSubstr("after 30000 random attempts (30000 touched an obstacle, 0 were closer"));
   EXPECT_THAT(covered, HasSubstr("smaller or fewer obstacles"));
   // Room for a few robots, not for fifty: a strip 0.35 m tall at the bottom.
-  const std::string crowded =
-      GenerateError(WorldParams{}, InitialPoseParams{}, 50, {Block(0, 0.0, 0.2, 3.2, 1.6)});
+  const std::string crowded = GenerateError(WorldParams{}, InitialPoseParams{}, 50, {Block(0, 0.0, 0.2, 3.2, 1.6)});
   EXPECT_THAT(crowded, HasSubstr("placed only"));
   EXPECT_THAT(crowded, HasSubstr("of 50 robots"));
   EXPECT_THAT(crowded, HasSubstr("smaller or fewer obstacles, a smaller min_spacing_m or wall_margin_m"));

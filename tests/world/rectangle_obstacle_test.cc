@@ -39,8 +39,7 @@ TEST(RectangleObstacleTest, StaticObstacleNeverMoves) {
 
 TEST(RectangleObstacleTest, LoopGoesRoundTheClosedPolygon) {
   // centre (0,0) -> (1,0) -> (1,1) -> back to (0,0); 0.25 m per Advance.
-  RectangleObstacle obstacle(
-      MovingSpec({Eigen::Vector2d(1, 0), Eigen::Vector2d(1, 1)}, 0.5, ObstaclePathMode::kLoop));
+  RectangleObstacle obstacle(MovingSpec({Eigen::Vector2d(1, 0), Eigen::Vector2d(1, 1)}, 0.5, ObstaclePathMode::kLoop));
   EXPECT_FALSE(obstacle.is_static());
   EXPECT_TRUE(obstacle.velocity_mps().isApprox(Eigen::Vector2d(0.5, 0.0)));
   obstacle.Advance(0.5);
@@ -92,8 +91,7 @@ TEST(RectangleObstacleTest, StepsLongerThanTheWholePathWrap) {
 
 TEST(RectangleObstacleTest, RepeatedLastWaypointIsSkipped) {
   // Loop whose last waypoint repeats the centre: the zero-length leg is skipped.
-  RectangleObstacle obstacle(MovingSpec({Eigen::Vector2d(0, 1), Eigen::Vector2d(0, 0)}, 1.0,
-                                        ObstaclePathMode::kLoop));
+  RectangleObstacle obstacle(MovingSpec({Eigen::Vector2d(0, 1), Eigen::Vector2d(0, 0)}, 1.0, ObstaclePathMode::kLoop));
   obstacle.Advance(1.5);
   ExpectAt(obstacle, 0.0, 0.5);
   obstacle.Advance(0.75);

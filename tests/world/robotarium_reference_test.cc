@@ -95,7 +95,8 @@ std::vector<Scenario> LoadFixture(const std::string& path, std::string* commit) 
       const auto robot = static_cast<std::size_t>(std::stoi(f.at(2)));
       scenarios.back().poses.at(step).at(robot) = {ParseDouble(f.at(3)), ParseDouble(f.at(4)), ParseDouble(f.at(5))};
     } else if (kind == "cmd") {
-      scenarios.back().commands.at(static_cast<std::size_t>(std::stoi(f.at(1))))
+      scenarios.back()
+          .commands.at(static_cast<std::size_t>(std::stoi(f.at(1))))
           .push_back({std::stoi(f.at(2)), {ParseDouble(f.at(3)), ParseDouble(f.at(4))}});
     } else if (kind == "errors") {
       ViolationCounts& counts = scenarios.back().errors.at(static_cast<std::size_t>(std::stoi(f.at(1))));
@@ -158,8 +159,8 @@ TEST_F(RobotariumReferenceTest, ReplayMatchesTheOfficialSimulator) {
     }
     EXPECT_EQ(RunReport::FromViolations(world.step(), world.violations()).Text(), scenario.debug_text);
     RecordProperty(scenario.name + "_max_pose_error", std::to_string(max_error));
-    std::cout << "[ reference ] " << scenario.name << ": " << scenario.num_robots << " robots, "
-              << scenario.num_steps << " steps, max |pose difference| = " << max_error << "\n";
+    std::cout << "[ reference ] " << scenario.name << ": " << scenario.num_robots << " robots, " << scenario.num_steps
+              << " steps, max |pose difference| = " << max_error << "\n";
   }
 }
 

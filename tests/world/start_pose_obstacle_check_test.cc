@@ -30,8 +30,8 @@ TEST(StartPoseObstacleCheckTest, TheCollisionDiscIsOffsetAlongTheHeading) {
 }
 
 TEST(StartPoseObstacleCheckTest, ReportsTheFirstObstacleTouchedAndNoneWithoutObstacles) {
-  const StartPoseObstacleCheck check(WorldParams{}, {Block(7, 1.0, 0.0, 0.2, 0.2), Block(3, 0.0, 0.0, 0.4, 0.4),
-                                                     Block(5, 0.1, 0.0, 0.4, 0.4)});
+  const StartPoseObstacleCheck check(
+      WorldParams{}, {Block(7, 1.0, 0.0, 0.2, 0.2), Block(3, 0.0, 0.0, 0.4, 0.4), Block(5, 0.1, 0.0, 0.4, 0.4)});
   EXPECT_EQ(check.FirstTouchedObstacle(Pose2{0.05, 0.0, 0.0}), 1);  // an index, not the id
   EXPECT_EQ(check.FirstTouchedObstacle(Pose2{-1.0, 0.0, 0.0}), -1);
   EXPECT_FALSE(StartPoseObstacleCheck(WorldParams{}, {}).has_obstacles());

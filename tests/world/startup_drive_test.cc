@@ -122,7 +122,8 @@ TEST(StartupDriveTest, SpreadStartPosesSettleWithinTheLimit) {
   // one step later).
   for (std::size_t i = 0; i < 5; ++i) {
     EXPECT_LT(std::hypot(result.final_poses[i].x_m - Spread()[i].x_m, result.final_poses[i].y_m - Spread()[i].y_m),
-              0.06) << i;
+              0.06)
+        << i;
   }
   // The same seed, the same drive.
   const StartupDriveResult again = drive.Run(3);
@@ -137,7 +138,8 @@ TEST(StartupDriveTest, CrowdedStartPosesDeadlockAndNameTheRobots) {
   EXPECT_EQ(result.steps, StartupDrive::MaxSteps());
   ASSERT_FALSE(result.misses.empty());
   for (const StartupDriveResult::Miss& miss : result.misses) {
-    EXPECT_TRUE(miss.distance_m > StartupDrive::kAtPositionM || std::abs(miss.heading_error_rad) > StartupDrive::kAtHeadingRad);
+    EXPECT_TRUE(miss.distance_m > StartupDrive::kAtPositionM ||
+                std::abs(miss.heading_error_rad) > StartupDrive::kAtHeadingRad);
   }
   EXPECT_THAT(result.DescribeMisses(), HasSubstr("robot " + std::to_string(result.misses[0].robot_id) + " "));
 }

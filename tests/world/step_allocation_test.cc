@@ -32,7 +32,7 @@ TEST(StepAllocationTest, SteadyStateStepDoesNotAllocate) {
   params.arena = Arena{-5.0, 5.0, -5.0, 5.0};
   std::vector<Pose2> poses = InitialPoseGenerator(params, InitialPoseParams{}).Generate(500, 3);
   for (int i = 0; i < 100; ++i) poses.push_back({poses[i].x_m + 0.05, poses[i].y_m, 0.0});  // contacts
-  poses.push_back({20.0, 0.0, 0.0});  // out of bounds
+  poses.push_back({20.0, 0.0, 0.0});                                                        // out of bounds
   RectangleObstacleSpec box;
   box.width_m = 1.0;
   box.height_m = 1.0;

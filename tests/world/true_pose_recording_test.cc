@@ -95,7 +95,7 @@ TEST(TruePoseRecordingTest, LogKeepsTheTruthOnPosesAndTheMeasurementBesideIt) {
   }
   EXPECT_EQ(truth0.x[1], 0.5);
   EXPECT_NE(Decoded(records[0]).x[1], 0.5);  // measured with noise
-  EXPECT_GT(truth1.x[0], 0.0);  // the truth moved
+  EXPECT_GT(truth1.x[0], 0.0);               // the truth moved
 }
 
 }  // namespace

@@ -109,8 +109,7 @@ TEST(UnicycleWorldTest, OnTheBoundaryIsInsideStrictlyOutsideIsAnError) {
   on_edge.Step();
   EXPECT_EQ(on_edge.violations().boundary_errors, 0);
 
-  UnicycleWorld outside = MakeWorld({{std::nextafter(1.6, 2.0), 0.0, 0.0}, {0.0, -1.0000001, 0.0},
-                                     {0.0, 0.0, 0.0}});
+  UnicycleWorld outside = MakeWorld({{std::nextafter(1.6, 2.0), 0.0, 0.0}, {0.0, -1.0000001, 0.0}, {0.0, 0.0, 0.0}});
   outside.Step();
   EXPECT_EQ(outside.violations().boundary_errors, 1);  // one per step, not per robot
   EXPECT_THAT(outside.last_step_events().out_of_bounds_robot_ids, ElementsAre(0, 1));
@@ -160,8 +159,7 @@ TEST(UnicycleWorldTest, EveryCollidingPairCountsEveryStep) {
   world.Step();
   EXPECT_EQ(world.violations().collision_errors, 3);
   EXPECT_THAT(world.last_step_events().colliding_pairs,
-              ElementsAre(StepEvents::RobotPair{0, 1}, StepEvents::RobotPair{0, 2},
-                          StepEvents::RobotPair{1, 2}));
+              ElementsAre(StepEvents::RobotPair{0, 1}, StepEvents::RobotPair{0, 2}, StepEvents::RobotPair{1, 2}));
   world.Step();
   EXPECT_EQ(world.violations().collision_errors, 6);
 }
@@ -236,7 +234,7 @@ TEST(UnicycleWorldTest, CommandIsHeldForFifteenStepsAndZeroedAtTheSixteenth) {
   EXPECT_EQ(world.command_hold_steps(), 15);
   for (int k = 0; k < 5; ++k) world.Step();
   world.SetCommand(0, {0.1, 0.0});  // set at step k = 5
-  for (int k = 5; k <= 20; ++k) {    // steps 5 .. 20 still apply it
+  for (int k = 5; k <= 20; ++k) {   // steps 5 .. 20 still apply it
     world.Step();
     EXPECT_TRUE(world.last_step_events().timed_out_robot_ids.empty()) << "step " << k;
   }
@@ -305,8 +303,7 @@ std::string ConstructionError(const WorldParams& params, std::vector<Pose2> pose
 }
 
 TEST(UnicycleWorldTest, ConstructionRejectsBadInputWithClearMessages) {
-  EXPECT_THAT(ConstructionError(WorldParams{}, {{0, 0, 0}, {std::nan(""), 0, 0}}),
-              HasSubstr("initial_poses[1]"));
+  EXPECT_THAT(ConstructionError(WorldParams{}, {{0, 0, 0}, {std::nan(""), 0, 0}}), HasSubstr("initial_poses[1]"));
   WorldParams bad_dt;
   bad_dt.time_step_s = -0.033;
   EXPECT_THAT(ConstructionError(bad_dt, {}), HasSubstr("time_step_s = -0.033"));

@@ -122,7 +122,8 @@ void AgentHost::ReportBadRadioPayloads(RobotSlot& robot) {
   if (control.bad_radio_messages() == robot.bad_radio_payloads.total()) return;
   const std::string reason = "robot " + std::to_string(control.id()) + ": payload did not decode";
   for (const auto& [sender, count] : control.bad_radio_messages_by_sender()) {
-    const std::string channel = sender == agents::Robot::kUnknownSender ? kUnknownSenderChannel : lcm::RadioChannel(sender);
+    const std::string channel =
+        sender == agents::Robot::kUnknownSender ? kUnknownSenderChannel : lcm::RadioChannel(sender);
     for (long seen = robot.bad_radio_payloads.count(channel); seen < count; ++seen) {
       robot.bad_radio_payloads.Report(channel, reason);
     }
@@ -156,7 +157,8 @@ bool AgentHost::Answer(RobotSlot& robot, const robot_poses_t& poses) {
   command.w = output.command.w_radps;
   command.done = output.done;
   robot.last_radio.reset();
-  if (output.broadcast && output.broadcast->payload.size() > static_cast<size_t>(lcm::MessageLimits::kRadioPayloadBytes)) {
+  if (output.broadcast &&
+      output.broadcast->payload.size() > static_cast<size_t>(lcm::MessageLimits::kRadioPayloadBytes)) {
     // Every receiver, and the world, would drop it: the robot would talk to no one, unseen.
     Fail(robot, poses,
          "robot " + std::to_string(robot.agent->id()) + ": OnRadio returned a payload of " +
@@ -219,8 +221,8 @@ void AgentHost::OnPoses(const std::string& channel, const robot_poses_t& poses) 
   for (RobotSlot& robot : robots_) {
     if (robot.agent->id() >= poses.num_robots) {
       bad_messages_.Report(channel, "robot " + std::to_string(robot.agent->id()) +
-                                        " is not in this run: DREAM_POSES carries " +
-                                        std::to_string(poses.num_robots) + " robots");
+                                        " is not in this run: DREAM_POSES carries " + std::to_string(poses.num_robots) +
+                                        " robots");
       continue;
     }
     if (!robot.fault.empty()) continue;  // given up: the world was told, and stops the robot
@@ -255,9 +257,8 @@ bool AgentHost::Run(const std::atomic<bool>& stop, double idle_timeout_s) {
             lcm_.url(), last_other_world_robots_, expected_robots_);
         return false;
       }
-      spdlog::error(
-          "no DREAM_POSES for {:g} s on {}: is the simulator (dream sim) running on the same LCM URL?",
-          idle_timeout_s, lcm_.url());
+      spdlog::error("no DREAM_POSES for {:g} s on {}: is the simulator (dream sim) running on the same LCM URL?",
+                    idle_timeout_s, lcm_.url());
       return false;
     }
   }

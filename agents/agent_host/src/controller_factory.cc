@@ -51,7 +51,8 @@ ControllerFactory::ControllerFactory(const config::ConfigNode& section, int num_
     section.Optional(key).Fail("unknown key for kind " + kind_ + config::DidYouMean(key, keys) +
                                "; allowed keys here: " + allowed);
   }
-  parts_ = kind_api::AgentPartsConfig::Read(section, num_robots, entry->default_parts(num_robots), entry->graph_must_connect);
+  parts_ = kind_api::AgentPartsConfig::Read(section, num_robots, entry->default_parts(num_robots),
+                                            entry->graph_must_connect);
   builder_ = entry->make_builder(section, num_robots);
   entry_ = entry;
 }
@@ -64,8 +65,8 @@ std::unique_ptr<agents::RobotAgent> ControllerFactory::Make(int robot_id) const 
                             std::to_string(num_robots_ - 1) + ")");
   }
   agents::RobotAgentSpec spec = parts_.MakeSpec(builder_->MakeRobot(robot_id, parts_.robot), run_seed_);
-  return std::make_unique<agents::RobotAgent>(std::move(spec),
-                                      agents::NoiseSource::MixSeed(run_seed_, static_cast<uint64_t>(robot_id), 0));
+  return std::make_unique<agents::RobotAgent>(
+      std::move(spec), agents::NoiseSource::MixSeed(run_seed_, static_cast<uint64_t>(robot_id), 0));
 }
 
 std::vector<std::unique_ptr<agents::ExperimentMetrics>> ControllerFactory::MakeMetrics() const {

@@ -60,8 +60,9 @@ ControllerPluginLoader::Registration ControllerPluginLoader::Load(const std::str
   auto fail = [&](const std::string& reason) { entry.Fail(path + ": " + reason); };
   std::error_code error;
   if (!fs::exists(path, error)) {
-    fail("no such file (relative plugin paths start at the config file's folder, or plugin_dir; build the plugin "
-         "first)");
+    fail(
+        "no such file (relative plugin paths start at the config file's folder, or plugin_dir; build the plugin "
+        "first)");
   }
   if (!fs::is_regular_file(path, error)) fail("not a file");
   // RTLD_NOW: a symbol the plugin needs but this dream lacks is reported
@@ -72,8 +73,7 @@ ControllerPluginLoader::Registration ControllerPluginLoader::Load(const std::str
 
   dlerror();
   auto api_version = reinterpret_cast<PluginApiVersionFunction>(dlsym(handle, kPluginApiVersionSymbol));
-  auto register_controllers =
-      reinterpret_cast<RegisterControllersFunction>(dlsym(handle, kRegisterControllersSymbol));
+  auto register_controllers = reinterpret_cast<RegisterControllersFunction>(dlsym(handle, kRegisterControllersSymbol));
   if (api_version == nullptr || register_controllers == nullptr) {
     fail(std::string("not a dream controller plugin: it has no ") +
          (api_version == nullptr ? kPluginApiVersionSymbol : kRegisterControllersSymbol) +

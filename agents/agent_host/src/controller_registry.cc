@@ -12,9 +12,7 @@ constexpr const char* kBuiltIn = "built in";
 
 std::string Described(const std::string& origin) { return origin.empty() ? std::string("unnamed") : origin; }
 
-void AddBuiltIns(ControllerRegistry& registry) {
-  AddBuiltInKinds(registry, kBuiltIn);
-}
+void AddBuiltIns(ControllerRegistry& registry) { AddBuiltInKinds(registry, kBuiltIn); }
 
 }  // namespace
 
@@ -49,8 +47,8 @@ void ControllerRegistry::Add(kind_api::ControllerKind kind, const std::string& o
   if (!kind.default_parts) throw std::invalid_argument("controller kind '" + kind.name + "' has no default_parts");
   const std::lock_guard<std::mutex> lock(mutex_);
   if (const Entry* taken = FindLocked(kind.name)) {
-    throw std::invalid_argument("controller kind '" + kind.name + "' is registered twice (" +
-                                Described(taken->origin) + " and " + Described(origin) + ")");
+    throw std::invalid_argument("controller kind '" + kind.name + "' is registered twice (" + Described(taken->origin) +
+                                " and " + Described(origin) + ")");
   }
   entries_.push_back({std::move(kind), origin});
 }

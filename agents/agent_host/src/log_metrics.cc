@@ -5,7 +5,7 @@
 namespace dream::agent_host {
 
 agents::MetricsReport MetricsFromLog(const ControllerFactory& factory, const run_log::RunLog& log,
-                             std::optional<agents::GoalJudgement>* goal) {
+                                     std::optional<agents::GoalJudgement>* goal) {
   std::vector<std::unique_ptr<agents::ExperimentMetrics>> metrics = factory.MakeMetrics();
   agents::WorldSnapshot world;
   const obstacles_t* obstacles = nullptr;  // those in `world`

@@ -21,8 +21,8 @@ bool CheckPositive(const char* name, double value, std::string* error) {
 bool CheckBoundary(const std::optional<BoundaryBox>& boundary, std::string* error) {
   if (!boundary) return true;
   const BoundaryBox& b = *boundary;
-  const bool finite = std::isfinite(b.x_min_m) && std::isfinite(b.x_max_m) && std::isfinite(b.y_min_m) &&
-                      std::isfinite(b.y_max_m);
+  const bool finite =
+      std::isfinite(b.x_min_m) && std::isfinite(b.x_max_m) && std::isfinite(b.y_min_m) && std::isfinite(b.y_max_m);
   if (finite && b.x_min_m < b.x_max_m && b.y_min_m < b.y_max_m) return true;
   std::ostringstream text;
   text << "boundary = [" << b.x_min_m << ", " << b.x_max_m << ", " << b.y_min_m << ", " << b.y_max_m

@@ -189,8 +189,7 @@ QpSolution InteriorPointQp::Solve(const Eigen::VectorXd& p, const Eigen::VectorX
   for (int iteration = 0; iteration <= settings_.max_iterations; ++iteration) {
     solution.iterations = iteration;
     const Residuals residuals = ComputeResiduals(p, q, g);
-    if (!std::isfinite(residuals.primal) || !std::isfinite(residuals.dual) || !std::isfinite(gap_) ||
-        !AllFinite(x_)) {
+    if (!std::isfinite(residuals.primal) || !std::isfinite(residuals.dual) || !std::isfinite(gap_) || !AllFinite(x_)) {
       solution.status = QpStatus::kNotFinite;
       return solution;
     }

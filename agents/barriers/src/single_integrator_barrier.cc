@@ -9,8 +9,8 @@ namespace {
 
 /// The eight sides of the speed octagon, in rps's order.
 constexpr double kDiagonal = 0.70710678118654752440;  // 1/sqrt(2)
-constexpr double kOctagonSides[8][2] = {{1, 0},   {kDiagonal, kDiagonal},   {0, 1},  {-kDiagonal, kDiagonal},
-                                        {-1, 0},  {-kDiagonal, -kDiagonal}, {0, -1}, {kDiagonal, -kDiagonal}};
+constexpr double kOctagonSides[8][2] = {{1, 0},  {kDiagonal, kDiagonal},   {0, 1},  {-kDiagonal, kDiagonal},
+                                        {-1, 0}, {-kDiagonal, -kDiagonal}, {0, -1}, {kDiagonal, -kDiagonal}};
 /// The walls' rate is this fraction of the pairs' gain in rps.
 constexpr double kWallGainFraction = 0.4;
 

@@ -39,9 +39,9 @@ BarrierResult UnicycleBarrier::Apply(const Eigen::Matrix2Xd& commands, const Eig
   result.commands = commands;
   if (n < 2) return result;
   if (n + obstacles > SingleIntegratorBarrier::kMaxPoints) {
-    throw std::invalid_argument("unicycle barrier: " + std::to_string(n) + " robots and " +
-                                std::to_string(obstacles) + " obstacle points, at most " +
-                                std::to_string(SingleIntegratorBarrier::kMaxPoints) + " in all");
+    throw std::invalid_argument("unicycle barrier: " + std::to_string(n) + " robots and " + std::to_string(obstacles) +
+                                " obstacle points, at most " + std::to_string(SingleIntegratorBarrier::kMaxPoints) +
+                                " in all");
   }
   const double d = params_.projection_distance_m;
   Eigen::Matrix2Xd points(2, n + obstacles);

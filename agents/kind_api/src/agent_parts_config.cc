@@ -127,8 +127,7 @@ void RejectKeysOfOtherKinds(const ConfigNode& node, const std::string& kind) {
 }
 
 void ReadRadio(const ConfigNode& node, int num_robots, bool graph_must_connect, RadioConfig* radio) {
-  node.RejectUnknownKeys(
-      {"kind", "period_steps", "range_m", "graph", "leaders", "loss_probability", "delay_steps"});
+  node.RejectUnknownKeys({"kind", "period_steps", "range_m", "graph", "leaders", "loss_probability", "delay_steps"});
   const std::string kind = node.Required("kind").AsString();
   RejectKeysOfOtherKinds(node, kind);
   if (node.Has("period_steps")) radio->period_steps = ReadPerRobot(node.Required("period_steps"), num_robots, 1);
@@ -140,7 +139,8 @@ void ReadRadio(const ConfigNode& node, int num_robots, bool graph_must_connect, 
   } else if (kind == "range") {
     radio->kind = RadioConfig::Kind::kRange;
     radio->range_m = node.GetDouble("range_m", radio->range_m);
-    if (!(radio->range_m > 0.0)) node.Required("range_m").Fail("must be > 0, got " + agents::NumberText(radio->range_m));
+    if (!(radio->range_m > 0.0))
+      node.Required("range_m").Fail("must be > 0, got " + agents::NumberText(radio->range_m));
   } else if (kind == "graph" || kind == "role") {
     radio->kind = kind == "graph" ? RadioConfig::Kind::kGraph : RadioConfig::Kind::kRole;
     if (node.Has("graph")) radio->graph = ReadMatrix(node.Required("graph"));
@@ -221,7 +221,8 @@ AgentPartsConfig AgentPartsConfig::Read(const ConfigNode& section, int num_robot
   const ConfigNode robot_node = section.Optional("robot");
   if (robot_node.IsDefined()) {
     robot_node.RejectUnknownKeys({"period_steps", "start_delay_steps", "vel_gain", "ang_gain"});
-    if (robot_node.Has("period_steps")) parts.robot_period_steps = ReadPerRobot(robot_node.Required("period_steps"), num_robots, 1);
+    if (robot_node.Has("period_steps"))
+      parts.robot_period_steps = ReadPerRobot(robot_node.Required("period_steps"), num_robots, 1);
     if (robot_node.Has("start_delay_steps")) {
       parts.start_delay_steps = ReadPerRobot(robot_node.Required("start_delay_steps"), num_robots, 0);
     }
@@ -251,23 +252,33 @@ agents::RobotAgentSpec AgentPartsConfig::MakeSpec(std::unique_ptr<agents::Robot>
     agents::SensorSlot slot;
     slot.period_steps = sensors[s].period_steps.at(i);
     switch (sensors[s].kind) {
-      case SensorConfig::Kind::kOdometry: slot.sensor = std::make_unique<agents::OdometrySensor>(sensors[s].odometry, seed); break;
-      case SensorConfig::Kind::kMovement: slot.sensor = std::make_unique<agents::MovementSensor>(sensors[s].movement, seed); break;
-      case SensorConfig::Kind::kObstacle: slot.sensor = std::make_unique<agents::ObstacleSensor>(sensors[s].obstacle, seed); break;
+      case SensorConfig::Kind::kOdometry:
+        slot.sensor = std::make_unique<agents::OdometrySensor>(sensors[s].odometry, seed);
+        break;
+      case SensorConfig::Kind::kMovement:
+        slot.sensor = std::make_unique<agents::MovementSensor>(sensors[s].movement, seed);
+        break;
+      case SensorConfig::Kind::kObstacle:
+        slot.sensor = std::make_unique<agents::ObstacleSensor>(sensors[s].obstacle, seed);
+        break;
     }
     spec.sensors.push_back(std::move(slot));
   }
   const int n = static_cast<int>(robot_period_steps.size());
   switch (radio.kind) {
-    case RadioConfig::Kind::kNone: break;
-    case RadioConfig::Kind::kRange: spec.radio = std::make_unique<agents::RangeRadio>(radio.range_m); break;
+    case RadioConfig::Kind::kNone:
+      break;
+    case RadioConfig::Kind::kRange:
+      spec.radio = std::make_unique<agents::RangeRadio>(radio.range_m);
+      break;
     case RadioConfig::Kind::kGraph:
       spec.radio = std::make_unique<agents::GraphRadio>(agents::CommunicationGraph(radio.graph, n, false, false));
       break;
     case RadioConfig::Kind::kRole: {
       const bool leader = std::find(radio.leaders.begin(), radio.leaders.end(), id) != radio.leaders.end();
-      spec.radio = std::make_unique<agents::RoleRadio>(leader ? agents::RoleRadio::Role::kLeader : agents::RoleRadio::Role::kFollower,
-                                               agents::CommunicationGraph(radio.graph, n, false, false));
+      spec.radio = std::make_unique<agents::RoleRadio>(
+          leader ? agents::RoleRadio::Role::kLeader : agents::RoleRadio::Role::kFollower,
+          agents::CommunicationGraph(radio.graph, n, false, false));
       break;
     }
   }

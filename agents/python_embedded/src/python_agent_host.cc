@@ -276,11 +276,11 @@ PyObject* EmbeddedModule(const PythonAgentHost::Paths& paths) {
     ThrowPythonError("cannot load the Python runtime from " + paths.runtime_dir);
   }
   Watchdog& watchdog = Watchdog::Get();
-  PyRef cell(PyMemoryView_FromMemory(reinterpret_cast<char*>(watchdog.cell()), kCallCellWords * sizeof(int64_t),
-                                     PyBUF_WRITE));
+  PyRef cell(
+      PyMemoryView_FromMemory(reinterpret_cast<char*>(watchdog.cell()), kCallCellWords * sizeof(int64_t), PyBUF_WRITE));
   if (cell.get() == nullptr) ThrowPythonError("cannot set up the Python runtime's watchdog");
-  PyRef done(PyObject_CallMethod(imported.get(), "setup", "siO", paths.lcmtypes_dir.c_str(), PythonLogLevel(),
-                                 cell.get()));
+  PyRef done(
+      PyObject_CallMethod(imported.get(), "setup", "siO", paths.lcmtypes_dir.c_str(), PythonLogLevel(), cell.get()));
   if (done.get() == nullptr) ThrowPythonError("cannot load lcm-gen's Python types from " + paths.lcmtypes_dir);
   PyObject* timeout_type = PyObject_GetAttrString(imported.get(), "ControllerTimeout");
   PyObject* interrupt_type = PyObject_GetAttrString(imported.get(), "RunInterrupted");

@@ -62,14 +62,14 @@ void PythonHostChild::Run(std::atomic<bool>& stop, const ExitCodes& codes) {
     const int64_t agent_id = json.at("agent_id").get<int64_t>();
     lcm::LcmBus bus("memq://");
     // The robots' messages go to the parent; radio from elsewhere came from it.
-    const lcm::Subscription to_parent = bus.Subscribe(lcm::kAgentOutboxRegex, [&](const std::string& channel,
-                                                                                            const void* data, int size) {
-      if (channel.rfind(lcm::kRadioChannelPrefix, 0) == 0 &&
-          lcm::MessageHeader::AgentIdOf(data, static_cast<size_t>(size)).value_or(0) != agent_id) {
-        return;
-      }
-      if (!link.Send('M', channel, data, static_cast<size_t>(size))) stop.store(true);
-    });
+    const lcm::Subscription to_parent =
+        bus.Subscribe(lcm::kAgentOutboxRegex, [&](const std::string& channel, const void* data, int size) {
+          if (channel.rfind(lcm::kRadioChannelPrefix, 0) == 0 &&
+              lcm::MessageHeader::AgentIdOf(data, static_cast<size_t>(size)).value_or(0) != agent_id) {
+            return;
+          }
+          if (!link.Send('M', channel, data, static_cast<size_t>(size))) stop.store(true);
+        });
     const std::unique_ptr<python_embedded::PythonAgentHost> host =
         library.Create(bus, spec, json.at("robots").get<std::vector<int>>(), agent_id, paths);
     link.Send('R');

@@ -148,9 +148,12 @@ void PythonHostProcess::Check(const std::string& spec_json, double start_timeout
   }
 }
 
-PythonHostProcess::PythonHostProcess(lcm::LcmBus& bus, const std::string& spec_json,
-                                     const std::vector<int>& robot_ids, int64_t agent_id, const Limits& limits)
-    : bus_(bus), robot_ids_(robot_ids), agent_id_(agent_id), limits_(WithDefaults(limits)),
+PythonHostProcess::PythonHostProcess(lcm::LcmBus& bus, const std::string& spec_json, const std::vector<int>& robot_ids,
+                                     int64_t agent_id, const Limits& limits)
+    : bus_(bus),
+      robot_ids_(robot_ids),
+      agent_id_(agent_id),
+      limits_(WithDefaults(limits)),
       module_path_(ModulePathOf(spec_json)) {
   started_ = Clock::now();
   const SpawnedPythonHost spawned = SpawnedPythonHost::Start();
@@ -163,10 +166,9 @@ PythonHostProcess::PythonHostProcess(lcm::LcmBus& bus, const std::string& spec_j
   const std::string start = StartFrame(spec_json, robot_ids, agent_id, limits_, false);
   RelayLink::Encode('S', "", start.data(), start.size(), &outbox_);
   // The bus may outlive this object: the subscription ends with it.
-  subscription_ = bus_.Subscribe(lcm::kAgentInboxRegex,
-                                 [this](const std::string& channel, const void* data, int size) {
-                                   OnBusMessage(channel, data, size);
-                                 });
+  subscription_ = bus_.Subscribe(lcm::kAgentInboxRegex, [this](const std::string& channel, const void* data, int size) {
+    OnBusMessage(channel, data, size);
+  });
   relay_ = std::thread(&PythonHostProcess::RelayLoop, this);
 }
 
@@ -268,8 +270,7 @@ void PythonHostProcess::RelayLoop() {
       const auto until = Clock::now() + std::chrono::milliseconds(200);
       while (!HasEnded(pid_) && Clock::now() < until) std::this_thread::sleep_for(std::chrono::milliseconds(5));
       if (!HasEnded(pid_)) {
-        EndProcess("its Python process closed its link to dream (a controller closing dream's descriptors?)", "",
-                   true);
+        EndProcess("its Python process closed its link to dream (a controller closing dream's descriptors?)", "", true);
         return;
       }
     }
@@ -352,8 +353,10 @@ std::string PythonHostProcess::StuckCall(Clock::time_point now) {
     // Between calls: the runtime itself must start within the start limit.
     if (!ready && Seconds(now - started_) > limits_.start_timeout_s) {
       char text[200];
-      std::snprintf(text, sizeof text, "the Python controllers' process did not start within the world's "
-                    "start_timeout_s of %g s: it was killed", limits_.start_timeout_s);
+      std::snprintf(text, sizeof text,
+                    "the Python controllers' process did not start within the world's "
+                    "start_timeout_s of %g s: it was killed",
+                    limits_.start_timeout_s);
       return text;
     }
     return "";
@@ -395,19 +398,19 @@ void PythonHostProcess::EndProcess(const std::string& why, const std::string& ex
   if (!why.empty()) {
     culprit_detail = where + why;
   } else if (!error_.empty()) {
-    culprit_detail = (ready_ ? "the Python controllers' process failed: " : "the Python controllers could not start: ") +
-                     error_;
+    culprit_detail =
+        (ready_ ? "the Python controllers' process failed: " : "the Python controllers could not start: ") + error_;
   } else if (token != 0) {
-    culprit_detail = where + CallTextOf(robot, step) + " ended its Python process: " + exit_text +
-                     " (os._exit, or a crash)";
+    culprit_detail =
+        where + CallTextOf(robot, step) + " ended its Python process: " + exit_text + " (os._exit, or a crash)";
   } else {
-    culprit_detail = "the Python process of robots " + JoinIds(robot_ids_) + " ended between calls: " +
-                     exit_text + " (os._exit, or a crash)";
+    culprit_detail = "the Python process of robots " + JoinIds(robot_ids_) + " ended between calls: " + exit_text +
+                     " (os._exit, or a crash)";
   }
   const bool named = token != 0 && robot >= 0;
-  others_detail = named ? "lost with its Python process, ended at robot " + std::to_string(robot) + "'s call: " +
-                              culprit_detail
-                        : culprit_detail;
+  others_detail =
+      named ? "lost with its Python process, ended at robot " + std::to_string(robot) + "'s call: " + culprit_detail
+            : culprit_detail;
   lock.unlock();  // the bus's handlers take it
   PublishFaults(culprit_detail, named ? robot : -1, others_detail);
 }

@@ -70,8 +70,7 @@ SpawnedPythonHost SpawnedPythonHost::Start() {
     const int cell_in = ::fcntl(cell_fd, F_DUPFD_CLOEXEC, 10);
     int error = 0;
     if (link < 0 || trace_out < 0 || cell_in < 0 || ::dup2(null_fd, STDIN_FILENO) < 0 ||
-        ::dup2(link, kChildLinkFd) < 0 ||
-        ::dup2(trace_out, kChildTraceFd) < 0 || ::dup2(cell_in, kChildCellFd) < 0) {
+        ::dup2(link, kChildLinkFd) < 0 || ::dup2(trace_out, kChildTraceFd) < 0 || ::dup2(cell_in, kChildCellFd) < 0) {
       error = errno;
     } else {
       ::execv(binary.c_str(), argv);

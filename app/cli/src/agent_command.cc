@@ -108,7 +108,8 @@ int RunAgents(const AgentArgs& args) {
   auto host = std::make_unique<hosting::HostedAgents>(
       bus, config, ids, nullptr,
       python_host::PythonHostProcess::Limits{WorldTimeout(overridden.Document(), "agent_timeout_s"),
-                                WorldTimeout(overridden.Document(), "start_timeout_s"), args.idle_timeout_s});
+                                             WorldTimeout(overridden.Document(), "start_timeout_s"),
+                                             args.idle_timeout_s});
   spdlog::info("agent for robot(s) {} of {} on {}", args.robots, config.name, bus.url());
   const bool ended_by_world = host->Run(StopFlag(), args.idle_timeout_s);
   const std::string report = host->ReportJson();
@@ -121,10 +122,13 @@ int RunAgents(const AgentArgs& args) {
   // the reaped Python process (RUSAGE_CHILDREN), ru_maxrss is its own.
   const double here_mb = PeakResidentMegabytes();
   rusage children{};
-  const double python_mb = ::getrusage(RUSAGE_CHILDREN, &children) == 0 ? static_cast<double>(children.ru_maxrss) / 1024.0 : 0.0;
+  const double python_mb =
+      ::getrusage(RUSAGE_CHILDREN, &children) == 0 ? static_cast<double>(children.ru_maxrss) / 1024.0 : 0.0;
   if (python_mb > 0.0) {
-    spdlog::info("agent for robot(s) {}: peak resident memory {:.1f} MB ({:.1f} MB here, {:.1f} MB in its Python "
-                 "process)", args.robots, here_mb + python_mb, here_mb, python_mb);
+    spdlog::info(
+        "agent for robot(s) {}: peak resident memory {:.1f} MB ({:.1f} MB here, {:.1f} MB in its Python "
+        "process)",
+        args.robots, here_mb + python_mb, here_mb, python_mb);
   } else {
     spdlog::info("agent for robot(s) {}: peak resident memory {:.1f} MB", args.robots, here_mb);
   }
@@ -157,11 +161,11 @@ void DeclareAgentCommand(CommandLine& line) {
   // The options are parsed here too, so mistakes are reported before the
   // hand-over and `dream agent --help` works; dream-agent then parses the same
   // words, so the parsed AgentArgs go unused here.
-  const auto [command, args] = line.AddCommand<AgentArgs>(
-      "agent",
-      "Run the agents of some robots against whichever world is on the bus.\n"
-      "Example: dream agent config/go_to_goal.yaml --robots 0-2",
-      [&line](const AgentArgs&) { return ExecAgentBinary(line.argc(), line.argv()); });
+  const auto [command, args] =
+      line.AddCommand<AgentArgs>("agent",
+                                 "Run the agents of some robots against whichever world is on the bus.\n"
+                                 "Example: dream agent config/go_to_goal.yaml --robots 0-2",
+                                 [&line](const AgentArgs&) { return ExecAgentBinary(line.argc(), line.argv()); });
   AddAgentOptions(command, args);
 }
 

@@ -19,9 +19,10 @@ int main(int argc, char** argv) {
     InstallStopSignals();
     dream::python_host::PythonHostChild::Run(StopFlag(), {kExitOk, kExitUsage, kExitInputError, kExitRunFailed});
   }
-  CLI::App app{"Run the agents of some robots against whichever world is on the bus.\n"
-               "Example: dream agent config/go_to_goal.yaml --robots 0-2",
-               "dream agent"};
+  CLI::App app{
+      "Run the agents of some robots against whichever world is on the bus.\n"
+      "Example: dream agent config/go_to_goal.yaml --robots 0-2",
+      "dream agent"};
   AgentArgs args;
   bool quiet = false;
   bool verbose = false;

@@ -38,15 +38,18 @@ namespace fs = std::filesystem;
 /// refused, then the workflow (CalibrationExportWorkflow).
 int RunCalibrationExport(const ExportArgs& args, const bridge::ExportOptions& options) {
   if (!args.config_path.empty()) {
-    throw std::runtime_error("--config " + args.config_path + ": --calibration writes its own config; leave --config out");
+    throw std::runtime_error("--config " + args.config_path +
+                             ": --calibration writes its own config; leave --config out");
   }
   if (!args.strategy.empty() && args.strategy != bridge::StrategyName(bridge::Strategy::kReplay)) {
-    throw std::runtime_error("--strategy " + args.strategy + ": --calibration exports the program's commands open "
+    throw std::runtime_error("--strategy " + args.strategy +
+                             ": --calibration exports the program's commands open "
                              "loop (replay), which is what calibrate fits; leave --strategy out");
   }
   if (args.barriers) {
-    throw std::runtime_error("--barriers: would change the program's commands where robots come close; "
-                             "--calibration sends them unchanged (its robots never come close)");
+    throw std::runtime_error(
+        "--barriers: would change the program's commands where robots come close; "
+        "--calibration sends them unchanged (its robots never come close)");
   }
   workflows::CalibrationExportWorkflow::Options calibration;
   calibration.robots = args.robots;
@@ -88,9 +91,10 @@ int RunImport(const ImportArgs& args) {
   workflows::ImportWorkflow::Options options;
   options.result = args.result;
   options.export_dir = args.export_dir;
-  options.out_dir = files::RunFolderChoice(args.out_dir, "runs/" + exported.config.name + "_lab", args.overwrite,
-                                    files::RunFolderChoice::Create::kLater)  // a refused result must leave no folder
-                        .dir();
+  options.out_dir =
+      files::RunFolderChoice(args.out_dir, "runs/" + exported.config.name + "_lab", args.overwrite,
+                             files::RunFolderChoice::Create::kLater)  // a refused result must leave no folder
+          .dir();
   // What was declared on the lab's form: UPLOAD.txt's values unless told otherwise.
   options.declared = workflows::ImportWorkflow::Declared(exported, args.declared_robots, args.declared_duration_s);
   options.python_runtime_dir = process::DataFiles::PythonRuntimeDir();
@@ -106,9 +110,9 @@ int RunImport(const ImportArgs& args) {
 
 int RunCompare(const CompareArgs& args) {
   const std::string out_dir = args.out_dir.empty() ? args.second_dir : args.out_dir;
-  const bridge::RunComparison comparison = bridge::CompareRunsAndWrite(args.first_dir, args.second_dir, out_dir, process::DataFiles::PythonRuntimeDir());
-  std::cout << comparison.Text() << "\nwritten: " << out_dir << "/comparison.json, " << out_dir
-            << "/comparison.png\n";
+  const bridge::RunComparison comparison =
+      bridge::CompareRunsAndWrite(args.first_dir, args.second_dir, out_dir, process::DataFiles::PythonRuntimeDir());
+  std::cout << comparison.Text() << "\nwritten: " << out_dir << "/comparison.json, " << out_dir << "/comparison.png\n";
   return kExitOk;
 }
 
@@ -159,21 +163,26 @@ int RunCheckSubmission(const CheckSubmissionArgs& args) {
   options.skip_initialization = args.skip_initialization;
   options.python_runtime_dir = process::DataFiles::PythonRuntimeDir();
   options.stop = &StopFlag();
-  const workflows::CheckSubmission::Result result =
-      workflows::CheckSubmission(options, CheckSubmissionTools()).Run();
+  const workflows::CheckSubmission::Result result = workflows::CheckSubmission(options, CheckSubmissionTools()).Run();
   using Outcome = workflows::CheckSubmission::Outcome;
   if (!result.error.empty()) std::cerr << "dream check-submission: " << result.error << "\n";
   switch (result.outcome) {
-    case Outcome::kPassed: return kExitOk;
+    case Outcome::kPassed:
+      return kExitOk;
     case Outcome::kNotReady:
-    case Outcome::kControllersDiffer: return kExitNotReady;
+    case Outcome::kControllersDiffer:
+      return kExitNotReady;
     case Outcome::kRejected:
-    case Outcome::kStartupTimedOut: return kExitRejected;
-    case Outcome::kNoOfficialSimulator: return kExitInputError;
-    case Outcome::kInterrupted: return kExitInterrupted;
+    case Outcome::kStartupTimedOut:
+      return kExitRejected;
+    case Outcome::kNoOfficialSimulator:
+      return kExitInputError;
+    case Outcome::kInterrupted:
+      return kExitInterrupted;
     case Outcome::kIncomplete:
     case Outcome::kScriptFailed:
-    case Outcome::kRunnerFailed: break;
+    case Outcome::kRunnerFailed:
+      break;
   }
   return kExitRunFailed;
 }
@@ -196,23 +205,26 @@ void DeclareExportCommand(CommandLine& line) {
                              "the folder its run goes into (default runs/calibration_N)");
   export_command->add_option("--out", export_args->out_dir, "Output folder (default exports/<name>)");
   export_command->add_option("--config", export_args->config_path, "The run's config (default <run>/config.yaml)");
-  export_command->add_option("--strategy", export_args->strategy,
-                             "track: recorded commands plus feedback on the pose error; replay: open loop;\n"
-                             "controller: the run's Python controller itself, every step on the lab's poses\n"
-                             "(default track; --calibration: replay)")
+  export_command
+      ->add_option("--strategy", export_args->strategy,
+                   "track: recorded commands plus feedback on the pose error; replay: open loop;\n"
+                   "controller: the run's Python controller itself, every step on the lab's poses\n"
+                   "(default track; --calibration: replay)")
       ->check(CLI::IsMember(bridge::StrategyNames()));
   export_command->add_flag("--calibration", export_args->calibration,
                            "Run the calibration drive (config/calibration.yaml's program) on --robots robots in the\n"
                            "ideal simulator, then export it open loop (replay); the lab's result, imported, is what\n"
                            "dream calibrate fits (docs/robotarium.md)");
   export_command->add_option("--robots", export_args->robots, "With --calibration: how many robots, 1 to 20");
-  export_command->add_flag("--force", export_args->force,
-                           "Export although the run is not ready: robots lost at its end (a controller failed or an\n"
-                           "agent fell silent) or its experiment's goal missed; those problems are printed as warnings");
+  export_command->add_flag(
+      "--force", export_args->force,
+      "Export although the run is not ready: robots lost at its end (a controller failed or an\n"
+      "agent fell silent) or its experiment's goal missed; those problems are printed as warnings");
   export_command->add_flag("--barriers", export_args->barriers,
                            "Pass commands through the Robotarium's barrier certificates (safety layer)");
-  export_command->add_option("--settle-steps", export_args->settle_steps,
-                             "At most this many steps to settle on the start poses before step 0")
+  export_command
+      ->add_option("--settle-steps", export_args->settle_steps,
+                   "At most this many steps to settle on the start poses before step 0")
       ->check(CLI::Range(0, 3000))
       ->capture_default_str();
 }
@@ -231,13 +243,15 @@ void DeclareImportCommand(CommandLine& line) {
       ->required();
   import_command->add_option("--export", import_args->export_dir, "The folder dream export wrote")->required();
   AddRunFolderOptions(import_command, &import_args->out_dir, &import_args->overwrite, "runs/<name>_lab");
-  import_command->add_option("--declared-robots", import_args->declared_robots,
-                             "The robot count declared on the lab's form, when not UPLOAD.txt's;\n"
-                             "the verdict names a mismatch (verifier_robot_count)")
+  import_command
+      ->add_option("--declared-robots", import_args->declared_robots,
+                   "The robot count declared on the lab's form, when not UPLOAD.txt's;\n"
+                   "the verdict names a mismatch (verifier_robot_count)")
       ->check(CLI::Range(1, 1000));
-  import_command->add_option("--declared-duration", import_args->declared_duration_s,
-                             "The duration (s) declared on the lab's form, when not UPLOAD.txt's; the verdict\n"
-                             "names a run over 1.5x of it (verifier_duration) or over 900 s (lab_duration_cap)")
+  import_command
+      ->add_option("--declared-duration", import_args->declared_duration_s,
+                   "The duration (s) declared on the lab's form, when not UPLOAD.txt's; the verdict\n"
+                   "names a run over 1.5x of it (verifier_duration) or over 900 s (lab_duration_cap)")
       ->check(CLI::Range(0.001, 1e6));
 }
 

@@ -45,7 +45,8 @@ calibration::NamedModel ModelNamed(const std::string& name) {
 }
 
 // --check: each model against the runs, side by side; nothing is written.
-int RunCheck(const CalibrateArgs& args, const std::vector<calibration::CalibrationRun>& runs, const world::RealismParams& base) {
+int RunCheck(const CalibrateArgs& args, const std::vector<calibration::CalibrationRun>& runs,
+             const world::RealismParams& base) {
   std::vector<calibration::NamedModel> models;
   for (const std::string& name : args.check_models) models.push_back(ModelNamed(name));
   spdlog::info("holding {} model(s) against {} run(s)", models.size(), runs.size());
@@ -67,8 +68,9 @@ int RunCheck(const CalibrateArgs& args, const std::vector<calibration::Calibrati
 
 int RunCalibrate(const CalibrateArgs& args) {
   if (args.check_models.empty() && args.out_path.empty()) {
-    throw std::runtime_error("give --out FILE.yaml (the realism file to write), or --check MODEL to hold models "
-                             "against the runs");
+    throw std::runtime_error(
+        "give --out FILE.yaml (the realism file to write), or --check MODEL to hold models "
+        "against the runs");
   }
   world::RealismParams base;
   if (!world::RealismParams::FromPreset(args.base, &base)) {
@@ -122,8 +124,9 @@ void DeclareCalibrateCommand(CommandLine& line) {
       RunCalibrate);
   command->add_option("runs", args->inputs, "Lab runs: run folders, .npz, .mat or .npy files")->required();
   command->add_option("--out", args->out_path, "The realism file to write (YAML); not with --check");
-  command->add_option("--check", args->check_models,
-                      "Hold these models (presets or realism files, comma-separated) against the runs; writes nothing")
+  command
+      ->add_option("--check", args->check_models,
+                   "Hold these models (presets or realism files, comma-separated) against the runs; writes nothing")
       ->delimiter(',');
   command->add_option("--picture", args->picture_path,
                       "The picture to draw (.png or .svg; default: --out as .png; with --check: only when given)");
@@ -134,8 +137,9 @@ void DeclareCalibrateCommand(CommandLine& line) {
                       "Name of the commands array in .npz/.mat files (2 x N x T: v, w sent)");
   command->add_option("--time", args->options.time_name,
                       "Name of the optional time vector (T seconds) in .npz/.mat files");
-  command->add_option("--step-period", args->options.step_period_s,
-                      "Seconds per step when a file has no time vector (default 0.033)")
+  command
+      ->add_option("--step-period", args->options.step_period_s,
+                   "Seconds per step when a file has no time vector (default 0.033)")
       ->check(CLI::Range(0.001, 10.0));
 }
 

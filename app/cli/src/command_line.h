@@ -45,7 +45,8 @@ class CommandLine {
   CommandWithArgs<Args> AddCommand(const std::string& name, const std::string& description,
                                    std::function<int(const Args&)> run, CLI::App* parent = nullptr) {
     auto args = std::make_shared<Args>();
-    CLI::App* app = AddCommand(name, description, [args, run = std::move(run)] { return run(*args); }, parent);
+    CLI::App* app = AddCommand(
+        name, description, [args, run = std::move(run)] { return run(*args); }, parent);
     return {app, args.get()};
   }
 

@@ -35,7 +35,9 @@ namespace {
 
 // Where each agent process writes what it refused (dream-agent --report);
 // merged into summary.json and removed.
-std::filesystem::path AgentReportDir(const std::string& out_dir) { return std::filesystem::path(out_dir) / ".agent_reports"; }
+std::filesystem::path AgentReportDir(const std::string& out_dir) {
+  return std::filesystem::path(out_dir) / ".agent_reports";
+}
 
 std::string AgentReportPath(const std::string& out_dir, int robot) {
   return (AgentReportDir(out_dir) / ("robot_" + std::to_string(robot) + ".json")).string();

@@ -157,8 +157,8 @@ int RunLogDiff(const std::string& a, const std::string& b, const std::string& ch
         }
       }
       if (l->second.size() != r->second.size()) {
-        std::cout << channel << ": " << l->second.size() << " messages in " << a << ", " << r->second.size()
-                  << " in " << b << '\n';
+        std::cout << channel << ": " << l->second.size() << " messages in " << a << ", " << r->second.size() << " in "
+                  << b << '\n';
         same = false;
       }
     }
@@ -216,21 +216,21 @@ int RunLogEcho(const std::string& path_given, const std::string& channel_regex, 
   if (printed == 0 && undecodable == 0 && skipped.empty()) {
     std::string names;
     for (const auto& [channel, count] : seen) names += (names.empty() ? "" : ", ") + channel;
-    std::cerr << path << ": no event on a channel matching '" << channel_regex << "' (channels: "
-              << (names.empty() ? "none" : names) << ")\n";
+    std::cerr << path << ": no event on a channel matching '" << channel_regex
+              << "' (channels: " << (names.empty() ? "none" : names) << ")\n";
   }
   return kExitOk;
 }
 
 void DeclareLogCommand(CommandLine& line) {
-  CLI::App* log = line.AddGroup("log", "Look into recorded runs: info, diff, echo.\n"
-                                       "Example: dream log info runs/go_to_goal");
+  CLI::App* log = line.AddGroup("log",
+                                "Look into recorded runs: info, diff, echo.\n"
+                                "Example: dream log info runs/go_to_goal");
 
-  const auto [info, info_path] = line.AddCommand<std::string>(
-      "info",
-      "Channels and event counts of a log.\n"
-      "Example: dream log info runs/go_to_goal/run.lcmlog",
-      RunLogInfo, log);
+  const auto [info, info_path] = line.AddCommand<std::string>("info",
+                                                              "Channels and event counts of a log.\n"
+                                                              "Example: dream log info runs/go_to_goal/run.lcmlog",
+                                                              RunLogInfo, log);
   AddRunLogArgument(info, "log", info_path);
 
   const auto [echo, echo_args] = line.AddCommand<LogEchoArgs>(
@@ -242,7 +242,8 @@ void DeclareLogCommand(CommandLine& line) {
       "Example: dream log echo runs/go_to_goal 'DREAM_CMD_.*' --limit 5",
       [](const LogEchoArgs& args) { return RunLogEcho(args.log, args.channel_regex, args.limit); }, log);
   AddRunLogArgument(echo, "log", &echo_args->log);
-  echo->add_option("channels", echo_args->channel_regex, "Regex of channels to print, e.g. DREAM_POSES or 'DREAM_CMD_.*'")
+  echo->add_option("channels", echo_args->channel_regex,
+                   "Regex of channels to print, e.g. DREAM_POSES or 'DREAM_CMD_.*'")
       ->required();
   echo->add_option("--limit", echo_args->limit, "Stop after this many messages (default: all)")->check(StepCount());
 

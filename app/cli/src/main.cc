@@ -28,7 +28,8 @@ int RefuseUnknownWordsBeforeParsing(CLI::App& app, int argc, char** argv) {
     const std::string option = argv[first_word];
     if (option != "-q" && option != "--quiet" && option != "-v" && option != "--verbose" && option != "-h" &&
         option != "--help" && option != "--version") {
-      std::cerr << "dream: unknown option '" << option << "' before the subcommand; global options are -q, -v, -h, --version"
+      std::cerr << "dream: unknown option '" << option
+                << "' before the subcommand; global options are -q, -v, -h, --version"
                 << " (dream --help)\n";
       return kExitUsage;
     }
@@ -75,7 +76,7 @@ int main(int argc, char** argv) {
   DeclareSpyCommand(line);
   DeclareReplayCommand(line);
   DeclareLogCommand(line);
-  DeclareBridgeCommands(line);  // export, import, lab-replay, compare, check-submission (docs/robotarium.md)
+  DeclareBridgeCommands(line);    // export, import, lab-replay, compare, check-submission (docs/robotarium.md)
   DeclareCalibrateCommand(line);  // fit the lab model to real runs (docs/experiments.md)
   DeclareSweepCommand(line);
   DeclareRenderCommand(line);  // pictures and videos (docs/rendering.md)

@@ -32,8 +32,13 @@ nlohmann::ordered_json ToJson(const robot_poses_t& m) {
 nlohmann::ordered_json ToJson(const obstacles_t& m) {
   nlohmann::ordered_json obstacles = nlohmann::ordered_json::array();
   for (const rectangle_obstacle_t& o : m.obstacles) {
-    obstacles.push_back({{"id", o.id}, {"center_x", o.center_x}, {"center_y", o.center_y}, {"width", o.width},
-                         {"height", o.height}, {"vx", o.vx}, {"vy", o.vy}});
+    obstacles.push_back({{"id", o.id},
+                         {"center_x", o.center_x},
+                         {"center_y", o.center_y},
+                         {"width", o.width},
+                         {"height", o.height},
+                         {"vx", o.vx},
+                         {"vy", o.vy}});
   }
   return WithMessageStart(m, {{"num_obstacles", m.num_obstacles}, {"obstacles", obstacles}});
 }

@@ -46,9 +46,12 @@ fs::path DefaultOutput(const fs::path& log, Kind kind) {
   const bool run_log = log.filename() == "run.lcmlog";
   const std::string stem = log.stem().string();
   switch (kind) {
-    case Kind::kVideo: return log.parent_path() / (run_log ? "run.mp4" : stem + ".mp4");
-    case Kind::kPlot: return log.parent_path() / (run_log ? "metrics.png" : stem + "_metrics.png");
-    case Kind::kPicture: break;
+    case Kind::kVideo:
+      return log.parent_path() / (run_log ? "run.mp4" : stem + ".mp4");
+    case Kind::kPlot:
+      return log.parent_path() / (run_log ? "metrics.png" : stem + "_metrics.png");
+    case Kind::kPicture:
+      break;
   }
   return log.parent_path() / (run_log ? "trajectories.svg" : stem + "_trajectories.svg");
 }
@@ -91,7 +94,8 @@ render::ArenaOverlays Overlays(const RenderArgs& args, const fs::path& log, int 
   if (!config) {
     if (needed) {
       throw std::runtime_error(std::string(args.radio_links ? "--radio-links" : "--sensor-ranges") +
-                               " needs the run's config: no config.yaml beside " + log.string() + " (give --config FILE)");
+                               " needs the run's config: no config.yaml beside " + log.string() +
+                               " (give --config FILE)");
     }
     return {};
   }
@@ -99,7 +103,8 @@ render::ArenaOverlays Overlays(const RenderArgs& args, const fs::path& log, int 
   if (config->num_robots != log_robots) {
     const std::string mismatch = config->source + " has " + std::to_string(config->num_robots) + " robots, " +
                                  log.string() + " " + std::to_string(log_robots);
-    if (needed || !args.config_path.empty()) throw std::runtime_error("--config: " + mismatch + ": not this run's config");
+    if (needed || !args.config_path.empty())
+      throw std::runtime_error("--config: " + mismatch + ": not this run's config");
     spdlog::warn("drawing without the config's goals: {}", mismatch);
     return {};
   }
@@ -175,16 +180,18 @@ std::vector<render::MetricSeries> MetricSeriesOf(const fs::path& log, const run_
   return series;
 }
 
-std::vector<render::MetricSeries> PickMetrics(std::vector<render::MetricSeries> all, const std::vector<std::string>& names,
-                                           const fs::path& log) {
+std::vector<render::MetricSeries> PickMetrics(std::vector<render::MetricSeries> all,
+                                              const std::vector<std::string>& names, const fs::path& log) {
   std::string available;
   for (const render::MetricSeries& s : all) available += (available.empty() ? "" : ", ") + s.name;
-  if (all.empty()) throw std::runtime_error(log.string() + ": no metric series to plot (a single robot, no summary.json)");
+  if (all.empty())
+    throw std::runtime_error(log.string() + ": no metric series to plot (a single robot, no summary.json)");
   if (names.empty()) return all;
   std::vector<render::MetricSeries> picked;
   for (const std::string& name : names) {
     auto found = std::find_if(all.begin(), all.end(), [&](const render::MetricSeries& s) { return s.name == name; });
-    if (found == all.end()) throw std::runtime_error("--metric " + name + ": not a series of this run; it has: " + available);
+    if (found == all.end())
+      throw std::runtime_error("--metric " + name + ": not a series of this run; it has: " + available);
     picked.push_back(*found);
   }
   return picked;
@@ -264,8 +271,8 @@ int RunRender(const RenderArgs& args) {
     return kExitInterrupted;
   }
   std::cout << "video:   " << out.string() << " (" << animation.frame_count() << " frames, "
-            << SecondsText(animation.duration_s()) << " at " << options.fps << " fps, " << animation.layout().width_px() << "x"
-            << animation.layout().height_px() << ", " << SecondsSince(start) << ")\n";
+            << SecondsText(animation.duration_s()) << " at " << options.fps << " fps, " << animation.layout().width_px()
+            << "x" << animation.layout().height_px() << ", " << SecondsSince(start) << ")\n";
   return kExitOk;
 }
 
@@ -283,7 +290,8 @@ void DeclareRenderCommand(CommandLine& line) {
   command->add_option("--config", args->config_path,
                       "The run's config, for goals, sensors and radio (default: config.yaml beside the log)");
   command->add_flag("--video", args->video, "Without --out: write run.mp4 beside the log");
-  command->add_flag("--plot", args->plot, "Plot the metrics over time (summary.json's series and the closest approach)");
+  command->add_flag("--plot", args->plot,
+                    "Plot the metrics over time (summary.json's series and the closest approach)");
   command->add_option("--metric", args->metrics, "Plot only this series (repeat for more; implies --plot)")
       ->allow_extra_args(false);
   command->add_flag("--radio-links", args->radio_links,

@@ -47,7 +47,7 @@ int RunReplay(const ReplayArgs& args) {
   // its class directly, with the script's heap sizes. The URL goes as its own
   // word: LogPlayer cuts `--lcm-url=URL` at every '=', which kept only
   // "udpm://...?ttl" and dropped the URL's options.
-  std::vector<std::string> player = {"java", "-Xmx64m", "-Xms32m", "-cp", lcm_jar, "lcm.logging.LogPlayer",
+  std::vector<std::string> player = {"java",      "-Xmx64m", "-Xms32m", "-cp", lcm_jar, "lcm.logging.LogPlayer",
                                      "--lcm-url", url};
   if (args.paused) player.push_back("--paused");
   player.push_back(log);
@@ -82,8 +82,7 @@ void DeclareReplayCommand(CommandLine& line) {
                       "LCM URL to play on (default $LCM_DEFAULT_URL, else udpm://239.255.76.67:7667?ttl=0)");
   command->add_flag("--paused", args->paused, "Open the log paused at its start");
   command->add_flag("--spy", args->with_spy, "Also open lcm-spy (dream spy) on the same URL");
-  command->add_flag("--print,--print-command", args->print_command_only,
-                    "Print the commands instead of starting them");
+  command->add_flag("--print,--print-command", args->print_command_only, "Print the commands instead of starting them");
 }
 
 }  // namespace dream::cli

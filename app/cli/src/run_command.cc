@@ -47,40 +47,45 @@ int RunSimOnly(const RunArgs& args) {
 }
 
 void DeclareRunCommand(CommandLine& line) {
-  const auto [command, args] = AddRunCommand(
-      line, "run",
-      "Run an experiment in one process: the simulator and every robot's agent on one bus.\n"
-      "Example: dream run config/go_to_goal.yaml --seed 7 --set controller.max_speed_mps=0.1\n"
-      "Watch it: dream run config/go_to_goal.yaml --view (then open http://127.0.0.1:8077/)",
-      RunEmbedded, "LCM URL (default memq://, in-process)");
-  CLI::Option* const view = command->add_flag(
-      "--view", args->view,
-      "Serve the live arena while the run runs (dream view; paced to real time unless --pace), then\n"
-      "the finished run as a replay at the same URL (--view-keep)");
+  const auto [command, args] =
+      AddRunCommand(line, "run",
+                    "Run an experiment in one process: the simulator and every robot's agent on one bus.\n"
+                    "Example: dream run config/go_to_goal.yaml --seed 7 --set controller.max_speed_mps=0.1\n"
+                    "Watch it: dream run config/go_to_goal.yaml --view (then open http://127.0.0.1:8077/)",
+                    RunEmbedded, "LCM URL (default memq://, in-process)");
+  CLI::Option* const view =
+      command->add_flag("--view", args->view,
+                        "Serve the live arena while the run runs (dream view; paced to real time unless --pace), then\n"
+                        "the finished run as a replay at the same URL (--view-keep)");
   command->add_option("--view-port", args->view_port, "Port of --view's page (0: any free port)")
       ->check(CLI::Range(0, 65535))
       ->capture_default_str();
-  command->add_option("--view-fps", args->view_fps,
-                      "Frames a second --view's page gets and draws at most; fewer cost the machine less\n"
-                      "(default: 30; 10 while the run goes faster than twice real time, 5 beyond ten times)")
+  command
+      ->add_option("--view-fps", args->view_fps,
+                   "Frames a second --view's page gets and draws at most; fewer cost the machine less\n"
+                   "(default: 30; 10 while the run goes faster than twice real time, 5 beyond ten times)")
       ->check(CLI::Range(1, view::FrameRates::kMax));
-  command->add_flag("--view-wait", args->view_wait,
-                    "With --view: take no step before a browser has the page open (Ctrl-C to give up)")
+  command
+      ->add_flag("--view-wait", args->view_wait,
+                 "With --view: take no step before a browser has the page open (Ctrl-C to give up)")
       ->needs(view);
-  command->add_option("--view-wait-timeout", args->view_wait_timeout_s,
-                      "With --view-wait: start the run anyway after this many seconds (default 0: wait until\n"
-                      "a browser comes or Ctrl-C)")
+  command
+      ->add_option("--view-wait-timeout", args->view_wait_timeout_s,
+                   "With --view-wait: start the run anyway after this many seconds (default 0: wait until\n"
+                   "a browser comes or Ctrl-C)")
       ->check(CLI::Range(0.0, 1e6))
       ->needs(view);
-  command->add_option("--view-keep", args->view_keep,
-                      "With --view: how long the page serves the finished run (a replay, same URL) after the\n"
-                      "run: watched (until Ctrl-C if a browser is connected at the end, else not at all),\n"
-                      "ctrl-c (until Ctrl-C), or a number of seconds (0: stop with the run)")
+  command
+      ->add_option("--view-keep", args->view_keep,
+                   "With --view: how long the page serves the finished run (a replay, same URL) after the\n"
+                   "run: watched (until Ctrl-C if a browser is connected at the end, else not at all),\n"
+                   "ctrl-c (until Ctrl-C), or a number of seconds (0: stop with the run)")
       ->capture_default_str()
       ->needs(view);
-  command->add_option("--view-bind", args->view_bind,
-                      "Address --view listens on; 127.0.0.1 (the default) is this machine only,\n"
-                      "0.0.0.0 exposes the page to the network on purpose")
+  command
+      ->add_option("--view-bind", args->view_bind,
+                   "Address --view listens on; 127.0.0.1 (the default) is this machine only,\n"
+                   "0.0.0.0 exposes the page to the network on purpose")
       ->capture_default_str();
 }
 

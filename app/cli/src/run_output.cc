@@ -50,7 +50,8 @@ void CheckStartupDrive(const run_config::RunConfig& config) {
 run_config::RunConfig LoadConfig(const RunArgs& args) { return OpenRunSession(args)->config(); }
 
 std::string ConfigTextForRunFolder(const RunArgs& args, const run_config::RunConfig& config) {
-  return run_config::RunFolderConfigText(config, config_overrides::OverriddenConfig(args.config_path, args.seed, args.sets).Text());
+  return run_config::RunFolderConfigText(
+      config, config_overrides::OverriddenConfig(args.config_path, args.seed, args.sets).Text());
 }
 
 std::string PrepareOutputDir(const RunArgs& args, const run_config::RunConfig& config) {

@@ -135,8 +135,9 @@ RunView::Keep RunView::Keep::Parse(const std::string& text) {
     used = 0;
   }
   if (used == 0 || used != text.size() || !std::isfinite(seconds) || seconds < 0) {
-    throw std::runtime_error("--view-keep " + text +
-                             ": not watched, ctrl-c or a number of seconds (0 or more) to serve the page after the run");
+    throw std::runtime_error(
+        "--view-keep " + text +
+        ": not watched, ctrl-c or a number of seconds (0 or more) to serve the page after the run");
   }
   keep.until = Until::kSeconds;
   keep.seconds = seconds;
@@ -158,8 +159,7 @@ void RunView::KeepServing(const Keep& keep) {
       return;
     case Keep::Until::kSeconds:
       if (keep.seconds <= 0) return;
-      std::cout << "dream view: serving for " << FormatSeconds(keep.seconds) << " (Ctrl-C to stop sooner)"
-                << std::endl;
+      std::cout << "dream view: serving for " << FormatSeconds(keep.seconds) << " (Ctrl-C to stop sooner)" << std::endl;
       WaitUntil([] { return false; }, keep.seconds);
       return;
   }

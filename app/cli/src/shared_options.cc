@@ -13,7 +13,8 @@ namespace dream::cli {
 CLI::Validator StepCount() {
   return CLI::Validator(
       [](const std::string& text) {
-        return text.find_first_not_of("0123456789") == std::string::npos && text.find_first_not_of('0') != std::string::npos
+        return text.find_first_not_of("0123456789") == std::string::npos &&
+                       text.find_first_not_of('0') != std::string::npos
                    ? std::string()
                    : "must be a whole number >= 1, got " + text;
       },
@@ -65,9 +66,10 @@ std::string RunLogPath(const std::string& run_or_log) {
 }
 
 void AddRunFolderOptions(CLI::App* command, std::string* out_dir, bool* overwrite, const std::string& default_dir) {
-  command->add_option("--out", *out_dir,
-                      "Output folder for the run (default " + default_dir + ", or " + default_dir +
-                          "_2, _3, ... when that\nalready holds a run); refused when it holds a run, unless --overwrite");
+  command->add_option(
+      "--out", *out_dir,
+      "Output folder for the run (default " + default_dir + ", or " + default_dir +
+          "_2, _3, ... when that\nalready holds a run); refused when it holds a run, unless --overwrite");
   command->add_flag("--overwrite", *overwrite, "Replace the run already in the output folder");
 }
 
@@ -81,8 +83,9 @@ void AddOverrideOptions(CLI::App* command, long long* seed, std::vector<std::str
       ->allow_extra_args(false);
 }
 
-CommandLine::CommandWithArgs<RunArgs> AddRunCommand(CommandLine& line, const std::string& name, const std::string& description,
-                   std::function<int(const RunArgs&)> run, const char* url_help) {
+CommandLine::CommandWithArgs<RunArgs> AddRunCommand(CommandLine& line, const std::string& name,
+                                                    const std::string& description,
+                                                    std::function<int(const RunArgs&)> run, const char* url_help) {
   const auto [command, args] = line.AddCommand<RunArgs>(name, description, std::move(run));
   command->add_option("config", args->config_path, "Run config (YAML), e.g. config/go_to_goal.yaml")->required();
   AddRunFolderOptions(command, &args->out_dir, &args->overwrite, "runs/<name>");

@@ -43,8 +43,9 @@ void AddOverrideOptions(CLI::App* command, long long* seed, std::vector<std::str
 /// Adds a command that runs an experiment (run, sim, launch): they share
 /// their options; only the help of --lcm-url differs, as each picks its own
 /// default bus. Returns the command and its arguments, for options of its own.
-CommandLine::CommandWithArgs<RunArgs> AddRunCommand(CommandLine& line, const std::string& name, const std::string& description,
-                   std::function<int(const RunArgs&)> run, const char* url_help);
+CommandLine::CommandWithArgs<RunArgs> AddRunCommand(CommandLine& line, const std::string& name,
+                                                    const std::string& description,
+                                                    std::function<int(const RunArgs&)> run, const char* url_help);
 
 /// The options of `dream agent`, which the dream-agent executable it hands
 /// over to must parse the same way.

@@ -70,7 +70,8 @@ int RunSweepResume(const SweepFolderArgs& args) {
   ProcessCommandRunner commands;
   if (!args.engine.empty()) workflows::SweepSettings::ParseEngine(args.engine);  // names the choices
   if (args.engine == "plan") throw std::invalid_argument("--engine plan: resume runs the runs; use local or slurm");
-  return ExitCodeOf(Workflow(commands).Resume(args.dir, {args.engine, args.jobs, args.run_timeout_s, args.slurm_options}));
+  return ExitCodeOf(
+      Workflow(commands).Resume(args.dir, {args.engine, args.jobs, args.run_timeout_s, args.slurm_options}));
 }
 
 int RunSweepTable(const SweepFolderArgs& args) {
@@ -95,21 +96,24 @@ void DeclareSweepFolderCommands(CommandLine& line, CLI::App* sweep) {
                  "How far a sweep is: runs finished, running, pending, failed and never started, from its folder\n"
                  "and Slurm (squeue, sacct). Example: dream sweep status sweeps/hrvo_circle",
                  RunSweepStatus);
-  folder_command("table",
-                 "Write sweep.csv and sweep.md from whatever runs of a sweep have finished, at any time; runs that\n"
-                 "failed, were cancelled or never started are rows saying so. Example: dream sweep table sweeps/hrvo_circle",
-                 RunSweepTable);
-  const auto [resume, resume_args] = folder_command(
-      "resume",
-      "Run again every run of a sweep without a complete result (failed, cancelled, timed out,\n"
-      "interrupted, never started), locally or on Slurm. Example: dream sweep resume sweeps/hrvo_circle",
-      RunSweepResume);
+  folder_command(
+      "table",
+      "Write sweep.csv and sweep.md from whatever runs of a sweep have finished, at any time; runs that\n"
+      "failed, were cancelled or never started are rows saying so. Example: dream sweep table sweeps/hrvo_circle",
+      RunSweepTable);
+  const auto [resume, resume_args] =
+      folder_command("resume",
+                     "Run again every run of a sweep without a complete result (failed, cancelled, timed out,\n"
+                     "interrupted, never started), locally or on Slurm. Example: dream sweep resume sweeps/hrvo_circle",
+                     RunSweepResume);
   resume->add_option("--engine", resume_args->engine, "local or slurm (default: the sweep's own; plan: local)");
-  resume->add_option("-j,--jobs", resume_args->jobs, "Runs at once (default: the sweep's)")->check(CLI::Range(1, 100000));
+  resume->add_option("-j,--jobs", resume_args->jobs, "Runs at once (default: the sweep's)")
+      ->check(CLI::Range(1, 100000));
   resume->add_option("--timeout", resume_args->run_timeout_s, "Local engine: stop a run after this many seconds")
       ->check(Seconds(false));
-  resume->add_option("--slurm-option", resume_args->slurm_options,
-                     "An sbatch option for the jobs, e.g. --slurm-option=--partition=short (default: the sweep's)")
+  resume
+      ->add_option("--slurm-option", resume_args->slurm_options,
+                   "An sbatch option for the jobs, e.g. --slurm-option=--partition=short (default: the sweep's)")
       ->allow_extra_args(false);
 }
 
@@ -165,13 +169,15 @@ void DeclareSweepCommand(CommandLine& line) {
   command->add_option("--out", args->out_dir,
                       "Sweep folder (its parent must exist; default sweeps/<name>, or sweeps/<name>_2, ...\n"
                       "when that holds an earlier sweep); for Slurm on a file system the nodes share");
-  command->add_option("--timeout", args->run_timeout_s,
-                      "Stop a run still going after this many seconds; it counts as failed (local engine)")
+  command
+      ->add_option("--timeout", args->run_timeout_s,
+                   "Stop a run still going after this many seconds; it counts as failed (local engine)")
       ->check(Seconds(false))
       ->capture_default_str();
-  command->add_option("--engine", args->engine,
-                      "local (this machine), slurm (a job array: sbatch), or plan (write <out>/commands.txt,\n"
-                      "one shell command per run, and stop)")
+  command
+      ->add_option("--engine", args->engine,
+                   "local (this machine), slurm (a job array: sbatch), or plan (write <out>/commands.txt,\n"
+                   "one shell command per run, and stop)")
       ->capture_default_str();
   command
       ->add_option("--slurm-option", args->slurm_options,

@@ -29,7 +29,8 @@ struct ViewArgs {
   std::string config_path;  ///< goals, sensors and radio of the run; replay: config.yaml beside the log
   int port = 8077;
   std::string bind = "127.0.0.1";
-  int fps = 0;  ///< live: frames a second to each page at most; 0: FrameRates' defaults (30, fewer while the run is fast)
+  int fps =
+      0;  ///< live: frames a second to each page at most; 0: FrameRates' defaults (30, fewer while the run is fast)
 };
 
 void WaitForCtrlC() {
@@ -81,7 +82,8 @@ void DeclareViewCommand(CommandLine& line) {
       "Live (no RUN): draws any DREAM run on the LCM bus (dream sim, launch, lab-replay, lcm-logplayer).\n"
       "Replay: dream view runs/go_to_goal: the finished run with play, pause, step, scrub and speed.\n"
       "Example: dream view --config config/go_to_goal.yaml   (then open http://127.0.0.1:8077/)",
-      std::function<int(const ViewArgs&)>([](const ViewArgs& a) { return a.run.empty() ? RunLiveView(a) : RunReplayView(a); }));
+      std::function<int(const ViewArgs&)>(
+          [](const ViewArgs& a) { return a.run.empty() ? RunLiveView(a) : RunReplayView(a); }));
   command->add_option("run", args->run, "A run folder (its run.lcmlog) or an .lcmlog file to replay; none: live");
   command->add_option("--lcm-url", args->lcm_url,
                       "Live: LCM URL (default $LCM_DEFAULT_URL, else udpm://239.255.76.67:7667?ttl=0)");
@@ -91,13 +93,15 @@ void DeclareViewCommand(CommandLine& line) {
   command->add_option("--port", args->port, "Port of the page (0: any free port)")
       ->check(CLI::Range(0, 65535))
       ->capture_default_str();
-  command->add_option("--fps", args->fps,
-                      "Live: frames a second each page gets and draws at most; fewer cost the machine less\n"
-                      "(default: 30; 10 while the run goes faster than twice real time, 5 beyond ten times)")
+  command
+      ->add_option("--fps", args->fps,
+                   "Live: frames a second each page gets and draws at most; fewer cost the machine less\n"
+                   "(default: 30; 10 while the run goes faster than twice real time, 5 beyond ten times)")
       ->check(CLI::Range(1, view::FrameRates::kMax));
-  command->add_option("--bind", args->bind,
-                      "Address to listen on; 127.0.0.1 (the default) is this machine only,\n"
-                      "0.0.0.0 exposes the page to the network on purpose")
+  command
+      ->add_option("--bind", args->bind,
+                   "Address to listen on; 127.0.0.1 (the default) is this machine only,\n"
+                   "0.0.0.0 exposes the page to the network on purpose")
       ->capture_default_str();
 }
 

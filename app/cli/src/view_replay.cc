@@ -102,8 +102,8 @@ ViewReplay ViewReplay::OfRun(const std::string& run, const std::string& config_p
   }
   ViewReplay replay;
   if (const std::optional<run_config::RunConfig> config = ConfigOfRun(config_path, log_path, log.num_robots())) {
-    replay.setup = ViewSetupOfConfig(*config, view::ViewSetup::Mode::kReplay, run,
-                                     fs::absolute(log_path).parent_path().string());
+    replay.setup =
+        ViewSetupOfConfig(*config, view::ViewSetup::Mode::kReplay, run, fs::absolute(log_path).parent_path().string());
   }
   replay.setup.mode = view::ViewSetup::Mode::kReplay;
   replay.setup.source = run;

@@ -15,7 +15,8 @@ bool IsSet(const char* name) {
 
 void RequireWindowDisplay(const std::string& window, const std::string& instead) {
   if (IsSet("DISPLAY") || IsSet("WAYLAND_DISPLAY")) return;
-  throw std::runtime_error(window + " is a window, and there is no display here (DISPLAY and WAYLAND_DISPLAY are unset): " +
+  throw std::runtime_error(window +
+                           " is a window, and there is no display here (DISPLAY and WAYLAND_DISPLAY are unset): " +
                            "run it in a desktop session or over ssh -X; " + instead);
 }
 

@@ -34,8 +34,8 @@ std::string KeysOf(const YAML::Node& map) {
 // barriers.kind=unicycle` on one without `barriers:`). Any other missing
 // part is a typo until proven otherwise.
 const std::vector<std::string>& CreatableSections() {
-  static const std::vector<std::string> sections = {"world", "world.realism", "controller", "initial_poses",
-                                                    "initial_poses.generate", "barriers"};
+  static const std::vector<std::string> sections = {"world",         "world.realism",          "controller",
+                                                    "initial_poses", "initial_poses.generate", "barriers"};
   return sections;
 }
 
@@ -115,9 +115,8 @@ void AssignInPlace(YAML::Node target, const YAML::Node& value) {
 config::ConfigNode::Extent ParseSetValue(const std::string& option, const std::string& value_text, YAML::Node* value) {
   using config::ConfigNode;
   if (value_text.size() > ConfigNode::kMaxFileBytes) {
-    throw std::invalid_argument(option + ": the value is " + std::to_string(value_text.size()) +
-                                " bytes; at most " + std::to_string(ConfigNode::kMaxFileBytes) +
-                                " (the limit of a config file)");
+    throw std::invalid_argument(option + ": the value is " + std::to_string(value_text.size()) + " bytes; at most " +
+                                std::to_string(ConfigNode::kMaxFileBytes) + " (the limit of a config file)");
   }
   ConfigNode::Extent extent;
   try {
@@ -139,7 +138,8 @@ config::ConfigNode::Extent ParseSetValue(const std::string& option, const std::s
   if (extent.values > kMaxSetValues) {
     throw std::invalid_argument(option + ": the value holds " + std::to_string(extent.values) +
                                 " values once its aliases are expanded; a --set value may hold at most " +
-                                std::to_string(kMaxSetValues) + " (it is copied into the config; put a larger "
+                                std::to_string(kMaxSetValues) +
+                                " (it is copied into the config; put a larger "
                                 "value in the config file)");
   }
   return extent;
@@ -187,8 +187,8 @@ void ApplyConfigOverride(YAML::Node root, const std::string& dotted_key, const s
       const std::string section = path + (path.empty() ? "" : ".") + part;
       if (!exists && !last && !IsCreatableSection(section)) {
         throw std::invalid_argument(option + ": " + source_name + " has no key '" + part + "' " + where +
-                                    config::DidYouMean(part, NamesAt(node, path)) + " (keys there: " +
-                                    KeysOf(node) + ")");
+                                    config::DidYouMean(part, NamesAt(node, path)) + " (keys there: " + KeysOf(node) +
+                                    ")");
       }
       if (!exists && !last) node[part] = YAML::Node(YAML::NodeType::Map);  // a section created
       node.reset(node[part]);
@@ -211,8 +211,9 @@ void ApplyConfigOverride(YAML::Node root, const std::string& dotted_key, const s
     throw std::invalid_argument(option + ": " + e.what());
   }
   if (before.values + extent.values > ConfigNode::kMaxValues) {
-    throw std::invalid_argument(option + ": the config (" + std::to_string(before.values) + " values) and this value (" +
-                                std::to_string(extent.values) + " values once its aliases are expanded) exceed " +
+    throw std::invalid_argument(option + ": the config (" + std::to_string(before.values) +
+                                " values) and this value (" + std::to_string(extent.values) +
+                                " values once its aliases are expanded) exceed " +
                                 std::to_string(ConfigNode::kMaxValues) + " values, the limit of a config file");
   }
   AssignInPlace(node, value);

@@ -24,7 +24,8 @@ OverriddenConfig::OverriddenConfig(const std::string& path, long long seed, cons
     overrides_.push_back("--seed " + std::to_string(seed));
   }
   for (const std::string& set : sets) {
-    const SweepParameter parameter = SweepParameter::ParseAssignment(set, "KEY=VALUE such as controller.max_speed_mps=0.1");
+    const SweepParameter parameter =
+        SweepParameter::ParseAssignment(set, "KEY=VALUE such as controller.max_speed_mps=0.1");
     const std::string option = "--set " + set;
     if (parameter.values.size() != 1) {
       throw std::invalid_argument(option + ": one value per key here (" + std::to_string(parameter.values.size()) +
@@ -46,9 +47,7 @@ config::ConfigNode OverriddenConfig::Document() const {
   return config::ConfigNode(root_, path_, "");
 }
 
-config::ControllerConfig OverriddenConfig::LoadController() const {
-  return LoadWith(&config::LoadControllerConfig);
-}
+config::ControllerConfig OverriddenConfig::LoadController() const { return LoadWith(&config::LoadControllerConfig); }
 
 std::string OverriddenConfig::Noted(const std::string& message) const {
   return overrides_.empty() ? message : message + " (with " + OptionsText() + ")";
@@ -62,8 +61,8 @@ std::string OverriddenConfig::OptionsText() const {
 
 std::string OverriddenConfig::Text() const {
   if (overrides_.empty()) return text_;
-  return ConfigText(root_, path_ + " with " + OptionsText() +
-                               " (the values below include them; comments were not kept).");
+  return ConfigText(root_,
+                    path_ + " with " + OptionsText() + " (the values below include them; comments were not kept).");
 }
 
 }  // namespace dream::config_overrides

@@ -65,8 +65,8 @@ SweepParameter SweepParameter::ParseAssignment(const std::string& text, const st
   if (parameter.key.empty()) throw std::invalid_argument(option + ": the key before '=' is empty");
   // Printable ASCII only: a config's keys are names, and a control byte or
   // NUL in a new key would make the run folder's config.yaml unreadable.
-  const bool printable = std::all_of(parameter.key.begin(), parameter.key.end(),
-                                     [](char c) { return c > ' ' && c < 0x7f; });
+  const bool printable =
+      std::all_of(parameter.key.begin(), parameter.key.end(), [](char c) { return c > ' ' && c < 0x7f; });
   if (!printable || parameter.key.front() == '.' || parameter.key.back() == '.' ||
       parameter.key.find("..") != std::string::npos) {
     throw std::invalid_argument(option + ": '" + Shown(parameter.key) +
@@ -80,8 +80,7 @@ SweepParameter SweepParameter::ParseAssignment(const std::string& text, const st
 }
 
 SweepParameter SweepParameter::Parse(const std::string& text) {
-  SweepParameter parameter =
-      ParseAssignment(text, "KEY=V1,V2,... such as controller.max_speed_mps=0.1,0.2");
+  SweepParameter parameter = ParseAssignment(text, "KEY=V1,V2,... such as controller.max_speed_mps=0.1,0.2");
   const std::string option = "--set " + Shown(text);
   if (parameter.key == "seed") throw std::invalid_argument(option + ": seeds are swept with --seeds, not --set");
   if (parameter.key == "name") throw std::invalid_argument(option + ": the sweep names each run itself");

@@ -16,8 +16,7 @@ ExperimentGoal ExperimentGoal::Judge(const node::RunSummary& summary) {
   const nlohmann::json metrics = summary.metrics;  // the kind's section, as it wrote it
   if (metrics.is_object() && metrics.contains("kind") && metrics["kind"].is_string()) goal.kind = metrics["kind"];
   // The kind's own rule wrote metrics.goal (ExperimentMetrics::JudgeGoal).
-  const nlohmann::json judged =
-      metrics.is_object() && metrics.contains("goal") ? metrics["goal"] : nlohmann::json();
+  const nlohmann::json judged = metrics.is_object() && metrics.contains("goal") ? metrics["goal"] : nlohmann::json();
   if (metrics.is_object() && metrics.contains("error")) {
     goal.has_criterion = true;
     goal.judge_error = metrics["error"].is_string() ? metrics["error"].get<std::string>() : "metrics.error";
@@ -29,8 +28,8 @@ ExperimentGoal ExperimentGoal::Judge(const node::RunSummary& summary) {
     goal.has_criterion = true;
     goal.met = judged.contains("met") && judged["met"].is_boolean() && judged["met"].get<bool>();
     goal.completion_step = static_cast<long long>(Number(judged, "completion_step", -1.0));
-    goal.detail = judged.contains("detail") && judged["detail"].is_string() ? judged["detail"].get<std::string>()
-                                                                            : std::string();
+    goal.detail =
+        judged.contains("detail") && judged["detail"].is_string() ? judged["detail"].get<std::string>() : std::string();
     return goal;
   }
   // A kind without a rule of its own (e.g. a one-class plugin): the run's own
@@ -47,15 +46,15 @@ ExperimentGoal ExperimentGoal::Judge(const node::RunSummary& summary) {
 std::optional<world::VerdictReason> ExperimentGoal::Reason() const {
   if (!has_criterion || met) return std::nullopt;
   if (!judge_error.empty()) {
-    return world::VerdictReason{"goal", world::RunVerdict::kNotReady,
-                                "the " + (kind.empty() ? std::string("run") : kind) +
-                                    " experiment's goal could not be judged: " + judge_error,
-                                "fix the experiment's metrics or goal (its error above); dream render RUN --plot "
-                                "shows the run"};
+    return world::VerdictReason{
+        "goal", world::RunVerdict::kNotReady,
+        "the " + (kind.empty() ? std::string("run") : kind) + " experiment's goal could not be judged: " + judge_error,
+        "fix the experiment's metrics or goal (its error above); dream render RUN --plot "
+        "shows the run"};
   }
   return world::VerdictReason{"goal", world::RunVerdict::kNotReady,
-                            "the " + kind + " experiment missed its goal: " + detail,
-                            "summary.json metrics; dream render RUN --plot shows them over time"};
+                              "the " + kind + " experiment missed its goal: " + detail,
+                              "summary.json metrics; dream render RUN --plot shows them over time"};
 }
 
 nlohmann::ordered_json ExperimentGoal::Json() const {

@@ -64,7 +64,8 @@ render::ArenaOverlays ArenaOverlaysFromConfig(const run_config::RunConfig& confi
   return ArenaOverlaysFromConfig(config, agent_host::ControllerFactory(config));
 }
 
-render::ArenaOverlays ArenaOverlaysFromConfig(const run_config::RunConfig& config, const agent_host::ControllerFactory& factory) {
+render::ArenaOverlays ArenaOverlaysFromConfig(const run_config::RunConfig& config,
+                                              const agent_host::ControllerFactory& factory) {
   const kind_api::AgentPartsConfig& parts = factory.parts();
   render::ArenaOverlays overlays;
   for (const std::vector<Eigen::Vector2d>& points : factory.GoalsToDraw()) {

@@ -198,7 +198,7 @@ bool RunReporter::DrawPicture(const LogReadBack& log, const std::string& picture
     overlays.run_name = config_.name;
     overlays.verdict = world::RunVerdictName(verdict);  // as summary.json says
     overlays.sim_only = config_.sim_only;
-    overlays.violations = log.located;                  // as summary.json lists them
+    overlays.violations = log.located;  // as summary.json lists them
     render::TrajectoryPicture::Render(log.Get(), overlays, picture_path, render::RenderFormat::kPng, 1280);
     return true;
   } catch (const std::exception& e) {
@@ -213,7 +213,8 @@ world::RunVerdict RunReporter::AddReasons(const std::string& dir, const std::str
   const std::string summary_path = dir + "/" + kSummaryName;
   node::RunSummary summary = node::RunSummary::Read(summary_path);
   if (!summary.Has("verdict") || !summary.Has("verdict_reasons")) {
-    throw std::runtime_error(summary_path + ": has no verdict (clean, warning, not_ready or rejected) with "
+    throw std::runtime_error(summary_path +
+                             ": has no verdict (clean, warning, not_ready or rejected) with "
                              "verdict_reasons; is it a dream run's summary?");
   }
   const world::RunVerdict old_verdict = summary.verdict;
@@ -227,7 +228,8 @@ world::RunVerdict RunReporter::AddReasons(const std::string& dir, const std::str
   files::WriteFileAtomically(summary_path, summary.Text());
   if (verdict != old_verdict && std::filesystem::exists(dir + "/" + kPictureName)) {
     const nlohmann::ordered_json metrics = summary.metrics;
-    DrawPicture(LogReadBack(dir + "/" + kLogName, config_.world), dir + "/" + kPictureName, verdict, metrics);  // says what summary.json says
+    DrawPicture(LogReadBack(dir + "/" + kLogName, config_.world), dir + "/" + kPictureName, verdict,
+                metrics);  // says what summary.json says
   }
   return verdict;
 }

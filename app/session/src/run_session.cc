@@ -41,8 +41,7 @@ struct RunSession::Stepped {
   bool folder_replaced = false;
 };
 
-RunSession::RunSession(run_config::RunConfig config, Options options)
-    : config_(std::move(config)), options_(options) {
+RunSession::RunSession(run_config::RunConfig config, Options options) : config_(std::move(config)), options_(options) {
   try {
     factory_ = std::make_unique<agent_host::ControllerFactory>(config_);
   } catch (const std::exception& e) {
@@ -144,7 +143,8 @@ RunSession::Stepped RunSession::Step(lcm::LcmInterface& lcm, const Folder& folde
 }
 
 RunReporter RunSession::Reporter() const {
-  return RunReporter(config_, factory_.get(), factory_error_, {options_.report, options_.steps_from_command_line, options_.quiet, options_.python_runtime_dir});
+  return RunReporter(config_, factory_.get(), factory_error_,
+                     {options_.report, options_.steps_from_command_line, options_.quiet, options_.python_runtime_dir});
 }
 
 RunResult RunSession::Report(const Stepped& stepped, const std::string& dir) {

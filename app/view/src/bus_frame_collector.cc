@@ -20,9 +20,12 @@ struct NewViolations {
 
 bool WantedKind(const NewViolations& added, ViolationMark::Kind kind) {
   switch (kind) {
-    case ViolationMark::Kind::kBoundary: return added.boundary;
-    case ViolationMark::Kind::kCollision: return added.collision;
-    case ViolationMark::Kind::kObstacle: return added.obstacle;
+    case ViolationMark::Kind::kBoundary:
+      return added.boundary;
+    case ViolationMark::Kind::kCollision:
+      return added.collision;
+    case ViolationMark::Kind::kObstacle:
+      return added.obstacle;
   }
   return false;
 }
@@ -32,10 +35,8 @@ bool WantedKind(const NewViolations& added, ViolationMark::Kind kind) {
 BusFrameCollector::BusFrameCollector(lcm::LcmInterface& bus, const world::WorldParams& world,
                                      std::function<RunChoice::Clock::time_point()> now)
     : choice_(std::move(now)), locator_(world) {
-  subscription_ = bus.Subscribe(lcm::kViewChannelsRegex,
-                                [this](const std::string& channel, const void* data, int size) {
-                                  OnMessage(channel, data, size);
-                                });
+  subscription_ = bus.Subscribe(lcm::kViewChannelsRegex, [this](const std::string& channel, const void* data,
+                                                                int size) { OnMessage(channel, data, size); });
 }
 
 void BusFrameCollector::OnMessage(const std::string& channel, const void* data, int size) {
@@ -121,10 +122,14 @@ void BusFrameCollector::OnObstacles() {
 
 void BusFrameCollector::OnPoses() {
   switch (choice_.OnPoses(poses_in_.run_id, poses_in_.step)) {
-    case RunChoice::Decision::kIgnore: return;  // another run, out of sequence, or not confirmed
-    case RunChoice::Decision::kStartOver: StartRun(poses_in_.run_id); break;
+    case RunChoice::Decision::kIgnore:
+      return;  // another run, out of sequence, or not confirmed
+    case RunChoice::Decision::kStartOver:
+      StartRun(poses_in_.run_id);
+      break;
     case RunChoice::Decision::kResend:
-    case RunChoice::Decision::kNewStep: break;
+    case RunChoice::Decision::kNewStep:
+      break;
   }
   // A resend of the same step replaces it; a new step moves it to previous.
   // Swapped, not copied: the handler's cost per step stays a decode.
@@ -152,7 +157,7 @@ void BusFrameCollector::OnStatus(const run_status_t& status) {
   // those poses are the newest or the ones before, depending on the order.
   if (!added.any()) return;
   const int64_t validated = status.step - 1;
-  const robot_poses_t* poses = poses_.step == validated && poses_.num_robots > 0 ? &poses_
+  const robot_poses_t* poses = poses_.step == validated && poses_.num_robots > 0                     ? &poses_
                                : previous_poses_.step == validated && previous_poses_.num_robots > 0 ? &previous_poses_
                                                                                                      : nullptr;
   if (poses == nullptr) return;  // frames were missed (a view started mid-run): nothing to place

@@ -101,7 +101,8 @@ std::string FrameJson(const ViewFrame& frame) {
   for (const int id : frame.radio_senders) json.Integer(id);
   json.EndArray();
   json.Key("links").BeginArray();
-  for (const auto& [sender, receiver] : frame.radio_links) json.BeginArray().Integer(sender).Integer(receiver).EndArray();
+  for (const auto& [sender, receiver] : frame.radio_links)
+    json.BeginArray().Integer(sender).Integer(receiver).EndArray();
   json.EndArray();
   json.Key("violations").BeginArray();
   for (const ViolationMark& mark : frame.violations) AppendViolation(json, mark);

@@ -113,16 +113,15 @@ void HttpSession::Send(std::string_view content_type, std::string_view body, int
   response_->keep_alive(keep_alive);
   response_->prepare_payload();
   stream_.expires_after(kRequestTimeout * 4);  // a large /run.json to a slow reader
-  http::async_write(stream_, *response_,
-                    [self = shared_from_this(), keep_alive](beast::error_code error, size_t) {
-                      self->response_.reset();
-                      self->body_owner_.reset();
-                      if (error || !keep_alive) {
-                        self->Close();
-                      } else {
-                        self->Read();
-                      }
-                    });
+  http::async_write(stream_, *response_, [self = shared_from_this(), keep_alive](beast::error_code error, size_t) {
+    self->response_.reset();
+    self->body_owner_.reset();
+    if (error || !keep_alive) {
+      self->Close();
+    } else {
+      self->Read();
+    }
+  });
 }
 
 void HttpSession::Close() {

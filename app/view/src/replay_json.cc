@@ -66,7 +66,8 @@ void PoseArray(JsonWriter& json, const robot_poses_t& poses) {
 // What each robot drove with during the step that led to a frame: [v0, w0, v1, w1, ...].
 void VelocityArray(JsonWriter& json, const robot_poses_t& poses) {
   json.BeginArray();
-  for (int r = 0; r < poses.num_robots && static_cast<size_t>(r) < poses.v.size() && static_cast<size_t>(r) < poses.w.size();
+  for (int r = 0;
+       r < poses.num_robots && static_cast<size_t>(r) < poses.v.size() && static_cast<size_t>(r) < poses.w.size();
        ++r) {
     json.Number(poses.v[r], kMetres).Number(poses.w[r], kRadians);
   }
@@ -201,7 +202,8 @@ std::string RunReplayJson(const run_log::RunLog& log, const ViewSetup& setup, si
   json.EndArray();
   json.Key("located").Integer(judged.located);
   json.Key("counts").BeginArray();
-  for (const auto& at : judged.counts) json.BeginArray().Integer(at[0]).Integer(at[1]).Integer(at[2]).Integer(at[3]).EndArray();
+  for (const auto& at : judged.counts)
+    json.BeginArray().Integer(at[0]).Integer(at[1]).Integer(at[2]).Integer(at[3]).EndArray();
   json.EndArray();
   // The run's last status: what only it says (actuator warnings, rejected commands, lost robots).
   WriteStatusJson(json, "final", log.last_status() ? ViewFrame::Status::Of(*log.last_status()) : ViewFrame::Status{});

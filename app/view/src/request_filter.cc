@@ -51,7 +51,8 @@ bool RequestFilter::OriginAllowed(std::string_view origin, std::string_view host
 
 RequestFilter::Decision RequestFilter::Decide(const Request& request) const {
   if (request.version != 10 && request.version != 11) return Refuse(400, "only HTTP/1.0 and HTTP/1.1 are served");
-  if (request.method != "GET") return Refuse(405, "only GET is served, not " + std::string(request.method.substr(0, 16)));
+  if (request.method != "GET")
+    return Refuse(405, "only GET is served, not " + std::string(request.method.substr(0, 16)));
   if (request.target.size() > kMaxTargetChars) {
     return Refuse(414, "request target over " + std::to_string(kMaxTargetChars) + " characters");
   }
@@ -65,7 +66,8 @@ RequestFilter::Decision RequestFilter::Decide(const Request& request) const {
   const std::string_view path = request.target.substr(0, query_at);
   const std::string_view query = query_at == std::string_view::npos ? "" : request.target.substr(query_at + 1);
   for (const char c : path) {
-    if (!IsPathChar(c)) return Refuse(400, "request path has a character that is not served (only A-Z a-z 0-9 . _ - /)");
+    if (!IsPathChar(c))
+      return Refuse(400, "request path has a character that is not served (only A-Z a-z 0-9 . _ - /)");
   }
   for (const char c : query) {
     if (!IsQueryChar(c)) return Refuse(400, "request query has a character that is not served");

@@ -68,9 +68,12 @@ RunChoice::Decision RunChoice::OnPoses(int64_t run_id, int64_t step) {
     Heard(run_id, now).poses_step = step;
     const int64_t drawn = follower_.step();
     switch (follower_.OnPoses(run_id, step)) {
-      case lcm::WorldFollower::StepDecision::kIgnore: return Decision::kIgnore;
-      case lcm::WorldFollower::StepDecision::kResend: return Decision::kResend;
-      case lcm::WorldFollower::StepDecision::kNewStep: break;
+      case lcm::WorldFollower::StepDecision::kIgnore:
+        return Decision::kIgnore;
+      case lcm::WorldFollower::StepDecision::kResend:
+        return Decision::kResend;
+      case lcm::WorldFollower::StepDecision::kNewStep:
+        break;
     }
     if (step >= drawn) return Decision::kNewStep;
     ended_ = false;  // a confirmed step back: the run from its start again (its log played once more)

@@ -69,8 +69,8 @@ ViewServer::Impl::Impl(const Options& options) : bind_address_(options.bind_addr
                              (error == net::error::address_in_use ? " (choose another with --port)" : ""));
   }
   port_ = acceptor_.local_endpoint().port();
-  shared_ = std::make_unique<ServerShared>(
-      RequestFilter(endpoint.address().is_loopback(), port_, options.replay), options.queue_frames);
+  shared_ = std::make_unique<ServerShared>(RequestFilter(endpoint.address().is_loopback(), port_, options.replay),
+                                           options.queue_frames);
   Accept();
   thread_ = std::thread([this] {
     LowerThisThreadsPriority();

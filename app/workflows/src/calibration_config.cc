@@ -21,12 +21,22 @@ std::string CalibrationConfig::Text(int robots) {
   }
   std::string text =
       "# Written by dream export --calibration: the calibration drive (config/calibration.yaml)\n"
-      "# on " + std::to_string(robots) + " robots, run in the ideal simulator and exported open loop.\n"
-      "name: " + Name(robots) + "\n"
-      "description: " + std::to_string(robots) + " robots drive the open-loop calibration program side by side\n"
+      "# on " +
+      std::to_string(robots) +
+      " robots, run in the ideal simulator and exported open loop.\n"
+      "name: " +
+      Name(robots) +
+      "\n"
+      "description: " +
+      std::to_string(robots) +
+      " robots drive the open-loop calibration program side by side\n"
       "seed: 1\n"
-      "robots: " + std::to_string(robots) + "\n"
-      "steps: " + std::to_string(calibration_drive::CalibrationDrive::Steps()) + "  # the program's length\n"
+      "robots: " +
+      std::to_string(robots) +
+      "\n"
+      "steps: " +
+      std::to_string(calibration_drive::CalibrationDrive::Steps()) +
+      "  # the program's length\n"
       "stop_when_done: true\n"
       "world:\n"
       "  mode: lockstep\n"

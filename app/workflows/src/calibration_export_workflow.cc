@@ -27,8 +27,7 @@ CalibrationExportWorkflow::Result CalibrationExportWorkflow::Export(const Option
   if (args.robots < CalibrationConfig::kMinRobots || args.robots > CalibrationConfig::kMaxRobots) {
     throw std::runtime_error("--robots " + std::to_string(args.robots) + ": the calibration drive runs " +
                              std::to_string(CalibrationConfig::kMinRobots) + " to " +
-                             std::to_string(CalibrationConfig::kMaxRobots) +
-                             " robots (the lab's limit is 20)" +
+                             std::to_string(CalibrationConfig::kMaxRobots) + " robots (the lab's limit is 20)" +
                              (args.robots == 0 ? "; pass --robots N with --calibration" : ""));
   }
   options.strategy = bridge::Strategy::kReplay;
@@ -38,14 +37,16 @@ CalibrationExportWorkflow::Result CalibrationExportWorkflow::Export(const Option
   // Both folders are checked before the run, so a refusal wastes none.
   const std::string out_dir = args.out_dir.empty() ? (fs::path("exports") / name).string() : args.out_dir;
   if (files::RunFolderChoice::HoldsRun(out_dir)) {
-    throw std::runtime_error("--out " + out_dir + " holds a run (run.lcmlog or summary.json); an export would "
+    throw std::runtime_error("--out " + out_dir +
+                             " holds a run (run.lcmlog or summary.json); an export would "
                              "replace its config.yaml: choose another --out");
   }
   if (!args.run_dir.empty() && files::RunFolderChoice::HoldsRun(args.run_dir)) {
     throw std::runtime_error(args.run_dir + ": already holds a run (run.lcmlog or summary.json); --calibration " +
                              "writes a new one: name another folder, or leave it out (runs/" + name + ")");
   }
-  if (!args.run_dir.empty() && fs::weakly_canonical(fs::absolute(args.run_dir)) == fs::weakly_canonical(fs::absolute(out_dir))) {
+  if (!args.run_dir.empty() &&
+      fs::weakly_canonical(fs::absolute(args.run_dir)) == fs::weakly_canonical(fs::absolute(out_dir))) {
     throw std::runtime_error(args.run_dir + " is also --out: the run and its export need folders of their own");
   }
   run_config::RunConfig config = run_config::LoadRunConfig(config::ConfigNode::LoadString(config_text, name + ".yaml"));
@@ -72,7 +73,8 @@ CalibrationExportWorkflow::Result CalibrationExportWorkflow::Export(const Option
   if (args.out_dir.empty()) fs::create_directories("exports", error);
   try {
     done.exported = bridge::ExportSubmission(run_dir, out_dir, options);
-    *out_ << "\n" << done.exported->instructions << "\nwritten: " << done.exported->out_dir << "/UPLOAD.txt, "
+    *out_ << "\n"
+          << done.exported->instructions << "\nwritten: " << done.exported->out_dir << "/UPLOAD.txt, "
           << done.exported->upload_dir << "/ (" << done.exported->uploads.size()
           << " files); the simulated run: " << run_dir << "\n";
   } catch (const bridge::ExportRefused& refused) {

@@ -86,10 +86,12 @@ std::string CheckSubmission::SimulatorChecked() const {
     named = "$ROBOTARIUM_PYTHON_SIMULATOR " + dir;
   }
   if (!dir.empty() && !fs::is_directory(dir)) {
-    throw std::runtime_error(named + ": no such folder; pass a checkout of robotarium_python_simulator, or leave it out");
+    throw std::runtime_error(named +
+                             ": no such folder; pass a checkout of robotarium_python_simulator, or leave it out");
   }
   if (!dir.empty() && !fs::is_regular_file(fs::path(dir) / "rps" / "robotarium.py")) {
-    throw std::runtime_error(named + ": has no rps/robotarium.py, so it is no checkout of "
+    throw std::runtime_error(named +
+                             ": has no rps/robotarium.py, so it is no checkout of "
                              "robotarium/robotarium_python_simulator (git clone it, or leave it out)");
   }
   return dir;
@@ -97,9 +99,9 @@ std::string CheckSubmission::SimulatorChecked() const {
 
 std::vector<std::string> CheckSubmission::RunnerArgv(const std::string& workdir, const std::string& report_path) const {
   std::vector<std::string> argv = {options_.python, options_.runner_script,
-                                   "--upload", (fs::path(options_.export_dir) / "upload").string(),
-                                   "--workdir", workdir,
-                                   "--report", report_path};
+                                   "--upload",      (fs::path(options_.export_dir) / "upload").string(),
+                                   "--workdir",     workdir,
+                                   "--report",      report_path};
   if (options_.standin) argv.push_back("--standin");
   if (!options_.simulator.empty()) argv.insert(argv.end(), {"--simulator", options_.simulator});
   if (options_.require_official) argv.push_back("--require-official");
@@ -124,8 +126,9 @@ std::optional<CheckSubmission::Result> CheckSubmission::RunRunner(const files::O
   }
   if (ran.exit_code == kRunnerNoOfficialSimulator) {
     ended.outcome = Outcome::kNoOfficialSimulator;
-    ended.error = "no official Robotarium simulator found (--simulator DIR, $ROBOTARIUM_PYTHON_SIMULATOR, or pip "
-                  "install it); leave out --require-official to use the stand-in";
+    ended.error =
+        "no official Robotarium simulator found (--simulator DIR, $ROBOTARIUM_PYTHON_SIMULATOR, or pip "
+        "install it); leave out --require-official to use the stand-in";
     return ended;
   }
   if (!fs::exists(report_path)) {
@@ -140,9 +143,9 @@ std::optional<CheckSubmission::Result> CheckSubmission::RunRunner(const files::O
   }
   const std::string simulator = report->value("simulator", "?");
   out_ << "simulator: "
-       << (simulator == "official" ? "the official Robotarium simulator (" +
-                                         report->value("simulator_path", std::string()) + ")"
-                                   : std::string("DREAM's stand-in (the official one was not found)"))
+       << (simulator == "official"
+               ? "the official Robotarium simulator (" + report->value("simulator_path", std::string()) + ")"
+               : std::string("DREAM's stand-in (the official one was not found)"))
        << "\n";
   if (!report->value("ok", false)) {
     ended.outcome = report->value("startup_timeout", false) ? Outcome::kStartupTimedOut : Outcome::kScriptFailed;
@@ -160,8 +163,7 @@ void CheckSubmission::CompareWithRun(const std::string& run_dir, const std::stri
          << " is not there (pass --run DIR)\n";
     return;
   }
-  const bridge::RunComparison comparison =
-      bridge::CompareRunsAndWrite(run_dir, dir, dir, options_.python_runtime_dir);
+  const bridge::RunComparison comparison = bridge::CompareRunsAndWrite(run_dir, dir, dir, options_.python_runtime_dir);
   out_ << "\n" << comparison.Text();
   out_ << "tracking error against " << run_dir << ": RMS " << Cm(comparison.position_m.Rms()) << ", max "
        << Cm(comparison.position_m.max()) << "\n";
@@ -181,8 +183,8 @@ CheckSubmission::Result CheckSubmission::Run() const {
   const std::string run_dir = options_.run_dir.empty() ? exported.source_run : options_.run_dir;
   std::error_code same_error;
   if (!options_.out_dir.empty() && !run_dir.empty() && fs::equivalent(options_.out_dir, run_dir, same_error)) {
-    throw std::runtime_error("--out " + options_.out_dir + " is the simulated run the check compares with (" +
-                             run_dir + "); the imported lab run would replace it: choose another --out");
+    throw std::runtime_error("--out " + options_.out_dir + " is the simulated run the check compares with (" + run_dir +
+                             "); the imported lab run would replace it: choose another --out");
   }
   // Chosen and locked before the script runs: a second check into the same
   // folder is refused before it can write lab_files/.
@@ -315,7 +317,8 @@ void CheckSubmission::PrintAgreement(const bridge::CommandAgreement& agreement, 
                 agreement.MaxWDifference());
   if (agreement.Same()) {
     out_ << "your controllers on the lab's poses send what the submission sent (" << largest << " over "
-         << agreement.steps() << " steps):\nwhat differs from the simulated run comes from the poses the lab "
+         << agreement.steps()
+         << " steps):\nwhat differs from the simulated run comes from the poses the lab "
             "gave them (the start-up drive leaves up to 5 mm), not from the controllers\n";
     return;
   }

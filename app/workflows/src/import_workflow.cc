@@ -18,7 +18,6 @@ std::string SecondsText(double seconds) { return fmt::format("{:.2f} s", seconds
 
 }  // namespace
 
-
 namespace fs = std::filesystem;
 
 std::string ImportWorkflow::ResultFile(const std::string& path) {
@@ -31,8 +30,8 @@ std::string ImportWorkflow::ResultFile(const std::string& path) {
                            bridge::SubmissionFiles::kResultMat + "; pass the file the lab returned");
 }
 
-std::optional<world::LabVerifierRules::Declaration> ImportWorkflow::Declared(
-    const bridge::ExportedSubmission& exported, int robots, double duration_s) {
+std::optional<world::LabVerifierRules::Declaration> ImportWorkflow::Declared(const bridge::ExportedSubmission& exported,
+                                                                             int robots, double duration_s) {
   if (robots <= 0 && duration_s <= 0) return std::nullopt;
   world::LabVerifierRules::Declaration declared = exported.UploadDeclaration();
   if (robots > 0) declared.num_robots = robots;
@@ -78,9 +77,8 @@ void ImportWorkflow::PrintLabRun(const bridge::ImportedRun& imported) const {
     out_ << "note: the lab's clock went back " << lab.clock_steps_back << " times; those stamps were held\n";
   }
   out_ << "violations on the lab's poses: " << world::RunVerdictName(report.verdict) << " (boundary "
-       << imported.violations.boundary_errors << ", collision " << imported.violations.collision_errors
-       << ", actuator " << imported.violations.actuator_errors << ", obstacle "
-       << imported.violations.obstacle_collisions << ")\n";
+       << imported.violations.boundary_errors << ", collision " << imported.violations.collision_errors << ", actuator "
+       << imported.violations.actuator_errors << ", obstacle " << imported.violations.obstacle_collisions << ")\n";
   const std::string dir = fs::path(imported.log_path).parent_path().string();
   out_ << "log:     " << imported.log_path << "\nsummary: " << dir << "/" << session::RunReporter::kSummaryName
        << "\npicture: " << dir << "/" << session::RunReporter::kPictureName << "\n";
@@ -89,7 +87,8 @@ void ImportWorkflow::PrintLabRun(const bridge::ImportedRun& imported) const {
 void ImportWorkflow::PrintVerdict(const Result& result) const {
   const bridge::ImportedRun& imported = result.imported;
   out_ << "verdict: " << world::RunVerdictName(result.verdict()) << " (declared " << imported.declared.num_robots
-       << " robots, " << SecondsText(imported.declared.duration_s) << "; " << imported.lab.iterations << " iterations)\n";
+       << " robots, " << SecondsText(imported.declared.duration_s) << "; " << imported.lab.iterations
+       << " iterations)\n";
   for (const world::VerdictReason& reason : result.report.judgement.reasons()) out_ << "  - " << reason.Text() << "\n";
 }
 

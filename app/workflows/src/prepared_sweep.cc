@@ -75,7 +75,8 @@ struct PreparedSweep::RunConfigMaker {
   std::set<std::string> driven_start_poses;  ///< start poses whose drive was tried
 };
 
-PreparedSweep::PreparedSweep(const SweepSettings& settings, const run_config::RunConfig& base, const std::string& out_dir)
+PreparedSweep::PreparedSweep(const SweepSettings& settings, const run_config::RunConfig& base,
+                             const std::string& out_dir)
     : plan_(SweepPlan::FromRuns({}, {})), base_name_(base.name) {
   const std::string base_text = config::ConfigNode::ReadFile(settings.config_path);
   std::vector<uint64_t> seeds;
@@ -99,8 +100,15 @@ PreparedSweep::PreparedSweep(const SweepSettings& settings, const run_config::Ru
   }
   plan_ = SweepPlan(seeds, parameters, zipped);
 
-  RunConfigMaker maker{settings, base_text, SweepPlan::ParseBase(base_text, settings.config_path),
-                       agent_host::ControllerRegistry::ForConfig(base), fs::path(out_dir), {}, {}, {}, {}};
+  RunConfigMaker maker{settings,
+                       base_text,
+                       SweepPlan::ParseBase(base_text, settings.config_path),
+                       agent_host::ControllerRegistry::ForConfig(base),
+                       fs::path(out_dir),
+                       {},
+                       {},
+                       {},
+                       {}};
   for (const SweepPlan::Run& run : plan_.runs()) PrepareRun(maker, run);
 }
 
@@ -155,7 +163,8 @@ void PreparedSweep::PrepareRun(RunConfigMaker& maker, const SweepPlan::Run& run)
     const std::string relative = module_source->relative.string();
     std::shared_ptr<const ModuleCopy>& shared = maker.module_texts[module_source->source.string() + "\n" + relative];
     if (!shared) {
-      shared = std::make_shared<const ModuleCopy>(ModuleCopy{relative, files::ReadFileText(module_source->source.string())});
+      shared =
+          std::make_shared<const ModuleCopy>(ModuleCopy{relative, files::ReadFileText(module_source->source.string())});
     }
     module = shared;
     root["controller"][module_source->key] = relative;

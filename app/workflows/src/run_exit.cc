@@ -8,8 +8,8 @@
 namespace dream::workflows {
 
 std::string RunExit::Text() const {
-  std::string text = std::to_string(exit_code) + " " + world::PrintfText("%.3f", wall_time_s) + " " +
-                     (timed_out ? "1" : "0") + "\n";
+  std::string text =
+      std::to_string(exit_code) + " " + world::PrintfText("%.3f", wall_time_s) + " " + (timed_out ? "1" : "0") + "\n";
   std::string line;
   for (char c : problem) line += (c == '\n' || c == '\r') ? ' ' : c;
   return line.empty() ? text : text + line.substr(0, 1000) + "\n";

@@ -33,7 +33,8 @@ bool RunFolderLock::HeldElsewhere(const std::string& dir) {
 RunFolderLock::RunFolderLock(const std::string& dir) {
   const std::string path = LockPath(dir);
   fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_NONBLOCK | O_NOFOLLOW | O_CLOEXEC | O_NOCTTY, 0644);
-  if (fd_ < 0) throw std::runtime_error("cannot lock the run folder " + dir + ": " + path + ": " + std::strerror(errno));
+  if (fd_ < 0)
+    throw std::runtime_error("cannot lock the run folder " + dir + ": " + path + ": " + std::strerror(errno));
   struct stat status {};
   if (::fstat(fd_, &status) != 0 || !S_ISREG(status.st_mode)) {
     ::close(fd_);

@@ -42,9 +42,11 @@ SlurmJobs::SlurmJobs(const SweepFolder& folder) : folder_(folder) {
     std::string id;
     fields >> kind >> id;
     size_t offset = 0;
-    const bool ok = IsJobId(id) && ((kind == "array" && (fields >> offset) && offset < (size_t{1} << 30)) || kind == "table");
+    const bool ok =
+        IsJobId(id) && ((kind == "array" && (fields >> offset) && offset < (size_t{1} << 30)) || kind == "table");
     if (!ok || arrays_.size() + table_jobs_.size() >= kMaxJobs) {
-      throw std::runtime_error(path + ":" + std::to_string(number) + ": expected 'array JOBID OFFSET' or 'table JOBID'");
+      throw std::runtime_error(path + ":" + std::to_string(number) +
+                               ": expected 'array JOBID OFFSET' or 'table JOBID'");
     }
     if (kind == "array") {
       arrays_.push_back({id, offset});
@@ -65,7 +67,8 @@ void SlurmJobs::RecordTableJob(const std::string& job_id) {
 }
 
 void SlurmJobs::Write() const {
-  std::string text = "# dream sweep's Slurm jobs, oldest first: 'array JOBID OFFSET' (task T runs run OFFSET+T), 'table JOBID'\n";
+  std::string text =
+      "# dream sweep's Slurm jobs, oldest first: 'array JOBID OFFSET' (task T runs run OFFSET+T), 'table JOBID'\n";
   for (const ArrayJob& job : arrays_) text += "array " + job.job_id + " " + std::to_string(job.offset) + "\n";
   for (const std::string& id : table_jobs_) text += "table " + id + "\n";
   files::WriteFileAtomically(folder_.Path(kJobsFile), text);
@@ -93,7 +96,8 @@ void SlurmJobs::ApplyListing(const std::string& listing, std::map<size_t, SlurmT
     if (!IsJobId(job) || !IsJobId(task) || task.size() > 9) continue;  // "123_[4-9%2]": not one task
     for (const ArrayJob& array : arrays_) {
       if (array.job_id != job) continue;
-      if (auto state = SlurmTaskState::FromSlurmWord(line.substr(bar + 1))) states[array.offset + std::stoul(task)] = *state;
+      if (auto state = SlurmTaskState::FromSlurmWord(line.substr(bar + 1)))
+        states[array.offset + std::stoul(task)] = *state;
     }
   }
 }
@@ -107,7 +111,8 @@ std::map<size_t, SlurmTaskState> SlurmJobs::TaskStates(CommandRunner* commands, 
     std::error_code error;
     for (const auto& entry : std::filesystem::directory_iterator(folder_.Path("slurm"), error)) {
       const std::string name = entry.path().filename().string();
-      if (name.rfind(prefix, 0) != 0 || name.size() < prefix.size() + 5 || name.substr(name.size() - 4) != ".out") continue;
+      if (name.rfind(prefix, 0) != 0 || name.size() < prefix.size() + 5 || name.substr(name.size() - 4) != ".out")
+        continue;
       const std::string task = name.substr(prefix.size(), name.size() - 4 - prefix.size());
       if (!IsJobId(task) || task.size() > 9) continue;
       if (auto state = SlurmTaskState::FromTaskLog(ReadFileTail(entry.path().string(), kLogTailBytes))) {
@@ -120,8 +125,8 @@ std::map<size_t, SlurmTaskState> SlurmJobs::TaskStates(CommandRunner* commands, 
   for (const ArrayJob& array : arrays_) ids.push_back(array.job_id);
   const std::string joined = JoinedIds(ids);
   // sacct fails where the cluster keeps no accounting; the logs stand then.
-  const CommandRunner::Result sacct =
-      commands->Run({"sacct", "--noheader", "--parsable2", "--allocations", "--jobs=" + joined, "--format=JobID,State"});
+  const CommandRunner::Result sacct = commands->Run(
+      {"sacct", "--noheader", "--parsable2", "--allocations", "--jobs=" + joined, "--format=JobID,State"});
   if (sacct.exit_code == 0) ApplyListing(sacct.output, states);
   const CommandRunner::Result squeue =
       commands->Run({"squeue", "--noheader", "--array", "--jobs=" + joined, "--format=%i|%T"});
@@ -129,7 +134,9 @@ std::map<size_t, SlurmTaskState> SlurmJobs::TaskStates(CommandRunner* commands, 
     ApplyListing(squeue.output, states);
   } else if (squeue.output.find("Invalid job id") == std::string::npos && queue_note != nullptr) {
     // (Slurm forgets ended jobs after MinJobAge: "Invalid job id" means none is queued.)
-    *queue_note = "squeue failed (" + (squeue.output.empty() ? "exit " + std::to_string(squeue.exit_code) : squeue.output.substr(0, 200)) + ")";
+    *queue_note = "squeue failed (" +
+                  (squeue.output.empty() ? "exit " + std::to_string(squeue.exit_code) : squeue.output.substr(0, 200)) +
+                  ")";
   }
   return states;
 }

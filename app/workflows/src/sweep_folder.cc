@@ -85,8 +85,9 @@ bool ParseIndex(const std::string& text, size_t& value) {
 }  // namespace
 
 const std::vector<std::string>& SweepFolder::RunOutputFiles() {
-  static const std::vector<std::string> files = {RunExit::kFileName, "summary.json",   "run.lcmlog", "run.lcmlog.part",
-                                                 "refused.lcmlog",   "trajectories.png", "output.txt"};
+  static const std::vector<std::string> files = {RunExit::kFileName, "summary.json",   "run.lcmlog",
+                                                 "run.lcmlog.part",  "refused.lcmlog", "trajectories.png",
+                                                 "output.txt"};
   return files;
 }
 
@@ -97,8 +98,8 @@ SweepFolder::SweepFolder(const std::string& dir) : dir_(fs::absolute(dir).lexica
 bool SweepFolder::IsRunName(const std::string& name) {
   if (name.empty() || name.size() > 4096 || name == "." || name == "..") return false;
   for (char c : name) {
-    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' ||
-                    c == '-' || c == '_';
+    const bool ok =
+        (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' || c == '-' || c == '_';
     if (!ok) return false;
   }
   return true;
@@ -109,14 +110,17 @@ void SweepFolder::CheckFolderPath(const std::string& dir) {
   for (char c : path) {
     const auto byte = static_cast<unsigned char>(c);
     if (byte < 0x20 || byte == 0x7f) {
-      throw std::invalid_argument("--out " + Escaped(dir) + ": a sweep folder whose path holds a control character (\\n, \\t, ...) "
-                                  "would split the lines of commands.txt and of any scheduler's; choose another folder");
+      throw std::invalid_argument(
+          "--out " + Escaped(dir) +
+          ": a sweep folder whose path holds a control character (\\n, \\t, ...) "
+          "would split the lines of commands.txt and of any scheduler's; choose another folder");
     }
   }
 }
 
 std::string SweepFolder::RunDir(const std::string& run_name) const {
-  if (!IsRunName(run_name)) throw std::invalid_argument("'" + Escaped(run_name.substr(0, 80)) + "' is no run folder name of a sweep");
+  if (!IsRunName(run_name))
+    throw std::invalid_argument("'" + Escaped(run_name.substr(0, 80)) + "' is no run folder name of a sweep");
   return dir_ + "/runs/" + run_name;
 }
 
@@ -153,7 +157,9 @@ SweepPlan SweepFolder::ReadPlan() const {
   std::istringstream in(ReadSweepFile(path, kMaxPlanBytes, dir_));
   std::string line;
   size_t number = 0;
-  auto bad = [&](const std::string& why) { return std::runtime_error(path + ":" + std::to_string(number) + ": " + why); };
+  auto bad = [&](const std::string& why) {
+    return std::runtime_error(path + ":" + std::to_string(number) + ": " + why);
+  };
   std::vector<std::string> keys;
   std::vector<SweepPlan::Run> runs;
   std::set<std::string> names;
@@ -171,18 +177,21 @@ SweepPlan SweepFolder::ReadPlan() const {
       continue;
     }
     if (fields.size() != 3 + keys.size()) {
-      throw bad("expected " + std::to_string(3 + keys.size()) + " tab-separated fields, got " + std::to_string(fields.size()));
+      throw bad("expected " + std::to_string(3 + keys.size()) + " tab-separated fields, got " +
+                std::to_string(fields.size()));
     }
     SweepPlan::Run run;
     if (!ParseIndex(fields[0], run.index) || run.index != runs.size()) {
       throw bad("expected run number " + std::to_string(runs.size()) + ", got '" + fields[0].substr(0, 20) + "'");
     }
     if (runs.size() >= kMaxSweepRuns) throw bad("more than " + std::to_string(kMaxSweepRuns) + " runs");
-    if (!IsRunName(fields[1]) || !names.insert(fields[1]).second) throw bad("'" + fields[1].substr(0, 80) + "' is no run folder name, or a repeated one");
+    if (!IsRunName(fields[1]) || !names.insert(fields[1]).second)
+      throw bad("'" + fields[1].substr(0, 80) + "' is no run folder name, or a repeated one");
     run.name = fields[1];
     try {
       const std::vector<uint64_t> seed = ParseSeedList(fields[2]);
-      if (seed.size() != 1 || fields[2].find_first_of("-,") != std::string::npos) throw std::invalid_argument("a range");
+      if (seed.size() != 1 || fields[2].find_first_of("-,") != std::string::npos)
+        throw std::invalid_argument("a range");
       run.seed = seed[0];
     } catch (const std::invalid_argument&) {
       throw bad("'" + fields[2].substr(0, 30) + "' is not a seed");
@@ -218,16 +227,24 @@ void SweepFolder::WriteRunScript(const std::string& dream_path) const {
       "# It holds the run folder's lock (.dream.lock, which its dream run inherits) from before it\n"
       "# clears the folder until exit.txt is written, and refuses a plan.tsv changed since the sweep\n"
       "# was planned, a run name that could leave runs/, a run folder that is a link, a running run.\n"
-      "out=" + ShellQuoted(dir_) + "\n"
-      "dream=" + ShellQuoted(dream_path) + "\n"
-      "plan_sha256=" + plan_sha256 + "\n"
-      "case \"${1:-}\" in ''|*[!0-9]*) echo \"run.sh: usage: sh run.sh N (N: a run number of $out/plan.tsv)\" >&2; exit 2;; esac\n"
+      "out=" +
+      ShellQuoted(dir_) +
+      "\n"
+      "dream=" +
+      ShellQuoted(dream_path) +
+      "\n"
+      "plan_sha256=" +
+      plan_sha256 +
+      "\n"
+      "case \"${1:-}\" in ''|*[!0-9]*) echo \"run.sh: usage: sh run.sh N (N: a run number of $out/plan.tsv)\" >&2; "
+      "exit 2;; esac\n"
       "if [ \"$(sha256sum < \"$out/plan.tsv\" | cut -d ' ' -f 1)\" != \"$plan_sha256\" ]; then\n"
       "  echo \"run.sh: $out/plan.tsv changed since the sweep was planned; run $1 not run\" >&2; exit 2\n"
       "fi\n"
       "name=$(awk -F '\\t' -v i=\"$1\" '$1 == i { print $2; exit }' \"$out/plan.tsv\")\n"
       "if [ -z \"$name\" ]; then echo \"run.sh: no run $1 in $out/plan.tsv\" >&2; exit 2; fi\n"
-      "case \"$name\" in .|..|*[!A-Za-z0-9._-]*) echo \"run.sh: run $1 of $out/plan.tsv is named '$name', no run folder name; not run\" >&2; exit 2;; esac\n"
+      "case \"$name\" in .|..|*[!A-Za-z0-9._-]*) echo \"run.sh: run $1 of $out/plan.tsv is named '$name', no run "
+      "folder name; not run\" >&2; exit 2;; esac\n"
       "dir=\"$out/runs/$name\"\n"
       "if [ -L \"$out/runs\" ] || [ -L \"$dir\" ] || [ ! -d \"$dir\" ]; then\n"
       "  echo \"run.sh: $dir is not a run folder of this sweep (missing, or a symbolic link); not run\" >&2; exit 2\n"
@@ -235,14 +252,18 @@ void SweepFolder::WriteRunScript(const std::string& dream_path) const {
       "cd \"$dir\" || exit 2\n"
       "exec 9>>.dream.lock || exit 2\n"
       "# (waits a little: dream sweep status holds a run's lock for an instant to see whether it runs)\n"
-      "if ! flock -w 5 9; then echo \"run.sh: run $name is still running (a process holds $dir/.dream.lock); not touched\" >&2; exit 75; fi\n"
-      "rm -f exit.txt exit.txt.part summary.json run.lcmlog run.lcmlog.part refused.lcmlog trajectories.png output.txt\n"
+      "if ! flock -w 5 9; then echo \"run.sh: run $name is still running (a process holds $dir/.dream.lock); not "
+      "touched\" >&2; exit 75; fi\n"
+      "rm -f exit.txt exit.txt.part summary.json run.lcmlog run.lcmlog.part refused.lcmlog trajectories.png "
+      "output.txt\n"
       "start=$(date +%s%N)\n"
-      "DREAM_OUTPUT_LOCK_FD=9 \"$dream\" run \"$dir/config.yaml\" --out \"$dir\" > \"$dir/output.txt\" 2>&1 < /dev/null\n"
+      "DREAM_OUTPUT_LOCK_FD=9 \"$dream\" run \"$dir/config.yaml\" --out \"$dir\" > \"$dir/output.txt\" 2>&1 < "
+      "/dev/null\n"
       "code=$?\n"
       "end=$(date +%s%N)\n"
       "ms=$(( (end - start) / 1000000 ))\n"
-      "printf '%d %d.%03d 0\\n' \"$code\" $((ms / 1000)) $((ms % 1000)) > exit.txt.part && mv -f exit.txt.part exit.txt\n"
+      "printf '%d %d.%03d 0\\n' \"$code\" $((ms / 1000)) $((ms % 1000)) > exit.txt.part && mv -f exit.txt.part "
+      "exit.txt\n"
       "exit \"$code\"\n";
   files::WriteFileAtomically(Path(kRunScript), text);
 }
@@ -321,8 +342,8 @@ SweepRunResult SweepFolder::CollectRun(const SweepPlan::Run& run, const std::opt
   std::error_code error;
   for (const char* trace : {"run.lcmlog.part", "run.lcmlog", "summary.json", "output.txt"}) {
     if (fs::exists(dir + "/" + trace, error)) {
-      return SweepRunResult::LostRun(run, "killed before it ended (" + std::string(trace) +
-                                              " but no exit.txt; dream sweep resume runs it again)");
+      return SweepRunResult::LostRun(
+          run, "killed before it ended (" + std::string(trace) + " but no exit.txt; dream sweep resume runs it again)");
     }
   }
   return SweepRunResult::NotRun(run, "never started");

@@ -42,7 +42,8 @@ std::vector<std::string> SweepInputs::Changed(const SweepFolder& folder, const s
   const std::string record_path = folder.Path(kFileName);
   std::error_code error;
   if (!std::filesystem::exists(std::filesystem::symlink_status(record_path, error))) {
-    if (unchecked != nullptr) *unchecked = "no " + std::string(kFileName) + " (a sweep planned by an older dream): its inputs are not checked";
+    if (unchecked != nullptr)
+      *unchecked = "no " + std::string(kFileName) + " (a sweep planned by an older dream): its inputs are not checked";
     return {};
   }
   // Line 1: the base config, 2: sweep.json, 3: plan.tsv, as Record writes them.

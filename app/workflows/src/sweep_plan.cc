@@ -52,7 +52,8 @@ std::string SweepPlan::Run::Label() const {
   return label;
 }
 
-SweepPlan::SweepPlan(const std::vector<uint64_t>& seeds, const std::vector<config_overrides::SweepParameter>& parameters,
+SweepPlan::SweepPlan(const std::vector<uint64_t>& seeds,
+                     const std::vector<config_overrides::SweepParameter>& parameters,
                      const std::vector<config_overrides::SweepParameter>& zipped) {
   if (seeds.empty()) throw std::invalid_argument("--seeds: no seeds to run");
   // Each --set is a dimension of its own; the --zip keys are one dimension
@@ -106,7 +107,8 @@ SweepPlan::SweepPlan(const std::vector<uint64_t>& seeds, const std::vector<confi
 void SweepPlan::AddKey(const config_overrides::SweepParameter& parameter, const std::string& option) {
   for (const std::string& key : keys_) {
     if (key == parameter.key) {
-      throw std::invalid_argument(option + " " + key + ": the key is swept already; give each key once, with all its "
+      throw std::invalid_argument(option + " " + key +
+                                  ": the key is swept already; give each key once, with all its "
                                   "values (in one --set, or in one --zip to vary it with other keys)");
     }
   }
@@ -139,7 +141,8 @@ SweepPlan SweepPlan::FromRuns(std::vector<std::string> parameter_keys, std::vect
   const std::vector<Run>& runs_ = plan.runs_;
   const std::vector<std::string>& keys_ = plan.keys_;
   for (size_t i = 0; i < runs_.size(); ++i) {
-    if (runs_[i].index != i) throw std::invalid_argument("run " + runs_[i].name + " is not number " + std::to_string(i));
+    if (runs_[i].index != i)
+      throw std::invalid_argument("run " + runs_[i].name + " is not number " + std::to_string(i));
     if (runs_[i].parameters.size() != keys_.size()) {
       throw std::invalid_argument("run " + runs_[i].name + " has " + std::to_string(runs_[i].parameters.size()) +
                                   " values for " + std::to_string(keys_.size()) + " keys");
@@ -179,14 +182,16 @@ void SweepPlan::ApplyRun(YAML::Node& root, const std::string& source_name, const
   // starting from the base config's (see `plugin_dir:` in config/README.md).
   if (read_only["plugins"].IsDefined() && !read_only["plugin_dir"].IsDefined()) {
     const std::string base_dir = std::filesystem::absolute(source_name).parent_path().lexically_normal().string();
-    config_overrides::ApplyConfigOverride(root, "plugin_dir", "'" + EscapedForSingleQuotes(base_dir) + "'", source_name);
+    config_overrides::ApplyConfigOverride(root, "plugin_dir", "'" + EscapedForSingleQuotes(base_dir) + "'",
+                                          source_name);
   }
   // So must a relative realism file of the base config (one given with
   // --set is absolute by now).
   const YAML::Node world = read_only["world"];  // a missing key's node may only be asked IsDefined()
   const YAML::Node realism = world.IsDefined() && world.IsMap() ? world["realism"] : YAML::Node();
   const YAML::Node realism_file = realism.IsDefined() && realism.IsMap() ? realism["file"] : YAML::Node();
-  if (realism_file.IsDefined() && realism_file.IsScalar() && std::filesystem::path(realism_file.Scalar()).is_relative()) {
+  if (realism_file.IsDefined() && realism_file.IsScalar() &&
+      std::filesystem::path(realism_file.Scalar()).is_relative()) {
     const std::filesystem::path base_dir = std::filesystem::absolute(source_name).parent_path();
     root["world"]["realism"]["file"] = (base_dir / realism_file.Scalar()).lexically_normal().string();
   }

@@ -18,9 +18,10 @@ std::string OtherRunsSummary(const SweepPlan::Run& run, const node::RunSummary& 
   }
   const std::string& name = summary.run;
   const std::string suffix = "_" + run.name;
-  const bool names_run =
-      name == run.name || (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0);
-  if (!names_run) return "summary.json is not this run's: it is run '" + name.substr(0, 80) + "'s, not " + run.name + "'s";
+  const bool names_run = name == run.name || (name.size() > suffix.size() &&
+                                              name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0);
+  if (!names_run)
+    return "summary.json is not this run's: it is run '" + name.substr(0, 80) + "'s, not " + run.name + "'s";
   if (summary.run_id.empty()) return "summary.json names no run_id";
   return {};
 }
@@ -82,8 +83,7 @@ SweepRunResult SweepRunResult::Judge(const SweepPlan::Run& run, int exit_code, b
   }
   // Without a goal of its own a run can be clean but never a success.
   result.success = result.status == Status::kRan && result.verdict != world::RunVerdict::kRejected &&
-                   result.collisions() == 0 &&
-                   result.goal.has_criterion && result.goal.met;
+                   result.collisions() == 0 && result.goal.has_criterion && result.goal.met;
   return result;
 }
 
@@ -106,8 +106,8 @@ void SweepRunResult::RefuseSharedRunIds(std::vector<SweepRunResult>& results) {
       const SweepRunResult& other = results[copy == i ? first->second : i];
       result.status = Status::kFailed;
       result.success = false;
-      result.problem = "summary.json has the run id " + result.run_id + " of run " + other.run.name +
-                       " too: one is a copy";
+      result.problem =
+          "summary.json has the run id " + result.run_id + " of run " + other.run.name + " too: one is a copy";
     }
   }
 }

@@ -114,12 +114,13 @@ std::string SweepTable::Csv() const {
     for (const auto& parameter : r.run.parameters) csv += "," + CsvField(parameter.second);
     csv += std::string(",") + StatusName(r.status) + "," + (r.success ? "true" : "false") + "," +
            std::to_string(r.exit_code) + "," + CsvField(r.end ? node::EndName(*r.end) : "") + "," +
-           CsvField(r.verdict ? world::RunVerdictName(*r.verdict) : "") + "," +
-           std::to_string(r.steps) + "," + StepOrEmpty(r.goal.completion_step, "") + "," +
-           (r.min_distance_m ? Fixed(*r.min_distance_m, 4) : std::string()) + "," + std::to_string(r.violations.boundary_errors) +
-           "," + std::to_string(r.violations.collision_errors) + "," + std::to_string(r.violations.actuator_errors) + "," +
-           std::to_string(r.violations.obstacle_collisions) + "," + (r.has_summary ? (r.goal.met ? "true" : "false") : "") + "," +
-           CsvField(r.goal.detail) + "," + Fixed(r.wall_time_s, 2) + "," + CsvField(r.problem) + "\n";
+           CsvField(r.verdict ? world::RunVerdictName(*r.verdict) : "") + "," + std::to_string(r.steps) + "," +
+           StepOrEmpty(r.goal.completion_step, "") + "," +
+           (r.min_distance_m ? Fixed(*r.min_distance_m, 4) : std::string()) + "," +
+           std::to_string(r.violations.boundary_errors) + "," + std::to_string(r.violations.collision_errors) + "," +
+           std::to_string(r.violations.actuator_errors) + "," + std::to_string(r.violations.obstacle_collisions) + "," +
+           (r.has_summary ? (r.goal.met ? "true" : "false") : "") + "," + CsvField(r.goal.detail) + "," +
+           Fixed(r.wall_time_s, 2) + "," + CsvField(r.problem) + "\n";
   }
   return csv;
 }
@@ -150,8 +151,8 @@ std::string SweepTable::SummaryMarkdown(const std::vector<std::pair<std::string,
                             : std::string("-")) +
         " |\n";
   md += "| violations, all runs | boundary " + std::to_string(s.violations.boundary_errors) + ", collision " +
-        std::to_string(s.violations.collision_errors) + ", actuator " + std::to_string(s.violations.actuator_errors) + ", obstacle " +
-        std::to_string(s.violations.obstacle_collisions) + " |\n";
+        std::to_string(s.violations.collision_errors) + ", actuator " + std::to_string(s.violations.actuator_errors) +
+        ", obstacle " + std::to_string(s.violations.obstacle_collisions) + " |\n";
   return md;
 }
 
@@ -171,9 +172,10 @@ std::string SweepTable::Markdown(const std::string& title,
     for (const auto& parameter : r.run.parameters) md += " " + MarkdownCell(parameter.second) + " |";
     md += " " + MarkdownCell(r.ShortOutcomeText()) + " | " + std::to_string(r.steps) + " | " +
           StepOrEmpty(r.goal.completion_step, "-") + " | " + (r.min_distance_m ? Fixed(*r.min_distance_m, 4) : "-") +
-          " | " + std::to_string(r.violations.boundary_errors) + " | " + std::to_string(r.violations.collision_errors) + " | " +
-          std::to_string(r.violations.actuator_errors) + " | " + std::to_string(r.violations.obstacle_collisions) + " | " +
-          MarkdownCell(r.has_summary ? r.goal.detail : "-") + " |\n";
+          " | " + std::to_string(r.violations.boundary_errors) + " | " + std::to_string(r.violations.collision_errors) +
+          " | " + std::to_string(r.violations.actuator_errors) + " | " +
+          std::to_string(r.violations.obstacle_collisions) + " | " + MarkdownCell(r.has_summary ? r.goal.detail : "-") +
+          " |\n";
   }
   return md;
 }

@@ -48,21 +48,24 @@ void Count(SweepValueStats::Group& group, const SweepRunResult& r) {
 
 std::string Cell(const std::string& text) {
   std::string cell;
-  for (char c : text) cell += c == '|' ? std::string("\\|") : (c == '\n' || c == '\r') ? std::string(" ") : std::string(1, c);
+  for (char c : text)
+    cell += c == '|' ? std::string("\\|") : (c == '\n' || c == '\r') ? std::string(" ") : std::string(1, c);
   return cell;
 }
 
 std::string Row(const SweepValueStats::Group& g) {
   const std::string success =
       g.judged > 0 && g.without_goal == g.judged ? std::string("no goal declared")
-      : g.judged > 0 ? std::to_string(g.succeeded) + " of " + std::to_string(g.judged) + " (" +
-                         world::PrintfText("%.1f", 100.0 * static_cast<double>(g.succeeded) / static_cast<double>(g.judged)) +
-                         " %)"
-                   : std::string("-");
-  const std::string completion =
-      g.completed > 0 ? "mean " + world::PrintfText("%.0f", g.completion_mean) + ", " + std::to_string(g.completion_min) +
-                            "-" + std::to_string(g.completion_max) + " (" + std::to_string(g.completed) + " completed)"
-                      : std::string("none completed");
+      : g.judged > 0
+          ? std::to_string(g.succeeded) + " of " + std::to_string(g.judged) + " (" +
+                world::PrintfText("%.1f", 100.0 * static_cast<double>(g.succeeded) / static_cast<double>(g.judged)) +
+                " %)"
+          : std::string("-");
+  const std::string completion = g.completed > 0
+                                     ? "mean " + world::PrintfText("%.0f", g.completion_mean) + ", " +
+                                           std::to_string(g.completion_min) + "-" + std::to_string(g.completion_max) +
+                                           " (" + std::to_string(g.completed) + " completed)"
+                                     : std::string("none completed");
   const std::string closest =
       g.has_min_distance ? world::PrintfText("%.4f", g.closest_m) + " m (" + g.closest_run + ")" : std::string("-");
   return "| " + Cell(g.label) + " | " + std::to_string(g.runs) + " | " + success + " | " + completion + " | " +

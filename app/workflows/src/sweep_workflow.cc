@@ -54,7 +54,8 @@ std::string ReproducingCommand(const SweepSettings& s, const std::string& seeds,
 
 /// What the table's summary block says of how the runs ran.
 std::string ParallelText(const std::string& engine, int jobs, int cores) {
-  if (engine == "slurm") return "Slurm job array, " + (jobs > 0 ? std::to_string(jobs) + " at a time" : std::string("no limit"));
+  if (engine == "slurm")
+    return "Slurm job array, " + (jobs > 0 ? std::to_string(jobs) + " at a time" : std::string("no limit"));
   if (engine == "plan") return "planned for another scheduler (commands.txt)";
   return std::to_string(jobs) + " (" + std::to_string(cores) + " cores)";
 }
@@ -63,8 +64,8 @@ std::string ParallelText(const std::string& engine, int jobs, int cores) {
 /// --out) and locks it (a second sweep into it is refused while this one
 /// runs); an earlier sweep's table, commands and jobs must not pass for this one's.
 SweepFolder MakeFolder(const SweepSettings& s, const std::string& base_name, const std::string& out_dir) {
-  files::OutputFolder(out_dir, s.out_dir.empty() ? files::OutputFolder::Parents::kCreate
-                                               : files::OutputFolder::Parents::kMustExist)
+  files::OutputFolder(
+      out_dir, s.out_dir.empty() ? files::OutputFolder::Parents::kCreate : files::OutputFolder::Parents::kMustExist)
       .MakeSubfolder("runs");
   files::OutputFolderLock::HoldUntilExit(out_dir);
   if (s.out_dir.empty() && out_dir != "sweeps/" + base_name) {
@@ -72,7 +73,8 @@ SweepFolder MakeFolder(const SweepSettings& s, const std::string& base_name, con
   }
   const SweepFolder folder(out_dir);
   std::error_code error;
-  for (const char* stale : {"sweep.csv", "sweep.md", SweepFolder::kCommandsFile, SlurmJobs::kJobsFile, SweepInputs::kFileName}) {
+  for (const char* stale :
+       {"sweep.csv", "sweep.md", SweepFolder::kCommandsFile, SlurmJobs::kJobsFile, SweepInputs::kFileName}) {
     fs::remove(folder.Path(stale), error);
   }
   return folder;
@@ -103,7 +105,6 @@ const std::atomic<bool>& NeverStop() {
 }
 
 }  // namespace
-
 
 SweepWorkflow::SweepWorkflow(Environment environment) : env_(std::move(environment)) {}
 
@@ -138,7 +139,8 @@ SweepOutcome SweepWorkflow::Start(const SweepSettings& s, const run_config::RunC
   const SweepFolder folder = MakeFolder(s, base.name, out_dir);
   folder.WritePlan(plan);
   folder.WriteRunScript(env_.dream_path);
-  const std::string command = ReproducingCommand(s, prepared.seeds_text(), s.engine == Engine::kLocal ? jobs : s.jobs, out_dir);
+  const std::string command =
+      ReproducingCommand(s, prepared.seeds_text(), s.engine == Engine::kLocal ? jobs : s.jobs, out_dir);
   const long long time_limit = SlurmSubmission::DefaultTimeLimitMinutes(prepared.max_steps());
   folder.WriteSettings(SettingsJson(s, base.name, command, jobs, cores(), time_limit, env_.dream_path));
   SweepInputs::Record(folder, s.config_path);  // what resume checks before it adds runs to this table
@@ -169,19 +171,19 @@ SweepOutcome SweepWorkflow::RunAll(const SweepFolder& folder, const PreparedSwee
                                    int jobs, const std::string& command, const std::string& base_name) {
   const SweepPlan& plan = prepared.plan();
   const size_t count = plan.runs().size();
-  spdlog::info("sweep: {} runs of {} ({} seeds{}), {} at a time on {} cores -> {}", count, base_name,
-               prepared.seed_count(),
-               s.sets.empty() && s.zips.empty()
-                   ? std::string()
-                   : " x " + std::to_string(count / prepared.seed_count()) + " parameter sets",
-               jobs, cores(), folder.dir());
+  spdlog::info(
+      "sweep: {} runs of {} ({} seeds{}), {} at a time on {} cores -> {}", count, base_name, prepared.seed_count(),
+      s.sets.empty() && s.zips.empty() ? std::string()
+                                       : " x " + std::to_string(count / prepared.seed_count()) + " parameter sets",
+      jobs, cores(), folder.dir());
   std::vector<size_t> all(count);
   std::iota(all.begin(), all.end(), size_t{0});
   SweepTable table(plan.parameter_keys(), count);
   const Clock::time_point started = Clock::now();
-  const bool done = RunLocally(folder, plan, all, jobs, s.run_timeout_s,
-                               [&](size_t index) { prepared.WriteRun(folder, index); }, table);
-  if (!done) spdlog::warn("sweep interrupted: {} of {} runs ended, the rest never started", table.results().size(), count);
+  const bool done = RunLocally(
+      folder, plan, all, jobs, s.run_timeout_s, [&](size_t index) { prepared.WriteRun(folder, index); }, table);
+  if (!done)
+    spdlog::warn("sweep interrupted: {} of {} runs ended, the rest never started", table.results().size(), count);
   const double wall_s = std::chrono::duration<double>(Clock::now() - started).count();
   WriteTable(folder, table, "Sweep of " + base_name + " (" + s.config_path + ")",
              {{"command", command},
@@ -230,7 +232,8 @@ bool SweepWorkflow::RunLocally(const SweepFolder& folder, const SweepPlan& plan,
   };
   auto on_finished = [&](const JobRunner::Finished& done) {
     const SweepPlan::Run& run = runs[indices[done.index]];
-    if (done.timed_out) spdlog::warn("{}: still running after {:.0f} s (--timeout); stopped", run.Label(), run_timeout_s);
+    if (done.timed_out)
+      spdlog::warn("{}: still running after {:.0f} s (--timeout); stopped", run.Label(), run_timeout_s);
     if (folder.RunIsLocked(run.name)) {
       // Another process runs it (its own run.sh or dream run), which writes its record: not ours to touch.
       spdlog::warn("{}: left alone, another process holds its folder ({})", run.Label(), done.start_error);
@@ -269,7 +272,8 @@ void SweepWorkflow::WriteTable(const SweepFolder& folder, const SweepTable& tabl
   files::WriteFileAtomically(md_path, table.Markdown(title, facts));
   if (env_.out == nullptr) return;
   std::string by_value = table.ByValueMarkdown(50);
-  *env_.out << "\n" << table.SummaryMarkdown(facts) << (by_value.empty() ? "" : "\n" + by_value) << "\ntable: " << md_path
+  *env_.out << "\n"
+            << table.SummaryMarkdown(facts) << (by_value.empty() ? "" : "\n" + by_value) << "\ntable: " << md_path
             << "\ncsv:   " << csv_path << "\n";
 }
 
@@ -278,9 +282,11 @@ CollectedSweep SweepWorkflow::Collect(const SweepFolder& folder, bool check_busy
   const auto config = c.settings.find("config");
   try {
     c.changed_inputs = SweepInputs::Changed(
-        folder, config != c.settings.end() && config->is_string() ? config->get<std::string>() : "", &c.unchecked_inputs);
+        folder, config != c.settings.end() && config->is_string() ? config->get<std::string>() : "",
+        &c.unchecked_inputs);
   } catch (const std::runtime_error& e) {
-    c.changed_inputs = {std::string(SweepInputs::kFileName) + " (" + e.what() + ")"};  // a damaged record proves nothing
+    c.changed_inputs = {std::string(SweepInputs::kFileName) + " (" + e.what() +
+                        ")"};  // a damaged record proves nothing
   }
   const SlurmJobs jobs(folder);
   std::map<size_t, SlurmTaskState> states;

@@ -122,8 +122,8 @@ std::vector<size_t> RunsToResume(const SweepFolder& folder, const CollectedSweep
   for (const auto& state : c.slurm) queued += state && state->Queued() ? 1 : 0;
   if (queued > 0) {
     throw std::runtime_error(std::to_string(queued) + " runs of " + folder.dir() +
-                             " are still pending or running in Slurm; wait for them (dream sweep status " + folder.dir() +
-                             ") or scancel them, then resume");
+                             " are still pending or running in Slurm; wait for them (dream sweep status " +
+                             folder.dir() + ") or scancel them, then resume");
   }
   std::vector<size_t> todo;
   for (size_t i = 0; i < c.results.size(); ++i) {
@@ -133,15 +133,18 @@ std::vector<size_t> RunsToResume(const SweepFolder& folder, const CollectedSweep
     } else if (r.status != SweepRunResult::Status::kRan) {
       const std::string problem = folder.RunFolderProblem(r.run.name);
       if (!problem.empty()) {
-        throw std::runtime_error("resume refused: " + problem + " (replaced after the sweep was planned?); "
+        throw std::runtime_error("resume refused: " + problem +
+                                 " (replaced after the sweep was planned?); "
                                  "remove it, and resume runs the run again");
       }
       todo.push_back(r.run.index);
     }
   }
   if (*running > 0) {
-    spdlog::warn("{} runs of {} are still running (a process holds their folders): left alone; "
-                 "dream sweep status {} says when they end", *running, folder.dir(), folder.dir());
+    spdlog::warn(
+        "{} runs of {} are still running (a process holds their folders): left alone; "
+        "dream sweep status {} says when they end",
+        *running, folder.dir(), folder.dir());
   }
   return todo;
 }
@@ -241,19 +244,23 @@ SweepOutcome SweepWorkflow::Resume(const std::string& dir, const ResumeSettings&
     for (size_t index : todo) write_run(index);
     fs::remove(folder.Path("sweep.csv"), error);
     fs::remove(folder.Path("sweep.md"), error);
-    const std::vector<std::string> options = rs.slurm_options.empty() ? Strings(c.settings, "slurm_options") : rs.slurm_options;
+    const std::vector<std::string> options =
+        rs.slurm_options.empty() ? Strings(c.settings, "slurm_options") : rs.slurm_options;
     const long long minutes = Number(c.settings, "slurm_time_limit_minutes");
-    return Submit(folder, todo,
-                  {rs.jobs > 0 ? rs.jobs : started_on == "slurm" ? static_cast<int>(started_jobs) : 0,
-                   minutes > 0 ? minutes : SlurmSubmission::DefaultTimeLimitMinutes(0), options, env_.dream_path,
-                   "dream-sweep"});
+    return Submit(
+        folder, todo,
+        {rs.jobs > 0             ? rs.jobs
+         : started_on == "slurm" ? static_cast<int>(started_jobs)
+                                 : 0,
+         minutes > 0 ? minutes : SlurmSubmission::DefaultTimeLimitMinutes(0), options, env_.dream_path, "dream-sweep"});
   }
-  const int jobs = rs.jobs > 0                                      ? rs.jobs
+  const int jobs = rs.jobs > 0                                 ? rs.jobs
                    : started_on == "local" && started_jobs > 0 ? static_cast<int>(started_jobs)
                                                                : cores();
   const double timeout_s = rs.run_timeout_s > 0 ? rs.run_timeout_s
-                           : Number(c.settings, "run_timeout_s") > 0 ? static_cast<double>(Number(c.settings, "run_timeout_s"))
-                                                                     : 1800.0;
+                           : Number(c.settings, "run_timeout_s") > 0
+                               ? static_cast<double>(Number(c.settings, "run_timeout_s"))
+                               : 1800.0;
   SweepTable rerun(c.plan.parameter_keys(), todo.size());
   const bool done = RunLocally(folder, c.plan, todo, jobs, timeout_s, write_run, rerun);
   SweepOutcome table = Table(dir);

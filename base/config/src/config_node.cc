@@ -105,8 +105,9 @@ class TreeCheck {
       extent.values += child.values;
       extent.height = std::max(extent.height, child.height + 1);
       if (extent.values > ConfigNode::kMaxValues) {
-        Fail(node, key, "aliases (*) expand this value to more than " + std::to_string(ConfigNode::kMaxValues) +
-                            " values; write it out without them");
+        Fail(node, key,
+             "aliases (*) expand this value to more than " + std::to_string(ConfigNode::kMaxValues) +
+                 " values; write it out without them");
       }
     };
     if (node.IsSequence()) {
@@ -121,7 +122,8 @@ class TreeCheck {
         const std::string child_key = key.empty() ? name : key + "." + name;
         const int line = entry.first.Mark().line + 1;
         const auto [first, inserted] = first_lines.emplace(name, line);
-        if (!inserted) Fail(entry.first, child_key, "duplicate key; first given at line " + std::to_string(first->second));
+        if (!inserted)
+          Fail(entry.first, child_key, "duplicate key; first given at line " + std::to_string(first->second));
         add(Visit(entry.second, child_key, depth + 1));
       }
     }

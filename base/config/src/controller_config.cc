@@ -81,8 +81,8 @@ ControllerConfig LoadControllerConfig(const ConfigNode& root) {
   config.source = root.file();
   config.name = root.Required("name").AsString();
   for (char c : config.name) {
-    const bool safe = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
-                      c == '-' || c == '.';
+    const bool safe =
+        (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-' || c == '.';
     if (!safe || config.name == "." || config.name == "..") {
       root.Required("name").Fail("'" + config.name + "' is not a plain name; use letters, digits, _ - . only");
     }

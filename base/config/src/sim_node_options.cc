@@ -11,9 +11,7 @@ WorldMode ParseWorldMode(const std::string& text) {
   throw std::invalid_argument("unknown world mode '" + text + "'; allowed: lockstep, realtime");
 }
 
-const char* WorldModeName(WorldMode mode) {
-  return mode == WorldMode::kLockstep ? "lockstep" : "realtime";
-}
+const char* WorldModeName(WorldMode mode) { return mode == WorldMode::kLockstep ? "lockstep" : "realtime"; }
 
 bool SimNodeOptions::IsValid(std::string* error) const {
   auto fail = [error](const std::string& message) {

@@ -55,7 +55,8 @@ OutputFolder::OutputFolder(std::string dir, Parents parents) : dir_(std::move(di
     if (fs::exists(out) && !fs::is_directory(out)) {
       throw std::runtime_error("output folder " + dir_ + ": is a file, not a folder");
     }
-    throw std::runtime_error("cannot create the output folder " + dir_ + (error ? ": " + error.message() : std::string()));
+    throw std::runtime_error("cannot create the output folder " + dir_ +
+                             (error ? ": " + error.message() : std::string()));
   }
   real_dir_ = fs::canonical(out, error).string();
   if (error) throw std::runtime_error("cannot resolve the output folder " + dir_ + ": " + error.message());
@@ -84,7 +85,8 @@ std::string OutputFolder::MakeSubfolder(const std::string& name) const {
     const bool in_the_way = fs::exists(fs::symlink_status(path));
     throw std::runtime_error("cannot create the folder " + path + ": " +
                              (in_the_way ? "a file of that name is in the way; move it or choose another output folder"
-                                         : error ? error.message() : std::string("it is no folder")));
+                              : error    ? error.message()
+                                         : std::string("it is no folder")));
   }
   PathOf(name);  // a link created meanwhile must not lead out either
   return path;

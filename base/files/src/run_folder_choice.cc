@@ -15,9 +15,9 @@ namespace {
 // The files a run and the commands on it write into its folder (run, import,
 // check-submission, render and compare without --out): --overwrite removes
 // them all, so none of the earlier run's can pass for the new one's.
-constexpr const char* kRunFiles[] = {"run.lcmlog",       "run.lcmlog.part", "summary.json",    "trajectories.png",
-                                     "trajectories.svg", "run.mp4",         "run.gif",         "metrics.png",
-                                     "comparison.json",  "comparison.png",  "check.json",      "check_report.json",
+constexpr const char* kRunFiles[] = {"run.lcmlog",       "run.lcmlog.part", "summary.json", "trajectories.png",
+                                     "trajectories.svg", "run.mp4",         "run.gif",      "metrics.png",
+                                     "comparison.json",  "comparison.png",  "check.json",   "check_report.json",
                                      "refused.lcmlog"};
 
 // The log a run leaves when it is killed before it ends (kill -9, a power
@@ -34,7 +34,8 @@ bool IsFile(const fs::path& path) {
 std::string HeldRun(const std::string& dir) {
   const fs::path part = fs::path(dir) / kUnfinishedLog;
   if (IsFile(fs::path(dir) / "run.lcmlog") || IsFile(fs::path(dir) / "summary.json") || !IsFile(part)) {
-    return "--out " + dir + " already holds a run (run.lcmlog or summary.json); pass --overwrite to replace it, or "
+    return "--out " + dir +
+           " already holds a run (run.lcmlog or summary.json); pass --overwrite to replace it, or "
            "another --out";
   }
   std::error_code error;
@@ -48,7 +49,9 @@ void RemoveEarlierRun(const std::string& dir) {
   for (const char* name : kRunFiles) {
     std::error_code error;
     fs::remove(fs::path(dir) / name, error);
-    if (error) throw std::runtime_error("--overwrite: cannot remove " + (fs::path(dir) / name).string() + ": " + error.message());
+    if (error)
+      throw std::runtime_error("--overwrite: cannot remove " + (fs::path(dir) / name).string() + ": " +
+                               error.message());
   }
 }
 
@@ -85,8 +88,8 @@ RunFolderChoice::RunFolderChoice(const std::string& out, const std::string& defa
   } else {
     // A folder is taken once it holds a run or another process writes it; an
     // empty one (a run that failed before starting) is reused.
-    for (int n = 2; HoldsRun(chosen) || (fs::is_directory(chosen) && !files::OutputFolderLock::TryHoldUntilExit(chosen));
-         ++n) {
+    for (int n = 2;
+         HoldsRun(chosen) || (fs::is_directory(chosen) && !files::OutputFolderLock::TryHoldUntilExit(chosen)); ++n) {
       chosen = default_dir + "_" + std::to_string(n);
     }
     renamed_ = chosen != default_dir;
@@ -100,9 +103,10 @@ RunFolderChoice::RunFolderChoice(const std::string& out, const std::string& defa
     dir_ = chosen;
   }
   if (renamed_) {
-    spdlog::warn("{} holds an earlier run (or one being written), so this one goes to {} (--out DIR to choose, "
-                 "--overwrite to replace)",
-                 default_dir, dir_);
+    spdlog::warn(
+        "{} holds an earlier run (or one being written), so this one goes to {} (--out DIR to choose, "
+        "--overwrite to replace)",
+        default_dir, dir_);
   }
 }
 

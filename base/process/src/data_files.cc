@@ -4,7 +4,7 @@
 
 #include "dream/process/process_group.h"
 
-#if !defined(DREAM_BUILD_DIR) || !defined(DREAM_BIN_TO_DATA) || !defined(DREAM_BUILD_TYPES_JAR) || \
+#if !defined(DREAM_BUILD_DIR) || !defined(DREAM_BIN_TO_DATA) || !defined(DREAM_BUILD_TYPES_JAR) ||                 \
     !defined(DREAM_BRIDGE_PYTHON_DIR) || !defined(DREAM_PYTHON_RUNTIME_DIR) || !defined(DREAM_PYTHON_TYPES_DIR) || \
     !defined(DREAM_PYTHON_HOST_MODULE) || !defined(DREAM_BIN_TO_LIB)
 #error "base/process/CMakeLists.txt defines where the build tree and the installed data files are"

@@ -56,8 +56,8 @@ void ComparePosePairs(const CalibrationSeries& series, const std::vector<world::
         v_sum += driven[k].v_mps * motion_s[k];
         w_sum += driven[k].w_radps * motion_s[k];
         if (driven[k].v_mps != 0.0 || driven[k].w_radps != 0.0) moving_sum += motion_s[k];
-        is_straight = is_straight && std::abs(driven[k].w_radps) < kStraightTurnRadps &&
-                      std::abs(driven[k].v_mps) >= 0.01;
+        is_straight =
+            is_straight && std::abs(driven[k].w_radps) < kStraightTurnRadps && std::abs(driven[k].v_mps) >= 0.01;
       }
       const world::Pose2& a = series.poses[from];
       const world::Pose2& b = series.poses[to];
@@ -105,18 +105,20 @@ void CalibrationDynamics::Predict(const CalibrationSeries& series, const Dynamic
   model.motor_lag_s = params.lag_s;
   model.motor_startup_m = params.startup_m;
   world::RobotResponse response(model, world::RobotTraits{}, RobotariumConstants::kWheelRadiusMeters,
-                              RobotariumConstants::kMaxWheelVelocityRadps);
+                                RobotariumConstants::kMaxWheelVelocityRadps);
   const size_t transitions = series.steps() - 1;
   driven->resize(transitions);
   motion_s->resize(transitions);
   const double brake_s = base_.command_brake_s;
   for (size_t k = 0; k < transitions; ++k) {
     const auto delayed = static_cast<int64_t>(k) - params.delay_steps;
-    const world::UnicycleCommand target = delayed >= 0 ? series.commands[static_cast<size_t>(delayed)] : world::UnicycleCommand{};
+    const world::UnicycleCommand target =
+        delayed >= 0 ? series.commands[static_cast<size_t>(delayed)] : world::UnicycleCommand{};
     const double step_s = series.step_s[k];
     (*driven)[k] = response.Drive(target, step_s);
     // Through a late step the robot drives on until its brake.
-    (*motion_s)[k] = brake_s > 0.0 ? std::min(step_s, std::max(brake_s, RobotariumConstants::kTimeStepSeconds)) : step_s;
+    (*motion_s)[k] =
+        brake_s > 0.0 ? std::min(step_s, std::max(brake_s, RobotariumConstants::kTimeStepSeconds)) : step_s;
   }
 }
 

@@ -38,13 +38,13 @@ struct RobotGains {
 };
 
 struct DynamicsEvaluation {
-  double cost = 0.0;           // weighted residual sum of squares
-  int64_t transitions = 0;     // pose pairs compared
+  double cost = 0.0;              // weighted residual sum of squares
+  int64_t transitions = 0;        // pose pairs compared
   std::vector<RobotGains> gains;  // per series
   // The drift of robots that did not drive straight: the mean of those that
   // did, else the base's mean.
   double drift_prior_radps = 0.0;
-  int drift_robots = 0;  // robots whose drift was seen
+  int drift_robots = 0;             // robots whose drift was seen
   std::vector<double> series_cost;  // each series' part of cost (for intervals over robots)
 };
 

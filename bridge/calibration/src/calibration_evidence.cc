@@ -13,7 +13,6 @@ constexpr size_t kMaxHold = 90;          // and is followed for 3 s at most
 constexpr double kFirstMotionM = 0.003;  // "moving": over 3 mm from the start
 constexpr size_t kMaxTurningSamples = 3000;
 
-
 struct Start {
   size_t series = 0;
   size_t step = 0;
@@ -111,10 +110,12 @@ void FillCalibrationEvidence(const std::vector<CalibrationSeries>& series, const
         curve.time_s[k] += elapsed / static_cast<double>(starts.size());
         if (start.step + k < s.step_s.size()) elapsed += s.step_s[start.step + k];
         const world::Pose2& p = s.poses[start.step + k];
-        real[k] = sign * ((p.x_m - origin.x_m) * std::cos(origin.theta_rad) + (p.y_m - origin.y_m) * std::sin(origin.theta_rad));
+        real[k] = sign * ((p.x_m - origin.x_m) * std::cos(origin.theta_rad) +
+                          (p.y_m - origin.y_m) * std::sin(origin.theta_rad));
         model[k] = travelled;
         const size_t at = start.step + k;
-        if (at < driven[start.series].size()) travelled += sign * gain * driven[start.series][at].v_mps * motion[start.series][at];
+        if (at < driven[start.series].size())
+          travelled += sign * gain * driven[start.series][at].v_mps * motion[start.series][at];
         curve.real_m[k] += real[k] / static_cast<double>(starts.size());
         curve.fitted_m[k] += model[k] / static_cast<double>(starts.size());
       }

@@ -12,8 +12,7 @@ namespace dream::calibration {
 // against fitted (the effective delay and first motion per speed), and
 // steady turning, commanded against measured.
 void FillCalibrationEvidence(const std::vector<CalibrationSeries>& series, const CalibrationDynamics& dynamics,
-                             const DynamicsParams& params, const DynamicsEvaluation& fitted,
-                             CalibrationReport* report);
+                             const DynamicsParams& params, const DynamicsEvaluation& fitted, CalibrationReport* report);
 
 // How many starts from rest (a steady command in v held 1.5 s after 20
 // steps at rest) the runs hold at or below `max_speed_mps`, and at how many

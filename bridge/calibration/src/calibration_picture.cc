@@ -17,7 +17,8 @@ XyPanel StepPanel(const std::vector<StepResponseCurve>& curves, const std::strin
   XyPanel panel{title, "time since the command (s)", "distance driven (m)", {}};
   int color = 0;
   for (const StepResponseCurve& curve : curves) {
-    XySeries real{world::PrintfText("%.2f m/s (%d starts)", curve.speed_mps, curve.events), {}, XySeries::Style::kLine, color};
+    XySeries real{
+        world::PrintfText("%.2f m/s (%d starts)", curve.speed_mps, curve.events), {}, XySeries::Style::kLine, color};
     XySeries fitted{"", {}, XySeries::Style::kDashedLine, color};
     for (size_t k = 0; k < curve.time_s.size(); ++k) {
       real.points.push_back({curve.time_s[k], curve.real_m[k]});
@@ -27,7 +28,8 @@ XyPanel StepPanel(const std::vector<StepResponseCurve>& curves, const std::strin
     panel.series.push_back(std::move(fitted));
     ++color;
   }
-  if (panel.series.empty()) panel.series.push_back({"no start from rest in the data", {{0, 0}}, XySeries::Style::kDots, 0});
+  if (panel.series.empty())
+    panel.series.push_back({"no start from rest in the data", {{0, 0}}, XySeries::Style::kDots, 0});
   return panel;
 }
 
@@ -46,7 +48,9 @@ XyPanel TurningPanel(const CalibrationReport& report) {
   panel.series.push_back(std::move(dots));
   // The model turns g w + d while its wheels turn.
   panel.series.push_back({world::PrintfText("fitted: gain %.3f, drift %.4f rad/s", g, d),
-                          {{lo, g * lo + d}, {hi, g * hi + d}}, XySeries::Style::kLine, 1});
+                          {{lo, g * lo + d}, {hi, g * hi + d}},
+                          XySeries::Style::kLine,
+                          1});
   panel.series.push_back({"gain 1", {{lo, lo}, {hi, hi}}, XySeries::Style::kDashedLine, 2});
   return panel;
 }
@@ -67,7 +71,8 @@ void AddHistogram(const std::vector<double>& values, double scale, double sigma,
   const double s = sigma * scale;
   for (int i = -60; i <= 60; ++i) {
     const double x = i * bin / 4.0;
-    curve.points.push_back({x, static_cast<double>(values.size()) * bin / (s * std::sqrt(2 * M_PI)) * std::exp(-x * x / (2 * s * s))});
+    curve.points.push_back(
+        {x, static_cast<double>(values.size()) * bin / (s * std::sqrt(2 * M_PI)) * std::exp(-x * x / (2 * s * s))});
   }
   panel->series.push_back(std::move(bars));
   if (s > 0) panel->series.push_back(std::move(curve));
@@ -87,7 +92,8 @@ XyPanel StalePanel(const CalibrationReport& report) {
   XyPanel panel{"Runs of repeated poses", "length (steps)", "runs (count)", {}};
   std::map<int, double> counts;
   for (int length : report.stale_bursts) counts[std::min(length, 40)] += 1;
-  XySeries bars{world::PrintfText("%zu runs seen (40: 40 or more)", report.stale_bursts.size()), {}, XySeries::Style::kBars, 0};
+  XySeries bars{
+      world::PrintfText("%zu runs seen (40: 40 or more)", report.stale_bursts.size()), {}, XySeries::Style::kBars, 0};
   for (const auto& [length, count] : counts) bars.points.push_back({static_cast<double>(length), count});
   // Geometric lengths with the fitted mean: P(L = l) = q^(l-1) (1 - q).
   const double mean = std::max(1.0, report.params.tracking_dropout_mean_steps /
@@ -95,7 +101,8 @@ XyPanel StalePanel(const CalibrationReport& report) {
   const double q = 1.0 - 1.0 / mean;
   XySeries model{world::PrintfText("fitted: mean %.1f steps", mean), {}, XySeries::Style::kLine, 1};
   for (int l = 1; l <= 40; ++l) {
-    model.points.push_back({static_cast<double>(l), static_cast<double>(report.stale_bursts.size()) * std::pow(q, l - 1) * (1 - q)});
+    model.points.push_back(
+        {static_cast<double>(l), static_cast<double>(report.stale_bursts.size()) * std::pow(q, l - 1) * (1 - q)});
   }
   if (!bars.points.empty()) panel.series.push_back(std::move(bars));
   panel.series.push_back(std::move(model));
@@ -119,14 +126,18 @@ void RenderModelCheckPicture(const std::vector<ModelPrediction>& predictions, co
   for (size_t i = 0; i < predictions.size(); ++i) {
     models += (i == 0 ? "" : ", ") + std::to_string(i + 1) + " " + predictions[i].name;
   }
-  XyPanel errors{"1 s open-loop prediction error, 95 % interval over robots", "model (" + models + ")",
-                 "RMS position error after 1 s (cm)", {}};
+  XyPanel errors{"1 s open-loop prediction error, 95 % interval over robots",
+                 "model (" + models + ")",
+                 "RMS position error after 1 s (cm)",
+                 {}};
   for (size_t i = 0; i < predictions.size(); ++i) {
     const ModelPrediction& p = predictions[i];
     const auto x = static_cast<double>(i + 1);
     errors.series.push_back({p.name, {{x, p.position_error_m * 100}}, XySeries::Style::kDots, static_cast<int>(i)});
-    errors.series.push_back({"", {{x, p.position_error_low_m * 100}, {x, p.position_error_high_m * 100}},
-                             XySeries::Style::kLine, static_cast<int>(i)});
+    errors.series.push_back({"",
+                             {{x, p.position_error_low_m * 100}, {x, p.position_error_high_m * 100}},
+                             XySeries::Style::kLine,
+                             static_cast<int>(i)});
   }
   std::vector<XyPanel> panels = {errors};
   for (const ModelPrediction& p : predictions) {

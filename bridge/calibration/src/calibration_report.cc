@@ -43,24 +43,27 @@ std::string CalibrationReport::Text() const {
     } else {
       interval = "[" + Number(key.low) + ", " + Number(key.high) + "]";
     }
-    out << "  " << key.key << std::string(width - key.key.size() + 2, ' ') << world::PrintfText("%-12s", Number(key.value).c_str())
-        << world::PrintfText("%-28s", interval.c_str()) << key.support << "\n";
+    out << "  " << key.key << std::string(width - key.key.size() + 2, ' ')
+        << world::PrintfText("%-12s", Number(key.value).c_str()) << world::PrintfText("%-28s", interval.c_str())
+        << key.support << "\n";
   }
   if (!notes.empty()) {
     out << "\nNotes\n";
     for (const std::string& note : notes) out << "  - " << note << "\n";
   }
   if (!step_responses.empty()) {
-    out << "\nSteps in v from rest (effective delay: where the steady line crosses 0; first motion: first step over 3 mm)\n";
+    out << "\nSteps in v from rest (effective delay: where the steady line crosses 0; first motion: first step over 3 "
+           "mm)\n";
     out << "  speed m/s  starts  delay real  fitted   first motion real  fitted   real robots (open loop)\n";
     for (const StepResponseCurve& curve : step_responses) {
       std::string median = "";
       for (const RealMedian& real : kRealMedians) {
-        if (std::abs(curve.speed_mps - real.speed_mps) < 0.2 * real.speed_mps) median = world::PrintfText("%.0f ms", real.delay_s * 1e3);
+        if (std::abs(curve.speed_mps - real.speed_mps) < 0.2 * real.speed_mps)
+          median = world::PrintfText("%.0f ms", real.delay_s * 1e3);
       }
       out << world::PrintfText("  %9.2f  %6d  %7.0f ms  %4.0f ms  %14.1f  %7.1f   %s\n", curve.speed_mps, curve.events,
-                             curve.real_delay_s * 1e3, curve.fitted_delay_s * 1e3, curve.real_first_motion_step,
-                             curve.fitted_first_motion_step, median.c_str());
+                               curve.real_delay_s * 1e3, curve.fitted_delay_s * 1e3, curve.real_first_motion_step,
+                               curve.fitted_first_motion_step, median.c_str());
     }
   }
   return out.str();
@@ -78,8 +81,9 @@ std::string CalibrationReport::RealismYaml() const {
   for (const FittedKey& key : keys) {
     out << key.key << ": " << world::PrintfText("%.10g", key.value) << "  # ";
     if (key.determined) {
-      out << (key.low == key.high && key.key.rfind("pose_quantum", 0) == 0 ? std::string("exact")
-                                                                          : "[" + Number(key.low) + ", " + Number(key.high) + "]")
+      out << (key.low == key.high && key.key.rfind("pose_quantum", 0) == 0
+                  ? std::string("exact")
+                  : "[" + Number(key.low) + ", " + Number(key.high) + "]")
           << "; " << key.support;
     } else {
       out << "kept: " << key.support;

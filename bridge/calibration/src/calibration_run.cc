@@ -93,8 +93,8 @@ bool IsClock(const std::string& file, const Arrays& arrays, int64_t steps, doubl
   if (back != 0 && *low >= 0.0 && *high < 1.0) {
     const double median = Median(time.values);
     const bool step_lengths = median >= 0.5 * kNominalStepS && median <= 3.0 * kNominalStepS;
-    notes->push_back(file + ": " + time_array + " is not a clock: it does not increase (step " +
-                     std::to_string(back) + ") and its values lie in [" + world::PrintfText("%.3g", *low) + ", " +
+    notes->push_back(file + ": " + time_array + " is not a clock: it does not increase (step " + std::to_string(back) +
+                     ") and its values lie in [" + world::PrintfText("%.3g", *low) + ", " +
                      world::PrintfText("%.3g", *high) + "] s, median " + world::PrintfText("%.3g", median) + " s: " +
                      (step_lengths ? "per-step durations, it seems (give their cumulative sum as the clock to fit "
                                      "step timing)"
@@ -137,7 +137,9 @@ RunTrack TrackOfArrays(const std::string& file, Arrays arrays, double step_perio
   track.num_robots = static_cast<int>(robots);
   const auto n = static_cast<size_t>(robots);
   const auto t = static_cast<size_t>(steps);
-  auto pose_value = [&](size_t row, size_t robot, size_t step) { return arrays.poses.values[(row * n + robot) * t + step]; };
+  auto pose_value = [&](size_t row, size_t robot, size_t step) {
+    return arrays.poses.values[(row * n + robot) * t + step];
+  };
   auto command_value = [&](size_t row, size_t robot, size_t step) {
     return stacked ? pose_value(3 + row, robot, step) : arrays.commands.values[(row * n + robot) * t + step];
   };
@@ -253,15 +255,16 @@ void CheckCalibrationRun(const CalibrationRun& run) {
   const auto steps = static_cast<int64_t>(track.utime.size());
   if (steps < kMinCalibrationSteps) {
     throw std::runtime_error(run.name + ": too short to calibrate: " + std::to_string(steps) + " steps; at least " +
-                             std::to_string(kMinCalibrationSteps) + " (3 s) are needed to see a robot answer a command");
+                             std::to_string(kMinCalibrationSteps) +
+                             " (3 s) are needed to see a robot answer a command");
   }
   const auto n = static_cast<size_t>(track.num_robots);
   for (size_t at = 0; at < track.poses.size(); ++at) {
     const world::Pose2& pose = track.poses[at];
     const world::UnicycleCommand& command = track.commands[at];
     const char* what = !std::isfinite(pose.x_m) || !std::isfinite(pose.y_m) || !std::isfinite(pose.theta_rad) ? "pose"
-                       : !std::isfinite(command.v_mps) || !std::isfinite(command.w_radps)               ? "command"
-                                                                                                         : nullptr;
+                       : !std::isfinite(command.v_mps) || !std::isfinite(command.w_radps) ? "command"
+                                                                                          : nullptr;
     if (what != nullptr) {
       throw std::runtime_error(run.name + ": the " + what + " of robot " + std::to_string(at % n) + " at step " +
                                std::to_string(at / n) + " is not a finite number (NaN or inf); calibrate needs " +
@@ -285,7 +288,8 @@ CalibrationRun ReadCalibrationRun(const std::string& path, const CalibrationInpu
   if (fs::is_directory(path, error) || extension == ".lcmlog") {
     const std::string log = fs::is_directory(path, error) ? (fs::path(path) / "run.lcmlog").string() : path;
     if (!fs::exists(log, error)) {
-      throw std::runtime_error(path + ": no run.lcmlog in this folder (give a folder made by dream import or dream run)");
+      throw std::runtime_error(path +
+                               ": no run.lcmlog in this folder (give a folder made by dream import or dream run)");
     }
     run.track = TrackOfLog(log, &run.timed);
   } else if (extension == ".npz") {
@@ -309,10 +313,11 @@ CalibrationRun ReadCalibrationRun(const std::string& path, const CalibrationInpu
   if (run.timed && steps > 1 &&
       static_cast<double>(run.track.utime.back() - run.track.utime.front()) * 1e-6 <
           0.5 * kNominalStepS * static_cast<double>(steps - 1)) {
-    run.notes.push_back(path + ": its clock's steps average " +
-                        world::PrintfText("%.3g ms", static_cast<double>(run.track.utime.back() - run.track.utime.front()) *
-                                                         1e-3 / static_cast<double>(steps - 1)) +
-                        ", under half of 33 ms (a simulator not in real time): the steps are taken as 33 ms apart");
+    run.notes.push_back(
+        path + ": its clock's steps average " +
+        world::PrintfText("%.3g ms", static_cast<double>(run.track.utime.back() - run.track.utime.front()) * 1e-3 /
+                                         static_cast<double>(steps - 1)) +
+        ", under half of 33 ms (a simulator not in real time): the steps are taken as 33 ms apart");
     for (int64_t k = 0; k < steps; ++k) {
       run.track.utime[static_cast<size_t>(k)] =
           run.track.utime.front() + std::llround(static_cast<double>(k) * kNominalStepS * 1e6);

@@ -14,10 +14,10 @@ namespace dream::calibration {
 struct CalibrationSeries {
   std::string run;
   int robot = 0;
-  std::vector<world::Pose2> poses;                // per step, as measured
-  std::vector<world::UnicycleCommand> commands;   // per step, as sent
-  std::vector<double> step_s;                   // per step but the last: how long it lasted
-  std::vector<bool> stale;                      // the pose repeats the step before's exactly
+  std::vector<world::Pose2> poses;               // per step, as measured
+  std::vector<world::UnicycleCommand> commands;  // per step, as sent
+  std::vector<double> step_s;                    // per step but the last: how long it lasted
+  std::vector<bool> stale;                       // the pose repeats the step before's exactly
   // A step within a few steps of a late one (a loop stall): which
   // measurement shows its motion depends on the tracker's delay, so the fits
   // of motion and noise leave these out.

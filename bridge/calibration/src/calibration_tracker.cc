@@ -24,7 +24,6 @@ constexpr size_t kLateMargin = 4;
 // The most samples kept for a histogram.
 constexpr size_t kMaxSamples = 20000;
 
-
 bool Settled(const CalibrationSeries& series, size_t k, bool rest) {
   if (k < kSettledSteps) return false;
   const world::UnicycleCommand& now = series.commands[k];
@@ -213,8 +212,8 @@ void CalibrationTracker::FitNoise(CalibrationReport* report) const {
                                Count(move_n) + " steady moving triples: " + world::PrintfText("%.2f mm", moving * 1e3) +
                                    " and " + world::PrintfText("%.4f rad", heading_moving) + " moving"});
     } else {
-      AddKey(report, KeptKey(base_, "pose_noise_moving_factor", "too few steady moving measurements (" +
-                                                                   Count(move_n) + "; 50 needed)"));
+      AddKey(report, KeptKey(base_, "pose_noise_moving_factor",
+                             "too few steady moving measurements (" + Count(move_n) + "; 50 needed)"));
     }
   } else {
     const std::string why = "too few measurements of robots at rest (" + Count(rest_n) + "; 50 needed)";
@@ -281,9 +280,9 @@ void CalibrationTracker::FitDropouts(CalibrationReport* report) const {
     AddKey(report, KeptKey(base_, "tracking_dropout_mean_steps", why));
     return;
   }
-  const FittedKey moving = ProportionKey("tracking_dropout_probability", moving_starts, moving_n,
-                                         Count(moving_starts) + " runs of repeated poses in " + Count(moving_n) +
-                                             " moving measurements");
+  const FittedKey moving =
+      ProportionKey("tracking_dropout_probability", moving_starts, moving_n,
+                    Count(moving_starts) + " runs of repeated poses in " + Count(moving_n) + " moving measurements");
   AddKey(report, moving);
   if (rest_n >= 1000 && moving_starts > 0) {
     const FittedKey rest = ProportionKey("at rest", rest_starts, rest_n, "");
@@ -302,14 +301,15 @@ void CalibrationTracker::FitDropouts(CalibrationReport* report) const {
     const double half = kZ95 * std::sqrt(sq / std::max(1.0, bursts - 1) / bursts);
     // Runs last mean_steps / (1 - p) on average (a new dropout extends one).
     const double p = moving.value;
-    AddKey(report, FittedKey{"tracking_dropout_mean_steps", std::max(1.0, mean * (1 - p)),
-                             std::max(1.0, (mean - half) * (1 - p)), std::max(1.0, (mean + half) * (1 - p)), true,
-                             Count(bursts) + " runs of repeated poses, the longest " +
-                                 std::to_string(*std::max_element(report->stale_bursts.begin(), report->stale_bursts.end())) +
-                                 " steps"});
+    AddKey(report,
+           FittedKey{"tracking_dropout_mean_steps", std::max(1.0, mean * (1 - p)),
+                     std::max(1.0, (mean - half) * (1 - p)), std::max(1.0, (mean + half) * (1 - p)), true,
+                     Count(bursts) + " runs of repeated poses, the longest " +
+                         std::to_string(*std::max_element(report->stale_bursts.begin(), report->stale_bursts.end())) +
+                         " steps"});
   } else {
-    AddKey(report, KeptKey(base_, "tracking_dropout_mean_steps", "fewer than 5 runs of repeated poses (" +
-                                                                    Count(bursts) + ")"));
+    AddKey(report, KeptKey(base_, "tracking_dropout_mean_steps",
+                           "fewer than 5 runs of repeated poses (" + Count(bursts) + ")"));
   }
 }
 
@@ -342,17 +342,17 @@ void CalibrationTracker::FitTiming(CalibrationReport* report) const {
   const double mean = overrun / normal;
   const double sd = std::sqrt(std::max(0.0, sq / normal - mean * mean));
   const double half = kZ95 * sd / std::sqrt(normal);
-  AddKey(report, FittedKey{"step_overrun_mean_s", std::max(0.0, mean), std::max(0.0, mean - half),
-                           std::max(0.0, mean + half), true,
-                           Count(normal) + " steps, mean period " + world::PrintfText("%.2f ms", (dt + mean) * 1e3)});
+  AddKey(report,
+         FittedKey{"step_overrun_mean_s", std::max(0.0, mean), std::max(0.0, mean - half), std::max(0.0, mean + half),
+                   true, Count(normal) + " steps, mean period " + world::PrintfText("%.2f ms", (dt + mean) * 1e3)});
   AddKey(report, ProportionKey("loop_stall_probability", stalls, steps,
                                Count(stalls) + " stalls (steps over " +
-                                   world::PrintfText("%.0f ms", (dt + world::RealismParams::kMinStallS) * 1e3) + ") in " +
-                                   Count(steps) + " steps"));
+                                   world::PrintfText("%.0f ms", (dt + world::RealismParams::kMinStallS) * 1e3) +
+                                   ") in " + Count(steps) + " steps"));
   if (stalls > 0) {
     AddKey(report, FittedKey{"loop_stall_max_s", std::max(longest, world::RealismParams::kMinStallS),
-                             std::max(longest, world::RealismParams::kMinStallS), world::RealismParams::kMaxStallS, true,
-                             "the longest stall seen (a lower bound)"});
+                             std::max(longest, world::RealismParams::kMinStallS), world::RealismParams::kMaxStallS,
+                             true, "the longest stall seen (a lower bound)"});
   } else {
     AddKey(report, KeptKey(base_, "loop_stall_max_s", "no stall seen"));
   }

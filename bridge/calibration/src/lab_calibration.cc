@@ -21,7 +21,7 @@ namespace {
 using robotarium::RobotariumConstants;
 constexpr double kDt = RobotariumConstants::kTimeStepSeconds;
 constexpr double kZ95 = 1.959963984540054;
-constexpr int kMaxDelaySteps = 30;   // 1 s: the real robots answer in under half of it
+constexpr int kMaxDelaySteps = 30;  // 1 s: the real robots answer in under half of it
 constexpr double kMaxLagS = 1.0;
 constexpr double kMaxStartupM = 0.1;
 // Start-up is fitted from this many starts from rest at this speed or slower.
@@ -194,29 +194,41 @@ struct DynamicsFit {
   double lag_low = 0, lag_high = 0, startup_low = 0, startup_high = 0;
 };
 
+// The cost of every delay at `best`'s lag and start-up; `best` takes the cheapest.
+std::map<int, double> ScanDelays(const CalibrationDynamics& dynamics, DynamicsParams* best, double* best_cost) {
+  std::map<int, double> delay_cost;
+  for (int delay = 0; delay <= kMaxDelaySteps; ++delay) {
+    const double cost = dynamics.Evaluate({delay, best->lag_s, best->startup_m}).cost;
+    delay_cost[delay] = cost;
+    if (cost < *best_cost) {
+      *best_cost = cost;
+      best->delay_steps = delay;
+    }
+  }
+  return delay_cost;
+}
+
 DynamicsFit FitDynamics(const CalibrationDynamics& dynamics, const world::RealismParams& base, bool fit_startup) {
   DynamicsFit fit;
   DynamicsParams& best = fit.best;
   best = {base.pose_delay_steps + base.command_latency_steps, base.motor_lag_s, base.motor_startup_m};
   double best_cost = std::numeric_limits<double>::infinity();
-  std::map<int, double> delay_cost;
-  for (int delay = 0; delay <= kMaxDelaySteps; ++delay) {
-    const double cost = dynamics.Evaluate({delay, best.lag_s, best.startup_m}).cost;
-    delay_cost[delay] = cost;
-    if (cost < best_cost) {
-      best_cost = cost;
-      best.delay_steps = delay;
-    }
-  }
+  std::map<int, double> delay_cost = ScanDelays(dynamics, &best, &best_cost);
   const int coarse_delay = best.delay_steps;
   for (int delay = std::max(0, coarse_delay - 1); delay <= std::min(kMaxDelaySteps, coarse_delay + 1); ++delay) {
     DynamicsParams trial{delay, best.lag_s, best.startup_m};
     for (int round = 0; round < (fit_startup ? 2 : 1); ++round) {
-      trial.lag_s = GoldenMinimum([&](double lag) { return dynamics.Evaluate({delay, lag, trial.startup_m}).cost; },
-                                  0.0, kMaxLagS, 22);
+      trial.lag_s = GoldenMinimum(
+          [&](double lag) {
+            return dynamics.Evaluate({delay, lag, trial.startup_m}).cost;
+          },
+          0.0, kMaxLagS, 22);
       if (!fit_startup) break;
       trial.startup_m = GoldenMinimum(
-          [&](double startup) { return dynamics.Evaluate({delay, trial.lag_s, startup}).cost; }, 0.0, kMaxStartupM, 22);
+          [&](double startup) {
+            return dynamics.Evaluate({delay, trial.lag_s, startup}).cost;
+          },
+          0.0, kMaxStartupM, 22);
     }
     const double cost = dynamics.Evaluate(trial).cost;
     delay_cost[delay] = std::min(delay_cost[delay], cost);
@@ -232,22 +244,33 @@ DynamicsFit FitDynamics(const CalibrationDynamics& dynamics, const world::Realis
     *low = cost_at(lo) <= level ? lo : Crossing(cost_at, value, lo, level, 18);
     *high = cost_at(hi) <= level ? hi : Crossing(cost_at, value, hi, level, 18);
   };
-  interval([&](double lag) { return dynamics.Evaluate({best.delay_steps, lag, best.startup_m}).cost; }, best.lag_s,
-           0.0, kMaxLagS, &fit.lag_low, &fit.lag_high);
+  interval(
+      [&](double lag) {
+        return dynamics.Evaluate({best.delay_steps, lag, best.startup_m}).cost;
+      },
+      best.lag_s, 0.0, kMaxLagS, &fit.lag_low, &fit.lag_high);
   if (fit_startup) {
-    interval([&](double s) { return dynamics.Evaluate({best.delay_steps, best.lag_s, s}).cost; }, best.startup_m, 0.0,
-             kMaxStartupM, &fit.startup_low, &fit.startup_high);
+    interval(
+        [&](double s) {
+          return dynamics.Evaluate({best.delay_steps, best.lag_s, s}).cost;
+        },
+        best.startup_m, 0.0, kMaxStartupM, &fit.startup_low, &fit.startup_high);
   }
   // Over robots, too: the wider of the two.
   std::vector<bool> used(fit.evaluation.gains.size());
   for (size_t r = 0; r < used.size(); ++r) used[r] = fit.evaluation.gains[r].linear_seen;
-  BootstrapOverRobots([&](double lag) { return dynamics.Evaluate({best.delay_steps, lag, best.startup_m}); },
-                      std::max(0.0, best.lag_s - 0.2), std::min(kMaxLagS, best.lag_s + 0.2), used, &fit.lag_low,
-                      &fit.lag_high);
+  BootstrapOverRobots(
+      [&](double lag) {
+        return dynamics.Evaluate({best.delay_steps, lag, best.startup_m});
+      },
+      std::max(0.0, best.lag_s - 0.2), std::min(kMaxLagS, best.lag_s + 0.2), used, &fit.lag_low, &fit.lag_high);
   if (fit_startup) {
-    BootstrapOverRobots([&](double s) { return dynamics.Evaluate({best.delay_steps, best.lag_s, s}); },
-                        std::max(0.0, best.startup_m - 0.03), std::min(kMaxStartupM, best.startup_m + 0.03), used,
-                        &fit.startup_low, &fit.startup_high);
+    BootstrapOverRobots(
+        [&](double s) {
+          return dynamics.Evaluate({best.delay_steps, best.lag_s, s});
+        },
+        std::max(0.0, best.startup_m - 0.03), std::min(kMaxStartupM, best.startup_m + 0.03), used, &fit.startup_low,
+        &fit.startup_high);
   }
   fit.delay_low = fit.delay_high = best.delay_steps;
   for (const auto& [delay, cost] : delay_cost) {
@@ -274,13 +297,13 @@ void AddDynamicsKeys(const DynamicsFit& fit, const world::RealismParams& base, c
     AddKey(report, KeptKey(base, "pose_delay_steps",
                            "poses and commands show only the sum with command_latency_steps; kept the base's"));
   }
-  AddKey(report, FittedKey{"command_latency_steps", static_cast<double>(best.delay_steps - pose_delay),
-                           static_cast<double>(std::max(0, fit.delay_low - pose_delay)),
-                           static_cast<double>(std::max(0, fit.delay_high - pose_delay)), true,
-                           "total delay " + std::to_string(best.delay_steps) + " steps, from " + transitions +
-                               " pose pairs"});
-  AddKey(report, FittedKey{"motor_lag_s", best.lag_s, fit.lag_low, fit.lag_high, true,
-                           "from " + transitions + " pose pairs"});
+  AddKey(report,
+         FittedKey{"command_latency_steps", static_cast<double>(best.delay_steps - pose_delay),
+                   static_cast<double>(std::max(0, fit.delay_low - pose_delay)),
+                   static_cast<double>(std::max(0, fit.delay_high - pose_delay)), true,
+                   "total delay " + std::to_string(best.delay_steps) + " steps, from " + transitions + " pose pairs"});
+  AddKey(report,
+         FittedKey{"motor_lag_s", best.lag_s, fit.lag_low, fit.lag_high, true, "from " + transitions + " pose pairs"});
   if (startup_kept.empty()) {
     AddKey(report, FittedKey{"motor_startup_m", best.startup_m, fit.startup_low, fit.startup_high, true,
                              "from starts from rest at the speeds the runs commanded"});
@@ -301,10 +324,10 @@ void AddPopulationKeys(const char* mean_key, const char* spread_key, const std::
     return;
   }
   const std::string robots = std::to_string(p.n) + (p.n == 1 ? " robot" : " robots");
-  AddKey(report, FittedKey{mean_key, p.mean, p.mean - p.mean_half, p.mean + p.mean_half, true,
-                           robots + how +
-                               (p.n < 3 ? "; the interval holds the base's spread between robots (too few to see it)"
-                                        : "")});
+  AddKey(report,
+         FittedKey{mean_key, p.mean, p.mean - p.mean_half, p.mean + p.mean_half, true,
+                   robots + how +
+                       (p.n < 3 ? "; the interval holds the base's spread between robots (too few to see it)" : "")});
   if (p.n >= 3) {
     AddKey(report, FittedKey{spread_key, p.spread, p.spread_low, p.spread_high, true, "between " + robots});
   } else {
@@ -375,8 +398,9 @@ void CheckSomethingMoved(const std::vector<CalibrationRun>& runs, const std::vec
                              "steps in v and w (dream export --calibration writes a run that has them)");
   }
   if (LargestExtent(series) < 0.02) {
-    throw std::runtime_error("no motion: the poses never move more than 2 cm although commands were sent; are the "
-                             "poses and commands of the same run, and the poses not all the same?");
+    throw std::runtime_error(
+        "no motion: the poses never move more than 2 cm although commands were sent; are the "
+        "poses and commands of the same run, and the poses not all the same?");
   }
 }
 
@@ -447,8 +471,8 @@ CalibrationReport LabCalibration::Fit(const std::vector<CalibrationRun>& runs) c
   std::vector<FittedKey> ordered;
   for (const world::RealismParams::Field& field : world::RealismParams::Fields()) {
     const FittedKey* found = report.Find(field.key);
-    ordered.push_back(found != nullptr ? *found
-                                       : KeptKey(base_, field.key, "not visible in poses and commands; kept the base's"));
+    ordered.push_back(
+        found != nullptr ? *found : KeptKey(base_, field.key, "not visible in poses and commands; kept the base's"));
   }
   report.keys = std::move(ordered);
   std::string error;

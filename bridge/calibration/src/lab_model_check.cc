@@ -60,7 +60,8 @@ std::vector<ModelPrediction> LabModelCheck::Predict(const std::vector<Calibratio
     const world::RealismParams& p = model.params;
     const CalibrationDynamics dynamics(series, p, std::max(p.pose_noise_m, 1e-4), std::max(p.pose_noise_rad, 1e-3),
                                        stop);
-    const DynamicsParams dynamics_params{p.pose_delay_steps + p.command_latency_steps, p.motor_lag_s, p.motor_startup_m};
+    const DynamicsParams dynamics_params{p.pose_delay_steps + p.command_latency_steps, p.motor_lag_s,
+                                         p.motor_startup_m};
     DynamicsEvaluation gains;
     RobotGains mean_robot;
     mean_robot.linear = p.linear_gain_mean;
@@ -128,7 +129,7 @@ std::string LabModelCheck::Table(const CalibrationReport& real, const std::vecto
     for (size_t c = 0; c < predictions.front().step_responses.size(); ++c) {
       const StepResponseCurve& measured = predictions.front().step_responses[c];
       out << world::PrintfText("| %.2f m/s (%d) | %.0f / %.1f |", measured.speed_mps, measured.events,
-                             measured.real_delay_s * 1e3, measured.real_first_motion_step);
+                               measured.real_delay_s * 1e3, measured.real_first_motion_step);
       for (const ModelPrediction& prediction : predictions) {
         const StepResponseCurve& curve = prediction.step_responses[c];
         out << world::PrintfText(" %.0f / %.1f |", curve.fitted_delay_s * 1e3, curve.fitted_first_motion_step);
@@ -144,7 +145,8 @@ std::string LabModelCheck::Table(const CalibrationReport& real, const std::vecto
                              prediction.position_error_low_m * 100, prediction.position_error_high_m * 100);
   }
   out << "\n| heading (rad) | 0 |";
-  for (const ModelPrediction& prediction : predictions) out << world::PrintfText(" %.3f |", prediction.heading_error_rad);
+  for (const ModelPrediction& prediction : predictions)
+    out << world::PrintfText(" %.3f |", prediction.heading_error_rad);
   out << "\n\n" << Ranking(predictions);
   out << "\nSteady turning seen (measured / commanded rate, median of the steady turning steps) against each model's "
          "(angular gain + drift / w at the same median |w|)\n\n";

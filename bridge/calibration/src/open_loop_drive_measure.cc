@@ -82,7 +82,7 @@ double OpenLoopDriveMeasure::TurningRatio(const std::vector<world::Pose2>& poses
 }
 
 OpenLoopDriveMeasure::Drive OpenLoopDriveMeasure::Simulate(const world::RealismParams& realism, uint64_t seed,
-                                                            int robots, int steps, world::UnicycleCommand command) {
+                                                           int robots, int steps, world::UnicycleCommand command) {
   // Side by side, 0.3 m apart, facing +x: lines from the left so none meets
   // a wall within 2.8 m, circles from the middle.
   std::vector<world::Pose2> start;

@@ -40,8 +40,7 @@ uint64_t Mat4Layout::CheckVariable(int index, uint64_t offset) const {
   const int32_t precision = type / 10 % 10;
   const int32_t matrix_type = type % 10;
   if (type < 0 || machine > 1 || zero != 0 || precision > 5 || matrix_type > 2) {
-    Fail(what + " has type " + std::to_string(Word(offset, false)) +
-         ", not a v4 MOPT code (M 0-1, O 0, P 0-5, T 0-2)");
+    Fail(what + " has type " + std::to_string(Word(offset, false)) + ", not a v4 MOPT code (M 0-1, O 0, P 0-5, T 0-2)");
   }
   // libmatio then reads the rest in the order M names (0 little-, 1 big-endian),
   // whichever order the type was found in: so must we.
@@ -53,9 +52,11 @@ uint64_t Mat4Layout::CheckVariable(int index, uint64_t offset) const {
   if (rows < 0 || columns < 0) {
     Fail(what + " has " + std::to_string(rows) + " x " + std::to_string(columns) + " values");
   }
-  if (imaginary != 0 && imaginary != 1) Fail(what + " has imaginary flag " + std::to_string(imaginary) + ", not 0 or 1");
+  if (imaginary != 0 && imaginary != 1)
+    Fail(what + " has imaginary flag " + std::to_string(imaginary) + ", not 0 or 1");
   const uint64_t after_header = offset + kHeaderBytes;
-  if (name_bytes < 1 || name_bytes > kMaxNameBytes || static_cast<uint64_t>(name_bytes) > bytes_.size() - after_header) {
+  if (name_bytes < 1 || name_bytes > kMaxNameBytes ||
+      static_cast<uint64_t>(name_bytes) > bytes_.size() - after_header) {
     Fail(what + " has a name of " + std::to_string(name_bytes) + " bytes, but 1.." + std::to_string(kMaxNameBytes) +
          " that fit in the " + std::to_string(bytes_.size() - after_header) + " bytes left are allowed");
   }

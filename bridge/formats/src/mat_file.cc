@@ -112,20 +112,31 @@ constexpr uint64_t kMaxDeflateRatio = 1032;
 /// Bytes per element of a numeric v5 data type, 0 for the others.
 size_t NumericSize(uint32_t type) {
   switch (type) {
-    case 1: case 2: return 1;          // miINT8, miUINT8
-    case 3: case 4: return 2;          // miINT16, miUINT16
-    case 5: case 6: case 7: return 4;  // miINT32, miUINT32, miSINGLE
-    case 9: case 12: case 13: return 8;  // miDOUBLE, miINT64, miUINT64
-    default: return 0;
+    case 1:
+    case 2:
+      return 1;  // miINT8, miUINT8
+    case 3:
+    case 4:
+      return 2;  // miINT16, miUINT16
+    case 5:
+    case 6:
+    case 7:
+      return 4;  // miINT32, miUINT32, miSINGLE
+    case 9:
+    case 12:
+    case 13:
+      return 8;  // miDOUBLE, miINT64, miUINT64
+    default:
+      return 0;
   }
 }
 
 /// A v5 data element's tag: type, byte count and where its data lies.
 struct Mat5Element {
   uint32_t type = 0;
-  uint64_t size = 0;   ///< bytes of data
-  uint64_t data = 0;   ///< offset of the data in the file
-  uint64_t end = 0;    ///< offset after it, padding included
+  uint64_t size = 0;  ///< bytes of data
+  uint64_t data = 0;  ///< offset of the data in the file
+  uint64_t end = 0;   ///< offset after it, padding included
 };
 
 /// Walks the declared sizes of a MAT-file v5 against the bytes it has, so a
@@ -137,8 +148,7 @@ class Mat5Layout {
     swap_ = bytes_[126] == 'M' && bytes_[127] == 'I';
   }
   /// The same walk over `bytes` taken from inside a file of byte order `swap`.
-  Mat5Layout(const std::string& path, const std::string& bytes, bool swap)
-      : path_(path), bytes_(bytes), swap_(swap) {}
+  Mat5Layout(const std::string& path, const std::string& bytes, bool swap) : path_(path), bytes_(bytes), swap_(swap) {}
 
   /// Every top-level element must be a (compressed) matrix that fits in the
   /// file; the uncompressed `variable`'s parts must agree with its dims.
@@ -172,8 +182,8 @@ class Mat5Layout {
   /// in the padding of its last element.
   Mat5Element Tag(uint64_t offset, const std::string& what, uint64_t limit, bool top_level) const {
     if (limit < offset + 8) {
-      Fail(what + " at byte " + std::to_string(offset) + " is cut short inside its 8-byte tag (the element ends at byte " +
-           std::to_string(limit) + ")");
+      Fail(what + " at byte " + std::to_string(offset) +
+           " is cut short inside its 8-byte tag (the element ends at byte " + std::to_string(limit) + ")");
     }
     Mat5Element element;
     const uint32_t first = Word(offset);
@@ -182,8 +192,9 @@ class Mat5Layout {
       element.size = first >> 16;
       element.data = offset + 4;
       element.end = offset + 8;
-      if (element.size > 4) Fail(what + " at byte " + std::to_string(offset) + " is a small element of " +
-                                 std::to_string(element.size) + " bytes; at most 4 fit");
+      if (element.size > 4)
+        Fail(what + " at byte " + std::to_string(offset) + " is a small element of " + std::to_string(element.size) +
+             " bytes; at most 4 fit");
       return element;
     }
     element.type = first;
@@ -203,7 +214,8 @@ class Mat5Layout {
   /// length and dimensions it declares: the header must be a matrix whose
   /// flags, dimensions and name lie within its first kPeekBytes inflated.
   void CheckCompressed(const Mat5Element& element, int index) const {
-    const std::string what = "compressed element " + std::to_string(index) + " at byte " + std::to_string(element.data - 8);
+    const std::string what =
+        "compressed element " + std::to_string(index) + " at byte " + std::to_string(element.data - 8);
     std::string inflated(kPeekBytes, '\0');
     z_stream stream{};
     if (inflateInit(&stream) != Z_OK) Fail(what + ": zlib cannot start");
@@ -225,8 +237,8 @@ class Mat5Layout {
       Fail(what + " holds data type " + std::to_string(matrix.type) + ", not a matrix (14)");
     }
     if (matrix.size > element.size * kMaxDeflateRatio) {
-      Fail(what + " says it inflates to " + std::to_string(matrix.size) + " bytes; its " + std::to_string(element.size) +
-           " bytes cannot hold that much");
+      Fail(what + " says it inflates to " + std::to_string(matrix.size) + " bytes; its " +
+           std::to_string(element.size) + " bytes cannot hold that much");
     }
     (void)inner.CheckHeader(matrix, what + " (inflated, first " + std::to_string(inflated.size()) + " bytes)",
                             std::min<uint64_t>(inflated.size(), matrix.data + matrix.size));
@@ -294,11 +306,12 @@ class Mat5Layout {
     const std::string what = "variable '" + variable + "'";
     const Mat5Element real = Tag(header.name.end, what + "'s real part", limit, false);
     const size_t element_size = NumericSize(real.type);
-    if (element_size == 0) Fail(what + ": its real part has data type " + std::to_string(real.type) + ", not a number type");
+    if (element_size == 0)
+      Fail(what + ": its real part has data type " + std::to_string(real.type) + ", not a number type");
     if (real.size != header.count * element_size) {
-      Fail(what + ": dimensions " + header.shape + " hold " + std::to_string(header.count) + " values, but its real part has " +
-           std::to_string(real.size) + " bytes of " + std::to_string(element_size) + "-byte numbers (" +
-           std::to_string(real.size / element_size) + " values)");
+      Fail(what + ": dimensions " + header.shape + " hold " + std::to_string(header.count) +
+           " values, but its real part has " + std::to_string(real.size) + " bytes of " + std::to_string(element_size) +
+           "-byte numbers (" + std::to_string(real.size / element_size) + " values)");
     }
   }
 
@@ -342,9 +355,9 @@ uint64_t CheckMatLayout(files::RegularFile& file, const std::string& variable) {
     Mat4Layout(path, bytes).Check();
   }
   constexpr size_t kHdf5Offset = 512;  // v7.3: a 512-byte user block (the MATLAB header), then HDF5
-  if (IsMat73(bytes) &&
-      (bytes.size() < kHdf5Offset + 8 || bytes.compare(kHdf5Offset, 8, "\x89HDF\r\n\x1a\n") != 0)) {
-    throw std::runtime_error(path + ": a MATLAB 7.3 MAT-file header, but no HDF5 data at byte 512 (damaged or cut short?)");
+  if (IsMat73(bytes) && (bytes.size() < kHdf5Offset + 8 || bytes.compare(kHdf5Offset, 8, "\x89HDF\r\n\x1a\n") != 0)) {
+    throw std::runtime_error(path +
+                             ": a MATLAB 7.3 MAT-file header, but no HDF5 data at byte 512 (damaged or cut short?)");
   }
   return bytes.size();
 }
@@ -370,10 +383,10 @@ NpyArray ReadMatArray(const std::string& path, const std::string& variable, int6
   if (!var && !last_matio_message.empty()) fail("cannot read variable '" + variable + "' (damaged or cut short?)");
   if (!var) fail("has no variable '" + variable + "'; save the result array under that name");
   if (var->rank < 2 || var->rank > max_rank || var->isComplex || var->class_type != MAT_C_DOUBLE || var->isLogical) {
-    fail("variable '" + variable + "' is not a real " + (max_rank == 2 ? std::string("2-D") : "2-D to " + std::to_string(max_rank) + "-D") +
-         " double array (rank " + std::to_string(var->rank) +
-         ", class " + std::to_string(static_cast<int>(var->class_type)) + (var->isComplex ? ", complex" : "") +
-         (var->isLogical ? ", logical" : "") + ")");
+    fail("variable '" + variable + "' is not a real " +
+         (max_rank == 2 ? std::string("2-D") : "2-D to " + std::to_string(max_rank) + "-D") + " double array (rank " +
+         std::to_string(var->rank) + ", class " + std::to_string(static_cast<int>(var->class_type)) +
+         (var->isComplex ? ", complex" : "") + (var->isLogical ? ", logical" : "") + ")");
   }
   const size_t rows = var->dims[0];
   const size_t columns = var->dims[1];
@@ -384,14 +397,16 @@ NpyArray ReadMatArray(const std::string& path, const std::string& variable, int6
          (var->rank == 3 ? " x " + std::to_string(pages) : std::string()));
   }
   const size_t count = rows * columns * pages;
-  const std::string declared = "variable '" + variable + "' is " + std::to_string(rows) + " x " + std::to_string(columns) +
+  const std::string declared = "variable '" + variable + "' is " + std::to_string(rows) + " x " +
+                               std::to_string(columns) +
                                (var->rank == 3 ? " x " + std::to_string(pages) : std::string());
   if (count > static_cast<uint64_t>(max_values)) {
     fail(declared + ": more than the " + std::to_string(max_values) + " values a result of this export can have");
   }
   // A value takes a byte of the file at least (MATLAB may store doubles as
   // smaller integers); compressed, kMaxDeflateRatio bytes at most from one.
-  const bool compressed = var->compression == MAT_COMPRESSION_ZLIB || Matio::Get().GetVersion(mat.get()) == MAT_FT_MAT73;
+  const bool compressed =
+      var->compression == MAT_COMPRESSION_ZLIB || Matio::Get().GetVersion(mat.get()) == MAT_FT_MAT73;
   const uint64_t holdable = compressed ? file_size * kMaxDeflateRatio / sizeof(double) : file_size;
   if (count > holdable) {
     fail(declared + ", but the file's " + std::to_string(file_size) + " bytes cannot hold " + std::to_string(count) +
@@ -415,7 +430,8 @@ NpyArray ReadMatArray(const std::string& path, const std::string& variable, int6
   array.values.resize(count);
   for (size_t r = 0; r < rows; ++r) {  // the file is column-major
     for (size_t c = 0; c < columns; ++c) {
-      for (size_t p = 0; p < pages; ++p) array.values[(r * columns + c) * pages + p] = first[(p * columns + c) * rows + r];
+      for (size_t p = 0; p < pages; ++p)
+        array.values[(r * columns + c) * pages + p] = first[(p * columns + c) * rows + r];
     }
   }
   return array;
@@ -424,17 +440,20 @@ NpyArray ReadMatArray(const std::string& path, const std::string& variable, int6
 void WriteMatMatrix(const std::string& path, const std::string& variable, const NpyArray& array, bool v73) {
   InstallMatioLog();
   last_matio_message.clear();
-  if (array.shape.size() != 2 && array.shape.size() != 3) throw std::invalid_argument("WriteMatMatrix: needs a 2-D or 3-D array");
+  if (array.shape.size() != 2 && array.shape.size() != 3)
+    throw std::invalid_argument("WriteMatMatrix: needs a 2-D or 3-D array");
   const auto rows = static_cast<size_t>(array.shape[0]);
   const auto columns = static_cast<size_t>(array.shape[1]);
   const auto pages = array.shape.size() == 3 ? static_cast<size_t>(array.shape[2]) : size_t{1};
   std::vector<double> column_major(rows * columns * pages);
   for (size_t r = 0; r < rows; ++r) {
     for (size_t c = 0; c < columns; ++c) {
-      for (size_t p = 0; p < pages; ++p) column_major[(p * columns + c) * rows + r] = array.values[(r * columns + c) * pages + p];
+      for (size_t p = 0; p < pages; ++p)
+        column_major[(p * columns + c) * rows + r] = array.values[(r * columns + c) * pages + p];
     }
   }
-  std::unique_ptr<mat_t, MatCloser> mat(Matio::Get().CreateVer(path.c_str(), nullptr, v73 ? MAT_FT_MAT73 : MAT_FT_MAT5));
+  std::unique_ptr<mat_t, MatCloser> mat(
+      Matio::Get().CreateVer(path.c_str(), nullptr, v73 ? MAT_FT_MAT73 : MAT_FT_MAT5));
   if (!mat) throw std::runtime_error(path + ": cannot create the .mat file" + MatioDetail());
   size_t dims[3] = {rows, columns, pages};
   std::unique_ptr<matvar_t, VarFreer> var(Matio::Get().VarCreate(variable.c_str(), MAT_C_DOUBLE, MAT_T_DOUBLE,

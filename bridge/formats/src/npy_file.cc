@@ -215,7 +215,8 @@ NpyArray DecodeNpy(const std::string& bytes, const std::string& name) {
   size_t header_length = 0;
   size_t header_start = 0;
   if (major == 1 && minor == 0) {
-    header_length = static_cast<unsigned char>(bytes[8]) | (static_cast<size_t>(static_cast<unsigned char>(bytes[9])) << 8);
+    header_length =
+        static_cast<unsigned char>(bytes[8]) | (static_cast<size_t>(static_cast<unsigned char>(bytes[9])) << 8);
     header_start = 10;
   } else if ((major == 2 || major == 3) && minor == 0) {
     if (bytes.size() < 12) Fail(name, "cut short inside the .npy header");
@@ -225,11 +226,12 @@ NpyArray DecodeNpy(const std::string& bytes, const std::string& name) {
     Fail(name, ".npy format version " + std::to_string(major) + "." + std::to_string(minor) + " is not supported");
   }
   if (header_length > 1 << 20) {
-    Fail(name, "the .npy header length field says " + std::to_string(header_length) + " bytes; numpy writes a few hundred");
+    Fail(name,
+         "the .npy header length field says " + std::to_string(header_length) + " bytes; numpy writes a few hundred");
   }
   if (bytes.size() < header_start + header_length) {
-    Fail(name, "cut short inside the .npy header: its length field says " + std::to_string(header_length) +
-                   " bytes, " + std::to_string(bytes.size() - header_start) + " follow");
+    Fail(name, "cut short inside the .npy header: its length field says " + std::to_string(header_length) + " bytes, " +
+                   std::to_string(bytes.size() - header_start) + " follow");
   }
   std::string header = bytes.substr(header_start, header_length);
   while (!header.empty() && (header.back() == '\n' || header.back() == ' ')) header.pop_back();
@@ -238,13 +240,15 @@ NpyArray DecodeNpy(const std::string& bytes, const std::string& name) {
   NpyArray array;
   HeaderParser(header, name).Parse(&descr, &fortran_order, &array.shape);
   if (descr != "<f8") {
-    Fail(name, "holds dtype '" + descr + "'; expected float64 ('<f8'); save it with np.save(name, array.astype(np.float64))");
+    Fail(name,
+         "holds dtype '" + descr + "'; expected float64 ('<f8'); save it with np.save(name, array.astype(np.float64))");
   }
   int64_t count = 1;
   std::string shape_text;
   for (int64_t d : array.shape) shape_text += (shape_text.empty() ? "" : ", ") + std::to_string(d);
   for (int64_t d : array.shape) {
-    if (d != 0 && count > std::numeric_limits<int64_t>::max() / 8 / d) Fail(name, "has an absurd shape (" + shape_text + ")");
+    if (d != 0 && count > std::numeric_limits<int64_t>::max() / 8 / d)
+      Fail(name, "has an absurd shape (" + shape_text + ")");
     count *= d;
   }
   const size_t data_start = header_start + header_length;
@@ -255,8 +259,8 @@ NpyArray DecodeNpy(const std::string& bytes, const std::string& name) {
                    " bytes of data, it has " + std::to_string(actual));
   }
   if (actual > expected) {
-    Fail(name, "has " + std::to_string(actual - expected) + " bytes after the data its shape (" + shape_text +
-                   ") describes");
+    Fail(name,
+         "has " + std::to_string(actual - expected) + " bytes after the data its shape (" + shape_text + ") describes");
   }
   array.values.resize(static_cast<size_t>(count));
   if (count > 0) std::memcpy(array.values.data(), bytes.data() + data_start, static_cast<size_t>(expected));

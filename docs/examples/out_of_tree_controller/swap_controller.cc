@@ -20,8 +20,8 @@ class SwapRobot final : public dream::agents::HrvoRobot {
   }
 
   dream::agents::UnicycleCommand Update(int64_t /*step*/) override {
-    if (!has_odometry()) return {};                      // knows nothing yet: hold still
-    if (!goal_m_) goal_m_ = -pose().head<2>();           // the first fix: the point opposite
+    if (!has_odometry()) return {};             // knows nothing yet: hold still
+    if (!goal_m_) goal_m_ = -pose().head<2>();  // the first fix: the point opposite
     const Eigen::Vector2d error_m = *goal_m_ - pose().head<2>();
     done_ = error_m.norm() <= tolerance_m_;
     if (done_) return {};

@@ -20,9 +20,7 @@ constexpr uint32_t kChannelOffset = kUdpHeaderBytes + 8;
 constexpr uint32_t kPass = 0xffffffffu;  // keep the whole datagram
 constexpr uint32_t kDrop = 0;
 
-bool IsRegexSpecial(char c) {
-  return std::strchr(".[]()*+?{}|^$\\", c) != nullptr;
-}
+bool IsRegexSpecial(char c) { return std::strchr(".[]()*+?{}|^$\\", c) != nullptr; }
 
 bool IsQuantifier(char c) { return c == '*' || c == '+' || c == '?' || c == '{'; }
 
@@ -33,9 +31,7 @@ uint32_t BigEndian(const std::string& text, size_t at, size_t bytes) {
   return value;
 }
 
-uint16_t LoadSize(size_t bytes) {
-  return bytes == 4 ? BPF_W : bytes == 2 ? BPF_H : BPF_B;
-}
+uint16_t LoadSize(size_t bytes) { return bytes == 4 ? BPF_W : bytes == 2 ? BPF_H : BPF_B; }
 
 // Instructions checking that the channel starts with `prefix`; `fail` jumps
 // (relative, filled in later) go past the block.

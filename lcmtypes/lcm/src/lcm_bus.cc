@@ -48,8 +48,7 @@ void LcmBus::ResubscribeForAllHandlers() {
     alternatives += (alternatives.empty() ? "" : "|") + ("(?:" + subscriber.channel_regex_text + ")");
   }
   if (alternatives.empty()) alternatives = kStartUpChannel;  // nobody listens: LCM drops everything
-  ::lcm::Subscription* replacement =
-      lcm_->subscribeFunction("(?:" + alternatives + ")", &LcmBus::Dispatch, this);
+  ::lcm::Subscription* replacement = lcm_->subscribeFunction("(?:" + alternatives + ")", &LcmBus::Dispatch, this);
   if (replacement == nullptr) throw std::runtime_error("cannot subscribe to '" + alternatives + "' on " + url_);
   replacement->setQueueCapacity(kQueueCapacity);
   lcm_->unsubscribe(subscription_);
@@ -129,8 +128,8 @@ void LcmBus::Publish(const std::string& channel, const void* data, int size) {
     }
   }
   if (lcm_->publish(channel, data, static_cast<unsigned int>(size)) != 0) {
-    throw std::runtime_error("LCM refused to publish " + std::to_string(size) + " bytes on " +
-                             channel + " (url " + url_ + ")");
+    throw std::runtime_error("LCM refused to publish " + std::to_string(size) + " bytes on " + channel + " (url " +
+                             url_ + ")");
   }
 }
 

@@ -35,10 +35,10 @@ bool ClearRunId(std::vector<uint8_t>* encoded) {
   uint64_t fingerprint = 0;
   for (size_t i = 0; i < 8; ++i) fingerprint = (fingerprint << 8) | (*encoded)[i];
   const auto hash = static_cast<int64_t>(fingerprint);
-  const bool carries_run_id =
-      hash == applied_commands_t::getHash() || hash == obstacles_t::getHash() || hash == radio_message_t::getHash() ||
-      hash == robot_fault_t::getHash() || hash == robot_poses_t::getHash() || hash == run_status_t::getHash() ||
-      hash == velocity_command_t::getHash();
+  const bool carries_run_id = hash == applied_commands_t::getHash() || hash == obstacles_t::getHash() ||
+                              hash == radio_message_t::getHash() || hash == robot_fault_t::getHash() ||
+                              hash == robot_poses_t::getHash() || hash == run_status_t::getHash() ||
+                              hash == velocity_command_t::getHash();
   if (!carries_run_id) return false;
   std::memset(encoded->data() + kRunIdAt, 0, 8);
   return true;

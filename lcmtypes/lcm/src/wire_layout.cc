@@ -74,7 +74,8 @@ std::optional<std::string> WireLayout::Problem(const void* data, int size) const
         break;
       case Kind::kBoolean:
         if (left() < 1) return cut("a boolean");
-        if (bytes[at] > 1) return "boolean at byte " + std::to_string(at) + " is " + std::to_string(bytes[at]) + ", not 0 or 1";
+        if (bytes[at] > 1)
+          return "boolean at byte " + std::to_string(at) + " is " + std::to_string(bytes[at]) + ", not 0 or 1";
         ++at;
         break;
       case Kind::kCount:
@@ -108,7 +109,8 @@ std::optional<std::string> WireLayout::Problem(const void* data, int size) const
         const auto* text = bytes + at;
         const auto* nul = static_cast<const uint8_t*>(std::memchr(text, 0, static_cast<size_t>(length)));
         if (nul != text + length - 1) {
-          return "string at byte " + std::to_string(at) + (nul == nullptr ? " does not end in a NUL" : " holds a NUL before its end");
+          return "string at byte " + std::to_string(at) +
+                 (nul == nullptr ? " does not end in a NUL" : " holds a NUL before its end");
         }
         const int64_t bad = WireText::FirstNonUtf8Byte(text, length - 1);
         if (bad >= 0) {
@@ -120,8 +122,7 @@ std::optional<std::string> WireLayout::Problem(const void* data, int size) const
       }
     }
   }
-  if (left() != 0) return std::to_string(left()) + " trailing bytes after a complete message of " +
-                          std::to_string(at);
+  if (left() != 0) return std::to_string(left()) + " trailing bytes after a complete message of " + std::to_string(at);
   return std::nullopt;
 }
 

@@ -98,7 +98,7 @@ const WireLayout& WireLayoutOf<velocity_command_t>() {
                                        .Fixed(kInt32)  // robot_id
                                        .AgentId()
                                        .Fixed(kDouble + kDouble)  // v, w
-                                       .Boolean();                 // done
+                                       .Boolean();                // done
   return layout;
 }
 

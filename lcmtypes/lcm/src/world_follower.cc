@@ -34,8 +34,7 @@ WorldFollower::StepDecision WorldFollower::OnPoses(int64_t run_id, int64_t step)
   const bool confirmed = unconfirmed_step_ && step == *unconfirmed_step_ + 1;
   if (short_gap || confirmed) {
     if (confirmed && !short_gap) {
-      spdlog::warn("run {}: the world moved from step {} to step {}; following it", RunIdText(run_id_),
-                   step_, step);
+      spdlog::warn("run {}: the world moved from step {} to step {}; following it", RunIdText(run_id_), step_, step);
     }
     step_ = step;
     unconfirmed_step_.reset();

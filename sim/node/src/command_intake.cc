@@ -20,8 +20,8 @@ bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) =
 }  // namespace
 
 CommandIntake::CommandIntake(world::World& world, const config::SimNodeOptions& options, int64_t run_id,
-                             std::vector<RobotSlot>& robots, lcm::BadMessageLog& bad_messages,
-                             const NodeClock& clock, OtherWorldSeen other_world_seen)
+                             std::vector<RobotSlot>& robots, lcm::BadMessageLog& bad_messages, const NodeClock& clock,
+                             OtherWorldSeen other_world_seen)
     : world_(world),
       options_(options),
       run_id_(run_id),
@@ -72,20 +72,24 @@ std::optional<int> CommandIntake::AddressedRobot(const std::string& channel, con
   }
   const int id = *channel_id;
   if (id >= world_.num_robots()) {
-    Reject(channel, "robot " + std::to_string(id) + " does not exist: this run has " +
-                        std::to_string(world_.num_robots()) + " robots (ids 0.." +
-                        std::to_string(world_.num_robots() - 1) + ")", command.agent_id);
+    Reject(channel,
+           "robot " + std::to_string(id) + " does not exist: this run has " + std::to_string(world_.num_robots()) +
+               " robots (ids 0.." + std::to_string(world_.num_robots() - 1) + ")",
+           command.agent_id);
     return std::nullopt;
   }
   if (command.robot_id != id) {
-    Reject(channel, "payload robot_id " + std::to_string(command.robot_id) + " does not match the channel", command.agent_id);
+    Reject(channel, "payload robot_id " + std::to_string(command.robot_id) + " does not match the channel",
+           command.agent_id);
     return std::nullopt;
   }
   // Commands answer the step the world is at: a later step was never
   // published, and one further back is late (lockstep: already taken).
   if (command.step < 0 || command.step > world_.step()) {
-    Reject(channel, "answers step " + std::to_string(command.step) + " but the world is at step " +
-                        std::to_string(world_.step()), command.agent_id);
+    Reject(
+        channel,
+        "answers step " + std::to_string(command.step) + " but the world is at step " + std::to_string(world_.step()),
+        command.agent_id);
     return std::nullopt;
   }
   return id;
@@ -112,7 +116,9 @@ Heard CommandIntake::AgainForHeldStep(const std::string& channel, int id, RobotS
 bool CommandIntake::ClaimRobot(const std::string& channel, int id, RobotSlot& robot,
                                const velocity_command_t& command) {
   if (!robot.owned || (robot.lost && robot.owner_agent_id != command.agent_id)) {
-    if (robot.owned) spdlog::warn("robot {}: agent {:#x} takes over from lost agent {:#x}", id, command.agent_id, robot.owner_agent_id);
+    if (robot.owned)
+      spdlog::warn("robot {}: agent {:#x} takes over from lost agent {:#x}", id, command.agent_id,
+                   robot.owner_agent_id);
     robot.owned = true;
     robot.owner_agent_id = command.agent_id;
   } else if (robot.owner_agent_id != command.agent_id) {
@@ -140,10 +146,11 @@ Heard CommandIntake::Hold(const std::string& channel, int id, RobotSlot& robot, 
   const bool absurd =
       !finite || std::abs(command.v) > options_.max_abs_v_mps || std::abs(command.w) > options_.max_abs_w_radps;
   if (absurd) {
-    Reject(channel, "absurd velocity v=" + std::to_string(command.v) + " m/s, w=" + std::to_string(command.w) +
-                        " rad/s (limits " + std::to_string(options_.max_abs_v_mps) + ", " +
-                        std::to_string(options_.max_abs_w_radps) + "); robot " + std::to_string(id) +
-                        " holds still", command.agent_id);
+    Reject(channel,
+           "absurd velocity v=" + std::to_string(command.v) + " m/s, w=" + std::to_string(command.w) +
+               " rad/s (limits " + std::to_string(options_.max_abs_v_mps) + ", " +
+               std::to_string(options_.max_abs_w_radps) + "); robot " + std::to_string(id) + " holds still",
+           command.agent_id);
     robot.v_mps = 0.0;
     robot.w_radps = 0.0;
   } else {
@@ -151,7 +158,8 @@ Heard CommandIntake::Hold(const std::string& channel, int id, RobotSlot& robot, 
     robot.w_radps = command.w;
   }
   robot.done = command.done;
-  if (options_.mode != config::WorldMode::kLockstep) world_.SetCommand(id, world::UnicycleCommand{robot.v_mps, robot.w_radps});
+  if (options_.mode != config::WorldMode::kLockstep)
+    world_.SetCommand(id, world::UnicycleCommand{robot.v_mps, robot.w_radps});
   // An absurd command answers the step (the robot holds still), but its
   // values were refused: kept apart from the log, whose DREAM_APPLIED shows the stop.
   return absurd ? Heard::kRefused : Heard::kUsed;

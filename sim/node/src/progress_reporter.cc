@@ -137,8 +137,7 @@ std::string ProgressReporter::BarLine(int64_t done_steps) const {
                               " steps/s  ETA " + FormatDuration(EtaSeconds(total_steps_ - done_steps, steps_per_s_));
   const int max_columns = std::max(1, options_.width_columns - 1);
   // "steps [bar]  figures": what is left for the bar between its brackets.
-  const int bar_columns =
-      std::min(kMaxBarColumns, max_columns - static_cast<int>(steps.size() + figures.size()) - 5);
+  const int bar_columns = std::min(kMaxBarColumns, max_columns - static_cast<int>(steps.size() + figures.size()) - 5);
   std::string line;
   if (bar_columns >= kMinBarColumns) {
     const int filled = static_cast<int>(fraction * bar_columns);

@@ -69,14 +69,15 @@ std::vector<world::VerdictReason> OutcomeReasons(const RunOutcome& outcome) {
                        outcome.refused_log.empty()
                            ? std::string("summary.json bad_messages, bad_message_first and bad_message_senders")
                            : "summary.json bad_messages, bad_message_first, bad_message_senders and refused_messages; "
-                             "the first " + std::to_string(outcome.refused_log_events) + " as heard: dream log echo " +
+                             "the first " +
+                                 std::to_string(outcome.refused_log_events) + " as heard: dream log echo " +
                                  outcome.refused_log});
   }
   if (!outcome.other_worlds.empty()) {
-    reasons.push_back({"other_worlds", world::RunVerdict::kNotReady,
-                       std::to_string(outcome.other_worlds.size()) +
-                           " other world(s) published on the same LCM URL during the run",
-                       "summary.json other_worlds; give each run its own --lcm-url"});
+    reasons.push_back(
+        {"other_worlds", world::RunVerdict::kNotReady,
+         std::to_string(outcome.other_worlds.size()) + " other world(s) published on the same LCM URL during the run",
+         "summary.json other_worlds; give each run its own --lcm-url"});
   }
   if (outcome.handler_failures > 0) {
     reasons.push_back({"handler_failures", world::RunVerdict::kNotReady,
@@ -93,14 +94,15 @@ std::vector<world::VerdictReason> OutcomeReasons(const RunOutcome& outcome) {
 }
 
 world::RunJudgement JudgeRun(const run_config::RunConfig& config, const RunOutcome& outcome, const world::World& world,
-                      int64_t robots_outside_boundaries) {
-  world::RunJudgement judgement(world::RunReport::FromViolations(world.step(), world.violations(), world.time_step_s()));
+                             int64_t robots_outside_boundaries) {
+  world::RunJudgement judgement(
+      world::RunReport::FromViolations(world.step(), world.violations(), world.time_step_s()));
   world::LabVerifierRules rules;
   rules.time_step_s = world.time_step_s();
   // What the run's export would declare and run: its steps plus the settle phase.
   const int64_t iterations = world.step() + world::LabVerifierRules::kExportSettleSteps;
   const world::LabVerifierRules::Declaration declared{config.num_robots,
-                                               static_cast<double>(iterations) * world.time_step_s()};
+                                                      static_cast<double>(iterations) * world.time_step_s()};
   world::LabVerifierRules::Counts counts;
   counts.num_robots = world.num_robots();
   counts.iterations = iterations;

@@ -19,9 +19,7 @@ namespace {
 // length, data length: 4 + 8 + 8 + 4 + 4 bytes) followed by channel and data.
 constexpr int64_t kEventHeaderBytes = 28;
 
-std::string ErrorText(int error_number) {
-  return error_number != 0 ? std::strerror(error_number) : "unknown error";
-}
+std::string ErrorText(int error_number) { return error_number != 0 ? std::strerror(error_number) : "unknown error"; }
 
 }  // namespace
 
@@ -42,8 +40,7 @@ RunRecorder::RunRecorder(std::string path, int flush_interval_events)
   log_ = std::make_unique<::lcm::LogFile>(part_path_, "a");
   ::close(created);
   if (!log_->good()) {
-    throw std::runtime_error("cannot create the run log " + part_path_ +
-                             ": does the folder exist and is it writable?");
+    throw std::runtime_error("cannot create the run log " + part_path_ + ": does the folder exist and is it writable?");
   }
   struct stat file_status {};
   if (!made_known || ::fstat(fileno(log_->getFilePtr()), &file_status) != 0 || file_status.st_dev != made.st_dev ||
@@ -167,8 +164,8 @@ void RunRecorder::Close() {
     part_replaced_ = true;
     throw std::runtime_error("the run log " + part_path_ +
                              " is no longer the file this run wrote (its folder was removed, or the file moved or "
-                             "replaced, while the run went on): not renamed to " + path_ +
-                             ", so whatever is there now is left alone");
+                             "replaced, while the run went on): not renamed to " +
+                             path_ + ", so whatever is there now is left alone");
   }
   if (std::rename(part_path_.c_str(), path_.c_str()) != 0) {
     throw std::runtime_error("cannot rename " + part_path_ + " to " + path_ + ": " + ErrorText(errno));

@@ -284,7 +284,7 @@ nlohmann::ordered_json ViolationsLocatedJson(const world::LocatedViolations& loc
     nlohmann::ordered_json entry;
     entry["kind"] = world::LocatedViolationKindName(v.kind);
     entry["robots"] = v.kind == world::LocatedViolation::Kind::kCollision ? nlohmann::json::array({v.robot, v.other})
-                                                                           : nlohmann::json::array({v.robot});
+                                                                          : nlohmann::json::array({v.robot});
     if (v.kind == world::LocatedViolation::Kind::kObstacle) entry["obstacle"] = v.other;
     entry["first_step"] = v.first_step;
     entry["last_step"] = v.last_step;
@@ -381,8 +381,7 @@ RunSummary RunSummary::Of(const run_config::RunConfig& config, const RunOutcome&
   summary.max_steps = config.sim.max_steps;
   summary.simulated_time_s = world.time_s();
   summary.wall_time_s = outcome.wall_time_s;
-  summary.steps_per_second =
-      outcome.wall_time_s > 0 ? static_cast<double>(outcome.steps) / outcome.wall_time_s : 0.0;
+  summary.steps_per_second = outcome.wall_time_s > 0 ? static_cast<double>(outcome.steps) / outcome.wall_time_s : 0.0;
   summary.violations = world.violations();
   summary.SetVerdict(judgement);
   summary.run_id = lcm::RunIdText(outcome.run_id);

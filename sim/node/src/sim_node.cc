@@ -46,9 +46,9 @@ template <typename Message>
 bool DecodeOrReport(lcm::BadMessageLog& bad_messages, const std::string& channel, const void* data, int size,
                     Message* message) {
   if (std::optional<std::string> problem = lcm::DecodeProblem(data, size, message)) {
-    bad_messages.Report(channel,
-                        "cannot decode " + std::to_string(size) + " bytes as " + Message::getTypeName() + ": " + *problem,
-                        lcm::WireLayoutOf<Message>().AgentIdOf(data, size));
+    bad_messages.Report(
+        channel, "cannot decode " + std::to_string(size) + " bytes as " + Message::getTypeName() + ": " + *problem,
+        lcm::WireLayoutOf<Message>().AgentIdOf(data, size));
     return false;
   }
   return true;
@@ -61,16 +61,6 @@ std::string JoinIds(const std::vector<int>& ids) {
 }
 
 }  // namespace
-
-const char* EndName(RunOutcome::End end) {
-  switch (end) {
-    case RunOutcome::End::kFinished: return "finished";
-    case RunOutcome::End::kInterrupted: return "interrupted";
-    case RunOutcome::End::kStartTimeout: return "start_timeout";
-    case RunOutcome::End::kFailed: return "failed";
-  }
-  return "unknown";
-}
 
 SimNode::SimNode(lcm::LcmInterface& lcm, world::World& world, RunRecorder* recorder, config::SimNodeOptions options)
     : lcm_(lcm),
@@ -91,10 +81,9 @@ SimNode::SimNode(lcm::LcmInterface& lcm, world::World& world, RunRecorder* recor
   // world's own poses and obstacles, which OnMessage would drop anyway: over
   // udpm each comes back every step, and LCM now drops them in its receive
   // thread instead of waking this one (docs/performance.md).
-  subscription_ = lcm_.Subscribe(std::string("(?!") + lcm::kPosesChannel + "$|" + lcm::kObstaclesChannel + "$).*",
-                                 [this](const std::string& channel, const void* data, int size) {
-                                   OnMessage(channel, data, size);
-                                 });
+  subscription_ = lcm_.Subscribe(
+      std::string("(?!") + lcm::kPosesChannel + "$|" + lcm::kObstaclesChannel + "$).*",
+      [this](const std::string& channel, const void* data, int size) { OnMessage(channel, data, size); });
 }
 
 int64_t SimNode::SimUtime() const { return world_.utime(); }
@@ -140,8 +129,9 @@ Heard SimNode::Hear(const std::string& channel, const void* data, int size) {
   }
   // DREAM_APPLIED and DREAM_MEASURED_POSES are the world's own records, never
   // sent: one heard is forged; any other name is not part of a run.
-  bad_messages_.Report(channel, "not a channel agents send on (DREAM_CMD_<id>, DREAM_RADIO_<id>, DREAM_FAULT_<id>): "
-                                "refused, kept out of the run log");
+  bad_messages_.Report(channel,
+                       "not a channel agents send on (DREAM_CMD_<id>, DREAM_RADIO_<id>, DREAM_FAULT_<id>): "
+                       "refused, kept out of the run log");
   return Heard::kRefused;
 }
 
@@ -165,10 +155,13 @@ std::string SimNode::RecorderFailureReason() const {
 
 void SimNode::NoteOtherWorld(int64_t run_id, const std::string& seen_on) {
   // 0 is "no run" (a message made without one), not a world.
-  if (run_id == 0 || run_id == run_id_ || other_worlds_.size() >= kMaxOtherWorlds || !other_worlds_.insert(run_id).second) return;
-  spdlog::error("another world (run {}) is on this LCM URL ({}; seen on {}) beside this one (run {}): two simulators "
-                "share the URL and agents may answer either. Stop one, or give each run its own URL",
-                lcm::RunIdText(run_id), lcm_.url(), seen_on, lcm::RunIdText(run_id_));
+  if (run_id == 0 || run_id == run_id_ || other_worlds_.size() >= kMaxOtherWorlds ||
+      !other_worlds_.insert(run_id).second)
+    return;
+  spdlog::error(
+      "another world (run {}) is on this LCM URL ({}; seen on {}) beside this one (run {}): two simulators "
+      "share the URL and agents may answer either. Stop one, or give each run its own URL",
+      lcm::RunIdText(run_id), lcm_.url(), seen_on, lcm::RunIdText(run_id_));
 }
 
 void SimNode::OnStatus(const std::string& /*channel*/, const run_status_t& status) {
@@ -183,18 +176,18 @@ Heard SimNode::OnFault(const std::string& channel, const robot_fault_t& fault) {
   }
   const std::optional<int> id = lcm::RobotIdFromChannel(channel, lcm::kFaultChannelPrefix);
   if (!id || *id != fault.robot_id || *id >= world_.num_robots()) {
-    bad_messages_.Report(channel,
-                         "robot fault for robot " + std::to_string(fault.robot_id) +
-                             " does not match its channel or this run's robots",
-                         fault.agent_id);
+    bad_messages_.Report(
+        channel,
+        "robot fault for robot " + std::to_string(fault.robot_id) + " does not match its channel or this run's robots",
+        fault.agent_id);
     return Heard::kRefused;
   }
   RobotSlot& robot = robots_[static_cast<size_t>(*id)];
   // Only the agent driving the robot may give it up.
   if (robot.owned && robot.owner_agent_id != fault.agent_id) {
     bad_messages_.Report(channel,
-                         "robot fault from agent " + std::to_string(fault.agent_id) +
-                             ", which does not drive robot " + std::to_string(*id),
+                         "robot fault from agent " + std::to_string(fault.agent_id) + ", which does not drive robot " +
+                             std::to_string(*id),
                          fault.agent_id);
     return Heard::kRefused;
   }
@@ -204,8 +197,8 @@ Heard SimNode::OnFault(const std::string& channel, const robot_fault_t& fault) {
   robot.lost = true;
   robots_ever_lost_.insert(*id);
   world_.StopRobot(*id);
-  spdlog::error("robot {} lost at step {}: its controller failed: {}; it stops, the run goes on", *id,
-                world_.step(), detail);
+  spdlog::error("robot {} lost at step {}: its controller failed: {}; it stops, the run goes on", *id, world_.step(),
+                detail);
   return Heard::kUsed;
 }
 
@@ -306,9 +299,10 @@ void SimNode::MarkSilentRobotsLost(Clock::time_point now) {
     }
   }
   if (!newly_lost.empty()) {
-    spdlog::warn("step {}: no command for {:.1f} s from robot(s) {}: marked lost, their robots stop; "
-                 "they rejoin when their agent speaks again",
-                 world_.step(), options_.agent_timeout_s, JoinIds(newly_lost));
+    spdlog::warn(
+        "step {}: no command for {:.1f} s from robot(s) {}: marked lost, their robots stop; "
+        "they rejoin when their agent speaks again",
+        world_.step(), options_.agent_timeout_s, JoinIds(newly_lost));
   }
 }
 
@@ -482,7 +476,8 @@ RunOutcome SimNode::Run(const std::atomic<bool>& stop) {
     if (stop.load()) return Finish(RunOutcome::End::kInterrupted, "interrupted (Ctrl-C or SIGTERM)");
     const auto now = clock_.now();
     if (state_ == run_status_t::WAITING_FOR_AGENTS) {
-      if (std::optional<RunOutcome> timed_out = StartWhenAllAnswered(now, &next_realtime_step)) return std::move(*timed_out);
+      if (std::optional<RunOutcome> timed_out = StartWhenAllAnswered(now, &next_realtime_step))
+        return std::move(*timed_out);
     }
     if (state_ == run_status_t::RUNNING && ReadyForNextStep(now, next_realtime_step)) {
       next_realtime_step += step_period;

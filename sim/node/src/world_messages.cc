@@ -2,7 +2,8 @@
 
 namespace dream::node {
 
-void WorldMessages::Fill(const world::World& world, std::vector<world::ObstacleState>* scratch, obstacles_t* obstacles) {
+void WorldMessages::Fill(const world::World& world, std::vector<world::ObstacleState>* scratch,
+                         obstacles_t* obstacles) {
   obstacles->step = world.step();
   world.GetObstacleStates(scratch);
   obstacles->obstacles.clear();

@@ -46,8 +46,7 @@ double ArenaLayout::legend_center_px() const { return py(arena_.y_min_m) + margi
 
 double ArenaLayout::caption_baseline_px(int line) const {
   const double line_px = caption_font_px() * kCaptionLineSpacing;
-  return py(arena_.y_min_m) + margin_px_ * 0.6 + legend_row_px() + line_px * (line + 1) -
-         caption_font_px() * 0.2;
+  return py(arena_.y_min_m) + margin_px_ * 0.6 + legend_row_px() + line_px * (line + 1) - caption_font_px() * 0.2;
 }
 
 }  // namespace dream::render

@@ -39,10 +39,14 @@ const char* VerdictExplained(const std::string& verdict) {
   const std::optional<world::RunVerdict> known = world::ParseRunVerdict(verdict);
   if (!known) return nullptr;
   switch (*known) {
-    case world::RunVerdict::kClean: return "clean (no errors or warnings)";
-    case world::RunVerdict::kWarning: return "warning (accepted: actuator limits only)";
-    case world::RunVerdict::kNotReady: return "not ready (robots lost, conflicts, bad messages or goal missed)";
-    case world::RunVerdict::kRejected: return "rejected (boundary, collision or obstacle errors)";
+    case world::RunVerdict::kClean:
+      return "clean (no errors or warnings)";
+    case world::RunVerdict::kWarning:
+      return "warning (accepted: actuator limits only)";
+    case world::RunVerdict::kNotReady:
+      return "not ready (robots lost, conflicts, bad messages or goal missed)";
+    case world::RunVerdict::kRejected:
+      return "rejected (boundary, collision or obstacle errors)";
   }
   return nullptr;
 }
@@ -165,7 +169,8 @@ void ArenaPainter::ClipToArena() const {
   const world::Arena& arena = layout_.arena();
   const double left = std::floor(layout_.px(arena.x_min_m));
   const double top = std::floor(layout_.py(arena.y_max_m));
-  cairo_rectangle(cr_, left, top, std::ceil(layout_.px(arena.x_max_m)) - left, std::ceil(layout_.py(arena.y_min_m)) - top);
+  cairo_rectangle(cr_, left, top, std::ceil(layout_.px(arena.x_max_m)) - left,
+                  std::ceil(layout_.py(arena.y_min_m)) - top);
   cairo_clip(cr_);
 }
 

@@ -31,10 +31,10 @@ class ArenaPainter {
   /// A marker of the legend row, drawn by the same code as in the arena.
   struct LegendItem {
     enum class Marker {
-      kRobot,     ///< a robot disc (robot 0's colour) with `look` and `size_factor`, heading right
-      kGoal,      ///< a goal cross (robot 0's colour, as a last goal)
-      kObstacle,  ///< a dark grey square, as obstacles are filled
-      kViolation, ///< a violation's red ring with a cross (ViolationRing)
+      kRobot,      ///< a robot disc (robot 0's colour) with `look` and `size_factor`, heading right
+      kGoal,       ///< a goal cross (robot 0's colour, as a last goal)
+      kObstacle,   ///< a dark grey square, as obstacles are filled
+      kViolation,  ///< a violation's red ring with a cross (ViolationRing)
     };
     Marker marker;
     std::string label;
@@ -65,8 +65,8 @@ class ArenaPainter {
   /// A robot's path through `points_m` in its colour. Cheap for long runs:
   /// points closer than a pixel to the last kept one are dropped, and a
   /// pixel-rounded segment already drawn is not drawn again.
-  void Track(int robot_id, const std::vector<std::array<double, 2>>& points_m, double line_width_px,
-             double alpha = 1.0, bool dashed = false) const;
+  void Track(int robot_id, const std::vector<std::array<double, 2>>& points_m, double line_width_px, double alpha = 1.0,
+             bool dashed = false) const;
   /// A robot at (x, y) heading `theta`, to scale, optionally with its id.
   void Robot(int robot_id, double x_m, double y_m, double theta_rad, RobotLook look, bool label = false,
              double size_factor = 1.0) const;

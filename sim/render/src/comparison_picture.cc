@@ -9,9 +9,8 @@
 
 namespace dream::render {
 
-void ComparisonPicture::Render(const run_log::RunLog& first, const run_log::RunLog& second,
-                               const std::string& png_path, const std::vector<std::string>& caption_lines,
-                               int width_px) {
+void ComparisonPicture::Render(const run_log::RunLog& first, const run_log::RunLog& second, const std::string& png_path,
+                               const std::vector<std::string>& caption_lines, int width_px) {
   Drawable(first);
   Drawable(second);
   const ArenaLayout layout(width_px, static_cast<int>(caption_lines.size()));
@@ -35,8 +34,8 @@ void ComparisonPicture::Render(const run_log::RunLog& first, const run_log::RunL
     }
     if (i < second_end.num_robots) {
       // With its id: captions name robots ("robot 7 strays 0.12 m").
-      painter.Robot(i, second_end.x[k], second_end.y[k], second_end.theta[k], ArenaPainter::RobotLook::kFilled,
-                    true, 0.8);
+      painter.Robot(i, second_end.x[k], second_end.y[k], second_end.theta[k], ArenaPainter::RobotLook::kFilled, true,
+                    0.8);
     }
   }
   using Item = ArenaPainter::LegendItem;
@@ -45,7 +44,8 @@ void ComparisonPicture::Render(const run_log::RunLog& first, const run_log::RunL
                               {Item::Marker::kRobot, "second run's end", ArenaPainter::RobotLook::kFilled, 0.8}};
   if (!obstacles.empty()) legend.push_back({Item::Marker::kObstacle, "obstacle"});
   painter.Legend(legend);
-  for (size_t line = 0; line < caption_lines.size(); ++line) painter.Caption(static_cast<int>(line), caption_lines[line]);
+  for (size_t line = 0; line < caption_lines.size(); ++line)
+    painter.Caption(static_cast<int>(line), caption_lines[line]);
   surface.Commit(png_path);
 }
 

@@ -54,7 +54,8 @@ std::string FfmpegEncoder::NotInstalledMessage() {
 FfmpegEncoder::FfmpegEncoder(const Input& input, const std::vector<std::string>& output_args) : input_(input) {
   char stderr_template[] = "/tmp/dream-ffmpeg-XXXXXX";
   const int stderr_fd = ::mkstemp(stderr_template);
-  if (stderr_fd < 0) throw std::runtime_error(std::string("cannot create a temporary file for ffmpeg: ") + std::strerror(errno));
+  if (stderr_fd < 0)
+    throw std::runtime_error(std::string("cannot create a temporary file for ffmpeg: ") + std::strerror(errno));
   stderr_path_ = stderr_template;
   int pipe_fds[2];
   if (::pipe2(pipe_fds, O_CLOEXEC) != 0) {
@@ -62,10 +63,15 @@ FfmpegEncoder::FfmpegEncoder(const Input& input, const std::vector<std::string>&
     throw std::runtime_error(std::string("cannot create a pipe for ffmpeg: ") + std::strerror(errno));
   }
 
-  std::vector<std::string> args = {"ffmpeg", "-hide_banner", "-nostats", "-loglevel", "error", "-y",
-                                   "-f", "rawvideo", "-pix_fmt", RawPixelFormat(),
-                                   "-video_size", std::to_string(input.width_px) + "x" + std::to_string(input.height_px),
-                                   "-framerate", FormatFps(input.fps), "-i", "-"};
+  std::vector<std::string> args = {
+      "ffmpeg",      "-hide_banner",
+      "-nostats",    "-loglevel",
+      "error",       "-y",
+      "-f",          "rawvideo",
+      "-pix_fmt",    RawPixelFormat(),
+      "-video_size", std::to_string(input.width_px) + "x" + std::to_string(input.height_px),
+      "-framerate",  FormatFps(input.fps),
+      "-i",          "-"};
   args.insert(args.end(), output_args.begin(), output_args.end());
   std::vector<char*> argv;
   for (std::string& arg : args) argv.push_back(arg.data());

@@ -169,10 +169,11 @@ void MetricPlot::Render(const std::vector<MetricSeries>& series, const std::stri
   const double ui = width_px / 1000.0;
   const double left = 80 * ui;
   const double right = 20 * ui;
-  const double top = 60 * ui;          // the title, then the first panel's name
+  const double top = 60 * ui;  // the title, then the first panel's name
   const double panel_height = 170 * ui;
-  const double panel_gap = 50 * ui;    // tick labels below a panel, the next panel's name above it
-  const int height_px = static_cast<int>(std::ceil(top + static_cast<double>(series.size()) * (panel_height + panel_gap) + 20 * ui));
+  const double panel_gap = 50 * ui;  // tick labels below a panel, the next panel's name above it
+  const int height_px =
+      static_cast<int>(std::ceil(top + static_cast<double>(series.size()) * (panel_height + panel_gap) + 20 * ui));
   PictureSurface surface(format, width_px, height_px);
   cairo_t* cr = surface.cr();
   cairo_set_source_rgb(cr, 1, 1, 1);

@@ -19,7 +19,7 @@ namespace dream::render {
 namespace {
 
 constexpr double kStepS = robotarium::RobotariumConstants::kTimeStepSeconds;
-constexpr double kRadioFlashS = 0.5;   // a broadcast's lines fade out over this much simulated time
+constexpr double kRadioFlashS = 0.5;      // a broadcast's lines fade out over this much simulated time
 constexpr int kPaletteSampleFrames = 40;  // GIF: frames the palette is computed from
 
 using SurfacePtr = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
@@ -99,7 +99,8 @@ void RunAnimation::DrawStaticLayer() {
     bool obstacles = !moving.empty();
     for (size_t i = 0; i < log_.poses().size() && !obstacles; ++i) obstacles = !log_.obstacles_at(i).obstacles.empty();
     if (obstacles) legend.push_back({Item::Marker::kObstacle, "obstacle"});
-    if (overlays_.violations.total() > 0) legend.push_back({Item::Marker::kViolation, "violation (k = its first step)"});
+    if (overlays_.violations.total() > 0)
+      legend.push_back({Item::Marker::kViolation, "violation (k = its first step)"});
     painter.Legend(legend);
   }
   surfaces_->frame.reset(cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height));
@@ -196,9 +197,9 @@ bool RunAnimation::Encode(const std::string& path, RenderFormat format, const st
       FfmpegEncoder encoder(input, {"-vf", "palettegen=stats_mode=full", "-f", "image2", palette.path()});
       if (!feed(encoder, std::max(1, frame_count_ / kPaletteSampleFrames))) return false;
     }
-    FfmpegEncoder encoder(input, {"-i", palette.path(), "-lavfi",
-                                  "[0:v][1:v]paletteuse=dither=bayer:bayer_scale=4:diff_mode=rectangle", "-loop", "0",
-                                  "-f", "gif", video.path()});
+    FfmpegEncoder encoder(
+        input, {"-i", palette.path(), "-lavfi", "[0:v][1:v]paletteuse=dither=bayer:bayer_scale=4:diff_mode=rectangle",
+                "-loop", "0", "-f", "gif", video.path()});
     if (!feed(encoder, 1)) return false;
   }
   video.Commit();

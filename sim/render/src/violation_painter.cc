@@ -34,7 +34,7 @@ void ViolationRing(cairo_t* cr, double x, double y, double radius_px, double lin
 double ViolationPainter::RingRadiusPx() const { return std::max(6.0, kRingRadiusM * layout_.scale()); }
 
 std::vector<ViolationPainter::Spot> ViolationPainter::Spots(const std::vector<world::LocatedViolation>& violations,
-                                                           std::optional<int64_t> now_step) const {
+                                                            std::optional<int64_t> now_step) const {
   // Marks closer than half a ring would hide each other: one ring for them,
   // labelled with the earliest first step and how many more are there.
   const double merge_px = RingRadiusPx() * 0.5;
@@ -44,9 +44,8 @@ std::vector<ViolationPainter::Spot> ViolationPainter::Spots(const std::vector<wo
     const double x = layout_.px(v.x_m);
     const double y = layout_.py(v.y_m);
     const bool going_on = !now_step || v.last_step >= *now_step;
-    auto near = std::find_if(spots.begin(), spots.end(), [&](const Spot& spot) {
-      return std::hypot(spot.x - x, spot.y - y) < merge_px;
-    });
+    auto near = std::find_if(spots.begin(), spots.end(),
+                             [&](const Spot& spot) { return std::hypot(spot.x - x, spot.y - y) < merge_px; });
     if (near == spots.end()) {
       spots.push_back({x, y, v.first_step, v.last_step, 0, going_on});
     } else {
@@ -93,9 +92,10 @@ int ViolationPainter::Mark(const std::vector<world::LocatedViolation>& violation
     const double h = extents.height + 2;
     // Right above, right below, left above, left below the ring.
     const std::array<std::array<double, 2>, 4> corners = {{{x + radius * 0.8, y - radius * 0.8 - h},
-                                                            {x + radius * 0.8, y + radius * 0.8},
-                                                            {x - radius * 0.8 - w, y - radius * 0.8 - h},
-                                                            {x - radius * 0.8 - w, y + radius * 0.8}}};    for (const std::array<double, 2>& corner : corners) {
+                                                           {x + radius * 0.8, y + radius * 0.8},
+                                                           {x - radius * 0.8 - w, y - radius * 0.8 - h},
+                                                           {x - radius * 0.8 - w, y + radius * 0.8}}};
+    for (const std::array<double, 2>& corner : corners) {
       const Box box{corner[0], corner[1], corner[0] + w, corner[1] + h};
       if (box.x0 < 0 || box.y0 < 0 || box.x1 > layout_.width_px() || box.y1 > layout_.height_px()) continue;
       if (std::any_of(taken.begin(), taken.end(), [&](const Box& t) { return t.Overlaps(box); })) continue;

@@ -47,7 +47,8 @@ class ViolationPainter {
     int others = 0;          // violations there besides the first
     bool going_on = true;    // a video frame: one of them still lasts
   };
-  std::vector<Spot> Spots(const std::vector<world::LocatedViolation>& violations, std::optional<int64_t> now_step) const;
+  std::vector<Spot> Spots(const std::vector<world::LocatedViolation>& violations,
+                          std::optional<int64_t> now_step) const;
 
   cairo_t* cr_;
   const ArenaLayout& layout_;

@@ -46,7 +46,8 @@ Bounds BoundsOf(const XyPanel& panel) {
 }
 
 void Text(cairo_t* cr, double x, double y, const std::string& text, double size, bool bold, double align = 0.0) {
-  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL,
+                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr, size);
   cairo_text_extents_t extents;
   cairo_text_extents(cr, text.c_str(), &extents);
@@ -154,8 +155,8 @@ void DrawPanel(cairo_t* cr, const XyPanel& panel, double left, double top, doubl
 
 }  // namespace
 
-void XyPlot::Render(const std::vector<XyPanel>& panels, int columns, const std::string& title,
-                    const std::string& path, RenderFormat format, int width_px) {
+void XyPlot::Render(const std::vector<XyPanel>& panels, int columns, const std::string& title, const std::string& path,
+                    RenderFormat format, int width_px) {
   if (panels.empty()) throw std::invalid_argument("nothing to plot: no panels");
   for (const XyPanel& panel : panels) {
     bool any = false;

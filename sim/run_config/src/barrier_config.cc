@@ -17,26 +17,27 @@ BarrierConfig BarrierConfig::Read(const config::ConfigNode& root) {
                           "magnitude_limit_mps", "boundary_m"});
   using Kind = BarrierConfig::Kind;
   using ApplyIn = BarrierConfig::ApplyIn;
-  barriers.kind = node.GetChoice<Kind>("kind", "none", "barrier kind",
-                                       {{"none", Kind::kNone},
-                                        {"unicycle", Kind::kUnicycle},
-                                        {"single_integrator", Kind::kSingleIntegrator}});
+  barriers.kind = node.GetChoice<Kind>(
+      "kind", "none", "barrier kind",
+      {{"none", Kind::kNone}, {"unicycle", Kind::kUnicycle}, {"single_integrator", Kind::kSingleIntegrator}});
   barriers.apply_in = node.GetChoice<ApplyIn>("apply_in", "world", "place to apply barriers",
                                               {{"world", ApplyIn::kWorld}, {"controller", ApplyIn::kController}});
   if (barriers.kind == Kind::kNone) {
     for (const std::string& key : node.Keys()) {
       if (key != "kind") {
-        node.FailAt(key, "barriers with kind none (the default) take no other key; set kind: unicycle or "
-                         "single_integrator, or remove it");
+        node.FailAt(key,
+                    "barriers with kind none (the default) take no other key; set kind: unicycle or "
+                    "single_integrator, or remove it");
       }
     }
     return barriers;
   }
   if (barriers.kind == Kind::kSingleIntegrator) {
     if (barriers.apply_in == ApplyIn::kWorld) {
-      node.FailAt("apply_in", "the world drives unicycles (v, w): a single-integrator certificate filters a "
-                              "controller's single-integrator velocities, so it needs apply_in: controller; in "
-                              "the world use kind: unicycle");
+      node.FailAt("apply_in",
+                  "the world drives unicycles (v, w): a single-integrator certificate filters a "
+                  "controller's single-integrator velocities, so it needs apply_in: controller; in "
+                  "the world use kind: unicycle");
     }
     if (node.Has("projection_distance_m")) {
       node.FailAt("projection_distance_m", "only kind unicycle projects a point ahead of the robot");

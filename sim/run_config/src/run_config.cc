@@ -14,7 +14,8 @@
 namespace dream::run_config {
 
 static_assert(config::ControllerConfig::kMaxRobots == robotarium::RobotariumConstants::kMaxRobotsInSimulation &&
-                  config::ControllerConfig::kMaxRobotsOnHardware == robotarium::RobotariumConstants::kMaxRobotsOnHardware,
+                  config::ControllerConfig::kMaxRobotsOnHardware ==
+                      robotarium::RobotariumConstants::kMaxRobotsOnHardware,
               "the agents' robot limits must be the simulator's");
 
 namespace {
@@ -143,7 +144,8 @@ world::RealismParams RealismOfFile(const config::ConfigNode& file, const world::
 // `file: PATH`: a realism file (a map of realism keys, with an optional
 // preset; what dream calibrate writes), relative to the config's folder. Its
 // keys go over `base` (the config's preset), or over its own preset.
-world::RealismParams ReadRealismFile(const config::ConfigNode& file_node, const world::RealismParams& base, RunConfig* config) {
+world::RealismParams ReadRealismFile(const config::ConfigNode& file_node, const world::RealismParams& base,
+                                     RunConfig* config) {
   namespace fs = std::filesystem;
   const std::string written = file_node.AsString();
   if (written.empty()) file_node.Fail("expected the path of a realism file (e.g. from dream calibrate), got ''");
@@ -156,7 +158,8 @@ world::RealismParams ReadRealismFile(const config::ConfigNode& file_node, const 
   const std::string file_path = path.lexically_normal().string();
   YAML::Node file_root = config::ConfigNode::ParseYaml(config::ConfigNode::ReadFile(file_path), file_path);
   if (!file_root.IsMap()) {
-    file_node.Fail("'" + file_path + "' is not a realism file: a realism file is a map of world.realism keys (as dream "
+    file_node.Fail("'" + file_path +
+                   "' is not a realism file: a realism file is a map of world.realism keys (as dream "
                    "calibrate writes)");
   }
   config->realism_file_as_written = written;
@@ -206,13 +209,15 @@ std::vector<world::Pose2> GenerateInitialPoses(const config::ConfigNode& node, R
         generate.Required("wall_margin_m")
             .Fail("must be at least " + FormatExact(kStartWallClearanceM) +
                   " m (the robot's radius): the lab refuses a start pose closer to a wall "
-                  "(start_inside_arena), got " + generate.Required("wall_margin_m").AsString());
+                  "(start_inside_arena), got " +
+                  generate.Required("wall_margin_m").AsString());
       }
     }
   }
   std::vector<world::Pose2> poses;
   try {
-    poses = world::InitialPoseGenerator(config.world, params, config.obstacles).Generate(config.num_robots, config.seed);
+    poses =
+        world::InitialPoseGenerator(config.world, params, config.obstacles).Generate(config.num_robots, config.seed);
   } catch (const std::invalid_argument& e) {
     where.Fail(std::string("cannot generate initial poses: ") + e.what() +
                "; or list one [x, y, theta] per robot under initial_poses");
@@ -237,21 +242,22 @@ void CheckListedPose(const config::ConfigNode& item, size_t i, const world::Pose
     item.Fail("robot " + std::to_string(i) + " starts at (" + Format(pose.x_m) + ", " + Format(pose.y_m) +
               "), closer than its radius " + FormatExact(m) +
               " m to the arena's wall: the lab cannot place it there (dream export's start_inside_arena "
-              "rule); start poses need x in [" + Format(arena.x_min_m + m) + ", " + Format(arena.x_max_m - m) +
-              "], y in [" + Format(arena.y_min_m + m) + ", " + Format(arena.y_max_m - m) + "]");
+              "rule); start poses need x in [" +
+              Format(arena.x_min_m + m) + ", " + Format(arena.x_max_m - m) + "], y in [" + Format(arena.y_min_m + m) +
+              ", " + Format(arena.y_max_m - m) + "]");
   }
   // Only step 0 counts: a moving obstacle may sweep over a start pose later.
   const int touched = obstacle_check.FirstTouchedObstacle(pose);
   if (touched >= 0) {
     const world::RectangleObstacleSpec& obstacle = config.obstacles[static_cast<size_t>(touched)];
-    item.Fail("robot " + std::to_string(i) + " starts inside obstacle " + std::to_string(touched) +
-              ": at (" + Format(pose.x_m) + ", " + Format(pose.y_m) + ", " + Format(pose.theta_rad) +
+    item.Fail("robot " + std::to_string(i) + " starts inside obstacle " + std::to_string(touched) + ": at (" +
+              Format(pose.x_m) + ", " + Format(pose.y_m) + ", " + Format(pose.theta_rad) +
               ") its collision disc (centre (" + Format(obstacle_check.CollisionCenterX(pose)) + ", " +
               Format(obstacle_check.CollisionCenterY(pose)) + "), radius " +
-              FormatExact(obstacle_check.collision_radius_m()) + " m) touches obstacles[" +
-              std::to_string(touched) + "] (centre (" + Format(obstacle.center_m.x()) + ", " +
-              Format(obstacle.center_m.y()) + "), size " + Format(obstacle.width_m) + " x " +
-              Format(obstacle.height_m) + " m, at step 0); move the robot or the obstacle");
+              FormatExact(obstacle_check.collision_radius_m()) + " m) touches obstacles[" + std::to_string(touched) +
+              "] (centre (" + Format(obstacle.center_m.x()) + ", " + Format(obstacle.center_m.y()) + "), size " +
+              Format(obstacle.width_m) + " x " + Format(obstacle.height_m) +
+              " m, at step 0); move the robot or the obstacle");
   }
 }
 
@@ -364,8 +370,9 @@ RunConfig LoadRunConfig(const config::ConfigNode& root) {
 world::RealismParams LoadRealismFile(const std::string& path) {
   YAML::Node root = config::ConfigNode::ParseYaml(config::ConfigNode::ReadFile(path), path);
   if (!root.IsMap()) {
-    throw config::ConfigError(path + ": not a realism file: a realism file is a map of world.realism keys (as dream calibrate "
-                      "writes)");
+    throw config::ConfigError(path +
+                              ": not a realism file: a realism file is a map of world.realism keys (as dream calibrate "
+                              "writes)");
   }
   return RealismOfFile(config::ConfigNode(root, path, ""), world::RealismParams::Ideal());
 }
@@ -417,7 +424,8 @@ std::string WithPluginDir(const RunConfig& config, const std::string& text) {
   quoted += "\"";
   const std::string copy = text + (text.empty() || text.back() == '\n' ? "" : "\n") +
                            "# Added by dream: the folder the relative plugin paths above are relative to.\n"
-                           "plugin_dir: " + quoted + "\n";
+                           "plugin_dir: " +
+                           quoted + "\n";
   // An unusual file (a flow mapping, an explicit document end) would not take
   // the extra key: keep it unchanged rather than store a broken copy.
   try {

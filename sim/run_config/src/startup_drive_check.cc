@@ -19,8 +19,9 @@ std::string StartupDriveCheck::Refusal() const {
   if (AllSettled()) return "";
   if (lab_safe_spacing_m_ > 0.0) {
     return name_ + ": initial_poses.generate.lab_safe: the start poses generated at least " +
-           world::PrintfText("%.3f", lab_safe_spacing_m_) + " m apart (min_spacing_m) are not lab-safe: " +
-           trials_.Describe() + "; raise min_spacing_m, try another seed or use fewer robots";
+           world::PrintfText("%.3f", lab_safe_spacing_m_) +
+           " m apart (min_spacing_m) are not lab-safe: " + trials_.Describe() +
+           "; raise min_spacing_m, try another seed or use fewer robots";
   }
   if (start_ == WorldStart::kPlaced && !trials_.results().front().settled) {
     return Message() + "; world.start: placed runs that drive first, so this run cannot start";
@@ -33,7 +34,8 @@ std::string StartupDriveCheck::Message() const {
   return name_ + ": " + trials_.Describe() +
          ". The lab drives the robots from random charger slots onto the start poses with its barrier "
          "certificate before every experiment, and rejects an experiment whose robots do not arrive "
-         "(check-submission gives up after " + std::to_string(world::StartupDrive::MaxSteps()) +
+         "(check-submission gives up after " +
+         std::to_string(world::StartupDrive::MaxSteps()) +
          " steps): spread the start poses (e.g. initial_poses: {generate: {lab_safe: true}})";
 }
 

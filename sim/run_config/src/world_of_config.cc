@@ -13,7 +13,7 @@ std::unique_ptr<world::World> SteppingWorld(const RunConfig& config) {
     return std::make_unique<world::UnicycleWorld>(config.world, config.initial_poses, config.obstacles);
   }
   return std::make_unique<world::RealisticWorld>(config.world, config.realism, config.seed, config.initial_poses,
-                                               config.obstacles);
+                                                 config.obstacles);
 }
 
 }  // namespace

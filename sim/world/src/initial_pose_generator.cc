@@ -15,9 +15,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 // std::uniform_real_distribution differs between standard libraries; this
 // does not: the top 53 bits of one draw, scaled into [0, 1).
-double UnitUniform(std::mt19937_64& rng) {
-  return static_cast<double>(rng() >> 11) * 0x1.0p-53;
-}
+double UnitUniform(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
 
 // Occupied cells so each candidate checks only a 5 x 5 neighbourhood. The
 // cell is spacing / 1.5: its diagonal (0.94 spacing) is shorter than the
@@ -64,19 +62,16 @@ const WorldParams& ValidatedWorld(const WorldParams& world, const InitialPosePar
   // apart; that must stay above the collision diameter.
   const double min_safe_spacing_m = world.collision_diameter_m + 2.0 * world.collision_offset_m;
   if (!(params.min_spacing_m > min_safe_spacing_m)) {
-    throw std::invalid_argument("InitialPoseGenerator: " +
-                                field_check::FormatValue(params.min_spacing_m) +
+    throw std::invalid_argument("InitialPoseGenerator: " + field_check::FormatValue(params.min_spacing_m) +
                                 " m for initial_poses.generate.min_spacing_m is out of range; allowed: > "
                                 "collision_diameter_m + 2 * collision_offset_m = " +
                                 Metres(min_safe_spacing_m) + " m");
   }
-  if (2.0 * params.wall_margin_m >= world.arena.width_m() ||
-      2.0 * params.wall_margin_m >= world.arena.height_m()) {
-    throw std::invalid_argument("InitialPoseGenerator: initial_poses.generate.wall_margin_m = " +
-                                Metres(params.wall_margin_m) +
-                                " is out of range; allowed: less than half the arena's width and height (" +
-                                Metres(world.arena.width_m()) + " x " + Metres(world.arena.height_m()) +
-                                " m)");
+  if (2.0 * params.wall_margin_m >= world.arena.width_m() || 2.0 * params.wall_margin_m >= world.arena.height_m()) {
+    throw std::invalid_argument(
+        "InitialPoseGenerator: initial_poses.generate.wall_margin_m = " + Metres(params.wall_margin_m) +
+        " is out of range; allowed: less than half the arena's width and height (" + Metres(world.arena.width_m()) +
+        " x " + Metres(world.arena.height_m()) + " m)");
   }
   return world;
 }
@@ -97,9 +92,8 @@ std::vector<Pose2> InitialPoseGenerator::Generate(int num_robots, uint64_t seed)
   const double width_m = world_.arena.width_m() - 2.0 * params_.wall_margin_m;
   const double height_m = world_.arena.height_m() - 2.0 * params_.wall_margin_m;
   const double spacing_m = params_.min_spacing_m;
-  const std::string where = " with min_spacing_m = " + Metres(spacing_m) + " in the " + Metres(width_m) +
-                            " x " + Metres(height_m) + " m area inside wall_margin_m = " +
-                            Metres(params_.wall_margin_m);
+  const std::string where = " with min_spacing_m = " + Metres(spacing_m) + " in the " + Metres(width_m) + " x " +
+                            Metres(height_m) + " m area inside wall_margin_m = " + Metres(params_.wall_margin_m);
 
   // Discs of diameter `spacing` around the points are disjoint and lie in the
   // area grown by spacing / 2 on every side; no packing beats the hexagonal
@@ -107,8 +101,8 @@ std::vector<Pose2> InitialPoseGenerator::Generate(int num_robots, uint64_t seed)
   const double packing_bound =
       (width_m + spacing_m) * (height_m + spacing_m) * 2.0 / (std::sqrt(3.0) * spacing_m * spacing_m);
   if (static_cast<double>(num_robots) > packing_bound) {
-    throw std::invalid_argument("InitialPoseGenerator: cannot place " + std::to_string(num_robots) +
-                                " robots" + where + ": even a perfect hexagonal packing holds at most " +
+    throw std::invalid_argument("InitialPoseGenerator: cannot place " + std::to_string(num_robots) + " robots" + where +
+                                ": even a perfect hexagonal packing holds at most " +
                                 std::to_string(static_cast<int64_t>(packing_bound)) +
                                 "; use a smaller min_spacing_m or fewer robots");
   }
@@ -119,8 +113,8 @@ std::vector<Pose2> InitialPoseGenerator::Generate(int num_robots, uint64_t seed)
   SpacingGrid grid(spacing_m);
   const int64_t max_attempts = static_cast<int64_t>(num_robots) * params_.max_attempts_per_robot;
   int64_t attempts = 0;
-  int64_t too_close = 0;         // candidates within min_spacing_m of a placed robot
-  int64_t touching_obstacle = 0; // candidates whose collision disc touched an obstacle
+  int64_t too_close = 0;          // candidates within min_spacing_m of a placed robot
+  int64_t touching_obstacle = 0;  // candidates whose collision disc touched an obstacle
   while (static_cast<int>(poses.size()) < num_robots && attempts < max_attempts) {
     ++attempts;
     const double x_m = x_min_m + UnitUniform(rng) * width_m;
@@ -151,8 +145,8 @@ std::vector<Pose2> InitialPoseGenerator::Generate(int num_robots, uint64_t seed)
       advice = "use smaller or fewer obstacles, a smaller min_spacing_m or wall_margin_m, or fewer robots";
     }
     throw std::invalid_argument("InitialPoseGenerator: placed only " + std::to_string(poses.size()) + " of " +
-                                std::to_string(num_robots) + " robots" + where + " after " +
-                                std::to_string(attempts) + " random attempts" + refusals + "; " + advice);
+                                std::to_string(num_robots) + " robots" + where + " after " + std::to_string(attempts) +
+                                " random attempts" + refusals + "; " + advice);
   }
   return poses;
 }

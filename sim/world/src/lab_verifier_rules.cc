@@ -24,8 +24,7 @@ std::vector<VerdictReason> LabVerifierRules::Check(const Declaration& declared, 
   if (counts.num_robots != declared.num_robots) {
     reasons.push_back({"verifier_robot_count", RunVerdict::kRejected,
                        "the script asks for " + std::to_string(counts.num_robots) + " robots but " +
-                           std::to_string(declared.num_robots) +
-                           " are declared; the lab's verifier refuses a mismatch",
+                           std::to_string(declared.num_robots) + " are declared; the lab's verifier refuses a mismatch",
                        "declare the robot count UPLOAD.txt gives"});
   }
   if (counts.robots_too_close > robots_too_close_limit) {
@@ -33,16 +32,15 @@ std::vector<VerdictReason> LabVerifierRules::Check(const Declaration& declared, 
                                         robots_too_close_limit, "collision_errors"));
   }
   if (counts.robots_outside_boundaries > robots_outside_boundaries_limit) {
-    reasons.push_back(OverVerifierLimit("verifier_out_of_bounds", "outside the arena",
-                                        counts.robots_outside_boundaries, "robots x steps",
-                                        robots_outside_boundaries_limit, "boundary_errors"));
+    reasons.push_back(OverVerifierLimit("verifier_out_of_bounds", "outside the arena", counts.robots_outside_boundaries,
+                                        "robots x steps", robots_outside_boundaries_limit, "boundary_errors"));
   }
   const double run_s = static_cast<double>(counts.iterations) * time_step_s;
   if (run_s > duration_factor * declared.duration_s) {
     reasons.push_back({"verifier_duration", RunVerdict::kRejected,
                        std::to_string(counts.iterations) + " iterations take " + Seconds(run_s) + ", over " +
-                           PrintfText("%g", duration_factor) + " x the declared " +
-                           Seconds(declared.duration_s) + "; the lab's verifier stops such a run",
+                           PrintfText("%g", duration_factor) + " x the declared " + Seconds(declared.duration_s) +
+                           "; the lab's verifier stops such a run",
                        "declare the duration UPLOAD.txt gives"});
   }
   if (declared.duration_s > max_duration_s || run_s > max_duration_s) {

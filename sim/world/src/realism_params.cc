@@ -72,10 +72,10 @@ const std::vector<RealismParams::Field>& RealismParams::Fields() {
 // GRITSbot X runs of the Robotarium (issue 22) where the data determine it.
 RealismParams RealismParams::Lab() {
   RealismParams lab;
-  lab.pose_noise_m = 0.00033;  // at rest; 0.6 mm moving
+  lab.pose_noise_m = 0.00033;   // at rest; 0.6 mm moving
   lab.pose_noise_rad = 0.0045;  // at rest; 0.008 rad moving
   lab.pose_noise_moving_factor = 1.8;
-  lab.pose_quantum_m = 0.0;  // x, y unrounded
+  lab.pose_quantum_m = 0.0;      // x, y unrounded
   lab.pose_quantum_rad = 0.001;  // every heading a multiple of 0.001 rad
   lab.pose_delay_steps = 1;
   lab.tracking_dropout_probability = 0.0008;  // 0.3 % of moving robot-steps stale

@@ -18,7 +18,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-
 const RealismParams& ValidatedRealism(const RealismParams& realism) {
   std::string error;
   if (!realism.IsValid(&error)) throw std::invalid_argument("RealisticWorld: realism " + error);
@@ -40,9 +39,7 @@ int64_t HoldSteps(double time_step_s, double seconds) {
   return seconds == 0.0 ? std::numeric_limits<int64_t>::max() : StepsWithin(time_step_s, seconds);
 }
 
-double Quantize(double value, double quantum) {
-  return quantum > 0.0 ? std::round(value / quantum) * quantum : value;
-}
+double Quantize(double value, double quantum) { return quantum > 0.0 ? std::round(value / quantum) * quantum : value; }
 
 // A heading as the lab's tracker reports it: wrapped to [-pi, pi) first,
 // then rounded, so every value is on the quantum's grid (rounding after the
@@ -53,7 +50,7 @@ double MeasuredHeading(double theta, double quantum) {
   if (quantum <= 0.0) return theta > kPi || theta <= -kPi ? std::atan2(std::sin(theta), std::cos(theta)) : theta;
   theta = std::remainder(theta, 2 * kPi);  // [-pi, pi]
   if (theta >= kPi) theta = -kPi;
-  const double lowest = std::ceil(-kPi / quantum);       // the first multiple at or above -pi
+  const double lowest = std::ceil(-kPi / quantum);        // the first multiple at or above -pi
   const double highest = std::ceil(kPi / quantum) - 1.0;  // the last multiple below pi
   return std::clamp(std::round(theta / quantum), lowest, highest) * quantum;
 }
@@ -65,18 +62,20 @@ constexpr double kMovingTurnRadps = 0.02;
 
 }  // namespace
 
-std::vector<RealisticWorld::Robot> RealisticWorld::MakeRobots(const RealismParams& realism,
-                                                               const WorldParams& params, uint64_t seed,
-                                                               int num_robots) {
+std::vector<RealisticWorld::Robot> RealisticWorld::MakeRobots(const RealismParams& realism, const WorldParams& params,
+                                                              uint64_t seed, int num_robots) {
   std::vector<Robot> robots;
   robots.reserve(static_cast<size_t>(num_robots));
   for (const RobotTraits& traits : RobotTraits::Draw(realism, seed, num_robots)) {
-    robots.push_back(Robot{{}, {}, kNone, 0.0, RobotResponse(realism, traits, params.wheel_radius_m,
-                                                                params.max_wheel_speed_radps), false});
+    robots.push_back(Robot{{},
+                           {},
+                           kNone,
+                           0.0,
+                           RobotResponse(realism, traits, params.wheel_radius_m, params.max_wheel_speed_radps),
+                           false});
   }
   return robots;
 }
-
 
 RealisticWorld::RealisticWorld(const WorldParams& params, const RealismParams& realism, uint64_t seed,
                                std::vector<Pose2> initial_poses,
@@ -122,9 +121,9 @@ void RealisticWorld::SetCommand(int robot_id, const UnicycleCommand& command) {
     robot.queue.push_back({due_step, command});
   }
   // The Robotarium judges the command as sent, with its own constants.
-  robot.sent_over_limit = ExceedsWheelSpeedLimit(
-      UnicycleToWheelSpeeds(command, official_.wheel_radius_m, official_.base_length_m),
-      official_.max_wheel_speed_radps);
+  robot.sent_over_limit =
+      ExceedsWheelSpeedLimit(UnicycleToWheelSpeeds(command, official_.wheel_radius_m, official_.base_length_m),
+                             official_.max_wheel_speed_radps);
 }
 
 void RealisticWorld::StopRobot(int robot_id) {
@@ -152,9 +151,9 @@ UnicycleCommand RealisticWorld::Follow(Robot& robot) {
   const bool braked_by_steps = age_steps > brake_hold_steps_;
   // Late steps count too: a command that waited through a stall is older
   // than its steps say.
-  const bool braked_by_time = robot.late_since_delivery_s > 0.0 && realism_.command_brake_s > 0.0 &&
-                              static_cast<double>(age_steps) * official_.time_step_s + robot.late_since_delivery_s >
-                                  realism_.command_brake_s;
+  const bool braked_by_time =
+      robot.late_since_delivery_s > 0.0 && realism_.command_brake_s > 0.0 &&
+      static_cast<double>(age_steps) * official_.time_step_s + robot.late_since_delivery_s > realism_.command_brake_s;
   if (braked_by_steps || braked_by_time) {
     // The firmware shorts the motors: the wheels stop at once.
     robot.delivered = UnicycleCommand{};
@@ -284,8 +283,8 @@ std::optional<VerdictReason> RealisticWorld::TrackerLossReason() const {
   if (tracker_losses_.empty()) return std::nullopt;
   std::string robots;
   for (const TrackerLoss& loss : tracker_losses_) {
-    robots += (robots.empty() ? "" : ", ") + std::to_string(loss.robot_id) + " (from step " +
-              std::to_string(loss.step) + ")";
+    robots +=
+        (robots.empty() ? "" : ", ") + std::to_string(loss.robot_id) + " (from step " + std::to_string(loss.step) + ")";
   }
   const bool one = tracker_losses_.size() == 1;
   return VerdictReason{"tracker_lost", RunVerdict::kWarning,

@@ -52,8 +52,8 @@ void RectangleObstacle::Advance(double time_step_s) {
   }
   distance_along_leg_m_ += std::max(remaining_m, 0.0);
   const Leg& leg = legs_[leg_index_];
-  center_m_ = distance_along_leg_m_ == 0.0 ? leg.start_m
-                                           : Eigen::Vector2d(leg.start_m + leg.direction * distance_along_leg_m_);
+  center_m_ =
+      distance_along_leg_m_ == 0.0 ? leg.start_m : Eigen::Vector2d(leg.start_m + leg.direction * distance_along_leg_m_);
 }
 
 ObstacleState RectangleObstacle::State() const {

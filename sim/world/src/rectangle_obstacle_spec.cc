@@ -18,9 +18,10 @@ bool RectangleObstacleSpec::IsValid(std::string* error) const {
   if (!path.has_value()) return true;
 
   if (path->waypoints_m.empty()) {
-    return field_check::FailWithText(
-        error, prefix + "path.waypoints_m is empty; a moving obstacle needs at least one waypoint "
-                        "(omit the path for a static obstacle)");
+    return field_check::FailWithText(error,
+                                     prefix +
+                                         "path.waypoints_m is empty; a moving obstacle needs at least one waypoint "
+                                         "(omit the path for a static obstacle)");
   }
   if (!IsPositiveFinite(path->speed_mps)) {
     return Fail(error, prefix + "path.speed_mps", path->speed_mps, "> 0 m/s, finite");
@@ -36,9 +37,10 @@ bool RectangleObstacleSpec::IsValid(std::string* error) const {
     previous = waypoint;
   }
   if (path_length_m <= 0.0) {
-    return field_check::FailWithText(
-        error, prefix + "path has zero length (every waypoint equals the centre); allowed: a path "
-                        "that moves, or no path for a static obstacle");
+    return field_check::FailWithText(error,
+                                     prefix +
+                                         "path has zero length (every waypoint equals the centre); allowed: a path "
+                                         "that moves, or no path for a static obstacle");
   }
   return true;
 }

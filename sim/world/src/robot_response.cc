@@ -28,13 +28,13 @@ RobotResponse::RobotResponse(const RealismParams& realism, const RobotTraits& tr
 double RobotResponse::RespondWheel(double current_radps, double target_radps, double duration_s) const {
   if (lag_s_ > 0.0 || startup_m_ > 0.0) {
     double time_constant_s = lag_s_;
-    const bool spinning_up =
-        std::abs(target_radps) > std::abs(current_radps) && target_radps * current_radps >= 0.0;
+    const bool spinning_up = std::abs(target_radps) > std::abs(current_radps) && target_radps * current_radps >= 0.0;
     if (spinning_up && startup_m_ > 0.0) {
       time_constant_s += startup_m_ / (std::abs(target_radps) * wheel_radius_m_);
     }
     if (time_constant_s <= 0.0) return target_radps;
-    const double next_radps = current_radps + (target_radps - current_radps) * -std::expm1(-duration_s / time_constant_s);
+    const double next_radps =
+        current_radps + (target_radps - current_radps) * -std::expm1(-duration_s / time_constant_s);
     // A wheel slowing to a stop stops (the lag alone would creep forever, and
     // the drift with it).
     if (target_radps == 0.0 && std::abs(next_radps) < kStoppedRadps) return 0.0;
@@ -54,8 +54,8 @@ UnicycleCommand RobotResponse::Drive(const UnicycleCommand& target, double durat
   }
   const bool wheel_dynamics = lag_s_ > 0.0 || startup_m_ > 0.0 || accel_limit_radps2_ > 0.0;
   if (wheel_dynamics) {
-    const WheelSpeeds wanted = ClipWheelSpeeds(UnicycleToWheelSpeeds(driven, wheel_radius_m_, axle_length_m_),
-                                               max_wheel_speed_radps_);
+    const WheelSpeeds wanted =
+        ClipWheelSpeeds(UnicycleToWheelSpeeds(driven, wheel_radius_m_, axle_length_m_), max_wheel_speed_radps_);
     wheels_.left_radps = RespondWheel(wheels_.left_radps, wanted.left_radps, duration_s);
     wheels_.right_radps = RespondWheel(wheels_.right_radps, wanted.right_radps, duration_s);
     driven = WheelSpeedsToUnicycle(wheels_, wheel_radius_m_, axle_length_m_);

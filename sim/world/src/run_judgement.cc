@@ -5,15 +5,16 @@
 namespace dream::world {
 namespace {
 
-const char* const kFindOutViolations = "summary.json violations_located says where and when; trajectories.png and dream render RUN mark them";
+const char* const kFindOutViolations =
+    "summary.json violations_located says where and when; trajectories.png and dream render RUN mark them";
 
 }  // namespace
 
 RunJudgement::RunJudgement(RunReport report) : report_(std::move(report)) {
   const ViolationCounts& v = report_.violations;
   if (v.boundary_errors > 0) {
-    Add({"boundary", RunVerdict::kRejected,
-         std::to_string(v.boundary_errors) + " steps with a robot outside the arena", kFindOutViolations});
+    Add({"boundary", RunVerdict::kRejected, std::to_string(v.boundary_errors) + " steps with a robot outside the arena",
+         kFindOutViolations});
   }
   if (v.collision_errors > 0) {
     Add({"collision", RunVerdict::kRejected,

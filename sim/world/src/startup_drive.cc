@@ -94,8 +94,12 @@ Pose2 Waypoint(const Pose2& from, const Arena& arena, std::mt19937_64& rng) {
 class DeadlockBreaker {
  public:
   DeadlockBreaker(const std::vector<Pose2>& start, const Arena& arena, uint64_t seed)
-      : timers_(start.size(), 0), last_still_(start), waypointing_(start.size(), 0), waypoints_(start.size()),
-        arena_(arena), rng_(seed) {}
+      : timers_(start.size(), 0),
+        last_still_(start),
+        waypointing_(start.size(), 0),
+        waypoints_(start.size()),
+        arena_(arena),
+        rng_(seed) {}
 
   // Robot i at `pose` heading for `goal` at the drive's iteration; may replace its command.
   void Steer(std::size_t i, const Pose2& pose, const Pose2& goal, int iteration, HybridPoseController* controller,
@@ -136,8 +140,8 @@ std::vector<StartupDriveResult::Miss> MissesOf(const std::vector<Pose2>& poses, 
   std::vector<StartupDriveResult::Miss> misses;
   for (std::size_t i = 0; i < poses.size(); ++i) {
     if (AtPose(poses[i], goals[i])) continue;
-    misses.push_back({static_cast<int>(i), PlanarDistance(poses[i], goals[i]),
-                      Wrap(poses[i].theta_rad - goals[i].theta_rad)});
+    misses.push_back(
+        {static_cast<int>(i), PlanarDistance(poses[i], goals[i]), Wrap(poses[i].theta_rad - goals[i].theta_rad)});
   }
   return misses;
 }
@@ -148,7 +152,8 @@ int StartupDrive::MaxSteps() { return DREAM_STARTUP_MAX_STEPS; }
 
 StartupDrive::StartupDrive(const WorldParams& world, std::vector<Pose2> start_poses, int max_steps)
     : world_(field_check::Checked("StartupDrive", world)), start_poses_(std::move(start_poses)), max_steps_(max_steps) {
-  if (max_steps_ < 1) throw std::invalid_argument("StartupDrive: max_steps must be >= 1, got " + std::to_string(max_steps));
+  if (max_steps_ < 1)
+    throw std::invalid_argument("StartupDrive: max_steps must be >= 1, got " + std::to_string(max_steps));
   for (std::size_t i = 0; i < start_poses_.size(); ++i) {
     const Pose2& pose = start_poses_[i];
     if (!std::isfinite(pose.x_m) || !std::isfinite(pose.y_m) || !std::isfinite(pose.theta_rad)) {
@@ -176,8 +181,9 @@ std::vector<Pose2> StartupDrive::ChargerSlots(const WorldParams& world) {
 
 std::vector<Pose2> StartupDrive::PlaceOnChargers(const WorldParams& world, int num_robots, uint64_t seed) {
   if (num_robots < 0 || num_robots > kChargerSlots) {
-    throw std::invalid_argument(std::to_string(num_robots) + " robots: the Robotarium's start-up drive places robots on " +
-                                std::to_string(kChargerSlots) + " charger slots (the official V2 simulator fails above that)");
+    throw std::invalid_argument(
+        std::to_string(num_robots) + " robots: the Robotarium's start-up drive places robots on " +
+        std::to_string(kChargerSlots) + " charger slots (the official V2 simulator fails above that)");
   }
   std::vector<Pose2> slots = ChargerSlots(world);
   std::mt19937_64 rng(seed);
@@ -248,7 +254,8 @@ StartupDriveResult StartupDrive::RunFrom(const std::vector<Pose2>& charger_poses
     for (std::size_t i = 0; i < n; ++i) at_pose[i] = AtPose(x[i], start_poses_[i]);
     const DeadlockWatch watch = DeadlockWatchOf(at_pose);
     for (std::size_t i = 0; i < n; ++i) {
-      if (Watched(static_cast<int>(i), watch)) deadlock.Steer(i, x[i], start_poses_[i], step, &controller, &commands[i]);
+      if (Watched(static_cast<int>(i), watch))
+        deadlock.Steer(i, x[i], start_poses_[i], step, &controller, &commands[i]);
     }
     ++step;
     FillBarrierInput(commands, x, &wanted, &pose_matrix);

@@ -41,8 +41,8 @@ StartupDriveTrials StartupDriveTrials::Try(const WorldParams& world, const std::
 }
 
 int StartupDriveTrials::settled() const {
-  return static_cast<int>(std::count_if(results_.begin(), results_.end(),
-                                        [](const StartupDriveResult& result) { return result.settled; }));
+  return static_cast<int>(
+      std::count_if(results_.begin(), results_.end(), [](const StartupDriveResult& result) { return result.settled; }));
 }
 
 int StartupDriveTrials::MostSteps() const {
@@ -57,9 +57,11 @@ std::string StartupDriveTrials::Describe() const {
   for (const StartupDriveResult& result : results_) {
     if (!result.refusal.empty()) return "the Robotarium's start-up drive cannot start: " + result.refusal;
   }
-  std::string text = PrintfText("the Robotarium's start-up drive settled from %d of %d random charger placements",
-                                settled(), tried());
-  if (settled() > 0) text += PrintfText(" (at most %d steps, %.1f s)", MostSteps(), MostSteps() * robotarium::RobotariumConstants::kTimeStepSeconds);
+  std::string text =
+      PrintfText("the Robotarium's start-up drive settled from %d of %d random charger placements", settled(), tried());
+  if (settled() > 0)
+    text += PrintfText(" (at most %d steps, %.1f s)", MostSteps(),
+                       MostSteps() * robotarium::RobotariumConstants::kTimeStepSeconds);
   for (const StartupDriveResult& result : results_) {
     if (result.settled) continue;
     text += PrintfText("; from placement seed %llu, after %d steps ", static_cast<unsigned long long>(result.seed),

@@ -125,8 +125,8 @@ void UnicycleWorld::StepRobots(const double* motion_time_s) {
     if (ExceedsWheelSpeedLimit(wheels, max_wheel_speed_radps)) {
       events_.actuator_limited_robot_ids.push_back(static_cast<int>(i));
     }
-    const UnicycleCommand saturated = WheelSpeedsToUnicycle(
-        ClipWheelSpeeds(wheels, max_wheel_speed_radps), wheel_radius_m, base_length_m);
+    const UnicycleCommand saturated =
+        WheelSpeedsToUnicycle(ClipWheelSpeeds(wheels, max_wheel_speed_radps), wheel_radius_m, base_length_m);
     velocities_[i] = saturated;
 
     const double robot_dt = motion_time_s == nullptr ? dt : motion_time_s[i];

@@ -14,9 +14,12 @@ bool LocatedViolation::IsWorse(double value_m) const {
 
 const char* LocatedViolationKindName(LocatedViolation::Kind kind) {
   switch (kind) {
-    case LocatedViolation::Kind::kBoundary: return "boundary";
-    case LocatedViolation::Kind::kCollision: return "collision";
-    case LocatedViolation::Kind::kObstacle: return "obstacle";
+    case LocatedViolation::Kind::kBoundary:
+      return "boundary";
+    case LocatedViolation::Kind::kCollision:
+      return "collision";
+    case LocatedViolation::Kind::kObstacle:
+      return "obstacle";
   }
   return "boundary";
 }

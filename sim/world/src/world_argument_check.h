@@ -16,17 +16,17 @@ namespace dream::world::world_argument_check {
 // Throws std::out_of_range unless 0 <= robot_id < num_robots.
 inline void CheckRobotId(const char* world, const char* method, int robot_id, int num_robots) {
   if (robot_id < 0 || robot_id >= num_robots) {
-    throw std::out_of_range(std::string(world) + "::" + method + ": robot_id " + std::to_string(robot_id) + " is not in [0, " +
-                            std::to_string(num_robots) + ")");
+    throw std::out_of_range(std::string(world) + "::" + method + ": robot_id " + std::to_string(robot_id) +
+                            " is not in [0, " + std::to_string(num_robots) + ")");
   }
 }
 
 // Throws std::invalid_argument unless both speeds are finite.
 inline void CheckCommandIsFinite(const char* world, int robot_id, const UnicycleCommand& command) {
   if (!std::isfinite(command.v_mps) || !std::isfinite(command.w_radps)) {
-    throw std::invalid_argument(std::string(world) + "::SetCommand: robot " + std::to_string(robot_id) + " command (v_mps=" +
-                                std::to_string(command.v_mps) + ", w_radps=" + std::to_string(command.w_radps) +
-                                ") is not finite");
+    throw std::invalid_argument(std::string(world) + "::SetCommand: robot " + std::to_string(robot_id) +
+                                " command (v_mps=" + std::to_string(command.v_mps) +
+                                ", w_radps=" + std::to_string(command.w_radps) + ") is not finite");
   }
 }
 

@@ -12,14 +12,15 @@
 namespace dream::affine_formation {
 
 bool AffineFollowerParams::IsValid(std::string* error) const {
-  if (neighbours.empty()) return agents::FailParams(error, "neighbours: a follower needs at least one weighted neighbour");
+  if (neighbours.empty())
+    return agents::FailParams(error, "neighbours: a follower needs at least one weighted neighbour");
   double gamma = 0.0;
   for (size_t k = 0; k < neighbours.size(); ++k) {
     const auto& [j, w] = neighbours[k];
     if (j < 0) return agents::FailParams(error, "neighbours: id " + std::to_string(j) + " is not a robot id");
     if (!std::isfinite(w) || w == 0.0) {
       return agents::FailParams(error, "neighbours: weight of robot " + std::to_string(j) +
-                                   " must be finite and non-zero, got " + std::to_string(w));
+                                           " must be finite and non-zero, got " + std::to_string(w));
     }
     for (size_t m = 0; m < k; ++m) {
       if (neighbours[m].first == j) {
@@ -30,13 +31,13 @@ bool AffineFollowerParams::IsValid(std::string* error) const {
   }
   if (law == Law::kZhao && !(gamma > 0.0)) {
     return agents::FailParams(error, "neighbours: the weights sum to " + std::to_string(gamma) +
-                                 "; Zhao's law divides by that sum, which must be > 0");
+                                         "; Zhao's law divides by that sum, which must be > 0");
   }
   return agents::CheckFields(*this, error) && agents::CheckPositive(error, "time_step_s", time_step_s);
 }
 
-AffineFollowerRobot::AffineFollowerRobot(int id, const agents::RobotParams& robot_params, const agents::HrvoRobotParams& hrvo,
-                                         const AffineFollowerParams& params)
+AffineFollowerRobot::AffineFollowerRobot(int id, const agents::RobotParams& robot_params,
+                                         const agents::HrvoRobotParams& hrvo, const AffineFollowerParams& params)
     : agents::HrvoRobot(id, robot_params, hrvo),
       params_(agents::CheckedParams(params)),
       safety_radius_m_(hrvo.hrvo.safety_radius_m),

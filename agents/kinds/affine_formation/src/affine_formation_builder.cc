@@ -82,8 +82,8 @@ void CheckPlan(const ConfigNode& node, const AffineManeuverParams& params, const
       const Eigen::Vector2d& p = targets[i];
       if (p.x() < arena.x_min_m + kWallMarginM || p.x() > arena.x_max_m - kWallMarginM ||
           p.y() < arena.y_min_m + kWallMarginM || p.y() > arena.y_max_m - kWallMarginM) {
-        node.Fail("at step " + std::to_string(step) + " robot " + std::to_string(i) + "'s target (" + agents::NumberText(p.x()) +
-                  ", " + agents::NumberText(p.y()) + ") is not 0.1 m inside the arena");
+        node.Fail("at step " + std::to_string(step) + " robot " + std::to_string(i) + "'s target (" +
+                  agents::NumberText(p.x()) + ", " + agents::NumberText(p.y()) + ") is not 0.1 m inside the arena");
       }
       for (size_t j = 0; j < i; ++j) {
         const double d = (p - targets[j]).norm();
@@ -134,7 +134,8 @@ void AffineFormationBuilder::ReadFormation(const ConfigNode& section, const Sect
   // The stress weights and the leaders are the role radio's graph and leaders:
   // one matrix says both who hears whom and how much each neighbour counts.
   const ConfigNode radio = section.Required("radio");
-  const kind_api::AgentPartsConfig parts = kind_api::AgentPartsConfig::Read(section, num_robots, DefaultParts(num_robots), kGraphMustConnect);
+  const kind_api::AgentPartsConfig parts =
+      kind_api::AgentPartsConfig::Read(section, num_robots, DefaultParts(num_robots), kGraphMustConnect);
   if (parts.radio.kind != kind_api::RadioConfig::Kind::kRole) {
     radio.Required("kind").Fail(
         "an affine formation needs `kind: role` (leaders publish, followers hear their "
@@ -196,7 +197,8 @@ void AffineFormationBuilder::ReadMetrics(const ConfigNode& section, const Sectio
   if (!metrics_.IsValid(&error)) metrics.FailAtField(error);
 }
 
-std::unique_ptr<agents::Robot> AffineFormationBuilder::MakeRobot(int robot_id, const agents::RobotParams& params) const {
+std::unique_ptr<agents::Robot> AffineFormationBuilder::MakeRobot(int robot_id,
+                                                                 const agents::RobotParams& params) const {
   if (formation_->IsLeader(robot_id)) {
     AffineLeaderParams leader = leader_;
     leader.nominal_m = formation_->nominal_m().at(static_cast<size_t>(robot_id));

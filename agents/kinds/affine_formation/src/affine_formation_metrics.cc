@@ -149,8 +149,8 @@ std::optional<agents::GoalJudgement> AffineFormationMetrics::JudgeGoal(const age
   agents::GoalJudgement goal;
   goal.met = worst_m >= 0.0 && tolerance_m > 0.0 && worst_m <= tolerance_m;
   goal.completion_step = static_cast<int64_t>(report.Value("settled_step"));
-  goal.detail = "worst follower error " + agents::GoalJudgement::MetresApart(worst_m, tolerance_m) + (goal.met ? " <= " : " > ") +
-                agents::GoalJudgement::Metres(tolerance_m);
+  goal.detail = "worst follower error " + agents::GoalJudgement::MetresApart(worst_m, tolerance_m) +
+                (goal.met ? " <= " : " > ") + agents::GoalJudgement::Metres(tolerance_m);
   return goal;
 }
 

@@ -11,7 +11,8 @@ namespace dream::affine_formation {
 
 bool AffineLeaderParams::IsValid(std::string* error) const {
   if (!nominal_m.allFinite()) return agents::FailParams(error, "nominal_m must be finite");
-  return maneuver.IsValid(error) && agents::CheckFields(*this, error) && agents::CheckPositive(error, "time_step_s", time_step_s);
+  return maneuver.IsValid(error) && agents::CheckFields(*this, error) &&
+         agents::CheckPositive(error, "time_step_s", time_step_s);
 }
 
 AffineLeaderRobot::AffineLeaderRobot(int id, const agents::RobotParams& robot_params, const AffineLeaderParams& params)
@@ -35,8 +36,8 @@ std::optional<std::vector<uint8_t>> AffineLeaderRobot::OnRadio(const std::vector
 Eigen::Vector2d AffineLeaderRobot::Velocity(int64_t step) const {
   const auto s = static_cast<double>(step);
   const Eigen::Vector2d target = maneuver_.Target(params_.nominal_m, s);
-  Eigen::Vector2d velocity = maneuver_.TargetVelocity(params_.nominal_m, s, params_.time_step_s) +
-                             params_.gain * (target - pose().head<2>());
+  Eigen::Vector2d velocity =
+      maneuver_.TargetVelocity(params_.nominal_m, s, params_.time_step_s) + params_.gain * (target - pose().head<2>());
   if (velocity.norm() > params_.max_speed_mps) velocity *= params_.max_speed_mps / velocity.norm();
   return velocity;
 }

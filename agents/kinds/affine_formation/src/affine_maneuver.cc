@@ -35,8 +35,8 @@ agents::AffineTransform AffineKeyframe::Transform() const {
 bool AffineManeuverParams::IsValid(std::string* error) const {
   if (keyframes.empty()) return agents::FailParams(error, "keyframes: need at least one keyframe");
   if (keyframes.size() > kMaxKeyframes) {
-    return agents::FailParams(error, "keyframes: at most " + std::to_string(kMaxKeyframes) + ", got " +
-                                 std::to_string(keyframes.size()));
+    return agents::FailParams(
+        error, "keyframes: at most " + std::to_string(kMaxKeyframes) + ", got " + std::to_string(keyframes.size()));
   }
   for (size_t k = 0; k < keyframes.size(); ++k) {
     const AffineKeyframe& f = keyframes[k];
@@ -44,9 +44,10 @@ bool AffineManeuverParams::IsValid(std::string* error) const {
     if (f.step < 0) return agents::FailParams(error, where + "step must be >= 0, got " + std::to_string(f.step));
     if (k > 0 && f.step <= keyframes[k - 1].step) {
       return agents::FailParams(error, where + "step must be greater than the previous keyframe's (" +
-                  std::to_string(keyframes[k - 1].step) + "), got " + std::to_string(f.step));
+                                           std::to_string(keyframes[k - 1].step) + "), got " + std::to_string(f.step));
     }
-    if (!agents::CheckPositive(error, where + "scale_x", f.scale_x) || !agents::CheckPositive(error, where + "scale_y", f.scale_y)) {
+    if (!agents::CheckPositive(error, where + "scale_x", f.scale_x) ||
+        !agents::CheckPositive(error, where + "scale_y", f.scale_y)) {
       return false;
     }
     if (!std::isfinite(f.rotation_rad)) return agents::FailParams(error, where + "rotation_rad must be finite");

@@ -45,37 +45,54 @@ Eigen::MatrixXd Omega(const Eigen::MatrixXd& w) {
   return omega;
 }
 
-}  // namespace
-
-bool StressFormationParams::IsValid(std::string* error) const {
-  const auto n = static_cast<Eigen::Index>(nominal_m.size());
-  if (n < 4)
-    return agents::FailParams(error, "nominal_m: need at least 4 robots (3 leaders and a follower), got " + std::to_string(n));
-  if (weights.rows() != n || weights.cols() != n) {
-    return agents::FailParams(error, "weights: must be " + std::to_string(n) + "x" + std::to_string(n) +
-                                 " (one row and column per robot), got " + std::to_string(weights.rows()) + "x" +
-                                 std::to_string(weights.cols()));
-  }
+// Each entry finite, the diagonal zero, the matrix symmetric.
+bool CheckWeightEntries(const Eigen::MatrixXd& weights, std::string* error) {
+  const Eigen::Index n = weights.rows();
   for (Eigen::Index i = 0; i < n; ++i) {
     for (Eigen::Index j = 0; j < n; ++j) {
       const std::string entry = "(" + std::to_string(i) + ", " + std::to_string(j) + ")";
       if (!std::isfinite(weights(i, j))) return agents::FailParams(error, "weights: entry " + entry + " is not finite");
-      if (i == j && weights(i, j) != 0.0) return agents::FailParams(error, "weights: diagonal entry " + entry + " must be 0");
+      if (i == j && weights(i, j) != 0.0)
+        return agents::FailParams(error, "weights: diagonal entry " + entry + " must be 0");
       if (std::abs(weights(i, j) - weights(j, i)) > 1e-9 * (1.0 + std::abs(weights(i, j)))) {
         return agents::FailParams(error, "weights: a stress is symmetric, but entry " + entry + " is " +
-                                     agents::NumberText(weights(i, j)) + " and its transpose is " + agents::NumberText(weights(j, i)));
+                                             agents::NumberText(weights(i, j)) + " and its transpose is " +
+                                             agents::NumberText(weights(j, i)));
       }
     }
   }
+  return true;
+}
+
+// Each point finite and no two at the same place.
+bool CheckNominalPoints(const std::vector<Eigen::Vector2d>& nominal_m, std::string* error) {
+  const auto n = static_cast<Eigen::Index>(nominal_m.size());
   for (Eigen::Index i = 0; i < n; ++i) {
     if (!nominal_m[size_t(i)].allFinite())
       return agents::FailParams(error, "nominal_m: point " + std::to_string(i) + " is not finite");
     for (Eigen::Index j = 0; j < i; ++j) {
       if ((nominal_m[size_t(i)] - nominal_m[size_t(j)]).norm() < 1e-9) {
-        return agents::FailParams(error, "nominal_m: points " + std::to_string(j) + " and " + std::to_string(i) + " coincide");
+        return agents::FailParams(error,
+                                  "nominal_m: points " + std::to_string(j) + " and " + std::to_string(i) + " coincide");
       }
     }
   }
+  return true;
+}
+
+}  // namespace
+
+bool StressFormationParams::IsValid(std::string* error) const {
+  const auto n = static_cast<Eigen::Index>(nominal_m.size());
+  if (n < 4)
+    return agents::FailParams(error,
+                              "nominal_m: need at least 4 robots (3 leaders and a follower), got " + std::to_string(n));
+  if (weights.rows() != n || weights.cols() != n) {
+    return agents::FailParams(error, "weights: must be " + std::to_string(n) + "x" + std::to_string(n) +
+                                         " (one row and column per robot), got " + std::to_string(weights.rows()) +
+                                         "x" + std::to_string(weights.cols()));
+  }
+  if (!CheckWeightEntries(weights, error) || !CheckNominalPoints(nominal_m, error)) return false;
   if (leaders.size() < 3) {
     return agents::FailParams(
         error, "leaders: a planar affine formation needs at least 3 leaders, got " + std::to_string(leaders.size()));
@@ -92,34 +109,40 @@ bool StressFormationParams::IsValid(std::string* error) const {
     leader_points.push_back(nominal_m[size_t(leaders[k])]);
   }
   if (!agents::AffineTransform::Fit(leader_points, leader_points)) {
-    return agents::FailParams(error, "leaders: their nominal points are collinear, so they cannot define an affine map");
+    return agents::FailParams(error,
+                              "leaders: their nominal points are collinear, so they cannot define an affine map");
   }
   const std::vector<int> followers = FollowersOf(static_cast<int>(n), leaders);
-  if (followers.empty()) return agents::FailParams(error, "leaders: every robot is a leader; there is no follower to control");
+  if (followers.empty())
+    return agents::FailParams(error, "leaders: every robot is a leader; there is no follower to control");
   for (int f : followers) {
     const double gamma = weights.row(f).sum();
     if (!(gamma > 0.0)) {
-      return agents::FailParams(error, "weights: follower " + std::to_string(f) + "'s weights sum to " + agents::NumberText(gamma) +
-                                   "; the normalised follower law divides by that sum, which must be > 0");
+      return agents::FailParams(error, "weights: follower " + std::to_string(f) + "'s weights sum to " +
+                                           agents::NumberText(gamma) +
+                                           "; the normalised follower law divides by that sum, which must be > 0");
     }
   }
   if (!(equilibrium_tolerance_m > 0.0) || !std::isfinite(equilibrium_tolerance_m)) {
-    return agents::FailParams(error, "equilibrium_tolerance_m: must be > 0, got " + agents::NumberText(equilibrium_tolerance_m));
+    return agents::FailParams(
+        error, "equilibrium_tolerance_m: must be > 0, got " + agents::NumberText(equilibrium_tolerance_m));
   }
   const Eigen::MatrixXd omega = Omega(weights);
   const std::optional<Eigen::MatrixXd> settled = SolveFollowers(omega, followers, leaders, nominal_m);
   if (!settled) {
-    return agents::FailParams(error,
-                "weights: the followers' block of the stress matrix is not positive definite, so the followers "
-                "have no unique stable target (Zhao 2018, Lemma 1)");
+    return agents::FailParams(
+        error,
+        "weights: the followers' block of the stress matrix is not positive definite, so the followers "
+        "have no unique stable target (Zhao 2018, Lemma 1)");
   }
   for (size_t a = 0; a < followers.size(); ++a) {
     const Eigen::Vector2d target = settled->row(Eigen::Index(a)).transpose();
     const double off_m = (target - nominal_m[size_t(followers[a])]).norm();
     if (off_m > equilibrium_tolerance_m) {
-      return agents::FailParams(error, "weights: not an equilibrium stress of nominal_m: follower " + std::to_string(followers[a]) +
-                             " would settle " + agents::NumberText(off_m) + " m from its nominal point (tolerance " +
-                             agents::NumberText(equilibrium_tolerance_m) + " m); check sum_j w_ij (r_i - r_j) = 0");
+      return agents::FailParams(
+          error, "weights: not an equilibrium stress of nominal_m: follower " + std::to_string(followers[a]) +
+                     " would settle " + agents::NumberText(off_m) + " m from its nominal point (tolerance " +
+                     agents::NumberText(equilibrium_tolerance_m) + " m); check sum_j w_ij (r_i - r_j) = 0");
     }
   }
   return true;
@@ -169,7 +192,8 @@ std::vector<Eigen::Vector2d> StressFormation::FollowerEquilibrium(
   return result;
 }
 
-std::optional<agents::AffineTransform> StressFormation::LeaderTransform(const std::vector<Eigen::Vector2d>& positions_m) const {
+std::optional<agents::AffineTransform> StressFormation::LeaderTransform(
+    const std::vector<Eigen::Vector2d>& positions_m) const {
   std::vector<Eigen::Vector2d> from;
   std::vector<Eigen::Vector2d> to;
   for (int id : params_.leaders) {

@@ -12,7 +12,8 @@ CalibrationDriveBuilder::CalibrationDriveBuilder(const config::ConfigNode& secti
   (void)num_robots;
 }
 
-std::unique_ptr<agents::Robot> CalibrationDriveBuilder::MakeRobot(int robot_id, const agents::RobotParams& params) const {
+std::unique_ptr<agents::Robot> CalibrationDriveBuilder::MakeRobot(int robot_id,
+                                                                  const agents::RobotParams& params) const {
   return std::make_unique<CalibrationDriveRobot>(robot_id, params);
 }
 

@@ -13,8 +13,8 @@ namespace {
 
 bool CheckStop(std::string* error, const CircleFormationParams& params) {
   if (params.stop_m > 0.0 && params.stop_m <= params.tolerance_m) return true;
-  return agents::FailParams(error, "stop_m must be > 0 and <= tolerance_m (" + agents::NumberText(params.tolerance_m) + "), got " +
-                               agents::NumberText(params.stop_m));
+  return agents::FailParams(error, "stop_m must be > 0 and <= tolerance_m (" + agents::NumberText(params.tolerance_m) +
+                                       "), got " + agents::NumberText(params.stop_m));
 }
 
 }  // namespace
@@ -24,11 +24,13 @@ bool CircleFormationParams::IsValid(std::string* error) const {
   for (size_t i = 0; i < goals_m.size(); ++i) {
     if (!goals_m[i].allFinite()) return agents::FailParams(error, "goals_m[" + std::to_string(i) + "] must be finite");
   }
-  return agents::CheckAtLeast(error, "num_robots", num_robots, 1) && agents::CheckFields(*this, error) && CheckStop(error, *this);
+  return agents::CheckAtLeast(error, "num_robots", num_robots, 1) && agents::CheckFields(*this, error) &&
+         CheckStop(error, *this);
 }
 
 CircleFormationRobot::CircleFormationRobot(int id, const agents::RobotParams& robot_params,
-                                           const agents::HrvoRobotParams& hrvo_params, const CircleFormationParams& params)
+                                           const agents::HrvoRobotParams& hrvo_params,
+                                           const CircleFormationParams& params)
     : agents::HrvoRobot(id, robot_params, hrvo_params),
       params_(agents::CheckedParams(params)),
       progress_(params.num_robots, static_cast<int>(params.goals_m.size())) {

@@ -49,7 +49,8 @@ HrvoCircleBuilder::HrvoCircleBuilder(const config::ConfigNode& section, int num_
                      "], radius_m " + std::to_string(radius_m) + ") leaves the arena: every point must be " +
                      agents::NumberText(kMarginM) + " m inside x in [" + agents::NumberText(Arena::kArenaXMinMeters) +
                      ", " + agents::NumberText(Arena::kArenaXMaxMeters) + "], y in [" +
-                     agents::NumberText(Arena::kArenaYMinMeters) + ", " + agents::NumberText(Arena::kArenaYMaxMeters) + "]");
+                     agents::NumberText(Arena::kArenaYMinMeters) + ", " + agents::NumberText(Arena::kArenaYMaxMeters) +
+                     "]");
       }
     }
   }

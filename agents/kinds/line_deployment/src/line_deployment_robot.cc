@@ -14,12 +14,12 @@ bool LineDeploymentParams::IsValid(std::string* error) const {
   if (!agents::CheckFields(*this, error)) return false;
   if (!(resume_m >= tolerance_m) || !std::isfinite(resume_m)) {
     return agents::FailParams(error, "resume_m must be >= tolerance_m (" + agents::NumberText(tolerance_m) + "), got " +
-                                 agents::NumberText(resume_m));
+                                         agents::NumberText(resume_m));
   }
   if (!(arena_margin_m >= 0.0) || !arena_min_m.allFinite() || !arena_max_m.allFinite() ||
       !((arena_max_m - arena_min_m).array() > 2.0 * arena_margin_m).all()) {
     return agents::FailParams(error, "arena_margin_m must be >= 0 and leave room inside the arena, got " +
-                                 agents::NumberText(arena_margin_m));
+                                         agents::NumberText(arena_margin_m));
   }
   return true;
 }
@@ -44,7 +44,8 @@ void LineDeploymentRobot::OnMovement(const agents::MovementReading& reading) {
 std::optional<std::vector<uint8_t>> LineDeploymentRobot::OnRadio(const std::vector<agents::RadioMessage>& heard) {
   for (const agents::RadioMessage& message : heard) {
     // A payload claiming another robot's id is as bad as a truncated one.
-    const std::optional<agents::PositionMessage> neighbour = agents::PositionMessage::Decode(message.payload, message.sender_id);
+    const std::optional<agents::PositionMessage> neighbour =
+        agents::PositionMessage::Decode(message.payload, message.sender_id);
     if (!neighbour) {
       CountBadRadioMessage(message);
       continue;

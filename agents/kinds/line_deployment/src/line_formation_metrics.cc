@@ -65,8 +65,8 @@ std::optional<agents::GoalJudgement> LineFormationMetrics::JudgeGoal(const agent
   goal.met = goal.completion_step >= 0;
   goal.detail = goal.met ? "line converged"
                          : "line not converged: straightness " +
-                               agents::GoalJudgement::Metres(report.Value("final_line_straightness_error_m")) + ", spacing " +
-                               agents::GoalJudgement::Metres(report.Value("final_spacing_error_m"));
+                               agents::GoalJudgement::Metres(report.Value("final_line_straightness_error_m")) +
+                               ", spacing " + agents::GoalJudgement::Metres(report.Value("final_spacing_error_m"));
   return goal;
 }
 

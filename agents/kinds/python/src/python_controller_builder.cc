@@ -49,7 +49,8 @@ PythonControllerBuilder::PythonControllerBuilder(const config::ConfigNode& secti
   }
 }
 
-std::unique_ptr<agents::Robot> PythonControllerBuilder::MakeRobot(int robot_id, const agents::RobotParams& params) const {
+std::unique_ptr<agents::Robot> PythonControllerBuilder::MakeRobot(int robot_id,
+                                                                  const agents::RobotParams& params) const {
   (void)params;
   throw std::logic_error("robot " + std::to_string(robot_id) + " of kind python runs in the Python runtime (" +
                          module_path_ + "), hosted by dream::python_host, not as a C++ agents::Robot");

@@ -4,7 +4,8 @@
 namespace dream::voronoi_coverage {
 kind_api::AgentPartsConfig VoronoiCoverageBuilder::DefaultParts(int num_robots) {
   kind_api::AgentPartsConfig parts = kind_api::AgentPartsConfig::Defaults(num_robots);
-  kind_api::SensorConfig obstacle = kind_api::SensorConfig::Every(kind_api::SensorConfig::Kind::kObstacle, num_robots, 1);
+  kind_api::SensorConfig obstacle =
+      kind_api::SensorConfig::Every(kind_api::SensorConfig::Kind::kObstacle, num_robots, 1);
   obstacle.obstacle.range_m = 1.0;
   parts.sensors.push_back(obstacle);
   parts.radio = kind_api::RadioConfig::Every(kind_api::RadioConfig::Kind::kRange, num_robots, 3);
@@ -25,7 +26,8 @@ VoronoiCoverageBuilder::VoronoiCoverageBuilder(const config::ConfigNode& section
   if (!metrics_.IsValid(&error)) section.FailAtField(error);
 }
 
-std::unique_ptr<agents::Robot> VoronoiCoverageBuilder::MakeRobot(int robot_id, const agents::RobotParams& params) const {
+std::unique_ptr<agents::Robot> VoronoiCoverageBuilder::MakeRobot(int robot_id,
+                                                                 const agents::RobotParams& params) const {
   return std::make_unique<VoronoiCoverageRobot>(robot_id, params, params_);
 }
 

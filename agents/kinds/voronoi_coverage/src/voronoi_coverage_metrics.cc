@@ -113,8 +113,8 @@ std::optional<agents::GoalJudgement> VoronoiCoverageMetrics::JudgeGoal(const age
     const double rise = report.Value("coverage_cost_max_rise_m4");
     char text[96];
     std::snprintf(text, sizeof(text), "cost %.3g -> %.3g m^4, largest rise %.2g", initial, final_cost, rise);
-    goal.met = initial > 0.0 && final_cost >= 0.0 && rise >= 0.0 && final_cost <= 0.5 * initial &&
-               rise <= 0.01 * initial;
+    goal.met =
+        initial > 0.0 && final_cost >= 0.0 && rise >= 0.0 && final_cost <= 0.5 * initial && rise <= 0.01 * initial;
     goal.detail = std::string(goal.met ? "covering, not settled: " : "not settled: ") + text;
   }
   return goal;

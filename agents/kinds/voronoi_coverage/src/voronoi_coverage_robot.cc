@@ -26,7 +26,8 @@ std::optional<std::vector<uint8_t>> VoronoiCoverageRobot::OnRadio(const std::vec
   std::map<int, Known> neighbours;
   for (const agents::RadioMessage& message : heard) {
     if (message.sender_id == id()) continue;
-    const std::optional<agents::PositionMessage> decoded = agents::PositionMessage::Decode(message.payload, message.sender_id);
+    const std::optional<agents::PositionMessage> decoded =
+        agents::PositionMessage::Decode(message.payload, message.sender_id);
     if (!decoded) {
       CountBadRadioMessage(message);
       const auto previous = neighbours_.find(message.sender_id);
@@ -79,7 +80,8 @@ agents::UnicycleCommand VoronoiCoverageRobot::Update(int64_t step) {
     const double age_s = params_.step_s * static_cast<double>(std::max<int64_t>(step - known.sent_step, 0));
     neighbours.push_back({known.position_m, params_.max_speed_mps * (age_s + horizon_s)});
   }
-  const agents::VoronoiCell cell(params_.cell, position, neighbours, obstacles().closest_points_m, obstacles().rectangles);
+  const agents::VoronoiCell cell(params_.cell, position, neighbours, obstacles().closest_points_m,
+                                 obstacles().rectangles);
 
   bool inside = true;
   for (const agents::HalfPlane& plane : cell.constraints()) inside = inside && plane.Contains(position);
@@ -88,7 +90,8 @@ agents::UnicycleCommand VoronoiCoverageRobot::Update(int64_t step) {
   } else {
     // Squeezed out of every feasible point: head back across the violated lines.
     Eigen::Vector2d push = Eigen::Vector2d::Zero();
-    for (const agents::HalfPlane& plane : cell.constraints()) push += std::min(plane.Slack(position), 0.0) * plane.normal;
+    for (const agents::HalfPlane& plane : cell.constraints())
+      push += std::min(plane.Slack(position), 0.0) * plane.normal;
     goal_m_ = position + push;
   }
   const Eigen::Vector2d error = goal_m_ - position;

@@ -24,10 +24,10 @@ namespace dream::bridge {
 /// An export folder as `dream export` wrote it, read back for an import.
 struct ExportedSubmission {
   std::string dir;
-  SubmissionParams params;      ///< upload/dream_params.npy
-  run_config::RunConfig config;     ///< config.yaml (a copy of the run's)
+  SubmissionParams params;       ///< upload/dream_params.npy
+  run_config::RunConfig config;  ///< config.yaml (a copy of the run's)
   std::string config_text;
-  std::string source_run;       ///< the simulated run it came from (export.json), may be empty
+  std::string source_run;  ///< the simulated run it came from (export.json), may be empty
   /// Whether export.json held the upload files' digests and every file
   /// matched; false only for an export written before digests were.
   bool digests_checked = false;
@@ -56,13 +56,13 @@ struct ExportedSubmission {
 /// times are the lab's wall clock since then.
 struct LabResult {
   RunTrack track;
-  int64_t settle_steps = 0;     ///< iterations the script spent settling
-  int64_t planned_steps = 0;    ///< steps the export planned
-  int64_t iterations = 0;       ///< step() calls the script made (settle + experiment rows): the verifier's count
-  bool complete = false;        ///< the final pose is there: every planned step, or (controller strategy) every robot done
-  double wall_duration_s = 0.0; ///< wall time from step 0 to the last pose
-  double max_step_s = 0.0;      ///< longest wall time between two steps
-  int64_t clock_steps_back = 0; ///< stamps earlier than their predecessor (clamped)
+  int64_t settle_steps = 0;   ///< iterations the script spent settling
+  int64_t planned_steps = 0;  ///< steps the export planned
+  int64_t iterations = 0;     ///< step() calls the script made (settle + experiment rows): the verifier's count
+  bool complete = false;  ///< the final pose is there: every planned step, or (controller strategy) every robot done
+  double wall_duration_s = 0.0;  ///< wall time from step 0 to the last pose
+  double max_step_s = 0.0;       ///< longest wall time between two steps
+  int64_t clock_steps_back = 0;  ///< stamps earlier than their predecessor (clamped)
 };
 
 /// The rows of a result file: dream_result.npy, or a .mat file holding the
@@ -86,7 +86,7 @@ LabResult ParseLabResult(const formats::NpyArray& rows, const std::string& name,
 /// per broken rule, naming the measured and the declared value; empty when
 /// the verifier would pass it.
 std::vector<world::VerdictReason> LabVerifierReasons(const LabResult& lab, const world::WorldParams& world,
-                                                   const world::LabVerifierRules::Declaration& declared);
+                                                     const world::LabVerifierRules::Declaration& declared);
 
 /// What ImportLabRun wrote and what the run's report needs: the world
 /// stepped over the lab's poses, how the run ended and its judgement as a lab
@@ -130,6 +130,6 @@ ImportedRun ImportLabRun(const std::string& result_path, const std::string& expo
 /// and returns the violations counted on it. `end_state` and `detail` go in
 /// the final DREAM_STATUS.
 world::ViolationCounts WriteLabRunLog(const RunTrack& track, const world::WorldParams& world, int8_t end_state,
-                                    const std::string& detail, const std::string& log_path);
+                                      const std::string& detail, const std::string& log_path);
 
 }  // namespace dream::bridge

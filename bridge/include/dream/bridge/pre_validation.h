@@ -37,12 +37,14 @@ struct LabLimits {
 
 /// One reason the lab would refuse (or fail) the run.
 struct ExportProblem {
-  std::string rule;       ///< strategy, obstacle_schedule, robots, duration, finished, lost_robot, start_inside_arena, start_spacing, boundary, collision, obstacle, verifier_* (world::LabVerifierRules), or a summary.json verdict reason
-  int robot = -1;         ///< the robot concerned, -1 for none
-  int other = -1;         ///< the second robot of a pair, or the obstacle id
-  int64_t step = -1;      ///< the first step concerned, -1 for none
-  std::string problem;    ///< what is wrong
-  std::string fix;        ///< how to fix it
+  std::string rule;     ///< strategy, obstacle_schedule, robots, duration, finished, lost_robot, start_inside_arena,
+                        ///< start_spacing, boundary, collision, obstacle, verifier_* (world::LabVerifierRules), or a
+                        ///< summary.json verdict reason
+  int robot = -1;       ///< the robot concerned, -1 for none
+  int other = -1;       ///< the second robot of a pair, or the obstacle id
+  int64_t step = -1;    ///< the first step concerned, -1 for none
+  std::string problem;  ///< what is wrong
+  std::string fix;      ///< how to fix it
 
   /// "<rule>: robot 3, step 120: <problem>. Fix: <fix>".
   std::string Text() const;

@@ -19,15 +19,15 @@ struct ComparedRun {
   /// replay (dream lab-replay)", "simulation" or "simulation, world.realism
   /// on"; "run (no summary.json)" when it cannot tell.
   std::string what;
-  int64_t steps = 0;                    ///< last step with poses
-  std::string end;                      ///< the final DREAM_STATUS detail
-  world::ViolationCounts violations{};    ///< from the final DREAM_STATUS
-  std::string verdict;                  ///< clean / warning / rejected
+  int64_t steps = 0;                                                ///< last step with poses
+  std::string end;                                                  ///< the final DREAM_STATUS detail
+  world::ViolationCounts violations{};                              ///< from the final DREAM_STATUS
+  std::string verdict;                                              ///< clean / warning / rejected
   double min_distance_m = std::numeric_limits<double>::infinity();  ///< closest two robot centres
   int64_t min_distance_step = -1;
   int min_distance_first = -1;
   int min_distance_second = -1;
-  nlohmann::ordered_json metrics;       ///< the experiment's metrics, from the log
+  nlohmann::ordered_json metrics;  ///< the experiment's metrics, from the log
 };
 
 /// Errors of one robot, second run minus first, over the compared steps.
@@ -39,8 +39,8 @@ struct RobotTracking {
 
 /// A simulated run against its lab run (or any two runs of one experiment).
 struct RunComparison {
-  ComparedRun first;   ///< usually the simulated run (the plan)
-  ComparedRun second;  ///< usually the lab run; ComparedRun::what says what each is
+  ComparedRun first;           ///< usually the simulated run (the plan)
+  ComparedRun second;          ///< usually the lab run; ComparedRun::what says what each is
   int64_t compared_steps = 0;  ///< steps 0..compared_steps are in both
   std::vector<RobotTracking> robots;
   DifferenceStats position_m;  ///< over every robot and compared step

@@ -43,8 +43,8 @@ struct RunTrack {
 /// How a recorded run ended, from its last DREAM_STATUS (run_log::RunLog's
 /// last_status() and robot_faults()).
 struct RunEnd {
-  bool seen = false;      ///< the log has a DREAM_STATUS at all
-  int8_t state = -1;      ///< run_status_t state
+  bool seen = false;  ///< the log has a DREAM_STATUS at all
+  int8_t state = -1;  ///< run_status_t state
   std::string detail;
   world::ViolationCounts violations{};
   int64_t step = -1;

@@ -24,8 +24,8 @@ class ExportRefused : public std::runtime_error {
 /// What an export wrote.
 struct ExportSummary {
   std::string out_dir;
-  std::string upload_dir;             ///< out_dir/upload: exactly the files to upload
-  std::vector<std::string> uploads;   ///< their names; the first is the main script
+  std::string upload_dir;            ///< out_dir/upload: exactly the files to upload
+  std::vector<std::string> uploads;  ///< their names; the first is the main script
   int num_robots = 0;
   int64_t steps = 0;
   int64_t max_iterations = 0;         ///< steps + settle steps

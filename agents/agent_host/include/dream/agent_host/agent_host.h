@@ -114,8 +114,8 @@ class AgentHost {
   int64_t last_step_answered_ = -1;
   bool saw_poses_since_check_ = false;
   lcm::WorldFollower follower_;
-  int64_t obstacles_run_id_ = 0;  // run of world_.obstacles
-  int expected_robots_ = -1;      // -1: any
+  int64_t obstacles_run_id_ = 0;      // run of world_.obstacles
+  int expected_robots_ = -1;          // -1: any
   int last_other_world_robots_ = -1;  // the count of the last refused world
   /// Radio messages heard before the first DREAM_POSES (a neighbour may
   /// answer step 0 first); delivered on joining if of the joined run.

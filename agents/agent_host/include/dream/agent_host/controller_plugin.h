@@ -47,14 +47,16 @@ using RegisterControllersFunction = void (*)(ControllerRegistry* registry);
 /// Defines a plugin's two entry points; the braces that follow are the body
 /// of the registration function, with `registry` (a ControllerRegistry*) to
 /// Add() kinds to.
-#define DREAM_CONTROLLER_PLUGIN(registry)                                                   \
+#define DREAM_CONTROLLER_PLUGIN(registry)                                                 \
   DREAM_PLUGIN_EXPORT int dream_plugin_api_version() { return DREAM_PLUGIN_API_VERSION; } \
   DREAM_PLUGIN_EXPORT void dream_register_controllers(::dream::agent_host::ControllerRegistry* registry)
 
 /// A whole plugin with one kind, described by its ExperimentBuilder (see
 /// ControllerKind::Of for the static members it needs).
-#define DREAM_REGISTER_CONTROLLER(Builder) \
-  DREAM_CONTROLLER_PLUGIN(dream_plugin_registry_) { dream_plugin_registry_->Add(::dream::kind_api::ControllerKind::Of<Builder>()); }
+#define DREAM_REGISTER_CONTROLLER(Builder)                                         \
+  DREAM_CONTROLLER_PLUGIN(dream_plugin_registry_) {                                \
+    dream_plugin_registry_->Add(::dream::kind_api::ControllerKind::Of<Builder>()); \
+  }
 
 /// A whole plugin with one kind that is one Robot subclass: the kind's name,
 /// the class, and the robot's own keys of the `controller:` section as a
@@ -62,8 +64,8 @@ using RegisterControllersFunction = void (*)(ControllerRegistry* registry);
 /// RobotClassBuilder for the constructor the class needs.
 ///     DREAM_REGISTER_ROBOT("orbit", OrbitRobot, {"radius_m", "speed_mps"})
 /// (Variadic only because the preprocessor splits the braced list at its commas.)
-#define DREAM_REGISTER_ROBOT(kind_name, RobotClass, ...)                              \
-  DREAM_CONTROLLER_PLUGIN(dream_plugin_registry_) {                                   \
-    dream_plugin_registry_->Add(::dream::kind_api::ControllerKind::OfRobot<RobotClass>( \
-        kind_name, std::vector<std::string> __VA_ARGS__));                            \
+#define DREAM_REGISTER_ROBOT(kind_name, RobotClass, ...)                                                          \
+  DREAM_CONTROLLER_PLUGIN(dream_plugin_registry_) {                                                               \
+    dream_plugin_registry_->Add(                                                                                  \
+        ::dream::kind_api::ControllerKind::OfRobot<RobotClass>(kind_name, std::vector<std::string> __VA_ARGS__)); \
   }

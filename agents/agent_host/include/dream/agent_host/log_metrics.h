@@ -19,6 +19,6 @@ namespace dream::agent_host {
 /// `goal`, when given, receives the experiment's success rule applied to the
 /// report (ExperimentMetrics::JudgeGoal), or nothing for a kind without one.
 agents::MetricsReport MetricsFromLog(const ControllerFactory& factory, const run_log::RunLog& log,
-                             std::optional<agents::GoalJudgement>* goal = nullptr);
+                                     std::optional<agents::GoalJudgement>* goal = nullptr);
 
 }  // namespace dream::agent_host

@@ -18,16 +18,24 @@ namespace dream::agents {
 class FieldNames {
  public:
   template <typename T>
-  void Number(const char* key, T&, FieldRule, const char*) { names.emplace_back(key); }
+  void Number(const char* key, T&, FieldRule, const char*) {
+    names.emplace_back(key);
+  }
   template <typename T>
-  void Whole(const char* key, T&, FieldRule, const char*) { names.emplace_back(key); }
+  void Whole(const char* key, T&, FieldRule, const char*) {
+    names.emplace_back(key);
+  }
   void Flag(const char* key, bool&, const char*) { names.emplace_back(key); }
   template <typename E>
-  void Choice(const char* key, E&, const std::vector<std::pair<const char*, E>>&, const char*) { names.emplace_back(key); }
+  void Choice(const char* key, E&, const std::vector<std::pair<const char*, E>>&, const char*) {
+    names.emplace_back(key);
+  }
   void Point(const char* key, Eigen::Vector2d&, const char*) { names.emplace_back(key); }
   void RobotPoints(const char* key, std::vector<Eigen::Vector2d>&, const char*) { names.emplace_back(key); }
   template <typename Sub>
-  void Section(const char* key, Sub&, const char*) { names.emplace_back(key); }
+  void Section(const char* key, Sub&, const char*) {
+    names.emplace_back(key);
+  }
   /// A key whose structure the owner reads itself (a maneuver's keyframes).
   void Custom(const char* key, const char*) { names.emplace_back(key); }
 

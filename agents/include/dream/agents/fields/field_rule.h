@@ -33,9 +33,7 @@ class FieldRule {
   /// In (low, high].
   static FieldRule AboveUpTo(double low, double high) { return FieldRule(Bound::kOpen, low, Bound::kClosed, high); }
   /// A speed the Robotarium's robots can drive: in (0, 0.2] m/s.
-  static FieldRule RobotSpeed() {
-    return AboveUpTo(0.0, robotarium::RobotariumConstants::kMaxLinearVelocityMps);
-  }
+  static FieldRule RobotSpeed() { return AboveUpTo(0.0, robotarium::RobotariumConstants::kMaxLinearVelocityMps); }
   /// In [low, high).
   static FieldRule FromBelow(double low, double high) { return FieldRule(Bound::kClosed, low, Bound::kOpen, high); }
 
@@ -58,7 +56,8 @@ class FieldRule {
     if (high_ == Bound::kNone) {
       return (low_ == Bound::kOpen ? "> " : ">= ") + number(low_value_) + (infinite_ok_ ? " (.inf allowed)" : "");
     }
-    if (whole && low_ == Bound::kClosed && high_ == Bound::kClosed) return "in " + number(low_value_) + ".." + number(high_value_);
+    if (whole && low_ == Bound::kClosed && high_ == Bound::kClosed)
+      return "in " + number(low_value_) + ".." + number(high_value_);
     return std::string("in ") + (low_ == Bound::kOpen ? "(" : "[") + number(low_value_) + ", " + number(high_value_) +
            (high_ == Bound::kOpen ? ")" : "]");
   }

@@ -22,12 +22,12 @@ struct SensorSlot {
 /// Everything one robot is made of (the thesis's parts).
 struct RobotAgentSpec {
   std::unique_ptr<Robot> robot;
-  int robot_period_steps = 1;    ///< how often Update() runs
-  int64_t start_delay_steps = 0; ///< nothing runs while step <= this
+  int robot_period_steps = 1;     ///< how often Update() runs
+  int64_t start_delay_steps = 0;  ///< nothing runs while step <= this
   std::vector<SensorSlot> sensors;
   std::unique_ptr<Radio> radio;  ///< null: the robot has no radio
   int radio_period_steps = 1;
-  RadioLinkParams link;          ///< loss and delay of incoming messages
+  RadioLinkParams link;  ///< loss and delay of incoming messages
 };
 
 /// One robot's agent, free of any transport: feed it the world each step and

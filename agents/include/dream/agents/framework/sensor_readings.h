@@ -18,8 +18,8 @@ struct OdometryReading {
 
 /// One neighbour seen by a MovementSensor.
 struct NeighbourDetection {
-  double distance_m = 0.0;  ///< centre to centre
-  double bearing_rad = 0.0; ///< world-frame direction from this robot to the neighbour
+  double distance_m = 0.0;                                 ///< centre to centre
+  double bearing_rad = 0.0;                                ///< world-frame direction from this robot to the neighbour
   Eigen::Vector2d velocity_mps = Eigen::Vector2d::Zero();  ///< of the point 0.05 m ahead of its centre, world frame
 
   /// Neighbour centre minus own centre, world frame.

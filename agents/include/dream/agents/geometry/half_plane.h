@@ -21,8 +21,7 @@ struct HalfPlane {
   /// moved `buffer_m` towards `self` (a buffered Voronoi cell: two robots
   /// that each stay on their side keep 2 buffer_m apart). Nothing when the
   /// two points coincide (no bisector).
-  static std::optional<HalfPlane> Bisector(const Eigen::Vector2d& self, const Eigen::Vector2d& other,
-                                           double buffer_m) {
+  static std::optional<HalfPlane> Bisector(const Eigen::Vector2d& self, const Eigen::Vector2d& other, double buffer_m) {
     const Eigen::Vector2d d = other - self;
     const double length = d.norm();
     if (!(length > 1e-12)) return std::nullopt;

@@ -36,7 +36,8 @@ struct VoronoiCellParams {
                   "the cell lies in this disc around the robot (Algorithm 1's circle), m");
     fields.Whole("disc_sides", disc_sides, FieldRule::Within(8, kMaxDiscSides),
                  "the disc as an inscribed polygon with this many sides");
-    fields.Number("wall_margin_m", wall_margin_m, FieldRule::NonNegative(), "the cell keeps this far inside the arena walls, m");
+    fields.Number("wall_margin_m", wall_margin_m, FieldRule::NonNegative(),
+                  "the cell keeps this far inside the arena walls, m");
     fields.Number("robot_buffer_m", robot_buffer_m, FieldRule::NonNegative(),
                   "each bisector moves this far towards the robot: robots keep 2x apart, m");
     fields.Number("obstacle_buffer_m", obstacle_buffer_m, FieldRule::NonNegative(),

@@ -26,8 +26,7 @@ class HrvoAvoidance {
   /// @param preferred_velocity_mps where the robot's task wants it to go.
   /// @param neighbours the robots it can sense (its movement sensor's range).
   /// @return a velocity of norm <= max speed.
-  virtual Eigen::Vector2d SafeVelocity(const Eigen::Vector2d& position_m,
-                                       const Eigen::Vector2d& current_velocity_mps,
+  virtual Eigen::Vector2d SafeVelocity(const Eigen::Vector2d& position_m, const Eigen::Vector2d& current_velocity_mps,
                                        const Eigen::Vector2d& preferred_velocity_mps,
                                        const std::vector<HrvoNeighbour>& neighbours) = 0;
 };

@@ -114,7 +114,7 @@ class HrvoExact final : public HrvoAvoidance {
   double keep_right_cos_ = 1.0;  // the keep-right rotation, computed once
   double keep_right_sin_ = 0.0;
   bool last_was_safe_ = true;
-  std::vector<HrvoCone> cones_;                        // scratch: one wedge per neighbour
+  std::vector<HrvoCone> cones_;                       // scratch: one wedge per neighbour
   std::vector<std::pair<double, double>> intervals_;  // scratch: blocked stretches of one line
   std::vector<Eigen::Vector2d> candidates_;           // scratch: points on the speed circle
   std::vector<Segment> segments_;                     // scratch: legs and edges to search

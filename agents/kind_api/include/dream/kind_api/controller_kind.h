@@ -102,7 +102,8 @@ ControllerKind ControllerKind::Of() {
   kind.make_builder = [](const config::ConfigNode& section, int num_robots) -> std::unique_ptr<ExperimentBuilder> {
     return std::make_unique<Builder>(section, num_robots);
   };
-  if constexpr (HasSection<Builder>::value) kind.key_table = [] { return agents::KeyTableOf<typename Builder::Section>(); };
+  if constexpr (HasSection<Builder>::value)
+    kind.key_table = [] { return agents::KeyTableOf<typename Builder::Section>(); };
   return kind;
 }
 

@@ -39,7 +39,8 @@ class FieldReader {
     const config::ConfigNode node = section_.Required(key);
     // An int field takes only what fits in an int: 2^32 + 40 is refused, not wrapped to 40.
     const long long read = std::is_same_v<T, int> ? node.AsInt32() : node.AsInt();
-    if (!rule.Holds(static_cast<double>(read))) node.Fail("must be " + rule.Text(true) + ", got " + std::to_string(read));
+    if (!rule.Holds(static_cast<double>(read)))
+      node.Fail("must be " + rule.Text(true) + ", got " + std::to_string(read));
     value = static_cast<T>(read);
   }
   void Flag(const char* key, bool& value, const char*) { value = section_.GetBool(key, value); }
@@ -60,7 +61,8 @@ class FieldReader {
     }
     std::string list;
     for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
-    node.Fail("unknown " + std::string(meaning) + " '" + name + "'" + config::DidYouMean(name, allowed) + "; allowed: " + list);
+    node.Fail("unknown " + std::string(meaning) + " '" + name + "'" + config::DidYouMean(name, allowed) +
+              "; allowed: " + list);
   }
   void Point(const char* key, Eigen::Vector2d& value, const char*) {
     if (section_.Has(key)) value = ReadPoint(section_.Required(key));

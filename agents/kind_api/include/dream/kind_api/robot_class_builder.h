@@ -28,10 +28,11 @@ class RobotClassBuilder final : public ExperimentBuilder {
   /// The constructor that also gets the `controller:` section.
   static constexpr bool kReadsSection =
       std::is_constructible_v<RobotClass, int, const agents::RobotParams&, const config::ConfigNode&>;
-  static_assert(kReadsSection || std::is_constructible_v<RobotClass, int, const agents::RobotParams&>,
-                "a controller kind's robot class needs a public constructor (int id, const agents::RobotParams& params, "
-                "const dream::config::ConfigNode& section), or (int id, const agents::RobotParams& params) when it reads no "
-                "keys");
+  static_assert(
+      kReadsSection || std::is_constructible_v<RobotClass, int, const agents::RobotParams&>,
+      "a controller kind's robot class needs a public constructor (int id, const agents::RobotParams& params, "
+      "const dream::config::ConfigNode& section), or (int id, const agents::RobotParams& params) when it reads no "
+      "keys");
 
   /// @throws config::ConfigError from the robots' constructors.
   RobotClassBuilder(const config::ConfigNode& section, int num_robots) : section_(section) {

@@ -61,8 +61,8 @@ class PythonAgentHost {
 /// setup(), 0 between calls; the robot id; the step), so that a process
 /// sharing the memory can time the call too; nullptr: the module's own.
 inline constexpr int kCallCellWords = 3;
-using PythonHostWatchFunction = void (*)(const std::atomic<bool>* stop, double agent_timeout_s,
-                                         double start_timeout_s, std::atomic<int64_t>* cell);
+using PythonHostWatchFunction = void (*)(const std::atomic<bool>* stop, double agent_timeout_s, double start_timeout_s,
+                                         std::atomic<int64_t>* cell);
 inline constexpr const char* kPythonHostWatchSymbol = "dream_python_host_watch";
 
 /// dream_python_host_check: loads the controller's module and class and
@@ -75,9 +75,10 @@ inline constexpr const char* kPythonHostCheckSymbol = "dream_python_host_check";
 
 /// dream_python_host_create: the agents of `robot_ids` built from `spec_json`
 /// (the python kind's ControllerKind::runtime_spec), subscribed on `bus`. @throws as the check.
-using PythonHostCreateFunction = std::unique_ptr<PythonAgentHost> (*)(
-    lcm::LcmBus& bus, const std::string& spec_json, const std::vector<int>& robot_ids, int64_t agent_id,
-    const PythonAgentHost::Paths& paths);
+using PythonHostCreateFunction = std::unique_ptr<PythonAgentHost> (*)(lcm::LcmBus& bus, const std::string& spec_json,
+                                                                      const std::vector<int>& robot_ids,
+                                                                      int64_t agent_id,
+                                                                      const PythonAgentHost::Paths& paths);
 inline constexpr const char* kPythonHostCreateSymbol = "dream_python_host_create";
 
 }  // namespace dream::python_embedded

@@ -34,8 +34,8 @@ class PythonHostLibrary {
     check_(spec_json, paths);
   }
   std::unique_ptr<python_embedded::PythonAgentHost> Create(lcm::LcmBus& bus, const std::string& spec_json,
-                                                  const std::vector<int>& robot_ids, int64_t agent_id,
-                                                  const python_embedded::PythonAgentHost::Paths& paths) const;
+                                                           const std::vector<int>& robot_ids, int64_t agent_id,
+                                                           const python_embedded::PythonAgentHost::Paths& paths) const;
 
  private:
   PythonHostLibrary(python_embedded::PythonHostWatchFunction watch, python_embedded::PythonHostCheckFunction check,

@@ -61,8 +61,8 @@ class PythonHostProcess final : public python_embedded::PythonAgentHost {
 
   /// Starts the process for the agents of `robot_ids` and relays `bus`;
   /// returns at once (loading and setup() run there, bounded as above).
-  PythonHostProcess(lcm::LcmBus& bus, const std::string& spec_json, const std::vector<int>& robot_ids,
-                    int64_t agent_id, const Limits& limits);
+  PythonHostProcess(lcm::LcmBus& bus, const std::string& spec_json, const std::vector<int>& robot_ids, int64_t agent_id,
+                    const Limits& limits);
   ~PythonHostProcess() override;
   PythonHostProcess(const PythonHostProcess&) = delete;
   PythonHostProcess& operator=(const PythonHostProcess&) = delete;

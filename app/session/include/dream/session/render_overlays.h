@@ -23,7 +23,8 @@ namespace dream::session {
 render::ArenaOverlays ArenaOverlaysFromConfig(const run_config::RunConfig& config);
 
 /// The same with the run's factory, when the caller has one already.
-render::ArenaOverlays ArenaOverlaysFromConfig(const run_config::RunConfig& config, const agent_host::ControllerFactory& factory);
+render::ArenaOverlays ArenaOverlaysFromConfig(const run_config::RunConfig& config,
+                                              const agent_host::ControllerFactory& factory);
 
 /// The goals a run's metrics declare (summary.json metrics.goal_points: a
 /// Python controller's goal_points(), per robot [[x, y], ...]) when the kind

@@ -94,7 +94,7 @@ class BusFrameCollector {
   run_status_t unfollowed_status_{};
   obstacles_t unfollowed_obstacles_{};
   std::optional<ViewFrame::OtherWorld> other_world_;  // as last taken
-  std::vector<int> radio_senders_;  // since the last TakeFrame
+  std::vector<int> radio_senders_;                    // since the last TakeFrame
   std::deque<ViolationMark> marks_;
   int64_t marks_located_ = 0;
   int64_t bad_messages_ = 0;

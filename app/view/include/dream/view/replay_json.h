@@ -22,8 +22,7 @@ inline constexpr size_t kMaxPoseValues = 6'000'000;
 /// A run larger than `max_pose_values` numbers keeps every k-th step (the
 /// first and the last always), and says so ("stride"); at most
 /// kMaxReplayMarks violations are listed (the first ones), the counts stay exact.
-std::string RunReplayJson(const run_log::RunLog& log, const ViewSetup& setup,
-                          size_t max_pose_values = kMaxPoseValues);
+std::string RunReplayJson(const run_log::RunLog& log, const ViewSetup& setup, size_t max_pose_values = kMaxPoseValues);
 /// Violations the replay lists at most.
 inline constexpr size_t kMaxReplayMarks = 2000;
 

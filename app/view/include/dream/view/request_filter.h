@@ -13,11 +13,11 @@ class RequestFilter {
  public:
   /// The parts of a parsed request the decision needs.
   struct Request {
-    std::string_view method;   ///< "GET", ...
-    std::string_view target;   ///< the request target as sent, "/view.js?x=1"
-    int version = 11;          ///< 10 for HTTP/1.0, 11 for HTTP/1.1
-    std::string_view host;     ///< the Host header ("" when missing)
-    std::string_view origin;   ///< the Origin header ("" when missing)
+    std::string_view method;         ///< "GET", ...
+    std::string_view target;         ///< the request target as sent, "/view.js?x=1"
+    int version = 11;                ///< 10 for HTTP/1.0, 11 for HTTP/1.1
+    std::string_view host;           ///< the Host header ("" when missing)
+    std::string_view origin;         ///< the Origin header ("" when missing)
     bool websocket_upgrade = false;  ///< Connection: upgrade and Upgrade: websocket
   };
   /// What to do.

@@ -54,8 +54,8 @@ struct ViewFrame {
   };
 
   int64_t run_id = 0;
-  int64_t step = -1;   ///< -1: no poses seen yet
-  int64_t utime = 0;   ///< simulated time, microseconds
+  int64_t step = -1;  ///< -1: no poses seen yet
+  int64_t utime = 0;  ///< simulated time, microseconds
   /// DREAM_POSES: what the world published (true poses in a log; in a live
   /// run with realism on, what the agents were sent).
   std::vector<double> x_m, y_m, theta_rad;

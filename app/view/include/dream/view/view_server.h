@@ -24,9 +24,9 @@ class ViewServer {
  public:
   struct Options {
     std::string bind_address = "127.0.0.1";
-    int port = 8077;             ///< 0: any free port (port() says which)
-    bool replay = false;         ///< serve /run.json
-    size_t queue_frames = 8;     ///< each browser's ClientQueue
+    int port = 8077;          ///< 0: any free port (port() says which)
+    bool replay = false;      ///< serve /run.json
+    size_t queue_frames = 8;  ///< each browser's ClientQueue
   };
   static constexpr size_t kMaxHeaderBytes = 8192;
   static constexpr size_t kMaxClientMessageBytes = 4096;

@@ -34,9 +34,9 @@ struct ViewSetup {
   /// so the view never ends a run with a verdict of its own.
   struct Judged {
     static constexpr size_t kMaxListed = 64;  ///< reasons, and metrics, at most
-    std::string verdict;               ///< clean, warning, not_ready or rejected
-    std::vector<std::string> reasons;  ///< "rule: problem" each
-    std::string goal;                  ///< "met at step N (...)", "missed (...)", "none declared"
+    std::string verdict;                      ///< clean, warning, not_ready or rejected
+    std::vector<std::string> reasons;         ///< "rule: problem" each
+    std::string goal;                         ///< "met at step N (...)", "missed (...)", "none declared"
     /// The experiment's metrics (summary.json's metrics: name, value as text),
     /// the ones that are one number, flag or word each.
     std::vector<std::pair<std::string, std::string>> metrics;

@@ -21,9 +21,9 @@ namespace dream::workflows {
 class CalibrationExportWorkflow {
  public:
   struct Options {
-    int robots = 0;               ///< CalibrationConfig::kMinRobots to kMaxRobots
-    std::string out_dir;          ///< the export; empty: exports/calibration_<N>
-    std::string run_dir;          ///< the simulated run; empty: runs/calibration_<N> (or _2, ...)
+    int robots = 0;                        ///< CalibrationConfig::kMinRobots to kMaxRobots
+    std::string out_dir;                   ///< the export; empty: exports/calibration_<N>
+    std::string run_dir;                   ///< the simulated run; empty: runs/calibration_<N> (or _2, ...)
     bridge::ExportOptions export_options;  ///< strategy and calibration are set here
     /// Ends the run early when set (Ctrl-C); none: it ends by itself.
     const std::atomic<bool>* stop = nullptr;
@@ -31,7 +31,7 @@ class CalibrationExportWorkflow {
 
   struct Result {
     session::ExitCode exit_code = session::kExitOk;
-    std::string run_dir;                          ///< where the run was written
+    std::string run_dir;                            ///< where the run was written
     std::optional<bridge::ExportSummary> exported;  ///< none: nothing was exported
   };
 

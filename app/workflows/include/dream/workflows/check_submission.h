@@ -26,11 +26,11 @@ namespace dream::workflows {
 class CheckSubmission {
  public:
   struct Options {
-    std::string export_dir;   ///< the folder dream export wrote
-    std::string out_dir;      ///< --out; empty: runs/<name>_check (Tools::choose_folder decides)
+    std::string export_dir;  ///< the folder dream export wrote
+    std::string out_dir;     ///< --out; empty: runs/<name>_check (Tools::choose_folder decides)
     bool overwrite = false;
-    std::string run_dir;      ///< the simulated run to compare with; empty: the exported one
-    std::string simulator;    ///< --simulator: a robotarium_python_simulator checkout
+    std::string run_dir;    ///< the simulated run to compare with; empty: the exported one
+    std::string simulator;  ///< --simulator: a robotarium_python_simulator checkout
     /// $ROBOTARIUM_PYTHON_SIMULATOR (the caller reads the environment), used without --simulator.
     std::string simulator_from_environment;
     std::string python;         ///< the Python the runner runs with
@@ -83,9 +83,9 @@ class CheckSubmission {
   };
   struct Result {
     Outcome outcome = Outcome::kPassed;
-    std::string error;                    ///< for kScriptFailed .. kInterrupted: what to print on stderr
-    nlohmann::ordered_json check;         ///< check.json (empty when not written)
-    std::string dir;                      ///< the check's folder ("" when none was made)
+    std::string error;             ///< for kScriptFailed .. kInterrupted: what to print on stderr
+    nlohmann::ordered_json check;  ///< check.json (empty when not written)
+    std::string dir;               ///< the check's folder ("" when none was made)
   };
 
   CheckSubmission(Options options, Tools tools, std::ostream& out = std::cout);

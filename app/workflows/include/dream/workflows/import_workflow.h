@@ -36,7 +36,7 @@ class ImportWorkflow {
     bridge::ImportedRun imported;
     session::RunResult report;  ///< the judgement with the goal, and whether summary.json and the picture were written
     std::string summary_path;
-    std::string picture_path;   ///< empty when no picture was written
+    std::string picture_path;  ///< empty when no picture was written
     world::RunVerdict verdict() const { return report.judgement.verdict(); }
   };
 

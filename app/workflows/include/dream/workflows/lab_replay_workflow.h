@@ -21,13 +21,13 @@ namespace dream::workflows {
 class LabReplayWorkflow {
  public:
   struct Options {
-    std::string lab_dir;          ///< a folder written by dream import (run.lcmlog, config.yaml)
-    std::string out_dir;          ///< empty: runs/<name>_lab_replay (or _2, ... when that holds a run)
-    bool overwrite = false;       ///< replace a run already in the output folder
-    std::string lcm_url;          ///< empty: memq:// with in-process agents, else LCM_DEFAULT_URL
-    long long steps = 0;          ///< 0: the whole lab run
-    std::string mode;             ///< empty: the config's
-    bool world_only = false;      ///< no in-process agents: they run elsewhere (dream agent)
+    std::string lab_dir;      ///< a folder written by dream import (run.lcmlog, config.yaml)
+    std::string out_dir;      ///< empty: runs/<name>_lab_replay (or _2, ... when that holds a run)
+    bool overwrite = false;   ///< replace a run already in the output folder
+    std::string lcm_url;      ///< empty: memq:// with in-process agents, else LCM_DEFAULT_URL
+    long long steps = 0;      ///< 0: the whole lab run
+    std::string mode;         ///< empty: the config's
+    bool world_only = false;  ///< no in-process agents: they run elsewhere (dream agent)
     /// The Python runtime, for a Python controller's own metrics ("": none).
     std::string python_runtime_dir;
     /// Ends the replay early when set (Ctrl-C); none: it ends by itself.

@@ -19,10 +19,10 @@ namespace dream::workflows {
 class SlurmSubmission {
  public:
   struct Options {
-    int max_parallel = 0;                ///< %K; 0: no limit
-    long long time_limit_minutes = 0;    ///< each task's --time, unless `sbatch_options` hold one
+    int max_parallel = 0;                     ///< %K; 0: no limit
+    long long time_limit_minutes = 0;         ///< each task's --time, unless `sbatch_options` hold one
     std::vector<std::string> sbatch_options;  ///< --slurm-option values, passed on as they are
-    std::string dream_path;              ///< the dream binary the nodes run
+    std::string dream_path;                   ///< the dream binary the nodes run
     std::string job_name = "dream-sweep";
   };
   struct Submitted {

@@ -37,11 +37,11 @@ struct SweepRunResult {
   double wall_time_s = 0.0;  ///< measured by the sweep: start of the process to its exit
 
   bool has_summary = false;
-  std::string run_id;   ///< summary "run_id": two runs with one id are one summary copied
+  std::string run_id;                        ///< summary "run_id": two runs with one id are one summary copied
   std::optional<node::RunOutcome::End> end;  ///< summary "end" (none: the summary has none)
   std::optional<world::RunVerdict> verdict;  ///< summary "verdict" (none: the summary has none)
   long long steps = 0;
-  world::ViolationCounts violations;  ///< summary "violations"
+  world::ViolationCounts violations;     ///< summary "violations"
   std::optional<double> min_distance_m;  ///< metrics.min_pairwise_distance_m (robot centres)
   session::ExperimentGoal goal;
   bool success = false;

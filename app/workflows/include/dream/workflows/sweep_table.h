@@ -18,7 +18,7 @@ struct SweepSummary {
   size_t interrupted = 0;
   size_t not_run = 0;  ///< no result yet or never started (dream sweep table on a sweep not done)
   size_t succeeded = 0;
-  size_t without_goal = 0;  ///< ran, but their experiment declares no goal: never a success
+  size_t without_goal = 0;    ///< ran, but their experiment declares no goal: never a success
   double success_rate = 0.0;  ///< 0..1; 0 when nothing was judged
   size_t completed = 0;       ///< runs with a completion step
   double completion_mean = 0.0;

@@ -17,12 +17,12 @@ namespace dream::workflows {
 class SweepValueStats {
  public:
   struct Group {
-    std::string label;      ///< "controller.max_speed_mps=0.1", or "a=1, b=2" for a combination
-    size_t runs = 0;        ///< every run of the group in the table
-    size_t judged = 0;      ///< ran or failed to run: the success rate's denominator
+    std::string label;  ///< "controller.max_speed_mps=0.1", or "a=1, b=2" for a combination
+    size_t runs = 0;    ///< every run of the group in the table
+    size_t judged = 0;  ///< ran or failed to run: the success rate's denominator
     size_t succeeded = 0;
     size_t without_goal = 0;  ///< ran with no goal declared
-    size_t completed = 0;   ///< runs with a completion step
+    size_t completed = 0;     ///< runs with a completion step
     double completion_mean = 0.0;
     long long completion_min = -1;
     long long completion_max = -1;

@@ -33,12 +33,12 @@ class SweepWorkflow {
   struct Environment {
     /// The local engine's runner for `jobs` runs at once and a per-run time limit.
     std::function<std::unique_ptr<JobRunner>(int jobs, double run_timeout_s)> make_job_runner;
-    CommandRunner* commands = nullptr;  ///< sbatch, squeue, sacct, scontrol (Slurm only)
+    CommandRunner* commands = nullptr;        ///< sbatch, squeue, sacct, scontrol (Slurm only)
     const std::atomic<bool>* stop = nullptr;  ///< set on Ctrl-C (local engine)
-    std::ostream* out = nullptr;        ///< progress lines and the summary block; null: none
-    bool progress = true;               ///< a line per finished run
-    std::string dream_path;             ///< the dream binary runs start (and Slurm nodes run)
-    int cores = 0;                      ///< 0: this machine's
+    std::ostream* out = nullptr;              ///< progress lines and the summary block; null: none
+    bool progress = true;                     ///< a line per finished run
+    std::string dream_path;                   ///< the dream binary runs start (and Slurm nodes run)
+    int cores = 0;                            ///< 0: this machine's
   };
 
   /// What `dream sweep resume` may change; empty/0 keeps the sweep's own.

@@ -15,16 +15,16 @@ namespace dream::config {
 /// process never loads the simulator's library nor generates initial poses
 /// (RunConfig, the whole run, is one of these plus the world).
 struct ControllerConfig {
-  std::string source;            ///< the file it came from (for messages)
-  std::string name;              ///< run name; default output folder runs/<name>
-  uint64_t seed = 1;             ///< seeds initial poses and every noise source
-  int num_robots = 0;            ///< 1..kMaxRobots (the Robotarium simulator's), 1..kMaxRobotsSimOnly with sim_only
+  std::string source;  ///< the file it came from (for messages)
+  std::string name;    ///< run name; default output folder runs/<name>
+  uint64_t seed = 1;   ///< seeds initial poses and every noise source
+  int num_robots = 0;  ///< 1..kMaxRobots (the Robotarium simulator's), 1..kMaxRobotsSimOnly with sim_only
   /// `sim_only: true`: a run declared for simulation only, which may have up to
   /// kMaxRobotsSimOnly robots and which nothing sends to the lab (dream export,
   /// check-submission and import refuse it).
   bool sim_only = false;
-  ConfigNode sim_only_node;      ///< the `sim_only:` entry, for errors naming its line (undefined without one)
-  ConfigNode controller;         ///< the `controller:` section, read by the agents' factory
+  ConfigNode sim_only_node;  ///< the `sim_only:` entry, for errors naming its line (undefined without one)
+  ConfigNode controller;     ///< the `controller:` section, read by the agents' factory
   /// `plugins:` shared libraries that add controller kinds, as absolute
   /// paths (relative ones are relative to `plugin_dir:`, by default the
   /// config file's folder). The agents' factory loads them.

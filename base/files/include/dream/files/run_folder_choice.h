@@ -25,8 +25,7 @@ class RunFolderChoice {
 
   /// @throws std::runtime_error naming the folder and the ways out
   ///         (--overwrite, another --out), or why it cannot be created.
-  RunFolderChoice(const std::string& out, const std::string& default_dir, bool overwrite,
-                  Create create = Create::kNow);
+  RunFolderChoice(const std::string& out, const std::string& default_dir, bool overwrite, Create create = Create::kNow);
 
   /// True when `dir` holds a run's outputs: a file run.lcmlog, summary.json
   /// or run.lcmlog.part (a run that did not end).

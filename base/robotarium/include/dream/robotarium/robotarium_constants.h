@@ -26,8 +26,7 @@ struct RobotariumConstants {
   static constexpr double kMaxWheelVelocityRadps = kMaxLinearVelocityMps / kWheelRadiusMeters;
   // The official simulator uses the robot diameter here, not the base length.
   static constexpr double kMaxAngularVelocityRadps =
-      2.0 * (kWheelRadiusMeters / kRobotDiameterMeters) *
-      (kMaxLinearVelocityMps / kWheelRadiusMeters);
+      2.0 * (kWheelRadiusMeters / kRobotDiameterMeters) * (kMaxLinearVelocityMps / kWheelRadiusMeters);
 
   // Two robots collide when their centres, each moved kCollisionOffsetMeters
   // forward along its heading, are at most kCollisionDiameterMeters apart.

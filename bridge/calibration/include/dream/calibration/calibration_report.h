@@ -12,7 +12,7 @@ namespace dream::calibration {
 struct FittedKey {
   std::string key;
   double value = 0.0;
-  double low = 0.0;   ///< 95 % confidence interval (low == high == value when exact)
+  double low = 0.0;  ///< 95 % confidence interval (low == high == value when exact)
   double high = 0.0;
   bool determined = false;  ///< false: the data cannot tell; value is the base preset's
   std::string support;      ///< how much data supported it, or why it is kept
@@ -20,8 +20,8 @@ struct FittedKey {
 
 /// What a step in v from rest looks like, real and fitted, at one speed.
 struct StepResponseCurve {
-  double speed_mps = 0.0;     ///< the commanded speed of the events averaged
-  int events = 0;             ///< steps from rest seen at this speed
+  double speed_mps = 0.0;      ///< the commanded speed of the events averaged
+  int events = 0;              ///< steps from rest seen at this speed
   std::vector<double> time_s;  ///< since the command's step
   std::vector<double> real_m;  ///< mean distance driven, measured
   std::vector<double> fitted_m;
@@ -34,7 +34,7 @@ struct StepResponseCurve {
 /// The fit of a lab model to real runs: the realism keys with their
 /// intervals, and the evidence drawn in the calibration picture.
 struct CalibrationReport {
-  world::RealismParams params;   ///< the base preset with every determined key fitted
+  world::RealismParams params;  ///< the base preset with every determined key fitted
   std::vector<FittedKey> keys;  ///< one per key of RealismParams::Fields(), in that order
   std::vector<std::string> sources;
   /// What the inputs needed (a time vector that is no clock, robots left

@@ -11,8 +11,8 @@ namespace dream::calibration {
 /// One lab run as `dream calibrate` fits it: every step's measured poses,
 /// the commands the script sent, and when each step was taken.
 struct CalibrationRun {
-  std::string name;  ///< the file or folder it came from, for messages
-  bridge::RunTrack track;    ///< poses as measured (what get_poses() returned), commands as sent
+  std::string name;        ///< the file or folder it came from, for messages
+  bridge::RunTrack track;  ///< poses as measured (what get_poses() returned), commands as sent
   /// track.utime is a real clock (a lab run's wall time, or a time vector);
   /// false when it is only the nominal step (then step timing cannot be fitted).
   bool timed = false;

@@ -20,7 +20,7 @@ struct NamedModel {
 struct ModelPrediction {
   std::string name;
   std::vector<StepResponseCurve> step_responses;  ///< the runs' starts from rest, real against this model
-  double position_error_m = 0.0;  ///< RMS error of 1 s open-loop predictions from the real poses
+  double position_error_m = 0.0;                  ///< RMS error of 1 s open-loop predictions from the real poses
   double heading_error_rad = 0.0;
   /// 95 % interval of position_error_m over robots and their start points
   /// (a bootstrap over the runs' robots: one robot's predictions are not
@@ -41,8 +41,7 @@ class LabModelCheck {
   /// @throws std::runtime_error as LabCalibration::Fit for unusable runs;
   ///         files::Stopped when `stop` is requested meanwhile (polled per robot).
   static std::vector<ModelPrediction> Predict(const std::vector<CalibrationRun>& runs,
-                                              const std::vector<NamedModel>& models,
-                                              const files::StopToken& stop = {});
+                                              const std::vector<NamedModel>& models, const files::StopToken& stop = {});
   /// The side-by-side table: per speed the real and each model's effective
   /// delay and first motion; each model's prediction errors with their
   /// intervals, and a ranking only where the intervals separate; the steady

@@ -20,7 +20,7 @@ class OpenLoopDriveMeasure {
  public:
   /// Robots driven side by side from rest, and when each step was taken.
   struct Drive {
-    std::vector<double> time_s;                     ///< per step, from the first command
+    std::vector<double> time_s;                    ///< per step, from the first command
     std::vector<std::vector<world::Pose2>> poses;  ///< per robot, per step: as measured
   };
 
@@ -33,8 +33,7 @@ class OpenLoopDriveMeasure {
   /// The steady turning rate after the first 100 steps (a line through the
   /// unwrapped heading), divided by the commanded rate `w_radps`.
   /// @throws std::invalid_argument with under 200 poses or w_radps == 0.
-  static double TurningRatio(const std::vector<world::Pose2>& poses, const std::vector<double>& time_s,
-                             double w_radps);
+  static double TurningRatio(const std::vector<world::Pose2>& poses, const std::vector<double>& time_s, double w_radps);
 
   /// Drives `robots` robots of the lab model `realism` (world::RealisticWorld,
   /// seeded) from rest with `command` held for `steps` steps, side by side:

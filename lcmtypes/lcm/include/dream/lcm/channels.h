@@ -59,9 +59,7 @@ inline constexpr const char* kViewChannelsRegex = "DREAM_(POSES|MEASURED_POSES|O
 inline std::string RadioChannel(int robot_id) { return kRadioChannelPrefix + std::to_string(robot_id); }
 
 /// "DREAM_CMD_<robot_id>".
-inline std::string CommandChannel(int robot_id) {
-  return kCommandChannelPrefix + std::to_string(robot_id);
-}
+inline std::string CommandChannel(int robot_id) { return kCommandChannelPrefix + std::to_string(robot_id); }
 
 /// "DREAM_FAULT_<robot_id>".
 inline std::string FaultChannel(int robot_id) { return kFaultChannelPrefix + std::to_string(robot_id); }
@@ -72,8 +70,7 @@ inline std::string LabCommandChannel(int robot_id) { return kLabCommandChannelPr
 /// The robot id after `prefix` in a channel name, or nothing when the suffix
 /// is not a plain non-negative decimal number.
 inline std::optional<int> RobotIdFromChannel(const std::string& channel, const std::string& prefix) {
-  if (channel.rfind(prefix, 0) != 0 || channel.size() == prefix.size() ||
-      channel.size() > prefix.size() + 6) {
+  if (channel.rfind(prefix, 0) != 0 || channel.size() == prefix.size() || channel.size() > prefix.size() + 6) {
     return std::nullopt;
   }
   int id = 0;
@@ -100,9 +97,9 @@ struct AgentChannel {
 /// at most 6 decimal digits), or nothing for any other name.
 inline std::optional<AgentChannel> ParseAgentChannel(const std::string& channel) {
   using Kind = AgentChannel::Kind;
-  for (const auto& [prefix, kind] : {std::pair{kCommandChannelPrefix, Kind::kCommand},
-                                     std::pair{kRadioChannelPrefix, Kind::kRadio},
-                                     std::pair{kFaultChannelPrefix, Kind::kFault}}) {
+  for (const auto& [prefix, kind] :
+       {std::pair{kCommandChannelPrefix, Kind::kCommand}, std::pair{kRadioChannelPrefix, Kind::kRadio},
+        std::pair{kFaultChannelPrefix, Kind::kFault}}) {
     if (const std::optional<int> id = RobotIdFromChannel(channel, prefix)) return AgentChannel{kind, *id};
   }
   return std::nullopt;

@@ -119,7 +119,7 @@ class LcmBus final : public LcmInterface {
   // Before lcm_: notes the sockets open before LCM opens its own.
   UdpmReceiveSocket receive_socket_{url_};
   std::unique_ptr<::lcm::LCM> lcm_;
-  int receive_fd_ = -1;  // LCM's udpm receive socket, when found
+  int receive_fd_ = -1;                // LCM's udpm receive socket, when found
   bool kernel_filter_allowed_ = true;  // false once c_handle() handed LCM out
   std::vector<std::string> kernel_filter_prefixes_;
   ::lcm::Subscription* subscription_ = nullptr;  // owned by lcm_

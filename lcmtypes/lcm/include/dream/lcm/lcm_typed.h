@@ -50,16 +50,15 @@ bool Decode(const void* data, int size, Message* message) {
 /// returned Subscription is destroyed.
 template <typename Message>
 [[nodiscard]] Subscription Subscribe(LcmInterface& lcm, const std::string& channel_regex,
-               std::function<void(const std::string& channel, const Message&)> handler,
-               BadMessageLog& bad_messages) {
-  return lcm.Subscribe(channel_regex, [handler = std::move(handler), &bad_messages](
-                                   const std::string& channel, const void* data, int size) {
+                                     std::function<void(const std::string& channel, const Message&)> handler,
+                                     BadMessageLog& bad_messages) {
+  return lcm.Subscribe(channel_regex, [handler = std::move(handler), &bad_messages](const std::string& channel,
+                                                                                    const void* data, int size) {
     Message message;
     if (std::optional<std::string> problem = DecodeProblem(data, size, &message)) {
-      bad_messages.Report(channel,
-                          "cannot decode " + std::to_string(size) + " bytes as " + Message::getTypeName() + ": " +
-                              *problem,
-                          WireLayoutOf<Message>().AgentIdOf(data, size));
+      bad_messages.Report(
+          channel, "cannot decode " + std::to_string(size) + " bytes as " + Message::getTypeName() + ": " + *problem,
+          WireLayoutOf<Message>().AgentIdOf(data, size));
       return;
     }
     handler(channel, message);
@@ -74,7 +73,9 @@ template <typename Owner, typename Message>
                                      BadMessageLog& bad_messages) {
   return Subscribe<Message>(
       lcm, channel_regex,
-      [owner, on_message](const std::string& channel, const Message& message) { (owner->*on_message)(channel, message); },
+      [owner, on_message](const std::string& channel, const Message& message) {
+        (owner->*on_message)(channel, message);
+      },
       bad_messages);
 }
 

@@ -23,9 +23,9 @@ namespace dream::lcm {
 class WorldFollower {
  public:
   enum class StepDecision {
-    kNewStep,   ///< run the robots for this step
-    kResend,    ///< the current step again: answer it again, unchanged
-    kIgnore,    ///< late duplicate, another run, or an unconfirmed jump
+    kNewStep,  ///< run the robots for this step
+    kResend,   ///< the current step again: answer it again, unchanged
+    kIgnore,   ///< late duplicate, another run, or an unconfirmed jump
   };
 
   /// Forward gap accepted without confirmation: one second of Robotarium steps.

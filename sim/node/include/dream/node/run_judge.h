@@ -27,6 +27,6 @@ std::vector<world::VerdictReason> OutcomeReasons(const RunOutcome& outcome);
 /// lower bound of it. The experiment's goal is judged by the caller (it
 /// needs the metrics).
 world::RunJudgement JudgeRun(const run_config::RunConfig& config, const RunOutcome& outcome, const world::World& world,
-                      int64_t robots_outside_boundaries = -1);
+                             int64_t robots_outside_boundaries = -1);
 
 }  // namespace dream::node

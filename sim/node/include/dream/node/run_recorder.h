@@ -98,7 +98,7 @@ class RunRecorder {
   std::string failure_;
   std::string rewritten_channel_;
   Rewrite rewrite_;
-  bool rewriting_ = false;  // inside rewrite_: its writes go to the log
+  bool rewriting_ = false;        // inside rewrite_: its writes go to the log
   bool cut_back_failed_ = false;  // the .part may end mid-event: never renamed
   uint64_t part_device_ = 0;      // the .part file opened, to rename it by what it is
   uint64_t part_inode_ = 0;

@@ -27,7 +27,7 @@ namespace dream {
 class velocity_command_t;
 class robot_fault_t;
 class run_status_t;
-}
+}  // namespace dream
 
 namespace dream::node {
 
@@ -142,8 +142,8 @@ class SimNode {
   lcm::LcmInterface& lcm_;
   world::World& world_;
   std::vector<world::ObstacleState> obstacle_states_;  // scratch for PublishStep
-  applied_commands_t applied_;                  // scratch for RecordApplied
-  std::vector<uint8_t> encoded_;               // scratch: the message being published or recorded
+  applied_commands_t applied_;                         // scratch for RecordApplied
+  std::vector<uint8_t> encoded_;                       // scratch: the message being published or recorded
   RunRecorder* recorder_;
   int64_t recorder_failed_at_step_ = -1;
   config::SimNodeOptions options_;

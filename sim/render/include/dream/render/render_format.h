@@ -13,6 +13,8 @@ std::optional<RenderFormat> RenderFormatOfPath(const std::string& path);
 /// ".png, .svg, .mp4, .gif": for messages.
 const char* RenderFormatExtensions();
 /// True for PNG and SVG (pictures), false for MP4 and GIF (videos).
-inline bool IsPictureFormat(RenderFormat format) { return format == RenderFormat::kPng || format == RenderFormat::kSvg; }
+inline bool IsPictureFormat(RenderFormat format) {
+  return format == RenderFormat::kPng || format == RenderFormat::kSvg;
+}
 
 }  // namespace dream::render

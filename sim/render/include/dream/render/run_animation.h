@@ -14,11 +14,11 @@ namespace dream::render {
 
 /// How a run becomes a video.
 struct AnimationOptions {
-  int width_px = 720;        ///< frame width (rounded down to even); the height follows the arena
-  double fps = 30.0;         ///< video frames per second, 1..120
-  double speed = 4.0;        ///< simulated seconds per video second (> 0): 3,000 steps = 99 s play in ~25 s
-  double trail_s = 10.0;     ///< simulated seconds of path drawn behind each robot (0: none)
-  double hold_end_s = 1.0;   ///< the last frame stays this long, video seconds (>= 0)
+  int width_px = 720;       ///< frame width (rounded down to even); the height follows the arena
+  double fps = 30.0;        ///< video frames per second, 1..120
+  double speed = 4.0;       ///< simulated seconds per video second (> 0): 3,000 steps = 99 s play in ~25 s
+  double trail_s = 10.0;    ///< simulated seconds of path drawn behind each robot (0: none)
+  double hold_end_s = 1.0;  ///< the last frame stays this long, video seconds (>= 0)
 };
 
 /// A run as a video, like the thesis's videos: the arena to scale, robots as

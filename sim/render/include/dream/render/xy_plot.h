@@ -14,7 +14,7 @@ struct XySeries {
   std::string label;                          ///< in the panel's legend
   std::vector<std::array<double, 2>> points;  ///< {x, y}; bars: {bin centre, count}
   Style style = Style::kLine;
-  int color = 0;                              ///< the robot palette's colour index
+  int color = 0;  ///< the robot palette's colour index
 };
 
 /// One panel: a title, axis names and its series on shared axes.
@@ -31,8 +31,8 @@ class XyPlot {
  public:
   /// @throws std::invalid_argument when there are no panels or a panel has
   ///         no points; std::runtime_error naming the path when it cannot be written.
-  static void Render(const std::vector<XyPanel>& panels, int columns, const std::string& title,
-                     const std::string& path, RenderFormat format, int width_px = 1200);
+  static void Render(const std::vector<XyPanel>& panels, int columns, const std::string& title, const std::string& path,
+                     RenderFormat format, int width_px = 1200);
 };
 
 }  // namespace dream::render

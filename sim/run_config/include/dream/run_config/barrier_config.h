@@ -25,7 +25,8 @@ struct BarrierConfig {
   /// Kind unicycle: rps's create_uni_barrier_certificate_with_boundary() unless the keys say otherwise.
   barriers::UnicycleBarrierParams unicycle = barriers::UnicycleBarrierParams::RpsWithBoundary();
   /// Kind single_integrator: rps's create_si_barrier_certificate_with_boundary() unless the keys say otherwise.
-  barriers::SingleIntegratorBarrierParams single_integrator = barriers::SingleIntegratorBarrierParams::RpsWithBoundary();
+  barriers::SingleIntegratorBarrierParams single_integrator =
+      barriers::SingleIntegratorBarrierParams::RpsWithBoundary();
 
   /// The simulator (and the exported script) filter commands through `unicycle`.
   bool InWorld() const { return kind == Kind::kUnicycle && apply_in == ApplyIn::kWorld; }

@@ -30,10 +30,10 @@ struct RunConfig : config::ControllerConfig {
   /// them equal), so agents never refuse the world's own obstacles.
   static constexpr size_t kMaxObstacles = 10000;
 
-  config::SimNodeOptions sim;       ///< pacing, timeouts, step limit
+  config::SimNodeOptions sim;  ///< pacing, timeouts, step limit
   /// `world.start`: step 0 on the start poses, or where the Robotarium's start-up drive left the robots.
   WorldStart start = WorldStart::kExact;
-  world::WorldParams world;        ///< Robotarium V2 constants (not configurable)
+  world::WorldParams world;  ///< Robotarium V2 constants (not configurable)
   /// `world.realism:` (a preset name, or a map of models); Ideal(), the
   /// default, is the official simulator (no world::RealisticWorld).
   world::RealismParams realism;

@@ -33,8 +33,7 @@ class HybridPoseController {
 
   // One command per robot towards goals[i]; the sizes must agree (unchecked:
   // the drive is the only caller).
-  void Apply(const std::vector<Pose2>& states, const std::vector<Pose2>& goals,
-             std::vector<UnicycleCommand>* commands);
+  void Apply(const std::vector<Pose2>& states, const std::vector<Pose2>& goals, std::vector<UnicycleCommand>* commands);
   // The controller called with one robot (rps's x[:, i].reshape(-1, 1)).
   UnicycleCommand ApplyOne(const Pose2& state, const Pose2& goal);
 

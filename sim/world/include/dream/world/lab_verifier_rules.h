@@ -34,9 +34,9 @@ struct LabVerifierRules {
   };
   /// What the verifier counts while the script runs.
   struct Counts {
-    int num_robots = 0;                 ///< robots the script asks the Robotarium for
-    int64_t iterations = 0;             ///< step() calls
-    int64_t robots_too_close = 0;       ///< summed over iterations, one per pair (our collision_errors)
+    int num_robots = 0;                     ///< robots the script asks the Robotarium for
+    int64_t iterations = 0;                 ///< step() calls
+    int64_t robots_too_close = 0;           ///< summed over iterations, one per pair (our collision_errors)
     int64_t robots_outside_boundaries = 0;  ///< summed over iterations, one per robot outside
   };
 

@@ -6,7 +6,7 @@ namespace dream::world {
 // on DREAM_OBSTACLES: plain numbers, whether the world moves it (the
 // simulator) or replays it (a lab replay).
 struct ObstacleState {
-  int id = 0;             // RectangleObstacleSpec::id
+  int id = 0;  // RectangleObstacleSpec::id
   double center_x_m = 0.0;
   double center_y_m = 0.0;
   double width_m = 0.0;   // extent along x

@@ -127,11 +127,11 @@ class RealisticWorld final : public World {
   };
   struct Robot {
     std::deque<QueuedCommand> queue;
-    UnicycleCommand delivered;       // the command the firmware follows
-    int64_t delivered_step = kNone;  // when it reached the robot; kNone: no command
+    UnicycleCommand delivered;           // the command the firmware follows
+    int64_t delivered_step = kNone;      // when it reached the robot; kNone: no command
     double late_since_delivery_s = 0.0;  // time beyond whole steps since then (late steps, stalls)
-    RobotResponse response;          // its firmware, motors, gains and drift
-    bool sent_over_limit = false;    // newest command since the last Step() exceeds the wheel limit
+    RobotResponse response;              // its firmware, motors, gains and drift
+    bool sent_over_limit = false;        // newest command since the last Step() exceeds the wheel limit
   };
 
   // What the tracker knows of a robot.
@@ -158,7 +158,7 @@ class RealisticWorld final : public World {
   RealismParams realism_;
   UnicycleWorld truth_;
   std::vector<Robot> robots_;
-  std::vector<double> motion_times_;  // per robot, this step's driving time (late steps only)
+  std::vector<double> motion_times_;              // per robot, this step's driving time (late steps only)
   std::unique_ptr<RealismRandom> timing_random_;  // only with overruns or stalls
   int64_t late_steps_ = 0;
   int64_t stalls_ = 0;

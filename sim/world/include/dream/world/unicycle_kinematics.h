@@ -14,24 +14,21 @@ namespace dream::world {
 // with -ffp-contract=off).
 
 // left = (2v - L w) / (2r), right = (2v + L w) / (2r).
-inline WheelSpeeds UnicycleToWheelSpeeds(const UnicycleCommand& command, double wheel_radius_m,
-                                         double base_length_m) {
+inline WheelSpeeds UnicycleToWheelSpeeds(const UnicycleCommand& command, double wheel_radius_m, double base_length_m) {
   const double inverse_two_radius = 1.0 / (2.0 * wheel_radius_m);
   return WheelSpeeds{inverse_two_radius * (2.0 * command.v_mps - base_length_m * command.w_radps),
                      inverse_two_radius * (2.0 * command.v_mps + base_length_m * command.w_radps)};
 }
 
 // v = r/2 (left + right), w = r/L (right - left).
-inline UnicycleCommand WheelSpeedsToUnicycle(const WheelSpeeds& wheels, double wheel_radius_m,
-                                             double base_length_m) {
+inline UnicycleCommand WheelSpeedsToUnicycle(const WheelSpeeds& wheels, double wheel_radius_m, double base_length_m) {
   return UnicycleCommand{(wheel_radius_m / 2.0) * (wheels.left_radps + wheels.right_radps),
                          (wheel_radius_m / base_length_m) * (wheels.right_radps - wheels.left_radps)};
 }
 
 // True if either wheel turns faster than the limit (strictly).
 inline bool ExceedsWheelSpeedLimit(const WheelSpeeds& wheels, double max_wheel_speed_radps) {
-  return std::abs(wheels.left_radps) > max_wheel_speed_radps ||
-         std::abs(wheels.right_radps) > max_wheel_speed_radps;
+  return std::abs(wheels.left_radps) > max_wheel_speed_radps || std::abs(wheels.right_radps) > max_wheel_speed_radps;
 }
 
 // Clips each wheel to +-max independently (this changes the direction of
@@ -52,8 +49,7 @@ inline WheelSpeeds ClipWheelSpeeds(const WheelSpeeds& wheels, double max_wheel_s
 inline UnicycleCommand SaturateUnicycleCommand(const UnicycleCommand& command, double wheel_radius_m,
                                                double base_length_m, double max_wheel_speed_radps) {
   return WheelSpeedsToUnicycle(
-      ClipWheelSpeeds(UnicycleToWheelSpeeds(command, wheel_radius_m, base_length_m),
-                      max_wheel_speed_radps),
+      ClipWheelSpeeds(UnicycleToWheelSpeeds(command, wheel_radius_m, base_length_m), max_wheel_speed_radps),
       wheel_radius_m, base_length_m);
 }
 

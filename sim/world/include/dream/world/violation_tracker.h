@@ -46,7 +46,7 @@ class ViolationTracker {
 
   size_t max_listed_;
   LocatedViolations located_;
-  std::map<Key, Open> open_;  // bounded by the violations of one step
+  std::map<Key, Open> open_;              // bounded by the violations of one step
   std::vector<LocatedViolation> placed_;  // one step's, reused
 };
 

@@ -58,12 +58,16 @@ struct AffineFollowerParams {
   /// The config keys of `follower:` (kind affine_formation).
   template <typename Fields>
   void ListFields(Fields& fields) {
-    fields.Choice("law", law, {{"zhao", Law::kZhao}, {"thesis", Law::kThesis}}, "follower law: `zhao` (normalised, the neighbours' velocities fed forward) or `thesis` (eq. 3.9, positions only)");
-    fields.Number("gain", gain, agents::FieldRule::Positive(), "law gain (`zhao`: keep near 1; `thesis`: needs ~10 or more), 1/s");
+    fields.Choice("law", law, {{"zhao", Law::kZhao}, {"thesis", Law::kThesis}},
+                  "follower law: `zhao` (normalised, the neighbours' velocities fed forward) or `thesis` (eq. 3.9, "
+                  "positions only)");
+    fields.Number("gain", gain, agents::FieldRule::Positive(),
+                  "law gain (`zhao`: keep near 1; `thesis`: needs ~10 or more), 1/s");
     fields.Number("max_speed_mps", max_speed_mps, agents::FieldRule::RobotSpeed(), "cap on the law's velocity, m/s");
     fields.Number("hrvo_engage_distance_m", hrvo_engage_distance_m, agents::FieldRule::PositiveOrInfinite(),
                   "HRVO considers robots closer than this, m ...");
-    fields.Number("hrvo_horizon_s", hrvo_horizon_s, agents::FieldRule::NonNegative(), "... or that the law's velocity would bring within the safety radius in this time, s");
+    fields.Number("hrvo_horizon_s", hrvo_horizon_s, agents::FieldRule::NonNegative(),
+                  "... or that the law's velocity would bring within the safety radius in this time, s");
     fields.Whole("max_message_age_steps", max_message_age_steps, agents::FieldRule::AtLeast(1),
                  "older neighbour news is not used (the follower only avoids collisions), steps");
   }

@@ -51,16 +51,24 @@ class AffineFormationBuilder final : public kind_api::ExperimentBuilder {
     template <typename Fields>
     void ListFields(Fields& fields) {
       fields.RobotPoints("nominal_positions", nominal_positions, "nominal position");
-      fields.Custom(kManeuverKey, "required: keyframes `{step, scale_x: 1, scale_y: 1, rotation_rad: 0, translation: [0, 0]}` at increasing steps: A = diag(scale_x, scale_y) R(rotation_rad), b = translation, smoothstep between keyframes, held outside");
+      fields.Custom(kManeuverKey,
+                    "required: keyframes `{step, scale_x: 1, scale_y: 1, rotation_rad: 0, translation: [0, 0]}` at "
+                    "increasing steps: A = diag(scale_x, scale_y) R(rotation_rad), b = translation, smoothstep between "
+                    "keyframes, held outside");
       fields.Section("leader", leader, "the leaders' law");
       fields.Section("follower", follower, "the followers' law");
       fields.Section("hrvo", hrvo, "collision avoidance");
-      fields.Choice("drive", reversible_drive, {{"reversible", true}, {"thesis", false}}, "drive of every robot: `reversible` (may back up instead of turning round, with hysteresis) or `thesis` (dxi_to_dxu)");
-      fields.Number("time_step_s", time_step_s, agents::FieldRule::Positive(), "one step: leaders' target velocities, followers' ageing of neighbour positions, s");
+      fields.Choice("drive", reversible_drive, {{"reversible", true}, {"thesis", false}},
+                    "drive of every robot: `reversible` (may back up instead of turning round, with hysteresis) or "
+                    "`thesis` (dxi_to_dxu)");
+      fields.Number("time_step_s", time_step_s, agents::FieldRule::Positive(),
+                    "one step: leaders' target velocities, followers' ageing of neighbour positions, s");
       fields.Number("equilibrium_tolerance_m", equilibrium_tolerance_m, agents::FieldRule::Positive(),
-                    "how far a follower's stress equilibrium may lie from its nominal point (weights rounded to 4 decimals move it < 1 mm), m");
+                    "how far a follower's stress equilibrium may lie from its nominal point (weights rounded to 4 "
+                    "decimals move it < 1 mm), m");
       fields.Number("min_target_spacing_m", min_target_spacing_m, agents::FieldRule::NonNegative(),
-                    "every step of the plan must keep all targets this far apart and 0.1 m inside the arena (checked when the config loads), m");
+                    "every step of the plan must keep all targets this far apart and 0.1 m inside the arena (checked "
+                    "when the config loads), m");
       fields.Section("metrics", metrics, "the formation's metrics");
     }
     /// HRVO's defaults here: the formation keeps robots >= 0.3 m apart.

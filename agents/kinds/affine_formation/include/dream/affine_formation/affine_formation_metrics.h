@@ -24,7 +24,7 @@ struct AffineFormationMetricsParams {
   /// Obstacle ids (as the world numbers them: their order in the run config)
   /// that form a gate the formation passes through, two per pair.
   std::vector<std::array<int, 2>> obstacle_pairs;
-  int series_every_steps = 10;          ///< formation error series resolution, >= 1
+  int series_every_steps = 10;  ///< formation error series resolution, >= 1
   /// The Robotarium's collision check...
   double collision_diameter_m = robotarium::RobotariumConstants::kCollisionDiameterMeters;
   /// ...around the point this far ahead of the centre.
@@ -35,11 +35,15 @@ struct AffineFormationMetricsParams {
   /// The config keys of `metrics:` (kind affine_formation); `obstacle_pairs` is read by the builder.
   template <typename Fields>
   void ListFields(Fields& fields) {
-    fields.Number("tolerance_m", tolerance_m, agents::FieldRule::Positive(), "a follower within this of its target tracks it, m");
+    fields.Number("tolerance_m", tolerance_m, agents::FieldRule::Positive(),
+                  "a follower within this of its target tracks it, m");
     fields.Whole("converged_from_step", converged_from_step, agents::FieldRule::AtLeast(0),
                  "the convergence window starts here (worst follower error from here to the end)");
-    fields.Custom(kObstaclePairsKey, "`[[a, b], ...]`: obstacle ids (their order in `obstacles:`) forming a gate; clearance and passage per pair (none by default)");
-    fields.Whole("series_every_steps", series_every_steps, agents::FieldRule::AtLeast(1), "resolution of the `max_follower_error_m` series, steps");
+    fields.Custom(kObstaclePairsKey,
+                  "`[[a, b], ...]`: obstacle ids (their order in `obstacles:`) forming a gate; clearance and passage "
+                  "per pair (none by default)");
+    fields.Whole("series_every_steps", series_every_steps, agents::FieldRule::AtLeast(1),
+                 "resolution of the `max_follower_error_m` series, steps");
   }
   static constexpr const char* kObstaclePairsKey = "obstacle_pairs";
 };

@@ -14,9 +14,9 @@ namespace dream::affine_formation {
 /// Parameters of AffineLeaderRobot.
 struct AffineLeaderParams {
   Eigen::Vector2d nominal_m = Eigen::Vector2d::Zero();  ///< this leader's r_i
-  AffineManeuverParams maneuver;  ///< the plan every leader knows
-  double gain = 1.5;              ///< position feedback, 1/s; > 0
-  double max_speed_mps = 0.2;     ///< cap on the planar velocity; (0, 0.2]
+  AffineManeuverParams maneuver;                        ///< the plan every leader knows
+  double gain = 1.5;                                    ///< position feedback, 1/s; > 0
+  double max_speed_mps = 0.2;                           ///< cap on the planar velocity; (0, 0.2]
   /// Length of one step, s (turns per-step rates into m/s); > 0.
   double time_step_s = robotarium::RobotariumConstants::kTimeStepSeconds;
   /// Drive with ReversibleSiToUni (default) or the thesis's dxi_to_dxu.
@@ -28,7 +28,8 @@ struct AffineLeaderParams {
   /// The config keys of `leader:` (kind affine_formation).
   template <typename Fields>
   void ListFields(Fields& fields) {
-    fields.Number("gain", gain, agents::FieldRule::Positive(), "leaders' feedback gain on top of the target velocity, 1/s");
+    fields.Number("gain", gain, agents::FieldRule::Positive(),
+                  "leaders' feedback gain on top of the target velocity, 1/s");
     fields.Number("max_speed_mps", max_speed_mps, agents::FieldRule::RobotSpeed(), "leaders' speed cap, m/s");
   }
 };

@@ -12,16 +12,17 @@ namespace dream::go_to_goal {
 /// Parameters of GoToGoalRobot.
 struct GoToGoalParams {
   Eigen::Vector2d goal_m = Eigen::Vector2d::Zero();  ///< goal position, world frame
-  double gain = 0.8;                  ///< proportional gain, 1/s; must be positive
-  double max_speed_mps = 0.15;        ///< cap on the planar velocity; (0, 0.2]
-  double tolerance_m = 0.03;          ///< within this distance the robot stops and reports done; > 0
+  double gain = 0.8;                                 ///< proportional gain, 1/s; must be positive
+  double max_speed_mps = 0.15;                       ///< cap on the planar velocity; (0, 0.2]
+  double tolerance_m = 0.03;                         ///< within this distance the robot stops and reports done; > 0
 
   /// The config keys (`controller:` of kind go_to_goal), once for reading, checking and the docs.
   template <typename Fields>
   void ListFields(Fields& fields) {
     fields.Number("gain", gain, agents::FieldRule::Positive(), "proportional gain, 1/s");
     fields.Number("max_speed_mps", max_speed_mps, agents::FieldRule::RobotSpeed(), "cap on the planar velocity, m/s");
-    fields.Number("tolerance_m", tolerance_m, agents::FieldRule::Positive(), "within this distance the robot stops and reports done, m");
+    fields.Number("tolerance_m", tolerance_m, agents::FieldRule::Positive(),
+                  "within this distance the robot stops and reports done, m");
   }
   /// False with a message naming the field, its value and the allowed range.
   bool IsValid(std::string* error) const;

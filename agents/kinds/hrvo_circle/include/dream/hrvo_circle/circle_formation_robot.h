@@ -15,9 +15,9 @@ struct CircleFormationParams {
   /// This robot's point in each formation, in order (the thesis: its circle
   /// point, the diametrically opposite one, its circle point again).
   std::vector<Eigen::Vector2d> goals_m;
-  int num_robots = 10;          ///< robots taking part (size of the progress vector); >= 1
-  double tolerance_m = 0.05;    ///< a point counts as reached within this distance (the thesis's 0.05); > 0
-  double max_speed_mps = 0.2;   ///< preferred speed towards the point (the thesis's v_max); (0, 0.2]
+  int num_robots = 10;         ///< robots taking part (size of the progress vector); >= 1
+  double tolerance_m = 0.05;   ///< a point counts as reached within this distance (the thesis's 0.05); > 0
+  double max_speed_mps = 0.2;  ///< preferred speed towards the point (the thesis's v_max); (0, 0.2]
   /// Preferred speed = min(max_speed_mps, gain * distance to the point), 1/s; > 0.
   /// The thesis drove at max_speed_mps until within tolerance_m, which any
   /// gain >= max_speed_mps / tolerance_m (4/s) reproduces exactly. A robot
@@ -37,11 +37,18 @@ struct CircleFormationParams {
   /// The config keys (`controller:` of kind hrvo_circle), once for reading, checking and the docs.
   template <typename Fields>
   void ListFields(Fields& fields) {
-    fields.Number("tolerance_m", tolerance_m, agents::FieldRule::Positive(), "a point counts as reached within this distance (also the metrics' test), m");
-    fields.Number("max_speed_mps", max_speed_mps, agents::FieldRule::RobotSpeed(), "preferred speed towards the point (the thesis's `v_max`), m/s");
-    fields.Number("gain", gain, agents::FieldRule::Positive(), "preferred speed = min(`max_speed_mps`, `gain` x distance to the point), 1/s. 0.8 = 1/(e T) for the lab's loop delay T ~ 0.45 s (pose to motion): no overshoot while `gain` T <= 1/e. >= `max_speed_mps` / `tolerance_m` drives at full speed up to the tolerance (the thesis)");
+    fields.Number("tolerance_m", tolerance_m, agents::FieldRule::Positive(),
+                  "a point counts as reached within this distance (also the metrics' test), m");
+    fields.Number("max_speed_mps", max_speed_mps, agents::FieldRule::RobotSpeed(),
+                  "preferred speed towards the point (the thesis's `v_max`), m/s");
+    fields.Number("gain", gain, agents::FieldRule::Positive(),
+                  "preferred speed = min(`max_speed_mps`, `gain` x distance to the point), 1/s. 0.8 = 1/(e T) for the "
+                  "lab's loop delay T ~ 0.45 s (pose to motion): no overshoot while `gain` T <= 1/e. >= "
+                  "`max_speed_mps` / `tolerance_m` drives at full speed up to the tolerance (the thesis)");
     fields.Number("stop_m", stop_m, agents::FieldRule::Finite(),
-                  "a robot that reached its point (within `tolerance_m`) drives on until within `stop_m`, then holds until pushed out of `tolerance_m`; done only from `stop_m` on, so it settles inside the line the goal is judged by, m, > 0 and <= `tolerance_m`");
+                  "a robot that reached its point (within `tolerance_m`) drives on until within `stop_m`, then holds "
+                  "until pushed out of `tolerance_m`; done only from `stop_m` on, so it settles inside the line the "
+                  "goal is judged by, m, > 0 and <= `tolerance_m`");
   }
   /// False with a message naming the field, its value and the allowed range.
   bool IsValid(std::string* error) const;

@@ -32,7 +32,8 @@ class HrvoCircleBuilder final : public kind_api::ExperimentBuilder {
     agents::HrvoRobotParams hrvo;
     template <typename Fields>
     void ListFields(Fields& fields) {
-      fields.Number("radius_m", radius_m, agents::FieldRule::Positive(), "circle radius (Appendix B), m; every point must lie 0.1 m inside the arena");
+      fields.Number("radius_m", radius_m, agents::FieldRule::Positive(),
+                    "circle radius (Appendix B), m; every point must lie 0.1 m inside the arena");
       fields.Point("center", center, "circle centre `[x, y]`, m");
       fields.Whole("formations", formations, agents::FieldRule::Within(1, 100),
                    "how many formations in turn (circle, opposite, circle, ...)");

@@ -46,10 +46,12 @@ struct LineDeploymentParams {
   /// The config keys (`controller:` of kind line_deployment), once for reading, checking and the docs.
   template <typename Fields>
   void ListFields(Fields& fields) {
-    fields.Number("spacing_m", spacing_m, agents::FieldRule::Positive(), "d of eq. 3.7: spacing between consecutive ids, m (6 robots then span 2 m)");
+    fields.Number("spacing_m", spacing_m, agents::FieldRule::Positive(),
+                  "d of eq. 3.7: spacing between consecutive ids, m (6 robots then span 2 m)");
     fields.Number("gain", gain, agents::FieldRule::Positive(), "preferred velocity = gain x (target - position), 1/s");
     fields.Number("max_speed_mps", max_speed_mps, agents::FieldRule::RobotSpeed(), "cap on the preferred speed, m/s");
-    fields.Number("tolerance_m", tolerance_m, agents::FieldRule::Positive(), "a moving robot stops this close to its target, m ...");
+    fields.Number("tolerance_m", tolerance_m, agents::FieldRule::Positive(),
+                  "a moving robot stops this close to its target, m ...");
     fields.Number("resume_m", resume_m, agents::FieldRule::Finite(),
                   "... and a still one moves again when its target is farther than this, m, >= `tolerance_m`");
     fields.Number("hold_avoid_range_m", hold_avoid_range_m, agents::FieldRule::NonNegative(),

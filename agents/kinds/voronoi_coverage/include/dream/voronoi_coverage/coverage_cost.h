@@ -23,7 +23,8 @@ class CoverageCost {
   CoverageCost(const Eigen::Vector2d& arena_min_m, const Eigen::Vector2d& arena_max_m);
 
   /// Robots at the same position count once (they cover the same points).
-  double Evaluate(const std::vector<Eigen::Vector2d>& positions_m, const std::vector<agents::ObstacleView>& obstacles) const;
+  double Evaluate(const std::vector<Eigen::Vector2d>& positions_m,
+                  const std::vector<agents::ObstacleView>& obstacles) const;
 
  private:
   Eigen::Vector2d arena_min_m_;

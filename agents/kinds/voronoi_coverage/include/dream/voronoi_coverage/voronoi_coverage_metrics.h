@@ -17,11 +17,11 @@ namespace dream::voronoi_coverage {
 struct VoronoiCoverageMetricsParams {
   Eigen::Vector2d arena_min_m = agents::RobotariumArenaMin();  ///< the region to cover (minus obstacles)
   Eigen::Vector2d arena_max_m = agents::RobotariumArenaMax();
-  int sample_steps = 10;          ///< the cost series keeps every this many steps; >= 1
+  int sample_steps = 10;  ///< the cost series keeps every this many steps; >= 1
   /// Time per step, to turn pose changes into speeds; > 0.
   double step_s = robotarium::RobotariumConstants::kTimeStepSeconds;
-  double still_speed_mps = 0.005; ///< a robot slower than this is still; > 0
-  int still_window_steps = 30;    ///< robots have settled once all were still this many steps; >= 1
+  double still_speed_mps = 0.005;  ///< a robot slower than this is still; > 0
+  int still_window_steps = 30;     ///< robots have settled once all were still this many steps; >= 1
   /// Robotarium: the collision disc sits this far ahead of the centre.
   double collision_offset_m = robotarium::RobotariumConstants::kCollisionOffsetMeters;
   /// Robotarium: half the collision distance.
@@ -30,8 +30,10 @@ struct VoronoiCoverageMetricsParams {
   /// The config keys of the coverage metrics (in `controller:` of kind voronoi_coverage).
   template <typename Fields>
   void ListFields(Fields& fields) {
-    fields.Whole("coverage_sample_steps", sample_steps, agents::FieldRule::AtLeast(1), "the metrics' cost series keeps every this many steps");
-    fields.Number("still_speed_mps", still_speed_mps, agents::FieldRule::Positive(), "metrics: a robot slower than this is still, m/s");
+    fields.Whole("coverage_sample_steps", sample_steps, agents::FieldRule::AtLeast(1),
+                 "the metrics' cost series keeps every this many steps");
+    fields.Number("still_speed_mps", still_speed_mps, agents::FieldRule::Positive(),
+                  "metrics: a robot slower than this is still, m/s");
     fields.Whole("still_window_steps", still_window_steps, agents::FieldRule::AtLeast(1),
                  "metrics: settled once every robot was still this long, steps");
   }

@@ -21,16 +21,19 @@ struct VoronoiCoverageParams {
   double max_speed_mps = 0.15;  ///< cap on the planar velocity, also assumed of neighbours; (0, 0.2]
   double tolerance_m = 0.03;    ///< at the centroid within this distance the robot holds still (thesis: 0.02-0.05); > 0
   double step_s = robotarium::RobotariumConstants::kTimeStepSeconds;  ///< the world's time step; > 0
-  int done_after_still_steps = 30;    ///< done after this many consecutive updates holding still; >= 1
-  int radio_rounds_before_moving = 2; ///< hold still until the radio ran this often (it has heard its neighbours); >= 0
+  int done_after_still_steps = 30;  ///< done after this many consecutive updates holding still; >= 1
+  int radio_rounds_before_moving =
+      2;  ///< hold still until the radio ran this often (it has heard its neighbours); >= 0
 
   /// The config keys (`controller:` of kind voronoi_coverage, with the cell's).
   template <typename Fields>
   void ListFields(Fields& fields) {
     cell.ListFields(fields);
     fields.Number("gain", gain, agents::FieldRule::Positive(), "proportional gain towards the goal, 1/s");
-    fields.Number("max_speed_mps", max_speed_mps, agents::FieldRule::RobotSpeed(), "cap on the planar velocity, also assumed of neighbours, m/s");
-    fields.Number("tolerance_m", tolerance_m, agents::FieldRule::Positive(), "within this distance of its goal a robot holds still (thesis: 0.02-0.05), m");
+    fields.Number("max_speed_mps", max_speed_mps, agents::FieldRule::RobotSpeed(),
+                  "cap on the planar velocity, also assumed of neighbours, m/s");
+    fields.Number("tolerance_m", tolerance_m, agents::FieldRule::Positive(),
+                  "within this distance of its goal a robot holds still (thesis: 0.02-0.05), m");
     fields.Whole("done_after_still_steps", done_after_still_steps, agents::FieldRule::AtLeast(1),
                  "a robot reports done after holding still this many updates");
     fields.Whole("radio_rounds_before_moving", radio_rounds_before_moving, agents::FieldRule::AtLeast(0),
@@ -86,8 +89,8 @@ class VoronoiCoverageRobot final : public agents::Robot {
   /// The forward speed closest to `v_mps` (towards zero) with which one step
   /// of `step_s` from `position` along `heading_rad` keeps every constraint,
   /// or does not worsen one already violated. Always allows 0.
-  static double SafeSpeed(double v_mps, const std::vector<agents::HalfPlane>& constraints, const Eigen::Vector2d& position_m,
-                          double heading_rad, double step_s);
+  static double SafeSpeed(double v_mps, const std::vector<agents::HalfPlane>& constraints,
+                          const Eigen::Vector2d& position_m, double heading_rad, double step_s);
   /// The forward speed closest to `v_mps` (towards zero) with which one step
   /// does not take the robot farther from `centroid_m`: what keeps every
   /// robot's share of the coverage cost from rising. Always allows 0.
