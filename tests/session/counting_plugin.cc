@@ -1,7 +1,9 @@
 // A controller plugin for run_session_test: kind `session_test_drive`, every
 // robot driving straight ahead at speed_mps (0: holding still), whose builder
 // counts how often it is built, that is how many ControllerFactory objects
-// were made for a config naming it (session_test_factories_built()).
+// were made for a config naming it (session_test_factories_built()), and how
+// many robots it made, that is how many agents were started
+// (session_test_robots_made()).
 #include <memory>
 #include <vector>
 
@@ -10,6 +12,7 @@
 namespace {
 
 int factories_built = 0;
+int robots_made = 0;
 
 class DriveRobot final : public dream::agents::Robot {
  public:
@@ -29,6 +32,7 @@ class DriveBuilder final : public dream::kind_api::ExperimentBuilder {
     ++factories_built;
   }
   std::unique_ptr<dream::agents::Robot> MakeRobot(int id, const dream::agents::RobotParams& params) const override {
+    ++robots_made;
     return std::make_unique<DriveRobot>(id, params, speed_mps_);
   }
 
@@ -39,5 +43,6 @@ class DriveBuilder final : public dream::kind_api::ExperimentBuilder {
 }  // namespace
 
 DREAM_PLUGIN_EXPORT int session_test_factories_built() { return factories_built; }
+DREAM_PLUGIN_EXPORT int session_test_robots_made() { return robots_made; }
 
 DREAM_REGISTER_CONTROLLER(DriveBuilder)

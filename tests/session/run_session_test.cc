@@ -61,6 +61,16 @@ class RunSessionTest : public ::testing::Test {
     return built;
   }
 
+  // How many robots (agents) the plugin's kind made, in this whole process.
+  static int RobotsMade() {
+    void* plugin = dlopen(SESSION_TEST_PLUGIN_PATH, RTLD_NOW | RTLD_NOLOAD);
+    if (plugin == nullptr) return 0;  // not loaded: none made
+    const auto count = reinterpret_cast<int (*)()>(dlsym(plugin, "session_test_robots_made"));
+    const int made = count != nullptr ? count() : -1;
+    dlclose(plugin);
+    return made;
+  }
+
   // Runs `session` with every robot's agent on the same memq bus (as dream run).
   RunResult RunWithAgents(RunSession& session) {
     lcm::LcmBus bus("memq://");
@@ -106,6 +116,32 @@ TEST_F(RunSessionTest, AFolderRemovedAndMadeAgainDuringTheRunIsLeftToTheNewerRun
   EXPECT_EQ(files::ReadFileText(out() + "/summary.json"), "the newer run's summary");
   EXPECT_FALSE(fs::exists(out() + "/run.lcmlog"));
   EXPECT_FALSE(fs::exists(out() + "/trajectories.png"));
+}
+
+TEST_F(RunSessionTest, RunWithAgentsStartsTheAgentsOnceAndARefusedRunStartsNone) {
+  RunSession::Options options;
+  options.report = &report_;
+  RunSession refused(run_config::LoadRunConfigFile(WriteConfig(0.0, 1.0, 5)), options);
+  ASSERT_NE(refused.factory(), nullptr) << refused.factory_error();
+  RunSession::GivenWorld no_world;
+  no_world.make = [](node::RunRecorder&) -> std::unique_ptr<world::World> {
+    throw std::runtime_error("the lab's poses cannot be read");
+  };
+  const int made_before = RobotsMade();
+  lcm::LcmBus bus("memq://");
+  EXPECT_THROW(refused.RunWithAgents(bus, {out(), "the folder's config\n"}, no_world), std::runtime_error);
+  EXPECT_EQ(RobotsMade(), made_before) << "agents were started for a run refused before its first step";
+
+  RunSession session(run_config::LoadRunConfigFile(WriteConfig(0.0, 1.0, 5)), options);
+  const std::string second_out = (dir_ / "out2").string();
+  fs::create_directories(second_out);
+  lcm::LcmBus second_bus("memq://");
+  const RunResult result = session.RunWithAgents(second_bus, {second_out, "the folder's config\n"});
+  EXPECT_EQ(result.outcome.end, node::RunOutcome::End::kFinished) << result.outcome.reason;
+  EXPECT_EQ(RobotsMade() - made_before, 2) << "one agent per robot, started once";
+  // A session runs once: a second run is refused before any agent starts.
+  EXPECT_THROW(session.RunWithAgents(second_bus, {second_out, "the folder's config\n"}), std::logic_error);
+  EXPECT_EQ(RobotsMade() - made_before, 2);
 }
 
 TEST_F(RunSessionTest, WritesEveryOutputAndBuildsTheFactoryOnce) {

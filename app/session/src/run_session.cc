@@ -66,12 +66,23 @@ RunResult RunSession::RunWithAgents(lcm::LcmBus& bus, const Folder& folder) {
 }
 
 RunResult RunSession::RunWithAgents(lcm::LcmBus& bus, const Folder& folder, const GivenWorld& world) {
-  std::vector<int> ids(static_cast<size_t>(config_.num_robots));
-  std::iota(ids.begin(), ids.end(), 0);
-  // Hosted before the world starts and until its last status: they answer step 0.
-  const hosting::HostedAgents agents(bus, config_, ids, factory_.get(),
-                                     {config_.sim.agent_timeout_s, config_.sim.start_timeout_s, 0.0});
-  return Run(bus, folder, world);
+  std::unique_ptr<hosting::HostedAgents> agents;  // until the run is reported
+  GivenWorld hosted = world;
+  // The agents are started once, when every check of the run has passed (the
+  // session's one run, its folder, the world made): a refused run starts
+  // none. Hosted before the world's first step and until its last status:
+  // they answer step 0.
+  hosted.make = [&](node::RunRecorder& recorder) {
+    std::unique_ptr<world::World> made = world.make(recorder);
+    if (made == nullptr) return made;  // Step refuses it
+    std::vector<int> ids(static_cast<size_t>(config_.num_robots));
+    std::iota(ids.begin(), ids.end(), 0);
+    agents = std::make_unique<hosting::HostedAgents>(
+        bus, config_, ids, factory_.get(),
+        python_host::PythonHostProcess::Limits{config_.sim.agent_timeout_s, config_.sim.start_timeout_s, 0.0});
+    return made;
+  };
+  return Run(bus, folder, hosted);
 }
 
 RunSession::GivenWorld RunSession::OwnWorld() {

@@ -95,7 +95,9 @@ class RunSession {
   /// The same with every robot's agent hosted on `bus` for the run
   /// (hosting::HostedAgents, in the runtime the kind says: dream run,
   /// lab-replay with its agents, export --calibration), built with this
-  /// session's factory and bounded by the config's world time-outs.
+  /// session's factory and bounded by the config's world time-outs. They
+  /// are started once, after every check of the run (a second run of the
+  /// session, the folder's files, the world made): a refused run starts none.
   RunResult RunWithAgents(lcm::LcmBus& bus, const Folder& folder);
   RunResult RunWithAgents(lcm::LcmBus& bus, const Folder& folder, const GivenWorld& world);
 
