@@ -1,28 +1,22 @@
 // dream export / import / lab-replay / compare / check-submission: the bridge
-// to the Robotarium (docs/robotarium.md). The work is in dream::workflows and
-// dream::bridge; this file is options, messages and exit codes.
+// to the Robotarium (docs/robotarium.md). The work is in dream::workflows;
+// this file is options, messages and exit codes.
 #include <spdlog/spdlog.h>
 
 #include <csignal>
-#include <filesystem>
+#include <cstdlib>
 #include <iostream>
 
-#include "dream/session/run_exit_code.h"
 #include "command_line.h"
 #include "commands.h"
-#include "run_output.h"
-#include "dream/bridge/lab_import.h"
-#include "dream/workflows/calibration_export_workflow.h"
+#include "dream/files/run_folder_choice.h"
+#include "dream/process/data_files.h"
+#include "dream/process/process_group.h"
 #include "dream/workflows/check_submission.h"
+#include "dream/workflows/compare_workflow.h"
 #include "dream/workflows/export_workflow.h"
 #include "dream/workflows/import_workflow.h"
 #include "dream/workflows/lab_replay_workflow.h"
-#include "dream/bridge/run_comparison.h"
-#include "dream/bridge/submission_exporter.h"
-#include "dream/bridge/submission_format.h"
-#include "dream/process/data_files.h"
-#include "dream/process/process_group.h"
-#include "dream/files/run_folder_choice.h"
 #include "shared_options.h"
 
 #ifndef DREAM_DEFAULT_PYTHON
@@ -32,102 +26,45 @@
 namespace dream::cli {
 namespace {
 
-namespace fs = std::filesystem;
+struct CheckSubmissionArgs {
+  workflows::CheckSubmission::Options options;  ///< as typed; RunCheckSubmission adds the runner and runtime
+  std::string python;                           ///< empty: the configured Python (/usr/bin/python3)
+};
 
-/// dream export --calibration --robots N: the flags that do not go with it
-/// refused, then the workflow (CalibrationExportWorkflow).
-int RunCalibrationExport(const ExportArgs& args, const bridge::ExportOptions& options) {
-  if (!args.config_path.empty()) {
-    throw std::runtime_error("--config " + args.config_path +
-                             ": --calibration writes its own config; leave --config out");
-  }
-  if (!args.strategy.empty() && args.strategy != bridge::StrategyName(bridge::Strategy::kReplay)) {
-    throw std::runtime_error("--strategy " + args.strategy +
-                             ": --calibration exports the program's commands open "
-                             "loop (replay), which is what calibrate fits; leave --strategy out");
-  }
-  if (args.barriers) {
-    throw std::runtime_error(
-        "--barriers: would change the program's commands where robots come close; "
-        "--calibration sends them unchanged (its robots never come close)");
-  }
-  workflows::CalibrationExportWorkflow::Options calibration;
-  calibration.robots = args.robots;
-  calibration.out_dir = args.out_dir;
-  calibration.run_dir = args.run_dir;
-  calibration.export_options = options;
-  calibration.stop = &StopFlag();
-  return workflows::CalibrationExportWorkflow().Export(calibration).exit_code;
+/// What the workflows that run or judge a run take from this program: the
+/// Python runtime beside it (a Python controller's metrics and goal) and the
+/// stop flag Ctrl-C sets.
+template <typename Options>
+Options WithRuntime(Options options) {
+  options.python_runtime_dir = process::DataFiles::PythonRuntimeDir();
+  options.stop = &StopFlag();
+  return options;
 }
 
-}  // namespace
-
-int RunExport(const ExportArgs& args) {
-  bridge::ExportOptions options;
-  options.barriers = args.barriers;
-  options.settle_max_steps = args.settle_steps;
-  options.force = args.force;
-  options.python_runtime_dir = process::DataFiles::PythonRuntimeDir();
-  if (args.calibration) return RunCalibrationExport(args, options);
-  if (args.robots != 0) {
-    throw std::runtime_error("--robots " + std::to_string(args.robots) +
-                             ": goes with --calibration (an exported run has its config's robots)");
-  }
-  if (args.run_dir.empty()) {
-    throw std::runtime_error("pass the run folder to export (dream export RUN), or --calibration --robots N");
-  }
-  options.strategy = bridge::ParseStrategy(args.strategy.empty() ? "track" : args.strategy);
-  const workflows::ExportWorkflow::Result result =
-      workflows::ExportWorkflow().Export({args.run_dir, args.out_dir, args.config_path, options});
-  if (result.refused) {
-    std::cerr << "dream export: " << result.refusal << "\nnothing was written.\n";
-    return kExitRejected;
-  }
-  return kExitOk;
+int RunExport(const workflows::ExportWorkflow::Asked& asked) {
+  std::string refusal;
+  const int code = workflows::ExportWorkflow().ExportAsAsked(WithRuntime(asked), &refusal);
+  if (!refusal.empty()) std::cerr << "dream export: " << refusal << "\nnothing was written.\n";
+  return code;
 }
 
-int RunImport(const ImportArgs& args) {
-  const bridge::ExportedSubmission exported = bridge::ExportedSubmission::Read(args.export_dir);
-  workflows::ImportWorkflow::Options options;
-  options.result = args.result;
-  options.export_dir = args.export_dir;
-  options.out_dir =
-      files::RunFolderChoice(args.out_dir, "runs/" + exported.config.name + "_lab", args.overwrite,
-                             files::RunFolderChoice::Create::kLater)  // a refused result must leave no folder
-          .dir();
-  // What was declared on the lab's form: UPLOAD.txt's values unless told otherwise.
-  options.declared = workflows::ImportWorkflow::Declared(exported, args.declared_robots, args.declared_duration_s);
-  options.python_runtime_dir = process::DataFiles::PythonRuntimeDir();
+int RunImport(workflows::ImportWorkflow::Asked asked) {
+  asked.python_runtime_dir = process::DataFiles::PythonRuntimeDir();
+  const workflows::ImportWorkflow::Options options = workflows::ImportWorkflow::OptionsOf(asked);
   const workflows::ImportWorkflow importer;
   const workflows::ImportWorkflow::Result imported = importer.Import(options);
   importer.PrintVerdict(imported);
-  // As dream run's exit codes; a run the lab cut short did not finish.
-  if (!imported.imported.lab.complete || !imported.report.summary_written || imported.report.picture_failed) {
-    return kExitRunFailed;
-  }
-  return session::ExitCodeOf(imported.verdict());
+  return workflows::ImportWorkflow::ExitCodeOf(imported);
 }
 
-int RunCompare(const CompareArgs& args) {
-  const std::string out_dir = args.out_dir.empty() ? args.second_dir : args.out_dir;
-  const bridge::RunComparison comparison =
-      bridge::CompareRunsAndWrite(args.first_dir, args.second_dir, out_dir, process::DataFiles::PythonRuntimeDir());
-  std::cout << comparison.Text() << "\nwritten: " << out_dir << "/comparison.json, " << out_dir << "/comparison.png\n";
+int RunCompare(workflows::CompareWorkflow::Options options) {
+  options.python_runtime_dir = process::DataFiles::PythonRuntimeDir();
+  workflows::CompareWorkflow().Compare(options);
   return kExitOk;
 }
 
-int RunLabReplay(const LabReplayArgs& args) {
-  workflows::LabReplayWorkflow::Options options;
-  options.lab_dir = args.lab_dir;
-  options.out_dir = args.out_dir;
-  options.overwrite = args.overwrite;
-  options.lcm_url = args.lcm_url;
-  options.steps = args.steps;
-  options.mode = args.mode;
-  options.world_only = args.world_only;
-  options.python_runtime_dir = process::DataFiles::PythonRuntimeDir();
-  options.stop = &StopFlag();
-  return workflows::LabReplayWorkflow().Replay(options).exit_code;
+int RunLabReplay(const workflows::LabReplayWorkflow::Options& options) {
+  return workflows::LabReplayWorkflow().Replay(WithRuntime(options)).exit_code;
 }
 
 /// What check-submission starts: the runner in its own process group
@@ -149,20 +86,10 @@ workflows::CheckSubmission::Tools CheckSubmissionTools() {
 }
 
 int RunCheckSubmission(const CheckSubmissionArgs& args) {
-  workflows::CheckSubmission::Options options;
-  options.export_dir = args.export_dir;
-  options.out_dir = args.out_dir;
-  options.overwrite = args.overwrite;
-  options.run_dir = args.run_dir;
-  options.simulator = args.simulator;
+  workflows::CheckSubmission::Options options = WithRuntime(args.options);
   if (const char* env = std::getenv("ROBOTARIUM_PYTHON_SIMULATOR")) options.simulator_from_environment = env;
   options.python = args.python.empty() ? DREAM_DEFAULT_PYTHON : args.python;
   options.runner_script = process::DataFiles::BridgePythonDir() + "/run_submission.py";
-  options.standin = args.standin;
-  options.require_official = args.require_official;
-  options.skip_initialization = args.skip_initialization;
-  options.python_runtime_dir = process::DataFiles::PythonRuntimeDir();
-  options.stop = &StopFlag();
   const workflows::CheckSubmission::Result result = workflows::CheckSubmission(options, CheckSubmissionTools()).Run();
   using Outcome = workflows::CheckSubmission::Outcome;
   if (!result.error.empty()) std::cerr << "dream check-submission: " << result.error << "\n";
@@ -187,10 +114,8 @@ int RunCheckSubmission(const CheckSubmissionArgs& args) {
   return kExitRunFailed;
 }
 
-namespace {
-
 void DeclareExportCommand(CommandLine& line) {
-  const auto [export_command, export_args] = line.AddCommand<ExportArgs>(
+  const auto [export_command, export_args] = line.AddCommand<workflows::ExportWorkflow::Asked>(
       "export",
       "Turn a recorded run into a Robotarium submission (a main script plus .npy data, and for\n"
       "--strategy controller the Python controller and DREAM's runtime), after checking it as the\n"
@@ -210,7 +135,7 @@ void DeclareExportCommand(CommandLine& line) {
                    "track: recorded commands plus feedback on the pose error; replay: open loop;\n"
                    "controller: the run's Python controller itself, every step on the lab's poses\n"
                    "(default track; --calibration: replay)")
-      ->check(CLI::IsMember(bridge::StrategyNames()));
+      ->check(CLI::IsMember(workflows::ExportWorkflow::StrategyNames()));
   export_command->add_flag("--calibration", export_args->calibration,
                            "Run the calibration drive (config/calibration.yaml's program) on --robots robots in the\n"
                            "ideal simulator, then export it open loop (replay); the lab's result, imported, is what\n"
@@ -230,7 +155,7 @@ void DeclareExportCommand(CommandLine& line) {
 }
 
 void DeclareImportCommand(CommandLine& line) {
-  const auto [import_command, import_args] = line.AddCommand<ImportArgs>(
+  const auto [import_command, import_args] = line.AddCommand<workflows::ImportWorkflow::Asked>(
       "import",
       "Turn what the lab returned (dream_result.npy, or dream_result.mat from MATLAB) into a run\n"
       "folder like dream run writes: run.lcmlog, summary.json, trajectories.png. Its verdict holds the\n"
@@ -256,7 +181,7 @@ void DeclareImportCommand(CommandLine& line) {
 }
 
 void DeclareLabReplayCommand(CommandLine& line) {
-  const auto [replay_command, replay_args] = line.AddCommand<LabReplayArgs>(
+  const auto [replay_command, replay_args] = line.AddCommand<workflows::LabReplayWorkflow::Options>(
       "lab-replay",
       "Run a lab run (from dream import) as the world on the bus: the agents get the lab's poses\n"
       "and their commands are recorded beside the lab's. Agents run in this process (memq://)\n"
@@ -275,7 +200,7 @@ void DeclareLabReplayCommand(CommandLine& line) {
 }
 
 void DeclareCompareCommand(CommandLine& line) {
-  const auto [compare_command, compare_args] = line.AddCommand<CompareArgs>(
+  const auto [compare_command, compare_args] = line.AddCommand<workflows::CompareWorkflow::Options>(
       "compare",
       "Compare a simulated run with its lab run: tracking error per robot, closest approach,\n"
       "violations and the experiment's metrics side by side; writes comparison.json and .png.\n"
@@ -293,17 +218,18 @@ void DeclareCheckSubmissionCommand(CommandLine& line) {
       "not installed, DREAM's stand-in), import what it saved and compare it with the run.\n"
       "Example: dream check-submission exports/go_to_goal --out runs/go_to_goal_check",
       RunCheckSubmission);
-  check_command->add_option("export", check_args->export_dir, "The folder dream export wrote")->required();
-  AddRunFolderOptions(check_command, &check_args->out_dir, &check_args->overwrite, "runs/<name>_check");
-  check_command->add_option("--run", check_args->run_dir,
+  check_command->add_option("export", check_args->options.export_dir, "The folder dream export wrote")->required();
+  AddRunFolderOptions(check_command, &check_args->options.out_dir, &check_args->options.overwrite, "runs/<name>_check");
+  check_command->add_option("--run", check_args->options.run_dir,
                             "The simulated run to compare with (default: the exported one)");
-  check_command->add_option("--simulator", check_args->simulator,
+  check_command->add_option("--simulator", check_args->options.simulator,
                             "robotarium_python_simulator checkout (default $ROBOTARIUM_PYTHON_SIMULATOR)");
   check_command->add_option("--python", check_args->python, "Python with numpy (and what the simulator needs)");
-  check_command->add_flag("--standin", check_args->standin, "Use DREAM's stand-in even if the official one is there");
-  check_command->add_flag("--require-official", check_args->require_official,
+  check_command->add_flag("--standin", check_args->options.standin,
+                          "Use DREAM's stand-in even if the official one is there");
+  check_command->add_flag("--require-official", check_args->options.require_official,
                           "Fail (exit 1) instead of using the stand-in when the official simulator is missing");
-  check_command->add_flag("--skip-initialization", check_args->skip_initialization,
+  check_command->add_flag("--skip-initialization", check_args->options.skip_initialization,
                           "Start exactly at the start poses (no start-up drive)");
 }
 

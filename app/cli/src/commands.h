@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "dream/session/exit_code.h"
+#include "dream/workflows/run_options.h"
 
 namespace dream::cli {
 
@@ -32,26 +33,8 @@ void InstallStopSignals();
 /// with `dream-agent ...`, found next to `dream`. Returns only on failure.
 int ExecAgentBinary(int argc, char** argv);
 
-struct RunArgs {
-  std::string config_path;
-  std::string out_dir;            ///< empty: runs/<name>, or runs/<name>_2, ... when that holds a run
-  bool overwrite = false;         ///< replace a run already in the output folder
-  long long seed = -1;            ///< --seed; < 0: the config's
-  std::vector<std::string> sets;  ///< --set KEY=VALUE each, applied in order
-  std::string lcm_url;            ///< empty: memq:// for run, else LCM_DEFAULT_URL
-  long long steps = 0;            ///< 0: the config's
-  std::string mode;               ///< empty: the config's
-  bool all_steps = false;         ///< run every step even when all robots report done
-  double pace =
-      -1.0;  ///< --pace: simulated seconds per wall second; 0: unpaced; < 0 (not given): unpaced, 1 with --view
-  bool view = false;                    ///< dream run --view: serve the live arena (dream view) while it runs
-  int view_port = 8077;                 ///< --view-port
-  std::string view_bind = "127.0.0.1";  ///< --view-bind
-  int view_fps = 0;        ///< --view-fps: frames a second to the page at most; 0: 30, or 10 while the run is fast
-  bool view_wait = false;  ///< --view-wait: no step 0 before a browser has the page open
-  double view_wait_timeout_s = 0.0;   ///< --view-wait-timeout: start anyway after this long; 0: wait until Ctrl-C
-  std::string view_keep = "watched";  ///< --view-keep: how long the replay is served after the run (RunView::Keep)
-};
+/// What run, sim and launch are asked (and sweep of its base config).
+using RunArgs = workflows::RunOptions;
 
 struct AgentArgs {
   std::string config_path;
@@ -108,60 +91,6 @@ int RunReplay(const ReplayArgs& args);
 
 // --- the bridge to the Robotarium (bridge_commands.cc, docs/robotarium.md) ---
 
-struct ExportArgs {
-  std::string run_dir;       ///< a folder written by dream run (--calibration: the run folder to write)
-  std::string out_dir;       ///< empty: exports/<name>
-  std::string config_path;   ///< empty: <run_dir>/config.yaml
-  std::string strategy;      ///< empty: track (--calibration: replay)
-  bool calibration = false;  ///< run the calibration drive on `robots` robots, then export it
-  int robots = 0;            ///< --robots, with --calibration only; 0: not given
-  bool barriers = false;
-  int settle_steps = 240;
-  bool force = false;  ///< export although robots were lost
-};
-
-struct ImportArgs {
-  std::string result;  ///< dream_result.npy / .mat, or a folder holding one
-  std::string export_dir;
-  std::string out_dir;               ///< empty: runs/<name>_lab (or _2, ... when that holds a run)
-  bool overwrite = false;            ///< replace a run already in the output folder
-  int declared_robots = 0;           ///< declared on the lab's form; 0: the export's (UPLOAD.txt)
-  double declared_duration_s = 0.0;  ///< declared on the lab's form; 0: the export's (UPLOAD.txt)
-};
-
-struct LabReplayArgs {
-  std::string lab_dir;      ///< a folder written by dream import
-  std::string out_dir;      ///< empty: runs/<name>_lab_replay (or _2, ... when that holds a run)
-  bool overwrite = false;   ///< replace a run already in the output folder
-  std::string lcm_url;      ///< empty: memq:// with in-process agents, else LCM_DEFAULT_URL
-  long long steps = 0;      ///< 0: the whole lab run
-  std::string mode;         ///< empty: the config's
-  bool world_only = false;  ///< no in-process agents: they run elsewhere (dream agent)
-};
-
-struct CompareArgs {
-  std::string first_dir;   ///< the simulated run
-  std::string second_dir;  ///< the lab run
-  std::string out_dir;     ///< empty: second_dir
-};
-
-struct CheckSubmissionArgs {
-  std::string export_dir;
-  std::string out_dir;    ///< empty: runs/<name>_check
-  std::string run_dir;    ///< the simulated run to compare with; empty: the export's source run
-  std::string simulator;  ///< a robotarium_python_simulator checkout; empty: $ROBOTARIUM_PYTHON_SIMULATOR
-  std::string python;     ///< empty: the configured Python (/usr/bin/python3)
-  bool standin = false;   ///< use the stand-in even when the official simulator is there
-  bool require_official = false;
-  bool skip_initialization = false;
-  bool overwrite = false;  ///< replace a run (an earlier check) already in the output folder
-};
-
-int RunExport(const ExportArgs& args);
-int RunImport(const ImportArgs& args);
-int RunLabReplay(const LabReplayArgs& args);
-int RunCompare(const CompareArgs& args);
-int RunCheckSubmission(const CheckSubmissionArgs& args);
 /// dream export, import, lab-replay, compare and check-submission, in that order.
 void DeclareCalibrateCommand(CommandLine& line);
 void DeclareBridgeCommands(CommandLine& line);
@@ -192,25 +121,9 @@ void DeclareSweepCommand(CommandLine& line);
 
 // --- pictures and videos (render_command.cc, docs/rendering.md) ---
 
-struct RenderArgs {
-  std::string input;        ///< a run folder (its run.lcmlog) or an .lcmlog file
-  std::string out;          ///< .png/.svg/.mp4/.gif; empty: beside the log (trajectories.svg, run.mp4, metrics.png)
-  std::string config_path;  ///< empty: config.yaml beside the log, when there
-  bool video = false;       ///< no --out: write run.mp4
-  bool plot = false;        ///< metric plots instead of the arena
-  std::vector<std::string> metrics;  ///< --metric NAME: plot only these series (implies plot)
-  bool radio_links = false;
-  bool sensor_ranges = false;
-  int width_px = 0;       ///< 0: 1280 pictures, 1000 plots, 720 MP4, 480 GIF
-  double fps = 0;         ///< 0: 30 MP4, 15 GIF
-  double speed = 4.0;     ///< simulated seconds per video second
-  double trail_s = 10.0;  ///< simulated seconds of trail behind each robot
-};
-
-/// Draws a recorded run: the arena picture (.png/.svg), a video (.mp4/.gif,
-/// through ffmpeg) or its metrics over time (--plot). Exit 0, 1 for bad
-/// input (nothing written), 2 usage, 130 interrupted.
-int RunRender(const RenderArgs& args);
+/// Draws a recorded run (workflows::RenderWorkflow): the arena picture
+/// (.png/.svg), a video (.mp4/.gif, through ffmpeg) or its metrics over time
+/// (--plot). Exit 0, 1 for bad input (nothing written), 2 usage, 130 interrupted.
 void DeclareRenderCommand(CommandLine& line);
 
 /// Parses "all", "3", "0,2,5", "0-4" into sorted unique ids < num_robots.

@@ -1,61 +1,17 @@
-#include <filesystem>
-#include <nlohmann/json.hpp>
+// dream log info / diff / echo: what a log holds, two logs compared, its
+// messages as JSON. The work is dream::run_log's (through
+// workflows::LogWorkflow); this file is options and exit codes.
 #include <iostream>
-#include <map>
-#include <memory>
 #include <regex>
 #include <stdexcept>
 
-#include <spdlog/fmt/fmt.h>
-
 #include "command_line.h"
 #include "commands.h"
-#include "dream/lcm/channels.h"
-#include "dream/lcm/log_reader.h"
-#include "dream/lcm/run_id.h"
-#include "dream/files/json_text.h"
-#include "message_difference.h"
-#include "message_json.h"
+#include "dream/workflows/log_workflow.h"
 #include "shared_options.h"
 
 namespace dream::cli {
 namespace {
-
-using Payloads = std::map<std::string, std::vector<std::vector<uint8_t>>>;
-
-/// Each channel's messages in log order. Unless `raw`, a message equal to the
-/// one before it on its channel is a resend and left out: a recording of the
-/// bus (lcm-logger) holds the world's resends of a step and the agents'
-/// answers to them, a run's own log holds each message once, and both hold
-/// the same steps (no two different messages of a run are byte for byte the same).
-Payloads PayloadsByChannel(const std::string& path, const std::regex& channels, bool raw) {
-  Payloads payloads;
-  for (lcm::LogRecord& record : lcm::LogReader::ReadAll(RunLogPath(path))) {
-    if (!std::regex_match(record.channel, channels)) continue;
-    lcm::ClearRandomIds(&record.data);  // every run and agent has its own id; the rest must match
-    std::vector<std::vector<uint8_t>>& messages = payloads[record.channel];
-    if (!raw && !messages.empty() && messages.back() == record.data) continue;
-    messages.push_back(std::move(record.data));
-  }
-  return payloads;
-}
-
-/// Bytes of an LCM log event before its channel name: sync word, event
-/// number, utime, channel length, data length.
-constexpr int64_t kEventHeaderBytes = 4 + 8 + 8 + 4 + 4;
-
-/// True for the channels DREAM publishes its own types on: a message there
-/// that is not a DREAM type is damaged, not another program's.
-bool IsDreamDataChannel(const std::string& channel) {
-  for (const char* name : {lcm::kPosesChannel, lcm::kObstaclesChannel, lcm::kStatusChannel, lcm::kAppliedChannel}) {
-    if (channel == name) return true;
-  }
-  for (const char* prefix : {lcm::kCommandChannelPrefix, lcm::kRadioChannelPrefix, lcm::kFaultChannelPrefix,
-                             lcm::kLabCommandChannelPrefix}) {
-    if (channel.rfind(prefix, 0) == 0) return true;
-  }
-  return false;
-}
 
 struct LogEchoArgs {
   std::string log;
@@ -70,39 +26,6 @@ struct LogDiffArgs {
   bool raw = false;
 };
 
-}  // namespace
-
-int RunLogInfo(const std::string& path_given) {
-  const std::string path = RunLogPath(path_given);
-  struct ChannelStats {
-    long events = 0;
-    long bytes = 0;
-  };
-  std::map<std::string, ChannelStats> stats;
-  int64_t first = 0;
-  int64_t last = 0;
-  long total = 0;
-  lcm::LogReader reader(path);
-  lcm::LogRecord record;
-  while (reader.Next(&record)) {
-    if (total == 0) first = record.utime;
-    last = record.utime;
-    ++total;
-    ChannelStats& s = stats[record.channel];
-    ++s.events;
-    s.bytes += static_cast<long>(record.data.size());
-  }
-  if (total == 0) throw std::runtime_error(path + ": an empty log (no events): nothing was recorded");
-  std::cout << path << ": " << total << " events, " << fmt::format("{:.2f}", static_cast<double>(last - first) / 1e6)
-            << " s of log time\n";  // to 0.01 s, not "6.66667 s"
-  for (const auto& [channel, s] : stats) {
-    std::cout << "  " << channel << ": " << s.events << " events, " << s.bytes << " bytes\n";
-  }
-  return kExitOk;
-}
-
-namespace {
-
 /// `text` as the regular expression an option names; a bad one is an input
 /// error naming the option.
 std::regex ChannelRegex(const std::string& text, const std::string& option) {
@@ -113,10 +36,6 @@ std::regex ChannelRegex(const std::string& text, const std::string& option) {
   }
 }
 
-}  // namespace
-
-namespace {
-
 /// `dream log diff` exits as diff(1) and cmp(1) do, so a script can tell
 /// "different" from "could not compare".
 constexpr int kLogsDiffer = 1;
@@ -124,101 +43,28 @@ constexpr int kLogsNotCompared = 2;
 
 }  // namespace
 
+int RunLogInfo(const std::string& path_given) {
+  workflows::LogWorkflow().Info(RunLogPath(path_given));
+  return kExitOk;
+}
+
 int RunLogDiff(const std::string& a, const std::string& b, const std::string& channel_regex, bool raw) {
-  Payloads left;
-  Payloads right;
+  bool same = false;
   try {
     const std::regex channels = ChannelRegex(channel_regex, "--channels");
-    left = PayloadsByChannel(a, channels, raw);
-    right = PayloadsByChannel(b, channels, raw);
+    const std::string a_path = RunLogPath(a);
+    const std::string b_path = RunLogPath(b);
+    same = workflows::LogWorkflow().Diff(a_path, a, b_path, b, channels, channel_regex, raw);
   } catch (const std::exception& e) {  // a missing or damaged log, a bad regex
     std::cerr << "dream: " << e.what() << '\n';
     return kLogsNotCompared;
   }
-  bool same = true;
-  for (const Payloads* side : {&left, &right}) {
-    for (const auto& [channel, unused] : *side) {
-      (void)unused;
-      const auto l = left.find(channel);
-      const auto r = right.find(channel);
-      if (l == left.end() || r == right.end()) {
-        std::cout << channel << ": only in " << (l == left.end() ? b : a) << '\n';
-        same = false;
-        continue;
-      }
-      if (side == &right) continue;  // compared once, from the left
-      const size_t n = std::min(l->second.size(), r->second.size());
-      for (size_t i = 0; i < n; ++i) {
-        if (l->second[i] != r->second[i]) {
-          std::cout << channel << ": message " << i << " differs first at "
-                    << FirstDifference(l->second[i], r->second[i]) << '\n';
-          same = false;
-          break;
-        }
-      }
-      if (l->second.size() != r->second.size()) {
-        std::cout << channel << ": " << l->second.size() << " messages in " << a << ", " << r->second.size() << " in "
-                  << b << '\n';
-        same = false;
-      }
-    }
-  }
-  std::cout << (same ? "same" : "different") << " (channels matching '" << channel_regex << "')\n";
   return same ? kExitOk : kLogsDiffer;
 }
 
 int RunLogEcho(const std::string& path_given, const std::string& channel_regex, long long limit) {
-  const std::string path = RunLogPath(path_given);
-  const std::regex channels = ChannelRegex(channel_regex, "CHANNEL_REGEX");
-  lcm::LogReader reader(path);
-  lcm::LogRecord record;
-  int64_t offset = 0;  // of the current event, for reports: LogReader does not tell
-  int64_t event = 0;
-  long long printed = 0;
-  long long undecodable = 0;
-  std::map<std::string, long long> skipped;  // channel -> events of no DREAM type
-  std::map<std::string, long long> seen;     // every channel, for a regex that matches none
-  while ((limit <= 0 || printed < limit) && reader.Next(&record)) {
-    const int64_t event_offset = offset;
-    offset += kEventHeaderBytes + static_cast<int64_t>(record.channel.size() + record.data.size());
-    ++event;
-    ++seen[record.channel];
-    if (!std::regex_match(record.channel, channels)) continue;
-    const MessageJson message(record.data);
-    if (message.outcome() == MessageJson::Outcome::kDecoded) {
-      nlohmann::ordered_json line = {{"channel", record.channel},
-                                     {"utime", record.utime},
-                                     {"type", message.type()},
-                                     {"message", message.fields()}};
-      std::cout << files::JsonText(line, -1) << '\n';
-      ++printed;
-    } else if (message.outcome() == MessageJson::Outcome::kUndecodable || IsDreamDataChannel(record.channel)) {
-      // Reported and passed over: one damaged message must not hide the rest.
-      std::cerr << path << ": byte " << event_offset << " (event " << event << ", " << record.channel
-                << "): cannot decode " << record.data.size() << " bytes"
-                << (message.type().empty() ? "" : " as " + message.type()) << ": " << message.problem() << '\n';
-      ++undecodable;
-    } else {
-      ++skipped[record.channel];
-    }
-  }
-  std::cout.flush();
-  if (!skipped.empty()) {
-    long long total = 0;
-    std::string names;
-    for (const auto& [channel, count] : skipped) {
-      total += count;
-      names += (names.empty() ? "" : ", ") + channel + " (" + std::to_string(count) + ")";
-    }
-    std::cerr << "skipped " << total << " events on channels of no DREAM type: " << names << '\n';
-  }
-  if (undecodable > 0) std::cerr << undecodable << " events could not be decoded (above)\n";
-  if (printed == 0 && undecodable == 0 && skipped.empty()) {
-    std::string names;
-    for (const auto& [channel, count] : seen) names += (names.empty() ? "" : ", ") + channel;
-    std::cerr << path << ": no event on a channel matching '" << channel_regex
-              << "' (channels: " << (names.empty() ? "none" : names) << ")\n";
-  }
+  const std::string path = RunLogPath(path_given);  // a missing log named before a bad regex
+  workflows::LogWorkflow().Echo(path, ChannelRegex(channel_regex, "CHANNEL_REGEX"), channel_regex, limit);
   return kExitOk;
 }
 

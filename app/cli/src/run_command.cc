@@ -1,50 +1,24 @@
-#include <spdlog/spdlog.h>
-
-#include <memory>
-#include <iostream>
-
-#include "dream/session/run_exit_code.h"
+// dream run and dream sim (workflows::RunWorkflow): options and exit codes.
 #include "command_line.h"
 #include "commands.h"
-#include "dream/lcm/lcm_bus.h"
-#include "dream/lcm/lcm_url.h"
-#include "run_output.h"
-#include "run_view.h"
+#include "dream/process/data_files.h"
+#include "dream/view/frame_rates.h"
+#include "dream/workflows/run_workflow.h"
 #include "shared_options.h"
 
 namespace dream::cli {
 
-int RunEmbedded(const RunArgs& args) {
-  const std::unique_ptr<session::RunSession> run = OpenRunSession(args);
-  const run_config::RunConfig& config = run->config();
-  CheckStartupDrive(config);
-  // One process: the world and every agent share one bus, memq:// unless the
-  // user asks for a real transport.
-  const RunView::Keep keep = RunView::Keep::Parse(args.view_keep);  // a bad value before anything runs
-  lcm::LcmBus bus(args.lcm_url.empty() ? "memq://" : lcm::ResolveLcmUrl(args.lcm_url));
-  const std::string out_dir = PrepareOutputDir(args, config);
-  std::unique_ptr<RunView> view;
-  if (args.view) view = std::make_unique<RunView>(bus, config, args.view_bind, args.view_port, args.view_fps);
-  // Before the agents start: none of them waits on a world that waits on a browser.
-  if (view && args.view_wait && !view->WaitForBrowser(args.view_wait_timeout_s)) {
-    std::cout << "dream run: stopped while waiting for a browser; nothing was run" << std::endl;
-    return session::kExitInterrupted;
-  }
-  const session::RunResult result = run->RunWithAgents(bus, {out_dir, ConfigTextForRunFolder(args, config)});
-  if (view) {
-    view->ServeReplayOf(out_dir);
-    view->KeepServing(keep);  // Ctrl-C here ends the serving, not the run: its exit code stands
-  }
-  return session::ExitCodeOf(result);
-}
+namespace {
 
-int RunSimOnly(const RunArgs& args) {
-  const std::unique_ptr<session::RunSession> run = OpenRunSession(args);
-  CheckStartupDrive(run->config());
-  lcm::LcmBus bus(lcm::ResolveLcmUrl(args.lcm_url));
-  const std::string out_dir = PrepareOutputDir(args, run->config());
-  return session::ExitCodeOf(run->Run(bus, {out_dir, ConfigTextForRunFolder(args, run->config())}));
-}
+/// What dream run and dream sim take from this program: the Python runtime
+/// beside it and the stop flag Ctrl-C sets.
+workflows::RunWorkflow Workflow() { return {process::DataFiles::PythonRuntimeDir(), StopFlag()}; }
+
+}  // namespace
+
+int RunEmbedded(const RunArgs& args) { return Workflow().RunEmbedded(args); }
+
+int RunSimOnly(const RunArgs& args) { return Workflow().RunSimOnly(args); }
 
 void DeclareRunCommand(CommandLine& line) {
   const auto [command, args] =

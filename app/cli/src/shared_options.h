@@ -8,6 +8,7 @@
 
 #include "command_line.h"
 #include "commands.h"
+#include "dream/files/run_log_path.h"
 
 namespace dream::cli {
 
@@ -28,10 +29,8 @@ CLI::Validator SeedValue();
 /// (log info, log echo, replay, render): a run folder or an .lcmlog file.
 CLI::Option* AddRunLogArgument(CLI::App* command, const std::string& name, std::string* path);
 
-/// The log that argument names: `run_or_log` itself, or run.lcmlog inside a
-/// run folder. @throws std::runtime_error naming the path when it does not
-/// exist or a folder holds no run.lcmlog (a run still going has only its .part).
-std::string RunLogPath(const std::string& run_or_log);
+/// The log that argument names (files::RunLogPath).
+using files::RunLogPath;
 
 /// --out DIR and --overwrite of the commands that write a run folder
 /// (RunFolderChoice): `default_dir` is what --help names as the default.

@@ -10,12 +10,12 @@
 
 #include "command_line.h"
 #include "commands.h"
-#include "dream/run_config/run_config.h"
 #include "dream/workflows/sweep_workflow.h"
 #include "parallel_runner.h"
 #include "process_command_runner.h"
 #include "dream/process/process_group.h"
-#include "run_output.h"
+#include "dream/process/data_files.h"
+#include "dream/workflows/run_workflow.h"
 #include "shared_options.h"
 
 namespace dream::cli {
@@ -126,7 +126,8 @@ int RunSweep(const SweepArgs& args) {
   RunArgs base_args;
   base_args.config_path = args.config_path;
   base_args.steps = args.steps;
-  const run_config::RunConfig base = LoadConfig(base_args);  // the base config's own mistakes, with its lines
+  // The base config's own mistakes, with its lines.
+  const auto base = workflows::RunWorkflow(process::DataFiles::PythonRuntimeDir(), StopFlag()).LoadConfig(base_args);
   settings.config_path = args.config_path;
   settings.seeds = args.seeds;
   settings.sets = args.sets;

@@ -1,12 +1,71 @@
 #include "dream/workflows/export_workflow.h"
 
 #include <filesystem>
+#include <stdexcept>
 
+#include "dream/bridge/export_options.h"
 #include "dream/run_config/run_config.h"
+#include "dream/session/exit_code.h"
+#include "dream/workflows/calibration_export_workflow.h"
 
 namespace dream::workflows {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+/// export --calibration --robots N: the flags that do not go with it
+/// refused, then the workflow (CalibrationExportWorkflow).
+int ExportCalibration(const ExportWorkflow::Asked& asked, const bridge::ExportOptions& options) {
+  if (!asked.config_path.empty()) {
+    throw std::runtime_error("--config " + asked.config_path +
+                             ": --calibration writes its own config; leave --config out");
+  }
+  if (!asked.strategy.empty() && asked.strategy != bridge::StrategyName(bridge::Strategy::kReplay)) {
+    throw std::runtime_error("--strategy " + asked.strategy +
+                             ": --calibration exports the program's commands open "
+                             "loop (replay), which is what calibrate fits; leave --strategy out");
+  }
+  if (asked.barriers) {
+    throw std::runtime_error(
+        "--barriers: would change the program's commands where robots come close; "
+        "--calibration sends them unchanged (its robots never come close)");
+  }
+  CalibrationExportWorkflow::Options calibration;
+  calibration.robots = asked.robots;
+  calibration.out_dir = asked.out_dir;
+  calibration.run_dir = asked.run_dir;
+  calibration.export_options = options;
+  calibration.stop = asked.stop;
+  return CalibrationExportWorkflow().Export(calibration).exit_code;
+}
+
+}  // namespace
+
+std::vector<std::string> ExportWorkflow::StrategyNames() { return bridge::StrategyNames(); }
+
+int ExportWorkflow::ExportAsAsked(const Asked& asked, std::string* refusal) const {
+  bridge::ExportOptions options;
+  options.barriers = asked.barriers;
+  options.settle_max_steps = asked.settle_steps;
+  options.force = asked.force;
+  options.python_runtime_dir = asked.python_runtime_dir;
+  if (asked.calibration) return ExportCalibration(asked, options);
+  if (asked.robots != 0) {
+    throw std::runtime_error("--robots " + std::to_string(asked.robots) +
+                             ": goes with --calibration (an exported run has its config's robots)");
+  }
+  if (asked.run_dir.empty()) {
+    throw std::runtime_error("pass the run folder to export (dream export RUN), or --calibration --robots N");
+  }
+  options.strategy = bridge::ParseStrategy(asked.strategy.empty() ? "track" : asked.strategy);
+  const Result result = Export({asked.run_dir, asked.out_dir, asked.config_path, options});
+  if (result.refused) {
+    *refusal = result.refusal;
+    return session::kExitRejected;
+  }
+  return session::kExitOk;
+}
 
 std::string ExportWorkflow::OutDir(const Options& options) {
   if (!options.out_dir.empty()) return options.out_dir;

@@ -6,6 +6,9 @@
 #include <fmt/format.h>
 
 #include "dream/bridge/submission_format.h"
+#include "dream/files/run_folder_choice.h"
+#include "dream/session/exit_code.h"
+#include "dream/session/run_exit_code.h"
 #include "dream/session/run_reporter.h"
 #include "dream/session/run_session.h"
 #include "dream/world/run_report.h"
@@ -37,6 +40,26 @@ std::optional<world::LabVerifierRules::Declaration> ImportWorkflow::Declared(con
   if (robots > 0) declared.num_robots = robots;
   if (duration_s > 0) declared.duration_s = duration_s;
   return declared;
+}
+
+ImportWorkflow::Options ImportWorkflow::OptionsOf(const Asked& asked) {
+  const bridge::ExportedSubmission exported = bridge::ExportedSubmission::Read(asked.export_dir);
+  Options options;
+  options.result = asked.result;
+  options.export_dir = asked.export_dir;
+  options.out_dir = files::RunFolderChoice(asked.out_dir, "runs/" + exported.config.name + "_lab", asked.overwrite,
+                                           files::RunFolderChoice::Create::kLater)
+                        .dir();
+  options.declared = Declared(exported, asked.declared_robots, asked.declared_duration_s);
+  options.python_runtime_dir = asked.python_runtime_dir;
+  return options;
+}
+
+int ImportWorkflow::ExitCodeOf(const Result& result) {
+  if (!result.imported.lab.complete || !result.report.summary_written || result.report.picture_failed) {
+    return session::kExitRunFailed;
+  }
+  return session::ExitCodeOf(result.verdict());
 }
 
 ImportWorkflow::Result ImportWorkflow::Import(const Options& options) const {

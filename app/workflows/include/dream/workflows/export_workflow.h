@@ -1,8 +1,10 @@
 #pragma once
 
+#include <atomic>
 #include <iostream>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "dream/bridge/export_options.h"
 #include "dream/bridge/submission_exporter.h"
@@ -28,7 +30,33 @@ class ExportWorkflow {
     bridge::ExportSummary summary;  ///< what was written, when not refused
   };
 
+  /// What `dream export` is asked, as typed: a recorded run exported, or
+  /// (`calibration`) the calibration drive run on `robots` robots, then exported.
+  struct Asked {
+    std::string run_dir;       ///< a folder written by dream run (calibration: the run folder to write)
+    std::string out_dir;       ///< empty: exports/<name>
+    std::string config_path;   ///< empty: <run_dir>/config.yaml
+    std::string strategy;      ///< empty: track (calibration: replay)
+    bool calibration = false;  ///< run the calibration drive on `robots` robots, then export it
+    int robots = 0;            ///< with calibration only; 0: not given
+    bool barriers = false;
+    int settle_steps = 240;
+    bool force = false;                       ///< export although robots were lost
+    std::string python_runtime_dir;           ///< DREAM's Python package (a Python controller's export)
+    const std::atomic<bool>* stop = nullptr;  ///< ends the calibration drive early (Ctrl-C)
+  };
+
   explicit ExportWorkflow(std::ostream& out = std::cout) : out_(out) {}
+
+  /// The names `Asked::strategy` takes (bridge::StrategyNames).
+  static std::vector<std::string> StrategyNames();
+
+  /// Refuses what does not go together (std::runtime_error naming the
+  /// options), then exports, or runs the calibration export
+  /// (CalibrationExportWorkflow). Returns the exit code (session::ExitCode);
+  /// an export the lab would refuse is kExitRejected with `*refusal` saying
+  /// why and nothing written.
+  int ExportAsAsked(const Asked& asked, std::string* refusal) const;
 
   /// @throws std::runtime_error (or config::ConfigError) naming the file for
   ///         input that cannot be read.

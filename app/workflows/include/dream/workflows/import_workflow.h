@@ -31,6 +31,23 @@ class ImportWorkflow {
     std::string python_runtime_dir;
   };
 
+  /// What `dream import` is asked, as typed.
+  struct Asked {
+    std::string result;  ///< dream_result.npy / .mat, or a folder holding one
+    std::string export_dir;
+    std::string out_dir;               ///< empty: runs/<name>_lab (or _2, ... when that holds a run)
+    bool overwrite = false;            ///< replace a run already in the output folder
+    int declared_robots = 0;           ///< declared on the lab's form; 0: the export's (UPLOAD.txt)
+    double declared_duration_s = 0.0;  ///< declared on the lab's form; 0: the export's (UPLOAD.txt)
+    std::string python_runtime_dir;
+  };
+
+  /// The Options `asked` means: the export read (its name gives the default
+  /// folder, files::RunFolderChoice, made only when the import writes: a
+  /// refused result leaves no folder) and what was declared on the lab's form,
+  /// UPLOAD.txt's values unless told otherwise.
+  static Options OptionsOf(const Asked& asked);
+
   /// What the import wrote and how the run was judged.
   struct Result {
     bridge::ImportedRun imported;
@@ -63,6 +80,10 @@ class ImportWorkflow {
   void PrintLabRun(const bridge::ImportedRun& imported) const;
   /// The verdict (with the goal's), what it was judged against, and its reasons.
   void PrintVerdict(const Result& result) const;
+
+  /// The exit code of an import, as dream run's (session::ExitCodeOf); a
+  /// run the lab cut short did not finish, nor one whose report failed.
+  static int ExitCodeOf(const Result& result);
 
  private:
   std::ostream& out_;

@@ -1,4 +1,4 @@
-#include "run_view.h"
+#include "dream/workflows/run_view.h"
 
 #include <spdlog/spdlog.h>
 
@@ -11,25 +11,23 @@
 #include <thread>
 #include <utility>
 
-#include "commands.h"
-#include "dream/process/data_files.h"
 #include "dream/session/render_overlays.h"
 #include "dream/view/frame_json.h"
-#include "view_replay.h"
+#include "dream/workflows/view_replay.h"
 
-namespace dream::cli {
+namespace dream::workflows {
 
 namespace {
 
 /// A Python controller's goal_points(), when the kind drew no goals: a finished run's from its
 /// summary.json, else computed from the config, once, before the view starts (a short-lived
 /// python3, as for its metrics; nothing for other kinds).
-void AddPythonControllerGoals(const run_config::RunConfig& config, const std::string& run_dir,
-                              render::ArenaOverlays* overlays) {
+void AddPythonControllerGoals(const run_config::RunConfig& config, const std::string& python_runtime_dir,
+                              const std::string& run_dir, render::ArenaOverlays* overlays) {
   if (!overlays->goals_m.empty()) return;
   if (!run_dir.empty() && session::AddDeclaredGoalsOfRun(run_dir + "/summary.json", overlays)) return;
   try {
-    session::AddPythonGoals(config, process::DataFiles::PythonRuntimeDir(), overlays);
+    session::AddPythonGoals(config, python_runtime_dir, overlays);
   } catch (const std::exception& e) {
     spdlog::warn("dream view: drawing without the controller's goal points: {}", e.what());
   }
@@ -38,7 +36,8 @@ void AddPythonControllerGoals(const run_config::RunConfig& config, const std::st
 }  // namespace
 
 view::ViewSetup ViewSetupOfConfig(const run_config::RunConfig& config, view::ViewSetup::Mode mode,
-                                  const std::string& source, const std::string& run_dir) {
+                                  const std::string& source, const std::string& python_runtime_dir,
+                                  const std::string& run_dir) {
   view::ViewSetup setup;
   setup.mode = mode;
   setup.world = config.world;
@@ -49,15 +48,15 @@ view::ViewSetup ViewSetupOfConfig(const run_config::RunConfig& config, view::Vie
     // Goals and radio are a nicety: the run itself is drawn from the bus.
     spdlog::warn("dream view: drawing without the config's goals and radio: {}", e.what());
   }
-  AddPythonControllerGoals(config, run_dir, &setup.overlays);
+  AddPythonControllerGoals(config, python_runtime_dir, run_dir, &setup.overlays);
   setup.overlays.run_name = config.name;
   return setup;
 }
 
 RunView::RunView(lcm::LcmInterface& bus, const run_config::RunConfig& config, const std::string& bind, int port,
-                 int frames_per_second)
-    : server_(view::ViewServer::Options{bind, port, false, 8}) {
-  view::ViewSetup setup = ViewSetupOfConfig(config, view::ViewSetup::Mode::kLive, config.source);
+                 int frames_per_second, const std::string& python_runtime_dir, const std::atomic<bool>& stop)
+    : server_(view::ViewServer::Options{bind, port, false, 8}), python_runtime_dir_(python_runtime_dir), stop_(stop) {
+  view::ViewSetup setup = ViewSetupOfConfig(config, view::ViewSetup::Mode::kLive, config.source, python_runtime_dir_);
   if (frames_per_second > 0) setup.frame_rates = view::FrameRates::One(frames_per_second);
   live_ = std::make_unique<view::LiveView>(bus, server_, std::move(setup));
   std::cout << "dream view: open " << server_.url() << " to watch the run ";
@@ -79,10 +78,10 @@ std::string FormatSeconds(double seconds) {
 /// Waits, a tenth of a second at a time, until `done` or Ctrl-C or the
 /// deadline (none when `seconds` <= 0); returns whether `done`.
 template <typename Done>
-bool WaitUntil(Done done, double seconds) {
+bool WaitUntil(Done done, double seconds, const std::atomic<bool>& stop) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
   while (!done()) {
-    if (StopFlag().load() || (seconds > 0 && std::chrono::steady_clock::now() >= deadline)) return false;
+    if (stop.load() || (seconds > 0 && std::chrono::steady_clock::now() >= deadline)) return false;
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
   return true;
@@ -94,11 +93,11 @@ bool RunView::WaitForBrowser(double timeout_s) {
   std::cout << "dream view: waiting for a browser at " << server_.url() << " before step 0 (Ctrl-C to stop"
             << (timeout_s > 0 ? ", the run starts anyway after " + FormatSeconds(timeout_s) : std::string()) << ")"
             << std::endl;
-  if (WaitUntil([this] { return server_.clients() > 0; }, timeout_s)) {
+  if (WaitUntil([this] { return server_.clients() > 0; }, timeout_s, stop_)) {
     std::cout << "dream view: a browser is watching: the run starts" << std::endl;
     return true;
   }
-  if (StopFlag().load()) return false;
+  if (stop_.load()) return false;
   std::cout << "dream view: no browser within " << FormatSeconds(timeout_s) << ": the run starts" << std::endl;
   return true;
 }
@@ -111,7 +110,7 @@ void RunView::ServeReplayOf(const std::string& run_dir) {
   }
   live_.reset();  // its last frame is out; no live frame may follow the replay's setup
   try {
-    const ViewReplay replay = ViewReplay::OfRun(run_dir, "");
+    const ViewReplay replay = ViewReplay::OfRun(run_dir, "", python_runtime_dir_);
     server_.ServeReplay(view::SetupJson(replay.setup), replay.run_json);
     std::cout << "dream view: the run is over; " << server_.url() << " replays it. Later: dream view " << run_dir
               << std::endl;
@@ -145,24 +144,24 @@ RunView::Keep RunView::Keep::Parse(const std::string& text) {
 }
 
 void RunView::KeepServing(const Keep& keep) {
-  if (StopFlag().load()) return;  // the run was interrupted: the user is leaving
+  if (stop_.load()) return;  // the run was interrupted: the user is leaving
   switch (keep.until) {
     case Keep::Until::kWatched:
       if (server_.clients() == 0) return;
       std::cout << "dream view: a browser is watching: serving until Ctrl-C (--view-keep 0 to stop at the run's end)"
                 << std::endl;
-      WaitUntil([] { return false; }, 0);
+      WaitUntil([] { return false; }, 0, stop_);
       return;
     case Keep::Until::kCtrlC:
       std::cout << "dream view: serving until Ctrl-C" << std::endl;
-      WaitUntil([] { return false; }, 0);
+      WaitUntil([] { return false; }, 0, stop_);
       return;
     case Keep::Until::kSeconds:
       if (keep.seconds <= 0) return;
       std::cout << "dream view: serving for " << FormatSeconds(keep.seconds) << " (Ctrl-C to stop sooner)" << std::endl;
-      WaitUntil([] { return false; }, keep.seconds);
+      WaitUntil([] { return false; }, keep.seconds, stop_);
       return;
   }
 }
 
-}  // namespace dream::cli
+}  // namespace dream::workflows

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-namespace dream::cli {
+namespace dream::run_log {
 
 /// Where two payloads of one channel first differ, for `dream log diff`:
 /// "step 12, robot 3: x 0.5 vs 0.51" -- the step of the first message, the
@@ -14,4 +14,4 @@ namespace dream::cli {
 /// first differing byte.
 std::string FirstDifference(const std::vector<uint8_t>& first, const std::vector<uint8_t>& second);
 
-}  // namespace dream::cli
+}  // namespace dream::run_log

@@ -1,4 +1,4 @@
-#include "message_json.h"
+#include "dream/run_log/message_json.h"
 
 #include <cstdio>
 #include <optional>
@@ -13,7 +13,7 @@
 #include "dream/run_status_t.hpp"
 #include "dream/velocity_command_t.hpp"
 
-namespace dream::cli {
+namespace dream::run_log {
 namespace {
 
 // What every dream message starts with (utime, step, run_id), then `fields` in their order.
@@ -135,4 +135,4 @@ MessageJson::MessageJson(const std::vector<uint8_t>& data) {
   }
 }
 
-}  // namespace dream::cli
+}  // namespace dream::run_log

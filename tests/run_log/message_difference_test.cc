@@ -1,4 +1,4 @@
-#include "message_difference.h"
+#include "dream/run_log/message_difference.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include "dream/velocity_command_t.hpp"
 #include "../support/encoded_message.h"
 
-namespace dream::cli {
+namespace dream::run_log {
 namespace {
 
 using dream::testing::Encoded;
@@ -50,4 +50,4 @@ TEST(MessageDifference, UndecodableBytesAreComparedByteByByte) {
 }
 
 }  // namespace
-}  // namespace dream::cli
+}  // namespace dream::run_log

@@ -1,4 +1,4 @@
-#include "message_json.h"
+#include "dream/run_log/message_json.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include "dream/robot_poses_t.hpp"
 #include "../support/encoded_message.h"
 
-namespace dream::cli {
+namespace dream::run_log {
 namespace {
 
 using dream::testing::Encoded;
@@ -94,4 +94,4 @@ TEST(MessageJson, OtherProgramsMessagesAreUnknown) {
 }
 
 }  // namespace
-}  // namespace dream::cli
+}  // namespace dream::run_log

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace dream::cli {
+namespace dream::run_log {
 
 /// One LCM payload as JSON, for `dream log echo`: the DREAM message types
 /// (lcmtypes/dream/*.lcm) are told apart by their fingerprint, the payload's
@@ -41,4 +41,4 @@ class MessageJson {
   std::string problem_;
 };
 
-}  // namespace dream::cli
+}  // namespace dream::run_log

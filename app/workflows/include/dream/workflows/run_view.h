@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <memory>
 #include <string>
 
@@ -8,7 +9,7 @@
 #include "dream/view/live_view.h"
 #include "dream/view/view_server.h"
 
-namespace dream::cli {
+namespace dream::workflows {
 
 /// `dream run --view`: the live arena served while the run runs in this
 /// process, then the finished run as a replay at the same URL. Its bus
@@ -19,10 +20,13 @@ class RunView {
  public:
   /// Listens on `bind`:`port` and prints the page's address.
   /// @throws std::runtime_error when it cannot listen there.
+  /// `frames_per_second` 0: FrameRates' defaults (30, fewer while the run is
+  /// fast); `python_runtime_dir`: a Python controller's goal points
+  /// (ViewSetupOfConfig); `stop` (Ctrl-C) ends every wait.
   RunView(lcm::LcmInterface& bus, const run_config::RunConfig& config, const std::string& bind, int port,
-          int frames_per_second = 0);  ///< 0: FrameRates' defaults (30, fewer while the run is fast)
+          int frames_per_second, const std::string& python_runtime_dir, const std::atomic<bool>& stop);
   /// --view-wait: waits until a browser has the page open, so the user sees
-  /// step 0. Returns false when Ctrl-C came first (StopFlag), true when a
+  /// step 0. Returns false when Ctrl-C came first (`stop`), true when a
   /// browser connected or `timeout_s` (> 0; 0: none) passed, which it says.
   bool WaitForBrowser(double timeout_s);
   /// The run is over: shows its end (its last step, from `run_dir`'s log: the
@@ -47,6 +51,8 @@ class RunView {
  private:
   view::ViewServer server_;
   std::unique_ptr<view::LiveView> live_;
+  std::string python_runtime_dir_;
+  const std::atomic<bool>& stop_;
 };
 
 /// The view's setup from a run config: its arena and time step, and what it
@@ -54,8 +60,9 @@ class RunView {
 /// them; without them (the config's controller cannot tell) a warning, and
 /// the view draws the run without. A Python controller's goal_points() come
 /// from `run_dir`'s summary.json when given (a replay), else are computed
-/// from the config once, here.
+/// from the config once, here, with the runtime in `python_runtime_dir`.
 view::ViewSetup ViewSetupOfConfig(const run_config::RunConfig& config, view::ViewSetup::Mode mode,
-                                  const std::string& source, const std::string& run_dir = "");
+                                  const std::string& source, const std::string& python_runtime_dir,
+                                  const std::string& run_dir = "");
 
-}  // namespace dream::cli
+}  // namespace dream::workflows

@@ -1,11 +1,11 @@
-#include "message_difference.h"
+#include "dream/run_log/message_difference.h"
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
-#include "message_json.h"
+#include "dream/run_log/message_json.h"
 
-namespace dream::cli {
+namespace dream::run_log {
 namespace {
 
 // Values are cut short: a radio payload's hex can be long.
@@ -66,4 +66,4 @@ std::string FirstDifference(const std::vector<uint8_t>& first, const std::vector
   return ByteDifference(first, second);
 }
 
-}  // namespace dream::cli
+}  // namespace dream::run_log

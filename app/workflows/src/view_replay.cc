@@ -1,4 +1,4 @@
-#include "view_replay.h"
+#include "dream/workflows/view_replay.h"
 
 #include <spdlog/spdlog.h>
 
@@ -10,15 +10,15 @@
 #include <string>
 
 #include "dream/files/file_text.h"
+#include "dream/files/run_log_path.h"
 #include "dream/node/run_summary.h"
 #include "dream/run_config/run_config.h"
 #include "dream/run_log/run_log.h"
 #include "dream/session/experiment_goal.h"
 #include "dream/view/replay_json.h"
-#include "run_view.h"
-#include "shared_options.h"
+#include "dream/workflows/run_view.h"
 
-namespace dream::cli {
+namespace dream::workflows {
 namespace {
 
 namespace fs = std::filesystem;
@@ -64,7 +64,7 @@ std::optional<std::string> MetricText(const nlohmann::json& value) {
 
 }  // namespace
 
-std::optional<view::ViewSetup::Judged> JudgedOfRun(const std::string& log_path) {
+std::optional<view::ViewSetup::Judged> ViewReplay::JudgedOfRun(const std::string& log_path) {
   const std::string summary_path = (fs::path(log_path).parent_path() / node::RunSummary::kFileName).string();
   std::error_code error;
   if (!fs::exists(summary_path, error)) return std::nullopt;
@@ -93,8 +93,9 @@ std::optional<view::ViewSetup::Judged> JudgedOfRun(const std::string& log_path) 
   }
 }
 
-ViewReplay ViewReplay::OfRun(const std::string& run, const std::string& config_path) {
-  const std::string log_path = RunLogPath(run);
+ViewReplay ViewReplay::OfRun(const std::string& run, const std::string& config_path,
+                             const std::string& python_runtime_dir) {
+  const std::string log_path = files::RunLogPath(run);
   const run_log::RunLog log = run_log::RunLog::Read(log_path);
   if (log.poses().empty()) {
     throw std::runtime_error(log_path + ": no DREAM_POSES that decode: nothing to replay" +
@@ -102,8 +103,8 @@ ViewReplay ViewReplay::OfRun(const std::string& run, const std::string& config_p
   }
   ViewReplay replay;
   if (const std::optional<run_config::RunConfig> config = ConfigOfRun(config_path, log_path, log.num_robots())) {
-    replay.setup =
-        ViewSetupOfConfig(*config, view::ViewSetup::Mode::kReplay, run, fs::absolute(log_path).parent_path().string());
+    replay.setup = ViewSetupOfConfig(*config, view::ViewSetup::Mode::kReplay, run, python_runtime_dir,
+                                     fs::absolute(log_path).parent_path().string());
   }
   replay.setup.mode = view::ViewSetup::Mode::kReplay;
   replay.setup.source = run;
@@ -113,4 +114,4 @@ ViewReplay ViewReplay::OfRun(const std::string& run, const std::string& config_p
   return replay;
 }
 
-}  // namespace dream::cli
+}  // namespace dream::workflows

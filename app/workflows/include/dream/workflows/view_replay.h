@@ -1,11 +1,12 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 
 #include "dream/view/view_setup.h"
 
-namespace dream::cli {
+namespace dream::workflows {
 
 /// A finished run as dream view replays it: the page's setup (the config's
 /// goals, sensors and radio; summary.json's judgement and metrics) and
@@ -17,15 +18,18 @@ struct ViewReplay {
   size_t steps = 0;      ///< steps with poses in the log
 
   /// `run`: a run folder or an .lcmlog; `config_path`: the run's config, or
-  /// "" for config.yaml beside the log (a warning when that one cannot be used).
+  /// "" for config.yaml beside the log (a warning when that one cannot be
+  /// used); `python_runtime_dir`: a Python controller's goal points when
+  /// summary.json has none (ViewSetupOfConfig).
   /// @throws std::runtime_error naming the file when the log has no poses or
   ///         a given config cannot be read or is another run's.
-  static ViewReplay OfRun(const std::string& run, const std::string& config_path);
+  static ViewReplay OfRun(const std::string& run, const std::string& config_path,
+                          const std::string& python_runtime_dir);
+
+  /// The run's judgement from summary.json beside its log: what the page shows
+  /// as the verdict at the run's end (none without a readable summary; a
+  /// summary that cannot be read is only logged).
+  static std::optional<view::ViewSetup::Judged> JudgedOfRun(const std::string& log_path);
 };
 
-/// The run's judgement from summary.json beside its log: what the page shows
-/// as the verdict at the run's end (none without a readable summary; a
-/// summary that cannot be read is only logged).
-std::optional<view::ViewSetup::Judged> JudgedOfRun(const std::string& log_path);
-
-}  // namespace dream::cli
+}  // namespace dream::workflows
