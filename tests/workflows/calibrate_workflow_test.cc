@@ -1,9 +1,10 @@
-// CalibrateWorkflow: models held against a run (--check), and the options
-// refused before anything is fitted or written.
+// CalibrateWorkflow: models held against a run (--check) with the picture
+// asked for, and the options refused before anything is fitted or written.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <iterator>
 #include <sstream>
 #include <stdexcept>
 
@@ -44,16 +45,17 @@ TEST(CalibrateWorkflowTest, ARealismFileIsYaml) {
   EXPECT_FALSE(fs::exists(options.out_path));
 }
 
-TEST(CalibrateWorkflowTest, CheckHoldsModelsAgainstTheRunsAndWritesNothing) {
+TEST(CalibrateWorkflowTest, CheckHoldsModelsAgainstTheRunsAndDrawsOnlyThePictureAsked) {
   const std::string folder = bridge::testing::NewFolder("calibrate_workflow_check");
   CalibrateWorkflow::Options options;
   options.inputs = {testing::SimulatedRun()};
   options.check_models = {"ideal", "lab"};
+  options.picture_path = folder + "/check.png";
   std::ostringstream out;
   CalibrateWorkflow(out).Calibrate(options);
-  EXPECT_THAT(out.str(), HasSubstr("ideal"));
-  EXPECT_THAT(out.str(), HasSubstr("lab"));
-  EXPECT_TRUE(fs::is_empty(folder));
+  EXPECT_THAT(out.str(), HasSubstr("\nWrote " + options.picture_path + "\n"));
+  EXPECT_GT(fs::file_size(options.picture_path), 0u);
+  EXPECT_EQ(std::distance(fs::directory_iterator(folder), fs::directory_iterator()), 1);  // no realism file
 
   options.check_models = {"no_such_model"};
   EXPECT_THAT(ErrorOf(options), HasSubstr("--check no_such_model: neither a realism preset"));

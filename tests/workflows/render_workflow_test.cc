@@ -31,7 +31,7 @@ TEST(RenderWorkflowTest, ARunFolderIsDrawnAsAPictureWithItsRobotsAndSteps) {
   EXPECT_THAT(out.str(), StartsWith("picture: " + options.out + " (8 robots, "));
 }
 
-TEST(RenderWorkflowTest, APlotDrawsTheSummarysSeriesAndTheClosestApproach) {
+TEST(RenderWorkflowTest, APlotDrawsTheSeriesAskedForAndRefusesOneTheRunHasNot) {
   std::ostringstream out;
   RenderWorkflow::Options options;
   options.run_or_log = testing::SimulatedRun();
