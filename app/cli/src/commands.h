@@ -92,8 +92,9 @@ int RunReplay(const ReplayArgs& args);
 // --- the bridge to the Robotarium (bridge_commands.cc, docs/robotarium.md) ---
 
 /// dream export, import, lab-replay, compare and check-submission, in that order.
-void DeclareCalibrateCommand(CommandLine& line);
 void DeclareBridgeCommands(CommandLine& line);
+/// dream calibrate (calibrate_command.cc, docs/calibration.md).
+void DeclareCalibrateCommand(CommandLine& line);
 
 // --- sweeps (sweep_command.cc, docs/sweeps.md) ---
 
