@@ -1,6 +1,6 @@
 # `cmake --install build --prefix P` puts in place what a controller written
 # out of tree needs (docs/writing-a-controller.md):
-#   P/bin          dream, dream-agent
+#   P/bin          dream, dream-agent, dream-agent-shared
 #   P/lib          the dream shared libraries
 #   P/include      public headers of the exported libraries, and the C++ lcmtypes
 #   P/lib/cmake/dream  the CMake package: find_package(dream) -> dream::agent_host ...
@@ -57,7 +57,7 @@ if(runtime_only_libraries)
   install(TARGETS ${runtime_only_libraries} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} NAMELINK_SKIP)
 endif()
 
-install(TARGETS dream dream-agent RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS dream dream-agent dream-agent-shared RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
 install(DIRECTORY
     ${PROJECT_SOURCE_DIR}/base/robotarium/include/

@@ -21,8 +21,8 @@ import numpy as np
 # rps's cvxopt settings, passed to each call (rps sets them globally for every cvxopt user).
 QP_OPTIONS = {"show_progress": False, "reltol": 1e-2, "feastol": 1e-2, "maxiters": 50}
 # From this many robots cvxopt's KKT step goes through _StructuredKkt (the same iterates, answers
-# within ~1e-11 of rps's); None keeps rps's dense step for every size, bit for bit (the
-# check-submission stand-in does, so its start-up drive is the official one exactly).
+# within ~1e-11 of rps's). A certificate made with bit_exact=True keeps rps's dense step for every
+# size, bit for bit (the check-submission stand-in's are, so its start-up drive is the official one).
 STRUCTURED_KKT_FROM_ROBOTS = 10
 # The boundaries rps's certificates default to: the arena for the unicycle one, 0.1 m beyond it
 # for the single-integrator one (as rps has it).
@@ -65,7 +65,7 @@ def _columns(name, array, rows):
     return a
 
 
-def _solve_qp(vhat, A, b):
+def _solve_qp(vhat, A, b, bit_exact):
     """min |v - vhat|^2 s.t. A v <= b as rps builds and solves it; None when cvxopt does not end
     'optimal' (rps then commands zeros). cvxopt iterates as in rps; only its linear algebra is
     ours (_StructuredKkt), which is why a 20-robot step takes about 2 ms instead of 15."""
@@ -73,7 +73,7 @@ def _solve_qp(vhat, A, b):
     n = vhat.shape[1]
     H = cvxopt.spmatrix(2.0, range(2 * n), range(2 * n))
     f = cvxopt.matrix(-2.0 * vhat.reshape(-1, order="F"))
-    kkt = _StructuredKkt(A)
+    kkt = _StructuredKkt(A, structured=not bit_exact)
     # A few entries per row: sparse, cvxopt's own products with G are cheap too; below
     # STRUCTURED_KKT_FROM_ROBOTS dense, exactly as rps hands it over (setting up the sparse one costs more).
     G = cvxopt.spmatrix(kkt.entries, kkt.rows, kkt.columns, A.shape) if kkt.usable else cvxopt.matrix(A)
@@ -95,7 +95,7 @@ class _StructuredKkt:
     iteration for 20 robots). The iterates are cvxopt's; the answers agree with rps's to ~1e-11
     (tests/python/test_barriers.py)."""
 
-    def __init__(self, A):
+    def __init__(self, A, structured=True):
         self.rows, self.columns = np.nonzero(A)  # A's few entries, for products without a dense BLAS call
         self.entries = A[self.rows, self.columns]
         rows, columns = A.shape
@@ -104,7 +104,7 @@ class _StructuredKkt:
         blocks = A.reshape(rows, columns // 2, 2) if columns % 2 == 0 else None
         touched = np.any(blocks != 0, axis=2) if blocks is not None else None
         # Below ~10 robots cvxopt's own dense step is as fast (tests/benchmarks/python_barrier_benchmark.py).
-        self.usable = (STRUCTURED_KKT_FROM_ROBOTS is not None and columns >= 2 * STRUCTURED_KKT_FROM_ROBOTS
+        self.usable = (structured and columns >= 2 * STRUCTURED_KKT_FROM_ROBOTS
                        and blocks is not None
                        and bool(np.all(touched.sum(axis=1) <= 2)))
         if not self.usable:
@@ -200,7 +200,7 @@ def _octagon_rows(n, magnitude_limit, first_side_unscaled, A, b, row):
     return row + 8 * n
 
 
-def _single_integrator(safety_radius, barrier_gain, magnitude_limit, boundary, name):
+def _single_integrator(safety_radius, barrier_gain, magnitude_limit, boundary, name, bit_exact):
     _cvxopt()  # fail at creation, naming the package, rather than at the first step
     safety_radius = _positive("safety_radius", safety_radius)
     barrier_gain = _positive("barrier_gain", barrier_gain)
@@ -224,7 +224,7 @@ def _single_integrator(safety_radius, barrier_gain, magnitude_limit, boundary, n
         if boundary is not None:
             row = _wall_rows(x, safety_radius, barrier_gain, boundary, A, b, row)
         _octagon_rows(n, magnitude_limit, boundary is None, A, b, row)
-        v = _solve_qp(np.copy(dxi), A, b)
+        v = _solve_qp(np.copy(dxi), A, b, bit_exact)
         if v is None:
             warnings.warn("%s: QP failed. Commanding zero velocities." % name)
             return np.zeros((2, n))
@@ -233,24 +233,27 @@ def _single_integrator(safety_radius, barrier_gain, magnitude_limit, boundary, n
     return barrier_certificate
 
 
-def create_si_barrier_certificate(safety_radius=0.15, barrier_gain=100.0, magnitude_limit=0.2):
-    """rps's single-integrator certificate without boundary: f(dxi, x) -> safe dxi (2 x N)."""
-    return _single_integrator(safety_radius, barrier_gain, magnitude_limit, None, "create_si_barrier_certificate")
+def create_si_barrier_certificate(safety_radius=0.15, barrier_gain=100.0, magnitude_limit=0.2, *, bit_exact=False):
+    """rps's single-integrator certificate without boundary: f(dxi, x) -> safe dxi (2 x N).
+    bit_exact=True (every factory here has it): rps's own dense KKT step at every size, so the
+    commands are rps's bit for bit; otherwise within ~1e-11 and faster from 10 robots."""
+    return _single_integrator(safety_radius, barrier_gain, magnitude_limit, None, "create_si_barrier_certificate",
+                              bit_exact)
 
 
 def create_si_barrier_certificate_with_boundary(safety_radius=0.15, barrier_gain=100.0, magnitude_limit=0.2,
-                                                boundary_points=None):
+                                                boundary_points=None, *, bit_exact=False):
     """rps's single-integrator certificate with the walls of `boundary_points`
     ([x_min, x_max, y_min, y_max]; default [-1.7, 1.7, -1.1, 1.1] as in rps)."""
     return _single_integrator(safety_radius, barrier_gain, magnitude_limit,
                               _boundary(boundary_points, SINGLE_INTEGRATOR_BOUNDARY),
-                              "create_si_barrier_certificate_with_boundary")
+                              "create_si_barrier_certificate_with_boundary", bit_exact)
 
 
-def _unicycle(safety_radius, barrier_gain, projection_distance, velocity_magnitude_limit, boundary, name):
+def _unicycle(safety_radius, barrier_gain, projection_distance, velocity_magnitude_limit, boundary, name, bit_exact):
     d = _positive("projection_distance", projection_distance)
     si = _single_integrator(_positive("safety_radius", safety_radius) + 2 * d, barrier_gain, velocity_magnitude_limit,
-                            boundary, name)
+                            boundary, name, bit_exact)
 
     def barrier_unicycle(dxu, x, obstacles=None):
         dxu = _columns("dxu", dxu, 2)
@@ -284,16 +287,18 @@ def _unicycle(safety_radius, barrier_gain, projection_distance, velocity_magnitu
 
 
 def create_uni_barrier_certificate(barrier_gain=100.0, safety_radius=0.15, projection_distance=0.05,
-                                   velocity_magnitude_limit=0.2):
+                                   velocity_magnitude_limit=0.2, *, bit_exact=False):
     """rps's unicycle certificate without boundary (the one Robotarium.initialize() drives the
     robots onto their start poses with): f(dxu, x) -> safe dxu."""
     return _unicycle(safety_radius, barrier_gain, projection_distance, velocity_magnitude_limit, None,
-                     "create_uni_barrier_certificate")
+                     "create_uni_barrier_certificate", bit_exact)
 
 
 def create_uni_barrier_certificate_with_boundary(safety_radius=0.12, barrier_gain=150.0, projection_distance=0.03,
-                                                 velocity_magnitude_limit=0.2, boundary_points=None):
+                                                 velocity_magnitude_limit=0.2, boundary_points=None, *,
+                                                 bit_exact=False):
     """rps's unicycle certificate with boundary (the examples' and most scripts'):
     f(dxu, x, obstacles=None) -> safe dxu; `obstacles` are 2 x M points kept clear of."""
     return _unicycle(safety_radius, barrier_gain, projection_distance, velocity_magnitude_limit,
-                     _boundary(boundary_points, UNICYCLE_BOUNDARY), "create_uni_barrier_certificate_with_boundary")
+                     _boundary(boundary_points, UNICYCLE_BOUNDARY), "create_uni_barrier_certificate_with_boundary",
+                     bit_exact)

@@ -1,6 +1,6 @@
 """Entry points for the C++ tool that embeds Python (agents/python_embedded/PythonAgentHost).
 
-`dream-agent --python-host`, the process `dream run`, `dream agent` (so also `dream launch`) and
+`dream-agent-shared --python-host`, the process `dream run`, `dream agent` (so also `dream launch`) and
 `dream lab-replay` start for their Python controllers, hosts the agents on its own memq:// bus
 through these calls, and the command relays the run's messages to it; the work is done by
 AgentHost and ControllerSpec, the same code a Robotarium submission runs.

@@ -58,10 +58,14 @@ def main():
                 for mb in re.findall(r"peak resident memory ([0-9.]+) MB", result.stdout + result.stderr):
                     peak_mb = max(peak_mb, float(mb))
             results[layout] = best
+    # The targets docs/performance.md holds these figures to (HRVO circle, 10 robots, a quiet machine); the
+    # memory is the largest VmHWM any agent process of any launch reported, so one heavy agent shows.
     print(f"{args.config}, {args.steps} steps, best of {args.repeat}:")
-    print(f"  one process (dream run, memq):              {results['run']:9.0f} steps/s")
-    print(f"  one process per robot (dream launch, udpm): {results['launch']:9.0f} steps/s")
-    print(f"  largest agent peak resident memory:         {peak_mb:9.1f} MB")
+    print(f"  one process (dream run, memq):              {results['run']:9.0f} steps/s (target >= 20,000)")
+    print(f"  one process per robot (dream launch, udpm): {results['launch']:9.0f} steps/s (target >= 1,600)")
+    print(f"  largest agent peak resident memory:         {peak_mb:9.1f} MB      (target < 9 MB)")
+    if peak_mb == 0.0:
+        sys.exit("no agent reported its peak resident memory")
 
 
 if __name__ == "__main__":

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "../bridge/bridge_test_support.h"
+#include "run_arrays.h"
 #include "dream/calibration/calibration_run.h"
 #include "dream/calibration/lab_calibration.h"
 #include "dream/formats/npy_file.h"
@@ -26,6 +27,7 @@ namespace dream::calibration {
 namespace {
 
 namespace testing = bridge::testing;  // the bridge tests' folders and files
+using test_support::ArraysOf;
 
 constexpr double kDt = robotarium::RobotariumConstants::kTimeStepSeconds;
 constexpr size_t kRestSteps = 30;  // every drive starts from rest, as the real ones did
@@ -167,27 +169,6 @@ std::string Npz(const std::vector<std::pair<std::string, std::string>>& members)
   Put32(&zip, directory_offset);
   Put16(&zip, 0);
   return zip;
-}
-
-// poses 3 x N x T and commands 2 x N x T of a run (C order).
-void ArraysOf(const CalibrationRun& run, formats::NpyArray* poses, formats::NpyArray* commands) {
-  const auto n = static_cast<int64_t>(run.track.num_robots);
-  const auto t = static_cast<int64_t>(run.track.utime.size());
-  poses->shape = {3, n, t};
-  commands->shape = {2, n, t};
-  poses->values.assign(static_cast<size_t>(3 * n * t), 0.0);
-  commands->values.assign(static_cast<size_t>(2 * n * t), 0.0);
-  for (int64_t k = 0; k < t; ++k) {
-    for (int64_t i = 0; i < n; ++i) {
-      const world::Pose2& p = run.track.pose(k, static_cast<int>(i));
-      const world::UnicycleCommand& c = run.track.command(k, static_cast<int>(i));
-      poses->values[static_cast<size_t>((0 * n + i) * t + k)] = p.x_m;
-      poses->values[static_cast<size_t>((1 * n + i) * t + k)] = p.y_m;
-      poses->values[static_cast<size_t>((2 * n + i) * t + k)] = p.theta_rad;
-      commands->values[static_cast<size_t>((0 * n + i) * t + k)] = c.v_mps;
-      commands->values[static_cast<size_t>((1 * n + i) * t + k)] = c.w_radps;
-    }
-  }
 }
 
 formats::NpyArray TimeOf(const CalibrationRun& run) {

@@ -25,6 +25,7 @@
 #include "dream/robotarium/robotarium_constants.h"
 #include "dream/world/printf_text.h"
 #include "dream/world/realistic_world.h"
+#include "run_arrays.h"
 
 namespace dream::calibration {
 namespace {
@@ -58,6 +59,7 @@ world::RealismParams SyntheticLab() {
 }
 
 using calibration_drive::CalibrationDrive;
+using test_support::ArraysOf;
 
 // The calibration program's start poses and commands as the world takes them.
 std::vector<world::Pose2> StartPoses(int robots) {
@@ -352,27 +354,6 @@ class CalibrationFileTest : public ::testing::Test {
   }
   fs::path dir_;
 };
-
-// 3 x N x T poses and 2 x N x T commands of a run, as arrays.
-void ArraysOf(const CalibrationRun& run, formats::NpyArray* poses, formats::NpyArray* commands) {
-  const auto n = static_cast<int64_t>(run.track.num_robots);
-  const auto t = static_cast<int64_t>(run.track.utime.size());
-  poses->shape = {3, n, t};
-  commands->shape = {2, n, t};
-  poses->values.assign(static_cast<size_t>(3 * n * t), 0.0);
-  commands->values.assign(static_cast<size_t>(2 * n * t), 0.0);
-  for (int64_t k = 0; k < t; ++k) {
-    for (int64_t i = 0; i < n; ++i) {
-      const world::Pose2& p = run.track.pose(k, static_cast<int>(i));
-      const world::UnicycleCommand& c = run.track.command(k, static_cast<int>(i));
-      poses->values[static_cast<size_t>((0 * n + i) * t + k)] = p.x_m;
-      poses->values[static_cast<size_t>((1 * n + i) * t + k)] = p.y_m;
-      poses->values[static_cast<size_t>((2 * n + i) * t + k)] = p.theta_rad;
-      commands->values[static_cast<size_t>((0 * n + i) * t + k)] = c.v_mps;
-      commands->values[static_cast<size_t>((1 * n + i) * t + k)] = c.w_radps;
-    }
-  }
-}
 
 TEST_F(CalibrationFileTest, ReadsMatFilesAndRefusesShapesThatDisagree) {
   const CalibrationRun run = SyntheticRun(world::RealismParams::Lab(), 3, 2, 1);

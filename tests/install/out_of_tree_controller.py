@@ -46,7 +46,7 @@ def parse_args():
 
 
 def installed_files_are_there(prefix):
-    for relative in ["bin/dream", "bin/dream-agent", "lib/libdream_agent_host.so", "lib/libdream_agents.so",
+    for relative in ["bin/dream", "bin/dream-agent", "bin/dream-agent-shared", "lib/libdream_agent_host.so", "lib/libdream_agents.so",
                      "include/dream/agent_host/controller_plugin.h", "include/dream/agents/framework/robot.h",
                      "include/dream/kind_api/controller_kind.h", "lib/libdream_kind_api.so",
                      "include/dream/go_to_goal/kind.h", "lib/libdream_go_to_goal.so",
@@ -60,14 +60,18 @@ def installed_files_are_there(prefix):
 
 
 def tools_find_libraries_relative_to_themselves(ctx, prefix, build):
-    """The installed tools' RUNPATH is $ORIGIN-relative and never names the build tree."""
+    """The installed tools' RUNPATH is $ORIGIN-relative and never names the build tree; dream-agent, which holds
+    the dream libraries it needs, has none and loads no dream library."""
     if shutil.which("readelf") is None:
         return
-    for tool in ("dream", "dream-agent"):
+    for tool in ("dream", "dream-agent-shared", "dream-agent"):
         _, dynamic = ctx.run(["readelf", "-d", os.path.join(prefix, "bin", tool)], expect=0)
         runpath = [line for line in dynamic.splitlines() if "RUNPATH" in line or "RPATH" in line]
-        check(runpath and "$ORIGIN" in runpath[0], f"bin/{tool} has no $ORIGIN run path: {runpath}")
         check(os.path.realpath(build) not in dynamic, f"bin/{tool} still names the build tree: {runpath}")
+        if tool == "dream-agent":
+            check(not runpath and "libdream_" not in dynamic, f"bin/{tool} loads dream libraries: {dynamic}")
+        else:
+            check(runpath and "$ORIGIN" in runpath[0], f"bin/{tool} has no $ORIGIN run path: {runpath}")
 
 
 def build_example(ctx, args, prefix):

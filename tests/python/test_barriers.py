@@ -88,6 +88,35 @@ class StructuredKktTest(unittest.TestCase):
                         compared += 1
         self.assertEqual(compared, 180)
 
+    def test_bit_exact_hands_cvxopt_rps_dense_problem(self):
+        """bit_exact=True (the check-submission stand-in's certificates): at 20 robots, where the
+        structured step is otherwise taken, cvxopt gets a dense G and its own KKT solver, as in rps,
+        and the commands are those of that call bit for bit."""
+        import cvxopt
+        import cvxopt.solvers
+        real = cvxopt.solvers.qp
+        calls = []
+
+        def spy(P, q, G, h, kktsolver=None, **kwargs):
+            calls.append((type(G).__name__, kktsolver))
+            return real(P, q, G, h, kktsolver=kktsolver, **kwargs)
+
+        rng = np.random.default_rng(11)
+        n = 20
+        x = np.vstack([rng.uniform(-1.3, 1.3, n), rng.uniform(-0.8, 0.8, n), rng.uniform(-np.pi, np.pi, n)])
+        dxu = np.vstack([rng.uniform(-0.2, 0.2, n), rng.uniform(-2, 2, n)])
+        try:
+            cvxopt.solvers.qp = spy
+            exact = barriers.create_uni_barrier_certificate_with_boundary(bit_exact=True)(dxu, x)
+            fast = barriers.create_uni_barrier_certificate_with_boundary()(dxu, x)
+        finally:
+            cvxopt.solvers.qp = real
+        self.assertEqual(calls[0], ("matrix", None))  # rps's dense G, cvxopt's own KKT step
+        self.assertEqual(calls[1][0], "spmatrix")  # the structured step, for contrast
+        self.assertIsNotNone(calls[1][1])
+        np.testing.assert_allclose(exact, fast, rtol=0, atol=1e-9)
+
+
 class InputTest(unittest.TestCase):
     def test_one_robot_passes_unchanged(self):
         dxu = np.array([[5.0], [9.0]])

@@ -9,7 +9,7 @@ Calls the four certificates of rps/utilities/barrier_certificates.py
 create_uni_barrier_certificate[_with_boundary]) with their defaults and with
 other parameters, on random robot states (some crowded, some at the walls, some
 with obstacle points), and writes every input and output to a JSON fixture
-(default: stdout). tests/agents/barriers_test.cc and tests/python/test_barriers.py
+(default: stdout). tests/barriers/barriers_test.cc and tests/python/test_barriers.py
 compare dream::barriers and dream.barriers with it (1e-5); the
 barriers_reference_live test runs this with a fresh seed and the C++ test on
 its output. Needs numpy and cvxopt (Debian: /usr/bin/python3 with

@@ -1,6 +1,6 @@
 // ExperimentGoal as a verdict reason: a missed goal (metrics.goal, the kind's
 // own rule) is the reason "goal" (not_ready); a kind without a rule never is.
-// The rules themselves are tested with their kinds (tests/agents/goal_rules_test.cc).
+// The rules themselves are tested with their kinds (tests/agent_host/goal_rules_test.cc).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 

@@ -183,7 +183,7 @@ PythonHostProcess::~PythonHostProcess() {
     ended_ = true;  // the bus's handler forwards nothing more
   }
   if (!ended) {
-    // The end of the stream stops it (dream-agent --python-host); a grace
+    // The end of the stream stops it (dream-agent-shared --python-host); a grace
     // period, then the group goes, whatever it forked or ignores.
     link_->Shutdown();
     const auto until = Clock::now() + std::chrono::duration<double>(kGraceS);

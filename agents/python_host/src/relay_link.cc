@@ -8,6 +8,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "dream/lcm/big_endian.h"
+
 namespace dream::python_host {
 namespace {
 
@@ -17,11 +19,7 @@ void PutUint32(uint32_t value, std::string* out) {
   for (int shift = 24; shift >= 0; shift -= 8) out->push_back(static_cast<char>((value >> shift) & 0xff));
 }
 
-uint32_t GetUint32(const char* bytes) {
-  uint32_t value = 0;
-  for (int i = 0; i < 4; ++i) value = (value << 8) | static_cast<unsigned char>(bytes[i]);
-  return value;
-}
+uint32_t GetUint32(const char* bytes) { return static_cast<uint32_t>(lcm::BigEndianAt(bytes, 4)); }
 
 }  // namespace
 

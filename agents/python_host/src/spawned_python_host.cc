@@ -36,10 +36,12 @@ constexpr size_t kMaxTraceBytes = 1 << 16;
 
 }  // namespace
 
-// dream-agent --python-host in its own process group, with the link, the
-// faulthandler pipe and the shared call cell on descriptors 3, 4 and 5.
+// dream-agent-shared --python-host in its own process group, with the link,
+// the faulthandler pipe and the shared call cell on descriptors 3, 4 and 5.
+// The shared build: the embedded module it loads links the shared dream
+// libraries, which dream-agent holds a copy of.
 SpawnedPythonHost SpawnedPythonHost::Start() {
-  const std::string binary = process::DataFiles::AgentBinary();
+  const std::string binary = process::DataFiles::SharedAgentBinary();
   const std::string option = "--python-host";
   char* argv[] = {const_cast<char*>(binary.c_str()), const_cast<char*>(option.c_str()), nullptr};
   int sockets[2];

@@ -99,10 +99,11 @@ double WorldTimeout(const config::ConfigNode& root, const char* key) {
 
 }  // namespace
 
-int RunAgents(const AgentArgs& args) {
+int RunAgents(const AgentArgs& args, const std::function<void()>& hand_over_plugins) {
   // The controller's part only: an agent does no world work (and does not link the world).
   const config_overrides::OverriddenConfig overridden(args.config_path, args.seed, args.sets);
   const config::ControllerConfig config = overridden.LoadController();
+  if (!config.plugins.empty() && hand_over_plugins) hand_over_plugins();
   const std::vector<int> ids = ParseRobotList(args.robots, config.num_robots);
   lcm::LcmBus bus(lcm::ResolveLcmUrl(args.lcm_url));
   auto host = std::make_unique<hosting::HostedAgents>(

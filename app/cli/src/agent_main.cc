@@ -3,19 +3,55 @@
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <functional>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 
 #include "commands.h"
 #include "dream/config/config_error.h"
+#include "dream/process/data_files.h"
 #include "dream/python_host/python_host_child.h"
 #include "shared_options.h"
+
+namespace {
+
+// dream-agent holds its own copy of the dream libraries (static archives,
+// app/cli/CMakeLists.txt), so a library that links the shared ones must not
+// be loaded into it: the same words go to dream-agent-shared instead.
+[[noreturn]] void ExecSharedAgent(char** argv) {
+  const std::string binary = dream::process::DataFiles::SharedAgentBinary();
+  argv[0] = const_cast<char*>(binary.c_str());
+  ::execv(binary.c_str(), argv);
+  throw std::runtime_error("cannot start " + binary + " for the config's controller plugins (" + std::strerror(errno) +
+                           "); it is built and installed next to dream-agent");
+}
+
+#ifdef DREAM_AGENT_HOLDS_DREAM_LIBRARIES
+constexpr bool kHoldsDreamLibraries = true;
+#else
+constexpr bool kHoldsDreamLibraries = false;
+#endif
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace dream::cli;
   // Started by PythonHostProcess, not by a user: no options of its own.
   if (argc == 2 && std::string(argv[1]) == "--python-host") {
     spdlog::set_pattern("[%H:%M:%S.%e] [%^%l%$] %v");
+    if (kHoldsDreamLibraries) {
+      try {
+        ExecSharedAgent(argv);
+      } catch (const std::exception& e) {
+        std::cerr << "dream-agent --python-host: " << e.what() << '\n';
+        return kExitInputError;
+      }
+    }
     InstallStopSignals();
     dream::python_host::PythonHostChild::Run(StopFlag(), {kExitOk, kExitUsage, kExitInputError, kExitRunFailed});
   }
@@ -38,7 +74,9 @@ int main(int argc, char** argv) {
   spdlog::set_level(quiet ? spdlog::level::warn : verbose ? spdlog::level::debug : spdlog::level::info);
   InstallStopSignals();
   try {
-    return RunAgents(args);
+    std::function<void()> hand_over_plugins;
+    if (kHoldsDreamLibraries) hand_over_plugins = [argv] { ExecSharedAgent(argv); };
+    return RunAgents(args, hand_over_plugins);
   } catch (const std::exception& e) {
     std::cerr << "dream agent: " << e.what() << '\n';
     return kExitInputError;

@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -65,7 +66,10 @@ std::string VersionLine();
 
 int RunEmbedded(const RunArgs& args);
 int RunSimOnly(const RunArgs& args);
-int RunAgents(const AgentArgs& args);
+/// `hand_over_plugins`, when given, is called instead of loading the plugins
+/// a config names (dream-agent, which holds its own copy of the dream
+/// libraries, execs dream-agent-shared with the same words); it does not return.
+int RunAgents(const AgentArgs& args, const std::function<void()>& hand_over_plugins = nullptr);
 int RunLaunch(const RunArgs& args);
 int RunLogInfo(const std::string& path);
 /// Compares the payloads of each channel matching `channel_regex`, in order

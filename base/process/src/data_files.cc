@@ -43,4 +43,8 @@ std::string DataFiles::PythonHostModule() {
 
 std::string DataFiles::AgentBinary() { return (fs::path(SelfExecutable()).parent_path() / "dream-agent").string(); }
 
+std::string DataFiles::SharedAgentBinary() {
+  return (fs::path(SelfExecutable()).parent_path() / "dream-agent-shared").string();
+}
+
 }  // namespace dream::process

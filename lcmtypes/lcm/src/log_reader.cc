@@ -8,6 +8,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "dream/lcm/big_endian.h"
+
 namespace dream::lcm {
 namespace {
 
@@ -21,11 +23,7 @@ constexpr int64_t kEventHeaderBytes = 4 + 8 + 8 + 4 + 4;
 // LCM itself refuses channel names longer than this.
 constexpr int64_t kMaxChannelBytes = 256;
 
-uint64_t BigEndian(const unsigned char* bytes, int count) {
-  uint64_t value = 0;
-  for (int i = 0; i < count; ++i) value = (value << 8) | bytes[i];
-  return value;
-}
+uint64_t BigEndian(const unsigned char* bytes, int count) { return BigEndianAt(bytes, static_cast<size_t>(count)); }
 
 }  // namespace
 

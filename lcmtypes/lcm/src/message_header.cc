@@ -1,12 +1,11 @@
 #include "dream/lcm/message_header.h"
 
+#include "dream/lcm/big_endian.h"
+
 namespace dream::lcm {
 
 int64_t MessageHeader::Int64At(const void* data, size_t at) {
-  const auto* bytes = static_cast<const unsigned char*>(data) + at;
-  uint64_t value = 0;
-  for (size_t i = 0; i < 8; ++i) value = (value << 8) | bytes[i];
-  return static_cast<int64_t>(value);
+  return static_cast<int64_t>(BigEndianAt(static_cast<const unsigned char*>(data) + at, 8));
 }
 
 std::optional<MessageHeader> MessageHeader::Read(const void* data, size_t size) {

@@ -4,7 +4,7 @@
 
 namespace dream::python_host {
 
-/// `dream-agent --python-host`: the process that hosts Python controllers for
+/// `dream-agent-shared --python-host`: the process that hosts Python controllers for
 /// PythonHostProcess, which started it with the link on descriptor 3, the
 /// faulthandler pipe on 4 and the shared call cell on 5. Its own memq:// bus
 /// holds the embedded Python host; the link relays the world's messages in and

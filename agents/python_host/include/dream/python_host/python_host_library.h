@@ -11,7 +11,7 @@
 namespace dream::python_host {
 
 /// The Python agent host module (agents/python_embedded), loaded with dlopen only
-/// by the process that hosts Python controllers (dream-agent --python-host,
+/// by the process that hosts Python controllers (dream-agent-shared --python-host,
 /// started by PythonHostProcess), so the tools never map libpython.
 class PythonHostLibrary {
  public:
@@ -25,7 +25,7 @@ class PythonHostLibrary {
   /// still running after 0.8 x the first, or its loading and setup() after
   /// 0.8 x the second, is stopped as failed; `cell` is where the calls are
   /// marked, shared with the process that watches this one. Called before
-  /// Check and Create (dream-agent --python-host); until then the watchdog
+  /// Check and Create (dream-agent-shared --python-host); until then the watchdog
   /// uses the defaults (config::SimNodeOptions). The stop given to Get()
   /// always interrupts a running controller.
   void Watch(double agent_timeout_s, double start_timeout_s, std::atomic<int64_t>* cell) const;

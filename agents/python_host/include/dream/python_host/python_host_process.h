@@ -18,7 +18,7 @@
 
 namespace dream::python_host {
 
-/// Python controllers in a process of their own (`dream-agent --python-host`,
+/// Python controllers in a process of their own (`dream-agent-shared --python-host`,
 /// in its own process group), relayed to and from a bus of this one over a
 /// socket: nothing a controller does can take the command hosting it down or
 /// hide from it. os._exit() or a crash ends only that process: its robots are

@@ -9,7 +9,7 @@
 
 namespace dream::python_host {
 
-/// The process that hosts Python controllers (`dream-agent --python-host`),
+/// The process that hosts Python controllers (`dream-agent-shared --python-host`),
 /// started in a process group of its own with the link to it (a socket), the
 /// pipe its faulthandler writes tracebacks to, and the call cell the two share
 /// (which call it is in, and since when) on its descriptors 3, 4 and 5.
@@ -24,7 +24,7 @@ struct SpawnedPythonHost {
   std::atomic<int64_t>* cell = nullptr;
 
   /// @throws std::runtime_error naming the step that failed (socketpair,
-  /// pipe, memfd, fork, exec of dream-agent) and the OS error.
+  /// pipe, memfd, fork, exec of dream-agent-shared) and the OS error.
   static SpawnedPythonHost Start();
 };
 

@@ -25,6 +25,11 @@ class DataFiles {
   /// The dream-agent program, next to the running one (dream and dream-agent
   /// are built and installed side by side).
   static std::string AgentBinary();
+  /// dream-agent-shared, next to the running program: dream-agent linked
+  /// against the shared dream libraries, for what loads a library that links
+  /// them (controller plugins, the embedded Python module); dream-agent holds
+  /// its own copy of the dream code.
+  static std::string SharedAgentBinary();
   /// True when the running executable is the one in its build tree.
   static bool RunningFromBuildTree();
 

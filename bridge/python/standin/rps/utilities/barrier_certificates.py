@@ -8,10 +8,21 @@ import numpy as np  # noqa: F401  (the official module has it: `import *` script
 from rps.utilities._dream_toolbox import dream_package
 
 _barriers = dream_package().barriers
-# The stand-in's private copy solves as rps does bit for bit (no structured KKT step), so its
-# start-up drive and an exported script's barrier equal the official simulator's exactly.
-_barriers.STRUCTURED_KKT_FROM_ROBOTS = None
-create_uni_barrier_certificate = _barriers.create_uni_barrier_certificate
-create_uni_barrier_certificate_with_boundary = _barriers.create_uni_barrier_certificate_with_boundary
-create_si_barrier_certificate = _barriers.create_si_barrier_certificate
-create_si_barrier_certificate_with_boundary = _barriers.create_si_barrier_certificate_with_boundary
+
+
+# The stand-in's certificates solve as rps does bit for bit (bit_exact), so its start-up drive and
+# an exported script's barrier equal the official simulator's exactly.
+def create_uni_barrier_certificate(*args, **kwargs):
+    return _barriers.create_uni_barrier_certificate(*args, bit_exact=True, **kwargs)
+
+
+def create_uni_barrier_certificate_with_boundary(*args, **kwargs):
+    return _barriers.create_uni_barrier_certificate_with_boundary(*args, bit_exact=True, **kwargs)
+
+
+def create_si_barrier_certificate(*args, **kwargs):
+    return _barriers.create_si_barrier_certificate(*args, bit_exact=True, **kwargs)
+
+
+def create_si_barrier_certificate_with_boundary(*args, **kwargs):
+    return _barriers.create_si_barrier_certificate_with_boundary(*args, bit_exact=True, **kwargs)

@@ -15,7 +15,7 @@
 #include "dream/config/config_error.h"
 #include "dream/run_config/run_config.h"
 #include "../support/factory_error.h"
-#include "scenario_runner.h"
+#include "scenario_runner.h"  // tests/kinds
 
 namespace dream::agents {
 namespace {
