@@ -106,6 +106,10 @@ def main(argv):
             _report_failure(done, script)
         raise
     except BaseException as error:  # noqa: B036 - the script's error, whatever it is, is reported
+        from rps._world_link import WorldGone
+        if isinstance(error, WorldGone):  # --steps, or the world stopped: not the script's fault
+            print(f"dream run: {_script_line(error, script)}: {error}", file=sys.stderr)
+            return 0
         _report_failure(error, script)
         return 1
     finally:

@@ -10,11 +10,16 @@
 #include "dream/lcm/lcm_url.h"
 #include "run_output.h"
 #include "run_view.h"
+#include "script_command.h"
 #include "shared_options.h"
 
 namespace dream::cli {
 
 int RunEmbedded(const RunArgs& args) {
+  if (IsScriptPath(args.config_path)) {
+    if (args.view) throw std::invalid_argument("dream run SCRIPT.py: --view is not supported for scripts yet");
+    return RunScript(args, {});
+  }
   const std::unique_ptr<session::RunSession> run = OpenRunSession(args);
   const run_config::RunConfig& config = run->config();
   CheckStartupDrive(config);
@@ -51,6 +56,7 @@ void DeclareRunCommand(CommandLine& line) {
       AddRunCommand(line, "run",
                     "Run an experiment in one process: the simulator and every robot's agent on one bus.\n"
                     "Example: dream run config/go_to_goal.yaml --seed 7 --set controller.max_speed_mps=0.1\n"
+                    "An unmodified Robotarium script: dream run my_script.py (docs/robotarium-scripts.md)\n"
                     "Watch it: dream run config/go_to_goal.yaml --view (then open http://127.0.0.1:8077/)",
                     RunEmbedded, "LCM URL (default memq://, in-process)");
   CLI::Option* const view =

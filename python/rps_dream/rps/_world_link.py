@@ -62,6 +62,7 @@ class WorldLink:
         self._fresh = None       # (message, 3 x n poses) of a step not yet handed out
         self._current = None     # the message of the step handed out last
         self._answers = []       # that step's encoded commands, sent again on a resend
+        self.answered = True     # whether the step handed out last has been answered
         self.ended = False
         self.end_detail = ""
         self.bus.subscribe("DREAM_POSES", self._on_poses)
@@ -105,6 +106,7 @@ class WorldLink:
                 raise WorldGone(f"no step from DREAM's world for {SILENCE_LIMIT_S:g} s on {self.url}")
         self._current, poses = self._fresh
         self._fresh = None
+        self.answered = False
         return poses
 
     def send(self, velocities, done=False):
@@ -117,6 +119,7 @@ class WorldLink:
             command.robot_id, command.agent_id = i, self.agent_id
             command.v, command.w, command.done = float(velocities[0, i]), float(velocities[1, i]), bool(done)
             self._answers.append((f"DREAM_CMD_{i}", command.encode()))
+        self.answered = True
         for channel, answer in self._answers:
             self.bus.publish(channel, answer)
 

@@ -153,7 +153,8 @@ class Robotarium:
             return
         self._finished = True
         try:
-            self._link.next_poses()
+            if self._link.answered:  # else the script read a step's poses and stopped before step()
+                self._link.next_poses()
             self._link.send(np.zeros((2, self.number_of_robots)), done=True)
         except WorldGone:
             pass
