@@ -85,8 +85,8 @@ def create_uni_to_si_mapping(projection_distance=0.05):
     def uni_to_si(dxu, states):
         dxu, states = pair("uni_to_si", "dxu", dxu, 2, "states", states, 3)
         c, s = _headings(states)
-        lateral = d * dxu[1, :]
-        return np.vstack([_dot(c, dxu[0, :], -s, lateral), _dot(s, dxu[0, :], c, lateral)])
+        # rps's R @ T: its second column is d * (-sin, cos), rounded as that product rounds.
+        return np.vstack([_dot(c, dxu[0, :], -s * d, dxu[1, :]), _dot(s, dxu[0, :], c * d, dxu[1, :])])
 
     def si_to_uni(uni_states, si_states):
         uni_states, si_states = pair("si_to_uni", "uni_states", uni_states, 3, "si_states", si_states, 2)
