@@ -102,8 +102,10 @@ def main(argv):
     try:
         runpy.run_path(script, run_name="__main__")
     except SystemExit as done:
-        if done.code not in (None, 0):
-            _report_failure(done, script)
+        if done.code not in (None, 0):  # as Python ends it (no traceback); the world is told the robots failed
+            from rps import robotarium
+            if robotarium.made() is not None:
+                robotarium.made().fail(f"{_script_line(done, script)}: the script exited with {done.code!r}")
         raise
     except BaseException as error:  # noqa: B036 - the script's error, whatever it is, is reported
         from rps._world_link import WorldGone
