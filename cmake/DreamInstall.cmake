@@ -6,7 +6,7 @@
 #   P/lib/cmake/dream  the CMake package: find_package(dream) -> dream::agent_host ...
 #   P/share/dream/java    dream_lcmtypes.jar (dream spy)
 #   P/share/dream/python  the Python lcmtypes (package dream) and python/*.py
-#   P/share/dream/python-runtime  the Python controller runtime (python/dream)
+#   P/share/dream/python-runtime  the Python controller runtime (python/dream) and the rps of scripts (python/rps_dream)
 #   P/share/dream/bridge  the check-submission runner and stand-in simulator
 include(CMakePackageConfigHelpers)
 
@@ -88,6 +88,11 @@ install(FILES ${PROJECT_SOURCE_DIR}/python/dream_log.py DESTINATION ${DREAM_INST
 # The Python controller runtime (package dream) apart from lcm-gen's package of
 # the same name: the tools that host Python controllers join the two.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/python/dream
+  DESTINATION ${DREAM_INSTALL_DATADIR}/python-runtime
+  FILES_MATCHING PATTERN "*.py"
+  PATTERN "__pycache__" EXCLUDE)
+# DREAM's rps for unmodified Robotarium scripts (dream run SCRIPT.py), beside the runtime it loads.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/python/rps_dream
   DESTINATION ${DREAM_INSTALL_DATADIR}/python-runtime
   FILES_MATCHING PATTERN "*.py"
   PATTERN "__pycache__" EXCLUDE)

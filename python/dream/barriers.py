@@ -266,8 +266,8 @@ def _unicycle(safety_radius, barrier_gain, projection_distance, velocity_magnitu
         # The point d ahead of each robot, and its velocity: R(theta) diag(1, d) (v, w).
         xi = x[0:2, :] + d * np.array([np.cos(x[2, :]), np.sin(x[2, :])])
         cos, sin = np.cos(x[2, :]), np.sin(x[2, :])
-        turned = d * dxu[1, :]
-        dxi = np.array([cos * dxu[0, :] - sin * turned, sin * dxu[0, :] + cos * turned])
+        # Rounded as rps's R @ T @ dxu rounds (matmul sums from +0.0), so the certificate is rps's bit for bit.
+        dxi = np.array([0.0 + cos * dxu[0, :] + (-sin * d) * dxu[1, :], 0.0 + sin * dxu[0, :] + (cos * d) * dxu[1, :]])
         if obstacles is not None and np.size(obstacles) > 0:
             obstacles = _columns("obstacles", obstacles, 2)
             xi = np.hstack((xi, obstacles))
@@ -281,7 +281,8 @@ def _unicycle(safety_radius, barrier_gain, projection_distance, velocity_magnitu
             return np.zeros((2, n))
         # Back through R(theta)' and diag(1, 1/d).
         safe = safe[:, :n]
-        return np.array([cos * safe[0] + sin * safe[1], (-sin * safe[0] + cos * safe[1]) / d])
+        # As rps's T @ R @ safe: the second row (1/d) * (-sin, cos).
+        return np.array([0.0 + cos * safe[0] + sin * safe[1], 0.0 + ((1 / d) * -sin) * safe[0] + ((1 / d) * cos) * safe[1]])
 
     return barrier_unicycle
 

@@ -66,7 +66,8 @@ def create_si_to_uni_mapping(projection_distance=0.05):
     def si_to_uni(dxi, states):
         dxi, states = pair("si_to_uni", "dxi", dxi, 2, "states", states, 3)
         c, s = _headings(states)
-        return np.vstack([_dot(c, dxi[0, :], s, dxi[1, :]), _dot(-s / d, dxi[0, :], c / d, dxi[1, :])])
+        # rps's T @ R: its second row is (1/d) * (-sin, cos), rounded as that product rounds.
+        return np.vstack([_dot(c, dxi[0, :], s, dxi[1, :]), _dot((1 / d) * -s, dxi[0, :], (1 / d) * c, dxi[1, :])])
 
     def uni_to_si(states):
         states = rows("uni_to_si", "states", states, 3)
@@ -84,8 +85,8 @@ def create_uni_to_si_mapping(projection_distance=0.05):
     def uni_to_si(dxu, states):
         dxu, states = pair("uni_to_si", "dxu", dxu, 2, "states", states, 3)
         c, s = _headings(states)
-        lateral = d * dxu[1, :]
-        return np.vstack([_dot(c, dxu[0, :], -s, lateral), _dot(s, dxu[0, :], c, lateral)])
+        # rps's R @ T: its second column is d * (-sin, cos), rounded as that product rounds.
+        return np.vstack([_dot(c, dxu[0, :], -s * d, dxu[1, :]), _dot(s, dxu[0, :], c * d, dxu[1, :])])
 
     def si_to_uni(uni_states, si_states):
         uni_states, si_states = pair("si_to_uni", "uni_states", uni_states, 3, "si_states", si_states, 2)

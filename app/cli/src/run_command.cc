@@ -1,9 +1,12 @@
 // dream run and dream sim (workflows::RunWorkflow): options and exit codes.
+#include <stdexcept>
+
 #include "command_line.h"
 #include "commands.h"
 #include "dream/process/data_files.h"
 #include "dream/view/frame_rates.h"
 #include "dream/workflows/run_workflow.h"
+#include "script_command.h"
 #include "shared_options.h"
 
 namespace dream::cli {
@@ -16,7 +19,13 @@ workflows::RunWorkflow Workflow() { return {process::DataFiles::PythonRuntimeDir
 
 }  // namespace
 
-int RunEmbedded(const RunArgs& args) { return Workflow().RunEmbedded(args); }
+int RunEmbedded(const RunArgs& args) {
+  if (IsScriptPath(args.config_path)) {
+    if (args.view) throw std::invalid_argument("dream run SCRIPT.py: --view is not supported for scripts yet");
+    return RunScript(args, {});
+  }
+  return Workflow().RunEmbedded(args);
+}
 
 int RunSimOnly(const RunArgs& args) { return Workflow().RunSimOnly(args); }
 
@@ -25,6 +34,7 @@ void DeclareRunCommand(CommandLine& line) {
       AddRunCommand(line, "run",
                     "Run an experiment in one process: the simulator and every robot's agent on one bus.\n"
                     "Example: dream run config/go_to_goal.yaml --seed 7 --set controller.max_speed_mps=0.1\n"
+                    "An unmodified Robotarium script: dream run my_script.py (docs/robotarium-scripts.md)\n"
                     "Watch it: dream run config/go_to_goal.yaml --view (then open http://127.0.0.1:8077/)",
                     RunEmbedded, "LCM URL (default memq://, in-process)");
   CLI::Option* const view =

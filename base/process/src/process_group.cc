@@ -58,6 +58,11 @@ pid_t ProcessGroup::Start(const std::vector<std::string>& argv, const std::strin
 
 pid_t ProcessGroup::Start(const std::vector<std::string>& argv, const std::string& output_path,
                           const std::vector<std::string>& extra_env, int inherited_fd) {
+  return Start(argv, output_path, extra_env, inherited_fd >= 0 ? std::vector<int>{inherited_fd} : std::vector<int>{});
+}
+
+pid_t ProcessGroup::Start(const std::vector<std::string>& argv, const std::string& output_path,
+                          const std::vector<std::string>& extra_env, const std::vector<int>& inherited_fds) {
   if (argv.empty()) throw std::invalid_argument("ProcessGroup::Start: no program");
   // Everything the child needs is made before fork(): after it, the child
   // calls only async-signal-safe functions.
@@ -104,7 +109,9 @@ pid_t ProcessGroup::Start(const std::vector<std::string>& argv, const std::strin
     ::prctl(PR_SET_PDEATHSIG, SIGTERM);
     if (::getppid() != parent) ::_exit(127);
     int error = output_path.empty() ? 0 : RedirectToFile(output_path);
-    if (error == 0 && inherited_fd >= 0 && ::fcntl(inherited_fd, F_SETFD, 0) != 0) error = errno;
+    for (const int fd : inherited_fds) {
+      if (error == 0 && ::fcntl(fd, F_SETFD, 0) != 0) error = errno;
+    }
     if (error == 0) {
       ::execve(program.c_str(), args.data(), envp.data());
       error = errno;

@@ -28,6 +28,9 @@ class ProcessGroup {
   /// the descriptor `inherited_fd` (if >= 0) left open in the child.
   pid_t Start(const std::vector<std::string>& argv, const std::string& output_path,
               const std::vector<std::string>& extra_env, int inherited_fd);
+  /// The same with several descriptors left open in the child.
+  pid_t Start(const std::vector<std::string>& argv, const std::string& output_path,
+              const std::vector<std::string>& extra_env, const std::vector<int>& inherited_fds);
   /// Waits for `pid`; returns its exit code (128 + signal when killed).
   int Wait(pid_t pid);
   /// Waits for `pid` up to `timeout_s`; returns its exit code or -1 on timeout.

@@ -1,0 +1,19 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "commands.h"
+
+namespace dream::cli {
+
+/// Whether `dream run` was given a Robotarium script (a .py file) rather than a config.
+bool IsScriptPath(const std::string& path);
+
+/// `dream run SCRIPT.py [-- ARGS...]` (docs/robotarium-scripts.md): the script
+/// runs in its own process with DREAM's rps, in the run folder; the world is
+/// workflows::ScriptRunWorkflow's. Returns the run's exit code (session::ExitCodeOf),
+/// 4 when the script failed or ended before it made its Robotarium.
+int RunScript(const RunArgs& args, const std::vector<std::string>& script_args);
+
+}  // namespace dream::cli

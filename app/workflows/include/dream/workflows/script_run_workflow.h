@@ -1,0 +1,67 @@
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "dream/lcm/lcm_interface.h"
+#include "dream/session/run_result.h"
+#include "dream/session/run_session.h"
+
+namespace dream::workflows {
+
+/// `dream run SCRIPT.py`'s world (docs/robotarium-scripts.md): an unmodified
+/// Robotarium script, started by the command line with DREAM's rps first on
+/// its path, says at `Robotarium(...)` how many robots it drives and where
+/// the official start-up drive left them (one JSON line, ScriptHello); this
+/// builds the run from that (a run config for those robots and poses, the
+/// command's --seed and --set applied) and runs the world for it, the script
+/// being the one agent of every robot, recorded, judged and reported as any run.
+class ScriptRunWorkflow {
+ public:
+  /// What the script says when it makes its Robotarium.
+  struct Hello {
+    int robots = 0;
+    std::vector<std::array<double, 3>> initial_poses;  ///< where the start-up drive ended
+    long long startup_steps = 0;                       ///< the drive's steps, in the script's debug() count
+  };
+
+  /// The most a hello line may hold: 50 robots' poses need far less.
+  static constexpr size_t kMaxHelloBytes = 64 * 1024;
+
+  struct Options {
+    std::string script_path;  ///< the script, as given
+    long long seed = 1;       ///< the script's and the world's seed
+    std::vector<std::string> sets;
+    long long steps = 0;             ///< --steps; 0: until the script ends (kDefaultSteps at most)
+    std::string python_runtime_dir;  ///< DataFiles::PythonRuntimeDir(): its rps_dream/ folder
+    session::RunSession::Options session;
+  };
+
+  /// A script run's step limit unless --steps says otherwise (about 9 hours simulated).
+  static constexpr long long kDefaultSteps = 1000000;
+
+  /// The run's name: the script's file name without .py, every character a
+  /// run name cannot hold (letters, digits, _ - .) replaced by _.
+  static std::string RunName(const std::string& script_path);
+
+  /// The hello line, checked. @throws std::runtime_error naming the field and
+  /// the bad value (robots 1..50, one finite [x, y, theta] per robot).
+  static Hello ParseHello(const std::string& line);
+
+  /// The run config (YAML) of `hello`'s run, before --seed and --set.
+  static std::string ConfigText(const Hello& hello, const Options& options);
+
+  explicit ScriptRunWorkflow(Options options) : options_(std::move(options)) {}
+
+  /// Writes the config into `run_dir` (robotarium_script.yaml), loads it with
+  /// the overrides and runs the world on `lcm` until the script ends the run
+  /// (every robot done), Options::session.stop is set, or the step limit.
+  /// @throws config::ConfigError naming the file, line and key (a --set's too).
+  session::RunResult Run(const Hello& hello, const std::string& run_dir, lcm::LcmInterface& lcm) const;
+
+ private:
+  Options options_;
+};
+
+}  // namespace dream::workflows

@@ -1,0 +1,123 @@
+#include "dream/workflows/script_run_workflow.h"
+
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+
+#include "dream/config_overrides/overridden_config.h"
+#include "dream/files/atomic_file.h"
+#include "dream/run_config/run_config.h"
+
+namespace dream::workflows {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kMaxScriptRobots = 50;  // the official Robotarium(...) refuses more
+
+std::runtime_error HelloError(const std::string& what) {
+  return std::runtime_error("the script's Robotarium(...) said something dream run cannot use: " + what);
+}
+
+std::array<double, 3> PoseOf(const nlohmann::json& pose, size_t index) {
+  const std::string name = "initial_poses[" + std::to_string(index) + "]";
+  if (!pose.is_array() || pose.size() != 3) throw HelloError(name + " is not [x, y, theta]: " + pose.dump());
+  std::array<double, 3> values{};
+  for (size_t k = 0; k < 3; ++k) {
+    if (!pose[k].is_number() || !std::isfinite(pose[k].get<double>())) {
+      throw HelloError(name + "[" + std::to_string(k) + "] is not a finite number: " + pose[k].dump());
+    }
+    values[k] = pose[k].get<double>();
+  }
+  return values;
+}
+
+std::string Exact(double value) {
+  std::ostringstream text;
+  text << std::setprecision(std::numeric_limits<double>::max_digits10) << value;
+  return text.str();
+}
+
+}  // namespace
+
+std::string ScriptRunWorkflow::RunName(const std::string& script_path) {
+  std::string name = fs::path(script_path).stem().string();
+  for (char& c : name) {
+    const bool allowed = std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '-' || c == '.';
+    if (!allowed) c = '_';
+  }
+  return name.empty() ? "script" : name;
+}
+
+ScriptRunWorkflow::Hello ScriptRunWorkflow::ParseHello(const std::string& line) {
+  if (line.size() > kMaxHelloBytes) {
+    throw HelloError("more than " + std::to_string(kMaxHelloBytes) + " bytes");
+  }
+  const nlohmann::json hello = nlohmann::json::parse(line, nullptr, false);
+  if (hello.is_discarded() || !hello.is_object()) throw HelloError("not a JSON object: " + line.substr(0, 200));
+  Hello result;
+  const auto robots = hello.find("robots");
+  if (robots == hello.end() || !robots->is_number_integer() || robots->get<long long>() < 1 ||
+      robots->get<long long>() > kMaxScriptRobots) {
+    throw HelloError("robots must be 1.." + std::to_string(kMaxScriptRobots) + ", got " +
+                     (robots == hello.end() ? std::string("nothing") : robots->dump()));
+  }
+  result.robots = robots->get<int>();
+  const auto poses = hello.find("initial_poses");
+  if (poses == hello.end() || !poses->is_array() || poses->size() != static_cast<size_t>(result.robots)) {
+    throw HelloError("initial_poses must hold one [x, y, theta] per robot (" + std::to_string(result.robots) + ")");
+  }
+  for (size_t i = 0; i < poses->size(); ++i) result.initial_poses.push_back(PoseOf((*poses)[i], i));
+  const auto steps = hello.find("startup_steps");
+  if (steps != hello.end()) {
+    if (!steps->is_number_integer() || steps->get<long long>() < 0) {
+      throw HelloError("startup_steps must be a whole number >= 0, got " + steps->dump());
+    }
+    result.startup_steps = steps->get<long long>();
+  }
+  return result;
+}
+
+std::string ScriptRunWorkflow::ConfigText(const Hello& hello, const Options& options) {
+  const fs::path script = fs::absolute(options.script_path).lexically_normal();
+  const fs::path placeholder = fs::path(options.python_runtime_dir) / "rps_dream" / "robotarium_script.py";
+  std::ostringstream yaml;
+  yaml << "# The run of a Robotarium script (dream run SCRIPT.py, docs/robotarium-scripts.md): its robots\n"
+       << "# start where the official start-up drive left them (" << hello.startup_steps << " steps), and\n"
+       << "# the script drives them all. Rerun it with: dream run " << script.string() << "\n"
+       << "name: " << RunName(options.script_path) << "\n"
+       << "description: " << nlohmann::json(std::string("Robotarium script ") + script.string()).dump() << "\n"
+       << "seed: " << options.seed << "\n"
+       << "robots: " << hello.robots << "\n"
+       << "steps: " << (options.steps > 0 ? options.steps : kDefaultSteps) << "\n"
+       << "stop_when_done: true\n"
+       << "world:\n  mode: lockstep\n  agent_timeout_s: 60.0\n  start_timeout_s: 120.0\n"
+       << "  # the official simulator takes any finite command (and saturates the wheels): so does this run\n"
+       << "  max_abs_v_mps: 1.0e12\n  max_abs_w_radps: 1.0e12\n"
+       << "initial_poses:\n";
+  for (const auto& pose : hello.initial_poses) {
+    yaml << "  - [" << Exact(pose[0]) << ", " << Exact(pose[1]) << ", " << Exact(pose[2]) << "]\n";
+  }
+  yaml << "controller:\n  kind: python\n  module: " << nlohmann::json(placeholder.string()).dump()
+       << "\n  class: RobotariumScript\n";
+  return yaml.str();
+}
+
+session::RunResult ScriptRunWorkflow::Run(const Hello& hello, const std::string& run_dir,
+                                          lcm::LcmInterface& lcm) const {
+  const std::string config_path = (fs::path(run_dir) / "robotarium_script.yaml").string();
+  files::WriteFileAtomically(config_path, ConfigText(hello, options_));
+  const config_overrides::OverriddenConfig overridden(config_path, -1, options_.sets);
+  run_config::RunConfig config = overridden.LoadWith(&run_config::LoadRunConfig);
+  session::RunSession session(std::move(config), options_.session);
+  const std::string text = run_config::RunFolderConfigText(session.config(), overridden.Text());
+  return session.Run(lcm, {run_dir, text});
+}
+
+}  // namespace dream::workflows

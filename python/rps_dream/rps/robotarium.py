@@ -1,0 +1,189 @@
+"""rps.robotarium for `dream run SCRIPT.py`: the official V2.0.0 Robotarium, backed by DREAM's world.
+
+The constructor does what the official one does, in the script's process and in the official
+order: it draws the charger slots (Python's `random`), the default initial conditions (numpy's
+global stream) and drives the robots onto the initial conditions (the start-up drive, with the
+sensors' noise of every step drawn from numpy's stream) on the stand-in's step, which is the
+official one (bridge/python/standin/rps). Then it tells `dream run` the number of robots and
+where the drive ended (a JSON line on the descriptor DREAM_SCRIPT_FD), and DREAM's world takes
+over from those poses: get_poses() returns the world's poses of the next step (the lab's, with
+world.realism), step() sends every robot's command of that step (DREAM_CMD_<id>).
+
+The official checks and error counts are kept in the script too (the stand-in's: the poses the
+script saw, the velocities it set), so debug() prints the official text; DREAM's verdict, on
+the world's own poses, is what `dream run` prints and writes to summary.json.
+"""
+
+import atexit
+import importlib.util
+import json
+import os
+
+import numpy as np
+
+import rps
+from rps._world_link import WorldGone, WorldLink
+
+HELLO_FD_VARIABLE = "DREAM_SCRIPT_FD"
+_made = []  # the one Robotarium of this script
+
+
+class NotInDream(RuntimeError):
+    """A call of the official API that DREAM's rps does not provide."""
+
+
+def _standin_class():
+    """The stand-in's Robotarium (its official step, checks and start-up drive), privately loaded."""
+    path = os.path.join(rps.STANDIN_DIR, "robotarium.py")
+    spec = importlib.util.spec_from_file_location("rps._standin_robotarium", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module.Robotarium
+
+
+class _NoFigure:
+    """What show_figure=True gives: every attribute and call accepted, nothing drawn."""
+
+    def __getattr__(self, _name):
+        return self
+
+    def __call__(self, *_args, **_kwargs):
+        return self
+
+    def __iter__(self):
+        return iter(())
+
+
+def _unsupported(call):
+    def refuse(self, *_args, **_kwargs):
+        raise NotInDream(f"{call}: DREAM's rps does not simulate the robots' sensors (distance sensors, encoders, "
+                         "IMU); see docs/robotarium-scripts.md")
+    return refuse
+
+
+class Robotarium:
+    """Robotarium(number_of_robots=N, show_figure=..., initial_conditions=3xN, sim_in_real_time=..., ...)."""
+
+    TIME_STEP = 0.033
+    MAX_LINEAR_VELOCITY = 0.2
+    ROBOT_DIAMETER = 0.11
+    WHEEL_RADIUS = 0.016
+    BASE_LENGTH = 0.11
+    COLLISION_DIAMETER = 0.135
+    COLLISION_OFFSET = 0.025
+    BOUNDARIES = np.array([-1.6, 1.6, -1.0, 1.0])
+    CENTER_OFFSET = 0.01
+    ENCODER_COUNTS_PER_REVOLUTION = 28
+    MOTOR_GEAR_RATIO = 100.37
+    MAX_WHEEL_VELOCITY = MAX_LINEAR_VELOCITY / WHEEL_RADIUS
+    MAX_ANGULAR_VELOCITY = 2.0 * (WHEEL_RADIUS / ROBOT_DIAMETER) * (MAX_LINEAR_VELOCITY / WHEEL_RADIUS)
+
+    def __init__(self, **kwargs):
+        if _made:
+            raise NotInDream("Robotarium(...) a second time: `dream run` runs one Robotarium per script")
+        if kwargs.get("use_distance_sensors", False):
+            raise NotInDream("Robotarium(use_distance_sensors=True): DREAM's rps has no distance sensors")
+        local_class = _standin_class()
+        self._local = local_class(number_of_robots=kwargs.get("number_of_robots", -1),
+                                  show_figure=kwargs.get("show_figure", False),
+                                  initial_conditions=kwargs.get("initial_conditions", np.array([])),
+                                  sim_in_real_time=kwargs.get("sim_in_real_time", True),
+                                  skip_initialization=kwargs.get("skip_initialization", False))
+        _made.append(self)
+        self.number_of_robots = self._local.number_of_robots
+        self.show_figure = kwargs.get("show_figure", False)
+        self.obstacles = kwargs.get("obstacles", None)
+        self.initializing = False
+        if self.show_figure:
+            self._fig = _NoFigure()
+            self._axes_handle = _NoFigure()
+        self._link = WorldLink(self.number_of_robots)
+        self._finished = False
+        _tell_dream_run(self.number_of_robots, self._local._poses, self._local._iteration)
+        atexit.register(self._finish)
+
+    @property
+    def velocities(self):
+        return self._local._velocities
+
+    @property
+    def poses(self):
+        return self._local._poses
+
+    def get_poses(self):
+        local = self._local
+        if local._poses_read:
+            raise AssertionError("Can only call get_poses() once per call of step()!")
+        if self._finished:
+            raise NotInDream("get_poses() after debug(): the run has ended")
+        local._poses = self._link.next_poses()
+        local._poses_read = True
+        local._stepped = False
+        return local._poses.copy()
+
+    def set_velocities(self, ids, velocities):
+        self._local.set_velocities(ids, velocities)
+
+    def step(self):
+        local = self._local
+        if local._stepped:
+            raise AssertionError("Make sure you call get_poses before calling step()!")
+        local._stepped = True
+        local._poses_read = False
+        local._validate()
+        local._iteration += 1
+        # The command as set: the world saturates the wheels and counts actuator errors itself.
+        self._link.send(local._velocities)
+        local._velocities = local._saturate(local._velocities)
+        local._draw_sensor_noise()
+
+    def debug(self):
+        self._local.debug()
+        self._finish()
+
+    def call_at_scripts_end(self):
+        self.debug()
+
+    def robot_colormap(self):
+        return _NoFigure()
+
+    def _finish(self):
+        """Ends the run: the world's next step is answered with every robot done, standing still."""
+        if self._finished:
+            return
+        self._finished = True
+        try:
+            if self._link.answered:  # else the script read a step's poses and stopped before step()
+                self._link.next_poses()
+            self._link.send(np.zeros((2, self.number_of_robots)), done=True)
+        except WorldGone:
+            pass
+
+    def fail(self, detail):
+        """The script failed: the world is told every robot's controller failed."""
+        self._finished = True
+        self._link.fail(detail)
+
+    get_distances = _unsupported("get_distances()")
+    get_distance_endpoints = _unsupported("get_distance_endpoints()")
+    get_accelerations = _unsupported("get_accelerations()")
+    get_orientations = _unsupported("get_orientations()")
+    get_magnetic_fields = _unsupported("get_magnetic_fields()")
+    get_gyros = _unsupported("get_gyros()")
+    get_encoders = _unsupported("get_encoders()")
+
+
+def made():
+    """The script's Robotarium, or None."""
+    return _made[0] if _made else None
+
+
+def _tell_dream_run(n, poses, startup_steps):
+    """The JSON line `dream run` builds the run from: the robots and where the start-up drive ended."""
+    fd_text = os.environ.get(HELLO_FD_VARIABLE, "")
+    if not fd_text.isdigit():
+        raise NotInDream(f"no {HELLO_FD_VARIABLE}: DREAM's rps runs under `dream run SCRIPT.py`")
+    hello = {"robots": n, "startup_steps": int(startup_steps),
+             "initial_poses": [[float(v) for v in poses[:, i]] for i in range(n)]}
+    with os.fdopen(int(fd_text), "w") as pipe:
+        pipe.write(json.dumps(hello) + "\n")

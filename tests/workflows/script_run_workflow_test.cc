@@ -1,0 +1,81 @@
+#include "dream/workflows/script_run_workflow.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace dream::workflows {
+namespace {
+
+using ::testing::HasSubstr;
+
+std::string ErrorOf(const std::string& line) {
+  try {
+    ScriptRunWorkflow::ParseHello(line);
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ScriptRunWorkflowTest, ReadsTheRobotsAndWhereTheDriveLeftThem) {
+  const auto hello = ScriptRunWorkflow::ParseHello(
+      R"({"robots": 2, "startup_steps": 715, "initial_poses": [[-1.2538952016837905, 0.4941969706443189, 0.1], )"
+      R"([0.5, -0.25, -3.0]]})");
+  EXPECT_EQ(hello.robots, 2);
+  EXPECT_EQ(hello.startup_steps, 715);
+  ASSERT_EQ(hello.initial_poses.size(), 2u);
+  EXPECT_EQ(hello.initial_poses[0][0], -1.2538952016837905);
+  EXPECT_EQ(hello.initial_poses[1][2], -3.0);
+}
+
+TEST(ScriptRunWorkflowTest, RefusesAHelloItCannotRunNamingTheFieldAndValue) {
+  EXPECT_THAT(ErrorOf("not json"), HasSubstr("not a JSON object"));
+  EXPECT_THAT(ErrorOf(R"({"robots": 0, "initial_poses": []})"), HasSubstr("robots must be 1..50, got 0"));
+  EXPECT_THAT(ErrorOf(R"({"robots": 51, "initial_poses": []})"), HasSubstr("got 51"));
+  EXPECT_THAT(ErrorOf(R"({"robots": "2", "initial_poses": []})"), HasSubstr("got \"2\""));
+  EXPECT_THAT(ErrorOf(R"({"robots": 2, "initial_poses": [[0, 0, 0]]})"), HasSubstr("one [x, y, theta] per robot (2)"));
+  EXPECT_THAT(ErrorOf(R"({"robots": 1, "initial_poses": [[0, "a", 0]]})"),
+              HasSubstr("initial_poses[0][1] is not a finite number: \"a\""));
+  EXPECT_THAT(ErrorOf(R"({"robots": 1, "initial_poses": [[0, 0]]})"),
+              HasSubstr("initial_poses[0] is not [x, y, theta]"));
+  EXPECT_THAT(ErrorOf(R"({"robots": 1, "initial_poses": [[0, 0, 0]], "startup_steps": -1})"),
+              HasSubstr("startup_steps must be a whole number >= 0, got -1"));
+  EXPECT_THAT(ErrorOf(std::string(ScriptRunWorkflow::kMaxHelloBytes + 1, ' ')), HasSubstr("more than 65536 bytes"));
+}
+
+TEST(ScriptRunWorkflowTest, TheConfigStartsEveryRobotExactlyWhereTheScriptSaid) {
+  ScriptRunWorkflow::Hello hello;
+  hello.robots = 2;
+  hello.initial_poses = {{0.1 + 0.2, -1.0 / 3.0, std::nextafter(3.0, 0.0)}, {1e-17, -0.0, 2.0 / 7.0}};
+  ScriptRunWorkflow::Options options;
+  options.script_path = "some dir/my script.py";
+  options.seed = 9;
+  options.python_runtime_dir = "/opt/dream/python-runtime";
+  const YAML::Node config = YAML::Load(ScriptRunWorkflow::ConfigText(hello, options));
+  EXPECT_EQ(config["name"].as<std::string>(), "my_script");
+  EXPECT_EQ(config["seed"].as<long long>(), 9);
+  EXPECT_EQ(config["robots"].as<int>(), 2);
+  EXPECT_EQ(config["steps"].as<long long>(), ScriptRunWorkflow::kDefaultSteps);
+  EXPECT_EQ(config["controller"]["module"].as<std::string>(),
+            "/opt/dream/python-runtime/rps_dream/robotarium_script.py");
+  for (size_t i = 0; i < 2; ++i) {
+    for (size_t k = 0; k < 3; ++k) {
+      EXPECT_EQ(config["initial_poses"][i][k].as<double>(), hello.initial_poses[i][k]) << i << "," << k;
+    }
+  }
+}
+
+TEST(ScriptRunWorkflowTest, TheRunIsNamedAfterTheScript) {
+  EXPECT_EQ(ScriptRunWorkflow::RunName("/x/go_to_point_si.py"), "go_to_point_si");
+  EXPECT_EQ(ScriptRunWorkflow::RunName("a b;c.py"), "a_b_c");
+  EXPECT_EQ(ScriptRunWorkflow::RunName(".py"), ".py");
+}
+
+}  // namespace
+}  // namespace dream::workflows
