@@ -385,10 +385,11 @@ TEST_F(BusFrameCollectorTest, TheVerdictOfTheRunDrawnIsTakenOnceItIsOver) {
   collector_.TakeFrame(&frame_, &version_);
   EXPECT_EQ(frame_.judged->verdict, "rejected");
 
-  // The same run drawn from its start again (its log played once more): judged again at its end only.
-  PublishStep(bus_, 5, 0, {{0.0, 0.0, 0.0}, {1.0, 0.0, M_PI}}, 0);
-  PublishStep(bus_, 5, 1, {{0.0, 0.0, 0.0}, {1.0, 0.0, M_PI}}, 0);
+  // The next run drawn is judged at its own end only.
+  PublishStep(bus_, 6, 0, {{0.0, 0.0, 0.0}, {1.0, 0.0, M_PI}}, 0);
+  PublishStep(bus_, 6, 1, {{0.0, 0.0, 0.0}, {1.0, 0.0, M_PI}}, 0);
   ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
+  EXPECT_EQ(frame_.run_id, 6);
   EXPECT_EQ(frame_.step, 1);
   EXPECT_FALSE(frame_.judged.has_value());
 }
