@@ -122,8 +122,11 @@ ViewReplay ViewReplay::OfRun(const std::string& run, const std::string& config_p
   replay.setup.mode = view::ViewSetup::Mode::kReplay;
   replay.setup.source = run;
   replay.setup.judged = JudgedOfRun(log_path);
-  // A log alone (no summary.json beside it): the verdict its world appended, if any.
-  if (!replay.setup.judged && log.verdict()) replay.setup.judged = JudgedOfVerdict(*log.verdict());
+  // A log alone (no summary.json beside it): the verdict its world appended, if any. A summary
+  // that cannot be read is said so and not replaced: the view then shows no verdict of the one judge.
+  std::error_code error;
+  const bool summary_beside = fs::exists(fs::path(log_path).parent_path() / node::RunSummary::kFileName, error);
+  if (!replay.setup.judged && !summary_beside && log.verdict()) replay.setup.judged = JudgedOfVerdict(*log.verdict());
   replay.run_json = view::RunReplayJson(log, replay.setup);
   replay.steps = log.poses().size();
   return replay;
