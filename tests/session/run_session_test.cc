@@ -26,6 +26,7 @@
 #include "dream/lcm/run_id.h"
 #include "dream/node/log_append.h"
 #include "dream/session/experiment_goal.h"
+#include "dream/session/verdict_broadcast.h"
 #include "dream/files/atomic_file.h"
 #include "dream/files/file_text.h"
 #include "dream/session/run_session.h"
@@ -404,6 +405,39 @@ TEST_F(RunSessionTest, TheVerdictIsPublishedOnceAfterTheSummaryAndEndsTheLog) {
   EXPECT_EQ(logged.reasons, verdict.reasons);
   EXPECT_EQ(events.back().utime, verdict.utime);
   for (size_t i = 0; i + 1 < events.size(); ++i) EXPECT_NE(events[i].channel, lcm::kVerdictChannel);
+}
+
+// dream launch: its agents' reports made the verdict worse after the world published it; the bus
+// hears summary.json's verdict again, so a viewer ends on it.
+TEST_F(RunSessionTest, AVerdictMadeWorseAfterTheRunIsPublishedAgain) {
+  RunSession::Options options;
+  options.report = &report_;
+  RunSession session(run_config::LoadRunConfigFile(WriteConfig(0.0, 1.0, 20)), options);
+  ASSERT_EQ(RunWithAgents(session).judgement.verdict(), world::RunVerdict::kClean);
+  const world::VerdictReason refused{"agent_bad_messages", world::RunVerdict::kNotReady, "the agents refused 2",
+                                     "summary.json agents"};
+  ASSERT_EQ(session.Reporter().AddReasons(out(), "agents", {{"bad_messages", {{"DREAM_POSES", 2}}}}, {refused}),
+            world::RunVerdict::kNotReady);
+  lcm::LcmBus bus("memq://");
+  std::vector<run_verdict_t> heard;
+  const lcm::Subscription listener =
+      bus.Subscribe(lcm::kVerdictChannel, [&](const std::string&, const void* data, int size) {
+        run_verdict_t verdict;
+        ASSERT_TRUE(lcm::Decode(data, size, &verdict));
+        heard.push_back(verdict);
+      });
+  VerdictBroadcast::Resend(bus, out() + "/summary.json", 0.033, kExitNotReady);
+  while (bus.HandleSubscriptions(0) > 0) {
+  }
+  ASSERT_EQ(heard.size(), 1u);
+  const nlohmann::json summary = Summary();
+  EXPECT_EQ(lcm::RunIdText(heard[0].run_id), summary["run_id"].get<std::string>());
+  EXPECT_EQ(heard[0].verdict, run_verdict_t::NOT_READY);
+  EXPECT_EQ(heard[0].exit_code, kExitNotReady);
+  EXPECT_EQ(heard[0].utime, 20 * 33000);
+  EXPECT_THAT(heard[0].reasons, HasSubstr("agent_bad_messages: the agents refused 2"));
+  EXPECT_EQ(heard[0].goal_text, ExperimentGoal::Text(summary["goal"]));
+  EXPECT_THROW(VerdictBroadcast::Resend(bus, out() + "/none.json", 0.033, kExitNotReady), std::runtime_error);
 }
 
 TEST(LogAppend, AnEventGoesOnlyToALogThatExistsAndIsAFile) {

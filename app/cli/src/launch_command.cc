@@ -15,6 +15,9 @@
 #include "command_line.h"
 #include "dream/session/run_reporter.h"
 #include "dream/session/run_session.h"
+#include "dream/session/verdict_broadcast.h"
+#include "dream/lcm/lcm_bus.h"
+#include "dream/lcm/lcm_url.h"
 #include "dream/world/run_verdict.h"
 #include "dream/world/verdict_reason.h"
 #include "dream/files/file_text.h"
@@ -107,11 +110,25 @@ AgentReports ReadAgentReports(const std::string& out_dir, int num_robots) {
   return reports;
 }
 
+// The simulator published its verdict on DREAM_VERDICT; the agents' reports
+// made it worse: the bus hears summary.json's now, so a viewer ends on it.
+void ResendVerdict(const session::RunSession& session, const std::string& summary_path, const std::string& lcm_url,
+                   int exit_code) {
+  try {
+    lcm::LcmBus bus(lcm::ResolveLcmUrl(lcm_url));
+    session::VerdictBroadcast::Resend(bus, summary_path, session.config().world.time_step_s,
+                                      static_cast<ExitCode>(exit_code));
+  } catch (const std::exception& e) {
+    spdlog::warn("the verdict with the agents' reports was not published on DREAM_VERDICT: {}", e.what());
+  }
+}
+
 // The agents' refusals, in summary.json's "agents" section, added by the
 // run's one writer of reports; a run whose agents refused messages is not
 // ready (as one whose world refused some), so the verdict, the picture and
 // the exit code say so. Returns the launch's exit code.
-int MergeAgentReports(const session::RunSession& session, const std::string& out_dir, int sim_exit) {
+int MergeAgentReports(const session::RunSession& session, const std::string& out_dir, const std::string& lcm_url,
+                      int sim_exit) {
   const AgentReports reports = ReadAgentReports(out_dir, session.config().num_robots);
   const std::string summary_path = out_dir + "/" + session::RunReporter::kSummaryName;
   if (!std::filesystem::exists(summary_path)) {
@@ -134,7 +151,9 @@ int MergeAgentReports(const session::RunSession& session, const std::string& out
   std::cout << "Not ready for the Robotarium: " << reports.problem << " (summary.json agents)\n"
             << "verdict: " << world::RunVerdictName(verdict) << " (with the agents' reports, which the simulator's "
             << "report above could not know; summary.json verdict_reasons)\n";
-  return sim_exit == kExitOk ? kExitNotReady : sim_exit;
+  const int exit_code = sim_exit == kExitOk ? kExitNotReady : sim_exit;
+  ResendVerdict(session, summary_path, lcm_url, exit_code);
+  return exit_code;
 }
 
 }  // namespace
@@ -194,7 +213,7 @@ int RunLaunch(const RunArgs& args) {
   }
   if (failed_agents > 0) spdlog::warn("{} agent process(es) did not exit cleanly", failed_agents);
   if (sim_exit == kExitInterrupted) return sim_exit;
-  return MergeAgentReports(*session, out_dir, sim_exit);
+  return MergeAgentReports(*session, out_dir, args.lcm_url, sim_exit);
 }
 
 void DeclareLaunchCommand(CommandLine& line) {

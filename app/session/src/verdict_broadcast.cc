@@ -2,12 +2,15 @@
 
 #include <spdlog/spdlog.h>
 
+#include <cmath>
 #include <exception>
+#include <string>
 #include <vector>
 
 #include "dream/lcm/channels.h"
 #include "dream/lcm/lcm_typed.h"
 #include "dream/node/log_append.h"
+#include "dream/node/run_summary.h"
 #include "dream/session/experiment_goal.h"
 #include "dream/world/run_verdict.h"
 
@@ -88,6 +91,20 @@ void VerdictBroadcast::Send(lcm::LcmInterface& lcm, const run_verdict_t& message
   } catch (const std::exception& e) {
     spdlog::warn("{}; the log ends without the run's verdict (summary.json has it)", e.what());
   }
+}
+
+void VerdictBroadcast::Resend(lcm::LcmInterface& lcm, const std::string& summary_path, double time_step_s,
+                              ExitCode exit_code) {
+  const node::RunSummary summary = node::RunSummary::Read(summary_path);
+  const auto utime = static_cast<int64_t>(std::llround(static_cast<double>(summary.steps) * time_step_s * 1e6));
+  RunResult result;
+  result.outcome.steps = summary.steps;
+  result.judgement.Add(summary.verdict_reasons);
+  result.goal = summary.goal;
+  const int64_t run_id = static_cast<int64_t>(std::stoull(summary.run_id, nullptr, 16));
+  run_verdict_t message = MessageOf(result, run_id, utime, exit_code);
+  message.verdict = VerdictValue(summary.verdict);  // as summary.json says it, whatever its reasons
+  Send(lcm, message, std::string(), 0);
 }
 
 }  // namespace dream::session

@@ -32,6 +32,13 @@ class VerdictBroadcast {
   /// run's outputs stand (summary.json has the verdict).
   static void Send(lcm::LcmInterface& lcm, const run_verdict_t& message, const std::string& log_path,
                    int64_t log_events);
+
+  /// The verdict of a summary.json changed after its world published it
+  /// (dream launch's agents' reports, RunReporter::AddReasons), published
+  /// again on `lcm` so a viewer ends on the verdict summary.json says; the
+  /// log keeps the world's. `time_step_s`: the run's step, for its last simulated time.
+  /// @throws std::runtime_error naming the file when summary.json cannot be read.
+  static void Resend(lcm::LcmInterface& lcm, const std::string& summary_path, double time_step_s, ExitCode exit_code);
 };
 
 }  // namespace dream::session
