@@ -34,7 +34,7 @@ endfunction()
 
 # What a controller builds against, as dream::<name>.
 # The built-in kinds (agents/kinds/) too: the agent host links them.
-set(DREAM_EXPORTED_LIBRARIES robotarium barriers world config run_config msgs lcm run_log agents kind_api ${DREAM_BUILT_IN_KINDS}
+set(DREAM_EXPORTED_LIBRARIES robotarium barriers world config files run_config msgs lcm run_log agents kind_api ${DREAM_BUILT_IN_KINDS}
   agent_host)
 set(exported_targets)
 foreach(name IN LISTS DREAM_EXPORTED_LIBRARIES)

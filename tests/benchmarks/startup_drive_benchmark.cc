@@ -6,8 +6,13 @@
 //   build/tests/benchmarks/startup_drive_benchmark --benchmark_repetitions=3
 #include <benchmark/benchmark.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
 #include <vector>
 
+#include "dream/run_config/startup_drive_cache.h"
 #include "dream/world/initial_pose_generator.h"
 #include "dream/world/startup_drive.h"
 #include "dream/world/startup_drive_trials.h"
@@ -47,6 +52,26 @@ void BM_StartupDriveTrials(benchmark::State& state) {
   state.counters["settled"] = settled;
 }
 BENCHMARK(BM_StartupDriveTrials)->Arg(10)->Arg(20)->Unit(benchmark::kMillisecond);
+
+// Issue 33 item 3: what a repeat `dream run` or `export` of the same start poses and seed pays
+// once the first stored its five placements (run_config::StartupDriveCache): a file read.
+void BM_StartupDriveTrialsCached(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const std::vector<Pose2> poses = SpreadPoses(n);
+  const std::string folder =
+      (std::filesystem::temp_directory_path() / ("dream_startup_drive_benchmark_" + std::to_string(::getpid())))
+          .string();
+  const run_config::StartupDriveCache cache(folder);
+  (void)cache.Trials(WorldParams{}, poses, 7);  // the first run: drives and stores
+  int settled = 0;
+  for (auto _ : state) {
+    settled = cache.Trials(WorldParams{}, poses, 7).settled();
+    benchmark::DoNotOptimize(settled);
+  }
+  state.counters["settled"] = settled;
+  std::filesystem::remove_all(folder);
+}
+BENCHMARK(BM_StartupDriveTrialsCached)->Arg(10)->Arg(20)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace dream::world

@@ -12,6 +12,7 @@
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
+#include "dream/run_verdict_t.hpp"
 #include "dream/velocity_command_t.hpp"
 #include "fuzz_targets.h"
 
@@ -39,7 +40,7 @@ void LcmMessageTarget(const uint8_t* data, size_t size) {
   if (size < 1 || size > (size_t{1} << 20)) return;
   // A copy of exactly the message's bytes, so ASan sees any read past them.
   const std::vector<uint8_t> bytes(data + 1, data + size);
-  switch (data[0] % 8) {
+  switch (data[0] % 9) {
     case 0:
       Decode<applied_commands_t>(bytes);
       break;
@@ -60,6 +61,9 @@ void LcmMessageTarget(const uint8_t* data, size_t size) {
       break;
     case 6:
       Decode<velocity_command_t>(bytes);
+      break;
+    case 7:
+      Decode<run_verdict_t>(bytes);
       break;
     default:
       (void)agents::PositionMessage::Decode(bytes, 1);

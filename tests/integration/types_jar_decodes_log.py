@@ -5,7 +5,8 @@ Makes a run log (dream run), compiles tests/java/DecodeLog.java against lcm.jar 
 jar, and runs it: every DREAM_* event must be identified by its fingerprint among the jar's
 classes (as lcm-spy does), decode completely and re-encode to the same bytes, and the channels
 must carry DREAM_POSES -> dream.robot_poses_t, DREAM_CMD_<n> -> dream.velocity_command_t,
-DREAM_OBSTACLES -> dream.obstacles_t, DREAM_STATUS -> dream.run_status_t; and, on a run with
+DREAM_OBSTACLES -> dream.obstacles_t, DREAM_STATUS -> dream.run_status_t, DREAM_VERDICT ->
+dream.run_verdict_t (once, the last event); and, on a run with
 radios (hrvo_circle), DREAM_RADIO_<n> -> dream.radio_message_t.
 
 Usage: types_jar_decodes_log.py --dream BIN --source DIR --types-jar JAR --lcm-jar JAR [--javac BIN --java BIN]
@@ -21,6 +22,7 @@ EXPECTED = {
     "DREAM_CMD_[0-9]+": "dream.velocity_command_t",
     "DREAM_OBSTACLES": "dream.obstacles_t",
     "DREAM_STATUS": "dream.run_status_t",
+    "DREAM_VERDICT": "dream.run_verdict_t",  # the log's last event: the one judge's verdict (issue 33)
 }
 
 
@@ -61,6 +63,8 @@ def test(ctx):
           f"DecodeLog decoded {sum(n for _, n in counts.values())} events, summary.json says {summary['log_events']}")
     check(counts.get("DREAM_POSES", (None, 0))[1] == summary["steps"] + 1,
           f"DREAM_POSES: {counts.get('DREAM_POSES')} events, expected steps + 1 = {summary['steps'] + 1}")
+    check(counts.get("DREAM_VERDICT") == ("dream.run_verdict_t", 1),
+          f"DREAM_VERDICT: {counts.get('DREAM_VERDICT')}, expected one dream.run_verdict_t")
     check(sorted(c for c in counts if c.startswith("DREAM_CMD_")) == [f"DREAM_CMD_{i}" for i in range(8)],
           f"expected DREAM_CMD_0..7, got {sorted(c for c in counts if c.startswith('DREAM_CMD_'))}")
 

@@ -6,7 +6,9 @@ it; `dream launch` runs a three-robot config over udpm (in a private network nam
 robot 0 drives out of the arena and robot 1 into robot 2. The page's state (window.dreamView.state,
 what it draws) must show the three robots with their ids at the positions the run's log holds for
 the step shown, the step advancing, each violation marked where the log says it happened, the
-counts of the run's summary and the verdict "rejected". A screenshot is kept (live.png).
+counts of the run's summary and the verdict "rejected"; once the run is over, the page ends on the
+world's DREAM_VERDICT: data-verdict, the label "verdict" and the goal line as summary.json has them
+(issue 33), also when the log is played with lcm-logplayer. A screenshot is kept (live.png).
 
 A forged DREAM_POSES of a made-up run after the end (issue 34): the finished run stays drawn with
 its violations, and the page's status line names the other run (other_world.png).
@@ -246,6 +248,34 @@ def check_users_choice(dream, page):
     fail(f"the page never drew the run chosen with 'draw it instead' (clicked: {clicked}): {json.dumps(shown)[:600]}")
 
 
+def goal_words(goal):
+    """The start of summary.json's goal as the one judge words it (session::ExperimentGoal::Text)."""
+    if goal.get("judge_error"):
+        return "could not be judged"
+    if not goal.get("has_criterion"):
+        return goal.get("detail") or "none declared"
+    return "met" if goal.get("met") else "missed"
+
+
+def check_judged_live(page, summary, where):
+    """Issue 33: a run watched live from another process ends on the world's DREAM_VERDICT, sent once
+    summary.json is written: the page's data-verdict, its label and its goal line are summary.json's,
+    not the counts' 'verdict so far'."""
+    judged = wait_for(page, f"{where}: the world's verdict", lambda s: s["counts"] and s["counts"].get("judged"),
+                      30)["counts"]["judged"]
+    check(judged["verdict"] == summary["verdict"],
+          f"{where}: the page ends on {judged['verdict']}, summary.json says {summary['verdict']}")
+    check(judged["goal"].startswith(goal_words(summary["goal"])),
+          f"{where}: the page's goal {judged['goal']!r}, summary.json's goal {summary['goal']}")
+    check(judged["exit_code"] == 3, f"{where}: the verdict says exit code {judged['exit_code']}, dream launch exited 3")
+    shown = wait_for_page(page, f"{where}: data-verdict and the label",
+                          "[document.body.dataset.verdict, document.getElementById('verdict-label').textContent,"
+                          " document.getElementById('goal').textContent]",
+                          lambda v: v[0] == summary["verdict"] and v[1] == "verdict", 20)
+    check(shown[2] == judged["goal"], f"{where}: the goal line says {shown[2]!r}, the verdict {judged['goal']!r}")
+    print(f"{where}: ends on the judged verdict {shown[0]!r}, goal {shown[2]!r}")
+
+
 def check_live(ctx, args, dream, page, config, run_dir):
     """dream launch watched live; then the same run's log played with lcm-logplayer. Returns its poses."""
     steps_seen = watch_live(ctx, args, page, config, run_dir)
@@ -259,6 +289,7 @@ def check_live(ctx, args, dream, page, config, run_dir):
           final["counts"]["collision"] == summary["collision_errors"],
           f"the page's counts {final['counts']} are not summary.json's {summary}")
     check(final["verdict"] == "rejected", f"the page's verdict is {final['verdict']}, the run was rejected")
+    check_judged_live(page, read_summary(run_dir), "live (dream launch)")
     print(f"live: {len(steps_seen)} steps seen, {len(final['violations'])} violations marked")
     check_forged_run_after_the_end(dream, page, final, args.artifacts)
 
@@ -267,6 +298,7 @@ def check_live(ctx, args, dream, page, config, run_dir):
                             os.path.join(run_dir, "run.lcmlog")])
     wait_for(page, "the played log from its start", lambda s: s["step"] < STEPS / 2, 30)
     played = wait_for(page, "the played log to its end", lambda s: s["step"] == STEPS, 20)
+    check_judged_live(page, read_summary(run_dir), "lcm-logplayer (the log's DREAM_VERDICT)")
     check_robots(played, poses, "lcm-logplayer")
     check_marks(played["violations"], poses, "lcm-logplayer")
     ctx.wait("logplayer", 10)

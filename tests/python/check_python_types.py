@@ -45,6 +45,7 @@ def types_for(dream):
         (re.compile(r"DREAM_STATUS"), dream.run_status_t),
         (re.compile(r"DREAM_CMD_[0-9]+"), dream.velocity_command_t),
         (re.compile(r"DREAM_APPLIED"), dream.applied_commands_t),
+        (re.compile(r"DREAM_VERDICT"), dream.run_verdict_t),
     ]
 
 
@@ -54,6 +55,7 @@ def check_log(log_path, dream, num_robots, final_state):
     counts = {}
     poses_steps = []
     statuses = []
+    verdicts = []
     events = 0
     try:
         for event in read_events(log_path):
@@ -79,6 +81,8 @@ def check_log(log_path, dream, num_robots, final_state):
                 check(message.num_robots == num_robots,
                       f"DREAM_STATUS step {message.step}: num_robots {message.num_robots}, expected {num_robots}")
                 statuses.append(message)
+            elif event.channel == "DREAM_VERDICT":
+                verdicts.append((events - 1, message))
     except LogFormatError as error:
         raise CheckFailed(f"python reader: {error}") from None
 
@@ -98,6 +102,12 @@ def check_log(log_path, dream, num_robots, final_state):
                                   f"({last.detail!r}), expected {final_state}")
     check(last.step == poses_steps[-1],
           f"final DREAM_STATUS is at step {last.step}, the last DREAM_POSES at step {poses_steps[-1]}")
+    # Issue 33: the one judge's verdict, once, the log's last event, of the run's id.
+    check(len(verdicts) == 1 and verdicts[0][0] == events - 1,
+          f"{log_path}: expected one DREAM_VERDICT as the last event, got {[at for at, _ in verdicts]} of {events}")
+    check(verdicts[0][1].run_id == last.run_id and verdicts[0][1].step == last.step,
+          f"DREAM_VERDICT of run {verdicts[0][1].run_id} step {verdicts[0][1].step}, "
+          f"the last DREAM_STATUS of run {last.run_id} step {last.step}")
     return {"events": events, "steps": poses_steps[-1], "channels": counts, "final_status": last}
 
 

@@ -19,6 +19,7 @@
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
+#include "dream/run_verdict_t.hpp"
 #include "dream/robotarium/robotarium_constants.h"
 #include "dream/velocity_command_t.hpp"
 #include "sample_messages.h"
@@ -31,8 +32,9 @@ using lcm::MessageLimits;
 // Where each sample's count or string length sits: after the 8-byte
 // fingerprint and the fixed fields before it.
 const std::map<std::string, size_t> kCountOffset = {
-    {"robot_poses_t", 8 + 24},   {"obstacles_t", 8 + 24},   {"run_status_t", 8 + 8 + 8 + 8 + 1 + 4 + 48},
-    {"radio_message_t", 8 + 36}, {"robot_fault_t", 8 + 36}, {"applied_commands_t", 8 + 24},
+    {"robot_poses_t", 8 + 24},      {"obstacles_t", 8 + 24},   {"run_status_t", 8 + 8 + 8 + 8 + 1 + 4 + 48},
+    {"radio_message_t", 8 + 36},    {"robot_fault_t", 8 + 36}, {"applied_commands_t", 8 + 24},
+    {"run_verdict_t", 8 + 24 + 14},  // goal_text's length
 };
 
 // Counts an attacker would pick: huge, negative, just over the limit, and
@@ -67,6 +69,7 @@ TEST(DecoderBounds, LayoutsMatchTheGeneratedEncodings) {
   EXPECT_EQ(lcm::WireLayoutOf<radio_message_t>().MinimumBytes(), radio_message_t{}.getEncodedSize());
   EXPECT_EQ(lcm::WireLayoutOf<robot_fault_t>().MinimumBytes(), robot_fault_t{}.getEncodedSize());
   EXPECT_EQ(lcm::WireLayoutOf<applied_commands_t>().MinimumBytes(), applied_commands_t{}.getEncodedSize());
+  EXPECT_EQ(lcm::WireLayoutOf<run_verdict_t>().MinimumBytes(), run_verdict_t{}.getEncodedSize());
 }
 
 TEST(DecoderBounds, TheLargestLegalMessagesDecode) {

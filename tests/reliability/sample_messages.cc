@@ -7,6 +7,7 @@
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
+#include "dream/run_verdict_t.hpp"
 #include "dream/velocity_command_t.hpp"
 
 namespace dream::testing {
@@ -72,10 +73,20 @@ std::vector<EncodedMessage> SampleMessages() {
   applied.commanded_w = {-0.5, 0.0};
   applied.conflicts = {1, 0};
 
-  return {{"robot_poses_t", Encoded(poses)},       {"obstacles_t", Encoded(obstacles)},
-          {"run_status_t", Encoded(status)},       {"velocity_command_t", Encoded(command)},
-          {"radio_message_t", Encoded(radio)},     {"robot_fault_t", Encoded(fault)},
-          {"applied_commands_t", Encoded(applied)}};
+  run_verdict_t verdict{};
+  verdict.step = 3;
+  verdict.run_id = kRunId;
+  verdict.verdict = run_verdict_t::NOT_READY;
+  verdict.goal = run_verdict_t::GOAL_MISSED;
+  verdict.exit_code = 5;
+  verdict.goal_completion_step = -1;
+  verdict.goal_text = "missed (1 of 2 robots arrived)";
+  verdict.reasons = "goal: the go_to_goal experiment missed its goal";
+
+  return {{"robot_poses_t", Encoded(poses)},        {"obstacles_t", Encoded(obstacles)},
+          {"run_status_t", Encoded(status)},        {"velocity_command_t", Encoded(command)},
+          {"radio_message_t", Encoded(radio)},      {"robot_fault_t", Encoded(fault)},
+          {"applied_commands_t", Encoded(applied)}, {"run_verdict_t", Encoded(verdict)}};
 }
 
 namespace {
@@ -99,6 +110,7 @@ const std::map<std::string, TypedDecoder>& Decoders() {
       {"radio_message_t", DecoderOf<radio_message_t>()},
       {"robot_fault_t", DecoderOf<robot_fault_t>()},
       {"applied_commands_t", DecoderOf<applied_commands_t>()},
+      {"run_verdict_t", DecoderOf<run_verdict_t>()},
   };
   return decoders;
 }

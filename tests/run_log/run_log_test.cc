@@ -8,6 +8,7 @@
 #include "dream/radio_message_t.hpp"
 #include "dream/robot_fault_t.hpp"
 #include "dream/run_status_t.hpp"
+#include "dream/run_verdict_t.hpp"
 #include "synthetic_run_log.h"
 #include "temp_folder.h"
 
@@ -136,6 +137,33 @@ TEST(RunLogTest, FaultsAndRadioOfAnotherRunOrAnotherRobotAreNoneOfThisRuns) {
   EXPECT_EQ(run.robot_faults(), faults);
   ASSERT_EQ(run.radio_sends().size(), 1u);
   EXPECT_EQ(run.radio_sends()[0].sender_id, 1);
+}
+
+// Issue 33: the run's DREAM_VERDICT, appended once summary.json was written: another run's is none of it.
+TEST(RunLogTest, TheVerdictIsTheRunsOwnLastOne) {
+  TempFolder dir;
+  run_verdict_t other{};
+  other.run_id = 77;  // the synthetic run's poses carry run id 0
+  other.verdict = run_verdict_t::CLEAN;
+  run_verdict_t own{};
+  own.step = 1;
+  own.verdict = run_verdict_t::NOT_READY;
+  own.goal_text = "missed (not all at their goals)";
+  SyntheticRunLog log(dir / "run.lcmlog");
+  log.Poses(0, {{0, 0, 0}, {1, 0, 0}})
+      .Poses(1, {{0, 0, 0}, {1, 0, 0}})
+      .Status(1, run_status_t::FINISHED, {}, "done")
+      .MessageOn("DREAM_VERDICT", own)
+      .MessageOn("DREAM_VERDICT", other);
+  const RunLog run = RunLog::Read(log.Write());
+  ASSERT_TRUE(run.verdict().has_value());
+  EXPECT_EQ(run.verdict()->verdict, run_verdict_t::NOT_READY);
+  EXPECT_EQ(run.verdict()->goal_text, own.goal_text);
+  EXPECT_FALSE(run.Flaw(false).has_value());
+
+  SyntheticRunLog without(dir / "without.lcmlog");
+  without.Poses(0, {{0, 0, 0}}).MessageOn("DREAM_VERDICT", other);
+  EXPECT_FALSE(RunLog::Read(without.Write()).verdict().has_value());
 }
 
 TEST(RunLogTest, ACutLogIsAnErrorNamingTheFileAndByte) {

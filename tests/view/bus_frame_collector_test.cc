@@ -13,6 +13,7 @@
 #include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/lcm_typed.h"
 #include "dream/radio_message_t.hpp"
+#include "dream/run_verdict_t.hpp"
 
 namespace dream::view {
 namespace {
@@ -69,6 +70,19 @@ void PublishOne(lcm::LcmBus& bus, const std::string& channel, const Message& mes
   lcm::Publish(bus, channel, message);
   while (bus.HandleSubscriptions(0) > 0) {
   }
+}
+
+run_verdict_t Verdict(int64_t run_id, int64_t step, int8_t verdict) {
+  run_verdict_t message{};
+  message.run_id = run_id;
+  message.step = step;
+  message.verdict = verdict;
+  message.goal = run_verdict_t::GOAL_MISSED;
+  message.exit_code = 3;
+  message.goal_completion_step = -1;
+  message.goal_text = "missed (1 of 2 robots arrived)";
+  message.reasons = "collision: robots 0 and 1 collided\ngoal: the go_to_goal experiment missed its goal";
+  return message;
 }
 
 class BusFrameCollectorTest : public ::testing::Test {
@@ -330,6 +344,54 @@ TEST_F(BusFrameCollectorTest, MeasuredPosesOfTheSameStepAreKept) {
   PublishStep(bus_, 5, 4, {{0.0, 0.0, 0.0}}, 0);  // a step without: the old ones are not drawn with it
   ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
   EXPECT_TRUE(frame_.measured_x_m.empty());
+}
+
+}  // namespace
+}  // namespace dream::view
+
+namespace dream::view {
+namespace {
+
+// Issue 33: the page ends a run on the world's DREAM_VERDICT (summary.json's),
+// taken by the agents' rule: the run drawn, once it is over.
+TEST_F(BusFrameCollectorTest, TheVerdictOfTheRunDrawnIsTakenOnceItIsOver) {
+  RunWithACollision();
+  // While the run runs, a verdict (forged: the world judges only at the end) is refused.
+  PublishOne(bus_, "DREAM_VERDICT", Verdict(5, 2, run_verdict_t::CLEAN));
+  ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
+  EXPECT_FALSE(frame_.judged.has_value());
+  Finish(5, 3, 1);
+  // Another run's verdict is refused too, and an undecodable one is counted as bad.
+  PublishOne(bus_, "DREAM_VERDICT", Verdict(6, 3, run_verdict_t::CLEAN));
+  const uint8_t garbage[5] = {1, 2, 3, 4, 5};
+  bus_.Publish("DREAM_VERDICT", garbage, 5);
+  while (bus_.HandleSubscriptions(0) > 0) {
+  }
+  collector_.TakeFrame(&frame_, &version_);
+  EXPECT_FALSE(frame_.judged.has_value());
+  EXPECT_EQ(collector_.verdicts_refused(), 2);
+  EXPECT_EQ(collector_.bad_messages(), 1);
+
+  PublishOne(bus_, "DREAM_VERDICT", Verdict(5, 3, run_verdict_t::REJECTED));
+  ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
+  ASSERT_TRUE(frame_.judged.has_value());
+  EXPECT_EQ(frame_.judged->verdict, "rejected");
+  EXPECT_EQ(frame_.judged->goal, "missed (1 of 2 robots arrived)");
+  EXPECT_EQ(frame_.judged->exit_code, 3);
+  EXPECT_EQ(frame_.judged->reasons, (std::vector<std::string>{"collision: robots 0 and 1 collided",
+                                                              "goal: the go_to_goal experiment missed its goal"}));
+  // A verdict value none of the four is refused, the one taken stays.
+  PublishOne(bus_, "DREAM_VERDICT", Verdict(5, 3, 9));
+  collector_.TakeFrame(&frame_, &version_);
+  EXPECT_EQ(frame_.judged->verdict, "rejected");
+
+  // The next run drawn is judged at its own end only.
+  PublishStep(bus_, 6, 0, {{0.0, 0.0, 0.0}, {1.0, 0.0, M_PI}}, 0);
+  PublishStep(bus_, 6, 1, {{0.0, 0.0, 0.0}, {1.0, 0.0, M_PI}}, 0);
+  ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
+  EXPECT_EQ(frame_.run_id, 6);
+  EXPECT_EQ(frame_.step, 1);
+  EXPECT_FALSE(frame_.judged.has_value());
 }
 
 }  // namespace

@@ -56,6 +56,22 @@ TEST(FrameJsonTest, WritesWhatThePageReads) {
   EXPECT_EQ(json["violations"][0]["other"], 1);
   EXPECT_EQ(json["located"], 7);
   EXPECT_TRUE(json["other_world"].is_null());  // alone on the bus
+  EXPECT_TRUE(json["judged"].is_null());       // not judged yet
+}
+
+TEST(FrameJsonTest, CarriesTheWorldsVerdictOnceTheRunIsJudged) {
+  ViewFrame frame = TwoRobots();
+  frame.judged = ViewFrame::Judged{"not_ready",
+                                   "missed (worst 0.0200082 m, tolerance 0.02 m)",
+                                   5,
+                                   {"goal: the go_to_goal experiment missed its goal"}};
+  const nlohmann::json json = nlohmann::json::parse(FrameJson(frame));
+  // As the setup's "judged" (summary.json's in a replay): what the page ends the run on.
+  EXPECT_EQ(json["judged"]["verdict"], "not_ready");
+  EXPECT_EQ(json["judged"]["goal"], "missed (worst 0.0200082 m, tolerance 0.02 m)");
+  EXPECT_EQ(json["judged"]["exit_code"], 5);
+  EXPECT_EQ(json["judged"]["reasons"], nlohmann::json::parse(R"(["goal: the go_to_goal experiment missed its goal"])"));
+  EXPECT_EQ(json["judged"]["metrics"], nlohmann::json::array());
 }
 
 TEST(FrameJsonTest, ASecondWorldOnTheBusIsSaid) {

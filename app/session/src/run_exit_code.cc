@@ -17,7 +17,7 @@ ExitCode ExitCodeOf(world::RunVerdict verdict) {
   return kExitOk;
 }
 
-ExitCode ExitCodeOf(const node::RunOutcome& outcome, const world::RunJudgement& judgement) {
+ExitCode ExitCodeOf(const node::RunOutcome& outcome, const world::RunJudgement& judgement, bool log_failure) {
   switch (outcome.end) {
     case node::RunOutcome::End::kFinished:
       break;
@@ -25,7 +25,7 @@ ExitCode ExitCodeOf(const node::RunOutcome& outcome, const world::RunJudgement& 
       return kExitInterrupted;
     case node::RunOutcome::End::kStartTimeout:
     case node::RunOutcome::End::kFailed:
-      spdlog::error("{}", outcome.reason);
+      if (log_failure) spdlog::error("{}", outcome.reason);
       return kExitRunFailed;
   }
   // A robot whose controller failed makes the run fail, whatever the rest did.
@@ -33,9 +33,9 @@ ExitCode ExitCodeOf(const node::RunOutcome& outcome, const world::RunJudgement& 
   return ExitCodeOf(judgement.verdict());
 }
 
-ExitCode ExitCodeOf(const RunResult& result) {
+ExitCode ExitCodeOf(const RunResult& result, bool log_failure) {
   if (!result.summary_written) return kExitRunFailed;  // the session said which output, and why
-  const ExitCode code = ExitCodeOf(result.outcome, result.judgement);
+  const ExitCode code = ExitCodeOf(result.outcome, result.judgement, log_failure);
   return result.picture_failed ? kExitRunFailed : code;
 }
 

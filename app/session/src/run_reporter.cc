@@ -129,6 +129,7 @@ RunResult RunReporter::Report(const Ended& ended) const {
   result.judgement = Judge(ended, log, &summary);
   summary.SetVerdict(result.judgement);
   const nlohmann::ordered_json goal = summary.goal;
+  result.goal = goal;
   for (auto it = ended.fields.begin(); it != ended.fields.end(); ++it) summary.Set(it.key(), it.value());
   try {
     files::WriteFileAtomically(ended.dir + "/" + kSummaryName, summary.Text());

@@ -18,7 +18,9 @@
 #include "dream/node/refused_record.h"
 #include "dream/node/sim_node.h"
 #include "dream/node/true_pose_recording.h"
+#include "dream/session/run_exit_code.h"
 #include "dream/session/terminal_progress.h"
+#include "dream/session/verdict_broadcast.h"
 #include "dream/world/barrier_world.h"
 #include "dream/world/realistic_world.h"
 
@@ -40,6 +42,11 @@ struct RunSession::Stepped {
   /// .part there is another file): the folder is another run's now.
   bool folder_replaced = false;
 };
+
+bool RunSession::LogKeepsVerdict(const Stepped& stepped) {
+  // A log the disk refused stays as the failure left it: every whole event before it.
+  return !stepped.folder_replaced && stepped.outcome.end != node::RunOutcome::End::kFailed;
+}
 
 RunSession::RunSession(run_config::RunConfig config, Options options) : config_(std::move(config)), options_(options) {
   try {
@@ -103,7 +110,16 @@ RunResult RunSession::Run(lcm::LcmInterface& lcm, const Folder& folder, const Gi
   if (ran_) throw std::logic_error("RunSession::Run: a session runs once (" + config_.name + ")");
   ran_ = true;
   const Stepped stepped = Step(lcm, folder, world);
-  return Report(stepped, folder.dir);
+  RunResult result = Report(stepped, folder.dir);
+  // After summary.json: a viewer ends on the one judge's verdict, and a log
+  // written whole keeps it as its last event (summary.json's log_events counts it).
+  if (result.summary_written) {
+    const run_verdict_t verdict = VerdictBroadcast::MessageOf(result, stepped.outcome.run_id, stepped.world->utime(),
+                                                              ExitCodeOf(result, /*log_failure=*/false));
+    VerdictBroadcast::Send(lcm, verdict, LogKeepsVerdict(stepped) ? folder.dir + "/" + kLogName : std::string(),
+                           stepped.outcome.log_events);
+  }
+  return result;
 }
 
 RunSession::Stepped RunSession::Step(lcm::LcmInterface& lcm, const Folder& folder, const GivenWorld& given) {
@@ -171,6 +187,7 @@ RunResult RunSession::Report(const Stepped& stepped, const std::string& dir) {
   RunReporter::Ended ended;
   ended.world = stepped.world.get();
   ended.outcome = stepped.outcome;
+  if (LogKeepsVerdict(stepped)) ++ended.outcome.log_events;  // DREAM_VERDICT, appended once summary.json is written
   ended.dir = dir;
   ended.fields = stepped.world_fields;
   return Reporter().Report(ended);

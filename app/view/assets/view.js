@@ -38,7 +38,8 @@
   }
 
   // The verdict shown: at a judged run's end, summary.json's (the one judge's,
-  // goal included); before it, the counts' so far.
+  // goal included: the world's DREAM_VERDICT live, the run folder's summary.json
+  // in a replay); before it, the counts' so far.
   function shownVerdict(c) {
     return c && c.judged ? c.judged.verdict : verdictOf(c);
   }
@@ -409,7 +410,8 @@
     for (const [s, r] of f.links) view.links.set(`${s}/${r}`, { s, r, seen: now });
     view.live = f;
     if (f.step >= 0) advanceGoals(f);
-    view.counts = f.status ? { ...f.status } : null;
+    // Once the world judged the run (DREAM_VERDICT, after its summary.json), its verdict and goal.
+    view.counts = f.status ? { ...f.status, judged: f.judged || null } : null;
   }
 
   function liveScene(now) {

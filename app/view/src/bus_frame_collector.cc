@@ -1,11 +1,13 @@
 #include "dream/view/bus_frame_collector.h"
 
 #include <algorithm>
+#include <sstream>
 #include <utility>
 
 #include "dream/lcm/channels.h"
 #include "dream/lcm/lcm_typed.h"
 #include "dream/lcm/message_limits.h"
+#include "dream/world/run_verdict.h"
 
 namespace dream::view {
 namespace {
@@ -28,6 +30,22 @@ bool WantedKind(const NewViolations& added, ViolationMark::Kind kind) {
       return added.obstacle;
   }
   return false;
+}
+
+// run_verdict_t's constant as the verdict it names; none for any other value.
+std::optional<world::RunVerdict> VerdictOf(int8_t value) {
+  switch (value) {
+    case run_verdict_t::CLEAN:
+      return world::RunVerdict::kClean;
+    case run_verdict_t::WARNING:
+      return world::RunVerdict::kWarning;
+    case run_verdict_t::NOT_READY:
+      return world::RunVerdict::kNotReady;
+    case run_verdict_t::REJECTED:
+      return world::RunVerdict::kRejected;
+    default:
+      return std::nullopt;
+  }
 }
 
 }  // namespace
@@ -73,6 +91,14 @@ void BusFrameCollector::OnMessage(const std::string& channel, const void* data, 
       return;
     }
     OnStatus(status_in_);
+  } else if (channel == lcm::kVerdictChannel) {
+    const bool decoded = lcm::Decode(data, size, &verdict_in_);
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!decoded) {
+      ++bad_messages_;
+      return;
+    }
+    OnVerdict();
   } else if (const std::optional<int> sender = lcm::RobotIdFromChannel(channel, lcm::kRadioChannelPrefix)) {
     // Who spoke is in the channel's name; the payload is the algorithm's own
     // and is not decoded (a view draws, it does not listen).
@@ -107,6 +133,27 @@ void BusFrameCollector::StartRun(int64_t run_id) {
   radio_senders_.clear();
   marks_.clear();
   marks_located_ = 0;
+  judged_.reset();
+}
+
+void BusFrameCollector::OnVerdict() {
+  // The agents' rule: the run followed, and only once it said it is over.
+  const bool followed = run_id_ != 0 && verdict_in_.run_id == run_id_ && choice_.OnMessageOf(verdict_in_.run_id);
+  const std::optional<world::RunVerdict> verdict = VerdictOf(verdict_in_.verdict);
+  if (!followed || !choice_.ended() || !verdict) {
+    ++verdicts_refused_;
+    return;
+  }
+  ViewFrame::Judged judged;
+  judged.verdict = world::RunVerdictName(*verdict);
+  judged.goal = verdict_in_.goal_text.substr(0, ViewFrame::kMaxDetailChars);
+  judged.exit_code = verdict_in_.exit_code;
+  std::istringstream lines(verdict_in_.reasons);
+  for (std::string line; std::getline(lines, line) && judged.reasons.size() < ViewFrame::Judged::kMaxReasons;) {
+    judged.reasons.push_back(line.substr(0, ViewFrame::kMaxDetailChars));
+  }
+  judged_ = std::move(judged);
+  ++version_;
 }
 
 void BusFrameCollector::OnObstacles() {
@@ -207,12 +254,18 @@ bool BusFrameCollector::TakeFrame(ViewFrame* frame, uint64_t* version) {
   frame->violations.assign(marks_.begin(), marks_.end());
   frame->violations_located = marks_located_;
   frame->other_world = other_world_;
+  frame->judged = judged_;
   return true;
 }
 
 bool BusFrameCollector::Follow(int64_t run_id) {
   std::lock_guard<std::mutex> lock(mutex_);
   return choice_.Choose(run_id);
+}
+
+int64_t BusFrameCollector::verdicts_refused() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return verdicts_refused_;
 }
 
 int64_t BusFrameCollector::bad_messages() const {

@@ -69,6 +69,28 @@ void AppendViolation(JsonWriter& json, const ViolationMark& mark) {
   json.EndObject();
 }
 
+namespace {
+
+// As the setup's "judged" (summary.json's), less the metrics the bus does not carry.
+void WriteJudgedJson(JsonWriter& json, const std::optional<ViewFrame::Judged>& judged) {
+  json.Key("judged");
+  if (!judged) {
+    json.Null();
+    return;
+  }
+  json.BeginObject();
+  json.Key("verdict").String(judged->verdict);
+  json.Key("reasons").BeginArray();
+  for (const std::string& reason : judged->reasons) json.String(reason);
+  json.EndArray();
+  json.Key("goal").String(judged->goal);
+  json.Key("exit_code").Integer(judged->exit_code);
+  json.Key("metrics").BeginArray().EndArray();
+  json.EndObject();
+}
+
+}  // namespace
+
 std::string FrameJson(const ViewFrame& frame) {
   std::string out;
   out.reserve(256 + frame.x_m.size() * 60 + frame.obstacles.size() * 60);
@@ -125,6 +147,7 @@ std::string FrameJson(const ViewFrame& frame) {
   } else {
     json.Null();
   }
+  WriteJudgedJson(json, frame.judged);
   json.EndObject();
   return out;
 }

@@ -7,8 +7,11 @@
 #include <set>
 
 #include "dream/files/file_text.h"
+#include "dream/lcm/lcm_bus.h"
+#include "dream/lcm/lcm_url.h"
 #include "dream/session/exit_code.h"
 #include "dream/session/run_reporter.h"
+#include "dream/session/verdict_broadcast.h"
 #include "dream/world/run_verdict.h"
 #include "dream/world/verdict_reason.h"
 
@@ -112,6 +115,17 @@ int AgentReports::Merge(const session::RunSession& session, const std::string& o
       << "verdict: " << world::RunVerdictName(verdict) << " (with the agents' reports, which the simulator's "
       << "report above could not know; summary.json verdict_reasons)\n";
   return sim_exit == session::kExitOk ? session::kExitNotReady : sim_exit;
+}
+
+void AgentReports::ResendVerdict(const session::RunSession& session, const std::string& out_dir,
+                                 const std::string& lcm_url, int exit_code) {
+  try {
+    lcm::LcmBus bus(lcm::ResolveLcmUrl(lcm_url));
+    session::VerdictBroadcast::Resend(bus, out_dir + "/" + session::RunReporter::kSummaryName,
+                                      session.config().world.time_step_s, static_cast<session::ExitCode>(exit_code));
+  } catch (const std::exception& e) {
+    spdlog::warn("the verdict with the agents' reports was not published on DREAM_VERDICT: {}", e.what());
+  }
 }
 
 }  // namespace dream::workflows

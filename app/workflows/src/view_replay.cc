@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -93,6 +94,19 @@ std::optional<view::ViewSetup::Judged> ViewReplay::JudgedOfRun(const std::string
   }
 }
 
+std::optional<view::ViewSetup::Judged> ViewReplay::JudgedOfVerdict(const run_verdict_t& verdict) {
+  static const char* const kNames[] = {"clean", "warning", "not_ready", "rejected"};
+  if (verdict.verdict < run_verdict_t::CLEAN || verdict.verdict > run_verdict_t::REJECTED) return std::nullopt;
+  view::ViewSetup::Judged judged;
+  judged.verdict = kNames[verdict.verdict];
+  judged.goal = verdict.goal_text.substr(0, 300);
+  std::istringstream lines(verdict.reasons);
+  for (std::string line; std::getline(lines, line) && judged.reasons.size() < view::ViewSetup::Judged::kMaxListed;) {
+    judged.reasons.push_back(line.substr(0, 300));
+  }
+  return judged;
+}
+
 ViewReplay ViewReplay::OfRun(const std::string& run, const std::string& config_path,
                              const std::string& python_runtime_dir) {
   const std::string log_path = files::RunLogPath(run);
@@ -109,6 +123,11 @@ ViewReplay ViewReplay::OfRun(const std::string& run, const std::string& config_p
   replay.setup.mode = view::ViewSetup::Mode::kReplay;
   replay.setup.source = run;
   replay.setup.judged = JudgedOfRun(log_path);
+  // A log alone (no summary.json beside it): the verdict its world appended, if any. A summary
+  // that cannot be read is said so and not replaced: the view then shows no verdict of the one judge.
+  std::error_code error;
+  const bool summary_beside = fs::exists(fs::path(log_path).parent_path() / node::RunSummary::kFileName, error);
+  if (!replay.setup.judged && !summary_beside && log.verdict()) replay.setup.judged = JudgedOfVerdict(*log.verdict());
   replay.run_json = view::RunReplayJson(log, replay.setup);
   replay.steps = log.poses().size();
   return replay;

@@ -11,6 +11,7 @@
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
+#include "dream/run_verdict_t.hpp"
 #include "dream/velocity_command_t.hpp"
 
 namespace dream::run_log {
@@ -55,6 +56,15 @@ nlohmann::ordered_json ToJson(const run_status_t& m) {
                               {"num_lost", m.num_lost},
                               {"lost_robot_ids", m.lost_robot_ids},
                               {"detail", m.detail}});
+}
+
+nlohmann::ordered_json ToJson(const run_verdict_t& m) {
+  return WithMessageStart(m, {{"verdict", m.verdict},
+                              {"goal", m.goal},
+                              {"exit_code", m.exit_code},
+                              {"goal_completion_step", m.goal_completion_step},
+                              {"goal_text", m.goal_text},
+                              {"reasons", m.reasons}});
 }
 
 nlohmann::ordered_json ToJson(const velocity_command_t& m) {
@@ -128,6 +138,7 @@ MessageJson::MessageJson(const std::vector<uint8_t>& data) {
   attempt(radio_message_t{});
   attempt(robot_fault_t{});
   attempt(applied_commands_t{});
+  attempt(run_verdict_t{});
   if (!matched) {
     char text[32];
     std::snprintf(text, sizeof(text), "%016llx", static_cast<unsigned long long>(fingerprint));

@@ -152,6 +152,7 @@ RunLog RunLog::Read(const std::string& path) {
   run_status_t status;
   AgentMessagesHeard heard;
   WorldsHeard worlds;
+  std::vector<run_verdict_t> verdicts;  // at most one a run; bounded by the log's own bytes
   // A world message that does not decode: named by its event and byte offset.
   auto undecodable = [&](std::optional<Problem>* flaw, const std::string& problem) {
     if (*flaw) return;
@@ -184,11 +185,16 @@ RunLog RunLog::Read(const std::string& path) {
       } else {
         worlds.AddStatus(std::move(status));
       }
+    } else if (record.channel == lcm::kVerdictChannel) {
+      if (run_verdict_t verdict; lcm::Decode(data, size, &verdict)) verdicts.push_back(std::move(verdict));
     } else {
       heard.Take(record);
     }
   }
   log.TakeRun(std::move(worlds));
+  for (run_verdict_t& verdict : verdicts) {
+    if (verdict.run_id == log.run_id_) log.verdict_ = std::move(verdict);  // another run's is no part of this one
+  }
   log.radio_sends_ = heard.RadioOf(log);
   log.Index(heard.FaultsOf(log));
   log.commands_ = heard.CommandsOf(log, /*lab=*/false);

@@ -10,6 +10,7 @@
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
+#include "dream/run_verdict_t.hpp"
 #include "dream/velocity_command_t.hpp"
 #include "dream/lcm/lcm_typed.h"
 #include "dream/lcm/message_header.h"
@@ -38,7 +39,7 @@ bool ClearRunId(std::vector<uint8_t>* encoded) {
   const bool carries_run_id = hash == applied_commands_t::getHash() || hash == obstacles_t::getHash() ||
                               hash == radio_message_t::getHash() || hash == robot_fault_t::getHash() ||
                               hash == robot_poses_t::getHash() || hash == run_status_t::getHash() ||
-                              hash == velocity_command_t::getHash();
+                              hash == run_verdict_t::getHash() || hash == velocity_command_t::getHash();
   if (!carries_run_id) return false;
   std::memset(encoded->data() + kRunIdAt, 0, 8);
   return true;

@@ -7,6 +7,7 @@
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
+#include "dream/run_verdict_t.hpp"
 #include "dream/velocity_command_t.hpp"
 
 // Each layout follows its .lcm file field by field (lcmtypes/dream/). A test
@@ -89,6 +90,15 @@ const WireLayout& WireLayoutOf<run_status_t>() {
           .Count(MessageLimits::kRobots)
           .Array(kInt32)  // lost_robot_ids
           .String(MessageLimits::kDetailBytes);
+  return layout;
+}
+
+template <>
+const WireLayout& WireLayoutOf<run_verdict_t>() {
+  static const WireLayout layout = MessageStart<run_verdict_t>()
+                                       .Fixed(kInt8 + kInt8 + kInt32 + kInt64)  // verdict, goal, exit code, step met
+                                       .String(MessageLimits::kDetailBytes)     // goal_text
+                                       .String(MessageLimits::kDetailBytes);    // reasons
   return layout;
 }
 

@@ -1,5 +1,6 @@
 #include "dream/run_config/startup_drive_check.h"
 
+#include "dream/run_config/startup_drive_cache.h"
 #include "dream/world/printf_text.h"
 #include "dream/world/startup_drive.h"
 
@@ -11,7 +12,11 @@ StartupDriveCheck StartupDriveCheck::Of(const RunConfig& config) {
   check.start_ = config.start;
   check.lab_safe_spacing_m_ = config.lab_safe_spacing_m;
   check.applies_ = !config.sim_only;
-  if (check.applies_) check.trials_ = world::StartupDriveTrials::Try(config.world, config.initial_poses, config.seed);
+  if (check.applies_) {
+    // The drives of start poses tried before (another run or export of the config, a test) are not run again.
+    const StartupDriveCache cache(StartupDriveCache::DefaultFolder());
+    check.trials_ = cache.Trials(config.world, config.initial_poses, config.seed);
+  }
   return check;
 }
 

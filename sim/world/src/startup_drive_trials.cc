@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <future>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 #include "dream/robotarium/robotarium_constants.h"
@@ -37,6 +38,12 @@ StartupDriveTrials StartupDriveTrials::Try(const WorldParams& world, const std::
     }
   }
   for (std::future<StartupDriveResult>& result : drives) trials.results_.push_back(result.get());
+  return trials;
+}
+
+StartupDriveTrials StartupDriveTrials::Of(std::vector<StartupDriveResult> results) {
+  StartupDriveTrials trials;
+  trials.results_ = std::move(results);
   return trials;
 }
 

@@ -13,11 +13,12 @@ namespace dream::session {
 ExitCode ExitCodeOf(world::RunVerdict verdict);
 
 /// A run's exit code from how it ended and its verdict: interrupted 130, not
-/// finished or a controller failed 4, else ExitCodeOf(verdict).
-ExitCode ExitCodeOf(const node::RunOutcome& outcome, const world::RunJudgement& judgement);
+/// finished or a controller failed 4, else ExitCodeOf(verdict). A run that
+/// failed logs why, unless `log_failure` is false (the code asked again).
+ExitCode ExitCodeOf(const node::RunOutcome& outcome, const world::RunJudgement& judgement, bool log_failure = true);
 
 /// As above, and 4 when summary.json or a due picture could not be written.
-ExitCode ExitCodeOf(const RunResult& result);
+ExitCode ExitCodeOf(const RunResult& result, bool log_failure = true);
 
 /// Whether `code` says the run finished and was judged (0, 3 or 5), so its
 /// summary.json holds its verdict; any other code says it did not run to a

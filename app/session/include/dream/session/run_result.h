@@ -1,5 +1,7 @@
 #pragma once
 
+#include <nlohmann/json.hpp>
+
 #include "dream/node/run_outcome.h"
 #include "dream/world/run_judgement.h"
 #include "dream/world/run_report.h"
@@ -12,6 +14,8 @@ namespace dream::session {
 struct RunResult {
   node::RunOutcome outcome;
   world::RunJudgement judgement{world::RunReport{}};
+  /// summary.json's goal (ExperimentGoal::Json, with "judged"); null before it is judged.
+  nlohmann::ordered_json goal;
   /// summary.json was written (a full disk may refuse it).
   bool summary_written = false;
   /// A picture was due (the run made a step or finished) and could not be drawn or written.

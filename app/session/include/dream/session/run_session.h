@@ -113,6 +113,8 @@ class RunSession {
   GivenWorld OwnWorld();
   Stepped Step(lcm::LcmInterface& lcm, const Folder& folder, const GivenWorld& world);
   RunResult Report(const Stepped& stepped, const std::string& dir);
+  /// Whether the run's log gets its DREAM_VERDICT appended (a log written whole).
+  static bool LogKeepsVerdict(const Stepped& stepped);
 
   run_config::RunConfig config_;
   Options options_;

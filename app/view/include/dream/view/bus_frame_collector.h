@@ -12,6 +12,7 @@
 #include "dream/obstacles_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
+#include "dream/run_verdict_t.hpp"
 #include "dream/view/run_choice.h"
 #include "dream/view/view_frame.h"
 #include "dream/view/violation_locator.h"
@@ -24,6 +25,10 @@ namespace dream::view {
 /// older, so it costs a run a decode and a copy per message and never waits
 /// for a browser. Frames are taken from another thread (LiveView's pump) at
 /// the pace the browsers are drawn.
+///
+/// The run's verdict: a DREAM_VERDICT of the run drawn, once that run is
+/// over (its FINISHED or ABORTED status heard), is the frame's `judged`; a
+/// verdict of another run, or of the run drawn while it runs, is refused.
 ///
 /// Violations: when a DREAM_STATUS counts more boundary, collision or
 /// obstacle errors than the previous one, the world found them on the poses
@@ -44,7 +49,7 @@ class BusFrameCollector {
   static constexpr size_t kMaxMarks = 64;
 
   /// Subscribes to DREAM_POSES, DREAM_MEASURED_POSES, DREAM_OBSTACLES,
-  /// DREAM_STATUS and DREAM_RADIO_<n> on `bus`, until destroyed.
+  /// DREAM_STATUS, DREAM_VERDICT and DREAM_RADIO_<n> on `bus`, until destroyed.
   /// `now` is RunChoice's clock (tests give their own).
   BusFrameCollector(lcm::LcmInterface& bus, const world::WorldParams& world,
                     std::function<RunChoice::Clock::time_point()> now = &RunChoice::Clock::now);
@@ -60,6 +65,9 @@ class BusFrameCollector {
 
   /// Messages that did not decode (forged or foreign), since the start.
   int64_t bad_messages() const;
+  /// DREAM_VERDICTs that decoded but were not taken: another run's, or of
+  /// the run drawn before it ended.
+  int64_t verdicts_refused() const;
 
   /// The handler, public for the benchmark and the tests: what one message costs.
   void OnMessage(const std::string& channel, const void* data, int size);
@@ -69,6 +77,8 @@ class BusFrameCollector {
   void OnStatus(const run_status_t& status);
   void StartRun(int64_t run_id);
   void OnObstacles();  // obstacles_in_ decoded
+  /// verdict_in_ decoded: kept only when it is the drawn run's and that run is over.
+  void OnVerdict();
 
   mutable std::mutex mutex_;
   RunChoice choice_;
@@ -79,6 +89,7 @@ class BusFrameCollector {
   robot_poses_t measured_in_{};
   obstacles_t obstacles_in_{};
   run_status_t status_in_{};
+  run_verdict_t verdict_in_{};
   // The newest state, under mutex_.
   uint64_t version_ = 0;
   int64_t run_id_ = 0;
@@ -95,6 +106,8 @@ class BusFrameCollector {
   obstacles_t unfollowed_obstacles_{};
   std::optional<ViewFrame::OtherWorld> other_world_;  // as last taken
   std::vector<int> radio_senders_;                    // since the last TakeFrame
+  std::optional<ViewFrame::Judged> judged_;           // the drawn run's DREAM_VERDICT
+  int64_t verdicts_refused_ = 0;
   std::deque<ViolationMark> marks_;
   int64_t marks_located_ = 0;
   int64_t bad_messages_ = 0;

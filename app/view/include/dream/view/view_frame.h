@@ -77,6 +77,19 @@ struct ViewFrame {
   int64_t violations_located = 0;
   /// Another run heard lately on the bus and not drawn; none when alone.
   std::optional<OtherWorld> other_world;
+
+  /// The run's verdict as its world said it on DREAM_VERDICT (run_verdict_t)
+  /// once summary.json was written: the one judge's, goal included, which
+  /// the page ends the run on instead of its verdict so far.
+  struct Judged {
+    static constexpr size_t kMaxReasons = 64;  ///< reasons kept, at most
+    std::string verdict;                       ///< clean, warning, not_ready or rejected
+    std::string goal;                          ///< "met at step N (...)", "missed (...)", "none declared"
+    int exit_code = 0;                         ///< the exit code of the command that ran the world
+    std::vector<std::string> reasons;          ///< "rule: problem" each
+  };
+  /// None until the run drawn was judged.
+  std::optional<Judged> judged;
 };
 
 }  // namespace dream::view

@@ -30,6 +30,12 @@ class AgentReports {
   static int Merge(const session::RunSession& session, const std::string& out_dir, int sim_exit,
                    std::ostream& out = std::cout);
 
+  /// The simulator published its verdict on DREAM_VERDICT before the agents'
+  /// reports made it worse: publishes summary.json's now on `lcm_url`, so a
+  /// viewer ends on it (a failure is logged, never the launch's).
+  static void ResendVerdict(const session::RunSession& session, const std::string& out_dir, const std::string& lcm_url,
+                            int exit_code);
+
   nlohmann::ordered_json section;  ///< summary.json's "agents"
   std::string problem;             ///< what they refused, in one line ("" when nothing)
 };

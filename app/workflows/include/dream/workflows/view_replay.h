@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "dream/run_verdict_t.hpp"
 #include "dream/view/view_setup.h"
 
 namespace dream::workflows {
@@ -30,6 +31,10 @@ struct ViewReplay {
   /// as the verdict at the run's end (none without a readable summary; a
   /// summary that cannot be read is only logged).
   static std::optional<view::ViewSetup::Judged> JudgedOfRun(const std::string& log_path);
+
+  /// The run's judgement from the DREAM_VERDICT its log ends with: for a log
+  /// replayed without its summary.json (none for a verdict none of the four).
+  static std::optional<view::ViewSetup::Judged> JudgedOfVerdict(const run_verdict_t& verdict);
 };
 
 }  // namespace dream::workflows

@@ -11,6 +11,7 @@
 #include "dream/obstacles_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
+#include "dream/run_verdict_t.hpp"
 #include "dream/run_log/recorded_command.h"
 
 namespace dream::run_log {
@@ -108,6 +109,10 @@ class RunLog {
   /// The last DREAM_STATUS that decodes: how the run ended (FINISHED,
   /// ABORTED), or where it stood when the log stops; none in a log without one.
   const std::optional<run_status_t>& last_status() const { return last_status_; }
+  /// The run's DREAM_VERDICT (the one judge's, appended once summary.json was
+  /// written): the last one of run_id() that decodes; none in a log without one
+  /// (an imported lab run, a run older than the message, a log the disk refused).
+  const std::optional<run_verdict_t>& verdict() const { return verdict_; }
   /// Of the robots lost at the end (last_status()'s lost_robot_ids), those
   /// whose agent said why on DREAM_FAULT_<id>: id -> "step k: detail", from
   /// the first fault of this run (the run id of its poses) on the channel
@@ -154,6 +159,7 @@ class RunLog {
   std::vector<RecordedCommand> lab_commands_;
   std::vector<applied_commands_t> applied_;
   std::optional<run_status_t> last_status_;
+  std::optional<run_verdict_t> verdict_;
   std::map<int, std::string> robot_faults_;
   std::optional<Problem> world_flaw_;   // poses and obstacles
   std::optional<Problem> status_flaw_;  // an undecodable DREAM_STATUS

@@ -16,6 +16,9 @@ inline constexpr const char* kPosesChannel = "DREAM_POSES";
 inline constexpr const char* kObstaclesChannel = "DREAM_OBSTACLES";
 /// Run state, violation counts, lost agents; world -> all.
 inline constexpr const char* kStatusChannel = "DREAM_STATUS";
+/// The one judge's verdict of a run (run_verdict_t); world -> all, once,
+/// after summary.json is written, and the last event of the run's log.
+inline constexpr const char* kVerdictChannel = "DREAM_VERDICT";
 /// The commands the world applied at a step (applied_commands_t): recorded in
 /// the run log by the world, never published.
 inline constexpr const char* kAppliedChannel = "DREAM_APPLIED";
@@ -52,8 +55,8 @@ inline constexpr const char* kAgentInboxRegex = "DREAM_(POSES|OBSTACLES|STATUS|R
 /// What an agent host may say: its robots' commands, radio and faults.
 inline constexpr const char* kAgentOutboxRegex = "DREAM_(CMD|RADIO|FAULT)_[0-9]+";
 /// What a viewer of a run draws: the world's step, the measured poses a
-/// realistic world records, and who spoke on the radio.
-inline constexpr const char* kViewChannelsRegex = "DREAM_(POSES|MEASURED_POSES|OBSTACLES|STATUS|RADIO_[0-9]+)";
+/// realistic world records, who spoke on the radio, and the run's verdict.
+inline constexpr const char* kViewChannelsRegex = "DREAM_(POSES|MEASURED_POSES|OBSTACLES|STATUS|VERDICT|RADIO_[0-9]+)";
 
 /// "DREAM_RADIO_<robot_id>".
 inline std::string RadioChannel(int robot_id) { return kRadioChannelPrefix + std::to_string(robot_id); }

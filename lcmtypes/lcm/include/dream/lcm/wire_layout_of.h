@@ -9,6 +9,7 @@ class radio_message_t;
 class robot_fault_t;
 class robot_poses_t;
 class run_status_t;
+class run_verdict_t;
 class velocity_command_t;
 }  // namespace dream
 
@@ -32,6 +33,8 @@ template <>
 const WireLayout& WireLayoutOf<robot_poses_t>();
 template <>
 const WireLayout& WireLayoutOf<run_status_t>();
+template <>
+const WireLayout& WireLayoutOf<run_verdict_t>();
 template <>
 const WireLayout& WireLayoutOf<velocity_command_t>();
 

@@ -31,6 +31,9 @@ class StartupDrive {
  public:
   // rps's generate_initial_poses: 11 positions along each of the two long edges.
   static constexpr int kChargerSlots = 22;
+  // Raised with every change that alters any drive's result: run_config's
+  // StartupDriveCache keys its files on it, so no result of an older drive is reused.
+  static constexpr int kRevision = 1;
   // rps's create_at_pose(position_error=0.05, rotation_error=0.2).
   static constexpr double kAtPositionM = 0.05;
   static constexpr double kAtHeadingRad = 0.2;

@@ -24,6 +24,9 @@ class StartupDriveTrials {
   // `world.start: placed` runs.
   static uint64_t PlacementSeed(uint64_t run_seed, int placement);
 
+  // Trials already run (a cache's): `results` as Try gave them.
+  static StartupDriveTrials Of(std::vector<StartupDriveResult> results);
+
   int tried() const { return static_cast<int>(results_.size()); }
   int settled() const;
   bool AllSettled() const { return settled() == tried(); }
