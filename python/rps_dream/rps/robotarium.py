@@ -23,6 +23,7 @@ import numpy as np
 
 import rps
 from rps._world_link import WorldGone, WorldLink
+from rps.robotarium_constants import RobotariumConstants
 
 HELLO_FD_VARIABLE = "DREAM_SCRIPT_FD"
 _made = []  # the one Robotarium of this script
@@ -61,22 +62,8 @@ def _unsupported(call):
     return refuse
 
 
-class Robotarium:
+class Robotarium(RobotariumConstants):
     """Robotarium(number_of_robots=N, show_figure=..., initial_conditions=3xN, sim_in_real_time=..., ...)."""
-
-    TIME_STEP = 0.033
-    MAX_LINEAR_VELOCITY = 0.2
-    ROBOT_DIAMETER = 0.11
-    WHEEL_RADIUS = 0.016
-    BASE_LENGTH = 0.11
-    COLLISION_DIAMETER = 0.135
-    COLLISION_OFFSET = 0.025
-    BOUNDARIES = np.array([-1.6, 1.6, -1.0, 1.0])
-    CENTER_OFFSET = 0.01
-    ENCODER_COUNTS_PER_REVOLUTION = 28
-    MOTOR_GEAR_RATIO = 100.37
-    MAX_WHEEL_VELOCITY = MAX_LINEAR_VELOCITY / WHEEL_RADIUS
-    MAX_ANGULAR_VELOCITY = 2.0 * (WHEEL_RADIUS / ROBOT_DIAMETER) * (MAX_LINEAR_VELOCITY / WHEEL_RADIUS)
 
     def __init__(self, **kwargs):
         if _made:

@@ -25,22 +25,13 @@ Differences from the official simulator, on purpose:
 import numpy as np
 
 from rps import startup_drive
+from rps.robotarium_constants import RobotariumConstants
 from rps.utilities.barrier_certificates import create_uni_barrier_certificate
 
 
-class Robotarium:
+class Robotarium(RobotariumConstants):
     """Robotarium(number_of_robots=N, initial_conditions=3xN array, ...)."""
 
-    TIME_STEP = 0.033
-    MAX_LINEAR_VELOCITY = 0.2
-    ROBOT_DIAMETER = 0.11
-    WHEEL_RADIUS = 0.016
-    BASE_LENGTH = 0.11
-    COLLISION_DIAMETER = 0.135
-    COLLISION_OFFSET = 0.025
-    BOUNDARIES = np.array([-1.6, 1.6, -1.0, 1.0])
-    MAX_WHEEL_VELOCITY = MAX_LINEAR_VELOCITY / WHEEL_RADIUS
-    MAX_ANGULAR_VELOCITY = 2.0 * (WHEEL_RADIUS / ROBOT_DIAMETER) * (MAX_LINEAR_VELOCITY / WHEEL_RADIUS)
 
     # V2.0.0 places robots on 22 charger slots before the start-up drive and
     # fails above 22 robots even with initial conditions; the stand-in says so.
