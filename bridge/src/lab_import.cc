@@ -424,6 +424,7 @@ ImportedRun ImportLabRun(const std::string& result_path, const std::string& expo
   outcome.steps = lab.track.last_step();
   outcome.wall_time_s = lab.wall_duration_s;
   outcome.log_events = log_events;
+  outcome.run_id = ImportedRunId(lab.track);  // the log's, so its DREAM_VERDICT is this run's
   // Judged as a lab run: the verifier's rules on what the lab did against
   // what was declared (not JudgeRun's, which assumes the run is its own export).
   imported.judgement = world::RunJudgement(

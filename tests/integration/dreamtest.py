@@ -214,6 +214,34 @@ def read_summary(out_dir):
         return json.load(f)
 
 
+VERDICT_NAMES = ("clean", "warning", "not_ready", "rejected")  # run_verdict_t.CLEAN .. REJECTED
+
+
+def check_log_ends_on_verdict(dream_types, out_dir, exit_code):
+    """The run's log holds one DREAM_VERDICT, its last event (issue 33), saying what summary.json
+    says (run, verdict, reasons, goal) and the exit code of the command that wrote the run."""
+    log_path = os.path.join(out_dir, "run.lcmlog")
+    events = read_all(log_path)
+    verdicts = [event for event in events if event.channel == "DREAM_VERDICT"]
+    check(len(verdicts) == 1, f"{log_path}: {len(verdicts)} DREAM_VERDICT events, expected one")
+    check(events[-1].channel == "DREAM_VERDICT", f"{log_path}: ends on {events[-1].channel}, not DREAM_VERDICT")
+    verdict = dream_types.run_verdict_t.decode(verdicts[0].data)
+    summary = read_summary(out_dir)
+    check(f"{verdict.run_id & 0xFFFFFFFFFFFFFFFF:016x}" == summary["run_id"],
+          f"{log_path}: the verdict of run {verdict.run_id:x}, summary.json's is {summary['run_id']}")
+    said = VERDICT_NAMES[verdict.verdict] if 0 <= verdict.verdict < len(VERDICT_NAMES) else verdict.verdict
+    check(said == summary["verdict"], f"{log_path}: the verdict says {said}, summary.json {summary['verdict']}")
+    check(verdict.exit_code == exit_code, f"{log_path}: the verdict says exit code {verdict.exit_code}, "
+                                          f"the command exited {exit_code}")
+    reasons = [f"{reason['rule']}: {reason['problem']}" for reason in summary["verdict_reasons"]]
+    logged = verdict.reasons.split("\n") if verdict.reasons else []
+    # Each reason whole, or cut at 1000 characters with "..." (VerdictBroadcast::kMaxTextChars).
+    same = len(logged) == len(reasons) and all(
+        text == full or (text.endswith("...") and full.startswith(text[:-3])) for text, full in zip(logged, reasons))
+    check(same, f"{log_path}: the verdict's reasons {logged} are not summary.json's {reasons}")
+    return verdict
+
+
 def config_with(base_path, out_path, steps=None, stop_when_done=None, **world):
     """Copies the run config at base_path to out_path with top-level steps / stop_when_done and
     keys of the world: section replaced (each must already be present in the file)."""

@@ -15,7 +15,7 @@ these once (correct fingerprints, so only the counts are wrong):
 The launch must exit 0 with no agent failing, nobody lost, no command rejected; its DREAM_POSES
 must equal `dream run`'s message by message; summary.json must count DREAM_FAULT_1 and DREAM_CMD_1
 in bad_messages and name the forger's agent_id in bad_message_senders; the agents must log each
-refused channel.
+refused channel; run.lcmlog must end on one DREAM_VERDICT, summary.json's with the agents' reason.
 
 Usage: netns.sh forged_counts_do_not_disturb_launch.py --dream BIN --source DIR --types-dir DIR
 """
@@ -24,7 +24,8 @@ import os
 import struct
 import time
 
-from dreamtest import Udpm, arguments, check, import_types, main, read_summary, require_private_netns
+from dreamtest import (Udpm, arguments, check, check_log_ends_on_verdict, import_types, main, read_summary,
+                       require_private_netns)
 
 STEPS = 600  # long enough that the second round reaches the world before its end on a busy machine
 INJECT_AT_STEPS = (5, 40)
@@ -135,6 +136,9 @@ def test(ctx):
     verdicts = [line for line in output.splitlines() if line.startswith("verdict: ")]
     check(verdicts and verdicts[-1].startswith(f"verdict: {summary['verdict']} (with the agents' reports"),
           f"the launch's last printed verdict is not summary.json's {summary['verdict']!r}: {verdicts}")
+    # ... and the log's one DREAM_VERDICT, its last event, is summary.json's, the agents' reason included.
+    logged = check_log_ends_on_verdict(dream, launched, code)
+    check("agent_bad_messages: " in logged.reasons, f"the log's verdict lacks the agents' reason: {logged.reasons}")
 
     ctx.run([args.dream, "-q", "run", config, "--out", single] + limit, timeout=90, expect=0)
     log_a, log_b = os.path.join(launched, "run.lcmlog"), os.path.join(single, "run.lcmlog")

@@ -11,7 +11,7 @@ launched run must show one distinct agent_id per robot, the one-process run a si
 
 With --extra "--seed 5 --set KEY=VALUE", both runs get those overrides: dream launch must pass them
 on to the simulator and every agent process (else poses or commands differ), and the launched run's
-config.yaml must record them.
+config.yaml must record them. The launch's run.lcmlog must end on one DREAM_VERDICT, summary.json's.
 
 Usage: netns.sh multiprocess_udpm_run.py --dream BIN --source DIR --types-dir DIR [--config FILE] [--steps N]
        [--extra=WORDS]
@@ -21,7 +21,8 @@ Usage: netns.sh multiprocess_udpm_run.py --dream BIN --source DIR --types-dir DI
 import os
 import shlex
 
-from dreamtest import argument_parser, check, import_types, main, read_events, read_summary, require_private_netns
+from dreamtest import (argument_parser, check, check_log_ends_on_verdict, import_types, main, read_events, read_summary,
+                       require_private_netns)
 
 
 def commands_by_robot(log_path, dream):
@@ -64,6 +65,7 @@ def test(ctx):
     check(summary["end"] == "finished", f"dream launch: summary end is {summary['end']!r} ({summary['reason']})")
     check(summary["robots_ever_lost"] == [], f"dream launch lost robots {summary['robots_ever_lost']}")
     check(summary["rejected_commands"] == 0, f"dream launch rejected {summary['rejected_commands']} commands")
+    check_log_ends_on_verdict(dream, launched, code)
 
     if args.extra:
         # The overrides, as the folder records them (OverriddenConfig::Text).

@@ -31,69 +31,13 @@
 #include "dream/files/file_text.h"
 #include "dream/session/run_session.h"
 #include "../support/scratch_folder.h"
+#include "run_session_fixture.h"
 
 namespace dream::session {
 namespace {
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
-
-// A fresh folder per test, holding the config and the run folder "out".
-class RunSessionTest : public ::testing::Test {
- protected:
-  void SetUp() override { fs::create_directories(dir_ / "out"); }
-
-  // Two robots of the counting plugin's kind; `x_m` is robot 0's start.
-  // `world_extra`: more keys of world: (", realism: lab").
-  std::string WriteConfig(double speed_mps, double x_m, int steps, double start_timeout_s = 10.0,
-                          const std::string& world_extra = "") {
-    std::ostringstream yaml;
-    yaml << "name: session_test\nseed: 3\nrobots: 2\nsteps: " << steps << "\nstop_when_done: false\n"
-         << "world: {mode: lockstep, start_timeout_s: " << start_timeout_s << world_extra << "}\n"
-         << "plugins: [" << SESSION_TEST_PLUGIN_PATH << "]\n"
-         << "initial_poses:\n  - [" << x_m << ", 0.0, 0.0]\n  - [-1.0, 0.5, 0.0]\n"
-         << "controller: {kind: session_test_drive, speed_mps: " << speed_mps << "}\n";
-    const fs::path path = dir_ / "config.yaml";
-    std::ofstream(path) << yaml.str();
-    return path.string();
-  }
-
-  // How many factories the plugin's kind was built for, in this whole process.
-  static int FactoriesBuilt() {
-    void* plugin = dlopen(SESSION_TEST_PLUGIN_PATH, RTLD_NOW | RTLD_NOLOAD);
-    if (plugin == nullptr) return 0;  // not loaded: none built
-    const auto count = reinterpret_cast<int (*)()>(dlsym(plugin, "session_test_factories_built"));
-    const int built = count != nullptr ? count() : -1;
-    dlclose(plugin);
-    return built;
-  }
-
-  // How many robots (agents) the plugin's kind made, in this whole process.
-  static int RobotsMade() {
-    void* plugin = dlopen(SESSION_TEST_PLUGIN_PATH, RTLD_NOW | RTLD_NOLOAD);
-    if (plugin == nullptr) return 0;  // not loaded: none made
-    const auto count = reinterpret_cast<int (*)()>(dlsym(plugin, "session_test_robots_made"));
-    const int made = count != nullptr ? count() : -1;
-    dlclose(plugin);
-    return made;
-  }
-
-  // Runs `session` with every robot's agent on the same memq bus (as dream run).
-  RunResult RunWithAgents(RunSession& session) {
-    lcm::LcmBus bus("memq://");
-    std::vector<std::unique_ptr<agents::RobotAgent>> robots;
-    for (int id = 0; id < session.config().num_robots; ++id) robots.push_back(session.factory()->Make(id));
-    agent_host::AgentHost host(bus, std::move(robots), 77);
-    return session.Run(bus, {out(), "the folder's config\n"});
-  }
-
-  std::string out() const { return (dir_ / "out").string(); }
-  nlohmann::json Summary() const { return nlohmann::json::parse(files::ReadFileText(out() + "/summary.json")); }
-
-  dream::testing::ScratchFolder folder_{"dream_run_session_test"};
-  const fs::path dir_ = folder_.path();
-  std::ostringstream report_;
-};
 
 TEST_F(RunSessionTest, AFolderRemovedAndMadeAgainDuringTheRunIsLeftToTheNewerRun) {
   RunSession::Options options;
@@ -382,116 +326,6 @@ TEST_F(RunSessionTest, AFactoryThatCannotBeBuiltIsRememberedNotThrown) {
   const RunSession session(run_config::LoadRunConfigFile(path));
   EXPECT_EQ(session.factory(), nullptr);
   EXPECT_THAT(session.factory_error(), HasSubstr("no_such_kind"));
-}
-
-}  // namespace
-}  // namespace dream::session
-
-namespace dream::session {
-namespace {
-
-// Issue 33: after summary.json is written, the world says the one judge's
-// verdict on DREAM_VERDICT, once, and the run's log keeps it as its last event.
-TEST_F(RunSessionTest, TheVerdictIsPublishedOnceAfterTheSummaryAndEndsTheLog) {
-  RunSession::Options options;
-  options.report = &report_;
-  // Robot 0 drives into the right wall: rejected (exit code 3).
-  RunSession session(run_config::LoadRunConfigFile(WriteConfig(0.2, 1.5, 60)), options);
-  ASSERT_NE(session.factory(), nullptr) << session.factory_error();
-  lcm::LcmBus bus("memq://");
-  std::vector<std::unique_ptr<agents::RobotAgent>> robots;
-  for (int id = 0; id < session.config().num_robots; ++id) robots.push_back(session.factory()->Make(id));
-  agent_host::AgentHost host(bus, std::move(robots), 77);
-  std::vector<run_verdict_t> heard;
-  bool summary_there_when_heard = false;
-  const lcm::Subscription listener =
-      bus.Subscribe(lcm::kVerdictChannel, [&](const std::string&, const void* data, int size) {
-        run_verdict_t verdict;
-        ASSERT_TRUE(lcm::Decode(data, size, &verdict));
-        heard.push_back(verdict);
-        summary_there_when_heard = fs::exists(out() + "/summary.json");
-      });
-  const RunResult result = session.Run(bus, {out(), "the folder's config\n"});
-  while (bus.HandleSubscriptions(0) > 0) {
-  }  // what is still queued on the memq bus
-  ASSERT_EQ(result.judgement.verdict(), world::RunVerdict::kRejected);
-
-  ASSERT_EQ(heard.size(), 1u);
-  EXPECT_TRUE(summary_there_when_heard);
-  const nlohmann::json summary = Summary();
-  const run_verdict_t& verdict = heard[0];
-  EXPECT_EQ(lcm::RunIdText(verdict.run_id), summary["run_id"].get<std::string>());
-  EXPECT_EQ(verdict.step, summary["steps"].get<int64_t>());
-  EXPECT_EQ(verdict.verdict, run_verdict_t::REJECTED);
-  EXPECT_EQ(summary["verdict"], "rejected");
-  EXPECT_EQ(verdict.exit_code, 3);
-  EXPECT_EQ(verdict.goal_text, ExperimentGoal::Text(summary["goal"]));
-  for (const auto& reason : summary["verdict_reasons"]) {
-    EXPECT_THAT(verdict.reasons, HasSubstr(reason["rule"].get<std::string>() + ": "));
-  }
-
-  // The log: every event the recorder wrote, then the verdict's bytes as published;
-  // summary.json's log_events counts them all.
-  const std::vector<lcm::LogRecord> events = lcm::LogReader::ReadAll(out() + "/run.lcmlog");
-  ASSERT_EQ(static_cast<int64_t>(events.size()), summary["log_events"].get<int64_t>());
-  EXPECT_EQ(events.back().channel, lcm::kVerdictChannel);
-  run_verdict_t logged;
-  ASSERT_TRUE(lcm::Decode(events.back().data.data(), static_cast<int>(events.back().data.size()), &logged));
-  EXPECT_EQ(logged.run_id, verdict.run_id);
-  EXPECT_EQ(logged.reasons, verdict.reasons);
-  EXPECT_EQ(events.back().utime, verdict.utime);
-  for (size_t i = 0; i + 1 < events.size(); ++i) EXPECT_NE(events[i].channel, lcm::kVerdictChannel);
-}
-
-// dream launch: its agents' reports made the verdict worse after the world published it; the bus
-// hears summary.json's verdict again, so a viewer ends on it.
-TEST_F(RunSessionTest, AVerdictMadeWorseAfterTheRunIsPublishedAgain) {
-  RunSession::Options options;
-  options.report = &report_;
-  RunSession session(run_config::LoadRunConfigFile(WriteConfig(0.0, 1.0, 20)), options);
-  ASSERT_EQ(RunWithAgents(session).judgement.verdict(), world::RunVerdict::kClean);
-  const world::VerdictReason refused{"agent_bad_messages", world::RunVerdict::kNotReady, "the agents refused 2",
-                                     "summary.json agents"};
-  ASSERT_EQ(session.Reporter().AddReasons(out(), "agents", {{"bad_messages", {{"DREAM_POSES", 2}}}}, {refused}),
-            world::RunVerdict::kNotReady);
-  lcm::LcmBus bus("memq://");
-  std::vector<run_verdict_t> heard;
-  const lcm::Subscription listener =
-      bus.Subscribe(lcm::kVerdictChannel, [&](const std::string&, const void* data, int size) {
-        run_verdict_t verdict;
-        ASSERT_TRUE(lcm::Decode(data, size, &verdict));
-        heard.push_back(verdict);
-      });
-  VerdictBroadcast::Resend(bus, out() + "/summary.json", 0.033, kExitNotReady);
-  while (bus.HandleSubscriptions(0) > 0) {
-  }
-  ASSERT_EQ(heard.size(), 1u);
-  const nlohmann::json summary = Summary();
-  EXPECT_EQ(lcm::RunIdText(heard[0].run_id), summary["run_id"].get<std::string>());
-  EXPECT_EQ(heard[0].verdict, run_verdict_t::NOT_READY);
-  EXPECT_EQ(heard[0].exit_code, kExitNotReady);
-  EXPECT_EQ(heard[0].utime, 20 * 33000);
-  EXPECT_THAT(heard[0].reasons, HasSubstr("agent_bad_messages: the agents refused 2"));
-  EXPECT_EQ(heard[0].goal_text, ExperimentGoal::Text(summary["goal"]));
-  EXPECT_THROW(VerdictBroadcast::Resend(bus, out() + "/none.json", 0.033, kExitNotReady), std::runtime_error);
-}
-
-TEST(LogAppend, AnEventGoesOnlyToALogThatExistsAndIsAFile) {
-  dream::testing::ScratchFolder folder("dream_log_append_test");
-  const std::string missing = (folder.path() / "run.lcmlog").string();
-  const uint8_t bytes[3] = {1, 2, 3};
-  EXPECT_THROW(node::AppendLogEvent(missing, 0, lcm::kVerdictChannel, 0, bytes, 3), std::runtime_error);
-  EXPECT_FALSE(fs::exists(missing));  // never made
-  fs::create_directories(folder.path() / "a_folder");
-  EXPECT_THROW(node::AppendLogEvent((folder.path() / "a_folder").string(), 0, lcm::kVerdictChannel, 0, bytes, 3),
-               std::runtime_error);
-  { std::ofstream(missing) << ""; }
-  node::AppendLogEvent(missing, 0, lcm::kVerdictChannel, 42, bytes, 3);
-  node::AppendLogEvent(missing, 1, lcm::kVerdictChannel, 43, bytes, 2);
-  const std::vector<lcm::LogRecord> events = lcm::LogReader::ReadAll(missing);
-  ASSERT_EQ(events.size(), 2u);
-  EXPECT_EQ(events[0].utime, 42);
-  EXPECT_EQ(events[1].data, (std::vector<uint8_t>{1, 2}));
 }
 
 }  // namespace

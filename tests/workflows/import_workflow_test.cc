@@ -12,7 +12,15 @@
 #include "dream/formats/npy_file.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/files/file_text.h"
+#include "dream/lcm/channels.h"
+#include "dream/lcm/lcm_typed.h"
+#include "dream/lcm/log_reader.h"
+#include "dream/lcm/run_id.h"
+#include "dream/robot_poses_t.hpp"
+#include "dream/run_log/run_log.h"
+#include "dream/run_verdict_t.hpp"
 #include "dream/workflows/import_workflow.h"
+#include "dream/workflows/view_replay.h"
 #include "workflow_test_support.h"
 
 namespace dream::workflows {
@@ -84,6 +92,49 @@ TEST(ImportWorkflowTest, ALabRunThatMissedItsGoalIsNotReadyAsASimulatedOneWouldB
   EXPECT_THAT(out.str(), HasSubstr("verdict: not_ready (declared "));
   EXPECT_THAT(out.str(), ContainsRegex("robots, [0-9]+\\.[0-9][0-9] s; "));
   EXPECT_THAT(out.str(), HasSubstr("  - goal: "));
+}
+
+// Issue 33: an imported run's log ends, as every run's, on the one judge's
+// verdict (DREAM_VERDICT), once: dream view of the log alone ends on it.
+TEST(ImportWorkflowTest, TheImportedLogEndsOnceOnTheJudgedVerdict) {
+  const formats::NpyArray start =
+      formats::ReadNpyFile(testing::SimulatedExport() + "/upload/" + bridge::SubmissionFiles::kInitialPoses);
+  const int64_t n = start.shape[1];
+  const formats::NpyArray rows =  // the robots stayed where they started: not ready, the goal missed
+      bridge::testing::PerfectLabResult(testing::SimulatedExport(), [&](int64_t, double* row) {
+        for (int64_t q = 0; q < 3 * n; ++q)
+          row[bridge::ResultLayout::kFixedColumns + q] = start.values[static_cast<size_t>(q)];
+      });
+  std::ostringstream out;
+  const ImportWorkflow::Result result = Import(rows, "verdict_in_log", out);
+  ASSERT_EQ(ImportWorkflow::ExitCodeOf(result), 5);
+  const nlohmann::json summary = ReadJson(result.summary_path);
+  const std::vector<lcm::LogRecord> events = lcm::LogReader::ReadAll(result.imported.log_path);
+  ASSERT_EQ(static_cast<int64_t>(events.size()), summary["log_events"].get<int64_t>());
+  ASSERT_EQ(events.back().channel, lcm::kVerdictChannel);
+  for (size_t i = 0; i + 1 < events.size(); ++i) EXPECT_NE(events[i].channel, lcm::kVerdictChannel) << i;
+  run_verdict_t verdict;
+  ASSERT_TRUE(lcm::Decode(events.back().data.data(), static_cast<int>(events.back().data.size()), &verdict));
+  EXPECT_EQ(verdict.verdict, run_verdict_t::NOT_READY);
+  EXPECT_EQ(verdict.goal, run_verdict_t::GOAL_MISSED);
+  EXPECT_EQ(verdict.exit_code, 5);
+  EXPECT_EQ(verdict.step, summary["steps"].get<int64_t>());
+  EXPECT_THAT(verdict.reasons, HasSubstr("goal: "));
+  // The run's id: the poses', and summary.json's.
+  robot_poses_t poses;
+  ASSERT_EQ(events[2].channel, lcm::kPosesChannel);
+  ASSERT_TRUE(lcm::Decode(events[2].data.data(), static_cast<int>(events[2].data.size()), &poses));
+  EXPECT_EQ(verdict.run_id, poses.run_id);
+  EXPECT_EQ(lcm::RunIdText(verdict.run_id), summary["run_id"].get<std::string>());
+
+  // The log alone, without its summary.json: the view ends on the verdict it holds.
+  const std::string alone = bridge::testing::NewFolder("workflow_import_verdict_alone") + "/run.lcmlog";
+  fs::copy_file(result.imported.log_path, alone);
+  ASSERT_TRUE(run_log::RunLog::Read(alone).verdict().has_value());
+  const ViewReplay replay =
+      ViewReplay::OfRun(alone, (fs::path(result.summary_path).parent_path() / "config.yaml").string(), "");
+  ASSERT_TRUE(replay.setup.judged.has_value());
+  EXPECT_EQ(replay.setup.judged->verdict, "not_ready");
 }
 
 TEST(ImportWorkflowTest, ALabRunsViolationsAreLocatedByTheWorldsRulesAsASimulatedRunsAre) {

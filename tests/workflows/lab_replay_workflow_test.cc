@@ -4,6 +4,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -13,6 +14,11 @@
 #include "dream/formats/npy_file.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/files/file_text.h"
+#include "dream/lcm/channels.h"
+#include "dream/lcm/lcm_typed.h"
+#include "dream/lcm/log_reader.h"
+#include "dream/lcm/run_id.h"
+#include "dream/run_verdict_t.hpp"
 #include "dream/workflows/calibration_export_workflow.h"
 #include "dream/workflows/import_workflow.h"
 #include "dream/workflows/lab_replay_workflow.h"
@@ -56,6 +62,20 @@ TEST(LabReplayWorkflowTest, ReplaysTheLabsPosesAgainstTheControllersHostedByTheS
   EXPECT_NE(result.exit_code, session::kExitRunFailed);
   EXPECT_NE(result.exit_code, session::kExitInterrupted);
   EXPECT_THAT(report.str(), HasSubstr(dir + "/replay"));
+  // Its log, replayed from a log that ends on the lab run's verdict, ends on its own, once (issue 33).
+  const std::vector<lcm::LogRecord> events = lcm::LogReader::ReadAll(dir + "/replay/run.lcmlog");
+  ASSERT_FALSE(events.empty());
+  EXPECT_EQ(std::count_if(events.begin(), events.end(),
+                          [](const lcm::LogRecord& event) { return event.channel == lcm::kVerdictChannel; }),
+            1);
+  ASSERT_EQ(events.back().channel, lcm::kVerdictChannel);
+  run_verdict_t verdict;
+  ASSERT_TRUE(lcm::Decode(events.back().data.data(), static_cast<int>(events.back().data.size()), &verdict));
+  EXPECT_EQ(verdict.exit_code, result.exit_code);
+  EXPECT_EQ(lcm::RunIdText(verdict.run_id), summary["run_id"].get<std::string>());
+  ASSERT_TRUE(verdict.verdict >= run_verdict_t::CLEAN && verdict.verdict <= run_verdict_t::REJECTED);
+  static const char* kNames[] = {"clean", "warning", "not_ready", "rejected"};
+  EXPECT_EQ(kNames[verdict.verdict], summary["verdict"].get<std::string>());
 }
 
 TEST(LabReplayWorkflowTest, AFolderWithoutALabRunIsRefusedByNameAndNothingIsWritten) {

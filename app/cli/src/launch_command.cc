@@ -87,10 +87,11 @@ int RunLaunch(const RunArgs& args) {
   }
   if (failed_agents > 0) spdlog::warn("{} agent process(es) did not exit cleanly", failed_agents);
   if (sim_exit == kExitInterrupted) return sim_exit;
-  // The agents' refusals join summary.json and the verdict; a verdict they made
-  // worse goes on the bus again, so a viewer ends on summary.json's.
+  // The agents' refusals join summary.json and the verdict; a verdict they
+  // changed replaces the log's and goes on the bus again, so the log and a
+  // viewer end on summary.json's.
   const int exit_code = workflows::AgentReports::Merge(*session, out_dir, sim_exit);
-  if (exit_code != sim_exit) workflows::AgentReports::ResendVerdict(*session, out_dir, args.lcm_url, exit_code);
+  workflows::AgentReports::ResendVerdict(*session, out_dir, args.lcm_url, exit_code);
   return exit_code;
 }
 

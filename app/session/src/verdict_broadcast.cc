@@ -4,11 +4,13 @@
 
 #include <cmath>
 #include <exception>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "dream/lcm/channels.h"
 #include "dream/lcm/lcm_typed.h"
+#include "dream/lcm/log_reader.h"
 #include "dream/node/log_append.h"
 #include "dream/node/run_summary.h"
 #include "dream/session/experiment_goal.h"
@@ -48,6 +50,35 @@ std::string Bounded(const std::string& text) {
   return text.substr(0, end) + "...";
 }
 
+std::vector<uint8_t> Encoded(const run_verdict_t& message) {
+  std::vector<uint8_t> bytes(static_cast<size_t>(message.getEncodedSize()));
+  message.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  return bytes;
+}
+
+// Whether two verdict messages of a run tell the same: what a viewer shows and a script reads.
+bool SaysTheSame(const run_verdict_t& a, const run_verdict_t& b) {
+  return a.run_id == b.run_id && a.step == b.step && a.verdict == b.verdict && a.goal == b.goal &&
+         a.exit_code == b.exit_code && a.goal_completion_step == b.goal_completion_step && a.goal_text == b.goal_text &&
+         a.reasons == b.reasons;
+}
+
+// The log's last event when it is a DREAM_VERDICT of `run_id`; none for "" or any other log.
+std::optional<run_verdict_t> LastVerdictOf(const std::string& log_path, int64_t run_id) {
+  if (log_path.empty()) return std::nullopt;
+  lcm::LogReader reader(log_path);
+  lcm::LogRecord record;
+  lcm::LogRecord last;
+  while (reader.Next(&record)) last = std::move(record);
+  run_verdict_t verdict;
+  if (last.channel != lcm::kVerdictChannel ||
+      !lcm::Decode(last.data.data(), static_cast<int>(last.data.size()), &verdict) || verdict.run_id != run_id) {
+    spdlog::warn("{}: does not end on the run's {}; left as it is", log_path, lcm::kVerdictChannel);
+    return std::nullopt;
+  }
+  return verdict;
+}
+
 }  // namespace
 
 run_verdict_t VerdictBroadcast::MessageOf(const RunResult& result, int64_t run_id, int64_t utime, ExitCode exit_code) {
@@ -77,24 +108,28 @@ run_verdict_t VerdictBroadcast::MessageOf(const RunResult& result, int64_t run_i
 
 void VerdictBroadcast::Send(lcm::LcmInterface& lcm, const run_verdict_t& message, const std::string& log_path,
                             int64_t log_events) {
-  const int size = message.getEncodedSize();
-  std::vector<uint8_t> bytes(static_cast<size_t>(size));
-  message.encode(bytes.data(), 0, size);
+  const std::vector<uint8_t> bytes = Encoded(message);
   try {
-    lcm.Publish(lcm::kVerdictChannel, bytes.data(), size);
+    lcm.Publish(lcm::kVerdictChannel, bytes.data(), static_cast<int>(bytes.size()));
   } catch (const std::exception& e) {
     spdlog::warn("{}: the verdict could not be published ({}); summary.json has it", lcm::kVerdictChannel, e.what());
   }
+  Record(message, log_path, log_events);
+}
+
+void VerdictBroadcast::Record(const run_verdict_t& message, const std::string& log_path, int64_t log_events) {
   if (log_path.empty()) return;
+  const std::vector<uint8_t> bytes = Encoded(message);
   try {
-    node::AppendLogEvent(log_path, log_events, lcm::kVerdictChannel, message.utime, bytes.data(), size);
+    node::AppendLogEvent(log_path, log_events, lcm::kVerdictChannel, message.utime, bytes.data(),
+                         static_cast<int>(bytes.size()));
   } catch (const std::exception& e) {
     spdlog::warn("{}; the log ends without the run's verdict (summary.json has it)", e.what());
   }
 }
 
-void VerdictBroadcast::Resend(lcm::LcmInterface& lcm, const std::string& summary_path, double time_step_s,
-                              ExitCode exit_code) {
+bool VerdictBroadcast::Resend(lcm::LcmInterface& lcm, const std::string& summary_path, double time_step_s,
+                              ExitCode exit_code, const std::string& log_path) {
   const node::RunSummary summary = node::RunSummary::Read(summary_path);
   const auto utime = static_cast<int64_t>(std::llround(static_cast<double>(summary.steps) * time_step_s * 1e6));
   RunResult result;
@@ -104,7 +139,15 @@ void VerdictBroadcast::Resend(lcm::LcmInterface& lcm, const std::string& summary
   const int64_t run_id = static_cast<int64_t>(std::stoull(summary.run_id, nullptr, 16));
   run_verdict_t message = MessageOf(result, run_id, utime, exit_code);
   message.verdict = VerdictValue(summary.verdict);  // as summary.json says it, whatever its reasons
+  if (const std::optional<run_verdict_t> logged = LastVerdictOf(log_path, run_id)) {
+    if (SaysTheSame(*logged, message)) return false;
+    message.utime = logged->utime;  // the log's order of time stays as the world wrote it
+    const std::vector<uint8_t> bytes = Encoded(message);
+    node::ReplaceLastLogEvent(log_path, lcm::kVerdictChannel, message.utime, bytes.data(),
+                              static_cast<int>(bytes.size()));
+  }
   Send(lcm, message, std::string(), 0);
+  return true;
 }
 
 }  // namespace dream::session

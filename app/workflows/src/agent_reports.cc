@@ -119,12 +119,14 @@ int AgentReports::Merge(const session::RunSession& session, const std::string& o
 
 void AgentReports::ResendVerdict(const session::RunSession& session, const std::string& out_dir,
                                  const std::string& lcm_url, int exit_code) {
+  if (!std::filesystem::exists(out_dir + "/" + session::RunReporter::kSummaryName)) return;  // Merge said so
   try {
     lcm::LcmBus bus(lcm::ResolveLcmUrl(lcm_url));
     session::VerdictBroadcast::Resend(bus, out_dir + "/" + session::RunReporter::kSummaryName,
-                                      session.config().world.time_step_s, static_cast<session::ExitCode>(exit_code));
+                                      session.config().world.time_step_s, static_cast<session::ExitCode>(exit_code),
+                                      out_dir + "/" + session::RunReporter::kLogName);
   } catch (const std::exception& e) {
-    spdlog::warn("the verdict with the agents' reports was not published on DREAM_VERDICT: {}", e.what());
+    spdlog::warn("the verdict with the agents' reports is not in the run's log nor on DREAM_VERDICT: {}", e.what());
   }
 }
 

@@ -11,6 +11,7 @@
 #include "dream/session/run_exit_code.h"
 #include "dream/session/run_reporter.h"
 #include "dream/session/run_session.h"
+#include "dream/session/verdict_broadcast.h"
 #include "dream/world/run_report.h"
 
 namespace dream::workflows {
@@ -76,12 +77,20 @@ ImportWorkflow::Result ImportWorkflow::Import(const Options& options) const {
   session::RunReporter::Ended ended;
   ended.world = imported.world.get();
   ended.outcome = imported.outcome;
+  ++ended.outcome.log_events;  // DREAM_VERDICT, appended once summary.json is written
   ended.dir = fs::path(imported.log_path).parent_path().string();
   ended.judgement = imported.judgement;
   ended.fields["config"] = "config.yaml";
   ended.fields["lab"] = imported.lab_json;
   result.report = session.Reporter().Report(ended);
   result.summary_path = ended.dir + "/" + session::RunReporter::kSummaryName;
+  // As every run's log: it ends on the one judge's verdict, so dream view of it ends on summary.json's.
+  if (result.report.summary_written) {
+    session::VerdictBroadcast::Record(
+        session::VerdictBroadcast::MessageOf(result.report, imported.outcome.run_id, imported.world->utime(),
+                                             static_cast<session::ExitCode>(ExitCodeOf(result))),
+        imported.log_path, imported.outcome.log_events);
+  }
   if (result.report.summary_written && !result.report.picture_failed &&
       fs::exists(ended.dir + "/" + session::RunReporter::kPictureName)) {
     result.picture_path = ended.dir + "/" + session::RunReporter::kPictureName;

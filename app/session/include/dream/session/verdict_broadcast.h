@@ -27,18 +27,29 @@ class VerdictBroadcast {
   static run_verdict_t MessageOf(const RunResult& result, int64_t run_id, int64_t utime, ExitCode exit_code);
 
   /// Publishes `message` on DREAM_VERDICT and appends it to the log at
-  /// `log_path` ("": to none; event number `log_events`: the events already
-  /// in it). A log that cannot take it is warned about, naming the file; the
-  /// run's outputs stand (summary.json has the verdict).
+  /// `log_path` (Record).
   static void Send(lcm::LcmInterface& lcm, const run_verdict_t& message, const std::string& log_path,
                    int64_t log_events);
 
-  /// The verdict of a summary.json changed after its world published it
-  /// (dream launch's agents' reports, RunReporter::AddReasons), published
-  /// again on `lcm` so a viewer ends on the verdict summary.json says; the
-  /// log keeps the world's. `time_step_s`: the run's step, for its last simulated time.
-  /// @throws std::runtime_error naming the file when summary.json cannot be read.
-  static void Resend(lcm::LcmInterface& lcm, const std::string& summary_path, double time_step_s, ExitCode exit_code);
+  /// Appends `message` to the log at `log_path` ("": to none; event number
+  /// `log_events`: the events already in it), for a run whose log is written
+  /// without a bus (dream import). A log that cannot take it is warned about,
+  /// naming the file; the run's outputs stand (summary.json has the verdict).
+  static void Record(const run_verdict_t& message, const std::string& log_path, int64_t log_events);
+
+  /// The verdict of a summary.json changed after its world published and
+  /// logged it (dream launch's agents' reports, RunReporter::AddReasons):
+  /// when the last DREAM_VERDICT of the log at `log_path` says otherwise than
+  /// summary.json (verdict, goal, reasons, exit code), it is replaced by
+  /// summary.json's (node::ReplaceLastLogEvent) and that one published again
+  /// on `lcm`, so the log and a viewer both end on the verdict summary.json
+  /// says. A log that does not end on this run's DREAM_VERDICT (a log the disk
+  /// refused) is left as it is and the verdict only published. `time_step_s`:
+  /// the run's step, for its last simulated time. Returns whether it published.
+  /// @throws std::runtime_error naming the file when summary.json cannot be
+  /// read, or the log cannot be rewritten.
+  static bool Resend(lcm::LcmInterface& lcm, const std::string& summary_path, double time_step_s, ExitCode exit_code,
+                     const std::string& log_path);
 };
 
 }  // namespace dream::session

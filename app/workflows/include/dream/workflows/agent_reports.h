@@ -30,9 +30,12 @@ class AgentReports {
   static int Merge(const session::RunSession& session, const std::string& out_dir, int sim_exit,
                    std::ostream& out = std::cout);
 
-  /// The simulator published its verdict on DREAM_VERDICT before the agents'
-  /// reports made it worse: publishes summary.json's now on `lcm_url`, so a
-  /// viewer ends on it (a failure is logged, never the launch's).
+  /// The simulator published and logged its verdict on DREAM_VERDICT before
+  /// the agents' reports were merged: when summary.json's now says otherwise
+  /// (a worse verdict, more reasons, another exit code), it replaces the one
+  /// the run's log ends on and is published on `lcm_url`, so the log and a
+  /// viewer end on summary.json's (session::VerdictBroadcast::Resend; a
+  /// failure is logged, never the launch's).
   static void ResendVerdict(const session::RunSession& session, const std::string& out_dir, const std::string& lcm_url,
                             int exit_code);
 
