@@ -43,14 +43,13 @@ import shutil
 import signal
 import subprocess
 import sys
-import tempfile
 import time
 
-SKIP = 77
 TOLERANCE = 1e-9
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from bridge_roundtrip import Failure, check, official_checkout, run  # noqa: E402
+from bridge_driver import check, drive, simulator_flags  # noqa: E402
+from bridge_roundtrip import run  # noqa: E402
 
 FAULTY_CONTROLLER = '''"""A test controller: drives slowly on a curve; robot `fail_robot` raises from `fail_step` on."""
 
@@ -571,20 +570,11 @@ def main():
     parser.add_argument("--types-dir", required=True, help="lcm-gen's Python types (build/python)")
     parser.add_argument("--simulator", choices=["standin", "official"], required=True)
     args = parser.parse_args()
-    tmp = tempfile.mkdtemp(prefix="dream_controller_strategy_")
-    case = None
-    try:
-        if args.simulator == "official":
-            checkout = official_checkout(tmp)
-            if checkout is None:
-                print("SKIP: set ROBOTARIUM_PYTHON_SIMULATOR to a checkout (or bare git repository) of "
-                      "robotarium/robotarium_python_simulator to run the controller strategy in the official "
-                      "simulator")
-                return SKIP
-            flags = ["--require-official", "--simulator", checkout]
-        else:
-            flags = ["--standin"]
+
+    def body(tmp, report):
+        flags, _ = simulator_flags(args.simulator, tmp, "to run the controller strategy in the official simulator")
         case = Case(args, tmp, flags)
+        case.report = report
         export_dir, poses = go_to_goal(case)
         if os.path.isfile(os.path.join(args.source, "config", "hrvo_circle_python.yaml")):
             experiment(case, "hrvo_circle_python", "hrvo_circle.py")  # radios, sensors, periods, delays
@@ -597,24 +587,14 @@ def main():
             check(standin_poses.shape == poses.shape, "official and stand-in pose counts differ")
             worst = float(np.max(np.abs(standin_poses - poses)))
             check(worst <= TOLERANCE, "official and stand-in poses differ by %g" % worst)
-            case.report.append("official vs stand-in, same submission: largest difference %.3g" % worst)
+            report.append("official vs stand-in, same submission: largest difference %.3g" % worst)
         else:
             injection(case)
             refusals(case)
             tampered_files(case)
-        print("\n".join(case.report))
-        print("PASS")
-        return 0
-    except Failure as failure:
-        if case is not None:
-            print("\n".join(case.report))
-        print("FAIL: %s" % failure)
-        return 1
-    finally:
-        if os.environ.get("DREAM_TEST_KEEP") == "1":
-            print("kept " + tmp)
-        else:
-            shutil.rmtree(tmp, ignore_errors=True)
+        return ""
+
+    return drive("dream_controller_strategy_", body)
 
 
 if __name__ == "__main__":

@@ -22,29 +22,16 @@ simulator and in the stand-in from the same start and compares every pose.
 import argparse
 import json
 import os
-import shutil
 import struct
 import subprocess
 import sys
 import tempfile
 import time
 
-SKIP = 77
+from bridge_driver import Failure, Skipped, check, drive, simulator_flags
+
 EXPERIMENTS = ["go_to_goal", "hrvo_circle", "line_deployment", "voronoi_coverage", "affine_formation"]
 RMS_LIMIT_M = 0.02
-
-
-class Failure(Exception):
-    pass
-
-
-class Skipped(Exception):
-    pass
-
-
-def check(condition, message):
-    if not condition:
-        raise Failure(message)
 
 
 def run_with_code(argv, expect=0, cwd=None, timeout=600, env=None):
@@ -71,21 +58,6 @@ def run_check(argv):
     if code not in (0, 5):
         raise Failure("%s exited %d (expected 0 or 5):\n%s" % (" ".join(map(str, argv)), code, output[-3000:]))
     return output, seconds
-
-
-def official_checkout(tmp):
-    path = os.environ.get("ROBOTARIUM_PYTHON_SIMULATOR", "")
-    if not path:
-        return None
-    if os.path.isfile(os.path.join(path, "rps", "robotarium.py")):
-        return path
-    # A bare git repository (a mirror): check out its HEAD.
-    target = os.path.join(tmp, "robotarium_python_simulator")
-    os.makedirs(target)
-    archive = subprocess.run(["git", "-C", path, "archive", "HEAD"], capture_output=True, check=True).stdout
-    subprocess.run(["tar", "-x", "-C", target], input=archive, check=True)
-    check(os.path.isfile(os.path.join(target, "rps", "robotarium.py")), path + " holds no rps/robotarium.py")
-    return target
 
 
 class Loop:
@@ -154,7 +126,7 @@ def one_judge_of(loop, where, check_dir, export_dir, output):
     check(verdict in ("clean", "warning", "not_ready"), where + ": verdict " + verdict + ":\n" + output[-2000:])
     check("\ngoal: " in output, where + ": check-submission did not print the goal:\n" + output[-1500:])
     result_file = os.path.join(check_dir, "lab_files", "dream_result.npy")
-    imported = os.path.join(tempfile.mkdtemp(prefix="one_judge_"), "lab")
+    imported = os.path.join(tempfile.mkdtemp(prefix="one_judge_", dir=loop.tmp), "lab")  # removed with it
     import_output, _ = run([loop.dream, "import", result_file, "--export", export_dir, "--out", imported, "-q"],
                            expect=EXIT_OF_VERDICT[verdict])
     with open(os.path.join(imported, "summary.json")) as f:
@@ -389,49 +361,29 @@ def main():
                         help="only: go_to_goal through the stand-in, then its imported log over udpm (netns)")
     args = parser.parse_args()
     started = time.monotonic()
-    tmp = tempfile.mkdtemp(prefix="dream_bridge_")
-    try:
-        if args.simulator == "official":
-            checkout = official_checkout(tmp)
-            if checkout is None:
-                print("SKIP: set ROBOTARIUM_PYTHON_SIMULATOR to a checkout (or bare git repository) of "
-                      "robotarium/robotarium_python_simulator to run the bridge in the official simulator")
-                return SKIP
-            flags = ["--require-official", "--simulator", checkout]
-        else:
-            checkout = None
-            flags = ["--standin"]
+
+    def body(tmp, report):
+        flags, checkout = simulator_flags(args.simulator, tmp, "to run the bridge in the official simulator")
         loop = Loop(args, tmp, flags)
+        loop.report = report
         if args.logplayer:
             loop.experiment("go_to_goal")
             logplayer(loop)
+            return "(%.1f s)" % (time.monotonic() - started)
+        names = [n for n in args.experiments.split(",")
+                 if os.path.isfile(os.path.join(args.source, "config", n + ".yaml"))]
+        for name in names:
+            loop.experiment(name)
+        loop.experiment("go_to_goal", strategy="replay")
+        loop.experiment("go_to_goal", barriers=True)
+        if args.simulator == "standin":
+            once(loop)
+            bad_input(loop)
         else:
-            names = [n for n in args.experiments.split(",")
-                     if os.path.isfile(os.path.join(args.source, "config", n + ".yaml"))]
-            for name in names:
-                loop.experiment(name)
-            loop.experiment("go_to_goal", strategy="replay")
-            loop.experiment("go_to_goal", barriers=True)
-            if args.simulator == "standin":
-                once(loop)
-                bad_input(loop)
-            else:
-                equivalence(loop, checkout)
-        print("\n".join(loop.report))
-        print("PASS (%.1f s)" % (time.monotonic() - started))
-        return 0
-    except Skipped as skipped:
-        print("SKIP: %s" % skipped)
-        return SKIP
-    except Failure as failure:
-        print("\n".join(loop.report) if "loop" in locals() else "")
-        print("FAIL: %s" % failure)
-        return 1
-    finally:
-        if os.environ.get("DREAM_TEST_KEEP") == "1":
-            print("kept " + tmp)
-        else:
-            shutil.rmtree(tmp, ignore_errors=True)
+            equivalence(loop, checkout)
+        return "(%.1f s)" % (time.monotonic() - started)
+
+    return drive("dream_bridge_", body)
 
 
 if __name__ == "__main__":

@@ -21,15 +21,13 @@ import argparse
 import json
 import os
 import re
-import shutil
-import subprocess
 import sys
-import tempfile
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bridge_roundtrip import SKIP, Failure, check, official_checkout, run  # noqa: E402
+from bridge_driver import check, drive, simulator_flags  # noqa: E402
+from bridge_roundtrip import run  # noqa: E402
 
 ROBOTS = 20
 PROGRAM_STEPS = 1480
@@ -129,33 +127,20 @@ def main():
     parser.add_argument("--simulator", choices=["standin", "official"], required=True)
     args = parser.parse_args()
     dream = os.path.abspath(args.dream)
-    tmp = tempfile.mkdtemp(prefix="dream_calibration_export_")
-    try:
-        if args.simulator == "official":
-            checkout = official_checkout(tmp)
-            if checkout is None:
-                print("SKIP: set ROBOTARIUM_PYTHON_SIMULATOR to a checkout (or bare git repository) of "
-                      "robotarium/robotarium_python_simulator to check the calibration export in it")
-                return SKIP
-            flags = ["--require-official", "--simulator", checkout]
-        else:
+
+    def body(tmp, report):
+        flags, _ = simulator_flags(args.simulator, tmp, "to check the calibration export in it")
+        if args.simulator == "standin":
             refusals(dream, tmp)
-            flags = ["--standin"]
         export_dir, export_s = export(dream, tmp)
         result, check_s = check_submission(dream, tmp, export_dir, flags)
-        print("export --calibration --robots %d: %.1f s; check-submission (%s): %.1f s, settle %d steps, "
-              "RMS %.2f cm from the simulated run" % (ROBOTS, export_s, result["simulator"], check_s,
-                                                      result["settle_steps"], 100 * result.get("tracking_rms_m", 0)))
-        print("PASS")
-        return 0
-    except Failure as failure:
-        print("FAIL: %s" % failure)
-        return 1
-    finally:
-        if os.environ.get("DREAM_TEST_KEEP") == "1":
-            print("kept " + tmp)
-        else:
-            shutil.rmtree(tmp, ignore_errors=True)
+        report.append("export --calibration --robots %d: %.1f s; check-submission (%s): %.1f s, settle %d steps, "
+                      "RMS %.2f cm from the simulated run" % (ROBOTS, export_s, result["simulator"], check_s,
+                                                              result["settle_steps"],
+                                                              100 * result.get("tracking_rms_m", 0)))
+        return ""
+
+    return drive("dream_calibration_export_", body)
 
 
 if __name__ == "__main__":

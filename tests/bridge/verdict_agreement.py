@@ -21,12 +21,11 @@ import argparse
 import glob
 import json
 import os
-import shutil
 import sys
-import tempfile
 import time
 
-from bridge_roundtrip import EXIT_OF_VERDICT, Failure, SKIP, check, official_checkout, run, run_with_code
+from bridge_driver import check, drive, simulator_flags
+from bridge_roundtrip import EXIT_OF_VERDICT, run, run_with_code
 
 NOT_EXPORTED = {"calibration"}  # dream export --calibration's program, not a run to export
 
@@ -68,44 +67,27 @@ def main():
     parser.add_argument("--configs", default="all", help="names in config/, or 'all'")
     args = parser.parse_args()
     started = time.monotonic()
-    tmp = tempfile.mkdtemp(prefix="dream_verdict_agreement_")
-    lines, failures = [], []
-    try:
-        checkout = official_checkout(tmp)
-        if checkout is None:
-            print("SKIP: set ROBOTARIUM_PYTHON_SIMULATOR to a checkout (or bare git repository) of "
-                  "robotarium/robotarium_python_simulator")
-            return SKIP
+
+    def body(tmp, report):
+        flags, _ = simulator_flags("official", tmp, "to judge every config through it")
         if args.configs == "all":
             names = sorted(os.path.basename(p)[:-5] for p in glob.glob(os.path.join(args.source, "config", "*.yaml")))
             names = [n for n in names if n not in NOT_EXPORTED]
         else:
             names = args.configs.split(",")
+        failures = []
         for name in names:
-            verdicts = judged(args.dream, args.source, tmp, name, ["--require-official", "--simulator", checkout])
-            lines.append("%s: %s" % (name, ", ".join("%s %s (exit %d)" % (c, v, e) for c, (v, e) in verdicts.items())))
+            verdicts = judged(args.dream, args.source, tmp, name, flags)
+            report.append("%s: %s" % (name, ", ".join("%s %s (exit %d)" % (c, v, e) for c, (v, e) in verdicts.items())))
             for command, (verdict, code) in verdicts.items():
                 if code != EXIT_OF_VERDICT[verdict]:
                     failures.append("%s: %s exited %d for a %s run" % (name, command, code, verdict))
             if len(set(verdicts.values())) != 1:
                 failures.append("%s: the commands disagree: %s" % (name, verdicts))
-        print("\n".join(lines))
-        for failure in failures:
-            print("FAIL: " + failure)
-        if failures:
-            return 1
-        print("PASS: %d configs, every command one verdict and exit code (%.1f s)" %
-              (len(names), time.monotonic() - started))
-        return 0
-    except Failure as failure:
-        print("\n".join(lines))
-        print("FAIL: %s" % failure)
-        return 1
-    finally:
-        if os.environ.get("DREAM_TEST_KEEP") == "1":
-            print("kept " + tmp)
-        else:
-            shutil.rmtree(tmp, ignore_errors=True)
+        check(not failures, "\n      ".join(failures))
+        return "%d configs, every command one verdict and exit code (%.1f s)" % (len(names), time.monotonic() - started)
+
+    return drive("dream_verdict_agreement_", body)
 
 
 if __name__ == "__main__":
