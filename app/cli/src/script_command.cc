@@ -65,8 +65,10 @@ std::vector<std::string> ScriptEnvironment(const std::string& run_dir, const std
           "DREAM_BRIDGE_PYTHON_DIR=" + process::DataFiles::BridgePythonDir()};
 }
 
-/// Ends the world once the script has ended (at once when it failed; after a
-/// grace when it ended cleanly, having told the world every robot is done).
+/// Ends the world once the script has ended, after a grace in which the world
+/// ends the run by itself: the script told it every robot is done, or (when it
+/// failed) that every robot's controller failed. A script killed before it
+/// said either leaves the run to this stop.
 class ScriptWatch {
  public:
   ScriptWatch(process::ProcessGroup& children, pid_t pid) : children_(children), pid_(pid) {
@@ -91,7 +93,7 @@ class ScriptWatch {
         exit_code_ = children_.TryWait(pid_);
         if (exit_code_ >= 0) ended = Clock::now();
       }
-      if (exit_code_ > 0 || (exit_code_ == 0 && Clock::now() - ended > std::chrono::seconds(10))) stop_ = true;
+      if (exit_code_ >= 0 && Clock::now() - ended > std::chrono::seconds(10)) stop_ = true;
       std::this_thread::sleep_for(std::chrono::milliseconds(50));
     }
   }
@@ -119,7 +121,7 @@ bool IsScriptPath(const std::string& path) { return fs::path(path).extension() =
 int RunScript(const RunArgs& args, const std::vector<std::string>& script_args) {
   std::error_code error;
   if (!fs::is_regular_file(args.config_path, error)) {
-    throw std::invalid_argument("dream run: " + args.config_path + ": no such script (a Python file)");
+    throw std::invalid_argument(args.config_path + ": no such script (a Python file)");  // main adds "dream: "
   }
   workflows::ScriptRunWorkflow::Options options;
   options.script_path = args.config_path;
@@ -136,7 +138,7 @@ int RunScript(const RunArgs& args, const std::vector<std::string>& script_args) 
           .lexically_normal()
           .string();
   int hello[2];
-  if (::pipe2(hello, O_CLOEXEC) != 0) throw std::runtime_error("dream run: cannot make a pipe for the script");
+  if (::pipe2(hello, O_CLOEXEC) != 0) throw std::runtime_error("cannot make a pipe for the script");
   const int terminal = ::fcntl(STDOUT_FILENO, F_DUPFD_CLOEXEC, 3);
   process::ProcessGroup children;
   const char* python = std::getenv("DREAM_PYTHON");
@@ -160,9 +162,11 @@ int RunScript(const RunArgs& args, const std::vector<std::string>& script_args) 
   const int script_code =
       watch.exit_code() >= 0 ? watch.exit_code() : children.WaitPassingOnStop(pid, StopFlag(), SIGTERM);
   if (script_code != 0 && !StopFlag().load()) {
-    std::cout << "dream run: the script failed (exit code " << script_code << "); its output is in "
-              << (fs::path(dir) / "script_output.txt").string() << std::endl;
-    return session::kExitRunFailed;
+    std::cout << "dream run: the script failed (exit code " << script_code << "); its output, the traceback "
+              << "included, is in " << (fs::path(dir) / "script_output.txt").string() << std::endl;
+    // Its robots' faults ended the run, judged as any run whose controller failed; a script that
+    // ended with none said (killed) ended it by the watch: the run did not finish.
+    if (result.outcome.robot_faults.empty()) return session::kExitRunFailed;
   }
   return session::ExitCodeOf(result);
 }

@@ -115,6 +115,7 @@ session::RunResult ScriptRunWorkflow::Run(const Hello& hello, const std::string&
   files::WriteFileAtomically(config_path, ConfigText(hello, options_));
   const config_overrides::OverriddenConfig overridden(config_path, -1, options_.sets);
   run_config::RunConfig config = overridden.LoadWith(&run_config::LoadRunConfig);
+  config.sim.script_ends_run = true;  // the run's steps are the script's step() calls; its error ends the run
   session::RunSession session(std::move(config), options_.session);
   const std::string text = run_config::RunFolderConfigText(session.config(), overridden.Text());
   return session.Run(lcm, {run_dir, text});

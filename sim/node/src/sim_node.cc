@@ -415,9 +415,12 @@ bool SimNode::ReadyForNextStep(Clock::time_point now, Clock::time_point next_rea
 }
 
 std::optional<RunOutcome> SimNode::TakeStep() {
+  if (options_.script_ends_run && robot_faults_.size() == robots_.size()) {  // before this step: the script's end
+    return Finish(RunOutcome::End::kFinished, "the script failed at " + robot_faults_.begin()->second);
+  }
+  if (options_.script_ends_run && AllDone()) return Finish(RunOutcome::End::kFinished, "every robot reported done");
   AdvanceWorld();
-  bool all_done = options_.stop_when_done;
-  for (const RobotSlot& robot : robots_) all_done = all_done && robot.done;
+  const bool all_done = AllDone();
   const bool world_ended = world_.step() >= world_.last_step();
   if (world_.step() >= options_.max_steps || all_done || world_ended) {
     PublishStep(true);

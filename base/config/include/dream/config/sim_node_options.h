@@ -27,6 +27,13 @@ struct SimNodeOptions {
   int64_t max_steps = 3000;
   /// End the run early once every robot's command says done.
   bool stop_when_done = true;
+  /// A Robotarium script's run (dream run SCRIPT.py, set by the workflow, no
+  /// config key): the script is every robot's agent and the run ends with it.
+  /// Every robot's command for a step saying done ends the run at that step,
+  /// those commands not applied (the script's last step() was the run's last
+  /// step, as the official simulator counts); every robot's controller failed
+  /// (DREAM_FAULT: the script raised) ends it at once, the script's error its reason.
+  bool script_ends_run = false;
   /// Lockstep: an agent silent this long (wall time) is marked lost and its
   /// robot stops; it rejoins when it speaks again. Must be > 0.
   double agent_timeout_s = 2.0;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdint>
@@ -124,6 +125,11 @@ class SimNode {
   void PublishAndRecord(const char* channel, const Message& message, bool record);
   bool AllLiveAnswered() const;
   bool AllRobotsLost() const;
+  /// Whether stop_when_done is on and every robot's last command said done.
+  bool AllDone() const {
+    return options_.stop_when_done &&
+           std::all_of(robots_.begin(), robots_.end(), [](const RobotSlot& robot) { return robot.done; });
+  }
   void MarkSilentRobotsLost(Clock::time_point now);
   void AdvanceWorld();
   /// Waiting for agents: starts the run once every robot has answered; ends
