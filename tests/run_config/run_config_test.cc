@@ -222,6 +222,24 @@ TEST(RunConfigTest, UnknownKeysAreTyposAndSayWhatIsAllowed) {
             std::string::npos);
 }
 
+// world.command_limits: robotarium (the default: absurd commands refused) or official (any finite
+// command, as the official simulator takes it: Robotarium script runs).
+TEST(RunConfigTest, CommandLimitsAreTheRobotariumsOrTheOfficialSimulatorsByName) {
+  const run_config::RunConfig robotarium = Load(kMinimal);
+  EXPECT_DOUBLE_EQ(robotarium.sim.max_abs_v_mps, 10.0);
+  EXPECT_DOUBLE_EQ(robotarium.sim.max_abs_w_radps, 100.0);
+  const run_config::RunConfig official = Load(std::string(kMinimal) + "world: {command_limits: official}\n");
+  EXPECT_DOUBLE_EQ(official.sim.max_abs_v_mps, config::SimNodeOptions::kOfficialCommandLimit);
+  EXPECT_DOUBLE_EQ(official.sim.max_abs_w_radps, config::SimNodeOptions::kOfficialCommandLimit);
+  const std::string bad = ErrorOf(std::string(kMinimal) + "world: {command_limits: offical}\n");
+  EXPECT_NE(bad.find("test.yaml:11: world.command_limits: unknown world command_limits 'offical' (did you mean "
+                     "'official'?); allowed: robotarium, official"),
+            std::string::npos)
+      << bad;
+  const std::string both = ErrorOf(std::string(kMinimal) + "world: {command_limits: official, max_abs_v_mps: 5}\n");
+  EXPECT_NE(both.find("world.max_abs_v_mps: is not taken with command_limits: official"), std::string::npos) << both;
+}
+
 TEST(RunConfigTest, BadObstacles) {
   EXPECT_NE(ErrorOf(std::string(kMinimal) + "obstacles:\n  - center: [0, 0]\n    size: [0, 1]\n").find("obstacles[0]"),
             std::string::npos);

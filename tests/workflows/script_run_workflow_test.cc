@@ -62,6 +62,9 @@ TEST(ScriptRunWorkflowTest, TheConfigStartsEveryRobotExactlyWhereTheScriptSaid) 
   EXPECT_EQ(config["seed"].as<long long>(), 9);
   EXPECT_EQ(config["robots"].as<int>(), 2);
   EXPECT_EQ(config["steps"].as<long long>(), ScriptRunWorkflow::kDefaultSteps);
+  // Any finite command, as the official simulator takes it: by the config key, not a magic number.
+  EXPECT_EQ(config["world"]["command_limits"].as<std::string>(), "official");
+  EXPECT_FALSE(config["world"]["max_abs_v_mps"].IsDefined());
   EXPECT_EQ(config["controller"]["module"].as<std::string>(),
             "/opt/dream/python-runtime/rps_dream/robotarium_script.py");
   for (size_t i = 0; i < 2; ++i) {

@@ -99,7 +99,7 @@ std::string ScriptRunWorkflow::ConfigText(const Hello& hello, const Options& opt
        << "stop_when_done: true\n"
        << "world:\n  mode: lockstep\n  agent_timeout_s: 60.0\n  start_timeout_s: 120.0\n"
        << "  # the official simulator takes any finite command (and saturates the wheels): so does this run\n"
-       << "  max_abs_v_mps: 1.0e12\n  max_abs_w_radps: 1.0e12\n"
+       << "  command_limits: official\n"
        << "initial_poses:\n";
   for (const auto& pose : hello.initial_poses) {
     yaml << "  - [" << Exact(pose[0]) << ", " << Exact(pose[1]) << ", " << Exact(pose[2]) << "]\n";

@@ -42,6 +42,20 @@ std::string Format(double value) { return world::PrintfText("%.3f", value); }
 // For constants with more digits than millimetres (the 0.0675 m radius).
 std::string FormatExact(double value) { return world::PrintfText("%g", value); }
 
+// `world.command_limits: robotarium | official` (config/README.md): official takes any finite
+// command, as the official simulator does (dream run SCRIPT.py sets it); max_abs_* then have no say.
+void ReadCommandLimits(const config::ConfigNode& world, config::SimNodeOptions* options) {
+  enum class Limits { kRobotarium, kOfficial };
+  const Limits limits = world.GetChoice<Limits>("command_limits", "robotarium", "world command_limits",
+                                                {{"robotarium", Limits::kRobotarium}, {"official", Limits::kOfficial}});
+  if (limits == Limits::kRobotarium) return;
+  for (const char* key : {"max_abs_v_mps", "max_abs_w_radps"}) {
+    if (world.Has(key)) world.FailAt(key, "is not taken with command_limits: official (any finite command is)");
+  }
+  options->max_abs_v_mps = config::SimNodeOptions::kOfficialCommandLimit;
+  options->max_abs_w_radps = config::SimNodeOptions::kOfficialCommandLimit;
+}
+
 config::SimNodeOptions ReadSimOptions(const config::ConfigNode& root) {
   config::SimNodeOptions options;
   options.max_steps = root.GetInt("steps", options.max_steps);
@@ -50,7 +64,7 @@ config::SimNodeOptions ReadSimOptions(const config::ConfigNode& root) {
   const config::ConfigNode world = root.Optional("world");
   if (world.IsDefined()) {
     world.RejectUnknownKeys({"mode", "agent_timeout_s", "start_timeout_s", "resend_interval_s", "max_abs_v_mps",
-                             "max_abs_w_radps", "realism", "start"});
+                             "max_abs_w_radps", "command_limits", "realism", "start"});
     if (world.Has("mode")) {
       const config::ConfigNode mode = world.Required("mode");
       try {
@@ -74,6 +88,7 @@ config::SimNodeOptions ReadSimOptions(const config::ConfigNode& root) {
     }
     options.max_abs_v_mps = positive("max_abs_v_mps", options.max_abs_v_mps);
     options.max_abs_w_radps = positive("max_abs_w_radps", options.max_abs_w_radps);
+    ReadCommandLimits(world, &options);
   }
   std::string error;
   if (!options.IsValid(&error)) root.Fail(error);  // unreachable when the checks above hold

@@ -51,6 +51,9 @@ struct SimNodeOptions {
   /// warnings, as on the Robotarium.
   double max_abs_v_mps = 10.0;
   double max_abs_w_radps = 100.0;
+  /// Both limits under `world.command_limits: official`: any finite command
+  /// is taken (and saturated at the wheels), as the official simulator does.
+  static constexpr double kOfficialCommandLimit = 1e12;
   /// Progress lines every this many wall seconds when the output is not a
   /// terminal (0: no progress at all). The CLI shows them through a
   /// ProgressReporter (SimNode::set_progress_reporter); a terminal gets a bar.
