@@ -42,31 +42,31 @@ class RunSessionTest : public ::testing::Test {
   }
 
   // How many factories the plugin's kind was built for, in this whole process.
-  static int FactoriesBuilt() {
+  static int FactoriesBuilt() { return PluginCount("session_test_factories_built"); }
+  // How many robots (agents) the plugin's kind made, in this whole process.
+  static int RobotsMade() { return PluginCount("session_test_robots_made"); }
+
+  // A count the plugin keeps (0 when it is not loaded: nothing counted, -1 without the symbol).
+  static int PluginCount(const char* symbol) {
     void* plugin = dlopen(SESSION_TEST_PLUGIN_PATH, RTLD_NOW | RTLD_NOLOAD);
-    if (plugin == nullptr) return 0;  // not loaded: none built
-    const auto count = reinterpret_cast<int (*)()>(dlsym(plugin, "session_test_factories_built"));
-    const int built = count != nullptr ? count() : -1;
+    if (plugin == nullptr) return 0;
+    const auto count = reinterpret_cast<int (*)()>(dlsym(plugin, symbol));
+    const int counted = count != nullptr ? count() : -1;
     dlclose(plugin);
-    return built;
+    return counted;
   }
 
-  // How many robots (agents) the plugin's kind made, in this whole process.
-  static int RobotsMade() {
-    void* plugin = dlopen(SESSION_TEST_PLUGIN_PATH, RTLD_NOW | RTLD_NOLOAD);
-    if (plugin == nullptr) return 0;  // not loaded: none made
-    const auto count = reinterpret_cast<int (*)()>(dlsym(plugin, "session_test_robots_made"));
-    const int made = count != nullptr ? count() : -1;
-    dlclose(plugin);
-    return made;
+  // Every robot's agent of `session` on `bus`, as dream run hosts them.
+  static std::unique_ptr<agent_host::AgentHost> HostAgents(RunSession& session, lcm::LcmBus& bus) {
+    std::vector<std::unique_ptr<agents::RobotAgent>> robots;
+    for (int id = 0; id < session.config().num_robots; ++id) robots.push_back(session.factory()->Make(id));
+    return std::make_unique<agent_host::AgentHost>(bus, std::move(robots), 77);
   }
 
   // Runs `session` with every robot's agent on the same memq bus (as dream run).
   RunResult RunWithAgents(RunSession& session) {
     lcm::LcmBus bus("memq://");
-    std::vector<std::unique_ptr<agents::RobotAgent>> robots;
-    for (int id = 0; id < session.config().num_robots; ++id) robots.push_back(session.factory()->Make(id));
-    agent_host::AgentHost host(bus, std::move(robots), 77);
+    const std::unique_ptr<agent_host::AgentHost> host = HostAgents(session, bus);
     return session.Run(bus, {out(), "the folder's config\n"});
   }
 

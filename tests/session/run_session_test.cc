@@ -45,9 +45,7 @@ TEST_F(RunSessionTest, AFolderRemovedAndMadeAgainDuringTheRunIsLeftToTheNewerRun
   RunSession session(run_config::LoadRunConfigFile(WriteConfig(0.1, 1.0, 30)), options);
   ASSERT_NE(session.factory(), nullptr) << session.factory_error();
   lcm::LcmBus bus("memq://");
-  std::vector<std::unique_ptr<agents::RobotAgent>> robots;
-  for (int id = 0; id < session.config().num_robots; ++id) robots.push_back(session.factory()->Make(id));
-  agent_host::AgentHost host(bus, std::move(robots), 77);
+  const std::unique_ptr<agent_host::AgentHost> host = HostAgents(session, bus);
   // At step 5 the folder is removed and made again, and a newer run writes there.
   const lcm::Subscription folder_swapper =
       bus.Subscribe(lcm::kPosesChannel, [this](const std::string&, const void* data, int size) {

@@ -42,9 +42,7 @@ TEST_F(RunSessionTest, TheVerdictIsPublishedOnceAfterTheSummaryAndEndsTheLog) {
   RunSession session(run_config::LoadRunConfigFile(WriteConfig(0.2, 1.5, 60)), options);
   ASSERT_NE(session.factory(), nullptr) << session.factory_error();
   lcm::LcmBus bus("memq://");
-  std::vector<std::unique_ptr<agents::RobotAgent>> robots;
-  for (int id = 0; id < session.config().num_robots; ++id) robots.push_back(session.factory()->Make(id));
-  agent_host::AgentHost host(bus, std::move(robots), 77);
+  const std::unique_ptr<agent_host::AgentHost> host = HostAgents(session, bus);
   std::vector<run_verdict_t> heard;
   bool summary_there_when_heard = false;
   const lcm::Subscription listener =
