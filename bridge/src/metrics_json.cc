@@ -1,11 +1,31 @@
 #include "dream/bridge/metrics_json.h"
 
+#include <algorithm>
+
 #include "dream/agent_host/controller_factory.h"
 #include "dream/agent_host/log_metrics.h"
-#include "dream/bridge/python_run_metrics.h"
 #include "dream/kind_api/controller_kind.h"
+#include "dream/kind_api/run_poses.h"
 
 namespace dream::bridge {
+namespace {
+
+// The log's poses as plain values, what a kind's own metrics read.
+kind_api::RunPoses RunPosesOf(const run_log::RunLog& log) {
+  kind_api::RunPoses poses;
+  poses.steps.reserve(log.poses().size());
+  for (const robot_poses_t& message : log.poses()) {
+    kind_api::RunPoses::Step& step = poses.steps.emplace_back();
+    step.step = message.step;
+    const size_t robots = std::min({static_cast<size_t>(std::max(message.num_robots, 0)), message.x.size(),
+                                    message.y.size(), message.theta.size()});
+    step.poses.reserve(robots);
+    for (size_t i = 0; i < robots; ++i) step.poses.emplace_back(message.x[i], message.y[i], message.theta[i]);
+  }
+  return poses;
+}
+
+}  // namespace
 
 nlohmann::ordered_json MetricsJson(const run_config::RunConfig& config, const run_log::RunLog& log) {
   try {
@@ -41,22 +61,21 @@ nlohmann::ordered_json MetricsJson(const agent_host::ControllerFactory& factory,
 }
 
 nlohmann::ordered_json MetricsJson(const run_config::RunConfig& config, const agent_host::ControllerFactory& factory,
-                                   const run_log::RunLog& log, const std::string& python_runtime_dir) {
+                                   const run_log::RunLog& log, const std::string& runtime_dir) {
   nlohmann::ordered_json json = MetricsJson(factory, log);
-  // A kind whose robots run in the Python runtime has its own metrics and goal there.
+  // A kind may compute metrics of its own besides its builder's (the python kind: in the Python runtime).
   const kind_api::ControllerKind& kind = factory.registered_kind();
-  if (json.contains("error") || python_runtime_dir.empty() ||
-      kind.runtime != kind_api::ControllerKind::Runtime::kPython) {
-    return json;
-  }
+  if (json.contains("error") || runtime_dir.empty() || !kind.own_metrics) return json;
   try {
-    const nlohmann::json own = PythonRunMetrics::Compute(python_runtime_dir, kind.runtime_spec(config), log);
+    const nlohmann::json own = kind.own_metrics(config, RunPosesOf(log), runtime_dir);
     if (own.contains("goal") && own["goal"].is_object()) json["goal"] = own["goal"];
     if (own.contains("goal_points") && own["goal_points"].is_array() && !own["goal_points"].empty()) {
       json["goal_points"] = own["goal_points"];
     }
-    for (const auto& [name, value] : own["metrics"].items()) {
-      if (!json.contains(name)) json[name] = value;
+    if (own.contains("metrics") && own["metrics"].is_object()) {
+      for (const auto& [name, value] : own["metrics"].items()) {
+        if (!json.contains(name)) json[name] = value;
+      }
     }
   } catch (const std::exception& e) {
     json["error"] = e.what();

@@ -80,12 +80,12 @@ TEST_F(RenderOverlaysTest, ASummaryJsonGivesItsGoalsAndAMissingOrMalformedOneNon
 TEST_F(RenderOverlaysTest, APythonControllersGoalPointsAreComputedBeforeItsRun) {
   const run_config::RunConfig config = PairConfig("return [[(-0.25, 0.0)], [(0.25, 0.0), (0.25, 0.5)]]");
   render::ArenaOverlays overlays;
-  AddPythonGoals(config, dream::testing::SourceDir() + "/python", &overlays);
+  AddKindGoals(config, dream::testing::SourceDir() + "/python", &overlays);
   ASSERT_EQ(overlays.goals_m.size(), 2u);
   ASSERT_EQ(overlays.goals_m[1].size(), 2u);
   EXPECT_DOUBLE_EQ(overlays.goals_m[1][1][1], 0.5);
   render::ArenaOverlays without_runtime;
-  AddPythonGoals(config, "", &without_runtime);
+  AddKindGoals(config, "", &without_runtime);
   EXPECT_TRUE(without_runtime.goals_m.empty());
 }
 
@@ -93,7 +93,7 @@ TEST_F(RenderOverlaysTest, AGoalPointsThatFailsIsAnErrorNamingTheModule) {
   const run_config::RunConfig config = PairConfig("return [[(0.0, 0.0)]]");  // one list for two robots
   render::ArenaOverlays overlays;
   try {
-    AddPythonGoals(config, dream::testing::SourceDir() + "/python", &overlays);
+    AddKindGoals(config, dream::testing::SourceDir() + "/python", &overlays);
     FAIL() << "expected an error";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("pair.py: Pair.goal_points(): expected one list of (x, y) per robot (2)"),

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <random>
 
+#include "dream/lcm/lcm_url.h"
 #include "dream/lcm/run_id.h"
 #include "dream/agent_host/controller_factory.h"
 #include "dream/kind_api/controller_kind.h"
@@ -38,19 +39,32 @@ HostedAgents::HostedAgents(lcm::LcmBus& bus, const config::ControllerConfig& con
                            const agent_host::ControllerFactory* factory,
                            const python_host::PythonHostProcess::Limits& python_limits)
     : bus_(bus) {
+  Host(config, robot_ids, factory, python_limits);
+}
+
+HostedAgents::HostedAgents(const std::string& lcm_url, const config::ControllerConfig& config,
+                           const std::vector<int>& robot_ids,
+                           const python_host::PythonHostProcess::Limits& python_limits)
+    : own_bus_(std::make_unique<lcm::LcmBus>(lcm::ResolveLcmUrl(lcm_url))), bus_(*own_bus_) {
+  Host(config, robot_ids, nullptr, python_limits);
+}
+
+void HostedAgents::Host(const config::ControllerConfig& config, const std::vector<int>& robot_ids,
+                        const agent_host::ControllerFactory* factory,
+                        const python_host::PythonHostProcess::Limits& python_limits) {
   std::unique_ptr<agent_host::ControllerFactory> own;
   if (factory == nullptr) {
     own = std::make_unique<agent_host::ControllerFactory>(config);
     factory = own.get();
   }
   if (RunsInPython(*factory)) {
-    python_ = std::make_unique<python_host::PythonHostProcess>(bus, factory->registered_kind().runtime_spec(config),
+    python_ = std::make_unique<python_host::PythonHostProcess>(bus_, factory->registered_kind().runtime_spec(config),
                                                                robot_ids, NewAgentId(), python_limits);
     return;
   }
   std::vector<std::unique_ptr<agents::RobotAgent>> robots;
   for (int id : robot_ids) robots.push_back(factory->Make(id));
-  cpp_ = std::make_unique<agent_host::AgentHost>(bus, std::move(robots), NewAgentId());
+  cpp_ = std::make_unique<agent_host::AgentHost>(bus_, std::move(robots), NewAgentId());
   cpp_->ExpectWorldOfRobots(config.num_robots);
 }
 

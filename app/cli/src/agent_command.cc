@@ -22,8 +22,6 @@
 #include "shared_options.h"
 #include "dream/config/controller_config.h"
 #include "dream/files/atomic_file.h"
-#include "dream/lcm/lcm_bus.h"
-#include "dream/lcm/lcm_url.h"
 
 namespace dream::cli {
 
@@ -105,13 +103,12 @@ int RunAgents(const AgentArgs& args, const std::function<void()>& hand_over_plug
   const config::ControllerConfig config = overridden.LoadController();
   if (!config.plugins.empty() && hand_over_plugins) hand_over_plugins();
   const std::vector<int> ids = ParseRobotList(args.robots, config.num_robots);
-  lcm::LcmBus bus(lcm::ResolveLcmUrl(args.lcm_url));
   auto host = std::make_unique<hosting::HostedAgents>(
-      bus, config, ids, nullptr,
+      args.lcm_url, config, ids,
       python_host::PythonHostProcess::Limits{WorldTimeout(overridden.Document(), "agent_timeout_s"),
                                              WorldTimeout(overridden.Document(), "start_timeout_s"),
                                              args.idle_timeout_s});
-  spdlog::info("agent for robot(s) {} of {} on {}", args.robots, config.name, bus.url());
+  spdlog::info("agent for robot(s) {} of {} on {}", args.robots, config.name, host->url());
   const bool ended_by_world = host->Run(StopFlag(), args.idle_timeout_s);
   const std::string report = host->ReportJson();
   const int64_t last_step = host->last_step_answered();

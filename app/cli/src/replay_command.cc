@@ -8,10 +8,10 @@
 #include "command_line.h"
 #include "commands.h"
 #include "dream/files/regular_file.h"
-#include "dream/lcm/lcm_url.h"
 #include "lcm_java_tools.h"
 #include "dream/process/process_group.h"
 #include "shared_options.h"
+#include "dream/workflows/lcm_tool_commands.h"
 #include "window_display.h"
 
 namespace dream::cli {
@@ -42,15 +42,8 @@ std::string LogToReplay(const std::string& run) {
 int RunReplay(const ReplayArgs& args) {
   const std::string log = LogToReplay(args.run);
   const std::string lcm_jar = RequireLcmJar();
-  const std::string url = lcm::ResolveLcmUrl(args.lcm_url);
-  // Debian's lcm-logplayer-gui passes -Xincgc, which Java 17 refuses: start
-  // its class directly, with the script's heap sizes. The URL goes as its own
-  // word: LogPlayer cuts `--lcm-url=URL` at every '=', which kept only
-  // "udpm://...?ttl" and dropped the URL's options.
-  std::vector<std::string> player = {"java",      "-Xmx64m", "-Xms32m", "-cp", lcm_jar, "lcm.logging.LogPlayer",
-                                     "--lcm-url", url};
-  if (args.paused) player.push_back("--paused");
-  player.push_back(log);
+  const std::string url = workflows::LcmToolCommands::Url(args.lcm_url);
+  const std::vector<std::string> player = workflows::LcmToolCommands::Player(lcm_jar, log, url, args.paused);
   std::vector<std::string> spy;
   if (args.with_spy) {
     SpyClasspath();  // what the spy needs, named now: a spy that cannot start would leave the replay unwatched

@@ -15,8 +15,6 @@
 
 #include "commands.h"
 #include "dream/files/run_folder_choice.h"
-#include "dream/lcm/lcm_bus.h"
-#include "dream/lcm/lcm_url.h"
 #include "dream/process/data_files.h"
 #include "dream/process/process_group.h"
 #include "dream/session/exit_code.h"
@@ -130,7 +128,7 @@ int RunScript(const RunArgs& args, const std::vector<std::string>& script_args) 
   options.steps = args.steps;
   options.python_runtime_dir = process::DataFiles::PythonRuntimeDir();
   options.session.python_runtime_dir = options.python_runtime_dir;
-  const std::string url = lcm::ResolveLcmUrl(args.lcm_url.empty() ? std::string() : args.lcm_url);
+  const std::string url = workflows::ScriptRunWorkflow::BusUrl(args.lcm_url);
   const std::string dir =
       fs::absolute(files::RunFolderChoice(
                        args.out_dir, "runs/" + workflows::ScriptRunWorkflow::RunName(args.config_path), args.overwrite)
@@ -154,10 +152,9 @@ int RunScript(const RunArgs& args, const std::vector<std::string>& script_args) 
   ::close(hello[0]);
   if (line.empty()) return ScriptEndedEarly(children.WaitPassingOnStop(pid, StopFlag(), SIGTERM), dir);
   const workflows::ScriptRunWorkflow::Hello said = workflows::ScriptRunWorkflow::ParseHello(line);
-  lcm::LcmBus bus(url);
   ScriptWatch watch(children, pid);
   options.session.stop = &watch.stop();
-  const session::RunResult result = workflows::ScriptRunWorkflow(options).Run(said, dir, bus);
+  const session::RunResult result = workflows::ScriptRunWorkflow(options).Run(said, dir, url);
   watch.Join();
   const int script_code =
       watch.exit_code() >= 0 ? watch.exit_code() : children.WaitPassingOnStop(pid, StopFlag(), SIGTERM);

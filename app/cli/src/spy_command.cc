@@ -5,7 +5,7 @@
 
 #include "command_line.h"
 #include "commands.h"
-#include "dream/lcm/lcm_url.h"
+#include "dream/workflows/lcm_tool_commands.h"
 #include "lcm_java_tools.h"
 #include "shared_options.h"
 #include "window_display.h"
@@ -22,30 +22,18 @@ struct SpyArgs {
 }  // namespace
 
 int RunSpy(const std::string& log_path, const std::string& lcm_url, bool print_command_only) {
-  // Debian's /usr/bin/lcm-spy passes -Xincgc, which Java 17 refuses; start
-  // the Spy class directly with our types on the classpath instead.
-  const std::string classpath = SpyClasspath();
-  std::string url = lcm_url;
-  if (url.empty() && !log_path.empty()) {
-    // A log is replayed on its own port, loopback only (ttl=0), so it does not
-    // mix with a live run.
-    url = "udpm://239.255.76.67:7668?ttl=0";
-  }
-  url = lcm::ResolveLcmUrl(url);
-  const std::vector<std::string> spy = {"java", "-cp", classpath, "lcm.spy.Spy", "--lcm-url=" + url};
-  std::vector<std::string> player;
-  if (!log_path.empty()) {
-    player = {"lcm-logplayer", "--lcm-url=" + url, RunLogPath(log_path)};
-  }
+  const std::string classpath = SpyClasspath();  // a missing jar is named before anything else
+  const std::vector<std::vector<std::string>> commands =
+      workflows::LcmToolCommands::Spy(classpath, log_path.empty() ? "" : RunLogPath(log_path), lcm_url);
   if (print_command_only) {
-    PrintToolCommands({spy, player});
+    PrintToolCommands(commands);
     return kExitOk;
   }
   RequireWindowDisplay("lcm-spy",
                        "without one, `dream spy --print` prints the command to run elsewhere, and "
                        "`dream log echo RUN CHANNEL` prints a log's messages as text");
   // lcm-spy gets 2 s to subscribe before the first message is played; closing it ends the session.
-  return RunToolsUntilClosed({spy, player}, 0, 2);
+  return RunToolsUntilClosed(commands, 0, 2);
 }
 
 void DeclareSpyCommand(CommandLine& line) {

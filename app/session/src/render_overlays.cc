@@ -8,7 +8,6 @@
 #include "dream/kind_api/agent_parts_config.h"
 #include "dream/agent_host/controller_factory.h"
 #include "dream/agent_host/controller_registry.h"
-#include "dream/bridge/python_run_metrics.h"
 #include "dream/files/file_text.h"
 #include "dream/node/run_summary.h"
 #include "dream/agent_host/snapshot_from_messages.h"
@@ -110,15 +109,20 @@ bool AddDeclaredGoalsOfRun(const std::string& summary_path, render::ArenaOverlay
   return overlays->goals_m.size() > before;
 }
 
-void AddPythonGoals(const run_config::RunConfig& config, const std::string& python_runtime_dir,
-                    render::ArenaOverlays* overlays) {
-  if (!overlays->goals_m.empty() || python_runtime_dir.empty()) return;
-  // A kind whose robots run in the Python runtime declares its goals there.
+void AddKindGoals(const run_config::RunConfig& config, const std::string& runtime_dir,
+                  render::ArenaOverlays* overlays) {
+  if (!overlays->goals_m.empty() || runtime_dir.empty()) return;
   const std::shared_ptr<const kind_api::ControllerKind> kind = agent_host::ControllerRegistry::KindOf(config);
-  if (!kind || kind->runtime != kind_api::ControllerKind::Runtime::kPython) return;
-  const nlohmann::json points =
-      bridge::PythonRunMetrics::GoalPoints(python_runtime_dir, kind->runtime_spec(config), config.num_robots);
-  AddDeclaredGoals(nlohmann::json{{"goal_points", points}}, overlays);
+  if (!kind || !kind->goals_before_run) return;
+  for (const std::vector<Eigen::Vector2d>& robot : kind->goals_before_run(config, runtime_dir)) {
+    if (overlays->goals_m.size() >= kMaxGoalRobots) break;
+    Points goals;
+    for (const Eigen::Vector2d& point : robot) {
+      if (goals.size() >= kMaxGoalPointsPerRobot) break;
+      goals.push_back({point.x(), point.y()});
+    }
+    overlays->goals_m.push_back(goals);
+  }
 }
 
 }  // namespace dream::session

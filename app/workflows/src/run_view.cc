@@ -19,15 +19,15 @@ namespace dream::workflows {
 
 namespace {
 
-/// A Python controller's goal_points(), when the kind drew no goals: a finished run's from its
-/// summary.json, else computed from the config, once, before the view starts (a short-lived
-/// python3, as for its metrics; nothing for other kinds).
-void AddPythonControllerGoals(const run_config::RunConfig& config, const std::string& python_runtime_dir,
-                              const std::string& run_dir, render::ArenaOverlays* overlays) {
+/// The goals a kind declares when its builder drew none (a Python controller's goal_points()): a
+/// finished run's from its summary.json, else what the kind computes from the config, once, before
+/// the view starts (ControllerKind::goals_before_run; nothing for a kind without them).
+void AddDeclaredGoalsOfKind(const run_config::RunConfig& config, const std::string& python_runtime_dir,
+                            const std::string& run_dir, render::ArenaOverlays* overlays) {
   if (!overlays->goals_m.empty()) return;
   if (!run_dir.empty() && session::AddDeclaredGoalsOfRun(run_dir + "/summary.json", overlays)) return;
   try {
-    session::AddPythonGoals(config, python_runtime_dir, overlays);
+    session::AddKindGoals(config, python_runtime_dir, overlays);
   } catch (const std::exception& e) {
     spdlog::warn("dream view: drawing without the controller's goal points: {}", e.what());
   }
@@ -48,7 +48,7 @@ view::ViewSetup ViewSetupOfConfig(const run_config::RunConfig& config, view::Vie
     // Goals and radio are a nicety: the run itself is drawn from the bus.
     spdlog::warn("dream view: drawing without the config's goals and radio: {}", e.what());
   }
-  AddPythonControllerGoals(config, python_runtime_dir, run_dir, &setup.overlays);
+  AddDeclaredGoalsOfKind(config, python_runtime_dir, run_dir, &setup.overlays);
   setup.overlays.run_name = config.name;
   return setup;
 }

@@ -11,6 +11,8 @@
 
 #include "dream/config_overrides/overridden_config.h"
 #include "dream/files/atomic_file.h"
+#include "dream/lcm/lcm_bus.h"
+#include "dream/lcm/lcm_url.h"
 #include "dream/run_config/run_config.h"
 
 namespace dream::workflows {
@@ -120,5 +122,13 @@ session::RunResult ScriptRunWorkflow::Run(const Hello& hello, const std::string&
   const std::string text = run_config::RunFolderConfigText(session.config(), overridden.Text());
   return session.Run(lcm, {run_dir, text});
 }
+
+session::RunResult ScriptRunWorkflow::Run(const Hello& hello, const std::string& run_dir,
+                                          const std::string& url) const {
+  lcm::LcmBus bus(url);
+  return Run(hello, run_dir, bus);
+}
+
+std::string ScriptRunWorkflow::BusUrl(const std::string& lcm_url) { return lcm::ResolveLcmUrl(lcm_url); }
 
 }  // namespace dream::workflows

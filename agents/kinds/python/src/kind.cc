@@ -1,7 +1,10 @@
 #include "dream/python/kind.h"
 
+#include <nlohmann/json.hpp>
+
 #include "dream/python/python_controller_builder.h"
 #include "dream/python/python_controller_spec.h"
+#include "dream/python/python_run_metrics.h"
 
 namespace dream::python {
 
@@ -11,6 +14,14 @@ kind_api::ControllerKind Kind() {
   kind.runtime = kind_api::ControllerKind::Runtime::kPython;
   kind.runtime_spec = PythonControllerSpecJson;
   kind.file_key = "module";
+  // The class's own metrics, goal and goal points live in Python: a short-lived python3 computes them.
+  kind.own_metrics = [](const config::ControllerConfig& config, const kind_api::RunPoses& poses,
+                        const std::string& runtime_dir) {
+    return PythonRunMetrics::Compute(runtime_dir, PythonControllerSpecJson(config), poses);
+  };
+  kind.goals_before_run = [](const config::ControllerConfig& config, const std::string& runtime_dir) {
+    return PythonRunMetrics::GoalPoints(runtime_dir, PythonControllerSpecJson(config), config.num_robots);
+  };
   return kind;
 }
 

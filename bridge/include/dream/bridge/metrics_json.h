@@ -22,13 +22,13 @@ nlohmann::ordered_json MetricsJson(const run_config::RunConfig& config, const ru
 /// plugins are not loaded and its section not read again).
 nlohmann::ordered_json MetricsJson(const agent_host::ControllerFactory& factory, const run_log::RunLog& log);
 
-/// The same, plus, for a kind whose robots run in the Python runtime
-/// (ControllerKind::Runtime::kPython: the python kind), the figures, goal
-/// and goal points its class declares (PythonRunMetrics, with the Python
-/// runtime in `python_runtime_dir`): its goal becomes "goal", its goal points
-/// "goal_points", its figures join the others (never replacing one). A class
-/// that declares nothing adds nothing; one whose functions fail gives "error".
+/// The same, plus the metrics the run's kind computes itself
+/// (ControllerKind::own_metrics: the python kind's class's figures, goal and
+/// goal points, with the Python runtime in `runtime_dir`): its goal becomes
+/// "goal", its goal points "goal_points", its figures join the others (never
+/// replacing one). A kind without them, or an empty `runtime_dir`, adds
+/// nothing; one whose computation fails gives "error".
 nlohmann::ordered_json MetricsJson(const run_config::RunConfig& config, const agent_host::ControllerFactory& factory,
-                                   const run_log::RunLog& log, const std::string& python_runtime_dir);
+                                   const run_log::RunLog& log, const std::string& runtime_dir);
 
 }  // namespace dream::bridge

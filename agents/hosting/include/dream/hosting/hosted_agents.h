@@ -44,6 +44,14 @@ class HostedAgents {
   HostedAgents(lcm::LcmBus& bus, const config::ControllerConfig& config, const std::vector<int>& robot_ids,
                const agent_host::ControllerFactory* factory = nullptr,
                const python_host::PythonHostProcess::Limits& python_limits = {});
+  /// The same on a bus of their own, opened on `lcm_url` (empty:
+  /// $LCM_DEFAULT_URL, else LCM's default; lcm::ResolveLcmUrl): what `dream
+  /// agent` runs, whose lean program links no workflow.
+  /// @throws std::invalid_argument naming a URL LCM cannot open.
+  HostedAgents(const std::string& lcm_url, const config::ControllerConfig& config, const std::vector<int>& robot_ids,
+               const python_host::PythonHostProcess::Limits& python_limits);
+  /// The URL of the bus the agents are on.
+  const std::string& url() const { return bus_.url(); }
 
   /// Handles `bus` until the world ends the run (true), or `stop` / silence (false).
   bool Run(const std::atomic<bool>& stop, double idle_timeout_s);
@@ -54,6 +62,10 @@ class HostedAgents {
   std::string ReportJson() const;
 
  private:
+  void Host(const config::ControllerConfig& config, const std::vector<int>& robot_ids,
+            const agent_host::ControllerFactory* factory, const python_host::PythonHostProcess::Limits& python_limits);
+
+  std::unique_ptr<lcm::LcmBus> own_bus_;  // declared first: the agents on it end before it
   lcm::LcmBus& bus_;
   std::unique_ptr<agent_host::AgentHost> cpp_;
   std::unique_ptr<python_embedded::PythonAgentHost> python_;

@@ -1,7 +1,9 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <functional>
 #include <memory>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -9,6 +11,7 @@
 #include "dream/kind_api/agent_parts_config.h"
 #include "dream/kind_api/experiment_builder.h"
 #include "dream/kind_api/robot_class_builder.h"
+#include "dream/kind_api/run_poses.h"
 #include "dream/agents/fields/field_table.h"
 #include "dream/config/config_node.h"
 #include "dream/config/controller_config.h"
@@ -30,7 +33,7 @@ struct ControllerKind {
     /// The Python runtime (python/dream/), built there from `runtime_spec`:
     /// in a process of its own on the bus (dream::python_host), or shipped in a
     /// Robotarium submission (the export's controller strategy); the run's own
-    /// metrics and goal come from that runtime too (bridge::PythonRunMetrics).
+    /// metrics and goal come from that runtime too (own_metrics, goals_before_run).
     kPython,
   };
 
@@ -56,6 +59,27 @@ struct ControllerKind {
   /// The kind's rows of the key table in config/README.md (`| key | default | meaning |`), made
   /// from the builder's field list when it has one (`Builder::Section`); empty otherwise.
   std::function<std::string()> key_table;
+  /// The kind's own metrics of a finished run, besides its builder's
+  /// ExperimentMetrics (the python kind: its class's metrics(), goal() and
+  /// goal_points(), computed in the Python runtime), as the document
+  /// {"metrics": {name: value}, "goal": {"met", "completion_step", "detail"}
+  /// or null, "goal_points": [[[x, y], ...] per robot]}: the tools add its
+  /// goal, its goal points and the figures no other metric already names to
+  /// summary.json's metrics. `runtime_dir`: the folder of the runtime the
+  /// kind's robots run in (the Python runtime, process::DataFiles), never
+  /// empty (a caller without one asks for no own metrics). Empty: none.
+  /// @throws std::runtime_error naming what failed (a module's file and line).
+  std::function<nlohmann::json(const config::ControllerConfig& config, const RunPoses& poses,
+                               const std::string& runtime_dir)>
+      own_metrics;
+  /// The points each robot should reach, known from the config before a run,
+  /// for a kind whose builder draws none (ExperimentBuilder::GoalsToDraw):
+  /// what pictures and the view draw (the python kind: its class's
+  /// goal_points()). `runtime_dir` as for own_metrics. Empty: none.
+  /// @throws std::runtime_error naming what failed.
+  std::function<std::vector<std::vector<Eigen::Vector2d>>(const config::ControllerConfig& config,
+                                                          const std::string& runtime_dir)>
+      goals_before_run;
 
   /// The kind of `Builder`, read from its static members: `kKind` (the name),
   /// `Keys()` (its own keys) and, when it has them, `DefaultParts(int)` and

@@ -43,13 +43,13 @@ inline constexpr size_t kMaxGoalPointsPerRobot = 1000;
 /// declares none (goals are a drawing's nicety: nothing to fail for).
 bool AddDeclaredGoalsOfRun(const std::string& summary_path, render::ArenaOverlays* overlays);
 
-/// A Python controller's goals before its run: its class's
-/// goal_points(config, num_robots), through the short-lived python3 its
-/// metrics use (bridge::PythonRunMetrics::GoalPoints), when the kind drew
-/// none. Nothing for other kinds or without `python_runtime_dir`.
+/// The goals the run's kind knows before the run, when its builder drew none
+/// (ControllerKind::goals_before_run: a Python controller's class's
+/// goal_points(config, num_robots), through a short-lived python3 with the
+/// Python runtime in `runtime_dir`), bounded as AddDeclaredGoals bounds them.
+/// Nothing for a kind without them or without `runtime_dir`.
 /// @throws std::runtime_error naming the module and what failed (its
 ///         exception with file and line, a bad return value, a timeout).
-void AddPythonGoals(const run_config::RunConfig& config, const std::string& python_runtime_dir,
-                    render::ArenaOverlays* overlays);
+void AddKindGoals(const run_config::RunConfig& config, const std::string& runtime_dir, render::ArenaOverlays* overlays);
 
 }  // namespace dream::session

@@ -36,8 +36,9 @@ class RunReporter {
     /// -q: a clean run prints no report (the verdict is in summary.json and
     /// the exit code); a run with anything wrong still prints its whole report.
     bool quiet = false;
-    /// The Python runtime (python/), for a Python controller's own metrics
-    /// and goal (bridge::PythonRunMetrics); "": those are not computed.
+    /// The Python runtime (python/), for the metrics and goal a kind computes
+    /// itself (ControllerKind::own_metrics: a Python controller's); "": those
+    /// are not computed.
     std::string python_runtime_dir;
   };
 

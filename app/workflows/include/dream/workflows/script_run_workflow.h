@@ -59,6 +59,13 @@ class ScriptRunWorkflow {
   /// (every robot done), Options::session.stop is set, or the step limit.
   /// @throws config::ConfigError naming the file, line and key (a --set's too).
   session::RunResult Run(const Hello& hello, const std::string& run_dir, lcm::LcmInterface& lcm) const;
+  /// The same on a bus of its own, opened on `url` (BusUrl's).
+  session::RunResult Run(const Hello& hello, const std::string& run_dir, const std::string& url) const;
+
+  /// The URL the script's world and the script share: `lcm_url` when given,
+  /// else $LCM_DEFAULT_URL, else LCM's default (lcm::ResolveLcmUrl).
+  /// @throws std::invalid_argument naming a URL without "provider://".
+  static std::string BusUrl(const std::string& lcm_url);
 
  private:
   Options options_;

@@ -1,4 +1,4 @@
-#include "dream/bridge/python_run_metrics.h"
+#include "dream/python/python_run_metrics.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -18,7 +18,7 @@
 
 extern char** environ;
 
-namespace dream::bridge {
+namespace dream::python {
 namespace {
 
 namespace fs = std::filesystem;
@@ -41,22 +41,22 @@ struct TempFiles {
   fs::path dir;
 };
 
-void WriteInput(const fs::path& path, const std::string& spec_json, const run_log::RunLog& log) {
-  const std::vector<robot_poses_t>& poses = log.poses();
-  if (poses.empty()) throw std::runtime_error("the run's log has no DREAM_POSES");
-  const int32_t robots = poses.front().num_robots;
+void WriteInput(const fs::path& path, const std::string& spec_json, const kind_api::RunPoses& poses) {
+  if (poses.steps.empty()) throw std::runtime_error("the run's log has no DREAM_POSES");
+  const size_t robots = poses.steps.front().poses.size();
   std::ofstream out(path, std::ios::binary);
-  out << nlohmann::json{{"spec_bytes", spec_json.size()}, {"steps", poses.size()}, {"robots", robots}}.dump() << "\n"
+  out << nlohmann::json{{"spec_bytes", spec_json.size()}, {"steps", poses.steps.size()}, {"robots", robots}}.dump()
+      << "\n"
       << spec_json;
-  for (const robot_poses_t& message : poses) out.write(reinterpret_cast<const char*>(&message.step), sizeof(int64_t));
-  for (const robot_poses_t& message : poses) {
-    if (message.num_robots != robots) {
-      throw std::runtime_error("step " + std::to_string(message.step) + " has " + std::to_string(message.num_robots) +
+  for (const kind_api::RunPoses::Step& step : poses.steps)
+    out.write(reinterpret_cast<const char*>(&step.step), sizeof(int64_t));
+  for (const kind_api::RunPoses::Step& step : poses.steps) {
+    if (step.poses.size() != robots) {
+      throw std::runtime_error("step " + std::to_string(step.step) + " has " + std::to_string(step.poses.size()) +
                                " robots, the first " + std::to_string(robots));
     }
-    for (int32_t i = 0; i < robots; ++i) {
-      const double pose[3] = {message.x[static_cast<size_t>(i)], message.y[static_cast<size_t>(i)],
-                              message.theta[static_cast<size_t>(i)]};
+    for (const Eigen::Vector3d& robot : step.poses) {
+      const double pose[3] = {robot.x(), robot.y(), robot.z()};
       out.write(reinterpret_cast<const char*>(pose), sizeof(pose));
     }
   }
@@ -137,13 +137,30 @@ nlohmann::json RunScript(const std::string& script, const std::string& mode, con
   return document;
 }
 
+/// run_metrics.py's goal points, [[[x, y], ...] per robot], as points; anything else is the
+/// script's fault, named.
+std::vector<std::vector<Eigen::Vector2d>> PointsOf(const nlohmann::json& robots, const std::string& script) {
+  std::vector<std::vector<Eigen::Vector2d>> points;
+  for (const nlohmann::json& robot : robots) {
+    if (!robot.is_array()) throw std::runtime_error(script + " wrote goal points that are not one list per robot");
+    points.emplace_back();
+    for (const nlohmann::json& point : robot) {
+      if (!point.is_array() || point.size() != 2 || !point[0].is_number() || !point[1].is_number()) {
+        throw std::runtime_error(script + " wrote a goal point that is not [x, y]: " + point.dump().substr(0, 80));
+      }
+      points.back().emplace_back(point[0].get<double>(), point[1].get<double>());
+    }
+  }
+  return points;
+}
+
 }  // namespace
 
 nlohmann::json PythonRunMetrics::Compute(const std::string& runtime_dir, const std::string& spec_json,
-                                         const run_log::RunLog& log) {
+                                         const kind_api::RunPoses& poses) {
   const std::string script = ScriptIn(runtime_dir);
   TempFiles temp;
-  WriteInput(temp.dir / "input", spec_json, log);
+  WriteInput(temp.dir / "input", spec_json, poses);
   const nlohmann::json document = RunScript(script, "", temp, kTimeoutS, "metrics");
   if (!document.contains("metrics") || !document["metrics"].is_object()) {
     throw std::runtime_error(script + " wrote no metrics document");
@@ -151,8 +168,8 @@ nlohmann::json PythonRunMetrics::Compute(const std::string& runtime_dir, const s
   return document;
 }
 
-nlohmann::json PythonRunMetrics::GoalPoints(const std::string& runtime_dir, const std::string& spec_json,
-                                            int num_robots) {
+std::vector<std::vector<Eigen::Vector2d>> PythonRunMetrics::GoalPoints(const std::string& runtime_dir,
+                                                                       const std::string& spec_json, int num_robots) {
   const std::string script = ScriptIn(runtime_dir);
   TempFiles temp;
   {
@@ -164,7 +181,7 @@ nlohmann::json PythonRunMetrics::GoalPoints(const std::string& runtime_dir, cons
   if (!document.contains("goal_points") || !document["goal_points"].is_array()) {
     throw std::runtime_error(script + " wrote no goal points");
   }
-  return document["goal_points"];
+  return PointsOf(document["goal_points"], script);
 }
 
-}  // namespace dream::bridge
+}  // namespace dream::python
