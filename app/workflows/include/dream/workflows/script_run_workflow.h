@@ -1,12 +1,15 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <string>
 #include <vector>
 
 #include "dream/lcm/lcm_interface.h"
+#include "dream/run_config/run_config.h"
 #include "dream/session/run_result.h"
 #include "dream/session/run_session.h"
+#include "dream/workflows/run_options.h"
 
 namespace dream::workflows {
 
@@ -31,15 +34,31 @@ class ScriptRunWorkflow {
 
   struct Options {
     std::string script_path;  ///< the script, as given
-    long long seed = 1;       ///< the script's and the world's seed
+    /// A run config naming the script (`script:`: a sweep's run, or a script
+    /// run's config.yaml rerun): the run keeps its keys, the script's hello
+    /// giving its robots and initial_poses. Empty: ConfigText's defaults.
+    std::string base_config_path;
+    long long seed = 1;  ///< the script's and the world's seed
     std::vector<std::string> sets;
     long long steps = 0;             ///< --steps; 0: until the script ends (kDefaultSteps at most)
     std::string python_runtime_dir;  ///< DataFiles::PythonRuntimeDir(): its rps_dream/ folder
     session::RunSession::Options session;
+    /// The command's --pace and --view options (view, view_*), as `dream run CONFIG` takes them.
+    RunOptions watch;
+    /// Ctrl-C alone (session.stop is also set when the script has ended): what
+    /// ends --view's waits and its serving after the run. Null: never.
+    const std::atomic<bool>* interrupted = nullptr;
   };
 
   /// A script run's step limit unless --steps says otherwise (about 9 hours simulated).
   static constexpr long long kDefaultSteps = 1000000;
+
+  /// Whether `path` names a Robotarium script (a .py file) rather than a run config.
+  static bool IsScript(const std::string& path);
+
+  /// The base config of a sweep of the script, checked as a run config
+  /// (BaseConfigText): what `dream sweep SCRIPT.py` plans from.
+  static run_config::RunConfig BaseConfig(const std::string& script_path, const std::string& python_runtime_dir);
 
   /// The run's name: the script's file name without .py, every character a
   /// run name cannot hold (letters, digits, _ - .) replaced by _.
@@ -51,6 +70,16 @@ class ScriptRunWorkflow {
 
   /// The run config (YAML) of `hello`'s run, before --seed and --set.
   static std::string ConfigText(const Hello& hello, const Options& options);
+
+  /// What a sweep of the script starts from (`dream sweep SCRIPT.py`): ConfigText
+  /// for one robot at the origin, a placeholder the script's own Robotarium(...)
+  /// replaces in every run (WithHello).
+  static std::string BaseConfigText(const std::string& script_path, const std::string& python_runtime_dir);
+
+  /// The text of the config at `base_path` (which names the script) with
+  /// `hello`'s robots and start poses, options.seed, and options.steps when > 0.
+  /// @throws config::ConfigError naming the file when it is not YAML.
+  static std::string WithHello(const std::string& base_path, const Hello& hello, const Options& options);
 
   explicit ScriptRunWorkflow(Options options) : options_(std::move(options)) {}
 
