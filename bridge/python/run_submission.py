@@ -112,7 +112,7 @@ def debug_text(text):
     return text[start:end if end >= 0 else len(text)].rstrip("\n") + "\n"
 
 
-def main():
+def parse_arguments():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--upload", required=True, help="folder with the files to upload (the export's upload/)")
     parser.add_argument("--workdir", required=True, help="new folder to run in; the script's outputs land here")
@@ -125,10 +125,19 @@ def main():
     parser.add_argument("--record-poses", default="", help="save every get_poses() result here (.npy, K x 3 x N)")
     parser.add_argument("--seed", type=int, default=0, help="seeds Python's and numpy's random generators")
     parser.add_argument("--echo", action="store_true", help="print the script's output as it runs")
+    parser.add_argument("--main", default=MAIN_SCRIPT,
+                        help="the main file in the upload (default %s; a Robotarium script's export: the script)" %
+                        MAIN_SCRIPT)
+    parser.add_argument("--no-pacing", action="store_true",
+                        help="sim_in_real_time=False whatever the script asks (the poses are the same, only sooner)")
     parser.add_argument("--startup-max-steps", type=int, default=STARTUP_MAX_STEPS,
                         help="give up when the simulator's start-up drive takes more steps (default %d = %.0f s)" %
                         (STARTUP_MAX_STEPS, STARTUP_MAX_STEPS * 0.033))
-    args = parser.parse_args()
+    return parser.parse_args()
+
+
+def main():
+    args = parse_arguments()
 
     # The script runs in its working folder: make every path absolute first.
     for name in ("upload", "workdir", "report", "record_poses", "simulator"):
@@ -142,8 +151,8 @@ def main():
     kind, path = chosen
 
     upload = args.upload
-    if not os.path.isfile(os.path.join(upload, MAIN_SCRIPT)):
-        raise SystemExit("run_submission: %s has no %s" % (upload, MAIN_SCRIPT))
+    if os.path.basename(args.main) != args.main or not os.path.isfile(os.path.join(upload, args.main)):
+        raise SystemExit("run_submission: %s has no %s" % (upload, args.main))
     workdir = args.workdir
     os.makedirs(workdir, exist_ok=True)
     for stale in ("dream_result.npy", "dream_result.partial.npy"):
@@ -178,6 +187,8 @@ def main():
             self._dream_startup_steps = 0
             if args.skip_initialization:
                 kw["skip_initialization"] = True
+            if args.no_pacing:
+                kw["sim_in_real_time"] = False
             super().__init__(*a, **kw)
 
         def step(self):
@@ -204,7 +215,7 @@ def main():
         warnings.simplefilter("always")
         try:
             with contextlib.redirect_stdout(tee):
-                runpy.run_path(os.path.join(workdir, MAIN_SCRIPT), run_name="__main__")
+                runpy.run_path(os.path.join(workdir, args.main), run_name="__main__")
             report["ok"] = True
         except StartupTimeout as timeout:
             report["error"] = ("the simulator's start-up drive did not bring the robots onto their start poses "

@@ -196,6 +196,16 @@ TEST(RunConfigTest, WrongPoseCountAndShape) {
   EXPECT_NE(ErrorOf(Replace(kMinimal, "[0.5, 0.0, 1.57]", "[0.5, .nan, 0]")).find("finite"), std::string::npos);
 }
 
+TEST(RunConfigTest, AScriptRunNamesItsScriptAPythonFile) {
+  EXPECT_EQ(Load(kMinimal).script, "");
+  EXPECT_EQ(Load(std::string(kMinimal) + "script: /home/me/go.py\n").script, "/home/me/go.py");
+  EXPECT_NE(ErrorOf(std::string(kMinimal) + "script: /home/me/go.yaml\n")
+                .find("test.yaml:11: script: expected the path of a Robotarium script (a .py file), got "
+                      "'/home/me/go.yaml'"),
+            std::string::npos)
+      << ErrorOf(std::string(kMinimal) + "script: /home/me/go.yaml\n");
+}
+
 TEST(RunConfigTest, UnknownKeysAreTyposAndSayWhatIsAllowed) {
   const std::string error = ErrorOf(Replace(kMinimal, "steps: 100", "stpes: 100"));
   EXPECT_NE(error.find("test.yaml:4: stpes: unknown key "

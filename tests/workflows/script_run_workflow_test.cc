@@ -4,7 +4,11 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -72,6 +76,60 @@ TEST(ScriptRunWorkflowTest, TheConfigStartsEveryRobotExactlyWhereTheScriptSaid) 
       EXPECT_EQ(config["initial_poses"][i][k].as<double>(), hello.initial_poses[i][k]) << i << "," << k;
     }
   }
+}
+
+/// A file in a fresh temporary folder, removed with it.
+class TempFile {
+ public:
+  TempFile(const std::string& name, const std::string& text)
+      : dir_(std::filesystem::temp_directory_path() /
+             ("script_run_workflow_test_" + std::to_string(::getpid()) + "_" + name)) {
+    std::filesystem::create_directories(dir_);
+    std::ofstream(path()) << text;
+  }
+  ~TempFile() { std::filesystem::remove_all(dir_); }
+  std::string path() const { return (dir_ / "file").string(); }
+  std::string dir() const { return dir_.string(); }
+
+ private:
+  std::filesystem::path dir_;
+};
+
+TEST(ScriptRunWorkflowTest, ASweepsBaseConfigNamesTheScriptAndChecksAsARunConfig) {
+  const TempFile script("base", "import rps\n");
+  const std::string path = script.dir() + "/go.py";
+  std::filesystem::rename(script.path(), path);
+  const run_config::RunConfig base = ScriptRunWorkflow::BaseConfig(path, "/opt/dream/python-runtime");
+  EXPECT_EQ(base.name, "go");
+  EXPECT_EQ(base.script, path);
+  EXPECT_EQ(base.seed, 1u);
+  EXPECT_THROW(ScriptRunWorkflow::BaseConfig(script.dir() + "/missing.py", "/x"), std::invalid_argument);
+}
+
+TEST(ScriptRunWorkflowTest, AConfigNamingTheScriptKeepsItsKeysAndTakesTheHellosRobots) {
+  ScriptRunWorkflow::Options options;
+  options.script_path = "/s/go.py";
+  options.python_runtime_dir = "/opt/dream/python-runtime";
+  // A sweep's run: the base config with its seed, name and a --set value.
+  std::string text = ScriptRunWorkflow::BaseConfigText("/s/go.py", "/opt/dream/python-runtime");
+  text.replace(text.find("name: go"), 8, "name: seed07");
+  const TempFile base("with_hello", text);
+  ScriptRunWorkflow::Hello hello;
+  hello.robots = 2;
+  hello.initial_poses = {{0.1 + 0.2, -1.0 / 3.0, 1.0}, {0.5, 0.25, -2.0}};
+  options.seed = 7;
+  options.steps = 99;
+  const YAML::Node config = YAML::Load(ScriptRunWorkflow::WithHello(base.path(), hello, options));
+  EXPECT_EQ(config["name"].as<std::string>(), "seed07");
+  EXPECT_EQ(config["script"].as<std::string>(), "/s/go.py");
+  EXPECT_EQ(config["seed"].as<long long>(), 7);
+  EXPECT_EQ(config["steps"].as<long long>(), 99);
+  EXPECT_EQ(config["robots"].as<int>(), 2);
+  ASSERT_EQ(config["initial_poses"].size(), 2u);
+  EXPECT_EQ(config["initial_poses"][0][0].as<double>(), 0.1 + 0.2);
+  EXPECT_EQ(config["initial_poses"][0][1].as<double>(), -1.0 / 3.0);
+  EXPECT_EQ(config["initial_poses"][1][2].as<double>(), -2.0);
+  EXPECT_EQ(config["world"]["max_abs_v_mps"].as<double>(), 1e12);
 }
 
 TEST(ScriptRunWorkflowTest, TheRunIsNamedAfterTheScript) {

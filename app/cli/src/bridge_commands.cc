@@ -17,7 +17,12 @@
 #include "dream/workflows/export_workflow.h"
 #include "dream/workflows/import_workflow.h"
 #include "dream/workflows/lab_replay_workflow.h"
+#include "dream/workflows/script_export.h"
+#include "dream/files/file_text.h"
+#include "script_command.h"
 #include "shared_options.h"
+#include <unistd.h>
+#include <filesystem>
 
 #ifndef DREAM_DEFAULT_PYTHON
 #define DREAM_DEFAULT_PYTHON "/usr/bin/python3"
@@ -41,7 +46,56 @@ Options WithRuntime(Options options) {
   return options;
 }
 
+/// `dream export SCRIPT.py` (or the folder of a script's run): the script is the upload.
+int RunScriptExport(const workflows::ExportWorkflow::Asked& asked, const std::string& script) {
+  if (asked.calibration || !asked.strategy.empty() || asked.barriers || !asked.config_path.empty()) {
+    throw std::invalid_argument("dream export " + asked.run_dir +
+                                ": a Robotarium script is uploaded as it is: --calibration, --strategy, --barriers "
+                                "and --config are for runs of DREAM's controllers");
+  }
+  workflows::ScriptExport::Options options;
+  options.script_path = script;
+  options.out_dir = asked.out_dir;
+  options.python = DREAM_DEFAULT_PYTHON;
+  options.python_runtime_dir = process::DataFiles::PythonRuntimeDir();
+  const char* simulator = std::getenv("ROBOTARIUM_PYTHON_SIMULATOR");
+  std::error_code error;
+  if (simulator != nullptr && *simulator != '\0' &&
+      std::filesystem::is_regular_file(std::filesystem::path(simulator) / "libraries.txt", error)) {
+    options.libraries_path = (std::filesystem::path(simulator) / "libraries.txt").string();
+  }
+  const auto run_checker = [](const std::vector<std::string>& argv) {
+    const std::string output =
+        (std::filesystem::temp_directory_path() / ("dream-export-imports-" + std::to_string(::getpid()) + ".txt"))
+            .string();
+    process::ProcessGroup group;
+    workflows::ScriptExport::Checked checked;
+    checked.exit_code = group.Wait(group.Start(argv, output));
+    checked.output = files::ReadFileText(output, 1 << 20);
+    std::error_code ignored;
+    std::filesystem::remove(output, ignored);
+    return checked;
+  };
+  const workflows::ScriptExport::Result result = workflows::ScriptExport().Export(options, run_checker);
+  if (result.refused) {
+    std::cerr << "dream export: " << result.refusal << "\nnothing was written.\n";
+    return kExitRejected;
+  }
+  std::string imports;
+  for (const std::string& name : result.imports) imports += (imports.empty() ? "" : ", ") + name;
+  std::cout << "exported " << script << " as it is: upload " << result.out_dir << "/upload/" << result.main_file
+            << " (main file " << result.main_file << "); it imports "
+            << (imports.empty() ? std::string("nothing") : imports)
+            << ", all on the Robotarium\ncheck it in the Robotarium simulator: dream check-submission "
+            << result.out_dir << "\n";
+  return kExitOk;
+}
+
 int RunExport(const workflows::ExportWorkflow::Asked& asked) {
+  if (IsScriptPath(asked.run_dir)) return RunScriptExport(asked, asked.run_dir);
+  if (const std::string script = ScriptOfConfig(asked.run_dir + "/config.yaml"); !script.empty()) {
+    return RunScriptExport(asked, script);
+  }
   std::string refusal;
   const int code = workflows::ExportWorkflow().ExportAsAsked(WithRuntime(asked), &refusal);
   if (!refusal.empty()) std::cerr << "dream export: " << refusal << "\nnothing was written.\n";
@@ -126,7 +180,8 @@ void DeclareExportCommand(CommandLine& line) {
       "         dream export --calibration --robots 8",
       RunExport);
   export_command->add_option("run", export_args->run_dir,
-                             "Run folder written by dream run (run.lcmlog, config.yaml); with --calibration,\n"
+                             "Run folder written by dream run (run.lcmlog, config.yaml), or a Robotarium script\n"
+                             "(SCRIPT.py: uploaded as it is, docs/robotarium-scripts.md); with --calibration,\n"
                              "the folder its run goes into (default runs/calibration_N)");
   export_command->add_option("--out", export_args->out_dir, "Output folder (default exports/<name>)");
   export_command->add_option("--config", export_args->config_path, "The run's config (default <run>/config.yaml)");

@@ -22,6 +22,7 @@
 #include "dream/process/data_files.h"
 #include "dream/process/process_group.h"
 #include "dream/workflows/run_workflow.h"
+#include "script_command.h"
 #include "shared_options.h"
 
 namespace dream::cli {
@@ -31,6 +32,15 @@ namespace dream::cli {
 constexpr int kDescriptorsPerProcess = 24;
 
 int RunLaunch(const RunArgs& args) {
+  if (IsScriptPath(args.config_path) || !ScriptOfConfig(args.config_path).empty()) {
+    throw std::invalid_argument(
+        "dream launch " + args.config_path +
+        ": a Robotarium script is one program that drives every robot itself, as on the Robotarium, so it has no "
+        "agent per robot to launch; `dream run " +
+        args.config_path +
+        "` already runs it as its own process beside the simulator, over udpm (--lcm-url), so lcm-spy and dream view "
+        "see it as any run (docs/robotarium-scripts.md)");
+  }
   process::ProcessGroup::RequireDescriptors(kDescriptorsPerProcess);
   // Check the config here, so a mistake is reported once, not by N+1 children.
   const workflows::RunWorkflow workflow(process::DataFiles::PythonRuntimeDir(), StopFlag());

@@ -20,14 +20,24 @@ workflows::RunWorkflow Workflow() { return {process::DataFiles::PythonRuntimeDir
 }  // namespace
 
 int RunEmbedded(const RunArgs& args) {
-  if (IsScriptPath(args.config_path)) {
-    if (args.view) throw std::invalid_argument("dream run SCRIPT.py: --view is not supported for scripts yet");
+  if (IsScriptPath(args.config_path) || !ScriptOfConfig(args.config_path).empty()) {
     return RunScript(args, {});
+  }
+  if (args.private_bus && !args.lcm_url.empty()) {
+    throw std::invalid_argument("--private-bus and --lcm-url both choose the bus; give one");
   }
   return Workflow().RunEmbedded(args);
 }
 
-int RunSimOnly(const RunArgs& args) { return Workflow().RunSimOnly(args); }
+int RunSimOnly(const RunArgs& args) {
+  if (IsScriptPath(args.config_path) || !ScriptOfConfig(args.config_path).empty()) {
+    throw std::invalid_argument("dream sim " + args.config_path +
+                                ": the world of a Robotarium script's run starts where the script's Robotarium(...) "
+                                "leaves the robots, so only `dream run " +
+                                args.config_path + "` can start it (docs/robotarium-scripts.md)");
+  }
+  return Workflow().RunSimOnly(args);
+}
 
 void DeclareRunCommand(CommandLine& line) {
   const auto [command, args] =
@@ -37,6 +47,9 @@ void DeclareRunCommand(CommandLine& line) {
                     "An unmodified Robotarium script: dream run my_script.py (docs/robotarium-scripts.md)\n"
                     "Watch it: dream run config/go_to_goal.yaml --view (then open http://127.0.0.1:8077/)",
                     RunEmbedded, "LCM URL (default memq://, in-process)");
+  command->add_flag("--private-bus", args->private_bus,
+                    "A script's run: its processes talk on a udpm group and port of their own, drawn at random\n"
+                    "(dream sweep's runs use it); a config's run is in one process, on memq://, anyway");
   CLI::Option* const view =
       command->add_flag("--view", args->view,
                         "Serve the live arena while the run runs (dream view; paced to real time unless --pace), then\n"

@@ -19,7 +19,9 @@
 #include "dream/process/process_group.h"
 #include "dream/session/exit_code.h"
 #include "dream/session/run_exit_code.h"
+#include "dream/workflows/run_workflow.h"
 #include "dream/workflows/script_run_workflow.h"
+#include "dream/config/config_node.h"
 #include "script_command.h"
 
 namespace dream::cli {
@@ -116,25 +118,65 @@ int ScriptEndedEarly(int code, const std::string& run_dir) {
 
 bool IsScriptPath(const std::string& path) { return fs::path(path).extension() == ".py"; }
 
-int RunScript(const RunArgs& args, const std::vector<std::string>& script_args) {
+std::string ScriptOfConfig(const std::string& path) {
   std::error_code error;
-  if (!fs::is_regular_file(args.config_path, error)) {
-    throw std::invalid_argument(args.config_path + ": no such script (a Python file)");  // main adds "dream: "
-  }
+  if (!fs::is_regular_file(path, error)) return "";
+  const config::ConfigNode root = config::ConfigNode::LoadFile(path);
+  if (!root.IsMap()) return "";
+  const config::ConfigNode node = root.Optional("script");
+  if (!node.IsDefined()) return "";
+  fs::path script(node.AsString());
+  if (script.is_relative()) script = fs::absolute(path).parent_path() / script;
+  return script.lexically_normal().string();
+}
+
+namespace {
+
+/// The run's options from the command line: of the script given, or of a
+/// config naming one (its seed and name, --seed and --set applied).
+workflows::ScriptRunWorkflow::Options ScriptOptions(const RunArgs& args, std::string* run_name) {
   workflows::ScriptRunWorkflow::Options options;
-  options.script_path = args.config_path;
-  options.seed = args.seed >= 0 ? args.seed : 1;
-  options.sets = args.sets;
-  options.steps = args.steps;
   options.python_runtime_dir = process::DataFiles::PythonRuntimeDir();
   options.session.python_runtime_dir = options.python_runtime_dir;
-  const std::string url = workflows::ScriptRunWorkflow::BusUrl(args.lcm_url);
-  const std::string dir =
-      fs::absolute(files::RunFolderChoice(
-                       args.out_dir, "runs/" + workflows::ScriptRunWorkflow::RunName(args.config_path), args.overwrite)
-                       .dir())
-          .lexically_normal()
-          .string();
+  options.sets = args.sets;
+  options.steps = args.steps;
+  options.watch = args;
+  options.interrupted = &StopFlag();
+  std::error_code error;
+  if (IsScriptPath(args.config_path)) {
+    if (!fs::is_regular_file(args.config_path, error)) {
+      throw std::invalid_argument(args.config_path + ": no such script (a Python file)");  // main adds "dream: "
+    }
+    options.script_path = args.config_path;
+    options.seed = args.seed >= 0 ? args.seed : 1;
+    *run_name = workflows::ScriptRunWorkflow::RunName(args.config_path);
+    return options;
+  }
+  // Checked now, --set and all, before the script starts.
+  const auto base = workflows::RunWorkflow(options.python_runtime_dir, StopFlag()).LoadConfig(args);
+  options.script_path = ScriptOfConfig(args.config_path);
+  if (!fs::is_regular_file(options.script_path, error)) {
+    throw std::invalid_argument(args.config_path + ": script: " + options.script_path +
+                                ": no such script (a Python file)");
+  }
+  options.base_config_path = args.config_path;
+  options.seed = static_cast<long long>(base.seed);
+  *run_name = base.name;
+  return options;
+}
+
+}  // namespace
+
+int RunScript(const RunArgs& args, const std::vector<std::string>& script_args) {
+  if (args.private_bus && !args.lcm_url.empty()) {
+    throw std::invalid_argument("--private-bus and --lcm-url both choose the bus; give one");
+  }
+  std::string run_name;
+  workflows::ScriptRunWorkflow::Options options = ScriptOptions(args, &run_name);
+  const std::string url = workflows::ScriptRunWorkflow::BusUrl(args.lcm_url, args.private_bus);
+  const std::string dir = fs::absolute(files::RunFolderChoice(args.out_dir, "runs/" + run_name, args.overwrite).dir())
+                              .lexically_normal()
+                              .string();
   int hello[2];
   if (::pipe2(hello, O_CLOEXEC) != 0) throw std::runtime_error("cannot make a pipe for the script");
   const int terminal = ::fcntl(STDOUT_FILENO, F_DUPFD_CLOEXEC, 3);
@@ -142,7 +184,7 @@ int RunScript(const RunArgs& args, const std::vector<std::string>& script_args) 
   const char* python = std::getenv("DREAM_PYTHON");
   std::vector<std::string> argv{python != nullptr && *python != '\0' ? python : "python3",
                                 (fs::path(options.python_runtime_dir) / "rps_dream" / "run_script.py").string(),
-                                fs::absolute(args.config_path).string()};
+                                fs::absolute(options.script_path).string()};
   argv.insert(argv.end(), script_args.begin(), script_args.end());
   const pid_t pid = children.Start(argv, (fs::path(dir) / "script_output.txt").string(),
                                    ScriptEnvironment(dir, url, options.seed, hello[1], terminal), {hello[1], terminal});

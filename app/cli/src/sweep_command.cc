@@ -16,6 +16,7 @@
 #include "dream/process/process_group.h"
 #include "dream/process/data_files.h"
 #include "dream/workflows/run_workflow.h"
+#include "dream/workflows/script_run_workflow.h"
 #include "shared_options.h"
 
 namespace dream::cli {
@@ -44,6 +45,7 @@ workflows::SweepWorkflow Workflow(ProcessCommandRunner& commands) {
   env.out = &std::cout;
   env.progress = spdlog::default_logger()->should_log(spdlog::level::info);
   env.dream_path = process::SelfExecutable();
+  env.python_runtime_dir = process::DataFiles::PythonRuntimeDir();
   return workflows::SweepWorkflow(std::move(env));
 }
 
@@ -126,8 +128,12 @@ int RunSweep(const SweepArgs& args) {
   RunArgs base_args;
   base_args.config_path = args.config_path;
   base_args.steps = args.steps;
-  // The base config's own mistakes, with its lines.
-  const auto base = workflows::RunWorkflow(process::DataFiles::PythonRuntimeDir(), StopFlag()).LoadConfig(base_args);
+  // The base config's own mistakes, with its lines (a script's: the config its runs start from).
+  const std::string python_runtime_dir = process::DataFiles::PythonRuntimeDir();
+  const auto base = workflows::ScriptRunWorkflow::IsScript(args.config_path)
+                        ? workflows::ScriptRunWorkflow::BaseConfig(args.config_path, python_runtime_dir)
+                        : workflows::RunWorkflow(python_runtime_dir, StopFlag()).LoadConfig(base_args);
+  settings.python_runtime_dir = python_runtime_dir;
   settings.config_path = args.config_path;
   settings.seeds = args.seeds;
   settings.sets = args.sets;
@@ -150,7 +156,8 @@ void DeclareSweepCommand(CommandLine& line) {
       "Example: dream sweep config/hrvo_circle.yaml --seeds 1-20   (writes sweeps/hrvo_circle)\n"
       "Then: dream sweep status|resume|table DIR",
       RunSweep);
-  command->add_option("config", args->config_path, "Run config (YAML) to sweep");
+  command->add_option("config", args->config_path,
+                      "Run config (YAML) to sweep, or a Robotarium script (a .py file: docs/robotarium-scripts.md)");
   command->add_option("--seeds", args->seeds, "Seeds: 7, 1-20 or 1,4,9-12 (default: the config's seed)");
   command
       ->add_option("--set", args->sets,

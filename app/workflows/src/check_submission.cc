@@ -97,7 +97,8 @@ std::string CheckSubmission::SimulatorChecked() const {
   return dir;
 }
 
-std::vector<std::string> CheckSubmission::RunnerArgv(const std::string& workdir, const std::string& report_path) const {
+std::vector<std::string> CheckSubmission::RunnerArgv(const std::string& workdir, const std::string& report_path,
+                                                     const std::string& main_file) const {
   std::vector<std::string> argv = {options_.python, options_.runner_script,
                                    "--upload",      (fs::path(options_.export_dir) / "upload").string(),
                                    "--workdir",     workdir,
@@ -106,17 +107,19 @@ std::vector<std::string> CheckSubmission::RunnerArgv(const std::string& workdir,
   if (!options_.simulator.empty()) argv.insert(argv.end(), {"--simulator", options_.simulator});
   if (options_.require_official) argv.push_back("--require-official");
   if (options_.skip_initialization) argv.push_back("--skip-initialization");
+  // Real-time pacing changes no pose: a script's check runs as fast as it goes.
+  if (!main_file.empty()) argv.insert(argv.end(), {"--main", main_file, "--no-pacing"});
   return argv;
 }
 
 /// Runs the runner; a Result when the check ends there, else its report.
 std::optional<CheckSubmission::Result> CheckSubmission::RunRunner(const files::OutputFolder& out,
-                                                                  const std::string& workdir,
-                                                                  nlohmann::json* report) const {
+                                                                  const std::string& workdir, nlohmann::json* report,
+                                                                  const std::string& main_file) const {
   const std::string report_path = out.PathOf(kReportName);
   spdlog::info("running {}/upload/{} in a Robotarium simulator (output in {})", options_.export_dir,
-               bridge::SubmissionFiles::kMainScript, workdir);
-  const ScriptRun ran = tools_.run_script(RunnerArgv(workdir, report_path));
+               main_file.empty() ? bridge::SubmissionFiles::kMainScript : main_file, workdir);
+  const ScriptRun ran = tools_.run_script(RunnerArgv(workdir, report_path, main_file));
   Result ended;
   ended.dir = out.dir();
   if (ran.interrupted) {
@@ -173,6 +176,9 @@ void CheckSubmission::CompareWithRun(const std::string& run_dir, const std::stri
 }
 
 CheckSubmission::Result CheckSubmission::Run() const {
+  if (const std::optional<ScriptExport::Manifest> script = ScriptExport::Read(options_.export_dir)) {
+    return RunScriptCheck(*script);
+  }
   // Refuses an upload/ edited after the export, naming the file.
   const bridge::ExportedSubmission exported = bridge::ExportedSubmission::Read(options_.export_dir);
   if (!exported.digests_checked) {

@@ -78,7 +78,7 @@ struct PreparedSweep::RunConfigMaker {
 PreparedSweep::PreparedSweep(const SweepSettings& settings, const run_config::RunConfig& base,
                              const std::string& out_dir)
     : plan_(SweepPlan::FromRuns({}, {})), base_name_(base.name) {
-  const std::string base_text = config::ConfigNode::ReadFile(settings.config_path);
+  const std::string base_text = settings.BaseConfigText();
   std::vector<uint64_t> seeds;
   try {
     seeds = settings.seeds.empty() ? std::vector<uint64_t>{base.seed} : ParseSeedList(settings.seeds);

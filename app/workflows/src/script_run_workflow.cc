@@ -1,6 +1,8 @@
 #include "dream/workflows/script_run_workflow.h"
 
+#include <atomic>
 #include <cctype>
+#include <memory>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -9,11 +11,15 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "dream/config/config_node.h"
+#include "dream/config_overrides/config_override.h"
+#include "dream/config_overrides/config_text.h"
 #include "dream/config_overrides/overridden_config.h"
 #include "dream/files/atomic_file.h"
 #include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/lcm_url.h"
 #include "dream/run_config/run_config.h"
+#include "dream/workflows/run_view.h"
 
 namespace dream::workflows {
 
@@ -47,6 +53,18 @@ std::string Exact(double value) {
 }
 
 }  // namespace
+
+bool ScriptRunWorkflow::IsScript(const std::string& path) { return fs::path(path).extension() == ".py"; }
+
+run_config::RunConfig ScriptRunWorkflow::BaseConfig(const std::string& script_path,
+                                                    const std::string& python_runtime_dir) {
+  std::error_code error;
+  if (!fs::is_regular_file(script_path, error)) {
+    throw std::invalid_argument(script_path + ": no such script (a Python file)");
+  }
+  return run_config::LoadRunConfig(
+      config::ConfigNode::LoadString(BaseConfigText(script_path, python_runtime_dir), script_path));
+}
 
 std::string ScriptRunWorkflow::RunName(const std::string& script_path) {
   std::string name = fs::path(script_path).stem().string();
@@ -95,6 +113,7 @@ std::string ScriptRunWorkflow::ConfigText(const Hello& hello, const Options& opt
        << "# the script drives them all. Rerun it with: dream run " << script.string() << "\n"
        << "name: " << RunName(options.script_path) << "\n"
        << "description: " << nlohmann::json(std::string("Robotarium script ") + script.string()).dump() << "\n"
+       << "script: " << nlohmann::json(script.string()).dump() << "\n"
        << "seed: " << options.seed << "\n"
        << "robots: " << hello.robots << "\n"
        << "steps: " << (options.steps > 0 ? options.steps : kDefaultSteps) << "\n"
@@ -111,16 +130,67 @@ std::string ScriptRunWorkflow::ConfigText(const Hello& hello, const Options& opt
   return yaml.str();
 }
 
+std::string ScriptRunWorkflow::BaseConfigText(const std::string& script_path, const std::string& python_runtime_dir) {
+  Hello placeholder;
+  placeholder.robots = 1;
+  placeholder.initial_poses = {{0.0, 0.0, 0.0}};
+  Options options;
+  options.script_path = script_path;
+  options.python_runtime_dir = python_runtime_dir;
+  return "# robots and initial_poses: placeholders; each run takes them from the script's Robotarium(...)\n" +
+         ConfigText(placeholder, options);
+}
+
+std::string ScriptRunWorkflow::WithHello(const std::string& base_path, const Hello& hello, const Options& options) {
+  YAML::Node root = config::ConfigNode::ParseYaml(config::ConfigNode::ReadFile(base_path), base_path);
+  std::string poses = "[";
+  for (const auto& pose : hello.initial_poses) {
+    poses += (poses.size() > 1 ? ", [" : "[") + Exact(pose[0]) + ", " + Exact(pose[1]) + ", " + Exact(pose[2]) + "]";
+  }
+  config_overrides::ApplyConfigOverride(root, "robots", std::to_string(hello.robots), base_path);
+  config_overrides::ApplyConfigOverride(root, "initial_poses", poses + "]", base_path);
+  config_overrides::ApplyConfigOverride(root, "seed", std::to_string(options.seed), base_path);
+  if (options.steps > 0) config_overrides::ApplyConfigOverride(root, "steps", std::to_string(options.steps), base_path);
+  return config_overrides::ConfigText(root, "The run of a Robotarium script from " + base_path +
+                                                ": robots and initial_poses as its\nRobotarium(...) said (" +
+                                                std::to_string(hello.startup_steps) +
+                                                " steps of the official start-up drive).");
+}
+
 session::RunResult ScriptRunWorkflow::Run(const Hello& hello, const std::string& run_dir,
                                           lcm::LcmInterface& lcm) const {
+  const RunOptions& watch = options_.watch;
+  const RunView::Keep keep = RunView::Keep::Parse(watch.view_keep);  // a bad value before anything runs
   const std::string config_path = (fs::path(run_dir) / "robotarium_script.yaml").string();
-  files::WriteFileAtomically(config_path, ConfigText(hello, options_));
+  files::WriteFileAtomically(config_path, options_.base_config_path.empty()
+                                              ? ConfigText(hello, options_)
+                                              : WithHello(options_.base_config_path, hello, options_));
   const config_overrides::OverriddenConfig overridden(config_path, -1, options_.sets);
   run_config::RunConfig config = overridden.LoadWith(&run_config::LoadRunConfig);
   config.sim.script_ends_run = true;  // the run's steps are the script's step() calls; its error ends the run
+  // As any run: paced only when asked (--pace), or watched (--view: real time unless --pace says otherwise).
+  if (watch.pace >= 0.0) {
+    config.sim.pace = watch.pace;
+  } else if (watch.view) {
+    config.sim.pace = 1.0;
+  }
   session::RunSession session(std::move(config), options_.session);
   const std::string text = run_config::RunFolderConfigText(session.config(), overridden.Text());
-  return session.Run(lcm, {run_dir, text});
+  static const std::atomic<bool> never{false};
+  const std::atomic<bool>& stop = options_.interrupted != nullptr ? *options_.interrupted : never;
+  std::unique_ptr<RunView> view;
+  if (watch.view) {
+    view = std::make_unique<RunView>(lcm, session.config(), watch.view_bind, watch.view_port, watch.view_fps,
+                                     options_.python_runtime_dir, stop);
+    // A refusal is Ctrl-C, which also sets the session's stop: the run ends interrupted at once.
+    if (watch.view_wait) view->WaitForBrowser(watch.view_wait_timeout_s);
+  }
+  const session::RunResult result = session.Run(lcm, {run_dir, text});
+  if (view) {
+    view->ServeReplayOf(run_dir);
+    view->KeepServing(keep);  // Ctrl-C here ends the serving, not the run: its exit code stands
+  }
+  return result;
 }
 
 session::RunResult ScriptRunWorkflow::Run(const Hello& hello, const std::string& run_dir,
@@ -129,6 +199,8 @@ session::RunResult ScriptRunWorkflow::Run(const Hello& hello, const std::string&
   return Run(hello, run_dir, bus);
 }
 
-std::string ScriptRunWorkflow::BusUrl(const std::string& lcm_url) { return lcm::ResolveLcmUrl(lcm_url); }
+std::string ScriptRunWorkflow::BusUrl(const std::string& lcm_url, bool private_bus) {
+  return private_bus ? lcm::PrivateUdpmUrl() : lcm::ResolveLcmUrl(lcm_url);
+}
 
 }  // namespace dream::workflows

@@ -2,7 +2,16 @@
 
 #include <stdexcept>
 
+#include "dream/config/config_node.h"
+#include "dream/workflows/script_run_workflow.h"
+
 namespace dream::workflows {
+
+std::string SweepSettings::BaseConfigText() const {
+  if (ScriptRunWorkflow::IsScript(config_path))
+    return ScriptRunWorkflow::BaseConfigText(config_path, python_runtime_dir);
+  return config::ConfigNode::ReadFile(config_path);
+}
 
 SweepSettings::Engine SweepSettings::ParseEngine(const std::string& name) {
   if (name == "local") return Engine::kLocal;

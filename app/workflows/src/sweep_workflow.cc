@@ -228,7 +228,9 @@ bool SweepWorkflow::RunLocally(const SweepFolder& folder, const SweepPlan& plan,
     const SweepPlan::Run& run = runs[indices[k]];
     write_run(run.index);
     const std::string dir = folder.RunDir(run.name);
-    return JobRunner::Job{{env_.dream_path, "run", dir + "/config.yaml", "--out", dir}, dir + "/output.txt"};
+    // A private bus: runs of a script at once must not hear each other (a config's run is on memq:// anyway).
+    return JobRunner::Job{{env_.dream_path, "run", dir + "/config.yaml", "--out", dir, "--private-bus"},
+                          dir + "/output.txt"};
   };
   auto on_finished = [&](const JobRunner::Finished& done) {
     const SweepPlan::Run& run = runs[indices[done.index]];

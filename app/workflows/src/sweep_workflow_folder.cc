@@ -69,8 +69,10 @@ std::vector<std::pair<std::string, std::string>> FactsOf(const nlohmann::json& s
 
 /// The sweep as it was started (sweep.json), to make the configs of runs
 /// whose folders were never written (a local sweep stopped before them).
-SweepSettings SettingsOf(const nlohmann::json& settings, const std::string& dir) {
+SweepSettings SettingsOf(const nlohmann::json& settings, const std::string& dir,
+                         const std::string& python_runtime_dir) {
   SweepSettings s;
+  s.python_runtime_dir = python_runtime_dir;
   s.config_path = Text(settings, "config");
   s.seeds = Text(settings, "seeds");
   s.sets = Strings(settings, "sets");
@@ -84,14 +86,16 @@ SweepSettings SettingsOf(const nlohmann::json& settings, const std::string& dir)
 /// stopped with Ctrl-C before them) get their configs made again from the
 /// base config, which must still give the same plan; null when none needs it.
 std::unique_ptr<PreparedSweep> ConfigsToWriteAgain(const SweepFolder& folder, const CollectedSweep& c,
-                                                   const std::vector<size_t>& todo) {
+                                                   const std::vector<size_t>& todo,
+                                                   const std::string& python_runtime_dir) {
   std::error_code error;
   const auto missing = std::find_if(todo.begin(), todo.end(), [&](size_t index) {
     return !fs::exists(folder.RunDir(c.plan.runs()[index].name) + "/config.yaml", error);
   });
   if (missing == todo.end()) return nullptr;
-  const SweepSettings settings = SettingsOf(c.settings, folder.dir());
-  run_config::RunConfig base = run_config::LoadRunConfig(config::ConfigNode::LoadFile(settings.config_path));
+  const SweepSettings settings = SettingsOf(c.settings, folder.dir(), python_runtime_dir);
+  run_config::RunConfig base =
+      run_config::LoadRunConfig(config::ConfigNode::LoadString(settings.BaseConfigText(), settings.config_path));
   if (settings.steps > 0) base.sim.max_steps = settings.steps;
   auto prepared = std::make_unique<PreparedSweep>(settings, base, folder.dir());
   const std::vector<SweepPlan::Run>& again = prepared->plan().runs();
@@ -226,7 +230,7 @@ SweepOutcome SweepWorkflow::Resume(const std::string& dir, const ResumeSettings&
     }
     return Table(dir);
   }
-  const std::unique_ptr<PreparedSweep> prepared = ConfigsToWriteAgain(folder, c, todo);
+  const std::unique_ptr<PreparedSweep> prepared = ConfigsToWriteAgain(folder, c, todo, env_.python_runtime_dir);
   std::error_code error;
   auto write_run = [&](size_t index) {
     const std::string& name = c.plan.runs()[index].name;

@@ -1,6 +1,7 @@
 #include "dream/lcm/lcm_url.h"
 
 #include <cstdlib>
+#include <random>
 #include <stdexcept>
 
 namespace dream::lcm {
@@ -20,6 +21,16 @@ std::string ResolveLcmUrl(const std::string& cli_url) {
     url += "recv_buf_size=" + std::to_string(kUdpmReceiveBufferBytes);
   }
   return url;
+}
+
+std::string PrivateUdpmUrl() {
+  std::random_device entropy;
+  std::uniform_int_distribution<int> octet(1, 254);
+  std::uniform_int_distribution<int> port(20000, 59999);
+  const int a = octet(entropy);
+  const int b = octet(entropy);
+  return ResolveLcmUrl("udpm://239.255." + std::to_string(a) + "." + std::to_string(b) + ":" +
+                       std::to_string(port(entropy)) + "?ttl=0");
 }
 
 }  // namespace dream::lcm

@@ -363,14 +363,26 @@ std::vector<world::RectangleObstacleSpec> ReadObstacles(const config::ConfigNode
   return specs;
 }
 
+/// `script:`: the Robotarium script whose run this is (a .py file), or "".
+std::string ReadScript(const config::ConfigNode& root) {
+  const config::ConfigNode node = root.Optional("script");
+  if (!node.IsDefined()) return "";
+  const std::string path = node.AsString();
+  if (path.size() < 4 || path.substr(path.size() - 3) != ".py") {
+    node.Fail("expected the path of a Robotarium script (a .py file), got '" + path + "'");
+  }
+  return path;
+}
+
 }  // namespace
 
 RunConfig LoadRunConfig(const config::ConfigNode& root) {
   root.RejectUnknownKeys({"name", "seed", "robots", "sim_only", "steps", "stop_when_done", "world", "initial_poses",
-                          "obstacles", "controller", "description", "plugins", "plugin_dir", "barriers"});
+                          "obstacles", "controller", "description", "plugins", "plugin_dir", "barriers", "script"});
   RunConfig config;
   // Free text nobody reads back; a list or mapping here is still a mistake.
   root.GetString("description", "");
+  config.script = ReadScript(root);
   // What agents read too, from the one place that checks it.
   static_cast<config::ControllerConfig&>(config) = config::LoadControllerConfig(root);
   config.sim = ReadSimOptions(root);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "dream/workflows/import_workflow.h"
+#include "dream/workflows/script_export.h"
 #include "dream/bridge/command_agreement.h"
 #include "dream/bridge/lab_import.h"
 #include "dream/files/output_folder.h"
@@ -93,6 +94,8 @@ class CheckSubmission {
   CheckSubmission(const CheckSubmission&) = delete;
   CheckSubmission& operator=(const CheckSubmission&) = delete;
 
+  /// A script's export (ScriptExport::Read) runs the script alone: check.json
+  /// holds the simulator's debug() verdict and text.
   /// @throws std::runtime_error naming the file or option: an upload edited
   ///         after the export, a simulator folder that is no checkout, --out
   ///         being the compared run, an output folder holding a run.
@@ -103,9 +106,14 @@ class CheckSubmission {
 
  private:
   std::string SimulatorChecked() const;
-  std::vector<std::string> RunnerArgv(const std::string& workdir, const std::string& report_path) const;
-  std::optional<Result> RunRunner(const files::OutputFolder& out, const std::string& workdir,
-                                  nlohmann::json* report) const;
+  /// `main_file` non-empty: a script's export (ScriptExport), run as its main file, unpaced.
+  std::vector<std::string> RunnerArgv(const std::string& workdir, const std::string& report_path,
+                                      const std::string& main_file = "") const;
+  /// The check of a Robotarium script's export (ScriptExport): the script in
+  /// the simulator, its debug() verdict; nothing to import or compare.
+  Result RunScriptCheck(const ScriptExport::Manifest& manifest) const;
+  std::optional<Result> RunRunner(const files::OutputFolder& out, const std::string& workdir, nlohmann::json* report,
+                                  const std::string& main_file = "") const;
   void CompareWithRun(const std::string& run_dir, const std::string& dir, nlohmann::ordered_json* check) const;
   void PrintDebugReport(const nlohmann::json& report, const std::vector<std::string>& warnings) const;
   /// The lab's result imported into `out_dir` (dream import's run), its verdict and goal printed.

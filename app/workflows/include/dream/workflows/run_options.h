@@ -20,6 +20,10 @@ struct RunOptions {
   bool all_steps = false;         ///< run every step even when all robots report done
   /// --pace: simulated seconds per wall second; 0: unpaced; < 0 (not given): unpaced, 1 with --view
   double pace = -1.0;
+  /// dream run --private-bus: a script run's processes talk on a udpm group
+  /// and port of their own, drawn at random (what dream sweep's runs use, so
+  /// runs at once never hear each other); a config run is on memq:// anyway.
+  bool private_bus = false;
   bool view = false;                    ///< dream run --view: serve the live arena (dream view) while it runs
   int view_port = 8077;                 ///< --view-port
   std::string view_bind = "127.0.0.1";  ///< --view-bind

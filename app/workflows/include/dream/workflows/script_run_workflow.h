@@ -1,12 +1,15 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <string>
 #include <vector>
 
 #include "dream/lcm/lcm_interface.h"
+#include "dream/run_config/run_config.h"
 #include "dream/session/run_result.h"
 #include "dream/session/run_session.h"
+#include "dream/workflows/run_options.h"
 
 namespace dream::workflows {
 
@@ -31,15 +34,31 @@ class ScriptRunWorkflow {
 
   struct Options {
     std::string script_path;  ///< the script, as given
-    long long seed = 1;       ///< the script's and the world's seed
+    /// A run config naming the script (`script:`: a sweep's run, or a script
+    /// run's config.yaml rerun): the run keeps its keys, the script's hello
+    /// giving its robots and initial_poses. Empty: ConfigText's defaults.
+    std::string base_config_path;
+    long long seed = 1;  ///< the script's and the world's seed
     std::vector<std::string> sets;
     long long steps = 0;             ///< --steps; 0: until the script ends (kDefaultSteps at most)
     std::string python_runtime_dir;  ///< DataFiles::PythonRuntimeDir(): its rps_dream/ folder
     session::RunSession::Options session;
+    /// The command's --pace and --view options (view, view_*), as `dream run CONFIG` takes them.
+    RunOptions watch;
+    /// Ctrl-C alone (session.stop is also set when the script has ended): what
+    /// ends --view's waits and its serving after the run. Null: never.
+    const std::atomic<bool>* interrupted = nullptr;
   };
 
   /// A script run's step limit unless --steps says otherwise (about 9 hours simulated).
   static constexpr long long kDefaultSteps = 1000000;
+
+  /// Whether `path` names a Robotarium script (a .py file) rather than a run config.
+  static bool IsScript(const std::string& path);
+
+  /// The base config of a sweep of the script, checked as a run config
+  /// (BaseConfigText): what `dream sweep SCRIPT.py` plans from.
+  static run_config::RunConfig BaseConfig(const std::string& script_path, const std::string& python_runtime_dir);
 
   /// The run's name: the script's file name without .py, every character a
   /// run name cannot hold (letters, digits, _ - .) replaced by _.
@@ -52,6 +71,16 @@ class ScriptRunWorkflow {
   /// The run config (YAML) of `hello`'s run, before --seed and --set.
   static std::string ConfigText(const Hello& hello, const Options& options);
 
+  /// What a sweep of the script starts from (`dream sweep SCRIPT.py`): ConfigText
+  /// for one robot at the origin, a placeholder the script's own Robotarium(...)
+  /// replaces in every run (WithHello).
+  static std::string BaseConfigText(const std::string& script_path, const std::string& python_runtime_dir);
+
+  /// The text of the config at `base_path` (which names the script) with
+  /// `hello`'s robots and start poses, options.seed, and options.steps when > 0.
+  /// @throws config::ConfigError naming the file when it is not YAML.
+  static std::string WithHello(const std::string& base_path, const Hello& hello, const Options& options);
+
   explicit ScriptRunWorkflow(Options options) : options_(std::move(options)) {}
 
   /// Writes the config into `run_dir` (robotarium_script.yaml), loads it with
@@ -62,10 +91,12 @@ class ScriptRunWorkflow {
   /// The same on a bus of its own, opened on `url` (BusUrl's).
   session::RunResult Run(const Hello& hello, const std::string& run_dir, const std::string& url) const;
 
-  /// The URL the script's world and the script share: `lcm_url` when given,
-  /// else $LCM_DEFAULT_URL, else LCM's default (lcm::ResolveLcmUrl).
+  /// The URL the script's world and the script share: a private udpm group
+  /// and port when `private_bus` (a sweep's runs at once never hear each
+  /// other), else `lcm_url` when given, else $LCM_DEFAULT_URL, else LCM's
+  /// default (lcm::ResolveLcmUrl).
   /// @throws std::invalid_argument naming a URL without "provider://".
-  static std::string BusUrl(const std::string& lcm_url);
+  static std::string BusUrl(const std::string& lcm_url, bool private_bus = false);
 
  private:
   Options options_;

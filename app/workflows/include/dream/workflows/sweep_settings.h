@@ -21,6 +21,13 @@ struct SweepSettings {
   double run_timeout_s = 1800.0;  ///< local: a run still going after this is stopped and counts as failed
   Engine engine = Engine::kLocal;
   std::vector<std::string> slurm_options;  ///< passed on to sbatch as they are
+  /// The Python runtime (DataFiles::PythonRuntimeDir()): a sweep of a
+  /// Robotarium script (config_path a .py file) names its rps_dream there.
+  std::string python_runtime_dir;
+
+  /// The text of the base config: the file's, or for a script the config
+  /// ScriptRunWorkflow::BaseConfigText makes of it. @throws config::ConfigError.
+  std::string BaseConfigText() const;
 
   /// "local", "slurm", "plan" -> Engine. @throws std::invalid_argument naming the choices.
   static Engine ParseEngine(const std::string& name);

@@ -39,6 +39,7 @@ class SweepWorkflow {
     bool progress = true;                     ///< a line per finished run
     std::string dream_path;                   ///< the dream binary runs start (and Slurm nodes run)
     int cores = 0;                            ///< 0: this machine's
+    std::string python_runtime_dir;           ///< SweepSettings::python_runtime_dir, for resume
   };
 
   /// What `dream sweep resume` may change; empty/0 keeps the sweep's own.

@@ -17,4 +17,9 @@ inline constexpr int kUdpmReceiveBufferBytes = 4 * 1024 * 1024;
 /// @throws std::invalid_argument if the URL has no "provider://" prefix.
 std::string ResolveLcmUrl(const std::string& cli_url);
 
+/// A udpm URL (ttl=0) on a group and port drawn at random from
+/// 239.255.1-254.1-254 and 20000-59999: a bus of its own for processes of
+/// one run beside others (dream sweep's runs of a script), 2^31 choices.
+std::string PrivateUdpmUrl();
+
 }  // namespace dream::lcm

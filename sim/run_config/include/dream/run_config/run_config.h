@@ -49,6 +49,9 @@ struct RunConfig : config::ControllerConfig {
   std::vector<world::RectangleObstacleSpec> obstacles;
   /// `barriers:`: the Robotarium's barrier certificate, if any, and where it is applied.
   BarrierConfig barriers;
+  /// `script:`: the Robotarium script this run runs (dream run SCRIPT.py and
+  /// dream sweep SCRIPT.py write it), as written; "" for a run of controllers.
+  std::string script;
 };
 
 /// Reads and checks a run config. @throws ConfigError naming file, line, key
