@@ -43,7 +43,9 @@ def _standin_class():
 
 
 class _NoFigure:
-    """What show_figure=True gives: every attribute and call accepted, nothing drawn."""
+    """What show_figure=True gives (r._fig, r._axes_handle): every attribute, call, index and
+    arithmetic accepted (a script's own marker sizes from fig.dpi and friends), nothing drawn.
+    It unpacks as one artist (`line, = ax.plot(...)`)."""
 
     def __getattr__(self, _name):
         return self
@@ -51,15 +53,20 @@ class _NoFigure:
     def __call__(self, *_args, **_kwargs):
         return self
 
+    def __getitem__(self, _key):
+        return self
+
     def __iter__(self):
-        return iter(())
+        return iter((self,))
 
+    def __format__(self, _spec):
+        return ""
 
-def _unsupported(call):
-    def refuse(self, *_args, **_kwargs):
-        raise NotInDream(f"{call}: DREAM's rps does not simulate the robots' sensors (distance sensors, encoders, "
-                         "IMU); see docs/robotarium-scripts.md")
-    return refuse
+    def _same(self, *_args):
+        return self
+
+    __add__ = __radd__ = __sub__ = __rsub__ = __mul__ = __rmul__ = _same
+    __truediv__ = __rtruediv__ = __floordiv__ = __rfloordiv__ = __pow__ = __rpow__ = __neg__ = _same
 
 
 class Robotarium(RobotariumConstants):
@@ -68,18 +75,18 @@ class Robotarium(RobotariumConstants):
     def __init__(self, **kwargs):
         if _made:
             raise NotInDream("Robotarium(...) a second time: `dream run` runs one Robotarium per script")
-        if kwargs.get("use_distance_sensors", False):
-            raise NotInDream("Robotarium(use_distance_sensors=True): DREAM's rps has no distance sensors")
         local_class = _standin_class()
         self._local = local_class(number_of_robots=kwargs.get("number_of_robots", -1),
                                   show_figure=kwargs.get("show_figure", False),
                                   initial_conditions=kwargs.get("initial_conditions", np.array([])),
                                   sim_in_real_time=kwargs.get("sim_in_real_time", True),
-                                  skip_initialization=kwargs.get("skip_initialization", False))
+                                  skip_initialization=kwargs.get("skip_initialization", False),
+                                  use_distance_sensors=kwargs.get("use_distance_sensors", False),
+                                  obstacles=kwargs.get("obstacles", None))
         _made.append(self)
         self.number_of_robots = self._local.number_of_robots
         self.show_figure = kwargs.get("show_figure", False)
-        self.obstacles = kwargs.get("obstacles", None)
+        self.obstacles = self._local.obstacles
         self.initializing = False
         if self.show_figure:
             self._fig = _NoFigure()
@@ -122,7 +129,9 @@ class Robotarium(RobotariumConstants):
         # The command as set: the world saturates the wheels and counts actuator errors itself.
         self._link.send(local._velocities)
         local._velocities = local._saturate(local._velocities)
-        local._draw_sensor_noise()
+        # The sensors read where this step takes the robots by the official step from the poses the
+        # script saw (under `ideal` the world's next poses), drawing their noise now, as the official.
+        local._sensors.after_step(local._integrated(local._poses, local._velocities), local._velocities)
 
     def debug(self):
         self._local.debug()
@@ -151,13 +160,26 @@ class Robotarium(RobotariumConstants):
         self._finished = True
         self._link.fail(detail)
 
-    get_distances = _unsupported("get_distances()")
-    get_distance_endpoints = _unsupported("get_distance_endpoints()")
-    get_accelerations = _unsupported("get_accelerations()")
-    get_orientations = _unsupported("get_orientations()")
-    get_magnetic_fields = _unsupported("get_magnetic_fields()")
-    get_gyros = _unsupported("get_gyros()")
-    get_encoders = _unsupported("get_encoders()")
+    def get_distances(self):
+        return self._local.get_distances()
+
+    def get_distance_endpoints(self):
+        return self._local.get_distance_endpoints()
+
+    def get_accelerations(self):
+        return self._local.get_accelerations()
+
+    def get_orientations(self):
+        return self._local.get_orientations()
+
+    def get_magnetic_fields(self):
+        return self._local.get_magnetic_fields()
+
+    def get_gyros(self):
+        return self._local.get_gyros()
+
+    def get_encoders(self):
+        return self._local.get_encoders()
 
 
 def made():
