@@ -43,7 +43,7 @@ def _standin_class():
 
 
 class _NoFigure:
-    """What show_figure=True gives (r._fig, r._axes_handle): every attribute, call, index and
+    """What show_figure=True gives without matplotlib (r._fig, r._axes_handle): every attribute, call, index and
     arithmetic accepted (a script's own marker sizes from fig.dpi and friends), nothing drawn.
     It unpacks as one artist (`line, = ax.plot(...)`)."""
 
@@ -69,6 +69,28 @@ class _NoFigure:
     __truediv__ = __rtruediv__ = __floordiv__ = __rfloordiv__ = __pow__ = __rpow__ = __neg__ = _same
 
 
+def _offscreen_figure(boundaries):
+    """r._fig and r._axes_handle for show_figure=True: the official figure's size, axes and limits, on
+    matplotlib's Agg canvas, never shown (a script's artists, sizes and redraws work as with the official,
+    nothing reaches the screen); without matplotlib, stand-ins that accept everything."""
+    try:
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
+        from matplotlib.figure import Figure
+    except ImportError:
+        return _NoFigure(), _NoFigure()
+    padding, scale = 0.05, 2.5  # the official _initialize_visualization's
+    b = boundaries
+    figure = Figure(figsize=((b[1] - b[0] + 2 * padding) * scale, (b[3] - b[2] + 2 * padding) * scale))
+    FigureCanvasAgg(figure)
+    axes = figure.add_subplot()
+    axes.set_aspect("equal")
+    axes.set_xlim([b[0] - padding, b[1] + padding])
+    axes.set_ylim([b[2] - padding, b[3] + padding])
+    axes.axis("off")
+    figure.subplots_adjust(left=0.01, right=0.99, bottom=0.01, top=0.99)
+    return figure, axes
+
+
 class Robotarium(RobotariumConstants):
     """Robotarium(number_of_robots=N, show_figure=..., initial_conditions=3xN, sim_in_real_time=..., ...)."""
 
@@ -89,8 +111,7 @@ class Robotarium(RobotariumConstants):
         self.obstacles = self._local.obstacles
         self.initializing = False
         if self.show_figure:
-            self._fig = _NoFigure()
-            self._axes_handle = _NoFigure()
+            self._fig, self._axes_handle = _offscreen_figure(self.BOUNDARIES)
         self._link = WorldLink(self.number_of_robots)
         self._finished = False
         _tell_dream_run(self.number_of_robots, self._local._poses, self._local._iteration)
