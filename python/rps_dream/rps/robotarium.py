@@ -3,7 +3,7 @@
 The constructor does what the official one does, in the script's process and in the official
 order: it draws the charger slots (Python's `random`), the default initial conditions (numpy's
 global stream) and drives the robots onto the initial conditions (the start-up drive, with the
-sensors' noise of every step drawn from numpy's stream) on the stand-in's step, which is the
+sensors' readings of every step, with their draws from numpy's stream) on the stand-in's step, which is the
 official one (bridge/python/standin/rps). Then it tells `dream run` the number of robots and
 where the drive ended (a JSON line on the descriptor DREAM_SCRIPT_FD), and DREAM's world takes
 over from those poses: get_poses() returns the world's poses of the next step (the lab's, with
