@@ -15,7 +15,8 @@ at step k are the official k-th poses to 1e-9 for every step of the experiment, 
 debug text (the official text: iteration count and error counts) is the official one.
 Groups (--group): core (robotarium_scripts; and a script importing what DREAM's rps lacks ends with a
 clear error naming it, exit 4), more (robotarium_scripts_more: the rest of the official examples, the
-sensors' included), thesis (robotarium_scripts_thesis: the thesis's HRVO experiment,
+sensors' included; and dead_reckoning under world.realism=lab: it runs, is judged, its np.save files land
+in the run folder), thesis (robotarium_scripts_thesis: the thesis's HRVO experiment,
 python/examples/thesis_hrvo). Examples that import matplotlib themselves are skipped without it.
 
 Skipped (77) without ROBOTARIUM_PYTHON_SIMULATOR, numpy or cvxopt.
@@ -249,6 +250,23 @@ def test_missing_call(ctx, args, stub):
           f"the error does not name the call and line alone: {tail(output, 1500)}")
 
 
+def test_lab_run(ctx, args, simulator):
+    """A sensors example under the lab model: it runs, is judged, and its np.save files land in the run folder."""
+    relative = "state_estimation/dead_reckoning/dead_reckoning.py"
+    out_dir = ctx.path("dead_reckoning_lab")
+    env = dict(os.environ, DREAM_PYTHON=sys.executable, MPLBACKEND="Agg")
+    ctx.start("lab", [args.dream, "run", os.path.join(simulator, "rps", "examples", relative), "--seed", str(SEED),
+                      "--set", "world.realism=lab", "--out", out_dir, "-q"], env=env)
+    code = ctx.wait("lab", 900)
+    check(code in (0, 3, 5), f"{relative} under world.realism=lab exited {code}: {tail(ctx.output('lab'), 1500)}")
+    with open(os.path.join(out_dir, "summary.json")) as f:
+        verdict = json.load(f).get("verdict")
+    check(verdict in ("clean", "warning", "rejected", "not_ready"), f"{out_dir}/summary.json: verdict {verdict!r}")
+    for saved in ("vicon_pose_array.npy", "encoder_array.npy", "gyro_array.npy", "mag_array.npy"):
+        check(os.path.isfile(os.path.join(out_dir, saved)), f"{relative} under the lab model: no {saved} in {out_dir}")
+    print(f"{relative} under world.realism=lab: exit {code}, verdict {verdict}, its .npy files in the run folder")
+
+
 def test(ctx):
     parser = argument_parser(types_dir=True)
     parser.add_argument("--example", action="append")
@@ -291,6 +309,8 @@ def test(ctx):
         print(f"{relative}: {len(official)} steps{capped}, poses within {worst:.1e} of the official, same debug text")
     if args.group == "core":
         test_missing_call(ctx, args, stub)
+    if args.group == "more" and real_matplotlib and not args.example:
+        test_lab_run(ctx, args, simulator)
 
 if __name__ == "__main__":
     main(test)
