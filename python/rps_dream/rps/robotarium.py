@@ -162,7 +162,12 @@ class Robotarium(RobotariumConstants):
         self.debug()
 
     def robot_colormap(self):
-        return _NoFigure()
+        """The official's: matplotlib's "tab20" colormap (a stand-in without matplotlib)."""
+        try:
+            from matplotlib import colormaps
+        except ImportError:
+            return _NoFigure()
+        return colormaps["tab20"]
 
     def _finish(self):
         """Ends the run: the world's next step is answered with every robot done, standing still."""
