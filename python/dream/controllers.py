@@ -55,6 +55,7 @@ def create_pose_controller_clf(approach_angle_gain=1, desired_angle_gain=2.7, ro
     radius = positive(name, "wheel_radius", wheel_radius)
     base = positive(name, "base_length", base_length)
     wheel_limit = non_negative(name, "wheel_velocity_limit", wheel_velocity_limit)
+    inverse = np.linalg.inv(np.array([[radius / 2, radius / 2], [-radius / base, radius / base]]))
 
     def controller_clf(states, poses):
         states, poses = pair("controller_clf", "states", states, 3, "poses", poses, 3)
@@ -62,7 +63,7 @@ def create_pose_controller_clf(approach_angle_gain=1, desired_angle_gain=2.7, ro
         c, s = np.cos(poses[2, :]), np.sin(poses[2, :])
         dx, dy = poses[0, :] - states[0, :], poses[1, :] - states[1, :]
         ex, ey = 0.0 + c * dx + s * dy, 0.0 - s * dx + c * dy  # from +0.0, as matmul sums
-        e = np.hypot(ex, ey)
+        e = np.sqrt(ex * ex + ey * ey)  # as rps's np.linalg.norm rounds it (not hypot)
         theta = np.arctan2(ey, ex)
         alpha = wrap(theta - (states[2, :] - poses[2, :]))
         ca, sa = np.cos(alpha), np.sin(alpha)
@@ -70,8 +71,10 @@ def create_pose_controller_clf(approach_angle_gain=1, desired_angle_gain=2.7, ro
         sinc = np.where(small, 1.0, sa / np.where(small, 1.0, alpha))
         v = gamma * e * ca
         w = k * alpha + gamma * (ca * sinc) * (alpha + h * theta)
-        # Wheel speeds (right, left) of (v, w); scale so the faster stays within the limit.
-        fastest = np.maximum(np.abs(v / radius - w * base / (2 * radius)), np.abs(v / radius + w * base / (2 * radius)))
+        # Wheel speeds of (v, w) through rps's inverse of the wheels' matrix (its rounding: a command on the
+        # limit is scaled or not as there); scale so the faster stays within the limit.
+        wheels = np.abs(0.0 + inverse[:, :1] * v + inverse[:, 1:] * w)
+        fastest = np.maximum(wheels[0], wheels[1])
         scale = np.where(fastest > wheel_limit, wheel_limit / np.where(fastest > 0, fastest, 1.0), 1.0)
         return np.vstack([v * scale, w * scale])
 

@@ -3,7 +3,7 @@
 The constructor does what the official one does, in the script's process and in the official
 order: it draws the charger slots (Python's `random`), the default initial conditions (numpy's
 global stream) and drives the robots onto the initial conditions (the start-up drive, with the
-sensors' noise of every step drawn from numpy's stream) on the stand-in's step, which is the
+sensors' readings of every step, with their draws from numpy's stream) on the stand-in's step, which is the
 official one (bridge/python/standin/rps). Then it tells `dream run` the number of robots and
 where the drive ended (a JSON line on the descriptor DREAM_SCRIPT_FD), and DREAM's world takes
 over from those poses: get_poses() returns the world's poses of the next step (the lab's, with
@@ -43,7 +43,9 @@ def _standin_class():
 
 
 class _NoFigure:
-    """What show_figure=True gives: every attribute and call accepted, nothing drawn."""
+    """What show_figure=True gives without matplotlib (r._fig, r._axes_handle): every attribute, call, index and
+    arithmetic accepted (a script's own marker sizes from fig.dpi and friends), nothing drawn.
+    It unpacks as one artist (`line, = ax.plot(...)`)."""
 
     def __getattr__(self, _name):
         return self
@@ -51,15 +53,42 @@ class _NoFigure:
     def __call__(self, *_args, **_kwargs):
         return self
 
+    def __getitem__(self, _key):
+        return self
+
     def __iter__(self):
-        return iter(())
+        return iter((self,))
+
+    def __format__(self, _spec):
+        return ""
+
+    def _same(self, *_args):
+        return self
+
+    __add__ = __radd__ = __sub__ = __rsub__ = __mul__ = __rmul__ = _same
+    __truediv__ = __rtruediv__ = __floordiv__ = __rfloordiv__ = __pow__ = __rpow__ = __neg__ = _same
 
 
-def _unsupported(call):
-    def refuse(self, *_args, **_kwargs):
-        raise NotInDream(f"{call}: DREAM's rps does not simulate the robots' sensors (distance sensors, encoders, "
-                         "IMU); see docs/robotarium-scripts.md")
-    return refuse
+def _offscreen_figure(boundaries):
+    """r._fig and r._axes_handle for show_figure=True: the official figure's size, axes and limits, on
+    matplotlib's Agg canvas, never shown (a script's artists, sizes and redraws work as with the official,
+    nothing reaches the screen); without matplotlib, stand-ins that accept everything."""
+    try:
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
+        from matplotlib.figure import Figure
+    except ImportError:
+        return _NoFigure(), _NoFigure()
+    padding, scale = 0.05, 2.5  # the official _initialize_visualization's
+    b = boundaries
+    figure = Figure(figsize=((b[1] - b[0] + 2 * padding) * scale, (b[3] - b[2] + 2 * padding) * scale))
+    FigureCanvasAgg(figure)
+    axes = figure.add_subplot()
+    axes.set_aspect("equal")
+    axes.set_xlim([b[0] - padding, b[1] + padding])
+    axes.set_ylim([b[2] - padding, b[3] + padding])
+    axes.axis("off")
+    figure.subplots_adjust(left=0.01, right=0.99, bottom=0.01, top=0.99)
+    return figure, axes
 
 
 class Robotarium(RobotariumConstants):
@@ -68,22 +97,21 @@ class Robotarium(RobotariumConstants):
     def __init__(self, **kwargs):
         if _made:
             raise NotInDream("Robotarium(...) a second time: `dream run` runs one Robotarium per script")
-        if kwargs.get("use_distance_sensors", False):
-            raise NotInDream("Robotarium(use_distance_sensors=True): DREAM's rps has no distance sensors")
         local_class = _standin_class()
         self._local = local_class(number_of_robots=kwargs.get("number_of_robots", -1),
                                   show_figure=kwargs.get("show_figure", False),
                                   initial_conditions=kwargs.get("initial_conditions", np.array([])),
                                   sim_in_real_time=kwargs.get("sim_in_real_time", True),
-                                  skip_initialization=kwargs.get("skip_initialization", False))
+                                  skip_initialization=kwargs.get("skip_initialization", False),
+                                  use_distance_sensors=kwargs.get("use_distance_sensors", False),
+                                  obstacles=kwargs.get("obstacles", None))
         _made.append(self)
         self.number_of_robots = self._local.number_of_robots
         self.show_figure = kwargs.get("show_figure", False)
-        self.obstacles = kwargs.get("obstacles", None)
+        self.obstacles = self._local.obstacles
         self.initializing = False
         if self.show_figure:
-            self._fig = _NoFigure()
-            self._axes_handle = _NoFigure()
+            self._fig, self._axes_handle = _offscreen_figure(self.BOUNDARIES)
         self._link = WorldLink(self.number_of_robots)
         self._finished = False
         _tell_dream_run(self.number_of_robots, self._local._poses, self._local._iteration)
@@ -122,7 +150,9 @@ class Robotarium(RobotariumConstants):
         # The command as set: the world saturates the wheels and counts actuator errors itself.
         self._link.send(local._velocities)
         local._velocities = local._saturate(local._velocities)
-        local._draw_sensor_noise()
+        # The sensors read where this step takes the robots by the official step from the poses the
+        # script saw (under `ideal` the world's next poses), drawing their noise now, as the official.
+        local._sensors.after_step(local._integrated(local._poses, local._velocities), local._velocities)
 
     def debug(self):
         self._local.debug()
@@ -132,7 +162,12 @@ class Robotarium(RobotariumConstants):
         self.debug()
 
     def robot_colormap(self):
-        return _NoFigure()
+        """The official's: matplotlib's "tab20" colormap (a stand-in without matplotlib)."""
+        try:
+            from matplotlib import colormaps
+        except ImportError:
+            return _NoFigure()
+        return colormaps["tab20"]
 
     def _finish(self):
         """Ends the run: the world's next step is answered with every robot done, standing still."""
@@ -151,13 +186,26 @@ class Robotarium(RobotariumConstants):
         self._finished = True
         self._link.fail(detail)
 
-    get_distances = _unsupported("get_distances()")
-    get_distance_endpoints = _unsupported("get_distance_endpoints()")
-    get_accelerations = _unsupported("get_accelerations()")
-    get_orientations = _unsupported("get_orientations()")
-    get_magnetic_fields = _unsupported("get_magnetic_fields()")
-    get_gyros = _unsupported("get_gyros()")
-    get_encoders = _unsupported("get_encoders()")
+    def get_distances(self):
+        return self._local.get_distances()
+
+    def get_distance_endpoints(self):
+        return self._local.get_distance_endpoints()
+
+    def get_accelerations(self):
+        return self._local.get_accelerations()
+
+    def get_orientations(self):
+        return self._local.get_orientations()
+
+    def get_magnetic_fields(self):
+        return self._local.get_magnetic_fields()
+
+    def get_gyros(self):
+        return self._local.get_gyros()
+
+    def get_encoders(self):
+        return self._local.get_encoders()
 
 
 def made():

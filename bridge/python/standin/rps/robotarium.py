@@ -15,18 +15,32 @@ Semantics (V2.0.0, as DREAM's simulator reproduces them):
     starts where it ended, within 0.05 m / 0.2 rad. Its steps count in debug()'s
     iterations but not as errors. skip_initialization=True starts exactly at the
     initial conditions (the placement is still drawn, as the official one draws it).
-  - numpy's global stream: every step draws the sensors' noise the official step
-    draws (encoders, accelerometer, gyro, magnetometer, orientation) and throws it
-    away, so a seeded script's numpy draws are the official simulator's.
+  - Sensors: every step updates the official sensor models (rps/sensor_models.py: encoders,
+    accelerometer, gyro, magnetometer, heading, and the distance sensors with
+    use_distance_sensors=True) with the official draws from numpy's global stream, so the
+    getters give the official readings and a seeded script's numpy draws are the official ones.
 Differences from the official simulator, on purpose:
-  - No figure, no real-time throttle, no sensor readings (distances, IMU, encoders).
+  - No figure, no real-time throttle.
 """
 
 import numpy as np
 
-from rps import startup_drive
+from rps import sensor_models, startup_drive
 from rps.robotarium_constants import RobotariumConstants
 from rps.utilities.barrier_certificates import create_uni_barrier_certificate
+
+
+def _checked_obstacles(obstacles):
+    """None, or M x 2 x 2 finite line segments (start, end) for the distance sensors."""
+    if obstacles is None:
+        return None
+    array = np.asarray(obstacles, dtype=float)
+    if array.ndim != 3 or array.shape[1:] != (2, 2) or array.shape[0] > 10000:
+        raise AssertionError("obstacles must be an M x 2 x 2 array of segments (M <= 10000), got shape %s" %
+                             (array.shape,))
+    if not np.all(np.isfinite(array)):
+        raise AssertionError("obstacles must be finite")
+    return array
 
 
 class Robotarium(RobotariumConstants):
@@ -38,11 +52,13 @@ class Robotarium(RobotariumConstants):
     CHARGER_SLOTS = 22
 
     def __init__(self, number_of_robots=-1, show_figure=False, initial_conditions=np.array([]),
-                 sim_in_real_time=True, skip_initialization=False, **unused_options):
+                 sim_in_real_time=True, skip_initialization=False, use_distance_sensors=False, obstacles=None,
+                 **unused_options):
         if not isinstance(number_of_robots, int) or isinstance(number_of_robots, bool):
             raise AssertionError("NumberOfRobots must be an integer. Received type %s." %
                                  type(number_of_robots).__name__)
         for name, value in (("ShowFigure", show_figure), ("SimInRealTime", sim_in_real_time),
+                            ("UseDistanceSensors", use_distance_sensors),
                             ("SkipInitialization", skip_initialization)):
             if not isinstance(value, bool):
                 raise AssertionError("%s must be a boolean. Received type %s." % (name, type(value).__name__))
@@ -67,6 +83,8 @@ class Robotarium(RobotariumConstants):
         if not np.all(np.isfinite(initial_conditions)):
             raise AssertionError("initial_conditions must be finite")
 
+        self.obstacles = _checked_obstacles(obstacles)
+        self._sensors = sensor_models.SensorModels(self, n, use_distance_sensors, self.obstacles)
         self._poses = np.array(chargers, dtype=float).reshape(3, n)
         self._velocities = np.zeros((2, n))
         self._iteration = 0
@@ -137,21 +155,43 @@ class Robotarium(RobotariumConstants):
             self._validate()
         self._iteration += 1
         self._velocities = self._saturate(self._velocities)
-        i = np.arange(self.number_of_robots)
-        distance = self.TIME_STEP * self._velocities[0, i]
-        self._poses[0, i] += distance * np.cos(self._poses[2, i])
-        self._poses[1, i] += distance * np.sin(self._poses[2, i])
-        self._poses[2, i] += self.TIME_STEP * self._velocities[1, i]
-        self._poses[2, i] = np.arctan2(np.sin(self._poses[2, i]), np.cos(self._poses[2, i]))
-        self._draw_sensor_noise()
+        self._poses = self._integrated(self._poses, self._velocities)
+        self._sensors.after_step(self._poses, self._velocities)
 
-    def _draw_sensor_noise(self):
-        """The normal draws of the official step's sensor models (encoders 2 x N, accelerometer,
-        gyro and magnetometer 3 x N each, orientation N), in its order, unused: they keep numpy's
-        global stream where the official simulator leaves it."""
-        n = self.number_of_robots
-        for shape in ((2, n), (3, n), (3, n), (3, n), (n,)):
-            np.random.randn(*shape)
+    def _integrated(self, poses, velocities):
+        """The poses after one Euler step at the (saturated) velocities, heading wrapped by atan2."""
+        poses = poses.copy()
+        i = np.arange(self.number_of_robots)
+        distance = self.TIME_STEP * velocities[0, i]
+        poses[0, i] += distance * np.cos(poses[2, i])
+        poses[1, i] += distance * np.sin(poses[2, i])
+        poses[2, i] += self.TIME_STEP * velocities[1, i]
+        poses[2, i] = np.arctan2(np.sin(poses[2, i]), np.cos(poses[2, i]))
+        return poses
+
+    # The sensors' readings after the last step (rps/sensor_models.py), as the official getters give them.
+    def get_distances(self):
+        return self._sensors.distances.copy()
+
+    def get_distance_endpoints(self):
+        if not self._sensors.distance_sensors:
+            raise AssertionError("get_distance_endpoints() needs Robotarium(use_distance_sensors=True)")
+        return self._sensors.endpoints.copy()
+
+    def get_accelerations(self):
+        return self._sensors.accelerations.copy()
+
+    def get_orientations(self):
+        return self._sensors.orientations.copy()
+
+    def get_magnetic_fields(self):
+        return self._sensors.magnetic_fields.copy()
+
+    def get_gyros(self):
+        return self._sensors.gyros.copy()
+
+    def get_encoders(self):
+        return np.int32(self._sensors.encoders)  # counts since the start, the drive included, as the official
 
     def debug(self):
         seconds = self._iteration * self.TIME_STEP

@@ -26,3 +26,10 @@ def create_si_barrier_certificate(*args, **kwargs):
 
 def create_si_barrier_certificate_with_boundary(*args, **kwargs):
     return _barriers.create_si_barrier_certificate_with_boundary(*args, bit_exact=True, **kwargs)
+
+
+def _solve_qp(N, vhat, A, b):
+    """rps's private helper, which examples import (sensors/distance_sensor_avoidance.py):
+    min |v - vhat|^2 s.t. A v <= b for N robots' velocities (2 x N), None when cvxopt fails."""
+    return _barriers._solve_qp(np.reshape(np.asarray(vhat, dtype=float), (2, N), order="F"),
+                               np.asarray(A, dtype=float), np.asarray(b, dtype=float), True)

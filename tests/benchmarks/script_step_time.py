@@ -1,0 +1,135 @@
+#!/usr/bin/python3
+"""Time per step of an unmodified Robotarium script: under `dream run` against the official simulator
+with show_figure=False, same machine, same script (issue 36). A benchmark for docs/performance.md,
+not a test.
+
+    tests/integration/netns.sh /usr/bin/python3 tests/benchmarks/script_step_time.py \\
+        --dream build/dream --official /tmp/rps [--steps 500] [--repeats 3] [--example REL ...]
+
+Each example of the official package (rps/examples/REL) runs, alternately on each side, under the same
+timing wrapper: it forces show_figure=False and sim_in_real_time=False, seeds Python's `random` and
+numpy's global stream, and stops the example at its --steps-th experiment step (then debug()). The
+time measured is the wall-clock time from the first experiment get_poses() to that stop, divided by
+the steps: everything a step costs the script's process and whoever answers it (the official
+simulator's step in the same process; DREAM's world in `dream run`, over LCM: udpm, so run it under
+tests/integration/netns.sh or with a multicast route). The start-up drive is not timed. Prints, per
+example, the median over --repeats of both sides and their ratio.
+"""
+
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+EXAMPLES = ["go_to_goal/go_to_point_si.py", "barrier_certificates/uni_barriers.py",
+            "formation_control/formation_control.py", "consensus/consensus_fewer_errors.py"]
+
+TIMING_WRAPPER = r'''
+import json, random, runpy, sys, time
+import numpy as np
+import rps.robotarium as robotarium
+
+EXAMPLE, STEPS, OUT, SEED = {example!r}, {steps}, {out!r}, {seed}
+original_init, original_get = robotarium.Robotarium.__init__, robotarium.Robotarium.get_poses
+marks = {{"steps": 0, "start": None}}
+made = []
+
+
+class StepCap(BaseException):
+    pass
+
+
+def init(self, **kwargs):
+    kwargs["show_figure"] = False
+    kwargs["sim_in_real_time"] = False
+    original_init(self, **kwargs)
+
+
+def get_poses(self):
+    if not self.initializing:
+        if marks["start"] is None:
+            marks["start"] = time.perf_counter()
+        if marks["steps"] == STEPS:
+            made.append(self)
+            raise StepCap()
+        marks["steps"] += 1
+    return original_get(self)
+
+
+robotarium.Robotarium.__init__ = init
+robotarium.Robotarium.get_poses = get_poses
+random.seed(SEED)
+np.random.seed(SEED)
+try:
+    runpy.run_path(EXAMPLE, run_name="__main__")
+except StepCap:
+    pass
+seconds = time.perf_counter() - marks["start"]
+with open(OUT, "w") as f:
+    json.dump({{"steps": marks["steps"], "seconds": seconds}}, f)
+if made:
+    made[0].debug()
+'''
+
+
+def run_side(argv, env, out):
+    result = subprocess.run(argv, env=env, capture_output=True, text=True)
+    if result.returncode not in (0, 3, 5):  # dream run: 3 rejected, 5 not ready (the verdict), still timed
+        sys.exit(f"`{' '.join(argv)}` exited {result.returncode}: {result.stdout[-800:]}{result.stderr[-800:]}")
+    with open(out) as f:
+        timing = json.load(f)
+    return 1000.0 * timing["seconds"] / max(timing["steps"], 1), timing["steps"]
+
+
+def measure(args, example, folder, index):
+    name = os.path.splitext(os.path.basename(example))[0]
+    path = os.path.join(args.official, "rps", "examples", example)
+    times = {"official": [], "dream": []}
+    steps = 0
+    for repeat in range(args.repeats):
+        for side in ("official", "dream"):
+            out = os.path.join(folder, f"{name}_{side}_{repeat}.json")
+            wrapper = os.path.join(folder, f"{name}_{side}_{repeat}.py")
+            with open(wrapper, "w") as f:
+                f.write(TIMING_WRAPPER.format(example=path, steps=args.steps, out=out, seed=args.seed))
+            env = dict(os.environ, MPLBACKEND="Agg")
+            if side == "official":
+                env["PYTHONPATH"] = args.official
+                argv = [sys.executable, wrapper]
+            else:
+                env["DREAM_PYTHON"] = sys.executable
+                argv = [args.dream, "run", wrapper, "--seed", str(args.seed), "-q",
+                        "--out", os.path.join(folder, f"run_{index}_{repeat}")]
+            ms, steps = run_side(argv, env, out)
+            times[side].append(ms)
+    return {side: statistics.median(values) for side, values in times.items()}, steps
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--dream", required=True)
+    parser.add_argument("--official", default=os.environ.get("ROBOTARIUM_PYTHON_SIMULATOR", ""))
+    parser.add_argument("--steps", type=int, default=500)
+    parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--seed", type=int, default=7)
+    parser.add_argument("--example", action="append")
+    args = parser.parse_args()
+    if not os.path.isfile(os.path.join(args.official, "rps", "robotarium.py")):
+        sys.exit("--official (or ROBOTARIUM_PYTHON_SIMULATOR) must name a robotarium_python_simulator checkout")
+    if not 1 <= args.steps <= 100000 or not 1 <= args.repeats <= 100:
+        sys.exit("--steps must be 1..100000 and --repeats 1..100")
+    print(f"{'example':45s} {'steps':>6s} {'official ms/step':>17s} {'dream run ms/step':>18s} {'ratio':>6s}")
+    with tempfile.TemporaryDirectory(prefix="script_step_time_") as folder:
+        for index, example in enumerate(args.example or EXAMPLES):
+            medians, steps = measure(args, example, folder, index)
+            ratio = medians["dream"] / medians["official"]
+            print(f"{example:45s} {steps:6d} {medians['official']:17.2f} {medians['dream']:18.2f} {ratio:6.2f}",
+                  flush=True)
+
+
+if __name__ == "__main__":
+    main()
