@@ -24,19 +24,19 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path& Run() {
+const fs::path& RunFolder() {
   static const fs::path run = testing::SimulatedRun();
   return run;
 }
 
 nlohmann::json SummaryMetrics() {
-  return nlohmann::json(node::RunSummary::Read((Run() / "summary.json").string()).metrics);
+  return nlohmann::json(node::RunSummary::Read((RunFolder() / "summary.json").string()).metrics);
 }
 
 TEST(ViewMetricsTest, TheKindsFiguresAfterTheLastStepAreSummaryJsons) {
-  const run_config::RunConfig config = run_config::LoadRunConfigFile((Run() / "config.yaml").string());
+  const run_config::RunConfig config = run_config::LoadRunConfigFile((RunFolder() / "config.yaml").string());
   const agent_host::ControllerFactory factory(config);
-  const run_log::RunLog log = run_log::RunLog::Read((Run() / "run.lcmlog").string());
+  const run_log::RunLog log = run_log::RunLog::Read((RunFolder() / "run.lcmlog").string());
   KindStepMetrics metrics(factory);
   const view::MetricTimeline timeline = view::MetricTimeline::OfRun(log, metrics);
   const nlohmann::json summary = SummaryMetrics();
@@ -60,9 +60,9 @@ TEST(ViewMetricsTest, TheKindsFiguresAfterTheLastStepAreSummaryJsons) {
 }
 
 TEST(ViewMetricsTest, TheGoalsToleranceAndTheCollisionDistanceAreThresholds) {
-  const run_config::RunConfig config = run_config::LoadRunConfigFile((Run() / "config.yaml").string());
+  const run_config::RunConfig config = run_config::LoadRunConfigFile((RunFolder() / "config.yaml").string());
   const agent_host::ControllerFactory factory(config);
-  const run_log::RunLog log = run_log::RunLog::Read((Run() / "run.lcmlog").string());
+  const run_log::RunLog log = run_log::RunLog::Read((RunFolder() / "run.lcmlog").string());
   KindStepMetrics metrics(factory);
   metrics.Observe(log.poses().front(), log.obstacles_at(0));
   std::vector<view::MetricReading> readings;
@@ -79,7 +79,7 @@ TEST(ViewMetricsTest, TheGoalsToleranceAndTheCollisionDistanceAreThresholds) {
 }
 
 TEST(ViewMetricsTest, TheReplayPlotsTheRunsMetricsEndingOnSummaryJsons) {
-  const ViewReplay replay = ViewReplay::OfRun(Run().string(), "", "");
+  const ViewReplay replay = ViewReplay::OfRun(RunFolder().string(), "", "");
   const nlohmann::json run = nlohmann::json::parse(replay.run_json);
   const nlohmann::json summary = SummaryMetrics();
   const nlohmann::json& series = run["metrics"]["series"];
