@@ -135,7 +135,7 @@ def watch_live(ctx, args, page):
     """The plots during the run: the step shown, its figures, the goal's error falling."""
     samples = {}
     live_commands = {}
-    drawn = False
+    drawn = shot = False
     deadline = time.monotonic() + 120
     while time.monotonic() < deadline:
         shown = state(page)
@@ -151,8 +151,10 @@ def watch_live(ctx, args, page):
                     live_commands[(shown["step"], r["id"])] = (r["cv"], r["cw"])
             if not drawn and len(samples) >= 3 and (shown.get("metricPlot") or {}).get("panels"):
                 check_thresholds_drawn(page, shown, "live")
-                page.screenshot(os.path.join(args.artifacts, "metrics_live.png"))
                 drawn = True
+            if not shot and shown["step"] >= STEPS // 2:
+                page.screenshot(os.path.join(args.artifacts, "metrics_live.png"))
+                shot = True
         time.sleep(0.02)
     check(len(samples) >= 3, f"live: the plots were seen at {len(samples)} steps (expected several)")
     check(drawn, "live: the metric plots were never drawn")

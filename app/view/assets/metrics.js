@@ -176,10 +176,17 @@ const DreamMetrics = (() => {
     g.textBaseline = "top";
     const value = newest ? newest[1] : at >= 0 ? s.values[at] : null;
     g.fillText(`${s.name} ${text(value)}`, x0, top + 2 * ratio);
-    if (s.threshold !== null) {
+    if (s.threshold !== null) {  // its label inside the plot, at its right end, on the side with room
+      const label = s.label || text(s.threshold);
+      g.font = `${10 * ratio}px system-ui, sans-serif`;
+      const w = g.measureText(label).width + 4 * ratio, h = 12 * ratio;
+      const above = thresholdY - h - ratio >= y0;
+      const ly = above ? thresholdY - h - ratio : Math.min(thresholdY + 2 * ratio, y1 - h);
+      g.fillStyle = "rgba(255, 255, 255, 0.85)";
+      g.fillRect(x1 - w - ratio, ly, w, h);
       g.fillStyle = THRESHOLD;
       g.textAlign = "right";
-      g.fillText(s.label || text(s.threshold), x1, top + 2 * ratio);
+      g.fillText(label, x1 - 3 * ratio, ly + ratio);
       g.textAlign = "left";
     }
     return thresholdY;
