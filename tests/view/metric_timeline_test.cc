@@ -25,8 +25,8 @@ using dream::testing::TempFolder;
 /// "observed" how many steps were observed, "limited" has a threshold.
 class RobotXMetrics final : public StepMetrics {
  public:
-  explicit RobotXMetrics(int* observed_total = nullptr, int64_t throw_at_step = -1)
-      : observed_total_(observed_total), throw_at_step_(throw_at_step) {}
+  explicit RobotXMetrics(int* observed_total = nullptr, int64_t throw_at_step = -1, bool read_throws = false)
+      : observed_total_(observed_total), throw_at_step_(throw_at_step), read_throws_(read_throws) {}
   void Observe(const robot_poses_t& poses, const obstacles_t& obstacles) override {
     (void)obstacles;
     if (poses.step == throw_at_step_) throw std::runtime_error("the kind's metrics failed");
@@ -35,6 +35,7 @@ class RobotXMetrics final : public StepMetrics {
     if (observed_total_ != nullptr) ++*observed_total_;
   }
   void Read(std::vector<MetricReading>* readings) const override {
+    if (read_throws_) throw std::runtime_error("the kind's Write failed");
     readings->resize(3);
     (*readings)[0].name = "x0";
     (*readings)[0].value = x0_;
@@ -49,6 +50,7 @@ class RobotXMetrics final : public StepMetrics {
  private:
   int* observed_total_;
   int64_t throw_at_step_;
+  bool read_throws_;
   double x0_ = 0.0;
   int observed_ = 0;
 };
@@ -237,6 +239,17 @@ TEST_F(LiveMetricsTest, MetricsThatThrowStopButTheRunIsStillDrawn) {
   EXPECT_EQ(frame_.step, 3);
   EXPECT_TRUE(frame_.metrics.empty());
   EXPECT_EQ(nlohmann::json::parse(FrameJson(frame_))["metrics"], nlohmann::json::array());
+}
+
+TEST_F(LiveMetricsTest, MetricsWhoseReadingThrowsStopAndTheFrameIsStillTaken) {
+  collector_.FollowMetrics([] { return std::make_unique<RobotXMetrics>(nullptr, -1, true); });
+  Step(bus_, 9, 0, 0.0);
+  ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
+  EXPECT_EQ(frame_.step, 0);
+  EXPECT_TRUE(frame_.metrics.empty());
+  Step(bus_, 9, 1, 0.1);
+  ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));  // no second attempt: they stopped
+  EXPECT_TRUE(frame_.metrics.empty());
 }
 
 TEST_F(LiveMetricsTest, WithoutMetricsFramesCarryNone) {

@@ -327,10 +327,16 @@ bool BusFrameCollector::TakeFrame(ViewFrame* frame, uint64_t* version) {
   frame->violations_located = marks_located_;
   frame->other_world = other_world_;
   frame->judged = judged_;
+  frame->metrics.clear();
   if (metrics_) {
-    metrics_->Read(&frame->metrics);
-  } else {
-    frame->metrics.clear();
+    try {
+      metrics_->Read(&frame->metrics);
+    } catch (const std::exception& e) {
+      // The kind's code, on the pump's thread: never past it.
+      spdlog::warn("dream view: the run's metrics stop at step {}: {}", poses_.step, e.what());
+      metrics_.reset();
+      frame->metrics.clear();
+    }
   }
   return true;
 }
