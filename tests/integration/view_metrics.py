@@ -215,7 +215,7 @@ def test(ctx):
     with open(config, "w") as f:
         f.write(CONFIG)
     ctx.start("run", [args.dream, "run", config, "--out", run_dir, "--view", "--view-port", "0", "--view-wait",
-                      "--pace", "2", "--view-keep", "ctrl-c"]))
+                      "--pace", "2", "--view-keep", "ctrl-c"])
     ctx.wait_for_output("run", URL.pattern, 30)
     url = URL.search(ctx.output("run")).group(1)
     ctx.start("chromium", chromium_argv(ctx.path("chrome"), url), own_group=True)
