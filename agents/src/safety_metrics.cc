@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "dream/robotarium/robotarium_constants.h"
+
 namespace dream::agents {
 
 SafetyMetrics::SafetyMetrics(double near_miss_m) : near_miss_m_(near_miss_m) {}
@@ -27,6 +29,9 @@ void SafetyMetrics::Write(MetricsReport* report) const {
   if (std::isfinite(min_distance_m_)) {
     report->values["min_pairwise_distance_m"] = min_distance_m_;
     report->values["min_pairwise_distance_step"] = static_cast<double>(min_distance_step_);
+    // The Robotarium's collision rule is on the centres' distance (plus its offsets): below this, too close.
+    report->thresholds["min_pairwise_distance_m"] = {robotarium::RobotariumConstants::kCollisionDiameterMeters,
+                                                     "collision distance 0.135 m"};
   }
   report->values["near_miss_steps"] = static_cast<double>(near_miss_steps_);
   report->values["near_miss_threshold_m"] = near_miss_m_;

@@ -8,7 +8,8 @@ what it draws) must show the three robots with their ids at the positions the ru
 the step shown, the step advancing, each violation marked where the log says it happened, the
 counts of the run's summary and the verdict "rejected"; once the run is over, the page ends on the
 world's DREAM_VERDICT: data-verdict, the label "verdict" and the goal line as summary.json has them
-(issue 33), also when the log is played with lcm-logplayer. A screenshot is kept (live.png).
+(issue 33), also when the log is played with lcm-logplayer; the kind's final_max_goal_error_m is
+plotted with its threshold and ends on summary.json's (issue 37 item 3). A screenshot is kept (live.png).
 
 A forged DREAM_POSES of a made-up run after the end (issue 34): the finished run stays drawn with
 its violations, and the page's status line names the other run (other_world.png).
@@ -276,6 +277,19 @@ def check_judged_live(page, summary, where):
     print(f"{where}: ends on the judged verdict {shown[0]!r}, goal {shown[2]!r}")
 
 
+def check_live_metrics(page, metrics):
+    """Issue 37 item 3, a run of other processes (dream view --config beside dream launch): the
+    kind's figure at the last step is summary.json's (it depends only on that step's poses), with
+    the goal's tolerance as its threshold."""
+    name = "final_max_goal_error_m"
+    shown = wait_for(page, f"{name} plotted at the run's last step",
+                     lambda s: any(m["name"] == name and m["step"] == STEPS for m in s.get("metrics") or []), 10)
+    figure = next(m for m in shown["metrics"] if m["name"] == name)
+    check(abs(figure["value"] - metrics[name]) <= 1e-6 * max(1.0, abs(metrics[name])),
+          f"live, the page plots {name} = {figure['value']} at the last step, summary.json says {metrics[name]}")
+    check(figure["threshold"] is not None, f"live, {name} has no threshold: {figure}")
+
+
 def check_live(ctx, args, dream, page, config, run_dir):
     """dream launch watched live; then the same run's log played with lcm-logplayer. Returns its poses."""
     steps_seen = watch_live(ctx, args, page, config, run_dir)
@@ -290,6 +304,7 @@ def check_live(ctx, args, dream, page, config, run_dir):
           f"the page's counts {final['counts']} are not summary.json's {summary}")
     check(final["verdict"] == "rejected", f"the page's verdict is {final['verdict']}, the run was rejected")
     check_judged_live(page, read_summary(run_dir), "live (dream launch)")
+    check_live_metrics(page, read_summary(run_dir)["metrics"])
     print(f"live: {len(steps_seen)} steps seen, {len(final['violations'])} violations marked")
     check_forged_run_after_the_end(dream, page, final, args.artifacts)
 

@@ -485,6 +485,9 @@ TEST(AffineFormationMetrics, JudgesFollowersAgainstTheLeadersActualMapAndGateCle
   EXPECT_EQ(report.values.at("obstacle_pair_0_passage_step"), 20);
   EXPECT_EQ(report.values.at("obstacle_pair_0_contact_steps"), 0);
   EXPECT_EQ(report.series.at("max_follower_error_m").size(), 2u);
+  // The follower tolerance is the goal's line on the view's plot of the error.
+  EXPECT_EQ(report.thresholds.at("max_follower_error_m").value, params.tolerance_m);
+  EXPECT_EQ(report.thresholds.at("max_follower_error_after_convergence_m").value, params.tolerance_m);
 }
 
 }  // namespace

@@ -185,6 +185,12 @@ TEST(LineFormationMetricsTest, StraightnessSpacingAndConvergenceOnPlainPoses) {
   EXPECT_NEAR(series[1].second, 0.04 * 2.0 / 3.0, 1e-15);
   EXPECT_EQ(series[2].first, 17);
   EXPECT_EQ(report.series["spacing_error_m"].size(), 3u);
+  // The convergence threshold is the line the view's plots draw on each error.
+  for (const char* name : {"final_line_straightness_error_m", "spacing_error_m"}) {
+    ASSERT_TRUE(report.thresholds.count(name)) << name;
+    EXPECT_EQ(report.thresholds.at(name).value, 0.02) << name;
+    EXPECT_EQ(report.thresholds.at(name).label, "converged: within 0.02 m") << name;
+  }
 }
 
 std::string FactoryError(const std::string& yaml, int robots) {

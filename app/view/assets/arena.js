@@ -108,28 +108,31 @@ const DreamArena = (() => {
   }
 
   // What each robot drove with: an arrow along its heading, one second of travel long (backwards
-  // when v < 0), and an arc at its tip for the turn rate (half a second of turning).
-  function velocities(ctx, T, scene) {
-    if (!scene.v) return;
+  // when v < 0), and an arc at its tip for the turn rate (half a second of turning). The commands
+  // (what each controller asked, before the wheels' saturation) alike, dashed in orange.
+  function velocities(ctx, T, scene, vs = scene.v, ws = scene.w, colour = "#111", arc = "#c2185b", dash = []) {
+    if (!vs) return;
     ctx.lineWidth = 2;
+    ctx.setLineDash(dash);
     for (let i = 0; i < scene.x.length; i++) {
-      const v = scene.v[i], w = scene.w ? scene.w[i] : 0;
+      const v = vs[i], w = ws ? ws[i] : 0;
       if (!finite(scene.x[i], scene.y[i], scene.th[i], v)) continue;
       const x0 = T.px(scene.x[i]), y0 = T.py(scene.y[i]);
       const x1 = T.px(scene.x[i] + v * Math.cos(scene.th[i])), y1 = T.py(scene.y[i] + v * Math.sin(scene.th[i]));
-      ctx.strokeStyle = "#111";
+      ctx.strokeStyle = colour;
       ctx.beginPath(); ctx.moveTo(x0, y0); ctx.lineTo(x1, y1);
       const a = Math.atan2(y1 - y0, x1 - x0), head = Math.min(8, Math.hypot(x1 - x0, y1 - y0) / 2);
       ctx.moveTo(x1, y1); ctx.lineTo(x1 - head * Math.cos(a - 0.4), y1 - head * Math.sin(a - 0.4));
       ctx.moveTo(x1, y1); ctx.lineTo(x1 - head * Math.cos(a + 0.4), y1 - head * Math.sin(a + 0.4));
       ctx.stroke();
       if (finite(w) && Math.abs(w) > 1e-3) {  // canvas angles run clockwise: negate the world's
-        ctx.strokeStyle = "#c2185b";
+        ctx.strokeStyle = arc;
         ctx.beginPath();
         ctx.arc(x0, y0, 14, -scene.th[i], -scene.th[i] - w * 0.5, w > 0);
         ctx.stroke();
       }
     }
+    ctx.setLineDash([]);
   }
 
   // Points closer than 2 pixels to the last one drawn add nothing to a
@@ -339,6 +342,7 @@ const DreamArena = (() => {
     if (layers.radio) links(ctx, T, scene);
     robots(ctx, T, setup, scene, layers);
     if (layers.velocities) velocities(ctx, T, scene);
+    if (layers.commands) velocities(ctx, T, scene, scene.cv, scene.cw, "#ef6c00", "#ef6c00", [5, 3]);
     if (scene.selected) selection(ctx, T, setup, scene, scene.selected);
     if (layers.violations) violations(ctx, T, scene.marks);
     return T;

@@ -17,6 +17,7 @@
     setup: null, scene: null, paths: [], run: null, replay: null, frames: 0, drawn: 0,
     marks: new Map(), links: new Map(), steps: [], counts: null,
     camera: { zoom: 1, panX: 0, panY: 0 }, T: null, selected: null, hover: null, goalProgress: [],
+    metrics: DreamMetrics.create(), metricPlot: null,
     state: { mode: null, connected: false, step: -1, robots: [], violations: [], verdict: "unknown" },
   };
   window.dreamView = view;
@@ -25,6 +26,7 @@
     trails: $("show-trails").checked, goals: $("show-goals").checked, ids: $("show-ids").checked,
     radio: $("show-radio").checked, sensors: $("show-sensors").checked, measured: $("show-measured").checked,
     violations: $("show-violations").checked, velocities: $("show-velocities").checked,
+    commands: $("show-commands").checked,
     measuredScale: Number($("measured-scale").value) || 1,
   });
 
@@ -133,6 +135,16 @@
     }
     showMetrics(judged ? judged.metrics || [] : []);
     writeInspector(view.scene && view.scene.selected);
+    drawMetricPlots(step);
+  }
+
+  // The metrics over time, at the panel's pace (a canvas of its own: no layout but its height).
+  function drawMetricPlots(step) {
+    const shown = view.metrics.series.size > 0 && $("show-metrics").checked;
+    if ($("metric-section").hidden === shown) $("metric-section").hidden = !shown;
+    if (!shown) { view.metricPlot = null; return; }
+    view.metricPlot = DreamMetrics.draw($("metric-plot"), view.metrics, step, !view.replay);
+    view.state.metricPlot = view.metricPlot;
   }
 
   // The experiment's metrics as summary.json holds them, at a judged run's end.
@@ -255,7 +267,8 @@
   function publishState(extra) {
     const s = view.scene;
     const robots = s ? s.x.map((x, id) => ({ id, x, y: s.y[id], theta: s.th[id], v: s.v ? s.v[id] : null,
-                                             w: s.w ? s.w[id] : null })) : [];
+                                             w: s.w ? s.w[id] : null, cv: s.cv ? s.cv[id] : null,
+                                             cw: s.cw ? s.cw[id] : null })) : [];
     const marks = [...view.marks.values()].map(({ kind, step, robot, other, x, y, worst }) =>
       ({ kind, step, robot, other, x, y, worst }));
     view.state = {
@@ -265,7 +278,8 @@
       flashing: s && s.marks ? s.marks.filter((m) => m.flash > 0).length : 0,
       links: s && s.links ? s.links.length : 0, measured: !!(s && s.mx), otherWorld: null,
       camera: { ...view.camera }, selected: s && s.selected ? s.selected : null,
-      goalProgress: s && s.goalProgress ? s.goalProgress.slice() : [], ...extra,
+      goalProgress: s && s.goalProgress ? s.goalProgress.slice() : [],
+      metrics: DreamMetrics.summary(view.metrics, s ? s.step : -1), metricPlot: view.metricPlot, ...extra,
     };
   }
 
@@ -296,6 +310,7 @@
     if (!s || id === null || id < 0 || id >= s.x.length) return null;
     const near = neighboursOf(id, s);
     const d = { id, x: s.x[id], y: s.y[id], theta: s.th[id], v: s.v ? s.v[id] : null, w: s.w ? s.w[id] : null,
+                command: s.cv && s.cv[id] !== null ? { v: s.cv[id], w: s.cw[id] } : null,
                 radio: near.radio, seen: near.seen, neighbours: [...new Set([...near.radio, ...near.seen])],
                 lost: !!(s.lost && s.lost.includes(id)) };
     if (s.mx && s.mx[id] !== null) {
@@ -327,6 +342,7 @@
       ["measured", d.measured ? `(${f(d.measured.x, 3)}, ${f(d.measured.y, 3)}) m, ${deg(d.measured.theta)}; off by ` +
         `${f(d.measured.error_m * 1000, 1)} mm, ${deg(d.measured.heading_error_rad)}` : "-"],
       ["drove", `v ${f(d.v, 3)} m/s, w ${f(d.w, 2)} rad/s`],
+      ["commanded", d.command ? `v ${f(d.command.v, 3)} m/s, w ${f(d.command.w, 2)} rad/s` : "-"],
       ["goal", d.goals.count === 0 ? "-" : d.goals.current
         ? `${d.goals.reached} of ${d.goals.count} reached; now (${f(d.goals.current[0], 2)}, ${f(d.goals.current[1], 2)}),` +
           ` ${f(d.goals.distance_m, 3)} m away` : `all ${d.goals.count} reached`],
@@ -386,6 +402,7 @@
     view.links.clear();
     view.steps = [];
     view.goalProgress = [];
+    view.metrics = DreamMetrics.create();
   }
 
   function onFrame(f) {
@@ -409,6 +426,7 @@
     }
     for (const [s, r] of f.links) view.links.set(`${s}/${r}`, { s, r, seen: now });
     view.live = f;
+    DreamMetrics.addLive(view.metrics, f.step, f.metrics);
     if (f.step >= 0) advanceGoals(f);
     // Once the world judged the run (DREAM_VERDICT, after its summary.json), its verdict and goal.
     view.counts = f.status ? { ...f.status, judged: f.judged || null } : null;
@@ -424,7 +442,7 @@
       else links.push([link.s, link.r, 1 - age / LINK_MS]);
     }
     view.scene = {
-      step: f.step, t: f.t, x: f.x, y: f.y, th: f.th, v: f.v, w: f.w, mx: f.mx, my: f.my, mth: f.mth,
+      step: f.step, t: f.t, x: f.x, y: f.y, th: f.th, v: f.v, w: f.w, cv: f.cv, cw: f.cw, mx: f.mx, my: f.my, mth: f.mth,
       obstacles: f.obstacles, links, marks: sceneMarks(now), lost: f.status ? f.status.lost : [],
     };
     decorate(view.scene, view.goalProgress.slice());
@@ -486,8 +504,10 @@
       return path;
     });
     const vel = run.velocities && run.velocities[i] ? run.velocities[i] : null;
+    const cmd = run.commands && run.commands[i] ? run.commands[i] : null;
     view.scene = { step, t, ...at, mx: measured && measured.x, my: measured && measured.y, mth: measured && measured.th,
       v: vel && vel.filter((_, k) => k % 2 === 0), w: vel && vel.filter((_, k) => k % 2 === 1),
+      cv: cmd && cmd.filter((_, k) => k % 2 === 0), cw: cmd && cmd.filter((_, k) => k % 2 === 1),
       obstacles: o >= 0 ? run.obstacles[o][1] : [], links, marks, lost: view.counts.lost || [] };
     decorate(view.scene, view.replay.goalsAt.map((at) => at.filter((frame) => frame <= i).length));
     const stateName = atEnd && run.final ? STATE_NAMES[run.final.state] || "-" : "replaying";
@@ -519,6 +539,7 @@
   function startReplay(run) {
     view.replay = { run, index: 0, playing: false, speed: 1, simTime: 0, lastWall: performance.now() };
     view.replay.goalsAt = goalTimeline(run);
+    view.metrics = DreamMetrics.fromReplay(run.metrics, run.steps[0], run.steps[run.steps.length - 1]);
     view.run = run.run;
     if (run.flaw) $("source").textContent += ` (not a whole run: ${run.flaw})`;
     if (run.stride > 1) $("source").textContent += ` (every ${run.stride}th step)`;
@@ -624,6 +645,7 @@
   }
 
   for (const box of document.querySelectorAll("#layers input, #layers select")) box.onchange = draw;
+  $("show-metrics").onchange = () => drawMetricPlots(view.state.step);
 
   // ---- mouse and keyboard: pick, zoom, pan, fit, play ----
   function canvasPoint(event) {
@@ -720,6 +742,7 @@
     else if (event.key === "f" || event.key === "0") fit();
     else if (event.key === "Escape") select(null);
     else if (event.key === "v") { $("show-velocities").checked = !$("show-velocities").checked; draw(); }
+    else if (event.key === "c") { $("show-commands").checked = !$("show-commands").checked; draw(); }
     else return;
     event.preventDefault();
   });

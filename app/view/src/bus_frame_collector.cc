@@ -1,6 +1,10 @@
 #include "dream/view/bus_frame_collector.h"
 
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
+#include <cmath>
+#include <exception>
 #include <sstream>
 #include <utility>
 
@@ -55,6 +59,11 @@ BusFrameCollector::BusFrameCollector(lcm::LcmInterface& bus, const world::WorldP
     : choice_(std::move(now)), locator_(world) {
   subscription_ = bus.Subscribe(lcm::kViewChannelsRegex, [this](const std::string& channel, const void* data,
                                                                 int size) { OnMessage(channel, data, size); });
+  // The commands, for the command arrows: a handler of their own, so the view's channel list stays the one in
+  // channels.h.
+  command_subscription_ =
+      bus.Subscribe(std::string(lcm::kCommandChannelPrefix) + "[0-9]+",
+                    [this](const std::string& channel, const void* data, int size) { OnMessage(channel, data, size); });
 }
 
 void BusFrameCollector::OnMessage(const std::string& channel, const void* data, int size) {
@@ -99,6 +108,14 @@ void BusFrameCollector::OnMessage(const std::string& channel, const void* data, 
       return;
     }
     OnVerdict();
+  } else if (const std::optional<int> robot = lcm::RobotIdFromChannel(channel, lcm::kCommandChannelPrefix)) {
+    const bool decoded = lcm::Decode(data, size, &command_in_);
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!decoded) {
+      ++bad_messages_;
+      return;
+    }
+    OnCommand(*robot);
   } else if (const std::optional<int> sender = lcm::RobotIdFromChannel(channel, lcm::kRadioChannelPrefix)) {
     // Who spoke is in the channel's name; the payload is the algorithm's own
     // and is not decoded (a view draws, it does not listen).
@@ -131,9 +148,40 @@ void BusFrameCollector::StartRun(int64_t run_id) {
   }
   unfollowed_status_ = run_status_t();
   radio_senders_.clear();
+  command_v_.clear();
+  command_w_.clear();
+  command_step_.clear();
   marks_.clear();
   marks_located_ = 0;
   judged_.reset();
+  StartMetrics();
+}
+
+void BusFrameCollector::FollowMetrics(std::function<std::unique_ptr<StepMetrics>()> make) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  make_metrics_ = std::move(make);
+  StartMetrics();
+}
+
+void BusFrameCollector::StartMetrics() {
+  metrics_.reset();
+  if (!make_metrics_) return;
+  try {
+    metrics_ = make_metrics_();
+  } catch (const std::exception& e) {
+    spdlog::warn("dream view: the run's metrics are not plotted: {}", e.what());
+  }
+}
+
+void BusFrameCollector::ObserveMetrics() {
+  if (!metrics_) return;
+  try {
+    metrics_->Observe(poses_, obstacles_);
+  } catch (const std::exception& e) {
+    // The kind's code: its plots stop, the run is still drawn.
+    spdlog::warn("dream view: the run's metrics stop at step {}: {}", poses_.step, e.what());
+    metrics_.reset();
+  }
 }
 
 void BusFrameCollector::OnVerdict() {
@@ -156,6 +204,25 @@ void BusFrameCollector::OnVerdict() {
   ++version_;
 }
 
+void BusFrameCollector::OnCommand(int robot) {
+  // The run drawn's, for one of its robots on its own channel, answering a step up to the one drawn.
+  if (run_id_ == 0 || command_in_.run_id != run_id_ || command_in_.robot_id != robot || robot >= poses_.num_robots ||
+      command_in_.step > poses_.step) {
+    return;
+  }
+  const size_t i = static_cast<size_t>(robot);
+  if (command_step_.size() != static_cast<size_t>(poses_.num_robots)) {
+    command_v_.assign(static_cast<size_t>(poses_.num_robots), std::nan(""));
+    command_w_.assign(static_cast<size_t>(poses_.num_robots), std::nan(""));
+    command_step_.assign(static_cast<size_t>(poses_.num_robots), -1);
+  }
+  if (command_in_.step < command_step_[i]) return;
+  command_v_[i] = command_in_.v;
+  command_w_[i] = command_in_.w;
+  command_step_[i] = command_in_.step;
+  ++version_;
+}
+
 void BusFrameCollector::OnObstacles() {
   if (!choice_.OnMessageOf(obstacles_in_.run_id)) {
     std::swap(unfollowed_obstacles_, obstacles_in_);  // another world's: not drawn over this one
@@ -168,7 +235,8 @@ void BusFrameCollector::OnObstacles() {
 }
 
 void BusFrameCollector::OnPoses() {
-  switch (choice_.OnPoses(poses_in_.run_id, poses_in_.step)) {
+  const RunChoice::Decision decision = choice_.OnPoses(poses_in_.run_id, poses_in_.step);
+  switch (decision) {
     case RunChoice::Decision::kIgnore:
       return;  // another run, out of sequence, or not confirmed
     case RunChoice::Decision::kStartOver:
@@ -182,6 +250,7 @@ void BusFrameCollector::OnPoses() {
   // Swapped, not copied: the handler's cost per step stays a decode.
   if (poses_in_.step != poses_.step || poses_.num_robots == 0) std::swap(previous_poses_, poses_);
   std::swap(poses_, poses_in_);
+  if (decision != RunChoice::Decision::kResend) ObserveMetrics();  // each step once
   ++version_;
 }
 
@@ -239,6 +308,9 @@ bool BusFrameCollector::TakeFrame(ViewFrame* frame, uint64_t* version) {
   frame->theta_rad = poses_.theta;
   frame->v_mps = poses_.v;
   frame->w_radps = poses_.w;
+  const bool commands = command_v_.size() == poses_.x.size();
+  frame->command_v_mps = commands ? command_v_ : std::vector<double>();
+  frame->command_w_radps = commands ? command_w_ : std::vector<double>();
   const bool measured_now = measured_.num_robots == poses_.num_robots && measured_.step == poses_.step;
   frame->measured_x_m = measured_now ? measured_.x : std::vector<double>();
   frame->measured_y_m = measured_now ? measured_.y : std::vector<double>();
@@ -255,6 +327,17 @@ bool BusFrameCollector::TakeFrame(ViewFrame* frame, uint64_t* version) {
   frame->violations_located = marks_located_;
   frame->other_world = other_world_;
   frame->judged = judged_;
+  frame->metrics.clear();
+  if (metrics_) {
+    try {
+      metrics_->Read(&frame->metrics);
+    } catch (const std::exception& e) {
+      // The kind's code, on the pump's thread: never past it.
+      spdlog::warn("dream view: the run's metrics stop at step {}: {}", poses_.step, e.what());
+      metrics_.reset();
+      frame->metrics.clear();
+    }
+  }
   return true;
 }
 

@@ -12,6 +12,7 @@ namespace {
 
 constexpr int kMetres = 4;   // 0.1 mm
 constexpr int kRadians = 4;  // 1e-4 rad
+constexpr int kMetricDigits = 7;
 
 void NumberArray(JsonWriter& json, std::string_view key, const std::vector<double>& values, int decimals) {
   json.Key(key).BeginArray();
@@ -106,6 +107,10 @@ std::string FrameJson(const ViewFrame& frame) {
   NumberArray(json, "th", frame.theta_rad, kRadians);
   NumberArray(json, "v", frame.v_mps, kMetres);
   NumberArray(json, "w", frame.w_radps, kRadians);
+  if (!frame.command_v_mps.empty()) {
+    NumberArray(json, "cv", frame.command_v_mps, kMetres);
+    NumberArray(json, "cw", frame.command_w_radps, kRadians);
+  }
   if (!frame.measured_x_m.empty()) {
     NumberArray(json, "mx", frame.measured_x_m, kMetres);
     NumberArray(json, "my", frame.measured_y_m, kMetres);
@@ -130,6 +135,14 @@ std::string FrameJson(const ViewFrame& frame) {
   for (const ViolationMark& mark : frame.violations) AppendViolation(json, mark);
   json.EndArray();
   json.Key("located").Integer(frame.violations_located);
+  json.Key("metrics").BeginArray();
+  for (const MetricReading& m : frame.metrics) {
+    json.BeginObject().Key("name").String(m.name).Key("value").Significant(m.value, kMetricDigits);
+    if (m.threshold)
+      json.Key("threshold").Significant(*m.threshold, kMetricDigits).Key("label").String(m.threshold_label);
+    json.EndObject();
+  }
+  json.EndArray();
   json.Key("other_world");
   if (frame.other_world) {
     const ViewFrame::OtherWorld& other = *frame.other_world;

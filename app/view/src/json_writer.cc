@@ -49,6 +49,16 @@ JsonWriter& JsonWriter::Key(std::string_view key) {
   return *this;
 }
 
+JsonWriter& JsonWriter::Significant(double value, int digits) {
+  Separate();
+  char buffer[64];
+  const auto [end, error] =
+      std::isfinite(value) ? std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, digits)
+                           : std::to_chars_result{buffer, std::errc::value_too_large};
+  out_->append(error == std::errc() ? std::string_view(buffer, static_cast<size_t>(end - buffer)) : "null");
+  return *this;
+}
+
 JsonWriter& JsonWriter::Number(double value, int decimals) {
   Separate();
   if (!std::isfinite(value)) {

@@ -23,6 +23,8 @@ class JsonWriter {
   /// A number with `decimals` digits after the point (trailing zeros kept
   /// short); null when it is not finite.
   JsonWriter& Number(double value, int decimals);
+  /// A number with `digits` significant digits (metrics: 1e-5 and 20000 alike); null when not finite.
+  JsonWriter& Significant(double value, int digits);
   JsonWriter& Integer(int64_t value);
   JsonWriter& Bool(bool value);
   JsonWriter& Null();

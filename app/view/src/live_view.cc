@@ -21,6 +21,7 @@ LiveView::LiveView(lcm::LcmInterface& bus, ViewServer& server, ViewSetup setup)
       setup_(std::move(setup)),
       collector_(bus, setup_.world),
       pacer_(setup_.frame_rates, setup_.world.time_step_s) {
+  if (setup_.metrics) collector_.FollowMetrics(setup_.metrics);
   server_.SetSetup(SetupJson(setup_));
   server_.SetClientMessageHandler([this](const std::string& message) { OnPageMessage(message); });
   pump_ = std::thread([this] {

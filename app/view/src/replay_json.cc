@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <vector>
@@ -74,6 +75,37 @@ void VelocityArray(JsonWriter& json, const robot_poses_t& poses) {
   json.EndArray();
 }
 
+// Each frame's commands (DREAM_CMD_<id> answering its step): [v0, w0, v1, w1, ...], null for a
+// robot whose command the log has not; null for the whole frame when it has none.
+void CommandArrays(JsonWriter& json, const run_log::RunLog& log, const std::vector<size_t>& frames) {
+  const size_t robots = static_cast<size_t>(std::max(0, log.num_robots()));
+  std::map<int64_t, size_t> frame_of_step;
+  for (size_t k = 0; k < frames.size(); ++k) frame_of_step[log.poses()[frames[k]].step] = k;
+  std::vector<double> vw(frames.size() * robots * 2, std::nan(""));
+  std::vector<bool> any(frames.size(), false);
+  for (const run_log::RecordedCommand& c : log.commands()) {
+    const auto found = frame_of_step.find(c.step);
+    if (found == frame_of_step.end() || c.robot_id < 0 || static_cast<size_t>(c.robot_id) >= robots) continue;
+    const size_t at = (found->second * robots + static_cast<size_t>(c.robot_id)) * 2;
+    vw[at] = c.v_mps;
+    vw[at + 1] = c.w_radps;
+    any[found->second] = true;
+  }
+  json.Key("commands").BeginArray();
+  for (size_t k = 0; k < frames.size(); ++k) {
+    if (!any[k]) {
+      json.Null();
+      continue;
+    }
+    json.BeginArray();
+    for (size_t r = 0; r < robots; ++r) {
+      json.Number(vw[(k * robots + r) * 2], kMetres).Number(vw[(k * robots + r) * 2 + 1], kRadians);
+    }
+    json.EndArray();
+  }
+  json.EndArray();
+}
+
 void FrameArrays(JsonWriter& json, const run_log::RunLog& log, const std::vector<size_t>& frames) {
   std::map<int64_t, const robot_poses_t*> measured;
   for (const robot_poses_t& m : log.measured_poses()) measured[m.step] = &m;
@@ -89,6 +121,7 @@ void FrameArrays(JsonWriter& json, const run_log::RunLog& log, const std::vector
   json.Key("velocities").BeginArray();
   for (const size_t i : frames) VelocityArray(json, log.poses()[i]);
   json.EndArray();
+  CommandArrays(json, log, frames);
   json.Key("measured");
   if (measured.empty()) {
     json.Null();
@@ -171,9 +204,30 @@ void RadioTraffic(JsonWriter& json, const run_log::RunLog& log, const ViewSetup&
   json.Key("radio_cut").Bool(cut);
 }
 
+void MetricsOverTime(JsonWriter& json, const MetricTimeline* metrics) {
+  constexpr int kDigits = 7;
+  json.Key("metrics").BeginObject();
+  json.Key("stride").Integer(metrics ? metrics->stride() : 1);
+  json.Key("series").BeginArray();
+  static const MetricTimeline kNone;
+  for (const MetricTimeline::Series& s : (metrics ? *metrics : kNone).series()) {
+    json.BeginObject().Key("name").String(s.name);
+    json.Key("steps").BeginArray();
+    for (const auto& point : s.points) json.Integer(static_cast<int64_t>(point[0]));
+    json.EndArray().Key("values").BeginArray();
+    for (const auto& point : s.points) json.Significant(point[1], kDigits);
+    json.EndArray();
+    if (s.threshold) json.Key("threshold").Significant(*s.threshold, kDigits).Key("label").String(s.threshold_label);
+    json.EndObject();
+  }
+  json.EndArray();
+  json.EndObject();
+}
+
 }  // namespace
 
-std::string RunReplayJson(const run_log::RunLog& log, const ViewSetup& setup, size_t max_pose_values) {
+std::string RunReplayJson(const run_log::RunLog& log, const ViewSetup& setup, size_t max_pose_values,
+                          const MetricTimeline* metrics) {
   max_pose_values = std::max<size_t>(max_pose_values, 1);
   const size_t steps = log.poses().size();
   const size_t per_step = static_cast<size_t>(std::max(1, log.num_robots())) * 3;
@@ -207,6 +261,7 @@ std::string RunReplayJson(const run_log::RunLog& log, const ViewSetup& setup, si
   json.EndArray();
   // The run's last status: what only it says (actuator warnings, rejected commands, lost robots).
   WriteStatusJson(json, "final", log.last_status() ? ViewFrame::Status::Of(*log.last_status()) : ViewFrame::Status{});
+  MetricsOverTime(json, metrics);
   json.EndObject();
   return out;
 }

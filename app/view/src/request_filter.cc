@@ -26,6 +26,7 @@ const char* AssetOfPath(std::string_view path) {
   if (path == "/view.js") return "view.js";
   if (path == "/view.css") return "view.css";
   if (path == "/arena.js") return "arena.js";
+  if (path == "/metrics.js") return "metrics.js";
   return nullptr;
 }
 
@@ -95,7 +96,7 @@ RequestFilter::Decision RequestFilter::Decide(const Request& request) const {
     decision.asset = asset;
     return decision;
   }
-  return Refuse(404, "not found: dream view serves /, /view.js, /arena.js, /view.css, /ws and /run.json");
+  return Refuse(404, "not found: dream view serves /, /view.js, /arena.js, /metrics.js, /view.css, /ws and /run.json");
 }
 
 }  // namespace dream::view

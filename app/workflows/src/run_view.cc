@@ -6,13 +6,17 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <functional>
 #include <iostream>
+#include <memory>
 #include <stdexcept>
 #include <thread>
 #include <utility>
 
+#include "dream/agent_host/controller_factory.h"
 #include "dream/session/render_overlays.h"
 #include "dream/view/frame_json.h"
+#include "dream/workflows/kind_step_metrics.h"
 #include "dream/workflows/view_replay.h"
 
 namespace dream::workflows {
@@ -33,6 +37,17 @@ void AddDeclaredGoalsOfKind(const run_config::RunConfig& config, const std::stri
   }
 }
 
+/// The kind's metrics step by step, for the plots (a warning, and none, when the config's kind cannot tell).
+std::function<std::unique_ptr<view::StepMetrics>()> KindMetricsOf(const run_config::RunConfig& config) {
+  try {
+    auto factory = std::make_shared<const agent_host::ControllerFactory>(config);
+    return [factory]() -> std::unique_ptr<view::StepMetrics> { return std::make_unique<KindStepMetrics>(*factory); };
+  } catch (const std::exception& e) {
+    spdlog::warn("dream view: no metrics plotted: {}", e.what());
+    return nullptr;
+  }
+}
+
 }  // namespace
 
 view::ViewSetup ViewSetupOfConfig(const run_config::RunConfig& config, view::ViewSetup::Mode mode,
@@ -50,6 +65,7 @@ view::ViewSetup ViewSetupOfConfig(const run_config::RunConfig& config, view::Vie
   }
   AddDeclaredGoalsOfKind(config, python_runtime_dir, run_dir, &setup.overlays);
   setup.overlays.run_name = config.name;
+  setup.metrics = KindMetricsOf(config);
   return setup;
 }
 

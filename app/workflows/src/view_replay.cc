@@ -2,8 +2,10 @@
 
 #include <spdlog/spdlog.h>
 
+#include <array>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
@@ -16,6 +18,7 @@
 #include "dream/run_config/run_config.h"
 #include "dream/run_log/run_log.h"
 #include "dream/session/experiment_goal.h"
+#include "dream/view/metric_timeline.h"
 #include "dream/view/replay_json.h"
 #include "dream/workflows/run_view.h"
 
@@ -61,6 +64,47 @@ std::optional<std::string> MetricText(const nlohmann::json& value) {
   if (value.is_boolean()) return std::string(value.get<bool>() ? "true" : "false");
   if (value.is_string()) return value.get<std::string>().substr(0, kMaxChars);
   return std::nullopt;
+}
+
+/// summary.json's series ([[step, value], ...]: a Python controller's metrics() per step) not
+/// computed here, added whole.
+void AddSummarySeries(const std::string& log_path, view::MetricTimeline* timeline) {
+  const std::string summary_path = (fs::path(log_path).parent_path() / node::RunSummary::kFileName).string();
+  std::error_code error;
+  if (!fs::exists(summary_path, error)) return;
+  try {
+    const node::RunSummary summary = node::RunSummary::Read(summary_path);
+    if (!summary.metrics.is_object()) return;
+    for (const auto& [name, value] : summary.metrics.items()) {
+      if (!value.is_array() || value.empty()) continue;
+      std::vector<std::array<double, 2>> points;
+      for (const auto& point : value) {
+        if (!point.is_array() || point.size() != 2 || !point[0].is_number() || !point[1].is_number()) break;
+        points.push_back({point[0].get<double>(), point[1].get<double>()});
+      }
+      if (points.size() == value.size()) timeline->AddSeries(name, points);
+    }
+  } catch (const std::exception& e) {
+    spdlog::warn("{}: its metric series are not plotted: {}", summary_path, e.what());
+  }
+}
+
+/// The run's metrics over time: the kind's, computed on every step of the log (the setup's
+/// metrics, from the config), then summary.json's other series.
+view::MetricTimeline MetricsOfRun(const run_log::RunLog& log, const std::string& log_path,
+                                  const view::ViewSetup& setup) {
+  view::MetricTimeline timeline;
+  if (setup.metrics) {
+    try {
+      std::unique_ptr<view::StepMetrics> metrics = setup.metrics();
+      timeline = view::MetricTimeline::OfRun(log, *metrics);
+    } catch (const std::exception& e) {
+      spdlog::warn("dream view: the kind's metrics are not plotted: {}", e.what());
+      timeline = view::MetricTimeline();
+    }
+  }
+  AddSummarySeries(log_path, &timeline);
+  return timeline;
 }
 
 }  // namespace
@@ -128,7 +172,8 @@ ViewReplay ViewReplay::OfRun(const std::string& run, const std::string& config_p
   std::error_code error;
   const bool summary_beside = fs::exists(fs::path(log_path).parent_path() / node::RunSummary::kFileName, error);
   if (!replay.setup.judged && !summary_beside && log.verdict()) replay.setup.judged = JudgedOfVerdict(*log.verdict());
-  replay.run_json = view::RunReplayJson(log, replay.setup);
+  const view::MetricTimeline metrics = MetricsOfRun(log, log_path, replay.setup);
+  replay.run_json = view::RunReplayJson(log, replay.setup, view::kMaxPoseValues, &metrics);
   replay.steps = log.poses().size();
   return replay;
 }

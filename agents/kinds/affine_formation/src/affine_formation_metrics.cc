@@ -140,6 +140,12 @@ void AffineFormationMetrics::Write(agents::MetricsReport* report) const {
     v[name + "contact_steps"] = static_cast<double>(stats.contact_steps);
   }
   report->series["max_follower_error_m"] = series_;
+  const agents::MetricsReport::Threshold tolerance{
+      params_.tolerance_m, "goal: within " + agents::GoalJudgement::Metres(params_.tolerance_m)};
+  for (const char* name :
+       {"max_follower_error_m", "final_max_follower_error_m", "max_follower_error_after_convergence_m"}) {
+    report->thresholds[name] = tolerance;
+  }
 }
 
 // Goal: after convergence every follower stays within the tolerance.

@@ -27,6 +27,13 @@ class GoToGoalMetrics final : public agents::ExperimentMetrics {
   void Write(agents::MetricsReport* report) const override {
     report->values["final_max_goal_error_m"] = final_worst_m_;
     report->values["all_arrived_step"] = static_cast<double>(arrived_step_);
+    // One line when every robot has the same tolerance (the goal asks the worst to be within it).
+    bool one_tolerance = !params_.empty();
+    for (size_t i = 1; i < params_.size(); ++i) one_tolerance = one_tolerance && ToleranceOf(i) == ToleranceOf(0);
+    if (one_tolerance) {
+      report->thresholds["final_max_goal_error_m"] = {ToleranceOf(0),
+                                                      "goal: within " + agents::GoalJudgement::Metres(ToleranceOf(0))};
+    }
   }
   // Goal: every robot within its tolerance at once.
   std::optional<agents::GoalJudgement> JudgeGoal(const agents::MetricsReport& report) const override {

@@ -56,6 +56,12 @@ void LineFormationMetrics::Write(agents::MetricsReport* report) const {
   }
   report->series["line_straightness_error_m"] = std::move(straightness);
   report->series["spacing_error_m"] = std::move(spacing);
+  const agents::MetricsReport::Threshold converged{converged_m_,
+                                                   "converged: within " + agents::GoalJudgement::Metres(converged_m_)};
+  for (const char* name :
+       {"final_line_straightness_error_m", "final_spacing_error_m", "line_straightness_error_m", "spacing_error_m"}) {
+    report->thresholds[name] = converged;
+  }
 }
 
 // Goal: the line converged (both errors under converged_m from then on).

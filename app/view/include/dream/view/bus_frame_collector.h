@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -13,7 +14,9 @@
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
 #include "dream/run_verdict_t.hpp"
+#include "dream/velocity_command_t.hpp"
 #include "dream/view/run_choice.h"
+#include "dream/view/step_metrics.h"
 #include "dream/view/view_frame.h"
 #include "dream/view/violation_locator.h"
 #include "dream/world/world_params.h"
@@ -49,7 +52,8 @@ class BusFrameCollector {
   static constexpr size_t kMaxMarks = 64;
 
   /// Subscribes to DREAM_POSES, DREAM_MEASURED_POSES, DREAM_OBSTACLES,
-  /// DREAM_STATUS, DREAM_VERDICT and DREAM_RADIO_<n> on `bus`, until destroyed.
+  /// DREAM_STATUS, DREAM_VERDICT, DREAM_RADIO_<n> and DREAM_CMD_<n> on `bus`,
+  /// until destroyed.
   /// `now` is RunChoice's clock (tests give their own).
   BusFrameCollector(lcm::LcmInterface& bus, const world::WorldParams& world,
                     std::function<RunChoice::Clock::time_point()> now = &RunChoice::Clock::now);
@@ -58,6 +62,12 @@ class BusFrameCollector {
   /// false when nothing new arrived. A second world heard, or gone quiet,
   /// changes the frame too. Thread-safe against the handlers.
   bool TakeFrame(ViewFrame* frame, uint64_t* version);
+
+  /// The run's metrics, followed from the next run drawn on (and the run
+  /// drawn now, from its next step): a new one from `make` for each run,
+  /// fed each of its steps once (not resends) and read into each frame.
+  /// A kind's code that throws ends the metrics of that run, said once.
+  void FollowMetrics(std::function<std::unique_ptr<StepMetrics>()> make);
 
   /// The user's choice of another run heard (RunChoice::Choose): drawn from
   /// its next poses on. False for a run not heard, or the one drawn.
@@ -77,8 +87,13 @@ class BusFrameCollector {
   void OnStatus(const run_status_t& status);
   void StartRun(int64_t run_id);
   void OnObstacles();  // obstacles_in_ decoded
+  /// command_in_ decoded from DREAM_CMD_<robot>: each robot's newest command of the run drawn.
+  void OnCommand(int robot);
   /// verdict_in_ decoded: kept only when it is the drawn run's and that run is over.
   void OnVerdict();
+  /// The new step in poses_ (with obstacles_) to the run's metrics.
+  void ObserveMetrics();
+  void StartMetrics();
 
   mutable std::mutex mutex_;
   RunChoice choice_;
@@ -90,6 +105,7 @@ class BusFrameCollector {
   obstacles_t obstacles_in_{};
   run_status_t status_in_{};
   run_verdict_t verdict_in_{};
+  velocity_command_t command_in_{};
   // The newest state, under mutex_.
   uint64_t version_ = 0;
   int64_t run_id_ = 0;
@@ -106,13 +122,19 @@ class BusFrameCollector {
   obstacles_t unfollowed_obstacles_{};
   std::optional<ViewFrame::OtherWorld> other_world_;  // as last taken
   std::vector<int> radio_senders_;                    // since the last TakeFrame
-  std::optional<ViewFrame::Judged> judged_;           // the drawn run's DREAM_VERDICT
+  // Each robot's newest command (DREAM_CMD_<id>) for a step up to the one drawn; NaN: none yet.
+  std::vector<double> command_v_, command_w_;
+  std::vector<int64_t> command_step_;
+  std::optional<ViewFrame::Judged> judged_;  // the drawn run's DREAM_VERDICT
   int64_t verdicts_refused_ = 0;
   std::deque<ViolationMark> marks_;
   int64_t marks_located_ = 0;
   int64_t bad_messages_ = 0;
+  std::function<std::unique_ptr<StepMetrics>()> make_metrics_;
+  std::unique_ptr<StepMetrics> metrics_;  // the run drawn's, from its first step seen
   /// Last: unsubscribed first, so the bus never calls a half-destroyed collector.
   lcm::Subscription subscription_;
+  lcm::Subscription command_subscription_;
 };
 
 }  // namespace dream::view

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "dream/run_log/run_log.h"
+#include "dream/view/metric_timeline.h"
 #include "dream/view/view_setup.h"
 
 namespace dream::view {
@@ -22,7 +23,10 @@ inline constexpr size_t kMaxPoseValues = 6'000'000;
 /// A run larger than `max_pose_values` numbers keeps every k-th step (the
 /// first and the last always), and says so ("stride"); at most
 /// kMaxReplayMarks violations are listed (the first ones), the counts stay exact.
-std::string RunReplayJson(const run_log::RunLog& log, const ViewSetup& setup, size_t max_pose_values = kMaxPoseValues);
+/// `metrics`, when given: the run's metrics over time, as "metrics":
+/// {"stride", "series": [{"name", "steps", "values", "threshold", "label"}]}.
+std::string RunReplayJson(const run_log::RunLog& log, const ViewSetup& setup, size_t max_pose_values = kMaxPoseValues,
+                          const MetricTimeline* metrics = nullptr);
 /// Violations the replay lists at most.
 inline constexpr size_t kMaxReplayMarks = 2000;
 

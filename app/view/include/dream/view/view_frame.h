@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "dream/run_status_t.hpp"
+#include "dream/view/step_metrics.h"
 #include "dream/view/violation_mark.h"
 
 namespace dream::view {
@@ -64,6 +65,10 @@ struct ViewFrame {
   /// What each robot drove with during the step that led here (DREAM_POSES' v, w: after the
   /// wheels' saturation), for the page's velocity arrows and a robot's details.
   std::vector<double> v_mps, w_radps;
+  /// Each robot's newest command (DREAM_CMD_<id>: what its controller asked, before any
+  /// saturation) for a step up to this one, for the command arrows; NaN for a robot with none,
+  /// empty before any.
+  std::vector<double> command_v_mps, command_w_radps;
   std::vector<Obstacle> obstacles;
   Status status;
   /// Robots that spoke on the radio since the previous frame, ascending.
@@ -75,6 +80,9 @@ struct ViewFrame {
   /// and how many were located in the run so far (marks beyond the list were dropped).
   std::vector<ViolationMark> violations;
   int64_t violations_located = 0;
+  /// The run's metrics after this step (ViewSetup::metrics), for the page's
+  /// plots over time; empty without a config that says the kind.
+  std::vector<MetricReading> metrics;
   /// Another run heard lately on the bus and not drawn; none when alone.
   std::optional<OtherWorld> other_world;
 

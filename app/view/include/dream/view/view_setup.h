@@ -1,6 +1,8 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -8,6 +10,7 @@
 
 #include "dream/render/arena_overlays.h"
 #include "dream/view/frame_rates.h"
+#include "dream/view/step_metrics.h"
 #include "dream/world/world_params.h"
 
 namespace dream::view {
@@ -22,6 +25,9 @@ struct ViewSetup {
   world::WorldParams world;
   /// What the run's config adds; empty without a config (live from the bus).
   render::ArenaOverlays overlays;
+  /// Live: the run's metrics followed step by step (a new one for each run
+  /// drawn), for the page's plots over time; none without a config.
+  std::function<std::unique_ptr<StepMetrics>()> metrics;
   /// Where the frames come from, shown on the page (a URL or a run folder).
   std::string source;
   /// Live: frames sent to the browsers a second at most, by the run's speed

@@ -1,0 +1,142 @@
+// The command arrows: each robot's newest DREAM_CMD_<id> of the run drawn, live (BusFrameCollector)
+// and in replay (RunReplayJson's "commands").
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "dream/lcm/lcm_bus.h"
+#include "dream/lcm/lcm_typed.h"
+#include "dream/velocity_command_t.hpp"
+#include "dream/view/bus_frame_collector.h"
+#include "dream/view/frame_json.h"
+#include "dream/view/replay_json.h"
+#include "synthetic_run_log.h"
+#include "temp_folder.h"
+
+namespace dream::view {
+namespace {
+
+using dream::testing::SyntheticRunLog;
+using dream::testing::TempFolder;
+
+velocity_command_t Command(int64_t run_id, int64_t step, int32_t robot, double v, double w) {
+  velocity_command_t command{};
+  command.run_id = run_id;
+  command.step = step;
+  command.utime = step * 33000;
+  command.robot_id = robot;
+  command.agent_id = 1;
+  command.v = v;
+  command.w = w;
+  return command;
+}
+
+class CommandArrowsTest : public ::testing::Test {
+ protected:
+  void Step(int64_t run_id, int64_t step) {
+    robot_poses_t poses{};
+    poses.run_id = run_id;
+    poses.step = step;
+    poses.num_robots = 2;
+    poses.x = {0.0, 0.5};
+    poses.y = {0.0, 0.0};
+    poses.theta = {0.0, 0.0};
+    poses.v = {0.0, 0.0};
+    poses.w = {0.0, 0.0};
+    run_status_t status{};
+    status.run_id = run_id;
+    status.step = step;
+    status.state = run_status_t::RUNNING;
+    status.num_robots = 2;
+    obstacles_t obstacles{};
+    obstacles.run_id = run_id;
+    obstacles.step = step;
+    lcm::Publish(bus_, "DREAM_OBSTACLES", obstacles);
+    lcm::Publish(bus_, "DREAM_STATUS", status);
+    lcm::Publish(bus_, "DREAM_POSES", poses);
+    Handle();
+  }
+  void Send(const std::string& channel, const velocity_command_t& command) {
+    lcm::Publish(bus_, channel, command);
+    Handle();
+  }
+  void Handle() {
+    while (bus_.HandleSubscriptions(0) > 0) {
+    }
+  }
+
+  lcm::LcmBus bus_{"memq://"};
+  BusFrameCollector collector_{bus_, world::WorldParams()};
+  uint64_t version_ = 0;
+  ViewFrame frame_;
+};
+
+TEST_F(CommandArrowsTest, EachRobotsNewestCommandOfTheRunIsInTheFrame) {
+  Step(4, 0);
+  Step(4, 1);
+  Send("DREAM_CMD_0", Command(4, 1, 0, 0.1, 0.5));
+  ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
+  ASSERT_EQ(frame_.command_v_mps.size(), 2u);
+  EXPECT_EQ(frame_.command_v_mps[0], 0.1);
+  EXPECT_EQ(frame_.command_w_radps[0], 0.5);
+  EXPECT_TRUE(std::isnan(frame_.command_v_mps[1]));  // robot 1 has said nothing yet
+  const nlohmann::json json = nlohmann::json::parse(FrameJson(frame_));
+  EXPECT_EQ(json["cv"][0], 0.1);
+  EXPECT_TRUE(json["cv"][1].is_null());
+}
+
+TEST_F(CommandArrowsTest, CommandsNotOfTheRunDrawnOrItsRobotsOrAheadOfItAreNotDrawn) {
+  Step(4, 0);
+  Step(4, 1);
+  Send("DREAM_CMD_0", Command(4, 1, 0, 0.1, 0.0));
+  Send("DREAM_CMD_0", Command(5, 1, 0, 0.9, 0.0));  // another run
+  Send("DREAM_CMD_1", Command(4, 1, 0, 0.9, 0.0));  // robot 0's, on robot 1's channel
+  Send("DREAM_CMD_0", Command(4, 7, 0, 0.9, 0.0));  // a step not drawn yet
+  Send("DREAM_CMD_0", Command(4, 0, 0, 0.9, 0.0));  // older than the one kept
+  Send("DREAM_CMD_9", Command(4, 1, 9, 0.9, 0.0));  // no robot of the run
+  Send("DREAM_CMD_1", Command(4, 1, 1, 0.0, 0.0));
+  ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
+  ASSERT_EQ(frame_.command_v_mps.size(), 2u);
+  EXPECT_EQ(frame_.command_v_mps[0], 0.1);
+  EXPECT_EQ(frame_.command_v_mps[1], 0.0);
+  bus_.Publish("DREAM_CMD_0", "not a command", 13);
+  Handle();
+  EXPECT_EQ(collector_.bad_messages(), 1);
+}
+
+TEST_F(CommandArrowsTest, ANewRunStartsWithoutCommands) {
+  Step(4, 0);
+  Send("DREAM_CMD_0", Command(4, 0, 0, 0.1, 0.0));
+  lcm::Publish(bus_, "DREAM_STATUS", [] {
+    run_status_t finished{};
+    finished.run_id = 4;
+    finished.state = run_status_t::FINISHED;
+    return finished;
+  }());
+  Step(6, 0);
+  ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
+  EXPECT_EQ(frame_.run_id, 6);
+  EXPECT_TRUE(frame_.command_v_mps.empty());
+  EXPECT_FALSE(nlohmann::json::parse(FrameJson(frame_)).contains("cv"));
+}
+
+TEST(ReplayCommandsTest, EachFrameHasTheCommandsAnsweringItsStep) {
+  TempFolder folder;
+  SyntheticRunLog log = SyntheticRunLog::TwoRobots(folder / "run.lcmlog", 3);
+  log.MessageOn("DREAM_CMD_0", Command(0, 2, 0, 0.12, -0.5));
+  log.MessageOn("DREAM_CMD_1", Command(0, 2, 1, 0.05, 0.25));
+  log.MessageOn("DREAM_CMD_1", Command(0, 3, 1, 0.07, 0.0));
+  const run_log::RunLog run = run_log::RunLog::Read(log.Write());
+  ASSERT_EQ(run.commands().size(), 3u) << "the synthetic log's run id";
+  const nlohmann::json replay = nlohmann::json::parse(RunReplayJson(run, ViewSetup()));
+  ASSERT_EQ(replay["commands"].size(), 4u);
+  EXPECT_TRUE(replay["commands"][0].is_null());  // no command answers step 0
+  EXPECT_EQ(replay["commands"][2], nlohmann::json::parse("[0.12, -0.5, 0.05, 0.25]"));
+  EXPECT_TRUE(replay["commands"][3][0].is_null());  // robot 0 said nothing at step 3
+  EXPECT_EQ(replay["commands"][3][2], 0.07);
+}
+
+}  // namespace
+}  // namespace dream::view
