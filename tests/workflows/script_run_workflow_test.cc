@@ -129,7 +129,7 @@ TEST(ScriptRunWorkflowTest, AConfigNamingTheScriptKeepsItsKeysAndTakesTheHellosR
   EXPECT_EQ(config["initial_poses"][0][0].as<double>(), 0.1 + 0.2);
   EXPECT_EQ(config["initial_poses"][0][1].as<double>(), -1.0 / 3.0);
   EXPECT_EQ(config["initial_poses"][1][2].as<double>(), -2.0);
-  EXPECT_EQ(config["world"]["max_abs_v_mps"].as<double>(), 1e12);
+  EXPECT_EQ(config["world"]["command_limits"].as<std::string>(), "official");  // the base config's keys kept
 }
 
 TEST(ScriptRunWorkflowTest, TheRunIsNamedAfterTheScript) {
