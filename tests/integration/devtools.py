@@ -147,3 +147,21 @@ def chromium_argv(user_data_dir, url):
             f"--user-data-dir={user_data_dir}", "--window-size=1280,800", "--no-first-run",
             "--no-default-browser-check", "--disable-extensions", "--disable-background-networking",
             "--disable-component-update", "--disable-sync", "--disable-dev-shm-usage", url]
+
+
+def view_state(page):
+    """The view page's state (window.dreamView.state), or None before the page has one."""
+    return page.evaluate("window.dreamView ? window.dreamView.state : null")
+
+
+def wait_for_view(page, what, predicate, timeout):
+    """The page's state once `predicate` holds; `timeout` only turns a page that never gets there
+    into a failure (generous: Chromium on a loaded machine can take seconds per frame)."""
+    deadline = time.monotonic() + timeout
+    last = None
+    while time.monotonic() < deadline:
+        last = view_state(page)
+        if last and predicate(last):
+            return last
+        time.sleep(0.03)
+    fail(f"the page did not show {what} within {timeout} s; its state: {json.dumps(last)[:800]}")

@@ -207,6 +207,27 @@ def tail(text, chars=400):
     return text[-chars:] if text else "(no output)"
 
 
+def require_script_python():
+    """Skips (exit 77) without what DREAM's rps needs in the tests' Python: numpy and cvxopt."""
+    try:
+        import cvxopt  # noqa: F401
+        import numpy  # noqa: F401
+    except ImportError:
+        print("SKIP: needs numpy and cvxopt (Debian: python3-numpy python3-cvxopt)")
+        sys.exit(77)
+
+
+def script_under_test(ctx, name, text):
+    """A Robotarium script for `dream run SCRIPT.py`, written into the test's folder, run by this
+    Python (DREAM_PYTHON); skips without numpy and cvxopt. Returns its path."""
+    require_script_python()
+    os.environ["DREAM_PYTHON"] = sys.executable
+    script = ctx.path(name)
+    with open(script, "w") as f:
+        f.write(text)
+    return script
+
+
 def read_summary(out_dir):
     path = os.path.join(out_dir, "summary.json")
     check(os.path.isfile(path), f"{path} is missing")

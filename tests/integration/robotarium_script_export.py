@@ -17,9 +17,8 @@ Usage: robotarium_script_export.py --dream BIN --source DIR
 
 import json
 import os
-import sys
 
-from dreamtest import arguments, check, main, tail
+from dreamtest import arguments, check, main, script_under_test, tail
 
 SCRIPT = """
 import numpy as np
@@ -76,16 +75,7 @@ def check_submission(ctx, args, export_dir, name, extra, env):
 
 def test(ctx):
     args = arguments()
-    try:
-        import cvxopt  # noqa: F401
-        import numpy  # noqa: F401
-    except ImportError:
-        print("SKIP: needs numpy and cvxopt (Debian: python3-numpy python3-cvxopt)")
-        sys.exit(77)
-    os.environ["DREAM_PYTHON"] = sys.executable
-    script = ctx.path("upload_me.py")
-    with open(script, "w") as f:
-        f.write(SCRIPT)
+    script = script_under_test(ctx, "upload_me.py", SCRIPT)
     export_dir = ctx.path("export")
     code, output = ctx.run([args.dream, "export", script, "--out", export_dir], timeout=120)
     check(code == 0 and "main file upload_me.py" in output, f"dream export SCRIPT.py: exit {code}: {tail(output)}")

@@ -18,9 +18,8 @@ Usage: robotarium_script_sweep.py --dream BIN --source DIR
 
 import csv
 import os
-import sys
 
-from dreamtest import argument_parser, check, main, tail
+from dreamtest import argument_parser, check, main, script_under_test, tail
 
 SCRIPT = """
 import numpy as np
@@ -73,16 +72,7 @@ def check_runs(ctx, out):
 
 def test(ctx):
     args = argument_parser().parse_args()
-    try:
-        import cvxopt  # noqa: F401
-        import numpy  # noqa: F401
-    except ImportError:
-        print("SKIP: needs numpy and cvxopt (Debian: python3-numpy python3-cvxopt)")
-        sys.exit(77)
-    os.environ["DREAM_PYTHON"] = sys.executable
-    script = ctx.path("robotarium_script_sweep_demo.py")
-    with open(script, "w") as f:
-        f.write(SCRIPT.replace("STEPS", str(STEPS)))
+    script = script_under_test(ctx, "robotarium_script_sweep_demo.py", SCRIPT.replace("STEPS", str(STEPS)))
     out = ctx.path("sweep")
     code, output = ctx.run([args.dream, "sweep", script, "--seeds", "1-3", "--set", "world.realism=lab",
                             "--jobs", "2", "--out", out], timeout=900)

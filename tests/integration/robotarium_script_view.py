@@ -20,11 +20,10 @@ import json
 import os
 import re
 import signal
-import sys
 import urllib.request
 
 from devtools import WebSocket
-from dreamtest import arguments, check, main, read_summary, tail
+from dreamtest import arguments, check, main, read_summary, script_under_test, tail
 
 URL = re.compile(r"open (http://127\.0\.0\.1:(\d+)/)")
 SCRIPT = """
@@ -66,16 +65,7 @@ def check_replay(setup, run_dir, port, where):
 
 def test(ctx):
     args = arguments()
-    try:
-        import cvxopt  # noqa: F401
-        import numpy  # noqa: F401
-    except ImportError:
-        print("SKIP: needs numpy and cvxopt (Debian: python3-numpy python3-cvxopt)")
-        sys.exit(77)
-    os.environ["DREAM_PYTHON"] = sys.executable
-    script = ctx.path("watched_script.py")
-    with open(script, "w") as f:
-        f.write(SCRIPT)
+    script = script_under_test(ctx, "watched_script.py", SCRIPT)
 
     # show_figure=True without --view: no page; the finished run replays with dream view.
     plain = ctx.path("plain")

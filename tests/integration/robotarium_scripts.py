@@ -27,7 +27,7 @@ import json
 import os
 import sys
 
-from dreamtest import argument_parser, check, main, tail
+from dreamtest import argument_parser, check, main, require_script_python, tail
 
 TOLERANCE = 1e-9
 SEED = 7
@@ -277,12 +277,7 @@ def test(ctx):
     if not os.path.isfile(os.path.join(simulator, "rps", "robotarium.py")):
         print("SKIP: set ROBOTARIUM_PYTHON_SIMULATOR to a checkout of the official simulator")
         sys.exit(77)
-    try:
-        import cvxopt  # noqa: F401
-        import numpy  # noqa: F401
-    except ImportError:
-        print("SKIP: needs numpy and cvxopt (Debian: python3-numpy python3-cvxopt)")
-        sys.exit(77)
+    require_script_python()
     sys.path.insert(0, os.path.join(args.source, "python"))
     stub = write_stub(ctx)
     try:

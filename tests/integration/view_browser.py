@@ -38,7 +38,7 @@ import re
 import signal
 import time
 
-from devtools import Page, chromium_argv, devtools_port
+from devtools import Page, chromium_argv, devtools_port, view_state, wait_for_view
 from dreamtest import (Udpm, argument_parser, check, fail, import_types, main, read_events, read_summary,
                        require_private_netns)
 
@@ -70,23 +70,6 @@ controller:
 FORGED_RUN_ID = 0x0BADC0FFEE
 URL = re.compile(r"open (http://127\.0\.0\.1:\d+/)")
 ARENA_X = 1.6
-
-
-def state(page):
-    return page.evaluate("window.dreamView ? window.dreamView.state : null")
-
-
-def wait_for(page, what, predicate, timeout):
-    """The page's state once `predicate` holds; `timeout` only turns a page that never gets there
-    into a failure (generous: Chromium on a loaded machine can take seconds per frame)."""
-    deadline = time.monotonic() + timeout
-    last = None
-    while time.monotonic() < deadline:
-        last = state(page)
-        if last and predicate(last):
-            return last
-        time.sleep(0.05)
-    fail(f"the page did not show {what} within {timeout} s; its state: {json.dumps(last)[:600]}")
 
 
 def wait_for_page(page, what, expression, predicate, timeout):
@@ -176,7 +159,7 @@ def watch_live(ctx, args, page, config, run_dir):
     steps_seen, flash_shot = [], False
     deadline = time.monotonic() + 40
     while ctx.procs["launch"][0].poll() is None and time.monotonic() < deadline:
-        shown = state(page)
+        shown = view_state(page)
         if shown and shown["step"] >= 0 and (not steps_seen or steps_seen[-1] != shown["step"]):
             steps_seen.append(shown["step"])
         if shown and shown["flashing"] > 0 and not flash_shot:
@@ -210,10 +193,10 @@ def check_forged_run_after_the_end(dream, page, final, artifacts):
     while time.monotonic() < deadline and not (told and line):
         bus.publish("DREAM_POSES", forged.encode())
         time.sleep(0.1)
-        shown = state(page)
+        shown = view_state(page)
         told = shown if shown and shown.get("otherWorld") else told
         line = page.evaluate(line_js) or line
-    check(told is not None and line, f"the page never said another world is on the bus: {json.dumps(state(page))[:600]}")
+    check(told is not None and line, f"the page never said another world is on the bus: {json.dumps(view_state(page))[:600]}")
     check(told["otherWorld"]["run"] == f"{FORGED_RUN_ID:016x}" and told["otherWorld"]["step"] == 0,
           f"the page names another world {told['otherWorld']}, not the forged run {FORGED_RUN_ID:016x} at step 0")
     check(told["run"] == final["run"] and told["step"] == STEPS and told["violations"] == final["violations"],
@@ -235,7 +218,7 @@ def check_users_choice(dream, page):
     while time.monotonic() < deadline:
         bus.publish("DREAM_POSES", other.encode())
         time.sleep(0.1)
-        shown = state(page)
+        shown = view_state(page)
         if shown and shown["run"] == str(FORGED_RUN_ID):
             check(clicked, "the page drew the other run before the user chose it")
             check(shown["step"] == 7 and len(shown["robots"]) == 1 and not shown["violations"],
@@ -262,7 +245,7 @@ def check_judged_live(page, summary, where):
     """Issue 33: a run watched live from another process ends on the world's DREAM_VERDICT, sent once
     summary.json is written: the page's data-verdict, its label and its goal line are summary.json's,
     not the counts' 'verdict so far'."""
-    judged = wait_for(page, f"{where}: the world's verdict", lambda s: s["counts"] and s["counts"].get("judged"),
+    judged = wait_for_view(page, f"{where}: the world's verdict", lambda s: s["counts"] and s["counts"].get("judged"),
                       30)["counts"]["judged"]
     check(judged["verdict"] == summary["verdict"],
           f"{where}: the page ends on {judged['verdict']}, summary.json says {summary['verdict']}")
@@ -282,7 +265,7 @@ def check_live_metrics(page, metrics):
     kind's figure at the last step is summary.json's (it depends only on that step's poses), with
     the goal's tolerance as its threshold."""
     name = "final_max_goal_error_m"
-    shown = wait_for(page, f"{name} plotted at the run's last step",
+    shown = wait_for_view(page, f"{name} plotted at the run's last step",
                      lambda s: any(m["name"] == name and m["step"] == STEPS for m in s.get("metrics") or []), 10)
     figure = next(m for m in shown["metrics"] if m["name"] == name)
     check(abs(figure["value"] - metrics[name]) <= 1e-6 * max(1.0, abs(metrics[name])),
@@ -294,7 +277,7 @@ def check_live(ctx, args, dream, page, config, run_dir):
     """dream launch watched live; then the same run's log played with lcm-logplayer. Returns its poses."""
     steps_seen = watch_live(ctx, args, page, config, run_dir)
     poses = poses_by_step(dream, os.path.join(run_dir, "run.lcmlog"))
-    final = wait_for(page, f"the run's last step ({STEPS})", lambda s: s["step"] == STEPS, 30)
+    final = wait_for_view(page, f"the run's last step ({STEPS})", lambda s: s["step"] == STEPS, 30)
     check_robots(final, poses, "live")
     check_marks(final["violations"], poses, "live")
     check_episodes(page, final, "live")
@@ -311,8 +294,8 @@ def check_live(ctx, args, dream, page, config, run_dir):
     # A lab run, or any run log, watched by playing it on the bus.
     ctx.start("logplayer", ["lcm-logplayer", f"--lcm-url={os.environ['LCM_DEFAULT_URL']}", "-s", "4",
                             os.path.join(run_dir, "run.lcmlog")])
-    wait_for(page, "the played log from its start", lambda s: s["step"] < STEPS / 2, 30)
-    played = wait_for(page, "the played log to its end", lambda s: s["step"] == STEPS, 20)
+    wait_for_view(page, "the played log from its start", lambda s: s["step"] < STEPS / 2, 30)
+    played = wait_for_view(page, "the played log to its end", lambda s: s["step"] == STEPS, 20)
     check_judged_live(page, read_summary(run_dir), "lcm-logplayer (the log's DREAM_VERDICT)")
     check_robots(played, poses, "lcm-logplayer")
     check_marks(played["violations"], poses, "lcm-logplayer")
@@ -326,7 +309,7 @@ def check_replay(ctx, args, page, run_dir, poses):
     ctx.start("replay", [args.dream, "view", run_dir, "--port", "0"])
     ctx.wait_for_output("replay", URL.pattern, 10)
     page.navigate(URL.search(ctx.output("replay")).group(1))
-    shown = wait_for(page, "the replay loaded", lambda s: s["mode"] == "replay" and "replay" in s, 15)
+    shown = wait_for_view(page, "the replay loaded", lambda s: s["mode"] == "replay" and "replay" in s, 15)
     check(shown["replay"]["frames"] == STEPS + 1 and shown["step"] == 0,
           f"the replay starts at step {shown['step']} of {shown['replay']['frames']} frames; expected 0 of {STEPS + 1}")
     check(shown["violations"] == [] and shown["verdict"] == "clean", f"step 0 shows violations: {shown['violations']}")
@@ -335,18 +318,18 @@ def check_replay(ctx, args, page, run_dir, poses):
         page.evaluate(f"document.getElementById('{element_id}').click()")
 
     click("play")
-    wait_for(page, "play advancing the timeline", lambda s: s["replay"]["playing"] and s["replay"]["index"] > 3, 30)
+    wait_for_view(page, "play advancing the timeline", lambda s: s["replay"]["playing"] and s["replay"]["index"] > 3, 30)
     click("play")  # pause
-    paused = wait_for(page, "pause", lambda s: not s["replay"]["playing"], 20)
+    paused = wait_for_view(page, "pause", lambda s: not s["replay"]["playing"], 20)
     time.sleep(0.3)
-    check(state(page)["replay"]["index"] == paused["replay"]["index"], "the timeline moved while paused")
+    check(view_state(page)["replay"]["index"] == paused["replay"]["index"], "the timeline moved while paused")
     click("step-forward")
-    wait_for(page, "one step forward", lambda s: s["replay"]["index"] == paused["replay"]["index"] + 1, 20)
+    wait_for_view(page, "one step forward", lambda s: s["replay"]["index"] == paused["replay"]["index"] + 1, 20)
     click("step-back")
-    wait_for(page, "one step back", lambda s: s["replay"]["index"] == paused["replay"]["index"], 20)
+    wait_for_view(page, "one step back", lambda s: s["replay"]["index"] == paused["replay"]["index"], 20)
     page.evaluate("(() => { const s = document.getElementById('scrub'); s.value = '200';"
                   " s.dispatchEvent(new Event('input')); })()")
-    scrubbed = wait_for(page, "the scrubbed step", lambda s: s["step"] == 200, 20)
+    scrubbed = wait_for_view(page, "the scrubbed step", lambda s: s["step"] == 200, 20)
     check_robots(scrubbed, poses, "replay at step 200")
     check_marks(scrubbed["violations"], poses, "replay at step 200")
     check(max(m["step"] for m in scrubbed["violations"]) <= 200, "the replay marks violations after its step")
@@ -357,7 +340,7 @@ def check_replay(ctx, args, page, run_dir, poses):
     check_inspection(page, poses, args.artifacts)
     page.evaluate("(() => { const s = document.getElementById('speed'); s.value = '4';"
                   " s.dispatchEvent(new Event('change')); })()")
-    wait_for(page, "speed 4x", lambda s: s["replay"]["speed"] == 4, 20)
+    wait_for_view(page, "speed 4x", lambda s: s["replay"]["speed"] == 4, 20)
     page.screenshot(os.path.join(args.artifacts, "replay.png"))
 
 
@@ -380,7 +363,7 @@ def check_inspection(page, poses, artifacts):
     check(at is not None, "robot 1 has no place on the page")
     mouse(page, "mousePressed", at[0], at[1], button="left", clickCount=1)
     mouse(page, "mouseReleased", at[0], at[1], button="left", clickCount=1)
-    shown = wait_for(page, "robot 1 picked by a click", lambda s: (s["selected"] or {}).get("id") == 1, 10)
+    shown = wait_for_view(page, "robot 1 picked by a click", lambda s: (s["selected"] or {}).get("id") == 1, 10)
     picked, truth = shown["selected"], poses[shown["step"]]
     check(abs(picked["x"] - truth.x[1]) < 1e-4 and abs(picked["y"] - truth.y[1]) < 1e-4,
           f"robot 1's details say ({picked['x']}, {picked['y']}), the log ({truth.x[1]:.4f}, {truth.y[1]:.4f})")
@@ -395,22 +378,22 @@ def check_inspection(page, poses, artifacts):
           f"the side panel's robot details: {text!r}")
     page.evaluate("(() => { document.getElementById('show-velocities').checked = true; })()")
     mouse(page, "mouseWheel", at[0], at[1], deltaX=0, deltaY=-120)
-    zoomed = wait_for(page, "the wheel zooming in", lambda s: s["camera"]["zoom"] > 1.1, 10)
+    zoomed = wait_for_view(page, "the wheel zooming in", lambda s: s["camera"]["zoom"] > 1.1, 10)
     page.screenshot(os.path.join(artifacts, "inspect.png"))
     after = page.evaluate("window.dreamView.pixelOf(1)")
     check(abs(after[0] - at[0]) < 1.5 and abs(after[1] - at[1]) < 1.5,
           f"zooming about robot 1 (zoom {zoomed['camera']['zoom']:.2f}) moved it from {at} to {after}")
     key(page, "f", "KeyF")
-    wait_for(page, "f fitting the arena again", lambda s: s["camera"]["zoom"] == 1, 10)
+    wait_for_view(page, "f fitting the arena again", lambda s: s["camera"]["zoom"] == 1, 10)
     index = shown["replay"]["index"]
     key(page, "ArrowRight", "ArrowRight")
-    wait_for(page, "the right arrow stepping", lambda s: s["replay"]["index"] == index + 1, 10)
+    wait_for_view(page, "the right arrow stepping", lambda s: s["replay"]["index"] == index + 1, 10)
     key(page, " ", "Space")
-    wait_for(page, "space playing", lambda s: s["replay"]["playing"], 10)
+    wait_for_view(page, "space playing", lambda s: s["replay"]["playing"], 10)
     key(page, " ", "Space")
-    wait_for(page, "space pausing", lambda s: not s["replay"]["playing"], 10)
+    wait_for_view(page, "space pausing", lambda s: not s["replay"]["playing"], 10)
     key(page, "Escape", "Escape")
-    wait_for(page, "Escape letting robot 1 go", lambda s: s["selected"] is None, 10)
+    wait_for_view(page, "Escape letting robot 1 go", lambda s: s["selected"] is None, 10)
 
 
 def check_embedded(ctx, args, dream, page, config):
@@ -420,7 +403,7 @@ def check_embedded(ctx, args, dream, page, config):
                            "--pace", "4"])
     ctx.wait_for_output("embedded", URL.pattern, 10)
     page.navigate(URL.search(ctx.output("embedded")).group(1))
-    ended = wait_for(page, "dream run --view to its end, replayed", lambda s: s["mode"] == "replay" and
+    ended = wait_for_view(page, "dream run --view to its end, replayed", lambda s: s["mode"] == "replay" and
                      s["step"] == STEPS and s.get("state") == "finished", 30)
     ctx.wait_for_output("embedded", r"a browser is watching: serving until Ctrl-C", 10)
     summary = read_summary(embedded_dir)
@@ -459,7 +442,7 @@ def test(ctx):
     live_url = URL.search(ctx.output("view")).group(1)
     ctx.start("chromium", chromium_argv(ctx.path("chrome"), live_url), own_group=True)
     page = Page(devtools_port(ctx.path("chrome")))
-    wait_for(page, "a connected live page", lambda s: s["connected"] and s["mode"] == "live", 20)
+    wait_for_view(page, "a connected live page", lambda s: s["connected"] and s["mode"] == "live", 20)
 
     poses = check_live(ctx, args, dream, page, config, run_dir)
     check_replay(ctx, args, page, run_dir, poses)

@@ -26,8 +26,8 @@ import re
 import signal
 import time
 
-from devtools import Page, chromium_argv, devtools_port
-from dreamtest import argument_parser, check, fail, import_types, main, read_events, read_summary
+from devtools import Page, chromium_argv, devtools_port, view_state, wait_for_view
+from dreamtest import argument_parser, check, import_types, main, read_events, read_summary
 
 STEPS = 300
 TOLERANCE = 0.05
@@ -56,21 +56,6 @@ controller:
 URL = re.compile(r"open (http://127\.0\.0\.1:\d+/)")
 GOAL = "final_max_goal_error_m"
 SAFETY = "min_pairwise_distance_m"
-
-
-def state(page):
-    return page.evaluate("window.dreamView ? window.dreamView.state : null")
-
-
-def wait_for(page, what, predicate, timeout):
-    deadline = time.monotonic() + timeout
-    last = None
-    while time.monotonic() < deadline:
-        last = state(page)
-        if last and predicate(last):
-            return last
-        time.sleep(0.03)
-    fail(f"the page did not show {what} within {timeout} s; its state: {json.dumps(last)[:800]}")
 
 
 def figure(shown, name):
@@ -138,7 +123,7 @@ def watch_live(ctx, args, page):
     drawn = shot = False
     deadline = time.monotonic() + 120
     while time.monotonic() < deadline:
-        shown = state(page)
+        shown = view_state(page)
         if shown and shown.get("mode") == "replay":
             break
         goal = figure(shown or {}, GOAL)
@@ -166,7 +151,7 @@ def watch_live(ctx, args, page):
 
 def check_end(page, run_dir):
     """The replay at the run's last step: every figure plotted is summary.json's."""
-    ended = wait_for(page, "the run's replay at its last step",
+    ended = wait_for_view(page, "the run's replay at its last step",
                      lambda s: s["mode"] == "replay" and s["step"] == STEPS and s.get("metrics"), 60)
     summary = read_summary(run_dir)["metrics"]
     for m in ended["metrics"]:
@@ -185,7 +170,7 @@ def check_replay_timeline(page, samples, commands, artifacts):
     step = sorted(samples)[len(samples) // 2]
     page.evaluate(f"(() => {{ const s = document.getElementById('scrub'); s.value = '{step}';"
                   " s.dispatchEvent(new Event('input')); })()")
-    shown = wait_for(page, f"the plots at step {step}",
+    shown = wait_for_view(page, f"the plots at step {step}",
                      lambda s: s["step"] == step and (s.get("metricPlot") or {}).get("step") == step, 20)
     for name, value in samples[step].items():
         m = figure(shown, name)
