@@ -94,15 +94,16 @@ class Context:
     def path(self, *parts):
         return os.path.join(self.dir, *parts)
 
-    def start(self, name, argv, env=None, own_group=False):
+    def start(self, name, argv, env=None, own_group=False, cwd=None):
         """Starts argv with stdout+stderr into <tmp>/<name>.out; returns the Popen. With own_group the
         child leads a new process group, and close() ends that whole group (for wrappers such as
-        xvfb-run whose children could outlive them)."""
+        xvfb-run whose children could outlive them). `cwd`: where files the child writes by
+        relative path land (the test's folder, never the source tree)."""
         check(name not in self.procs, f"internal: process name {name} used twice")
         out_path = self.path(name + ".out")
         out = open(out_path, "w")
         proc = subprocess.Popen(argv, stdout=out, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
-                                env=env, start_new_session=own_group)
+                                env=env, start_new_session=own_group, cwd=cwd)
         out.close()
         self.procs[name] = (proc, out_path)
         if own_group:

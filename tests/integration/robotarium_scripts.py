@@ -197,7 +197,11 @@ def run_official(ctx, simulator, stub, script, name, options):
     out = ctx.path(name + "_official.json")
     env = dict(os.environ, PYTHONPATH=python_path(stub, options, simulator), MPLBACKEND="Agg")
     figure = "figure" if options["figure"] else "none"
-    ctx.start(name + "_official", [sys.executable, wrapper, str(options["seed"]), script, out, figure], env=env)
+    # In a folder of its own: examples np.save into the working directory (DREAM's runs into the run folder).
+    cwd = ctx.path(name + "_official_cwd")
+    os.makedirs(cwd, exist_ok=True)
+    ctx.start(name + "_official", [sys.executable, wrapper, str(options["seed"]), script, out, figure], env=env,
+              cwd=cwd)
     code = ctx.wait(name + "_official", 900)
     check(code == 0, f"the official simulator failed on {script}: {tail(ctx.output(name + '_official'))}")
     with open(out) as f:
@@ -274,6 +278,7 @@ def test(ctx):
     parser.add_argument("--group", choices=sorted(EXAMPLES), default="core")
     args = parser.parse_args()
     simulator = os.environ.get("ROBOTARIUM_PYTHON_SIMULATOR", "")
+    simulator = os.path.abspath(simulator) if simulator else ""  # the official side runs in a folder of its own
     if not os.path.isfile(os.path.join(simulator, "rps", "robotarium.py")):
         print("SKIP: set ROBOTARIUM_PYTHON_SIMULATOR to a checkout of the official simulator")
         sys.exit(77)
