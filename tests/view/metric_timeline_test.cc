@@ -34,7 +34,7 @@ class RobotXMetrics final : public StepMetrics {
     ++observed_;
     if (observed_total_ != nullptr) ++*observed_total_;
   }
-  void Read(std::vector<MetricReading>* readings) const override {
+  void Read(std::vector<MetricReading>* readings) override {
     if (read_throws_) throw std::runtime_error("the kind's Write failed");
     readings->resize(3);
     (*readings)[0].name = "x0";

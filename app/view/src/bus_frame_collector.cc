@@ -1,10 +1,7 @@
 #include "dream/view/bus_frame_collector.h"
 
-#include <spdlog/spdlog.h>
-
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <sstream>
 #include <utility>
 
@@ -164,24 +161,13 @@ void BusFrameCollector::FollowMetrics(std::function<std::unique_ptr<StepMetrics>
 }
 
 void BusFrameCollector::StartMetrics() {
-  metrics_.reset();
-  if (!make_metrics_) return;
-  try {
-    metrics_ = make_metrics_();
-  } catch (const std::exception& e) {
-    spdlog::warn("dream view: the run's metrics are not plotted: {}", e.what());
-  }
+  metrics_.reset();  // the previous run's thread ends (after the steps it is computing)
+  metrics_version_ = 0;
+  if (make_metrics_) metrics_ = std::make_unique<MetricsThread>(make_metrics_);
 }
 
 void BusFrameCollector::ObserveMetrics() {
-  if (!metrics_) return;
-  try {
-    metrics_->Observe(poses_, obstacles_);
-  } catch (const std::exception& e) {
-    // The kind's code: its plots stop, the run is still drawn.
-    spdlog::warn("dream view: the run's metrics stop at step {}: {}", poses_.step, e.what());
-    metrics_.reset();
-  }
+  if (metrics_) metrics_->Offer(poses_, obstacles_);
 }
 
 void BusFrameCollector::OnVerdict() {
@@ -298,6 +284,10 @@ bool BusFrameCollector::TakeFrame(ViewFrame* frame, uint64_t* version) {
     other_world_ = other_world;
     ++version_;
   }
+  if (metrics_ && metrics_->version() != metrics_version_) {  // figures computed since, of steps already drawn
+    metrics_version_ = metrics_->version();
+    ++version_;
+  }
   if (*version == version_) return false;
   *version = version_;
   frame->run_id = run_id_;
@@ -328,16 +318,7 @@ bool BusFrameCollector::TakeFrame(ViewFrame* frame, uint64_t* version) {
   frame->other_world = other_world_;
   frame->judged = judged_;
   frame->metrics.clear();
-  if (metrics_) {
-    try {
-      metrics_->Read(&frame->metrics);
-    } catch (const std::exception& e) {
-      // The kind's code, on the pump's thread: never past it.
-      spdlog::warn("dream view: the run's metrics stop at step {}: {}", poses_.step, e.what());
-      metrics_.reset();
-      frame->metrics.clear();
-    }
-  }
+  if (metrics_) metrics_->Read(&frame->metrics);
   return true;
 }
 

@@ -15,6 +15,7 @@
 #include "dream/run_status_t.hpp"
 #include "dream/run_verdict_t.hpp"
 #include "dream/velocity_command_t.hpp"
+#include "dream/view/metrics_thread.h"
 #include "dream/view/run_choice.h"
 #include "dream/view/step_metrics.h"
 #include "dream/view/view_frame.h"
@@ -64,9 +65,10 @@ class BusFrameCollector {
   bool TakeFrame(ViewFrame* frame, uint64_t* version);
 
   /// The run's metrics, followed from the next run drawn on (and the run
-  /// drawn now, from its next step): a new one from `make` for each run,
-  /// fed each of its steps once (not resends) and read into each frame.
-  /// A kind's code that throws ends the metrics of that run, said once.
+  /// drawn now, from its next step): a new one from `make` for each run, on
+  /// a MetricsThread of its own (the handler only queues each step, once:
+  /// not resends), its newest readings in each frame. A kind's code that
+  /// throws ends the metrics of that run, said once.
   void FollowMetrics(std::function<std::unique_ptr<StepMetrics>()> make);
 
   /// The user's choice of another run heard (RunChoice::Choose): drawn from
@@ -91,7 +93,7 @@ class BusFrameCollector {
   void OnCommand(int robot);
   /// verdict_in_ decoded: kept only when it is the drawn run's and that run is over.
   void OnVerdict();
-  /// The new step in poses_ (with obstacles_) to the run's metrics.
+  /// The new step in poses_ (with obstacles_) to the run's metrics' queue.
   void ObserveMetrics();
   void StartMetrics();
 
@@ -131,7 +133,8 @@ class BusFrameCollector {
   int64_t marks_located_ = 0;
   int64_t bad_messages_ = 0;
   std::function<std::unique_ptr<StepMetrics>()> make_metrics_;
-  std::unique_ptr<StepMetrics> metrics_;  // the run drawn's, from its first step seen
+  std::unique_ptr<MetricsThread> metrics_;  // the run drawn's, from its first step seen
+  uint64_t metrics_version_ = 0;            // metrics_' readings as last put in a frame
   /// Last: unsubscribed first, so the bus never calls a half-destroyed collector.
   lcm::Subscription subscription_;
   lcm::Subscription command_subscription_;
