@@ -119,7 +119,7 @@ def main():
             print(f"pair {pair + 1:>2} ({order[0]} first): without {wall['without']:.2f} s, with {wall['with']:.2f} s,"
                   f" {100 * (ratios[-1] - 1):+.1f} %; the view's CPU {view_cpu[-1]:.2f} s", flush=True)
     load_after = os.getloadavg()
-    low, high = quartiles(ratios)
+    low, high = quartiles(ratios) if len(ratios) > 1 else (ratios[0], ratios[0])
     print(f"\n{args.pairs} interleaved pairs, 20 robots, lockstep, {args.steps} steps"
           f"{', a Chromium page on the view' if args.browser else ''}:")
     print(f"  wall, median: without the view {statistics.median(walls['without']):.2f} s, "

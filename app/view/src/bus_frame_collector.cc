@@ -52,15 +52,28 @@ std::optional<world::RunVerdict> VerdictOf(int8_t value) {
 }  // namespace
 
 BusFrameCollector::BusFrameCollector(lcm::LcmInterface& bus, const world::WorldParams& world,
-                                     std::function<RunChoice::Clock::time_point()> now)
-    : choice_(std::move(now)), locator_(world) {
-  subscription_ = bus.Subscribe(lcm::kViewChannelsRegex, [this](const std::string& channel, const void* data,
-                                                                int size) { OnMessage(channel, data, size); });
-  // The commands, for the command arrows: a handler of their own, so the view's channel list stays the one in
-  // channels.h.
-  command_subscription_ =
-      bus.Subscribe(std::string(lcm::kCommandChannelPrefix) + "[0-9]+",
-                    [this](const std::string& channel, const void* data, int size) { OnMessage(channel, data, size); });
+                                     std::function<RunChoice::Clock::time_point()> now, bool commands)
+    : choice_(std::move(now)), locator_(world), bus_(bus) {
+  // kViewChannelsRegex's channels, each a regex of its own: a regex with alternatives has no literal
+  // prefix, and one would let every datagram of the group through the kernel's filter.
+  for (const char* regex : {lcm::kPosesChannel, lcm::kMeasuredPosesChannel, lcm::kObstaclesChannel, lcm::kStatusChannel,
+                            lcm::kVerdictChannel}) {
+    subscriptions_.push_back(bus.Subscribe(
+        regex, [this](const std::string& channel, const void* data, int size) { OnMessage(channel, data, size); }));
+  }
+  subscriptions_.push_back(bus.Subscribe(
+      std::string(lcm::kRadioChannelPrefix) + "[0-9]+",
+      [this](const std::string& channel, const void* data, int size) { OnMessage(channel, data, size); }));
+  if (commands) SubscribeCommands();
+}
+
+void BusFrameCollector::SubscribeCommands() {
+  if (command_subscription_.active()) return;
+  // The commands, for the command arrows: 20 datagrams a step of a 20-robot run on udpm, the most of
+  // what a view receives, so `dream view` asks for them only once a page shows the arrows.
+  command_subscription_ = bus_.Subscribe(
+      std::string(lcm::kCommandChannelPrefix) + "[0-9]+",
+      [this](const std::string& channel, const void* data, int size) { OnMessage(channel, data, size); });
 }
 
 void BusFrameCollector::OnMessage(const std::string& channel, const void* data, int size) {
@@ -320,6 +333,11 @@ bool BusFrameCollector::TakeFrame(ViewFrame* frame, uint64_t* version) {
   frame->metrics.clear();
   if (metrics_) metrics_->Read(&frame->metrics);
   return true;
+}
+
+bool BusFrameCollector::WaitForMetrics(std::chrono::steady_clock::duration timeout) {
+  std::lock_guard<std::mutex> lock(mutex_);  // the metrics' thread never takes it
+  return !metrics_ || metrics_->WaitUntilComputed(timeout);
 }
 
 bool BusFrameCollector::Follow(int64_t run_id) {
