@@ -4,7 +4,8 @@
 `dream run --view --view-wait` of a three-robot go_to_goal (memq: nothing leaves the process):
 Chromium opens the page before step 0. Live, the page must plot the kind's figures and the safety
 figures (final_max_goal_error_m, min_pairwise_distance_m, ...), each following the run: the value
-shown is the one of the step shown, and the goal's error falls as the robots drive in. The goal's
+shown is the one of the step it says (computed on the view's metrics thread: the arena's step or one
+just before, never after), and the goal's error falls as the robots drive in. The goal's
 threshold (goal_tolerance_m) and the collision distance are drawn: red pixels on the plot's canvas
 where the page says each line is. At the end the page becomes the run's replay at its last step,
 where every plotted figure is summary.json's. Then the replay's timeline: scrubbed back, the plots
@@ -128,9 +129,10 @@ def watch_live(ctx, args, page):
             break
         goal = figure(shown or {}, GOAL)
         if shown and shown["mode"] == "live" and goal is not None and goal["value"] is not None:
-            check(goal["step"] == shown["step"],
-                  f"live: the plot shows {GOAL} of step {goal['step']}, the arena step {shown['step']}")
-            samples[shown["step"]] = {m["name"]: m["value"] for m in shown["metrics"]}
+            # Computed on the metrics' own thread, the figures may trail the arena's step, never lead it.
+            check(goal["step"] <= shown["step"],
+                  f"live: the plot shows {GOAL} of step {goal['step']}, after the arena's step {shown['step']}")
+            samples[goal["step"]] = {m["name"]: m["value"] for m in shown["metrics"] if m["step"] == goal["step"]}
             for r in shown["robots"]:
                 if r.get("cv") is not None:
                     live_commands[(shown["step"], r["id"])] = (r["cv"], r["cw"])
