@@ -12,7 +12,9 @@ on a shared machine hits both sides alike. Reported: each launch's wall time (th
 process, start to exit), each pair's ratio with/without, and the median ratio with its spread
 (quartiles, min, max) over the pairs, beside the median walls; the view process's own CPU
 seconds per run; and the load average when the series began and ended. --perf FILE records the
-view process of the last pair with `perf record -g` into FILE (perf report -i FILE).
+view process of the last pair with `perf record -g` into FILE (perf report -i FILE);
+--baseline-view BIN adds a third side, a view served by another build's dream (the same series:
+the same load), and the launch's own CPU seconds are reported too (less disturbed by load).
 
 Nothing here is a pass/fail test; the numbers go to docs/performance.md.
 """
@@ -70,14 +72,19 @@ class Viewer:
 
 
 def launch(dream, config, out, steps):
-    """One `dream launch`: its wall seconds."""
+    """One `dream launch`: its wall seconds, and the CPU seconds of its processes (the simulator and
+    the agents, which it waits for)."""
+    log = open(os.path.join(os.path.dirname(out), "launch.txt"), "w+")
     start = time.monotonic()
-    done = subprocess.run([dream, "launch", config, "--out", out, "--overwrite", "--all-steps", "--steps", str(steps)],
-                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    proc = subprocess.Popen([dream, "launch", config, "--out", out, "--overwrite", "--all-steps", "--steps",
+                             str(steps)], stdout=log, stderr=subprocess.STDOUT)
+    _, status, usage = os.wait4(proc.pid, 0)
     wall = time.monotonic() - start
-    if done.returncode not in (0, 3, 5):
-        sys.exit(f"dream launch exited {done.returncode}: {done.stdout[-2000:]}")
-    return wall
+    code = os.waitstatus_to_exitcode(status)
+    if code not in (0, 3, 5):
+        log.seek(0)
+        sys.exit(f"dream launch exited {code}: {log.read()[-2000:]}")
+    return wall, usage.ru_utime + usage.ru_stime
 
 
 def quartiles(values):
@@ -92,43 +99,57 @@ def main():
     parser.add_argument("--steps", type=int, default=3000)
     parser.add_argument("--browser", action="store_true", help="a headless Chromium page on the view too")
     parser.add_argument("--perf", help="perf record the view process of the last pair into this file")
+    parser.add_argument("--baseline-view", help="also a view served by this dream binary (another version's), "
+                                                "interleaved as a third side")
     args = parser.parse_args()
     require_private_netns()
     dream = os.path.abspath(os.path.join(args.build, "dream"))
+    sides = ["without", "with"] + (["baseline"] if args.baseline_view else [])
+    binaries = {"with": dream, "baseline": args.baseline_view}
     load_before = os.getloadavg()
-    walls = {"without": [], "with": []}
-    view_cpu = []
-    ratios = []
+    walls = {side: [] for side in sides}
+    run_cpu = {side: [] for side in sides}
+    view_cpu = {side: [] for side in sides}
+    ratios = {side: [] for side in sides[1:]}
     with tempfile.TemporaryDirectory() as folder:
         config = ring_config(os.path.join(folder, "ring20.yaml"), 20, args.steps)
         out = os.path.join(folder, "launch")
-        launch(dream, config, out, args.steps)  # warm: the page cache, ccache-built libraries mapped once
+        launch(dream, config, out, args.steps)  # warm: the page cache, the libraries mapped once
         for pair in range(args.pairs):
-            order = ("without", "with") if pair % 2 == 0 else ("with", "without")
+            order = sides if pair % 2 == 0 else sides[::-1]
             wall = {}
             for side in order:
                 viewer = None
-                if side == "with":
-                    perf = args.perf if args.perf and pair == args.pairs - 1 else None
-                    viewer = Viewer(dream, folder, args.browser, perf)
-                wall[side] = launch(dream, config, out, args.steps)
+                if side != "without":
+                    perf = args.perf if args.perf and pair == args.pairs - 1 and side == "with" else None
+                    viewer = Viewer(binaries[side], folder, args.browser, perf)
+                wall[side], cpu = launch(dream, config, out, args.steps)
                 if viewer:
-                    view_cpu.append(viewer.stop())
+                    view_cpu[side].append(viewer.stop())
                 walls[side].append(wall[side])
-            ratios.append(wall["with"] / wall["without"])
-            print(f"pair {pair + 1:>2} ({order[0]} first): without {wall['without']:.2f} s, with {wall['with']:.2f} s,"
-                  f" {100 * (ratios[-1] - 1):+.1f} %; the view's CPU {view_cpu[-1]:.2f} s", flush=True)
+                run_cpu[side].append(cpu)
+            for side in sides[1:]:
+                ratios[side].append(wall[side] / wall["without"])
+            print(f"pair {pair + 1:>2} ({', '.join(order)}): " + ", ".join(
+                f"{side} {wall[side]:.2f} s" + (f" ({100 * (ratios[side][-1] - 1):+.1f} %, the view's CPU "
+                                               f"{view_cpu[side][-1]:.2f} s)" if side != "without" else "")
+                for side in sides), flush=True)
     load_after = os.getloadavg()
-    low, high = quartiles(ratios) if len(ratios) > 1 else (ratios[0], ratios[0])
-    print(f"\n{args.pairs} interleaved pairs, 20 robots, lockstep, {args.steps} steps"
-          f"{', a Chromium page on the view' if args.browser else ''}:")
-    print(f"  wall, median: without the view {statistics.median(walls['without']):.2f} s, "
-          f"with {statistics.median(walls['with']):.2f} s")
-    print(f"  with/without per pair: median {100 * (statistics.median(ratios) - 1):+.1f} %, quartiles "
-          f"{100 * (low - 1):+.1f} % to {100 * (high - 1):+.1f} %, min {100 * (min(ratios) - 1):+.1f} %, "
-          f"max {100 * (max(ratios) - 1):+.1f} %")
-    print(f"  the view process's CPU per run: median {statistics.median(view_cpu):.2f} s "
-          f"(min {min(view_cpu):.2f}, max {max(view_cpu):.2f})")
+    print(f"\n{args.pairs} interleaved {'pairs' if len(sides) == 2 else 'triples'}, 20 robots, lockstep, "
+          f"{args.steps} steps{', a Chromium page on the view' if args.browser else ''}"
+          f"{'; baseline: ' + args.baseline_view if args.baseline_view else ''}:")
+    print("  wall, median: " + ", ".join(f"{side} {statistics.median(walls[side]):.2f} s" for side in sides))
+    print("  the launch's own CPU, median: " + ", ".join(f"{side} {statistics.median(run_cpu[side]):.2f} s"
+                                                         for side in sides))
+    for side in sides[1:]:
+        low, high = quartiles(ratios[side]) if len(ratios[side]) > 1 else (ratios[side][0], ratios[side][0])
+        print(f"  {side}/without per pair: median {100 * (statistics.median(ratios[side]) - 1):+.1f} %, quartiles "
+              f"{100 * (low - 1):+.1f} % to {100 * (high - 1):+.1f} %, min {100 * (min(ratios[side]) - 1):+.1f} %, "
+              f"max {100 * (max(ratios[side]) - 1):+.1f} %")
+        print(f"  {side}: the view process's CPU per run, median {statistics.median(view_cpu[side]):.2f} s (min "
+              f"{min(view_cpu[side]):.2f}, max {max(view_cpu[side]):.2f}), "
+              f"{100 * statistics.median(view_cpu[side]) / statistics.median(run_cpu['without']):.1f} % of the "
+              f"launch's own CPU")
     print(f"  load average (1, 5, 15 min): {load_before[0]:.1f} {load_before[1]:.1f} {load_before[2]:.1f} at the "
           f"start, {load_after[0]:.1f} {load_after[1]:.1f} {load_after[2]:.1f} at the end")
 
