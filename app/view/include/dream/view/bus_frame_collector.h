@@ -65,6 +65,8 @@ class BusFrameCollector {
   /// Subscribes to DREAM_CMD_<n> too (the command arrows) if not yet; on
   /// the thread that handles the bus.
   void SubscribeCommands();
+  /// Whether DREAM_CMD_<n> is subscribed.
+  bool hears_commands() const { return command_subscription_.active(); }
 
   /// The newest frame, when it changed since `*version` (then updated);
   /// false when nothing new arrived. A second world heard, or gone quiet,
