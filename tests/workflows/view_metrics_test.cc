@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -20,6 +21,7 @@
 #include "dream/view/metrics_thread.h"
 #include "dream/workflows/kind_step_metrics.h"
 #include "dream/workflows/view_replay.h"
+#include "../bridge/bridge_test_support.h"
 #include "workflow_test_support.h"
 #include "../support/source_tree.h"
 
@@ -129,6 +131,29 @@ TEST(ViewMetricsTest, APythonControllersMetricsLiveEndOnWhatSummaryJsonSays) {
     EXPECT_EQ(by_name[name].step, log.poses().back().step) << name;
   }
   EXPECT_EQ(by_name["min_pairwise_distance_m"].value, summary["min_pairwise_distance_m"].get<double>());
+}
+
+TEST(ViewMetricsTest, APythonHelperThatDiesEndsItsFiguresAndTheKindsOthersGoOn) {
+  const fs::path folder = fs::path(bridge::testing::NewFolder("view_metrics_dying_helper"));
+  std::ofstream(folder / "dying.py") << "import os\nfrom dream import Robot\n\nclass Dying(Robot):\n"
+                                        "    @classmethod\n    def metrics(cls, run):\n        os._exit(3)\n";
+  std::string text = "name: dying\nrobots: 8\nsteps: 300\ninitial_poses:\n";
+  for (int i = 0; i < 8; ++i) text += "  - [" + std::to_string(-1.0 + 0.25 * i) + ", 0.0, 0.0]\n";
+  text += "controller:\n  kind: python\n  module: dying.py\n  class: Dying\n";
+  std::ofstream(folder / "dying.yaml") << text;
+  const run_config::RunConfig config = run_config::LoadRunConfigFile((folder / "dying.yaml").string());
+  const agent_host::ControllerFactory factory(config);
+  const run_log::RunLog log = run_log::RunLog::Read((RunFolder() / "run.lcmlog").string());
+  view::MetricsThread live(
+      [&] { return std::make_unique<KindStepMetrics>(factory, &config, dream::testing::SourceDir() + "/python"); });
+  for (size_t i = 0; i < log.poses().size(); ++i) live.Offer(log.poses()[i], log.obstacles_at(i));
+  ASSERT_TRUE(live.WaitUntilComputed(std::chrono::seconds(120)));  // the time-out only turns a hang into a failure
+  EXPECT_FALSE(live.stopped());                                    // the safety figures go on
+  std::vector<view::MetricReading> readings;
+  live.Read(&readings);
+  std::map<std::string, double> by_name;
+  for (const view::MetricReading& r : readings) by_name[r.name] = r.value;
+  EXPECT_TRUE(by_name.count("min_pairwise_distance_m"));
 }
 
 }  // namespace

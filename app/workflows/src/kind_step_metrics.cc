@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <exception>
 #include <string>
 
 #include "dream/agent_host/snapshot_from_messages.h"
@@ -55,7 +56,12 @@ void KindStepMetrics::Observe(const robot_poses_t& poses, const obstacles_t& obs
       {static_cast<size_t>(std::max(poses.num_robots, 0)), poses.x.size(), poses.y.size(), poses.theta.size()});
   own_step_.poses.resize(robots);
   for (size_t i = 0; i < robots; ++i) own_step_.poses[i] = {poses.x[i], poses.y[i], poses.theta[i]};
-  own_->Observe(own_step_);
+  try {
+    own_->Observe(own_step_);
+  } catch (const std::exception& e) {
+    spdlog::warn("dream view: the controller's own metrics stop at step {}: {}", poses.step, e.what());
+    own_.reset();
+  }
 }
 
 void KindStepMetrics::Read(std::vector<view::MetricReading>* readings) {
@@ -68,7 +74,16 @@ void KindStepMetrics::Read(std::vector<view::MetricReading>* readings) {
   }
   if (own_) {
     const size_t kinds = used;
-    const int64_t own_step = own_->Read(&own_figures_);
+    int64_t own_step = -1;
+    try {
+      own_step = own_->Read(&own_figures_);
+    } catch (const std::exception& e) {
+      // The kind's own computing stopped for good (its helper died): its figures stop, the kind's others go on.
+      spdlog::warn("dream view: the controller's own metrics stop: {}", e.what());
+      own_.reset();
+      readings->resize(used);
+      return;
+    }
     for (const auto& [name, value] : own_figures_) {
       const auto end = readings->begin() + static_cast<std::ptrdiff_t>(kinds);
       const bool named =

@@ -26,7 +26,9 @@ namespace dream::workflows {
 /// With a runtime folder, the kind's own metrics too (ControllerKind::
 /// own_step_metrics: a Python controller's metrics(), computed by a helper
 /// process while the run goes on, each reading at the step it is of), the
-/// figures no other metric names, as summary.json adds them.
+/// figures no other metric names, as summary.json adds them. Should the
+/// kind's own computing fail for good (its helper died), its figures stop,
+/// said once, and the kind's others go on.
 class KindStepMetrics final : public view::StepMetrics {
  public:
   /// `factory` must outlive this. `config` and `runtime_dir` (the Python
