@@ -91,12 +91,24 @@ RequestFilter::Decision RequestFilter::Decide(const Request& request) const {
     decision.action = Decision::Action::kRunData;
     return decision;
   }
+  if (path == kExportStartPath || path == kExportStatusPath || path == kExportVideoPath) {
+    if (path == kExportStartPath && !request.export_header) {
+      return Refuse(403, "/export/start is asked by the page (with its X-Dream-Export header)");
+    }
+    decision.action = path == kExportStartPath    ? Decision::Action::kExportStart
+                      : path == kExportStatusPath ? Decision::Action::kExportStatus
+                                                  : Decision::Action::kExportVideo;
+    decision.query = std::string(query);
+    return decision;
+  }
   if (const char* asset = AssetOfPath(path)) {
     decision.action = Decision::Action::kAsset;
     decision.asset = asset;
     return decision;
   }
-  return Refuse(404, "not found: dream view serves /, /view.js, /arena.js, /metrics.js, /view.css, /ws and /run.json");
+  return Refuse(404,
+                "not found: dream view serves /, /view.js, /arena.js, /metrics.js, /view.css, /ws, /run.json and "
+                "/export/start, /export/status, /export/video");
 }
 
 }  // namespace dream::view
