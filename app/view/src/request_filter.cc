@@ -27,6 +27,7 @@ const char* AssetOfPath(std::string_view path) {
   if (path == "/view.css") return "view.css";
   if (path == "/arena.js") return "arena.js";
   if (path == "/metrics.js") return "metrics.js";
+  if (path == "/export.js") return "export.js";
   return nullptr;
 }
 
@@ -106,9 +107,10 @@ RequestFilter::Decision RequestFilter::Decide(const Request& request) const {
     decision.asset = asset;
     return decision;
   }
-  return Refuse(404,
-                "not found: dream view serves /, /view.js, /arena.js, /metrics.js, /view.css, /ws, /run.json and "
-                "/export/start, /export/status, /export/video");
+  return Refuse(
+      404,
+      "not found: dream view serves /, /view.js, /arena.js, /metrics.js, /export.js, /view.css, /ws, /run.json and "
+      "/export/start, /export/status, /export/video");
 }
 
 }  // namespace dream::view
