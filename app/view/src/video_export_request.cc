@@ -26,7 +26,11 @@ double Number(const std::string& name, const std::string& value, double min, dou
   } catch (const std::exception&) {
     used = 0;
   }
-  if (value.empty() || used != value.size() || !std::isfinite(number)) {
+  // Decimal only: stod would take "0x10" and "inf".
+  const bool decimal = std::all_of(value.begin(), value.end(), [](char c) {
+    return (c >= '0' && c <= '9') || c == '.' || c == '-' || c == '+' || c == 'e' || c == 'E';
+  });
+  if (value.empty() || !decimal || used != value.size() || !std::isfinite(number)) {
     throw Invalid(Quoted(name, value) + ": not a number");
   }
   if (number < min || number > max) {
