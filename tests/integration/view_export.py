@@ -129,7 +129,7 @@ def check_http_export(ctx, dream, base):
     check(code == 202, f"/export/start?{query}: {code} {body!r}")
     started = json.loads(body)
     status = wait_done(base, started["job"])
-    check("--viewport -1.2,-0.8,0.3,0.4" in status["command"] and "--steps 30-150" in status["command"] and
+    check("--viewport=-1.2,-0.8,0.3,0.4" in status["command"] and "--steps 30-150" in status["command"] and
           "--no-goals" in status["command"] and "--no-ids" in status["command"],
           f"the printed command does not say what was asked: {status['command']}")
     code, headers, video = get(base + "export/video")
@@ -189,7 +189,7 @@ def check_browser(ctx, args, base):
             break
         time.sleep(0.1)
     check(state.get("state") == "done", f"the page's export did not finish: {state}")
-    check("--steps 40-160" in state["command"] and "--viewport" in state["command"],
+    check("--steps 40-160" in state["command"] and "--viewport=" in state["command"],
           f"the page's export is not of the steps and viewport shown: {state['command']}")
     shown = page.evaluate("document.getElementById('export-command').textContent")
     check(shown == state["command"], f"the page prints {shown!r}, the server said {state['command']!r}")

@@ -47,9 +47,9 @@ TEST(VideoExportRequestTest, WhatThePageShowsBecomesDreamRendersOptions) {
   EXPECT_EQ(request.first_step, 30);
   EXPECT_EQ(request.last_step, 150);
   EXPECT_EQ(request.RenderArguments(),
-            (std::vector<std::string>{"--width", "1280", "--fps", "24", "--speed", "2", "--trail", "0", "--viewport",
-                                      "-1.2,-0.8,0.3,0.4", "--steps", "30-150", "--no-goals", "--no-violations",
-                                      "--no-ids", "--radio-links", "--sensor-ranges"}));
+            (std::vector<std::string>{"--width", "1280", "--fps", "24", "--speed", "2", "--trail", "0",
+                                      "--viewport=-1.2,-0.8,0.3,0.4", "--steps", "30-150", "--no-goals",
+                                      "--no-violations", "--no-ids", "--radio-links", "--sensor-ranges"}));
 }
 
 TEST(VideoExportRequestTest, ValuesAreKeptAsThePrintedCommandGivesThem) {

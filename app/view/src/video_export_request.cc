@@ -165,7 +165,8 @@ int64_t VideoExportRequest::FrameCount(int64_t run_first_step, int64_t run_last_
 std::vector<std::string> VideoExportRequest::RenderArguments() const {
   std::vector<std::string> args = {
       "--width", std::to_string(width_px), "--fps", Text(fps), "--speed", Text(speed), "--trail", Text(trail_s)};
-  if (viewport) args.insert(args.end(), {"--viewport", viewport->Text()});
+  // One word: a value that starts with '-' is not taken for an option by any reader of the command.
+  if (viewport) args.push_back("--viewport=" + viewport->Text());
   if (first_step >= 0)
     args.insert(args.end(), {"--steps", std::to_string(first_step) + "-" + std::to_string(last_step)});
   if (!goals) args.emplace_back("--no-goals");
