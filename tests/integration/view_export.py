@@ -10,6 +10,9 @@ polled on /export/status to its end and downloaded from /export/video, as an att
 `dream render` command the server prints for it, run as printed, writes a video of the same frame
 count and size whose decoded frames are the same, frame for frame (ffmpeg's framemd5).
 
+`dream run --view --view-wait`: while live, /export/start is refused (409, saying to export the
+replay); once the run is over the same URL is its replay, and an export of it works.
+
 With --browser: headless Chromium opens the replay, the user zooms with the keyboard, picks a
 step range with the timeline's "here" buttons and clicks "Export video" with the mouse; the page
 shows the progress, downloads the video (Chromium's download folder) and prints the command; the
@@ -205,6 +208,29 @@ def check_browser(ctx, args, base):
     page.close()
 
 
+def check_run_view(ctx, args):
+    """dream run --view: live (waiting for a browser before step 0) an export is refused, saying
+    why; at the run's end the same URL is the replay, and its export works."""
+    from devtools import WebSocket
+
+    ctx.start("run_view", [args.dream, "run", os.path.join(args.source, "config", "go_to_goal.yaml"), "--out",
+                           ctx.path("runs", "watched"), "--view", "--view-port", "0", "--view-wait", "--pace", "0",
+                           "--view-keep", "ctrl-c"], cwd=ctx.path())
+    ctx.wait_for_output("run_view", URL.pattern, 30)
+    base = URL.search(ctx.output("run_view")).group(1)
+    code, _, body = get(base + "export/start", export_header=True)
+    check(code == 409 and b"this view is live" in body, f"a live view's /export/start: {code} {body!r}")
+    socket = WebSocket(base.replace("http://", "ws://") + "ws")  # the browser --view-wait waits for
+    ctx.wait_for_output("run_view", r"replays it", 120)
+    code, _, body = get(base + "export/start?speed=16", export_header=True)
+    check(code == 202, f"the replay's /export/start at the end of dream run --view: {code} {body!r}")
+    status = wait_done(base, json.loads(body)["job"])
+    check(status["command"].startswith("dream render " + ctx.path("runs", "watched") + " --out watched_steps_0-"),
+          f"the printed command is not of the run folder: {status['command']}")
+    socket.close()
+    ctx.stop("run_view")
+
+
 def test(ctx):
     parser = argument_parser()
     parser.add_argument("--browser", action="store_true")
@@ -225,6 +251,7 @@ def test(ctx):
         check_browser(ctx, args, base)
     else:
         check_http_export(ctx, args.dream, base)
+        check_run_view(ctx, args)
 
 
 if __name__ == "__main__":
