@@ -194,6 +194,12 @@ def check_browser(ctx, args, base):
     check(state.get("state") == "done", f"the page's export did not finish: {state}")
     check("--steps 40-160" in state["command"] and "--viewport=" in state["command"],
           f"the page's export is not of the steps and viewport shown: {state['command']}")
+    # The viewport is the world the arena's plot area shows (arena.js's margins: 52, 14, 14, 40 px).
+    seen = page.evaluate("(() => { const T = dreamView.T, c = document.getElementById('arena');"
+                         " return [T.wx(52), T.wy(c.height - 40), T.wx(c.width - 14), T.wy(14)]; })()")
+    asked = [float(v) for v in re.search(r"--viewport=(\S+)", state["command"]).group(1).split(",")]
+    check(all(abs(a - b) < 0.002 for a, b in zip(asked, seen)),
+          f"the export's viewport {asked} is not what the page shows {[round(v, 3) for v in seen]}")
     shown = page.evaluate("document.getElementById('export-command').textContent")
     check(shown == state["command"], f"the page prints {shown!r}, the server said {state['command']!r}")
     path = os.path.join(downloads, state["file"])
