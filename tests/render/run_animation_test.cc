@@ -159,6 +159,76 @@ TEST_F(RunAnimationTest, OptionsOutOfRangeAreRefusedNamingThem) {
   refused(options, "--width");
 }
 
+TEST_F(RunAnimationTest, AStepRangeShowsThoseStepsOnly) {
+  AnimationOptions options = Options();
+  options.first_step = 100;
+  options.last_step = 160;
+  options.hold_end_s = 0;
+  const RunAnimation animation(run_, no_overlays_, options);
+  // 60 steps = 1.98 s at 2x = 0.99 s of video at 10 fps: frames 0..10.
+  EXPECT_EQ(animation.frame_count(), 11);
+  EXPECT_EQ(animation.StepOfFrame(0), 100);
+  EXPECT_EQ(animation.StepOfFrame(5), 130);
+  EXPECT_EQ(animation.StepOfFrame(10), 160);
+  auto refused = [&](int64_t first, int64_t last, const std::string& reason) {
+    AnimationOptions bad = Options();
+    bad.first_step = first;
+    bad.last_step = last;
+    try {
+      RunAnimation refused_animation(run_, no_overlays_, bad);
+      ADD_FAILURE() << first << "-" << last << " accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(reason), std::string::npos) << e.what();
+    }
+  };
+  refused(160, 100, "the first step 160 is after the last 100");
+  refused(0, 301, "the last step 301 is not in the run (steps 0-300)");
+}
+
+TEST_F(RunAnimationTest, AViewportZoomsOnItsPartOfTheWorldAndClipsTheRest) {
+  AnimationOptions options = Options();
+  // Robot 0 starts at (-1, 0): a viewport round it, a quarter of the arena wide.
+  options.viewport = Viewport{-1.4, -0.25, -0.6, 0.25};
+  RunAnimation zoomed(run_, no_overlays_, options);
+  const ArenaLayout& layout = zoomed.layout();
+  EXPECT_DOUBLE_EQ(layout.scale(), 4 * layout.frame_scale());
+  zoomed.WriteFramePng(0, dir_ / "zoomed.png");
+  const PicturePixels picture(dir_ / "zoomed.png");
+  EXPECT_EQ(picture.width(), 640);
+  // Its disc, four times as wide, where it is in the world.
+  EXPECT_TRUE(picture.Near(layout.px(-1.0 + kOffsetM), layout.py(-kOffsetM), kRobot0Blue, 20));
+  EXPECT_GT(picture.CountNear(0, 0, picture.width(), picture.height(), kRobot0Blue, 20),
+            10 * 3.14 * 0.05 * 0.05 * layout.frame_scale() * layout.frame_scale());
+  EXPECT_NEAR(layout.px(-1.0), (layout.frame_left_px() + layout.frame_right_px()) / 2, 1e-9);
+  // Robot 1 (at (1, 0)) is outside the viewport: nothing of it in the margins either.
+  EXPECT_EQ(picture.CountNear(0, 0, picture.width(), layout.frame_bottom_px(), testing::kRobot1Orange, 20), 0);
+  // The margin right of the frame stays white (the arena's grid and walls clipped).
+  EXPECT_EQ(picture.CountInk(layout.frame_right_px() + 3, layout.frame_top_px() + 3, picture.width(),
+                             layout.frame_bottom_px() - 3),
+            0);
+}
+
+TEST_F(RunAnimationTest, ProgressCountsEveryFrameDrawn) {
+  if (!testing::OnPath("ffmpeg")) GTEST_SKIP() << "ffmpeg is not installed";
+  RunAnimation animation(run_, no_overlays_, Options());
+  for (const RenderFormat format : {RenderFormat::kMp4, RenderFormat::kGif}) {
+    int last_drawn = 0;
+    int calls = 0;
+    const int total = animation.FramesToDraw(format);
+    ASSERT_TRUE(animation.Write(dir_ / (format == RenderFormat::kGif ? "run.gif" : "run.mp4"), format, {},
+                                [&](int drawn, int of) {
+                                  EXPECT_EQ(drawn, last_drawn + 1);
+                                  EXPECT_EQ(of, total);
+                                  last_drawn = drawn;
+                                  ++calls;
+                                }));
+    EXPECT_EQ(last_drawn, total);
+    EXPECT_EQ(calls, total);
+  }
+  EXPECT_EQ(animation.FramesToDraw(RenderFormat::kMp4), animation.frame_count());
+  EXPECT_GT(animation.FramesToDraw(RenderFormat::kGif), animation.frame_count());
+}
+
 TEST_F(RunAnimationTest, Mp4AndGifHoldEveryFrame) {
   if (!testing::OnPath("ffmpeg") || !testing::OnPath("ffprobe")) GTEST_SKIP() << "ffmpeg is not installed";
   AnimationOptions options = Options();

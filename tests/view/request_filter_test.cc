@@ -31,6 +31,24 @@ TEST(RequestFilterTest, ServesThePagesOwnAssets) {
   }
 }
 
+TEST(RequestFilterTest, ExportsStartOnlyWithThePagesHeaderAndKeepTheirQuery) {
+  const RequestFilter filter(true, 8077, true);
+  auto start = Get("/export/start?format=gif&x0=-1.5&from=3");
+  EXPECT_EQ(filter.Decide(start).action, Action::kRefuse);
+  EXPECT_EQ(filter.Decide(start).status, 403);
+  start.export_header = true;
+  const auto decision = filter.Decide(start);
+  EXPECT_EQ(decision.action, Action::kExportStart);
+  EXPECT_EQ(decision.query, "format=gif&x0=-1.5&from=3");
+  EXPECT_EQ(filter.Decide(Get("/export/status")).action, Action::kExportStatus);
+  EXPECT_EQ(filter.Decide(Get("/export/video?job=2")).action, Action::kExportVideo);
+  EXPECT_EQ(filter.Decide(Get("/export.js")).asset, "export.js");
+  // The filter's character rules hold for the query: no escapes, no quotes.
+  auto escaped = Get("/export/start?x0=%2d1");
+  escaped.export_header = true;
+  EXPECT_EQ(filter.Decide(escaped).status, 400);
+}
+
 TEST(RequestFilterTest, RefusesTraversalAndFileSystemPaths) {
   const RequestFilter filter(true, 8077, false);
   for (const char* target : {"/../etc/passwd", "/a/../view.js", "/..", "//etc/passwd", "/%2e%2e/etc/passwd",

@@ -1,5 +1,7 @@
 #include "dream/view/view_server.h"
 
+#include "dream/view/video_exports.h"
+
 #include <gtest/gtest.h>
 
 #include <boost/asio/connect.hpp>
@@ -10,6 +12,7 @@
 #include <boost/beast/core.hpp>
 #include <boost/beast/websocket.hpp>
 #include <chrono>
+#include <fstream>
 #include <future>
 #include <stdexcept>
 #include <string>
@@ -100,6 +103,42 @@ TEST(ViewServerTest, ServesTheReplayedRun) {
   const std::string response = Exchange(server.port(), Get(server.port(), "/run.json"));
   EXPECT_EQ(StatusLine(response), "HTTP/1.1 200 OK");
   EXPECT_EQ(response.substr(response.size() - 14), "{\"type\":\"run\"}");
+}
+
+TEST(ViewServerTest, ExportsAreRefusedLiveAndServedInAReplay) {
+  ViewServer server(AnyPort(true));
+  auto get = [&](const std::string& target, const std::string& headers = "") {
+    return Exchange(server.port(), "GET " + target + " HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(server.port()) +
+                                       "\r\n" + headers + "Connection: close\r\n\r\n");
+  };
+  // Live (no exports set): said so, with where a video comes from.
+  const std::string live = get("/export/start", "X-Dream-Export: 1\r\n");
+  EXPECT_EQ(StatusLine(live), "HTTP/1.1 409 Conflict");
+  EXPECT_NE(live.find("this view is live"), std::string::npos) << live;
+  VideoExports::Run run;
+  run.name = "demo";
+  run.render_command = "dream render demo";
+  run.last_step = 100;
+  server.SetVideoExports(std::make_shared<VideoExports>(
+      run, [](const VideoExportRequest&, const std::string& out, const std::function<void(int, int)>&,
+              const std::atomic<bool>&) { std::ofstream(out) << "frames"; }));
+  // Without the page's header: refused (another site's page cannot send it).
+  EXPECT_EQ(StatusLine(get("/export/start")), "HTTP/1.1 403 Forbidden");
+  EXPECT_EQ(StatusLine(get("/export/start?fps=500", "X-Dream-Export: 1\r\n")), "HTTP/1.1 400 Bad Request");
+  EXPECT_EQ(StatusLine(get("/export/video")), "HTTP/1.1 404 Not Found");
+  EXPECT_EQ(StatusLine(get("/export/start?format=gif&to=20&from=10", "X-Dream-Export: 1\r\n")),
+            "HTTP/1.1 202 Accepted");
+  std::string status;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (status.find("\"state\":\"done\"") == std::string::npos && std::chrono::steady_clock::now() < deadline) {
+    status = get("/export/status");
+  }
+  EXPECT_NE(status.find("\"file\":\"demo_steps_10-20.gif\""), std::string::npos) << status;
+  const std::string video = get("/export/video");
+  EXPECT_EQ(StatusLine(video), "HTTP/1.1 200 OK");
+  EXPECT_NE(video.find("Content-Type: image/gif"), std::string::npos);
+  EXPECT_NE(video.find("Content-Disposition: attachment; filename=\"demo_steps_10-20.gif\""), std::string::npos);
+  EXPECT_EQ(video.substr(video.size() - 6), "frames");
 }
 
 class Browser {

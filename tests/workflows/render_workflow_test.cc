@@ -61,6 +61,40 @@ TEST(RenderWorkflowTest, OptionsThatDoNotGoTogetherAreAUsageError) {
   EXPECT_THROW(RenderWorkflow().Render(options), RenderWorkflow::UsageError);
 }
 
+TEST(RenderWorkflowTest, VideoOnlyOptionsAreRefusedForPicturesAndPlots) {
+  for (const char* out : {"picture.svg", "picture.png"}) {
+    for (int option = 0; option < 3; ++option) {
+      RenderWorkflow::Options options;
+      options.run_or_log = testing::SimulatedRun();
+      options.out = out;
+      options.plot = out == std::string("picture.png");
+      if (option == 0) options.viewport = "0,0,1,1";
+      if (option == 1) options.steps = "1-2";
+      if (option == 2) options.robot_ids = false;
+      try {
+        RenderWorkflow().Render(options);
+        ADD_FAILURE() << out << ": option " << option << " accepted";
+      } catch (const RenderWorkflow::UsageError& e) {
+        EXPECT_THAT(e.what(), HasSubstr("is for videos (.mp4, .gif)"));
+      }
+    }
+  }
+}
+
+TEST(RenderWorkflowTest, AStepRangeIsFirstDashLastInWholeSteps) {
+  EXPECT_EQ(RenderWorkflow::ParseStepRange("120-480"), (std::pair<int64_t, int64_t>{120, 480}));
+  EXPECT_EQ(RenderWorkflow::ParseStepRange("7-7"), (std::pair<int64_t, int64_t>{7, 7}));
+  for (const char* bad : {"", "120", "-480", "120-", "a-b", "1-2-3", "-1-5", "1.5-3", "9999999999999-1"}) {
+    try {
+      RenderWorkflow::ParseStepRange(bad);
+      ADD_FAILURE() << bad << " accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_THAT(e.what(), StartsWith(std::string("--steps ") + bad));
+    }
+  }
+  EXPECT_THROW(RenderWorkflow::ParseStepRange("480-120"), std::invalid_argument);
+}
+
 TEST(RenderWorkflowTest, AStopBeforeDrawingWritesNothing) {
   const std::atomic<bool> stop{true};
   RenderWorkflow::Options options;

@@ -62,6 +62,13 @@ void DeclareRenderCommand(CommandLine& line) {
   command->add_option("--trail", args->trail_s, "Seconds of simulated time drawn behind each robot")
       ->check(Seconds(true))
       ->capture_default_str();
+  command->add_option("--viewport", args->viewport,
+                      "Video: show this part of the world, XMIN,YMIN,XMAX,YMAX in metres (zoomed to fit; "
+                      "dream view's Export video gives it)");
+  command->add_option("--steps", args->steps, "Video: only these steps, FIRST-LAST (e.g. 120-480)");
+  command->add_flag("--no-goals{false}", args->goals, "Leave out the config's goals");
+  command->add_flag("--no-violations{false}", args->violations, "Leave out the violation marks");
+  command->add_flag("--no-ids{false}", args->robot_ids, "Video: leave out the robots' ids");
 }
 
 }  // namespace dream::cli

@@ -63,6 +63,7 @@ void HttpSession::Serve(const http::request<http::empty_body>& request) {
   facts.host = View(request[http::field::host]);
   facts.origin = View(request[http::field::origin]);
   facts.websocket_upgrade = beast::websocket::is_upgrade(request);
+  facts.export_header = request.find("X-Dream-Export") != request.end();
   const RequestFilter::Decision decision = shared_.filter.Decide(facts);
   using Action = RequestFilter::Decision::Action;
   switch (decision.action) {
@@ -83,6 +84,11 @@ void HttpSession::Serve(const http::request<http::empty_body>& request) {
       }
       Send("application/json", *shared_.run_data, 200, request.keep_alive(), shared_.run_data);
       return;
+    case Action::kExportStart:
+    case Action::kExportStatus:
+    case Action::kExportVideo:
+      ServeExport(decision, request.keep_alive());
+      return;
     case Action::kAsset:
       if (const ViewAsset* asset = FindViewAsset(decision.asset)) {
         Send(asset->content_type, asset->body, 200, request.keep_alive(), nullptr);
@@ -93,6 +99,33 @@ void HttpSession::Serve(const http::request<http::empty_body>& request) {
   }
 }
 
+void HttpSession::ServeExport(const RequestFilter::Decision& decision, bool keep_alive) {
+  using Action = RequestFilter::Decision::Action;
+  VideoExports* exports = shared_.exports.get();
+  if (exports == nullptr) {
+    Refuse(409,
+           "this view is live: a video is exported from a finished run's replay (dream run --view turns into it at "
+           "the run's end; or dream view RUN), or with dream render RUN --out FILE.mp4");
+    return;
+  }
+  if (decision.action == Action::kExportStart) {
+    const VideoExports::Answer answer = exports->Start(decision.query);
+    auto body = std::make_shared<const std::string>(answer.json);
+    Send("application/json", *body, answer.status, keep_alive, body);
+  } else if (decision.action == Action::kExportStatus) {
+    auto body = std::make_shared<const std::string>(exports->StatusJson());
+    Send("application/json", *body, 200, keep_alive, body);
+  } else {
+    const VideoExports::Video video = exports->Finished();
+    if (!video.bytes) {
+      Refuse(404, "no exported video yet (start one: the page's Export video)");
+      return;
+    }
+    const bool gif = video.file_name.size() > 4 && video.file_name.substr(video.file_name.size() - 4) == ".gif";
+    Send(gif ? "image/gif" : "video/mp4", *video.bytes, 200, keep_alive, video.bytes, video.file_name);
+  }
+}
+
 void HttpSession::Refuse(int status, const std::string& reason) {
   spdlog::debug("dream view: refused a request ({}): {}", status, reason);
   auto text = std::make_shared<const std::string>(std::to_string(status) + " " + reason + "\n");
@@ -100,7 +133,7 @@ void HttpSession::Refuse(int status, const std::string& reason) {
 }
 
 void HttpSession::Send(std::string_view content_type, std::string_view body, int status, bool keep_alive,
-                       std::shared_ptr<const std::string> owner) {
+                       std::shared_ptr<const std::string> owner, const std::string& download_name) {
   body_owner_ = std::move(owner);
   response_ = std::make_shared<Response>(static_cast<http::status>(status), 11);
   response_->set(http::field::server, "dream view");
@@ -110,6 +143,9 @@ void HttpSession::Send(std::string_view content_type, std::string_view body, int
   // The page loads nothing but its own files, and talks only to this server.
   response_->set("Content-Security-Policy", "default-src 'self'; connect-src 'self'; img-src 'self' data:");
   response_->body() = http::span_body<const char>::value_type(body.data(), body.size());
+  // A name of safe characters only (VideoExports::FileName): nothing to escape.
+  if (!download_name.empty())
+    response_->set(http::field::content_disposition, "attachment; filename=\"" + download_name + "\"");
   response_->keep_alive(keep_alive);
   response_->prepare_payload();
   stream_.expires_after(kRequestTimeout * 4);  // a large /run.json to a slow reader

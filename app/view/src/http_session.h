@@ -26,9 +26,11 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   void Read();
   void OnRead(boost::beast::error_code error);
   void Serve(const boost::beast::http::request<boost::beast::http::empty_body>& request);
+  void ServeExport(const RequestFilter::Decision& decision, bool keep_alive);
   void Refuse(int status, const std::string& reason);
+  /// `download_name`: sent as an attachment of that name (Content-Disposition).
   void Send(std::string_view content_type, std::string_view body, int status, bool keep_alive,
-            std::shared_ptr<const std::string> owner);
+            std::shared_ptr<const std::string> owner, const std::string& download_name = "");
   void Close();
 
   boost::beast::tcp_stream stream_;

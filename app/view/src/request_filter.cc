@@ -27,6 +27,7 @@ const char* AssetOfPath(std::string_view path) {
   if (path == "/view.css") return "view.css";
   if (path == "/arena.js") return "arena.js";
   if (path == "/metrics.js") return "metrics.js";
+  if (path == "/export.js") return "export.js";
   return nullptr;
 }
 
@@ -91,12 +92,25 @@ RequestFilter::Decision RequestFilter::Decide(const Request& request) const {
     decision.action = Decision::Action::kRunData;
     return decision;
   }
+  if (path == kExportStartPath || path == kExportStatusPath || path == kExportVideoPath) {
+    if (path == kExportStartPath && !request.export_header) {
+      return Refuse(403, "/export/start is asked by the page (with its X-Dream-Export header)");
+    }
+    decision.action = path == kExportStartPath    ? Decision::Action::kExportStart
+                      : path == kExportStatusPath ? Decision::Action::kExportStatus
+                                                  : Decision::Action::kExportVideo;
+    decision.query = std::string(query);
+    return decision;
+  }
   if (const char* asset = AssetOfPath(path)) {
     decision.action = Decision::Action::kAsset;
     decision.asset = asset;
     return decision;
   }
-  return Refuse(404, "not found: dream view serves /, /view.js, /arena.js, /metrics.js, /view.css, /ws and /run.json");
+  return Refuse(
+      404,
+      "not found: dream view serves /, /view.js, /arena.js, /metrics.js, /export.js, /view.css, /ws, /run.json and "
+      "/export/start, /export/status, /export/video");
 }
 
 }  // namespace dream::view

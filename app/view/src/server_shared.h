@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "dream/view/request_filter.h"
+#include "dream/view/video_exports.h"
 
 namespace dream::view {
 
@@ -26,6 +27,7 @@ struct ServerShared {
   std::shared_ptr<const std::string> setup;         ///< sent first to each browser
   std::shared_ptr<const std::string> latest_frame;  ///< sent next, so a new browser draws at once
   std::shared_ptr<const std::string> run_data;      ///< /run.json (replay)
+  std::shared_ptr<VideoExports> exports;            ///< /export/* (a replay's; none live)
   std::vector<std::weak_ptr<WebSocketSession>> clients;
   std::atomic<size_t> client_count{0};
   /// HTTP connections open now (a WebSocket's counts here until its upgrade).

@@ -164,6 +164,10 @@ void ViewServer::ServeReplay(std::string setup_json, std::string run_json) {
   });
 }
 
+void ViewServer::SetVideoExports(std::shared_ptr<VideoExports> exports) {
+  net::post(impl_->io_, [impl = impl_.get(), exports = std::move(exports)] { impl->shared_->exports = exports; });
+}
+
 void ViewServer::SetClientMessageHandler(std::function<void(const std::string&)> handler) {
   std::lock_guard<std::mutex> lock(impl_->shared_->client_message_mutex);
   impl_->shared_->on_client_message = std::move(handler);

@@ -18,6 +18,7 @@
 #include "dream/render/render_format.h"
 #include "dream/render/run_animation.h"
 #include "dream/render/run_geometry.h"
+#include "dream/render/viewport.h"
 #include "dream/render/trajectory_picture.h"
 #include "dream/robotarium/robotarium_constants.h"
 #include "dream/run_config/run_config.h"
@@ -63,6 +64,21 @@ Kind KindOf(const RenderWorkflow::Options& args) {
   }
   if (plot) throw RenderWorkflow::UsageError("--plot/--metric draw a .png or .svg, got --out " + args.out);
   return Kind::kVideo;
+}
+
+// What only a video draws, refused for pictures and plots rather than ignored.
+void CheckVideoOnlyOptions(const RenderWorkflow::Options& args, Kind kind) {
+  if (kind == Kind::kVideo) return;
+  const char* option = !args.viewport.empty() ? "--viewport"
+                       : !args.steps.empty()  ? "--steps"
+                       : !args.robot_ids      ? "--no-ids"
+                                              : nullptr;
+  if (option != nullptr) throw RenderWorkflow::UsageError(std::string(option) + " is for videos (.mp4, .gif)");
+}
+
+bool AllDigits(const std::string& text) {
+  return !text.empty() && text.size() <= 12 &&
+         std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 
 /// The run's config: --config, else config.yaml beside the log when there.
@@ -207,9 +223,28 @@ std::string SecondsSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
+std::pair<int64_t, int64_t> RenderWorkflow::ParseStepRange(const std::string& text) {
+  const size_t dash = text.find('-');
+  const std::string first = text.substr(0, dash);
+  const std::string last = dash == std::string::npos ? "" : text.substr(dash + 1);
+  if (!AllDigits(first) || !AllDigits(last)) {
+    throw std::invalid_argument("--steps " + text.substr(0, 40) + ": expected FIRST-LAST, whole steps (120-480)");
+  }
+  const std::pair<int64_t, int64_t> range{std::stoll(first), std::stoll(last)};
+  if (range.first > range.second) {
+    throw std::invalid_argument("--steps " + text + ": the first step is after the last");
+  }
+  return range;
+}
+
 RenderWorkflow::Result RenderWorkflow::Render(const Options& args) const {
   const auto start = std::chrono::steady_clock::now();
   const Kind kind = KindOf(args);
+  CheckVideoOnlyOptions(args, kind);
+  const std::optional<render::Viewport> viewport =
+      args.viewport.empty() ? std::nullopt : std::optional<render::Viewport>(render::Viewport::Parse(args.viewport));
+  const std::pair<int64_t, int64_t> steps =
+      args.steps.empty() ? std::pair<int64_t, int64_t>{-1, -1} : ParseStepRange(args.steps);
   const fs::path log = files::RunLogPath(args.run_or_log);
   const fs::path out = args.out.empty() ? DefaultOutput(log, kind) : fs::path(args.out);
   const render::RenderFormat format = *render::RenderFormatOfPath(out.string());
@@ -231,9 +266,12 @@ RenderWorkflow::Result RenderWorkflow::Render(const Options& args) const {
   }
   render::ArenaOverlays overlays = Overlays(args, log, run.num_robots());
   RunLabelFromSummary(log, &overlays);
+  if (!args.goals) overlays.goals_m.clear();
   // Where and when the run broke a rule, by the world's own checks (the
   // Robotarium's arena and collision rule: WorldParams is not configurable).
-  overlays.violations = render::LocateViolations(run, {}, world::ViolationTracker::kDefaultMaxListed, stop);
+  if (args.violations) {
+    overlays.violations = render::LocateViolations(run, {}, world::ViolationTracker::kDefaultMaxListed, stop);
+  }
   stop.ThrowIfRequested();
   if (kind == Kind::kPicture) {
     render::TrajectoryPicture::Render(run, overlays, out.string(), format, args.width_px > 0 ? args.width_px : 1280);
@@ -249,15 +287,21 @@ RenderWorkflow::Result RenderWorkflow::Render(const Options& args) const {
   options.fps = args.fps > 0 ? args.fps : gif ? 15 : 30;
   options.speed = args.speed;
   options.trail_s = args.trail_s;
+  options.viewport = viewport;
+  options.first_step = steps.first;
+  options.last_step = steps.second;
+  options.robot_ids = args.robot_ids;
   render::RunAnimation animation(run, overlays, options);
   spdlog::info("rendering {} frames ({:.1f} s of video at {} fps) to {}", animation.frame_count(),
                animation.duration_s(), options.fps, out.string());
-  if (!animation.Write(out.string(), format, [&stop] { return stop.Requested(); })) {
+  if (!animation.Write(
+          out.string(), format, [&stop] { return stop.Requested(); }, args.progress)) {
     return {true, out.string()};
   }
   out_ << "video:   " << out.string() << " (" << animation.frame_count() << " frames, "
        << SecondsText(animation.duration_s()) << " at " << options.fps << " fps, " << animation.layout().width_px()
-       << "x" << animation.layout().height_px() << ", " << SecondsSince(start) << ")\n";
+       << "x" << animation.layout().height_px() << ", " << SecondsSince(start) << "), steps "
+       << animation.StepOfFrame(0) << "-" << animation.StepOfFrame(animation.frame_count() - 1) << "\n";
   return {false, out.string()};
 }
 

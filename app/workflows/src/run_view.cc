@@ -18,6 +18,7 @@
 #include "dream/view/frame_json.h"
 #include "dream/workflows/kind_step_metrics.h"
 #include "dream/workflows/view_replay.h"
+#include "dream/workflows/view_video_exports.h"
 
 namespace dream::workflows {
 
@@ -134,6 +135,7 @@ void RunView::ServeReplayOf(const std::string& run_dir) {
   try {
     const ViewReplay replay = ViewReplay::OfRun(run_dir, "", python_runtime_dir_);
     server_.ServeReplay(view::SetupJson(replay.setup), replay.run_json);
+    server_.SetVideoExports(VideoExportsOfRun(replay, run_dir, ""));
     std::cout << "dream view: the run is over; " << server_.url() << " replays it. Later: dream view " << run_dir
               << std::endl;
   } catch (const std::exception& e) {

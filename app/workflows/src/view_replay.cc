@@ -175,6 +175,8 @@ ViewReplay ViewReplay::OfRun(const std::string& run, const std::string& config_p
   const view::MetricTimeline metrics = MetricsOfRun(log, log_path, replay.setup);
   replay.run_json = view::RunReplayJson(log, replay.setup, view::kMaxPoseValues, &metrics);
   replay.steps = log.poses().size();
+  replay.first_step = log.first_step();
+  replay.last_step = log.last_step();
   return replay;
 }
 

@@ -14,6 +14,7 @@
 #include "dream/view/view_server.h"
 #include "dream/workflows/run_view.h"
 #include "dream/workflows/view_replay.h"
+#include "dream/workflows/view_video_exports.h"
 
 namespace dream::workflows {
 namespace {
@@ -64,6 +65,7 @@ void ViewWorkflow::ServeReplay(const Options& args) const {
   view::ViewServer server({args.bind, args.port, true, 8});
   server.SetSetup(view::SetupJson(replay.setup));
   server.SetRunData(replay.run_json);
+  server.SetVideoExports(VideoExportsOfRun(replay, args.run, args.config_path));
   out_ << "dream view: open " << server.url() << " (replay of " << args.run << ", " << replay.steps
        << " steps); Ctrl-C to stop" << std::endl;
   WaitFor(*args.stop);

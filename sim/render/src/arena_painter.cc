@@ -34,6 +34,15 @@ std::string TickLabel(double value_m) {
   return text;
 }
 
+// Positions k * step_m from lo_m to hi_m (counted, so 0.1 steps do not drift).
+std::vector<double> GridLines(double lo_m, double hi_m, double step_m) {
+  std::vector<double> lines;
+  const auto first = static_cast<int64_t>(std::ceil(lo_m / step_m - 1e-9));
+  const auto last = static_cast<int64_t>(std::floor(hi_m / step_m + 1e-9));
+  for (int64_t k = first; k <= last; ++k) lines.push_back(static_cast<double>(k) * step_m);
+  return lines;
+}
+
 // Null for a verdict of no known name (shown as it is).
 const char* VerdictExplained(const std::string& verdict) {
   const std::optional<world::RunVerdict> known = world::ParseRunVerdict(verdict);
@@ -78,13 +87,28 @@ void ArenaPainter::Background() const {
   const double ui = layout_.ui_scale();
   cairo_set_source_rgb(cr_, 1, 1, 1);
   cairo_paint(cr_);
+  cairo_save(cr_);
+  if (layout_.zoomed()) {
+    // A viewport: only the frame shows the world; its edge is drawn, thin.
+    cairo_set_source_rgb(cr_, 0.6, 0.6, 0.6);
+    cairo_set_line_width(cr_, 1.0);
+    cairo_rectangle(cr_, layout_.frame_left_px() - 0.5, layout_.frame_top_px() - 0.5,
+                    layout_.frame_right_px() - layout_.frame_left_px() + 1,
+                    layout_.frame_bottom_px() - layout_.frame_top_px() + 1);
+    cairo_stroke(cr_);
+    cairo_rectangle(cr_, layout_.frame_left_px(), layout_.frame_top_px(),
+                    layout_.frame_right_px() - layout_.frame_left_px(),
+                    layout_.frame_bottom_px() - layout_.frame_top_px());
+    cairo_clip(cr_);
+  }
   cairo_set_source_rgb(cr_, 0.9, 0.9, 0.9);
   cairo_set_line_width(cr_, std::max(1.0, ui));
-  for (double x = std::ceil(arena.x_min_m * 2) / 2; x <= arena.x_max_m + 1e-9; x += 0.5) {
+  const double step = layout_.grid_step_m();
+  for (const double x : GridLines(arena.x_min_m, arena.x_max_m, step)) {
     cairo_move_to(cr_, layout_.px(x), layout_.py(arena.y_min_m));
     cairo_line_to(cr_, layout_.px(x), layout_.py(arena.y_max_m));
   }
-  for (double y = std::ceil(arena.y_min_m * 2) / 2; y <= arena.y_max_m + 1e-9; y += 0.5) {
+  for (const double y : GridLines(arena.y_min_m, arena.y_max_m, step)) {
     cairo_move_to(cr_, layout_.px(arena.x_min_m), layout_.py(y));
     cairo_line_to(cr_, layout_.px(arena.x_max_m), layout_.py(y));
   }
@@ -94,11 +118,11 @@ void ArenaPainter::Background() const {
   cairo_rectangle(cr_, layout_.px(arena.x_min_m), layout_.py(arena.y_max_m), arena.width_m() * layout_.scale(),
                   arena.height_m() * layout_.scale());
   cairo_stroke(cr_);
+  cairo_restore(cr_);
   AxisLabels();
 }
 
 void ArenaPainter::AxisLabels() const {
-  const world::Arena& arena = layout_.arena();
   const double ui = std::max(layout_.ui_scale(), 0.5);
   const double gap = 5.0 * ui;  // between the frame and a label
   cairo_set_source_rgb(cr_, 0.45, 0.45, 0.45);
@@ -108,21 +132,23 @@ void ArenaPainter::AxisLabels() const {
   cairo_font_extents(cr_, &font);
   cairo_text_extents_t extents;
   // x: centred under each grid line; the unit after the frame's right end.
-  const double x_baseline = layout_.py(arena.y_min_m) + gap + font.ascent;
-  for (double x = std::ceil(arena.x_min_m * 2) / 2; x <= arena.x_max_m + 1e-9; x += 0.5) {
+  const Viewport& seen = layout_.visible();
+  const double step = layout_.grid_step_m();
+  const double x_baseline = layout_.frame_bottom_px() + gap + font.ascent;
+  for (const double x : GridLines(seen.x_min_m, seen.x_max_m, step)) {
     const std::string text = TickLabel(x);
     cairo_text_extents(cr_, text.c_str(), &extents);
     cairo_move_to(cr_, layout_.px(x) - extents.x_advance / 2, x_baseline);
     cairo_show_text(cr_, text.c_str());
   }
-  cairo_move_to(cr_, layout_.px(arena.x_max_m) + gap, x_baseline);
+  cairo_move_to(cr_, layout_.frame_right_px() + gap, x_baseline);
   cairo_show_text(cr_, "m");
   // y: right-aligned left of the frame, vertically centred on each grid line.
   const double middle = (font.ascent - font.descent) / 2;
-  for (double y = std::ceil(arena.y_min_m * 2) / 2; y <= arena.y_max_m + 1e-9; y += 0.5) {
+  for (const double y : GridLines(seen.y_min_m, seen.y_max_m, step)) {
     const std::string text = TickLabel(y);
     cairo_text_extents(cr_, text.c_str(), &extents);
-    cairo_move_to(cr_, layout_.px(arena.x_min_m) - gap - extents.x_advance, layout_.py(y) + middle);
+    cairo_move_to(cr_, layout_.frame_left_px() - gap - extents.x_advance, layout_.py(y) + middle);
     cairo_show_text(cr_, text.c_str());
   }
 }
@@ -131,8 +157,8 @@ void ArenaPainter::Legend(const std::vector<LegendItem>& items) const {
   const double y = layout_.legend_center_px();
   const double font_px = layout_.caption_font_px() * 0.9;
   const double ui = std::max(layout_.ui_scale(), 0.5);
-  const double marker_px = kRobotRadiusM * layout_.scale();  // half the widest marker
-  double x = layout_.px(layout_.arena().x_min_m) + marker_px;
+  const double marker_px = kRobotRadiusM * layout_.frame_scale();  // half the widest marker
+  double x = layout_.frame_left_px() + marker_px;
   for (const LegendItem& item : items) {
     switch (item.marker) {
       case LegendItem::Marker::kRobot:
@@ -167,10 +193,12 @@ void ArenaPainter::Legend(const std::vector<LegendItem>& items) const {
 
 void ArenaPainter::ClipToArena() const {
   const world::Arena& arena = layout_.arena();
-  const double left = std::floor(layout_.px(arena.x_min_m));
-  const double top = std::floor(layout_.py(arena.y_max_m));
-  cairo_rectangle(cr_, left, top, std::ceil(layout_.px(arena.x_max_m)) - left,
-                  std::ceil(layout_.py(arena.y_min_m)) - top);
+  // Zoomed, the arena may reach past the frame: the frame bounds it.
+  const double left = std::floor(std::max(layout_.px(arena.x_min_m), layout_.frame_left_px()));
+  const double top = std::floor(std::max(layout_.py(arena.y_max_m), layout_.frame_top_px()));
+  const double right = std::ceil(std::min(layout_.px(arena.x_max_m), layout_.frame_right_px()));
+  const double bottom = std::ceil(std::min(layout_.py(arena.y_min_m), layout_.frame_bottom_px()));
+  cairo_rectangle(cr_, left, top, std::max(0.0, right - left), std::max(0.0, bottom - top));
   cairo_clip(cr_);
 }
 
@@ -373,7 +401,7 @@ void ArenaPainter::Caption(int line, const std::string& text) const {
   cairo_set_source_rgb(cr_, 0.2, 0.2, 0.2);
   cairo_select_font_face(cr_, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr_, layout_.caption_font_px());
-  cairo_move_to(cr_, layout_.px(layout_.arena().x_min_m), layout_.caption_baseline_px(line));
+  cairo_move_to(cr_, layout_.frame_left_px(), layout_.caption_baseline_px(line));
   cairo_show_text(cr_, text.c_str());
 }
 

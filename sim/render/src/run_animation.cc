@@ -37,6 +37,25 @@ int EvenFrameWidth(int width_px) {
   return width_px - width_px % 2;
 }
 
+// A viewport's world reaches past the frame: nothing drawn there.
+void ClipToFrame(cairo_t* cr, const ArenaLayout& layout) {
+  if (!layout.zoomed()) return;
+  cairo_rectangle(cr, layout.frame_left_px(), layout.frame_top_px(), layout.frame_right_px() - layout.frame_left_px(),
+                  layout.frame_bottom_px() - layout.frame_top_px());
+  cairo_clip(cr);
+}
+
+// The step range shown, checked against the log's.
+int64_t CheckedStep(int64_t step, int64_t fallback, const run_log::RunLog& log, const char* which) {
+  if (step < 0) return fallback;
+  if (step < log.first_step() || step > log.last_step()) {
+    throw std::invalid_argument(std::string("--steps: the ") + which + " step " + std::to_string(step) +
+                                " is not in the run (steps " + std::to_string(log.first_step()) + "-" +
+                                std::to_string(log.last_step()) + ")");
+  }
+  return step;
+}
+
 std::string Number(double value) {
   char text[32];
   std::snprintf(text, sizeof(text), "%g", value);
@@ -59,9 +78,14 @@ RunAnimation::RunAnimation(const run_log::RunLog& log, const ArenaOverlays& over
     : log_(Drawable(log)),
       overlays_(overlays),
       options_(options),
-      layout_(EvenFrameWidth(options.width_px), overlays.violations.total() > 0 ? 2 : 1, /*even_size=*/true),
+      layout_(EvenFrameWidth(options.width_px), overlays.violations.total() > 0 ? 2 : 1, /*even_size=*/true,
+              options.viewport),
       obstacles_move_(!MovingObstaclePaths(log).empty()),
+      first_step_(CheckedStep(options.first_step, log.first_step(), log, "first")),
+      last_step_(CheckedStep(options.last_step, log.last_step(), log, "last")),
       surfaces_(std::make_unique<Surfaces>(layout_)) {
+  CheckOption(first_step_ <= last_step_, "--steps: the first step " + std::to_string(first_step_) +
+                                             " is after the last " + std::to_string(last_step_));
   CheckOption(std::isfinite(options.fps) && options.fps >= 1 && options.fps <= 120,
               "--fps must be 1..120, got " + Number(options.fps));
   CheckOption(std::isfinite(options.speed) && options.speed > 0 && options.speed <= 10000,
@@ -73,7 +97,8 @@ RunAnimation::RunAnimation(const run_log::RunLog& log, const ArenaOverlays& over
   trail_steps_ = std::llround(options.trail_s / kStepS);
   radio_window_steps_ = std::max<int64_t>(std::llround(kRadioFlashS / kStepS),
                                           std::llround(std::ceil(options.speed / options.fps / kStepS)));
-  const int run_frames = static_cast<int>(std::ceil(DurationS(log) * options.fps / options.speed - 1e-9)) + 1;
+  const double shown_s = static_cast<double>(last_step_ - first_step_) * kStepS;
+  const int run_frames = static_cast<int>(std::ceil(shown_s * options.fps / options.speed - 1e-9)) + 1;
   frame_count_ = run_frames + static_cast<int>(std::lround(options.hold_end_s * options.fps));
   run_label_ = RunLabel(overlays, /*short_verdict=*/true);
   DrawStaticLayer();
@@ -90,9 +115,12 @@ void RunAnimation::DrawStaticLayer() {
     const ArenaPainter painter(cr.get(), layout_);
     painter.Background();
     const std::vector<std::vector<std::array<double, 2>>> moving = MovingObstaclePaths(log_);
+    cairo_save(cr.get());
+    ClipToFrame(cr.get(), layout_);
     painter.ObstaclePaths(moving);
     if (!obstacles_move_) painter.Obstacles(log_.obstacles_at(log_.poses().size() - 1).obstacles);
     painter.Goals(overlays_.goals_m);
+    cairo_restore(cr.get());
     using Item = ArenaPainter::LegendItem;
     std::vector<Item> legend = {{Item::Marker::kRobot, "robot", ArenaPainter::RobotLook::kFilled, 1.0}};
     if (!overlays_.goals_m.empty()) legend.push_back({Item::Marker::kGoal, "goal"});
@@ -108,8 +136,8 @@ void RunAnimation::DrawStaticLayer() {
 }
 
 int64_t RunAnimation::StepOfFrame(int frame) const {
-  const double t = std::min(frame * options_.speed / options_.fps, DurationS(log_));
-  return std::min<int64_t>(log_.first_step() + std::llround(t / kStepS), log_.last_step());
+  const double t = frame * options_.speed / options_.fps;
+  return std::min<int64_t>(first_step_ + std::llround(t / kStepS), last_step_);
 }
 
 void RunAnimation::DrawFrame(int frame) {
@@ -123,6 +151,8 @@ void RunAnimation::DrawFrame(int frame) {
   const int64_t step = StepOfFrame(frame);
   const size_t now = log_.PoseIndexAtStep(step);
   const robot_poses_t& poses = log_.poses()[now];
+  cairo_save(cr);
+  ClipToFrame(cr, layout_);
   if (obstacles_move_) painter.Obstacles(log_.obstacles_at(now).obstacles);
   surfaces_->range_sprites.Draw(cr, overlays_, poses);
   if (trail_steps_ > 0) {
@@ -132,10 +162,11 @@ void RunAnimation::DrawFrame(int frame) {
   painter.RadioLinks(overlays_, log_, now, radio_window_steps_);
   for (int32_t i = 0; i < poses.num_robots; ++i) {
     const auto k = static_cast<size_t>(i);
-    painter.Robot(i, poses.x[k], poses.y[k], poses.theta[k], ArenaPainter::RobotLook::kFilled, true);
+    painter.Robot(i, poses.x[k], poses.y[k], poses.theta[k], ArenaPainter::RobotLook::kFilled, options_.robot_ids);
   }
   // Each violation from its first step on, where it happened; faded once it is over.
   ViolationPainter(cr, layout_).Mark(overlays_.violations.listed, poses.step);
+  cairo_restore(cr);
   char caption[160];
   std::snprintf(caption, sizeof(caption), "step %lld   t = %.1f s   (%gx speed)", static_cast<long long>(poses.step),
                 static_cast<double>(poses.step) * kStepS, options_.speed);
@@ -165,23 +196,34 @@ void RunAnimation::WriteFramePng(int frame, const std::string& png_path) {
   picture.Commit(png_path);
 }
 
-bool RunAnimation::Write(const std::string& path, RenderFormat format, const std::function<bool()>& cancelled) {
+bool RunAnimation::Write(const std::string& path, RenderFormat format, const std::function<bool()>& cancelled,
+                         const Progress& progress) {
   if (IsPictureFormat(format)) throw std::invalid_argument("a video is .mp4 or .gif: " + path);
-  return Encode(path, format, cancelled);
+  return Encode(path, format, cancelled, progress);
 }
 
-bool RunAnimation::Encode(const std::string& path, RenderFormat format, const std::function<bool()>& cancelled) {
+int RunAnimation::FramesToDraw(RenderFormat format) const {
+  if (format != RenderFormat::kGif) return frame_count_;
+  const int every = std::max(1, frame_count_ / kPaletteSampleFrames);
+  return frame_count_ + (frame_count_ + every - 1) / every;
+}
+
+bool RunAnimation::Encode(const std::string& path, RenderFormat format, const std::function<bool()>& cancelled,
+                          const Progress& progress) {
   // Created here, exclusively under unguessable names (files::TemporaryFile),
   // before ffmpeg opens them by name: nothing planted in the folder is
   // written through; the video is renamed over `path` once whole.
   files::TemporaryFile video(path);
   files::TemporaryFile palette(path + ".palette", ".png");
   const FfmpegEncoder::Input input{layout_.width_px(), layout_.height_px(), options_.fps};
+  const int total = FramesToDraw(format);
+  int drawn = 0;
   auto feed = [&](FfmpegEncoder& encoder, int every) {
     for (int frame = 0; frame < frame_count_; frame += every) {
       if (cancelled && cancelled()) return false;
       DrawFrame(frame);
       encoder.WriteFrame(pixels(), stride_bytes());
+      if (progress) progress(++drawn, total);
     }
     encoder.Finish();
     return true;

@@ -19,14 +19,18 @@ class RequestFilter {
     std::string_view host;           ///< the Host header ("" when missing)
     std::string_view origin;         ///< the Origin header ("" when missing)
     bool websocket_upgrade = false;  ///< Connection: upgrade and Upgrade: websocket
+    /// The X-Dream-Export header: the page's script sends it to start an
+    /// export; another site's page cannot (a custom header needs CORS).
+    bool export_header = false;
   };
   /// What to do.
   struct Decision {
-    enum class Action { kAsset, kWebSocket, kRunData, kRefuse };
+    enum class Action { kAsset, kWebSocket, kRunData, kExportStart, kExportStatus, kExportVideo, kRefuse };
     Action action = Action::kRefuse;
     std::string asset;   ///< kAsset: the asset's name ("index.html")
     int status = 400;    ///< kRefuse: the HTTP status
     std::string reason;  ///< kRefuse: why, for the response body and the log
+    std::string query;   ///< kExportStart: the request's query (after '?')
   };
 
   /// Request targets longer than this are refused (414).
@@ -35,6 +39,10 @@ class RequestFilter {
   static constexpr std::string_view kWebSocketPath = "/ws";
   /// The replayed run's data (replay mode only).
   static constexpr std::string_view kRunDataPath = "/run.json";
+  /// Video export (VideoExports): start one (its parameters in the query), its progress, the video.
+  static constexpr std::string_view kExportStartPath = "/export/start";
+  static constexpr std::string_view kExportStatusPath = "/export/status";
+  static constexpr std::string_view kExportVideoPath = "/export/video";
 
   /// `loopback_only`: the server listens on a loopback address, so a Host
   /// other than 127.0.0.1, localhost or [::1] (at `port`) is refused: a web

@@ -8,6 +8,8 @@
 
 namespace dream::view {
 
+class VideoExports;
+
 /// The view's HTTP and WebSocket server (Boost.Beast) on one thread of its
 /// own: serves the page's embedded assets, /run.json in replay, and a
 /// WebSocket (/ws) to each browser, which gets the setup, the latest frame,
@@ -57,6 +59,9 @@ class ViewServer {
   /// `setup_json` (a replay's SetupJson), now and when it connects, and no
   /// live frame after it. Call it once no more frames are broadcast. Thread-safe.
   void ServeReplay(std::string setup_json, std::string run_json);
+  /// The video exports /export/* serves (a replay's run); none (the default,
+  /// and live): /export/start is refused, saying to export the replay. Thread-safe.
+  void SetVideoExports(std::shared_ptr<VideoExports> exports);
   /// Sends `frame_json` to every browser (queued per browser; never waits),
   /// and keeps it for browsers that connect later. Thread-safe.
   void Broadcast(std::string frame_json);

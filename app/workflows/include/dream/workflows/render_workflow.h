@@ -1,10 +1,13 @@
 #pragma once
 
 #include <atomic>
+#include <cstdint>
+#include <functional>
 #include <iostream>
 #include <ostream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dream::workflows {
@@ -24,12 +27,26 @@ class RenderWorkflow {
     std::vector<std::string> metrics;  ///< plot only these series (implies plot)
     bool radio_links = false;
     bool sensor_ranges = false;
-    int width_px = 0;                         ///< 0: 1280 pictures, 1000 plots, 720 MP4, 480 GIF
-    double fps = 0;                           ///< 0: 30 MP4, 15 GIF
-    double speed = 4.0;                       ///< simulated seconds per video second
-    double trail_s = 10.0;                    ///< simulated seconds of trail behind each robot
+    int width_px = 0;       ///< 0: 1280 pictures, 1000 plots, 720 MP4, 480 GIF
+    double fps = 0;         ///< 0: 30 MP4, 15 GIF
+    double speed = 4.0;     ///< simulated seconds per video second
+    double trail_s = 10.0;  ///< simulated seconds of trail behind each robot
+    /// Videos: the part of the world shown, "XMIN,YMIN,XMAX,YMAX" metres
+    /// (render::Viewport::Parse); empty: the arena.
+    std::string viewport;
+    /// Videos: the steps shown, "FIRST-LAST" (ParseStepRange); empty: the whole run.
+    std::string steps;
+    bool goals = true;       ///< the config's goals (pictures and videos)
+    bool violations = true;  ///< the violations marked (pictures and videos)
+    bool robot_ids = true;   ///< videos: each robot's id on its disc
+    /// Videos: frames drawn so far and to draw, after each (RunAnimation::Write).
+    std::function<void(int drawn, int total)> progress;
     const std::atomic<bool>* stop = nullptr;  ///< asked between the stages and within the long ones
   };
+
+  /// "FIRST-LAST" (whole steps, "120-480") as {first, last}.
+  /// @throws std::invalid_argument naming --steps and the value.
+  static std::pair<int64_t, int64_t> ParseStepRange(const std::string& text);
 
   /// Options that do not go together (--plot with --video, an unknown
   /// extension): the command line's usage, not its input.

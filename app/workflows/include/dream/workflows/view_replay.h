@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -15,8 +16,10 @@ namespace dream::workflows {
 /// turns into at the run's end, built once here so both show the same.
 struct ViewReplay {
   view::ViewSetup setup;
-  std::string run_json;  ///< RunReplayJson
-  size_t steps = 0;      ///< steps with poses in the log
+  std::string run_json;    ///< RunReplayJson
+  size_t steps = 0;        ///< steps with poses in the log
+  int64_t first_step = 0;  ///< the log's first and last step with poses
+  int64_t last_step = 0;
 
   /// `run`: a run folder or an .lcmlog; `config_path`: the run's config, or
   /// "" for config.yaml beside the log (a warning when that one cannot be

@@ -1,5 +1,8 @@
 #pragma once
 
+#include <optional>
+
+#include "dream/render/viewport.h"
 #include "dream/world/arena.h"
 
 namespace dream::render {
@@ -9,20 +12,38 @@ namespace dream::render {
 /// arena that holds its tick labels in metres, a legend row below it and room
 /// for caption lines under the legend. Line widths and fonts grow
 /// with ui_scale() so a 720 px video frame and a 1280 px picture look alike.
+/// The frame (where the arena is drawn) keeps the arena's shape; with a
+/// Viewport it shows that part of the world instead, zoomed to fit it whole.
 class ArenaLayout {
  public:
   /// @param even_size rounds the height up to an even number (H.264 frames
   ///        need even sizes; the width must then be even too).
+  /// @param viewport the part of the world the frame shows; none: the arena.
   /// @throws std::invalid_argument when width_px is below kMinWidthPx.
-  ArenaLayout(int width_px, int caption_lines, bool even_size = false);
+  ArenaLayout(int width_px, int caption_lines, bool even_size = false,
+              const std::optional<Viewport>& viewport = std::nullopt);
 
   static constexpr int kMinWidthPx = 160;
   static constexpr int kMaxWidthPx = 8192;
 
-  double px(double x_m) const { return margin_px_ + (x_m - arena_.x_min_m) * scale_; }
-  double py(double y_m) const { return margin_px_ + (arena_.y_max_m - y_m) * scale_; }
-  /// Pixels per metre.
+  double px(double x_m) const { return margin_px_ + (x_m - visible_.x_min_m) * scale_; }
+  double py(double y_m) const { return margin_px_ + (visible_.y_max_m - y_m) * scale_; }
+  /// Pixels per metre in the frame (grows with a viewport's zoom).
   double scale() const { return scale_; }
+  /// Pixels per metre of the whole arena in the frame: the legend's markers, drawn to this scale, stay put when zoomed.
+  double frame_scale() const { return frame_scale_; }
+  /// The world the frame shows: the arena, or the viewport widened in one
+  /// direction to the frame's shape.
+  const Viewport& visible() const { return visible_; }
+  /// A viewport was given: drawings must be clipped to the frame.
+  bool zoomed() const { return zoomed_; }
+  /// The frame's edges, pixels from the left and top.
+  double frame_left_px() const { return margin_px_; }
+  double frame_top_px() const { return margin_px_; }
+  double frame_right_px() const { return margin_px_ + arena_.width_m() * frame_scale_; }
+  double frame_bottom_px() const { return margin_px_ + arena_.height_m() * frame_scale_; }
+  /// Metres between grid lines (and tick labels): 0.5 for the arena, finer when zoomed in.
+  double grid_step_m() const;
   /// 1 for a 1280 px wide picture.
   double ui_scale() const { return ui_scale_; }
   int width_px() const { return width_px_; }
@@ -44,7 +65,10 @@ class ArenaLayout {
   int width_px_;
   double ui_scale_;
   double margin_px_;
+  double frame_scale_;
   double scale_;
+  Viewport visible_;
+  bool zoomed_;
   int height_px_;
 };
 

@@ -3,11 +3,13 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "dream/render/arena_layout.h"
 #include "dream/render/arena_overlays.h"
 #include "dream/render/render_format.h"
+#include "dream/render/viewport.h"
 #include "dream/run_log/run_log.h"
 
 namespace dream::render {
@@ -19,6 +21,12 @@ struct AnimationOptions {
   double speed = 4.0;       ///< simulated seconds per video second (> 0): 3,000 steps = 99 s play in ~25 s
   double trail_s = 10.0;    ///< simulated seconds of path drawn behind each robot (0: none)
   double hold_end_s = 1.0;  ///< the last frame stays this long, video seconds (>= 0)
+  /// The part of the world shown (zoom and pan: ArenaLayout); none: the arena.
+  std::optional<Viewport> viewport;
+  /// The steps shown, first to last (both in the log's range); -1: the log's first, last.
+  int64_t first_step = -1;
+  int64_t last_step = -1;
+  bool robot_ids = true;  ///< each robot's id on its disc
 };
 
 /// A run as a video, like the thesis's videos: the arena to scale, robots as
@@ -30,8 +38,9 @@ struct AnimationOptions {
 /// those begun so far, tick labels
 /// in metres, a legend row, and a caption: the run's name and verdict when
 /// known, then the step and time. Frame f shows simulated time min(f * speed / fps,
-/// duration), so there are ceil(duration * fps / speed) + 1 frames of the run
-/// plus round(hold_end_s * fps) of the last one.
+/// duration) after the first step shown, so there are ceil(duration * fps / speed) + 1
+/// frames of the run (duration: from the first to the last step shown) plus
+/// round(hold_end_s * fps) of the last one.
 class RunAnimation {
  public:
   /// `log` and `overlays` must outlive the animation.
@@ -61,22 +70,31 @@ class RunAnimation {
   /// Encodes every frame to `path` (kMp4: H.264; kGif: two passes, a palette
   /// from a sample of frames, then the frames) with ffmpeg into a temporary
   /// file beside `path`, renamed into place when complete.
+  /// `progress` is told the frames drawn so far and how many there are to
+  /// draw (a GIF's palette pass counts too), after each frame.
   /// @return false, leaving nothing behind, when `cancelled` said so.
   /// @throws std::runtime_error naming the path, or quoting ffmpeg.
-  bool Write(const std::string& path, RenderFormat format, const std::function<bool()>& cancelled = {});
+  using Progress = std::function<void(int drawn, int total)>;
+  bool Write(const std::string& path, RenderFormat format, const std::function<bool()>& cancelled = {},
+             const Progress& progress = {});
+  /// Frames Write draws for `format`: frame_count(), plus the palette's sample for a GIF.
+  int FramesToDraw(RenderFormat format) const;
 
  private:
   struct Surfaces;
   void DrawStaticLayer();
   /// The second caption line when the run has violations: how many began by `step`.
   std::string ViolationsSoFar(int64_t step) const;
-  bool Encode(const std::string& path, RenderFormat format, const std::function<bool()>& cancelled);
+  bool Encode(const std::string& path, RenderFormat format, const std::function<bool()>& cancelled,
+              const Progress& progress);
 
   const run_log::RunLog& log_;
   const ArenaOverlays& overlays_;
   AnimationOptions options_;
   ArenaLayout layout_;
   bool obstacles_move_;
+  int64_t first_step_;
+  int64_t last_step_;
   int64_t trail_steps_;
   int64_t radio_window_steps_;
   int frame_count_ = 0;
