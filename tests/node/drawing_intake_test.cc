@@ -43,7 +43,7 @@ class DrawingIntakeTest : public ::testing::Test {
   Heard Take(const std::string& channel, const drawing_t& drawing) {
     std::vector<uint8_t> bytes(static_cast<size_t>(drawing.getEncodedSize()));
     drawing.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-    return intake_.Take(channel, drawing, bytes.data(), static_cast<int>(bytes.size()));
+    return intake_.Take(channel, bytes.data(), static_cast<int>(bytes.size()));
   }
   std::string FirstReason(const std::string& channel) const { return bad_.first().at(channel).reason; }
 
@@ -77,6 +77,12 @@ TEST_F(DrawingIntakeTest, ADrawingThatBreaksItsTypesRulesIsRefusedNamingWhy) {
   kind.kind = {9};
   EXPECT_EQ(Take(lcm::DrawChannel(1), kind), Heard::kRefused);
   EXPECT_EQ(FirstReason(lcm::DrawChannel(1)), "drawing: shape 0: kind 9 is none of LINE..TEXT (1..5)");
+}
+
+TEST_F(DrawingIntakeTest, BytesThatAreNoDrawingAreRefused) {
+  const std::vector<uint8_t> garbage(40, 0xab);
+  EXPECT_EQ(intake_.Take(lcm::DrawChannel(0), garbage.data(), static_cast<int>(garbage.size())), Heard::kRefused);
+  EXPECT_EQ(FirstReason(lcm::DrawChannel(0)).rfind("cannot decode 40 bytes as drawing_t: ", 0), 0u);
 }
 
 TEST_F(DrawingIntakeTest, AFloodOfDifferentDrawingsInOneStepIsRefused) {

@@ -112,8 +112,8 @@ TEST_F(DrawingPainterTest, EachShapeIsDrawnWhereAndAsItWasDrawn) {
   EXPECT_TRUE(picture.Near(layout_.px(-1.2 + 0.12), layout_.py(-0.6), kGreen));  // filled out to its radius
   EXPECT_TRUE(picture.Near(layout_.px(-1.2 + 0.18), layout_.py(-0.6), kWhite));
   EXPECT_TRUE(picture.Near(layout_.px(1.2), layout_.py(-0.7), kMagenta));
-  EXPECT_TRUE(picture.Near(layout_.px(0.0), layout_.py(0.8), kDarkBlue, 30));
-  EXPECT_TRUE(picture.Near(layout_.px(0.0), layout_.py(0.8 + 0.03), kWhite));  // 4 cm wide
+  EXPECT_TRUE(picture.Near(layout_.px(0.2), layout_.py(0.8), kDarkBlue, 30));
+  EXPECT_TRUE(picture.Near(layout_.px(0.2), layout_.py(0.8 + 0.03), kWhite));  // 4 cm wide
   EXPECT_GT(picture.CountNear(layout_.px(0.5), layout_.py(-0.7), layout_.px(0.8), layout_.py(-0.8), {0, 0, 0}, 60), 20);
 }
 
@@ -121,10 +121,10 @@ TEST_F(DrawingPainterTest, AClearedDrawingAndTheLayerOffLeaveNoPixels) {
   const std::string cleared = Log("cleared.lcmlog", 80);
   const PicturePixels picture(Picture(cleared));
   EXPECT_TRUE(picture.Near(layout_.px(-1.2), layout_.py(-0.6), kWhite));
-  EXPECT_TRUE(picture.Near(layout_.px(0.0), layout_.py(0.8), kDarkBlue, 30));
+  EXPECT_TRUE(picture.Near(layout_.px(0.2), layout_.py(0.8), kDarkBlue, 30));
   const PicturePixels off(Picture(Log("off.lcmlog"), /*draw=*/false));
   EXPECT_TRUE(off.Near(layout_.px(-1.2), layout_.py(-0.6), kWhite));
-  EXPECT_TRUE(off.Near(layout_.px(0.0), layout_.py(0.8), kWhite));
+  EXPECT_TRUE(off.Near(layout_.px(0.2), layout_.py(0.8), kWhite));
 }
 
 }  // namespace

@@ -118,6 +118,7 @@ void BusFrameCollector::OnMessage(const std::string& channel, const void* data, 
     }
     OnCommand(*robot);
   } else if (const std::optional<int> drawer = lcm::RobotIdFromChannel(channel, lcm::kDrawChannelPrefix)) {
+    drawing_in_ = drawing_t();  // lcm-gen's decoder leaves an array whose count is 0 as it was
     const bool decoded = lcm::Decode(data, size, &drawing_in_);
     std::lock_guard<std::mutex> lock(mutex_);
     if (!decoded) {

@@ -50,6 +50,8 @@ class AgentMessagesHeard {
     } else if (record.channel == lcm::kAppliedChannel) {
       if (lcm::Decode(data, size, &applied_)) applied_heard_.push_back(std::move(applied_));
     } else if (const std::optional<int> drawer = lcm::RobotIdFromChannel(record.channel, lcm::kDrawChannelPrefix)) {
+      // A fresh message each time: lcm-gen's decoder leaves an array whose count is 0 as it was.
+      drawing_ = drawing_t();
       if (lcm::Decode(data, size, &drawing_) && lcm::DrawingShapes::Problem(drawing_).empty()) {
         drawings_heard_.push_back(
             {{*drawer, drawing_.run_id, drawing_.step, drawing_.robot_id},

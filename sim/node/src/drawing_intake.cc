@@ -7,6 +7,8 @@
 #include "dream/drawing_t.hpp"
 #include "dream/lcm/channels.h"
 #include "dream/lcm/drawing_shapes.h"
+#include "dream/lcm/lcm_typed.h"
+#include "dream/lcm/wire_layout_of.h"
 #include "dream/lcm/run_id.h"
 
 namespace dream::node {
@@ -29,7 +31,13 @@ std::string DrawingIntake::Problem(const std::string& channel, const drawing_t& 
   return "";
 }
 
-Heard DrawingIntake::Take(const std::string& channel, const drawing_t& drawing, const void* data, int size) {
+Heard DrawingIntake::Take(const std::string& channel, const void* data, int size) {
+  drawing_t drawing;
+  if (std::optional<std::string> wrong = lcm::DecodeProblem(data, size, &drawing)) {
+    bad_messages_.Report(channel, "cannot decode " + std::to_string(size) + " bytes as drawing_t: " + *wrong,
+                         lcm::WireLayoutOf<drawing_t>().AgentIdOf(data, size));
+    return Heard::kRefused;
+  }
   std::string problem = Problem(channel, drawing);
   if (problem.empty()) {
     RobotDrawings& robot = robots_[static_cast<size_t>(drawing.robot_id)];  // Problem() checked the id

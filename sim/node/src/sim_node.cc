@@ -17,7 +17,6 @@
 #include "dream/lcm/wire_text.h"
 #include "dream/node/world_messages.h"
 #include "dream/obstacles_t.hpp"
-#include "dream/drawing_t.hpp"
 #include "dream/radio_message_t.hpp"
 #include "dream/node/refused_record.h"
 #include "dream/robot_fault_t.hpp"
@@ -129,11 +128,7 @@ Heard SimNode::Hear(const std::string& channel, const void* data, int size) {
     if (!DecodeOrReport(bad_messages_, channel, data, size, &radio)) return Heard::kRefused;
     return radio_.Take(channel, radio, data, size);
   }
-  if (channel.rfind(lcm::kDrawChannelPrefix, 0) == 0) {
-    drawing_t drawing;
-    if (!DecodeOrReport(bad_messages_, channel, data, size, &drawing)) return Heard::kRefused;
-    return drawings_.Take(channel, drawing, data, size);
-  }
+  if (channel.rfind(lcm::kDrawChannelPrefix, 0) == 0) return drawings_.Take(channel, data, size);
   // DREAM_APPLIED and DREAM_MEASURED_POSES are the world's own records, never
   // sent: one heard is forged; any other name is not part of a run.
   bad_messages_.Report(

@@ -30,8 +30,9 @@ class DrawingIntake {
   /// `world` and `bad_messages` must outlive the intake.
   DrawingIntake(const world::World& world, int64_t run_id, lcm::BadMessageLog& bad_messages);
 
-  /// `data`/`size`: the message as heard, which decoded to `drawing`.
-  Heard Take(const std::string& channel, const drawing_t& drawing, const void* data, int size);
+  /// `data`/`size`: the message as heard (one that does not decode as a
+  /// drawing_t is refused, as SimNode refuses every agent message that does not).
+  Heard Take(const std::string& channel, const void* data, int size);
 
  private:
   struct RobotDrawings {
