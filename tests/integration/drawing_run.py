@@ -7,7 +7,8 @@ each update: a line to its goal, a circle round it, a heading arrow, its id and 
 (robot 0) a filled green square in a corner of the arena no robot drives through.
 
 1. The run with drawing and the same run without: every step's poses equal, the same summary
-   metrics and verdict; the drawing run's log holds DREAM_DRAW_<id> of every robot, each a
+   metrics and verdict, `dream log diff` of every channel but DREAM_DRAW_<id> equal (and of the
+   whole logs different, naming DREAM_DRAW_0); the drawing run's log holds DREAM_DRAW_<id> of every robot, each a
    drawing_t of that robot and run, with the shapes drawn (kinds, text); the other holds none.
 2. `dream render` of each as a PNG: the drawing run's picture has the green square (pixels of its
    colour where it was drawn), the other has none; the last frame of a GIF video of the drawing
@@ -112,6 +113,14 @@ def check_same_run(dream, with_drawing, without):
           f"summaries differ: {sa['verdict']} {sa['metrics']} / {sb['verdict']} {sb['metrics']}")
 
 
+def check_log_diff(ctx, args, run_dir, plain_dir):
+    """dream log diff: every channel but the drawings is the same, message for message."""
+    code, out = ctx.run([args.dream, "log", "diff", run_dir, plain_dir, "--channels", "(?!DREAM_DRAW_).*"], timeout=60)
+    check(code == 0, f"dream log diff of every channel but DREAM_DRAW_*: exit {code}: {out[-600:]}")
+    code, out = ctx.run([args.dream, "log", "diff", run_dir, plain_dir], timeout=60)
+    check(code == 1 and "DREAM_DRAW_0" in out, f"dream log diff of the whole logs: exit {code}: {out[-600:]}")
+
+
 def check_logged(dream, run_dir, plain_dir):
     drawings = drawings_of(dream, os.path.join(run_dir, "run.lcmlog"))
     run_id = dream.robot_poses_t.decode(next(e.data for e in read_events(os.path.join(run_dir, "run.lcmlog"))
@@ -167,6 +176,7 @@ def test(ctx):
     ctx.run([args.dream, "run", config, "--out", run_dir, "--set", "controller.draw=true"], timeout=120, expect=0)
     ctx.run([args.dream, "run", config, "--out", plain_dir], timeout=120, expect=0)
     check_same_run(dream, run_dir, plain_dir)
+    check_log_diff(ctx, args, run_dir, plain_dir)
     check_logged(dream, run_dir, plain_dir)
     check_rendered(ctx, args, run_dir, plain_dir)
     check_echo(ctx, args, run_dir)
