@@ -29,7 +29,7 @@ import time
 
 import numpy as np
 
-from .drawing import Drawing
+from .drawing import EMPTY_KEY, NOTHING_DRAWN
 from .radios import MAX_PAYLOAD_BYTES, RadioMessage
 from .robot import ObstacleView, WorldSnapshot
 from .robot_agent import ControllerFault, RunInterrupted
@@ -122,7 +122,7 @@ class _RobotSlot:
         self.last_radio = None
         self.draw_channel = f"DREAM_DRAW_{agent.id}"
         self.last_drawing = None  # this step's drawing_t bytes, sent with its command (and resends)
-        self.drawn_key = Drawing().key()  # what the robot drew last: the same is not sent again
+        self.drawn_key = EMPTY_KEY  # what the robot drew last: the same is not sent again
         self.clip_reasons_logged = set()
         self.fault = None
 
@@ -321,6 +321,8 @@ class AgentHost:
 
     def _take_drawing(self, robot, poses, drawing):
         """Keeps `drawing` as the robot's drawing_t for this step when it differs from its last."""
+        if drawing is NOTHING_DRAWN and robot.drawn_key == EMPTY_KEY:
+            return  # the common case: nothing drawn, nothing shown
         for reason, count in drawing.clip_reasons.items():
             if reason not in robot.clip_reasons_logged:
                 robot.clip_reasons_logged.add(reason)

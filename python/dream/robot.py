@@ -12,7 +12,7 @@ from collections import namedtuple
 
 import numpy as np
 
-from .drawing import Drawing
+from .drawing import NOTHING_DRAWN, Drawing
 from .motion import ActuatorLimits, RobotLimits, dxi_to_dxu
 
 
@@ -293,7 +293,7 @@ class Robot:
     def take_drawing(self):
         """What the robot drew since the last call, handed over and cleared (the agent takes it
         each time update() runs)."""
-        return self.__dict__.pop("_drawing_now", None) or Drawing()
+        return self.__dict__.pop("_drawing_now", None) or NOTHING_DRAWN
 
     def draw_line(self, start, end, color="k", width=0.01, alpha=None):
         """A line from `start` to `end` ([x, y], metres, world frame); `color` a name, '#rrggbb[aa]'
