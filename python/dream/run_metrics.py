@@ -153,8 +153,16 @@ def evaluate(robot_class, config, steps, poses):
     declared = [name for name in ("goal_points", "metrics", "goal") if callable(getattr(robot_class, name, None))]
     run = RunRecord(steps, poses, config)
     run.goal_points = _goal_points(robot_class, config, run.num_robots)
+    metrics, answer = declared_metrics(robot_class, run)
+    goal = _goal_entry(robot_class.goal(run, answer)) if "goal" in declared else None
+    return {"declared": declared, "metrics": metrics, "goal": goal, "goal_points": run.goal_points}
+
+
+def declared_metrics(robot_class, run):
+    """The class's metrics() on `run`: (metrics.json's entries, what metrics() returned); ({}, {})
+    when it declares none."""
     metrics, answer = {}, {}
-    if "metrics" in declared:
+    if callable(getattr(robot_class, "metrics", None)):
         answer = robot_class.metrics(run)
         if not isinstance(answer, dict):
             raise MetricsDeclarationError(f"metrics(): expected a dict of name -> value, got {answer!r}")
@@ -165,8 +173,7 @@ def evaluate(robot_class, config, steps, poses):
                 raise MetricsDeclarationError(f"metrics(): '{name}' is taken by summary.json's own fields "
                                               f"({', '.join(RESERVED_NAMES)}); pick another name")
             metrics.update(_metric_entries(name, value, run))
-    goal = _goal_entry(robot_class.goal(run, answer)) if "goal" in declared else None
-    return {"declared": declared, "metrics": metrics, "goal": goal, "goal_points": run.goal_points}
+    return metrics, answer
 
 
 def declared_goal_points(robot_class, config, num_robots):

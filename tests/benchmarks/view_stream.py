@@ -11,7 +11,9 @@ DREAM_POSES of --robots robots driving circles; lcmtypes' messages, udpm inside 
 network namespace netns.sh makes) at --rate steps a second for --seconds, then a FINISHED status.
 `dream view` (and its page in a headless Chromium) watches it. Reported: the steps published and
 at what rate, the frames the page received and drew, whether it shows the last step, and the CPU
-time spent by the view's process and by Chromium (all its processes) while the stream ran.
+time spent by the view's process and by Chromium while the stream ran: all its processes, its
+renderer process (the page's own), and the page's main-thread task time (devtools
+Performance.getMetrics' TaskDuration).
 Nothing here is a pass/fail test; the numbers go to docs/performance.md.
 """
 import argparse
@@ -61,6 +63,25 @@ def process_tree(root):
         tree |= more
         grew = bool(more)
     return sorted(tree)
+
+
+def renderers(pids):
+    """Those of `pids` that are Chromium renderer processes (the page's own: script, layout, drawing)."""
+    found = []
+    for pid in pids:
+        try:
+            with open(f"/proc/{pid}/cmdline", "rb") as f:
+                if b"--type=renderer" in f.read():
+                    found.append(pid)
+        except OSError:
+            pass
+    return found
+
+
+def task_seconds(page):
+    """The page's main-thread task time so far (devtools Performance.getMetrics' TaskDuration)."""
+    metrics = page.call("Performance.getMetrics")["metrics"]
+    return next(m["value"] for m in metrics if m["name"] == "TaskDuration")
 
 
 def messages(dream, robots, step, run_id, rate):
@@ -126,7 +147,11 @@ def main():
             steps = int(args.seconds * args.rate)
             run_id = int(time.time() * 1e6)
             chrome_pids = process_tree(chrome.pid) if chrome else []
+            renderer_pids = renderers(chrome_pids)
+            if page:
+                page.call("Performance.enable")
             view_cpu, chrome_cpu = cpu_seconds([view.pid]), cpu_seconds(chrome_pids)
+            renderer_cpu, tasks = cpu_seconds(renderer_pids), task_seconds(page) if page else 0.0
             start = time.monotonic()
             for step in range(steps + 1):
                 time.sleep(max(0.0, start + step / args.rate - time.monotonic()))
@@ -139,6 +164,8 @@ def main():
             bus.publish("DREAM_STATUS", status.encode())
             view_cpu = cpu_seconds([view.pid]) - view_cpu
             chrome_cpu = cpu_seconds(chrome_pids) - chrome_cpu
+            renderer_cpu = cpu_seconds(renderer_pids) - renderer_cpu
+            tasks = task_seconds(page) - tasks if page else 0.0
             print(f"stream: {args.robots} robots, {steps + 1} steps in {elapsed:.2f} s "
                   f"({steps / elapsed:.1f} steps/s), dream view --fps {args.fps or 'default'}")
             print(f"dream view's process: {view_cpu:.2f} s CPU ({100 * view_cpu / elapsed:.1f} % of a core)")
@@ -152,6 +179,9 @@ def main():
                       f"robots, state '{state.get('state')}'")
                 print(f"Chromium (all its processes): {chrome_cpu:.2f} s CPU ({100 * chrome_cpu / elapsed:.1f} % "
                       f"of a core)")
+                print(f"the page's renderer process ({len(renderer_pids)}): {renderer_cpu:.2f} s CPU "
+                      f"({100 * renderer_cpu / elapsed:.1f} % of a core); its main thread's tasks (devtools "
+                      f"TaskDuration) {tasks:.2f} s ({100 * tasks / elapsed:.1f} %)")
             bus.close()
         finally:
             if page:

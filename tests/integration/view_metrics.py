@@ -4,7 +4,8 @@
 `dream run --view --view-wait` of a three-robot go_to_goal (memq: nothing leaves the process):
 Chromium opens the page before step 0. Live, the page must plot the kind's figures and the safety
 figures (final_max_goal_error_m, min_pairwise_distance_m, ...), each following the run: the value
-shown is the one of the step shown, and the goal's error falls as the robots drive in. The goal's
+shown is the one of the step it says (computed on the view's metrics thread: the arena's step or one
+just before, never after), and the goal's error falls as the robots drive in. The goal's
 threshold (goal_tolerance_m) and the collision distance are drawn: red pixels on the plot's canvas
 where the page says each line is. At the end the page becomes the run's replay at its last step,
 where every plotted figure is summary.json's. Then the replay's timeline: scrubbed back, the plots
@@ -13,6 +14,10 @@ follow it (the figure at that step, the same number the page was sent live at th
 
 Every wait is on the page's state or a console line; the time-outs only turn a page that never
 gets there into a failure.
+
+A Python controller's metrics() live too: `dream run --view` of the shipped go_to_goal_python, its
+class's own figure plotted while the run runs (computed by a helper process, each reading of a
+step not after the arena's).
 
 The command arrows too (issue 37 item 2): live, each is the robot's command for the step drawn
 (or one just before, the newest heard); in replay, the log's command of the step drawn.
@@ -128,9 +133,10 @@ def watch_live(ctx, args, page):
             break
         goal = figure(shown or {}, GOAL)
         if shown and shown["mode"] == "live" and goal is not None and goal["value"] is not None:
-            check(goal["step"] == shown["step"],
-                  f"live: the plot shows {GOAL} of step {goal['step']}, the arena step {shown['step']}")
-            samples[shown["step"]] = {m["name"]: m["value"] for m in shown["metrics"]}
+            # Computed on the metrics' own thread, the figures may trail the arena's step, never lead it.
+            check(goal["step"] <= shown["step"],
+                  f"live: the plot shows {GOAL} of step {goal['step']}, after the arena's step {shown['step']}")
+            samples[goal["step"]] = {m["name"]: m["value"] for m in shown["metrics"] if m["step"] == goal["step"]}
             for r in shown["robots"]:
                 if r.get("cv") is not None:
                     live_commands[(shown["step"], r["id"])] = (r["cv"], r["cw"])
@@ -190,6 +196,38 @@ def check_replay_timeline(page, samples, commands, artifacts):
     check(hidden is True, "the metrics layer unticked leaves the plots shown")
 
 
+def watch_python_live(ctx, args):
+    """A Python controller's metrics() live (issue 37 item 3): `dream run --view` of the shipped
+    go_to_goal_python; the page plots the class's own figure, each reading of a step not after the
+    arena's, at more than one step before the run ends (its last point, summary.json's, is
+    ViewMetricsTest's)."""
+    run_dir = ctx.path("python_run")
+    ctx.start("python_run", [args.dream, "run", os.path.join(args.source, "config", "go_to_goal_python.yaml"),
+                             "--out", run_dir, "--view", "--view-port", "0", "--view-wait", "--pace", "2",
+                             "--view-keep", "0"])
+    ctx.wait_for_output("python_run", URL.pattern, 30)
+    url = URL.search(ctx.output("python_run")).group(1)
+    ctx.start("chromium_python", chromium_argv(ctx.path("chrome_python"), url), own_group=True)
+    page = Page(devtools_port(ctx.path("chrome_python")))
+    ctx.wait_for_output("python_run", r"a browser is watching: the run starts", 60)
+    seen = {}
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline:
+        shown = view_state(page)
+        if not shown or shown.get("mode") == "replay" or ctx.procs["python_run"][0].poll() is not None:
+            break
+        own = figure(shown, GOAL)  # the class's metrics(): the python kind has no C++ figure of that name
+        if shown.get("mode") == "live" and own is not None and own["value"] is not None:
+            check(own["step"] <= shown["step"],
+                  f"python live: {GOAL} of step {own['step']}, after the arena's step {shown['step']}")
+            seen[own["step"]] = own["value"]
+        time.sleep(0.02)
+    page.close()
+    code = ctx.wait("python_run", 60)
+    check(code == 0, f"dream run --view of go_to_goal_python: exit {code}")
+    check(len(seen) >= 2, f"python live: the class's {GOAL} was plotted at {len(seen)} steps (expected several)")
+
+
 def test(ctx):
     parser = argument_parser(types_dir=True)
     parser.add_argument("--artifacts", required=True, help="where the screenshots are kept")
@@ -216,6 +254,7 @@ def test(ctx):
     ctx.procs["run"][0].send_signal(signal.SIGINT)
     code = ctx.wait("run", 20)
     check(code == 0, f"dream run --view of a clean run that met its goal: exit {code}")
+    watch_python_live(ctx, args)
 
 
 if __name__ == "__main__":

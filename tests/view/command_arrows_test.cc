@@ -11,6 +11,8 @@
 #include "dream/velocity_command_t.hpp"
 #include "dream/view/bus_frame_collector.h"
 #include "dream/view/frame_json.h"
+#include "dream/view/live_view.h"
+#include "dream/view/view_server.h"
 #include "dream/view/replay_json.h"
 #include "synthetic_run_log.h"
 #include "temp_folder.h"
@@ -104,6 +106,55 @@ TEST_F(CommandArrowsTest, CommandsNotOfTheRunDrawnOrItsRobotsOrAheadOfItAreNotDr
   bus_.Publish("DREAM_CMD_0", "not a command", 13);
   Handle();
   EXPECT_EQ(collector_.bad_messages(), 1);
+}
+
+// dream view on udpm: the commands (most of a run's datagrams) only once a page shows the arrows.
+TEST_F(CommandArrowsTest, ACollectorAskedForNoCommandsHearsThemOnlyOnceSubscribed) {
+  lcm::LcmBus bus("memq://");
+  BusFrameCollector collector(bus, world::WorldParams(), &RunChoice::Clock::now, false);
+  auto step = [&](int64_t s) {
+    robot_poses_t poses{};
+    poses.run_id = 4;
+    poses.step = s;
+    poses.num_robots = 1;
+    poses.x = poses.y = poses.theta = poses.v = poses.w = {0.0};
+    run_status_t status{};
+    status.run_id = 4;
+    status.step = s;
+    status.state = run_status_t::RUNNING;
+    status.num_robots = 1;
+    lcm::Publish(bus, "DREAM_STATUS", status);
+    lcm::Publish(bus, "DREAM_POSES", poses);
+    lcm::Publish(bus, "DREAM_CMD_0", Command(4, s, 0, 0.1 * static_cast<double>(s + 1), 0.0));
+    while (bus.HandleSubscriptions(0) > 0) {
+    }
+  };
+  step(0);
+  ASSERT_TRUE(collector.TakeFrame(&frame_, &version_));
+  EXPECT_TRUE(frame_.command_v_mps.empty());  // not subscribed: not heard
+  collector.SubscribeCommands();
+  collector.SubscribeCommands();  // once is enough: a second call changes nothing
+  step(1);
+  ASSERT_TRUE(collector.TakeFrame(&frame_, &version_));
+  ASSERT_EQ(frame_.command_v_mps.size(), 1u);
+  EXPECT_EQ(frame_.command_v_mps[0], 0.2);
+}
+
+TEST(LiveViewCommandsTest, APageAsksForTheCommands) {
+  lcm::LcmBus bus("memq://");
+  ViewServer server({"127.0.0.1", 0, false, 4});
+  ViewSetup setup;
+  setup.commands_on_request = true;
+  LiveView live(bus, server, setup);
+  live.TakePageRequests();
+  EXPECT_FALSE(live.collector().hears_commands());  // no page asked
+  EXPECT_FALSE(live.OnPageMessage("commands please"));
+  EXPECT_TRUE(live.OnPageMessage("commands"));
+  EXPECT_FALSE(live.collector().hears_commands());  // the bus's thread subscribes, not the page's
+  live.TakePageRequests();
+  EXPECT_TRUE(live.collector().hears_commands());
+  setup.commands_on_request = false;  // dream run --view: from the start
+  EXPECT_TRUE(LiveView(bus, server, setup).collector().hears_commands());
 }
 
 TEST_F(CommandArrowsTest, ANewRunStartsWithoutCommands) {

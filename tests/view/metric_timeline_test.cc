@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
@@ -34,7 +36,7 @@ class RobotXMetrics final : public StepMetrics {
     ++observed_;
     if (observed_total_ != nullptr) ++*observed_total_;
   }
-  void Read(std::vector<MetricReading>* readings) const override {
+  void Read(std::vector<MetricReading>* readings) override {
     if (read_throws_) throw std::runtime_error("the kind's Write failed");
     readings->resize(3);
     (*readings)[0].name = "x0";
@@ -180,6 +182,8 @@ void Step(lcm::LcmBus& bus, int64_t run_id, int64_t step, double x0) {
   }
 }
 
+constexpr auto kGiveUp = std::chrono::seconds(60);  // only turns a hang into a failure
+
 class LiveMetricsTest : public ::testing::Test {
  protected:
   lcm::LcmBus bus_{"memq://"};
@@ -196,7 +200,8 @@ TEST_F(LiveMetricsTest, EachStepIsObservedOnceAndEachFrameCarriesTheFigures) {
     return std::make_unique<RobotXMetrics>(&observed_);
   });
   for (int64_t step = 0; step < 4; ++step) Step(bus_, 9, step, 0.1 * static_cast<double>(step));
-  Step(bus_, 9, 3, 0.3);  // a resend: the same step, not observed again
+  Step(bus_, 9, 3, 0.3);                            // a resend: the same step, not observed again
+  ASSERT_TRUE(collector_.WaitForMetrics(kGiveUp));  // computed on the metrics' own thread
   ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
   ASSERT_EQ(frame_.metrics.size(), 3u);
   EXPECT_EQ(frame_.metrics[0].name, "x0");
@@ -216,7 +221,6 @@ TEST_F(LiveMetricsTest, ARunDrawnAfreshGetsMetricsOfItsOwn) {
     ++made_;
     return std::make_unique<RobotXMetrics>(&observed_);
   });
-  const int before = made_;
   Step(bus_, 9, 0, 0.0);
   Step(bus_, 9, 0, 0.0);  // a resend
   Step(bus_, 9, 1, 0.1);
@@ -226,15 +230,18 @@ TEST_F(LiveMetricsTest, ARunDrawnAfreshGetsMetricsOfItsOwn) {
   finished.state = run_status_t::FINISHED;
   lcm::Publish(bus_, "DREAM_STATUS", finished);
   Step(bus_, 10, 0, 1.0);  // a new run
+  ASSERT_TRUE(collector_.WaitForMetrics(kGiveUp));
   ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
   EXPECT_EQ(frame_.run_id, 10);
-  EXPECT_EQ(made_ - before, 2);             // one per run drawn
+  // One when asked (each made on a thread of its own, joined when the next run starts), then one per run drawn.
+  EXPECT_EQ(made_, 3);
   EXPECT_EQ(frame_.metrics[1].value, 1.0);  // run 10's only step
 }
 
 TEST_F(LiveMetricsTest, MetricsThatThrowStopButTheRunIsStillDrawn) {
   collector_.FollowMetrics([] { return std::make_unique<RobotXMetrics>(nullptr, 2); });
   for (int64_t step = 0; step < 4; ++step) Step(bus_, 9, step, 0.1 * static_cast<double>(step));
+  ASSERT_TRUE(collector_.WaitForMetrics(kGiveUp));
   ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
   EXPECT_EQ(frame_.step, 3);
   EXPECT_TRUE(frame_.metrics.empty());
@@ -244,10 +251,12 @@ TEST_F(LiveMetricsTest, MetricsThatThrowStopButTheRunIsStillDrawn) {
 TEST_F(LiveMetricsTest, MetricsWhoseReadingThrowsStopAndTheFrameIsStillTaken) {
   collector_.FollowMetrics([] { return std::make_unique<RobotXMetrics>(nullptr, -1, true); });
   Step(bus_, 9, 0, 0.0);
+  ASSERT_TRUE(collector_.WaitForMetrics(kGiveUp));
   ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
   EXPECT_EQ(frame_.step, 0);
   EXPECT_TRUE(frame_.metrics.empty());
   Step(bus_, 9, 1, 0.1);
+  ASSERT_TRUE(collector_.WaitForMetrics(kGiveUp));
   ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));  // no second attempt: they stopped
   EXPECT_TRUE(frame_.metrics.empty());
 }

@@ -18,7 +18,7 @@ const DreamMetrics = (() => {
 
   function newSeries(name) {
     return { name, steps: new Float64Array(CAPACITY), values: new Float64Array(CAPACITY), n: 0,
-             threshold: null, label: "" };
+             threshold: null, label: "", latest: null };
   }
 
   function halve(m) {
@@ -30,30 +30,27 @@ const DreamMetrics = (() => {
     m.stride *= 2;
   }
 
-  // Live: a frame's readings at its step (a step not after the last is skipped).
+  // Live: a frame's readings, each at its own step (a figure computed later, a Python controller's
+  // metrics(), says an earlier one) or the frame's; a step not after the series' newest is skipped.
   function addLive(m, step, readings) {
     if (!readings || readings.length === 0 || step < 0) return;
-    if (m.latest && step <= m.latest.step) return;
-    m.latest = { step, values: new Map(readings.map((r) => [r.name, r.value])) };
-    if (m.first === null) m.first = step;
+    const due = m.offered++ % m.stride === 0;
+    let full = false;
     for (const r of readings) {  // a figure first seen now has its panel now
+      const at = r.step === undefined ? step : r.step;
       if (!m.series.has(r.name)) m.series.set(r.name, newSeries(r.name));
       const s = m.series.get(r.name);
       s.threshold = r.threshold === undefined ? null : r.threshold;
       s.label = r.label || "";
-    }
-    if (m.offered++ % m.stride === 0) append(m, step, readings);
-  }
-
-  function append(m, step, readings) {
-    m.last = step;
-    let full = false;
-    for (const r of readings) {
-      if (r.value === null) continue;
-      const s = m.series.get(r.name);
-      s.steps[s.n] = step;
+      if (at < 0 || (s.latest && at <= s.latest[0])) continue;
+      s.latest = [at, r.value];
+      if (m.first === null || at < m.first) m.first = at;
+      if (m.latest === null || at > m.latest.step) m.latest = { step: at };
+      if (!due && s.n > 0 || r.value === null) continue;
+      s.steps[s.n] = at;
       s.values[s.n] = r.value;
       s.n += 1;
+      m.last = Math.max(m.last === null ? at : m.last, at);
       full = full || s.n >= CAPACITY;
     }
     if (full) halve(m);
@@ -84,11 +81,10 @@ const DreamMetrics = (() => {
     return found;
   }
 
-  // Live, the newest readings (the stride may have left them out of the series): [step, value] or null.
+  // Live, a figure's newest reading (the stride may have left it out of the series): [step, value] or null.
   function latestOf(m, s, step) {
-    if (!m.latest || m.latest.step > step || !m.latest.values.has(s.name)) return null;
-    const value = m.latest.values.get(s.name);
-    return value === null ? null : [m.latest.step, value];
+    if (!s.latest || s.latest[0] > step) return null;
+    return s.latest[1] === null ? null : s.latest;
   }
 
   // What the plots show at `step`, machine-readable (window.dreamView.state.metrics).

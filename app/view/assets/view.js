@@ -615,10 +615,18 @@
     publishState({});
   }
 
+  // `dream view` receives the robots' commands (most of a udpm run's datagrams) only once a page shows them.
+  function askForCommands() {
+    if ($("show-commands").checked && view.socket && view.socket.readyState === WebSocket.OPEN) view.socket.send("commands");
+  }
+
   function connect() {
     const socket = new WebSocket(`ws://${location.host}/ws`);
     view.socket = socket;
-    socket.onopen = () => { view.connected = true; document.body.dataset.connected = "true"; $("connection").textContent = "connected"; };
+    socket.onopen = () => {
+      view.connected = true; document.body.dataset.connected = "true"; $("connection").textContent = "connected";
+      askForCommands();
+    };
     socket.onclose = () => {
       view.connected = false;
       document.body.dataset.connected = "false";
@@ -675,6 +683,7 @@
 
   for (const box of document.querySelectorAll("#layers input, #layers select")) box.onchange = draw;
   $("show-metrics").onchange = () => drawMetricPlots(view.state.step);
+  $("show-commands").addEventListener("change", askForCommands);
 
   // ---- mouse and keyboard: pick, zoom, pan, fit, play ----
   function canvasPoint(event) {
@@ -771,7 +780,7 @@
     else if (event.key === "f" || event.key === "0") fit();
     else if (event.key === "Escape") select(null);
     else if (event.key === "v") { $("show-velocities").checked = !$("show-velocities").checked; draw(); }
-    else if (event.key === "c") { $("show-commands").checked = !$("show-commands").checked; draw(); }
+    else if (event.key === "c") { $("show-commands").checked = !$("show-commands").checked; askForCommands(); draw(); }
     else return;
     event.preventDefault();
   });

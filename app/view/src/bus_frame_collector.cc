@@ -1,10 +1,7 @@
 #include "dream/view/bus_frame_collector.h"
 
-#include <spdlog/spdlog.h>
-
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <sstream>
 #include <utility>
 
@@ -56,15 +53,28 @@ std::optional<world::RunVerdict> VerdictOf(int8_t value) {
 }  // namespace
 
 BusFrameCollector::BusFrameCollector(lcm::LcmInterface& bus, const world::WorldParams& world,
-                                     std::function<RunChoice::Clock::time_point()> now)
-    : choice_(std::move(now)), locator_(world) {
-  subscription_ = bus.Subscribe(lcm::kViewChannelsRegex, [this](const std::string& channel, const void* data,
-                                                                int size) { OnMessage(channel, data, size); });
-  // The commands, for the command arrows: a handler of their own, so the view's channel list stays the one in
-  // channels.h.
-  command_subscription_ =
-      bus.Subscribe(std::string(lcm::kCommandChannelPrefix) + "[0-9]+",
-                    [this](const std::string& channel, const void* data, int size) { OnMessage(channel, data, size); });
+                                     std::function<RunChoice::Clock::time_point()> now, bool commands)
+    : choice_(std::move(now)), locator_(world), bus_(bus) {
+  // kViewChannelsRegex's channels, each a regex of its own: a regex with alternatives has no literal
+  // prefix, and one would let every datagram of the group through the kernel's filter.
+  for (const char* regex : {lcm::kPosesChannel, lcm::kMeasuredPosesChannel, lcm::kObstaclesChannel, lcm::kStatusChannel,
+                            lcm::kVerdictChannel}) {
+    subscriptions_.push_back(bus.Subscribe(
+        regex, [this](const std::string& channel, const void* data, int size) { OnMessage(channel, data, size); }));
+  }
+  subscriptions_.push_back(bus.Subscribe(
+      std::string(lcm::kRadioChannelPrefix) + "[0-9]+",
+      [this](const std::string& channel, const void* data, int size) { OnMessage(channel, data, size); }));
+  if (commands) SubscribeCommands();
+}
+
+void BusFrameCollector::SubscribeCommands() {
+  if (command_subscription_.active()) return;
+  // The commands, for the command arrows: 20 datagrams a step of a 20-robot run on udpm, the most of
+  // what a view receives, so `dream view` asks for them only once a page shows the arrows.
+  command_subscription_ = bus_.Subscribe(
+      std::string(lcm::kCommandChannelPrefix) + "[0-9]+",
+      [this](const std::string& channel, const void* data, int size) { OnMessage(channel, data, size); });
 }
 
 void BusFrameCollector::OnMessage(const std::string& channel, const void* data, int size) {
@@ -175,24 +185,13 @@ void BusFrameCollector::FollowMetrics(std::function<std::unique_ptr<StepMetrics>
 }
 
 void BusFrameCollector::StartMetrics() {
-  metrics_.reset();
-  if (!make_metrics_) return;
-  try {
-    metrics_ = make_metrics_();
-  } catch (const std::exception& e) {
-    spdlog::warn("dream view: the run's metrics are not plotted: {}", e.what());
-  }
+  metrics_.reset();  // the previous run's thread ends (after the steps it is computing)
+  metrics_version_ = 0;
+  if (make_metrics_) metrics_ = std::make_unique<MetricsThread>(make_metrics_);
 }
 
 void BusFrameCollector::ObserveMetrics() {
-  if (!metrics_) return;
-  try {
-    metrics_->Observe(poses_, obstacles_);
-  } catch (const std::exception& e) {
-    // The kind's code: its plots stop, the run is still drawn.
-    spdlog::warn("dream view: the run's metrics stop at step {}: {}", poses_.step, e.what());
-    metrics_.reset();
-  }
+  if (metrics_) metrics_->Offer(poses_, obstacles_);
 }
 
 void BusFrameCollector::OnVerdict() {
@@ -331,6 +330,10 @@ bool BusFrameCollector::TakeFrame(ViewFrame* frame, uint64_t* version) {
     other_world_ = other_world;
     ++version_;
   }
+  if (metrics_ && metrics_->version() != metrics_version_) {  // figures computed since, of steps already drawn
+    metrics_version_ = metrics_->version();
+    ++version_;
+  }
   if (*version == version_) return false;
   *version = version_;
   frame->run_id = run_id_;
@@ -365,17 +368,13 @@ bool BusFrameCollector::TakeFrame(ViewFrame* frame, uint64_t* version) {
   frame->other_world = other_world_;
   frame->judged = judged_;
   frame->metrics.clear();
-  if (metrics_) {
-    try {
-      metrics_->Read(&frame->metrics);
-    } catch (const std::exception& e) {
-      // The kind's code, on the pump's thread: never past it.
-      spdlog::warn("dream view: the run's metrics stop at step {}: {}", poses_.step, e.what());
-      metrics_.reset();
-      frame->metrics.clear();
-    }
-  }
+  if (metrics_) metrics_->Read(&frame->metrics);
   return true;
+}
+
+bool BusFrameCollector::WaitForMetrics(std::chrono::steady_clock::duration timeout) {
+  std::lock_guard<std::mutex> lock(mutex_);  // the metrics' thread never takes it
+  return !metrics_ || metrics_->WaitUntilComputed(timeout);
 }
 
 bool BusFrameCollector::Follow(int64_t run_id) {

@@ -146,6 +146,7 @@ std::string FrameJson(const ViewFrame& frame) {
   json.Key("metrics").BeginArray();
   for (const MetricReading& m : frame.metrics) {
     json.BeginObject().Key("name").String(m.name).Key("value").Significant(m.value, kMetricDigits);
+    if (m.step >= 0) json.Key("step").Integer(m.step);  // a figure of an earlier step than the frame's
     if (m.threshold)
       json.Key("threshold").Significant(*m.threshold, kMetricDigits).Key("label").String(m.threshold_label);
     json.EndObject();

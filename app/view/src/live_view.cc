@@ -19,7 +19,7 @@ namespace dream::view {
 LiveView::LiveView(lcm::LcmInterface& bus, ViewServer& server, ViewSetup setup)
     : server_(server),
       setup_(std::move(setup)),
-      collector_(bus, setup_.world),
+      collector_(bus, setup_.world, &RunChoice::Clock::now, !setup_.commands_on_request),
       pacer_(setup_.frame_rates, setup_.world.time_step_s) {
   if (setup_.metrics) collector_.FollowMetrics(setup_.metrics);
   server_.SetSetup(SetupJson(setup_));
@@ -53,6 +53,10 @@ void LiveView::PumpOnce() {
 }
 
 bool LiveView::OnPageMessage(const std::string& message) {
+  if (message == "commands") {
+    commands_asked_.store(true);
+    return true;
+  }
   constexpr std::string_view kFollow = "follow ";
   if (message.compare(0, kFollow.size(), kFollow) != 0) return false;
   const char* const end = message.data() + message.size();
@@ -61,6 +65,10 @@ bool LiveView::OnPageMessage(const std::string& message) {
   if (error != std::errc() || parsed != end || !collector_.Follow(run_id)) return false;
   spdlog::info("dream view: a page chose run {}: it is drawn from its next step", lcm::RunIdText(run_id));
   return true;
+}
+
+void LiveView::TakePageRequests() {
+  if (commands_asked_.load()) collector_.SubscribeCommands();
 }
 
 void LiveView::ShowEndOf(const std::string& log_path) {

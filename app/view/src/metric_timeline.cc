@@ -35,8 +35,9 @@ void MetricTimeline::Record(int64_t step, const std::vector<MetricReading>& read
     if (s == nullptr) continue;
     s->threshold = reading.threshold;
     if (s->threshold_label != reading.threshold_label) s->threshold_label = reading.threshold_label;
-    if (!s->points.empty() && s->points.back()[0] >= static_cast<double>(step)) continue;
-    s->points.push_back({static_cast<double>(step), reading.value});
+    const double at = static_cast<double>(reading.step >= 0 ? reading.step : step);
+    if (!s->points.empty() && s->points.back()[0] >= at) continue;
+    s->points.push_back({at, reading.value});
     full = full || s->points.size() >= kMaxPoints;
   }
   if (full) Halve();

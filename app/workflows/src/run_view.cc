@@ -37,11 +37,17 @@ void AddDeclaredGoalsOfKind(const run_config::RunConfig& config, const std::stri
   }
 }
 
-/// The kind's metrics step by step, for the plots (a warning, and none, when the config's kind cannot tell).
-std::function<std::unique_ptr<view::StepMetrics>()> KindMetricsOf(const run_config::RunConfig& config) {
+/// The kind's metrics step by step, for the plots (a warning, and none, when the config's kind cannot tell);
+/// live, with the kind's own metrics computed in `python_runtime_dir`'s runtime (a Python controller's
+/// metrics(); a replay has them from summary.json).
+std::function<std::unique_ptr<view::StepMetrics>()> KindMetricsOf(const run_config::RunConfig& config,
+                                                                  const std::string& python_runtime_dir) {
   try {
     auto factory = std::make_shared<const agent_host::ControllerFactory>(config);
-    return [factory]() -> std::unique_ptr<view::StepMetrics> { return std::make_unique<KindStepMetrics>(*factory); };
+    auto own_config = std::make_shared<const run_config::RunConfig>(config);
+    return [factory, own_config, python_runtime_dir]() -> std::unique_ptr<view::StepMetrics> {
+      return std::make_unique<KindStepMetrics>(*factory, own_config.get(), python_runtime_dir);
+    };
   } catch (const std::exception& e) {
     spdlog::warn("dream view: no metrics plotted: {}", e.what());
     return nullptr;
@@ -65,7 +71,7 @@ view::ViewSetup ViewSetupOfConfig(const run_config::RunConfig& config, view::Vie
   }
   AddDeclaredGoalsOfKind(config, python_runtime_dir, run_dir, &setup.overlays);
   setup.overlays.run_name = config.name;
-  setup.metrics = KindMetricsOf(config);
+  setup.metrics = KindMetricsOf(config, mode == view::ViewSetup::Mode::kLive ? python_runtime_dir : std::string());
   return setup;
 }
 

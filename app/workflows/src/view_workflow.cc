@@ -41,6 +41,7 @@ void ViewWorkflow::ServeLive(const Options& args) const {
   }
   setup.mode = view::ViewSetup::Mode::kLive;
   setup.source = url;
+  setup.commands_on_request = true;  // on udpm the robots' commands are most of the datagrams: none unless shown
   if (args.fps > 0) setup.frame_rates = view::FrameRates::One(args.fps);
   // Best effort: the runs it watches (on this machine, often) get the cores first.
   view::LowerThisProcesssPriority();
@@ -48,7 +49,10 @@ void ViewWorkflow::ServeLive(const Options& args) const {
   view::ViewServer server({args.bind, args.port, false, 8});
   view::LiveView live(bus, server, setup);
   out_ << "dream view: open " << server.url() << " (live: any DREAM run on " << url << "); Ctrl-C to stop" << std::endl;
-  while (!args.stop->load()) bus.HandleSubscriptions(100);
+  while (!args.stop->load()) {
+    bus.HandleSubscriptions(100);
+    live.TakePageRequests();
+  }
   if (live.collector().bad_messages() > 0) {
     spdlog::warn("dream view: {} messages on DREAM_* channels did not decode and were not drawn",
                  live.collector().bad_messages());

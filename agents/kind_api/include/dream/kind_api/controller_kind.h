@@ -10,6 +10,7 @@
 
 #include "dream/kind_api/agent_parts_config.h"
 #include "dream/kind_api/experiment_builder.h"
+#include "dream/kind_api/own_step_metrics.h"
 #include "dream/kind_api/robot_class_builder.h"
 #include "dream/kind_api/run_poses.h"
 #include "dream/agents/fields/field_table.h"
@@ -72,6 +73,13 @@ struct ControllerKind {
   std::function<nlohmann::json(const config::ControllerConfig& config, const RunPoses& poses,
                                const std::string& runtime_dir)>
       own_metrics;
+  /// The same figures followed step by step while a run runs (the view's
+  /// plots): after the last step, once computed, own_metrics' "metrics" for
+  /// those steps (each series' last value). `runtime_dir` as for own_metrics.
+  /// Empty: none (a kind whose own metrics only a finished run has).
+  /// @throws std::runtime_error naming what failed to start.
+  std::function<std::unique_ptr<OwnStepMetrics>(const config::ControllerConfig& config, const std::string& runtime_dir)>
+      own_step_metrics;
   /// The points each robot should reach, known from the config before a run,
   /// for a kind whose builder draws none (ExperimentBuilder::GoalsToDraw):
   /// what pictures and the view draw (the python kind: its class's

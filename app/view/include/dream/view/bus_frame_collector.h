@@ -1,5 +1,6 @@
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <deque>
 #include <functional>
@@ -16,6 +17,7 @@
 #include "dream/run_status_t.hpp"
 #include "dream/run_verdict_t.hpp"
 #include "dream/velocity_command_t.hpp"
+#include "dream/view/metrics_thread.h"
 #include "dream/view/run_choice.h"
 #include "dream/view/step_metrics.h"
 #include "dream/view/view_frame.h"
@@ -53,11 +55,19 @@ class BusFrameCollector {
   static constexpr size_t kMaxMarks = 64;
 
   /// Subscribes to DREAM_POSES, DREAM_MEASURED_POSES, DREAM_OBSTACLES,
-  /// DREAM_STATUS, DREAM_VERDICT, DREAM_RADIO_<n> and DREAM_CMD_<n> on `bus`,
-  /// until destroyed.
+  /// DREAM_STATUS, DREAM_VERDICT, DREAM_RADIO_<n> and, when `commands`,
+  /// DREAM_CMD_<n> on `bus`, until destroyed: one subscription a channel
+  /// name, so on udpm the kernel drops every other channel (LcmBus's
+  /// ChannelPrefixFilter), the robots' commands included until asked for.
   /// `now` is RunChoice's clock (tests give their own).
   BusFrameCollector(lcm::LcmInterface& bus, const world::WorldParams& world,
-                    std::function<RunChoice::Clock::time_point()> now = &RunChoice::Clock::now);
+                    std::function<RunChoice::Clock::time_point()> now = &RunChoice::Clock::now, bool commands = true);
+
+  /// Subscribes to DREAM_CMD_<n> too (the command arrows) if not yet; on
+  /// the thread that handles the bus.
+  void SubscribeCommands();
+  /// Whether DREAM_CMD_<n> is subscribed.
+  bool hears_commands() const { return command_subscription_.active(); }
 
   /// The newest frame, when it changed since `*version` (then updated);
   /// false when nothing new arrived. A second world heard, or gone quiet,
@@ -65,10 +75,16 @@ class BusFrameCollector {
   bool TakeFrame(ViewFrame* frame, uint64_t* version);
 
   /// The run's metrics, followed from the next run drawn on (and the run
-  /// drawn now, from its next step): a new one from `make` for each run,
-  /// fed each of its steps once (not resends) and read into each frame.
-  /// A kind's code that throws ends the metrics of that run, said once.
+  /// drawn now, from its next step): a new one from `make` for each run, on
+  /// a MetricsThread of its own (the handler only queues each step, once:
+  /// not resends), its newest readings in each frame. A kind's code that
+  /// throws ends the metrics of that run, said once.
   void FollowMetrics(std::function<std::unique_ptr<StepMetrics>()> make);
+
+  /// Waits until the run drawn's metrics computed every step handed to them
+  /// (MetricsThread::WaitUntilComputed), at most `timeout`; true without
+  /// metrics. For tests and benchmarks: a frame then carries their figures.
+  bool WaitForMetrics(std::chrono::steady_clock::duration timeout);
 
   /// The user's choice of another run heard (RunChoice::Choose): drawn from
   /// its next poses on. False for a run not heard, or the one drawn.
@@ -94,7 +110,7 @@ class BusFrameCollector {
   void OnCommand(int robot);
   /// verdict_in_ decoded: kept only when it is the drawn run's and that run is over.
   void OnVerdict();
-  /// The new step in poses_ (with obstacles_) to the run's metrics.
+  /// The new step in poses_ (with obstacles_) to the run's metrics' queue.
   void ObserveMetrics();
   void StartMetrics();
 
@@ -136,9 +152,11 @@ class BusFrameCollector {
   int64_t marks_located_ = 0;
   int64_t bad_messages_ = 0;
   std::function<std::unique_ptr<StepMetrics>()> make_metrics_;
-  std::unique_ptr<StepMetrics> metrics_;  // the run drawn's, from its first step seen
+  std::unique_ptr<MetricsThread> metrics_;  // the run drawn's, from its first step seen
+  uint64_t metrics_version_ = 0;            // metrics_' readings as last put in a frame
+  lcm::LcmInterface& bus_;
   /// Last: unsubscribed first, so the bus never calls a half-destroyed collector.
-  lcm::Subscription subscription_;
+  std::vector<lcm::Subscription> subscriptions_;
   lcm::Subscription command_subscription_;
 };
 

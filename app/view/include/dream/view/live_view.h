@@ -39,8 +39,12 @@ class LiveView {
   /// @throws std::runtime_error naming the file when it cannot be read.
   void ShowEndOf(const std::string& log_path);
   /// What a page sent: "follow <run id>" draws that run (BusFrameCollector::Follow);
-  /// anything else is ignored. Returns whether it was a choice taken.
+  /// "commands": it shows the command arrows (see ViewSetup::commands_on_request);
+  /// anything else is ignored. Returns whether it was a request taken.
   bool OnPageMessage(const std::string& message);
+  /// What pages asked that takes the bus's thread: the commands subscribed
+  /// once a page asked for them. For the bus's owner, between handlings.
+  void TakePageRequests();
   /// Frames broadcast so far.
   int64_t frames_sent() const { return frames_sent_.load(); }
   const BusFrameCollector& collector() const { return collector_; }
@@ -56,6 +60,7 @@ class LiveView {
   ViewFrame frame_;
   std::atomic<int64_t> frames_sent_{0};
   std::atomic<bool> stop_{false};
+  std::atomic<bool> commands_asked_{false};
   std::thread pump_;
 };
 

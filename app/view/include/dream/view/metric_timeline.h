@@ -33,8 +33,9 @@ class MetricTimeline {
   /// Counts one step offered; true when it is to be recorded (every
   /// stride-th, the first included).
   bool Due();
-  /// The figures at `step` (a reading whose name is new starts a series,
-  /// up to kMaxSeries; a step not after a series' last is not added to it).
+  /// The figures at `step` (each at its own step when it says one: a reading
+  /// whose name is new starts a series, up to kMaxSeries; a step not after a
+  /// series' last is not added to it).
   void Record(int64_t step, const std::vector<MetricReading>& readings);
   /// A whole series known at once (a Python controller's metrics() over the
   /// run, from summary.json), kept evenly to at most kMaxPoints; ignored

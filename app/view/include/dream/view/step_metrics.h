@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,6 +18,9 @@ struct MetricReading {
   double value = 0.0;
   std::optional<double> threshold;  ///< the goal's tolerance, the collision distance, ...
   std::string threshold_label;      ///< what that line is ("goal: within 0.05 m")
+  /// The step the value is of: the last observed, or an earlier one for a
+  /// figure computed elsewhere and later (a Python controller's metrics()).
+  int64_t step = -1;
 };
 
 /// A run's metrics followed step by step, for the view's plots: the view
@@ -32,8 +36,12 @@ class StepMetrics {
   /// Every step of the run, in order, with the obstacles of that step.
   virtual void Observe(const robot_poses_t& poses, const obstacles_t& obstacles) = 0;
   /// The figures after the steps observed so far (at most kMaxReadings),
-  /// into `readings`, whose strings and capacity are reused.
-  virtual void Read(std::vector<MetricReading>* readings) const = 0;
+  /// into `readings`, whose strings and capacity are reused. Never waits for
+  /// a figure computed elsewhere: it gives the newest there is.
+  virtual void Read(std::vector<MetricReading>* readings) = 0;
+  /// Whether some figure is still being computed for steps observed (elsewhere:
+  /// Read collects it later); false for figures computed in Observe.
+  virtual bool Pending() const { return false; }
 };
 
 }  // namespace dream::view

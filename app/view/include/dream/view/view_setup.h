@@ -28,6 +28,11 @@ struct ViewSetup {
   /// Live: the run's metrics followed step by step (a new one for each run
   /// drawn), for the page's plots over time; none without a config.
   std::function<std::unique_ptr<StepMetrics>()> metrics;
+  /// Live: the robots' commands (the command arrows) only once a page asks
+  /// ("commands" on its WebSocket: it shows them), and from then on; what
+  /// `dream view` does on udpm, where they are most of the datagrams. The
+  /// bus's owner then calls LiveView::TakePageRequests on the bus's thread.
+  bool commands_on_request = false;
   /// Where the frames come from, shown on the page (a URL or a run folder).
   std::string source;
   /// Live: frames sent to the browsers a second at most, by the run's speed
