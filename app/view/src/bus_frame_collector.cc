@@ -62,9 +62,11 @@ BusFrameCollector::BusFrameCollector(lcm::LcmInterface& bus, const world::WorldP
     subscriptions_.push_back(bus.Subscribe(
         regex, [this](const std::string& channel, const void* data, int size) { OnMessage(channel, data, size); }));
   }
-  subscriptions_.push_back(bus.Subscribe(
-      std::string(lcm::kRadioChannelPrefix) + "[0-9]+",
-      [this](const std::string& channel, const void* data, int size) { OnMessage(channel, data, size); }));
+  for (const char* prefix : {lcm::kRadioChannelPrefix, lcm::kDrawChannelPrefix}) {
+    subscriptions_.push_back(bus.Subscribe(
+        std::string(prefix) + "[0-9]+",
+        [this](const std::string& channel, const void* data, int size) { OnMessage(channel, data, size); }));
+  }
   if (commands) SubscribeCommands();
 }
 
