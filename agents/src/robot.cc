@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "dream/agents/framework/params_check.h"
 
@@ -16,6 +17,8 @@ Robot::Robot(int id, RobotParams params) : id_(id), params_(params), actuator_li
   if (id < 0) throw std::invalid_argument("robot id must be >= 0, got " + std::to_string(id));
   if (!params_.IsValid(&error)) throw std::invalid_argument(error);
 }
+
+Drawing Robot::TakeDrawing() { return std::exchange(drawing_, Drawing()); }
 
 void Robot::OnOdometry(const OdometryReading& reading) { odometry_ = reading; }
 void Robot::OnMovement(const MovementReading& reading) { movement_ = reading; }

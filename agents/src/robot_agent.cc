@@ -33,7 +33,10 @@ RobotAgent::Output RobotAgent::Step(const WorldSnapshot& world) {
       output.broadcast = RadioMessage{id(), world.step, std::move(*payload)};
     }
   }
-  if (due[radio_slot + 1]) last_command_ = spec_.robot->Update(world.step);
+  if (due[radio_slot + 1]) {
+    last_command_ = spec_.robot->Update(world.step);
+    output.drawing = spec_.robot->TakeDrawing();
+  }
   output.command = last_command_;
   output.done = spec_.robot->done();
   return output;

@@ -62,11 +62,13 @@ bool IsIdentifier(const std::string& text) {
 
 const std::vector<std::string>& FlatPythonRuntime::ShippedModules() {
   // robot_agent and controller_spec drive the controller; the others are what
-  // they and a controller import. Never lcm, agent_host, embedded: the
+  // they and a controller import (drawing: Robot's draw_*, which the lab's
+  // runner leaves undrawn). Never lcm, agent_host, embedded: the
   // LCM transport and hosting, which the script replaces.
-  static const std::vector<std::string> kModules = {
-      "motion",   "robot",          "sensors",         "radios",      "timer", "robot_agent", "controller_spec", "hrvo",
-      "barriers", "toolbox_checks", "transformations", "controllers", "graph", "misc",        "__init__"};
+  static const std::vector<std::string> kModules = {"motion",      "drawing",  "robot",          "sensors",
+                                                    "radios",      "timer",    "robot_agent",    "controller_spec",
+                                                    "hrvo",        "barriers", "toolbox_checks", "transformations",
+                                                    "controllers", "graph",    "misc",           "__init__"};
   return kModules;
 }
 

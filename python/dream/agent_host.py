@@ -1,7 +1,8 @@
 """The Python agent host: Python controllers as agents on the bus, as agents/agent_host's AgentHost.
 
 Reads DREAM_POSES (the step trigger), DREAM_OBSTACLES, DREAM_STATUS and every
-DREAM_RADIO_<id>; writes DREAM_RADIO_<id> and DREAM_CMD_<id> for each hosted robot, with
+DREAM_RADIO_<id>; writes DREAM_RADIO_<id>, DREAM_DRAW_<id> (what the robot drew, when it
+changed; each clip reason logged once per robot) and DREAM_CMD_<id> for each hosted robot, with
 the same lockstep contract as the C++ host (docs/architecture.md): each DREAM_POSES of
 step k is answered with every hosted robot's command for step k, its radio message (if
 any) just before; a resent step gets the same messages again without running the robot
@@ -28,6 +29,7 @@ import time
 
 import numpy as np
 
+from .drawing import EMPTY_KEY, NOTHING_DRAWN
 from .radios import MAX_PAYLOAD_BYTES, RadioMessage
 from .robot import ObstacleView, WorldSnapshot
 from .robot_agent import ControllerFault, RunInterrupted
@@ -74,13 +76,14 @@ def next_call_token():
 
 def _types():
     """lcm-gen's Python types (package dream), found through dream.__path__ (see embedded.py)."""
+    from .drawing_t import drawing_t
     from .obstacles_t import obstacles_t
     from .radio_message_t import radio_message_t
     from .robot_fault_t import robot_fault_t
     from .robot_poses_t import robot_poses_t
     from .run_status_t import run_status_t
     from .velocity_command_t import velocity_command_t
-    return obstacles_t, radio_message_t, robot_fault_t, robot_poses_t, run_status_t, velocity_command_t
+    return obstacles_t, radio_message_t, robot_fault_t, robot_poses_t, run_status_t, velocity_command_t, drawing_t
 
 
 def _count_field(data, offset, size_per_item, fixed_size, limit, what):
@@ -117,6 +120,10 @@ class _RobotSlot:
         self.radio_channel = f"DREAM_RADIO_{agent.id}"
         self.last_command = None
         self.last_radio = None
+        self.draw_channel = f"DREAM_DRAW_{agent.id}"
+        self.last_drawing = None  # this step's drawing_t bytes, sent with its command (and resends)
+        self.drawn_key = EMPTY_KEY  # what the robot drew last: the same is not sent again
+        self.clip_reasons_logged = set()
         self.fault = None
 
 
@@ -127,7 +134,7 @@ class AgentHost:
 
     def __init__(self, bus, agents, agent_id, num_robots):
         (self._obstacles_t, self._radio_message_t, self._robot_fault_t, self._robot_poses_t,
-         self._run_status_t, self._velocity_command_t) = _types()
+         self._run_status_t, self._velocity_command_t, self._drawing_t) = _types()
         ids = [agent.id for agent in agents]
         if len(set(ids)) != len(ids):
             raise ValueError(f"a robot is listed twice for one agent host: {ids}")
@@ -268,6 +275,8 @@ class AgentHost:
                 continue
             if robot.last_radio is not None:
                 self.bus.publish(robot.radio_channel, robot.last_radio)
+            if robot.last_drawing is not None:
+                self.bus.publish(robot.draw_channel, robot.last_drawing)
             self.bus.publish(robot.command_channel, robot.last_command)
 
     def _answer(self, robot, poses, snapshot):
@@ -304,8 +313,29 @@ class AgentHost:
             radio.payload = bytes(output.broadcast)
             radio.payload_size = len(radio.payload)
             robot.last_radio = radio.encode()
+        robot.last_drawing = None
+        if output.drawing is not None:
+            self._take_drawing(robot, poses, output.drawing)
         self.last_step_answered = max(self.last_step_answered, poses.step)
         return True
+
+    def _take_drawing(self, robot, poses, drawing):
+        """Keeps `drawing` as the robot's drawing_t for this step when it differs from its last."""
+        if drawing is NOTHING_DRAWN and robot.drawn_key == EMPTY_KEY:
+            return  # the common case: nothing drawn, nothing shown
+        for reason, count in drawing.clip_reasons.items():
+            if reason not in robot.clip_reasons_logged:
+                robot.clip_reasons_logged.add(reason)
+                log.warning("robot %d drew past its bounds at step %d: %s x%d (counted in each %s's `clipped` "
+                            "from now on)", robot.agent.id, poses.step, reason, count, robot.draw_channel)
+        key = drawing.key()
+        if key == robot.drawn_key:
+            return
+        message = drawing.message(self._drawing_t)
+        message.utime, message.step, message.run_id = poses.utime, poses.step, poses.run_id
+        message.robot_id, message.agent_id = robot.agent.id, self.agent_id
+        robot.last_drawing = message.encode()
+        robot.drawn_key = key
 
     @staticmethod
     def _wire_text(text):

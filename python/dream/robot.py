@@ -12,6 +12,7 @@ from collections import namedtuple
 
 import numpy as np
 
+from .drawing import NOTHING_DRAWN, Drawing
 from .motion import ActuatorLimits, RobotLimits, dxi_to_dxu
 
 
@@ -280,6 +281,39 @@ class Robot:
     def limit_actuators(self, command):
         """The thesis's actuator_limit for (v, w): a command the wheels can drive."""
         return self._actuator_limits.apply(command)
+
+    # --- drawing: shown by dream view and dream render until the next update(); the world never reads it
+
+    def _drawing(self):
+        drawing = self.__dict__.get("_drawing_now")
+        if drawing is None:
+            drawing = self.__dict__["_drawing_now"] = Drawing()
+        return drawing
+
+    def take_drawing(self):
+        """What the robot drew since the last call, handed over and cleared (the agent takes it
+        each time update() runs)."""
+        return self.__dict__.pop("_drawing_now", None) or NOTHING_DRAWN
+
+    def draw_line(self, start, end, color="k", width=0.01, alpha=None):
+        """A line from `start` to `end` ([x, y], metres, world frame); `color` a name, '#rrggbb[aa]'
+        or (r, g, b[, a]); `width` in metres."""
+        self._drawing().line(start, end, color, width, alpha)
+
+    def draw_arrow(self, start, end, color="k", width=0.01, alpha=None):
+        """An arrow from `start` to `end`, its head at `end`."""
+        self._drawing().arrow(start, end, color, width, alpha)
+
+    def draw_circle(self, center, radius, color="k", width=0.01, fill=False, alpha=None):
+        self._drawing().circle(center, radius, color, width, fill, alpha)
+
+    def draw_polygon(self, points, color="k", width=0.01, fill=False, alpha=None):
+        """A closed polygon through `points` (3 to 64 corners)."""
+        self._drawing().polygon(points, color, width, fill, alpha)
+
+    def draw_text(self, at, text, color="k", height=0.06, alpha=None):
+        """`text` with its lower left corner at `at`, `height` metres tall (96 UTF-8 bytes at most)."""
+        self._drawing().text(at, text, color, height, alpha)
 
     def count_bad_radio_message(self, message=None):
         """Counts a radio message this robot could not decode (it is dropped); by its sender

@@ -63,16 +63,18 @@ def controller_error_text(exc, user_file=None):
 
 
 class AgentOutput:
-    """What one step gives the host: command (v m/s, w rad/s), done, and the payload the radio
-    broadcast this step (bytes) or None."""
+    """What one step gives the host: command (v m/s, w rad/s), done, the payload the radio
+    broadcast this step (bytes) or None, and what the robot drew (a dream.drawing.Drawing) when
+    its update() ran, else None."""
 
-    __slots__ = ("v", "w", "done", "broadcast")
+    __slots__ = ("v", "w", "done", "broadcast", "drawing")
 
-    def __init__(self, v, w, done, broadcast):
+    def __init__(self, v, w, done, broadcast, drawing=None):
         self.v = v
         self.w = w
         self.done = done
         self.broadcast = broadcast
+        self.drawing = drawing
 
 
 class RobotAgent:
@@ -113,6 +115,7 @@ class RobotAgent:
         robot = self.robot
         radio_slot = len(self._sensors)
         broadcast = None
+        drawing = None
         try:
             for sensor, sensor_due in zip(self._sensors, due):
                 if sensor_due:
@@ -123,6 +126,7 @@ class RobotAgent:
                     broadcast = self._payload(payload)
             if due[radio_slot + 1]:
                 self._last_command = self._command(robot.update(world.step))
+                drawing = robot.take_drawing()
             done = bool(robot.done())
         except ControllerFault as fault:
             self.fault = fault
@@ -133,7 +137,7 @@ class RobotAgent:
             self.fault = ControllerFault(controller_error_text(exc, self._user_file))
             raise self.fault from exc
         v, w = self._last_command
-        return AgentOutput(v, w, done, broadcast)
+        return AgentOutput(v, w, done, broadcast, drawing)
 
     def receive(self, message):
         """A message another robot broadcast; heard (or not) at later steps. Own messages are ignored."""

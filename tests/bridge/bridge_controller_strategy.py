@@ -197,7 +197,7 @@ def experiment(case, name, module):
     sim_dir = case.simulate(os.path.join(source, "config", name + ".yaml"), name)
     export_dir, _ = case.export(sim_dir, name)
     files = case.upload_listing(export_dir, name)
-    runtime = ["dream.py"] + ["dream_%s.py" % m for m in ("robot", "motion", "sensors", "radios", "timer",
+    runtime = ["dream.py"] + ["dream_%s.py" % m for m in ("robot", "motion", "drawing", "sensors", "radios", "timer",
                                                           "robot_agent", "controller_spec", "hrvo", "barriers",
                                                           "toolbox_checks", "transformations", "controllers", "graph",
                                                           "misc")]

@@ -60,9 +60,9 @@ TEST(FlatPythonRuntimeTest, ShipsTheRuntimeFlatWithoutItsTransport) {
     EXPECT_EQ(file.text.find("from ."), std::string::npos) << file.name;
   }
   EXPECT_THAT(names, ::testing::UnorderedElementsAre(
-                         "dream.py", "dream_robot.py", "dream_motion.py", "dream_sensors.py", "dream_radios.py",
-                         "dream_timer.py", "dream_robot_agent.py", "dream_controller_spec.py", "dream_hrvo.py",
-                         "dream_barriers.py", "dream_toolbox_checks.py", "dream_transformations.py",
+                         "dream.py", "dream_robot.py", "dream_motion.py", "dream_drawing.py", "dream_sensors.py",
+                         "dream_radios.py", "dream_timer.py", "dream_robot_agent.py", "dream_controller_spec.py",
+                         "dream_hrvo.py", "dream_barriers.py", "dream_toolbox_checks.py", "dream_transformations.py",
                          "dream_controllers.py", "dream_graph.py", "dream_misc.py"));
   const std::set<std::string> imported = runtime.ImportedModules({"import rps.robotarium as r\n"});
   for (const char* name : {"numpy", "json", "os", "rps"}) EXPECT_EQ(imported.count(name), 1u) << name;

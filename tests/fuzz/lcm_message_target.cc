@@ -5,6 +5,8 @@
 #include "dream/affine_formation/formation_state_message.h"
 #include "dream/agents/framework/position_message.h"
 #include "dream/applied_commands_t.hpp"
+#include "dream/drawing_t.hpp"
+#include "dream/lcm/drawing_shapes.h"
 #include "dream/lcm/lcm_typed.h"
 #include "dream/lcm/wire_layout_of.h"
 #include "dream/obstacles_t.hpp"
@@ -34,13 +36,26 @@ void Decode(const std::vector<uint8_t>& bytes) {
   }
 }
 
+// A drawing_t the layout lets through, then read as shapes as the world, the view and pictures
+// read it: whatever its counts and offsets say, nothing is read past its arrays.
+void DecodeDrawing(const std::vector<uint8_t>& bytes) {
+  Decode<drawing_t>(bytes);
+  drawing_t message;
+  if (lcm::DecodeProblem(bytes.data(), static_cast<int>(bytes.size()), &message)) return;
+  const std::string problem = lcm::DrawingShapes::Problem(message);
+  const std::vector<lcm::DrawnShape> shapes = lcm::DrawingShapes::Of(message);
+  if (problem.empty() ? shapes.size() != message.kind.size() : !shapes.empty()) {
+    Finding("DrawingShapes::Of disagrees with Problem");
+  }
+}
+
 }  // namespace
 
 void LcmMessageTarget(const uint8_t* data, size_t size) {
   if (size < 1 || size > (size_t{1} << 20)) return;
   // A copy of exactly the message's bytes, so ASan sees any read past them.
   const std::vector<uint8_t> bytes(data + 1, data + size);
-  switch (data[0] % 9) {
+  switch (data[0] % 10) {
     case 0:
       Decode<applied_commands_t>(bytes);
       break;
@@ -64,6 +79,9 @@ void LcmMessageTarget(const uint8_t* data, size_t size) {
       break;
     case 7:
       Decode<run_verdict_t>(bytes);
+      break;
+    case 8:
+      DecodeDrawing(bytes);
       break;
     default:
       (void)agents::PositionMessage::Decode(bytes, 1);

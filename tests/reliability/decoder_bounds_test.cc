@@ -15,6 +15,7 @@
 #include "dream/lcm/wire_text.h"
 #include "dream/obstacles_t.hpp"
 #include "dream/applied_commands_t.hpp"
+#include "dream/drawing_t.hpp"
 #include "dream/radio_message_t.hpp"
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
@@ -32,9 +33,10 @@ using lcm::MessageLimits;
 // Where each sample's count or string length sits: after the 8-byte
 // fingerprint and the fixed fields before it.
 const std::map<std::string, size_t> kCountOffset = {
-    {"robot_poses_t", 8 + 24},      {"obstacles_t", 8 + 24},   {"run_status_t", 8 + 8 + 8 + 8 + 1 + 4 + 48},
-    {"radio_message_t", 8 + 36},    {"robot_fault_t", 8 + 36}, {"applied_commands_t", 8 + 24},
-    {"run_verdict_t", 8 + 24 + 14},  // goal_text's length
+    {"robot_poses_t", 8 + 24},         {"obstacles_t", 8 + 24},   {"run_status_t", 8 + 8 + 8 + 8 + 1 + 4 + 48},
+    {"radio_message_t", 8 + 36},       {"robot_fault_t", 8 + 36}, {"applied_commands_t", 8 + 24},
+    {"run_verdict_t", 8 + 24 + 14},     // goal_text's length
+    {"drawing_t", 8 + 24 + 4 + 8 + 4},  // num_shapes
 };
 
 // Counts an attacker would pick: huge, negative, just over the limit, and
@@ -70,6 +72,7 @@ TEST(DecoderBounds, LayoutsMatchTheGeneratedEncodings) {
   EXPECT_EQ(lcm::WireLayoutOf<robot_fault_t>().MinimumBytes(), robot_fault_t{}.getEncodedSize());
   EXPECT_EQ(lcm::WireLayoutOf<applied_commands_t>().MinimumBytes(), applied_commands_t{}.getEncodedSize());
   EXPECT_EQ(lcm::WireLayoutOf<run_verdict_t>().MinimumBytes(), run_verdict_t{}.getEncodedSize());
+  EXPECT_EQ(lcm::WireLayoutOf<drawing_t>().MinimumBytes(), drawing_t{}.getEncodedSize());
 }
 
 TEST(DecoderBounds, TheLargestLegalMessagesDecode) {

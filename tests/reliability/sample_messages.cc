@@ -2,6 +2,7 @@
 
 #include "dream/lcm/lcm_typed.h"
 #include "dream/applied_commands_t.hpp"
+#include "dream/drawing_t.hpp"
 #include "dream/obstacles_t.hpp"
 #include "dream/radio_message_t.hpp"
 #include "dream/robot_fault_t.hpp"
@@ -83,10 +84,29 @@ std::vector<EncodedMessage> SampleMessages() {
   verdict.goal_text = "missed (1 of 2 robots arrived)";
   verdict.reasons = "goal: the go_to_goal experiment missed its goal";
 
-  return {{"robot_poses_t", Encoded(poses)},        {"obstacles_t", Encoded(obstacles)},
-          {"run_status_t", Encoded(status)},        {"velocity_command_t", Encoded(command)},
-          {"radio_message_t", Encoded(radio)},      {"robot_fault_t", Encoded(fault)},
-          {"applied_commands_t", Encoded(applied)}, {"run_verdict_t", Encoded(verdict)}};
+  drawing_t drawing{};
+  drawing.step = 3;
+  drawing.run_id = kRunId;
+  drawing.robot_id = 1;
+  drawing.agent_id = 0x1234567890;
+  drawing.num_shapes = 2;
+  drawing.kind = {drawing_t::LINE, drawing_t::TEXT};
+  drawing.rgba = {static_cast<int32_t>(0xff0000ffu), 0x000000ff};
+  drawing.width = {0.01, 0.0};
+  drawing.size = {0.0, 0.05};
+  drawing.fill = {0, 0};
+  drawing.point_count = {2, 1};
+  drawing.text_length = {0, 2};
+  drawing.num_points = 3;
+  drawing.x = {0.0, 1.0, -0.5};
+  drawing.y = {0.0, 0.5, 0.5};
+  drawing.num_text_bytes = 2;
+  drawing.text = {'h', 'i'};
+
+  return {
+      {"robot_poses_t", Encoded(poses)},        {"obstacles_t", Encoded(obstacles)}, {"run_status_t", Encoded(status)},
+      {"velocity_command_t", Encoded(command)}, {"radio_message_t", Encoded(radio)}, {"robot_fault_t", Encoded(fault)},
+      {"applied_commands_t", Encoded(applied)}, {"run_verdict_t", Encoded(verdict)}, {"drawing_t", Encoded(drawing)}};
 }
 
 namespace {
@@ -111,6 +131,7 @@ const std::map<std::string, TypedDecoder>& Decoders() {
       {"robot_fault_t", DecoderOf<robot_fault_t>()},
       {"applied_commands_t", DecoderOf<applied_commands_t>()},
       {"run_verdict_t", DecoderOf<run_verdict_t>()},
+      {"drawing_t", DecoderOf<drawing_t>()},
   };
   return decoders;
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <set>
 
+#include "dream/agent_host/drawing_message.h"
 #include "dream/agent_host/snapshot_from_messages.h"
 #include "dream/lcm/channels.h"
 #include "dream/lcm/lcm_typed.h"
@@ -26,6 +27,7 @@ AgentHost::AgentHost(lcm::LcmInterface& lcm, std::vector<std::unique_ptr<agents:
     RobotSlot slot;
     slot.command_channel = lcm::CommandChannel(agent->id());
     slot.radio_channel = lcm::RadioChannel(agent->id());
+    slot.draw_channel = lcm::DrawChannel(agent->id());
     slot.agent = std::move(agent);
     robots_.push_back(std::move(slot));
   }
@@ -133,6 +135,7 @@ void AgentHost::ReportBadRadioPayloads(RobotSlot& robot) {
 void AgentHost::Fail(RobotSlot& robot, const robot_poses_t& poses, const std::string& detail) {
   robot.fault = detail;
   robot.last_radio.reset();
+  robot.last_drawing.reset();
   spdlog::error("robot {} stops at step {}: its controller failed: {}", robot.agent->id(), poses.step, detail);
   robot_fault_t fault{};
   fault.utime = poses.utime;
@@ -157,6 +160,8 @@ bool AgentHost::Answer(RobotSlot& robot, const robot_poses_t& poses) {
   command.w = output.command.w_radps;
   command.done = output.done;
   robot.last_radio.reset();
+  robot.last_drawing.reset();
+  if (output.drawing) TakeDrawing(robot, poses, std::move(*output.drawing));
   if (output.broadcast &&
       output.broadcast->payload.size() > static_cast<size_t>(lcm::MessageLimits::kRadioPayloadBytes)) {
     // Every receiver, and the world, would drop it: the robot would talk to no one, unseen.
@@ -179,6 +184,23 @@ bool AgentHost::Answer(RobotSlot& robot, const robot_poses_t& poses) {
   }
   last_step_answered_ = std::max(last_step_answered_, poses.step);
   return true;
+}
+
+void AgentHost::TakeDrawing(RobotSlot& robot, const robot_poses_t& poses, agents::Drawing drawing) {
+  for (const auto& [reason, count] : drawing.clip_reasons()) {
+    if (!robot.clip_reasons_logged.insert(reason).second) continue;
+    spdlog::warn("robot {} drew past its bounds at step {}: {} x{} (counted in each {}'s `clipped` from now on)",
+                 robot.agent->id(), poses.step, reason, count, robot.draw_channel);
+  }
+  if (drawing.SameShapes(robot.drawn) && drawing.clipped() == robot.drawn.clipped()) return;
+  drawing_t message = DrawingMessageOf(drawing);
+  message.utime = poses.utime;
+  message.step = poses.step;
+  message.run_id = poses.run_id;
+  message.robot_id = robot.agent->id();
+  message.agent_id = agent_id_;
+  robot.last_drawing = std::move(message);
+  robot.drawn = std::move(drawing);
 }
 
 void AgentHost::OnPoses(const std::string& channel, const robot_poses_t& poses) {
@@ -228,6 +250,7 @@ void AgentHost::OnPoses(const std::string& channel, const robot_poses_t& poses) 
     if (!robot.fault.empty()) continue;  // given up: the world was told, and stops the robot
     if (decision == lcm::WorldFollower::StepDecision::kNewStep && !Answer(robot, poses)) continue;
     if (robot.last_radio) lcm::Publish(lcm_, robot.radio_channel, *robot.last_radio);
+    if (robot.last_drawing) lcm::Publish(lcm_, robot.draw_channel, *robot.last_drawing);
     lcm::Publish(lcm_, robot.command_channel, robot.last_command);
   }
 }

@@ -1,8 +1,8 @@
 "use strict";
 // Draws one scene of a DREAM run on a canvas: the arena to scale in the world
 // frame (x right, y up, metres on the axes), obstacles, goals, trails, radio
-// links, sensor ranges, robots as oriented discs with their ids, measured
-// poses, and violations where they happened (flashing while new).
+// links, sensor ranges, what the controllers drew, robots as oriented discs
+// with their ids, measured poses, and violations where they happened (flashing while new).
 const DreamArena = (() => {
   // 50 colours, one per robot up to the Robotarium's caps: the ten familiar ones first, then hues
   // a golden angle apart in three lightnesses, so neighbours in id never look alike.
@@ -317,13 +317,68 @@ const DreamArena = (() => {
     ctx.drawImage(cached.layer, 0, 0);
   }
 
+  // What the controllers drew (DREAM_DRAW_<id>): entries [step, robot, clipped, shapes], each shape
+  // [kind, rgba, width m, size m, fill, [x...], [y...], text]; kinds as drawing_t's (1 line, 2 circle,
+  // 3 polygon, 4 arrow, 5 text). The same look as dream render's (sim/render/src/drawing_painter.cc).
+  const LINE = 1, CIRCLE = 2, POLYGON = 3, ARROW = 4, TEXT = 5;
+  function rgbaText(rgba) {
+    return `rgba(${(rgba >>> 24) & 255}, ${(rgba >>> 16) & 255}, ${(rgba >>> 8) & 255}, ${((rgba & 255) / 255).toFixed(3)})`;
+  }
+  function shape(ctx, T, [kind, rgba, width, size, fill, xs, ys, text]) {
+    if (!xs.length || !finite(...xs, ...ys)) return;
+    const colour = rgbaText(rgba);
+    const line = Math.max(1, width * T.s);
+    ctx.strokeStyle = colour;
+    ctx.fillStyle = colour;
+    ctx.lineWidth = line;
+    ctx.beginPath();
+    if (kind === TEXT) {
+      ctx.font = `${Math.max(4, size * T.s).toFixed(1)}px system-ui, sans-serif`;
+      ctx.textAlign = "left";
+      ctx.textBaseline = "alphabetic";
+      ctx.fillText(text, T.px(xs[0]), T.py(ys[0]));
+      return;
+    }
+    if (kind === CIRCLE) {
+      ctx.arc(T.px(xs[0]), T.py(ys[0]), Math.max(0, size * T.s), 0, 2 * Math.PI);
+    } else {
+      ctx.moveTo(T.px(xs[0]), T.py(ys[0]));
+      for (let k = 1; k < xs.length; k++) ctx.lineTo(T.px(xs[k]), T.py(ys[k]));
+      if (kind === POLYGON) ctx.closePath();
+    }
+    if (fill && (kind === CIRCLE || kind === POLYGON)) ctx.fill(); else ctx.stroke();
+    if (kind !== ARROW) return;
+    const x0 = T.px(xs[0]), y0 = T.py(ys[0]), x1 = T.px(xs[1]), y1 = T.py(ys[1]);
+    const length = Math.hypot(x1 - x0, y1 - y0);
+    if (length <= 0) return;
+    const head = Math.min(Math.max(8, 4 * line), 0.5 * length), ux = (x1 - x0) / length, uy = (y1 - y0) / length;
+    ctx.beginPath();
+    ctx.moveTo(x1, y1);
+    ctx.lineTo(x1 - head * ux - 0.5 * head * uy, y1 - head * uy + 0.5 * head * ux);
+    ctx.lineTo(x1 - head * ux + 0.5 * head * uy, y1 - head * uy - 0.5 * head * ux);
+    ctx.closePath();
+    ctx.fill();
+  }
+  function drawings(ctx, T, setup, list) {
+    if (!list || !list.length) return;
+    const [x0, x1, y0, y1] = setup.arena;
+    ctx.save();
+    ctx.beginPath();
+    ctx.rect(T.px(x0), T.py(y1), T.px(x1) - T.px(x0), T.py(y0) - T.py(y1));
+    ctx.clip();
+    ctx.lineCap = "round";
+    ctx.lineJoin = "round";
+    for (const [, , , shapes] of list) for (const s of shapes) shape(ctx, T, s);
+    ctx.restore();
+  }
+
   function describe(mark) {
     const who = mark.kind === "collision" ? `robots ${mark.robot} and ${mark.other}`
       : mark.kind === "obstacle" ? `robot ${mark.robot} in obstacle ${mark.other}` : `robot ${mark.robot} outside`;
     return `${mark.kind}: ${who}, step ${mark.step}`;
   }
 
-  // scene: {x, y, th, v?, w?, mx?, my?, mth?, obstacles, links, marks, lost, goalProgress?, selected?};
+  // scene: {x, y, th, v?, w?, mx?, my?, mth?, obstacles, links, drawings?, marks, lost, goalProgress?, selected?};
   // paths: per robot [[x, y], ...]; camera: {zoom, panX, panY}. Returns the transform drawn with
   // (world <-> canvas pixels), for what the page does with the mouse.
   function draw(canvas, setup, scene, layers, paths, camera) {
@@ -340,6 +395,7 @@ const DreamArena = (() => {
     if (layers.trails) trails(ctx, T, paths);
     if (layers.sensors) sensors(ctx, T, setup, scene);
     if (layers.radio) links(ctx, T, scene);
+    if (layers.drawings) drawings(ctx, T, setup, scene.drawings);
     robots(ctx, T, setup, scene, layers);
     if (layers.velocities) velocities(ctx, T, scene);
     if (layers.commands) velocities(ctx, T, scene, scene.cv, scene.cw, "#ef6c00", "#ef6c00", [5, 3]);

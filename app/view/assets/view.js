@@ -26,7 +26,7 @@
     trails: $("show-trails").checked, goals: $("show-goals").checked, ids: $("show-ids").checked,
     radio: $("show-radio").checked, sensors: $("show-sensors").checked, measured: $("show-measured").checked,
     violations: $("show-violations").checked, velocities: $("show-velocities").checked,
-    commands: $("show-commands").checked,
+    commands: $("show-commands").checked, drawings: $("show-drawings").checked,
     measuredScale: Number($("measured-scale").value) || 1,
   });
 
@@ -264,6 +264,25 @@
     }));
   }
 
+  // What the controllers drew in the scene: shapes by kind, robots that drew, what their agents clipped.
+  const DRAWN_KINDS = ["", "line", "circle", "polygon", "arrow", "text"];
+  function drawingSummary(s) {
+    const summary = { shown: $("show-drawings").checked, robots: [], shapes: 0, clipped: 0, kinds: {}, texts: [] };
+    for (const [, robot, clipped, shapes] of (s && s.drawings) || []) {
+      summary.robots.push(robot);
+      summary.clipped += clipped;
+      summary.shapes += shapes.length;
+      for (const shape of shapes) {
+        const kind = DRAWN_KINDS[shape[0]] || String(shape[0]);
+        summary.kinds[kind] = (summary.kinds[kind] || 0) + 1;
+        if (shape[0] === 5 && summary.texts.length < 20) summary.texts.push(shape[7]);
+      }
+    }
+    const note = $("drawings-note");
+    if (note) note.textContent = summary.clipped > 0 ? ` (${summary.clipped} clipped)` : "";
+    return summary;
+  }
+
   function publishState(extra) {
     const s = view.scene;
     const robots = s ? s.x.map((x, id) => ({ id, x, y: s.y[id], theta: s.th[id], v: s.v ? s.v[id] : null,
@@ -277,6 +296,7 @@
       verdict: shownVerdict(view.counts), violations: marks, episodes: episodesCached(marks),
       flashing: s && s.marks ? s.marks.filter((m) => m.flash > 0).length : 0,
       links: s && s.links ? s.links.length : 0, measured: !!(s && s.mx), otherWorld: null,
+      drawings: drawingSummary(s),
       camera: { ...view.camera }, selected: s && s.selected ? s.selected : null,
       goalProgress: s && s.goalProgress ? s.goalProgress.slice() : [],
       metrics: DreamMetrics.summary(view.metrics, s ? s.step : -1), metricPlot: view.metricPlot, ...extra,
@@ -444,6 +464,7 @@
     view.scene = {
       step: f.step, t: f.t, x: f.x, y: f.y, th: f.th, v: f.v, w: f.w, cv: f.cv, cw: f.cw, mx: f.mx, my: f.my, mth: f.mth,
       obstacles: f.obstacles, links, marks: sceneMarks(now), lost: f.status ? f.status.lost : [],
+      drawings: f.drawings || [],
     };
     decorate(view.scene, view.goalProgress.slice());
     const stateName = f.status ? STATE_NAMES[f.status.state] || String(f.status.state) : "-";
@@ -465,6 +486,13 @@
     const x = [], y = [], th = [];
     for (let k = 0; k + 2 < poses.length; k += 3) { x.push(poses[k]); y.push(poses[k + 1]); th.push(poses[k + 2]); }
     return { x, y, th };
+  }
+
+  // Each robot's latest drawing at or before `step` ([step, robot, clipped, shapes], by step), with shapes.
+  function drawingsAt(list, step) {
+    const latest = new Map();
+    for (let k = 0, last = lastAtOrBefore(list || [], step, (d) => d[0]); k <= last; k++) latest.set(list[k][1], list[k]);
+    return [...latest.values()].filter((d) => d[3].length > 0 || d[2] > 0);
   }
 
   function replayScene(i) {
@@ -508,7 +536,8 @@
     view.scene = { step, t, ...at, mx: measured && measured.x, my: measured && measured.y, mth: measured && measured.th,
       v: vel && vel.filter((_, k) => k % 2 === 0), w: vel && vel.filter((_, k) => k % 2 === 1),
       cv: cmd && cmd.filter((_, k) => k % 2 === 0), cw: cmd && cmd.filter((_, k) => k % 2 === 1),
-      obstacles: o >= 0 ? run.obstacles[o][1] : [], links, marks, lost: view.counts.lost || [] };
+      obstacles: o >= 0 ? run.obstacles[o][1] : [], links, marks, lost: view.counts.lost || [],
+      drawings: drawingsAt(run.drawings, step) };
     decorate(view.scene, view.replay.goalsAt.map((at) => at.filter((frame) => frame <= i).length));
     const stateName = atEnd && run.final ? STATE_NAMES[run.final.state] || "-" : "replaying";
     view.dirty = true;

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "dream/lcm/channels.h"
+#include "dream/lcm/drawing_shapes.h"
 #include "dream/lcm/lcm_typed.h"
 #include "dream/lcm/message_limits.h"
 #include "dream/world/run_verdict.h"
@@ -61,9 +62,11 @@ BusFrameCollector::BusFrameCollector(lcm::LcmInterface& bus, const world::WorldP
     subscriptions_.push_back(bus.Subscribe(
         regex, [this](const std::string& channel, const void* data, int size) { OnMessage(channel, data, size); }));
   }
-  subscriptions_.push_back(bus.Subscribe(
-      std::string(lcm::kRadioChannelPrefix) + "[0-9]+",
-      [this](const std::string& channel, const void* data, int size) { OnMessage(channel, data, size); }));
+  for (const char* prefix : {lcm::kRadioChannelPrefix, lcm::kDrawChannelPrefix}) {
+    subscriptions_.push_back(bus.Subscribe(
+        std::string(prefix) + "[0-9]+",
+        [this](const std::string& channel, const void* data, int size) { OnMessage(channel, data, size); }));
+  }
   if (commands) SubscribeCommands();
 }
 
@@ -126,6 +129,15 @@ void BusFrameCollector::OnMessage(const std::string& channel, const void* data, 
       return;
     }
     OnCommand(*robot);
+  } else if (const std::optional<int> drawer = lcm::RobotIdFromChannel(channel, lcm::kDrawChannelPrefix)) {
+    drawing_in_ = drawing_t();  // lcm-gen's decoder leaves an array whose count is 0 as it was
+    const bool decoded = lcm::Decode(data, size, &drawing_in_);
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!decoded) {
+      ++bad_messages_;
+      return;
+    }
+    OnDrawing(*drawer);
   } else if (const std::optional<int> sender = lcm::RobotIdFromChannel(channel, lcm::kRadioChannelPrefix)) {
     // Who spoke is in the channel's name; the payload is the algorithm's own
     // and is not decoded (a view draws, it does not listen).
@@ -161,6 +173,7 @@ void BusFrameCollector::StartRun(int64_t run_id) {
   command_v_.clear();
   command_w_.clear();
   command_step_.clear();
+  drawn_.clear();
   marks_.clear();
   marks_located_ = 0;
   judged_.reset();
@@ -219,6 +232,28 @@ void BusFrameCollector::OnCommand(int robot) {
   command_v_[i] = command_in_.v;
   command_w_[i] = command_in_.w;
   command_step_[i] = command_in_.step;
+  ++version_;
+}
+
+void BusFrameCollector::OnDrawing(int robot) {
+  // As a command: the run drawn's, for one of its robots on its own channel, of a step up to the one drawn.
+  if (run_id_ == 0 || drawing_in_.run_id != run_id_ || drawing_in_.robot_id != robot || robot >= poses_.num_robots ||
+      drawing_in_.step > poses_.step) {
+    return;
+  }
+  if (!lcm::DrawingShapes::Problem(drawing_in_).empty()) {
+    ++bad_messages_;
+    return;
+  }
+  if (drawn_.size() != static_cast<size_t>(poses_.num_robots)) {
+    drawn_.assign(static_cast<size_t>(poses_.num_robots), ViewFrame::Drawn{});
+    for (int i = 0; i < poses_.num_robots; ++i) drawn_[static_cast<size_t>(i)] = {i, -1, 0, {}};
+  }
+  ViewFrame::Drawn& drawn = drawn_[static_cast<size_t>(robot)];
+  if (drawing_in_.step < drawn.step) return;
+  drawn.step = drawing_in_.step;
+  drawn.clipped = drawing_in_.clipped;
+  drawn.shapes = lcm::DrawingShapes::Of(drawing_in_);
   ++version_;
 }
 
@@ -326,6 +361,10 @@ bool BusFrameCollector::TakeFrame(ViewFrame* frame, uint64_t* version) {
   frame->radio_senders.swap(radio_senders_);
   radio_senders_.clear();
   frame->radio_links.clear();
+  frame->drawings.clear();
+  for (const ViewFrame::Drawn& drawn : drawn_) {
+    if (!drawn.shapes.empty() || drawn.clipped > 0) frame->drawings.push_back(drawn);
+  }
   frame->violations.assign(marks_.begin(), marks_.end());
   frame->violations_located = marks_located_;
   frame->other_world = other_world_;

@@ -4,6 +4,7 @@
 #include <string_view>
 
 #include "dream/robotarium/robotarium_constants.h"
+#include "drawing_json.h"
 #include "json_parts.h"
 #include "json_writer.h"
 
@@ -130,6 +131,13 @@ std::string FrameJson(const ViewFrame& frame) {
   json.Key("links").BeginArray();
   for (const auto& [sender, receiver] : frame.radio_links)
     json.BeginArray().Integer(sender).Integer(receiver).EndArray();
+  json.EndArray();
+  json.Key("drawings").BeginArray();
+  for (const ViewFrame::Drawn& drawn : frame.drawings) {
+    json.BeginArray().Integer(drawn.step).Integer(drawn.robot_id).Integer(drawn.clipped);
+    AppendShapes(json, drawn.shapes);
+    json.EndArray();
+  }
   json.EndArray();
   json.Key("violations").BeginArray();
   for (const ViolationMark& mark : frame.violations) AppendViolation(json, mark);

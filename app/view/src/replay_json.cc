@@ -9,6 +9,7 @@
 
 #include "dream/view/view_frame.h"
 #include "dream/view/violation_locator.h"
+#include "drawing_json.h"
 #include "json_parts.h"
 #include "json_writer.h"
 
@@ -22,6 +23,8 @@ constexpr int kRadians = 4;
 constexpr size_t kMaxObstacleValues = 2'000'000;
 constexpr size_t kMaxRadioEntries = 200'000;
 constexpr size_t kMaxLinkEntries = 500'000;
+/// Shapes the controllers drew that the replay lists at most (each tens of bytes).
+constexpr size_t kMaxDrawnShapes = 500'000;
 
 /// The violations of every step, and the counts so far where they change.
 struct Judged {
@@ -204,6 +207,25 @@ void RadioTraffic(JsonWriter& json, const run_log::RunLog& log, const ViewSetup&
   json.Key("radio_cut").Bool(cut);
 }
 
+/// What the controllers drew: [step, robot, clipped, shapes] by step, each shown until the robot's next.
+void Drawings(JsonWriter& json, const run_log::RunLog& log) {
+  size_t shapes = 0;
+  bool cut = false;
+  json.Key("drawings").BeginArray();
+  for (const run_log::RecordedDrawing& drawing : log.drawings()) {
+    shapes += drawing.shapes.size();
+    if (shapes > kMaxDrawnShapes) {
+      cut = true;
+      break;
+    }
+    json.BeginArray().Integer(drawing.step).Integer(drawing.robot_id).Integer(drawing.clipped);
+    AppendShapes(json, drawing.shapes);
+    json.EndArray();
+  }
+  json.EndArray();
+  json.Key("drawings_cut").Bool(cut);
+}
+
 void MetricsOverTime(JsonWriter& json, const MetricTimeline* metrics) {
   constexpr int kDigits = 7;
   json.Key("metrics").BeginObject();
@@ -250,6 +272,7 @@ std::string RunReplayJson(const run_log::RunLog& log, const ViewSetup& setup, si
   FrameArrays(json, log, frames);
   ObstacleChanges(json, log, frames);
   RadioTraffic(json, log, setup);
+  Drawings(json, log);
   const Judged judged = JudgeEveryStep(log, setup);
   json.Key("violations").BeginArray();
   for (const ViolationMark& mark : judged.marks) AppendViolation(json, mark);

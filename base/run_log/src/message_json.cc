@@ -7,6 +7,8 @@
 #include "dream/lcm/lcm_typed.h"
 #include "dream/lcm/run_id.h"
 #include "dream/obstacles_t.hpp"
+#include "dream/drawing_t.hpp"
+#include "dream/lcm/wire_text.h"
 #include "dream/radio_message_t.hpp"
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
@@ -102,6 +104,26 @@ nlohmann::ordered_json ToJson(const applied_commands_t& m) {
                               {"conflicts", m.conflicts}});
 }
 
+nlohmann::ordered_json ToJson(const drawing_t& m) {
+  const std::string text(m.text.begin(), m.text.end());
+  return WithMessageStart(m, {{"robot_id", m.robot_id},
+                              {"agent_id", m.agent_id},
+                              {"clipped", m.clipped},
+                              {"num_shapes", m.num_shapes},
+                              {"kind", m.kind},
+                              {"rgba", m.rgba},
+                              {"width", m.width},
+                              {"size", m.size},
+                              {"fill", m.fill},
+                              {"point_count", m.point_count},
+                              {"text_length", m.text_length},
+                              {"num_points", m.num_points},
+                              {"x", m.x},
+                              {"y", m.y},
+                              {"num_text_bytes", m.num_text_bytes},
+                              {"text", lcm::WireText::Of(text, text.size())}});
+}
+
 int64_t Fingerprint(const std::vector<uint8_t>& data) {
   uint64_t value = 0;
   for (size_t i = 0; i < 8; ++i) value = (value << 8) | data[i];  // big-endian, as LCM encodes it
@@ -139,6 +161,7 @@ MessageJson::MessageJson(const std::vector<uint8_t>& data) {
   attempt(robot_fault_t{});
   attempt(applied_commands_t{});
   attempt(run_verdict_t{});
+  attempt(drawing_t{});
   if (!matched) {
     char text[32];
     std::snprintf(text, sizeof(text), "%016llx", static_cast<unsigned long long>(fingerprint));

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <limits>
 
+#include "dream/drawing_t.hpp"
 #include "dream/lcm/channels.h"
+#include "dream/lcm/drawing_shapes.h"
 #include "dream/lcm/lcm_typed.h"
 #include "dream/lcm/log_reader.h"
 #include "dream/radio_message_t.hpp"
@@ -47,7 +49,35 @@ class AgentMessagesHeard {
       if (lcm::Decode(data, size, &command_)) lab_heard_.push_back({*lab, command_.run_id, RecordedOf(command_)});
     } else if (record.channel == lcm::kAppliedChannel) {
       if (lcm::Decode(data, size, &applied_)) applied_heard_.push_back(std::move(applied_));
+    } else if (const std::optional<int> drawer = lcm::RobotIdFromChannel(record.channel, lcm::kDrawChannelPrefix)) {
+      // A fresh message each time: lcm-gen's decoder leaves an array whose count is 0 as it was.
+      drawing_ = drawing_t();
+      if (lcm::Decode(data, size, &drawing_) && lcm::DrawingShapes::Problem(drawing_).empty()) {
+        drawings_heard_.push_back(
+            {{*drawer, drawing_.run_id, drawing_.step, drawing_.robot_id},
+             {drawing_.step, drawing_.robot_id, drawing_.clipped, lcm::DrawingShapes::Of(drawing_)}});
+      }
     }
+  }
+
+  /// RunLog::drawings(): the run's, by step then robot, the last heard of each robot and step.
+  std::vector<RecordedDrawing> DrawingsOf(const RunLog& log) {
+    std::vector<RecordedDrawing> kept;
+    for (HeardDrawing& heard : drawings_heard_) {
+      if (OfRun(heard.heard, log) && InSteps(heard.heard.step, log)) kept.push_back(std::move(heard.drawing));
+    }
+    std::stable_sort(kept.begin(), kept.end(), [](const RecordedDrawing& a, const RecordedDrawing& b) {
+      return a.step != b.step ? a.step < b.step : a.robot_id < b.robot_id;
+    });
+    std::vector<RecordedDrawing> last;
+    for (RecordedDrawing& drawing : kept) {
+      if (!last.empty() && last.back().step == drawing.step && last.back().robot_id == drawing.robot_id) {
+        last.back() = std::move(drawing);
+      } else {
+        last.push_back(std::move(drawing));
+      }
+    }
+    return last;
   }
 
   /// RunLog::radio_sends() (before Index orders them).
@@ -117,6 +147,10 @@ class AgentMessagesHeard {
     Heard heard;
     std::string detail;
   };
+  struct HeardDrawing {
+    Heard heard;
+    RecordedDrawing drawing;
+  };
   struct HeardCommand {
     int channel_id;
     int64_t run_id;
@@ -135,7 +169,9 @@ class AgentMessagesHeard {
   robot_fault_t fault_;
   velocity_command_t command_;
   applied_commands_t applied_;
+  drawing_t drawing_;
   std::vector<Heard> radio_heard_;
+  std::vector<HeardDrawing> drawings_heard_;
   std::vector<HeardFault> faults_heard_;
   std::vector<HeardCommand> commands_heard_;
   std::vector<HeardCommand> lab_heard_;
@@ -200,6 +236,7 @@ RunLog RunLog::Read(const std::string& path) {
   log.commands_ = heard.CommandsOf(log, /*lab=*/false);
   log.lab_commands_ = heard.CommandsOf(log, /*lab=*/true);
   log.applied_ = heard.AppliedOf(log);
+  log.drawings_ = heard.DrawingsOf(log);
   return log;
 }
 

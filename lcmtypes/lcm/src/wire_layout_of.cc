@@ -1,6 +1,7 @@
 #include "dream/lcm/wire_layout_of.h"
 
 #include "dream/applied_commands_t.hpp"
+#include "dream/drawing_t.hpp"
 #include "dream/lcm/message_limits.h"
 #include "dream/obstacles_t.hpp"
 #include "dream/radio_message_t.hpp"
@@ -39,6 +40,28 @@ const WireLayout& WireLayoutOf<applied_commands_t>() {
                                        .Array(kDouble)  // commanded_v
                                        .Array(kDouble)  // commanded_w
                                        .Array(kInt32);  // conflicts
+  return layout;
+}
+
+template <>
+const WireLayout& WireLayoutOf<drawing_t>() {
+  static const WireLayout layout = MessageStart<drawing_t>()
+                                       .Fixed(kInt32)  // robot_id
+                                       .AgentId()
+                                       .Fixed(kInt32)  // clipped
+                                       .Count(drawing_t::MAX_SHAPES)
+                                       .Array(kInt8)    // kind
+                                       .Array(kInt32)   // rgba
+                                       .Array(kDouble)  // width
+                                       .Array(kDouble)  // size
+                                       .Array(kInt8)    // fill
+                                       .Array(kInt32)   // point_count
+                                       .Array(kInt32)   // text_length
+                                       .Count(drawing_t::MAX_POINTS)
+                                       .Array(kDouble)  // x
+                                       .Array(kDouble)  // y
+                                       .Count(drawing_t::MAX_ALL_TEXT_BYTES)
+                                       .Array(kInt8);  // text
   return layout;
 }
 

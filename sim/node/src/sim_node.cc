@@ -72,7 +72,8 @@ SimNode::SimNode(lcm::LcmInterface& lcm, world::World& world, RunRecorder* recor
       run_id_(lcm::NewRunId()),
       commands_(world, options_, run_id_, robots_, bad_messages_, clock_,
                 [this](int64_t run_id, const std::string& seen_on) { NoteOtherWorld(run_id, seen_on); }),
-      radio_(world, run_id_, bad_messages_) {
+      radio_(world, run_id_, bad_messages_),
+      drawings_(world, run_id_, bad_messages_) {
   std::string error;
   if (!options_.IsValid(&error)) throw std::invalid_argument("sim options: " + error);
   bad_messages_.set_step(world_.step());
@@ -127,11 +128,13 @@ Heard SimNode::Hear(const std::string& channel, const void* data, int size) {
     if (!DecodeOrReport(bad_messages_, channel, data, size, &radio)) return Heard::kRefused;
     return radio_.Take(channel, radio, data, size);
   }
+  if (channel.rfind(lcm::kDrawChannelPrefix, 0) == 0) return drawings_.Take(channel, data, size);
   // DREAM_APPLIED and DREAM_MEASURED_POSES are the world's own records, never
   // sent: one heard is forged; any other name is not part of a run.
-  bad_messages_.Report(channel,
-                       "not a channel agents send on (DREAM_CMD_<id>, DREAM_RADIO_<id>, DREAM_FAULT_<id>): "
-                       "refused, kept out of the run log");
+  bad_messages_.Report(
+      channel,
+      "not a channel agents send on (DREAM_CMD_<id>, DREAM_RADIO_<id>, DREAM_FAULT_<id>, DREAM_DRAW_<id>): "
+      "refused, kept out of the run log");
   return Heard::kRefused;
 }
 

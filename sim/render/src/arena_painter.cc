@@ -9,6 +9,7 @@
 
 #include "dream/robotarium/robotarium_constants.h"
 #include "dream/world/run_verdict.h"
+#include "drawing_painter.h"
 #include "violation_painter.h"
 
 namespace dream::render {
@@ -189,6 +190,14 @@ void ArenaPainter::Legend(const std::vector<LegendItem>& items) const {
     cairo_show_text(cr_, item.label.c_str());
     x = label_x + extents.x_advance + 24.0 * ui + marker_px;
   }
+}
+
+void ArenaPainter::Drawings(const ArenaOverlays& overlays, const run_log::RunLog& log, int64_t step) const {
+  if (!overlays.draw_drawings || log.drawings().empty()) return;
+  cairo_save(cr_);
+  ClipToArena();
+  DrawingPainter(cr_, layout_).Paint(run_log::DrawingsShownAt(log.drawings(), step));
+  cairo_restore(cr_);
 }
 
 void ArenaPainter::ClipToArena() const {

@@ -84,6 +84,10 @@ class ArenaPainter {
                   int64_t window_steps) const;
   /// A radio link from (x0, y0) to (x1, y1), with opacity `alpha`.
   void RadioLink(double x0_m, double y0_m, double x1_m, double y1_m, double alpha) const;
+  /// What the controllers drew (DREAM_DRAW_<id>) shown at `step`: each
+  /// robot's latest drawing then (run_log::DrawingsShownAt), clipped to the
+  /// arena, when overlays.draw_drawings is set (DrawingPainter).
+  void Drawings(const ArenaOverlays& overlays, const run_log::RunLog& log, int64_t step) const;
   /// Writes `text` as caption line `line` (0 = first) under the arena.
   void Caption(int line, const std::string& text) const;
 

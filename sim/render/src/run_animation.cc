@@ -160,6 +160,7 @@ void RunAnimation::DrawFrame(int frame) {
     for (int32_t i = 0; i < poses.num_robots; ++i) painter.Track(i, RobotPath(log_, i, from, now), 2.0, 0.6);
   }
   painter.RadioLinks(overlays_, log_, now, radio_window_steps_);
+  painter.Drawings(overlays_, log_, poses.step);
   for (int32_t i = 0; i < poses.num_robots; ++i) {
     const auto k = static_cast<size_t>(i);
     painter.Robot(i, poses.x[k], poses.y[k], poses.theta[k], ArenaPainter::RobotLook::kFilled, options_.robot_ids);

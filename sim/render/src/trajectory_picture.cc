@@ -28,6 +28,7 @@ void TrajectoryPicture::Render(const run_log::RunLog& log, const ArenaOverlays& 
   const robot_poses_t& last = log.poses().back();
   painter.SensorRanges(overlays, last, /*tint=*/true);
   painter.RadioLinks(overlays, log, last_index, 0);
+  painter.Drawings(overlays, log, last.step);
 
   for (int32_t i = 0; i < log.num_robots(); ++i) {
     const auto k = static_cast<size_t>(i);

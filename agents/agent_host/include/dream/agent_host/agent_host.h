@@ -3,11 +3,13 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "dream/agents/framework/robot_agent.h"
 #include "dream/agents/framework/world_snapshot.h"
+#include "dream/drawing_t.hpp"
 #include "dream/lcm/bad_message_log.h"
 #include "dream/lcm/lcm_interface.h"
 #include "dream/lcm/world_follower.h"
@@ -26,8 +28,9 @@ namespace dream::agent_host {
 /// bus (simulator or bridge): it never knows which.
 ///
 /// Reads DREAM_POSES (the step trigger), DREAM_OBSTACLES, DREAM_STATUS and
-/// every DREAM_RADIO_<id>; writes DREAM_RADIO_<id> and DREAM_CMD_<id> for each
-/// hosted robot. Lockstep contract: each DREAM_POSES of step k is answered
+/// every DREAM_RADIO_<id>; writes DREAM_RADIO_<id>, DREAM_DRAW_<id> (what the
+/// robot drew, when it changed; clipped drawings logged once per reason) and
+/// DREAM_CMD_<id> for each hosted robot. Lockstep contract: each DREAM_POSES of step k is answered
 /// with every hosted robot's command for step k, its radio message (if any)
 /// sent just before. A repeated DREAM_POSES for a step already answered (the
 /// world resends while it waits) gets the same messages again without running
@@ -84,6 +87,12 @@ class AgentHost {
     std::string radio_channel;
     velocity_command_t last_command{};
     std::optional<radio_message_t> last_radio;
+    std::string draw_channel;
+    /// This step's drawing, sent with its command (and again with a resend).
+    std::optional<drawing_t> last_drawing;
+    /// What the robot drew last time it drew: a drawing like it is not sent again.
+    agents::Drawing drawn;
+    std::set<std::string> clip_reasons_logged;
     lcm::BadMessageLog bad_radio_payloads;
     /// Why the host gave the robot up (its controller broke the contract),
     /// said once on DREAM_FAULT_<id>; empty while it is answered.
@@ -98,6 +107,8 @@ class AgentHost {
   /// host then says so on DREAM_FAULT_<id> and stops answering for it).
   bool Answer(RobotSlot& robot, const robot_poses_t& poses);
   void Fail(RobotSlot& robot, const robot_poses_t& poses, const std::string& detail);
+  /// Keeps `drawing` as the robot's message for this step when it differs from what it drew last.
+  void TakeDrawing(RobotSlot& robot, const robot_poses_t& poses, agents::Drawing drawing);
   /// Hands a radio message of the followed run to every hosted robot, or
   /// counts it as bad when it was sent at a step not yet reached.
   void Deliver(const std::string& channel, const radio_message_t& message);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "dream/agents/framework/actuator_limits.h"
+#include "dream/agents/framework/drawing.h"
 #include "dream/agents/framework/radio_message.h"
 #include "dream/agents/framework/robot_params.h"
 #include "dream/agents/framework/sensor_readings.h"
@@ -59,6 +60,10 @@ class Robot {
   /// code that has no Robot (test harnesses); robots use the member below.
   static UnicycleCommand DxiToDxu(const Eigen::Vector2d& dxi_mps, double theta_rad, const RobotParams& params);
 
+  /// What the robot drew since the last call (in OnRadio and Update), handed
+  /// over and cleared: the RobotAgent takes it each time Update runs.
+  Drawing TakeDrawing();
+
  protected:
   /// The thesis's dxi_to_dxu: v = k_v (c dx + s dy), w = k_w atan2(-s dx + c dy, v) / (pi/2),
   /// with the heading from the latest odometry. (The turn uses the already
@@ -73,6 +78,10 @@ class Robot {
   Eigen::Vector3d pose() const { return odometry_ ? odometry_->pose : Eigen::Vector3d::Zero(); }
   const MovementReading& movement() const { return movement_; }
   const ObstacleReading& obstacles() const { return obstacles_; }
+  /// Where the controller draws for this step (world coordinates): lines,
+  /// circles, polygons, arrows and text that `dream view` and `dream render`
+  /// show until its next Update. Drawing never changes the run.
+  Drawing& drawing() { return drawing_; }
   /// Counts `message` as one this robot could not decode (it is dropped).
   void CountBadRadioMessage(const RadioMessage& message);
   /// The same when the message is not at hand: its sender stays unknown.
@@ -86,6 +95,7 @@ class Robot {
   MovementReading movement_;
   ObstacleReading obstacles_;
   std::map<int, long> bad_radio_messages_by_sender_;
+  Drawing drawing_;
 };
 
 }  // namespace dream::agents

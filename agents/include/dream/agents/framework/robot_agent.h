@@ -32,14 +32,17 @@ struct RobotAgentSpec {
 
 /// One robot's agent, free of any transport: feed it the world each step and
 /// the radio messages of others; it runs its parts when its Timer says so and
-/// returns the command (the last one again when Update() did not run) and, if
-/// the radio spoke, the message to broadcast.
+/// returns the command (the last one again when Update() did not run), if
+/// the radio spoke, the message to broadcast, and what the robot drew.
 class RobotAgent {
  public:
   struct Output {
     UnicycleCommand command;
     bool done = false;
     std::optional<RadioMessage> broadcast;
+    /// What the robot drew this step, when its Update ran (an empty drawing
+    /// clears the last one); nothing when it did not run.
+    std::optional<Drawing> drawing;
   };
 
   /// @param seed seeds the mailbox's loss decisions.

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "dream/drawing_t.hpp"
 #include "dream/lcm/lcm_interface.h"
 #include "dream/obstacles_t.hpp"
 #include "dream/robot_poses_t.hpp"
@@ -103,6 +104,8 @@ class BusFrameCollector {
   void OnStatus(const run_status_t& status);
   void StartRun(int64_t run_id);
   void OnObstacles();  // obstacles_in_ decoded
+  /// drawing_in_ decoded from DREAM_DRAW_<robot>: each robot's newest drawing of the run drawn.
+  void OnDrawing(int robot);
   /// command_in_ decoded from DREAM_CMD_<robot>: each robot's newest command of the run drawn.
   void OnCommand(int robot);
   /// verdict_in_ decoded: kept only when it is the drawn run's and that run is over.
@@ -122,6 +125,8 @@ class BusFrameCollector {
   run_status_t status_in_{};
   run_verdict_t verdict_in_{};
   velocity_command_t command_in_{};
+  drawing_t drawing_in_{};
+  std::vector<ViewFrame::Drawn> drawn_;  // by robot; an empty shape list: nothing drawn
   // The newest state, under mutex_.
   uint64_t version_ = 0;
   int64_t run_id_ = 0;

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "dream/lcm/drawn_shape.h"
 #include "dream/run_status_t.hpp"
 #include "dream/view/step_metrics.h"
 #include "dream/view/violation_mark.h"
@@ -76,6 +77,16 @@ struct ViewFrame {
   /// (sender, receiver) pairs that hear each other at this step, when the
   /// run's config says who hears whom (ViewSetup); bounded by the robots.
   std::vector<std::pair<int, int>> radio_links;
+  /// What each robot's controller drew last (DREAM_DRAW_<id>, checked by
+  /// lcm::DrawingShapes), by robot, robots that drew nothing left out; and
+  /// the shapes, points and text bytes their agents clipped in it.
+  struct Drawn {
+    int robot_id = 0;
+    int64_t step = 0;
+    int32_t clipped = 0;
+    std::vector<lcm::DrawnShape> shapes;
+  };
+  std::vector<Drawn> drawings;
   /// The run's latest violations, oldest first (at most BusFrameCollector::kMaxMarks),
   /// and how many were located in the run so far (marks beyond the list were dropped).
   std::vector<ViolationMark> violations;

@@ -13,6 +13,7 @@
 #include "dream/run_status_t.hpp"
 #include "dream/run_verdict_t.hpp"
 #include "dream/run_log/recorded_command.h"
+#include "dream/run_log/recorded_drawing.h"
 
 namespace dream::run_log {
 
@@ -106,6 +107,12 @@ class RunLog {
   /// sender n, one of its robots) that decodes, by step (log order within a step).
   const std::vector<RadioSend>& radio_sends() const { return radio_sends_; }
 
+  /// What the robots' controllers drew (DREAM_DRAW_<id>) in this run: of its
+  /// id, a robot of the run and its channel's, a step the log has poses for,
+  /// a drawing by lcm::DrawingShapes; ordered by step, then robot, one per
+  /// robot and step (the last heard). See DrawingsShownAt().
+  const std::vector<RecordedDrawing>& drawings() const { return drawings_; }
+
   /// The last DREAM_STATUS that decodes: how the run ended (FINISHED,
   /// ABORTED), or where it stood when the log stops; none in a log without one.
   const std::optional<run_status_t>& last_status() const { return last_status_; }
@@ -158,6 +165,7 @@ class RunLog {
   std::vector<RecordedCommand> commands_;
   std::vector<RecordedCommand> lab_commands_;
   std::vector<applied_commands_t> applied_;
+  std::vector<RecordedDrawing> drawings_;
   std::optional<run_status_t> last_status_;
   std::optional<run_verdict_t> verdict_;
   std::map<int, std::string> robot_faults_;

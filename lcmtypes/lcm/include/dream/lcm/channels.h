@@ -45,6 +45,10 @@ inline constexpr const char* kRadioChannelRegex = "DREAM_RADIO_.*";
 inline constexpr const char* kFaultChannelPrefix = "DREAM_FAULT_";
 inline constexpr const char* kFaultChannelRegex = "DREAM_FAULT_.*";
 
+/// Prefix of DREAM_DRAW_<id>: what a robot's controller drew (drawing_t);
+/// agent -> world (recorded) and viewers, when the drawing changed.
+inline constexpr const char* kDrawChannelPrefix = "DREAM_DRAW_";
+
 /// Prefix of DREAM_LAB_CMD_<id> (velocity_command_t): in a `dream lab-replay`
 /// log, the command the lab executed at that step, beside the agent's; never published.
 inline constexpr const char* kLabCommandChannelPrefix = "DREAM_LAB_CMD_";
@@ -52,11 +56,13 @@ inline constexpr const char* kLabCommandChannelPrefix = "DREAM_LAB_CMD_";
 /// What an agent host hears: the world's step (poses, obstacles, status) and
 /// the robots' radio. (The Python host process relays exactly these.)
 inline constexpr const char* kAgentInboxRegex = "DREAM_(POSES|OBSTACLES|STATUS|RADIO_[0-9]+)";
-/// What an agent host may say: its robots' commands, radio and faults.
-inline constexpr const char* kAgentOutboxRegex = "DREAM_(CMD|RADIO|FAULT)_[0-9]+";
+/// What an agent host may say: its robots' commands, radio, faults and drawings.
+inline constexpr const char* kAgentOutboxRegex = "DREAM_(CMD|RADIO|FAULT|DRAW)_[0-9]+";
 /// What a viewer of a run draws: the world's step, the measured poses a
-/// realistic world records, who spoke on the radio, and the run's verdict.
-inline constexpr const char* kViewChannelsRegex = "DREAM_(POSES|MEASURED_POSES|OBSTACLES|STATUS|VERDICT|RADIO_[0-9]+)";
+/// realistic world records, who spoke on the radio, what the controllers
+/// drew, and the run's verdict.
+inline constexpr const char* kViewChannelsRegex =
+    "DREAM_(POSES|MEASURED_POSES|OBSTACLES|STATUS|VERDICT|RADIO_[0-9]+|DRAW_[0-9]+)";
 
 /// "DREAM_RADIO_<robot_id>".
 inline std::string RadioChannel(int robot_id) { return kRadioChannelPrefix + std::to_string(robot_id); }
@@ -66,6 +72,9 @@ inline std::string CommandChannel(int robot_id) { return kCommandChannelPrefix +
 
 /// "DREAM_FAULT_<robot_id>".
 inline std::string FaultChannel(int robot_id) { return kFaultChannelPrefix + std::to_string(robot_id); }
+
+/// "DREAM_DRAW_<robot_id>".
+inline std::string DrawChannel(int robot_id) { return kDrawChannelPrefix + std::to_string(robot_id); }
 
 /// "DREAM_LAB_CMD_<robot_id>".
 inline std::string LabCommandChannel(int robot_id) { return kLabCommandChannelPrefix + std::to_string(robot_id); }
@@ -91,18 +100,18 @@ inline std::optional<int> RobotIdFromCommandChannel(const std::string& channel) 
 
 /// A channel an agent host sends on (kAgentOutboxRegex), by its kind and robot.
 struct AgentChannel {
-  enum class Kind { kCommand, kRadio, kFault };
+  enum class Kind { kCommand, kRadio, kFault, kDraw };
   Kind kind = Kind::kCommand;
   int robot_id = 0;
 };
 
-/// `channel` as DREAM_CMD_<id>, DREAM_RADIO_<id> or DREAM_FAULT_<id> (an id of
+/// `channel` as DREAM_CMD_<id>, DREAM_RADIO_<id>, DREAM_FAULT_<id> or DREAM_DRAW_<id> (an id of
 /// at most 6 decimal digits), or nothing for any other name.
 inline std::optional<AgentChannel> ParseAgentChannel(const std::string& channel) {
   using Kind = AgentChannel::Kind;
   for (const auto& [prefix, kind] :
        {std::pair{kCommandChannelPrefix, Kind::kCommand}, std::pair{kRadioChannelPrefix, Kind::kRadio},
-        std::pair{kFaultChannelPrefix, Kind::kFault}}) {
+        std::pair{kFaultChannelPrefix, Kind::kFault}, std::pair{kDrawChannelPrefix, Kind::kDraw}}) {
     if (const std::optional<int> id = RobotIdFromChannel(channel, prefix)) return AgentChannel{kind, *id};
   }
   return std::nullopt;

@@ -4,6 +4,7 @@
 
 namespace dream {
 class applied_commands_t;
+class drawing_t;
 class obstacles_t;
 class radio_message_t;
 class robot_fault_t;
@@ -23,6 +24,8 @@ const WireLayout& WireLayoutOf();
 
 template <>
 const WireLayout& WireLayoutOf<applied_commands_t>();
+template <>
+const WireLayout& WireLayoutOf<drawing_t>();
 template <>
 const WireLayout& WireLayoutOf<obstacles_t>();
 template <>

@@ -16,6 +16,7 @@
 #include "dream/node/command_intake.h"
 #include "dream/node/heard.h"
 #include "dream/node/node_clock.h"
+#include "dream/node/drawing_intake.h"
 #include "dream/node/radio_intake.h"
 #include "dream/node/robot_slot.h"
 #include "dream/node/run_outcome.h"
@@ -160,6 +161,7 @@ class SimNode {
   NodeClock clock_;  // before commands_, which reads it
   CommandIntake commands_;
   RadioIntake radio_;
+  DrawingIntake drawings_;
   std::set<int64_t> other_worlds_;
   std::set<int> robots_ever_lost_;
   std::map<int, std::string> robot_faults_;

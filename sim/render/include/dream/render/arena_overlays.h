@@ -38,6 +38,9 @@ struct ArenaOverlays {
   /// log without radio messages, every pair that could hear each other.
   RadioHearing hears;
   bool draw_radio_links = false;
+  /// What the controllers drew (DREAM_DRAW_<id> in the log): a picture shows
+  /// each robot's drawing at its last step, a video frame at its step.
+  bool draw_drawings = true;
   /// The run's name (config `name`, summary.json "run") and verdict
   /// (RunVerdictName: "clean", "warning", "rejected"; summary.json "verdict"),
   /// written at the start of the caption; empty: not shown.
