@@ -45,6 +45,7 @@ sleeping variant there runs in lockstep too).
 Usage: python_controller_hang.py --dream BIN --source DIR [--launch]
 """
 
+import json
 import os
 import re
 import resource
@@ -138,7 +139,25 @@ def stopped_by_watchdog(ctx, args):
     check(rules == ["controller_failed"], f"verdict reasons {rules}, expected controller_failed only")
     check("ControllerTimeout" in output and "Exception ignored" not in output,
           f"the report should name the timeout: {output[-600:]}")
+    busy_notes_held_the_world(ctx, args, out)
     return f"stopped after {took:.1f} s"
+
+
+def busy_notes_held_the_world(ctx, args, out):
+    """While robot 0's call was stuck at step 3, its host said so on DREAM_BUSY_<id> (under dream
+    run for robot 1 too: it waits behind robot 0's call in the same process; under dream launch it
+    has a process of its own), so the world waited for the host's fault instead of racing the
+    watchdog with its own clock; the log keeps one note per robot and step, and `dream log echo`
+    decodes them."""
+    code, output = ctx.run([args.dream, "log", "echo", out, "DREAM_BUSY_.*"], timeout=60)
+    check(code == 0, f"dream log echo of the busy notes: exit {code}: {output[-600:]}")
+    notes = [json.loads(line) for line in output.splitlines() if line.startswith("{")]
+    robots = sorted(note["message"]["robot_id"] for note in notes)
+    expected = [0] if args.launch else [0, 1]
+    check(robots == expected and all(note["message"]["step"] == 3 for note in notes),
+          f"the log should hold one busy note at step 3 for robots {expected}: {notes}")
+    check(all(note["type"] == "robot_busy_t" and note["message"]["call_robot_id"] in (0, -1) for note in notes),
+          f"the notes should name robot 0's call: {notes}")
 
 
 def interrupted(ctx, args, name, sleep, mode, stop_signal):

@@ -14,6 +14,7 @@
 
 #include "dream/lcm/lcm_bus.h"
 #include "dream/python_embedded/python_agent_host.h"
+#include "dream/python_host/busy_announcer.h"
 #include "dream/python_host/relay_link.h"
 
 namespace dream::python_host {
@@ -35,6 +36,9 @@ namespace dream::python_host {
 /// The relay forwards the world's DREAM_POSES, DREAM_OBSTACLES and
 /// DREAM_STATUS and the other agents' DREAM_RADIO_<id> to the process, and
 /// its DREAM_CMD_<id>, DREAM_RADIO_<id> and DREAM_FAULT_<id> back, in order.
+/// While a long call holds its robots' answers up, it says so on
+/// DREAM_BUSY_<id> (BusyAnnouncer), so the world waits for this object's
+/// verdict on the call instead of racing it.
 class PythonHostProcess final : public python_embedded::PythonAgentHost {
  public:
   struct Limits {
@@ -89,6 +93,8 @@ class PythonHostProcess final : public python_embedded::PythonAgentHost {
   void HandleFrame(const RelayLink::Frame& frame);
   /// Notes what `frame` says (with mutex_); true when it is to be published.
   bool Take(const RelayLink::Frame& frame);
+  /// Tells the world which robots' answers a long call holds up (BusyAnnouncer).
+  void SayBusy(Clock::time_point now);
   /// The stuck call's description when the call in the cell ran too long.
   std::string StuckCall(Clock::time_point now);
   /// Ends the process group (SIGUSR1 first when `trace`, for the line), reaps
@@ -124,6 +130,7 @@ class PythonHostProcess final : public python_embedded::PythonAgentHost {
   std::string report_json_ = "{}";
   std::string error_;
   std::set<int> failed_;  // robots whose fault the process sent
+  BusyAnnouncer busy_;    // which robots' answers to the step are held up
   Step world_step_;       // the latest DREAM_POSES forwarded
   Step answered_step_;    // the step of the process's latest answer (its run)
   std::string trace_;     // faulthandler's output so far

@@ -13,6 +13,7 @@
 #include "dream/applied_commands_t.hpp"
 #include "dream/lcm/bad_message_log.h"
 #include "dream/lcm/lcm_interface.h"
+#include "dream/node/busy_intake.h"
 #include "dream/node/command_intake.h"
 #include "dream/node/heard.h"
 #include "dream/node/node_clock.h"
@@ -45,7 +46,8 @@ class RunRecorder;
 /// Writes DREAM_OBSTACLES, DREAM_STATUS and then DREAM_POSES (the trigger
 /// agents answer) for every step; reads DREAM_CMD_<id>. Records its own
 /// messages once, as published, and what the run used of what it heard
-/// (commands, radio and faults of this run's robots that pass the checks), all
+/// (commands, radio, faults and busy notes of this run's robots that pass the
+/// checks; BusyIntake says how a busy note holds off a silent robot), all
 /// with the simulated time of the current step. Everything else it hears is
 /// refused and counted (bad_messages), never recorded in the run's log: an
 /// undecodable or refused command, radio or fault, any other channel (a forged
@@ -159,6 +161,7 @@ class SimNode {
   int64_t run_id_;
   NodeClock clock_;  // before commands_, which reads it
   CommandIntake commands_;
+  BusyIntake busy_;
   RadioIntake radio_;
   std::set<int64_t> other_worlds_;
   std::set<int> robots_ever_lost_;
