@@ -9,6 +9,7 @@
 #include "dream/lcm/wire_layout_of.h"
 #include "dream/obstacles_t.hpp"
 #include "dream/radio_message_t.hpp"
+#include "dream/robot_busy_t.hpp"
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
@@ -40,7 +41,7 @@ void LcmMessageTarget(const uint8_t* data, size_t size) {
   if (size < 1 || size > (size_t{1} << 20)) return;
   // A copy of exactly the message's bytes, so ASan sees any read past them.
   const std::vector<uint8_t> bytes(data + 1, data + size);
-  switch (data[0] % 9) {
+  switch (data[0] % 10) {
     case 0:
       Decode<applied_commands_t>(bytes);
       break;
@@ -64,6 +65,9 @@ void LcmMessageTarget(const uint8_t* data, size_t size) {
       break;
     case 7:
       Decode<run_verdict_t>(bytes);
+      break;
+    case 8:
+      Decode<robot_busy_t>(bytes);
       break;
     default:
       (void)agents::PositionMessage::Decode(bytes, 1);

@@ -4,6 +4,7 @@
 #include "dream/applied_commands_t.hpp"
 #include "dream/obstacles_t.hpp"
 #include "dream/radio_message_t.hpp"
+#include "dream/robot_busy_t.hpp"
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
@@ -83,10 +84,19 @@ std::vector<EncodedMessage> SampleMessages() {
   verdict.goal_text = "missed (1 of 2 robots arrived)";
   verdict.reasons = "goal: the go_to_goal experiment missed its goal";
 
+  robot_busy_t busy{};
+  busy.step = 3;
+  busy.run_id = kRunId;
+  busy.robot_id = 1;
+  busy.agent_id = 0x1234567890;
+  busy.call_robot_id = 0;
+  busy.call_s = 0.25;
+
   return {{"robot_poses_t", Encoded(poses)},        {"obstacles_t", Encoded(obstacles)},
           {"run_status_t", Encoded(status)},        {"velocity_command_t", Encoded(command)},
           {"radio_message_t", Encoded(radio)},      {"robot_fault_t", Encoded(fault)},
-          {"applied_commands_t", Encoded(applied)}, {"run_verdict_t", Encoded(verdict)}};
+          {"applied_commands_t", Encoded(applied)}, {"run_verdict_t", Encoded(verdict)},
+          {"robot_busy_t", Encoded(busy)}};
 }
 
 namespace {
@@ -111,6 +121,7 @@ const std::map<std::string, TypedDecoder>& Decoders() {
       {"robot_fault_t", DecoderOf<robot_fault_t>()},
       {"applied_commands_t", DecoderOf<applied_commands_t>()},
       {"run_verdict_t", DecoderOf<run_verdict_t>()},
+      {"robot_busy_t", DecoderOf<robot_busy_t>()},
   };
   return decoders;
 }
