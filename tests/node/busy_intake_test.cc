@@ -171,5 +171,31 @@ TEST_F(BusyIntakeTest, NotesFromAnotherAgentAnotherRunOrAFutureStepAreRefused) {
   EXPECT_LT(stuck_step_heard_, 10) << "held past the timeout";
 }
 
+TEST_F(BusyIntakeTest, AHostStillSettingARobotUpHoldsTheStart) {
+  // Robot 1's host is busy through step 0's first 30 sends (6 s: past the
+  // start's 5 s), saying so at each, then answers: the run starts and ends.
+  int first_step_heard = 0;
+  agents_.push_back(
+      std::make_unique<ScriptedAgent>(bus_, 0, 100, [](const robot_poses_t&, velocity_command_t*) { return true; }));
+  agents_.push_back(std::make_unique<ScriptedAgent>(
+      bus_, 1, 101, [this, &first_step_heard](const robot_poses_t& poses, velocity_command_t*) {
+        if (poses.step > 0 || ++first_step_heard > 30) return true;
+        SayBusy(poses);
+        return false;
+      }));
+  const RunOutcome outcome = Run();
+  EXPECT_EQ(outcome.end, RunOutcome::End::kFinished) << outcome.reason;
+  EXPECT_EQ(outcome.steps, 8);
+  EXPECT_GT(first_step_heard * Options().resend_interval_s, Options().start_timeout_s);
+  EXPECT_EQ(LoggedOn("DREAM_BUSY_1"), 0) << "a start's notes are routine, not the log's";
+}
+
+TEST_F(BusyIntakeTest, WithoutNotesTheStartEndsAtItsTimeout) {
+  agents_.push_back(
+      std::make_unique<ScriptedAgent>(bus_, 0, 100, [](const robot_poses_t&, velocity_command_t*) { return true; }));
+  const RunOutcome outcome = Run();
+  EXPECT_EQ(outcome.end, RunOutcome::End::kStartTimeout);
+}
+
 }  // namespace
 }  // namespace dream::node

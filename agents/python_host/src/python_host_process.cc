@@ -240,7 +240,7 @@ void PythonHostProcess::SayBusy(Clock::time_point now) {
   Step at;
   {
     const std::lock_guard<std::mutex> lock(mutex_);
-    if (!ready_ || ended_) return;
+    if (ended_) return;  // before ready_ too: loading and setup() hold the world's start
     due = busy_.Due(now);
     at = world_step_;
   }

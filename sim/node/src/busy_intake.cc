@@ -60,9 +60,15 @@ Heard BusyIntake::Take(const std::string& channel, const robot_busy_t& busy) {
                   busy.agent_id);
   }
   RobotSlot& robot = robots_[static_cast<size_t>(*id)];
-  // Before its first answer nobody drives the robot (the start has its own
-  // limit); afterwards only its driver may hold it.
-  if (!robot.owned) return Heard::kRepeat;
+  if (!robot.owned) {
+    // Before its first answer nobody drives the robot: a host still loading
+    // or setting it up holds the start (HoldsStart), unrecorded, as routine.
+    if (busy.step == world_.step()) {
+      robot.busy_step = busy.step;
+      robot.busy_heard = clock_.now();
+    }
+    return Heard::kRepeat;
+  }
   if (robot.owner_agent_id != busy.agent_id) {
     return Refuse(channel, "agent " + std::to_string(busy.agent_id) + " does not drive robot " + std::to_string(*id),
                   busy.agent_id);
@@ -72,6 +78,17 @@ Heard BusyIntake::Take(const std::string& channel, const robot_busy_t& busy) {
   if (robot.busy_step == busy.step) return Heard::kRepeat;
   robot.busy_step = busy.step;
   return Heard::kUsed;
+}
+
+bool BusyIntake::HoldsStart(NodeClock::TimePoint now, NodeClock::TimePoint step_published) const {
+  if (SecondsBetween(step_published, now) > kMaxHoldFactor * options_.start_timeout_s) return false;
+  for (const RobotSlot& robot : robots_) {
+    if (robot.command_step != world_.step() && !robot.lost && robot.busy_step == world_.step() &&
+        SecondsBetween(robot.busy_heard, now) <= options_.agent_timeout_s) {
+      return true;
+    }
+  }
+  return false;
 }
 
 bool BusyIntake::Holds(const RobotSlot& robot, NodeClock::TimePoint now, NodeClock::TimePoint step_published) const {

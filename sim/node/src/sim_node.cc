@@ -266,6 +266,16 @@ void SimNode::PublishStep(bool record) {
   PublishAndRecord(lcm::kPosesChannel, poses, record);
 }
 
+bool SimNode::StartHeld(Clock::time_point now) {
+  DrainArrived();  // what has arrived counts before the start is given up
+  return AllLiveAnswered() || busy_.HoldsStart(now, step_published_);
+}
+
+void SimNode::DrainArrived() {
+  for (int handled = 0; handled < 10000 && lcm_.HandleSubscriptions(0) > 0; ++handled) {
+  }
+}
+
 bool SimNode::AllRobotsLost() const {
   for (const RobotSlot& robot : robots_) {
     if (!robot.lost) return false;
@@ -383,7 +393,7 @@ std::optional<RunOutcome> SimNode::StartWhenAllAnswered(Clock::time_point now, C
     *next_realtime_step = now;
     if (progress_ != nullptr) progress_->Start(options_.max_steps, world_.step(), now);
     // Agents answered step 0; in real time their answer is the latest command.
-  } else if (SecondsBetween(step_published_, now) > options_.start_timeout_s) {
+  } else if (SecondsBetween(step_published_, now) > options_.start_timeout_s && !StartHeld(now)) {
     std::vector<int> missing;
     for (size_t i = 0; i < robots_.size(); ++i) {
       if (!Answered(robots_[i])) missing.push_back(static_cast<int>(i));
@@ -401,9 +411,7 @@ std::optional<RunOutcome> SimNode::StartWhenAllAnswered(Clock::time_point now, C
 bool SimNode::ReadyForNextStep(Clock::time_point now, Clock::time_point next_realtime_step) {
   if (options_.mode == config::WorldMode::kLockstep) {
     if (!AllLiveAnswered() && SecondsBetween(step_published_, now) > options_.agent_timeout_s) {
-      // What has arrived counts before a robot is called silent.
-      for (int handled = 0; handled < 10000 && lcm_.HandleSubscriptions(0) > 0; ++handled) {
-      }
+      DrainArrived();  // what has arrived counts before a robot is called silent
       MarkSilentRobotsLost(now);
     }
     return AllLiveAnswered() && (options_.pace <= 0.0 || now >= next_realtime_step);
@@ -433,12 +441,8 @@ std::optional<RunOutcome> SimNode::TakeStep() {
   // With every robot lost nothing holds a lockstep world back, but what
   // has arrived is still read each step (the in-process agents' answers
   // to this step included): late faults are recorded, and an agent that
-  // speaks again rejoins (it would never be heard otherwise). Bounded,
-  // so a flood cannot hold the world.
-  if (options_.mode == config::WorldMode::kLockstep && AllRobotsLost()) {
-    for (int handled = 0; handled < 10000 && lcm_.HandleSubscriptions(0) > 0; ++handled) {
-    }
-  }
+  // speaks again rejoins (it would never be heard otherwise).
+  if (options_.mode == config::WorldMode::kLockstep && AllRobotsLost()) DrainArrived();
   return std::nullopt;
 }
 

@@ -16,7 +16,9 @@ namespace dream::python_host {
 /// from a quarter of agent_timeout_s after the step reached the host, every
 /// quarter, it names each robot of the host that has neither answered the
 /// step nor failed, so the world waits for the host's own verdict (the
-/// robot's command or its fault) while the host is alive to give it.
+/// robot's command or its fault) while the host is alive to give it. The
+/// same holds the world's start while the host loads and sets robots up
+/// (bounded by 0.9 x start_timeout_s on the host's side).
 /// Not thread-safe: its owner guards it. Times are given, so tests need no clock.
 class BusyAnnouncer {
  public:

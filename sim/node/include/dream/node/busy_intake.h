@@ -26,7 +26,7 @@ namespace dream::node {
 /// fault or as a lost robot depends on the host's own deadline, not on which
 /// of two clocks a loaded machine runs first. Only the robot's own agent may
 /// say it; the first note per robot and step is recorded, the rest only
-/// refresh the hold.
+/// refresh the hold. Before the run starts the same notes hold the start.
 class BusyIntake {
  public:
   /// A host still saying busy this long after the step (in agent_timeout_s)
@@ -41,6 +41,11 @@ class BusyIntake {
 
   Heard Take(const std::string& channel, const robot_busy_t& busy);
 
+  /// True while a host still loading or setting up a robot that has not
+  /// answered the first step holds the start: it ends the load itself (at
+  /// 0.9 x start_timeout_s) with the robot's fault. At most kMaxHoldFactor x
+  /// start_timeout_s from the step; any agent may hold an unclaimed robot.
+  bool HoldsStart(NodeClock::TimePoint now, NodeClock::TimePoint step_published) const;
   /// True while `robot`'s host holds off its being called silent at the
   /// current step, published at `step_published`.
   bool Holds(const RobotSlot& robot, NodeClock::TimePoint now, NodeClock::TimePoint step_published) const;

@@ -114,6 +114,11 @@ class SimNode {
   void NoteOtherWorld(int64_t run_id, const std::string& seen_on);
   /// Lockstep: the robot has a command for the step the world is at.
   bool Answered(const RobotSlot& robot) const { return robot.command_step == world_.step(); }
+  /// Handles what has arrived on the bus (bounded, so a flood cannot hold the world).
+  void DrainArrived();
+  /// Past start_timeout_s: true when what arrived answers the start after
+  /// all, or a host still setting robots up holds it (BusyIntake::HoldsStart).
+  bool StartHeld(Clock::time_point now);
   /// Records which commands are applied at this step (DREAM_APPLIED).
   void RecordApplied();
   /// Writes one event to the recorder, if any; a write failure is remembered
