@@ -52,15 +52,36 @@ inline std::string CallTextOf(int64_t robot, int64_t step) {
          (step < 0 ? std::string("setup()") : "call at step " + std::to_string(step));
 }
 
-inline std::string StuckTextOf(int64_t token, int64_t robot, int64_t step, const PythonHostProcess::Limits& limits) {
+// A call ended by killing its process: in the check before a run, at
+// kKillFraction of its limit; in a run, kKillAfterRaiseFraction of the limit
+// after the process's watchdog raised ControllerTimeout in it (`raised`), or
+// at kKillUnraisedFraction when the watchdog never could.
+inline std::string StuckTextOf(int64_t token, int64_t robot, int64_t step, const PythonHostProcess::Limits& limits,
+                               bool in_run, bool raised) {
   const double limit_s = token > 0 ? limits.agent_timeout_s : limits.start_timeout_s;
-  char text[400];
-  std::snprintf(text, sizeof text,
-                "%s did not return within %g s (%g x the world's %s of %g s), nor stop when dream's watchdog "
-                "raised ControllerTimeout in it (a call blocked outside Python, in time.sleep, a blocking read or "
-                "C code, cannot): its Python process was killed",
-                CallTextOf(robot, token > 0 ? step : -1).c_str(), PythonHostProcess::kKillFraction * limit_s,
-                PythonHostProcess::kKillFraction, token > 0 ? "agent_timeout_s" : "start_timeout_s", limit_s);
+  const char* limit_name = token > 0 ? "agent_timeout_s" : "start_timeout_s";
+  const std::string call = CallTextOf(robot, token > 0 ? step : -1);
+  const char* cannot = "a call blocked outside Python, in time.sleep, a blocking read or C code, cannot";
+  char text[500];
+  if (!in_run) {
+    std::snprintf(text, sizeof text,
+                  "%s did not return within %g s (%g x the world's %s of %g s), nor stop when dream's watchdog "
+                  "raised ControllerTimeout in it (%s): its Python process was killed",
+                  call.c_str(), PythonHostProcess::kKillFraction * limit_s, PythonHostProcess::kKillFraction,
+                  limit_name, limit_s, cannot);
+  } else if (raised) {
+    std::snprintf(text, sizeof text,
+                  "%s did not return, nor stop when dream's watchdog raised ControllerTimeout in it at 0.8 x the "
+                  "world's %s of %g s (%s): its Python process was killed %g s later",
+                  call.c_str(), limit_name, limit_s, cannot, PythonHostProcess::kKillAfterRaiseFraction * limit_s);
+  } else {
+    std::snprintf(text, sizeof text,
+                  "%s did not return within %g s (%g x the world's %s of %g s), and dream's watchdog could not raise "
+                  "ControllerTimeout in it (its process starved of CPU, or Python's threads blocked): its Python "
+                  "process was killed",
+                  call.c_str(), PythonHostProcess::kKillUnraisedFraction * limit_s,
+                  PythonHostProcess::kKillUnraisedFraction, limit_name, limit_s);
+  }
   return text;
 }
 

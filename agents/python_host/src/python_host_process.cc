@@ -79,7 +79,7 @@ void PythonHostProcess::Check(const std::string& spec_json, double start_timeout
       const int64_t robot = spawned.cell[1].load();
       RequestTrace(spawned.pid, spawned.trace_fd, &trace);
       KillAndReap(spawned.pid);
-      why = StuckTextOf(-1, robot, -1, limits);
+      why = StuckTextOf(-1, robot, -1, limits, false, false);
     } else {
       continue;
     }
@@ -339,11 +339,23 @@ std::string PythonHostProcess::StuckCall(Clock::time_point now) {
     watched_since_ = now;
     return "";
   }
-  // A step's call from its start; loading and setup() from the process's, as
-  // the world counts its start_timeout_s from before they begin.
+  // The process's watchdog raises in the call first (at 0.8 of the limit,
+  // on its own clock): the kill waits for that to have had its chance, so
+  // which of the two ends a call does not depend on which clock a starved
+  // machine runs first (the world waits meanwhile: BusyAnnouncer).
   const double limit_s = token > 0 ? limits_.agent_timeout_s : limits_.start_timeout_s;
-  if (Seconds(now - (token > 0 ? watched_since_ : started_)) <= kKillFraction * limit_s) return "";
-  return StuckTextOf(token, cell_[1].load(), cell_[2].load(), limits_);
+  const bool raised = cell_[python_embedded::kCallCellRaised].load() == token;
+  if (raised && raised_token_ != token) {
+    raised_token_ = token;
+    raised_seen_ = now;
+  }
+  // Loading and setup() from the process's start, as the world counts its
+  // start_timeout_s from before they begin.
+  const bool overdue = raised
+                           ? Seconds(now - raised_seen_) > kKillAfterRaiseFraction * limit_s
+                           : Seconds(now - (token > 0 ? watched_since_ : started_)) > kKillUnraisedFraction * limit_s;
+  if (!overdue) return "";
+  return StuckTextOf(token, cell_[1].load(), cell_[2].load(), limits_, true, raised);
 }
 
 void PythonHostProcess::EndProcess(const std::string& why, const std::string& exit_text, bool trace) {

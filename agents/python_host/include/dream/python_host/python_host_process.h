@@ -27,9 +27,10 @@ namespace dream::python_host {
 /// Python's faulthandler, which it sets up). A call stuck outside Python (a
 /// long time.sleep, a blocking read, C code), which the process's own
 /// watchdog cannot stop, is timed here through the call cell the two share:
-/// past kKillFraction of the world's agent_timeout_s (loading and setup(): of
-/// its start_timeout_s) the process group is killed and its robots are lost,
-/// the stuck one with the line it was stuck on. Its signal handlers are its
+/// kKillAfterRaiseFraction of the world's agent_timeout_s (loading and
+/// setup(): of its start_timeout_s) after the watchdog raised in it, or at
+/// kKillUnraisedFraction when it never could, the process group is killed
+/// and its robots are lost, the stuck one with the line it was stuck on. Its signal handlers are its
 /// own, and whatever it forks belongs to its group: the group is killed
 /// (SIGKILL after kGraceS) when this object goes, so no process outlives it.
 ///
@@ -49,10 +50,17 @@ class PythonHostProcess final : public python_embedded::PythonAgentHost {
     /// it ends when this object goes).
     double idle_timeout_s = 0.0;
   };
-  /// A call is ended at this fraction of its limit: after the process's own
-  /// watchdog (0.8, which stops a call running Python code with the line it
-  /// was on), before the world gives up on the robot as silent (1.0).
+  /// In the check before a run (no world to wait), a call is ended at this
+  /// fraction of its limit: after the process's own watchdog (0.8, which
+  /// stops a call running Python code with the line it was on).
   static constexpr double kKillFraction = 0.9;
+  /// In a run, a call still running this fraction of its limit after the
+  /// watchdog raised ControllerTimeout in it (the cell says so) is ended: the
+  /// raise had its chance, and the world waits meanwhile (DREAM_BUSY_<id>).
+  static constexpr double kKillAfterRaiseFraction = 0.5;
+  /// A call the watchdog never raised in (its thread starved, or blocked) is
+  /// ended at this fraction of its limit (the world holds at most 10).
+  static constexpr double kKillUnraisedFraction = 3.0;
   /// How long the process gets to end by itself before SIGKILL.
   static constexpr double kGraceS = 1.0;
 
@@ -136,6 +144,8 @@ class PythonHostProcess final : public python_embedded::PythonAgentHost {
   std::string trace_;     // faulthandler's output so far
   int64_t watched_token_ = 0;
   Clock::time_point watched_since_;
+  int64_t raised_token_ = 0;       // the latest call the watchdog was seen to raise in
+  Clock::time_point raised_seen_;  // when that was first seen
 };
 
 }  // namespace dream::python_host
