@@ -9,16 +9,16 @@
 namespace dream::python_host {
 
 /// When a Python host tells the world that its robots' answers to a step are
-/// held up (DREAM_BUSY_<id>, robot_busy_t). The watchdog ends a long call at
-/// 0.8 (raise) or 0.9 (kill) of the world's agent_timeout_s, and the world
-/// calls a robot silent at 1.0: two clocks, and on a starved machine the
-/// fault could come after the world's deadline. The note closes that race:
+/// held up (DREAM_BUSY_<id>, robot_busy_t). The host's watchdog ends a long
+/// call (a raise at 0.8 of the world's agent_timeout_s, a kill after it), and
+/// the world would call a robot silent at 1.0: two clocks, and on a starved
+/// machine the fault could come after the world's deadline. The note closes that race:
 /// from a quarter of agent_timeout_s after the step reached the host, every
 /// quarter, it names each robot of the host that has neither answered the
 /// step nor failed, so the world waits for the host's own verdict (the
 /// robot's command or its fault) while the host is alive to give it. The
 /// same holds the world's start while the host loads and sets robots up
-/// (bounded by 0.9 x start_timeout_s on the host's side).
+/// (bounded on the host's side by PythonHostProcess's kill fractions).
 /// Not thread-safe: its owner guards it. Times are given, so tests need no clock.
 class BusyAnnouncer {
  public:

@@ -42,8 +42,8 @@ class BusyIntake {
   Heard Take(const std::string& channel, const robot_busy_t& busy);
 
   /// True while a host still loading or setting up a robot that has not
-  /// answered the first step holds the start: it ends the load itself (at
-  /// 0.9 x start_timeout_s) with the robot's fault. At most kMaxHoldFactor x
+  /// answered the first step holds the start: it ends the load itself (its
+  /// watchdog, then its kill) with the robot's fault. At most kMaxHoldFactor x
   /// start_timeout_s from the step; any agent may hold an unclaimed robot.
   bool HoldsStart(NodeClock::TimePoint now, NodeClock::TimePoint step_published) const;
   /// True while `robot`'s host holds off its being called silent at the
