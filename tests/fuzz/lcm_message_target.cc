@@ -11,6 +11,7 @@
 #include "dream/lcm/wire_layout_of.h"
 #include "dream/obstacles_t.hpp"
 #include "dream/radio_message_t.hpp"
+#include "dream/robot_busy_t.hpp"
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
@@ -55,7 +56,7 @@ void LcmMessageTarget(const uint8_t* data, size_t size) {
   if (size < 1 || size > (size_t{1} << 20)) return;
   // A copy of exactly the message's bytes, so ASan sees any read past them.
   const std::vector<uint8_t> bytes(data + 1, data + size);
-  switch (data[0] % 10) {
+  switch (data[0] % 11) {
     case 0:
       Decode<applied_commands_t>(bytes);
       break;
@@ -82,6 +83,9 @@ void LcmMessageTarget(const uint8_t* data, size_t size) {
       break;
     case 8:
       DecodeDrawing(bytes);
+      break;
+    case 9:
+      Decode<robot_busy_t>(bytes);
       break;
     default:
       (void)agents::PositionMessage::Decode(bytes, 1);

@@ -45,6 +45,7 @@ sleeping variant there runs in lockstep too).
 Usage: python_controller_hang.py --dream BIN --source DIR [--launch]
 """
 
+import json
 import os
 import re
 import resource
@@ -52,6 +53,10 @@ import signal
 import time
 
 from dreamtest import argument_parser, check, main, read_summary, require_private_netns
+
+# Each command here takes 1-10 s on a quiet machine; this bound only turns a hang into a failure,
+# and is far above what a hog on every core makes of them (docs/reliability.md, "Under load").
+HANG_BOUND_S = 120
 
 HANG = '''\
 import os
@@ -120,7 +125,7 @@ def stopped_by_watchdog(ctx, args):
     override = ["--set", "world.agent_timeout_s=1"]
     out = ctx.path("timeout_out")
     started = time.monotonic()
-    code, output = ctx.run([args.dream, args.command, config, "--out", out] + override, timeout=30)
+    code, output = ctx.run([args.dream, args.command, config, "--out", out] + override, timeout=HANG_BOUND_S)
     took = time.monotonic() - started
     # Ending at all (within ctx.run's bound) is the point; the fault below says it was the watchdog.
     check(code == 4, f"a controller stopped for running too long: exit {code}, expected 4: {output[-600:]}")
@@ -138,7 +143,25 @@ def stopped_by_watchdog(ctx, args):
     check(rules == ["controller_failed"], f"verdict reasons {rules}, expected controller_failed only")
     check("ControllerTimeout" in output and "Exception ignored" not in output,
           f"the report should name the timeout: {output[-600:]}")
+    busy_notes_held_the_world(ctx, args, out)
     return f"stopped after {took:.1f} s"
+
+
+def busy_notes_held_the_world(ctx, args, out):
+    """While robot 0's call was stuck at step 3, its host said so on DREAM_BUSY_<id> (under dream
+    run for robot 1 too: it waits behind robot 0's call in the same process; under dream launch it
+    has a process of its own), so the world waited for the host's fault instead of racing the
+    watchdog with its own clock; the log keeps one note per robot and step, and `dream log echo`
+    decodes them."""
+    code, output = ctx.run([args.dream, "log", "echo", out, "DREAM_BUSY_.*"], timeout=60)
+    check(code == 0, f"dream log echo of the busy notes: exit {code}: {output[-600:]}")
+    notes = [json.loads(line) for line in output.splitlines() if line.startswith("{")]
+    robots = sorted(note["message"]["robot_id"] for note in notes)
+    expected = [0] if args.launch else [0, 1]
+    check(robots == expected and all(note["message"]["step"] == 3 for note in notes),
+          f"the log should hold one busy note at step 3 for robots {expected}: {notes}")
+    check(all(note["type"] == "robot_busy_t" and note["message"]["call_robot_id"] in (0, -1) for note in notes),
+          f"the notes should name robot 0's call: {notes}")
 
 
 def interrupted(ctx, args, name, sleep, mode, stop_signal):
@@ -157,7 +180,7 @@ def interrupted(ctx, args, name, sleep, mode, stop_signal):
     check(run.poll() is None, f"{name}: dream run ended by itself ({run.returncode})")
     sent = time.monotonic()
     run.send_signal(stop_signal)
-    code = ctx.wait(name, timeout=30)
+    code = ctx.wait(name, timeout=HANG_BOUND_S)
     took = time.monotonic() - sent
     check(code == 130, f"{name}: exit {code} after {signal.Signals(stop_signal).name}, expected 130")
     summary = read_summary(out)
@@ -180,7 +203,7 @@ def exits(ctx, args):
     config = write(os.path.join(folder, "exit.yaml"),
                    CONFIG.format(name="exits", timeout=1.0, module="exit.py", class_name="Exits"))
     out = ctx.path("exits_out")
-    code, output = ctx.run([args.dream, args.command, config, "--out", out], timeout=30)
+    code, output = ctx.run([args.dream, args.command, config, "--out", out], timeout=HANG_BOUND_S)
     check(code == 4, f"sys.exit(3) in update(): exit {code}, expected 4: {output[-600:]}")
     check("Exception ignored" not in output, f"SystemExit escaped to ctypes: {output[-800:]}")
     summary = read_summary(out)
@@ -312,7 +335,7 @@ def escapes(ctx, args):
 
     # os._exit(0): the robots are lost, the run ends by itself with a verdict.
     folder, config, out = escape_case(ctx, args, "exit")
-    code, output = ctx.run([args.dream, args.command, config, "--out", out], timeout=30)
+    code, output = ctx.run([args.dream, args.command, config, "--out", out], timeout=HANG_BOUND_S)
     check(code == 4, f"os._exit(0) in update(): exit {code}, expected 4: {output[-600:]}")
     check(not os.path.exists(os.path.join(out, "run.lcmlog.part")), "os._exit: run.lcmlog.part left behind")
     faults = faults_of(read_summary(out), "exit")
@@ -328,7 +351,7 @@ def escapes(ctx, args):
     # A crash in C code: the signal and the line.
     resource.setrlimit(resource.RLIMIT_CORE, (0, 0))  # no core file from the crash below
     folder, config, out = escape_case(ctx, args, "crash")
-    code, output = ctx.run([args.dream, args.command, config, "--out", out], timeout=30)
+    code, output = ctx.run([args.dream, args.command, config, "--out", out], timeout=HANG_BOUND_S)
     check(code == 4, f"a SIGSEGV in update(): exit {code}, expected 4: {output[-600:]}")
     fault = faults_of(read_summary(out), "crash").get("0", "")
     check(re.match(rf"step 3: .*escapes\.py:{line_of(ESCAPES, 'ctypes.string_at(0)')}: in update: robot 0's call at "
@@ -339,7 +362,7 @@ def escapes(ctx, args):
 
     # Bytes that are no frame, written on the link: the process is ended, its robots lost.
     folder, config, out = escape_case(ctx, args, "garbage")
-    code, output = ctx.run([args.dream, args.command, config, "--out", out], timeout=30)
+    code, output = ctx.run([args.dream, args.command, config, "--out", out], timeout=HANG_BOUND_S)
     check(code == 4, f"garbage on the link: exit {code}, expected 4: {output[-600:]}")
     fault = faults_of(read_summary(out), "garbage").get("0", "")
     check("on its link" in fault, f"garbage: robot 0's fault should say what happened: {fault!r}")
@@ -350,11 +373,11 @@ def escapes(ctx, args):
     # the run, nothing holds the folder, the run is clean.
     for attack in ("fork", "ctypes_fork"):
         folder, config, out = escape_case(ctx, args, attack)
-        code, output = ctx.run([args.dream, args.command, config, "--out", out], timeout=30)
+        code, output = ctx.run([args.dream, args.command, config, "--out", out], timeout=HANG_BOUND_S)
         check(code == 0, f"{attack}: exit {code}, expected 0: {output[-600:]}")
         check(pids_in(folder, "forked"), f"{attack}: the controller did not fork")
         no_process_left(folder, attack)
-        code, output = ctx.run([args.dream, args.command, config, "--out", out, "--overwrite"], timeout=30)
+        code, output = ctx.run([args.dream, args.command, config, "--out", out, "--overwrite"], timeout=HANG_BOUND_S)
         check(code == 0, f"{attack}: a second run into the folder: exit {code}: {output[-600:]}")
         results.append(f"{attack}: clean, nothing left")
 
@@ -366,7 +389,7 @@ def escapes(ctx, args):
     time.sleep(0.5)
     sent = time.monotonic()
     run.send_signal(signal.SIGTERM)
-    code = ctx.wait("ignore_signals", timeout=30)  # it used to wait for SIGKILL for ever
+    code = ctx.wait("ignore_signals", timeout=HANG_BOUND_S)  # it used to wait for SIGKILL for ever
     took = time.monotonic() - sent
     check(code == 130, f"ignore_signals: exit {code} after SIGTERM, expected 130: {ctx.output('ignore_signals')[-600:]}")
     check(read_summary(out)["end"] == "interrupted", "ignore_signals: summary end is not 'interrupted'")
@@ -378,7 +401,7 @@ def escapes(ctx, args):
     for attack, why in (("sleep", "did not return"), ("recursion", "")):
         folder, config, out = escape_case(ctx, args, attack)
         started = time.monotonic()
-        code, output = ctx.run([args.dream, args.command, config, "--out", out], timeout=30)
+        code, output = ctx.run([args.dream, args.command, config, "--out", out], timeout=HANG_BOUND_S)
         took = time.monotonic() - started
         check(code == 4, f"{attack}: exit {code}, expected 4: {output[-600:]}")
         fault = faults_of(read_summary(out), attack).get("0", "")
@@ -396,20 +419,21 @@ def escapes(ctx, args):
     # (Not under dream launch, whose agents start while its simulator checks the config.)
     if args.command != "run":
         return "; ".join(results)
-    folder, config, out = escape_case(ctx, args, "setup_sleeps", start_timeout=3)
+    folder, config, out = escape_case(ctx, args, "setup_sleeps", start_timeout=10)
     started = time.monotonic()
-    code, output = ctx.run([args.dream, args.command, config, "--out", out], timeout=40)
+    code, output = ctx.run([args.dream, args.command, config, "--out", out], timeout=HANG_BOUND_S)
     took = time.monotonic() - started
     setup_line = line_of(ESCAPES, "time.sleep(600)")
     check(code == 4, f"setup_sleeps: exit {code}, expected 4: {output[-600:]}")
     fault = faults_of(read_summary(out), "setup_sleeps").get("1", "")
-    check(re.match(rf".*escapes\.py:{setup_line}: in setup: robot 1's setup\(\) did not return within 2\.7 s", fault)
+    check(re.match(rf".*escapes\.py:{setup_line}: in setup: robot 1's setup\(\) did not return, nor stop when dream's watchdog raised ControllerTimeout "
+                   rf"in it at 0\.8 x the world's start_timeout_s of 10 s", fault)
           is not None, f"setup_sleeps: robot 1's fault: {fault!r}")
     no_process_left(folder, "setup_sleeps")
     results.append(f"setup() hangs in the run: exit 4 in {took:.1f} s")
-    folder, config, out = escape_case(ctx, args, "check_sleeps", start_timeout=3)
+    folder, config, out = escape_case(ctx, args, "check_sleeps", start_timeout=10)
     started = time.monotonic()
-    code, output = ctx.run([args.dream, args.command, config, "--out", out], timeout=40)
+    code, output = ctx.run([args.dream, args.command, config, "--out", out], timeout=HANG_BOUND_S)
     took = time.monotonic() - started
     check(code == 1 and re.search(rf"escapes\.py:{setup_line}: in setup: robot 1's setup\(\) did not return",
                                   output) is not None,

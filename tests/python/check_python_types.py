@@ -46,6 +46,7 @@ def types_for(dream):
         (re.compile(r"DREAM_CMD_[0-9]+"), dream.velocity_command_t),
         (re.compile(r"DREAM_APPLIED"), dream.applied_commands_t),
         (re.compile(r"DREAM_VERDICT"), dream.run_verdict_t),
+        (re.compile(r"DREAM_BUSY_[0-9]+"), dream.robot_busy_t),
     ]
 
 

@@ -17,6 +17,7 @@
 #include "dream/applied_commands_t.hpp"
 #include "dream/drawing_t.hpp"
 #include "dream/radio_message_t.hpp"
+#include "dream/robot_busy_t.hpp"
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
@@ -73,6 +74,7 @@ TEST(DecoderBounds, LayoutsMatchTheGeneratedEncodings) {
   EXPECT_EQ(lcm::WireLayoutOf<applied_commands_t>().MinimumBytes(), applied_commands_t{}.getEncodedSize());
   EXPECT_EQ(lcm::WireLayoutOf<run_verdict_t>().MinimumBytes(), run_verdict_t{}.getEncodedSize());
   EXPECT_EQ(lcm::WireLayoutOf<drawing_t>().MinimumBytes(), drawing_t{}.getEncodedSize());
+  EXPECT_EQ(lcm::WireLayoutOf<robot_busy_t>().MinimumBytes(), robot_busy_t{}.getEncodedSize());
 }
 
 TEST(DecoderBounds, TheLargestLegalMessagesDecode) {

@@ -5,6 +5,7 @@
 #include "dream/drawing_t.hpp"
 #include "dream/obstacles_t.hpp"
 #include "dream/radio_message_t.hpp"
+#include "dream/robot_busy_t.hpp"
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
@@ -102,11 +103,19 @@ std::vector<EncodedMessage> SampleMessages() {
   drawing.y = {0.0, 0.5, 0.5};
   drawing.num_text_bytes = 2;
   drawing.text = {'h', 'i'};
+  robot_busy_t busy{};
+  busy.step = 3;
+  busy.run_id = kRunId;
+  busy.robot_id = 1;
+  busy.agent_id = 0x1234567890;
+  busy.call_robot_id = 0;
+  busy.call_s = 0.25;
 
   return {
       {"robot_poses_t", Encoded(poses)},        {"obstacles_t", Encoded(obstacles)}, {"run_status_t", Encoded(status)},
       {"velocity_command_t", Encoded(command)}, {"radio_message_t", Encoded(radio)}, {"robot_fault_t", Encoded(fault)},
-      {"applied_commands_t", Encoded(applied)}, {"run_verdict_t", Encoded(verdict)}, {"drawing_t", Encoded(drawing)}};
+      {"applied_commands_t", Encoded(applied)}, {"run_verdict_t", Encoded(verdict)}, {"drawing_t", Encoded(drawing)},
+      {"robot_busy_t", Encoded(busy)}};
 }
 
 namespace {
@@ -132,6 +141,7 @@ const std::map<std::string, TypedDecoder>& Decoders() {
       {"applied_commands_t", DecoderOf<applied_commands_t>()},
       {"run_verdict_t", DecoderOf<run_verdict_t>()},
       {"drawing_t", DecoderOf<drawing_t>()},
+      {"robot_busy_t", DecoderOf<robot_busy_t>()},
   };
   return decoders;
 }

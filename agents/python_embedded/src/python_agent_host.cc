@@ -185,6 +185,9 @@ class Watchdog {
       // back: ask for the GIL once (within the switch interval while the
       // call runs Python code; when the call ended meanwhile, whenever the
       // main thread runs Python again, and RaiseInCall does nothing).
+      // Said in the cell (before the GIL, which C code may hold for ever):
+      // the process watching this one kills only after it.
+      if (kind == kTimeout) cell_.load()[kCallCellRaised].store(token, std::memory_order_relaxed);
       const PyGILState_STATE gil = PyGILState_Ensure();
       PyGILState_Release(gil);
       fired = true;

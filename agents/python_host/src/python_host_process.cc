@@ -19,74 +19,16 @@
 #include "dream/config/sim_node_options.h"
 #include "dream/lcm/channels.h"
 #include "dream/lcm/message_header.h"
+#include "dream/robot_busy_t.hpp"
 #include "dream/robot_fault_t.hpp"
 #include "dream/python_host/spawned_python_host.h"
+#include "host_texts.h"
 
 namespace dream::python_host {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-// Frames for the process beyond this are dropped: it is far behind, i.e. stuck.
-constexpr size_t kMaxOutboxBytes = size_t{1} << 28;
-double Seconds(Clock::duration duration) { return std::chrono::duration<double>(duration).count(); }
-
-// The start frame: what the process hosts, and how.
-std::string StartFrame(const std::string& spec_json, const std::vector<int>& robot_ids, int64_t agent_id,
-                       const PythonHostProcess::Limits& limits, bool check_only) {
-  nlohmann::json start;
-  start["spec"] = spec_json;
-  start["robots"] = robot_ids;
-  start["agent_id"] = agent_id;
-  start["agent_timeout_s"] = limits.agent_timeout_s;
-  start["start_timeout_s"] = limits.start_timeout_s;
-  start["idle_timeout_s"] = limits.idle_timeout_s;
-  start["check_only"] = check_only;
-  start["log_level"] = static_cast<int>(spdlog::get_level());
-  return start.dump();
-}
-
-PythonHostProcess::Limits WithDefaults(PythonHostProcess::Limits limits) {
-  const config::SimNodeOptions defaults;
-  if (!(limits.agent_timeout_s > 0)) limits.agent_timeout_s = defaults.agent_timeout_s;
-  if (!(limits.start_timeout_s > 0)) limits.start_timeout_s = defaults.start_timeout_s;
-  return limits;
-}
-
-// What the call in the cell was: loading the module (robot -1), a robot's
-// setup() (step < 0) or its step's call.
-std::string CallTextOf(int64_t robot, int64_t step) {
-  if (robot < 0) return "loading the controller's module";
-  return "robot " + std::to_string(robot) + "'s " +
-         (step < 0 ? std::string("setup()") : "call at step " + std::to_string(step));
-}
-
-std::string StuckTextOf(int64_t token, int64_t robot, int64_t step, const PythonHostProcess::Limits& limits) {
-  const double limit_s = token > 0 ? limits.agent_timeout_s : limits.start_timeout_s;
-  char text[400];
-  std::snprintf(text, sizeof text,
-                "%s did not return within %g s (%g x the world's %s of %g s), nor stop when dream's watchdog "
-                "raised ControllerTimeout in it (a call blocked outside Python, in time.sleep, a blocking read or "
-                "C code, cannot): its Python process was killed",
-                CallTextOf(robot, token > 0 ? step : -1).c_str(), PythonHostProcess::kKillFraction * limit_s,
-                PythonHostProcess::kKillFraction, token > 0 ? "agent_timeout_s" : "start_timeout_s", limit_s);
-  return text;
-}
-
-std::string ModulePathOf(const std::string& spec_json) {
-  try {
-    const nlohmann::json spec = nlohmann::json::parse(spec_json);
-    return spec.value("module", std::string());
-  } catch (const std::exception&) {
-    return "";
-  }
-}
-
-std::string JoinIds(const std::vector<int>& ids) {
-  std::string text;
-  for (int id : ids) text += (text.empty() ? "" : ", ") + std::to_string(id);
-  return text;
-}
+using namespace host_texts;  // NOLINT: this file's helpers, kept in host_texts.h for the file's size
 
 }  // namespace
 
@@ -137,7 +79,7 @@ void PythonHostProcess::Check(const std::string& spec_json, double start_timeout
       const int64_t robot = spawned.cell[1].load();
       RequestTrace(spawned.pid, spawned.trace_fd, &trace);
       KillAndReap(spawned.pid);
-      why = StuckTextOf(-1, robot, -1, limits);
+      why = StuckTextOf(-1, robot, -1, limits, false, false);
     } else {
       continue;
     }
@@ -154,7 +96,8 @@ PythonHostProcess::PythonHostProcess(lcm::LcmBus& bus, const std::string& spec_j
       robot_ids_(robot_ids),
       agent_id_(agent_id),
       limits_(WithDefaults(limits)),
-      module_path_(ModulePathOf(spec_json)) {
+      module_path_(ModulePathOf(spec_json)),
+      busy_(robot_ids, limits_.agent_timeout_s) {
   started_ = Clock::now();
   const SpawnedPythonHost spawned = SpawnedPythonHost::Start();
   pid_ = spawned.pid;
@@ -207,6 +150,7 @@ void PythonHostProcess::OnBusMessage(const std::string& channel, const void* dat
     if (channel == lcm::kPosesChannel) {
       if (const auto header = lcm::MessageHeader::Read(data, static_cast<size_t>(size))) {
         world_step_ = {header->utime, header->step, header->run_id};
+        busy_.StepArrived(header->run_id, header->step, Clock::now());
       }
     }
     if (outbox_.size() > kMaxOutboxBytes) return;
@@ -287,6 +231,33 @@ void PythonHostProcess::RelayLoop() {
       EndProcess(stuck, "", true);
       return;
     }
+    SayBusy(Clock::now());
+  }
+}
+
+void PythonHostProcess::SayBusy(Clock::time_point now) {
+  std::vector<int> due;
+  Step at;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (ended_) return;  // before ready_ too: loading and setup() hold the world's start
+    due = busy_.Due(now);
+    at = world_step_;
+  }
+  if (due.empty() || at.run_id == 0) return;
+  const int64_t token = cell_[0].load();
+  robot_busy_t busy{};
+  busy.utime = at.utime;
+  busy.step = at.step;
+  busy.run_id = at.run_id;
+  busy.agent_id = agent_id_;
+  busy.call_robot_id = token > 0 ? static_cast<int32_t>(cell_[1].load()) : -1;
+  busy.call_s = token > 0 && token == watched_token_ ? Seconds(now - watched_since_) : 0.0;
+  for (int id : due) {
+    busy.robot_id = id;
+    std::string bytes(static_cast<size_t>(busy.getEncodedSize()), '\0');
+    busy.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+    bus_.Publish(lcm::BusyChannel(id), bytes.data(), static_cast<int>(bytes.size()));
   }
 }
 
@@ -313,8 +284,10 @@ bool PythonHostProcess::Take(const RelayLink::Frame& frame) {
       const std::optional<lcm::MessageHeader> header = lcm::MessageHeader::Read(frame.data.data(), frame.data.size());
       if (own->kind == lcm::AgentChannel::Kind::kCommand && header) {
         answered_step_ = {header->utime, header->step, header->run_id};
+        busy_.Answered(own->robot_id, header->step);
       } else if (own->kind == lcm::AgentChannel::Kind::kFault) {
         failed_.insert(own->robot_id);
+        busy_.Failed(own->robot_id);
       }
       return !ended_;
     }
@@ -366,11 +339,23 @@ std::string PythonHostProcess::StuckCall(Clock::time_point now) {
     watched_since_ = now;
     return "";
   }
-  // A step's call from its start; loading and setup() from the process's, as
-  // the world counts its start_timeout_s from before they begin.
+  // The process's watchdog raises in the call first (at 0.8 of the limit,
+  // on its own clock): the kill waits for that to have had its chance, so
+  // which of the two ends a call does not depend on which clock a starved
+  // machine runs first (the world waits meanwhile: BusyAnnouncer).
   const double limit_s = token > 0 ? limits_.agent_timeout_s : limits_.start_timeout_s;
-  if (Seconds(now - (token > 0 ? watched_since_ : started_)) <= kKillFraction * limit_s) return "";
-  return StuckTextOf(token, cell_[1].load(), cell_[2].load(), limits_);
+  const bool raised = cell_[python_embedded::kCallCellRaised].load() == token;
+  if (raised && raised_token_ != token) {
+    raised_token_ = token;
+    raised_seen_ = now;
+  }
+  // Loading and setup() from the process's start, as the world counts its
+  // start_timeout_s from before they begin.
+  const bool overdue = raised
+                           ? Seconds(now - raised_seen_) > kKillAfterRaiseFraction * limit_s
+                           : Seconds(now - (token > 0 ? watched_since_ : started_)) > kKillUnraisedFraction * limit_s;
+  if (!overdue) return "";
+  return StuckTextOf(token, cell_[1].load(), cell_[2].load(), limits_, true, raised);
 }
 
 void PythonHostProcess::EndProcess(const std::string& why, const std::string& exit_text, bool trace) {

@@ -23,7 +23,7 @@ bool IsDreamDataChannel(const std::string& channel) {
     if (channel == name) return true;
   }
   for (const char* prefix : {lcm::kCommandChannelPrefix, lcm::kRadioChannelPrefix, lcm::kFaultChannelPrefix,
-                             lcm::kLabCommandChannelPrefix}) {
+                             lcm::kBusyChannelPrefix, lcm::kLabCommandChannelPrefix}) {
     if (channel.rfind(prefix, 0) == 0) return true;
   }
   return false;

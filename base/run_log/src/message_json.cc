@@ -10,6 +10,7 @@
 #include "dream/drawing_t.hpp"
 #include "dream/lcm/wire_text.h"
 #include "dream/radio_message_t.hpp"
+#include "dream/robot_busy_t.hpp"
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
@@ -92,6 +93,12 @@ nlohmann::ordered_json ToJson(const radio_message_t& m) {
                               {"payload", Hex(m.payload)}});
 }
 
+nlohmann::ordered_json ToJson(const robot_busy_t& m) {
+  return WithMessageStart(
+      m,
+      {{"robot_id", m.robot_id}, {"agent_id", m.agent_id}, {"call_robot_id", m.call_robot_id}, {"call_s", m.call_s}});
+}
+
 nlohmann::ordered_json ToJson(const robot_fault_t& m) {
   return WithMessageStart(m, {{"robot_id", m.robot_id}, {"agent_id", m.agent_id}, {"detail", m.detail}});
 }
@@ -159,6 +166,7 @@ MessageJson::MessageJson(const std::vector<uint8_t>& data) {
   attempt(velocity_command_t{});
   attempt(radio_message_t{});
   attempt(robot_fault_t{});
+  attempt(robot_busy_t{});
   attempt(applied_commands_t{});
   attempt(run_verdict_t{});
   attempt(drawing_t{});

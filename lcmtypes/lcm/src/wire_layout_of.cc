@@ -5,6 +5,7 @@
 #include "dream/lcm/message_limits.h"
 #include "dream/obstacles_t.hpp"
 #include "dream/radio_message_t.hpp"
+#include "dream/robot_busy_t.hpp"
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
@@ -79,6 +80,15 @@ const WireLayout& WireLayoutOf<radio_message_t>() {
                                        .AgentId()
                                        .Count(MessageLimits::kRadioPayloadBytes)
                                        .Array(kInt8);
+  return layout;
+}
+
+template <>
+const WireLayout& WireLayoutOf<robot_busy_t>() {
+  static const WireLayout layout = MessageStart<robot_busy_t>()
+                                       .Fixed(kInt32)             // robot_id
+                                       .AgentId()                 //
+                                       .Fixed(kInt32 + kDouble);  // call_robot_id, call_s
   return layout;
 }
 

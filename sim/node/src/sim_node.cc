@@ -15,6 +15,8 @@
 #include "dream/lcm/message_limits.h"
 #include "dream/lcm/run_id.h"
 #include "dream/lcm/wire_text.h"
+#include "decode_or_report.h"
+#include "dream/robot_busy_t.hpp"
 #include "dream/node/world_messages.h"
 #include "dream/obstacles_t.hpp"
 #include "dream/radio_message_t.hpp"
@@ -40,20 +42,6 @@ double SecondsBetween(std::chrono::steady_clock::time_point from, std::chrono::s
   return std::chrono::duration<double>(to - from).count();
 }
 
-// Decodes a message heard on `channel`, or reports why it does not decode
-// (as lcm::Subscribe does) and returns false.
-template <typename Message>
-bool DecodeOrReport(lcm::BadMessageLog& bad_messages, const std::string& channel, const void* data, int size,
-                    Message* message) {
-  if (std::optional<std::string> problem = lcm::DecodeProblem(data, size, message)) {
-    bad_messages.Report(
-        channel, "cannot decode " + std::to_string(size) + " bytes as " + Message::getTypeName() + ": " + *problem,
-        lcm::WireLayoutOf<Message>().AgentIdOf(data, size));
-    return false;
-  }
-  return true;
-}
-
 std::string JoinIds(const std::vector<int>& ids) {
   std::string text;
   for (int id : ids) text += (text.empty() ? "" : ", ") + std::to_string(id);
@@ -72,6 +60,8 @@ SimNode::SimNode(lcm::LcmInterface& lcm, world::World& world, RunRecorder* recor
       run_id_(lcm::NewRunId()),
       commands_(world, options_, run_id_, robots_, bad_messages_, clock_,
                 [this](int64_t run_id, const std::string& seen_on) { NoteOtherWorld(run_id, seen_on); }),
+      busy_(world, options_, run_id_, robots_, bad_messages_, clock_,
+            [this](int64_t run_id, const std::string& seen_on) { NoteOtherWorld(run_id, seen_on); }),
       radio_(world, run_id_, bad_messages_),
       drawings_(world, run_id_, bad_messages_) {
   std::string error;
@@ -123,6 +113,11 @@ Heard SimNode::Hear(const std::string& channel, const void* data, int size) {
     if (!DecodeOrReport(bad_messages_, channel, data, size, &fault)) return Heard::kRefused;
     return OnFault(channel, fault);
   }
+  if (channel.rfind(lcm::kBusyChannelPrefix, 0) == 0) {
+    robot_busy_t busy;
+    if (!DecodeOrReport(bad_messages_, channel, data, size, &busy)) return Heard::kRefused;
+    return busy_.Take(channel, busy);
+  }
   if (channel.rfind(lcm::kRadioChannelPrefix, 0) == 0) {
     radio_message_t radio;
     if (!DecodeOrReport(bad_messages_, channel, data, size, &radio)) return Heard::kRefused;
@@ -133,7 +128,7 @@ Heard SimNode::Hear(const std::string& channel, const void* data, int size) {
   // sent: one heard is forged; any other name is not part of a run.
   bad_messages_.Report(
       channel,
-      "not a channel agents send on (DREAM_CMD_<id>, DREAM_RADIO_<id>, DREAM_FAULT_<id>, DREAM_DRAW_<id>): "
+      "not a channel agents send on (DREAM_CMD_<id>, DREAM_RADIO_<id>, DREAM_FAULT_<id>, DREAM_DRAW_<id>, DREAM_BUSY_<id>): "
       "refused, kept out of the run log");
   return Heard::kRefused;
 }
@@ -273,6 +268,16 @@ void SimNode::PublishStep(bool record) {
   PublishAndRecord(lcm::kPosesChannel, poses, record);
 }
 
+bool SimNode::StartHeld(Clock::time_point now) {
+  DrainArrived();  // what has arrived counts before the start is given up
+  return AllLiveAnswered() || busy_.HoldsStart(now, step_published_);
+}
+
+void SimNode::DrainArrived() {
+  for (int handled = 0; handled < 10000 && lcm_.HandleSubscriptions(0) > 0; ++handled) {
+  }
+}
+
 bool SimNode::AllRobotsLost() const {
   for (const RobotSlot& robot : robots_) {
     if (!robot.lost) return false;
@@ -292,7 +297,7 @@ void SimNode::MarkSilentRobotsLost(Clock::time_point now) {
   for (size_t i = 0; i < robots_.size(); ++i) {
     RobotSlot& robot = robots_[i];
     const bool silent = options_.mode == config::WorldMode::kLockstep
-                            ? !Answered(robot)
+                            ? !Answered(robot) && !busy_.Holds(robot, now, step_published_)
                             : SecondsBetween(robot.last_heard, now) > options_.agent_timeout_s;
     if (silent && !robot.lost) {
       robot.lost = true;
@@ -305,7 +310,7 @@ void SimNode::MarkSilentRobotsLost(Clock::time_point now) {
     spdlog::warn(
         "step {}: no command for {:.1f} s from robot(s) {}: marked lost, their robots stop; "
         "they rejoin when their agent speaks again",
-        world_.step(), options_.agent_timeout_s, JoinIds(newly_lost));
+        world_.step(), SecondsBetween(step_published_, now), JoinIds(newly_lost));
   }
 }
 
@@ -390,7 +395,7 @@ std::optional<RunOutcome> SimNode::StartWhenAllAnswered(Clock::time_point now, C
     *next_realtime_step = now;
     if (progress_ != nullptr) progress_->Start(options_.max_steps, world_.step(), now);
     // Agents answered step 0; in real time their answer is the latest command.
-  } else if (SecondsBetween(step_published_, now) > options_.start_timeout_s) {
+  } else if (SecondsBetween(step_published_, now) > options_.start_timeout_s && !StartHeld(now)) {
     std::vector<int> missing;
     for (size_t i = 0; i < robots_.size(); ++i) {
       if (!Answered(robots_[i])) missing.push_back(static_cast<int>(i));
@@ -408,6 +413,7 @@ std::optional<RunOutcome> SimNode::StartWhenAllAnswered(Clock::time_point now, C
 bool SimNode::ReadyForNextStep(Clock::time_point now, Clock::time_point next_realtime_step) {
   if (options_.mode == config::WorldMode::kLockstep) {
     if (!AllLiveAnswered() && SecondsBetween(step_published_, now) > options_.agent_timeout_s) {
+      DrainArrived();  // what has arrived counts before a robot is called silent
       MarkSilentRobotsLost(now);
     }
     return AllLiveAnswered() && (options_.pace <= 0.0 || now >= next_realtime_step);
@@ -437,12 +443,8 @@ std::optional<RunOutcome> SimNode::TakeStep() {
   // With every robot lost nothing holds a lockstep world back, but what
   // has arrived is still read each step (the in-process agents' answers
   // to this step included): late faults are recorded, and an agent that
-  // speaks again rejoins (it would never be heard otherwise). Bounded,
-  // so a flood cannot hold the world.
-  if (options_.mode == config::WorldMode::kLockstep && AllRobotsLost()) {
-    for (int handled = 0; handled < 10000 && lcm_.HandleSubscriptions(0) > 0; ++handled) {
-    }
-  }
+  // speaks again rejoins (it would never be heard otherwise).
+  if (options_.mode == config::WorldMode::kLockstep && AllRobotsLost()) DrainArrived();
   return std::nullopt;
 }
 

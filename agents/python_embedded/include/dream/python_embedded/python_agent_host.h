@@ -59,8 +59,12 @@ class PythonAgentHost {
 /// `cell`: where the Python side marks each controller call, kCallCellWords
 /// int64 (a token unique to the call, > 0 for a step, < 0 for loading and
 /// setup(), 0 between calls; the robot id; the step), so that a process
-/// sharing the memory can time the call too; nullptr: the module's own.
-inline constexpr int kCallCellWords = 3;
+/// sharing the memory can time the call too; then the token of the latest
+/// call the watchdog raised ControllerTimeout in (word kCallCellRaised, the
+/// watchdog's), so that process kills only after the raise had its chance;
+/// nullptr: the module's own.
+inline constexpr int kCallCellWords = 4;
+inline constexpr int kCallCellRaised = 3;
 using PythonHostWatchFunction = void (*)(const std::atomic<bool>* stop, double agent_timeout_s, double start_timeout_s,
                                          std::atomic<int64_t>* cell);
 inline constexpr const char* kPythonHostWatchSymbol = "dream_python_host_watch";

@@ -14,6 +14,7 @@
 
 #include "dream/lcm/lcm_bus.h"
 #include "dream/python_embedded/python_agent_host.h"
+#include "dream/python_host/busy_announcer.h"
 #include "dream/python_host/relay_link.h"
 
 namespace dream::python_host {
@@ -26,15 +27,19 @@ namespace dream::python_host {
 /// Python's faulthandler, which it sets up). A call stuck outside Python (a
 /// long time.sleep, a blocking read, C code), which the process's own
 /// watchdog cannot stop, is timed here through the call cell the two share:
-/// past kKillFraction of the world's agent_timeout_s (loading and setup(): of
-/// its start_timeout_s) the process group is killed and its robots are lost,
-/// the stuck one with the line it was stuck on. Its signal handlers are its
+/// kKillAfterRaiseFraction of the world's agent_timeout_s (loading and
+/// setup(): of its start_timeout_s) after the watchdog raised in it, or at
+/// kKillUnraisedFraction when it never could, the process group is killed
+/// and its robots are lost, the stuck one with the line it was stuck on. Its signal handlers are its
 /// own, and whatever it forks belongs to its group: the group is killed
 /// (SIGKILL after kGraceS) when this object goes, so no process outlives it.
 ///
 /// The relay forwards the world's DREAM_POSES, DREAM_OBSTACLES and
 /// DREAM_STATUS and the other agents' DREAM_RADIO_<id> to the process, and
 /// its DREAM_CMD_<id>, DREAM_RADIO_<id> and DREAM_FAULT_<id> back, in order.
+/// While a long call holds its robots' answers up, it says so on
+/// DREAM_BUSY_<id> (BusyAnnouncer), so the world waits for this object's
+/// verdict on the call instead of racing it.
 class PythonHostProcess final : public python_embedded::PythonAgentHost {
  public:
   struct Limits {
@@ -45,10 +50,17 @@ class PythonHostProcess final : public python_embedded::PythonAgentHost {
     /// it ends when this object goes).
     double idle_timeout_s = 0.0;
   };
-  /// A call is ended at this fraction of its limit: after the process's own
-  /// watchdog (0.8, which stops a call running Python code with the line it
-  /// was on), before the world gives up on the robot as silent (1.0).
+  /// In the check before a run (no world to wait), a call is ended at this
+  /// fraction of its limit: after the process's own watchdog (0.8, which
+  /// stops a call running Python code with the line it was on).
   static constexpr double kKillFraction = 0.9;
+  /// In a run, a call still running this fraction of its limit after the
+  /// watchdog raised ControllerTimeout in it (the cell says so) is ended: the
+  /// raise had its chance, and the world waits meanwhile (DREAM_BUSY_<id>).
+  static constexpr double kKillAfterRaiseFraction = 0.5;
+  /// A call the watchdog never raised in (its thread starved, or blocked) is
+  /// ended at this fraction of its limit (the world holds at most 10).
+  static constexpr double kKillUnraisedFraction = 3.0;
   /// How long the process gets to end by itself before SIGKILL.
   static constexpr double kGraceS = 1.0;
 
@@ -89,6 +101,8 @@ class PythonHostProcess final : public python_embedded::PythonAgentHost {
   void HandleFrame(const RelayLink::Frame& frame);
   /// Notes what `frame` says (with mutex_); true when it is to be published.
   bool Take(const RelayLink::Frame& frame);
+  /// Tells the world which robots' answers a long call holds up (BusyAnnouncer).
+  void SayBusy(Clock::time_point now);
   /// The stuck call's description when the call in the cell ran too long.
   std::string StuckCall(Clock::time_point now);
   /// Ends the process group (SIGUSR1 first when `trace`, for the line), reaps
@@ -124,11 +138,14 @@ class PythonHostProcess final : public python_embedded::PythonAgentHost {
   std::string report_json_ = "{}";
   std::string error_;
   std::set<int> failed_;  // robots whose fault the process sent
+  BusyAnnouncer busy_;    // which robots' answers to the step are held up
   Step world_step_;       // the latest DREAM_POSES forwarded
   Step answered_step_;    // the step of the process's latest answer (its run)
   std::string trace_;     // faulthandler's output so far
   int64_t watched_token_ = 0;
   Clock::time_point watched_since_;
+  int64_t raised_token_ = 0;       // the latest call the watchdog was seen to raise in
+  Clock::time_point raised_seen_;  // when that was first seen
 };
 
 }  // namespace dream::python_host

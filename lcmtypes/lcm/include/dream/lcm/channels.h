@@ -48,6 +48,10 @@ inline constexpr const char* kFaultChannelRegex = "DREAM_FAULT_.*";
 /// Prefix of DREAM_DRAW_<id>: what a robot's controller drew (drawing_t);
 /// agent -> world (recorded) and viewers, when the drawing changed.
 inline constexpr const char* kDrawChannelPrefix = "DREAM_DRAW_";
+/// Prefix of DREAM_BUSY_<id>: an agent host says a robot's answer to the step
+/// is held up by a long controller call that its watchdog will end
+/// (robot_busy_t); agent -> world, repeated while it holds.
+inline constexpr const char* kBusyChannelPrefix = "DREAM_BUSY_";
 
 /// Prefix of DREAM_LAB_CMD_<id> (velocity_command_t): in a `dream lab-replay`
 /// log, the command the lab executed at that step, beside the agent's; never published.
@@ -75,6 +79,8 @@ inline std::string FaultChannel(int robot_id) { return kFaultChannelPrefix + std
 
 /// "DREAM_DRAW_<robot_id>".
 inline std::string DrawChannel(int robot_id) { return kDrawChannelPrefix + std::to_string(robot_id); }
+/// "DREAM_BUSY_<robot_id>".
+inline std::string BusyChannel(int robot_id) { return kBusyChannelPrefix + std::to_string(robot_id); }
 
 /// "DREAM_LAB_CMD_<robot_id>".
 inline std::string LabCommandChannel(int robot_id) { return kLabCommandChannelPrefix + std::to_string(robot_id); }

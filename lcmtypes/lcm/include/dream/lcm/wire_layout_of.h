@@ -7,6 +7,7 @@ class applied_commands_t;
 class drawing_t;
 class obstacles_t;
 class radio_message_t;
+class robot_busy_t;
 class robot_fault_t;
 class robot_poses_t;
 class run_status_t;
@@ -30,6 +31,8 @@ template <>
 const WireLayout& WireLayoutOf<obstacles_t>();
 template <>
 const WireLayout& WireLayoutOf<radio_message_t>();
+template <>
+const WireLayout& WireLayoutOf<robot_busy_t>();
 template <>
 const WireLayout& WireLayoutOf<robot_fault_t>();
 template <>

@@ -18,6 +18,8 @@ struct RobotSlot {
   double received_v = 0.0;    // the held command as sent (v/w are zeroed when it was absurd)
   double received_w = 0.0;
   std::chrono::steady_clock::time_point last_heard;
+  int64_t busy_step = -1;  // the step its agent host last said its answer is held up at (DREAM_BUSY_<id>); -1: none
+  std::chrono::steady_clock::time_point busy_heard;  // when that was last said
 };
 
 }  // namespace dream::node

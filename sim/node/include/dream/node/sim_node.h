@@ -13,6 +13,7 @@
 #include "dream/applied_commands_t.hpp"
 #include "dream/lcm/bad_message_log.h"
 #include "dream/lcm/lcm_interface.h"
+#include "dream/node/busy_intake.h"
 #include "dream/node/command_intake.h"
 #include "dream/node/heard.h"
 #include "dream/node/node_clock.h"
@@ -46,7 +47,8 @@ class RunRecorder;
 /// Writes DREAM_OBSTACLES, DREAM_STATUS and then DREAM_POSES (the trigger
 /// agents answer) for every step; reads DREAM_CMD_<id>. Records its own
 /// messages once, as published, and what the run used of what it heard
-/// (commands, radio and faults of this run's robots that pass the checks), all
+/// (commands, radio, faults and busy notes of this run's robots that pass the
+/// checks; BusyIntake says how a busy note holds off a silent robot), all
 /// with the simulated time of the current step. Everything else it hears is
 /// refused and counted (bad_messages), never recorded in the run's log: an
 /// undecodable or refused command, radio or fault, any other channel (a forged
@@ -113,6 +115,11 @@ class SimNode {
   void NoteOtherWorld(int64_t run_id, const std::string& seen_on);
   /// Lockstep: the robot has a command for the step the world is at.
   bool Answered(const RobotSlot& robot) const { return robot.command_step == world_.step(); }
+  /// Handles what has arrived on the bus (bounded, so a flood cannot hold the world).
+  void DrainArrived();
+  /// Past start_timeout_s: true when what arrived answers the start after
+  /// all, or a host still setting robots up holds it (BusyIntake::HoldsStart).
+  bool StartHeld(Clock::time_point now);
   /// Records which commands are applied at this step (DREAM_APPLIED).
   void RecordApplied();
   /// Writes one event to the recorder, if any; a write failure is remembered
@@ -160,6 +167,7 @@ class SimNode {
   int64_t run_id_;
   NodeClock clock_;  // before commands_, which reads it
   CommandIntake commands_;
+  BusyIntake busy_;
   RadioIntake radio_;
   DrawingIntake drawings_;
   std::set<int64_t> other_worlds_;
