@@ -69,6 +69,8 @@ TEST(ScriptRunWorkflowTest, TheConfigStartsEveryRobotExactlyWhereTheScriptSaid) 
   // Any finite command, as the official simulator takes it: by the config key, not a magic number.
   EXPECT_EQ(config["world"]["command_limits"].as<std::string>(), "official");
   EXPECT_FALSE(config["world"]["max_abs_v_mps"].IsDefined());
+  // The script ends the run: a world key of the config, not a flag set behind it.
+  EXPECT_TRUE(config["world"]["script_ends_run"].as<bool>());
   EXPECT_EQ(config["controller"]["module"].as<std::string>(),
             "/opt/dream/python-runtime/rps_dream/robotarium_script.py");
   for (size_t i = 0; i < 2; ++i) {
@@ -130,6 +132,21 @@ TEST(ScriptRunWorkflowTest, AConfigNamingTheScriptKeepsItsKeysAndTakesTheHellosR
   EXPECT_EQ(config["initial_poses"][0][1].as<double>(), -1.0 / 3.0);
   EXPECT_EQ(config["initial_poses"][1][2].as<double>(), -2.0);
   EXPECT_EQ(config["world"]["command_limits"].as<std::string>(), "official");  // the base config's keys kept
+  EXPECT_TRUE(config["world"]["script_ends_run"].as<bool>());
+}
+
+// A config naming its script written before world.script_ends_run: its rerun gets the key.
+TEST(ScriptRunWorkflowTest, AnOlderConfigNamingTheScriptGetsScriptEndsRun) {
+  ScriptRunWorkflow::Options options;
+  options.script_path = "/s/go.py";
+  const TempFile base("older",
+                      "name: go\nscript: /s/go.py\nrobots: 1\ninitial_poses: [[0, 0, 0]]\n"
+                      "controller: {kind: python, module: m.py, class: C}\n");
+  ScriptRunWorkflow::Hello hello;
+  hello.robots = 1;
+  hello.initial_poses = {{0.5, 0.25, -2.0}};
+  const YAML::Node config = YAML::Load(ScriptRunWorkflow::WithHello(base.path(), hello, options));
+  EXPECT_TRUE(config["world"]["script_ends_run"].as<bool>());
 }
 
 TEST(ScriptRunWorkflowTest, TheRunIsNamedAfterTheScript) {

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "dream/config/config_error.h"
 #include "dream/config/config_node.h"
 #include "dream/config_overrides/config_override.h"
 #include "dream/config_overrides/config_text.h"
@@ -121,6 +122,8 @@ std::string ScriptRunWorkflow::ConfigText(const Hello& hello, const Options& opt
        << "world:\n  mode: lockstep\n  agent_timeout_s: 60.0\n  start_timeout_s: 120.0\n"
        << "  # the official simulator takes any finite command (and saturates the wheels): so does this run\n"
        << "  command_limits: official\n"
+       << "  # the run's steps are the script's step() calls; the script's end (or its error) ends the run\n"
+       << "  script_ends_run: true\n"
        << "initial_poses:\n";
   for (const auto& pose : hello.initial_poses) {
     yaml << "  - [" << Exact(pose[0]) << ", " << Exact(pose[1]) << ", " << Exact(pose[2]) << "]\n";
@@ -151,6 +154,10 @@ std::string ScriptRunWorkflow::WithHello(const std::string& base_path, const Hel
   config_overrides::ApplyConfigOverride(root, "initial_poses", poses + "]", base_path);
   config_overrides::ApplyConfigOverride(root, "seed", std::to_string(options.seed), base_path);
   if (options.steps > 0) config_overrides::ApplyConfigOverride(root, "steps", std::to_string(options.steps), base_path);
+  // A config written before the key: the script's run ends with its script (Run refuses false).
+  if (!root["world"] || !root["world"]["script_ends_run"]) {
+    config_overrides::ApplyConfigOverride(root, "world.script_ends_run", "true", base_path);
+  }
   return config_overrides::ConfigText(root, "The run of a Robotarium script from " + base_path +
                                                 ": robots and initial_poses as its\nRobotarium(...) said (" +
                                                 std::to_string(hello.startup_steps) +
@@ -167,7 +174,12 @@ session::RunResult ScriptRunWorkflow::Run(const Hello& hello, const std::string&
                                               : WithHello(options_.base_config_path, hello, options_));
   const config_overrides::OverriddenConfig overridden(config_path, -1, options_.sets);
   run_config::RunConfig config = overridden.LoadWith(&run_config::LoadRunConfig);
-  config.sim.script_ends_run = true;  // the run's steps are the script's step() calls; its error ends the run
+  if (!config.sim.script_ends_run) {
+    throw config::ConfigError(
+        config_path +
+        ": world.script_ends_run: false, but a script's run ends with its script (the run's steps "
+        "are its step() calls): leave it true");
+  }
   // As any run: paced only when asked (--pace), or watched (--view: real time unless --pace says otherwise).
   if (watch.pace >= 0.0) {
     config.sim.pace = watch.pace;
