@@ -73,6 +73,9 @@ TEST(ScriptRunWorkflowTest, TheConfigStartsEveryRobotExactlyWhereTheScriptSaid) 
   EXPECT_TRUE(config["world"]["script_ends_run"].as<bool>());
   EXPECT_EQ(config["controller"]["module"].as<std::string>(),
             "/opt/dream/python-runtime/rps_dream/robotarium_script.py");
+  EXPECT_FALSE(config["controller"]["goal_record"].IsDefined());
+  const YAML::Node recorded = YAML::Load(ScriptRunWorkflow::ConfigText(hello, options, "/runs/my script/g.json"));
+  EXPECT_EQ(recorded["controller"]["goal_record"].as<std::string>(), "/runs/my script/g.json");
   for (size_t i = 0; i < 2; ++i) {
     for (size_t k = 0; k < 3; ++k) {
       EXPECT_EQ(config["initial_poses"][i][k].as<double>(), hello.initial_poses[i][k]) << i << "," << k;
@@ -133,6 +136,9 @@ TEST(ScriptRunWorkflowTest, AConfigNamingTheScriptKeepsItsKeysAndTakesTheHellosR
   EXPECT_EQ(config["initial_poses"][1][2].as<double>(), -2.0);
   EXPECT_EQ(config["world"]["command_limits"].as<std::string>(), "official");  // the base config's keys kept
   EXPECT_TRUE(config["world"]["script_ends_run"].as<bool>());
+  // Each run's goal record is in its own folder (docs/robotarium-scripts.md#the-goal).
+  const YAML::Node rerun = YAML::Load(ScriptRunWorkflow::WithHello(base.path(), hello, options, "/runs/b/g.json"));
+  EXPECT_EQ(rerun["controller"]["goal_record"].as<std::string>(), "/runs/b/g.json");
 }
 
 // A config naming its script written before world.script_ends_run: its rerun gets the key.

@@ -105,7 +105,7 @@ ScriptRunWorkflow::Hello ScriptRunWorkflow::ParseHello(const std::string& line) 
   return result;
 }
 
-std::string ScriptRunWorkflow::ConfigText(const Hello& hello, const Options& options) {
+std::string ScriptRunWorkflow::ConfigText(const Hello& hello, const Options& options, const std::string& goal_record) {
   const fs::path script = fs::absolute(options.script_path).lexically_normal();
   const fs::path placeholder = fs::path(options.python_runtime_dir) / "rps_dream" / "robotarium_script.py";
   std::ostringstream yaml;
@@ -130,6 +130,11 @@ std::string ScriptRunWorkflow::ConfigText(const Hello& hello, const Options& opt
   }
   yaml << "controller:\n  kind: python\n  module: " << nlohmann::json(placeholder.string()).dump()
        << "\n  class: RobotariumScript\n";
+  if (!goal_record.empty()) {
+    yaml
+        << "  # where the script's last at_pose/at_position check is written: the run's goal unless goal_points/poses\n"
+        << "  goal_record: " << nlohmann::json(goal_record).dump() << "\n";
+  }
   return yaml.str();
 }
 
@@ -144,7 +149,8 @@ std::string ScriptRunWorkflow::BaseConfigText(const std::string& script_path, co
          ConfigText(placeholder, options);
 }
 
-std::string ScriptRunWorkflow::WithHello(const std::string& base_path, const Hello& hello, const Options& options) {
+std::string ScriptRunWorkflow::WithHello(const std::string& base_path, const Hello& hello, const Options& options,
+                                         const std::string& goal_record) {
   YAML::Node root = config::ConfigNode::ParseYaml(config::ConfigNode::ReadFile(base_path), base_path);
   std::string poses = "[";
   for (const auto& pose : hello.initial_poses) {
@@ -154,6 +160,10 @@ std::string ScriptRunWorkflow::WithHello(const std::string& base_path, const Hel
   config_overrides::ApplyConfigOverride(root, "initial_poses", poses + "]", base_path);
   config_overrides::ApplyConfigOverride(root, "seed", std::to_string(options.seed), base_path);
   if (options.steps > 0) config_overrides::ApplyConfigOverride(root, "steps", std::to_string(options.steps), base_path);
+  if (!goal_record.empty()) {
+    config_overrides::ApplyConfigOverride(root, "controller.goal_record", nlohmann::json(goal_record).dump(),
+                                          base_path);
+  }
   // A config written before the key: the script's run ends with its script (Run refuses false).
   if (!root["world"] || !root["world"]["script_ends_run"]) {
     config_overrides::ApplyConfigOverride(root, "world.script_ends_run", "true", base_path);
@@ -169,9 +179,12 @@ session::RunResult ScriptRunWorkflow::Run(const Hello& hello, const std::string&
   const RunOptions& watch = options_.watch;
   const RunView::Keep keep = RunView::Keep::Parse(watch.view_keep);  // a bad value before anything runs
   const std::string config_path = (fs::path(run_dir) / "robotarium_script.yaml").string();
-  files::WriteFileAtomically(config_path, options_.base_config_path.empty()
-                                              ? ConfigText(hello, options_)
-                                              : WithHello(options_.base_config_path, hello, options_));
+  // DREAM's rps removed an earlier run's record from the folder before its hello: the record is this run's.
+  const fs::path goal_record = fs::path(run_dir) / kGoalRecordName;
+  files::WriteFileAtomically(config_path,
+                             options_.base_config_path.empty()
+                                 ? ConfigText(hello, options_, goal_record.string())
+                                 : WithHello(options_.base_config_path, hello, options_, goal_record.string()));
   const config_overrides::OverriddenConfig overridden(config_path, -1, options_.sets);
   run_config::RunConfig config = overridden.LoadWith(&run_config::LoadRunConfig);
   if (!config.sim.script_ends_run) {
@@ -187,6 +200,11 @@ session::RunResult ScriptRunWorkflow::Run(const Hello& hello, const std::string&
     config.sim.pace = 1.0;
   }
   session::RunSession session(std::move(config), options_.session);
+  try {
+    session.CheckAgents();  // the controller's keys (the goal's: controller.goal_points, ...) before the run
+  } catch (const config::ConfigError& e) {
+    throw config::ConfigError(overridden.Noted(e.what()));
+  }
   const std::string text = run_config::RunFolderConfigText(session.config(), overridden.Text());
   static const std::atomic<bool> never{false};
   const std::atomic<bool>& stop = options_.interrupted != nullptr ? *options_.interrupted : never;
