@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -184,6 +185,23 @@ TEST(ImportWorkflowTest, AFolderWithoutAResultIsRefusedByName) {
     EXPECT_THAT(e.what(), HasSubstr(dir + ": holds neither dream_result.npy nor dream_result.mat"));
   }
   EXPECT_EQ(ImportWorkflow::ResultFile(dir + "/x.npy"), dir + "/x.npy");
+}
+
+// dream export SCRIPT.py uploads the script as it is: it saves no dream_result.npy, so its export
+// folder is refused by what it is, not as "not written by dream export".
+TEST(ImportWorkflowTest, AScriptsExportIsRefusedSayingWhy) {
+  const std::string dir = bridge::testing::NewFolder("workflow_import_script_export");
+  std::ofstream(dir + "/script_export.json") << "{}";
+  ImportWorkflow::Asked asked;
+  asked.result = dir + "/dream_result.npy";
+  asked.export_dir = dir;
+  try {
+    ImportWorkflow::OptionsOf(asked);
+    ADD_FAILURE() << "a script's export was taken for a run's";
+  } catch (const std::runtime_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr(dir + ": the export of a Robotarium script (script_export.json)"));
+    EXPECT_THAT(e.what(), HasSubstr("cannot read its lab run yet"));
+  }
 }
 
 }  // namespace

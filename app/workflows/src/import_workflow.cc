@@ -12,6 +12,7 @@
 #include "dream/session/run_reporter.h"
 #include "dream/session/run_session.h"
 #include "dream/session/verdict_broadcast.h"
+#include "dream/workflows/script_export.h"
 #include "dream/world/run_report.h"
 
 namespace dream::workflows {
@@ -44,6 +45,14 @@ std::optional<world::LabVerifierRules::Declaration> ImportWorkflow::Declared(con
 }
 
 ImportWorkflow::Options ImportWorkflow::OptionsOf(const Asked& asked) {
+  if (fs::exists(fs::path(asked.export_dir) / ScriptExport::kManifestName)) {
+    // Its upload is the script itself, which saves no result of DREAM's form (docs/robotarium-scripts.md).
+    throw std::runtime_error(
+        asked.export_dir + ": the export of a Robotarium script (" + ScriptExport::kManifestName +
+        "): its upload is the script as it is, which saves no " + bridge::SubmissionFiles::kResult +
+        ", so dream import cannot read its lab run yet (nor lab-replay replay it); only the files the "
+        "script itself saves come back");
+  }
   const bridge::ExportedSubmission exported = bridge::ExportedSubmission::Read(asked.export_dir);
   Options options;
   options.result = asked.result;
