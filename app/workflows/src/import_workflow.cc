@@ -13,6 +13,7 @@
 #include "dream/session/run_session.h"
 #include "dream/session/verdict_broadcast.h"
 #include "dream/workflows/script_export.h"
+#include "dream/workflows/script_lab_submission.h"
 #include "dream/world/run_report.h"
 
 namespace dream::workflows {
@@ -44,16 +45,16 @@ std::optional<world::LabVerifierRules::Declaration> ImportWorkflow::Declared(con
   return declared;
 }
 
+bridge::ExportedSubmission ImportWorkflow::ExportOf(const std::string& export_dir, const std::string& result,
+                                                    const std::string& python_runtime_dir) {
+  // A script's export: its run config and plan come from the result the recorder saved.
+  if (ScriptExport::Read(export_dir))
+    return ScriptLabSubmission::Of(export_dir, ResultFile(result), python_runtime_dir);
+  return bridge::ExportedSubmission::Read(export_dir);
+}
+
 ImportWorkflow::Options ImportWorkflow::OptionsOf(const Asked& asked) {
-  if (fs::exists(fs::path(asked.export_dir) / ScriptExport::kManifestName)) {
-    // Its upload is the script itself, which saves no result of DREAM's form (docs/robotarium-scripts.md).
-    throw std::runtime_error(
-        asked.export_dir + ": the export of a Robotarium script (" + ScriptExport::kManifestName +
-        "): its upload is the script as it is, which saves no " + bridge::SubmissionFiles::kResult +
-        ", so dream import cannot read its lab run yet (nor lab-replay replay it); only the files the "
-        "script itself saves come back");
-  }
-  const bridge::ExportedSubmission exported = bridge::ExportedSubmission::Read(asked.export_dir);
+  const bridge::ExportedSubmission exported = ExportOf(asked.export_dir, asked.result, asked.python_runtime_dir);
   Options options;
   options.result = asked.result;
   options.export_dir = asked.export_dir;
@@ -74,8 +75,9 @@ int ImportWorkflow::ExitCodeOf(const Result& result) {
 
 ImportWorkflow::Result ImportWorkflow::Import(const Options& options) const {
   Result result;
-  result.imported =
-      bridge::ImportLabRun(ResultFile(options.result), options.export_dir, options.out_dir, options.declared);
+  result.imported = bridge::ImportLabRun(ResultFile(options.result),
+                                         ExportOf(options.export_dir, options.result, options.python_runtime_dir),
+                                         options.out_dir, options.declared);
   const bridge::ImportedRun& imported = result.imported;
   // The run's report, written as every run's is; what it prints is said below, as a lab run's.
   session::RunSession::Options session_options;
