@@ -1,13 +1,16 @@
 #!/usr/bin/python3
-"""robotarium_script_export: the upload of a Robotarium script is the script itself
-(docs/robotarium-scripts.md#the-upload-dream-export-and-dream-check-submission).
+"""robotarium_script_export: the upload of a Robotarium script is the script itself, with DREAM's
+recorder as its main file (docs/robotarium-scripts.md#the-upload-dream-export-and-dream-check-submission).
 
-- `dream export SCRIPT.py` writes upload/ holding the script byte for byte and nothing else, and
-  script_export.json naming it as the main file; `dream export RUN` of a script's run folder does the same;
-- `dream check-submission` of it runs the script in DREAM's stand-in (and, when
+- `dream export SCRIPT.py` writes upload/ holding the script byte for byte and dream_record.py (the
+  recorder, naming the script), and script_export.json naming the recorder as the main file; `dream
+  export RUN` of a script's run folder does the same;
+- `dream check-submission` of it runs the recorder, and so the script, in DREAM's stand-in (and, when
   ROBOTARIUM_PYTHON_SIMULATOR is set, in the official simulator, with a matplotlib stub that draws
-  nothing): exit 0, check.json with the debug() text and its verdict; an upload edited after the export
-  is refused;
+  nothing): exit 0, check.json with the debug() text and its verdict; the recorder leaves
+  dream_result.npy as the lab would return it, and `dream import` of it with the export gives the lab
+  run of the script's robots (its steps the script's step() calls, its start the poses after the
+  start-up drive), refused by `dream lab-replay` saying why; an upload edited after the export is refused;
 - a script importing a module the Robotarium lacks is refused, naming it, exit 3, nothing written;
 - `dream launch SCRIPT.py` and `dream sim SCRIPT.py` are refused, naming `dream run`.
 
@@ -51,12 +54,13 @@ STUB_MATPLOTLIB = {
 
 def check_export(export_dir, script):
     upload = os.path.join(export_dir, "upload")
-    check(os.listdir(upload) == [os.path.basename(script)], f"{upload} holds {os.listdir(upload)}")
+    check(sorted(os.listdir(upload)) == ["dream_record.py", os.path.basename(script)], f"{upload} holds {os.listdir(upload)}")
     with open(os.path.join(upload, os.path.basename(script)), "rb") as a, open(script, "rb") as b:
         check(a.read() == b.read(), f"{upload}: the script is not uploaded byte for byte")
     with open(os.path.join(export_dir, "script_export.json")) as f:
         manifest = json.load(f)
-    check(manifest["main_file"] == os.path.basename(script) and manifest["imports"] == ["numpy", "rps"],
+    check(manifest["main_file"] == "dream_record.py" and manifest["script_file"] == os.path.basename(script) and
+          manifest["imports"] == ["numpy", "rps"],
           f"script_export.json: {manifest}")
 
 
@@ -70,7 +74,23 @@ def check_submission(ctx, args, export_dir, name, extra, env):
         report = json.load(f)
     check(report["verdict"] in ("clean", "warning") and "Your simulation took" in report["debug_text"],
           f"check.json of a script the lab accepts: {json.dumps(report)[:600]}")
-    return report
+    return report, out
+
+
+def check_import(ctx, args, export_dir, check_dir, name):
+    """The recorder's result, imported as the lab's would be: the script's 2 robots and 50 steps."""
+    result = os.path.join(check_dir, "lab_files", "dream_result.npy")
+    check(os.path.isfile(result), f"the recorder left no {result}")
+    lab = ctx.path(name + "_lab")
+    code, output = ctx.run([args.dream, "import", result, "--export", export_dir, "--out", lab], timeout=300)
+    check(code == 0, f"dream import of the recorder's result: exit {code}: {tail(output, 1500)}")
+    with open(os.path.join(lab, "summary.json")) as f:
+        summary = json.load(f)
+    check(summary["robots"] == 2 and summary["steps"] == 50 and summary["lab"]["complete"],
+          f"the imported run is not the script's: {json.dumps(summary)[:800]}")
+    check(summary["lab"]["settle_steps"] > 0, f"no start-up drive in the result: {summary['lab']}")
+    code, output = ctx.run([args.dream, "lab-replay", lab, "--out", ctx.path(name + "_replay")], timeout=120)
+    check(code == 1 and "the lab run of a Robotarium script" in output, f"lab-replay: exit {code}: {tail(output)}")
 
 
 def test(ctx):
@@ -78,11 +98,12 @@ def test(ctx):
     script = script_under_test(ctx, "upload_me.py", SCRIPT)
     export_dir = ctx.path("export")
     code, output = ctx.run([args.dream, "export", script, "--out", export_dir], timeout=120)
-    check(code == 0 and "main file upload_me.py" in output, f"dream export SCRIPT.py: exit {code}: {tail(output)}")
+    check(code == 0 and "main file dream_record.py" in output, f"dream export SCRIPT.py: exit {code}: {tail(output)}")
     check_export(export_dir, script)
 
-    standin = check_submission(ctx, args, export_dir, "standin", ["--standin"], None)
+    standin, standin_dir = check_submission(ctx, args, export_dir, "standin", ["--standin"], None)
     check(standin["simulator"] == "standin", f"--standin ran {standin['simulator']}")
+    check_import(ctx, args, export_dir, standin_dir, "standin")
     simulator = os.environ.get("ROBOTARIUM_PYTHON_SIMULATOR", "")
     if os.path.isfile(os.path.join(simulator, "rps", "robotarium.py")):
         stub = ctx.path("stub", "matplotlib")
@@ -90,8 +111,9 @@ def test(ctx):
         for name, text in STUB_MATPLOTLIB.items():
             with open(os.path.join(stub, name), "w") as f:
                 f.write(text)
-        official = check_submission(ctx, args, export_dir, "official", ["--require-official"],
-                                    dict(os.environ, PYTHONPATH=ctx.path("stub")))
+        official, official_dir = check_submission(ctx, args, export_dir, "official", ["--require-official"],
+                                                  dict(os.environ, PYTHONPATH=ctx.path("stub")))
+        check_import(ctx, args, export_dir, official_dir, "official")
         check(official["simulator"] == "official", f"--require-official ran {official['simulator']}")
         print("checked in the official simulator too")
 

@@ -23,6 +23,7 @@
 #include "dream/run_log/run_log.h"
 #include "dream/run_verdict_t.hpp"
 #include "dream/workflows/import_workflow.h"
+#include "dream/workflows/lab_replay_workflow.h"
 #include "dream/workflows/view_replay.h"
 #include "workflow_test_support.h"
 
@@ -250,6 +251,15 @@ TEST(ImportWorkflowTest, AScriptsLabRunIsImportedAsTheRunOfItsRobotsAndStart) {
   // The lab's poses are the log's: robot 0 ends 30 steps of 0.1 m/s on.
   const run_log::RunLog log = run_log::RunLog::Read(dir + "/out/run.lcmlog");
   EXPECT_NEAR(log.poses().back().x[0], -0.5 + 0.1 * 0.033 * 30, 1e-12);
+  // lab-replay hosts a run's agents; a script is none: refused saying so.
+  LabReplayWorkflow::Options replay;
+  replay.lab_dir = dir + "/out";
+  try {
+    LabReplayWorkflow(out).Replay(replay);
+    ADD_FAILURE() << "a script's lab run was replayed";
+  } catch (const std::runtime_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("the lab run of a Robotarium script (/home/me/go.py)"));
+  }
 }
 
 TEST(ImportWorkflowTest, AScriptsLabRunCutShortOrOfNoRobotCountIsSaidSo) {

@@ -25,6 +25,12 @@ LabReplayWorkflow::Result LabReplayWorkflow::Replay(const Options& options) cons
   const std::string log_in = (fs::path(options.lab_dir) / "run.lcmlog").string();
   const std::string config_in = (fs::path(options.lab_dir) / "config.yaml").string();
   run_config::RunConfig config = run_config::LoadRunConfigFile(config_in);
+  if (!config.script.empty()) {
+    throw std::runtime_error(config_in + ": the lab run of a Robotarium script (" + config.script +
+                             "): lab-replay hosts a run's agents on the lab's poses, and a script is no agent it can "
+                             "host yet; dream compare compares it with a simulated run, and dream run " +
+                             config.script + " --set world.realism=lab runs the script on the lab's model");
+  }
   bridge::RunTrack track = bridge::ReadRunTrack(log_in);
   if (track.num_robots != config.num_robots) {
     throw std::runtime_error(log_in + ": has " + std::to_string(track.num_robots) + " robots, " + config_in + " " +
