@@ -10,7 +10,7 @@ recorder as its main file (docs/robotarium-scripts.md#the-upload-dream-export-an
   nothing): exit 0, check.json with the debug() text and its verdict; the recorder leaves
   dream_result.npy as the lab would return it, and `dream import` of it with the export gives the lab
   run of the script's robots (its steps the script's step() calls, its start the poses after the
-  start-up drive), refused by `dream lab-replay` saying why; an upload edited after the export is refused;
+  start-up drive, its goal the script's last at_position check, which the recorder kept), refused by `dream lab-replay` saying why; an upload edited after the export is refused;
 - a script importing a module the Robotarium lacks is refused, naming it, exit 3, nothing written;
 - `dream launch SCRIPT.py` and `dream sim SCRIPT.py` are refused, naming `dream run`.
 
@@ -26,9 +26,11 @@ from dreamtest import arguments, check, main, script_under_test, tail
 SCRIPT = """
 import numpy as np
 import rps.robotarium as robotarium
+from rps.utilities.misc import create_at_position
 from rps.utilities.transformations import create_si_to_uni_dynamics
 
 N = 2
+at_position = create_at_position(position_error=0.2)
 r = robotarium.Robotarium(number_of_robots=N, show_figure=False, sim_in_real_time=True,
                           initial_conditions=np.array([[-0.5, 0.5], [0.0, 0.0], [0.0, 0.0]]))
 si_to_uni = create_si_to_uni_dynamics()
@@ -37,6 +39,7 @@ for _ in range(50):
     x = r.get_poses()
     r.set_velocities(np.arange(N), si_to_uni(0.5 * (goals - x[:2, :]), x))
     r.step()
+    at_position(x, goals)
 r.debug()
 """
 STUB_MATPLOTLIB = {
@@ -89,6 +92,9 @@ def check_import(ctx, args, export_dir, check_dir, name):
     check(summary["robots"] == 2 and summary["steps"] == 50 and summary["lab"]["complete"],
           f"the imported run is not the script's: {json.dumps(summary)[:800]}")
     check(summary["lab"]["settle_steps"] > 0, f"no start-up drive in the result: {summary['lab']}")
+    goal = summary["goal"]
+    check(goal["has_criterion"] and goal["met"] and "at_position check" in goal["detail"],
+          f"the imported run is not judged by the script's last check (dream_goal.json): {goal}")
     code, output = ctx.run([args.dream, "lab-replay", lab, "--out", ctx.path(name + "_replay")], timeout=120)
     check(code == 1 and "the lab run of a Robotarium script" in output, f"lab-replay: exit {code}: {tail(output)}")
 

@@ -226,6 +226,10 @@ std::string ScriptExportFolder(const std::string& name) {
 TEST(ImportWorkflowTest, AScriptsLabRunIsImportedAsTheRunOfItsRobotsAndStart) {
   const std::string dir = ScriptExportFolder("complete");
   bridge::testing::WriteText(dir + "/dream_result.npy", formats::EncodeNpy(ScriptResult(4, 30, true)));
+  // The recorder's record of the script's last check: robot 0 to (-0.4, 0) within 0.05 m.
+  bridge::testing::WriteText(dir + "/dream_goal.json",
+                             R"({"last_check": {"check": "at_position", "robots": [0], "targets": [[-0.4, 0.0]], )"
+                             R"("position_error": 0.05, "rotation_error": null}, "checks": 30})");
   ImportWorkflow::Asked asked;
   asked.result = dir + "/dream_result.npy";
   asked.export_dir = dir;
@@ -242,6 +246,11 @@ TEST(ImportWorkflowTest, AScriptsLabRunIsImportedAsTheRunOfItsRobotsAndStart) {
   EXPECT_EQ(summary["lab"]["settle_steps"], 4);
   EXPECT_EQ(summary["lab"]["iterations"], 34);
   EXPECT_EQ(summary["lab"]["source_run"], "/home/me/go.py");
+  // Judged by the script's own check, as its simulated run would be, on the lab's poses.
+  EXPECT_EQ(summary["goal"]["has_criterion"], true);
+  EXPECT_EQ(summary["goal"]["met"], true) << summary["goal"];
+  EXPECT_THAT(summary["goal"]["detail"].get<std::string>(), HasSubstr("the script's last at_position check"));
+  EXPECT_TRUE(fs::exists(dir + "/out/script_goal.json"));
   // The run config is a script run's, naming the script, its robots starting where the drive left them.
   const run_config::RunConfig config = run_config::LoadRunConfigFile(dir + "/out/config.yaml");
   EXPECT_EQ(config.script, "/home/me/go.py");

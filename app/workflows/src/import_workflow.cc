@@ -14,6 +14,7 @@
 #include "dream/session/verdict_broadcast.h"
 #include "dream/workflows/script_export.h"
 #include "dream/workflows/script_lab_submission.h"
+#include "dream/workflows/script_run_workflow.h"
 #include "dream/world/run_report.h"
 
 namespace dream::workflows {
@@ -75,9 +76,16 @@ int ImportWorkflow::ExitCodeOf(const Result& result) {
 
 ImportWorkflow::Result ImportWorkflow::Import(const Options& options) const {
   Result result;
-  result.imported = bridge::ImportLabRun(ResultFile(options.result),
-                                         ExportOf(options.export_dir, options.result, options.python_runtime_dir),
-                                         options.out_dir, options.declared);
+  const std::string result_file = ResultFile(options.result);
+  // A script's run is judged by its last at_pose/at_position check, which the recorder kept beside the result.
+  const std::string goal_record = (fs::absolute(options.out_dir) / ScriptRunWorkflow::kGoalRecordName).string();
+  const bool script = ScriptExport::Read(options.export_dir).has_value();
+  result.imported = bridge::ImportLabRun(
+      result_file,
+      script ? ScriptLabSubmission::Of(options.export_dir, result_file, options.python_runtime_dir, goal_record)
+             : bridge::ExportedSubmission::Read(options.export_dir),
+      options.out_dir, options.declared);
+  if (script) ScriptLabSubmission::CopyGoal(result_file, goal_record);
   const bridge::ImportedRun& imported = result.imported;
   // The run's report, written as every run's is; what it prints is said below, as a lab run's.
   session::RunSession::Options session_options;

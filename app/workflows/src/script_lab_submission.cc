@@ -1,6 +1,10 @@
 #include "dream/workflows/script_lab_submission.h"
 
+#include <filesystem>
 #include <stdexcept>
+
+#include "dream/files/atomic_file.h"
+#include "dream/files/file_text.h"
 
 #include "dream/bridge/submission_format.h"
 #include "dream/config/config_node.h"
@@ -13,6 +17,8 @@ namespace dream::workflows {
 namespace {
 
 using bridge::ResultLayout;
+
+constexpr size_t kMaxGoalBytes = 1 << 20;  // 50 robots' targets take a few kB
 
 /// The rows of the result, with its robot count and where its experiment starts.
 struct ScriptResult {
@@ -51,7 +57,8 @@ struct ScriptResult {
 }  // namespace
 
 bridge::ExportedSubmission ScriptLabSubmission::Of(const std::string& export_dir, const std::string& result_path,
-                                                   const std::string& python_runtime_dir) {
+                                                   const std::string& python_runtime_dir,
+                                                   const std::string& goal_record) {
   const std::optional<ScriptExport::Manifest> manifest = ScriptExport::Read(export_dir);
   if (!manifest)
     throw std::runtime_error(export_dir + ": no " + ScriptExport::kManifestName + ": not a script's export");
@@ -71,7 +78,7 @@ bridge::ExportedSubmission ScriptLabSubmission::Of(const std::string& export_dir
   bridge::ExportedSubmission exported;
   exported.dir = export_dir;
   exported.source_run = manifest->script;
-  exported.config_text = ScriptRunWorkflow::ConfigText(hello, options);
+  exported.config_text = ScriptRunWorkflow::ConfigText(hello, options, goal_record);
   exported.config = run_config::LoadRunConfig(
       config::ConfigNode::LoadString(exported.config_text, result_path + " (its run config, from its first poses)"));
   bridge::SubmissionParams& params = exported.params;
@@ -80,6 +87,13 @@ bridge::ExportedSubmission ScriptLabSubmission::Of(const std::string& export_dir
   params.options.strategy = bridge::Strategy::kController;  // the script itself, in closed loop on the lab
   params.options.settle_max_steps = static_cast<int>(result.settle_rows + 1);
   return exported;
+}
+
+void ScriptLabSubmission::CopyGoal(const std::string& result_path, const std::string& goal_record) {
+  const std::filesystem::path from = std::filesystem::path(result_path).parent_path() / kRecorderGoalName;
+  std::error_code error;
+  if (!std::filesystem::exists(from, error)) return;
+  files::WriteFileAtomically(goal_record, files::ReadFileText(from.string(), kMaxGoalBytes));
 }
 
 }  // namespace dream::workflows

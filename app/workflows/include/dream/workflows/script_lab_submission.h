@@ -22,8 +22,19 @@ class ScriptLabSubmission {
  public:
   /// @throws std::runtime_error naming the file: a result of no robot count,
   ///         with no experiment row, or start poses no run config takes.
+  /// `goal_record` ("": none): the config's controller.goal_record, where
+  /// the import puts the script's last check the recorder kept (CopyGoal).
   static bridge::ExportedSubmission Of(const std::string& export_dir, const std::string& result_path,
-                                       const std::string& python_runtime_dir);
+                                       const std::string& python_runtime_dir, const std::string& goal_record = "");
+
+  /// The recorder's dream_goal.json beside `result_path` (the lab returns it
+  /// with dream_result.npy), copied to `goal_record`; nothing when it is not
+  /// there (the run then has no goal). @throws std::runtime_error naming the
+  /// file when it is no regular file or over 1 MiB.
+  static void CopyGoal(const std::string& result_path, const std::string& goal_record);
+
+  /// The recorder's goal file's name (python/rps_dream/dream_record.py's GOAL).
+  static constexpr const char* kRecorderGoalName = "dream_goal.json";
 };
 
 }  // namespace dream::workflows
