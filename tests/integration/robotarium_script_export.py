@@ -10,7 +10,9 @@ recorder as its main file (docs/robotarium-scripts.md#the-upload-dream-export-an
   nothing): exit 0, check.json with the debug() text and its verdict; the recorder leaves
   dream_result.npy as the lab would return it, and `dream import` of it with the export gives the lab
   run of the script's robots (its steps the script's step() calls, its start the poses after the
-  start-up drive, its goal the script's last at_position check, which the recorder kept), refused by `dream lab-replay` saying why; an upload edited after the export is refused;
+  start-up drive, its goal the script's last at_position check, which the recorder kept), and `dream
+  lab-replay` of that run runs the script again on the lab's poses, commanding at every step what it
+  commanded at the lab; an upload edited after the export is refused;
 - a script importing a module the Robotarium lacks is refused, naming it, exit 3, nothing written;
 - `dream launch SCRIPT.py` and `dream sim SCRIPT.py` are refused, naming `dream run`.
 
@@ -95,8 +97,15 @@ def check_import(ctx, args, export_dir, check_dir, name):
     goal = summary["goal"]
     check(goal["has_criterion"] and goal["met"] and "at_position check" in goal["detail"],
           f"the imported run is not judged by the script's last check (dream_goal.json): {goal}")
-    code, output = ctx.run([args.dream, "lab-replay", lab, "--out", ctx.path(name + "_replay")], timeout=120)
-    check(code == 1 and "the lab run of a Robotarium script" in output, f"lab-replay: exit {code}: {tail(output)}")
+    # lab-replay runs the script again as every robot's agent on the lab's poses: its commands are the lab's.
+    replay = ctx.path(name + "_replay")
+    code, output = ctx.run([args.dream, "lab-replay", lab, "--out", replay, "-q"], timeout=300)
+    check(code == 0, f"lab-replay of a script's lab run: exit {code}: {tail(output, 1500)}")
+    with open(os.path.join(replay, "summary.json")) as f:
+        agreement = json.load(f)["lab_replay"]["agents_vs_lab_commands"]
+    check(len(agreement) == 2 and all(robot["first_different_step"] == -1 and robot["steps_with_command"] == 50
+                                      for robot in agreement),
+          f"the script on the lab's poses did not command what it commanded at the lab: {agreement}")
 
 
 def test(ctx):

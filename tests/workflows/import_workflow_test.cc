@@ -260,7 +260,7 @@ TEST(ImportWorkflowTest, AScriptsLabRunIsImportedAsTheRunOfItsRobotsAndStart) {
   // The lab's poses are the log's: robot 0 ends 30 steps of 0.1 m/s on.
   const run_log::RunLog log = run_log::RunLog::Read(dir + "/out/run.lcmlog");
   EXPECT_NEAR(log.poses().back().x[0], -0.5 + 0.1 * 0.033 * 30, 1e-12);
-  // lab-replay hosts a run's agents; a script is none: refused saying so.
+  // Replayed without its script as the agent (dream lab-replay starts it; the workflow cannot): refused.
   LabReplayWorkflow::Options replay;
   replay.lab_dir = dir + "/out";
   try {

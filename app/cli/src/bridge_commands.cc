@@ -120,6 +120,11 @@ int RunCompare(workflows::CompareWorkflow::Options options) {
 }
 
 int RunLabReplay(const workflows::LabReplayWorkflow::Options& options) {
+  // A script's lab run: the script runs again as the agent of every robot.
+  if (!ScriptOfConfig((std::filesystem::path(options.lab_dir) / "config.yaml").string()).empty() &&
+      !options.world_only) {
+    return RunScriptLabReplay(WithRuntime(options));
+  }
   return workflows::LabReplayWorkflow().Replay(WithRuntime(options)).exit_code;
 }
 
