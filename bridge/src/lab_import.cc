@@ -399,7 +399,11 @@ nlohmann::ordered_json LabJson(const ImportedRun& imported, const ExportedSubmis
 
 ImportedRun ImportLabRun(const std::string& result_path, const std::string& export_dir, const std::string& out_dir,
                          const std::optional<world::LabVerifierRules::Declaration>& declared) {
-  const ExportedSubmission exported = ExportedSubmission::Read(export_dir);
+  return ImportLabRun(result_path, ExportedSubmission::Read(export_dir), out_dir, declared);
+}
+
+ImportedRun ImportLabRun(const std::string& result_path, const ExportedSubmission& exported, const std::string& out_dir,
+                         const std::optional<world::LabVerifierRules::Declaration>& declared) {
   ImportedRun imported;
   imported.config = exported.config;
   imported.declared = declared.value_or(exported.UploadDeclaration());

@@ -13,6 +13,22 @@ from .toolbox_checks import ToolboxArgumentError, pair, positive, whole, wrap
 CHARGER_SLOTS_PER_EDGE = 11
 RANDOM_POSE_ATTEMPTS = 10000
 
+# Who hears every at_pose/at_position check a script makes: `dream run SCRIPT.py`'s Robotarium,
+# which takes the script's last check as the run's goal (docs/robotarium-scripts.md#the-goal).
+_check_listeners = []
+
+
+def listen_to_checks(listener):
+    """listener(check, states, targets, position_error, rotation_error) after every check made by a
+    create_at_pose/create_at_position function; check is "at_pose" or "at_position", rotation_error
+    None for at_position. Nothing is returned to the check: the script's numbers stay the official."""
+    _check_listeners.append(listener)
+
+
+def _tell_listeners(check, states, targets, position_error, rotation_error):
+    for listener in _check_listeners:
+        listener(check, states, targets, position_error, rotation_error)
+
 
 def determine_font_size(robotarium_instance, font_height_meters):
     """The font size in points whose letters are font_height_meters tall in the figure."""
@@ -84,6 +100,7 @@ def create_at_pose(position_error=0.05, rotation_error=0.2):
         states, poses = pair("check_at_pose", "states", states, 3, "poses", poses, 3)
         close = np.linalg.norm(states[:2, :] - poses[:2, :], axis=0) <= position_error
         there = close & (np.abs(wrap(states[2, :] - poses[2, :])) <= rotation_error)
+        _tell_listeners("at_pose", states, poses, position_error, rotation_error)
         return bool(np.all(there)), there
 
     return check_at_pose
@@ -97,6 +114,7 @@ def create_at_position(position_error=0.05):
         states, positions = pair("check_at_position", "states", states, 2, "positions", positions, 2,
                                  first_at_least=True)
         there = np.linalg.norm(states[:2, :] - positions[:2, :], axis=0) <= position_error
+        _tell_listeners("at_position", states, positions, position_error, None)
         return bool(np.all(there)), there
 
     return check_at_position

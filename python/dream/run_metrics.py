@@ -8,7 +8,8 @@ while the robots run, so a Robotarium submission ignores them):
     @classmethod
     def metrics(cls, run):                      # {name: number | per-step values | per-robot values}
     @classmethod
-    def goal(cls, run, metrics):                # True/False, or {"met", "completion_step", "detail"};
+    def goal(cls, run, metrics):                # True/False, or {"met", "completion_step", "detail"},
+                                                # or None: no goal for this run (its config gave none);
                                                 # `metrics`: what metrics() returned ({} without it)
 
 `run` is a RunRecord: run.steps (T,), run.poses (T, N, 3) x, y, theta in metres and radians,
@@ -154,7 +155,8 @@ def evaluate(robot_class, config, steps, poses):
     run = RunRecord(steps, poses, config)
     run.goal_points = _goal_points(robot_class, config, run.num_robots)
     metrics, answer = declared_metrics(robot_class, run)
-    goal = _goal_entry(robot_class.goal(run, answer)) if "goal" in declared else None
+    judged = robot_class.goal(run, answer) if "goal" in declared else None
+    goal = None if judged is None else _goal_entry(judged)  # None: no goal declared for this run
     return {"declared": declared, "metrics": metrics, "goal": goal, "goal_points": run.goal_points}
 
 

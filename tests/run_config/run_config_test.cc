@@ -250,6 +250,23 @@ TEST(RunConfigTest, CommandLimitsAreTheRobotariumsOrTheOfficialSimulatorsByName)
   EXPECT_NE(both.find("world.max_abs_v_mps: is not taken with command_limits: official"), std::string::npos) << both;
 }
 
+// world.script_ends_run: a Robotarium script's run ends with its script (dream run SCRIPT.py writes
+// it); a key like any, checked, and refused in a config that names no script.
+TEST(RunConfigTest, ScriptEndsRunIsAWorldKeyOfAScriptsRunOnly) {
+  EXPECT_FALSE(Load(kMinimal).sim.script_ends_run);
+  const std::string script = std::string(kMinimal) + "script: /home/me/go.py\n";
+  EXPECT_TRUE(Load(script + "world: {script_ends_run: true}\n").sim.script_ends_run);
+  EXPECT_FALSE(Load(script + "world: {script_ends_run: false}\n").sim.script_ends_run);
+  const std::string bad = ErrorOf(script + "world: {script_ends_run: sometimes}\n");
+  EXPECT_NE(bad.find("test.yaml:12: world.script_ends_run"), std::string::npos) << bad;
+  EXPECT_NE(bad.find("sometimes"), std::string::npos) << bad;
+  const std::string lonely = ErrorOf(std::string(kMinimal) + "world: {script_ends_run: true}\n");
+  EXPECT_NE(lonely.find("test.yaml:11: world.script_ends_run: only a Robotarium script's run (script:) ends with its "
+                        "script"),
+            std::string::npos)
+      << lonely;
+}
+
 TEST(RunConfigTest, BadObstacles) {
   EXPECT_NE(ErrorOf(std::string(kMinimal) + "obstacles:\n  - center: [0, 0]\n    size: [0, 1]\n").find("obstacles[0]"),
             std::string::npos);

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -116,7 +117,11 @@ TEST_F(RunSessionTest, AVerdictMadeWorseAfterTheRunIsPublishedAgainAndReplacesTh
         ASSERT_TRUE(lcm::Decode(data, size, &verdict));
         heard.push_back(verdict);
       });
-  EXPECT_TRUE(VerdictBroadcast::Resend(bus, out() + "/summary.json", 0.033, kExitNotReady, log));
+  const std::optional<run_verdict_t> changed =
+      VerdictBroadcast::RewriteLoggedVerdict(out() + "/summary.json", 0.033, kExitNotReady, log);
+  ASSERT_TRUE(changed.has_value());
+  EXPECT_TRUE(heard.empty());  // the caller publishes
+  VerdictBroadcast::Publish(bus, *changed);
   while (bus.HandleSubscriptions(0) > 0) {
   }
   ASSERT_EQ(heard.size(), 1u);
@@ -141,12 +146,10 @@ TEST_F(RunSessionTest, AVerdictMadeWorseAfterTheRunIsPublishedAgainAndReplacesTh
 
   // Asked again with nothing changed: neither the log nor the bus hears it twice.
   const std::string bytes = files::ReadFileText(log);
-  EXPECT_FALSE(VerdictBroadcast::Resend(bus, out() + "/summary.json", 0.033, kExitNotReady, log));
-  while (bus.HandleSubscriptions(0) > 0) {
-  }
-  EXPECT_EQ(heard.size(), 1u);
+  EXPECT_FALSE(VerdictBroadcast::RewriteLoggedVerdict(out() + "/summary.json", 0.033, kExitNotReady, log));
   EXPECT_EQ(files::ReadFileText(log), bytes);
-  EXPECT_THROW(VerdictBroadcast::Resend(bus, out() + "/none.json", 0.033, kExitNotReady, log), std::runtime_error);
+  EXPECT_THROW(VerdictBroadcast::RewriteLoggedVerdict(out() + "/none.json", 0.033, kExitNotReady, log),
+               std::runtime_error);
 }
 
 // A launch whose agents refused nothing: the log's verdict is summary.json's already and stays.
@@ -158,11 +161,13 @@ TEST_F(RunSessionTest, AVerdictSummaryJsonStillSaysIsNeitherLoggedNorPublishedAg
   ASSERT_EQ(result.judgement.verdict(), world::RunVerdict::kRejected);
   const std::string log = out() + "/run.lcmlog";
   const std::string bytes = files::ReadFileText(log);
-  lcm::LcmBus bus("memq://");
-  EXPECT_FALSE(VerdictBroadcast::Resend(bus, out() + "/summary.json", 0.033, kExitRejected, log));
+  EXPECT_FALSE(VerdictBroadcast::RewriteLoggedVerdict(out() + "/summary.json", 0.033, kExitRejected, log));
   EXPECT_EQ(files::ReadFileText(log), bytes);
   // Another exit code than the world's (the launch's): the log says the launch's.
-  EXPECT_TRUE(VerdictBroadcast::Resend(bus, out() + "/summary.json", 0.033, kExitRunFailed, log));
+  const std::optional<run_verdict_t> changed =
+      VerdictBroadcast::RewriteLoggedVerdict(out() + "/summary.json", 0.033, kExitRunFailed, log);
+  ASSERT_TRUE(changed.has_value());
+  EXPECT_EQ(changed->exit_code, kExitRunFailed);
   const std::vector<run_verdict_t> logged = VerdictsIn(log);
   ASSERT_EQ(logged.size(), 1u);
   EXPECT_EQ(logged[0].exit_code, kExitRunFailed);

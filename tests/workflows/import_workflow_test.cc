@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "../bridge/bridge_test_support.h"
+#include "../support/source_tree.h"
 #include "dream/formats/npy_file.h"
 #include "dream/bridge/submission_format.h"
 #include "dream/files/file_text.h"
@@ -17,9 +19,11 @@
 #include "dream/lcm/log_reader.h"
 #include "dream/lcm/run_id.h"
 #include "dream/robot_poses_t.hpp"
+#include "dream/run_config/run_config.h"
 #include "dream/run_log/run_log.h"
 #include "dream/run_verdict_t.hpp"
 #include "dream/workflows/import_workflow.h"
+#include "dream/workflows/lab_replay_workflow.h"
 #include "dream/workflows/view_replay.h"
 #include "workflow_test_support.h"
 
@@ -184,6 +188,108 @@ TEST(ImportWorkflowTest, AFolderWithoutAResultIsRefusedByName) {
     EXPECT_THAT(e.what(), HasSubstr(dir + ": holds neither dream_result.npy nor dream_result.mat"));
   }
   EXPECT_EQ(ImportWorkflow::ResultFile(dir + "/x.npy"), dir + "/x.npy");
+}
+
+// A Robotarium script's lab run: dream export SCRIPT.py ships DREAM's recorder as the main file, which
+// saves every pose the script read and every command it sent in the form every export's result has
+// (settle rows of the start-up drive, experiment rows, a final pose). The export knows neither the robots
+// nor the start: both come from the result, and the run is the one dream run SCRIPT.py makes for them.
+formats::NpyArray ScriptResult(int settle_rows, int experiment_steps, bool final_row) {
+  const int n = 2;
+  formats::NpyArray rows;
+  const int row_count = settle_rows + experiment_steps + (final_row ? 1 : 0);
+  rows.shape = {row_count, bridge::ResultLayout::Columns(n)};
+  rows.values.assign(static_cast<size_t>(rows.shape[0] * rows.shape[1]), 0.0);
+  for (int r = 0; r < row_count; ++r) {
+    const bool settle = r < settle_rows;
+    const int step = settle ? r : r - settle_rows;
+    double* row = &rows.values[static_cast<size_t>(r * rows.shape[1])];
+    row[0] = settle ? 0.0 : (r < settle_rows + experiment_steps ? 1.0 : 2.0);
+    row[1] = step;
+    row[2] = 1000.0 + 0.033 * r;
+    const double x = settle ? -0.6 : -0.5 + 0.1 * 0.033 * step;  // robot 0 drives at 0.1 m/s
+    row[bridge::ResultLayout::X(n, 0)] = x;
+    row[bridge::ResultLayout::X(n, 1)] = 0.5;
+    row[bridge::ResultLayout::Y(n, 1)] = 0.3;
+    row[bridge::ResultLayout::V(n, 0)] = row[0] == 2.0 ? 0.0 : 0.1;
+  }
+  return rows;
+}
+
+std::string ScriptExportFolder(const std::string& name) {
+  const std::string dir = bridge::testing::NewFolder("workflow_import_script_" + name);
+  bridge::testing::WriteText(dir + "/script_export.json",
+                             R"({"script": "/home/me/go.py", "main_file": "dream_record.py", "sha256": "00"})");
+  return dir;
+}
+
+TEST(ImportWorkflowTest, AScriptsLabRunIsImportedAsTheRunOfItsRobotsAndStart) {
+  const std::string dir = ScriptExportFolder("complete");
+  bridge::testing::WriteText(dir + "/dream_result.npy", formats::EncodeNpy(ScriptResult(4, 30, true)));
+  // The recorder's record of the script's last check: robot 0 to (-0.4, 0) within 0.05 m.
+  bridge::testing::WriteText(dir + "/dream_goal.json",
+                             R"({"last_check": {"check": "at_position", "robots": [0], "targets": [[-0.4, 0.0]], )"
+                             R"("position_error": 0.05, "rotation_error": null}, "checks": 30})");
+  ImportWorkflow::Asked asked;
+  asked.result = dir + "/dream_result.npy";
+  asked.export_dir = dir;
+  asked.out_dir = dir + "/out";
+  asked.python_runtime_dir = dream::testing::SourceDir() + "/python";
+  const ImportWorkflow::Options options = ImportWorkflow::OptionsOf(asked);
+  std::ostringstream out;
+  const ImportWorkflow::Result result = ImportWorkflow(out).Import(options);
+  EXPECT_EQ(ImportWorkflow::ExitCodeOf(result), 0) << out.str();
+  const nlohmann::json summary = ReadJson(result.summary_path);
+  EXPECT_EQ(summary["robots"], 2);
+  EXPECT_EQ(summary["steps"], 30);
+  EXPECT_EQ(summary["lab"]["complete"], true);
+  EXPECT_EQ(summary["lab"]["settle_steps"], 4);
+  EXPECT_EQ(summary["lab"]["iterations"], 34);
+  EXPECT_EQ(summary["lab"]["source_run"], "/home/me/go.py");
+  // Judged by the script's own check, as its simulated run would be, on the lab's poses.
+  EXPECT_EQ(summary["goal"]["has_criterion"], true);
+  EXPECT_EQ(summary["goal"]["met"], true) << summary["goal"];
+  EXPECT_THAT(summary["goal"]["detail"].get<std::string>(), HasSubstr("the script's last at_position check"));
+  EXPECT_TRUE(fs::exists(dir + "/out/script_goal.json"));
+  // The run config is a script run's, naming the script, its robots starting where the drive left them.
+  const run_config::RunConfig config = run_config::LoadRunConfigFile(dir + "/out/config.yaml");
+  EXPECT_EQ(config.script, "/home/me/go.py");
+  ASSERT_EQ(config.initial_poses.size(), 2u);
+  EXPECT_DOUBLE_EQ(config.initial_poses[0].x_m, -0.5);
+  EXPECT_DOUBLE_EQ(config.initial_poses[1].y_m, 0.3);
+  // The lab's poses are the log's: robot 0 ends 30 steps of 0.1 m/s on.
+  const run_log::RunLog log = run_log::RunLog::Read(dir + "/out/run.lcmlog");
+  EXPECT_NEAR(log.poses().back().x[0], -0.5 + 0.1 * 0.033 * 30, 1e-12);
+  // Replayed without its script as the agent (dream lab-replay starts it; the workflow cannot): refused.
+  LabReplayWorkflow::Options replay;
+  replay.lab_dir = dir + "/out";
+  try {
+    LabReplayWorkflow(out).Replay(replay);
+    ADD_FAILURE() << "a script's lab run was replayed";
+  } catch (const std::runtime_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("the lab run of a Robotarium script (/home/me/go.py)"));
+  }
+}
+
+TEST(ImportWorkflowTest, AScriptsLabRunCutShortOrOfNoRobotCountIsSaidSo) {
+  const std::string dir = ScriptExportFolder("short");
+  const std::string python = dream::testing::SourceDir() + "/python";
+  bridge::testing::WriteText(dir + "/cut.npy", formats::EncodeNpy(ScriptResult(2, 10, false)));
+  std::ostringstream out;
+  const ImportWorkflow::Result cut = ImportWorkflow(out).Import({dir + "/cut.npy", dir, dir + "/cut", {}, python});
+  EXPECT_FALSE(cut.imported.lab.complete);
+  EXPECT_EQ(ImportWorkflow::ExitCodeOf(cut), 4);  // cut short: the run did not finish
+  formats::NpyArray odd = ScriptResult(2, 10, true);
+  odd.shape[1] = 12;  // 3 + 9: no robot count
+  odd.values.resize(static_cast<size_t>(odd.shape[0] * odd.shape[1]));
+  bridge::testing::WriteText(dir + "/odd.npy", formats::EncodeNpy(odd));
+  try {
+    ImportWorkflow(out).Import({dir + "/odd.npy", dir, dir + "/odd", {}, python});
+    ADD_FAILURE() << "a result of 12 columns was imported";
+  } catch (const std::runtime_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr(dir + "/odd.npy: 12 columns are 3 + 5 N for no robot count"));
+  }
+  EXPECT_FALSE(fs::exists(dir + "/odd"));
 }
 
 }  // namespace

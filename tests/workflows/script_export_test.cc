@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -26,7 +27,10 @@ class ScriptExportTest : public ::testing::Test {
     options_.script_path = script_;
     options_.out_dir = (dir_ / "export").string();
     options_.python = "/usr/bin/python3";
-    options_.python_runtime_dir = "/opt/dream/python-runtime";
+    // Its rps_dream/: check_imports.py (the checker is a fake here) and dream_record.py, the recorder shipped.
+    options_.python_runtime_dir = (dir_ / "runtime").string();
+    fs::create_directories(dir_ / "runtime" / "rps_dream");
+    std::ofstream(dir_ / "runtime" / "rps_dream" / "dream_record.py") << "SCRIPT = \"__DREAM_SCRIPT__\"\nrun()\n";
   }
   void TearDown() override { fs::remove_all(dir_); }
 
@@ -51,7 +55,8 @@ std::string TextOf(const fs::path& path) {
   return text.str();
 }
 
-TEST_F(ScriptExportTest, TheUploadIsTheScriptAloneWithAManifestCheckSubmissionReads) {
+// The upload: the script byte for byte, and DREAM's recorder as the main file, naming it.
+TEST_F(ScriptExportTest, TheUploadIsTheScriptAndTheRecorderWithAManifestCheckSubmissionReads) {
   options_.libraries_path = "/sim/libraries.txt";
   // An earlier export's other file must not be uploaded too.
   fs::create_directories(dir_ / "export" / "upload");
@@ -59,19 +64,26 @@ TEST_F(ScriptExportTest, TheUploadIsTheScriptAloneWithAManifestCheckSubmissionRe
   const ScriptExport::Result result =
       ScriptExport().Export(options_, Checker(0, "{\"imports\": [\"numpy\", \"rps\"], \"not_on_robotarium\": []}\n"));
   EXPECT_FALSE(result.refused);
-  EXPECT_EQ(argv_, (std::vector<std::string>{"/usr/bin/python3", "/opt/dream/python-runtime/rps_dream/check_imports.py",
-                                             fs::absolute(script_).string(), "/sim/libraries.txt"}));
-  EXPECT_EQ(result.main_file, "my_script.py");
+  EXPECT_EQ(argv_,
+            (std::vector<std::string>{"/usr/bin/python3", options_.python_runtime_dir + "/rps_dream/check_imports.py",
+                                      fs::absolute(script_).string(), "/sim/libraries.txt"}));
+  EXPECT_EQ(result.main_file, "dream_record.py");
+  EXPECT_EQ(result.script_file, "my_script.py");
   EXPECT_EQ(result.imports, (std::vector<std::string>{"numpy", "rps"}));
   std::vector<std::string> uploaded;
   for (const auto& entry : fs::directory_iterator(dir_ / "export" / "upload")) {
     uploaded.push_back(entry.path().filename().string());
   }
-  EXPECT_EQ(uploaded, std::vector<std::string>{"my_script.py"});
+  std::sort(uploaded.begin(), uploaded.end());
+  EXPECT_EQ(uploaded, (std::vector<std::string>{"dream_record.py", "my_script.py"}));
   EXPECT_EQ(TextOf(dir_ / "export" / "upload" / "my_script.py"), TextOf(script_));
+  EXPECT_EQ(TextOf(dir_ / "export" / "upload" / "dream_record.py"), "SCRIPT = \"my_script.py\"\nrun()\n");
   const auto manifest = ScriptExport::Read(options_.out_dir);
   ASSERT_TRUE(manifest.has_value());
-  EXPECT_EQ(manifest->main_file, "my_script.py");
+  EXPECT_EQ(manifest->main_file, "dream_record.py");
+  EXPECT_EQ(manifest->script_file, "my_script.py");
+  EXPECT_EQ(manifest->script_sha256.size(), 64u);
+  EXPECT_NE(manifest->script_sha256, manifest->sha256);
   EXPECT_EQ(manifest->script, fs::absolute(script_).lexically_normal().string());
   EXPECT_EQ(manifest->sha256.size(), 64u);
   EXPECT_FALSE(ScriptExport::Read(dir_.string()).has_value());

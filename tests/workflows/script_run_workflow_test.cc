@@ -69,8 +69,13 @@ TEST(ScriptRunWorkflowTest, TheConfigStartsEveryRobotExactlyWhereTheScriptSaid) 
   // Any finite command, as the official simulator takes it: by the config key, not a magic number.
   EXPECT_EQ(config["world"]["command_limits"].as<std::string>(), "official");
   EXPECT_FALSE(config["world"]["max_abs_v_mps"].IsDefined());
+  // The script ends the run: a world key of the config, not a flag set behind it.
+  EXPECT_TRUE(config["world"]["script_ends_run"].as<bool>());
   EXPECT_EQ(config["controller"]["module"].as<std::string>(),
             "/opt/dream/python-runtime/rps_dream/robotarium_script.py");
+  EXPECT_FALSE(config["controller"]["goal_record"].IsDefined());
+  const YAML::Node recorded = YAML::Load(ScriptRunWorkflow::ConfigText(hello, options, "/runs/my script/g.json"));
+  EXPECT_EQ(recorded["controller"]["goal_record"].as<std::string>(), "/runs/my script/g.json");
   for (size_t i = 0; i < 2; ++i) {
     for (size_t k = 0; k < 3; ++k) {
       EXPECT_EQ(config["initial_poses"][i][k].as<double>(), hello.initial_poses[i][k]) << i << "," << k;
@@ -130,6 +135,24 @@ TEST(ScriptRunWorkflowTest, AConfigNamingTheScriptKeepsItsKeysAndTakesTheHellosR
   EXPECT_EQ(config["initial_poses"][0][1].as<double>(), -1.0 / 3.0);
   EXPECT_EQ(config["initial_poses"][1][2].as<double>(), -2.0);
   EXPECT_EQ(config["world"]["command_limits"].as<std::string>(), "official");  // the base config's keys kept
+  EXPECT_TRUE(config["world"]["script_ends_run"].as<bool>());
+  // Each run's goal record is in its own folder (docs/robotarium-scripts.md#the-goal).
+  const YAML::Node rerun = YAML::Load(ScriptRunWorkflow::WithHello(base.path(), hello, options, "/runs/b/g.json"));
+  EXPECT_EQ(rerun["controller"]["goal_record"].as<std::string>(), "/runs/b/g.json");
+}
+
+// A config naming its script written before world.script_ends_run: its rerun gets the key.
+TEST(ScriptRunWorkflowTest, AnOlderConfigNamingTheScriptGetsScriptEndsRun) {
+  ScriptRunWorkflow::Options options;
+  options.script_path = "/s/go.py";
+  const TempFile base("older",
+                      "name: go\nscript: /s/go.py\nrobots: 1\ninitial_poses: [[0, 0, 0]]\n"
+                      "controller: {kind: python, module: m.py, class: C}\n");
+  ScriptRunWorkflow::Hello hello;
+  hello.robots = 1;
+  hello.initial_poses = {{0.5, 0.25, -2.0}};
+  const YAML::Node config = YAML::Load(ScriptRunWorkflow::WithHello(base.path(), hello, options));
+  EXPECT_TRUE(config["world"]["script_ends_run"].as<bool>());
 }
 
 TEST(ScriptRunWorkflowTest, TheRunIsNamedAfterTheScript) {

@@ -83,10 +83,12 @@ int RunScriptExport(const workflows::ExportWorkflow::Asked& asked, const std::st
   }
   std::string imports;
   for (const std::string& name : result.imports) imports += (imports.empty() ? "" : ", ") + name;
-  std::cout << "exported " << script << " as it is: upload " << result.out_dir << "/upload/" << result.main_file
-            << " (main file " << result.main_file << "); it imports "
+  std::cout << "exported " << script << " as it is: upload " << result.out_dir << "/upload/" << result.script_file
+            << " and " << result.out_dir << "/upload/" << result.main_file << " (main file " << result.main_file
+            << ": DREAM's recorder, which runs the script and saves dream_result.npy); it imports "
             << (imports.empty() ? std::string("nothing") : imports)
             << ", all on the Robotarium\ncheck it in the Robotarium simulator: dream check-submission "
+            << result.out_dir << "\nthe lab's dream_result.npy: dream import dream_result.npy --export "
             << result.out_dir << "\n";
   return kExitOk;
 }
@@ -118,6 +120,11 @@ int RunCompare(workflows::CompareWorkflow::Options options) {
 }
 
 int RunLabReplay(const workflows::LabReplayWorkflow::Options& options) {
+  // A script's lab run: the script runs again as the agent of every robot.
+  if (!ScriptOfConfig((std::filesystem::path(options.lab_dir) / "config.yaml").string()).empty() &&
+      !options.world_only) {
+    return RunScriptLabReplay(WithRuntime(options));
+  }
   return workflows::LabReplayWorkflow().Replay(WithRuntime(options)).exit_code;
 }
 

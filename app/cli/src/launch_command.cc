@@ -100,8 +100,9 @@ int RunLaunch(const RunArgs& args) {
   // The agents' refusals join summary.json and the verdict; a verdict they
   // changed replaces the log's and goes on the bus again, so the log and a
   // viewer end on summary.json's.
-  const int exit_code = workflows::AgentReports::Merge(*session, out_dir, sim_exit);
-  workflows::AgentReports::ResendVerdict(*session, out_dir, args.lcm_url, exit_code);
+  const workflows::AgentReports reports = workflows::AgentReports::Read(out_dir, config.num_robots);
+  const int exit_code = workflows::AgentReports::Merge(*session, out_dir, reports, sim_exit);
+  workflows::AgentReports::ResendVerdict(*session, out_dir, reports, args.lcm_url, exit_code);
   return exit_code;
 }
 

@@ -210,4 +210,46 @@ int RunScript(const RunArgs& args, const std::vector<std::string>& script_args) 
   return session::ExitCodeOf(result);
 }
 
+int RunScriptLabReplay(workflows::LabReplayWorkflow::Options options) {
+  const std::string config_path = (fs::path(options.lab_dir) / "config.yaml").string();
+  const std::string script = ScriptOfConfig(config_path);
+  std::error_code error;
+  if (!fs::is_regular_file(script, error)) {
+    throw std::invalid_argument(config_path + ": script: " + script + ": no such script (a Python file)");
+  }
+  const config::ConfigNode root = config::ConfigNode::LoadFile(config_path);
+  const long long seed = root.Optional("seed").IsDefined() ? root.Required("seed").AsInt() : 1;
+  const std::string name = root.Required("name").AsString();
+  options.out_dir =
+      fs::absolute(files::RunFolderChoice(options.out_dir, "runs/" + name + "_lab_replay", options.overwrite).dir())
+          .lexically_normal()
+          .string();
+  options.overwrite = true;  // the folder just chosen, which the script writes into first
+  options.lcm_url = workflows::ScriptRunWorkflow::BusUrl(options.lcm_url, options.lcm_url.empty());
+  options.script_agent = true;
+  int hello[2];
+  if (::pipe2(hello, O_CLOEXEC) != 0) throw std::runtime_error("cannot make a pipe for the script");
+  const int terminal = ::fcntl(STDOUT_FILENO, F_DUPFD_CLOEXEC, 3);
+  process::ProcessGroup children;
+  const char* python = std::getenv("DREAM_PYTHON");
+  const std::vector<std::string> argv{
+      python != nullptr && *python != '\0' ? python : "python3",
+      (fs::path(process::DataFiles::PythonRuntimeDir()) / "rps_dream" / "run_script.py").string(), script};
+  const pid_t pid = children.Start(argv, (fs::path(options.out_dir) / "script_output.txt").string(),
+                                   ScriptEnvironment(options.out_dir, options.lcm_url, seed, hello[1], terminal),
+                                   {hello[1], terminal});
+  ::close(hello[1]);
+  if (terminal >= 0) ::close(terminal);
+  const std::string line = ReadHello(hello[0]);
+  ::close(hello[0]);
+  if (line.empty()) return ScriptEndedEarly(children.WaitPassingOnStop(pid, StopFlag(), SIGTERM), options.out_dir);
+  workflows::ScriptRunWorkflow::ParseHello(line);  // checked; the replay's poses are the lab's
+  ScriptWatch watch(children, pid);
+  options.stop = &watch.stop();
+  const workflows::LabReplayWorkflow::Result result = workflows::LabReplayWorkflow().Replay(options);
+  watch.Join();
+  if (watch.exit_code() < 0) children.WaitPassingOnStop(pid, StopFlag(), SIGTERM);
+  return result.exit_code;
+}
+
 }  // namespace dream::cli

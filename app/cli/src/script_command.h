@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "dream/workflows/lab_replay_workflow.h"
 
 namespace dream::cli {
 
@@ -21,5 +22,12 @@ std::string ScriptOfConfig(const std::string& path);
 /// 4 when the script failed or ended before it made its Robotarium.
 /// `args.config_path` may also be a config naming the script (ScriptOfConfig).
 int RunScript(const RunArgs& args, const std::vector<std::string>& script_args);
+
+/// `dream lab-replay LAB_DIR` of a Robotarium script's lab run (its
+/// config.yaml names `script:`): the script runs again, as under dream run,
+/// in the replay's folder on a bus of its own, as the agent of every robot,
+/// and the world is the lab run replayed (workflows::LabReplayWorkflow with
+/// script_agent). Returns the replay's exit code.
+int RunScriptLabReplay(workflows::LabReplayWorkflow::Options options);
 
 }  // namespace dream::cli

@@ -108,13 +108,17 @@ run_verdict_t VerdictBroadcast::MessageOf(const RunResult& result, int64_t run_i
 
 void VerdictBroadcast::Send(lcm::LcmInterface& lcm, const run_verdict_t& message, const std::string& log_path,
                             int64_t log_events) {
+  Publish(lcm, message);
+  Record(message, log_path, log_events);
+}
+
+void VerdictBroadcast::Publish(lcm::LcmInterface& lcm, const run_verdict_t& message) {
   const std::vector<uint8_t> bytes = Encoded(message);
   try {
     lcm.Publish(lcm::kVerdictChannel, bytes.data(), static_cast<int>(bytes.size()));
   } catch (const std::exception& e) {
     spdlog::warn("{}: the verdict could not be published ({}); summary.json has it", lcm::kVerdictChannel, e.what());
   }
-  Record(message, log_path, log_events);
 }
 
 void VerdictBroadcast::Record(const run_verdict_t& message, const std::string& log_path, int64_t log_events) {
@@ -128,8 +132,8 @@ void VerdictBroadcast::Record(const run_verdict_t& message, const std::string& l
   }
 }
 
-bool VerdictBroadcast::Resend(lcm::LcmInterface& lcm, const std::string& summary_path, double time_step_s,
-                              ExitCode exit_code, const std::string& log_path) {
+std::optional<run_verdict_t> VerdictBroadcast::RewriteLoggedVerdict(const std::string& summary_path, double time_step_s,
+                                                                    ExitCode exit_code, const std::string& log_path) {
   const node::RunSummary summary = node::RunSummary::Read(summary_path);
   const auto utime = static_cast<int64_t>(std::llround(static_cast<double>(summary.steps) * time_step_s * 1e6));
   RunResult result;
@@ -140,14 +144,13 @@ bool VerdictBroadcast::Resend(lcm::LcmInterface& lcm, const std::string& summary
   run_verdict_t message = MessageOf(result, run_id, utime, exit_code);
   message.verdict = VerdictValue(summary.verdict);  // as summary.json says it, whatever its reasons
   if (const std::optional<run_verdict_t> logged = LastVerdictOf(log_path, run_id)) {
-    if (SaysTheSame(*logged, message)) return false;
+    if (SaysTheSame(*logged, message)) return std::nullopt;
     message.utime = logged->utime;  // the log's order of time stays as the world wrote it
     const std::vector<uint8_t> bytes = Encoded(message);
     node::ReplaceLastLogEvent(log_path, lcm::kVerdictChannel, message.utime, bytes.data(),
                               static_cast<int>(bytes.size()));
   }
-  Send(lcm, message, std::string(), 0);
-  return true;
+  return message;
 }
 
 }  // namespace dream::session

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "dream/files/file_text.h"
@@ -90,9 +91,8 @@ AgentReports AgentReports::Read(const std::string& out_dir, int num_robots) {
 // run's one writer of reports; a run whose agents refused messages is not
 // ready (as one whose world refused some), so the verdict, the picture and
 // the exit code say so. Returns the launch's exit code.
-int AgentReports::Merge(const session::RunSession& session, const std::string& out_dir, int sim_exit,
-                        std::ostream& out) {
-  const AgentReports reports = Read(out_dir, session.config().num_robots);
+int AgentReports::Merge(const session::RunSession& session, const std::string& out_dir, const AgentReports& reports,
+                        int sim_exit, std::ostream& out) {
   const std::string summary_path = out_dir + "/" + session::RunReporter::kSummaryName;
   if (!std::filesystem::exists(summary_path)) {
     spdlog::warn("{}: cannot add the agents' reports (the simulator wrote no summary)", summary_path);
@@ -117,17 +117,22 @@ int AgentReports::Merge(const session::RunSession& session, const std::string& o
   return sim_exit == session::kExitOk ? session::kExitNotReady : sim_exit;
 }
 
-void AgentReports::ResendVerdict(const session::RunSession& session, const std::string& out_dir,
-                                 const std::string& lcm_url, int exit_code) {
-  if (!std::filesystem::exists(out_dir + "/" + session::RunReporter::kSummaryName)) return;  // Merge said so
+bool AgentReports::ResendVerdict(const session::RunSession& session, const std::string& out_dir,
+                                 const AgentReports& reports, const std::string& lcm_url, int exit_code) {
+  if (reports.problem.empty()) return false;  // Merge added no reason: the world's verdict stands as logged
+  if (!std::filesystem::exists(out_dir + "/" + session::RunReporter::kSummaryName)) return false;  // Merge said so
   try {
+    const std::optional<run_verdict_t> changed = session::VerdictBroadcast::RewriteLoggedVerdict(
+        out_dir + "/" + session::RunReporter::kSummaryName, session.config().world.time_step_s,
+        static_cast<session::ExitCode>(exit_code), out_dir + "/" + session::RunReporter::kLogName);
+    if (!changed) return false;
     lcm::LcmBus bus(lcm::ResolveLcmUrl(lcm_url));
-    session::VerdictBroadcast::Resend(bus, out_dir + "/" + session::RunReporter::kSummaryName,
-                                      session.config().world.time_step_s, static_cast<session::ExitCode>(exit_code),
-                                      out_dir + "/" + session::RunReporter::kLogName);
+    session::VerdictBroadcast::Publish(bus, *changed);
+    return true;
   } catch (const std::exception& e) {
     spdlog::warn("the verdict with the agents' reports is not in the run's log nor on DREAM_VERDICT: {}", e.what());
   }
+  return false;
 }
 
 }  // namespace dream::workflows

@@ -1,7 +1,8 @@
 // dream check-submission of a Robotarium script's export (ScriptExport): the
 // script, as uploaded, in the official simulator (or the stand-in); its
-// debug() verdict is the check's. Nothing is imported or compared: the
-// script saves no DREAM result.
+// debug() verdict is the check's. DREAM's recorder, the upload's main file,
+// leaves dream_result.npy in lab_files/, which `dream import` reads as it
+// would the lab's.
 #include <filesystem>
 #include <stdexcept>
 
@@ -26,6 +27,14 @@ CheckSubmission::Result CheckSubmission::RunScriptCheck(const ScriptExport::Mani
     throw std::runtime_error(main_path + " was edited after the export (its SHA-256 is not the one in " +
                              ScriptExport::kManifestName + "); export the script again (dream export " +
                              manifest.script + ")");
+  }
+  if (!manifest.script_file.empty()) {  // the script beside the recorder, as exported
+    const std::string script_path = (fs::path(options_.export_dir) / "upload" / manifest.script_file).string();
+    if (!fs::is_regular_file(script_path, error) || formats::Sha256::HexOfFile(script_path) != manifest.script_sha256) {
+      throw std::runtime_error(
+          script_path + " is missing or was edited after the export (its SHA-256 is not the one in " +
+          ScriptExport::kManifestName + "); export the script again (dream export " + manifest.script + ")");
+    }
   }
   SimulatorChecked();
   const files::OutputFolder out(tools_.choose_folder(

@@ -12,6 +12,9 @@
 #include "dream/session/run_reporter.h"
 #include "dream/session/run_session.h"
 #include "dream/session/verdict_broadcast.h"
+#include "dream/workflows/script_export.h"
+#include "dream/workflows/script_lab_submission.h"
+#include "dream/workflows/script_run_workflow.h"
 #include "dream/world/run_report.h"
 
 namespace dream::workflows {
@@ -43,8 +46,16 @@ std::optional<world::LabVerifierRules::Declaration> ImportWorkflow::Declared(con
   return declared;
 }
 
+bridge::ExportedSubmission ImportWorkflow::ExportOf(const std::string& export_dir, const std::string& result,
+                                                    const std::string& python_runtime_dir) {
+  // A script's export: its run config and plan come from the result the recorder saved.
+  if (ScriptExport::Read(export_dir))
+    return ScriptLabSubmission::Of(export_dir, ResultFile(result), python_runtime_dir);
+  return bridge::ExportedSubmission::Read(export_dir);
+}
+
 ImportWorkflow::Options ImportWorkflow::OptionsOf(const Asked& asked) {
-  const bridge::ExportedSubmission exported = bridge::ExportedSubmission::Read(asked.export_dir);
+  const bridge::ExportedSubmission exported = ExportOf(asked.export_dir, asked.result, asked.python_runtime_dir);
   Options options;
   options.result = asked.result;
   options.export_dir = asked.export_dir;
@@ -65,8 +76,16 @@ int ImportWorkflow::ExitCodeOf(const Result& result) {
 
 ImportWorkflow::Result ImportWorkflow::Import(const Options& options) const {
   Result result;
-  result.imported =
-      bridge::ImportLabRun(ResultFile(options.result), options.export_dir, options.out_dir, options.declared);
+  const std::string result_file = ResultFile(options.result);
+  // A script's run is judged by its last at_pose/at_position check, which the recorder kept beside the result.
+  const std::string goal_record = (fs::absolute(options.out_dir) / ScriptRunWorkflow::kGoalRecordName).string();
+  const bool script = ScriptExport::Read(options.export_dir).has_value();
+  result.imported = bridge::ImportLabRun(
+      result_file,
+      script ? ScriptLabSubmission::Of(options.export_dir, result_file, options.python_runtime_dir, goal_record)
+             : bridge::ExportedSubmission::Read(options.export_dir),
+      options.out_dir, options.declared);
+  if (script) ScriptLabSubmission::CopyGoal(result_file, goal_record);
   const bridge::ImportedRun& imported = result.imported;
   // The run's report, written as every run's is; what it prints is said below, as a lab run's.
   session::RunSession::Options session_options;

@@ -25,6 +25,11 @@ LabReplayWorkflow::Result LabReplayWorkflow::Replay(const Options& options) cons
   const std::string log_in = (fs::path(options.lab_dir) / "run.lcmlog").string();
   const std::string config_in = (fs::path(options.lab_dir) / "config.yaml").string();
   run_config::RunConfig config = run_config::LoadRunConfigFile(config_in);
+  if (!config.script.empty() && !options.script_agent) {
+    throw std::runtime_error(config_in + ": the lab run of a Robotarium script (" + config.script +
+                             "): its agent is the script, which dream lab-replay starts itself (not with "
+                             "--world-only: start no dream agent for it)");
+  }
   bridge::RunTrack track = bridge::ReadRunTrack(log_in);
   if (track.num_robots != config.num_robots) {
     throw std::runtime_error(log_in + ": has " + std::to_string(track.num_robots) + " robots, " + config_in + " " +
@@ -44,7 +49,7 @@ LabReplayWorkflow::Result LabReplayWorkflow::Replay(const Options& options) cons
 
   const std::string out_dir =
       files::RunFolderChoice(options.out_dir, "runs/" + run.config().name + "_lab_replay", options.overwrite).dir();
-  const bool in_process = !options.world_only;
+  const bool in_process = !options.world_only && !options.script_agent;
   lcm::LcmBus bus(options.lcm_url.empty() ? (in_process ? "memq://" : lcm::ResolveLcmUrl(""))
                                           : lcm::ResolveLcmUrl(options.lcm_url));
 
@@ -71,7 +76,9 @@ LabReplayWorkflow::Result LabReplayWorkflow::Replay(const Options& options) cons
   world.start_line = run.config().name + ": replaying " + std::to_string(run.config().sim.max_steps) +
                      " lab steps of " + std::to_string(run.config().num_robots) + " robots (" +
                      config::WorldModeName(run.config().sim.mode) + ") on " + bus.url() +
-                     (in_process ? " with the agents in this process" : "; start the agents with dream agent");
+                     (in_process             ? " with the agents in this process"
+                      : options.script_agent ? " with the script as every robot's agent"
+                                             : "; start the agents with dream agent");
   // The same recording, summary, verdict, report and picture as every run.
   const session::RunSession::Folder folder{out_dir, files::ReadFileText(config_in)};
   result.exit_code =

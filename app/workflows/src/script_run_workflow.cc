@@ -11,6 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "dream/config/config_error.h"
 #include "dream/config/config_node.h"
 #include "dream/config_overrides/config_override.h"
 #include "dream/config_overrides/config_text.h"
@@ -104,7 +105,7 @@ ScriptRunWorkflow::Hello ScriptRunWorkflow::ParseHello(const std::string& line) 
   return result;
 }
 
-std::string ScriptRunWorkflow::ConfigText(const Hello& hello, const Options& options) {
+std::string ScriptRunWorkflow::ConfigText(const Hello& hello, const Options& options, const std::string& goal_record) {
   const fs::path script = fs::absolute(options.script_path).lexically_normal();
   const fs::path placeholder = fs::path(options.python_runtime_dir) / "rps_dream" / "robotarium_script.py";
   std::ostringstream yaml;
@@ -121,12 +122,19 @@ std::string ScriptRunWorkflow::ConfigText(const Hello& hello, const Options& opt
        << "world:\n  mode: lockstep\n  agent_timeout_s: 60.0\n  start_timeout_s: 120.0\n"
        << "  # the official simulator takes any finite command (and saturates the wheels): so does this run\n"
        << "  command_limits: official\n"
+       << "  # the run's steps are the script's step() calls; the script's end (or its error) ends the run\n"
+       << "  script_ends_run: true\n"
        << "initial_poses:\n";
   for (const auto& pose : hello.initial_poses) {
     yaml << "  - [" << Exact(pose[0]) << ", " << Exact(pose[1]) << ", " << Exact(pose[2]) << "]\n";
   }
   yaml << "controller:\n  kind: python\n  module: " << nlohmann::json(placeholder.string()).dump()
        << "\n  class: RobotariumScript\n";
+  if (!goal_record.empty()) {
+    yaml
+        << "  # where the script's last at_pose/at_position check is written: the run's goal unless goal_points/poses\n"
+        << "  goal_record: " << nlohmann::json(goal_record).dump() << "\n";
+  }
   return yaml.str();
 }
 
@@ -141,7 +149,8 @@ std::string ScriptRunWorkflow::BaseConfigText(const std::string& script_path, co
          ConfigText(placeholder, options);
 }
 
-std::string ScriptRunWorkflow::WithHello(const std::string& base_path, const Hello& hello, const Options& options) {
+std::string ScriptRunWorkflow::WithHello(const std::string& base_path, const Hello& hello, const Options& options,
+                                         const std::string& goal_record) {
   YAML::Node root = config::ConfigNode::ParseYaml(config::ConfigNode::ReadFile(base_path), base_path);
   std::string poses = "[";
   for (const auto& pose : hello.initial_poses) {
@@ -151,6 +160,14 @@ std::string ScriptRunWorkflow::WithHello(const std::string& base_path, const Hel
   config_overrides::ApplyConfigOverride(root, "initial_poses", poses + "]", base_path);
   config_overrides::ApplyConfigOverride(root, "seed", std::to_string(options.seed), base_path);
   if (options.steps > 0) config_overrides::ApplyConfigOverride(root, "steps", std::to_string(options.steps), base_path);
+  if (!goal_record.empty()) {
+    config_overrides::ApplyConfigOverride(root, "controller.goal_record", nlohmann::json(goal_record).dump(),
+                                          base_path);
+  }
+  // A config written before the key: the script's run ends with its script (Run refuses false).
+  if (!root["world"] || !root["world"]["script_ends_run"]) {
+    config_overrides::ApplyConfigOverride(root, "world.script_ends_run", "true", base_path);
+  }
   return config_overrides::ConfigText(root, "The run of a Robotarium script from " + base_path +
                                                 ": robots and initial_poses as its\nRobotarium(...) said (" +
                                                 std::to_string(hello.startup_steps) +
@@ -162,12 +179,20 @@ session::RunResult ScriptRunWorkflow::Run(const Hello& hello, const std::string&
   const RunOptions& watch = options_.watch;
   const RunView::Keep keep = RunView::Keep::Parse(watch.view_keep);  // a bad value before anything runs
   const std::string config_path = (fs::path(run_dir) / "robotarium_script.yaml").string();
-  files::WriteFileAtomically(config_path, options_.base_config_path.empty()
-                                              ? ConfigText(hello, options_)
-                                              : WithHello(options_.base_config_path, hello, options_));
+  // DREAM's rps removed an earlier run's record from the folder before its hello: the record is this run's.
+  const fs::path goal_record = fs::path(run_dir) / kGoalRecordName;
+  files::WriteFileAtomically(config_path,
+                             options_.base_config_path.empty()
+                                 ? ConfigText(hello, options_, goal_record.string())
+                                 : WithHello(options_.base_config_path, hello, options_, goal_record.string()));
   const config_overrides::OverriddenConfig overridden(config_path, -1, options_.sets);
   run_config::RunConfig config = overridden.LoadWith(&run_config::LoadRunConfig);
-  config.sim.script_ends_run = true;  // the run's steps are the script's step() calls; its error ends the run
+  if (!config.sim.script_ends_run) {
+    throw config::ConfigError(
+        config_path +
+        ": world.script_ends_run: false, but a script's run ends with its script (the run's steps "
+        "are its step() calls): leave it true");
+  }
   // As any run: paced only when asked (--pace), or watched (--view: real time unless --pace says otherwise).
   if (watch.pace >= 0.0) {
     config.sim.pace = watch.pace;
@@ -175,6 +200,11 @@ session::RunResult ScriptRunWorkflow::Run(const Hello& hello, const std::string&
     config.sim.pace = 1.0;
   }
   session::RunSession session(std::move(config), options_.session);
+  try {
+    session.CheckAgents();  // the controller's keys (the goal's: controller.goal_points, ...) before the run
+  } catch (const config::ConfigError& e) {
+    throw config::ConfigError(overridden.Noted(e.what()));
+  }
   const std::string text = run_config::RunFolderConfigText(session.config(), overridden.Text());
   static const std::atomic<bool> never{false};
   const std::atomic<bool>& stop = options_.interrupted != nullptr ? *options_.interrupted : never;

@@ -22,6 +22,7 @@ import os
 import numpy as np
 
 import rps
+from rps._script_goal import ScriptGoal
 from rps._world_link import WorldGone, WorldLink
 from rps.robotarium_constants import RobotariumConstants
 
@@ -114,6 +115,10 @@ class Robotarium(RobotariumConstants):
             self._fig, self._axes_handle = _offscreen_figure(self.BOUNDARIES)
         self._link = WorldLink(self.number_of_robots)
         self._finished = False
+        # The script's checks from here on (not the start-up drive's): its last one is the run's goal.
+        # Made before the hello, so an earlier run's record in the folder is gone before the world starts.
+        self._goal = ScriptGoal(os.environ.get("DREAM_RUN_DIR", ""))
+        _toolbox_misc().listen_to_checks(self._goal.on_check)
         _tell_dream_run(self.number_of_robots, self._local._poses, self._local._iteration)
         atexit.register(self._finish)
 
@@ -132,6 +137,7 @@ class Robotarium(RobotariumConstants):
         if self._finished:
             raise NotInDream("get_poses() after debug(): the run has ended")
         local._poses = self._link.next_poses()
+        self._goal.poses = local._poses
         local._poses_read = True
         local._stepped = False
         return local._poses.copy()
@@ -174,6 +180,7 @@ class Robotarium(RobotariumConstants):
         if self._finished:
             return
         self._finished = True
+        self._save_goal()
         try:
             if self._link.answered:  # else the script read a step's poses and stopped before step()
                 self._link.next_poses()
@@ -184,7 +191,15 @@ class Robotarium(RobotariumConstants):
     def fail(self, detail):
         """The script failed: the world is told every robot's controller failed."""
         self._finished = True
+        self._save_goal()
         self._link.fail(detail)
+
+    def _save_goal(self):
+        """The script's last check, in the run folder before the world hears the end (it judges then)."""
+        try:
+            self._goal.save()
+        except OSError as error:
+            print(f"dream run: the script's goal could not be written ({error}); the run declares none")
 
     def get_distances(self):
         return self._local.get_distances()
@@ -206,6 +221,12 @@ class Robotarium(RobotariumConstants):
 
     def get_encoders(self):
         return self._local.get_encoders()
+
+
+def _toolbox_misc():
+    """DREAM's one toolbox's misc module (python/dream/misc.py), which every rps.utilities.misc check runs."""
+    from rps.utilities._dream_toolbox import dream_package
+    return dream_package().misc
 
 
 def made():

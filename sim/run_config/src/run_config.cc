@@ -64,7 +64,7 @@ config::SimNodeOptions ReadSimOptions(const config::ConfigNode& root) {
   const config::ConfigNode world = root.Optional("world");
   if (world.IsDefined()) {
     world.RejectUnknownKeys({"mode", "agent_timeout_s", "start_timeout_s", "resend_interval_s", "max_abs_v_mps",
-                             "max_abs_w_radps", "command_limits", "realism", "start"});
+                             "max_abs_w_radps", "command_limits", "script_ends_run", "realism", "start"});
     if (world.Has("mode")) {
       const config::ConfigNode mode = world.Required("mode");
       try {
@@ -89,6 +89,8 @@ config::SimNodeOptions ReadSimOptions(const config::ConfigNode& root) {
     options.max_abs_v_mps = positive("max_abs_v_mps", options.max_abs_v_mps);
     options.max_abs_w_radps = positive("max_abs_w_radps", options.max_abs_w_radps);
     ReadCommandLimits(world, &options);
+    // A Robotarium script's run (dream run SCRIPT.py writes it): the script ends the run.
+    options.script_ends_run = world.GetBool("script_ends_run", options.script_ends_run);
   }
   std::string error;
   if (!options.IsValid(&error)) root.Fail(error);  // unreachable when the checks above hold
@@ -386,6 +388,9 @@ RunConfig LoadRunConfig(const config::ConfigNode& root) {
   // What agents read too, from the one place that checks it.
   static_cast<config::ControllerConfig&>(config) = config::LoadControllerConfig(root);
   config.sim = ReadSimOptions(root);
+  if (config.sim.script_ends_run && config.script.empty()) {
+    root.Required("world").FailAt("script_ends_run", "only a Robotarium script's run (script:) ends with its script");
+  }
   config.start = ReadWorldStart(root);
   config.realism = ReadRealism(root, &config);
   config.obstacles = ReadObstacles(root);

@@ -126,6 +126,12 @@ struct ImportedRun {
 ImportedRun ImportLabRun(const std::string& result_path, const std::string& export_dir, const std::string& out_dir,
                          const std::optional<world::LabVerifierRules::Declaration>& declared = {});
 
+/// The same for an export described in memory (`exported`: a Robotarium
+/// script's export, whose run config and plan are made from its result:
+/// workflows::ScriptLabSubmission).
+ImportedRun ImportLabRun(const std::string& result_path, const ExportedSubmission& exported, const std::string& out_dir,
+                         const std::optional<world::LabVerifierRules::Declaration>& declared = {});
+
 /// Writes `track` as a run log (see ImportLabRun) to `log_path` atomically
 /// and returns the violations counted on it. `end_state` and `detail` go in
 /// the final DREAM_STATUS.

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "dream/lcm/lcm_interface.h"
@@ -39,17 +40,22 @@ class VerdictBroadcast {
 
   /// The verdict of a summary.json changed after its world published and
   /// logged it (dream launch's agents' reports, RunReporter::AddReasons):
-  /// when the last DREAM_VERDICT of the log at `log_path` says otherwise than
-  /// summary.json (verdict, goal, reasons, exit code), it is replaced by
-  /// summary.json's (node::ReplaceLastLogEvent) and that one published again
-  /// on `lcm`, so the log and a viewer both end on the verdict summary.json
-  /// says. A log that does not end on this run's DREAM_VERDICT (a log the disk
-  /// refused) is left as it is and the verdict only published. `time_step_s`:
-  /// the run's step, for its last simulated time. Returns whether it published.
+  /// summary.json's as a message when the last DREAM_VERDICT of the log at
+  /// `log_path` says otherwise (verdict, goal, reasons, exit code), that event
+  /// then replaced by it (node::ReplaceLastLogEvent); none when the log says
+  /// the same already, and then nothing is written. A log that does not end on
+  /// this run's DREAM_VERDICT (a log the disk refused) is left as it is and
+  /// the message returned. The caller publishes a message returned (Publish),
+  /// so the log and a viewer both end on the verdict summary.json says, and
+  /// opens no bus when none is. `time_step_s`: the run's step, for its last
+  /// simulated time.
   /// @throws std::runtime_error naming the file when summary.json cannot be
   /// read, or the log cannot be rewritten.
-  static bool Resend(lcm::LcmInterface& lcm, const std::string& summary_path, double time_step_s, ExitCode exit_code,
-                     const std::string& log_path);
+  static std::optional<run_verdict_t> RewriteLoggedVerdict(const std::string& summary_path, double time_step_s,
+                                                           ExitCode exit_code, const std::string& log_path);
+
+  /// Publishes `message` on DREAM_VERDICT (a failure is warned about: summary.json has it).
+  static void Publish(lcm::LcmInterface& lcm, const run_verdict_t& message);
 };
 
 }  // namespace dream::session

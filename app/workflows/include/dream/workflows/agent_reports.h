@@ -22,22 +22,26 @@ class AgentReports {
   /// readable is listed (the agent died: the world's summary says more).
   static AgentReports Read(const std::string& out_dir, int num_robots);
 
-  /// The agents' refusals, in summary.json's "agents" section, added by the
-  /// run's one writer of reports (`session`'s RunReporter); a run whose agents
-  /// refused messages is not ready (as one whose world refused some), so the
-  /// verdict, the picture and the exit code say so, and `out` why. Returns the
-  /// launch's exit code given the simulator's `sim_exit`.
-  static int Merge(const session::RunSession& session, const std::string& out_dir, int sim_exit,
-                   std::ostream& out = std::cout);
+  /// The agents' refusals (`reports`, Read's), in summary.json's "agents"
+  /// section, added by the run's one writer of reports (`session`'s
+  /// RunReporter); a run whose agents refused messages is not ready (as one
+  /// whose world refused some), so the verdict, the picture and the exit code
+  /// say so, and `out` why. Returns the launch's exit code given the
+  /// simulator's `sim_exit`.
+  static int Merge(const session::RunSession& session, const std::string& out_dir, const AgentReports& reports,
+                   int sim_exit, std::ostream& out = std::cout);
 
   /// The simulator published and logged its verdict on DREAM_VERDICT before
-  /// the agents' reports were merged: when summary.json's now says otherwise
-  /// (a worse verdict, more reasons, another exit code), it replaces the one
-  /// the run's log ends on and is published on `lcm_url`, so the log and a
-  /// viewer end on summary.json's (session::VerdictBroadcast::Resend; a
-  /// failure is logged, never the launch's).
-  static void ResendVerdict(const session::RunSession& session, const std::string& out_dir, const std::string& lcm_url,
-                            int exit_code);
+  /// the agents' reports were merged: when they refused something and
+  /// summary.json's verdict now says otherwise (a worse verdict, more reasons,
+  /// another exit code), it replaces the one the run's log ends on and is
+  /// published on `lcm_url`, so the log and a viewer end on summary.json's
+  /// (session::VerdictBroadcast::RewriteLoggedVerdict, then Publish). Reports
+  /// that refused nothing changed nothing: the log is not read and no bus is
+  /// opened; nor is one when the log says summary.json's verdict already. A
+  /// failure is logged, never the launch's. Returns whether it published.
+  static bool ResendVerdict(const session::RunSession& session, const std::string& out_dir, const AgentReports& reports,
+                            const std::string& lcm_url, int exit_code);
 
   nlohmann::ordered_json section;  ///< summary.json's "agents"
   std::string problem;             ///< what they refused, in one line ("" when nothing)

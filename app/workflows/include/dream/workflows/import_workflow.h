@@ -48,6 +48,13 @@ class ImportWorkflow {
   /// UPLOAD.txt's values unless told otherwise.
   static Options OptionsOf(const Asked& asked);
 
+  /// The export `result` is a lab run of: what dream export wrote in
+  /// `export_dir`, or, for a Robotarium script's export (ScriptExport), the
+  /// one ScriptLabSubmission makes from the result.
+  /// @throws std::runtime_error naming the file.
+  static bridge::ExportedSubmission ExportOf(const std::string& export_dir, const std::string& result,
+                                             const std::string& python_runtime_dir);
+
   /// What the import wrote and how the run was judged.
   struct Result {
     bridge::ImportedRun imported;

@@ -28,6 +28,11 @@ class LabReplayWorkflow {
     long long steps = 0;      ///< 0: the whole lab run
     std::string mode;         ///< empty: the config's
     bool world_only = false;  ///< no in-process agents: they run elsewhere (dream agent)
+    /// A Robotarium script's lab run (its config names `script:`): the
+    /// caller started the script on `lcm_url` as the agent of every robot
+    /// (dream lab-replay of it, docs/robotarium-scripts.md); implies world_only.
+    /// Without it such a run is refused: its RobotariumScript agents drive nothing.
+    bool script_agent = false;
     /// The Python runtime, for a Python controller's own metrics ("": none).
     std::string python_runtime_dir;
     /// Ends the replay early when set (Ctrl-C); none: it ends by itself.

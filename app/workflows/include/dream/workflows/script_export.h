@@ -9,10 +9,13 @@ namespace dream::workflows {
 
 /// `dream export SCRIPT.py` (docs/robotarium-scripts.md#the-upload): the
 /// upload of a Robotarium script is the script itself, byte for byte, and
-/// nothing of DREAM's. This copies it into <out>/upload/ once a checker
-/// (python/rps_dream/check_imports.py, started by the caller) found that it
-/// imports only what the Robotarium has, and writes a manifest
-/// (script_export.json) that `dream check-submission` reads.
+/// DREAM's recorder as its main file (kRecorderName: it runs the script as
+/// __main__ and saves the poses it read and the commands it sent as
+/// dream_result.npy, which `dream import` reads). This copies both into
+/// <out>/upload/ once a checker (python/rps_dream/check_imports.py, started by
+/// the caller) found that the script imports only what the Robotarium has,
+/// and writes a manifest (script_export.json) that `dream check-submission`
+/// and `dream import` read.
 class ScriptExport {
  public:
   struct Options {
@@ -33,7 +36,8 @@ class ScriptExport {
     bool refused = false;
     std::string refusal;  ///< what the Robotarium lacks, when refused: nothing written
     std::string out_dir;
-    std::string main_file;  ///< the upload's file, the one to name as the main file
+    std::string main_file;    ///< the upload's file to name as the main file: the recorder
+    std::string script_file;  ///< the script's file in the upload
     std::vector<std::string> imports;
   };
 
@@ -42,8 +46,14 @@ class ScriptExport {
     std::string script;     ///< the source, as exported
     std::string main_file;  ///< upload/<main_file>
     std::string sha256;     ///< of upload/<main_file> when exported
+    /// The script's file in upload/ and its SHA-256 (empty in an export
+    /// made before the recorder: the script was the main file).
+    std::string script_file;
+    std::string script_sha256;
   };
   static constexpr const char* kManifestName = "script_export.json";
+  /// The recorder's name in the upload (python/rps_dream/dream_record.py).
+  static constexpr const char* kRecorderName = "dream_record.py";
 
   /// @throws std::runtime_error naming the script when it is missing or the
   ///         checker cannot read it (a syntax error, with its line).

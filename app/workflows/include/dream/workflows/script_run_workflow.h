@@ -50,6 +50,13 @@ class ScriptRunWorkflow {
     const std::atomic<bool>* interrupted = nullptr;
   };
 
+  /// Where DREAM's rps writes the script's last at_pose/at_position check in
+  /// the run folder when the script ends the run: the goal the run is judged
+  /// by unless its config gives one (`controller.goal_points`/`goal_poses`;
+  /// docs/robotarium-scripts.md#the-goal). Run names it as the config's
+  /// `controller.goal_record`, so the judge (robotarium_script.py) reads it.
+  static constexpr const char* kGoalRecordName = "script_goal.json";
+
   /// A script run's step limit unless --steps says otherwise (about 9 hours simulated).
   static constexpr long long kDefaultSteps = 1000000;
 
@@ -68,8 +75,9 @@ class ScriptRunWorkflow {
   /// the bad value (robots 1..50, one finite [x, y, theta] per robot).
   static Hello ParseHello(const std::string& line);
 
-  /// The run config (YAML) of `hello`'s run, before --seed and --set.
-  static std::string ConfigText(const Hello& hello, const Options& options);
+  /// The run config (YAML) of `hello`'s run, before --seed and --set;
+  /// `goal_record` ("": none) its controller.goal_record (kGoalRecordName in the run folder).
+  static std::string ConfigText(const Hello& hello, const Options& options, const std::string& goal_record = "");
 
   /// What a sweep of the script starts from (`dream sweep SCRIPT.py`): ConfigText
   /// for one robot at the origin, a placeholder the script's own Robotarium(...)
@@ -77,9 +85,11 @@ class ScriptRunWorkflow {
   static std::string BaseConfigText(const std::string& script_path, const std::string& python_runtime_dir);
 
   /// The text of the config at `base_path` (which names the script) with
-  /// `hello`'s robots and start poses, options.seed, and options.steps when > 0.
+  /// `hello`'s robots and start poses, options.seed, options.steps when > 0,
+  /// and `goal_record` as controller.goal_record when given.
   /// @throws config::ConfigError naming the file when it is not YAML.
-  static std::string WithHello(const std::string& base_path, const Hello& hello, const Options& options);
+  static std::string WithHello(const std::string& base_path, const Hello& hello, const Options& options,
+                               const std::string& goal_record = "");
 
   explicit ScriptRunWorkflow(Options options) : options_(std::move(options)) {}
 

@@ -27,8 +27,8 @@ struct SimNodeOptions {
   int64_t max_steps = 3000;
   /// End the run early once every robot's command says done.
   bool stop_when_done = true;
-  /// A Robotarium script's run (dream run SCRIPT.py, set by the workflow, no
-  /// config key): the script is every robot's agent and the run ends with it.
+  /// `world.script_ends_run`: a Robotarium script's run (dream run SCRIPT.py
+  /// writes it in the run's config): the script is every robot's agent and the run ends with it.
   /// Every robot's command for a step saying done ends the run at that step,
   /// those commands not applied (the script's last step() was the run's last
   /// step, as the official simulator counts); every robot's controller failed
