@@ -59,6 +59,10 @@ class WorldLink:
         self.agent_id = random.SystemRandom().getrandbits(62) + 1
         self.follower = follower.WorldFollower()
         self.bus = lcm.Lcm(self.url)
+        # Commands packed as lcm-gen's velocity_command_t.encode packs them, without its per-message objects.
+        self._command_fingerprint = self._command_t._get_packed_fingerprint()
+        self._command_fields = struct.Struct(">qqqiqddb")
+        self._command_channels = [f"DREAM_CMD_{i}" for i in range(n)]
         self._fresh = None       # (message, 3 x n poses) of a step not yet handed out
         self._current = None     # the message of the step handed out last
         self._answers = []       # that step's encoded commands, sent again on a resend
@@ -112,13 +116,10 @@ class WorldLink:
     def send(self, velocities, done=False):
         """Answers the current step: robot i drives velocities[:, i] (v m/s, w rad/s)."""
         step = self._current
-        self._answers = []
-        for i in range(self.n):
-            command = self._command_t()
-            command.utime, command.step, command.run_id = step.utime, step.step, step.run_id
-            command.robot_id, command.agent_id = i, self.agent_id
-            command.v, command.w, command.done = float(velocities[0, i]), float(velocities[1, i]), bool(done)
-            self._answers.append((f"DREAM_CMD_{i}", command.encode()))
+        pack, fingerprint, done = self._command_fields.pack, self._command_fingerprint, bool(done)
+        speeds, turns = np.asarray(velocities, dtype=float)[:2, :self.n].tolist()
+        self._answers = [(channel, fingerprint + pack(step.utime, step.step, step.run_id, i, self.agent_id, v, w, done))
+                         for i, (channel, v, w) in enumerate(zip(self._command_channels, speeds, turns))]
         self.answered = True
         for channel, answer in self._answers:
             self.bus.publish(channel, answer)
