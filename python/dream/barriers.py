@@ -41,18 +41,6 @@ def _cvxopt():
     return cvxopt
 
 
-def _cvxopt_matrix(array):
-    return _cvxopt().matrix(array)
-
-
-def _potrf(matrix):
-    _cvxopt().lapack.potrf(matrix)
-
-
-def _potrs(factored, rhs):
-    _cvxopt().lapack.potrs(factored, rhs)
-
-
 def _positive(name, value):
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or value <= 0:
         raise ValueError("%s must be a positive number, got %r" % (name, value))
@@ -180,11 +168,9 @@ def _interior_step(kkt, x, gx, s, d, di, lmbda, rx, rz, gap):
     scaled += 1.0
     scaled *= lmbda
     ds, dz = np.sqrt(scaled, out=scaled)
-    dx *= step
-    dx += x
     gdx *= step
     gdx += gx
-    return dx, gdx, d * ds / dz, ds * dz
+    return x + step * dx, gdx, d * ds / dz, ds * dz
 
 
 class _RowLayout:
@@ -216,22 +202,24 @@ class _RowLayout:
         self.rows = np.concatenate((pair_rows, pair_rows, pair_rows, pair_rows, single_rows, single_rows))
         self.columns = np.concatenate((f, f + 1, s, s + 1, r, r + 1))
         self.single_entries = np.concatenate((self.sides[:, 0], self.sides[:, 1]))
-        # 2 I + A' W^-2 A: a row adds w u u' to its robots' diagonal blocks (u the row's 2 entries at a robot's
-        # columns), and a pair's row alone its block off the diagonal. Flat places in the 2n x 2n matrix:
-        block = (np.array([0, 0, 1, 1])[None, :], np.array([0, 1, 0, 1])[None, :])
+        # 2 I + A' W^-2 A, its lower triangle (all cvxopt's Cholesky reads): a row adds w u u' to its robots'
+        # diagonal blocks (u the row's 2 entries at a robot's columns: the entries (0,0), (1,0), (1,1) of
+        # the 2 x 2 block), and a pair i < j's row alone w v u' = -w u u' to the block (j, i) below it.
+        diagonal_block = (np.array([0, 1, 1])[None, :], np.array([0, 0, 1])[None, :])
+        whole_block = (np.array([0, 0, 1, 1])[None, :], np.array([0, 1, 0, 1])[None, :])
 
-        def places(i, j):
+        def places(i, j, block):  # flat places in the 2n x 2n matrix
             return ((2 * i[:, None] + block[0]) * self.size + (2 * j[:, None] + block[1])).reshape(-1)
 
-        # Every product's place: a pair's u u' on both robots' diagonal blocks and -u u' on the two blocks
-        # off it, each single row's on its robot's; and the row whose weight it takes.
-        self.product_places = np.concatenate((places(self.first, self.first), places(self.second, self.second),
-                                              places(self.robots, self.robots), places(self.first, self.second),
-                                              places(self.second, self.first)))
-        pair_products_rows = np.repeat(pair_rows, 4)
-        self.product_rows = np.concatenate((pair_products_rows, pair_products_rows, np.repeat(single_rows, 4),
-                                            pair_products_rows, pair_products_rows))
-        self.single_products = (self.sides[:, :, None] * self.sides[:, None, :]).reshape(-1)
+        # Every product's place, in _StructuredKkt.products' order, and the row whose weight it takes.
+        self.product_places = np.concatenate((places(self.first, self.first, diagonal_block),
+                                              places(self.second, self.second, diagonal_block),
+                                              places(self.robots, self.robots, diagonal_block),
+                                              places(self.second, self.first, whole_block)))
+        self.product_rows = np.concatenate((np.repeat(pair_rows, 3), np.repeat(pair_rows, 3),
+                                            np.repeat(single_rows, 3), np.repeat(pair_rows, 4)))
+        s0, s1 = self.sides[:, 0], self.sides[:, 1]
+        self.single_products = np.stack((s0 * s0, s1 * s0, s1 * s1), axis=1).reshape(-1)
         self.diagonal = np.arange(self.size) * (self.size + 1)
 
     def pair_parts(self, x, safety_radius, barrier_gain):
@@ -273,10 +261,11 @@ class _StructuredKkt:
         self.size, self.row_count, self.rows, self.columns = layout.size, layout.row_count, layout.rows, layout.columns
         u = -2 * diff
         self.entries = np.concatenate((u[0], u[1], -u[0], -u[1], layout.single_entries))
-        # A pair's u u' = v v' = 4 (x_i - x_j)(x_i - x_j)', u v' = v u' = -u u', in _RowLayout.product_places' order.
-        pair_products = (u.T[:, :, None] * u.T[:, None, :]).reshape(-1)
-        off = -pair_products
-        self.products = np.concatenate((pair_products, pair_products, layout.single_products, off, off))
+        # A pair's u u' = v v' = 4 (x_i - x_j)(x_i - x_j)' and v u' = -u u', in _RowLayout.product_places' order.
+        uu00, uu10, uu11 = u[0] * u[0], u[1] * u[0], u[1] * u[1]
+        diagonal = np.stack((uu00, uu10, uu11), axis=1).reshape(-1)
+        below = np.stack((-uu00, -uu10, -uu10, -uu11), axis=1).reshape(-1)
+        self.products = np.concatenate((diagonal, diagonal, layout.single_products, below))
 
     def times(self, u):
         return np.bincount(self.rows, self.entries * u[self.columns], minlength=self.row_count)
@@ -285,23 +274,25 @@ class _StructuredKkt:
         return np.bincount(self.columns, self.entries * y[self.rows], minlength=self.size)
 
     def factor(self, d, di):
-        """For the scaling W = diag(d) (di = 1 / d): solve(bx, bz) -> (ux, uz) of cvxopt's KKT system
-        [2I A'; A -W'W] [ux; W^-1 uz] = [bx; bz]. ArithmeticError when 2I + A'W^-2A is not positive
-        definite (only with non-finite data), as cvxopt's own factoring fails."""
-        layout = self.layout
+        """For the scaling W = diag(d) (di = 1 / d): solve(bx, bz) -> (ux, A ux, uz) of cvxopt's KKT
+        system [2I A'; A -W'W] [ux; W^-1 uz] = [bx; bz]. ArithmeticError when 2I + A'W^-2A is not
+        positive definite (only with non-finite data), as cvxopt's own factoring fails."""
+        cvxopt = _cvxopt()
+        layout, size, rows, columns, entries = self.layout, self.size, self.rows, self.columns, self.entries
         weights = di * di
-        M = np.bincount(layout.product_places, self.products * weights[layout.product_rows],
-                        minlength=self.size * self.size)
+        M = np.bincount(layout.product_places, self.products * weights[layout.product_rows], minlength=size * size)
         M[layout.diagonal] += 2.0
-        factored = _cvxopt_matrix(M.reshape(self.size, self.size))
-        _potrf(factored)
-        weighted_entries = self.entries * weights[self.rows]  # A' W^-2, entry by entry
+        factored = cvxopt.matrix(M.reshape(size, size))
+        cvxopt.lapack.potrf(factored)
+        weighted_entries = entries * weights[rows]  # A' W^-2, entry by entry
+        matrix, potrs, bincount, frombuffer, row_count = cvxopt.matrix, cvxopt.lapack.potrs, np.bincount, \
+            np.frombuffer, self.row_count
 
         def solve(bx, bz):
-            rhs = _cvxopt_matrix(bx + np.bincount(self.columns, weighted_entries * bz[self.rows], minlength=self.size))
-            _potrs(factored, rhs)
-            ux = np.array(rhs).reshape(-1)
-            gux = self.times(ux)
+            rhs = matrix(bx + bincount(columns, weighted_entries * bz[rows], minlength=size))
+            potrs(factored, rhs)
+            ux = frombuffer(rhs)
+            gux = bincount(rows, entries * ux[columns], minlength=row_count)
             uz = gux - bz
             uz *= di
             return ux, gux, uz
