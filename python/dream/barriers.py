@@ -1,6 +1,8 @@
 """The Robotarium V2 barrier certificates (rps/utilities/barrier_certificates.py), the same
-numbers on the same solver: cvxopt's QP with rps's settings (reltol and feastol 1e-2, at most 50
-iterations), so a command agrees with the official simulator's and the lab's. The C++ twin,
+numbers as rps's cvxopt QP with rps's settings (reltol and feastol 1e-2, at most 50 iterations):
+cvxopt's own iterations, run in numpy on the QP's structure (_interior_point; ~4e-13 from rps's
+commands), or with bit_exact=True rps's very call of cvxopt.solvers.qp, so a command agrees with
+the official simulator's and the lab's. The C++ twin,
 dream::barriers (agents/barriers/), iterates as cvxopt does and agrees to ~1e-11
 (tests/data/robotarium_v2_barriers.json; docs/python-controllers.md#barrier-certificates).
 

@@ -27,12 +27,12 @@ os.environ["DREAM_PYTHON_TYPES_DIR"] = TYPES_DIR
 os.environ["DREAM_BRIDGE_PYTHON_DIR"] = os.path.join(SOURCE_DIR, "bridge", "python")
 sys.path.insert(0, os.path.join(SOURCE_DIR, "python", "rps_dream"))
 
-from rps._world_link import WorldLink, _types  # noqa: E402
+from rps._world_link import WorldGone, WorldLink, _types  # noqa: E402
 
 
 class WorldLinkTest(unittest.TestCase):
     def setUp(self):
-        self.poses_t, self.command_t, _, _ = _types()
+        self.poses_t, self.command_t, _, self.status_t = _types()
         self.link = WorldLink(3, url="memq://")
         self.heard = []
         self.link.bus.subscribe("DREAM_CMD_.*", lambda channel, data: self.heard.append((channel, data)))
@@ -40,12 +40,20 @@ class WorldLinkTest(unittest.TestCase):
     def tearDown(self):
         self.link.close()
 
-    def publish_step(self, step):
+    def encode_step(self, step, robots=3, theta=(0.0, 1.0, -2.0)):
         message = self.poses_t()
-        message.utime, message.step, message.run_id, message.num_robots = 33000 * step, step, 77, 3
-        message.x, message.y, message.theta = [0.1, 0.2, 0.3], [0.0, -0.1, 0.5], [0.0, 1.0, -2.0]
-        message.v, message.w = [0.0] * 3, [0.0] * 3
-        self.link.bus.publish("DREAM_POSES", message.encode())
+        message.utime, message.step, message.run_id, message.num_robots = 33000 * step, step, 77, robots
+        message.x, message.y = [0.1, 0.2, 0.3][:robots], [0.0, -0.1, 0.5][:robots]
+        message.theta, message.v, message.w = list(theta)[:robots], [0.0] * robots, [0.0] * robots
+        return message.encode()
+
+    def publish_step(self, step, **kwargs):
+        self.link.bus.publish("DREAM_POSES", self.encode_step(step, **kwargs))
+
+    def publish_status(self, step, state):
+        status = self.status_t()
+        status.step, status.run_id, status.state, status.num_robots, status.detail = step, 77, state, 3, "the end"
+        self.link.bus.publish("DREAM_STATUS", status.encode())
 
     def deliver(self):
         while self.link.bus.handle_timeout(0) > 0:
@@ -80,6 +88,24 @@ class WorldLinkTest(unittest.TestCase):
         self.deliver()
         self.assertEqual(self.heard[3:], first)
         self.assertEqual(first[1][1], self.expected(9, 1, 0.0, 0.4, False))
+
+    def test_foreign_and_forged_steps_are_not_handed_out_and_an_ending_status_ends(self):
+        self.publish_step(1)
+        np.testing.assert_array_equal(self.link.next_poses()[0], [0.1, 0.2, 0.3])
+        self.link.send(np.zeros((2, 3)))
+        self.publish_step(2, robots=2)  # another world's, with two robots
+        self.publish_step(2, theta=(0.0, float("nan"), 0.0))
+        forged = bytearray(self.encode_step(2))
+        forged[0] ^= 0xFF  # not robot_poses_t's fingerprint
+        self.link.bus.publish("DREAM_POSES", bytes(forged))
+        self.link.bus.publish("DREAM_POSES", b"\x00" * 20)
+        self.publish_status(2, 1)  # running: not an end
+        self.deliver()
+        self.assertIsNone(self.link._fresh)
+        self.assertFalse(self.link.ended)
+        self.publish_status(2, 2)  # finished
+        with self.assertRaisesRegex(WorldGone, "the end"):
+            self.link.next_poses()
 
 
 if __name__ == "__main__":
