@@ -131,7 +131,7 @@ def _interior_iterations(kkt, q, h):
 def _interior_start(kkt, q, h):
     """coneqp's starting point: the KKT system with W = I, s and z moved into the cone."""
     ones = np.ones(h.size)
-    x, _, z = kkt.factor(ones, ones)(-q, h.copy())
+    x, _, z = kkt.factor(ones, ones)(q, h.copy())
     s = -z
     for v in (s, z):
         t = -v.min()
@@ -146,8 +146,7 @@ def _interior_step(kkt, x, gx, s, d, di, lmbda, rx, rz, gap):
     updated; x, A x, d, lmbda after it. The affine direction's right-hand side is -lmbda o lmbda,
     which the step scales back by lmbda: -lmbda, and its z part -rz + d lmbda = s - rz."""
     solve = kkt.factor(d, di)
-    neg_rx = -rx
-    _, _, dz = solve(neg_rx, s - rz)
+    _, _, dz = solve(rx, s - rz)
     ds = -lmbda - dz
     dsdz = float(ds @ dz)
     correction = ds * dz
@@ -161,9 +160,11 @@ def _interior_step(kkt, x, gx, s, d, di, lmbda, rx, rz, gap):
     bz = ds * d
     np.negative(rz, out=rz)
     rz -= bz
-    dx, gdx, dz = solve(neg_rx, rz)
-    scaled = np.array((ds - dz, dz))
-    scaled /= lmbda  # ds and dz, scaled
+    dx, gdx, dz = solve(rx, rz)
+    scaled = np.empty((2, dz.size))  # ds and dz, scaled
+    np.subtract(ds, dz, out=scaled[0])
+    scaled[1] = dz
+    scaled /= lmbda
     t = max(0.0, -float(scaled.min()))
     step = 1.0 if t == 0 else min(1.0, 0.99 / t)
     scaled *= step
@@ -276,8 +277,8 @@ class _StructuredKkt:
         return np.bincount(self.columns, self.entries * y[self.rows], minlength=self.size)
 
     def factor(self, d, di):
-        """For the scaling W = diag(d) (di = 1 / d): solve(bx, bz) -> (ux, A ux, uz) of cvxopt's KKT
-        system [2I A'; A -W'W] [ux; W^-1 uz] = [bx; bz]. ArithmeticError when 2I + A'W^-2A is not
+        """For the scaling W = diag(d) (di = 1 / d): solve(rx, bz) -> (ux, A ux, uz) of cvxopt's KKT
+        system [2I A'; A -W'W] [ux; W^-1 uz] = [-rx; bz]. ArithmeticError when 2I + A'W^-2A is not
         positive definite (only with non-finite data), as cvxopt's own factoring fails."""
         cvxopt = _cvxopt()
         layout, size, rows, columns, entries = self.layout, self.size, self.rows, self.columns, self.entries
@@ -290,8 +291,8 @@ class _StructuredKkt:
         matrix, potrs, bincount, frombuffer, row_count = cvxopt.matrix, cvxopt.lapack.potrs, np.bincount, \
             np.frombuffer, self.row_count
 
-        def solve(bx, bz):
-            rhs = matrix(bx + bincount(columns, weighted_entries * bz[rows], minlength=size))
+        def solve(rx, bz):  # bx = -rx
+            rhs = matrix(bincount(columns, weighted_entries * bz[rows], minlength=size) - rx)
             potrs(factored, rhs)
             ux = frombuffer(rhs)
             gux = bincount(rows, entries * ux[columns], minlength=row_count)
