@@ -1,6 +1,8 @@
 """The Robotarium V2 barrier certificates (rps/utilities/barrier_certificates.py), the same
-numbers on the same solver: cvxopt's QP with rps's settings (reltol and feastol 1e-2, at most 50
-iterations), so a command agrees with the official simulator's and the lab's. The C++ twin,
+numbers as rps's cvxopt QP with rps's settings (reltol and feastol 1e-2, at most 50 iterations):
+cvxopt's own iterations, run in numpy on the QP's structure (_interior_point; ~4e-13 from rps's
+commands), or with bit_exact=True rps's very call of cvxopt.solvers.qp, so a command agrees with
+the official simulator's and the lab's. The C++ twin,
 dream::barriers (agents/barriers/), iterates as cvxopt does and agrees to ~1e-11
 (tests/data/robotarium_v2_barriers.json; docs/python-controllers.md#barrier-certificates).
 
@@ -18,12 +20,11 @@ import warnings
 
 import numpy as np
 
-# rps's cvxopt settings, passed to each call (rps sets them globally for every cvxopt user).
+# rps's cvxopt settings, passed to each call (rps sets them globally for every cvxopt user), and
+# the ones _interior_point follows. A certificate made with bit_exact=True hands rps's dense problem
+# to cvxopt.solvers.qp, bit for bit (the check-submission stand-in's do, so its start-up drive is
+# the official one); otherwise cvxopt's iterations run in numpy (answers within ~1e-11 of rps's).
 QP_OPTIONS = {"show_progress": False, "reltol": 1e-2, "feastol": 1e-2, "maxiters": 50}
-# From this many robots cvxopt's KKT step goes through _StructuredKkt (the same iterates, answers
-# within ~1e-11 of rps's). A certificate made with bit_exact=True keeps rps's dense step for every
-# size, bit for bit (the check-submission stand-in's are, so its start-up drive is the official one).
-STRUCTURED_KKT_FROM_ROBOTS = 10
 # The boundaries rps's certificates default to: the arena for the unicycle one, 0.1 m beyond it
 # for the single-integrator one (as rps has it).
 UNICYCLE_BOUNDARY = (-1.6, 1.6, -1.0, 1.0)
@@ -65,21 +66,15 @@ def _columns(name, array, rows):
     return a
 
 
-def _solve_qp(vhat, A, b, bit_exact):
-    """min |v - vhat|^2 s.t. A v <= b as rps builds and solves it; None when cvxopt does not end
-    'optimal' (rps then commands zeros). cvxopt iterates as in rps; only its linear algebra is
-    ours (_StructuredKkt), which is why a 20-robot step takes about 2 ms instead of 15."""
+def _solve_qp(vhat, A, b):
+    """min |v - vhat|^2 s.t. A v <= b as rps builds and solves it (cvxopt.solvers.qp on the dense
+    problem, bit for bit); None when cvxopt does not end 'optimal' (rps then commands zeros)."""
     cvxopt = _cvxopt()
     n = vhat.shape[1]
     H = cvxopt.spmatrix(2.0, range(2 * n), range(2 * n))
     f = cvxopt.matrix(-2.0 * vhat.reshape(-1, order="F"))
-    kkt = _StructuredKkt(A, structured=not bit_exact)
-    # A few entries per row: sparse, cvxopt's own products with G are cheap too; below
-    # STRUCTURED_KKT_FROM_ROBOTS dense, exactly as rps hands it over (setting up the sparse one costs more).
-    G = cvxopt.spmatrix(kkt.entries, kkt.rows, kkt.columns, A.shape) if kkt.usable else cvxopt.matrix(A)
     try:
-        solution = cvxopt.solvers.qp(H, f, G, cvxopt.matrix(b),
-                                     kktsolver=kkt.factor if kkt.usable else None, options=dict(QP_OPTIONS))
+        solution = cvxopt.solvers.qp(H, f, cvxopt.matrix(A), cvxopt.matrix(b), options=dict(QP_OPTIONS))
     except (ArithmeticError, ValueError, ZeroDivisionError):
         return None
     if solution["status"] != "optimal":
@@ -87,117 +82,225 @@ def _solve_qp(vhat, A, b, bit_exact):
     return np.reshape(np.array(solution["x"]), (2, n), order="F")
 
 
+def _interior_point(kkt, q, h):
+    """cvxopt's coneqp (cvxopt/coneprog.py) for min x'x + q'x s.t. G x <= h, G given by `kkt`, with
+    QP_OPTIONS: its start, its predictor-corrector steps with Mehrotra's correction and its stopping
+    test, step for step, on numpy vectors (the inequalities are its 'l' cone alone, which makes every
+    scaling elementwise). The x of an 'optimal' end, or None where cvxopt would not end 'optimal'
+    (a singular KKT matrix, non-finite data, the iteration limit)."""
+    if not (np.all(np.isfinite(q)) and np.all(np.isfinite(h))):
+        return None
+    # Where cvxopt's elementwise operations raise (a zero divisor, a square root of a negative), these do too.
+    with np.errstate(divide="raise", invalid="raise"):
+        try:
+            return _interior_iterations(kkt, q, h)
+        except (ArithmeticError, FloatingPointError):
+            return None
+
+
+def _interior_iterations(kkt, q, h):
+    reltol, feastol, abstol, maxiters = QP_OPTIONS["reltol"], QP_OPTIONS["feastol"], 1e-7, QP_OPTIONS["maxiters"]
+    x, s, z = _interior_start(kkt, q, h)
+    gx = kkt.times(x)  # A x, carried along as x moves (A dx comes with each direction)
+    resx0, resz0 = max(1.0, math.sqrt(q @ q)), max(1.0, math.sqrt(h @ h))
+    gap = float(s @ z)
+    d = di = lmbda = None
+    for iteration in range(maxiters + 1):
+        rx = q + 2.0 * x
+        f0 = 0.5 * float(x @ rx + x @ q)
+        rx += kkt.transposed_times(z)
+        rz = s - h
+        rz += gx
+        pcost, dcost = f0, f0 + float(z @ rz) - gap
+        relgap = gap / -pcost if pcost < 0.0 else (gap / dcost if dcost > 0.0 else None)
+        pres, dres = math.sqrt(rz @ rz) / resz0, math.sqrt(rx @ rx) / resx0
+        if iteration == maxiters:  # cvxopt's status 'unknown', converged or not
+            return None
+        if pres <= feastol and dres <= feastol and (gap <= abstol or (relgap is not None and relgap <= reltol)):
+            return x
+        if iteration == 0:
+            d, lmbda = np.sqrt(s / z), np.sqrt(s * z)
+            di = np.reciprocal(d)
+        x, gx, d, lmbda = _interior_step(kkt, x, gx, s, d, di, lmbda, rx, rz, gap)
+        di = np.reciprocal(d)
+        s, z = lmbda * d, lmbda * di
+        gap = float(lmbda @ lmbda)
+    return None
+
+
+def _interior_start(kkt, q, h):
+    """coneqp's starting point: the KKT system with W = I, s and z moved into the cone."""
+    ones = np.ones(h.size)
+    x, _, z = kkt.factor(ones, ones)(q, h.copy())
+    s = -z
+    for v in (s, z):
+        t = -v.min()
+        if t >= -1e-8 * max(math.sqrt(v @ v), 1.0):
+            v += 1.0 + t
+    return x, s, z
+
+
+def _interior_step(kkt, x, gx, s, d, di, lmbda, rx, rz, gap):
+    """One coneqp iteration: the affine and the corrected direction, the step to 0.99 of the
+    boundary, and the Nesterov-Todd scaling (d, its inverse di) and scaled point (lmbda = W z = W^-T s)
+    updated; x, A x, d, lmbda after it. The affine direction's right-hand side is -lmbda o lmbda,
+    which the step scales back by lmbda: -lmbda, and its z part -rz + d lmbda = s - rz."""
+    solve = kkt.factor(d, di)
+    _, _, dz = solve(rx, s - rz)
+    ds = -lmbda - dz
+    dsdz = float(ds @ dz)
+    correction = ds * dz
+    scaled_dz = dz / lmbda  # and ds / lmbda = -1 - scaled_dz
+    t = max(0.0, 1.0 + float(scaled_dz.max()), -float(scaled_dz.min()))
+    step = 1.0 if t == 0 else min(1.0, 1.0 / t)
+    sigma = min(1.0, max(0.0, 1.0 - step + dsdz / gap * step ** 2)) ** 3
+    # The corrected direction: right-hand side -lmbda o lmbda - (ds o dz) + sigma mu e.
+    correction += lmbda * lmbda
+    ds = (sigma * (gap / lmbda.size) - correction) / lmbda
+    bz = ds * d
+    np.negative(rz, out=rz)
+    rz -= bz
+    dx, gdx, dz = solve(rx, rz)
+    scaled = np.empty((2, dz.size))  # ds and dz, scaled
+    np.subtract(ds, dz, out=scaled[0])
+    scaled[1] = dz
+    scaled /= lmbda
+    t = max(0.0, -float(scaled.min()))
+    step = 1.0 if t == 0 else min(1.0, 0.99 / t)
+    scaled *= step
+    scaled += 1.0
+    scaled *= lmbda
+    ds, dz = np.sqrt(scaled, out=scaled)
+    gdx *= step
+    gdx += gx
+    return x + step * dx, gdx, d * ds / dz, ds * dz
+
+
+class _RowLayout:
+    """Where the rows of an n-robot certificate sit, in rps's order: one per pair i < j (i outer, j
+    inner), then with a boundary four walls per robot (top, bottom, right, left), then the speed
+    octagon's eight sides per robot. Each row touches at most two robots' 2-column blocks, and all
+    but the pair rows are the same every step, so their entries, and what the KKT step needs of
+    their structure, are worked out once per certificate and size."""
+
+    WALLS = np.array([[0.0, 1.0], [0.0, -1.0], [1.0, 0.0], [-1.0, 0.0]])
+    _D = 1 / np.sqrt(2)
+    OCTAGON = np.array([[1, 0], [_D, _D], [0, 1], [-_D, _D], [-1, 0], [-_D, -_D], [0, -1], [_D, -_D]])
+
+    def __init__(self, n, walls, magnitude_limit, first_side_unscaled):
+        self.n, self.size, self.walls = n, 2 * n, walls
+        self.first, self.second = np.triu_indices(n, k=1)
+        pairs = self.first.size
+        robots = np.arange(n)
+        self.robots = np.concatenate(([np.repeat(robots, 4)] if walls else []) + [np.repeat(robots, 8)])
+        self.sides = np.concatenate(([np.tile(self.WALLS, (n, 1))] if walls else []) + [np.tile(self.OCTAGON, (n, 1))])
+        bounds = np.full(8, magnitude_limit * np.cos(np.pi / 8))
+        if first_side_unscaled:  # rps's certificate without boundary bounds its first side by the limit itself
+            bounds[0] = magnitude_limit
+        self.octagon_bounds = np.tile(bounds, n)
+        self.row_count = pairs + self.robots.size
+        pair_rows, single_rows = np.arange(pairs), pairs + np.arange(self.robots.size)
+        # A's entries (row, column): a pair's -2 (x_i - x_j) at i's columns and +2 (x_i - x_j) at j's.
+        f, s, r = 2 * self.first, 2 * self.second, 2 * self.robots
+        self.rows = np.concatenate((pair_rows, pair_rows, pair_rows, pair_rows, single_rows, single_rows))
+        self.columns = np.concatenate((f, f + 1, s, s + 1, r, r + 1))
+        self.single_entries = np.concatenate((self.sides[:, 0], self.sides[:, 1]))
+        # 2 I + A' W^-2 A, its lower triangle (all cvxopt's Cholesky reads): a row adds w u u' to its robots'
+        # diagonal blocks (u the row's 2 entries at a robot's columns: the entries (0,0), (1,0), (1,1) of
+        # the 2 x 2 block), and a pair i < j's row alone w v u' = -w u u' to the block (j, i) below it.
+        diagonal_block = (np.array([0, 1, 1])[None, :], np.array([0, 0, 1])[None, :])
+        whole_block = (np.array([0, 0, 1, 1])[None, :], np.array([0, 1, 0, 1])[None, :])
+
+        def places(i, j, block):  # flat places in the 2n x 2n matrix
+            return ((2 * i[:, None] + block[0]) * self.size + (2 * j[:, None] + block[1])).reshape(-1)
+
+        # Every product's place, in _StructuredKkt.products' order, and the row whose weight it takes.
+        self.product_places = np.concatenate((places(self.first, self.first, diagonal_block),
+                                              places(self.second, self.second, diagonal_block),
+                                              places(self.robots, self.robots, diagonal_block),
+                                              places(self.second, self.first, whole_block)))
+        self.product_rows = np.concatenate((np.repeat(pair_rows, 3), np.repeat(pair_rows, 3),
+                                            np.repeat(single_rows, 3), np.repeat(pair_rows, 4)))
+        s0, s1 = self.sides[:, 0], self.sides[:, 1]
+        self.single_products = np.stack((s0 * s0, s1 * s0, s1 * s1), axis=1).reshape(-1)
+        self.diagonal = np.arange(self.size) * (self.size + 1)
+
+    def pair_parts(self, x, safety_radius, barrier_gain):
+        """The pairs' x_i - x_j (2 x pairs) and bounds."""
+        diff = x[:, self.first] - x[:, self.second]
+        h = diff[0] * diff[0] + diff[1] * diff[1] - safety_radius ** 2
+        return diff, barrier_gain * (h ** 3)
+
+    def bounds(self, x, safety_radius, barrier_gain, boundary, pair_bounds):
+        """b of A v <= b: the pairs', the walls' (0.4 gain gap^3 each) and the octagon's."""
+        parts = [pair_bounds]
+        if self.walls:
+            bp, half = boundary, safety_radius / 2
+            gaps = (bp[3] - half - x[1], x[1] - bp[2] - half, bp[1] - half - x[0], x[0] - bp[0] - half)
+            parts.append(np.stack([0.4 * barrier_gain * gap ** 3 for gap in gaps], axis=1).reshape(-1))
+        parts.append(self.octagon_bounds)
+        return np.concatenate(parts)
+
+    def dense(self, diff):
+        """rps's dense A (rows x 2n), the same numbers in the same places."""
+        A = np.zeros((self.row_count, self.size))
+        pairs = np.arange(self.first.size)
+        singles = self.first.size + np.arange(self.robots.size)
+        for axis in (0, 1):
+            A[pairs, 2 * self.first + axis] = -2 * diff[axis]
+            A[pairs, 2 * self.second + axis] = 2 * diff[axis]
+            A[singles, 2 * self.robots + axis] = self.sides[:, axis]
+        return A
+
+
 class _StructuredKkt:
-    """cvxopt's KKT step for these QPs, solved through their structure. Each row of A touches at
-    most two robots' 2-column blocks (a pair, a wall or an octagon side), and the objective is
-    |v|^2, so the reduced matrix 2 I + A' W^-2 A is assembled from 2 x 2 outer products instead of a
-    dense product (numpy on reference BLAS, as on Debian and the lab, spends ~1 ms on that per
-    iteration for 20 robots). The iterates are cvxopt's; the answers agree with rps's to ~1e-11
-    (tests/python/test_barriers.py)."""
+    """cvxopt's KKT step for one certificate's QP, solved through its structure (_RowLayout): the
+    reduced matrix 2 I + A' W^-2 A summed from 2 x 2 blocks instead of a dense product (numpy on
+    reference BLAS, as on Debian and the lab, spends ~1 ms on that per iteration for 20 robots),
+    and A's products from its few entries."""
 
-    def __init__(self, A, structured=True):
-        self.rows, self.columns = np.nonzero(A)  # A's few entries, for products without a dense BLAS call
-        self.entries = A[self.rows, self.columns]
-        rows, columns = A.shape
-        self.size = columns
-        self.row_count = rows
-        blocks = A.reshape(rows, columns // 2, 2) if columns % 2 == 0 else None
-        touched = np.any(blocks != 0, axis=2) if blocks is not None else None
-        # Below ~10 robots cvxopt's own dense step is as fast (tests/benchmarks/python_barrier_benchmark.py).
-        self.usable = (structured and columns >= 2 * STRUCTURED_KKT_FROM_ROBOTS
-                       and blocks is not None
-                       and bool(np.all(touched.sum(axis=1) <= 2)))
-        if not self.usable:
-            return
-        robots = columns // 2
-        first = np.argmax(touched, axis=1)
-        last = robots - 1 - np.argmax(touched[:, ::-1], axis=1)
-        every = np.arange(rows)
-        u = blocks[every, first]
-        v = np.where((first != last)[:, None], blocks[every, last], 0.0)
-        r = np.array([0, 0, 1, 1])
-        c = np.array([0, 1, 0, 1])
+    def __init__(self, layout, diff):
+        self.layout = layout
+        self.size, self.row_count, self.rows, self.columns = layout.size, layout.row_count, layout.rows, layout.columns
+        u = -2 * diff
+        self.entries = np.concatenate((u[0], u[1], -u[0], -u[1], layout.single_entries))
+        # A pair's u u' = v v' = 4 (x_i - x_j)(x_i - x_j)' and v u' = -u u', in _RowLayout.product_places' order.
+        uu00, uu10, uu11 = u[0] * u[0], u[1] * u[0], u[1] * u[1]
+        diagonal = np.stack((uu00, uu10, uu11), axis=1).reshape(-1)
+        below = np.stack((-uu00, -uu10, -uu10, -uu11), axis=1).reshape(-1)
+        self.products = np.concatenate((diagonal, diagonal, layout.single_products, below))
 
-        def outer(p, q):
-            return (p[:, :, None] * q[:, None, :]).reshape(rows, 4)
-
-        def flat(i, j):  # where each outer product's four entries go in the 2n x 2n matrix
-            return (2 * i[:, None] + r) * columns + (2 * j[:, None] + c)
-
-        # Per row: uu', vv', uv', vu' and their places; a factoring only weights and sums them.
-        self.products = np.concatenate((outer(u, u), outer(v, v), outer(u, v), outer(v, u)), axis=1)
-        self.places = np.concatenate((flat(first, first), flat(last, last), flat(first, last), flat(last, first)),
-                                     axis=1).reshape(-1)
-
-    def _times(self, u):
+    def times(self, u):
         return np.bincount(self.rows, self.entries * u[self.columns], minlength=self.row_count)
 
-    def _transposed_times(self, y):
+    def transposed_times(self, y):
         return np.bincount(self.columns, self.entries * y[self.rows], minlength=self.size)
 
-    def factor(self, W):
+    def factor(self, d, di):
+        """For the scaling W = diag(d) (di = 1 / d): solve(rx, bz) -> (ux, A ux, uz) of cvxopt's KKT
+        system [2I A'; A -W'W] [ux; W^-1 uz] = [-rx; bz]. ArithmeticError when 2I + A'W^-2A is not
+        positive definite (only with non-finite data), as cvxopt's own factoring fails."""
         cvxopt = _cvxopt()
-        d = np.array(W["d"]).reshape(-1)
-        weights = 1.0 / (d * d)
-        M = np.bincount(self.places, (self.products * weights[:, None]).reshape(-1),
-                        minlength=self.size * self.size).reshape(self.size, self.size)
-        M[np.diag_indices(self.size)] += 2.0
-        factored = cvxopt.matrix(M)
-        # 2 I plus a PSD sum fails only on non-finite input, with the ArithmeticError cvxopt expects.
+        layout, size, rows, columns, entries = self.layout, self.size, self.rows, self.columns, self.entries
+        weights = di * di
+        M = np.bincount(layout.product_places, self.products * weights[layout.product_rows], minlength=size * size)
+        M[layout.diagonal] += 2.0
+        factored = cvxopt.matrix(M.reshape(size, size))
         cvxopt.lapack.potrf(factored)
+        weighted_entries = entries * weights[rows]  # A' W^-2, entry by entry
+        matrix, potrs, bincount, frombuffer, row_count = cvxopt.matrix, cvxopt.lapack.potrs, np.bincount, \
+            np.frombuffer, self.row_count
 
-        def solve(x, y, z):
-            bz = np.array(z).reshape(-1)
-            rhs = cvxopt.matrix(np.array(x).reshape(-1) + self._transposed_times(weights * bz))
-            cvxopt.lapack.potrs(factored, rhs)
-            x[:] = rhs
-            z[:] = cvxopt.matrix((self._times(np.array(rhs).reshape(-1)) - bz) / d)
+        def solve(rx, bz):  # bx = -rx
+            rhs = matrix(bincount(columns, weighted_entries * bz[rows], minlength=size) - rx)
+            potrs(factored, rhs)
+            ux = frombuffer(rhs)
+            gux = bincount(rows, entries * ux[columns], minlength=row_count)
+            uz = gux - bz
+            uz *= di
+            return ux, gux, uz
 
         return solve
-
-
-def _pair_rows(x, safety_radius, barrier_gain, A, b):
-    """One row per pair i < j in rps's order (i outer, j inner)."""
-    first, second = np.triu_indices(x.shape[1], k=1)
-    diff = x[:, first] - x[:, second]
-    h = diff[0] * diff[0] + diff[1] * diff[1] - safety_radius ** 2
-    rows = np.arange(first.size)
-    for axis in (0, 1):
-        A[rows, 2 * first + axis] = -2 * diff[axis]
-        A[rows, 2 * second + axis] = 2 * diff[axis]
-    b[rows] = barrier_gain * (h ** 3)
-    return first.size
-
-
-def _wall_rows(x, safety_radius, barrier_gain, bp, A, b, row):
-    """Four rows per robot in rps's order: top, bottom, right, left."""
-    n = x.shape[1]
-    robots = np.arange(n)
-    gaps = (bp[3] - safety_radius / 2 - x[1], x[1] - bp[2] - safety_radius / 2,
-            bp[1] - safety_radius / 2 - x[0], x[0] - bp[0] - safety_radius / 2)
-    sides = ((1, 1.0), (1, -1.0), (0, 1.0), (0, -1.0))  # (axis, sign) of each wall's row
-    for k, ((axis, sign), gap) in enumerate(zip(sides, gaps)):
-        rows = row + 4 * robots + k
-        A[rows, 2 * robots + axis] = sign
-        b[rows] = 0.4 * barrier_gain * gap ** 3
-    return row + 4 * n
-
-
-def _octagon_rows(n, magnitude_limit, first_side_unscaled, A, b, row):
-    """The speed octagon, 8 sides per robot in rps's order; rps's certificate without boundary
-    bounds the first side by the limit itself, the others by limit * cos(pi/8)."""
-    d = 1 / np.sqrt(2)
-    sides = np.array([[1, 0], [d, d], [0, 1], [-d, d], [-1, 0], [-d, -d], [0, -1], [d, -d]])
-    bounds = np.full(8, magnitude_limit * np.cos(np.pi / 8))
-    if first_side_unscaled:
-        bounds[0] = magnitude_limit
-    robots = np.arange(n)
-    for k in range(8):
-        rows = row + 8 * robots + k
-        A[rows, 2 * robots] = sides[k, 0]
-        A[rows, 2 * robots + 1] = sides[k, 1]
-        b[rows] = bounds[k]
-    return row + 8 * n
 
 
 def _single_integrator(safety_radius, barrier_gain, magnitude_limit, boundary, name, bit_exact):
@@ -205,6 +308,7 @@ def _single_integrator(safety_radius, barrier_gain, magnitude_limit, boundary, n
     safety_radius = _positive("safety_radius", safety_radius)
     barrier_gain = _positive("barrier_gain", barrier_gain)
     magnitude_limit = _positive("magnitude_limit", magnitude_limit)
+    layouts = {}  # by robot count
 
     def barrier_certificate(dxi, x):
         dxi = _columns("dxi", dxi, 2)
@@ -217,14 +321,18 @@ def _single_integrator(safety_radius, barrier_gain, magnitude_limit, boundary, n
             raise ValueError("dxi has %d columns, x %d" % (n, x.shape[1]))
         if n < 2:
             return dxi
-        rows = math.comb(n, 2) + (4 * n if boundary is not None else 0) + 8 * n
-        A = np.zeros((rows, 2 * n))
-        b = np.zeros(rows)
-        row = _pair_rows(x, safety_radius, barrier_gain, A, b)
-        if boundary is not None:
-            row = _wall_rows(x, safety_radius, barrier_gain, boundary, A, b, row)
-        _octagon_rows(n, magnitude_limit, boundary is None, A, b, row)
-        v = _solve_qp(np.copy(dxi), A, b, bit_exact)
+        if n not in layouts:
+            if len(layouts) >= 8:  # a few sizes kept (a script's robots, with and without obstacle points)
+                layouts.clear()
+            layouts[n] = _RowLayout(n, boundary is not None, magnitude_limit, boundary is None)
+        layout = layouts[n]
+        diff, pair_bounds = layout.pair_parts(x, safety_radius, barrier_gain)
+        b = layout.bounds(x, safety_radius, barrier_gain, boundary, pair_bounds)
+        if bit_exact:
+            v = _solve_qp(np.copy(dxi), layout.dense(diff), b)
+        else:
+            solution = _interior_point(_StructuredKkt(layout, diff), -2.0 * dxi.reshape(-1, order="F"), b)
+            v = None if solution is None else np.reshape(solution, (2, n), order="F")
         if v is None:
             warnings.warn("%s: QP failed. Commanding zero velocities." % name)
             return np.zeros((2, n))

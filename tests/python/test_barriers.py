@@ -53,20 +53,18 @@ class ReferenceTest(unittest.TestCase):
 
 
 
-class StructuredKktTest(unittest.TestCase):
-    """dream.barriers solves cvxopt's KKT systems through the QP's structure (_StructuredKkt); on
-    the same QPs cvxopt's own dense KKT solver must give the same commands, crowded states (the QP
-    fails) and obstacle points included."""
+class InteriorPointTest(unittest.TestCase):
+    """dream.barriers runs cvxopt's iterations in numpy (_interior_point), its KKT systems solved
+    through the QP's structure (_StructuredKkt); on the same QPs, cvxopt.solvers.qp on rps's dense
+    problem (bit_exact=True) must give the same commands and fail where they fail: random states,
+    crowded ones (where the QP fails), obstacle points included."""
 
-    def test_same_commands_as_cvxopts_own_kkt_solver(self):
-        import cvxopt
-        import cvxopt.solvers
-        real = cvxopt.solvers.qp
+    def test_same_commands_as_cvxopt(self):
         rng = np.random.default_rng(7)
-        compared = 0
-        for n in (5, 12, 20):  # below 10 robots the structured path is not taken: a control
+        compared, failed_both = 0, 0
+        for n in (2, 5, 12, 20):
             for crowded in (False, True):
-                for _ in range(10):
+                for _ in range(8):
                     spread = 0.4 if crowded else 1.3
                     x = np.vstack([rng.uniform(-spread, spread, n), rng.uniform(-spread * 0.6, spread * 0.6, n),
                                    rng.uniform(-np.pi, np.pi, n)])
@@ -75,23 +73,23 @@ class StructuredKktTest(unittest.TestCase):
                     for make, args in ((barriers.create_uni_barrier_certificate_with_boundary, (dxu, x, obstacles)),
                                        (barriers.create_uni_barrier_certificate, (dxu, x)),
                                        (barriers.create_si_barrier_certificate_with_boundary, (dxu, x[:2]))):
-                        certificate = make()
-                        with warnings.catch_warnings():
-                            warnings.simplefilter("ignore")
-                            ours = certificate(*args)
-                            try:
-                                cvxopt.solvers.qp = lambda *a, kktsolver=None, **k: real(*a, **k)
-                                theirs = certificate(*args)
-                            finally:
-                                cvxopt.solvers.qp = real
+                        outcomes = []
+                        for bit_exact in (False, True):
+                            with warnings.catch_warnings(record=True) as caught:
+                                warnings.simplefilter("always")
+                                out = make(bit_exact=bit_exact)(*args)
+                            outcomes.append((out, any("QP failed" in str(w.message) for w in caught)))
+                        (ours, we_failed), (theirs, they_failed) = outcomes
+                        self.assertEqual(we_failed, they_failed, (n, crowded, make.__name__))
+                        failed_both += we_failed
                         np.testing.assert_allclose(ours, theirs, rtol=0, atol=1e-9)
                         compared += 1
-        self.assertEqual(compared, 180)
+        self.assertEqual(compared, 192)
+        self.assertGreaterEqual(failed_both, 1, "crowded states should include a QP that fails")
 
     def test_bit_exact_hands_cvxopt_rps_dense_problem(self):
-        """bit_exact=True (the check-submission stand-in's certificates): at 20 robots, where the
-        structured step is otherwise taken, cvxopt gets a dense G and its own KKT solver, as in rps,
-        and the commands are those of that call bit for bit."""
+        """bit_exact=True (the check-submission stand-in's certificates): cvxopt gets a dense G and
+        its own KKT solver, as in rps; without it cvxopt.solvers.qp is not called at all."""
         import cvxopt
         import cvxopt.solvers
         real = cvxopt.solvers.qp
@@ -111,10 +109,18 @@ class StructuredKktTest(unittest.TestCase):
             fast = barriers.create_uni_barrier_certificate_with_boundary()(dxu, x)
         finally:
             cvxopt.solvers.qp = real
-        self.assertEqual(calls[0], ("matrix", None))  # rps's dense G, cvxopt's own KKT step
-        self.assertEqual(calls[1][0], "spmatrix")  # the structured step, for contrast
-        self.assertIsNotNone(calls[1][1])
+        self.assertEqual(calls, [("matrix", None)])  # rps's dense G, cvxopt's own KKT step; then none
         np.testing.assert_allclose(exact, fast, rtol=0, atol=1e-9)
+
+    def test_non_finite_states_fail_as_cvxopt_fails(self):
+        x = np.array([[0.0, 0.5, np.nan], [0.0, 0.0, 0.2], [0.0, 1.0, 2.0]])
+        dxu = np.array([[0.1, 0.1, 0.1], [0.0, 0.0, 0.0]])
+        for bit_exact in (False, True):
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always")
+                out = barriers.create_uni_barrier_certificate_with_boundary(bit_exact=bit_exact)(dxu, x)
+            self.assertTrue(any("QP failed" in str(w.message) for w in caught), bit_exact)
+            np.testing.assert_array_equal(out, np.zeros((2, 3)))
 
 
 class InputTest(unittest.TestCase):

@@ -7,6 +7,7 @@ waits) gets the same commands again. Messages are checked before they are decode
 finite values), as the Python agent host checks them.
 """
 
+import collections
 import importlib
 import os
 import random
@@ -22,7 +23,9 @@ TYPES_VARIABLE = "DREAM_PYTHON_TYPES_DIR"
 # A world silent this long while the script waits for a step has gone (the command ended).
 SILENCE_LIMIT_S = 120.0
 _POSES_COUNT_AT = 8 + 24  # the fingerprint, then utime, step, run_id
+_STATUS_STATE_AT = 8 + 24  # the fingerprint, then utime, step, run_id
 _FINISHED, _ABORTED = 2, 3
+_Step = collections.namedtuple("_Step", "utime step run_id")  # what an answer needs of a step
 
 
 class WorldGone(RuntimeError):
@@ -59,6 +62,11 @@ class WorldLink:
         self.agent_id = random.SystemRandom().getrandbits(62) + 1
         self.follower = follower.WorldFollower()
         self.bus = lcm.Lcm(self.url)
+        # Commands packed as lcm-gen's velocity_command_t.encode packs them, without its per-message objects.
+        self._command_fingerprint = self._command_t._get_packed_fingerprint()
+        self._poses_fingerprint = self._poses_t._get_packed_fingerprint()
+        self._command_fields = struct.Struct(">qqqiqddb")
+        self._command_channels = [f"DREAM_CMD_{i}" for i in range(n)]
         self._fresh = None       # (message, 3 x n poses) of a step not yet handed out
         self._current = None     # the message of the step handed out last
         self._answers = []       # that step's encoded commands, sent again on a resend
@@ -74,8 +82,12 @@ class WorldLink:
         (count,) = struct.unpack_from(">i", data, _POSES_COUNT_AT)
         if count != self.n or len(data) != _POSES_COUNT_AT + 4 + 40 * count:
             return  # another world's, or forged
-        message = self._poses_t.decode(data)
-        poses = np.array([message.x, message.y, message.theta], dtype=float).reshape(3, self.n)
+        if data[:8] != self._poses_fingerprint:
+            return
+        # The header and x, y, theta read in place (lcm-gen's decode builds five Python lists a step).
+        message = _Step(*struct.unpack_from(">qqq", data, 8))
+        poses = np.frombuffer(data, dtype=">f8", count=3 * count, offset=_POSES_COUNT_AT + 4).reshape(3, count)
+        poses = poses.astype(float)
         if message.step < 0 or not np.all(np.isfinite(poses)):
             return
         decision = self.follower.on_poses(message.run_id, message.step)
@@ -86,6 +98,9 @@ class WorldLink:
                 self.bus.publish(channel, answer)
 
     def _on_status(self, _channel, data):
+        # Every step has a status; only an ending one (its state byte after the header) is decoded.
+        if len(data) <= _STATUS_STATE_AT or data[_STATUS_STATE_AT] not in (_FINISHED, _ABORTED):
+            return
         try:
             message = self._status_t.decode(data)
         except Exception:  # noqa: BLE001 - a forged status is not the script's problem
@@ -112,13 +127,10 @@ class WorldLink:
     def send(self, velocities, done=False):
         """Answers the current step: robot i drives velocities[:, i] (v m/s, w rad/s)."""
         step = self._current
-        self._answers = []
-        for i in range(self.n):
-            command = self._command_t()
-            command.utime, command.step, command.run_id = step.utime, step.step, step.run_id
-            command.robot_id, command.agent_id = i, self.agent_id
-            command.v, command.w, command.done = float(velocities[0, i]), float(velocities[1, i]), bool(done)
-            self._answers.append((f"DREAM_CMD_{i}", command.encode()))
+        pack, fingerprint, done = self._command_fields.pack, self._command_fingerprint, bool(done)
+        speeds, turns = np.asarray(velocities, dtype=float)[:2, :self.n].tolist()
+        self._answers = [(channel, fingerprint + pack(step.utime, step.step, step.run_id, i, self.agent_id, v, w, done))
+                         for i, (channel, v, w) in enumerate(zip(self._command_channels, speeds, turns))]
         self.answered = True
         for channel, answer in self._answers:
             self.bus.publish(channel, answer)

@@ -157,8 +157,10 @@ class Robotarium(RobotariumConstants):
         self._link.send(local._velocities)
         local._velocities = local._saturate(local._velocities)
         # The sensors read where this step takes the robots by the official step from the poses the
-        # script saw (under `ideal` the world's next poses), drawing their noise now, as the official.
-        local._sensors.after_step(local._integrated(local._poses, local._velocities), local._velocities)
+        # script saw (under `ideal` the world's next poses), drawing their noise now, as the official;
+        # those poses are worked out only if a getter needs them.
+        seen, held = local._poses, local._velocities.copy()
+        local._sensors.after_step(lambda: local._integrated(seen, held), held)
 
     def debug(self):
         self._local.debug()

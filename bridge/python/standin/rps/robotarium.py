@@ -18,7 +18,8 @@ Semantics (V2.0.0, as DREAM's simulator reproduces them):
   - Sensors: every step updates the official sensor models (rps/sensor_models.py: encoders,
     accelerometer, gyro, magnetometer, heading, and the distance sensors with
     use_distance_sensors=True) with the official draws from numpy's global stream, so the
-    getters give the official readings and a seeded script's numpy draws are the official ones.
+    getters give the official readings and a seeded script's numpy draws are the official ones
+    (the readings but the distances are worked out when a getter asks).
 Differences from the official simulator, on purpose:
   - No figure, no real-time throttle.
 """
@@ -85,6 +86,7 @@ class Robotarium(RobotariumConstants):
 
         self.obstacles = _checked_obstacles(obstacles)
         self._sensors = sensor_models.SensorModels(self, n, use_distance_sensors, self.obstacles)
+        self._pairs = np.triu_indices(n, k=1)  # every pair i < j, for the collision check
         self._poses = np.array(chargers, dtype=float).reshape(3, n)
         self._velocities = np.zeros((2, n))
         self._iteration = 0
@@ -137,12 +139,11 @@ class Robotarium(RobotariumConstants):
         if np.any((p[0] < b[0]) | (p[0] > b[1]) | (p[1] < b[2]) | (p[1] > b[3])):
             self._count("robots_outside_boundaries")
         centres = p[:2, :] + self.COLLISION_OFFSET * np.vstack([np.cos(p[2, :]), np.sin(p[2, :])])
-        n = self.number_of_robots
-        for i in range(n - 1):
-            gaps = np.linalg.norm(centres[:, i + 1:] - centres[:, i:i + 1], axis=0)
-            close = int(np.count_nonzero(gaps <= self.COLLISION_DIAMETER))
-            if close:
-                self._count("robots_too_close", close)
+        first, second = self._pairs
+        gaps = np.linalg.norm(centres[:, second] - centres[:, first], axis=0)
+        close = int(np.count_nonzero(gaps <= self.COLLISION_DIAMETER))
+        if close:  # one error per pair too close, as the official counts them
+            self._count("robots_too_close", close)
         if np.any(np.abs(self._wheel_speeds(self._velocities)) > self.MAX_WHEEL_VELOCITY):
             self._count("exceeded_actuator_limits")
 

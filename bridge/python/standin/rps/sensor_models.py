@@ -96,7 +96,17 @@ def _readings(poses, obstacles, mounts, robot_diameter, sensor_range, noise, wit
 
 
 class SensorModels:
-    """The readings of N robots, updated by every step as the official step updates them."""
+    """The readings of N robots, updated by every step as the official step updates them.
+
+    Every step draws its noise from numpy's global stream as the official step does (the distance
+    sensors' first, then one draw of 12 N normals, which is the official randn(2, N), three
+    randn(3, N) and randn(N) in a row: the legacy stream gives the same numbers however the calls
+    split them), but the encoders, accelerometer, gyro, magnetometer and heading are worked out only
+    when a getter asks: most scripts read none of them, and the official models cost a script's
+    step ~0.1 ms. The readings are the official ones bit for bit (tests/python/test_standin_sensors.py)."""
+
+    # Steps whose encoder counts wait to be added (bounded: folded in when this many wait).
+    MAX_PENDING_STEPS = 512
 
     def __init__(self, constants, n, use_distance_sensors, obstacles):
         self.c = constants
@@ -105,23 +115,53 @@ class SensorModels:
         self.obstacles = obstacles
         self.distances = np.full((7, n), np.nan)  # NaN until the first step, as the official
         self.endpoints = np.full((2, 7, n), np.nan)
-        self.accelerations = np.zeros((3, n))
-        self.orientations = np.zeros(n)
-        self.magnetic_fields = np.zeros((3, n))
-        self.gyros = np.zeros((3, n))
-        self.encoders = np.zeros((2, n))
+        self._encoders = np.zeros((2, n))
+        self._pending_velocities = []  # per step not yet counted: (2 x N saturated velocities, 2 x N noise)
+        self._pending_noise = []
+        self._last = None  # (poses or a function giving them, velocities, noise) of the last step
+        self._readings = {"accelerations": np.zeros((3, n)), "orientations": np.zeros(n),
+                          "magnetic_fields": np.zeros((3, n)), "gyros": np.zeros((3, n))}
 
     def after_step(self, poses, velocities):
-        """The readings after a step that drove `velocities` (saturated) and ended at `poses`."""
-        c = self.c
+        """The readings after a step that drove `velocities` (saturated) and ended at `poses`, which
+        may be a function giving them: it is called only when a reading needs the poses."""
+        c, n = self.c, self.n
         if self.distance_sensors:
+            poses = poses() if callable(poses) else poses
             self.distances = simulate_distance_sensors(
                 poses, self.obstacles, c.DISTANCE_SENSORS_ORIENTATION, c.ROBOT_DIAMETER, c.CENTER_OFFSET,
                 c.DISTANCE_SENSOR_RANGE, c.DISTANCE_SENSOR_ERROR, c.DISTANCE_SENSOR_DROPOUT_PROB,
                 c.DISTANCE_SENSOR_OUTLIER_PROB)
             self.endpoints = self._endpoints(poses)
-        self._encoders(velocities)
-        self._imu(poses, velocities)
+        noise = np.random.randn(12 * n)
+        velocities = np.array(velocities, dtype=float)  # the caller's array changes with the next command
+        self._pending_velocities.append(velocities)
+        self._pending_noise.append(noise[:2 * n].reshape(2, n))
+        if len(self._pending_velocities) >= self.MAX_PENDING_STEPS:
+            self._count_encoders()
+        self._last = (poses, velocities, noise[2 * n:])
+        self._readings = None
+
+    @property
+    def encoders(self):
+        self._count_encoders()
+        return self._encoders
+
+    @property
+    def accelerations(self):
+        return self._imu()["accelerations"]
+
+    @property
+    def gyros(self):
+        return self._imu()["gyros"]
+
+    @property
+    def magnetic_fields(self):
+        return self._imu()["magnetic_fields"]
+
+    @property
+    def orientations(self):
+        return self._imu()["orientations"]
 
     def _endpoints(self, poses):
         ends = np.full((2, 7, self.n), np.nan)
@@ -132,21 +172,34 @@ class SensorModels:
                     ends[:, j, i] = start + self.distances[j, i] * direction
         return ends
 
-    def _encoders(self, velocities):
+    def _count_encoders(self):
+        """Adds the counts of the steps not yet counted, each rounded as the official rounds it."""
+        if not self._pending_velocities:
+            return
         c = self.c
+        velocities = np.stack(self._pending_velocities)  # steps x 2 x N
+        noise = np.stack(self._pending_noise)
+        self._pending_velocities, self._pending_noise = [], []
         r, l = c.WHEEL_RADIUS, c.BASE_LENGTH
-        wheels = np.vstack([(1 / (2 * r)) * (2 * velocities[0, :] - l * velocities[1, :]),
-                            (1 / (2 * r)) * (2 * velocities[0, :] + l * velocities[1, :])])
+        wheels = np.stack([(1 / (2 * r)) * (2 * velocities[:, 0, :] - l * velocities[:, 1, :]),
+                           (1 / (2 * r)) * (2 * velocities[:, 0, :] + l * velocities[:, 1, :])], axis=1)
         delta = wheels * c.TIME_STEP * c.ENCODER_COUNTS_PER_REVOLUTION * c.MOTOR_GEAR_RATIO / (2 * np.pi)
         step_noise_std = c.ENCODER_NOISE_STD * np.sqrt(np.maximum(np.abs(delta), 1.0))
-        delta += step_noise_std * np.random.randn(*delta.shape)
-        self.encoders += np.round(delta)
+        delta += step_noise_std * noise
+        # Whole counts: their sum is exact in any order, so this is the official step-by-step sum.
+        self._encoders += np.sum(np.round(delta), axis=0)
 
-    def _imu(self, poses, velocities):
-        """Accelerometer, gyro, magnetometer, heading. The official step keeps the previous
-        velocities only after it saturated the new ones, so its accelerations are always zero;
-        centripetal and gravity remain, as there."""
+    def _imu(self):
+        """Accelerometer, gyro, magnetometer, heading after the last step. The official step keeps
+        the previous velocities only after it saturated the new ones, so its accelerations are
+        always zero; centripetal and gravity remain, as there."""
+        if self._readings is not None:
+            return self._readings
         c, n = self.c, self.n
+        poses, velocities, noise = self._last
+        poses = poses() if callable(poses) else poses
+        self._last = (poses, velocities, noise)
+        accelerometer, gyro, magnetometer = (noise[k * 3 * n:(k + 1) * 3 * n].reshape(3, n) for k in range(3))
         linear = (velocities[0, :] - velocities[0, :]) / c.TIME_STEP
         angular = (velocities[1, :] - velocities[1, :]) / c.TIME_STEP
         omega = velocities[1, :]
@@ -155,11 +208,13 @@ class SensorModels:
                + np.vstack([-angular * c.IMU_ORIENTATION[1], angular * c.IMU_ORIENTATION[0], zeros])
                + np.vstack([-np.square(omega) * c.IMU_ORIENTATION[0], -np.square(omega) * c.IMU_ORIENTATION[1], zeros])
                + np.vstack([zeros, zeros, -9.81 * np.ones(n)]))
-        self.accelerations = imu + c.ACCELEROMETER_NOISE_STDS.reshape(3, 1) * np.random.randn(3, n)
-        self.gyros = np.vstack([zeros, zeros, omega]) + c.GYRO_NOISE_STDS.reshape(3, 1) * np.random.randn(3, n)
         theta = poses[2, :]
-        noise = c.MAGNETOMETER_NOISE_STDS.reshape(3, 1) * np.random.randn(3, n)
-        self.magnetic_fields = np.vstack([c.MAGNETOMETER_XY_AVG * np.cos(theta), -c.MAGNETOMETER_XY_AVG * np.sin(theta),
-                                          c.MAGNETOMETER_Z_AVG * np.ones(n)]) + noise
+        magnetic = np.vstack([c.MAGNETOMETER_XY_AVG * np.cos(theta), -c.MAGNETOMETER_XY_AVG * np.sin(theta),
+                              c.MAGNETOMETER_Z_AVG * np.ones(n)])
         degrees = poses[2, :] * (180.0 / np.pi)
-        self.orientations = np.mod(degrees + c.ORIENTATION_NOISE_STD * np.random.randn(n), 360.0)
+        self._readings = {
+            "accelerations": imu + c.ACCELEROMETER_NOISE_STDS.reshape(3, 1) * accelerometer,
+            "gyros": np.vstack([zeros, zeros, omega]) + c.GYRO_NOISE_STDS.reshape(3, 1) * gyro,
+            "magnetic_fields": magnetic + c.MAGNETOMETER_NOISE_STDS.reshape(3, 1) * magnetometer,
+            "orientations": np.mod(degrees + c.ORIENTATION_NOISE_STD * noise[9 * n:], 360.0)}
+        return self._readings

@@ -32,4 +32,4 @@ def _solve_qp(N, vhat, A, b):
     """rps's private helper, which examples import (sensors/distance_sensor_avoidance.py):
     min |v - vhat|^2 s.t. A v <= b for N robots' velocities (2 x N), None when cvxopt fails."""
     return _barriers._solve_qp(np.reshape(np.asarray(vhat, dtype=float), (2, N), order="F"),
-                               np.asarray(A, dtype=float), np.asarray(b, dtype=float), True)
+                               np.asarray(A, dtype=float), np.asarray(b, dtype=float))
