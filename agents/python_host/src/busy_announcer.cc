@@ -11,7 +11,7 @@ BusyAnnouncer::BusyAnnouncer(std::vector<int> robot_ids, double agent_timeout_s)
 
 void BusyAnnouncer::StepArrived(int64_t run_id, int64_t step, Clock::time_point now) {
   if (run_id == run_id_ && step <= step_) return;
-  if (run_id != run_id_) answered_.clear();  // answers to another run's steps (a failed robot stays failed)
+  if (run_id != run_id_) answered_.clear();  // answers to another run's steps
   run_id_ = run_id;
   step_ = step;
   next_note_ = now + interval_;
@@ -22,15 +22,13 @@ void BusyAnnouncer::Answered(int robot_id, int64_t step) {
   if (step > answered) answered = step;
 }
 
-void BusyAnnouncer::Failed(int robot_id) { failed_.insert(robot_id); }
-
-std::vector<int> BusyAnnouncer::Due(Clock::time_point now) {
+std::vector<int> BusyAnnouncer::Due(Clock::time_point now, const std::set<int>& failed) {
   std::vector<int> pending;
   if (step_ < 0 || now < next_note_) return pending;
   for (int id : robot_ids_) {
     const auto answered = answered_.find(id);
     const bool has_answered = answered != answered_.end() && answered->second >= step_;
-    if (!has_answered && failed_.count(id) == 0) pending.push_back(id);
+    if (!has_answered && failed.count(id) == 0) pending.push_back(id);
   }
   if (!pending.empty()) next_note_ = now + interval_;
   return pending;

@@ -21,6 +21,9 @@ inline constexpr size_t kMaxOutboxBytes = size_t{1} << 28;
 inline double Seconds(std::chrono::steady_clock::duration duration) {
   return std::chrono::duration<double>(duration).count();
 }
+inline std::chrono::steady_clock::duration DurationOf(double seconds) {
+  return std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds));
+}
 
 // The start frame: what the process hosts, and how.
 inline std::string StartFrame(const std::string& spec_json, const std::vector<int>& robot_ids, int64_t agent_id,

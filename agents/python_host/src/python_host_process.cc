@@ -77,7 +77,8 @@ void PythonHostProcess::Check(const std::string& spec_json, double start_timeout
             " ended its Python process: " + ExitTextOf(KillAndReap(spawned.pid)) + " (os._exit, or a crash)";
     } else if (waited > kKillFraction * limits.start_timeout_s) {
       const int64_t robot = spawned.cell[1].load();
-      RequestTrace(spawned.pid, spawned.trace_fd, &trace);
+      RequestTrace(spawned.pid, spawned.trace_fd, module_path,
+                   DurationOf(kCheckTraceWaitFraction * limits.start_timeout_s), &trace);
       KillAndReap(spawned.pid);
       why = StuckTextOf(-1, robot, -1, limits, false, false);
     } else {
@@ -241,7 +242,7 @@ void PythonHostProcess::SayBusy(Clock::time_point now) {
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     if (ended_) return;  // before ready_ too: loading and setup() hold the world's start
-    due = busy_.Due(now);
+    due = busy_.Due(now, failed_);
     at = world_step_;
   }
   if (due.empty() || at.run_id == 0) return;
@@ -287,7 +288,6 @@ bool PythonHostProcess::Take(const RelayLink::Frame& frame) {
         busy_.Answered(own->robot_id, header->step);
       } else if (own->kind == lcm::AgentChannel::Kind::kFault) {
         failed_.insert(own->robot_id);
-        busy_.Failed(own->robot_id);
       }
       return !ended_;
     }
@@ -363,7 +363,10 @@ void PythonHostProcess::EndProcess(const std::string& why, const std::string& ex
   const int64_t token = cell_[0].load();
   const int64_t robot = cell_[1].load();
   const int64_t step = token > 0 ? cell_[2].load() : -1;
-  if (trace) RequestTrace(pid_, trace_fd_, &trace_);
+  if (trace) {
+    const double limit_s = token > 0 ? limits_.agent_timeout_s : limits_.start_timeout_s;
+    RequestTrace(pid_, trace_fd_, module_path_, DurationOf(kTraceWaitFraction * limit_s), &trace_);
+  }
   // Killed now, reaped after the faults are out: the world's deadline is
   // near, and a large process takes a while to go.
   ::kill(-pid_, SIGKILL);

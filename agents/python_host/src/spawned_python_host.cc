@@ -167,20 +167,28 @@ bool HasEnded(pid_t pid, std::string* how) {
   return true;
 }
 
-// SIGUSR1 makes faulthandler write every thread's Python traceback; a short
-// moment for it to arrive (it writes at once; the world's deadline is near).
-void RequestTrace(pid_t pid, int trace_fd, std::string* trace) {
+// SIGUSR1 makes faulthandler write every thread's Python traceback. It is
+// read until it holds a whole frame of the module (the line a fault names),
+// not for a quiet moment: a starved child writes late, not less.
+void RequestTrace(pid_t pid, int trace_fd, const std::string& module_path, Clock::duration bound, std::string* trace) {
   const size_t before = trace->size();
+  const std::string frame = "File \"" + module_path + "\", line ";
+  const auto has_module_frame = [&] {
+    const size_t at = module_path.empty() ? std::string::npos : trace->find(frame, before);
+    return at != std::string::npos && trace->find('\n', at) != std::string::npos;
+  };
   ::kill(pid, SIGUSR1);
-  const auto until = Clock::now() + std::chrono::milliseconds(60);
-  while (Clock::now() < until) {
+  const auto until = Clock::now() + bound;
+  while (!has_module_frame()) {
+    const auto left = std::chrono::ceil<std::chrono::milliseconds>(until - Clock::now()).count();
+    if (left <= 0) break;
     pollfd fd{trace_fd, POLLIN, 0};
-    const bool written = trace->size() > before;
-    if (::poll(&fd, 1, written ? 5 : 10) <= 0) {
-      if (written) break;  // written, and quiet since
-      continue;
+    const int ready = ::poll(&fd, 1, static_cast<int>(std::min<int64_t>(left, 100)));
+    if (ready > 0 && (fd.revents & POLLIN) != 0) {
+      ReadTrace(trace_fd, trace);
+    } else if (ready > 0) {
+      break;  // the pipe's writer is gone
     }
-    ReadTrace(trace_fd, trace);
   }
 }
 

@@ -83,18 +83,18 @@ Heard BusyIntake::Take(const std::string& channel, const robot_busy_t& busy) {
 bool BusyIntake::HoldsStart(NodeClock::TimePoint now, NodeClock::TimePoint step_published) const {
   if (SecondsBetween(step_published, now) > kMaxHoldFactor * options_.start_timeout_s) return false;
   for (const RobotSlot& robot : robots_) {
-    if (robot.command_step != world_.step() && !robot.lost && robot.busy_step == world_.step() &&
-        SecondsBetween(robot.busy_heard, now) <= options_.agent_timeout_s) {
-      return true;
-    }
+    if (robot.command_step != world_.step() && !robot.lost && HeardBusyLately(robot, now)) return true;
   }
   return false;
 }
 
 bool BusyIntake::Holds(const RobotSlot& robot, NodeClock::TimePoint now, NodeClock::TimePoint step_published) const {
-  return options_.mode == config::WorldMode::kLockstep && robot.busy_step == world_.step() &&
-         SecondsBetween(robot.busy_heard, now) <= options_.agent_timeout_s &&
+  return options_.mode == config::WorldMode::kLockstep && HeardBusyLately(robot, now) &&
          SecondsBetween(step_published, now) <= kMaxHoldFactor * options_.agent_timeout_s;
+}
+
+bool BusyIntake::HeardBusyLately(const RobotSlot& robot, NodeClock::TimePoint now) const {
+  return robot.busy_step == world_.step() && SecondsBetween(robot.busy_heard, now) <= options_.agent_timeout_s;
 }
 
 }  // namespace dream::node

@@ -33,10 +33,9 @@ class BusyAnnouncer {
   void StepArrived(int64_t run_id, int64_t step, Clock::time_point now);
   /// `robot_id` answered `step` (its command was sent).
   void Answered(int robot_id, int64_t step);
-  /// `robot_id`'s controller failed: its fault is the answer, for good.
-  void Failed(int robot_id);
-  /// The robots to say busy for at `now` (empty: none yet, or none due).
-  std::vector<int> Due(Clock::time_point now);
+  /// The robots to say busy for at `now` (empty: none yet, or none due),
+  /// leaving out `failed`: the robots whose fault the owner sent (their answer, for good).
+  std::vector<int> Due(Clock::time_point now, const std::set<int>& failed);
 
  private:
   std::vector<int> robot_ids_;
@@ -45,7 +44,6 @@ class BusyAnnouncer {
   int64_t step_ = -1;
   Clock::time_point next_note_;
   std::map<int, int64_t> answered_;
-  std::set<int> failed_;
 };
 
 }  // namespace dream::python_host

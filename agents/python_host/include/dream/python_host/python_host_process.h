@@ -61,6 +61,13 @@ class PythonHostProcess final : public python_embedded::PythonAgentHost {
   /// A call the watchdog never raised in (its thread starved, or blocked) is
   /// ended at this fraction of its limit (the world holds at most 10).
   static constexpr double kKillUnraisedFraction = 3.0;
+  /// A stuck call's traceback is awaited at most this fraction of its limit
+  /// (it comes at once unless the child is starved): the world's hold from
+  /// the last DREAM_BUSY_<id> note, a quarter old at most, covers it.
+  static constexpr double kTraceWaitFraction = 0.25;
+  /// In the check before a run: its own bound, so the check ends within
+  /// start_timeout_s (kKillFraction plus this).
+  static constexpr double kCheckTraceWaitFraction = 0.05;
   /// How long the process gets to end by itself before SIGKILL.
   static constexpr double kGraceS = 1.0;
 

@@ -3,6 +3,7 @@
 #include <sys/types.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -43,8 +44,10 @@ std::string ExitTextOf(int status);
 void ReadTrace(int fd, std::string* trace);
 
 /// Asks `pid`'s faulthandler for every thread's Python traceback (SIGUSR1)
-/// and reads it from `trace_fd` into `trace`, waiting a short moment for it.
-void RequestTrace(pid_t pid, int trace_fd, std::string* trace);
+/// and reads it from `trace_fd` into `trace` until it holds a whole frame of
+/// `module_path`, or for at most `bound` (a dump without one).
+void RequestTrace(pid_t pid, int trace_fd, const std::string& module_path, std::chrono::steady_clock::duration bound,
+                  std::string* trace);
 
 /// The innermost frame in `module_path` of a faulthandler dump ("  File
 /// "/x/y.py", line 7 in update"), else in a file beside it (a helper it

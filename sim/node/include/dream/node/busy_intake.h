@@ -52,6 +52,8 @@ class BusyIntake {
 
  private:
   Heard Refuse(const std::string& channel, const std::string& reason, int64_t agent_id);
+  /// A note for the current step heard within agent_timeout_s: what any hold needs.
+  bool HeardBusyLately(const RobotSlot& robot, NodeClock::TimePoint now) const;
 
   const world::World& world_;
   const config::SimNodeOptions& options_;
