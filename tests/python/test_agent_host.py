@@ -12,19 +12,11 @@ import struct
 import sys
 import unittest
 
-try:
-    import numpy  # noqa: F401
-except ImportError:
-    print("numpy is missing: skipped")
-    sys.exit(77)
+from unit_setup import put_runtime_on_path, require_numpy, types_dir
 
-SOURCE_DIR = os.path.abspath(os.environ.get("DREAM_SOURCE_DIR",
-                                            os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")))
-TYPES_DIR = os.path.join(os.environ.get("DREAM_BUILD_DIR", os.path.join(SOURCE_DIR, "build")), "python")
-if not os.path.isfile(os.path.join(TYPES_DIR, "dream", "robot_poses_t.py")):
-    print(f"lcm-gen's Python types are not in {TYPES_DIR}: skipped")
-    sys.exit(77)
-sys.path.insert(0, os.path.join(SOURCE_DIR, "python"))
+require_numpy()
+TYPES_DIR = types_dir("robot_poses_t")
+put_runtime_on_path()
 
 import dream  # noqa: E402
 from dream import Robot, RobotAgent, RangeRadio, pack_floats  # noqa: E402

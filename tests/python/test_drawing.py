@@ -10,22 +10,14 @@ Needs lcm-gen's Python types (DREAM_BUILD_DIR/python); exit 77 (skipped) without
 import math
 import os
 import re
-import sys
 import unittest
 
-try:
-    import numpy as np
-except ImportError:
-    print("numpy is missing: skipped")
-    sys.exit(77)
+from unit_setup import SOURCE_DIR, put_runtime_on_path, require_numpy, types_dir
 
-SOURCE_DIR = os.path.abspath(os.environ.get("DREAM_SOURCE_DIR",
-                                            os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")))
-TYPES_DIR = os.path.join(os.environ.get("DREAM_BUILD_DIR", os.path.join(SOURCE_DIR, "build")), "python")
-if not os.path.isfile(os.path.join(TYPES_DIR, "dream", "drawing_t.py")):
-    print(f"lcm-gen's Python types (drawing_t) are not in {TYPES_DIR}: skipped")
-    sys.exit(77)
-sys.path.insert(0, os.path.join(SOURCE_DIR, "python"))
+require_numpy()
+import numpy as np  # noqa: E402
+TYPES_DIR = types_dir("drawing_t")
+put_runtime_on_path()
 
 import dream  # noqa: E402
 from dream import Robot, RobotAgent  # noqa: E402

@@ -8,22 +8,17 @@ Exit code 77 (skipped) when numpy is missing.
 
 import json
 import os
-import struct
 import subprocess
 import sys
 import tempfile
 import textwrap
 import unittest
 
-try:
-    import numpy as np
-except ImportError:
-    print("numpy is missing: skipped")
-    sys.exit(77)
+from unit_setup import SOURCE_DIR, put_runtime_on_path, require_numpy
 
-SOURCE_DIR = os.path.abspath(os.environ.get("DREAM_SOURCE_DIR",
-                                            os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")))
-sys.path.insert(0, os.path.join(SOURCE_DIR, "python"))
+require_numpy()
+import numpy as np  # noqa: E402
+put_runtime_on_path()
 
 from dream import Robot, key  # noqa: E402
 from dream.run_metrics import MetricsDeclarationError, RunRecord, evaluate  # noqa: E402

@@ -11,18 +11,11 @@ import os
 import sys
 import unittest
 
-try:
-    import numpy as np
-except ImportError:
-    print("numpy is missing: skipped")
-    sys.exit(77)
+from unit_setup import SOURCE_DIR, require_numpy, types_dir
 
-SOURCE_DIR = os.path.abspath(os.environ.get("DREAM_SOURCE_DIR",
-                                            os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")))
-TYPES_DIR = os.path.join(os.environ.get("DREAM_BUILD_DIR", os.path.join(SOURCE_DIR, "build")), "python")
-if not os.path.isfile(os.path.join(TYPES_DIR, "dream", "robot_poses_t.py")):
-    print(f"lcm-gen's Python types are not in {TYPES_DIR}: skipped")
-    sys.exit(77)
+require_numpy()
+import numpy as np  # noqa: E402
+TYPES_DIR = types_dir("robot_poses_t")
 os.environ["DREAM_PYTHON_TYPES_DIR"] = TYPES_DIR
 os.environ["DREAM_BRIDGE_PYTHON_DIR"] = os.path.join(SOURCE_DIR, "bridge", "python")
 sys.path.insert(0, os.path.join(SOURCE_DIR, "python", "rps_dream"))
