@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <atomic>
+#include <cstdio>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -45,6 +48,7 @@ robot_busy_t BusyNote(const robot_poses_t& poses, int robot_id, int64_t agent_id
 class BusyIntakeTest : public ::testing::Test {
  protected:
   BusyIntakeTest() : bus_("memq://"), world_(world::WorldParams{}, {{-1.0, 0.0, 0.0}, {0.0, 0.0, 0.0}}) {}
+  ~BusyIntakeTest() override { std::remove(log_path_.c_str()); }
 
   /// Robot 0 always answers; robot 1's agent (id 101) hears step 3's poses
   /// (the world resends them every 0.2 s of its clock) and, the n-th time,
@@ -96,7 +100,8 @@ class BusyIntakeTest : public ::testing::Test {
   lcm::LcmBus bus_;
   testing::QuietBus quiet_bus_{bus_};
   world::UnicycleWorld world_;
-  std::string log_path_ = ::testing::TempDir() + "/busy_intake.lcmlog";
+  // One file per process: ctest runs each of these tests in a process of its own, in parallel.
+  std::string log_path_ = ::testing::TempDir() + "/busy_intake_" + std::to_string(::getpid()) + ".lcmlog";
   int stuck_step_heard_ = 0;
   std::vector<std::unique_ptr<ScriptedAgent>> agents_;
 };

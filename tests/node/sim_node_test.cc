@@ -1,6 +1,7 @@
 #include "dream/node/sim_node.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <chrono>
@@ -222,7 +223,7 @@ TEST_F(SimNodeTest, TwoDifferentCommandsForOneRobotAndStepAreAConflictTheFirstIs
   });
   AddAgent(1, Forward());
   AddAgent(2, Forward());
-  const std::string log_path = ::testing::TempDir() + "/conflict.lcmlog";
+  const std::string log_path = ::testing::TempDir() + "/conflict_" + std::to_string(::getpid()) + ".lcmlog";
   RunOutcome outcome;
   {
     RunRecorder recorder(log_path);

@@ -111,11 +111,11 @@ std::vector<EncodedMessage> SampleMessages() {
   busy.call_robot_id = 0;
   busy.call_s = 0.25;
 
-  return {
-      {"robot_poses_t", Encoded(poses)},        {"obstacles_t", Encoded(obstacles)}, {"run_status_t", Encoded(status)},
-      {"velocity_command_t", Encoded(command)}, {"radio_message_t", Encoded(radio)}, {"robot_fault_t", Encoded(fault)},
-      {"applied_commands_t", Encoded(applied)}, {"run_verdict_t", Encoded(verdict)}, {"drawing_t", Encoded(drawing)},
-      {"robot_busy_t", Encoded(busy)}};
+  return {{"robot_poses_t", Encoded(poses)},        {"obstacles_t", Encoded(obstacles)},
+          {"run_status_t", Encoded(status)},        {"velocity_command_t", Encoded(command)},
+          {"radio_message_t", Encoded(radio)},      {"robot_fault_t", Encoded(fault)},
+          {"applied_commands_t", Encoded(applied)}, {"run_verdict_t", Encoded(verdict)},
+          {"drawing_t", Encoded(drawing)},          {"robot_busy_t", Encoded(busy)}};
 }
 
 namespace {

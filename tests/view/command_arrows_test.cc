@@ -16,6 +16,7 @@
 #include "dream/view/replay_json.h"
 #include "synthetic_run_log.h"
 #include "temp_folder.h"
+#include "two_robot_view_bus.h"
 
 namespace dream::view {
 namespace {
@@ -35,45 +36,7 @@ velocity_command_t Command(int64_t run_id, int64_t step, int32_t robot, double v
   return command;
 }
 
-class CommandArrowsTest : public ::testing::Test {
- protected:
-  void Step(int64_t run_id, int64_t step) {
-    robot_poses_t poses{};
-    poses.run_id = run_id;
-    poses.step = step;
-    poses.num_robots = 2;
-    poses.x = {0.0, 0.5};
-    poses.y = {0.0, 0.0};
-    poses.theta = {0.0, 0.0};
-    poses.v = {0.0, 0.0};
-    poses.w = {0.0, 0.0};
-    run_status_t status{};
-    status.run_id = run_id;
-    status.step = step;
-    status.state = run_status_t::RUNNING;
-    status.num_robots = 2;
-    obstacles_t obstacles{};
-    obstacles.run_id = run_id;
-    obstacles.step = step;
-    lcm::Publish(bus_, "DREAM_OBSTACLES", obstacles);
-    lcm::Publish(bus_, "DREAM_STATUS", status);
-    lcm::Publish(bus_, "DREAM_POSES", poses);
-    Handle();
-  }
-  void Send(const std::string& channel, const velocity_command_t& command) {
-    lcm::Publish(bus_, channel, command);
-    Handle();
-  }
-  void Handle() {
-    while (bus_.HandleSubscriptions(0) > 0) {
-    }
-  }
-
-  lcm::LcmBus bus_{"memq://"};
-  BusFrameCollector collector_{bus_, world::WorldParams()};
-  uint64_t version_ = 0;
-  ViewFrame frame_;
-};
+using CommandArrowsTest = TwoRobotViewBus;
 
 TEST_F(CommandArrowsTest, EachRobotsNewestCommandOfTheRunIsInTheFrame) {
   Step(4, 0);

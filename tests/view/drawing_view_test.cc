@@ -14,6 +14,7 @@
 #include "dream/view/replay_json.h"
 #include "synthetic_run_log.h"
 #include "temp_folder.h"
+#include "two_robot_view_bus.h"
 
 namespace dream::view {
 namespace {
@@ -56,48 +57,12 @@ drawing_t Drawing(int64_t run_id, int64_t step, int32_t robot, double x, const s
   return d;
 }
 
-class DrawingViewTest : public ::testing::Test {
+class DrawingViewTest : public TwoRobotViewBus {
  protected:
-  void Step(int64_t run_id, int64_t step) {
-    robot_poses_t poses{};
-    poses.run_id = run_id;
-    poses.step = step;
-    poses.num_robots = 2;
-    poses.x = {0.0, 0.5};
-    poses.y = {0.0, 0.0};
-    poses.theta = {0.0, 0.0};
-    poses.v = {0.0, 0.0};
-    poses.w = {0.0, 0.0};
-    run_status_t status{};
-    status.run_id = run_id;
-    status.step = step;
-    status.state = run_status_t::RUNNING;
-    status.num_robots = 2;
-    obstacles_t obstacles{};
-    obstacles.run_id = run_id;
-    obstacles.step = step;
-    lcm::Publish(bus_, "DREAM_OBSTACLES", obstacles);
-    lcm::Publish(bus_, "DREAM_STATUS", status);
-    lcm::Publish(bus_, "DREAM_POSES", poses);
-    Handle();
-  }
-  void Send(const std::string& channel, const drawing_t& drawing) {
-    lcm::Publish(bus_, channel, drawing);
-    Handle();
-  }
-  void Handle() {
-    while (bus_.HandleSubscriptions(0) > 0) {
-    }
-  }
   nlohmann::json FrameDrawings() {
     EXPECT_TRUE(collector_.TakeFrame(&frame_, &version_));
     return nlohmann::json::parse(FrameJson(frame_))["drawings"];
   }
-
-  lcm::LcmBus bus_{"memq://"};
-  BusFrameCollector collector_{bus_, world::WorldParams()};
-  uint64_t version_ = 0;
-  ViewFrame frame_;
 };
 
 TEST_F(DrawingViewTest, EachRobotsNewestDrawingOfTheRunIsInTheFrame) {

@@ -126,10 +126,9 @@ Heard SimNode::Hear(const std::string& channel, const void* data, int size) {
   if (channel.rfind(lcm::kDrawChannelPrefix, 0) == 0) return drawings_.Take(channel, data, size);
   // DREAM_APPLIED and DREAM_MEASURED_POSES are the world's own records, never
   // sent: one heard is forged; any other name is not part of a run.
-  bad_messages_.Report(
-      channel,
-      "not a channel agents send on (DREAM_CMD_<id>, DREAM_RADIO_<id>, DREAM_FAULT_<id>, DREAM_DRAW_<id>, DREAM_BUSY_<id>): "
-      "refused, kept out of the run log");
+  bad_messages_.Report(channel,
+                       "not a channel agents send on (DREAM_CMD_<id>, DREAM_RADIO_<id>, DREAM_FAULT_<id>, "
+                       "DREAM_DRAW_<id>, DREAM_BUSY_<id>): refused, kept out of the run log");
   return Heard::kRefused;
 }
 
