@@ -60,12 +60,28 @@ def _recorded_goal(path, num_robots):
         targets = _targets(last["targets"], "targets", len(robots), width)
         position_error = float(last["position_error"])
         rotation_error = float(last["rotation_error"]) if width == 3 else None
+        offset = last.get("point_offset_m")
+        offset = None if offset is None else [float(v) for v in offset]
+        if offset is not None and (len(offset) != 2 or not all(np.isfinite(v) and abs(v) <= 1.0 for v in offset)):
+            raise ValueError(f"point_offset_m {offset}: expected two finite numbers within 1 m")
     except (KeyError, TypeError, ValueError) as error:
         raise GoalError(f"{path}: not a goal record: {error!r}") from None
     if not robots or any(r < 0 or r >= num_robots for r in robots) or len(set(robots)) != len(robots):
         raise GoalError(f"{path}: robots {robots} are not distinct robots of this run (0..{num_robots - 1})")
-    return {"source": f"the script's last {check} check", "robots": robots, "targets": np.array(targets),
-            "position_error": position_error, "rotation_error": rotation_error}
+    source = f"the script's last {check} check"
+    if offset is not None:
+        source += f" (of the point {offset[0]:g} m ahead, {offset[1]:g} m left of each robot, as it checked)"
+    return {"source": source, "robots": robots, "targets": np.array(targets),
+            "position_error": position_error, "rotation_error": rotation_error, "point_offset_m": offset}
+
+
+def _checked_points(poses, offset):
+    """(steps, k, 2): the point of each pose the goal holds, its centre or `offset` (forward, left) from it."""
+    if offset is None:
+        return poses[:, :, :2]
+    cos, sin = np.cos(poses[:, :, 2]), np.sin(poses[:, :, 2])
+    return np.stack([poses[:, :, 0] + offset[0] * cos - offset[1] * sin,
+                     poses[:, :, 1] + offset[0] * sin + offset[1] * cos], axis=2)
 
 
 class RobotariumScript(Robot):
@@ -112,7 +128,8 @@ class RobotariumScript(Robot):
             return {}
         poses = run.poses[:, goal["robots"], :]                                # (steps, k, 3)
         targets = goal["targets"]
-        distance = np.linalg.norm(poses[:, :, :2] - targets[np.newaxis, :, :2], axis=2)
+        points = _checked_points(poses, goal.get("point_offset_m"))
+        distance = np.linalg.norm(points - targets[np.newaxis, :, :2], axis=2)
         inside = distance <= goal["position_error"]
         metrics = {"goal_final_max_error_m": float(distance[-1].max())}
         if goal["rotation_error"] is not None:

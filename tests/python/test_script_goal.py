@@ -19,7 +19,7 @@ require_numpy()
 import numpy as np  # noqa: E402
 put_runtime_on_path()
 
-from dream import misc  # noqa: E402
+from dream import misc, transformations  # noqa: E402
 from dream.controller_spec import check_key_value  # noqa: E402
 from dream.run_metrics import evaluate  # noqa: E402
 
@@ -87,6 +87,20 @@ class RecordTest(unittest.TestCase):
         goal.save()
         self.assertIsNone(self.record()["last_check"])
 
+    def test_a_check_on_the_points_ahead_of_the_robots_records_that_point(self):
+        # The dead_reckoning example checks at_position on uni_to_si_states(x): a point 0.05 m ahead.
+        goal = script_goal.ScriptGoal(self.folder.name)
+        goal.poses = np.array([[0.1, 0.2, -0.4], [0.0, -0.5, 0.3], [0.3, -2.0, 3.1]])
+        _, uni_to_si_states = transformations.create_si_to_uni_mapping(projection_distance=0.05)
+        goal.on_check("at_position", uni_to_si_states(goal.poses), np.zeros((2, 3)), 0.1, None)
+        self.assertEqual(goal.last["robots"], [0, 1, 2])
+        self.assertEqual(goal.last["point_offset_m"], [0.05, 0.0])
+        goal.on_check("at_position", goal.poses[:2], np.zeros((2, 3)), 0.1, None)
+        self.assertIsNone(goal.last["point_offset_m"])  # their centres
+        estimate = goal.poses[:2] + np.array([[0.01, -0.02, 0.0], [0.0, 0.01, 0.03]])
+        goal.on_check("at_position", estimate, np.zeros((2, 3)), 0.1, None)
+        self.assertIsNone(goal.last["point_offset_m"])  # estimates of the centres, not one point of each
+
     def test_an_earlier_runs_record_is_removed_when_the_script_makes_its_robotarium(self):
         path = os.path.join(self.folder.name, script_goal.RECORD_NAME)
         with open(path, "w") as f:
@@ -123,6 +137,28 @@ class JudgeTest(unittest.TestCase):
                 json.dump({"last_check": {"check": "at_position", "robots": [5], "targets": [[0.2, 0.2]],
                                           "position_error": 0.05, "rotation_error": None}}, f)
             with self.assertRaisesRegex(robotarium_script.GoalError, r"robots \[5\] are not distinct robots"):
+                evaluate(RobotariumScript, config(goal_record=record), steps, poses)
+
+    def test_a_recorded_point_ahead_is_judged_on_that_point_of_the_logged_poses(self):
+        with tempfile.TemporaryDirectory() as folder:
+            record = os.path.join(folder, "script_goal.json")
+            last = {"check": "at_position", "robots": [0, 1], "targets": [[0.55, 0.0], [0.0, 0.55]],
+                    "position_error": 0.02, "rotation_error": None, "point_offset_m": [0.05, 0.0]}
+            with open(record, "w") as f:
+                json.dump({"last_check": last}, f)
+            # The centres end 0.05 m short of the targets, facing them: their points ahead are on them.
+            steps, poses = run_ending_at(np.array([[0.5, 0.0, 0.0], [0.0, 0.5, np.pi / 2]]))
+            document = evaluate(RobotariumScript, config(goal_record=record), steps, poses)
+            self.assertTrue(document["goal"]["met"], document)
+            self.assertIn("0.05 m ahead", document["goal"]["detail"])
+            last["point_offset_m"] = None  # judged on the centres: 0.05 m off
+            with open(record, "w") as f:
+                json.dump({"last_check": last}, f)
+            self.assertFalse(evaluate(RobotariumScript, config(goal_record=record), steps, poses)["goal"]["met"])
+            last["point_offset_m"] = [0.05, float("nan")]
+            with open(record, "w") as f:
+                json.dump({"last_check": last}, f)
+            with self.assertRaisesRegex(robotarium_script.GoalError, r"point_offset_m"):
                 evaluate(RobotariumScript, config(goal_record=record), steps, poses)
 
     def test_no_key_and_no_record_declare_no_goal(self):
