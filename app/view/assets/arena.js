@@ -218,99 +218,82 @@ const DreamArena = (() => {
         }
       }
     }
-    const sprites = robotSprites(radius, scene.x.length, layers.ids);
     const shown = [];
     for (let i = 0; i < scene.x.length; i++) {
       if (finite(scene.x[i], scene.y[i], scene.th[i])) shown.push(i);
     }
+    const sprites = robotSprites(radius, scene.x.length, layers.ids);
     if (!sprites) {  // zoomed in far: a few large discs, drawn as paths
       for (const i of shown) {
         const lost = scene.lost && scene.lost.includes(i);
         disc(ctx, T, scene.x[i], scene.y[i], scene.th[i], radius, lost ? LOST : colour(i), "#222", false);
       }
-    } else {
-      // Discs copied from the sprites at whole pixels; the headings in one path.
-      const c = sprites.centre, cell = sprites.cell;
-      ctx.beginPath();
-      for (const i of shown) {
-        const x = Math.round(T.px(scene.x[i])), y = Math.round(T.py(scene.y[i]));
-        const k = scene.lost && scene.lost.includes(i) ? sprites.lostCell : i;
-        ctx.drawImage(sprites.discs, k * cell, 0, cell, cell, x - c, y - c, cell, cell);
-        ctx.moveTo(x, y);
-        ctx.lineTo(x + Math.cos(scene.th[i]) * radius, y - Math.sin(scene.th[i]) * radius);
-      }
-      ctx.strokeStyle = "#222";
-      ctx.lineWidth = 1.5;
-      ctx.stroke();
-    }
-    if (!layers.ids) return;
-    if (sprites) {
-      for (const i of shown) {
-        const label = sprites.labels[i], x = Math.round(T.px(scene.x[i])), y = Math.round(T.py(scene.y[i]));
-        ctx.drawImage(sprites.labelSheet, label.x, 0, label.w, sprites.labelH, x - label.half,
-                      y - Math.round(radius) - 8 - sprites.labelMid, label.w, sprites.labelH);
+      if (layers.ids) {
+        ctx.font = idFont(radius);
+        ctx.textAlign = "center";
+        ctx.textBaseline = "middle";
+        ctx.fillStyle = "#111";
+        for (const i of shown) ctx.fillText(String(i), T.px(scene.x[i]), T.py(scene.y[i]) - radius - 8);
       }
       return;
     }
-    ctx.font = idFont(radius);
-    ctx.textAlign = "center";
-    ctx.textBaseline = "middle";
-    ctx.fillStyle = "#111";
-    for (const i of shown) ctx.fillText(String(i), T.px(scene.x[i]), T.py(scene.y[i]) - radius - 8);
+    // Each robot's disc and id copied from its sprite at whole pixels; the headings in one path.
+    const { w, h, cx, cy } = sprites;
+    ctx.beginPath();
+    for (const i of shown) {
+      const x = Math.round(T.px(scene.x[i])), y = Math.round(T.py(scene.y[i]));
+      const row = scene.lost && scene.lost.includes(i) ? h : 0;
+      ctx.drawImage(sprites.sheet, i * w, row, w, h, x - cx, y - cy, w, h);
+      ctx.moveTo(x, y);
+      ctx.lineTo(x + Math.cos(scene.th[i]) * radius, y - Math.sin(scene.th[i]) * radius);
+    }
+    ctx.strokeStyle = "#222";
+    ctx.lineWidth = 1.5;
+    ctx.stroke();
   }
 
-  // Each robot's disc (its colour, or grey when lost, outlined) and its id, drawn once per size
-  // into offscreen canvases and copied each frame: to a software-rendering browser a copy costs
-  // less than filling and stroking an anti-aliased arc, and far less than writing text
-  // (docs/performance.md#dream-view). null when zoomed in so far that the discs are large.
+  // Each robot's disc (its colour, outlined) with its id above, and the same grey for a lost
+  // robot, drawn once per size into one image and copied each frame: to a software-rendering
+  // browser a copy costs less than filling and stroking an anti-aliased arc, and far less than
+  // writing text (docs/performance.md#dream-view). null when zoomed in so far that discs are large.
   const LOST = "#bbb", MAX_SPRITE_RADIUS = 40;
   const idFont = (radius) => `${Math.max(10, Math.round(radius))}px system-ui, sans-serif`;
   let spriteCache = null;
   function robotSprites(radius, count, ids) {
-    if (radius > MAX_SPRITE_RADIUS) return null;
+    if (radius > MAX_SPRITE_RADIUS || count === 0) return null;
     const key = `${radius}/${count}/${ids}`;
     if (spriteCache && spriteCache.key === key) return spriteCache;
-    const centre = Math.ceil(radius + 2), cell = 2 * centre;
-    const discs = document.createElement("canvas");
-    discs.width = cell * (count + 1);
-    discs.height = cell;
-    const d = discs.getContext("2d");
+    const half = Math.ceil(radius + 2), size = Math.max(10, Math.round(radius));
+    const labelH = Math.ceil(size * 1.6), above = Math.round(radius) + 8;  // the id's middle above the centre
+    const measure = document.createElement("canvas").getContext("2d");
+    measure.font = idFont(radius);
+    const labelW = ids ? Math.ceil(measure.measureText(String(count - 1)).width) + 4 : 0;
+    const w = Math.max(2 * half, labelW), cx = Math.round(w / 2);
+    const cy = ids ? Math.max(half, above + Math.ceil(labelH / 2)) : half, h = cy + half;
+    if (w * count > 16384) return null;  // more robots than one image of them holds
+    const sheet = typeof OffscreenCanvas === "function" ? new OffscreenCanvas(w * count, 2 * h)
+      : Object.assign(document.createElement("canvas"), { width: w * count, height: 2 * h });
+    const d = sheet.getContext("2d");
     d.lineWidth = 1.5;
     d.strokeStyle = "#222";
-    for (let k = 0; k <= count; k++) {
-      d.beginPath();
-      d.arc(k * cell + centre, centre, radius, 0, 2 * Math.PI);
-      d.fillStyle = k === count ? LOST : colour(k);
-      d.fill();
-      d.stroke();
+    d.font = idFont(radius);
+    d.textAlign = "center";
+    d.textBaseline = "middle";
+    for (let row = 0; row < 2; row++) {
+      for (let i = 0; i < count; i++) {
+        d.beginPath();
+        d.arc(i * w + cx, row * h + cy, radius, 0, 2 * Math.PI);
+        d.fillStyle = row ? LOST : colour(i);
+        d.fill();
+        d.stroke();
+        d.fillStyle = "#111";
+        if (ids) d.fillText(String(i), i * w + cx, row * h + cy - above);
+      }
     }
-    spriteCache = { key, centre, cell, discs, lostCell: count, labels: [], labelSheet: null };
-    if (ids) labelSprites(spriteCache, radius, count);
+    // An ImageBitmap: the cheapest source to copy from.
+    const image = sheet.transferToImageBitmap ? sheet.transferToImageBitmap() : sheet;
+    spriteCache = { key, sheet: image, w, h, cx, cy };
     return spriteCache;
-  }
-
-  function labelSprites(sprites, radius, count) {
-    const font = idFont(radius), size = Math.max(10, Math.round(radius));
-    const sheet = document.createElement("canvas");
-    const measure = sheet.getContext("2d");
-    measure.font = font;
-    let x = 0;
-    for (let i = 0; i < count; i++) {
-      const w = Math.ceil(measure.measureText(String(i)).width) + 4;
-      sprites.labels.push({ x, w, half: Math.round(w / 2) });
-      x += w;
-    }
-    sprites.labelH = Math.ceil(size * 1.6);
-    sprites.labelMid = Math.round(sprites.labelH / 2);
-    sheet.width = Math.max(1, x);
-    sheet.height = sprites.labelH;
-    const t = sheet.getContext("2d");  // resized: its state is reset
-    t.font = font;
-    t.textAlign = "center";
-    t.textBaseline = "middle";
-    t.fillStyle = "#111";
-    sprites.labels.forEach((label, i) => t.fillText(String(i), label.x + label.half, sprites.labelMid));
-    sprites.labelSheet = sheet;
   }
 
   // The robot looked at: a ring around it and lines to the robots it hears or sees.
