@@ -502,6 +502,7 @@ const DreamArena = (() => {
     const list = scene && scene.obstacles;
     const bg = background(canvas, T, setup, list, layers.goals, scene && scene.goalProgress);
     const trailsDrawn = scene && layers.trails && bg.still && paths && backgroundWithTrails(ctx, T, bg, paths);
+    if (!trailsDrawn && !(scene && layers.trails)) trailCache = null;  // drawn again from scratch when shown
     if (!trailsDrawn) {
       ctx.drawImage(bg.layer, 0, 0);
       if (!bg.still) {
