@@ -267,7 +267,8 @@ const DreamArena = (() => {
     const labelH = Math.ceil(size * 1.6), above = Math.round(radius) + 8;  // the id's middle above the centre
     const measure = document.createElement("canvas").getContext("2d");
     measure.font = idFont(radius);
-    const labelW = ids ? Math.ceil(measure.measureText(String(count - 1)).width) + 4 : 0;
+    let labelW = 0;
+    for (let i = 0; ids && i < count; i++) labelW = Math.max(labelW, Math.ceil(measure.measureText(String(i)).width) + 4);
     const w = Math.max(2 * half, labelW), cx = Math.round(w / 2);
     const cy = ids ? Math.max(half, above + Math.ceil(labelH / 2)) : half, h = cy + half;
     if (w * count > 16384) return null;  // more robots than one image of them holds
@@ -353,7 +354,7 @@ const DreamArena = (() => {
   // What changes seldom (the axes, the arena's edge and, while no obstacle moves, the obstacles
   // and the goals) is drawn into an offscreen canvas when it changes and copied each frame: one
   // opaque copy instead of the clear, the axes' text and the paths (docs/performance.md#dream-view).
-  // Returns whether it holds the obstacles and goals.
+  // Returns {key, layer, still}: still, it holds the obstacles and goals too.
   let cached = null;
   function background(canvas, T, setup, list, goalLayer, progress) {
     const still = (list || []).every(([, , , , , vx, vy]) => !(finite(vx, vy) && (vx !== 0 || vy !== 0)));
