@@ -13,7 +13,9 @@ network namespace netns.sh makes) at --rate steps a second for --seconds, then a
 at what rate, the frames the page received and drew, whether it shows the last step, and the CPU
 time spent by the view's process and by Chromium while the stream ran: all its processes, its
 renderer process (the page's own), and the page's main-thread task time (devtools
-Performance.getMetrics' TaskDuration).
+Performance.getMetrics' TaskDuration), and Chromium's busiest threads by process (from /proc).
+--profile FILE also records the page's devtools CPU profile and prints its costliest functions;
+--screenshot FILE keeps a picture of the page at the end.
 Nothing here is a pass/fail test; the numbers go to docs/performance.md.
 """
 import argparse
