@@ -13,10 +13,13 @@ network namespace netns.sh makes) at --rate steps a second for --seconds, then a
 at what rate, the frames the page received and drew, whether it shows the last step, and the CPU
 time spent by the view's process and by Chromium while the stream ran: all its processes, its
 renderer process (the page's own), and the page's main-thread task time (devtools
-Performance.getMetrics' TaskDuration).
+Performance.getMetrics' TaskDuration), and Chromium's busiest threads by process (from /proc).
+--profile FILE also records the page's devtools CPU profile and prints its costliest functions;
+--screenshot FILE keeps a picture of the page at the end.
 Nothing here is a pass/fail test; the numbers go to docs/performance.md.
 """
 import argparse
+import json
 import math
 import os
 import re
@@ -44,6 +47,38 @@ def cpu_seconds(pids):
         except OSError:
             pass
     return total / TICKS
+
+
+def process_role(pid):
+    """Chromium's --type of process `pid` (renderer, gpu-process, utility, zygote), else "browser"."""
+    try:
+        with open(f"/proc/{pid}/cmdline", "rb") as f:
+            found = re.search(rb"--type=([a-z-]+)", f.read())
+    except OSError:
+        return "gone"
+    return found.group(1).decode() if found else "browser"
+
+
+def thread_seconds(pids):
+    """User + system CPU seconds so far of each thread of `pids`, by process role and thread name
+    (summed over threads of one name: Chromium's raster workers share theirs)."""
+    by_name = {}
+    for pid in pids:
+        try:
+            tasks = os.listdir(f"/proc/{pid}/task")
+        except OSError:
+            continue
+        role = process_role(pid)
+        for tid in tasks:
+            try:
+                with open(f"/proc/{pid}/task/{tid}/stat") as f:
+                    text = f.read()
+            except OSError:
+                continue
+            name = role + "/" + text[text.index("(") + 1:text.rindex(")")]
+            fields = text.rsplit(")", 1)[1].split()
+            by_name[name] = by_name.get(name, 0) + (int(fields[11]) + int(fields[12])) / TICKS
+    return by_name
 
 
 def process_tree(root):
@@ -84,6 +119,27 @@ def task_seconds(page):
     return next(m["value"] for m in metrics if m["name"] == "TaskDuration")
 
 
+def print_profile(profile, path, top=25):
+    """Writes a devtools Profiler profile to `path` and prints where the page's time went: self time
+    per function (and per built-in: (program) is the browser's own work outside script, painting
+    the canvas included; (garbage collector); (idle))."""
+    with open(path, "w") as f:
+        json.dump(profile, f)
+    nodes = {node["id"]: node for node in profile["nodes"]}
+    deltas = profile.get("timeDeltas", [])
+    self_us = {}
+    for node_id, delta in zip(profile.get("samples", []), deltas):
+        frame = nodes[node_id]["callFrame"]
+        name = f"{frame['functionName'] or '(anonymous)'} {os.path.basename(frame['url'])}:{frame['lineNumber'] + 1}"
+        self_us[name] = self_us.get(name, 0) + delta
+    total = sum(self_us.values()) or 1
+    busy = total - self_us.get("(idle) :0", 0)
+    print(f"profile ({path}): {total / 1e6:.2f} s sampled, {busy / 1e6:.2f} s not idle; self time, not idle:")
+    for name, us in sorted(self_us.items(), key=lambda item: -item[1])[:top]:
+        if name != "(idle) :0":
+            print(f"  {100 * us / busy:5.1f} %  {us / 1e3:8.1f} ms  {name}")
+
+
 def messages(dream, robots, step, run_id, rate):
     """One step of a world: obstacles, status, poses (robots on a grid, each driving a small circle)."""
     t = step / rate
@@ -118,6 +174,9 @@ def main():
     parser.add_argument("--fps", type=int, default=None, help="dream view --fps (default: its own)")
     parser.add_argument("--no-browser", action="store_true")
     parser.add_argument("--page-eval", default="", help="JavaScript run in the page before the stream (to try variants)")
+    parser.add_argument("--screenshot", default="", help="a PNG of the page at the stream's end, here")
+    parser.add_argument("--profile", default="", help="write the page's CPU profile of the stream here (devtools "
+                        "Profiler, a .cpuprofile Chromium's DevTools open) and print its costliest functions")
     args = parser.parse_args()
     require_private_netns()
     dream = import_types(os.path.join(args.build, "python"))
@@ -150,8 +209,13 @@ def main():
             renderer_pids = renderers(chrome_pids)
             if page:
                 page.call("Performance.enable")
+                if args.profile:
+                    page.call("Profiler.enable")
+                    page.call("Profiler.setSamplingInterval", interval=200)
+                    page.call("Profiler.start")
             view_cpu, chrome_cpu = cpu_seconds([view.pid]), cpu_seconds(chrome_pids)
             renderer_cpu, tasks = cpu_seconds(renderer_pids), task_seconds(page) if page else 0.0
+            threads = thread_seconds(chrome_pids)
             start = time.monotonic()
             for step in range(steps + 1):
                 time.sleep(max(0.0, start + step / args.rate - time.monotonic()))
@@ -165,13 +229,18 @@ def main():
             view_cpu = cpu_seconds([view.pid]) - view_cpu
             chrome_cpu = cpu_seconds(chrome_pids) - chrome_cpu
             renderer_cpu = cpu_seconds(renderer_pids) - renderer_cpu
+            threads = {name: cpu - threads.get(name, 0) for name, cpu in thread_seconds(chrome_pids).items()}
             tasks = task_seconds(page) - tasks if page else 0.0
+            if page and args.profile:
+                print_profile(page.call("Profiler.stop")["profile"], args.profile)
             print(f"stream: {args.robots} robots, {steps + 1} steps in {elapsed:.2f} s "
                   f"({steps / elapsed:.1f} steps/s), dream view --fps {args.fps or 'default'}")
             print(f"dream view's process: {view_cpu:.2f} s CPU ({100 * view_cpu / elapsed:.1f} % of a core)")
             if page:
                 time.sleep(1.0)
                 state = page.evaluate("window.dreamView.state")
+                if args.screenshot:
+                    page.screenshot(args.screenshot)
                 drawn = page.evaluate("window.dreamView.drawn")
                 print(f"page: received {state['frames']} frames ({state['frames'] / elapsed:.1f}/s), drew "
                       f"{drawn} ({drawn / elapsed:.1f}/s), shows step {state['step']} of {steps} "
@@ -182,6 +251,9 @@ def main():
                 print(f"the page's renderer process ({len(renderer_pids)}): {renderer_cpu:.2f} s CPU "
                       f"({100 * renderer_cpu / elapsed:.1f} % of a core); its main thread's tasks (devtools "
                       f"TaskDuration) {tasks:.2f} s ({100 * tasks / elapsed:.1f} %)")
+                busiest = sorted(((cpu, name) for name, cpu in threads.items() if cpu > 0), reverse=True)[:8]
+                print("Chromium's busiest threads (all its processes): " +
+                      ", ".join(f"{name} {100 * cpu / elapsed:.1f} %" for cpu, name in busiest))
             bus.close()
         finally:
             if page:

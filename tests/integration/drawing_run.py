@@ -11,8 +11,8 @@ each update: a line to its goal, a circle round it, a heading arrow, its id and 
    whole logs different, naming DREAM_DRAW_0); the drawing run's log holds DREAM_DRAW_<id> of every robot, each a
    drawing_t of that robot and run, with the shapes drawn (kinds, text); the other holds none.
 2. `dream render` of each as a PNG: the drawing run's picture has the green square (pixels of its
-   colour where it was drawn), the other has none; the last frame of a GIF video of the drawing
-   run has it too.
+   colour where it was drawn), the other has none, nor has the drawing run's with --no-drawings;
+   the last frame of a GIF video of the drawing run has it too.
 3. `dream log echo` shows a DREAM_DRAW_0 message as JSON, its text readable.
 
 Usage: drawing_run.py --dream BIN --source DIR --types-dir DIR
@@ -146,6 +146,10 @@ def check_rendered(ctx, args, run_dir, plain_dir):
     shown, plain = green_pixels(with_png), green_pixels(without_png)
     check(shown > 2000, f"the rendered picture of the drawing run has {shown} pixels of the green square")
     check(plain == 0, f"the picture of the run without drawing has {plain} green pixels")
+    left_out = ctx.path("no_drawings.png")
+    ctx.run([args.dream, "render", run_dir, "--out", left_out, "--no-drawings"], timeout=60, expect=0)
+    hidden = green_pixels(left_out)
+    check(hidden == 0, f"the picture of the drawing run with --no-drawings has {hidden} green pixels")
     # trajectories.png, written by the run itself, shows the last step's drawing too.
     check(green_pixels(os.path.join(run_dir, "trajectories.png")) > 2000, "trajectories.png has no green square")
     gif, last = ctx.path("run.gif"), ctx.path("last.png")

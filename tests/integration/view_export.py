@@ -10,13 +10,18 @@ polled on /export/status to its end and downloaded from /export/video, as an att
 `dream render` command the server prints for it, run as printed, writes a video of the same frame
 count and size whose decoded frames are the same, frame for frame (ffmpeg's framemd5).
 
+What controllers draw (DREAM_DRAW_<id>, drawing_run's three-robot Python controller): exported
+with the page's drawings layer on and off, each equals its printed command's video (off: with
+--no-drawings), and the two differ in every frame.
+
 `dream run --view --view-wait`: while live, /export/start is refused (409, saying to export the
 replay); once the run is over the same URL is its replay, and an export of it works.
 
 With --browser: headless Chromium opens the replay, the user zooms with the keyboard, picks a
 step range with the timeline's "here" buttons and clicks "Export video" with the mouse; the page
 shows the progress, downloads the video (Chromium's download folder) and prints the command; the
-video has the frames the page said and equals that command's video. A screenshot is kept.
+video has the frames the page said and equals that command's video. The drawings layer, unticked
+with the mouse before the export, is left out (--no-drawings). A screenshot is kept.
 
 Usage: view_export.py --dream BIN --source DIR [--browser --artifacts DIR]
 """
@@ -31,6 +36,7 @@ import time
 import urllib.error
 import urllib.request
 
+from drawing_run import CONFIG as DRAWING_CONFIG, CONTROLLER as DRAWING_CONTROLLER
 from dreamtest import argument_parser, check, fail, main
 
 URL = re.compile(r"open (http://127\.0\.0\.1:\d+/)")
@@ -114,6 +120,7 @@ def check_refusals(base):
         "speed=0.01&fps=60": "frames",
         "format=avi": "format",
         "goals=yes": "goals",
+        "drawings=2": "drawings",
     }
     for query, named in hostile.items():
         code, _, body = get(base + "export/start?" + query, export_header=True)
@@ -144,6 +151,44 @@ def check_http_export(ctx, dream, base):
     with open(path, "wb") as f:
         f.write(video)
     same_as_command(ctx, dream, ctx.path(), path, status)
+
+
+def export_over_http(ctx, dream, base, query):
+    """Asks /export/start?query, waits for it, downloads it and checks it against its printed command:
+    (the status, the video's path, its frames' hashes)."""
+    code, _, body = get(base + "export/start?" + query, export_header=True)
+    check(code == 202, f"/export/start?{query}: {code} {body!r}")
+    status = wait_done(base, json.loads(body)["job"])
+    code, _, video = get(base + "export/video")
+    check(code == 200 and len(video) == status["bytes"], f"/export/video: {code}, {len(video)} bytes")
+    path = ctx.path(f"export_{status['job']}_" + status["file"])
+    with open(path, "wb") as f:
+        f.write(video)
+    same_as_command(ctx, dream, ctx.path(), path, status)
+    return status, path, frame_hashes(path)
+
+
+def check_drawings_export(ctx, dream):
+    """A run whose controllers drew, exported with the drawings layer on and off."""
+    with open(ctx.path("painter.py"), "w") as f:
+        f.write(DRAWING_CONTROLLER)
+    with open(ctx.path("drawing.yaml"), "w") as f:
+        f.write(DRAWING_CONFIG)
+    ctx.run([dream, "run", ctx.path("drawing.yaml"), "--out", ctx.path("runs", "drawing"), "--set",
+             "controller.draw=true"], timeout=120, expect=0, cwd=ctx.path())
+    ctx.start("drawing_view", [dream, "view", os.path.join("runs", "drawing"), "--port", "0"], cwd=ctx.path())
+    ctx.wait_for_output("drawing_view", URL.pattern, 20)
+    base = URL.search(ctx.output("drawing_view")).group(1)
+    query = "format=mp4&width=480&speed=2&trail=0"
+    shown, _, with_drawings = export_over_http(ctx, dream, base, query + "&drawings=1")
+    hidden, _, without = export_over_http(ctx, dream, base, query + "&drawings=0")
+    check("--no-drawings" not in shown["command"] and "--no-drawings" in hidden["command"],
+          f"the printed commands do not say the drawings layer: {shown['command']!r} / {hidden['command']!r}")
+    check(len(with_drawings) == len(without) > 2, f"frames: {len(with_drawings)} with drawings, {len(without)} without")
+    # Every frame shows the robots' drawings (each robot's latest), in one and not the other.
+    same = [k for k in range(len(without)) if with_drawings[k] == without[k]]
+    check(not same, f"with and without drawings, frames {same[:10]} are equal")
+    ctx.stop("drawing_view")
 
 
 def check_browser(ctx, args, base):
@@ -183,6 +228,8 @@ def check_browser(ctx, args, base):
     click("export-from-here")
     seek(160)
     click("export-to-here")
+    click("show-drawings")
+    check(page.evaluate("document.getElementById('show-drawings').checked") is False, "the drawings layer is still on")
     click("export-start")
     deadline = time.monotonic() + 120
     state = {}
@@ -192,8 +239,9 @@ def check_browser(ctx, args, base):
             break
         time.sleep(0.1)
     check(state.get("state") == "done", f"the page's export did not finish: {state}")
-    check("--steps 40-160" in state["command"] and "--viewport=" in state["command"],
-          f"the page's export is not of the steps and viewport shown: {state['command']}")
+    check("--steps 40-160" in state["command"] and "--viewport=" in state["command"] and
+          "--no-drawings" in state["command"],
+          f"the page's export is not of the steps, viewport and layers shown: {state['command']}")
     # The viewport is the world the arena's plot area shows (arena.js's margins: 52, 14, 14, 40 px).
     seen = page.evaluate("(() => { const T = dreamView.T, c = document.getElementById('arena');"
                          " return [T.wx(52), T.wy(c.height - 40), T.wx(c.width - 14), T.wy(14)]; })()")
@@ -257,6 +305,7 @@ def test(ctx):
         check_browser(ctx, args, base)
     else:
         check_http_export(ctx, args.dream, base)
+        check_drawings_export(ctx, args.dream)
         check_run_view(ctx, args)
 
 

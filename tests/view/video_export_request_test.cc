@@ -40,16 +40,17 @@ TEST(VideoExportRequestTest, NothingAskedIsDreamRendersDefaultVideo) {
 TEST(VideoExportRequestTest, WhatThePageShowsBecomesDreamRendersOptions) {
   const VideoExportRequest request = Parse(
       "format=mp4&width=1280&fps=24&speed=2&trail=0&x0=-1.2&y0=-0.8&x1=0.3&y1=0.4&from=30&to=150&goals=0&"
-      "violations=0&ids=0&radio=1&sensors=1");
+      "violations=0&ids=0&drawings=0&radio=1&sensors=1");
   ASSERT_TRUE(request.viewport);
   EXPECT_DOUBLE_EQ(request.viewport->x_min_m, -1.2);
   EXPECT_DOUBLE_EQ(request.viewport->y_max_m, 0.4);
   EXPECT_EQ(request.first_step, 30);
   EXPECT_EQ(request.last_step, 150);
-  EXPECT_EQ(request.RenderArguments(),
-            (std::vector<std::string>{"--width", "1280", "--fps", "24", "--speed", "2", "--trail", "0",
-                                      "--viewport=-1.2,-0.8,0.3,0.4", "--steps", "30-150", "--no-goals",
-                                      "--no-violations", "--no-ids", "--radio-links", "--sensor-ranges"}));
+  EXPECT_EQ(
+      request.RenderArguments(),
+      (std::vector<std::string>{"--width", "1280", "--fps", "24", "--speed", "2", "--trail", "0",
+                                "--viewport=-1.2,-0.8,0.3,0.4", "--steps", "30-150", "--no-goals", "--no-violations",
+                                "--no-ids", "--no-drawings", "--radio-links", "--sensor-ranges"}));
 }
 
 TEST(VideoExportRequestTest, ValuesAreKeptAsThePrintedCommandGivesThem) {
@@ -92,6 +93,7 @@ TEST(VideoExportRequestTest, HostileQueriesAreRefusedNamingTheParameterAndValue)
       {"from=1234567890123&to=5", "not a step"},
       {"speed=0.01&fps=60", "frames, over 36000"},
       {"goals=yes", "goals=yes: expected 0 or 1"},
+      {"drawings=2", "drawings=2: expected 0 or 1"},
       {"speed=" + std::string(40, '1'), "speed: value over 24 chars"},
   };
   for (const auto& [query, reason] : cases) {

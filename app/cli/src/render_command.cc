@@ -69,6 +69,8 @@ void DeclareRenderCommand(CommandLine& line) {
   command->add_flag("--no-goals{false}", args->goals, "Leave out the config's goals");
   command->add_flag("--no-violations{false}", args->violations, "Leave out the violation marks");
   command->add_flag("--no-ids{false}", args->robot_ids, "Video: leave out the robots' ids");
+  command->add_flag("--no-drawings{false}", args->drawings,
+                    "Leave out what the controllers drew (DREAM_DRAW_<id>: self.draw_*, drawing())");
 }
 
 }  // namespace dream::cli

@@ -139,7 +139,7 @@ const DreamArena = (() => {
   // trail but work: they are skipped (the trail's newest point is always drawn).
   function trails(ctx, T, paths) {
     ctx.globalAlpha = 0.55;
-    ctx.lineWidth = 1.5;
+    ctx.lineWidth = 1;
     (paths || []).forEach((path, id) => {
       if (!path || path.length < 2) return;
       ctx.strokeStyle = colour(id);
@@ -218,34 +218,83 @@ const DreamArena = (() => {
         }
       }
     }
-    // Filled one by one (each its colour), outlined and headed in one path:
-    // one stroke for all robots instead of two each.
     const shown = [];
     for (let i = 0; i < scene.x.length; i++) {
-      if (!finite(scene.x[i], scene.y[i], scene.th[i])) continue;
-      shown.push(i);
-      ctx.beginPath();
-      ctx.arc(T.px(scene.x[i]), T.py(scene.y[i]), radius, 0, 2 * Math.PI);
-      ctx.fillStyle = scene.lost && scene.lost.includes(i) ? "#bbb" : colour(i);
-      ctx.fill();
+      if (finite(scene.x[i], scene.y[i], scene.th[i])) shown.push(i);
     }
+    const sprites = robotSprites(radius, scene.x.length, layers.ids);
+    if (!sprites) {  // zoomed in far: a few large discs, drawn as paths
+      for (const i of shown) {
+        const lost = scene.lost && scene.lost.includes(i);
+        disc(ctx, T, scene.x[i], scene.y[i], scene.th[i], radius, lost ? LOST : colour(i), "#222", false);
+      }
+      if (layers.ids) {
+        ctx.font = idFont(radius);
+        ctx.textAlign = "center";
+        ctx.textBaseline = "middle";
+        ctx.fillStyle = "#111";
+        for (const i of shown) ctx.fillText(String(i), T.px(scene.x[i]), T.py(scene.y[i]) - radius - 8);
+      }
+      return;
+    }
+    // Each robot's disc and id copied from its sprite at whole pixels; the headings in one path.
+    const { w, h, cx, cy } = sprites;
     ctx.beginPath();
     for (const i of shown) {
-      const x = T.px(scene.x[i]), y = T.py(scene.y[i]);
-      ctx.moveTo(x + radius, y);
-      ctx.arc(x, y, radius, 0, 2 * Math.PI);
+      const x = Math.round(T.px(scene.x[i])), y = Math.round(T.py(scene.y[i]));
+      const row = scene.lost && scene.lost.includes(i) ? h : 0;
+      ctx.drawImage(sprites.sheet, i * w, row, w, h, x - cx, y - cy, w, h);
       ctx.moveTo(x, y);
       ctx.lineTo(x + Math.cos(scene.th[i]) * radius, y - Math.sin(scene.th[i]) * radius);
     }
     ctx.strokeStyle = "#222";
     ctx.lineWidth = 1.5;
     ctx.stroke();
-    if (!layers.ids) return;
-    ctx.font = `${Math.max(10, Math.round(radius))}px system-ui, sans-serif`;
-    ctx.textAlign = "center";
-    ctx.textBaseline = "middle";
-    ctx.fillStyle = "#111";
-    for (const i of shown) ctx.fillText(String(i), T.px(scene.x[i]), T.py(scene.y[i]) - radius - 8);
+  }
+
+  // Each robot's disc (its colour, outlined) with its id above, and the same grey for a lost
+  // robot, drawn once per size into one image and copied each frame: to a software-rendering
+  // browser a copy costs less than filling and stroking an anti-aliased arc, and far less than
+  // writing text (docs/performance.md#dream-view). null when zoomed in so far that discs are large.
+  const LOST = "#bbb", MAX_SPRITE_RADIUS = 40;
+  const idFont = (radius) => `${Math.max(10, Math.round(radius))}px system-ui, sans-serif`;
+  let spriteCache = null;
+  function robotSprites(radius, count, ids) {
+    if (radius > MAX_SPRITE_RADIUS || count === 0) return null;
+    const key = `${radius}/${count}/${ids}`;
+    if (spriteCache && spriteCache.key === key) return spriteCache;
+    const half = Math.ceil(radius + 2), size = Math.max(10, Math.round(radius));
+    const labelH = Math.ceil(size * 1.6), above = Math.round(radius) + 8;  // the id's middle above the centre
+    const measure = document.createElement("canvas").getContext("2d");
+    measure.font = idFont(radius);
+    let labelW = 0;
+    for (let i = 0; ids && i < count; i++) labelW = Math.max(labelW, Math.ceil(measure.measureText(String(i)).width) + 4);
+    const w = Math.max(2 * half, labelW), cx = Math.round(w / 2);
+    const cy = ids ? Math.max(half, above + Math.ceil(labelH / 2)) : half, h = cy + half;
+    if (w * count > 16384) return null;  // more robots than one image of them holds
+    const sheet = typeof OffscreenCanvas === "function" ? new OffscreenCanvas(w * count, 2 * h)
+      : Object.assign(document.createElement("canvas"), { width: w * count, height: 2 * h });
+    const d = sheet.getContext("2d");
+    d.lineWidth = 1.5;
+    d.strokeStyle = "#222";
+    d.font = idFont(radius);
+    d.textAlign = "center";
+    d.textBaseline = "middle";
+    for (let row = 0; row < 2; row++) {
+      for (let i = 0; i < count; i++) {
+        d.beginPath();
+        d.arc(i * w + cx, row * h + cy, radius, 0, 2 * Math.PI);
+        d.fillStyle = row ? LOST : colour(i);
+        d.fill();
+        d.stroke();
+        d.fillStyle = "#111";
+        if (ids) d.fillText(String(i), i * w + cx, row * h + cy - above);
+      }
+    }
+    // An ImageBitmap: the cheapest source to copy from.
+    const image = sheet.transferToImageBitmap ? sheet.transferToImageBitmap() : sheet;
+    spriteCache = { key, sheet: image, w, h, cx, cy };
+    return spriteCache;
   }
 
   // The robot looked at: a ring around it and lines to the robots it hears or sees.
@@ -302,19 +351,80 @@ const DreamArena = (() => {
     }
   }
 
-  // The axes and the arena's edge, drawn once per size and view into an
-  // offscreen canvas and copied each frame: text is the costly part of a frame.
+  // What changes seldom (the axes, the arena's edge and, while no obstacle moves, the obstacles
+  // and the goals) is drawn into an offscreen canvas when it changes and copied each frame: one
+  // opaque copy instead of the clear, the axes' text and the paths (docs/performance.md#dream-view).
+  // Returns {key, layer, still}: still, it holds the obstacles and goals too.
   let cached = null;
-  function background(ctx, T, setup) {
-    const key = `${ctx.canvas.width}x${ctx.canvas.height}/${T.s}/${T.px(0)}/${T.py(0)}/${setup.arena}`;
+  function background(canvas, T, setup, list, goalLayer, progress) {
+    const still = (list || []).every(([, , , , , vx, vy]) => !(finite(vx, vy) && (vx !== 0 || vy !== 0)));
+    const key = `${canvas.width}x${canvas.height}/${T.s}/${T.px(0)}/${T.py(0)}/${setup.arena}/` +
+                (still ? `${String(list || [])}/${goalLayer ? String(progress || []) : "no goals"}` : "moving");
     if (!cached || cached.key !== key) {
-      const layer = document.createElement("canvas");
-      layer.width = ctx.canvas.width;
-      layer.height = ctx.canvas.height;
-      axes(layer.getContext("2d"), T, setup);
-      cached = { key, layer };
+      const layer = sized(cached && cached.layer, canvas);
+      const bg = layer.getContext("2d", { alpha: false });
+      bg.fillStyle = "#fff";
+      bg.fillRect(0, 0, layer.width, layer.height);
+      axes(bg, T, setup);
+      if (still) {
+        obstacles(bg, T, list);
+        if (goalLayer) goals(bg, T, setup, progress);
+      }
+      cached = { key, layer, still };
     }
-    ctx.drawImage(cached.layer, 0, 0);
+    return cached;
+  }
+
+  // An offscreen canvas of `canvas`'s size, cleared: `layer` when it has that size already.
+  function sized(layer, canvas) {
+    const fits = layer && layer.width === canvas.width && layer.height === canvas.height;
+    const fresh = fits ? layer : document.createElement("canvas");
+    fresh.width = canvas.width;  // also clears a canvas used again
+    fresh.height = canvas.height;
+    return fresh;
+  }
+
+  // Live trails only grow at their heads (and lose points at their tails): the background with
+  // the trails as they were a few frames ago is kept in an offscreen canvas, redrawn every
+  // TRAIL_REDRAW frames, and each frame copies it and adds each trail's newest points. Used once
+  // the same `paths` come twice (a replay builds new ones each frame); false: not drawn.
+  const TRAIL_REDRAW = 8;
+  let trailCache = null;
+  function backgroundWithTrails(ctx, T, bg, paths) {
+    const c = trailCache;
+    if (!c || c.paths !== paths) {
+      trailCache = { paths, layer: c && c.layer, bgKey: null };
+      return false;
+    }
+    const heads = c.bgKey === bg.key && c.age < TRAIL_REDRAW ? headsSince(c.last, paths) : null;
+    if (!heads) {
+      c.layer = sized(c.layer, ctx.canvas);
+      const t = c.layer.getContext("2d", { alpha: false });
+      t.drawImage(bg.layer, 0, 0);
+      trails(t, T, paths);
+      c.last = paths.map((path) => path && path[path.length - 1]);
+      c.bgKey = bg.key;
+      c.age = 0;
+    } else {
+      c.age += 1;
+    }
+    ctx.drawImage(c.layer, 0, 0);
+    if (heads) trails(ctx, T, heads);
+    return true;
+  }
+
+  // Each path's points from `last` (its newest point when the layer was drawn) on; null when a
+  // path lost that point (a new run).
+  function headsSince(last, paths) {
+    const heads = [];
+    for (let id = 0; id < paths.length; id++) {
+      const path = paths[id];
+      if (!path) continue;
+      const from = last[id] === undefined ? 0 : path.lastIndexOf(last[id]);
+      if (from < 0) return null;
+      heads[id] = path.slice(from);
+    }
+    return heads;
   }
 
   // What the controllers drew (DREAM_DRAW_<id>): entries [step, robot, clipped, shapes], each shape
@@ -384,15 +494,25 @@ const DreamArena = (() => {
   function draw(canvas, setup, scene, layers, paths, camera) {
     // Opaque: the browser composites it without blending it over the page.
     const ctx = canvas.getContext("2d", { alpha: false });
-    ctx.fillStyle = "#fff";
-    ctx.fillRect(0, 0, canvas.width, canvas.height);
-    if (!setup || !setup.arena) return null;
+    if (!setup || !setup.arena) {
+      ctx.fillStyle = "#fff";
+      ctx.fillRect(0, 0, canvas.width, canvas.height);
+      return null;
+    }
     const T = transform(canvas, setup, scene, camera);
-    background(ctx, T, setup);
-    obstacles(ctx, T, scene && scene.obstacles);
-    if (layers.goals) goals(ctx, T, setup, scene && scene.goalProgress);
+    const list = scene && scene.obstacles;
+    const bg = background(canvas, T, setup, list, layers.goals, scene && scene.goalProgress);
+    const trailsDrawn = scene && layers.trails && bg.still && paths && backgroundWithTrails(ctx, T, bg, paths);
+    if (!trailsDrawn && !(scene && layers.trails)) trailCache = null;  // drawn again from scratch when shown
+    if (!trailsDrawn) {
+      ctx.drawImage(bg.layer, 0, 0);
+      if (!bg.still) {
+        obstacles(ctx, T, list);
+        if (layers.goals) goals(ctx, T, setup, scene && scene.goalProgress);
+      }
+    }
     if (!scene) return T;
-    if (layers.trails) trails(ctx, T, paths);
+    if (layers.trails && !trailsDrawn) trails(ctx, T, paths);
     if (layers.sensors) sensors(ctx, T, setup, scene);
     if (layers.radio) links(ctx, T, scene);
     if (layers.drawings) drawings(ctx, T, setup, scene.drawings);

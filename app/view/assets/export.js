@@ -42,6 +42,7 @@
       format: $("export-format").value, width: $("export-width").value, speed: $("export-speed").value,
       trail: $("show-trails").checked ? 10 : 0,
       goals: +$("show-goals").checked, ids: +$("show-ids").checked, violations: +$("show-violations").checked,
+      drawings: +$("show-drawings").checked,
       radio: +($("show-radio").checked && !!setup.hears_known),
       sensors: +($("show-sensors").checked && (setup.sensors || []).length > 0),
     };

@@ -278,8 +278,8 @@
         if (shape[0] === 5 && summary.texts.length < 20) summary.texts.push(shape[7]);
       }
     }
-    const note = $("drawings-note");
-    if (note) note.textContent = summary.clipped > 0 ? ` (${summary.clipped} clipped)` : "";
+    const note = $("drawings-note"), text = summary.clipped > 0 ? ` (${summary.clipped} clipped)` : "";
+    if (note && note.textContent !== text) note.textContent = text;  // unchanged text: no layout for the page
     return summary;
   }
 

@@ -57,9 +57,9 @@ bool Flag(const std::string& name, const std::string& value) {
 
 // name=value pairs, each name once, every name known.
 std::map<std::string, std::string> Pairs(std::string_view query) {
-  static const std::set<std::string> kKnown = {"format",     "width", "fps",   "speed",  "trail", "x0",
-                                               "y0",         "x1",    "y1",    "from",   "to",    "goals",
-                                               "violations", "ids",   "radio", "sensors"};
+  static const std::set<std::string> kKnown = {"format",     "width", "fps",   "speed",   "trail",   "x0",
+                                               "y0",         "x1",    "y1",    "from",    "to",      "goals",
+                                               "violations", "ids",   "radio", "sensors", "drawings"};
   std::map<std::string, std::string> pairs;
   size_t at = 0;
   while (at < query.size()) {
@@ -143,6 +143,7 @@ VideoExportRequest VideoExportRequest::Parse(std::string_view query, const world
   if (has("goals")) request.goals = Flag("goals", pairs.at("goals"));
   if (has("violations")) request.violations = Flag("violations", pairs.at("violations"));
   if (has("ids")) request.robot_ids = Flag("ids", pairs.at("ids"));
+  if (has("drawings")) request.drawings = Flag("drawings", pairs.at("drawings"));
   if (has("radio")) request.radio_links = Flag("radio", pairs.at("radio"));
   if (has("sensors")) request.sensor_ranges = Flag("sensors", pairs.at("sensors"));
   const int64_t frames = request.FrameCount(run_first_step, run_last_step);
@@ -172,6 +173,7 @@ std::vector<std::string> VideoExportRequest::RenderArguments() const {
   if (!goals) args.emplace_back("--no-goals");
   if (!violations) args.emplace_back("--no-violations");
   if (!robot_ids) args.emplace_back("--no-ids");
+  if (!drawings) args.emplace_back("--no-drawings");
   if (radio_links) args.emplace_back("--radio-links");
   if (sensor_ranges) args.emplace_back("--sensor-ranges");
   return args;

@@ -267,6 +267,7 @@ RenderWorkflow::Result RenderWorkflow::Render(const Options& args) const {
   render::ArenaOverlays overlays = Overlays(args, log, run.num_robots());
   RunLabelFromSummary(log, &overlays);
   if (!args.goals) overlays.goals_m.clear();
+  overlays.draw_drawings = args.drawings;
   // Where and when the run broke a rule, by the world's own checks (the
   // Robotarium's arena and collision rule: WorldParams is not configurable).
   if (args.violations) {

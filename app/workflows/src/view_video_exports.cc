@@ -36,6 +36,7 @@ RenderWorkflow::Options RenderOptionsOf(const view::VideoExportRequest& request,
   options.goals = request.goals;
   options.violations = request.violations;
   options.robot_ids = request.robot_ids;
+  options.drawings = request.drawings;
   options.radio_links = request.radio_links;
   options.sensor_ranges = request.sensor_ranges;
   return options;

@@ -45,6 +45,7 @@ struct VideoExportRequest {
   bool goals = true;
   bool violations = true;
   bool robot_ids = true;
+  bool drawings = true;  ///< what the controllers drew (the page's drawings layer)
   bool radio_links = false;
   bool sensor_ranges = false;
 

@@ -39,6 +39,7 @@ class RenderWorkflow {
     bool goals = true;       ///< the config's goals (pictures and videos)
     bool violations = true;  ///< the violations marked (pictures and videos)
     bool robot_ids = true;   ///< videos: each robot's id on its disc
+    bool drawings = true;    ///< what the controllers drew (DREAM_DRAW_<id>; pictures and videos)
     /// Videos: frames drawn so far and to draw, after each (RunAnimation::Write).
     std::function<void(int drawn, int total)> progress;
     const std::atomic<bool>* stop = nullptr;  ///< asked between the stages and within the long ones
