@@ -213,12 +213,19 @@ def run_dream(ctx, args, stub, script, name, rejected, options):
     env = dict(os.environ, PYTHONPATH=python_path(stub, options), DREAM_PYTHON=sys.executable, MPLBACKEND="Agg")
     ctx.start(name + "_dream", [args.dream, "run", script, "--seed", str(options["seed"]), "--out", out_dir, "-q"], env=env)
     code = ctx.wait(name + "_dream", 900)
-    # The one judge: 3 when the official debug text says the Robotarium would reject the run, else 0.
-    check(code == (3 if rejected else 0), f"dream run {script} exited {code} (the official text says "
-                                          f"{'rejected' if rejected else 'accepted'}): {tail(ctx.output(name + '_dream'), 1500)}")
     with open(os.path.join(out_dir, "script_output.txt"), errors="replace") as f:
         text = debug_text(f.read())
     check(os.path.isfile(os.path.join(out_dir, "summary.json")), f"{out_dir}: no summary.json")
+    # The one judge: 3 when the official debug text says the Robotarium would reject the run, else 0;
+    # a capped example is cut before its loop ends, so it may also miss its own goal (5), for no other reason.
+    expected = 3 if rejected else 0
+    if code == 5 and not rejected and options["cap"] is not None:
+        with open(os.path.join(out_dir, "summary.json")) as f:
+            rules = {reason["rule"] for reason in json.load(f)["verdict_reasons"] if reason["verdict"] != "warning"}
+        check(rules == {"goal"}, f"dream run {script} (capped) exited 5 for {sorted(rules)}, not only its goal")
+        expected = 5
+    check(code == expected, f"dream run {script} exited {code} (the official text says "
+                            f"{'rejected' if rejected else 'accepted'}): {tail(ctx.output(name + '_dream'), 1500)}")
     return out_dir, text
 
 
