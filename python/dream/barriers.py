@@ -150,8 +150,8 @@ class _RowLayout:
         parts = [pair_bounds]
         if self.walls:
             bp, half = boundary, safety_radius / 2
-            gaps = (bp[3] - half - x[1], x[1] - bp[2] - half, bp[1] - half - x[0], x[0] - bp[0] - half)
-            parts.append(np.stack([0.4 * barrier_gain * gap ** 3 for gap in gaps], axis=1).reshape(-1))
+            gaps = np.stack((bp[3] - half - x[1], x[1] - bp[2] - half, bp[1] - half - x[0], x[0] - bp[0] - half), axis=1)
+            parts.append((0.4 * barrier_gain * gaps ** 3).reshape(-1))  # elementwise: as each wall's own
         parts.append(self.octagon_bounds)
         return np.concatenate(parts)
 
@@ -205,6 +205,7 @@ class _InteriorPoint:
         self.scaled = np.empty((2, m))  # the corrected ds and dz, scaled
         self.work = [np.empty(m) for _ in range(3)]
         self.x, self.x_step = np.empty(size), np.empty(size)
+        self._pair_sources()
         self.products = None
 
     def solve(self, diff, q, h):
@@ -218,17 +219,37 @@ class _InteriorPoint:
             except (ArithmeticError, FloatingPointError):
                 return None
 
-    def _set_pairs(self, diff):
-        """A's pair entries, and the products they add to the reduced matrix (_RowLayout.product_places)."""
+    def _pair_sources(self):
+        """One vector the step's pair numbers are written into, [u; -u; uu; -uu] (u = -2 (x_i - x_j),
+        2 x pairs; uu its products u0 u0, u1 u0, u1 u1, 3 x pairs), then the rows that never change;
+        and where A's entries (in cvxopt's order) and the reduced matrix's products
+        (_RowLayout.product_places) take theirs from it."""
         layout = self.layout
-        u = -2 * diff
-        entries = np.concatenate((u[0], u[1], -u[0], -u[1], layout.single_entries))
-        self.A.V = self.matrix(entries[layout.ccs_order])
-        # A pair's u u' = v v' = 4 (x_i - x_j)(x_i - x_j)' and v u' = -u u'.
-        uu00, uu10, uu11 = u[0] * u[0], u[1] * u[0], u[1] * u[1]
-        diagonal = np.stack((uu00, uu10, uu11), axis=1).reshape(-1)
-        below = np.stack((-uu00, -uu10, -uu10, -uu11), axis=1).reshape(-1)
-        self.products = np.concatenate((diagonal, diagonal, layout.single_products, below, layout.identity_products))
+        pairs = layout.first.size
+        fixed = np.concatenate((layout.single_entries, layout.single_products, layout.identity_products))
+        self.sources = np.concatenate((np.empty(10 * pairs), fixed))
+        self.u, self.negated_u = self.sources[:2 * pairs].reshape(2, pairs), self.sources[2 * pairs:4 * pairs]
+        self.uu, self.negated_uu = self.sources[4 * pairs:7 * pairs].reshape(3, pairs), self.sources[7 * pairs:10 * pairs]
+        single_entries, single_products = 10 * pairs, 10 * pairs + layout.single_entries.size
+        identity = single_products + layout.single_products.size
+        entries = np.concatenate((np.arange(4 * pairs), single_entries + np.arange(layout.single_entries.size)))
+        self.entry_sources = entries[layout.ccs_order]
+        k = np.arange(pairs)[:, None]
+        # A pair's u u' = v v' = 4 (x_i - x_j)(x_i - x_j)' on both diagonal blocks, and v u' = -u u' below.
+        diagonal = (4 * pairs + np.array([0, 1, 2]) * pairs + k).reshape(-1)
+        below = (7 * pairs + np.array([0, 1, 1, 2]) * pairs + k).reshape(-1)
+        self.product_sources = np.concatenate((diagonal, diagonal, single_products + np.arange(layout.single_products.size),
+                                               below, identity + np.arange(layout.size)))
+
+    def _set_pairs(self, diff):
+        """A's pair entries, and the products they add to the reduced matrix, for the step's x_i - x_j."""
+        u, uu = self.u, self.uu
+        np.multiply(diff, -2, out=u)
+        np.negative(u, out=self.negated_u.reshape(u.shape))
+        np.multiply(u[[0, 1, 1]], u[[0, 0, 1]], out=uu)
+        np.negative(uu, out=self.negated_uu.reshape(uu.shape))
+        self.A.V = self.matrix(self.sources[self.entry_sources])
+        self.products = self.sources[self.product_sources]
 
     def _iterate(self, q, h):
         reltol, feastol, abstol, maxiters = self.options["reltol"], self.options["feastol"], 1e-7, \
@@ -419,8 +440,8 @@ def _unicycle(safety_radius, barrier_gain, projection_distance, velocity_magnitu
         if n < 2:
             return dxu
         # The point d ahead of each robot, and its velocity: R(theta) diag(1, d) (v, w).
-        xi = x[0:2, :] + d * np.array([np.cos(x[2, :]), np.sin(x[2, :])])
         cos, sin = np.cos(x[2, :]), np.sin(x[2, :])
+        xi = x[0:2, :] + d * np.array([cos, sin])
         # Rounded as rps's R @ T @ dxu rounds (matmul sums from +0.0), so the certificate is rps's bit for bit.
         dxi = np.array([0.0 + cos * dxu[0, :] + (-sin * d) * dxu[1, :], 0.0 + sin * dxu[0, :] + (cos * d) * dxu[1, :]])
         if obstacles is not None and np.size(obstacles) > 0:
