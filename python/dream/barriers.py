@@ -199,6 +199,7 @@ class _InteriorPoint:
         self.wbz, self.gux = np.frombuffer(self.wbz_c), np.frombuffer(self.gux_c)
         self.z, self.s = self.zs
         self.weights = np.ones(m + 1)  # W^-2's diagonal, and a 1 for the reduced matrix's 2 I
+        self.row_weights = self.weights[:-1]
         self.scaling = np.empty((2, m))  # d^-1 and d: [z; s] = lmbda [d^-1; d]
         self.di, self.d = self.scaling
         self.lmbda, self.lmbda_squared, self.rz, self.gx = (np.empty(m) for _ in range(4))
@@ -299,16 +300,16 @@ class _InteriorPoint:
         ArithmeticError when it is not positive definite (only with non-finite data), as cvxopt's own
         factoring fails."""
         layout, weights = self.layout, self.weights
-        np.multiply(self.di, self.di, out=weights[:-1])
-        np.copyto(self.reduced, np.bincount(layout.product_places, self.products * weights[layout.product_rows],
-                                            minlength=self.reduced.size))
+        np.multiply(self.di, self.di, out=self.row_weights)
+        self.reduced[:] = np.bincount(layout.product_places, self.products * weights[layout.product_rows],
+                                      minlength=self.reduced.size)
         self.potrf(self.factored)
 
     def _kkt_solve(self, rx, bz, negated, uz):
         """cvxopt's KKT system [2I A'; A -W'W] [ux; W^-1 uz] = [-rx; bz] with the factored scaling: ux in
         self.rhs, A ux in self.gux, uz into `uz`. `negated`: bz holds -bz (which spares a negation)."""
-        np.multiply(self.weights[:-1], bz, out=self.wbz)
-        np.copyto(self.rhs, rx)
+        np.multiply(self.row_weights, bz, out=self.wbz)
+        self.rhs[:] = rx
         self.gemv(self.A, self.wbz_c, self.rhs_c, trans="T", alpha=-1.0 if negated else 1.0, beta=-1.0)
         self.potrs(self.factored, self.rhs_c)
         self.gemv(self.A, self.rhs_c, self.gux_c)
