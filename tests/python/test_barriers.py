@@ -54,8 +54,8 @@ class ReferenceTest(unittest.TestCase):
 
 
 class InteriorPointTest(unittest.TestCase):
-    """dream.barriers runs cvxopt's iterations in numpy (_interior_point), its KKT systems solved
-    through the QP's structure (_StructuredKkt); on the same QPs, cvxopt.solvers.qp on rps's dense
+    """dream.barriers runs cvxopt's iterations in numpy (_InteriorPoint), its KKT systems solved
+    through the QP's structure (_RowLayout, A sparse); on the same QPs, cvxopt.solvers.qp on rps's dense
     problem (bit_exact=True) must give the same commands and fail where they fail: random states,
     crowded ones (where the QP fails), obstacle points included."""
 
