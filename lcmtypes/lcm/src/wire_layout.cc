@@ -46,6 +46,12 @@ WireLayout& WireLayout::Array(int element_bytes) {
   return *this;
 }
 
+WireLayout& WireLayout::BooleanArray() {
+  Array(1);
+  fields_.back().kind = Kind::kBooleanArray;
+  return *this;
+}
+
 WireLayout& WireLayout::String(int32_t max_bytes) {
   fields_.push_back({Kind::kString, max_bytes});
   return *this;
@@ -93,6 +99,13 @@ std::optional<std::string> WireLayout::Problem(const void* data, int size) const
                  " bytes at byte " + std::to_string(at) + ", only " + std::to_string(left()) + " left";
         }
         at += count * field.bytes_or_max;
+        break;
+      case Kind::kBooleanArray:
+        if (count > left()) return cut("a boolean array");
+        for (int64_t i = 0; i < count; ++i, ++at) {
+          if (bytes[at] > 1)
+            return "boolean at byte " + std::to_string(at) + " is " + std::to_string(bytes[at]) + ", not 0 or 1";
+        }
         break;
       case Kind::kString: {
         if (left() < 4) return cut("a string length");
