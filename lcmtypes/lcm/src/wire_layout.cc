@@ -16,6 +16,15 @@ int64_t BigEndian(const uint8_t* bytes, int count) {
   return static_cast<int64_t>(value);
 }
 
+// Why `count` LCM booleans from byte `at` are not all 0 or 1, or nothing.
+std::optional<std::string> NotBooleans(const uint8_t* bytes, int64_t at, int64_t count) {
+  for (int64_t i = at; i < at + count; ++i) {
+    if (bytes[i] > 1)
+      return "boolean at byte " + std::to_string(i) + " is " + std::to_string(bytes[i]) + ", not 0 or 1";
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 WireLayout& WireLayout::Fixed(int bytes) {
@@ -80,8 +89,7 @@ std::optional<std::string> WireLayout::Problem(const void* data, int size) const
         break;
       case Kind::kBoolean:
         if (left() < 1) return cut("a boolean");
-        if (bytes[at] > 1)
-          return "boolean at byte " + std::to_string(at) + " is " + std::to_string(bytes[at]) + ", not 0 or 1";
+        if (std::optional<std::string> problem = NotBooleans(bytes, at, 1)) return problem;
         ++at;
         break;
       case Kind::kCount:
@@ -102,10 +110,8 @@ std::optional<std::string> WireLayout::Problem(const void* data, int size) const
         break;
       case Kind::kBooleanArray:
         if (count > left()) return cut("a boolean array");
-        for (int64_t i = 0; i < count; ++i, ++at) {
-          if (bytes[at] > 1)
-            return "boolean at byte " + std::to_string(at) + " is " + std::to_string(bytes[at]) + ", not 0 or 1";
-        }
+        if (std::optional<std::string> problem = NotBooleans(bytes, at, count)) return problem;
+        at += count;
         break;
       case Kind::kString: {
         if (left() < 4) return cut("a string length");
