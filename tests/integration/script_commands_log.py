@@ -83,8 +83,12 @@ def commands_logged(dream, out_dir):
             by_channel.setdefault(event.channel, []).append(event.data)
     check("DREAM_CMDS" not in by_channel, "DREAM_CMDS reached the run log")
     for channel, messages in by_channel.items():
-        steps = [dream.velocity_command_t.decode(data).step for data in messages]
-        check(steps == list(range(STEPS)), f"{channel}: commands logged for steps {steps[:5]}..{steps[-3:]}")
+        commands = [dream.velocity_command_t.decode(data) for data in messages]
+        steps = [command.step for command in commands]
+        # One per step() and then call_at_scripts_end()'s: the next step answered with every robot done.
+        check(steps == list(range(STEPS + 1)), f"{channel}: commands logged for steps {steps[:5]}..{steps[-3:]}")
+        done = [command.done for command in commands]
+        check(done == [False] * STEPS + [True], f"{channel}: done flags {done[-3:]}")
     return sorted(by_channel)
 
 
