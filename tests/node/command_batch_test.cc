@@ -1,12 +1,24 @@
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <atomic>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "dream/lcm/bad_message_log.h"
+#include "dream/lcm/channels.h"
+#include "dream/lcm/lcm_bus.h"
+#include "dream/lcm/lcm_typed.h"
+#include "dream/lcm/log_reader.h"
 #include "dream/node/command_intake.h"
+#include "dream/node/run_recorder.h"
+#include "dream/node/sim_node.h"
+#include "dream/robot_poses_t.hpp"
+#include "quiet_bus.h"
 #include "dream/robot_commands_t.hpp"
 #include "dream/velocity_command_t.hpp"
 #include "dream/world/unicycle_world.h"
@@ -25,6 +37,20 @@ struct EntryHeard {
   Heard heard;
 };
 
+robot_commands_t Batch(std::vector<int32_t> ids, int64_t agent = kAgent) {
+  robot_commands_t batch{};
+  batch.run_id = kRunId;
+  batch.agent_id = agent;
+  batch.num_commands = static_cast<int32_t>(ids.size());
+  for (const int32_t id : ids) {
+    batch.robot_id.push_back(id);
+    batch.v.push_back(0.01 * (id + 1));
+    batch.w.push_back(-0.1 * (id + 1));
+    batch.done.push_back(id == 1 ? 1 : 0);
+  }
+  return batch;
+}
+
 class CommandBatchTest : public ::testing::Test {
  protected:
   CommandBatchTest()
@@ -34,20 +60,6 @@ class CommandBatchTest : public ::testing::Test {
                 [this](int64_t run_id, const std::string& seen_on) {
                   other_worlds_.push_back(seen_on + " " + std::to_string(run_id));
                 }) {}
-
-  static robot_commands_t Batch(std::vector<int32_t> ids, int64_t agent = kAgent) {
-    robot_commands_t batch{};
-    batch.run_id = kRunId;
-    batch.agent_id = agent;
-    batch.num_commands = static_cast<int32_t>(ids.size());
-    for (const int32_t id : ids) {
-      batch.robot_id.push_back(id);
-      batch.v.push_back(0.01 * (id + 1));
-      batch.w.push_back(-0.1 * (id + 1));
-      batch.done.push_back(id == 1 ? 1 : 0);
-    }
-    return batch;
-  }
 
   Heard TakeAll(const robot_commands_t& batch) {
     heard_.clear();
@@ -178,6 +190,69 @@ TEST_F(CommandBatchTest, AnEntryIsCheckedAsItsPerRobotMessageWouldBe) {
     EXPECT_EQ(robots[i].done, robots_[i].done);
   }
   EXPECT_EQ(per_robot.rejected_commands(), intake_.rejected_commands());
+}
+
+// Through the world: a script-like agent answers every step with one DREAM_CMDS for
+// the three robots (and, at step 2, a forged one listing robot 0 twice).
+TEST(CommandBatchRunTest, TheWorldDrivesEveryRobotFromOneMessageAndLogsEachAsItsDreamCmd) {
+  lcm::LcmBus bus("memq://");
+  testing::QuietBus quiet_bus(bus);
+  world::UnicycleWorld world(world::WorldParams{}, {{-1.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}});
+  lcm::BadMessageLog bad_poses;
+  const lcm::Subscription agent = lcm::Subscribe<robot_poses_t>(
+      bus, lcm::kPosesChannel,
+      [&bus](const std::string&, const robot_poses_t& poses) {
+        robot_commands_t commands = Batch({0, 1, 2});
+        commands.utime = poses.utime;
+        commands.step = poses.step;
+        commands.run_id = poses.run_id;
+        commands.v = {0.1, 0.05, -0.1};
+        commands.w = {0.0, 0.0, 0.0};
+        commands.done = {0, 0, 0};
+        if (poses.step == 2) {
+          robot_commands_t forged = commands;
+          forged.robot_id = {0, 0, 2};
+          forged.v = {-0.2, -0.2, -0.2};
+          lcm::Publish(bus, lcm::kCommandsChannel, forged);
+        }
+        lcm::Publish(bus, lcm::kCommandsChannel, commands);
+      },
+      bad_poses);
+  config::SimNodeOptions options;
+  options.max_steps = 6;
+  options.stop_when_done = false;
+  options.start_timeout_s = 0.5;
+  options.progress_interval_s = 0.0;
+  const std::string log_path = ::testing::TempDir() + "/command_batch_" + std::to_string(::getpid()) + ".lcmlog";
+  RunOutcome outcome;
+  {
+    RunRecorder recorder(log_path);
+    SimNode node(quiet_bus, world, &recorder, options);
+    node.set_clock(quiet_bus.clock());
+    std::atomic<bool> stop{false};
+    outcome = node.Run(stop);
+    recorder.Close();
+  }
+  EXPECT_EQ(outcome.end, RunOutcome::End::kFinished);
+  EXPECT_EQ(outcome.steps, 6);
+  EXPECT_NEAR(world.poses()[0].x_m, -1.0 + 6 * 0.033 * 0.1, 1e-12) << "the forged message moved nothing";
+  EXPECT_NEAR(world.poses()[2].x_m, 1.0 - 6 * 0.033 * 0.1, 1e-12);
+  EXPECT_EQ(outcome.rejected_commands, 1);
+  EXPECT_EQ(outcome.bad_messages.at("DREAM_CMDS"), 1);
+  std::map<std::string, std::vector<int64_t>> steps_logged;
+  for (const lcm::LogRecord& record : lcm::LogReader::ReadAll(log_path)) {
+    if (record.channel.rfind("DREAM_CMD", 0) != 0) continue;
+    velocity_command_t command;
+    ASSERT_TRUE(lcm::Decode(record.data.data(), static_cast<int>(record.data.size()), &command)) << record.channel;
+    EXPECT_EQ(record.channel, lcm::CommandChannel(command.robot_id));
+    EXPECT_EQ(command.agent_id, kAgent);
+    EXPECT_EQ(command.run_id, outcome.run_id);
+    steps_logged[record.channel].push_back(command.step);
+  }
+  std::remove(log_path.c_str());
+  const std::vector<int64_t> every_step = {0, 1, 2, 3, 4, 5};
+  EXPECT_EQ(steps_logged, (std::map<std::string, std::vector<int64_t>>{
+                              {"DREAM_CMD_0", every_step}, {"DREAM_CMD_1", every_step}, {"DREAM_CMD_2", every_step}}));
 }
 
 }  // namespace
