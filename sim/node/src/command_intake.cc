@@ -50,6 +50,11 @@ Heard CommandIntake::Take(const std::string& channel, const velocity_command_t& 
 }
 
 std::optional<std::string> CommandIntake::WholeMessageProblem(const robot_commands_t& commands) const {
+  const auto entries = static_cast<size_t>(std::max(commands.num_commands, 0));
+  if (commands.robot_id.size() != entries || commands.v.size() != entries || commands.w.size() != entries ||
+      commands.done.size() != entries) {
+    return "its arrays do not hold num_commands = " + std::to_string(commands.num_commands) + " entries";
+  }
   if (commands.num_commands > world_.num_robots()) {
     return std::to_string(commands.num_commands) + " commands, but this run has " +
            std::to_string(world_.num_robots()) + " robots";
