@@ -22,7 +22,7 @@ script's own process (all of the official side's work; under `dream run` the scr
 world's C++ step and the bus aside), which a loaded machine disturbs far less than wall time, and
 under `dream run` the wall time per step the script spent waiting for the world's poses
 (WorldLink.next_poses: the world's round trip) and publishing its commands (WorldLink.send: one
-DREAM_CMD_<id> per robot), both inside the step's time. The load average is printed before and after.
+DREAM_CMDS message for every robot), both inside the step's time. The load average is printed before and after.
 """
 
 import argparse

@@ -12,6 +12,7 @@
 #include "dream/obstacles_t.hpp"
 #include "dream/radio_message_t.hpp"
 #include "dream/robot_busy_t.hpp"
+#include "dream/robot_commands_t.hpp"
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
@@ -56,7 +57,7 @@ void LcmMessageTarget(const uint8_t* data, size_t size) {
   if (size < 1 || size > (size_t{1} << 20)) return;
   // A copy of exactly the message's bytes, so ASan sees any read past them.
   const std::vector<uint8_t> bytes(data + 1, data + size);
-  switch (data[0] % 11) {
+  switch (data[0] % 12) {
     case 0:
       Decode<applied_commands_t>(bytes);
       break;
@@ -86,6 +87,9 @@ void LcmMessageTarget(const uint8_t* data, size_t size) {
       break;
     case 9:
       Decode<robot_busy_t>(bytes);
+      break;
+    case 10:
+      Decode<robot_commands_t>(bytes);
       break;
     default:
       (void)agents::PositionMessage::Decode(bytes, 1);

@@ -47,6 +47,8 @@ def types_for(dream):
         (re.compile(r"DREAM_APPLIED"), dream.applied_commands_t),
         (re.compile(r"DREAM_VERDICT"), dream.run_verdict_t),
         (re.compile(r"DREAM_BUSY_[0-9]+"), dream.robot_busy_t),
+        # DREAM_CMDS (robot_commands_t) is never in a run's log: the world records
+        # each entry it takes as DREAM_CMD_<id>, so one there is an unexpected channel.
     ]
 
 

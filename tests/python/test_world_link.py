@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The script's side of `dream run SCRIPT.py` (python/rps_dream/rps/_world_link.py) on an in-memory
-bus: a step of the world's is answered with one DREAM_CMD_<id> per robot whose bytes are lcm-gen's
-velocity_command_t encoding of that step's command (the link packs them itself, for speed), and a
+bus: a step of the world's is answered with one DREAM_CMDS message whose bytes are lcm-gen's
+robot_commands_t encoding of that step's commands (the link packs them itself, for speed), and a
 resent step gets the same bytes again.
 
 Needs lcm-gen's Python types (DREAM_BUILD_DIR/python); exit 77 (skipped) without them or numpy.
@@ -25,10 +25,10 @@ from rps._world_link import WorldGone, WorldLink, _types  # noqa: E402
 
 class WorldLinkTest(unittest.TestCase):
     def setUp(self):
-        self.poses_t, self.command_t, _, self.status_t = _types()
+        self.poses_t, self.commands_t, _, self.status_t = _types()
         self.link = WorldLink(3, url="memq://")
         self.heard = []
-        self.link.bus.subscribe("DREAM_CMD_.*", lambda channel, data: self.heard.append((channel, data)))
+        self.link.bus.subscribe("DREAM_CMD.*", lambda channel, data: self.heard.append((channel, data)))
 
     def tearDown(self):
         self.link.close()
@@ -52,24 +52,35 @@ class WorldLinkTest(unittest.TestCase):
         while self.link.bus.handle_timeout(0) > 0:
             pass
 
-    def expected(self, step, i, v, w, done):
-        command = self.command_t()
-        command.utime, command.step, command.run_id, command.robot_id = 33000 * step, step, 77, i
-        command.agent_id, command.v, command.w, command.done = self.link.agent_id, v, w, done
-        return command.encode()
+    def expected(self, step, velocities, done):
+        commands = self.commands_t()
+        commands.utime, commands.step, commands.run_id = 33000 * step, step, 77
+        commands.agent_id, commands.num_commands = self.link.agent_id, velocities.shape[1]
+        commands.robot_id = list(range(velocities.shape[1]))
+        commands.v, commands.w = velocities[0].tolist(), velocities[1].tolist()
+        commands.done = [done] * velocities.shape[1]
+        return commands.encode()
 
-    def test_each_robots_command_is_lcm_gens_encoding(self):
+    def test_every_robots_command_is_one_message_in_lcm_gens_encoding(self):
         self.publish_step(4)
         np.testing.assert_array_equal(self.link.next_poses()[2], [0.0, 1.0, -2.0])
         velocities = np.array([[0.1, -0.2, np.nan], [1.5, 0.0, -3.0]])
         self.link.send(velocities, done=True)
         self.deliver()
-        self.assertEqual([channel for channel, _ in self.heard], ["DREAM_CMD_0", "DREAM_CMD_1", "DREAM_CMD_2"])
-        for i, (_, data) in enumerate(self.heard):
-            self.assertEqual(data, self.expected(4, i, velocities[0, i], velocities[1, i], True))
-        decoded = self.command_t.decode(self.heard[2][1])
-        self.assertTrue(np.isnan(decoded.v))
-        self.assertEqual((decoded.w, decoded.done), (-3.0, True))
+        self.assertEqual([channel for channel, _ in self.heard], ["DREAM_CMDS"])
+        self.assertEqual(self.heard[0][1], self.expected(4, velocities, True))
+        decoded = self.commands_t.decode(self.heard[0][1])
+        self.assertEqual(list(decoded.robot_id), [0, 1, 2])
+        self.assertTrue(np.isnan(decoded.v[2]))
+        self.assertEqual((decoded.w[2], list(decoded.done)), (-3.0, [True, True, True]))
+
+    def test_a_wider_velocity_array_sends_the_links_robots_only(self):
+        self.publish_step(5)
+        self.link.next_poses()
+        velocities = np.arange(8.0).reshape(2, 4) / 10
+        self.link.send(velocities)
+        self.deliver()
+        self.assertEqual(self.heard[0][1], self.expected(5, velocities[:, :3], False))
 
     def test_a_resent_step_gets_the_same_bytes(self):
         self.publish_step(9)
@@ -79,8 +90,9 @@ class WorldLinkTest(unittest.TestCase):
         first = list(self.heard)
         self.publish_step(9)  # the world resends the step it waits on
         self.deliver()
-        self.assertEqual(self.heard[3:], first)
-        self.assertEqual(first[1][1], self.expected(9, 1, 0.0, 0.4, False))
+        self.assertEqual(len(first), 1)
+        self.assertEqual(self.heard[1:], first)
+        self.assertEqual(first[0][1], self.expected(9, np.array([[0.05, 0.0, 0.2], [0.0, 0.4, 0.0]]), False))
 
     def test_foreign_and_forged_steps_are_not_handed_out_and_an_ending_status_ends(self):
         self.publish_step(1)

@@ -18,6 +18,7 @@
 #include "dream/drawing_t.hpp"
 #include "dream/radio_message_t.hpp"
 #include "dream/robot_busy_t.hpp"
+#include "dream/robot_commands_t.hpp"
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
@@ -38,6 +39,7 @@ const std::map<std::string, size_t> kCountOffset = {
     {"radio_message_t", 8 + 36},       {"robot_fault_t", 8 + 36}, {"applied_commands_t", 8 + 24},
     {"run_verdict_t", 8 + 24 + 14},     // goal_text's length
     {"drawing_t", 8 + 24 + 4 + 8 + 4},  // num_shapes
+    {"robot_commands_t", 8 + 24 + 8},   // num_commands
 };
 
 // Counts an attacker would pick: huge, negative, just over the limit, and
@@ -75,6 +77,7 @@ TEST(DecoderBounds, LayoutsMatchTheGeneratedEncodings) {
   EXPECT_EQ(lcm::WireLayoutOf<run_verdict_t>().MinimumBytes(), run_verdict_t{}.getEncodedSize());
   EXPECT_EQ(lcm::WireLayoutOf<drawing_t>().MinimumBytes(), drawing_t{}.getEncodedSize());
   EXPECT_EQ(lcm::WireLayoutOf<robot_busy_t>().MinimumBytes(), robot_busy_t{}.getEncodedSize());
+  EXPECT_EQ(lcm::WireLayoutOf<robot_commands_t>().MinimumBytes(), robot_commands_t{}.getEncodedSize());
 }
 
 TEST(DecoderBounds, TheLargestLegalMessagesDecode) {
@@ -92,6 +95,17 @@ TEST(DecoderBounds, TheLargestLegalMessagesDecode) {
   bytes = Encoded(radio);
   radio_message_t radio_back;
   EXPECT_TRUE(lcm::Decode(bytes.data(), static_cast<int>(bytes.size()), &radio_back));
+
+  robot_commands_t commands{};
+  commands.num_commands = MessageLimits::kRobots;
+  commands.robot_id.assign(MessageLimits::kRobots, 1);
+  commands.v = commands.w = std::vector<double>(MessageLimits::kRobots, 0.1);
+  commands.done.assign(MessageLimits::kRobots, 1);
+  bytes = Encoded(commands);
+  robot_commands_t commands_back;
+  EXPECT_TRUE(lcm::Decode(bytes.data(), static_cast<int>(bytes.size()), &commands_back));
+  bytes[bytes.size() - 1] = 2;  // a boolean that is neither 0 nor 1
+  EXPECT_FALSE(lcm::Decode(bytes.data(), static_cast<int>(bytes.size()), &commands_back));
 
   robot_fault_t fault{};
   fault.detail.assign(static_cast<size_t>(MessageLimits::kDetailBytes), 'x');

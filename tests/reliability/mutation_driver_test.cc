@@ -36,7 +36,7 @@ namespace {
 
 constexpr uint32_t kSeed = 20261123;
 // Counts for CI; DREAM_FUZZ_SCALE multiplies both (fuzz_scale.h).
-constexpr int kMutationsPerMessage = 5000;  // x 10 types, each through 10 decoders
+constexpr int kMutationsPerMessage = 5000;  // x 11 types, each through 11 decoders
 constexpr int kLogMutations = 3000;         // each through LogReader, RunLog and its views
 // A decoded message may hold what its bytes hold; the rest is bookkeeping.
 constexpr size_t kAllocationSlackBytes = 64 * 1024;

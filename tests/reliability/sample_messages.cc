@@ -6,6 +6,7 @@
 #include "dream/obstacles_t.hpp"
 #include "dream/radio_message_t.hpp"
 #include "dream/robot_busy_t.hpp"
+#include "dream/robot_commands_t.hpp"
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
@@ -110,12 +111,22 @@ std::vector<EncodedMessage> SampleMessages() {
   busy.agent_id = 0x1234567890;
   busy.call_robot_id = 0;
   busy.call_s = 0.25;
+  robot_commands_t commands{};
+  commands.step = 3;
+  commands.run_id = kRunId;
+  commands.agent_id = 0x1234567890;
+  commands.num_commands = 2;
+  commands.robot_id = {1, 0};
+  commands.v = {0.1, -0.05};
+  commands.w = {0.5, 0.0};
+  commands.done = {0, 1};
 
   return {{"robot_poses_t", Encoded(poses)},        {"obstacles_t", Encoded(obstacles)},
           {"run_status_t", Encoded(status)},        {"velocity_command_t", Encoded(command)},
           {"radio_message_t", Encoded(radio)},      {"robot_fault_t", Encoded(fault)},
           {"applied_commands_t", Encoded(applied)}, {"run_verdict_t", Encoded(verdict)},
-          {"drawing_t", Encoded(drawing)},          {"robot_busy_t", Encoded(busy)}};
+          {"drawing_t", Encoded(drawing)},          {"robot_busy_t", Encoded(busy)},
+          {"robot_commands_t", Encoded(commands)}};
 }
 
 namespace {
@@ -142,6 +153,7 @@ const std::map<std::string, TypedDecoder>& Decoders() {
       {"run_verdict_t", DecoderOf<run_verdict_t>()},
       {"drawing_t", DecoderOf<drawing_t>()},
       {"robot_busy_t", DecoderOf<robot_busy_t>()},
+      {"robot_commands_t", DecoderOf<robot_commands_t>()},
   };
   return decoders;
 }

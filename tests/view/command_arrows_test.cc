@@ -8,6 +8,7 @@
 
 #include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/lcm_typed.h"
+#include "dream/robot_commands_t.hpp"
 #include "dream/velocity_command_t.hpp"
 #include "dream/view/bus_frame_collector.h"
 #include "dream/view/frame_json.h"
@@ -71,6 +72,34 @@ TEST_F(CommandArrowsTest, CommandsNotOfTheRunDrawnOrItsRobotsOrAheadOfItAreNotDr
   EXPECT_EQ(collector_.bad_messages(), 1);
 }
 
+// A `dream run` script's DREAM_CMDS: each entry drawn as its robot's DREAM_CMD_<id> would be.
+TEST_F(CommandArrowsTest, EveryRobotsCommandInOneMessageIsDrawnEntryByEntry) {
+  Step(4, 0);
+  Step(4, 1);
+  robot_commands_t commands{};
+  commands.run_id = 4;
+  commands.step = 1;
+  commands.agent_id = 1;
+  commands.num_commands = 3;
+  commands.robot_id = {1, 9, 0};  // robot 9 is no robot of the run: left out
+  commands.v = {0.05, 0.9, 0.1};
+  commands.w = {0.25, 0.9, -0.5};
+  commands.done = {0, 0, 1};
+  Send("DREAM_CMDS", commands);
+  ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
+  ASSERT_EQ(frame_.command_v_mps.size(), 2u);
+  EXPECT_EQ(frame_.command_v_mps[0], 0.1);
+  EXPECT_EQ(frame_.command_w_radps[0], -0.5);
+  EXPECT_EQ(frame_.command_v_mps[1], 0.05);
+  commands.run_id = 5;  // another run's: not drawn
+  commands.v = {0.7, 0.7, 0.7};
+  Send("DREAM_CMDS", commands);
+  EXPECT_FALSE(collector_.TakeFrame(&frame_, &version_));
+  bus_.Publish("DREAM_CMDS", "not commands", 12);
+  Handle();
+  EXPECT_EQ(collector_.bad_messages(), 1);
+}
+
 // dream view on udpm: the commands (most of a run's datagrams) only once a page shows the arrows.
 TEST_F(CommandArrowsTest, ACollectorAskedForNoCommandsHearsThemOnlyOnceSubscribed) {
   lcm::LcmBus bus("memq://");
@@ -89,6 +118,15 @@ TEST_F(CommandArrowsTest, ACollectorAskedForNoCommandsHearsThemOnlyOnceSubscribe
     lcm::Publish(bus, "DREAM_STATUS", status);
     lcm::Publish(bus, "DREAM_POSES", poses);
     lcm::Publish(bus, "DREAM_CMD_0", Command(4, s, 0, 0.1 * static_cast<double>(s + 1), 0.0));
+    robot_commands_t commands{};
+    commands.run_id = 4;
+    commands.step = s;
+    commands.num_commands = 1;
+    commands.robot_id = {0};
+    commands.v = {0.5 * static_cast<double>(s + 1)};
+    commands.w = {0.0};
+    commands.done = {0};
+    if (s == 2) lcm::Publish(bus, "DREAM_CMDS", commands);
     while (bus.HandleSubscriptions(0) > 0) {
     }
   };
@@ -101,6 +139,9 @@ TEST_F(CommandArrowsTest, ACollectorAskedForNoCommandsHearsThemOnlyOnceSubscribe
   ASSERT_TRUE(collector.TakeFrame(&frame_, &version_));
   ASSERT_EQ(frame_.command_v_mps.size(), 1u);
   EXPECT_EQ(frame_.command_v_mps[0], 0.2);
+  step(2);  // DREAM_CMDS, heard once subscribed too
+  ASSERT_TRUE(collector.TakeFrame(&frame_, &version_));
+  EXPECT_EQ(frame_.command_v_mps[0], 1.5);
 }
 
 TEST(LiveViewCommandsTest, APageAsksForTheCommands) {

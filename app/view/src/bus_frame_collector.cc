@@ -77,6 +77,9 @@ void BusFrameCollector::SubscribeCommands() {
   command_subscription_ = bus_.Subscribe(
       std::string(lcm::kCommandChannelPrefix) + "[0-9]+",
       [this](const std::string& channel, const void* data, int size) { OnMessage(channel, data, size); });
+  // A `dream run` script's: every robot's command in one message a step.
+  commands_subscription_ = bus_.Subscribe(lcm::kCommandsChannel, [this](const std::string& channel, const void* data,
+                                                                        int size) { OnMessage(channel, data, size); });
 }
 
 void BusFrameCollector::OnMessage(const std::string& channel, const void* data, int size) {
@@ -129,6 +132,14 @@ void BusFrameCollector::OnMessage(const std::string& channel, const void* data, 
       return;
     }
     OnCommand(*robot);
+  } else if (channel == lcm::kCommandsChannel) {
+    const bool decoded = lcm::Decode(data, size, &commands_in_);
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!decoded) {
+      ++bad_messages_;
+      return;
+    }
+    OnCommands();
   } else if (const std::optional<int> drawer = lcm::RobotIdFromChannel(channel, lcm::kDrawChannelPrefix)) {
     drawing_in_ = drawing_t();  // lcm-gen's decoder leaves an array whose count is 0 as it was
     const bool decoded = lcm::Decode(data, size, &drawing_in_);
@@ -218,8 +229,8 @@ void BusFrameCollector::OnVerdict() {
 
 void BusFrameCollector::OnCommand(int robot) {
   // The run drawn's, for one of its robots on its own channel, answering a step up to the one drawn.
-  if (run_id_ == 0 || command_in_.run_id != run_id_ || command_in_.robot_id != robot || robot >= poses_.num_robots ||
-      command_in_.step > poses_.step) {
+  if (run_id_ == 0 || command_in_.run_id != run_id_ || command_in_.robot_id != robot || robot < 0 ||
+      robot >= poses_.num_robots || command_in_.step > poses_.step) {
     return;
   }
   const size_t i = static_cast<size_t>(robot);
@@ -233,6 +244,20 @@ void BusFrameCollector::OnCommand(int robot) {
   command_w_[i] = command_in_.w;
   command_step_[i] = command_in_.step;
   ++version_;
+}
+
+void BusFrameCollector::OnCommands() {
+  command_in_.utime = commands_in_.utime;
+  command_in_.step = commands_in_.step;
+  command_in_.run_id = commands_in_.run_id;
+  command_in_.agent_id = commands_in_.agent_id;
+  for (size_t i = 0; i < commands_in_.robot_id.size(); ++i) {
+    command_in_.robot_id = commands_in_.robot_id[i];
+    command_in_.v = commands_in_.v[i];
+    command_in_.w = commands_in_.w[i];
+    command_in_.done = commands_in_.done[i];
+    OnCommand(command_in_.robot_id);
+  }
 }
 
 void BusFrameCollector::OnDrawing(int robot) {

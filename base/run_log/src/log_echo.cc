@@ -19,7 +19,8 @@ constexpr int64_t kEventHeaderBytes = 4 + 8 + 8 + 4 + 4;
 /// True for the channels DREAM publishes its own types on: a message there
 /// that is not a DREAM type is damaged, not another program's.
 bool IsDreamDataChannel(const std::string& channel) {
-  for (const char* name : {lcm::kPosesChannel, lcm::kObstaclesChannel, lcm::kStatusChannel, lcm::kAppliedChannel}) {
+  for (const char* name :
+       {lcm::kPosesChannel, lcm::kObstaclesChannel, lcm::kStatusChannel, lcm::kAppliedChannel, lcm::kCommandsChannel}) {
     if (channel == name) return true;
   }
   for (const char* prefix : {lcm::kCommandChannelPrefix, lcm::kRadioChannelPrefix, lcm::kFaultChannelPrefix,

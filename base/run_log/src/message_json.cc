@@ -11,6 +11,7 @@
 #include "dream/lcm/wire_text.h"
 #include "dream/radio_message_t.hpp"
 #include "dream/robot_busy_t.hpp"
+#include "dream/robot_commands_t.hpp"
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
@@ -99,6 +100,17 @@ nlohmann::ordered_json ToJson(const robot_busy_t& m) {
       {{"robot_id", m.robot_id}, {"agent_id", m.agent_id}, {"call_robot_id", m.call_robot_id}, {"call_s", m.call_s}});
 }
 
+nlohmann::ordered_json ToJson(const robot_commands_t& m) {
+  std::vector<bool> done;
+  for (const int8_t d : m.done) done.push_back(d != 0);
+  return WithMessageStart(m, {{"agent_id", m.agent_id},
+                              {"num_commands", m.num_commands},
+                              {"robot_id", m.robot_id},
+                              {"v", m.v},
+                              {"w", m.w},
+                              {"done", done}});
+}
+
 nlohmann::ordered_json ToJson(const robot_fault_t& m) {
   return WithMessageStart(m, {{"robot_id", m.robot_id}, {"agent_id", m.agent_id}, {"detail", m.detail}});
 }
@@ -167,6 +179,7 @@ MessageJson::MessageJson(const std::vector<uint8_t>& data) {
   attempt(radio_message_t{});
   attempt(robot_fault_t{});
   attempt(robot_busy_t{});
+  attempt(robot_commands_t{});
   attempt(applied_commands_t{});
   attempt(run_verdict_t{});
   attempt(drawing_t{});

@@ -16,6 +16,15 @@ int64_t BigEndian(const uint8_t* bytes, int count) {
   return static_cast<int64_t>(value);
 }
 
+// Why `count` LCM booleans from byte `at` are not all 0 or 1, or nothing.
+std::optional<std::string> NotBooleans(const uint8_t* bytes, int64_t at, int64_t count) {
+  for (int64_t i = at; i < at + count; ++i) {
+    if (bytes[i] > 1)
+      return "boolean at byte " + std::to_string(i) + " is " + std::to_string(bytes[i]) + ", not 0 or 1";
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 WireLayout& WireLayout::Fixed(int bytes) {
@@ -43,6 +52,12 @@ WireLayout& WireLayout::Array(int element_bytes) {
   for (const Field& field : fields_) counted = counted || field.kind == Kind::kCount;
   if (!counted) throw std::logic_error("WireLayout: an Array needs a Count before it");
   fields_.push_back({Kind::kArray, element_bytes});
+  return *this;
+}
+
+WireLayout& WireLayout::BooleanArray() {
+  Array(1);
+  fields_.back().kind = Kind::kBooleanArray;
   return *this;
 }
 
@@ -74,8 +89,7 @@ std::optional<std::string> WireLayout::Problem(const void* data, int size) const
         break;
       case Kind::kBoolean:
         if (left() < 1) return cut("a boolean");
-        if (bytes[at] > 1)
-          return "boolean at byte " + std::to_string(at) + " is " + std::to_string(bytes[at]) + ", not 0 or 1";
+        if (std::optional<std::string> problem = NotBooleans(bytes, at, 1)) return problem;
         ++at;
         break;
       case Kind::kCount:
@@ -93,6 +107,11 @@ std::optional<std::string> WireLayout::Problem(const void* data, int size) const
                  " bytes at byte " + std::to_string(at) + ", only " + std::to_string(left()) + " left";
         }
         at += count * field.bytes_or_max;
+        break;
+      case Kind::kBooleanArray:
+        if (count > left()) return cut("a boolean array");
+        if (std::optional<std::string> problem = NotBooleans(bytes, at, count)) return problem;
+        at += count;
         break;
       case Kind::kString: {
         if (left() < 4) return cut("a string length");

@@ -6,6 +6,7 @@
 #include "dream/obstacles_t.hpp"
 #include "dream/radio_message_t.hpp"
 #include "dream/robot_busy_t.hpp"
+#include "dream/robot_commands_t.hpp"
 #include "dream/robot_fault_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
@@ -89,6 +90,18 @@ const WireLayout& WireLayoutOf<robot_busy_t>() {
                                        .Fixed(kInt32)             // robot_id
                                        .AgentId()                 //
                                        .Fixed(kInt32 + kDouble);  // call_robot_id, call_s
+  return layout;
+}
+
+template <>
+const WireLayout& WireLayoutOf<robot_commands_t>() {
+  static const WireLayout layout = MessageStart<robot_commands_t>()
+                                       .AgentId()
+                                       .Count(MessageLimits::kRobots)
+                                       .Array(kInt32)    // robot_id
+                                       .Array(kDouble)   // v
+                                       .Array(kDouble)   // w
+                                       .BooleanArray();  // done
   return layout;
 }
 

@@ -2,8 +2,10 @@
 
 `dream run SCRIPT.py` gives the LCM URL (DREAM_LCM_URL) and the folder of lcm-gen's Python types
 (DREAM_PYTHON_TYPES_DIR). next_poses() waits for the world's next step (DREAM_POSES); send()
-answers it with every robot's DREAM_CMD_<id>. A step the world sends again (it resends while it
-waits) gets the same commands again. Messages are checked before they are decoded (sizes, counts,
+answers it with every robot's command in one DREAM_CMDS message (robot_commands_t: one datagram a
+step, where one per robot woke every listener's receive thread once per robot), which the world
+takes and records entry by entry as each robot's DREAM_CMD_<id>. A step the world sends again (it
+resends while it waits) gets the same commands again. Messages are checked before they are decoded (sizes, counts,
 finite values), as the Python agent host checks them.
 """
 
@@ -42,7 +44,7 @@ def _types():
                            "run the script with `dream run SCRIPT.py`")
     if types_package not in package.__path__:
         package.__path__.append(types_package)
-    names = ("robot_poses_t", "velocity_command_t", "robot_fault_t", "run_status_t")
+    names = ("robot_poses_t", "robot_commands_t", "robot_fault_t", "run_status_t")
     return [getattr(importlib.import_module(f"{package.__name__}.{name}"), name) for name in names]
 
 
@@ -53,7 +55,7 @@ class WorldLink:
         package = dream_package()
         lcm = importlib.import_module(f"{package.__name__}.lcm")
         follower = importlib.import_module(f"{package.__name__}.world_follower")
-        self._poses_t, self._command_t, self._fault_t, self._status_t = _types()
+        self._poses_t, self._commands_t, self._fault_t, self._status_t = _types()
         self.n = n
         self.url = url or os.environ.get(URL_VARIABLE, "")
         if not self.url:
@@ -62,14 +64,16 @@ class WorldLink:
         self.agent_id = random.SystemRandom().getrandbits(62) + 1
         self.follower = follower.WorldFollower()
         self.bus = lcm.Lcm(self.url)
-        # Commands packed as lcm-gen's velocity_command_t.encode packs them, without its per-message objects.
-        self._command_fingerprint = self._command_t._get_packed_fingerprint()
+        # Commands packed as lcm-gen's robot_commands_t.encode packs them, without its per-message
+        # objects: the fingerprint, utime, step, run_id, agent_id, the count, then the robot ids, the
+        # v's, the w's and the done flags, each array whole.
+        self._commands_fingerprint = self._commands_t._get_packed_fingerprint()
         self._poses_fingerprint = self._poses_t._get_packed_fingerprint()
-        self._command_fields = struct.Struct(">qqqiqddb")
-        self._command_channels = [f"DREAM_CMD_{i}" for i in range(n)]
+        self._commands_start = struct.Struct(">qqqqi")
+        self._robot_ids = struct.pack(f">{n}i", *range(n))
         self._fresh = None       # (message, 3 x n poses) of a step not yet handed out
         self._current = None     # the message of the step handed out last
-        self._answers = []       # that step's encoded commands, sent again on a resend
+        self._answers = []       # that step's encoded DREAM_CMDS message, sent again on a resend
         self.answered = True     # whether the step handed out last has been answered
         self.ended = False
         self.end_detail = ""
@@ -127,10 +131,14 @@ class WorldLink:
     def send(self, velocities, done=False):
         """Answers the current step: robot i drives velocities[:, i] (v m/s, w rad/s)."""
         step = self._current
-        pack, fingerprint, done = self._command_fields.pack, self._command_fingerprint, bool(done)
-        speeds, turns = np.asarray(velocities, dtype=float)[:2, :self.n].tolist()
-        self._answers = [(channel, fingerprint + pack(step.utime, step.step, step.run_id, i, self.agent_id, v, w, done))
-                         for i, (channel, v, w) in enumerate(zip(self._command_channels, speeds, turns))]
+        speeds_and_turns = np.asarray(velocities, dtype=float)[:2, :self.n]
+        count = speeds_and_turns.shape[1]
+        start = self._commands_start.pack(step.utime, step.step, step.run_id, self.agent_id, count)
+        # Row by row, big-endian: every v, then every w, as lcm-gen writes the two arrays.
+        values = speeds_and_turns.astype(">f8").tobytes()
+        flags = (b"\x01" if done else b"\x00") * count
+        message = self._commands_fingerprint + start + self._robot_ids[:4 * count] + values + flags
+        self._answers = [("DREAM_CMDS", message)]
         self.answered = True
         for channel, answer in self._answers:
             self.bus.publish(channel, answer)

@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -9,6 +10,7 @@
 
 #include "dream/lcm/channels.h"
 #include "dream/lcm/run_id.h"
+#include "dream/robot_commands_t.hpp"
 #include "dream/velocity_command_t.hpp"
 
 namespace dream::node {
@@ -44,7 +46,50 @@ void CommandIntake::Conflict(const std::string& channel, RobotSlot& robot, const
 }
 
 Heard CommandIntake::Take(const std::string& channel, const velocity_command_t& command) {
-  const std::optional<int> id = AddressedRobot(channel, command);
+  return TakeFor(channel, lcm::RobotIdFromCommandChannel(channel), command);
+}
+
+std::optional<std::string> CommandIntake::WholeMessageProblem(const robot_commands_t& commands) const {
+  const auto entries = static_cast<size_t>(std::max(commands.num_commands, 0));
+  if (commands.robot_id.size() != entries || commands.v.size() != entries || commands.w.size() != entries ||
+      commands.done.size() != entries) {
+    return "its arrays do not hold num_commands = " + std::to_string(commands.num_commands) + " entries";
+  }
+  if (commands.num_commands > world_.num_robots()) {
+    return std::to_string(commands.num_commands) + " commands, but this run has " +
+           std::to_string(world_.num_robots()) + " robots";
+  }
+  std::vector<int32_t> ids = commands.robot_id;
+  std::sort(ids.begin(), ids.end());
+  const auto twice = std::adjacent_find(ids.begin(), ids.end());
+  if (twice != ids.end()) return "robot " + std::to_string(*twice) + " is listed twice";
+  return std::nullopt;
+}
+
+Heard CommandIntake::TakeAll(const std::string& channel, const robot_commands_t& commands, const EntryHeard& each) {
+  if (const std::optional<std::string> problem = WholeMessageProblem(commands)) {
+    Reject(channel, *problem + ": the whole message is refused", commands.agent_id);
+    return Heard::kRefused;
+  }
+  velocity_command_t command;
+  command.utime = commands.utime;
+  command.step = commands.step;
+  command.run_id = commands.run_id;
+  command.agent_id = commands.agent_id;
+  for (size_t i = 0; i < commands.robot_id.size(); ++i) {
+    command.robot_id = commands.robot_id[i];
+    command.v = commands.v[i];
+    command.w = commands.w[i];
+    command.done = commands.done[i];
+    const Heard heard = TakeFor(channel + " robot " + std::to_string(command.robot_id), command.robot_id, command);
+    each(lcm::CommandChannel(command.robot_id), command, heard);
+  }
+  return Heard::kUsed;
+}
+
+Heard CommandIntake::TakeFor(const std::string& channel, std::optional<int> channel_id,
+                             const velocity_command_t& command) {
+  const std::optional<int> id = AddressedRobot(channel, channel_id, command);
   if (!id) return Heard::kRefused;
   const bool lockstep = options_.mode == config::WorldMode::kLockstep;
   RobotSlot& robot = robots_[static_cast<size_t>(*id)];
@@ -58,8 +103,8 @@ Heard CommandIntake::Take(const std::string& channel, const velocity_command_t& 
   return Hold(channel, *id, robot, command);
 }
 
-std::optional<int> CommandIntake::AddressedRobot(const std::string& channel, const velocity_command_t& command) {
-  const std::optional<int> channel_id = lcm::RobotIdFromCommandChannel(channel);
+std::optional<int> CommandIntake::AddressedRobot(const std::string& channel, std::optional<int> channel_id,
+                                                 const velocity_command_t& command) {
   if (!channel_id) {
     Reject(channel, "channel name must be DREAM_CMD_<robot id>", command.agent_id);
     return std::nullopt;
@@ -71,7 +116,7 @@ std::optional<int> CommandIntake::AddressedRobot(const std::string& channel, con
     return std::nullopt;
   }
   const int id = *channel_id;
-  if (id >= world_.num_robots()) {
+  if (id < 0 || id >= world_.num_robots()) {
     Reject(channel,
            "robot " + std::to_string(id) + " does not exist: this run has " + std::to_string(world_.num_robots()) +
                " robots (ids 0.." + std::to_string(world_.num_robots() - 1) + ")",

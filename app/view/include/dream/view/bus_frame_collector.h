@@ -13,6 +13,7 @@
 #include "dream/drawing_t.hpp"
 #include "dream/lcm/lcm_interface.h"
 #include "dream/obstacles_t.hpp"
+#include "dream/robot_commands_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/run_status_t.hpp"
 #include "dream/run_verdict_t.hpp"
@@ -56,15 +57,15 @@ class BusFrameCollector {
 
   /// Subscribes to DREAM_POSES, DREAM_MEASURED_POSES, DREAM_OBSTACLES,
   /// DREAM_STATUS, DREAM_VERDICT, DREAM_RADIO_<n> and, when `commands`,
-  /// DREAM_CMD_<n> on `bus`, until destroyed: one subscription a channel
+  /// DREAM_CMD_<n> and DREAM_CMDS (a script's every robot) on `bus`, until destroyed: one subscription a channel
   /// name, so on udpm the kernel drops every other channel (LcmBus's
   /// ChannelPrefixFilter), the robots' commands included until asked for.
   /// `now` is RunChoice's clock (tests give their own).
   BusFrameCollector(lcm::LcmInterface& bus, const world::WorldParams& world,
                     std::function<RunChoice::Clock::time_point()> now = &RunChoice::Clock::now, bool commands = true);
 
-  /// Subscribes to DREAM_CMD_<n> too (the command arrows) if not yet; on
-  /// the thread that handles the bus.
+  /// Subscribes to DREAM_CMD_<n> and DREAM_CMDS too (the command arrows) if
+  /// not yet; on the thread that handles the bus.
   void SubscribeCommands();
   /// Whether DREAM_CMD_<n> is subscribed.
   bool hears_commands() const { return command_subscription_.active(); }
@@ -108,6 +109,8 @@ class BusFrameCollector {
   void OnDrawing(int robot);
   /// command_in_ decoded from DREAM_CMD_<robot>: each robot's newest command of the run drawn.
   void OnCommand(int robot);
+  /// commands_in_ decoded from DREAM_CMDS: each entry as its robot's DREAM_CMD_<id>.
+  void OnCommands();
   /// verdict_in_ decoded: kept only when it is the drawn run's and that run is over.
   void OnVerdict();
   /// The new step in poses_ (with obstacles_) to the run's metrics' queue.
@@ -125,6 +128,7 @@ class BusFrameCollector {
   run_status_t status_in_{};
   run_verdict_t verdict_in_{};
   velocity_command_t command_in_{};
+  robot_commands_t commands_in_{};
   drawing_t drawing_in_{};
   std::vector<ViewFrame::Drawn> drawn_;  // by robot; an empty shape list: nothing drawn
   // The newest state, under mutex_.
@@ -158,6 +162,7 @@ class BusFrameCollector {
   /// Last: unsubscribed first, so the bus never calls a half-destroyed collector.
   std::vector<lcm::Subscription> subscriptions_;
   lcm::Subscription command_subscription_;
+  lcm::Subscription commands_subscription_;  // DREAM_CMDS
 };
 
 }  // namespace dream::view

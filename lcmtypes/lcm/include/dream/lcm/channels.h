@@ -33,7 +33,11 @@ inline constexpr const char* kStartupPosesChannel = "DREAM_STARTUP_POSES";
 inline constexpr const char* kMeasuredPosesChannel = "DREAM_MEASURED_POSES";
 /// Prefix of the per-robot command channels DREAM_CMD_<id>; agent -> world.
 inline constexpr const char* kCommandChannelPrefix = "DREAM_CMD_";
-/// LCM regex matching every command channel.
+/// Every robot's command from one agent that drives them all (robot_commands_t,
+/// a `dream run` script); agent -> world, which records each entry it takes as
+/// its robot's DREAM_CMD_<id> (this channel never reaches a run log).
+inline constexpr const char* kCommandsChannel = "DREAM_CMDS";
+/// LCM regex matching every per-robot command channel.
 inline constexpr const char* kCommandChannelRegex = "DREAM_CMD_.*";
 
 /// Prefix of the per-robot radio channels DREAM_RADIO_<id>; agent -> agents.

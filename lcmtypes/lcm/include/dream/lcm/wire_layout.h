@@ -29,6 +29,8 @@ class WireLayout {
   WireLayout& Count(int32_t max);
   /// Elements of `element_bytes` each, as many as the latest Count() says.
   WireLayout& Array(int element_bytes);
+  /// LCM booleans, as many as the latest Count() says: each 0 or 1.
+  WireLayout& BooleanArray();
   /// An LCM string: int32 length (with its NUL, so >= 1) then that many
   /// bytes: UTF-8 text with no NUL but the last.
   WireLayout& String(int32_t max_bytes);
@@ -47,7 +49,7 @@ class WireLayout {
   int64_t MinimumBytes() const;
 
  private:
-  enum class Kind { kFixed, kAgentId, kBoolean, kCount, kArray, kString };
+  enum class Kind { kFixed, kAgentId, kBoolean, kCount, kArray, kBooleanArray, kString };
   struct Field {
     Kind kind;
     int64_t bytes_or_max;

@@ -8,6 +8,7 @@ class drawing_t;
 class obstacles_t;
 class radio_message_t;
 class robot_busy_t;
+class robot_commands_t;
 class robot_fault_t;
 class robot_poses_t;
 class run_status_t;
@@ -33,6 +34,8 @@ template <>
 const WireLayout& WireLayoutOf<radio_message_t>();
 template <>
 const WireLayout& WireLayoutOf<robot_busy_t>();
+template <>
+const WireLayout& WireLayoutOf<robot_commands_t>();
 template <>
 const WireLayout& WireLayoutOf<robot_fault_t>();
 template <>

@@ -109,6 +109,10 @@ class SimNode {
   /// Every message heard: dispatched by channel, then recorded or refused.
   void OnMessage(const std::string& channel, const void* data, int size);
   Heard Hear(const std::string& channel, const void* data, int size);
+  /// Records a message used, or keeps a refused one apart (RefusedRecord).
+  void Keep(const std::string& channel, Heard heard, const void* data, int size);
+  /// DREAM_CMDS: each entry taken and kept as the DREAM_CMD_<id> it stands for.
+  void HearCommands(const std::string& channel, const void* data, int size);
   Heard OnFault(const std::string& channel, const robot_fault_t& fault);
   void OnStatus(const std::string& channel, const run_status_t& status);
   /// Notes a run id of another world (logged once per id).
@@ -158,6 +162,7 @@ class SimNode {
   std::vector<world::ObstacleState> obstacle_states_;  // scratch for PublishStep
   applied_commands_t applied_;                         // scratch for RecordApplied
   std::vector<uint8_t> encoded_;                       // scratch: the message being published or recorded
+  std::vector<uint8_t> entry_encoded_;                 // scratch: a DREAM_CMDS entry as its DREAM_CMD_<id>
   RunRecorder* recorder_;
   int64_t recorder_failed_at_step_ = -1;
   config::SimNodeOptions options_;
