@@ -4,8 +4,10 @@
 #include <vector>
 
 #include "dream/applied_commands_t.hpp"
+#include "dream/drawing_t.hpp"
 #include "dream/lcm/lcm_typed.h"
 #include "dream/lcm/run_id.h"
+#include "dream/robot_commands_t.hpp"
 #include "dream/robot_poses_t.hpp"
 #include "dream/velocity_command_t.hpp"
 #include "../support/encoded_message.h"
@@ -55,6 +57,48 @@ TEST(RandomIdsTest, AppliedCommandsLoseEveryAgentId) {
   EXPECT_EQ(cleared.run_id, 0);
   EXPECT_EQ(cleared.applied_agent_id, (std::vector<int64_t>{0, 0}));
   EXPECT_EQ(cleared.conflicts, (std::vector<int32_t>{1, 0}));
+}
+
+TEST(RandomIdsTest, DrawingsAndCommandBatchesLoseRunAndAgentIds) {
+  drawing_t drawing{};
+  drawing.step = 4;
+  drawing.run_id = 0x77;
+  drawing.robot_id = 2;
+  drawing.agent_id = 123456;
+  drawing.num_shapes = 1;
+  drawing.kind = {drawing_t::CIRCLE};
+  drawing.rgba = {255};
+  drawing.width = {0.01};
+  drawing.size = {0.1};
+  drawing.fill = {0};
+  drawing.point_count = {1};
+  drawing.text_length = {0};
+  drawing.num_points = 1;
+  drawing.x = {0.5};
+  drawing.y = {-0.5};
+  std::vector<uint8_t> bytes = Encoded(drawing);
+  ClearRandomIds(&bytes);
+  const drawing_t cleared = Decoded<drawing_t>(bytes);
+  EXPECT_EQ(cleared.run_id, 0);
+  EXPECT_EQ(cleared.agent_id, 0);
+  EXPECT_EQ(cleared.robot_id, 2);
+  EXPECT_EQ(cleared.x, drawing.x);
+
+  robot_commands_t batch{};
+  batch.step = 4;
+  batch.run_id = 0x77;
+  batch.agent_id = 654321;
+  batch.num_commands = 2;
+  batch.robot_id = {0, 1};
+  batch.v = {0.1, 0.2};
+  batch.w = {0.0, -0.3};
+  batch.done = {false, true};
+  bytes = Encoded(batch);
+  ClearRandomIds(&bytes);
+  const robot_commands_t cleared_batch = Decoded<robot_commands_t>(bytes);
+  EXPECT_EQ(cleared_batch.run_id, 0);
+  EXPECT_EQ(cleared_batch.agent_id, 0);
+  EXPECT_EQ(cleared_batch.w, batch.w);
 }
 
 TEST(RandomIdsTest, PosesLoseTheRunIdOnlyAndOtherBytesStayAsTheyAre) {

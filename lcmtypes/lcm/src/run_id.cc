@@ -5,6 +5,7 @@
 #include <random>
 
 #include "dream/applied_commands_t.hpp"
+#include "dream/drawing_t.hpp"
 #include "dream/obstacles_t.hpp"
 #include "dream/radio_message_t.hpp"
 #include "dream/robot_busy_t.hpp"
@@ -38,11 +39,11 @@ bool ClearRunId(std::vector<uint8_t>* encoded) {
   uint64_t fingerprint = 0;
   for (size_t i = 0; i < 8; ++i) fingerprint = (fingerprint << 8) | (*encoded)[i];
   const auto hash = static_cast<int64_t>(fingerprint);
-  const bool carries_run_id = hash == applied_commands_t::getHash() || hash == obstacles_t::getHash() ||
-                              hash == radio_message_t::getHash() || hash == robot_busy_t::getHash() ||
-                              hash == robot_commands_t::getHash() || hash == robot_fault_t::getHash() ||
-                              hash == robot_poses_t::getHash() || hash == run_status_t::getHash() ||
-                              hash == run_verdict_t::getHash() || hash == velocity_command_t::getHash();
+  const bool carries_run_id =
+      hash == applied_commands_t::getHash() || hash == drawing_t::getHash() || hash == obstacles_t::getHash() ||
+      hash == radio_message_t::getHash() || hash == robot_busy_t::getHash() || hash == robot_commands_t::getHash() ||
+      hash == robot_fault_t::getHash() || hash == robot_poses_t::getHash() || hash == run_status_t::getHash() ||
+      hash == run_verdict_t::getHash() || hash == velocity_command_t::getHash();
   if (!carries_run_id) return false;
   std::memset(encoded->data() + kRunIdAt, 0, 8);
   return true;
@@ -71,6 +72,7 @@ void ClearRandomIds(std::vector<uint8_t>* encoded) {
   Rewrite<velocity_command_t>(encoded, [](velocity_command_t* m) { m->agent_id = 0; }) ||
       Rewrite<radio_message_t>(encoded, [](radio_message_t* m) { m->agent_id = 0; }) ||
       Rewrite<robot_busy_t>(encoded, [](robot_busy_t* m) { m->agent_id = 0; }) ||
+      Rewrite<drawing_t>(encoded, [](drawing_t* m) { m->agent_id = 0; }) ||
       Rewrite<robot_commands_t>(encoded, [](robot_commands_t* m) { m->agent_id = 0; }) ||
       Rewrite<robot_fault_t>(encoded, [](robot_fault_t* m) { m->agent_id = 0; }) ||
       Rewrite<applied_commands_t>(encoded, [](applied_commands_t* m) {
