@@ -56,8 +56,11 @@ def check_drawn(page, shown, where, steps):
 def watch_live(page, artifacts):
     seen = 0
     while True:
-        shown = wait_for_view(page, "a live step with drawings",
-                              lambda s: s["mode"] == "replay" or (s["mode"] == "live" and s["drawings"]["shapes"]), 60)
+        # A frame may be sent between one robot's drawing and the next's (each is its own message):
+        # wait for one holding all three, then check it.
+        shown = wait_for_view(page, "a live step with every robot's drawing",
+                              lambda s: s["mode"] == "replay" or (s["mode"] == "live" and s["drawings"]["shapes"] and
+                                                                  len(s["drawings"]["robots"]) == 3), 60)
         if shown["mode"] == "replay":
             break
         step = shown["step"]
