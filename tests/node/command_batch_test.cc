@@ -56,10 +56,10 @@ class CommandBatchTest : public ::testing::Test {
   CommandBatchTest()
       : world_(world::WorldParams{}, {{-1.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}}),
         robots_(3),
-        intake_(world_, options_, kRunId, robots_, bad_messages_, clock_,
-                [this](int64_t run_id, const std::string& seen_on) {
-                  other_worlds_.push_back(seen_on + " " + std::to_string(run_id));
-                }) {}
+        intake_({world_, options_, kRunId, robots_, bad_messages_, clock_,
+                 [this](int64_t run_id, const std::string& seen_on) {
+                   other_worlds_.push_back(seen_on + " " + std::to_string(run_id));
+                 }}) {}
 
   Heard TakeAll(const robot_commands_t& batch) {
     heard_.clear();
@@ -176,7 +176,7 @@ TEST_F(CommandBatchTest, AnEntryIsCheckedAsItsPerRobotMessageWouldBe) {
   // The same commands sent per robot to a second intake leave the same slots and counts.
   std::vector<RobotSlot> robots(3);
   lcm::BadMessageLog bad_messages;
-  CommandIntake per_robot(world_, options_, kRunId, robots, bad_messages, clock_, [](int64_t, const std::string&) {});
+  CommandIntake per_robot({world_, options_, kRunId, robots, bad_messages, clock_, [](int64_t, const std::string&) {}});
   robot_commands_t batch = Batch({0, 1, 2});
   batch.w[2] = std::numeric_limits<double>::infinity();
   TakeAll(batch);

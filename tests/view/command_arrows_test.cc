@@ -5,6 +5,8 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "dream/lcm/lcm_bus.h"
 #include "dream/lcm/lcm_typed.h"
@@ -72,32 +74,62 @@ TEST_F(CommandArrowsTest, CommandsNotOfTheRunDrawnOrItsRobotsOrAheadOfItAreNotDr
   EXPECT_EQ(collector_.bad_messages(), 1);
 }
 
+robot_commands_t Commands(int64_t run_id, int64_t step, std::vector<int32_t> robots, std::vector<double> v) {
+  robot_commands_t commands{};
+  commands.run_id = run_id;
+  commands.step = step;
+  commands.agent_id = 1;
+  commands.num_commands = static_cast<int32_t>(robots.size());
+  commands.robot_id = std::move(robots);
+  commands.w.assign(v.size(), 0.25);
+  commands.done.assign(v.size(), 0);
+  commands.v = std::move(v);
+  return commands;
+}
+
 // A `dream run` script's DREAM_CMDS: each entry drawn as its robot's DREAM_CMD_<id> would be.
 TEST_F(CommandArrowsTest, EveryRobotsCommandInOneMessageIsDrawnEntryByEntry) {
   Step(4, 0);
   Step(4, 1);
-  robot_commands_t commands{};
-  commands.run_id = 4;
-  commands.step = 1;
-  commands.agent_id = 1;
-  commands.num_commands = 3;
-  commands.robot_id = {1, 9, 0};  // robot 9 is no robot of the run: left out
-  commands.v = {0.05, 0.9, 0.1};
-  commands.w = {0.25, 0.9, -0.5};
-  commands.done = {0, 0, 1};
+  robot_commands_t commands = Commands(4, 1, {1, 0}, {0.05, 0.1});
+  commands.w = {0.25, -0.5};
   Send("DREAM_CMDS", commands);
   ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
   ASSERT_EQ(frame_.command_v_mps.size(), 2u);
   EXPECT_EQ(frame_.command_v_mps[0], 0.1);
   EXPECT_EQ(frame_.command_w_radps[0], -0.5);
   EXPECT_EQ(frame_.command_v_mps[1], 0.05);
-  commands.run_id = 5;  // another run's: not drawn
-  commands.v = {0.7, 0.7, 0.7};
-  Send("DREAM_CMDS", commands);
+  Send("DREAM_CMDS", Commands(4, 1, {9, 1}, {0.9, 0.07}));  // robot 9 is no robot of the run: left out
+  ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
+  EXPECT_EQ(frame_.command_v_mps[0], 0.1);
+  EXPECT_EQ(frame_.command_v_mps[1], 0.07);
+  Send("DREAM_CMDS", Commands(5, 1, {1, 0}, {0.7, 0.7}));  // another run's: not drawn
   EXPECT_FALSE(collector_.TakeFrame(&frame_, &version_));
+  EXPECT_EQ(collector_.bad_messages(), 0);
   bus_.Publish("DREAM_CMDS", "not commands", 12);
   Handle();
   EXPECT_EQ(collector_.bad_messages(), 1);
+}
+
+// What the world refuses whole (lcm::CommandBatch) the view refuses too: no arrow, a bad message.
+TEST_F(CommandArrowsTest, AMessageTheWorldRefusesWholeDrawsNoArrowAndIsCounted) {
+  Step(4, 0);
+  Step(4, 1);
+  ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
+  Send("DREAM_CMDS", Commands(4, 1, {0, 1, 0}, {0.1, 0.2, 0.3}));  // robot 0 listed twice
+  EXPECT_FALSE(collector_.TakeFrame(&frame_, &version_));
+  EXPECT_TRUE(frame_.command_v_mps.empty());
+  EXPECT_EQ(collector_.bad_messages(), 1);
+  Send("DREAM_CMDS", Commands(4, 1, {1, 0, 9}, {0.1, 0.2, 0.3}));  // 3 entries, the run has 2 robots
+  EXPECT_FALSE(collector_.TakeFrame(&frame_, &version_));
+  EXPECT_EQ(collector_.bad_messages(), 2);
+  Send("DREAM_CMDS", Commands(5, 1, {0, 0}, {0.1, 0.2}));  // another run's: not this run's to judge
+  EXPECT_EQ(collector_.bad_messages(), 2);
+  Send("DREAM_CMDS", Commands(4, 1, {0}, {0.15}));
+  ASSERT_TRUE(collector_.TakeFrame(&frame_, &version_));
+  ASSERT_EQ(frame_.command_v_mps.size(), 2u);
+  EXPECT_EQ(frame_.command_v_mps[0], 0.15);
+  EXPECT_TRUE(std::isnan(frame_.command_v_mps[1]));
 }
 
 // dream view on udpm: the commands (most of a run's datagrams) only once a page shows the arrows.

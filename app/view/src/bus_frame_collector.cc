@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "dream/lcm/channels.h"
+#include "dream/lcm/command_batch.h"
 #include "dream/lcm/drawing_shapes.h"
 #include "dream/lcm/lcm_typed.h"
 #include "dream/lcm/message_limits.h"
@@ -247,15 +248,16 @@ void BusFrameCollector::OnCommand(int robot) {
 }
 
 void BusFrameCollector::OnCommands() {
-  command_in_.utime = commands_in_.utime;
-  command_in_.step = commands_in_.step;
-  command_in_.run_id = commands_in_.run_id;
-  command_in_.agent_id = commands_in_.agent_id;
-  for (size_t i = 0; i < commands_in_.robot_id.size(); ++i) {
-    command_in_.robot_id = commands_in_.robot_id[i];
-    command_in_.v = commands_in_.v[i];
-    command_in_.w = commands_in_.w[i];
-    command_in_.done = commands_in_.done[i];
+  // The run drawn's only: another run's robot count is not this one's.
+  if (run_id_ == 0 || commands_in_.run_id != run_id_) return;
+  // A message the world refuses whole (a robot listed twice, more entries than the run's robots) draws no arrow.
+  const lcm::CommandBatch batch(commands_in_, poses_.num_robots);
+  if (batch.problem()) {
+    ++bad_messages_;
+    return;
+  }
+  for (size_t i = 0; i < batch.size(); ++i) {
+    command_in_ = batch.Entry(i);
     OnCommand(command_in_.robot_id);
   }
 }

@@ -17,55 +17,47 @@ double SecondsBetween(NodeClock::TimePoint from, NodeClock::TimePoint to) {
 
 }  // namespace
 
-BusyIntake::BusyIntake(const world::World& world, const config::SimNodeOptions& options, int64_t run_id,
-                       std::vector<RobotSlot>& robots, lcm::BadMessageLog& bad_messages, const NodeClock& clock,
-                       OtherWorldSeen other_world_seen)
-    : world_(world),
-      options_(options),
-      run_id_(run_id),
-      robots_(robots),
-      bad_messages_(bad_messages),
-      clock_(clock),
-      other_world_seen_(std::move(other_world_seen)) {}
+BusyIntake::BusyIntake(IntakeContext context) : context_(std::move(context)) {}
 
 Heard BusyIntake::Refuse(const std::string& channel, const std::string& reason, int64_t agent_id) {
-  bad_messages_.Report(channel, "busy note refused: " + reason, agent_id);
+  context_.bad_messages.Report(channel, "busy note refused: " + reason, agent_id);
   return Heard::kRefused;
 }
 
 Heard BusyIntake::Take(const std::string& channel, const robot_busy_t& busy) {
-  if (busy.run_id != run_id_) {
-    other_world_seen_(busy.run_id, channel);
-    return Refuse(channel, "it is of run " + lcm::RunIdText(busy.run_id) + ", not this run " + lcm::RunIdText(run_id_),
+  if (busy.run_id != context_.run_id) {
+    context_.other_world_seen(busy.run_id, channel);
+    return Refuse(channel,
+                  "it is of run " + lcm::RunIdText(busy.run_id) + ", not this run " + lcm::RunIdText(context_.run_id),
                   busy.agent_id);
   }
   const std::optional<int> id = lcm::RobotIdFromChannel(channel, lcm::kBusyChannelPrefix);
-  if (!id || *id != busy.robot_id || *id >= world_.num_robots()) {
+  if (!id || *id != busy.robot_id || *id >= context_.world.num_robots()) {
     return Refuse(channel,
                   "robot " + std::to_string(busy.robot_id) + " does not match its channel or this run's " +
-                      std::to_string(world_.num_robots()) + " robots",
+                      std::to_string(context_.world.num_robots()) + " robots",
                   busy.agent_id);
   }
-  if (busy.call_robot_id < -1 || busy.call_robot_id >= world_.num_robots() || !std::isfinite(busy.call_s) ||
+  if (busy.call_robot_id < -1 || busy.call_robot_id >= context_.world.num_robots() || !std::isfinite(busy.call_s) ||
       busy.call_s < 0) {
     return Refuse(channel,
                   "call_robot_id " + std::to_string(busy.call_robot_id) + " or call_s " + std::to_string(busy.call_s) +
                       " is not a robot of this run and a time",
                   busy.agent_id);
   }
-  if (busy.step > world_.step()) {
+  if (busy.step > context_.world.step()) {
     return Refuse(channel,
                   "step " + std::to_string(busy.step) + " has not been published (the world is at step " +
-                      std::to_string(world_.step()) + ")",
+                      std::to_string(context_.world.step()) + ")",
                   busy.agent_id);
   }
-  RobotSlot& robot = robots_[static_cast<size_t>(*id)];
+  RobotSlot& robot = context_.robots[static_cast<size_t>(*id)];
   if (!robot.owned) {
     // Before its first answer nobody drives the robot: a host still loading
     // or setting it up holds the start (HoldsStart), unrecorded, as routine.
-    if (busy.step == world_.step()) {
+    if (busy.step == context_.world.step()) {
       robot.busy_step = busy.step;
-      robot.busy_heard = clock_.now();
+      robot.busy_heard = context_.clock.now();
     }
     return Heard::kRepeat;
   }
@@ -73,28 +65,29 @@ Heard BusyIntake::Take(const std::string& channel, const robot_busy_t& busy) {
     return Refuse(channel, "agent " + std::to_string(busy.agent_id) + " does not drive robot " + std::to_string(*id),
                   busy.agent_id);
   }
-  if (busy.step < world_.step()) return Heard::kRepeat;  // late: that step is over
-  robot.busy_heard = clock_.now();
+  if (busy.step < context_.world.step()) return Heard::kRepeat;  // late: that step is over
+  robot.busy_heard = context_.clock.now();
   if (robot.busy_step == busy.step) return Heard::kRepeat;
   robot.busy_step = busy.step;
   return Heard::kUsed;
 }
 
 bool BusyIntake::HoldsStart(NodeClock::TimePoint now, NodeClock::TimePoint step_published) const {
-  if (SecondsBetween(step_published, now) > kMaxHoldFactor * options_.start_timeout_s) return false;
-  for (const RobotSlot& robot : robots_) {
-    if (robot.command_step != world_.step() && !robot.lost && HeardBusyLately(robot, now)) return true;
+  if (SecondsBetween(step_published, now) > kMaxHoldFactor * context_.options.start_timeout_s) return false;
+  for (const RobotSlot& robot : context_.robots) {
+    if (robot.command_step != context_.world.step() && !robot.lost && HeardBusyLately(robot, now)) return true;
   }
   return false;
 }
 
 bool BusyIntake::Holds(const RobotSlot& robot, NodeClock::TimePoint now, NodeClock::TimePoint step_published) const {
-  return options_.mode == config::WorldMode::kLockstep && HeardBusyLately(robot, now) &&
-         SecondsBetween(step_published, now) <= kMaxHoldFactor * options_.agent_timeout_s;
+  return context_.options.mode == config::WorldMode::kLockstep && HeardBusyLately(robot, now) &&
+         SecondsBetween(step_published, now) <= kMaxHoldFactor * context_.options.agent_timeout_s;
 }
 
 bool BusyIntake::HeardBusyLately(const RobotSlot& robot, NodeClock::TimePoint now) const {
-  return robot.busy_step == world_.step() && SecondsBetween(robot.busy_heard, now) <= options_.agent_timeout_s;
+  return robot.busy_step == context_.world.step() &&
+         SecondsBetween(robot.busy_heard, now) <= context_.options.agent_timeout_s;
 }
 
 }  // namespace dream::node

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "dream/lcm/channels.h"
+#include "dream/lcm/command_batch.h"
 #include "dream/lcm/run_id.h"
 #include "dream/robot_commands_t.hpp"
 #include "dream/velocity_command_t.hpp"
@@ -21,21 +22,12 @@ bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) =
 
 }  // namespace
 
-CommandIntake::CommandIntake(world::World& world, const config::SimNodeOptions& options, int64_t run_id,
-                             std::vector<RobotSlot>& robots, lcm::BadMessageLog& bad_messages, const NodeClock& clock,
-                             OtherWorldSeen other_world_seen)
-    : world_(world),
-      options_(options),
-      run_id_(run_id),
-      robots_(robots),
-      bad_messages_(bad_messages),
-      clock_(clock),
-      other_world_seen_(std::move(other_world_seen)) {}
+CommandIntake::CommandIntake(IntakeContext context) : context_(std::move(context)) {}
 
 void CommandIntake::Reject(const std::string& channel, const std::string& reason, int64_t agent_id) {
   ++rejected_commands_;
   // Rejections are the user's bug; say it once per channel, then every 100th.
-  bad_messages_.Report(channel, "rejected command: " + reason, agent_id);
+  context_.bad_messages.Report(channel, "rejected command: " + reason, agent_id);
 }
 
 void CommandIntake::Conflict(const std::string& channel, RobotSlot& robot, const velocity_command_t& command,
@@ -49,38 +41,14 @@ Heard CommandIntake::Take(const std::string& channel, const velocity_command_t& 
   return TakeFor(channel, lcm::RobotIdFromCommandChannel(channel), command);
 }
 
-std::optional<std::string> CommandIntake::WholeMessageProblem(const robot_commands_t& commands) const {
-  const auto entries = static_cast<size_t>(std::max(commands.num_commands, 0));
-  if (commands.robot_id.size() != entries || commands.v.size() != entries || commands.w.size() != entries ||
-      commands.done.size() != entries) {
-    return "its arrays do not hold num_commands = " + std::to_string(commands.num_commands) + " entries";
-  }
-  if (commands.num_commands > world_.num_robots()) {
-    return std::to_string(commands.num_commands) + " commands, but this run has " +
-           std::to_string(world_.num_robots()) + " robots";
-  }
-  std::vector<int32_t> ids = commands.robot_id;
-  std::sort(ids.begin(), ids.end());
-  const auto twice = std::adjacent_find(ids.begin(), ids.end());
-  if (twice != ids.end()) return "robot " + std::to_string(*twice) + " is listed twice";
-  return std::nullopt;
-}
-
 Heard CommandIntake::TakeAll(const std::string& channel, const robot_commands_t& commands, const EntryHeard& each) {
-  if (const std::optional<std::string> problem = WholeMessageProblem(commands)) {
-    Reject(channel, *problem + ": the whole message is refused", commands.agent_id);
+  const lcm::CommandBatch batch(commands, context_.world.num_robots());
+  if (batch.problem()) {
+    Reject(channel, *batch.problem() + ": the whole message is refused", commands.agent_id);
     return Heard::kRefused;
   }
-  velocity_command_t command;
-  command.utime = commands.utime;
-  command.step = commands.step;
-  command.run_id = commands.run_id;
-  command.agent_id = commands.agent_id;
-  for (size_t i = 0; i < commands.robot_id.size(); ++i) {
-    command.robot_id = commands.robot_id[i];
-    command.v = commands.v[i];
-    command.w = commands.w[i];
-    command.done = commands.done[i];
+  for (size_t i = 0; i < batch.size(); ++i) {
+    const velocity_command_t command = batch.Entry(i);
     const Heard heard = TakeFor(channel + " robot " + std::to_string(command.robot_id), command.robot_id, command);
     each(lcm::CommandChannel(command.robot_id), command, heard);
   }
@@ -91,14 +59,14 @@ Heard CommandIntake::TakeFor(const std::string& channel, std::optional<int> chan
                              const velocity_command_t& command) {
   const std::optional<int> id = AddressedRobot(channel, channel_id, command);
   if (!id) return Heard::kRefused;
-  const bool lockstep = options_.mode == config::WorldMode::kLockstep;
-  RobotSlot& robot = robots_[static_cast<size_t>(*id)];
+  const bool lockstep = context_.options.mode == config::WorldMode::kLockstep;
+  RobotSlot& robot = context_.robots[static_cast<size_t>(*id)];
   // Late (older than the command held, or for a step the robot missed) or
   // resent: not used again, so not recorded again; the log keeps one command
   // per robot and step, whoever floods the bus.
   if (command.step < robot.command_step) return Heard::kRepeat;
   if (command.step == robot.command_step) return AgainForHeldStep(channel, *id, robot, command);
-  if (lockstep && command.step < world_.step()) return Heard::kRepeat;
+  if (lockstep && command.step < context_.world.step()) return Heard::kRepeat;
   if (!ClaimRobot(channel, *id, robot, command)) return Heard::kRefused;
   return Hold(channel, *id, robot, command);
 }
@@ -109,17 +77,19 @@ std::optional<int> CommandIntake::AddressedRobot(const std::string& channel, std
     Reject(channel, "channel name must be DREAM_CMD_<robot id>", command.agent_id);
     return std::nullopt;
   }
-  if (command.run_id != run_id_) {
-    other_world_seen_(command.run_id, channel);
-    Reject(channel, "answers run " + lcm::RunIdText(command.run_id) + ", not this run " + lcm::RunIdText(run_id_),
+  if (command.run_id != context_.run_id) {
+    context_.other_world_seen(command.run_id, channel);
+    Reject(channel,
+           "answers run " + lcm::RunIdText(command.run_id) + ", not this run " + lcm::RunIdText(context_.run_id),
            command.agent_id);
     return std::nullopt;
   }
   const int id = *channel_id;
-  if (id < 0 || id >= world_.num_robots()) {
+  if (id < 0 || id >= context_.world.num_robots()) {
     Reject(channel,
-           "robot " + std::to_string(id) + " does not exist: this run has " + std::to_string(world_.num_robots()) +
-               " robots (ids 0.." + std::to_string(world_.num_robots() - 1) + ")",
+           "robot " + std::to_string(id) + " does not exist: this run has " +
+               std::to_string(context_.world.num_robots()) + " robots (ids 0.." +
+               std::to_string(context_.world.num_robots() - 1) + ")",
            command.agent_id);
     return std::nullopt;
   }
@@ -130,11 +100,11 @@ std::optional<int> CommandIntake::AddressedRobot(const std::string& channel, std
   }
   // Commands answer the step the world is at: a later step was never
   // published, and one further back is late (lockstep: already taken).
-  if (command.step < 0 || command.step > world_.step()) {
-    Reject(
-        channel,
-        "answers step " + std::to_string(command.step) + " but the world is at step " + std::to_string(world_.step()),
-        command.agent_id);
+  if (command.step < 0 || command.step > context_.world.step()) {
+    Reject(channel,
+           "answers step " + std::to_string(command.step) + " but the world is at step " +
+               std::to_string(context_.world.step()),
+           command.agent_id);
     return std::nullopt;
   }
   return id;
@@ -177,10 +147,10 @@ bool CommandIntake::ClaimRobot(const std::string& channel, int id, RobotSlot& ro
 }
 
 Heard CommandIntake::Hold(const std::string& channel, int id, RobotSlot& robot, const velocity_command_t& command) {
-  robot.last_heard = clock_.now();
+  robot.last_heard = context_.clock.now();
   if (robot.lost) {
     robot.lost = false;
-    spdlog::info("robot {}: agent is back (step {})", id, world_.step());
+    spdlog::info("robot {}: agent is back (step {})", id, context_.world.step());
   }
 
   robot.command_step = command.step;
@@ -188,13 +158,13 @@ Heard CommandIntake::Hold(const std::string& channel, int id, RobotSlot& robot, 
   robot.received_v = command.v;
   robot.received_w = command.w;
   const bool finite = std::isfinite(command.v) && std::isfinite(command.w);
-  const bool absurd =
-      !finite || std::abs(command.v) > options_.max_abs_v_mps || std::abs(command.w) > options_.max_abs_w_radps;
+  const bool absurd = !finite || std::abs(command.v) > context_.options.max_abs_v_mps ||
+                      std::abs(command.w) > context_.options.max_abs_w_radps;
   if (absurd) {
     Reject(channel,
            "absurd velocity v=" + std::to_string(command.v) + " m/s, w=" + std::to_string(command.w) +
-               " rad/s (limits " + std::to_string(options_.max_abs_v_mps) + ", " +
-               std::to_string(options_.max_abs_w_radps) + "); robot " + std::to_string(id) + " holds still",
+               " rad/s (limits " + std::to_string(context_.options.max_abs_v_mps) + ", " +
+               std::to_string(context_.options.max_abs_w_radps) + "); robot " + std::to_string(id) + " holds still",
            command.agent_id);
     robot.v_mps = 0.0;
     robot.w_radps = 0.0;
@@ -203,8 +173,8 @@ Heard CommandIntake::Hold(const std::string& channel, int id, RobotSlot& robot, 
     robot.w_radps = command.w;
   }
   robot.done = command.done;
-  if (options_.mode != config::WorldMode::kLockstep)
-    world_.SetCommand(id, world::UnicycleCommand{robot.v_mps, robot.w_radps});
+  if (context_.options.mode != config::WorldMode::kLockstep)
+    context_.world.SetCommand(id, world::UnicycleCommand{robot.v_mps, robot.w_radps});
   // An absurd command answers the step (the robot holds still), but its
   // values were refused: kept apart from the log, whose DREAM_APPLIED shows the stop.
   return absurd ? Heard::kRefused : Heard::kUsed;

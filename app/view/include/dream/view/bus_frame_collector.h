@@ -91,7 +91,8 @@ class BusFrameCollector {
   /// its next poses on. False for a run not heard, or the one drawn.
   bool Follow(int64_t run_id);
 
-  /// Messages that did not decode (forged or foreign), since the start.
+  /// Messages that did not decode (forged or foreign), or of the run drawn but broke their
+  /// type's rules (a drawing past its bounds, a DREAM_CMDS the world refuses whole), since the start.
   int64_t bad_messages() const;
   /// DREAM_VERDICTs that decoded but were not taken: another run's, or of
   /// the run drawn before it ended.
@@ -109,7 +110,8 @@ class BusFrameCollector {
   void OnDrawing(int robot);
   /// command_in_ decoded from DREAM_CMD_<robot>: each robot's newest command of the run drawn.
   void OnCommand(int robot);
-  /// commands_in_ decoded from DREAM_CMDS: each entry as its robot's DREAM_CMD_<id>.
+  /// commands_in_ decoded from DREAM_CMDS: of the run drawn, refused whole as the world
+  /// refuses it (lcm::CommandBatch; a bad message), else each entry as its robot's DREAM_CMD_<id>.
   void OnCommands();
   /// verdict_in_ decoded: kept only when it is the drawn run's and that run is over.
   void OnVerdict();

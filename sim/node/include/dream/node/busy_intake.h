@@ -1,16 +1,12 @@
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <string>
-#include <vector>
 
-#include "dream/config/sim_node_options.h"
-#include "dream/lcm/bad_message_log.h"
 #include "dream/node/heard.h"
+#include "dream/node/intake_context.h"
 #include "dream/node/node_clock.h"
 #include "dream/node/robot_slot.h"
-#include "dream/world/world.h"
 
 namespace dream {
 class robot_busy_t;
@@ -32,12 +28,9 @@ class BusyIntake {
   /// A host still saying busy this long after the step (in agent_timeout_s)
   /// is not believed: its robot is lost as silent.
   static constexpr double kMaxHoldFactor = 10.0;
-  using OtherWorldSeen = std::function<void(int64_t run_id, const std::string& seen_on)>;
 
-  /// Everything given by reference must outlive the intake.
-  BusyIntake(const world::World& world, const config::SimNodeOptions& options, int64_t run_id,
-             std::vector<RobotSlot>& robots, lcm::BadMessageLog& bad_messages, const NodeClock& clock,
-             OtherWorldSeen other_world_seen);
+  /// Everything `context` refers to must outlive the intake.
+  explicit BusyIntake(IntakeContext context);
 
   Heard Take(const std::string& channel, const robot_busy_t& busy);
 
@@ -55,13 +48,7 @@ class BusyIntake {
   /// A note for the current step heard within agent_timeout_s: what any hold needs.
   bool HeardBusyLately(const RobotSlot& robot, NodeClock::TimePoint now) const;
 
-  const world::World& world_;
-  const config::SimNodeOptions& options_;
-  int64_t run_id_;
-  std::vector<RobotSlot>& robots_;
-  lcm::BadMessageLog& bad_messages_;
-  const NodeClock& clock_;
-  OtherWorldSeen other_world_seen_;
+  const IntakeContext context_;
 };
 
 }  // namespace dream::node

@@ -4,14 +4,10 @@
 #include <functional>
 #include <optional>
 #include <string>
-#include <vector>
 
-#include "dream/config/sim_node_options.h"
-#include "dream/lcm/bad_message_log.h"
 #include "dream/node/heard.h"
-#include "dream/node/node_clock.h"
+#include "dream/node/intake_context.h"
 #include "dream/node/robot_slot.h"
-#include "dream/world/world.h"
 
 namespace dream {
 class robot_commands_t;
@@ -27,22 +23,18 @@ namespace dream::node {
 /// and step that has one already, or a second agent's, is a conflict
 /// (command_conflicts): the first stays. An absurd command (NaN/inf, beyond
 /// the limits) answers the step, but its robot holds still. DREAM_CMDS
-/// (robot_commands_t, every robot's command from one agent) is taken entry
-/// by entry, each as the DREAM_CMD_<id> it stands for.
+/// (robot_commands_t, every robot's command from one agent) is read by
+/// lcm::CommandBatch and taken entry by entry, each as the DREAM_CMD_<id> it
+/// stands for.
 class CommandIntake {
  public:
   /// Told of each entry of a DREAM_CMDS message: the DREAM_CMD_<id> message
   /// it stands for (its channel and command) and how it was heard.
   using EntryHeard = std::function<void(const std::string& channel, const velocity_command_t& command, Heard heard)>;
 
-  /// Called with the run id of another world a command answers, and its channel.
-  using OtherWorldSeen = std::function<void(int64_t run_id, const std::string& seen_on)>;
-
-  /// Everything given by reference must outlive the intake; `robots` has one
-  /// slot per robot of `world`; `clock` says when a command was heard.
-  CommandIntake(world::World& world, const config::SimNodeOptions& options, int64_t run_id,
-                std::vector<RobotSlot>& robots, lcm::BadMessageLog& bad_messages, const NodeClock& clock,
-                OtherWorldSeen other_world_seen);
+  /// Everything `context` refers to must outlive the intake; its clock says
+  /// when a command was heard.
+  explicit CommandIntake(IntakeContext context);
 
   Heard Take(const std::string& channel, const velocity_command_t& command);
   /// Refuses the whole message (kRefused, one rejected command) when it lists
@@ -62,8 +54,6 @@ class CommandIntake {
   /// its robot's channel; otherwise rejected: nullopt.
   std::optional<int> AddressedRobot(const std::string& channel, std::optional<int> channel_id,
                                     const velocity_command_t& command);
-  /// Why a DREAM_CMDS message is refused as a whole, or nothing.
-  std::optional<std::string> WholeMessageProblem(const robot_commands_t& commands) const;
   /// A command for the step whose command the robot holds: the resend is a
   /// repeat, anything else a conflict.
   Heard AgainForHeldStep(const std::string& channel, int id, RobotSlot& robot, const velocity_command_t& command);
@@ -78,13 +68,7 @@ class CommandIntake {
                 const std::string& reason);
   void Reject(const std::string& channel, const std::string& reason, int64_t agent_id);
 
-  world::World& world_;
-  const config::SimNodeOptions& options_;
-  int64_t run_id_;
-  std::vector<RobotSlot>& robots_;
-  lcm::BadMessageLog& bad_messages_;
-  const NodeClock& clock_;
-  OtherWorldSeen other_world_seen_;
+  const IntakeContext context_;
   int64_t rejected_commands_ = 0;
   int64_t command_conflicts_ = 0;
 };

@@ -18,6 +18,7 @@
 #include "dream/node/heard.h"
 #include "dream/node/node_clock.h"
 #include "dream/node/drawing_intake.h"
+#include "dream/node/intake_context.h"
 #include "dream/node/radio_intake.h"
 #include "dream/node/robot_slot.h"
 #include "dream/node/run_outcome.h"
@@ -170,7 +171,8 @@ class SimNode {
   std::vector<RobotSlot> robots_;
   int8_t state_;
   int64_t run_id_;
-  NodeClock clock_;  // before commands_, which reads it
+  NodeClock clock_;               // before commands_, which reads it
+  IntakeContext intake_context_;  // what commands_ and busy_ share; before them
   CommandIntake commands_;
   BusyIntake busy_;
   RadioIntake radio_;
