@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "dream/robot_commands_t.hpp"
+#include "../support/sample_command_batch.h"
 #include "dream/velocity_command_t.hpp"
 
 namespace dream::lcm {
@@ -18,19 +19,7 @@ namespace {
 constexpr int kRobots = 3;
 
 robot_commands_t Batch(const std::vector<int32_t>& ids) {
-  robot_commands_t batch{};
-  batch.utime = 66000;
-  batch.step = 2;
-  batch.run_id = 77;
-  batch.agent_id = 500;
-  batch.num_commands = static_cast<int32_t>(ids.size());
-  for (const int32_t id : ids) {
-    batch.robot_id.push_back(id);
-    batch.v.push_back(0.01 * (id + 1));
-    batch.w.push_back(-0.1 * (id + 1));
-    batch.done.push_back(id == 1 ? 1 : 0);
-  }
-  return batch;
+  return testing::SampleCommandBatch(ids, /*run_id=*/77, /*agent_id=*/500, /*step=*/2, /*utime=*/66000);
 }
 
 std::string ProblemOf(const robot_commands_t& batch, int robots = kRobots) {

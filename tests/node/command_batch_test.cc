@@ -20,6 +20,7 @@
 #include "dream/robot_poses_t.hpp"
 #include "quiet_bus.h"
 #include "dream/robot_commands_t.hpp"
+#include "../support/sample_command_batch.h"
 #include "dream/velocity_command_t.hpp"
 #include "dream/world/unicycle_world.h"
 
@@ -37,18 +38,8 @@ struct EntryHeard {
   Heard heard;
 };
 
-robot_commands_t Batch(std::vector<int32_t> ids, int64_t agent = kAgent) {
-  robot_commands_t batch{};
-  batch.run_id = kRunId;
-  batch.agent_id = agent;
-  batch.num_commands = static_cast<int32_t>(ids.size());
-  for (const int32_t id : ids) {
-    batch.robot_id.push_back(id);
-    batch.v.push_back(0.01 * (id + 1));
-    batch.w.push_back(-0.1 * (id + 1));
-    batch.done.push_back(id == 1 ? 1 : 0);
-  }
-  return batch;
+robot_commands_t Batch(const std::vector<int32_t>& ids, int64_t agent = kAgent) {
+  return dream::testing::SampleCommandBatch(ids, kRunId, agent);
 }
 
 class CommandBatchTest : public ::testing::Test {
