@@ -229,6 +229,28 @@ def script_under_test(ctx, name, text):
     return script
 
 
+def script_run_test_setup():
+    """What a test of `dream run SCRIPT.py` runs start with: its arguments (--dream, --source,
+    --types-dir), a skip (exit 77) without numpy (what DREAM's rps needs), its private network
+    namespace checked, and lcm-gen's Python types. Returns the arguments and the types."""
+    args = argument_parser(types_dir=True).parse_args()
+    try:
+        import numpy  # noqa: F401 (only whether it is there)
+    except ImportError:
+        print("SKIP: needs numpy (Debian: python3-numpy)")
+        sys.exit(77)
+    require_private_netns()
+    return args, import_types(args.types_dir)
+
+
+def run_script(ctx, dream, script, name, timeout=300):
+    """`dream run SCRIPT --out <name>_run -q` started as process `name`, the script run by this
+    Python (DREAM_PYTHON); returns the run folder, the exit code and the output."""
+    out_dir = ctx.path(name + "_run")
+    ctx.start(name, [dream, "run", script, "--out", out_dir, "-q"], env=dict(os.environ, DREAM_PYTHON=sys.executable))
+    return out_dir, ctx.wait(name, timeout), ctx.output(name)
+
+
 def read_summary(out_dir):
     path = os.path.join(out_dir, "summary.json")
     check(os.path.isfile(path), f"{path} is missing")

@@ -15,10 +15,9 @@ Usage: netns.sh robotarium_script_endings.py --dream BIN --source DIR --types-di
 """
 
 import os
-import sys
 
-from dreamtest import (argument_parser, check, check_log_ends_on_verdict, import_types, main, read_all,
-                       read_summary, require_private_netns, tail)
+from dreamtest import (check, check_log_ends_on_verdict, main, read_all, read_summary, run_script,
+                       script_run_test_setup, tail)
 
 STEPS = 25
 FAIL_AFTER = 12
@@ -46,13 +45,6 @@ def write_script(ctx, name, fail_after):
     return path
 
 
-def run_script(ctx, args, script, name):
-    out_dir = ctx.path(name + "_run")
-    env = dict(os.environ, DREAM_PYTHON=sys.executable)
-    ctx.start(name, [args.dream, "run", script, "--out", out_dir, "-q"], env=env)
-    return out_dir, ctx.wait(name, 300), ctx.output(name)
-
-
 def last_poses_step(dream_types, out_dir):
     poses = [event for event in read_all(os.path.join(out_dir, "run.lcmlog")) if event.channel == "DREAM_POSES"]
     return dream_types.robot_poses_t.decode(poses[-1].data).step
@@ -67,7 +59,7 @@ def test_missing_script(ctx, args):
 
 
 def test_steps_are_the_scripts(ctx, args, dream_types):
-    out_dir, code, output = run_script(ctx, args, write_script(ctx, "ends", fail_after=-1), "ends")
+    out_dir, code, output = run_script(ctx, args.dream, write_script(ctx, "ends", fail_after=-1), "ends")
     check(code == 0, f"the script's run exited {code}, expected 0: {tail(output, 1500)}")
     summary = read_summary(out_dir)
     check(summary["steps"] == STEPS, f"summary.json steps {summary['steps']}, the script called step() {STEPS} times")
@@ -80,7 +72,7 @@ def test_steps_are_the_scripts(ctx, args, dream_types):
 
 def test_raising_script(ctx, args, dream_types):
     script = write_script(ctx, "raises", fail_after=FAIL_AFTER)
-    out_dir, code, output = run_script(ctx, args, script, "raises")
+    out_dir, code, output = run_script(ctx, args.dream, script, "raises")
     check(code == 4, f"a script that raised exited {code}, expected 4 (a controller failed): {tail(output, 1500)}")
     summary = read_summary(out_dir)
     where = f"{script}:{RAISE_LINE}: ValueError: boom at step {FAIL_AFTER}"
@@ -99,14 +91,7 @@ def test_raising_script(ctx, args, dream_types):
 
 
 def test(ctx):
-    args = argument_parser(types_dir=True).parse_args()
-    try:
-        import numpy  # noqa: F401 (only whether it is there)
-    except ImportError:
-        print("SKIP: needs numpy (Debian: python3-numpy)")
-        sys.exit(77)
-    require_private_netns()
-    dream_types = import_types(args.types_dir)
+    args, dream_types = script_run_test_setup()
     test_missing_script(ctx, args)
     test_steps_are_the_scripts(ctx, args, dream_types)
     test_raising_script(ctx, args, dream_types)

@@ -11,10 +11,8 @@ Usage: netns.sh script_commands_log.py --dream BIN --source DIR --types-dir DIR
 """
 
 import os
-import sys
 
-from dreamtest import (argument_parser, check, import_types, main, read_events, read_summary,
-                       require_private_netns, tail)
+from dreamtest import check, main, read_events, read_summary, run_script, script_run_test_setup, tail
 
 ROBOTS = 4
 STEPS = 40
@@ -59,15 +57,12 @@ _link.WorldLink.send = _per_robot_send
 """
 
 
-def run_script(ctx, args, name, prelude):
+def run_checked_script(ctx, args, name, prelude):
     script = ctx.path(name + ".py")
     with open(script, "w") as f:
         f.write(SCRIPT.format(prelude=prelude, robots=ROBOTS, steps=STEPS))
-    out_dir = ctx.path(name + "_run")
-    env = dict(os.environ, DREAM_PYTHON=sys.executable)
-    ctx.start(name, [args.dream, "run", script, "--out", out_dir, "-q"], env=env)
-    code = ctx.wait(name, 300)
-    check(code == 0, f"the {name} script's run exited {code}: {tail(ctx.output(name), 1500)}")
+    out_dir, code, output = run_script(ctx, args.dream, script, name)
+    check(code == 0, f"the {name} script's run exited {code}: {tail(output, 1500)}")
     summary = read_summary(out_dir)
     check(summary["steps"] == STEPS, f"the {name} run took {summary['steps']} steps, expected {STEPS}")
     check(summary["rejected_commands"] == 0 and summary["command_conflicts"] == 0,
@@ -93,16 +88,9 @@ def commands_logged(dream, out_dir):
 
 
 def test(ctx):
-    args = argument_parser(types_dir=True).parse_args()
-    try:
-        import numpy  # noqa: F401 (only whether it is there)
-    except ImportError:
-        print("SKIP: needs numpy (Debian: python3-numpy)")
-        sys.exit(77)
-    require_private_netns()
-    dream = import_types(args.types_dir)
-    batched = run_script(ctx, args, "batched", "")
-    per_robot = run_script(ctx, args, "per_robot", PER_ROBOT)
+    args, dream = script_run_test_setup()
+    batched = run_checked_script(ctx, args, "batched", "")
+    per_robot = run_checked_script(ctx, args, "per_robot", PER_ROBOT)
     channels = [f"DREAM_CMD_{i}" for i in range(ROBOTS)]
     check(commands_logged(dream, batched) == channels, f"the batched run logged {commands_logged(dream, batched)}")
     check(commands_logged(dream, per_robot) == channels, "the per-robot run's commands")

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/sample_lcm_messages.h"
 #include "dream/drawing_t.hpp"
 #include "dream/lcm/lcm_typed.h"
 
@@ -14,26 +15,10 @@ namespace dream::lcm {
 namespace {
 
 // A line from (0, 0) to (1, 0.5), then "hi" at (-0.5, 0.5).
-drawing_t LineAndText() {
-  drawing_t drawing{};
-  drawing.num_shapes = 2;
-  drawing.kind = {drawing_t::LINE, drawing_t::TEXT};
-  drawing.rgba = {static_cast<int32_t>(0xff0000ffu), 0x000000ff};
-  drawing.width = {0.01, 0.0};
-  drawing.size = {0.0, 0.05};
-  drawing.fill = {0, 0};
-  drawing.point_count = {2, 1};
-  drawing.text_length = {0, 2};
-  drawing.num_points = 3;
-  drawing.x = {0.0, 1.0, -0.5};
-  drawing.y = {0.0, 0.5, 0.5};
-  drawing.num_text_bytes = 2;
-  drawing.text = {'h', 'i'};
-  return drawing;
-}
+using dream::testing::SampleDrawing;
 
 TEST(DrawingShapesTest, ReadsEachShapesPointsAndTextInOrder) {
-  const drawing_t drawing = LineAndText();
+  const drawing_t drawing = SampleDrawing();
   EXPECT_EQ(DrawingShapes::Problem(drawing), "");
   const std::vector<DrawnShape> shapes = DrawingShapes::Of(drawing);
   ASSERT_EQ(shapes.size(), 2u);
@@ -48,7 +33,7 @@ TEST(DrawingShapesTest, ReadsEachShapesPointsAndTextInOrder) {
 }
 
 TEST(DrawingShapesTest, SurvivesTheWire) {
-  const drawing_t sent = LineAndText();
+  const drawing_t sent = SampleDrawing();
   std::vector<uint8_t> bytes(static_cast<size_t>(sent.getEncodedSize()));
   sent.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
   drawing_t heard;
@@ -88,7 +73,7 @@ TEST(DrawingShapesTest, NamesWhatMakesAMessageNoDrawing) {
       {"clipped is negative (-1)", [](drawing_t* d) { d->clipped = -1; }},
   };
   for (const auto& [expected, spoil] : cases) {
-    drawing_t drawing = LineAndText();
+    drawing_t drawing = SampleDrawing();
     spoil(&drawing);
     EXPECT_EQ(DrawingShapes::Problem(drawing), expected);
     EXPECT_TRUE(DrawingShapes::Of(drawing).empty()) << expected;

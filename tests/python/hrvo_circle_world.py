@@ -18,7 +18,8 @@ import numpy as np
 
 from dream import ControllerSpec, RadioMessage, WorldSnapshot
 
-SOURCE_DIR = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+from unit_setup import SOURCE_DIR  # (beside this file: its importers have it on the path)
+
 MODULE = os.path.join(SOURCE_DIR, "config", "python", "hrvo_circle.py")
 
 STEP_S = 0.033

@@ -9,20 +9,14 @@ Exit code 77 (skipped) when numpy or cvxopt is missing (Debian: python3-cvxopt).
 
 import json
 import os
-import sys
 import unittest
 import warnings
 
-try:
-    import numpy as np
-    import cvxopt  # noqa: F401  (what dream.barriers solves with)
-except ImportError as error:
-    print("skipped: %s (Debian: apt-get install python3-numpy python3-cvxopt)" % error)
-    sys.exit(77)
+from unit_setup import SOURCE_DIR, put_runtime_on_path, require_modules
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-SOURCE_DIR = os.path.abspath(os.environ.get("DREAM_SOURCE_DIR", os.path.join(HERE, "..", "..")))
-sys.path.insert(0, os.path.join(SOURCE_DIR, "python"))
+require_modules("numpy", "cvxopt")  # cvxopt: what dream.barriers solves with
+import numpy as np  # noqa: E402
+put_runtime_on_path()
 
 from dream import barriers  # noqa: E402
 

@@ -17,19 +17,13 @@ import json
 import math
 import os
 import struct
-import sys
 import unittest
 
-try:
-    import numpy as np
-except ImportError:
-    print("numpy is missing: skipped")
-    sys.exit(77)
+from unit_setup import SOURCE_DIR, put_runtime_on_path, require_numpy
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-SOURCE_DIR = os.path.abspath(os.environ.get("DREAM_SOURCE_DIR", os.path.join(HERE, "..", "..")))
-sys.path.insert(0, os.path.join(SOURCE_DIR, "python"))
-sys.path.insert(0, HERE)
+require_numpy()
+import numpy as np  # noqa: E402
+put_runtime_on_path()
 
 from dream import OdometryReading, RadioMessage  # noqa: E402
 from dream.hrvo import HrvoAvoidance, HrvoParams  # noqa: E402

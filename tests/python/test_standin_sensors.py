@@ -13,14 +13,11 @@ import random
 import sys
 import unittest
 
-try:
-    import numpy as np
-except ImportError as error:
-    print("skipped: %s (Debian: apt-get install python3-numpy)" % error)
-    sys.exit(77)
+from unit_setup import SOURCE_DIR, require_numpy
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-SOURCE_DIR = os.path.abspath(os.environ.get("DREAM_SOURCE_DIR", os.path.join(HERE, "..", "..")))
+require_numpy()
+import numpy as np  # noqa: E402
+
 STANDIN = os.path.join(SOURCE_DIR, "bridge", "python", "standin")
 
 MOUNTS = np.array([[-0.04, 0.0, 0.04, 0.05, 0.04, 0.0, -0.04], [0.04, 0.06, 0.05, 0.0, -0.05, -0.06, -0.04],

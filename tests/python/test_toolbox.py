@@ -13,18 +13,13 @@ import importlib.util
 import math
 import os
 import random
-import sys
 import unittest
 
-try:
-    import numpy as np
-except ImportError as error:
-    print("skipped: %s (Debian: apt-get install python3-numpy)" % error)
-    sys.exit(77)
+from unit_setup import SOURCE_DIR, put_runtime_on_path, require_numpy
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-SOURCE_DIR = os.path.abspath(os.environ.get("DREAM_SOURCE_DIR", os.path.join(HERE, "..", "..")))
-sys.path.insert(0, os.path.join(SOURCE_DIR, "python"))
+require_numpy()
+import numpy as np  # noqa: E402
+put_runtime_on_path()
 
 from dream import controllers, graph, misc, transformations  # noqa: E402
 from dream.toolbox_checks import ToolboxArgumentError  # noqa: E402

@@ -12,11 +12,19 @@ SOURCE_DIR = os.path.abspath(os.environ.get("DREAM_SOURCE_DIR",
 
 def require_numpy():
     """Skips the test when numpy is missing (Debian: python3-numpy)."""
-    try:
-        import numpy  # noqa: F401
-    except ImportError:
-        print("numpy is missing: skipped")
-        sys.exit(SKIPPED)
+    require_modules("numpy")
+
+
+def require_modules(*names):
+    """Skips the test when one of the modules `names` is missing, naming it and the Debian
+    packages of them all (python3-<name>)."""
+    for name in names:
+        try:
+            __import__(name)
+        except ImportError as error:
+            packages = " ".join("python3-" + n for n in names)
+            print(f"skipped: {error} (Debian: apt-get install {packages})")
+            sys.exit(SKIPPED)
 
 
 def put_runtime_on_path():

@@ -59,5 +59,22 @@ TEST_F(BusyAnnouncerTest, AnAnswerToALaterStepCountsAndAnOlderOneDoesNot) {
   EXPECT_EQ(announcer_.Due(t0_ + milliseconds(250), kNoneFailed), std::vector<int>{0});
 }
 
+// NextDue is what the host reads without its lock: Due names nobody before it.
+TEST_F(BusyAnnouncerTest, NothingIsDueBeforeNextDueAndNothingAfterEveryoneAnswered) {
+  EXPECT_EQ(announcer_.NextDue(), Clock::time_point::max()) << "before a step";
+  announcer_.StepArrived(7, 3, t0_);
+  EXPECT_EQ(announcer_.NextDue(), t0_ + milliseconds(250));
+  EXPECT_TRUE(announcer_.Due(announcer_.NextDue() - milliseconds(1), kNoneFailed).empty());
+  EXPECT_EQ(announcer_.Due(t0_ + milliseconds(260), kNoneFailed).size(), 2U);
+  EXPECT_EQ(announcer_.NextDue(), t0_ + milliseconds(510));
+  announcer_.Answered(0, 3);
+  EXPECT_EQ(announcer_.Due(t0_ + milliseconds(510), {1}), std::vector<int>{});
+  EXPECT_EQ(announcer_.NextDue(), Clock::time_point::max()) << "every robot answered or failed: none until a step";
+  EXPECT_TRUE(announcer_.Due(t0_ + milliseconds(2000), {1}).empty());
+  announcer_.StepArrived(7, 4, t0_ + milliseconds(600));
+  EXPECT_EQ(announcer_.NextDue(), t0_ + milliseconds(850));
+  EXPECT_EQ(announcer_.Due(t0_ + milliseconds(850), {1}), std::vector<int>{0});
+}
+
 }  // namespace
 }  // namespace dream::python_host

@@ -9,6 +9,7 @@
 
 #include "../bridge/bridge_test_support.h"
 #include "dream/files/stopped.h"
+#include "dream/view/video_export_request.h"
 #include "dream/workflows/render_workflow.h"
 #include "workflow_test_support.h"
 
@@ -16,6 +17,7 @@ namespace dream::workflows {
 namespace {
 
 namespace fs = std::filesystem;
+using ::testing::AllOf;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
@@ -103,6 +105,49 @@ TEST(RenderWorkflowTest, AStopBeforeDrawingWritesNothing) {
   options.stop = &stop;
   EXPECT_THROW(RenderWorkflow().Render(options), files::Stopped);
   EXPECT_FALSE(fs::exists(options.out));
+}
+
+// dream view's Export video draws what `dream render` makes of the command the
+// page prints: every field of a request reaches the options through it.
+TEST(RenderWorkflowTest, AVideoExportRequestMeansWhatItsPrintedCommandMeans) {
+  const std::string query =
+      "format=gif&width=640&fps=12.5&speed=2&trail=3&x0=-1&y0=-0.5&x1=0.5&y1=0.5&from=10&to=200"
+      "&goals=0&violations=0&ids=0&drawings=0&radio=1&sensors=1";
+  for (const std::string& asked : {std::string(), query}) {
+    SCOPED_TRACE(asked);
+    const view::VideoExportRequest request = view::VideoExportRequest::Parse(asked, {}, 0, 300);
+    std::vector<std::string> words = request.RenderArguments();
+    words.insert(words.end(), {"--out=-odd/run.gif", "--", "-odd/run"});
+    const RenderWorkflow::Options options = RenderWorkflow::OptionsOfCommand(words);
+    EXPECT_EQ(options.run_or_log, "-odd/run");
+    EXPECT_EQ(options.out, "-odd/run.gif");
+    EXPECT_EQ(options.width_px, request.width_px);
+    EXPECT_EQ(options.fps, request.fps);
+    EXPECT_EQ(options.speed, request.speed);
+    EXPECT_EQ(options.trail_s, request.trail_s);
+    EXPECT_EQ(options.viewport, request.viewport ? request.viewport->Text() : "");
+    EXPECT_EQ(options.steps, request.first_step >= 0 ? "10-200" : "");
+    EXPECT_EQ(options.goals, request.goals);
+    EXPECT_EQ(options.violations, request.violations);
+    EXPECT_EQ(options.robot_ids, request.robot_ids);
+    EXPECT_EQ(options.drawings, request.drawings);
+    EXPECT_EQ(options.radio_links, request.radio_links);
+    EXPECT_EQ(options.sensor_ranges, request.sensor_ranges);
+  }
+}
+
+TEST(RenderWorkflowTest, WordsDreamRenderRefusesAreRefusedNamingThem) {
+  auto refusal = [](const std::vector<std::string>& words) {
+    try {
+      RenderWorkflow::OptionsOfCommand(words);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_THAT(refusal({"run", "--fps", "500"}), AllOf(StartsWith("dream render run --fps 500: "), HasSubstr("--fps")));
+  EXPECT_THAT(refusal({"run", "--frames", "5"}), HasSubstr("--frames"));
+  EXPECT_THAT(refusal({}), HasSubstr("run"));
 }
 
 }  // namespace

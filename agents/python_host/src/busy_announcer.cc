@@ -30,7 +30,9 @@ std::vector<int> BusyAnnouncer::Due(Clock::time_point now, const std::set<int>& 
     const bool has_answered = answered != answered_.end() && answered->second >= step_;
     if (!has_answered && failed.count(id) == 0) pending.push_back(id);
   }
-  if (!pending.empty()) next_note_ = now + interval_;
+  // Answers and faults are for good: a step with none pending has nothing
+  // more to say until the next step.
+  next_note_ = pending.empty() ? Clock::time_point::max() : now + interval_;
   return pending;
 }
 

@@ -152,6 +152,7 @@ void PythonHostProcess::OnBusMessage(const std::string& channel, const void* dat
       if (const auto header = lcm::MessageHeader::Read(data, static_cast<size_t>(size))) {
         world_step_ = {header->utime, header->step, header->run_id};
         busy_.StepArrived(header->run_id, header->step, Clock::now());
+        busy_due_from_.store(busy_.NextDue().time_since_epoch().count(), std::memory_order_relaxed);
       }
     }
     if (outbox_.size() > kMaxOutboxBytes) return;
@@ -237,12 +238,20 @@ void PythonHostProcess::RelayLoop() {
 }
 
 void PythonHostProcess::SayBusy(Clock::time_point now) {
+  // No note is due before busy_due_from_ (busy_.NextDue(), stored with mutex_
+  // held where it changes: a step's arrival, Due): such a pass, the usual one, returns without
+  // mutex_, which guards busy_ itself. Only a step's arrival (the bus thread)
+  // can race this read; read before it, the old time either takes the lock
+  // (Due then decides on the new state) or skips a pass when the new step's
+  // first note is a quarter of agent_timeout_s away: the next pass sees it.
+  if (now.time_since_epoch().count() < busy_due_from_.load(std::memory_order_relaxed)) return;
   std::vector<int> due;
   Step at;
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     if (ended_) return;  // before ready_ too: loading and setup() hold the world's start
     due = busy_.Due(now, failed_);
+    busy_due_from_.store(busy_.NextDue().time_since_epoch().count(), std::memory_order_relaxed);
     at = world_step_;
   }
   if (due.empty() || at.run_id == 0) return;

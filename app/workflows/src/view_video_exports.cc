@@ -19,29 +19,6 @@ std::string RunNameOf(const std::string& run) {
   return named.extension() == ".lcmlog" ? named.stem().string() : named.filename().string();
 }
 
-RenderWorkflow::Options RenderOptionsOf(const view::VideoExportRequest& request, const std::string& run,
-                                        const std::string& config_path, const std::string& out) {
-  RenderWorkflow::Options options;
-  options.run_or_log = run;
-  options.out = out;
-  options.config_path = config_path;
-  options.width_px = request.width_px;
-  options.fps = request.fps;
-  options.speed = request.speed;
-  options.trail_s = request.trail_s;
-  if (request.viewport) options.viewport = request.viewport->Text();
-  if (request.first_step >= 0) {
-    options.steps = std::to_string(request.first_step) + "-" + std::to_string(request.last_step);
-  }
-  options.goals = request.goals;
-  options.violations = request.violations;
-  options.robot_ids = request.robot_ids;
-  options.drawings = request.drawings;
-  options.radio_links = request.radio_links;
-  options.sensor_ranges = request.sensor_ranges;
-  return options;
-}
-
 }  // namespace
 
 std::shared_ptr<view::VideoExports> VideoExportsOfRun(const ViewReplay& replay, const std::string& run,
@@ -55,7 +32,14 @@ std::shared_ptr<view::VideoExports> VideoExportsOfRun(const ViewReplay& replay, 
   about.last_step = replay.last_step;
   auto render = [run, config_path](const view::VideoExportRequest& request, const std::string& out,
                                    const std::function<void(int, int)>& progress, const std::atomic<bool>& stop) {
-    RenderWorkflow::Options options = RenderOptionsOf(request, run, config_path, out);
+    // The command the page prints, parsed as `dream render` parses it: one
+    // mapping of a request (RenderArguments) to what is drawn. The run after
+    // "--", so a path that starts with '-' is not taken for an option.
+    std::vector<std::string> typed = request.RenderArguments();
+    typed.push_back("--out=" + out);  // one word each, as the run below
+    if (!config_path.empty()) typed.push_back("--config=" + config_path);
+    typed.insert(typed.end(), {"--", run});
+    RenderWorkflow::Options options = RenderWorkflow::OptionsOfCommand(typed);
     options.progress = progress;
     options.stop = &stop;
     std::ostringstream said;  // "video: ..." is the page's to say

@@ -36,13 +36,16 @@ class BusyAnnouncer {
   /// The robots to say busy for at `now` (empty: none yet, or none due),
   /// leaving out `failed`: the robots whose fault the owner sent (their answer, for good).
   std::vector<int> Due(Clock::time_point now, const std::set<int>& failed);
+  /// Before this, Due names no robot (Clock::time_point::max(): none until the
+  /// next step): what lets the owner skip its lock on the loop's quiet passes.
+  Clock::time_point NextDue() const { return next_note_; }
 
  private:
   std::vector<int> robot_ids_;
   Clock::duration interval_;
   int64_t run_id_ = 0;
   int64_t step_ = -1;
-  Clock::time_point next_note_;
+  Clock::time_point next_note_ = Clock::time_point::max();
   std::map<int, int64_t> answered_;
 };
 

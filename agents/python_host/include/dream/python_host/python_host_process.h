@@ -133,6 +133,9 @@ class PythonHostProcess final : public python_embedded::PythonAgentHost {
   std::atomic<bool> quit_{false};
   lcm::Subscription subscription_;  // to the bus's messages for the host; cancelled first when destroyed
   Clock::time_point started_;
+  // busy_.NextDue(), stored under mutex_ whenever busy_ changes, read without
+  // it: SayBusy's quiet passes (the most) take no lock.
+  std::atomic<Clock::rep> busy_due_from_{Clock::time_point::max().time_since_epoch().count()};
 
   mutable std::mutex mutex_;  // guards what follows
   std::string outbox_;        // frames for the process, not yet written

@@ -10,6 +10,10 @@
 #include <utility>
 #include <vector>
 
+namespace CLI {
+class App;
+}  // namespace CLI
+
 namespace dream::workflows {
 
 /// `dream render`: a recorded run drawn as the arena picture (.png/.svg), a
@@ -44,6 +48,15 @@ class RenderWorkflow {
     std::function<void(int drawn, int total)> progress;
     const std::atomic<bool>* stop = nullptr;  ///< asked between the stages and within the long ones
   };
+
+  /// `dream render`'s argument and options, declared once on `command`, filling
+  /// `options`: the command line parses them, and so does dream view's Export
+  /// video (OptionsOfCommand), so the page's video is the command it prints.
+  static void DeclareOptions(CLI::App& command, Options& options);
+  /// The options of `dream render` WORDS... (the words after "dream render"),
+  /// parsed as the command line parses them.
+  /// @throws std::invalid_argument naming the words and what is wrong with them.
+  static Options OptionsOfCommand(const std::vector<std::string>& words);
 
   /// "FIRST-LAST" (whole steps, "120-480") as {first, last}.
   /// @throws std::invalid_argument naming --steps and the value.
