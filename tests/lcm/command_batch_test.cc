@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "dream/robot_commands_t.hpp"
-#include "../support/sample_command_batch.h"
+#include "../support/sample_lcm_messages.h"
 #include "dream/velocity_command_t.hpp"
 
 namespace dream::lcm {
@@ -19,7 +19,7 @@ namespace {
 constexpr int kRobots = 3;
 
 robot_commands_t Batch(const std::vector<int32_t>& ids) {
-  return testing::SampleCommandBatch(ids, /*run_id=*/77, /*agent_id=*/500, /*step=*/2, /*utime=*/66000);
+  return testing::CommandBatchOf(ids, /*run_id=*/77, /*agent_id=*/500, /*step=*/2, /*utime=*/66000);
 }
 
 std::string ProblemOf(const robot_commands_t& batch, int robots = kRobots) {

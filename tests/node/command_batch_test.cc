@@ -20,7 +20,7 @@
 #include "dream/robot_poses_t.hpp"
 #include "quiet_bus.h"
 #include "dream/robot_commands_t.hpp"
-#include "../support/sample_command_batch.h"
+#include "../support/sample_lcm_messages.h"
 #include "dream/velocity_command_t.hpp"
 #include "dream/world/unicycle_world.h"
 
@@ -39,7 +39,7 @@ struct EntryHeard {
 };
 
 robot_commands_t Batch(const std::vector<int32_t>& ids, int64_t agent = kAgent) {
-  return dream::testing::SampleCommandBatch(ids, kRunId, agent);
+  return dream::testing::CommandBatchOf(ids, kRunId, agent);
 }
 
 class CommandBatchTest : public ::testing::Test {
