@@ -46,7 +46,7 @@ bool DenseCholesky::Factor() {
   }
   if (j < n && !FactorColumn(j)) return false;
   // L' by columns too, so the backward solve runs over contiguous memory.
-  upper_.assign(n * n, 0.0);
+  upper_.resize(n * n);  // only its upper triangle is written and read
   for (size_t c = 0; c < n; ++c) {
     for (size_t r = c; r < n; ++r) upper_[r * n + c] = a[c * n + r];
   }
