@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "orthant_kernels.h"
+
 namespace dream::barriers {
 namespace {
 
@@ -73,13 +75,14 @@ bool InteriorPointQp::Factor(const Eigen::VectorXd& p, const LinearInequalities&
 void InteriorPointQp::SolveKkt(const LinearInequalities& g, const Eigen::VectorXd& inverse_scale, Eigen::VectorXd* x,
                                Eigen::VectorXd* z) {
   // z := W^-T bz; x := S^-1 (bx + G' W^-1 W^-T bz); W uz := W^-T (G ux - bz).
-  z->array() *= inverse_scale.array();
-  work_m_ = z->cwiseProduct(inverse_scale);
+  const auto m = static_cast<size_t>(g.num_rows());
+  work_m_.resize(g.num_rows());
+  orthant::ScaleTwice(m, inverse_scale.data(), z->data(), work_m_.data());
   g.MultiplyTransposed(work_m_, &work_n_);
   *x += work_n_;
   cholesky_.SolveInPlace(x);
   g.Multiply(*x, &work_m_);
-  *z = work_m_.cwiseProduct(inverse_scale) - *z;
+  orthant::ScaledDifference(m, work_m_.data(), inverse_scale.data(), z->data());
 }
 
 bool InteriorPointQp::Start(const Eigen::VectorXd& p, const Eigen::VectorXd& q, const LinearInequalities& g) {
@@ -108,7 +111,8 @@ InteriorPointQp::Residuals InteriorPointQp::ComputeResiduals(const Eigen::Vector
   g.MultiplyTransposed(z_, &work_n_);
   rx_ += work_n_;
   g.Multiply(x_, &work_m_);
-  rz_ = s_ - h + work_m_;
+  rz_.resize(g.num_rows());
+  orthant::PrimalResidual(static_cast<size_t>(g.num_rows()), s_.data(), h.data(), work_m_.data(), rz_.data());
   const double pcost = f0;
   const double dcost = f0 + z_.dot(rz_) - gap_;
   Residuals r;
@@ -126,33 +130,30 @@ bool InteriorPointQp::Converged(const Residuals& r) const {
 }
 
 QpStatus InteriorPointQp::Step(const Eigen::VectorXd& p, const LinearInequalities& g, bool first) {
+  const auto m = static_cast<size_t>(g.num_rows());
   if (first) {  // the Nesterov-Todd scaling of the starting point
     d_ = (s_.array() / z_.array()).sqrt();
     di_ = (z_.array() / s_.array()).sqrt();
     lambda_ = (s_.array() * z_.array()).sqrt();
+    inverse_lambda_ = lambda_.cwiseInverse();  // later steps get it from the scaling's update
   }
-  lambda_sq_ = lambda_.cwiseProduct(lambda_);
-  inverse_lambda_ = lambda_.cwiseInverse();  // multiplied by below: six divisions of m fewer
   if (!Factor(p, g, di_)) return QpStatus::kSingularSystem;
   if (gap_ == 0.0) return QpStatus::kNotFinite;  // CVXOPT divides by it below and raises
-  const double mu = gap_ / static_cast<double>(g.num_rows());
+  const double mu = gap_ / static_cast<double>(m);
+  ds_.resize(g.num_rows());
+  dz_.resize(g.num_rows());
+  correction_.resize(g.num_rows());
   double sigma = 0.0;
   double step = 1.0;
   for (int pass = 0; pass < 2; ++pass) {
     // Predictor (pass 0), then corrector with Mehrotra's second-order term (pass 1).
-    if (pass == 0) {
-      ds_ = ((-lambda_sq_).array() + sigma * mu) * inverse_lambda_.array();
-    } else {
-      ds_ = ((-lambda_sq_ - correction_).array() + sigma * mu) * inverse_lambda_.array();
-    }
+    orthant::Direction(m, sigma * mu, lambda_.data(), inverse_lambda_.data(), pass == 0 ? nullptr : correction_.data(),
+                       d_.data(), rz_.data(), ds_.data(), dz_.data());
     dx_ = -rx_;
-    dz_ = -rz_ - d_.cwiseProduct(ds_);
     SolveKkt(g, di_, &dx_, &dz_);
-    ds_ -= dz_;
+    orthant::Subtract(m, dz_.data(), ds_.data());
     const double dsdz = ds_.dot(dz_);
-    if (pass == 0) correction_ = ds_.cwiseProduct(dz_);
-    ds_.array() *= inverse_lambda_.array();
-    dz_.array() *= inverse_lambda_.array();
+    orthant::Rescale(m, inverse_lambda_.data(), ds_.data(), dz_.data(), pass == 0 ? correction_.data() : nullptr);
     const double t = std::max({0.0, MaxStep(ds_), MaxStep(dz_)});
     step = t == 0.0 ? 1.0 : std::min(1.0, (pass == 0 ? 1.0 : kCorrectorStepFraction) / t);
     if (pass == 0) {
@@ -160,16 +161,10 @@ QpStatus InteriorPointQp::Step(const Eigen::VectorXd& p, const LinearInequalitie
     }
   }
   x_ += step * dx_;
-  // The new s and z in the current scaling, u and v, then the scaling and lambda updated:
-  // cvxopt's lambda = sqrt(u) sqrt(v) and d := d sqrt(u) / sqrt(v) are sqrt(u v) and d lambda / v,
-  // one square root where cvxopt takes two (the costliest instruction of a step).
-  ds_ = (1.0 + step * ds_.array()) * lambda_.array();
-  dz_ = (1.0 + step * dz_.array()) * lambda_.array();
-  lambda_ = (ds_.array() * dz_.array()).sqrt();
-  d_ = d_.array() * (lambda_.array() / dz_.array());
-  di_ = d_.cwiseInverse();
-  s_ = d_.cwiseProduct(lambda_);
-  z_ = di_.cwiseProduct(lambda_);
+  // The new s and z in the current scaling, then the scaling and lambda updated (orthant_kernels.h:
+  // one square root a row where cvxopt takes two, the costliest instruction of a step).
+  orthant::UpdateScaling(m, step, ds_.data(), dz_.data(), lambda_.data(), inverse_lambda_.data(), d_.data(), di_.data(),
+                         s_.data(), z_.data());
   gap_ = lambda_.dot(lambda_);
   return QpStatus::kOptimal;
 }

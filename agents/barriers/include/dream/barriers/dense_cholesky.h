@@ -9,7 +9,7 @@ namespace dream::barriers {
 
 /// S = L L' for the small dense normal matrices of the barrier QP (40 x 40 at
 /// 20 robots): the lower triangle stored by columns and factored
-/// right-looking two columns at a time, L' kept by columns too, so every
+/// right-looking four columns at a time, L' kept by columns too, so every
 /// inner loop is independent multiply-adds over contiguous memory the
 /// compiler vectorizes. Eigen's LLT blocks at this size
 /// and spends more in its GEMM kernels than in arithmetic (barrier_benchmark).
@@ -28,6 +28,8 @@ class DenseCholesky {
  private:
   /// Column j's pivot and scaling; false when S is not positive definite there.
   bool FactorColumn(size_t j);
+  /// Columns j to j + 3 factored and the trailing triangle updated by all four.
+  bool FactorFourColumns(size_t j);
 
   int n_ = 0;
   std::vector<double> lower_;  ///< S, then L, by columns

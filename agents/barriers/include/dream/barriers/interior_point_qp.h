@@ -57,7 +57,7 @@ class InteriorPointQp {
   Eigen::VectorXd x_, s_, z_, d_, di_, lambda_;
   double gap_ = 0.0;
   // Work vectors, kept so that a solver per run allocates once.
-  Eigen::VectorXd rx_, rz_, dx_, dz_, ds_, lambda_sq_, inverse_lambda_, correction_;
+  Eigen::VectorXd rx_, rz_, dx_, dz_, ds_, inverse_lambda_, correction_;
   Eigen::VectorXd work_n_;
   Eigen::VectorXd work_m_;
 };
