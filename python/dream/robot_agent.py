@@ -5,6 +5,7 @@ command (the last one again when update did not run) and, if the radio spoke, th
 Both routes drive it: the LCM agent host and a Robotarium submission's main loop.
 """
 
+import math
 import os
 import signal
 import sys
@@ -163,11 +164,15 @@ class RobotAgent:
 
     def _command(self, command):
         """update()'s (v, w) as two floats; a ControllerFault at the user's update otherwise."""
+        update = type(self.robot).update
+        where = f"{update.__code__.co_filename}:{update.__code__.co_firstlineno}: in {update.__name__}: "
         try:
             v, w = command
-            return (float(v), float(w))
+            v, w = float(v), float(w)
         except (TypeError, ValueError):
-            update = type(self.robot).update
-            code = update.__code__
-            raise ControllerFault(f"{code.co_filename}:{code.co_firstlineno}: in {update.__name__}: TypeError: "
-                                  f"update() must return (v, w), two numbers, got {command!r}") from None
+            raise ControllerFault(f"{where}TypeError: update() must return (v, w), two numbers, "
+                                  f"got {command!r}") from None
+        if not (math.isfinite(v) and math.isfinite(w)):
+            # The world would refuse every such command and the robot would hold still, unexplained.
+            raise ControllerFault(f"{where}ValueError: update() must return finite numbers, got v={v}, w={w}")
+        return (v, w)

@@ -4,6 +4,7 @@
 #include <spdlog/sinks/ostream_sink.h>
 #include <spdlog/spdlog.h>
 
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -30,7 +31,7 @@ class CountingRobot final : public Robot {
   CountingRobot(int id, int* calls) : Robot(id, RobotParams{}), calls_(calls) {}
   UnicycleCommand Update(int64_t) override {
     ++*calls_;
-    return {0.1, pose().x()};
+    return {v_mps, pose().x()};
   }
   std::optional<std::vector<uint8_t>> OnRadio(const std::vector<RadioMessage>& heard) override {
     heard_ids.clear();
@@ -54,17 +55,20 @@ class CountingRobot final : public Robot {
   std::vector<int> heard_ids;
   bool name_bad_senders = true;
   size_t extra_payload_bytes = 0;  // zeros after its id
+  double v_mps = 0.1;
 
  private:
   int* calls_;
 };
 
 std::unique_ptr<RobotAgent> MakeAgent(int id, int* calls, std::unique_ptr<Radio> radio = nullptr,
-                                      bool name_bad_senders = true, size_t extra_payload_bytes = 0) {
+                                      bool name_bad_senders = true, size_t extra_payload_bytes = 0,
+                                      double v_mps = 0.1) {
   RobotAgentSpec spec;
   auto robot = std::make_unique<CountingRobot>(id, calls);
   robot->name_bad_senders = name_bad_senders;
   robot->extra_payload_bytes = extra_payload_bytes;
+  robot->v_mps = v_mps;
   spec.robot = std::move(robot);
   SensorSlot odometry{std::make_unique<OdometrySensor>(OdometrySensorParams{}, 1), 1};
   spec.sensors.push_back(std::move(odometry));
@@ -183,6 +187,31 @@ TEST_F(AgentHostTest, ARadioPayloadOverTheLimitIsTheControllersFaultNotAMessage)
   for (const radio_message_t& radio : radio_) EXPECT_EQ(radio.sender_id, 0);
   for (const velocity_command_t& command : commands_) EXPECT_EQ(command.robot_id, 0);
   EXPECT_EQ(commands_.size(), 3u);  // robot 0 goes on
+  EXPECT_EQ(bad_.total(), 0);
+}
+
+// A command that is not a number was sent, the world refused it at every step
+// and the robot held still with nothing but dropped messages to say why.
+TEST_F(AgentHostTest, ANonFiniteCommandIsTheControllersFaultNotAMessage) {
+  std::vector<robot_fault_t> faults;
+  const lcm::Subscription fault_reports = lcm::Subscribe<robot_fault_t>(
+      bus_, lcm::kFaultChannelRegex, [&](const std::string&, const robot_fault_t& f) { faults.push_back(f); }, bad_);
+  int calls = 0;
+  std::vector<std::unique_ptr<RobotAgent>> agents;
+  agents.push_back(MakeAgent(0, &calls));
+  agents.push_back(MakeAgent(1, &calls, nullptr, true, 0, std::numeric_limits<double>::quiet_NaN()));
+  agent_host::AgentHost host(bus_, std::move(agents), 5);
+  lcm::Publish(bus_, lcm::kPosesChannel, Poses(1, 2));
+  lcm::Publish(bus_, lcm::kPosesChannel, Poses(2, 2));
+  Drain();
+  ASSERT_EQ(faults.size(), 1u);
+  EXPECT_EQ(faults[0].robot_id, 1);
+  EXPECT_EQ(faults[0].step, 1);
+  EXPECT_EQ(faults[0].detail,
+            "robot 1: Update returned a command that is not finite (v=nan m/s, w=0.100000 rad/s; the world would "
+            "refuse it)");
+  ASSERT_EQ(commands_.size(), 2u);  // robot 0 goes on
+  for (const velocity_command_t& command : commands_) EXPECT_EQ(command.robot_id, 0);
   EXPECT_EQ(bad_.total(), 0);
 }
 

@@ -525,6 +525,11 @@ class ControllerFaultTest(SpecFixture):
                     return None
 
 
+            class NotFinite(Robot):
+                def update(self, step):
+                    return (0.1, float("nan"))
+
+
             class BadSetup(Robot):
                 def setup(self):
                     raise RuntimeError("no goal for robot %d" % self.id)
@@ -535,9 +540,13 @@ class ControllerFaultTest(SpecFixture):
         agent = ControllerSpec.from_json(json.dumps(self.spec(module, "NoCommand", {}))).make_agent(0)
         with self.assertRaisesRegex(ControllerFault, rf"^{module}:6: in update: TypeError: update\(\) must return"):
             agent.step(world(1, [[0, 0, 0], [1, 0, 0]]))
+        agent = ControllerSpec.from_json(json.dumps(self.spec(module, "NotFinite", {}))).make_agent(0)
+        with self.assertRaisesRegex(ControllerFault, rf"^{module}:11: in update: ValueError: update\(\) must return "
+                                                     r"finite numbers, got v=0.1, w=nan"):
+            agent.step(world(1, [[0, 0, 0], [1, 0, 0]]))
         text = json.dumps(self.spec(module, "BadSetup", {}))
         agent = ControllerSpec.from_json(text).make_agent(0)
-        self.assertEqual(str(agent.fault), f"{module}:12: in setup: RuntimeError: no goal for robot 0")
+        self.assertEqual(str(agent.fault), f"{module}:17: in setup: RuntimeError: no goal for robot 0")
         with self.assertRaisesRegex(ConfigError, "robot 0's BadSetup failed to set up"):
             check(text)
 

@@ -171,6 +171,13 @@ bool AgentHost::Answer(RobotSlot& robot, const robot_poses_t& poses) {
              std::to_string(lcm::MessageLimits::kRadioPayloadBytes) + " bytes (every receiver would drop it)");
     return false;
   }
+  if (!std::isfinite(command.v) || !std::isfinite(command.w)) {
+    // The world would refuse it at every step and the robot would hold still, unexplained.
+    Fail(robot, poses,
+         "robot " + std::to_string(robot.agent->id()) + ": Update returned a command that is not finite (v=" +
+             std::to_string(command.v) + " m/s, w=" + std::to_string(command.w) + " rad/s; the world would refuse it)");
+    return false;
+  }
   if (output.broadcast) {
     radio_message_t radio{};
     radio.utime = poses.utime;
