@@ -105,7 +105,16 @@ TEST_F(CheckSubmissionTest, ARunnerThatPassesGivesAnImportedRunComparedWithTheSi
   EXPECT_EQ(summary["verdict"], "clean");
   EXPECT_EQ(summary["goal"]["met"], true);
   EXPECT_TRUE(fs::exists(out_dir_ + "/comparison.json"));
-  EXPECT_THAT(out_.str(), HasSubstr("DREAM's stand-in"));
+  EXPECT_THAT(out_.str(), HasSubstr("simulator: DREAM's stand-in (--standin)"));
+}
+
+TEST_F(CheckSubmissionTest, AStandInUsedForWantOfTheOfficialSaysHowToNameTheOfficial) {
+  runner_.report = Passed();
+  CheckSubmission::Options options = Options();
+  options.standin = false;
+  EXPECT_EQ(Check(options).outcome, Outcome::kPassed);
+  EXPECT_THAT(out_.str(), HasSubstr("simulator: DREAM's stand-in (the official one was not found: --simulator DIR or "
+                                    "$ROBOTARIUM_PYTHON_SIMULATOR)"));
 }
 
 TEST_F(CheckSubmissionTest, EachWayTheRunnerFailsHasItsOutcome) {

@@ -145,10 +145,14 @@ std::optional<CheckSubmission::Result> CheckSubmission::RunRunner(const files::O
     throw std::runtime_error(report_path + ": the runner's report is not valid JSON: " + e.what());
   }
   const std::string simulator = report->value("simulator", "?");
+  // A newcomer who wanted the official simulator learns here how to name it.
+  const std::string standin_why =
+      options_.standin ? "--standin"
+                       : "the official one was not found: --simulator DIR or $ROBOTARIUM_PYTHON_SIMULATOR";
   out_ << "simulator: "
        << (simulator == "official"
                ? "the official Robotarium simulator (" + report->value("simulator_path", std::string()) + ")"
-               : std::string("DREAM's stand-in (the official one was not found)"))
+               : "DREAM's stand-in (" + standin_why + ")")
        << "\n";
   if (!report->value("ok", false)) {
     ended.outcome = report->value("startup_timeout", false) ? Outcome::kStartupTimedOut : Outcome::kScriptFailed;
