@@ -13,6 +13,7 @@
 #include "dream/bridge/submission_format.h"
 #include "dream/files/file_text.h"
 #include "dream/workflows/check_submission.h"
+#include "dream/workflows/script_export.h"
 #include "workflow_test_support.h"
 
 namespace dream::workflows {
@@ -60,8 +61,9 @@ class CheckSubmissionTest : public ::testing::Test {
     tools.replay_lab = [](const std::string&, const std::string&) -> CheckSubmission::Replay {
       throw std::runtime_error("a track export is never replayed");
     };
-    tools.choose_folder = [this](const std::string& out, const std::string&, bool) {
+    tools.choose_folder = [this](const std::string& out, const std::string& default_out, bool) {
       ++folders_chosen_;
+      default_out_ = default_out;
       fs::create_directories(out);
       return out;
     };
@@ -83,6 +85,7 @@ class CheckSubmissionTest : public ::testing::Test {
   std::string out_dir_ = bridge::testing::NewFolder("check_submission") + "/check";
   FakeRunner runner_;
   int folders_chosen_ = 0;
+  std::string default_out_;  ///< the folder chosen when --out is not given
   std::ostringstream out_;
 };
 
@@ -179,6 +182,28 @@ TEST_F(CheckSubmissionTest, ALabRunThatMissesItsGoalIsNotReadyAsDreamImportSays)
   const CheckSubmission::Result passed = Check(Options());
   EXPECT_EQ(passed.outcome, Outcome::kPassed);
   EXPECT_THAT(out_.str(), HasSubstr("goal: met at step"));
+}
+
+// A script's export was checked into runs/dream_record_check/, named after the
+// recorder every script's upload has: the script names it, as it names its run.
+TEST_F(CheckSubmissionTest, AScriptsCheckIsNamedAfterTheScriptNotTheRecorder) {
+  const std::string dir = bridge::testing::NewFolder("check_script_submission");
+  bridge::testing::WriteText(dir + "/my_script.py", "import numpy as np\n");
+  fs::create_directories(dir + "/runtime/rps_dream");
+  bridge::testing::WriteText(dir + "/runtime/rps_dream/dream_record.py", "SCRIPT = \"__DREAM_SCRIPT__\"\n");
+  ScriptExport::Options exporting;
+  exporting.script_path = dir + "/my_script.py";
+  exporting.out_dir = dir + "/export";
+  exporting.python_runtime_dir = dir + "/runtime";
+  ScriptExport().Export(exporting, [](const std::vector<std::string>&) {
+    return ScriptExport::Checked{0, "{\"imports\": [\"numpy\"], \"not_on_robotarium\": []}"};
+  });
+  runner_.report = Passed();
+  runner_.writes_result = false;
+  CheckSubmission::Options options = Options();
+  options.export_dir = exporting.out_dir;
+  EXPECT_EQ(Check(options).outcome, Outcome::kPassed) << out_.str();
+  EXPECT_EQ(default_out_, "runs/my_script_check");
 }
 
 TEST_F(CheckSubmissionTest, AWrongSimulatorFolderIsNamedBeforeAnyFolderIsMade) {

@@ -38,7 +38,11 @@ CheckSubmission::Result CheckSubmission::RunScriptCheck(const ScriptExport::Mani
   }
   SimulatorChecked();
   const files::OutputFolder out(tools_.choose_folder(
-      options_.out_dir, "runs/" + ScriptRunWorkflow::RunName(manifest.main_file) + "_check", options_.overwrite));
+      options_.out_dir,
+      // Named after the script, as its run is, not after the recorder that runs it.
+      "runs/" + ScriptRunWorkflow::RunName(manifest.script_file.empty() ? manifest.main_file : manifest.script_file) +
+          "_check",
+      options_.overwrite));
   const std::string workdir = out.MakeSubfolder("lab_files");
   files::OutputFolder(workdir).RemoveFiles("an earlier check's file");
   nlohmann::json report;
