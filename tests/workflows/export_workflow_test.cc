@@ -36,6 +36,31 @@ TEST(ExportWorkflowTest, WithoutOutAnExportGoesToExportsAndTheConfigsName) {
   EXPECT_EQ(ExportWorkflow::OutDir(options), "elsewhere");
 }
 
+// `dream export sweeps/ring` said "sweeps/ring/config.yaml: cannot open the config file".
+TEST(ExportWorkflowTest, AFolderThatIsNoRunIsNamedWithWhatToPassInstead) {
+  const std::string dir = bridge::testing::NewFolder("export_workflow_no_run");
+  const auto error_of = [](const std::string& run_dir) {
+    ExportWorkflow::Asked asked;
+    asked.run_dir = run_dir;
+    std::string refusal;
+    try {
+      ExportWorkflow().ExportAsAsked(asked, &refusal);
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return "no error, refusal '" + refusal + "'";
+  };
+  EXPECT_EQ(error_of(dir + "/runs/rng"), dir +
+                                             "/runs/rng: no such run folder (pass the folder dream run wrote, "
+                                             "runs/<name>, or a script SCRIPT.py)");
+  fs::create_directories(dir + "/sweep");
+  bridge::testing::WriteText(dir + "/sweep/sweep.json", "{}");
+  EXPECT_EQ(error_of(dir + "/sweep"), dir + "/sweep: a sweep's folder; export one of its runs, " + dir +
+                                          "/sweep/runs/<run> (its sweep.md lists them)");
+  EXPECT_EQ(error_of(dir),
+            dir + ": not a run folder (it has no config.yaml; pass the folder dream run wrote, runs/<name>)");
+}
+
 TEST(ExportWorkflowTest, ARunTheLabWouldRefuseIsARefusalAndNothingIsWritten) {
   // The simulated run, with a summary.json that says its goal was missed.
   const std::string run = bridge::testing::NewFolder("export_workflow_not_ready");

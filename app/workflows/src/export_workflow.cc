@@ -40,6 +40,19 @@ int ExportCalibration(const ExportWorkflow::Asked& asked, const bridge::ExportOp
   return CalibrationExportWorkflow().Export(calibration).exit_code;
 }
 
+/// What is wrong with `run_dir` as a run to export, when it has no config.yaml.
+std::string NotARunFolder(const std::string& run_dir) {
+  std::error_code error;
+  if (!fs::exists(run_dir, error)) {
+    return run_dir + ": no such run folder (pass the folder dream run wrote, runs/<name>, or a script SCRIPT.py)";
+  }
+  if (fs::exists(fs::path(run_dir) / "sweep.json", error)) {
+    return run_dir + ": a sweep's folder; export one of its runs, " + (fs::path(run_dir) / "runs").string() +
+           "/<run> (its sweep.md lists them)";
+  }
+  return run_dir + ": not a run folder (it has no config.yaml; pass the folder dream run wrote, runs/<name>)";
+}
+
 }  // namespace
 
 std::vector<std::string> ExportWorkflow::StrategyNames() { return bridge::StrategyNames(); }
@@ -57,6 +70,10 @@ int ExportWorkflow::ExportAsAsked(const Asked& asked, std::string* refusal) cons
   }
   if (asked.run_dir.empty()) {
     throw std::runtime_error("pass the run folder to export (dream export RUN), or --calibration --robots N");
+  }
+  std::error_code error;
+  if (asked.config_path.empty() && !fs::exists(fs::path(asked.run_dir) / "config.yaml", error)) {
+    throw std::runtime_error(NotARunFolder(asked.run_dir));
   }
   options.strategy = bridge::ParseStrategy(asked.strategy.empty() ? "track" : asked.strategy);
   const Result result = Export({asked.run_dir, asked.out_dir, asked.config_path, options});
