@@ -88,6 +88,14 @@ def main(argv):
         return 2
     script = os.path.abspath(argv[1])
     _tee_to_terminal()
+    try:
+        import numpy  # noqa: F401  DREAM's rps, as the official one, is built on it
+    except ImportError as missing:
+        # Said here, not as a traceback from deep in rps: a newcomer's python3 often lacks it.
+        print(f"dream run: {sys.executable} cannot import numpy ({missing}), which rps needs: install it for "
+              f"that Python, or name one that has it in DREAM_PYTHON (e.g. DREAM_PYTHON=/usr/bin/python3)",
+              file=sys.stderr)
+        return 1
     run_dir = os.environ.get("DREAM_RUN_DIR")
     if run_dir:
         os.chdir(run_dir)
