@@ -12,6 +12,7 @@ import sys
 import traceback
 
 from .radios import MAX_PAYLOAD_BYTES, Mailbox
+from .robot import Robot
 from .timer import Timer
 
 
@@ -106,6 +107,12 @@ class RobotAgent:
             if is_run_interrupt(exc):
                 raise
             self.fault = ControllerFault(controller_error_text(exc, self._user_file))
+        if self.fault is None and type(robot).update is Robot.update:
+            # A fault now, which the pre-run check reports (controller_spec.check), not at every robot's first step.
+            methods = sorted(name for name, value in vars(type(robot)).items()
+                             if callable(value) and not name.startswith("_"))
+            self.fault = ControllerFault(f"{self._user_file}: {type(robot).__name__} has no update(self, step) method, "
+                                         f"the control law returning (v, w); its methods: {', '.join(methods) or 'none'}")
 
     def step(self, world):
         """Runs the parts due at world.step: sensors in list order, then the radio (heard

@@ -549,6 +549,13 @@ class ControllerFaultTest(SpecFixture):
         self.assertEqual(str(agent.fault), f"{module}:17: in setup: RuntimeError: no goal for robot 0")
         with self.assertRaisesRegex(ConfigError, "robot 0's BadSetup failed to set up"):
             check(text)
+        no_update = self.module("no_update.py", "from dream import Robot\n\n\nclass Ring(Robot):\n"
+                                               "    def updat(self, step):\n        return (0.0, 0.0)\n")
+        with self.assertRaises(ConfigError) as caught:
+            check(json.dumps(self.spec(no_update, "Ring", {})))
+        self.assertEqual(str(caught.exception), f"run.yaml:20: controller: robot 0's Ring failed to set up: "
+                                                f"{no_update}: Ring has no update(self, step) method, the control "
+                                                f"law returning (v, w); its methods: updat")
 
 
 class BaseExceptionFaultTest(SpecFixture):
