@@ -160,6 +160,8 @@ def test(ctx):
          ["(did you mean 'info'?)", "dream log --help"], False),
         ("unknown global option", ["--bogus", "run", config], EXIT_USAGE, ["'--bogus'", "dream --help"], False),
         ("missing argument", ["run"], EXIT_USAGE, ["config", "required", "dream run --help"], False),
+        ("arguments to a script", ["run", "s.py", "3"], EXIT_USAGE,
+         ["not expected: 3", "a Robotarium script (s.py) takes no arguments of its own", "dream run --help"], False),
         ("log without its subcommand", ["log"], EXIT_USAGE, ["subcommand", "dream log --help"], False),
         ("unknown option of a nested command", ["log", "info", truncated, "--all"], EXIT_USAGE,
          ["--all", "dream log info --help"], False),

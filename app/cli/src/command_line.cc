@@ -71,4 +71,15 @@ std::string CommandLine::SuggestionAfterFailedParse() const {
   return "";
 }
 
+std::string CommandLine::ScriptArgumentsHint() const {
+  for (int i = 1; i < argc_; ++i) {
+    const std::string word = argv_[i];
+    if (word.size() > 3 && word.compare(word.size() - 3, 3, ".py") == 0) {
+      return "; a Robotarium script (" + word +
+             ") takes no arguments of its own under dream (docs/robotarium-scripts.md#not-yet-supported)";
+    }
+  }
+  return "";
+}
+
 }  // namespace dream::cli

@@ -71,6 +71,9 @@ class CommandLine {
   /// of the command the parse got to (or, under a group such as dream log, a
   /// typo of one of its commands), else "".
   std::string SuggestionAfterFailedParse() const;
+  /// After "argument was not expected": when a word given is a Python
+  /// script, that dream passes a script no arguments of its own; else "".
+  std::string ScriptArgumentsHint() const;
 
  private:
   struct Command {

@@ -90,8 +90,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help
     // One line, like every other failure, and where to read more.
-    std::cerr << "dream: " << e.what() << line.SuggestionAfterFailedParse() << " (" << line.ParsedCommandName()
-              << " --help)\n";
+    const bool extra_words = dynamic_cast<const CLI::ExtrasError*>(&e) != nullptr;
+    std::cerr << "dream: " << e.what() << line.SuggestionAfterFailedParse()
+              << (extra_words ? line.ScriptArgumentsHint() : "") << " (" << line.ParsedCommandName() << " --help)\n";
     return kExitUsage;
   }
 
