@@ -36,6 +36,28 @@ TEST(ExportWorkflowTest, WithoutOutAnExportGoesToExportsAndTheConfigsName) {
   EXPECT_EQ(ExportWorkflow::OutDir(options), "elsewhere");
 }
 
+// Exports go by the config's name: exporting a second run of one config replaced the first's
+// export without a word.
+TEST(ExportWorkflowTest, AnExportOfAnotherRunInTheSameFolderSaysWhatItReplaced) {
+  const std::string dir = bridge::testing::NewFolder("export_workflow_replaced");
+  const std::string other_run = dir + "/go_to_goal_2";
+  fs::copy(testing::SimulatedRun(), other_run, fs::copy_options::recursive);
+  ExportWorkflow::Options options;
+  options.out_dir = dir + "/export";
+  options.run_dir = testing::SimulatedRun();
+  std::ostringstream first;
+  ASSERT_FALSE(ExportWorkflow(first).Export(options).refused);
+  std::ostringstream again;
+  ASSERT_FALSE(ExportWorkflow(again).Export(options).refused);
+  EXPECT_THAT(again.str(), ::testing::Not(HasSubstr("replaced: ")));  // the same run's export, made again
+  options.run_dir = other_run;
+  std::ostringstream other;
+  ASSERT_FALSE(ExportWorkflow(other).Export(options).refused);
+  EXPECT_THAT(other.str(), HasSubstr("replaced: " + options.out_dir + " held the export of " +
+                                     fs::weakly_canonical(testing::SimulatedRun()).string() +
+                                     " (--out DIR keeps each run's export)"));
+}
+
 // `dream export sweeps/ring` said "sweeps/ring/config.yaml: cannot open the config file".
 TEST(ExportWorkflowTest, AFolderThatIsNoRunIsNamedWithWhatToPassInstead) {
   const std::string dir = bridge::testing::NewFolder("export_workflow_no_run");

@@ -1,9 +1,11 @@
 #include "dream/workflows/export_workflow.h"
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 
 #include "dream/bridge/export_options.h"
+#include "dream/files/file_text.h"
 #include "dream/run_config/run_config.h"
 #include "dream/session/exit_code.h"
 #include "dream/workflows/calibration_export_workflow.h"
@@ -53,6 +55,18 @@ std::string NotARunFolder(const std::string& run_dir) {
   return run_dir + ": not a run folder (it has no config.yaml; pass the folder dream run wrote, runs/<name>)";
 }
 
+/// The run whose export `out_dir` holds (its export.json's source_run), or "".
+std::string ExportedRunIn(const std::string& out_dir) {
+  const fs::path manifest = fs::path(out_dir) / "export.json";
+  std::error_code error;
+  if (!fs::is_regular_file(manifest, error)) return "";
+  try {
+    return nlohmann::json::parse(files::ReadFileText(manifest.string())).value("source_run", std::string());
+  } catch (const std::exception&) {  // a damaged one is the exporter's to refuse or replace
+    return "";
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> ExportWorkflow::StrategyNames() { return bridge::StrategyNames(); }
@@ -97,6 +111,7 @@ ExportWorkflow::Result ExportWorkflow::Export(const Options& options) const {
     std::error_code error;  // a folder that cannot be made is named by the exporter's write
     fs::create_directories(fs::path(out_dir).parent_path(), error);
   }
+  const std::string earlier_run = ExportedRunIn(out_dir);
   Result result;
   try {
     result.summary = bridge::ExportSubmission(options.run_dir, out_dir, options.exporter, options.config_path);
@@ -108,6 +123,11 @@ ExportWorkflow::Result ExportWorkflow::Export(const Options& options) const {
   const bridge::ExportSummary& summary = result.summary;
   out_ << summary.instructions << "\nwritten: " << summary.out_dir << "/UPLOAD.txt, " << summary.upload_dir << "/ ("
        << summary.uploads.size() << " files)\n";
+  // Exports go by the config's name: a second run of one config replaces the first's, unless --out says.
+  if (!earlier_run.empty() && earlier_run != ExportedRunIn(out_dir)) {
+    out_ << "replaced: " << out_dir << " held the export of " << earlier_run
+         << " (--out DIR keeps each run's export)\n";
+  }
   return result;
 }
 
