@@ -264,6 +264,13 @@ def test(ctx):
         for command, out in (("run", ["--out", ctx.path("refused_out_laughs_run")]),
                              ("sweep", ["--out", ctx.path("refused_out_laughs_sweep")]))
     ] + [
+        (f"{command} {option} without '='", [command, config, option, "radius_m"] + out, EXIT_USAGE,
+         [f"{option}: expected KEY=VALUE", "got radius_m", f"dream {command} --help"], False)
+        for command, option, out in (("run", "--set", ["--out", ctx.path("refused_out_kv_run")]),
+                                     ("launch", "--set", ["--out", ctx.path("refused_out_kv_launch")]),
+                                     ("sweep", "--set", ["--out", ctx.path("refused_out_kv_sweep")]),
+                                     ("sweep", "--zip", ["--out", ctx.path("refused_out_kv_zip")]))
+    ] + [
         ("run into the folder of a killed run", ["run", config, "--out", killed_run], EXIT_INPUT,
          [f"--out {killed_run} holds {killed_part} ({len(killed_bytes)} bytes), the log of a run that did not end",
           "move it out of the folder", "--overwrite deletes it"], False),

@@ -44,6 +44,17 @@ CLI::Validator SeedValue() {
       "INT>=0");
 }
 
+CLI::Validator KeyValue() {
+  return CLI::Validator(
+      [](const std::string& text) {
+        const size_t equals = text.find('=');
+        return equals != std::string::npos && equals > 0
+                   ? std::string()
+                   : "expected KEY=VALUE such as controller.max_speed_mps=0.1, got " + text;
+      },
+      "KEY=VALUE");
+}
+
 CLI::Option* AddRunLogArgument(CLI::App* command, const std::string& name, std::string* path) {
   return command->add_option(name, *path, "A run folder (its run.lcmlog) or an .lcmlog file")->required();
 }
@@ -63,7 +74,8 @@ void AddOverrideOptions(CLI::App* command, long long* seed, std::vector<std::str
       ->add_option("--set", *sets,
                    "KEY=VALUE: override one config key (dotted: controller.max_speed_mps=0.1,\n"
                    "controller.sensors.0.noise_std=0.01); repeat for more keys")
-      ->allow_extra_args(false);
+      ->allow_extra_args(false)
+      ->check(KeyValue());
 }
 
 CommandLine::CommandWithArgs<RunArgs> AddRunCommand(CommandLine& line, const std::string& name,

@@ -25,6 +25,10 @@ CLI::Validator Seconds(bool zero_allowed);
 /// 64-bit numbers), with a message that says so.
 CLI::Validator SeedValue();
 
+/// --set (and sweep's --set/--zip): KEY=VALUE with a non-empty key, a usage
+/// error (exit 2) otherwise, naming what was typed.
+CLI::Validator KeyValue();
+
 /// The required argument `name` of the commands that read one run's log
 /// (log info, log echo, replay, render): a run folder or an .lcmlog file.
 CLI::Option* AddRunLogArgument(CLI::App* command, const std::string& name, std::string* path);

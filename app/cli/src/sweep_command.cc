@@ -163,14 +163,16 @@ void DeclareSweepCommand(CommandLine& line) {
       ->add_option("--set", args->sets,
                    "KEY=V1,V2,...: also sweep this config key (dotted: controller.max_speed_mps,\n"
                    "controller.sensors.0.noise_std); repeat for more keys, every combination runs")
-      ->allow_extra_args(false);
+      ->allow_extra_args(false)
+      ->check(KeyValue());
   command
       ->add_option("--zip", args->zips,
                    "KEY=V1,V2,...: vary this key together with the other --zip keys (the first values in one\n"
                    "run, the second in the next, ...; each --zip lists as many values), in every combination\n"
                    "with the --set keys. Example: --zip controller.max_speed_mps=0.1,0.2\n"
                    "--zip controller.sensors.0.range_m=0.5,1.0")
-      ->allow_extra_args(false);
+      ->allow_extra_args(false)
+      ->check(KeyValue());
   command->add_option("-j,--jobs", args->jobs, "Runs at once (default: one per core; Slurm: no limit)")
       ->check(CLI::Range(1, 100000));
   command->add_option("--steps", args->steps, "Override the config's step limit in every run")->check(StepCount());
