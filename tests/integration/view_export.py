@@ -301,6 +301,11 @@ def test(ctx):
     ctx.start("view", [args.dream, "view", os.path.join("runs", "go_to_goal"), "--port", "0"], cwd=ctx.path())
     ctx.wait_for_output("view", URL.pattern, 20)
     base = URL.search(ctx.output("view")).group(1)
+    # The steps it announces are summary.json's (the log's pose frames are one more: step 0's).
+    with open(os.path.join(run_dir, "summary.json")) as f:
+        steps = json.load(f)["steps"]
+    check(f", steps 0-{steps});" in ctx.output("view"),
+          f"dream view does not announce summary.json's {steps} steps as 'steps 0-{steps}': {ctx.output('view')}")
     if args.browser:
         check_browser(ctx, args, base)
     else:

@@ -66,8 +66,10 @@ void ViewWorkflow::ServeReplay(const Options& args) const {
   server.SetSetup(view::SetupJson(replay.setup));
   server.SetRunData(replay.run_json);
   server.SetVideoExports(VideoExportsOfRun(replay, args.run, args.config_path));
-  out_ << "dream view: open " << server.url() << " (replay of " << args.run << ", " << replay.steps
-       << " steps); Ctrl-C to stop" << std::endl;
+  // Steps as summary.json counts them (the last step's number), with the log's range: its
+  // pose frames are one more, step 0's included.
+  out_ << "dream view: open " << server.url() << " (replay of " << args.run << ", steps " << replay.first_step << "-"
+       << replay.last_step << "); Ctrl-C to stop" << std::endl;
   WaitFor(*args.stop);
 }
 
