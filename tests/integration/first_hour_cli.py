@@ -92,7 +92,7 @@ def seed_and_set(ctx, args, dream_types):
         (["--set", "controller.max_speed_mps=fast"], EXIT_INPUT,
          ["controller.max_speed_mps", "'fast'", "--set controller.max_speed_mps=fast"]),
         (["--set", "contrler.gain=1"], EXIT_INPUT, ["--set contrler.gain", "no key 'contrler'"]),
-        (["--set", "controller.max_speed_mps"], EXIT_INPUT, ["--set controller.max_speed_mps", "KEY=VALUE"]),
+        (["--set", "controller.max_speed_mps"], EXIT_USAGE, ["--set", "KEY=VALUE", "got controller.max_speed_mps"]),
         (["--set", "controller.max_speed_mps=0.1,0.2"], EXIT_INPUT, ["one value per key", "dream sweep"]),
         (["--seed", "4", "--set", "seed=5"], EXIT_INPUT, ["--set seed=5", "--seed"]),
         (["--seed", "-1"], EXIT_USAGE, ["--seed", "-1"]),
