@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "dream/python/kind.h"
+#include "dream/python/python_step_metrics.h"
 #include "dream/run_config/run_config.h"
 #include "../support/scratch_folder.h"
 #include "../support/source_tree.h"
@@ -93,6 +94,26 @@ TEST_F(PythonStepMetricsTest, FollowedStepByStepTheLastFiguresAreOwnMetricsOfThe
   EXPECT_EQ(by_name.at("final_gap_m"), own["final_gap_m"].get<double>());
   EXPECT_EQ(by_name.at("mean_theta"), own["mean_theta"].get<double>());
   EXPECT_EQ(by_name.at("gap_m"), own["gap_m"].back()[1].get<double>());
+  EXPECT_EQ(metrics->last_error(), "");
+}
+
+// The first answer waits for the helper's start-up: seconds on a loaded machine at the view's
+// lowered priority. Counted as an evaluation's cost, it spaced the next asks three times that
+// apart, past the end of a short run (view_metrics under load plotted one step).
+TEST_F(PythonStepMetricsTest, TheHelpersStartUpDoesNotSpaceTheEvaluationsAfterIt) {
+  const run_config::RunConfig config =
+      PairConfig("    import time\n    time.sleep(1.0)  # a slow start-up\n" + std::string(kFigures));
+  const kind_api::RunPoses run = Steps(3);
+  const auto metrics = kind_.own_step_metrics(config, runtime_);
+  const auto* python = dynamic_cast<const PythonStepMetrics*>(metrics.get());
+  ASSERT_NE(python, nullptr);
+  Figures figures;
+  metrics->Observe(run.steps[0]);
+  EXPECT_EQ(ReadSettled(*metrics, &figures), 0);  // after the second of start-up
+  const auto answered_by = std::chrono::steady_clock::now();
+  EXPECT_LE(python->next_ask(), answered_by + PythonStepMetrics::kMinInterval);
+  metrics->Observe(run.steps[1]);
+  EXPECT_EQ(ReadSettled(*metrics, &figures), 1);
   EXPECT_EQ(metrics->last_error(), "");
 }
 

@@ -171,7 +171,12 @@ void PythonStepMetrics::TakeAnswer(const std::string& line) {
   }
   const auto now = std::chrono::steady_clock::now();
   asked_ = false;
-  next_due_ = now + std::max<std::chrono::steady_clock::duration>(kMinInterval, 3 * (now - asked_at_));
+  // The first answer's wait holds the helper's start-up too (Python, numpy, the class's module),
+  // seconds on a loaded machine at the view's lowered priority: not what an evaluation costs, so
+  // it does not space the next ones (it did, past the end of a short run).
+  const auto evaluation = answered_first_ ? now - asked_at_ : std::chrono::steady_clock::duration::zero();
+  answered_first_ = true;
+  next_due_ = now + std::max<std::chrono::steady_clock::duration>(kMinInterval, 3 * evaluation);
   if (answer.contains("error") && answer["error"].is_string()) {
     last_error_ = answer["error"].get<std::string>();  // the figures stay the last computed; the next steps are tried
     answered_step_ = asked_step_;

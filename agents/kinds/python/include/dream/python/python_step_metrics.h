@@ -17,7 +17,8 @@ namespace dream::python {
 /// it has not taken yet waits here), and it evaluates metrics() on the run so
 /// far when asked. One evaluation at a time, the next no sooner than
 /// kMinInterval and three times the last one's duration after it ends, so
-/// the helper takes at most about a quarter of a core however long the run.
+/// the helper takes at most about a quarter of a core however long the run
+/// (the first one's duration is not counted: it holds the helper's start-up).
 /// After the last step, once Pending() is false, the figures are those
 /// PythonRunMetrics::Compute gives for the same steps (summary.json's).
 class PythonStepMetrics final : public kind_api::OwnStepMetrics {
@@ -42,6 +43,8 @@ class PythonStepMetrics final : public kind_api::OwnStepMetrics {
   int64_t Read(std::vector<Figure>* figures) override;
   bool Pending() const override;
   std::string last_error() const override { return last_error_; }
+  /// When the next evaluation may be asked for, once a step is new.
+  std::chrono::steady_clock::time_point next_ask() const { return next_due_; }
 
  private:
   void QueueBatch();
@@ -68,6 +71,7 @@ class PythonStepMetrics final : public kind_api::OwnStepMetrics {
   int64_t answered_step_ = -1;  // the last step an answer (figures or an error) was about
   int64_t figures_step_ = -1;   // the step figures_ are of
   bool answered_any_ = false;
+  bool answered_first_ = false;  // any answer, an error too: later ones time an evaluation alone
   std::vector<Figure> figures_;
   std::string last_error_;
 };
