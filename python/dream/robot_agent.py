@@ -171,15 +171,19 @@ class RobotAgent:
 
     def _command(self, command):
         """update()'s (v, w) as two floats; a ControllerFault at the user's update otherwise."""
-        update = type(self.robot).update
-        where = f"{update.__code__.co_filename}:{update.__code__.co_firstlineno}: in {update.__name__}: "
         try:
             v, w = command
             v, w = float(v), float(w)
         except (TypeError, ValueError):
-            raise ControllerFault(f"{where}TypeError: update() must return (v, w), two numbers, "
+            raise ControllerFault(f"{self._update_location()}TypeError: update() must return (v, w), two numbers, "
                                   f"got {command!r}") from None
         if not (math.isfinite(v) and math.isfinite(w)):
             # The world would refuse every such command and the robot would hold still, unexplained.
-            raise ControllerFault(f"{where}ValueError: update() must return finite numbers, got v={v}, w={w}")
+            raise ControllerFault(f"{self._update_location()}ValueError: update() must return finite numbers, "
+                                  f"got v={v}, w={w}")
         return (v, w)
+
+    def _update_location(self):
+        """Where the user's update() is, as a fault names it (worked out only for a fault: _command runs every step)."""
+        update = type(self.robot).update
+        return f"{update.__code__.co_filename}:{update.__code__.co_firstlineno}: in {update.__name__}: "
