@@ -112,10 +112,17 @@ class AgentHostTest : public ::testing::Test {
     while (bus_.HandleSubscriptions(0) > 0) {
     }
   }
+  // The robots the host gives up, on DREAM_FAULT_<id>, into faults_.
+  void HearFaults() {
+    subscriptions_.push_back(lcm::Subscribe<robot_fault_t>(
+        bus_, lcm::kFaultChannelRegex, [this](const std::string&, const robot_fault_t& f) { faults_.push_back(f); },
+        bad_));
+  }
   lcm::LcmBus bus_;
   lcm::BadMessageLog bad_;
   std::vector<velocity_command_t> commands_;
   std::vector<radio_message_t> radio_;
+  std::vector<robot_fault_t> faults_;
   std::vector<lcm::Subscription> subscriptions_;  // last: ends before what the handlers use
 };
 
@@ -164,9 +171,7 @@ TEST_F(AgentHostTest, RadioMessagesOfStepKAreHeardAtStepKPlusOne) {
 // Issue 23: a payload over the limit was sent, every receiver dropped it, and
 // the run was clean. The host gives the robot up instead, saying why.
 TEST_F(AgentHostTest, ARadioPayloadOverTheLimitIsTheControllersFaultNotAMessage) {
-  std::vector<robot_fault_t> faults;
-  const lcm::Subscription fault_reports = lcm::Subscribe<robot_fault_t>(
-      bus_, lcm::kFaultChannelRegex, [&](const std::string&, const robot_fault_t& f) { faults.push_back(f); }, bad_);
+  HearFaults();
   int calls = 0;
   std::vector<std::unique_ptr<RobotAgent>> agents;
   agents.push_back(MakeAgent(0, &calls));
@@ -176,12 +181,12 @@ TEST_F(AgentHostTest, ARadioPayloadOverTheLimitIsTheControllersFaultNotAMessage)
   lcm::Publish(bus_, lcm::kPosesChannel, Poses(1, 2));  // a resend: no second fault
   lcm::Publish(bus_, lcm::kPosesChannel, Poses(2, 2));
   Drain();
-  ASSERT_EQ(faults.size(), 1u);
-  EXPECT_EQ(faults[0].robot_id, 1);
-  EXPECT_EQ(faults[0].step, 1);
-  EXPECT_EQ(faults[0].run_id, kRunId);
-  EXPECT_EQ(faults[0].agent_id, 5);
-  EXPECT_EQ(faults[0].detail,
+  ASSERT_EQ(faults_.size(), 1u);
+  EXPECT_EQ(faults_[0].robot_id, 1);
+  EXPECT_EQ(faults_[0].step, 1);
+  EXPECT_EQ(faults_[0].run_id, kRunId);
+  EXPECT_EQ(faults_[0].agent_id, 5);
+  EXPECT_EQ(faults_[0].detail,
             "robot 1: OnRadio returned a payload of 65537 bytes, over the limit of 65536 bytes (every receiver "
             "would drop it)");
   for (const radio_message_t& radio : radio_) EXPECT_EQ(radio.sender_id, 0);
@@ -193,9 +198,7 @@ TEST_F(AgentHostTest, ARadioPayloadOverTheLimitIsTheControllersFaultNotAMessage)
 // A command that is not a number was sent, the world refused it at every step
 // and the robot held still with nothing but dropped messages to say why.
 TEST_F(AgentHostTest, ANonFiniteCommandIsTheControllersFaultNotAMessage) {
-  std::vector<robot_fault_t> faults;
-  const lcm::Subscription fault_reports = lcm::Subscribe<robot_fault_t>(
-      bus_, lcm::kFaultChannelRegex, [&](const std::string&, const robot_fault_t& f) { faults.push_back(f); }, bad_);
+  HearFaults();
   int calls = 0;
   std::vector<std::unique_ptr<RobotAgent>> agents;
   agents.push_back(MakeAgent(0, &calls));
@@ -204,10 +207,10 @@ TEST_F(AgentHostTest, ANonFiniteCommandIsTheControllersFaultNotAMessage) {
   lcm::Publish(bus_, lcm::kPosesChannel, Poses(1, 2));
   lcm::Publish(bus_, lcm::kPosesChannel, Poses(2, 2));
   Drain();
-  ASSERT_EQ(faults.size(), 1u);
-  EXPECT_EQ(faults[0].robot_id, 1);
-  EXPECT_EQ(faults[0].step, 1);
-  EXPECT_EQ(faults[0].detail,
+  ASSERT_EQ(faults_.size(), 1u);
+  EXPECT_EQ(faults_[0].robot_id, 1);
+  EXPECT_EQ(faults_[0].step, 1);
+  EXPECT_EQ(faults_[0].detail,
             "robot 1: Update returned a command that is not finite (v=nan m/s, w=0.100000 rad/s; the world would "
             "refuse it)");
   ASSERT_EQ(commands_.size(), 2u);  // robot 0 goes on
